@@ -252,19 +252,19 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
-    # the row question (review r98 01-1: row 13 repeated the worked row 5): row 9 runs
-    # through the middle vertex v3; its ends are the package's, u4 and v3 itself, both on
-    # centres; the clicked answer is columns 6-17, nothing else
-    v3 = ns.xy[2]
-    assert ns.asked_row + 0.5 == ns.v_mid == v3[1] and ns.order[1] == 2
-    assert ns.ends_asked == [ns.u4, v3[0]] == [6.5, 18.5] == list(ns.ends[9][:2])
-    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(6, 18))
-    assert ns.row_answer.sum() == 12 and ns.cols_asked.tolist() == list(range(6, 18))
+    # the row question (review r138 01·9: row 9, the split line, was read off the printed u4
+    # and v3): row 11, below v3, crosses the long edge at 7 and the short edge v3-v1 at 16,
+    # both pixel borders; the clicked answer is columns 7-15, nothing else
+    assert ns.asked_row == 11 and ns.v_mid < ns.v_asked < ns.v_bot
+    assert ns.ends_asked == list(ns.ends[11][:2]) == [7.0, 16.0]
+    assert np.flatnonzero(ns.row_answer[11]).tolist() == list(range(7, 16))
+    assert ns.row_answer.sum() == 9 and ns.cols_asked.tolist() == list(range(7, 16))
     row_cell = next("".join(c["source"]) for c in json.loads(
         (NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
         if "q_row = PredictPixels(" in "".join(c["source"]))  # fmt: skip
     row_question = row_cell.split("q_row = PredictPixels(")[1].split("answer=")[0]
-    assert "runs exactly through the middle" in row_question and "6.5" not in row_question
+    assert "lies below the middle vertex" in row_question
+    assert "7" not in row_question.replace("v_asked", "") and "16" not in row_question
     # review r98 01-2: the Try-it says to re-fill before span_fill(trace.snapped, ...)
     summary = " ".join(_cells("01_span_tables", "markdown")[-1].split())
     assert "re-run the cell of section 1 (it fills the new triangle: `fill` and `trace`)" in summary
@@ -293,9 +293,9 @@ def test_01_predictions_and_the_stepping_failure_rates():
         i for i, (xl, xr, *_) in ns.ends.items() if (xl - 0.5) % 1 == 0 or (xr - 0.5) % 1 == 0
     ]
     assert starred == [1, 5, 9, 13]
-    assert "rows 5, 9 (q_row's) and 13 have one on both ends" in " ".join(
-        " ".join(_cells("01_span_tables", "markdown")).split()
-    )
+    told = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
+    assert "rows 5, 9 and 13 have one on both ends" in told
+    assert "(q_row's row 11 has none: its ends, 7 and 16, lie on pixel borders)" in told
     # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
     # filled anyway
     assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))
@@ -1366,20 +1366,19 @@ def test_guard_band_exact_range_and_far_floor_words():
 @pytest.mark.notebook
 def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
     """Review r38 05a: the sticks cross at mid-length (each crossing reads at a glance), a
-    question on one ring comes before the order, and the z-buffer's memory is put
+    question on one ring came before the order (dropped in r138), and the z-buffer's memory is put
     in numbers (7.9 MiB at 1920 x 1080, 4 bytes a pixel; 949 MiB/s for one layer at 60 Hz)."""
     ns = lesson("05a_zbuffer")
     # each crossing's overlap is a real patch, not a sliver at the sticks' ends
     assert min(ns.wrong_by_order["cyclic_overlap"].values()) >= 60
-    # review r47 05a-1: the first question is a prediction (drawn red, green, blue without a
-    # depth test, which ring is wrong), not a reading of the picture; one ring, that order's
-    # wrong pixels
-    assert len(ns.rgb_wrong) == 1 and ns.rgb_wrong[0] in ns.pair_name
-    top, under = ns.crossings[ns.pair_name.index(ns.rgb_wrong[0])]
-    assert (top, under) == ("red", "blue")  # red over blue in the picture, blue drawn last
-    assert ns.rgb_wrong_px == ns.wrong_by_order["cyclic_overlap"][ns.rgb_order] > 0
+    # review r47 05a-1 asked which ring comes out wrong drawn red, green, blue (q_top); review
+    # r138 05a·10: the picture above it showed who is on top at each ring and "drawn later
+    # covers" did the rest, so it is dropped: q_order is the sticks' one question
     code = _cells("05a_zbuffer", "code")
-    assert any("answer=rgb_wrong[0]" in c for c in code)
+    assert not any("q_top" in c or "rgb_wrong" in c for c in code)
+    (sticks,) = [c for c in code if "draw_sticks(ax)" in c and "def " not in c]
+    assert "Predict" not in sticks  # the picture alone; the question follows it
+    assert sum("q_order = PredictOrder(" in c for c in code) == 1
     assert any("names[k] for k in order" in c for c in code)  # r47 05a-2: orders as colours
     assert round(1920 * 1080 * 4 / ns.MiB, 1) == 7.9 and round(ns.layer_traffic) == 949
     # review r47 05a-4: the bandwidth claim rests on printed shares: one 1080p layer is small
@@ -1401,20 +1400,18 @@ def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
 
 
 @pytest.mark.notebook
-def test_05a_r100_q_top_leaves_the_rings_to_q_order_and_the_near_plane_is_w_ge_n():
-    """Review r100 05a-1: q_top's answer names the wrong ring only, not which stick lies over
-    which at the other two (q_order's question). 05a-2: the near plane keeps w >= n > 0 for a
+def test_05a_r100_the_rings_are_q_orders_and_the_near_plane_is_w_ge_n():
+    """Review r100 05a-1: which stick lies over which is q_order's question (q_top, which named
+    one ring, was dropped in r138). 05a-2: the near plane keeps w >= n > 0 for a
     perspective matrix's vertices (z + w = 2f(w - n)/(f - n), checked on the section's
     matrix), while arbitrary clip coordinates get only w >= 0 from -w <= z <= w: the eye
     plane. The bandwidth shares the text quotes are the ones printed (r100 cosmetic)."""
     ns = lesson("05a_zbuffer")
-    ask = next(c for c in _cells("05a_zbuffer", "code") if "q_top = Predict(" in c)
-    said = eval("(" + ask[ask.index("explain=") + 8 : ask.rindex(",\n)")] + ")", vars(ns))
-    assert ns.rgb_wrong[0] in said and f"{ns.rgb_wrong_top} over {ns.rgb_wrong_under}" in said
-    for top, under in ns.crossings:  # the other rings' order stays q_order's to read
-        if (top, under) != (ns.rgb_wrong_top, ns.rgb_wrong_under):
-            assert f"{top} over {under}" not in said and f"{under}, drawn after" not in said
-    assert "at both of its crossings" not in said
+    # (q_top is gone, review r138: the rings are q_order's alone)
+    asked = next(c for c in _cells("05a_zbuffer", "code") if "q_order = PredictOrder(" in c)
+    question = asked.split("q_order = PredictOrder(")[1].split("items=")[0]
+    for top, under in ns.crossings:  # which stick lies over which stays q_order's to read
+        assert f"{top} over {under}" not in question
     # the near plane: z + w = 2f(w - n)/(f - n) for any point of tr.perspective(..., n, f)
     n, f = ns.clip_near, ns.clip_far
     assert ns.near_is_w_n and f > n > 0

@@ -977,7 +977,7 @@ def test_07_the_catalogue_still_passes():
 def test_07_predictions_and_the_numbers_the_text_quotes():
     ns = lesson("07_hard_cases")
     # the split square's diagonal runs through the centres (1, 1) .. (6, 6): 6 drawn twice
-    assert ns.twice == 6 == int((ns.split_square[1] > 1).sum())
+    assert int((ns.split_square[1] > 1).sum()) == 6
     # float32's gap near 1e12 dwarfs every value of E inside the triangle (its doubled area)
     assert ns.spacing == 2.0**16 and ns.doubled_area < ns.spacing / 100
     # the cell after q_far prints C's two products (about 10^12 at 10^6 px) and C (about 10^7):
@@ -1009,8 +1009,9 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     # review r13 07: the subpixel panel names its zero-area triangles, the clip its seam
     assert ns.collapsed == 2 and ns.clipped_into == 2
     # review r78 07-1: the clip count is printed above the figure (before plt.show)
+    # (review r138: the text under the behind-the-camera figure is displayed by its held cell)
     seven = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
-                              if c["cell_type"] == "markdown").split())  # fmt: skip
+                              if c["cell_type"] == "markdown" or "BEHIND_TEXT" in "".join(c["source"])).split())  # fmt: skip
     assert "the line under the figure" not in seven
     assert "the line above the figure and the left panel's title print how many" in seven
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
@@ -1040,23 +1041,28 @@ def test_07_t_junction_cracks_overlaps_and_the_split_seals_it():
     assert ns.t_gaps[names[0]] > 0 and (outside >= 2).sum() == 0
     assert ns.t_gaps[names[1]] == 0 and (inside >= 2).sum() > 0
     assert ns.t_gaps[names[2]] == 0 and (split >= 2).sum() == 0
-    assert np.array_equal(ns.drawn_twice, ns.split_square[1] > 1)
-    # review r5 07-4: the question asks where the naive picture differs from ours (the diagonal
-    # drawn twice, and the right and bottom sides, a neighbour's), not only the diagonal that
-    # the text before it names; its own lines say "drawn differently", not "lit"
+    # review r138 07·3: the / square repeats lesson 02's naive picture (its q_diagonal was
+    # answered there): shown, not asked; the question is on the fan, which lesson 02 did not
+    # draw: how many centres the naive E >= 0 draws more than once (the hub 16 times, every
+    # other centre of a spoke twice), before any text or figure counts them
     ours, naive = ns.split_square
-    assert np.array_equal(ns.differs, ours != naive)
+    assert int((naive > 1).sum()) == 6 and ours.max() == 1
+    assert ns.fan_twice == int((ns.fan_naive >= 2).sum()) == 49 and ns.fan_hub_hits == 16
+    assert ns.fan_ours_once + ns.fan_ours_none == ns.fan_twice and ns.fan_ours_none == 9
+    assert np.array_equal(ns.fan_counts_naive, ns.fan_naive)
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
-    asked = next("".join(c["source"]) for c in nb["cells"]
-                 if "q_diagonal = PredictPixels(" in "".join(c["source"]))  # fmt: skip
-    # review r65 07-4: §1 asks about the diagonal lesson 02 did not draw (/): its two corners
-    # are of both kinds (drawn twice, and on a right or a bottom side), 6 + 11 - 2 = 15
-    assert ns.n_both == 2 and ns.n_once == ns.twice - 2 == 4
-    assert ns.n_differ == ns.twice + ns.n_side - ns.n_both == 15
-    assert ns.n_differ == ns.my_wrong["d3d_split_square_other_diagonal"]
-    assert 'get_case("d3d_split_square_other_diagonal")' in asked
-    assert "answer=differs" in asked and 'picked="drawn differently"' in asked
-    assert "differs from ours" in asked.split("answer=")[0]
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    assert not any("q_diagonal" in c for c in cells)
+    ask = next(i for i, c in enumerate(cells) if "q_fan = Predict(" in c)
+    held = next(i for i, c in enumerate(cells) if c.startswith("q_fan.hold()"))
+    assert held == ask + 1 and "answer=fan_twice" in cells[ask]
+    assert nb["cells"][ask]["metadata"]["tags"] == ["hide-input"]
+    assert "display(Markdown(FAN_TEXT))" in cells[held] and "all sixteen" in cells[held]
+    assert 'introduce("fan_spokes_through_centres")' in cells[held]
+    for c in cells[:ask]:  # nothing above the question counts the fan's hits
+        assert "all sixteen" not in c and "16 times" not in c and "fan_spokes" not in c
+    square = cells[ask - 2]  # shown, not held: nothing is asked about it
+    assert 'introduce("d3d_split_square_other_diagonal")' in square and "hold()" not in square
 
 
 def test_07_t_junction_is_asked_before_the_text_and_the_figure_answer_it():
@@ -1078,8 +1084,10 @@ def test_07_t_junction_is_asked_before_the_text_and_the_figure_answer_it():
     cells = ["".join(c["source"]) for c in nb["cells"]]
     ask = next(i for i, c in enumerate(cells) if "q_gaps = PredictPixels(" in c)
     held = next(i for i, c in enumerate(cells) if c.startswith("q_gaps.hold()"))
-    told = next(i for i, c in enumerate(cells) if c.startswith("A crack no tie rule closes"))
-    assert ask < held < told and 'picked="left as gaps"' in cells[ask]
+    told = next(i for i, c in enumerate(cells) if "A crack no tie rule closes" in c)
+    # review r138 07·11: the text that names both kinds of gap is displayed by the held cell
+    assert ask < held == told and 'picked="left as gaps"' in cells[ask]
+    assert "display(Markdown(GAPS_TEXT))" in cells[held]
     before = cells[ask - 2]  # the heading's text, above the setup
     assert "gap" not in before and "crack" not in before.lower()
     assert nb["cells"][ask]["metadata"]["tags"] == ["hide-input"]
@@ -1092,7 +1100,11 @@ def test_07_t_junction_is_asked_before_the_text_and_the_figure_answer_it():
     ask = next(i for i, c in enumerate(cells) if "q_behind = PredictPoint(" in c)
     told = next(i for i, c in enumerate(cells) if "reaching up into the sky" in c)
     held = next(i for i, c in enumerate(cells) if c.startswith("q_behind.hold()"))
-    assert ask < told < held and "sky" not in cells[ask - 1]
+    # review r138 07·21: the text under the widget, "through the eye ... into the sky", is
+    # displayed by the held cell, not a Markdown cell between them
+    assert ask < held == told and "sky" not in cells[ask - 1]
+    assert "display(Markdown(BEHIND_TEXT))" in cells[held]
+    assert all("sky" not in c for c in cells[ask + 1 : held])
 
 
 def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
@@ -1126,7 +1138,7 @@ def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
     assert "ABC owns the centres up to" not in explain and "of two kinds" in explain
     assert "strictly inside the thin wedge" in explain and "exactly on AB" in explain
     assert "whatever the tie rule" in explain.split("exactly on AB")[0]  # the inside two only
-    told = " ".join(next(c for c in cells if c.startswith("A crack no tie rule closes")).split())
+    told = " ".join(next(c for c in cells if "A crack no tie rule closes" in c).split())
     assert "the centres strictly inside it are gaps" in told and "exactly on $AB$" in told
     # q_behind: no formula in the question; where v3 would land with w = +2, midway v1-v2
     (behind,) = [c for c in cells if "q_behind = PredictPoint(" in c]
