@@ -153,7 +153,7 @@ def test_four_corner_code_is_never_told_it_tested_two():
     for report in (_first_try("classify_block", _any_corner_rejects),
                    ex.check("classify_block", _any_corner_rejects)):  # fmt: skip
         assert not report.passed and "only 2 of the 4" not in _words(report), _words(report)
-    two = ex.check("classify_block", _block(points="two corners"))
+    two = ex.check("classify_block", _block(offsets="two corners"))
     assert {f.kind for f in two.failures} == {"two corners only"}, str(two)
 
 

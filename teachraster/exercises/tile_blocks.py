@@ -534,11 +534,11 @@ BLOCK_HINTS = (
     (re.compile(r"E grows to the right where A = ∂E/∂x > 0, so its largest value lies in the "
                 r"block's right-most column of centres there and in its left-most where A < 0 "
                 r"\(the smallest on the other side\); yours take the opposite column"),
-     "which column of the block's centres holds E's largest value, for each sign of A?"),
+     "which column of centres in the block holds E's largest value, for each sign of A?"),
     (re.compile(r"E grows downwards where B = ∂E/∂y > 0, so its largest value lies in the "
                 r"block's bottom row of centres there and in its top row where B < 0 \(the "
                 r"smallest on the other side\); yours take the opposite row"),
-     "which row of the block's centres holds E's largest value, for each sign of B?"),
+     "which row of centres in the block holds E's largest value, for each sign of B?"),
     (re.compile(r": \(size − 1\)·\(A \+ B\) is E's change to the bottom-right centre, the "
                 r"largest value only where A ≥ 0 and B ≥ 0, and E₀ itself the smallest only "
                 r"there; each edge's signs pick its own corners"),
