@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from exercise_solutions import per_block
 from student_variants import hiz_box
 
 from teachraster import exercises as ex
@@ -142,6 +143,11 @@ def _sign_flipped_ties_as_given(xy, x0, y0, size):
             return "rejected"
         accepted = accepted and all(ok)
     return "accepted" if accepted else "partial"
+
+
+# 8.1 classifies a grid of blocks (r131 D8-7): the one-block functions above, looped over it
+_any_corner_rejects = per_block(_any_corner_rejects)
+_sign_flipped_ties_as_given = per_block(_sign_flipped_ties_as_given)
 
 
 def test_four_corner_code_is_never_told_it_tested_two():

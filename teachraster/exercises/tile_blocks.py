@@ -675,6 +675,8 @@ def block_cases() -> list:
 
 
 block_cases.__module__ = _fixed_and_drawn.__module__
+
+
 def _edge_table(xy, x0, y0, size):
     """Per oriented edge: its name, top-left flag, and the corners maximising / minimising E."""
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
