@@ -491,7 +491,8 @@ def explain_block(args, expected, got) -> str:
     if total == 1:
         return f"the block {block} is {e}; yours says {g}"
     differ = "differs" if wrong == 1 else "differ"
-    return f"{wrong} of the grid's {total} blocks {differ}; the first, {block}, is {e}; yours says {g}"  # fmt: skip
+    which = f"all {total} blocks of the grid differ" if wrong == total else f"{wrong} of the grid's {total} blocks {differ}"  # fmt: skip
+    return f"{which}; the first, {block}, is {e}; yours says {g}"
 
 
 def _block_rule(args, expected, got) -> str:
