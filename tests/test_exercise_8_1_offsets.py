@@ -155,7 +155,8 @@ def test_the_task_says_what_the_lesson_does_not():
     task = "".join(next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == "classify_block_task")["source"])  # fmt: skip
     for words in ("once\nper block", "from A, B and `size` alone", "E₀ + R", "E₀ + T",
                   "(../10_tiles_and_hierarchical_z.ipynb)", "lp_setup_tri.c", "Larrabee",
-                  "either winding", "zero-area triangle", "top-left rule", "integer NumPy arrays"):  # fmt: skip
+                  "either winding", "zero-area triangle", "top-left rule", "integer NumPy arrays",
+                  "a little\nover a thousand blocks at most"):  # fmt: skip
         assert words in task, words
     for answer in ("(s - 1)", "size - 1) *", "max(A, 0)", "int(step_down > 0)"):
         assert answer not in task, answer
@@ -174,6 +175,8 @@ def test_the_cases_cover_the_hard_ones():
     sizes = {args[3] for _, args, _ in cases}
     assert {1, 4, 16, 64, tile_blocks.HUGE} <= sizes
     assert {np.ndim(args[1]) for _, args, _ in cases} == {1, 2}
+    # the task: "the check's grids hold a little over a thousand blocks at most"
+    assert 1000 < max(np.size(args[1]) for _, args, _ in cases) < 1300
     verdicts = set(np.concatenate([np.ravel(k) for _, _, k in cases]).tolist())
     assert verdicts == set(tile_blocks.KINDS)
 

@@ -623,8 +623,8 @@ def _block_cases(rng, word):
         gx, gy = _covering(xy, size)
         grids.append((f"{word} {n + 1}", xy, gx, gy, size))
     big = snap(np.array([[3.3, 2.1], [250.2, 60.7], [40.9, 254.4]]))
-    gx, gy = _covering(big, 4)
-    grids.append(("a 256-px triangle, every 4-px block over it", big, gx, gy, 4))
+    gx, gy = _covering(big, 8)
+    grids.append(("a 256-px triangle, every 8-px block over it", big, gx, gy, 8))
     return [
         (f"{label}: {tri_words(xy)}, {_grid_words(gx, gy, s)}", (xy, gx, gy, s),
          expected_block(xy, gx, gy, s))
