@@ -497,12 +497,63 @@ def _classify(xy, x0, y0, size, corner_trick=True, points=None, owns=None):
     return "accepted" if accepted else "partial"
 
 
-def classify_block(xy, x0, y0, size):
+def per_block(fn):
+    """A one-block classifier ``fn(xy, x0, y0, size)`` looped over a grid of blocks (``x0``,
+    ``y0`` integer arrays of one shape): classify_block's loop solution, an array of texts."""
+
+    def grid(xy, x0, y0, size):
+        x0, y0 = np.broadcast_arrays(np.asarray(x0), np.asarray(y0))
+        out = np.empty(x0.shape, dtype=object)
+        for idx in np.ndindex(x0.shape):
+            out[idx] = fn(xy, int(x0[idx]), int(y0[idx]), size)
+        return out
+
+    grid.__name__ = grid.__qualname__ = f"per_block_{fn.__name__}"
+    return grid
+
+
+def classify_block_offsets(xy, x0, y0, size, dtype=float):
+    """The set-up's way (the task's): per edge A, B and the reject and accept offsets, once;
+    one evaluation of E per block at its first pixel centre, for the whole grid with numpy."""
+    v = np.asarray(xy, dtype=float).astype(dtype)
+    px = np.asarray(x0).astype(dtype) + dtype(0.5)
+    py = np.asarray(y0).astype(dtype) + dtype(0.5)
+    area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+    if area == 0:
+        return np.full(px.shape, "rejected")
+    if area < 0:
+        v = v[[0, 2, 1]]
+    rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        A, B = a[1] - b[1], b[0] - a[0]  # E = A·(x − a.x) + B·(y − a.y)
+        reject = dtype(size - 1) * (max(A, 0) + max(B, 0))  # to E's largest value
+        accept = dtype(size - 1) * (min(A, 0) + min(B, 0))  # to E's smallest value
+        e0 = A * (px - a[0]) + B * (py - a[1])
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        rejected |= (e0 + reject < 0) if top_left else (e0 + reject <= 0)
+        accepted &= (e0 + accept >= 0) if top_left else (e0 + accept > 0)
+    return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
+
+
+def classify_block_float32(xy, x0, y0, size):
+    """The same in float32: exact where the products fit 24 bits (small coordinates)."""
+    return classify_block_offsets(xy, x0, y0, size, dtype=np.float32)
+
+
+def _one_block(xy, x0, y0, size):
     return _classify(xy, x0, y0, size)
 
 
-def classify_block_four_corners(xy, x0, y0, size):
+def _one_block_four_corners(xy, x0, y0, size):
     return _classify(xy, x0, y0, size, corner_trick=False)
+
+
+#: The loop solutions: exact Fractions, one block at a time (the corner trick, or all four
+#: extreme centres).
+classify_block_loops = per_block(_one_block)
+classify_block_four_corners = per_block(_one_block_four_corners)
+classify_block = classify_block_offsets
 
 
 CORRECT.update(
@@ -617,7 +668,7 @@ def trilinear_unclamped(pyramid, uv, lod, wrap="repeat"):
 
 def classify_wrong_accept_corner(xy, x0, y0, size):
     """Accepts when each edge's maximising corner passes (the minimising one is the test)."""
-    kind = classify_block(xy, x0, y0, size)
+    kind = _one_block(xy, x0, y0, size)
     return "accepted" if kind == "partial" else kind
 
 
@@ -763,17 +814,17 @@ MISTAKES.update(
         "trilinear without clamping λ": ("trilinear", trilinear_unclamped, "clamp it to [0, q]"),
         "accept by the maximising corner": (
             "classify_block",
-            classify_wrong_accept_corner,
+            per_block(classify_wrong_accept_corner),
             "you tested the maximising one",
         ),  # fmt: skip
         "reject when the corners lie outside": (
             "classify_block",
-            classify_corners_outside,
+            per_block(classify_corners_outside),
             "the test is per edge",
         ),  # fmt: skip
         "block corners for pixel centres": (
             "classify_block",
-            classify_outer_corners,
+            per_block(classify_outer_corners),
             "outer corners",
         ),  # fmt: skip
         # two slips (E >= 0 and no zero-area test): since r107 N8-2 classify_block names a
@@ -781,7 +832,7 @@ MISTAKES.update(
         # at the corner where E = 0
         "E >= 0 on every edge": (
             "classify_block",
-            classify_loose,
+            per_block(classify_loose),
             "(E = 0), fails",
         ),  # fmt: skip
     }

@@ -25,6 +25,7 @@ from exercise_solutions import (
     covers,
     edge_function,
     fill_vectorised,
+    per_block,
     trilinear,
 )
 from lines_blending_solutions import EPS, line_with
@@ -532,6 +533,18 @@ def classify_one_winding(xy, x0, y0, size):
     if edge_function(v[0], v[1], v[2]) < 0:
         return "rejected"
     return _classify(xy, x0, y0, size)
+
+
+# 8.1 classifies a grid of blocks (x0, y0 integer arrays) since r131 D8-7: each one-block
+# variant above, looped over the grid as a student's loop over the blocks would
+classify_two_corners = per_block(classify_two_corners)
+classify_strict = per_block(classify_strict)
+classify_every_centre = per_block(classify_every_centre)
+classify_by_coverage = per_block(classify_by_coverage)
+classify_pixel_corners = per_block(classify_pixel_corners)
+classify_float32 = per_block(classify_float32)
+classify_bottom_right = per_block(classify_bottom_right)
+classify_one_winding = per_block(classify_one_winding)
 
 
 # == line_pixels ===================================================================================
@@ -1042,7 +1055,7 @@ DIFFERENT = {
     "explicit trilinear": ("trilinear", trilinear_explicit),
     "float32 trilinear": ("trilinear", trilinear_float32),
     "corner trick by step signs": ("classify_block", CORRECT["classify_block"]),
-    "all four corners": ("classify_block", lambda *a: _classify(*a, corner_trick=False)),
+    "all four corners": ("classify_block", per_block(lambda *a: _classify(*a, corner_trick=False))),
     "half-plane clipping against the diamond": ("line_pixels", line_half_planes),
     "float32 over": ("over", over_float32),
     # issue 30

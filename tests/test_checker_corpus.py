@@ -182,13 +182,18 @@ def test_the_block_figure_draws_the_decisive_centres_only_once_hints_are_spent()
     from teachraster.exercises import tries
     from teachraster.exercises.tile_blocks import draw_block_case
 
-    case = ("a block", (np.array([[8.0, 8.0], [24.0, 11.0], [11.0, 24.0]]), 4, 4, 4), "partial")
+    # a grid of two blocks (8.1 takes grids since r131 D8-7), the first one answered wrong
+    grid = (np.array([[8.0, 8.0], [24.0, 11.0], [11.0, 24.0]]), np.array([4, 8]), np.array([4, 4]), 4)  # fmt: skip
+    case = ("a block", grid, np.array(["partial", "partial"]))
+    got = np.array(["rejected", "partial"])
     tries.forget_hints("classify_block")
     try:
         fig, ax = plt.subplots()
-        assert len(draw_block_case(ax, case, "rejected")) == 2  # the triangle and the block
+        first = draw_block_case(ax, case, got)  # two blocks, the triangle, the wrong block
+        assert len(first) == 4, first
         tries.spend_hints(["classify_block"])
-        assert len(draw_block_case(ax, case, "rejected")) == 3  # and the four centres
+        later = draw_block_case(ax, case, got)
+        assert len(later) == 5 and len(later[-1].get_xdata()) == 4  # and its four centres
         plt.close(fig)
     finally:
         tries.spend_hints(["classify_block"])

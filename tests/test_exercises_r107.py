@@ -57,13 +57,13 @@ def test_exercise_3_says_how_far_apart_the_w_are():
 def _block(owns=None, points=None):
     """classify_block in exact Fractions (tests/exercise_solutions.py), a tie rule ``owns(a,
     b)`` or the ``points(x0, y0, size)`` tested in place of the corner trick."""
-    from exercise_solutions import _classify
+    from exercise_solutions import _classify, per_block
 
     def classify_block(xy, x0, y0, size):
         pts = None if points is None else points(x0, y0, size)
         return _classify(xy, x0, y0, size, corner_trick=pts is None, points=pts, owns=owns)
 
-    return classify_block
+    return per_block(classify_block)  # one block at a time over the grid
 
 
 def _bottom_right(a, b):

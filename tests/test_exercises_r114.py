@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from exercise_solutions import per_block
 from student_variants import hiz_box
 
 from teachraster import exercises as ex
@@ -144,6 +145,11 @@ def _sign_flipped_ties_as_given(xy, x0, y0, size):
     return "accepted" if accepted else "partial"
 
 
+# 8.1 classifies a grid of blocks (r131 D8-7): the one-block functions above, looped over it
+_any_corner_rejects = per_block(_any_corner_rejects)
+_sign_flipped_ties_as_given = per_block(_sign_flipped_ties_as_given)
+
+
 def test_four_corner_code_is_never_told_it_tested_two():
     """r114 D8-7: code testing all four centres (rejecting where at most one passes) was told
     "you tested only 2 of the 4 extreme centres" as its first explanation; a true two-corner
@@ -153,7 +159,7 @@ def test_four_corner_code_is_never_told_it_tested_two():
     for report in (_first_try("classify_block", _any_corner_rejects),
                    ex.check("classify_block", _any_corner_rejects)):  # fmt: skip
         assert not report.passed and "only 2 of the 4" not in _words(report), _words(report)
-    two = ex.check("classify_block", _block(points="two corners"))
+    two = ex.check("classify_block", _block(offsets="two corners"))
     assert {f.kind for f in two.failures} == {"two corners only"}, str(two)
 
 

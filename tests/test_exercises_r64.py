@@ -99,7 +99,7 @@ def test_a_block_scan_of_every_centre_runs_out_of_time_on_the_huge_blocks_only()
     assert not report.passed and report.stopped is not None
     (failure,) = report.failures
     assert failure.kind == "timeout" and "2^19" in failure.case
-    assert "scan of its" in failure.case and "does not finish" in failure.case
+    assert "scan of their" in failure.case and "does not finish" in failure.case
     assert ex.check("classify_block", CORRECT["classify_block"]).passed
 
 

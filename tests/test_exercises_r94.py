@@ -131,12 +131,19 @@ def _block(**knobs):
 
 
 def _covered_corners(xy, x0, y0, size):
-    """Accepted iff the four extreme centres are covered; rejected per edge (r94 c3)."""
-    from exercise_solutions import CORRECT
+    """Accepted iff the four extreme centres are covered; rejected per edge (r94 c3), block
+    by block over the grid."""
+    from exercise_solutions import per_block
+
+    return per_block(_covered_corners_one)(xy, x0, y0, size)
+
+
+def _covered_corners_one(xy, x0, y0, size):
+    from exercise_solutions import _one_block
 
     from teachraster.exercises.coverage import covered
 
-    kind = CORRECT["classify_block"](xy, x0, y0, size)
+    kind = _one_block(xy, x0, y0, size)
     if kind == "rejected":
         return kind
     pts = [(x0 + dx, y0 + dy) for dx in (0.5, size - 0.5) for dy in (0.5, size - 0.5)]
@@ -157,8 +164,8 @@ def test_block_corners_inside_words_are_true_and_said_once():
 
 @pytest.mark.parametrize(("knobs", "named", "kept"), [
     ({"points": "x0 y0 swapped"}, "you swapped x0 and y0", "x0 + ½"),
-    ({"points": "beyond"}, "x0 + size + ½ lies beyond", "x0 + size − ½"),
-    ({"points": "two corners"}, "only 2 of the 4", "test all four"),
+    ({"points": "beyond"}, "your offsets span size steps", "x0 + size − ½"),
+    ({"offsets": "two corners"}, "only 2 of the 4", "test all four"),
 ])  # fmt: skip
 def test_block_first_try_names_the_mistake_without_the_extreme_centres(knobs, named, kept):
     """r94 D8-3: "a hint only" lines gave the extreme centres (or the method)."""
@@ -169,7 +176,7 @@ def test_block_first_try_names_the_mistake_without_the_extreme_centres(knobs, na
 
 def test_two_corners_reason_is_this_cases():
     """r94 D8-8: "partial; yours says rejected" was told an edge "can pass both"."""
-    report = ex.check("classify_block", _block(points="two corners"))
+    report = ex.check("classify_block", _block(offsets="two corners"))
     for f in report.failures:
         if "yours says rejected" in f.explanation:
             assert "can fail both and pass one" in f.explanation, f.explanation
@@ -205,7 +212,7 @@ def test_tile_scene_shows_x0_y0_swapped_and_hides_the_centres_on_the_first_try()
 
 @pytest.mark.parametrize("knobs", [
     {"points": "outer corners"}, {"tie": "loose"},
-    {"logic": "inside"}, {"points": "two corners"}, {"points": "x0 y0 swapped"},
+    {"logic": "inside"}, {"offsets": "two corners"}, {"points": "x0 y0 swapped"},
     {"points": "beyond"}, {"points": "pixel corners"},
 ])  # fmt: skip
 def test_tile_scene_still_shows_each_classic_mistake(knobs):

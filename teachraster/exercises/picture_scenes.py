@@ -445,34 +445,41 @@ WALK = (
 
 
 def walk(classify):
-    """Codes of the tile walk with ``classify(xy, x0, y0, size)``, and its verdicts."""
+    """Codes of the tile walk with ``classify(xy, x0, y0, size)`` called on grids (the image's
+    16-blocks in one call, then each partial one's 4-blocks in one call), and its verdicts."""
     codes = np.zeros((TILE_IMAGE, TILE_IMAGE))
     verdicts = {}
     coverage = rasterize(Triangle(TILE_TRIANGLE), TILE_IMAGE, TILE_IMAGE).coverage
     big, small = TILE_SIZES
-    for y0 in range(0, TILE_IMAGE, big):
-        for x0 in range(0, TILE_IMAGE, big):
-            kind = verdicts[(x0, y0, big)] = classify(TILE_TRIANGLE, x0, y0, big)
+    for x0, y0, kind in _grid_walk(classify, 0, 0, TILE_IMAGE, big):
+        verdicts[(x0, y0, big)] = kind
+        if kind == "accepted":
+            codes[y0 : y0 + big, x0 : x0 + big] = 1
+        if kind != "partial":
+            continue
+        for x1, y1, kind in _grid_walk(classify, x0, y0, big, small):
+            verdicts[(x1, y1, small)] = kind
+            block = (slice(y1, y1 + small), slice(x1, x1 + small))
             if kind == "accepted":
-                codes[y0 : y0 + big, x0 : x0 + big] = 1
-            if kind != "partial":
-                continue
-            for y1 in range(y0, y0 + big, small):
-                for x1 in range(x0, x0 + big, small):
-                    kind = verdicts[(x1, y1, small)] = classify(TILE_TRIANGLE, x1, y1, small)
-                    block = (slice(y1, y1 + small), slice(x1, x1 + small))
-                    if kind == "accepted":
-                        codes[block] = 2
-                    elif kind == "partial":
-                        codes[block] = np.where(coverage[block], 3, 4)
+                codes[block] = 2
+            elif kind == "partial":
+                codes[block] = np.where(coverage[block], 3, 4)
     return codes, verdicts
+
+
+def _grid_walk(classify, x0, y0, side, size):
+    """(x0, y0, verdict) of each ``size`` block of the ``side`` square at (x0, y0), from one
+    call of ``classify`` on the grid of them."""
+    yy, xx = np.mgrid[y0 : y0 + side : size, x0 : x0 + side : size]
+    kinds = np.broadcast_to(np.asarray(classify(TILE_TRIANGLE.copy(), xx, yy, size)), xx.shape)
+    return [(int(x), int(y), str(k)) for x, y, k in zip(xx.ravel(), yy.ravel(), kinds.ravel(), strict=True)]  # fmt: skip
 
 
 def tile_scene(fn) -> Scene:
     reference, truth = walk(tb.expected_block)
 
     def run():
-        codes, scene.parts = walk(lambda xy, x0, y0, s: call(fn, tb.as_kind, xy, x0, y0, s))
+        codes, scene.parts = walk(lambda *a: tb.call_block(lambda *b: call(fn, tb.as_kind, *b), a))
         return codes
 
     def explain(got, row, col):

@@ -1,19 +1,29 @@
-"""Exercise ``classify_block(xy, x0, y0, size)``: the corner trick of lesson 10.
+"""Exercise ``classify_block(xy, x0, y0, size)``: a grid of blocks, one evaluation each.
 
-Pineda (*A Parallel Algorithm for Polygon Rasterization*, 1988) and llvmpipe's
-``lp_rast_tri.c`` (Mesa): an edge function is affine, so over the pixel centres of a block it
-is largest at one corner and smallest at the opposite one. A block (top-left pixel column x0,
-row y0, ``size`` × ``size`` pixels, no image border) is *rejected* when one edge excludes all
-four extreme centres, *accepted* when every edge includes all four, *partial* otherwise; each
-test is the one top-left rule (CONVENTIONS, *Tiles*); a zero-area triangle rejects every
-block. Vertices are on the 1/256 grid.
+Lesson 10 classifies one block at a time by two corners per edge. Hardware classifies many
+blocks at once: the set-up computes, once per triangle and edge, the coefficients of the edge
+function and two constant offsets (llvmpipe's ``lp_setup_tri.c``: a trivial-reject offset
+``eo`` for a one-pixel block, scaled to each block size, and the trivial-accept offset derived
+from it; Abrash, *Rasterization on Larrabee*: each edge stepped to the trivial-reject and
+trivial-accept corners of 16 blocks with one vector add). Each block then costs one
+evaluation of each edge function, E₀ at its top-left pixel centre (x0 + ½, y0 + ½): E₀ + R is
+the largest value of E over the block's pixel centres, E₀ + T the smallest, with
+R = (size − 1)·(max(A, 0) + max(B, 0)) and T = (size − 1)·(min(A, 0) + min(B, 0)) for
+E = A·x + B·y + C oriented so that the interior is positive. A block (``size`` × ``size``
+pixels, no image border) is *rejected* when one edge fails at E₀ + R, *accepted* when every
+edge passes at E₀ + T, *partial* otherwise; each test is the one top-left rule
+(CONVENTIONS, *Tiles*); a zero-area triangle rejects every block. Vertices are on the 1/256
+grid. ``x0`` and ``y0`` are integer arrays of one shape (one block each) and the answer an
+array of that shape (a single text stands for every block).
 
 The expected answer is computed from the package's pieces: the snapped, oriented set-up
-(:func:`teachraster.core.edges.setup_edges`), its edge values at the four centres
-(:func:`~teachraster.core.edges.edge_values_at`) and its tie-aware test
-(:meth:`~teachraster.core.edges.EdgeSetup.inside`). Explanations name the corner that
-maximises (minimises) each edge function, quote its value, and compare the answer with the
-classification the usual mistakes give.
+(:func:`teachraster.core.edges.setup_edges`), its exact edge values at each block's four
+extreme centres (:func:`~teachraster.core.edges.edge_values_at`) and its tie-aware test
+(:meth:`~teachraster.core.edges.EdgeSetup.inside`). The typical mistakes are the same
+classification with one knob turned (:func:`classify_with`): the offset of another corner,
+the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``,
+another tie rule, one winding only. Explanations name the first block of the grid that
+differs, the edge that decides it and its extreme value.
 """
 
 from __future__ import annotations
@@ -37,52 +47,117 @@ from .scalars import num, tri_words, vec
 KINDS = ("rejected", "accepted", "partial")
 
 
-def _corners(x0: int, y0: int, size: int):
-    """Rows and columns of the four extreme pixel centres of a block."""
+def _corners(x0, y0, size: int):
+    """Rows and columns of the four extreme pixel centres of a block (of each block: (4, n))."""
     far_y, far_x = y0 + size - 1, x0 + size - 1
     return np.array([y0, y0, far_y, far_y]), np.array([x0, far_x, x0, far_x])
 
 
-def expected_block(xy, x0, y0, size) -> str:
-    """The package's verdict for one block."""
+def grid_of(x0, y0) -> tuple[np.ndarray, np.ndarray]:
+    """``x0`` and ``y0`` as integer arrays of one shape (scalars: shape ())."""
+    return np.broadcast_arrays(np.asarray(x0, dtype=np.int64), np.asarray(y0, dtype=np.int64))
+
+
+def _verdicts(rejected, accepted, shape, scalar: bool):
+    """The verdict texts of a grid from its masks (one text for a scalar block)."""
+    kinds = np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
+    kinds = np.asarray(kinds, dtype="<U8").reshape(shape)
+    return str(kinds[()]) if scalar else kinds
+
+
+def expected_block(xy, x0, y0, size):
+    """The package's verdict for each block of the grid (one text for scalar x0, y0)."""
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    gx, gy = grid_of(x0, y0)
+    scalar = gx.ndim == 0
     if setup.area2 == 0:
-        return "rejected"
-    rows, cols = _corners(x0, y0, size)
-    e = edge_values_at(setup, rows, cols)  # (4 corners, 3 edges), exact, in units²
-    ok = np.stack([setup.inside(k, e[:, k]) for k in range(3)], axis=1)
-    if (~ok.any(axis=0)).any():
-        return "rejected"
-    return "accepted" if ok.all() else "partial"
+        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, scalar)
+    rows, cols = _corners(gx.ravel(), gy.ravel(), size)  # (4, n)
+    e = edge_values_at(setup, rows.ravel(), cols.ravel())  # (4 n, 3), exact, in units²
+    ok = np.stack([setup.inside(k, e[:, k]) for k in range(3)], axis=1).reshape(4, -1, 3)
+    rejected = (~ok.any(axis=0)).any(axis=-1)
+    return _verdicts(rejected, ok.all(axis=(0, 2)), gx.shape, scalar)
 
 
-def classify_at(xy, xs, ys, tie="top-left", orient=True) -> str:
-    """The verdict from the four points (xs[i], ys[i]) with a tie rule (mistakes included).
+#: Where a mistaken classify_block evaluates E once per block, and how many steps its offsets
+#: span: (x, y, span) from (x0, y0, size).
+POINTS = {
+    "centres": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s - 1),
+    "outer corners": lambda x0, y0, s: (x0 + 0.0, y0 + 0.0, s),
+    "beyond": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s),
+    "x0 y0 swapped": lambda x0, y0, s: (y0 + 0.5, x0 + 0.5, s - 1),
+    "pixel corners": lambda x0, y0, s: (x0 + 0.0, y0 + 0.0, s - 1),
+}
 
-    Edge functions in pixels (exact for vertices on the 1/256 grid and points on the
-    1/2 grid). ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), another rule of
-    two kinds of edges, "bottom-right", "top-right", "bottom-left" (r107 N8-2), or "as
-    given": the top-left rule of each edge as given, before orienting it (r114 D8-4: the
-    bottom-right rule on a counter-clockwise triangle). ``orient`` "cull": every block of a
-    counter-clockwise triangle rejected (r114 item 5).
+
+def _pos(v):
+    return np.maximum(v, 0.0)
+
+
+def _neg(v):
+    return np.minimum(v, 0.0)
+
+
+#: The (reject, accept) offsets from E's coefficients a = ∂E/∂x, b = ∂E/∂y and the span d,
+#: right and wrong.
+OFFSETS = {
+    "right": lambda a, b, d: (d * (_pos(a) + _pos(b)), d * (_neg(a) + _neg(b))),
+    "x mirrored": lambda a, b, d: (d * (_neg(a) + _pos(b)), d * (_pos(a) + _neg(b))),
+    "y mirrored": lambda a, b, d: (d * (_pos(a) + _neg(b)), d * (_neg(a) + _pos(b))),
+    "far corner": lambda a, b, d: (d * (a + b), 0.0 * a),
+    "sign flipped": lambda a, b, d: (-d * (_pos(a) + _pos(b)), -d * (_neg(a) + _neg(b))),
+    "swapped": lambda a, b, d: (d * (_neg(a) + _neg(b)), d * (_pos(a) + _pos(b))),
+    "two corners": lambda a, b, d: (_pos(d * (a + b)), _neg(d * (a + b))),
+}
+
+
+def _owns(tie: str, setup, k: int, d) -> bool:
+    """Does edge k (running along ``d``) own a centre exactly on it, under rule ``tie``?"""
+    owns = {"strict": False, "loose": True, "top-left": bool(setup.top_left[k])}.get(tie)
+    return edge_kind(d) in tie.split("-") if owns is None else owns
+
+
+def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="top-left", orient=True, logic="per edge"):  # fmt: skip
+    """classify_block with the usual mistakes as knobs (the defaults are the right answer).
+
+    One evaluation E₀ of each edge per block at ``POINTS[points]``, plus the per-edge
+    ``OFFSETS[offsets]``. ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), another
+    rule of two kinds of edges ("bottom-right", "top-right", "bottom-left", r107 N8-2), or
+    "as given": the top-left rule of each edge as given, before orienting it (r114 D8-4: the
+    bottom-right rule on a counter-clockwise triangle). ``orient`` False: the edges as given;
+    "cull": every block of a counter-clockwise triangle rejected (r114 item 5). ``logic``
+    "inside" rejects a block whose four extreme points all lie outside the triangle and
+    accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
+    accepts a block every edge's maximising corner passes. Edge functions in pixels: exact
+    for vertices on the 1/256 grid and points on the 1/2 grid.
     """
+    gx, gy = grid_of(x0, y0)
+    scalar, shape = gx.ndim == 0, gx.shape
+    px, py, d = POINTS[points](gx.ravel(), gy.ravel(), size)
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     ccw = bool(setup.perm[1] == 2)  # re-ordered: counter-clockwise on screen
     if setup.area2 == 0 or (orient == "cull" and ccw):
-        return "rejected"
+        return _verdicts(np.ones(shape, bool), False, shape, scalar)
+    if logic == "inside":
+        xs, ys = np.array([px, px + d, px, px + d]), np.array([py, py, py + d, py + d])
+        inside = covered(np.asarray(xy, dtype=float), np.stack([xs.ravel(), ys.ravel()], axis=1))
+        inside = inside.reshape(4, -1)
+        return _verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
     if tie == "as given":
         tie = "bottom-right" if ccw else "top-left"
     v = setup.p / setup.unit if orient else snap(np.asarray(xy, dtype=float))
-    pts = np.stack([xs, ys], axis=1).astype(float)
-    ok = np.empty((len(pts), 3), dtype=bool)
+    rejected = np.zeros(px.shape, bool)
+    accepted = np.ones(px.shape, bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
-        e = (b[0] - a[0]) * (pts[:, 1] - a[1]) - (b[1] - a[1]) * (pts[:, 0] - a[0])
-        owns = {"strict": False, "loose": True, "top-left": setup.top_left[k]}.get(tie)
-        ok[:, k] = passes(e, edge_kind(b - a) in tie.split("-") if owns is None else owns)
-    if (~ok.any(axis=0)).any():
-        return "rejected"
-    return "accepted" if ok.all() else "partial"
+        e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
+        r, t = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d)
+        owns = _owns(tie, setup, k, b - a)
+        rejected |= ~passes(e0 + r, owns)
+        accepted &= passes(e0 + t, owns)
+    if logic == "accept by the best corner":
+        accepted = ~rejected
+    return _verdicts(rejected, accepted & ~rejected, shape, scalar)
 
 
 def edge_kind(d) -> str:
@@ -91,52 +166,87 @@ def edge_kind(d) -> str:
     return ("top" if d[0] > 0 else "bottom") if d[1] == 0 else ("left" if d[1] < 0 else "right")
 
 
-def as_kind(value) -> str:
+def as_kind(value):
+    """The answer as an array of verdict texts (or one text, standing for every block)."""
     names = ", ".join(repr(k) for k in KINDS)
     if value is None:
         raise WrongAnswerType("returned None (a missing `return`?)")
-    if not isinstance(value, str):
-        raise WrongAnswerType(f"returned {short(value)}, not one of the texts {names}")
-    if value not in KINDS:
-        raise WrongAnswerType(f"returned the text {short(value)}; expected one of {names}")
-    return str(value)
+    if isinstance(value, str):
+        if value not in KINDS:
+            raise WrongAnswerType(f"returned the text {short(value)}; expected one of {names}")
+        return value
+    try:
+        kinds = np.asarray(value, dtype=object)
+    except (TypeError, ValueError):
+        kinds = None
+    if kinds is None or kinds.dtype != object or kinds.size == 0 and kinds.ndim == 0:
+        raise WrongAnswerType(f"returned {short(value)}; expected an array of the texts {names}, one per block")  # fmt: skip
+    bad = [k for k in kinds.ravel() if not isinstance(k, str) or k not in KINDS]
+    if bad:
+        raise WrongAnswerType(
+            f"returned {short(value)}, holding {short(bad[0])}; expected one of the texts "
+            f"{names} for each block"
+        )
+    return kinds.astype("<U8")
+
+
+def call_block(fn, args):
+    """The student's answer on a grid, read strictly: one verdict per block, x0's shape."""
+    got = as_kind(fn(*args))
+    shape = np.shape(args[1])
+    if not isinstance(got, str) and got.shape != shape:
+        raise WrongAnswerType(
+            f"returned {got.size} verdicts of shape {got.shape}; expected one per block, an "
+            f"array of shape {shape}, the shape of x0 and y0"
+        )
+    return got
 
 
 def same_kind(got, expected, args) -> bool:
-    return got == expected
+    if isinstance(expected, str) or isinstance(got, str):
+        return bool(np.all(np.asarray(got) == np.asarray(expected)))
+    return np.shape(got) == np.shape(expected) and bool(np.all(got == expected))
 
 
-#: The points a mistaken classify_block tests, from the block (x0, y0, size): (xs, ys).
-POINTS = {
-    "centres": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s - 1),
-    "outer corners": lambda x0, y0, s: _xs_ys(x0, y0, s),
-    "beyond": lambda x0, y0, s: _xs_ys(x0 + 0.5, y0 + 0.5, s),
-    "x0 y0 swapped": lambda x0, y0, s: POINTS["centres"](y0, x0, s),
-    "pixel corners": lambda x0, y0, s: _xs_ys(x0, y0, s - 1),
-    "two corners": lambda x0, y0, s: (
-        np.array([x0 + 0.5, x0 + s - 0.5]),
-        np.array([y0 + 0.5, y0 + s - 0.5]),
-    ),  # fmt: skip
-}
+def match_kind(got, answer, args) -> bool:
+    return answer is not None and same_kind(got, answer, args)
 
 
-def _xs_ys(x, y, d):
-    return np.array([x, x + d, x, x + d]), np.array([y, y, y + d, y + d])
+def first_block(args, expected, got):
+    """The first block (in the grid's order) whose verdict differs: (index, scalar args,
+    expected, got, how many differ)."""
+    xy, x0, y0, size = args
+    gx, gy = grid_of(x0, y0)
+    want = np.broadcast_to(np.asarray(expected), gx.shape)
+    have = np.broadcast_to(np.asarray(got), gx.shape)
+    wrong = np.argwhere(want != have)
+    idx = tuple(int(i) for i in wrong[0]) if len(wrong) else (0,) * gx.ndim
+    block = (xy, int(gx[idx]), int(gy[idx]), size)
+    return idx, block, str(want[idx]), str(have[idx]), len(wrong)
 
 
-def classify_with(xy, x0, y0, size, *, points="centres", tie="top-left", orient=True, logic="per edge"):  # fmt: skip
-    """classify_block with the usual mistakes as knobs (the defaults are the corner trick).
+def _at_first(words):
+    """``words`` of one block, said of the first block of the grid that differs."""
+    if not callable(words):
+        return words
 
-    ``logic`` "inside" rejects a block whose tested points all lie outside the triangle and
-    accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
-    accepts a block every edge's maximising corner passes.
-    """
-    xs, ys = POINTS[points](x0, y0, size)
-    if logic == "inside":
-        inside = covered(np.asarray(xy, dtype=float), np.stack([xs, ys], axis=1))
-        return "accepted" if inside.all() else ("rejected" if not inside.any() else "partial")
-    kind = classify_at(xy, xs, ys, tie, orient)
-    return "accepted" if logic == "accept by the best corner" and kind == "partial" else kind
+    def said(args, expected, got):
+        _, block, e, g, _ = first_block(args, expected, got)
+        return words(block, e, g)
+
+    return said
+
+
+def _coefficients(xy) -> str:
+    """Each oriented edge's A = ∂E/∂x and B = ∂E/∂y, in px."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    v = setup.p / setup.unit
+    out = []
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        name = f"v{setup.perm[k] + 1}→v{setup.perm[(k + 1) % 3] + 1}"
+        out.append(f"{name}: A = {num(-(b[1] - a[1]))}, B = {num(b[0] - a[0])}")
+    return "; ".join(out)
 
 
 def _two_corners(args, expected, got) -> str:
@@ -177,26 +287,65 @@ def _rule_slip(rule: str) -> Slip:
             f"top-left rule; here {_tie_words(args, expected, got)}"
         )
 
-    return Slip(f"{rule} rule", words, rule)
+    return Slip(f"{rule} rule", _at_first(words), rule)
+
+
+def _offset_words(text: str):
+    """A wrong-offset mistake's words, with the case's coefficients (the set-up's numbers)."""
+    return lambda a, e, g: f"{text} (this triangle's edges, oriented: {_coefficients(a[0])})"
+
+
+#: The offset mistakes (the task's question: which constants, added to E₀, give E's largest
+#: and smallest value over the block's centres?).
+OFFSET_SLIPS = [
+    Slip("offsets of another corner (x)", _offset_words(
+        "your offsets take the wrong column of the block: E grows to the right where "
+        "A = ∂E/∂x > 0, so its largest value lies in the block's right-most column of centres "
+        "there and in its left-most where A < 0 (the smallest on the other side); yours take "
+        "the opposite column"), "x mirrored"),
+    Slip("offsets of another corner (y)", _offset_words(
+        "your offsets take the wrong row of the block: E grows downwards where B = ∂E/∂y > 0, "
+        "so its largest value lies in the block's bottom row of centres there and in its top "
+        "row where B < 0 (the smallest on the other side); yours take the opposite row"),
+        "y mirrored"),
+    Slip("offsets of one fixed corner", _offset_words(
+        "your offsets ignore the signs of A = ∂E/∂x and B = ∂E/∂y: (size − 1)·(A + B) is E's "
+        "change to the bottom-right centre, the largest value only where A ≥ 0 and B ≥ 0, and "
+        "E₀ itself the smallest only there; each edge's signs pick its own corners"),
+        "far corner"),
+    Slip("offset signs flipped", "you subtracted the offsets (or flipped their signs): E₀ "
+         "minus the reject offset is E at a point up and to the left of the block, outside "
+         "it; E's largest value over the block's centres is E₀ + R with R ≥ 0, its smallest "
+         "E₀ + T with T ≤ 0", "sign flipped"),
+    Slip("reject and accept offsets swapped", "you swapped the offsets: a block is rejected "
+         "when one edge fails even at its largest value over the block (E₀ plus the reject "
+         "offset, ≥ 0) and accepted when every edge passes even at its smallest (E₀ plus the "
+         "accept offset, ≤ 0); you rejected by the smallest value and accepted by the largest",
+         "swapped"),
+]  # fmt: skip
 
 
 BLOCK_KNOBS = Knobs(classify_with, {
     "points": [
-        Slip("outer corners", "you tested the block's outer corners; the extreme pixel centres "
-             "lie ½ px inside", "outer corners"),
-        Slip("one pixel too far", lambda a, e, g: f"the last pixel centre of the block is x0 + "
-             f"size − ½ = {num(a[1] + a[3] - 0.5)}, not x0 + size + ½", "beyond"),
+        Slip("outer corners", "you evaluated E at the block's outer corners; the extreme pixel "
+             "centres lie ½ px inside (E₀ is E at the centre (x0 + ½, y0 + ½), and the last "
+             "centre lies size − 1 px further)", "outer corners"),
+        Slip("size steps for size − 1", _at_first(lambda a, e, g: "your offsets span size "
+             "steps, so they reach x0 + size + ½ (and y0 + size + ½), beyond the block; its "
+             f"last pixel centre is x0 + size − ½ = {num(a[1] + a[3] - 0.5)}, size − 1 steps "
+             "from its first"), "beyond"),
         # r64 08-2: the pixels' top-left corners were told "only 2 of the 4 extreme centres"
-        Slip("pixel corners", lambda a, e, g: "you tested the pixels' top-left corners "
-             f"({a[1]}, {a[2]}) … ({a[1] + a[3] - 1}, {a[2] + a[3] - 1}); the pixel centres lie "
-             "½ px right and down of them", "pixel corners"),
-        Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 is the block's first column (x), "
-             "y0 its first row (y); its extreme centres lie at x = x0 + ½, x0 + size − ½ and "
-             "y = y0 + ½, y0 + size − ½", "x0 y0 swapped"),
+        Slip("pixel corners", _at_first(lambda a, e, g: "you evaluated E at the pixels' "
+             f"top-left corners ({a[1]}, {a[2]}) … ({a[1] + a[3] - 1}, {a[2] + a[3] - 1}); the "
+             "pixel centres lie ½ px right and down of them"), "pixel corners"),
+        Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 holds the blocks' first columns "
+             "(x), y0 their first rows (y); a block's first pixel centre lies at "
+             "(x0 + ½, y0 + ½)", "x0 y0 swapped"),
     ],
+    "offsets": OFFSET_SLIPS,
     "tie": [
-        Slip("no top-left rule (E > 0)", _tie_words, "strict"),
-        Slip("no top-left rule (E ≥ 0)", _tie_words, "loose"),
+        Slip("no top-left rule (E > 0)", _at_first(_tie_words), "strict"),
+        Slip("no top-left rule (E ≥ 0)", _at_first(_tie_words), "loose"),
         *(_rule_slip(rule) for rule in ("bottom-right", "top-right", "bottom-left")),
     ],
     "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
@@ -204,11 +353,11 @@ BLOCK_KNOBS = Knobs(classify_with, {
     "logic": [
         # r94 D8-1, D8-2: "(nor do corners inside accept it)" was false (the triangle is
         # convex: four covered centres do accept it), and the rule's last sentence said twice
-        Slip("corners inside", lambda a, e, g: "corners outside the triangle do not reject a "
-             "block: the test is per edge; "
-             + _by_verdicts(_edge_table(*a), e, g)[2:].replace(_OUTSIDE, ""), "inside"),
-        Slip("best corner accepts", lambda a, e, g: _by_verdicts(_edge_table(*a), e, "accepted")[2:],
-             "accept by the best corner"),
+        Slip("corners inside", _at_first(lambda a, e, g: "corners outside the triangle do not "
+             "reject a block: the test is per edge; "
+             + _by_verdicts(_edge_table(*a), e, g)[2:].replace(_OUTSIDE, "")), "inside"),
+        Slip("best corner accepts", _at_first(lambda a, e, g: _by_verdicts(
+             _edge_table(*a), e, "accepted")[2:]), "accept by the best corner"),
     ],
 })  # fmt: skip
 
@@ -217,13 +366,13 @@ def _only_whole(kind: str, words, **knobs) -> Mistake:
     """A slip named only where it gives every answer of the check, passing ones too, and
     never combined with another (r114 D8-7, item 5): where it shares a verdict with a
     different function on the failing cases only, naming it misled."""
-    return Mistake(kind, words, lambda *a: classify_with(*a, **knobs), only_whole=True)
+    return Mistake(kind, _at_first(words), lambda *a: classify_with(*a, **knobs), only_whole=True)
 
 
 #: r114 D8-7: "you tested only 2 of the 4 extreme centres" was told to code testing all four
 #: (rejecting where at most one passes) as its first explanation, and in summary lines to a
 #: one-point test: three verdicts, so two corners share one on many a case.
-TWO_CORNERS = _only_whole("two corners only", _two_corners, points="two corners")
+TWO_CORNERS = _only_whole("two corners only", _two_corners, offsets="two corners")
 
 #: r114 D8-4: a winding-dependent tie rule (the top-left test of each edge as given, E's sign
 #: flipped for the other winding) was called "a top-right rule".
@@ -244,21 +393,41 @@ AS_GIVEN = _only_whole(
 #: of its own combined with others and misnamed two functions' summary lines.
 CULLED = _only_whole(
     "culled one winding",
-    "this triangle runs counter-clockwise on screen and you rejected its block, as you do "
+    "this triangle runs counter-clockwise on screen and you rejected its blocks, as you do "
     "every block of such a triangle: classify_block culls nothing: handle both windings "
     "(orient the edges so that the interior is positive)",
     orient="cull",
 )
 
 
-def _by_coverage(xy, x0, y0, size) -> str | None:
-    """The verdict from the coverage of every centre of the block (r73 08-4): none covered,
-    rejected; all, accepted. None on a block too large to list its centres."""
-    if size > 64:
+def _constant(kind: str) -> Mistake:
+    """One verdict for every block of every grid, returned as an array (a text is told by the
+    check's own constant-answer rule)."""
+    return Mistake(
+        f"always {kind}",
+        f"your function says {kind!r} for every block of every grid, whatever the triangle: a "
+        "placeholder left in, or a `return` reached too early?",
+        lambda xy, x0, y0, size: np.full(np.shape(x0), kind, dtype="<U8"),
+        only_whole=True,
+    )
+
+
+#: Every centre of a grid listed, at most (beyond, the coverage mistake says nothing).
+MOST_CENTRES = 1 << 20
+
+
+def _by_coverage(xy, x0, y0, size):
+    """The verdicts from the coverage of every centre of each block (r73 08-4): none covered,
+    rejected; all, accepted. None on a grid too large to list its centres."""
+    gx, gy = grid_of(x0, y0)
+    if gx.size * size * size > MOST_CENTRES:
         return None
-    cols, rows = np.meshgrid(np.arange(size) + x0 + 0.5, np.arange(size) + y0 + 0.5)
-    inside = covered(np.asarray(xy, dtype=float), np.stack([cols.ravel(), rows.ravel()], axis=1))
-    return "accepted" if inside.all() else ("rejected" if not inside.any() else "partial")
+    i, j = np.meshgrid(np.arange(size), np.arange(size))
+    xs = gx.reshape(-1, 1) + j.reshape(1, -1) + 0.5
+    ys = gy.reshape(-1, 1) + i.reshape(1, -1) + 0.5
+    inside = covered(np.asarray(xy, dtype=float), np.stack([xs.ravel(), ys.ravel()], axis=1))
+    inside = inside.reshape(gx.size, -1)
+    return _verdicts(~inside.any(axis=1), inside.all(axis=1), gx.shape, gx.ndim == 0)
 
 
 #: r73 08-4: an exact test of every centre was told "you tested only 2 of the 4 extreme centres".
@@ -272,29 +441,30 @@ BY_COVERAGE = Mistake(
 )
 
 
-def _float32_verdict(xy, x0, y0, size) -> str:
-    """The corner trick's four centres with every edge function computed in float32."""
+def _float32_verdict(xy, x0, y0, size):
+    """The right offsets with every edge function computed in float32."""
     f = np.float32
     v = np.asarray(xy, dtype=float).astype(f)
 
-    def e(a, b, p):
-        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+    def e(a, b, px, py):
+        return (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
 
-    area = e(v[0], v[1], v[2])
+    gx, gy = grid_of(x0, y0)
+    area = e(v[0], v[1], v[2][0], v[2][1])
     if area == 0:
-        return "rejected"
+        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
     if area < 0:
         v = v[[0, 2, 1]]
-    xs, ys = POINTS["centres"](x0, y0, size)
-    pts = np.stack([xs, ys], axis=1).astype(f)
-    accepted = True
+    px, py = (gx.ravel() + 0.5).astype(f), (gy.ravel() + 0.5).astype(f)
+    rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
-        ok = passes(np.array([e(a, b, q) for q in pts]), edge_kind(b - a) in ("top", "left"))
-        if not ok.any():
-            return "rejected"
-        accepted = accepted and bool(ok.all())
-    return "accepted" if accepted else "partial"
+        r, t = OFFSETS["right"](-(b[1] - a[1]), b[0] - a[0], f(size - 1))
+        owns = edge_kind(b - a) in ("top", "left")
+        e0 = e(a, b, px, py)
+        rejected |= ~passes((e0 + f(r)).astype(f), owns)
+        accepted &= passes((e0 + f(t)).astype(f), owns)
+    return _verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
 
 
 #: r107 N8-1: float32 edge functions passed every case (no centre lay within float32's
@@ -310,25 +480,33 @@ FLOAT32 = Mistake(
 
 
 def explain_block(args, expected, got) -> str:
+    """The first block of the grid that differs, its extreme centres, and both verdicts."""
     xy, x0, y0, size = args
-    return (
-        f"the block x0={x0}, y0={y0}, size={size} (extreme centres x = {num(x0 + 0.5)}, "
-        f"{num(x0 + size - 0.5)}; y = {num(y0 + 0.5)}, {num(y0 + size - 0.5)}) is {expected}; "
-        f"yours says {got}"
+    _, (_, bx, by, _), e, g, wrong = first_block(args, expected, got)
+    total = int(np.size(grid_of(x0, y0)[0]))
+    block = (
+        f"x0={bx}, y0={by}, size={size} (extreme centres x = {num(bx + 0.5)}, "
+        f"{num(bx + size - 0.5)}; y = {num(by + 0.5)}, {num(by + size - 0.5)})"
     )
+    if total == 1:
+        return f"the block {block} is {e}; yours says {g}"
+    differ = "differs" if wrong == 1 else "differ"
+    which = f"all {total} blocks of the grid differ" if wrong == total else f"{wrong} of the grid's {total} blocks {differ}"  # fmt: skip
+    return f"{which}; the first, {block}, is {e}; yours says {g}"
 
 
 def _block_rule(args, expected, got) -> str:
-    xy, x0, y0, size = args
+    xy = args[0]
     if setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS).area2 == 0:
         return f": {tri_words(xy)} are collinear, and a zero-area triangle rejects every block"
-    return _by_verdicts(_edge_table(xy, x0, y0, size), expected, got)
+    _, block, e, g, _ = first_block(args, expected, got)
+    return _by_verdicts(_edge_table(*block), e, g)
 
 
-#: The words that say which centres decide a block (the task's question: "Be exact about
-#: which points those are"), each replaced by a hint until two different answers have failed
-#: (r64 08-3: every first failure's header printed the extreme centres, as mip_level's gave its
-#: formula; :attr:`.exercise.Exercise.hints`).
+#: The words that say which centres decide a block, or the offsets (the task's question),
+#: each replaced by a hint until two different answers have failed (r64 08-3: every first
+#: failure's header printed the extreme centres, as mip_level's gave its formula;
+#: :attr:`.exercise.Exercise.hints`).
 _POINT = r"\([^()]*\) \(E = [^()]*\)"
 BLOCK_HINTS = (
     (re.compile(r" \(extreme centres x = [^;()]*; y = [^()]*\)"), ""),
@@ -348,17 +526,34 @@ BLOCK_HINTS = (
                 r"edge: the top-left rule (includes|excludes) it"),
      r"\1: the top-left rule \2 it (which kind of edge is it, with y pointing down?)"),
     # r94 D8-3: named mistakes that gave the extreme centres (or the method) on the first try
-    ("; its extreme centres lie at x = x0 + ½, x0 + size − ½ and y = y0 + ½, y0 + size − ½", ""),
-    (re.compile(r"the last pixel centre of the block is x0 \+ size − ½ = [^,]*, not x0 \+ size "
-                r"\+ ½"), "x0 + size + ½ lies beyond the block's last pixel centre"),
+    ("; a block's first pixel centre lies at (x0 + ½, y0 + ½)", ""),
+    (re.compile(r"; its last pixel centre is x0 \+ size − ½ = [^,]*, size − 1 steps from its "
+                r"first"), "; where is the block's last pixel centre?"),
+    (" (E₀ is E at the centre (x0 + ½, y0 + ½), and the last centre lies size − 1 px further)",
+     ""),
     ("; test all four (or, per edge, the one its signs pick)", ""),
+    (re.compile(r"E grows to the right where A = ∂E/∂x > 0, so its largest value lies in the "
+                r"block's right-most column of centres there and in its left-most where A < 0 "
+                r"\(the smallest on the other side\); yours take the opposite column"),
+     "which column of centres in the block holds E's largest value, for each sign of A?"),
+    (re.compile(r"E grows downwards where B = ∂E/∂y > 0, so its largest value lies in the "
+                r"block's bottom row of centres there and in its top row where B < 0 \(the "
+                r"smallest on the other side\); yours take the opposite row"),
+     "which row of centres in the block holds E's largest value, for each sign of B?"),
+    (re.compile(r": \(size − 1\)·\(A \+ B\) is E's change to the bottom-right centre, the "
+                r"largest value only where A ≥ 0 and B ≥ 0, and E₀ itself the smallest only "
+                r"there; each edge's signs pick its own corners"),
+     ": which corner of the block is E's largest, for each sign of A and B?"),
+    ("; E's largest value over the block's centres is E₀ + R with R ≥ 0, its smallest E₀ + T "
+     "with T ≤ 0", "; can the largest value over the block be below E₀?"),
 )  # fmt: skip
 
 
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, CULLED, AS_GIVEN, TWO_CORNERS, BLOCK_KNOBS], draw=draw_block_case, scene=scene, hints=BLOCK_HINTS,
+        [BY_COVERAGE, FLOAT32, CULLED, AS_GIVEN, TWO_CORNERS, *map(_constant, KINDS), BLOCK_KNOBS],
+        draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
         partial_names=False,
@@ -398,56 +593,76 @@ def _hard_blocks():
     ]  # fmt: skip
 
 
+def _around(x0: int, y0: int, size: int, shape=(2, 2)):
+    """A grid of blocks of one size whose first block is (x0, y0): (x0 array, y0 array)."""
+    if len(shape) == 1:  # a row of blocks
+        return x0 + size * np.arange(shape[0]), np.full(shape[0], y0)
+    yy, xx = np.mgrid[0 : shape[0], 0 : shape[1]]
+    return x0 + size * xx, y0 + size * yy
+
+
+def _covering(xy, size: int):
+    """The grid of blocks of ``size`` over the triangle's bounding box, one block beyond."""
+    lo = np.floor(xy.min(axis=0) / size).astype(int) - 1
+    hi = np.floor(xy.max(axis=0) / size).astype(int) + 1
+    yy, xx = np.mgrid[lo[1] : hi[1] + 1, lo[0] : hi[0] + 1]
+    return xx * size, yy * size
+
+
 def _block_cases(rng, word):
-    """Hard blocks (vertices, edges through corners, tiny triangles, zero area), then random."""
-    blocks = [
-        (label, np.array(xy, dtype=float), x0, y0, s) for label, xy, x0, y0, s in _hard_blocks()
-    ]
+    """Hard blocks (each the first of a small grid), then random grids over triangles."""
+    grids = []
+    for n, (label, xy, x0, y0, s) in enumerate(_hard_blocks()):
+        gx, gy = _around(x0, y0, s, (3,) if n % 4 == 3 else (2, 2))
+        grids.append((label, np.array(xy, dtype=float), gx, gy, s))
     for n in range(18):
         xy = snap(rng.uniform(0, 32, size=(3, 2)))
         if n % 3 == 0:
             xy = np.floor(xy) + 0.5  # vertices on pixel centres: edges through corner centres
         size = (1, 4, 8, 16)[n % 4]
-        # a block around a random point of the bounding box (and a little beyond)
-        p = rng.uniform(xy.min(axis=0) - size, xy.max(axis=0) + size)
-        x0, y0 = (int(v) for v in np.floor(p / size) * size)
-        blocks.append((f"{word} {n + 1}", xy, x0, y0, size))
+        gx, gy = _covering(xy, size)
+        grids.append((f"{word} {n + 1}", xy, gx, gy, size))
+    big = snap(np.array([[3.3, 2.1], [250.2, 60.7], [40.9, 254.4]]))
+    gx, gy = _covering(big, 8)
+    grids.append(("a 256-px triangle, every 8-px block over it", big, gx, gy, 8))
     return [
-        (f"{label}: {tri_words(xy)}, block x0={x0}, y0={y0}, size={s}", (xy, x0, y0, s),
-         expected_block(xy, x0, y0, s))
-        for label, xy, x0, y0, s in blocks
+        (f"{label}: {tri_words(xy)}, {_grid_words(gx, gy, s)}", (xy, gx, gy, s),
+         expected_block(xy, gx, gy, s))
+        for label, xy, gx, gy, s in grids
     ]  # fmt: skip
+
+
+def _grid_words(gx, gy, size) -> str:
+    if gx.ndim == 1:
+        return f"a row of {gx.size} blocks, x0={int(gx[0])}…{int(gx[-1])}, y0={int(gy[0])}, size={size}"  # fmt: skip
+    return (
+        f"a {gx.shape[0]} × {gx.shape[1]} grid of blocks, x0={int(gx.min())}…{int(gx.max())}, "
+        f"y0={int(gy.min())}…{int(gy.max())}, size={size}"
+    )
 
 
 _fixed_and_drawn = fixed_and_drawn(_block_cases, SEED + 100)  # r49: some drawn per check
 
-#: The side of the huge blocks: 2^19 px, 2.7·10^11 centres (vertices stay within the ±2^21 px
-#: the package's 8-bit fixed point holds).
+#: The side of the huge blocks: 2^19 px, 2.7·10^11 centres each (vertices stay within the
+#: ±2^21 px the package's 8-bit fixed point holds).
 HUGE = 2**19
 
 
 def _huge_blocks() -> list:
-    """Blocks of 2^19 × 2^19 px, one of each verdict and both windings (r64 08-1: testing all
-    size² centres passed every case, though the task asks for a few edge tests per edge). A
-    handful of edge tests decide each; a scan of its centres cannot finish within the CPU
-    limit, and the case's label says why (as ``span``'s 10^12-px triangle does). Vertices on
-    whole pixels, so that float64 edge functions are exact and no extreme centre ties."""
+    """3 × 3 grids of 2^19 × 2^19 px blocks, every verdict, both windings (r64 08-1: testing
+    all size² centres passed every case, though the task asks for one evaluation per block).
+    A scan of the centres cannot finish within the CPU limit, and the case's label says why.
+    Vertices on whole pixels, so that float64 edge functions are exact."""
     xy = np.array([[-5e5, -5e5], [2e6, -5e5], [-5e5, 2e6]])
-    why = ("a scan of its 2.7·10^11 centres does not finish; a few edge tests per edge "
-           "decide it")  # fmt: skip
-    blocks = [
-        (f"a block of 2^19 × 2^19 px inside a huge triangle ({why})", xy, 0, 0),
-        (f"a block of 2^19 × 2^19 px beyond a huge triangle's long edge ({why})", xy, 2 * HUGE,
-         2 * HUGE),
-        (f"a block of 2^19 × 2^19 px that a huge triangle's long edge crosses ({why})", xy, HUGE,
-         HUGE),
-        (f"counter-clockwise, a block of 2^19 × 2^19 px inside a huge triangle ({why})",
-         xy[[0, 2, 1]], 0, 0),
-    ]  # fmt: skip
+    why = "a scan of their 2.7·10^11 centres each does not finish; one evaluation per block does"  # fmt: skip
+    gx, gy = _around(0, 0, HUGE, (3, 3))
     return [
-        (f"{label}: {tri_words(t)}, block x0={x0}, y0={y0}, size={HUGE}", (t, x0, y0, HUGE),
-         expected_block(t, x0, y0, HUGE))
-        for label, t, x0, y0 in blocks
+        (f"{label}: {tri_words(t)}, {_grid_words(gx, gy, HUGE)}", (t, gx, gy, HUGE),
+         expected_block(t, gx, gy, HUGE))
+        for label, t in (
+            (f"blocks of 2^19 × 2^19 px inside, across and beyond a huge triangle's long edge ({why})", xy),
+            (f"counter-clockwise, blocks of 2^19 × 2^19 px over a huge triangle ({why})", xy[[0, 2, 1]]),
+        )
     ]  # fmt: skip
 
 
@@ -455,7 +670,7 @@ _huge = cache(_huge_blocks)
 
 
 def block_cases() -> list:
-    """The hard and random blocks (fixed, then drawn for this check), then the huge blocks,
+    """The hard and random grids (fixed, then drawn for this check), then the huge blocks,
     last, so that a per-centre scan is told its other mistakes before it runs out of time."""
     return _fixed_and_drawn() + copy.deepcopy(_huge())
 
@@ -528,27 +743,43 @@ def _by_verdicts(edges, expected, got) -> str:
 _OUTSIDE = ". Corners outside the triangle do not reject a block: the test is per edge"
 
 
+#: Fill colours of the blocks by the package's verdict (the walk's colours, lesson 10).
+VERDICT_COLOURS = {"rejected": "#bdbdbd", "accepted": "#1b9e77", "partial": "#ff9f1c"}
+
+
 def draw_block_case(ax, case, got):
-    """The snapped triangle, the block (its four extreme centres once the hints are spent),
-    and the verdicts."""
+    """The snapped triangle over the grid's blocks, each tinted by the package's verdict, the
+    first block that differs outlined (its four extreme centres once the hints are spent)."""
+    from matplotlib.patches import Rectangle
+
     from .drawing import plain_ticks
 
-    xy, x0, y0, size = case[1]
+    xy, gx, gy, size = case[1]
+    gx, gy = grid_of(gx, gy)
+    want = np.broadcast_to(np.asarray(case[2]), gx.shape)
+    artists = []
+    for bx, by, kind in zip(gx.ravel(), gy.ravel(), want.ravel(), strict=True):
+        patch = Rectangle((bx, by), size, size, facecolor=VERDICT_COLOURS[str(kind)], alpha=0.35,
+                          edgecolor="#636363", linewidth=0.6)  # fmt: skip
+        artists.append(ax.add_patch(patch))
     ring = np.vstack([snap(xy), snap(xy)[:1]])
-    artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
-    box = np.array([[x0, y0], [x0 + size, y0], [x0 + size, y0 + size], [x0, y0 + size], [x0, y0]])
-    artists += ax.plot(box[:, 0], box[:, 1], color="#ff9f1c", linewidth=2)
-    # r73 08-1: the four decisive centres are the task's question ("Be exact about which
-    # points those are"): drawn only once two different answers have failed, as the words say
-    from .tries import hints_spent
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    _, (_, bx, by, _), e, g, wrong = first_block(case[1], case[2], case[2] if got is None else got)
+    if got is not None and wrong:
+        box = np.array([[bx, by], [bx + size, by], [bx + size, by + size], [bx, by + size], [bx, by]])  # fmt: skip
+        artists += ax.plot(box[:, 0], box[:, 1], color="#d7301f", linewidth=2.5)
+        # r73 08-1: the four decisive centres are the task's question: drawn only once two
+        # different answers have failed, as the words say
+        from .tries import hints_spent
 
-    if hints_spent("classify_block"):
-        ys, xs = _corners(x0, y0, size)
-        artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
-    yours = "" if got is None else f", yours {got}"
-    ax.set_xlabel(f"{case[2]}{yours}")
-    lo = np.minimum(ring.min(axis=0), [x0, y0]) - 1
-    hi = np.maximum(ring.max(axis=0), [x0 + size, y0 + size]) + 1
+        if hints_spent("classify_block"):
+            ys, xs = _corners(bx, by, size)
+            artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
+    yours = "" if got is None or not wrong else f"; first differing block {e}, yours {g}"
+    counts = ", ".join(f"{int((want == k).sum())} {k}" for k in KINDS if (want == k).any())
+    ax.set_xlabel(f"{counts}{yours}")
+    lo = np.minimum(ring.min(axis=0), [gx.min(), gy.min()]) - 1
+    hi = np.maximum(ring.max(axis=0), [gx.max() + size, gy.max() + size]) + 1
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
     plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
