@@ -247,6 +247,25 @@ def test_01_float_crossing_is_no_tie_rule_and_stepping():
     assert 0 < ns.drift < 1e-14  # "a few 10^-15 px"
 
 
+def test_01_exact_stepping_is_not_one_addition():
+    """Review r139 06-C1: lesson 01 priced the quotient-and-remainder loop at "one addition per
+    edge and line", against lesson 06's 3 per crossing. Its loop adds the quotient and the
+    remainder and compares the remainder with the divisor (the carry on some lines only)."""
+    every = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]) for c in every if c["cell_type"] == "markdown")
+                    .split())  # fmt: skip
+    assert "still one addition per edge and line" not in text
+    assert "makes the loop one addition per edge and line" not in text
+    assert "in fixed point (quotient and remainder) on none" not in text
+    assert "two additions and a compare per edge and line" in text
+    assert "two and a compare with the crossing kept exactly as a quotient and a remainder" in text
+    # the loop does what the text counts: per edge and line q += dq, r += dr, one compare
+    fixed = next("".join(c["source"]) for c in every
+                 if "def span_fill_fixed(" in "".join(c["source"]))  # fmt: skip
+    step = fixed.split("for e in (long, short):")[1].split("return cover")[0]
+    assert "e[0], e[1] = e[0] + e[3], e[1] + e[4]" in step and step.count("if e[1] >= e[2]") == 1
+
+
 @pytest.mark.notebook
 def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")

@@ -223,6 +223,14 @@ def test_06_edge_bits_and_depth_claims():
     assert "close to the limit already at 256²" in ns.FILL_TEXT
     assert "exact only in fixed point" not in ns.FILL_TEXT
     assert "quotient and remainder" in ns.FILL_TEXT and "3 additions per crossing" in ns.FILL_TEXT
+    # review r139 06-C1: a constant step drifts as a fixed-point *fraction*, not lesson 01's
+    # fixed-point loop, which keeps the remainder; the last sentence parses (no "tie rule")
+    assert "and in fixed point too" not in ns.FILL_TEXT
+    assert "lesson 01's fixed-point loop is exact because it also keeps the remainder" in " ".join(
+        ns.FILL_TEXT.split()
+    )
+    assert "to stay a tie rule" not in ns.FILL_TEXT
+    assert "computes each crossing afresh, a divide per line, so that no rounding" in ns.FILL_TEXT
     # review r135 06-2: the tie rule, not the cost of the arithmetic (floats can crack a mesh)
     assert ns.TIE_TEXT.startswith(
         "What cracks a mesh is an inconsistent **tie rule**, not the cost of the arithmetic."
