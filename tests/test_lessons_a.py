@@ -295,7 +295,12 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert starred == [1, 5, 9, 13]
     told = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
     assert "rows 5, 9 and 13 have one on both ends" in told
-    assert "(q_row's row 11 has none: its ends, 7 and 16, lie on pixel borders)" in told
+    # review r140 F1: the row-11 ends (q_row's answer) are no longer in the Markdown below the
+    # question; held cell 13 prints them once q_row is checked
+    assert "7 and 16" not in told and "q_row's row 11" not in told
+    assert ns.ends_words == "7 and 16"
+    held_ends = next(c for c in nb["cells"] if "ends_words = " in "".join(c["source"]))
+    assert "".join(held_ends["source"]).startswith("q_row.hold()")
     # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
     # filled anyway
     assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))
