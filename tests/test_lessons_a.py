@@ -87,6 +87,52 @@ def test_every_predict_cell_hides_its_source_and_no_shown_cell_holds_an_answer(n
     assert asked >= 2, name
 
 
+#: Review r140: what, below a question and before its Check, gave the answer away in these
+#: lessons' visible source or Markdown (hold() hides a cell's outputs, not its input).
+ANSWERED_BELOW = {
+    "01_span_tables": {"q_row": ["7 and 16", "q_row's row 11"]},
+    "03_barycentric_and_plane_equations": {"q_weights": ["λ1 v1 + λ2 v2 + λ3 v3 ="]},
+    "04_perspective_correct_interpolation": {
+        "q_midpoint": ["t = q * z0 / (z1 - q * (z1 - z0))", "t_ritschel = ", "1 - t = (1 - q)"],
+        "q_where": ["t = q * z0 / (z1 - q * (z1 - z0))", "1 - t = (1 - q)"],
+        "q_affine": ["affine interpolation steps $v$ evenly"],
+    },
+    "07_hard_cases": {
+        "q_fan": ["FAN_TEXT = "],
+        "q_gaps": ["GAPS_TEXT = ", "two strictly inside the wedge"],
+        "q_far": ["(q_far's answer)"],
+        "q_behind": ["BEHIND_TEXT = ", "mirrored vertex"],
+    },
+}
+
+
+@pytest.mark.parametrize("name", sorted(ANSWERED_BELOW))
+def test_cells_between_a_question_and_its_check_hide_what_answers_it(name):
+    """Review r140: between a Predict cell and its last held cell, every held cell that
+    displays Markdown (a held text) is folded, and no visible cell (unfolded code or any
+    Markdown) holds a phrase known to answer the question."""
+    cells = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    folded = [c["metadata"].get("jupyter", {}).get("source_hidden") is True for c in cells]
+    questions = {
+        m.group(1): i
+        for i, t in enumerate(text)
+        if (m := re.search(r"\b(q_\w+) = Predict\w*\(", t)) and cells[i]["cell_type"] == "code"
+    }
+    assert set(ANSWERED_BELOW[name]) <= set(questions), name
+    for q, ask in questions.items():
+        held = [i for i, t in enumerate(text) if t.startswith(f"{q}.hold()")]
+        assert held and min(held) > ask, (name, q)
+        for i in range(ask + 1, max(held) + 1):
+            if i in held and ("Markdown(" in text[i] or re.search(r"\b[A-Z_]+_TEXT = ", text[i])):
+                assert folded[i] and "hide-input" in cells[i]["metadata"]["tags"], (name, q, i)
+                continue
+            if folded[i]:
+                continue
+            for phrase in ANSWERED_BELOW[name].get(q, []):
+                assert phrase not in text[i], (name, q, i, phrase)
+
+
 @pytest.mark.parametrize("name", MINE)
 def test_no_cell_moves_a_widget_the_student_is_using(name):
     """Cells driven from code use a second, hidden widget (``probe``), never the shown one."""
@@ -314,7 +360,12 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert starred == [1, 5, 9, 13]
     told = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
     assert "rows 5, 9 and 13 have one on both ends" in told
-    assert "(q_row's row 11 has none: its ends, 7 and 16, lie on pixel borders)" in told
+    # review r140 F1: the row-11 ends (q_row's answer) are no longer in the Markdown below the
+    # question; held cell 13 prints them once q_row is checked
+    assert "7 and 16" not in told and "q_row's row 11" not in told
+    assert ns.ends_words == "7 and 16"
+    held_ends = next(c for c in nb["cells"] if "ends_words = " in "".join(c["source"]))
+    assert "".join(held_ends["source"]).startswith("q_row.hold()")
     # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
     # filled anyway
     assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))

@@ -1070,6 +1070,22 @@ def test_07_t_junction_cracks_overlaps_and_the_split_seals_it():
     for c in cells[:ask]:  # nothing above the question counts the fan's hits
         assert "all sixteen" not in c and "16 times" not in c and "fan_spokes" not in c
     square = cells[ask - 2]  # shown, not held: nothing is asked about it
+    # review r140 F5: the 9 centres the top-left rule leaves to the outside are all rim
+    # vertices (spike tips at the top and left among them), not "the right and bottom sides"
+    left_out = np.argwhere((ns.fan_counts_naive >= 2) & (ns.fan_counts_ours == 0))
+    from teachraster.study import hardcases
+
+    fan_case = hardcases.get_case("fan_spokes_through_centres")
+    rim = {(int(y - 0.5), int(x - 0.5)) for xy in fan_case.triangles for x, y in xy}
+    rim.discard(tuple(int(k) for k in np.argwhere(ns.fan_counts_naive == 16)[0]))  # the hub
+    assert len(rim) == 16 and {tuple(map(int, c)) for c in left_out} <= rim
+    assert left_out[:, 0].min() == 3 and left_out[:, 1].min() == 3  # top and left ends too
+    assert "right and bottom" not in cells[ask]
+    assert "all rim vertices, to the triangles" in cells[ask]
+    # review r140 F4: the w-ratio paragraph follows q_behind's held figure, above its own case
+    behind = max(i for i, c in enumerate(cells) if c.startswith("q_behind.hold()"))
+    assert cells[behind + 1].startswith("**Perspective denominators.**")
+    assert cells[behind + 2].startswith('case, ours = introduce("perspective_w_ratio_1e6")')
     assert 'introduce("d3d_split_square_other_diagonal")' in square and "hold()" not in square
 
 
