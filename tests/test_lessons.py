@@ -382,3 +382,20 @@ def test_09_gpu_and_widget_agree_with_the_story():
     if ns.gl_agreement is not None:
         assert ns.gl_agreement >= 0.98
     # the widget is driven in tests/test_lessons_b.py (the lesson no longer drives it)
+
+
+@pytest.mark.parametrize("path", sorted(NOTEBOOK_DIR.glob("*.ipynb")), ids=lambda p: p.stem)
+def test_every_held_text_is_folded_so_its_source_does_not_answer_the_question(path):
+    """A held cell (``q_x.hold()`` first) that displays a text shows its words after Check; its
+    source must be folded too, or the words stand on screen under the question before it is
+    answered (review r140: 04, 07; the same pattern then found in 02, 06, 09 and 10)."""
+    import json
+    import re
+
+    for i, cell in enumerate(json.loads(path.read_text())["cells"]):
+        text = "".join(cell["source"])
+        if cell["cell_type"] != "code" or not re.match(r"q_\w+\.hold\(\)", text):
+            continue
+        if "Markdown(" in text or re.search(r"\b[A-Z_]+_TEXT = ", text):
+            folded = cell["metadata"].get("jupyter", {}).get("source_hidden") is True
+            assert folded and "hide-input" in cell["metadata"].get("tags", []), (path.name, i)
