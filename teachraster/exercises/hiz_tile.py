@@ -246,6 +246,8 @@ def _box_cases() -> list[tuple[str, tuple]]:
     past = _SMALL * [0.8, 0.8, 1] + [4.54, 4.54, 0]  # box from 4.7: first centre 5.5, not 4.5
     beyond = _SMALL * [4, 4, 1] + [14.9, 1, 0]  # box from x = 15.7: past the centre 15.5
     big = _SMALL * [2, 2, 1] + [6, 6, 0]  # a 16-px tile around a 7-px triangle
+    big_far = _SMALL * [-2, -2, 1] + [14, 14, 0]  # mirrored: nearest at (13.6, 13.6)
+    far_buffer = _with(np.full((2 * TILE, 2 * TILE), 0.2), (12, 12), 0.35)
     buffer = np.full((TILE, TILE), 0.305)
     return [
         ("a small triangle in the tile's bottom-right corner, its depth growing away from "
@@ -260,6 +262,12 @@ def _box_cases() -> list[tuple[str, tuple]]:
          (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
         ("a 16-px tile around a small triangle", (big, 0, 0, 2 * TILE,
                                                   np.full((2 * TILE, 2 * TILE), 0.301))),
+        # r141 D8.2-1: the case above decides inside the tile's first 8 × 8 pixels, so a tile
+        # taken as 8 px wide (size = 8, col0 + 7) passed every case; here the bound (0.302)
+        # lies at the centre (13.5, 13.5) and the farthest stored depth (0.35) at pixel
+        # (12, 12): cut at 8 px the bound is 0.422, and the first 8 × 8 store only 0.2
+        ("a 16-px tile, the triangle's depth nearest beyond the tile's first 8 × 8 pixels, "
+         "its farthest stored depth there too", (big_far, 0, 0, 2 * TILE, far_buffer)),
     ]  # fmt: skip
 
 
@@ -431,6 +439,8 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "farthest vertex": bool(xyz[:, 2].max() >= far),
             "tile mean": bool(len(finite) and near >= finite.mean()),
             "row col swapped": bool(lower_bound(xyz, col0, row0, size) >= far),
+            # r141 D8.2-1: the tile taken as 8 px wide whatever its size (size = 8, col0 + 7)
+            "tile of 8": bool(lower_bound(xyz, row0, col0, TILE) >= far),
             # r131 D8-4: the centres at integer coordinates (8.1 names the same slip)
             "integer centres": bool(_integer_bound(xyz, row0, col0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
@@ -643,6 +653,10 @@ MISTAKES = {
     "integer centres": "you put the pixel centres at integer coordinates: pixel column c "
     "has its centre at x = c + ½ and row r at y = r + ½, so both which centres lie in the box "
     "and the plane's value there move by ½ px",
+    "tile of 8": lambda a, e, g: "you took the tile as 8 × 8 pixels (size = 8, or col0 + 7, "
+    f"written in): this case's tile is {a[3]} px wide, and here the plane is nearest at centres "
+    "beyond your 8; the tile is size × size, its last column col0 + size − 1 and its last row "
+    "row0 + size − 1",
     "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
