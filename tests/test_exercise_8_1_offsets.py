@@ -41,7 +41,7 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
         area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
         if area == 0:
             return np.full(px.shape, "rejected")
-        if (area < 0 and orient) or (area > 0 and orient == "flipped"):
+        if (area > 0) if orient == "flipped" else (area < 0 and orient):
             v = v[[0, 2, 1]]
         d = {"size - 1": size - 1, "size": size, "one": 1, "size / 2": size / 2}[span]
         rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
