@@ -422,6 +422,12 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r137 D8-1, D8-10: the nearest vertex inside the tile; the stored depths read
             # inside the box only
             "vertex in tile": bool(_vertex_in_tile_bound(xyz, row0, col0, size, bare) >= far),
+            # r141 D8.2-2: the tile taken half-open (a vertex on its right or bottom side out)
+            "vertex in tile, half-open": bool(
+                _vertex_in_tile_bound(xyz, row0, col0, size, bare, open_high=True) >= far
+            ),
+            # r141 D8.2-2: int(xmin + ½) for ⌈xmin − ½⌉ and int(xmax − ½) for ⌊xmax − ½⌋
+            "int round": bool(_cut_bound(xyz, row0, col0, size, border="int") >= far),
             "box buffer": bool(near >= _box_buffer_far(xyz, row0, col0, size, buffer)),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
@@ -455,15 +461,16 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
     "trunc": ``int(xmax − ½)``, truncated toward 0). +inf where the tile and the box share
     no centre (as the task's)."""
-    if border not in ("past", "trunc") and _box_corners(xyz, row0, col0, size) is None:
+    if border not in ("past", "trunc", "int") and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (those two judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
     spans = []
     for axis, first in ((0, col0), (1, row0)):
         lo, hi = xy[:, axis].min(), xy[:, axis].max()
         a = int(np.floor(lo + 0.5)) if border in ("none", "high") else int(np.ceil(lo - 0.5))
+        a = int(lo + 0.5) if border == "int" else a
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
-             "trunc": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
+             "trunc": int(hi - 0.5), "int": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
@@ -476,11 +483,13 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     return _bound_at(xyz, np.array([r0, r0, r1, r1]), np.array([c0, c1, c0, c1]))
 
 
-def _vertex_in_tile_bound(xyz, row0, col0, size, bare: float) -> float:
+def _vertex_in_tile_bound(xyz, row0, col0, size, bare: float, open_high=False) -> float:
     """The plane's minimum over the box's centres, no nearer than the nearest vertex *inside
-    the tile* (the bare plane where none is)."""
-    inside = ((xyz[:, 0] >= col0) & (xyz[:, 0] <= col0 + size) & (xyz[:, 1] >= row0)
-              & (xyz[:, 1] <= row0 + size))  # fmt: skip
+    the tile* (the bare plane where none is; ``open_high``: the tile without its right and
+    bottom side)."""
+    end = np.less if open_high else np.less_equal
+    inside = ((xyz[:, 0] >= col0) & end(xyz[:, 0], col0 + size) & (xyz[:, 1] >= row0)
+              & end(xyz[:, 1], row0 + size))  # fmt: skip
     return max(bare, float(xyz[inside, 2].min())) if inside.any() else bare
 
 
@@ -598,6 +607,10 @@ MISTAKES = {
     "is nearer than the nearest vertex of the whole triangle, wherever that vertex lies, but a "
     "vertex inside the tile can be farther than fragments beside it (a bound from it can "
     "reject a fragment that is drawn)",
+    "int round": "you rounded the box's ends with int(): int(xmin + ½) for its first column "
+    "skips the column whose centre lies exactly at xmin (⌈xmin − ½⌉ keeps it), and int() "
+    "truncates toward 0 where floor rounds down: use math.ceil(xmin − ½) and "
+    "math.floor(xmax − ½) (and y alike); " + _BORDER,
     "box buffer": "you compared with the depths stored in the tile's pixels inside the box "
     "only: Hi-Z keeps one number per tile, its farthest stored depth, and never reads the "
     "pixels (reading them is the per-pixel work it skips); compare with the tile's farthest "
@@ -661,6 +674,8 @@ MISTAKES = {
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
 }
+#: r141 D8.2-2: the tile half-open or closed, the same mistake
+MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
 
 
 #: How close (relative) the nearest depth and the farthest stored one must be for float32's
