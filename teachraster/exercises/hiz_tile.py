@@ -666,10 +666,12 @@ MISTAKES = {
     "integer centres": "you put the pixel centres at integer coordinates: pixel column c "
     "has its centre at x = c + ½ and row r at y = r + ½, so both which centres lie in the box "
     "and the plane's value there move by ½ px",
-    "tile of 8": lambda a, e, g: "you took the tile as 8 × 8 pixels (size = 8, or col0 + 7, "
-    f"written in): this case's tile is {a[3]} px wide, and here the plane is nearest at centres "
-    "beyond your 8; the tile is size × size, its last column col0 + size − 1 and its last row "
-    "row0 + size − 1",
+    "tile of 8": lambda a, e, g: (
+        "you took the tile as 8 × 8 pixels (size = 8, or col0 + 7, "
+        f"written in): this case's tile is {a[3]} px wide, and here the plane is nearest at centres "
+        "beyond your 8; the tile is size × size, its last column col0 + size − 1 and its last row "
+        "row0 + size − 1"
+    ),
     "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",

@@ -795,10 +795,7 @@ def _by_verdicts(edges, expected, got) -> str:
     best = [f"{e['name']}: {_corner(e['max'])}" for e in edges]
     return (
         ": no edge excludes the block's four corner centres (each edge's maximising corner "
-        "passes: "
-        + "; ".join(best)
-        + ")"
-        + _OUTSIDE
+        "passes: " + "; ".join(best) + ")" + _OUTSIDE
     )
 
 
