@@ -29,9 +29,11 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.i
 
 def student(offsets="right", span="size - 1", tie="top-left", orient=True, start=0.5):
     """classify_block as a student writes it, with one slip: ``offsets`` "right", "x mirrored",
-    "y mirrored", "far corner", "sign flipped", "swapped"; ``span`` "size - 1" or "size";
-    ``tie`` "top-left", "E >= 0" or "E > 0"; ``orient`` False: the edges as given; ``start``
-    where E₀ is evaluated, from (x0, y0)."""
+    "y mirrored", "far corner", "sign flipped", "swapped", "reject by T" (the accept test
+    right); ``span`` "size - 1", "size", "one" (a one-pixel block's offset, not scaled) or
+    "size / 2"; ``tie`` "top-left", "E >= 0", "E > 0" or "accept strict" (the rule in the
+    reject test only); ``orient`` False: the edges as given, "flipped": the interior on their
+    negative side; ``start`` where E₀ is evaluated, from (x0, y0)."""
 
     def classify_block(xy, x0, y0, size):
         v = np.asarray(xy, dtype=float)
@@ -39,9 +41,9 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
         area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
         if area == 0:
             return np.full(px.shape, "rejected")
-        if area < 0 and orient:
+        if (area > 0) if orient == "flipped" else (area < 0 and orient):
             v = v[[0, 2, 1]]
-        d = size - 1 if span == "size - 1" else size
+        d = {"size - 1": size - 1, "size": size, "one": 1, "size / 2": size / 2}[span]
         rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
         for k in range(3):
             a, b = v[k], v[(k + 1) % 3]
@@ -54,12 +56,14 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
                 "far corner": (d * (A + B), 0.0),
                 "sign flipped": (-R, -T),
                 "swapped": (T, R),
+                "reject by T": (T, T),
             }[offsets]
             e0 = A * (px - a[0]) + B * (py - a[1])
             top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
-            owns = {"top-left": top_left, "E >= 0": True, "E > 0": False}[tie]
+            owns = {"top-left": top_left, "E >= 0": True, "E > 0": False,
+                    "accept strict": top_left}[tie]  # fmt: skip
             rejected |= (e0 + R < 0) if owns else (e0 + R <= 0)
-            accepted &= (e0 + T >= 0) if owns else (e0 + T > 0)
+            accepted &= (e0 + T >= 0) if owns and tie != "accept strict" else (e0 + T > 0)
         return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
 
     return classify_block
@@ -75,8 +79,25 @@ MISTAKES = {
         student(offsets="far corner"), "offsets of one fixed corner", "ignore the signs of A"),
     "offset sign flipped": (
         student(offsets="sign flipped"), "offset signs flipped", "you subtracted the offsets"),
+    # r141 D8.1-5, D8.1-7: both give the same verdicts; the words say only what both do
     "accept and reject offsets swapped": (
-        student(offsets="swapped"), "reject and accept offsets swapped", "you swapped the offsets"),
+        student(offsets="swapped"), "rejected by the smallest value",
+        "you rejected by E's smallest value over the block, E₀ + T"),
+    "rejected by E₀ + T, accepted right": (
+        student(offsets="reject by T"), "rejected by the smallest value",
+        "you rejected by E's smallest value over the block, E₀ + T"),
+    # r141 D8.1-3: a one-pixel block's offset not scaled was told "Corners outside the triangle
+    # do not reject a block"; size/2 steps too
+    "offsets not scaled (one step)": (
+        student(span="one"), "offsets not scaled", "llvmpipe's offset for a one-pixel block"),
+    "offsets of size/2 steps": (
+        student(span="size / 2"), "offsets of size/2 steps", "your offsets span size/2 steps"),
+    # r141 D8.1-4, D8.1-6: the flipped orientation, the tie rule missing from the accept test
+    "oriented the wrong way": (
+        student(orient="flipped"), "oriented the wrong way", "oriented the wrong way round"),
+    "tie rule in the reject test only": (
+        student(tie="accept strict"), "no top-left rule in the accept test",
+        "your accept test leaves out the top-left rule"),
     "size instead of size - 1": (
         student(span="size"), "size steps for size − 1", "your offsets span size steps"),
     "E at the outer corner": (
@@ -110,7 +131,9 @@ def test_each_typical_mistake_is_named_by_its_own_words(mistake, full_words):
     assert first.kind == kind, (first.kind, first.explanation)
     assert words in first.explanation, first.explanation
     # no other mistake's words on the same report's first failure
-    others = {w for m, (_, _, w) in MISTAKES.items() if w != words}
+    # (r141 D8.1-6: the tie rule missing from the accept test says the tie, as b06's words do)
+    shared = {"lies exactly on edge"} if kind == "no top-left rule in the accept test" else set()
+    others = {w for m, (_, _, w) in MISTAKES.items() if w != words} - shared
     assert not [w for w in others if w in first.explanation], first.explanation
     # every failing case of a single slip is that slip's (or an engine's constant note)
     assert {f.kind for f in report.failures if f.kind} == {kind}, [f.kind for f in report.failures]

@@ -246,6 +246,8 @@ def _box_cases() -> list[tuple[str, tuple]]:
     past = _SMALL * [0.8, 0.8, 1] + [4.54, 4.54, 0]  # box from 4.7: first centre 5.5, not 4.5
     beyond = _SMALL * [4, 4, 1] + [14.9, 1, 0]  # box from x = 15.7: past the centre 15.5
     big = _SMALL * [2, 2, 1] + [6, 6, 0]  # a 16-px tile around a 7-px triangle
+    big_far = _SMALL * [-2, -2, 1] + [14, 14, 0]  # mirrored: nearest at (13.6, 13.6)
+    far_buffer = _with(np.full((2 * TILE, 2 * TILE), 0.2), (12, 12), 0.35)
     buffer = np.full((TILE, TILE), 0.305)
     return [
         ("a small triangle in the tile's bottom-right corner, its depth growing away from "
@@ -260,6 +262,12 @@ def _box_cases() -> list[tuple[str, tuple]]:
          (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
         ("a 16-px tile around a small triangle", (big, 0, 0, 2 * TILE,
                                                   np.full((2 * TILE, 2 * TILE), 0.301))),
+        # r141 D8.2-1: the case above decides inside the tile's first 8 × 8 pixels, so a tile
+        # taken as 8 px wide (size = 8, col0 + 7) passed every case; here the bound (0.302)
+        # lies at the centre (13.5, 13.5) and the farthest stored depth (0.35) at pixel
+        # (12, 12): cut at 8 px the bound is 0.422, and the first 8 × 8 store only 0.2
+        ("a 16-px tile, the triangle's depth nearest beyond the tile's first 8 × 8 pixels, "
+         "its farthest stored depth there too", (big_far, 0, 0, 2 * TILE, far_buffer)),
     ]  # fmt: skip
 
 
@@ -414,6 +422,12 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r137 D8-1, D8-10: the nearest vertex inside the tile; the stored depths read
             # inside the box only
             "vertex in tile": bool(_vertex_in_tile_bound(xyz, row0, col0, size, bare) >= far),
+            # r141 D8.2-2: the tile taken half-open (a vertex on its right or bottom side out)
+            "vertex in tile, half-open": bool(
+                _vertex_in_tile_bound(xyz, row0, col0, size, bare, open_high=True) >= far
+            ),
+            # r141 D8.2-2: int(xmin + ½) for ⌈xmin − ½⌉ and int(xmax − ½) for ⌊xmax − ½⌋
+            "int round": bool(_cut_bound(xyz, row0, col0, size, border="int") >= far),
             "box buffer": bool(near >= _box_buffer_far(xyz, row0, col0, size, buffer)),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
@@ -431,6 +445,8 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "farthest vertex": bool(xyz[:, 2].max() >= far),
             "tile mean": bool(len(finite) and near >= finite.mean()),
             "row col swapped": bool(lower_bound(xyz, col0, row0, size) >= far),
+            # r141 D8.2-1: the tile taken as 8 px wide whatever its size (size = 8, col0 + 7)
+            "tile of 8": bool(lower_bound(xyz, row0, col0, TILE) >= far),
             # r131 D8-4: the centres at integer coordinates (8.1 names the same slip)
             "integer centres": bool(_integer_bound(xyz, row0, col0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
@@ -445,15 +461,16 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
     "trunc": ``int(xmax − ½)``, truncated toward 0). +inf where the tile and the box share
     no centre (as the task's)."""
-    if border not in ("past", "trunc") and _box_corners(xyz, row0, col0, size) is None:
+    if border not in ("past", "trunc", "int") and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (those two judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
     spans = []
     for axis, first in ((0, col0), (1, row0)):
         lo, hi = xy[:, axis].min(), xy[:, axis].max()
         a = int(np.floor(lo + 0.5)) if border in ("none", "high") else int(np.ceil(lo - 0.5))
+        a = int(lo + 0.5) if border == "int" else a
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
-             "trunc": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
+             "trunc": int(hi - 0.5), "int": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
@@ -466,11 +483,13 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
     return _bound_at(xyz, np.array([r0, r0, r1, r1]), np.array([c0, c1, c0, c1]))
 
 
-def _vertex_in_tile_bound(xyz, row0, col0, size, bare: float) -> float:
+def _vertex_in_tile_bound(xyz, row0, col0, size, bare: float, open_high=False) -> float:
     """The plane's minimum over the box's centres, no nearer than the nearest vertex *inside
-    the tile* (the bare plane where none is)."""
-    inside = ((xyz[:, 0] >= col0) & (xyz[:, 0] <= col0 + size) & (xyz[:, 1] >= row0)
-              & (xyz[:, 1] <= row0 + size))  # fmt: skip
+    the tile* (the bare plane where none is; ``open_high``: the tile without its right and
+    bottom side)."""
+    end = np.less if open_high else np.less_equal
+    inside = ((xyz[:, 0] >= col0) & end(xyz[:, 0], col0 + size) & (xyz[:, 1] >= row0)
+              & end(xyz[:, 1], row0 + size))  # fmt: skip
     return max(bare, float(xyz[inside, 2].min())) if inside.any() else bare
 
 
@@ -588,6 +607,10 @@ MISTAKES = {
     "is nearer than the nearest vertex of the whole triangle, wherever that vertex lies, but a "
     "vertex inside the tile can be farther than fragments beside it (a bound from it can "
     "reject a fragment that is drawn)",
+    "int round": "you rounded the box's ends with int(): int(xmin + ½) for its first column "
+    "skips the column whose centre lies exactly at xmin (⌈xmin − ½⌉ keeps it), and int() "
+    "truncates toward 0 where floor rounds down: use math.ceil(xmin − ½) and "
+    "math.floor(xmax − ½) (and y alike); " + _BORDER,
     "box buffer": "you compared with the depths stored in the tile's pixels inside the box "
     "only: Hi-Z keeps one number per tile, its farthest stored depth, and never reads the "
     "pixels (reading them is the per-pixel work it skips); compare with the tile's farthest "
@@ -643,10 +666,18 @@ MISTAKES = {
     "integer centres": "you put the pixel centres at integer coordinates: pixel column c "
     "has its centre at x = c + ½ and row r at y = r + ½, so both which centres lie in the box "
     "and the plane's value there move by ½ px",
+    "tile of 8": lambda a, e, g: (
+        "you took the tile as 8 × 8 pixels (size = 8, or col0 + 7, "
+        f"written in): this case's tile is {a[3]} px wide, and here the plane is nearest at centres "
+        "beyond your 8; the tile is size × size, its last column col0 + size − 1 and its last row "
+        "row0 + size − 1"
+    ),
     "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
 }
+#: r141 D8.2-2: the tile half-open or closed, the same mistake
+MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
 
 
 #: How close (relative) the nearest depth and the farthest stored one must be for float32's

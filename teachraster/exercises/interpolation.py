@@ -31,7 +31,10 @@ def barycentric_cases():
     n_fixed = 2 * len(proper_triangles())
     for label, xy in proper_triangles():
         lo, hi = xy.min(axis=0), xy.max(axis=0)
-        for p in (centre_near(xy.mean(axis=0)), centre_near(rng.uniform(lo, hi))):
+        first, second = centre_near(xy.mean(axis=0)), centre_near(rng.uniform(lo, hi))
+        if np.array_equal(first, second):  # r141 D3-b: a small triangle's case twice (and its
+            second = first + [1.0, 0.0]  # failure printed twice): the next centre, outside it
+        for p in (first, second):
             out.append((f"{label}, p={vec(p)}", (xy, p), barycentric(xy, p)))
     now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
     while len(out) < n_fixed + DRAWN:
@@ -89,6 +92,33 @@ def _clamped(xy, p) -> np.ndarray | None:
     return kept / kept.sum()
 
 
+def _epsilon_fits(args, expected, got) -> bool:
+    """λ = E(...)/(E(v1, v2, v3) + δ) for a small δ ≠ 0, in float64 (r141 D3-b: a guard
+    against dividing by 0, ``area + 1e-12``, was told "did you compute in float32?")."""
+    xy, p = args
+    g, area = np.asarray(got, dtype=float), _area(xy)
+    total = float(np.sum(g))
+    if g.shape != (3,) or not np.isfinite(g).all() or total == 0:
+        return False
+    delta = area / total - area
+    if delta == 0 or abs(delta) > 1e-3:
+        return False
+    return bool(np.allclose(g, _areas(xy, p) / (area + delta), rtol=1e-12, atol=1e-300))
+
+
+def _epsilon_words(args, expected, got) -> str:
+    xy, _ = args
+    area = _area(xy)
+    delta = area / float(np.sum(np.asarray(got, dtype=float))) - area
+    error = float(np.max(np.abs(np.asarray(got, dtype=float) - expected)))
+    return (
+        f": you added a small number (about {delta:.0e}) to E(v1, v2, v3) = {num(area)} (a guard "
+        f"against dividing by 0?): on this small triangle that moves the weights by {error:.1e}; "
+        "divide by E(v1, v2, v3) itself (the check's triangles never have zero area, and a "
+        "zero-area one has no weights)"
+    )
+
+
 def barycentric_mistakes() -> list[Mistake]:
     out = [
         Mistake("absolute area", _absolute_area_words,
@@ -116,6 +146,7 @@ def barycentric_mistakes() -> list[Mistake]:
                 "rebuild p and sum to 1); do not clamp them", gives=_clamped),
         Mistake("p's x and y swapped", ": you swapped p's x and y: p = (x, y), its column "
                 "first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
+        Mistake("epsilon added to the area", _epsilon_words, fits=_epsilon_fits),
     ]  # fmt: skip
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):

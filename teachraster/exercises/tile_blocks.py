@@ -3,9 +3,10 @@
 Lesson 10 classifies one block at a time by two corners per edge. Hardware classifies many
 blocks at once: the set-up computes, once per triangle and edge, the coefficients of the edge
 function and two constant offsets (llvmpipe's ``lp_setup_tri.c``: a trivial-reject offset
-``eo`` for a one-pixel block, scaled to each block size, and the trivial-accept offset derived
-from it; Abrash, *Rasterization on Larrabee*: each edge stepped to the trivial-reject and
-trivial-accept corners of 16 blocks with one vector add). Each block then costs one
+``eo`` of one whole pixel step, shifted to each block size, so that its offsets reach one step
+past the block's last centre, and the trivial-accept offset derived from it; Abrash,
+*Rasterization on Larrabee*: each edge stepped to the trivial-reject corners of 16 blocks with
+one vector add, to their trivial-accept corners with another). Each block then costs one
 evaluation of each edge function, E₀ at its top-left pixel centre (x0 + ½, y0 + ½): E₀ + R is
 the largest value of E over the block's pixel centres, E₀ + T the smallest, with
 R = (size − 1)·(max(A, 0) + max(B, 0)) and T = (size − 1)·(min(A, 0) + min(B, 0)) for
@@ -87,6 +88,9 @@ POINTS = {
     "beyond": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s),
     "x0 y0 swapped": lambda x0, y0, s: (y0 + 0.5, x0 + 0.5, s - 1),
     "pixel corners": lambda x0, y0, s: (x0 + 0.0, y0 + 0.0, s - 1),
+    # r141 D8.1-3: a one-pixel block's offsets not scaled to the block, or scaled by size/2
+    "one step": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, 1),
+    "half size": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s / 2),
 }
 
 
@@ -124,8 +128,11 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     ``OFFSETS[offsets]``. ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), another
     rule of two kinds of edges ("bottom-right", "top-right", "bottom-left", r107 N8-2), or
     "as given": the top-left rule of each edge as given, before orienting it (r114 D8-4: the
-    bottom-right rule on a counter-clockwise triangle). ``orient`` False: the edges as given;
-    "cull": every block of a counter-clockwise triangle rejected (r114 item 5). ``logic``
+    bottom-right rule on a counter-clockwise triangle), or "accept strict": the rule in the
+    reject test only, the accept test E > 0 on every edge (r141 D8.1-6). ``orient`` False: the
+    edges as given; "cull": every block of a counter-clockwise triangle rejected (r114 item 5);
+    "flipped": oriented the wrong way, the interior on every edge's negative side (r141
+    D8.1-4; the top-left rule then read from those edges' own kinds). ``logic``
     "inside" rejects a block whose four extreme points all lie outside the triangle and
     accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
     accepts a block every edge's maximising corner passes. Edge functions in pixels: exact
@@ -145,16 +152,21 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         return _verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
     if tie == "as given":
         tie = "bottom-right" if ccw else "top-left"
+    accept_tie = "strict" if tie == "accept strict" else tie
+    tie = "top-left" if tie == "accept strict" else tie
     v = setup.p / setup.unit if orient else snap(np.asarray(xy, dtype=float))
+    if orient == "flipped":
+        v = v[[0, 2, 1]]
+        # the rule from the kinds of these (wrongly oriented) edges, as the student's code has it
+        tie, accept_tie = ("left-top" if t == "top-left" else t for t in (tie, accept_tie))
     rejected = np.zeros(px.shape, bool)
     accepted = np.ones(px.shape, bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
         e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
         r, t = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d)
-        owns = _owns(tie, setup, k, b - a)
-        rejected |= ~passes(e0 + r, owns)
-        accepted &= passes(e0 + t, owns)
+        rejected |= ~passes(e0 + r, _owns(tie, setup, k, b - a))
+        accepted &= passes(e0 + t, _owns(accept_tie, setup, k, b - a))
     if logic == "accept by the best corner":
         accepted = ~rejected
     return _verdicts(rejected, accepted & ~rejected, shape, scalar)
@@ -317,12 +329,38 @@ OFFSET_SLIPS = [
          "minus the reject offset is E at a point up and to the left of the block, outside "
          "it; E's largest value over the block's centres is E₀ + R with R ≥ 0, its smallest "
          "E₀ + T with T ≤ 0", "sign flipped"),
-    Slip("reject and accept offsets swapped", "you swapped the offsets: a block is rejected "
-         "when one edge fails even at its largest value over the block (E₀ plus the reject "
-         "offset, ≥ 0) and accepted when every edge passes even at its smallest (E₀ plus the "
-         "accept offset, ≤ 0); you rejected by the smallest value and accepted by the largest",
-         "swapped"),
+    # r141 D8.1-7: "(E₀ plus the reject offset, ≥ 0)" read as E₀ + R ≥ 0, the opposite of
+    # failing. D8.1-5: rejecting by E₀ + T with the accept test right gives the same verdicts
+    # as both offsets swapped (a block no edge rejects at E₀ + T passes everywhere), and was
+    # told "you accepted by the largest": the words say only what both do
+    Slip("rejected by the smallest value", "you rejected by E's smallest value over the "
+         "block, E₀ + T (the offsets swapped, or the accept offset in the reject test): a "
+         "block is rejected only when one edge fails even at its largest value over the block "
+         "(E₀ + R, with R ≥ 0), and accepted when every edge passes even at its smallest "
+         "(E₀ + T, with T ≤ 0)", "swapped"),
 ]  # fmt: skip
+
+
+def _span_words(what: str, why: str, span):
+    """A wrong number of steps in the offsets (r141 D8.1-3: one step, a one-pixel block's
+    offset not scaled, was told "Corners outside the triangle do not reject a block")."""
+
+    def words(a, e, g):
+        size = a[3]
+        steps, need = span(size), size - 1
+        how = (
+            "fall short of E's largest and smallest values over its centres (a block holding "
+            "a covered centre can be rejected: a hole)"
+            if steps < need
+            else "reach beyond its last centre"
+        )
+        return (
+            f"your offsets span {what} ({num(steps)} for this {size}-px block{why}): they {how}; "
+            f"the block's last pixel centre lies size − 1 = {need} steps from its first: scale "
+            "the offsets by size − 1"
+        )
+
+    return _at_first(words)
 
 
 BLOCK_KNOBS = Knobs(classify_with, {
@@ -330,8 +368,11 @@ BLOCK_KNOBS = Knobs(classify_with, {
         Slip("outer corners", "you evaluated E at the block's outer corners; the extreme pixel "
              "centres lie ½ px inside (E₀ is E at the centre (x0 + ½, y0 + ½), and the last "
              "centre lies size − 1 px further)", "outer corners"),
+        # r141 D8.1-2: llvmpipe's own offsets do this on purpose
         Slip("size steps for size − 1", _at_first(lambda a, e, g: "your offsets span size "
-             "steps, so they reach x0 + size + ½ (and y0 + size + ½), beyond the block; its "
+             "steps, so they reach x0 + size + ½ (and y0 + size + ½), beyond the block "
+             "(llvmpipe's scaled offsets do so on purpose, a cautious test; the task asks for "
+             "the exact ones, over the block's own centres); its "
              f"last pixel centre is x0 + size − ½ = {num(a[1] + a[3] - 0.5)}, size − 1 steps "
              "from its first"), "beyond"),
         # r64 08-2: the pixels' top-left corners were told "only 2 of the 4 extreme centres"
@@ -341,15 +382,29 @@ BLOCK_KNOBS = Knobs(classify_with, {
         Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 holds the blocks' first columns "
              "(x), y0 their first rows (y); a block's first pixel centre lies at "
              "(x0 + ½, y0 + ½)", "x0 y0 swapped"),
+        Slip("offsets not scaled", _span_words("one pixel step whatever the block's size", "; "
+             "llvmpipe's offset for a one-pixel block, not scaled to the block?", lambda s: 1),
+             "one step"),
+        Slip("offsets of size/2 steps", _span_words("size/2 steps", "", lambda s: s / 2),
+             "half size"),
     ],
     "offsets": OFFSET_SLIPS,
     "tie": [
         Slip("no top-left rule (E > 0)", _at_first(_tie_words), "strict"),
         Slip("no top-left rule (E ≥ 0)", _at_first(_tie_words), "loose"),
         *(_rule_slip(rule) for rule in ("bottom-right", "top-right", "bottom-left")),
+        # r141 D8.1-6: the rule in the reject test only was given the generic rule
+        Slip("no top-left rule in the accept test", _at_first(lambda a, e, g: "your accept test "
+             "leaves out the top-left rule (E > 0 on every edge; your reject test has it): "
+             "here " + _tie_words(a, e, g)), "accept strict"),
     ],
     "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
-                    "both windings (orient the edges so that the interior is positive)", False)],
+                    "both windings (orient the edges so that the interior is positive)", False),
+               # r141 D8.1-4: every sign flipped was given the generic rule
+               Slip("oriented the wrong way", "your edges are oriented the wrong way round: the "
+                    "triangle's interior lies on the negative side of each, so you reject the "
+                    "blocks inside it and accept none; orient them so that the interior is "
+                    "positive", "flipped")],
     "logic": [
         # r94 D8-1, D8-2: "(nor do corners inside accept it)" was false (the triangle is
         # convex: four covered centres do accept it), and the rule's last sentence said twice
@@ -532,6 +587,10 @@ BLOCK_HINTS = (
     (" (E₀ is E at the centre (x0 + ½, y0 + ½), and the last centre lies size − 1 px further)",
      ""),
     ("; test all four (or, per edge, the one its signs pick)", ""),
+    # r141 D8.1-3: the steps the offsets span are the task's question
+    (re.compile(r"; the block's last pixel centre lies size − 1 = \d+ steps from its first: "
+                r"scale the offsets by size − 1"),
+     "; how many steps from its first centre lies the block's last?"),
     (re.compile(r"E grows to the right where A = ∂E/∂x > 0, so its largest value lies in the "
                 r"block's right-most column of centres there and in its left-most where A < 0 "
                 r"\(the smallest on the other side\); yours take the opposite column"),
@@ -715,13 +774,15 @@ def _by_verdicts(edges, expected, got) -> str:
     if expected == "rejected":
         edge = next(e for e in edges if not e["pass"].any())
         return (
-            f": edge {edge['name']} excludes all four: even the corner that maximises its E, "
+            f": edge {edge['name']} excludes the block's four corner centres (and so every "
+            f"centre between them): even the corner that maximises its E, "
             f"{_corner(edge['max'])}, fails; one such edge rejects the block"
         )
     if expected == "accepted":
         worst = min(edges, key=lambda e: e["min"][2])
         return (
-            f": every edge includes all four centres; the lowest of the minimising corners is "
+            f": every edge includes the block's four corner centres; the lowest of the "
+            "minimising corners is "
             f"{_corner(worst['min'])} for edge {worst['name']}, which passes"
         )
     failing = next((e for e in edges if not e["pass"].all()), None)
@@ -733,10 +794,8 @@ def _by_verdicts(edges, expected, got) -> str:
         )
     best = [f"{e['name']}: {_corner(e['max'])}" for e in edges]
     return (
-        ": no edge excludes all four centres (each edge's maximising corner passes: "
-        + "; ".join(best)
-        + ")"
-        + _OUTSIDE
+        ": no edge excludes the block's four corner centres (each edge's maximising corner "
+        "passes: " + "; ".join(best) + ")" + _OUTSIDE
     )
 
 
