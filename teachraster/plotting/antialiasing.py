@@ -595,10 +595,12 @@ def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:
     for s, (x, y) in enumerate(pts):
         w, h = 0.62 * size * len(str(s)) + 2 + NUMBER_GAP, size + 1 + NUMBER_GAP
         best, best_hits = None, None
-        for reach in (1.0, 1.8, 2.6):
+        # the leader's room first; without it next (a number by its dot needs no leader) before
+        # a number goes further out, or outside the pixel square (review r92 08)
+        for reach, lead in ((1.0, LEADER_PT), (1.0, 0.0), (1.8, LEADER_PT), (2.6, LEADER_PT)):
             for dx, dy in directions:
-                ox = dx * (r + w / 2 + LEADER_PT) * reach
-                oy = dy * (r + h / 2 + LEADER_PT) * reach
+                ox = dx * (r + w / 2 + lead) * reach
+                oy = dy * (r + h / 2 + lead) * reach
                 box = (x + ox - w / 2, y + oy - h / 2, x + ox + w / 2, y + oy + h / 2)
                 inside = box[0] >= x_lo and box[2] <= x_hi and box[1] >= y_lo and box[3] <= y_hi
                 hits = sum(_overlap(box, b) for b in blocked) + (0 if inside else 10)
