@@ -156,6 +156,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
          (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
         *_steep_cases(),
         *_box_cases(),
+        *_tile_size_cases(),  # r141 D8.2-1
         *_border_cases(),  # r131 D8-1
         *_one_axis_cases(),  # r131 D8-6
         *_r137_cases(),
@@ -246,8 +247,6 @@ def _box_cases() -> list[tuple[str, tuple]]:
     past = _SMALL * [0.8, 0.8, 1] + [4.54, 4.54, 0]  # box from 4.7: first centre 5.5, not 4.5
     beyond = _SMALL * [4, 4, 1] + [14.9, 1, 0]  # box from x = 15.7: past the centre 15.5
     big = _SMALL * [2, 2, 1] + [6, 6, 0]  # a 16-px tile around a 7-px triangle
-    big_far = _SMALL * [-2, -2, 1] + [14, 14, 0]  # mirrored: nearest at (13.6, 13.6)
-    far_buffer = _with(np.full((2 * TILE, 2 * TILE), 0.2), (12, 12), 0.35)
     buffer = np.full((TILE, TILE), 0.305)
     return [
         ("a small triangle in the tile's bottom-right corner, its depth growing away from "
@@ -262,10 +261,17 @@ def _box_cases() -> list[tuple[str, tuple]]:
          (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
         ("a 16-px tile around a small triangle", (big, 0, 0, 2 * TILE,
                                                   np.full((2 * TILE, 2 * TILE), 0.301))),
-        # r141 D8.2-1: the case above decides inside the tile's first 8 × 8 pixels, so a tile
-        # taken as 8 px wide (size = 8, col0 + 7) passed every case; here the bound (0.302)
-        # lies at the centre (13.5, 13.5) and the farthest stored depth (0.35) at pixel
-        # (12, 12): cut at 8 px the bound is 0.422, and the first 8 × 8 store only 0.2
+    ]  # fmt: skip
+
+
+def _tile_size_cases() -> list[tuple[str, tuple]]:
+    """r141 D8.2-1: the 16-px box case decides inside the tile's first 8 × 8 pixels, so a tile
+    taken as 8 px wide (size = 8, col0 + 7) passed every case. Here the bound (0.302) lies at
+    the centre (13.5, 13.5) and the farthest stored depth (0.35) at pixel (12, 12): the tile
+    is kept; cut at 8 px the bound is 0.422 and the first 8 × 8 store only 0.2 (rejected)."""
+    big_far = _SMALL * [-2, -2, 1] + [14, 14, 0]  # nearest at (13.6, 13.6)
+    far_buffer = _with(np.full((2 * TILE, 2 * TILE), 0.2), (12, 12), 0.35)
+    return [
         ("a 16-px tile, the triangle's depth nearest beyond the tile's first 8 × 8 pixels, "
          "its farthest stored depth there too", (big_far, 0, 0, 2 * TILE, far_buffer)),
     ]  # fmt: skip
