@@ -256,7 +256,8 @@ class PlaneExplorer:
             # the positions of the slider moved last, drawn while the kernel idles; full
             # pictures (the colour bar of a new f range too), so a release on one needs no
             # picture from the kernel (issue 31: up to 122 ms after the release of v1 x)
-            self.display.ahead([*self.x, *self.y, *self.f], self, full=True)
+            self.display.ahead([*self.x, *self.y, *self.f], self, full=True,
+                               busy=lambda: self._drag_xy is not None)  # fmt: skip
 
     def _sliders(self, xy, f) -> None:
         def slider(value, lo, hi, name, step=0.25):
