@@ -399,3 +399,24 @@ def test_every_held_text_is_folded_so_its_source_does_not_answer_the_question(pa
         if "Markdown(" in text or re.search(r"\b[A-Z_]+_TEXT = ", text):
             folded = cell["metadata"].get("jupyter", {}).get("source_hidden") is True
             assert folded and "hide-input" in cell["metadata"].get("tags", []), (path.name, i)
+
+
+@pytest.mark.parametrize("path", sorted(NOTEBOOK_DIR.glob("*.ipynb")), ids=lambda p: p.stem)
+def test_a_folded_cells_first_line_states_no_formula(path):
+    """JupyterLab shows a folded cell's first line: lesson 03's held cell under q_weights read
+    "q_weights.hold()  # p = λ1 v1 + λ2 v2 + λ3 v3 answers the drag by one substitution"
+    (review r147, r143), the answer on screen before Check. A folded cell's first comment
+    may set a premise ("x = 1.5", "N = 16") but states no formula (an = with an operator
+    after it)."""
+    import json
+    import re
+
+    for i, cell in enumerate(json.loads(path.read_text())["cells"]):
+        if cell["cell_type"] != "code" or not cell["metadata"].get("jupyter", {}).get(
+            "source_hidden"
+        ):
+            continue
+        first = "".join(cell["source"]).split("\n", 1)[0]
+        comment = first.split("#", 1)[1] if "#" in first else ""
+        formula = re.search(r"=[^=,;:]*[+*/×÷]", comment)
+        assert formula is None and "λ1 v1" not in first, (path.name, i, first)
