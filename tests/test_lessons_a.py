@@ -356,9 +356,9 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.ends_asked == list(ns.ends[13][:2]) == [7.5, 13.5] and ns.ties_asked == [True] * 2
     assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
     assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
-    assert ns.tie_words(7.5, "left", True).endswith("is exactly a centre, and the left edge owns "
-                                                    "it: filled")  # fmt: skip
-    assert "the right edge does not own it" in ns.tie_words(13.5, "right", False)
+    assert ns.tie_ends == ["7.5 is exactly a centre, and the left edge owns it: filled",
+                           "13.5 is exactly a centre, and the right edge does not own it: left "
+                           "to the neighbour"]  # fmt: skip
     row_cell = next("".join(c["source"]) for c in json.loads(
         (NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
         if "q_row = PredictPixels(" in "".join(c["source"]))  # fmt: skip
