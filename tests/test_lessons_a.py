@@ -90,7 +90,10 @@ def test_every_predict_cell_hides_its_source_and_no_shown_cell_holds_an_answer(n
 #: Review r140: what, below a question and before its Check, gave the answer away in these
 #: lessons' visible source or Markdown (hold() hides a cell's outputs, not its input).
 ANSWERED_BELOW = {
-    "01_span_tables": {"q_row": ["7 and 16", "q_row's row 11"]},
+    "01_span_tables": {
+        "q_row": ["7.5 and 13.5", "columns 7-12", "rows 5, 9 and 13"],
+        "q_fail": ["60 of them", "30.0%", "a large share"],
+    },
     "03_barycentric_and_plane_equations": {"q_weights": ["λ1 v1 + λ2 v2 + λ3 v3 ="]},
     "04_perspective_correct_interpolation": {
         "q_midpoint": ["t = q * z0 / (z1 - q * (z1 - z0))", "t_ritschel = ", "1 - t = (1 - q)"],
@@ -305,9 +308,38 @@ def test_01_exact_stepping_is_not_one_addition():
     assert "two and a compare with the crossing kept exactly as a quotient and a remainder" in text
     # the loop does what the text counts: per edge and line q += dq, r += dr, one compare
     fixed = next("".join(c["source"]) for c in every
-                 if "def span_fill_fixed(" in "".join(c["source"]))  # fmt: skip
+                 if "def span_fill_int_dda(" in "".join(c["source"]))  # fmt: skip
     step = fixed.split("for e in (long, short):")[1].split("return cover")[0]
     assert "e[0], e[1] = e[0] + e[3], e[1] + e[4]" in step and step.count("if e[1] >= e[2]") == 1
+    # ... and its set-up: two integer divisions per edge (the first crossing and the step), six
+    # for the three edges, as the text says (lesson 06 prices the same six)
+    setup = fixed.split("def start(")[1].split("def first_centre_at_or_after(")[0]
+    assert setup.count("divmod(") == 2
+    assert "two integer divisions per edge" in text and "six for the three edges" in text
+
+
+def test_01_calls_its_exact_loop_an_integer_dda_not_fixed_point():
+    """Review r142 01-C1: lesson 01 called its quotient-and-remainder loop "fixed point", while
+    lesson 06 says a fixed-point step rounds too (Hecker 1995 keeps the "integer edge DDA" and
+    the 16.16 "fixed-point edge" apart)."""
+    every = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
+    sources = ["".join(c["source"]) for c in every]
+    text = " ".join(" ".join(t for t, c in zip(sources, every) if c["cell_type"] == "markdown")
+                    .split())  # fmt: skip
+    for wrong in ("fixed-point loop", "steps edges in **fixed point**", "(fixed point)",
+                  "make it exact in fixed point", "**fixed-point** version"):  # fmt: skip
+        assert wrong not in text, wrong
+    assert "integer DDA" in text and "Hecker" in text and "integer edge DDA" in text
+    assert "Binary fixed point alone is not exact" in text
+    assert "**prestep**" in text  # r142 01-14: the start at the first centre, named
+    code = "\n".join(t for t, c in zip(sources, every) if c["cell_type"] == "code")
+    assert "def span_fill_fixed(" not in code and "stepped, fixed point" not in code
+    assert "review r" not in code  # r142 01-16: no review bookkeeping shown to students
+    # r142 01-5/6: horizontal lines are not raster lines; "flat" means a horizontal edge here
+    assert "on one raster line" not in text and "one side along a raster line" not in text
+    assert "flat on the screen" not in text and "rounds once, not cumulatively" not in text
+    assert "are *similar*" in text and "**right triangles**" in text
+    assert "its part above the split are *not* similar" in text
 
 
 @pytest.mark.notebook
@@ -316,18 +348,23 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
     # the row question (review r138 01·9: row 9, the split line, was read off the printed u4
-    # and v3): row 11, below v3, crosses the long edge at 7 and the short edge v3-v1 at 16,
-    # both pixel borders; the clicked answer is columns 7-15, nothing else
-    assert ns.asked_row == 11 and ns.v_mid < ns.v_asked < ns.v_bot
-    assert ns.ends_asked == list(ns.ends[11][:2]) == [7.0, 16.0]
-    assert np.flatnonzero(ns.row_answer[11]).tolist() == list(range(7, 16))
-    assert ns.row_answer.sum() == 9 and ns.cols_asked.tolist() == list(range(7, 16))
+    # and v3; review r142 01-11: row 11's ends, 7 and 16, are pixel borders, so its answer was
+    # read off the picture by eye): row 13, below v3, crosses the long edge at 7.5 and the
+    # short edge v3-v1 at 13.5, both exactly on centres, so the tie rule decides both ends:
+    # the clicked answer is columns 7-12 (7.5 in, 13.5 out), nothing else
+    assert ns.asked_row == 13 and ns.v_mid < ns.v_asked < ns.v_bot
+    assert ns.ends_asked == list(ns.ends[13][:2]) == [7.5, 13.5] and ns.ties_asked == [True] * 2
+    assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
+    assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
+    assert ns.tie_ends == ["7.5 is exactly a centre, and the left edge owns it: filled",
+                           "13.5 is exactly a centre, and the right edge does not own it: left "
+                           "to the neighbour"]  # fmt: skip
     row_cell = next("".join(c["source"]) for c in json.loads(
         (NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
         if "q_row = PredictPixels(" in "".join(c["source"]))  # fmt: skip
     row_question = row_cell.split("q_row = PredictPixels(")[1].split("answer=")[0]
     assert "lies below the middle vertex" in row_question
-    assert "7" not in row_question.replace("v_asked", "") and "16" not in row_question
+    assert "7.5" not in row_question and "12" not in row_question
     # review r98 01-2: the Try-it says to re-fill before span_fill(trace.snapped, ...)
     summary = " ".join(_cells("01_span_tables", "markdown")[-1].split())
     assert "re-run the cell of section 1 (it fills the new triangle: `fill` and `trace`)" in summary
@@ -357,11 +394,14 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ]
     assert starred == [1, 5, 9, 13]
     told = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
-    assert "rows 5, 9 and 13 have one on both ends" in told
-    # review r140 F1: the row-11 ends (q_row's answer) are no longer in the Markdown below the
-    # question; held cell 13 prints them once q_row is checked
-    assert "7 and 16" not in told and "q_row's row 11" not in told
-    assert ns.ends_words == "7 and 16"
+    # the starred rows are printed by the held cell (r142: row 13's ties, typed in the
+    # Markdown below q_row, half answered it)
+    assert ns.starred == [1, 5, 9, 13] and ns.both_ends == [1, 5, 9, 13]
+    assert "rows 5, 9 and 13" not in told and "the left end's centre is filled" in told
+    # review r140 F1: the asked row's ends (q_row's answer) are not in the Markdown below the
+    # question; the held cell prints them once q_row is checked
+    assert "7.5 and 13.5" not in told and "columns 7-12" not in told
+    assert ns.ends_words == "7.5 and 13.5"
     held_ends = next(c for c in nb["cells"] if "ends_words = " in "".join(c["source"]))
     assert "".join(held_ends["source"]).startswith("q_row.hold()")
     # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
@@ -373,7 +413,17 @@ def test_01_predictions_and_the_stepping_failure_rates():
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
     assert rates["computed crossing (section 4)"] < 0.02
-    assert rates["stepped, fixed point"] == 0
+    assert rates["stepped, integer DDA (q + r/d)"] == 0
+    # review r142 01-C1: a 16.16 fixed-point step misfills as many as the float one (60 of
+    # 200, the reader's recomputation): "as many" in the text and the printout
+    assert ns.misfilled["stepped, 16.16 fixed point"] == ns.misfilled[ns.float_loop] == 60
+    assert ns.n_16 == ns.n_float == 60 and ns.n_random == 200
+    assert "stepping on as many (the last line printed)" in told
+    # review r142 01-13: the float failure rate is predicted before it is printed; the
+    # question cell is folded, its answer held until Check and one of the choices
+    assert ns.fail_answer == "21 to 100" and ns.fail_answer in ns.fail_choices
+    held_fail = next(c for c in nb["cells"] if "".join(c["source"]).startswith("q_fail.hold()"))
+    assert "rates = " in "".join(held_fail["source"])
     # c22 quotes the large grid's share of pairs the float DDA cracks or draws twice (review
     # r7 01-5: "a few in a thousand" against the printed 0.6 %); c23 ends on the 64 x 64 grid
     assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
@@ -382,6 +432,15 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # review r57 01-5: the explorer's text is a list of its controls, under the cell it quotes
     cells = _cells("01_span_tables", "markdown")
     reroll = next(t for t in cells if t.startswith("**Reroll it yourself.**"))
+    # review r142 (widgets): the explorer's grid is named, so its shares are not compared with
+    # section 5's 64 x 64 count
+    import inspect
+
+    from teachraster.widgets import CrackExplorer
+
+    grid = inspect.signature(CrackExplorer).parameters
+    assert grid["width"].default == grid["height"].default == 16
+    assert "Its grid is 16 × 16 px, not the 64 × 64" in " ".join(reroll.split())
     assert reroll.count("\n- **") == 4
     every = [("".join(c["source"]), c["cell_type"]) for c in
              json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]]  # fmt: skip

@@ -282,7 +282,9 @@ def test_span_fills_one_raster_line_per_step():
 def test_steps_have_one_line_captions_and_a_fixed_structure(method):
     """Every step: non-empty single-line caption, index == position; set-up kinds first,
     then one work step per row (span) / bbox pixel (half-plane), last step "interpolate"."""
-    setup_kinds = ["snap", "winding", "bbox"] + (["sort", "split"] if method == "span" else [])
+    # span tables test no box: their third step finds the raster lines (review r142 01-3)
+    setup_kinds = (["snap", "winding", "rows", "sort", "split"] if method == "span"
+                   else ["snap", "winding", "bbox"])  # fmt: skip
     for tri in cases(10, 6):
         t = traced(tri, method).trace
         steps = list(t)
@@ -409,7 +411,7 @@ def test_step_numbers_come_from_the_trace(method):
     for tri in cases(11, 4):
         t = traced(tri, method).trace
         kinds = [s.kind for s in t]
-        assert kinds[t.bbox_step] == "bbox"
+        assert kinds[t.bbox_step] == ("rows" if method == "span" else "bbox")
         if method == "span":
             assert kinds[t.split_step] == "split" and t.split_step < t.first_work_step
         else:
@@ -527,3 +529,21 @@ def test_last_caption_counts_the_pixels_a_multisampled_picture_fills():
     # review r23 00-6: the pixels shaded only because of a sample are counted too
     assert f"; {m - n} shaded only because a sample is)" in multi.trace.caption(-1)
     assert f"at {n} covered pixels" in centre.trace.caption(-1)
+
+
+def test_span_captions_say_what_the_half_open_loop_does():
+    """Review r142 01-3: the player's step 2 was labelled "bbox" for span tables, which test
+    no box; the bottom vertex's line, which the trace shows but the loop does not visit
+    (y_top <= y < y_bot), was captioned like any empty span."""
+    import teachraster as tr
+
+    xy = [[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]]
+    t = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True).trace
+    assert t.step(2).kind == "rows" and "bbox" not in t.setup_kinds
+    assert "y_top <= y < y_bot" in t.caption(2) and "no box" in t.caption(2)
+    last_row = t.step(t.interpolation_step - 1)
+    assert last_row.row == 17 and "not visited" in last_row.caption
+    assert "y_bot" in last_row.caption and "v1" in last_row.caption
+    assert "not visited" not in t.caption(t.interpolation_step - 2)  # row 16 fills columns 8-9
+    half = tr.rasterize(tr.Triangle(xy), 20, 20, method="halfplane", trace=True).trace
+    assert half.step(2).kind == "bbox" and "bounding box" in half.caption(2)

@@ -69,7 +69,15 @@ def page_picture(player, k: int) -> np.ndarray:
 
 
 def work_kinds(trace) -> set:
-    return {s.kind for s in trace} - {"snap", "winding", "bbox", "sort", "split", "interpolate"}
+    return {s.kind for s in trace} - {
+        "snap",
+        "winding",
+        "bbox",
+        "rows",
+        "sort",
+        "split",
+        "interpolate",
+    }
 
 
 # -- FillPlayer --------------------------------------------------------------------------------

@@ -10,7 +10,8 @@ The trace is the one owner of the step table. Steps run in this order:
 ====================  =====================================================================
 step                  what
 ====================  =====================================================================
-0, 1, 2               set-up: ``snap``, ``winding``, ``bbox`` (:attr:`FillTrace.bbox_step`)
+0, 1, 2               set-up: ``snap``, ``winding``, ``bbox`` (:attr:`FillTrace.bbox_step`;
+                      ``rows`` for span tables, which test no box: the raster lines)
 3, 4 (span tables)    ``sort``, ``split`` (:attr:`FillTrace.split_step`)
 3 (tiles)             ``blocks``: the block sizes and the top-level blocks
 first_work_step ...   one ``row`` step per raster line (span tables), one ``pixel`` step
@@ -43,6 +44,8 @@ from .tile_trace import TileTrace, edge_name, value_text
 from .validate import as_int
 
 SETUP_KINDS = ("snap", "winding", "bbox")
+#: Span tables test no box of pixels: their third step finds the raster lines to visit.
+SPAN_BASE_KINDS = ("snap", "winding", "rows")
 SPAN_SETUP_KINDS = ("sort", "split")
 TILE_SETUP_KINDS = ("blocks",)
 #: The roles span tables give the vertices sorted by y (the notes' points 1, 2, 3).
@@ -53,7 +56,8 @@ ROLES = ("top", "middle", "bottom")
 class Step:
     """One step of a fill, as the widgets show it.
 
-    ``kind`` is one of ``"snap"``, ``"winding"``, ``"bbox"``, ``"sort"``, ``"split"``,
+    ``kind`` is one of ``"snap"``, ``"winding"``, ``"bbox"`` (``"rows"`` for span tables),
+    ``"sort"``, ``"split"``,
     ``"blocks"``, ``"row"``, ``"pixel"``, ``"block"``, ``"interpolate"``. ``row``/``col``
     are image indices where the step concerns one raster line, pixel or block (its top-left
     pixel). ``work`` is the position among the work steps (raster line, visited pixel or
@@ -177,10 +181,11 @@ class FillTrace:
     # -- the step table -------------------------------------------------------------------
     @property
     def setup_kinds(self) -> tuple[str, ...]:
-        """Kinds of the set-up steps: snap, winding, bbox (and sort, split for span tables;
-        blocks for tiles)."""
-        extra = SPAN_SETUP_KINDS if self.span is not None else ()
-        return SETUP_KINDS + extra + (TILE_SETUP_KINDS if self.blocks is not None else ())
+        """Kinds of the set-up steps: snap, winding, bbox (span tables: snap, winding, rows,
+        sort, split, as they test no box of pixels; tiles add blocks)."""
+        if self.span is not None:
+            return SPAN_BASE_KINDS + SPAN_SETUP_KINDS
+        return SETUP_KINDS + (TILE_SETUP_KINDS if self.blocks is not None else ())
 
     @property
     def setup(self) -> tuple[tuple[str, str], ...]:
@@ -189,7 +194,8 @@ class FillTrace:
 
     @property
     def bbox_step(self) -> int:
-        """Index of the step that finds the bounding box (drawn from this step on)."""
+        """Index of the step that finds the bounding box (drawn from this step on); for span
+        tables, of the step that finds the raster lines to visit (kind ``"rows"``)."""
         return SETUP_KINDS.index("bbox")
 
     @property
@@ -394,6 +400,7 @@ class FillTrace:
             "snap": self._snap_caption,
             "winding": self._winding_caption,
             "bbox": self._bbox_caption,
+            "rows": self._bbox_caption,
             "sort": self._sort_caption,
             "split": self._split_caption,
             "blocks": lambda: self.blocks.setup_caption(),
@@ -424,8 +431,11 @@ class FillTrace:
         if self.span is not None:  # span tables test no box: only the rows they will visit
             if not box.size:
                 return "no raster line of the image meets the triangle"
+            # "meet" includes the bottom vertex's line, which the half-open loop traces but
+            # never fills (its row step says so)
             return (f"raster lines {box.row0}-{box.row1 - 1} meet the triangle (top to bottom "
-                    "vertex, within the image); span tables test no box of pixels")  # fmt: skip
+                    "vertex, within the image); the loop fills those with y_top <= y < y_bot; "
+                    "span tables test no box of pixels")  # fmt: skip
         where = f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
         if not box.size:
             return where + "no pixel centre of the image inside"
@@ -471,6 +481,13 @@ class FillTrace:
         if stop > start:
             cols = f"column {start}" if stop == start + 1 else f"columns {start}-{stop - 1}"
             text = f"{where} covers {cols}"
+        elif self.samples is None and row + 0.5 == s.sorted_xy[2, 1]:
+            # the half-open rows y_top <= y < y_bot: this line is traced, not visited (r142 01-3)
+            bot = f"v{s.order[2] + 1}"
+            text = (
+                f"row {row} (y = {row + 0.5:g} = y_bot, the bottom vertex {bot}'s height): "
+                "outside y_top <= y < y_bot, not visited: nothing filled"
+            )
         else:
             text = f"{where} covers no pixel centre"
         span_x = (xl, xr) if np.isfinite(xl) and np.isfinite(xr) else None
