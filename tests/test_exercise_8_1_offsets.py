@@ -27,13 +27,15 @@ from teachraster.exercises import tile_blocks, tries
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.ipynb"
 
 
-def student(offsets="right", span="size - 1", tie="top-left", orient=True, start=0.5):
+def student(offsets="right", span="size - 1", tie="top-left", orient=True, start=0.5, bias=None):
     """classify_block as a student writes it, with one slip: ``offsets`` "right", "x mirrored",
     "y mirrored", "far corner", "sign flipped", "swapped", "reject by T" (the accept test
     right); ``span`` "size - 1", "size", "one" (a one-pixel block's offset, not scaled) or
     "size / 2"; ``tie`` "top-left", "E >= 0", "E > 0" or "accept strict" (the rule in the
     reject test only); ``orient`` False: the edges as given, "flipped": the interior on their
-    negative side; ``start`` where E₀ is evaluated, from (x0, y0)."""
+    negative side; ``start`` where E₀ is evaluated, from (x0, y0); ``bias`` (px²): the
+    top-left rule folded into E as the task asks (E − bias ≥ 0 on an edge that is neither top
+    nor left, every test one sign test; ex30a), or None: the rule written out per edge."""
 
     def classify_block(xy, x0, y0, size):
         v = np.asarray(xy, dtype=float)
@@ -62,6 +64,11 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
             top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
             owns = {"top-left": top_left, "E >= 0": True, "E > 0": False,
                     "accept strict": top_left}[tie]  # fmt: skip
+            if bias is not None:  # the set-up's bias: one sign test each, as llvmpipe's
+                e0 = e0 - (0.0 if top_left else bias)
+                rejected |= e0 + R < 0
+                accepted &= e0 + T >= 0
+                continue
             rejected |= (e0 + R < 0) if owns else (e0 + R <= 0)
             accepted &= (e0 + T >= 0) if owns and tie != "accept strict" else (e0 + T > 0)
         return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
@@ -107,6 +114,17 @@ MISTAKES = {
     "ignoring the tie rule (E > 0)": (
         student(tie="E > 0"), "no top-left rule (E > 0)", "lies exactly on edge"),
     "ignoring winding": (student(orient=False), "one winding only", "handle both windings"),
+    # ex30a: the top-left rule folded into a bias (the task's sign tests) of the wrong size
+    "bias of 1/256 px²": (
+        student(bias=2.0**-8), "tie-rule bias of 1/256 px²", "your sign tests take a bias of 1/256"),
+    "bias of 1 px²": (
+        student(bias=1.0), "tie-rule bias of 1 px²", "your sign tests take a bias of 1 px²"),
+    # a bias of the right size with the wrong sign passes E = 0 on every edge (and the one
+    # step below it, which no case puts at a deciding centre): the tie words say what it does
+    "bias added, not subtracted": (
+        student(bias=-(2.0**-16)), "no top-left rule (E ≥ 0)", "lies exactly on edge"),
+    "bias of 1/2 px²": (
+        student(bias=0.5), "tie-rule bias of 1/2 px²", "your sign tests take a bias of 1/2 px²"),
     "a constant array": (
         lambda xy, x0, y0, size: np.full(np.shape(x0), "partial"), "always partial",
         "says 'partial' for every block of every grid"),
@@ -144,10 +162,42 @@ def test_a_constant_text_is_named_by_the_engine():
     assert "returns 'partial' on every case" in report.failures[0].explanation
 
 
+def classify_block_integer_bias(xy, x0, y0, size):
+    """The right answer as llvmpipe's set-up writes it (ex30a): integer units of 1/256 px,
+    E in units² (exact Python ints), the top-left rule a bias of −1 unit² off the top and
+    left edges, each block decided by sign tests only; one block at a time."""
+    v = [(round(x * 256), round(y * 256)) for x, y in np.asarray(xy, dtype=float).tolist()]
+    area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0])
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    planes = []
+    for k in range(3):
+        (ax, ay), (bx, by) = v[k], v[(k + 1) % 3]
+        a, b = ay - by, bx - ax  # per unit step; a pixel step is 256 units
+        bias = 0 if (by < ay or (by == ay and bx > ax)) else -1
+        n = 256 * (size - 1)
+        planes.append((a, b, ax, ay, bias, n * (max(a, 0) + max(b, 0)), n * (min(a, 0) + min(b, 0))))  # fmt: skip
+    out = []
+    for bx0, by0 in zip(np.ravel(x0).tolist(), np.ravel(y0).tolist(), strict=True):
+        if area == 0:
+            out.append("rejected")
+            continue
+        px, py = 256 * bx0 + 128, 256 * by0 + 128
+        e0 = [a * (px - ax) + b * (py - ay) + bias for a, b, ax, ay, bias, _, _ in planes]
+        if any(e + p[5] < 0 for e, p in zip(e0, planes, strict=True)):
+            out.append("rejected")
+        elif all(e + p[6] >= 0 for e, p in zip(e0, planes, strict=True)):
+            out.append("accepted")
+        else:
+            out.append("partial")
+    return np.array(out).reshape(np.shape(x0))
+
+
 @pytest.mark.parametrize(
     "fn", [classify_block_offsets, classify_block_loops, classify_block_four_corners,
-           student()], ids=["numpy offsets", "loops (Fractions)", "loops, four corners",
-                            "numpy, written here"],
+           student(), student(bias=2.0**-16), classify_block_integer_bias],
+    ids=["numpy offsets", "loops (Fractions)", "loops, four corners", "numpy, written here",
+         "numpy, the bias of 2^-16 px²", "integer units, bias of 1 unit²"],
 )  # fmt: skip
 def test_correct_but_different_solutions_pass(fn):
     report = ex.check("classify_block", fn, budget=120)
@@ -177,12 +227,24 @@ def test_the_task_says_what_the_lesson_does_not():
     cells = json.loads(NOTEBOOK.read_text())["cells"]
     task = "".join(next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == "classify_block_task")["source"])  # fmt: skip
     for words in ("once\nper block", "from A, B and `size` alone", "E₀ + R", "E₀ + T",
+                  "E₀ + R + β < 0", "E₀ + T + β ≥ 0", "lp_rast_tri.c", "a bias β",
                   "(../10_tiles_and_hierarchical_z.ipynb)", "lp_setup_tri.c", "Larrabee",
                   "either winding", "zero-area triangle", "top-left rule", "integer NumPy arrays",
                   "a little\nover a thousand blocks at most"):  # fmt: skip
         assert words in task, words
-    for answer in ("(s - 1)", "size - 1) *", "max(A, 0)", "int(step_down > 0)"):
+    for answer in ("(s - 1)", "size - 1) *", "max(A, 0)", "int(step_down > 0)", "2^-16",
+                   "1/65536", "number of steps times"):  # fmt: skip
         assert answer not in task, answer
+
+
+def test_lesson_10_prints_no_corner_formula():
+    """ex30a: lesson 10 §1 printed the corner as ``row0 + (s - 1) * int(step_down > 0)``, the
+    offsets 8.1 asks for; it now finds the extremes by looking at every value."""
+    lesson = NOTEBOOK.parents[1] / "10_tiles_and_hierarchical_z.ipynb"
+    cell = "".join(json.loads(lesson.read_text())["cells"][3]["source"])
+    assert "values.argmax()" in cell and "values.argmin()" in cell
+    for formula in ("(s - 1) * int(", "int(step_down", "int(step_right", "max(step"):
+        assert formula not in cell, formula
 
 
 def test_the_cases_cover_the_hard_ones():
@@ -207,3 +269,62 @@ def test_the_cases_cover_the_hard_ones():
 def test_a_wrong_shape_is_explained():
     report = ex.check("classify_block", lambda xy, x0, y0, size: np.ravel(classify_block_offsets(xy, x0, y0, size)))  # fmt: skip
     assert "expected one per block, an array of shape" in report.failures[0].explanation
+
+
+@pytest.mark.parametrize("spent", [False, True], ids=["first try", "hints spent"])
+def test_the_hiz_figure_draws_the_box_and_where_the_bound_is_taken(spent):
+    """ex30a: 8.2's figure drew neither the triangle's bounding box nor the centre where the
+    bound is taken before the hints were spent; both now, on every try, from the checker's
+    own :func:`hiz_tile.bound_site`, with a legend, in a column-wide figure."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    from teachraster.exercises import hiz_tile
+    from teachraster.plotting.style import COLUMN_WIDTH_PX
+
+    case = hiz_tile.hiz_cases()[4]
+    xyz, row0, col0, size, _ = case[1]
+    (tries.spend_hints(["hiz_rejects"]) if spent else tries.forget_hints("hiz_rejects"))
+    try:
+        fig, ax = plt.subplots(figsize=(9.0, 5.6), layout="constrained")
+        hiz_tile.draw_hiz(ax, case, not case[2])
+        box = [p for p in ax.patches if isinstance(p, Rectangle) and p.get_linestyle() == "--"]
+        lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+        assert len(box) == 1 and np.allclose(box[0].get_xy(), lo)
+        assert np.isclose(box[0].get_width(), hi[0] - lo[0])
+        assert np.isclose(box[0].get_height(), hi[1] - lo[1])
+        row, col, _, _ = hiz_tile.bound_site(xyz, row0, col0, size)
+        star = [line for line in ax.lines if line.get_marker() == "*"]
+        assert len(star) == 1 and (star[0].get_xdata()[0], star[0].get_ydata()[0]) == (col + 0.5, row + 0.5)  # fmt: skip
+        keys = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert {"the triangle", "its bounding box"} <= set(keys), keys
+        assert any(k.startswith("where the bound is taken") for k in keys), keys
+        assert fig.get_size_inches()[0] * fig.dpi <= COLUMN_WIDTH_PX
+    finally:
+        plt.close("all")
+        tries.forget_hints("hiz_rejects")
+
+
+def test_the_bound_site_is_the_checkers_bound():
+    """The figure's centre is where :func:`hiz_tile.lower_bound` is taken: the plane there,
+    no nearer than the nearest vertex, is the bound, for every case with a centre in the box."""
+    from teachraster.exercises import hiz_tile
+
+    seen = 0
+    for _, (xyz, row0, col0, size, _), _ in hiz_tile.hiz_cases():
+        site = hiz_tile.bound_site(xyz, row0, col0, size)
+        if site is None:
+            assert hiz_tile.lower_bound(xyz, row0, col0, size) == np.inf
+            continue
+        row, col, bound, _ = site
+        assert row0 <= row < row0 + size and col0 <= col < col0 + size
+        assert bound == hiz_tile.lower_bound(xyz, row0, col0, size)
+        at = float(hiz_tile.plane_at(xyz, np.array([row]), np.array([col]))[0])
+        # the renderer's plane is clamped to the vertices' depths: beyond the farthest, the
+        # bare plane is the bound (hiz_tile._bound_at)
+        assert bound == at or at >= xyz[:, 2].max(), (bound, at)
+        seen += 1
+    assert seen > 10

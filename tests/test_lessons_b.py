@@ -2092,7 +2092,12 @@ def test_10_numbers_the_text_relies_on():
     from teachraster.core import fixed_point
 
     ns = lesson("10_tiles_and_hierarchical_z")
-    assert np.isclose(ns.values.max(), ns.corner_max) and np.isclose(ns.values.min(), ns.corner_min)
+    # §1 finds the extremes by looking (it prints no corner formula: exercise 8.1 asks for it);
+    # they must be the opposite corners the signs of the steps pick
+    pick = {True: ns.s - 1, False: 0}
+    assert ns.best == (ns.row0 + pick[ns.step_down > 0], ns.col0 + pick[ns.step_right > 0])
+    assert ns.worst == (ns.row0 + pick[ns.step_down < 0], ns.col0 + pick[ns.step_right < 0])
+    assert ns.opposite is True
     assert all(ns.same.values())
     assert ns.per_pixel[0] > 10 * ns.per_pixel[-1]
     assert ns.tiny_tests == ns.tests[2] == 1 + 16 + 16 + 16  # the predicted count

@@ -113,6 +113,21 @@ def _bound_at(xyz, rows, cols) -> float:
     return near
 
 
+def bound_site(xyz, row0: int, col0: int, size: int):
+    """Where :func:`lower_bound` is taken, for the figure: ``(row, col, bound, by_vertex)``,
+    the extreme centre of the tile cut to the box where the plane is nearest, the bound, and
+    whether the nearest vertex's depth sets it there (the plane runs nearer than any vertex);
+    None when the box holds no centre of the tile."""
+    box = _box_corners(xyz, row0, col0, size)
+    if box is None:
+        return None
+    rows, cols = box
+    k = int(np.argmin(plane_at(xyz, rows, cols)))
+    nearest_vertex = float(np.min(np.asarray(xyz, dtype=float)[:, 2]))
+    by_vertex = float(plane_at(xyz, rows[k : k + 1], cols[k : k + 1], clamp=False)[0]) < nearest_vertex  # fmt: skip
+    return int(rows[k]), int(cols[k]), _bound_at(xyz, rows, cols), by_vertex
+
+
 def tile_bound(xyz, row0: int, col0: int, size: int) -> float:
     """Lesson 10 §7's bound: the same over all the tile's pixel centres (safe, looser)."""
     return _bound_at(xyz, *_corners(row0, col0, size))
@@ -763,54 +778,85 @@ def _rule(args, expected, got) -> str:
 
 
 def draw_hiz(ax, case, got):
-    """The tile's stored depths, the triangle, the extreme centres and the verdicts."""
+    """The tile's stored depths, the triangle, its bounding box, the centre where the bound is
+    taken (ex30a: both drawn on every try, with a legend), the verdicts; the depth at the
+    extreme centres once the hints are spent."""
+    from matplotlib.patches import Polygon
+
+    from .tries import hints_spent
+
     _, (xyz, row0, col0, size, buffer), expected = case
     shown = np.where(np.isfinite(buffer), buffer, np.nan)
     artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
                          vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
     # the triangle itself, outlined (r40 08-4: only an edge or none of it showed in the view;
     # r94 D8-12: a translucent fill tinted the stored depths under it, as if two were held)
-    from matplotlib.patches import Polygon
-
-    from .tries import hints_spent
-
     artists.append(ax.add_patch(Polygon(xyz[:, :2], closed=True, fill=False, hatch="//",
                                         edgecolor="#d7301f", linewidth=1.5,
                                         label="the triangle")))  # fmt: skip
+    artists += _box_and_site(ax, xyz, row0, col0, size)
     verdict = "rejected" if expected else "kept"
     yours = "" if got is None else f"; yours: {'rejected' if got else 'kept'}"
     far = f"farthest stored {num(np.max(buffer))}: {verdict}{yours}"
-    # r94 D8-3: the extreme centres and the plane there are the task's answer: drawn only once
+    # r94 D8-3: the plane's depth at the extreme centres is the task's answer: drawn only once
     # two different answers have failed (as classify_block's figure does)
-    if not hints_spent("hiz_rejects"):
-        artists.append(ax.set_xlabel(f"hatched: the triangle\n{far}", fontsize="x-small"))
-    else:
-        artists += _extreme_centres(ax, xyz, row0, col0, size, far)
+    if hints_spent("hiz_rejects"):
+        artists += _extreme_centres(ax, xyz, row0, col0, size)
     ax.set_xlim(col0 - 2, col0 + size + 2)
     ax.set_ylim(row0 + size + 2, row0 - 2)
     ax.set_aspect("equal")
     artists += _whole_triangle(ax, xyz, row0, col0, size)
     artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
+    artists.append(_legend(ax, far))
     return artists
 
 
-def _extreme_centres(ax, xyz, row0, col0, size, far: str) -> list:
-    """The triangle's depth at the tile's four extreme centres, the nearest filled."""
+def _legend(ax, title: str):
+    """The figure's legend, headed by the verdicts, below the tile's tick labels (a fixed
+    distance in points: the axes' height changes with its equal aspect)."""
+    from matplotlib.transforms import ScaledTranslation
+
+    below = ax.transAxes + ScaledTranslation(0, -32 / 72, ax.figure.dpi_scale_trans)
+    return ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.0), bbox_transform=below,
+                     ncols=2, fontsize="small", title=title, title_fontsize="small",
+                     borderaxespad=0.0)  # fmt: skip
+
+
+#: The colours of the figure's box and of the centre where the bound is taken.
+BOX_COLOUR, SITE_COLOUR = "#ff9f1c", "#ffffff"
+
+
+def _box_and_site(ax, xyz, row0, col0, size) -> list:
+    """The triangle's bounding box (dashed) and the centre where the check's bound is taken
+    (:func:`bound_site`), each with its legend entry; the centre is not drawn where the box
+    holds no centre of the tile (the legend says so)."""
     from matplotlib.patches import Rectangle
 
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
-    artists = [ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="#ff9f1c", lw=1.2,
-                                      linestyle="--"))]  # fmt: skip
+    artists = [ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor=BOX_COLOUR, lw=2.0,
+                                      linestyle="--", label="its bounding box"))]  # fmt: skip
+    site = bound_site(xyz, row0, col0, size)
+    if site is None:
+        artists += ax.plot([], [], " ", label="no centre of the tile in the box")
+        return artists
+    row, col, _, by_vertex = site
+    what = "the plane, no nearer than\nthe nearest vertex" if by_vertex else "the plane"
+    artists += ax.plot(col + 0.5, row + 0.5, "*", color=SITE_COLOUR, mec="black", mew=1.2, ms=18,
+                       zorder=5, label=f"where the bound is taken\n({what})")  # fmt: skip
+    return artists
+
+
+def _extreme_centres(ax, xyz, row0, col0, size) -> list:
+    """The triangle's depth at the four extreme centres of the tile cut to its box (circles,
+    labelled; nothing where the box holds no centre of the tile)."""
     box = _box_corners(xyz, row0, col0, size)
     if box is None:
-        artists.append(ax.set_xlabel(f"dashed: the triangle's bounding box, no centre of the "
-                                     f"tile inside\n{far}", fontsize="x-small"))  # fmt: skip
-        return artists
+        return []
     rows, cols = box
     depth = plane_at(xyz, rows, cols)
     k = int(np.argmin(depth))
-    artists += ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec="#ff9f1c", ms=8)
-    artists += ax.plot(cols[k] + 0.5, rows[k] + 0.5, "o", color="#ff9f1c", ms=8)  # the nearest
+    artists = ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec=BOX_COLOUR, mew=1.5, ms=10,
+                      label="circles: the triangle's depth at\nthe extreme centres in the box")  # fmt: skip
     # the triangle's depth at each extreme centre; in a box under 4 px the labels would
     # overlap: the nearest one only (r126 N8-1's small triangles)
     small = cols.max() - cols.min() < 4 or rows.max() - rows.min() < 4
@@ -818,13 +864,10 @@ def _extreme_centres(ax, xyz, row0, col0, size, far: str) -> list:
         if small and j != k:
             continue
         inward = (1 if c == cols.min() else -1, -1 if r == rows.min() else 1)  # y points down
-        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(14 * inward[0], 9 * inward[1]),
+        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(16 * inward[0], 11 * inward[1]),
                                    textcoords="offset points", ha="center", va="center",
-                                   fontsize="x-small", bbox={"boxstyle": "round,pad=0.15",
+                                   fontsize="small", bbox={"boxstyle": "round,pad=0.15",
                                    "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
-    artists.append(ax.set_xlabel(f"dashed: the triangle's box; circles: its depth at the extreme "
-                                 f"centres inside\n(filled: nearest, {num(depth[k])}); {far}",
-                                 fontsize="x-small"))  # fmt: skip
     return artists
 
 

@@ -13,9 +13,12 @@ R = (size − 1)·(max(A, 0) + max(B, 0)) and T = (size − 1)·(min(A, 0) + min
 E = A·x + B·y + C oriented so that the interior is positive. A block (``size`` × ``size``
 pixels, no image border) is *rejected* when one edge fails at E₀ + R, *accepted* when every
 edge passes at E₀ + T, *partial* otherwise; each test is the one top-left rule
-(CONVENTIONS, *Tiles*); a zero-area triangle rejects every block. Vertices are on the 1/256
-grid. ``x0`` and ``y0`` are integer arrays of one shape (one block each) and the answer an
-array of that shape (a single text stands for every block).
+(CONVENTIONS, *Tiles*), which the task asks to fold into a per-edge bias β (0 on a top or
+left edge, −2^-16 px², E's smallest step at a centre, on the others: llvmpipe's ``c + 1`` in
+``lp_setup_tri.c`` and ``c − 1`` in ``lp_rast_tri.c``) so that each test is one sign test;
+the verdicts are compared, so either way passes. A zero-area triangle rejects every block.
+Vertices are on the 1/256 grid. ``x0`` and ``y0`` are integer arrays of one shape (one block
+each) and the answer an array of that shape (a single text stands for every block).
 
 The expected answer is computed from the package's pieces: the snapped, oriented set-up
 (:func:`teachraster.core.edges.setup_edges`), its exact edge values at each block's four
@@ -23,8 +26,8 @@ extreme centres (:func:`~teachraster.core.edges.edge_values_at`) and its tie-awa
 (:meth:`~teachraster.core.edges.EdgeSetup.inside`). The typical mistakes are the same
 classification with one knob turned (:func:`classify_with`): the offset of another corner,
 the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``,
-another tie rule, one winding only. Explanations name the first block of the grid that
-differs, the edge that decides it and its extreme value.
+another tie rule or a bias larger than E's step, one winding only. Explanations name the
+first block of the grid that differs, the edge that decides it and its extreme value.
 """
 
 from __future__ import annotations
@@ -121,6 +124,19 @@ def _owns(tie: str, setup, k: int, d) -> bool:
     return edge_kind(d) in tie.split("-") if owns is None else owns
 
 
+#: A top-left rule folded into the set-up as a bias, llvmpipe's way (``lp_setup_tri.c`` adds 1
+#: to a top-left edge's constant, ``lp_rast_tri.c`` subtracts 1 "so we can just check the sign
+#: bit"): a slip biases the other edges by a wrong amount (px²), so that E ≥ bias passes there.
+BIASES = {"bias 1/256": 2.0**-8, "bias 1": 1.0, "bias 1/2": 0.5}
+
+
+def _passes(e, tie: str, setup, k: int, d) -> np.ndarray:
+    """Edge k's test of the values ``e`` under rule ``tie`` (a bias: E ≥ it off top-left edges)."""
+    if tie in BIASES:
+        return e >= (0.0 if setup.top_left[k] else BIASES[tie])
+    return passes(e, _owns(tie, setup, k, d))
+
+
 def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="top-left", orient=True, logic="per edge"):  # fmt: skip
     """classify_block with the usual mistakes as knobs (the defaults are the right answer).
 
@@ -129,7 +145,8 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     rule of two kinds of edges ("bottom-right", "top-right", "bottom-left", r107 N8-2), or
     "as given": the top-left rule of each edge as given, before orienting it (r114 D8-4: the
     bottom-right rule on a counter-clockwise triangle), or "accept strict": the rule in the
-    reject test only, the accept test E > 0 on every edge (r141 D8.1-6). ``orient`` False: the
+    reject test only, the accept test E > 0 on every edge (r141 D8.1-6), or a key of
+    :data:`BIASES` (the rule folded into a bias of the wrong size, ex30a). ``orient`` False: the
     edges as given; "cull": every block of a counter-clockwise triangle rejected (r114 item 5);
     "flipped": oriented the wrong way, the interior on every edge's negative side (r141
     D8.1-4; the top-left rule then read from those edges' own kinds). ``logic``
@@ -165,8 +182,8 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         a, b = v[k], v[(k + 1) % 3]
         e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
         r, t = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d)
-        rejected |= ~passes(e0 + r, _owns(tie, setup, k, b - a))
-        accepted &= passes(e0 + t, _owns(accept_tie, setup, k, b - a))
+        rejected |= ~_passes(e0 + r, tie, setup, k, b - a)
+        accepted &= _passes(e0 + t, accept_tie, setup, k, b - a)
     if logic == "accept by the best corner":
         accepted = ~rejected
     return _verdicts(rejected, accepted & ~rejected, shape, scalar)
@@ -302,6 +319,23 @@ def _rule_slip(rule: str) -> Slip:
     return Slip(f"{rule} rule", _at_first(words), rule)
 
 
+def _bias_slip(name: str) -> Slip:
+    """The top-left rule folded into a bias of the wrong size (ex30a: the task's sign-only
+    tests, llvmpipe's ``c − 1``): the words say which centres it loses, not the right step."""
+    size = name.removeprefix("bias ")
+
+    def words(args, expected, got):
+        return (
+            f"your sign tests take a bias of {size} px² off the edges that are neither top nor "
+            f"left (a centre there passes only where E ≥ {size}): a centre with 0 < E < {size} "
+            "on such an edge is covered, yet your tests leave it out; the bias must be the "
+            "smallest positive value E can take at a pixel centre, with vertices on the 1/256 "
+            "grid (which is it?)"
+        )
+
+    return Slip(f"tie-rule bias of {size} px²", _at_first(words), name)
+
+
 def _offset_words(text: str):
     """A wrong-offset mistake's words, with the case's coefficients (the set-up's numbers)."""
     return lambda a, e, g: f"{text} (this triangle's edges, oriented: {_coefficients(a[0])})"
@@ -397,6 +431,7 @@ BLOCK_KNOBS = Knobs(classify_with, {
         Slip("no top-left rule in the accept test", _at_first(lambda a, e, g: "your accept test "
              "leaves out the top-left rule (E > 0 on every edge; your reject test has it): "
              "here " + _tie_words(a, e, g)), "accept strict"),
+        *(_bias_slip(name) for name in BIASES),
     ],
     "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
                     "both windings (orient the edges so that the interior is positive)", False),
