@@ -380,6 +380,11 @@ def plot_copies(ax, counts: np.ndarray, n: int, triangle, box) -> int:
     return int(((counts > 0) & (counts < n)).sum())
 
 
+#: Case name -> pixels whose owner the fill methods decide differently (a case's pixels do not
+#: change between pickers, so each case is compared once).
+_METHODS_DIFFER: dict[str, int] = {}
+
+
 def screen_cases() -> list[str]:
     """Names of the catalogue's screen-space cases (one fill per triangle), in catalogue order."""
     return [name for name, case in hardcases.CASES.items()
@@ -515,12 +520,16 @@ class CasePicker:
     def _methods_differ(self, result) -> int:
         """Pixels whose owner the other fill methods would decide otherwise: 0 for every case
         (the conventions require it), said under the verdict so that the method toggle, which
-        changes nothing else on screen, is seen to check it (review r145, 07-15)."""
-        differ = np.zeros(self.owner.shape, dtype=bool)
-        for method in self._case.methods:
-            if method != self.method.value and method in hardcases.FILL_METHODS:
-                differ |= owner_image(self._case.run(method).fills) != self.owner
-        return int(differ.sum())
+        changes nothing else on screen, is seen to check it (review r145, 07-15). Run once a
+        case (:data:`_METHODS_DIFFER`): the toggle's picture costs no second fill."""
+        name = self._case.name
+        if name not in _METHODS_DIFFER:
+            differ = np.zeros(self.owner.shape, dtype=bool)
+            for method in self._case.methods:
+                if method != self.method.value and method in hardcases.FILL_METHODS:
+                    differ |= owner_image(self._case.run(method).fills) != self.owner
+            _METHODS_DIFFER[name] = int(differ.sum())
+        return _METHODS_DIFFER[name]
 
     def _copies(self, result, naive) -> None:
         # Separate copies of one triangle (not a mesh): every copy moved back onto the first.
