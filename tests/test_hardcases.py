@@ -129,7 +129,10 @@ def test_split_square_summary_names_both_kinds_of_difference():
     differ = int((naive.counts != ours.counts).sum())
     assert (twice, extra, differ) == (6, 11, 16)  # the corner (6, 6) is of both kinds
     line = case.naive_difference(ours, naive)
-    assert f"{twice} pixel centre(s) twice" in line and f"{extra} that ours leaves" in line
+    assert f"{twice} pixel centre(s) more than once" in line and f"{extra} that ours leaves" in line
+    # review r145 07-18: the corner in both sets is said, so that 6 + 11 - 1 = 16 adds up
+    both = int(((naive.counts > 1) & (ours.counts == 0)).sum())
+    assert both == 1 and f"({both} of them in both)" in line and twice + extra - both == differ
     assert line.endswith(f"differs from ours at {differ} pixel(s)")
 
 
@@ -208,3 +211,18 @@ def test_near_flat_why_puts_point_4_below_v1():
     assert span.u4 == v1[0] and v_mid - v1[1] == 1 / 256  # point 4: straight below v1
     assert "point 4 = (u4, v_mid), lies 1/256 px below v1" in case.why
     assert "u4 is" not in case.why
+
+
+def test_drift_along_row_and_perspective_errors():
+    """Review r145 07-9, 07-13: lesson 07 plots stepping drift along a row and prints the
+    perspective case's error against the exact value; both come from the catalogue."""
+    row = hc.drift_along_row(0)
+    cols, f32 = row["columns"], row["float32 stepping"]
+    assert len(cols) == 3840 and set(row) == {"columns", "float32 stepping", "float64 stepping",
+                                              "ours (direct)"}  # fmt: skip
+    assert f32.max() == f32[-1] and f32[-1] > 10 * f32[: len(f32) // 8].max()  # it grows
+    assert f32.max() == hc.get_case("stepping_drift").naive().values["stepped32"]
+    assert row["float64 stepping"].max() < 1e-9 and row["ours (direct)"].max() < 1e-12
+    case = hc.get_case("perspective_w_ratio_1e6")
+    errors = hc.perspective_errors(case.inputs, case.run())
+    assert len(errors) == len(case.inputs["ws"]) and max(errors) <= 1e-9

@@ -1164,12 +1164,15 @@ def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
     assert "whatever the tie rule" in explain.split("exactly on AB")[0]  # the inside two only
     told = " ".join(next(c for c in cells if "A crack no tie rule closes" in c).split())
     assert "the centres strictly inside it are gaps" in told and "exactly on $AB$" in told
-    # q_behind: no formula in the question; where v3 would land with w = +2, midway v1-v2
+    # q_behind: no formula in the question, and (review r145 07-3) not where v3 would land
+    # with w = +2 either: the three clip-space vertices, v1 and v2 drawn, the mapping to infer
     (behind,) = [c for c in cells if "q_behind = PredictPoint(" in c]
     asked = behind.split("q_behind = PredictPoint(")[1].split("answer=")[0]
-    assert "x_win" not in asked and "/w" not in asked and "midway between v1 and v2" in asked
-    assert "in_front_at[0]:g}, {in_front_at[1]:g})" in asked
+    assert "x_win" not in asked and "/w" not in asked and "midway" not in asked
+    assert "in_front_at" not in asked and "behind_win" not in asked
+    assert all(f"clip_text(behind_clip[{k}])" in asked for k in range(3))
     assert np.allclose(ns.in_front_at, ns.behind_win[:2].mean(axis=0))
+    assert 'return f"({v[0]:g}, {v[1]:g}, {v[2]:.2f}, {v[3]:g})"' in behind  # (x, y, z, w)
     assert "x_win = (x/w + 1)·16" in behind.split("explain=")[1]
     # the far figure has the key of every other two-panel figure; the orders are named
     (far,) = [c for c in cells if c.startswith("q_far.hold()")]
@@ -1348,7 +1351,12 @@ def test_07_try_it_far_from_origin_runs_and_shows_the_failure():
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     sources = ["".join(c["source"]) for c in nb["cells"]]
     (k,) = [i for i, s in enumerate(sources) if s.startswith("def try_far(")]
-    assert "**Try it:**" in sources[k - 1] and "origin=(0, 0)" in sources[k - 2]
+    # review r145 07-7: the Try it stands in §3, after q_far's answer, not after the Summary
+    (mine,) = [i for i, s in enumerate(sources) if s.startswith("def my_coverage(")]
+    held = next(i for i, s in enumerate(sources) if s.startswith("q_far.hold()"))
+    section_4 = next(i for i, s in enumerate(sources) if s.startswith("## 4."))
+    assert "**Try it:" in sources[k - 1] and "origin=(0, 0)" in sources[mine]
+    assert mine < held < k - 1 < k < section_4
     text = " ".join(sources[k - 1].split())
     assert "1 of the 64 wrong at both distances" in text and "16 \\times 16" in text
     far_case = hardcases.get_case("far_from_origin")
@@ -1379,6 +1387,129 @@ def test_07_case_picker_driven_by_the_test():
         for ax in picker.axes:
             dots = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) > 3]
             assert dots, ax.get_title()
+    finally:
+        picker.close()
+
+
+def test_07_review_r145_fan_text_and_printout_agree():
+    """Review r145 07-1, 07-2: the fan's held text said "every centre on a spoke went to one of
+    its two triangles" above a line printing 9 of them drawn by none. The text now says which
+    (the rim vertices, by the top-left rule at a vertex), the explanation counts "all 48 other
+    centres" and names the 32 centres on the rim's edges, drawn once."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    import teachraster as tr
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    naive, ours = ns.fan_counts_naive, ns.fan_counts_ours
+    assert (ns.fan_spoke_inside, len(ns.fan_rim), len(ns.fan_rim_edge)) == (32, 16, 32)
+    assert (ns.fan_ours_once, ns.fan_rim_once, ns.fan_ours_none) == (40, 7, 9)
+    assert all(naive[p] == 1 for p in ns.fan_rim_edge) and ns.fan_rim_edge_ours == 16
+    assert ns.fan_hub == tuple(int(k) for k in ns.hub)
+    none = {tuple(map(int, p)) for p in np.argwhere((naive >= 2) & (ours == 0))}
+    assert none <= ns.fan_rim and len(none) == ns.fan_ours_none
+    # the reason the text gives: at each, no fan triangle has both its edges there top-left
+    for r, c in none:
+        v = np.array([c + 0.5, r + 0.5])
+        for t in hardcases.get_case("fan_spokes_through_centres").triangles:
+            t = t if tr.edge_function(*t) > 0 else t[[0, 2, 1]]  # interior positive
+            at = [k for k in range(3) if np.array_equal(t[k], v)]
+            if at:
+                k = at[0]  # the edges into and out of the vertex
+                assert not (tr.is_top_left(t[k - 1], t[k]) and tr.is_top_left(t[k], t[(k + 1) % 3]))
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    assert "ours: 40 of them once (the hub, the 32, 7 rim vertices);" in printed
+    assert "9 rim vertices none: no fan triangle has both its edges there top-left" in printed
+    assert "the 32 centres on the rim's edges: naive once each, ours 16" in printed
+    assert "naive covers 49 pixel centre(s) more than once" in printed
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    (held,) = [c for c in cells if c.startswith("q_fan.hold()")]
+    text = " ".join(held.split("FAN_TEXT = ")[1].split('"""')[1].split())
+    assert "every centre on a spoke went" not in text
+    assert "every centre on a spoke strictly inside the fan went" in text
+    assert "At {fan_ours_none} of the {len(fan_rim)} rim vertices neither fan triangle" in text
+    (ask,) = [c for c in cells if "q_fan = Predict(" in c]
+    explain = " ".join(ask.split("explain=")[1].split())
+    assert "every other centre" not in explain and "all {fan_twice - 1} other centres" in explain
+    assert "{len(fan_rim_edge)} centres on the rim's edges" in explain
+    assert "{fan_twice + len(fan_rim_edge)} counts them too" in explain
+
+
+def test_07_review_r145_reading_order_and_questions():
+    """Review r145 07-4, 07-6 .. 07-9: q_gaps gives the points' coordinates; the y-up exercise
+    ends §1; the float32 Try it stands in §3 and the Summary is the last cell; the picker's fan
+    lines are printed under the text that reads them; stepping drift has its prose, its cell
+    and a figure of its own, not the bottom of q_far's held cell."""
+    import json
+
+    ns = lesson("07_hard_cases")
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+
+    def at(start):
+        (i,) = [k for k, c in enumerate(cells) if c.startswith(start)]
+        return i
+
+    (gaps,) = [c for c in cells if "q_gaps = PredictPixels(" in c]
+    asked = gaps.split("q_gaps = PredictPixels(")[1].split("answer=")[0]
+    assert 'zip("ABCDV", (A, B, C, D, crack_mesh[-1][0]))' in asked
+    assert ns.A.tolist() == [1, 3] and ns.B.tolist() == [15, 9]
+    turn, gaps_held, two = at("## Your turn"), at("q_gaps.hold()"), at("## 2.")
+    assert gaps_held < turn < at("def my_coverage(") < two
+    assert at("## Summary") == len(cells) - 1 and "Try it" not in cells[-1]
+    picker, text, trio = at("picker = CasePicker("), at("Pick `fan_spokes"), at("# §1's fan in")
+    assert picker < text < trio and "print(" not in cells[picker]
+    assert "the cell below prints the counts" in " ".join(cells[text].split())
+    far_held, drift = at("q_far.hold()"), at('case, ours = introduce("stepping_drift")')
+    assert "stepping_drift" not in cells[far_held]
+    assert cells[drift - 1].startswith("**Long rows: stepping drift.**")
+    assert "tempColour += dx" in cells[drift - 1] and "plt.show()" in cells[drift]
+    assert at("def try_far(") < drift < at("## 4.")
+    # the printed numbers the reading quotes: a few hundredths, float64 a million times less
+    f32, f64, direct = (ns.drift_max[k] for k in ("float32 stepping", "float64 stepping",
+                                                     "ours (direct)"))  # fmt: skip
+    assert 0.01 < f32 < 0.1 and 1e8 < f32 / f64 < 1e9 and direct < 1e-12  # "hundreds of millions"
+    assert f32 == pytest.approx(ns.drift[1]) and f32 > float(np.spacing(np.float32(1000)))
+    assert len(ns.drift_cols) == 3840 and round(ns.drift_dx, 3) == 0.244  # "dx ≈ 0.244"
+    assert "hundreds of millions of times less" in " ".join(cells[drift + 1].split())
+    # §5's figure: the wrong pixels lie left of the crossing (x = 16 px), where B is nearer
+    half = ns.coplanar_both.shape[1] // 2
+    for fmt, t in ns.band_cases:
+        wrong = ns.coplanar_pixels[(fmt, t)]
+        assert (
+            wrong.any() and not wrong[:, half:].any() and wrong.sum() == ns.coplanar_wrong[(fmt, t)]
+        )
+    assert ns.coplanar_wrong[("unorm16", 1e-06)] > 0.9 * ns.coplanar_both[:, :half].sum()
+    # §4 prints ours' largest error, which the text says stays within 1e-9
+    assert ns.w_ratio_ours < 1e-9 and "(the cell prints its largest error)" in " ".join(
+        cells[at("**Perspective denominators.**")].split()
+    )
+
+
+def test_07_review_r145_picker_methods_and_subpixel_view():
+    """Review r145 07-15, 07-16: the method toggle changed only the title (both methods give
+    the same pixels): the info line says so; the sub-pixel view's vertex marks are small and
+    its naive panel outlines the rounded triangles that the naive version fills."""
+    from teachraster.widgets.case_picker import TINY_MARK, CasePicker
+
+    picker = CasePicker("subpixel_triangles", backend="image")
+    try:
+        assert picker.methods_differ == 0 and "the same pixels" in picker.info.value
+        assert "both give the same pixels" in picker.widget.children[0].value
+        rounded = np.rint(picker._case.triangles)
+        assert np.array_equal(picker.naive_triangles, rounded)
+        for ax in picker.axes:
+            marks = [ln for ln in ax.lines if ln.get_marker() == "s"]
+            assert marks and {ln.get_markersize() for ln in marks} == {TINY_MARK}
+        drawn = [np.column_stack(ln.get_data())[:3] for ln in picker.axes[1].lines
+                 if ln.get_marker() == "s"]  # fmt: skip
+        assert all(any(np.array_equal(d, r) for r in rounded) for d in drawn)
+        picker.method.value = "span"
+        assert picker.methods_differ == 0 and "the same pixels" in picker.info.value
     finally:
         picker.close()
 

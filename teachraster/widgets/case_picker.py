@@ -38,7 +38,8 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 #: What the picker holds about the picture on show (set by ``_run`` and ``_draw``): a picture
 #: drawn ahead brings them with it.
 PICTURE_STATE = ("_case", "owner", "passed", "failure", "naive_counts", "difference", "offsets",
-                 "copies", "naive_copies", "_box", "hubs", "view", "colors")  # fmt: skip
+                 "copies", "naive_copies", "_box", "hubs", "view", "colors", "methods_differ",
+                 "naive_triangles")  # fmt: skip
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
 NONE, SEVERAL = -1, -2
@@ -144,9 +145,28 @@ def owner_colors(owner: np.ndarray, triangles=None) -> dict:
 THIN_ABOVE = 32
 
 
-def thin_lines(shape) -> bool:
-    """Whether a grid of ``shape`` (rows, columns) gets thin outlines (see :data:`THIN_ABOVE`)."""
-    return max(shape) > THIN_ABOVE
+#: Cases of more triangles than this get thin outlines too: the fan's sixteen outlines, at the
+#: classroom width and on a projector's 1024 x 768 screen, hid the owners' colours (review
+#: r145, 07-17).
+THIN_TRIANGLES = 8
+
+
+def thin_lines(shape, triangles: int = 1) -> bool:
+    """Whether a grid of ``shape`` (rows, columns) of ``triangles`` triangles gets thin
+    outlines (see :data:`THIN_ABOVE`, :data:`THIN_TRIANGLES`)."""
+    return max(shape) > THIN_ABOVE or triangles > THIN_TRIANGLES
+
+
+#: Triangles smaller than this (pixels, their bounding box's longer side) get vertex marks
+#: TINY_MARK points across: at :data:`VERTEX_MARK` the marks were as large as the triangles
+#: (review r145, 07-16; the lesson's own figure of them draws none).
+TINY_BELOW, TINY_MARK = 1.0, 3.5
+
+
+def tiny_triangles(triangles) -> bool:
+    """Whether every triangle is smaller than :data:`TINY_BELOW` pixels each way."""
+    xy = np.asarray(triangles, dtype=float)
+    return bool((np.ptp(xy, axis=1).max(axis=-1) < TINY_BELOW).all())
 
 
 #: Vertex marks of the picker's outlines: hollow squares (points across) in VERTEX_COLOR, not
@@ -161,12 +181,13 @@ VERTEX_MARK, VERTEX_COLOR = 9, COLORS["split"]
 CENTRE_Z = 4.6
 
 
-def mark_vertices(art, *, thin: bool = False) -> None:
+def mark_vertices(art, *, thin: bool = False, tiny: bool = False) -> None:
     """The vertices of :func:`~teachraster.plotting.plot_triangle`'s ``art`` as hollow squares
-    (:data:`VERTEX_MARK`), told apart from the pixel centres' dots."""
-    art.vertices.set(marker="s", markersize=VERTEX_MARK * (0.7 if thin else 1),
-                     markerfacecolor="none", markeredgecolor=VERTEX_COLOR,
-                     markeredgewidth=1.2 if thin else 2)  # fmt: skip
+    (:data:`VERTEX_MARK`), told apart from the pixel centres' dots; ``tiny``: small ones
+    (:data:`TINY_MARK`), for triangles smaller than a pixel."""
+    size = TINY_MARK if tiny else VERTEX_MARK * (0.7 if thin else 1)
+    art.vertices.set(marker="s", markersize=size, markerfacecolor="none",
+                     markeredgecolor=VERTEX_COLOR, markeredgewidth=1.0 if tiny else 1.2 if thin else 2)  # fmt: skip
 
 
 def centres_on_top(ax, width: int, height: int, coverage) -> None:
@@ -178,12 +199,12 @@ def centres_on_top(ax, width: int, height: int, coverage) -> None:
     centres.outside.set_markerfacecolor("white")  # a hollow dot on an outline: still hollow
 
 
-def outline(ax, xy, *, thin: bool = False):
+def outline(ax, xy, *, thin: bool = False, tiny: bool = False):
     """A triangle's outline without arrows or labels, its vertices marked (:func:`mark_vertices`);
     ``thin``: a fine, half-transparent line too, so that the pixels under it stay visible on a
-    large grid."""
+    large grid; ``tiny``: small vertex marks."""
     art = plot_triangle(ax, xy, labels=False, arrows=False)
-    mark_vertices(art, thin=thin)
+    mark_vertices(art, thin=thin, tiny=tiny)
     if thin:
         art.outline.set(linewidth=0.6, alpha=0.6)
     return art
@@ -271,11 +292,12 @@ def mark_pixel(ax, rc, color) -> None:
 
 
 def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True,
-                thin: bool = False, colors: dict | None = None) -> list:  # fmt: skip
+                thin: bool = False, colors: dict | None = None, tiny: bool = False) -> list:  # fmt: skip
     """Pixels coloured by owning triangle, vermillion where covered twice: triangle k in
     ``colors[k]`` (:func:`owner_colors`), by default in :func:`owner_color` (one each).
 
-    Returns the artists drawn (coverage images, then triangle outlines, thin if ``thin``).
+    Returns the artists drawn (coverage images, then triangle outlines, thin if ``thin``,
+    with small vertex marks if ``tiny``).
     """
     h, w = owner.shape
     artists = [plot_pixel_grid(ax, w, h, ticks=False)]
@@ -287,7 +309,7 @@ def plot_owners(ax, owner: np.ndarray, triangles=None, *, outlines: bool = True,
         artists.append(plot_coverage(ax, owner == SEVERAL, color=COLORS["outside"]))
     if outlines and triangles is not None:
         for xy in triangles:
-            artists.append(outline(ax, xy, thin=thin))
+            artists.append(outline(ax, xy, thin=thin, tiny=tiny))
     return artists
 
 
@@ -356,6 +378,11 @@ def plot_copies(ax, counts: np.ndarray, n: int, triangle, box) -> int:
     centres_on_top(ax, c1 - c0, r1 - r0, counts > 0)
     outline(ax, np.asarray(triangle, dtype=float) - [c0, r0])
     return int(((counts > 0) & (counts < n)).sum())
+
+
+#: Case name -> pixels whose owner the fill methods decide differently (a case's pixels do not
+#: change between pickers, so each case is compared once).
+_METHODS_DIFFER: dict[str, int] = {}
 
 
 def screen_cases() -> list[str]:
@@ -438,7 +465,9 @@ class CasePicker:
         title = title_html(
             "Hard cases: who owns each pixel?",
             "Left: our fill, each pixel in the colour of the triangle that covers it. Right: "
-            "what a naive rasteriser covers. The key is under the case's text.",
+            "what a naive rasteriser covers. The key is under the case's text. The method "
+            "fills with span tables or half-planes: both give the same pixels (the line under "
+            "the verdict checks it for each case).",
         )
         controls = control_row([self.case, labelled("method", self.method)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
@@ -480,9 +509,27 @@ class CasePicker:
             self.passed, self.failure = False, str(err)
         naive = c.naive() if c.has_naive else None
         self.naive_counts = None if naive is None else naive.counts
+        # the triangles the naive version fills, where they are not the case's (rounded ones)
+        self.naive_triangles = ((naive.values or {}).get("triangles") if naive is not None
+                                else None)  # fmt: skip
         diff = c.naive_difference(result, naive) if naive is not None else None
         self.difference = diff or ""
+        self.methods_differ = self._methods_differ(result)
         self._copies(result, naive)
+
+    def _methods_differ(self, result) -> int:
+        """Pixels whose owner the other fill methods would decide otherwise: 0 for every case
+        (the conventions require it), said under the verdict so that the method toggle, which
+        changes nothing else on screen, is seen to check it (review r145, 07-15). Run once a
+        case (:data:`_METHODS_DIFFER`): the toggle's picture costs no second fill."""
+        name = self._case.name
+        if name not in _METHODS_DIFFER:
+            differ = np.zeros(self.owner.shape, dtype=bool)
+            for method in self._case.methods:
+                if method != self.method.value and method in hardcases.FILL_METHODS:
+                    differ |= owner_image(self._case.run(method).fills) != self.owner
+            _METHODS_DIFFER[name] = int(differ.sum())
+        return _METHODS_DIFFER[name]
 
     def _copies(self, result, naive) -> None:
         # Separate copies of one triangle (not a mesh): every copy moved back onto the first.
@@ -526,8 +573,9 @@ class CasePicker:
             self._fit_height(r1 - r0, c1 - c0)
             # a corner cut from a large case (the diagonal sliver) keeps the thin outlines of
             # its whole grid: at the classroom width the outline covers the pixels it owns
-            thin = thin_lines((r1 - r0, c1 - c0)) or cut_rows
-            plot_owners(self.axes[0], self.owner, tris, thin=thin, colors=self.colors)
+            thin = thin_lines((r1 - r0, c1 - c0), len(tris)) or cut_rows
+            tiny = tiny_triangles(tris)
+            plot_owners(self.axes[0], self.owner, tris, thin=thin, colors=self.colors, tiny=tiny)
             # the centres, filled where covered, as in the lesson's figures: ownership is
             # decided there (review r57, 07-3: without them the split square's blue looked
             # half a pixel off its outline)
@@ -543,8 +591,11 @@ class CasePicker:
                 plot_pixel_grid(ax, n.shape[1], n.shape[0], ticks=False)
                 plot_coverage(ax, n == 1, color=NAIVE_ONCE)
                 plot_coverage(ax, n >= 2, color=COLORS["outside"])
-                for xy in tris:
-                    outline(ax, xy, thin=thin)
+                # the triangles the naive version filled: the sub-pixel ones rounded to whole
+                # pixels (review r145, 07-16: the given ones missed the centres it covers)
+                shown_tris = tris if self.naive_triangles is None else self.naive_triangles
+                for xy in shown_tris:
+                    outline(ax, xy, thin=thin, tiny=tiny)
                 centres_on_top(ax, n.shape[1], n.shape[0], n > 0)
                 ax.set_title(f"naive:\n{int((n > 0).sum())} px, max {int(n.max())} hit(s)")
             # a centre at a vertex of many triangles (the fan's hub) on top of their outlines
@@ -642,13 +693,25 @@ class CasePicker:
         verdict = ("<b style='color:#009E73'>passes its check</b>" if self.passed
                    else f"<b style='color:#D55E00'>FAILS</b>: {html.escape(self.failure)}")  # fmt: skip
         lines = [f"<b>why</b>: {html.escape(c.why)}", f"<b>must</b>: {html.escape(c.expect)}",
-                 f"ours: {verdict}"]  # fmt: skip
+                 f"ours: {verdict}", self._methods_html()]  # fmt: skip
         if c.naive_does:
             lines.append(f"<b>naive</b>: {html.escape(c.naive_does)}")
         if self.difference:
             lines.append(f"→ {html.escape(self.difference)}")
         lines.append(self._key_html())
         return "<br>".join(lines)
+
+    def _methods_html(self) -> str:
+        """One line: whether the fill methods give the same pixels here."""
+        others = [m for m in self._case.methods if m in hardcases.FILL_METHODS]
+        names = " and ".join(others)
+        if len(others) < 2:
+            return f"fill method: {names} only for this case"
+        if not self.methods_differ:
+            return (f"{names}: the same pixels, the same owners (the toggle changes only the "
+                    "method's name here)")  # fmt: skip
+        return (f"<b style='color:#D55E00'>{names} differ at {self.methods_differ} "
+                "pixel(s)</b>")  # fmt: skip
 
     def _key_html(self) -> str:
         """The figure's key: what each colour means for this case."""

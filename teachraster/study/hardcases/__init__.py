@@ -47,7 +47,7 @@ from .case import (
     get_case,
     list_cases,
 )
-from .clip_space_cases import DepthResult
+from .clip_space_cases import DepthResult, perspective_errors
 from .line_cases import LINE_CASES, LineCase, LineResult, get_line_case, list_line_cases
 from .naive import (
     naive_affine,
@@ -57,7 +57,7 @@ from .naive import (
     naive_stepped32,
     naive_window,
 )
-from .precision_cases import DriftResult, FarResult, fill_window
+from .precision_cases import DriftResult, FarResult, drift_along_row, fill_window
 
 __all__ = [
     "CASES",
@@ -73,6 +73,7 @@ __all__ = [
     "HardCase",
     "Naive",
     "Rendered",
+    "drift_along_row",
     "fill_window",
     "get_case",
     "get_line_case",
@@ -84,4 +85,5 @@ __all__ = [
     "naive_perspective32",
     "naive_stepped32",
     "naive_window",
+    "perspective_errors",
 ]

@@ -52,7 +52,8 @@ class Naive:
     window : (N, 3, 3) float or None
         Window coordinates after dividing by w *before* clipping.
     values : mapping or None
-        Named measurements (errors, coverages per offset, ...).
+        Named measurements (errors, coverages per offset, ...); ``"triangles"``, where the
+        naive version fills other triangles than the case's (rounded ones), those.
     """
 
     counts: np.ndarray | None = None

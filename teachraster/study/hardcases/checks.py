@@ -82,13 +82,17 @@ def naive_double_hits(inputs, ours: Fills, naive: Naive) -> str | None:
     Naming the double hits only undersold the split square: 6 twice, but 16 pixels differ
     (review r6, 07-1).
     """
-    twice = int((naive.counts > 1).sum())
-    if not twice or ours.counts.max() > 1:
+    twice = naive.counts > 1
+    if not twice.any() or ours.counts.max() > 1:
         return None
-    extra = int(((naive.counts > 0) & (ours.counts == 0)).sum())
-    line = f"naive covers {twice} pixel centre(s) twice"
-    if extra:
-        line += f" and {extra} that ours leaves to a neighbour"
+    extra = (naive.counts > 0) & (ours.counts == 0)
+    # "more than once": a fan's hub is drawn 16 times (review r145 07-2)
+    line = f"naive covers {int(twice.sum())} pixel centre(s) more than once"
+    if extra.any():
+        line += f" and {int(extra.sum())} that ours leaves to a neighbour"
+        both = int((twice & extra).sum())
+        if both:  # so that the counts add up to the pixels that differ (review r145 07-18)
+            line += f" ({both} of them in both)"
     return line + f": it differs from ours at {int((naive.counts != ours.counts).sum())} pixel(s)"
 
 

@@ -172,15 +172,36 @@ def _persp_run(inputs, method) -> Fills:
     )
 
 
-def _persp_check(inputs, result: Fills) -> None:
-    check_finite(result)
+def perspective_errors(inputs, result: Fills) -> list[float]:
+    """The largest error of each fill's attribute against the exact rational
+    perspective-correct value (Fractions), over its covered pixels, as a fraction of the
+    attribute's range: one number per row of ``inputs["ws"]``.
+
+    Parameters
+    ----------
+    inputs : mapping
+        A perspective case's inputs (``xy``, ``f``, ``ws``).
+    result : Fills
+        Its :meth:`HardCase.run`.
+
+    Returns
+    -------
+    list of float
+    """
     xy, f = inputs["xy"], inputs["f"]
     span = float(np.ptp(f))
+    errors = []
     for w, fill in zip(inputs["ws"], result.fills):
         rows, cols = np.nonzero(fill.coverage)
         assert len(rows), "covers nothing"
         exact = _exact_perspective(xy, w, f, cols, rows)
-        err = np.max(np.abs(fill.attrs["f"][rows, cols] - exact)) / span
+        errors.append(float(np.max(np.abs(fill.attrs["f"][rows, cols] - exact)) / span))
+    return errors
+
+
+def _persp_check(inputs, result: Fills) -> None:
+    check_finite(result)
+    for w, err in zip(inputs["ws"], perspective_errors(inputs, result)):
         assert err <= 1e-9, f"w = {w.tolist()}: perspective-correct value off by {err:.3g}"
 
 
@@ -275,12 +296,15 @@ class DepthResult:
     ``wrong[(fmt, tilt)]`` counts pixels where the triangle that is *not* truly nearer
     (or, for exact ties, not the earlier one) wrote the pixel; ``overlap`` is the number of
     pixels both triangles cover; ``max_gap[tilt]`` the largest |depth B - depth A| over the
-    overlap in float64.
+    overlap in float64; ``wrong_pixels[(fmt, tilt)]`` the (size, size) bool image of the
+    pixels counted in ``wrong``, and ``both`` that of the overlap (lesson 07 draws them).
     """
 
     wrong: Mapping[tuple[str, float], int]
     overlap: int
     max_gap: Mapping[float, float]
+    wrong_pixels: Mapping[tuple[str, float], np.ndarray] | None = None
+    both: np.ndarray | None = None
 
 
 def _depth_run_factory(make_clip, truth):
@@ -288,7 +312,7 @@ def _depth_run_factory(make_clip, truth):
 
     def run(inputs, method) -> DepthResult:
         size = inputs["size"]
-        wrong, max_gap, overlap = {}, {}, 0
+        wrong, max_gap, overlap, pixels = {}, {}, 0, {}
         xs = (np.arange(size) + 0.5) / size * 2 - 1
         x_ndc = np.broadcast_to(xs, (size, size))
         for tilt in inputs["tilts"]:
@@ -302,8 +326,10 @@ def _depth_run_factory(make_clip, truth):
             for fmt in DEPTH_ORDER:
                 frame = render_clip(clip, size, size, depth_format=fmt)
                 won_b = frame.triangle_id == 1
-                wrong[(fmt, tilt)] = int((both & (won_b != b_nearer)).sum())
-        return DepthResult(MappingProxyType(wrong), overlap, MappingProxyType(max_gap))
+                pixels[(fmt, tilt)] = both & (won_b != b_nearer)
+                wrong[(fmt, tilt)] = int(pixels[(fmt, tilt)].sum())
+        return DepthResult(MappingProxyType(wrong), overlap, MappingProxyType(max_gap),
+                           MappingProxyType(pixels), both)  # fmt: skip
 
     return run
 

@@ -258,7 +258,9 @@ def _subpixel():
 
     def naive(inputs) -> Naive:
         rounded = np.rint(inputs["triangles"])  # no sub-pixel bits: whole-pixel vertices
-        return Naive(counts=naive_counts(rounded, 12, 12, rule="top_left"))
+        return Naive(
+            counts=naive_counts(rounded, 12, 12, rule="top_left"), values={"triangles": rounded}
+        )  # what it fills, for the picker
 
     add_case(
         HardCase(

@@ -19,7 +19,7 @@ from ...core.plane_equations import attribute_plane, plane_equation
 from ...core.snapping import SUBPIXEL_BITS, snap
 from ...core.triangle import Triangle
 from ...core.validate import as_int, as_size
-from .case import Fills, HardCase, Naive, add_case, frozen_inputs
+from .case import Fills, HardCase, Naive, add_case, frozen_inputs, get_case
 from .checks import (
     check_finite,
     check_nothing,
@@ -374,3 +374,40 @@ def _drift_case():
 
 
 _drift_case()
+
+
+def drift_along_row(row: int = 0) -> dict:
+    """The error of ``stepping_drift``'s attribute at every covered pixel of one row, against
+    the exact value: *Triangle Rasterisation II - Interpolation*'s stepping (start, then
+    ``+= dx``) in float32 and in float64, and the core's direct evaluation.
+
+    Parameters
+    ----------
+    row : int
+        The pixel row (0 is the longest: 3840 covered pixels).
+
+    Returns
+    -------
+    dict
+        ``"columns"`` (n,) int, the covered columns; ``"float32 stepping"``,
+        ``"float64 stepping"`` and ``"ours (direct)"``, (n,) float absolute errors.
+    """
+    case = get_case("stepping_drift")
+    xy, f = np.asarray(case.inputs["xy"]), np.asarray(case.inputs["f"])
+    width, height = case.inputs["size"]
+    row = as_int("row", row)
+    fill = rasterize(Triangle(xy, attrs={"f": f}), width, height)
+    cols = np.flatnonzero(fill.coverage[row])
+    exact = _exact_affine(xy, f)
+    truth = [exact(c + 0.5, row + 0.5) for c in cols.tolist()]
+    ways = {
+        "float32 stepping": naive_stepped32(xy, f, 0.5, 0.5, width, height)[row],
+        "float64 stepping": plane_equation(xy, f).stepped(0.5, 0.5, width, height)[row],
+        "ours (direct)": fill.attrs["f"][row],
+    }
+    out = {"columns": cols}
+    for name, values in ways.items():  # exact differences: Fractions, then one rounding
+        out[name] = np.array(
+            [abs(float(Fraction(v) - t)) for v, t in zip(values[cols].tolist(), truth)]
+        )
+    return out
