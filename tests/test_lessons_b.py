@@ -795,6 +795,10 @@ def test_06_review_r37_a_prediction_in_every_section():
     sizes = [int(c.split()[1].rstrip(":")) for c in ns.bits_choices]
     assert sizes == sorted(sizes) and all(abs(b - a) > 5 for a, b in zip(sizes, sizes[1:]))
     assert all(abs(n - sizes[2]) <= 2 for n in (ns.gpu.least_needed, ns.gpu.needed))
+    # and nothing visible after it (the summary aside) says E outgrows a 32-bit unit
+    after = [c for c, k in zip(cells[asked_at("q_bits") :], kinds[asked_at("q_bits") :])
+             if k == "markdown" and not c.startswith("## Summary")]  # fmt: skip
+    assert not any("32-bit unit" in c or "int32" in c for c in after)
     assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
     assert abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 1
     # q_fill's four choices differ, and the right one is the ratio the fill cell prints
