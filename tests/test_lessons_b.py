@@ -213,9 +213,11 @@ def test_06_edge_bits_and_depth_claims():
     # review r139 06-C1: a constant step drifts as a fixed-point *fraction*, not lesson 01's
     # fixed-point loop, which keeps the remainder; the last sentence parses (no "tie rule")
     assert "and in fixed point too" not in ns.FILL_TEXT
-    assert "lesson 01's fixed-point loop is exact because it also keeps the remainder" in " ".join(
+    # r142 C1: lesson 01 calls it an integer DDA (quotient and remainder), not fixed point
+    assert "lesson 01's integer DDA is exact because it also keeps the remainder" in " ".join(
         ns.FILL_TEXT.split()
     )
+    assert "fixed-point loop" not in ns.FILL_TEXT
     assert "to stay a tie rule" not in ns.FILL_TEXT
     assert "computes each crossing afresh, a divide per line, so that no rounding" in ns.FILL_TEXT
     # review r135 06-2: the tie rule, not the cost of the arithmetic (floats can crack a mesh)
