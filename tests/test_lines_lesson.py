@@ -410,7 +410,8 @@ def test_bresenham_loop_covers_every_octant(ns):
 def test_tie_table_says_what_the_cell_computes(ns):
     """Review r51 12a-3: the ties told as a table (GL | Direct3D | teachraster); each word
     ("upper"/"lower" row of the two at the tie) is the row the next cell computes."""
-    text = _cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split("**Ties.**")[1]
+    # review r147: the table is printed by a folded cell held until q_tie is checked
+    text = _cell_source("tiestable")
     rows = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| x-") or
             r.startswith("| horizontal")]  # fmt: skip
     tie_y = {"dy/dx > 0": 1, "dy/dx < 0": 4, "horizontal on y = 1": 1}  # the line at x = 1.5
