@@ -362,10 +362,8 @@ def test_lesson_08_review_r127_fastest_held_diagonals_and_why_the_grid_beats_jit
     assert "only an edge along its rows or columns" not in flat
     assert "parallel to the grid's rows or columns meets √S" not in flat
     # review r129 08-4: any simple slope meets several grid points at once, not only rows,
-    # columns and diagonals; the count along a slope of 1/2 is computed, not typed
-    assert (
-        "a row, a column, a diagonal or another simple slope (½, ⅓, …) of the ordered grid" in flat
-    )
+    # columns and diagonals; the count along a slope of 1/2 is computed, not typed (since r147
+    # #9 asks jittered's exponent, the grid is in the explanation, not in the stem)
     assert "{on_a_line['slope 1/2']} along a slope of ½" in flat
     assert "an edge along a diagonal or another simple slope meets several at" in flat
     assert ns.on_a_line == {"row": 16, "diagonal": 16, "slope 1/2": 8, "slope 1/3": 6}
@@ -468,12 +466,12 @@ def test_lesson_08_review_r133_shading_ratio_msaa_inside_robust_fastest_and_less
     opening = " ".join("".join(nine[0]["source"]).split())
     assert "This lesson names that effect" not in opening
     assert "Lesson 08 named that effect for edges, **aliasing**; this lesson meets it" in opening
-    # q_fastest: random's slope is far from the other two, the grid ends well below jittered
+    # q_fastest (r147 #9: jittered's exponent, ± 0.1): random's slope, given in the stem, is
+    # well beyond the tolerance; the grid ends well below jittered
     grid, jit, rnd = (ns.fitted[k] for k in ("grid", "jittered", "random"))
-    assert ns.slowest == "random" and rnd - max(grid, jit) > 0.15
-    assert ns.lowest_256 == "grid" and ns.at_256["grid"] < 0.7 * ns.at_256["jittered"]
+    assert rnd - jit > 0.2 and grid < jit and ns.jittered_k == jit
+    assert ns.at_256["grid"] < 0.7 * ns.at_256["jittered"]
     assert ns.at_256["jittered"] == ns.edge_errors["jittered"][-1]
-    assert f"slowest {ns.slowest}, lowest {ns.lowest_256}" == "slowest random, lowest grid"
     assert ns.STRATIFIED_ERROR_EXPONENT == -0.75
 
 

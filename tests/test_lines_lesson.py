@@ -610,7 +610,7 @@ def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
     from pathlib import Path
 
     assert ns.x_tie == 1.0 and ns.steep_cols == ([0], [0], [0])  # the left pixel, all three
-    text = " ".join(_cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split())
+    text = " ".join(_cell_source("tiestable").split())  # held until q_tie is checked (r147)
     assert "y-major lines light the left pixel in both" in text
     # review r111 12a-1: Direct3D's y-major rule quoted, its section checked (D3D11.3 §3.4.3,
     # the rules printed in its figure D3D11_3_LineRast.png; §3.4.4 is antialiased lines)

@@ -83,7 +83,7 @@ def test_11_q_redraw_has_outlines_and_depths_not_tints():
     ns = lesson("11_debugging_a_frame")
     # the answer: where both cover and blue is nearer than the red depth test-off left
     both = (ns.blue_alone.triangle_id == 0) & ~np.isnan(ns.left)
-    assert ns.redraw_passes.sum() == 13 and (ns.redraw_passes <= both).all()
+    assert ns.redraw_passes.sum() == 9 and (ns.redraw_passes <= both).all()
     assert not (ns.redraw_passes & ns.far_wins).any()  # blue nearer there, not farther
     cells = _cells("11_debugging_a_frame")
     code = _source(cells[_ask_index(cells, "q_redraw = PredictPixels(")])
