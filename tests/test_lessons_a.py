@@ -1129,11 +1129,13 @@ def test_02_stepping_prediction_is_asked_before_its_answer_is_printed():
     before = before[: next(i for i, t in enumerate(before) if "q_step = Predict(" in t)]
     assert not any("-(v_2 - v_1)" in t or "u_2 - u_1$" in t for t in before[3:])
     assert ns.step_px * 256**2 == ns.step_right == -294_912
+    # review r147 #8: asked in the snapped integers (units²), not in px², one coefficient
+    assert ns.step_units == ns.step_right
     cell = next(c for c in cells if "q_step = Predict(" in "".join(c["source"]))
     assert cell["metadata"] == {"jupyter": {"source_hidden": True}, "tags": ["hide-input"]}
-    q = Predict("E12 a pixel right?", answer=ns.step_px, headless=False)
+    q = Predict("E12 a pixel right?", answer=ns.step_units, headless=False)
     assert q.check.disabled
-    q.control.value = str(ns.step_px)
+    q.control.value = str(ns.step_units)
     assert not q.check.disabled
     q.check.click()
     assert q.correct
@@ -1962,6 +1964,6 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     assert pair < sticks
     assert "only the depth *write* (and any stencil update) waits" in text
     assert "only delays the depth and stencil writes" in text
-    assert "The next two cells are folded" not in text and "The next four cells are folded" in text
+    assert "The next two cells are folded" not in text and "The next three cells are folded" in text
     try_it = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
     assert try_it.count("\n- ") == 4

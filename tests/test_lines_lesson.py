@@ -410,7 +410,8 @@ def test_bresenham_loop_covers_every_octant(ns):
 def test_tie_table_says_what_the_cell_computes(ns):
     """Review r51 12a-3: the ties told as a table (GL | Direct3D | teachraster); each word
     ("upper"/"lower" row of the two at the tie) is the row the next cell computes."""
-    text = _cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split("**Ties.**")[1]
+    # review r147: the table is printed by a folded cell held until q_tie is checked
+    text = _cell_source("tiestable")
     rows = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| x-") or
             r.startswith("| horizontal")]  # fmt: skip
     tie_y = {"dy/dx > 0": 1, "dy/dx < 0": 4, "horizontal on y = 1": 1}  # the line at x = 1.5
@@ -609,7 +610,7 @@ def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
     from pathlib import Path
 
     assert ns.x_tie == 1.0 and ns.steep_cols == ([0], [0], [0])  # the left pixel, all three
-    text = " ".join(_cells_before("12a_lines", "b9bb4840", kinds=("markdown",)).split())
+    text = " ".join(_cell_source("tiestable").split())  # held until q_tie is checked (r147)
     assert "y-major lines light the left pixel in both" in text
     # review r111 12a-1: Direct3D's y-major rule quoted, its section checked (D3D11.3 §3.4.3,
     # the rules printed in its figure D3D11_3_LineRast.png; §3.4.4 is antialiased lines)
