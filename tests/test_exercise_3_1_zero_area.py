@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import warnings
 
+import exercise_solutions as S
 import numpy as np
 import pytest
 
-import exercise_solutions as S
 from teachraster import exercises as ex
 from teachraster.exercises import diagnosis as dg
 from teachraster.exercises import interpolation as ip
