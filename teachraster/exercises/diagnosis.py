@@ -289,6 +289,8 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
     the case holds a number float32 cannot hold (1e-300 becomes 0)."""
 
     def fits(args, expected, got):
+        if _numbers(expected) is None:  # no number is right here (3.1's ValueError): no say
+            return None
         return _within_rounding(spec, args, expected, got) or _outside_float32(args) is not None
 
     def words(args, expected, got):
@@ -378,7 +380,10 @@ class _Fit:
 def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
     """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
     if m.fits is not None:  # a description of failures: a passing case neither fits nor not
-        return bool(m.fits(r.args, r.expected, r.got)) if not r.ok else None
+        if r.ok:
+            return None
+        verdict = m.fits(r.args, r.expected, r.got)
+        return None if verdict is None else bool(verdict)  # None: it says nothing here
     try:
         value = m.gives(*copies(r.args))
     except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
