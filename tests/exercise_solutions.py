@@ -114,6 +114,8 @@ def barycentric(xy, p):
     a, b, c = (np.asarray(q, dtype=float) for q in xy)
     p = np.asarray(p, dtype=float)
     area = edge_function(a, b, c)
+    if area == 0:  # exercise 3.1: a zero-area triangle has no weights
+        raise ValueError("zero area")
     return np.array([edge_function(b, c, p), edge_function(c, a, p), edge_function(a, b, p)]) / area
 
 

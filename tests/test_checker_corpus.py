@@ -84,6 +84,8 @@ def test_a_package_function_as_a_tool_counts():
 
     def barycentric(xy, p):
         area = tr.edge_function(xy[0], xy[1], xy[2])
+        if area == 0:  # exercise 3.1 since ex30b: a zero area has no weights
+            raise ValueError("zero area")
         return (
             np.array([tr.edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], p) for k in range(3)])
             / area

@@ -97,6 +97,8 @@ def _float32_barycentric(xy, p):
         return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 
     v1, v2, v3 = xy
+    if e(v1, v2, v3) == 0:  # 3.1 since ex30b: a zero area has no weights
+        raise ValueError("zero area")
     return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)], np.float32) / e(v1, v2, v3)
 
 
@@ -117,6 +119,8 @@ def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
     assert float(np.spacing(np.float32(1e5))) == 1 / 128
     near = []
     for _, (xy, p), lam in barycentric_cases():
+        if isinstance(lam, str):  # 3.1's zero area since ex30b: no weights
+            continue
         if np.abs(xy).max() < 1e4:
             near.append(float(np.abs(_float32_barycentric(xy, p) - lam).max()))
     assert 5e-9 < float(np.median(near)) < 5e-8, np.median(near)

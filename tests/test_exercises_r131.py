@@ -82,6 +82,8 @@ def test_exercise_3_says_the_capstone_accepts_a_float32_barycentric():
         (x1, y1), (x2, y2), (x3, y3) = np.asarray(xy, dtype=np.float32)
         px, py = np.asarray(p, dtype=np.float32)
         det = (x1 - x3) * (y2 - y3) - (x2 - x3) * (y1 - y3)
+        if det == 0:  # 3.1 since ex30b: a zero area has no weights
+            raise ValueError("zero area")
         l1 = ((px - x3) * (y2 - y3) - (x2 - x3) * (py - y3)) / det
         l2 = ((x1 - x3) * (py - y3) - (px - x3) * (y1 - y3)) / det
         return np.array([l1, l2, np.float32(1) - l1 - l2])

@@ -107,6 +107,8 @@ def _bary(xy, p):
     xy = np.asarray(xy, dtype=float)
     v1, v2, v3 = xy
     e = tr.edge_function
+    if e(v1, v2, v3) == 0:  # 3.1 since ex30b: a zero area has no weights
+        raise ValueError("zero area")
     return np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)]) / e(v1, v2, v3)
 
 

@@ -239,6 +239,8 @@ def _bary(order=(0, 1, 2), p_swapped=False, clamp=False, solve=False):
                 return (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
 
             v1, v2, v3 = xy
+            if e(v1, v2, v3) == 0:  # exercise 3.1 since ex30b: no weights, ValueError
+                raise ValueError("zero area")
             lam = np.array([e(v2, v3, p), e(v3, v1, p), e(v1, v2, p)]) / e(v1, v2, v3)
         if clamp:
             lam = np.maximum(lam, 0.0)

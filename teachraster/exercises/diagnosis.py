@@ -25,6 +25,14 @@ explain it, in this order:
 4. **Low precision**, only when the error is within the rounding of the precision named
    (float32: ``8 · 2**-24`` of the case's scale, see :attr:`.exercise.Exercise.float32`), and
    **NaN or infinity** in the answer.
+
+Whatever names it (this engine's words, an exercise's mistake, its rule), an explanation
+that puts the error down to float32, float16 or cancellation is said only where
+:func:`precision_may_be_named` allows it on that case: the answer within that precision's
+rounding of the case (:func:`rounding_bound`), or the very answer a float32 computation of the
+case gives. Elsewhere the rule is said, or plainly that the numbers differ by more than
+rounding (issue 30: "never blame float32 where the answer is off by more than float32's
+rounding"). One rule, here, for every exercise.
 5. **An argument handed back**: every answer is one of the arguments, unchanged
    (``return background``), and no mistake of the table gives every failing answer: said as
    a constant is, by the argument's name (r64 06-1, never the rule).
@@ -36,6 +44,7 @@ change this case's answer), so that one failure of each kind can be shown first.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -195,17 +204,84 @@ def precision_of(got) -> tuple[str, float]:
     return "float32", FLOAT32_EPS
 
 
-def _within_rounding(spec: Exercise, args, expected, got) -> bool:
-    """The answer is off by no more than float32 (float16) rounding of this case."""
+def rounding_bound(spec: Exercise, args, expected, got) -> float:
+    """How far a float32 (float16) computation of this case may be off: ``FLOAT32_OPS``
+    roundings of the case's scale (:attr:`.exercise.Exercise.float32`, else the largest
+    number of the right answer), at least of 1."""
+    _, eps = precision_of(got)
+    if spec.float32 is not None:
+        scale = spec.float32(args)
+    else:
+        e = _numbers(expected)
+        scale = float(np.max(np.abs(e), initial=0.0)) if e is not None and e.size else 0.0
+    return FLOAT32_OPS * eps * max(float(scale or 0.0), 1.0)
+
+
+def answer_error(expected, got) -> float | None:
+    """The largest difference between the answer and the right one, or None where they are
+    not numbers of the same size (or the answer holds NaN or infinity)."""
     g, e = _numbers(got), _numbers(expected)
     if g is None or e is None or g.size != e.size or not np.isfinite(g).all():
+        return None
+    if g.dtype == object or e.dtype == object:
+        return None
+    return float(np.max(np.abs(g.ravel() - e.ravel()), initial=0.0))
+
+
+def _within_rounding(spec: Exercise, args, expected, got) -> bool:
+    """The answer is off by no more than float32 (float16) rounding of this case."""
+    error = answer_error(expected, got)
+    return error is not None and error <= rounding_bound(spec, args, expected, got)
+
+
+#: Words that put an answer's error down to the arithmetic's precision.
+PRECISION_WORDS = re.compile(r"float ?32|float ?16|cancel|single precision", re.IGNORECASE)
+
+
+def blames_precision(words: str) -> bool:
+    """Do ``words`` put the error down to float32, float16 or cancellation?
+
+    >>> blames_precision("about float32's rounding"), blames_precision("wrong sign")
+    (True, False)
+    """
+    return bool(PRECISION_WORDS.search(words or ""))
+
+
+def precision_may_be_named(spec: Exercise, r: Result, mistake: Mistake | None) -> bool:
+    """May float32 (float16, cancellation) be named on case ``r``? Only when the answer is
+    within that precision's rounding of the case (:func:`_within_rounding`), when the case
+    holds a number float32 cannot hold at all, or when ``mistake``, a float32 computation of
+    the exercise's table, gives this very answer (then its error *is* float32's rounding of
+    this case, however far that moves a bool or an integer: ``depth_test``'s two depths one
+    float32 apart). A description (``fits``) is that evidence only for an answer that is
+    no measure (a bool, an image of bools): a number must be within the bound."""
+    if run_checker(lambda: _within_rounding(spec, r.args, r.expected, r.got), False):
+        return True
+    if run_checker(lambda: _outside_float32(r.args), None) is not None:
+        return True
+    if mistake is None or mistake.parts:
         return False
-    error = float(np.max(np.abs(g.ravel() - e.ravel()), initial=0.0))
-    _, eps = precision_of(got)
-    scale = spec.float32(args) if spec.float32 is not None else None
-    if scale is None:
-        scale = float(np.max(np.abs(e), initial=0.0))
-    return error <= FLOAT32_OPS * eps * max(float(scale), 1.0)
+    if mistake.gives is not None:
+        return bool(run_checker(lambda: _fits(spec, mistake, r), False))
+    return answer_error(r.expected, r.got) is None or _is_bools(r.got)
+
+
+def _is_bools(value) -> bool:
+    dtype = getattr(value, "dtype", None)
+    return isinstance(value, (bool, np.bool_)) or (dtype is not None and dtype.kind == "b")
+
+
+def more_than_rounding(spec: Exercise, r: Result) -> str:
+    """The plain words for an answer that float32 cannot explain."""
+    error = answer_error(r.expected, r.got)
+    name, _ = precision_of(r.got)
+    if error is None:
+        return f"; this is not what {name}'s rounding gives: the computation itself differs"
+    return (
+        f"; yours is off by {error:.2g}, far more than {name}'s rounding of this case (at most "
+        f"{rounding_bound(spec, r.args, r.expected, r.got):.1g}): the computation itself differs, not its "
+        "precision"
+    )
 
 
 def low_precision_mistake(spec: Exercise) -> Mistake:
@@ -213,6 +289,8 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
     the case holds a number float32 cannot hold (1e-300 becomes 0)."""
 
     def fits(args, expected, got):
+        if _numbers(expected) is None:  # no number is right here (3.1's ValueError): no say
+            return None
         return _within_rounding(spec, args, expected, got) or _outside_float32(args) is not None
 
     def words(args, expected, got):
@@ -302,7 +380,10 @@ class _Fit:
 def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
     """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
     if m.fits is not None:  # a description of failures: a passing case neither fits nor not
-        return bool(m.fits(r.args, r.expected, r.got)) if not r.ok else None
+        if r.ok:
+            return None
+        verdict = m.fits(r.args, r.expected, r.got)
+        return None if verdict is None else bool(verdict)  # None: it says nothing here
     try:
         value = m.gives(*copies(r.args))
     except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
@@ -411,8 +492,20 @@ def diagnose(
             kind, words = _named(spec, chosen.mistake, r)
         else:
             kind, words = _generic(spec, r)
+        kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake)
         out[r.index] = (kind, _say(spec, r, words))
     return _said_once(spec, out)
+
+
+def _honest(spec: Exercise, r: Result, kind: str, words: str, mistake: Mistake | None):
+    """(kind, words), or the rule (else plain words) where they blame float32 (float16,
+    cancellation) beyond what :func:`precision_may_be_named` allows on this case."""
+    if not blames_precision(f"{kind} {words}") or precision_may_be_named(spec, r, mistake):
+        return kind, words
+    kind, words = _generic(spec, r)
+    if blames_precision(f"{kind} {words}") or not words:
+        return "value", more_than_rounding(spec, r)
+    return kind, words
 
 
 def _said_once(spec: Exercise, out: dict[int, tuple[str, str]]) -> dict[int, tuple[str, str]]:

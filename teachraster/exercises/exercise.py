@@ -41,8 +41,9 @@ class Mistake:
         ``gives(*args)``: the answer a student with this mistake returns (None: the mistake
         says nothing about this case).
     fits : callable, optional
-        ``fits(args, expected, got) -> bool`` for a mistake no formula reproduces (float32
-        rounding, a symptom such as "keeps a vertex behind the plane").
+        ``fits(args, expected, got) -> bool`` (None: it says nothing about this case) for a
+        mistake no formula reproduces (float32 rounding, a symptom such as "keeps a vertex
+        behind the plane").
     symptom : bool
         The words describe what is wrong, not why: named only when no cause fits.
     only_whole : bool

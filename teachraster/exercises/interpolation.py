@@ -17,7 +17,7 @@ from ..core.barycentrics import barycentric
 from ..core.edges import edge_function
 from ..core.interpolation import blend, perspective_weights
 from ..study.hardcases import CASES
-from .answers import as_number, as_numbers
+from .answers import as_number, as_numbers, short
 from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, num, tri_words, vec
@@ -43,7 +43,45 @@ def barycentric_cases():
             p = centre_near(now.uniform(xy.min(axis=0), xy.max(axis=0)))
             out.append((f"drawn for this check {len(out) - n_fixed + 1}: "
                         f"{tri_words(xy)}, p={vec(p)}", (xy, p), barycentric(xy, p)))  # fmt: skip
+    return out + degenerate_cases()
+
+
+#: The answer read from a ``barycentric`` that raised ValueError: what a triangle of zero area
+#: must give (it has no weights: every p on its line has infinitely many, any other none).
+REFUSED = "raised ValueError"
+
+#: Zero-area triangles (exactly: E(v1, v2, v3) is exact in float64 on the 1/256-px grid), each
+#: with a point on its line and one off it.
+DEGENERATE = (
+    ("three vertices on one line", [[1.5, 1.5], [5.5, 3.5], [9.5, 5.5]], (3.5, 2.5)),
+    ("two vertices equal", [[2.5, 6.5], [7.25, 1.5], [2.5, 6.5]], (4.5, 4.5)),
+    ("flat, on the row y = 3.5", [[1.5, 3.5], [9.5, 3.5], [4.5, 3.5]], (4.5, 3.5)),
+)
+
+
+def degenerate_cases():
+    """(label, (xy, p), REFUSED) for each triangle of :data:`DEGENERATE`."""
+    out = []
+    for what, xy, p in DEGENERATE:
+        xy, p = np.array(xy), np.array(p)
+        out.append((f"zero area, {what}: {tri_words(xy)}, p={vec(p)}", (xy, p), REFUSED))
     return out
+
+
+def call_barycentric(fn, args):
+    """The student's weights, read strictly, or :data:`REFUSED` where it raised ValueError
+    (another exception is reported as raised)."""
+    try:
+        value = fn(*args)
+    except ValueError:
+        return REFUSED
+    return as_numbers(value, (3,), "3 weights, shape (3,)")
+
+
+def same_barycentric(got, expected, args) -> bool:
+    if isinstance(expected, str) or isinstance(got, str):
+        return got == expected
+    return all_close(got, expected)
 
 
 def _areas(xy, p) -> np.ndarray:
@@ -57,6 +95,12 @@ def _area(xy) -> float:
 
 def explain_barycentric(args, expected, got) -> str:
     xy, p = args
+    if isinstance(expected, str):
+        yours = "you raised ValueError" if got == REFUSED else f"yours is {short(got)}"
+        return f"{tri_words(xy)} has E(v1, v2, v3) = 0 (p={vec(p)}); {yours}"
+    if isinstance(got, str):
+        return (f"at p={vec(p)} in {tri_words(xy)} you raised ValueError; the weights are "
+                f"{vec(expected)}")  # fmt: skip
     got = np.asarray(got, dtype=float)
     return f"at p={vec(p)} in {tri_words(xy)} your λ = {vec(got, expected)}; the weights are {vec(expected, got)}"
 
@@ -92,10 +136,12 @@ def _clamped(xy, p) -> np.ndarray | None:
     return kept / kept.sum()
 
 
-def _epsilon_fits(args, expected, got) -> bool:
+def _epsilon_fits(args, expected, got) -> bool | None:
     """λ = E(...)/(E(v1, v2, v3) + δ) for a small δ ≠ 0, in float64 (r141 D3-b: a guard
     against dividing by 0, ``area + 1e-12``, was told "did you compute in float32?")."""
     xy, p = args
+    if isinstance(got, str) or isinstance(expected, str):
+        return None  # a zero area, or a refusal: it says nothing there
     g, area = np.asarray(got, dtype=float), _area(xy)
     total = float(np.sum(g))
     if g.shape != (3,) or not np.isfinite(g).all() or total == 0:
@@ -114,12 +160,59 @@ def _epsilon_words(args, expected, got) -> str:
     return (
         f": you added a small number (about {delta:.0e}) to E(v1, v2, v3) = {num(area)} (a guard "
         f"against dividing by 0?): on this small triangle that moves the weights by {error:.1e}; "
-        "divide by E(v1, v2, v3) itself (the check's triangles never have zero area, and a "
-        "zero-area one has no weights)"
+        "divide by E(v1, v2, v3) itself, and refuse a zero area with ValueError (on the "
+        "1/256-px grid E(v1, v2, v3) is exact, so E == 0 tells it without a nudge)"
     )
 
 
+def _zero_area_words(args, expected, got) -> str:
+    g = np.asarray(got, dtype=float)
+    what = "NaN or infinity (a division by 0)" if not np.isfinite(g).all() else "numbers"
+    return (
+        f": your answer is {what}, but these three vertices lie on one line: the triangle has no "
+        "area and no weights (a p on the line has infinitely many, any other none); raise "
+        "ValueError before dividing"
+    )
+
+
+def _refused_words(args, expected, got) -> str:
+    xy, _ = args
+    return (
+        f": this triangle's E(v1, v2, v3) = {num(_area(xy))} is not 0, so it has weights, "
+        "however thin it is: refuse only an area of exactly 0 (on the 1/256-px grid float64 "
+        "computes E exactly, so no threshold is needed, and one such as |E| < 1 refuses thin "
+        "triangles that have weights)"
+    )
+
+
+def _proper(gives):
+    """A wrong solution of a proper triangle that raises, as it should, on a zero area."""
+
+    def on_case(xy, p):
+        return REFUSED if _area(xy) == 0 else gives(xy, p)
+
+    return on_case
+
+
+ZERO_AREA_MISTAKES = [
+    Mistake("no zero-area check", _zero_area_words,
+            fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
+    Mistake("refused a proper triangle", _refused_words,
+            fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
+]  # fmt: skip
+
+
 def barycentric_mistakes() -> list[Mistake]:
+    return [_degenerate_aware(m) for m in _proper_mistakes()] + ZERO_AREA_MISTAKES
+
+
+def _degenerate_aware(m: Mistake) -> Mistake:
+    if m.gives is None:
+        return m
+    return Mistake(m.kind, m.words, gives=_proper(m.gives))
+
+
+def _proper_mistakes() -> list[Mistake]:
     out = [
         Mistake("absolute area", _absolute_area_words,
                 gives=lambda xy, p: _areas(xy, p) / abs(_area(xy))),
@@ -186,18 +279,43 @@ def bary_float32_words(args, expected, got) -> str | None:
     )
 
 
+def _float32_lambdas(xy, p) -> list[np.ndarray]:
+    """λ as a float32 computation gives it: from differences to a vertex, and from the plane
+    A·x + B·y + C of each edge in absolute coordinates (whose C, about far², cancels)."""
+    f = np.float32
+    v, q = np.asarray(xy, dtype=f), np.asarray(p, dtype=f)
+    with np.errstate(all="ignore"):
+        diffs = np.array([_e32(v[(k + 1) % 3], v[(k + 2) % 3], q) for k in range(3)])
+        planes = []
+        for k in range(3):
+            a, b = v[(k + 1) % 3], v[(k + 2) % 3]
+            planes.append((a[1] - b[1]) * q[0] + (b[0] - a[0]) * q[1] + (a[0] * b[1] - b[0] * a[1]))
+        area = _e32(v[0], v[1], v[2])
+        return [diffs / area, np.array(planes, dtype=f) / area]
+
+
+def _e32(a, b, p):
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+
 def bary_float32(args) -> float:
-    """Float32 rounding of λ: a plane A·x + B·y + C in absolute coordinates rounds C (about
-    far²); over the area."""
-    far, extent = _far(args)
-    return max(far * far, far * extent) / abs(_area(args[0])) + 1.0
+    """The scale whose float32 rounding bounds λ's: twice the largest error of the float32
+    computations of this case (:func:`_float32_lambdas`), at least λ's own magnitude; so far
+    from the origin a cancelling plane's error is float32's, and an error beyond it is not."""
+    xy, p = args
+    right = barycentric(xy, p)
+    errors = [float(np.max(np.abs(lam.astype(float) - right))) for lam in _float32_lambdas(xy, p)]
+    worst = max((e for e in errors if np.isfinite(e)), default=0.0)
+    return max(2 * worst / (8 * 2.0**-24), float(np.abs(right).max()))
 
 
 def _bary_rule(args, expected, got) -> str:
     xy, _ = args
+    if isinstance(expected, str) or isinstance(got, str):
+        return ": a triangle has weights exactly when E(v1, v2, v3) ≠ 0"
     total = float(np.sum(np.asarray(got, dtype=float)))
     # r137 D3-3: a sum other than 1 is said, whatever broke it (λ3 = 1 − λ1 + λ2, ...)
-    off = f"; yours sum to {num(total)}, not 1" if abs(total - 1) > 1e-6 else ""
+    off = f"; yours sum to {num(total, 1.0)}, not 1" if abs(total - 1) > 1e-6 else ""
     return (
         f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}{off}"
     )
@@ -210,6 +328,10 @@ def _draw_bary(ax, case, got):
     from .drawing import draw_values
 
     _, (xy, p), expected = case
+    if isinstance(expected, str) or isinstance(got, str):  # a zero area, or a refusal
+        said = "zero area: no weights" if isinstance(expected, str) else "you raised ValueError"
+        artists = [ax.text(0.3, 0.5, said, transform=ax.transAxes, ha="center")]
+        return artists + _draw_triangle_and_p(ax.inset_axes([0.56, 0.06, 0.42, 0.88]), xy, p)
     artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
     ax.set_xlim(-0.6, 6.0)  # the right part of the axes holds the triangle
     ax.set_ylabel("weight")
@@ -269,9 +391,9 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
 
 BARYCENTRIC = Exercise(
     "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
-    lambda g, e, a: all_close(g, e), explain_barycentric, _bary_rule, barycentric_mistakes(),
+    same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
     float32=bary_float32, float32_words=bary_float32_words, answers=(PackageAnswer(barycentric),),
-    draw=_draw_bary, hints=(
+    draw=_draw_bary, call=call_barycentric, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student
         (re.compile(r": λ_i = E of the edge opposite v_i at p, divided by E\(v1, v2, v3\) = "
