@@ -218,11 +218,31 @@ def test_drift_along_row_and_perspective_errors():
     perspective case's error against the exact value; both come from the catalogue."""
     row = hc.drift_along_row(0)
     cols, f32 = row["columns"], row["float32 stepping"]
-    assert len(cols) == 3840 and set(row) == {"columns", "float32 stepping", "float64 stepping",
-                                              "ours (direct)"}  # fmt: skip
-    assert f32.max() == f32[-1] and f32[-1] > 10 * f32[: len(f32) // 8].max()  # it grows
-    assert f32.max() == hc.get_case("stepping_drift").naive().values["stepped32"]
-    assert row["float64 stepping"].max() < 1e-9 and row["ours (direct)"].max() < 1e-12
+    assert set(row) == {"columns", "covered", "float32 stepping", "float64 stepping",
+                        "ours (direct)"}  # fmt: skip
+    # review r150 07-1: the stepper walks all 4096 centres of row 0, as lesson 03's q_drift
+    # does; the triangle covers the first 3840, where ours is defined
+    assert len(cols) == 4096 and row["covered"].sum() == 3840 and row["covered"][:3840].all()
+    assert np.isnan(row["ours (direct)"][3840:]).all()
+    assert abs(f32).max() == abs(f32[-1]) and abs(f32[-1]) > 10 * abs(f32[: len(f32) // 8]).max()
+    assert round(abs(f32[-1]), 4) == 0.0398  # lesson 03's end error over the same row
+    assert abs(f32).max() == hc.get_case("stepping_drift").naive().values["stepped32"]
+    # review r150 07-2: the signed error wanders (through zero twice after it passes 1e-4)
+    crossings = np.flatnonzero(np.diff(np.sign(f32)) != 0) + 1
+    assert [c for c in crossings if abs(f32[:c]).max() > 1e-4] == [615, 2464]
+    assert abs(row["float64 stepping"]).max() < 1e-9
+    assert np.nanmax(abs(row["ours (direct)"])) < 1e-12
+    case = hc.get_case("stepping_drift")
+    assert "over the 4096 pixels of row 0" in case.naive_difference(case.run(), case.naive())
+    assert "4096-pixel rows" not in case.why and "lesson 03" in case.why
     case = hc.get_case("perspective_w_ratio_1e6")
     errors = hc.perspective_errors(case.inputs, case.run())
     assert len(errors) == len(case.inputs["ws"]) and max(errors) <= 1e-9
+
+
+def test_translation_invariance_why_says_the_true_thing():
+    """Review r150 07-4: 0.3 + 10 == 10.3 in float64; what differs is 10.3 - 10 != 0.3."""
+    why = hc.get_case("translation_invariance").why
+    assert 0.3 + 10 == 10.3 and 10.3 - 10 != 0.3
+    assert f"10.3 - 10 gives {10.3 - 10!r}, not 0.3" in why
+    assert "is not exactly 10.3" not in why

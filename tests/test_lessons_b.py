@@ -1398,7 +1398,7 @@ def test_07_review_r145_fan_text_and_printout_agree():
     explain = " ".join(ask.split("explain=")[1].split())
     assert "every other centre" not in explain and "all {fan_twice - 1} other centres" in explain
     assert "{len(fan_rim_edge)} centres on the rim's edges" in explain
-    assert "{fan_twice + len(fan_rim_edge)} counts them too" in explain
+    assert "(an answer of {fan_twice + len(fan_rim_edge)} counts them as well)" in explain
 
 
 def test_07_review_r145_reading_order_and_questions():
@@ -1436,8 +1436,20 @@ def test_07_review_r145_reading_order_and_questions():
                                                      "ours (direct)"))  # fmt: skip
     assert 0.01 < f32 < 0.1 and 1e8 < f32 / f64 < 1e9 and direct < 1e-12  # "hundreds of millions"
     assert f32 == pytest.approx(ns.drift[1]) and f32 > float(np.spacing(np.float32(1000)))
-    assert len(ns.drift_cols) == 3840 and round(ns.drift_dx, 3) == 0.244  # "dx ≈ 0.244"
+    assert round(ns.drift_dx, 3) == 0.244  # "dx ≈ 0.244"
     assert "hundreds of millions of times less" in " ".join(cells[drift + 1].split())
+    # review r150 07-1, 07-2, 07-7: lesson 03's row (all 4096 centres, 0.0398 at the end), said
+    # so; the signed error wanders, range by range, and the text says it does not simply grow
+    assert len(ns.drift_cols) == 4096 and int(ns.drift_covered.sum()) == 3840
+    assert round(f32, 4) == 0.0398 and round(ns.drift[1], 4) == 0.0398
+    before, after = (" ".join(cells[k].split()) for k in (drift - 1, drift + 1))
+    assert "Lesson 03 ran this experiment" in before and "4096-pixel rows" not in before
+    assert "does not simply grow" in after and "The float32 stepper's error grows" not in after
+    assert [int(c) for c in ns.drift_seen] == [615, 2464]  # "through zero", twice
+    shares = list(ns.drift_share.values())
+    assert [np.sign(v) for v in shares] == [-1, -1, 1, 1, -1]  # sinks, climbs, falls
+    assert list(ns.drift_share) == [5, 6, 7, 8, 9]  # "32 to 128", "128 to 512", "from 512"
+    assert 'fig.legend(loc="outside lower center"' in cells[drift]  # off the curves
     # §5's figure: the wrong pixels lie left of the crossing (x = 16 px), where B is nearer
     half = ns.coplanar_both.shape[1] // 2
     for fmt, t in ns.band_cases:
@@ -1446,6 +1458,26 @@ def test_07_review_r145_reading_order_and_questions():
             wrong.any() and not wrong[:, half:].any() and wrong.sum() == ns.coplanar_wrong[(fmt, t)]
         )
     assert ns.coplanar_wrong[("unorm16", 1e-06)] > 0.9 * ns.coplanar_both[:, :half].sum()
+    # review r150 07-8: slope defined (slope/16 per pixel, printed), the drawn-first triangle
+    # keyed, and the ragged rows explained: row 16 at unorm16/1e-6 leaves B most of its half
+    assert ns.size_px // 2 == 16
+    narrow = ns.coplanar_pixels[("unorm16", 1e-06)].sum(axis=1)
+    assert narrow[16] < half / 2 and narrow[17] < half and (narrow[:16] == half).all()
+    fig5 = cells[at('case, ours = introduce("nearly_coplanar_overlap")')]
+    assert "A, drawn first, keeps the tie" in fig5 and "slope/{size_px // 2} per pixel" in fig5
+    text5 = " ".join(cells[at("float32 and unorm24 lose about")].split())
+    for said in ("Triangle A is flat and drawn first", "by slope/16 per pixel", "ragged",
+                 "rise gently with $y$", "leaves B most of row 16"):  # fmt: skip
+        assert said in text5, said
+    # review r150 07-3: the picker holds the coverage cases; the text names what it leaves out
+    from teachraster.widgets.case_picker import screen_cases
+
+    browse = " ".join(cells[at("## Browse the catalogue")].split())
+    assert "every screen-space case" not in cells[0] and "Pick any" not in browse
+    left_out = {"far_from_origin", "stepping_drift", "perspective_w_ratio_1e6",
+                "perspective_w_scale"}  # fmt: skip
+    assert not left_out & set(screen_cases())
+    assert all(f"`{name}`" in browse for name in left_out)
     # §4 prints ours' largest error, which the text says stays within 1e-9
     assert ns.w_ratio_ours < 1e-9 and "(the cell prints its largest error)" in " ".join(
         cells[at("**Perspective denominators.**")].split()

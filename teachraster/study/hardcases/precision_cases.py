@@ -149,6 +149,8 @@ def _translation_case():
     f = np.array([[1.0, 0.1], [2.0, 0.2], [3.0, -0.7]])
     shifts = ((0, 0), (1, 0), (0, 3), (10, 3), (17, 29), (31, 5))
     size = (48, 48)
+    sx = shifts[3][0]
+    moved_x = float(base[0, 0]) + sx  # v1's x moved: 0.3 and 10.3 round differently
 
     def run(inputs, method) -> Fills:
         tris = np.array([base + s for s in shifts])
@@ -182,8 +184,8 @@ def _translation_case():
     add_case(
         HardCase(
             "translation_invariance",
-            "a triangle with an edge through centres, moved by whole pixels: 0.3 + 10 is not "
-            "exactly 10.3 in binary",
+            "a triangle with an edge through centres, shifted by whole pixels: "
+            f"{moved_x!r} - {sx} gives {moved_x - sx!r}, not {float(base[0, 0])!r}",
             "triangles",
             "coverage moves with the triangle, pixel for pixel, and attributes are equal "
             "within 1e-12 (snapping to 1/256 px commutes with whole-pixel shifts)",
@@ -280,9 +282,10 @@ _snap_cases()
 # -- incremental stepping ----------------------------------------------------------------------
 @dataclass(frozen=True)
 class DriftResult:
-    """Largest error against the exact value, over the pixels the triangle covers.
+    """Largest error against the exact value.
 
-    ``ours`` is the core's fill (exact barycentrics then a blend); ``recentred`` Fatahalian's (CMU 15-462, *Texture*)
+    ``ours`` and ``recentred`` over the pixels the triangle covers; ``stepped64`` over the
+    4096 centres of row 0 that the stepper walks (the bounding box's row). ``ours`` is the core's fill (exact barycentrics then a blend); ``recentred`` Fatahalian's (CMU 15-462, *Texture*)
     plane evaluated directly at each pixel; ``stepped64`` *Triangle Rasterisation II - Interpolation*'s incremental stepping in
     float64 (:meth:`teachraster.PlaneEquation.stepped`).
     """
@@ -320,6 +323,13 @@ def _drift_case():
         ]
         return max(err)
 
+    def row_end(values: np.ndarray) -> float:
+        # The note's loop steps every pixel of the bounding box's row, written or not: row 0's
+        # 4096 centres, the triangle covering the first 3840. Its largest error, exactly.
+        exact = _exact_affine(xy, f)
+        return max(abs(float(Fraction(v) - exact(c + 0.5, 0.5)))
+                   for c, v in enumerate(values[0].tolist()))  # fmt: skip
+
     def run(inputs, method) -> DriftResult:
         fill = rasterize(Triangle(xy, attrs={"f": f}), width, height, method=method)
         cov = fill.coverage
@@ -329,7 +339,7 @@ def _drift_case():
         return DriftResult(
             ours=errors(fill.attrs["f"], cov),
             recentred=errors(recentred, cov),
-            stepped64=errors(stepped, cov),
+            stepped64=row_end(stepped),
             pixels=int(cov.sum()),
         )
 
@@ -339,24 +349,22 @@ def _drift_case():
         assert result.recentred <= 1e-9, f"direct recentred plane off by {result.recentred:.3g}"
 
     def naive(inputs) -> Naive:
-        stepped32 = naive_stepped32(xy, f, 0.5, 0.5, width, height)
-        cov = rasterize(Triangle(xy), width, height).coverage
-        return Naive(values={"stepped32": errors(stepped32, cov)})
+        return Naive(values={"stepped32": row_end(naive_stepped32(xy, f, 0.5, 0.5, width, 1))})
 
     def shows(inputs, ours: DriftResult, naive: Naive) -> str | None:
         e32 = naive.values["stepped32"]
         if e32 <= 1e-3 or e32 <= 1e3 * max(ours.ours, 1e-300):
             return None
         return (
-            f"float32 stepping drifts by {e32:.3g} over 4096 pixels (float64 stepping "
-            f"{ours.stepped64:.2g}, ours {ours.ours:.2g})"
+            f"float32 stepping drifts by {e32:.3g} over the {width} pixels of row 0 (float64 "
+            f"stepping {ours.stepped64:.2g}, ours {ours.ours:.2g})"
         )
 
     add_case(
         HardCase(
             "stepping_drift",
-            "an attribute stepped incrementally (f += dx per pixel) along 4096-pixel rows "
-            "accumulates rounding",
+            f"f += dx per pixel along all {width} centres of a bounding-box row (covered or "
+            "not) accumulates rounding: lesson 03's row",
             "precision",
             "the core evaluates every pixel directly from exact edge functions: error <= 1e-9 "
             "everywhere, as does the recentred plane of Fatahalian (CMU 15-462, *Texture*); "
@@ -377,37 +385,41 @@ _drift_case()
 
 
 def drift_along_row(row: int = 0) -> dict:
-    """The error of ``stepping_drift``'s attribute at every covered pixel of one row, against
-    the exact value: *Triangle Rasterisation II - Interpolation*'s stepping (start, then
-    ``+= dx``) in float32 and in float64, and the core's direct evaluation.
+    """The signed error of ``stepping_drift``'s attribute along one row of its bounding box,
+    against the exact value: *Triangle Rasterisation II - Interpolation*'s stepping (start,
+    then ``+= dx``) in float32 and in float64 at every centre of the row (the note's loop
+    steps them all, covered or not), and the core's direct evaluation where it covers.
 
     Parameters
     ----------
     row : int
-        The pixel row (0 is the longest: 3840 covered pixels).
+        The pixel row (row 0: 4096 centres, of which the triangle covers 3840).
 
     Returns
     -------
     dict
-        ``"columns"`` (n,) int, the covered columns; ``"float32 stepping"``,
-        ``"float64 stepping"`` and ``"ours (direct)"``, (n,) float absolute errors.
+        ``"columns"`` (n,) int, every column of the row; ``"covered"`` (n,) bool, the
+        triangle's pixels; ``"float32 stepping"``, ``"float64 stepping"`` and
+        ``"ours (direct)"``, (n,) float, value - exact (``nan`` where ours draws nothing).
     """
     case = get_case("stepping_drift")
     xy, f = np.asarray(case.inputs["xy"]), np.asarray(case.inputs["f"])
     width, height = case.inputs["size"]
     row = as_int("row", row)
     fill = rasterize(Triangle(xy, attrs={"f": f}), width, height)
-    cols = np.flatnonzero(fill.coverage[row])
+    cols = np.arange(width)
+    covered = fill.coverage[row].copy()
     exact = _exact_affine(xy, f)
     truth = [exact(c + 0.5, row + 0.5) for c in cols.tolist()]
     ways = {
         "float32 stepping": naive_stepped32(xy, f, 0.5, 0.5, width, height)[row],
         "float64 stepping": plane_equation(xy, f).stepped(0.5, 0.5, width, height)[row],
-        "ours (direct)": fill.attrs["f"][row],
+        "ours (direct)": np.where(covered, fill.attrs["f"][row], np.nan),
     }
-    out = {"columns": cols}
+    out = {"columns": cols, "covered": covered}
     for name, values in ways.items():  # exact differences: Fractions, then one rounding
         out[name] = np.array(
-            [abs(float(Fraction(v) - t)) for v, t in zip(values[cols].tolist(), truth)]
-        )
+            [float(Fraction(v) - t) if np.isfinite(v) else np.nan
+             for v, t in zip(values.tolist(), truth)]
+        )  # fmt: skip
     return out
