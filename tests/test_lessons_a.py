@@ -1906,3 +1906,33 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     assert "The next two cells are folded" not in text and "The next four cells are folded" in text
     try_it = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
     assert try_it.count("\n- ") == 4
+
+
+def test_04_r144_ritschel_step_questions_and_floor_diagonal():
+    """Review r144 04: Ritschel's summary said "the terms without t cancel" (only u1 Z1 does;
+    s Z1 (u2 - u1) stays and becomes (10)'s numerator); q_midpoint's figure drew the eye rays,
+    the screen and its midpoint, so a ruler answered it; q_affine offered "straight" only with
+    "evenly spaced", so the spacing cost nothing; the floor's thick dash lay over the kinks;
+    held cells' first lines (which JupyterLab shows folded) described the machinery."""
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    ritschel = next(t for t in text if "(Ritschel, *Interpolation and z-buffering*)" in t)
+    flat = " ".join(ritschel.split())
+    assert "the terms without $t$ cancel" not in flat
+    assert "$u_1 Z_1$ stands on both sides and cancels" in flat
+    assert "$s Z_1 (u_2 - u_1)$, stays (it becomes the numerator of (10))" in flat
+    ask = next(t for t in text if "q_midpoint = PredictPoint(" in t)
+    drawing = ask[ask.index("def midpoint_question") : ask.index("q_midpoint = PredictPoint(")]
+    assert "screen" not in drawing.split("#")[0] and "ax.plot([0, x_]" not in drawing
+    assert "ax.plot(*np.transpose([e0, e1])" in drawing and 'ax.plot([0], [0], "^"' in drawing
+    assert "s_ends[0]" in ask and "(not drawn)" in ask  # the image's ends given, not drawn
+    affine = next(t for t in text if "q_affine = Predict(" in t)
+    choices = re.findall(r'^        "(.*)",$', affine.split("answer=")[0], re.M)
+    combos = {(c.startswith("straight"), "kink" in c.replace("no kink", ""), "even" in c)
+              for c in choices}  # fmt: skip
+    assert {(True, k, e) for k in (True, False) for e in (True, False)} <= combos
+    floor = next(t for t in text if "plot_error_heatmap(axes[2]" in t)
+    assert 'for ax in axes[:2]:\n    # on the renders a thin' in floor and "lw=1.2)" in floor
+    for t, cell in zip(text, nb["cells"]):
+        if re.match(r"q_\w+\.hold\(\)", t):
+            assert t.split("\n", 1)[0].endswith("# shown after you answer above"), t[:80]
