@@ -96,6 +96,7 @@ ANSWERED_BELOW = {
         "q_midpoint": ["t = q * z0 / (z1 - q * (z1 - z0))", "t_ritschel = ", "1 - t = (1 - q)"],
         "q_where": ["t = q * z0 / (z1 - q * (z1 - z0))", "1 - t = (1 - q)"],
         "q_affine": ["affine interpolation steps $v$ evenly"],
+        "q_diagonal": ["$\\sqrt{2}$ times as far", "diagonal / side", "√2 ="],
     },
     "07_hard_cases": {
         "q_fan": ["FAN_TEXT = "],
@@ -700,8 +701,10 @@ def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_v
         >= 2
     )
     # the floor's renders in a hidden figure cell after the computing one (review r91 04-G)
-    assert "dashed line is the diagonal" in cells[ask + 3]
-    assert nb["cells"][ask + 2]["metadata"].get("tags") == ["hide-input"]
+    # review r144 04-12: q_diagonal (ask + 2) between them, the text under the figure held
+    assert "dashed line is the diagonal" in cells[ask + 4] and "display(" in cells[ask + 4]
+    assert "q_diagonal = Predict(" in cells[ask + 2]
+    assert all(nb["cells"][i]["metadata"].get("tags") == ["hide-input"] for i in (ask + 2, ask + 3, ask + 4))
     assert any("plot_triangle(ax, tri" in c for c in cells)
     assert any("§14.6.1" in c and "(14.9)" in c and "(14.10)" in c for c in cells)
 
@@ -730,6 +733,11 @@ def test_04_heatmap_edges_and_the_readable_floor():
     )
     assert abs(e["diagonal"] / e["side u = 0"] - np.sqrt(2)) < 1e-3
     assert abs(e["diagonal"] - np.nanmax(ns.texels)) < 0.5  # the render's maximum is on it
+    # review r144 04-12: the student predicts the diagonal's error from a side's (printed in
+    # the question); the answer is the number the held cell prints
+    q = ns.q_diagonal
+    assert q.answer == round(e["diagonal"], 1) and f"{e['side u = 0']:.1f} texels" in q.question
+    assert abs(q.answer - np.sqrt(2) * e["side u = 0"]) < q.tolerance < 0.3 * e["side u = 0"]
     # the heatmap's dark band: Δu = 0 on v2's depth line, v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
