@@ -704,7 +704,10 @@ def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_v
     # review r144 04-12: q_diagonal (ask + 2) between them, the text under the figure held
     assert "dashed line is the diagonal" in cells[ask + 4] and "display(" in cells[ask + 4]
     assert "q_diagonal = Predict(" in cells[ask + 2]
-    assert all(nb["cells"][i]["metadata"].get("tags") == ["hide-input"] for i in (ask + 2, ask + 3, ask + 4))
+    assert all(
+        nb["cells"][i]["metadata"].get("tags") == ["hide-input"]
+        for i in (ask + 2, ask + 3, ask + 4)
+    )
     assert any("plot_triangle(ax, tri" in c for c in cells)
     assert any("§14.6.1" in c and "(14.9)" in c and "(14.10)" in c for c in cells)
 
@@ -1943,7 +1946,7 @@ def test_04_r144_ritschel_step_questions_and_floor_diagonal():
               for c in choices}  # fmt: skip
     assert {(True, k, e) for k in (True, False) for e in (True, False)} <= combos
     floor = next(t for t in text if "plot_error_heatmap(axes[2]" in t)
-    assert 'for ax in axes[:2]:\n    # on the renders a thin' in floor and "lw=1.2)" in floor
+    assert "for ax in axes[:2]:\n    # on the renders a thin" in floor and "lw=1.2)" in floor
     for t in text:
         if re.match(r"q_\w+\.hold\(\)", t):
             assert t.split("\n", 1)[0].endswith("# shown after you answer above"), t[:80]
