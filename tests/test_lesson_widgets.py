@@ -718,6 +718,46 @@ def test_projection_explorer_ratio_moves_the_far_end_along_its_ray():
     ex.close()
 
 
+def test_projection_explorer_axes_stay_and_the_peak_is_marked():
+    """Review r144 04-2/3: the text says the segment's image on the screen stays put while
+    z1 / z0 moves, but the axes rescaled with the ratio (x to 0.7 at 1, to 4.2 at 8): they
+    hold every ratio of the slider now. The curve t(q) marks where |t - q| peaks (computed:
+    q* = sqrt(r) / (1 + sqrt(r)), 0.586 at r = 2), the caption prints it."""
+    from teachraster.plotting.projection import Segment
+    from teachraster.widgets import ProjectionExplorer
+
+    ex = ProjectionExplorer(Segment(-1.0, 1.0, 2.0, 4.0), backend="image")
+    picture, curve = ex.axes
+    limits = {}
+    for ratio in (1.0, 2.0, 8.0):
+        ex.ratio.value = ratio
+        picture, curve = ex.axes
+        limits[ratio] = (picture.get_xlim(), picture.get_ylim())
+        x, z = ex.segment.point([0.0, 1.0]).T
+        (x_lo, x_hi), (z_lo, z_top) = limits[ratio]
+        assert x_lo < x.min() and x.max() < x_hi and z_lo < z.min() and z.max() < z_top
+        # the key inside the axes, not beside them (60 % of the width was left for the picture)
+        box = picture.get_legend().get_window_extent()
+        assert picture.get_window_extent().contains(box.x0 + 1, box.y0 + 1)
+        bars = [line for line in curve.get_lines() if "largest |t − q|" in str(line.get_label())]
+        if ratio == 1.0:
+            assert not bars and "t = q everywhere" in ex.info.value
+            continue
+        r = ex.segment.z1 / ex.segment.z0
+        q_star = np.sqrt(r) / (1 + np.sqrt(r))
+        assert ex.peak_q == pytest.approx(q_star, abs=1e-12)
+        qq = np.linspace(0.0, 1.0, 100001)
+        gap = np.abs(ex.segment.world_parameter(qq) - qq)
+        assert qq[gap.argmax()] == pytest.approx(q_star, abs=1e-4)  # the peak found by search
+        (bar,) = bars
+        np.testing.assert_allclose(bar.get_xdata(), [q_star, q_star])
+        assert np.ptp(bar.get_ydata()) == pytest.approx(ex.largest_gap)
+        assert f"at q = {q_star:.3f}" in ex.info.value
+        assert ratio != 2.0 or "0.172</b>, at q = 0.586" in ex.info.value
+    assert limits[1.0] == limits[2.0] == limits[8.0]
+    ex.close()
+
+
 def pixels_differ(moved, fresh) -> int:
     """How many pixels of ``moved``'s last picture differ from ``fresh``'s (-1: another size).
     Both fresh from the same machine and matplotlib: the pictures must be equal, bit for bit

@@ -99,6 +99,7 @@ ANSWERED_BELOW = {
         "q_midpoint": ["t = q * z0 / (z1 - q * (z1 - z0))", "t_ritschel = ", "1 - t = (1 - q)"],
         "q_where": ["t = q * z0 / (z1 - q * (z1 - z0))", "1 - t = (1 - q)"],
         "q_affine": ["affine interpolation steps $v$ evenly"],
+        "q_diagonal": ["$\\sqrt{2}$ times as far", "diagonal / side", "√2 ="],
     },
     "07_hard_cases": {
         "q_fan": ["FAN_TEXT = "],
@@ -766,8 +767,13 @@ def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_v
         >= 2
     )
     # the floor's renders in a hidden figure cell after the computing one (review r91 04-G)
-    assert "dashed line is the diagonal" in cells[ask + 3]
-    assert nb["cells"][ask + 2]["metadata"].get("tags") == ["hide-input"]
+    # review r144 04-12: q_diagonal (ask + 2) between them, the text under the figure held
+    assert "dashed line is the diagonal" in cells[ask + 4] and "display(" in cells[ask + 4]
+    assert "q_diagonal = Predict(" in cells[ask + 2]
+    assert all(
+        nb["cells"][i]["metadata"].get("tags") == ["hide-input"]
+        for i in (ask + 2, ask + 3, ask + 4)
+    )
     assert any("plot_triangle(ax, tri" in c for c in cells)
     assert any("§14.6.1" in c and "(14.9)" in c and "(14.10)" in c for c in cells)
 
@@ -796,6 +802,14 @@ def test_04_heatmap_edges_and_the_readable_floor():
     )
     assert abs(e["diagonal"] / e["side u = 0"] - np.sqrt(2)) < 1e-3
     assert abs(e["diagonal"] - np.nanmax(ns.texels)) < 0.5  # the render's maximum is on it
+    # review r144 04-12: the student predicts the diagonal's error from a side's (printed in
+    # the question); the answer is the number the held cell prints
+    assert ns.diagonal_answer == round(e["diagonal"], 1) == 37.8 and ns.side == e["side u = 0"]
+    asked = next(c for c in _cells("04_perspective_correct_interpolation", "code")
+                 if "q_diagonal = Predict(" in c)  # fmt: skip
+    assert "off by up to <b>{side:.1f} texels</b>" in asked and "tolerance=1.5," in asked
+    assert "answer=diagonal_answer," in asked
+    assert abs(ns.diagonal_answer - np.sqrt(2) * ns.side) < 1.5 < abs(ns.diagonal_answer - ns.side)
     # the heatmap's dark band: Δu = 0 on v2's depth line, v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
@@ -1974,3 +1988,33 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     assert "The next two cells are folded" not in text and "The next three cells are folded" in text
     try_it = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
     assert try_it.count("\n- ") == 4
+
+
+def test_04_r144_ritschel_step_questions_and_floor_diagonal():
+    """Review r144 04: Ritschel's summary said "the terms without t cancel" (only u1 Z1 does;
+    s Z1 (u2 - u1) stays and becomes (10)'s numerator); q_midpoint's figure drew the eye rays,
+    the screen and its midpoint, so a ruler answered it; q_affine offered "straight" only with
+    "evenly spaced", so the spacing cost nothing; the floor's thick dash lay over the kinks;
+    held cells' first lines (which JupyterLab shows folded) described the machinery."""
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    ritschel = next(t for t in text if "(Ritschel, *Interpolation and z-buffering*)" in t)
+    flat = " ".join(ritschel.split())
+    assert "the terms without $t$ cancel" not in flat
+    assert "$u_1 Z_1$ stands on both sides and cancels" in flat
+    assert "$s Z_1 (u_2 - u_1)$, stays (it becomes the numerator of (10))" in flat
+    ask = next(t for t in text if "q_midpoint = PredictPoint(" in t)
+    drawing = ask[ask.index("def midpoint_question") : ask.index("q_midpoint = PredictPoint(")]
+    assert "screen" not in drawing.split("#")[0] and "ax.plot([0, x_]" not in drawing
+    assert "ax.plot(*np.transpose([e0, e1])" in drawing and 'ax.plot([0], [0], "^"' in drawing
+    assert "s_ends[0]" in ask and "(not drawn)" in ask  # the image's ends given, not drawn
+    affine = next(t for t in text if "q_affine = Predict(" in t)
+    choices = re.findall(r'^        "(.*)",$', affine.split("answer=")[0], re.M)
+    combos = {(c.startswith("straight"), "kink" in c.replace("no kink", ""), "even" in c)
+              for c in choices}  # fmt: skip
+    assert {(True, k, e) for k in (True, False) for e in (True, False)} <= combos
+    floor = next(t for t in text if "plot_error_heatmap(axes[2]" in t)
+    assert "for ax in axes[:2]:\n    # on the renders a thin" in floor and "lw=1.2)" in floor
+    for t in text:
+        if re.match(r"q_\w+\.hold\(\)", t):
+            assert t.split("\n", 1)[0].endswith("# shown after you answer above"), t[:80]

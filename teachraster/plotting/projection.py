@@ -56,6 +56,22 @@ class Segment:
         t = np.atleast_1d(np.asarray(t, dtype=np.float64))[:, None]
         return np.array([self.x0, self.z0]) * (1 - t) + np.array([self.x1, self.z1]) * t
 
+    def with_ratio(self, ratio: float) -> Segment:
+        """The far end moved along its own eye ray to depth ``ratio`` · z0: the same image on
+        the screen, another depth ratio."""
+        z1 = float(ratio) * self.z0
+        return Segment(self.x0, self.z0, self.x1 / self.z1 * z1, z1)
+
+    def peak(self) -> tuple[float, float]:
+        """Where |t − q| is largest, and how large: (q*, |t(q*) − q*|).
+
+        With r = z1 / z0, t = q / (r − q (r − 1)); d(t − q)/dq = 0 where r − q (r − 1) = √r,
+        so q* = √r / (1 + √r) and the gap is (√r − 1)² / (r − 1) (0 at r = 1, where t = q).
+        """
+        root = np.sqrt(self.z1 / self.z0)
+        q_star = float(root / (1.0 + root))
+        return q_star, float(abs(self.world_parameter(q_star)[0] - q_star))
+
 
 @dataclass
 class ProjectionArtists:
@@ -69,6 +85,7 @@ class ProjectionArtists:
     label: object = None
     curve_point: object = None
     steps: list = field(default_factory=list)
+    top: float = 0.0  # the picture's top depth: the highlighted ray runs up to it
 
     def update(self, q: float) -> float:
         """Highlight screen parameter ``q``; returns its world parameter t."""
@@ -76,7 +93,7 @@ class ProjectionArtists:
         t = float(self.segment.world_parameter(q)[0])
         (x, z) = self.segment.point(t)[0]
         s = float(self.segment.screen(q))
-        far = _top(self.segment)
+        far = self.top
         self.ray.set_data([0.0, s * far], [0.0, far])
         self.screen_point.set_data([s], [1.0])
         self.world_point.set_data([x], [z])
@@ -93,8 +110,16 @@ def _top(segment: Segment) -> float:
     return 1.15 * max(segment.z0, segment.z1, 2.0)
 
 
+def frame_of(segments) -> tuple[float, float, float]:
+    """(x from, x to, top depth) that holds every one of ``segments`` and its screen image:
+    one frame for all, so that a picture of each puts the screen at the same place."""
+    lo = min(min(g.screen([0.0, 1.0]).min(), g.x0, g.x1) for g in segments) - 0.25
+    hi = max(max(g.screen([0.0, 1.0]).max(), g.x0, g.x1) for g in segments) + 0.25
+    return float(lo), float(hi), max(_top(g) for g in segments)
+
+
 def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: float = 0.5,
-                    curve_ax=None) -> ProjectionArtists:  # fmt: skip
+                    curve_ax=None, frame=None) -> ProjectionArtists:  # fmt: skip
     """Draw eye, screen, segment and the rays of ``n_steps`` equal screen steps.
 
     Parameters
@@ -107,7 +132,10 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     q : float
         The highlighted screen parameter (``update(q)`` moves it).
     curve_ax : matplotlib Axes, optional
-        Also plot t against q there (with t = q dashed), the highlighted point on it.
+        Also plot t against q there (with t = q dashed), the highlighted point on it, and the
+        largest gap |t − q| as a bar at the q where it occurs.
+    frame : (float, float, float), optional
+        x from, x to and the top depth (:func:`frame_of`); default: the segment's own.
 
     Returns
     -------
@@ -117,12 +145,10 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     qs = np.linspace(0.0, 1.0, int(n_steps) + 1)
     ts = segment.world_parameter(qs)
     pts, ss = segment.point(ts), segment.screen(qs)
-    far = _top(segment)
-    out = ProjectionArtists(segment)
+    lo, hi, far = frame_of([segment]) if frame is None else frame
+    out = ProjectionArtists(segment, top=far)
     for x, z in pts:
         out.steps += ax.plot([0, x], [0, z], color=COLORS["grid"], lw=lw(0.3), zorder=1)
-    lo = min(ss.min(), segment.x0, segment.x1) - 0.25
-    hi = max(ss.max(), segment.x0, segment.x1) + 0.25
     ax.plot([lo, hi], [1, 1], color=COLORS["edge"], lw=lw(0.6), label="screen (z = 1)")
     ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6),
             label=f"{n_steps} equal steps of q")  # fmt: skip
@@ -152,6 +178,11 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
         curve_ax.plot(qq, segment.world_parameter(qq), color=COLORS["edge"], lw=lw(0.8),
                       label="t(q), perspective")  # fmt: skip
         curve_ax.plot(qq, qq, "--", color=COLORS["grid"], lw=lw(0.6), label="t = q (affine)")
+        q_star, gap = segment.peak()
+        if gap > 1e-12:  # at z1 = z0 there is no gap to mark
+            curve_ax.plot([q_star, q_star], [q_star - gap, q_star], color=OKABE_ITO["reddish_purple"],
+                          lw=lw(0.6), marker="_", ms=ms(1.0),
+                          label=f"largest |t − q|, at q = {q_star:.3f}")  # fmt: skip
         # not clipped, and a margin round the unit square: at q = 0 or 1 the dot sat half
         # hidden on the frame's corner (review r77 04-4)
         (out.curve_point,) = curve_ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.2),

@@ -15,16 +15,17 @@ re-rendered the whole figure for each (3 pictures in 1.5 s, issue 31).
 from __future__ import annotations
 
 import ipywidgets as widgets
-import numpy as np
 
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.projection import Segment, plot_projection
+from ..plotting.projection import Segment, frame_of, plot_projection
 from .common import Shown, style_context, title_html
 from .display import new_figure, resolve_backend
 from .live_slider import LiveSlider, info_line, slider_display
 
 #: The picture's alternative text in the page
 ALT = "the eye, the screen and the segment, and the curve t(q)"
+#: The z1 / z0 slider's range
+RATIOS = (1.0, 8.0)
 
 
 class ProjectionExplorer(Shown):
@@ -48,10 +49,14 @@ class ProjectionExplorer(Shown):
         z1 / z0, the far end's depth over the near end's (1 to 8). The far end moves along its
         own eye ray, so the segment's picture on the screen stays where it is: only how the
         screen steps fall on it changes (review r3 04: |t − q| depends on the ratio only).
+        The axes hold the segment at every ratio of the slider and stay put, so that the
+        screen image does not grow or shrink on the page either (review r144 04-2).
     t : float
         World parameter at the current q.
     largest_gap : float
         The largest |t − q| over the screen at the current ratio.
+    peak_q : float
+        The q where it occurs (marked on the curve t(q)).
     info : PageCaption or ipywidgets.HTML
         The line above the picture (its ``value``).
     widget : ipywidgets.VBox
@@ -71,6 +76,9 @@ class ProjectionExplorer(Shown):
     def __init__(self, segment: Segment | None = None, q: float = 0.5, *, n_steps: int = 8,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.segment = Segment() if segment is None else segment
+        # one frame for every ratio of the slider: its ends hold the extremes (the far end
+        # moves along a straight line as the ratio grows)
+        self._frame = frame_of([self.segment.with_ratio(r) for r in RATIOS])
         self.backend = resolve_backend(backend)
         # in the page, its positions drawn ahead (coalesced where they are not)
         self.q = LiveSlider(value=q, min=0.0, max=1.0, step=0.01, description="q",
@@ -86,7 +94,7 @@ class ProjectionExplorer(Shown):
             self.display = slider_display(self.fig, self.backend, draw=self._draw_figure,
                                           drafting=lambda: self.q.dragging, alt=ALT)  # fmt: skip
         self.ratio = widgets.FloatSlider(
-            value=self.segment.z1 / self.segment.z0, min=1.0, max=8.0, step=0.25,
+            value=self.segment.z1 / self.segment.z0, min=RATIOS[0], max=RATIOS[1], step=0.25,
             description="z1 / z0", continuous_update=False, readout_format=".2f",
         )  # fmt: skip
         # the caption of the page's picture: a picture drawn ahead brings its own
@@ -114,8 +122,15 @@ class ProjectionExplorer(Shown):
         ax.clear()
         curve.clear()
         self.artists = plot_projection(ax, self.segment, n_steps=self.n_steps, q=self._q,
-                                       curve_ax=curve)  # fmt: skip
+                                       curve_ax=curve, frame=self._frame)  # fmt: skip
         self.t = self.artists.update(self._q)
+        # the key inside, top left: the frame holds the segment at every ratio, so no part of
+        # the segment or of its rays lies there at any (left of the near end, the segment
+        # climbs to the right); only the ray at q runs on under it, past the point it shows.
+        # Beside the axes it left the picture 60 % of the figure's width (review r144 04-3)
+        key = ax.get_legend()
+        ax.legend(key.legend_handles, [t.get_text() for t in key.get_texts()],
+                  loc="upper left", fontsize=key.get_texts()[0].get_fontsize())  # fmt: skip
         a = self.artists
         # a new q moves these only: the rest (the rays of equal steps, the segment, the
         # axes, the keys) stays in a cached background, the curve's key over its point
@@ -123,8 +138,7 @@ class ProjectionExplorer(Shown):
             (MOVING, [a.ray, a.screen_point, a.world_point, a.affine_point, a.label,
                       a.curve_point]),
             (STILL, [curve.get_legend()])])  # fmt: skip
-        qq = np.linspace(0.0, 1.0, 401)
-        self.largest_gap = float(np.max(np.abs(self.segment.world_parameter(qq) - qq)))
+        self.peak_q, self.largest_gap = self.segment.peak()
 
     def _lay_out(self) -> None:
         """Lay the figure out (constrained), then keep that layout: a new q moves artists
@@ -143,8 +157,9 @@ class ProjectionExplorer(Shown):
 
     def _info_html(self) -> str:
         r = self.segment.z1 / self.segment.z0
+        where = f"at q = {self.peak_q:.3f}" if self.largest_gap > 1e-12 else "t = q everywhere"
         return (f"depth ratio z1 / z0 = {r:.2f} · largest |t − q| over the screen: "
-                f"<b>{self.largest_gap:.3f}</b>")  # fmt: skip
+                f"<b>{self.largest_gap:.3f}</b>, {where}")  # fmt: skip
 
     def set_ratio(self, ratio: float) -> None:
         """Move the far end along its eye ray to depth ``ratio`` · z0, and redraw."""
@@ -152,9 +167,7 @@ class ProjectionExplorer(Shown):
         # seconds on a loaded machine, and a stale "4.00" under a 7.50 slider read as a wrong
         # answer (review r77, 04)
         self.info.value = f"depth ratio z1 / z0 = {float(ratio):.2f} · <i>drawing…</i>"
-        seg = self.segment
-        z1 = float(ratio) * seg.z0
-        self.segment = Segment(seg.x0, seg.z0, seg.x1 / seg.z1 * z1, z1)  # same screen point
+        self.segment = self.segment.with_ratio(ratio)  # the same image on the screen
         with style_context(self.style):
             self._plot()
             self._lay_out()
