@@ -245,7 +245,13 @@ def test_06_has_no_appendix_and_says_the_time_signs_once():
     assert md.count("a division by the piece's length") == 1
     assert md.count('the line "subdivided slower than the exact divide at every N') == 1
     assert "appendix" not in md.lower()
-    assert "`cvttss2si`" in md and "`fistp`" in md  # the cast, one sentence
+    # r152: the cast (old appendix A) stood only in the summary, with nothing behind it: gone
+    assert "`fistp`" not in md
+    # r152 C1/C2: set-up makes every variant dearer (it shrinks the divide's share); errors at
+    # rounding level sit on the "0 (exact)" line; q_depth's stem does not say the answer
+    assert "both making the divide cheaper" not in md and "shrinks the divide's *share*" in md
+    assert "0, or at rounding level (perspective-correct's 1e-13)" in md
+    assert "would be off. Store it so anyway" not in " ".join(cells)
     assert "lesson 03 shows drift along a 4096-pixel row" in md
 
 
@@ -734,7 +740,7 @@ def test_06_review_r23_tables_fit_and_wording():
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
-    assert "`cvttss2si`" in md and "Doom's price" not in md
+    assert "Doom's price" not in md  # r152: the cast's bullet (old appendix A) went with it
     assert "share shrinks like $1/k$" not in md and "$d/k$, falling like $1/k$" in ns.FRONT_TEXT
     assert "tens of texels" not in md and "over a hundred texels" not in md
     assert "The two naive rules fail on exactly the same centres" not in md
