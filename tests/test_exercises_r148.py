@@ -11,11 +11,11 @@ import pytest
 import reasoning_solutions as sol
 
 import teachraster.core.barycentrics as core_barycentrics
+import teachraster.exercises.capstone_glass as capstone_glass
 import teachraster.pipeline.texturing.texel_fetch as texel_fetch
 from teachraster import edge_function, linear_to_srgb, srgb_to_linear
 from teachraster import exercises as ex
-from teachraster.core.edges import is_top_left
-from teachraster.exercises.capstone_glass import OWN_STACKS, package_resolve
+from teachraster.core.edges import is_top_left, setup_edges
 from teachraster.exercises.capstone_render import SCENES, _frame
 from teachraster.exercises.checks import check
 
@@ -69,14 +69,14 @@ def test_a_covers_of_one_winding_fails_the_grid_on_its_own_pixels(sign):
 
 
 def test_a_blind_spot_reason_is_not_given_to_an_exception():
-    def raises_on_flat_tops(xy, p):
+    def raises_on_flat_ties(xy, p):  # no centre of the grid lies on a horizontal edge
         xy = np.asarray(xy, float)
-        if any(xy[k, 1] == xy[(k + 1) % 3, 1] for k in range(3)):
+        if any(xy[k, 1] == xy[k - 1, 1] == p[1] for k in range(3)):
             raise IndexError("boom")
         return sol.covers(xy, p)
 
-    report = ex.capstone("grid", covers=raises_on_flat_tops)
-    assert not report.passed
+    report = ex.capstone("grid", covers=raises_on_flat_ties)
+    assert not report.passed and "raised IndexError" in str(report)
     assert "horizontal" not in str(report)
 
 
@@ -172,9 +172,12 @@ def test_an_a_buffer_weighting_by_the_previous_alpha_fails_and_is_named():
 
 
 def test_the_a_buffer_stacks_hold_three_and_four_fragments_and_a_right_one_passes():
-    assert {len(d) for d, _ in OWN_STACKS} >= {3, 4}
-    for depths, colours in OWN_STACKS:  # the package's resolve is right on them: the reference
-        out = package_resolve(np.array(depths), np.array(colours), np.ones(4))
+    assert {len(d) for d, _ in capstone_glass.OWN_STACKS} >= {3, 4}
+    for (
+        depths,
+        colours,
+    ) in capstone_glass.OWN_STACKS:  # the package's resolve is right on them: the reference
+        out = capstone_glass.package_resolve(np.array(depths), np.array(colours), np.ones(4))
         assert 0 <= out[3] <= 1 + 1e-12
     assert ex.capstone("glass_sorted", **_mine("glass_sorted")).passed
 
@@ -212,11 +215,13 @@ def test_bilinear_from_the_texel_fetch_helpers_is_not_counted(fn, name):
 
 
 def test_barycentric_from_the_core_module_and_covers_from_its_tie_rule_are_not_counted():
-    def from_edges(xy, p):
-        core_barycentrics.barycentric_pixels  # noqa: B018 - the module's whole
-        return core_barycentrics.barycentric(np.asarray(xy, float), np.asarray(p, float)[None])[0]
+    def from_edges(xy, p):  # the core's own weights from edge values of the student's
+        s = setup_edges(np.asarray(xy, float), None)
+        e = [edge_function(s.p[k], s.p[(k + 1) % 3], np.asarray(p, float)) for k in range(3)]
+        return core_barycentrics.barycentric_from_edges(s, np.array([e]))[0]
 
-    assert not check("barycentric", from_edges).passed
+    report = check("barycentric", from_edges)
+    assert not report.passed and "barycentric_from_edges" in str(report)
 
     def tie_by_package(xy, p):
         is_top_left(np.asarray(xy[0], float), np.asarray(xy[1], float))

@@ -68,7 +68,7 @@ COVERED = ("hi_z", "failed_depth", "passed")
 def explain_pixel(spec, used, mine, reference, pixel) -> tuple[str, str]:
     """(stage, explanation) of why ``pixel`` of ``mine`` differs from ``reference``."""
     row, col = pixel
-    if getattr(spec, "sample_covers", False):
+    if spec.sample_covers:
         said = samples.explain(lambda xy, p: _call(used, "covers", xy, p),
                                lambda inside: named_mistake(used, "covers", inside=inside),
                                mine, reference, row, col)  # fmt: skip
