@@ -111,7 +111,7 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
                                color=MARK_COLOUR, lw=1.5, clip_on=True)  # fmt: skip
             ax.set_xlim(0, w)
             ax.set_ylim(h, 0)
-        key = f"{key}\npixel ({r}, {c}) outlined" if key else f"pixel ({r}, {c}) outlined"
+        key = f"pixel ({r}, {c}) outlined" + (f"\n{key}" if key else "")
     if key:
         axes[2].set_xlabel(key, fontsize="x-small")
     return artists
