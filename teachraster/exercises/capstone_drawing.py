@@ -98,13 +98,22 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
         axes[2].set_title(f"no pixel differs; blue: {k}\nwhere {spec.contrast}\nshows "
                           "otherwise", fontsize="small")  # fmt: skip
     artists.append(axes[2].imshow(diff, extent=(0, w, h, 0), interpolation="nearest"))
+    key = "red: differs, grey: matches" if len(wrong) else ""
     mark = _mark(report, wrong, pixel)
     if mark is not None:
         r, c = mark
         for ax in axes:
             artists += ax.plot([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r],
                                color=MARK_COLOUR, lw=2)  # fmt: skip
-        axes[2].set_xlabel(f"pixel ({r}, {c}) outlined", fontsize="x-small")
+            # r148 D12-12: one pixel of 48 is hard to find: a ring of 2 px around it too
+            artists += ax.plot([c - 2, c + 3, c + 3, c - 2, c - 2],
+                               [r - 2, r - 2, r + 3, r + 3, r - 2],
+                               color=MARK_COLOUR, lw=1.5, clip_on=True)  # fmt: skip
+            ax.set_xlim(0, w)
+            ax.set_ylim(h, 0)
+        key = f"pixel ({r}, {c}) outlined" + (f"\n{key}" if key else "")
+    if key:
+        axes[2].set_xlabel(key, fontsize="x-small")
     return artists
 
 

@@ -31,6 +31,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..core.barycentrics import barycentric
+from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..core.interpolation import convex_weights, weights_per_row
 from ..core.snapping import snap
 from ..pipeline.texturing.mip_pyramid import mipmap
@@ -38,10 +39,12 @@ from ..pipeline.texturing.texture import sample
 from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
 from . import capstone_glass as glass
+from . import capstone_samples as samples
 from . import output
 from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
 from .exercise import Knobs
+from .interpolation import rounded_decimals, rounded_words
 from .running import WrongAnswerType, last_line, run_checker
 from .scalars import vec
 from .zbuffer_pixel import DEPTH_MISTAKES, as_passes, depth_cases
@@ -54,7 +57,8 @@ CHECKED_BY = ("covers", "barycentric", "perspective_weights", "depth_passes", "o
 #: name (the capstone's glass is premultiplied).
 CHECKED_AS = {"over": "over_premultiplied"}
 
-#: The capstone's tolerance (float32's rounding passes), as :mod:`.capstone_render` compares.
+#: The capstone's tolerance (some 17 of float32's half-ulps at 1: a float32 computation's
+#: roundings pass), as :mod:`.capstone_render` compares (its ``TOL``).
 TOL = 1e-6
 
 #: Outcomes that mean "the centre was covered" (Hi-Z rejects covered fragments).
@@ -64,6 +68,15 @@ COVERED = ("hi_z", "failed_depth", "passed")
 def explain_pixel(spec, used, mine, reference, pixel) -> tuple[str, str]:
     """(stage, explanation) of why ``pixel`` of ``mine`` differs from ``reference``."""
     row, col = pixel
+    if spec.sample_covers:
+        said = samples.explain(lambda xy, p: _call(used, "covers", xy, p),
+                               lambda inside: named_mistake(used, "covers", inside=inside),
+                               mine, reference, row, col)  # fmt: skip
+        return (
+            ("sample coverage", said)
+            if said is not None
+            else _shading(spec, used, reference, pixel)
+        )
     if spec.uses != ("resolve",):
         ours = {(r.piece, r.sample): r for r in reference.history(row, col).records}
         for rm in mine.history(row, col).records:
@@ -306,13 +319,47 @@ def _interpolation(used, reference, pixel, rr) -> str:
         yours, error = _call(used, "barycentric", xy, p)
         if error or yours is None or not np.allclose(yours, ours, rtol=TOL, atol=TOL):
             said = error or f"your barycentric returned {vec(yours, ours)}"
-            return (f"{head}: {said}; the package's weights are {vec(ours, yours)}"
-                    f"{named_mistake(used, 'barycentric')}")  # fmt: skip
+            why = "" if error else _weights_why(used, yours, ours)
+            return f"{head}: {said}; the package's weights are {vec(ours, yours)}{why}"
     mu = ours if np.all(w == w[0]) else weights_per_row(ours[None], w[None])[0]
     yours, error = _call(used, "perspective_weights", ours, w)
     said = error or f"your perspective_weights(λ, w) returned {vec(yours, mu)}"
     return (f"{head}: λ = {vec(ours)} and w = {vec(w)}; {said}, the package's are "
             f"{vec(mu, yours)}{named_mistake(used, 'perspective_weights')}")  # fmt: skip
+
+
+#: The words of exercise 3.1's mistake "epsilon added to the area" (a common rescale).
+_ADDED_TO_AREA = "added a small number"
+
+
+def _weights_why(used, yours, ours) -> str:
+    """What is wrong with the student's weights ``yours`` at this pixel: rounded to a few
+    decimals where they are, else the mistake exercise 3.1's check names, but a rescale (a
+    number added to E(v1, v2, v3)) only where this pixel's weights are one common multiple of
+    the package's (r148 D12-2: weights rounded to 5 decimals were told "you added a small
+    number to E", fitted on a case whose three weights are equal), else their difference."""
+    try:
+        got = np.asarray(yours, dtype=float).reshape(3)
+    except (TypeError, ValueError):
+        return named_mistake(used, "barycentric")
+    if not np.isfinite(got).all():
+        return named_mistake(used, "barycentric")
+    if rounded_decimals(got, ours) is not None:
+        return rounded_words(got, ours)
+    off = float(np.max(np.abs(got - ours)))
+    named = named_mistake(used, "barycentric")
+    if _ADDED_TO_AREA in named and not _one_scale(got, ours):
+        return (f"; your weights are off by up to {off:.1e}, more than float64's rounding "
+                "(about 1e-16), and not by one common factor (a number added to E(v1, v2, v3) "
+                "would scale all three alike): compare each with E of its edge over "
+                "E(v1, v2, v3)")  # fmt: skip
+    return named
+
+
+def _one_scale(got: np.ndarray, ours: np.ndarray) -> bool:
+    """Whether ``got`` is one common multiple of ``ours`` (within float64's rounding)."""
+    scale = float(np.sum(got)) / float(np.sum(ours))
+    return bool(np.allclose(got, scale * ours, rtol=1e-9, atol=1e-12))
 
 
 def _blending(used, pixel, rr) -> str:
@@ -364,7 +411,34 @@ def _resolve(used, reference, row, col) -> str:
     ours = reference.image[row, col]
     yours, error = _call(used, "resolve", colours, ids, np.ones(3))
     said = error or f"your resolve returned {vec(yours, ours)}"
+    why = _srgb_average(colours, ids, np.ones(3), yours, ours) if not error else None
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
             f"{said}, the package's resolve gives {vec(ours, yours)}"
-            f"{named_mistake(used, 'resolve')}")  # fmt: skip
+            f"{why or named_mistake(used, 'resolve')}")  # fmt: skip
+
+
+def _srgb_average(colours, ids, background, yours, ours) -> str | None:
+    """ "; words" when ``yours`` is the samples averaged as sRGB-encoded numbers (float, or
+    8-bit codes) and decoded again, instead of averaged in linear light, or None (r148 D12-3:
+    such a resolve was asked about its uncovered samples, which it handled right)."""
+    try:
+        got = np.asarray(yours, dtype=float).reshape(3)
+    except (TypeError, ValueError):
+        return None
+    linear = np.where(np.asarray(ids)[:, None] >= 0, np.asarray(colours, dtype=float),
+                      np.asarray(background, dtype=float))  # fmt: skip
+    encoded = linear_to_srgb(np.clip(linear, 0.0, 1.0))
+    as_float = srgb_to_linear(encoded.mean(axis=0))
+    as_codes = srgb_to_linear(np.round(encoded * 255).mean(axis=0) / 255)
+    if np.allclose(as_float, ours, atol=1e-3) or np.allclose(got, ours, rtol=TOL, atol=TOL):
+        return None  # here the two averages agree: nothing to tell apart
+    fits = np.allclose(got, as_float, rtol=1e-5, atol=1e-5) or np.allclose(got, as_codes, atol=2e-3)
+    if not fits:
+        return None
+    return ("; you averaged in sRGB instead of linear light: your answer is the mean of the "
+            "samples' sRGB-encoded values (as floats or as 8-bit codes), decoded: "
+            f"{vec(as_float)}, where the resolve is the mean of their linear values "
+            f"{vec(ours)}: encoded numbers are not light, so "
+            "average the linear colours (each uncovered sample as the background) and leave "
+            "the encoding to the display (lesson 12b §6)")  # fmt: skip

@@ -83,6 +83,16 @@ def _straight(src, dst):  # the premultiplied colour multiplied by its alpha aga
     return np.r_[src[:3] * src[3] + dst[:3] * (1 - src[3]), src[3] + dst[3] * (1 - src[3])]
 
 
+def _previous_alpha(colours, near_first, background):
+    """Nearest first, each fragment weighted by (1 − α) of the one just in front of it alone,
+    not by the transmittance of all in front (r148 D12-4: right wherever a pixel holds two)."""
+    out, prev = np.zeros(4), 0.0
+    for k in near_first:
+        out = out + (1 - prev) * np.asarray(colours[k], dtype=float)
+        prev = float(colours[k][3])
+    return out + (1 - out[3]) * np.asarray(background, dtype=float)
+
+
 def variants(depths, colours, background) -> dict[str, np.ndarray]:
     """What the typical wrong resolves give for one pixel's fragments."""
     n = len(depths)
@@ -95,6 +105,7 @@ def variants(depths, colours, background) -> dict[str, np.ndarray]:
         "no background": _fold(colours, far_first, clear, _over),
         "premultiplied twice": _fold(colours, far_first, background, _straight),
         "nearest only": (_over(colours[near_first[0]], background) if n else background),
+        "previous alpha": _previous_alpha(colours, near_first, background),
     }
 
 
@@ -121,6 +132,9 @@ MISTAKES = {
     "fragments are premultiplied already (your over with straight alpha?)",
     "nearest only": "you kept the nearest fragment alone: the fragments behind it show "
     "through it where its alpha is below 1",
+    "previous alpha": "you weighted each fragment by (1 − α) of the one fragment just in front "
+    "of it: it is seen through every fragment in front, so its weight is the product of all "
+    "their (1 − α), the transmittance left",
 }
 
 #: Stacks on which two mistakes that agree at one pixel part (depth, premultiplied RGBA).
@@ -129,6 +143,43 @@ STACKS = [
     ([0.2, 0.7], [[0.0, 0.4, 0.0, 0.4], [0.7, 0.0, 0.0, 0.7]]),
     ([0.9, 0.1], [[0.0, 0.0, 0.8, 0.8], [0.5, 0.5, 0.0, 0.5]]),
 ]
+
+
+#: a_buffer's own cases (r148 D12-4: no pixel of the glass holds more than two fragments, so a
+#: resolve right for two passed the scene): stacks of three and four fragments, drawing order
+#: not depth order, with different alphas. (depths, premultiplied RGBA)
+OWN_STACKS = [
+    STACKS[0],
+    ([0.3, 0.6, 0.1], [[0.6, 0.0, 0.0, 0.6], [0.0, 0.45, 0.0, 0.45], [0.0, 0.0, 0.5, 0.5]]),
+    (
+        [0.7, 0.2, 0.9, 0.4],
+        [[0.5, 0.0, 0.0, 0.5], [0.0, 0.2, 0.0, 0.25], [0.0, 0.0, 0.8, 0.8], [0.3, 0.3, 0.0, 0.6]],
+    ),
+]
+
+
+def own_cases(fn) -> str | None:
+    """What is wrong with ``fn`` on :data:`OWN_STACKS` (the first stack it resolves wrongly,
+    with the typical mistake that gives its answer where one does), or None when it is right
+    on all of them."""
+    for depths, colours in OWN_STACKS:
+        d, c = np.array(depths, dtype=float), np.array(colours, dtype=float)
+        ours = package_resolve(d, c, BACKGROUND)
+        got, error = _answer(fn, d, c)
+        if not error and np.allclose(got, ours, rtol=1e-6, atol=1e-6):
+            continue
+        said = error or f"your a_buffer returned {vec(got, ours)}"
+        head = (f"{len(d)} fragments in drawing order with depths {vec(d)} and premultiplied "
+                f"colours {', '.join(vec(x) for x in c)} over the background {vec(BACKGROUND)}: "
+                f"{said}, the A-buffer's resolve gives {vec(ours, got)}")  # fmt: skip
+        if error:
+            return head
+        words = _mistake(fn, d, c, got, ours)
+        if not tries.hints_spent(NAME):
+            for text in REPAIRS.values():
+                words = words.replace(text, "")
+        return head + words
+    return None
 
 
 def explain(fn, frame, row: int, col: int) -> str:

@@ -27,6 +27,7 @@ import numpy as np
 from ..core.validate import as_int
 from ..pipeline.rendering.render_scenes import render
 from . import capstone_glass as glass
+from . import capstone_samples as samples
 from . import output
 from .capstone_explain import CHECKED_AS, explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
@@ -43,8 +44,11 @@ W, H = 48, 36
 BUDGET = 10.0
 
 
-#: How close a compared value must be: float32's rounding (a function computing in float32,
-#: or on imread's float32 texture, is right), far below any mistake's difference; a texture
+#: How close a compared value must be, absolute and relative: 1e-6 is some 17 half-ulps of
+#: float32 at 1 (6e-8), room for the several roundings of a function computing in float32, or
+#: on imread's float32 texture, which is right; far below the typical mistakes' differences
+#: (1e-4 and more), and weights rounded to 5 decimals (up to 5e-6 off) still fail (r148
+#: D12-7: "float32's rounding" understated it); a texture
 #: filter rounds (u, v) too, and float32's 2^-24 of u·W becomes up to W·2^-24 of a texel's
 #: contrast (1e-4 for the scenes' 128-texel checkerboard; a mistake moves colours by 1e-2).
 TOL, TEXTURE_TOL = 1e-6, 1e-4
@@ -70,6 +74,9 @@ class CapstoneScene:
     #: What the scene cannot see of a function it takes, and where that is checked instead:
     #: (function, "cases" (its own exercise's) or another scene's name, why).
     blind: tuple[tuple[str, str, str], ...] = ()
+    #: The student's covers asked at every sample position (an MSAA scene: the pipeline's
+    #: coverage rule runs at centres only), compared as "sample_cover" (r148 D12-6).
+    sample_covers: bool = False
     #: A scene whose package frame this one's is set against where yours matches (the third
     #: panel marks where the two differ: r40 12-3, what the A-buffer repairs), or None.
     contrast: str | None = None
@@ -88,6 +95,24 @@ _NO_TOP = ("covers", "cases", "no edge through one of its centres is horizontal,
 # r6: a depth_passes that writes the depth of a fragment whose writes[k] is False passed
 _ALL_WRITE = ("depth_passes", "cases", "every fragment of this scene writes its depth, so it "
               "cannot tell whether one that does not leaves the stored depth alone")  # fmt: skip
+
+#: The blind spots whose reason explains only some of the function's mistakes: the kinds
+#: (of its own exercise's check) the reason is said for (r148 D12-8: a covers that raised, or
+#: accepted one winding, was told "no edge through one of its centres is horizontal").
+_REASON_KINDS = {
+    _NO_TOP[2]: lambda kind: kind.endswith(" rule") or kind.endswith("owns its centres"),
+    _INSIDE[2]: lambda kind: kind in ("absolute area", "unsigned areas", "clamped"),
+}
+
+
+def reason_fits(why: str, kind: str) -> bool:
+    """Whether a blind spot's reason ``why`` explains a failure of kind ``kind`` (a typical
+    mistake's, or several joined by " and "; an exception or a time-out has no such reason)."""
+    if kind in ("raised", "timeout", "exit", "memory", "not implemented", "skipped"):
+        return False
+    fits = _REASON_KINDS.get(why)
+    return fits is None or any(fits(k) for k in kind.split(" and "))
+
 
 SCENES = {s.name: s for s in (
     CapstoneScene("grid", "a grid of quads: every centre covered once, both windings",
@@ -115,8 +140,9 @@ SCENES = {s.name: s for s in (
     CapstoneScene("floor_trilinear", "the floor's checkerboard filtered trilinearly",
                   ("trilinear",), "textured_floor", {"texture_filter": "trilinear"},
                   tol=TEXTURE_TOL, tiled=True),
-    CapstoneScene("cube_msaa", "a cube with 4 samples per pixel, resolved",
-                  ("resolve",), "cube", {"samples": 4}),
+    CapstoneScene("cube_msaa", "a cube with 4 samples per pixel, your covers at each sample "
+                  "position, resolved", ("covers", "resolve"), "cube", {"samples": 4},
+                  ("image", "sample_cover"), sample_covers=True),
     CapstoneScene("sphere", "a textured sphere: all of your rasteriser at once",
                   ("covers", "barycentric", "perspective_weights", "depth_passes", "bilinear"),
                   "uv_sphere", {"texture_filter": "bilinear"}, ("triangle_id", "image"),
@@ -159,6 +185,11 @@ def render_with(spec: CapstoneScene, overrides=None):
 def _frame(spec: CapstoneScene, functions=None, tracker=None):
     """The frame compared: the scene rendered with ``functions`` (None: the package's rules),
     and, for an A-buffer scene, every pixel resolved by ``a_buffer`` (or the package)."""
+    if spec.sample_covers:  # covers runs at the samples, after the render (not a stage rule)
+        rest = None if functions is None else {k: v for k, v in functions.items() if k != "covers"}
+        frame = render_with(spec, None if rest is None else rules(rest, tracker))
+        fn = None if functions is None else wrapped("covers", functions["covers"], tracker)
+        return samples.sample_cover(frame, fn)
     overrides = None if functions is None else rules(functions, tracker)
     frame = render_with(spec, overrides)
     if not spec.sort:
@@ -283,7 +314,8 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
                      else f"the {where} scene")  # fmt: skip
             said = failed.explanation if where == "cases" else \
                 f"{failed.case}, {failed.kind}: {failed.explanation}"  # fmt: skip
-            text = f"your {name} fails {place}, which can show what this scene cannot ({why}): {said}"  # fmt: skip
+            text = (f"your {name} fails {place}, which can show what this scene cannot ({why}): {said}"
+                    if reason_fits(why, failed.kind) else f"your {name} fails {place}: {said}")  # fmt: skip
             if failed.kind == "timeout":  # r94 D12-5: no tie, no "call per pixel" to a time-out
                 text = f"your {name} fails {place}: " + said.replace(
                     "(a Python call per pixel?)", f"(one call of {name} should take microseconds)")  # fmt: skip
@@ -338,7 +370,16 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
     out, aside = [], None
     for name, fn in used.items():
         checked = CHECKED_AS.get(name, name)
-        if checked not in names():  # a_buffer: no exercise of its own
+        if name == "a_buffer":  # no exercise of its own: its own stacks (r148 D12-4)
+            said = run_checker(lambda fn=fn: glass.own_cases(fn),
+                               "your a_buffer did not answer its own stacks in time")  # fmt: skip
+            if said is not None:
+                place = "its own stacks of three and four fragments"
+                out.append(Failure(f"a_buffer on {place}", f"your a_buffer fails {place} (the "
+                                   f"scene's pixels hold at most two): {said}", None, None,
+                                   kind="sorting"))  # fmt: skip
+            continue
+        if checked not in names():
             continue
         report = own_report(checked, fn)
         # float32 within its rounding passes the capstone (:data:`TOL`), as in _fallback
@@ -408,6 +449,24 @@ def _one_per_stage(failures: list[Failure]) -> list[Failure]:
     return first + rest
 
 
+def _said_once(failures: list[Failure]) -> list[str]:
+    """The failures' lines, each pixel of a stage already explained named by its coordinates
+    only (r148 D12-10: three pixels of one mistake printed the same paragraph three times)."""
+    lines, more = [], {}
+    for f in failures:
+        if f.case.startswith("pixel ") and f.kind in more:
+            more[f.kind].append(f.case.removeprefix("pixel "))
+            continue
+        if f.case.startswith("pixel "):
+            more[f.kind] = []
+        lines.append(f"- {f.case}, {f.kind}: {f.explanation}")
+    for kind, pixels in more.items():
+        if pixels:
+            lines.append(f"- {kind} differs at {', '.join(pixels)} too (report.explain_pixel"
+                         "(row, col) tells each)")  # fmt: skip
+    return lines
+
+
 @dataclass(frozen=True)
 class CapstoneReport(Report):
     """A :class:`.Report` of one capstone scene: its pixels are its cases.
@@ -450,7 +509,7 @@ class CapstoneReport(Report):
             lines = [f"{head}: fails, though all {self.n_cases} pixels match the package's"]
         else:
             lines = [f"{head}: {self.n_wrong} of {self.n_cases} pixels differ from the package's"]
-        lines += [f"- {f.case}, {f.kind}: {f.explanation}" for f in self.shown()]
+        lines += _said_once(self.shown())
         return "\n".join(lines)
 
     def differing_pixels(self) -> np.ndarray:

@@ -17,6 +17,7 @@ from functools import cache
 
 import numpy as np
 
+from ..core.edges import is_top_left, passes, top_left_edges
 from ..core.fill import rasterize
 from . import coverage as cov
 from .answers import as_bool, as_coverage, short
@@ -546,11 +547,21 @@ def draw(ax, case, got):
     return draw_coverage(ax, c, c.triangles[k], expected[k], g, edge, pixel)
 
 
+#: The package's top-left rule, a part of every coverage answer (r148 D12-5: the package's
+#: internals counted as the student's work); not ``edge_function``, a tool of the same
+#: module, so listed by name and not by module.
+TIE_RULE_ANSWERS = tuple(
+    PackageAnswer(f, what="the top-left rule, a part of this very answer")
+    for f in (is_top_left, top_left_edges, passes)
+)
+
+
 def _exercise(name: str, cases, call, scene=None) -> Exercise:
     return Exercise(
         name, cases, convert=None, same=same_coverage, explain=explain,
         rule=lambda *a: "", mistakes=mistakes(name), draw=draw, scene=scene, call=call,
-        answers=(PackageAnswer(rasterize),), compose=compose, constant=constant(name),
+        answers=(PackageAnswer(rasterize), *TIE_RULE_ANSWERS), compose=compose,
+        constant=constant(name),
         hints=HINTS,
         reference=("teachraster.exercises.coverage",),  # expected_coverage (r14 09-1)
     )  # fmt: skip

@@ -147,9 +147,41 @@ def _epsilon_fits(args, expected, got) -> bool | None:
     if g.shape != (3,) or not np.isfinite(g).all() or total == 0:
         return False
     delta = area / total - area
-    if delta == 0 or abs(delta) > 1e-3:
+    if delta == 0 or abs(delta) > 1e-3 or _rounded(g, expected):
         return False
     return bool(np.allclose(g, _areas(xy, p) / (area + delta), rtol=1e-12, atol=1e-300))
+
+
+def rounded_decimals(got, expected) -> int | None:
+    """The k (1 to 8) such that ``got`` is ``expected`` rounded to k decimals (each exactly so,
+    and within half a unit of the k-th of it), or None (r148 D12-2: on a case whose weights
+    are equal, λ rounded to 5 decimals is also one common rescale, and was told "you added a
+    small number to E")."""
+    g = np.asarray(got, dtype=float)
+    off = np.max(np.abs(g - np.asarray(expected, dtype=float)))
+    return next((k for k in range(1, 9)
+                 if np.array_equal(g, np.round(g, k)) and off <= 0.5 * 10.0**-k * (1 + 1e-6)),
+                None)  # fmt: skip
+
+
+def _rounded(got, expected) -> bool:
+    return rounded_decimals(got, expected) is not None
+
+
+def _rounded_words(args, expected, got) -> str:
+    return rounded_words(got, expected).replace(";", ":", 1)
+
+
+def rounded_words(got, expected) -> str:
+    """ "; words" on weights ``got`` rounded to a few decimals (:func:`rounded_decimals`)."""
+    g = np.asarray(got, dtype=float)
+    k = rounded_decimals(g, expected)
+    off = float(np.max(np.abs(g - np.asarray(expected, dtype=float))))
+    return (
+        f"; your weights are rounded to {k} decimals: off by up to {off:.1e}, far more "
+        "than float64's rounding (about 1e-16); return them unrounded (round only what "
+        "you print)"
+    )
 
 
 def _epsilon_words(args, expected, got) -> str:
@@ -240,6 +272,8 @@ def _proper_mistakes() -> list[Mistake]:
         Mistake("p's x and y swapped", ": you swapped p's x and y: p = (x, y), its column "
                 "first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
         Mistake("epsilon added to the area", _epsilon_words, fits=_epsilon_fits),
+        Mistake("rounded", _rounded_words,
+                fits=lambda args, expected, got: _rounded(np.asarray(got, float), expected)),
     ]  # fmt: skip
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):
@@ -392,7 +426,10 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
 BARYCENTRIC = Exercise(
     "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
     same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
-    float32=bary_float32, float32_words=bary_float32_words, answers=(PackageAnswer(barycentric),),
+    float32=bary_float32, float32_words=bary_float32_words, answers=(PackageAnswer(
+        # every function of its module computes barycentrics (r148 D12-5: the package's
+        # internals counted as the student's work)
+        barycentric, modules=("teachraster.core.barycentrics",)),),
     draw=_draw_bary, call=call_barycentric, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student

@@ -146,7 +146,10 @@ def _scan_helpers(spec: Exercise) -> list:
         if f is None:
             continue
         name = _name(answer).removeprefix("teachraster's ")
-        for module, every in ((f.__module__, False), *((m, True) for m in answer.modules)):
+        # its own module listed in ``modules`` too: every function of it (r148 D12-5: the own
+        # module was read first, privates only, and then skipped as read)
+        own = (f.__module__, f.__module__ in answer.modules)
+        for module, every in (own, *((m, True) for m in answer.modules)):
             if module in done:
                 continue
             done.add(module)

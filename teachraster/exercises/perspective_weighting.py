@@ -18,7 +18,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..core.interpolation import perspective_weights, weights_per_row
+from ..core.interpolation import normalised_weights, perspective_weights, weights_per_row
 from ..study.hardcases import CASES
 from .answers import as_numbers
 from .cases import DRAWN, SEED, drawn_rng
@@ -189,7 +189,9 @@ def draw_weights(ax, case, got):
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
     variant_mistakes(_variants, MISTAKES, SYMPTOMS),
-    answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row)),
+    answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
+             # r148 D12-5: the last step of the answer, q / Σq, is the package's too
+             PackageAnswer(normalised_weights)),
     draw=draw_weights, hints=(
         # r39 03-3: the first wrong try printed the answer the task asks to work out
         ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "

@@ -335,8 +335,20 @@ def _bilinear_rule(args, expected, got) -> str:
     return BILINEAR_RULE
 
 
+#: The modules whose every function computes a part of a texture filter's answer (r148
+#: D12-5: ``texel_fetch.bilinear_corner``, which finds the four texels and their weights,
+#: and ``_bilinear_blend`` passed 12.7 as the student's work): the texel fetch for both, and
+#: the choice and blend of levels for trilinear.
+FILTER_MODULES = {
+    "bilinear": ("teachraster.pipeline.texturing.texel_fetch",),
+    "trilinear": ("teachraster.pipeline.texturing.texel_fetch",
+                  "teachraster.pipeline.texturing.texture_filters"),
+}  # fmt: skip
+
+
 def _answers(filter_name):
-    return (PackageAnswer(sample, when=lambda a: a.get("filter") == filter_name),)
+    return (PackageAnswer(sample, when=lambda a: a.get("filter") == filter_name,
+                          modules=FILTER_MODULES[filter_name]),)  # fmt: skip
 
 
 def bilinear_exercise(scene) -> Exercise:

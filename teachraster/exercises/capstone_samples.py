@@ -1,0 +1,100 @@
+"""The MSAA scene's coverage: the student's ``covers`` asked at every sample position.
+
+The pipeline's coverage rule runs at pixel centres only (a one-sample stage:
+:mod:`teachraster.pipeline.planning.overrides`), so a ``covers`` that ignores the point it is
+given, and tests the pixel's centre instead, drew every other scene right (r148 D12-6). Here
+the student's ``covers`` is asked at each of the frame's sample positions (D3D's standard 4×
+pattern, the offsets the render used) for every triangle whose box holds the pixel, beside
+the package's top-left rule at the same points (:func:`.coverage.covered`): the scene compares
+which triangles cover each sample, as well as the resolved image.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.snapping import snap
+from .coverage import covered
+from .coverage import explain_pixel as explain_coverage
+
+
+class Sampled:
+    """A traced MSAA frame with ``sample_cover`` (H, W, S): Σ 2^t over the triangles t that
+    cover each sample; everything else is the frame's."""
+
+    def __init__(self, frame, sample_cover: np.ndarray):
+        self.frame, self.sample_cover = frame, sample_cover
+
+    def __getattr__(self, name):
+        return getattr(self.frame, name)
+
+
+def triangles(frame) -> list[tuple[int, np.ndarray]]:
+    """(triangle, snapped window x, y (3, 2)) of each piece the frame's trace holds."""
+    window = frame.trace.window
+    parent = frame.trace.parent
+    return [(int(parent[k]), snap(window[k, :, :2])) for k in range(len(window))
+            if np.isfinite(window[k, :, :2]).all()]  # fmt: skip
+
+
+def _points(xy: np.ndarray, offsets: np.ndarray, h: int, w: int):
+    """(pixels (n, 2) rows and columns, points (n, S, 2)) of the frame's pixels in the box of
+    ``xy`` and their sample positions."""
+    lo = np.clip(np.floor(xy.min(axis=0)).astype(int), 0, [w - 1, h - 1])
+    hi = np.clip(np.ceil(xy.max(axis=0)).astype(int), 0, [w - 1, h - 1])
+    rows, cols = np.mgrid[lo[1] : hi[1] + 1, lo[0] : hi[0] + 1]
+    pixels = np.stack([rows.ravel(), cols.ravel()], axis=1)
+    points = pixels[:, None, ::-1] + offsets[None, :, :]
+    return pixels, points
+
+
+def sample_cover(frame, covers=None) -> Sampled:
+    """``frame`` with which triangles cover each sample: by ``covers(xy, p)`` (the student's,
+    read as a bool), or by the package's rule where it is None."""
+    ids = frame.sample_triangle_id
+    h, w, s = ids.shape
+    offsets = np.asarray(frame.trace.debug.offsets, dtype=float)
+    out = np.zeros((h, w, s), dtype=np.int64)
+    for t, xy in triangles(frame):
+        pixels, points = _points(xy, offsets, h, w)
+        if covers is None:
+            hit = covered(xy, points.reshape(-1, 2)).reshape(len(pixels), s)
+        else:
+            hit = np.array([[bool(covers(xy.copy(), p.copy())) for p in row] for row in points])
+        rows, cols = pixels[:, 0], pixels[:, 1]
+        out[rows, cols] |= hit.astype(np.int64) << t
+    return Sampled(frame, out)
+
+
+def explain(call, named, mine, reference, row: int, col: int) -> str | None:
+    """Why the samples of pixel (row, col) are covered otherwise than the package's rule
+    covers them (the first triangle and sample that differ), or None where they agree.
+    ``call(xy, p)``: the student's covers, (answer, "") or (None, why not); ``named(inside)``:
+    the covers exercise's name for its mistake."""
+    ours, yours = reference.sample_cover[row, col], mine.sample_cover[row, col]
+    offsets = np.asarray(reference.trace.debug.offsets, dtype=float)
+    for t, xy in triangles(reference):
+        for k, offset in enumerate(offsets):
+            mine_k, ours_k = int(yours[k]) >> t & 1, int(ours[k]) >> t & 1
+            if mine_k == ours_k:
+                continue
+            p = np.array([col, row], dtype=float) + offset
+            got, error = call(xy, p)
+            said = error or f"your covers({_xy(xy)}, ({p[0]:g}, {p[1]:g})) returned {got!r}"
+            why, _, _ = explain_coverage(xy, p, bool(ours_k))
+            why = why.replace("centre (", "sample (", 1)
+            centre = bool(covered(xy, np.array([[col + 0.5, row + 0.5]]))[0])
+            if not error and bool(got) == centre != bool(ours_k):
+                likely = (f"; your covers answers as at the pixel's centre ({col + 0.5:g}, "
+                          f"{row + 0.5:g}), not at the point p it is given: with 4 samples "
+                          "it is asked at each sample position, so test p itself")  # fmt: skip
+            else:
+                likely = named("strictly inside" in why)
+            return (f"triangle {t}, sample {k} at ({p[0]:g}, {p[1]:g}) (offset "
+                    f"({offset[0]:g}, {offset[1]:g}) from the pixel's corner): {said}; the "
+                    f"package: {why}{likely}")  # fmt: skip
+    return None
+
+
+def _xy(xy) -> str:
+    return "[" + ", ".join(f"({x:g}, {y:g})" for x, y in xy) + "]"
