@@ -9,6 +9,9 @@ triangle's nearest vertex". M4: a bias added, not taken off, was told "no top-le
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import numpy as np
 import pytest
 from test_exercise_8_1_offsets import student
@@ -145,3 +148,50 @@ def test_e1_the_picture_counts_coverage_apart_from_the_walk(plt):
         title = axes[2].get_title()
         assert covered in title and "walked differently (orange)" in title, title
         assert "pixels differ" not in title, title
+
+
+NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.ipynb"
+
+
+def _cell(grade_id: str) -> str:
+    cells = json.loads(NOTEBOOK.read_text())["cells"]
+    return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
+
+
+def test_c1_the_block_walk_is_not_credited_to_pineda():
+    text = _cell("intro")
+    assert "(Pineda, *A Parallel Algorithm for Polygon Rasterization*; Mesa's" not in text
+    assert "came later (Greene" in text and "Abrash" in text and "McCormack" in text
+
+
+def test_f1_llvmpipes_reject_test_is_said_right():
+    text = _cell("classify_block_task")
+    assert "so that the same `< 0` decides every edge, top-left or not." not in text
+    assert "Its trivial *reject* does not use that −1" in text
+    assert "`lp_setup_bin_triangle` tests `cx + eo` without it" in text
+    assert "is the exact one" in text
+
+
+def test_the_hiz_hint_asks_and_does_not_give_the_algorithm():
+    text = _cell("hiz_rejects_task")
+    hint = text[text.index("<details>") :]
+    assert "the larger of that minimum and the" not in hint
+    assert "is smallest at one of its four extreme centres" not in hint
+    assert hint.count("?") >= 3
+
+
+def test_e3_the_hiz_figure_shows_centres_and_its_labels_do_not_meet(plt):
+    from teachraster.exercises import hiz_tile
+
+    tries.spend_hints(["hiz_rejects"])
+    try:
+        case = next(c for c in hiz_tile.HIZ_REJECTS.cases() if c[1][3] == 16)
+        fig, ax = plt.subplots(figsize=(9.0, 5.6), layout="constrained")
+        hiz_tile.draw_hiz(ax, case, not case[2])
+        fig.canvas.draw()
+        assert any(line.get_label() == "pixel centres" for line in ax.lines)
+        boxes = [t.get_window_extent() for t in ax.texts if t.get_text()[:1] in "0123456789"]
+        assert len(boxes) == 4
+        assert not [(a, b) for i, a in enumerate(boxes) for b in boxes[i + 1 :] if a.overlaps(b)]
+    finally:
+        tries.forget_hints("hiz_rejects")

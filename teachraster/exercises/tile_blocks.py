@@ -930,8 +930,22 @@ def _by_verdicts(edges, expected, got) -> str:
 _OUTSIDE = ". Corners outside the triangle do not reject a block: the test is per edge"
 
 
-#: Fill colours of the blocks by the package's verdict (the walk's colours, lesson 10).
-VERDICT_COLOURS = {"rejected": "#bdbdbd", "accepted": "#1b9e77", "partial": "#ff9f1c"}
+#: Fill colours of the blocks by the package's verdict: the picture's key below it (r149 E2:
+#: grey, teal and orange here, white, greens and blues there, and no key of its own).
+VERDICT_COLOURS = {"rejected": "#ffffff", "accepted": "#1b7837", "partial": "#2b7bba"}
+
+
+def _block_key(ax, want, marked: bool) -> None:
+    """The case plot's own key: the package's verdicts present, the block that differs."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    handles = [Patch(facecolor=VERDICT_COLOURS[k], alpha=0.35, edgecolor="#636363", label=f"package: {k}")  # fmt: skip
+               for k in KINDS if (want == k).any()]  # fmt: skip
+    if marked:
+        handles.append(Line2D([], [], color="#d7301f", lw=2.5, label="first block that differs"))
+    ax.legend(handles=handles, loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize="small",
+              frameon=False)  # fmt: skip
 
 
 def draw_block_case(ax, case, got):
@@ -967,6 +981,12 @@ def draw_block_case(ax, case, got):
     ax.set_xlabel(f"{counts}{yours}")
     lo = np.minimum(ring.min(axis=0), [gx.min(), gy.min()]) - 1
     hi = np.maximum(ring.max(axis=0), [gx.max() + size, gy.max() + size]) + 1
+    if got is not None and wrong and size <= 64:
+        # r149 E2: zoomed on the block that differs (a tie ½ px from its side could not be
+        # seen in the whole grid), with a margin of half a block
+        pad = max(2.0, size / 2)
+        lo, hi = np.array([bx, by]) - pad, np.array([bx, by]) + size + pad
+    _block_key(ax, want, got is not None and wrong)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
     plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
