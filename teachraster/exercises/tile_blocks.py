@@ -377,7 +377,13 @@ def _bias_range(xy, x0, y0, size, got):
 def _bias_words(args, expected, got) -> str:
     """r149 M2, M4: the student's own bias, measured from the answer, and what it loses."""
     span = _bias_range(*args, got)
-    lo, hi = span if span is not None else (np.nan, np.nan)
+    if span is None:  # with another slip: no one bias gives this grid's verdicts
+        return (
+            "your sign tests take a bias of the wrong size or sign off the edges that are "
+            "neither top nor left: the bias must be the smallest positive value E can take at "
+            "a pixel centre, taken off E there, with vertices on the 1/256 grid (which is it?)"
+        )
+    lo, hi = span
     if hi <= 0:
         acts = (
             "on such an edge (E = 0), and so one just outside it (E < 0) too"
