@@ -981,6 +981,16 @@ def draw_block_case(ax, case, got):
 
         if hints_spent("classify_block"):
             ys, xs = _corners(bx, by, size)
+            # r149 E2: each centre's smallest E over the edges beside it (a tie reads E = 0)
+            setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+            low = (edge_values_at(setup, ys, xs) / setup.unit**2).min(axis=1)
+            for x, y, ev in zip(xs, ys, low, strict=True):  # outward, beside its centre
+                right, down = x == xs.max() and size > 1, y == ys.max() and size > 1
+                artists.append(ax.annotate(f"E = {num(float(ev))}", (x + 0.5, y + 0.5),
+                                           xytext=(6 if right else -6, -8 if down else 8),
+                                           textcoords="offset points", fontsize="x-small",
+                                           ha="left" if right else "right",
+                                           va="top" if down else "bottom"))  # fmt: skip
             artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
     yours = "" if got is None or not wrong else f"; first differing block {e}, yours {g}"
     counts = ", ".join(f"{int((want == k).sum())} {k}" for k in KINDS if (want == k).any())
@@ -990,7 +1000,7 @@ def draw_block_case(ax, case, got):
     if got is not None and wrong and size <= 64:
         # r149 E2: zoomed on the block that differs (a tie ½ px from its side could not be
         # seen in the whole grid), with a margin of half a block
-        pad = max(2.0, size / 2)
+        pad = max(3.0, size / 2)
         lo, hi = np.array([bx, by]) - pad, np.array([bx, by]) + size + pad
     _block_key(ax, want, got is not None and wrong)
     ax.set_xlim(lo[0], hi[0])
