@@ -195,7 +195,9 @@ def test_the_block_figure_draws_the_decisive_centres_only_once_hints_are_spent()
         assert len(first) == 4, first
         tries.spend_hints(["classify_block"])
         later = draw_block_case(ax, case, got)
-        assert len(later) == 5 and len(later[-1].get_xdata()) == 4  # and its four centres
+        # and its four centres, each with its smallest E (r149 E2)
+        assert len(later) == 9 and len(later[-1].get_xdata()) == 4
+        assert all(t.get_text().startswith("E = ") for t in later[4:8])
         plt.close(fig)
     finally:
         tries.spend_hints(["classify_block"])

@@ -116,15 +116,15 @@ MISTAKES = {
     "ignoring winding": (student(orient=False), "one winding only", "handle both windings"),
     # ex30a: the top-left rule folded into a bias (the task's sign tests) of the wrong size
     "bias of 1/256 px²": (
-        student(bias=2.0**-8), "tie-rule bias of 1/256 px²", "your sign tests take a bias of 1/256"),
+        student(bias=2.0**-8), "tie-rule bias too large", "a bias of the wrong size"),
     "bias of 1 px²": (
-        student(bias=1.0), "tie-rule bias of 1 px²", "your sign tests take a bias of 1 px²"),
-    # a bias of the right size with the wrong sign passes E = 0 on every edge (and the one
-    # step below it, which no case puts at a deciding centre): the tie words say what it does
+        student(bias=1.0), "tie-rule bias too large", "a bias of the wrong size"),
+    # r149 M4: a bias of the right size with the wrong sign covers a centre 1/65536 px² outside
+    # a right edge (the case "far out, ... outside a right edge"), and is named so
     "bias added, not subtracted": (
-        student(bias=-(2.0**-16)), "no top-left rule (E ≥ 0)", "lies exactly on edge"),
+        student(bias=-(2.0**-16)), "tie-rule bias added", "your bias has the wrong sign"),
     "bias of 1/2 px²": (
-        student(bias=0.5), "tie-rule bias of 1/2 px²", "your sign tests take a bias of 1/2 px²"),
+        student(bias=0.5), "tie-rule bias too large", "a bias of the wrong size"),
     "a constant array": (
         lambda xy, x0, y0, size: np.full(np.shape(x0), "partial"), "always partial",
         "says 'partial' for every block of every grid"),

@@ -271,7 +271,16 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     assert "agree" not in words and len(words) > 40
     fig, axes = plt.subplots(1, 3)
     artists = wrong.compare(axes, pixel="first")
-    assert artists and axes[2].get_title().startswith(f"{len(differing)} pixel")
+    title = axes[2].get_title()
+    covered = wrong.scene.coverage_differs()
+    if covered is None:
+        assert artists and title.startswith(f"{len(differing)} pixel")
+    else:  # r149 E1: the tile walk counts coverage apart from the walk, and marks it first
+        counts = re.findall(r"(\d+) (?:pixels? covered wrongly|walked differently)", title)
+        assert artists and sum(map(int, counts)) == len(differing), title
+        assert f"{int(covered.sum())} pixel" in title or not covered.any(), title
+        if covered.any():
+            words = wrong.explain_pixel(*np.argwhere(covered)[0])
     assert words in fig.get_supxlabel().replace("\n", " ")
     fig.canvas.draw()
     right = ex.check(name, CORRECT[name])

@@ -229,6 +229,11 @@ def _steep_cases() -> list[tuple[str, tuple]]:
         xyz[:, 1] = 32 - xyz[:, 1] if fy else xyz[:, 1]
         out.append((f"a steep plane {words}: behind at the tile's extreme pixel centres, in "
                     "front at its outer corners", (xyz, *beside, TILE, np.full((TILE, TILE), 0.5188))))  # fmt: skip
+        if not (fx or fy or swap):  # r149 M3: the stored depth between the outer corners'
+            # bound (0.5, rejects) and the nearest vertex's (0.1, keeps) tells them apart
+            out.append(("a steep plane growing right and down, the stored depth between the "
+                        "plane at the tile's outer corners and the nearest vertex",
+                        (xyz.copy(), *beside, TILE, np.full((TILE, TILE), 0.3))))  # fmt: skip
         # r126 N8-1: the nearest vertex in the middle of its box's side, the tile in the box's
         # corner beside it (inside the box: the box alone does not lift the plane there)
         apex = _APEX[:, [1, 0, 2]] if swap else _APEX.copy()
@@ -460,6 +465,10 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "vertex": bool(zmin >= far),
             "no clamp": bool(bare >= far),
             "outer corners": bool(_outer_bound(xyz, box) >= far),
+            # r149 M3: lesson 10's bound at the tile's outer corners, or the box's corners
+            # kept within them, was told "you compared the triangle's nearest vertex"
+            "tile outer corners": bool(_tile_outer_bound(xyz, row0, col0, size) >= far),
+            "box in outer corners": bool(_box_outer_bound(xyz, row0, col0, size) >= far),
             "tile min": bool(near >= buffer.min()),
             "strict": bool(near > far),
             "empty ignored": bool(len(finite) and near >= finite.max()),
@@ -548,6 +557,25 @@ def _outer_bound(xyz, box) -> float:
     out_r = rows + np.where(rows == rows.min(), -0.5, 0.5)
     out_c = cols + np.where(cols == cols.min(), -0.5, 0.5)
     return max(float(_bare_plane(xyz, out_r, out_c).min()), float(xyz[:, 2].min()))
+
+
+def _tile_outer_bound(xyz, row0, col0, size) -> float:
+    """Lesson 10's bound taken at the tile's outer corners, not its extreme pixel centres."""
+    edge = np.array([-0.5, size - 0.5])  # _bare_plane adds the ½ of a centre
+    plane = _bare_plane(xyz, row0 + edge[:, None], col0 + edge[None, :])
+    return max(float(plane.min()), float(xyz[:, 2].min()))
+
+
+def _box_outer_bound(xyz, row0, col0, size) -> float:
+    """The plane at the box's corners kept within the tile's outer corners (an empty box
+    rejected, as the task's)."""
+    if _box_corners(xyz, row0, col0, size) is None:
+        return np.inf
+    lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    xs = np.clip([lo[0], hi[0]], col0, col0 + size)
+    ys = np.clip([lo[1], hi[1]], row0, row0 + size)
+    plane = _bare_plane(xyz, ys[None, :] - 0.5, xs[:, None] - 0.5)
+    return max(float(plane.min()), float(xyz[:, 2].min()))
 
 
 def _pixel_box_bound(xyz, row0, col0, size) -> float:
@@ -671,6 +699,13 @@ MISTAKES = {
     "nearest vertex",
     "outer corners": "you evaluated the plane at the outer corners of the extreme pixels; "
     "fragments sit at pixel centres, the extreme ones ½ px inside",
+    "tile outer corners": "you evaluated the plane at the tile's outer corners: fragments sit "
+    "at pixel centres, and the tile's extreme centres lie ½ px inside them, where a steep "
+    "plane is already farther; take the plane at the extreme centres of the tile's part inside "
+    "the triangle's bounding box",
+    "box in outer corners": "you took the plane at the bounding box's corners kept within the "
+    "tile's outer corners: fragments sit at pixel centres, ½ px or more inside those corners; "
+    "take the plane's minimum over the tile's centres inside the box",
     "tile min": "you compared with the nearest depth stored in the tile: a fragment is hidden "
     "only if it is behind the depth at its own pixel, and only the tile's farthest depth "
     "bounds all of them",
@@ -802,8 +837,16 @@ def draw_hiz(ax, case, got):
     # two different answers have failed (as classify_block's figure does)
     if hints_spent("hiz_rejects"):
         artists += _extreme_centres(ax, xyz, row0, col0, size)
+    # r149 E3: the tile's pixel centres (which lie in the box is the task), ticks on whole pixels
+    cy, cx = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
+    artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3,
+                       label="pixel centres")  # fmt: skip
     ax.set_xlim(col0 - 2, col0 + size + 2)
     ax.set_ylim(row0 + size + 2, row0 - 2)
+    from matplotlib.ticker import MultipleLocator
+
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(MultipleLocator(4 if size > 8 else 2))
     ax.set_aspect("equal")
     artists += _whole_triangle(ax, xyz, row0, col0, size)
     artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
@@ -863,8 +906,9 @@ def _extreme_centres(ax, xyz, row0, col0, size) -> list:
     for j, (r, c, z) in enumerate(zip(rows, cols, depth)):
         if small and j != k:
             continue
-        inward = (1 if c == cols.min() else -1, -1 if r == rows.min() else 1)  # y points down
-        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(16 * inward[0], 11 * inward[1]),
+        # r149 E3: outward, beside its own circle (inward, a 7-px box's labels met in its middle)
+        out = (-1 if c == cols.min() else 1, -1 if r == rows.min() else 1)  # y points down
+        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(18 * out[0], 11 * out[1]),
                                    textcoords="offset points", ha="center", va="center",
                                    fontsize="small", bbox={"boxstyle": "round,pad=0.15",
                                    "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
@@ -889,8 +933,10 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     for j, (x, y, z) in enumerate(xyz):
         if tiny and j != int(np.argmin(xyz[:, 2])):
             continue
-        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="x-small",
-                       color="#7f0000")  # fmt: skip
+        # r149 E3: "small" (was x-small, about 9 pt) on a white ground, clear of the tile's outline
+        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="small",
+                       color="#7f0000", bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
+                       "edgecolor": "none", "alpha": 0.85}, zorder=4)  # fmt: skip
     inset.set_xlim(lo[0], hi[0])
     inset.set_ylim(hi[1], lo[1])
     inset.set_aspect("equal")

@@ -495,5 +495,11 @@ def tile_scene(fn) -> Scene:
 
     # r94 D8-11: "the package's: a tile walk: blocks of 16, then 4, then pixels" took three
     # lines over its panel
-    scene = Scene("tile walk: blocks 16, 4, 1", reference, run, explain, WALK)
+    scene = Scene("tile walk: blocks 16, 4, 1", reference, run, explain, WALK,
+                  coverage_of=walk_coverage)  # fmt: skip
     return scene
+
+
+def walk_coverage(codes: np.ndarray) -> np.ndarray:
+    """The pixels a walk's codes fill: accepted in a block, or tested and covered (r149 E1)."""
+    return np.isin(codes, (1, 2, 3))

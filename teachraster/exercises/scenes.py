@@ -68,6 +68,11 @@ class Scene:
     #: The check of this picture failed (set by :meth:`.report.Report.compare`): a picture
     #: that shows no difference then says the failing cases show it (r94 D8-10).
     check_failed: bool = False
+    #: ``coverage_of(picture) -> (H, W) bool``: which pixels a picture of codes fills, where a
+    #: pixel's code can differ with its coverage the same (8.1's walk: a block accepted at
+    #: another level, r149 E1: "320 pixels differ" for one pixel covered wrongly). Its
+    #: differences are then counted apart from the rest. None: every difference counts alike.
+    coverage_of: Callable[[np.ndarray], np.ndarray] | None = field(default=None, repr=False)
     _outcome: object = field(default=None, repr=False)
 
     def student_image(self) -> np.ndarray | None:
@@ -99,6 +104,14 @@ class Scene:
         if self.reference_parts is not None and self.parts is not None:
             differs |= ~np.isclose(self.parts, self.reference_parts, rtol=0, atol=0).all(axis=0)
         return differs
+
+    def coverage_differs(self) -> np.ndarray | None:
+        """(H, W) bool: pixels the student's picture fills and the package's does not, or the
+        other way round (None without :attr:`coverage_of` or a picture of the student's)."""
+        got = self.student_image()
+        if self.coverage_of is None or got is None:
+            return None
+        return np.asarray(self.coverage_of(got)) != np.asarray(self.coverage_of(self.reference))
 
     def difference(self) -> np.ndarray:
         """(H, W) largest absolute difference per pixel (continuous pictures), NaN = none."""
@@ -225,16 +238,33 @@ def _difference_panel(ax, scene: Scene):
     else:
         mask = np.zeros((h, w, 4))
         mask[differs] = (0.84, 0.19, 0.12, 1.0)
+        wrong = scene.coverage_differs()
+        if wrong is not None:  # only the walk differs there: a lighter colour
+            mask[differs & ~wrong] = (0.99, 0.68, 0.42, 1.0)
         artists.append(ax.imshow(mask, extent=(0, w, h, 0), interpolation="nearest"))
         biggest = ""
     n = int(differs.sum())
     title = (
         f"{n} pixel{'s' * (n != 1)} differ{'s' * (n == 1)}{biggest}" if n else "no pixel differs"
     )
+    wrong = scene.coverage_differs()
+    if n and wrong is not None:
+        title = _coverage_title(wrong, n)
     if not n and scene.check_failed:  # r94 D8-10: the picture must not read as a pass
         title += " here;\nthe failing cases above\nshow your mistake"
     ax.set_title(title, fontsize="small")
     return artists
+
+
+def _coverage_title(wrong: np.ndarray, n: int) -> str:
+    """The difference panel's title where coverage differences are counted apart (r149 E1):
+    "1 pixel covered wrongly (31, 31) (red); 319 walked differently (orange)"."""
+    k = int(wrong.sum())
+    where = " " + ", ".join(f"({r}, {c})" for r, c in np.argwhere(wrong)[:2]) if 0 < k <= 2 else ""
+    covered = f"{k} pixel{'s' * (k != 1)} covered wrongly{where} (red)" if k else "coverage right"
+    rest = n - k
+    walked = f";\n{rest} walked differently (orange)" if rest else ""
+    return covered + walked
 
 
 def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
@@ -271,6 +301,9 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
     marks = _Marks(scene, axes)
     if isinstance(pixel, str) and pixel == "first":  # the first differing pixel, if any
         differs = scene.differs() if got is not None else np.zeros(1, dtype=bool)
+        wrong = scene.coverage_differs() if got is not None else None
+        if wrong is not None and wrong.any():  # r149 E1: a pixel covered wrongly first
+            differs = wrong
         pixel = tuple(np.argwhere(differs)[0]) if differs.any() else None
     if pixel is not None:
         marks.show(*as_pixel(pixel))

@@ -127,7 +127,11 @@ def _owns(tie: str, setup, k: int, d) -> bool:
 #: A top-left rule folded into the set-up as a bias, llvmpipe's way (``lp_setup_tri.c`` adds 1
 #: to a top-left edge's constant, ``lp_rast_tri.c`` subtracts 1 "so we can just check the sign
 #: bit"): a slip biases the other edges by a wrong amount (px²), so that E ≥ bias passes there.
-BIASES = {"bias 1/256": 2.0**-8, "bias 1": 1.0, "bias 1/2": 0.5}
+#: r149 M2: every size from 2^-15 to 2^-9 gives the verdicts of 2^-8 on the fixed cases, and was
+#: told "a bias of 1/256 px²": the words measure the student's own from the answer
+#: (:func:`_bias_range`); M4: the bias added, not taken off (E ≥ −2^-16 passes).
+BIASES = {"bias 2^-15": 2.0**-15, "bias 1/256": 2.0**-8, "bias 1": 1.0, "bias 1/2": 0.5,
+          "bias added": -(2.0**-16)}  # fmt: skip
 
 
 def _passes(e, tie: str, setup, k: int, d) -> np.ndarray:
@@ -149,7 +153,9 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     :data:`BIASES` (the rule folded into a bias of the wrong size, ex30a). ``orient`` False: the
     edges as given; "cull": every block of a counter-clockwise triangle rejected (r114 item 5);
     "flipped": oriented the wrong way, the interior on every edge's negative side (r141
-    D8.1-4; the top-left rule then read from those edges' own kinds). ``logic``
+    D8.1-4; the top-left rule then read from those edges' own kinds); "unchecked": the edges
+    as given and no area computed, so a zero-area triangle is not rejected either (r149 M1).
+    ``logic``
     "inside" rejects a block whose four extreme points all lie outside the triangle and
     accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
     accepts a block every edge's maximising corner passes. Edge functions in pixels: exact
@@ -160,7 +166,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     px, py, d = POINTS[points](gx.ravel(), gy.ravel(), size)
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     ccw = bool(setup.perm[1] == 2)  # re-ordered: counter-clockwise on screen
-    if setup.area2 == 0 or (orient == "cull" and ccw):
+    if (setup.area2 == 0 and orient != "unchecked") or (orient == "cull" and ccw):
         return _verdicts(np.ones(shape, bool), False, shape, scalar)
     if logic == "inside":
         xs, ys = np.array([px, px + d, px, px + d]), np.array([py, py, py + d, py + d])
@@ -171,7 +177,10 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         tie = "bottom-right" if ccw else "top-left"
     accept_tie = "strict" if tie == "accept strict" else tie
     tie = "top-left" if tie == "accept strict" else tie
-    v = setup.p / setup.unit if orient else snap(np.asarray(xy, dtype=float))
+    given = orient in (False, "unchecked")
+    v = snap(np.asarray(xy, dtype=float)) if given else setup.p / setup.unit
+    if orient == "unchecked" and tie == "top-left":
+        tie = accept_tie = "left-top"  # the rule from the kinds of the edges as given
     if orient == "flipped":
         v = v[[0, 2, 1]]
         # the rule from the kinds of these (wrongly oriented) edges, as the student's code has it
@@ -319,21 +328,105 @@ def _rule_slip(rule: str) -> Slip:
     return Slip(f"{rule} rule", _at_first(words), rule)
 
 
-def _bias_slip(name: str) -> Slip:
-    """The top-left rule folded into a bias of the wrong size (ex30a: the task's sign-only
-    tests, llvmpipe's ``c − 1``): the words say which centres it loses, not the right step."""
-    size = name.removeprefix("bias ")
+def _px2(v: float) -> str:
+    """A value of E in px², exact (a dyadic fraction: "1/65536", "3/2")."""
+    from fractions import Fraction
 
-    def words(args, expected, got):
+    f = Fraction(float(v))
+    return str(f) if abs(f.numerator) < 1000 else f"{float(v):.4g}"
+
+
+def _bias_range(xy, x0, y0, size, got):
+    """The biases β' (E ≥ β' passes on an edge that is neither top nor left) that give the
+    answer's verdicts on this grid: (lo, hi), lo < β' ≤ hi (None where the answer is no bias).
+
+    A block's verdict falls as β' grows: accepted while β' ≤ a (its non-top-left edges'
+    smallest E₀ + T), rejected once β' > r (their smallest E₀ + R), partial between; a top-left
+    edge's test does not move, so a block it decides says nothing about β'."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    gx, gy = grid_of(x0, y0)
+    if setup.area2 == 0:
+        return None
+    rows, cols = _corners(gx.ravel(), gy.ravel(), size)
+    e = (edge_values_at(setup, rows.ravel(), cols.ravel()) / setup.unit**2).reshape(4, -1, 3)
+    hi_e, lo_e = e.max(axis=0), e.min(axis=0)  # (n, 3): E₀ + R, E₀ + T in px²
+    tl = np.asarray(setup.top_left, bool)
+    if not tl.all():
+        r = np.where(tl, np.inf, hi_e).min(axis=1)
+        a = np.where(tl, np.inf, lo_e).min(axis=1)
+    else:
+        return None
+    fixed_rej = (hi_e[:, tl] < 0).any(axis=1)
+    fixed_part = ~(lo_e[:, tl] >= 0).all(axis=1)
+    have = np.broadcast_to(np.asarray(got), gx.shape).ravel()
+    lo, hi = -np.inf, np.inf
+    for i, g in enumerate(have):
+        if fixed_rej[i]:
+            continue
+        if g == "accepted":
+            hi = min(hi, a[i])
+        elif g == "rejected":
+            lo = max(lo, r[i])
+        elif fixed_part[i]:
+            hi = min(hi, r[i])
+        else:
+            lo, hi = max(lo, a[i]), min(hi, r[i])
+    return (lo, hi) if lo < hi else None
+
+
+def _bias_words(args, expected, got) -> str:
+    """r149 M2, M4: the student's own bias, measured from the answer, and what it loses."""
+    span = _bias_range(*args, got)
+    if span is None:  # with another slip: no one bias gives this grid's verdicts
         return (
-            f"your sign tests take a bias of {size} px² off the edges that are neither top nor "
-            f"left (a centre there passes only where E ≥ {size}): a centre with 0 < E < {size} "
-            "on such an edge is covered, yet your tests leave it out; the bias must be the "
-            "smallest positive value E can take at a pixel centre, with vertices on the 1/256 "
-            "grid (which is it?)"
+            "your sign tests take a bias of the wrong size or sign off the edges that are "
+            "neither top nor left: the bias must be the smallest positive value E can take at "
+            "a pixel centre, taken off E there, with vertices on the 1/256 grid (which is it?)"
         )
+    lo, hi = span
+    if hi <= 0:
+        acts = (
+            "on such an edge (E = 0), and so one just outside it (E < 0) too"
+            if hi == 0
+            else f"whose E is as low as {_px2(hi)} px²"
+        )
+        return (
+            "your bias has the wrong sign: on the edges that are neither top nor left your "
+            f"sign tests pass a centre {acts}: a centre outside such an edge counts as "
+            "inside; there E must be > 0: take the bias off E (β < 0), do not add it"
+        )
+    lo = max(lo, 0.0)
+    upper = f" and at most {_px2(hi)} px²" if np.isfinite(hi) else ""
+    return (
+        "your sign tests take a bias of the wrong size off the edges that are neither top nor "
+        f"left: on this grid yours acts like a bias above {_px2(lo)} px²{upper} (a centre "
+        f"there passes only where E ≥ the bias), so a centre with 0 < E ≤ {_px2(lo)} on such "
+        "an edge is covered, yet your tests leave it out; the bias must be the smallest "
+        "positive value E can take at a pixel centre, with vertices on the 1/256 grid (which "
+        "is it?)"
+    )
 
-    return Slip(f"tie-rule bias of {size} px²", _at_first(words), name)
+
+def _bias_slip(name: str) -> Slip:
+    """The top-left rule folded into a bias of the wrong size or sign (ex30a: the task's
+    sign-only tests, llvmpipe's ``c − 1``): the words measure the student's bias from the
+    answer (r149 M2: every size was told "1/256 px²") and say which centres it loses."""
+    kind = "tie-rule bias added" if BIASES[name] < 0 else "tie-rule bias too large"
+    return Slip(kind, _bias_words, name)
+
+
+def _unchecked_words(args, expected, got) -> str:
+    """r149 M1: the edges taken as given, no area computed: the signature on each failing case
+    (a counter-clockwise triangle, or a zero-area one)."""
+    xy = np.asarray(args[0], dtype=float)
+    why = (
+        "you took the edges as given and never computed the triangle's area (twice its signed "
+        "area, E₁₂ at v3, is what says the winding): handle both windings (orient the edges so "
+        "that the interior is positive) and reject every block of a zero-area triangle"
+    )
+    if setup_edges(xy, SUBPIXEL_BITS).area2 == 0:
+        return f"{tri_words(xy)} are collinear, and a zero-area triangle rejects every block; {why}"  # fmt: skip
+    return f"this triangle runs counter-clockwise on screen, so its interior lies on the negative side of the edges as given; {why}"  # fmt: skip
 
 
 def _offset_words(text: str):
@@ -435,6 +528,9 @@ BLOCK_KNOBS = Knobs(classify_with, {
     ],
     "orient": [Slip("one winding only", "this triangle runs counter-clockwise on screen: handle "
                     "both windings (orient the edges so that the interior is positive)", False),
+               # r149 M1: the edges as given and no area, so zero area failed too, and the
+               # counter-clockwise blocks were told "Corners outside the triangle..."
+               Slip("one winding only, no area", _unchecked_words, "unchecked"),
                # r141 D8.1-4: every sign flipped was given the generic rule
                Slip("oriented the wrong way", "your edges are oriented the wrong way round: the "
                     "triangle's interior lies on the negative side of each, so you reject the "
@@ -684,6 +780,9 @@ def _hard_blocks():
         # r107 N8-1: E = ±1/65536 px² at the centre (3000.5, 3000.5), 0 in float32
         ("far out, a centre 1/65536 px² outside an edge", [[3016.83203125, 3010.59375], [2990.40625, 2994.26171875], [6000.0, 0.0]], 3000, 3000, 1),  # fmt: skip
         ("far out, a centre 1/65536 px² inside an edge", [[3043.2578125, 3026.92578125], [2974.07421875, 2984.16796875], [0.0, 6000.0]], 3000, 3000, 1),  # fmt: skip
+        # r149 M4: the first far-out case mirrored (x → 6001 − x), its −1/65536 px² centre now
+        # outside a right edge, where a bias added, not taken off, covers it
+        ("far out, a centre 1/65536 px² outside a right edge", [[2984.16796875, 3010.59375], [3010.59375, 2994.26171875], [1.0, 0.0]], 3000, 3000, 1),  # fmt: skip
     ]  # fmt: skip
 
 
@@ -837,8 +936,22 @@ def _by_verdicts(edges, expected, got) -> str:
 _OUTSIDE = ". Corners outside the triangle do not reject a block: the test is per edge"
 
 
-#: Fill colours of the blocks by the package's verdict (the walk's colours, lesson 10).
-VERDICT_COLOURS = {"rejected": "#bdbdbd", "accepted": "#1b9e77", "partial": "#ff9f1c"}
+#: Fill colours of the blocks by the package's verdict: the picture's key below it (r149 E2:
+#: grey, teal and orange here, white, greens and blues there, and no key of its own).
+VERDICT_COLOURS = {"rejected": "#ffffff", "accepted": "#1b7837", "partial": "#2b7bba"}
+
+
+def _block_key(ax, want, marked: bool) -> None:
+    """The case plot's own key: the package's verdicts present, the block that differs."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    handles = [Patch(facecolor=VERDICT_COLOURS[k], alpha=0.35, edgecolor="#636363", label=f"package: {k}")  # fmt: skip
+               for k in KINDS if (want == k).any()]  # fmt: skip
+    if marked:
+        handles.append(Line2D([], [], color="#d7301f", lw=2.5, label="first block that differs"))
+    ax.legend(handles=handles, loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize="small",
+              frameon=False)  # fmt: skip
 
 
 def draw_block_case(ax, case, got):
@@ -868,12 +981,28 @@ def draw_block_case(ax, case, got):
 
         if hints_spent("classify_block"):
             ys, xs = _corners(bx, by, size)
+            # r149 E2: each centre's smallest E over the edges beside it (a tie reads E = 0)
+            setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+            low = (edge_values_at(setup, ys, xs) / setup.unit**2).min(axis=1)
+            for x, y, ev in zip(xs, ys, low, strict=True):  # outward, beside its centre
+                right, down = x == xs.max() and size > 1, y == ys.max() and size > 1
+                artists.append(ax.annotate(f"E = {num(float(ev))}", (x + 0.5, y + 0.5),
+                                           xytext=(6 if right else -6, -8 if down else 8),
+                                           textcoords="offset points", fontsize="x-small",
+                                           ha="left" if right else "right",
+                                           va="top" if down else "bottom"))  # fmt: skip
             artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
     yours = "" if got is None or not wrong else f"; first differing block {e}, yours {g}"
     counts = ", ".join(f"{int((want == k).sum())} {k}" for k in KINDS if (want == k).any())
     ax.set_xlabel(f"{counts}{yours}")
     lo = np.minimum(ring.min(axis=0), [gx.min(), gy.min()]) - 1
     hi = np.maximum(ring.max(axis=0), [gx.max() + size, gy.max() + size]) + 1
+    if got is not None and wrong and size <= 64:
+        # r149 E2: zoomed on the block that differs (a tie ½ px from its side could not be
+        # seen in the whole grid), with a margin of half a block
+        pad = max(3.0, size / 2)
+        lo, hi = np.array([bx, by]) - pad, np.array([bx, by]) + size + pad
+    _block_key(ax, want, got is not None and wrong)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
     plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
