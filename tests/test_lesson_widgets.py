@@ -223,6 +223,32 @@ def test_explorer_survives_a_zero_area_triangle(explorer):
     assert "zero area" in explorer.info.value
     assert np.isnan(explorer.values).all()
     assert explorer.contours.get_segments() == []
+    # review r143 03-9: the panel says what lesson 03's text promises, C = 0 and no M
+    assert "C = 2 × signed area = 0.000" in explorer.info.value
+    assert "M (which carries 1/C) does not exist" in explorer.info.value
+
+
+def test_explorer_collinear_labels_leave_the_line_visible(explorer):
+    """Review r143 03-9: on one line (v2 = (2.75, 3.75) on v3v1) the labels were pushed along
+    the line, and their white boxes hid the segment v1v2; now they stand beside it."""
+    explorer.x[1].value, explorer.y[1].value = 2.75, 3.75
+    assert explorer.system["area2"] == 0
+    explorer.fig.canvas.draw()
+    v1, v2 = explorer.ax.transData.transform(explorer.xy[:2])
+    # the segment v1v2 between the vertex dots: no point of it under a label's box
+    points = v1 + np.linspace(0.15, 0.85, 29)[:, None] * (v2 - v1)
+    for label in explorer.triangle.labels:
+        box = label.get_bbox_patch().get_window_extent()
+        inside = [box.contains(*point) for point in points]
+        assert not any(inside), label.get_text()
+
+
+def test_explorer_title_says_the_contours_go_on_beyond_the_triangle(explorer):
+    """Review r143 03-9: the dashed lines cross the whole grid, outside the triangle too; the
+    title says that the plane goes on there (lessons 08 and 09 read it outside)."""
+    assert "go on beyond the triangle" in explorer.widget.children[0].value
+    xs = np.concatenate([np.asarray(seg)[:, 0] for seg in explorer.contours.get_segments()])
+    assert xs.min() < 0 and xs.max() > explorer.width  # not clipped to the triangle
 
 
 # -- DepthPrecisionExplorer ---------------------------------------------------------------------

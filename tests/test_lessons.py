@@ -129,6 +129,31 @@ def test_03_three_views_of_one_plane():
     assert np.allclose([ns.g_x, ns.g_y], [plane.dx, plane.dy])
     assert np.allclose(ns.planes.A, ns.abcd.dx) and np.allclose(ns.planes.B, ns.abcd.dy)
     assert np.allclose(ns.planes(*ns.centres.T), ns.fill.trace.pixel_barycentric @ ns.F)
+    # review r143 03-11: the inverse of the vertex matrix (Olano and Greer) holds the λ planes
+    # in its columns, M in its corner, and gives the attribute's plane; as printed
+    assert np.abs(ns.inverse - ns.lam_planes).max() < 1e-12
+    assert np.abs(ns.inverse[:2, 1:] - ns.M).max() < 1e-15
+    assert np.allclose(ns.inverse @ f, [ns.g_x, ns.g_y, ns.g_0])
+    assert np.allclose(ns.system @ ns.inverse, np.eye(3))
+
+
+def test_03_r143_outside_the_triangle_one_weight_is_negative():
+    """Review r143 03-10: f at every centre, covered or not; outside, one weight is negative,
+    the weights still sum to 1 and f extrapolates past the vertex values (the printed numbers)."""
+    ns = lesson("03_barycentric_and_plane_equations")
+    covered, lam = ns.covered, ns.lam_all
+    assert covered.sum() == 55 and (~covered).sum() == 169  # "55 of 224 centres covered"
+    assert np.array_equal(lam.min(axis=-1) < 0, ~covered)  # outside <=> a negative weight
+    assert np.allclose(lam.sum(axis=-1), 1.0)
+    assert np.allclose(ns.f_all, ns.plane(ns.cx_all, ns.cy_all))  # the same plane
+    assert round(ns.f_all.min(), 3) == 0.105 and round(ns.f_all.max(), 3) == 1.143
+    assert ns.f_all.min() < ns.f.min() and ns.f_all.max() > ns.f.max()  # it extrapolates
+    # helper pixels: uncovered, and in a 2 x 2 quad with a covered centre
+    assert ns.helpers.sum() == 25 and not (ns.helpers & covered).any()
+    for r, c in zip(*np.nonzero(ns.helpers)):
+        assert covered[r // 2 * 2 : r // 2 * 2 + 2, c // 2 * 2 : c // 2 * 2 + 2].any()
+    # the example printed: centre (2.5, 0.5), λ3 below 0 and λ1 above 1
+    assert (ns.row, ns.col) == (0, 2) and ns.lam_all[0, 2, 2] < 0 < ns.lam_all[0, 2, 0] - 1
 
 
 def test_03_stepping_and_recentring_numbers_match_the_text():

@@ -696,6 +696,13 @@ def test_03_recentring_prediction_and_the_vertex_crossing_the_opposite_edge():
     assert min(ns.decades, key=lambda d: abs(d - np.log10(max(ns.recentred)))) == -15
     assert "rounding only" in ns.decades[-15]
     assert abs(ns.crossing_x - 34 / 11) < 1e-12
+    # review r143 03-5: every decade from 10^2 to 10^6 measured (10^3 was missing under its
+    # tick), and the figure draws markers only: nothing joins two measured offsets
+    assert ns.offsets == [0] + [10**k for k in range(2, 7)]
+    cells = json.loads((NOTEBOOKS / "03_barycentric_and_plane_equations.ipynb").read_text())
+    figure = next("".join(c["source"]) for c in cells["cells"]
+                  if "Recentring, on grid-aligned" in "".join(c["source"]))  # fmt: skip
+    assert '"o-"' not in figure and '"s-"' not in figure and '"o",' in figure
     rows = ns.gradient_by_x  # v2 x -> (C, g_x, g_y)
     before = [x for x in rows if x > ns.crossing_x]
     after = [x for x in rows if x < ns.crossing_x]

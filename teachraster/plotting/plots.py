@@ -243,6 +243,34 @@ def _outward(points: np.ndarray, centre: np.ndarray, dist: float, ax) -> list:
     return out
 
 
+def _area2(xy: np.ndarray) -> float:
+    """Twice the signed area of the triangle ``xy`` (3, 2); 0 for three points on one line."""
+    (ax_, ay), (bx, by), (cx, cy) = xy[:3]
+    return float((bx - ax_) * (cy - ay) - (cx - ax_) * (by - ay))
+
+
+def _square_to_line(points: np.ndarray, dist: float, ax) -> list:
+    """Offsets in points pushing the labels of three points on one line off it, square to it
+    and all to one side (above it on the screen; right of a vertical line).
+
+    Pushed away from their centre, as :func:`_outward` does, the labels lay on the line itself
+    and their white boxes hid it: review r143 03-9, PlaneExplorer's collinear state showed
+    v2-v3 only.
+    """
+    span = points[:, None, :] - points[None, :, :]
+    far = np.unravel_index(np.argmax(np.hypot(span[..., 0], span[..., 1])), span.shape[:2])
+    d = span[far]
+    n = float(np.hypot(*d))
+    if n == 0:  # one point three times: any side will do
+        return _outward(points, points[0], dist, ax)
+    normal = np.array([-d[1], d[0]]) / n
+    up = -1.0 if ax.yaxis_inverted() else 1.0  # which sign of data y is up on the screen
+    if normal[1] * up < 0 or (normal[1] == 0 and normal[0] < 0):
+        normal = -normal
+    flip = -1.0 if ax.yaxis_inverted() else 1.0  # data y down -> screen y up
+    return [(dist * normal[0], flip * dist * normal[1])] * len(points)
+
+
 def _within_sides(ax, points, offsets, size: float) -> list:
     """``offsets`` (points) with the horizontal part mirrored where a label would stick out of
     the Axes' left or right side.
@@ -331,6 +359,8 @@ class TriangleArtists(Artists):
         centre = xy.mean(axis=0)
         names = vertex_names(tri)
         offsets = _outward(xy, centre, fs(0.9), ax)
+        if _area2(xy) == 0:
+            offsets = _square_to_line(xy, fs(0.9), ax)
         if self.inside:
             offsets = _within_top_bottom(ax, xy, _within_sides(ax, xy, offsets, fs(0.95)), fs(0.95))
         for label, name, p, off in zip(self.labels, names, xy, offsets):

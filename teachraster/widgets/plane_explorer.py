@@ -120,7 +120,10 @@ def level_segments(g, levels, width: float, height: float) -> list:
     """Segments of the lines f = level, for the plane ``f = g_x x + g_y y + g_0``.
 
     Each line is straight (the plane's contour lines are parallel), given as a segment long
-    enough to cross the whole ``width`` × ``height`` image; the axes clip it. A flat plane
+    enough to cross the whole ``width`` × ``height`` image; the axes clip it. Not clipped to
+    the triangle, on purpose: the plane goes on beyond it (helper pixels and multisample
+    centres outside the triangle read it there, lessons 08 and 09), and the title says so
+    (review r143 03-9). A flat plane
     (g_x = g_y = 0) has no contour lines.
 
     Examples
@@ -244,8 +247,8 @@ class PlaneExplorer:
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
             "Drag a vertex (or use its sliders) or change its value: the dashed contour lines "
-            "(f in equal steps) stay straight and parallel; the 3 × 3 system, M and A, B, C, "
-            "D follow.",
+            "(f in equal steps) stay straight and parallel, and go on beyond the triangle, "
+            "where the plane goes on too; the 3 × 3 system, M and A, B, C, D follow.",
         )
         rows = [control_row([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
         # the sliders' names and values at projector size, as FilterExplorer's (review r96
@@ -408,7 +411,10 @@ class PlaneExplorer:
                   f"border-collapse:separate; border-spacing:0.8em 0'>{rows}</table>")  # fmt: skip
         parts = []
         if "g" not in s:
-            parts.append("<b>zero area</b>: the three points are on one line, no plane")
+            # the lesson's text (03, section 5) promises both: C = 0 and no M (review r143 03-9)
+            parts.append(f"<b>zero area</b>: the three points are on one line, so C = 2 × signed "
+                         f"area = {s['area2'] + 0.0:.3f}, M (which carries 1/C) does not exist, "
+                         "and there is no plane")  # fmt: skip
             return INFO_DIV + system + "<br>".join(parts) + "</div>"
         (m00, m01), (m10, m11) = s["M"]
         gx, gy, g0 = s["g"]
