@@ -817,6 +817,12 @@ def test_04_heatmap_edges_and_the_readable_floor():
     assert "off by up to <b>{side:.1f} texels</b>" in asked and "tolerance=1.5," in asked
     assert "answer=diagonal_answer," in asked
     assert abs(ns.diagonal_answer - np.sqrt(2) * ns.side) < 1.5 < abs(ns.diagonal_answer - ns.side)
+    # r154: the (never held) Summary printed "37.8 against 26.7" below the question, and the
+    # question pointed at a side's error "printed above" that was held until q_affine's Check
+    md = "\n".join(_cells("04_perspective_correct_interpolation", "markdown"))
+    assert "37.8 against" not in md and "(printed above" not in asked
+    # r154 C: lesson 00's heatmap is of another triangle (same depths and u)
+    assert "heatmap of the same triangle" not in md and "its triangle has other" in md
     # the heatmap's dark band: Δu = 0 on v2's depth line, v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
@@ -1882,8 +1888,9 @@ def test_04_summary_error_is_ratio_times_change_r97():
     summary = next(t for t in _cells("04_perspective_correct_interpolation", "markdown")
                    if t.startswith("## Summary"))  # fmt: skip
     flat = " ".join(summary.split())
-    e = ns.edge_texels
-    assert f"({e['diagonal']:.1f} against {e['side u = 0']:.1f} texels)" in flat
+    assert (
+        "$\\sqrt{2}$ times the sides' (q_diagonal's answer)" in flat
+    )  # r154: no 37.8 below the question
     r = ns.z1 / ns.z0
     assert f"{(np.sqrt(r) - 1) ** 2 / (r - 1):.3f} for $r = {r:g}$" in flat
     assert "**times** how much the attribute changes along the edge" in flat
