@@ -445,3 +445,20 @@ def test_a_folded_cells_first_line_states_no_formula(path):
         comment = first.split("#", 1)[1] if "#" in first else ""
         formula = re.search(r"=[^=,;:]*[+*/×÷]", comment)
         assert formula is None and "λ1 v1" not in first, (path.name, i, first)
+
+
+def test_03_r155_homogeneous_rows_and_the_msaa_centre():
+    """r155 F1: Olano and Greer's rows are the vertices before the divide, w_k (x_k, y_k, 1);
+    w in the third column beside the screen x, y gives no f/w plane. C1: an uncovered centre is
+    Direct3D's default evaluation point, GL leaves it open (lesson 08 §2). F2: beyond a vertex
+    two weights are negative."""
+    import json
+
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    md = " ".join(
+        " ".join("".join(c["source"]) for c in json.loads(path.read_text())["cells"]
+                 if c["cell_type"] == "markdown").split()
+    )  # fmt: skip
+    assert "$w_k (x_k, y_k, 1)$" in md and "the third column holds each vertex's $w$" not in md
+    assert "Direct3D's default" in md and "GL leaves the location open" in md
+    assert "two weights are negative" in md and "one weight negative" not in md
