@@ -380,7 +380,8 @@ def _draw_bary(ax, case, got):
         if isinstance(expected, str):
             said = f"zero area: no weights\n(E(v1, v2, v3) = {num(_area(xy))})"
             if got is not None and not isinstance(got, str):
-                said += f"\n\nyours: {vec(np.asarray(got, dtype=float))}"
+                yours = ", ".join(f"{x:.3g}" for x in np.asarray(got, dtype=float))
+                said += f"\n\nyours: ({yours})"
         else:
             said = f"E(v1, v2, v3) = {num(_area(xy))}:\nits weights are\n{vec(expected)}"
             said += "\n\nyou raised ValueError"
@@ -391,8 +392,8 @@ def _draw_bary(ax, case, got):
     error = None if got is None else float(np.max(np.abs(np.asarray(got, float) - expected)))
     if error is not None and 0 < error < 1e-3 * max(1.0, float(np.abs(expected).max())):
         # r153 E16: a float32 failure drew identical bars that said nothing
-        artists.append(ax.text(0.02, 0.02, f"yours differ by {error:.1g}:\nequal at this scale",
-                               transform=ax.transAxes, fontsize="x-small", va="bottom"))  # fmt: skip
+        artists.append(ax.text(0.02, 0.86, f"yours differ by {error:.1g}:\nequal at this scale",
+                               transform=ax.transAxes, fontsize="x-small", va="top"))  # fmt: skip
     ax.set_xlim(-0.6, 6.0)  # the right part of the axes holds the triangle
     ax.set_ylabel("weight")
     low, high = ax.get_ylim()  # r84 03-4: room above the bars for the legend
@@ -418,7 +419,7 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
     lam = _areas(xy, p) / _area(xy) if _area(xy) else np.zeros(3)
     # r153 E13-14: on a zero-area or sliver triangle the sub-triangles' labels pile up on p
     extent = float(np.ptp(np.vstack([v, q]), axis=0).max()) or 1.0
-    labelled = abs(_area(xy)) >= 0.02 * extent**2
+    labelled = abs(_area(xy)) >= 0.2 * extent**2  # E is twice the area: 0.87 equilateral
     for k in range(3):
         sub = np.array([q, v[(k + 1) % 3], v[(k + 2) % 3]])
         if lam[k] < 0:  # r94 D3-6: a negative share hatched, labelled outside the triangle
@@ -440,11 +441,12 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
                                    textcoords="offset points"))  # fmt: skip
     # r153 E15: p above the λ labels (a label centred near p hid the dot), its name boxed
     artists += ax.plot(*q, "o", color="black", ms=4, zorder=5)
-    artists.append(ax.annotate("p", q, fontsize="small", xytext=(5, 5), textcoords="offset points",
+    artists.append(ax.annotate("p", q, fontsize="small", xytext=(5, -11), textcoords="offset points",
                                zorder=5, bbox={"boxstyle": "round,pad=0.05", "facecolor": "white",
                                                "edgecolor": "none", "alpha": 0.9}))  # fmt: skip
     pts = np.vstack([v, q])
-    pad = 0.1 * float(np.ptp(pts, axis=0).max()) + 0.5
+    # r153 E14: a margin in proportion (a fixed 0.5 px shrank a 2-px triangle to a speck)
+    pad = 0.12 * float(np.ptp(pts, axis=0).max()) or 0.5
     ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
     ax.set_ylim(pts[:, 1].max() + pad, pts[:, 1].min() - pad)
     ax.set_aspect("equal", adjustable="box")
