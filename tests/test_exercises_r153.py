@@ -106,7 +106,8 @@ def test_float32_with_abs_area_is_float32_where_e_is_positive_and_abs_where_nega
     assert not report.passed
     seen = set()
     for f in report.failures:
-        if f.kind == "no zero-area check":
+        if f.case.startswith("zero area"):  # 100 000 px out: float32 leaves the grid
+            assert f.kind == "float32" and "E is no longer 0" in f.explanation, f.explanation
             continue
         area = _e(*_vertices(f.explanation))
         if "absolute value" in f.explanation:

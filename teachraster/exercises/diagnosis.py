@@ -12,7 +12,8 @@ explain it, in this order:
    does not (``clip_near``'s z − w keeps a triangle beyond the far plane).
 2. **A mistake that gives every answer.** Each :class:`~.exercise.Mistake` is run on every
    answered case; one that gives the student's answer on all of them (passing cases
-   included) is the cause, named on every failure it explains. On a failing case a mistake
+   included) is the cause, named on every failure it explains (one that explains more
+   failures first). On a failing case a mistake
    counts only where it changes the answer (its answer there is not the right one): a named
    mistake reproduces the student's numbers on the very case it is named on (r153 D3-2). A single mistake is preferred
    to a combination, an earlier one in the exercise's table to a later one.
@@ -557,9 +558,11 @@ def diagnose(
     mistakes = spec.all_mistakes() + [rounded_mistake(), low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
+    # r153 D3-2: one that explains more failures first (abs(E) says nothing where E > 0, so
+    # it is whole on fewer failures than every sign flipped, which explains them all)
     whole = sorted(
         (f for f in fits if f.whole and not f.mistake.symptom),
-        key=lambda f: (len(f.mistake.parts), f.order),
+        key=lambda f: (-len(f.failing), len(f.mistake.parts), f.order),
     )
     back = run_checker(lambda: _handed_back(results), None)
     if back is not None and not any(len(f.failing) == len(failing) for f in whole):

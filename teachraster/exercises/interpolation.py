@@ -235,7 +235,30 @@ def _proper(gives):
     return on_case
 
 
+def _float32_off_grid(args, expected, got) -> bool | None:
+    """A zero-area case whose vertices float32 cannot hold, answered with float32 numbers:
+    E == 0 in float32 is no test there (a right float32 solution gives numbers)."""
+    if not isinstance(expected, str):
+        return None
+    if isinstance(got, str):
+        return False
+    xy, p = args
+    moved = not np.array_equal(np.asarray(xy, np.float32).astype(float), np.asarray(xy, float))
+    return moved and held_by_precision(np.zeros(3), got)
+
+
+def _float32_off_grid_words(args, expected, got) -> str:
+    far, _ = _far(args)
+    return (
+        f": your answer is numbers, but these three vertices lie on one line. {num(far)} px "
+        f"from the origin float32 numbers are {num(float(np.spacing(np.float32(far))))} px "
+        "apart: in float32 the vertices leave the 1/256-px grid and their E is no longer 0. "
+        "Keep the coordinates in float64, where E == 0 is exact"
+    )
+
+
 ZERO_AREA_MISTAKES = [
+    Mistake("float32", _float32_off_grid_words, fits=_float32_off_grid),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
     Mistake("refused a proper triangle", _refused_words,
