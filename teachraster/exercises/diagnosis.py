@@ -12,8 +12,7 @@ explain it, in this order:
    does not (``clip_near``'s z − w keeps a triangle beyond the far plane).
 2. **A mistake that gives every answer.** Each :class:`~.exercise.Mistake` is run on every
    answered case; one that gives the student's answer on all of them (passing cases
-   included) is the cause, named on every failure it explains (one that explains more
-   failures first). On a failing case a mistake
+   included) is the cause, named on every failure it explains. On a failing case a mistake
    counts only where it changes the answer (its answer there is not the right one): a named
    mistake reproduces the student's numbers on the very case it is named on (r153 D3-2). A single mistake is preferred
    to a combination, an earlier one in the exercise's table to a later one.
@@ -304,9 +303,10 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
             return False
         if _within_rounding(spec, args, expected, got):
             return True
-        # r153 D3-2: float32 numbers off by more: float32 says nothing of this case (another
-        # mistake, float32 and abs(E) where E < 0, explains it) and is named where it fits
-        return None
+        # r153 D3-2: an answer of float32's type off by more: float32 says nothing of this
+        # case (another mistake, abs(E) where E < 0, explains it) and is named where it fits
+        dtype = getattr(got, "dtype", None)
+        return None if dtype is not None and dtype.kind == "f" and dtype.itemsize <= 4 else False
 
     def words(args, expected, got):
         if not _within_rounding(spec, args, expected, got):
@@ -466,13 +466,14 @@ def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
         return None
     if value is None:
         return None
-    if not r.ok and _same_answer(spec, value, r, r.expected):
+    same = _same_answer(spec, value, r)
+    if same and not r.ok and _passes(spec, value, r):
         # r153 D3-2: a mistake that gives the right answer here does not change this case,
         # so it cannot be why the student's answer is wrong (float32 with abs(E) was blamed
         # on the abs where E > 0): a mistake is named only where it reproduces the student's
         # numbers *and* they differ from the right ones
         return None
-    return _same_answer(spec, value, r)
+    return same
 
 
 def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) -> list[_Fit]:
@@ -505,6 +506,11 @@ def _all_it_must(fit: _Fit, failing: list[Result]) -> bool:
         return True
     return all(r.index in fit.failing for r in failing
                if run_checker(lambda r=r: bool(must(r.args, r.expected, r.got)), False))  # fmt: skip
+
+
+def _passes(spec: Exercise, value, r: Result) -> bool:
+    """Would ``value`` pass case ``r`` (the exercise's own test, :attr:`.Exercise.same`)?"""
+    return bool(run_checker(lambda: spec.same(value, r.expected, r.args), False))
 
 
 _STUDENT = object()
@@ -558,11 +564,9 @@ def diagnose(
     mistakes = spec.all_mistakes() + [rounded_mistake(), low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
-    # r153 D3-2: one that explains more failures first (abs(E) says nothing where E > 0, so
-    # it is whole on fewer failures than every sign flipped, which explains them all)
     whole = sorted(
         (f for f in fits if f.whole and not f.mistake.symptom),
-        key=lambda f: (-len(f.failing), len(f.mistake.parts), f.order),
+        key=lambda f: (len(f.mistake.parts), f.order),
     )
     back = run_checker(lambda: _handed_back(results), None)
     if back is not None and not any(len(f.failing) == len(failing) for f in whole):

@@ -157,6 +157,11 @@ def _sums_to_1(got) -> bool:
     return abs(float(np.sum(got)) - 1) <= 1e-12
 
 
+def _sums_to_other_than_1(got) -> bool:
+    """A finite sum other than 1 (NaN is told NaN, not "they sum to nan")."""
+    return bool(np.isfinite(np.sum(got))) and not _sums_to_1(got)
+
+
 def _their_sum(got) -> str:
     """The weights' sum, with the digits that tell it from 1 (r153 D3-4: 0.999999999 was
     printed "1" beside "and weights sum to 1"): the one place that formats it."""
@@ -206,7 +211,7 @@ NUDGED = Mistake("epsilon added to the sum", _nudge_words,
                  fits=lambda a, e, g: _nudge(a, g) is not None)  # fmt: skip
 
 SYMPTOMS = (
-    Mistake("sum", _sum_words, fits=lambda a, e, g: not _sums_to_1(g), symptom=True),
+    Mistake("sum", _sum_words, fits=lambda a, e, g: _sums_to_other_than_1(g), symptom=True),
 )  # fmt: skip
 
 
