@@ -231,7 +231,10 @@ def _bary(order=(0, 1, 2), p_swapped=False, clamp=False, solve=False):
         xy, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
         if p_swapped:
             p = p[::-1]
-        if solve:
+        if solve:  # r153 D3-1: LinAlgError is no zero-area test; the exact one first
+            (x1, y1), (x2, y2), (x3, y3) = xy
+            if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0:
+                raise ValueError("zero area")
             lam = np.linalg.solve(np.vstack([xy.T, np.ones(3)]), np.array([p[0], p[1], 1.0]))
         else:
 

@@ -12,7 +12,9 @@ explain it, in this order:
    does not (``clip_near``'s z − w keeps a triangle beyond the far plane).
 2. **A mistake that gives every answer.** Each :class:`~.exercise.Mistake` is run on every
    answered case; one that gives the student's answer on all of them (passing cases
-   included) is the cause, named on every failure it explains. A single mistake is preferred
+   included) is the cause, named on every failure it explains. On a failing case a mistake
+   counts only where it changes the answer (its answer there is not the right one): a named
+   mistake reproduces the student's numbers on the very case it is named on (r153 D3-2). A single mistake is preferred
    to a combination, an earlier one in the exercise's table to a later one.
 3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
    its answer and agrees with the most answers overall, provided it agrees with four answers
@@ -22,7 +24,9 @@ explain it, in this order:
    failing case ``must_fit`` picks (every tie case), else nowhere (r84 10-2).
    An exercise with ``partial_names=False`` names here only a mistake that gives every
    failing answer.
-4. **Low precision**, only when the error is within the rounding of the precision named
+4. **Rounded**: the right numbers rounded to N decimals (or significant digits), when that
+   gives every failing answer. **Low precision**, asked only of numbers that precision holds
+   (``np.float32(x) == x``), and only when the error is within the rounding of the precision named
    (float32: ``8 · 2**-24`` of the case's scale, see :attr:`.exercise.Exercise.float32`), and
    **NaN or infinity** in the answer.
 
@@ -291,7 +295,18 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
     def fits(args, expected, got):
         if _numbers(expected) is None:  # no number is right here (3.1's ValueError): no say
             return None
-        return _within_rounding(spec, args, expected, got) or _outside_float32(args) is not None
+        if _outside_float32(args) is not None:
+            return True
+        # r153 D3-5: 0.33333333 (np.round(λ, 8)) is within float32's rounding of 1/3 but is
+        # no float32 number: the question is asked only of numbers float32 can hold
+        if not held_by_precision(expected, got):
+            return False
+        if _within_rounding(spec, args, expected, got):
+            return True
+        # r153 D3-2: an answer of float32's type off by more: float32 says nothing of this
+        # case (another mistake, abs(E) where E < 0, explains it) and is named where it fits
+        dtype = getattr(got, "dtype", None)
+        return None if dtype is not None and dtype.kind == "f" and dtype.itemsize <= 4 else False
 
     def words(args, expected, got):
         if not _within_rounding(spec, args, expected, got):
@@ -315,6 +330,67 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
 
 
 F32 = np.finfo(np.float32)
+
+
+def held_by_precision(expected, got) -> bool:
+    """Is each of the answer's wrong numbers one that its precision (:func:`precision_of`)
+    holds, ``np.float32(x) == x``? A float64 answer rounded to 8 decimals is not."""
+    g, e = _numbers(got), _numbers(expected)
+    if g is None or e is None or g.size != e.size or g.dtype == object:
+        return True  # nothing to weigh: the bound alone decides
+    name, _ = precision_of(got)
+    kind = np.float16 if name == "float16" else np.float32
+    g, e = g.ravel(), e.ravel()
+    wrong = g[g != e]
+    with np.errstate(over="ignore", invalid="ignore"):
+        return bool(np.all(wrong.astype(kind).astype(float) == wrong))
+
+
+#: Decimals (and significant digits) an answer may be rounded to, for :func:`rounded_mistake`.
+ROUNDINGS = range(1, 13)
+
+
+def _rounded_to(expected, got) -> str | None:
+    """The words "N decimals" (or "N significant digits") when the answer is the right one
+    rounded so (``np.round(x, N)``, ``f"{x:.Ng}"``); else None."""
+    g, e = _numbers(got), _numbers(expected)
+    if g is None or e is None or g.size != e.size or g.size == 0 or g.dtype == object:
+        return None
+    if not (np.isfinite(g).all() and np.isfinite(e).all()) or np.array_equal(g, e):
+        return None
+    g, e = g.ravel(), e.ravel()
+    # every N it could be (1, 0, 0) is the rounding of (0.9999996, 4e-7, 0) to 1-6 decimals
+    fit = [n for n in ROUNDINGS if np.allclose(g, np.round(e, n), rtol=1e-12, atol=1e-15)]
+    if fit:
+        return f"{fit[0]} decimals" if len(fit) == 1 else f"{fit[0]} to {fit[-1]} decimals"
+    for n in range(3, 13):
+        sig = np.array([float(f"{x:.{n}g}") for x in e])
+        if np.allclose(g, sig, rtol=1e-12, atol=1e-300):
+            return f"{n} significant digits"
+    return None
+
+
+def rounded_mistake() -> Mistake:
+    """The right numbers rounded (``np.round(λ, 4)``): r153 D3-3, told "you added a small
+    number to E" and, in 3.2, to re-derive a right derivation. Named only where it gives
+    every failing answer."""
+
+    def fits(args, expected, got):
+        g = _numbers(got)
+        if _numbers(expected) is None or g is None or g.dtype == object:
+            return None  # no number is right here (3.1's ValueError): no say
+        if _rounded_to(expected, got) is not None:
+            return True
+        with np.errstate(invalid="ignore"):  # whole numbers show no rounding: no say
+            return None if np.isfinite(g).all() and np.array_equal(np.round(g), g) else False
+
+    def words(args, expected, got):
+        return (
+            f": yours are the right numbers rounded to {_rounded_to(expected, got)} (np.round, "
+            "or a format?): return them unrounded; the check compares far more digits"
+        )
+
+    return Mistake("rounded", words, fits=fits, only_whole=True)
 
 
 def _outside_float32(args) -> float | None:
@@ -390,7 +466,14 @@ def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
         return None
     if value is None:
         return None
-    return spec.match(r.got, value, r.args) if spec.match is not None else near(value, r.got)
+    same = _same_answer(spec, value, r)
+    if same and not r.ok and _passes(spec, value, r):
+        # r153 D3-2: a mistake that gives the right answer here does not change this case,
+        # so it cannot be why the student's answer is wrong (float32 with abs(E) was blamed
+        # on the abs where E > 0): a mistake is named only where it reproduces the student's
+        # numbers *and* they differ from the right ones
+        return None
+    return same
 
 
 def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) -> list[_Fit]:
@@ -425,8 +508,18 @@ def _all_it_must(fit: _Fit, failing: list[Result]) -> bool:
                if run_checker(lambda r=r: bool(must(r.args, r.expected, r.got)), False))  # fmt: skip
 
 
-def _same_answer(spec: Exercise, value, r: Result) -> bool:
-    return spec.match(r.got, value, r.args) if spec.match is not None else near(value, r.got)
+def _passes(spec: Exercise, value, r: Result) -> bool:
+    """Would ``value`` pass case ``r`` (the exercise's own test, :attr:`.Exercise.same`)?"""
+    return bool(run_checker(lambda: spec.same(value, r.expected, r.args), False))
+
+
+_STUDENT = object()
+
+
+def _same_answer(spec: Exercise, value, r: Result, got=_STUDENT) -> bool:
+    """Does ``value`` (what a mistake gives) equal the student's answer (or ``got``)?"""
+    got = r.got if got is _STUDENT else got
+    return spec.match(got, value, r.args) if spec.match is not None else near(value, got)
 
 
 def _active_parts(spec: Exercise, m: Mistake, r: Result) -> list[Mistake]:
@@ -468,7 +561,7 @@ def diagnose(
         kind = "nan" if nan else "constant"
         words = _NAN_WORDS if nan else (spec.constant or constant_words)(value)
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
-    mistakes = spec.all_mistakes() + [low_precision_mistake(spec)]
+    mistakes = spec.all_mistakes() + [rounded_mistake(), low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
     whole = sorted(

@@ -19,6 +19,7 @@ from ..core.interpolation import blend, perspective_weights
 from ..study.hardcases import CASES
 from .answers import as_number, as_numbers, short
 from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
+from .diagnosis import held_by_precision
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, num, tri_words, vec
 from .tolerance import all_close, close
@@ -56,7 +57,20 @@ DEGENERATE = (
     ("three vertices on one line", [[1.5, 1.5], [5.5, 3.5], [9.5, 5.5]], (3.5, 2.5)),
     ("two vertices equal", [[2.5, 6.5], [7.25, 1.5], [2.5, 6.5]], (4.5, 4.5)),
     ("flat, on the row y = 3.5", [[1.5, 3.5], [9.5, 3.5], [4.5, 3.5]], (4.5, 3.5)),
-)
+    # r153 D3-1: np.linalg.solve raises LinAlgError (a ValueError) only where elimination
+    # ends on an exact 0; on these (random collinear vertices on the grid, as r153 found for
+    # 780 of 2000) it ends on rounding noise and returns weights of about 1e14 instead
+    ("three vertices on one slanted line",
+     [[9.2578125, 3.9375], [21.546875, 1.765625], [-3.03125, 6.109375]], (9.7578125, 4.1875)),
+    ("three vertices on one steep line",
+     [[10.0, 14.35546875], [1.171875, 23.15234375], [5.5859375, 18.75390625]], (10.5, 14.5)),
+    ("three vertices on one line, 1000 px out",
+     [[1007.94921875, 1003.9609375], [992.32421875, 994.1171875],
+      [1000.13671875, 999.0390625]], (1007.5, 1003.5)),
+    ("three vertices on one line, 100 000 px out",
+     [[100009.6796875, 100010.20703125], [100011.08984375, 100007.4140625],
+      [100008.26953125, 100013.0]], (100009.5, 100010.5)),
+)  # fmt: skip
 
 
 def degenerate_cases():
@@ -75,6 +89,11 @@ def call_barycentric(fn, args):
         value = fn(*args)
     except ValueError:
         return REFUSED
+    except ArithmeticError as exc:  # r153 D3-8: ZeroDivisionError said nothing of ValueError
+        raise type(exc)(
+            f"{exc} (a triangle of zero area has no weights: 3.1 expects ValueError, raised "
+            "by your own test before dividing)"
+        ) from None
     return as_numbers(value, (3,), "3 weights, shape (3,)")
 
 
@@ -126,6 +145,18 @@ ORDER = (
     "opposite v_i (p with the other two) over the whole"
 )
 
+#: r153 D3-7: vertices reversed to make a negative area positive, the weights not put back
+REVERSED_WHERE_NEGATIVE = (
+    ": the same numbers in reverse order. Where E(v1, v2, v3) < 0 you reversed the vertices "
+    "(to make the area positive?) but returned the weights in that reversed order: λ_i "
+    "belongs to v_i, so reverse them back (or keep the signed area)"
+)
+
+
+def _reversed_where_negative(xy, p) -> np.ndarray:
+    lam = _areas(xy, p) / _area(xy)
+    return lam[::-1] if _area(xy) < 0 else lam
+
 
 def _clamped(xy, p) -> np.ndarray | None:
     """Negative weights set to 0 (and any above 1 to 1, as np.clip(λ, 0, 1) does) and the rest
@@ -142,6 +173,8 @@ def _epsilon_fits(args, expected, got) -> bool | None:
     xy, p = args
     if isinstance(got, str) or isinstance(expected, str):
         return None  # a zero area, or a refusal: it says nothing there
+    if held_by_precision(expected, got):  # r153 D3-2: float32's rounding, not a nudge
+        return False
     g, area = np.asarray(got, dtype=float), _area(xy)
     total = float(np.sum(g))
     if g.shape != (3,) or not np.isfinite(g).all() or total == 0:
@@ -199,11 +232,19 @@ def _epsilon_words(args, expected, got) -> str:
 
 def _zero_area_words(args, expected, got) -> str:
     g = np.asarray(got, dtype=float)
-    what = "NaN or infinity (a division by 0)" if not np.isfinite(g).all() else "numbers"
+    if np.isfinite(g).all():
+        # r153 D3-1: a solver's LinAlgError is raised only on an exact 0 pivot; rounding
+        # left a tiny one here, and the "weights" came out huge
+        return (
+            ": your solver returned weights for a zero-area triangle: these three vertices lie "
+            "on one line (a p on it has infinitely many weights, any other none), and no "
+            "solver's error is a test of that; test the area exactly, E == 0 (exact on the "
+            "1/256-px grid), and raise ValueError"
+        )
     return (
-        f": your answer is {what}, but these three vertices lie on one line: the triangle has no "
-        "area and no weights (a p on the line has infinitely many, any other none); raise "
-        "ValueError before dividing"
+        ": your answer is NaN or infinity (a division by 0), but these three vertices lie on "
+        "one line: the triangle has no area and no weights (a p on the line has infinitely "
+        "many, any other none); raise ValueError before dividing"
     )
 
 
@@ -226,7 +267,30 @@ def _proper(gives):
     return on_case
 
 
+def _float32_off_grid(args, expected, got) -> bool | None:
+    """A zero-area case whose vertices float32 cannot hold, answered with float32 numbers:
+    E == 0 in float32 is no test there (a right float32 solution gives numbers)."""
+    if not isinstance(expected, str):
+        return None
+    if isinstance(got, str):
+        return False
+    xy, p = args
+    moved = not np.array_equal(np.asarray(xy, np.float32).astype(float), np.asarray(xy, float))
+    return moved and held_by_precision(np.zeros(3), got)
+
+
+def _float32_off_grid_words(args, expected, got) -> str:
+    far, _ = _far(args)
+    return (
+        f": your answer is numbers, but these three vertices lie on one line. {num(far)} px "
+        f"from the origin float32 numbers are {num(float(np.spacing(np.float32(far))))} px "
+        "apart: in float32 the vertices leave the 1/256-px grid and their E is no longer 0. "
+        "Keep the coordinates in float64, where E == 0 is exact"
+    )
+
+
 ZERO_AREA_MISTAKES = [
+    Mistake("float32", _float32_off_grid_words, fits=_float32_off_grid),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
     Mistake("refused a proper triangle", _refused_words,
@@ -275,6 +339,8 @@ def _proper_mistakes() -> list[Mistake]:
         Mistake("rounded", _rounded_words,
                 fits=lambda args, expected, got: _rounded(np.asarray(got, float), expected)),
     ]  # fmt: skip
+    out.append(Mistake("reversed where E < 0", REVERSED_WHERE_NEGATIVE,
+                       gives=_reversed_where_negative))  # fmt: skip
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):
             out.append(Mistake("order", ORDER, gives=lambda xy, p, perm=perm: (_areas(xy, p) / _area(xy))[list(perm)]))  # fmt: skip
@@ -363,10 +429,28 @@ def _draw_bary(ax, case, got):
 
     _, (xy, p), expected = case
     if isinstance(expected, str) or isinstance(got, str):  # a zero area, or a refusal
-        said = "zero area: no weights" if isinstance(expected, str) else "you raised ValueError"
-        artists = [ax.text(0.3, 0.5, said, transform=ax.transAxes, ha="center")]
+        # r153 E13-14: no empty 0-1 axes beside the words; the student's answer said
+        ax.set_xticks([])
+        ax.set_yticks([])
+        for spine in ax.spines.values():
+            spine.set_visible(False)
+        if isinstance(expected, str):
+            said = f"zero area: no weights\n(E(v1, v2, v3) = {num(_area(xy))})"
+            if got is not None and not isinstance(got, str):
+                yours = ", ".join(f"{x:.3g}" for x in np.asarray(got, dtype=float))
+                said += f"\n\nyours: ({yours})"
+        else:
+            said = f"E(v1, v2, v3) = {num(_area(xy))}:\nits weights are\n{vec(expected)}"
+            said += "\n\nyou raised ValueError"
+        artists = [ax.text(0.27, 0.5, said, transform=ax.transAxes, ha="center", va="center",
+                           fontsize="small")]  # fmt: skip
         return artists + _draw_triangle_and_p(ax.inset_axes([0.56, 0.06, 0.42, 0.88]), xy, p)
     artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
+    error = None if got is None else float(np.max(np.abs(np.asarray(got, float) - expected)))
+    if error is not None and 0 < error < 1e-3 * max(1.0, float(np.abs(expected).max())):
+        # r153 E16: a float32 failure drew identical bars that said nothing
+        artists.append(ax.text(0.02, 0.86, f"yours differ by {error:.1g}:\nequal at this scale",
+                               transform=ax.transAxes, fontsize="x-small", va="top"))  # fmt: skip
     ax.set_xlim(-0.6, 6.0)  # the right part of the axes holds the triangle
     ax.set_ylabel("weight")
     low, high = ax.get_ylim()  # r84 03-4: room above the bars for the legend
@@ -390,6 +474,9 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
     colours = ("#1b9e77", "#d95f02", "#7570b3")
     artists = []
     lam = _areas(xy, p) / _area(xy) if _area(xy) else np.zeros(3)
+    # r153 E13-14: on a zero-area or sliver triangle the sub-triangles' labels pile up on p
+    extent = float(np.ptp(np.vstack([v, q]), axis=0).max()) or 1.0
+    labelled = abs(_area(xy)) >= 0.2 * extent**2  # E is twice the area: 0.87 equilateral
     for k in range(3):
         sub = np.array([q, v[(k + 1) % 3], v[(k + 2) % 3]])
         if lam[k] < 0:  # r94 D3-6: a negative share hatched, labelled outside the triangle
@@ -399,20 +486,24 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
         else:
             artists.append(ax.add_patch(Polygon(sub, color=colours[k], alpha=0.3, lw=0)))
             centre, label = sub.mean(axis=0), f"λ{k + 1}"
-        artists.append(ax.annotate(label, centre, ha="center", va="center", fontsize="small",
-                                   color=colours[k], bbox={"boxstyle": "round,pad=0.1",
-                                   "facecolor": "white", "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
+        if labelled:
+            artists.append(ax.annotate(label, centre, ha="center", va="center",
+                                       fontsize="small", color=colours[k], zorder=3,
+                                       bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
+                                             "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
     ring = np.vstack([v, v[:1]])
     artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     for k in range(3):
         artists.append(ax.annotate(f"v{k + 1}", v[k], fontsize="small", xytext=(3, 3),
                                    textcoords="offset points"))  # fmt: skip
-    artists += ax.plot(*q, "o", color="black", ms=4)
-    artists.append(
-        ax.annotate("p", q, fontsize="small", xytext=(4, -10), textcoords="offset points")
-    )
+    # r153 E15: p above the λ labels (a label centred near p hid the dot), its name boxed
+    artists += ax.plot(*q, "o", color="black", ms=4, zorder=5)
+    artists.append(ax.annotate("p", q, fontsize="small", xytext=(5, -11), textcoords="offset points",
+                               zorder=5, bbox={"boxstyle": "round,pad=0.05", "facecolor": "white",
+                                               "edgecolor": "none", "alpha": 0.9}))  # fmt: skip
     pts = np.vstack([v, q])
-    pad = 0.1 * float(np.ptp(pts, axis=0).max()) + 0.5
+    # r153 E14: a margin in proportion (a fixed 0.5 px shrank a 2-px triangle to a speck)
+    pad = 0.12 * float(np.ptp(pts, axis=0).max()) or 0.5
     ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
     ax.set_ylim(pts[:, 1].max() + pad, pts[:, 1].min() - pad)
     ax.set_aspect("equal", adjustable="box")
@@ -432,9 +523,10 @@ BARYCENTRIC = Exercise(
         barycentric, modules=("teachraster.core.barycentrics",)),),
     draw=_draw_bary, call=call_barycentric, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
-        # must not print the area ratio that the task leaves to the student
+        # must not print the area ratio that the task leaves to the student (r153 D3-6: the
+        # whole number, "= 9.343", not up to its decimal point)
         (re.compile(r": λ_i = E of the edge opposite v_i at p, divided by E\(v1, v2, v3\) = "
-                    r"[^;.]*"), ": the weights rebuild p (λ1·v1 + λ2·v2 + λ3·v3 = p) and sum "
+                    r"-?[0-9.e+-]*[0-9]"), ": the weights rebuild p (λ1·v1 + λ2·v2 + λ3·v3 = p) and sum "
          "to 1; check yours against both on this case"),
         # r94 D3-7: weights in another order were given the area ratio (a 3×3 solve's too)
         (" λ_i belongs to v_i: the area of the sub-triangle opposite v_i (p with the other "

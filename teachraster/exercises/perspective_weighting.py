@@ -23,7 +23,7 @@ from ..study.hardcases import CASES
 from .answers import as_numbers
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .scalars import vec
+from .scalars import num, vec
 from .tolerance import all_close
 
 
@@ -152,20 +152,66 @@ def explain_weights(args, expected, got) -> str:
     )
 
 
+def _sums_to_1(got) -> bool:
+    """Do the weights sum to 1 (to float noise)? One test for every text that says so."""
+    return abs(float(np.sum(got)) - 1) <= 1e-12
+
+
+def _sums_to_other_than_1(got) -> bool:
+    """A finite sum other than 1 (NaN is told NaN, not "they sum to nan")."""
+    return bool(np.isfinite(np.sum(got))) and not _sums_to_1(got)
+
+
+def _their_sum(got) -> str:
+    """The weights' sum, with the digits that tell it from 1 (r153 D3-4: 0.999999999 was
+    printed "1" beside "and weights sum to 1"): the one place that formats it."""
+    return num(float(np.sum(got)), 1.0)
+
+
 def _rule(args, expected, got) -> str:
     # r94 D3-3: "make the weights sum to 1" was told to weights that did
-    if abs(float(np.sum(got)) - 1) <= 1e-9:
+    if _sums_to_1(got):
         return " (μ_i ∝ λ_i / w_i; yours already sum to 1)"
     return " (μ_i ∝ λ_i / w_i, normalised to sum to 1)"
 
 
 def _sum_words(args, expected, got) -> str:
-    return f": they sum to {float(np.sum(got)):.6g}, and weights sum to 1"
+    return f": they sum to {_their_sum(got)}, and weights sum to 1"
 
+
+def _nudge(args, got) -> float | None:
+    """δ when ``got`` is λ_i/w_i ÷ (Σ λ_j/w_j + δ) for a small δ ≠ 0 (a guard against
+    dividing by 0), else None."""
+    lam, w = args
+    g = np.asarray(got, dtype=float)
+    total = float(np.sum(g))
+    if g.shape != (3,) or not np.isfinite(g).all() or total == 0 or _sums_to_1(g):
+        return None
+    with np.errstate(all="ignore"):
+        q = lam / w
+    s = float(np.sum(q))
+    if not np.isfinite(s) or s == 0:
+        return None
+    delta = s / total - s
+    if abs(delta) > 1e-3 * abs(s) or not np.allclose(g, q / (s + delta), rtol=1e-9, atol=1e-300):
+        return None
+    return delta
+
+
+def _nudge_words(args, expected, got) -> str:
+    return (
+        f": they sum to {_their_sum(got)}, not 1: you added a small number (about "
+        f"{_nudge(args, got):.0e}) to the sum you divide by (a guard against dividing by 0?); "
+        "divide by the sum itself (with every w > 0 and the point in front it is never 0)"
+    )
+
+
+#: r153 D3-4: an epsilon in the normaliser, ``q / (q.sum() + 1e-9)``
+NUDGED = Mistake("epsilon added to the sum", _nudge_words,
+                 fits=lambda a, e, g: _nudge(a, g) is not None)  # fmt: skip
 
 SYMPTOMS = (
-    Mistake("sum", _sum_words, fits=lambda a, e, g: abs(float(np.sum(g)) - 1) > 1e-9,
-            symptom=True),
+    Mistake("sum", _sum_words, fits=lambda a, e, g: _sums_to_other_than_1(g), symptom=True),
 )  # fmt: skip
 
 
@@ -188,7 +234,7 @@ def draw_weights(ax, case, got):
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    variant_mistakes(_variants, MISTAKES, SYMPTOMS),
+    [*variant_mistakes(_variants, MISTAKES), NUDGED, *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
