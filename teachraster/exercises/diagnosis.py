@@ -370,6 +370,15 @@ def _rounded_to(expected, got) -> str | None:
     return None
 
 
+def _whole(got) -> bool:
+    """Is every number of the answer a finite whole number?"""
+    g = _numbers(got)
+    if g is None or g.dtype == object:
+        return False
+    with np.errstate(invalid="ignore"):
+        return bool(np.isfinite(g).all() and np.array_equal(np.round(g), g))
+
+
 def rounded_mistake() -> Mistake:
     """The right numbers rounded (``np.round(λ, 4)``): r153 D3-3, told "you added a small
     number to E" and, in 3.2, to re-derive a right derivation. Named only where it gives
@@ -381,8 +390,7 @@ def rounded_mistake() -> Mistake:
             return None  # no number is right here (3.1's ValueError): no say
         if _rounded_to(expected, got) is not None:
             return True
-        with np.errstate(invalid="ignore"):  # whole numbers show no rounding: no say
-            return None if np.isfinite(g).all() and np.array_equal(np.round(g), g) else False
+        return None if _whole(got) else False  # whole numbers show no rounding: no say
 
     def words(args, expected, got):
         return (
@@ -561,8 +569,13 @@ def diagnose(
         kind = "nan" if nan else "constant"
         words = _NAN_WORDS if nan else (spec.constant or constant_words)(value)
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
-    mistakes = spec.all_mistakes() + [rounded_mistake(), low_precision_mistake(spec)]
+    rounded = rounded_mistake()
+    mistakes = spec.all_mistakes() + [rounded, low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
+    if all(run_checker(lambda r=r: _whole(r.got), False) for r in failing):
+        # rounding to N decimals shows only in an answer with a fraction: whole numbers
+        # everywhere are the exercise's own "whole numbers" (r22 D-6's faint pixel, 0)
+        fits = [f for f in fits if f.mistake is not rounded]
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
     whole = sorted(
         (f for f in fits if f.whole and not f.mistake.symptom),
