@@ -489,3 +489,42 @@ def _serialize_widget_messages() -> None:
 
 
 _serialize_widget_messages()
+
+_cell = threading.local()
+
+
+def _hold_drawing(*_args) -> None:
+    DRAWING.acquire()
+    _cell.held = getattr(_cell, "held", 0) + 1
+
+
+def _let_go_of_drawing(*_args) -> None:
+    # the cell that imported this module ends without having taken the lock: nothing to do
+    if getattr(_cell, "held", 0) > 0:
+        _cell.held -= 1
+        DRAWING.release()
+
+
+def _cells_hold_drawing(shell=None) -> None:
+    """A notebook cell runs holding :data:`DRAWING`.
+
+    With ipykernel 7 a widget's messages may be handled on a subshell's thread, and the
+    pictures drawn ahead run there too (``widgets.ahead``): they set an explorer to another
+    slider position and put it back. A cell reading the explorer meanwhile saw that other
+    state (stop 45's CI: ``ex.values`` of a picture drawn ahead after a PlaneExplorer drag's
+    release). Holding the lock for the cell makes such drawing wait for it.
+    """
+    if shell is None:
+        try:
+            from IPython import get_ipython
+        except ImportError:  # pragma: no cover - IPython comes with ipywidgets
+            return
+        shell = get_ipython()
+    if shell is None or getattr(shell, "_teachraster_cells_hold_drawing", False):
+        return
+    shell._teachraster_cells_hold_drawing = True
+    shell.events.register("pre_run_cell", _hold_drawing)
+    shell.events.register("post_run_cell", _let_go_of_drawing)
+
+
+_cells_hold_drawing()
