@@ -9,6 +9,8 @@ and recording changes nothing (traced == untraced frames, bit for bit).
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 from conftest import cases, examples, sample
@@ -1249,3 +1251,54 @@ def test_identical_passed_samples_print_on_one_row():
         assert not [a for a, b in pairs if a == b]
     finally:
         w.close()
+
+
+_ROW = re.compile(
+    r"^\s*(\d+)\s+([\d,-]+)\s+(.+?)\s+(-|empty|[\d.]+)\s+(empty|[\d.]+)\s+(empty|[\d.]+)(?:\s\s|$)"
+)
+
+
+def _table_rows(text: str) -> list[tuple]:
+    """(triangle, samples, outcome, depth, before, after) of each record row of a narrow
+    MSAA history table (no piece column), the samples expanded ("1-3" -> [1, 2, 3])."""
+    rows = []
+    for line in text.splitlines():
+        m = _ROW.match(line)
+        if m is None:
+            continue
+        samples = []
+        for part in m[2].split(","):
+            a, _, b = part.partition("-")
+            samples += range(int(a), int(b or a) + 1)
+        rows.append((int(m[1]), samples, m[3], m[4], m[5], m[6]))
+    return rows
+
+
+def test_folded_rows_print_the_depths_of_every_sample_they_stand_for():
+    """Review r159 C1: for the fan under 4x MSAA, pixel (23, 31) (Question 2's pixel), the
+    table folded triangle 4's refused samples 1-3 into one row "not_covered - empty empty",
+    though sample 1's buffer held triangle 3's 0.967634 (the depth strip beside it drew it):
+    only the reason was compared. A row stands for several samples only where each of them
+    prints the same outcome, depth, buffer before and after: sample 1 has a row of its own,
+    and at every pixel of the frame each folded row says what the unfolded rows of its
+    samples say."""
+    from teachraster.pipeline.debugging.frame_history import history_table
+
+    frame = tr.render(get_scene("fan"), None, 64, 48, trace=True, samples=4)
+    h = frame.history(23, 31)
+    one = [r for r in h.records if (r.triangle, r.sample) == (4, 1)][0]
+    assert one.outcome == "not_covered" and one.depth_before == one.depth_after < 1
+    rows = [row for row in _table_rows(h.table()) if row[0] == 4]
+    assert [row[1] for row in rows] == [[0], [1], [2, 3]]
+    assert rows[1][2:] == ("not_covered", "-", f"{one.depth_before:.6f}", f"{one.depth_after:.6f}")
+    assert rows[2][2:] == ("not_covered", "-", "empty", "empty")
+    for row in range(48):
+        for col in range(64):
+            h = frame.history(row, col)
+            flat = {(r[0], r[1][0]): r[2:] for r in _table_rows(history_table(h, True, fold=False))}
+            folded = _table_rows(h.table())
+            assert sorted(k for r in folded for k in ((r[0], s) for s in r[1])) == sorted(flat)
+            for tri, samples, *said in folded:
+                for s in samples:
+                    # a folded refused row's outcome text is the same; its why is the nearest
+                    assert flat[tri, s] == tuple(said), (row, col, tri, s, h.table())

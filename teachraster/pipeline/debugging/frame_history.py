@@ -626,10 +626,11 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
 def _folded(rows) -> list:
     """``rows`` [(record, outcome, why)] as [(record, outcome, why, sample text)], each run
     of one piece's consecutive samples that say the same as one row with their samples
-    ("0-3"): ``not_covered`` samples refused for the same reason, with the nearest miss ("4
-    samples, nearest outside E13 by 0.6400 px"); any other outcome where the row's outcome,
-    depths and value are equal (review r106 11-C2: a fan's pixel printed two identical
-    "passed (kept 2 of 4)" rows of triangle 5)."""
+    ("0-3"), where every column of the row is the same (:func:`_says_the_same`): the
+    outcome, the depths (the buffer's before and after too) and, ``not_covered``, the reason,
+    with the nearest miss ("4 samples, nearest outside E13 by 0.6400 px"), or else the value
+    (review r106 11-C2: a fan's pixel printed two identical "passed (kept 2 of 4)" rows of
+    triangle 5)."""
     out: list = []
     for r, outcome, why in rows:
         if out and out[-1][1] == outcome and _says_the_same(out[-1][0][0], r, outcome):
@@ -650,16 +651,23 @@ def _folded(rows) -> list:
 
 def _says_the_same(first, r, outcome: str) -> bool:
     """Whether record ``r`` (its outcome text ``outcome``, the same as ``first``'s) says what
-    ``first`` says in the table: the same piece and, refused, the same reason; otherwise the
-    same depths and value, to the bit (NaN equal to NaN)."""
+    ``first`` says in the table, so that one line can stand for both: the same piece, the same
+    depths — the fragment's, the buffer's before and after — to the bit (NaN equal to NaN)
+    and the same colours before and after; then, refused, the same reason, otherwise the
+    same value. Review r159 C1: comparing only the reason of refused samples folded a sample
+    whose buffer held 0.967634 (the fan, pixel (23, 31), triangle 4's sample 1) into a line
+    that printed its neighbours' "empty empty", beside a depth chart drawing 0.967634."""
     if (first.triangle, first.piece) != (r.triangle, r.piece):
+        return False
+    depths = zip((first.depth, first.depth_before, first.depth_after),
+                 (r.depth, r.depth_before, r.depth_after))  # fmt: skip
+    if not all(a == b or (np.isnan(a) and np.isnan(b)) for a, b in depths):
+        return False
+    if (first.color_before, first.color_after) != (r.color_before, r.color_after):
         return False
     if outcome == "not_covered":
         return first.reason == r.reason
-    depths = zip((first.depth, first.depth_before, first.depth_after),
-                 (r.depth, r.depth_before, r.depth_after))  # fmt: skip
-    same = all(a == b or (np.isnan(a) and np.isnan(b)) for a, b in depths)
-    return same and first.value == r.value and _why(first) == _why(r)
+    return first.value == r.value and _why(first) == _why(r)
 
 
 def _outcomes(h: PixelHistory) -> list[str]:
