@@ -1806,6 +1806,43 @@ def test_11_overdraw_comes_from_drawing_without_culling():
     assert z[1, 2] == z[0, 2] and (z[1, :2] < z[0, :2]).all()
 
 
+def test_11_the_hi_z_rows_depth_is_said_for_what_it_is_and_a_culled_record_is_shown():
+    """Review r159 C2: §5's cell printed "never interpolated: the history lists them without
+    values" right above a hi_z row with a depth of 0.975638. The line now says what that
+    number is (the depth the fragment would have had, set beside the buffer's), under the
+    table it explains. Review r159 8: the lesson never showed a ``culled`` record; the same
+    pixel drawn with cull="back" lists the back faces as culled, one of them the hi_z
+    triangle and one a back face whose edges missed the centre, with no edge and no depth."""
+    from notebook_runs import executed
+
+    ns = lesson("11_debugging_a_frame")
+    cells = executed("11_debugging_a_frame").notebook().cells
+    (cell,) = [c for c in cells if c.cell_type == "code" and "hz = sphere.history(" in c.source]
+    printed = "".join(o.get("text", "") for o in cell.outputs if o.output_type == "stream")
+    assert "never interpolated" not in printed and "without values" not in printed
+    records = [line.split() for line in printed.splitlines() if line[:3].strip().isdigit()]
+    hi_z = [str(ns.hz_row.triangle), "hi_z"]
+    (row,) = [line for line in printed.splitlines() if line.split()[:2] == hi_z]
+    depth = f"{ns.hz_row.depth:.6f}"
+    assert row.split()[2] == depth and row.split()[3] == f"{ns.hz_row.depth_before:.6f}"
+    said = " ".join(printed.split())
+    assert f"the hi_z row: {depth} is the depth triangle {ns.hz_row.triangle}'s fragment" in said
+    assert "would have had" in said and "before interpolating anything (no values)" in said
+    assert printed.index(row) < printed.index("the hi_z row:")  # under its table
+    # the culled record: the back faces at the same pixel, culled before any coverage test
+    before = {x.triangle: x.outcome for x in ns.hz}
+    after = {x.triangle: x for x in ns.culled_h}
+    culled = [t for t, x in after.items() if x.outcome == "culled"]
+    assert ns.hz_row.triangle in culled
+    assert any(before[t] == "not_covered" for t in culled)  # culling comes first
+    assert all(np.isnan(after[t].depth) and after[t].edge is None for t in culled)
+    assert all(before[t] == after[t].outcome for t in after if t not in culled)
+    assert sum(words[1] == "culled" for words in records) == len(culled)
+    text = " ".join(" ".join(c.source.split()) for c in cells if c.cell_type == "markdown")
+    assert "`culled` row names no edge and has no depth" in text
+    assert "(`not_covered` in the first table)" in text
+
+
 def test_11_helper_share_counts_every_lane_launched():
     ns = lesson("11_debugging_a_frame")
     # "Small triangles waste most of their quads' lanes on helpers": the sphere's median
