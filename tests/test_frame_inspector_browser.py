@@ -44,3 +44,38 @@ def test_clicking_the_frame_shows_that_pixels_history(lab, page):  # noqa: F811
     after = _wait_changed(pixel, before, "the inspected pixel")
     assert after is not None and after != before
     assert not page.errors, f"errors in the page: {page.errors[:3]}"
+
+
+#: (text width, room) of the chosen option of each menu of the page, in CSS px: the text
+#: measured in the menu's own font, the room its box leaves between its padding (a
+#: <select> cuts its chosen option's text silently: its scrollWidth says nothing)
+MENU_TEXT = """() => [...document.querySelectorAll('.widget-dropdown select')].map(s => {
+  const style = getComputedStyle(s);
+  const ctx = document.createElement('canvas').getContext('2d');
+  ctx.font = `${style.fontStyle} ${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  const text = s.options[s.selectedIndex] ? s.options[s.selectedIndex].text : '';
+  const room = s.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight);
+  return [text, Math.ceil(ctx.measureText(text).width), Math.floor(room)];
+})"""
+
+
+@pytest.mark.parametrize("app", ["lab/tree", "notebooks"])
+def test_every_view_of_the_inspectors_menu_reads_in_full(lab, page, app):  # noqa: F811
+    """Review r159 (lesson 11, 5): "nan (0 on built-in scenes)" was cut to "nan (0 on
+    built-in scenes" in the 260-px view menu. Each view chosen in turn, its name fits the
+    menu's box, in JupyterLab and Notebook 7."""
+    from test_browser_player import _run
+
+    cells = ["from teachraster.widgets import FrameInspector\n"
+             "FrameInspector('intersecting_triangles', 64, 48, backend='image')"]  # fmt: skip
+    _run(page, lab, cells, f"inspector_menu_{app.split('/')[0]}.ipynb", app=app)
+    menu = page.get_by_role("combobox", name="view")
+    menu.wait_for(timeout=120_000)
+    labels = menu.locator("option").all_inner_texts()
+    assert any(label.startswith("nan") for label in labels), labels
+    for label in labels:
+        menu.select_option(label=label)
+        page.wait_for_timeout(300)
+        cut = [(t, w, room) for t, w, room in page.evaluate(MENU_TEXT) if w > room]
+        assert not cut, cut
+    assert not page.errors, page.errors[:3]

@@ -339,11 +339,13 @@ class FrameInspector(Holdable):
         # narrower than ipywidgets' 300 px (the check boxes as wide as their text): at
         # 1024 x 768 with the file browser open (a 592-px column) the controls took 5 lines
         menu, short = widgets.Layout(width="260px"), widgets.Layout(width="150px")
+        # labels as wide as their words, not ipywidgets' 80 px: the room goes to the choice
+        # (review r159, lesson 11: "nan (0 on built-in scenes)" was cut, 146 px in 142)
+        fitted = {"description_width": "initial"}
         self.scene = widgets.Dropdown(options=choices, value=scene, description="scene",
-                                      layout=fit_width(menu))  # fmt: skip
+                                      layout=fit_width(menu), style=fitted)  # fmt: skip
         self.view = widgets.Dropdown(options=_views(self.frames, view), value=view,
-                                     description="view",
-                                     layout=menu)  # fmt: skip
+                                     description="view", layout=menu, style=fitted)  # fmt: skip
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples",
                                         layout=short)  # fmt: skip
         self.depth_test = widgets.Checkbox(
