@@ -102,9 +102,9 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
         saved = json.load(r)["content"]
     html = [o["data"].get("text/html", "") for c in saved["cells"] for o in c.get("outputs", [])
             if "data" in o]  # fmt: skip
-    # each widget: an output with the picture, and the widget's own (its text/html the same
-    # stand-in, for converters that have no widget state)
-    assert sum("teachraster-static" in h for h in html) == 8
+    # each widget: an output with the picture; the widget's own output has an empty
+    # text/html, so an untrusted copy (no CSS) shows the stand-in once (review r158)
+    assert sum("teachraster-static" in h for h in html) == 4
 
     # The kernel goes away under the open page: a vertex dragged says so (no silent editor).
     out = page.locator(".jp-OutputArea-output", has_text="EDITOR").last
@@ -140,3 +140,37 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
         assert img.evaluate("i => i.complete && i.naturalWidth > 100")
     errors = page.get_by_text("Error displaying widget")
     assert not any(e.is_visible() for e in errors.all()), "the manager's error is on show"
+
+
+def test_an_executed_copy_opened_untrusted_shows_each_standin_once(
+    lab,  # noqa: F811
+    page,  # noqa: F811
+    tmp_path,
+    monkeypatch,
+):
+    """Review r158 (05a): a copy executed by nbclient (nbconvert --execute: widget state
+    saved, no signature) opened in JupyterLab is untrusted. The sanitizer removes the
+    stand-in's <style>, and each output shows its text/html in place of the widget view; the
+    widget's own text/html was the stand-in too, so every stand-in stood twice."""
+    import nbformat
+    from nbclient import NotebookClient
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")  # a student's kernel: widgets, not answers
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(c) for c in CELLS if "EDITOR" not in c]
+    NotebookClient(nb, timeout=300, kernel_name="python3",
+                   resources={"metadata": {"path": str(tmp_path)}}).execute()  # fmt: skip
+    assert "widgets" in nb.metadata  # the widget state, as nbconvert saves it
+    name = "executed_copy.ipynb"
+    _shut_down_kernels(lab)
+    page.goto(f"{lab}/lab?reset")
+    page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
+    body = json.dumps({"type": "notebook", "content": json.loads(nbformat.writes(nb))})
+    assert _api(page, "PUT", f"/api/contents/{name}", body) in (200, 201)
+    page.goto(f"{lab}/lab/tree/{name}?reset")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    hints = page.get_by_text("No kernel is running")
+    hints.first.wait_for(state="visible", timeout=60_000)
+    page.wait_for_timeout(3000)  # every output rendered
+    shown = [h for h in hints.all() if h.is_visible()]
+    assert len(shown) == 4, f"{len(shown)} stand-ins on show for 4 widgets"

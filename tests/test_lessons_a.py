@@ -2032,3 +2032,51 @@ def test_04_r144_ritschel_step_questions_and_floor_diagonal():
     for t in text:
         if re.match(r"q_\w+\.hold\(\)", t):
             assert t.split("\n", 1)[0].endswith("# shown after you answer above"), t[:80]
+
+
+@pytest.mark.notebook
+def test_05a_r158_guard_band_formula_gpu_bands_and_check():
+    """Review r158 05a-4/10/11: the band was only printed, with teachraster's size alone and no
+    formula. The cell prints g = 2 * 0.999 * 2**(29 - 8) / max(W, H) - 1 (26,187 for 160 x
+    120), the bands Mesa's drivers program (llvmpipe's linear path |x/w| <= 2, Intel 8K and
+    16K px), the third vertex beyond them all, and that cutting at any band moves no pixel."""
+    ns = lesson("05a_zbuffer")
+    assert ns.limit_px == 2**21 and ns.band_formula == pytest.approx(ns.band, abs=1e-9)
+    assert f"{ns.band:,.0f}" == "26,187"
+    reach = {name.split(" (")[0]: px for name, (px, _) in ns.gpu_reach.items()}
+    assert reach == {"llvmpipe, linear path": 160, "Intel Gen6": 8192,
+                     "Intel Gen7": 16384, "teachraster": ns.band * 80}  # fmt: skip
+    assert ns.ADRENO_RANGE == {"a3xx": (-8192, 8191), "a4xx and later": (-32768, 32767)}
+    assert ns.vertex_px > max(reach.values()) and round(ns.vertex_px) == 3_464_102
+    assert len(ns.band_check) == 3
+    for pixels, du in ns.band_check.values():
+        assert pixels == 0 and du < 1e-12  # a cut moves no edge, and u stays to rounding
+    assert ns.whole.coverage.sum() > 100  # the floor is in the picture
+
+
+def test_05a_r158_words_conventions_prepass_and_try_it():
+    """Review r158 05a-1: the teachraster row cites CONVENTIONS.md, which said "x and y are
+    not clipped"; it now gives the band and its formula. 05a-8: the Try it named the
+    "cyclic" sticks below their question. 05a-9: a depth pre-pass needs invariant
+    positions. 05a-12: §1's paragraph split into the rule and a table of GL states."""
+    conventions = (Path(__file__).resolve().parent.parent / "CONVENTIONS.md").read_text()
+    flat = " ".join(conventions.split())
+    assert "x and y are not clipped" not in flat
+    assert "x and y only against a guard band far outside the image: |x|, |y| ≤ G·w" in flat
+    assert "G = 2 · 0.999 · 2^(29−s) / max(W, H) − 1" in flat
+    from teachraster.pipeline.geometry import clipping
+
+    assert "x and y are not clipped:" not in " ".join(clipping.__doc__.split())
+    cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    text = {c.get("id"): "".join(c["source"]) for c in cells}
+    row = next(line for line in text["c15b"].splitlines() if line.startswith("| teachraster |"))
+    assert "`CONVENTIONS.md` (*Coverage*)" in row and "g\\,w" in row
+    assert "cyclic" not in text[cells[-1]["id"]] and "three sticks" in text[cells[-1]["id"]]
+    prepass = " ".join(text["c11"].split())
+    assert "`invariant gl_Position;`" in prepass and "HLSL's `precise`" in prepass
+    assert "**bit-identical** depths" in prepass
+    assert "glDepthFunc" not in text["c02"] and text["c02_off"].startswith("### Turning")
+    for state in ("`glDepthFunc(GL_ALWAYS)`", "`glDepthMask(GL_FALSE)`",
+                  "`glDisable(GL_DEPTH_TEST)`"):  # fmt: skip
+        assert any(line.startswith(f"| {state}") for line in text["c02_off"].splitlines())
+    assert max(len(p) for p in text["c02"].split("\n\n")) < 600  # no 25-line paragraph

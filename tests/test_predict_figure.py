@@ -66,6 +66,34 @@ def test_the_picture_maps_pixels_where_the_grid_is():
         assert (column < 200).any(axis=1).mean() > 0.9
 
 
+def test_an_order_questions_picture_has_no_empty_band_round_it():
+    """Review r158 (05a): a square image in a taller figure left 110 px of white under the
+    sticks; the picture is cut to what is drawn, and the transform still finds the data."""
+    import base64
+    import io
+
+    from PIL import Image
+
+    from teachraster.widgets.predict_figure import TRIM_MARGIN_PX
+
+    def draw(ax):
+        ax.imshow(np.zeros((10, 10)), cmap="gray", extent=(0, 10, 10, 0))
+        ax.set(xticks=[], yticks=[], xlim=(0, 10), ylim=(10, 0))
+
+    q = PredictOrder("Order?", ["a", "b"], answer=["a", "b"], draw=draw, figsize=(6.0, 9.0))
+    img = np.asarray(Image.open(io.BytesIO(base64.b64decode(q.data["png"]))).convert("L"))
+    assert list(img.shape[::-1]) == q.data["size"]
+    dark_rows = np.flatnonzero((img < 128).any(axis=1))
+    dark_cols = np.flatnonzero((img < 128).any(axis=0))
+    h, w = img.shape
+    for empty in (dark_rows[0], h - 1 - dark_rows[-1], dark_cols[0], w - 1 - dark_cols[-1]):
+        assert empty <= TRIM_MARGIN_PX + 1  # the 9-inch figure held ~300 px of white
+    x0, y0, sx, sy = q.data["transform"]
+    # the black square fills the data box (0..10): the transform puts its corners there
+    assert abs(x0 - dark_cols[0]) <= 2 and abs(x0 + 10 * sx - dark_cols[-1]) <= 2
+    assert abs(y0 - dark_rows[0]) <= 2 and abs(y0 + 10 * sy - dark_rows[-1]) <= 2
+
+
 def test_point_and_order_verdicts():
     p = PredictPoint("Where?", answer=(1.0, 2.0), draw=None, xlim=(0, 4), ylim=(0, 4),
                      along=((0, 0), (4, 4)), tolerance=0.25)  # fmt: skip

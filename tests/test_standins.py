@@ -150,10 +150,32 @@ def test_saved_outputs_carry_a_standin_before_each_widget_view(monkeypatch, tmp_
     for i in views:
         assert HINT in outputs[i - 1]["data"].get("text/html", "")
     # both followed their picture (the last step; q at its end) once the cell that moved them
-    # let the kernel idle; the view's own text/html keeps the picture it was shown with
+    # let the kernel idle: the stand-in's picture is the one of the widget as it was left
     for i in views[2:]:
-        now, then = (_pngs(outputs[j]["data"]["text/html"]) for j in (i - 1, i))
-        assert now and then and now != then
+        assert _pngs(outputs[i - 1]["data"]["text/html"])
+    assert _untrusted_standins(outputs) == [1, 1, 1, 1]
+
+
+def _untrusted_standins(outputs: list) -> list[int]:
+    """How many stand-ins JupyterLab shows round each widget view of an untrusted notebook
+    (an nbconvert-executed copy): ``<style>`` is sanitized away, so FALLBACK_CSS hides
+    nothing, and each output shows its ``text/html`` (the widget view is not a safe
+    renderer). Counted over the view's output and the one before it."""
+    datas = [o["data"] if "data" in o else o for o in outputs]
+    views = [i for i, d in enumerate(datas) if VIEW in d]
+    return [sum("teachraster-static" in datas[j].get("text/html", "") for j in (i - 1, i))
+            for i in views]  # fmt: skip
+
+
+@pytest.mark.parametrize("name", _in_scope())
+def test_an_untrusted_notebook_shows_each_standin_once(name, shown):
+    """Review r158 (05a): the widget's own output carried the stand-in as its text/html too,
+    which an untrusted notebook (no CSS, text/html in place of the widget) showed twice."""
+    widget = examples()[name]()
+    if name == "Predict":
+        widget.headless = False
+    widget._ipython_display_()
+    assert set(_untrusted_standins(shown)) == {1}
 
 
 @pytest.mark.parametrize("name", sorted(BORROWS_SHOWN))

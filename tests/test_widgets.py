@@ -882,7 +882,9 @@ def test_player_and_editor_display_a_picture_output_before_the_widget(player, ed
         assert (
             "data:image/png;base64," in picture["text/html"] and "<style>" in picture["text/html"]
         )
-        assert view in live and "teachraster-static" in live["text/html"]
+        # the view's own text/html is empty: where it is rendered in place of the widget (an
+        # untrusted notebook, a converter) the stand-in above stands once (review r158)
+        assert view in live and live["text/html"] == ""
 
 
 def test_pictures_drawn_ahead_are_the_ones_a_toggle_draws_and_leave_the_fill_as_it_was():

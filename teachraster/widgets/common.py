@@ -246,8 +246,7 @@ class Shown:
         noun = getattr(self, "noun", Shown.noun)  # also for a class that borrows this method
         standin = box_standin(self.widget, noun)
         self._standin_id = f"teachraster-standin-{uuid.uuid4().hex}"
-        display_with_fallback({**self._repr_mimebundle_(), "text/html": standin}, standin,
-                              display_id=self._standin_id)  # fmt: skip
+        display_with_fallback(self._repr_mimebundle_(), standin, display_id=self._standin_id)
         follow = types.MethodType(Shown._update_standin, self)  # also where borrowed
         for w, name in _pictures(self.widget):
             w.observe(lambda _change: settle(follow), name)
@@ -309,9 +308,13 @@ def display_with_fallback(bundle: dict, fallback_html: str, *, display_id: str |
     JupyterLab prefers the widget view of a display and shows "Error displaying widget:
     model not found" once its kernel is gone: a ``text/html`` beside it in the same output
     is never shown. In an output of its own the fallback is what a reopened notebook shows;
-    :data:`FALLBACK_CSS` hides it while the live widget is on show. The bundle keeps its
-    own ``text/html`` (a converter without the widgets' state shows that one, in place of
-    the widget; the separate fallback is then hidden, as beside a live widget). With
+    :data:`FALLBACK_CSS` hides it while the live widget is on show. The widget's own
+    output carries an empty ``text/html`` (:data:`VIEW_HTML`), so the stand-in stands
+    once wherever that CSS is missing: an untrusted notebook (an nbconvert-executed copy)
+    has its ``<style>`` removed by JupyterLab's sanitizer and renders ``text/html`` in place
+    of the widget (its view is not a "safe" renderer), which showed every stand-in twice
+    (review r158, 05a); a converter without the widgets' state shows that empty
+    ``text/html`` too, not a second copy (``text/plain`` would show the widget's repr). With
     ``display_id`` the fallback can be replaced later (``update_display``), as the picture
     changes.
     """
@@ -320,7 +323,13 @@ def display_with_fallback(bundle: dict, fallback_html: str, *, display_id: str |
     transient = {"display_id": display_id} if display_id else None
     publish_display_data({"text/html": FALLBACK_CSS + fallback_html, "text/plain": STANDIN_PLAIN},
                          transient=transient)  # fmt: skip
-    publish_display_data(bundle[0] if isinstance(bundle, tuple) else bundle)
+    view = bundle[0] if isinstance(bundle, tuple) else bundle
+    publish_display_data({**view, "text/html": VIEW_HTML})
+
+
+#: The ``text/html`` of a widget's own output (:func:`display_with_fallback`): empty, so a
+#: page that renders it in place of the widget shows the stand-in above it, once
+VIEW_HTML = ""
 
 
 def standin_hint(noun: str) -> str:

@@ -503,7 +503,7 @@ class TriangleEditor(Holdable):
             display(self._repr_mimebundle_(), raw=True)
             return
         html = standin_html("", "editor", poster)  # the hint every stand-in gives
-        display_with_fallback({**self._repr_mimebundle_(), "text/html": html}, html)
+        display_with_fallback(self._repr_mimebundle_(), html)
 
     def close(self) -> None:
         """Close every widget of the editor."""

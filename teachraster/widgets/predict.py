@@ -462,7 +462,7 @@ class Predict(HoldsAnswer):
         # the question in an output of its own, before the widget: what a reopened notebook
         # shows where JupyterLab would say "model not found" (hidden while the widget lives)
         standin = self.standin_html()
-        display_with_fallback({**self.widget._repr_mimebundle_(), "text/html": standin}, standin)
+        display_with_fallback(self.widget._repr_mimebundle_(), standin)
         display(HTML(""), display_id=self._display_id)  # filled in by _record
 
     def _display_headless(self) -> None:

@@ -103,7 +103,8 @@ def _optional_picture(draw, figsize, style) -> dict:
     """The picture over an order or a choice: ``draw(ax)`` on one Axes, or none."""
     if draw is None:
         return {}
-    return figure_picture(_check_draw(draw), lambda fig: fig.add_subplot(), figsize, style)
+    return figure_picture(_check_draw(draw), lambda fig: fig.add_subplot(), figsize, style,
+                          trim=True)  # fmt: skip
 
 
 def _plural(noun: str, n: int) -> str:
@@ -122,10 +123,20 @@ def grid_axes(fig, width: int, height: int, side: float):
     return fig.add_axes((left / fw, bottom / fh, aw / fw, ah / fh))
 
 
-def figure_picture(draw, axes_for, figsize, style) -> dict:
+#: What :func:`figure_picture` keeps round what is drawn when it trims (pixels at 96 dpi)
+TRIM_MARGIN_PX = 10
+
+
+def figure_picture(draw, axes_for, figsize, style, *, trim: bool = False) -> dict:
     """Draw a figure once: ``axes_for(fig)`` makes and sets up its Axes, ``draw(ax)`` adds the
     lesson's artists. Returns the PNG (base64), its size in pixels and the transform from
-    data coordinates to picture pixels from the top left, ``[x0, y0, sx, sy]``."""
+    data coordinates to picture pixels from the top left, ``[x0, y0, sx, sy]``.
+
+    With ``trim`` the picture is cut to what is drawn, with a margin of
+    :data:`TRIM_MARGIN_PX`: an Axes of fixed aspect (an image) leaves the rest of its figure
+    empty, which stood as a white band between the picture and the widget's controls
+    (review r158, 05a: 110 px under the sticks).
+    """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -137,12 +148,23 @@ def figure_picture(draw, axes_for, figsize, style) -> dict:
             draw(ax)
         fig.canvas.draw()
         rgba = frame_rgba(fig)
-    h, w = rgba.shape[:2]
+        drawn = fig.get_tightbbox(fig.canvas.get_renderer()) if trim else None
+    h_fig, w = rgba.shape[:2]  # the whole figure; window y counts up from its bottom
+    h, left, top = h_fig, 0, 0
+    if drawn is not None:  # inches -> picture rows and columns (from the top), margin kept
+        m = TRIM_MARGIN_PX
+        left = max(int(np.floor(drawn.x0 * fig.dpi)) - m, 0)
+        right = min(int(np.ceil(drawn.x1 * fig.dpi)) + m, w)
+        top = max(h_fig - int(np.ceil(drawn.y1 * fig.dpi)) - m, 0)
+        bottom = min(h_fig - int(np.floor(drawn.y0 * fig.dpi)) + m, h_fig)
+        rgba = rgba[top:bottom, left:right]
+        h, w = rgba.shape[:2]
     bbox = ax.get_window_extent()
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     sx, sy = bbox.width / (x1 - x0), -bbox.height / (y1 - y0)
     return {"png": base64.b64encode(encode_png(rgba)).decode("ascii"), "size": [w, h],
-            "transform": [bbox.x0 - sx * x0, (h - bbox.y0) - sy * y0, sx, sy]}  # fmt: skip
+            "transform": [bbox.x0 - sx * x0 - left, (h_fig - bbox.y0) - sy * y0 - top,
+                          sx, sy]}  # fmt: skip
 
 
 class FigurePrediction(HoldsAnswer, Explorable):

@@ -6,10 +6,12 @@ triangle is clipped in clip space against ``-w <= z <= w`` (Sutherland-Hodgman),
 everything is still linear: a new vertex on an edge is ``v0 + t (v1 - v0)`` with
 ``t = d0 / (d0 - d1)`` for the signed distances d to the plane, and its attributes are
 interpolated with the same t (attributes are linear in clip space, which is exactly why
-perspective-correct interpolation later divides by w). x and y are not clipped: the
-bounding box does that in screen space. But like a GPU's guard band, optional planes
-``|x|, |y| <= guard * w`` far outside the image keep window coordinates within the range
-where the fixed-point edge functions are exact; they cut only invisible parts.
+perspective-correct interpolation later divides by w). x and y are not clipped at the
+image's edges: the bounding box does that in screen space. They are clipped only against a
+guard band, as a GPU's are: the planes ``|x|, |y| <= guard * w`` far outside the image
+(``render`` always passes them, sized by ``guard_band`` in ``rendering/stages.py``) keep
+window coordinates within the range where the fixed-point edge functions are exact; they
+cut only invisible parts.
 
 Every plane passes through the origin of clip space, so clipping is *homogeneous*:
 multiplying a vertex's (x, y, z, w) by any positive factor moves it along its own ray and
