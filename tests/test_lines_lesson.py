@@ -420,14 +420,15 @@ def test_tie_table_says_what_the_cell_computes(ns):
         ours, gl, d3d = (r[0] for r in ns.tie_rows[name])
         # the two candidates: row y - 1 above the corner (y down), row y below it
         said = [y - 1 if "upper" in c else y if "lower" in c else None for c in cells[1:]]
-        assert said == [gl, d3d, ours], name
+        # review r160 12a-2: Vulkan's column, its rule the y-down one teachraster computes
+        assert said == [gl, ns.vk_rows[name][0], d3d, ours] and ns.vk_rows[name] == [ours], name
     # review r111 12a-1: the y-major tie, at x = 1 in row 1, between columns 0 and 1; Direct3D's
     # y-major diamond keeps its right corner (D3D11.3 §3.4.3), so all three light column 0
     steep = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| y-major")]
     assert len(steep) == 1
     said = [0 if "left" in c else 1 if "right" in c else None for c in steep[0][1:]]
     ours, gl, d3d = (c[0] for c in ns.steep_cols)
-    assert said == [gl, d3d, ours] == [0, 0, 0]
+    assert said == [gl, ns.steep_vk[0], d3d, ours] == [0, 0, 0, 0]
 
 
 def test_explorer_count_beside_section_2s(nsb):
@@ -575,7 +576,7 @@ def test_12a_review_r83_precision_and_the_wide_line_question(ns):
     assert len(ns.rect_only) == 5 and len(ns.gl_only) == 2 and 4 < ns.tall < 4.5
     code = _cells_before("12a_lines", "widetbl", kinds=("code",))
     assert "filled as two triangles, as llvmpipe does" in code
-    asked = code.index("q_wide = PredictPixels(")
+    asked = code.index("q_wide = Predict(")  # review r160: a number, not the figure's pixels
     assert asked < code.index("q_wide.hold()") < code.index("wide_differ = np.argwhere")
 
 
@@ -596,9 +597,17 @@ def test_12a_wide_question_has_no_hair_thin_pixels(ns):
             t = np.clip((grid - a) @ e / (e @ e), 0, 1)
             assert np.linalg.norm(a + t[:, None] * e - grid, axis=1).min() >= 0.1
     assert ns.margin >= 0.1
+    # review r160 12a: q_wide no longer asks for the figure's pixels (they could be read off
+    # it): it asks, before any figure, how the counts of a long line compare, which takes the
+    # heights √(1 + m²)·4 and 4; the stem gives the slope, never the heights nor the counts
     code = _cells_before("12a_lines", "widetbl", kinds=("code",))
-    asked = code.split("q_wide = PredictPixels(")[1].split("answer=")[0]
-    assert "no centre lies closer than " in asked and "{margin:.2f} px to either outline" in asked
+    asked = code.split("q_wide = Predict(")[1].split("answer=")[0]
+    assert "long_slope:.4f" in asked and "per_100" not in asked and "by_area" not in asked
+    assert "tall" not in asked and "long_rect" not in asked
+    assert abs(ns.per_100 - ns.by_area) < 0.5 and ns.per_100 == pytest.approx(114.5, abs=0.05)
+    assert (ns.long_rect, ns.long_gl) == (4579, 4000)
+    # a student who takes the short figure's slope 1/2 (111.8) is told wrong
+    assert abs(100 * np.hypot(1, 0.5) - round(ns.per_100, 1)) > 1.5
 
 
 def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
@@ -693,6 +702,12 @@ def test_review_r105_dda_and_smooth_line_predictions(ns):
     and that cell is held."""
     assert ns.dda_run == 28 and abs(ns.dda_lead / ns.dda_slope - ns.dda_run) < 1
     assert ns.dda_wrong[0] == ns.first_column and len(ns.dda_wrong) == ns.dda_run + 1
+    # review r160: q_dda asks for the worst case float32's spacing allows (37 columns), which
+    # the real run (28) stays under; the additions per power-of-two range double
+    assert round(ns.dda_worst_run) == 37 and ns.dda_run < ns.dda_worst_run
+    assert ns.dda_binades == [5454, 10908, 21817]
+    spacing = [2.0**-25, 2.0**-24, 2.0**-23]
+    assert ns.dda_worst == pytest.approx(sum(n * u / 2 for n, u in zip(ns.dda_binades, spacing)))
     assert (ns.sm_row, ns.sm_col) == (3, 6) and ns.sm_area == pytest.approx(0.439, abs=1e-3)
     assert ns.one_px[ns.sm_row + 1, ns.sm_col] and not ns.one_px[ns.sm_row, ns.sm_col]
     assert ns.smooth[ns.sm_row, ns.sm_col] == ns.sm_area
@@ -722,7 +737,7 @@ def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypat
     cases = {
         "ddaq": (
             "q_dda",
-            [("28", True), ("27", True), ("29", True), ("25", False), ("1", False)],
+            [("37", True), ("34", True), ("40", True), ("28", False), ("1", False)],
         ),  # fmt: skip
         "smoothq": (
             "q_smooth",

@@ -309,7 +309,11 @@ def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
         assert trace.caption(1) == "x-major: walk columns 0..12, one step each"
         assert trace.steps.major.tolist() == list(range(13))
         captions = [trace.caption(k) for k in range(2, len(trace))]
-        tied = [c for c in captions if "a tie: GL's perturbation" in c]
+        tied = [
+            c
+            for c in captions
+            if "a tie, decided by moving the end points by −(ε, ε²) with y down" in c
+        ]
         assert len(tied) == 1 and tied[0].startswith("column 6, line at the centre: y = 3;")
         assert "pixel (row 3, col 6)" in tied[0]
         player.slider.value = len(trace) - 1

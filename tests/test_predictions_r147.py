@@ -106,9 +106,13 @@ def test_12a_q_dda_needs_the_gap_and_the_slope_worked_out():
     assert lead == ns.dda_lead and abs(lead / ns.dda_slope - ns.dda_run) < 1
     stem = _asked_text("12a_lines", "q_dda = Predict(")
     assert "dda_lead" not in stem and "dda_slope" not in stem
-    assert "dda_sum[crossed[0]]:.7f" in stem and "dda_exact[crossed[0]]:.7f" in stem
+    # review r160: the stem gave the two y's, and the answer was one division; it now asks for
+    # the worst case from float32's spacings (given) and the number of additions (not given)
+    assert "2⁻²⁵" in stem and "2⁻²³" in stem and "dda_binades" not in stem
+    assert "dda_sum[crossed[0]]" not in stem and "dda_worst" not in stem
     seen = seen_before_check("12a_lines", "q_dda = Predict(", "q_dda")
-    for given in (f"{ns.dda_lead:.6f}", f"{ns.dda_slope:.3e}", f"{ns.dda_run} columns"):
+    for given in (f"{ns.dda_lead:.6f}", f"{ns.dda_slope:.3e}", f"{ns.dda_run} columns",
+                  f"{ns.dda_worst:.6f}", f"{ns.dda_worst_run:.1f}", f"{ns.dda_binades[2]:,}"):  # fmt: skip
         assert given not in seen, given
 
 

@@ -12,7 +12,9 @@ p0 towards p1 meets the diamond, except the diamond p1 lies in (so a polyline li
 shared vertex once). GL removes ties by moving both end points by ``-(ε, ε²)``; here that
 perturbation is carried symbolically (values ``n0 + n1 ε + n2 ε²`` compared
 lexicographically), so the answer is exact on the snapped grid, not an approximation with a
-small ε.
+small ε. It is applied to these y-down numbers, as Vulkan's *Bresenham Line Segment
+Rasterization* applies it in its framebuffer coordinates (origin upper left); GL applies it
+in its y-up window, which decides one kind of tie the other way (:func:`gl_decides_otherwise`).
 """
 
 from __future__ import annotations
@@ -40,8 +42,8 @@ class LineSteps:
     Bresenham: the error term before its decision; DDA: the accumulated float32 minor
     coordinate, px). Candidates: ``step`` (m,) the step each belongs to, ``rows``, ``cols``
     (m,) the pixel, ``state`` (m,) int8 :data:`MISSED`, :data:`LIT` or :data:`ENDS_INSIDE`;
-    ``tie`` (m,) bool (diamond rule, traced) where GL's perturbation by ``-(ε, ε²)`` decided
-    the candidate's state (the segment touches its diamond's boundary), else None.
+    ``tie`` (m,) bool (diamond rule, traced) where the perturbation by ``-(ε, ε²)`` (y down)
+    decided the candidate's state (the segment touches its diamond's boundary), else None.
     """
 
     x_major: bool
@@ -57,6 +59,33 @@ class LineSteps:
     def lit(self) -> np.ndarray:
         """(m,) bool: the candidates the rule lit."""
         return self.state == LIT
+
+
+def gl_decides_otherwise(p0, p1) -> bool:
+    """Whether GL decides this line's ties otherwise than the y-down rule here.
+
+    Both move the end points by ``-(ε, ε²)``, GL in its window (y up, GL 4.6 §14.5.1),
+    this module and Vulkan (*Bresenham Line Segment Rasterization*) with y down. On a sloped
+    line the shift by ε, the same on both grids, moves every crossing far more than ε², and a
+    vertical line is moved across by ε alone; only a horizontal line lying on a row boundary
+    is moved by ε² alone, up here and down in GL: here it lights the row above the boundary,
+    in GL the row below.
+
+    Parameters
+    ----------
+    p0, p1 : (2,) array-like
+        The snapped end points, px (y down).
+
+    Returns
+    -------
+    bool
+        True for a horizontal segment on a row boundary (integer y).
+
+    >>> gl_decides_otherwise((0.3, 1.0), (8.3, 1.0)), gl_decides_otherwise((0.5, 0.5), (8.5, 4.5))
+    (True, False)
+    """
+    y0, y1 = float(p0[1]), float(p1[1])
+    return y0 == y1 and float(p0[0]) != float(p1[0]) and y0.is_integer()
 
 
 def major_axis(d) -> bool:
@@ -134,7 +163,7 @@ def _less(x, y):
 
 def _less_tie(x, y):
     """(x < y, whether ε decided it): the comparison of :func:`_less` and where the values'
-    ε-free parts are equal, so that only GL's perturbation tells them apart."""
+    ε-free parts are equal, so that only the perturbation tells them apart."""
     out = np.zeros(np.broadcast(x[0], y[0]).shape, dtype=bool)
     undecided = np.ones_like(out)
     by_eps = np.zeros_like(out)
@@ -170,7 +199,7 @@ def _axis_bounds(centre, a_coord, d, half, tie):
 def diamond_states(a, b, unit, rows, cols, *, ties: bool = False):
     """For candidate pixels, whether the perturbed segment a→b meets their open diamond and
     whether it ends inside it: int8 :data:`LIT`, :data:`ENDS_INSIDE` or :data:`MISSED`;
-    with ``ties=True`` also (m,) bool, where GL's perturbation decided that state (a
+    with ``ties=True`` also (m,) bool, where the perturbation decided that state (a
     comparison equal but for its ε terms while the others hold, or the end point on the
     diamond's boundary; the
     page's ``diamondState`` marks the same ones).

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .line_rules import ENDS_INSIDE, LIT, LineSteps
+from .line_rules import ENDS_INSIDE, LIT, LineSteps, gl_decides_otherwise
 from .trace import Step
 from .validate import as_int
 
@@ -119,8 +119,18 @@ class LineTrace:
             for r, c, st in zip(s.rows[mine], s.cols[mine], s.state[mine], strict=True)
         ]
         if s.tie is not None and s.tie[mine].any():  # the segment touches a diamond's boundary
-            parts.append("a tie: GL's perturbation of the end points by −(ε, ε²) decided it")
+            parts.append(self._tie_words())
         return head + ("; " + "; ".join(parts) if parts else "; no pixel lit")
+
+    def _tie_words(self) -> str:
+        """Which rule decided a tie: the ``-(ε, ε²)`` shift with y down (Vulkan's), and what GL,
+        shifting with y up, does there (review r160 12a-1: GL was named for both)."""
+        words = ("a tie, decided by moving the end points by −(ε, ε²) with y down (Vulkan's "
+                 "Bresenham rule)")  # fmt: skip
+        if gl_decides_otherwise(self.p0, self.p1):
+            return words + ("; GL moves them with y up and lights the pixel below instead (the "
+                            "line lies on a row boundary)")  # fmt: skip
+        return words + "; GL, moving them with y up, decides it the same way"
 
     def coverage_at(self, k: int) -> np.ndarray:
         """(height, width) bool: the pixels lit once steps 0..k have run (none in set-up)."""

@@ -5,7 +5,8 @@ open diamond around its centre and goes on out of it, and leave out the diamond 
 ends in. The LinePlayer's captions talk about those diamonds; here they are drawn, every
 pixel's, with the ones the walk looked at outlined, the lit ones filled and the end's dashed.
 The end points are dragged, and snap onto pixel centres, diamond corners and pixel corners,
-where GL's perturbation by -(ε, ε²) decides the ties (marked "tie").
+where the perturbation by -(ε, ε²) decides the ties (marked "tie"): with y down, as Vulkan's
+Bresenham rule; the caption says where GL, which applies it with y up, decides otherwise.
 
 Computed in the page (``static/raster_rules.js``, ``static/explore_lines.js``) with the
 engine's exact rule (:mod:`teachraster.core.line_rules`); the tests compare every decision.

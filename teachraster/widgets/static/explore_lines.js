@@ -5,8 +5,9 @@
 // lights the pixels whose diamond the segment p0 -> p1 meets and goes on out of, not the one
 // it ends in (GL 4.6 §14.5.1, Direct3D). GL removes ties by moving both end points by
 // -(ε, ε²); here, as in teachraster.core.line_rules, that perturbation is carried exactly:
-// values n0 + n1 ε + n2 ε² compared lexicographically, on the snapped grid. The tests
-// compare every decision with the engine's.
+// values n0 + n1 ε + n2 ε² compared lexicographically, on the snapped grid, with y down (as
+// Vulkan's Bresenham rule; GL's window has y up). The tests compare every decision with the
+// engine's.
 
 export const MISSED = 0;
 export const LIT = 1;
@@ -113,6 +114,24 @@ export function litPixels(p0, p1, width, height, bits = SUBPIXEL_BITS) {
   return out;
 }
 
+// Whether GL, moving the ends by -(ε, ε²) with y up, decides this walk's ties otherwise: a
+// horizontal segment on a row boundary (teachraster.core.line_rules.gl_decides_otherwise)
+export function glDecidesOtherwise(walk) {
+  const [a, b] = [walk.a, walk.b];
+  return a[1] === b[1] && a[0] !== b[0] && a[1] % walk.unit === 0;
+}
+
+// Which rule decided a tie, as teachraster.core.line_trace words it (review r160 12a-1)
+function tieWords(walk) {
+  const words = "A tie, decided by moving the end points by −(ε, ε²) with y down (Vulkan's " +
+    "Bresenham rule)";
+  if (glDecidesOtherwise(walk)) {
+    return words + "; GL moves them with y up and lights the pixel below instead (the line " +
+      "lies on a row boundary).";
+  }
+  return words + "; GL, moving them with y up, decides it the same way.";
+}
+
 // What one step decided, in the words of the LinePlayer's captions.
 export function stepCaption(walk, k) {
   const s = walk.steps[k];
@@ -127,7 +146,7 @@ export function stepCaption(walk, k) {
   if (lit.length) text += `It meets the diamond of ${lit.map(where).join(" and ")} and goes on out of it: lit. `;
   if (ends.length) text += `It ends inside the diamond of ${ends.map(where).join(", ")}: left to the next segment. `;
   if (!lit.length && !ends.length) text += "It meets no diamond here: nothing lit. ";
-  if (ties.length) text += "A tie: GL's perturbation of the end points by −(ε, ε²) decided it.";
+  if (ties.length) text += tieWords(walk);
   return text;
 }
 
