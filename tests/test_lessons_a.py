@@ -1274,6 +1274,10 @@ def test_pipeline_map_and_figure_name_the_same_lessons_for_a_stage():
     assert not re.search(r'"\d\d[ab]?(, \d\d[ab]?)*"', js)  # no lesson list in the page
     stages = {stage.name: stage for stage in PIPELINE_STAGES}
     assert set(SHARED_STAGES.values()) == set(stages)  # every stage of the figure is mapped
+    # review r157 00-10: the figure had 8 stages, the map 10 (no assembly, no set-up, which
+    # the text then named "as the map shows"): the same ten, in the same order
+    assert list(SHARED_STAGES) == page_stages
+    assert list(SHARED_STAGES.values()) == [stage.name for stage in PIPELINE_STAGES]
     for key, name in SHARED_STAGES.items():
         assert lessons[key] == stages[name].lessons, key
     for stem in {s for stems in lessons.values() for s in stems}:
@@ -1341,15 +1345,22 @@ def test_early_z_in_00_and_its_picture_agrees_with_05a():
     assert "only the depth write (and any stencil update) waits" in tour
     assert "conservative depth" in tour and "gl_FragDepth" in tour
     assert "(10_tiles_and_hierarchical_z.ipynb)" in tour and "(05a_zbuffer.ipynb)" in tour
-    assert "test early, write late" in picture  # r10/r11: "can delay only the write" misread
+    assert "test early and write depth late" in picture  # r10/r11: "can delay only the write"
+    # review r157 00-11: "neither discards ... (discard: test early, write late)" read as a
+    # contradiction; the discard case is a sentence of its own, in the figure and the map
+    label = " ".join(pipeline_overview.EARLY_Z_LABEL.split())
+    assert "(discard:" not in label and "memory. If it may discard, some GPUs" in label
+    js = (NOTEBOOKS.parent / "teachraster" / "widgets" / "static" / "explore_pipeline.js").read_text()
+    note = re.search(r"export const EARLY_Z_NOTE = \[(.*?)\];", js, flags=re.S)[1]
+    assert "(discard:" not in note and "memory. With a shader that may discard," in note
     with tr_style():
         fig, ax = plt.subplots(figsize=(9, 7.5))
         plot_pipeline(ax)
     drawn = " ".join(" ".join(t.get_text() for t in ax.texts).split())
     assert "early-z (lessons 05a, 10)" in drawn
     assert (
-        "only if the shader neither discards, writes depth nor writes memory (discard: test"
-        in drawn
+        "only if the shader neither discards, writes depth nor writes memory. If it may "
+        "discard, some GPUs still test early and write depth late." in drawn
     )
     plt.close(fig)
 
