@@ -872,10 +872,15 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     # bound is (G + 1) · 8 of the G printed (inclusive, as classify tests the band)
     guard, reach = guard_band_reach(16, 16, 8)
     assert (guard, reach) == (data["guard"], data["guardPx"]) == (261880.856, 2095054.848)
-    assert "G = 261,880.856" in html["clip"] and "≤ (G + 1) · 16/2 = 2,095,054.848 px" in html["clip"]
+    assert (
+        "G = 261,880.856" in html["clip"] and "≤ (G + 1) · 16/2 = 2,095,054.848 px" in html["clip"]
+    )
     shown = re.findall(r"[\d,]+\.\d+", html["clip"].split("G = ")[1])[:2]
     g_shown, px_shown = (float(x.replace(",", "")) for x in shown)
-    assert round((g_shown + 1) * 8, 3) == px_shown and "&lt;" not in html["clip"].split("G = ")[1][:200]
+    assert (
+        round((g_shown + 1) * 8, 3) == px_shown
+        and "&lt;" not in html["clip"].split("G = ")[1][:200]
+    )
     assert "2,097,152 px" in html["clip"] and "a wider one gets a smaller G" in html["clip"]
     assert "cleared to white" in html["blend"] and "dark grey" not in html["blend"]
     # early-z (test and write before the shader) only when the shader neither discards nor

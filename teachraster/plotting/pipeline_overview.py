@@ -182,7 +182,9 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
     out = PipelineArtists()
     early = _early_z_row([s.name for s in stages])
     # the early test takes a row of its own (EARLY_Z_ROWS tall), after the stage ``early``
-    rows = [i + (EARLY_Z_ROWS if early is not None and i > early else 0) for i in range(len(stages))]
+    rows = [
+        i + (EARLY_Z_ROWS if early is not None and i > early else 0) for i in range(len(stages))
+    ]
     right = 9.0  # the boxes end here
     ax.set(xlim=(0, 9.1), ylim=(rows[-1] + 0.65, -0.65))
     ax.set_axis_off()

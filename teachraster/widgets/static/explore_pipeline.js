@@ -3,18 +3,19 @@
 // triangle's data there. Every number is the engine's (teachraster.widgets.pipeline_map
 // computes them); this file only lays them out.
 
-// [key, name, what it does]; "|" breaks the name into lines. The lessons in each box are
-// the kernel's (data.lessons: the static figure's table, PIPELINE_STAGES), not kept here.
+// [key, name, what it does]; "|" breaks the name into lines. The names are the static
+// figure's (PIPELINE_STAGES: the same ten stages, review r157 00-10), the lessons in each box
+// the kernel's (data.lessons, from that table), not kept here.
 export const STAGES = [
-  ["vertex", "vertex|shader", "model → clip space"],
+  ["vertex", "vertex|processing", "the vertex shader: model → clip space"],
   ["assembly", "primitive|assembly", "vertices → triangles"],
   ["clip", "clipping|(guard band)", "near/far; x, y only beyond the guard band"],
-  ["divide", "divide by w", "clip → NDC"],
+  ["divide", "perspective|divide", "x, y, z ÷ w: clip → NDC"],
   ["viewport", "viewport", "NDC → window x, y, depth"],
   ["setup", "triangle|set-up", "edges, facing, culling, bounding box"],
   ["rasterize", "rasterisation", "the pixel centres inside become fragments"],
-  ["fragment", "fragment|shader", "interpolated attributes → colour"],
-  ["depth", "depth and|stencil test", "nearer wins (stored per pixel)"],
+  ["fragment", "fragment|shading", "the fragment shader: interpolated attributes → colour"],
+  ["depth", "depth test", "nearer wins (stored per pixel), and the stencil test"],
   ["blend", "blending", "colour → the colour target"],
 ];
 
@@ -219,7 +220,7 @@ function diagram(onPick, lessons) {
   // a button too: it opens the depth test's stage, where early-z is explained (review r77
   // 00-8: clicking it did nothing). data-early, not data-stage: one box per stage
   const early = svg("g", { class: "stage", tabindex: 0, role: "button", "data-early": "depth",
-    "aria-label": "early depth test: see the depth and stencil test" });
+    "aria-label": "early depth test: see the depth test" });
   early.append(svg("rect", { x: ex, y: ey, width: ew, height: eh, rx: 6, fill: "#fff",
     stroke: "#333", "stroke-width": 1.5, "stroke-dasharray": "7 5" }));
   early.append(svg("text", { x: ex + ew / 2, y: ey + 19, "text-anchor": "middle",
