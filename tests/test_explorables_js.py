@@ -881,7 +881,7 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
         round((g_shown + 1) * 8, 3) == px_shown
         and "&lt;" not in html["clip"].split("G = ")[1][:200]
     )
-    assert "2,097,152 px" in html["clip"] and "a wider one gets a smaller G" in html["clip"]
+    assert "2,097,152 px" in html["clip"] and "a larger one gets a smaller G" in html["clip"]
     assert "cleared to white" in html["blend"] and "dark grey" not in html["blend"]
     # early-z (test and write before the shader) only when the shader neither discards nor
     # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the

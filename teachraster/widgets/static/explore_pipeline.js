@@ -55,7 +55,7 @@ export function stageHtml(data, key) {
         `window |x|, |y| ≤ (G + 1) · ${Math.max(data.width, data.height)}/2 = ` +
         `${digits(data.guardPx, 3)} px, just inside the ${digits(data.exactPx)} px within ` +
         "which the integer edge functions of lesson 02 stay exact. G is set per image: " +
-        `this ${data.width} × ${data.height} window's; a wider one gets a smaller G, the same ` +
+        `this ${data.width} × ${data.height} window's; a larger one gets a smaller G, the same ` +
         "reach in pixels. The rasteriser's bounding box " +
         "does the rest. The test, on the clip coordinates (before any divide):</p><table>" +
         row(["", "x", "y", "z", "w", "−w ≤ x, y, z ≤ w?"], true) +
