@@ -290,9 +290,12 @@ def test_pipeline_stage_clicked(lesson):
     w.locator("[data-early=depth]").click()
     w.get_by_text("Early-z", exact=True).wait_for(timeout=5_000)
     assert _kernel(lesson, "pipeline.state['stage']") == "depth"
+    # review r157 00-13: the early box is marked with the depth stage whose page it opens
+    assert w.locator("[data-early=depth] rect").get_attribute("fill") == "#fde9c8"
     w.locator("[data-stage=vertex]").click()
     # the page redraws on its next frame: wait for it rather than read the text at once
     w.get_by_text("perspective projection").first.wait_for(timeout=5_000)
+    assert w.locator("[data-early=depth] rect").get_attribute("fill") == "#fff"
     assert _kernel(lesson, "pipeline.state['stage']") == "vertex"
     # each box prints the lessons the kernel sent (the page keeps no list of its own)
     sent = _kernel(lesson, "pipeline.data['lessons']['rasterize']")

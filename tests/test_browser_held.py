@@ -16,9 +16,9 @@ import urllib.request
 
 import pytest
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
-from test_browser_saved import _run_all, _stop_kernels
+from test_browser_saved import _api, _run_all, _stop_kernels
 
-from teachraster.widgets.predict import HELD_TEXT
+from teachraster.widgets.predict import HELD_BARE_TEXT, HELD_TEXT
 
 pytestmark = [
     pytest.mark.browser,
@@ -250,3 +250,35 @@ def test_a_question_run_again_and_checked_shows_the_cell_held_for_its_first_run(
     question.locator("button", has_text="Check").click()
     answer.wait_for(state="visible", timeout=15_000)
     _line(page).wait_for(state="hidden", timeout=15_000)
+
+
+UNTRUSTED_NAME = "held_untrusted.ipynb"
+
+
+def test_an_untrusted_copy_says_it_cannot_hide_the_answer(lab, page):  # noqa: F811
+    """Review r157 00-7: a saved copy opened untrusted loses the held line's style, so the
+    answer shows under a line that said "it stays hidden until the prediction is checked".
+    There the line's other text shows instead: it says this copy cannot hide the output."""
+    _run_all(lab, page, CELLS, NAME)
+    _answer(page).wait_for(state="attached", timeout=60_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
+    )
+    with urllib.request.urlopen(f"{lab}/api/contents/{NAME}", timeout=30) as r:
+        saved = json.load(r)["content"]
+    for cell in saved["cells"]:  # a copy from elsewhere: nothing marks its outputs trusted
+        cell.get("metadata", {}).pop("trusted", None)
+    saved["metadata"]["copied"] = True  # not the signed notebook's content, hash or trust
+    body = json.dumps({"type": "notebook", "format": "json", "content": saved})
+    assert _api(page, "PUT", f"/api/contents/{UNTRUSTED_NAME}", body) in (200, 201)
+    _stop_kernels(page, lab)
+    page.goto(f"{lab}/lab/tree/{UNTRUSTED_NAME}?reset")
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    line = page.locator(".teachraster-held").first
+    line.wait_for(state="visible", timeout=60_000)
+    assert "the answer" not in HELD_BARE_TEXT.lower()  # _answer finds the printed answer only
+    _answer(page).wait_for(state="visible", timeout=30_000)  # nothing hides it here
+    assert HELD_BARE_TEXT in line.inner_text() and HELD_TEXT not in line.inner_text()

@@ -863,11 +863,26 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     assert f"{data['fragments']} pixel centres" in html["rasterize"]
     # the guard band render clips this image with (review r7: not the clipper's default 2**20),
     # in plain digits, just inside lesson 02's exact range of 2**21 px
-    from teachraster.pipeline.rendering.stages import guard_band
+    from teachraster.pipeline.rendering.stages import guard_band, guard_band_reach
 
     assert data["guard"] == guard_band(16, 16, 8) and data["exactPx"] == 2**21
     assert data["guardPx"] < 2**21 and "e+" not in html["clip"]
-    assert f"{round(data['guard']):,} w" in html["clip"] and "2,097,152 px" in html["clip"]
+    # review r157 00-3: "≤ 261,881 w" and "< 2,095,055 px" were rounded apart ((261,881 + 1)
+    # · 8 = 2,095,056); both are now printed exactly, from one function, and the window
+    # bound is (G + 1) · 8 of the G printed (inclusive, as classify tests the band)
+    guard, reach = guard_band_reach(16, 16, 8)
+    assert (guard, reach) == (data["guard"], data["guardPx"]) == (261880.856, 2095054.848)
+    assert (
+        "G = 261,880.856" in html["clip"] and "≤ (G + 1) · 16/2 = 2,095,054.848 px" in html["clip"]
+    )
+    shown = re.findall(r"[\d,]+\.\d+", html["clip"].split("G = ")[1])[:2]
+    g_shown, px_shown = (float(x.replace(",", "")) for x in shown)
+    assert (
+        round((g_shown + 1) * 8, 3) == px_shown
+        and "&lt;" not in html["clip"].split("G = ")[1][:200]
+    )
+    assert "2,097,152 px" in html["clip"] and "a larger one gets a smaller G" in html["clip"]
+    assert "cleared to white" in html["blend"] and "dark grey" not in html["blend"]
     # early-z (test and write before the shader) only when the shader neither discards nor
     # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the
     # late test, a discarding one may still be tested early and written late (r9)
@@ -886,6 +901,11 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     assert max(d for d in depth if d is not None) <= 200  # 55 grey levels from white at least
     assert "white: no fragment" in html["depth"] and "lightest grey" not in html["depth"]
     assert images["vertex"] is None and images["blend"] == data["colour"]
+    # review r157 00-12: the navy u = 0 fragments vanished on the dark-grey clear colour
+    assert all(c == [255, 255, 255] for c, k in zip(images["blend"], data["coverage"]) if not k)
+    lum = [0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2] for c, k in
+           zip(images["blend"], data["coverage"]) if k]  # fmt: skip
+    assert max(lum) < 200  # the lightest fragment (u 0.86, a dark yellow) stands off white
 
 
 def test_every_explorables_module_loads_as_shipped():

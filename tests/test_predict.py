@@ -220,6 +220,21 @@ def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(publis
     assert "update" not in kw
     # the stand-in a saved, reopened notebook shows says why, and gives nothing away
     assert "hidden until the prediction is checked" in html
+    # review r157 00-7: where the style is stripped (an untrusted copy), nothing hides the
+    # outputs: the line then says so instead. The live text is hidden inline and shown by
+    # the style; the other text is shown inline and hidden by the style
+    import re
+
+    from teachraster.widgets.predict import HELD_BARE_TEXT
+
+    bare = re.sub(r"<style>.*?</style>", "", html, flags=re.S)  # what a sanitiser leaves
+    live_tag = re.search(r"<i class='teachraster-held-live'([^>]*)>", bare)[1]
+    bare_tag = re.search(r"<i class='teachraster-held-bare'([^>]*)>", bare)[1]
+    assert "display: none" in live_tag and "display" not in bare_tag
+    assert HELD_BARE_TEXT in bare and "cannot hide the output below" in HELD_BARE_TEXT
+    style = re.search(r"<style>(.*?)</style>", html, flags=re.S)[1]
+    assert f".{held_id} .teachraster-held-live {{display: inline !important}}" in style
+    assert f".{held_id} .teachraster-held-bare {{display: none}}" in style
     assert "row 3" not in html and "because" not in html
     q.control.value = "row 2"
     assert len(published) == 1  # answering does not reveal

@@ -41,11 +41,14 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
         "vertex shader: model → world → view → clip space",
         ("04_perspective_correct_interpolation", "05a_zbuffer"),
     ),  # fmt: skip
+    # the stages of lesson 00's clickable map, all of them, so that the two pictures list
+    # the same stages (review r157 00-10: this one had 8, the map 10)
+    Stage("primitive assembly", "vertices → triangles, in the order given", ("02_half_planes",)),
     # the z range is the API's: GL 4.6 §13.7 (default NEGATIVE_ONE_TO_ONE), D3D11.3 §15.4
     # "0 <= z <= w", Vulkan's z_m = 0 unless depthClipControl's negativeOneToOne
     Stage(
         "clipping",
-        "x, y in ±w (guard band); z from −w (GL) or 0 (D3D, Vulkan) to w",
+        "x, y: a guard band far beyond ±w; z: −w (GL) or 0 (D3D, Vulkan) to w",
         ("05a_zbuffer",),
     ),  # fmt: skip
     # its own step, before the viewport (GL 4.6 §13.8: perspective division, then the
@@ -58,6 +61,11 @@ PIPELINE_STAGES: tuple[Stage, ...] = (
     Stage(
         "viewport", "NDC → window x, y (pixels) and depth", ("05a_zbuffer", "05b_depth_precision")
     ),
+    Stage(
+        "triangle set-up",
+        "edges, facing and culling, bounding box",
+        ("01_span_tables", "02_half_planes", "03_barycentric_and_plane_equations"),
+    ),  # fmt: skip
     Stage(
         "rasterisation",
         "which pixels, with which λ",
@@ -94,9 +102,12 @@ EARLY_Z = ("rasterisation", "depth test")
 #: 05a and 10 say); with discard, the test may still run early and the write
 #: late (lessons 05a, 10; issue 29, review r52 00-4: the box names its lessons).
 EARLY_Z_LABEL = (
-    # three lines that fit the dashed box (a fourth ran over its frame); the dashes say optional
-    "early-z (lessons 05a, 10): depth tested and written before\nshading, only if the shader "
-    "neither discards, writes depth\nnor writes memory (discard: test early, write late)"
+    # four lines, in a box of EARLY_Z_ROWS rows (three did not hold it); the dashes say
+    # optional. Two statements: "neither discards ... (discard: test early, write late)"
+    # read as a contradiction (review r157 00-11)
+    "early-z (lessons 05a, 10): depth tested and written\nbefore shading, only if the shader "
+    "neither discards,\nwrites depth nor writes memory. If it may discard,\nsome GPUs still "
+    "test early and write depth late."
 )
 
 
@@ -124,16 +135,21 @@ def _early_z_row(names: list[str]) -> int | None:
     return names.index(EARLY_Z[0])
 
 
+#: The rows the early test's row takes (its four lines need more than a stage's one row).
+EARLY_Z_ROWS = 1.4
+
+
 def _early_z_test(ax, y: float, right: float):
     """The optional early depth test: a dashed box at height ``y`` right of the main arrows,
     dashed arrows in from the stage above and on to the shader below. Returns the first arrow."""
-    x0 = 2.2
-    box = FancyBboxPatch((x0, y - 0.42), right - x0, 0.84, boxstyle="round,pad=0.02,rounding_size=0.12",
+    x0, half = 2.2, EARLY_Z_ROWS / 2  # the stages above and below end 0.34 from their rows
+    box = FancyBboxPatch((x0, y - half + 0.1), right - x0, 2 * half - 0.2, boxstyle="round,pad=0.02,rounding_size=0.12",
                          fc="white", ec=COLORS["edge"], lw=lw(0.5), ls="--")  # fmt: skip
     ax.add_patch(box)
     ax.text(x0 + 0.2, y, EARLY_Z_LABEL, fontsize=fs(0.8), va="center", style="italic")
     arrows = []
-    for start, end in (((1.6, y - 1 + 0.34), (x0, y - 0.2)), ((x0, y + 0.2), (1.6, y + 1 - 0.34))):
+    above, below = y - half - 0.5 + 0.34, y + half + 0.5 - 0.34  # the neighbours' edges
+    for start, end in (((1.6, above), (x0, y - 0.2)), ((x0, y + 0.2), (1.6, below))):
         arrow = FancyArrowPatch(start, end, arrowstyle="-|>", ls="--", mutation_scale=fs(1.0),
                                 color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
         ax.add_patch(arrow)
@@ -165,12 +181,15 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
     """
     out = PipelineArtists()
     early = _early_z_row([s.name for s in stages])
-    n = len(stages) + (early is not None)  # the early test takes a row of its own
+    # the early test takes a row of its own (EARLY_Z_ROWS tall), after the stage ``early``
+    rows = [
+        i + (EARLY_Z_ROWS if early is not None and i > early else 0) for i in range(len(stages))
+    ]
     right = 9.0  # the boxes end here
-    ax.set(xlim=(0, 9.1), ylim=(n - 0.35, -0.65))
+    ax.set(xlim=(0, 9.1), ylim=(rows[-1] + 0.65, -0.65))
     ax.set_axis_off()
     for i, stage in enumerate(stages):
-        k = i + (early is not None and i > early)  # the row: below the early test's
+        k = rows[i]  # the row: below the early test's
         colour = COLORS["fill"] if stage.course else COLORS["rejected"]
         box = FancyBboxPatch((0.05, k - 0.34), right - 0.05, 0.68, boxstyle="round,pad=0.02,rounding_size=0.12",
                              fc=colour, ec=COLORS["edge"], lw=lw(0.5))  # fmt: skip
@@ -180,16 +199,17 @@ def plot_pipeline(ax, stages: tuple[Stage, ...] = PIPELINE_STAGES) -> PipelineAr
         out.texts.append(ax.text(0.3, k - 0.08, stage.name, fontsize=fs(1.0), fontweight="bold",
                                  va="center"))  # fmt: skip
         out.texts.append(ax.text(0.3, k + 0.2, stage.what, fontsize=fs(0.8), va="center"))
-        out.texts.append(ax.text(right - 0.25, k, f"lessons {lessons}" if len(stage.lessons) > 1
+        # on the name's line, which is short: the line below it has the whole box's width
+        out.texts.append(ax.text(right - 0.25, k - 0.08, f"lessons {lessons}" if len(stage.lessons) > 1
                                  else f"lesson {lessons}", fontsize=fs(0.8), ha="right",
                                  va="center", style="italic"))  # fmt: skip
         if i:
-            above = k - 2 if early is not None and i == early + 1 else k - 1
+            above = rows[i - 1]
             arrow = FancyArrowPatch((1.0, above + 0.34), (1.0, k - 0.34), arrowstyle="-|>",
                                     mutation_scale=fs(1.0), color=COLORS["edge"], lw=lw(0.5))  # fmt: skip
             ax.add_patch(arrow)
             out.arrows.append(arrow)
-    out.bypass = None if early is None else _early_z_test(ax, early + 1, right)
+    out.bypass = None if early is None else _early_z_test(ax, early + 0.5 + EARLY_Z_ROWS / 2, right)
     handles = [Patch(fc=COLORS["fill"], ec=COLORS["edge"], label="this course: rasterisation"),
                Patch(fc=COLORS["rejected"], ec=COLORS["edge"], label="around it")]  # fmt: skip
     out.legend = ax.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 1.0),

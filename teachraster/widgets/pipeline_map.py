@@ -12,8 +12,8 @@ final pixels.
 The data is the engine's (:func:`teachraster.render` with ``trace=True``,
 :func:`teachraster.pipeline.geometry.viewport.to_window`, :func:`teachraster.core.edges.setup_edges`);
 the page (``static/explore_pipeline.js``) only lays it out. The lessons in each box come from
-the static figure's table (:data:`~teachraster.plotting.pipeline_overview.PIPELINE_STAGES`)
-and, for the stages only the map splits out, :data:`MAP_ONLY_LESSONS`.
+the static figure's table (:data:`~teachraster.plotting.pipeline_overview.PIPELINE_STAGES`),
+which has the same ten stages.
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from ..core.validate import as_finite, as_float, as_size
 from ..pipeline.geometry.clipping import INSIDE, classify
 from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
-from ..pipeline.rendering.stages import guard_band
+from ..pipeline.rendering.stages import guard_band_reach
 from ..plotting.pipeline_overview import PIPELINE_STAGES, lesson_number
 from ..plotting.style import VALUE_CMAP
 from .explorable import Explorable, esm_source
@@ -38,27 +38,24 @@ TOUR_XY = ((2.2, 1.5), (13.7, 5.2), (5.1, 12.8))
 TOUR_W = (1.0, 2.0, 4.0)
 TOUR_U = (0.0, 1.0, 0.0)
 
+#: The colour the map's colour target is cleared to (the blending stage's background).
+CLEAR_COLOUR = 1.0
 
-#: The map's stages that the static figure (:data:`PIPELINE_STAGES`) draws too, by its names:
-#: their lessons are read from there, so the two pictures cannot disagree.
+
+#: The map's stages by the static figure's (:data:`PIPELINE_STAGES`) names: every stage is
+#: drawn in both, and the lessons are read from there, so the two pictures cannot disagree.
 SHARED_STAGES = {
-    "vertex": "vertex processing", "clip": "clipping", "divide": "perspective divide",
-    "viewport": "viewport",
+    "vertex": "vertex processing", "assembly": "primitive assembly", "clip": "clipping",
+    "divide": "perspective divide", "viewport": "viewport", "setup": "triangle set-up",
     "rasterize": "rasterisation", "fragment": "fragment shading", "depth": "depth test",
     "blend": "blending",
 }  # fmt: skip
-
-#: The lessons (notebook stems) of the stages only the map splits out.
-MAP_ONLY_LESSONS = {
-    "assembly": ("02_half_planes",),
-    "setup": ("01_span_tables", "02_half_planes", "03_barycentric_and_plane_equations"),
-}
 
 
 def map_lessons() -> dict[str, tuple[str, ...]]:
     """The lessons (notebook stems) teaching each of the map's stages, by its key."""
     by_name = {stage.name: stage.lessons for stage in PIPELINE_STAGES}
-    return {**{key: by_name[name] for key, name in SHARED_STAGES.items()}, **MAP_ONLY_LESSONS}
+    return {key: by_name[name] for key, name in SHARED_STAGES.items()}
 
 
 def lessons_label(stems, width: int = 9) -> list[str]:
@@ -121,15 +118,18 @@ def tour_stages(xy=TOUR_XY, w=TOUR_W, u=TOUR_U, width: int = 16, height: int = 1
     fill = rasterize(Triangle(window[:, :2]), width, height, trace=True)
     box = fill.trace.bbox
     colour = colormaps[VALUE_CMAP](np.nan_to_num(frame.attrs[..., 0]))[..., :3]
-    colour[~frame.coverage] = 0.13  # the cleared colour target
+    # the cleared colour target: white, the one clear colour no u stands out badly on (dark
+    # grey hid the navy u = 0 fragments, mid grey the grey u = 0.5 ones; cividis runs from
+    # navy through grey to yellow, and white is farthest from all of it)
+    colour[~frame.coverage] = CLEAR_COLOUR
     # the guard band render clips this image with (not the clipper's default): its reach in
     # window pixels, and the range where the fixed-point edge functions stay exact
-    guard = guard_band(width, height, SUBPIXEL_BITS)
+    guard, guard_px = guard_band_reach(width, height, SUBPIXEL_BITS)
     return {
         "width": width, "height": height, "near": near, "far": far,
         "clip": clip.tolist(), "u": list(map(float, u)), "w": list(map(float, w)),
         "inside": [bool(s == INSIDE) for s in classify(clip[None], guard)],
-        "guard": guard, "guardPx": (guard + 1) * max(width, height) / 2,
+        "guard": guard, "guardPx": guard_px,
         "exactPx": UNIT_LIMIT / units_per_pixel(SUBPIXEL_BITS),
         "ndc": (clip[:, :3] / clip[:, 3:]).tolist(), "window": window.tolist(),
         "snapped": (setup.p[given] / units_per_pixel(SUBPIXEL_BITS)).tolist(),

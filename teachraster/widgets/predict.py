@@ -82,12 +82,17 @@ def is_headless() -> bool:
 #: kernel: a page reloaded on the same kernel shows the answer cell's output, although the
 #: reloaded page no longer knows the display id through which the live release empties the
 #: held line). The class is named after the question, so the widget of the question cell run
-#: again takes it too when checked. A front end without ``:has`` (or one that strips styles)
-#: shows everything at once.
+#: again takes it too when checked. A front end without ``:has`` shows everything at once.
+#: One that strips ``<style>`` (JupyterLab on an untrusted notebook, a page exported without
+#: it) shows the outputs too, and with them the line's other text, :data:`HELD_BARE_TEXT`:
+#: the held line's two texts are switched by this style (which wins over the inline
+#: ``display: none`` by ``!important``) and by inline styles, which sanitisers keep.
 HELD_CSS = (
     "<style>.jp-Notebook:not(:has(.{released})) .jp-OutputArea-child:has(.{held}) "
     "~ .jp-OutputArea-child {{display: none}} "
-    ".jp-Notebook:has(.{released}) .jp-OutputArea-child:has(.{held}) {{display: none}}</style>"
+    ".jp-Notebook:has(.{released}) .jp-OutputArea-child:has(.{held}) {{display: none}} "
+    ".{held} .teachraster-held-live {{display: inline !important}} "
+    ".{held} .teachraster-held-bare {{display: none}}</style>"
 )
 
 #: What stands in for the held outputs, live and in a notebook saved before the answer.
@@ -95,6 +100,15 @@ HELD_TEXT = (
     "Answer the prediction above to see this: the output of this cell gives its answer "
     "away, so it stays hidden until the prediction is checked. If it stays hidden after "
     "you have checked, run this cell again."
+)
+
+
+#: What the held line says where its style is stripped (see :data:`HELD_CSS`): then nothing
+#: hides the outputs after it, and "it stays hidden" would be untrue (review r157 00-7).
+HELD_BARE_TEXT = (
+    "This copy cannot hide the output below, which gives the prediction above away (it was "
+    "opened without its page styles: an untrusted or exported copy). Predict first: run the "
+    "notebook, answer and Check, then read on."
 )
 
 
@@ -128,8 +142,11 @@ class HoldsAnswer:
         display_id = f"teachraster-held-{os.getpid()}-{next(_ids)}"
         held.append(display_id)
         css = HELD_CSS.format(held=display_id, released=self._released_class())
+        # two texts: the style shows the first, and where it is stripped the inline styles
+        # (which sanitisers keep) show the second
         line = (f"<div class='teachraster-held {display_id}' style='color:#555'>"
-                f"<i>{HELD_TEXT}</i></div>")  # fmt: skip
+                f"<i class='teachraster-held-live' style='display: none'>{HELD_TEXT}</i>"
+                f"<i class='teachraster-held-bare'>{HELD_BARE_TEXT}</i></div>")  # fmt: skip
         publish_display_data({"text/html": css + line, "text/plain": HELD_TEXT},
                              transient={"display_id": display_id})  # fmt: skip
 

@@ -74,6 +74,29 @@ def guard_band(width: int, height: int, bits: int | None) -> float:
     return guard
 
 
+def guard_band_reach(width: int, height: int, bits: int | None) -> tuple[float, float]:
+    """The guard band of :func:`guard_band` and its reach in window pixels, from one formula.
+
+    A vertex is inside the band when ``|x|, |y| <= G * w`` (inclusive, as
+    :func:`~teachraster.pipeline.geometry.clipping.classify` tests it); after the divide and
+    the viewport, ``x_win = (x / w + 1) * size / 2``, so inside the band
+    ``|x_win|, |y_win| <= (G + 1) * size / 2``. Both numbers are returned together so that a
+    text quoting them cannot round one and not the other.
+
+    Returns
+    -------
+    guard : float
+        G, in NDC units; it depends on the image size (a smaller image, a larger G).
+    reach_px : float
+        ``(G + 1) * max(width, height) / 2``: 0.999 of the exact range, 2**(29 - bits) px.
+
+    >>> guard_band_reach(16, 16, 8)
+    (261880.856, 2095054.848)
+    """
+    guard = guard_band(width, height, bits)
+    return guard, (guard + 1.0) * max(width, height) / 2
+
+
 def clip_stage(
     clip: np.ndarray, attrs: np.ndarray, width: int, height: int, bits: int | None, forced
 ) -> tuple[ClipResult, Effect]:

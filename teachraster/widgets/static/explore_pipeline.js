@@ -3,23 +3,28 @@
 // triangle's data there. Every number is the engine's (teachraster.widgets.pipeline_map
 // computes them); this file only lays them out.
 
-// [key, name, what it does]; "|" breaks the name into lines. The lessons in each box are
-// the kernel's (data.lessons: the static figure's table, PIPELINE_STAGES), not kept here.
+// [key, name, what it does]; "|" breaks the name into lines. The names are the static
+// figure's (PIPELINE_STAGES: the same ten stages, review r157 00-10), the lessons in each box
+// the kernel's (data.lessons, from that table), not kept here.
 export const STAGES = [
-  ["vertex", "vertex|shader", "model → clip space"],
+  ["vertex", "vertex|processing", "the vertex shader: model → clip space"],
   ["assembly", "primitive|assembly", "vertices → triangles"],
   ["clip", "clipping|(guard band)", "near/far; x, y only beyond the guard band"],
-  ["divide", "divide by w", "clip → NDC"],
+  ["divide", "perspective|divide", "x, y, z ÷ w: clip → NDC"],
   ["viewport", "viewport", "NDC → window x, y, depth"],
   ["setup", "triangle|set-up", "edges, facing, culling, bounding box"],
   ["rasterize", "rasterisation", "the pixel centres inside become fragments"],
-  ["fragment", "fragment|shader", "interpolated attributes → colour"],
-  ["depth", "depth and|stencil test", "nearer wins (stored per pixel)"],
+  ["fragment", "fragment|shading", "the fragment shader: interpolated attributes → colour"],
+  ["depth", "depth test", "nearer wins (stored per pixel), and the stencil test"],
   ["blend", "blending", "colour → the colour target"],
 ];
 
-// a large number in plain digits, grouped by thousands (never in e-notation)
-export const digits = (x) => String(Math.round(x)).replace(/\B(?=(\d{3})+(?!\d))/g, ",");
+// a large number in plain digits, grouped by thousands (never in e-notation), with
+// `decimals` digits after the point
+export const digits = (x, decimals = 0) => {
+  const [whole, part] = x.toFixed(decimals).split(".");
+  return whole.replace(/\B(?=(\d{3})+(?!\d))/g, ",") + (part ? `.${part}` : "");
+};
 const num = (x, d = 4) => (x === null || x === undefined ? "–" : fmt(x, d));
 const row = (cells, head = false) =>
   `<tr>${cells.map((c) => (head ? `<th>${c}</th>` : `<td>${c}</td>`)).join("")}</tr>`;
@@ -44,9 +49,14 @@ export function stageHtml(data, key) {
         "only against the near and far planes (and w &gt; 0), and not even those with depth " +
         "clamp on (GL's GL_DEPTH_CLAMP, GL 4.6 §13.7; Direct3D's DepthClipEnable = FALSE): " +
         "depth is then clamped to the depth range instead. x and y are clipped only beyond " +
-        `a guard band, here |x|, |y| ≤ ${digits(data.guard)} w (in the window, |x|, |y| &lt; ` +
-        `${digits(data.guardPx)} px), just inside the ${digits(data.exactPx)} px within which ` +
-        "the integer edge functions of lesson 02 stay exact. The rasteriser's bounding box " +
+        // both numbers exact (three decimals), from one function (guard_band_reach): the
+        // window bound is (G + 1) · size/2 of the G printed, as a reader can check
+        `a guard band, here |x|, |y| ≤ G w with G = ${digits(data.guard, 3)}, so that in the ` +
+        `window |x|, |y| ≤ (G + 1) · ${Math.max(data.width, data.height)}/2 = ` +
+        `${digits(data.guardPx, 3)} px, just inside the ${digits(data.exactPx)} px within ` +
+        "which the integer edge functions of lesson 02 stay exact. G is set per image: " +
+        `this ${data.width} × ${data.height} window's; a larger one gets a smaller G, the same ` +
+        "reach in pixels. The rasteriser's bounding box " +
         "does the rest. The test, on the clip coordinates (before any divide):</p><table>" +
         row(["", "x", "y", "z", "w", "−w ≤ x, y, z ≤ w?"], true) +
         vertexRows(data, (k) => {
@@ -91,7 +101,7 @@ export function stageHtml(data, key) {
         "would be near black, depth 1 mid grey); white: no fragment.</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
-        "colour target was cleared to dark grey). That is the final image.</p>";
+        "colour target was cleared to white). That is the final image.</p>";
     default:
       return "";
   }
@@ -161,13 +171,16 @@ function svg(tag, attrs, text) {
 // The lesson numbers come in lines of at most nine characters (about 75 px: review r97 00-5
 // found the depth test's three lessons on one line filling its box from border to border),
 // three lines at most, 18 px apart, under the name: boxes 100 px tall.
-export const MAP = { width: 736, height: 442, font: 16, name: 16, nameLine: 19, line: 20, lessons: 18 };
+export const MAP = { width: 736, height: 462, font: 16, name: 16, nameLine: 19, line: 20, lessons: 18 };
 // the lines of the caption above the map and of the note under early-z
 export const CAPTION = ["The logical order of OpenGL and Direct3D; in each box, the lessons that",
   "teach the stage. Click a stage for the tour triangle there."];
+// two statements, not one with an aside: "neither discards ... (discard: test early, write
+// late)" read as a contradiction (review r157 00-11)
 export const EARLY_Z_NOTE = ["early-z (lessons 05a, 10), optional: depth tested and written",
   "before shading, only if the shader neither discards, writes",
-  "depth nor writes memory (discard: test early, write late)"];
+  "depth nor writes memory. With a shader that may discard,",
+  "some GPUs still test early and write depth after it."];
 // the map's sizes, texts and boxes (for the tests, which measure the texts against them)
 export function mapGeometry() {
   return { ...MAP, caption: CAPTION, note: EARLY_Z_NOTE, boxes: layout() };
@@ -207,7 +220,7 @@ function diagram(onPick, lessons) {
   // a button too: it opens the depth test's stage, where early-z is explained (review r77
   // 00-8: clicking it did nothing). data-early, not data-stage: one box per stage
   const early = svg("g", { class: "stage", tabindex: 0, role: "button", "data-early": "depth",
-    "aria-label": "early depth test: see the depth and stencil test" });
+    "aria-label": "early depth test: see the depth test" });
   early.append(svg("rect", { x: ex, y: ey, width: ew, height: eh, rx: 6, fill: "#fff",
     stroke: "#333", "stroke-width": 1.5, "stroke-dasharray": "7 5" }));
   early.append(svg("text", { x: ex + ew / 2, y: ey + 19, "text-anchor": "middle",
@@ -252,7 +265,7 @@ function diagram(onPick, lessons) {
   });
   CAPTION.forEach((line, i) => root.append(
     svg("text", { x: 2, y: 17 + MAP.line * i, "font-size": MAP.font, fill: "#333" }, line)));
-  return { root, groups };
+  return { root, groups, early };
 }
 
 function mount(el, data, host) {
@@ -260,7 +273,7 @@ function mount(el, data, host) {
   let state = { stage: "rasterize", ...host.state() };
   const root = frame(el, data.title, "");
   root.classList.add("tr-pipe");
-  const { root: map, groups } = diagram((key, e) => pick(key, e), data.lessons);
+  const { root: map, groups, early } = diagram((key, e) => pick(key, e), data.lessons);
   const title = element("div", { class: "tr-x-title" });
   const text = element("div", { "aria-live": "polite" });
   const cell = Math.max(8, Math.min(18, Math.floor(300 / Math.max(data.width, data.height))));
@@ -273,6 +286,9 @@ function mount(el, data, host) {
     const k = STAGES.findIndex(([key]) => key === state.stage);
     groups.forEach((g, i) => g.querySelector("rect").setAttribute("fill",
       i === k ? "#fde9c8" : STAGES[i][0] === "rasterize" ? "#d6ecf8" : "#f6f6f6"));
+    // the early test is the depth test run earlier: its page is the depth stage's, and it
+    // is marked with it (review r157 00-13: clicked, it opened that page unmarked)
+    early.querySelector("rect").setAttribute("fill", state.stage === "depth" ? "#fde9c8" : "#fff");
     title.textContent = `${STAGES[k][1].replaceAll("|", " ")}: ${STAGES[k][2]}`;
     text.innerHTML = stageHtml(data, state.stage);
     const img = stageImage(data, state.stage);
