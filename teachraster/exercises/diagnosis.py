@@ -15,7 +15,11 @@ explain it, in this order:
    included) is the cause, named on every failure it explains. On a failing case a mistake
    counts only where it changes the answer (its answer there is not the right one): a named
    mistake reproduces the student's numbers on the very case it is named on (r153 D3-2). A single mistake is preferred
-   to a combination, an earlier one in the exercise's table to a later one.
+   to a combination, an earlier one in the exercise's table to a later one. An answer of
+   float32's numbers is also compared with the mistake computed on the case's numbers as
+   float32 holds them (r164 F1: abs(E) 100 000 px out, where float32 moves the vertices).
+   A mistake with a :attr:`~.exercise.Mistake.parameter` (an ε, a factor) is named only
+   where that parameter is one number on every failing case it fits.
 3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
    its answer and agrees with the most answers overall, provided it agrees with four answers
    in five (else its answer here is a coincidence, frequent where answers are few: three

@@ -491,23 +491,29 @@ def _draw_bary(ax, case, got):
     from .drawing import draw_values
 
     _, (xy, p), expected = case
-    if isinstance(expected, str) or isinstance(got, str):  # a zero area, or a refusal
-        # r153 E13-14: no empty 0-1 axes beside the words; the student's answer said
+    if got is None or isinstance(expected, str) or isinstance(got, str):
+        # a zero area, a refusal, or no answer (r153 E13-14: no empty 0-1 axes beside the
+        # words); r164: the report's note (a time limit, an exception, not counted) takes the
+        # left part, which it would share with the bars or with these words
         ax.set_xticks([])
         ax.set_yticks([])
         for spine in ax.spines.values():
             spine.set_visible(False)
+        inset = ax.inset_axes([0.56, 0.06, 0.42, 0.88])
+        if got is None:
+            return _draw_triangle_and_p(inset, xy, p)
         if isinstance(expected, str):
             said = f"zero area: no weights\n(E(v1, v2, v3) = {num(_area(xy))})"
-            if got is not None and not isinstance(got, str):
-                yours = ", ".join(f"{x:.3g}" for x in np.asarray(got, dtype=float))
-                said += f"\n\nyours: ({yours})"
+            if not isinstance(got, str):  # r164: one number a line (three ran under the inset)
+                said += "\n\nyours:\n" + "\n".join(
+                    f"λ{k + 1} = {x:.3g}" for k, x in enumerate(np.asarray(got, dtype=float))
+                )
         else:
             said = f"E(v1, v2, v3) = {num(_area(xy))}:\nits weights are\n{vec(expected)}"
             said += "\n\nyou raised ValueError"
         artists = [ax.text(0.27, 0.5, said, transform=ax.transAxes, ha="center", va="center",
                            fontsize="small")]  # fmt: skip
-        return artists + _draw_triangle_and_p(ax.inset_axes([0.56, 0.06, 0.42, 0.88]), xy, p)
+        return artists + _draw_triangle_and_p(inset, xy, p)
     artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
     error = None if got is None else float(np.max(np.abs(np.asarray(got, float) - expected)))
     if error is not None and 0 < error < 1e-3 * max(1.0, float(np.abs(expected).max())):

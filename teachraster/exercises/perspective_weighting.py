@@ -304,5 +304,10 @@ PERSPECTIVE_WEIGHTS = Exercise(
          "w, turn that around, and make the weights sum to 1"),
         (" (μ_i ∝ λ_i / w_i; yours already sum to 1)", ": write λ_i in terms of μ and the "
          "three w and turn that around (yours already sum to 1)"),
+        # r164 B5: the new words for λ/w² and a weight without its 1/w say the division
+        (": the screen position divides by w once", ": write λ_i in terms of μ and the three "
+         "w and turn that around (how often does the screen position divide by w?)"),
+        ("; every vertex's λ is divided by its own w", "; write λ_i in terms of μ and the three "
+         "w: what does each vertex's w do to its weight?"),
     ),
 )  # fmt: skip
