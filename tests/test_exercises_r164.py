@@ -136,7 +136,11 @@ def test_precision_is_not_named_where_a_mistake_gives_the_answer():
     r = dg.Result(0, (xy, p), expected, got, False)
     assert np.abs(got + expected).max() < 1e-5  # negated, off by up to 13
     precision = dg.low_precision_mistake(spec)
-    assert not dg.precision_may_be_named(spec, r, precision)
+    assert dg.precision_may_be_named(spec, r, precision)  # within a cancelling plane's bound
+    assert not dg.precision_may_be_named(spec, r, precision, explained=True)
+    absolute_fit = dg._Fit(next(m for m in spec.all_mistakes() if m.kind == "absolute area"),
+                           0, {0}, 1, True, 1)  # fmt: skip
+    assert dg._explained([absolute_fit], [r]) == {0}  # the sign mistake: no rounding
     absolute = next(m for m in spec.all_mistakes() if m.kind == "absolute area")
     assert dg.precision_may_be_named(spec, r, absolute)  # named with the mistake: its rest
 

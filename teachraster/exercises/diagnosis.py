@@ -255,7 +255,9 @@ def blames_precision(words: str) -> bool:
     return bool(PRECISION_WORDS.search(words or ""))
 
 
-def precision_may_be_named(spec: Exercise, r: Result, mistake: Mistake | None) -> bool:
+def precision_may_be_named(
+    spec: Exercise, r: Result, mistake: Mistake | None, explained: bool = False
+) -> bool:
     """May float32 (float16, cancellation) be named on case ``r``? Only when the answer is
     within that precision's rounding of the case (:func:`_within_rounding`), when the case
     holds a number float32 cannot hold at all, or when ``mistake``, a float32 computation of
@@ -264,11 +266,12 @@ def precision_may_be_named(spec: Exercise, r: Result, mistake: Mistake | None) -
     float32 apart). A description (``fits``) is that evidence only for an answer that is
     no measure (a bool, an image of bools): a number must be within the bound. Never where
     another mistake of the table (a sign, an absolute value), computed in float64 or on the
-    numbers float32 holds, gives this answer (:func:`_explained_by_a_mistake`, r164 F1)."""
+    numbers float32 holds, gives this answer and is a cause, no coincidence (``explained``:
+    :func:`_explained`, r164 F1)."""
     named = mistake is not None and not mistake.parts and mistake.gives is not None
     if named and run_checker(lambda: _fits(spec, mistake, r), False):
         return True
-    if run_checker(lambda: _explained_by_a_mistake(spec, r), False):
+    if explained:
         return False  # r164 F1: a sign mistake far out is no rounding, however large that is
     if run_checker(lambda: _within_rounding(spec, r.args, r.expected, r.got), False):
         return True
@@ -311,10 +314,7 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
         if not held_by_precision(expected, got):
             return False
         if _within_rounding(spec, args, expected, got):
-            # r164 F1: a sign mistake far out is within a cancelling plane's rounding, but
-            # the table's mistake gives it: float32 says nothing of this case
-            mine = Result(-1, args, expected, got, False)
-            return None if run_checker(lambda: _explained_by_a_mistake(spec, mine), False) else True
+            return True  # r164 F1: not where a mistake of the table is the cause (diagnose)
         # r153 D3-2: an answer of float32's type off by more: float32 says nothing of this
         # case (another mistake, abs(E) where E < 0, explains it) and is named where it fits
         dtype = getattr(got, "dtype", None)
@@ -536,26 +536,38 @@ def _gives_in_precision(spec: Exercise, m: Mistake, r: Result, value) -> bool:
     except (ArithmeticError, ValueError, IndexError, TypeError):
         return False
     off = answer_error(rounded, r.got) if rounded is not None else None
-    return off is not None and off <= error / 8 and _within_rounding(spec, r.args, rounded, r.got)
-
-
-def _explained_by_a_mistake(spec: Exercise, r: Result) -> bool:
-    """Does a mistake of the exercise's table that is not itself a precision (a sign, an
-    absolute value), computed in float64 or on the numbers float32 holds, give this answer
-    and change it? Then the error is that mistake's, not float32's rounding (r164 F1). Asked
-    only of an error beyond the precision's rounding of the answer's own size (the rounding
-    of a float32 computation far from the origin may be far larger: a cancelling plane's)."""
-    error = answer_error(r.expected, r.got)
-    _, eps = precision_of(r.got)
-    e = _numbers(r.expected)
-    if error is None or e is None or error <= FLOAT32_OPS * eps * max(1.0, float(np.abs(e).max())):
+    if off is None or off > error / 8 or not _within_rounding(spec, r.args, rounded, r.got):
         return False
-    for m in spec.all_mistakes():
-        if m.gives is None or m.parts or blames_precision(m.kind):
+    # the mistake itself, in float64, already lies nearer the answer than the right one does:
+    # float32 accounts for the rest only (E truncated, -10 for -10.97, gave float32's -11
+    # once the vertices had moved)
+    near_it = answer_error(value, r.got)
+    return near_it is not None and near_it <= error / 2
+
+
+def _explained(fits: list[_Fit], failing: list[Result]) -> set:
+    """The failing cases that a mistake of the table which is not itself a precision (a
+    sign, an absolute value) gives, computed in float64 or on the numbers float32 holds, and
+    is a cause there, no coincidence (:attr:`_Fit.coincidence`): their error is that
+    mistake's, not float32's rounding (r164 F1). Only errors beyond the precision's rounding
+    of the answer's own size count (a float32 computation far from the origin may round far
+    more: a cancelling plane's)."""
+    out = set()
+    for r in failing:
+        error = answer_error(r.expected, r.got)
+        e = _numbers(r.expected)
+        _, eps = precision_of(r.got)
+        if (
+            error is None
+            or e is None
+            or error <= FLOAT32_OPS * eps * max(1.0, float(np.abs(e).max()))
+        ):
             continue
-        if run_checker(lambda m=m: _fits(spec, m, r), None):
-            return True
-    return False
+        if any(r.index in f.failing and not f.coincidence and f.mistake.gives is not None
+               and not f.mistake.parts and not blames_precision(f.mistake.kind)
+               for f in fits):  # fmt: skip
+            out.add(r.index)
+    return out
 
 
 def _precision_note(spec: Exercise, m: Mistake, r: Result) -> str:
@@ -616,7 +628,8 @@ def scaled_mistake(words) -> Mistake:
     """The right numbers times one constant c ≠ 1 on every failing case (r164: half-areas,
     ``0.5 * λ``, and ``λ * 1.00000003`` were told "you added a small number to E");
     ``words(args, expected, got, c)``. Named only where c is the same on every failing case
-    (:attr:`~.exercise.Mistake.parameter`)."""
+    (:attr:`~.exercise.Mistake.parameter`), and only where it gives every failing answer
+    (r148's weights each off by its own factor fitted it where p lay on a vertex)."""
 
     def factor(args, expected, got):
         g, e = _numbers(got), _numbers(expected)
@@ -638,7 +651,7 @@ def scaled_mistake(words) -> Mistake:
     def say(args, expected, got):
         return words(args, expected, got, factor(args, expected, got))
 
-    return Mistake("constant factor", say, fits=fits, parameter=factor)
+    return Mistake("constant factor", say, fits=fits, parameter=factor, only_whole=True)
 
 
 def _all_it_must(fit: _Fit, failing: list[Result]) -> bool:
@@ -713,6 +726,10 @@ def diagnose(
         # everywhere are the exercise's own "whole numbers" (r22 D-6's faint pixel, 0)
         fits = [f for f in fits if f.mistake is not rounded]
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
+    explained = run_checker(lambda: _explained(fits, failing), set())
+    for f in fits:  # r164 F1: float32 is not chosen where a mistake of the table is the cause
+        if f.mistake.gives is None and blames_precision(f.mistake.kind):
+            f.failing = f.failing - explained
     whole = sorted(
         (f for f in fits if f.whole and not f.mistake.symptom),
         key=lambda f: (len(f.mistake.parts), f.order),
@@ -734,15 +751,24 @@ def diagnose(
             kind, words = _named(spec, chosen.mistake, r)
         else:
             kind, words = _generic(spec, r)
-        kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake)
+        kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake, r.index in explained)
         out[r.index] = (kind, _say(spec, r, words))
     return _said_once(spec, out)
 
 
-def _honest(spec: Exercise, r: Result, kind: str, words: str, mistake: Mistake | None):
+def _honest(
+    spec: Exercise,
+    r: Result,
+    kind: str,
+    words: str,
+    mistake: Mistake | None,
+    explained: bool = False,
+):
     """(kind, words), or the rule (else plain words) where they blame float32 (float16,
     cancellation) beyond what :func:`precision_may_be_named` allows on this case."""
-    if not blames_precision(f"{kind} {words}") or precision_may_be_named(spec, r, mistake):
+    if not blames_precision(f"{kind} {words}") or precision_may_be_named(
+        spec, r, mistake, explained
+    ):
         return kind, words
     kind, words = _generic(spec, r)
     if blames_precision(f"{kind} {words}") or not words:
