@@ -25,6 +25,7 @@ from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..pipeline.render_triangles import Frame
 from .answers import as_number, as_numbers
+from .blend_mistakes import EIGHT_BIT
 from .cases import SEED, fixed_and_drawn
 from .coverage import TOP_LEFT, covered, kind_of, owns_kind, owns_variants, owns_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
@@ -474,6 +475,8 @@ RESOLVE_MISTAKES = [
     Mistake("background only", _resolve_words("that is the background alone: the covered "
             "samples' colours count too", rule=False),
             gives=lambda c, i, b: np.asarray(b, dtype=float)),
+    # r163 12-9: a mean rounded to 8 bits, round(x·255)/255, was told to count the background
+    EIGHT_BIT,
 ]  # fmt: skip
 
 
