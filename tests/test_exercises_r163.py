@@ -224,3 +224,45 @@ def test_the_grid_does_not_say_every_quad_faces_the_camera():
     text = " ".join(_cells()[2].split())
     assert "facing the camera" not in text
     assert "culling off" in text and "half the triangles face away" in text
+
+
+# -- 12-7: minor misdirections ----------------------------------------------------------------------
+def _resolve_over_covered(sample_colours, sample_ids, background):
+    c, ids = np.array(sample_colours, float), np.asarray(sample_ids)
+    c[ids < 0] = background
+    return c.sum(axis=0) / max(int((ids >= 0).sum()), 1)
+
+
+def test_a_resolve_divided_by_the_covered_count_is_named():
+    report = ex.capstone("cube_msaa", **_mine("cube_msaa", resolve=_resolve_over_covered))
+    assert "you divided by the 1 covered sample, not by all the samples" in str(report), str(report)
+
+
+def _float32_shifted(lam, w):
+    mu = np.asarray(sol.CAPSTONE["perspective_weights"](lam, w))
+    return (mu + [2e-5, -2e-5, 0]).astype(np.float32)
+
+
+def test_float32_weights_one_step_from_summing_to_1_are_not_told_their_sum():
+    """They sum to 1 within one float32 step: the shift is the mistake, not the sum."""
+    mine = _mine("textured_floor", perspective_weights=_float32_shifted)
+    text = str(ex.capstone("textured_floor", **mine))
+    assert "they sum to 0.9999999" not in text and "and weights sum to 1" not in text, text
+
+
+def _both_swapped(texture, uv, wrap):
+    t = np.asarray(texture, float)
+    h, w = t.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    fx, fy = x - np.floor(x), y - np.floor(y)
+    c0, c1 = int(np.floor(x)) % w, int(np.floor(x) + 1) % w
+    r0, r1 = int(np.floor(y)) % h, int(np.floor(y) + 1) % h
+    return (fx * fy * t[r0, c0] + (1 - fx) * fy * t[r0, c1] + fx * (1 - fy) * t[r1, c0]
+            + (1 - fx) * (1 - fy) * t[r1, c1])  # fmt: skip
+
+
+def test_weights_swapped_along_both_axes_are_not_told_along_y_alone():
+    """bilinear's three "weights swapped" (both, x, y) share a kind: the capstone quoted the
+    last one's words, "along y", for a filter that swaps both."""
+    text = str(ex.capstone("floor_bilinear", bilinear=_both_swapped))
+    assert "weights along y are swapped" not in text and "right (lower)" in text, text
