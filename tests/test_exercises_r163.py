@@ -266,3 +266,13 @@ def test_weights_swapped_along_both_axes_are_not_told_along_y_alone():
     last one's words, "along y", for a filter that swaps both."""
     text = str(ex.capstone("floor_bilinear", bilinear=_both_swapped))
     assert "weights along y are swapped" not in text and "right (lower)" in text, text
+
+
+def test_the_failed_assertion_does_not_repeat_the_printed_report():
+    """r163 12-9: nbgrader's red box repeated the report that show(report) printed above it."""
+    report = ex.capstone("grid", covers=lambda xy, p: False)
+    with pytest.raises(AssertionError) as raised:
+        report.assert_passed()
+    said = str(raised.value)
+    assert "\n" not in said and said.startswith(str(report).split("\n", 1)[0]), said
+    assert len(said) < len(str(report)) and "printed above" in said, said

@@ -530,6 +530,15 @@ class CapstoneReport(Report):
         lines += _said_once(self.shown())
         return "\n".join(lines)
 
+    def assert_passed(self) -> None:
+        """Do nothing when the scene passed; else raise ``AssertionError`` with the report's
+        first line: the check cell's ``show(report)`` printed all of it just above (r163
+        12-9: nbgrader's traceback repeated the first pixel's explanation, some 800
+        characters, under it)."""
+        if not self.passed:
+            head = str(self).split("\n", 1)[0]
+            raise AssertionError(f"{head} (the report printed above says why: print(report))")
+
     def differing_pixels(self) -> np.ndarray:
         """(n, 2) rows and columns where the student's frame differs; none where the scene
         was not rendered with the student's functions (:meth:`no_difference` says why)."""
