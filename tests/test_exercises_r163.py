@@ -250,24 +250,6 @@ def test_float32_weights_one_step_from_summing_to_1_are_not_told_their_sum():
     assert "they sum to 0.9999999" not in text and "and weights sum to 1" not in text, text
 
 
-def _both_swapped(texture, uv, wrap):
-    t = np.asarray(texture, float)
-    h, w = t.shape[:2]
-    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
-    fx, fy = x - np.floor(x), y - np.floor(y)
-    c0, c1 = int(np.floor(x)) % w, int(np.floor(x) + 1) % w
-    r0, r1 = int(np.floor(y)) % h, int(np.floor(y) + 1) % h
-    return (fx * fy * t[r0, c0] + (1 - fx) * fy * t[r0, c1] + fx * (1 - fy) * t[r1, c0]
-            + (1 - fx) * (1 - fy) * t[r1, c1])  # fmt: skip
-
-
-def test_weights_swapped_along_both_axes_are_not_told_along_y_alone():
-    """bilinear's three "weights swapped" (both, x, y) share a kind: the capstone quoted the
-    last one's words, "along y", for a filter that swaps both."""
-    text = str(ex.capstone("floor_bilinear", bilinear=_both_swapped))
-    assert "weights along y are swapped" not in text and "right (lower)" in text, text
-
-
 def test_the_failed_assertion_does_not_repeat_the_printed_report():
     """r163 12-9: nbgrader's red box repeated the report that show(report) printed above it."""
     report = ex.capstone("grid", covers=lambda xy, p: False)

@@ -203,18 +203,14 @@ def _unnamed(checked: str, report) -> str:
 
 
 def _words_by_kind(mistakes) -> dict:
-    """Each single typical mistake's words (a table's combinations are named by their parts);
-    None for a kind that several mistakes share with other words (r163 12-7: bilinear's three
-    "weights swapped", both axes, x or y, were all said as the last, "along y"): the failing
-    case's own explanation is quoted for it."""
+    """Each single typical mistake's words (a table's combinations are named by their parts)."""
     out = {}
     for m in mistakes:
         for single in m.mistakes() if isinstance(m, Knobs) else [m]:
             if single.parts or not single.words:
                 continue
             words = single.words
-            words = words.lstrip(" .:;") if isinstance(words, str) else words
-            out[single.kind] = None if out.get(single.kind, words) != words else words
+            out[single.kind] = words.lstrip(" .:;") if isinstance(words, str) else words
     return out
 
 
