@@ -651,7 +651,8 @@ def scaled_mistake(words) -> Mistake:
         if e.ravel()[big] == 0:
             return None
         c = float(g.ravel()[big] / e.ravel()[big])
-        if c == 1 or not np.allclose(g, c * e, rtol=1e-9, atol=1e-12 * abs(c)):
+        # a negative factor is a sign (abs(E) where E < 0, edges reversed): the table's own
+        if c == 1 or c <= 0 or not np.allclose(g, c * e, rtol=1e-9, atol=1e-12 * abs(c)):
             return None
         return c
 
