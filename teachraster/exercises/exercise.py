@@ -56,6 +56,11 @@ class Mistake:
         every one of them, to be named at all (a tie rule: every failing case wrong only at
         centres on an edge; r84 10-2: a mirrored tie rule was named "E > 0" on one case and
         "E ≥ 0" on another, each right only there).
+    parameter : callable, optional
+        ``parameter(args, expected, got) -> float``: the one number a fitted mistake has on
+        this case (an ε added to E, a constant factor); the mistake is named only where that
+        number is the same on every failing case it fits (r164: an "ε" fitted case by case
+        took a constant factor, whose ε grows with E, for a guard against dividing by 0).
     """
 
     kind: str
@@ -67,6 +72,7 @@ class Mistake:
     parts: tuple = ()
     without: Callable | None = field(default=None, repr=False)  # (part) -> gives without it
     must_fit: Callable | None = field(default=None, repr=False)
+    parameter: Callable | None = field(default=None, repr=False)
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words
