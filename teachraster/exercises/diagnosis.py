@@ -53,12 +53,14 @@ change this case's answer), so that one failure of each kind can be shown first.
 from __future__ import annotations
 
 import re
+import threading
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from .answers import short
-from .exercise import Exercise, Mistake, copies
+from .exercise import Exercise, Mistake, case_key, copies
 from .running import run_checker
 from .scalars import num, vec
 
@@ -85,6 +87,12 @@ class Result:
     #: once per pixel), and a key of all it returned on this case (None: not comparable).
     raw: object = None
     key: frozenset | None = None
+
+    @cached_property
+    def case(self):
+        """A key of the case's arguments (:func:`.exercise.case_key`; None: none), by which
+        each mistake's answer here is remembered (:func:`mistake_answer`)."""
+        return case_key(self.args)
 
 
 _EXACT = (str, bytes, bool, np.bool_, set, frozenset)
@@ -372,14 +380,29 @@ def _rounded_to(expected, got) -> str | None:
         return None
     g, e = g.ravel(), e.ravel()
     # every N it could be (1, 0, 0) is the rounding of (0.9999996, 4e-7, 0) to 1-6 decimals
-    fit = [n for n in ROUNDINGS if np.allclose(g, np.round(e, n), rtol=1e-12, atol=1e-15)]
+    fit = [n for n in ROUNDINGS if _all_close(g, np.round(e, n), 1e-15)]
     if fit:
         return f"{fit[0]} decimals" if len(fit) == 1 else f"{fit[0]} to {fit[-1]} decimals"
     for n in range(3, 13):
-        sig = np.array([float(f"{x:.{n}g}") for x in e])
-        if np.allclose(g, sig, rtol=1e-12, atol=1e-300):
+        # the first number alone first: most answers fail there, before a text per number
+        if _all_close(g[:1], _significant(e[:1], n), 1e-300) and _all_close(
+            g, _significant(e, n), 1e-300
+        ):
             return f"{n} significant digits"
     return None
+
+
+def _significant(e: np.ndarray, n: int) -> np.ndarray:
+    """Each number of ``e`` written with ``n`` significant digits (``f"{x:.ng}"``)."""
+    return np.array([float(f"{x:.{n}g}") for x in e])
+
+
+def _all_close(g: np.ndarray, r: np.ndarray, atol: float) -> bool:
+    """``np.allclose(g, r, rtol=1e-12, atol=atol)`` for float arrays of one size (its very
+    test, without its checks and conversions: ``_rounded_to`` asks it 12 to 22 times)."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        close = (np.abs(g - r) <= atol + 1e-12 * np.abs(r)) & np.isfinite(r) | (g == r)
+    return bool(close.all())
 
 
 def _whole(got) -> bool:
@@ -473,6 +496,58 @@ class _Fit:
         return self.mistake.gives is not None and self.agrees < COINCIDENCE * self.spoken
 
 
+#: Remember each mistake's answer on each case (:func:`mistake_answer`); False computes every
+#: one afresh (the tests compare the reports both ways).
+REMEMBER = True
+#: The most answers remembered; past it they are all forgotten and remembered anew.
+REMEMBERED = 100_000
+_remembered: dict = {}  # Mistake -> {case key (Result.case): answer, None where undefined}
+_lock = threading.Lock()
+_count = [0]  # answers remembered
+
+
+def mistake_answer(m: Mistake, r: Result):
+    """``m.gives`` on fresh copies of case ``r``'s arguments; None where the mistake says
+    nothing about the case or is undefined on it (an ArithmeticError, ValueError,
+    IndexError or TypeError). Each mistake's answer on a case is a function of the case
+    alone, the same on every check, so it is computed once per process and kept by the
+    mistake and the case's key (``Result.case``): every check of an exercise runs the same
+    fixed cases, and the diagnosis runs each of up to ~300 mistakes on them (the checker's
+    own time, about half of a failing check's). Handed out as a copy (a comparison that
+    wrote into it could not change the next check's), computed afresh where the case has no
+    key (or :data:`REMEMBER` is off). The student's function is never remembered."""
+    key = r.case if REMEMBER else None
+    if key is None:
+        return _gives(m, r.args)
+    book = _remembered.get(m)
+    if book is None or key not in book:
+        value = _gives(m, r.args)  # outside the lock: an interrupt may stop it
+        with _lock:
+            if _count[0] >= REMEMBERED:
+                _remembered.clear()
+                _count[0] = 0
+            _remembered.setdefault(m, {})[key] = value
+            _count[0] += 1
+        return _fresh(value)
+    return _fresh(book[key])
+
+
+def _gives(m: Mistake, args):
+    try:
+        return m.gives(*copies(args))
+    except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
+        return None
+
+
+def _fresh(value):
+    """A copy of an answer's arrays and lists (tuples of them too), the rest as it is."""
+    if isinstance(value, np.ndarray):
+        return value.copy()
+    if type(value) in (list, tuple):
+        return type(value)(_fresh(v) for v in value)
+    return value
+
+
 def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
     """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
     if m.fits is not None:  # a description of failures: a passing case neither fits nor not
@@ -480,10 +555,7 @@ def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
             return None
         verdict = m.fits(r.args, r.expected, r.got)
         return None if verdict is None else bool(verdict)  # None: it says nothing here
-    try:
-        value = m.gives(*copies(r.args))
-    except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
-        return None
+    value = mistake_answer(m, r)
     if value is None:
         return None
     same = _same_answer(spec, value, r) or (not r.ok and _gives_in_precision(spec, m, r, value))
