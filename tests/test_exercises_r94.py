@@ -299,7 +299,8 @@ def test_perspective_weights_that_sum_to_1_are_not_told_to_sum_to_1():
                    ex.check("perspective_weights", _persp("over w squared"))):  # fmt: skip
         words = _words(report)
         assert "make the weights sum to 1" not in words and "normalised to sum" not in words
-        assert "already sum to 1" in words, words
+        # r164 B5: λ/w² is named now (it was told the rule, "yours already sum to 1")
+        assert "you divided each λ by its w twice" in words, words
 
 
 def test_clamped_perspective_weights_are_named_here_and_in_the_capstone():

@@ -15,7 +15,11 @@ explain it, in this order:
    included) is the cause, named on every failure it explains. On a failing case a mistake
    counts only where it changes the answer (its answer there is not the right one): a named
    mistake reproduces the student's numbers on the very case it is named on (r153 D3-2). A single mistake is preferred
-   to a combination, an earlier one in the exercise's table to a later one.
+   to a combination, an earlier one in the exercise's table to a later one. An answer of
+   float32's numbers is also compared with the mistake computed on the case's numbers as
+   float32 holds them (r164 F1: abs(E) 100 000 px out, where float32 moves the vertices).
+   A mistake with a :attr:`~.exercise.Mistake.parameter` (an ε, a factor) is named only
+   where that parameter is one number on every failing case it fits.
 3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
    its answer and agrees with the most answers overall, provided it agrees with four answers
    in five (else its answer here is a coincidence, frequent where answers are few: three
@@ -49,12 +53,14 @@ change this case's answer), so that one failure of each kind can be shown first.
 from __future__ import annotations
 
 import re
+import threading
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from .answers import short
-from .exercise import Exercise, Mistake, copies
+from .exercise import Exercise, Mistake, case_key, copies
 from .running import run_checker
 from .scalars import num, vec
 
@@ -81,6 +87,12 @@ class Result:
     #: once per pixel), and a key of all it returned on this case (None: not comparable).
     raw: object = None
     key: frozenset | None = None
+
+    @cached_property
+    def case(self):
+        """A key of the case's arguments (:func:`.exercise.case_key`; None: none), by which
+        each mistake's answer here is remembered (:func:`mistake_answer`)."""
+        return case_key(self.args)
 
 
 _EXACT = (str, bytes, bool, np.bool_, set, frozenset)
@@ -251,22 +263,30 @@ def blames_precision(words: str) -> bool:
     return bool(PRECISION_WORDS.search(words or ""))
 
 
-def precision_may_be_named(spec: Exercise, r: Result, mistake: Mistake | None) -> bool:
+def precision_may_be_named(
+    spec: Exercise, r: Result, mistake: Mistake | None, explained: bool = False
+) -> bool:
     """May float32 (float16, cancellation) be named on case ``r``? Only when the answer is
     within that precision's rounding of the case (:func:`_within_rounding`), when the case
     holds a number float32 cannot hold at all, or when ``mistake``, a float32 computation of
     the exercise's table, gives this very answer (then its error *is* float32's rounding of
     this case, however far that moves a bool or an integer: ``depth_test``'s two depths one
     float32 apart). A description (``fits``) is that evidence only for an answer that is
-    no measure (a bool, an image of bools): a number must be within the bound."""
+    no measure (a bool, an image of bools): a number must be within the bound. Never where
+    another mistake of the table (a sign, an absolute value), computed in float64 or on the
+    numbers float32 holds, gives this answer and is a cause, no coincidence (``explained``:
+    :func:`_explained`, r164 F1)."""
+    named = mistake is not None and not mistake.parts and mistake.gives is not None
+    if named and run_checker(lambda: _fits(spec, mistake, r), False):
+        return True
+    if explained:
+        return False  # r164 F1: a sign mistake far out is no rounding, however large that is
     if run_checker(lambda: _within_rounding(spec, r.args, r.expected, r.got), False):
         return True
     if run_checker(lambda: _outside_float32(r.args), None) is not None:
         return True
-    if mistake is None or mistake.parts:
+    if mistake is None or mistake.parts or named:
         return False
-    if mistake.gives is not None:
-        return bool(run_checker(lambda: _fits(spec, mistake, r), False))
     return answer_error(r.expected, r.got) is None or _is_bools(r.got)
 
 
@@ -302,7 +322,7 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
         if not held_by_precision(expected, got):
             return False
         if _within_rounding(spec, args, expected, got):
-            return True
+            return True  # r164 F1: not where a mistake of the table is the cause (diagnose)
         # r153 D3-2: an answer of float32's type off by more: float32 says nothing of this
         # case (another mistake, abs(E) where E < 0, explains it) and is named where it fits
         dtype = getattr(got, "dtype", None)
@@ -360,14 +380,29 @@ def _rounded_to(expected, got) -> str | None:
         return None
     g, e = g.ravel(), e.ravel()
     # every N it could be (1, 0, 0) is the rounding of (0.9999996, 4e-7, 0) to 1-6 decimals
-    fit = [n for n in ROUNDINGS if np.allclose(g, np.round(e, n), rtol=1e-12, atol=1e-15)]
+    fit = [n for n in ROUNDINGS if _all_close(g, np.round(e, n), 1e-15)]
     if fit:
         return f"{fit[0]} decimals" if len(fit) == 1 else f"{fit[0]} to {fit[-1]} decimals"
     for n in range(3, 13):
-        sig = np.array([float(f"{x:.{n}g}") for x in e])
-        if np.allclose(g, sig, rtol=1e-12, atol=1e-300):
+        # the first number alone first: most answers fail there, before a text per number
+        if _all_close(g[:1], _significant(e[:1], n), 1e-300) and _all_close(
+            g, _significant(e, n), 1e-300
+        ):
             return f"{n} significant digits"
     return None
+
+
+def _significant(e: np.ndarray, n: int) -> np.ndarray:
+    """Each number of ``e`` written with ``n`` significant digits (``f"{x:.ng}"``)."""
+    return np.array([float(f"{x:.{n}g}") for x in e])
+
+
+def _all_close(g: np.ndarray, r: np.ndarray, atol: float) -> bool:
+    """``np.allclose(g, r, rtol=1e-12, atol=atol)`` for float arrays of one size (its very
+    test, without its checks and conversions: ``_rounded_to`` asks it 12 to 22 times)."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        close = (np.abs(g - r) <= atol + 1e-12 * np.abs(r)) & np.isfinite(r) | (g == r)
+    return bool(close.all())
 
 
 def _whole(got) -> bool:
@@ -461,6 +496,58 @@ class _Fit:
         return self.mistake.gives is not None and self.agrees < COINCIDENCE * self.spoken
 
 
+#: Remember each mistake's answer on each case (:func:`mistake_answer`); False computes every
+#: one afresh (the tests compare the reports both ways).
+REMEMBER = True
+#: The most answers remembered; past it they are all forgotten and remembered anew.
+REMEMBERED = 100_000
+_remembered: dict = {}  # Mistake -> {case key (Result.case): answer, None where undefined}
+_lock = threading.Lock()
+_count = [0]  # answers remembered
+
+
+def mistake_answer(m: Mistake, r: Result):
+    """``m.gives`` on fresh copies of case ``r``'s arguments; None where the mistake says
+    nothing about the case or is undefined on it (an ArithmeticError, ValueError,
+    IndexError or TypeError). Each mistake's answer on a case is a function of the case
+    alone, the same on every check, so it is computed once per process and kept by the
+    mistake and the case's key (``Result.case``): every check of an exercise runs the same
+    fixed cases, and the diagnosis runs each of up to ~300 mistakes on them (the checker's
+    own time, about half of a failing check's). Handed out as a copy (a comparison that
+    wrote into it could not change the next check's), computed afresh where the case has no
+    key (or :data:`REMEMBER` is off). The student's function is never remembered."""
+    key = r.case if REMEMBER else None
+    if key is None:
+        return _gives(m, r.args)
+    book = _remembered.get(m)
+    if book is None or key not in book:
+        value = _gives(m, r.args)  # outside the lock: an interrupt may stop it
+        with _lock:
+            if _count[0] >= REMEMBERED:
+                _remembered.clear()
+                _count[0] = 0
+            _remembered.setdefault(m, {})[key] = value
+            _count[0] += 1
+        return _fresh(value)
+    return _fresh(book[key])
+
+
+def _gives(m: Mistake, args):
+    try:
+        return m.gives(*copies(args))
+    except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
+        return None
+
+
+def _fresh(value):
+    """A copy of an answer's arrays and lists (tuples of them too), the rest as it is."""
+    if isinstance(value, np.ndarray):
+        return value.copy()
+    if type(value) in (list, tuple):
+        return type(value)(_fresh(v) for v in value)
+    return value
+
+
 def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
     """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
     if m.fits is not None:  # a description of failures: a passing case neither fits nor not
@@ -468,13 +555,10 @@ def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
             return None
         verdict = m.fits(r.args, r.expected, r.got)
         return None if verdict is None else bool(verdict)  # None: it says nothing here
-    try:
-        value = m.gives(*copies(r.args))
-    except (ArithmeticError, ValueError, IndexError, TypeError):  # undefined on this case
-        return None
+    value = mistake_answer(m, r)
     if value is None:
         return None
-    same = _same_answer(spec, value, r)
+    same = _same_answer(spec, value, r) or (not r.ok and _gives_in_precision(spec, m, r, value))
     if same and not r.ok and _passes(spec, value, r):
         # r153 D3-2: a mistake that gives the right answer here does not change this case,
         # so it cannot be why the student's answer is wrong (float32 with abs(E) was blamed
@@ -482,6 +566,96 @@ def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
         # numbers *and* they differ from the right ones
         return None
     return same
+
+
+def _precision_inputs(args, got) -> tuple | None:
+    """The case's arguments as a float32 (float16) computation holds them, each float rounded
+    to the answer's precision (:func:`precision_of`) and back, or None where that changes none
+    of them (the mistake's float64 answer is then the one to compare)."""
+    _, eps = precision_of(got)
+    kind = np.float16 if eps == FLOAT16_EPS else np.float32
+    out, moved = [], False
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        for a in copies(args):
+            if isinstance(a, np.ndarray) and a.dtype.kind == "f":
+                b = a.astype(kind).astype(a.dtype)
+            elif isinstance(a, float):
+                b = float(kind(a))
+            else:
+                b = a
+            moved = moved or not np.array_equal(b, a)
+            out.append(b)
+    return tuple(out) if moved else None
+
+
+def _gives_in_precision(spec: Exercise, m: Mistake, r: Result, value) -> bool:
+    """Does mistake ``m``, computed on the case's numbers as float32 holds them, give the
+    student's float32 answer, far nearer it than the right answer is? (r164 F1: abs(E) in
+    float32, 30 000 px out, where float32 cannot hold the 1/256-px grid: the weights negated,
+    off by 13, were put down to float32's cancellation, because the mistake's float64 answer
+    differed from the student's by float32's moving of the vertices.) Numbers only, and only
+    answers that are float32's numbers (:func:`held_by_precision`)."""
+    if _is_bools(r.got) or not held_by_precision(r.expected, r.got):
+        return False
+    error = answer_error(r.expected, r.got)
+    if error is None or error == 0:
+        return False
+    moved = _precision_inputs(r.args, r.got)
+    if moved is None:
+        return False
+    try:
+        rounded = m.gives(*moved)
+    except (ArithmeticError, ValueError, IndexError, TypeError):
+        return False
+    off = answer_error(rounded, r.got) if rounded is not None else None
+    if off is None or off > error / 8 or not _within_rounding(spec, r.args, rounded, r.got):
+        return False
+    # the mistake itself, in float64, already lies nearer the answer than the right one does:
+    # float32 accounts for the rest only (E truncated, -10 for -10.97, gave float32's -11
+    # once the vertices had moved)
+    near_it = answer_error(value, r.got)
+    return near_it is not None and near_it <= error / 2
+
+
+def _explained(fits: list[_Fit], failing: list[Result]) -> set:
+    """The failing cases that a mistake of the table which is not itself a precision (a
+    sign, an absolute value) gives, computed in float64 or on the numbers float32 holds, and
+    is a cause there, no coincidence (:attr:`_Fit.coincidence`): their error is that
+    mistake's, not float32's rounding (r164 F1). Only errors beyond the precision's rounding
+    of the answer's own size count (a float32 computation far from the origin may round far
+    more: a cancelling plane's)."""
+    out = set()
+    for r in failing:
+        error = answer_error(r.expected, r.got)
+        e = _numbers(r.expected)
+        _, eps = precision_of(r.got)
+        if (
+            error is None
+            or e is None
+            or error <= FLOAT32_OPS * eps * max(1.0, float(np.abs(e).max()))
+        ):
+            continue
+        if any(r.index in f.failing and not f.coincidence and f.mistake.gives is not None
+               and not f.mistake.parts and not blames_precision(f.mistake.kind)
+               for f in fits):  # fmt: skip
+            out.add(r.index)
+    return out
+
+
+def _precision_note(spec: Exercise, m: Mistake, r: Result) -> str:
+    """What a mistake found in float32 (:func:`_gives_in_precision`) leaves to say: the rest
+    of the difference is the precision's (empty where the float64 mistake gives the answer)."""
+    if m.gives is None or r.ok:
+        return ""
+    value = m.gives(*copies(r.args))
+    if value is None or _same_answer(spec, value, r):
+        return ""
+    name, _ = precision_of(r.got)
+    rest = answer_error(value, r.got)
+    return (
+        f"; and you computed in {name}, whose rounding of this case's coordinates moves your "
+        f"numbers by a further {rest:.1g}: compute in float64"
+    )
 
 
 def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) -> list[_Fit]:
@@ -492,7 +666,7 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
         def run(m=m, order=order):
             verdicts = {r.index: _fits(spec, m, r) for r in failing}
             hits = {i for i, v in verdicts.items() if v}
-            if not hits:
+            if not hits or not _one_parameter(m, [r for r in failing if r.index in hits]):
                 return None
             said = [_fits(spec, m, r) for r in results if r.ok]
             agrees = len(hits) + sum(1 for s in said if s)
@@ -504,6 +678,53 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
         if fit is not None:
             fits.append(fit)
     return fits
+
+
+#: How far apart a mistake's :attr:`~.exercise.Mistake.parameter` may be on two cases and
+#: still be one number (it is read back from float64 answers: ε from a sum near 1).
+PARAMETER_TOL = 1e-3
+
+
+def _one_parameter(m: Mistake, hits: list[Result]) -> bool:
+    """Is ``m``'s parameter one number on every failing case it fits (or has it none)?"""
+    if m.parameter is None:
+        return True
+    values = [m.parameter(r.args, r.expected, r.got) for r in hits]
+    if any(v is None or not np.isfinite(v) for v in values):
+        return False
+    lo, hi = min(values), max(values)
+    return hi - lo <= PARAMETER_TOL * max(abs(lo), abs(hi))
+
+
+def scaled_mistake(words) -> Mistake:
+    """The right numbers times one constant c ≠ 1 on every failing case (r164: half-areas,
+    ``0.5 * λ``, and ``λ * 1.00000003`` were told "you added a small number to E");
+    ``words(args, expected, got, c)``. Named only where c is the same on every failing case
+    (:attr:`~.exercise.Mistake.parameter`), and only where it gives every failing answer
+    (r148's weights each off by its own factor fitted it where p lay on a vertex)."""
+
+    def factor(args, expected, got):
+        g, e = _numbers(got), _numbers(expected)
+        if g is None or e is None or g.shape != e.shape or not np.isfinite(g).all():
+            return None
+        big = int(np.argmax(np.abs(e)))
+        if e.ravel()[big] == 0:
+            return None
+        c = float(g.ravel()[big] / e.ravel()[big])
+        # a negative factor is a sign (abs(E) where E < 0, edges reversed): the table's own
+        if c == 1 or c <= 0 or not np.allclose(g, c * e, rtol=1e-9, atol=1e-12 * abs(c)):
+            return None
+        return c
+
+    def fits(args, expected, got):
+        if _numbers(expected) is None:
+            return None  # no number is right here (3.1's ValueError): no say
+        return factor(args, expected, got) is not None
+
+    def say(args, expected, got):
+        return words(args, expected, got, factor(args, expected, got))
+
+    return Mistake("constant factor", say, fits=fits, parameter=factor, only_whole=True)
 
 
 def _all_it_must(fit: _Fit, failing: list[Result]) -> bool:
@@ -545,7 +766,8 @@ def _active_parts(spec: Exercise, m: Mistake, r: Result) -> list[Mistake]:
 def _named(spec: Exercise, m: Mistake, r: Result) -> tuple[str, str]:
     parts = run_checker(lambda: _active_parts(spec, m, r), list(m.parts) or [m])
     if not m.parts:
-        return m.kind, run_checker(lambda: m.say(r.args, r.expected, r.got), "")
+        words = run_checker(lambda: m.say(r.args, r.expected, r.got), "")
+        return m.kind, words + run_checker(lambda: _precision_note(spec, m, r), "")
     kind = " and ".join(p.kind for p in parts)
     words = run_checker(lambda: "; and ".join(p.say(r.args, r.expected, r.got) for p in parts), "")
     return kind, words
@@ -577,6 +799,10 @@ def diagnose(
         # everywhere are the exercise's own "whole numbers" (r22 D-6's faint pixel, 0)
         fits = [f for f in fits if f.mistake is not rounded]
     fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
+    explained = run_checker(lambda: _explained(fits, failing), set())
+    for f in fits:  # r164 F1: float32 is not chosen where a mistake of the table is the cause
+        if f.mistake.gives is None and blames_precision(f.mistake.kind):
+            f.failing = f.failing - explained
     whole = sorted(
         (f for f in fits if f.whole and not f.mistake.symptom),
         key=lambda f: (len(f.mistake.parts), f.order),
@@ -598,15 +824,24 @@ def diagnose(
             kind, words = _named(spec, chosen.mistake, r)
         else:
             kind, words = _generic(spec, r)
-        kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake)
+        kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake, r.index in explained)
         out[r.index] = (kind, _say(spec, r, words))
     return _said_once(spec, out)
 
 
-def _honest(spec: Exercise, r: Result, kind: str, words: str, mistake: Mistake | None):
+def _honest(
+    spec: Exercise,
+    r: Result,
+    kind: str,
+    words: str,
+    mistake: Mistake | None,
+    explained: bool = False,
+):
     """(kind, words), or the rule (else plain words) where they blame float32 (float16,
     cancellation) beyond what :func:`precision_may_be_named` allows on this case."""
-    if not blames_precision(f"{kind} {words}") or precision_may_be_named(spec, r, mistake):
+    if not blames_precision(f"{kind} {words}") or precision_may_be_named(
+        spec, r, mistake, explained
+    ):
         return kind, words
     kind, words = _generic(spec, r)
     if blames_precision(f"{kind} {words}") or not words:

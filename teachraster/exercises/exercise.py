@@ -17,6 +17,7 @@ knobs (:class:`Knobs`); the checker tries them alone and in pairs. The registry 
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -56,6 +57,11 @@ class Mistake:
         every one of them, to be named at all (a tie rule: every failing case wrong only at
         centres on an edge; r84 10-2: a mirrored tie rule was named "E > 0" on one case and
         "E ≥ 0" on another, each right only there).
+    parameter : callable, optional
+        ``parameter(args, expected, got) -> float``: the one number a fitted mistake has on
+        this case (an ε added to E, a constant factor); the mistake is named only where that
+        number is the same on every failing case it fits (r164: an "ε" fitted case by case
+        took a constant factor, whose ε grows with E, for a guard against dividing by 0).
     """
 
     kind: str
@@ -67,6 +73,7 @@ class Mistake:
     parts: tuple = ()
     without: Callable | None = field(default=None, repr=False)  # (part) -> gives without it
     must_fit: Callable | None = field(default=None, repr=False)
+    parameter: Callable | None = field(default=None, repr=False)
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words
@@ -254,11 +261,15 @@ class Exercise:
     inputs_drawn: bool = False
 
     def all_mistakes(self) -> list[Mistake]:
-        """The mistakes table with every :class:`Knobs` family expanded."""
-        out = []
-        for m in self.mistakes:
-            out.extend(m.mistakes() if isinstance(m, Knobs) else [m])
-        return out
+        """The mistakes table with every :class:`Knobs` family expanded (the same mistakes on
+        every call: :mod:`.diagnosis` remembers each one's answers by the mistake)."""
+        expanded = self.__dict__.get("_expanded")
+        if expanded is None:
+            expanded = []
+            for m in self.mistakes:
+                expanded.extend(m.mistakes() if isinstance(m, Knobs) else [m])
+            object.__setattr__(self, "_expanded", expanded)  # frozen: set once, on first use
+        return list(expanded)
 
 
 def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake] = ()) -> list:
@@ -308,6 +319,36 @@ def content_key(value):
         keys = tuple(content_key(v) for v in value)
         return None if None in keys else (type(value).__name__, keys)
     return None
+
+
+def case_key(value):
+    """:func:`content_key`, also of a frozen dataclass's fields (a coverage case) and of a
+    list's subclass (a mip :class:`~.texture_filtering.Pyramid`), each with its type: a key
+    of a case's arguments, equal only for arguments no mistake can tell apart.
+
+    >>> from .cases import CoverageCase
+    >>> a = CoverageCase("a", np.zeros((1, 3, 2)), (0, 0), (4, 4))
+    >>> case_key((a,)) == case_key((CoverageCase("a", np.zeros((1, 3, 2)), (0, 0), (4, 4)),))
+    True
+    >>> case_key((a,)) == case_key((CoverageCase("a", np.ones((1, 3, 2)), (0, 0), (4, 4)),))
+    False
+    """
+    if isinstance(value, (list, np.ndarray)) and type(value) not in (list, np.ndarray):
+        if getattr(value, "__dict__", None) != {} or isinstance(value, np.ndarray):
+            return None  # state beside the items (or slots, or an array subclass): unknown
+    if isinstance(value, list) or type(value) is tuple:
+        keys = tuple(case_key(v) for v in value)
+        return None if None in keys else (type(value), keys)
+    # by their bits: -0.0 is not 0.0 (1 / x tells them apart), and NaN is NaN
+    if type(value) is float:
+        return (float, np.float64(value).tobytes())
+    if isinstance(value, np.inexact):
+        return (type(value), value.tobytes())
+    params = getattr(type(value), "__dataclass_params__", None)
+    if params is not None and params.frozen and not isinstance(value, type):
+        keys = tuple(case_key(getattr(value, f.name)) for f in dataclasses.fields(value))
+        return None if None in keys else (type(value), keys)
+    return content_key(value)
 
 
 def copies(args) -> tuple:

@@ -16,10 +16,11 @@ import numpy as np
 from ..core.barycentrics import barycentric
 from ..core.edges import edge_function
 from ..core.interpolation import blend, perspective_weights
+from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..study.hardcases import CASES
 from .answers import as_number, as_numbers, short
 from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
-from .diagnosis import held_by_precision
+from .diagnosis import held_by_precision, scaled_mistake
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, num, tri_words, vec
 from .tolerance import all_close, close
@@ -99,7 +100,9 @@ def call_barycentric(fn, args):
 
 def same_barycentric(got, expected, args) -> bool:
     if isinstance(expected, str) or isinstance(got, str):
-        return got == expected
+        # a str beside an array compares element by element (r164 C2: the refusing
+        # mistakes' ValueError beside expected weights raised, and no mistake was named)
+        return isinstance(got, str) and isinstance(expected, str) and got == expected
     return all_close(got, expected)
 
 
@@ -180,9 +183,31 @@ def _epsilon_fits(args, expected, got) -> bool | None:
     if g.shape != (3,) or not np.isfinite(g).all() or total == 0:
         return False
     delta = area / total - area
-    if delta == 0 or abs(delta) > 1e-3 or _rounded(g, expected):
+    # r164: the sign a guard has, E + ε or E + copysign(ε, E) (a "−8e-05 added to E =
+    # −7.63e-05" was half-areas); one ε on every case: :func:`_epsilon`
+    guard = delta > 0 or (delta < 0) == (area < 0)
+    if delta == 0 or abs(delta) > 1e-3 or not guard or _rounded(g, expected):
         return False
     return bool(np.allclose(g, _areas(xy, p) / (area + delta), rtol=1e-12, atol=1e-300))
+
+
+def _epsilon(args, expected, got) -> float | None:
+    """The size of the ε added to E on this case (:func:`_epsilon_fits`), the one number
+    that must be the same on every case it is named on (:attr:`.Mistake.parameter`)."""
+    xy, _ = args
+    area, total = _area(xy), float(np.sum(np.asarray(got, dtype=float)))
+    return abs(area / total - area) if total else None
+
+
+def _scaled_words(args, expected, got, c) -> str:
+    """r164: answers off by one constant factor (a forgotten or doubled ½) were told
+    "you added a small number to E"."""
+    return (
+        f": your weights are the right ones times {num(c, 1.0)} on every case: off by a "
+        f"constant factor, so they sum to {num(c, 1.0)}, not 1 (a factor left in the "
+        "numerators or the denominator: each weight is E of the edge opposite its vertex over "
+        "E(v1, v2, v3), with nothing else)"
+    )
 
 
 def rounded_decimals(got, expected) -> int | None:
@@ -250,11 +275,40 @@ def _zero_area_words(args, expected, got) -> str:
 
 def _refused_words(args, expected, got) -> str:
     xy, _ = args
+    area = _area(xy)
+    if abs(area) >= 1:  # r164 C2: "however thin" was said of a 67.5-px² triangle
+        return (
+            f": this triangle's E(v1, v2, v3) = {num(area)} is not 0 (its area is "
+            f"{num(abs(area) / 2)} px²), so it has weights: refuse only an area of exactly 0"
+        )
     return (
-        f": this triangle's E(v1, v2, v3) = {num(_area(xy))} is not 0, so it has weights, "
+        f": this triangle's E(v1, v2, v3) = {num(area)} is not 0, so it has weights, "
         "however thin it is: refuse only an area of exactly 0 (on the 1/256-px grid float64 "
         "computes E exactly, so no threshold is needed, and one such as |E| < 1 refuses thin "
         "triangles that have weights)"
+    )
+
+
+def _winding_refused(sign: float):
+    """The weights, refused (ValueError) where E(v1, v2, v3) has the sign ``sign``: r164 C2,
+    ``if E <= 0: raise ValueError`` (a triangle taken to need a positive area)."""
+
+    def gives(xy, p):
+        area = _area(xy)
+        return REFUSED if area * sign > 0 else _areas(xy, p) / area
+
+    return gives
+
+
+def _winding_words(args, expected, got) -> str:
+    xy, _ = args
+    area = _area(xy)
+    way = "counter-clockwise" if area < 0 else "clockwise"
+    return (
+        f": E(v1, v2, v3) = {num(area)} {'<' if area < 0 else '>'} 0: this triangle runs "
+        f"{way} on screen (its area is {num(abs(area) / 2)} px²), and you refused every "
+        f"triangle of that winding. 3.1 asks that the same formula serve both windings (each "
+        "weight is a ratio of two signed areas, whose signs cancel), so refuse only E == 0"
     )
 
 
@@ -290,6 +344,8 @@ def _float32_off_grid_words(args, expected, got) -> str:
 
 
 ZERO_AREA_MISTAKES = [
+    Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(-1.0))),
+    Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(1.0))),
     Mistake("float32", _float32_off_grid_words, fits=_float32_off_grid),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
@@ -335,7 +391,14 @@ def _proper_mistakes() -> list[Mistake]:
                 "rebuild p and sum to 1); do not clamp them", gives=_clamped),
         Mistake("p's x and y swapped", ": you swapped p's x and y: p = (x, y), its column "
                 "first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
-        Mistake("epsilon added to the area", _epsilon_words, fits=_epsilon_fits),
+        Mistake("half areas", _sum_words("you took half of each sub-triangle's E (its "
+                                         "area) but divided by the whole E(v1, v2, v3) = "
+                                         "{area}, twice the triangle's area: take both as "
+                                         "areas or both as E, and the ½ cancels"),
+                gives=lambda xy, p: 0.5 * _areas(xy, p) / _area(xy)),
+        Mistake("epsilon added to the area", _epsilon_words, fits=_epsilon_fits,
+                parameter=_epsilon, only_whole=True),
+        scaled_mistake(_scaled_words),
         Mistake("rounded", _rounded_words,
                 fits=lambda args, expected, got: _rounded(np.asarray(got, float), expected)),
     ]  # fmt: skip
@@ -428,23 +491,29 @@ def _draw_bary(ax, case, got):
     from .drawing import draw_values
 
     _, (xy, p), expected = case
-    if isinstance(expected, str) or isinstance(got, str):  # a zero area, or a refusal
-        # r153 E13-14: no empty 0-1 axes beside the words; the student's answer said
+    if got is None or isinstance(expected, str) or isinstance(got, str):
+        # a zero area, a refusal, or no answer (r153 E13-14: no empty 0-1 axes beside the
+        # words); r164: the report's note (a time limit, an exception, not counted) takes the
+        # left part, which it would share with the bars or with these words
         ax.set_xticks([])
         ax.set_yticks([])
         for spine in ax.spines.values():
             spine.set_visible(False)
+        inset = ax.inset_axes([0.56, 0.06, 0.42, 0.88])
+        if got is None:
+            return _draw_triangle_and_p(inset, xy, p)
         if isinstance(expected, str):
             said = f"zero area: no weights\n(E(v1, v2, v3) = {num(_area(xy))})"
-            if got is not None and not isinstance(got, str):
-                yours = ", ".join(f"{x:.3g}" for x in np.asarray(got, dtype=float))
-                said += f"\n\nyours: ({yours})"
+            if not isinstance(got, str):  # r164: one number a line (three ran under the inset)
+                said += "\n\nyours:\n" + "\n".join(
+                    f"λ{k + 1} = {x:.3g}" for k, x in enumerate(np.asarray(got, dtype=float))
+                )
         else:
             said = f"E(v1, v2, v3) = {num(_area(xy))}:\nits weights are\n{vec(expected)}"
             said += "\n\nyou raised ValueError"
         artists = [ax.text(0.27, 0.5, said, transform=ax.transAxes, ha="center", va="center",
                            fontsize="small")]  # fmt: skip
-        return artists + _draw_triangle_and_p(ax.inset_axes([0.56, 0.06, 0.42, 0.88]), xy, p)
+        return artists + _draw_triangle_and_p(inset, xy, p)
     artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
     error = None if got is None else float(np.max(np.abs(np.asarray(got, float) - expected)))
     if error is not None and 0 < error < 1e-3 * max(1.0, float(np.abs(expected).max())):
@@ -514,13 +583,26 @@ def _draw_triangle_and_p(ax, xy, p) -> list:
     return artists
 
 
+#: Every package function that computes 3.1's weights, the one list the check reads
+#: (:mod:`.package_answers`): ``barycentric`` and every function of its module (r148 D12-5: the
+#: package's internals counted as the student's work), and lesson 03's planes and set-up
+#: matrix, whose plane of the values (1, 0, 0) at the vertices is λ1 itself (r164 C1: three
+#: one-line wrappers of them passed all 157 cases). ``edge_function`` is a tool, not listed.
+BARYCENTRIC_ANSWERS = (
+    PackageAnswer(barycentric, modules=("teachraster.core.barycentrics",)),
+    *(PackageAnswer(f, what=f"the plane of any value over the triangle {how} (the plane of "
+                    "the values (1, 0, 0) at the vertices is λ1 itself)")
+      for f, how in ((plane_equation, "from A, B, C, D"),
+                     (attribute_plane, "from the set-up matrix"))),
+    PackageAnswer(setup_matrix, what="the solve of the triangle's equations (M maps p − v1 "
+                  "to λ2 and λ3)"),
+)  # fmt: skip
+
+
 BARYCENTRIC = Exercise(
     "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
     same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
-    float32=bary_float32, float32_words=bary_float32_words, answers=(PackageAnswer(
-        # every function of its module computes barycentrics (r148 D12-5: the package's
-        # internals counted as the student's work)
-        barycentric, modules=("teachraster.core.barycentrics",)),),
+    float32=bary_float32, float32_words=bary_float32_words, answers=BARYCENTRIC_ANSWERS,
     draw=_draw_bary, call=call_barycentric, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student (r153 D3-6: the

@@ -14,6 +14,7 @@ Expected answers: :func:`teachraster.core.interpolation.weights_per_row`, the re
 
 from __future__ import annotations
 
+import itertools
 from functools import lru_cache
 
 import numpy as np
@@ -112,7 +113,16 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             "absolute sum": (lam / w) / np.abs(lam / w).sum() if (lam < 0).any() else None,
             "no lambda": _normalised(1 / w),
             "w reversed": _normalised(lam / w[::-1]),
-        }
+            # r164 B5: six more got only "write λ_i in terms of μ ..."
+            **{f"no 1/w at v{k + 1}": _normalised(np.where(np.arange(3) == k, lam, lam / w))
+               for k in range(3)},
+            "divided by w twice": _normalised(lam / w**2),
+            "clipped": (_normalised(np.clip(lam, 0.0, 1.0) / w)
+                        if ((lam < 0) | (lam > 1)).any() else None),
+            "sum of 1/w": (lam / w) / np.sum(1 / w),
+            **{f"no 1/w in the sum at v{k + 1}": (lam / w) / (np.sum(lam / w) - lam[k] / w[k]
+                                                           + lam[k]) for k in range(3)},
+        }  # fmt: skip
 
 
 def _normalised(q: np.ndarray) -> np.ndarray:
@@ -140,7 +150,46 @@ MISTAKES = {
     "while each μ_i must be 1 at its vertex v_i (where λ_i is 1) and 0 on the edge opposite",
     "w reversed": "you paired λ_i with another vertex's w (the w in reverse order): each "
     "vertex's λ goes with that vertex's own w",
-}
+    **{f"no 1/w at v{k + 1}": f"your weight of v{k + 1} leaves out its 1/w: λ{k + 1} itself, "
+       "where the other two are divided by their w before the three are normalised; every "
+       "vertex's λ is divided by its own w" for k in range(3)},
+    "divided by w twice": "you divided each λ by its w twice (λ_i / w_i²): the screen position "
+    "divides by w once",
+    "clipped": "you clipped λ to [0, 1] before weighting: the point lies outside the triangle "
+    "(as a clipped or extrapolated one does), and its weights are not clamped here: a negative "
+    "λ gives a negative μ",
+    "sum of 1/w": "you divided by Σ 1/w_j, the three 1/w alone: that sum leaves the λ out, so "
+    "your weights do not sum to 1; divide by the sum of your own three numerators",
+    **{f"no 1/w in the sum at v{k + 1}": f"the sum you divide by holds λ{k + 1} itself where "
+       f"your numerator of v{k + 1} has λ{k + 1} / w{k + 1}: divide by the sum of your own "
+       "three numerators" for k in range(3)},
+}  # fmt: skip
+
+
+def _paired(sigma):
+    """λ_i divided by w_σ(i), normalised: λ paired with another vertex's w (r164 B5: w
+    shifted by one place, or μ2 computed with w1, got only the rule)."""
+
+    def gives(lam, w):
+        with np.errstate(all="ignore"):
+            return _normalised(np.asarray(lam) / np.asarray(w)[list(sigma)])
+
+    return gives
+
+
+def _paired_words(sigma) -> str:
+    pairs = [f"λ{i + 1} with w{j + 1}" for i, j in enumerate(sigma) if i != j]
+    listed = pairs[0] if len(pairs) == 1 else ", ".join(pairs[:-1]) + " and " + pairs[-1]
+    return (f"you paired {listed}: each vertex's λ goes with that vertex's own w (the same "
+            "place in w)")  # fmt: skip
+
+
+#: Every other way of pairing the three λ with the three w (the reversal is "w reversed").
+PAIRINGS = [
+    Mistake("w of another vertex", _paired_words(sigma), gives=_paired(sigma))
+    for sigma in itertools.product(range(3), repeat=3)
+    if sigma not in ((0, 1, 2), (2, 1, 0))
+]
 
 
 def explain_weights(args, expected, got) -> str:
@@ -193,7 +242,11 @@ def _nudge(args, got) -> float | None:
     if not np.isfinite(s) or s == 0:
         return None
     delta = s / total - s
-    if abs(delta) > 1e-3 * abs(s) or not np.allclose(g, q / (s + delta), rtol=1e-9, atol=1e-300):
+    # r164: a guard adds a positive ε (the sum is positive: the point is in front); one ε
+    # on every case (:attr:`.Mistake.parameter`): Σ 1/w_j for Σ λ_j/w_j was "about 2e-03"
+    if delta <= 0 or abs(delta) > 1e-3 * abs(s):
+        return None
+    if not np.allclose(g, q / (s + delta), rtol=1e-9, atol=1e-300):
         return None
     return delta
 
@@ -208,7 +261,8 @@ def _nudge_words(args, expected, got) -> str:
 
 #: r153 D3-4: an epsilon in the normaliser, ``q / (q.sum() + 1e-9)``
 NUDGED = Mistake("epsilon added to the sum", _nudge_words,
-                 fits=lambda a, e, g: _nudge(a, g) is not None)  # fmt: skip
+                 fits=lambda a, e, g: _nudge(a, g) is not None,
+                 parameter=lambda a, e, g: _nudge(a, g), only_whole=True)  # fmt: skip
 
 SYMPTOMS = (
     Mistake("sum", _sum_words, fits=lambda a, e, g: _sums_to_other_than_1(g), symptom=True),
@@ -234,7 +288,7 @@ def draw_weights(ax, case, got):
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    [*variant_mistakes(_variants, MISTAKES), NUDGED, *SYMPTOMS],
+    [*variant_mistakes(_variants, MISTAKES), *PAIRINGS, NUDGED, *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
@@ -250,5 +304,10 @@ PERSPECTIVE_WEIGHTS = Exercise(
          "w, turn that around, and make the weights sum to 1"),
         (" (μ_i ∝ λ_i / w_i; yours already sum to 1)", ": write λ_i in terms of μ and the "
          "three w and turn that around (yours already sum to 1)"),
+        # r164 B5: the new words for λ/w² and a weight without its 1/w say the division
+        (": the screen position divides by w once", ": write λ_i in terms of μ and the three "
+         "w and turn that around (how often does the screen position divide by w?)"),
+        ("; every vertex's λ is divided by its own w", "; write λ_i in terms of μ and the three "
+         "w: what does each vertex's w do to its weight?"),
     ),
 )  # fmt: skip

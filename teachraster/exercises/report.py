@@ -276,12 +276,16 @@ NOTHING_DRAWN_YET = (
 
 
 def _note(ax, text: str, width: int = 60):
-    """A boxed note across the axes (what happened, where no answer can be drawn)."""
+    """A boxed note (what happened, where no answer can be drawn) across the part of the axes
+    that no inset covers (r164: 3.1's note lay under the triangle inset on the right, half
+    of it unreadable), wrapped to that part's width."""
     import textwrap
 
-    lines = textwrap.wrap(text, width)[:6]
+    left, right = _free_span(ax)
+    share = right - left
+    lines = textwrap.wrap(text, max(16, int(width * share)))[: 6 if share > 0.9 else 16]
     return ax.text(
-        0.5,
+        (left + right) / 2,
         0.5,
         "\n".join(lines),
         transform=ax.transAxes,
@@ -290,3 +294,25 @@ def _note(ax, text: str, width: int = 60):
         fontsize="x-small",
         bbox={"boxstyle": "round", "facecolor": "#fff4f2", "edgecolor": "#d7301f"},
     )
+
+
+def _free_span(ax) -> tuple[float, float]:
+    """(left, right), in axes coordinates, of the widest strip of ``ax`` that none of its
+    insets (:meth:`~matplotlib.axes.Axes.inset_axes` within it) covers, with a margin."""
+    covered = []
+    for inset in getattr(ax, "child_axes", ()):
+        locator = inset.get_axes_locator()
+        if locator is None:
+            continue
+        # the inset's box (figure fractions) in ``ax``'s own coordinates
+        box = locator(inset, None).transformed(inset.figure.transSubfigure - ax.transAxes)
+        x0, x1 = box.x0, box.x1
+        if x0 < 1 and x1 > 0:  # inside the axes (hiz_tile's lies outside, at x < 0)
+            covered.append((max(0.0, x0), min(1.0, x1)))
+    if not covered:
+        return 0.0, 1.0
+    edges = sorted({0.0, 1.0, *(c for span in covered for c in span)})
+    gaps = [(a, b) for a, b in zip(edges, edges[1:])
+            if not any(lo < (a + b) / 2 < hi for lo, hi in covered)]  # fmt: skip
+    a, b = max(gaps, key=lambda g: g[1] - g[0], default=(0.0, 1.0))
+    return a + 0.02, b - 0.02
