@@ -352,6 +352,18 @@ def put_notebook(page, cells, name: str) -> None:
     assert page.evaluate(API, ["PUT", f"/api/contents/{name}", body]) in (200, 201)
 
 
+def save_and_read(page, base: str, name: str) -> dict:
+    """Save the open notebook as a student's File > Save does, and read back what the server
+    stored for ``name`` (its cells with their outputs)."""
+    page.click(".lm-MenuBar-itemLabel:text-is('File')")
+    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
+    page.wait_for_function(
+        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
+    )
+    with urllib.request.urlopen(f"{base}/api/contents/{name}", timeout=30) as r:
+        return json.load(r)["content"]
+
+
 def open_cells(page, base: str, cells, name: str, app: str = "lab/tree") -> None:
     """A notebook of ``cells`` written as ``name`` and opened alone in ``app`` ("lab/tree",
     JupyterLab, or "notebooks", Notebook 7) with a fresh kernel; not run.

@@ -12,9 +12,9 @@ Playwright or Chromium is missing (CI makes them required).
 from __future__ import annotations
 
 import json
-import urllib.request
 
 import pytest
+from notebook_browser import save_and_read
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _api, _run_all, _stop_kernels
 
@@ -51,13 +51,7 @@ def test_an_answer_cell_shows_only_after_check_and_stays_hidden_when_reopened(la
     assert not _answer(page).is_visible()  # ... and hidden
     assert _line(page).is_visible() and HELD_TEXT in _line(page).inner_text()
 
-    page.click(".lm-MenuBar-itemLabel:text-is('File')")  # saved before the answer
-    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
-    page.wait_for_function(
-        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
-    )
-    with urllib.request.urlopen(f"{lab}/api/contents/{NAME}", timeout=30) as r:
-        saved = json.load(r)["content"]
+    saved = save_and_read(page, lab, NAME)  # saved before the answer
     texts = "".join(o.get("text", "") for o in saved["cells"][1]["outputs"])
     assert "THE ANSWER: clockwise" in texts  # the output is the cell's, as tests read it
 
@@ -262,13 +256,7 @@ def test_an_untrusted_copy_says_it_cannot_hide_the_answer(lab, page):  # noqa: F
     _run_all(lab, page, CELLS, NAME)
     _answer(page).wait_for(state="attached", timeout=60_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
-    page.click(".lm-MenuBar-itemLabel:text-is('File')")
-    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
-    page.wait_for_function(
-        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
-    )
-    with urllib.request.urlopen(f"{lab}/api/contents/{NAME}", timeout=30) as r:
-        saved = json.load(r)["content"]
+    saved = save_and_read(page, lab, NAME)
     for cell in saved["cells"]:  # a copy from elsewhere: nothing marks its outputs trusted
         cell.get("metadata", {}).pop("trusted", None)
     saved["metadata"]["copied"] = True  # not the signed notebook's content, hash or trust

@@ -19,7 +19,7 @@ import json
 import urllib.request
 
 import pytest
-from notebook_browser import API, open_cells, put_notebook
+from notebook_browser import API, open_cells, put_notebook, save_and_read
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 
 pytestmark = [
@@ -93,13 +93,7 @@ def test_a_saved_lesson_reopened_shows_pictures_not_model_not_found(lab, page): 
     assert fallbacks.count() == 4  # one per widget, in the page but hidden while they live
     assert not any(f.is_visible() for f in fallbacks.all())
     # saved with its outputs, as a student's Ctrl+S does
-    page.click(".lm-MenuBar-itemLabel:text-is('File')")
-    page.click(".lm-Menu-itemLabel:text-is('Save Notebook')")
-    page.wait_for_function(
-        "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
-    )
-    with urllib.request.urlopen(f"{lab}/api/contents/{NAME}", timeout=30) as r:
-        saved = json.load(r)["content"]
+    saved = save_and_read(page, lab, NAME)
     html = [o["data"].get("text/html", "") for c in saved["cells"] for o in c.get("outputs", [])
             if "data" in o]  # fmt: skip
     # each widget: an output with the picture; the widget's own output has an empty

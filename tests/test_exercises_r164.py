@@ -6,12 +6,12 @@ plane's cancellation, weights negated (F1); ``E <= 0`` refused was told "however
 
 from __future__ import annotations
 
-import re
-import warnings
-
 import matplotlib
 import numpy as np
 import pytest
+
+# the same students and readers as reader 153's tests (exercise 03 too)
+from test_exercises_r153 import _e, _lam, _vertices, check, f32_abs_area, kinds
 
 import teachraster as tr
 from teachraster import exercises as ex
@@ -22,32 +22,9 @@ from teachraster.plotting import use_style
 matplotlib.use("Agg")
 
 
-def _e(a, b, p):
-    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-
-
-def _lam(xy, p, kind=float):
-    v1, v2, v3 = np.asarray(xy, kind)
-    q = np.asarray(p, kind)
-    area = _e(v1, v2, v3)
-    if area == 0:
-        raise ValueError("zero area")
-    return np.array([_e(v2, v3, q), _e(v3, v1, q), _e(v1, v2, q)]) / area, area
-
-
 def _mu(lam, w):
     q = np.asarray(lam, float) / np.asarray(w, float)
     return q / q.sum()
-
-
-def check(name, fn):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return ex.check(name, fn)
-
-
-def kinds(report) -> set:
-    return {f.kind for f in report.failures}
 
 
 # -- C1: every package function that computes 3.1's weights ----------------------------------
@@ -102,16 +79,6 @@ def test_the_edge_function_stays_a_tool_and_a_right_answer_passes():
 
 
 # -- F1: a sign mistake far from the origin is no float32 rounding ---------------------------
-def f32_abs_area(xy, p):
-    lam, area = _lam(xy, p, np.float32)
-    return lam * area / abs(area)
-
-
-def _vertices(words: str) -> np.ndarray:
-    found = re.search(r"v1=\(([^)]*)\), v2=\(([^)]*)\), v3=\(([^)]*)\)", words)
-    return np.array([[float(x) for x in g.split(",")] for g in found.groups()])
-
-
 def test_float32_with_abs_area_far_out_is_named_abs_not_cancellation():
     report = check("barycentric", f32_abs_area)
     far_negative = 0
