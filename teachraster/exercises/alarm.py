@@ -275,6 +275,10 @@ class Alarm:
             if callable(self._previous):
                 return self._previous(signum, frame)
             return None
+        if frame is not None and frame.f_code is _IN_COLLECTION:
+            # raised in a gc callback, the exception would be printed as "Exception ignored"
+            # and lost: the watchdog sends the next interrupt a tick later, in the case's code
+            return None
         if self.fires > 1 and sys.version_info >= (3, 11):
             self._trace_frames(frame)
         raise CaseInterrupt(f"stopped after {self.seconds:g} s")
@@ -335,3 +339,7 @@ class Alarm:
                     return
 
         threading.Thread(target=watch, daemon=True, name="teachraster-check-watchdog").start()
+
+
+#: the code of :meth:`Alarm._on_collection`, a ``gc.callbacks`` entry: no interrupt is raised there
+_IN_COLLECTION = Alarm._on_collection.__code__
