@@ -579,6 +579,23 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     assert gauss[1] < box[1] and gauss[0] > box[0] and gauss[2] > box[2]
     assert f"  gaussian   1.0      {gauss[0]:11.3f}  {gauss[1]:11.3f}  {gauss[2]:5.3f}" in printed
     assert "leaks far less but blurs more, and here the blur costs more than the leak" in text
+    # 13: the spectra drawn are the explorer's filters: a cosine of frequency u (cycles per
+    # spacing) filtered by the widget's own prefilter keeps the share the curves give
+    from teachraster.plotting.sampling import FINE, prefilter
+
+    x = (np.arange(FINE) + 0.5) / FINE
+    middle = slice(FINE // 4, 3 * FINE // 4)  # away from the mirrored ends
+    for kind in ("box", "gaussian"):
+        for u in (0.25, 0.75, 1.43):
+            wave = np.cos(2 * np.pi * 32 * u * x)
+            out = prefilter(wave, 1 / 32, 1.0, kind)
+            share = abs(out[middle] @ wave[middle]) / (wave[middle] @ wave[middle])
+            drawn = abs(np.sinc(u)) if kind == "box" else np.exp(-2 * (np.pi * u / 2) ** 2)
+            assert share == pytest.approx(drawn, abs=0.015), (kind, u)
+    said = "a wave at u = 0.75 (above the limit: sampled, it is read as u = 0.25): box keeps"
+    assert f"{said} 0.30, Gaussian 0.06" in printed
+    assert "box's side lobe: keeps up to 0.22 of a wave at u = 1.43" in printed
+    assert "Sampling then **folds** every frequency above the limit" in text
     # 11, 12, 14, 17, 18
     assert "[exercises/06_antialiasing.ipynb](exercises/06_antialiasing.ipynb)" in text
     assert (root / "notebooks" / "exercises" / "06_antialiasing.ipynb").exists()
