@@ -546,8 +546,9 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     printed = streams(executed("08_antialiasing").notebook())
     # 3: beside the notebook, the path printed
     assert ns.gif.parent.name == "exports" and ns.gif.is_absolute()
-    (said,) = [line for line in printed.splitlines() if line.startswith("the GIF, for slides: ")]
-    assert said.endswith("/exports/08_crawling_edges.gif")
+    lines = printed.splitlines()
+    (at,) = [k for k, line in enumerate(lines) if line.startswith("the GIF, for slides")]
+    assert lines[at + 1].endswith("/exports/08_crawling_edges.gif")
     assert "mkdtemp" not in " ".join(sources) and "`exports/` beside the notebook" in text
     # F2: the plane as lesson 03 writes it; lesson 03's pointer to §2
     assert "f_a + g_x(x - a_x)" not in text and "(lesson 03's $f = g_x x + g_y y + g_0$)" in text
@@ -592,7 +593,7 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
             share = abs(out[middle] @ wave[middle]) / (wave[middle] @ wave[middle])
             drawn = abs(np.sinc(u)) if kind == "box" else np.exp(-2 * (np.pi * u / 2) ** 2)
             assert share == pytest.approx(drawn, abs=0.015), (kind, u)
-    said = "a wave at u = 0.75 (above the limit: sampled, it is read as u = 0.25): box keeps"
+    said = "a wave at u = 0.75, above the limit: sampled, it is read as u = 0.25:\n  box keeps"
     assert f"{said} 0.30, Gaussian 0.06" in printed
     assert "box's side lobe: keeps up to 0.22 of a wave at u = 1.43" in printed
     assert "Sampling then **folds** every frequency above the limit" in text
