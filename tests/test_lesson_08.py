@@ -605,3 +605,8 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     assert "the pixel shows the mean of all $S$ samples (the uncovered ones hold the" in text
     assert "$a \\to b$ is top or left when $b_y < a_y$, or $b_y = a_y$ and $b_x > a_x$" in text
     assert "Sutherland" not in text and "(a narrower angle of the other directions)" not in text
+    # 15, 16: the held text on q_levels hedged once; the summary explains the GPU, not the
+    # simulator (§6 keeps its one pointer to the plan)
+    assert "can still show an extra value" not in " ".join(sources)
+    summary = text.split("## Summary")[1]
+    assert "shortcut of the simulator" not in summary and "a saving of bandwidth." in summary
