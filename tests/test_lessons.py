@@ -461,4 +461,6 @@ def test_03_r155_homogeneous_rows_and_the_msaa_centre():
     )  # fmt: skip
     assert "$w_k (x_k, y_k, 1)$" in md and "the third column holds each vertex's $w$" not in md
     assert "Direct3D's default" in md and "GL leaves the location open" in md
+    # r171: lesson 08 says so in its section 2 (its section 5 is on centroid sampling)
+    assert "open: lesson 08, section 2)" in md and "lesson 08, section 5" not in md
     assert "two weights are negative" in md and "one weight negative" not in md

@@ -175,14 +175,20 @@ def test_02_q_step_is_asked_in_the_snapped_integers(monkeypatch):
 
 def test_08_q_fastest_asks_the_fitted_exponent():
     """r147 #9: "slowest / lowest" was qualitative where the lesson fits slopes. Now the
-    jittered exponent, a number (± 0.1), with random's −1/2 given to scale it."""
+    jittered exponent, a number, with random's −1/2 given to scale it. r171 9: ± 0.05 (± 0.1
+    took any guess between −0.5 and −1), and no "an error of at most 1/S" in the stem."""
     ns = lesson("08_antialiasing")
     assert ns.jittered_k == ns.fitted["jittered"] == pytest.approx(ns.edge_slopes["jittered"])
-    assert -0.85 < ns.jittered_k < -0.65
-    assert abs(ns.jittered_k - ns.fitted["random"]) > 0.1  # random's rate is not the answer
-    assert abs(ns.jittered_k + 1) > 0.1
+    assert -0.8 < ns.jittered_k < -0.7 and abs(ns.jittered_k - ns.STRATIFIED_ERROR_EXPONENT) < 0.05
+    tolerance = 0.05
+    # the tolerance tells the answer from random's rate, the grid's fitted slope, the −1 of a
+    # bounded number of undecided samples and the variance's −1.5
+    answer = round(ns.jittered_k, 2)
+    for wrong in (ns.fitted["random"], ns.fitted["grid"], -0.5, -1.0, -1.5):
+        assert abs(answer - wrong) > tolerance, wrong
     stem = _asked_text("08_antialiasing", "q_fastest = Predict(")
     assert "S<sup>−1/2</sup>" in stem and "3/4" not in stem and "Mitchell" not in stem
+    assert "at most 1/S" not in stem and "± 0.05 counts" in stem
     seen = seen_before_check("08_antialiasing", "q_fastest = Predict(", "q_fastest")
     k = f"{ns.jittered_k:.2f}"
     for given in (k, k.replace("-", "−"), "−3/4", "-3/4", "S^{-3/4}"):
@@ -219,3 +225,33 @@ def test_05a_q_order_has_its_picture_and_a_figure_reveal():
     assert not re.search(r"cycle|over|no order", _source(reveal).split("\n", 1)[0])
     seen = seen_before_check("05a_zbuffer", "q_order = PredictOrder(", "q_order")
     assert not re.search(r"\b(red|green|blue) over|\bcycle\b|no order works", seen)
+
+
+def test_08_q_fastest_notes_reason_right(monkeypatch):
+    """r171 F1: the note for −1 said errors added in one direction give −1; they give
+    √S · 1/S = S^−1/2. −1 needs a bounded number of undecided samples. Each wrong answer's
+    note is read in the widget after Check; the right answer gets none of them."""
+    from teachraster.study.antialiasing import STRATIFIED_ERROR_EXPONENT, edge_error_study
+    from teachraster.widgets import Predict
+
+    monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
+    cells = _cells("08_antialiasing")
+    cell = _source(cells[_ask_index(cells, "q_fastest = Predict(")])
+    assert "tolerance=0.05," in cell
+    said = {}
+    for typed in ("-0.5", "-1", "-1.5", "-0.75"):
+        scope = {"np": np, "Predict": Predict, "edge_error_study": edge_error_study,
+                 "STRATIFIED_ERROR_EXPONENT": STRATIFIED_ERROR_EXPONENT}  # fmt: skip
+        exec(cell, scope)
+        q = scope["q_fastest"]
+        q.control.value = typed
+        q.check.click()
+        said[typed] = (q.correct, " ".join(q.feedback.value.split()))
+    assert [said[t][0] for t in ("-0.5", "-1", "-1.5", "-0.75")] == [False, False, False, True]
+    assert "only in the about 2√S cells the edge crosses" in said["-0.5"][1]
+    minus_one = said["-1"][1]
+    assert "a bounded number of samples are undecided" in minus_one
+    assert "in one direction would give √S · 1/S = S<sup>−1/2</sup>" in minus_one
+    assert "added up in one direction" not in minus_one  # the old, wrong reason
+    assert "<i>variance</i>" in said["-1.5"][1] and "square root" in said["-1.5"][1]
+    assert "bounded number" not in said["-0.75"][1] and "<i>variance</i>" not in said["-0.75"][1]
