@@ -2031,7 +2031,8 @@ def test_09_quads_closed_form_and_predictions():
     asked = source[source.index("q_reads = Predict(") :]
     asked = asked[: asked.index("q_reads.hold()")]
     assert "128 × 96" in asked and "256 × 192" in asked  # the explain's numbers' source
-    assert "reads_answer = reads_choices[1]" in asked and "2**k > check" in asked
+    measured = source[source.index("reads_choices = [") : source.index("q_reads = Predict(")]
+    assert "reads_answer = reads_choices[1]" in measured and "2**k > check" in source
     # the Predict of §6, before the EXT formula: 8.2 x 8 texels takes 2 probes, a level finer
     from teachraster.plotting.footprint import footprint
 
@@ -2151,7 +2152,7 @@ def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe(
     assert ns.check == 8 and (np.flatnonzero(np.diff(row)) + 1 == np.arange(8, 128, 8)).all()
     # level by level: identical on levels 0-3, all different on 4-7; bilinear errs less on
     # 0-3, nearest_mipmap_nearest on 4-7
-    for k, (n, same, *_) in ns.by_level.items():
+    for k, (n, same, *_) in ns.nmn_by_level.items():
         assert same == (n if k < 4 else 0), k
     assert ns.band_rms["inside"]["bilinear"] < ns.band_rms["inside"]["nearest_mipmap_nearest"]
     assert ns.band_rms["grey"]["nearest_mipmap_nearest"] < ns.band_rms["grey"]["bilinear"]
@@ -2175,7 +2176,8 @@ def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe(
     # F1: the box one sample wide passes 2/π at the Nyquist limit, nothing at the sampling rate
     # (x = 0.52), its side lobe at most 0.22 beyond (x = 0.75)
     assert ns.box_nyquist == pytest.approx(2 / np.pi) and 0.21 < ns.box_lobe < 0.22
-    assert 0.51 < ns.x_of(ns.rate) < 0.52 and 0.74 < ns.x_of(ns.lobe_f) < 0.76
+    x_of = lambda f: (f - ns.f0) / (ns.f1 - ns.f0)  # noqa: E731 (where the chirp has f)
+    assert 0.51 < x_of(ns.rate) < 0.52 and 0.74 < x_of(ns.lobe_f) < 0.76
     assert "its spectrum has side lobes, so" not in flat and "the yellow band: its side" not in flat
     assert "Its main lobe is twice as wide as the ideal filter's" in flat
     assert '"yellow: above the Nyquist limit"' in flat  # the band in the figure's key
