@@ -2183,6 +2183,10 @@ def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe(
     assert '"yellow: above the Nyquist limit"' in flat  # the band in the figure's key
     # 3: the seams show in the difference from trilinear
     assert ns.gap_at_seams > 3 * ns.gap_between
+    # 5: q_helpers' reveal draws the question's own triangle, its quads and helpers
+    assert ns.lone_art.n_quads == 4 and ns.lone_art.n_helpers == ns.lone_helpers.sum() == 7
+    reveal = next(t for t in text if "lone_art = plot_quads" in t)
+    assert reveal.startswith("q_helpers.hold()")
     # 7, 8, 14
     assert "in the level panel (bottom left)" in flat and "middle (level) panel" not in flat
     assert "a point may light **no** pixel" in flat
