@@ -2021,16 +2021,18 @@ def test_09_quads_closed_form_and_predictions():
     touched = np.kron(cov.reshape(3, 2, 4, 2).any(axis=(1, 3)), np.ones((2, 2), bool))
     assert np.array_equal(ns.lone_helpers, touched & ~cov) and ns.lone_helpers.sum() == 7
     assert ns.one_pixels == "(1, 3) and (4, 1)"
-    # q_reads: one read of the right level errs less than four of level 0 on minified pixels,
-    # but not by half (review r69 09-2: the question asks the ratio's bucket); its explanation
-    # names where its numbers come from (r69 09-1: §7's study, not §5's table)
-    assert 0.55 < ns.ratio < 0.85 and ns.reads_cuts[0] < ns.ratio < ns.reads_cuts[1]
-    assert ns.reads_choices[1].startswith(f"{ns.reads_cuts[0]:g} to {ns.reads_cuts[1]:g}")
+    # q_reads (review r172 09-F2, 10): which minified pixels nearest_mipmap_nearest draws
+    # differently from nearest: only those reading a level whose texels are wider than a
+    # check (4 and up), the answer measured; its explanation still quotes one read of the
+    # right level erring less than four of level 0, not by half, from §7's study (r69 09-1)
+    assert 0.55 < ns.ratio < 0.85
+    assert ns.changed == ns.wider == [4, 5, 6, 7] and ns.reads_answer == ns.reads_choices[1]
     source = (ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text()
     asked = source[source.index("q_reads = Predict(") :]
     asked = asked[: asked.index("q_reads.hold()")]
     assert "128 × 96" in asked and "256 × 192" in asked  # the explain's numbers' source
-    assert "searchsorted(reads_cuts, ratio)" in asked
+    measured = source[source.index("reads_choices = [") : source.index("q_reads = Predict(")]
+    assert "reads_answer = reads_choices[1]" in measured and "2**k > check" in source
     # the Predict of §6, before the EXT formula: 8.2 x 8 texels takes 2 probes, a level finer
     from teachraster.plotting.footprint import footprint
 
@@ -2132,6 +2134,63 @@ def test_09_answers_wait_for_check():
     reads = {r["filter"]: r["reads_minified"] for r in ns.study}
     assert 7.5 < reads["trilinear"] < 8 and 1.5 < reads["nearest_mipmap_linear"] < 2
     assert abs(8 - 4 * ns.past_last - reads["trilinear"]) < 1e-9
+
+
+def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe():
+    """Review r172 09-F2: on this checkerboard (checks 8 texels wide from texel 0) a nearest
+    read of levels 1-3 is level 0's own texel, so nearest_mipmap_nearest draws what nearest
+    draws there and all its gain over bilinear is on the grey levels: the text says so (no
+    longer "the level can be up to half a level too fine"), q_reads asks it, §7 prints it
+    level by level. F1: the box's leak is its main lobe up to the sampling rate, then a side
+    lobe, printed. Items 3, 4, 7, 8, 14 of the same review."""
+    import json
+
+    from test_predictions_r147 import seen_before_check
+
+    ns = lesson("09_texture_filtering")
+    row = ns.levels[0][0, :, 0]
+    assert ns.check == 8 and (np.flatnonzero(np.diff(row)) + 1 == np.arange(8, 128, 8)).all()
+    # level by level: identical on levels 0-3, all different on 4-7; bilinear errs less on
+    # 0-3, nearest_mipmap_nearest on 4-7
+    for k, (n, same, *_) in ns.nmn_by_level.items():
+        assert same == (n if k < 4 else 0), k
+    assert ns.band_rms["inside"]["bilinear"] < ns.band_rms["inside"]["nearest_mipmap_nearest"]
+    assert ns.band_rms["grey"]["nearest_mipmap_nearest"] < ns.band_rms["grey"]["bilinear"]
+    # the table's reference is the study's: its minified errors come out again
+    for f, row in (("bilinear", ns.b), ("nearest_mipmap_nearest", ns.nmn)):
+        rms = float(np.sqrt(ns.sq_small[f][ns.minified_small].mean()))
+        assert rms == pytest.approx(row["error_minified"], rel=1e-9), f
+    assert ns.moved_same < 0.5  # checks off the blocks: "most pixels ... change"
+    assert ns.same_30 == 1.0  # the explorer's checks, at 30°
+    seen = seen_before_check("09_texture_filtering", "q_reads = Predict(", "q_reads")
+    assert "nmn = nearest" not in seen and "grey levels" not in seen
+    assert "checks 8 texels wide, the first from texel 0 to 7" in seen  # the premise, printed
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    flat = " ".join(" ".join(text).split())
+    assert "half a level too fine" not in flat and "up to half a level too fine or" not in flat
+    assert "nearest read there is level 0's own texel" in flat
+    assert "*are* `nearest`'s picture" in flat
+    held = next(i for i, t in enumerate(text) if "Where nearest-mipmap-nearest's gain lies" in t)
+    assert text[held].startswith("q_reads.hold()") and "nmn = nearest" in text[held - 1]
+    # F1: the box one sample wide passes 2/π at the Nyquist limit, nothing at the sampling rate
+    # (x = 0.52), its side lobe at most 0.22 beyond (x = 0.75)
+    assert ns.box_nyquist == pytest.approx(2 / np.pi) and 0.21 < ns.box_lobe < 0.22
+    x_of = lambda f: (f - ns.f0) / (ns.f1 - ns.f0)  # noqa: E731 (where the chirp has f)
+    assert 0.51 < x_of(ns.rate) < 0.52 and 0.74 < x_of(ns.lobe_f) < 0.76
+    assert "its spectrum has side lobes, so" not in flat and "the yellow band: its side" not in flat
+    assert "Its main lobe is twice as wide as the ideal filter's" in flat
+    assert '"yellow: above the Nyquist limit"' in flat  # the band in the figure's key
+    # 3: the seams show in the difference from trilinear
+    assert ns.gap_at_seams > 3 * ns.gap_between
+    # 5: q_helpers' reveal draws the question's own triangle, its quads and helpers
+    assert ns.lone_art.n_quads == 4 and ns.lone_art.n_helpers == ns.lone_helpers.sum() == 7
+    reveal = next(t for t in text if "lone_art = plot_quads" in t)
+    assert reveal.startswith("q_helpers.hold()")
+    # 7, 8, 14
+    assert "in the level panel (bottom left)" in flat and "middle (level) panel" not in flat
+    assert "a point may light **no** pixel" in flat
+    assert "8. the same λ from a conformant OpenGL implementation" in text[0]
 
 
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():

@@ -12,8 +12,10 @@ crawling edges, moiré). The cure is always the same three steps:
 
 The signal here is a chirp, ``cos`` of a phase whose frequency rises from 2 to 60 cycles per
 unit along x, like a checkerboard receding to the horizon. A box is not an ideal prefilter:
-its spectrum has side lobes, so some of what lies above the Nyquist limit gets through and
-still aliases; a wider, smooth (Gaussian) filter removes more and blurs more.
+its response, sinc(f / rate) for a box one sample wide, has a main lobe reaching up to the
+sampling rate (0.64 still at the Nyquist limit) and side lobes beyond, so some of what lies
+above the Nyquist limit gets through and still aliases; a wider, smooth (Gaussian) filter
+removes more and blurs more.
 """
 
 from __future__ import annotations
