@@ -170,7 +170,7 @@ class LineView(Artists):
         elif step.kind == "row":
             self.current.set_bounds(0, step.row, width, 1)
         self.current.set_visible(step.kind in ("column", "row"))
-        self.caption.set_text(_fit_caption(self.caption, step.caption))
+        self.caption.set_text(fit_caption(self.caption, step.caption))
         if self.diamonds is not None:
             for name, polys in _diamonds_at(trace, k).items():
                 self.diamonds[name].set_verts(polys)
@@ -273,7 +273,7 @@ def plot_rgba(
     return RGBAArtists(checker, shown)
 
 
-def _fit_caption(text, caption: str) -> str:
+def fit_caption(text, caption: str) -> str:
     """``caption`` wrapped to the width of the Axes of ``text`` (a matplotlib Text under them).
 
     matplotlib's own ``wrap=True`` wraps at the figure's edge: a diamond step's caption ran

@@ -13,7 +13,7 @@ import ipywidgets as widgets
 
 from ..core.line_rules import RULES
 from ..core.lines import rasterize_line
-from ..plotting.lines import LineView
+from ..plotting.lines import LineView, fit_caption
 from .common import (
     Shown,
     control_row,
@@ -26,8 +26,52 @@ from .display import FigureDisplay, html_escape, new_figure, resolve_backend
 
 #: The figure's share kept below the axes for the step's caption, out of the layout: the axes
 #: box is then the same for every step and every rule (review r83 12a-6: it moved sideways by
-#: some 20 px when the rule, and with it the caption, changed).
+#: some 20 px when the rule, and with it the caption, changed). The least share: the figure
+#: grows taller when the longest caption of any rule needs more (:func:`caption_room`).
 CAPTION_ROOM = 0.2
+
+
+def caption_room(fig, view, traces) -> float:
+    """Make the room under ``view``'s axes hold the longest caption of ``traces``.
+
+    The figure keeps its width and the height its axes have (so the wrap width and the axes
+    box stay those of every step and rule) and grows by what the caption needs beyond
+    :data:`CAPTION_ROOM` of it; the layout is redone with the new share.
+
+    Parameters
+    ----------
+    fig : matplotlib Figure
+        The player's figure, laid out with ``rect=(0, room, 1, 1 - room)``.
+    view : LineView
+        Its view; ``view.caption`` is the Text under the axes.
+    traces : list of LineTrace
+        Every trace the player can show (one per rule).
+
+    Returns
+    -------
+    float
+        The room's share of the (new) figure height.
+    """
+    text, shown = view.caption, view.caption.get_text()
+    renderer = fig.canvas.get_renderer()
+    need = 0.0  # inches, from the axes' bottom to the caption's last line, box included
+    for trace in traces:
+        for k in range(len(trace)):
+            text.set_text(fit_caption(text, trace.caption(k)))
+            text.update_bbox_position_size(renderer)  # the box is otherwise set when drawn
+            box = text.get_bbox_patch()
+            extent = (box if box is not None else text).get_window_extent(renderer)
+            need = max(need, (view.image.axes.bbox.y0 - extent.y0) / fig.dpi)
+    text.set_text(shown)
+    width, height = fig.get_size_inches()
+    above = height * (1 - CAPTION_ROOM)  # the axes' part, kept
+    room = max(height * CAPTION_ROOM, need + 0.1)
+    share = room / (above + room)
+    if share > CAPTION_ROOM:
+        fig.set_size_inches(width, above + room)
+        fig.set_layout_engine("constrained", rect=(0, share, 1, 1 - share))
+        fig.draw_without_rendering()
+    return max(share, CAPTION_ROOM)
 
 
 class LinePlayer(Shown):
@@ -80,6 +124,13 @@ class LinePlayer(Shown):
             # constrained layout settles on the second draw (the first one measured the top
             # axis's labels before they were placed, and cut "column j" and the caption off)
             self.fig.draw_without_rendering()
+            # room for the longest caption of every rule, the axes box unchanged (review r168
+            # 12a-5: a diamond tie's caption has 5 lines, and its last fell below the figure)
+            caption_room(
+                self.fig,
+                self.view,
+                [rasterize_line(p0, p1, width, height, rule=r, trace=True).trace for r in RULES],
+            )
             self.display = FigureDisplay(self.fig, self.backend)
         # where the slider is, in the figure's words (its caption, under the picture, says
         # what the rule decided): "step 7" and "column 5" side by side, the caption once

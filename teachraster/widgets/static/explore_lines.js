@@ -392,9 +392,34 @@ function drawSegment(ctx, p, q, snapped, avoid = [], grid = [0, 0], more = {}) {
     const wide = ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width;
     const [x, y] = labelAt(e[0], e[1], ctx.measureText(text).width, wide, avoid, size, grid,
       [p, q], more);
+    // a label pushed off its point (onto the next pixel, review r168 12a-6: "p0" sat in
+    // pixel (1, 0), a cell below its dot) is tied to it by a thin leader
+    const lead = leaderLine(e, [x, y, ctx.measureText(text).width, size]);
+    if (lead) {
+      ctx.strokeStyle = "#111";
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.moveTo(lead[0][0], lead[0][1]);
+      ctx.lineTo(lead[1][0], lead[1][1]);
+      ctx.stroke();
+    }
     // a white halo: the label crosses the line and the diamonds beside the end point
     haloText(ctx, text, x, y, "#111");
   });
+}
+
+// The leader from an end point (its dot of radius `radius`) to its label ([x, y, w, size]:
+// left end and baseline, width, height), or null when the label is close enough to read as
+// the point's: its box within `near` px of the dot's edge.
+export function leaderLine(point, label, radius = 7, near = 8) {
+  const [x, y, w, size] = label;
+  const nx = Math.max(x, Math.min(point[0], x + w));
+  const ny = Math.max(y - size, Math.min(point[1], y + 3));
+  const d = Math.hypot(nx - point[0], ny - point[1]);
+  if (d <= radius + near) return null;
+  const ux = (nx - point[0]) / d;
+  const uy = (ny - point[1]) / d;
+  return [[point[0] + ux * radius, point[1] + uy * radius], [nx - ux * 2, ny - uy * 2]];
 }
 
 // Where an end point's label goes (its text's left end and baseline): right of and above the
