@@ -169,9 +169,14 @@ function render({ model, el }) {
   } else {
     el.append(caption, box, notice);
   }
+  // the same text again changes nothing: no new layout (a drag's frame and the trait of its
+  // release both bring the caption; a layout of a table beside the picture per frame)
+  let captionShown = null;
   function setCaption(html) {
-    caption.innerHTML = html || "";
-    caption.style.display = html ? "" : "none";
+    if ((html || "") === captionShown) return;
+    captionShown = html || "";
+    caption.innerHTML = captionShown;
+    caption.style.display = captionShown ? "" : "none";
   }
   setCaption(model.get("caption"));
   model.on("change:caption", () => setCaption(model.get("caption")));
