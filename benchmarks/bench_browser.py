@@ -5,6 +5,7 @@ Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
     python benchmarks/bench_browser.py            # full run (about 5 minutes)
     python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
     python benchmarks/bench_browser.py --only FilterExplorer   # the baselines and one explorer
+    python benchmarks/bench_browser.py --only TriangleEditor,PlaneExplorer   # side by side
 
 JupyterLab starts on a free loopback port with its own config, data, runtime and settings
 folders (in a temporary directory, removed afterwards) and opens a small notebook holding:
@@ -677,7 +678,8 @@ def main(argv=None) -> int:
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
     parser.add_argument("--only", default=None, metavar="TEXT",
                         help="only the baselines and the slider explorers and dragged "
-                             "figures whose name holds TEXT (e.g. FilterExplorer; "
+                             "figures whose name holds TEXT, or one of several "
+                             "comma-separated (e.g. FilterExplorer; "
                              "PlaneExplorer: its sliders and its vertex; TriangleEditor): a "
                              "notebook of those cells alone")  # fmt: skip
     parser.add_argument("--shots", type=Path, default=None,
@@ -685,8 +687,10 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     chosen = drags = None
     if args.only is not None:
-        chosen = [s for s in SLIDERS if args.only.lower() in s[1].lower()]
-        drags = [d for d in VERTEX_DRAGS if args.only.lower() in d[1].lower()]
+        # several names, comma-separated: one run measures them under the same load
+        wanted = [w.strip().lower() for w in args.only.split(",") if w.strip()]
+        chosen = [s for s in SLIDERS if any(w in s[1].lower() for w in wanted)]
+        drags = [d for d in VERTEX_DRAGS if any(w in d[1].lower() for w in wanted)]
         if not chosen and not drags:
             names = [s[1] for s in SLIDERS] + [d[1] for d in VERTEX_DRAGS]
             parser.error(f"--only {args.only!r}: none of " + ", ".join(names))
