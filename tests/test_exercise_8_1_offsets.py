@@ -27,7 +27,7 @@ from teachraster.exercises import tile_blocks, tries
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.ipynb"
 
 
-def student(offsets="right", span="size - 1", tie="top-left", orient=True, start=0.5, bias=None):
+def student(offsets="right", span="size - 1", tie="top-left", orient=True, start=0.5, bias=None, ops=("<", ">=")):  # fmt: skip
     """classify_block as a student writes it, with one slip: ``offsets`` "right", "x mirrored",
     "y mirrored", "far corner", "sign flipped", "swapped", "reject by T" (the accept test
     right); ``span`` "size - 1", "size", "one" (a one-pixel block's offset, not scaled) or
@@ -35,7 +35,9 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
     reject test only); ``orient`` False: the edges as given, "flipped": the interior on their
     negative side; ``start`` where E₀ is evaluated, from (x0, y0); ``bias`` (px²): the
     top-left rule folded into E as the task asks (E − bias ≥ 0 on an edge that is neither top
-    nor left, every test one sign test; ex30a), or None: the rule written out per edge."""
+    nor left, every test one sign test; ex30a), or None: the rule written out per edge;
+    ``ops``: the comparisons of the reject and accept sign tests with a bias (r162: "<=", ">").
+    ``span`` also "size - 2" and "(size - 1) / 2" (r162 M1: offsets short of the last centre)."""
 
     def classify_block(xy, x0, y0, size):
         v = np.asarray(xy, dtype=float)
@@ -45,7 +47,8 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
             return np.full(px.shape, "rejected")
         if (area > 0) if orient == "flipped" else (area < 0 and orient):
             v = v[[0, 2, 1]]
-        d = {"size - 1": size - 1, "size": size, "one": 1, "size / 2": size / 2}[span]
+        d = {"size - 1": size - 1, "size": size, "one": 1, "size / 2": size / 2,
+             "size - 2": size - 2, "(size - 1) / 2": (size - 1) / 2}[span]  # fmt: skip
         rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
         for k in range(3):
             a, b = v[k], v[(k + 1) % 3]
@@ -66,8 +69,8 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
                     "accept strict": top_left}[tie]  # fmt: skip
             if bias is not None:  # the set-up's bias: one sign test each, as llvmpipe's
                 e0 = e0 - (0.0 if top_left else bias)
-                rejected |= e0 + R < 0
-                accepted &= e0 + T >= 0
+                rejected |= (e0 + R < 0) if ops[0] == "<" else (e0 + R <= 0)
+                accepted &= (e0 + T >= 0) if ops[1] == ">=" else (e0 + T > 0)
                 continue
             rejected |= (e0 + R < 0) if owns else (e0 + R <= 0)
             accepted &= (e0 + T >= 0) if owns and tie != "accept strict" else (e0 + T > 0)
@@ -125,6 +128,21 @@ MISTAKES = {
         student(bias=-(2.0**-16)), "tie-rule bias added", "your bias has the wrong sign"),
     "bias of 1/2 px²": (
         student(bias=0.5), "tie-rule bias too large", "a bias of the wrong size"),
+    # r162 M1: offsets that stop short of the block's last centre were told "Corners outside
+    # the triangle do not reject a block" or "you tested the maximising one"
+    "offsets of size - 2 steps": (
+        student(span="size - 2", bias=2.0**-16), "offsets of size − 2 steps",
+        "your offsets span size − 2 steps"),
+    "half span from the first centre": (
+        student(span="(size - 1) / 2", bias=2.0**-16), "half span from the first centre",
+        "your offsets span (size − 1)/2 steps from the first centre"),
+    # r162: the sign tests' comparisons slipped were told only the rule
+    "reject test with <=": (
+        student(bias=2.0**-16, ops=("<=", ">=")), "reject test E ≤ 0",
+        "your reject test rejects when E₀ + R + β ≤ 0"),
+    "accept test with >": (
+        student(bias=2.0**-16, ops=("<", ">")), "accept test E > 0",
+        "your accept test asks E₀ + T + β > 0"),
     "a constant array": (
         lambda xy, x0, y0, size: np.full(np.shape(x0), "partial"), "always partial",
         "says 'partial' for every block of every grid"),
@@ -300,7 +318,8 @@ def test_the_hiz_figure_draws_the_box_and_where_the_bound_is_taken(spent):
         star = [line for line in ax.lines if line.get_marker() == "*"]
         assert len(star) == 1 and (star[0].get_xdata()[0], star[0].get_ydata()[0]) == (col + 0.5, row + 0.5)  # fmt: skip
         keys = [t.get_text() for t in ax.get_legend().get_texts()]
-        assert {"the triangle", "its bounding box"} <= set(keys), keys
+        # r162 D4: a box whose sides all lie beyond the view (this one's) is said in words
+        assert "the triangle" in keys and "its bounding box: beyond this view" in keys, keys
         assert any(k.startswith("where the bound is taken") for k in keys), keys
         assert fig.get_size_inches()[0] * fig.dpi <= COLUMN_WIDTH_PX
     finally:

@@ -189,7 +189,8 @@ def test_8_2_asks_for_a_tighter_bound_than_lesson_10_and_names_the_lessons():
 
     text = " ".join(_cell("08_tiles.ipynb", 5).split())
     assert "Lesson 10 §7 takes the larger of two cheap lower bounds" in text, text
-    assert "inside the triangle's bounding box" in text, text
+    # r162 C.1: the fact is given (no fragment outside the box), the recipe asked
+    assert "no fragment of the triangle lies outside its bounding box" in text, text
     for label, args in _box_cases():  # each named box case: lesson 10's bound keeps it
         assert expected_reject(*args) and tile_bound(*args[:4]) < np.max(args[4]), label
     assert _check("hiz_rejects", _hiz_with()).passed

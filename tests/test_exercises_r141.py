@@ -113,10 +113,12 @@ def test_8_1_says_what_llvmpipe_computes_and_no_four_centres_of_sixteen():
     cells = json.loads(NOTEBOOK.read_text())["cells"]
     task = "".join(cells[2]["source"])
     for words in ("its offsets span `size` steps", "one step\npast the block's last pixel centre",
-                  "a one-pixel block has one centre,\nso its offsets are 0",
+                  "The offsets\nasked here are exact, over the block's own pixel centres.",
                   "and to their trivial-accept corners with a second"):  # fmt: skip
         assert words in task, words
     assert "with one vector add." not in task
+    # r162 C.2: "a one-pixel block has one centre, so its offsets are 0" gave size − 1 away
+    assert "so its offsets are 0" not in task
     source = Path(tile_blocks.__file__).read_text()
     assert "all four centres" not in source and "(E₀ + R, with R ≥ 0)" in source
     assert "(E₀ plus the reject offset, ≥ 0) and" not in source

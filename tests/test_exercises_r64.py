@@ -142,7 +142,8 @@ def test_hiz_task_says_which_bound_is_asked_truthfully():
     covered centres is tighter); the check asks for the box's bound (r126 N8-1), and a
     tighter per-pixel bound is named, not passed."""
     text = _cell("notebooks/exercises/08_tiles.ipynb", "hiz_rejects_task")
-    assert "tightest" not in text and "inside the triangle's bounding box" in text
+    assert "tightest" not in text and "lies outside its bounding box" in text
+    assert "with no coverage test" in text  # r162: the highest bound of those facts alone
     from student_variants import hiz_covered_centres
 
     assert not ex.check("hiz_rejects", hiz_covered_centres).passed

@@ -8,6 +8,7 @@ with the hints spent (as after two different failing answers).
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -191,7 +192,9 @@ def test_block_hint_does_not_call_the_tested_point_the_blocks_centre():
     centre, the very point a one-point test used."""
     from teachraster.exercises.tile_blocks import BLOCK_HINTS
 
-    assert not any("block's centre" in hint for _, hint in BLOCK_HINTS)
+    # "the block's centres" (all of them, r162's "where do the block's centres begin and
+    # end?") is not the one point
+    assert not any(re.search(r"block's centre(?!s)", hint) for _, hint in BLOCK_HINTS)
 
 
 def test_tile_scene_shows_x0_y0_swapped_and_hides_the_centres_on_the_first_try():
@@ -337,9 +340,13 @@ def test_hiz_main_text_defines_the_answer_the_check_takes():
     text = _markdown("08_tiles")
     main = text.split("## 8.2", 1)[1].split("<details>", 1)[0]
     assert "no fragment of the triangle in this tile\ncould pass" not in main
-    flat = " ".join(main.split())  # r126 N8-1: the bound is now lesson 10's cut to the box
-    assert "minimum over only the tile's pixel centres inside the triangle's bounding box" in flat
-    assert "no nearer than the nearest vertex" in flat and "the block is rejected" in flat, flat
+    flat = " ".join(main.split())
+    # r126 N8-1: the bound is lesson 10's cut to the box; r162: the main text asks for it (the
+    # highest lower bound from the box and lesson 10's two bounds) without giving it away
+    assert "no fragment of the triangle lies outside its bounding box" in flat, flat
+    assert "the **highest** lower bound" in flat and "lesson 10's two" in flat, flat
+    assert "never a coverage test per pixel" in flat, flat
+    assert "rejected at once when a lower bound" in flat, flat
 
 
 def test_capstone_says_how_an_uncovered_sample_looks_and_that_over_is_copied():

@@ -48,12 +48,14 @@ from .broken_frames import (
     frames_to_inspect,
 )
 from .capstone_render import BUDGET as CAPSTONE_BUDGET
+from .capstone_render import CALL_LIMIT as CAPSTONE_CALL_LIMIT
 from .capstone_render import capstone
 from .checks import check, names
 from .report import Failure, Report
 
 __all__ = [
     "CAPSTONE_BUDGET",
+    "CAPSTONE_CALL_LIMIT",
     "CAUSES",
     "EVIDENCE",
     "Failure",

@@ -11,7 +11,9 @@ only when the limit could have been reached. It fires when
   ``time.sleep``, ``input()``, a lock; time the thread was ready to compute but queued for
   a core, Linux's per-thread ``schedstat``, counts as computing: on a machine busier than
   its cores a loop is starved, not waiting), or
-- it has run ``cap`` seconds of wall-clock time in all (a machine too busy to give it CPU).
+- it has run ``cap`` seconds of wall-clock time in all (a machine too busy to give it CPU), or
+- one call of the student's function inside the case has used ``call`` seconds of CPU (a case
+  that calls it many times, the capstone's render once per pixel: :meth:`Alarm.call_begins`).
 
 Firing sends :class:`.interrupt.CaseInterrupt` to the case's thread, again every ``TICK``
 seconds until the case unwinds: in the main thread (where a Jupyter kernel runs its cells) by
@@ -88,8 +90,13 @@ class Alarm:
     ``why`` which ("cpu", "wait" or "wall"), and :meth:`cpu` how much CPU the case used.
     """
 
-    def __init__(self, seconds: float, guard, wait: float | None = None, cap: float | None = None):
+    def __init__(self, seconds: float, guard, wait: float | None = None, cap: float | None = None,
+                 call: float | None = None):  # fmt: skip
         self.seconds = min(seconds, LONGEST)
+        #: CPU seconds one call of the student's function may take (None: no such limit), and
+        #: the case's CPU when the call running now began (None: none runs)
+        self.call = None if call is None else min(call, LONGEST)
+        self.call_began = None
         self.wait = min(5 * seconds if wait is None else wait, LONGEST)
         self.cap = min(20 * seconds if cap is None else cap, LONGEST)
         self.guard = guard
@@ -167,10 +174,13 @@ class Alarm:
         return self._end[1] if self._end is not None else time.perf_counter() - self.begin
 
     def due(self) -> str | None:
-        """ "cpu", "wait" or "wall" once a limit has passed, else None."""
+        """ "cpu", "call", "wait" or "wall" once a limit has passed, else None."""
         cpu, wall = self.cpu(), self.wall()
         if cpu > self.seconds:
             return "cpu"
+        began = self.call_began
+        if self.call is not None and began is not None and cpu - began > self.call:
+            return "call"
         if wall > self.cap:
             return "wall"
         if wall > self.wait and cpu + self.collected() + self.queued() < WAITING * wall:
@@ -186,9 +196,20 @@ class Alarm:
         the clock on the wall; the process's CPU, summed over threads, may)."""
         cpu, wall = self.cpu(), self.wall()
         soonest = [self.seconds - cpu, self.cap - wall, max(self.wait - wall, TICK)]
+        if self.call is not None:  # a call may begin any time: no later than its limit
+            began = self.call_began
+            soonest.append(self.call - (0.0 if began is None else cpu - began))
         if self._clock is time.process_time:
             soonest.append(TICK)
         return min(max(min(soonest), 0.005), LONGEST)
+
+    def call_begins(self) -> None:
+        """A call of the student's function begins (under :attr:`call`'s limit)."""
+        if self.call is not None:
+            self.call_began = self.cpu()
+
+    def call_ends(self) -> None:
+        self.call_began = None
 
     # -- start and stop ------------------------------------------------------------------------
     def start(self) -> None:
@@ -254,6 +275,10 @@ class Alarm:
             if callable(self._previous):
                 return self._previous(signum, frame)
             return None
+        if frame is not None and frame.f_code is _IN_COLLECTION:
+            # raised in a gc callback, the exception would be printed as "Exception ignored"
+            # and lost: the watchdog sends the next interrupt a tick later, in the case's code
+            return None
         if self.fires > 1 and sys.version_info >= (3, 11):
             self._trace_frames(frame)
         raise CaseInterrupt(f"stopped after {self.seconds:g} s")
@@ -314,3 +339,7 @@ class Alarm:
                     return
 
         threading.Thread(target=watch, daemon=True, name="teachraster-check-watchdog").start()
+
+
+#: the code of :meth:`Alarm._on_collection`, a ``gc.callbacks`` entry: no interrupt is raised there
+_IN_COLLECTION = Alarm._on_collection.__code__

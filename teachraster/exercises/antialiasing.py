@@ -25,6 +25,7 @@ from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..pipeline.render_triangles import Frame
 from .answers import as_number, as_numbers
+from .blend_mistakes import EIGHT_BIT
 from .cases import SEED, fixed_and_drawn
 from .coverage import TOP_LEFT, covered, kind_of, owns_kind, owns_variants, owns_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
@@ -474,6 +475,14 @@ RESOLVE_MISTAKES = [
     Mistake("background only", _resolve_words("that is the background alone: the covered "
             "samples' colours count too", rule=False),
             gives=lambda c, i, b: np.asarray(b, dtype=float)),
+    # r163 12-7: the samples, the background in the uncovered ones, over the covered count
+    Mistake("divided by covered", _resolve_words("you divided by the {k} covered sample{s}, "
+            "not by all the samples: each stands for an equal share of the pixel, the "
+            "uncovered ones too"),
+            gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0) / (i >= 0).sum()
+            if (i >= 0).any() else None),
+    # r163 12-9: a mean rounded to 8 bits, round(x·255)/255, was told to count the background
+    EIGHT_BIT,
 ]  # fmt: skip
 
 

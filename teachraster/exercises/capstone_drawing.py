@@ -23,24 +23,31 @@ def picture(spec, frame) -> np.ndarray:
     return np.clip(frame.image, 0, 1)
 
 
-def _views(report) -> tuple[np.ndarray, np.ndarray | None, str]:
-    """(the package's picture, yours or None, the overdraw's scale or ""): the frames, or, where the
-    frames look alike and only the overdraw differs (a centre covered twice by the same
-    colour), the overdraw view of lesson 11, so that the panels show the difference."""
+#: Lesson 11's overlays a scene compares: (the panels' title, what the scale counts).
+VIEWS = {"overdraw": ("overdraw", "covers"), "depth_complexity": ("depth passes", "passes")}
+
+
+def _views(report) -> tuple[np.ndarray, np.ndarray | None, str, str]:
+    """(the package's picture, yours or None, the overlay's scale or "", its title): the frames,
+    or, where the frames look alike and only an overlay differs (a centre covered twice by
+    the same colour; a fragment that passed the depth test and was covered later: r163 12-4),
+    that view of lesson 11, so that the panels show the difference."""
     spec = report.spec
     ref = picture(spec, report.reference)
     mine = None if report.mine is None else picture(spec, report.mine)
-    if mine is None or "overdraw" not in spec.compare:
-        return ref, mine, ""
-    counts = report.reference.overlay("overdraw"), report.mine.overlay("overdraw")
+    kind = next((k for k in spec.compare if k in VIEWS), None)
+    if mine is None or kind is None:
+        return ref, mine, "", ""
+    counts = report.reference.overlay(kind), report.mine.overlay(kind)
     looks_alike = np.array_equal(np.nan_to_num(mine, nan=-1.0), np.nan_to_num(ref, nan=-1.0))
     if not looks_alike or np.array_equal(*counts):
-        return ref, mine, ""
+        return ref, mine, "", ""
     from matplotlib import colormaps
 
     top = max(float(np.max(counts[0])), float(np.max(counts[1])), 1.0)
     ref, mine = (colormaps["viridis"](np.asarray(c, float) / top)[..., :3] for c in counts)
-    return ref, mine, f"covers: dark 0 to yellow {top:g}"
+    title, counted = VIEWS[kind]
+    return ref, mine, f"{counted}: dark 0 to yellow {top:g}", title
 
 
 def _axes(axes):
@@ -58,7 +65,7 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     """Draw ``report`` (a :class:`.capstone_render.CapstoneReport`) on three Axes; returns artists."""
     axes = _axes(axes)
     spec = report.spec
-    ref, mine, view = _views(report)
+    ref, mine, view, title = _views(report)
     wrong = report.differing_pixels()
     h, w = ref.shape[:2]
     artists = []
@@ -66,8 +73,8 @@ def draw_capstone(report, axes=None, pixel="first") -> list:
     n = len(wrong)
     differ = ("nothing to compare yet" if mine is None else "no pixel differs" if n == 0
               else f"{n} pixel{'s' * (n != 1)} differ{'s' * (n == 1)}")  # fmt: skip
-    if view:  # the overdraw: short titles, the scale below
-        titles = ("yours (overdraw)", "package's (overdraw)", differ)
+    if view:  # an overlay: short titles, the scale below
+        titles = (f"yours ({title})", f"package's ({title})", differ)
         axes[0].set_xlabel(view, fontsize="x-small")
     else:
         # r126 D12-3: "intersecting_triangles: yours" overran its panel and shifted it

@@ -43,6 +43,7 @@ from . import capstone_samples as samples
 from . import output
 from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
+from .diagnosis import honest_on
 from .exercise import Knobs
 from .interpolation import rounded_decimals, rounded_words
 from .running import WrongAnswerType, last_line, run_checker
@@ -102,11 +103,13 @@ def _record_difference(used, reference, pixel, rm, rr):
     return None
 
 
-def named_mistake(used, name, inside: bool = False) -> str:
+def named_mistake(used, name, inside: bool = False, case: tuple | None = None) -> str:
     """ ": <words>" of the typical mistake exercise ``name``'s own check finds in the student's
     function (over all its cases, :mod:`.diagnosis`), or "" when it names none. ``inside``:
     the pixel shown is strictly inside its triangle, so a tie rule's mistake cannot explain it
-    (r49: no winding swap and E > 0 was blamed on the tie rule); another is named first."""
+    (r49: no winding swap and E > 0 was blamed on the tie rule); another is named first.
+    ``case``: the pixel's (args, the package's answer, the student's), on which words that
+    blame float32 must hold too (:func:`.diagnosis.honest_on`, the checker's one rule)."""
     fn = used.get(name)
     if name not in CHECKED_BY or fn is None:
         return ""
@@ -114,7 +117,13 @@ def named_mistake(used, name, inside: bool = False) -> str:
         words = _mistake_words(name, fn, inside)
     except TypeError:  # an unhashable callable: no cache, no name
         return ""
-    return _staged(CHECKED_AS.get(name, name), words)
+    checked = CHECKED_AS.get(name, name)
+    words = _staged(checked, words)
+    if case is not None and words:
+        from .checks import exercise
+
+        words = run_checker(lambda: honest_on(exercise(checked), *case, words), words)
+    return words
 
 
 def _staged(checked: str, words: str) -> str:
@@ -319,25 +328,28 @@ def _interpolation(used, reference, pixel, rr) -> str:
         yours, error = _call(used, "barycentric", xy, p)
         if error or yours is None or not np.allclose(yours, ours, rtol=TOL, atol=TOL):
             said = error or f"your barycentric returned {vec(yours, ours)}"
-            why = "" if error else _weights_why(used, yours, ours)
+            why = "" if error else _weights_why(used, yours, ours, (xy, p))
             return f"{head}: {said}; the package's weights are {vec(ours, yours)}{why}"
     mu = ours if np.all(w == w[0]) else weights_per_row(ours[None], w[None])[0]
     yours, error = _call(used, "perspective_weights", ours, w)
     said = error or f"your perspective_weights(λ, w) returned {vec(yours, mu)}"
     return (f"{head}: λ = {vec(ours)} and w = {vec(w)}; {said}, the package's are "
-            f"{vec(mu, yours)}{named_mistake(used, 'perspective_weights')}")  # fmt: skip
+            f"{vec(mu, yours)}"
+            f"{named_mistake(used, 'perspective_weights', case=((ours, w), mu, yours))}")  # fmt: skip
 
 
 #: The words of exercise 3.1's mistake "epsilon added to the area" (a common rescale).
 _ADDED_TO_AREA = "added a small number"
 
 
-def _weights_why(used, yours, ours) -> str:
+def _weights_why(used, yours, ours, case: tuple) -> str:
     """What is wrong with the student's weights ``yours`` at this pixel: rounded to a few
     decimals where they are, else the mistake exercise 3.1's check names, but a rescale (a
     number added to E(v1, v2, v3)) only where this pixel's weights are one common multiple of
     the package's (r148 D12-2: weights rounded to 5 decimals were told "you added a small
-    number to E", fitted on a case whose three weights are equal), else their difference."""
+    number to E", fitted on a case whose three weights are equal), else their difference.
+    ``case``: the pixel's (xy, p), on which float32 is named only within its rounding."""
+    case = (case, ours, yours)
     try:
         got = np.asarray(yours, dtype=float).reshape(3)
     except (TypeError, ValueError):
@@ -347,7 +359,7 @@ def _weights_why(used, yours, ours) -> str:
     if rounded_decimals(got, ours) is not None:
         return rounded_words(got, ours)
     off = float(np.max(np.abs(got - ours)))
-    named = named_mistake(used, "barycentric")
+    named = named_mistake(used, "barycentric", case=case)
     if _ADDED_TO_AREA in named and not _one_scale(got, ours):
         return (f"; your weights are off by up to {off:.1e}, more than float64's rounding "
                 "(about 1e-16), and not by one common factor (a number added to E(v1, v2, v3) "
@@ -368,7 +380,7 @@ def _blending(used, pixel, rr) -> str:
     said = error or f"your over(src, dst) returned {vec(yours, rr.color_after)}"
     return (f"triangle {rr.triangle}'s fragment src = {vec(src)} lands on dst = {vec(dst)}: "
             f"{said}, the package's blend gives {vec(rr.color_after, yours)}"
-            f"{named_mistake(used, 'over')}")  # fmt: skip
+            f"{named_mistake(used, 'over', case=((src, dst), rr.color_after, yours))}")  # fmt: skip
 
 
 def _shading(spec, used, reference, pixel) -> tuple[str, str]:
@@ -395,14 +407,14 @@ def _texture(spec, used, reference, row, col) -> str:
         yours, error = _call(used, "bilinear", tex, uv, "repeat")
         said = error or f"your bilinear(texture, uv, 'repeat') returned {vec(yours, ours)}"
         return (f"{head} {said}, the package's bilinear filter gives {vec(ours, yours)}"
-                f"{named_mistake(used, 'bilinear')}")  # fmt: skip
+                f"{named_mistake(used, 'bilinear', case=((tex, uv, 'repeat'), ours, yours))}")  # fmt: skip
     uvs = reference.layout["uv"]
     lod = float(mip_level(reference.ddx[row, col, uvs], reference.ddy[row, col, uvs], tex.shape))
     ours = reference.image[row, col]
     yours, error = _call(used, "trilinear", mipmap(tex), uv, lod, "repeat")
     said = error or f"your trilinear(pyramid, uv, {lod:.4g}, 'repeat') returned {vec(yours, ours)}"
     return (f"{head} {said}, the package's trilinear filter gives {vec(ours, yours)}"
-            f"{named_mistake(used, 'trilinear')}")  # fmt: skip
+            f"{named_mistake(used, 'trilinear', case=((mipmap(tex), uv, lod, 'repeat'), ours, yours))}")  # fmt: skip
 
 
 def _resolve(used, reference, row, col) -> str:
@@ -415,7 +427,7 @@ def _resolve(used, reference, row, col) -> str:
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
             f"{said}, the package's resolve gives {vec(ours, yours)}"
-            f"{why or named_mistake(used, 'resolve')}")  # fmt: skip
+            f"{why or named_mistake(used, 'resolve', case=((colours, ids, np.ones(3)), ours, yours))}")  # fmt: skip
 
 
 def _srgb_average(colours, ids, background, yours, ours) -> str | None:

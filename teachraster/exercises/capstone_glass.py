@@ -21,7 +21,9 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from . import tries
+from .exercise import Exercise, PackageAnswer
 from .front_to_back import as_rgba
+from .package_answers import package_note, watching
 from .running import run_checker
 from .scalars import num, vec
 
@@ -267,3 +269,42 @@ def _fit_on_stacks(fn, fits) -> list[str]:
         wrong = variants(d, c, BACKGROUND)
         keep = [k for k in keep if np.allclose(wrong[k], got, rtol=1e-6, atol=1e-6)]
     return keep
+
+
+def _stack_cases() -> list:
+    """:data:`OWN_STACKS` as cases (label, (depths, colours, background), the resolve)."""
+    out = []
+    for k, (depths, colours) in enumerate(OWN_STACKS):
+        d, c = np.array(depths, dtype=float), np.array(colours, dtype=float)
+        out.append((f"stack {k + 1}", (d, c, BACKGROUND.copy()), package_resolve(d, c, BACKGROUND)))
+    return out
+
+
+def _same(got, expected, args) -> bool:
+    return bool(np.allclose(got, expected, rtol=1e-6, atol=1e-6))
+
+
+def _no_words(args, expected, got) -> str:
+    return ""
+
+
+#: ``a_buffer`` as the rule of :mod:`.package_answers` reads an exercise (one place for the
+#: rule of every task): the package's resolve is its answer, and the checker's functions of
+#: this module compute the expected frames (r163 12-5: ``package_resolve`` imported as
+#: ``a_buffer``, or wrapped, passed glass_sorted as the student's own).
+A_BUFFER = Exercise(
+    NAME, _stack_cases, as_rgba, _same, _no_words, _no_words,
+    answers=(PackageAnswer(package_resolve, label="capstone_glass.package_resolve",
+                           what="the A-buffer's resolve of a pixel"),),
+)  # fmt: skip
+
+
+def package_use(fn) -> str | None:
+    """Why ``fn`` does not count as the student's ``a_buffer`` (it is, calls, or copies the
+    package's resolve or the checker's code: :func:`.package_answers.package_note`, watched
+    while it resolves its own stacks), or None."""
+    cases = _stack_cases()  # the package's resolves, outside the window: not the student's
+    with watching(A_BUFFER) as seen:  # the guard of each call inside the window, as ex.check's
+        for _, (depths, colours, _), _ in cases:
+            run_checker(lambda d=depths, c=colours: _answer(fn, d, c), None)
+    return run_checker(lambda: package_note(A_BUFFER, fn, seen), None)

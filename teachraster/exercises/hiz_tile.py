@@ -21,6 +21,7 @@ against the tile's largest stored depth.
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import numpy as np
 
@@ -28,7 +29,7 @@ from ..core.edges import setup_edges
 from ..core.snapping import SUBPIXEL_BITS
 from ..pipeline.rasterization.batched_fill import Fragments, weight_source
 from .answers import as_bool
-from .cases import SEED, fixed_and_drawn
+from .cases import SEED, seeded
 from .coverage import covered
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .package_answers import CHECKER_WORDS
@@ -397,7 +398,8 @@ def _r137_cases() -> list[tuple[str, tuple]]:
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
                     [3242 / 256, 5709 / 256, 0.0654]])  # fmt: skip
 
-hiz_cases = fixed_and_drawn(_hiz_cases, SEED + 60)  # r49: some drawn per check
+# r162 C2: every case seeded (r49 drew some afresh per check: the count moved on a re-run)
+hiz_cases = seeded(_hiz_cases, SEED + 60)
 
 
 def _with(buffer: np.ndarray, at, value) -> np.ndarray:
@@ -434,6 +436,13 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "whole tile": bool(tile_bound(xyz, row0, col0, size) >= far),
             "pixel box": bool(_pixel_box_bound(xyz, row0, col0, size) >= far),
             "box corners": bool(_box_own_corners(xyz, row0, col0, size) >= far),
+            # r162 M2: the box's own corners and no rejection of an empty box, together (the
+            # plane at the clipped corners of a box beside the tile)
+            "box corners, empty kept": bool(
+                _box_own_corners(xyz, row0, col0, size, empty_kept=True) >= far
+            ),
+            # r162: the tile's columns and rows run one past its last (col0 + size)
+            "one past the tile": bool(_cut_bound(xyz, row0, col0, size, past_tile=1) >= far),
             # r131 D8-2, D8-3, D8-6: an empty box kept, the box not cut to the tile, cut in
             # one axis only; D8-1: the centres on the box's border left out
             "empty kept": bool(box is not None and near >= far),
@@ -483,16 +492,18 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
         }
 
 
-def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
+def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> float:
     """The task's bound with the box cut to the tile only in the axes of ``cut`` (the other
     axes: the whole box, or the whole tile where the box is not cut at all: ``cut=""`` takes
     the box's own extreme centres, beyond the tile too) and the centres on the box's border
     kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
     "trunc": ``int(xmax − ½)``, truncated toward 0). +inf where the tile and the box share
-    no centre (as the task's)."""
-    if border not in ("past", "trunc", "int") and _box_corners(xyz, row0, col0, size) is None:
-        return np.inf  # (those two judge the box empty or not their own way)
+    no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
+    past its own (r162: ``col0 + size``)."""
+    judged = border in ("past", "trunc", "int") or past_tile
+    if not judged and _box_corners(xyz, row0, col0, size) is None:
+        return np.inf  # (the others judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
     spans = []
     for axis, first in ((0, col0), (1, row0)):
@@ -504,7 +515,7 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both") -> float:
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
-            spans.append((max(first, a), min(first + size - 1, b)))
+            spans.append((max(first, a), min(first + size - 1 + past_tile, b)))
         else:
             spans.append((first, first + size - 1))
     (c0, c1), (r0, r1) = spans
@@ -590,11 +601,12 @@ def _pixel_box_bound(xyz, row0, col0, size) -> float:
                                  np.array([c0, c1, c0, c1])).min()), float(xyz[:, 2].min()))  # fmt: skip
 
 
-def _box_own_corners(xyz, row0, col0, size) -> float:
+def _box_own_corners(xyz, row0, col0, size, empty_kept=False) -> float:
     """The plane at the box's own corners clipped to the tile's extreme centres (not at the
-    centres inside the box): safe, up to half a pixel looser."""
-    if _box_corners(xyz, row0, col0, size) is None:  # an empty box rejected, as the task's
-        return np.inf
+    centres inside the box): safe, up to half a pixel looser. ``empty_kept``: a box holding
+    no centre of the tile is clipped the same way, not rejected (r162 M2)."""
+    if not empty_kept and _box_corners(xyz, row0, col0, size) is None:
+        return np.inf  # an empty box rejected, as the task's
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
     xs = np.clip([lo[0], hi[0]], col0 + 0.5, col0 + size - 0.5)
     ys = np.clip([lo[1], hi[1]], row0 + 0.5, row0 + size - 0.5)
@@ -675,9 +687,12 @@ MISTAKES = {
     "tile middle": "you took the plane at the tile's middle: that is its mean over the tile, "
     "and fragments elsewhere in the tile lie nearer: the block is hidden only if even its "
     "nearest fragment is (where in the tile is the plane nearest?)",
-    "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: this buffer "
-    "holds +inf where nothing is drawn yet, and a fragment there passes whatever its depth, "
-    "even one at 1.0, so this triangle may not be rejected here",
+    # r162 C1: said of this exercise's buffer, beside GL's clear value (lessons 05a and 10)
+    "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: GL clears "
+    "the buffer to 1.0, where under its default GL_LESS a fragment at 1.0 fails; but this "
+    "buffer, like lesson 10's replay, holds +inf where nothing is drawn yet (not yet known), "
+    "and a fragment there passes whatever its depth, even one at 1.0, so this triangle may "
+    "not be rejected here",
     "vertex": "you compared the triangle's nearest vertex (or a bound never above it, such "
     "as the plane at the corners of the whole, uncut bounding box: over the box the plane "
     "reaches below every vertex): in this tile its depth plane is "
@@ -711,8 +726,8 @@ MISTAKES = {
     "bounds all of them",
     "strict": "a fragment exactly at the stored depth fails the test (strictly nearer "
     "passes), so a block at exactly the tile's farthest depth is rejected too: use ≥",
-    "empty ignored": "a pixel of the tile is still empty (+inf): a fragment there passes "
-    "whatever its depth, so a triangle that can have a fragment in this tile may not be "
+    "empty ignored": "a pixel of the tile is still empty (+inf here: nothing drawn yet): a "
+    "fragment there passes whatever its depth, so a triangle that can have a fragment in this tile may not be "
     "rejected",
     "farthest vertex": "you compared the triangle's farthest vertex: the block is hidden only "
     "if even the triangle's nearest possible depth in the tile lies at or behind the tile's "
@@ -734,6 +749,25 @@ MISTAKES = {
 }
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
+#: r162 M2: both mistakes at once, both said
+MISTAKES["box corners, empty kept"] = (
+    MISTAKES["box corners"].replace(
+        "; take the plane's minimum over the tile's centres inside the box", ""
+    )
+    + "; and "
+    + MISTAKES["empty kept"]
+)
+#: r162: the tile's last column and row one past its own
+MISTAKES["one past the tile"] = (
+    "your columns (or rows) run to col0 + size (row0 + size), one past the tile's last: that "
+    "centre lies in the next tile, and here the plane is nearest there (a safe bound, but "
+    "looser); the tile's columns are col0 … col0 + size − 1, its rows row0 … row0 + size − 1"
+)
+#: r162 M2: lesson 10's bound is never above the box's corners' (or the task's), so on every
+#: case the task rejects and a looser bound keeps it gives the same answer: named only where
+#: it gives every answer of the check (a box-corner bound that also keeps empty boxes was told
+#: "you took lesson 10's bound", the same 0.300 there, though it rejects where lesson 10's keeps)
+ONLY_WHOLE = ("whole tile",)
 
 
 #: How close (relative) the nearest depth and the farthest stored one must be for float32's
@@ -841,8 +875,8 @@ def draw_hiz(ax, case, got):
     cy, cx = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
     artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3,
                        label="pixel centres")  # fmt: skip
-    ax.set_xlim(col0 - 2, col0 + size + 2)
-    ax.set_ylim(row0 + size + 2, row0 - 2)
+    ax.set_xlim(col0 - VIEW_MARGIN, col0 + size + VIEW_MARGIN)
+    ax.set_ylim(row0 + size + VIEW_MARGIN, row0 - VIEW_MARGIN)
     from matplotlib.ticker import MultipleLocator
 
     for axis in (ax.xaxis, ax.yaxis):
@@ -876,8 +910,14 @@ def _box_and_site(ax, xyz, row0, col0, size) -> list:
     from matplotlib.patches import Rectangle
 
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
+    # r162 D4 (r149 E4): a box whose sides all lie beyond the view drew no line, yet the legend
+    # listed it: said in words there instead
+    seen = _box_seen(lo, hi, row0, col0, size)
+    label = "its bounding box" if seen else "_nolegend_"
     artists = [ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor=BOX_COLOUR, lw=2.0,
-                                      linestyle="--", label="its bounding box"))]  # fmt: skip
+                                      linestyle="--", label=label))]  # fmt: skip
+    if not seen:
+        artists += ax.plot([], [], " ", label="its bounding box: beyond this view")
     site = bound_site(xyz, row0, col0, size)
     if site is None:
         artists += ax.plot([], [], " ", label="no centre of the tile in the box")
@@ -887,6 +927,23 @@ def _box_and_site(ax, xyz, row0, col0, size) -> list:
     artists += ax.plot(col + 0.5, row + 0.5, "*", color=SITE_COLOUR, mec="black", mew=1.2, ms=18,
                        zorder=5, label=f"where the bound is taken\n({what})")  # fmt: skip
     return artists
+
+
+#: How far the figure's view reaches beyond the tile on each side (px).
+VIEW_MARGIN = 2
+
+
+def _box_seen(lo, hi, row0: int, col0: int, size: int) -> bool:
+    """Does a side of the box [lo, hi] cross the figure's view of the tile (the tile and
+    :data:`VIEW_MARGIN` px around it)?"""
+    v_lo = np.array([col0, row0], float) - VIEW_MARGIN
+    v_hi = np.array([col0 + size, row0 + size], float) + VIEW_MARGIN
+    for axis in (0, 1):  # the sides across ``axis``, at lo and hi along it
+        other = 1 - axis
+        spans = lo[other] <= v_hi[other] and hi[other] >= v_lo[other]
+        if spans and any(v_lo[axis] <= at <= v_hi[axis] for at in (lo[axis], hi[axis])):
+            return True
+    return False
 
 
 def _extreme_centres(ax, xyz, row0, col0, size) -> list:
@@ -953,11 +1010,14 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
 HIZ_HINTS = (
     # r122 N8-2: "the nearest depth the triangle can have" named the bound, which may lie
     # nearer than any fragment of the triangle in the tile
+    # r162 C.1: the bound's value is the task's answer on this case: not printed until two
+    # different answers have failed (it was, in words of its own)
     (re.compile(r"the tile's centres inside the triangle's bounding box run from \([^()]*\) to "
                 r"\([^()]*\); the plane is nearest at \([^()]*\), so the bound \(no nearer than "
-                r"the nearest vertex\) is "),
+                r"the nearest vertex\) is [^;]*; the tile's farthest stored depth is ([^:]*):"),
      # not "(the larger of the two)": that is what the "smaller bound" mistake is asked (r94)
-     "the task's lower bound on the triangle's depth in the tile is "),
+     r"the tile's farthest stored depth is \1, and the task's lower bound on the triangle's "
+     "depth in the tile decides (what is it here?):"),
     (" (its plane's minimum over the tile's centres inside its bounding box, no nearer than "
      "its nearest vertex; +inf where the box holds none)",
      " (where in the tile can a fragment lie, where is its depth smallest, and how near can "
@@ -989,7 +1049,9 @@ HIZ_HINTS = (
 
 HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
-    variant_mistakes(_variants, MISTAKES, (FLOAT32,)), draw=draw_hiz, hints=HIZ_HINTS,
+    [replace(m, only_whole=True) if m.kind in ONLY_WHOLE else m
+     for m in variant_mistakes(_variants, MISTAKES, (FLOAT32,))],
+    draw=draw_hiz, hints=HIZ_HINTS,
     # r94 D8-6: a bool answer agrees with many mistakes on any one case: "use ≥" was said to
     # a function using ≥ (the smaller of the two bounds); name only a mistake giving every
     # failing answer

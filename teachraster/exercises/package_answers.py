@@ -159,7 +159,8 @@ def _scan_helpers(spec: Exercise) -> list:
                         and (every or key.startswith("_")) and not key.startswith("__")
                         and g not in listed and not is_transparent(_own_code(g))):  # fmt: skip
                     owner = _owner(spec, module, key) or name
-                    out.append(replace(answer, function=g, when=None, modules=(),
+                    # named by its own name (the answer's label names the answer alone)
+                    out.append(replace(answer, function=g, when=None, modules=(), label=None,
                                        what=f"a part of {owner}'s own computation"))  # fmt: skip
     return out + _checker_helpers(spec, listed | {_function(a) for a in out})
 

@@ -38,7 +38,9 @@ from . import output
 from .alarm import LONGEST, Alarm
 from .interrupt import CaseInterrupt, busy
 
-__all__ = ["CaseInterrupt", "Outcome", "WrongAnswerType", "budget", "run_case", "run_checker"]
+__all__ = [
+    "CaseInterrupt", "Outcome", "WrongAnswerType", "budget", "one_call", "run_case", "run_checker",
+]  # fmt: skip
 
 #: CPU seconds of a check's budget when ``check`` is not told otherwise.
 DEFAULT_BUDGET = 10.0
@@ -204,6 +206,13 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
             f"the environment variable {BUDGET_VARIABLE}"
         )
         kind = "budget"
+    elif why == "call":  # one of the calls a case makes (r163 12-8: the capstone's render)
+        text = (
+            f"one call of your function did not finish within {seconds_words(alarm.call)} of "
+            f"CPU{where} (the most one call may take of the check's {seconds_words(b.seconds)}): "
+            "an endless loop, or far slower than needed (a Python call per pixel?)"
+        )
+        kind = "timeout"
     elif why == "cpu":
         text = (
             f"your function did not finish within {seconds_words(alarm.seconds)} of CPU{where}: "
@@ -246,12 +255,18 @@ def _too_busy(alarm: Alarm, b: Budget, where: str) -> str:
     return f"{ran}: the machine is too busy; try again later (or raise the budget: check(..., budget=30))"
 
 
-def run_case(body: Callable[[], Any], limit: float | None = None, case: str | None = None):
+def run_case(
+    body: Callable[[], Any], limit: float | None = None, case: str | None = None,
+    call: float | None = None,
+):  # fmt: skip
     """Run ``body`` (which calls the student's function) and capture what happens.
 
     ``limit`` caps the case's CPU seconds (default: the current budget's per-case limit);
-    ``case`` (e.g. "3 of 30") is quoted when the case runs out of time. Once a case has run
-    out of time the check has stopped, and later cases are not run.
+    ``case`` (e.g. "3 of 30") is quoted when the case runs out of time; ``call`` caps each
+    call of the student's function that ``body`` marks (:func:`one_call`), for a case that
+    calls it many times (the capstone's render: an endless loop in one call stops there, not
+    at the whole render's limit). Once a case has run out of time the check has stopped, and
+    later cases are not run.
 
     >>> run_case(lambda: 1 / 0).error
     'your function raised ZeroDivisionError: division by zero'
@@ -264,9 +279,8 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
     limit = b.case_limit() if limit is None else min(limit, b.remaining())
     if limit <= 0:
         return _timeout(None, b, case)
-    alarm = Alarm(
-        limit, None, WAIT_FACTOR * limit, max(min(CASE_WALL_FACTOR * limit, b.wall_left()), 0.0)
-    )
+    wall = max(min(CASE_WALL_FACTOR * limit, b.wall_left()), 0.0)
+    alarm = Alarm(limit, None, WAIT_FACTOR * limit, wall, call)
     in_place = threading.current_thread() is threading.main_thread() or getattr(busy, "on", False)
     if in_place:
         outcome, stuck = _run_here(body, alarm), False
@@ -276,6 +290,20 @@ def run_case(body: Callable[[], Any], limit: float | None = None, case: str | No
     if outcome is None:  # past a limit
         return _timeout(alarm, b, case, stuck)
     return outcome
+
+
+def one_call(fn, *args):
+    """``fn(*args)``, one call of the student's function inside a case, under the case's
+    per-call limit (``run_case(..., call=)``; none outside such a case). No ``try``: the
+    interrupt passes this frame as it passes the student's (:func:`.interrupt.escapes`); a
+    call that raises ends its case, and the next call begins the count afresh."""
+    alarm = getattr(busy, "alarm", None)
+    if alarm is None or alarm.call is None:
+        return fn(*args)
+    alarm.call_begins()
+    value = fn(*args)
+    alarm.call_ends()
+    return value
 
 
 def _guarded(alarm: Alarm, body) -> tuple[bool, Any]:

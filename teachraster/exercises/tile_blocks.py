@@ -41,7 +41,7 @@ import numpy as np
 from ..core.edges import edge_values_at, passes, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short
-from .cases import SEED, fixed_and_drawn
+from .cases import SEED, seeded
 from .coverage import covered
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .package_answers import CHECKER_WORDS
@@ -94,6 +94,16 @@ POINTS = {
     # r141 D8.1-3: a one-pixel block's offsets not scaled to the block, or scaled by size/2
     "one step": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, 1),
     "half size": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s / 2),
+    # r162 M1: offsets that stop short of the block's last centre: size − 2 steps; the centre
+    # form's half span (size − 1)/2 added to the first centre; the centre form with integer
+    # division, E at x0 + size//2 ± (size − 1)//2 steps (½ px short on each side)
+    "size - 2": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s - 2),
+    "half span": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, (s - 1) / 2),
+    "centre floored": lambda x0, y0, s: (
+        x0 + s // 2 - (s - 1) // 2,
+        y0 + s // 2 - (s - 1) // 2,
+        2 * ((s - 1) // 2),
+    ),
 }
 
 
@@ -195,7 +205,34 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         accepted &= _passes(e0 + t, accept_tie, setup, k, b - a)
     if logic == "accept by the best corner":
         accepted = ~rejected
+    elif logic in SIGN_SLIPS:  # r162: the tests' own comparison slipped, ≤ or >
+        return _sign_slip(xy, x0, y0, size, logic)
     return _verdicts(rejected, accepted & ~rejected, shape, scalar)
+
+
+#: r162: the sign tests with the wrong comparison: the reject test E₀ + R + β ≤ 0 (a block
+#: whose best centre has E + β = 0, which passes the pixel test, rejected), or the accept test
+#: E₀ + T + β > 0 (a block whose worst centre has E + β = 0 left partial). E and β are
+#: multiples of E's step at a centre, 2^-16 px² (``STEP``), so "> 0" is "≥ STEP".
+SIGN_SLIPS = ("reject at zero", "accept above zero")
+#: The smallest positive value E takes at a pixel centre (px²), vertices on the 1/256 grid.
+STEP = 2.0**-16
+
+
+def _sign_slip(xy, x0, y0, size, logic: str):
+    """classify_block with the right offsets and bias, one test's comparison slipped."""
+    gx, gy = grid_of(x0, y0)
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    if setup.area2 == 0:
+        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+    rows, cols = _corners(gx.ravel(), gy.ravel(), size)
+    e = (edge_values_at(setup, rows.ravel(), cols.ravel()) / setup.unit**2).reshape(4, -1, 3)
+    beta = np.where(np.asarray(setup.top_left, bool), 0.0, -STEP)  # (3,)
+    best, worst = e.max(axis=0) + beta, e.min(axis=0) + beta  # (n, 3)
+    reject_fails = best <= 0 if logic == "reject at zero" else best < 0
+    accept_passes = worst > 0 if logic == "accept above zero" else worst >= 0
+    rejected = reject_fails.any(axis=1)
+    return _verdicts(rejected, accept_passes.all(axis=1) & ~rejected, gx.shape, gx.ndim == 0)
 
 
 def edge_kind(d) -> str:
@@ -475,7 +512,11 @@ def _span_words(what: str, why: str, span):
     def words(a, e, g):
         size = a[3]
         steps, need = span(size), size - 1
+        # r162 M1: the mirror of the overshoot's "they reach x0 + size + ½": where they stop
+        reach = steps + 0.5
+        at = f"x0 {'+' if reach >= 0 else '−'} {num(abs(reach))} = {num(a[1] + reach)}"
         how = (
+            f"reach only {at} (and y0 alike), short of the block's last pixel centre, so they "
             "fall short of E's largest and smallest values over its centres (a block holding "
             "a covered centre can be rejected: a hole)"
             if steps < need
@@ -488,6 +529,20 @@ def _span_words(what: str, why: str, span):
         )
 
     return _at_first(words)
+
+
+def _centre_floored_words(args, expected, got) -> str:
+    """r162 M1: the centre form with integer division (x0 + size//2, (size − 1)//2 steps)."""
+    _, (_, bx, _, size), _, _, _ = first_block(args, expected, got)
+    lo, hi = size // 2 - (size - 1) // 2, size // 2 + (size - 1) // 2
+    return (
+        "your offsets come from the block's middle with integer division (x0 + size//2, "
+        f"(size − 1)//2 steps either way?): for this {size}-px block they reach from "
+        f"x0 + {lo} = {num(bx + lo)} to x0 + {hi} = {num(bx + hi)}, short of the block's "
+        f"extreme centres {num(bx + 0.5)} and {num(bx + size - 0.5)} (a block holding a covered "
+        "centre can be rejected: a hole); the middle of the centres lies at x0 + size/2, and "
+        "the half span is (size − 1)/2, not a whole number for an even size"
+    )
 
 
 BLOCK_KNOBS = Knobs(classify_with, {
@@ -541,9 +596,9 @@ BLOCK_KNOBS = Knobs(classify_with, {
         # convex: four covered centres do accept it), and the rule's last sentence said twice
         Slip("corners inside", _at_first(lambda a, e, g: "corners outside the triangle do not "
              "reject a block: the test is per edge; "
-             + _by_verdicts(_edge_table(*a), e, g)[2:].replace(_OUTSIDE, "")), "inside"),
+             + _by_verdicts(_edge_table(*a), e, g)[2:]), "inside"),
         Slip("best corner accepts", _at_first(lambda a, e, g: _by_verdicts(
-             _edge_table(*a), e, "accepted")[2:]), "accept by the best corner"),
+             _edge_table(*a), e, "accepted", cause=True)[2:]), "accept by the best corner"),
     ],
 })  # fmt: skip
 
@@ -665,6 +720,65 @@ FLOAT32 = Mistake(
 )
 
 
+def _int_vertices(xy, x0, y0, size):
+    """The package's verdicts with the vertices cast to int (truncated toward 0); None where
+    every vertex is whole already (the cast changes nothing there)."""
+    v = np.asarray(xy, dtype=float)
+    if np.array_equal(v, np.trunc(v)):
+        return None
+    return expected_block(np.trunc(v), x0, y0, size)
+
+
+def _int_words(args, expected, got) -> str:
+    v = np.asarray(args[0], dtype=float)
+    k = int(np.argmax((v != np.trunc(v)).any(axis=1)))
+    return (
+        "you cast the vertices to int (`dtype=int`, `astype(int)` or `int()`), which drops "
+        f"their fractions: v{k + 1} = {vec(v[k])} became {vec(np.trunc(v[k]))}, and every edge "
+        "through it moved; the vertices lie on the 1/256 grid: keep them as floats (float64)"
+    )
+
+
+#: r162: vertices cast to int (the verdicts of another triangle) were told only the rule.
+INT_VERTICES = Mistake("vertices cast to int", _int_words, gives=_int_vertices)
+
+
+def _single(kind: str, words, **knobs) -> Mistake:
+    """A slip of :func:`classify_with` named alone, never combined with the knobs' others: the
+    knobs' pairs are what the checker's own time goes to (r162: five more knob values took
+    a check past its 10 s of CPU, and every explanation lost its numbers)."""
+    return Mistake(kind, words, lambda *a: classify_with(*a, **knobs))
+
+
+#: r162 M1: offsets that stop short of the block's last centre (size − 2 steps; the centre
+#: form's half span from the first centre; the centre form with integer division) were told
+#: "Corners outside the triangle do not reject a block" or "you tested the maximising one".
+SHORT_OFFSETS = [
+    _single("offsets of size − 2 steps", _span_words("size − 2 steps", "", lambda s: s - 2),
+            points="size - 2"),
+    _single("half span from the first centre", _span_words(
+        "(size − 1)/2 steps from the first centre", "; the half span belongs to the block's "
+        "middle, (x0 + size/2, y0 + size/2), not to its first centre", lambda s: (s - 1) / 2),
+        points="half span"),
+    _single("centre form, integer division", _centre_floored_words, points="centre floored"),
+]  # fmt: skip
+
+#: r162: the sign tests' comparisons slipped (≤ for the reject test, > for the accept test)
+#: were told only the rule.
+SIGN_MISTAKES = [
+    _single("reject test E ≤ 0", _at_first(lambda a, e, g: "your reject test rejects when "
+            "E₀ + R + β ≤ 0: it also rejects a block whose best centre has E + β exactly 0, "
+            "and such a centre passes the pixel test (E + β ≥ 0): reject only when "
+            "E₀ + R + β < 0; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
+            logic="reject at zero"),
+    _single("accept test E > 0", _at_first(lambda a, e, g: "your accept test asks "
+            "E₀ + T + β > 0: it leaves partial a block whose worst centre has E + β exactly 0, "
+            "and such a centre passes the pixel test (E + β ≥ 0): accept when E₀ + T + β ≥ 0 "
+            "on every edge; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
+            logic="accept above zero"),
+]  # fmt: skip
+
+
 def explain_block(args, expected, got) -> str:
     """The first block of the grid that differs, its extreme centres, and both verdicts."""
     xy, x0, y0, size = args
@@ -703,7 +817,7 @@ BLOCK_HINTS = (
      r"even edge \1, at the pixel centre of the block where its E is lowest, passes (which "
      "one?)"),
     (re.compile(rf"this corner, {_POINT}, is the one that minimises E for edge (v\d→v\d), and "
-                rf"it fails; you tested the maximising one, {_POINT}"),
+                rf"it fails(?:; you tested the maximising one, {_POINT})?"),
      r"edge \1 fails at the pixel centre of the block where its E is smallest (which one is "
      "it?)"),
     (re.compile(rf" \(each edge's maximising corner passes: (?:v\d→v\d: {_POINT}(?:; )?)+\)"),
@@ -718,6 +832,11 @@ BLOCK_HINTS = (
     (" (E₀ is E at the centre (x0 + ½, y0 + ½), and the last centre lies size − 1 px further)",
      ""),
     ("; test all four (or, per edge, the one its signs pick)", ""),
+    # r162 M1: the centre form's reach and half span are the task's question
+    (re.compile(r", short of the block's extreme centres [^ ]+ and [^ ]+ \(a block"),
+     ", short of the block's extreme centres (a block"),
+    ("; the middle of the centres lies at x0 + size/2, and the half span is (size − 1)/2, not "
+     "a whole number for an even size", "; where do the block's centres begin and end?"),
     # r141 D8.1-3: the steps the offsets span are the task's question
     (re.compile(r"; the block's last pixel centre lies size − 1 = \d+ steps from its first: "
                 r"scale the offsets by size − 1"),
@@ -742,7 +861,7 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, CULLED, AS_GIVEN, TWO_CORNERS, *map(_constant, KINDS), BLOCK_KNOBS],
+        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *map(_constant, KINDS), BLOCK_KNOBS],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
@@ -834,7 +953,8 @@ def _grid_words(gx, gy, size) -> str:
     )
 
 
-_fixed_and_drawn = fixed_and_drawn(_block_cases, SEED + 100)  # r49: some drawn per check
+# r162 C2: every case seeded (r49 drew some afresh per check: the count moved on a re-run)
+_seeded_cases = seeded(_block_cases, SEED + 100)
 
 #: The side of the huge blocks: 2^19 px, 2.7·10^11 centres each (vertices stay within the
 #: ±2^21 px the package's 8-bit fixed point holds).
@@ -865,10 +985,10 @@ _huge = cache(_huge_blocks)
 def block_cases() -> list:
     """The hard and random grids (fixed, then drawn for this check), then the huge blocks,
     last, so that a per-centre scan is told its other mistakes before it runs out of time."""
-    return _fixed_and_drawn() + copy.deepcopy(_huge())
+    return _seeded_cases() + copy.deepcopy(_huge())
 
 
-block_cases.__module__ = _fixed_and_drawn.__module__
+block_cases.__module__ = _seeded_cases.__module__
 
 
 def _edge_table(xy, x0, y0, size):
@@ -904,7 +1024,11 @@ def _on_edge(edges):
     return None, None
 
 
-def _by_verdicts(edges, expected, got) -> str:
+def _by_verdicts(edges, expected, got, cause: bool = False) -> str:
+    """The rule that decides this block, quoting its extreme centres. ``cause``: the words of
+    the mistakes that test the wrong corner (r162 M1: the generic rule said "you tested the
+    maximising one" and "Corners outside the triangle do not reject a block" to offsets that
+    stop short of the block's last centre, which neither is)."""
     if expected == "rejected":
         edge = next(e for e in edges if not e["pass"].any())
         return (
@@ -923,13 +1047,13 @@ def _by_verdicts(edges, expected, got) -> str:
     if got == "accepted" and failing is not None:
         return (
             f": this corner, {_corner(failing['min'])}, is the one that minimises E for edge "
-            f"{failing['name']}, and it fails; you tested the maximising one, "
-            f"{_corner(failing['max'])}"
+            f"{failing['name']}, and it fails"
+            + (f"; you tested the maximising one, {_corner(failing['max'])}" if cause else "")
         )
     best = [f"{e['name']}: {_corner(e['max'])}" for e in edges]
     return (
         ": no edge excludes the block's four corner centres (each edge's maximising corner "
-        "passes: " + "; ".join(best) + ")" + _OUTSIDE
+        "passes: " + "; ".join(best) + ")" + (_OUTSIDE if cause else "")
     )
 
 
@@ -941,8 +1065,10 @@ _OUTSIDE = ". Corners outside the triangle do not reject a block: the test is pe
 VERDICT_COLOURS = {"rejected": "#ffffff", "accepted": "#1b7837", "partial": "#2b7bba"}
 
 
-def _block_key(ax, want, marked: bool) -> None:
-    """The case plot's own key: the package's verdicts present, the block that differs."""
+def _block_key(ax, want, marked: bool, below: bool = False) -> None:
+    """The case plot's own key: the package's verdicts present, the block that differs;
+    ``below`` the axes where a note (no answer: an endless loop, an exception) is written
+    across them (r162 D3: the note's box covered the key at the right)."""
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
@@ -950,6 +1076,14 @@ def _block_key(ax, want, marked: bool) -> None:
                for k in KINDS if (want == k).any()]  # fmt: skip
     if marked:
         handles.append(Line2D([], [], color="#d7301f", lw=2.5, label="first block that differs"))
+    if below:  # under the tick labels and the x label: a fixed distance in points
+        from matplotlib.transforms import ScaledTranslation
+
+        under = ax.transAxes + ScaledTranslation(0, -48 / 72, ax.figure.dpi_scale_trans)
+        ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                  bbox_transform=under, fontsize="small", frameon=False,
+                  ncols=len(handles))  # fmt: skip
+        return
     ax.legend(handles=handles, loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize="small",
               frameon=False)  # fmt: skip
 
@@ -1002,7 +1136,7 @@ def draw_block_case(ax, case, got):
         # seen in the whole grid), with a margin of half a block
         pad = max(3.0, size / 2)
         lo, hi = np.array([bx, by]) - pad, np.array([bx, by]) + size + pad
-    _block_key(ax, want, got is not None and wrong)
+    _block_key(ax, want, got is not None and wrong, below=got is None)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
     plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
