@@ -374,6 +374,15 @@ VERTEX_DRAGS = [
 ]
 
 
+def _main_thread(cdp) -> dict:
+    """Seconds the page's main thread has spent so far: in tasks, in script, recalculating
+    style and laying out (Chromium's ``Performance.getMetrics``)."""
+    metrics = {m["name"]: m["value"] for m in cdp.send("Performance.getMetrics")["metrics"]}
+    names = {"tasks": "TaskDuration", "script": "ScriptDuration",
+             "style": "RecalcStyleDuration", "layout": "LayoutDuration"}  # fmt: skip
+    return {k: metrics.get(v, 0.0) for k, v in names.items()}
+
+
 def bench_vertex_drag(page, tries, css_class, info, name="editor"):
     """Vertex v2 of the figure in ``css_class`` dragged ``tries`` times (``info``:
     :func:`drag_info`), 0-4 grid pixels left and back at every animation frame.
@@ -395,6 +404,11 @@ def bench_vertex_drag(page, tries, css_class, info, name="editor"):
 
     fps, firsts, kernel, trips, parts, settles = [], [], [], [], [], []
     hx, hy = info["handles"][1]
+    # the page's main thread during the drags (Chromium's own counters): where a frame's
+    # time goes in the page, script, style or layout, beside the kernel's
+    cdp = page.context.new_cdp_session(page)
+    cdp.send("Performance.enable")
+    before, frames = _main_thread(cdp), 0
     for _ in range(tries):
         if css_class in AHEAD:  # a vertex moved: its slider's pictures drawn ahead again
             ahead_settled(page, css_class)
@@ -423,7 +437,15 @@ def bench_vertex_drag(page, tries, css_class, info, name="editor"):
         release = max(end, page.evaluate(RELEASED))  # the moves' end, or the pointer's release
         settles.append((times[-1] - release) if times else float("nan"))
         during = [x for x in times if x <= end] if times else []
+        frames += len(times or [])
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
+    used = {k: v - before[k] for k, v in _main_thread(cdp).items()}
+    cdp.detach()
+    if frames:
+        print(
+            f"{name} drag, page main thread per picture: "
+            + ", ".join(f"{k} {1e3 * v / frames:.1f} ms" for k, v in used.items())
+        )
     if kernel:
         print(f"{name} drag: kernel ms per position median {statistics.median(kernel):.0f}, "
               f"position -> picture round trip median {statistics.median(trips):.0f} ms, "
