@@ -5,6 +5,7 @@ Run from anywhere (needs JupyterLab, Playwright and Debian's Chromium)::
     python benchmarks/bench_browser.py            # full run (about 5 minutes)
     python benchmarks/bench_browser.py --quick    # smoke run (fewer tries)
     python benchmarks/bench_browser.py --only FilterExplorer   # the baselines and one explorer
+    python benchmarks/bench_browser.py --only TriangleEditor,PlaneExplorer   # side by side
 
 JupyterLab starts on a free loopback port with its own config, data, runtime and settings
 folders (in a temporary directory, removed afterwards) and opens a small notebook holding:
@@ -373,6 +374,15 @@ VERTEX_DRAGS = [
 ]
 
 
+def _main_thread(cdp) -> dict:
+    """Seconds the page's main thread has spent so far: in tasks, in script, recalculating
+    style and laying out (Chromium's ``Performance.getMetrics``)."""
+    metrics = {m["name"]: m["value"] for m in cdp.send("Performance.getMetrics")["metrics"]}
+    names = {"tasks": "TaskDuration", "script": "ScriptDuration",
+             "style": "RecalcStyleDuration", "layout": "LayoutDuration"}  # fmt: skip
+    return {k: metrics.get(v, 0.0) for k, v in names.items()}
+
+
 def bench_vertex_drag(page, tries, css_class, info, name="editor"):
     """Vertex v2 of the figure in ``css_class`` dragged ``tries`` times (``info``:
     :func:`drag_info`), 0-4 grid pixels left and back at every animation frame.
@@ -394,6 +404,11 @@ def bench_vertex_drag(page, tries, css_class, info, name="editor"):
 
     fps, firsts, kernel, trips, parts, settles = [], [], [], [], [], []
     hx, hy = info["handles"][1]
+    # the page's main thread during the drags (Chromium's own counters): where a frame's
+    # time goes in the page, script, style or layout, beside the kernel's
+    cdp = page.context.new_cdp_session(page)
+    cdp.send("Performance.enable")
+    before, frames = _main_thread(cdp), 0
     for _ in range(tries):
         if css_class in AHEAD:  # a vertex moved: its slider's pictures drawn ahead again
             ahead_settled(page, css_class)
@@ -422,7 +437,15 @@ def bench_vertex_drag(page, tries, css_class, info, name="editor"):
         release = max(end, page.evaluate(RELEASED))  # the moves' end, or the pointer's release
         settles.append((times[-1] - release) if times else float("nan"))
         during = [x for x in times if x <= end] if times else []
+        frames += len(times or [])
         fps.append((len(during) - 1) / ((during[-1] - during[0]) / 1e3) if len(during) > 2 else 0.0)
+    used = {k: v - before[k] for k, v in _main_thread(cdp).items()}
+    cdp.detach()
+    if frames:
+        print(
+            f"{name} drag, page main thread per picture: "
+            + ", ".join(f"{k} {1e3 * v / frames:.1f} ms" for k, v in used.items())
+        )
     if kernel:
         print(f"{name} drag: kernel ms per position median {statistics.median(kernel):.0f}, "
               f"position -> picture round trip median {statistics.median(trips):.0f} ms, "
@@ -677,7 +700,8 @@ def main(argv=None) -> int:
     parser.add_argument("--tries", type=int, default=12, help="tries per latency (default 12)")
     parser.add_argument("--only", default=None, metavar="TEXT",
                         help="only the baselines and the slider explorers and dragged "
-                             "figures whose name holds TEXT (e.g. FilterExplorer; "
+                             "figures whose name holds TEXT, or one of several "
+                             "comma-separated (e.g. FilterExplorer; "
                              "PlaneExplorer: its sliders and its vertex; TriangleEditor): a "
                              "notebook of those cells alone")  # fmt: skip
     parser.add_argument("--shots", type=Path, default=None,
@@ -685,8 +709,10 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     chosen = drags = None
     if args.only is not None:
-        chosen = [s for s in SLIDERS if args.only.lower() in s[1].lower()]
-        drags = [d for d in VERTEX_DRAGS if args.only.lower() in d[1].lower()]
+        # several names, comma-separated: one run measures them under the same load
+        wanted = [w.strip().lower() for w in args.only.split(",") if w.strip()]
+        chosen = [s for s in SLIDERS if any(w in s[1].lower() for w in wanted)]
+        drags = [d for d in VERTEX_DRAGS if any(w in d[1].lower() for w in wanted)]
         if not chosen and not drags:
             names = [s[1] for s in SLIDERS] + [d[1] for d in VERTEX_DRAGS]
             parser.error(f"--only {args.only!r}: none of " + ", ".join(names))

@@ -11,8 +11,10 @@ Playwright or Chromium is missing.
 
 from __future__ import annotations
 
+import base64
 import time
 
+import numpy as np
 import pytest
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_explorables import _kernel  # a cell's printed JSON
@@ -43,7 +45,7 @@ def _still(tab, img, tries: int = 40) -> None:
             return
 
 
-def test_a_vertex_dragged_in_the_page(lab, page):  # noqa: F811
+def test_a_vertex_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
     page.set_viewport_size({"width": 1400, "height": 900})
     _run_all(lab, page, CELLS, NAME)
     img = page.locator(".t-plane .tr-drag img").first
@@ -94,3 +96,50 @@ def test_a_vertex_dragged_in_the_page(lab, page):  # noqa: F811
     x, y, handle, filled = got
     assert handle == [x, y] and filled, got
     assert abs(x - 6.0) <= 1.0 and abs(y - 4.0) <= 1.0, got
+    _painted_as_sent(page, tmp_path)
+    # and back where v1 began: the last picture is the reference itself (an empty patch),
+    # so every pixel the drag's patches painted must be put back
+    before = page.evaluate(FRAMES)
+    img.evaluate("i => i.scrollIntoView({block: 'center'})")  # the new cells scrolled it away
+    _still(page, img)
+    page.mouse.move(*at(x, y))
+    page.mouse.down()
+    for k in range(1, 21):
+        page.mouse.move(*at(x + (2.0 - x) * k / 20, y + (1.0 - y) * k / 20))
+        page.wait_for_timeout(16)
+    page.mouse.up()
+    page.wait_for_function(
+        "n => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0) > n",
+        arg=before + 1,
+        timeout=30_000,
+    )
+    assert _kernel(page, "[ex.x[0].value, ex.y[0].value]") == [2.0, 1.0]
+    _painted_as_sent(page, tmp_path)
+
+
+#: the page's picture canvas (the patches over the <img>), its RGBA bytes in base64
+CANVAS = """() => {
+  const c = document.querySelector('.t-plane .tr-drag canvas.tr-drag-picture');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let s = ''; for (let i = 0; i < d.length; i += 8192) s += String.fromCharCode(...d.subarray(i, i + 8192));
+  return [c.width, c.height, btoa(s)];
+}"""
+
+
+def _painted_as_sent(tab, tmp_path) -> None:
+    """Every pixel the page's canvas paints is the kernel's last picture's: drag.js puts the
+    reference back only where a new patch does not paint over the old one, and a skipped put-back
+    that left a stale pixel would show here."""
+    tab.wait_for_timeout(500)  # the final picture painted (its frame counted above)
+    path = tmp_path / "last.npy"
+    assert _kernel(tab, f"np.save({str(path)!r}, ex.display.widget._last) or 0") == 0
+    sent = np.load(path)
+    w, h, data = tab.evaluate(CANVAS)
+    canvas = np.frombuffer(base64.b64decode(data), np.uint8).reshape(h, w, 4)
+    assert sent.shape == canvas.shape
+    opaque = canvas[..., 3] == 255
+    assert opaque.sum() > 1000  # the patches are painted on the canvas
+    differ = np.argwhere(opaque & (canvas != sent).any(axis=-1))
+    assert len(differ) == 0, (
+        f"{len(differ)} pixels differ, first at (row, col) {differ[:3].tolist()}"
+    )

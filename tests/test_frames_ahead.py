@@ -307,10 +307,10 @@ def _claim(ahead, k, **changes) -> dict:
     return claim | changes
 
 
-@pytest.mark.parametrize("name", ["projection", "plane"])
+@pytest.mark.parametrize("name", ["projection", "plane", "depth"])
 def test_a_release_on_a_full_picture_drawn_ahead_sends_nothing_for_the_other_explorers(name):
     """Issue 31: the last picture after a drag of ProjectionExplorer's q or PlaneExplorer's
-    v1 x came up to 105 and 122 ms after the release. They draw full pictures ahead too: a
+    v1 x came up to 105 and 122 ms after the release (DepthPrecisionExplorer's near 126). They draw full pictures ahead too: a
     release on one draws and sends nothing and shows what setting the value from code does."""
     ex, slider = _make(name)
     page, sent = _listen(ex, slider)

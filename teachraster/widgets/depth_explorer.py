@@ -218,7 +218,9 @@ class DepthPrecisionExplorer:
                                 layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
         self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
-            self._ahead = self.display.ahead(self.near, self)  # drawn while the kernel idles
+            # drawn while the kernel idles; a draft here is the full picture, so a release
+            # on one needs no picture from the kernel (issue 31: 106-126 ms after the release)
+            self._ahead = self.display.ahead(self.near, self, full=True)
 
     @property
     def mapping(self) -> str:

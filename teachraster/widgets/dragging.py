@@ -120,6 +120,10 @@ class DragFigure(anywidget.AnyWidget):
         self._posted = None  # the picture of the poster (reference: skip an unchanged one)
         self._poster_rgba = None  # reference mode: the final picture waiting to be posted
         self._frame = 0
+        #: True while a position dragged in the page (not the release) is answered
+        self.in_drag = False
+        #: the caption of the picture being answered mid-drag (None: the ``caption`` trait)
+        self.drag_caption: str | None = None
         #: called when the page asks for a new reference (a view opened later): pictures
         #: drawn ahead against the old one are then stale
         self.on_reference = None
@@ -140,7 +144,13 @@ class DragFigure(anywidget.AnyWidget):
         self._seq = int(content.get("seq", 0))
         self._t0 = time.perf_counter()
         final = bool(content.get("final"))
-        self.on_move(int(content["i"]), float(content["x"]), float(content["y"]), final)
+        # mid-drag the caption travels only in the frame message (PageCaption): a trait
+        # sync too was a second message and a second layout of the text per frame
+        self.in_drag = not final
+        try:
+            self.on_move(int(content["i"]), float(content["x"]), float(content["y"]), final)
+        finally:
+            self.in_drag = False
 
     def show(self, fig, ax, handles, *, final: bool = True, rgba=None) -> None:
         """Send the figure's current pixels (drawn already) and where the handles are now.
@@ -265,7 +275,8 @@ class DragFigure(anywidget.AnyWidget):
         page's pump reads ``n``, ``place`` and ``ref`` the same way for all of them."""
         self.send({"type": "frame", "seq": seq, "handles": handles, "n": self._frame,
                    "place": place, "kernel_ms": kernel_ms, "timing": timing,
-                   "ref": self.ref_frame if self.reference else None, "caption": self.caption,
+                   "ref": self.ref_frame if self.reference else None,
+                   "caption": self.caption if self.drag_caption is None else self.drag_caption,
                    "deflate": deflate}, [data])  # fmt: skip
 
     def _send_reference(self) -> None:

@@ -217,11 +217,17 @@ class PageCaption:
 
     @property
     def value(self) -> str:
-        return self._page.caption
+        page = self._page
+        return page.caption if page.drag_caption is None else page.drag_caption
 
     @value.setter
     def value(self, html: str) -> None:
-        self._page.caption = html
+        page = self._page
+        if page.in_drag:  # sent with the drag's picture; the trait follows at the release
+            page.drag_caption = html
+            return
+        page.drag_caption = None
+        page.caption = html
 
 
 def slider_display(fig, mode: str, *, draw=None, drafting=lambda: False, alt: str = "",

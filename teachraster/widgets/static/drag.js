@@ -169,9 +169,14 @@ function render({ model, el }) {
   } else {
     el.append(caption, box, notice);
   }
+  // the same text again changes nothing: no new layout (a drag's frame and the trait of its
+  // release both bring the caption; a layout of a table beside the picture per frame)
+  let captionShown = null;
   function setCaption(html) {
-    caption.innerHTML = html || "";
-    caption.style.display = html ? "" : "none";
+    if ((html || "") === captionShown) return;
+    captionShown = html || "";
+    caption.innerHTML = captionShown;
+    caption.style.display = captionShown ? "" : "none";
   }
   setCaption(model.get("caption"));
   model.on("change:caption", () => setCaption(model.get("caption")));
@@ -304,13 +309,19 @@ function render({ model, el }) {
     ref.asked = frame;
     model.send({ type: "ref", ref: frame });
   }
+  // rectangle a = [x, y, w, h] lies within b
+  const within = (a, b) =>
+    a[0] >= b[0] && a[1] >= b[1] && a[0] + a[2] <= b[0] + b[2] && a[1] + a[3] <= b[1] + b[3];
   function putPatch(place, raw) {
-    if (ref.dirty) {
+    const painted = raw && raw.byteLength;
+    if (ref.dirty && !(painted && within(ref.dirty, place))) {
+      // the reference, put back (not where the new patch paints over it all: a drag's
+      // patches cover the same plot, and drawing it back first was a second full blit)
       const [x, y, w, h] = ref.dirty;
-      pctx.drawImage(ref.bitmap, x, y, w, h, x, y, w, h); // the reference, put back
-      ref.dirty = null;
+      pctx.drawImage(ref.bitmap, x, y, w, h, x, y, w, h);
     }
-    if (!raw || !raw.byteLength) return;
+    ref.dirty = null;
+    if (!painted) return;
     const [x, y, w, h] = place;
     const buf = raw instanceof ArrayBuffer ? raw : raw.buffer;
     pctx.putImageData(new ImageData(new Uint8ClampedArray(buf, raw.byteOffset || 0, 4 * w * h),
