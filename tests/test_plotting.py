@@ -815,7 +815,8 @@ def test_fill_view_shades_the_pixels_a_sample_alone_covers_without_values():
     tri = tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]])
     fill = tr.rasterize(tri, 16, 16, method="halfplane", trace=True, samples=4)
     view = tp.FillView(fill, values=True, sample_key=True)
-    view.show_samples(tp.plot_samples(view.ax, fill, fraction=False, partial=True))
+    # the player's dots (bold: untested ones keyed until their step)
+    view.show_samples(tp.plot_samples(view.ax, fill, fraction=False, partial=True, bold=True))
     view.show_step(-1, draw=False)
     extra = fill.coverage & ~fill.trace.image(fill.trace.covered, fill=False)
     assert extra.sum() == 13 and view._shown is None  # 83 = 70 centres + 13, no values
@@ -824,6 +825,7 @@ def test_fill_view_shades_the_pixels_a_sample_alone_covers_without_values():
     assert len(face) and face[0][3] > 0  # filled, not only outlined
     assert tuple(face[0]) == tuple(tp.views.sample_only_face(False))
     assert tp.views.SAMPLE_ONLY in keyed(view)
+    assert "sample not tested yet" not in keyed(view)  # the last step: every one is tested
     view.show_step(2, draw=False)
     assert not view.sample_only.get_visible() and tp.views.SAMPLE_ONLY not in keyed(view)
     plt.close(view.fig)

@@ -629,7 +629,7 @@ class FillView:
         if sample_only:
             sample_only = [(SAMPLE_ONLY, sample_only_face(coloured), c["outside"])]
         if self._sample_key and self._bold_dots and trace.samples is not None:
-            entries += self._bold_entries(coloured, setup) + (sample_only or [])
+            entries += self._bold_entries(coloured or last, setup) + (sample_only or [])
         elif self._sample_key and trace.samples is not None:  # review r9: dots without a key
             # at the coloured step a ring (plot_samples' set_rings) with a colour inside: a
             # white face would read as the white dot of a sample not covered
@@ -645,12 +645,13 @@ class FillView:
             entries += sample_only or []
         return entries
 
-    def _bold_entries(self, coloured: bool, setup: bool) -> list:
+    def _bold_entries(self, done: bool, setup: bool) -> list:
         """Bold dots (plot_samples' ``bold``): untested ones before the step that tests
-        them (before the fill steps, only those), covered filled and uncovered hollow; the
-        pixels shaded for a sample alone are keyed by _sample_entries."""
+        them (before the fill steps, only those; ``done``: the last step, every one tested),
+        covered filled and uncovered hollow; the pixels shaded for a sample alone are keyed
+        by _sample_entries."""
         style, entries = BOLD_STYLE, []
-        if not coloured:
+        if not done:
             entries.append(("sample not tested yet", "white", style["untested"][1], "o"))
         if setup:
             return entries

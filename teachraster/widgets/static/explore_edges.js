@@ -393,6 +393,15 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
   }
 }
 
+// Which left corner of the cell (row, col) the owner's letter takes: the one farther from
+// the line of the shared edge v2-v3, "lower" on a tie (a horizontal edge).
+export function ownerCorner(scene, row, col) {
+  const u = scene.A.unit;
+  const [p, q] = [scene.A.given[1], scene.A.given[2]].map((v) => v.map((t) => t / u));
+  const off = (x, y) => Math.abs(edgeValue(p, q, [x, y]));
+  return off(col, row + 1) >= off(col, row) ? "lower" : "upper";
+}
+
 function drawShared(ctx, scene, cell, m, colors) {
   for (const { row, col, owner } of scene.shared) {
     const cx = m.left + (col + 0.5) * cell;
@@ -408,9 +417,12 @@ function drawShared(ctx, scene, cell, m, colors) {
     const text = owner === "both" ? "AB" : owner === "none" ? "–" : owner;
     const size = Math.max(textPx(ctx, 14), Math.round(cell * 0.36));
     ctx.font = `bold ${size}px sans-serif`;
-    // at the cell's lower left: a vertex's label stands above right of its dot, and at the
-    // upper left the letter ran into it, "v3B" (review r169 02-7)
-    const [lx, ly] = [m.left + col * cell + size * 0.55, m.top + (row + 1) * cell - size * 0.55];
+    // at the cell's left corner farther from the shared edge's line, the lower one on a
+    // tie: a vertex's label stands above right of its dot, and at the upper left the letter
+    // ran into it on a horizontal edge, "v3B" (review r169 02-7)
+    const low = ownerCorner(scene, row, col) === "lower";
+    const [lx, ly] = [m.left + col * cell + size * 0.55,
+      low ? m.top + (row + 1) * cell - size * 0.55 : m.top + row * cell + size * 0.55];
     const r = Math.max(ctx.measureText(text).width / 2 + 2, size * 0.6);
     ctx.fillStyle = "#fff";
     ctx.beginPath();
