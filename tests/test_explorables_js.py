@@ -250,6 +250,49 @@ def test_the_e_axis_ticks_keep_two_lines_of_text_apart_on_the_screen():
     assert call_js(EDGES, [("eTickStep", [span, 0.0, size])])[0] > span  # from the top: 0
 
 
+def test_a_turned_view_keeps_its_e_ticks_where_they_fit():
+    """Review r169 02-7: turned by a drag, the E axis kept only its 0: a step just over two
+    text heights was rounded up past the box's half height. Where ±step fits the box at 1.25
+    text heights apart (clear of each other), the axis keeps them."""
+    size = 17.0
+    for span in (60.0, 100.0, 130.0, 170.0, 240.0):
+        # span's height on the screen (px): from 2.5 text heights, twice 1.25, up, a nice
+        # step (1, 2, 2.5, 5 x 10^k, at most twice the next smaller) always fits in between
+        for screen in np.linspace(2.5 * size, 4 * size, 15):
+            px_per = screen / span
+            step = call_js(EDGES, [("eTickStep", [span, px_per, size])])[0]
+            assert step <= span, (span, screen, step)  # -step, 0, +step on the axis
+            assert step * px_per >= 1.25 * size - 1e-9  # and never on top of one another
+    assert call_js(EDGES, [("eTickStep", [130.0, 43.0 / 130.0, size])])[0] <= 130.0
+
+
+def test_edge_signs_are_drawn_near_the_edges_and_under_the_pointer():
+    """Review r169 02-7: three signs at each of 224 centres read as a texture on a projector.
+    They are drawn within a pixel of the chosen triangle's edges (where they change) and at
+    the centre under the pointer; elsewhere the fill says inside or out."""
+    from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
+
+    (scene,) = call_js(EDGES, [("edgeScene", [[list(v) for v in DEFAULT_VERTICES], 16, 14])])
+    a = np.array(DEFAULT_VERTICES[:3])
+    cells = [(r, c) for r in range(14) for c in range(16)]
+    shown = call_js(EDGES, [("signsShown", [scene["A"], r, c]) for r, c in cells])
+
+    def near(r, c):
+        p = np.array([c + 0.5, r + 0.5])
+        dist = []
+        for k in range(3):
+            e, f = a[k], a[(k + 1) % 3]
+            t = np.clip(np.dot(p - e, f - e) / np.dot(f - e, f - e), 0, 1)
+            dist.append(np.hypot(*(p - e - t * (f - e))))
+        return min(dist) <= 1
+
+    assert shown == [near(r, c) for r, c in cells]
+    assert 30 < sum(shown) < len(cells) / 2  # a band along the edges, not the grid
+    far = next(rc for rc, s in zip(cells, shown) if not s)
+    hover = [far[1] + 0.3, far[0] + 0.7]
+    assert call_js(EDGES, [("signsShown", [scene["A"], *far, hover])]) == [True]
+
+
 CRACKS = ("raster_rules", "explore_cracks")
 
 

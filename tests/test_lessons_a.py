@@ -635,15 +635,28 @@ def test_02_barycentrics_and_the_edge_function_bits():
     ns = lesson("02_half_planes")
     assert ns.area2 == pytest.approx(2 * abs(ns.tri.signed_area))
     assert np.allclose(ns.lam, tr.barycentric(ns.xy, ns.outside_point))  # the last one printed
-    side = 2 * ns.limit * 2**8  # the guard band's square, in units (the loop's last case)
     # review r7 0: the reach printed is the one lesson 00's map shows, inside 2**21 px
+    from teachraster.core import fixed_point
     from teachraster.widgets.pipeline_map import tour_stages
 
     assert ns.limit == 2**21 and ns.reach == tour_stages()["guardPx"] < ns.limit
-    assert ns.worst == side**2 and ns.n_bits == side.bit_length() * 2 == 62 <= 64
-    # r9 02-2: in the package's own 1/512 px units the same range takes all 64 bits
-    assert ns.unit == 512 and ns.own_bits == 64
+    # review r169 02-1/9: one rule with lessons 06 and 10, from fixed_point: coordinates
+    # strictly within 2**21 px, in 1/512 px, differ by less than 2**31 units; |E| <= M² by
+    # the area bound takes 63 bits with the sign, the term-by-term count 64 (not "62 in 1/256
+    # px, 64 in 1/512 px", a box whose corners the strict bound excludes)
+    assert ns.edge_bits == fixed_point.range_budget(2 * ns.limit, 8, centre_bit=True)
+    assert ns.unit == 512 and ns.edge_bits.max_delta < 2**31
+    assert (ns.edge_bits.least_needed, ns.edge_bits.needed) == (63, 64)
+    strict = 2**30 - 1  # the largest |coordinate| in units: |x| < 2**30
+    assert (2 * strict) ** 2 < 2**62 and ((2 * strict) ** 2).bit_length() + 1 == 63
     text = "\n".join(_cells("02_half_planes", "markdown"))
+    flat = re.sub(r"\s+", " ", text)
+    assert "63 bits by the area bound and 64 term by term" in flat
+    assert "62 against" not in flat and "all 64 in" not in flat and "up to 64 bits" not in flat
+    assert "lessons 06 and 10" in flat
+    assert "*Triangle rasterization in practice*, on overflow" in flat
+    code = "\n".join(_cells("02_half_planes", "code"))
+    assert "fixed_point.range_budget(" in code and "def edge_bits" not in code
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
     assert "1/512 px" in text and "bits to spare" not in text
     # r10: lessons 02 and 10 give the extra bit one reason, and a true one: at 8 sub-pixel bits
@@ -654,15 +667,18 @@ def test_02_barycentrics_and_the_edge_function_bits():
     ten = "\n".join(_cells("10_tiles_and_hierarchical_z", "markdown"))
     reason = "whatever the number of sub-pixel bits"
     assert all(reason in re.sub(r"\s+", " ", t) for t in (text, ten))
-    assert "lesson 10 says why" not in text and "up to 64 bits" in re.sub(r"\s+", " ", text)
-    # review r65 02-1: "a few bits fewer" was two, printed (62 against 64): said after the print
-    assert ns.own_bits - ns.n_bits == 2 and "Two bits fewer, then: 62 against" in text
-    assert "a few bits" not in re.sub(r"\s+", " ", text)
+    assert "lesson 10 says why" not in text
+    assert "a few bits" not in flat
     centres = [Fraction(2 * j + 1, 2) for j in range(16)]
     assert all((c * 2**8).denominator == 1 for c in centres)
     assert all((c * units_per_pixel(0)).denominator == 1 for c in centres)
     assert not any((c * 2**0).denominator == 1 for c in centres)
-    assert "Table 23.53" not in text and "§15.11" not in text  # unconfirmed references
+    assert "Table 23.53" not in text  # an unconfirmed reference
+    # review r169 02-2: §3.4.1/§3.4.2.1 are snapping and the top-left rule; the front face is
+    # §15.11 *Cull State*, its default FALSE the API documentation's, as lesson 00 says
+    row = next(line for line in text.splitlines() if line.startswith("| Direct3D 11"))
+    assert "§15.11 *Cull State*" in row and "D3D11_RASTERIZER_DESC" in row
+    assert "`FALSE` by default" in row and "§3.4.1 *Coordinate Snapping*" in row
 
 
 def test_02_how_many_bits_is_a_heading_of_its_own_that_folds_away():
@@ -675,6 +691,22 @@ def test_02_how_many_bits_is_a_heading_of_its_own_that_folds_away():
     after = [t for t in text[i + 1 :] if re.match(r"#{1,4} ", t)]
     assert after[0].startswith("### 5c.")
     assert "edge_bits" in "".join(text[i:]).split("### 5c.")[0]  # its cell is folded with it
+
+
+def test_02_top_and_left_are_read_off_the_edge_vector_in_words():
+    """Review r169 02-10: the test that makes an edge top or left stood only in code; §5b says
+    it in the notes' notation, with why (the sign of E's gradient), after the held rule."""
+    nb = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    at = next(i for i, t in enumerate(text) if t.startswith("### 5b."))
+    flat = re.sub(r"\s+", " ", text[at])
+    assert "is a **left** edge iff it goes up, $v_b < v_a$" in flat
+    assert "a **top** edge iff it is horizontal and goes right, $v_b = v_a$ and $u_b > u_a$" in flat
+    assert "gradient" in flat and "however slanted it looks" in flat
+    assert at > next(i for i, t in enumerate(text) if t.startswith("q_diagonal.hold()"))
+    # the internal review tags are gone from what a student unfolds (review r169 02-11)
+    assert not any(re.search(r"\(review r\d+", t) for t in text)
+    assert "by accident" not in "".join(text)
 
 
 @pytest.mark.notebook

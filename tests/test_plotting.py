@@ -808,6 +808,29 @@ def test_fill_view_outlines_the_pixels_shaded_for_a_sample_alone():
     plt.close(view.fig)
 
 
+def test_fill_view_shades_the_pixels_a_sample_alone_covers_without_values():
+    """Review r169 02-3: with no attribute to colour (lesson 02's player) the last step drew
+    the pixels shaded for a sample alone in the box's cream ("not tested yet"), unkeyed,
+    while the caption counted them. They have a shade of their own and a key line."""
+    tri = tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]])
+    fill = tr.rasterize(tri, 16, 16, method="halfplane", trace=True, samples=4)
+    view = tp.FillView(fill, values=True, sample_key=True)
+    # the player's dots (bold: untested ones keyed until their step)
+    view.show_samples(tp.plot_samples(view.ax, fill, fraction=False, partial=True, bold=True))
+    view.show_step(-1, draw=False)
+    extra = fill.coverage & ~fill.trace.image(fill.trace.covered, fill=False)
+    assert extra.sum() == 13 and view._shown is None  # 83 = 70 centres + 13, no values
+    assert view.sample_only.get_visible() and view._sample_only_n == 13
+    face = view.sample_only.get_facecolor()
+    assert len(face) and face[0][3] > 0  # filled, not only outlined
+    assert tuple(face[0]) == tuple(tp.views.sample_only_face(False))
+    assert tp.views.SAMPLE_ONLY in keyed(view)
+    assert "sample not tested yet" not in keyed(view)  # the last step: every one is tested
+    view.show_step(2, draw=False)
+    assert not view.sample_only.get_visible() and tp.views.SAMPLE_ONLY not in keyed(view)
+    plt.close(view.fig)
+
+
 def test_fill_view_last_step_keys_its_colours_as_a_bar_and_hides_u4():
     """Review r11 (lesson 00 c14): at the step coloured by u the key gave two swatches
     "u = 0.88" / "u = 0.00" (its ends only, and not why the top is 0.88, not v2's 1) beside

@@ -442,6 +442,10 @@ def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
         assert len(e._handles()) == 4
         e._on_page_move(3, 0.5, 0.5, True)
         assert e.probe.tolist() == [0.5, 0.5] and "outside" in e.info.value
+        # review r169 02-8: the point with 2 decimals, as the values (a drag leaves 1/256 px)
+        e._on_page_move(3, 2.98828125, 8.05859375, True)
+        assert "at the marked point (2.99, 8.06):" in e.info.value
+        e._on_page_move(3, 0.5, 0.5, True)
         assert e.probe_marker.get_xydata().tolist() == [[0.5, 0.5]]
         assert e.view.header.get_text() == "Span tables"  # a finished fill: no step count
         keyed = [t.get_text() for t in e.view.legend.texts if t.get_visible()]
@@ -501,6 +505,7 @@ def test_zero_area_positions_do_not_raise(editor):
     trace = editor.fill.trace
     assert trace.signed_area == 0 and not trace.covered.any()
     assert "zero area" in editor.info.value
+    assert "area 0.00 px²" in editor.info.value  # review r169 02-8: "area" with its number
     assert "u4" not in editor.info.value  # nothing to split
     assert not shown_coverage(editor.view).any()
     editor.set_vertex(1, x=2.0, y=2.0)  # two vertices on top of each other

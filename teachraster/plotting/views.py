@@ -79,6 +79,17 @@ PIXEL_UNDER_TEST = "pixel under test, × centre"
 SAMPLE_ONLY = "centre out, a sample in"
 
 
+def sample_only_face(coloured: bool):
+    """The face of a pixel shaded for a covered sample alone: none over the values' colours
+    (its outline marks it), else a pale shade of the covered blue, its own (the box's cream
+    means "not tested yet"). One rule for the picture and its key.
+
+    >>> sample_only_face(True)
+    'none'
+    """
+    return "none" if coloured else to_rgba(COLORS["fill"], 0.4)
+
+
 def _dashed_square() -> Path:
     """A square marker drawn in dashes, for the key's bounding box: the picture draws the box
     dashed (:func:`~teachraster.plotting.plot_bbox`), and a solid orange square named it and
@@ -193,7 +204,9 @@ class FillView:
         self.values.set_visible(False)
         # at that step, with several samples, the pixels shaded only because a sample is
         # covered (their centre is not): outlined, so that the caption's "72 with a covered
-        # sample (59 with their centre covered; 13 ...)" shows (review r23, lesson 00 c14)
+        # sample (59 with their centre covered; 13 ...)" shows (review r23, lesson 00 c14);
+        # with no values to colour them, filled with a shade of their own as well (review
+        # r169 02-3: drawn in the box's cream, they read as "not tested yet")
         self.sample_only = ax.add_collection(PolyCollection(
             [], facecolors="none", edgecolors=COLORS["outside"], linewidths=fs(0.17),
             zorder=3.5))  # fmt: skip
@@ -238,6 +251,7 @@ class FillView:
         self._trace: FillTrace | None = None
         self._step = -1
         self._keyed = None  # (testing, coloured, split) the key lists, see _key_entries
+        self._extra = None  # the pixels shaded for a sample alone (_mark_sample_only)
         self.set_fill(fill, step=step, draw=False)
 
     # -- state -----------------------------------------------------------------------------
@@ -325,9 +339,11 @@ class FillView:
             self.split.set_visible(False)
         # a pixel (half-planes) or a block (tiles) under test: outlined in the current colour
         testing = step.kind in ("pixel", "block")
-        coloured = step.kind == "interpolate" and self._shown is not None
+        last = step.kind == "interpolate"
+        coloured = last and self._shown is not None
         self.values.set_visible(coloured)
-        self.sample_only.set_visible(coloured and self._sample_only_n > 0)
+        self.sample_only.set_visible(last and self._sample_only_n > 0)
+        self.sample_only.set_facecolor(sample_only_face(coloured))
         if coloured:  # the parts' tints would read as values (the flat-top yellow: a high u)
             self.split.flat_bottom.set_visible(False)
             self.split.flat_top.set_visible(False)
@@ -343,13 +359,16 @@ class FillView:
         # sample dots too: with bold dots, as many as there are pixels tested)
         setup = k < trace.first_work_step
         # (the key lists less before the first fill step, review r58: a state of its own)
-        self._still = (boxed, split, testing, coloured, tested, setup and self.legend is not None)
+        self._still = (boxed, split, testing, coloured, tested, setup and self.legend is not None,
+                       last)  # fmt: skip
         self.raster_line.update(step)
         self.pixel.update(step)
-        keyed = (testing, coloured, split, boxed, setup)
+        keyed = (testing, coloured, split, boxed, setup, last)
         if self.legend is not None and keyed != self._keyed:
             self.legend.set_entries(
-                self._key_entries(trace, testing, coloured, split, boxed=boxed, setup=setup)
+                self._key_entries(
+                    trace, testing, coloured, split, boxed=boxed, setup=setup, last=last
+                )
             )
             self._keyed = keyed
         method = METHOD_NAMES.get(trace.method, trace.method)
@@ -411,6 +430,7 @@ class FillView:
             self.rejected = set_image(self.rejected, np.zeros((H, W)))
             self.coverage.image = set_image(self.coverage.image, np.zeros((H, W)))
         self._trace = trace
+        self._extra = self._mark_sample_only(fill, trace)
         self._show_values(fill, trace)
         if trace.halfplane is None and trace.blocks is None:
             self.rejected.set_visible(False)
@@ -492,7 +512,7 @@ class FillView:
         self._keyed = None  # bold dots have their own key lines
         dots.set_rings(self._still[3])  # coloured: see show_step
         tested = self._show_tested(self._step)
-        self._still = (*self._still[:4], tested)
+        self._still = (*self._still[:4], tested, *self._still[5:])
 
     def _show_values(self, fill, trace: FillTrace) -> None:
         """Put the values the last step writes into ``values``: the trace's record of the
@@ -504,7 +524,6 @@ class FillView:
         names = list(trace.pixel_affine)
         name = attribute if attribute in names else (names[0] if names else None)
         self._shown = None
-        self.sample_only.set_verts([])
         if not wanted or name is None or trace.culled or not trace.covered.any():
             return
         written = {"affine": trace.pixel_affine, "perspective": trace.pixel_perspective,
@@ -515,13 +534,9 @@ class FillView:
         lo, hi = float(min(b.min() for b in both)), float(max(b.max() for b in both))
         data = trace.image(local)
         where = "at the covered centres"
-        if trace.samples is not None and not isinstance(fill, FillTrace):
-            extra = np.isnan(data) & fill.coverage  # a sample covered, not the centre
+        extra = self._extra
+        if extra is not None:
             data[extra] = first_channel(fill.attrs[name][extra])
-            # each a square a little inside its pixel, so that two side by side stay two
-            rows, cols = np.nonzero(extra)
-            inset = np.array([[0.1, 0.1], [0.9, 0.1], [0.9, 0.9], [0.1, 0.9]])
-            self.sample_only.set_verts(np.column_stack([cols, rows])[:, None, :] + inset)
             if extra.any():  # extrapolated to centres outside: the bar spans them too (r12)
                 where = "at the pixel centres"
                 lo, hi = min(lo, float(data[extra].min())), max(hi, float(data[extra].max()))
@@ -531,9 +546,22 @@ class FillView:
         if self.value_bar is not None:
             self.value_bar.set_range(name, lo, hi, self.values.get_cmap(), where)
 
+    def _mark_sample_only(self, fill, trace: FillTrace) -> np.ndarray | None:
+        """Put the pixels shaded for a covered sample alone (their centre is not covered)
+        into ``sample_only``, each a square a little inside its pixel so that two side by
+        side stay two; return them as an (H, W) mask (None: one sample, or a bare trace)."""
+        self.sample_only.set_verts([])
+        if trace.samples is None or isinstance(fill, FillTrace):
+            return None
+        extra = fill.coverage & ~trace.image(trace.covered, fill=False)
+        rows, cols = np.nonzero(extra)
+        inset = np.array([[0.1, 0.1], [0.9, 0.1], [0.9, 0.9], [0.1, 0.9]])
+        self.sample_only.set_verts(np.column_stack([cols, rows])[:, None, :] + inset)
+        return extra
+
     def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool,
                      split: bool = False, *, boxed: bool = True,
-                     setup: bool = False) -> list:  # fmt: skip
+                     setup: bool = False, last: bool = False) -> list:  # fmt: skip
         """What the step on show draws: the pixel or block under test only while there is one
         (reviews r8, lesson 04 c15; r22, lesson 00), the split line and point 4 once found
         (r22), the sample dots of a multisampled fill, and at the last step with values their
@@ -586,17 +614,22 @@ class FillView:
         elif testing:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
             entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
-        return entries + self._sample_entries(trace, coloured)
+        return entries + self._sample_entries(trace, coloured, last=last)
 
     @property
     def _bold_dots(self) -> bool:
         return self.sample_dots is not None and getattr(self.sample_dots, "bold", False)
 
-    def _sample_entries(self, trace: FillTrace, coloured: bool, setup: bool = False) -> list:
-        """The key's lines for the sample dots (none when they are not keyed)."""
+    def _sample_entries(self, trace: FillTrace, coloured: bool, setup: bool = False,
+                        last: bool = False) -> list:  # fmt: skip
+        """The key's lines for the sample dots (none when they are not keyed), and at the last
+        step for the pixels shaded for a sample alone, drawn as show_step draws them."""
         c, entries = COLORS, []
+        sample_only = last and self._sample_only_n
+        if sample_only:
+            sample_only = [(SAMPLE_ONLY, sample_only_face(coloured), c["outside"])]
         if self._sample_key and self._bold_dots and trace.samples is not None:
-            entries += self._bold_entries(coloured, setup)
+            entries += self._bold_entries(coloured or last, setup) + (sample_only or [])
         elif self._sample_key and trace.samples is not None:  # review r9: dots without a key
             # at the coloured step a ring (plot_samples' set_rings) with a colour inside: a
             # white face would read as the white dot of a sample not covered
@@ -609,23 +642,21 @@ class FillView:
             )
             entries += [("sample covered", *covered),
                         ("sample not covered", "white", c["centre"], "o")]  # fmt: skip
-            if coloured and self._sample_only_n:  # the outlines of show_step
-                entries.append((SAMPLE_ONLY, "none", c["outside"]))
+            entries += sample_only or []
         return entries
 
-    def _bold_entries(self, coloured: bool, setup: bool) -> list:
+    def _bold_entries(self, done: bool, setup: bool) -> list:
         """Bold dots (plot_samples' ``bold``): untested ones before the step that tests
-        them (before the fill steps, only those), covered filled and uncovered hollow; the
-        outlines of show_step when coloured."""
-        c, style, entries = COLORS, BOLD_STYLE, []
-        if not coloured:
+        them (before the fill steps, only those; ``done``: the last step, every one tested),
+        covered filled and uncovered hollow; the pixels shaded for a sample alone are keyed
+        by _sample_entries."""
+        style, entries = BOLD_STYLE, []
+        if not done:
             entries.append(("sample not tested yet", "white", style["untested"][1], "o"))
         if setup:
             return entries
         entries += [("sample covered", style["covered"][0], style["covered"][1], "o", "white"),
                     ("sample not covered", "white", style["uncovered"][1], "o")]  # fmt: skip
-        if coloured and self._sample_only_n:  # the outlines of show_step
-            entries.append((SAMPLE_ONLY, "none", c["outside"]))
         return entries
 
 

@@ -417,7 +417,9 @@ class TriangleEditor(Holdable):
         area = trace.signed_area
         covered = int(trace.covered.sum())
         if area == 0:
-            parts = ["<b>zero area</b> (after snapping): the triangle covers no pixel"]
+            # a number after "area", as every other state gives (review r169 02-8)
+            parts = ["area 0.00 px² after snapping (<b>zero area</b>): the triangle covers no "
+                     "pixel"]  # fmt: skip
         else:
             facing = "front-facing (counter-clockwise" if area < 0 else "back-facing (clockwise"
             parts = [f"area {abs(area):.2f} px², {facing} on screen)",
@@ -458,7 +460,8 @@ class TriangleEditor(Holdable):
             verdict = "one is 0: on an edge (the top-left rule decides)"
         else:
             verdict = "signs differ: outside"
-        return f"at the marked point ({x:g}, {y:g}): {values} · {verdict}"
+        # 2 decimals, as the values: a dragged cross is at 1/256 px, "(2.98828, 8.05859)"
+        return f"at the marked point ({x:.2f}, {y:.2f}): {values} · {verdict}"
 
     # -- mouse dragging (ipympl) ------------------------------------------------------------
     def _on_press(self, event) -> None:

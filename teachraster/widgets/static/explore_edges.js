@@ -72,9 +72,10 @@ function mount(el, data, host) {
     ...host.state() };
   const root = frame(el, data.title,
     "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
-    "keys). At every pixel centre: the signs of E12, E23, E31 of the chosen triangle, in " +
+    "keys). At the pixel centres within a pixel of the chosen triangle's edges, where the " +
+    "signs change, and at the centre under the pointer: the signs of E12, E23, E31, in " +
     "their edges' colours; tint a half-plane to see where its E keeps one sign (its sign " +
-    "alone is then drawn, large). A centre " +
+    "alone is then drawn at every centre, large). A centre " +
     "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it.");
   const m = { left: 30, top: 26 };
   const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 22, maxCell: 44,
@@ -94,7 +95,7 @@ function mount(el, data, host) {
     const chosen = state.chosen === "A" ? scene.A : scene.B;
     drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
     drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
-    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint));
+    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover);
     drawShared(ctx, scene, cell, m, data.colors);
     drawTriangles(ctx, state, toPx, data.colors);
     drawEdgeLabels(ctx, chosen, state, toPx);
@@ -343,8 +344,32 @@ export function signSize(cell, width) {
   return Math.max(readablePx(12, width), Math.round(cell * SIGN_SCALE));
 }
 
-// three sign glyphs per centre: E12, E23, E31 of the chosen triangle, in their colours
-function drawSigns(ctx, setup, W, H, cell, m, only = -1) {
+// How far from the chosen triangle's edges (px) the three signs are drawn: 224 centres of
+// three glyphs each read as a texture on a projector (review r169 02-7); near the edges,
+// where the signs change from one centre to the next, they are information.
+export const SIGNS_NEAR = 1;
+
+// the distance (px) from the point `p` (px) to the segment a -> b (px)
+function segmentDistance(a, b, p) {
+  const d = [b[0] - a[0], b[1] - a[1]];
+  const len2 = d[0] * d[0] + d[1] * d[1];
+  const t = len2 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2)) : 0;
+  return Math.hypot(p[0] - a[0] - t * d[0], p[1] - a[1] - t * d[1]);
+}
+
+// Are the three signs drawn at the centre of (row, col)? Within SIGNS_NEAR px of an edge of
+// `setup` (the chosen triangle), or the centre under the pointer `hover` (px, or null).
+export function signsShown(setup, row, col, hover = null) {
+  if (hover && Math.floor(hover[0]) === col && Math.floor(hover[1]) === row) return true;
+  const u = setup.unit;
+  const v = setup.given.map((q) => q.map((t) => t / u));
+  const p = [col + 0.5, row + 0.5];
+  return [0, 1, 2].some((k) => segmentDistance(v[k], v[(k + 1) % 3], p) <= SIGNS_NEAR);
+}
+
+// three sign glyphs per centre near the edges (signsShown): E12, E23, E31 of the chosen
+// triangle, in their colours; with one half-plane tinted, its sign at every centre
+function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
   const logical = ctx.canvas.logical;
   const three = signSize(cell, logical ? logical.w : ctx.canvas.width);
   // one half-plane tinted: its sign alone, large (review r93 02-4: read on a projector)
@@ -353,6 +378,7 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1) {
   const gap = cell * SIGN_GAP;
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
+      if (only < 0 && !signsShown(setup, r, c, hover)) continue;
       const e = givenValues(setup, r, c);
       const cx = m.left + (c + 0.5) * cell;
       const cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
@@ -365,6 +391,15 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1) {
       }
     }
   }
+}
+
+// Which left corner of the cell (row, col) the owner's letter takes: the one farther from
+// the line of the shared edge v2-v3, "lower" on a tie (a horizontal edge).
+export function ownerCorner(scene, row, col) {
+  const u = scene.A.unit;
+  const [p, q] = [scene.A.given[1], scene.A.given[2]].map((v) => v.map((t) => t / u));
+  const off = (x, y) => Math.abs(edgeValue(p, q, [x, y]));
+  return off(col, row + 1) >= off(col, row) ? "lower" : "upper";
 }
 
 function drawShared(ctx, scene, cell, m, colors) {
@@ -382,7 +417,12 @@ function drawShared(ctx, scene, cell, m, colors) {
     const text = owner === "both" ? "AB" : owner === "none" ? "–" : owner;
     const size = Math.max(textPx(ctx, 14), Math.round(cell * 0.36));
     ctx.font = `bold ${size}px sans-serif`;
-    const [lx, ly] = [m.left + col * cell + size * 0.55, m.top + row * cell + size * 0.55];
+    // at the cell's left corner farther from the shared edge's line, the lower one on a
+    // tie: a vertex's label stands above right of its dot, and at the upper left the letter
+    // ran into it on a horizontal edge, "v3B" (review r169 02-7)
+    const low = ownerCorner(scene, row, col) === "lower";
+    const [lx, ly] = [m.left + col * cell + size * 0.55,
+      low ? m.top + (row + 1) * cell - size * 0.55 : m.top + row * cell + size * 0.55];
     const r = Math.max(ctx.measureText(text).width / 2 + 2, size * 0.6);
     ctx.fillStyle = "#fff";
     ctx.beginPath();
@@ -589,6 +629,13 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   drawPolygons(ctx, cam, polys);
   // the box's vertical edges, thin: where the planes are cut
   for (const [x, y] of corners) line3d(ctx, cam, [x, y, -h], [x, y, h], "#999", 1, [3, 3]);
+  // and its top and bottom: a box, not a few dashed verticals once turned (review r169 02-7)
+  for (const z of [-h, h]) {
+    corners.forEach(([x, y], k) => {
+      const [x1, y1] = corners[(k + 1) % 4];
+      line3d(ctx, cam, [x, y, z], [x1, y1, z], "#999", 1, [3, 3]);
+    });
+  }
   drawEAxis(ctx, cam, corners, h, zs);
   // each plane cuts z = 0 along its edge's line: drawn on top
   ends.forEach(([a, b], k) => line3d(ctx, cam, [a[0], a[1], 0], [b[0], b[1], 0], EDGE_HUES[k], 4));
@@ -634,10 +681,19 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
 // never closer on the screen than two lines of text (`pxPer`: screen px per px² of E, which
 // shrinks as the view turns towards the top; review r93 02-8: -50, 0, 50 ran together).
 // A step beyond `span` leaves the 0 tick alone.
+// Turned, the view could round a step just above two text heights up past `span`, leaving
+// the 0 tick alone (review r169 02-7): a step within the box at 1.25 text heights apart
+// (labels one line high, still clear of each other) is taken before giving up.
 export function eTickStep(span, pxPer, size) {
-  const raw = Math.max(span / 3, (2 * size) / Math.max(pxPer, 1e-9));
-  const mag = 10 ** Math.floor(Math.log10(raw));
-  return [1, 2, 5, 10].map((k) => k * mag).find((v) => v >= raw);
+  const nice = (lines) => {
+    const raw = Math.max(span / 3, (lines * size) / Math.max(pxPer, 1e-9));
+    const mag = 10 ** Math.floor(Math.log10(raw));
+    return [1, 2, 2.5, 5, 10].map((k) => k * mag).find((v) => v >= raw);
+  };
+  const apart = nice(2);
+  if (apart <= span) return apart;
+  const close = nice(1.25);
+  return close <= span ? close : apart;
 }
 
 // the vertical E axis with ticks in px², at the box corner drawn leftmost on the screen
