@@ -925,6 +925,15 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
         and "&lt;" not in html["clip"].split("G = ")[1][:200]
     )
     assert "2,097,152 px" in html["clip"] and "a larger one gets a smaller G" in html["clip"]
+    # review r166 00-8: the guard band as the GPU's (its fixed-point range), not as the
+    # simulator's setting ("G is set per image")
+    assert "G is set per image" not in html["clip"] and "fixed-point rasteriser" in html["clip"]
+    # review r166 00-7: the stage names the stencil test, and says what it does; its key
+    # matches the picture (depth 1 is grey 200, light; white is "no fragment", not the
+    # cleared buffer's 1)
+    assert "stencil test" in html["depth"] and "per-pixel integer" in html["depth"]
+    assert "mid grey" not in html["depth"] and "depth 1 light grey" in html["depth"]
+    assert "white: no fragment (the buffer keeps its cleared 1 there)" in html["depth"]
     assert "cleared to white" in html["blend"] and "dark grey" not in html["blend"]
     # early-z (test and write before the shader) only when the shader neither discards nor
     # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the

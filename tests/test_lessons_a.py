@@ -263,6 +263,92 @@ def test_00_words_r22():
     assert tour.count("JupyterLab's or Notebook's default display") == 1
 
 
+def _tour_error_cell(w) -> dict:
+    """Lesson 00's error-map cell run on the tour triangle with clip-space ``w`` (its Try-it
+    edits the triangle's cell), after the import cell, as Run All runs them; returns the
+    cell's globals and what it printed under ``"printed"``."""
+    import contextlib
+    import io
+    import warnings
+
+    cells = _cells("00_tour", "code")
+    imports = next(c for c in cells if "import teachraster as tr" in c)
+    error_map = next(c for c in cells if 'title="u along v1 → v2"' in c)
+    ns: dict = {}
+    exec(imports.replace("%matplotlib inline", ""), ns)
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=w, attrs={"u": [0.0, 1.0, 0.0]})
+    ns.update(tri=tri, W=16, H=16)
+    ns["halfplane"] = tr.rasterize(tri, 16, 16, method="halfplane", trace=True)
+    out = io.StringIO()
+    with warnings.catch_warnings(), contextlib.redirect_stdout(out):
+        warnings.simplefilter("error")  # a 0/0 warning is a bug too
+        ns["plt"].show = lambda: None
+        exec(error_map, ns)
+    ns["plt"].close("all")
+    ns["printed"] = out.getvalue()
+    return ns
+
+
+def test_00_try_it_with_equal_w_runs_r166():
+    """Review r166 00-4: the Try-it "set w=[1.0, 1.0, 1.0]" raised in the error-map cell
+    (0/0 for the zero line, then np.nanmax of an empty selection): Run All stopped before the
+    cube. Equal w (and w with no zero line across the triangle) now run and say so."""
+    equal = _tour_error_cell([1.0, 1.0, 1.0])
+    assert "all w equal: affine = perspective at every point" in equal["printed"]
+    assert np.nanmax(equal["err"]) == 0.0
+    no_line = _tour_error_cell([1.0, 2.0, 1.0])
+    assert not no_line["zero_line"] and "no zero line" in no_line["printed"]
+    given = _tour_error_cell([1.0, 2.0, 4.0])
+    assert given["zero_line"] and "zero line: v2 to v1 + 0.667" in given["printed"]
+    text = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    assert "in the cell that makes `tri` (under *One triangle*), set `w=[1.0, 1.0, 1.0]`" in text
+
+
+def test_00_words_r166():
+    """Review r166, lesson 00: GPUs rasterise points and lines too (GL 4.6 §14.4, §14.5;
+    lesson 12a), triangles are the surface primitive; the affine/perspective gap is 0.152 at
+    the pixel centres and 0.172 between them, both printed; z has one meaning in the symbols
+    table, clip-space z is z_clip; no issue numbers or authoring comments shown."""
+    md = _cells("00_tour", "markdown")
+    tour = " ".join(" ".join(md).split())
+    assert "nothing but triangles" not in tour and "one primitive only" not in tour
+    why = next(" ".join(t.split()) for t in md if "### Why triangles?" in t)
+    assert "§14.4 *Points*, §14.5 *Line Segments*" in why and "(12a_lines.ipynb)" in why
+    assert "every **surface** they draw is built from triangles" in why
+    assert "differ by 0.152 at most" not in tour and "almost the same" not in tour
+    assert "at the pixel centres the two differ by up to 0.152" in tour
+    assert "between the centres by up to 0.172" in tour
+    # one meaning per symbol: z is the view depth, clip-space z is z_clip everywhere here
+    table = next(t for t in md if "### Symbols used in every lesson" in t)
+    assert sum(line.startswith("| $z$ |") for line in table.splitlines()) == 1
+    assert r"\le z \le" not in tour and r"-w \le z_\text{clip} \le w" in tour
+    assert "issue 29" not in tour and not re.search(r"\bissue \d", tour)
+    code = "\n".join(_cells("00_tour", "code"))
+    for note in ("printed lines ≤ 75", "ran edge to edge", "its set-up stage gives"):
+        assert note not in code, note
+    # the question names the triangle the cells use (a Try-it may move a vertex)
+    assert '"v1 = (2.2, 1.5), v2' not in code and 'f"{given}, and keep' in code
+
+
+@pytest.mark.notebook
+def test_00_the_affine_gap_is_printed_at_centres_and_between_r166():
+    ns = lesson("00_tour")
+    assert round(float(np.nanmax(ns.err)), 3) == 0.152 == round(ns.largest_gap, 3)
+    # 3 - 2 sqrt 2 on the edge v1 v2 (w doubles along it), the maximum of the whole triangle
+    peak = 3 - 2 * np.sqrt(2)
+    assert abs(np.abs(ns.du_all).max() - peak) < 1e-5 and abs(ns.gap.max() - peak) < 1e-4
+    assert round(float(np.abs(ns.du_all).max()), 3) == round(float(ns.gap.max()), 3) == 0.172
+    # review r166 00-9: the span panel colours each part's covered pixels its own way: the
+    # rows above the split (v_mid = 5.2) are the flat-bottom part's, the rest flat-top
+    rows = np.flatnonzero(ns.span.coverage.any(axis=1))
+    assert ns.part_of_row[rows].tolist() == [int(r + 0.5 > ns.v_mid) for r in rows]
+    assert set(ns.part_of_row[rows]) == {0, 1}
+    from notebook_runs import executed, streams
+
+    printed = streams(executed("00_tour").notebook())
+    assert "at the 59 centres: 0.152" in printed and "over the whole triangle: 0.172" in printed
+
+
 def test_00_r37_items():
     """Review r37, lesson 00: the w's are stated (and printed) before the heatmap uses w2 = 2;
     the divide by w is its own stage, before the viewport (GL 4.6 §13.8), in the list as in

@@ -737,8 +737,9 @@ def test_blitted_steps_equal_a_full_redraw(method, size, values):
 def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method):
     """Review r9/r10 (lesson 04 c15): the last step's caption says "interpolated u" while the
     picture showed plain coverage. With ``values`` the covered pixels take the colours of
-    the values written (subdivided too), only at that step; both interpolations share one
-    colour range, so the toggle changes the picture; the key names the colours."""
+    the values written (subdivided too), only at that step; the key names the colours.
+    Review r166 00-6: the range (colours and key) is the interpolation's own; shared with
+    the other one, perspective's key read 0.88, the affine top, over values up to 0.86."""
     fills = {m: make_fill(method, interpolation=m) for m in ("affine", "perspective", "subdivided")}
     view = tp.FillView(fills["perspective"], values=True, attribute="u")
     shown = {}
@@ -748,9 +749,10 @@ def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method)
         assert view.values.get_visible()
         np.testing.assert_array_equal(data, fill.attrs["u"])  # NaN where not covered
         shown[mode] = data
-        assert view.values.get_clim() == pytest.approx(
-            (np.nanmin([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]]),
-             np.nanmax([fills["affine"].attrs["u"], fills["perspective"].attrs["u"]])))  # fmt: skip
+        own = (np.nanmin(fill.attrs["u"]), np.nanmax(fill.attrs["u"]))
+        assert view.values.get_clim() == pytest.approx(own)
+        bar = view.value_bar
+        assert (bar.low.get_text(), bar.high.get_text()) == tuple(f"{v:.2f}" for v in own)
         key = keyed(view)
         # the key names the colours with a colour bar (review r11; two swatches before)
         assert "covered" not in key and view.value_bar.title.get_visible()
@@ -758,6 +760,8 @@ def test_fill_view_colours_the_last_step_by_the_values_the_trace_records(method)
         view.show_step(-2, draw=False)  # before the last step: coverage, as before
         assert not view.values.get_visible() and "covered" in keyed(view)
     assert np.nanmax(np.abs(shown["affine"] - shown["perspective"])) > 0.05
+    # the two keys differ where the two ranges do
+    assert np.nanmax(shown["affine"]) - np.nanmax(shown["perspective"]) > 0.005
     plain = tp.FillView(fills["perspective"])  # values off: the finished fill as coverage
     assert not plain.values.get_visible() and "covered" in keyed(plain)
     plt.close(view.fig)

@@ -518,8 +518,10 @@ class FillView:
         """Put the values the last step writes into ``values``: the trace's record of the
         interpolation in use at the covered centres (read, never recomputed); with several
         samples also the pixels with only a sample covered, whose values a Fill holds
-        (``fill.attrs``; the caption counts them). The colour range spans both
-        interpolations at the centres, so that toggling between them shows the change."""
+        (``fill.attrs``; the caption counts them). The colour range, and the key's bar, are
+        those of the interpolation on show: a range shared with the other one named values
+        this one never reaches (review r166 00-6: 0.88, the affine top, under perspective's
+        0.86); the player's comparison shows both on one range."""
         wanted, attribute = self._values
         names = list(trace.pixel_affine)
         name = attribute if attribute in names else (names[0] if names else None)
@@ -528,10 +530,10 @@ class FillView:
             return
         written = {"affine": trace.pixel_affine, "perspective": trace.pixel_perspective,
                    "subdivided": trace.pixel_subdivided}[trace.interpolation]  # fmt: skip
-        both = [first_channel(v[name]) for v in (trace.pixel_affine, trace.pixel_perspective)]
+        shown = first_channel(written[name])
         local = np.full(trace.bbox.shape, np.nan)
-        local[trace.covered] = first_channel(written[name])  # row-major, as recorded
-        lo, hi = float(min(b.min() for b in both)), float(max(b.max() for b in both))
+        local[trace.covered] = shown  # row-major, as recorded
+        lo, hi = float(shown.min()), float(shown.max())
         data = trace.image(local)
         where = "at the covered centres"
         extra = self._extra

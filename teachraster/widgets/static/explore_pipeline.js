@@ -48,16 +48,17 @@ export function stageHtml(data, key) {
       return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w. Real GPUs clip " +
         "only against the near and far planes (and w &gt; 0), and not even those with depth " +
         "clamp on (GL's GL_DEPTH_CLAMP, GL 4.6 §13.7; Direct3D's DepthClipEnable = FALSE): " +
-        "depth is then clamped to the depth range instead. x and y are clipped only beyond " +
+        "depth is then clamped to the depth range instead. x and y are clipped only far " +
+        "outside ±w, beyond a guard band that keeps every vertex within the range of the " +
+        "GPU's fixed-point rasteriser; the rasteriser's bounding box does the rest. " +
         // both numbers exact (three decimals), from one function (guard_band_reach): the
         // window bound is (G + 1) · size/2 of the G printed, as a reader can check
-        `a guard band, here |x|, |y| ≤ G w with G = ${digits(data.guard, 3)}, so that in the ` +
+        `Here |x|, |y| ≤ G w with G = ${digits(data.guard, 3)}, so that in the ` +
         `window |x|, |y| ≤ (G + 1) · ${Math.max(data.width, data.height)}/2 = ` +
         `${digits(data.guardPx, 3)} px, just inside the ${digits(data.exactPx)} px within ` +
-        "which the integer edge functions of lesson 02 stay exact. G is set per image: " +
-        `this ${data.width} × ${data.height} window's; a larger one gets a smaller G, the same ` +
-        "reach in pixels. The rasteriser's bounding box " +
-        "does the rest. The test, on the clip coordinates (before any divide):</p><table>" +
+        "which the integer edge functions of lesson 02 stay exact. That range is in pixels: " +
+        `for this ${data.width} × ${data.height} window G is large, and a larger one gets a ` +
+        "smaller G. The test, on the clip coordinates (before any divide):</p><table>" +
         row(["", "x", "y", "z", "w", "−w ≤ x, y, z ≤ w?"], true) +
         vertexRows(data, (k) => {
           const c = data.clip[k], w = c[3];
@@ -97,8 +98,13 @@ export function stageHtml(data, key) {
         "(image or buffer stores, atomics: side effects a culled fragment must not lose). A shader that " +
         "writes its own depth needs the late test (unless it declares conservative depth); " +
         "with one that may discard, a GPU may still test early and write the depth late, " +
-        "once the shader has kept the fragment (lessons 05a, 10).</p><p>Key: the darker the grey, the nearer (depth 0 " +
-        "would be near black, depth 1 mid grey); white: no fragment.</p>";
+        "once the shader has kept the fragment (lessons 05a, 10).</p><p>The <b>stencil " +
+        "test</b>, off here, runs just before the depth test (GL 4.6 §17.3): it compares a " +
+        "per-pixel integer, the stencil value, with a reference, and whether a fragment " +
+        "fails it, fails the depth test or passes both may update that value (masks, " +
+        "shadow volumes, and the counting of lesson 11).</p><p>Key: each fragment's depth, " +
+        "the darker the grey, the nearer (depth 0 would be near black, depth 1 light grey); " +
+        "white: no fragment (the buffer keeps its cleared 1 there).</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
         "colour target was cleared to white). That is the final image.</p>";
