@@ -1035,6 +1035,31 @@ def test_readout_in_front_of_the_near_plane_says_clipped():
         assert len(values) == 12 and min(values) >= 0, table  # value, step, count x 4
 
 
+def test_depth_lens_ticks_are_distinct_round_and_show_300():
+    # review r170 05b-8: at z = 300 ± 2.07e-5 the lens' three ticks read "299.9998 ·
+    # 299.9998 · 299.9999" (7 significant digits); round ticks with the decimals their step
+    # needs read apart, and 300 inside the lens shows as itself
+    half = 2.07e-5
+    cases = [(300.0 - 0.6 * half, half), (300.0 + 0.3 * half, half), (100.0, 22.5), (5.0, 0.004)]
+    calls = [("lensTicks", [z0 - h, z0 + h]) for z0, h in cases]
+    calls += [("lensCentre", [z0, 2 * h]) for z0, h in cases]
+    got = call_js(DEPTH, calls)
+    ticks, centres = got[: len(cases)], got[len(cases) :]
+    for (z0, h), t in zip(cases, ticks, strict=True):
+        labels = [x["label"] for x in t]
+        assert 3 <= len(t) <= 5 and len(set(labels)) == len(labels), labels
+        assert all(z0 - h <= x["z"] <= z0 + h for x in t)
+        assert all(float(lab) == pytest.approx(x["z"], abs=1e-9) for lab, x in zip(labels, t))
+    assert "300.00000" in [x["label"] for x in ticks[0]]
+    assert "300.00000" in [x["label"] for x in ticks[1]]
+    assert centres[0] != "300" and float(centres[0]) == pytest.approx(cases[0][0], abs=1e-6)
+    # review r170 05b-9: the step to the smallest denormal at the near plane is flagged
+    at_near, beyond = call_js(DEPTH, [("depthTable", [2.5, 2.5, 1000.0]),
+                                      ("depthTable", [58.5, 2.5, 1000.0])])  # fmt: skip
+    assert at_near.count(" *</td>") == 1 and " *</td>" not in beyond
+    assert "smallest denormal" in at_near and "smallest denormal" not in beyond
+
+
 def test_diamond_explorer_outlines_only_the_pixels_the_line_crosses():
     """Review r83 12a-4: the walk outlined all 5 candidates of every column, rows 0-5 of the
     6-row grid at the start; review r88: one row either side of the line still outlined rows

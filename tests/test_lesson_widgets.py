@@ -281,6 +281,13 @@ def test_depth_explorer_curve_is_the_package_resolution():
         # the reference curve stays where it started
         assert np.allclose(ex.reference.get_ydata()[:3], tr.depth_resolution(
             ex.reference.get_xdata()[:3], 0.1, 1000.0, "unorm16"))  # fmt: skip
+        # review r170 05b-11: "keep as reference" puts the curve on show there, so the
+        # Try-it's before and after are on screen together
+        ex.keep.click()
+        assert np.array_equal(ex.reference.get_ydata(), ex.curve.get_ydata())
+        assert ex.ax.get_legend().get_texts()[0].get_text() == "kept: unorm24, near 1"
+        ex.near.value = 0.1
+        assert ex.reference.get_xdata()[0] >= 1.0 and ex.curve.get_xdata()[0] < 1.0
     finally:
         ex.close()
 
@@ -990,6 +997,8 @@ def test_depth_explorer_key_clears_the_z_label_and_fits_in_the_lesson_style():
             ex = DepthPrecisionExplorer("unorm24", backend="image", style="classroom")
             try:
                 ex.format.value, ex.reverse.value = fmt, reverse
+                ex.near.value = 0.01  # the widest near plane, kept as the reference (r170)
+                ex.keep.click()
                 ex.fig.canvas.draw()
                 renderer = ex.fig.canvas.get_renderer()
                 key = ex.ax.get_legend().get_window_extent(renderer)

@@ -1126,7 +1126,7 @@ def test_05b_fight_distance_is_worked_out_from_one_anchor_not_read_off_a_curve()
     assert "space" not in picture and "depth_resolution(z_" not in ask  # no curve drawn
     # review r38 05b: the curve is drawn after Check, through the answer on the δ line
     assert "reveal_curve=np.column_stack([z_law, dz_at_1 * z_law**2])" in ask
-    assert "answer=(cross16, 0.005)" in ask
+    assert "answer=(cross16, delta)" in ask
     assert "becomes possible" in ask and "not yet likely" in ask
     assert "from which they z-fight" not in ask
     # review r99 05b-1: a Markdown cell two cells below, on screen while the question was
@@ -1138,6 +1138,62 @@ def test_05b_fight_distance_is_worked_out_from_one_anchor_not_read_off_a_curve()
             assert kind == "code" and text.startswith("q_fight.hold()"), text[:80]
     assert any("already fight" in t for t, _ in cells)
     assert ns.first_fight_16 == 10 and ns.predicted["unorm16"][0] < ns.delta  # what it says
+
+
+@pytest.mark.notebook
+def test_05b_try_it_delta_is_read_from_one_place_and_every_printed_number_follows(capsys):
+    """Review r170 05b-1: the summary's "set `delta = 0.05`" changed only the cells after
+    section 3's renders; the question's cell kept 0.005 and section 3 printed "Δz reaches
+    δ = 0.05 at z = 5.72" and "first render depth beyond it: z = 10" (18.1 and 30 are right),
+    and the held text still said unorm16 fights at z = 10. One assignment now, in the
+    question's cell, which the Try-it names; run with 0.05, every number follows."""
+    code = _cells("05b_depth_precision", "code")
+    sets = [i for i, c in enumerate(code) if re.search(r"^(\w+, )?delta\b.*=", c, re.M)]
+    ask = next(i for i, c in enumerate(code) if "q_fight = PredictPoint(" in c)
+    assert sets == [ask] and code[ask].startswith("delta = 0.005")
+    tryit = _cells("05b_depth_precision", "markdown")[-1]
+    assert "`delta = 0.05` (the first line of section 3's question cell" in tryit
+    upto = next(i for i, c in enumerate(code) if "fights_reversed, fights_window = {}, {}" in c)
+    scope = {"display": lambda *a, **k: None}
+    for k, cell in enumerate(code[: upto + 2]):  # to the held text after the reverse-Z counts
+        cell = "\n".join(line for line in cell.splitlines() if not line.startswith("%"))
+        if k == ask:
+            cell = cell.replace("delta = 0.005", "delta = 0.05", 1)
+        exec(cell, scope)  # noqa: S102
+        plt.close("all")
+    printed = capsys.readouterr().out
+    assert "Δz reaches δ = 0.05 at z = 18.10" in printed  # √(0.05 · 100 / 0.015257)
+    assert "the first render depth beyond it: z = 30" in printed
+    assert scope["q_fight"].answer[0] == pytest.approx(18.10, abs=0.01)
+    assert "16 bits, 256 × coarser, already fight from $z = 30$ on" in scope["FIGHT_TEXT"]
+    f = scope["fights"]
+    assert not f["unorm16"][:3].any() and f["unorm16"][3] > 0  # what the text now says
+    assert "(float32 and unorm24 fight at\n$z$ = 300)" in scope["reverse_md"]
+    assert not f["unorm24"][:5].any() and f["unorm24"][5] > 0
+
+
+@pytest.mark.notebook
+def test_05b_reverse_question_asks_a_number_and_the_values_explorer_waits_for_it():
+    """Review r170 05b-3/4: q_reverse's choices ("none / about as many / about half") were one
+    inference from section 2 and the held FIGHT_TEXT; it asks Δz = 10^k at z = 300 now. The
+    DepthValuesExplorer below it showed float32 reverse-Z's steps and counts unheld."""
+    ns = lesson("05b_depth_precision")
+    code = _cells("05b_depth_precision", "code")
+    asked = next(c for c in code if "q_reverse = Predict(" in c)
+    assert "answer=k_rev,\n    whole=True," in asked and "reverse_choices" not in asked
+    assert ns.k_rev == -5
+    dz = float(tr.depth_resolution(300.0, ns.n_, ns.f_, "float32", mapping="reversed"))
+    assert ns.dz_rev_300 == dz and round(np.log10(dz)) == ns.k_rev
+    assert ns.dz_rev_300 < ns.delta / 100 and not ns.fights_reversed["float32"].any()
+    # window depth's Δz there (the tempting answer) is ten to the -1, and its note says why
+    assert round(np.log10(ns.predicted["float32"][-1])) == -1  # the note's key
+    assert 'round(float(np.log10(predicted["float32"][-1]))): "That is Δz with window' in asked
+    values = next(c for c in code if "DepthValuesExplorer(near=n_, far=f_)" in c)
+    assert values.startswith("q_reverse.hold()")
+    md = next(c for c in _cells("05b_depth_precision", "markdown") if "### Where the stored" in c)
+    assert "The table, and the explorer after\nit, show once the question above is checked" in md
+    bias = next(c for c in code if "q_bias = Predict(" in c)
+    assert "whole=True" in bias  # "Type a whole number": 2.5 is not taken
 
 
 def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
@@ -1813,8 +1869,9 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     assert ns.slope_steps.min() > 3 and ns.slope_steps.max() > 1000  # "thousands ... at z = 1"
     code = _cells("05b_depth_precision", "code")
     asked = next(c for c in code if "q_reverse = Predict(" in c)
-    assert "answer=reverse_choices[1]" in asked and "<b>unorm24</b>" in asked
-    assert ns.reverse_choices[1] == "float32: none, or nearly none; unorm24: about as many"
+    # review r170 05b-4: it asks float32's Δz as a number; unorm24's "as before" is explained
+    assert "answer=k_rev" in asked and "<b>float32</b>" in asked
+    assert "unorm24's Δz stays" in asked.split("explain=")[1]
     assert not ns.fights_reversed["float32"].any() and ns.fights_reversed["unorm24"][-1] > 0
     ask = next(i for i, c in enumerate(code) if "q_bias = Predict(" in c)
     printed = "no slope term: the decal loses at"  # the unit counts, printed after it

@@ -157,6 +157,25 @@ def test_headless_notebook_shows_answer_and_figure_without_waiting(monkeypatch):
     assert not any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in outputs)
 
 
+def test_a_whole_number_question_waits_for_a_whole_number():
+    # review r170 05b-6: "Type a whole number" took "2.5", graded wrong with no word on the format
+    q = Predict("How many units?", answer=3, whole=True, headless=False)
+    assert q.control.placeholder == "a whole number"
+    q.control.value = "2.5"
+    assert q.check.disabled and q.check.tooltip == "type a whole number" and q.given is None
+    q.control.value = "3"
+    assert not q.check.disabled and q.check.tooltip == "" and q.given == 3
+    q.check.click()
+    assert q.revealed and q.correct is True
+    q.close()
+    loose = Predict("How far?", answer=3, headless=False)
+    loose.control.value = "2.5"
+    assert not loose.check.disabled and loose.given == 2.5
+    loose.close()
+    with pytest.raises(ValueError, match="numeric"):
+        Predict("Which?", ["a", "b"], answer="a", whole=True)
+
+
 def test_check_waits_for_an_answer():
     q = Predict("How many?", answer=10, tolerance=1, headless=False)
     assert q.check.disabled  # nothing given yet

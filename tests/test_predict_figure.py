@@ -46,6 +46,14 @@ def test_check_is_pressed_once_in_the_page():
     cases = [(False, False), (False, True), (True, True), (True, False)]
     got = call_js(("predict_figure",), [("checkDisabled", list(c)) for c in cases])
     assert got == [True, False, True, True]
+    # review r170 05b-6: the tooltip follows (it said "give your answer first" once enabled)
+    from pathlib import Path
+
+    titles = call_js(("predict_figure",), [("checkTitle", list(c)) for c in cases])
+    assert titles[0] == "give your answer first" and titles[1] == "check your prediction"
+    assert titles[2] == titles[3] == "checked: your prediction is kept"
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    assert js.count("check.disabled = checkDisabled(") == js.count("check.title = checkTitle(") == 4
 
 
 def test_the_picture_maps_pixels_where_the_grid_is():

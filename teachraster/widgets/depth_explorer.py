@@ -7,7 +7,8 @@ chosen format, near plane and mapping (window depth or reverse-Z), with two surf
 same depth and z-fight (:func:`teachraster.pipeline.depth.fights`). Past that crossing a pair
 fights with probability ``1 - delta / resolution`` (the pair shares a step unless a step boundary
 falls between them); a dotted line marks where that reaches one half, ``resolution = 2 delta``.
-A faint reference curve keeps the starting configuration on screen for comparison.
+A faint reference curve keeps the starting configuration on screen for comparison, or the
+one on show when "keep as reference" is pressed.
 """
 
 from __future__ import annotations
@@ -120,6 +121,8 @@ class DepthPrecisionExplorer:
     format : ToggleButtons
     near : LiveSlider
     reverse : Checkbox
+    keep : Button
+        Makes the curve on show the grey reference (:meth:`keep_reference`).
     z : ndarray
         Distances plotted, from ``near`` to ``far``.
     resolution : ndarray
@@ -214,13 +217,31 @@ class DepthPrecisionExplorer:
         )
         # a narrow column (1024 x 768) moves whole controls to a second line; a row that
         # shrank them instead cut the label and wrapped the format's toggles
-        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse],
-                                layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
+        # review r170 05b-11: the Try-it's before and after (unorm16 at near 0.1, then 1)
+        # were never on screen together: the grey reference kept only the start
+        self.keep = widgets.Button(description="keep as reference",
+                                   tooltip="the grey curve becomes the one on show")  # fmt: skip
+        self.keep.on_click(lambda _: self.keep_reference())
+        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse,
+                                 self.keep], layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
         self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
             # drawn while the kernel idles; a draft here is the full picture, so a release
             # on one needs no picture from the kernel (issue 31: 106-126 ms after the release)
             self._ahead = self.display.ahead(self.near, self, full=True)
+
+    def keep_reference(self) -> None:
+        """The grey reference curve becomes the curve on show, its key entry "kept: ..."."""
+        self.reference.set_data(self.z, self.resolution)
+        self._start_near = self.z_near  # the band's words stay left of the grey curve
+        label = f"kept: {self._label()}"
+        self.reference.set_label(label)
+        self.ax.get_legend().get_texts()[0].set_text(label)
+        self._blit.invalidate()  # the reference and the key are cached: drawn anew
+        self._draw()
+        self.display.refresh()
+        if getattr(self, "_ahead", None) is not None:  # pictures drawn ahead show the old one
+            self._ahead.restart()
 
     @property
     def mapping(self) -> str:

@@ -268,6 +268,10 @@ class Predict(HoldsAnswer):
         A line (HTML allowed) the verdict adds for one given answer, keyed by a choice or a
         number: why that answer, reached by a sound route, is not this one (review r118 06-3:
         lesson 02's closed box gives 50 bits where the half-open range gives 49).
+    whole : bool
+        A numeric question that asks for a whole number: Check stays disabled, its tooltip
+        saying so, until the number typed is one (review r170 05b-6: "2.5" was graded wrong
+        with no word about the format).
 
     Attributes
     ----------
@@ -304,8 +308,12 @@ class Predict(HoldsAnswer):
         headless: bool | None = None,
         style: str | None = "classroom",
         notes: Mapping | None = None,
+        whole: bool = False,
     ) -> None:
         self.choices, self.tolerance = _check_arguments(question, choices, answer, tolerance)
+        if whole and self.choices:
+            raise ValueError("whole=True is for a numeric question, not for choices")
+        self.whole = bool(whole)
         self.notes = _check_notes(notes, self.choices)
         if figure is not None and not callable(figure):
             raise TypeError(f"figure must be callable or None, got {type(figure).__name__}")
@@ -325,7 +333,8 @@ class Predict(HoldsAnswer):
             )
         else:
             self.control = widgets.Text(
-                placeholder="your number", layout=widgets.Layout(width="12em")
+                placeholder="a whole number" if self.whole else "your number",
+                layout=widgets.Layout(width="12em"),
             )
         # Check waits for an answer: a prediction revealed without one is no prediction. Grey
         # until then, as the figure predictions' Check (review r57, 07-4: a disabled "primary"
@@ -347,7 +356,13 @@ class Predict(HoldsAnswer):
             return
         self.check.disabled = self.given is None
         self.check.button_style = "" if self.given is None else "primary"
-        self.check.tooltip = "" if self.given is not None else "give your answer first"
+        self.check.tooltip = "" if self.given is not None else self._missing()
+
+    def _missing(self) -> str:
+        """Check's tooltip while no valid answer is given."""
+        if self.whole and not self.choices and parse_number(self.control.value) is not None:
+            return "type a whole number"
+        return "give your answer first"
 
     def _checked(self) -> None:
         """The Check button: reveal, but only once an answer is given and only once (a click
@@ -372,7 +387,10 @@ class Predict(HoldsAnswer):
         value = self._kept if self.revealed else self.control.value
         if self.choices:
             return value
-        return parse_number(value)
+        number = parse_number(value)
+        if number is not None and self.whole and number != round(number):
+            return None
+        return number
 
     @property
     def correct(self) -> bool | None:

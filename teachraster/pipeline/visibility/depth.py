@@ -6,8 +6,9 @@ is stored matters as much as how many bits store it:
 
 - **view distance** ``z`` (> 0 in front of the eye) is what the seed's pseudo-code compares, but
   it is *not* affine in screen space (Ritschel, *Interpolation and z-buffering*: interpolate 1/z, not z), so GPUs do not store it;
-- Ritschel's *Interpolation and z-buffering* ``z' = n + f - f n / z`` (:func:`seed_depth`) is affine in ``1/z`` and therefore
-  affine in screen space, maps ``near -> near`` and ``far -> far`` and keeps the depth order;
+- the CS148 rasterisation notes' ``z' = n + f - f n / z`` (*Overlapping Triangles* and *Depth*;
+  :func:`seed_depth`) is affine in ``1/z`` and therefore affine in screen space, maps
+  ``near -> near`` and ``far -> far`` and keeps the depth order;
 - the **window depth** of OpenGL, :func:`window_depth`, is the same hyperbola rescaled to
   [0, 1]: ``(z' - n) / (f - n) = (f / (f - n)) (1 - n / z)``. This is what CONVENTIONS' ``z_win``
   holds and what a real depth buffer stores;
@@ -127,10 +128,13 @@ def window_depth(z_view, near: float, far: float) -> np.ndarray:
 
 
 def seed_depth(z, near: float, far: float) -> np.ndarray:
-    """Ritschel's (*Interpolation and z-buffering*) ``z' = n + f - f n / z``: the perspective depth in view-distance units.
+    """The CS148 notes' ``z' = n + f - f n / z``: the perspective depth in view-distance units.
 
-    ``z'`` is affine in ``1/z``, so it may be interpolated affinely in screen space (Ritschel, *Interpolation and z-buffering*,
-    eq. 12), unlike ``z`` itself; it maps near to near and far to far and preserves order.
+    The formula is the CS148 rasterisation notes' (*Overlapping Triangles*: "the screen space
+    projection computes z' = n + f - (fn/z)"; *Depth*: its inverse per vertex). ``z'`` is
+    affine in ``1/z``, so it may be interpolated affinely in screen space (Ritschel,
+    *Interpolation and z-buffering*, eq. 12: what is affine on the screen is ``1/z``), unlike
+    ``z`` itself; it maps near to near and far to far and preserves order.
 
     Parameters
     ----------

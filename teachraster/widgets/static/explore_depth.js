@@ -362,7 +362,7 @@ function drawLens(ctx, g, W, z0, width, n, far) {
   const xOf = (z) => g.left + ((z - za) / (zb - za)) * pw;
   ctx.fillStyle = "#111";
   ctx.font = "bold 14px sans-serif";
-  ctx.fillText(`lens: z = ${fmt(z0, 6)} ± ${fmt(width / 2, 3)} (linear)`, g.left, g.lensTop - 10);
+  ctx.fillText(`lens: z = ${lensCentre(z0, width)} ± ${fmt(width / 2, 3)} (linear)`, g.left, g.lensTop - 10);
   FORMATS.forEach(([f, name], k) => {
     const y = g.lensTop + k * (g.lensRow + 4);
     ctx.strokeStyle = "#999";
@@ -392,13 +392,49 @@ function drawLens(ctx, g, W, z0, width, n, far) {
   });
   const y = g.lensTop + 4 * (g.lensRow + 4) + 14;
   ctx.fillStyle = "#111";
+  ctx.strokeStyle = "#555";
   ctx.font = "14px sans-serif";
-  ctx.textAlign = "center";
-  [za, z0, zb].forEach((t, k) => {
-    ctx.textAlign = ["left", "center", "right"][k];  // the ends stay inside the canvas
-    ctx.fillText(fmt(t, 7), xOf(t), y);
-  });
+  for (const t of lensTicks(za, zb)) {
+    const x = Math.round(xOf(t.z)) + 0.5;
+    strokeLine(ctx, [x, y - 16], [x, y - 11], "#555", 1);
+    // the ends stay inside the canvas
+    ctx.textAlign = x < g.left + 40 ? "left" : x > g.left + pw - 40 ? "right" : "center";
+    ctx.fillText(t.label, x, y);
+  }
   ctx.textAlign = "left";
+}
+
+// round ticks for the lens' linear axis [za, zb]: steps of 1, 2 or 5 times a power of ten,
+// 3 to 5 of them, each written with the decimals its step needs, so that no two read alike
+// and a round z inside the lens (300) shows as itself (review r170 05b-8: "299.9998 ·
+// 299.9998 · 299.9999" at z = 300 ± 2.07e-5)
+export function lensTicks(za, zb) {
+  const lo = Math.max(za, 0);
+  const top = Math.floor(Math.log10(zb - lo));
+  for (let e = top; e >= top - 3; e--) {
+    for (const m of [5, 2, 1]) {
+      const step = m * 10 ** e;
+      const first = Math.ceil(lo / step);
+      const last = Math.floor(zb / step);
+      if (last - first < 2) continue;  // fewer than 3: a finer step
+      const decimals = Math.max(0, -e);
+      const every = last - first > 5 ? 2 : 1;  // at most 6 labels across the lens
+      const ticks = [];
+      for (let k = first; k <= last; k++) {
+        if (k % every === 0) ticks.push({ z: k * step, label: (k * step).toFixed(decimals) });
+      }
+      return ticks;
+    }
+  }
+  return [];
+}
+
+// the lens' centre, written with as many decimals as its ticks (the title said "z = 300" for
+// a lens on 299.99985)
+export function lensCentre(z0, width) {
+  const step = lensTicks(z0 - width / 2, z0 + width / 2);
+  const decimals = step.length ? (step[0].label.split(".")[1] || "").length : 0;
+  return z0.toFixed(Math.min(decimals + 1, 12));
 }
 
 // per buffer: the value stored for z, one step there (in z) and the values beyond z; nothing
@@ -409,6 +445,7 @@ export function depthTable(z, n, f) {
     return `At z = ${fmt(z, 6)} (near ${fmt(n, 3)}, far ${fmt(f, 4)}): in front of the ` +
       "near plane. A fragment there is clipped: no depth buffer stores a value for it.";
   }
+  let zeroStep = false;
   const rows = FORMATS.map(([fmtName, name]) => {
     const nb = neighbours(z, n, f, fmtName);
     // at the near plane float32 stores 0 and its neighbour is the smallest denormal, 2^-149:
@@ -418,10 +455,18 @@ export function depthTable(z, n, f) {
     // [z, far) and the value at far itself
     const beyond = countBetween(Math.max(z, n), f, n, f, fmtName) + 1;
     const all = countBetween(n, f, n, f, fmtName) + 1;
-    return `<tr><td>${name}</td><td>${nb.value.toPrecision(9)}</td><td>${fmt(step, 3)}</td>` +
-      `<td>${beyond.toLocaleString()} of ${all.toLocaleString()} (${(100 * beyond / all).toPrecision(3)} %)</td></tr>`;
+    if (denormal) zeroStep = true;
+    return `<tr><td>${name}</td><td>${nb.value.toPrecision(9)}</td><td>${fmt(step, 3)}` +
+      `${denormal ? " *" : ""}</td><td>${beyond.toLocaleString()} of ${all.toLocaleString()} ` +
+      `(${(100 * beyond / all).toPrecision(3)} %)</td></tr>`;
   });
+  // review r170 05b-9: the step to the smallest denormal is a property of an exact 0, not
+  // float32's resolution at the near plane, which a student would otherwise quote
+  const note = zeroStep ? "<div>* At the near plane float32 stores exactly 0, and the next " +
+    "float up is the smallest denormal, 2<sup>−149</sup>: a step only an exact 0 has. Just " +
+    "beyond the near plane float32's step is relative, about 2<sup>−24</sup> of the stored " +
+    "value (move the pointer right to see it grow).</div>" : "";
   return `At z = ${fmt(z, 6)} (near ${fmt(n, 3)}, far ${fmt(f, 4)}):<table><tr><th>buffer</th>` +
     "<th>stored value</th><th>one step in z</th><th>values for distances beyond z</th></tr>" +
-    `${rows.join("")}</table>`;
+    `${rows.join("")}</table>${note}`;
 }

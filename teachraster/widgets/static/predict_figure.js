@@ -28,6 +28,13 @@ export function checkDisabled(revealed, answered) {
   return Boolean(revealed) || !answered;
 }
 
+// Check's tooltip, kept with its state (review r170 05b-6: it still read "give your answer
+// first" once an answer was given and Check enabled)
+export function checkTitle(revealed, answered) {
+  if (revealed) return "checked: your prediction is kept";
+  return answered ? "check your prediction" : "give your answer first";
+}
+
 export function pixelVerdict(answer, given, width) {
   const key = ([r, c]) => r * width + c;
   const truth = new Set(answer.map(key));
@@ -312,6 +319,7 @@ function mountPixels(root, data, host) {
       }
     }
     check.disabled = checkDisabled(state.revealed, state.given.length > 0);
+    check.title = checkTitle(state.revealed, state.given.length > 0);
   }
   const paint = painter(canvas, draw);
 
@@ -475,6 +483,7 @@ function mountPoint(root, data, host) {
       ctx.textAlign = "left";
     }
     check.disabled = checkDisabled(state.revealed, state.given !== null);
+    check.title = checkTitle(state.revealed, state.given !== null);
   }
   const paint = painter(canvas, draw);
   function reveal(byClick) {
@@ -566,6 +575,7 @@ function mountOrder(root, data, host) {
       chips.append(chip);
     });
     check.disabled = checkDisabled(state.revealed, state.acted);
+    check.title = checkTitle(state.revealed, state.acted);
   }
   function move(from, to) {
     // A touch that moves nothing (a click on a chip, a drop where it was, an arrow key at
@@ -640,6 +650,7 @@ function mountChoice(root, data, host) {
       b.classList.toggle("wrong", Boolean(known) && c === state.given && c !== known.answer);
     });
     check.disabled = checkDisabled(state.revealed, state.given !== null);
+    check.title = checkTitle(state.revealed, state.given !== null);
   }
   function reveal(byClick) {
     if (state.given === null) return;
