@@ -5,11 +5,10 @@ subdivided interpolation is slower than the exact divide at every N (the same ar
 on its anchors, and more); incremental edge evaluation is slower than direct in every
 arithmetic (a cumulative sum besides the products). It also says that affine, which saves a
 few passes of many, is faster than perspective-correct but takes most of its time, nowhere near
-the cycle model's 2/39 (review r60 06-2: runs gave 0.77 to 0.86), and that the same per-pass
-reading explains
-the fill times in its appendix tables: a textured fill's time is mostly its uv interpolation, coverage
-a small part, and the two fills' coverages differ by far less than their operation counts (20x
-or more). Times are CPU time of this process, the
+the cycle model's 2/39 (review r60 06-2: runs gave 0.77 to 0.86). The same per-pass reading
+explains the fill times the lesson does not show (its §4 prices the fills in operations only):
+a textured fill's time is mostly its uv interpolation, coverage a small part, and the two
+fills' coverages differ by far less than their operation counts (20x or more). Times are CPU time of this process, the
 fastest of interleaved rounds: waiting for a core is not counted (reviews r17 06-1..3, r20
 06-1..4; the lesson's study is timed the same way, ``bench.run(clock=time.process_time)``).
 Speed is a benchmark's business, not a test's: the suite only runs this script's smoke run
@@ -17,7 +16,7 @@ Speed is a benchmark's business, not a test's: the suite only runs this script's
 signs as facts: it prints its own run's verdict on each of the three it reads, in the words of
 the claims below ("subdivided slower than the exact divide at every N: True", "affine faster
 than perspective-correct, but above half its time: True", "incremental edges slower than direct
-in every arithmetic: True"), and its text says that those lines say whether (review r80 D3);
+in every arithmetic: True"), and its text says when each prints True (reviews r80 D3, r152 10);
 this script measures the same signs over more rounds.
 
     python benchmarks/bench_lesson06_signs.py            # 9 rounds at the lesson's 256 px

@@ -303,8 +303,9 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert "ROUNDS = 5" in code  # "five" in the text
     # 06-2, 06-3: the stable signs, not "not reliably" / "whatever this run measured"
     assert "not reliably" not in md and "whatever this run measured" not in md
-    # r80 D3: the text states no sign of a time; the lesson prints each verdict of this run
-    # ("the line ... says whether"), in the words of bench_lesson06_signs.py's claims
+    # r80 D3: the text states no sign of a time; the lesson prints each verdict of this run,
+    # in the words of bench_lesson06_signs.py's claims; r152 06-10: the text says when each
+    # line prints True (not "the line ... says whether", a sentence written for True)
     assert "In numpy stepping is the *slower* one" not in md
     assert "subdivision is *slower* than the exact divide" not in md
     for verdict in ("subdivided slower than the exact divide at every N",
@@ -315,7 +316,7 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert ns.subdivided_slower == all(v > 1 for v in ns.time_ratio.values())
     assert ns.incremental_slower == all(v > 1 for v in ns.incremental_ratio.values())
     assert ns.affine_above_half == (0.5 < ns.affine_time < 1)
-    assert md.count("says whether") >= 3
+    assert "says whether" not in md and md.count("prints True when") == 3
     assert "coverage included" in md
     # affine "times nowhere near the model's twentieth of perspective-correct" (its time's
     # side of 1 is not claimed: near 1, r20 06 run D printed 1.12; the bench measures "nowhere near")
@@ -702,7 +703,7 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     # W-buffer in it), no Markdown announcing it
     assert "def walk(" not in "".join(cells) and "PAIR_TEXT" not in "".join(cells)
     assert not any(c.startswith("The next cell draws one") for c in cells)
-    assert "W-buffer" in ns.CROSSING_TEXT and "W-buffer" not in ns.HELD_DEPTH_TEXT
+    assert "W-buffer" in ns.CROSSING_TEXT and "HELD_DEPTH_TEXT" not in "".join(cells)  # r152 15
     # review r53 06-2/06-3: one chart in §6; the walk only where the front has several points
     assert "interpolation's chart is the slider's widget" in md
     assert list(ns.fronts) == ["interpolation"] and len(ns.fronts["interpolation"]) > 1
@@ -3072,7 +3073,15 @@ def test_06_r113_fill_table_prints_no_bits_as_not_applicable():
         for o in c.outputs
         if o.output_type == "stream"
     )
-    assert "none kept" not in printed and "bits: n/a" in printed
+    # r152 06-6: the tables are HTML now, readable on a projector; the note under the fill's
+    tables = "".join(
+        "".join(o.get("data", {}).get("text/html", ""))
+        for c in executed("06_what_accuracy_costs").notebook().cells
+        if c.cell_type == "code"
+        for o in c.outputs
+        if o.output_type == "display_data"
+    )
+    assert "none kept" not in printed + tables and "bits: n/a" in tables
 
 
 def test_r112_r110_wording():
@@ -3115,3 +3124,62 @@ def test_09_r110_try_it_fine_derivatives_part_only_on_a_rolled_floor():
     assert largest[0] < 0.01 and largest[20] > 0.2
     text = (ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text()
     assert "rotate((0, 0, 1), 20)" in text and "barely differ" in text
+
+
+def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
+    """Review r152 06-6: the four tables were 13-px monospace under 25-45 lines of visible
+    code: HTML at classroom size now, their code folded; 06-4: the traced fills' rows repeated
+    the untraced ones; 06-7: window float64, which no GPU stores, ended the depth front: it is
+    the chart's reference line; 06-9: the explorer's attribute slider shows the conclusion
+    (k = 16: N = 2 off the front up to 31 cycles), and the held headline sends the student
+    there; 06-12: q_price's placeholder line is a sentence; 06-15: §3 and §5 cut."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study.bench.tables import TABLE_FONT_PX
+    from teachraster.widgets.divide_cost import DivideCostExplorer
+
+    assert TABLE_FONT_PX >= 20
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    run = executed("06_what_accuracy_costs").notebook().cells
+    tabled = [i for i, c in enumerate(cells) if " = table(" in c]
+    assert len(tabled) == 4
+    for i in tabled:
+        assert "html=True" in cells[i] and nb["cells"][i]["metadata"]["jupyter"]["source_hidden"]
+        shown = ["".join(o.get("data", {}).get("text/html", "")) for o in run[i].outputs]
+        assert sum(f"font-size:{TABLE_FONT_PX}px" in h and "<table" in h for h in shown) == 1
+    assert [r["variant"] for r in ns.fill] == ["halfplane 256²", "span 256²", "halfplane 512²",
+                                               "span 512²"]  # fmt: skip
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    assert "['window unorm16', 'window float32 = window unorm24']" in printed
+    assert ns.reference["variant"] == "window float64" and ns.reference["error"] == 0
+    assert "window float64 (the reference)" in " ".join(t.get_text() for t in ns.ax.texts)
+    # the slider the conclusion rests on: 16 attributes, N = 2 off the front up to 2k - 1
+    front = " ".join(ns.FRONT_TEXT.split())
+    assert "**attributes** to 16" in front and "every price up to 31 cycles" in front
+    assert ns.d2_gpu == 31
+    ex = DivideCostExplorer(ns.interp_rows, backend="image")
+    try:
+        ex.attributes.value = ns.GPU_ATTRIBUTES
+        for d in (12.0, 30.0):
+            ex.divide.value = d
+            assert "subdivided N=2" not in ex.front and "up to 31 cycles" in ex.info.value
+        ex.divide.value = 40.0
+        assert "subdivided N=2" in ex.front
+    finally:
+        ex.close()
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    assert "**attributes k**" in md and "What the bits mean for a GPU" not in md
+    assert "In the figure, white squares are gaps" not in md
+    assert next(c for c in cells if "q_price = PredictOrder(" in c).startswith("# q_price: ")
+    # 06-13: Ek's early exit priced, held with q_fill's answer: the centres passing all three
+    # tests are the covered ones; it saves sign tests only, and the ratio stays near 6
+    assert int((~ns.outside).all(axis=1).sum()) == ns.covered256
+    assert ns.sign_tests + ns.exit_saved == 3 * ns.box256.size and ns.exit_saved > 0
+    assert 5.5 < ns.early_ratio < ns.fill_ratio["256²"]
+    assert f"falls only to {ns.early_ratio:.1f}" in ns.FILL_TEXT
+    assert "an addition and a subtraction" in ns.FILL_TEXT  # 06-2: the carry, in the text

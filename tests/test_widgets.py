@@ -1559,3 +1559,44 @@ def test_editor_without_comparison_shows_no_w_sliders_and_keeps_v2_label_inside(
         assert e.view.split.flat_top.get_zorder() > ax_z and e.view.split.flat_top.get_hatch()
     finally:
         e.close()
+
+
+def test_divide_cost_attribute_slider_moves_where_n2_leaves_the_front():
+    """Review r152 06-9: the explorer showed only u and v (k = 2), where N = 2 leaves the front
+    only for a divide of at most 3 cycles; the lesson's conclusion (GPUs never subdivide:
+    16 or more attributes share the one reciprocal) happened off the chart. An attribute
+    slider re-prices every variant for k attributes, and the headline says up to which divide
+    N = 2 is no cheaper than the exact divide: 2k - 1 cycles in the lesson's model."""
+    from teachraster.study import operation_counts as ops
+    from teachraster.widgets.divide_cost import ATTRIBUTE_COUNTS, DivideCostExplorer
+
+    errors = {"affine": 209.5, "perspective": 1e-13, "subdivided N=2": 5.76,
+              "subdivided N=4": 14.6, "subdivided N=16": 51.0}  # fmt: skip
+    rows = ops.with_counts([{"group": "interpolation", "variant": v, "error": e,
+                             "mean_abs_texels": e / 100} for v, e in errors.items()])  # fmt: skip
+    ex = DivideCostExplorer(rows, backend="image")
+    try:
+        assert ex.attributes.value == 2 and {1, 2, 16, 32} <= set(ATTRIBUTE_COUNTS)
+        assert ex.attributes in ex.widget.children[1].children  # on the controls' row
+        assert "up to 3 cycles" in ex.info.value  # d + 9 against 2 + (d + 17)/2
+        ex.divide.value = 4.0
+        assert "subdivided N=2" in ex.front
+        xlim2 = ex.ax.get_xlim()
+        ex.attributes.value = 16  # q_price's GPU: 16 attributes, a divide of 12 cycles
+        ex.divide.value = 12.0
+        assert "<b>16 attributes" in ex.info.value and "up to 31 cycles" in ex.info.value
+        cost = {p: ex.art.points[p].get_xdata()[0] for p in ex.art.points}
+        assert cost["perspective"] == 77.0 and cost["subdivided N=2"] == 86.5  # d + 4k + 1
+        assert ex.front == ["affine", "subdivided N=16", "subdivided N=4", "perspective"]
+        ex.divide.value = 30.0
+        assert "subdivided N=2" not in ex.front
+        ex.divide.value = 40.0  # past 2k - 1: N = 2 cheaper again, and more accurate than N=4
+        assert "subdivided N=2" in ex.front
+        lo, hi = ex.ax.get_xlim()  # a new axis for the dearer variants, every point inside it
+        assert hi > xlim2[1] and lo < min(cost.values()) and max(cost.values()) < hi
+        ex.attributes.value = 2
+        assert ex.ax.get_xlim() == xlim2 and "up to 3 cycles" in ex.info.value
+    finally:
+        ex.close()
+    with pytest.raises(ValueError, match="attributes"):
+        DivideCostExplorer(rows, attributes=5, backend="image")

@@ -5,7 +5,11 @@ interpolation (Quake's) divides every N pixels and is affine in between; affine 
 Which of them is worth its cost depends on what a divide costs against a multiply and an
 addition: tens of cycles on an early-1990s FPU, about as much as a few multiplies on a GPU.
 The slider sets that price; the chart re-prices every variant from its operation counts
-(:mod:`teachraster.study.operation_counts`) and redraws the Pareto front.
+(:mod:`teachraster.study.operation_counts`) and redraws the Pareto front. A second slider sets
+the number of attributes interpolated per pixel: they share the one reciprocal of 1/w, while
+subdivision's per-anchor work grows with each of them, so that at a GPU's 16 or more
+attributes N = 2 costs more than the exact divide at every price up to 2k - 1 cycles (the
+lesson's conclusion, on the chart). The errors stay the study's, measured on u and v.
 """
 
 from __future__ import annotations
@@ -20,7 +24,7 @@ from matplotlib.transforms import Bbox
 
 from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
-from ..study.operation_counts import CYCLES_1990S
+from ..study.operation_counts import ATTRIBUTES, CYCLES_1990S, interpolation_count
 from .ahead import PicturesAhead, show_kept
 from .common import (
     Shown,
@@ -44,6 +48,10 @@ ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
 #: holding the prices the lesson prints (1, 2, 9, and the 1990s model's 30). A starting price
 #: not among them is added, so the slider starts exactly where the lesson's model is.
 DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 9, 12, 16, 20, 24, 30, 40, 48, 64, 80, 96, 128)
+
+#: The attribute counts offered, 1 to 32: the study's u and v (2), and a GPU's 16 and more
+#: (Fatahalian, CMU 15-462 *Texture*: up to 128 scalar attributes per triangle).
+ATTRIBUTE_COUNTS = (1, 2, 3, 4, 6, 8, 12, 16, 24, 32)
 
 
 def divide_positions(divide: float) -> list[float]:
@@ -79,13 +87,55 @@ def short_name(variant: str) -> str:
     return variant.replace("subdivided ", "")
 
 
-def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0) -> list[dict]:
-    """Copies of ``rows`` with ``cycles`` recomputed from their operation counts."""
+def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0,
+           attributes: int = ATTRIBUTES) -> list[dict]:  # fmt: skip
+    """Copies of ``rows`` with ``cycles`` recomputed from their operation counts.
+
+    Parameters
+    ----------
+    rows : list of dict
+        Interpolation rows with the operation counts of ``ATTRIBUTES`` (u and v).
+    divide, multiply, addition : float
+        Cycles per operation.
+    attributes : int
+        Attributes interpolated per pixel: each row's counts change by what
+        :func:`~teachraster.study.operation_counts.interpolation_count` adds or removes for
+        them (none at u and v), the reciprocal shared by all.
+
+    >>> rows = [{"variant": "perspective", "divides": 1.0, "multiplies": 2.0, "additions": 3.0}]
+    >>> [priced(rows, 12, attributes=k)[0]["cycles"] for k in (2, 16)]  # d + 4k + 1
+    [21.0, 77.0]
+    """
     out = []
     for r in rows:
-        c = r["divides"] * divide + r["multiplies"] * multiply + r["additions"] * addition
-        out.append({**r, "cycles": float(c)})
+        ops = [r["divides"], r["multiplies"], r["additions"]]
+        if attributes != ATTRIBUTES:
+            now, then = (interpolation_count(r["variant"], k) for k in (attributes, ATTRIBUTES))
+            ops = [o + getattr(now, n) - getattr(then, n)
+                   for o, n in zip(ops, ("divides", "multiplies", "additions"))]  # fmt: skip
+        c = ops[0] * divide + ops[1] * multiply + ops[2] * addition
+        out.append({**r, "divides": ops[0], "multiplies": ops[1], "additions": ops[2],
+                    "cycles": float(c)})  # fmt: skip
     return out
+
+
+def n2_limit(rows, attributes: int = ATTRIBUTES) -> float:
+    """The dearest divide, in cycles, at which subdivision by N = 2 costs at least as much as
+    perspective-correct for ``attributes`` attributes: ``2k - 1`` in the lesson's model (a
+    multiply 3 cycles, an addition 1). Both costs are straight lines in the divide's price,
+    perspective-correct's of slope 1 and N = 2's of slope 1/2: they meet once.
+
+    >>> rows = [{"variant": "perspective", "divides": 1.0, "multiplies": 2.0, "additions": 3.0},
+    ...         {"variant": "subdivided N=2", "divides": 0.5, "multiplies": 2.0,
+    ...          "additions": 4.5}]
+    >>> [n2_limit(rows, k) for k in (2, 16)]
+    [3.0, 31.0]
+    """
+    at0, at1 = ({r["variant"]: r["cycles"] for r in priced(rows, d, attributes=attributes)}
+                for d in (0.0, 1.0))  # fmt: skip
+    slope = {v: at1[v] - at0[v] for v in ("perspective", "subdivided N=2")}
+    gap = at0["subdivided N=2"] - at0["perspective"]  # N = 2's extra cost at a free divide
+    return gap / (slope["perspective"] - slope["subdivided N=2"])
 
 
 def error_locator(low: float, high: float, floor: float, most: int = MOST_ERROR_LABELS):
@@ -117,6 +167,9 @@ class DivideCostExplorer(Shown):
         a multiply 3: :data:`~teachraster.study.operation_counts.CYCLES_1990S`, 30); the slider
         starts there exactly.
     error : {"max error", "mean error"}
+    attributes : int
+        Starting number of attributes interpolated per pixel (one of
+        :data:`ATTRIBUTE_COUNTS`); 2, the study's u and v, by default.
     backend : {"auto", "ipympl", "image"}
     style : str, optional
 
@@ -125,6 +178,8 @@ class DivideCostExplorer(Shown):
     divide : ipywidgets.SelectionSlider
         Over :func:`divide_positions` (:data:`DIVIDE_CYCLES` and the starting price).
     error : ipywidgets.ToggleButtons
+    attributes : ipywidgets.SelectionSlider
+        Over :data:`ATTRIBUTE_COUNTS`.
     front : list of str
         The variants on the front, cheapest first, for the current settings.
     widget : ipywidgets.VBox
@@ -134,8 +189,8 @@ class DivideCostExplorer(Shown):
     _offline_sweep_ = "divide"
 
     def __init__(self, rows, divide: float = CYCLES_1990S["divides"], *,
-                 error: str = "max error", backend: str = "auto",
-                 style: str | None = None) -> None:  # fmt: skip
+                 error: str = "max error", attributes: int = ATTRIBUTES,
+                 backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.rows = [r for r in rows if r.get("group", "interpolation") == "interpolation"]
         if not self.rows:
             raise ValueError("rows must hold the study's interpolation rows")
@@ -150,13 +205,13 @@ class DivideCostExplorer(Shown):
             description="divide =", style={"description_width": "initial"},
             layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
+        if attributes not in ATTRIBUTE_COUNTS:
+            raise ValueError(f"attributes must be one of {ATTRIBUTE_COUNTS}, got {attributes!r}")
+        self.attributes = widgets.SelectionSlider(
+            options=[(str(k), k) for k in ATTRIBUTE_COUNTS], value=attributes,
+            description="attributes k =", style={"description_width": "initial"},
+            layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
         self._style = style
-        #: the cost axis' limits, one range for every price on the slider (:func:`cost_axis`
-        #: over the cheapest and the dearest price's costs): refitted at each price, the axis
-        #: moved with the points and the slider mostly relabelled its ticks (review r41 06-5);
-        #: the layout keeps room on the right for a tick label at the axis' end (:meth:`_lay_out`)
-        ends = [p for _, p in self.divide.options][:: len(self.divide.options) - 1]
-        self.xlim = cost_axis([r["cycles"] for d in ends for r in priced(self.rows, d)])
         with style_context(style):
             self._new_figure()
             self._plot()
@@ -170,6 +225,7 @@ class DivideCostExplorer(Shown):
         self._ahead = PicturesAhead(self._draw_elsewhere) if self.backend == "image" else None
         self._stale = False
         self.divide.observe(lambda change: self.update(), "value")
+        self.attributes.observe(lambda change: self.update(replot=True), "value")
         self.error.observe(lambda change: self.update(replot=True), "value")
         title = title_html(
             "What a divide costs decides the price of exactness",
@@ -179,8 +235,19 @@ class DivideCostExplorer(Shown):
             "ties a front point on cost and is less accurate, or on accuracy and costs more), "
             "as in the lesson's depth chart.",
         )
-        controls = control_row([self.divide, labelled("error", self.error)])
+        controls = control_row([self.divide, self.attributes, labelled("error", self.error)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+
+    def _cost_axis(self, attributes: int) -> tuple[float, float]:
+        """The cost axis' limits at ``attributes``: one range for every price on the slider
+        (:func:`cost_axis` over the cheapest and the dearest price's costs). Refitted at each
+        price, the axis moved with the points and the slider mostly relabelled its ticks
+        (review r41 06-5); one range for every attribute count too left the u-and-v chart in
+        the left half of it. The layout keeps room on the right for a tick label at the axis'
+        end (:meth:`_lay_out`)."""
+        ends = [p for _, p in self.divide.options][:: len(self.divide.options) - 1]
+        return cost_axis([r["cycles"] for d in ends
+                          for r in priced(self.rows, d, attributes=attributes)])  # fmt: skip
 
     def close(self) -> None:
         """Close the figure and every widget of the box."""
@@ -201,11 +268,12 @@ class DivideCostExplorer(Shown):
         if other is None:
             other = self._elsewhere = object.__new__(DivideCostExplorer)
             other.rows, other.backend, other._places = self.rows, "image", self._places
-            other.xlim = self.xlim
-            other.divide, other.error = SimpleNamespace(value=None), SimpleNamespace(value=None)
+            other._cost_axis = self._cost_axis
+            other.divide, other.error, other.attributes = (SimpleNamespace(value=None)
+                                                           for _ in range(3))  # fmt: skip
             with style_context(self._style):
                 other._new_figure()
-        other.divide.value, other.error.value = key
+        other.divide.value, other.error.value, other.attributes.value = key
         with style_context(self._style):
             other._plot()
             other._lay_out()
@@ -217,13 +285,14 @@ class DivideCostExplorer(Shown):
         return ERRORS[self.error.value]
 
     def _plot(self) -> None:
+        self.xlim = self._cost_axis(self.attributes.value)  # a new attribute count: a new axis
         # the previous measure's artists removed, not the axes cleared: a cleared log axis
         # makes each of its tick marks anew at the next draw (about 60 % of a toggle)
         for artist in getattr(self, "_drawn", ()):
             artist.remove()
         before = set(self.ax.get_children())
         self.art = plot_pareto(
-            self.ax, priced(self.rows, self.divide.value), "cycles", y=self._ykey,
+            self.ax, self._priced(), "cycles", y=self._ykey,
             xlabel="cycles per pixel (op-count model)", ylabel=f"{self.error.value} (texels)",
             short=short_name, xlim=self.xlim, hollow_on_line=True,
         )  # fmt: skip
@@ -258,7 +327,7 @@ class DivideCostExplorer(Shown):
     def update(self, replot: bool = False) -> None:
         """Re-price the variants and redraw (the same artists unless the error measure changed;
         a picture drawn ahead for this price and measure: shown at once)."""
-        key = (self.divide.value, self.error.value)
+        key = (self.divide.value, self.error.value, self.attributes.value)
         kept = None if self._ahead is None else self._ahead.take(key)
         if kept is not None:
             show_kept(self, kept)
@@ -270,7 +339,7 @@ class DivideCostExplorer(Shown):
                     self._lay_out()
                 self._stale = False
             else:
-                rows = priced(self.rows, self.divide.value)
+                rows = self._priced()
                 self.front = [r["variant"] for r in update_pareto(self.ax, self.art, rows,
                                                                    "cycles", y=self._ykey)]  # fmt: skip
             self.info.value = self._info_html()
@@ -283,13 +352,18 @@ class DivideCostExplorer(Shown):
             prices = [v for _, v in self.divide.options]
             i = prices.index(key[0])
             near = [prices[j] for j in (i + 1, i - 1) if 0 <= j < len(prices)]
-            self._ahead.want([(key[0], e) for e in ERRORS if e != key[1]]
-                             + [(p, key[1]) for p in near])  # fmt: skip
+            self._ahead.want([(key[0], e, key[2]) for e in ERRORS if e != key[1]]
+                             + [(p, key[1], key[2]) for p in near])  # fmt: skip
+
+    def _priced(self) -> list[dict]:
+        """The rows priced at the sliders' divide and attribute count."""
+        return priced(self.rows, self.divide.value, attributes=self.attributes.value)
 
     def _info_html(self) -> str:
-        """What the slider changes: the divide's share of the exact divide's cost, and what
-        Quake's subdivision (N = 16) still saves at this price."""
-        rows = {r["variant"]: r for r in priced(self.rows, self.divide.value)}
+        """What the sliders change: the divide's share of the exact divide's cost, what
+        Quake's subdivision (N = 16) still saves at this price, and (the headline) up to
+        which price N = 2 is no cheaper than the exact divide with this many attributes."""
+        rows = {r["variant"]: r for r in self._priced()}
         names = " → ".join(short_name(v) for v in self.front)
         exact = rows["perspective"]["cycles"]
         ratio = exact / rows["affine"]["cycles"]
@@ -300,7 +374,14 @@ class DivideCostExplorer(Shown):
             saving = (f"; Quake's N=16 costs <b>{quake['cycles'] / exact:.0%}</b> of "
                       "perspective-correct")  # fmt: skip
         cycles = "cycle" if self.divide.value == 1 else "cycles"
-        return (f"divide = {self.divide.value:.3g} {cycles}: the divide is <b>{share:.0%}</b> of "
-                f"perspective-correct's cost; perspective-correct costs <b>{ratio:.3g}×</b> "
-                f"affine{saving}. "
+        k = self.attributes.value
+        headline = ""
+        if "subdivided N=2" in rows:
+            limit = n2_limit(self.rows, k)
+            headline = (f"<b>{k} attribute{'s share' if k > 1 else ' has'} one reciprocal: N=2 "
+                        f"costs at least as much as perspective-correct for every divide up to "
+                        f"{limit:.3g} cycles.</b> ")  # fmt: skip
+        return (f"{headline}divide = {self.divide.value:.3g} {cycles}: the divide is "
+                f"<b>{share:.0%}</b> of perspective-correct's cost; perspective-correct costs "
+                f"<b>{ratio:.3g}×</b> affine{saving}. "
                 f"Front, cheapest first: {names}")  # fmt: skip

@@ -9,6 +9,7 @@ bookkeeping out of the lesson's first cell, so what a student sees first is grap
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
+from html import escape
 
 from .settings import ERROR_MEASURE
 
@@ -41,10 +42,12 @@ def ratio(a: dict, b: dict, timer: str = "time") -> float:
     return fastest(a, timer) / fastest(b, timer)
 
 
-def table_lines(
+def table_parts(
     rows: Iterable[dict], group: str, extra: Iterable[tuple[str, Callable]] = ()
-) -> list[str]:
-    """The lines of one group's table, each at most about 80 characters.
+) -> dict:
+    """One group's table in parts: ``heading``, ``measure``, ``header`` (the columns that
+    separate variants), ``body`` (a list of cells per variant), ``widths`` and ``note`` (the
+    columns that read the same in every row, said once as ``"every variant: ..."``, or "").
 
     Parameters
     ----------
@@ -54,16 +57,8 @@ def table_lines(
         The group to print (``"interpolation"``, ``"edge functions"``, ``"fill"``, ``"depth"``).
     extra : iterable of (header, format)
         Columns of the group's own: ``format(row)`` gives the cell's text.
-
-    Returns
-    -------
-    list of str
-        A heading, the error measure, the header and a line per variant. A column that reads
-        the same in every row separates nothing: it is said once, last, as
-        ``"every variant: ..."``.
     """
     block = [r for r in rows if r["group"] == group]
-    name_w = max(len(r["variant"]) for r in block)
     columns = [
         (head, (lambda r, k=key, f=fmt: "-" if r[k] is None else format(r[k], f)), w)
         for head, key, fmt, w in OP_COLUMNS
@@ -71,23 +66,76 @@ def table_lines(
     columns += [(head, fmt, max(6, len(head))) for head, fmt in extra]
     cells = {head: [fmt(r).strip() for r in block] for head, fmt, _ in columns}
     shown = [c for c in columns if len(set(cells[c[0]])) > 1]
-    lines = [f"{group}, operations per {block[0]['per']}", f"error: {ERROR_MEASURE[group]}"]
-    lines.append(f"{'variant':{name_w}s}" + "".join(f" {head:>{w}s}" for head, _, w in shown))
-    for i, r in enumerate(block):
-        lines.append(
-            f"{r['variant']:{name_w}s}" + "".join(f" {cells[h][i]:>{w}s}" for h, _, w in shown)
-        )
     same = [
         f"{head}{': n/a' if cells[head][0] == '-' else ' ' + cells[head][0]}"
         for head, _, _ in columns
         if len(set(cells[head])) == 1
     ]
-    if same:
-        lines.append("every variant: " + ", ".join(same))
-    return lines
+    return {
+        "heading": f"{group}, operations per {block[0]['per']}",
+        "measure": f"error: {ERROR_MEASURE[group]}",
+        "header": ["variant"] + [head for head, _, _ in shown],
+        "widths": [max(len(r["variant"]) for r in block)] + [w for _, _, w in shown],
+        "body": [[r["variant"]] + [cells[h][i] for h, _, _ in shown] for i, r in enumerate(block)],
+        "note": "every variant: " + ", ".join(same) if same else "",
+    }
 
 
-def table(rows: list[dict], group: str, extra: Iterable[tuple[str, Callable]] = ()) -> list[dict]:
-    """Print :func:`table_lines` and return the group's rows."""
-    print("\n".join(table_lines(rows, group, extra)))
-    return [r for r in rows if r["group"] == group]
+def table_lines(
+    rows: Iterable[dict], group: str, extra: Iterable[tuple[str, Callable]] = ()
+) -> list[str]:
+    """The lines of one group's table (:func:`table_parts`), each at most about 80 characters:
+    a heading, the error measure, the header and a line per variant, then the note."""
+    t = table_parts(rows, group, extra)
+
+    def line(cells):
+        name_w, *widths = t["widths"]
+        return f"{cells[0]:{name_w}s}" + "".join(f" {c:>{w}s}" for c, w in zip(cells[1:], widths))
+
+    lines = [t["heading"], t["measure"], line(t["header"])] + [line(b) for b in t["body"]]
+    return lines + ([t["note"]] if t["note"] else [])
+
+
+#: The font size of :func:`table_html`: read from the back of a room (the printed tables'
+#: 13-px monospace could not be: review r152 06-6).
+TABLE_FONT_PX = 20
+
+
+def table_html(parts: dict) -> str:
+    """:func:`table_parts` as an HTML table at :data:`TABLE_FONT_PX`: the heading and the
+    error measure as its caption, numbers right-aligned, the note under it.
+
+    >>> rows = [{"group": "fill", "variant": v, "per": "triangle", "error": 0, "divides": d,
+    ...          "multiplies": 0, "additions": 1, "bits": None, "cycles": 1} for v, d in
+    ...         (("span 256²", 1), ("halfplane 256²", 0))]
+    >>> text = table_html(table_parts(rows, "fill"))
+    >>> "<th>div</th>" in text and "every variant: error 0" in text
+    True
+    """
+    px = TABLE_FONT_PX
+    out = [f'<table style="font-size:{px}px;line-height:1.35">',
+           f'<caption style="text-align:left;font-size:{px}px"><b>{escape(parts["heading"])}'
+           f"</b>; {escape(parts['measure'])}</caption>",
+           "<tr>" + "".join(f"<th>{escape(c)}</th>" for c in parts["header"]) + "</tr>"]  # fmt: skip
+    for cells in parts["body"]:
+        tds = [f'<td style="text-align:left">{escape(cells[0])}</td>']
+        tds += [f'<td style="text-align:right">{escape(c)}</td>' for c in cells[1:]]
+        out.append("<tr>" + "".join(tds) + "</tr>")
+    out.append("</table>")
+    if parts["note"]:
+        out.append(f'<p style="font-size:{px}px">{escape(parts["note"])}</p>')
+    return "\n".join(out)
+
+
+def table(rows: list[dict], group: str, extra: Iterable[tuple[str, Callable]] = (), *,
+          html: bool = False, keep: Callable[[dict], bool] | None = None) -> list[dict]:  # fmt: skip
+    """Print :func:`table_lines` (or, with ``html``, display :func:`table_html`: readable on
+    a projector) and return the group's rows; ``keep`` selects the rows shown and returned."""
+    rows = [r for r in rows if r["group"] == group and (keep is None or keep(r))]
+    if html:
+        from IPython.display import HTML, display
+
+        display(HTML(table_html(table_parts(rows, group, extra))))
+    else:
+        print("\n".join(table_lines(rows, group, extra)))
+    return rows
