@@ -1511,6 +1511,14 @@ def test_zbuffer_replay_ends_in_the_frame_and_counts_add_up():
     label = view.colorbar.ax.yaxis.label.get_window_extent()
     assert label.y0 >= 0 and label.x1 <= fig.bbox.width and label.y1 <= fig.bbox.height
     assert len(view.outline.allsegs[0]) >= 1
+    # review r167 05a-3: the scale was the final buffer's, and the back faces stored at
+    # triangles 2-8 (covered later) lay beyond its top, flat yellow with no arrow; now every
+    # depth shown at every step lies within it, and the back faces do reach past the final top
+    lo, hi = view.depth.get_clim()
+    shown = np.concatenate([buffer_after(frame, k)[0].ravel() for k in range(12)])
+    shown = shown[np.isfinite(shown)]
+    assert lo == shown.min() and hi == shown.max()
+    assert hi > np.nanmax(frame.depth)
     plt.close(fig)
     with pytest.raises(ValueError, match="trace=True"):
         buffer_after(tr.render(tr.get_scene("cube"), None, 8, 8), 0)
@@ -2026,7 +2034,7 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     assert pair < sticks
     assert "only the depth *write* (and any stencil update) waits" in text
     assert "only delays the depth and stencil writes" in text
-    assert "The next two cells are folded" not in text and "The next three cells are folded" in text
+    assert "The next two cells are folded" not in text and "The next four cells are folded" in text
     try_it = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
     assert try_it.count("\n- ") == 4
 
