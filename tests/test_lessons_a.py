@@ -1576,7 +1576,7 @@ def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
     # covers" did the rest, so it is dropped: q_order is the sticks' one question
     code = _cells("05a_zbuffer", "code")
     assert not any("q_top" in c or "rgb_wrong" in c for c in code)
-    (sticks,) = [c for c in code if "draw_sticks(ax)" in c and "def " not in c]
+    (sticks,) = [c for c in code if "draw_sticks(ax)" in c and "def draw_sticks" not in c]
     assert "Predict" not in sticks  # the picture alone; the question follows it
     assert sum("q_order = PredictOrder(" in c for c in code) == 1
     assert any("names[k] for k in order" in c for c in code)  # r47 05a-2: orders as colours
