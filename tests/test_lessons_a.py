@@ -997,7 +997,7 @@ def test_04_heatmap_edges_and_the_readable_floor():
 @pytest.mark.notebook
 def test_05a_cases_and_the_cube_steps():
     ns = lesson("05a_zbuffer")
-    assert len(ns.ids) == 4  # "the four cases"
+    assert len(ns.ids) == 6  # the table's four rows, the first three ways (review r167 05a-1)
     assert len(ns.cube_steps) == 12
     assert ns.culled_failed == 0  # the predicted answer: culled, a convex cube fails nothing
     assert len(ns.culled.trace.fragment_triangle) == int(ns.culled.coverage.sum())
@@ -1685,6 +1685,14 @@ def test_zbuffer_replay_ends_in_the_frame_and_counts_add_up():
     label = view.colorbar.ax.yaxis.label.get_window_extent()
     assert label.y0 >= 0 and label.x1 <= fig.bbox.width and label.y1 <= fig.bbox.height
     assert len(view.outline.allsegs[0]) >= 1
+    # review r167 05a-3: the scale was the final buffer's, and the back faces stored at
+    # triangles 2-8 (covered later) lay beyond its top, flat yellow with no arrow; now every
+    # depth shown at every step lies within it, and the back faces do reach past the final top
+    lo, hi = view.depth.get_clim()
+    shown = np.concatenate([buffer_after(frame, k)[0].ravel() for k in range(12)])
+    shown = shown[np.isfinite(shown)]
+    assert lo == shown.min() and hi == shown.max()
+    assert hi > np.nanmax(frame.depth)
     plt.close(fig)
     with pytest.raises(ValueError, match="trace=True"):
         buffer_after(tr.render(tr.get_scene("cube"), None, 8, 8), 0)
@@ -1742,7 +1750,7 @@ def test_05a_sticks_cross_at_mid_length_and_the_memory_is_printed():
     # covers" did the rest, so it is dropped: q_order is the sticks' one question
     code = _cells("05a_zbuffer", "code")
     assert not any("q_top" in c or "rgb_wrong" in c for c in code)
-    (sticks,) = [c for c in code if "draw_sticks(ax)" in c and "def " not in c]
+    (sticks,) = [c for c in code if "draw_sticks(ax)" in c and "def draw_sticks" not in c]
     assert "Predict" not in sticks  # the picture alone; the question follows it
     assert sum("q_order = PredictOrder(" in c for c in code) == 1
     assert any("names[k] for k in order" in c for c in code)  # r47 05a-2: orders as colours
@@ -2016,8 +2024,11 @@ def test_05a_try_it_points_at_the_cell_it_means():
     """r86: the Try-it said "in the first cell" (the imports); it names §1's renders now."""
     summary = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
     assert "first cell" not in summary and "§1's cell (`full_screen`)" in summary
+    # r167: the cell renders every row of the table, so the Try-it turns the writes off
+    assert '`{"depth_write": False}`' in summary
     assert any(
-        "def full_screen(" in c and "depth_test=False" in c for c in _cells("05a_zbuffer", "code")
+        "def full_screen(" in c and '{"depth_write": False}' in c
+        for c in _cells("05a_zbuffer", "code")
     )
 
 
@@ -2201,9 +2212,45 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     assert pair < sticks
     assert "only the depth *write* (and any stencil update) waits" in text
     assert "only delays the depth and stencil writes" in text
-    assert "The next two cells are folded" not in text and "The next three cells are folded" in text
+    assert "The next two cells are folded" not in text and "The next four cells are folded" in text
     try_it = next(c for c in _cells("05a_zbuffer", "markdown") if "**Try it:**" in c)
     assert try_it.count("\n- ") == 4
+
+
+@pytest.mark.notebook
+def test_05a_r167_every_gl_state_rendered_and_the_small_items():
+    """Review r167 05a-1: §1 promised "the four cases" of a four-row table of GL states and
+    rendered two of its rows (and a tie); glDepthMask(GL_FALSE) was never drawn, although
+    ``depth_write=False`` does it, and its result is the surprising one: the far triangle,
+    drawn last, shows, as nothing was written. 05a-2: ``\\|x\\|`` rendered as a norm in the
+    table. 05a-4: the c38 key at 12 pt. 05a-10: q_clip's held cell's visible comment said the
+    divided edge is the piece through infinity. 05a-11: Hi-Z on the strip. 05a-12: the
+    z-buffer attributed. 05a-14: four cells folded, not three. 05a-15: §3 named the triangles
+    0 and 1 where §2 says red and blue."""
+    ns = lesson("05a_zbuffer")
+    states = [state for state, *_ in ns.rows.values()]
+    nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
+    text = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
+    table = [line for line in text["c02_off"].splitlines() if line.startswith("| `gl")]
+    for row in table:  # every row of the table is rendered (one of its states is printed)
+        assert set(row.split("|")[1].split("`")[1::2]) & set(states), row
+    assert len(table) == 4
+    assert states.index("glDepthMask(GL_FALSE)") < states.index("glDisable(GL_DEPTH_TEST)")
+    for case in ("depth writes off", "test and writes off"):  # the far one, nothing written
+        assert (ns.ids[case] == 1).all() and np.isnan(ns.frames_1[case].depth).all()
+    assert "| `depth_test=False, depth_write=False` |" in text["c02_off"]
+    assert "shows the four cases" not in text["c02_off"]
+    assert "\\|" not in text["c15b"] and text["c15b"].count("\\lvert x\\rvert") == 2
+    assert 'ax.legend(loc="upper left", fontsize=14)' in text["c18"]
+    assert "piece through infinity" not in text["c16h"]
+    assert "Hi-Z, early depth test" in text["pipeline_strip"]
+    assert "Catmull" in text["c00"] and "Straßer" in text["c00"]
+    assert "The next four cells are folded" in text["sticks_md"]
+    assert all(nb["cells"][k]["metadata"]["jupyter"]["source_hidden"] for k in range(9, 13))
+    assert ns.pair == ["red", "blue"]
+    for cid in ("c11", "c14"):
+        assert "triangle 1 (blue)" in text[cid]
+    assert "Adreno" in text["guard_fig"] and "cut off by the clipper" in text["guard_fig"]
 
 
 def test_04_r144_ritschel_step_questions_and_floor_diagonal():

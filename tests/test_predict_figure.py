@@ -221,6 +221,24 @@ def test_the_page_judges_as_the_kernel():
     assert got[7]["places"] == [False, False]
 
 
+def test_an_order_verdict_names_the_order_given_in_the_page_as_in_the_kernel():
+    """Review r167 05a-8: a wrong order's verdict was "Not quite. The answer: no order
+    works.", without what the student gave (Predict and PredictChoice say "You predicted ...;
+    the answer is ..."). The page's text and the kernel's are the same words."""
+    cases = [(None, ["c", "b", "a"]), (None, None), (["a", "b", "c"], None),
+             (["a", "b", "c"], ["b", "a", "c"]), (["a", "b", "c"], ["a", "b", "c"])]  # fmt: skip
+    got = call_js(("predict_figure",),
+                  [("orderVerdictText", [a, g, "no order works"]) for a, g in cases])  # fmt: skip
+    for (answer, given), js in zip(cases, got, strict=True):
+        q = PredictOrder("Order?", ["a", "b", "c"], answer=answer, allow_impossible=True)
+        assert q.verdict() == "The answer: <b>" + js.split("the answer is <b>")[1]
+        q.given = given
+        word = "Right. " if given == answer else "Not quite. "
+        assert q.verdict() == word + js
+    assert got[0] == "You predicted <b>c → b → a</b>; the answer is <b>no order works</b>."
+    assert got[2] == "You predicted <b>no order works</b>; the answer is <b>a → b → c</b>."
+
+
 def test_a_choice_is_judged_in_the_page_as_in_the_kernel():
     """Review r98, 07 (q_far): an ipywidgets Predict enabled Check only after the kernel had
     heard of the pick (still disabled 1 s after it); a PredictChoice is judged in the page,

@@ -80,7 +80,9 @@ def fragment_counts(frame, k: int) -> tuple[int, int]:
 class ZBufferStepView:
     """Two panels: triangle k's fragments (passed / failed) and the depth buffer after it.
 
-    ``show(k)`` updates both images and the titles in place.
+    ``show(k)`` updates both images and the titles in place. The depth panel's colour scale
+    is fixed once, to the range of every depth written at any step, so that no step shows a
+    value beyond its colour bar.
     """
 
     frame: object
@@ -108,9 +110,13 @@ class ZBufferStepView:
         self.legend = self.ax_fragments.figure.legend(
             handles=handles, loc="outside lower center", fontsize=fs(0.8), ncols=2, frameon=False
         )
-        final = self.frame.depth[np.isfinite(self.frame.depth)]
+        # the scale covers every depth the buffer holds at any step, that is every fragment
+        # that passed (and was written): the final buffer's range alone left the back faces,
+        # stored for a while and covered later, flat at its top (review r167 05a-3)
+        trace = self.frame.trace
+        written = trace.fragment_depth[trace.fragment_passed]
         self.depth = self.ax_depth.imshow(np.full((height, width), np.nan), cmap=VALUE_CMAP,
-                                          vmin=final.min(), vmax=final.max(), extent=extent,
+                                          vmin=written.min(), vmax=written.max(), extent=extent,
                                           interpolation="nearest")  # fmt: skip
         # beside the panel: below it, constrained layout left its label cut off by the
         # fragment panel's key, which sets the height of that row

@@ -581,11 +581,20 @@ class PredictOrder(FigurePrediction):
             return None
         return self.given == self.answer
 
+    def _named(self, order) -> str:
+        """An order as the verdict names it: the items joined by arrows, or "no order works"."""
+        return self.data["impossibleLabel"] if order is None else " → ".join(order)
+
     def verdict(self) -> str:
+        """As the page's ``orderVerdictText``: the student's order beside the answer (review
+        r167 05a-8: "Not quite. The answer: no order works." did not say what was given)."""
+        right = self._named(self.answer)
+        if not self.state.get("acted"):
+            return f"The answer: <b>{right}</b>."
         word = "Right." if self.correct else "Not quite."
-        right = (self.data["impossibleLabel"] if self.answer is None
-                 else " → ".join(self.answer))  # fmt: skip
-        return f"{word} The answer: {right}."
+        return (
+            f"{word} You predicted <b>{self._named(self.given)}</b>; the answer is <b>{right}</b>."
+        )
 
 
 class PredictChoice(FigurePrediction):

@@ -85,6 +85,13 @@ export function choiceVerdict(answer, given) {
     text: `You predicted <b>${escapeHtml(given)}</b>; the answer is <b>${escapeHtml(answer)}</b>.` };
 }
 
+// an order's verdict text: PredictOrder.verdict is "Right." or "Not quite." and then this
+// (the tests compare the two); null is "no order works", as answer or as given
+export function orderVerdictText(answer, given, impossibleLabel) {
+  const named = (order) => (order === null ? impossibleLabel : order.join(" \u2192 "));
+  return `You predicted <b>${named(given)}</b>; the answer is <b>${named(answer)}</b>.`;
+}
+
 export function orderVerdict(answer, given) {
   // answer null: no order works; given null: the student said so
   if (answer === null || given === null) return { places: null, correct: answer === given };
@@ -611,8 +618,7 @@ function mountOrder(root, data, host) {
     render_();
     if (!known) return;
     const v = orderVerdict(known.answer, given());
-    const right = known.answer === null ? data.impossibleLabel : known.answer.join(" → ");
-    show(v.correct, `The answer: <b>${right}</b>.`, known);
+    show(v.correct, orderVerdictText(known.answer, given(), data.impossibleLabel), known);
   }
   render_();
   if (state.revealed) reveal(false);
