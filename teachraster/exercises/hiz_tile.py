@@ -453,6 +453,9 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "border low": bool(_cut_bound(xyz, row0, col0, size, border="high") >= far),
             # r137 D8-5, D8-6: one column (row) past the box's far end; int() for floor
             "one past": bool(_cut_bound(xyz, row0, col0, size, border="past") >= far),
+            # r173 M1: one column (row) before the box's first, ⌈xmin − ½⌉ − 1 (was told "the
+            # tile's outer corners", which gives the same verdicts on every case)
+            "one before": bool(_cut_bound(xyz, row0, col0, size, border="before") >= far),
             "int for floor": bool(_cut_bound(xyz, row0, col0, size, border="trunc") >= far),
             # r137 D8-1, D8-10: the nearest vertex inside the tile; the stored depths read
             # inside the box only
@@ -498,10 +501,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     the box's own extreme centres, beyond the tile too) and the centres on the box's border
     kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
-    "trunc": ``int(xmax − ½)``, truncated toward 0). +inf where the tile and the box share
+    "trunc": ``int(xmax − ½)``, truncated toward 0; "before": one more on the low side,
+    ⌈xmin − ½⌉ − 1). +inf where the tile and the box share
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
-    judged = border in ("past", "trunc", "int") or past_tile
+    judged = border in ("past", "trunc", "int", "before") or past_tile
     if not judged and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (the others judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
@@ -510,6 +514,7 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         lo, hi = xy[:, axis].min(), xy[:, axis].max()
         a = int(np.floor(lo + 0.5)) if border in ("none", "high") else int(np.ceil(lo - 0.5))
         a = int(lo + 0.5) if border == "int" else a
+        a = a - 1 if border == "before" else a
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
              "trunc": int(hi - 0.5), "int": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
@@ -661,6 +666,10 @@ MISTAKES = {
     "one past": "you took a column (or row) past the box's far end (⌊xmax + ½⌋?): its "
     "centre lies beyond the box, where no fragment can be, and here the plane is nearest "
     "there; the box's last column is the last whose centre c + ½ is at most xmax",
+    "one before": "your bound is taken over a column (or row) before the box's first: that "
+    "centre lies left of (or above) the bounding box, where no fragment can be, and here the "
+    "plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z could reject); "
+    "which is the first column whose centre lies inside the box?",
     "int for floor": "you rounded with int(): it truncates toward 0, so for a box ending "
     "between x = −½ and ½ (or y), int(xmax − ½) is 0, not −1, and takes the tile's first "
     "column, whose centre lies beyond the box: use math.floor (or np.floor)",
@@ -749,14 +758,19 @@ MISTAKES = {
 }
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
-#: r162 M2: both mistakes at once, both said
-MISTAKES["box corners, empty kept"] = (
-    MISTAKES["box corners"].replace(
-        "; take the plane's minimum over the tile's centres inside the box", ""
-    )
-    + "; and "
-    + MISTAKES["empty kept"]
-)
+
+
+def _corners_or_empty(args, expected, got) -> str:
+    """r162 M2, r173 M2: the box's own corners with an empty box kept: on a case whose box
+    holds no centre of the tile the empty box decides, elsewhere the corners (each said only
+    where it decides the case)."""
+    xyz, row0, col0, size, _ = args
+    if _box_corners(xyz, row0, col0, size) is None:
+        return MISTAKES["empty kept"]
+    return MISTAKES["box corners"]
+
+
+MISTAKES["box corners, empty kept"] = _corners_or_empty
 #: r162: the tile's last column and row one past its own
 MISTAKES["one past the tile"] = (
     "your columns (or rows) run to col0 + size (row0 + size), one past the tile's last: that "
@@ -847,9 +861,9 @@ def _rule(args, expected, got) -> str:
 
 
 def draw_hiz(ax, case, got):
-    """The tile's stored depths, the triangle, its bounding box, the centre where the bound is
-    taken (ex30a: both drawn on every try, with a legend), the verdicts; the depth at the
-    extreme centres once the hints are spent."""
+    """The tile's stored depths, the triangle, its bounding box (ex30a: drawn on every try,
+    with a legend), the verdicts; the centre where the bound is taken and the depth at the
+    extreme centres once the hints are spent (r173 G1)."""
     from matplotlib.patches import Polygon
 
     from .tries import hints_spent
@@ -904,9 +918,9 @@ BOX_COLOUR, SITE_COLOUR = "#ff9f1c", "#ffffff"
 
 
 def _box_and_site(ax, xyz, row0, col0, size) -> list:
-    """The triangle's bounding box (dashed) and the centre where the check's bound is taken
-    (:func:`bound_site`), each with its legend entry; the centre is not drawn where the box
-    holds no centre of the tile (the legend says so)."""
+    """The triangle's bounding box (dashed) and, once the hints are spent, the centre where the
+    check's bound is taken (:func:`bound_site`), each with its legend entry; the centre is not
+    drawn where the box holds no centre of the tile (the legend says so)."""
     from matplotlib.patches import Rectangle
 
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
@@ -918,6 +932,13 @@ def _box_and_site(ax, xyz, row0, col0, size) -> list:
                                       linestyle="--", label=label))]  # fmt: skip
     if not seen:
         artists += ax.plot([], [], " ", label="its bounding box: beyond this view")
+    from .tries import hints_spent
+
+    # r173 G1: where the bound is taken (and whether the nearest vertex sets it) is the task's
+    # answer on this case: drawn only once two different answers have failed, as the depths
+    # at the extreme centres are
+    if not hints_spent("hiz_rejects"):
+        return artists
     site = bound_site(xyz, row0, col0, size)
     if site is None:
         artists += ax.plot([], [], " ", label="no centre of the tile in the box")
@@ -1018,6 +1039,12 @@ HIZ_HINTS = (
      # not "(the larger of the two)": that is what the "smaller bound" mistake is asked (r94)
      r"the tile's farthest stored depth is \1, and the task's lower bound on the triangle's "
      "depth in the tile decides (what is it here?):"),
+    # r173 M1: the outer-corner words ended on the task's answer
+    ("; take the plane at the extreme centres of the tile's part inside the triangle's "
+     "bounding box", ": where in the tile can a fragment of the triangle lie?"),
+    # r173 G2: which border centres the rule can cover is cell 5's own question
+    ("; on the box's left or top side the triangle can cover such a centre (the top-left "
+     "rule), so", "; the triangle can cover such a centre, so"),
     (" (its plane's minimum over the tile's centres inside its bounding box, no nearer than "
      "its nearest vertex; +inf where the box holds none)",
      " (where in the tile can a fragment lie, where is its depth smallest, and how near can "
