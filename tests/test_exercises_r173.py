@@ -355,3 +355,81 @@ def test_d5_the_not_counted_error_still_says_so():
     report = ex.check("hiz_rejects", hiz_tile.expected_reject, budget=120)
     with pytest.raises(AssertionError, match="not counted"):
         report.assert_passed()
+
+
+def test_d5_the_capstone_raises_the_same_one_line_error():
+    """One place for the rule: the capstone's scenes raise :class:`CheckFailed` too."""
+    import inspect
+
+    from teachraster.exercises import capstone_render
+
+    source = inspect.getsource(capstone_render.CapstoneReport.assert_passed)
+    assert "raise CheckFailed(" in source and "raise AssertionError(" not in source
+
+
+def test_d5_failures_and_the_package_both_said_in_the_one_line():
+    """A failing answer that also calls the package's own function: its one line says both."""
+    report = ex.check("hiz_rejects", box_bound(low_wide=True), budget=120)
+    object.__setattr__(report, "package", "it calls teachraster's expected_reject: does not count")
+    with pytest.raises(AssertionError, match=r"7 of 66 cases fail; and not counted"):
+        report.assert_passed()
+
+
+# -- three answers that were told the rule only, now named ---------------------------------------
+
+
+def hiz_variant(half=-0.5, last=1, vertex=True, whole=False):
+    """hiz_rejects as the reader wrote three of them: ``half`` +0.5: the box's ½ the wrong way
+    (⌈xmin + ½⌉ … ⌊xmax + ½⌋); ``last`` 2: the tile clamped at col0 + size − 2; ``whole`` and
+    not ``vertex``: lesson 10's bound without the nearest vertex."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        p = np.asarray(xyz, float)
+        lo, hi = p[:, :2].min(axis=0), p[:, :2].max(axis=0)
+        if whole:
+            c, r = (col0, col0 + size - 1), (row0, row0 + size - 1)
+        else:
+            c = (max(col0, math.ceil(lo[0] + half)), min(col0 + size - last, math.floor(hi[0] + half)))  # fmt: skip
+            r = (max(row0, math.ceil(lo[1] + half)), min(row0 + size - last, math.floor(hi[1] + half)))  # fmt: skip
+            if c[0] > c[1] or r[0] > r[1]:
+                return True
+        z = min(_plane(p)(x + 0.5, y + 0.5) for x in c for y in r)
+        return bool((max(z, p[:, 2].min()) if vertex else z) >= np.max(buffer))
+
+    return hiz_rejects
+
+
+NAMED = {
+    "the box's ½ the wrong way": (
+        hiz_variant(half=0.5),
+        "half shifted",
+        "the box's ½ the wrong way",
+    ),  # fmt: skip
+    "the tile one column short": (
+        hiz_variant(last=2),
+        "one short of the tile",
+        "one short of the tile's last",
+    ),  # fmt: skip
+    "lesson 10's bound, no vertex": (
+        hiz_variant(vertex=False, whole=True),
+        "whole tile, bare",
+        "lesson 10's bound without the nearest vertex",
+    ),  # fmt: skip
+}
+
+
+@pytest.mark.parametrize("words", ["first_words", "full_words"])
+@pytest.mark.parametrize("name", list(NAMED))
+def test_answers_once_told_the_rule_are_named(name, words, request):
+    request.getfixturevalue(words)
+    fn, kind, said = NAMED[name]
+    assert hiz_variant()(*hiz_tile.HIZ_REJECTS.cases()[0][1]) == hiz_tile.HIZ_REJECTS.cases()[0][2]
+    report = ex.check("hiz_rejects", fn, budget=120)
+    assert report.failures and {f.kind for f in report.failures} == {kind}
+    for f in report.failures:
+        assert said in f.explanation and "The block is rejected when" not in f.explanation
+        assert "extreme centres of the tile's part inside" not in f.explanation
+
+
+def test_the_reference_form_of_the_variants_passes():
+    assert ex.check("hiz_rejects", hiz_variant(), budget=120).passed

@@ -456,6 +456,12 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r173 M1: one column (row) before the box's first, ⌈xmin − ½⌉ − 1 (was told "the
             # tile's outer corners", which gives the same verdicts on every case)
             "one before": bool(_cut_bound(xyz, row0, col0, size, border="before") >= far),
+            # r173: three answers told the rule only: the box's ½ taken the wrong way
+            # (⌈xmin + ½⌉ … ⌊xmax + ½⌋), the tile one column short (col0 + size − 2), and
+            # lesson 10's bound without the nearest vertex
+            "half shifted": bool(_cut_bound(xyz, row0, col0, size, border="shifted") >= far),
+            "one short of the tile": bool(_cut_bound(xyz, row0, col0, size, past_tile=-1) >= far),
+            "whole tile, bare": bool(_bare_plane(xyz, *_corners(row0, col0, size)).min() >= far),
             "int for floor": bool(_cut_bound(xyz, row0, col0, size, border="trunc") >= far),
             # r137 D8-1, D8-10: the nearest vertex inside the tile; the stored depths read
             # inside the box only
@@ -502,10 +508,10 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
     "trunc": ``int(xmax − ½)``, truncated toward 0; "before": one more on the low side,
-    ⌈xmin − ½⌉ − 1). +inf where the tile and the box share
+    ⌈xmin − ½⌉ − 1; "shifted": the ½ the wrong way, ⌈xmin + ½⌉ … ⌊xmax + ½⌋). +inf where the tile and the box share
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
-    judged = border in ("past", "trunc", "int", "before") or past_tile
+    judged = border in ("past", "trunc", "int", "before", "shifted") or past_tile
     if not judged and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (the others judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
@@ -515,8 +521,10 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         a = int(np.floor(lo + 0.5)) if border in ("none", "high") else int(np.ceil(lo - 0.5))
         a = int(lo + 0.5) if border == "int" else a
         a = a - 1 if border == "before" else a
+        a = int(np.ceil(lo + 0.5)) if border == "shifted" else a
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
-             "trunc": int(hi - 0.5), "int": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
+             "trunc": int(hi - 0.5), "int": int(hi - 0.5),
+             "shifted": int(np.floor(hi + 0.5))}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
@@ -670,6 +678,19 @@ MISTAKES = {
     "centre lies left of (or above) the bounding box, where no fragment can be, and here the "
     "plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z could reject); "
     "which is the first column whose centre lies inside the box?",
+    "half shifted": "you took the box's ½ the wrong way (⌈xmin + ½⌉ … ⌊xmax + ½⌋?): column c "
+    "has its centre at c + ½, so your columns (and rows) start and end one past the box's own: "
+    "you leave out its first column, where a fragment can lie, and take one beyond it, where "
+    "none can (your bound can reject a block holding a fragment that is drawn: a hole); which "
+    "columns have their centre c + ½ between xmin and xmax?",
+    "one short of the tile": "your columns (or rows) stop at col0 + size − 2, one short of the "
+    "tile's last: here the plane is nearest in the tile's last column (or row), where a "
+    "fragment of the triangle can lie, so your bound is not safe: it can reject a block "
+    "holding a fragment that is drawn (a hole); the tile's columns are col0 … col0 + size − 1",
+    "whole tile, bare": "you took the plane's minimum over all the tile's pixel centres alone "
+    "(lesson 10's bound without the nearest vertex): safe, but here the plane is nearest at "
+    "centres where no fragment of the triangle can be; the bound asked is higher: which of "
+    "the tile's centres can hold a fragment, and what else bounds how near a fragment can be?",
     "int for floor": "you rounded with int(): it truncates toward 0, so for a box ending "
     "between x = −½ and ½ (or y), int(xmax − ½) is 0, not −1, and takes the tile's first "
     "column, whose centre lies beyond the box: use math.floor (or np.floor)",
@@ -781,7 +802,7 @@ MISTAKES["one past the tile"] = (
 #: case the task rejects and a looser bound keeps it gives the same answer: named only where
 #: it gives every answer of the check (a box-corner bound that also keeps empty boxes was told
 #: "you took lesson 10's bound", the same 0.300 there, though it rejects where lesson 10's keeps)
-ONLY_WHOLE = ("whole tile",)
+ONLY_WHOLE = ("whole tile", "whole tile, bare")
 
 
 #: How close (relative) the nearest depth and the farthest stored one must be for float32's

@@ -175,7 +175,10 @@ class Report:
         if not self.passed:
             # r173 D5 (r149 E5, r162 D6): the report is printed above the error already; the
             # error says its first line only, as one line, not this method's source
-            raise CheckFailed(f"{str(self).splitlines()[0]} (the report above says why)")
+            head = str(self).splitlines()[0]
+            if self.package is not None and "not counted" not in head:
+                head += "; and not counted (it uses the package's own answer)"
+            raise CheckFailed(f"{head} (the report above says why)")
 
     def _repr_pretty_(self, p, cycle) -> None:  # IPython shows the summary, not the fields
         p.text(str(self))
