@@ -292,8 +292,9 @@ def test_a_wrong_shape_is_explained():
 @pytest.mark.parametrize("spent", [False, True], ids=["first try", "hints spent"])
 def test_the_hiz_figure_draws_the_box_and_where_the_bound_is_taken(spent):
     """ex30a: 8.2's figure drew neither the triangle's bounding box nor the centre where the
-    bound is taken before the hints were spent; both now, on every try, from the checker's
-    own :func:`hiz_tile.bound_site`, with a legend, in a column-wide figure."""
+    bound is taken before the hints were spent; the box now on every try, the centre (from
+    the checker's own :func:`hiz_tile.bound_site`) once the hints are spent (r173 G1: on the
+    first try it answered the words' question), with a legend, in a column-wide figure."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -316,11 +317,17 @@ def test_the_hiz_figure_draws_the_box_and_where_the_bound_is_taken(spent):
         assert np.isclose(box[0].get_height(), hi[1] - lo[1])
         row, col, _, _ = hiz_tile.bound_site(xyz, row0, col0, size)
         star = [line for line in ax.lines if line.get_marker() == "*"]
-        assert len(star) == 1 and (star[0].get_xdata()[0], star[0].get_ydata()[0]) == (col + 0.5, row + 0.5)  # fmt: skip
         keys = [t.get_text() for t in ax.get_legend().get_texts()]
         # r162 D4: a box whose sides all lie beyond the view (this one's) is said in words
         assert "the triangle" in keys and "its bounding box: beyond this view" in keys, keys
-        assert any(k.startswith("where the bound is taken") for k in keys), keys
+        # r173 G1: the star and its legend (where the bound is taken, and whether the nearest
+        # vertex sets it) answer the task: only once the hints are spent
+        site = [k for k in keys if k.startswith("where the bound is taken")]
+        if spent:
+            assert len(star) == 1 and (star[0].get_xdata()[0], star[0].get_ydata()[0]) == (col + 0.5, row + 0.5)  # fmt: skip
+            assert site, keys
+        else:
+            assert not star and not site and not any("vertex" in k for k in keys), keys
         assert fig.get_size_inches()[0] * fig.dpi <= COLUMN_WIDTH_PX
     finally:
         plt.close("all")

@@ -271,7 +271,7 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     assert "agree" not in words and len(words) > 40
     fig, axes = plt.subplots(1, 3)
     artists = wrong.compare(axes, pixel="first")
-    title = axes[2].get_title()
+    title = " ".join(axes[2].get_title().split())  # (wrapped to the panel's width)
     covered = wrong.scene.coverage_differs()
     if covered is None:
         assert artists and title.startswith(f"{len(differing)} pixel")

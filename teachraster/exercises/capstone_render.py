@@ -32,7 +32,7 @@ from . import output
 from .capstone_explain import CHECKED_AS, explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
 from .capstone_scenes import capstone_scene
-from .report import Failure, Report
+from .report import CheckFailed, Failure, Report
 from .running import CASE_SHARE, effective_budget, run_case, run_checker
 from .running import budget as time_budget
 
@@ -537,7 +537,8 @@ class CapstoneReport(Report):
         characters, under it)."""
         if not self.passed:
             head = str(self).split("\n", 1)[0]
-            raise AssertionError(f"{head} (the report printed above says why: print(report))")
+            # r173 D5: one line, not this method's source (:class:`.report.CheckFailed`)
+            raise CheckFailed(f"{head} (the report printed above says why: print(report))")
 
     def differing_pixels(self) -> np.ndarray:
         """(n, 2) rows and columns where the student's frame differs; none where the scene

@@ -453,6 +453,15 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "border low": bool(_cut_bound(xyz, row0, col0, size, border="high") >= far),
             # r137 D8-5, D8-6: one column (row) past the box's far end; int() for floor
             "one past": bool(_cut_bound(xyz, row0, col0, size, border="past") >= far),
+            # r173 M1: one column (row) before the box's first, ⌈xmin − ½⌉ − 1 (was told "the
+            # tile's outer corners", which gives the same verdicts on every case)
+            "one before": bool(_cut_bound(xyz, row0, col0, size, border="before") >= far),
+            # r173: three answers told the rule only: the box's ½ taken the wrong way
+            # (⌈xmin + ½⌉ … ⌊xmax + ½⌋), the tile one column short (col0 + size − 2), and
+            # lesson 10's bound without the nearest vertex
+            "half shifted": bool(_cut_bound(xyz, row0, col0, size, border="shifted") >= far),
+            "one short of the tile": bool(_cut_bound(xyz, row0, col0, size, past_tile=-1) >= far),
+            "whole tile, bare": bool(_bare_plane(xyz, *_corners(row0, col0, size)).min() >= far),
             "int for floor": bool(_cut_bound(xyz, row0, col0, size, border="trunc") >= far),
             # r137 D8-1, D8-10: the nearest vertex inside the tile; the stored depths read
             # inside the box only
@@ -498,10 +507,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     the box's own extreme centres, beyond the tile too) and the centres on the box's border
     kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
-    "trunc": ``int(xmax − ½)``, truncated toward 0). +inf where the tile and the box share
+    "trunc": ``int(xmax − ½)``, truncated toward 0; "before": one more on the low side,
+    ⌈xmin − ½⌉ − 1; "shifted": the ½ the wrong way, ⌈xmin + ½⌉ … ⌊xmax + ½⌋). +inf where the tile and the box share
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
-    judged = border in ("past", "trunc", "int") or past_tile
+    judged = border in ("past", "trunc", "int", "before", "shifted") or past_tile
     if not judged and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (the others judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
@@ -510,8 +520,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         lo, hi = xy[:, axis].min(), xy[:, axis].max()
         a = int(np.floor(lo + 0.5)) if border in ("none", "high") else int(np.ceil(lo - 0.5))
         a = int(lo + 0.5) if border == "int" else a
+        a = a - 1 if border == "before" else a
+        a = int(np.ceil(lo + 0.5)) if border == "shifted" else a
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
-             "trunc": int(hi - 0.5), "int": int(hi - 0.5)}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
+             "trunc": int(hi - 0.5), "int": int(hi - 0.5),
+             "shifted": int(np.floor(hi + 0.5))}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
@@ -661,6 +674,23 @@ MISTAKES = {
     "one past": "you took a column (or row) past the box's far end (⌊xmax + ½⌋?): its "
     "centre lies beyond the box, where no fragment can be, and here the plane is nearest "
     "there; the box's last column is the last whose centre c + ½ is at most xmax",
+    "one before": "your bound is taken over a column (or row) before the box's first: that "
+    "centre lies left of (or above) the bounding box, where no fragment can be, and here the "
+    "plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z could reject); "
+    "which is the first column whose centre lies inside the box?",
+    "half shifted": "you took the box's ½ the wrong way (⌈xmin + ½⌉ … ⌊xmax + ½⌋?): column c "
+    "has its centre at c + ½, so your columns (and rows) start and end one past the box's own: "
+    "you leave out its first column, where a fragment can lie, and take one beyond it, where "
+    "none can (your bound can reject a block holding a fragment that is drawn: a hole); which "
+    "columns have their centre c + ½ between xmin and xmax?",
+    "one short of the tile": "your columns (or rows) stop at col0 + size − 2, one short of the "
+    "tile's last: here the plane is nearest in the tile's last column (or row), where a "
+    "fragment of the triangle can lie, so your bound is not safe: it can reject a block "
+    "holding a fragment that is drawn (a hole); the tile's columns are col0 … col0 + size − 1",
+    "whole tile, bare": "you took the plane's minimum over all the tile's pixel centres alone "
+    "(lesson 10's bound without the nearest vertex): safe, but here the plane is nearest at "
+    "centres where no fragment of the triangle can be; the bound asked is higher: which of "
+    "the tile's centres can hold a fragment, and what else bounds how near a fragment can be?",
     "int for floor": "you rounded with int(): it truncates toward 0, so for a box ending "
     "between x = −½ and ½ (or y), int(xmax − ½) is 0, not −1, and takes the tile's first "
     "column, whose centre lies beyond the box: use math.floor (or np.floor)",
@@ -749,14 +779,19 @@ MISTAKES = {
 }
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
-#: r162 M2: both mistakes at once, both said
-MISTAKES["box corners, empty kept"] = (
-    MISTAKES["box corners"].replace(
-        "; take the plane's minimum over the tile's centres inside the box", ""
-    )
-    + "; and "
-    + MISTAKES["empty kept"]
-)
+
+
+def _corners_or_empty(args, expected, got) -> str:
+    """r162 M2, r173 M2: the box's own corners with an empty box kept: on a case whose box
+    holds no centre of the tile the empty box decides, elsewhere the corners (each said only
+    where it decides the case)."""
+    xyz, row0, col0, size, _ = args
+    if _box_corners(xyz, row0, col0, size) is None:
+        return MISTAKES["empty kept"]
+    return MISTAKES["box corners"]
+
+
+MISTAKES["box corners, empty kept"] = _corners_or_empty
 #: r162: the tile's last column and row one past its own
 MISTAKES["one past the tile"] = (
     "your columns (or rows) run to col0 + size (row0 + size), one past the tile's last: that "
@@ -767,7 +802,7 @@ MISTAKES["one past the tile"] = (
 #: case the task rejects and a looser bound keeps it gives the same answer: named only where
 #: it gives every answer of the check (a box-corner bound that also keeps empty boxes was told
 #: "you took lesson 10's bound", the same 0.300 there, though it rejects where lesson 10's keeps)
-ONLY_WHOLE = ("whole tile",)
+ONLY_WHOLE = ("whole tile", "whole tile, bare")
 
 
 #: How close (relative) the nearest depth and the farthest stored one must be for float32's
@@ -847,9 +882,9 @@ def _rule(args, expected, got) -> str:
 
 
 def draw_hiz(ax, case, got):
-    """The tile's stored depths, the triangle, its bounding box, the centre where the bound is
-    taken (ex30a: both drawn on every try, with a legend), the verdicts; the depth at the
-    extreme centres once the hints are spent."""
+    """The tile's stored depths, the triangle, its bounding box (ex30a: drawn on every try,
+    with a legend), the verdicts; the centre where the bound is taken and the depth at the
+    extreme centres once the hints are spent (r173 G1)."""
     from matplotlib.patches import Polygon
 
     from .tries import hints_spent
@@ -904,9 +939,9 @@ BOX_COLOUR, SITE_COLOUR = "#ff9f1c", "#ffffff"
 
 
 def _box_and_site(ax, xyz, row0, col0, size) -> list:
-    """The triangle's bounding box (dashed) and the centre where the check's bound is taken
-    (:func:`bound_site`), each with its legend entry; the centre is not drawn where the box
-    holds no centre of the tile (the legend says so)."""
+    """The triangle's bounding box (dashed) and, once the hints are spent, the centre where the
+    check's bound is taken (:func:`bound_site`), each with its legend entry; the centre is not
+    drawn where the box holds no centre of the tile (the legend says so)."""
     from matplotlib.patches import Rectangle
 
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
@@ -918,6 +953,13 @@ def _box_and_site(ax, xyz, row0, col0, size) -> list:
                                       linestyle="--", label=label))]  # fmt: skip
     if not seen:
         artists += ax.plot([], [], " ", label="its bounding box: beyond this view")
+    from .tries import hints_spent
+
+    # r173 G1: where the bound is taken (and whether the nearest vertex sets it) is the task's
+    # answer on this case: drawn only once two different answers have failed, as the depths
+    # at the extreme centres are
+    if not hints_spent("hiz_rejects"):
+        return artists
     site = bound_site(xyz, row0, col0, size)
     if site is None:
         artists += ax.plot([], [], " ", label="no centre of the tile in the box")
@@ -1018,6 +1060,12 @@ HIZ_HINTS = (
      # not "(the larger of the two)": that is what the "smaller bound" mistake is asked (r94)
      r"the tile's farthest stored depth is \1, and the task's lower bound on the triangle's "
      "depth in the tile decides (what is it here?):"),
+    # r173 M1: the outer-corner words ended on the task's answer
+    ("; take the plane at the extreme centres of the tile's part inside the triangle's "
+     "bounding box", ": where in the tile can a fragment of the triangle lie?"),
+    # r173 G2: which border centres the rule can cover is cell 5's own question
+    ("; on the box's left or top side the triangle can cover such a centre (the top-left "
+     "rule), so", "; the triangle can cover such a centre, so"),
     (" (its plane's minimum over the tile's centres inside its bounding box, no nearer than "
      "its nearest vertex; +inf where the box holds none)",
      " (where in the tile can a fragment lie, where is its depth smallest, and how near can "

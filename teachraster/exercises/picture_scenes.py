@@ -488,7 +488,7 @@ def tile_scene(fn) -> Scene:
             if key in scene.parts and scene.parts[key] != truth.get(key, scene.parts[key]):
                 words = tb.explain_block((TILE_TRIANGLE.copy(), *key), truth[key], scene.parts[key])  # fmt: skip
                 # r94 D8-3: the first try's caption gave the block's extreme centres
-                return f"block ({key[0]}, {key[1]}) of size {size}: " + lod.hinted("classify_block", words, tb.BLOCK_HINTS)  # fmt: skip
+                return f"block ({key[0]}, {key[1]}) of size {size}: " + lod.hinted("classify_block", words, tb.BLOCK_HINTS) + _pixel_why(got, row, col)  # fmt: skip
             if key in truth and key not in scene.parts:
                 return f"the package visits block ({key[0]}, {key[1]}) of size {size}, yours does not: its parent's verdict differs"  # fmt: skip
         return f"yours and the package's agree: {WALK[int(reference[row, col])][0]}"
@@ -498,6 +498,15 @@ def tile_scene(fn) -> Scene:
     scene = Scene("tile walk: blocks 16, 4, 1", reference, run, explain, WALK,
                   coverage_of=walk_coverage)  # fmt: skip
     return scene
+
+
+def _pixel_why(got, row: int, col: int) -> str:
+    """Where the pixel is filled by one walk and not the other: which and why (r173 D1)."""
+    ours = bool(walk_coverage(walk(tb.expected_block)[0])[row, col])
+    if got is None or bool(walk_coverage(np.asarray(got))[row, col]) == ours:
+        return ""
+    who = "the package fills this pixel, yours does not" if ours else "yours fills this pixel, the package does not"  # fmt: skip
+    return f"; {who}: {tb.pixel_words(TILE_TRIANGLE.copy(), row, col)}"
 
 
 def walk_coverage(codes: np.ndarray) -> np.ndarray:

@@ -1142,3 +1142,53 @@ def draw_block_case(ax, case, got):
     plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
     ax.set_aspect("equal")
     return artists
+
+
+#: How far from the origin (px) float64 holds every edge function of 8.1 exactly, with vertices
+#: on the 1/256 grid and centres on the ½ grid (r173 F1): a difference of two coordinates is
+#: then below 2^18 px, a product of two below 2^36 px² (2^52 steps of 2^-16 px²), and E, a
+#: difference of two products, below 2^53 steps, which float64 holds (so do E₀ + R and E₀ + T,
+#: E at other centres within the reach). Beyond it, a product can need more than float64's 53
+#: bits: the reader's vertices 6·10^5 px out gave a wrong verdict in 7 of 300 ties.
+FLOAT64_REACH = 2**17
+
+
+def _whole_pixels(xy) -> bool:
+    xy = np.asarray(xy, dtype=float)
+    return bool(np.array_equal(xy, np.round(xy)))
+
+
+def float64_reach() -> str:
+    """The sentence cell 1 of exercise 08 prints (cell 2 quotes its numbers): how far out
+    float64 is exact, and that every case of the check lies within that reach (its vertices
+    and the pixel centres of its blocks) or has vertices on whole pixels (the 2^19-px grids,
+    whose differences are multiples of ½ px: exact far beyond, to 2^24 px)."""
+    fine = 0.0
+    for _, (xy, gx, gy, size), _ in block_cases():
+        if _whole_pixels(xy):
+            continue
+        far = max(np.abs(xy).max(), np.abs(gx).max() + size, np.abs(gy).max() + size)
+        fine = max(fine, float(far))
+    assert fine < FLOAT64_REACH, fine  # the check's own cases: float64 is exact on them
+    return (
+        f"8.1: float64 holds E exactly for vertices on the 1/256 grid and centres within "
+        f"2^17 = {FLOAT64_REACH:,} px of the origin; the check's cases lie within "
+        f"{fine:,.0f} px, or have their vertices on whole pixels (its 2^19-px blocks)"
+    )
+
+
+def pixel_words(xy, row: int, col: int) -> str:
+    """Why the triangle covers pixel (row, col) or not: its centre against each edge (r173 D1:
+    the scene's caption gave the block's verdict only, not why its wrongly filled pixel is
+    wrong, a centre exactly on a right edge)."""
+    edges = _edge_table(xy, col, row, 1)
+    centre = vec(edges[0]["max"][:2])
+    failing = next((e for e in edges if not e["pass"].any()), None)
+    if failing is None:
+        return f"its centre {centre} passes every edge: the triangle covers it"
+    if failing["max"][2] == 0:
+        return (f"its centre {centre} lies exactly on edge {failing['name']}, and the top-left "
+                "rule excludes it (which kind of edge is it, with y pointing down?): the "
+                "triangle does not cover it")  # fmt: skip
+    return (f"its centre {centre} lies outside edge {failing['name']} (E = "
+            f"{num(failing['max'][2])} px²): the triangle does not cover it")  # fmt: skip
