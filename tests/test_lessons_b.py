@@ -2534,7 +2534,9 @@ def test_10_review_r26_hiz_question_held_text_and_sources():
     assert "holds the cleared depth" not in md  # r52 10-1: the partly-covered trap is held too
     assert "GL_GREATER" in md and "reversed-Z" in md and "for the rest of the frame" in md
     assert "US 11,176,734" in md and "Persson, *Depth in-depth*" not in md  # r36: sourced
-    assert "Giesen" not in md and "sort-middle" in md
+    # r176 10-3: Giesen is cited once, for what part 6 describes (a fixed block per clock)
+    assert md.count("Giesen") == 1 and "sort-middle" in md
+    assert "Giesen, *A trip through the Graphics Pipeline 2011*, part 6" in md
     ns = lesson("10_tiles_and_hierarchical_z")
     assert ns.same_path and "tiled" not in ns.drawn_orders
 
@@ -3183,3 +3185,35 @@ def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
     assert 5.5 < ns.early_ratio < ns.fill_ratio["256²"]
     assert f"falls only to {ns.early_ratio:.1f}" in ns.FILL_TEXT
     assert "an addition and a subtraction" in ns.FILL_TEXT  # 06-2: the carry, in the text
+
+
+def test_10_r176_items():
+    """Review r176, lesson 10: tile-based deferred GPUs remove hidden *opaque* geometry
+    (PowerVR's recommendations, 10-2); the test count is a proxy for a rasteriser that tests a
+    fixed block per clock (10-3, 10-11); Greene's pyramid and the bounding-box test (10-10); the
+    Mesa and specification detail folded (10-12); the simulator's own Hi-Z not explained
+    (10-14); the exercise notebook named (10-15); two path panels (10-4) and the Hi-Z tiles
+    drawn, through helpers (10-5, 10-13)."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    cells = cells["cells"]
+    md = " ".join(" ".join("".join(c["source"]) for c in cells
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    code = ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
+    assert "for **opaque** triangles" in md and "occluded (opaque) geometry" in md
+    assert "*PowerVR Performance Recommendations*" in md and "Do Not Use Discard" in md
+    assert "Hardware pays for the **test count**" not in md and "**per clock**" in md
+    assert "*Hierarchical Z-Buffer Visibility*, 1993) keep a **pyramid**" in md
+    assert "**bounding box**" in md and "skipped whole" in md
+    assert "saves *it* work" not in md
+    assert "(Exercise 8.1, in the exercise notebook `exercises/08_tiles.ipynb`" in md
+    # the trivia stand inside <details>, the answers outside
+    for words in ("`nr_empty_64`", "US 11,176,734", "| OpenGL 4.6 |", "POWER8"):
+        where = next(t for t in md.split("</details>") + code if words in t)
+        assert "<details>" in where and where.index("<details>") < where.index(words), words
+    assert "in one line: OpenGL, Direct3D and Vulkan" in md
+    path_cell = next(c for c in code if "plot_walk_path(" in c)
+    assert "1, 2, figsize=(9," in path_cell and "LineCollection" not in path_cell
+    assert any("plot_early_z_panels(" in c for c in code)
+    assert not any("(as titled)" in c for c in code)

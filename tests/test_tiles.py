@@ -518,3 +518,24 @@ def test_a_partial_block_beyond_the_box_tests_and_shows_all_its_pixels():
         tr.rasterize(tri, 16, 16, method="tiled").coverage, trace.coverage_at(-1)
     )
     assert any(c.endswith("16 pixel tests, 15 covered") for c in captions)  # all inside
+
+
+def test_an_accepted_1x1_block_says_its_pixel_test_passed():
+    """Review r176 10-1: the caption of an accepted 1×1 block said "1 pixel filled with no pixel
+    test", while lesson 10 (cell 6) and the counters count that corner test as the pixel test
+    (pixel_tests = every 1×1 block; pixels_accepted = pixels of larger accepted blocks only).
+    A larger accepted block still fills its pixels with no test of their own."""
+    xy = [[3.3, 2.1], [60.2, 14.7], [20.9, 58.4]]  # lesson 10's triangle
+    fill = tr.rasterize(tr.Triangle(xy), 64, 64, method="tiled", block_sizes=(16, 4, 1), trace=True)
+    b, edges = fill.trace.blocks, fill.trace.edges
+    accepted = b.kind_code == 1
+    ones = [b.caption(k, edges) for k in np.flatnonzero(accepted & (b.size == 1))]
+    larger = [b.caption(k, edges) for k in np.flatnonzero(accepted & (b.size > 1))]
+    assert ones and larger
+    assert all("its pixel test passed, the pixel is written" in c for c in ones)
+    assert not any("no pixel test" in c for c in ones)
+    assert all("filled with no pixel test" in c and "passed" not in c for c in larger)
+    # the counters agree with the words: each accepted 1x1 block is one of the pixel tests
+    c = b.counters
+    assert c.pixel_tests == c.empty[-1] + c.full[-1] and len(ones) == c.full[-1]
+    assert c.pixels_accepted == int(fill.coverage.sum()) - len(ones)

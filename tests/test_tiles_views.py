@@ -566,3 +566,34 @@ def test_unvisited_children_of_a_partial_block_are_not_its_orange(explorer):
     assert not explorer.pending[b]
     explorer.level.value = 1  # a whole level: nothing pending
     assert explorer.pending is None
+
+
+def test_walk_path_splits_steps_from_jumps(fill, ax):
+    """Review r176 10-4: the path through one level's blocks, steps solid, jumps dashed, both
+    ends marked; every visit of the level is on it."""
+    art = tp.plot_walk_path(ax, fill, "morton", level=-1)
+    blocks = fill.trace.blocks
+    n = int((blocks.level == len(blocks.block_sizes) - 1).sum())
+    assert art.blocks == n == len(art.steps.get_segments()) + len(art.jumps.get_segments()) + 1
+    assert len(art.jumps.get_segments()) > 0 and len(art.handles) == len(art.labels) == 3
+
+
+def test_early_z_panels_draw_the_hi_z_tiles_and_say_the_key():
+    """Review r176 10-5: the Hi-Z panel draws the GPU's tiles; the key says what a colour
+    counts in words (not "as titled")."""
+    clip = np.array([[[-1, -1, 0.4, 1], [1, -1, 0.4, 1], [0, 1, 0.4, 1]],
+                     [[-1, -1, -0.4, 1], [1, -1, -0.4, 1], [0, 1, -0.4, 1]]], float)  # fmt: skip
+    frame = tr.render(clip, 48, 32, trace=True)
+    fig, axes = plt.subplots(1, 3)
+    try:
+        key = tp.plot_early_z_panels(axes, frame)
+        labels = [t.get_text() for t in key.get_texts()]
+        assert any("1 fragment in the pixel" in t for t in labels)
+        assert any(f"{frame.trace.hiz.tile}×{frame.trace.hiz.tile} tiles" in t for t in labels)
+        assert not any("as titled" in t for t in labels)
+        lines = [[c for c in a.collections if type(c).__name__ == "LineCollection"] for a in axes]
+        grids = lines[0]
+        assert grids and not lines[1]  # the tiles on the Hi-Z panel only
+        assert len(grids[-1].get_segments()) == 48 // 8 + 1 + 32 // 8 + 1
+    finally:
+        plt.close(fig)

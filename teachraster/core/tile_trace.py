@@ -280,10 +280,15 @@ class TileTrace:
             low = ", ".join(
                 f"{n} = {value_text(v * self.px2_per_unit2)}" for n, v in zip(name, self.e_min[b])
             )
-            why = (
-                f"every edge passes at its least inside corner ({low}): accepted, "
-                f"{rows * cols:,} pixel{'s' if rows * cols != 1 else ''} filled with no pixel test"
-            )
+            if s == 1:  # its one corner is its centre: this test is the pixel test (counted so)
+                why = f"every edge passes at its centre ({low}): accepted, its pixel test passed, "
+                why += "the pixel is written"
+            else:
+                why = (
+                    f"every edge passes at its least inside corner ({low}): accepted, "
+                    f"{rows * cols:,} pixel{'s' if rows * cols != 1 else ''} filled with no "
+                    "pixel test"
+                )
         else:
             names = [n for n, c in zip(name, self.crossing[b]) if c]
             crossing = " and ".join([", ".join(names[:-1]), names[-1]] if len(names) > 1 else names)

@@ -160,8 +160,11 @@ from .tiles import (
     plot_block_path,
     plot_blocks,
     plot_early_z,
+    plot_early_z_panels,
     plot_hierarchy,
     plot_traversal,
+    plot_walk_path,
+    zoom_on_block,
 )
 from .views import ComparisonView, FillView, InterpolationView
 
@@ -222,6 +225,7 @@ __all__ = [
     "plot_current_pixel",
     "plot_depth",
     "plot_early_z",
+    "plot_early_z_panels",
     "plot_edge_values",
     "plot_error_heatmap",
     "plot_filters",
@@ -238,6 +242,8 @@ __all__ = [
     "plot_raster_line",
     "plot_split",
     "plot_traversal",
+    "plot_walk_path",
+    "zoom_on_block",
     "plot_triangle",
     "plot_visit_order",
     "use_style",

@@ -582,3 +582,109 @@ def plot_block_path(
     size = blocks.block_sizes[level]
     ax.set_title(f"{traversal}: {len(order)} blocks of {size}×{size}")
     return result
+
+
+@dataclass
+class WalkPathArtists(Artists):
+    """The steps, jumps and ends of a :func:`plot_walk_path`; ``handles`` and ``labels`` key
+    them (one key for several panels)."""
+
+    steps: LineCollection
+    jumps: LineCollection
+    start: Line2D
+    end: Line2D
+    blocks: int
+
+    @property
+    def handles(self) -> list:
+        jump = Line2D([], [], color="black", ls=self.jumps.get_linestyle()[0], lw=1.6)
+        return [self.start, self.end, jump]
+
+    labels = ("first block", "last block", "jump (next row, next parent)")
+
+
+def plot_walk_path(ax, fill, traversal: str = "scanline", *, level: int = -1) -> WalkPathArtists:
+    """One level's blocks, coloured by kind, and the walk's path through them, for a projector.
+
+    Steps to a neighbouring block are solid; jumps (from the last child of one parent to the
+    first of the next, or from one row's end to the next row) are dashed and thinner, so that
+    they do not hide the blocks they cross; a filled dot marks the first block, a square the
+    last. ``level`` indexes ``block_sizes`` (default: the smallest).
+    """
+    _, blocks = tile_trace(fill, "plot_walk_path")
+    level = range(len(blocks.block_sizes))[level]
+    size = blocks.block_sizes[level]
+    plot_pixel_grid(ax, *fill.coverage.shape[::-1], ticks=False)
+    plot_blocks(ax, fill, level=level, traversal=traversal, legend=False)
+    path = plot_block_path(ax, fill, traversal, level=level, numbers=False)
+    px, py = path.path.get_data()
+    path.path.set_visible(False)  # redrawn below: steps and jumps apart
+    segments = np.c_[px[:-1], py[:-1], px[1:], py[1:]].reshape(-1, 2, 2)
+    jump = np.hypot(np.diff(px), np.diff(py)) > size * np.sqrt(2) + 1e-9  # beyond a neighbour
+    lines = [
+        LineCollection(segments[kind], colors="black", linestyles=ls, linewidths=width,
+                       alpha=alpha, zorder=4)
+        for kind, ls, width, alpha in ((~jump, "-", 2.6, 1.0), (jump, (0, (2.5, 1.5)), 1.8, 0.9))
+    ]  # fmt: skip
+    for line in lines:
+        ax.add_collection(line)
+    start = ax.plot(px[0], py[0], "o", ms=12, color="black", zorder=6)[0]
+    end = ax.plot(px[-1], py[-1], "s", ms=11, mfc="white", mec="black", mew=2, zorder=6)[0]
+    ax.set_title(traversal)
+    return WalkPathArtists(*lines, start, end, len(px))
+
+
+def plot_early_z_panels(axes, frame, kinds=("hi_z", "early_z", "shaded"), *, grid: bool = True):
+    """One :func:`plot_early_z` panel per kind, zoomed on the covered pixels, with one key.
+
+    Each panel says what it counts; the key says what a colour means in plain words. With
+    ``grid`` the Hi-Z panel draws the GPU's tiles (``frame.trace.hiz.tile`` pixels a side),
+    faintly, so that a block rejected whole shows as whole tiles. Returns the key (a figure
+    legend below the panels).
+    """
+    rows, cols = np.nonzero(frame.coverage)
+    tile = frame.trace.hiz.tile
+    for kind, ax in zip(kinds, axes):
+        art = plot_early_z(ax, frame, kind, colorbar=False)
+        ax.set(xlim=(cols.min() - 4, cols.max() + 5), ylim=(rows.max() + 5, rows.min() - 4))
+        total, what = ax.get_title().split(" fragments ", 1)
+        ax.set_title(f"{what}:\n{total} fragments", fontsize=14)
+        if grid and kind == "hi_z":  # the tiles Hi-Z keeps one farthest depth for
+            height, width = frame.coverage.shape
+            segs = [[(x, 0), (x, height)] for x in range(0, width + 1, tile)]
+            segs += [[(0, y), (width, y)] for y in range(0, height + 1, tile)]
+            ax.add_collection(LineCollection(segs, colors="0.35", linewidths=0.7, zorder=0.8))
+    one, two = (art.image.cmap(art.image.norm(v)) for v in (1, 2))
+    handles = [
+        Patch(color=one, label="1 fragment in the pixel, of the kind its panel's title names"),
+        Patch(color=two, label="2 fragments in the pixel, both shaded (right panel only)"),
+        Patch(color=tint(COLORS["grid"], 0.3), label="covered: no fragment of that kind"),
+    ]
+    if grid:
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color="0.35",
+                lw=0.7,
+                label=f"left: the {tile}×{tile} tiles Hi-Z tests a triangle in",
+            )
+        )
+    return axes[0].figure.legend(handles=handles, loc="outside lower center", ncols=1,
+                                 fontsize=13)  # fmt: skip
+
+
+def zoom_on_block(ax, row: int, col: int, size: int = 16, *, every: int = 4) -> None:
+    """Zoom ``ax`` (a pixel picture) on the ``size`` × ``size`` block at pixel (row, col).
+
+    Each pixel is outlined thinly in white above the blocks (a 1×1 block is a pixel, and
+    64 pixels across a panel were too small to tell apart on a projector); ticks every
+    ``every`` pixels sit on pixel centres, as in the other panels.
+    """
+    ax.set(xlim=(col, col + size), ylim=(row + size, row))
+    ticks = np.arange(0, size, every)
+    ax.set_xticks(col + ticks + 0.5, labels=[str(col + k) for k in ticks])
+    ax.set_yticks(row + ticks + 0.5, labels=[str(row + k) for k in ticks])
+    for k in range(size + 1):  # above the blocks (zorder 2.5)
+        ax.axvline(col + k, color="white", lw=1.0, zorder=4)
+        ax.axhline(row + k, color="white", lw=1.0, zorder=4)
