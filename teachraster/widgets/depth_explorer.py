@@ -222,8 +222,11 @@ class DepthPrecisionExplorer:
         self.keep = widgets.Button(description="keep as reference",
                                    tooltip="the grey curve becomes the one on show")  # fmt: skip
         self.keep.on_click(lambda _: self.keep_reference())
-        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse,
-                                 self.keep], layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
+        # the check box and the button wrap together: at 1024 x 768 and 150 % each control
+        # on a line of its own made four rows (at most three fit beside the picture)
+        toggles = widgets.HBox([self.reverse, self.keep])
+        controls = widgets.HBox([labelled("format", self.format), self.near, toggles],
+                                layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
         self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
         if self.backend != "ipympl":
             # drawn while the kernel idles; a draft here is the full picture, so a release
