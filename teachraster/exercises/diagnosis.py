@@ -786,10 +786,11 @@ def _named(spec: Exercise, m: Mistake, r: Result) -> tuple[str, str]:
 
 
 def diagnose(
-    spec: Exercise, results: list[Result], params: tuple = ()
+    spec: Exercise, results: list[Result], params: tuple = (), reads: frozenset = frozenset()
 ) -> dict[int, tuple[str, str]]:
     """(kind, explanation) for each failing case of ``results``, by index (module docstring);
-    ``params``: the names of the student's function's arguments."""
+    ``params``: the names of the student's function's arguments; ``reads``: the names its
+    code reads (a mistake with :attr:`~.exercise.Mistake.reads` is named only among them)."""
     failing = [r for r in results if not r.ok]
     if not failing:
         return {}
@@ -804,7 +805,8 @@ def diagnose(
         words = _NAN_WORDS if nan else (spec.constant or constant_words)(value)
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
     rounded = rounded_mistake()
-    mistakes = spec.all_mistakes() + [rounded, low_precision_mistake(spec)]
+    mistakes = [m for m in spec.all_mistakes() if m.reads is None or m.reads in reads]
+    mistakes += [rounded, low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     if all(run_checker(lambda r=r: _whole(r.got), False) for r in failing):
         # rounding to N decimals shows only in an answer with a fraction: whole numbers
