@@ -19,7 +19,9 @@ explain it, in this order:
    float32's numbers is also compared with the mistake computed on the case's numbers as
    float32 holds them (r164 F1: abs(E) 100 000 px out, where float32 moves the vertices).
    A mistake with a :attr:`~.exercise.Mistake.parameter` (an ε, a factor) is named only
-   where that parameter is one number on every failing case it fits.
+   where that parameter is one number on every failing case it fits; one with
+   :attr:`~.exercise.Mistake.reads` only where the student's code reads that name (r175 B5:
+   ``np.linalg.det``, whose answers are a bare solve's).
 3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
    its answer and agrees with the most answers overall, provided it agrees with four answers
    in five (else its answer here is a coincidence, frequent where answers are few: three

@@ -336,7 +336,9 @@ def draw_weights(ax, case, got):
     ax.set_xticks(x, [f"v{k + 1}\nw = {w[k]:.3g}" for k in range(3)], fontsize="x-small")
     ax.set_ylabel("weight")
     ax.axhline(0, color="black", linewidth=0.5)
-    artists.append(ax.legend(fontsize="x-small"))
+    low, high = ax.get_ylim()  # room above the bars for the legend and the note (r175 D11)
+    ax.set_ylim(low, high + 0.6 * (high - low))
+    artists.append(ax.legend(fontsize="x-small", loc="upper right"))
     return artists
 
 
