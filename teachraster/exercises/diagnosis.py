@@ -19,7 +19,9 @@ explain it, in this order:
    float32's numbers is also compared with the mistake computed on the case's numbers as
    float32 holds them (r164 F1: abs(E) 100 000 px out, where float32 moves the vertices).
    A mistake with a :attr:`~.exercise.Mistake.parameter` (an ε, a factor) is named only
-   where that parameter is one number on every failing case it fits.
+   where that parameter is one number on every failing case it fits; one with
+   :attr:`~.exercise.Mistake.reads` only where the student's code reads that name (r175 B5:
+   ``np.linalg.det``, whose answers are a bare solve's).
 3. **A mistake that gives this answer.** Otherwise each failure gets the mistake that gives
    its answer and agrees with the most answers overall, provided it agrees with four answers
    in five (else its answer here is a coincidence, frequent where answers are few: three
@@ -786,10 +788,11 @@ def _named(spec: Exercise, m: Mistake, r: Result) -> tuple[str, str]:
 
 
 def diagnose(
-    spec: Exercise, results: list[Result], params: tuple = ()
+    spec: Exercise, results: list[Result], params: tuple = (), reads: frozenset = frozenset()
 ) -> dict[int, tuple[str, str]]:
     """(kind, explanation) for each failing case of ``results``, by index (module docstring);
-    ``params``: the names of the student's function's arguments."""
+    ``params``: the names of the student's function's arguments; ``reads``: the names its
+    code reads (a mistake with :attr:`~.exercise.Mistake.reads` is named only among them)."""
     failing = [r for r in results if not r.ok]
     if not failing:
         return {}
@@ -804,7 +807,8 @@ def diagnose(
         words = _NAN_WORDS if nan else (spec.constant or constant_words)(value)
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
     rounded = rounded_mistake()
-    mistakes = spec.all_mistakes() + [rounded, low_precision_mistake(spec)]
+    mistakes = [m for m in spec.all_mistakes() if m.reads is None or m.reads in reads]
+    mistakes += [rounded, low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     if all(run_checker(lambda r=r: _whole(r.got), False) for r in failing):
         # rounding to N decimals shows only in an answer with a fraction: whole numbers

@@ -62,6 +62,12 @@ class Mistake:
         this case (an ε added to E, a constant factor); the mistake is named only where that
         number is the same on every failing case it fits (r164: an "ε" fitted case by case
         took a constant factor, whose ε grows with E, for a guard against dividing by 0).
+    reads : str, optional
+        A name the student's code must read (a global or an attribute, such as ``det`` of
+        ``np.linalg.det``) for the mistake to be named: two mistakes whose answers are the
+        same on every case (r175 B5: ``det(M) == 0`` before a solve, and a solve whose
+        LinAlgError is the test) are told apart by what the code reads
+        (:func:`.package_answers.names_read`).
     """
 
     kind: str
@@ -74,6 +80,7 @@ class Mistake:
     without: Callable | None = field(default=None, repr=False)  # (part) -> gives without it
     must_fit: Callable | None = field(default=None, repr=False)
     parameter: Callable | None = field(default=None, repr=False)
+    reads: str | None = None
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words
@@ -228,6 +235,10 @@ class Exercise:
         for n; r46: rerunning the same cell printed them); :mod:`.tries` counts the answers.
         ``text`` may be a compiled ``re`` pattern (``hint`` its replacement) where the telling
         words hold the case's numbers (a crossing's t).
+    slow : str, optional
+        What the time-out words ask in place of :data:`.running.PER_PIXEL` ("a Python call
+        per pixel?"), for a function called once per point, which has no pixels (r175 B7:
+        ``barycentric``); None: those words.
     inputs_drawn : bool
         ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
         lines): the untouched stub's figure draws the first case so. False (default): the
@@ -259,6 +270,7 @@ class Exercise:
     once: Sequence[tuple[str, str]] = ()
     hints: Sequence[tuple[str, str]] = ()
     inputs_drawn: bool = False
+    slow: str | None = None
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded (the same mistakes on

@@ -255,9 +255,15 @@ def _epsilon_words(args, expected, got) -> str:
     )
 
 
+#: Weights this large on a zero-area triangle are elimination's rounding noise (about 1e14):
+#: a solver's, not the student's own arithmetic (r175 B4: no solver was said to a student
+#: who had none).
+SOLVER_NOISE = 1e6
+
+
 def _zero_area_words(args, expected, got) -> str:
     g = np.asarray(got, dtype=float)
-    if np.isfinite(g).all():
+    if np.isfinite(g).all() and np.abs(g).max() >= SOLVER_NOISE:
         # r153 D3-1: a solver's LinAlgError is raised only on an exact 0 pivot; rounding
         # left a tiny one here, and the "weights" came out huge
         return (
@@ -265,6 +271,12 @@ def _zero_area_words(args, expected, got) -> str:
             "on one line (a p on it has infinitely many weights, any other none), and no "
             "solver's error is a test of that; test the area exactly, E == 0 (exact on the "
             "1/256-px grid), and raise ValueError"
+        )
+    if np.isfinite(g).all():
+        return (
+            ": you returned weights for a zero-area triangle: these three vertices lie on one "
+            "line (a p on it has infinitely many weights, any other none); test the area "
+            "exactly, E == 0 (exact on the 1/256-px grid), and raise ValueError"
         )
     return (
         ": your answer is NaN or infinity (a division by 0), but these three vertices lie on "
@@ -343,10 +355,69 @@ def _float32_off_grid_words(args, expected, got) -> str:
     )
 
 
+def _epsilon_on_zero(args, expected, got) -> float | None:
+    """δ when a zero-area case's answer is E(...)/(0 + δ) for a small δ > 0, the ε of a guard
+    ``E + 1e-9`` (0 where p lies on the line: every E(...) is 0, and so is every weight),
+    else None (r175 B4: told "your solver", which this student has not)."""
+    if not isinstance(expected, str) or isinstance(got, str):
+        return None
+    xy, p = args
+    g, areas = np.asarray(got, dtype=float), _areas(xy, p)
+    if g.shape != (3,) or not np.isfinite(g).all():
+        return None
+    if not areas.any():
+        return 0.0 if not g.any() else None
+    k = int(np.argmax(np.abs(areas)))
+    if g[k] == 0:
+        return None
+    delta = areas[k] / g[k]
+    if not 0 < delta <= 1e-3 or not np.allclose(g, areas / delta, rtol=1e-9, atol=0):
+        return None
+    return float(delta)
+
+
+def _epsilon_on_zero_words(args, expected, got) -> str:
+    xy, p = args
+    delta = _epsilon_on_zero(args, expected, got)
+    if delta == 0:
+        turned = ("p lies on that line, so every E(...) is 0 as well, and your ε turned each "
+                  "0/0 into 0/ε = 0")  # fmt: skip
+    else:
+        turned = (f"p lies off it, and your ε (about {delta:.0e}) turned each E(...)/0 into E(...)/ε, weights "
+                  f"of up to {np.abs(_areas(xy, p)).max() / delta:.0e}")  # fmt: skip
+    return (
+        ": you divided by E(v1, v2, v3) plus a small number (a guard against dividing by 0?). "
+        f"Here E(v1, v2, v3) = 0: these three vertices lie on one line; {turned}, and so hid the "
+        "zero area instead of refusing it. Such a triangle has no weights (a p on its line has "
+        "infinitely many, any other none): test E == 0 exactly (exact on the 1/256-px grid) "
+        "and raise ValueError, with no ε"
+    )
+
+
+def _reads_det_words(args, expected, got) -> str:
+    return (
+        ": your code reads np.linalg.det, but numpy computes a determinant by LU elimination "
+        "in rounded arithmetic: on these three vertices, which lie on one line, it comes out "
+        "as rounding noise, not 0, so det(...) == 0 let this triangle through and the solve "
+        "returned noise as weights. A rounded determinant is no exact area test; E(v1, v2, "
+        "v3) of lesson 02, from differences of the coordinates, is exact on the 1/256-px "
+        "grid: test E == 0 and raise ValueError"
+    )
+
+
 ZERO_AREA_MISTAKES = [
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(-1.0))),
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(1.0))),
     Mistake("float32", _float32_off_grid_words, fits=_float32_off_grid),
+    # r175 B4: ``E + 1e-9`` on a zero area; named only where it gives every zero-area answer
+    Mistake("epsilon hid the zero area", _epsilon_on_zero_words, only_whole=True,
+            fits=lambda a, e, g: (None if not isinstance(e, str)
+                                  else _epsilon_on_zero(a, e, g) is not None)),
+    # r175 B5: ``if np.linalg.det(M) == 0`` before a solve: named where the code reads det
+    Mistake("rounded determinant", _reads_det_words, reads="det",
+            fits=lambda a, e, g: (isinstance(e, str) and not isinstance(g, str)
+                                  and bool(np.isfinite(np.asarray(g, float)).all())
+                                  and float(np.abs(np.asarray(g, float)).max()) >= SOLVER_NOISE)),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
     Mistake("refused a proper triangle", _refused_words,
@@ -488,7 +559,7 @@ def _draw_bary(ax, case, got):
     """The weights as bars, expected beside yours, and beside them the triangle with p and
     the sub-triangle opposite each vertex, whose share of the whole is that vertex's weight
     (r39 03-5: the bars alone did not say which case they were)."""
-    from .drawing import draw_values
+    from .drawing import difference_note, draw_values
 
     _, (xy, p), expected = case
     if got is None or isinstance(expected, str) or isinstance(got, str):
@@ -506,7 +577,7 @@ def _draw_bary(ax, case, got):
             said = f"zero area: no weights\n(E(v1, v2, v3) = {num(_area(xy))})"
             if not isinstance(got, str):  # r164: one number a line (three ran under the inset)
                 said += "\n\nyours:\n" + "\n".join(
-                    f"λ{k + 1} = {x:.3g}" for k, x in enumerate(np.asarray(got, dtype=float))
+                    f"λ{k + 1} = {x + 0.0:.3g}" for k, x in enumerate(np.asarray(got, dtype=float))
                 )
         else:
             said = f"E(v1, v2, v3) = {num(_area(xy))}:\nits weights are\n{vec(expected)}"
@@ -515,11 +586,8 @@ def _draw_bary(ax, case, got):
                            fontsize="small")]  # fmt: skip
         return artists + _draw_triangle_and_p(inset, xy, p)
     artists = draw_values(ax, ["λ1", "λ2", "λ3"], expected, got)
-    error = None if got is None else float(np.max(np.abs(np.asarray(got, float) - expected)))
-    if error is not None and 0 < error < 1e-3 * max(1.0, float(np.abs(expected).max())):
-        # r153 E16: a float32 failure drew identical bars that said nothing
-        artists.append(ax.text(0.02, 0.86, f"yours differ by {error:.1g}:\nequal at this scale",
-                               transform=ax.transAxes, fontsize="x-small", va="top"))  # fmt: skip
+    if got is not None:  # r153 E16: a float32 failure drew identical bars that said nothing
+        artists += difference_note(ax, expected, got)
     ax.set_xlim(-0.6, 6.0)  # the right part of the axes holds the triangle
     ax.set_ylabel("weight")
     low, high = ax.get_ylim()  # r84 03-4: room above the bars for the legend
@@ -594,16 +662,23 @@ BARYCENTRIC_ANSWERS = (
                     "the values (1, 0, 0) at the vertices is λ1 itself)")
       for f, how in ((plane_equation, "from A, B, C, D"),
                      (attribute_plane, "from the set-up matrix"))),
-    PackageAnswer(setup_matrix, what="the solve of the triangle's equations (M maps p − v1 "
-                  "to λ2 and λ3)"),
+    # r175 F2: M maps the value differences (f2 − f1, f3 − f1) to the plane's gradient
+    # (lesson 03 §3, g = M(f2 − f1, f3 − f1)); p − v1 goes through its transpose
+    PackageAnswer(setup_matrix, what="the set-up matrix M of lesson 03, which maps the value "
+                  "differences (f2 − f1, f3 − f1) to the plane's gradient: its columns are "
+                  "the gradients of λ2 and λ3, so (λ2, λ3) = Mᵀ(p − v1)"),
 )  # fmt: skip
+
+
+#: r175 B7: 3.1 and 3.2 are called once per point, and have no pixels to loop over
+ONE_POINT = " (one call computes one point's three weights: it should take microseconds)"
 
 
 BARYCENTRIC = Exercise(
     "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
     same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
     float32=bary_float32, float32_words=bary_float32_words, answers=BARYCENTRIC_ANSWERS,
-    draw=_draw_bary, call=call_barycentric, hints=(
+    draw=_draw_bary, call=call_barycentric, slow=ONE_POINT, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student (r153 D3-6: the
         # whole number, "= 9.343", not up to its decimal point)
@@ -719,4 +794,5 @@ PERSPECTIVE = Exercise(
     explain_perspective, _persp_rule, PERSPECTIVE_MISTAKES, float32=persp_float32,
     float32_words=persp_float32_words,
     answers=(PackageAnswer(perspective_weights),), draw=_draw_persp,
+    slow=" (one call computes one point's value: it should take microseconds)",
 )  # fmt: skip

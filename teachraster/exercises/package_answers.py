@@ -438,6 +438,13 @@ def _codes(fn, depth: int = 4) -> list:
     return [c for _, codes, _ in _walk(fn, depth) for c in codes]
 
 
+def names_read(fn, depth: int = 4) -> frozenset:
+    """The global and attribute names that the code of ``fn``, of the functions nested in it
+    and of its own helpers reads (``det`` of ``np.linalg.det``): what
+    :attr:`~.exercise.Mistake.reads` asks of it."""
+    return frozenset(name for code in _codes(fn, depth) for name in code.co_names)
+
+
 @lru_cache(maxsize=4096)  # the package's codes are read again at every check
 def _print(code) -> tuple:
     """What a copy of ``code`` keeps: its instructions with the names and constants they read

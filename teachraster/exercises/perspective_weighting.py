@@ -24,6 +24,7 @@ from ..study.hardcases import CASES
 from .answers import as_numbers
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .interpolation import ONE_POINT
 from .scalars import num, vec
 from .tolerance import all_close
 
@@ -266,6 +267,47 @@ def _nudge_words(args, expected, got) -> str:
     )
 
 
+def _nudge_in_w(args, got) -> float | None:
+    """δ when ``got`` is λ_i/(w_i + δ), normalised, for one small δ > 0 (a guard against
+    dividing by 0 added to each w: ``lam / (w + 1e-6)``), else None (r175 B: told to derive
+    again a derivation that was right)."""
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    g = np.asarray(got, dtype=float)
+    if g.shape != (3,) or not np.isfinite(g).all() or np.ptp(w) == 0:
+        return None
+    live = (lam != 0) & (g != 0)
+    if live.sum() < 2:
+        return None
+    # two weights with different w: λ_i/g_i ∝ w_i + δ, so their ratio ρ gives δ
+    i, j = max(((a, b) for a in np.flatnonzero(live) for b in np.flatnonzero(live) if a < b),
+               key=lambda ab: abs(w[ab[0]] - w[ab[1]]))  # fmt: skip
+    if w[i] == w[j]:
+        return None
+    rho = (lam[i] / g[i]) / (lam[j] / g[j])
+    if rho == 1:
+        return None
+    delta = float((w[i] - rho * w[j]) / (rho - 1))
+    if not 0 < delta <= 1e-3:
+        return None
+    return delta if np.allclose(g, _normalised(lam / (w + delta)), rtol=1e-9, atol=0) else None
+
+
+def _nudge_in_w_words(args, expected, got) -> str:
+    lam, w = args
+    error = float(np.max(np.abs(np.asarray(got, dtype=float) - expected)))
+    return (
+        f": you added a small number (about {_nudge_in_w(args, got):.0e}) to each w before "
+        "dividing by it (a guard against dividing by 0?): your derivation is right, but the "
+        f"ε moves the weights, most where a w is small (here by {error:.1e}); every w here "
+        "is positive, so divide by w itself"
+    )
+
+
+#: r175 B: an epsilon in each w, ``lam / (w + 1e-6)`` normalised
+NUDGED_W = Mistake("epsilon added to w", _nudge_in_w_words,
+                   fits=lambda a, e, g: _nudge_in_w(a, g) is not None,
+                   parameter=lambda a, e, g: _nudge_in_w(a, g), only_whole=True)  # fmt: skip
+
 #: r153 D3-4: an epsilon in the normaliser, ``q / (q.sum() + 1e-9)``
 NUDGED = Mistake("epsilon added to the sum", _nudge_words,
                  fits=lambda a, e, g: _nudge(a, g) is not None,
@@ -277,7 +319,10 @@ SYMPTOMS = (
 
 
 def draw_weights(ax, case, got):
-    """Three groups of bars: λ, the expected μ and yours."""
+    """Three groups of bars: λ, the expected μ and yours, and how much yours differ where
+    the bars cannot show it (:func:`.drawing.difference_note`)."""
+    from .drawing import difference_note
+
     _, (lam, w), expected = case
     x = np.arange(3)
     artists = list(ax.bar(x - 0.27, lam, width=0.25, color="#c8c8c8", label="screen λ"))
@@ -286,20 +331,24 @@ def draw_weights(ax, case, got):
         wrong = not all_close(np.asarray(got, dtype=float), expected)
         artists += list(ax.bar(x + 0.27, np.clip(got, -2, 2), width=0.25,
                                color="#d7301f" if wrong else "#7fbf7f", label="yours"))  # fmt: skip
+        if wrong:
+            artists += difference_note(ax, expected, got, where=(0.02, 0.98))
     ax.set_xticks(x, [f"v{k + 1}\nw = {w[k]:.3g}" for k in range(3)], fontsize="x-small")
     ax.set_ylabel("weight")
     ax.axhline(0, color="black", linewidth=0.5)
-    artists.append(ax.legend(fontsize="x-small"))
+    low, high = ax.get_ylim()  # room above the bars for the legend and the note (r175 D11)
+    ax.set_ylim(low, high + 0.6 * (high - low))
+    artists.append(ax.legend(fontsize="x-small", loc="upper right"))
     return artists
 
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    [*variant_mistakes(_variants, MISTAKES), *PAIRINGS, NUDGED, *SYMPTOMS],
+    [*variant_mistakes(_variants, MISTAKES), *PAIRINGS, NUDGED, NUDGED_W, *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
-    draw=draw_weights, hints=(
+    draw=draw_weights, slow=ONE_POINT, hints=(
         # r39 03-3: the first wrong try printed the answer the task asks to work out
         ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "
          "weights μ and the three w (a point's screen x is x/w), then turn that around"),

@@ -192,6 +192,11 @@ def seconds_words(s: float) -> str:
     return f"{s:.2g} s" if s < 1 else f"{s:.3g} s"
 
 
+#: What the time-out words ask of a slow function; an exercise whose function is called once
+#: per point says its own (:attr:`.exercise.Exercise.slow`, r175 B7).
+PER_PIXEL = " (a Python call per pixel?)"
+
+
 def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = False) -> Outcome:
     """The outcome of a case stopped by its limits (``alarm``) or by the budget (None)."""
     where = f" on case {case}" if case else ""
@@ -201,7 +206,7 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
     if why == "budget":
         text = (
             f"the check's budget of {seconds_words(b.seconds)} of CPU ran out{where}: your "
-            "function is far slower than needed (a Python call per pixel?). "
+            f"function is far slower than needed{PER_PIXEL}. "
             "check(..., budget=30) gives it more time; a lecturer raises it for a class with "
             f"the environment variable {BUDGET_VARIABLE}"
         )
@@ -210,13 +215,13 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
         text = (
             f"one call of your function did not finish within {seconds_words(alarm.call)} of "
             f"CPU{where} (the most one call may take of the check's {seconds_words(b.seconds)}): "
-            "an endless loop, or far slower than needed (a Python call per pixel?)"
+            f"an endless loop, or far slower than needed{PER_PIXEL}"
         )
         kind = "timeout"
     elif why == "cpu":
         text = (
             f"your function did not finish within {seconds_words(alarm.seconds)} of CPU{where}: "
-            "an endless loop, or far slower than needed (a Python call per pixel?)"
+            f"an endless loop, or far slower than needed{PER_PIXEL}"
         )
         kind = "timeout"
     elif why == "wait":

@@ -33,8 +33,10 @@ def num(x: float, other: float | None = None) -> str:
     ('0.8', '0.8000000000000002')
     >>> num(25.0, 25.0000025), num(25.0000025, 25.0)
     ('25', '25.000003')
+    >>> num(-0.0), vec([1.0, -0.0, 0.0])
+    ('0', '(1, 0, 0)')
     """
-    x = float(x)
+    x = float(x) + 0.0  # r175 D12: -0.0 (0 over a negative area) printed "-0"
     if not np.isfinite(x):
         return repr(x)
     text = _readable(x, other is None)

@@ -17,9 +17,9 @@ import numpy as np
 
 from .diagnosis import Result, diagnose
 from .exercise import Exercise, content_key, copies
-from .package_answers import package_note, watching
+from .package_answers import names_read, package_note, watching
 from .report import Failure, Report
-from .running import SKIPPED, current, run_case, run_checker
+from .running import PER_PIXEL, SKIPPED, current, run_case, run_checker
 
 #: Outcome kinds after which the check stops (the time is spent).
 STOPS = ("timeout", "budget")
@@ -116,18 +116,21 @@ def check_exercise(spec: Exercise, fn) -> Report:
             ok = run_checker(lambda v=value, e=expected, a=args: bool(spec.same(v, e, a)), False)
             raw, key = returned.raw.get(k), returned.key(k)
             results.append(Result(k, args, expected, outcome.value, ok, raw, key))
-    said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()))
+    reads = run_checker(lambda: names_read(fn), frozenset())
+    said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()), reads)
     answers = {r.index: r.got for r in results}
     failures = []
     for k, (case, outcome) in enumerate(ran):
         label, _, expected = case
         if outcome.error is not None:
             draw = _drawer(spec, case, None)
-            failures.append(Failure(label, outcome.error, expected, None, draw, outcome.kind))
+            error = _slow_words(spec, outcome.error)
+            failures.append(Failure(label, error, expected, None, draw, outcome.kind))
         elif k in said:
             kind, text = said[k]
             got = answers[k]
             failures.append(Failure(label, text, expected, got, _drawer(spec, case, got), kind))
+    current().stopped = _slow_words(spec, current().stopped)
     stopped = current().stopped
     if scene is not None and stopped is not None:
         scene.blocked = f"not run: {stopped}"
@@ -143,6 +146,14 @@ def check_exercise(spec: Exercise, fn) -> Report:
         spec.name, failures, len(cases), False, example, stopped, len(ran), package,
         precision=precision, scene=scene,
     )  # fmt: skip
+
+
+def _slow_words(spec: Exercise, text: str | None) -> str | None:
+    """The time-out ``text`` with the exercise's own question of a slow function
+    (:attr:`~.exercise.Exercise.slow`)."""
+    if text is None or spec.slow is None:
+        return text
+    return text.replace(PER_PIXEL, spec.slow)
 
 
 def _low_precision(results) -> str | None:
