@@ -222,12 +222,12 @@ class DepthPrecisionExplorer:
         self.keep = widgets.Button(description="keep as reference",
                                    tooltip="the grey curve becomes the one on show")  # fmt: skip
         self.keep.on_click(lambda _: self.keep_reference())
-        # the check box and the button wrap together: at 1024 x 768 and 150 % each control
-        # on a line of its own made four rows (at most three fit beside the picture)
-        toggles = widgets.HBox([self.reverse, self.keep])
-        controls = widgets.HBox([labelled("format", self.format), self.near, toggles],
+        # the button on a line of its own, under the controls: in their row, at 1024 x 768 and
+        # 150 % (a 315-px column) it made a fourth line, or was cut beside the check box
+        controls = widgets.HBox([labelled("format", self.format), self.near, self.reverse],
                                 layout=widgets.Layout(flex_flow="row wrap"))  # fmt: skip
-        self.widget = widgets.VBox([title, controls, *info_widgets, self.display.widget])
+        self.widget = widgets.VBox([title, controls, widgets.HBox([self.keep]), *info_widgets,
+                                    self.display.widget])  # fmt: skip
         if self.backend != "ipympl":
             # drawn while the kernel idles; a draft here is the full picture, so a release
             # on one needs no picture from the kernel (issue 31: 106-126 ms after the release)
