@@ -206,14 +206,16 @@ def _words_by_kind(mistakes) -> dict:
     """Each single typical mistake's words (a table's combinations are named by their parts)."""
     out = {}
     for m in mistakes:
-        for single in m.mistakes() if isinstance(m, Knobs) else [m]:
+        knobs = isinstance(m, Knobs)
+        for single in m.mistakes() if knobs else [m]:
             if single.parts or not single.words:
                 continue
             words = single.words
             words = words.lstrip(" .:;") if isinstance(words, str) else words
             # r174 12-5: one kind, several words (weights swapped along x, y or both): the
             # table cannot tell which; the case's own explanation does (a non-str entry)
-            out[single.kind] = words if out.get(single.kind, words) == words else (words,)
+            same = not knobs or out.get(single.kind, words) == words
+            out[single.kind] = words if same else (words,)
     return out
 
 
