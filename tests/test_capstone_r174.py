@@ -190,8 +190,8 @@ def test_the_reversed_trilinear_weight_says_where_the_fraction_went():
     said = next(f.explanation for f in full.failures if f.kind == "weights swapped")
     hinted = apply_hints(said, NAMED_HINTS)
     assert "yours went to" not in hinted, hinted
-    assert "you gave the fraction λ − ⌊λ⌋ to level 0 (and the rest to level 1)" in hinted, hinted
-    assert "λ − ⌊λ⌋ = 0" not in hinted, hinted  # still a hint: the fraction's value is held
+    assert "yours grows as λ nears level 0 (the two levels' weights are swapped)" in hinted, hinted
+    assert "λ − ⌊λ⌋" not in hinted, hinted  # still a hint: the formula is held
 
 
 def _wrong_over(src, dst):  # dst over src

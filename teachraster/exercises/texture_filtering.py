@@ -297,13 +297,13 @@ BILINEAR_MISTAKES = [
 NAMED_HINTS = (
     (re.compile(r"texel centres are at \(i \+ ½\)/W, so x = u·W − ½ \(here [^()]*\)(?:, not u·W)?"),
      "where in u does texel i's centre lie, and so which x, in texels, is this u?"),
-    # r174 12-6: "yours went to level 0" was read as "yours is level 0" (it was level 1 alone)
     (re.compile(r" is the fraction [xy] − ⌊[xy]⌋(?: \(y − ⌊y⌋\))?; you gave it to"),
-     " must grow as the sample nears that texel; you gave that fraction to"),
+     " must grow as the sample nears that texel; yours went to"),
+    # r174 12-6: "yours went to level 0" was read as "yours is level 0" (it was level 1 alone)
     (re.compile(r"the weight of level (\d+) is the fraction λ − ⌊λ⌋ = [^;]*; you gave it to "
                 r"level (\d+)"),
-     r"the weight of level \1 must grow as λ nears that level; you gave the fraction "
-     r"λ − ⌊λ⌋ to level \2 (and the rest to level \1)"),
+     r"the weight of level \1 must grow as λ nears that level; yours grows as λ nears level "
+     r"\2 (the two levels' weights are swapped)"),
     (re.compile(r", level \d+ weighted by λ − ⌊λ⌋ = [^;:()]*"), " (with which weights?)"),
     ("(x = u·W, not u·W − ½)", "(where in u is a texel's centre?)"),
 )  # fmt: skip
