@@ -425,7 +425,8 @@ def test_a_wrapper_of_the_packages_answer_draws_the_frame_but_does_not_count(
     text = str(report)
     assert "pixels match the package's, but not counted" in text, text
     assert f"your {name} calls teachraster's {called}" in text, text
-    with pytest.raises(AssertionError, match="not counted"):
+    # r174 12-9: the assertion names the scene, the printed report says why (not counted)
+    with pytest.raises(AssertionError, match="does not pass: the report printed above"):
         report.assert_passed()
 
 

@@ -48,6 +48,10 @@ from .interrupt import (
 WAITING = 0.05
 #: No wait is ever longer than this (threading refuses larger timeouts).
 LONGEST = 1e6
+#: A case's wall-clock limits, in multiples of its CPU limit: one while it waits without
+#: computing, one in all (a machine too busy to give it CPU). The one place for both:
+#: :mod:`.running` derives every case's limits from them.
+WAIT_FACTOR, CASE_WALL_FACTOR = 5.0, 20.0
 
 
 def queued_clock(native_id: int):
@@ -97,8 +101,8 @@ class Alarm:
         #: the case's CPU when the call running now began (None: none runs)
         self.call = None if call is None else min(call, LONGEST)
         self.call_began = None
-        self.wait = min(5 * seconds if wait is None else wait, LONGEST)
-        self.cap = min(20 * seconds if cap is None else cap, LONGEST)
+        self.wait = min(WAIT_FACTOR * seconds if wait is None else wait, LONGEST)
+        self.cap = min(CASE_WALL_FACTOR * seconds if cap is None else cap, LONGEST)
         self.guard = guard
         self.active = False
         self.leaving = False  # set by the case's thread as it leaves the case: no more interrupts

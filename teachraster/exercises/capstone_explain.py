@@ -206,11 +206,16 @@ def _words_by_kind(mistakes) -> dict:
     """Each single typical mistake's words (a table's combinations are named by their parts)."""
     out = {}
     for m in mistakes:
-        for single in m.mistakes() if isinstance(m, Knobs) else [m]:
+        knobs = isinstance(m, Knobs)
+        for single in m.mistakes() if knobs else [m]:
             if single.parts or not single.words:
                 continue
             words = single.words
-            out[single.kind] = words.lstrip(" .:;") if isinstance(words, str) else words
+            words = words.lstrip(" .:;") if isinstance(words, str) else words
+            # r174 12-5: one kind, several words (weights swapped along x, y or both): the
+            # table cannot tell which; the case's own explanation does (a non-str entry)
+            same = not knobs or out.get(single.kind, words) == words
+            out[single.kind] = words if same else (words,)
     return out
 
 
@@ -267,10 +272,14 @@ def _depth(used, reference, pixel) -> str:
     why = _depth_mistake(used, depths, writes, yours, expected) or (
         "" if error else named_mistake(used, "depth_passes")
     )
+    from .tries import hints_spent
+
+    # r174 12-4: the rule is the repair of a tie mistake: said once the hints are spent
+    rule = ("strictly nearer than the depth last written" if hints_spent("depth_passes")
+            else "exercise 4's rule")  # fmt: skip
     return (f"the fragments of triangles {[r.triangle for r in records]} reach it in drawing "
             f"order with depths {vec(depths)} and depth writes {_bools(writes)}: {said}, the "
-            f"package's test passes {_bools(expected)} (strictly nearer than the depth last "
-            f"written){why}")  # fmt: skip
+            f"package's test passes {_bools(expected)} ({rule}){why}")  # fmt: skip
 
 
 def _depth_mistake(used, depths, writes, yours, expected) -> str:
@@ -288,7 +297,11 @@ def _depth_mistake(used, depths, writes, yours, expected) -> str:
         fits = run_checker(lambda: _fit_everywhere(used["depth_passes"], here), here)
         if not fits:  # r94 D12-1: two mistakes in one function: the one its own check finds
             fits = run_checker(lambda: _found_by_own_check(used["depth_passes"], here), [])
-    return f": {fits[0].words}" if len(fits) == 1 and isinstance(fits[0].words, str) else ""
+    if len(fits) != 1 or not isinstance(fits[0].words, str):
+        return ""
+    # staged as exercise 4's check stages it (r174 12-4), which counts this answer first
+    run_checker(lambda: own_report("depth_passes", used["depth_passes"]), None)
+    return _staged("depth_passes", f": {fits[0].words}")
 
 
 def _found_by_own_check(fn, mistakes) -> list:
@@ -431,19 +444,30 @@ def _resolve(used, reference, row, col) -> str:
 
 
 def _srgb_average(colours, ids, background, yours, ours) -> str | None:
-    """ "; words" when ``yours`` is the samples averaged as sRGB-encoded numbers (float, or
-    8-bit codes) and decoded again, instead of averaged in linear light, or None (r148 D12-3:
-    such a resolve was asked about its uncovered samples, which it handled right)."""
+    """ "; words" when ``yours`` averages in the wrong space, or None: the samples averaged as
+    sRGB-encoded numbers (float, or 8-bit codes) and decoded again (r148 D12-3), or, the other
+    way, decoded as if encoded, averaged and encoded again: exercise 6.3's ``resolve_srgb``,
+    which lesson 08 recommends for encoded samples (r174 12-1). Either was asked about its
+    uncovered samples, which it handled right."""
     try:
         got = np.asarray(yours, dtype=float).reshape(3)
     except (TypeError, ValueError):
         return None
     linear = np.where(np.asarray(ids)[:, None] >= 0, np.asarray(colours, dtype=float),
                       np.asarray(background, dtype=float))  # fmt: skip
+    if np.allclose(got, ours, rtol=TOL, atol=TOL):
+        return None
+    if _as_encoded(linear, got, ours):
+        return ("; you averaged as exercise 6.3's resolve_srgb does: your answer is the "
+                "samples decoded from sRGB, averaged and encoded again "
+                f"{vec(linear_to_srgb(srgb_to_linear(linear).mean(axis=0)))}, where the resolve "
+                f"is their plain mean {vec(ours)}: these samples are light already (the "
+                "pipeline's float colours, not an 8-bit sRGB buffer's), so 6.2's resolve is "
+                "the one wanted here; 6.3's decoding is for samples stored encoded")  # fmt: skip
     encoded = linear_to_srgb(np.clip(linear, 0.0, 1.0))
     as_float = srgb_to_linear(encoded.mean(axis=0))
     as_codes = srgb_to_linear(np.round(encoded * 255).mean(axis=0) / 255)
-    if np.allclose(as_float, ours, atol=1e-3) or np.allclose(got, ours, rtol=TOL, atol=TOL):
+    if np.allclose(as_float, ours, atol=1e-3):
         return None  # here the two averages agree: nothing to tell apart
     fits = np.allclose(got, as_float, rtol=1e-5, atol=1e-5) or np.allclose(got, as_codes, atol=2e-3)
     if not fits:
@@ -454,3 +478,12 @@ def _srgb_average(colours, ids, background, yours, ours) -> str | None:
             f"{vec(ours)}: encoded numbers are not light, so "
             "average the linear colours (each uncovered sample as the background) and leave "
             "the encoding to the display (lesson 12b §6)")  # fmt: skip
+
+
+def _as_encoded(linear: np.ndarray, got: np.ndarray, ours: np.ndarray) -> bool:
+    """Whether ``got`` is the samples (uncovered ones as the background) treated as encoded:
+    decoded, averaged, encoded again, where that differs from their plain mean ``ours``."""
+    light = linear_to_srgb(srgb_to_linear(linear).mean(axis=0))
+    if np.allclose(light, ours, atol=1e-3):
+        return False  # here the two averages agree: nothing to tell apart
+    return bool(np.allclose(got, light, rtol=1e-5, atol=1e-5))

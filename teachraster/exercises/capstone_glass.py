@@ -21,6 +21,7 @@ import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, apply_blend
 from . import tries
+from .blending import blend_answers
 from .exercise import Exercise, PackageAnswer
 from .front_to_back import as_rgba
 from .package_answers import package_note, watching
@@ -288,6 +289,12 @@ def _no_words(args, expected, got) -> str:
     return ""
 
 
+#: What the report says of the package's blend inside ``a_buffer``.
+BLEND_WORDS = (
+    "the package's blend, which 12.5 asks of your own over (let your a_buffer "
+    "call your over; the package's blend is there to compare with, not to hand in)"
+)
+
 #: ``a_buffer`` as the rule of :mod:`.package_answers` reads an exercise (one place for the
 #: rule of every task): the package's resolve is its answer, and the checker's functions of
 #: this module compute the expected frames (r163 12-5: ``package_resolve`` imported as
@@ -295,7 +302,9 @@ def _no_words(args, expected, got) -> str:
 A_BUFFER = Exercise(
     NAME, _stack_cases, as_rgba, _same, _no_words, _no_words,
     answers=(PackageAnswer(package_resolve, label="capstone_glass.package_resolve",
-                           what="the A-buffer's resolve of a pixel"),),
+                           what="the A-buffer's resolve of a pixel"),
+             # r174 12-3: tr.blend_equation inside a_buffer passed, refused as over (12.5)
+             *blend_answers(BLEND_WORDS)),
 )  # fmt: skip
 
 

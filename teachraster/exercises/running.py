@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from . import output
-from .alarm import LONGEST, Alarm
+from .alarm import CASE_WALL_FACTOR, LONGEST, WAIT_FACTOR, Alarm
 from .interrupt import CaseInterrupt, busy
 
 __all__ = [
@@ -50,14 +50,12 @@ BUDGET_VARIABLE = "TEACHRASTER_CHECK_BUDGET"
 CASE_SHARE = 0.2
 #: Seconds one case may take under the default budget (kept for callers that pass a limit).
 CASE_LIMIT = DEFAULT_BUDGET * CASE_SHARE
-#: A case that has run this many times its CPU limit on the wall without computing waits.
-WAIT_FACTOR = 5.0
 #: Wall-clock seconds a whole check may take, per CPU second of its budget (a busy machine).
 WALL_FACTOR = 10.0
-#: A case's own wall-clock cap, in multiples of its CPU limit (a machine too busy to give it CPU).
-CASE_WALL_FACTOR = 20.0
 #: CPU seconds one comparison or explanation of the checker may take, and all of them together.
 CHECKER_CALL, CHECKER_TOTAL = 2.0, 10.0
+#: The call that raises a check's budget, as the student writes it (the capstone names its own).
+RAISE_CALL = "check(..., budget={seconds:g})"
 #: Seconds a case that could not be stopped is given to unwind before the check abandons it.
 GRACE = 0.5
 #: Explanation of a case that did not run because the check had stopped.
@@ -98,6 +96,13 @@ class Budget:
     share: float = CASE_SHARE
     used: float = 0.0  # CPU seconds of the student's code so far
     checker: float = 0.0  # CPU seconds of the checker's own explanations so far
+    #: How the student raises this budget, in the call they made (:data:`RAISE_CALL`; r174
+    #: 12-2: the capstone's report named ``check``, which its notebook never calls).
+    raise_call: str = RAISE_CALL
+
+    def more_time(self) -> str:
+        """The student's call with a larger budget: 30 s, or three times one already larger."""
+        return self.raise_call.format(seconds=max(30.0, 3 * self.seconds))
 
     def remaining(self) -> float:
         return self.seconds - self.used
@@ -135,8 +140,9 @@ class budget:  # noqa: N801 - used as a context manager, named like one
     (2, None)
     """
 
-    def __init__(self, seconds: float = DEFAULT_BUDGET, share: float = CASE_SHARE):
-        self.budget = Budget(check_seconds(seconds), share=share)
+    def __init__(self, seconds: float = DEFAULT_BUDGET, share: float = CASE_SHARE,
+                 raise_call: str = RAISE_CALL):  # fmt: skip
+        self.budget = Budget(check_seconds(seconds), share=share, raise_call=raise_call)
 
     def __enter__(self) -> Budget:
         _local.stack = getattr(_local, "stack", []) + [self.budget]
@@ -207,7 +213,7 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
         text = (
             f"the check's budget of {seconds_words(b.seconds)} of CPU ran out{where}: your "
             f"function is far slower than needed{PER_PIXEL}. "
-            "check(..., budget=30) gives it more time; a lecturer raises it for a class with "
+            f"{b.more_time()} gives it more time; a lecturer raises it for a class with "
             f"the environment variable {BUDGET_VARIABLE}"
         )
         kind = "budget"
@@ -247,17 +253,25 @@ def _too_busy(alarm: Alarm, b: Budget, where: str) -> str:
     """The words for a case stopped by a wall-clock cap: the case's own (``CASE_WALL_FACTOR``
     times its CPU limit) or what was left of the whole check's (``WALL_FACTOR`` times its budget). r122
     D3-2: "the check ran for 0.088 s of wall-clock time" quoted the case's share of what was
-    left as the whole check's time."""
+    left as the whole check's time. A function that computed for more than its CPU limit by
+    then is slow, whatever the load (r174 12-2: "too busy" beside 11.2 s of a 10 s budget)."""
     if alarm.cap < CASE_WALL_FACTOR * alarm.seconds * (1 - 1e-9):  # the check's wall-clock limit
-        wall, cpu = time.perf_counter() - b.start, b.used + alarm.cpu()
+        wall, cpu, limit = time.perf_counter() - b.start, b.used + alarm.cpu(), b.seconds
         ran = (f"the check ran for {seconds_words(wall)} of wall-clock time (its limit: "
                f"{seconds_words(min(WALL_FACTOR * b.seconds, LONGEST))}, {WALL_FACTOR:g} times "
                f"its budget of CPU){where}, and your function computed for "
                f"{seconds_words(cpu)} of it")  # fmt: skip
+        whose = "the check's budget"
     else:
+        cpu, limit = alarm.cpu(), alarm.seconds
         ran = (f"the case ran for {seconds_words(alarm.wall())} of wall-clock time{where}, "
-               f"and your function computed for {seconds_words(alarm.cpu())} of it")  # fmt: skip
-    return f"{ran}: the machine is too busy; try again later (or raise the budget: check(..., budget=30))"
+               f"and your function computed for {seconds_words(cpu)} of it")  # fmt: skip
+        whose = "the case's limit"
+    if cpu >= limit:
+        return (f"{ran}, more than {whose} of {seconds_words(limit)} of CPU: your function is "
+                f"far slower than needed (a Python call per pixel?); {b.more_time()} gives it "
+                "more time")  # fmt: skip
+    return f"{ran}: the machine is too busy; try again later (or raise the budget: {b.more_time()})"
 
 
 def run_case(

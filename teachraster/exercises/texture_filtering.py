@@ -299,8 +299,11 @@ NAMED_HINTS = (
      "where in u does texel i's centre lie, and so which x, in texels, is this u?"),
     (re.compile(r" is the fraction [xy] − ⌊[xy]⌋(?: \(y − ⌊y⌋\))?; you gave it to"),
      " must grow as the sample nears that texel; yours went to"),
-    (re.compile(r" is the fraction λ − ⌊λ⌋ = [^;]*; you gave it to"),
-     " must grow as λ nears that level; yours went to"),
+    # r174 12-6: "yours went to level 0" was read as "yours is level 0" (it was level 1 alone)
+    (re.compile(r"the weight of level (\d+) is the fraction λ − ⌊λ⌋ = [^;]*; you gave it to "
+                r"level (\d+)"),
+     r"the weight of level \1 must grow as λ nears that level; yours grows as λ nears level "
+     r"\2 (the two levels' weights are swapped)"),
     (re.compile(r", level \d+ weighted by λ − ⌊λ⌋ = [^;:()]*"), " (with which weights?)"),
     ("(x = u·W, not u·W − ½)", "(where in u is a texel's centre?)"),
 )  # fmt: skip
@@ -347,8 +350,16 @@ FILTER_MODULES = {
 
 
 def _answers(filter_name):
-    return (PackageAnswer(sample, when=lambda a: a.get("filter") == filter_name,
-                          modules=FILTER_MODULES[filter_name]),)  # fmt: skip
+    whole = PackageAnswer(sample, when=lambda a: a.get("filter") == filter_name,
+                          modules=FILTER_MODULES[filter_name])  # fmt: skip
+    if filter_name != "trilinear":
+        return (whole,)
+    # r174 12-3: 7.3 and 12.8 ask for each level filtered by the student's own bilinear; the
+    # package's, ``tr.sample(level, uv, "bilinear", wrap)``, passed as the student's work
+    level = PackageAnswer(sample, when=lambda a: a.get("filter") == "bilinear",
+                          what="a level's bilinear filter, which this exercise asks of your own "
+                          "bilinear")  # fmt: skip
+    return (whole, level)
 
 
 def bilinear_exercise(scene) -> Exercise:

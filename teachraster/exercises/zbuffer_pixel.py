@@ -131,9 +131,11 @@ def _mistake(kind: str, words: str, **change) -> Mistake:
     return Mistake(kind, words, gives=lambda d, w: _simulate(d, w, **change))
 
 
+#: The tie mistake's words: its repair, staged as a hint on the first wrong tries.
+TIE_WORDS = "a tie keeps the fragment already stored (strictly nearer passes): use <, not <="
+
 DEPTH_MISTAKES = [
-    _mistake("ties", "a tie keeps the fragment already stored (strictly nearer passes): use "
-             "<, not <=", ties=True),
+    _mistake("ties", TIE_WORDS, ties=True),
     _mistake("glass writes", "a fragment that does not write depth (glass) is tested but "
              "leaves the buffer as it was: later fragments are compared with the last depth "
              "*written*", mask=False),
@@ -222,5 +224,8 @@ DEPTH_PASSES = Exercise(
          "only one that passes and writes depth changes what the buffer holds",
          "Which depth must the buffer hold so that the nearest opaque fragment ends up on top "
          "whatever the drawing order, and glass hides nothing? Work the case through by hand"),
+        # r174 12-4: the tie's words were the whole fix on the first wrong try
+        (TIE_WORDS, "your test settles a tie (two equal depths) otherwise than the rule: which "
+         "of the two must the pixel keep, the fragment already stored or the one arriving?"),
     ),
 )  # fmt: skip
