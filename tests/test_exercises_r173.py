@@ -22,38 +22,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+# the fixtures of r162's tests: a first try's words, the full words, pyplot
+from test_exercises_r162 import first_words, full_words, plt  # noqa: F401
+
 from teachraster import exercises as ex
 from teachraster.exercises import hiz_tile, tile_blocks, tries
 from teachraster.exercises.report import CheckFailed
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.ipynb"
-
-
-@pytest.fixture
-def plt():
-    pytest.importorskip("matplotlib").use("Agg")
-    import matplotlib.pyplot as pyplot
-
-    yield pyplot
-    pyplot.close("all")
-
-
-@pytest.fixture
-def full_words():
-    tries.spend_hints(["classify_block", "hiz_rejects"])
-    yield
-    tries.forget_hints("classify_block")
-    tries.forget_hints("hiz_rejects")
-
-
-@pytest.fixture
-def first_words():
-    """The words of a first failing check (hint only), as a fresh kernel gives them."""
-    tries.forget_hints("classify_block")
-    tries.forget_hints("hiz_rejects")
-    yield
-    tries.forget_hints("classify_block")
-    tries.forget_hints("hiz_rejects")
 
 
 def _cells() -> list:
@@ -209,7 +185,7 @@ def test_m1_a_box_one_column_wide_on_its_low_side_is_named_so(words, request):
         assert "extreme centres of the tile's part inside" not in f.explanation
 
 
-def test_m1_the_outer_corner_words_ask_on_the_first_try(first_words):
+def test_m1_the_outer_corner_words_ask_on_the_first_try(first_words):  # noqa: F811
     def tile_outer_corners(xyz, row0, col0, size, buffer):
         f = _plane(xyz)
         corners = [f(x, y) for x in (col0, col0 + size) for y in (row0, row0 + size)]
@@ -220,7 +196,7 @@ def test_m1_the_outer_corner_words_ask_on_the_first_try(first_words):
     assert said and not any("extreme centres of the tile's part" in s for s in said)
 
 
-def test_m2_each_flaw_is_said_only_on_the_cases_it_decides(full_words):
+def test_m2_each_flaw_is_said_only_on_the_cases_it_decides(full_words):  # noqa: F811
     report = ex.check("hiz_rejects", box_bound(clip_only=True), budget=120)
     cases = {c[0]: c[1] for c in hiz_tile.HIZ_REJECTS.cases()}
     kinds = set()
@@ -233,7 +209,7 @@ def test_m2_each_flaw_is_said_only_on_the_cases_it_decides(full_words):
     assert kinds == {True, False}  # both flaws show, each on its own cases
 
 
-def test_g2_the_first_words_do_not_answer_which_border_centres(first_words):
+def test_g2_the_first_words_do_not_answer_which_border_centres(first_words):  # noqa: F811
     report = ex.check("hiz_rejects", box_bound(low_strict=True), budget=120)
     assert report.failures
     for f in report.failures:
@@ -244,14 +220,14 @@ def test_g2_the_first_words_do_not_answer_which_border_centres(first_words):
 # -- G1: the figure holds the site back ---------------------------------------------------------
 
 
-def _keys(plt, case):
+def _keys(plt, case):  # noqa: F811
     fig, ax = plt.subplots(figsize=(9.0, 5.6), layout="constrained")
     hiz_tile.draw_hiz(ax, case, not case[2])
     stars = [line for line in ax.lines if line.get_marker() == "*"]
     return stars, [t.get_text() for t in ax.get_legend().get_texts()]
 
 
-def test_g1_the_first_figure_shows_the_box_and_centres_not_the_bound(plt, first_words):
+def test_g1_the_first_figure_shows_the_box_and_centres_not_the_bound(plt, first_words):  # noqa: F811
     """On every case with a centre in the box: no star and no legend of where the bound is
     taken or of the nearest vertex until two answers have failed; the box and centres always."""
     cases = [c for c in hiz_tile.HIZ_REJECTS.cases() if hiz_tile.bound_site(*c[1][:4]) is not None]  # fmt: skip
@@ -315,7 +291,7 @@ def no_bias(xy, x0, y0, size):
     return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
 
 
-def test_d1_the_wrongly_covered_pixels_are_ringed_and_explained(plt, first_words):
+def test_d1_the_wrongly_covered_pixels_are_ringed_and_explained(plt, first_words):  # noqa: F811
     report = ex.check("classify_block", no_bias, budget=120)
     wrong = report.scene.coverage_differs()
     assert 0 < wrong.sum() <= 40
