@@ -22,29 +22,15 @@ import numpy as np
 import pytest
 from test_exercise_8_1_offsets import student
 
+# the fixtures of r149's tests: pyplot, the full words
+from test_exercises_r149 import full_words, plt  # noqa: F401
+
 from teachraster import exercises as ex
 from teachraster.exercises import tries
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.ipynb"
 #: The generic rule's guesses at a cause that M1's answers do not have.
 WRONG_CAUSES = ("Corners outside the triangle do not reject", "you tested the maximising one")
-
-
-@pytest.fixture
-def plt():
-    pytest.importorskip("matplotlib").use("Agg")
-    import matplotlib.pyplot as pyplot
-
-    yield pyplot
-    pyplot.close("all")
-
-
-@pytest.fixture
-def full_words():
-    tries.spend_hints(["classify_block", "hiz_rejects"])
-    yield
-    tries.forget_hints("classify_block")
-    tries.forget_hints("hiz_rejects")
 
 
 @pytest.fixture
@@ -90,7 +76,7 @@ UNDERSHOOT = {
 
 
 @pytest.mark.parametrize("name", list(UNDERSHOOT))
-def test_m1_offsets_short_of_the_last_centre_are_named_so(name, full_words):
+def test_m1_offsets_short_of_the_last_centre_are_named_so(name, full_words):  # noqa: F811
     fn, kind = UNDERSHOOT[name]
     report = ex.check("classify_block", fn, budget=120)
     assert not report.passed
@@ -111,7 +97,7 @@ def test_m1_the_first_words_name_it_without_the_answer(name, first_words):
     assert "(size − 1)/2, not" not in first.explanation, first.explanation
 
 
-def test_m1_the_generic_rule_guesses_no_cause(full_words):
+def test_m1_the_generic_rule_guesses_no_cause(full_words):  # noqa: F811
     """A wrong answer no mistake fits gets the rule, with no guessed cause (r162 M1)."""
     from teachraster.exercises.tile_blocks import _by_verdicts, _edge_table
 
@@ -137,7 +123,7 @@ SLIPS = {
 
 
 @pytest.mark.parametrize("name", list(SLIPS))
-def test_unnamed_8_1_slips_are_named(name, full_words):
+def test_unnamed_8_1_slips_are_named(name, full_words):  # noqa: F811
     fn, kind, words = SLIPS[name]
     report = ex.check("classify_block", fn, budget=120)
     assert not report.passed
@@ -205,7 +191,7 @@ HIZ = {
 
 
 @pytest.mark.parametrize("name", list(HIZ))
-def test_m2_a_bound_is_named_only_where_it_tells_the_answer_apart(name, full_words):
+def test_m2_a_bound_is_named_only_where_it_tells_the_answer_apart(name, full_words):  # noqa: F811
     fn, kind, words = HIZ[name]
     report = ex.check("hiz_rejects", fn, budget=120)
     assert not report.passed
@@ -220,7 +206,7 @@ def test_m2_a_bound_is_named_only_where_it_tells_the_answer_apart(name, full_wor
             assert "lesson 10's bound" not in f.explanation, f.explanation
 
 
-def test_m2_the_empty_box_is_said_too(full_words):
+def test_m2_the_empty_box_is_said_too(full_words):  # noqa: F811
     """The empty box kept is said on the case whose box holds no centre of the tile (r173 M2:
     only there, where it decides the case)."""
     report = ex.check("hiz_rejects", box_corners_clamped, budget=120)
@@ -237,7 +223,7 @@ def test_the_first_8_2_failure_does_not_print_the_bound(first_words):
     assert "the tile's farthest stored depth is 0.305" in first, first
 
 
-def test_c1_an_empty_pixel_is_said_beside_gls_clear_value(full_words):
+def test_c1_an_empty_pixel_is_said_beside_gls_clear_value(full_words):  # noqa: F811
     def as_far_plane(xyz, row0, col0, size, buffer):
         """The task's bound, right, with an empty pixel read as 1.0 (no package call: the
         checker's own functions are watched and not counted)."""
@@ -305,7 +291,7 @@ def test_8_2_states_the_goal_not_the_recipe():
     assert "the **highest** lower bound" in task
 
 
-def test_the_endless_loops_note_leaves_the_key_readable(plt):
+def test_the_endless_loops_note_leaves_the_key_readable(plt):  # noqa: F811
     def loop(xy, x0, y0, size):
         while True:
             pass
@@ -320,7 +306,7 @@ def test_the_endless_loops_note_leaves_the_key_readable(plt):
     assert not note.get_window_extent().overlaps(key.get_window_extent())
 
 
-def test_the_passing_hiz_figure_lists_no_box_it_does_not_draw(plt):
+def test_the_passing_hiz_figure_lists_no_box_it_does_not_draw(plt):  # noqa: F811
     from teachraster.exercises import hiz_tile
 
     case = next(c for c in hiz_tile.HIZ_REJECTS.cases() if c[0].startswith("a flat triangle"))

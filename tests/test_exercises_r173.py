@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 
 # the fixtures of r162's tests: a first try's words, the full words, pyplot
-from test_exercises_r162 import first_words, full_words, plt  # noqa: F401
+from test_exercises_r162 import _plane, first_words, full_words, plt  # noqa: F401
 
 from teachraster import exercises as ex
 from teachraster.exercises import hiz_tile, tile_blocks, tries
@@ -129,14 +129,6 @@ def test_f1_the_reach_is_printed_and_quoted_and_the_cases_keep_to_it(monkeypatch
 
 
 # -- M1, M2, G2: 8.2's words ------------------------------------------------------------------
-
-
-def _plane(xyz):
-    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, float)
-    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
-    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
-    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-    return lambda x, y: z1 + a * (x - x1) + b * (y - y1)
 
 
 def box_bound(low_wide=False, clip_only=False, low_strict=False):
