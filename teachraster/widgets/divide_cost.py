@@ -380,7 +380,7 @@ class DivideCostExplorer(Shown):
             limit = n2_limit(self.rows, k)
             headline = (f"<b>{k} attribute{'s share' if k > 1 else ' has'} one reciprocal: N=2 "
                         f"costs at least as much as perspective-correct for every divide up to "
-                        f"{limit:.3g} cycles.</b> ")  # fmt: skip
+                        f"{limit:.3g} {'cycle' if limit == 1 else 'cycles'}.</b> ")  # fmt: skip
         return (f"{headline}divide = {self.divide.value:.3g} {cycles}: the divide is "
                 f"<b>{share:.0%}</b> of perspective-correct's cost; perspective-correct costs "
                 f"<b>{ratio:.3g}×</b> affine{saving}. "
