@@ -281,7 +281,10 @@ def _tour_error_cell(w) -> dict:
     ns["halfplane"] = tr.rasterize(tri, 16, 16, method="halfplane", trace=True)
     out = io.StringIO()
     with warnings.catch_warnings(), contextlib.redirect_stdout(out):
-        warnings.simplefilter("error")  # a 0/0 warning is a bug too
+        # a 0/0 (numpy's RuntimeWarning) is a bug too; not a DeprecationWarning of the
+        # backend an earlier test in this worker left (ipympl's toolbar under traitlets)
+        warnings.simplefilter("error", RuntimeWarning)
+        ns["plt"].switch_backend("Agg")
         ns["plt"].show = lambda: None
         exec(error_map, ns)
     ns["plt"].close("all")
