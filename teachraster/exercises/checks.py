@@ -15,7 +15,7 @@ from functools import cache
 from . import output, tries
 from .exercise import Exercise
 from .report import Report, issue
-from .running import SKIPPED, effective_budget, nested
+from .running import PER_PIXEL, SKIPPED, effective_budget, nested
 from .running import budget as time_budget
 from .tries import apply_hints
 from .value_checks import check_exercise
@@ -104,7 +104,8 @@ def check(name: str, fn: Callable, *, budget: float = 10.0) -> Report:
         raise TypeError(f"fn must be a function, got {type(fn).__name__}")
     seconds = effective_budget(budget)
     spec = exercise(name)
-    with time_budget(seconds) as b, output.captured() as printed:
+    slow = PER_PIXEL if spec.slow is None else spec.slow  # the time-out words' question
+    with time_budget(seconds, slow=slow) as b, output.captured() as printed:
         report = check_exercise(spec, fn)
     # past the failing checks allowed, a failing check waits before it answers (outside the
     # budget); a passing one never does (r22 D3: after 27 failing checks a right answer

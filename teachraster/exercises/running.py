@@ -56,6 +56,9 @@ WALL_FACTOR = 10.0
 CHECKER_CALL, CHECKER_TOTAL = 2.0, 10.0
 #: The call that raises a check's budget, as the student writes it (the capstone names its own).
 RAISE_CALL = "check(..., budget={seconds:g})"
+#: What the time-out words ask of a slow function; an exercise whose function is called once
+#: per point says its own (:attr:`.exercise.Exercise.slow`, r175 B7).
+PER_PIXEL = " (a Python call per pixel?)"
 #: Seconds a case that could not be stopped is given to unwind before the check abandons it.
 GRACE = 0.5
 #: Explanation of a case that did not run because the check had stopped.
@@ -99,6 +102,8 @@ class Budget:
     #: How the student raises this budget, in the call they made (:data:`RAISE_CALL`; r174
     #: 12-2: the capstone's report named ``check``, which its notebook never calls).
     raise_call: str = RAISE_CALL
+    #: What the time-out words ask of a slow function (:data:`PER_PIXEL`, or the exercise's own)
+    slow: str = PER_PIXEL
 
     def more_time(self) -> str:
         """The student's call with a larger budget: 30 s, or three times one already larger."""
@@ -141,8 +146,9 @@ class budget:  # noqa: N801 - used as a context manager, named like one
     """
 
     def __init__(self, seconds: float = DEFAULT_BUDGET, share: float = CASE_SHARE,
-                 raise_call: str = RAISE_CALL):  # fmt: skip
-        self.budget = Budget(check_seconds(seconds), share=share, raise_call=raise_call)
+                 raise_call: str = RAISE_CALL, slow: str = PER_PIXEL):  # fmt: skip
+        self.budget = Budget(check_seconds(seconds), share=share, raise_call=raise_call,
+                             slow=slow)  # fmt: skip
 
     def __enter__(self) -> Budget:
         _local.stack = getattr(_local, "stack", []) + [self.budget]
@@ -198,11 +204,6 @@ def seconds_words(s: float) -> str:
     return f"{s:.2g} s" if s < 1 else f"{s:.3g} s"
 
 
-#: What the time-out words ask of a slow function; an exercise whose function is called once
-#: per point says its own (:attr:`.exercise.Exercise.slow`, r175 B7).
-PER_PIXEL = " (a Python call per pixel?)"
-
-
 def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = False) -> Outcome:
     """The outcome of a case stopped by its limits (``alarm``) or by the budget (None)."""
     where = f" on case {case}" if case else ""
@@ -212,7 +213,7 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
     if why == "budget":
         text = (
             f"the check's budget of {seconds_words(b.seconds)} of CPU ran out{where}: your "
-            f"function is far slower than needed{PER_PIXEL}. "
+            f"function is far slower than needed{b.slow}. "
             f"{b.more_time()} gives it more time; a lecturer raises it for a class with "
             f"the environment variable {BUDGET_VARIABLE}"
         )
@@ -221,13 +222,13 @@ def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = Fal
         text = (
             f"one call of your function did not finish within {seconds_words(alarm.call)} of "
             f"CPU{where} (the most one call may take of the check's {seconds_words(b.seconds)}): "
-            f"an endless loop, or far slower than needed{PER_PIXEL}"
+            f"an endless loop, or far slower than needed{b.slow}"
         )
         kind = "timeout"
     elif why == "cpu":
         text = (
             f"your function did not finish within {seconds_words(alarm.seconds)} of CPU{where}: "
-            f"an endless loop, or far slower than needed{PER_PIXEL}"
+            f"an endless loop, or far slower than needed{b.slow}"
         )
         kind = "timeout"
     elif why == "wait":

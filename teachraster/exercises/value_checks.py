@@ -19,7 +19,7 @@ from .diagnosis import Result, diagnose
 from .exercise import Exercise, content_key, copies
 from .package_answers import names_read, package_note, watching
 from .report import Failure, Report
-from .running import PER_PIXEL, SKIPPED, current, run_case, run_checker
+from .running import SKIPPED, current, run_case, run_checker
 
 #: Outcome kinds after which the check stops (the time is spent).
 STOPS = ("timeout", "budget")
@@ -124,13 +124,11 @@ def check_exercise(spec: Exercise, fn) -> Report:
         label, _, expected = case
         if outcome.error is not None:
             draw = _drawer(spec, case, None)
-            error = _slow_words(spec, outcome.error)
-            failures.append(Failure(label, error, expected, None, draw, outcome.kind))
+            failures.append(Failure(label, outcome.error, expected, None, draw, outcome.kind))
         elif k in said:
             kind, text = said[k]
             got = answers[k]
             failures.append(Failure(label, text, expected, got, _drawer(spec, case, got), kind))
-    current().stopped = _slow_words(spec, current().stopped)
     stopped = current().stopped
     if scene is not None and stopped is not None:
         scene.blocked = f"not run: {stopped}"
@@ -146,14 +144,6 @@ def check_exercise(spec: Exercise, fn) -> Report:
         spec.name, failures, len(cases), False, example, stopped, len(ran), package,
         precision=precision, scene=scene,
     )  # fmt: skip
-
-
-def _slow_words(spec: Exercise, text: str | None) -> str | None:
-    """The time-out ``text`` with the exercise's own question of a slow function
-    (:attr:`~.exercise.Exercise.slow`)."""
-    if text is None or spec.slow is None:
-        return text
-    return text.replace(PER_PIXEL, spec.slow)
 
 
 def _low_precision(results) -> str | None:
