@@ -266,6 +266,10 @@ def _menu(page, menu: str, item: str) -> None:
 #: How long a menu or dialog of an open JupyterLab may take to answer before the page is
 #: loaded again instead (a loaded machine: the page's own work is queued behind the kernel's).
 MENU_MS = 15_000
+#: A cell of the notebook on show: a tab of an earlier notebook that is still closing keeps
+#: its cells in the page, hidden, and the first cell in the page can be one of those (a CI
+#: run waited 90 s on such a hidden cell of five).
+CELL_SHOWN = ".jp-Notebook .jp-Cell >> visible=true"
 
 
 #: Every tab closed, or a "Save changes?" dialog waiting for an answer.
@@ -380,7 +384,7 @@ def open_cells(page, base: str, cells, name: str, app: str = "lab/tree") -> None
         _open_notebook(page, base, name, in_app=True)
     else:
         page.goto(f"{base}/{app}/{name}")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
 
 
 def _lab_is_empty(page, base: str) -> bool:
@@ -395,7 +399,7 @@ def open_file(page, base: str, name: str) -> None:
     kernel, in the page already loaded where it can (``open_cells``); not run."""
     _shut_down_kernels(base)
     _open_notebook(page, base, name, in_app=_lab_is_empty(page, base))
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
 
 
 @dataclass(frozen=True)
@@ -428,7 +432,7 @@ def run_all(name: str, extra_source: str) -> BrowserRun:
     del running.errors[:]
     start = time.perf_counter()
     _open_notebook(page, running.base, f"{name}.ipynb", emptied)
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")

@@ -22,7 +22,7 @@ import urllib.request
 
 import pytest
 from browser_cells import run_new_cell
-from notebook_browser import open_cells
+from notebook_browser import CELL_SHOWN, open_cells
 from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _put_notebook, _stop_kernels
 
@@ -481,7 +481,7 @@ def test_notebook_7_leaves_the_keys_to_the_explorables(lab, page):  # noqa: F811
     page.wait_for_selector("#jp-main-statusbar", timeout=90_000)
     _put_notebook(page, [CELLS[0], CELLS[8]], "nb7.ipynb")
     page.goto(f"{lab}/notebooks/nb7.ipynb")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     page.wait_for_timeout(3000)
     page.keyboard.press("Escape")
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")

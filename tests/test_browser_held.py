@@ -14,7 +14,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from notebook_browser import save_and_read
+from notebook_browser import CELL_SHOWN, save_and_read
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _api, _run_all, _stop_kernels
 
@@ -57,7 +57,7 @@ def test_an_answer_cell_shows_only_after_check_and_stays_hidden_when_reopened(la
 
     _stop_kernels(page, lab)  # the next day: reopened, no kernel, no widget models
     page.goto(f"{lab}/lab/tree/{NAME}?reset")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     _line(page).wait_for(state="visible", timeout=60_000)
     _answer(page).wait_for(state="attached", timeout=30_000)
     assert not _answer(page).is_visible()
@@ -127,7 +127,7 @@ def _run_saved_reloaded(lab, page, cells, name, asked, answered):  # noqa: F811
         "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
     )
     page.reload()
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     question = page.locator(".jupyter-widgets", has_text=asked).first
     question.locator("button", has_text="counter-clockwise").wait_for(timeout=90_000)
     answer.wait_for(state="attached", timeout=60_000)
@@ -198,7 +198,7 @@ def test_a_figure_prediction_releases_its_held_cell_in_a_reloaded_page(lab, page
         "() => !document.querySelector('.jp-mod-current.jp-mod-dirty')", timeout=30_000
     )
     page.reload()
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     _restored(page, ".tr-predict", "Where is it?")
     answer.wait_for(state="attached", timeout=60_000)
     assert not answer.is_visible() and _line(page).is_visible()
@@ -264,7 +264,7 @@ def test_an_untrusted_copy_says_it_cannot_hide_the_answer(lab, page):  # noqa: F
     assert _api(page, "PUT", f"/api/contents/{UNTRUSTED_NAME}", body) in (200, 201)
     _stop_kernels(page, lab)
     page.goto(f"{lab}/lab/tree/{UNTRUSTED_NAME}?reset")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     line = page.locator(".teachraster-held").first
     line.wait_for(state="visible", timeout=60_000)
     assert "the answer" not in HELD_BARE_TEXT.lower()  # _answer finds the printed answer only

@@ -19,7 +19,7 @@ import json
 import urllib.request
 
 import pytest
-from notebook_browser import API, open_cells, put_notebook, save_and_read
+from notebook_browser import API, CELL_SHOWN, open_cells, put_notebook, save_and_read
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 
 pytestmark = [
@@ -71,7 +71,7 @@ def _stop_kernels(tab, base: str) -> None:
 
 def _open(tab, base: str) -> None:
     tab.goto(f"{base}/lab/tree/{NAME}?reset")
-    tab.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    tab.wait_for_selector(CELL_SHOWN, timeout=90_000)
     tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
 
 
@@ -162,7 +162,7 @@ def test_an_executed_copy_opened_untrusted_shows_each_standin_once(
     body = json.dumps({"type": "notebook", "content": json.loads(nbformat.writes(nb))})
     assert _api(page, "PUT", f"/api/contents/{name}", body) in (200, 201)
     page.goto(f"{lab}/lab/tree/{name}?reset")
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
     hints = page.get_by_text("No kernel is running")
     hints.first.wait_for(state="visible", timeout=60_000)
     page.wait_for_timeout(3000)  # every output rendered
