@@ -1214,15 +1214,21 @@ def test_05b_depth_format_table_says_at_least_for_gl_and_exactly_for_vulkan():
 def test_05b_widget_marks_where_half_the_pairs_fight():
     """Section 6 (review r54 05b-2): the explorer marks where a pair δ apart fights with
     probability 1 - δ/Δz = ½ (Δz = 2δ), √2 times farther than the crossing Δz = δ, and the
-    probability agrees with the share of pixels section 3's renders found fighting."""
+    probability, taken at each pixel with its own gap and depth (r177 15), agrees with the
+    share of pixels section 3's renders found fighting."""
     ns = lesson("05b_depth_precision")
     for crossing, half, fmt in [(ns.crossing16, ns.half16, "unorm16"),
                                 (ns.crossing24, ns.half24, "unorm24")]:  # fmt: skip
         res = float(tr.depth_resolution(crossing, ns.n_, ns.f_, fmt))
         assert abs(res - ns.delta) < 1e-9 * ns.delta + 1e-12  # the crossing is where Δz = δ
         assert half == pytest.approx(np.sqrt(2) * crossing, rel=1e-3)  # "√2 times farther"
-        chance = np.clip(1 - ns.delta / ns.predicted[fmt], 0.0, None)
-        assert np.abs(chance - ns.fights[fmt] / ns.size).max() < 0.06  # the renders agree
+        assert np.abs(ns.chances[fmt] - ns.fights[fmt] / ns.size).max() < 0.02  # renders agree
+        centre = np.clip(1 - ns.delta / ns.predicted[fmt], 0.0, None)  # at the pairs' centres
+        assert np.abs(ns.chances[fmt] - centre).max() < 0.03
+    # r177 15: the squares are δ apart in view depth at their centres (they were 0.84 δ at the
+    # corner pairs, moved δ along the sight line); across a tilted square the gap varies a little
+    for k, r in enumerate(ns.ratio):
+        assert 0.8 < r.min() < 1.0 < r.max() < 1.2, (k, r.min(), r.max())
     assert "one pair per depth" not in "".join(_cells("05b_depth_precision", "markdown"))
 
 
