@@ -43,3 +43,25 @@ def test_the_page_lays_out_a_caption_only_when_its_text_changes():
     source = DRAG_JS.read_text(encoding="utf-8")
     body = re.search(r"function setCaption\(html\) \{(.*?)\n  \}", source, re.S).group(1)
     assert "=== captionShown) return" in body
+
+
+def test_the_editors_probe_verdict_names_a_zero_area_triangle_and_a_vertex():
+    """Review r181 02-5: with all three E zero (a zero-area triangle) the probe's line said
+    "one is 0: on an edge (the top-left rule decides)", with "+0.00" for each value."""
+    from teachraster import Triangle
+    from teachraster.widgets import TriangleEditor
+
+    flat = TriangleEditor(Triangle([[2.0, 2.0], [8.0, 8.0], [14.0, 14.0]]), 16, 16, backend="image",
+                          probe=(5.0, 5.0), comparison=False)  # fmt: skip
+    line = flat.probe_text()
+    assert "all three 0: a zero-area triangle, nothing covered" in line
+    assert "E12 = 0, E23 = 0, E31 = 0" in line and "+0.00" not in line
+    tri = Triangle([[2.0, 2.0], [14.0, 2.0], [2.0, 14.0]])
+    at_vertex = TriangleEditor(tri, 16, 16, backend="image", probe=(2.0, 2.0), comparison=False)
+    assert "two are 0: on a vertex" in at_vertex.probe_text()
+    on_edge = TriangleEditor(tri, 16, 16, backend="image", probe=(8.0, 2.0), comparison=False)
+    assert "one is 0: on an edge" in on_edge.probe_text()
+    inside = TriangleEditor(tri, 16, 16, backend="image", probe=(5.0, 5.0), comparison=False)
+    assert "inside" in inside.probe_text() and "is 0" not in inside.probe_text()
+    for editor in (flat, at_vertex, on_edge, inside):
+        editor.close()

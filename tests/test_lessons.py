@@ -98,9 +98,9 @@ def test_02_winding_culling_and_the_top_left_rule():
         assert np.array_equal(ns.counts[name], ns.square)
     naive = ns.counts["naive E >= 0"]
     assert naive.max() == 2 and (naive[ns.diagonal] == 2).all()
-    assert not ns.row8["above (bottom edge)"].any()
-    assert ns.row8["below (top edge)"].sum() == 12
-    assert ns.row8["naive, above"].sum() == ns.row8["naive, below"].sum() == 13
+    assert not ns.row8["rule, above (its bottom edge)"].any()
+    assert ns.row8["rule, below (its top edge)"].sum() == 12
+    assert ns.row8["naive test, above"].sum() == ns.row8["naive test, below"].sum() == 13
 
 
 # -- 03 barycentrics and plane equations --------------------------------------------------------

@@ -724,44 +724,26 @@ def test_02_barycentrics_and_the_edge_function_bits():
     ns = lesson("02_half_planes")
     assert ns.area2 == pytest.approx(2 * abs(ns.tri.signed_area))
     assert np.allclose(ns.lam, tr.barycentric(ns.xy, ns.outside_point))  # the last one printed
-    # review r7 0: the reach printed is the one lesson 00's map shows, inside 2**21 px
+    # review r181 02-8: the count is made on the GPU's numbers, not the package's internals:
+    # Direct3D's 16.8 fixed point over 2**16 px (lesson 06's and 10's count, one function), and
+    # the widest range a 32-bit adder covers term by term (llvmpipe's small-triangle path)
     from teachraster.core import fixed_point
-    from teachraster.widgets.pipeline_map import tour_stages
 
-    assert ns.limit == 2**21 and ns.reach == tour_stages()["guardPx"] < ns.limit
-    # review r169 02-1/9: one rule with lessons 06 and 10, from fixed_point: coordinates
-    # strictly within 2**21 px, in 1/512 px, differ by less than 2**31 units; |E| <= M² by
-    # the area bound takes 63 bits with the sign, the term-by-term count 64 (not "62 in 1/256
-    # px, 64 in 1/512 px", a box whose corners the strict bound excludes)
-    assert ns.edge_bits == fixed_point.range_budget(2 * ns.limit, 8, centre_bit=True)
-    assert ns.unit == 512 and ns.edge_bits.max_delta < 2**31
-    assert (ns.edge_bits.least_needed, ns.edge_bits.needed) == (63, 64)
-    strict = 2**30 - 1  # the largest |coordinate| in units: |x| < 2**30
-    assert (2 * strict) ** 2 < 2**62 and ((2 * strict) ** 2).bit_length() + 1 == 63
+    assert ns.d3d == fixed_point.range_budget(2**16, subpixel_bits=8)
+    assert (ns.d3d.delta_bits, ns.d3d.least_needed, ns.d3d.needed) == (24, 49, 50)
+    assert ns.fits32 == 128  # 128 px = 2**15 units: 15 + 15 + 1 + sign = 32 bits
+    assert not fixed_point.range_budget(256, subpixel_bits=8, int_bits=32).fits
     text = "\n".join(_cells("02_half_planes", "markdown"))
     flat = re.sub(r"\s+", " ", text)
-    assert "63 bits by the area bound and 64 term by term" in flat
+    assert "49 bits by the area bound and 50 term by term" in flat
     assert "62 against" not in flat and "all 64 in" not in flat and "up to 64 bits" not in flat
-    assert "lessons 06 and 10" in flat
     assert "*Triangle rasterization in practice*, on overflow" in flat
+    assert "**16.8 fixed point**" in flat and "lesson 10 §4" in flat
     code = "\n".join(_cells("02_half_planes", "code"))
     assert "fixed_point.range_budget(" in code and "def edge_bits" not in code
+    assert "UNIT_LIMIT" not in code and "guard_band" not in code  # no package internals
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
-    assert "1/512 px" in text and "bits to spare" not in text
-    # r10: lessons 02 and 10 give the extra bit one reason, and a true one: at 8 sub-pixel bits
-    # the centres already lie on the 1/256 grid; with fewer (0: whole pixels) only the extra bit
-    # puts them on it
-    from teachraster.core.snapping import units_per_pixel
-
-    ten = "\n".join(_cells("10_tiles_and_hierarchical_z", "markdown"))
-    reason = "whatever the number of sub-pixel bits"
-    assert all(reason in re.sub(r"\s+", " ", t) for t in (text, ten))
-    assert "lesson 10 says why" not in text
-    assert "a few bits" not in flat
-    centres = [Fraction(2 * j + 1, 2) for j in range(16)]
-    assert all((c * 2**8).denominator == 1 for c in centres)
-    assert all((c * units_per_pixel(0)).denominator == 1 for c in centres)
-    assert not any((c * 2**0).denominator == 1 for c in centres)
+    assert "1/512 px" not in text and "bits to spare" not in text
     assert "Table 23.53" not in text  # an unconfirmed reference
     # review r169 02-2: §3.4.1/§3.4.2.1 are snapping and the top-left rule; the front face is
     # §15.11 *Cull State*, its default FALSE the API documentation's, as lesson 00 says
@@ -779,7 +761,7 @@ def test_02_how_many_bits_is_a_heading_of_its_own_that_folds_away():
     assert "optional" in text[i].splitlines()[0] and nb["cells"][i]["cell_type"] == "markdown"
     after = [t for t in text[i + 1 :] if re.match(r"#{1,4} ", t)]
     assert after[0].startswith("### 5c.")
-    assert "edge_bits" in "".join(text[i:]).split("### 5c.")[0]  # its cell is folded with it
+    assert "range_budget" in "".join(text[i:]).split("### 5c.")[0]  # its cell is folded with it
 
 
 def test_02_top_and_left_are_read_off_the_edge_vector_in_words():

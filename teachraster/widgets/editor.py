@@ -450,14 +450,19 @@ class TriangleEditor(Holdable):
         """The info line's second line: E12, E23, E31 at the probe, and what they say."""
         e = self.edge_values()
         x, y = self.probe
-        values = ", ".join(f"E{n} = {v:+.2f}" for n, v in zip(("12", "23", "31"), e))
-        if (e > 0).all():
+        values = ", ".join(f"E{n} = {v:+.2f}" if v else f"E{n} = 0"
+                           for n, v in zip(("12", "23", "31"), e))  # fmt: skip
+        zeros = int((e == 0).sum())
+        if zeros == 3:  # every point is on the line the three vertices share
+            verdict = "all three 0: a zero-area triangle, nothing covered"
+        elif (e > 0).all():
             verdict = "all positive: inside (clockwise on screen)"
         elif (e < 0).all():  # the package tests the edges walked backwards, E21 = −E12 ...
             verdict = ("all negative: inside (counter-clockwise: the fill tests E21, E32, "
                        "E13, their negatives)")  # fmt: skip
-        elif (e == 0).any() and ((e >= 0).all() or (e <= 0).all()):
-            verdict = "one is 0: on an edge (the top-left rule decides)"
+        elif zeros and ((e >= 0).all() or (e <= 0).all()):
+            verdict = ("one is 0: on an edge (the top-left rule decides)" if zeros == 1 else
+                       "two are 0: on a vertex (covered only if both edges are top or left)")  # fmt: skip
         else:
             verdict = "signs differ: outside"
         # 2 decimals, as the values: a dragged cross is at 1/256 px, "(2.98828, 8.05859)"
