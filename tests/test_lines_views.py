@@ -397,3 +397,25 @@ def test_blending_explorer_srgb_box_is_color_format_srgb8():
         assert 'color_format="srgb8"' in ex.widget.children[0].value
     finally:
         ex.close()
+
+
+def test_blending_explorer_says_when_stored_alpha_is_one_everywhere():
+    """Review r187 (widgets): on the white clear, premultiplied colours store alpha 1 in every
+    pixel, so the checkerboard of "stored alpha" cannot show; the status line says so, and
+    only then (straight alpha on white stores less than 1 under the triangles)."""
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24), white=True)
+    try:
+        ex.alpha.value = True
+        assert ex.color[..., 3].min() < 1 and "nothing shows through" not in ex.info.value
+        assert "stored alpha over a checkerboard" in ex.info.value
+        ex.premultiplied.value = True
+        assert np.allclose(ex.color[..., 3], 1)
+        assert "stored alpha over a checkerboard (1 everywhere: nothing shows through)" in (
+            ex.info.value
+        )
+        ex.alpha.value = False
+        assert "checkerboard" not in ex.info.value
+    finally:
+        ex.close()

@@ -251,4 +251,16 @@ class BlendingExplorer(Shown):
                 f"{' (colours decoded from sRGB)' if self.decode.value else ''}"
                 # name the clear either way: unticked it is black (review r71)
                 f"; cleared to {'opaque white' if self.white.value else 'transparent black'}"
-                f"{'; stored alpha over a checkerboard' if self.alpha.value else ''}")  # fmt: skip
+                f"{self._alpha_note()}")  # fmt: skip
+
+    def _alpha_note(self) -> str:
+        """The status line's word on the stored-alpha view: where the buffer is opaque
+        everywhere (premultiplied alpha on the white clear) the checkerboard cannot show, and
+        the line says why, so the box does not seem to do nothing (review r187)."""
+        if not self.alpha.value:
+            return ""
+        stored = np.clip(np.minimum(self.color[..., 3], self.sorted_color[..., 3]), 0, 1)
+        opaque = bool(np.all(stored >= 1 - 1e-9))
+        return "; stored alpha over a checkerboard" + (
+            " (1 everywhere: nothing shows through)" if opaque else ""
+        )
