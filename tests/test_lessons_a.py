@@ -744,6 +744,23 @@ def test_02_barycentrics_and_the_edge_function_bits():
     assert "UNIT_LIMIT" not in code and "guard_band" not in code  # no package internals
     assert "barycentric coordinates" in text and "Ek ends §1.2" in text
     assert "1/512 px" not in text and "bits to spare" not in text
+    # r10: lesson 10 gives the package's extra bit a true reason: at 8 sub-pixel bits the
+    # centres already lie on the 1/256 grid; with fewer (0: whole pixels) only the extra bit
+    # puts them on it (lesson 02 no longer counts on the package's grid: review r181 02-8)
+    from teachraster.core.snapping import units_per_pixel
+
+    # lesson 10 gives it in its folded note on the simulator's grid (review r185 10-9), a
+    # Markdown the hidden code cell displays
+    ten = "\n".join(_cells("10_tiles_and_hierarchical_z", "markdown")
+                    + _cells("10_tiles_and_hierarchical_z", "code"))  # fmt: skip
+    reason = "whatever the number of sub-pixel bits"
+    assert reason in re.sub(r"\s+", " ", ten)
+    assert "lesson 10 says why" not in text
+    assert "a few bits" not in flat
+    centres = [Fraction(2 * j + 1, 2) for j in range(16)]
+    assert all((c * 2**8).denominator == 1 for c in centres)
+    assert all((c * units_per_pixel(0)).denominator == 1 for c in centres)
+    assert not any((c * 2**0).denominator == 1 for c in centres)
     assert "Table 23.53" not in text  # an unconfirmed reference
     # review r169 02-2: §3.4.1/§3.4.2.1 are snapping and the top-left rule; the front face is
     # §15.11 *Cull State*, its default FALSE the API documentation's, as lesson 00 says

@@ -2438,34 +2438,49 @@ def test_10_q_hiz_every_tile_is_clear_cut():
 
 def test_10_llvmpipe_128_against_our_64_on_one_convention():
     """Review r103 (lesson 10, cell 16): "128 pixels against the 63 printed above" set a bound
-    reached (63: differences up to 63 px fit int32) beside one not (llvmpipe's 128 is 2**15 of
-    its 256 units). Both limits are 2**15 units, printed: 64 px at our 512 units a pixel, 128
-    at llvmpipe's 256 (``MAX_FIXED_LENGTH32 = 1 << ((32/2 - 1) - FIXED_ORDER)``, lp_rast.h);
-    the text says why int32 stops at 63 and that llvmpipe's test is ``<=``."""
+    reached beside one not. Review r185 10-9: the budget is counted on a GPU's own grid, 256
+    units a pixel, so int32's limit comes out as llvmpipe's 128 px directly
+    (``MAX_FIXED_LENGTH32 = 1 << ((32/2 - 1) - FIXED_ORDER)``, lp_rast.h), from the package's
+    functions; the simulator's extra centre bit (63 px) and its exact range are folded. Review
+    r109 10-5: llvmpipe's test (lp_setup_tri.c) is on the last pixel's offsets from the box's
+    4-aligned start, x | y <= 128, now re-enacted in teachraster.study.llvmpipe_binner."""
+    import inspect
     import json
 
     from teachraster.core import fixed_point
+    from teachraster.study import llvmpipe_binner
 
     ns = lesson("10_tiles_and_hierarchical_z")
-    assert ns.mesa_px == 128 == 2**15 // 256 and 2**15 // 512 == 64
-    assert fixed_point.max_extent(8, 32) == 63 == 2**15 // 512 - 1
+    assert ns.mesa_px == 128 == fixed_point.max_range(8, 32) == 2**15 // 256
+    assert ns.fits32.fits and ns.fits32.headroom == 0 and ns.fits32.units_per_pixel == 256
+    assert not fixed_point.range_budget(129, 8, 32).fits  # one pixel more does not fit
+    assert ns.budget.needed == 38 and not ns.budget.fits and ns.budget.units_per_pixel == 256
+    # the simulator's grid, folded: 512 units a pixel, int32 up to 63 px, 1,024 px in 42 bits
+    assert ns.ours32 == fixed_point.max_extent(8, 32) == 63 == 2**15 // 512 - 1
+    assert fixed_point.max_range(8, 32, centre_bit=True) == 64 and ns.ours.needed == 42
     assert fixed_point.bit_budget(63, 8, 32).fits and not fixed_point.bit_budget(64, 8, 32).fits
     cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
-    md = " ".join(" ".join("".join(c["source"]) for c in cells["cells"]
+    cells = cells["cells"]
+    md = " ".join(" ".join("".join(c["source"]) for c in cells
                            if c["cell_type"] == "markdown").split())  # fmt: skip
-    assert "against the 63 printed above" not in md
-    assert "128 against our 64 (printed above)" in md and "hence the 63 px printed for int32" in md
-    assert "the same $2^{15}$ units" in md and "`<= MAX_FIXED_LENGTH32`" in md
-    # review r109 10-5: llvmpipe's test (lp_setup_tri.c) is on the last pixel's offsets from the
-    # box's 4-aligned start, x | y <= 128, not on the box's width; the example the text gives
-    # is printed (a 128-px box passes from column 0, fails from column 2)
-    assert "a box of exactly 128" not in md and "rounded down to a multiple of 4" in md
+    assert "128 against our 64" not in md and "hence the 63 px printed for int32" not in md
+    assert "**256 units a pixel**" in md and "exactly llvmpipe's `MAX_FIXED_LENGTH32`" in md
+    assert f"A 1,024-px triangle needs {ns.budget.needed} bits" in md
+    assert "`<= MAX_FIXED_LENGTH32`" in md and "rounded down to a multiple of 4" in md
     assert ns.box_from == {0: True, 2: False}
     assert "passes from column 0 and fails from column 2" in md
+    # the package's own grid stands in a folded note, its source hidden
+    note = next(c for c in cells if "The simulator's own grid" in "".join(c["source"]))
+    assert note["metadata"]["jupyter"]["source_hidden"] and "<details>" in "".join(note["source"])
+    four = md.split("## 4.")[1].split("## 5.")[0]  # the section's visible text
+    assert "512" not in four and "63 px" not in four and "folded note below" in four
+    # Mesa's expression, in the package now, not in the lesson
+    code = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    assert "def llvmpipe_" not in code and "def floor_pot" not in code
+    source = inspect.getsource(llvmpipe_binner)
+    assert "((x1 - (x0 & ~3)) | (y1 - (y0 & ~3))) <= MAX_FIXED_LENGTH32" in source
     # "two offsets below 128 OR to less than 128": x | y <= 128 is both below 128, but for
     # offsets of 0 or 128 each
-    code = " ".join("".join(c["source"]) for c in cells["cells"] if c["cell_type"] == "code")
-    assert "((x1 - (x0 & ~3)) | (y1 - (y0 & ~3))) <= mesa_px" in code  # Mesa's expression
     fits = {(x, y) for x in range(200) for y in range(200) if (x | y) <= 128}
     assert fits == {(x, y) for x in range(200) for y in range(200)
                     if (x < 128 and y < 128) or {x, y} <= {0, 128}}  # fmt: skip
@@ -2482,7 +2497,7 @@ def test_10_prints_counts_with_thousands_separators():
     printed = streams(executed("10_tiles_and_hierarchical_z").notebook())
     bare = re.findall(r"(?<![\d.,^*/])\d{4,}(?![\d.])", printed)
     assert not bare, bare
-    assert "1,024 px = 524,288 units" in printed and "160 px = 81,920 units" in printed
+    assert "below 1,024 px: at most 262,143 units" in printed and "160 px = 81,920 units" in printed
 
 
 @pytest.mark.notebook
@@ -3217,3 +3232,62 @@ def test_10_r176_items():
     assert "1, 2, figsize=(9," in path_cell and "LineCollection" not in path_cell
     assert any("plot_early_z_panels(" in c for c in code)
     assert not any("(as titled)" in c for c in code)
+
+
+def test_10_r185_items():
+    """Review r185, lesson 10: the path figure dashes exactly §5's jumps (moves not to a
+    4-neighbour) and the cell prints how many (10-1); the tile map's title says the clear
+    value 1 is +∞ to the replay (10-2); q_hiz's HTML explanation has no literal backticks
+    (10-5); a computed two-level Greene pyramid tests two boxes (10-8); the Mesa emulations
+    live in the package (10-10) and every figure's drawing code is folded (10-11); the Hi-Z
+    update and the depth-direction detail are folded, the sphere's long sentence split (10-12);
+    no comment points to a cell number (10-13); no undefined M (10-14)."""
+    import json
+
+    from teachraster.plotting.tiles import WalkPathArtists
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    cells = cells["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
+    code = [t for t, c in zip(text, cells) if c["cell_type"] == "code"]
+    # 10-1: the dashes of each panel are its visits that are not to a 4-neighbour, as §5 counts
+    blocks = ns.fill.trace.blocks
+    for order, dashed in ns.path_jumps.items():
+        seq = blocks.visit_order(order)
+        seq = seq[blocks.level[seq] == 1]
+        steps = np.abs(np.diff(np.c_[blocks.row[seq], blocks.col[seq]], axis=0)).sum(axis=1)
+        assert dashed == int((steps > 4).sum()) > 0, order
+    assert ns.path_jumps["morton"] > ns.path_jumps["scanline"]  # the Zs' diagonals count
+    assert "jump: not to a 4-neighbour" in WalkPathArtists.labels
+    assert "moves that are not to a 4-neighbour" in md and "each diagonal of a Z" in md
+    # 10-2, 10-5
+    tile_map = next(t for t in code if "farthest stored depth per 8×8 tile" in t)
+    assert "the clear value 1, which the replay counts as +∞" in tile_map
+    asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
+    assert "<code>exercises/08_tiles.ipynb</code>" in asked and "`exercises/" not in asked
+    # 10-8: the pyramid's two levels over the 12 x 8 tiles, and the boxes' verdicts
+    assert [g.shape for g in ns.pyramid] == [(8, 12), (4, 6), (2, 3)]
+    a, b = ns.pyramid_tests["A"], ns.pyramid_tests["B"]
+    assert [(t.level, t.cells, t.hidden) for t in a] == [(2, 1, False), (1, 1, True), (0, 4, True)]
+    assert [(t.level, t.cells, t.hidden) for t in b] == [(2, 1, False), (1, 2, False), (0, 4, True)]
+    finest_one = {k: min(t.level for t in v if t.cells == 1) for k, v in ns.pyramid_tests.items()}
+    assert finest_one == {"A": 1, "B": 2} and "(level 1 for A, level 2 for B)" in md
+    # 10-10: no Mesa emulation is defined in the lesson; the package's are called
+    assert not any("def llvmpipe_" in t or "def floor_pot" in t for t in code)
+    assert any("llvmpipe_binner.bin_rows(" in t for t in code)
+    assert any("llvmpipe_binner.small_triangle_command(" in t for t in code)
+    # 10-11: every cell that draws a figure has its code folded
+    for cell, t in zip(cells, text):
+        if cell["cell_type"] == "code" and "plt.subplots(" in t:
+            assert cell["metadata"].get("tags") == ["hide-input"], t[:60]
+            assert cell["metadata"]["jupyter"]["source_hidden"], t[:60]
+    # 10-12: the update scheme and the patents folded; the sentence in two
+    update = next(t for t in code if "Keeping the farthest depth current" in t)
+    assert update.index("<details>") < update.index("US 11,615,585")
+    assert "<details><summary>GL_GREATER, two bounds per tile" in md
+    assert "the tile's farthest stored depth not yet the front's (the tile" not in md
+    assert "Elsewhere early-z killed the fragments pixel by pixel" in md
+    # 10-13, 10-14
+    assert not any("cell 13's" in t for t in code) and "$M^2$" not in md

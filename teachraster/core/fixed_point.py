@@ -224,6 +224,28 @@ def max_extent(subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64) -> int:
     return (2**delta - 1) // 2 ** (bits + 1)
 
 
+def max_range(subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64, *, centre_bit=False) -> int:
+    """The widest range (px) of coordinates whose edge values fit a signed ``int_bits`` register.
+
+    Coordinates anywhere in a range of ``R`` pixels differ by less than ``R`` pixels
+    (:func:`range_budget`); ``2d + 2 <= int_bits`` allows differences below ``2**d`` units, so
+    ``R = 2**d`` units. On a GPU's own grid (``2**s`` units a pixel, no centre bit) with 8
+    sub-pixel bits and int32 that is ``2**15 / 256 = 128`` px: llvmpipe's ``MAX_FIXED_LENGTH32``
+    (``lp_rast.h``). ``centre_bit=True`` counts on the package's ``2**(s+1)`` grid.
+
+    >>> max_range(8, 32), max_range(8, 32, centre_bit=True), max_range(8, 64)
+    (128, 64, 8388608)
+    >>> range_budget(128, 8, 32).fits, range_budget(129, 8, 32).fits
+    (True, False)
+    """
+    bits = check_bits(subpixel_bits)
+    if bits is None:
+        raise ValueError("subpixel_bits: a fixed-point budget needs a number of bits, got None")
+    width = as_int("int_bits", int_bits, minimum=4)
+    delta = (width - 2) // 2  # 2 * delta + 2 <= width: differences below 2**delta units
+    return 2**delta // 2 ** (bits + bool(centre_bit))
+
+
 def fill_extent(xy, width: int, height: int, subpixel_bits=SUBPIXEL_BITS, block_sizes=None) -> int:
     """Extent (px) of a tiled fill: the vertices and every pixel centre the walk evaluates.
 

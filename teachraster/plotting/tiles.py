@@ -600,16 +600,18 @@ class WalkPathArtists(Artists):
         jump = Line2D([], [], color="black", ls=self.jumps.get_linestyle()[0], lw=1.6)
         return [self.start, self.end, jump]
 
-    labels = ("first block", "last block", "jump (next row, next parent)")
+    labels = ("first block", "last block", "jump: not to a 4-neighbour")
 
 
 def plot_walk_path(ax, fill, traversal: str = "scanline", *, level: int = -1) -> WalkPathArtists:
     """One level's blocks, coloured by kind, and the walk's path through them, for a projector.
 
-    Steps to a neighbouring block are solid; jumps (from the last child of one parent to the
-    first of the next, or from one row's end to the next row) are dashed and thinner, so that
-    they do not hide the blocks they cross; a filled dot marks the first block, a square the
-    last. ``level`` indexes ``block_sizes`` (default: the smallest).
+    Steps to a 4-neighbour (the next block left, right, up or down) are solid; every other
+    move is a jump, as lesson 10 §5 counts them (a row's end, the last child of one parent to
+    the first of the next, a diagonal of Morton's Z), dashed and thinner so that it does not
+    hide the blocks it crosses: the dashes can be counted against the printed jumps. A filled
+    dot marks the first block, a square the last. ``level`` indexes ``block_sizes`` (default:
+    the smallest).
     """
     _, blocks = tile_trace(fill, "plot_walk_path")
     level = range(len(blocks.block_sizes))[level]
@@ -620,7 +622,7 @@ def plot_walk_path(ax, fill, traversal: str = "scanline", *, level: int = -1) ->
     px, py = path.path.get_data()
     path.path.set_visible(False)  # redrawn below: steps and jumps apart
     segments = np.c_[px[:-1], py[:-1], px[1:], py[1:]].reshape(-1, 2, 2)
-    jump = np.hypot(np.diff(px), np.diff(py)) > size * np.sqrt(2) + 1e-9  # beyond a neighbour
+    jump = np.hypot(np.diff(px), np.diff(py)) > size + 1e-9  # not to a 4-neighbour
     lines = [
         LineCollection(segments[kind], colors="black", linestyles=ls, linewidths=width,
                        alpha=alpha, zorder=4)
