@@ -1860,8 +1860,9 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     before = "\n".join(t for c, t in zip(cells[:ask], text[:ask]) if c["cell_type"] == "markdown")
     assert "mirrored" not in before.split("## 4.")[1] and "beyond the far plane" not in before
     after = "\n".join(text[ask:])
-    assert "implicit\n**viewport scissor**" in after and "§15.6 *Viewport*" in after
-    assert "must really cut" not in after and "**depth clamping**" in after
+    # review r182 05a-11: the scissor's quote and depth clamping folded, still named
+    assert "implicit\n*viewport scissor*" in after and "§15.6 *Viewport*" in after
+    assert "must really cut" not in after and "**Depth clamping.**" in after
     assert any("stages = [" in t and '"clip"' in t for t in text[:ask])  # the pipeline strip
     # where x/y clipping matters: a vertex beyond the guard band, cut by the band's x plane only
     assert ns.far_side_clip[2, 0] / ns.far_side_clip[2, 3] > ns.band
@@ -2291,7 +2292,8 @@ def test_05a_r158_guard_band_formula_gpu_bands_and_check():
     """Review r158 05a-4/10/11: the band was only printed, with teachraster's size alone and no
     formula. The cell prints g = 2 * 0.999 * 2**(29 - 8) / max(W, H) - 1 (26,187 for 160 x
     120), the bands Mesa's drivers program (llvmpipe's linear path |x/w| <= 2, Intel 8K and
-    16K px), the third vertex beyond them all, and that cutting at any band moves no pixel."""
+    16K px), the third vertex beyond them all, and that cutting this triangle at any of three
+    bands moves no pixel (not every triangle's: review r182, below)."""
     ns = lesson("05a_zbuffer")
     assert ns.limit_px == 2**21 and ns.band_formula == pytest.approx(ns.band, abs=1e-9)
     assert f"{ns.band:,.0f}" == "26,187"
@@ -2304,6 +2306,85 @@ def test_05a_r158_guard_band_formula_gpu_bands_and_check():
     for pixels, du in ns.band_check.values():
         assert pixels == 0 and du < 1e-12  # a cut moves no edge, and u stays to rounding
     assert ns.whole.coverage.sum() > 100  # the floor is in the picture
+
+
+@pytest.mark.notebook
+def test_05a_r182_a_cut_rounds_its_new_vertices():
+    """Review r182 05a-1 (F): the lesson said a cut at any band changes no pixel ("A cut moves
+    no edge"); its new vertices are snapped again, so the lesson's own recipe changes a pixel
+    for some random triangles, and none unsnapped. The lesson counts it, shows one, and says
+    why a guard band avoids it; CONVENTIONS agrees."""
+    ns = lesson("05a_zbuffer")
+    bits = ns.SUBPIXEL_BITS
+    for g_ in (1.0, 2.0):
+        assert ns.snap_changed[g_, bits] and not ns.snap_changed[g_, None]
+        assert ns.snap_cuts[g_, bits] == ns.snap_cuts[g_, None] > 100
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    view, band = (f"{len(ns.snap_changed[g_, bits])} of {ns.snap_cuts[g_, bits]}" for g_ in (1, 2))
+    assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in text
+    assert f"llvmpipe's band for {band}," in text and "unsnapped no cut changed one" in text
+    # every changed centre lies within a snapping step of a cut edge (the pieces' edges,
+    # through their snapped vertices), as the text says
+    from teachraster.core.snapping import snap
+    from teachraster.pipeline.geometry.clipping import clip_polygon_steps
+    from teachraster.pipeline.viewport import to_window
+
+    for k, pixels in ns.snap_changed[1.0, bits].items():
+        polygon = clip_polygon_steps(ns.random_clip[k], None, guard=1.0)[-1].polygon
+        xy = snap(to_window(polygon, 160, 120)[:, :2])
+        edges = [(xy[j], xy[(j + 1) % len(xy)]) for j in range(len(xy))]
+        for row, col in pixels:
+            p = np.array([col + 0.5, row + 0.5])
+            gaps = [abs((b - a)[0] * (p - a)[1] - (b - a)[1] * (p - a)[0]) / np.hypot(*(b - a))
+                    for a, b in edges if (a != b).any()]  # fmt: skip
+            assert min(gaps) < ns.STEP_PX == 1 / 256
+    assert ns.flip_cover["whole"] != ns.flip_cover["cut"]
+    assert ns.gap_whole < ns.STEP_PX / 2 and ns.gap_cut < ns.STEP_PX / 2
+    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in text
+    for wrong in ("A cut moves no edge", "changes no fragment position", "makes any band safe"):
+        assert wrong not in text
+    assert "This is the real argument for a guard band" in text
+    flat = " ".join((Path(__file__).resolve().parent.parent / "CONVENTIONS.md").read_text().split())
+    assert "Clipping never moves an edge" not in flat
+    assert "lie on the triangle's edges only in exact arithmetic" in flat
+    api = " ".join((Path(__file__).resolve().parent.parent / "docs" / "api.md").read_text().split())
+    assert "teachraster never clips in x and y" not in api
+
+
+@pytest.mark.notebook
+def test_05a_r182_stepper_question_and_small_items():
+    """Review r182 05a-8: the stepper was only watched; q_step asks how many pixels of the
+    final picture show the triangle it opens on (96 of whose fragments pass): none, a front
+    face drawn later covers them all. 05a-7: q_culled asks for a whole number. 05a-9:
+    conservative depth's direction under reverse-Z. 05a-10/11: c35's detail folded, "after
+    the near plane"; 05a-3: the eye drawn whole, c38's x in view units."""
+    ns = lesson("05a_zbuffer")
+    passed, failed = ns.cube_steps[ns.k_open]
+    assert passed > 0 and ns.shown_at_end == 0
+    assert ns.k_open not in ns.later[0] and ns.later[1].sum() == passed
+    nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
+    src = ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, t in enumerate(src) if "q_step = Predict(" in t)
+    assert "answer=shown_at_end,\n    whole=True," in src[ask]
+    culled = next(t for t in src if "q_culled = Predict(" in t)
+    assert "    whole=True," in culled and "whole number" in culled
+    stepper = next(i for i, t in enumerate(src) if "stepper = ZBufferStepper(" in t)
+    assert stepper < ask and nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
+    assert src[ask + 1].startswith("q_step.hold()") and "shown_at_end" in src[ask + 1]
+    summary = next(i for i, t in enumerate(src) if t.startswith("## Summary"))
+    assert "q_step.hold()" in src[summary + 1]
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    assert "with reverse-Z's `GL_GREATER` (lesson 05b) it is `depth_less` that does" in text
+    clip = next(
+        t for t in _cells("05a_zbuffer", "markdown") if t.startswith("#### The clip volume")
+    )
+    shown = clip.split("<details>")[0]
+    assert len(shown.splitlines()) <= 20 and "D3D11.3" not in shown and "w = z = 0" not in shown
+    assert "After the near plane nothing of this small triangle reaches the guard band" in " ".join(
+        clip.split()
+    )
+    code = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
+    assert 'xlabel="x (view units)"' in code["c18"] and "ylim=(-0.3, 3.3)" in code["guard_fig"]
 
 
 def test_05a_r158_words_conventions_prepass_and_try_it():
