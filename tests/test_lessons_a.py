@@ -1853,7 +1853,11 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     draws where clipping sits in the pipeline."""
     ns = lesson("05a_zbuffer")
     assert not ns.crosses_after_divide and ns.z_ndc[0] > -1 and ns.z_ndc[2] > 1
-    assert ns.clip_choices[2].startswith("no")  # the answer when the edge does not cross
+    # review r182: what a clipper after the divide keeps (a piece up to the far plane, off the
+    # edge), not only whether -1 lies between two printed numbers
+    assert ns.far_after_divide and "to the far plane z/w = +1" in ns.clip_choices[2]
+    assert "which is no part of the edge" in ns.clip_choices[2]
+    assert ns.t_far < 0  # the segment's point at z/w = +1 lies on the line beyond the edge
     cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
     ask = next(i for i, t in enumerate(text) if "q_clip = Predict(" in t)
@@ -2191,7 +2195,7 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     z_w = ns.edge_pts[:, 2] / ns.edge_pts[:, 3]
     assert np.isclose(z_w[1], -1) and z_w[2] < -1 < 1 < z_w[3]  # -inf before w = 0, +inf after
     assert np.isclose(z_w[0], ns.z_ndc[0]) and np.isclose(z_w[-1], ns.z_ndc[2])
-    assert ns.clip_choices[2] == "no: the segment between the divided points has no z/w = −1"
+    assert "no part of the edge" in ns.clip_choices[2]  # the segment is not the edge (r182)
     ask = next(c for c in _cells("05a_zbuffer", "code") if "q_clip = Predict(" in c)
     said = eval("(" + ask[ask.index("explain=") + 8 : ask.rindex(",\n)")] + ")", vars(ns))
     assert "cannot even be found" not in said
