@@ -2323,9 +2323,11 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
     for g_ in (1.0, 2.0):
         assert ns.snap_changed[g_, bits] and not ns.snap_changed[g_, None]
         assert ns.snap_cuts[g_, bits] == ns.snap_cuts[g_, None] > 100
+    assert ns.snap_cuts[1.0, bits] == len(ns.random_clip) < ns.N_RANDOM == 200  # all are cut
     text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
     view, band = (f"{len(ns.snap_changed[g_, bits])} of {ns.snap_cuts[g_, bits]}" for g_ in (1, 2))
     assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in text
+    assert f"{ns.N_RANDOM} random triangles reaching out of the image" in text
     assert f"llvmpipe's band for {band}," in text and "unsnapped no cut changed one" in text
     # every changed centre lies within a snapping step of a cut edge (the pieces' edges,
     # through their snapped vertices), as the text says
