@@ -1858,15 +1858,20 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     draws where clipping sits in the pipeline."""
     ns = lesson("05a_zbuffer")
     assert not ns.crosses_after_divide and ns.z_ndc[0] > -1 and ns.z_ndc[2] > 1
-    assert ns.clip_choices[2].startswith("no")  # the answer when the edge does not cross
+    # review r182: what a clipper after the divide keeps (a piece up to the far plane, off the
+    # edge), not only whether -1 lies between two printed numbers
+    assert ns.far_after_divide and "to the far plane z/w = +1" in ns.clip_choices[2]
+    assert "which is no part of the edge" in ns.clip_choices[2]
+    assert ns.t_far < 0  # the segment's point at z/w = +1 lies on the line beyond the edge
     cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
     ask = next(i for i, t in enumerate(text) if "q_clip = Predict(" in t)
     before = "\n".join(t for c, t in zip(cells[:ask], text[:ask]) if c["cell_type"] == "markdown")
     assert "mirrored" not in before.split("## 4.")[1] and "beyond the far plane" not in before
     after = "\n".join(text[ask:])
-    assert "implicit\n**viewport scissor**" in after and "§15.6 *Viewport*" in after
-    assert "must really cut" not in after and "**depth clamping**" in after
+    # review r182 05a-11: the scissor's quote and depth clamping folded, still named
+    assert "implicit\n*viewport scissor*" in after and "§15.6 *Viewport*" in after
+    assert "must really cut" not in after and "**Depth clamping.**" in after
     assert any("stages = [" in t and '"clip"' in t for t in text[:ask])  # the pipeline strip
     # where x/y clipping matters: a vertex beyond the guard band, cut by the band's x plane only
     assert ns.far_side_clip[2, 0] / ns.far_side_clip[2, 3] > ns.band
@@ -2195,7 +2200,7 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     z_w = ns.edge_pts[:, 2] / ns.edge_pts[:, 3]
     assert np.isclose(z_w[1], -1) and z_w[2] < -1 < 1 < z_w[3]  # -inf before w = 0, +inf after
     assert np.isclose(z_w[0], ns.z_ndc[0]) and np.isclose(z_w[-1], ns.z_ndc[2])
-    assert ns.clip_choices[2] == "no: the segment between the divided points has no z/w = −1"
+    assert "no part of the edge" in ns.clip_choices[2]  # the segment is not the edge (r182)
     ask = next(c for c in _cells("05a_zbuffer", "code") if "q_clip = Predict(" in c)
     said = eval("(" + ask[ask.index("explain=") + 8 : ask.rindex(",\n)")] + ")", vars(ns))
     assert "cannot even be found" not in said
@@ -2296,7 +2301,8 @@ def test_05a_r158_guard_band_formula_gpu_bands_and_check():
     """Review r158 05a-4/10/11: the band was only printed, with teachraster's size alone and no
     formula. The cell prints g = 2 * 0.999 * 2**(29 - 8) / max(W, H) - 1 (26,187 for 160 x
     120), the bands Mesa's drivers program (llvmpipe's linear path |x/w| <= 2, Intel 8K and
-    16K px), the third vertex beyond them all, and that cutting at any band moves no pixel."""
+    16K px), the third vertex beyond them all, and that cutting this triangle at any of three
+    bands moves no pixel (not every triangle's: review r182, below)."""
     ns = lesson("05a_zbuffer")
     assert ns.limit_px == 2**21 and ns.band_formula == pytest.approx(ns.band, abs=1e-9)
     assert f"{ns.band:,.0f}" == "26,187"
@@ -2309,6 +2315,87 @@ def test_05a_r158_guard_band_formula_gpu_bands_and_check():
     for pixels, du in ns.band_check.values():
         assert pixels == 0 and du < 1e-12  # a cut moves no edge, and u stays to rounding
     assert ns.whole.coverage.sum() > 100  # the floor is in the picture
+
+
+@pytest.mark.notebook
+def test_05a_r182_a_cut_rounds_its_new_vertices():
+    """Review r182 05a-1 (F): the lesson said a cut at any band changes no pixel ("A cut moves
+    no edge"); its new vertices are snapped again, so the lesson's own recipe changes a pixel
+    for some random triangles, and none unsnapped. The lesson counts it, shows one, and says
+    why a guard band avoids it; CONVENTIONS agrees."""
+    ns = lesson("05a_zbuffer")
+    bits = ns.SUBPIXEL_BITS
+    for g_ in (1.0, 2.0):
+        assert ns.snap_changed[g_, bits] and not ns.snap_changed[g_, None]
+        assert ns.snap_cuts[g_, bits] == ns.snap_cuts[g_, None] > 100
+    assert ns.snap_cuts[1.0, bits] == len(ns.random_clip) < ns.N_RANDOM == 200  # all are cut
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    view, band = (f"{len(ns.snap_changed[g_, bits])} of {ns.snap_cuts[g_, bits]}" for g_ in (1, 2))
+    assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in text
+    assert f"{ns.N_RANDOM} random triangles reaching out of the image" in text
+    assert f"llvmpipe's band for {band}," in text and "unsnapped no cut changed one" in text
+    # every changed centre lies within a snapping step of a cut edge (the pieces' edges,
+    # through their snapped vertices), as the text says
+    from teachraster.core.snapping import snap
+    from teachraster.pipeline.geometry.clipping import clip_polygon_steps
+    from teachraster.pipeline.viewport import to_window
+
+    for k, pixels in ns.snap_changed[1.0, bits].items():
+        polygon = clip_polygon_steps(ns.random_clip[k], None, guard=1.0)[-1].polygon
+        xy = snap(to_window(polygon, 160, 120)[:, :2])
+        edges = [(xy[j], xy[(j + 1) % len(xy)]) for j in range(len(xy))]
+        for row, col in pixels:
+            p = np.array([col + 0.5, row + 0.5])
+            gaps = [abs((b - a)[0] * (p - a)[1] - (b - a)[1] * (p - a)[0]) / np.hypot(*(b - a))
+                    for a, b in edges if (a != b).any()]  # fmt: skip
+            assert min(gaps) < ns.STEP_PX == 1 / 256
+    assert ns.flip_cover["whole"] != ns.flip_cover["cut"]
+    assert ns.gap_whole < ns.STEP_PX / 2 and ns.gap_cut < ns.STEP_PX / 2
+    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in text
+    for wrong in ("A cut moves no edge", "changes no fragment position", "makes any band safe"):
+        assert wrong not in text
+    assert "This is the real argument for a guard band" in text
+    flat = " ".join((Path(__file__).resolve().parent.parent / "CONVENTIONS.md").read_text().split())
+    assert "Clipping never moves an edge" not in flat
+    assert "lie on the triangle's edges only in exact arithmetic" in flat
+    api = " ".join((Path(__file__).resolve().parent.parent / "docs" / "api.md").read_text().split())
+    assert "teachraster never clips in x and y" not in api
+
+
+@pytest.mark.notebook
+def test_05a_r182_stepper_question_and_small_items():
+    """Review r182 05a-8: the stepper was only watched; q_step asks how many pixels of the
+    final picture show the triangle it opens on (96 of whose fragments pass): none, a front
+    face drawn later covers them all. 05a-7: q_culled asks for a whole number. 05a-9:
+    conservative depth's direction under reverse-Z. 05a-10/11: c35's detail folded, "after
+    the near plane"; 05a-3: the eye drawn whole, c38's x in view units."""
+    ns = lesson("05a_zbuffer")
+    passed, failed = ns.cube_steps[ns.k_open]
+    assert passed > 0 and ns.shown_at_end == 0
+    assert ns.k_open not in ns.later[0] and ns.later[1].sum() == passed
+    nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
+    src = ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, t in enumerate(src) if "q_step = Predict(" in t)
+    assert "answer=shown_at_end,\n    whole=True," in src[ask]
+    culled = next(t for t in src if "q_culled = Predict(" in t)
+    assert "    whole=True," in culled and "whole number" in culled
+    stepper = next(i for i, t in enumerate(src) if "stepper = ZBufferStepper(" in t)
+    assert stepper < ask and nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
+    assert src[ask + 1].startswith("q_step.hold()") and "shown_at_end" in src[ask + 1]
+    summary = next(i for i, t in enumerate(src) if t.startswith("## Summary"))
+    assert "q_step.hold()" in src[summary + 1]
+    text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    assert "with reverse-Z's `GL_GREATER` (lesson 05b) it is `depth_less` that does" in text
+    clip = next(
+        t for t in _cells("05a_zbuffer", "markdown") if t.startswith("#### The clip volume")
+    )
+    shown = clip.split("<details>")[0]
+    assert len(shown.splitlines()) <= 20 and "D3D11.3" not in shown and "w = z = 0" not in shown
+    assert "After the near plane nothing of this small triangle reaches the guard band" in " ".join(
+        clip.split()
+    )
+    code = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
+    assert 'xlabel="x (view units)"' in code["c18"] and "ylim=(-0.3, 3.3)" in code["guard_fig"]
 
 
 def test_05a_r158_words_conventions_prepass_and_try_it():

@@ -227,6 +227,18 @@ def test_05a_q_order_has_its_picture_and_a_figure_reveal():
     assert not re.search(r"\b(red|green|blue) over|\bcycle\b|no order works", seen)
 
 
+def test_05a_q_step_is_asked_before_its_answer_stands():
+    """r182 05a-8: the stepper's question (how many pixels of the final picture show the
+    triangle it opens on: none) is answered neither above it nor by a visible cell below it
+    before Check; its count is printed by the held cell."""
+    ns = lesson("05a_zbuffer")
+    assert ns.shown_at_end == 0 and ns.cube_steps[ns.k_open][0] > 0
+    seen = seen_before_check("05a_zbuffer", "q_step = Predict(", "q_step")
+    assert f"showing triangle {ns.k_open}:" not in seen and "overwrit" not in seen
+    assert "a front face drawn later" not in seen
+    assert f"the stepper opens on triangle {ns.k_open}" in seen  # what the question reads
+
+
 def test_08_q_fastest_notes_reason_right(monkeypatch):
     """r171 F1: the note for −1 said errors added in one direction give −1; they give
     √S · 1/S = S^−1/2. −1 needs a bounded number of undecided samples. Each wrong answer's
