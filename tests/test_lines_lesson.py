@@ -492,7 +492,9 @@ def test_line_standards_cite_verified_sections():
     numbers one lower; they are not), core Appendix E.2.1 (wide lines deprecated;
     INVALID_VALUE in a forward-compatible context). The lesson never cites 14.5.2.1 as a
     section of its own."""
-    text = _cells_before("12a_lines", "db845d96", kinds=("markdown",))
+    # review r186 12a-9: the editions' notes stand in the folded Sources block after the summary
+    text = _cells_before("12a_lines", "db845d96", kinds=("markdown",)) + _cell_source("sources")
+    assert _cell_source("sources").startswith("<details><summary>Sources")
     assert "§14.5.2.1" not in text and "§14.5.2.2 *Wide Lines*, the same number in the core" in text
     assert "§14.5.2.3 *Antialiasing*" in text and "E.2.1" in text
     assert "other line segment rasterization algorithms are allowed" in " ".join(text.split())
@@ -659,7 +661,8 @@ def test_review_r101_y_major_tie_version_and_bresenham_prediction(ns):
 
 def test_review_r101_bresenham_question_takes_an_answer_first(ns, monkeypatch):
     """The §2 question, built from its cell as a student's kernel builds it: Check waits for
-    an answer (text that is no number keeps it waiting), 6 is right, the neighbours are not."""
+    a choice; review r186 12a-5: it asks for the mechanism (where the two part and which
+    pixel each takes), not two more additions of D, so only the tie broken each way is right."""
     import json
     from pathlib import Path
 
@@ -670,10 +673,21 @@ def test_review_r101_bresenham_question_takes_an_answer_first(ns, monkeypatch):
     cells = json.loads((Path(__file__).resolve().parents[1] / "notebooks" /
                         "12a_lines.ipynb").read_text())["cells"]  # fmt: skip
     src = next("".join(c["source"]) for c in cells if c.get("id") == "bresq")
-    for value, verdict in (("6", True), ("5", False), ("7", False)):
+    choices = ns.bres_choices
+    assert (ns.bres_row, ns.diamond_row) == (2, 3) and ns.bres_answer == choices["upper"]
+    for key, verdict in (("upper", True), ("lower", False), ("none", False), ("steps", False)):
         scope = dict(tr=tr, np=np, bres=ns.bres, dx=ns.dx, dy=ns.dy, Predict=Predict)
         exec(src, scope)  # the question cell, as the lesson runs it
-        assert _answered(scope["q_bres"], value) is verdict, value
+        q = scope["q_bres"]
+        assert q.check.disabled  # no choice yet
+        q.control.value = choices[key]
+        assert not q.check.disabled
+        q.check.click()
+        assert q.revealed and q.correct is verdict, key
+    # the stem says nowhere where they part, nor how each breaks the tie
+    stem = src.split("q_bres = Predict(")[1].split("list(bres_choices")[0]
+    for told in ("except where", "first light", "column 6", "D = 0", "lower", "upper"):
+        assert told not in stem, told
 
 
 def _answered(q, value: str) -> bool:
