@@ -890,3 +890,23 @@ def test_review_r187_12b_short_cells_and_small_items(nsb):
     assert "**alpha test**" in md and "`discard`" in md and "lesson 05a's early-z" in md
     assert "Forsyth, *Premultiplied alpha*, 2006" in md and "Bavoil and Myers" in md
     assert nsb.glow_is_additive and np.allclose(nsb.glow_over[:3], [0.7, 0.55, 0.4])
+
+
+def test_12b_r188_one_gpu_not_every_gpu_and_the_oit_titles():
+    """Review r188 12b F1: "the same on every run and every GPU" is false (GL 4.6 Appendix A
+    and Vulkan's Invariance appendix: not pixel exact; §6 measures llvmpipe's differences):
+    the same picture on one GPU, never reordered. And the OIT figure's caption says which
+    titles give an error (the peel panels give pixel counts) and why WBOIT fails at the
+    crossing (equal depths, equal weights: an average, not over); its panels in a 2 x 3 grid."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "notebooks" / "12b_blending.ipynb"
+    cells = {c.get("id"): "".join(c["source"]) for c in json.loads(path.read_text())["cells"]}
+    text = re.sub(r"\s+", " ", "\n".join(cells.values()))
+    assert "every run and every GPU" not in text
+    assert "the same on every run on one GPU" in text and "Appendix A, *Invariance*" in text
+    assert "the same picture on one GPU" in text
+    assert "The peel panels' titles give how many pixels each layer holds" in text
+    assert "averages the two colours instead of putting the nearer over the farther" in text
+    assert "plt.subplots(2, 3," in cells["oit_fig"]
