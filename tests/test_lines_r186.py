@@ -154,3 +154,20 @@ def test_minor_items(ns):
     assert "pixels [(5, 18), (6, 18)], 19.0 px from the new end" in _printed("clipcell")
     assert "not only beside the clipped end" in _flat("clipmd")
     assert "prints the change farthest from its clipped end" in _flat("clipmd")
+
+
+def test_12a_r191_the_tie_is_broken_the_other_way_on_this_line_only():
+    """Review r191 12a F: Bresenham breaks the midpoint tie the other way from the diamond rule
+    on §2's line, not on every line (in 4 of 8 octants the two agree); and nothing visible
+    under q_bres says the two part on this line, or that the printout reaches column 11."""
+    import json
+    import re
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "notebooks" / "12a_lines.ipynb"
+    cells = ["".join(c["source"]) for c in json.loads(path.read_text())["cells"]]
+    flat = re.sub(r"\s+", " ", "\n".join(cells))
+    assert "(a tie, which it breaks the other way)" not in flat
+    assert "which on §2's line it breaks the other way" in flat
+    assert "light differently on this line" not in flat
+    assert "the error terms printed above go on to column" not in flat
