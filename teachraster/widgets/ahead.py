@@ -210,7 +210,7 @@ class FramesAhead:
 
     def _touched(self, i: int) -> None:
         # slider i pressed (or focused): nothing is stale, its positions come first
-        if i != self.which and not self.closed:
+        if i != self.which and not self.closed and self.listening:
             self.which = i
             self.todo = self._todo()
 
