@@ -183,8 +183,10 @@ class DragFigure(anywidget.AnyWidget):
         # PlaneExplorer's vertex sent 0.5-0.7 MB of raw pixels a frame, which the server,
         # the browser and the page's main thread each handled: 21 fps against the editor's
         # 36; deflated, 36 kB, 1-3 ms of zlib, and the page inflates without the browser
-        # process, drag.js's inflate)
-        deflate = self.deflate
+        # process, drag.js's inflate); but the release's picture goes raw, painted at once:
+        # the last picture after a drag waits on no inflate (its asynchronous steps, each a
+        # turn of a busy page, put it at the editor's PNG's time under load, twice the raw one's)
+        deflate = self.deflate and not (final and self._t0)
         place, png = self._patch(last, rgba, final, deflate)
         t_encoded = time.perf_counter()
         bbox = ax.get_window_extent()
