@@ -78,8 +78,9 @@ def _pictures(sent, ref) -> dict:
 
 
 def _draw_slider(ahead) -> None:
-    """Draw the pictures of the slider moved last (the others' follow them)."""
-    while ahead.todo and ahead.todo[0][0] == ahead.which and ahead.step(seconds=0.05):
+    """Draw the pictures of the slider moved last (the others' follow them), one a step: a
+    batch of some seconds' drawing may reach into the next slider's."""
+    while ahead.todo and ahead.todo[0][0] == ahead.which and ahead.step():
         pass
 
 
@@ -234,7 +235,7 @@ def test_plane_explorer_draws_every_slider_the_one_moved_or_pressed_last_first()
     assert ahead.which == 7 and ahead.todo[:31] == [(7, k) for k in sorted(
         range(31), key=lambda k: (abs(k - 19), k))]  # fmt: skip
     assert sent[-1][0]["type"] == "ahead-clear"  # a press drops nothing
-    while ahead.todo[0][0] == 7 and ahead.step(seconds=0.05):
+    while ahead.todo[0][0] == 7 and ahead.step():
         pass
     ahead.step()  # one of the next slider (f1): dropped when f2 moves
     pictures = _pictures(sent, page._ref)
