@@ -143,3 +143,53 @@ def _painted_as_sent(tab, tmp_path) -> None:
     assert len(differ) == 0, (
         f"{len(differ)} pixels differ, first at (row, col) {differ[:3].tolist()}"
     )
+
+
+#: the pictures in the page's store of the explorer's figure (drag.js: data-ahead)
+AHEAD = "() => Number(document.querySelector('.t-plane .tr-drag img').dataset.ahead || 0)"
+#: f2's range input in the page
+F2 = ".t-plane input[type=range][aria-label='f2']"
+#: f2 dragged in the page from 1.0 to 1.6 and back to 1.2 (positions 20-26-22 of 31), a
+#: value per animation frame, released there (slider.js's path: pointerdown, input, change)
+DRAG_F2 = """async (sel) => {
+    const r = document.querySelector(sel);
+    r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
+    for (const v of [1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.5, 1.4, 1.3, 1.2]) {
+        await new Promise(requestAnimationFrame);
+        r.value = String(v);
+        r.dispatchEvent(new Event('input', { bubbles: true }));
+    }
+    r.dispatchEvent(new Event('change', { bubbles: true }));
+}"""
+
+
+def test_every_slider_is_drawn_ahead_and_f2_is_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
+    """Issue 31: only the slider moved last (v1 x) was drawn ahead, so f2's first drag went
+    through the kernel (16 fps). Once the kernel has idled, every slider's pictures are in
+    the page: f2's first drag is then shown by the page alone (the kernel hears of its
+    release, nothing else) and ends on the full picture drawn ahead, which the kernel does
+    not send again; the page's canvas is then, pixel for pixel, the kernel's picture, and
+    that is the picture a new explorer with these values draws."""
+    page.set_viewport_size({"width": 1400, "height": 900})
+    _run_all(lab, page, CELLS, NAME)
+    img = page.locator(".t-plane .tr-drag img").first
+    img.wait_for(timeout=120_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    # all nine sliders' positions: 3 x 65 (x), 3 x 57 (y), 3 x 31 (f)
+    page.wait_for_function(f"() => ({AHEAD})() >= {3 * 65 + 3 * 57 + 3 * 31}", timeout=300_000)
+    before = _kernel(page, "[ex.f[1].messages, ex.display.draws, ex.display.widget._frame]")
+    page.locator(F2).first.scroll_into_view_if_needed()
+    page.evaluate(DRAG_F2, F2)
+    page.wait_for_function(
+        '() => document.querySelector("' + F2 + '").kernelMs?.length >= 1', timeout=30_000
+    )
+    page.wait_for_timeout(1000)  # a picture the kernel might send would come meanwhile
+    messages, draws, frame = _kernel(
+        page, "[ex.f[1].messages, ex.display.draws, ex.display.widget._frame]"
+    )
+    # one value from the page, the release; no picture drawn or sent for it
+    assert (messages - before[0], draws, frame) == (1, before[1], before[2])
+    assert _kernel(page, "ex.f[1].value") == 1.2
+    _painted_as_sent(page, tmp_path)
+    assert _kernel(page, "bool(np.array_equal(ex.display.widget._last, PlaneExplorer("
+                         "ex.xy, ex.fvals).display.widget._last))")  # fmt: skip

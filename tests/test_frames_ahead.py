@@ -61,7 +61,8 @@ def _listen(ex, slider):
 
 
 def _pictures(sent, ref) -> dict:
-    """Position -> (picture, caption) from the "ahead" messages, the reference patched."""
+    """(slider, position) -> (picture, caption) from the "ahead" messages, the reference
+    patched."""
     out = {}
     for content, buffers in sent:
         if content["type"] != "ahead":
@@ -72,8 +73,15 @@ def _pictures(sent, ref) -> dict:
             if w:
                 raw = zlib.decompress(data) if entry["deflate"] else data
                 pic[y : y + h, x : x + w] = np.frombuffer(raw, np.uint8).reshape(h, w, 4)
-            out[entry["k"]] = pic, entry["caption"]
+            out[entry["slider"], entry["k"]] = pic, entry["caption"]
     return out
+
+
+def _draw_slider(ahead) -> None:
+    """Draw the pictures of the slider moved last (the others' follow them), one a step: a
+    batch of some seconds' drawing may reach into the next slider's."""
+    while ahead.todo and ahead.todo[0][0] == ahead.which and ahead.step():
+        pass
 
 
 def _draw_ahead_until(ahead, k) -> None:
@@ -81,9 +89,9 @@ def _draw_ahead_until(ahead, k) -> None:
     full picture is kept (all of them are drawn and checked in
     test_pictures_drawn_ahead_are_the_drafts_at_their_positions; a release needs only its own,
     and drawing all 90 of FilterExplorer's made these tests 5 to 9 s of CPU each)."""
-    while k not in ahead.kept and ahead.step():
+    while (ahead.which, k) not in ahead.kept and ahead.step():
         pass
-    assert k in ahead.kept, k
+    assert (ahead.which, k) in ahead.kept, k
 
 
 @pytest.mark.parametrize(
@@ -95,8 +103,7 @@ def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
     ahead = ex.display.frames_ahead
     shown, info = bytes(page._last), ex.info.value
     state = {k: v for k, v in vars(ex).items() if isinstance(v, (np.ndarray, float))}
-    while ahead.step(seconds=0.05):
-        pass
+    _draw_slider(ahead)  # the slider moved last (the others follow: a test of their own)
     assert ahead.drawn == len(ahead.values) == len(_pictures(sent, page._ref))
     # the explorer as it was: the same state, caption and picture on show
     assert bytes(page._last) == shown and ex.info.value == info
@@ -109,7 +116,7 @@ def test_pictures_drawn_ahead_are_the_drafts_at_their_positions(name):
         # the final value's picture, a key there)
         slider._on_page_message(slider, {"type": "value", "value": float(ahead.values[k]),
                                          "final": ahead.full, "seq": 1}, [])  # fmt: skip
-        picture, caption = pictures[k]
+        picture, caption = pictures[ahead.which, k]
         assert np.array_equal(picture, page._last), k
         assert caption == ex.info.value, k
     ex.close()
@@ -124,13 +131,13 @@ def test_nothing_is_drawn_ahead_until_a_page_listens_and_a_new_filter_starts_aga
     assert not ahead.step() and ahead.drawn == 0
     assert sent and all(c["type"] == "frame" for c, _ in sent)
     page._on_page_message(page, {"type": "ready"}, [])
-    assert sent[-1][0] == {"type": "ahead-clear", "generation": 1, "slider": 0}
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 1, "keep": None}
     assert ahead.step() and ahead.drawn == 1
     # the nearest positions first
     first = [c["entries"][0]["k"] for c, _ in sent if c["type"] == "ahead"]
     assert ahead.values[first[0]] == slider.value
     ex.filter.value = "bilinear"  # another picture at every position: drawn again
-    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2, "slider": 0}
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2, "keep": None}
     assert len(ahead.todo) == len(ahead.values)
     ex.close()
     assert not ahead.step()  # closed: nothing more
@@ -150,7 +157,7 @@ def test_a_page_opened_later_asks_for_a_new_reference_and_the_pictures_are_drawn
     whole = [c for c, _ in sent if c["type"] == "frame"][-1]
     assert whole["place"] is None and page.ref_frame == whole["ref"] == page.poster_frame > old
     assert np.array_equal(page._ref, page._last)
-    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2, "slider": 0}
+    assert sent[-1][0] == {"type": "ahead-clear", "generation": 2, "keep": None}
     ex.close()
 
 
@@ -206,7 +213,11 @@ def test_filters_drawn_ahead_are_sent_at_a_toggle_and_are_the_filters_pictures()
     fresh.close()
 
 
-def test_plane_explorer_draws_the_positions_of_the_slider_moved_or_pressed_last():
+def test_plane_explorer_draws_every_slider_the_one_moved_or_pressed_last_first():
+    """Issue 31: f2's first drag went through the kernel (16 fps): only the slider moved last
+    (v1 x) was drawn ahead. Every slider's positions are drawn now, the one pressed or moved
+    last first, then the values' (f1-f3), then the vertices'; a slider that moves keeps its
+    own pictures (they hold the others where they are) and the others' are drawn again."""
     from teachraster.widgets import PlaneExplorer
 
     ex = PlaneExplorer(backend="image")
@@ -216,21 +227,33 @@ def test_plane_explorer_draws_the_positions_of_the_slider_moved_or_pressed_last(
         s.send = lambda content, buffers=None: None
     ahead = ex.display.frames_ahead
     assert ahead.which == 0 and sliders[0].link == f"{page.key}/0"
+    counts = [len(slider_positions(s)) for s in sliders]
+    assert len(ahead.todo) == sum(counts) == 3 * 65 + 3 * 57 + 3 * 31
+    order = list(dict.fromkeys(i for i, _ in ahead.todo))
+    assert order == [0, 6, 7, 8, 3, 1, 4, 2, 5]
     sliders[7]._on_page_message(sliders[7], {"type": "touch"}, [])  # f2 pressed
-    assert ahead.which == 7 and sent[-1][0]["slider"] == 7
-    assert len(ahead.todo) == len(slider_positions(sliders[7])) == 31
-    while ahead.step(seconds=0.05):
+    assert ahead.which == 7 and ahead.todo[:31] == [(7, k) for k in sorted(
+        range(31), key=lambda k: (abs(k - 19), k))]  # fmt: skip
+    assert sent[-1][0]["type"] == "ahead-clear"  # a press drops nothing
+    while ahead.todo[0][0] == 7 and ahead.step():
         pass
-    pictures = _pictures([m for m in sent if m[0].get("generation") != 1], page._ref)
+    ahead.step()  # one of the next slider (f1): dropped when f2 moves
+    pictures = _pictures(sent, page._ref)
     for k in (0, 9):
-        value = float(ahead.values[k])
+        value = float(slider_positions(sliders[7])[k])
         sliders[7]._on_page_message(sliders[7], {"type": "value", "value": value,
                                                  "final": False, "seq": 1}, [])  # fmt: skip
-        assert np.array_equal(pictures[k][0], page._last) and pictures[k][1] == ex.info.value
-    sliders[7].value = 1.5  # the slider drawn moves: its pictures stay good
-    assert ahead.which == 7 and not ahead.todo
-    sliders[2].value = 9.0  # another one: its positions now
-    assert ahead.which == 2 and len(ahead.todo) == 65
+        assert np.array_equal(pictures[7, k][0], page._last)
+        assert pictures[7, k][1] == ex.info.value
+        # f2 moved: its pictures stay good, the others' are stale (page and kernel alike)
+        assert sent[-1][0] == {"type": "ahead-clear", "generation": ahead.generation,
+                               "keep": 7}  # fmt: skip
+        assert ahead.valid_from(7) < ahead.generation == ahead.valid_from(6)
+        assert {i for i, _ in ahead.kept} == {7} and len(ahead.kept) == 31
+        assert 7 not in {i for i, _ in ahead.todo} and len(ahead.todo) == sum(counts) - 31
+    sliders[2].value = 9.0  # v3 x: its positions first now, f2's are stale
+    assert ahead.which == 2 and ahead.todo[0][0] == 2 and not ahead.kept
+    assert len(ahead.todo) == sum(counts)
     ex.close()
 
 
@@ -288,7 +311,7 @@ def test_a_final_value_the_kernel_holds_brings_the_full_picture():
     page, sent = _listen(ex, slider)
     full = bytes(page._last)
     _draw_ahead_until(ex.display.frames_ahead, 80)  # the slider's position: drawn first
-    ahead = _pictures(sent, page._ref)[80]  # what the page shows from its store at 80
+    ahead = _pictures(sent, page._ref)[0, 80]  # what the page shows from its store at 80
     assert bytes(ahead[0]) == full and "on release" not in ahead[1]  # the full picture
     before = len([c for c, _ in sent if c["type"] == "frame"])
     slider._on_page_message(slider, {"type": "value", "value": 80.0, "final": True, "seq": 1}, [])
@@ -316,9 +339,8 @@ def test_a_release_on_a_full_picture_drawn_ahead_sends_nothing_for_the_other_exp
     page, sent = _listen(ex, slider)
     ahead = ex.display.frames_ahead
     assert ahead.full and ahead.slider is slider
-    while ahead.step(seconds=0.05):
-        pass
-    pictures = _pictures(sent, page._ref)
+    _draw_slider(ahead)
+    pictures = {k: v for (i, k), v in _pictures(sent, page._ref).items() if i == ahead.which}
     k = len(ahead.values) * 2 // 3
     value = float(ahead.values[k])
     slider._on_page_message(slider, {"type": "value", "value": float(ahead.values[k - 1]),
@@ -349,7 +371,7 @@ def test_a_release_on_a_full_picture_drawn_ahead_sends_nothing_and_ends_as_from_
     assert ahead.full
     k = int(np.argmin(np.abs(ahead.values - 75.0)))
     _draw_ahead_until(ahead, k)
-    pictures = _pictures(sent, page._ref)
+    pictures = {k: v for (_, k), v in _pictures(sent, page._ref).items()}
     for v in (61.0, 70.0):  # drafts (a page showing pictures ahead sends none)
         slider._on_page_message(slider, {"type": "value", "value": v, "final": False,
                                          "seq": 2}, [])  # fmt: skip
@@ -539,11 +561,10 @@ def test_sampling_key_names_the_filter_width_on_show_moved_and_drawn_ahead():
 
     ex = SamplingExplorer(width=0.0, backend="image")
     page, sent = _listen(ex, ex.width)
-    ex.width.value = 0.5  # the filter, moved last: its positions are drawn ahead
+    ex.width.value = 0.5  # the filter, moved last: its positions are drawn ahead first
     ahead = ex.display.frames_ahead
-    while ahead.step(seconds=0.05):
-        pass
-    pictures = _pictures(sent, page._ref)
+    _draw_slider(ahead)
+    pictures = {k: v for (i, k), v in _pictures(sent, page._ref).items() if i == ahead.which}
     for width in (1.0, 4.0):
         fresh = SamplingExplorer(width=width, backend="image")
         assert fresh.art.filtered.axes.get_legend().get_texts()[1].get_text() == (

@@ -23,6 +23,12 @@ sends the full picture, as for a draft. When another control
 changes the picture (a filter, a depth format), the pictures kept are dropped and drawn
 again.
 
+An explorer with several sliders (``SamplingExplorer``, ``PlaneExplorer``'s nine) has every
+slider's positions drawn, the slider moved or pressed last first: a first drag of any of
+them finds its pictures in the page once the kernel has idled long enough (issue 31:
+``PlaneExplorer``'s f2 dragged through the kernel at 16 fps). When one slider moves, its own
+pictures stay good (they hold the others where they are) and the others' are drawn again.
+
 Nothing is drawn until a page says it is listening (``ready``): a notebook run without a
 browser (nbclient, the tests) draws nothing ahead, and a page opened later asks again.
 
@@ -42,6 +48,7 @@ import numpy as np
 
 from ..plotting.frames import frame_rgba
 from .common import DRAWING, later
+from .dragging import dragged_within
 
 #: Sliders with more positions than this are not drawn ahead (pictures the page would keep).
 MOST_POSITIONS = 128
@@ -58,6 +65,9 @@ RESTART_S = 0.4
 #: batch drawn between two positions of a drag delayed the next by up to BATCH_S; the
 #: PlaneExplorer's vertex dragged at 22 fps, its round trip 84 ms against the editor's 50)
 BUSY_S = 0.05
+#: Seconds after a position dragged in the page (any figure of the kernel) during which a
+#: drag counts as under way: its positions come every 30-100 ms
+DRAG_GAP_S = 0.25
 
 
 def draw_elsewhere(display, explorer, compute) -> tuple:
@@ -106,7 +116,7 @@ def slider_positions(slider) -> np.ndarray:
 
 
 class FramesAhead:
-    """Draw ``explorer``'s figure at every position of a slider while the kernel idles.
+    """Draw ``explorer``'s figure at every position of its sliders while the kernel idles.
 
     Parameters
     ----------
@@ -114,8 +124,10 @@ class FramesAhead:
         The explorer's figure in the page (reference mode).
     sliders : LiveSlider or list of LiveSlider
         The sliders whose positions are drawn, each linked to the figure in the page. With
-        several (``PlaneExplorer``'s nine), the positions of the one moved last: the
-        pictures along a slider do not depend on where that slider is, only on the others.
+        several (``SamplingExplorer``'s two, ``PlaneExplorer``'s nine), the positions of the
+        one moved or pressed last first, then the others' (``order``). The pictures along
+        a slider do not depend on where that slider is, only on the others: when it moves,
+        its own pictures stay good and the others' are drawn again.
     explorer : object
         Has ``_compute_at(value)`` (its state at the slider value, attributes rebound, not
         changed in place; with several sliders ``_compute_at(value, which)``, ``which`` the
@@ -127,20 +139,37 @@ class FramesAhead:
         release on a position the page showed by itself costs no drawing (:meth:`held`).
     busy : callable, optional
         True while the explorer is dragged otherwise than by ``sliders`` (``PlaneExplorer``'s
-        vertices in the page): drawing waits for the release. (A drag of the slider drawn
+        vertices in the page): drawing waits for the release. (A drag of a slider drawn
         ahead is not waited for: its pictures, as they arrive, let the page answer it.)
+    order : list of int, optional
+        The sliders (indices) in the order their positions are drawn after those of the
+        slider moved last; by default as given.
+
+    Notes
+    -----
+    Each picture sent has a generation; the page (``static/drag.js``, its store) keeps the
+    same rule: a picture of slider ``i`` is good while its generation is at least
+    :meth:`valid_from` ``(i)``. A restart that keeps slider ``i``'s pictures (it moved)
+    raises that bound for the others only.
     """
 
-    def __init__(self, display, sliders, explorer, *, full: bool = False,
-                 busy=None) -> None:  # fmt: skip
+    def __init__(self, display, sliders, explorer, *, full: bool = False, busy=None,
+                 order=None) -> None:  # fmt: skip
         self.display, self.explorer, self.full = display, explorer, full
         self.busy = busy
-        #: full mode: position -> its patch as sent, ``(place, bytes)``, this generation
-        self.kept: dict[int, tuple] = {}
+        #: full mode: (slider, position) -> its patch as sent, ``(place, bytes)``
+        self.kept: dict[tuple[int, int], tuple] = {}
+        #: the (slider, position) pictures the page has, still good
+        self.sent: set[tuple[int, int]] = set()
         self.sliders = list(sliders) if isinstance(sliders, (list, tuple)) else [sliders]
-        self.which = 0  # the slider whose positions are drawn
+        self.order = list(range(len(self.sliders))) if order is None else list(order)
+        self.which = 0  # the slider moved or pressed last: its positions first
         self.generation = 0
-        self.todo: list[int] = []
+        #: pictures older than this generation are stale, but for ``exempt``: (the slider
+        #: moved last, the generation its own pictures are good from)
+        self.floor = 0
+        self.exempt: tuple[int, int] | None = None
+        self.todo: list[tuple[int, int]] = []
         self.drawn = 0
         self._handle = None
         self._loop = None  # the kernel's event loop, where the pictures are drawn
@@ -154,12 +183,12 @@ class FramesAhead:
             s.link = f"{page.key}/{i}"
             if len(self.sliders) > 1:
                 s.observe(lambda change, i=i: self._moved(i), "value")
-                s.on_touch(lambda i=i: self._moved(i))
+                s.on_touch(lambda i=i: self._touched(i))
         page.on_ready = page.on_reference = self._page_ready
 
     @property
     def slider(self):
-        """The slider whose positions are drawn."""
+        """The slider moved or pressed last."""
         return self.sliders[self.which]
 
     @property
@@ -167,12 +196,23 @@ class FramesAhead:
         """The values of its positions."""
         return slider_positions(self.slider)
 
+    def valid_from(self, i: int) -> int:
+        """The oldest generation whose pictures of slider ``i`` are still good."""
+        if self.exempt is not None and self.exempt[0] == i:
+            return self.exempt[1]
+        return self.floor
+
     def _moved(self, i: int) -> None:
-        # another slider moved (or was pressed): the pictures along the one drawn are stale,
-        # and this one is the likelier to move
-        if i != self.which:
+        # slider i moved: the pictures along the others are stale, its own stay good, and
+        # it is the likelier to move again
+        self.which = i
+        self.restart(keep=i)
+
+    def _touched(self, i: int) -> None:
+        # slider i pressed (or focused): nothing is stale, its positions come first
+        if i != self.which and not self.closed and self.listening:
             self.which = i
-            self.restart()
+            self.todo = self._todo()
 
     def _page_ready(self) -> None:
         self.listening = True
@@ -180,21 +220,37 @@ class FramesAhead:
         for callback in self.on_listening:
             callback()
 
-    def restart(self) -> None:
-        """Drop the pictures drawn so far (the page does too) and draw them all again,
-        nearest to the slider's position first (another control changed the picture)."""
+    def restart(self, keep: int | None = None) -> None:
+        """Drop the pictures drawn so far (the page does too) and draw them again, the slider
+        moved last first, nearest to its position first (another control changed the
+        picture). ``keep``: the slider whose pictures stay good (it alone moved)."""
         if self.closed or not self.listening:
             return
+        since = None if keep is None else self.valid_from(keep)
         self.generation += 1
-        self.kept = {}
+        self.floor, self.exempt = self.generation, None if keep is None else (keep, since)
+        self.kept = {key: v for key, v in self.kept.items() if key[0] == keep}
+        self.sent = {key for key in self.sent if key[0] == keep}
         self.display.widget.send({"type": "ahead-clear", "generation": self.generation,
-                                  "slider": self.which})  # fmt: skip
-        here = int(np.argmin(np.abs(self.values - self.slider.value)))
-        self.todo = sorted(range(len(self.values)), key=lambda k: (abs(k - here), k))
+                                  "keep": keep})  # fmt: skip
+        self.todo = self._todo()
+        if keep is not None and self._handle is not None:
+            return  # a slider dragged through the kernel: its drafts do not hold drawing back
         if self._handle is not None:
             self._handle.cancel()
             self._handle = None
         self._schedule(RESTART_S)
+
+    def _todo(self) -> list[tuple[int, int]]:
+        """The pictures still to draw: (slider, position), the slider moved last first, then
+        the others in ``order``, each nearest to its slider's position first."""
+        todo = []
+        for i in [self.which, *(j for j in self.order if j != self.which)]:
+            values = slider_positions(self.sliders[i])
+            here = int(np.argmin(np.abs(values - self.sliders[i].value)))
+            near = sorted(range(len(values)), key=lambda k: (abs(k - here), k))
+            todo += [(i, k) for k in near if (i, k) not in self.sent]
+        return todo
 
     def _schedule(self, delay: float = STEP_S) -> None:
         try:
@@ -211,7 +267,10 @@ class FramesAhead:
 
     def _run(self) -> None:
         self._handle = None
-        if self.busy is not None and self.busy():
+        # a point dragged in any figure of the kernel (another widget's too: with every
+        # slider of a PlaneExplorer to draw, seconds of batches ran between the positions
+        # of a TriangleEditor's drag in the same kernel) is answered first
+        if (self.busy is not None and self.busy()) or dragged_within(DRAG_GAP_S):
             self._schedule(BUSY_S)
             return
         # never in the middle of a widget message handled on another thread (common.DRAWING)
@@ -227,54 +286,64 @@ class FramesAhead:
             return False
         start, batch = time.perf_counter(), []
         while self.todo and (not batch or time.perf_counter() - start < seconds):
-            k = self.todo.pop(0)
-            rgba, caption = self.picture_at(float(self.values[k]))
-            batch.append((k, rgba, caption))
+            i, k = self.todo.pop(0)
+            value = float(slider_positions(self.sliders[i])[k])
+            rgba, caption = self.picture_at(value, i)
+            batch.append((i, k, rgba, caption))
         patches = self.display.widget.send_ahead(batch, self.generation)
+        keys = [(i, k) for i, k, _, _ in batch]
         if self.full:
-            self.kept.update((k, patch) for (k, _, _), patch in zip(batch, patches))
+            self.kept.update(zip(keys, patches))
+        self.sent.update(keys)
         self.drawn += len(batch)
         return bool(self.todo)
 
     def held(self) -> np.ndarray | None:
-        """The pixels the page shows by itself at the slider's value, when they are the full
-        picture there and the page says it shows them (the final value's ``held``, see the
-        module); else None (the picture is then drawn and sent)."""
-        slider, page = self.slider, self.display.widget
-        claim = getattr(slider, "held", None)
-        if not self.full or not claim or slider.dragging:
+        """The pixels the page shows by itself at the value of the slider whose final value
+        the kernel handles, when they are the full picture there and the page says it shows
+        them (the final value's ``held``, see the module); else None (the picture is then
+        drawn and sent)."""
+        page = self.display.widget
+        i = next((j for j, s in enumerate(self.sliders) if getattr(s, "held", None)), None)
+        if not self.full or i is None or self.sliders[i].dragging:
             return None
+        slider, claim = self.sliders[i], self.sliders[i].held
         try:
-            k = int(claim["k"])
-            # the pictures of now, against the page's reference, and no picture from the
+            k, generation = int(claim["k"]), int(claim["generation"])
+            # pictures good now, against the page's reference, and no picture from the
             # kernel on its way: the page's last frame is the kernel's last
-            current = (int(claim["generation"]), int(claim["ref"]), int(claim["n"]),
-                       int(claim.get("slider", 0))) == (self.generation, page.ref_frame,
-                                                        page._frame, self.which)  # fmt: skip
+            current = (self.valid_from(i) <= generation <= self.generation
+                       and (int(claim["ref"]), int(claim["n"]), int(claim.get("slider", 0)))
+                       == (page.ref_frame, page._frame, i))  # fmt: skip
         except (KeyError, TypeError, ValueError):
             return None
-        if not current or k not in self.kept or float(self.values[k]) != slider.value:
+        if not current or (i, k) not in self.kept:
             return None
-        return page.unpatch(*self.kept[k])
+        if float(slider_positions(slider)[k]) != slider.value:
+            return None
+        return page.unpatch(*self.kept[(i, k)])
 
-    def picture_at(self, value: float) -> tuple[np.ndarray, str]:
-        """The figure's pixels and caption at ``value``, as a draft there shows them (with
-        ``full``, as a final value there does); the explorer's state and artists are put
-        back as they were (nothing sent)."""
-        ex, which = self.explorer, [self.which] if len(self.sliders) > 1 else []
-        self.slider.dragging = not self.full  # as a draft at that value looks
+    def picture_at(self, value: float, i: int | None = None) -> tuple[np.ndarray, str]:
+        """The figure's pixels and caption with slider ``i`` (default: the one moved last) at
+        ``value``, as a draft there shows them (with ``full``, as a final value there
+        does); the explorer's state and artists are put back as they were (nothing sent)."""
+        i = self.which if i is None else i
+        ex, which = self.explorer, [i] if len(self.sliders) > 1 else []
+        slider = self.sliders[i]
+        slider.dragging = not self.full  # as a draft at that value looks
         try:
             rgba, caption, _ = draw_elsewhere(
                 self.display, ex, lambda: ex._compute_at(value, *which)
             )
         finally:
-            self.slider.dragging = False
+            slider.dragging = False
         return rgba, caption
 
     def close(self) -> None:
         self.closed = True
         self.todo = []
         self.kept = {}
+        self.sent = set()
         if self._handle is not None:
             self._handle.cancel()
 

@@ -27,6 +27,17 @@ from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.frames import changed_box, encode_png, frame_rgba, keys_js
 from .common import later
 
+#: When (``time.perf_counter()``) a figure of this kernel last heard of a point dragged in
+#: the page, mid-drag (:func:`dragged_within`)
+_last_move = [0.0]
+
+
+def dragged_within(seconds: float) -> bool:
+    """True when a point of any figure in this kernel was dragged in the page (not released)
+    within the last ``seconds``: work done while the kernel idles (pictures drawn ahead,
+    :mod:`~teachraster.widgets.ahead`) waits, and the drag's positions are answered at once."""
+    return time.perf_counter() - _last_move[0] < seconds
+
 
 def drag_js() -> str:
     """The page-side module (ESM), read from the package (``static/drag.js``)."""
@@ -144,6 +155,7 @@ class DragFigure(anywidget.AnyWidget):
         self._seq = int(content.get("seq", 0))
         self._t0 = time.perf_counter()
         final = bool(content.get("final"))
+        _last_move[0] = 0.0 if final else self._t0
         # mid-drag the caption travels only in the frame message (PageCaption): a trait
         # sync too was a second message and a second layout of the text per frame
         self.in_drag = not final
@@ -167,10 +179,14 @@ class DragFigure(anywidget.AnyWidget):
         h, w = rgba.shape[:2]
         last, self._last = self._last, rgba
         self._frame += 1
-        # a picture answering a point dragged in the page goes as raw pixels, deflated or not:
-        # the editor's way (issue 31: the PlaneExplorer's vertex, 0.5 MB a patch, spent a
-        # quarter of its kernel time on zlib and waited on the page's inflate under load)
-        deflate = self.deflate and not self._t0
+        # a picture answering a point dragged in the page is deflated too (issue 31: the
+        # PlaneExplorer's vertex sent 0.5-0.7 MB of raw pixels a frame, which the server,
+        # the browser and the page's main thread each handled: 21 fps against the editor's
+        # 36; deflated, 36 kB, 1-3 ms of zlib, and the page inflates without the browser
+        # process, drag.js's inflate); but the release's picture goes raw, painted at once:
+        # the last picture after a drag waits on no inflate (its asynchronous steps, each a
+        # turn of a busy page, put it at the editor's PNG's time under load, twice the raw one's)
+        deflate = self.deflate and not (final and self._t0)
         place, png = self._patch(last, rgba, final, deflate)
         t_encoded = time.perf_counter()
         bbox = ax.get_window_extent()
@@ -239,13 +255,13 @@ class DragFigure(anywidget.AnyWidget):
 
     def send_ahead(self, batch, generation: int) -> list[tuple]:
         """Send the page pictures drawn ahead, in one message: ``batch`` holds
-        ``(k, rgba, caption)``, the picture for position ``k`` of the slider that drives this
-        figure and its caption (reference mode only). Returns each picture's patch as sent,
-        ``(place, bytes)`` (:meth:`unpatch` gives its pixels back)."""
+        ``(i, k, rgba, caption)``, the picture for position ``k`` of slider ``i`` of those
+        that drive this figure and its caption (reference mode only). Returns each
+        picture's patch as sent, ``(place, bytes)`` (:meth:`unpatch` gives its pixels back)."""
         entries, buffers = [], []
-        for k, rgba, caption in batch:
+        for i, k, rgba, caption in batch:
             place, data = self._crop(self._ref, rgba, self.deflate)
-            entries.append({"k": int(k), "place": place, "caption": caption,
+            entries.append({"slider": int(i), "k": int(k), "place": place, "caption": caption,
                             "deflate": self.deflate and bool(data)})  # fmt: skip
             buffers.append(data)
         self.send({"type": "ahead", "generation": int(generation), "ref": self.ref_frame,

@@ -193,13 +193,15 @@ class SliderDisplay:
         self.widget.show(self.fig, self.fig.axes[0], self.handles(), final=not self.drafting(),
                          rgba=rgba)  # fmt: skip
 
-    def ahead(self, sliders, explorer, *, full: bool = False, busy=None):
-        """Draw ``explorer`` at every position of a slider (of ``sliders``: the one moved
-        last) while the kernel idles, for the page to show by itself (``full``: the full
-        picture there, not the draft; :class:`~teachraster.widgets.ahead.FramesAhead`)."""
+    def ahead(self, sliders, explorer, *, full: bool = False, busy=None, order=None):
+        """Draw ``explorer`` at every position of its sliders (the one moved last first, then
+        the others in ``order``) while the kernel idles, for the page to show by itself
+        (``full``: the full picture there, not the draft;
+        :class:`~teachraster.widgets.ahead.FramesAhead`)."""
         from .ahead import FramesAhead
 
-        self.frames_ahead = FramesAhead(self, sliders, explorer, full=full, busy=busy)
+        self.frames_ahead = FramesAhead(self, sliders, explorer, full=full, busy=busy,
+                                        order=order)  # fmt: skip
         return self.frames_ahead
 
     def close(self) -> None:

@@ -256,11 +256,15 @@ class PlaneExplorer:
         self.widget = projector_text(widgets.VBox([title, *rows, picture_row(
             [self.display.widget, *info_widgets])]), title)  # fmt: skip
         if self.backend != "ipympl":
-            # the positions of the slider moved last, drawn while the kernel idles; full
-            # pictures (the colour bar of a new f range too), so a release on one needs no
-            # picture from the kernel (issue 31: up to 122 ms after the release of v1 x)
+            # every slider's positions, drawn while the kernel idles: the slider moved last
+            # first, then the values' (f has no other control; a vertex is also dragged in
+            # the picture), then the vertices' (issue 31: f2's first drag went through the
+            # kernel, 16 fps); full pictures (the colour bar of a new f range too), so a
+            # release on one needs no picture from the kernel (up to 122 ms after the
+            # release of v1 x)
             self.display.ahead([*self.x, *self.y, *self.f], self, full=True,
-                               busy=lambda: self._drag_xy is not None)  # fmt: skip
+                               busy=lambda: self._drag_xy is not None,
+                               order=[6, 7, 8, 0, 3, 1, 4, 2, 5])  # fmt: skip
 
     def _sliders(self, xy, f) -> None:
         def slider(value, lo, hi, name, step=0.25):
