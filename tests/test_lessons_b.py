@@ -2231,12 +2231,13 @@ def test_09_r184_pointer_extents_held_rule_and_a_sheared_footprint():
     assert max(p_x, p_y) / fp.probes > 3 * minor  # the probes blur across it
     assert 0 < ns.roll_angle < 45  # the two vectors far from perpendicular
     # on the level floor's middle column the two agree: the vectors are perpendicular there
+    # (within a fifth of a degree)
     from teachraster.plotting.footprint import footprint
 
     r, c = ns.picked["far"]
     far = footprint(ns.frame.attrs[r, c], ns.frame.ddx[r, c], ns.frame.ddy[r, c],
                     ns.levels[0].shape)  # fmt: skip
-    assert sorted(far.extents, reverse=True) == pytest.approx(far.ellipse_axes, rel=1e-6)
+    assert sorted(far.extents, reverse=True) == pytest.approx(far.ellipse_axes, rel=1e-4)
     # 3: q_level's held cell, whose source prints GL's rule, is folded
     held = next(i for i, t in enumerate(text) if t.startswith("q_level.hold()"))
     assert cells[held]["metadata"]["jupyter"]["source_hidden"] is True
