@@ -51,7 +51,7 @@ TRUTH_CACHE = 96
 #: image and the error panel are seen together (review r184, 09-7: stacked in three rows the
 #: figure was 875 px tall and the widget 1059-1083 px, the image and the error panel never on
 #: a 1400 × 1000 screen together).
-FIGURE_PX = 680
+FIGURE_PX = 700
 
 
 def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
@@ -247,11 +247,9 @@ class FilterExplorer:
         self.info.value = self._info_html()
         title = title_html(
             "Texture filtering: a floor tilting to the horizon",
-            "Tilt the square until its checks are smaller than a pixel, then compare filters: "
-            "moiré without mipmaps, blur with trilinear, a little more kept by anisotropic "
-            "filtering (even at 89° the camera sees no footprint more than three times as long "
-            'as wide). The ring marks the worst pixel; its error is the "max" under the colour '
-            "bar.",
+            "Tilt until the checks are smaller than a pixel, then compare filters (even at 89° "
+            "the camera sees no footprint more than three times as long as wide). The ring in "
+            'the error panel marks the worst pixel, its error the "max" under the colour bar.',
         )
         self.widget = projector_text(widgets.VBox([title, control_row([self.tilt, self.filter]),
                                                    *info_widgets, self.display.widget]),
