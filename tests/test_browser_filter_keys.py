@@ -157,3 +157,64 @@ def test_a_drag_ends_on_the_full_picture_drawn_ahead_and_the_kernel_sends_none(l
     assert caption.startswith("filter trilinear") and "on release" not in caption, caption
     assert np.array_equal(shown, kernel), f"the page shows another picture ({tmp_path})"
     assert not page.errors, page.errors
+
+
+FIT_CELLS = [
+    "from teachraster.plotting import use_style\nfrom teachraster.widgets import FilterExplorer\n"
+    "style = use_style('classroom')  # as the lesson runs",
+    "explorer = FilterExplorer(tilt=30, filter='nearest', repeats=6)\n"
+    "explorer.widget.add_class('t-ffit')\nexplorer",
+]
+
+#: The widget's box, its picture's top, the status line's height and the notebook's visible
+#: height (CSS px), in the window as laid out now.
+FIT = """() => {
+  const w = document.querySelector('.t-ffit'), img = w.querySelector('.tr-drag img');
+  const cap = w.querySelector('.tr-drag-caption');
+  const panel = document.querySelector('.jp-NotebookPanel-notebook');
+  return {widget: w.getBoundingClientRect().height, top: img.getBoundingClientRect().top,
+          picture: img.getBoundingClientRect().height, caption: cap.getBoundingClientRect().height,
+          lineHeight: parseFloat(getComputedStyle(cap).lineHeight),
+          visible: panel.getBoundingClientRect().height};
+}"""
+
+
+def test_the_explorer_fits_a_1000_px_screen_and_a_filter_never_moves_its_picture(lab, page):  # noqa: F811
+    """Review r184, 09-7 and 09-8: in a 1400 × 1000 window the explorer (1059-1083 px tall)
+    never showed the image and the error panel together, and its status line wrapped for the
+    longer filter names, moving the picture down 24 px at every switch between filters. Now
+    the whole widget fits the notebook's visible height, its status line takes one line for
+    every filter, and the picture's top stays put through all seven."""
+    from teachraster.pipeline.texturing.texture import TEXTURE_FILTERS
+
+    size = page.viewport_size
+    page.set_viewport_size({"width": 1400, "height": 1000})
+    try:
+        _fits_and_stays(lab, page, TEXTURE_FILTERS)
+    finally:
+        page.set_viewport_size(size)
+    assert not page.errors, page.errors
+
+
+def _fits_and_stays(lab, page, filters) -> None:  # noqa: F811
+    import time
+
+    _run_all(lab, page, FIT_CELLS, "filter_fit.ipynb")
+    page.wait_for_selector(".t-ffit .tr-drag img", timeout=180_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    page.locator(".t-ffit").first.scroll_into_view_if_needed()
+    first = page.evaluate(FIT)
+    assert first["widget"] <= first["visible"], first
+    tops = {}
+    for name in filters:
+        page.locator(".t-ffit select").first.select_option(name)
+        page.wait_for_function(
+            "n => document.querySelector('.t-ffit .tr-drag-caption').innerText"
+            ".startsWith('filter ' + n + ' ') && !/computing/.test("
+            "document.querySelector('.t-ffit .tr-drag-caption').innerText)",
+            arg=name, timeout=60_000)  # fmt: skip
+        time.sleep(0.3)
+        got = page.evaluate(FIT)
+        assert got["caption"] < 1.5 * got["lineHeight"], (name, got)  # one line
+        tops[name] = got["top"]
+    assert max(tops.values()) - min(tops.values()) <= 1, tops

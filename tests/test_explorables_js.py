@@ -694,6 +694,9 @@ def test_footprint_readout_gives_every_number_to_two_decimals():
     numbers = re.findall(r"(?<![\w.])-?\d+\.\d+", text)
     assert len(numbers) >= 5 and all(len(n.split(".")[1]) == 2 for n in numbers), numbers
     assert f"ρ = {fp['rho']:.2f}" in text and f"λ = log₂ ρ = {fp['lam']:.2f}" in text
+    # r184 09-2: GL's P_x and P_y are the derivative vectors' lengths, not the ellipse's axes
+    assert "extents along x and y (the derivative vectors' lengths" in text
+    assert "axes are" not in text
 
 
 def test_pixels_reading_a_texel_point_as_footprint_contains():

@@ -919,7 +919,7 @@ def assert_texts_apart(texts, fig, gap_px: float) -> None:
 
 def test_filter_explorer_panels_fit_the_column_apart():
     """The three panels of lesson 09's explorer in the column (940 px at the classroom style),
-    the image above the other two: each title within its panel ("error vs footprint mean" ran 4 px past
+    the image beside the other two: each title within its panel ("error vs footprint mean" ran 4 px past
     both sides of its panel, as wide as the column allows), no label on another, the
     colour bars' end labels apart, nothing cut at the figure's edges."""
     from teachraster.plotting import use_style
@@ -937,12 +937,16 @@ def test_filter_explorer_panels_fit_the_column_apart():
         for ax in ex.axes:
             title, panel = ax.title.get_window_extent(renderer), ax.get_window_extent(renderer)
             assert panel.x0 <= title.x0 and title.x1 <= panel.x1, ax.get_title()
-        # review r42 09-3: the filtered image on top, the level and error panels below it,
-        # side by side at one size
+        # review r184 09-7: the filtered image on the left, the level panel above the error
+        # panel on its right, at one size; the figure FIGURE_PX tall (r42 09-3: three panels
+        # in a row were too small)
+        from teachraster.widgets.filter_explorer import FIGURE_PX
+
         image, lod, error = (ax.get_window_extent(renderer) for ax in ex.axes)
-        assert image.y0 > max(lod.y1, error.y1)
-        assert abs(lod.y1 - error.y1) < 1 and abs(lod.width - error.width) < 1
-        assert lod.x1 < error.x0 and image.width > lod.width
+        assert image.x1 < min(lod.x0, error.x0) and abs(lod.x0 - error.x0) < 1
+        assert lod.y0 > error.y1 and abs(image.y1 - lod.y1) < 1
+        assert abs(lod.width - error.width) < 1 and image.width > lod.width
+        assert round(fig.get_figheight() * fig.dpi) == FIGURE_PX
     finally:
         ex.close()
 

@@ -2189,9 +2189,66 @@ def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe(
     reveal = next(t for t in text if "lone_art = plot_quads" in t)
     assert reveal.startswith("q_helpers.hold()")
     # 7, 8, 14
-    assert "in the level panel (bottom left)" in flat and "middle (level) panel" not in flat
+    # r184 09-7: the level panel is beside the image now, above the error panel
+    assert "in the level panel (top right)" in flat and "middle (level) panel" not in flat
     assert "a point may light **no** pixel" in flat
     assert "8. the same λ from a conformant OpenGL implementation" in text[0]
+
+
+def test_09_r184_pointer_extents_held_rule_and_a_sheared_footprint():
+    """Review r184 09: cell 6 pointed "above the figure" at lines printed under it (C); P_max
+    and P_min were called the ellipse's axes, where GL's formula takes the derivative vectors'
+    lengths, and a pixel of the rolled floor now shows the two apart (F); q_level's rule stood
+    in the held cell's visible source under Check (3); "What you should see" cut to about half
+    (17)."""
+    import json
+    import re
+
+    from test_predictions_r147 import seen_before_check
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    flat = " ".join(" ".join(text).split())
+    # C: the sinc lines come after the figure in cell 5's output; the pointer says so
+    sampling = next(i for i, t in enumerate(text) if "sample_signal(32, *s)" in t)
+    code = text[sampling]
+    assert code.index("plt.show()") < code.index("passes a wave of frequency f times sinc")
+    told = " ".join(text[sampling + 1].split())
+    assert "(the lines under the figure print how much)" in told
+    assert "lines above the figure print how much" not in told
+    # F: no "axes" for P_max / P_min; the spec's definition; the readout's word
+    for gone in ("both axes of the footprint", "prints both axes", "ellipse's two axes",
+                 "conjugate axes", "spaced along the major axis"):  # fmt: skip
+        assert gone not in flat, gone
+    assert "the lengths of the two derivative vectors" in flat
+    assert "derivative vectors' lengths, $P_x$ and $P_y$" in flat
+    ns = lesson("09_texture_filtering")
+    fp = ns.sheared
+    (p_x, p_y), (major, minor) = fp.extents, fp.ellipse_axes
+    assert 1 < fp.lam < 2 and ns.roll_pixel in ns.roll_fps
+    assert fp.probes == int(np.ceil(max(p_x, p_y) / min(p_x, p_y)))  # GL's N
+    assert major / minor > 3 * max(p_x, p_y) / min(p_x, p_y)  # far thinner than GL's ratio
+    assert max(p_x, p_y) / fp.probes > 3 * minor  # the probes blur across it
+    assert 0 < ns.roll_angle < 45  # the two vectors far from perpendicular
+    # on the level floor's middle column the two agree: the vectors are perpendicular there
+    # (within a fifth of a degree)
+    from teachraster.plotting.footprint import footprint
+
+    r, c = ns.picked["far"]
+    far = footprint(ns.frame.attrs[r, c], ns.frame.ddx[r, c], ns.frame.ddy[r, c],
+                    ns.levels[0].shape)  # fmt: skip
+    assert sorted(far.extents, reverse=True) == pytest.approx(far.ellipse_axes, rel=1e-4)
+    # 3: q_level's held cell, whose source prints GL's rule, is folded
+    held = next(i for i, t in enumerate(text) if t.startswith("q_level.hold()"))
+    assert cells[held]["metadata"]["jupyter"]["source_hidden"] is True
+    assert "hide-input" in cells[held]["metadata"]["tags"]
+    seen = seen_before_check("09_texture_filtering", "q_level = PredictPoint(", "q_level")
+    assert "λ rounded" not in seen and "⌈λ + 1/2⌉" not in seen
+    # 17: the notes after the explorer about half their old length (727 words), no number
+    # the printout gives copied into them
+    see = next(t for t in text if t.startswith("**What you should see**"))
+    notes = see[: see.index("<details>")]
+    assert len(notes.split()) < 420 and not re.search(r"\d\.\d\d", notes)
 
 
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():

@@ -18,9 +18,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from matplotlib.colors import to_rgba
 from matplotlib.patches import Polygon, Rectangle
 
 from .style import COLORS, OKABE_ITO
+
+#: The second shade of the anisotropic probes, their outlines and centres: a darker bluish
+#: green, told from the first on a projector.
+PROBE_DARK = "#005A45"
 
 
 @dataclass(frozen=True)
@@ -38,6 +43,23 @@ class Footprint:
     #: where trilinear is one bilinear read of level 0 (magnified, λ ≤ 0): the first of the
     #: 2 × 2 texels it reads, (column, row) in texels of level 0 (unwrapped); else None
     bilinear: np.ndarray | None = None
+
+    @property
+    def extents(self) -> tuple[float, float]:
+        """The lengths of the two derivative vectors, ``|axis_x|`` and ``|axis_y|``: GL's
+        ``P_x`` and ``P_y`` (``EXT_texture_filter_anisotropic``), from which ρ and the
+        anisotropic probes are counted."""
+        return float(np.hypot(*self.axis_x)), float(np.hypot(*self.axis_y))
+
+    @property
+    def ellipse_axes(self) -> tuple[float, float]:
+        """The footprint ellipse's two principal axes (whole lengths, the longer first): the
+        singular values of the matrix whose columns are ``axis_x`` and ``axis_y``. They are
+        :attr:`extents` only where the two derivative vectors are perpendicular; on a
+        sheared footprint the ellipse is longer and thinner than the extents say."""
+        major, minor = np.linalg.svd(np.column_stack([self.axis_x, self.axis_y]),
+                                     compute_uv=False)  # fmt: skip
+        return float(major), float(minor)
 
 
 def footprint(uv, ddx, ddy, texture_shape, max_anisotropy: int = 16) -> Footprint:
@@ -125,16 +147,23 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
                                            ls="-" if fp.bilinear is None else "--",
                                            ec=OKABE_ITO["orange"], zorder=3, label=label))  # fmt: skip
     side = fp.rho / fp.probes
-    # one probe is trilinear's own read: filled only, its outline would hide the orange
-    edge = "none" if fp.probes == 1 else OKABE_ITO["bluish_green"]
     probes = fp.probe_centres - shift
     if fp.bilinear is not None:  # magnified: the one probe is the same bilinear read
         probes, side = read_lo[None, :] + 1.0, 2.0
+    # Overlapping probes (spaced P_max / (N + 1), each P_max / N wide) merged into one band:
+    # two shades in turn, each outlined, and a dot at each centre, so that they can be
+    # counted. One probe is trilinear's own read: filled only, its outline would hide the
+    # orange.
+    green = OKABE_ITO["bluish_green"]
     for k, p in enumerate(probes):
-        ax.add_patch(Rectangle(p - side / 2, side, side, fill=True, alpha=0.35, lw=1.5,
-                               ec=edge, fc=OKABE_ITO["bluish_green"], zorder=2,
+        face = to_rgba(green if k % 2 == 0 else PROBE_DARK, 0.35)
+        edge = "none" if len(probes) == 1 else to_rgba(PROBE_DARK, 0.9)
+        ax.add_patch(Rectangle(p - side / 2, side, side, fill=True, lw=1.2, ec=edge, fc=face,
+                               zorder=2,
                                label=(f"{fp.probes} anisotropic probes, λ = {fp.probe_lam:.1f}"
                                       if k == 0 else None)))  # fmt: skip
+    if len(probes) > 1:
+        ax.plot(*np.asarray(probes).T, "o", ms=4, color=PROBE_DARK, zorder=4)
     art["probes"] = fp.probe_centres
     what = "texels from the centre" if centred else "texels"
     ax.set(xlim=(lo[0], hi[0]), ylim=(hi[1], lo[1]), aspect="equal",

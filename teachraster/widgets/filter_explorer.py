@@ -46,19 +46,29 @@ ALT = "the filtered texture, its mip levels and its error"
 TRUTH_CACHE = 96
 
 
+#: The figure's height in screen pixels at its own dpi: with the widget's title, controls and
+#: status line above it, the whole explorer fits a 1000-px-tall screen in JupyterLab, so the
+#: image and the error panel are seen together (review r184, 09-7: stacked in three rows the
+#: figure was 875 px tall and the widget 1059-1083 px, the image and the error panel never on
+#: a 1400 × 1000 screen together).
+FIGURE_PX = 700
+
+
 def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
     """Size ``fig`` to the notebook column and add the explorer's Axes.
 
-    Two rows: the filtered image on top, centred and as large as the column allows at a
-    whole number of figure pixels per image pixel (its checks keep equal widths); below it
-    the mip level(s) each pixel reads and the error against the footprint mean, side by side,
-    with a colour bar under each (its tick labels and label below it). Three panels in one
-    row were each about 190 px wide in a 1280 px browser: the far checks that the lesson asks
-    students to compare were a few pixels tall (review r42, 09-3).
+    Two columns: the filtered image on the left, as large as fits at a whole number of figure
+    pixels per image pixel (its checks keep equal widths); on the right the mip level(s) each
+    pixel reads above the error against the footprint mean, each with a colour bar under it
+    (its tick labels and label below it). The figure is :data:`FIGURE_PX` tall. Three panels
+    in one row were each about 190 px wide in a 1280 px browser: the far checks that the
+    lesson asks students to compare were a few pixels tall (review r42, 09-3); three rows
+    were taller than the screen (review r184, 09-7).
 
     Returns
     -------
     panels : [Axes, Axes, Axes]
+        The image, the level panel, the error panel.
     bars : [Axes, Axes]
         The colour bars' Axes, under the level and the error panel.
     note_at : (float, float)
@@ -66,44 +76,54 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
         below its colour bar's tick labels, off the picture.
     """
     s, r, fw = font_scale(), width / height, column_inches(fig)
+    fh = FIGURE_PX / fig.dpi
     # Margins and gaps hold what sticks out of the panels: half a tick label beyond a colour
     # bar's end (a range ending on a tick) and the titles' breathing room between panels.
     left, right, gap = 0.15, 0.17 * s, 0.28 * s
-    w = (fw - left - right - gap) / 2  # the lower row: two panels
-    h = w / r
-    # the image: about 0.62 of the column (the page stays about 900 px tall), an integer
-    # number of figure pixels per texel-sized image pixel where the image is small enough
-    scale = max(int(0.62 * fw * fig.dpi / width), 1)
-    top_w = min(scale * width / fig.dpi, fw - left - right)
-    top_h = top_w / r
     title = 0.25 * s + 0.1  # no tick labels: one row of titles (their pad included)
     # between a panel and its colour bar (a pixel more than the bar's padded box needs: the
     # cached bar is put back only where it overlaps no panel); the bar
     pad, bar = 0.09 * s, 0.1 * s
     below = pad + bar + 0.53 * s  # the bar, its tick labels and the row of its label
-    fh = title + top_h + title + h + below
+    # the right column: two panels, each with its title above and its bar below, fill fh
+    h = (fh - 2 * (title + below)) / 2
+    w = h * r
+    # the image: the rest of the width, at an integer number of figure pixels per image pixel
+    # where the image is small enough, and no taller than the figure
+    room = min(fw - left - right - gap - w, (fh - title) * r)
+    scale = max(int(room * fig.dpi / width), 1)
+    top_w = min(scale * width / fig.dpi, room)
+    top_h = top_w / r
     fig.set_size_inches(fw, fh)
-    x_top = left + (fw - left - right - top_w) / 2
-    panels = [fig.add_axes((x_top / fw, (below + h + title) / fh, top_w / fw, top_h / fh))]
+    # the two columns centred in the figure's width, the image level with the level panel
+    x0 = left + (fw - left - right - top_w - gap - w) / 2
+    panels = [fig.add_axes((x0 / fw, (fh - title - top_h) / fh, top_w / fw, top_h / fh))]
     bars = []
+    x = x0 + top_w + gap
     for k in range(2):
-        x = left + k * (w + gap)
-        panels.append(fig.add_axes((x / fw, below / fh, w / fw, h / fh)))
-        bars.append(fig.add_axes((x / fw, (below - pad - bar) / fh, w / fw, bar / fh)))
+        y = fh - (k + 1) * (title + h) - k * below  # the panel's lower edge
+        panels.append(fig.add_axes((x / fw, y / fh, w / fw, h / fh)))
+        bars.append(fig.add_axes((x / fw, (y - pad - bar) / fh, w / fw, bar / fh)))
     # below the tick labels, as the bar's label, and clear of the bar's box (tick labels
     # and all): the colour bar is put back from its cache only where nothing moving overlaps
     label_row = (pad + bar + 0.36 * s) / h
     return panels, bars, (1.0, -label_row)
 
 
+def _fixed(html: str, chars: int) -> str:
+    """``html`` in an inline box at least ``chars`` characters wide (left-aligned)."""
+    return f'<span style="display:inline-block;min-width:{chars}ch">{html}</span>'
+
+
 class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
 
-    Three panels: the filtered image (on top), the mip level(s) each pixel reads (as the engine
-    decides them, :func:`~teachraster.pipeline.texturing.texture_filters.levels_read`: one
+    Three panels: the filtered image (on the left), the mip level(s) each pixel reads (top
+    right, as the engine decides them,
+    :func:`~teachraster.pipeline.texturing.texture_filters.levels_read`: one
     colour per level, two levels' colours mixed by their weights where a filter blends them,
     the probes' finer levels for ``anisotropic``, level 0 everywhere for ``nearest`` and
-    ``bilinear``) and the error against the texture averaged over each pixel's true
+    ``bilinear``) and, under it, the error against the texture averaged over each pixel's true
     footprint (:func:`teachraster.study.texture_truth.footprint_average`). The square's
     texture repeats ``repeats`` times, so tilting it far makes its checks much smaller than a
     pixel: the moiré of ``nearest`` and ``bilinear``, the blur of ``trilinear``, the sharpness
@@ -227,12 +247,9 @@ class FilterExplorer:
         self.info.value = self._info_html()
         title = title_html(
             "Texture filtering: a floor tilting to the horizon",
-            "Tilt the square until its checks are smaller than a pixel, then compare filters: "
-            "moiré without mipmaps, blur with trilinear, and how much more anisotropic filtering "
-            "keeps (here a little: even at 89° the camera, above the square's near edge, sees "
-            "no footprint more than three times as long as wide). "
-            'The ring in the error panel marks the worst pixel; its error is the "max" '
-            "under the colour bar.",
+            "Tilt until the checks are smaller than a pixel, then compare filters (even at 89° "
+            "the camera sees no footprint more than three times as long as wide). The ring in "
+            'the error panel marks the worst pixel, its error the "max" under the colour bar.',
         )
         self.widget = projector_text(widgets.VBox([title, control_row([self.tilt, self.filter]),
                                                    *info_widgets, self.display.widget]),
@@ -391,12 +408,17 @@ class FilterExplorer:
             error.update(self.image, self.truth)
 
     def _info_html(self) -> str:
+        """The status line: short enough for one line in a 1400-px window, and as long for
+        every filter (the name and the reads in boxes of a fixed width), so that switching
+        filters never wraps it and moves the figure (review r184, 09-8: the longer names
+        wrapped it and the figure jumped 24 px)."""
         reads = self._reads()
         rms = "(on release)" if self.truth is None else f"{self.rms:.3f}"
+        name = max(len(f) for f in TEXTURE_FILTERS) + 2  # bold is wider than 1ch a letter
         return (
-            f"filter <b>{self.shown_filter}</b> · RMS error against the footprint mean "
-            f"<b>{rms}</b> · about {reads:.1f} texels read per pixel · largest λ "
-            f"{np.nanmax(self.lod):.1f}"
+            f"filter {_fixed(f'<b>{self.shown_filter}</b>', name)} · RMS error vs footprint "
+            f"mean <b>{rms}</b> · {_fixed(f'{reads:.1f}', 4)} texels read per pixel"
+            f" · largest λ {np.nanmax(self.lod):.1f}"
         )
 
     def _pending_html(self) -> str:

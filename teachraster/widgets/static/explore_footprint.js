@@ -377,7 +377,10 @@ export function footprintText(state, fp, reading) {
     // two decimals throughout, as the lesson's printouts (r104 09-7: "axes 0.976 and 1.44",
     // "λ = 0.526" beside "λ = 1.7")
     const f2 = (x) => x.toFixed(2);
-    parts.push(`<b>Pixel (row ${r}, col ${c})</b>: its footprint's axes are ` +
+    // the derivative vectors' lengths (GL's P_x, P_y), not the ellipse's axes: the two
+    // differ where the vectors are not perpendicular (lesson 09, §6)
+    parts.push(`<b>Pixel (row ${r}, col ${c})</b>: its footprint's extents along x and y ` +
+      `(the derivative vectors' lengths, GL's P<sub>x</sub> and P<sub>y</sub>) are ` +
       `${f2(Math.hypot(...fp.axisX))} and ${f2(Math.hypot(...fp.axisY))} texels ` +
       `(dashed: the pixel square, mapped; blue: the ellipse). ρ = ${f2(fp.rho)}, ` +
       `λ = log₂ ρ = ${f2(fp.lam)}: GL's nearest mip level is <b>${fp.nearest}</b> ` +
