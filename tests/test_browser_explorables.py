@@ -57,6 +57,8 @@ CELLS = [
     "diamonds = DiamondExplorer()\ndiamonds",
     "pixels = PredictPixels('Click the pixels this triangle covers.', "
     "answer=tr.rasterize(tri, 12, 10).coverage, draw=lambda ax: plot_triangle(ax, tri))\npixels",
+    "nopixel = PredictPixels('Which pixels does this triangle draw?', "
+    "answer=tr.rasterize(tri, 12, 10).coverage, none='<b>none</b>: it draws no pixel')\nnopixel",
     # the order question last: a click on the last cell (browser_cells) lands on its text
     "point = PredictPoint('Put the point on the line.', answer=(3.0, 2.0), draw=None, "
     "xlim=(0, 4), ylim=(0, 4), along=((0, 2), (4, 2)), start=(0, 2), tolerance=0.3, "
@@ -71,6 +73,7 @@ TITLES = {key: cls.title for key, cls in [
     ("footprint", FootprintExplorer), ("diamonds", DiamondExplorer)]}  # fmt: skip
 TITLES.update(
     pixels="Click the pixels this triangle covers",
+    nopixel="Which pixels does this triangle draw",
     order="Order the sticks",
     point="Put the point on the line",
 )
@@ -379,6 +382,42 @@ def test_predictions_wait_for_an_answer_then_show_it(lesson):
     o.get_by_text("Right.").wait_for(timeout=5_000)
     assert _kernel(lesson, "order.correct") is True
     assert ocheck.is_disabled() and o.locator("input[type=checkbox]").is_disabled()
+
+
+def test_a_pixels_question_offering_none_takes_it_as_an_answer(lesson):
+    """Review r183 08-8: "none" is an answer where the question offers it (Check enabled with
+    no pixel marked), a marked pixel unticks it, and an empty grid alone is still none."""
+    from playwright.sync_api import expect
+
+    w = _widget(lesson, "nopixel")
+    check = w.get_by_role("button", name="Check")
+    none = w.locator("input[type=checkbox]")
+    assert check.is_disabled() and not none.is_checked()
+    none.check()
+    expect(check).to_be_enabled(timeout=5_000)
+    (x0, y0, sx, sy), width = _kernel(
+        lesson, "[nopixel.data['transform'], nopixel.data['size'][0]]"
+    )
+    canvas = w.locator("canvas").first
+    canvas.scroll_into_view_if_needed()
+    box = canvas.bounding_box()
+    scale = box["width"] / width
+    at = (box["x"] + (x0 + sx * 2.5) * scale, box["y"] + (y0 + sy * 2.5) * scale)
+    lesson.mouse.click(*at)  # a pixel marked: "none" unticked, Check still enabled
+    expect(none).not_to_be_checked(timeout=5_000)
+    assert check.is_enabled()
+    lesson.mouse.click(*at)  # unmarked again: an empty grid is no answer
+    expect(check).to_be_disabled(timeout=5_000)
+    none.check()
+    expect(check).to_be_enabled(timeout=5_000)
+    check.click()
+    w.get_by_text("You marked 0 pixels").wait_for(timeout=5_000)
+    assert _kernel(lesson, "[nopixel.revealed, nopixel.given, nopixel.correct]") == [
+        True,
+        [],
+        False,
+    ]
+    assert check.is_disabled() and none.is_disabled()
 
 
 def test_point_reveal_draws_its_curve(lesson):

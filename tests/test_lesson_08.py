@@ -496,7 +496,9 @@ def test_lesson_08_review_r136_plan_gpu_only_blends_titles_and_decimals(ns):
     printed = streams(executed("08_antialiasing").notebook())
     # 08-8: no simulator plan printed or explained; the GPU's counts stay
     assert "teachraster's plan" not in printed and "shortcut to the same picture" not in flat
-    assert 'which `frame.plan["multisampling"]` describes' in flat
+    # review r183 13: the simulator's plan, named and never shown, is no longer pointed to
+    md = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+    assert "frame.plan" not in md
     assert f"At {ns.uniform} of them one triangle is in front at all 4 samples" in " ".join(
         printed.split()
     )
@@ -569,16 +571,24 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     assert f"pixel (row {r}, col {c}): {ns.err_16[r, c]:+.3f}, corner v2" in printed
     assert abs(ns.err_16[r, c]) == pytest.approx(ns.max_gap[16])
     # 7: the table's numbers are the widget's own; the Gaussian leaks less, blurs more, loses
+    # (review r183 C1: three parts, the tent's reconstruction error apart from the blur)
     from teachraster.plotting.sampling import sample_signal
 
-    def blur_and_leak(r):  # the lesson's split, redone: left of the band, in it, all
-        sq = (r.reconstructed - r.ideal) ** 2
+    def parts(r):  # the lesson's split, redone: blur, tent, both left of the band; leak; all
         left = r.x < r.alias_from
-        return np.sqrt(sq[left].mean()), np.sqrt(sq[~left].mean()), r.rms_error
 
-    box, gauss = (blur_and_leak(sample_signal(32, 1.0, k)) for k in ("box", "gaussian"))
-    assert gauss[1] < box[1] and gauss[0] > box[0] and gauss[2] > box[2]
-    assert f"  gaussian   1.0      {gauss[0]:11.3f}  {gauss[1]:11.3f}  {gauss[2]:5.3f}" in printed
+        def rms(a):
+            return float(np.sqrt(np.mean(a**2)))
+
+        return (rms((r.filtered - r.ideal)[left]), rms((r.reconstructed - r.filtered)[left]),
+                rms((r.reconstructed - r.ideal)[left]), rms((r.reconstructed - r.ideal)[~left]),
+                r.rms_error)  # fmt: skip
+
+    box, gauss = (parts(sample_signal(32, 1.0, k)) for k in ("box", "gaussian"))
+    assert gauss[3] < box[3] and gauss[0] > box[0] and gauss[4] > box[4]
+    widths = (8, 16, 7, 14, 7)
+    row = "  gaussian   1.0" + "".join(f"{v:{w}.3f}" for v, w in zip(gauss, widths))
+    assert row in printed, row
     assert "leaks far less but blurs more, and here the blur costs more than the leak" in text
     # 13: the spectra drawn are the explorer's filters: a cosine of frequency u (cycles per
     # spacing) filtered by the widget's own prefilter keeps the share the curves give
@@ -610,3 +620,82 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     assert "can still show an extra value" not in " ".join(sources)
     summary = text.split("## Summary")[1]
     assert "shortcut of the simulator" not in summary and "a saving of bandwidth." in summary
+
+
+def test_lesson_08_review_r183_three_faults_abuffer_centroid_and_sliver_none(ns):
+    """Review r183: C1, the explorer's table called the tent's own error "blur" (0.119 with no
+    filter); the three faults are named and printed apart. F2, the A-buffer's mask was already
+    fixed-size: MSAA fixes the storage (S colours and depths, no fragment list). c26, the
+    Direct3D row is the lesson's reading; centroid derivatives are less accurate (GLSL 4.60
+    §4.5). 8, "no pixel" is an answer to the sliver question. 11, 12: the prose of §2, §5 and
+    §6 cut, no development history in the code."""
+    import json
+    from pathlib import Path
+
+    import matplotlib.pyplot as plt
+    from notebook_runs import executed, streams
+
+    from teachraster.plotting.common import screen_ticks
+    from teachraster.plotting.sampling import sample_signal
+    from teachraster.widgets import PredictPixels
+
+    root = Path(__file__).resolve().parents[1]
+    cells = json.loads((root / "notebooks" / "08_antialiasing.ipynb").read_text())["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    md = [s for c, s in zip(cells, sources) if c["cell_type"] == "markdown"]
+    text = " ".join(" ".join(md).split())
+    printed = streams(executed("08_antialiasing").notebook())
+    # C1: no filter, no blur; the 0.119 the text quotes is the tent's error, printed as such
+    none = sample_signal(32, 0.0, "box")
+    left = none.x < none.alias_from
+    tent = float(np.sqrt(np.mean((none.reconstructed - none.ideal)[left] ** 2)))
+    assert np.array_equal(none.filtered, none.signal) and f"{tent:.3f}" == "0.119"
+    assert "  none       0.0   0.000           0.119  0.119" in printed
+    assert "With no filter there is no blur: that row's 0.119 left of the band is the tent's own error" in text  # fmt: skip
+    assert "the tent's **reconstruction error**" in text and "the **leak**" in text
+    assert "It adds up two faults" not in text
+    assert "left of the band" in printed and "reconstruction" in printed
+    # F2: the storage is what MSAA fixed, not the mask
+    assert "made fixed-size" not in text and "a fixed 4 × 8 bit mask" in text
+    assert ("MSAA keeps the mask but stores a fixed $S$ colours and $S$ depths per pixel "
+            "instead of the list") in text  # fmt: skip
+    # c26: the Direct3D reading is the lesson's; llvmpipe's rule the other reading
+    assert "The Direct3D row is this lesson's reading" in text
+    assert 'read as "fully covered", it would be llvmpipe\'s' in text
+    assert "as Direct3D's reference rasterizer moves outward" not in text
+    assert '"derivatives of centroid-sampled inputs may be less accurate" (GLSL 4.60 §4.5)' in text
+    # 8: the sliver question, built as the lesson builds it, takes "no pixel" as an answer
+    (ask,) = [s for s in sources if "q_sliver = PredictPixels(" in s]
+    assert "none=" in ask and "or tick <i>no pixel</i>" in ask
+    scope = {"tr": __import__("teachraster"), "np": np, "plt": plt, "PredictPixels": PredictPixels,
+             "screen_ticks": screen_ticks}  # fmt: skip
+    exec(ask, scope)
+    q = scope["q_sliver"]
+    assert "noneLabel" in q.data and q.given is None
+    q.check()
+    assert not q.revealed  # nothing given: Check waits
+    q.given = []  # "no pixel", what 1 sample draws
+    q.check()
+    assert q.revealed and q.correct is False
+    assert (
+        "You marked 0 pixels: 0 right, 0 too many, 8 missed. The answer: 8 pixels drawn."
+        in q.verdict()
+    )
+    plt.close("all")
+    # 11: the prose cut by about a quarter (words: §2 was 366, §6's opening 254; §5's prose
+    # round the centroid table 165, the Direct3D reading and the derivatives now within it)
+    section2 = next(s for s in md if s.startswith("## 2. Supersampling vs MSAA"))
+    section6 = next(s for s in md if s.startswith("## 6. The resolve, on a scene"))
+    assert len(section2.split()) <= 300 and len(section6.split()) <= 200
+    centroid = next(s for s in md if "| teachraster |" in s)
+    prose = [line for line in centroid.splitlines() if not line.startswith("|")]
+    assert len(" ".join(prose).split()) <= 165
+    # 12: the code's comments say why, not how the figure came to be
+    code = " ".join(" ".join(s.split()) for c, s in zip(cells, sources) if c["cell_type"] == "code")
+    for history in (
+        "a blank margin was left",
+        "the star hid",
+        "read as white",
+        "it stood on screen",
+    ):
+        assert history not in code, history

@@ -41,6 +41,55 @@ def test_pixels_are_judged_and_revealed_only_once_answered():
     assert q.correct is False and "1 too many, 1 missed" in q.verdict() and q.revealed
 
 
+def test_no_pixel_at_all_is_an_answer_where_the_question_offers_it():
+    """Review r183 08-8: lesson 08's sliver question kept Check disabled until a pixel was
+    marked, so a student whose honest prediction was "none" (what 1 sample draws) could not
+    submit it. ``none=`` offers that choice: an explicit empty answer, judged like any other,
+    in the kernel and in the page; without it an empty grid is still no answer."""
+    truth = np.argwhere(tr.rasterize(TRI, 12, 10).coverage).tolist()
+    plain = _pixels()
+    assert "noneLabel" not in plain.data and plain.state["acted"] is False
+    plain.given = []  # no choice "none" offered: an empty grid answers nothing
+    assert plain.given is None and plain.correct is None
+    plain.check()
+    assert not plain.revealed
+    q = PredictPixels("Which pixels?", answer=tr.rasterize(TRI, 12, 10).coverage,
+                      none="<b>none</b>: it draws no pixel", picked="drawn")  # fmt: skip
+    assert q.data["noneLabel"] == "<b>none</b>: it draws no pixel"  # HTML, as the question
+    assert q.given is None and q.correct is None
+    q.check()  # nothing marked, "none" not chosen: no answer, nothing revealed
+    assert not q.revealed
+    q.given = []  # "none"
+    assert q.given == [] and q.state["acted"] is True and q.correct is False
+    assert q.counts() == {"right": 0, "extra": 0, "missed": len(truth), "total": len(truth)}
+    q.given = [[2, 2]]  # a marked cell answers instead: "none" no longer holds
+    assert q.state["acted"] is False and q.given == [[2, 2]]
+    q.state = {**q.state, "given": [], "acted": True}  # the page's "none" ticked
+    q.check()
+    assert q.revealed and q.given == [] and q.state["reveal"]["answer"] == truth
+    assert q.verdict().startswith(f"Not quite. You marked 0 pixels: 0 right, 0 too many, "
+                                  f"{len(truth)} missed.")  # fmt: skip
+    # an empty answer judged right where nothing is lit
+    empty = PredictPixels("Which?", answer=np.zeros((3, 4), bool), none="none")
+    empty.given = []
+    assert empty.correct is True and empty.counts()["total"] == 0
+    # the page: "none" ticked is an answer, an empty grid alone is not; judged as the kernel
+    got = call_js(("predict_figure",), [("pixelsAnswered", [[], False]),
+                                        ("pixelsAnswered", [[], True]),
+                                        ("pixelsAnswered", [[[1, 2]], False]),
+                                        ("pixelVerdict", [truth, [], 12]),
+                                        ("pixelVerdict", [[], [], 4])])  # fmt: skip
+    assert got[:3] == [False, True, True]
+    assert {k: got[3][k] for k in q.counts()} == q.counts() and got[3]["correct"] is False
+    assert got[4]["correct"] is True
+    from pathlib import Path
+
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    pixels = js.split("function mountPixels")[1].split("function mountPoint")[0]
+    assert "checkDisabled(state.revealed, answered())" in pixels
+    assert "if (!answered()) return;" in pixels and "acted: Boolean(state.acted)" in pixels
+
+
 def test_check_is_pressed_once_in_the_page():
     # enabled only while an answer is given and the answer not yet shown
     cases = [(False, False), (False, True), (True, True), (True, False)]
@@ -185,6 +234,7 @@ def test_a_point_marker_can_read_out_the_code_it_sits_on():
         (lambda: PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 1), ylim=(0, 1),
                               readout=""), TypeError, "readout"),
         (lambda: PredictPixels("Q?", answer=np.eye(2, dtype=bool), cell=""), TypeError, "cell"),
+        (lambda: PredictPixels("Q?", answer=np.eye(2, dtype=bool), none=" "), TypeError, "none"),
         (lambda: PredictOrder("Q?", ["a", "a"], answer=None), ValueError, "items"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=None), ValueError, "allow_impossible"),
         (lambda: PredictOrder("Q?", ["a", "b"], answer=["a", "c"]), ValueError, "answer"),

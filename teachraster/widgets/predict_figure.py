@@ -292,11 +292,16 @@ class PredictPixels(FigurePrediction):
         widget's own lines read "Click the pixels you expect {picked}" and "The answer: 12
         pixels {picked}". Name what is asked: the default "lit" contradicts a question about
         gaps or about pixels drawn twice.
+    none : str, optional
+        The label (HTML) of a choice "no cell at all" beside the grid, for a question whose
+        honest prediction may be none (a sliver that one sample per pixel loses): ticked, it
+        is an answer, and Check is enabled with no cell marked. Marking a cell unticks it.
+        Without it (the default) Check waits for a marked cell.
 
     Attributes
     ----------
     given : list of [row, col] or None
-        The pixels the student marked.
+        The pixels the student marked: ``[]`` once ``none`` is chosen, None before an answer.
     correct : bool or None
         Whether they are exactly the lit ones (None before an answer).
 
@@ -312,8 +317,10 @@ class PredictPixels(FigurePrediction):
 
     def __init__(self, question: str, answer, *, draw=None, explain: str = "",
                  centres: bool = True, side: float = 5.0, style: str | None = "classroom",
-                 cell: str = "pixel", picked: str = "lit") -> None:  # fmt: skip
-        for name, word in (("cell", cell), ("picked", picked)):
+                 cell: str = "pixel", picked: str = "lit",
+                 none: str | None = None) -> None:  # fmt: skip
+        words = {"cell": cell, "picked": picked} | ({} if none is None else {"none": none})
+        for name, word in words.items():
             if not isinstance(word, str) or not word.strip():
                 raise TypeError(f"{name} must be a non-empty str, got {word!r}")
         mask = np.asarray(answer)
@@ -343,22 +350,30 @@ class PredictPixels(FigurePrediction):
 
         picture = figure_picture(drawn, axes_for, (side, side), style)
         self.answer = mask.copy()
+        # the "none" choice is HTML, as the question is (the page shows it as such)
+        offered = {} if none is None else {"noneLabel": none}
         super().__init__(question, explain, {"kind": "pixels", "width": width, "height": height,
                                              **picture, "cell": html.escape(cell),
-                                             "picked": html.escape(picked)},
+                                             "picked": html.escape(picked), **offered},
                          {"answer": np.argwhere(mask).tolist()})  # fmt: skip
-        self.state = {"given": [], "revealed": False}
+        # ``acted``: the "none" choice ticked, an answer with no cell marked (the page sends it)
+        self.state = {"given": [], "acted": False, "revealed": False}
 
     @property
     def given(self):
-        """The marked pixels as [row, col] pairs (None before any is marked)."""
-        given = self.state.get("given") or []
-        return [list(map(int, rc)) for rc in given] or None
+        """The marked pixels as [row, col] pairs: ``[]`` when "none" was chosen, None before
+        an answer."""
+        given = [list(map(int, rc)) for rc in self.state.get("given") or []]
+        if given:
+            return given
+        return [] if self.state.get("acted") else None
 
     @given.setter
     def given(self, pixels) -> None:
+        """Mark ``pixels``; ``[]`` chooses "none" where the question offers it."""
         rows = [[int(r), int(c)] for r, c in (pixels or [])]
-        self.state = {**self.state, "given": rows}
+        said_none = pixels is not None and not rows and "noneLabel" in self.data
+        self.state = {**self.state, "given": rows, "acted": said_none}
 
     def counts(self) -> dict | None:
         """``right``, ``extra`` (marked, not lit), ``missed`` and ``total`` lit."""

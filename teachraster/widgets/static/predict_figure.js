@@ -2,7 +2,8 @@
 //
 // Four kinds share this module (data.kind):
 // - "pixels": click (or drag across) the cells you expect (pixels lit, tiles rejected: data.cell,
-//   data.picked); Check draws the true cells
+//   data.picked), or tick "none" where the question offers it (data.noneLabel: an honest
+//   prediction may be no cell at all); Check draws the true cells
 //   over yours: right ones ticked, missed ones outlined, extra ones crossed;
 // - "point": drag the marker to where you expect the point; Check draws the true point, the
 //   gap and whether it is within the tolerance;
@@ -33,6 +34,12 @@ export function checkDisabled(revealed, answered) {
 export function checkTitle(revealed, answered) {
   if (revealed) return "checked: your prediction is kept";
   return answered ? "check your prediction" : "give your answer first";
+}
+
+// A pixels question is answered by a marked cell, or by "none" ticked where it is offered
+// (acted, with no cell marked: an honest prediction may be that nothing is drawn)
+export function pixelsAnswered(given, acted) {
+  return given.length > 0 || Boolean(acted);
 }
 
 export function pixelVerdict(answer, given, width) {
@@ -155,6 +162,7 @@ const PRED_CSS = `
 .tr-predict-box img { display: block; max-width: 100%; height: auto; user-select: none; }
 .tr-predict-box canvas { position: absolute; left: 0; top: 0; width: 100%; height: 100%; }
 .tr-predict-verdict { margin: 6px 0; }
+.tr-predict-none { display: block; margin: 6px 0; font-size: 15px; cursor: pointer; }
 .tr-chips { display: flex; flex-wrap: wrap; gap: 8px; margin: 6px 0; min-height: 40px; }
 .tr-chip { padding: 6px 12px; border: 2px solid #0072B2; border-radius: 18px; background: #eef6fb;
   cursor: grab; user-select: none; touch-action: none; }
@@ -270,9 +278,22 @@ function revealOnFigure(host, canvas, paint) {
 }
 
 function mountPixels(root, data, host) {
-  let state = { given: [], revealed: false, ...host.state() };
+  let state = { given: [], acted: false, revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
   const { check, show, waiting } = checkRow(root, data, () => reveal(true));
+  const answered = () => pixelsAnswered(state.given, state.acted);
+  const none = data.noneLabel ? noneChoice(root, check, data.noneLabel) : null;
+  const showNone = () => { if (none) none.checked = Boolean(state.acted) && !state.given.length; };
+  showNone();
+  if (none) {
+    none.addEventListener("change", () => {
+      if (state.revealed) return;
+      state.acted = none.checked;
+      if (state.acted) state.given = []; // "none" clears the marked cells
+      host.setState({ given: state.given, acted: state.acted });
+      paint.request();
+    });
+  }
   const cell = data.cell || "pixel";
   const picked = data.picked || "lit";
   const cells = (n) => (n === 1 ? cell : `${cell}s`);
@@ -325,15 +346,17 @@ function mountPixels(root, data, host) {
         ctx.stroke();
       }
     }
-    check.disabled = checkDisabled(state.revealed, state.given.length > 0);
-    check.title = checkTitle(state.revealed, state.given.length > 0);
+    check.disabled = checkDisabled(state.revealed, answered());
+    check.title = checkTitle(state.revealed, answered());
   }
   const paint = painter(canvas, draw);
 
   function reveal(byClick) {
-    if (!state.given.length) return;
+    if (!answered()) return;
     if (byClick && state.revealed) return; // checked once: the first answer is kept
-    const known = revealStart(host, data, state, byClick, { revealed: true, given: state.given }, waiting);
+    if (none) none.disabled = true; // the answer is kept as checked
+    const sent = { revealed: true, given: state.given, acted: Boolean(state.acted) };
+    const known = revealStart(host, data, state, byClick, sent, waiting);
     if (!known) return paint.request();
     const v = pixelVerdict(known.answer, state.given, W);
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
@@ -355,6 +378,8 @@ function mountPixels(root, data, host) {
     if (state.revealed) return;
     const rc = cellAt(pointerAt(canvas, e));
     if (!rc) return;
+    state.acted = false; // a marked cell answers: "none" no longer holds
+    showNone();
     painting = !has(...rc);
     setCell(rc, painting);
     capture(canvas, e);
@@ -368,7 +393,7 @@ function mountPixels(root, data, host) {
   const up = () => {
     if (painting === null) return;
     painting = null;
-    host.setState({ given: state.given });
+    host.setState({ given: state.given, acted: false });
   };
   canvas.addEventListener("pointerup", up);
   canvas.addEventListener("pointercancel", up);
@@ -377,10 +402,19 @@ function mountPixels(root, data, host) {
   return {
     setState(s) {
       state = { ...state, ...s };
+      showNone();
       if (state.revealed) reveal(false);
       paint.request();
     },
   };
+}
+
+// the "none" choice of a pixels question: a checkbox above Check, its label the question's
+function noneChoice(root, check, label) {
+  const box = element("input", { type: "checkbox" });
+  root.insertBefore(element("label", { class: "tr-predict-none" },
+    [box, element("span", { html: ` ${label}` })]), check.parentElement);
+  return box;
 }
 
 function mountPoint(root, data, host) {
