@@ -736,6 +736,10 @@ def test_02_barycentrics_and_the_edge_function_bits():
     text = "\n".join(_cells("02_half_planes", "markdown"))
     flat = re.sub(r"\s+", " ", text)
     assert "49 bits by the area bound and 50 term by term" in flat
+    # review r192 02-C1: "M²'s bit length and a sign" gave 50/51 for M = 2**24 against the
+    # printed 49/50; with M = 2**d, 2d bits and a sign (d = 24: 49), one more term by term
+    assert "$2d$ bits and a sign hold every $E$" in flat and "bit length and a sign" not in flat
+    assert 2 * ns.d3d.delta_bits + 1 == ns.d3d.least_needed == ns.d3d.needed - 1
     assert "62 against" not in flat and "all 64 in" not in flat and "up to 64 bits" not in flat
     assert "*Triangle rasterization in practice*, on overflow" in flat
     assert "**16.8 fixed point**" in flat and "lesson 10 §4" in flat
