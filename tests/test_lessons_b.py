@@ -3334,7 +3334,8 @@ def test_10_r189_items():
     # P5, P6: the held tile-map cell folded; the pointer names the layer count
     held = [c for c in cells if "".join(c["source"]).startswith("q_hiz.hold()")
             and "Greene's pyramid" not in "".join(c["source"])]  # fmt: skip
-    assert len(held) == 2 and all(c["metadata"].get("tags") == ["hide-input"] for c in held)
+    assert any("tile_far = stored" in "".join(c["source"]) for c in held)  # r189's cell 37
+    assert all(c["metadata"].get("tags") == ["hide-input"] for c in held)
     assert all(c["metadata"]["jupyter"]["source_hidden"] for c in held)
     asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
     assert "the next cell counts" not in asked and "§7's layer count below" in asked
@@ -3347,6 +3348,7 @@ def test_10_r189_items():
                            ("## 7. Early-z", "Which nearest depth Hi-Z takes"),
                            ("## 9. What real GPUs", "the command each tile gets")]:  # fmt: skip
         cell = next(t for t in text if t.startswith(start))
-        assert f"<details><summary>{summary}" in cell, start
+        summaries = [part.split("</summary>")[0] for part in cell.split("<details><summary>")[1:]]
+        assert any(summary in words for words in summaries), start
         for para in cell.split("<details>")[0].split("\n\n"):
             assert len(para.splitlines()) <= 14, (start, para[:60])
