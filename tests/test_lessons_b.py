@@ -2512,9 +2512,11 @@ def test_10_llvmpipe_128_against_our_64_on_one_convention():
     assert ns.fits32.fits and ns.fits32.headroom == 0 and ns.fits32.units_per_pixel == 256
     assert not fixed_point.range_budget(129, 8, 32).fits  # one pixel more does not fit
     assert ns.budget.needed == 38 and not ns.budget.fits and ns.budget.units_per_pixel == 256
-    # the simulator's grid, folded: 512 units a pixel, int32 up to 63 px, 1,024 px in 42 bits
-    assert ns.ours32 == fixed_point.max_extent(8, 32) == 63 == 2**15 // 512 - 1
-    assert fixed_point.max_range(8, 32, centre_bit=True) == 64 and ns.ours.needed == 42
+    # the simulator's grid, folded, counted by §4's rule (review r189 10-1): 512 units a pixel,
+    # int32 below 64 px, a 1,024-px range in 40 bits (2 more than §4's 38, not 4)
+    assert ns.ours32 == fixed_point.max_range(8, 32, centre_bit=True) == 64 == 2**15 // 512
+    assert ns.ours.needed == 40 == ns.budget.needed + 2 and ns.ours.delta_bits == 19
+    assert ns.ours.units_per_pixel == 512 and ns.ours.within
     assert fixed_point.bit_budget(63, 8, 32).fits and not fixed_point.bit_budget(64, 8, 32).fits
     cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
     cells = cells["cells"]
@@ -3348,3 +3350,62 @@ def test_10_r185_items():
     assert "Elsewhere early-z killed the fragments pixel by pixel" in md
     # 10-13, 10-14
     assert not any("cell 13's" in t for t in code) and "$M^2$" not in md
+
+
+@pytest.mark.notebook
+def test_10_r189_items():
+    """Review r189, lesson 10: the folded note counts the package's grid by §4's rule (40 bits,
+    below 64 px; 10-1); llvmpipe's test is stated exactly at its edge, where x | y is not a
+    maximum (10-2); Greene's descent reads only under failing values, 5 reads for B (10-3);
+    the cell under q_hiz is held with its source folded and q_hiz points at the layer count
+    (P5, P6); the rounding note and cell 35's first line (10-4, F2); §3, §7 and §9's long
+    paragraphs fold their second halves (10-5)."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    cells = cells["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
+    code = [t for t, c in zip(text, cells) if c["cell_type"] == "code"]
+    printed = streams(executed("10_tiles_and_hierarchical_z").notebook())
+    # 10-1: the note's numbers, from the package (its Markdown is built from them)
+    note = next(t for t in code if "The simulator's own grid" in t)
+    assert "holds differences below {ours32} px" in note and "up to {ours32}" not in note
+    assert "bit_budget(" not in note and "centre_bit=True" in note
+    # 10-2: offsets of 128 pass only with 0 or 128; printed, and said
+    assert ns.box_edge == {(129, 129): True, (129, 1): True, (129, 128): False}
+    for (w, h), fits in ns.box_edge.items():
+        assert f"a {w} × {h} px box from column 0: {32 if fits else 64}-bit stepping" in printed
+    assert "a box of at most 128 pixels each way counted from" not in md
+    assert "a 129 × 129 px box and a 129 × 1 one pass, and a 129 × 128 one fails" in md
+    # 10-3: Greene's descent, level by level
+    reads = {k: [(t.level, t.cells) for t in v] for k, v in ns.descents.items()}
+    assert reads == {"A": [(1, 1)], "B": [(2, 1), (1, 2), (0, 2)]}
+    assert all(v[-1].hidden for v in ns.descents.values())
+    assert "reads 1 at level 2 + 2 at level 1 + 2 at level 0 = 5: hidden" in printed
+    assert "only the two tiles under the value that failed: five reads in all" in md
+    assert "with four reads" not in md
+    # P5, P6: the held tile-map cell folded; the pointer names the layer count
+    held = [c for c in cells if "".join(c["source"]).startswith("q_hiz.hold()")
+            and "Greene's pyramid" not in "".join(c["source"])]  # fmt: skip
+    assert any("tile_far = stored" in "".join(c["source"]) for c in held)  # r189's cell 37
+    assert all(c["metadata"].get("tags") == ["hide-input"] for c in held)
+    assert all(c["metadata"]["jupyter"]["source_hidden"] for c in held)
+    asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
+    assert "the next cell counts" not in asked and "§7's layer count below" in asked
+    assert any("def layers(" in t for t in code[code.index(asked) + 1 :])
+    # 10-4, F2
+    assert "hence their decimals" not in md and "rounded to whole numbers" in md
+    assert asked.splitlines()[0].endswith("behind it.") and len(asked.splitlines()[0]) <= 80
+    # 10-5: the long paragraphs' second halves folded
+    for start, summary in [("### What the walk saves", "What a GPU's rasteriser pays for"),
+                           ("## 7. Early-z", "Which nearest depth Hi-Z takes"),
+                           ("## 9. What real GPUs", "the command each tile gets")]:  # fmt: skip
+        cell = next(t for t in text if t.startswith(start))
+        summaries = [part.split("</summary>")[0] for part in cell.split("<details><summary>")[1:]]
+        assert any(summary in words for words in summaries), start
+        for para in cell.split("<details>")[0].split("\n\n"):
+            assert len(para.splitlines()) <= 14, (start, para[:60])

@@ -7,7 +7,11 @@ import pytest
 
 import teachraster as tr
 from teachraster.core import fixed_point
-from teachraster.pipeline.visibility.depth_pyramid import box_test, farthest_pyramid
+from teachraster.pipeline.visibility.depth_pyramid import (
+    box_test,
+    farthest_pyramid,
+    greene_descent,
+)
 from teachraster.study import llvmpipe_binner as lb
 
 
@@ -27,6 +31,8 @@ def test_steps_in_32_bits_reads_the_box_from_its_4_aligned_start():
     assert lb.steps_in_32_bits(0, 127, 0, 127) and not lb.steps_in_32_bits(2, 129, 0, 127)
     assert lb.steps_in_32_bits(4, 131, 0, 0) and not lb.steps_in_32_bits(0, 129, 0, 0)
     assert lb.steps_in_32_bits(0, 128, 0, 0)  # Mesa's test is <=
+    # review r189 10-2: x | y, not max(x, y): 128 passes only beside 0 or 128
+    assert lb.steps_in_32_bits(0, 128, 0, 128) and not lb.steps_in_32_bits(0, 128, 0, 127)
 
 
 def test_floor_pot():
@@ -98,3 +104,29 @@ def test_farthest_pyramid_and_box_test():
         assert verdicts == sorted(verdicts)
     with pytest.raises(ValueError):
         farthest_pyramid(np.zeros((6, 4)), 2)
+
+
+def test_greene_descent_goes_down_only_under_failing_values():
+    """Review r189 10-3: Greene's test goes down a level only where it fails. The descent
+    starts at the finest level one value covers; below it, it reads exactly the children (in
+    the box) of the values that failed a level up, and its verdict is the base's."""
+    rng = np.random.default_rng(7)
+    for _ in range(200):
+        pyr = farthest_pyramid(rng.random((8, 8)), 3)
+        r0, c0 = rng.integers(0, 8, 2)
+        r1, c1 = r0 + rng.integers(0, 8 - r0), c0 + rng.integers(0, 8 - c0)
+        near = rng.random()
+        steps = greene_descent(pyr, (r0, r1, c0, c1), near)
+        first = steps[0]
+        one = [k for k in range(4) if r0 >> k == r1 >> k and c0 >> k == c1 >> k]
+        assert first.level == (min(one) if one else 3) and (first.cells == 1) == bool(one)
+        assert steps[-1].hidden == box_test(pyr, (r0, r1, c0, c1), near)[-1].hidden
+        # brute force: the in-box cells of each level whose parent fails
+        inbox = np.zeros((8, 8), bool)
+        inbox[r0 : r1 + 1, c0 : c1 + 1] = True
+        for above, step in zip(steps, steps[1:]):
+            k = step.level
+            box_k = inbox.reshape(8 >> k, 1 << k, 8 >> k, 1 << k).any(axis=(1, 3))
+            fails_up = np.repeat(np.repeat(pyr[k + 1] > near, 2, 0), 2, 1)
+            assert step.cells == int((box_k & fails_up).sum()) and not above.hidden
+        assert all(not s.hidden for s in steps[:-1]) and (steps[-1].hidden or steps[-1].level == 0)

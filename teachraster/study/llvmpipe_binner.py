@@ -60,8 +60,14 @@ def steps_in_32_bits(x0: int, x1: int, y0: int, y1: int) -> bool:
 
     The test is on whole pixels: the last pixel's offsets from the box's start rounded down to
     a multiple of 4 (where its 4×4 blocks begin), x and y OR-ed, at most
-    :data:`MAX_FIXED_LENGTH32`. Two offsets below 128 OR to less than 128, so it is in effect a
-    box of at most 128 px each way from a 4-aligned start.
+    :data:`MAX_FIXED_LENGTH32`. Two offsets below 128 OR to less than 128, so a box of at most
+    128 px each way from a 4-aligned start always passes. The OR is not a maximum: offsets of
+    128 pass only with offsets of 0 or 128 (a 129 × 129 px box passes, a 129 × 128 one fails).
+
+    >>> steps_in_32_bits(0, 127, 0, 127), steps_in_32_bits(0, 128, 0, 128)
+    (True, True)
+    >>> steps_in_32_bits(0, 128, 0, 127), steps_in_32_bits(2, 129, 0, 127)
+    (False, False)
     """
     return ((x1 - (x0 & ~3)) | (y1 - (y0 & ~3))) <= MAX_FIXED_LENGTH32
 

@@ -5,9 +5,11 @@ bottom of a pyramid; each value of a level above is the **farthest** of the 2×2
 it (a mipmap with the maximum in place of the mean, for ``GL_LESS``: nearer is smaller). An
 object is hidden where even its nearest depth is no nearer than the farthest stored depth of
 every value its screen bounding box overlaps: a coarse level reads few values but holds
-loose ones, a fine level reads more, sharper ones. Greene starts coarse and goes down a
-level where the test fails; engines make the same test against a pyramid of a depth buffer
-to skip hidden objects before they are submitted.
+loose ones, a fine level reads more, sharper ones. :func:`box_test` gives each level's
+verdict over the whole box; :func:`greene_descent` makes Greene's test, which starts at the
+finest level where one value covers the box and goes down a level only under the values
+where the test fails. Engines make the same test against a pyramid of a depth buffer to
+skip hidden objects before they are submitted.
 
 >>> base = np.array([[1.0, 1.0, 1.0, 1.0], [1.0, 0.3, 0.3, 1.0],
 ...                  [0.3, 0.3, 0.3, 0.3], [0.3, 0.3, 0.3, 0.3]])
@@ -18,6 +20,11 @@ to skip hidden objects before they are submitted.
 BoxTest(level=2, cells=1, farthest=1.0, hidden=False)
 BoxTest(level=1, cells=1, farthest=0.3, hidden=True)
 BoxTest(level=0, cells=4, farthest=0.3, hidden=True)
+>>> for row in greene_descent(farthest_pyramid(base, 2), (1, 2, 1, 2), nearest=0.5):
+...     print(row)
+BoxTest(level=2, cells=1, farthest=1.0, hidden=False)
+BoxTest(level=1, cells=4, farthest=1.0, hidden=False)
+BoxTest(level=0, cells=2, farthest=0.3, hidden=True)
 """
 
 from __future__ import annotations
@@ -91,3 +98,53 @@ def box_test(pyramid, box, nearest: float) -> list[BoxTest]:
         farthest = float(cells.max())
         out.append(BoxTest(level, int(cells.size), farthest, bool(nearest >= farthest)))
     return out
+
+
+def _start_level(pyramid, box) -> int:
+    # the finest level at which one value covers the box (the top level if none does)
+    row0, row1, col0, col1 = box
+    for level in range(len(pyramid)):
+        if row0 >> level == row1 >> level and col0 >> level == col1 >> level:
+            return level
+    return len(pyramid) - 1
+
+
+def greene_descent(pyramid, box, nearest: float) -> list[BoxTest]:
+    """Greene's bounding-box test: only the values a descent reads, level by level.
+
+    It starts at the finest level where one value covers the box (the top level if none
+    does) and goes down a level only under the values where the test fails (``nearest``
+    nearer than the value), reading there only the children that overlap the box. It stops
+    when no value read fails (the object is hidden) or at the base (a value fails there: the
+    object may be visible).
+
+    Parameters
+    ----------
+    pyramid : list of numpy.ndarray
+        From :func:`farthest_pyramid`.
+    box : tuple of int
+        ``(row0, row1, col0, col1)``, inclusive, in cells of the pyramid's base.
+    nearest : float
+        The object's nearest depth.
+
+    Returns
+    -------
+    list of BoxTest
+        One per level visited, coarsest first: the values read there, their farthest, and
+        whether none of them fails. The object is hidden when the last one is.
+    """
+    row0, row1, col0, col1 = (int(v) for v in box)
+    level = _start_level(pyramid, (row0, row1, col0, col1))
+    cells = [(r, c) for r in range(row0 >> level, (row1 >> level) + 1)
+             for c in range(col0 >> level, (col1 >> level) + 1)]  # fmt: skip
+    out = []
+    while True:
+        values = [float(pyramid[level][r, c]) for r, c in cells]
+        failing = [cell for cell, v in zip(cells, values) if nearest < v]
+        out.append(BoxTest(level, len(cells), max(values), not failing))
+        if not failing or level == 0:
+            return out
+        level -= 1
+        cells = [(r, c) for pr, pc in failing  # the children of a failing value, in the box
+                 for r in range(max(2 * pr, row0 >> level), min(2 * pr + 1, row1 >> level) + 1)
+                 for c in range(max(2 * pc, col0 >> level), min(2 * pc + 1, col1 >> level) + 1)]  # fmt: skip
