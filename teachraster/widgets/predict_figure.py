@@ -520,13 +520,14 @@ class PredictPoint(FigurePrediction):
                 f"({self.answer[0]:.3g}, {self.answer[1]:.3g}){within}.")  # fmt: skip
 
 
-def _order_hint(allow_impossible: bool, impossible_label: str) -> str:
+def _order_hint(allow_impossible: bool) -> str:
     """The line above the chips: how to answer, and, with the box offered, that ticking it
     sets the order aside (the page greys the chips; review r190 05a-5)."""
     hint = ("Drag the items into order (or focus one and use the arrow keys); "
             "to answer the order shown, click one of them.")  # fmt: skip
     if allow_impossible:
-        hint += f' Ticking "{impossible_label}" sets the order aside; untick it to order them.'
+        # the label itself not repeated: the page finds the box by its words
+        hint += " Ticking the box below sets the order aside; untick it to order them."
     return hint
 
 
@@ -572,7 +573,7 @@ class PredictOrder(FigurePrediction):
         super().__init__(question, explain, {
             "kind": "order", "items": items,
             "allowImpossible": bool(allow_impossible), "impossibleLabel": impossible_label,
-            "hint": _order_hint(allow_impossible, impossible_label),
+            "hint": _order_hint(allow_impossible),
             **picture}, {"answer": self.answer})  # fmt: skip
         self.state = {"given": None, "acted": False, "revealed": False}
 
