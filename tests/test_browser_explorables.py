@@ -377,7 +377,15 @@ def test_predictions_wait_for_an_answer_then_show_it(lesson):
     o.locator(".tr-chip").first.click()
     expect(ocheck).to_be_enabled(timeout=5_000)
     assert _kernel(lesson, "[order.given, order.correct]") == [["a", "b", "c"], False]
+    assert "aside" not in (o.locator(".tr-chips").get_attribute("class") or "")
     o.get_by_text("no order works").click()
+    # review r190 05a-5: ticked, the chips are greyed and a drag on them moves nothing
+    expect(o.locator(".tr-chips")).to_have_class(re.compile(r"\baside\b"), timeout=5_000)
+    assert o.locator(".tr-chips").get_attribute("aria-disabled") == "true"
+    o.locator(".tr-chip").last.drag_to(o.locator(".tr-chip").first)
+    lesson.wait_for_timeout(300)
+    assert [c.inner_text() for c in o.locator(".tr-chip").all()] == ["a", "b", "c"]
+    assert _kernel(lesson, "order.given") is None
     ocheck.click()
     o.get_by_text("Right.").wait_for(timeout=5_000)
     assert _kernel(lesson, "order.correct") is True

@@ -1862,11 +1862,18 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     draws where clipping sits in the pipeline."""
     ns = lesson("05a_zbuffer")
     assert not ns.crosses_after_divide and ns.z_ndc[0] > -1 and ns.z_ndc[2] > 1
-    # review r182: what a clipper after the divide keeps (a piece up to the far plane, off the
-    # edge), not only whether -1 lies between two printed numbers
-    assert ns.far_after_divide and "to the far plane z/w = +1" in ns.clip_choices[2]
-    assert "which is no part of the edge" in ns.clip_choices[2]
-    assert ns.t_far < 0  # the segment's point at z/w = +1 lies on the line beyond the edge
+    # review r182: what a clipper after the divide keeps, not only whether -1 lies between two
+    # printed numbers; r190 05a-9: the two numbers rule out one choice only (the near plane's:
+    # both lie above -1), and no choice says the kept piece is off the edge
+    assert ns.far_after_divide and ns.t_far < 0  # z/w = +1 on the line, beyond the edge
+    assert len(ns.clip_choices) == 4 and ns.clip_answer == ns.clip_choices[3]
+    assert ns.clip_answer == "of the edge's points, only the first vertex"
+    asked = next(c for c in _cells("05a_zbuffer", "code") if "q_clip = Predict(" in c)
+    assert "    answer=clip_answer," in asked
+    assert all(c.startswith("of the edge's points, ") for c in ns.clip_choices)
+    assert "z/w = +1" in ns.clip_choices[0] and "z/w = −1" in ns.clip_choices[1]
+    assert min(ns.z_ndc[[0, 2]]) > -1 and max(ns.z_ndc[[0, 2]]) > 1  # only [1] is ruled out
+    assert not any("no part" in c or "not" in c.split() for c in ns.clip_choices)
     cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
     ask = next(i for i, t in enumerate(text) if "q_clip = Predict(" in t)
@@ -2204,7 +2211,8 @@ def test_05a_r130_divided_edge_runs_through_infinity_and_test_off_writes_depth()
     z_w = ns.edge_pts[:, 2] / ns.edge_pts[:, 3]
     assert np.isclose(z_w[1], -1) and z_w[2] < -1 < 1 < z_w[3]  # -inf before w = 0, +inf after
     assert np.isclose(z_w[0], ns.z_ndc[0]) and np.isclose(z_w[-1], ns.z_ndc[2])
-    assert "no part of the edge" in ns.clip_choices[2]  # the segment is not the edge (r182)
+    # the segment is not the edge (r182); r190 05a-9: the answer no longer says so itself
+    assert ns.clip_answer == ns.clip_choices[3] and "first vertex" in ns.clip_answer
     ask = next(c for c in _cells("05a_zbuffer", "code") if "q_clip = Predict(" in c)
     said = eval("(" + ask[ask.index("explain=") + 8 : ask.rindex(",\n)")] + ")", vars(ns))
     assert "cannot even be found" not in said
@@ -2358,7 +2366,15 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
     assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in text
     for wrong in ("A cut moves no edge", "changes no fragment position", "makes any band safe"):
         assert wrong not in text
-    assert "This is the real argument for a guard band" in text
+    # review r190 05a-12: cost is the main argument, the rounding a second one
+    assert "real argument" not in text
+    assert "The main argument for a guard band is cost" in text and "This is a second one" in text
+    assert "Does a cut then never change a pixel?" not in text  # r190 05a-10: not asked and
+    assert "In exact arithmetic a cut could not change a pixel" in text  # answered at once
+    assert "The near and far planes keep the window depth" in text  # r190 05a-15
+    code = "\n".join(_cells("05a_zbuffer", "code"))
+    assert "random triangles parallel to the image plane" in code  # r190 05a-14
+    assert "facing the camera" not in code
     flat = " ".join((Path(__file__).resolve().parent.parent / "CONVENTIONS.md").read_text().split())
     assert "Clipping never moves an edge" not in flat
     assert "lie on the triangle's edges only in exact arithmetic" in flat
@@ -2377,15 +2393,26 @@ def test_05a_r182_stepper_question_and_small_items():
     passed, failed = ns.cube_steps[ns.k_open]
     assert passed > 0 and ns.shown_at_end == 0
     assert ns.k_open not in ns.later[0] and ns.later[1].sum() == passed
+    # review r190 05a-8: its answer is not q_culled's (0): all the pixels it wrote are
+    # overwritten; 05a-11: one later triangle, so "passes ... overwrites"
+    assert ns.shown_other == passed != ns.culled_failed == 0
+    assert ns.one_later == (len(ns.later[0]) == 1)
     nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
     src = ["".join(c["source"]) for c in nb["cells"]]
     ask = next(i for i, t in enumerate(src) if "q_step = Predict(" in t)
-    assert "answer=shown_at_end,\n    whole=True," in src[ask]
+    assert "answer=shown_other,\n    whole=True," in src[ask]
+    assert "pass{'es' if one_later else ''}" in src[ask]
+    assert "overwrite{'s' if one_later else ''}" in src[ask]
     culled = next(t for t in src if "q_culled = Predict(" in t)
     assert "    whole=True," in culled and "whole number" in culled
+    # review r190 05a-7: asked before the stepper (the text above said to step through first);
+    # the stepper, then the held count
     stepper = next(i for i, t in enumerate(src) if "stepper = ZBufferStepper(" in t)
-    assert stepper < ask and nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
-    assert src[ask + 1].startswith("q_step.hold()") and "shown_at_end" in src[ask + 1]
+    assert ask < stepper and nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
+    assert src[stepper + 1].startswith("q_step.hold()") and "shown_at_end" in src[stepper + 1]
+    assert "shown_other" in src[stepper + 1]
+    said = re.sub(r'"\s*\n\s*"', "", next(t for t in src if "use **previous**" in t))
+    assert "First answer the question on that triangle" in said
     summary = next(i for i, t in enumerate(src) if t.startswith("## Summary"))
     assert "q_step.hold()" in src[summary + 1]
     text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())

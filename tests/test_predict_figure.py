@@ -569,3 +569,25 @@ def test_the_offline_page_carries_the_answer_it_judges_with():
         del os.environ["TEACHRASTER_STATIC_PAGES"]
     assert '"reveal"' not in q._repr_mimebundle_()[0]["text/html"]
     assert "skyward 9" not in q._repr_mimebundle_()[0]["text/html"]  # nor the explanation
+
+
+def test_ticking_no_order_works_sets_the_chips_aside():
+    """Review r190 05a-5: with "no order works" ticked the chips stayed fully active, so the
+    page showed an order and the box at once with nothing saying which was graded. Ticked, the
+    chips are greyed and do not move (nor after Check); the hint says so, only beside a box."""
+    from pathlib import Path
+
+    cases = [(False, False), (True, False), (False, True), (True, True)]
+    got = call_js(("predict_figure",), [("chipsState", list(c)) for c in cases])
+    assert [g["aside"] for g in got] == [False, True, False, True]
+    assert [g["movable"] for g in got] == [True, False, False, False]
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    order = js.split("function mountOrder")[1].split("function mountChoice")[0]
+    assert 'chips.classList.toggle("aside", aside)' in order
+    assert order.count("chipsState(ticked(), state.revealed).movable") == 2  # drag and keys
+    assert ".tr-chips.aside .tr-chip" in js
+    box = PredictOrder("Order?", ["a", "b"], answer=None, allow_impossible=True)
+    assert "Ticking the box below sets the order aside" in box.data["hint"]
+    assert "no order works" not in box.data["hint"]  # the box's own words stay unique
+    plain = PredictOrder("Order?", ["a", "b"], answer=["a", "b"])
+    assert "Ticking" not in plain.data["hint"]

@@ -228,13 +228,18 @@ def test_05a_q_order_has_its_picture_and_a_figure_reveal():
 
 
 def test_05a_q_step_is_asked_before_its_answer_stands():
-    """r182 05a-8: the stepper's question (how many pixels of the final picture show the
-    triangle it opens on: none) is answered neither above it nor by a visible cell below it
-    before Check; its count is printed by the held cell."""
+    """r182 05a-8: the stepper's question is answered neither above it nor by a visible cell
+    below it before Check; its count is printed by the held cell. r190 05a-7/8: asked before
+    the stepper is shown, and its answer (how many of the pixels the triangle it opens on wrote
+    show another triangle at the end: all) is not q_culled's (0)."""
     ns = lesson("05a_zbuffer")
-    assert ns.shown_at_end == 0 and ns.cube_steps[ns.k_open][0] > 0
+    assert ns.shown_at_end == 0 and ns.shown_other == ns.cube_steps[ns.k_open][0] > 0
+    assert ns.shown_other != ns.culled_failed
     seen = seen_before_check("05a_zbuffer", "q_step = Predict(", "q_step")
     assert f"showing triangle {ns.k_open}:" not in seen and "overwrit" not in seen
+    cells = _cells("05a_zbuffer")
+    ask = _ask_index(cells, "q_step = Predict(")
+    assert not any("ZBufferStepper(" in _source(c) for c in cells[:ask])
     assert "a front face drawn later" not in seen
     assert f"the stepper opens on triangle {ns.k_open}" in seen  # what the question reads
 

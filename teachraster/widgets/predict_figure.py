@@ -535,6 +535,17 @@ class PredictPoint(FigurePrediction):
                 f"({self.answer[0]:.3g}, {self.answer[1]:.3g}){within}.")  # fmt: skip
 
 
+def _order_hint(allow_impossible: bool) -> str:
+    """The line above the chips: how to answer, and, with the box offered, that ticking it
+    sets the order aside (the page greys the chips; review r190 05a-5)."""
+    hint = ("Drag the items into order (or focus one and use the arrow keys); "
+            "to answer the order shown, click one of them.")  # fmt: skip
+    if allow_impossible:
+        # the label itself not repeated: the page finds the box by its words
+        hint += " Ticking the box below sets the order aside; untick it to order them."
+    return hint
+
+
 class PredictOrder(FigurePrediction):
     """Put items in order (or say no order works); Check marks each place.
 
@@ -577,8 +588,7 @@ class PredictOrder(FigurePrediction):
         super().__init__(question, explain, {
             "kind": "order", "items": items,
             "allowImpossible": bool(allow_impossible), "impossibleLabel": impossible_label,
-            "hint": "Drag the items into order (or focus one and use the arrow keys); "
-                    "to answer the order shown, click one of them.",
+            "hint": _order_hint(allow_impossible),
             **picture}, {"answer": self.answer})  # fmt: skip
         self.state = {"given": None, "acted": False, "revealed": False}
 

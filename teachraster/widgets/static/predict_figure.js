@@ -99,6 +99,14 @@ export function orderVerdictText(answer, given, impossibleLabel) {
   return `You predicted <b>${named(given)}</b>; the answer is <b>${named(answer)}</b>.`;
 }
 
+// the order's chips beside a ticked "no order works": set aside (greyed, marked disabled)
+// and not movable, so the page never shows an order and the box at once, the one graded
+// (review r190 05a-5: the chips stayed active, with nothing saying the order was ignored);
+// after Check nothing moves either
+export function chipsState(impossibleTicked, revealed) {
+  return { aside: Boolean(impossibleTicked), movable: !impossibleTicked && !revealed };
+}
+
 export function orderVerdict(answer, given) {
   // answer null: no order works; given null: the student said so
   if (answer === null || given === null) return { places: null, correct: answer === given };
@@ -169,6 +177,7 @@ const PRED_CSS = `
 .tr-chip:focus { outline: 3px solid #E69F00; }
 .tr-chip.right { border-color: #009E73; background: #e3f5ee; }
 .tr-chip.wrong { border-color: #D55E00; background: #fbe9e0; }
+.tr-chips.aside .tr-chip { opacity: 0.35; border-style: dashed; background: #f2f2f2; cursor: not-allowed; }
 .tr-choices { display: flex; flex-wrap: wrap; gap: 6px; margin: 4px 0 6px; }
 .tr-choices button { font-size: 15px; padding: 4px 12px; }
 .tr-predict .tr-choices button.right, .tr-predict .tr-choices button.wrong { opacity: 1;
@@ -598,16 +607,21 @@ function mountOrder(root, data, host) {
     state.given = given();
     host.setState({ given: state.given, acted: true });
   }
+  const ticked = () => Boolean(impossible && impossible.checked);
   function render_() {
     chips.innerHTML = "";
     const known = state.revealed && revealed(data, state);
     const v = known ? orderVerdict(known.answer, given()) : null;
+    const { aside } = chipsState(ticked(), state.revealed);
+    chips.classList.toggle("aside", aside);
+    chips.setAttribute("aria-disabled", String(aside));
+    chips.title = aside ? `set aside: "${data.impossibleLabel}" is ticked` : "";
     order.forEach((item, k) => {
-      const chip = element("div", { class: "tr-chip", tabindex: 0, role: "listitem", html: item });
+      const chip = element("div", { class: "tr-chip", tabindex: aside ? -1 : 0, role: "listitem", html: item });
       if (v && v.places) chip.classList.add(v.places[k] ? "right" : "wrong");
       onKeys(chip, (e) => {
         const d = { ArrowLeft: -1, ArrowUp: -1, ArrowRight: 1, ArrowDown: 1 }[e.key];
-        if (!d || state.revealed) return;
+        if (!d || !chipsState(ticked(), state.revealed).movable) return;
         e.preventDefault();
         move(k, k + d);
         chips.children[Math.max(0, Math.min(order.length - 1, k + d))].focus();
@@ -630,7 +644,7 @@ function mountOrder(root, data, host) {
     render_();
   }
   function startDrag(e, k) {
-    if (state.revealed) return;
+    if (!chipsState(ticked(), state.revealed).movable) return;
     e.preventDefault();
     const target = e.currentTarget;
     capture(target, e);
