@@ -259,8 +259,8 @@ class BlendingExplorer(Shown):
         the line says why, so the box does not seem to do nothing (review r187)."""
         if not self.alpha.value:
             return ""
-        stored = np.clip(np.minimum(self.color[..., 3], self.sorted_color[..., 3]), 0, 1)
-        opaque = bool(np.all(stored >= 1 - 1e-9))
+        alpha = np.clip(np.minimum(self.color[..., 3], self.sorted_color[..., 3]), 0, 1)
+        opaque = bool(np.all(alpha >= 1 - 1e-9))
         return "; stored alpha over a checkerboard" + (
             " (1 everywhere: nothing shows through)" if opaque else ""
         )

@@ -33,6 +33,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .zbuffer import passes_depth_test
+
 
 class BoxTest(NamedTuple):
     """One level's verdict on a box: the values it reads, their farthest, hidden or not."""
@@ -96,7 +98,8 @@ def box_test(pyramid, box, nearest: float) -> list[BoxTest]:
         cells = pyramid[level][row0 >> level : (row1 >> level) + 1,
                                col0 >> level : (col1 >> level) + 1]  # fmt: skip
         farthest = float(cells.max())
-        out.append(BoxTest(level, int(cells.size), farthest, bool(nearest >= farthest)))
+        hidden = not bool(passes_depth_test(nearest, farthest))  # GL_LESS fails everywhere
+        out.append(BoxTest(level, int(cells.size), farthest, hidden))
     return out
 
 
@@ -140,7 +143,8 @@ def greene_descent(pyramid, box, nearest: float) -> list[BoxTest]:
     out = []
     while True:
         values = [float(pyramid[level][r, c]) for r, c in cells]
-        failing = [cell for cell, v in zip(cells, values) if nearest < v]
+        # where the object's nearest depth would pass against the value, it may show there
+        failing = [cell for cell, v in zip(cells, values) if passes_depth_test(nearest, v)]
         out.append(BoxTest(level, len(cells), max(values), not failing))
         if not failing or level == 0:
             return out
