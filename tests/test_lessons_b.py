@@ -3293,6 +3293,18 @@ def test_10_r176_items():
     assert not any("(as titled)" in c for c in code)
 
 
+def _lesson_10_sources():
+    """Lesson 10's cells, their sources, its Markdown as one spaced line, its code cells."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
+    cells = cells["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
+    code = [t for t, c in zip(text, cells) if c["cell_type"] == "code"]
+    return cells, text, md, code
+
+
 def test_10_r185_items():
     """Review r185, lesson 10: the path figure dashes exactly §5's jumps (moves not to a
     4-neighbour) and the cell prints how many (10-1); the tile map's title says the clear
@@ -3301,16 +3313,11 @@ def test_10_r185_items():
     live in the package (10-10) and every figure's drawing code is folded (10-11); the Hi-Z
     update and the depth-direction detail are folded, the sphere's long sentence split (10-12);
     no comment points to a cell number (10-13); no undefined M (10-14)."""
-    import json
 
     from teachraster.plotting.tiles import WalkPathArtists
 
     ns = lesson("10_tiles_and_hierarchical_z")
-    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
-    cells = cells["cells"]
-    text = ["".join(c["source"]) for c in cells]
-    md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
-    code = [t for t, c in zip(text, cells) if c["cell_type"] == "code"]
+    cells, text, md, code = _lesson_10_sources()
     # 10-1: the dashes of each panel are its visits that are not to a 4-neighbour, as §5 counts
     blocks = ns.fill.trace.blocks
     for order, dashed in ns.path_jumps.items():
@@ -3360,16 +3367,11 @@ def test_10_r189_items():
     the cell under q_hiz is held with its source folded and q_hiz points at the layer count
     (P5, P6); the rounding note and cell 35's first line (10-4, F2); §3, §7 and §9's long
     paragraphs fold their second halves (10-5)."""
-    import json
 
     from notebook_runs import executed, streams
 
     ns = lesson("10_tiles_and_hierarchical_z")
-    cells = json.loads((ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text())
-    cells = cells["cells"]
-    text = ["".join(c["source"]) for c in cells]
-    md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
-    code = [t for t, c in zip(text, cells) if c["cell_type"] == "code"]
+    cells, text, md, code = _lesson_10_sources()
     printed = streams(executed("10_tiles_and_hierarchical_z").notebook())
     # 10-1: the note's numbers, from the package (its Markdown is built from them)
     note = next(t for t in code if "The simulator's own grid" in t)
