@@ -341,7 +341,9 @@ def test_float32_products_fail_edge_function_and_are_named_float32():
 
     report = ex.check("edge_function", f32)
     assert not report.passed
-    assert all("float32" in f.explanation for f in report.failures)
+    # one run of the checker set failed here once, under load 20 (not reproduced): say which
+    unnamed = [f.explanation for f in report.failures if "float32" not in f.explanation]
+    assert not unnamed, unnamed[:3]
     assert ex.check("edge_function", CORRECT["edge_function"]).passed
 
 

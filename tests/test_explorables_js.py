@@ -169,6 +169,44 @@ def test_tint_buttons_name_the_chosen_triangles_edges():
         assert f"<b>{name}</b>" in table
 
 
+def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on():
+    """Review r192 02-7: B made counter-clockwise read "E32 (v3→v2) right, bias −1" while the
+    pointer showed E32 negative inside: the kind and bias are those of the edge walked
+    backwards, E23, and the table and labels now name that edge and say why."""
+    quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [2.5, 6.5]]  # v4 over A: B = v3 v2 v4 turns CCW
+    scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
+    (table,) = call_js(EDGES, [("edgeTable", [scene])])
+    row_b = table.split("<tr>")[2]
+    assert "counter-clockwise on screen: tested on its edges walked backwards" in row_b
+    for name in ("E23 (v2→v3)", "E42 (v4→v2)", "E34 (v3→v4)"):
+        assert f"<b>{name}</b>" in row_b
+    assert "E32" not in row_b and "clockwise on screen" in table.split("<tr>")[1]
+    labels = call_js(EDGES, [("edgeLabels", [scene["B"], ["E32", "E24", "E43"]])])[0]
+    assert all(label["flipped"] for label in labels)
+    walked = call_js(EDGES, [("walkedName", [label]) for label in labels])
+    assert walked == ["E23", "E42", "E34"]
+
+
+def test_edge_labels_stand_clear_of_the_edges_centres():
+    """Review r192 02-6: a horizontal shared edge's label covered the ringed centres on it.
+    The label's box keeps half a pixel (the ring and its badge) off the edge's line, on the
+    side away from the triangle, whatever the edge's direction."""
+    cell, half = 42.0, [70.0, 10.0]
+    rng = np.random.default_rng(3)
+    for _ in range(40):
+        a, b = rng.uniform(0, 600, 2), rng.uniform(0, 600, 2)
+        centroid = (a + b) / 2 + rng.uniform(-200, 200, 2)
+        (at,) = call_js(EDGES, [("labelCentre", [a.tolist(), b.tolist(), centroid.tolist(),
+                                                  half, cell])])  # fmt: skip
+        d = b - a
+        n = np.array([-d[1], d[0]]) / np.hypot(*d)
+        side = np.sign(n @ (np.array(at) - a))
+        assert side == -np.sign(n @ (centroid - a)) or abs(n @ (centroid - a)) < 1e-9
+        corners = [np.array(at) + np.array([sx * half[0], sy * half[1]])
+                   for sx in (-1, 1) for sy in (-1, 1)]  # fmt: skip
+        assert min(abs(n @ (c - a)) for c in corners) >= 0.5 * cell + 2 - 1e-6
+
+
 def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
     from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
 

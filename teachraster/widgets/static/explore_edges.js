@@ -489,24 +489,46 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
   const centroid = [(v[0][0] + v[1][0] + v[2][0]) / 3, (v[0][1] + v[1][1] + v[2][1]) / 3];
   const labels = edgeLabels(setup, EDGE_NAMES[state.chosen]);
   const size = textPx(ctx, 13);
+  const cell = toPx([1, 0])[0] - toPx([0, 0])[0];
+  ctx.save();
   ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
   labels.forEach((e, k) => {
     const a = v[k];
     const b = v[(k + 1) % 3];
-    const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
-    const out = [mid[0] - centroid[0], mid[1] - centroid[1]];
-    const len = Math.hypot(out[0], out[1]) || 1;
-    const at = [mid[0] + (out[0] / len) * 22, mid[1] + (out[1] / len) * 22];
     // B's edges named too (review r93 02-5: "left, bias 0" beside A's "E12: right, bias −1")
-    const text = `${e.name}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
-    const w = ctx.measureText(text).width;
+    const text = `${walkedName(e)}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
+    const half = [ctx.measureText(text).width / 2 + 3, (size + 3) / 2];
+    const at = labelCentre(a, b, centroid, half, cell);
     ctx.fillStyle = "rgba(255,255,255,0.85)";
-    ctx.fillRect(at[0] - w / 2 - 3, at[1] + 2 - size, w + 6, size + 3);
+    ctx.fillRect(at[0] - half[0], at[1] - half[1], 2 * half[0], 2 * half[1]);
     ctx.fillStyle = EDGE_HUES[k];
-    ctx.fillText(text, at[0], at[1] + 2);
+    ctx.fillText(text, at[0], at[1]);
   });
-  ctx.textAlign = "left";
+  ctx.restore();
+}
+
+// Where an edge's label goes: beside the edge's midpoint on the side away from the triangle,
+// its box (half-sizes `half`, px) a whole half-pixel clear of the edge's line, so that it
+// never covers the ringed centres on a shared edge or their owner badges (review r192 02-6:
+// a horizontal shared edge's label hid the rings the lesson asks students to look at).
+export function labelCentre(a, b, centroid, half, cell) {
+  const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+  const len = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
+  let n = [(a[1] - b[1]) / len, (b[0] - a[0]) / len];
+  if (n[0] * (mid[0] - centroid[0]) + n[1] * (mid[1] - centroid[1]) < 0) n = [-n[0], -n[1]];
+  const reach = Math.abs(n[0]) * half[0] + Math.abs(n[1]) * half[1];
+  const away = 0.5 * cell + 2 + reach;
+  return [mid[0] + n[0] * away, mid[1] + n[1] * away];
+}
+
+// The name of the edge a triangle is tested on: a counter-clockwise triangle is walked
+// backwards (its E then positive inside), and the kind and bias are that walk's edge's,
+// "E32 (v3→v2)" tested as "E23 (v2→v3)" (review r192 02-7).
+export function walkedName(label) {
+  if (!label.flipped) return label.name;
+  return label.name.replace(/E(\d)(\d)/, "E$2$1").replace(/v(\d)→v(\d)/, "v$2→v$1");
 }
 
 // the edges of both triangles: kind and bias of each
@@ -515,9 +537,10 @@ export function edgeTable(scene) {
     ["B", scene.B, ["E32 (v3→v2)", "E24 (v2→v4)", "E43 (v4→v3)"]]].map(([name, s, names]) => {
     if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
     const cells = edgeLabels(s, names).map((e, k) =>
-      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${e.name}</b> ${e.kind}, ` +
-      `bias ${e.bias < 0 ? "−1" : "0"}</td>`).join("");
-    const wind = s.originalArea2 > 0 ? "clockwise on screen" : "counter-clockwise on screen";
+      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${walkedName(e)}</b> ` +
+      `${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}</td>`).join("");
+    const wind = s.originalArea2 > 0 ? "clockwise on screen"
+      : "counter-clockwise on screen: tested on its edges walked backwards";
     return `<tr><td><b>${name}</b>, ${wind}</td>${cells}</tr>`;
   });
   return `<table>${rows.join("")}</table>`;
