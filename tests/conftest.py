@@ -368,6 +368,25 @@ def _tree_cpu() -> float:
     return total
 
 
+def pytest_terminal_summary(terminalreporter):
+    """Seconds per test file and per tier, summed over set-up, call and tear-down on every
+    worker: where a run's time goes. The 20 slowest tests alone (``--durations``) left CI's
+    1,200 s unexplained (stop 46): most of it is in files of many short tests."""
+    per_file: dict = {}
+    for reports in terminalreporter.stats.values():
+        for rep in reports:
+            nodeid, seconds = getattr(rep, "nodeid", None), getattr(rep, "duration", None)
+            if nodeid and seconds:
+                name = nodeid.split("::")[0]
+                per_file[name] = per_file.get(name, 0.0) + seconds
+    if len(per_file) < 10:
+        return  # a run of a few files: the durations say it already
+    total = sum(per_file.values())
+    terminalreporter.write_sep("=", f"seconds per test file ({total:.0f} s on all workers)")
+    for name, seconds in sorted(per_file.items(), key=lambda kv: -kv[1])[:30]:
+        terminalreporter.write_line(f"{seconds:8.1f} s  {100 * seconds / total:4.1f} %  {name}")
+
+
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_protocol(item, nextitem):
     """With TEACHRASTER_CPU_LOG set, append each test's CPU seconds (this process, set-up and
