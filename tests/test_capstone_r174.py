@@ -65,12 +65,21 @@ def _stopped_at_the_wall(cpu: float, seconds: float = 10.0) -> Alarm:
 
 def test_more_cpu_than_the_budget_is_too_slow_not_a_busy_machine():
     """r174 12-2: "computed for 11.2 s of it: the machine is too busy" under a 10 s budget."""
-    b = running.Budget(10.0)
-    slow = running._too_busy(_stopped_at_the_wall(11.2), b, "")
+    # run_case adds the case's CPU to the budget's before it asks for the words
+    slow = running._too_busy(_stopped_at_the_wall(11.2), running.Budget(10.0, used=11.2), "")
     assert "too busy" not in slow and "more than the check's budget of 10 s" in slow, slow
     assert "far slower than needed" in slow, slow
-    busy = running._too_busy(_stopped_at_the_wall(3.0), b, "")
+    busy = running._too_busy(_stopped_at_the_wall(3.0), running.Budget(10.0, used=3.0), "")
     assert "too busy" in busy, busy
+
+
+def test_the_case_stopped_at_the_wall_is_counted_once():
+    """r199 C1: the words added the stopped case's CPU to a budget that already held it: a
+    correct function that had computed for 7.1 s (3.55 s in the stopped case) of a 10-s
+    budget was told it computed for 10.65 s, "more than the check's budget"."""
+    words = running._too_busy(_stopped_at_the_wall(3.55), running.Budget(10.0, used=7.1), "")
+    assert "computed for 7.1 s of it" in words and "too busy" in words, words
+    assert "more than the check's budget" not in words, words
 
 
 def test_the_advice_names_the_call_the_student_made():

@@ -257,7 +257,10 @@ def _too_busy(alarm: Alarm, b: Budget, where: str) -> str:
     left as the whole check's time. A function that computed for more than its CPU limit by
     then is slow, whatever the load (r174 12-2: "too busy" beside 11.2 s of a 10 s budget)."""
     if alarm.cap < CASE_WALL_FACTOR * alarm.seconds * (1 - 1e-9):  # the check's wall-clock limit
-        wall, cpu, limit = time.perf_counter() - b.start, b.used + alarm.cpu(), b.seconds
+        # b.used holds this case's CPU already (run_case adds it before it asks for the words;
+        # r199 C1: adding alarm.cpu() again told a correct function it computed for 14 s of
+        # a 10-s budget when the whole process had used 7.1 s)
+        wall, cpu, limit = time.perf_counter() - b.start, b.used, b.seconds
         ran = (f"the check ran for {seconds_words(wall)} of wall-clock time (its limit: "
                f"{seconds_words(min(WALL_FACTOR * b.seconds, LONGEST))}, {WALL_FACTOR:g} times "
                f"its budget of CPU){where}, and your function computed for "
