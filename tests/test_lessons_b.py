@@ -3400,7 +3400,15 @@ def test_10_r189_items():
     assert "the next cell counts" not in asked and "§7's layer count below" in asked
     assert any("def layers(" in t for t in code[code.index(asked) + 1 :])
     # 10-4, F2
-    assert "hence their decimals" not in md and "rounded to whole numbers" in md
+    assert "hence their decimals" not in md and "rounded to whole numbers" not in md
+    # r201 C1: the captions print three significant digits below 100 ("E12 = -61.9")
+    assert "to three significant digits (whole numbers from 100 on)" in " ".join(md.split())
+    from teachraster.core.tile_trace import value_text
+
+    assert value_text(-61.86) == "-61.9" and value_text(-81.04) == "-81"
+    # r201 m1: the 129-px box llvmpipe steps in 32 bits is safe by the area bound
+    assert "(256 · 129)² = 1,090,584,576 units² < 2^31 = 2,147,483,648" in printed
+    assert "129-px box that passes is still safe" in " ".join(md.split())
     assert asked.splitlines()[0].endswith("behind it.") and len(asked.splitlines()[0]) <= 80
     # 10-5: the long paragraphs' second halves folded
     for start, summary in [("### What the walk saves", "What a GPU's rasteriser pays for"),
