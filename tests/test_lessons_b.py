@@ -292,10 +292,10 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     # 06-1: no Python loop per row; the timer's uv is said (review r25 06-3: the span fill's
     # numpy passes, simulator internals, are no longer explained)
     assert "span loop in Python" not in md and "core/span_tables.py" not in md
-    assert "$uv$ interpolated at every covered pixel" in md
     # review r135 06-3, r146 12: the text reads no ratio of fill times as a fact about the
-    # algorithms; they change from run to run, and the benchmark measures them
-    assert "even their ratio's side of 1" in md and "bench_lesson06_signs.py" in md
+    # algorithms; r197 S1: nor mentions the textured fill's times at all
+    assert "*textured* fill" not in md and "ratio's side of 1" not in md
+    assert "bench_lesson06_signs.py" in md
     # r20 06-1..4: the times the signs rest on are the kernel's CPU time, fastest of interleaved
     # rounds (waiting for a core not counted), and the text says so
     assert "clock=time.process_time" in code and "ratio(" in code
@@ -328,9 +328,14 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     assert "Affine is faster in numpy, but by far less than the model says" not in md  # r80 D3
     # r60 06-3: only §1 and §2 print a time line (r128 06-5: §4's fill times, incoherent on
     # a busy machine, moved to appendix B; §4 prints cycle ratios only)
-    assert "one line per section" not in md and "§1 and §2 quote it" in md
+    # r197 minor: §1 prints its times in four lines, not "in a line each"
+    assert "in a line each" not in md and "only §1 and §2 print its times" in md
     # r146 2: the command the lesson names reads the fastest round, as the lesson does
-    assert "--repeat 5 --cpu" not in md and "fastest of five rounds in CPU time" in md
+    assert "--repeat 5 --cpu" not in md
+    assert (
+        "the fastest of five rounds (waiting for a core is not counted; "
+        "`python ../benchmarks/bench_lesson06_signs.py` measures the same way"
+    ) in md
     # r37 06-5: one paragraph of §1 reads the time columns; the others no longer repeat it
     assert "time says nothing: the eight times differ by noise" not in md
     # 06-5, 06-6: N is the subdivision length only; the ratio printed is for N doubling
@@ -560,9 +565,11 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     for n in (2, 4, 16):
         assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(k + (d + 8 * k + 1) / n)
     assert "**The front keeps its order.**" not in "".join(cells)
-    # q_bits: the cue to E's own bound, without the answer
+    # q_bits: the cue to E's own bound; r197 P1: lesson 02's count given (it prints it), the
+    # widest range asked, not said
     question = next(c for c in cells if "q_bits = Predict(" in c).split("explain=")[0]
-    assert "E is twice the signed area" in question and "49" not in question
+    assert "E is twice the signed area" in question and "{gpu.needed} bits" in question
+    assert str(2**ns.fits4) not in question and f"{2**ns.fits4:,}" not in question
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
     try:
         assert "Grey: off the front." in ex.widget.children[0].value  # F3
@@ -768,6 +775,8 @@ def test_06_review_r37_a_prediction_in_every_section():
     snapped triangle, and the unshown "unreliable ties" claim is gone."""
     import json
 
+    from notebook_runs import executed, streams
+
     from teachraster.study.operation_counts import edge_bits_needed
 
     def ops_bits(span):
@@ -781,7 +790,8 @@ def test_06_review_r37_a_prediction_in_every_section():
     def asked_at(name):
         return next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
 
-    answers = {"q_bits": "49", "q_fill": "6.3", "q_depth": str(ns.lin32["slanted_wrong"])}
+    answers = {"q_bits": f"{2**ns.fits4:,}", "q_fill": "6.3",
+               "q_depth": str(ns.lin32["slanted_wrong"])}  # fmt: skip
     for name in ("q_bits", "q_rule", "q_fill", "q_depth"):
         i = asked_at(name)
         # the cell right after the question is held on it; the Markdown just before says nothing
@@ -796,14 +806,19 @@ def test_06_review_r37_a_prediction_in_every_section():
     # own bound, 49 (twice a triangle's area, at most (2^24 - 1)^2 < 2^48), not the
     # term-by-term 50 (which r48 had made the answer); 48 wrap
     assert ns.gpu.least_needed == 49 == ns.gpu.needed - 1
-    # r146 9: q_bits asks the idea (E about twice a coordinate's bits: int64, not int32), not
-    # 49 against lesson 02's closed-box 50; both fall in the one right choice
+    # r197 P1: q_bits asked the count lesson 02 §5b prints (49); it now gives that count and
+    # asks the widest 2^k range whose E fits 32 bits with Vulkan's minimum 4 sub-pixel bits:
+    # 2^11 (2^7 with 8 bits, llvmpipe's MAX_FIXED_LENGTH32), as the held cell prints
     q_bits_text = cells[asked_at("q_bits")].split("explain=")[0]
-    assert "2<sup>24</sup>" in q_bits_text and "answer=bits_answer" in q_bits_text
-    assert ns.bits_answer == ns.bits_choices[2] and "int64 holds E" in ns.bits_answer
-    sizes = [int(c.split()[1].rstrip(":")) for c in ns.bits_choices]
-    assert sizes == sorted(sizes) and all(abs(b - a) > 5 for a, b in zip(sizes, sizes[1:]))
-    assert all(abs(n - sizes[2]) <= 2 for n in (ns.gpu.least_needed, ns.gpu.needed))
+    assert "subPixelPrecisionBits" in q_bits_text and "answer=bits_answer" in q_bits_text
+    assert (ns.fits4, ns.fits8) == (11, 7) and ns.bits_answer == "2,048 px (2^11)"
+    assert edge_bits_needed(2**11, 0, 4) == 32 < edge_bits_needed(2**12, 0, 4)
+    assert ns.bits_answer in ns.bits_choices and len(set(ns.bits_choices)) == 4
+    sizes = [int(c.split("^")[1].rstrip(")")) for c in ns.bits_choices]
+    assert sizes == sorted(sizes) and ns.fits8 in sizes and 16 in sizes
+    assert 16 - ns.range_bits_cut == ns.fits4  # the held explanation's arithmetic
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    assert "4 sub-pixel bits 2^11 = 2,048 px" in printed and "8 sub-pixel bits 2^7 = 128" in printed
     # and nothing visible after it (the summary aside) says E outgrows a 32-bit unit
     after = [c for c, k in zip(cells[asked_at("q_bits") :], kinds[asked_at("q_bits") :])
              if k == "markdown" and not c.startswith("## Summary")]  # fmt: skip
@@ -836,12 +851,23 @@ def test_06_review_r37_a_prediction_in_every_section():
     # N = 16's at few pixels (its far edge)
     # r68 06-2: right by it; r132 06-3: after it, held with it (it answers q_quake)
     assert "The checkerboard above marks in vermillion" in ns.CHECKS_TEXT
-    assert "N = 16's only near its far edge" in ns.CHECKS_TEXT and "only near its far" not in md
-    assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
-    # r41 06-12: the Try-it's 8-bit answer is llvmpipe's 32-bit limit
-    assert ops_bits(2**7) == 32 < ops_bits(2**8) and "`MAX_FIXED_LENGTH32`" in next(
-        c for c in cells if "**Try it:**" in c
+    # r197 C1: not "only near its far edge": most in the farther half (printed), the rest
+    # single pixels along check borders down to the near edge
+    assert "only near its far" not in ns.CHECKS_TEXT + md
+    assert f"N = 16's {ns.far_marks} of {ns.check_wrong['N = 16']} in the floor's farther half" in (
+        " ".join(ns.CHECKS_TEXT.split())
     )
+    assert ns.check_wrong["N = 16"] / 2 < ns.far_marks < ns.check_wrong["N = 16"]
+    assert "elsewhere single pixels along check borders" in ns.CHECKS_TEXT
+    assert 0 < ns.check_wrong["N = 16"] < ns.check_wrong["affine"] / 10
+    # r41 06-12: the 8-bit answer is llvmpipe's 32-bit limit (r197 P1: said in q_bits' held
+    # explanation; the Try it asks what q_bits does not, sub-pixel bits over 4096 px)
+    assert (
+        ops_bits(2**7) == 32 < ops_bits(2**8)
+        and "MAX_FIXED_LENGTH32"
+        in next(c for c in cells if "q_bits = Predict(" in c).split("explain=")[1]
+    )
+    assert "over a 4096-px screen" in next(c for c in cells if "**Try it:**" in c)
     # what the question gives is what the fill group counted
     assert ns.box256.size == 61_500 and ns.covered256 == 30_321 and ns.lines256 == 246
     # q_rule: the tie rule is named after the figure, not above the question
@@ -853,6 +879,38 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert "get exactly the same pixels wrong" in "".join(held["source"])
     assert "".join(held["source"]).startswith("q_depth.hold()")
     assert held["metadata"]["jupyter"]["source_hidden"]
+
+
+def test_06_review_r197_unorm16_read_attribute_bits_folded_code_and_about_as_many():
+    """Review r197 L1: the printed linear unorm16 step is read (coarser than the gap: the only
+    linear format with facing pixels wrong); M1: the bits a GPU keeps for attributes and
+    texture coordinates; I1: the error and crack figures' code folded, no test or layout
+    history in their comments; r196 3: a 16.16 step misfills "about as many" as float."""
+    import json
+
+    ns = lesson("06_what_accuracy_costs")
+    rows = {(r["group"], r["variant"]): r for r in ns.rows}
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    lossy = [f for f in ("float64", "float32", "unorm24", "unorm16")
+             if rows[("depth", f"linear {f}")]["facing_wrong"] > 0]  # fmt: skip
+    assert lossy == ["unorm16"] and ns.linear_step16 > 0.01
+    held = next(c for c in cells if "`linear float32` gets" in c)
+    assert "`linear unorm16`'s step, " in held and "the only linear format that loses any" in held
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    assert "`D3D11_SUBTEXEL_FRACTIONAL_BIT_COUNT`" in md and "§7.18.16.1" in md
+    assert "`subTexelPrecisionBits` is at least 4" in md and "32-bit float" in md
+    for made in ("fig, ax = plt.subplots(figsize=(9, 5.2)", "fig, crack_axes = plt.subplots("):
+        i = next(k for k, c in enumerate(cells) if made in c)
+        assert nb["cells"][i]["metadata"]["jupyter"]["source_hidden"], made
+        assert (
+            "a test" not in cells[i] and "px column" not in cells[i] and "zorder 7" not in cells[i]
+        )
+    first = cells[1]
+    assert "plotting.pareto" not in first
+    text = " ".join(ns.FILL_TEXT.split())
+    assert "misfills about as many as float" in text and "misfills as many" not in text
 
 
 def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
