@@ -412,11 +412,16 @@ def test_01_exact_stepping_is_not_one_addition():
     # the loop does what the text counts: per edge and line q += dq, r += dr, one compare
     fixed = next("".join(c["source"]) for c in every
                  if "def span_fill_int_dda(" in "".join(c["source"]))  # fmt: skip
-    step = fixed.split("for e in (long, short):")[1].split("return cover")[0]
+    # (r196 01-12: the start and the step are functions of their own, which the worked table
+    # of one edge calls too; the loop steps both edges with the step)
+    loop = fixed.split("def span_fill_int_dda(")[1].split("def fixed_start(")[0]
+    assert "for e in (long, short):\n            dda_step(e)" in loop
+    assert loop.count("dda_start(") == 2 and "divmod(" not in loop
+    step = fixed.split("def dda_step(")[1].split("def span_fill_int_dda(")[0]
     assert "e[0], e[1] = e[0] + e[3], e[1] + e[4]" in step and step.count("if e[1] >= e[2]") == 1
     # ... and its set-up: two integer divisions per edge (the first crossing and the step), six
     # for the three edges, as the text says (lesson 06 prices the same six)
-    setup = fixed.split("def start(")[1].split("def first_centre_at_or_after(")[0]
+    setup = fixed.split("def dda_start(")[1].split("def dda_step(")[0]
     assert setup.count("divmod(") == 2
     assert "two integer divisions per edge" in text and "six for the three edges" in text
 
@@ -525,6 +530,20 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # many", and the text that says so is held with the counts (r151: it stood visible
     # between q_fail and its Check, "a large share" ruling out three choices)
     assert "stepping on about as many (the last line printed" in " ".join(ns.FAIL_TEXT.split())
+    # r196 01-1: the summary said a float crossing is exact "only by luck (edge heights that
+    # are powers of two)", against the 1 triangle in 200 the computed crossing misfills
+    assert ns.misfilled["computed crossing (section 4)"] == 1
+    assert "exact only by luck" not in told
+    assert "It rarely misses a tie (section 5: 1 triangle in 200)" in told
+    # r196 01-2: "wherever du/dv has no exact binary fraction the stepped crossing lands a hair
+    # to one side" is measured now: on such edges, most ties but not all (the reader's 70.8 %
+    # exact counted vertical and binary-fraction steps too, which step exactly)
+    assert (ns.n_ties, ns.tie_missed) == (283, 266) and ns.tie_missed < ns.n_ties
+    fail_cell = next("".join(c["source"]) for c in nb["cells"]
+                     if "q_fail = PredictChoice(" in "".join(c["source"]))  # fmt: skip
+    assert "wherever" not in fail_cell
+    assert "(at {tie_missed} of the {n_ties} ties on such edges here)" in fail_cell
+    assert "nearly always lands a hair to one side of it (not always" in told
     assert "The float stepping is wrong on a large share" not in told
     assert "misfills about as many" in told
     held_figure = next(c for c in nb["cells"] if "exact_T = " in "".join(c["source"]))
@@ -566,6 +585,46 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert np.array_equal(ns.N[2], ns.a + ns.b - ns.c)
     assert np.allclose((ns.N[2] + ns.c) / 2, (ns.a + ns.b) / 2)
     assert ns.outside == (not ((ns.N[2] >= 0) & (ns.N[2] <= ns.S)).all())
+
+
+@pytest.mark.notebook
+def test_01_one_edge_stepped_three_ways():
+    """Review r196 01-12: the integer DDA had no worked picture. A table follows one edge
+    (2.5, 1.5)-(12.5, 7.5), step 5/3 px, line by line: at its tie (row 4, the centre 7.5) the
+    DDA's remainder is 0 after a carry, the float crossing lands +8.9e-16 px right and the
+    16.16 one +1.5e-05 px, the numbers its Markdown quotes."""
+    ns = lesson("01_span_tables")
+    rows = {int(v - 0.5): rest for v, *rest in ns.walk}
+    assert sorted(rows) == [1, 2, 3, 4, 5, 6] and ns.dda_exact
+    exact, off_f, off_16, q, r, carried = rows[4]
+    assert exact == Fraction(15, 2) and (q, r) == (1920, 0) and carried
+    assert f"{off_f:+.1e}" == "+8.9e-16" and f"{off_16:+.1e}" == "+1.5e-05"
+    assert list(rows[1][1:3]) == [0.0, 0.0]  # the vertex: exact all three ways
+    cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    walk = next(i for i, t in enumerate(text) if t.startswith("# One edge stepped three ways"))
+    told = " ".join(text[walk + 1].split())
+    assert cells[walk + 1]["cell_type"] == "markdown"
+    assert "Row 4 is the tie: the exact crossing is the centre 7.5" in told
+    assert "remainder 0, on a line with a carry" in told
+    assert "$+8.9 \\times 10^{-16}$" in told and "$+1.5 \\times 10^{-5}$" in told
+    assert "q_fail = PredictChoice(" in text[walk + 2]  # before the count it leads to
+
+
+def test_01_r196_figure_text_and_plumbing():
+    """Review r196 01-4/15/18: Ek's Figure 1 is the split (the lesson's section 3), not the
+    similar triangles; the figure prints the ratio its equation uses (dv/du); the player's
+    display plumbing is gone; only a mesh's interior edges have a neighbour."""
+    cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    figure = next(t for t in text if t.startswith("# After Ek's §1.1: the two similar"))
+    assert "Ek's Figure 1" not in figure and "(after Ek §1.1)" in figure
+    assert "Δv_{name}/Δu_{name} = {dv / du:g}" in figure and "Arc(" in figure
+    assert 'hatch="//"' in figure  # the small triangle an outline over the large one
+    md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
+    assert md.count("Ek's Figure 1") == 1 and "flat triangles (Ek's Figure 1)" in md
+    assert "The player works in the default display" not in md
+    assert "In a mesh every interior edge is shared" in md
 
 
 FIGURE_PREDICTIONS = ("PredictPixels(", "PredictPoint(", "PredictOrder(")

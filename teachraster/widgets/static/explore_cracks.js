@@ -509,11 +509,14 @@ export function explainPixel(pair, at, W, H, found, asListed = false) {
   const ends = (t) => {
     if (meth === "integer") return null;
     const hit = spanRows(t, H, meth === "dda", asListed).find(([i]) => i === row);
-    return hit ? `${full(hit[1])} … ${full(hit[2])}` : "no span";
+    return hit ? `${full(hit[1])} … ${full(hit[2])}` : "no span on this row";
   };
   const f = found[panel];
   const i = row * W + col;
-  const who = f.a[i] && f.b[i] ? "both (drawn twice)" : f.a[i] ? "A" : f.b[i] ? "B" : "neither";
+  // "neither" is the legend's word for a crack: only a crack is called that (r196 01-8)
+  const crack = f.cracks.some(([r, c]) => r === row && c === col);
+  const who = f.a[i] && f.b[i] ? "both (drawn twice)" : f.a[i] ? "A" : f.b[i] ? "B"
+    : crack ? "neither (a crack)" : "no triangle: outside both";
   const spans = meth === "integer" ? "decided by exact integer edge functions, no span ends"
     : `A's span x = ${ends(pair[0])}; B's span x = ${ends(pair[1])}`;
   return `<b>${METHODS[panel][1]}</b>, pixel row ${row}, column ${col} (centre x = ${col + 0.5}): ` +
