@@ -687,6 +687,20 @@ def test_step_caption_says_what_the_trace_says():
 FOOTPRINT = ("explore_footprint",)
 
 
+def test_footprint_view_draws_the_wrapped_texture_beyond_the_floor():
+    """Review r195 09-4: at the floor's near edge the texture view was white beyond the
+    texture, under the texel grid and the level square; the wrapped copies a filter reads
+    there are drawn too (paler), every copy that reaches the view and no other."""
+    # a 100-px view, copies 30 px wide, the floor's first copy at (-10, 70), 2 x 2 copies
+    tiles = call_js(FOOTPRINT, [("textureTiles", [-10, 70, 30, 30, 100, 2])])[0]
+    xs = sorted({x for x, _, _ in tiles})
+    ys = sorted({y for _, y, _ in tiles})
+    assert xs == [-10, 20, 50, 80] and ys == [-20, 10, 40, 70]  # all that reach [0, 100)
+    on_floor = {(x, y) for x, y, on in tiles if on}
+    assert on_floor == {(-10, 70), (20, 70)}  # the floor's row 0; row 1 starts below the view
+    assert len(tiles) == 16 and sum(not on for _, _, on in tiles) == 14
+
+
 def test_footprint_level_and_probes_as_the_engine():
     from teachraster.pipeline.texturing.texture_filters import (
         linear_levels,

@@ -358,11 +358,15 @@ def test_09_mipmaps_remove_the_moire():
 def test_09_quad_differences_follow_the_exact_map():
     ns = lesson("09_texture_filtering")
     np.testing.assert_allclose(ns.quad_ddx, ns.exact_ddx, rtol=1e-9)
-    # the quad in the cell below the figure is covered by one triangle: ddx is a plain difference
-    r, c = ns.qr, ns.qc
-    np.testing.assert_allclose(
-        ns.quads.ddx[r, c], ns.quads.attrs[r, c + 1] - ns.quads.attrs[r, c], atol=1e-12
-    )
+    # the quad in the cell below the figure has a helper at its upper right (review r195 09-12:
+    # a whole quad's ddx was the plain difference by definition): ddx is the helper's
+    # extrapolated value minus the upper-left pixel's, not what the image shows there
+    r, c, qt, k = ns.qr, ns.qc, ns.qt, ns.pick
+    assert qt.shaded[k, 0] and not qt.shaded[k, 1] and ns.quads.triangle_id[r, c] == ns.q_tri
+    assert ns.quads.triangle_id[r, c + 1] != ns.q_tri  # the helper is not the triangle's pixel
+    np.testing.assert_allclose(ns.quads.ddx[r, c], qt.values[k, 1] - qt.values[k, 0], atol=1e-12)
+    shown = ns.quads.attrs[r, c + 1] - ns.quads.attrs[r, c]  # NaN, or the other triangle's
+    assert not np.allclose(ns.quads.ddx[r, c], shown, atol=1e-6)
 
 
 def test_09_an_srgb_textures_levels_average_light():

@@ -2010,7 +2010,7 @@ def test_11_r106_colour_bar_quads_and_why_the_band_is_deeper_in_the_middle():
 # -- 09 texture filtering -----------------------------------------------------------------------
 def test_09_bilinear_footprint_seams_and_the_sampling_picture():
     ns = lesson("09_texture_filtering")
-    assert ns.whole  # the quad the text differences is covered by one triangle
+    assert not ns.qt.shaded[ns.pick, 1]  # the quad cell 12 differences holds a helper
     assert ns.bilinear_gap < 1e-12
     near, far = ns.picked["near"], ns.picked["far"]
     assert near[0] > far[0]
@@ -2073,7 +2073,7 @@ def test_09_quads_closed_form_and_predictions():
     ns = lesson("09_texture_filtering")
     # the title counts distinct quads, the plan (triangle, quad) shadings: one quad twice
     assert ns.art.n_quads == 20 and ns.shadings == 21
-    assert f"{ns.shadings} 2x2 quad shading(s)" in str(ns.quads.plan["derivatives"])
+    assert f"{ns.shadings} 2x2 quad shadings" in str(ns.quads.plan["derivatives"])
     # q_helpers (review r42 09-5): the answer is the lone triangle's uncovered quad pixels,
     # two of its quads hold one covered pixel each (the explanation names them)
     cov = ns.lone.coverage
@@ -2306,7 +2306,39 @@ def test_09_r184_pointer_extents_held_rule_and_a_sheared_footprint():
     # the printout gives copied into them
     see = next(t for t in text if t.startswith("**What you should see**"))
     notes = see[: see.index("<details>")]
-    assert len(notes.split()) < 420 and not re.search(r"\d\.\d\d", notes)
+    assert len(notes.split()) < 240 and not re.search(r"\d\.\d\d", notes)  # r195: ~200
+
+
+def test_09_r195_reading_load_srgb_sampler_and_the_probe_jump():
+    """Review r195 09: the analysis cells between the explorer and its notes (and §7's table)
+    are folded, a comment line left showing (11); the Summary's wider view is folded (11);
+    the sampler decodes sRGB before it blends (9); the probe count jumps at any excess over 1
+    in GL's formula, not past "rounding noise" (13); printed lines say "quads", not "quad(s)"
+    (14)."""
+    import json
+    import re
+
+    from notebook_runs import executed, streams
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    flat = " ".join(" ".join(text).split())
+    for marker in ("start_lod = explorer.lod[", 'row["reads_minified"] = texel_reads('):
+        i = next(i for i, t in enumerate(text) if marker in t)
+        meta = cells[i]["metadata"]
+        assert meta["jupyter"]["source_hidden"] is True and "hide-input" in meta["tags"], marker
+        assert text[i].split("\n", 1)[0].lstrip().startswith(("#", "q_reads.hold()  #"))
+    summary = next(t for t in text if t.startswith("## Summary"))
+    shown = re.sub(r"<details>.*?</details>", "", summary, flags=re.S)
+    for folded in ("*Ripmaps*", "*Wrap modes.*", "*Memory.*"):
+        assert folded in summary and folded not in shown, folded
+    assert "Beyond this lesson" in summary and "**Beyond this lesson.**" not in shown
+    assert len(shown[: shown.index("**Try it:**")].split()) < 280
+    assert "rounding noise" not in flat and "longer than wide at all (GL's formula" in flat
+    assert "converts the texels to linear as part of filtering" in flat and "§8.24" in flat
+    printed = streams(executed("09_texture_filtering").notebook())
+    assert "(s)" not in printed, [ln for ln in printed.splitlines() if "(s)" in ln]
+    assert "1 quad straddles both triangles and is shaded twice" in printed
 
 
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():

@@ -12,7 +12,13 @@ from dataclasses import dataclass, field
 import numpy as np
 from matplotlib.cm import ScalarMappable
 from matplotlib.collections import LineCollection, PatchCollection
-from matplotlib.colors import BoundaryNorm, ListedColormap, to_rgba
+from matplotlib.colors import (
+    BoundaryNorm,
+    LinearSegmentedColormap,
+    ListedColormap,
+    Normalize,
+    to_rgba,
+)
 from matplotlib.patches import Rectangle
 
 from ..pipeline.rendering.render_triangles import Frame
@@ -159,8 +165,8 @@ def plot_lod(ax, lam, n_levels: int | None = None, *, colorbar: bool = True,
 
 @dataclass
 class LevelsReadArtists(Artists):
-    """The levels-read map (an RGBA image), its colour bar (one tick per level) and the
-    number of levels."""
+    """The levels-read map (an RGBA image), its colour bar (continuous, one tick per level)
+    and the number of levels."""
 
     image: object
     colorbar: object = None
@@ -185,6 +191,18 @@ def levels_read_image(read: LevelsRead, n_levels: int) -> np.ndarray:
     t = read.weight[ok][:, None]
     rgba[ok] = (1 - t) * palette[first] + t * palette[second]
     return rgba
+
+
+def _levels_key(n_levels: int) -> ScalarMappable:
+    """The level panel's colour key: a continuous bar through the levels' colours, each at
+    its integer (a tick), mixed linearly between them as :func:`levels_read_image` mixes two
+    blended levels, so that a blend's colour can be read off the bar as a fractional level
+    (review r195 09-2: seven discrete swatches had no place for the blends' colours)."""
+    colours = [LEVEL_COLORS[i % len(LEVEL_COLORS)] for i in range(n_levels)]
+    if n_levels < 2:  # one level: one swatch
+        return ScalarMappable(BoundaryNorm([-0.5, 0.5], 1), ListedColormap(colours))
+    cmap = LinearSegmentedColormap.from_list("levels", colours, N=64 * (n_levels - 1) + 1)
+    return ScalarMappable(Normalize(0, n_levels - 1), cmap)
 
 
 def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = True,
@@ -215,10 +233,8 @@ def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = Tr
     im = show_image(ax, levels_read_image(read, n_levels), zorder=0.5)
     cbar = None
     if colorbar:
-        colours = [LEVEL_COLORS[i % len(LEVEL_COLORS)] for i in range(n_levels)]
-        key = ScalarMappable(BoundaryNorm(np.arange(n_levels + 1) - 0.5, n_levels),
-                             ListedColormap(colours))  # fmt: skip
         where = {"ax": ax, "shrink": 0.85} if cax is None else bar_in(cax)
+        key = _levels_key(n_levels)
         cbar = ax.figure.colorbar(key, ticks=np.arange(n_levels), label="level", **where)
     if title:
         ax.set_title(title)

@@ -227,7 +227,7 @@ def _derivatives_why(effects, scene, texture_filter, kwargs):
         n = int(where.sum())
         why = (
             f"texture_filter={texture_filter!r} uses mipmaps; the texture may be minified on "
-            f"{n} of {len(where)} triangle(s)"
+            f"{n} of {len(where)} triangle{'' if len(where) == 1 else 's'}"
             + ("" if n else ": magnified everywhere, level 0 without derivatives")
         )
     else:

@@ -129,7 +129,8 @@ function mount(el, data, host) {
     "Left, the floor on the screen; right, the same floor in texture space, with every pixel " +
     "centre as a dot. Click a pixel (or move it with the arrow keys): its footprint appears " +
     "in texture space, the ellipse the filters approximate, with λ and the level chosen. " +
-    "Click in texture space: the pixels whose footprint holds that point light up.");
+    "Click in texture space: the pixels whose footprint holds that point light up. Beyond " +
+    "the floor's edge the texture is drawn paler: the wrapped texels a filter reads there.");
   const cell = Math.max(6, Math.min(12, Math.floor(480 / W)));
   const [screen, sctx] = makeCanvas(W * cell, H * cell, "the textured floor, pixel by pixel");
   const T = 420;
@@ -273,6 +274,24 @@ function drawScreen(ctx, small, W, H, cell, pixel, reading) {
   }
 }
 
+// The copies of the texture that reach a T-px view whose copy (0, 0) starts at (x0, y0), each
+// [x, y, onFloor]: the floor's own repeats × repeats copies, and around them, paler, the copies
+// a filter reads beyond the floor's edge (wrap "repeat": texel (i, j) is texel (i mod H, j mod
+// W)), so that the texel grid and the level squares drawn there lie over what is read (review
+// r195 09-4: the view was white beyond the edge).
+export function textureTiles(x0, y0, tw, th, T, repeats) {
+  const tiles = [];
+  const [j0, j1] = [Math.floor(-x0 / tw), Math.ceil((T - x0) / tw)];
+  const [i0, i1] = [Math.floor(-y0 / th), Math.ceil((T - y0) / th)];
+  for (let i = i0; i < i1; i++) {
+    for (let j = j0; j < j1; j++) {
+      const onFloor = i >= 0 && j >= 0 && i < repeats && j < repeats;
+      tiles.push([x0 + j * tw, y0 + i * th, onFloor]);
+    }
+  }
+  return tiles;
+}
+
 function drawTexture(ctx, texImage, data, v, T, fromTex) {
   ctx.fillStyle = "#fff";
   ctx.fillRect(0, 0, T, T);
@@ -281,13 +300,9 @@ function drawTexture(ctx, texImage, data, v, T, fromTex) {
   const [x0, y0] = fromTex(v, [0, 0]);
   const s = T / (2 * v.half);
   const [tw, th] = [data.texW * s, data.texH * s];
-  for (let i = 0; i < data.repeats; i++) {
-    for (let j = 0; j < data.repeats; j++) {
-      const [x, y] = [x0 + j * tw, y0 + i * th];
-      if (x > T || y > T || x + tw < 0 || y + th < 0) continue;
-      ctx.globalAlpha = 0.55;
-      ctx.drawImage(texImage, x, y, tw, th);
-    }
+  for (const [x, y, onFloor] of textureTiles(x0, y0, tw, th, T, data.repeats)) {
+    ctx.globalAlpha = onFloor ? 0.55 : 0.22;
+    ctx.drawImage(texImage, x, y, tw, th);
   }
   ctx.globalAlpha = 1;
   // every covered pixel's centre, where it samples the texture
