@@ -276,7 +276,10 @@ def _box_cases() -> list[tuple[str, tuple]]:
          "tile's middle", (far_corner, 0, 0, TILE, buffer)),
         ("a triangle whose bounding box starts 0.2 px past the centre of a pixel",
          (past, 0, 0, TILE, np.full((TILE, TILE), 0.32))),
-        ("a tile the triangle's bounding box misses by 0.2 px, one pixel still empty",
+        # r198 C1: the box starts at x = 15.7, inside the tile's last column (it ends at
+        # x = 16): it misses that column's centre (15.5), not the tile
+        ("a triangle whose bounding box holds no centre of the tile (it starts 0.2 px past "
+         "the last one), one pixel still empty",
          (beyond, 0, 8, TILE, _with(np.full((TILE, TILE), 0.45), (2, 7), np.inf))),
         ("a large triangle whose bounding box starts exactly at a pixel centre of the tile",
          (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
@@ -910,12 +913,17 @@ def draw_hiz(ax, case, got):
     cy, cx = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
     artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3,
                        label="pixel centres")  # fmt: skip
+    if not np.isfinite(buffer).all():  # r198 C.5: the white pixels, outside the colour bar
+        artists += ax.plot([], [], "s", mfc="white", mec="0.5", ms=8,
+                           label="nothing drawn yet (+∞)")  # fmt: skip
     ax.set_xlim(col0 - VIEW_MARGIN, col0 + size + VIEW_MARGIN)
     ax.set_ylim(row0 + size + VIEW_MARGIN, row0 - VIEW_MARGIN)
     from matplotlib.ticker import MultipleLocator
 
-    for axis in (ax.xaxis, ax.yaxis):
-        axis.set_major_locator(MultipleLocator(4 if size > 8 else 2))
+    step = 4 if size > 8 else 2
+    ax.xaxis.set_major_locator(MultipleLocator(step))
+    # r198 C.4: no tick label at the view's top edge, where the title's second line sat on it
+    ax.set_yticks(np.arange(row0, row0 + size + VIEW_MARGIN + 1, step))
     ax.set_aspect("equal")
     artists += _whole_triangle(ax, xyz, row0, col0, size)
     artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
@@ -1027,13 +1035,15 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
     pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
     lo, hi = lo - pad, hi + pad
-    # a triangle under half the view: its nearest vertex's depth alone (the labels overlap)
-    tiny = np.ptp(xyz[:, :2], axis=0).max() < 0.5 * float((hi - lo).max())
-    for j, (x, y, z) in enumerate(xyz):
-        if tiny and j != int(np.argmin(xyz[:, 2])):
-            continue
+    # r198 C.6: every vertex's depth (which way the plane rises), each set outward from the
+    # triangle's centroid, so that a small triangle's three labels do not overlap
+    centre = xyz[:, :2].mean(axis=0)
+    for x, y, z in xyz:
+        d = np.array([x, y]) - centre
+        d = d / (np.hypot(*d) or 1.0)
         # r149 E3: "small" (was x-small, about 9 pt) on a white ground, clear of the tile's outline
-        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="small",
+        inset.annotate(num(float(z)), (x, y), xytext=(7 * d[0], -7 * d[1]),
+                       textcoords="offset points", ha="center", va="center", fontsize="small",
                        color="#7f0000", bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
                        "edgecolor": "none", "alpha": 0.85}, zorder=4)  # fmt: skip
     inset.set_xlim(lo[0], hi[0])
