@@ -244,3 +244,67 @@ def test_d4_snapping_changes_no_cases_box_as_82_says():
         if _box(tile_blocks.snap(xy), row0, col0, size) != _box(xy, row0, col0, size):
             moved.append(name)
     assert not moved, moved
+
+
+# -- B (8.2): two slips once told the rule -------------------------------------------------------
+
+
+def _hiz_variant(*edits: tuple[str, str]):
+    """The notebook's hiz_rejects with each (old, new) edit made once."""
+    source = _cell("hiz_rejects_solution")
+    for old, new in edits:
+        assert source.count(old) == 1, old
+        source = source.replace(old, new)
+    ns = {"np": np}
+    exec(source, ns)
+    return ns["hiz_rejects"]
+
+
+HIZ_SLIPS = {
+    "the plane at (c, r), the box right": (
+        _hiz_variant(
+            ("np.array([c_lo + 0.5, c_hi + 0.5])", "np.array([c_lo, c_hi])"),
+            ("np.array([r_lo + 0.5, r_hi + 0.5])", "np.array([r_lo, r_hi])"),
+        ),
+        "plane at integer points",
+    ),
+    "dz/dy's sign slipped": (
+        _hiz_variant(
+            (
+                "b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1))",
+                "b = ((z2 - z1) * (x3 - x1) - (z3 - z1) * (x2 - x1))",
+            ),
+        ),
+        "dz/dy sign",
+    ),
+}
+
+
+@pytest.mark.parametrize("words", ["first_words", "full_words"])
+@pytest.mark.parametrize("name", list(HIZ_SLIPS))
+def test_b_82_slips_once_told_the_rule_are_named(name, words, request):
+    request.getfixturevalue(words)
+    fn, kind = HIZ_SLIPS[name]
+    report = ex.check("hiz_rejects", fn, budget=120)
+    assert report.failures
+    for f in report.failures:
+        assert f.kind == kind, (f.case, f.kind, f.explanation)
+        assert "The block is rejected when the task's lower bound" not in f.explanation
+
+
+def test_b_82_the_sign_words_quote_a_vertex_the_plane_misses(full_words):  # noqa: F811
+    report = ex.check("hiz_rejects", HIZ_SLIPS["dz/dy's sign slipped"][0], budget=120)
+    f = report.shown()[0]
+    assert "dz/dy has the wrong sign" in f.explanation and "whose depth is" in f.explanation
+    assert ex.check("hiz_rejects", _hiz_variant(), budget=120).passed
+
+
+def test_d1_the_float64_reach_is_folded_and_the_visible_task_shorter():
+    import re
+
+    task = _cell("classify_block_task")
+    folded = task.index("<details><summary>How far float64 is exact</summary>")
+    assert folded < task.index("2¹⁷ = 131,072 px") < task.index("</details>", folded)
+    assert "compute in float64 (or Python numbers), not float32" in task
+    visible = re.sub(r"<details>.*?</details>", "", task, flags=re.S)
+    assert len(visible.split()) < 720  # r198 D.1: 762 visible words

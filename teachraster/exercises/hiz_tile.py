@@ -501,6 +501,11 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r131 D8-4: the centres at integer coordinates (8.1 names the same slip)
             "integer centres": bool(_integer_bound(xyz, row0, col0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
+            # r198 B: the box's columns and rows right, the plane at (c, r), not the centres;
+            # a gradient solved with one sign slipped
+            "plane at integer points": bool(_slipped_bound(xyz, box, at=0.0) >= far),
+            "dz/dx sign": bool(_slipped_bound(xyz, box, signs=(-1, 1)) >= far),
+            "dz/dy sign": bool(_slipped_bound(xyz, box, signs=(1, -1)) >= far),
         }
 
 
@@ -559,6 +564,41 @@ def _box_buffer_far(xyz, row0, col0, size, buffer) -> float:
     return float(
         buffer[rows[0] - row0 : rows[3] - row0 + 1, cols[0] - col0 : cols[3] - col0 + 1].max()
     )
+
+
+def _slipped_plane(xyz, rows, cols, at: float = 0.5, signs=(1, 1)):
+    """The plane at (c + ``at``, r + ``at``), its gradient's components times ``signs``."""
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = signs[0] * ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = signs[1] * ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    return z1 + a * (np.asarray(cols) + at - x1) + b * (np.asarray(rows) + at - y1)
+
+
+def _slipped_bound(xyz, box, at: float = 0.5, signs=(1, 1)) -> float:
+    """The task's bound over the box's extreme centres (+inf: none) with the plane slipped
+    (:func:`_slipped_plane`), no nearer than the nearest vertex."""
+    if box is None:
+        return np.inf
+    low = float(_slipped_plane(xyz, *box, at=at, signs=signs).min())
+    return max(low, float(np.asarray(xyz, dtype=float)[:, 2].min()))
+
+
+def _sign_words(axis: str, k: int):
+    """r198 B: the plane's gradient with one sign slipped: where it misses the vertices."""
+
+    def words(args, expected, got):
+        xyz = np.asarray(args[0], dtype=float)
+        signs = (-1, 1) if k == 0 else (1, -1)
+        z = _slipped_plane(xyz, xyz[:, 1] - 0.5, xyz[:, 0] - 0.5, signs=signs)
+        j = int(np.argmax(np.abs(z - xyz[:, 2])))
+        return (
+            f"your plane's dz/d{axis} has the wrong sign (a slip in solving for it?): that "
+            f"plane gives {num(float(z[j]))} at v{j + 1}, whose depth is {num(float(xyz[j, 2]))}; "
+            "the plane passes through all three vertices: check your a and b against them"
+        )
+
+    return words
 
 
 def _integer_bound(xyz, row0, col0, size) -> float:
@@ -782,6 +822,13 @@ MISTAKES = {
 }
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
+MISTAKES["plane at integer points"] = (
+    "you took the right columns and rows of the box, but evaluated the plane at (c, r), the "
+    "pixels' top-left corners: pixel column c has its centre at x = c + ½ and row r at "
+    "y = r + ½, so your plane's values move by half a step of its gradient in each direction"
+)
+MISTAKES["dz/dx sign"] = _sign_words("x", 0)
+MISTAKES["dz/dy sign"] = _sign_words("y", 1)
 
 
 def _corners_or_empty(args, expected, got) -> str:
