@@ -120,7 +120,8 @@ def test_f1_the_reach_is_printed_and_quoted_and_the_cases_keep_to_it(monkeypatch
     assert "2^17 = 131,072 px" in said and tile_blocks.FLOAT64_REACH == 131_072
     assert "print(float64_reach())" in _cell("setup")
     task = " ".join(_cell("classify_block_task").split())
-    assert "2^17 = 131,072 px of the origin" in task and "cell 1 prints" in task
+    # r198 D.3: a caret renders as itself in Markdown; the printed line keeps "2^17"
+    assert "2¹⁷ = 131,072 px of the origin" in task and "cell 1 prints" in task
     assert "which holds these edge functions exactly;" not in task
     # the check's cases keep to it: a reach below theirs is refused
     monkeypatch.setattr(tile_blocks, "FLOAT64_REACH", 1000)

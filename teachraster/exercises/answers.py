@@ -135,6 +135,16 @@ def as_number(value):
     return _to_float(arr, value, what).reshape(())[()]
 
 
+def transposed_shape_words(shape: tuple, expected: tuple) -> str:
+    """What to add to a shape error whose shape is the expected one reversed (r198 M1)."""
+    if len(shape) == 2 and tuple(shape) == tuple(expected)[::-1] and shape[0] != shape[1]:
+        return (
+            " (the expected shape reversed: your answer is transposed, rows and columns "
+            "swapped; an array is indexed [row, column], that is [y, x])"
+        )
+    return ""
+
+
 def as_numbers(value, shape: tuple | None, what: str, max_size: int = MAX_VERTICES * 4):
     """An array of numbers of ``shape`` (-1 for any length; None: any shape, at most
     ``max_size`` values), float32 kept as given."""
@@ -143,7 +153,8 @@ def as_numbers(value, shape: tuple | None, what: str, max_size: int = MAX_VERTIC
         return _to_float(arr, value, what)
     fits = arr.ndim == len(shape) and all(s in (-1, n) for s, n in zip(shape, arr.shape))
     if not fits:
-        raise WrongAnswerType(f"returned {_shaped(value, arr)}; expected {what}")
+        flipped = transposed_shape_words(arr.shape, shape) if -1 not in shape else ""
+        raise WrongAnswerType(f"returned {_shaped(value, arr)}; expected {what}{flipped}")
     return _to_float(arr, value, what)
 
 

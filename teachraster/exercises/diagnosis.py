@@ -452,6 +452,41 @@ def rounded_mistake() -> Mistake:
     return Mistake("rounded", words, fits=fits, only_whole=True)
 
 
+def _transposed_to(expected, got) -> bool | None:
+    """Is ``got`` the 2-D answer ``expected`` transposed (and not equal to it)? None where
+    the answer is not a 2-D array, or where transposing changes nothing: no say."""
+    try:
+        g, e = np.asarray(got), np.asarray(expected)
+    except (TypeError, ValueError):
+        return None
+    if g.ndim != 2 or e.ndim != 2 or g.shape != e.shape[::-1] or g.dtype == object:
+        return None
+    if e.shape[0] == e.shape[1] and np.array_equal(e, e.T):
+        return None  # symmetric: its transpose is itself
+    return bool(np.array_equal(g.T, e))
+
+
+#: r198 M1: a transposed answer ([x, y] for [row, column]) on a square grid was told the
+#: exercise's rule (a corner, an offset), and the shape only on a non-square case, third.
+TRANSPOSED_WORDS = (
+    ": your answer is transposed: its [i, j] holds what belongs at [j, i] (rows and columns "
+    "swapped). An array is indexed [row, column], that is [y, x]: return it in the shape and "
+    "order of the inputs (no .T, no [x, y] indexing)"
+)
+
+
+def transposed_mistake() -> Mistake:
+    """The right 2-D answer transposed, on every failing case (r198 M1), for every exercise
+    whose answer is a 2-D array; an exercise's own transposed mistake, earlier in its table,
+    is named before it. A non-square transposed answer is refused by the shape first
+    (:func:`.answers.transposed_shape_words`)."""
+
+    def fits(args, expected, got):
+        return run_checker(lambda: _transposed_to(expected, got), None)
+
+    return Mistake("transposed", TRANSPOSED_WORDS, fits=fits, only_whole=True)
+
+
 def _outside_float32(args) -> float | None:
     """A number of the case that float32 cannot hold (it would become 0 or inf), or None."""
     for a in args:
@@ -810,7 +845,7 @@ def diagnose(
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
     rounded = rounded_mistake()
     mistakes = [m for m in spec.all_mistakes() if m.reads is None or m.reads in reads]
-    mistakes += [rounded, low_precision_mistake(spec)]
+    mistakes += [transposed_mistake(), rounded, low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     if all(run_checker(lambda r=r: _whole(r.got), False) for r in failing):
         # rounding to N decimals shows only in an answer with a fraction: whole numbers

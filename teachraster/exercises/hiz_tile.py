@@ -276,7 +276,10 @@ def _box_cases() -> list[tuple[str, tuple]]:
          "tile's middle", (far_corner, 0, 0, TILE, buffer)),
         ("a triangle whose bounding box starts 0.2 px past the centre of a pixel",
          (past, 0, 0, TILE, np.full((TILE, TILE), 0.32))),
-        ("a tile the triangle's bounding box misses by 0.2 px, one pixel still empty",
+        # r198 C1: the box starts at x = 15.7, inside the tile's last column (it ends at
+        # x = 16): it misses that column's centre (15.5), not the tile
+        ("a triangle whose bounding box holds no centre of the tile (it starts 0.2 px past "
+         "the last one), one pixel still empty",
          (beyond, 0, 8, TILE, _with(np.full((TILE, TILE), 0.45), (2, 7), np.inf))),
         ("a large triangle whose bounding box starts exactly at a pixel centre of the tile",
          (_AT_CENTRE, 0, 0, TILE, np.full((TILE, TILE), 0.39))),
@@ -498,6 +501,11 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r131 D8-4: the centres at integer coordinates (8.1 names the same slip)
             "integer centres": bool(_integer_bound(xyz, row0, col0, size) >= far),
             "covered centres": _covered_bound(xyz, row0, col0, size, buffer),
+            # r198 B: the box's columns and rows right, the plane at (c, r), not the centres;
+            # a gradient solved with one sign slipped
+            "plane at integer points": bool(_slipped_bound(xyz, box, at=0.0) >= far),
+            "dz/dx sign": bool(_slipped_bound(xyz, box, signs=(-1, 1)) >= far),
+            "dz/dy sign": bool(_slipped_bound(xyz, box, signs=(1, -1)) >= far),
         }
 
 
@@ -556,6 +564,41 @@ def _box_buffer_far(xyz, row0, col0, size, buffer) -> float:
     return float(
         buffer[rows[0] - row0 : rows[3] - row0 + 1, cols[0] - col0 : cols[3] - col0 + 1].max()
     )
+
+
+def _slipped_plane(xyz, rows, cols, at: float = 0.5, signs=(1, 1)):
+    """The plane at (c + ``at``, r + ``at``), its gradient's components times ``signs``."""
+    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    a = signs[0] * ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = signs[1] * ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    return z1 + a * (np.asarray(cols) + at - x1) + b * (np.asarray(rows) + at - y1)
+
+
+def _slipped_bound(xyz, box, at: float = 0.5, signs=(1, 1)) -> float:
+    """The task's bound over the box's extreme centres (+inf: none) with the plane slipped
+    (:func:`_slipped_plane`), no nearer than the nearest vertex."""
+    if box is None:
+        return np.inf
+    low = float(_slipped_plane(xyz, *box, at=at, signs=signs).min())
+    return max(low, float(np.asarray(xyz, dtype=float)[:, 2].min()))
+
+
+def _sign_words(axis: str, k: int):
+    """r198 B: the plane's gradient with one sign slipped: where it misses the vertices."""
+
+    def words(args, expected, got):
+        xyz = np.asarray(args[0], dtype=float)
+        signs = (-1, 1) if k == 0 else (1, -1)
+        z = _slipped_plane(xyz, xyz[:, 1] - 0.5, xyz[:, 0] - 0.5, signs=signs)
+        j = int(np.argmax(np.abs(z - xyz[:, 2])))
+        return (
+            f"your plane's dz/d{axis} has the wrong sign (a slip in solving for it?): that "
+            f"plane gives {num(float(z[j]))} at v{j + 1}, whose depth is {num(float(xyz[j, 2]))}; "
+            "the plane passes through all three vertices: check your a and b against them"
+        )
+
+    return words
 
 
 def _integer_bound(xyz, row0, col0, size) -> float:
@@ -779,6 +822,13 @@ MISTAKES = {
 }
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
+MISTAKES["plane at integer points"] = (
+    "you took the right columns and rows of the box, but evaluated the plane at (c, r), the "
+    "pixels' top-left corners: pixel column c has its centre at x = c + ½ and row r at "
+    "y = r + ½, so your plane's values move by half a step of its gradient in each direction"
+)
+MISTAKES["dz/dx sign"] = _sign_words("x", 0)
+MISTAKES["dz/dy sign"] = _sign_words("y", 1)
 
 
 def _corners_or_empty(args, expected, got) -> str:
@@ -910,12 +960,17 @@ def draw_hiz(ax, case, got):
     cy, cx = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
     artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3,
                        label="pixel centres")  # fmt: skip
+    if not np.isfinite(buffer).all():  # r198 C.5: the white pixels, outside the colour bar
+        artists += ax.plot([], [], "s", mfc="white", mec="0.5", ms=8,
+                           label="nothing drawn yet (+∞)")  # fmt: skip
     ax.set_xlim(col0 - VIEW_MARGIN, col0 + size + VIEW_MARGIN)
     ax.set_ylim(row0 + size + VIEW_MARGIN, row0 - VIEW_MARGIN)
     from matplotlib.ticker import MultipleLocator
 
-    for axis in (ax.xaxis, ax.yaxis):
-        axis.set_major_locator(MultipleLocator(4 if size > 8 else 2))
+    step = 4 if size > 8 else 2
+    ax.xaxis.set_major_locator(MultipleLocator(step))
+    # r198 C.4: no tick label at the view's top edge, where the title's second line sat on it
+    ax.set_yticks(np.arange(row0, row0 + size + VIEW_MARGIN + 1, step))
     ax.set_aspect("equal")
     artists += _whole_triangle(ax, xyz, row0, col0, size)
     artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
@@ -1027,13 +1082,15 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
     pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
     lo, hi = lo - pad, hi + pad
-    # a triangle under half the view: its nearest vertex's depth alone (the labels overlap)
-    tiny = np.ptp(xyz[:, :2], axis=0).max() < 0.5 * float((hi - lo).max())
-    for j, (x, y, z) in enumerate(xyz):
-        if tiny and j != int(np.argmin(xyz[:, 2])):
-            continue
+    # r198 C.6: every vertex's depth (which way the plane rises), each set outward from the
+    # triangle's centroid, so that a small triangle's three labels do not overlap
+    centre = xyz[:, :2].mean(axis=0)
+    for x, y, z in xyz:
+        d = np.array([x, y]) - centre
+        d = d / (np.hypot(*d) or 1.0)
         # r149 E3: "small" (was x-small, about 9 pt) on a white ground, clear of the tile's outline
-        inset.annotate(num(float(z)), (x, y), ha="center", va="center", fontsize="small",
+        inset.annotate(num(float(z)), (x, y), xytext=(7 * d[0], -7 * d[1]),
+                       textcoords="offset points", ha="center", va="center", fontsize="small",
                        color="#7f0000", bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
                        "edgecolor": "none", "alpha": 0.85}, zorder=4)  # fmt: skip
     inset.set_xlim(lo[0], hi[0])

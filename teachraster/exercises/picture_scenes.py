@@ -487,10 +487,11 @@ def tile_scene(fn) -> Scene:
             key = (col // size * size, row // size * size, size)
             if key in scene.parts and scene.parts[key] != truth.get(key, scene.parts[key]):
                 words = tb.explain_block((TILE_TRIANGLE.copy(), *key), truth[key], scene.parts[key])  # fmt: skip
-                # r94 D8-3: the first try's caption gave the block's extreme centres
-                return f"block ({key[0]}, {key[1]}) of size {size}: " + lod.hinted("classify_block", words, tb.BLOCK_HINTS) + _pixel_why(got, row, col)  # fmt: skip
+                # r94 D8-3: the first try's caption gave the block's extreme centres; r198 C.3:
+                # the block named once, as x0, y0 (the pixel is (row, col): no "(36, 20)" beside it)
+                return lod.hinted("classify_block", words, tb.BLOCK_HINTS) + _pixel_why(got, row, col)  # fmt: skip
             if key in truth and key not in scene.parts:
-                return f"the package visits block ({key[0]}, {key[1]}) of size {size}, yours does not: its parent's verdict differs"  # fmt: skip
+                return f"the package visits the block x0={key[0]}, y0={key[1]}, size={size}, yours does not: its parent's verdict differs"  # fmt: skip
         return f"yours and the package's agree: {WALK[int(reference[row, col])][0]}"
 
     # r94 D8-11: "the package's: a tile walk: blocks of 16, then 4, then pixels" took three

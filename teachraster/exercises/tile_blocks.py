@@ -40,7 +40,7 @@ import numpy as np
 
 from ..core.edges import edge_values_at, passes, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, snap
-from .answers import short
+from .answers import short, transposed_shape_words
 from .cases import SEED, seeded
 from .coverage import covered
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
@@ -98,6 +98,8 @@ POINTS = {
     # form's half span (size − 1)/2 added to the first centre; the centre form with integer
     # division, E at x0 + size//2 ± (size − 1)//2 steps (½ px short on each side)
     "size - 2": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, s - 2),
+    # r198 B: E₀ at (x0 + 1, y0 + 1), the first pixel's bottom-right corner
+    "bottom-right corners": lambda x0, y0, s: (x0 + 1.0, y0 + 1.0, s - 1),
     "half span": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, (s - 1) / 2),
     "centre floored": lambda x0, y0, s: (
         x0 + s // 2 - (s - 1) // 2,
@@ -125,6 +127,8 @@ OFFSETS = {
     "sign flipped": lambda a, b, d: (-d * (_pos(a) + _pos(b)), -d * (_neg(a) + _neg(b))),
     "swapped": lambda a, b, d: (d * (_neg(a) + _neg(b)), d * (_pos(a) + _pos(b))),
     "two corners": lambda a, b, d: (_pos(d * (a + b)), _neg(d * (a + b))),
+    # r198 B: the middle's half span ±(|A| + |B|) taken whole from the first centre
+    "both ways": lambda a, b, d: (d * (abs(a) + abs(b)), -d * (abs(a) + abs(b))),
 }
 
 
@@ -272,7 +276,7 @@ def call_block(fn, args):
     if not isinstance(got, str) and got.shape != shape:
         raise WrongAnswerType(
             f"returned {got.size} verdicts of shape {got.shape}; expected one per block, an "
-            f"array of shape {shape}, the shape of x0 and y0"
+            f"array of shape {shape}, the shape of x0 and y0{transposed_shape_words(got.shape, shape)}"
         )
     return got
 
@@ -763,6 +767,46 @@ SHORT_OFFSETS = [
     _single("centre form, integer division", _centre_floored_words, points="centre floored"),
 ]  # fmt: skip
 
+#: r198 B: two offset slips told only the rule ("every edge includes the block's four corner
+#: centres"): E₀ at the first pixel's bottom-right corner, and offsets reaching both ways.
+OFFSET_SINGLES = [
+    _single("pixels' bottom-right corners", _at_first(lambda a, e, g: "you evaluated E at the "
+            f"pixels' bottom-right corners ({a[1] + 1}, {a[2] + 1}) … ({a[1] + a[3]}, "
+            f"{a[2] + a[3]}), from (x0 + 1, y0 + 1) on; the pixel centres lie ½ px left and up of "
+            "them; a block's first pixel centre lies at (x0 + ½, y0 + ½)"),
+            points="bottom-right corners"),
+    _single("offsets both ways", _offset_words(
+        "your offsets ±(size − 1)·(|A| + |B|) reach both ways from E₀, yet E₀ is E at the "
+        "block's first (top-left) centre, not its middle: E₀ + (size − 1)·(|A| + |B|) lies "
+        "above E's largest value over the block's centres where A or B is negative, and "
+        "E₀ − (size − 1)·(|A| + |B|) below its smallest where one is positive, so blocks to "
+        "accept or reject stay partial; from the first centre only the steps that raise E "
+        "count towards its largest value (A where A > 0, B where B > 0), only those that "
+        "lower it towards its smallest"), offsets="both ways"),
+]  # fmt: skip
+
+
+def _ccw_only(args, expected, got) -> bool:
+    """Is this case's triangle counter-clockwise on screen (y down), with area?"""
+    setup = setup_edges(np.asarray(args[0], dtype=float), SUBPIXEL_BITS)
+    return bool(setup.area2 != 0 and setup.perm[1] == 2)
+
+
+#: r198 B: the second winding handled by a test of its own (the reject test flipped, the
+#: accept test left as it was) was told only the rule, on one counter-clockwise case after
+#: another. A symptom: named only where every failing case is counter-clockwise and no
+#: mistake of the table (one winding only, culled, oriented the wrong way) gives them.
+CCW_ONLY = Mistake(
+    "counter-clockwise only",
+    "every case you fail is a triangle that runs counter-clockwise on screen (y pointing "
+    "down), and the clockwise ones pass: your code for that winding goes wrong. Orient the "
+    "triangle once (swap two vertices where its area is negative) so that its interior is "
+    "positive on every edge; then the same offsets, bias and two tests serve both windings",
+    fits=_ccw_only,
+    symptom=True,
+    only_whole=True,
+)
+
 #: r162: the sign tests' comparisons slipped (≤ for the reject test, > for the accept test)
 #: were told only the rule.
 SIGN_MISTAKES = [
@@ -855,13 +899,17 @@ BLOCK_HINTS = (
      ": which corner of the block is E's largest, for each sign of A and B?"),
     ("; E's largest value over the block's centres is E₀ + R with R ≥ 0, its smallest E₀ + T "
      "with T ≤ 0", "; can the largest value over the block be below E₀?"),
+    # r198 B: which steps count is the task's question
+    ("; from the first centre only the steps that raise E count towards its largest value (A "
+     "where A > 0, B where B > 0), only those that lower it towards its smallest",
+     "; from the first centre, which steps raise E and which lower it?"),
 )  # fmt: skip
 
 
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *map(_constant, KINDS), BLOCK_KNOBS],
+        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *map(_constant, KINDS), BLOCK_KNOBS, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
@@ -1088,6 +1136,11 @@ def _block_key(ax, want, marked: bool, below: bool = False) -> None:
               frameon=False)  # fmt: skip
 
 
+#: The widest grid (px) a failing case's panel shows whole; a wider one is zoomed on the block
+#: that differs (r198 C.1).
+SMALL_GRID = 32
+
+
 def draw_block_case(ax, case, got):
     """The snapped triangle over the grid's blocks, each tinted by the package's verdict, the
     first block that differs outlined (its four extreme centres once the hints are spent)."""
@@ -1133,9 +1186,13 @@ def draw_block_case(ax, case, got):
     hi = np.maximum(ring.max(axis=0), [gx.max() + size, gy.max() + size]) + 1
     if got is not None and wrong and size <= 64:
         # r149 E2: zoomed on the block that differs (a tie ½ px from its side could not be
-        # seen in the whole grid), with a margin of half a block
+        # seen in the whole grid), with a margin of half a block; r198 C.1: on the whole grid
+        # where it is small (the zoom cropped the blocks the title names, and their vertex)
         pad = max(3.0, size / 2)
         lo, hi = np.array([bx, by]) - pad, np.array([bx, by]) + size + pad
+        whole_lo, whole_hi = np.array([gx.min(), gy.min()]), np.array([gx.max(), gy.max()]) + size
+        if (whole_hi - whole_lo).max() <= SMALL_GRID:
+            lo, hi = whole_lo - pad, whole_hi + pad
     _block_key(ax, want, got is not None and wrong, below=got is None)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
