@@ -292,12 +292,16 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
         (study,) = [r for r in ns.rows if r["kind"] == kind and r["samples"] == 4]
         assert fixed["mean_error"] == study["mean_error"]
     assert "a fresh draw of samples for each pixel" not in flat
-    assert "§7's first chart measures something else" in flat and "one fixed draw of each" in flat
+    # review r194 9: said where §7's second chart is, not in §3's held text
+    assert "not the fresh draw per edge of §7's first chart" in flat
     assert "are each **one fixed draw** (`tr.sample_pattern(S, kind)`, seed 0)" in flat
     # q_fastest: the reasoning's means are in the question, the answer in neither
     (ask,) = [s for s in sources if "q_fastest = Predict(" in s]
     asked = " ".join(ask.split("answer=")[0].split()).replace('" "', "")
     assert "the edge crosses at most 2√S − 1 of the S cells" in asked
+    # review r194 6: the explanation counts the crossed cells as the stem does
+    told = " ".join(ask.split("explain=")[1].split()).replace('" "', "")
+    assert "of the order of √S (at most 2√S − 1)" in told and "the about √S" not in told
     # review r136 08-1 kept random's S^-1/2 out of the stem, as it gave "slowest" away; r147
     # #9 asks jittered's exponent, a number, and gives random's rate to scale it
     assert "coin tosses" not in asked and "S<sup>−1/2</sup> (the central limit" in asked
@@ -454,7 +458,9 @@ def test_lesson_08_review_r133_shading_ratio_msaa_inside_robust_fastest_and_less
     assert 1 < ratio < 4 and ns.shading_ratio == ratio
     printed = streams(executed("08_antialiasing").notebook())
     assert f"supersampling / MSAA: {ratio:.1f}× the shading work" in printed
-    assert f"the cell below prints {ratio:.1f}× for this triangle" in text
+    # review r194 9: the ratio quoted without "(the cell below prints ...)"
+    assert f"fewer at the edges: {ratio:.1f}× for this triangle" in text
+    assert "the cell below prints" not in text
     assert "up to $S$ times the shading work ($S$ times at every fully covered pixel" in text
     assert "$S$ times the shading work;" not in text and "($S\\times$ the shading)" not in text
     assert "(up to $S\\times$ the shading, §2)" in text

@@ -265,7 +265,8 @@ def test_08_q_fastest_notes_reason_right(monkeypatch):
         q.check.click()
         said[typed] = (q.correct, " ".join(q.feedback.value.split()))
     assert [said[t][0] for t in ("-0.5", "-1", "-1.5", "-0.75")] == [False, False, False, True]
-    assert "only in the about 2√S cells the edge crosses" in said["-0.5"][1]
+    # review r194 6: the count the stem gives ("at most 2√S − 1"), not "about 2√S"
+    assert "only in the at most 2√S − 1 cells the edge crosses" in said["-0.5"][1]
     minus_one = said["-1"][1]
     assert "a bounded number of samples are undecided" in minus_one
     assert "in one direction would give √S · 1/S = S<sup>−1/2</sup>" in minus_one

@@ -99,6 +99,8 @@ READABLE_PX = 300
 #: (``--jp-widgets-margin``, 2 px) on each side of a widget, so ``width="100%"`` made a slider
 #: 4 px wider than its box: the box scrolled sideways, cutting the widget's left edge, as soon
 #: as a value was typed into the readout (the TileExplorer's block slider; review r103 10-D).
+#: A figure's image wider than the column gets it as its largest width, for the same reason
+#: (the PixelInspector's box scrolled by 4 px at a 1280-px window; review r194).
 SLIDER_COLUMN_WIDTH = "calc(100% - 2 * var(--jp-widgets-margin, 2px))"
 
 

@@ -22,6 +22,7 @@ from matplotlib.text import Text
 
 from ..plotting.common import fs
 from ..plotting.frames import encode_png
+from .common import SLIDER_COLUMN_WIDTH
 
 BACKENDS = ("auto", "ipympl", "image")
 
@@ -173,8 +174,12 @@ class FigureDisplay:
             self.widget = fig.canvas
         else:
             width = int(round(fig.get_figwidth() * fig.dpi))
-            # natural size, but never wider than the notebook column (the image scales down)
-            layout = widgets.Layout(width=f"{width}px", max_width="100%", height="auto")
+            # natural size, but never wider than the notebook column (the image scales down):
+            # the column less ipywidgets' margin on each side, or a figure wider than the
+            # column overflowed its box by 4 px and scrolled (the PixelInspector at a
+            # 1280-px window, review r194)
+            layout = widgets.Layout(width=f"{width}px", max_width=SLIDER_COLUMN_WIDTH,
+                                    height="auto")  # fmt: skip
             self.widget = widgets.Image(format="png", layout=layout)
             self.widget.add_class("teachraster-figure")  # a handle for browser tests
         self.refresh()
