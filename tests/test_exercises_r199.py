@@ -239,3 +239,15 @@ def test_nearest_filtering_is_still_told_one_texel():
 
     said = _first(ex.check("bilinear", nearest))
     assert "nearest" in said, said
+
+
+# -- 10: the first cell's length ------------------------------------------------------------------
+def test_the_first_cell_is_short_and_the_rest_is_folded_after_the_setup():
+    cells = json.loads(NOTEBOOK.read_text())["cells"]
+    intro = "".join(cells[0]["source"])
+    assert len(intro.split()) < 250, len(intro.split())  # r199: 496 words before the first task
+    assert "Run All" in intro and "one at a time" in intro
+    held = cells[2]
+    assert "".join(held["source"]).startswith("### How the check works")
+    assert held["metadata"]["jupyter"]["source_hidden"]
+    assert "report.explain_pixel(row, col)" in "".join(held["source"])
