@@ -252,9 +252,10 @@ def test_a_stubs_failed_assertion_does_not_repeat_its_report():
 
 # -- 12-11, 12-13: what the text says of the figures, and its prose -------------------------------
 def test_the_tint_is_said_to_be_faint_where_the_panels_cannot_show_it():
-    assert "faintly" in _cell("12.7") and "too faint to tell in the panels" in _cell("12.7")
+    # r199 C2: the tint itself shows (lavender squares); only the ramps' directions do not
+    assert "too gentle to see in the panels" in _cell("12.7")
     assert "red growing along its columns" not in _cell("12.7")
-    assert "faintly" in _cell("12.10")
+    assert "faintly" not in _cell("12.7") and "faintly" not in _cell("12.10")
 
 
 def test_the_sky_rows_and_the_parentheses():

@@ -450,6 +450,24 @@ def _with_background(colours, ids, background):
     return np.where((ids >= 0)[:, None], colours, background)
 
 
+def _fixed_count(args, expected, got) -> float | None:
+    """N ≠ S where ``got`` is the samples (the uncovered ones as the background) summed and
+    divided by N, or None."""
+    colours, ids, background = args
+    total = _with_background(colours, ids, background).sum(axis=0)
+    try:
+        g = np.asarray(got, dtype=float).reshape(total.shape)
+    except (TypeError, ValueError):
+        return None
+    big = int(np.argmax(np.abs(total)))
+    if not np.isfinite(g).all() or total[big] == 0 or g[big] == 0:
+        return None
+    n = float(total[big] / g[big])
+    if n <= 1 + 1e-9 or abs(n - len(ids)) < 1e-9:  # 1: the sum, a mistake of its own
+        return None
+    return n if np.allclose(g * n, total, rtol=1e-9, atol=1e-12) else None
+
+
 RESOLVE_MISTAKES = [
     Mistake("covered only", _covered_words, gives=_covered_mean),
     Mistake("uncovered as black", _resolve_words("the uncovered samples count as the background "
@@ -481,6 +499,13 @@ RESOLVE_MISTAKES = [
             "uncovered ones too"),
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0) / (i >= 0).sum()
             if (i >= 0).any() else None),
+    # r199 12-9: `sum / 4` (the capstone's 4 samples) failed 6.2's cases of other S, asked
+    # about an uncovered share on a pixel whose samples were all covered
+    Mistake("fixed count", lambda a, e, g: f": you divided by {num(_fixed_count(a, e, g))} "
+            f"whatever the number of samples: this pixel has S = {len(a[1])}, and the mean "
+            "divides by the samples the pixel has (len(sample_ids))",
+            fits=lambda a, e, g: _fixed_count(a, e, g) is not None, parameter=_fixed_count,
+            only_whole=True),  # every failing answer: a max is one sum / 2 by chance
     # r163 12-9: a mean rounded to 8 bits, round(x·255)/255, was told to count the background
     EIGHT_BIT,
 ]  # fmt: skip
@@ -496,15 +521,29 @@ RESOLVE_HINT = (
     "; each sample stands for an equal share of the pixel: what does the pixel show in the "
     "share where no triangle covered the sample? Work this case's numbers through by hand"
 )
+#: The rule and its question where every sample is covered (r199 12-9: the question above was
+#: asked of a pixel with no uncovered share, of a sum over 3 or a median).
+RESOLVE_RULE_COVERED = "; every one of the S samples counts the same: (Σ colours) / S"
+RESOLVE_HINT_COVERED = (
+    "; every sample is covered here, each standing for an equal share of the pixel: what "
+    "does the pixel show? Work this case's numbers through by hand"
+)
+
+
+def _resolve_rule(args, expected, got) -> str:
+    """6.2's rule in the words that fit the case: with or without an uncovered share."""
+    return RESOLVE_RULE_COVERED if bool((np.asarray(args[1]) >= 0).all()) else RESOLVE_RULE
 
 
 def resolve_exercise(scene) -> Exercise:
     return Exercise(
         "resolve", resolve_cases, as_colour, same_colour, explain_resolve,
-        lambda args, e, g: RESOLVE_RULE, RESOLVE_MISTAKES,
+        _resolve_rule, RESOLVE_MISTAKES,
         answers=(PackageAnswer(Frame.resolve),), draw=draw_resolve_case, scene=scene,
-        hints=((RESOLVE_RULE, RESOLVE_HINT),), inputs_drawn=True,
-        once=((RESOLVE_RULE, "; as said for the first failing case"),),
+        hints=((RESOLVE_RULE, RESOLVE_HINT), (RESOLVE_RULE_COVERED, RESOLVE_HINT_COVERED)),
+        inputs_drawn=True,
+        once=((RESOLVE_RULE, "; as said for the first failing case"),
+              (RESOLVE_RULE_COVERED, "; as said for the first failing case")),
         example=2,  # one green sample on white: the background's share shows
     )  # fmt: skip
 

@@ -219,9 +219,9 @@ def count_try(frame) -> None:
     tries.hinted_check(NAME, repr(frame) if colour is None else np.asarray(colour).tobytes())
 
 
-def _answer(fn, depths, colours):
+def _answer(fn, depths, colours, background=BACKGROUND):
     try:
-        return as_rgba(fn(depths.copy(), colours.copy(), BACKGROUND.copy())), ""
+        return as_rgba(fn(depths.copy(), colours.copy(), background.copy())), ""
     except Exception as exc:  # noqa: BLE001 - a student's bug is reported, not raised
         from .running import last_line
 
@@ -235,7 +235,8 @@ def _mistake(fn, depths, colours, yours, ours) -> str:
         return ""
     here = variants(depths, colours, BACKGROUND)
     fits = [k for k, v in here.items() if np.allclose(v, yours, rtol=1e-6, atol=1e-6)]
-    if len(fits) > 1:
+    if fits:  # r199 12-5: one fit at a pixel of two fragments may be chance (sorted by alpha
+        # was told "increasing depth"): it must give the student's answers on STACKS too
         fits = run_checker(lambda: _fit_on_stacks(fn, fits), fits)
     if len(fits) == 1:
         return f"; the likely mistake: {MISTAKES[fits[0]]}"
@@ -245,10 +246,32 @@ def _mistake(fn, depths, colours, yours, ours) -> str:
                 "most 1 (did a weight start afresh at each fragment instead of carrying on "
                 "what the fragments in front leave?)")  # fmt: skip
     if run_checker(lambda: _constant(fn, yours), False):
+        if run_checker(lambda: _background_in_front(fn, yours), False):
+            return "; the likely mistake: " + BACKGROUND_IN_FRONT
         return (f"; the likely mistake: your a_buffer returns {vec(yours)} whatever the "
                 "fragments (a placeholder such as `return background` left in, or a `return` "
                 "reached too early?)")  # fmt: skip
     return ""
+
+
+#: r199 12-5: `over(result, colours[k])` (over's arguments swapped) and the background
+#: composited last, over the fragments, both return the opaque background everywhere; they
+#: were told "a placeholder left in"
+BACKGROUND_IN_FRONT = (
+    "the background ends in front of the fragments, and being opaque it hides them all: "
+    "over(src, dst) lays src over dst, so the fragment is src and what lies behind it is dst "
+    "(over's two arguments swapped, or the background laid last, over the fragments?)"
+)
+
+
+def _background_in_front(fn, yours) -> bool:
+    """Whether ``fn``, which gives ``yours`` on every stack over the opaque background, shows
+    its fragments over a clear one: the background laid over them, not a placeholder (which
+    gives ``yours``, or the clear background, there too)."""
+    depths, colours = STACKS[0]
+    clear = np.zeros(4)
+    got, error = _answer(fn, np.array(depths, float), np.array(colours, float), clear)
+    return not error and not (np.allclose(got, clear) or np.allclose(got, yours))
 
 
 def _constant(fn, yours) -> bool:

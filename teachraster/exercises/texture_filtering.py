@@ -26,7 +26,7 @@ from .answers import as_numbers
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
-from .tolerance import all_close
+from .tolerance import TOL, all_close
 
 
 class Pyramid(list):
@@ -69,7 +69,7 @@ ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1)}
 
 
 def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=False,
-                   wrap_as=None, clamp=None, transpose=False):  # fmt: skip
+                   wrap_as=None, clamp=None, transpose=False, flip=False):  # fmt: skip
     """A bilinear filter with knobs for the usual mistakes (the defaults are GL's LINEAR).
 
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
@@ -79,7 +79,7 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     wraps with another mode whatever the case says (clamping x and y to the texel centres
     first is the same as ``wrap_as="clamp"``); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
     ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels;
-    ``transpose`` swaps the texture's rows and columns.
+    ``transpose`` swaps the texture's rows and columns; ``flip`` takes 1 − v for v.
     """
     tex = np.asarray(texture, dtype=float)
     if transpose:
@@ -87,6 +87,8 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     h, w = tex.shape[:2]
     centre, span = ORIGINS[origin]
     u, v = np.clip(uv, 0.0, 1.0) if clamp == "uv" else np.asarray(uv, dtype=float)
+    if flip:
+        v = 1.0 - v
     if clamp == "mod":  # (u, v) wrapped into [0, 1) first, the texels then clamped
         u, v = np.mod(u, 1.0), np.mod(v, 1.0)
         wrap_as = "clamp"
@@ -246,6 +248,10 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
                        f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
                        "texture[row, col] is texture[y, x]", True)],
+    # r199 12-7: (1 − v)·H − ½ was told "one of the four texels alone", though it blends
+    "flip": [Slip("v flipped", "you flipped v (1 − v): the texture's row 0 lies at v = 0, "
+                  "y = v·H − ½ (GL's first row of texel data is at t = 0), so the filter "
+                  "takes v as it comes", True)],
 })  # fmt: skip
 
 
@@ -261,7 +267,20 @@ def _one_texel(args, expected, got) -> bool:
     x0, y0 = int(np.floor(uv[0] * w - 0.5)), int(np.floor(uv[1] * h - 0.5))
     index = (lambda i, n: i % n) if wrap == "repeat" else (lambda i, n: min(max(i, 0), n - 1))
     texels = [tex[index(r, h), index(c, w)] for r in (y0, y0 + 1) for c in (x0, x0 + 1)]
-    return not all_close(got, expected) and any(all_close(got, t) for t in texels)
+    return not all_close(got, expected) and (
+        any(all_close(got, t) for t in texels) or _some_texel(tex, got)
+    )
+
+
+def _some_texel(tex: np.ndarray, got) -> bool:
+    """Is ``got`` one texel of ``tex``, anywhere (a nearest filter that wraps the wrong way
+    picks one beyond the four around (u, v): r199, the symptom must fit every failing case)?"""
+    g = np.asarray(got, dtype=float)
+    flat = tex.reshape(tex.shape[0] * tex.shape[1], -1)
+    if g.size != flat.shape[1] or len(flat) > 4096:  # the exercise's textures are small
+        return False
+    scale = np.maximum(1.0, np.maximum(np.abs(flat), np.abs(g.reshape(1, -1))))
+    return bool((np.abs(flat - g.reshape(1, -1)) <= TOL * scale).all(axis=1).any())
 
 
 def _one_texel_words(args, expected, got) -> str:
@@ -275,6 +294,11 @@ def _one_texel_words(args, expected, got) -> str:
     cols = {int(np.floor(fx)), int(np.ceil(fx)) - 1}
     if any(all_close(got, tex[index(r, h), index(c, w)]) for r in rows for c in cols):
         return ": that is one texel alone, nearest filtering; bilinear blends the four texels around (u, v)"
+    x0, y0 = int(np.floor(fx - 0.5)), int(np.floor(fy - 0.5))
+    if not any(all_close(got, tex[index(r, h), index(c, w)])
+               for r in (y0, y0 + 1) for c in (x0, x0 + 1)):  # fmt: skip
+        return (": that is one texel alone, and none of the four around (u, v): are the "
+                f"indices wrapped as wrap {wrap!r} says? Bilinear blends those four")  # fmt: skip
     return (": that is one of the four texels around (u, v) alone, not the one (u, v) lies in; "
             "bilinear blends all four, each weighted by how close (u, v) lies to it")  # fmt: skip
 
@@ -286,8 +310,12 @@ BILINEAR_MISTAKES = [
             "placeholder left in?", gives=lambda tex, uv, wrap: np.asarray(tex, float)[0, 0]),
     Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
             "around (u, v)", gives=_nearest),
-    # a symptom: a texel alone is also what swapped weights give at a texel centre (r40 07-1)
-    Mistake("one texel", _one_texel_words, fits=_one_texel, symptom=True),
+    # a symptom: a texel alone is also what swapped weights give at a texel centre (r40 07-1),
+    # and what any blend gives where its (misplaced) sample lies on a texel centre: named only
+    # where every failing answer is a texel alone (r199 12-7: a flipped v and a filter along x
+    # only were told "one texel alone", each on the one case where it was)
+    Mistake("one texel", _one_texel_words, fits=_one_texel, symptom=True,
+            must_fit=lambda args, expected, got: True),
     BILINEAR_KNOBS,
 ]  # fmt: skip
 

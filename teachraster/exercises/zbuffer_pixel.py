@@ -152,7 +152,16 @@ DEPTH_MISTAKES = [
     Mistake("farther passes", "you let the farther fragment pass (>, not <): smaller depth "
             "is nearer, and a fragment passes when it is strictly nearer than the depth the "
             "buffer holds", gives=lambda d, w: _simulate(-np.asarray(d, dtype=float), w)),
-    Mistake("all pass", "your function lets every fragment pass, always",
+    # r199 12-4: `[k == 0 for k ...]` was told ">, not <", which gives the same at a pixel of
+    # three fragments; this one gives it on every sequence
+    Mistake("first only", "only the first fragment passes in your answer, whatever the depths: "
+            "a later fragment passes too when it is strictly nearer than the depth the buffer "
+            "holds (does your test ask whether the buffer is empty, not whether the fragment "
+            "is nearer?)", gives=lambda d, w: np.arange(len(d)) == 0),
+    # r199: "lets every fragment pass" said what, not why: a buffer never written does so
+    Mistake("all pass", "your function lets every fragment pass, always (does the buffer ever "
+            "take a depth? A fragment that passes and writes must store its depth, so that "
+            "later ones are tested against it)",
             gives=lambda d, w: np.ones(len(d), dtype=bool)),
     # r85 04: a buffer started at 0 was told only its symptom ("lets no fragment pass,
     # ever"); its answers are a placeholder's all False (no depth lies below 0), so both
