@@ -327,7 +327,7 @@ def test_lesson_08_review_r108_fixed_draws_fastest_reasoned_and_figures(ns):
         for (ox, oy), k in zip(ns.pierced[4].samples, ids[r, col]):
             assert (a * (col + ox) + b * (r + oy) + c < 0) == (k == 0)  # red nearer: red
     assert np.allclose(a * ns.meet_x + b * ns.meet_y + c, 0)
-    assert "The lower panels magnify the dashed window" in flat
+    assert "The right-hand panels magnify the dashed window" in flat  # r202: one row per S
     # 08-5: no sample of the 4-sample pattern near the pixel centre, where the label is now
     assert np.hypot(*(tr.sample_pattern(4) - 0.5).T).min() > 0.35
     assert any("ax.text(c + 0.5, r + 0.5," in s for s in sources)
