@@ -622,7 +622,8 @@ def test_01_r196_figure_text_and_plumbing():
     text = ["".join(c["source"]) for c in cells]
     figure = next(t for t in text if t.startswith("# After Ek's §1.1: the two similar"))
     assert "Ek's Figure 1" not in figure and "(after Ek §1.1)" in figure
-    assert "Δv_{name}/Δu_{name} = {dv / du:g}" in figure and "Arc(" in figure
+    # r203: the shared angle a filled wedge at the vertex (a thin arc read as a bar)
+    assert "Δv_{name}/Δu_{name} = {dv / du:g}" in figure and "Wedge((u_top, v_top), 2.5" in figure
     assert 'hatch="//"' in figure  # the small triangle an outline over the large one
     md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
     assert md.count("Ek's Figure 1") == 1 and "flat triangles (Ek's Figure 1)" in md
