@@ -735,10 +735,10 @@ MISTAKES = {
     "plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z could reject); "
     "which is the first column whose centre lies inside the box?",
     "box outward": "you rounded the box outward (⌊xmin − ½⌋ … ⌈xmax − ½⌉: floor and ceil "
-    "swapped?): your first and last columns (rows) are the ones just outside the box, whose "
-    "centres lie beyond it, where no fragment can be, and here the plane is nearest there (a "
-    "safe bound, but looser: it keeps blocks Hi-Z could reject); which columns have their "
-    "centre c + ½ between xmin and xmax?",
+    "swapped?): where the box does not start or end exactly on a pixel centre, your columns "
+    "(rows) reach one past it there, to a centre outside the box, where no fragment can be, "
+    "and here the plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z "
+    "could reject); which columns have their centre c + ½ between xmin and xmax?",
     "half shifted": "you took the box's ½ the wrong way (⌈xmin + ½⌉ … ⌊xmax + ½⌋?): column c "
     "has its centre at c + ½, so your columns (and rows) start and end one past the box's own: "
     "you leave out its first column, where a fragment can lie, and take one beyond it, where "
@@ -776,9 +776,8 @@ MISTAKES = {
     "block is hidden only if even its nearest fragment is, so take the plane's smallest "
     "value there",
     "corner mean": "you took the mean of the plane's values at the box's extreme centres: "
-    "fragments at the centre where the plane is smallest lie nearer than that mean, and the "
-    "block is hidden only if even its nearest fragment is, so take the plane's smallest "
-    "value there",
+    "the plane's smallest value there lies nearer than that mean, and the block is hidden "
+    "only if even its nearest fragment is, so take the plane's smallest value there",
     "tile middle": "you took the plane at the tile's middle: that is its mean over the tile, "
     "and fragments elsewhere in the tile lie nearer: the block is hidden only if even its "
     "nearest fragment is (where in the tile is the plane nearest?)",
