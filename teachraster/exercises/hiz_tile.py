@@ -459,6 +459,9 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r173 M1: one column (row) before the box's first, ⌈xmin − ½⌉ − 1 (was told "the
             # tile's outer corners", which gives the same verdicts on every case)
             "one before": bool(_cut_bound(xyz, row0, col0, size, border="before") >= far),
+            # r206 M1: the box rounded outward (⌊xmin − ½⌋ … ⌈xmax − ½⌉, floor and ceil swapped)
+            # was told "the tile's outer corners": a column (row) outside the box at both ends
+            "box outward": bool(_cut_bound(xyz, row0, col0, size, border="outward") >= far),
             # r173: three answers told the rule only: the box's ½ taken the wrong way
             # (⌈xmin + ½⌉ … ⌊xmax + ½⌋), the tile one column short (col0 + size − 2), and
             # lesson 10's bound without the nearest vertex
@@ -479,6 +482,11 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
             "plane farthest": bool(box is None or plane_at(xyz, rows, cols).max() >= far),
+            # r206 M2: the mean of the plane at the box's four extreme centres was told "the
+            # plane's largest value at the corners"
+            "corner mean": bool(
+                box is None or max(_bare_plane(xyz, rows, cols).mean(), zmin) >= far
+            ),
             # r114 D8-3: the plane at the tile's middle (the mean of the extreme centres') was
             # told "the plane's largest value at the corners"
             "tile middle": bool(max(_bare_plane(xyz, mid_r, mid_c), zmin) >= far),
@@ -516,10 +524,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     kept on ``border``'s sides ("both"; "high": the right and bottom only, as ⌊xmin + ½⌋
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
     "trunc": ``int(xmax − ½)``, truncated toward 0; "before": one more on the low side,
-    ⌈xmin − ½⌉ − 1; "shifted": the ½ the wrong way, ⌈xmin + ½⌉ … ⌊xmax + ½⌋). +inf where the tile and the box share
+    ⌈xmin − ½⌉ − 1; "shifted": the ½ the wrong way, ⌈xmin + ½⌉ … ⌊xmax + ½⌋; "outward": floor
+    and ceil swapped, ⌊xmin − ½⌋ … ⌈xmax − ½⌉). +inf where the tile and the box share
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
-    judged = border in ("past", "trunc", "int", "before", "shifted") or past_tile
+    judged = border in ("past", "trunc", "int", "before", "shifted", "outward") or past_tile
     if not judged and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (the others judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
@@ -530,9 +539,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         a = int(lo + 0.5) if border == "int" else a
         a = a - 1 if border == "before" else a
         a = int(np.ceil(lo + 0.5)) if border == "shifted" else a
+        a = int(np.floor(lo - 0.5)) if border == "outward" else a
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
              "trunc": int(hi - 0.5), "int": int(hi - 0.5),
-             "shifted": int(np.floor(hi + 0.5))}.get(border, int(np.floor(hi - 0.5)))  # fmt: skip
+             "shifted": int(np.floor(hi + 0.5)), "outward": int(np.ceil(hi - 0.5))}.get(
+            border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
         elif "xy"[axis] in cut:
@@ -635,12 +646,14 @@ def _tile_outer_bound(xyz, row0, col0, size) -> float:
 
 def _box_outer_bound(xyz, row0, col0, size) -> float:
     """The plane at the box's corners kept within the tile's outer corners (an empty box
-    rejected, as the task's)."""
-    if _box_corners(xyz, row0, col0, size) is None:
-        return np.inf
+    rejected where the box kept so is empty: r206, the reader's w13 keeps a box beside the
+    tile's last centres, as this code does; the task's emptiness test told it otherwise on
+    five cases and it fell to words of the nearest vertex)."""
     lo, hi = xyz[:, :2].min(axis=0), xyz[:, :2].max(axis=0)
     xs = np.clip([lo[0], hi[0]], col0, col0 + size)
     ys = np.clip([lo[1], hi[1]], row0, row0 + size)
+    if lo[0] > col0 + size or hi[0] < col0 or lo[1] > row0 + size or hi[1] < row0:
+        return np.inf
     plane = _bare_plane(xyz, ys[None, :] - 0.5, xs[:, None] - 0.5)
     return max(float(plane.min()), float(xyz[:, 2].min()))
 
@@ -721,6 +734,11 @@ MISTAKES = {
     "centre lies left of (or above) the bounding box, where no fragment can be, and here the "
     "plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z could reject); "
     "which is the first column whose centre lies inside the box?",
+    "box outward": "you rounded the box outward (⌊xmin − ½⌋ … ⌈xmax − ½⌉: floor and ceil "
+    "swapped?): where the box does not start or end exactly on a pixel centre, your columns "
+    "(rows) reach one past it there, to a centre outside the box, where no fragment can be, "
+    "and here the plane is nearest there (a safe bound, but looser: it keeps blocks Hi-Z "
+    "could reject); which columns have their centre c + ½ between xmin and xmax?",
     "half shifted": "you took the box's ½ the wrong way (⌈xmin + ½⌉ … ⌊xmax + ½⌋?): column c "
     "has its centre at c + ½, so your columns (and rows) start and end one past the box's own: "
     "you leave out its first column, where a fragment can lie, and take one beyond it, where "
@@ -757,6 +775,9 @@ MISTAKES = {
     "plane farthest": "you took the plane's largest value at the corners, its farthest: the "
     "block is hidden only if even its nearest fragment is, so take the plane's smallest "
     "value there",
+    "corner mean": "you took the mean of the plane's values at the box's extreme centres: "
+    "the plane's smallest value there lies nearer than that mean, and the block is hidden "
+    "only if even its nearest fragment is, so take the plane's smallest value there",
     "tile middle": "you took the plane at the tile's middle: that is its mean over the tile, "
     "and fragments elsewhere in the tile lie nearer: the block is hidden only if even its "
     "nearest fragment is (where in the tile is the plane nearest?)",
@@ -853,6 +874,15 @@ MISTAKES["one past the tile"] = (
 #: it gives every answer of the check (a box-corner bound that also keeps empty boxes was told
 #: "you took lesson 10's bound", the same 0.300 there, though it rejects where lesson 10's keeps)
 ONLY_WHOLE = ("whole tile", "whole tile, bare")
+#: r206 M1, M2 (issue 30): the words of these say *where* the plane was evaluated or *which*
+#: of its values was taken; a bool answer shares its verdicts with many other bounds, and
+#: "every failing answer" let a box rounded outward be told "the tile's outer corners" (it
+#: contradicted 8 passing answers) and the corners' mean "the plane's largest value" (2): named
+#: only where the mistake gives every answer of the check, passing ones included
+EXACT = (
+    "outer corners", "tile outer corners", "box in outer corners", "box outward",
+    "plane farthest", "corner mean", "tile middle",
+)  # fmt: skip
 
 
 #: How close (relative) the nearest depth and the farthest stored one must be for float32's
@@ -1154,7 +1184,7 @@ HIZ_HINTS = (
 
 HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
-    [replace(m, only_whole=True) if m.kind in ONLY_WHOLE else m
+    [replace(m, only_whole=True) if m.kind in ONLY_WHOLE + EXACT else m
      for m in variant_mistakes(_variants, MISTAKES, (FLOAT32,))],
     draw=draw_hiz, hints=HIZ_HINTS,
     # r94 D8-6: a bool answer agrees with many mistakes on any one case: "use ≥" was said to
