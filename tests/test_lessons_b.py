@@ -3497,7 +3497,7 @@ def test_10_r189_items():
 
     assert value_text(-61.86) == "-61.9" and value_text(-81.04) == "-81"
     # r201 m1: the 129-px box llvmpipe steps in 32 bits is safe by the area bound
-    assert "(256 · 129)² = 1,090,584,576 units² < 2^31 = 2,147,483,648" in printed
+    assert "(256 · 129)² = 1,090,584,576 units²\n    < 2^31 = 2,147,483,648" in printed
     assert "129-px box that passes is still safe" in " ".join(md.split())
     assert asked.splitlines()[0].endswith("behind it.") and len(asked.splitlines()[0]) <= 80
     # 10-5: the long paragraphs' second halves folded
