@@ -35,15 +35,21 @@ def _cell(grade_id: str) -> str:
     return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
 
 
-def _variant(*edits: tuple[str, str]):
-    """The notebook's classify_block with each (old, new) edit made once (a student's slip)."""
-    source = _cell("classify_block_solution")
+def _solution_with(cell: str, name: str, edits) -> object:
+    """Function ``name`` of the notebook's solution cell ``cell``, each (old, new) edit made
+    once (a student's slip)."""
+    source = _cell(cell)
     for old, new in edits:
         assert source.count(old) == 1, old
         source = source.replace(old, new)
     ns = {"np": np}
     exec(source, ns)
-    return ns["classify_block"]
+    return ns[name]
+
+
+def _variant(*edits: tuple[str, str]):
+    """The notebook's classify_block with each (old, new) edit made once (a student's slip)."""
+    return _solution_with("classify_block_solution", "classify_block", edits)
 
 
 RETURN = 'np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))'
@@ -120,12 +126,16 @@ def test_m1_a_reversed_shape_is_called_transposed_by_the_shared_reader():
 @pytest.mark.parametrize("name", list(SLIPS))
 def test_b_the_slips_once_told_the_rule_are_named(name, words, request):
     request.getfixturevalue(words)
-    fn, kind = SLIPS[name]
-    report = ex.check("classify_block", fn, budget=120)
+    _every_failure_named("classify_block", *SLIPS[name], RULE_WORDS)
+
+
+def _every_failure_named(check: str, fn, kind: str, general: tuple) -> None:
+    """Every failure of ``fn`` under ``check`` has ``kind`` and none of the ``general`` words."""
+    report = ex.check(check, fn, budget=120)
     assert report.failures
     for f in report.failures:
         assert f.kind == kind, (f.case, f.kind, f.explanation)
-        assert not any(w in f.explanation for w in RULE_WORDS), f.explanation
+        assert not any(w in f.explanation for w in general), f.explanation
 
 
 def test_b_the_first_try_asks_what_the_full_words_say(first_words):  # noqa: F811
@@ -251,13 +261,7 @@ def test_d4_snapping_changes_no_cases_box_as_82_says():
 
 def _hiz_variant(*edits: tuple[str, str]):
     """The notebook's hiz_rejects with each (old, new) edit made once."""
-    source = _cell("hiz_rejects_solution")
-    for old, new in edits:
-        assert source.count(old) == 1, old
-        source = source.replace(old, new)
-    ns = {"np": np}
-    exec(source, ns)
-    return ns["hiz_rejects"]
+    return _solution_with("hiz_rejects_solution", "hiz_rejects", edits)
 
 
 HIZ_SLIPS = {
@@ -284,12 +288,8 @@ HIZ_SLIPS = {
 @pytest.mark.parametrize("name", list(HIZ_SLIPS))
 def test_b_82_slips_once_told_the_rule_are_named(name, words, request):
     request.getfixturevalue(words)
-    fn, kind = HIZ_SLIPS[name]
-    report = ex.check("hiz_rejects", fn, budget=120)
-    assert report.failures
-    for f in report.failures:
-        assert f.kind == kind, (f.case, f.kind, f.explanation)
-        assert "The block is rejected when the task's lower bound" not in f.explanation
+    general = ("The block is rejected when the task's lower bound",)
+    _every_failure_named("hiz_rejects", *HIZ_SLIPS[name], general)
 
 
 def test_b_82_the_sign_words_quote_a_vertex_the_plane_misses(full_words):  # noqa: F811

@@ -5,25 +5,15 @@ tests/test_capstone_r174.py's.)"""
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import numpy as np
 import reasoning_solutions as sol
+from test_capstone_r174 import NOTEBOOK, _cell
 
 from teachraster import exercises as ex
 from teachraster.exercises import antialiasing, capstone_explain, capstone_glass, tries
 from teachraster.exercises.capstone_render import SCENES
 from teachraster.pipeline.visibility.zbuffer import passed_on_arrival
-
-NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/12_capstone.ipynb"
-
-
-def _cell(heading: str) -> str:
-    for cell in json.loads(NOTEBOOK.read_text())["cells"]:
-        text = "".join(cell["source"])
-        if text.startswith(f"## {heading} "):
-            return text
-    raise AssertionError(f"no cell under ## {heading}")
 
 
 def _first(report) -> str:
