@@ -376,7 +376,10 @@ class FrameInspector(Holdable):
                 )
         self.beside = widgets.Checkbox(value=bool(self.pairs), description="its pair beside",
                                        indent=False, layout=widgets.Layout(width="auto"))  # fmt: skip
-        self.table = widgets.HTML()
+        # the table scrolls sideways in its own box where the column is narrower than its
+        # lines (a 315-px column at 1024 x 768 and 150 %): its content is as wide as its
+        # longest line, and without this the whole widget scrolled
+        self.table = widgets.HTML(layout=widgets.Layout(overflow="auto hidden", max_width="100%"))
         self._render()
         with style_context(style):
             self.fig = new_figure((5.0, 3.9), self.backend)  # sized by _fit_figure
