@@ -62,13 +62,15 @@ def plane_at(xyz: np.ndarray, rows, cols, clamp: bool = True) -> np.ndarray:
     return _bare_plane(xyz, rows, cols)
 
 
-def _bare_plane(xyz, rows, cols):
-    """The plane through the three vertices at pixel centres, in the arrays' own precision."""
+def _bare_plane(xyz, rows, cols, at: float = 0.5, signs=(1, 1)):
+    """The plane through the three vertices at (cols + ``at``, rows + ``at``), the pixel
+    centres by default, in the arrays' own precision; ``signs`` multiply its gradient's
+    components (a student's slip in solving for it, r198 B)."""
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
-    a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
-    b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-    half = np.asarray(0.5, dtype=np.asarray(xyz).dtype)
+    a = signs[0] * ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+    b = signs[1] * ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    half = np.asarray(at, dtype=np.asarray(xyz).dtype)
     return z1 + a * (cols + half - x1) + b * (rows + half - y1)
 
 
@@ -577,21 +579,13 @@ def _box_buffer_far(xyz, row0, col0, size, buffer) -> float:
     )
 
 
-def _slipped_plane(xyz, rows, cols, at: float = 0.5, signs=(1, 1)):
-    """The plane at (c + ``at``, r + ``at``), its gradient's components times ``signs``."""
-    (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
-    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
-    a = signs[0] * ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
-    b = signs[1] * ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
-    return z1 + a * (np.asarray(cols) + at - x1) + b * (np.asarray(rows) + at - y1)
-
-
 def _slipped_bound(xyz, box, at: float = 0.5, signs=(1, 1)) -> float:
     """The task's bound over the box's extreme centres (+inf: none) with the plane slipped
-    (:func:`_slipped_plane`), no nearer than the nearest vertex."""
+    (:func:`_bare_plane`'s ``at`` and ``signs``), no nearer than the nearest vertex."""
     if box is None:
         return np.inf
-    low = float(_slipped_plane(xyz, *box, at=at, signs=signs).min())
+    rows, cols = (np.asarray(v) for v in box)
+    low = float(_bare_plane(np.asarray(xyz, dtype=float), rows, cols, at, signs).min())
     return max(low, float(np.asarray(xyz, dtype=float)[:, 2].min()))
 
 
@@ -601,7 +595,7 @@ def _sign_words(axis: str, k: int):
     def words(args, expected, got):
         xyz = np.asarray(args[0], dtype=float)
         signs = (-1, 1) if k == 0 else (1, -1)
-        z = _slipped_plane(xyz, xyz[:, 1] - 0.5, xyz[:, 0] - 0.5, signs=signs)
+        z = _bare_plane(xyz, xyz[:, 1] - 0.5, xyz[:, 0] - 0.5, signs=signs)
         j = int(np.argmax(np.abs(z - xyz[:, 2])))
         return (
             f"your plane's dz/d{axis} has the wrong sign (a slip in solving for it?): that "

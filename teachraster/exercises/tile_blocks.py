@@ -155,6 +155,13 @@ def _passes(e, tie: str, setup, k: int, d) -> np.ndarray:
     return passes(e, _owns(tie, setup, k, d))
 
 
+def _oriented(xy):
+    """The triangle's edge set-up on the 1/256 grid, and whether it runs counter-clockwise on
+    screen (y down: the set-up re-ordered its vertices)."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    return setup, bool(setup.perm[1] == 2)
+
+
 def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="top-left", orient=True, logic="per edge"):  # fmt: skip
     """classify_block with the usual mistakes as knobs (the defaults are the right answer).
 
@@ -178,8 +185,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     gx, gy = grid_of(x0, y0)
     scalar, shape = gx.ndim == 0, gx.shape
     px, py, d = POINTS[points](gx.ravel(), gy.ravel(), size)
-    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
-    ccw = bool(setup.perm[1] == 2)  # re-ordered: counter-clockwise on screen
+    setup, ccw = _oriented(xy)
     if (setup.area2 == 0 and orient != "unchecked") or (orient == "cull" and ccw):
         return _verdicts(np.ones(shape, bool), False, shape, scalar)
     if logic == "inside":
@@ -788,8 +794,8 @@ OFFSET_SINGLES = [
 
 def _ccw_only(args, expected, got) -> bool:
     """Is this case's triangle counter-clockwise on screen (y down), with area?"""
-    setup = setup_edges(np.asarray(args[0], dtype=float), SUBPIXEL_BITS)
-    return bool(setup.area2 != 0 and setup.perm[1] == 2)
+    setup, ccw = _oriented(args[0])
+    return bool(setup.area2 != 0 and ccw)
 
 
 #: r198 B: the second winding handled by a test of its own (the reject test flipped, the

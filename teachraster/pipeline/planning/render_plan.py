@@ -192,7 +192,7 @@ def multisampling_effect(n_samples: int, n_per_sample: int, covered: int, forced
     return Effect("multisampling", True, n_per_sample, covered, "pixels", why, forced)
 
 
-def _count(n: int, noun: str) -> str:
+def count_words(n: int, noun: str) -> str:
     """``n`` and ``noun``, plural unless ``n`` is 1: "21 helper pixels", "1 helper pixel"."""
     return f"{n:,} {noun}{'' if n == 1 else 's'}"
 
@@ -213,12 +213,12 @@ def derivatives_effect(
         why = "not asked (derivatives=False): no quads evaluated"
     else:
         why = (
-            f"{mode} differences in {_count(n_quads, '2x2 quad shading')} (a quad is shaded "
-            f"once per triangle it touches), {_count(n_helpers, 'helper pixel')} evaluated on "
+            f"{mode} differences in {count_words(n_quads, '2x2 quad shading')} (a quad is shaded "
+            f"once per triangle it touches), {count_words(n_helpers, 'helper pixel')} evaluated on "
             "their triangle's extrapolated interpolation"
         )
         if n_fallback:
-            why += f"; {_count(n_fallback, 'pixel')} avoided a helper beyond the horizon"
+            why += f"; {count_words(n_fallback, 'pixel')} avoided a helper beyond the horizon"
         if forced:
             why = "at every visible pixel; " + why
     ran = mode is not None and n_pixels > 0

@@ -18,7 +18,7 @@ from ...core.validate import check_choice
 from ..geometry.camera import Camera
 from ..planning.inputs import check_force, check_size
 from ..planning.overrides import check_overrides, rule
-from ..planning.render_plan import Effect, Plan
+from ..planning.render_plan import Effect, Plan, count_words
 from ..texturing.quad_derivatives import may_minify
 from ..texturing.texture import TEXTURE_FILTERS, sample
 from ..texturing.texture_filters import MIPMAP_FILTERS
@@ -227,7 +227,7 @@ def _derivatives_why(effects, scene, texture_filter, kwargs):
         n = int(where.sum())
         why = (
             f"texture_filter={texture_filter!r} uses mipmaps; the texture may be minified on "
-            f"{n} of {len(where)} triangle{'' if len(where) == 1 else 's'}"
+            f"{n} of {count_words(len(where), 'triangle')}"
             + ("" if n else ": magnified everywhere, level 0 without derivatives")
         )
     else:
