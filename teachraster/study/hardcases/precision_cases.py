@@ -72,6 +72,16 @@ def fill_window(xy, f, row0: int, col0: int, size: int, method: str):
     return cov, values
 
 
+def _offset_words(o: int) -> str:
+    """An offset of the far case as the lessons write it: "the origin", "1e5 px" (not 100000
+    beside 1e+06).
+
+    >>> _offset_words(0), _offset_words(10_000), _offset_words(1_000_000)
+    ('the origin', '1e4 px', '1e6 px')
+    """
+    return "the origin" if o == 0 else f"{o:.0e} px".replace("e+0", "e")
+
+
 def _far_case():
     local = np.array([[0.5, 0.5], [13.25, 3.5], [4.75, 11.5]])  # ties on centres
     f = np.array([0.1, 7.3, -2.9])
@@ -116,9 +126,10 @@ def _far_case():
         if not (diffs[100_000] and diffs[far]) or plane_err <= 1e-9:
             return None
         return (
-            "naive float32 absolute edge functions get "
-            + ", ".join(f"{n} pixel(s) wrong at {o:g}" for o, n in diffs.items())
-            + f"; the float64 absolute plane equation is off by {plane_err:.2g} at {far:g}"
+            "naive float32 absolute edge functions get pixels wrong: "
+            + ", ".join(f"{n} at {_offset_words(o)}" for o, n in diffs.items())
+            + f"; the float64 absolute plane equation is off by {plane_err:.2g} at "
+            + _offset_words(far)
         )
 
     add_case(
