@@ -936,11 +936,14 @@ def test_04_ritschel_equals_ek_and_the_midpoint_answer():
 
 
 @pytest.mark.notebook
-@pytest.mark.parametrize("name", ["00_tour", "04_perspective_correct_interpolation"])
+@pytest.mark.parametrize(
+    "name", ["00_tour", "04_perspective_correct_interpolation", "07_hard_cases"]
+)
 def test_every_printed_line_fits_a_column(name):
-    """Reviews r23 (00) and r24 (04 cells 5, 17, 20, 23: lines of 85-141 characters): every
-    line a lesson prints fits a notebook column at 1024 px (80 characters; 75 show unwrapped
-    in JupyterLab's 592-px column)."""
+    """Reviews r23 (00), r24 (04 cells 5, 17, 20, 23: lines of 85-141 characters) and r210
+    (07: a line the browser wrapped inside a number): every line a lesson prints fits a
+    notebook column at 1024 px (80 characters; 75 show unwrapped in JupyterLab's 592-px
+    column)."""
     from notebook_runs import executed
 
     for cell in executed(name).notebook().cells:

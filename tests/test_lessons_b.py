@@ -1350,8 +1350,9 @@ def _far_coverage(absolute, dtype):
         if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
             xy = xy[[0, 2, 1]]
         xy = xy.astype(dtype)
-        x, y = (g.astype(dtype) for g in np.meshgrid(origin[0] + np.arange(width) + 0.5,
-                                                     origin[1] + np.arange(height) + 0.5))  # fmt: skip
+        # origin = (row, col), as my_coverage and exercise 10.1's robust_fill take it
+        x, y = (g.astype(dtype) for g in np.meshgrid(origin[1] + np.arange(width) + 0.5,
+                                                     origin[0] + np.arange(height) + 0.5))  # fmt: skip
         inside = np.ones((height, width), dtype=bool)
         for p, q in zip(xy, np.roll(xy, -1, axis=0)):
             if absolute:  # E = Ax + By + C, C = x_p y_q - y_p x_q
@@ -1571,6 +1572,93 @@ def test_07_review_r145_picker_methods_and_subpixel_view():
         assert picker.methods_differ == 0 and "the same pixels" in picker.info.value
     finally:
         picker.close()
+
+
+def _07_sources() -> list[str]:
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    return ["".join(c["source"]) for c in nb["cells"]]
+
+
+def test_07_review_r210_outline_centres_whole_count_and_origin_order():
+    """Review r210 07-1: q_gaps asks for centres strictly inside the outline A-D-B-C; the two
+    centres exactly on it ((11, 8) on BC, a right edge, left white; (8, 1) on CA, a left edge,
+    drawn) are printed and named in the explanation. 07-2: q_fan takes whole numbers only.
+    07-6: my_coverage takes origin as (row, col), exercise 10.1's order. 07-7: the intro names
+    the depth cases' one method, "batch"."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    assert ns.on_outline == [([11, 8], "BC", "right", False), ([8, 1], "CA", "left", True)]
+    assert not any(ns.gap_answer[r, c] for (r, c), *_ in ns.on_outline)
+    cells = _07_sources()
+    (gaps,) = [c for c in cells if "q_gaps = PredictPixels(" in c]
+    asked = " ".join(gaps.split("q_gaps = PredictPixels(")[1].split("answer=")[0].split())
+    assert "strictly inside the mesh's outline A-D-B-C" in asked
+    assert "A centre exactly on the outline is not asked" in asked
+    assert (
+        "On the outline itself, not asked and no crack: {outline_words}."
+        in gaps.split("explain=")[1]
+    )
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    assert "[11, 8] on BC, a right edge: not drawn [8, 1] on CA, a left edge: drawn" in printed
+    (fan,) = [c for c in cells if "q_fan = Predict(" in c]
+    assert "whole=True" in fan.split("q_fan = Predict(")[1]
+    (mine,) = [c for c in cells if c.startswith("def my_coverage(")]
+    assert "origin[1] + np.arange(width)" in mine and "origin[0] + np.arange(height)" in mine
+    turn = " ".join(next(c for c in cells if c.startswith("## Your turn")).split())
+    assert "`origin` as the (row, column) of its first pixel" in turn
+    assert '`render`\'s batched fill (`"batch"`)' in " ".join(cells[0].split())
+
+
+def test_07_review_r210_fan_figure_and_legends():
+    """Review r210 07-3, 07-4: the fan's numbers at 15 pt inside their triangles, half a pixel
+    from every edge, in taller panels; the naive panel's "covered once" grey, since sky blue is
+    an owner beside it. 07-5: every printed line fits 80 columns, the far case's offsets
+    written one way. 07-8: the two centre marks of counts_legend share a legend column."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from notebook_runs import executed, streams
+
+    import teachraster as tr
+    from teachraster.study import hardcases
+
+    cells = _07_sources()
+    (held,) = [c for c in cells if c.startswith("q_fan.hold()")]
+    assert "once=NAIVE_ONCE" in held and "Patch(color=NAIVE_ONCE" in held
+    assert "fontsize=10" not in held and "fontsize=15" in held and "figsize=(9, 6.6)" in held
+    scope = {"np": np, "tr": tr}
+    exec(held[held.index("def number_spot(") : held.index("\n\n\n# a tall figure")], scope)
+    for xy in hardcases.get_case("fan_spokes_through_centres").triangles:
+        spot = scope["number_spot"](xy)
+        oriented = xy if tr.edge_function(*xy) > 0 else xy[[0, 2, 1]]
+        clear = [float(tr.edge_function(a, b, spot)) / np.hypot(*(b - a))
+                 for a, b in zip(oriented, np.roll(oriented, -1, axis=0))]  # fmt: skip
+        assert min(clear) >= 0.5 - 1e-12 and np.array_equal(spot, np.round(spot))
+    raw = streams(executed("07_hard_cases").notebook())
+    assert all(len(line) <= 80 for line in raw.splitlines())
+    printed = " ".join(raw.split())
+    assert "0 at the origin, 0 at 1e4 px, 64 at 1e5 px, 64 at 1e6 px" in printed
+    assert "wrong at 10000" not in printed and "float32 at 1e5 px" in printed
+    # counts_legend: run the lesson's helpers and read each key's columns as matplotlib fills
+    # them (column by column, the first columns one longer)
+    helpers = next(c for c in cells if c.startswith("# The lesson's helpers"))
+    imports = cells[1].split("style = use_style")[0].replace("%matplotlib inline\n", "")
+    scope = {}
+    exec(imports + helpers, scope)
+    for counts in ([np.ones((2, 2))], [np.array([[1, 2]])], [np.array([[1, 2]])] * 2):
+        extra = [scope["Patch"](color="black", label="gap")] if len(counts) == 2 else []
+        fig = plt.figure()
+        scope["counts_legend"](fig, *extra, counts=counts)
+        (legend,) = fig.legends
+        labels = [t.get_text() for t in legend.get_texts()]
+        columns = [list(c) for c in np.array_split(labels, legend._ncols)]
+        assert ["centre covered", "centre not covered"] in columns, columns
+        assert max(len(c) for c in columns) == 2  # two rows
+        plt.close(fig)
 
 
 # -- 08 antialiasing -----------------------------------------------------------------------------
