@@ -150,6 +150,10 @@ def test_the_player_with_its_comparison_open_fits_the_screen(lab, page):  # noqa
     _run(page, lab, COMPARED, "player_compared.ipynb")
     player = page.locator(".tr-frames").first
     player.locator("canvas[data-step]").wait_for(timeout=120_000)
+    # review r208 00-2: the last step's caption says what opening it by its title does
+    caption = player.locator(".tr-caption")
+    assert "click the comparison's title below" in caption.inner_text()
+    assert "close it to step again" in caption.inner_text()
     header = page.get_by_text("affine / perspective-correct", exact=False).first
     header.click()
     figure = page.locator(".jupyter-widget-Collapse-contents img.teachraster-figure").first
@@ -169,6 +173,12 @@ def test_the_player_with_its_comparison_open_fits_the_screen(lab, page):  # noqa
     figure.wait_for(state="visible", timeout=30_000)
     page.wait_for_timeout(1500)  # a fold would come with the kernel's answer: it is in
     assert player.is_visible() and player.locator("canvas[data-step]").is_visible()
+    # r208 00-3: open, the caption no longer says to open it (the page relabels the step)
+    page.wait_for_function(
+        "c => c.textContent.endsWith('Both ways side by side: the comparison below.')",
+        arg=caption.element_handle(), timeout=10_000,
+    )  # fmt: skip
+    assert "title" not in caption.inner_text()
     assert not page.errors, page.errors[:3]
 
 

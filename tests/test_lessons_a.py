@@ -270,6 +270,7 @@ def _tour_error_cell(w) -> dict:
     import contextlib
     import io
     import warnings
+    from types import SimpleNamespace
 
     cells = _cells("00_tour", "code")
     imports = next(c for c in cells if "import teachraster as tr" in c)
@@ -277,7 +278,8 @@ def _tour_error_cell(w) -> dict:
     ns: dict = {}
     exec(imports.replace("%matplotlib inline", ""), ns)
     tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=w, attrs={"u": [0.0, 1.0, 0.0]})
-    ns.update(tri=tri, W=16, H=16)
+    # the question it waits for (r208 00-5), stood in for
+    ns.update(tri=tri, W=16, H=16, q_centres=SimpleNamespace(hold=lambda: None))
     ns["halfplane"] = tr.rasterize(tri, 16, 16, method="halfplane", trace=True)
     out = io.StringIO()
     with warnings.catch_warnings(), contextlib.redirect_stdout(out):
@@ -341,15 +343,66 @@ def test_00_the_affine_gap_is_printed_at_centres_and_between_r166():
     peak = 3 - 2 * np.sqrt(2)
     assert abs(np.abs(ns.du_all).max() - peak) < 1e-5 and abs(ns.gap.max() - peak) < 1e-4
     assert round(float(np.abs(ns.du_all).max()), 3) == round(float(ns.gap.max()), 3) == 0.172
-    # review r166 00-9: the span panel colours each part's covered pixels its own way: the
-    # rows above the split (v_mid = 5.2) are the flat-bottom part's, the rest flat-top
-    rows = np.flatnonzero(ns.span.coverage.any(axis=1))
-    assert ns.part_of_row[rows].tolist() == [int(r + 0.5 > ns.v_mid) for r in rows]
-    assert set(ns.part_of_row[rows]) == {0, 1}
     from notebook_runs import executed, streams
 
     printed = streams(executed("00_tour").notebook())
     assert "at the 59 centres: 0.152" in printed and "over the whole triangle: 0.172" in printed
+
+
+def _tour_map_cell(tri):
+    """Lesson 00's pipeline-map cell run on ``tri`` (a Try-it edits the triangle's cell),
+    after the import cell; the questions it waits for are stood in for. Its globals."""
+    from types import SimpleNamespace
+
+    cells = _cells("00_tour", "code")
+    imports = next(c for c in cells if "import teachraster as tr" in c)
+    shown = next(c for c in cells if "PipelineMap(" in c)
+    held = SimpleNamespace(hold=lambda: None)
+    ns: dict = {}
+    exec(imports.replace("%matplotlib inline", ""), ns)
+    ns.update(tri=tri, W=16, H=16, q_facing=held, q_centres=held)
+    exec(shown, ns)
+    return ns
+
+
+def test_00_the_map_follows_the_lessons_triangle_r208():
+    """Review r208 00-1: the map was built as PipelineMap(stage="vertex"), its own copy of
+    the tour triangle: after the Try-it edits (w = [1, 1, 1], v1 at (2.5, 1.5)) it still
+    showed w 1, 2, 4 and v1 at (2.2, 1.5). It is built from tri and follows it."""
+    from teachraster.widgets.pipeline_map import TOUR_U, TOUR_W, TOUR_XY
+
+    given = tr.Triangle(TOUR_XY, w=TOUR_W, attrs={"u": TOUR_U})
+    edits = [
+        given,
+        tr.Triangle(TOUR_XY, w=[1.0, 1.0, 1.0], attrs={"u": TOUR_U}),
+        tr.Triangle([[2.5, 1.5], *TOUR_XY[1:]], w=TOUR_W, attrs={"u": TOUR_U}),
+    ]
+    for tri in edits:
+        data = _tour_map_cell(tri)["pipeline_map"].data
+        assert data["w"] == tri.w.tolist() and data["u"] == tri.attrs["u"].tolist()
+        assert np.allclose(np.array(data["window"])[:, :2], tri.xy, atol=1e-9)
+        assert data["fragments"] == int(tr.rasterize(tri, 16, 16).coverage.sum())
+    assert _tour_map_cell(edits[2])["pipeline_map"].data["window"][0][:2] == [2.5, 1.5]
+
+
+def test_00_player_colours_and_held_outputs_r208():
+    """Review r208, lesson 00: 00-4, a covered pixel of the flat-bottom part was teal in
+    cell 10's figure and blue in the player: cell 10 now draws the player's code (covered
+    blue in both panels, each part its tinted region, keyed as such); 00-5, the error map's
+    "at the 59 centres" and covered pixels answer q_centres: held like cells 10 and 14;
+    00-2, the text says that the comparison, opened by its title, takes the steps' place;
+    00-6, step 0 is no empty grid."""
+    code = _cells("00_tour", "code")
+    fills = next(c for c in code if 'axes[0].set_title(f"span tables, u4' in c)
+    assert "part_fill" not in fills and "plot_coverage(ax, fill_)\n" in fills
+    assert '"flat-bottom part: covered, rest"' not in fills and '"covered",' in fills
+    error_map = next(c for c in code if 'title="u along v1 → v2"' in c)
+    assert error_map.startswith("q_centres.hold()")
+    player = next(c for c in code if "FillPlayer(" in c)
+    assert "empty grid" not in player and "step 0 shows only the snapped triangle" in player
+    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    assert "Opened by its title instead, the comparison takes the steps' place" in tour
+    assert "close it to step again" in tour
 
 
 def test_00_r37_items():

@@ -23,7 +23,7 @@ from teachraster.widgets import (  # noqa: E402
     display,  # noqa: E402
     resolve_backend,
 )
-from teachraster.widgets.player import COMPARISON_HINT  # noqa: E402
+from teachraster.widgets.player import COMPARISON_HINT, COMPARISON_HINT_OPEN  # noqa: E402
 from teachraster.widgets.textured import plane_clip  # noqa: E402
 
 W = H = 16
@@ -121,8 +121,9 @@ def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     # its readout stays short: a long one pushed the speed menu onto a new line and
     # pointed at a folded comparison (review r91 00-B)
     assert player.interp_view is not None  # the fixture's triangle has attributes
-    assert frames.captions[-1] == captions[-1] + COMPARISON_HINT
-    assert "click its title" in frames.captions[-1]
+    # review r208 00-3: the hint is a sentence of its own, after a full stop
+    assert frames.captions[-1] == f"{captions[-1]}. {COMPARISON_HINT}"
+    assert "click the comparison's title" in frames.captions[-1]
     assert frames.infos[-1] == f"of {len(player.trace) - 1} (interpolate)"
     player.view.show_step(-1, draw=False)
     assert player.view.values.get_visible()
@@ -258,6 +259,32 @@ def test_interpolation_toggle_opens_the_comparison_below_the_steps(player):
     assert player.comparison.selected_index == 0 and not shown()
     player.comparison.selected_index = None
     assert shown()
+
+
+def test_the_last_caption_says_where_the_comparison_is_and_that_its_title_folds_the_steps(
+    player,
+):
+    """Review r208 00-2, 00-3: opened by its title the comparison folds the steps with no
+    word why, and the last caption, "…on screen) Both ways side by side: the comparison
+    below (click its title to open it).", lacked a full stop and still said to open it once
+    the toggle had. Closed, the hint says both how to open it and that the steps fold;
+    open, only where it is; closed again, the first hint is back."""
+    frames, last = player.frames, player.trace.caption(-1)
+    assert frames.captions[-1] == f"{last}. {COMPARISON_HINT}"
+    assert (
+        "takes the steps' place" in COMPARISON_HINT and "close it to step again" in COMPARISON_HINT
+    )
+    player.interpolation.value = "affine"  # opens the comparison below the steps
+    last = player.trace.caption(-1)
+    assert frames.captions[-1] == f"{last}. {COMPARISON_HINT_OPEN}"
+    assert "title" not in frames.captions[-1]
+    assert frames.captions[:-1] == [s.caption for s in player.trace][:-1]
+    player.comparison.selected_index = None
+    assert frames.captions[-1] == f"{last}. {COMPARISON_HINT}"
+    player.method.value = "halfplane"  # a new fill, the comparison closed: the closed hint
+    assert frames.captions[-1] == f"{player.trace.caption(-1)}. {COMPARISON_HINT}"
+    player.comparison.selected_index = 0
+    assert frames.captions[-1].endswith(COMPARISON_HINT_OPEN)
 
 
 def test_interpolation_toggle_changes_the_interpolation_view(player):

@@ -55,9 +55,15 @@ PLAYER_SIDE, PLAYER_KEY = 4.8, 1.75
 #: the open comparison fits a 900-px-high screen (the steps fold meanwhile, unless the
 #: interpolation toggle opened it).
 COMPARISON_MAX_PX = 660
-#: Appended to the last step's caption when the triangle has attributes: both
-#: interpolations are in the comparison, which may be folded.
-COMPARISON_HINT = " Both ways side by side: the comparison below (click its title to open it)."
+#: Appended, as a sentence of its own, to the last step's caption when the triangle has
+#: attributes: both interpolations are in the comparison. Closed, the hint says how to open
+#: it and that the steps then fold (review r208 00-2: they vanished with no word why); open,
+#: only where it is (r208 00-3: "click its title to open it" stood under an open one).
+COMPARISON_HINT = (
+    "Both ways side by side: click the comparison's title below to open it. It then takes "
+    "the steps' place, to fit one screen; close it to step again."
+)
+COMPARISON_HINT_OPEN = "Both ways side by side: the comparison below."
 #: The comparison's width on screen at 1024 x 768 with JupyterLab's file browser open (CSS
 #: px): the output column (592) less the accordion's padding (review r20, 00 c14). Its text
 #: is sized to read 12 px there.
@@ -336,6 +342,7 @@ class FillPlayer(Holdable):
         self._keep_steps = False  # opened by the interpolation toggle: the steps stay
         self.comparison.observe(self._refresh_comparison, "selected_index")
         self.comparison.observe(self._fold_steps, "selected_index")
+        self.comparison.observe(self._rehint, "selected_index")
         return [self.comparison]
 
     def _fold_steps(self, change=None) -> None:
@@ -355,13 +362,9 @@ class FillPlayer(Holdable):
         """
         fill_key = self._fill_key()
         if fill_key not in self._texts:
-            captions, infos = step_texts(self.trace)
-            if self.interp_view is not None:  # the other interpolation is in the comparison
-                # in the caption, not the short readout: a long readout pushed the speed
-                # menu onto a new line, and the comparison may be folded
-                captions = [*captions[:-1], captions[-1] + COMPARISON_HINT]
-            self._texts[fill_key] = captions, infos
+            self._texts[fill_key] = step_texts(self.trace)  # the hint is added on sending
         captions, infos = self._texts[fill_key]
+        captions = self._hinted(captions)
         group = step // self.frames.key
         made = self._groups.get((fill_key, group))
         poster, size = b"", (self.frames.frame_height, self.frames.frame_width)
@@ -387,6 +390,25 @@ class FillPlayer(Holdable):
             self.frames.gen += 1
         if made is not None:
             self.frames.send_group(group, *made)
+
+    def _hinted(self, captions: list[str]) -> list[str]:
+        """``captions`` with the comparison's hint after the last one, as the comparison is
+        now (open or closed); unchanged without attributes (no comparison). In the caption,
+        not the short readout: a long readout pushed the speed menu onto a new line."""
+        if self.interp_view is None:
+            return list(captions)
+        comparison = getattr(self, "comparison", None)  # made after the first publish: closed
+        opened = comparison is not None and comparison.selected_index is not None
+        hint = COMPARISON_HINT_OPEN if opened else COMPARISON_HINT
+        last = captions[-1].rstrip()
+        end = "" if last.endswith((".", "!", "?")) else "."  # the step's text is a phrase
+        return [*captions[:-1], f"{last}{end} {hint}"]
+
+    def _rehint(self, change=None) -> None:
+        """The last caption follows the comparison opening and closing (the page relabels
+        the step on show: ``change:captions`` in ``frames.js``)."""
+        captions, _infos = self._texts[self._fill_key()]
+        self.frames.captions = self._hinted(captions)
 
     def _fill_key(self) -> tuple[str, str, str]:
         method = self.method.value

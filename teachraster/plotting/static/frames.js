@@ -495,6 +495,14 @@ export function mountFrames(el, opts) {
     }
   }
 
+  // New texts for the same steps (the last caption's hint follows the comparison opening
+  // and closing): the step on show, or the one awaited, relabelled at once.
+  function recaption(captions) {
+    s.captions = captions;
+    const k = s.awaited ?? s.shown;
+    if (k !== null && k >= 0) label(k);
+  }
+
   function setInterval_(ms) {
     s.interval = ms;
     speed.choose(ms);
@@ -511,7 +519,9 @@ export function mountFrames(el, opts) {
     if (opts.onInterval) opts.onInterval(ms);
   });
   setInterval_(opts.interval ?? 400);
-  return { root, reset, addGroup, show, stop, start, setInterval: setInterval_, state: s };
+  return {
+    root, reset, addGroup, show, stop, start, recaption, setInterval: setInterval_, state: s,
+  };
 }
 
 // -- an offline page: every group is in the page as base64 PNGs ----------------------------
@@ -562,6 +572,8 @@ function render({ model, el }) {
     }
   });
   model.on("change:interval", () => player.setInterval(model.get("interval")));
+  // the same fill, new texts (a new fill comes with change:gen, which resets everything)
+  model.on("change:captions", () => player.recaption(model.get("captions")));
   model.on("msg:custom", (msg, buffers) => {
     if (msg.type !== "group") return;
     const wrong = groupMismatch(msg, buffers);
