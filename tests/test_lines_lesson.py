@@ -3,13 +3,16 @@ notebooks' variables say what their text says."""
 
 from __future__ import annotations
 
+import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
 from notebook_runs import lesson
 
 pytestmark = [pytest.mark.filterwarnings("ignore::DeprecationWarning"), pytest.mark.notebook]
+_12B = Path(__file__).resolve().parents[1] / "notebooks" / "12b_blending.ipynb"
 
 
 @pytest.fixture(scope="module")
@@ -910,3 +913,55 @@ def test_12b_r188_one_gpu_not_every_gpu_and_the_oit_titles():
     assert "The peel panels' titles give how many pixels each layer holds" in text
     assert "averages the two colours instead of putting the nearer over the farther" in text
     assert "plt.subplots(2, 3," in cells["oit_fig"]
+
+
+def test_12b_r213_wboit_is_exact_on_two_lines_and_the_small_items(nsb):
+    """Review r213 12b-1 (C): WBOIT is off most at the crossing (equal weights), but exact
+    where w_near / w_far = 1/(1 - alpha), on two lines either side of it (the black stripes),
+    and off again towards the overlap's edges, where the nearer layer weighs too much: every
+    number the text gives is the cell's. 12b-2: q_order's tolerance refuses alpha squared
+    (0.36). 12b-3: the MSAA question is asked once. 12b-4: the source swatch is drawn with its
+    alpha. 12b-5, 12b-6: framebuffer fetch and stochastic transparency named, with sources."""
+    ns = nsb
+    md = _12b_markdown()
+    # item 1: the rule, and the row the text reads
+    assert ns.alpha_x == 0.6 and abs(ns.exact_ratio - 2.5) < 1e-12 and "2.5 here" in md
+    assert ns.row_x == 24 and ns.exact_cols == [19, 30] and ns.crossing_col == 25
+    assert "columns 19 and 30 of row 24" in md
+    row = ns.oit_error[ns.row_x]
+    assert all(row[c] < 0.02 for c in ns.exact_cols)  # the black stripes
+    assert row[ns.crossing_col] == max(row[c] for c in ns.named)  # off most at the crossing
+    edges = (int(ns.row_cols[0]), int(ns.row_cols[-1]))
+    assert all(row[c] > 5 * row[ns.exact_cols[0]] for c in edges)  # and again at the edges
+    assert ns.near_far[ns.row_x, edges[0]] > ns.exact_ratio > ns.near_far[ns.row_x, 25]
+    # the largest error lies where the weights are equal (the crossing)
+    assert ns.oit_error[ns.worst] == ns.oit_error[ns.two].max() and ns.near_far[ns.worst] < 1.01
+    # the exact rule: where the ratio is 1/(1 - alpha) the error vanishes (the colours are
+    # the layers' own, so the share alone decides)
+    share = ns.exact_ratio / (ns.exact_ratio + 1)  # w_near / (w_near + w_far) there
+    assert abs(share - 1 / (2 - ns.alpha_x)) < 1e-12
+    counts = (int(ns.off_by.sum()), int((ns.off_by & ns.underweighted).sum()),
+              int((ns.off_by & ns.overweighted).sum()))  # fmt: skip
+    assert counts == (126, 117, 9) and int(ns.two.sum()) == 488
+    assert "of the 126 pixels off by 0.1 or more, 117 lie on the crossing's side of 2.5 and 9" in md
+    assert "away from the crossing the nearer layer's weight dominates" not in md
+    # item 2: 0.36 (alpha squared, yellow's 0.95 forgotten) refused, 0.34 accepted
+    assert abs(ns.red_gap - ns.alpha_o**2) > ns.red_gap_tol
+    assert abs(ns.red_gap - 0.34) <= ns.red_gap_tol
+    # item 3: the MSAA question is the prediction's alone
+    assert "Before you read what the cell below prints" not in md
+    # item 4: the source swatch, a fragment, over the checkerboard; the rest as displayed
+    cells = {c.get("id"): "".join(c["source"]) for c in json.loads(_12B.read_text())["cells"]}
+    assert 'views=["alpha"] + ["displayed"] * (len(swatches) - 1)' in cells["47430813"]
+    assert "with its alpha over a checkerboard" in md
+    # item 5: programmable blending, beside the interlocks
+    for said in ("`EXT_shader_framebuffer_fetch`", "`gl_LastFragData`",
+                 "`APPLE_shader_framebuffer_fetch`", "Metal's *programmable blending*",
+                 "`VK_EXT_rasterization_order_attachment_access`",
+                 '"applications to express custom blending operations in a fragment shader"',
+                 "shaders that blend for themselves: the end of §3"):  # fmt: skip
+        assert said in md, said
+    # item 6: stochastic transparency: random masks cover what "over" gives, on average
+    assert "**Stochastic transparency** (Enderton, Sintorn, Shirley and Luebke, I3D 2010)" in md
+    assert len(ns.half_masks) == 6 and ns.random_two == ns.over_two == 0.75
+    assert ns.a2c_coverage[-1] == 0.5  # a fixed mask: the same samples, (½, not ¾)

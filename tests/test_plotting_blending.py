@@ -36,6 +36,22 @@ def test_composites_show_each_buffer_as_displayed():
         plot_composites(axes, [a], ["a", "b"])
 
 
+def test_composites_draw_a_fragment_with_its_alpha_over_a_checkerboard():
+    """Lesson 12b §1: the source swatch (a fragment's colour, which no window displays) is
+    drawn with its alpha over the checkerboard; the buffers beside it as displayed."""
+    src, dst = np.zeros((8, 8, 4)), np.zeros((8, 8, 4))
+    src[..., 0], src[..., 3] = 1.0, 0.5
+    dst[..., 2], dst[..., 3] = 1.0, 1.0
+    fig, axes = plt.subplots(1, 2)
+    drawn = plot_composites(axes, [src, dst], ["src", "dst"], views=["alpha", "displayed"])
+    assert drawn[0].checker.get_visible() and not drawn[1].checker.get_visible()
+    assert np.allclose(drawn[0].image.get_array()[..., 3], 0.5)
+    board = drawn[0].checker.get_array()
+    assert len(np.unique(board)) == 2  # both squares of the checkerboard show
+    with pytest.raises(ValueError, match="1 views"):
+        plot_composites(axes, [src, dst], ["src", "dst"], views=["alpha"])
+
+
 def test_colour_difference_is_the_largest_channel_difference():
     a, b = np.zeros((3, 5, 3)), np.zeros((3, 5, 3))
     b[1, 2] = [0.1, 0.4, 0.2]

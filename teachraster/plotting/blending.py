@@ -4,7 +4,8 @@ each sample of a multisampled colour buffer holds.
 Every function takes Axes and returns the artists it drew:
 
 - :func:`plot_composites` -- several (H, W, 4) colour buffers, one per Axes, as displayed
-  (:func:`~teachraster.plotting.lines.plot_rgba`), each with a short title;
+  (:func:`~teachraster.plotting.lines.plot_rgba`) or with their alpha over a checkerboard,
+  each with a short title;
 - :func:`plot_colour_difference` -- the largest channel difference |a − b| per pixel, with a
   colour bar from 0 to its maximum;
 - :func:`plot_sample_colours` -- every sample of ``frame.sample_color`` as a dot at its
@@ -22,7 +23,7 @@ from .common import Artists, ms, pixel_axes
 from .lines import RGBAArtists, plot_rgba, rgba_shown
 
 
-def plot_composites(axes, images, titles, *, fontsize="medium") -> list[RGBAArtists]:
+def plot_composites(axes, images, titles, *, fontsize="medium", views=None) -> list[RGBAArtists]:
     """Colour buffers side by side, as displayed (the RGB written), without ticks.
 
     Parameters
@@ -35,17 +36,24 @@ def plot_composites(axes, images, titles, *, fontsize="medium") -> list[RGBAArti
         One per image.
     fontsize : str or float
         The titles' size.
+    views : sequence of str, optional
+        One per image, :func:`~teachraster.plotting.lines.plot_rgba`'s ``view``: "displayed"
+        (the default for every image) or "alpha", the colour with its alpha over a
+        checkerboard, for a fragment's colour, which no window displays (lesson 12b §1's
+        source).
 
     Returns
     -------
     list of RGBAArtists
         One per Axes.
     """
-    if not len(axes) == len(images) == len(titles):
-        raise ValueError(f"{len(axes)} Axes for {len(images)} images and {len(titles)} titles")
+    views = ["displayed"] * len(images) if views is None else list(views)
+    if not len(axes) == len(images) == len(titles) == len(views):
+        raise ValueError(f"{len(axes)} Axes for {len(images)} images, {len(titles)} titles "
+                         f"and {len(views)} views")  # fmt: skip
     drawn = []
-    for ax, image, title in zip(axes, images, titles):
-        drawn.append(plot_rgba(ax, image))
+    for ax, image, title, view in zip(axes, images, titles, views):
+        drawn.append(plot_rgba(ax, image, view=view))
         ax.set_title(title, fontsize=fontsize)
         ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
     return drawn
