@@ -428,6 +428,24 @@ def test_a_pixels_question_offering_none_takes_it_as_an_answer(lesson):
     assert check.is_disabled() and none.is_disabled()
 
 
+def test_a_click_on_the_point_marker_gives_no_answer(lesson):
+    """Review r209 03-5: a click on the marker (on it, off its centre), without a drag, moved
+    it to the pointer, enabled Check and had the start point graded. Now it moves nothing:
+    Check stays disabled and the kernel has no answer (before the keys of the next test)."""
+    w = _widget(lesson, "point")
+    canvas = w.locator("canvas").first
+    (x0, y0, sx, sy) = _kernel(lesson, "point.data['transform']")
+    canvas.scroll_into_view_if_needed()  # after the kernel's cell, which scrolled it away
+    lesson.wait_for_timeout(500)
+    box = canvas.bounding_box()
+    scale = box["width"] / float(canvas.evaluate("c => c.logical.w"))
+    marker = (x0 + sx * 0.0, y0 + sy * 2.0)  # its start, (0, 2)
+    lesson.mouse.click(box["x"] + (marker[0] + 6) * scale, box["y"] + marker[1] * scale)
+    lesson.wait_for_timeout(500)
+    assert w.get_by_role("button", name="Check").is_disabled()
+    assert _kernel(lesson, "point.given") is None
+
+
 def test_point_reveal_draws_its_curve(lesson):
     """Review r38 05b c9: after Check, the curve the answer comes from is drawn (green), and
     not before."""

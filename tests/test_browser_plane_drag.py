@@ -32,6 +32,9 @@ CELLS = [
     "ex = PlaneExplorer()\nex.widget.add_class('t-plane')\nex",
 ]
 FRAMES = "() => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0)"
+#: the readout beside a slider of the explorer, by its name
+READOUT = """name => [...document.querySelectorAll('.t-plane .tr-live-slider')]
+  .find(row => row.querySelector('label').textContent === name).querySelector('span').textContent"""
 
 
 def _still(tab, img, tries: int = 40) -> None:
@@ -74,6 +77,8 @@ def test_a_vertex_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
         page.wait_for_timeout(16)
     during = page.evaluate(FRAMES) - before
     seconds = time.perf_counter() - start
+    # r209 03-4: the sliders' readouts follow the drag (they kept "2.00" until the release)
+    readout = page.evaluate(READOUT, "v1 x")
     _still(page, img)  # let go where the last move was, on the picture as it is now
     page.mouse.move(*at(6.0, 4.0))
     page.mouse.up()
@@ -82,6 +87,7 @@ def test_a_vertex_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
         f"({during / seconds:.1f} per s)"
     )
     assert during >= 3  # the kernel's drafts were painted while the pointer moved
+    assert readout != "2.00" and 2.0 < float(readout) <= 6.0, readout
     page.wait_for_function(
         "n => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0) > n",
         arg=before + during,

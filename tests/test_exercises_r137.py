@@ -101,8 +101,10 @@ def test_exercise_3_says_what_lesson_03_gives():
     assert "reads the weights off a picture" not in text and "of a point inside;" not in text
     assert "already gives these weights in another form, for every p and either winding" in text
     lesson = nbformat.read(LESSON_03, 4).cells
-    # §1 and "The areas are the edge functions" (cells 4-7 since r140's held cells moved in)
-    said = " ".join(c.source for c in lesson[4:8] if c.cell_type == "markdown")
+    # §1 and "The areas are the edge functions", up to §2 (held cells move the indices)
+    one = next(i for i, c in enumerate(lesson) if c.source.startswith("## 1."))
+    two = next(i for i, c in enumerate(lesson) if c.source.startswith("## 2."))
+    said = " ".join(c.source for c in lesson[one:two] if c.cell_type == "markdown")
     assert "signed" in said and "E(\\mathbf{v}_2,\\mathbf{v}_3,\\mathbf{p})" in said
 
 

@@ -48,9 +48,9 @@ def _page_move(ex, i, x, y, final, seq=1):
 def test_plane_explorer_vertices_are_dragged_in_the_page(explorer):
     """Issue 31: lesson 03's explorer was slider-only. Its vertices are the page figure's
     handles (the TriangleEditor's drag, static/drag.js): mid-drag the kernel fills the
-    dragged triangle with tr.rasterize (the top-left rule) and sends drafts, the sliders
-    wait; the release puts the vertex on the sliders' quarter-pixel grid, within their range,
-    and the handles follow for the next press."""
+    dragged triangle with tr.rasterize (the top-left rule) and sends drafts, and the sliders
+    take each position (r209 03-4: their readouts kept the old value until the release), on
+    their quarter-pixel grid, within their range; the handles follow for the next press."""
     page = explorer.display.widget
     assert page.handles == [[2.0, 1.0], [13.0, 5.0], [5.0, 12.0]] and page.on_move is not None
     draws = explorer.display.draws
@@ -58,7 +58,8 @@ def test_plane_explorer_vertices_are_dragged_in_the_page(explorer):
     assert explorer.display.draws == draws + 1 and explorer._drafting()
     labels = [a for a in explorer.triangle.artists if a.get_visible() and hasattr(a, "get_text")]
     assert labels  # hidden for the draft only (half its cost): shown on the figure again
-    assert [explorer.x[0].value, explorer.y[0].value] == [2.0, 1.0]  # the sliders wait
+    # the sliders follow mid-drag, without a picture of their own (one draw above)
+    assert [explorer.x[0].value, explorer.y[0].value] == [3.0, 2.5] and explorer._drafting()
     dragged = [[3.0, 2.5], [13.0, 5.0], [5.0, 12.0]]
     assert explorer.shown_xy.tolist() == dragged
     _page_move(explorer, 0, 8.0, 13.0, final=False, seq=2)  # v1 onto the edge v2 v3's line

@@ -183,8 +183,10 @@ def test_03_stepping_and_recentring_numbers_match_the_text():
     assert "g.A" not in code and "g.g_x" in code
     six = (ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text()
     assert "*What a GPU pays*" in text and '"### What a GPU pays\\n"' in six
-    # "only known to about 1e-4" at 1e12, "coordinates to about 1e-10 px" at 1e6: printed
-    assert 1e-4 <= ns.far_gap[1e12] < 2e-4 and 1e-10 <= ns.far_gap[1e6] < 2e-10
+    # r209 03-3: "float64's gap near 10^13 is about 10^-3" (D's terms), "coordinates to about
+    # 1e-10 px" at 1e6: printed
+    assert ns.far_gap_at == 1e13 and 1e-3 <= ns.far_gap[1e13] < 2e-3
+    assert 1e-10 <= ns.far_gap[1e6] < 2e-10
 
 
 # -- 04 perspective-correct interpolation -------------------------------------------------------
@@ -468,3 +470,84 @@ def test_03_r155_homogeneous_rows_and_the_msaa_centre():
     # r171: lesson 08 says so in its section 2 (its section 5 is on centroid sampling)
     assert "open: lesson 08, section 2)" in md and "lesson 08, section 5" not in md
     assert "two weights are negative" in md and "one weight negative" not in md
+
+
+def _decade(value) -> int:
+    """The nearest power of ten to the largest |value|, as lesson 03's ``about`` writes it."""
+    return round(float(np.log10(np.abs(value).max())))
+
+
+def _paragraphs(cells) -> list[str]:
+    """The prose paragraphs of the Markdown cells (not tables, lists or display maths)."""
+    found = []
+    for cell in cells:
+        if cell["cell_type"] != "markdown":
+            continue
+        for para in "".join(cell["source"]).split("\n\n"):
+            if not para.lstrip().startswith(("|", "- ", "$$", "#")):
+                found.append(" ".join(para.split()))
+    return found
+
+
+def test_03_r209_held_section_1_the_digits_lost_and_the_ranges_of_the_drift():
+    """r209 03: 1, 2: every output of section 1 (the contour map labelled 0.6, 1.06 px from
+    q_weights' answer, and the text on it) is held until Check, as its first paragraph says;
+    3 (F): the digits go where D and A are built (terms of 10^13 cancel to D ~ 10^7), not in
+    the last sum, whose terms are ~10^8; 6: 128 to 512 give back about a fifth; 7: the
+    least-squares plane; 8: the area figure, a point outside with a negative weight; 9: the
+    interpolation qualifiers and the provoking vertex; 10: no paragraph over 150 words."""
+    import json
+    import re
+
+    import teachraster as tr
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    one = next(i for i, t in enumerate(text) if t.startswith("## 1."))
+    two = next(i for i, t in enumerate(text) if t.startswith("## 2."))
+    assert "(two paragraphs, the numbers and two figures) appear once" in " ".join(
+        text[one].split()
+    )
+    codes = [t for c, t in zip(cells[one:two], text[one:two]) if c["cell_type"] == "code"]
+    assert codes and all(t.startswith("q_weights.hold()") for t in codes)
+    assert (
+        sum("Markdown(" in t for t in codes) == 2 and sum("plt.subplots(" in t for t in codes) == 2
+    )
+    assert any("contour_levels = [0.2, 0.4, 0.6, 0.8]" in t for t in codes)  # the 0.6 label
+    # 8: the areas of p and of a point beyond the edge v2v3, where λ1 alone is negative
+    lam_out = tr.barycentric(ns.xy, ns.p_out)
+    assert lam_out[0] < 0 < lam_out[1:].min() and np.isclose(lam_out.sum(), 1.0)
+    assert any("def draw_areas" in t for t in codes)
+    # 3: the magnitudes the explanation and the held text quote, as printed
+    assert _decade(ns.d_terms) == 13 and _decade(ns.far_plane.D) == 7
+    assert _decade(ns.far_D_error) == -4 and _decade(ns.far_A_error) == -10
+    assert _decade(ns.worst_xy[0]) == 6 and _decade(ns.far_A_error * ns.worst_xy[0]) == -4
+    assert _decade(ns.far_sum_parts["A x"]) == 8 and _decade(ns.absolute[-1]) == -6
+    assert _decade(ns.far_gap[ns.far_gap_at]) == -3
+    # the evaluation adds almost nothing: its error is D's and A x's
+    inherited = ns.far_D_error + ns.far_A_error * ns.worst_xy[0]
+    assert abs(ns.far_sum_error - inherited) < 1e-3 * abs(ns.far_sum_error)
+    assert np.isclose(abs(ns.far_sum_error) / ns.far_plane.C, ns.absolute[-1], rtol=1e-6)
+    assert not any("of that size" in t for t in text) and not any(
+        "10<sup>12</sup>" in t for t in text
+    )
+    # 6: the power-of-two ranges of the float32 drift, as the held text says
+    sums = {k: ns.rounded_by[ns.binade == k].sum() for k in range(5, 10)}  # 32 ... 512
+    assert np.sign(sums[7]) == np.sign(sums[8]) == -np.sign(sums[9])  # 128-512: the other way
+    assert 0.15 < -ns.back / sums[9] < 0.25 and np.isclose(ns.back, sums[7] + sums[8])
+    assert all(abs(sums[k]) < abs(sums[7]) / 8 for k in (5, 6))  # below 128: far less
+    held = next(t for t in text if t.startswith("q_drift.hold()") and "Markdown(" in t)
+    held = " ".join(re.sub(r'"\s*"', "", held).split())
+    assert "give about a fifth of it back" in held and "lower ranges" not in held
+    # 7, 9, 10
+    md = " ".join(" ".join(t.split()) for c, t in zip(cells, text) if c["cell_type"] == "markdown")
+    code = " ".join(t for c, t in zip(cells, text) if c["cell_type"] == "code")
+    assert "best plane" not in md + code and "least-squares plane" in md and "least-squares" in code
+    for name in ("`flat`", "`nointerpolation`", "`noperspective`", "*provoking vertex*",
+                 "§13.6 *Flatshading*", "`GL_LAST_VERTEX_CONVENTION`", "*leading vertex*",
+                 "`VK_EXT_provoking_vertex`", "§4.5 *Interpolation Qualifiers*"):  # fmt: skip
+        assert name in md, name
+    longest = max(_paragraphs(cells), key=lambda p: len(p.split()))
+    assert len(longest.split()) <= 150, longest[:80]

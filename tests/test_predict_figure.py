@@ -105,6 +105,28 @@ def test_check_is_pressed_once_in_the_page():
     assert js.count("check.disabled = checkDisabled(") == js.count("check.title = checkTitle(") == 4
 
 
+def test_a_click_on_the_point_marker_is_no_answer():
+    """Review r209 03-5: a click on lesson 03's marker, without moving it, moved it by the
+    pointer's offset from its centre, enabled Check and had the start point graded. A press
+    released within pointerInput's click distance of where it began keeps the answer it had
+    (none: Check stays disabled); a drag gives the dragged point."""
+    from pathlib import Path
+
+    before, dragged = [11.9, 11.1], [12.0, 11.0]
+    cases = [([100, 100], [102, 101], None), ([100, 100], [100, 100], before),
+             ([100, 100], [103.9, 100], None), ([100, 100], [104, 100], None),
+             ([100, 100], [130, 90], before)]  # fmt: skip
+    got = call_js(("predict_figure",),
+                  [("pressAnswer", [down, up, had, dragged]) for down, up, had in cases])  # fmt: skip
+    assert got == [None, before, None, dragged, dragged]
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    point = js[js.index("function mountPoint") : js.index("function mountOrder")]
+    assert "pressAnswer(press.at, p, press.before, state.given)" in point
+    assert "onPress(p, _e, held)" in point
+    base = (Path(tr.__file__).parent / "widgets" / "static" / "explore_base.js").read_text()
+    assert "moved < CLICK_PX && onClick" in base  # one click distance for both
+
+
 def test_the_picture_maps_pixels_where_the_grid_is():
     from PIL import Image
 

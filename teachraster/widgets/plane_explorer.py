@@ -188,8 +188,8 @@ class PlaneExplorer:
                  style: str | None = None) -> None:  # fmt: skip
         self.width, self.height = width, height
         self.backend = resolve_backend(backend)
-        #: the vertices while a drag in the page is under way (the sliders follow at the
-        #: release, as the TriangleEditor's do); None otherwise
+        #: the vertices while a drag in the page is under way (the picture is a draft until
+        #: the release; the sliders' readouts follow each position); None otherwise
         self._drag_xy: np.ndarray | None = None
         self._quiet = False
         xy = np.asarray(xy, dtype=np.float64).reshape(3, 2)
@@ -290,24 +290,23 @@ class PlaneExplorer:
 
     def _on_page_move(self, i: int, x: float, y: float, final: bool) -> None:
         """Vertex ``i`` dragged in the page to (x, y): on the sliders' quarter-pixel grid,
-        within their range. Mid-drag only the picture follows (a draft, as a slider's);
-        at the release the sliders take the position, and one full picture follows."""
+        within their range. Mid-drag the picture is a draft (as a slider's) and the sliders
+        take each position, so that their readouts agree with the picture (review r209 03-4:
+        "v2 x 13.00" stood beside a v2 dragged to x = 1 until the release); at the release
+        one full picture follows."""
         xy = self.xy
         for k, (slider, value) in enumerate(((self.x[i], x), (self.y[i], y))):
             xy[i, k] = min(max(round(value / slider.step) * slider.step, slider.min), slider.max)
-        if not final:
-            self._drag_xy = xy
-            self.update()
-            return
-        self._drag_xy = None
-        self._quiet = True
+        self._drag_xy = None if final else xy
+        self._quiet = True  # the sliders' observers would draw a picture each: one is drawn below
         try:
             self.x[i].value, self.y[i].value = xy[i]
         finally:
             self._quiet = False
         self.update()
         ahead = getattr(self.display, "frames_ahead", None)
-        if ahead is not None:  # pictures drawn ahead during the drag may show its positions
+        # at the release: pictures drawn ahead during the drag may show its positions
+        if final and ahead is not None:
             ahead.restart()
 
     @property

@@ -193,9 +193,12 @@ export function capture(el, e) {
   }
 }
 
+// A press released less than this far from where it began (canvas px) is a click
+export const CLICK_PX = 4;
+
 // Pointer handling: press near one of `handles()` (canvas px) to drag it, else a click.
-// onDrag(i, p, e) at each move, onRelease(i) once; onClick(p, e) for a press that moved
-// less than 4 px and held no handle; onHover(p) while nothing is pressed.
+// onDrag(i, p, e) at each move, onRelease(i, p, e) once; onClick(p, e) for a press that
+// moved less than CLICK_PX and held no handle; onHover(p) while nothing is pressed.
 export function pointerInput(canvas, { handles = () => [], radius = 14, onDrag, onRelease,
   onClick, onHover, onPress }) {
   let held = null;
@@ -235,7 +238,7 @@ export function pointerInput(canvas, { handles = () => [], radius = 14, onDrag, 
     held = null;
     if (was !== null) {
       if (onRelease) onRelease(was, p, e);
-    } else if (moved < 4 && onClick && e.type === "pointerup") {
+    } else if (moved < CLICK_PX && onClick && e.type === "pointerup") {
       onClick(p, e);
     }
   };

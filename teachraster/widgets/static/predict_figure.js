@@ -68,6 +68,14 @@ export function pixelLegend() {
     `marked, not among them (crossed)`;
 }
 
+// The answer a press on the point marker leaves: where it was dragged, or, when the press
+// was a click (released within CLICK_PX of where it began), the answer before the press. A
+// click on the marker moved it by the pointer's offset from its centre, enabled Check and
+// had the start point graded (review r209 03-5).
+export function pressAnswer(down, up, before, dragged) {
+  return Math.hypot(up[0] - down[0], up[1] - down[1]) < CLICK_PX ? before : dragged;
+}
+
 export function pointVerdict(answer, given, tolerance) {
   const gap = Math.hypot(given[0] - answer[0], given[1] - answer[1]);
   return { gap, correct: gap <= tolerance };
@@ -548,16 +556,27 @@ function mountPoint(root, data, host) {
       `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`, known);
     revealOnFigure(host, canvas, paint);
   }
+  let press = null; // where a press on the marker began, and the answer before it
   pointerInput(canvas, {
     handles: () => [toPx(state.given || start)],
     radius: 22,
+    onPress(p, _e, held) {
+      press = held === null ? null : { at: p, before: state.given };
+    },
     onDrag(_i, p, e) {
       if (state.revealed) return;
       state.given = constrain(snapDragged(toData(p), data.readout, data.readoutDigits))
         .map((v) => Number(v.toFixed(4)));
       paint.request(e);
     },
-    onRelease() {
+    onRelease(_i, p) {
+      const answer = press ? pressAnswer(press.at, p, press.before, state.given) : state.given;
+      press = null;
+      if (answer !== state.given) { // a click on the marker: no answer given, nothing moved
+        state.given = answer;
+        paint.request();
+        return;
+      }
       host.setState({ given: state.given });
     },
   });
