@@ -314,7 +314,9 @@ def test_line_player_diamond_walk_stays_on_the_segment_and_names_its_tie():
             for c in captions
             if "a tie, decided by moving the end points by −(ε, ε²) with y down" in c
         ]
-        assert len(tied) == 1 and tied[0].startswith("column 6, line at the centre: y = 3;")
+        assert len(tied) == 1 and tied[0].startswith(
+            "column 6: at x = 6.5, the column's centre, the line is at y = 3;"
+        )
         assert "pixel (row 3, col 6)" in tied[0]
         player.slider.value = len(trace) - 1
         assert player.caption.value.startswith("step 14 (0 to 14): column 12")

@@ -29,6 +29,16 @@ _WHY = {
 }
 
 
+def _at_centre_words(x_major: bool, major: int, value: float) -> str:
+    """Where the diamond rule reads the line in a column (row): on its centre line
+    x = j + ½ (y = i + ½), not at a pixel centre; the value there may be a row (column)
+    boundary, the very tie being decided ("line at the centre: y = 1" read as the line
+    passing through a pixel centre)."""
+    where, axis, other = ("column", "x", "y") if x_major else ("row", "y", "x")
+    return (f"at {axis} = {major + 0.5:g}, the {where}'s centre, the line is at "
+            f"{other} = {value:.6g}")  # fmt: skip
+
+
 @dataclass(frozen=True)
 class LineTrace:
     """Every step of one line (see the module docstring).
@@ -109,10 +119,10 @@ class LineTrace:
             if work == len(s.major) - 1:
                 then = f"last {where}: p1's pixel is left to the next segment"
             head += f", error term D = {value:g} ({then})"
+        elif self.rule == "dda":
+            head += f", float32 sum: {'y' if s.x_major else 'x'} = {value:.6g}"
         else:
-            other = "y" if s.x_major else "x"
-            label = "float32 sum" if self.rule == "dda" else "line at the centre"
-            head += f", {label}: {other} = {value:.6g}"
+            head += ": " + _at_centre_words(s.x_major, int(s.major[work]), value)
         mine = (s.step == work) & (s.state != 0)
         parts = [
             f"pixel (row {r}, col {c}): {_WHY[self.rule][int(st)]}"

@@ -141,8 +141,11 @@ export function stepCaption(walk, k) {
   const ends = s.cands.filter((c) => c.state === ENDS_INSIDE);
   const ties = s.cands.filter((c) => c.tie && c.state !== MISSED);
   const where = (c) => `(row ${c.row}, col ${c.col})`;
-  let text = `${name} ${s.major}: the line is at ${walk.xMajor ? "y" : "x"} = ${fmt(s.minor, 6)} ` +
-    "at the centre. ";
+  // on the column's (row's) centre line, not at a pixel centre: the value there may be a row
+  // boundary, the tie itself (as teachraster.core.line_trace words it)
+  const [axis, other] = walk.xMajor ? ["x", "y"] : ["y", "x"];
+  let text = `${name} ${s.major}: at ${axis} = ${fmt(s.major + 0.5, 6)}, the ${name}'s centre, ` +
+    `the line is at ${other} = ${fmt(s.minor, 6)}. `;
   if (lit.length) text += `It meets the diamond of ${lit.map(where).join(" and ")} and goes on out of it: lit. `;
   if (ends.length) text += `It ends inside the diamond of ${ends.map(where).join(", ")}: left to the next segment. `;
   if (!lit.length && !ends.length) text += "It meets no diamond here: nothing lit. ";
