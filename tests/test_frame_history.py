@@ -452,8 +452,24 @@ def test_frame_inspector_views_clicks_and_scenes():
     from teachraster.widgets.frame_inspector import quad_text
 
     text = quad_text(w.frame, 10, 14)
-    assert text.splitlines()[1].startswith(f"{4 * len(shaded)} lanes launched (4 each), ")
+    assert text.splitlines()[-1].startswith(f"{4 * len(shaded)} lanes launched (4 each), ")
     assert max(len(line) for line in text.splitlines()) <= 90
+    # review r211 11-3: on uv_sphere at (14, 24), the pixel Question 3 names, six triangles
+    # stood on one line and the sixth hid behind the table's sideways scroll; every one is
+    # on a line no longer than the table's own lines now
+    from teachraster.widgets.frame_inspector import QUAD_TEXT_WIDTH
+
+    sphere = tr.render(tr.get_scene("uv_sphere"), None, 64, 48, trace=True)
+    text = quad_text(sphere, 14, 24)
+    lines = text.splitlines()
+    assert max(len(line) for line in lines) <= QUAD_TEXT_WIDTH < 80
+    named = " ".join(lines[1:-1])
+    six = tr.pipeline.debugging.quad_triangles(sphere, 14, 24)
+    assert all(f"{t} ({n} px)" in named for t, n in six.items())
+    assert len(six) == 6 and len(lines) >= 4
+    empty = quad_text(sphere, 0, 0)  # no triangle there: short lines too
+    assert "no lanes launched" in empty
+    assert max(len(line) for line in empty.splitlines()) <= QUAD_TEXT_WIDTH
     w.view.value = "overdraw"
     assert "quad of rows" not in w.table.value
     w.click_at(100.0, 100.0)  # outside the frame: nothing changes
@@ -1213,9 +1229,46 @@ def test_glass_swatches_in_the_inspector_are_legible():
         assert len(swatches) == 3 * sum(r.outcome == "passed" for r in w.history)
         for p in swatches:
             box = p.get_window_extent()
-            assert box.width >= 20 and box.height >= 40, (box.width, box.height)
+            # review r211 11-4: about 16 px wide on screen at 4.6 inches; the chart takes
+            # the frame's width where it draws colours
+            assert box.width >= 36 and box.height >= 40, (box.width, box.height)
+        # ... and the swatches' label lies inside the Axes (it ran past the right edge)
+        renderer = w.hist_fig.canvas.get_renderer()
+        axes = w.hist_ax.get_window_extent(renderer)
+        (header,) = [t for t in w.hist_ax.texts if "fragment" in t.get_text()]
+        box = header.get_window_extent(renderer)
+        assert axes.x0 <= box.x0 and box.x1 <= axes.x1, (box, axes)
+        w.glass.value = False  # no colours: the narrow chart again
+        assert w.history.blend is None and w.hist_fig.get_size_inches()[0] < 5
     finally:
         w.close()
+
+
+def test_the_swatches_label_fits_a_narrow_chart():
+    """Review r211 11-4: the one label over the colour swatches ran past a narrow chart's
+    right edge; it shrinks (to 9 points at least), then takes its short form."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging.frame_history import SWATCH_HEADER, SWATCH_HEADER_SHORT
+    from teachraster.plotting import plot_history, use_style
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    h = glass_frame("uv_sphere", 64, 48).history(24, 32)
+    for width, label in ((4.6, SWATCH_HEADER), (3.2, SWATCH_HEADER_SHORT)):
+        with matplotlib.rc_context():
+            use_style("classroom")
+            fig = plt.figure(figsize=(width, 4.5))
+            ax = fig.add_axes((1.2 / width, 0.24, (width - 1.34) / width, 0.66))
+            plot_history(ax, h)
+        renderer = fig.canvas.get_renderer()
+        (header,) = [t for t in ax.texts if "fragment" in t.get_text()]
+        box, axes = header.get_window_extent(renderer), ax.get_window_extent(renderer)
+        assert header.get_text() == label and box.x1 <= axes.x1, (width, header.get_text())
+        assert header.get_fontsize() >= 9
+        plt.close(fig)
 
 
 def test_identical_passed_samples_print_on_one_row():
