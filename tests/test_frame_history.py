@@ -703,6 +703,26 @@ def test_lesson_11_tells_each_story():
     # r44 D3: every pixel centre at least 0.2 px from every edge of both triangles (at
     # 0.03 px, under the dashed outline, a centre could not be judged by eye)
     assert _nearest_centre(ns.coarse_on.trace.window[..., :2], 12, 9) >= 0.2
+    # r211 11-1: every corner on the grid drawn (blue's lay off it); the line where the two
+    # surfaces cross is drawn and named, no centre within 0.4 px of it where both cover, and
+    # the answers follow from it: blue nearer left of it, red right
+    xy = ns.coarse_on.trace.window[..., :2]
+    assert (xy[..., 0] >= 0).all() and (xy[..., 0] <= 12).all()
+    assert (xy[..., 1] >= 0).all() and (xy[..., 1] <= 9).all()
+    ys, xs = np.mgrid[0:9, 0:12] + 0.5
+    gap = ns.depth_gap[0] * xs + ns.depth_gap[1] * ys + ns.depth_gap[2]  # red - blue depth
+    both = (tr.render(ns.coarse[:1], 12, 9).triangle_id == 0) & blue
+    assert (np.abs(gap[both]) / np.hypot(*ns.depth_gap[:2]) >= 0.4).all()
+    assert np.array_equal(ns.far_wins, both & (gap < 0))  # red nearer: right of the line
+    assert np.array_equal(ns.redraw_passes, both & (gap > 0))
+    assert (ns.near_left, ns.near_right) == ("blue", "red")
+    assert abs(ns.depth_gap[1]) < 0.1 * abs(ns.depth_gap[0])  # steep: "left of it" reads
+    assert len(ns.crossing) == 2 and np.ptp(ns.crossing[:, 1]) > 3  # drawn across the overlap
+    text = _lesson_11_source()
+    before = text.split("q_far_wins = PredictPixels(")[0]
+    assert "every fragment passes" not in before and "GL_ALWAYS" not in before
+    draw = text.split("def draw_outlines(ax):")[1].split("q_far_wins =")[0]
+    assert "ax.plot(crossing[:, 0], crossing[:, 1]" in draw and "imshow" not in draw
     # §3: the sliver is counter-clockwise on screen, so its edges are E13, E32, E21
     assert tr.Triangle(ns.sliver_xy).front_facing
     assert all(r.edge in ("E13", "E32", "E21") for r in ns.one.history(ns.r, ns.c)
@@ -736,10 +756,16 @@ def test_lesson_11_tells_each_story():
     assert 0.4 * 65535 == round(0.4 * 65535)
     assert all(band >= 1 for band, _ in ns.band_rows.values())
     assert ns.z16.triangle_id[2, 2] == 0 and ns.z16.triangle_id[2, 60] == 0
-    # §5's nan view (r62 #2): 0 wherever render accepts the input, lit only by hand
+    # §5's nan view (r62 #2): 0 on the built-in scenes; r211 11-6: a NaN made as a vertex
+    # shader makes one (normalize of a zero normal) lights every pixel of the triangles that
+    # use the vertex, 3 values each (the normal), and the lit triangles share that vertex alone
     assert not any(ns.nan_counts.values())
-    assert ns.huge.overlay("nan").sum() == 0 and ns.tiny.overlay("nan").sum() == 0
-    assert ns.broken.overlay("nan").sum() == 1
+    lit = ns.broken.overlay("nan")
+    uses = (ns.sphere_mesh.triangles == ns.bad_vertex).any(axis=1)
+    shown = ns.broken.triangle_id
+    assert np.array_equal(lit > 0, (shown >= 0) & uses[np.maximum(shown, 0)])
+    assert set(np.unique(lit[lit > 0])) == {3} and len(ns.lit) == (lit > 0).sum() > 0
+    assert ns.shared == {ns.bad_vertex} and ns.lit_history.shows in ns.shown_by
     # §6: glass, depth writes off: the farther triangle 1 passes and is blended over the red
     assert ns.glass.color[ns.row, ns.col, 0] == pytest.approx(0.575)
     assert ns.back_first[0] == pytest.approx(0.75)
