@@ -452,8 +452,24 @@ def test_frame_inspector_views_clicks_and_scenes():
     from teachraster.widgets.frame_inspector import quad_text
 
     text = quad_text(w.frame, 10, 14)
-    assert text.splitlines()[1].startswith(f"{4 * len(shaded)} lanes launched (4 each), ")
+    assert text.splitlines()[-1].startswith(f"{4 * len(shaded)} lanes launched (4 each), ")
     assert max(len(line) for line in text.splitlines()) <= 90
+    # review r211 11-3: on uv_sphere at (14, 24), the pixel Question 3 names, six triangles
+    # stood on one line and the sixth hid behind the table's sideways scroll; every one is
+    # on a line no longer than the table's own lines now
+    from teachraster.widgets.frame_inspector import QUAD_TEXT_WIDTH
+
+    sphere = tr.render(tr.get_scene("uv_sphere"), None, 64, 48, trace=True)
+    text = quad_text(sphere, 14, 24)
+    lines = text.splitlines()
+    assert max(len(line) for line in lines) <= QUAD_TEXT_WIDTH < 80
+    named = " ".join(lines[1:-1])
+    six = tr.pipeline.debugging.quad_triangles(sphere, 14, 24)
+    assert all(f"{t} ({n} px)" in named for t, n in six.items())
+    assert len(six) == 6 and len(lines) >= 4
+    empty = quad_text(sphere, 0, 0)  # no triangle there: short lines too
+    assert "no lanes launched" in empty
+    assert max(len(line) for line in empty.splitlines()) <= QUAD_TEXT_WIDTH
     w.view.value = "overdraw"
     assert "quad of rows" not in w.table.value
     w.click_at(100.0, 100.0)  # outside the frame: nothing changes
@@ -687,6 +703,26 @@ def test_lesson_11_tells_each_story():
     # r44 D3: every pixel centre at least 0.2 px from every edge of both triangles (at
     # 0.03 px, under the dashed outline, a centre could not be judged by eye)
     assert _nearest_centre(ns.coarse_on.trace.window[..., :2], 12, 9) >= 0.2
+    # r211 11-1: every corner on the grid drawn (blue's lay off it); the line where the two
+    # surfaces cross is drawn and named, no centre within 0.4 px of it where both cover, and
+    # the answers follow from it: blue nearer left of it, red right
+    xy = ns.coarse_on.trace.window[..., :2]
+    assert (xy[..., 0] >= 0).all() and (xy[..., 0] <= 12).all()
+    assert (xy[..., 1] >= 0).all() and (xy[..., 1] <= 9).all()
+    ys, xs = np.mgrid[0:9, 0:12] + 0.5
+    gap = ns.depth_gap[0] * xs + ns.depth_gap[1] * ys + ns.depth_gap[2]  # red - blue depth
+    both = (tr.render(ns.coarse[:1], 12, 9).triangle_id == 0) & blue
+    assert (np.abs(gap[both]) / np.hypot(*ns.depth_gap[:2]) >= 0.4).all()
+    assert np.array_equal(ns.far_wins, both & (gap < 0))  # red nearer: right of the line
+    assert np.array_equal(ns.redraw_passes, both & (gap > 0))
+    assert (ns.near_left, ns.near_right) == ("blue", "red")
+    assert abs(ns.depth_gap[1]) < 0.1 * abs(ns.depth_gap[0])  # steep: "left of it" reads
+    assert len(ns.crossing) == 2 and np.ptp(ns.crossing[:, 1]) > 3  # drawn across the overlap
+    text = _lesson_11_source()
+    before = text.split("q_far_wins = PredictPixels(")[0]
+    assert "every fragment passes" not in before and "GL_ALWAYS" not in before
+    draw = text.split("def draw_outlines(ax):")[1].split("q_far_wins =")[0]
+    assert "ax.plot(crossing[:, 0], crossing[:, 1]" in draw and "imshow" not in draw
     # §3: the sliver is counter-clockwise on screen, so its edges are E13, E32, E21
     assert tr.Triangle(ns.sliver_xy).front_facing
     assert all(r.edge in ("E13", "E32", "E21") for r in ns.one.history(ns.r, ns.c)
@@ -720,10 +756,16 @@ def test_lesson_11_tells_each_story():
     assert 0.4 * 65535 == round(0.4 * 65535)
     assert all(band >= 1 for band, _ in ns.band_rows.values())
     assert ns.z16.triangle_id[2, 2] == 0 and ns.z16.triangle_id[2, 60] == 0
-    # §5's nan view (r62 #2): 0 wherever render accepts the input, lit only by hand
+    # §5's nan view (r62 #2): 0 on the built-in scenes; r211 11-6: a NaN made as a vertex
+    # shader makes one (normalize of a zero normal) lights every pixel of the triangles that
+    # use the vertex, 3 values each (the normal), and the lit triangles share that vertex alone
     assert not any(ns.nan_counts.values())
-    assert ns.huge.overlay("nan").sum() == 0 and ns.tiny.overlay("nan").sum() == 0
-    assert ns.broken.overlay("nan").sum() == 1
+    lit = ns.broken.overlay("nan")
+    uses = (ns.sphere_mesh.triangles == ns.bad_vertex).any(axis=1)
+    shown = ns.broken.triangle_id
+    assert np.array_equal(lit > 0, (shown >= 0) & uses[np.maximum(shown, 0)])
+    assert set(np.unique(lit[lit > 0])) == {3} and len(ns.lit) == (lit > 0).sum() > 0
+    assert ns.shared == {ns.bad_vertex} and ns.lit_history.shows in ns.shown_by
     # §6: glass, depth writes off: the farther triangle 1 passes and is blended over the red
     assert ns.glass.color[ns.row, ns.col, 0] == pytest.approx(0.575)
     assert ns.back_first[0] == pytest.approx(0.75)
@@ -1213,9 +1255,46 @@ def test_glass_swatches_in_the_inspector_are_legible():
         assert len(swatches) == 3 * sum(r.outcome == "passed" for r in w.history)
         for p in swatches:
             box = p.get_window_extent()
-            assert box.width >= 20 and box.height >= 40, (box.width, box.height)
+            # review r211 11-4: about 16 px wide on screen at 4.6 inches; the chart takes
+            # the frame's width where it draws colours
+            assert box.width >= 36 and box.height >= 40, (box.width, box.height)
+        # ... and the swatches' label lies inside the Axes (it ran past the right edge)
+        renderer = w.hist_fig.canvas.get_renderer()
+        axes = w.hist_ax.get_window_extent(renderer)
+        (header,) = [t for t in w.hist_ax.texts if "fragment" in t.get_text()]
+        box = header.get_window_extent(renderer)
+        assert axes.x0 <= box.x0 and box.x1 <= axes.x1, (box, axes)
+        w.glass.value = False  # no colours: the narrow chart again
+        assert w.history.blend is None and w.hist_fig.get_size_inches()[0] < 5
     finally:
         w.close()
+
+
+def test_the_swatches_label_fits_a_narrow_chart():
+    """Review r211 11-4: the one label over the colour swatches ran past a narrow chart's
+    right edge; it shrinks (to 9 points at least), then takes its short form."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging.frame_history import SWATCH_HEADER, SWATCH_HEADER_SHORT
+    from teachraster.plotting import plot_history, use_style
+    from teachraster.widgets.frame_inspector import glass_frame
+
+    h = glass_frame("uv_sphere", 64, 48).history(24, 32)
+    for width, label in ((4.6, SWATCH_HEADER), (3.2, SWATCH_HEADER_SHORT)):
+        with matplotlib.rc_context():
+            use_style("classroom")
+            fig = plt.figure(figsize=(width, 4.5))
+            ax = fig.add_axes((1.2 / width, 0.24, (width - 1.34) / width, 0.66))
+            plot_history(ax, h)
+        renderer = fig.canvas.get_renderer()
+        (header,) = [t for t in ax.texts if "fragment" in t.get_text()]
+        box, axes = header.get_window_extent(renderer), ax.get_window_extent(renderer)
+        assert header.get_text() == label and box.x1 <= axes.x1, (width, header.get_text())
+        assert header.get_fontsize() >= 9
+        plt.close(fig)
 
 
 def test_identical_passed_samples_print_on_one_row():

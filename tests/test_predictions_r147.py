@@ -79,19 +79,25 @@ def _asked_text(name: str, asked: str) -> str:
 
 def test_11_q_redraw_has_outlines_and_depths_not_tints():
     """r147 #2: q_redraw's picture tinted each pixel by the nearer triangle, which with the
-    rule made the answer a look-up. Now outlines only, and the corners' depths in the stem."""
+    rule made the answer a look-up. Now outlines only. r211 11-1: the corners' depths in the
+    stem left plane arithmetic to do; the line where the surfaces cross is drawn and named
+    instead. r211 11-2: "no pixel", the answer of the belief that the nearer depth stays,
+    can be given."""
     ns = lesson("11_debugging_a_frame")
     # the answer: where both cover and blue is nearer than the red depth test-off left
     both = (ns.blue_alone.triangle_id == 0) & ~np.isnan(ns.left)
-    assert ns.redraw_passes.sum() == 9 and (ns.redraw_passes <= both).all()
+    assert ns.redraw_passes.sum() == 6 and (ns.redraw_passes <= both).all()
     assert not (ns.redraw_passes & ns.far_wins).any()  # blue nearer there, not farther
     cells = _cells("11_debugging_a_frame")
     code = _source(cells[_ask_index(cells, "q_redraw = PredictPixels(")])
     assert "draw=draw_outlines" in code and "draw_coarse" not in code
     draw = _source(next(c for c in cells if "def draw_outlines(ax):" in _source(c)))
-    assert "imshow" not in draw.split("def draw_outlines(ax):")[1].split("corner_depths")[0]
+    assert "imshow" not in draw.split("def draw_outlines(ax):")[1].split("q_far_wins")[0]
     stem = _asked_text("11_debugging_a_frame", "q_redraw = PredictPixels(")
-    assert "tint" not in stem and "corner_depths[0]" in stem and "corner_depths[1]" in stem
+    assert "tint" not in stem and "dotted line" in stem and "{near_left}" in stem
+    assert "<i>no pixel</i>" in stem
+    assert 'none="<b>no pixel</b>: blue fails everywhere"' in code
+    assert 'picked="with blue passing"' in code
     seen = seen_before_check("11_debugging_a_frame", "q_redraw = PredictPixels(", "q_redraw")
     assert "tints each pixel" not in seen and "tinted blue" not in seen
 

@@ -75,6 +75,14 @@ FRAME_MARGINS = (0.85, 1.0, 0.15, 0.12, 0.13, 0.75)
 #: The history chart's figure, width and height in inches; it stands in a row of its own,
 #: under the history table (r21 D3, r62 #4), not beside the frame.
 HISTORY_SIZE = (4.6, 4.5)
+#: The chart's width in inches where the history has a colour buffer (glass, a blended
+#: frame): the frame's figure's width, so that each record's three colour swatches are
+#: large enough to read and their label fits above them (review r211 11-4: at 4.6 inches
+#: the glass sphere's four records gave swatches about 16 px wide).
+HISTORY_COLOUR_WIDTH = FRAME_MARGINS[0] + FRAME_BOX[0] + FRAME_MARGINS[2]
+#: The chart's Axes inside its figure, in inches: left (the depth ticks and label), right;
+#: and in fractions of the height: bottom, height (the records' labels under it, the title).
+HISTORY_AXES = (1.2, 0.14, 0.24, 0.66)
 
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
 GLASS_ALPHA = 0.5
@@ -156,20 +164,36 @@ def marker_xy(row: int, col: int, reach: float = 3.0):
     return x, y
 
 
+#: The longest line of :func:`quad_text`: shorter than the history table's own lines (at
+#: most 80 characters), so that no triangle under the table hides behind its sideways scroll.
+QUAD_TEXT_WIDTH = 60
+
+
 def quad_text(frame, row: int, col: int) -> str:
-    """The lines under the history in the quad overshading view: the triangles that shaded
-    the 2×2 quad of pixel (``row``, ``col``), then, on a line of its own (review r96 11-1:
-    one long line ran off a laptop-wide inspector), the lanes launched (four per triangle)
-    and the helpers among them (the overlay's value there, from the same counts)."""
+    """The lines under the history in the quad overshading view: the quad of pixel
+    (``row``, ``col``) and how many triangles shaded it, then those triangles, wrapped
+    onto as many lines as they need (review r211 11-3: six triangles on one line ran past
+    the table's box, and a student counted the five in view), then on a line of its own
+    (review r96 11-1) the lanes launched (four per triangle) and the helpers among them
+    (the overlay's value there, from the same counts). No line is longer than
+    :data:`QUAD_TEXT_WIDTH` characters."""
     r0, c0 = row // 2 * 2, col // 2 * 2
     where = f"quad of rows {r0}–{r0 + 1}, cols {c0}–{c0 + 1}"
     shaded = quad_triangles(frame, row, col)
     if not shaded:
-        return f"{where}: no triangle shaded a pixel of it, no lanes launched"
+        return f"{where}:\nno triangle shaded a pixel of it, no lanes launched"
     lanes, useful = 4 * len(shaded), sum(shaded.values())
-    each = ", ".join(f"{t} ({n} px)" for t, n in shaded.items())
-    return (f"{where}: shaded by {len(shaded)} triangle(s), {each}:\n{lanes} lanes launched "
-            f"(4 each), {lanes - useful} helpers ({(lanes - useful) / lanes:.0%})")  # fmt: skip
+    # the triangles a line at a time, each "188 (1 px)" kept whole on its line
+    each, line = [], ""
+    for item in (f"{t} ({n} px)" for t, n in shaded.items()):
+        if line and len(line) + len(item) + 3 > QUAD_TEXT_WIDTH:  # + ", " and ","
+            each.append(line + ",")
+            line = ""
+        line = f"{line}, {item}" if line else f"  {item}"
+    each.append(line)
+    return "\n".join([f"{where}: shaded by {len(shaded)} triangle(s):", *each,
+                      f"{lanes} lanes launched (4 each), {lanes - useful} helpers "
+                      f"({(lanes - useful) / lanes:.0%})"])  # fmt: skip
 
 
 def _checked_pairs(pairs, frames) -> dict:
@@ -388,7 +412,8 @@ class FrameInspector(Holdable):
             # view never takes room from the frame (a colour bar made with ax= would)
             self.cax = self.fig.add_axes((0.8, 0.14, 0.028, 0.64))
             self.hist_fig = new_figure(HISTORY_SIZE, self.backend)
-            # room for written-out depths (0.9676) and two-line sample labels under MSAA
+            # room for written-out depths (0.9676) and two-line sample labels under MSAA;
+            # placed by _fit_history
             self.hist_ax = self.hist_fig.add_axes((0.26, 0.24, 0.71, 0.66))
             self._draw_frame()
             self._draw_history()
@@ -512,7 +537,18 @@ class FrameInspector(Holdable):
                               lw=2, zorder=6, solid_capstyle="butt",
                               path_effects=[withStroke(linewidth=4.5, foreground="white")])[0]  # fmt: skip
 
+    def _fit_history(self) -> None:
+        """Size the history chart to what it draws: :data:`HISTORY_COLOUR_WIDTH` wide where
+        the history has a colour buffer (swatches above the depths), else
+        :data:`HISTORY_SIZE`; the Axes keeps its margins in inches (:data:`HISTORY_AXES`)."""
+        width = HISTORY_COLOUR_WIDTH if self.history.blend is not None else HISTORY_SIZE[0]
+        if not np.isclose(self.hist_fig.get_size_inches()[0], width):  # a live canvas resizes
+            self.hist_fig.set_size_inches(width, HISTORY_SIZE[1])
+        left, right, bottom, height = HISTORY_AXES
+        self.hist_ax.set_position((left / width, bottom, (width - left - right) / width, height))
+
     def _draw_history(self) -> None:
+        self._fit_history()
         self.hist_ax.clear()
         plot_history(self.hist_ax, self.history)
         if self.frames:  # r22 D1: whose history, as the chart stands under the pair's table

@@ -1075,12 +1075,39 @@ def _draw_colours(ax, h: PixelHistory, x, limits):
             artists += [ax.text(x[i] + dx, hi + band * 1.2, word, fontsize=size,
                                 ha="center", va="bottom") for i in on]  # fmt: skip
         return artists
-    # at the Axes' left edge (x in Axes fractions): the inspector's 327-px Axes holds it
-    # even with one record (its x-range is then only 1.2 wide)
-    artists.append(ax.text(0.02, hi + band * 1.2, "before | fragment (over checks) | after",
-                           fontsize="x-small", ha="left", va="bottom",
-                           transform=ax.get_yaxis_transform()))  # fmt: skip
-    return artists
+    # at the Axes' left edge (x in Axes fractions), made to fit its width
+    header = ax.text(0.02, hi + band * 1.2, SWATCH_HEADER, fontsize="x-small", ha="left",
+                     va="bottom", transform=ax.get_yaxis_transform())  # fmt: skip
+    _fit_header(ax, header)
+    return artists + [header]
+
+
+#: The one label over the colour swatches where each record's cannot be named
+#: (:func:`_draw_colours`), and its short form where even that does not fit.
+SWATCH_HEADER = "before | fragment (over checks) | after"
+SWATCH_HEADER_SHORT = "before | fragment | after"
+
+
+def _fit_header(ax, header) -> None:
+    """Keep the swatches' one label inside the Axes (review r211 11-4: in the inspector's
+    glass view it ran past the right edge): smaller, down to 9 points (12 px at 96 dpi),
+    then in its short form. Measured on the figure's renderer; without one, left as it is."""
+    from matplotlib.font_manager import FontProperties
+
+    try:
+        renderer = ax.figure._get_renderer()
+        right = ax.get_window_extent(renderer).x1
+    except AttributeError:  # (not a matplotlib figure we know how to measure)
+        return
+    for text in (SWATCH_HEADER, SWATCH_HEADER_SHORT):
+        header.set_text(text)
+        header.set_fontsize(FontProperties(size="x-small").get_size_in_points())
+        while header.get_window_extent(renderer).x1 > right - 2:
+            if header.get_fontsize() * 0.9 < 9:
+                break
+            header.set_fontsize(header.get_fontsize() * 0.9)
+        else:
+            return
 
 
 def _fragment_rgba(h: PixelHistory) -> np.ndarray:
