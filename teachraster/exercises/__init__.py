@@ -49,6 +49,7 @@ from .broken_frames import (
 )
 from .capstone_render import BUDGET as CAPSTONE_BUDGET
 from .capstone_render import CALL_LIMIT as CAPSTONE_CALL_LIMIT
+from .capstone_render import WALL_LIMIT as CAPSTONE_WALL_LIMIT
 from .capstone_render import capstone
 from .checks import check, names
 from .report import Failure, Report
@@ -56,6 +57,7 @@ from .report import Failure, Report
 __all__ = [
     "CAPSTONE_BUDGET",
     "CAPSTONE_CALL_LIMIT",
+    "CAPSTONE_WALL_LIMIT",
     "CAUSES",
     "EVIDENCE",
     "Failure",

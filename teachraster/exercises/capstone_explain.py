@@ -103,13 +103,17 @@ def _record_difference(used, reference, pixel, rm, rr):
     return None
 
 
-def named_mistake(used, name, inside: bool = False, case: tuple | None = None) -> str:
+def named_mistake(used, name, inside: bool = False, case: tuple | None = None,
+                  also: tuple = ()) -> str:  # fmt: skip
     """ ": <words>" of the typical mistake exercise ``name``'s own check finds in the student's
     function (over all its cases, :mod:`.diagnosis`), or "" when it names none. ``inside``:
     the pixel shown is strictly inside its triangle, so a tie rule's mistake cannot explain it
     (r49: no winding swap and E > 0 was blamed on the tie rule); another is named first.
     ``case``: the pixel's (args, the package's answer, the student's), on which words that
-    blame float32 must hold too (:func:`.diagnosis.honest_on`, the checker's one rule)."""
+    blame float32 must hold too (:func:`.diagnosis.honest_on`, the checker's one rule).
+    ``also``: further (args, the package's answer) of the scene; with them the mistake named
+    must give the student's answer at the pixel and on each of them, and is said with the
+    pixel's numbers (:func:`_exact_words`)."""
     fn = used.get(name)
     if name not in CHECKED_BY or fn is None:
         return ""
@@ -118,12 +122,81 @@ def named_mistake(used, name, inside: bool = False, case: tuple | None = None) -
     except TypeError:  # an unhashable callable: no cache, no name
         return ""
     checked = CHECKED_AS.get(name, name)
+    # where the function raised at the pixel (no answer), there is nothing to reproduce
+    if also and case is not None and case[2] is not None and words.startswith(_head(checked)):
+        words = run_checker(lambda: _exact_words(used, name, case, also), "")
     words = _staged(checked, words)
     if case is not None and words:
         from .checks import exercise
 
         words = run_checker(lambda: honest_on(exercise(checked), *case, words), words)
     return words
+
+
+def _head(checked: str) -> str:
+    return f"; the {checked} exercise's check names the mistake: "
+
+
+def _exact_words(used, name, case: tuple, also) -> str:
+    """The words of a mistake of the exercise's table, of a kind its check names in the
+    student's function, that gives the student's answer at the pixel (``case``) and at every
+    point of ``also``, said with the pixel's numbers; else that none does. r219: one point
+    may not tell two mistakes apart (the weights along x or along both axes swapped, one
+    texel or another): a mistake is named only where it gives every answer tried, as
+    :data:`.hiz_tile.EXACT` asks, and one the check names on its own cases is not said of a
+    pixel it does not explain."""
+    from .checks import exercise
+    from .diagnosis import gives_every_answer, named_on
+
+    checked = CHECKED_AS.get(name, name)
+    spec = exercise(checked)
+    kinds = _kinds_named(checked, used[name])
+    cases = [case]
+    for args, expected in also:
+        yours, error = _call(used, name, *args)
+        if not error:  # a point where the function raised tells nothing of a mistake
+            cases.append((args, expected, yours))
+    for m in _candidates(spec, kinds):
+        if gives_every_answer(spec, m, cases):
+            return _head(checked) + named_on(spec, m, *case).lstrip(" .:;")
+    return (f"; the {checked} exercise's check names {_kinds_words(kinds)} on its own cases, "
+            f"but no such mistake gives your answers here and at the {len(cases) - 1} other "
+            "points of the scene tried: compare your answer here with the rule")  # fmt: skip
+
+
+def _kinds_named(checked: str, fn) -> list:
+    """The kinds of the typical mistakes exercise ``checked``'s check names in ``fn``, in
+    the order its failures name them (a combination by its parts)."""
+    from .checks import exercise
+
+    table = _words_by_kind(exercise(checked).mistakes)
+    out = []
+    for failure in own_report(checked, fn).failures:
+        for kind in _table_parts(failure.kind, table):
+            if kind not in out:
+                out.append(kind)
+    return out
+
+
+def _table_parts(kind: str, table: dict) -> list:
+    """A failure's kind as kinds of ``table``: itself, or the parts of a combination ([]
+    when it is none of the table's, such as "value" or "raised")."""
+    parts = [kind] if kind in table else kind.split(" and ")
+    return parts if all(part in table for part in parts) else []
+
+
+def _candidates(spec, kinds: list) -> list:
+    """The mistakes of ``spec``'s table (its combinations too) made of ``kinds`` only, single
+    ones first, each in the table's order (as the check prefers them)."""
+    chosen = set(kinds)
+    fit = [m for m in spec.all_mistakes()
+           if {p.kind for p in m.parts or (m,)} <= chosen]  # fmt: skip
+    return sorted(fit, key=lambda m: len(m.parts))
+
+
+def _kinds_words(kinds: list) -> str:
+    quoted = [f"'{kind}'" for kind in kinds]
+    return quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " and " + quoted[-1]
 
 
 def _staged(checked: str, words: str) -> str:
@@ -167,10 +240,10 @@ def _mistake_words(name, fn, inside: bool = False) -> str:
     checked = CHECKED_AS.get(name, name)
     table = _words_by_kind(exercise(checked).mistakes)
     report = own_report(checked, fn)
-    head = f"; the {checked} exercise's check names the mistake: "
+    head = _head(checked)
     for failure in report.failures:
-        parts = [failure.kind] if failure.kind in table else failure.kind.split(" and ")
-        if not all(kind in table for kind in parts):
+        parts = _table_parts(failure.kind, table)
+        if not parts:
             continue
         if inside:  # the tie rules' mistakes say nothing of a centre strictly inside
             parts = [kind for kind in parts if not _about_ties(kind)]
@@ -420,8 +493,9 @@ def _texture(spec, used, reference, row, col) -> str:
         ours = sample(tex, uv[None], "bilinear")[0]
         yours, error = _call(used, "bilinear", tex, uv, "repeat")
         said = error or f"your bilinear(texture, uv, 'repeat') returned {vec(yours, ours)}"
+        case, also = ((tex, uv, "repeat"), ours, yours), _scene_points(reference, tex)
         return (f"{head} {said}, the package's bilinear filter gives {vec(ours, yours)}"
-                f"{named_mistake(used, 'bilinear', case=((tex, uv, 'repeat'), ours, yours))}")  # fmt: skip
+                f"{named_mistake(used, 'bilinear', case=case, also=also)}")  # fmt: skip
     uvs = reference.layout["uv"]
     lod = float(mip_level(reference.ddx[row, col, uvs], reference.ddy[row, col, uvs], tex.shape))
     ours = reference.image[row, col]
@@ -429,6 +503,23 @@ def _texture(spec, used, reference, row, col) -> str:
     said = error or f"your trilinear(pyramid, uv, {lod:.4g}, 'repeat') returned {vec(yours, ours)}"
     return (f"{head} {said}, the package's trilinear filter gives {vec(ours, yours)}"
             f"{named_mistake(used, 'trilinear', case=((mipmap(tex), uv, lod, 'repeat'), ours, yours))}")  # fmt: skip
+
+
+#: Covered pixels of the scene, spread over the frame, at which a named filter mistake must
+#: give the student's answers too (r219; each costs one call of the function).
+POINTS = 8
+
+
+def _scene_points(reference, tex) -> tuple:
+    """(args, the package's bilinear answer) at :data:`POINTS` covered pixels spread over
+    the frame, in reading order: the scene's own points, right and wrong ones."""
+    uv = reference.attr("uv").reshape(-1, 2)
+    covered = np.flatnonzero(np.isfinite(uv).all(axis=1))
+    if not len(covered):
+        return ()
+    picks = covered[np.unique(np.linspace(0, len(covered) - 1, POINTS).round().astype(int))]
+    return tuple(((tex, uv[k].copy(), "repeat"), sample(tex, uv[k][None], "bilinear")[0])
+                 for k in picks)  # fmt: skip
 
 
 def _resolve(used, reference, row, col) -> str:

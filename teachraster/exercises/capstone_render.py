@@ -29,11 +29,12 @@ from ..pipeline.rendering.render_scenes import render
 from . import capstone_glass as glass
 from . import capstone_samples as samples
 from . import output
+from .alarm import CASE_WALL_FACTOR
 from .capstone_explain import CHECKED_AS, explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
 from .capstone_scenes import capstone_scene
 from .report import CheckFailed, Failure, Report
-from .running import CASE_SHARE, effective_budget, run_case, run_checker
+from .running import CASE_SHARE, effective_budget, run_case, run_checker, wall_limit
 from .running import budget as time_budget
 
 #: Frame size of every scene.
@@ -48,6 +49,11 @@ BUDGET = 10.0
 #: function takes microseconds to milliseconds.
 CALL_SHARE = CASE_SHARE
 CALL_LIMIT = BUDGET * CALL_SHARE
+#: The wall-clock seconds a scene's render may take by default, on a machine too busy to give
+#: it its CPU time: the render is one case whose CPU limit is the whole budget, stopped at the
+#: sooner of its case's cap and its check's (:func:`.running.run_case`); the notebook's setup
+#: cell prints it and its "How the check works" quotes it (r219).
+WALL_LIMIT = min(CASE_WALL_FACTOR * BUDGET, wall_limit(BUDGET))
 
 
 #: How close a compared value must be, absolute and relative: 1e-6 is some 17 half-ulps of

@@ -304,6 +304,26 @@ def honest_on(spec: Exercise, args, expected, got, words: str) -> str:
     return words if precision_may_be_named(spec, r, None) else more_than_rounding(spec, r)
 
 
+def gives_every_answer(spec: Exercise, mistake: Mistake, cases) -> bool:
+    """Whether ``mistake`` gives (a symptom: fits) the student's answer on the first of
+    ``cases``, a failing one, and contradicts none of the rest, right or wrong: the discipline
+    of :data:`.hiz_tile.EXACT` (named only where it gives every answer, passing ones
+    included), for answers asked outside the exercise's own cases (r219: the capstone's pixels,
+    where one point may not tell two mistakes apart). ``cases``: (args, expected, got)."""
+    results = []
+    for args, expected, got in cases:
+        ok = run_checker(lambda a=args, e=expected, g=got: bool(spec.same(g, e, a)), False)
+        results.append(Result(-1, tuple(args), expected, got, ok))
+    verdicts = [run_checker(lambda r=r: _fits(spec, mistake, r), False) for r in results]
+    return verdicts[0] is True and False not in verdicts[1:]
+
+
+def named_on(spec: Exercise, mistake: Mistake, args, expected, got) -> str:
+    """``mistake``'s words said on the case (``args``, ``expected``, ``got``), as a check says
+    them (a combination: the parts that change this answer)."""
+    return _named(spec, mistake, Result(-1, tuple(args), expected, got, False))[1]
+
+
 def _is_bools(value) -> bool:
     dtype = getattr(value, "dtype", None)
     return isinstance(value, (bool, np.bool_)) or (dtype is not None and dtype.kind == "b")

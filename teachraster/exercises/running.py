@@ -116,7 +116,13 @@ class Budget:
         return min(self.remaining(), self.seconds * self.share)
 
     def wall_left(self) -> float:
-        return min(WALL_FACTOR * self.seconds, LONGEST) - (time.perf_counter() - self.start)
+        return wall_limit(self.seconds) - (time.perf_counter() - self.start)
+
+
+def wall_limit(seconds: float) -> float:
+    """Wall-clock seconds a whole check with ``seconds`` of CPU budget may take: a machine too
+    busy to give it that CPU (the one place for it; the capstone's notebook quotes it)."""
+    return min(WALL_FACTOR * seconds, LONGEST)
 
 
 _local = threading.local()
@@ -262,7 +268,7 @@ def _too_busy(alarm: Alarm, b: Budget, where: str) -> str:
         # a 10-s budget when the whole process had used 7.1 s)
         wall, cpu, limit = time.perf_counter() - b.start, b.used, b.seconds
         ran = (f"the check ran for {seconds_words(wall)} of wall-clock time (its limit: "
-               f"{seconds_words(min(WALL_FACTOR * b.seconds, LONGEST))}, {WALL_FACTOR:g} times "
+               f"{seconds_words(wall_limit(b.seconds))}, {WALL_FACTOR:g} times "
                f"its budget of CPU){where}, and your function computed for "
                f"{seconds_words(cpu)} of it")  # fmt: skip
         whose = "the check's budget"

@@ -69,26 +69,29 @@ ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1)}
 
 
 def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=False,
-                   wrap_as=None, clamp=None, transpose=False, flip=False):  # fmt: skip
+                   wrap_as=None, clamp=None, transpose=False, flip_u=False, flip_v=False):  # fmt: skip
     """A bilinear filter with knobs for the usual mistakes (the defaults are GL's LINEAR).
 
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
     last texel centres at u = 0 and 1 (x = u·(W − 1)); ``floor="trunc"`` finds the texel to the
     left with int(); ``swap`` gives the left texel the weight of the right one (``"x"``, ``"y"``:
-    along that axis only); ``wrap_as``
+    along that axis only), ``swap="fractions"`` blends along x by y's fraction and along y by
+    x's; ``wrap_as``
     wraps with another mode whatever the case says (clamping x and y to the texel centres
-    first is the same as ``wrap_as="clamp"``); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
+    first is the same as ``wrap_as="clamp"``; ``"swapped"``: clamps for "repeat" and tiles for
+    "clamp"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
     ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels;
-    ``transpose`` swaps the texture's rows and columns; ``flip`` takes 1 − v for v.
+    ``transpose`` swaps the texture's rows and columns (its H and W too), ``"index"`` reads
+    texel (row, col) as ``texture[col, row]`` with H and W right (IndexError where col ≥ H, as
+    the student's raises); ``flip_u`` takes 1 − u for u, ``flip_v`` 1 − v for v.
     """
     tex = np.asarray(texture, dtype=float)
-    if transpose:
+    if transpose is True:
         tex = np.swapaxes(tex, 0, 1)
     h, w = tex.shape[:2]
     centre, span = ORIGINS[origin]
     u, v = np.clip(uv, 0.0, 1.0) if clamp == "uv" else np.asarray(uv, dtype=float)
-    if flip:
-        v = 1.0 - v
+    u, v = (1.0 - u if flip_u else u), (1.0 - v if flip_v else v)
     if clamp == "mod":  # (u, v) wrapped into [0, 1) first, the texels then clamped
         u, v = np.mod(u, 1.0), np.mod(v, 1.0)
         wrap_as = "clamp"
@@ -99,14 +102,21 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         fx = 1 - fx
     if swap in (True, "y"):
         fy = 1 - fy
+    if swap == "fractions":
+        fx, fy = fy, fx
     mode = wrap_as or wrap
+    if mode == "swapped":  # the two modes exchanged
+        mode = "clamp" if wrap == "repeat" else "repeat"
 
     def index(i, n):
         return int(np.mod(i, n)) if mode == "repeat" else int(np.clip(i, 0, n - 1))
 
+    def texel(r, c):
+        return tex[c, r] if transpose == "index" else tex[r, c]
+
     c0, c1, r0, r1 = index(x0, w), index(x0 + 1, w), index(y0, h), index(y0 + 1, h)
-    top = tex[r0, c0] * (1 - fx) + tex[r0, c1] * fx
-    bottom = tex[r1, c0] * (1 - fx) + tex[r1, c1] * fx
+    top = texel(r0, c0) * (1 - fx) + texel(r0, c1) * fx
+    bottom = texel(r1, c0) * (1 - fx) + texel(r1, c1) * fx
     return top * (1 - fy) + bottom * fy
 
 
@@ -217,6 +227,25 @@ def _wrap_words(mode):
     return words
 
 
+def _modes_swapped_words(args, expected, got) -> str:
+    """The two wrap modes exchanged, said from the case's own mode (r219: told only the rule,
+    as "always clamp" fitted its 'repeat' cases and "always repeat" its 'clamp' ones)."""
+    asked, done = ("repeat", "clamped") if args[2] == "repeat" else ("clamp", "tiled")
+    other = "tiled" if done == "clamped" else "clamped"
+    return (f"the wrap modes are exchanged: for wrap {asked!r} you {done}, and for the other "
+            f"mode you {other}; 'repeat' tiles the texture (column −1 is column W − 1), "
+            "'clamp' extends the border texels outwards")  # fmt: skip
+
+
+def _col_row_words(args, expected, got) -> str:
+    """texture[col, row] with H and W right (r219: told only the rule; on a square texture
+    it is the transposed texture, elsewhere another texel or an IndexError)."""
+    h, w = args[0].shape[:2]
+    return (f"you read texel (row, col) as texture[col, row]: numpy's first index is the row "
+            f"(the H = {h} rows run along v), the second the column (the W = {w} columns run "
+            "along u), so it is texture[row, col], texture[y, x]")  # fmt: skip
+
+
 BILINEAR_KNOBS = Knobs(plain_bilinear, {
     "origin": [
         Slip("texel corners", lambda a, e, g: f"you sampled at texel corners: texel centres are "
@@ -232,9 +261,14 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
              Slip("weights swapped", "the weight of the right texel is the fraction x − ⌊x⌋; "
                   "you gave it to the left one (the weights along x are swapped)", "x"),
              Slip("weights swapped", "the weight of the lower texel is the fraction y − ⌊y⌋; "
-                  "you gave it to the upper one (the weights along y are swapped)", "y")],
+                  "you gave it to the upper one (the weights along y are swapped)", "y"),
+             # r219 (a): x's fraction along y and y's along x was told only the rule
+             Slip("fractions swapped", "the two fractions are exchanged: you blended the left "
+                  "and right texels by y's fraction and the upper and lower ones by x's; each "
+                  "axis takes its own", "fractions")],
     "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
-                Slip("always repeat", _wrap_words("repeat"), "repeat")],
+                Slip("always repeat", _wrap_words("repeat"), "repeat"),
+                Slip("wrap modes swapped", _modes_swapped_words, "swapped")],
     "clamp": [
         Slip("clamped (u, v) first", "you clamped (u, v) to [0, 1] first: with wrap 'repeat' a "
              "coordinate outside [0, 1] tiles, and near the border the texels beyond wrap "
@@ -247,11 +281,16 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     ],
     "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
                        f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
-                       "texture[row, col] is texture[y, x]", True)],
+                       "texture[row, col] is texture[y, x]", True),
+                  Slip("indexed [col, row]", _col_row_words, "index")],
+    # r219 (b): 1 − u was told only the rule; u and v both flipped are the two slips together
+    "flip_u": [Slip("u flipped", "you flipped u (1 − u): the texture's column 0 lies at u = 0 "
+                    "(GL's first texel of each row is at s = 0), so the filter takes u as it "
+                    "comes", True)],
     # r199 12-7: (1 − v)·H − ½ was told "one of the four texels alone", though it blends
-    "flip": [Slip("v flipped", "you flipped v (1 − v): the texture's row 0 lies at v = 0, "
-                  "y = v·H − ½ (GL's first row of texel data is at t = 0), so the filter "
-                  "takes v as it comes", True)],
+    "flip_v": [Slip("v flipped", "you flipped v (1 − v): the texture's row 0 lies at v = 0, "
+                    "y = v·H − ½ (GL's first row of texel data is at t = 0), so the filter "
+                    "takes v as it comes", True)],
 })  # fmt: skip
 
 
