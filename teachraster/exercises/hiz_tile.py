@@ -9,8 +9,11 @@ lies outside the triangle's bounding box, so the plane is minimised over only th
 centres inside that box (its border included), at the four extreme centres of that smaller
 rectangle, and no nearer than the nearest vertex; a box holding no centre of the tile leaves
 the triangle no fragment there (the bound is +inf: the block is rejected). The lesson's bound
-is safe but looser: named, not taken (r126 N8-1). A tile with an empty pixel (+inf) rejects
-only a triangle with no fragment in it.
+is safe but looser: named, not taken (r126 N8-1); so is the bound clamped to the vertices'
+depth range at the far end too (r214: the farthest vertex bounds a fragment from behind only),
+while +inf where the plane lies beyond the farthest vertex at every centre in question (no
+fragment there) is accepted as tighter. A tile with an empty pixel (+inf) rejects only a
+triangle with no fragment in it.
 
 Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
 uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`

@@ -25,8 +25,9 @@ The expected answer is computed from the package's pieces: the snapped, oriented
 extreme centres (:func:`~teachraster.core.edges.edge_values_at`) and its tie-aware test
 (:meth:`~teachraster.core.edges.EdgeSetup.inside`). The typical mistakes are the same
 classification with one knob turned (:func:`classify_with`): the offset of another corner,
-the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``,
-another tie rule or a bias larger than E's step, one winding only. Explanations name the
+the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``
+(both offsets, or one alone: llvmpipe's reject offset), another tie rule or a bias larger than
+E's step, one winding only, two vertices swapped whatever the winding. Explanations name the
 first block of the grid that differs, the edge that decides it and its extreme value.
 """
 
@@ -1321,6 +1322,7 @@ def _ticks_in_blocks(ax, size: int) -> None:
 
 
 def _superscript(n: int) -> str:
+    """``n`` in superscript digits ("19" → "¹⁹")."""
     return str(n).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
 
 
