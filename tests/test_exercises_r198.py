@@ -305,6 +305,6 @@ def test_d1_the_float64_reach_is_folded_and_the_visible_task_shorter():
     task = _cell("classify_block_task")
     folded = task.index("<details><summary>How far float64 is exact</summary>")
     assert folded < task.index("2¹⁷ = 131,072 px") < task.index("</details>", folded)
-    assert "compute in float64 (or Python numbers), not float32" in task
+    assert "compute in float64 (or Python numbers), not float32" in " ".join(task.split())
     visible = re.sub(r"<details>.*?</details>", "", task, flags=re.S)
     assert len(visible.split()) < 720  # r198 D.1: 762 visible words

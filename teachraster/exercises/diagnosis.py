@@ -152,13 +152,18 @@ def compose(head: str, words: str) -> str:
 
 
 # -- the engine's own mistakes ----------------------------------------------------------------
-def constant_words(value) -> str:
+def constant_words(value, returned=None) -> str:
+    """The words for an answer that never changes; ``returned``: the number the function
+    returned, where the check read it as the bool ``value`` (r214 item 12: ``return 0`` was
+    told "returns False")."""
     shown = short(value)
     x = None if isinstance(value, _EXACT) else _numbers(value)
     if x is not None and x.size == 1:
         shown = num(float(x.ravel()[0]))
     elif x is not None and 1 < x.size <= 6 and x.ndim == 1:
         shown = vec(x)
+    if returned is not None:
+        shown = f"{short(returned)} (read as {value})"
     return (
         f"your function returns {shown} on every case, whatever its arguments: a "
         "placeholder left in, or a `return` reached too early?"
@@ -194,6 +199,18 @@ def _constant(results: list[Result], per_call: bool = False) -> object | None:
     if not all(near(r.got, first, 0.0) for r in results[1:]):
         return None
     return first
+
+
+def _number_read_as_bool(results: list[Result], value) -> object | None:
+    """The number every case returned, where the check read it as the bool ``value``; else
+    None (judged on what was returned, as :func:`_constant` is)."""
+    if not isinstance(value, (bool, np.bool_)) or not all(r.key is not None for r in results):
+        return None
+    if len(frozenset().union(*(r.key for r in results))) != 1:
+        return None
+    raw = results[0].raw
+    numbers = (int, float, np.integer, np.floating)
+    return raw if isinstance(raw, numbers) and not isinstance(raw, (bool, np.bool_)) else None
 
 
 def _handed_back(results: list[Result]) -> int | None:
@@ -861,7 +878,13 @@ def diagnose(
         # (CONVENTIONS.md, Exercises and grading)
         nan = _all_nan(value)
         kind = "nan" if nan else "constant"
-        words = _NAN_WORDS if nan else (spec.constant or constant_words)(value)
+        if nan:
+            words = _NAN_WORDS
+        elif spec.constant is not None:
+            words = spec.constant(value)
+        else:
+            number = None if spec.call is not None else _number_read_as_bool(results, value)
+            words = constant_words(value, number)
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
     rounded = rounded_mistake()
     mistakes = [m for m in spec.all_mistakes() if m.reads is None or m.reads in reads]

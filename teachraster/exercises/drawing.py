@@ -65,6 +65,17 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     return artists
 
 
+#: The attribute a drawing sets on its axes to have :meth:`.report.Report.plot`'s note (no
+#: answer to draw: an endless loop, an exception) set beside them, right, not across them.
+NOTE_BESIDE = "teachraster_note_beside"
+
+
+def note_beside(ax) -> None:
+    """Ask for the report's note beside ``ax`` (r214 item 2: over a small equal-aspect panel the
+    note's box covered the drawing and its tick labels)."""
+    setattr(ax, NOTE_BESIDE, True)
+
+
 def plain_ticks(ax) -> None:
     """Whole coordinates on both axes, never matplotlib's offset ("+1e5" over ticks 0…12: r64
     01-3, a window 100 000 px from the origin)."""

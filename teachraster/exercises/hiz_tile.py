@@ -9,8 +9,11 @@ lies outside the triangle's bounding box, so the plane is minimised over only th
 centres inside that box (its border included), at the four extreme centres of that smaller
 rectangle, and no nearer than the nearest vertex; a box holding no centre of the tile leaves
 the triangle no fragment there (the bound is +inf: the block is rejected). The lesson's bound
-is safe but looser: named, not taken (r126 N8-1). A tile with an empty pixel (+inf) rejects
-only a triangle with no fragment in it.
+is safe but looser: named, not taken (r126 N8-1); so is the bound clamped to the vertices'
+depth range at the far end too (r214: the farthest vertex bounds a fragment from behind only),
+while +inf where the plane lies beyond the farthest vertex at every centre in question (no
+fragment there) is accepted as tighter. A tile with an empty pixel (+inf) rejects only a
+triangle with no fragment in it.
 
 Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
 uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`
@@ -94,18 +97,31 @@ def _box_corners(xyz, row0: int, col0: int, size: int, open_high: bool = False):
     return np.array([rs[0], rs[0], rs[1], rs[1]]), np.array([cs[0], cs[1], cs[0], cs[1]])
 
 
-def lower_bound(xyz, row0: int, col0: int, size: int, open_high: bool = False) -> float:
+def lower_bound(
+    xyz, row0: int, col0: int, size: int, open_high: bool = False, far_empty: bool = False
+) -> float:
     """The task's bound: the larger of the plane's minimum over the extreme centres of the tile
     cut to the triangle's bounding box and the nearest vertex's depth (+inf: no centre of the
     tile lies in the box). The renderer's plane is also clamped *above*, to the farthest
     vertex's depth; where all four centres lie beyond it that clamp lowered the bound below
     the task's rule (r114 D8-6, a tile the rule rejects and the reference kept): there the
     bare plane's minimum is the bound. ``open_high``: the box without its right and bottom
-    border, whose centres the top-left rule never covers (r137 D8-2: accepted too)."""
+    border, whose centres the top-left rule never covers (r137 D8-2: accepted too).
+    ``far_empty``: +inf where the plane lies beyond the farthest vertex at every one of those
+    centres, which then holds no fragment (r214 item 10: accepted too, as safe and tighter)."""
     box = _box_corners(xyz, row0, col0, size, open_high)
     if box is None:
         return float("inf")
+    if far_empty and _beyond_far(xyz, *box):
+        return float("inf")
     return _bound_at(xyz, *box)
+
+
+def _beyond_far(xyz, rows, cols) -> bool:
+    """Does the bare plane lie beyond the farthest vertex at every centre of the rectangle
+    whose extreme centres are (rows, cols)? (Its minimum there is at one of them.)"""
+    far = float(np.max(np.asarray(xyz, dtype=float)[:, 2]))
+    return bool(plane_at(xyz, rows, cols, clamp=False).min() > far)
 
 
 def _bound_at(xyz, rows, cols) -> float:
@@ -125,9 +141,11 @@ def bound_site(xyz, row0: int, col0: int, size: int):
     if box is None:
         return None
     rows, cols = box
-    k = int(np.argmin(plane_at(xyz, rows, cols)))
-    nearest_vertex = float(np.min(np.asarray(xyz, dtype=float)[:, 2]))
-    by_vertex = float(plane_at(xyz, rows[k : k + 1], cols[k : k + 1], clamp=False)[0]) < nearest_vertex  # fmt: skip
+    bare = plane_at(xyz, rows, cols, clamp=False)
+    # r214: the bare plane's nearest centre (the renderer's plane, clamped at the farthest
+    # vertex, ties all four where the plane lies beyond it there)
+    k = int(np.argmin(bare))
+    by_vertex = float(bare[k]) < float(np.min(np.asarray(xyz, dtype=float)[:, 2]))
     return int(rows[k]), int(cols[k]), _bound_at(xyz, rows, cols), by_vertex
 
 
@@ -178,6 +196,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         *_border_cases(),  # r131 D8-1
         *_one_axis_cases(),  # r131 D8-6
         *_r137_cases(),
+        *_beyond_far_cases(),  # r214 item 1
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -398,6 +417,28 @@ def _r137_cases() -> list[tuple[str, tuple]]:
     ]  # fmt: skip
 
 
+#: r214 item 1: a right triangle (legs 32 px, its depth growing 0.01875 per px in x and 0.009375
+#: in y from its nearest vertex, 0.1 … 0.7) and one turned (its nearest vertex at (40, 4)): a tile
+#: inside its bounding box, beyond its long edge, where the plane at every centre of the tile lies
+#: beyond the farthest vertex (0.789 against 0.7; 0.904 against 0.8).
+_BEYOND_FAR = (
+    (np.array([[0.0, 0.0, 0.1], [32.0, 0.0, 0.7], [0.0, 32.0, 0.4]]), 24, 24, 0.75),
+    (np.array([[40.0, 4.0, 0.15], [40.0, 36.0, 0.55], [8.0, 4.0, 0.8]]), 24, 8, 0.85),
+)
+
+
+def _beyond_far_cases() -> list[tuple[str, tuple]]:
+    """r214 item 1: the bound clamped to the vertices' depth range, [z_min, z_max], passed every
+    case: none had the plane beyond the farthest vertex over the tile's centres in the box. Here
+    it is, and the stored depth lies between the farthest vertex and the plane there: the task's
+    bound rejects (so does +inf, the tile holding no fragment), the clamped one keeps."""
+    return [
+        (f"{words} in the bounding box beyond the long edge, where the plane lies beyond every "
+         "vertex", (xyz, row0, col0, TILE, np.full((TILE, TILE), far)))
+        for (xyz, row0, col0, far), words in zip(_BEYOND_FAR, ("a tile", "turned: a tile"))
+    ]  # fmt: skip
+
+
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
 #: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
@@ -414,15 +455,22 @@ def _with(buffer: np.ndarray, at, value) -> np.ndarray:
 
 
 def same_verdict(got: bool, expected: bool, args=None) -> bool:
-    """The task's verdict, or (r137 D8-2) the verdict of the half-open box: on the box's right
-    and bottom border the top-left rule covers no centre (a right or bottom edge, or the
-    rightmost or bottom vertex, lies there), so leaving those centres out is safe too."""
-    return got == expected or (args is not None and got == half_open_reject(*args))
+    """The task's verdict, or that of a bound as safe and tighter: (r137 D8-2) the half-open
+    box (on the box's right and bottom border the top-left rule covers no centre: a right or
+    bottom edge, or the rightmost or bottom vertex, lies there), or (r214 item 10) +inf where
+    the plane lies beyond the farthest vertex at every centre in question (no fragment there)."""
+    if got == expected:
+        return True
+    return args is not None and any(
+        got == tighter_reject(*args, open_high=o, far_empty=f)
+        for o in (False, True) for f in (False, True) if o or f
+    )  # fmt: skip
 
 
-def half_open_reject(xyz, row0, col0, size, buffer) -> bool:
-    """The verdict of the bound over the box's centres without its right and bottom border."""
-    return bool(lower_bound(xyz, row0, col0, size, open_high=True) >= np.max(buffer))
+def tighter_reject(xyz, row0, col0, size, buffer, open_high=True, far_empty=False) -> bool:
+    """The verdict of :func:`lower_bound` with its options (the half-open box by default)."""
+    bound = lower_bound(xyz, row0, col0, size, open_high=open_high, far_empty=far_empty)
+    return bool(bound >= np.max(buffer))
 
 
 def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
@@ -483,7 +531,12 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "box buffer": bool(near >= _box_buffer_far(xyz, row0, col0, size, buffer)),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
-            "plane farthest": bool(box is None or plane_at(xyz, rows, cols).max() >= far),
+            # r214: the bare plane, no nearer than the nearest vertex (the renderer's clamp
+            # at the far end told a student's max(plane, z_min) apart where the plane there
+            # runs beyond the farthest vertex)
+            "plane farthest": bool(
+                box is None or max(_bare_plane(xyz, rows, cols).max(), zmin) >= far
+            ),
             # r206 M2: the mean of the plane at the box's four extreme centres was told "the
             # plane's largest value at the corners"
             "corner mean": bool(
@@ -495,6 +548,10 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "empty as far plane": bool(near >= np.where(np.isinf(buffer), 1.0, buffer).max()),
             "vertex": bool(zmin >= far),
             "no clamp": bool(bare >= far),
+            # r214 item 1: the bound clamped to the vertices' depth range, at both ends
+            "clamped to range": bool(
+                (np.inf if box is None else min(max(bare, zmin), xyz[:, 2].max())) >= far
+            ),
             "outer corners": bool(_outer_bound(xyz, box) >= far),
             # r149 M3: lesson 10's bound at the tile's outer corners, or the box's corners
             # kept within them, was told "you compared the triangle's nearest vertex"
@@ -835,6 +892,25 @@ MISTAKES = {
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
 }
+
+
+def _clamped_words(args, expected, got) -> str:
+    """r214 item 1: the bound clamped to the vertices' depth range, at the far end too."""
+    xyz = np.asarray(args[0], dtype=float)
+    k = int(np.argmax(xyz[:, 2]))
+    far = num(float(xyz[k, 2]))
+    return (
+        "you clamped the bound to the vertices' depth range, at the far end too (no farther "
+        f"than v{k + 1}'s depth, {far}): no fragment is nearer than the nearest vertex, so "
+        "clamping there is right, but the farthest vertex bounds a fragment's depth from "
+        f"behind, never from in front; here the plane lies beyond {far} at every centre of the "
+        "tile inside the box, so no fragment of the triangle lies in this tile at all, and your "
+        "clamp pulls the bound in front of the tile's farthest stored depth: clamp at the "
+        "nearest vertex only"
+    )
+
+
+MISTAKES["clamped to range"] = _clamped_words
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
 MISTAKES["plane at integer points"] = (
@@ -875,7 +951,7 @@ ONLY_WHOLE = ("whole tile", "whole tile, bare")
 #: only where the mistake gives every answer of the check, passing ones included
 EXACT = (
     "outer corners", "tile outer corners", "box in outer corners", "box outward",
-    "plane farthest", "corner mean", "tile middle",
+    "plane farthest", "corner mean", "tile middle", "clamped to range",
 )  # fmt: skip
 
 
@@ -982,8 +1058,10 @@ def draw_hiz(ax, case, got):
         artists += _extreme_centres(ax, xyz, row0, col0, size)
     # r149 E3: the tile's pixel centres (which lie in the box is the task), ticks on whole pixels
     cy, cx = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
-    artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3,
-                       label="pixel centres")  # fmt: skip
+    artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3)
+    # r214 item 8: the legend's marker larger and darker than the centres' (a 2.5-pt light dot
+    # on white could not be seen)
+    artists += ax.plot([], [], "o", color="#969696", ms=4, label="pixel centres")
     if not np.isfinite(buffer).all():  # r198 C.5: the white pixels, outside the colour bar
         artists += ax.plot([], [], "s", mfc="white", mec="0.5", ms=8,
                            label="nothing drawn yet (+∞)")  # fmt: skip
@@ -1074,7 +1152,10 @@ def _extreme_centres(ax, xyz, row0, col0, size) -> list:
     if box is None:
         return []
     rows, cols = box
-    depth = plane_at(xyz, rows, cols)
+    # r214: the plane no nearer than the nearest vertex, as the bound takes it (the renderer's
+    # clamp at the farthest vertex drew 0.7 at all four where the bound is 0.789)
+    zmin = float(np.min(np.asarray(xyz, dtype=float)[:, 2]))
+    depth = np.maximum(plane_at(xyz, rows, cols, clamp=False), zmin)
     k = int(np.argmin(depth))
     artists = ax.plot(cols + 0.5, rows + 0.5, "o", mfc="none", mec=BOX_COLOUR, mew=1.5, ms=10,
                       label="circles: the triangle's depth at\nthe extreme centres in the box")  # fmt: skip
@@ -1086,7 +1167,8 @@ def _extreme_centres(ax, xyz, row0, col0, size) -> list:
             continue
         # r149 E3: outward, beside its own circle (inward, a 7-px box's labels met in its middle)
         out = (-1 if c == cols.min() else 1, -1 if r == rows.min() else 1)  # y points down
-        artists.append(ax.annotate(num(float(z)), (c + 0.5, r + 0.5), xytext=(18 * out[0], 11 * out[1]),
+        # r214: at most 4 significant digits (0.7890625 ran over the tick labels)
+        artists.append(ax.annotate(f"{float(z):.4g}", (c + 0.5, r + 0.5), xytext=(18 * out[0], 11 * out[1]),
                                    textcoords="offset points", ha="center", va="center",
                                    fontsize="small", bbox={"boxstyle": "round,pad=0.15",
                                    "facecolor": "white", "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
@@ -1104,17 +1186,22 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     inset.add_patch(Rectangle((col0, row0), size, size, fill=False, edgecolor="black", lw=1))
     lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0))
     hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
-    pad = 0.18 * float((hi - lo).max()) + 3  # room for a vertex's label (r64: cut at the border)
+    # room for a vertex's label (r64: cut at the border; r214: labels now reach away from
+    # their vertex, a little further)
+    pad = 0.3 * float((hi - lo).max()) + 3
     lo, hi = lo - pad, hi + pad
     # r198 C.6: every vertex's depth (which way the plane rises), each set outward from the
-    # triangle's centroid, so that a small triangle's three labels do not overlap
+    # triangle's centroid; r214 item 7: each label's box reaches away from its vertex (aligned
+    # on the side facing it), so a small triangle's labels no longer cover one another
     centre = xyz[:, :2].mean(axis=0)
     for x, y, z in xyz:
         d = np.array([x, y]) - centre
         d = d / (np.hypot(*d) or 1.0)
+        ha = "center" if abs(d[0]) < 0.38 else ("left" if d[0] > 0 else "right")
+        va = "center" if abs(d[1]) < 0.38 else ("top" if d[1] > 0 else "bottom")  # y down
         # r149 E3: "small" (was x-small, about 9 pt) on a white ground, clear of the tile's outline
-        inset.annotate(num(float(z)), (x, y), xytext=(7 * d[0], -7 * d[1]),
-                       textcoords="offset points", ha="center", va="center", fontsize="small",
+        inset.annotate(num(float(z)), (x, y), xytext=(3 * d[0], -3 * d[1]),
+                       textcoords="offset points", ha=ha, va=va, fontsize="small",
                        color="#7f0000", bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
                        "edgecolor": "none", "alpha": 0.85}, zorder=4)  # fmt: skip
     inset.set_xlim(lo[0], hi[0])

@@ -299,6 +299,12 @@ def _note(ax, text: str, width: int = 60):
     of it unreadable), wrapped to that part's width."""
     import textwrap
 
+    from .drawing import NOTE_BESIDE
+
+    if getattr(ax, NOTE_BESIDE, False):  # beside the axes, right, where the drawing asks it
+        return ax.text(1.06, 0.5, "\n".join(textwrap.wrap(text, 34)[:12]), transform=ax.transAxes,
+                       ha="left", va="center", fontsize="x-small",
+                       bbox={"boxstyle": "round", "facecolor": "#fff4f2", "edgecolor": "#d7301f"})  # fmt: skip
     left, right = _free_span(ax)
     share = right - left
     lines = textwrap.wrap(text, max(16, int(width * share)))[: 6 if share > 0.9 else 16]

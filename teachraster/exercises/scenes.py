@@ -197,13 +197,17 @@ def _scale(*images) -> tuple[float, float]:
     return (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
 
 
-def _key(axes, scene: Scene, shown):
+def _key(axes, scene: Scene, shown, got=None):
     """What the colours mean: a legend of the categories under the package's panel (r40 08-3:
-    the tile walk's three blues and greens had none), or one colour bar for both pictures."""
+    the tile walk's three blues and greens had none; r214: only those a panel shows, the
+    package's or ``got``), or one colour bar for both pictures."""
     from matplotlib.patches import Patch
 
     if scene.categories:
-        handles = [Patch(facecolor=c, edgecolor="0.5", label=name) for name, c in scene.categories]
+        drawn = [np.asarray(i, dtype=float) for i in (scene.reference, got) if i is not None]
+        present = set(np.unique(np.concatenate([i[np.isfinite(i)] for i in drawn])).tolist())
+        handles = [Patch(facecolor=c, edgecolor="0.5", label=name)
+                   for k, (name, c) in enumerate(scene.categories) if k in present]  # fmt: skip
         return [axes[1].legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02),
                                ncols=2, fontsize="x-small", frameon=False)]  # fmt: skip
     if scene.reference.ndim == 3 or shown is None:
@@ -319,7 +323,7 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
         artists.append(axes[2].text(0.5, 0.5, textwrap.fill("none to show: no picture of yours", 16), ha="center", va="center", transform=axes[2].transAxes, fontsize="x-small"))  # fmt: skip
     else:
         artists += _difference_panel(axes[2], scene)
-    artists += _key(axes, scene, theirs)
+    artists += _key(axes, scene, theirs, got)
     axes[0].set_title("yours", fontsize="small")
     axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 26), fontsize="small")
     for ax in axes:

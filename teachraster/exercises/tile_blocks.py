@@ -25,8 +25,9 @@ The expected answer is computed from the package's pieces: the snapped, oriented
 extreme centres (:func:`~teachraster.core.edges.edge_values_at`) and its tie-aware test
 (:meth:`~teachraster.core.edges.EdgeSetup.inside`). The typical mistakes are the same
 classification with one knob turned (:func:`classify_with`): the offset of another corner,
-the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``,
-another tie rule or a bias larger than E's step, one winding only. Explanations name the
+the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``
+(both offsets, or one alone: llvmpipe's reject offset), another tie rule or a bias larger than
+E's step, one winding only, two vertices swapped whatever the winding. Explanations name the
 first block of the grid that differs, the edge that decides it and its extreme value.
 """
 
@@ -162,7 +163,7 @@ def _oriented(xy):
     return setup, bool(setup.perm[1] == 2)
 
 
-def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="top-left", orient=True, logic="per edge"):  # fmt: skip
+def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="top-left", orient=True, logic="per edge", longer=""):  # fmt: skip
     """classify_block with the usual mistakes as knobs (the defaults are the right answer).
 
     One evaluation E₀ of each edge per block at ``POINTS[points]``, plus the per-edge
@@ -175,8 +176,11 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     edges as given; "cull": every block of a counter-clockwise triangle rejected (r114 item 5);
     "flipped": oriented the wrong way, the interior on every edge's negative side (r141
     D8.1-4; the top-left rule then read from those edges' own kinds); "unchecked": the edges
-    as given and no area computed, so a zero-area triangle is not rejected either (r149 M1).
-    ``logic``
+    as given and no area computed, so a zero-area triangle is not rejected either (r149 M1);
+    "swap always": two vertices swapped whatever the winding (code for counter-clockwise
+    triangles only: a clockwise one is then oriented the wrong way, r214 item 4).
+    ``longer``: "reject" or "accept", that offset alone spans one step more (size steps from
+    the first centre: llvmpipe's cautious reject offset, r214 item 3). ``logic``
     "inside" rejects a block whose four extreme points all lie outside the triangle and
     accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
     accepts a block every edge's maximising corner passes. Edge functions in pixels: exact
@@ -186,6 +190,8 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     scalar, shape = gx.ndim == 0, gx.shape
     px, py, d = POINTS[points](gx.ravel(), gy.ravel(), size)
     setup, ccw = _oriented(xy)
+    if orient == "swap always":  # right for a counter-clockwise triangle, flipped otherwise
+        orient = True if ccw else "flipped"
     if (setup.area2 == 0 and orient != "unchecked") or (orient == "cull" and ccw):
         return _verdicts(np.ones(shape, bool), False, shape, scalar)
     if logic == "inside":
@@ -211,6 +217,9 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         a, b = v[k], v[(k + 1) % 3]
         e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
         r, t = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d)
+        if longer:  # one offset a step longer than the other
+            r2, t2 = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d + 1)
+            r, t = (r2, t) if longer == "reject" else (r, t2)
         rejected |= ~_passes(e0 + r, tie, setup, k, b - a)
         accepted &= _passes(e0 + t, accept_tie, setup, k, b - a)
     if logic == "accept by the best corner":
@@ -267,9 +276,14 @@ def as_kind(value):
     if kinds is None or kinds.dtype != object or kinds.size == 0 and kinds.ndim == 0:
         raise WrongAnswerType(f"returned {short(value)}; expected an array of the texts {names}, one per block")  # fmt: skip
     bad = [k for k in kinds.ravel() if not isinstance(k, str) or k not in KINDS]
+    if bad and kinds.ndim == 0:  # r214 item 12: "returned 0, holding 0" said it twice
+        raise WrongAnswerType(
+            f"returned {short(value)}, not a verdict; expected an array of the texts {names}, "
+            "one per block"
+        )
     if bad:
         raise WrongAnswerType(
-            f"returned {short(value)}, holding {short(bad[0])}; expected one of the texts "
+            f"returned {short(value)}, which holds {short(bad[0])}; expected one of the texts "
             f"{names} for each block"
         )
     return kinds.astype("<U8")
@@ -352,7 +366,7 @@ def _two_corners(args, expected, got) -> str:
 
 def _tie_words(args, expected, got) -> str:
     xy, x0, y0, size = args
-    edge, c = _on_edge(_edge_table(xy, x0, y0, size))
+    edge, c = _on_edge(_edge_table(xy, x0, y0, size), expected, got)
     if edge is None:
         return "a centre on an edge is decided by the top-left rule, as every pixel centre is"
     rule = "includes" if edge["owns"] else "excludes"
@@ -651,6 +665,61 @@ CULLED = _only_whole(
 )
 
 
+def _longer_words(which: str, other: str, effect: str):
+    """r214 item 3: one offset of ``size`` steps, the other right (llvmpipe's cautious reject
+    offset beside an exact accept offset was told only the rule)."""
+
+    def words(a, e, g):
+        return (
+            f"your {which} offset spans size steps (your {other} offset is right), so it "
+            f"reaches x0 + size + ½ (and y0 + size + ½), one step beyond the block: {effect}; "
+            f"its last pixel centre is x0 + size − ½ = {num(a[1] + a[3] - 0.5)}, size − 1 "
+            "steps from its first"
+        )
+
+    return words
+
+
+#: r214 item 3: llvmpipe's reject offset (size steps, lesson 10 §3) with the task's accept
+#: offset, and the mirror; each named only where it gives every answer of the check.
+ONE_OFFSET_LONGER = [
+    _only_whole("reject offset of size steps", _longer_words(
+        "reject", "accept", "a block whose edge fails at every one of its centres, but passes "
+        "a step beyond them, is left partial (llvmpipe's trivial-reject offset does so on "
+        "purpose, a cautious test; the task asks for the exact one, over the block's own "
+        "centres)"), longer="reject"),
+    _only_whole("accept offset of size steps", _longer_words(
+        "accept", "reject", "a block every edge passes at each of its centres, but not a step "
+        "beyond them, is left partial"), longer="accept"),
+]  # fmt: skip
+
+#: r214 item 4: code for counter-clockwise triangles only (two vertices swapped whatever the
+#: winding) was told only the rule; the mirror of "one winding only".
+SWAPS_ALWAYS = _only_whole(
+    "swaps every triangle",
+    "this triangle runs clockwise on screen (y pointing down), so its interior already lies "
+    "on the positive side of its edges as given, yet yours put it on the negative side: you "
+    "swap two vertices whatever the winding (code for counter-clockwise triangles only?); swap "
+    "them only where the area (E₁₂ at v3) is negative, a triangle that runs counter-clockwise "
+    "on screen",
+    orient="swap always",
+)
+
+#: r214 item 5: no tie rule at all (E ≥ 0, or E > 0, on every edge) was told the rule at one
+#: centre, not the student's own: said so where the slip gives every answer of the check (the
+#: knobs' words, the rule at the centre, stay for its combinations).
+NO_TIE_RULE = [
+    _only_whole("no top-left rule (E ≥ 0)", lambda a, e, g: (
+        "your tests count every centre exactly on an edge as inside (E ≥ 0 on all three "
+        "edges): there is no top-left rule in them, yet such a centre is inside only where "
+        "that edge is a top or a left one; here " + _tie_words(a, e, g)), tie="loose"),
+    _only_whole("no top-left rule (E > 0)", lambda a, e, g: (
+        "your tests count no centre exactly on an edge as inside (E > 0 on all three edges): "
+        "there is no top-left rule in them, yet such a centre is inside where that edge is a "
+        "top or a left one; here " + _tie_words(a, e, g)), tie="strict"),
+]  # fmt: skip
+
+
 def _constant(kind: str) -> Mistake:
     """One verdict for every block of every grid, returned as an array (a text is told by the
     check's own constant-answer rule)."""
@@ -915,7 +984,7 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *map(_constant, KINDS), BLOCK_KNOBS, CCW_ONLY],
+        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *map(_constant, KINDS), BLOCK_KNOBS, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
@@ -1070,12 +1139,28 @@ def _corner(c) -> str:
     return f"{vec(c[:2])} (E = {num(c[2])})"
 
 
-def _on_edge(edges):
-    for edge in edges:
-        for key in ("max", "min"):
-            if edge[key][2] == 0:
-                return edge, edge[key][:2]
-    return None, None
+#: The verdicts from the most to the least generous.
+_GENEROUS = {"accepted": 2, "partial": 1, "rejected": 0}
+
+
+def _on_edge(edges, expected=None, got=None):
+    """An edge exactly through one of the block's extreme centres, and that centre: the edge
+    whose rule decides the verdict where one can tell (r214 item 6: at a vertex, on two edges,
+    the first edge found included the centre, while the other excluded it and so rejected the
+    block). An answer more generous than the right one is told an edge that excludes the
+    centre, a stricter one an edge that includes it; the centre is the one that decides
+    (the largest E for a rejection, else the smallest)."""
+    found = [(e, key) for e in edges for key in ("max", "min") if e[key][2] == 0]
+    if not found:
+        return None, None
+    if expected in _GENEROUS and got in _GENEROUS and expected != got:
+        owns = _GENEROUS[got] < _GENEROUS[expected]  # stricter: an edge that includes it
+        deciding = "max" if (expected if not owns else got) == "rejected" else "min"
+        ranked = sorted(found, key=lambda f: (f[0]["owns"] != owns, f[1] != deciding))
+        edge, key = ranked[0]
+        return edge, edge[key][:2]
+    edge, key = found[0]
+    return edge, edge[key][:2]
 
 
 def _by_verdicts(edges, expected, got, cause: bool = False) -> str:
@@ -1152,12 +1237,12 @@ def draw_block_case(ax, case, got):
     first block that differs outlined (its four extreme centres once the hints are spent)."""
     from matplotlib.patches import Rectangle
 
-    from .drawing import plain_ticks
+    from .drawing import note_beside, plain_ticks
 
     xy, gx, gy, size = case[1]
     gx, gy = grid_of(gx, gy)
     want = np.broadcast_to(np.asarray(case[2]), gx.shape)
-    artists = []
+    artists, labelled = [], False
     for bx, by, kind in zip(gx.ravel(), gy.ravel(), want.ravel(), strict=True):
         patch = Rectangle((bx, by), size, size, facecolor=VERDICT_COLOURS[str(kind)], alpha=0.35,
                           edgecolor="#636363", linewidth=0.6)  # fmt: skip
@@ -1183,8 +1268,11 @@ def draw_block_case(ax, case, got):
                                            xytext=(6 if right else -6, -8 if down else 8),
                                            textcoords="offset points", fontsize="x-small",
                                            ha="left" if right else "right",
-                                           va="top" if down else "bottom"))  # fmt: skip
+                                           va="top" if down else "bottom",
+                                           bbox={"boxstyle": "round,pad=0.1", "alpha": 0.8,
+                                                 "facecolor": "white", "edgecolor": "none"}))  # fmt: skip
             artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
+            labelled = True
     yours = "" if got is None or not wrong else f"; first differing block {e}, yours {g}"
     counts = ", ".join(f"{int((want == k).sum())} {k}" for k in KINDS if (want == k).any())
     ax.set_xlabel(f"{counts}{yours}")
@@ -1199,12 +1287,43 @@ def draw_block_case(ax, case, got):
         whole_lo, whole_hi = np.array([gx.min(), gy.min()]), np.array([gx.max(), gy.max()]) + size
         if (whole_hi - whole_lo).max() <= SMALL_GRID:
             lo, hi = whole_lo - pad, whole_hi + pad
+    if labelled:  # r214 item 8: room for the labels "E = …" beside the block, inside the axes
+        extra = 0.2 * (hi[0] - lo[0])
+        lo, hi = lo - [extra, 0.0], hi + [extra, 0.0]
+    if got is None:  # r214 item 2: no answer: the report's note beside the panel, not over it
+        note_beside(ax)
     _block_key(ax, want, got is not None and wrong, below=got is None)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(hi[1], lo[1])
-    plain_ticks(ax)  # the 2^19-px blocks: no "1e6" offset over the ticks
+    if size >= BLOCK_TICKS:
+        _ticks_in_blocks(ax, size)
+    else:
+        plain_ticks(ax)
     ax.set_aspect("equal")
     return artists
+
+
+#: The block size from which a panel's ticks count blocks (0, 1, 2 …), not pixels (r214 item 2:
+#: "1000000" and "2000000", tilted, ran into each other under a 2¹⁹-px grid).
+BLOCK_TICKS = 1024
+
+
+def _ticks_in_blocks(ax, size: int) -> None:
+    """Ticks on the blocks' sides, counted in blocks of ``size`` px, the unit said in the x
+    label (a label such as "2·2¹⁹" at each tick was too wide for the panel)."""
+    from matplotlib.ticker import FuncFormatter, MultipleLocator
+
+    power = int(size).bit_length() - 1
+    unit = f"2{_superscript(power)}" if size == 1 << power else f"{size:,}"
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(MultipleLocator(size))
+        axis.set_major_formatter(FuncFormatter(lambda value, _: f"{value / size:g}"))
+    ax.set_xlabel(f"x0, y0 in blocks of {unit} px; {ax.get_xlabel()}")
+
+
+def _superscript(n: int) -> str:
+    """``n`` in superscript digits ("19" → "¹⁹")."""
+    return str(n).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
 
 
 #: How far from the origin (px) float64 holds every edge function of 8.1 exactly, with vertices
