@@ -823,7 +823,14 @@ def test_review_r187_12b_the_blend_unit_keeps_submission_order(nsb):
     assert "fixed-function" in md and "*output merger*" in md
     assert ('"one primitive must be drawn completely before any subsequent one can affect the '
             'framebuffer" (GL 4.6 core, §2.1 *Execution Model*)') in md  # fmt: skip
-    assert '"blending, logic op, and color write"' in md and "`VK_AMD_rasterization_order`" in md
+    # r217 12b-1: the core spec's own words (Vulkan, *Rasterization Order*), not the
+    # description of the VK_AMD_rasterization_order extension
+    assert '"blending, logic op, and color write"' not in md
+    assert ("Vulkan's *Rasterization Order* section guarantees, at each sample, that \"blending, "
+            "logic operations, and color writes\" run primitive by primitive, \"in an order "
+            "determined by the application\"") in md  # fmt: skip
+    assert "`VK_AMD_rasterization_order` extension lets an application give that order up" in md
+    assert "It never reorders." not in md and "None of them reorders the blends." in md
     assert 'part 9, *Pixel processing – "join phase"*' in md
     assert f"Those {nsb.onto_earlier:,} fragments blended onto an earlier one" in md
     n = nsb.n_layers
