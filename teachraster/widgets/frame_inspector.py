@@ -290,6 +290,13 @@ def paired_tables(named) -> str:
     return f"<div style='display:flex;flex-wrap:wrap;gap:0 24px'>{tables}</div>"
 
 
+def _check_box(value: bool, description: str) -> widgets.Checkbox:
+    """A check box as wide as its words (ipywidgets' default indent and 300 px took a row)."""
+    return widgets.Checkbox(
+        value=value, description=description, indent=False, layout=widgets.Layout(width="auto")
+    )
+
+
 class FrameInspector(Holdable):
     """A built-in scene rendered with ``trace=True``: a view chooser, a pixel's history.
 
@@ -372,18 +379,8 @@ class FrameInspector(Holdable):
                                      description="view", layout=menu, style=fitted)  # fmt: skip
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples",
                                         layout=short)  # fmt: skip
-        self.depth_test = widgets.Checkbox(
-            value=depth_test,
-            description="depth test",
-            indent=False,
-            layout=widgets.Layout(width="auto"),
-        )
-        self.glass = widgets.Checkbox(
-            value=glass,
-            description="glass (blend over)",
-            indent=False,
-            layout=widgets.Layout(width="auto"),
-        )
+        self.depth_test = _check_box(depth_test, "depth test")
+        self.glass = _check_box(glass, "glass (blend over)")
         # each as wide as the column: ipywidgets' ~125-px track gave ~2 px a step for 48 or
         # 64 values (review r62, lesson 11 #4)
         self.row = widgets.IntSlider(value=height // 2 if row is None else row, min=0,
@@ -398,8 +395,7 @@ class FrameInspector(Holdable):
                 self.row.value, self.col.value = changed_pixel(
                     self.frames[scene], pair, self.row.value, self.col.value
                 )
-        self.beside = widgets.Checkbox(value=bool(self.pairs), description="its pair beside",
-                                       indent=False, layout=widgets.Layout(width="auto"))  # fmt: skip
+        self.beside = _check_box(bool(self.pairs), "its pair beside")
         # the table scrolls sideways in its own box where the column is narrower than its
         # lines (a 315-px column at 1024 x 768 and 150 %): its content is as wide as its
         # longest line, and without this the whole widget scrolled
