@@ -340,7 +340,7 @@ def test_d5_failures_and_the_package_both_said_in_the_one_line():
     """A failing answer that also calls the package's own function: its one line says both."""
     report = ex.check("hiz_rejects", box_bound(low_wide=True), budget=120)
     object.__setattr__(report, "package", "it calls teachraster's expected_reject: does not count")
-    with pytest.raises(AssertionError, match=r"7 of 68 cases fail; and not counted"):
+    with pytest.raises(AssertionError, match=r"7 of 70 cases fail; and not counted"):
         report.assert_passed()
 
 

@@ -197,6 +197,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         *_one_axis_cases(),  # r131 D8-6
         *_r137_cases(),
         *_beyond_far_cases(),  # r214 item 1
+        *_one_line_cases(),  # r221 items 2, 4
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -439,6 +440,26 @@ def _beyond_far_cases() -> list[tuple[str, tuple]]:
     ]  # fmt: skip
 
 
+#: r221 item 2: a thin triangle (depth 0.1) whose bounding box meets tile (0, 0, 8) in its last
+#: column of centres only (x = 7.5; the box starts at x = 7.2): its pixels (7, 1) … (7, 6) are
+#: drawn, in front of the stored 0.5.
+_ONE_COLUMN = np.array([[7.2, 1.0, 0.1], [30.0, 4.0, 0.1], [7.2, 7.0, 0.1]])
+
+
+def _one_line_cases() -> list[tuple[str, tuple]]:
+    """r221 item 2: a box ∩ tile of one column (one row) read as empty (``first >= last``)
+    passed every case: none met the tile in a single column or row. Here it does, the triangle
+    in front of the stored depth: the block is kept. r221 item 4: the second's first stored
+    pixel is neither the tile's nearest nor its farthest, so comparing with ``buffer[0, 0]``
+    and with the tile's nearest depth give different verdicts on some case."""
+    stored = np.full((TILE, TILE), 0.5)
+    stored[0, 0], stored[5, 6] = 0.3, 0.05
+    return [("a thin triangle whose bounding box meets the tile in one column of centres, in "
+             "front of the stored depth", (_ONE_COLUMN, 0, 0, TILE, np.full((TILE, TILE), 0.5))),
+            ("a thin triangle whose bounding box meets the tile in one row of centres, in front "
+             "of the stored depth", (_ONE_COLUMN[:, [1, 0, 2]], 0, 0, TILE, stored))]  # fmt: skip
+
+
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
 #: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
@@ -558,6 +579,10 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "tile outer corners": bool(_tile_outer_bound(xyz, row0, col0, size) >= far),
             "box in outer corners": bool(_box_outer_bound(xyz, row0, col0, size) >= far),
             "tile min": bool(near >= buffer.min()),
+            # r221 item 4: the tile's first stored depth (was told "the nearest depth")
+            "first stored": bool(near >= buffer[0, 0]),
+            # r221 item 2: a box ∩ tile of one column or one row read as empty (first >= last)
+            "one line empty": bool(_one_line(xyz, row0, col0, size) or near >= far),
             "strict": bool(near > far),
             "empty ignored": bool(len(finite) and near >= finite.max()),
             "farthest vertex": bool(xyz[:, 2].max() >= far),
@@ -574,6 +599,13 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             "dz/dx sign": bool(_slipped_bound(xyz, box, signs=(-1, 1)) >= far),
             "dz/dy sign": bool(_slipped_bound(xyz, box, signs=(1, -1)) >= far),
         }
+
+
+def _one_line(xyz, row0: int, col0: int, size: int) -> bool:
+    """Does the tile's part inside the triangle's bounding box hold one column or one row of
+    centres only (first == last)?"""
+    box = _box_corners(xyz, row0, col0, size)
+    return box is not None and (box[0][0] == box[0][3] or box[1][0] == box[1][3])
 
 
 def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> float:
@@ -869,6 +901,14 @@ MISTAKES = {
     "tile min": "you compared with the nearest depth stored in the tile: a fragment is hidden "
     "only if it is behind the depth at its own pixel, and only the tile's farthest depth "
     "bounds all of them",
+    # r221 item 4: buffer[0, 0] held the tile's minimum on every case it failed
+    "first stored": lambda a, e, g: (
+        "you compared with the tile's first stored depth, buffer[0, 0] "
+        f"({num(float(a[4][0, 0]))} here), not the farthest ({num(float(np.max(a[4])))}): a "
+        "fragment is hidden only if it is behind the depth at its own pixel, and only the "
+        "tile's farthest stored depth bounds every pixel of the tile"
+    ),
+    "one line empty": lambda a, e, g: _one_line_words(*a[:4]),
     "strict": "a fragment exactly at the stored depth fails the test (strictly nearer "
     "passes), so a block at exactly the tile's farthest depth is rejected too: use ≥",
     "empty ignored": "a pixel of the tile is still empty (+inf here: nothing drawn yet): a "
@@ -892,6 +932,23 @@ MISTAKES = {
     "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
     "y = row0 + ½ … row0 + size − ½",
 }
+
+
+def _one_line_words(xyz, row0, col0, size) -> str:
+    """r221 item 2: the box ∩ tile of one column (row) taken as empty."""
+    box = _box_corners(xyz, row0, col0, size)
+    if box is None or not _one_line(xyz, row0, col0, size):
+        return "a box ∩ tile of one column or one row still holds centres: it is empty only where its first column (row) lies past its last"  # fmt: skip
+    rows, cols = box
+    what, k, at = (
+        ("column", int(cols[0]), "x") if cols[0] == cols[3] else ("row", int(rows[0]), "y")
+    )
+    return (
+        f"you read the tile's part inside the triangle's bounding box as empty, yet here it is "
+        f"one {what} of centres, {what} {k} ({at} = {num(k + 0.5)}), and a fragment can lie "
+        f"there: a box ∩ tile of one {what} still holds centres; it is empty only where its "
+        f"first {what} lies past its last (first > last), not where they are equal"
+    )
 
 
 def _clamped_words(args, expected, got) -> str:
@@ -952,6 +1009,8 @@ ONLY_WHOLE = ("whole tile", "whole tile, bare")
 EXACT = (
     "outer corners", "tile outer corners", "box in outer corners", "box outward",
     "plane farthest", "corner mean", "tile middle", "clamped to range",
+    # r221 item 4: buffer[0, 0] and the tile's minimum share every failing verdict
+    "tile min", "first stored", "one line empty",
 )  # fmt: skip
 
 

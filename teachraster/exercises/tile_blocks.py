@@ -720,6 +720,23 @@ NO_TIE_RULE = [
 ]  # fmt: skip
 
 
+#: r221 items 1, 3: a horizontal edge taken as top whatever its direction (``b.y <= a.y``,
+#: "runs right" forgotten) passed every case, none putting a centre on a bottom edge; and left
+#: edges with no top clause (``b.y < a.y``) were told "a bottom-left rule". Each named where it
+#: gives every answer of the check.
+TIE_KIND_SLIPS = [
+    _only_whole("every horizontal edge top", lambda a, e, g: (
+        "you counted a centre on every horizontal edge as inside: a horizontal edge is a top "
+        "edge only if it runs right (x increasing, the interior below it); one running left "
+        "(x decreasing) is a bottom edge, the interior above it, and the top-left rule "
+        "excludes a centre on it; here " + _tie_words(a, e, g)), tie="top-bottom-left"),
+    _only_whole("left edges only", lambda a, e, g: (
+        "your rule counts left edges but no top edge: a centre on a horizontal edge that runs "
+        "right (x increasing, the interior below it), a top edge, fails in your tests, and the "
+        "top-left rule includes it; here " + _tie_words(a, e, g)), tie="left"),
+]  # fmt: skip
+
+
 def _constant(kind: str) -> Mistake:
     """One verdict for every block of every grid, returned as an array (a text is told by the
     check's own constant-answer rule)."""
@@ -984,7 +1001,7 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *map(_constant, KINDS), BLOCK_KNOBS, CCW_ONLY],
+        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *map(_constant, KINDS), BLOCK_KNOBS, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
@@ -1000,6 +1017,7 @@ def _hard_blocks():
     left = [[8.5, 2.0], [8.5, 30.0], [26.0, 16.0]]  # a vertical left edge at x = 8.5
     right = [[11.5, 2.0], [0.0, 16.0], [11.5, 30.0]]  # a vertical right edge at x = 11.5
     top = [[0.0, 8.5], [30.0, 8.5], [15.0, 30.0]]  # a horizontal top edge at y = 8.5
+    bottom = [[8.5, 2.0], [26.0, 20.5], [2.0, 20.5]]  # a horizontal bottom edge at y = 20.5
     sharp = [[8.0, 8.0], [24.0, 11.0], [11.0, 24.0]]
     return [
         ("a block inside", t, 8, 8, 4),
@@ -1025,6 +1043,10 @@ def _hard_blocks():
         # r149 M4: the first far-out case mirrored (x → 6001 − x), its −1/65536 px² centre now
         # outside a right edge, where a bias added, not taken off, covers it
         ("far out, a centre 1/65536 px² outside a right edge", [[2984.16796875, 3010.59375], [3010.59375, 2994.26171875], [1.0, 0.0]], 3000, 3000, 1),  # fmt: skip
+        # r221 item 1: no case put a centre on a bottom edge (a horizontal edge running left),
+        # and every horizontal edge taken as top passed
+        ("a bottom edge through the lower corners", bottom, 12, 17, 4),
+        ("one pixel, its centre on a bottom edge", bottom, 12, 20, 1),
     ]  # fmt: skip
 
 
