@@ -498,7 +498,6 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
     xyz = np.asarray(xyz, dtype=float)
     box = _box_corners(xyz, row0, col0, size)
     rows, cols = box if box is not None else _corners(row0, col0, size)
-    finite = buffer[np.isfinite(buffer)]
     near = lower_bound(xyz, row0, col0, size)
     far = buffer.max()
     mid_r, mid_c = row0 + (size - 1) / 2, col0 + (size - 1) / 2  # the centre x0 + size/2
@@ -578,6 +577,18 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # kept within them, was told "you compared the triangle's nearest vertex"
             "tile outer corners": bool(_tile_outer_bound(xyz, row0, col0, size) >= far),
             "box in outer corners": bool(_box_outer_bound(xyz, row0, col0, size) >= far),
+            **_read_slips(xyz, row0, col0, size, buffer, box, near),
+        }
+
+
+def _read_slips(xyz, row0, col0, size, buffer, box, near) -> dict[str, bool]:
+    """The verdicts of the mistakes in what is compared or where the tile is read (the stored
+    depths taken, the row and column order, the tile's size, the centres): ``_variants``'s
+    second half."""
+    finite = buffer[np.isfinite(buffer)]
+    far = buffer.max()
+    with np.errstate(all="ignore"):
+        return {
             "tile min": bool(near >= buffer.min()),
             # r221 item 4: the tile's first stored depth (was told "the nearest depth")
             "first stored": bool(near >= buffer[0, 0]),
