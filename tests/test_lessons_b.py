@@ -1048,7 +1048,11 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     seven = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                               if c["cell_type"] == "markdown" or "BEHIND_TEXT" in "".join(c["source"])).split())  # fmt: skip
     assert "the line under the figure" not in seven
-    assert "the line above the figure and the left panel's title print how many" in seven
+    # review r215 07-1: the line named by its words, not its place
+    assert (
+        'the line "ours: the near-plane clip leaves … triangles" and the left panel\'s '
+        "title print how many"
+    ) in seven
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
     moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
     assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
@@ -3597,3 +3601,174 @@ def test_10_r189_items():
         assert any(summary in words for words in summaries), start
         for para in cell.split("<details>")[0].split("\n\n"):
             assert len(para.splitlines()) <= 14, (start, para[:60])
+
+
+# Review r215 07-1, 07-2, 07-4: a pointer to a printed line by its place ("the last line
+# printed above the figure", "the first line printed") named the wrong line three times; the
+# lesson now names a printed line by its own words, in quotes ('the line "steps at depth 0.6:
+# …"'), "…" standing for what the run prints there (numbers, a list).
+_POSITIONAL = (r"\b(?:first|last|second|third|fourth|fifth|final|next|previous|top|bottom)\s+"
+               r"(?:printed\s+)?lines?\b|\blines?\s+printed\b|\bprinted\s+lines?\b")  # fmt: skip
+_NAMED = r'\blines?\b(?:\s+(?:under|below,\s+from))?\s+"([^"]+)"(?:\s+and\s+"([^"]+)")?'
+
+
+def _07_prose(nb) -> list[tuple[int, str]]:
+    """(cell, text) of everything the lesson says in prose: its Markdown cells, and the
+    Markdown its held cells display (the T-junction's, the fan's, behind the camera)."""
+    out = []
+    for k, cell in enumerate(nb.cells):
+        if cell.cell_type == "markdown":
+            out.append((k, cell.source))
+        for o in cell.get("outputs", []):
+            if "text/markdown" in o.get("data", {}):
+                out.append((k, o["data"]["text/markdown"]))
+    return out
+
+
+def _names_a_printed_line(quote: str, printed: str) -> bool:
+    """Whether one line of ``printed`` holds ``quote``'s words in order ("…": anything)."""
+    parts = [" ".join(p.split()) for p in quote.split("…")]
+    for line in printed.splitlines():
+        line, at = " ".join(line.split()), 0
+        for part in parts:
+            found = line.find(part, at)
+            if found < 0:
+                break
+            at = found + len(part)
+        else:
+            return True
+    return False
+
+
+def test_07_review_r215_printed_lines_are_named_by_their_words():
+    """Every printed line the prose names, it names by its words, and the line is there: in
+    the cell that shows the prose (a held text), or in the code cell next to it (above or
+    below); "above the figure": printed before the cell's first figure. No prose points to a
+    printed line by its place."""
+    import re
+
+    from notebook_runs import executed
+
+    nb = executed("07_hard_cases").notebook()
+    named = 0
+    for k, text in _07_prose(nb):
+        flat = " ".join(text.split())
+        assert not re.search(_POSITIONAL, flat, flags=re.I), (k, re.search(_POSITIONAL, flat, re.I))
+        near = [j for j in (k, k - 1, k + 1) if 0 <= j < len(nb.cells)]
+        code = [j for j in near if nb.cells[j].cell_type == "code"]
+        for m in re.finditer(_NAMED, flat):
+            for quote in filter(None, m.groups()):
+                named += 1
+                homes = []
+                for j in code:
+                    outs = nb.cells[j].outputs
+                    for n, o in enumerate(outs):
+                        if o.get("output_type") == "stream" and _names_a_printed_line(
+                            quote, o.text
+                        ):
+                            images = [
+                                i for i, p in enumerate(outs) if "image/png" in p.get("data", {})
+                            ]
+                            homes.append((j, n, images[0] if images else None))
+                assert homes, (k, quote)
+                after = flat[m.end() : m.end() + 20]
+                if after.startswith((" above the figure", ", above the")):
+                    assert any(i is not None and n < i for _, n, i in homes), (k, quote)
+    assert named >= 15
+    cells = [" ".join(c.source.split()) for c in nb.cells]
+    (gaps,) = [c for c in cells if c.startswith("q_gaps.hold()")]
+    assert 'the line "with E >= 0 instead (no tie rule) the gaps are …" above the figure' in gaps
+    (depth,) = [c for c in cells if c.startswith("float32 and unorm24 lose about")]
+    assert '(the line "steps at depth 0.6: …" prints the steps)' in depth
+    assert '(the line "their depths differ by slope/16 per pixel", above the table)' in depth
+
+
+def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
+    """Review r215 07-5: "draws all of the triangle (and the pixels around it) or none of it"
+    left out the most visible outcome. Shifted by (1, 1) px at 1e6 px, the float32 form draws
+    tens of thousands of pixels round the triangle and none of its 64: two edges moved outward
+    by over a thousand pixels, one inward past the triangle. Over the diagonal shifts k = 0 to
+    63 most draw nothing; part of the triangle at 24 to 30, all of it at 51 to 55. C is a
+    multiple of the gap, 65,536. The numbers the text quotes are printed."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    assert ns.shift == 1 and ns.shift_f32.shape == (400, 400) == ns.shift_ours.shape
+    assert (ns.shift_drawn, ns.shift_right, int(ns.shift_ours.sum())) == (74_654, 0, 64)
+    moved, heights = ns.shift_moved, ns.doubled_area / ns.edge_lengths
+    assert (moved[:2] > 1000).all() and moved[2] < -heights[2]  # "past the triangle"
+    assert ns.far_outcomes["pixels, none of the triangle's"] == [1]
+    assert ns.far_outcomes["part of the triangle"] == [24, 26, 28, 30]
+    assert ns.far_outcomes["all of it and pixels round it"] == [51, 53, 55]
+    assert len(ns.far_outcomes["nothing"]) == 56 > 32  # "most draw nothing"
+    for a, b in zip(ns.far_tri + 1e6 + 1, np.roll(ns.far_tri + 1e6 + 1, -1, axis=0)):
+        a32, b32 = a.astype(np.float32), b.astype(np.float32)
+        assert float(a32[0] * b32[1]) % 2**16 == float(a32[1] * b32[0]) % 2**16 == 0
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    for said in ("shifted by (1, 1) px, the edges move: E12 3,870 px outward, E23 1,278 px "
+                 "outward, E31 17 px inward;",
+                 "float32 draws 74,654 pixels of the 400 x 400 window round it, 0 of the "
+                 "triangle's 64", "part of the triangle: 4 shift(s), k = 24, 26, 28, 30",
+                 "all of it and pixels round it: 3 shift(s), k = 51, 53, 55",
+                 "float32's gap near 1e12: 65,536"):  # fmt: skip
+        assert said in printed, said
+    cells = _07_sources()
+    (far,) = [" ".join(c.split()) for c in cells if "q_far = PredictChoice(" in c]
+    explain = far.split("explain=")[1].replace('" f"', "").replace('" "', "")  # one text
+    assert "or none of it" not in explain and "a triangle far larger than this one" in explain
+    assert "{shift_drawn:,} pixels of the {len(shift_f32)}" in explain
+    text = " ".join(next(c for c in cells if c.startswith("Here the float32 version")).split())
+    assert "shift the triangle a little" not in text
+    for said in ("74,654 pixels of the 400 × 400 window round it, and none of the triangle's 64",
+                 "k = 24 to 30 and 51 to 55", "over a thousand pixels", "65,536"):  # fmt: skip
+        assert said in text, said
+
+
+def test_07_review_r215_the_v_label_hides_no_centre():
+    """Review r215 07-6: V's name on a white box hid the covered centres of pixels (3, 7) and
+    (4, 7) in every panel of the T-junction figure. It stands at a pixel corner now, on no
+    box: drawn as the lesson draws it (100 dpi, the notebook's), the pixels its letter and
+    white outline change keep clear of every centre's dot in all three panels."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    cells = _07_sources()
+    imports = cells[1].split("style = use_style")[0].replace("%matplotlib inline\n", "")
+    helpers = next(c for c in cells if c.startswith("# The lesson's helpers"))
+    mesh = next(c for c in cells if c.startswith("# Triangle ABC, and two triangles"))
+    held = next(c for c in cells if c.startswith("q_gaps.hold()"))
+    figure = held[held.index("fig, axes = plt.subplots(1, 3") : held.index("plt.show()")]
+    scope = {}
+    exec(imports + "use_style('classroom')\n" + helpers + mesh, scope)
+    scope["t_crack"] = {name: np.zeros((16, 16), dtype=bool) for name in scope["t_cases"]}
+    exec(figure, scope)
+    fig = scope["fig"]
+    fig.set_dpi(100)  # the notebook's
+
+    def picture():
+        fig.canvas.draw()
+        return np.asarray(fig.canvas.buffer_rgba())[..., :3].astype(int)
+
+    labels = [next(t for t in ax.texts if t.get_text() == "V") for ax in scope["axes"]]
+    picture()  # laid out once, then frozen: two pictures differ only by what is hidden
+    fig.set_layout_engine("none")
+    with_v = picture()
+    for label in labels:
+        label.set_visible(False)
+    ink = np.abs(picture() - with_v).sum(axis=-1) > 0  # the pixels V's letter changes
+    rows, cols = np.nonzero(ink)
+    height = ink.shape[0]
+    for ax, label in zip(scope["axes"], labels):
+        spot = label.get_position()
+        corner = np.subtract(spot, (0, 0.2))  # a fifth of a pixel below a pixel corner
+        assert np.array_equal(corner, np.round(corner)) and label.get_bbox_patch() is None
+        dots = [ln for ln in ax.lines if ln.get_marker() == "o" and len(ln.get_xdata()) > 20]
+        assert len(dots) == 2  # covered and not
+        for ln in dots:
+            x, y = ax.transData.transform(np.column_stack(ln.get_data())).T
+            reach = ln.get_markersize() / 2 * fig.dpi / 72  # a dot's radius, in pixels
+            gap = np.hypot(cols[:, None] - x, rows[:, None] - (height - y)).min(axis=0)
+            assert (gap > reach).all(), (ax.get_title(), gap.min(), reach)
+    plt.close(fig)

@@ -613,3 +613,48 @@ def test_ticking_no_order_works_sets_the_chips_aside():
     assert "no order works" not in box.data["hint"]  # the box's own words stay unique
     plain = PredictOrder("Order?", ["a", "b"], answer=["a", "b"])
     assert "Ticking" not in plain.data["hint"]
+
+
+def test_the_point_marker_stays_on_the_plot_and_an_answer_off_it_is_refused():
+    """Review r215 07-3: lesson 07's q_behind marker, dragged past the plot's top-left corner
+    to (-5, -5), vanished; the mouse could not bring it back, and Check graded the off-image
+    answer. The page now keeps the marker inside the plot's data rectangle (xlim x ylim, either
+    way round) with or without ``along``, and an answer outside it (a saved state, or code)
+    keeps Check disabled; the kernel refuses the same points (one rectangle, both sides)."""
+    from pathlib import Path
+
+    box = [[0, 32], [32, 0]]  # q_behind's: a pixel grid, y down
+    along = [[0, 16], [40, 16]]  # a segment running past the plot's right edge
+    cases = [([-5, -5], None, box), ([40.5, 33], None, box), ([3.14159, 7.5], None, box),
+             ([-5, -5], None, None), ([36, 2], along, box), ([20, 2], along, box),
+             ([31.99996, 1], None, box)]  # fmt: skip
+    got = call_js(("predict_figure",), [("constrainPoint", list(c)) for c in cases])
+    assert got == [[0, 0], [32, 32], [3.1416, 7.5], [-5, -5], [32, 16], [20, 16], [32, 1]]
+    points = [[0, 0], [32, 32], [16, 8], [-5, -5], [16, 32.5], [-0.0001, 3], None]
+    answered = call_js(("predict_figure",), [("pointAnswered", [p, box]) for p in points]
+                       + [("pointAnswered", [[-5, -5], None])])  # fmt: skip
+    assert answered == [True, True, True, False, False, False, False, True]
+    # the kernel: the same rectangle, from xlim and ylim, in the page's data
+    q = PredictPoint("Where does v3 land?", answer=(16, 8), draw=None, xlim=(0, 32),
+                     ylim=(32, 0), start=(28.8, 28.8), tolerance=1.5, units="px")  # fmt: skip
+    assert q.data["box"] == box
+    assert [q.inside(p) for p in points[:-1]] == answered[:-2]
+    with pytest.raises(ValueError, match="outside the plot"):
+        q.given = (-5, -5)
+    assert q.given is None
+    q.state = {**q.state, "given": [-5, -5], "revealed": True}  # as a page before r215 sent it
+    assert not q.revealed  # refused: no reveal, the answer not sent
+    assert "reveal" not in q.state
+    q.given = (0, 0)  # the marker at the corner it is clamped to: an answer
+    q.check()
+    assert q.revealed and q.correct is False and "17.9 px" in q.verdict()
+    for bad in (dict(answer=(40, 8)), dict(answer=(16, 8), start=(-1, 4))):
+        with pytest.raises(ValueError, match="outside the plot"):
+            PredictPoint("Where?", **{"draw": None, "xlim": (0, 32), "ylim": (32, 0), **bad})
+    # the page uses them: every drag and key step through constrainPoint, Check on pointAnswered
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    point = js[js.index("function mountPoint") : js.index("function mountOrder")]
+    assert "constrainPoint(p, data.along, box)" in point and "const box = data.box" in point
+    assert point.count("constrain(") == 2 and "toFixed" not in point  # drag and keys
+    assert "checkDisabled(state.revealed, answered())" in point
+    assert "POINT_HINT" in point and "arrow keys" in js.split("POINT_HINT =")[1].split(";")[0]

@@ -410,11 +410,13 @@ class PredictPoint(FigurePrediction):
     draw : callable
         ``draw(ax)`` draws the figure (the widget sets ``xlim`` and ``ylim`` afterwards).
     xlim, ylim : (2,) floats
-        The Axes' limits (``ylim`` may run downwards, as pixel grids do).
+        The Axes' limits (``ylim`` may run downwards, as pixel grids do). The marker stays
+        inside them (a drag past the edge leaves it on the edge), and an answer outside them
+        is refused; ``answer`` and ``start`` must lie inside them.
     start : (2,) array-like, optional
         Where the marker starts (default: the middle of the Axes, or of ``along``).
     along : ((x0, y0), (x1, y1)), optional
-        Keep the marker on this segment.
+        Keep the marker on this segment (and inside the Axes' limits).
     tolerance : float
         A marker this close to the answer (data units) is right.
     units : str
@@ -496,8 +498,13 @@ class PredictPoint(FigurePrediction):
             raise TypeError(f"readout must be a non-empty str or None, got {readout!r}")
         # the readout shows as many decimals as one key step needs (none for whole codes)
         digits = 0 if step >= 1 else min(6, int(np.ceil(-np.log10(step) - 1e-9)))
+        self._box = (tuple(xlim.tolist()), tuple(ylim.tolist()))
+        for name, point in (("answer", answer), ("start", start)):
+            if not self.inside(point):  # the marker cannot reach it, or starts out of sight
+                raise ValueError(f"{name} {point.tolist()} lies outside the plot, "
+                                 f"xlim {xlim.tolist()}, ylim {ylim.tolist()}")  # fmt: skip
         super().__init__(question, explain, {
-            "kind": "point", "start": start.tolist(),
+            "kind": "point", "start": start.tolist(), "box": [xlim.tolist(), ylim.tolist()],
             "along": None if along is None else along.tolist(), "tolerance": tolerance,
             "units": html.escape(units), "keyStep": step,
             "readout": None if readout is None else html.escape(readout),
@@ -506,7 +513,26 @@ class PredictPoint(FigurePrediction):
 
     @FigurePrediction.given.setter
     def given(self, point) -> None:
-        self.state = {**self.state, "given": as_finite("point", point, (2,)).tolist()}
+        point = as_finite("point", point, (2,))
+        if not self.inside(point):
+            raise ValueError(f"point {point.tolist()} lies outside the plot, xlim "
+                             f"{list(self._box[0])}, ylim {list(self._box[1])}")  # fmt: skip
+        self.state = {**self.state, "given": point.tolist()}
+
+    def inside(self, point) -> bool:
+        """Whether ``point`` lies in the plot's data rectangle (its edges included), where
+        the page keeps the marker (``constrainPoint``, ``pointAnswered`` in
+        ``static/predict_figure.js``): only such a point is an answer."""
+        try:
+            xy = [float(v) for v in point]
+        except (TypeError, ValueError):  # not two numbers: no point at all
+            return False
+        return len(xy) == 2 and all(min(lim) <= v <= max(lim) for v, lim in zip(xy, self._box))
+
+    def _answered_in(self, state: dict) -> bool:
+        # a point off the picture (a saved state, a page from before r215) is no answer
+        given = state.get("given")
+        return given is not None and self.inside(given)
 
     @property
     def gap(self) -> float | None:

@@ -76,10 +76,41 @@ export function pressAnswer(down, up, before, dragged) {
   return Math.hypot(up[0] - down[0], up[1] - down[1]) < CLICK_PX ? before : dragged;
 }
 
+// Where the point marker goes for a pointer or an arrow key at p (data units): onto the
+// segment `along` when the question has one, to 4 decimals, and always inside the plot's data
+// rectangle `box` ([[x0, x1], [y0, y1]], PredictPoint's xlim and ylim, either way round), so
+// a drag past the plot's edge leaves the marker on the edge, in sight (review r215 07-3:
+// dragged off the plot it vanished, the mouse could not bring it back, and Check graded the
+// answer off the picture). Rounded before it is clamped: a bound stays the bound.
+export function constrainPoint(p, along, box) {
+  let q = p;
+  if (along) {
+    const [a, b] = along;
+    const d = [b[0] - a[0], b[1] - a[1]];
+    const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] ** 2 + d[1] ** 2)));
+    q = [a[0] + t * d[0], a[1] + t * d[1]];
+  }
+  q = q.map((v) => Number(v.toFixed(4)));
+  if (!box) return q;
+  return q.map((v, k) => Math.min(Math.max(v, Math.min(...box[k])), Math.max(...box[k])));
+}
+
+// A point answers only inside the plot's data rectangle (no box: anywhere): a marker off the
+// picture, from a saved state or code, keeps Check disabled (PredictPoint.given refuses it)
+export function pointAnswered(given, box) {
+  if (!given) return false;
+  return !box || given.every((v, k) => v >= Math.min(...box[k]) && v <= Math.max(...box[k]));
+}
+
 export function pointVerdict(answer, given, tolerance) {
   const gap = Math.hypot(given[0] - answer[0], given[1] - answer[1]);
   return { gap, correct: gap <= tolerance };
 }
+
+// the point question's instruction: the arrow keys move the marker too, once the figure has
+// been clicked (review r215 07-3: nothing said so)
+export const POINT_HINT = "Drag the orange marker to your answer (or click the figure, then " +
+  "use the arrow keys; Shift: ten steps).";
 
 // the live readout of a point marker's x ("code 186"): data.readout, data.readoutDigits
 export function readoutText(label, x, digits) {
@@ -438,17 +469,11 @@ function mountPoint(root, data, host) {
   let state = { given: null, revealed: false, ...host.state() };
   const { canvas, ctx, toPx, toData } = pictureBox(root, data);
   const { check, show, waiting } = checkRow(root, data, () => reveal(true));
-  root.insertBefore(element("div", { text: "Drag the orange marker to your answer." }), canvas.parentElement);
+  root.insertBefore(element("div", { text: POINT_HINT }), canvas.parentElement);
   const start = data.start;
-
-  // the pointer's point, onto the segment `along` when the question says so
-  function constrain(p) {
-    if (!data.along) return p;
-    const [a, b] = data.along;
-    const d = [b[0] - a[0], b[1] - a[1]];
-    const t = Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / (d[0] ** 2 + d[1] ** 2)));
-    return [a[0] + t * d[0], a[1] + t * d[1]];
-  }
+  const box = data.box || null; // the plot's data rectangle (none in a page saved before r215)
+  const constrain = (p) => constrainPoint(p, data.along, box);
+  const answered = () => pointAnswered(state.given, box);
   function readoutNow() {
     const g = state.given || start;
     return readoutText(data.readout, g[0], data.readoutDigits);
@@ -540,12 +565,12 @@ function mountPoint(root, data, host) {
       ctx.fillText(text, x, y);
       ctx.textAlign = "left";
     }
-    check.disabled = checkDisabled(state.revealed, state.given !== null);
-    check.title = checkTitle(state.revealed, state.given !== null);
+    check.disabled = checkDisabled(state.revealed, answered());
+    check.title = checkTitle(state.revealed, answered());
   }
   const paint = painter(canvas, draw);
   function reveal(byClick) {
-    if (state.given === null) return;
+    if (state.given === null || (byClick && !answered())) return;
     if (byClick && state.revealed) return; // checked once: the first answer is kept
     const known = revealStart(host, data, state, byClick, { revealed: true, given: state.given }, waiting);
     if (!known) return paint.request();
@@ -565,8 +590,7 @@ function mountPoint(root, data, host) {
     },
     onDrag(_i, p, e) {
       if (state.revealed) return;
-      state.given = constrain(snapDragged(toData(p), data.readout, data.readoutDigits))
-        .map((v) => Number(v.toFixed(4)));
+      state.given = constrain(snapDragged(toData(p), data.readout, data.readoutDigits));
       paint.request(e);
     },
     onRelease(_i, p) {
@@ -586,8 +610,7 @@ function mountPoint(root, data, host) {
     e.preventDefault();
     const g = state.given || start;
     const step = data.keyStep * (e.shiftKey ? 10 : 1); // Shift: ten steps at a time
-    state.given = constrain([g[0] + d[0] * step, g[1] + d[1] * step * Math.sign(data.transform[3])])
-      .map((v) => Number(v.toFixed(4)));
+    state.given = constrain([g[0] + d[0] * step, g[1] + d[1] * step * Math.sign(data.transform[3])]);
     paint.request(e);
     host.setState({ given: state.given });
   });
