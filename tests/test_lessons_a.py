@@ -1230,6 +1230,10 @@ def test_05b_explore_heading_sits_just_before_its_widget():
     assert cells[at].startswith("## 6. Explore") and "cell below" not in cells[at]
     assert "DepthPrecisionExplorer(" in cells[at + 1] and "where_reaches(" in cells[at + 2]
     assert not any("## 6." in c for c in cells[:at])
+    # review r223 05b-4: float32 + reverse-Z in the explorer shows q_reverse's Δz at z = 300,
+    # so the explorer waits for both questions, as the DepthValuesExplorer cell does
+    lines = cells[at + 1].splitlines()
+    assert lines[0].startswith("q_fight.hold()") and lines[1].startswith("q_reverse.hold()")
 
 
 def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():
