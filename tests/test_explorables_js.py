@@ -1115,6 +1115,34 @@ def test_depth_lens_ticks_are_distinct_round_and_show_300():
     assert "smallest denormal" in at_near and "smallest denormal" not in beyond
 
 
+def test_depth_lens_stays_within_near_and_far_and_says_when_it_holds_no_value():
+    """Review r223 05b-2: zoomed out (zoom -2) with the near plane at 0.01, the lens at z = 500
+    read "z = 500.0 ± 906000", into negative z and far past the far plane. Review r223 05b-3:
+    zoomed in to ± 2.29e-8 at z = 10 (near 1), every row stayed blank."""
+    wide, fine, inside = [500.0, 1.812e6, 0.01, 1000.0], [10.0, 4.58e-8, 1.0, 1000.0], [
+        300.0, 0.2, 0.1, 1000.0]  # fmt: skip
+    rows = [("lensRow", [*case, f]) for case in (wide, fine, inside)
+            for f in ("unorm16", "unorm24", "float32", "reversed")]  # fmt: skip
+    got = call_js(DEPTH, [("lensWindow", wide), ("lensTitle", wide), ("lensWindow", inside),
+                          ("lensTitle", inside), ("lensTitle", fine), *rows])  # fmt: skip
+    win, title, win_in, title_in, title_fine = got[:5]
+    assert (win["za"], win["zb"], win["cut"]) == (0.01, 1000.0, True)
+    assert title == "lens: z from 0.01 (near) to 1000 (far) (linear)" and "±" not in title
+    assert not win_in["cut"] and win_in["za"] == pytest.approx(299.9) and "±" in title_in
+    assert "±" in title_fine
+    wide_rows, fine_rows, inside_rows = got[5:9], got[9:13], got[13:17]
+    for row in wide_rows:  # the whole range: too many values in every buffer
+        assert row["dense"] and row["text"].endswith("zoom in to see them one by one")
+    for row in fine_rows:  # finer than every buffer's step there: said, not left blank
+        assert "values" not in row and row["text"] == "no stored value within ± 2.29e-8: zoom out"
+    # z = 300 ± 0.1 (near 0.1): unorm16 (step about 14) has none there, unorm24 and float32
+    # (step 0.054) a few single values, reverse-Z (step 1.3e-5) too many to draw
+    assert inside_rows[0]["text"] == "no stored value within ± 0.1: zoom out"
+    for row in inside_rows[1:3]:
+        assert 2 <= len(row["values"]) <= 5 and all(299.9 <= z <= 300.1 for z in row["values"])
+    assert inside_rows[3]["dense"]
+
+
 def test_diamond_explorer_outlines_only_the_pixels_the_line_crosses():
     """Review r83 12a-4: the walk outlined all 5 candidates of every column, rows 0-5 of the
     6-row grid at the start; review r88: one row either side of the line still outlined rows

@@ -1165,6 +1165,12 @@ def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_
     assert set(np.unique(ns.apart)) <= {-2, -1, 0, 1, 2}  # "a rounding or so apart"
     assert (ns.apart == 0).mean() > 0.5  # "most pixels"
     assert len(ns.shown_after - ns.shown_before) > 0.5 * len(ns.shown_after)  # "most ... elsewhere"
+    # review r223 05b-5: the text names the pan the float32 cell makes ("a third of a pixel" was
+    # not its 0.3 px)
+    text = "".join(_cells("05b_depth_precision", "markdown"))
+    code = "".join(_cells("05b_depth_precision", "code"))
+    assert "camera panned by 0.3 px" in code and "Pan the camera by 0.3 px" in text
+    assert "third of a" not in text
     # GL's [-1, 1] NDC: the far squares fight again, though less than unorm24's
     assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
     assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
@@ -1230,6 +1236,10 @@ def test_05b_explore_heading_sits_just_before_its_widget():
     assert cells[at].startswith("## 6. Explore") and "cell below" not in cells[at]
     assert "DepthPrecisionExplorer(" in cells[at + 1] and "where_reaches(" in cells[at + 2]
     assert not any("## 6." in c for c in cells[:at])
+    # review r223 05b-4: float32 + reverse-Z in the explorer shows q_reverse's Δz at z = 300,
+    # so the explorer waits for both questions, as the DepthValuesExplorer cell does
+    lines = cells[at + 1].splitlines()
+    assert lines[0].startswith("q_fight.hold()") and lines[1].startswith("q_reverse.hold()")
 
 
 def test_05b_resolution_chart_before_the_predict_does_not_draw_the_answer():

@@ -358,11 +358,12 @@ function drawLegend(ctx, g, W) {
 
 function drawLens(ctx, g, W, z0, width, n, far) {
   const pw = W - g.left - g.right;
-  const [za, zb] = [z0 - width / 2, z0 + width / 2];
+  const win = lensWindow(z0, width, n, far);
+  const [za, zb] = win ? [win.za, win.zb] : [z0 - width / 2, z0 + width / 2];
   const xOf = (z) => g.left + ((z - za) / (zb - za)) * pw;
   ctx.fillStyle = "#111";
   ctx.font = "bold 14px sans-serif";
-  ctx.fillText(`lens: z = ${lensCentre(z0, width)} ± ${fmt(width / 2, 3)} (linear)`, g.left, g.lensTop - 10);
+  ctx.fillText(lensTitle(z0, width, n, far), g.left, g.lensTop - 10);
   FORMATS.forEach(([f, name], k) => {
     const y = g.lensTop + k * (g.lensRow + 4);
     ctx.strokeStyle = "#999";
@@ -370,15 +371,15 @@ function drawLens(ctx, g, W, z0, width, n, far) {
     ctx.fillStyle = "#111";
     ctx.font = "14px sans-serif";
     ctx.fillText(name, 8, y + g.lensRow / 2 + 5);
-    const zs = valuesIn(za, zb, n, far, f, 600);
-    if (zs === null) {
-      ctx.fillStyle = densityColour(1e4);
+    const row = lensRow(z0, width, n, far, f);
+    if (row.text) {
+      ctx.fillStyle = row.dense ? densityColour(1e4) : "#fff";
       ctx.fillRect(g.left + 1, y + 1, pw - 1, g.lensRow - 1);
-      ctx.fillStyle = "#fff";
-      ctx.fillText(`${countBetween(Math.max(za, n), Math.min(zb, far), n, far, f).toLocaleString()} values: ` +
-        "zoom in to see them one by one", g.left + 8, y + g.lensRow / 2 + 5);
+      ctx.fillStyle = row.dense ? "#fff" : "#555";
+      ctx.fillText(row.text, g.left + 8, y + g.lensRow / 2 + 5);
       return;
     }
+    const zs = row.values;
     ctx.strokeStyle = "#111";
     ctx.lineWidth = 1.5;
     ctx.beginPath();
@@ -402,6 +403,41 @@ function drawLens(ctx, g, W, z0, width, n, far) {
     ctx.fillText(t.label, x, y);
   }
   ctx.textAlign = "left";
+}
+
+// the lens' window of z: z0 ± width/2 cut to [near, far], where the buffers store values (review
+// r223 05b-2: zoomed out with the near plane at 0.01 it read "z = 500.0 ± 906000", reaching
+// into negative z and far past the far plane); null when none of it lies there
+export function lensWindow(z0, width, n, far) {
+  const za = Math.max(z0 - width / 2, n);
+  const zb = Math.min(z0 + width / 2, far);
+  if (!(zb > za)) return null;
+  return { za, zb, cut: za > z0 - width / 2 || zb < z0 + width / 2 };
+}
+
+// the lens' title: its centre and half-width, or the range it is cut to
+export function lensTitle(z0, width, n, far) {
+  const win = lensWindow(z0, width, n, far);
+  if (win === null) return `lens: z = ${fmt(z0, 4)}, outside the near and far planes`;
+  if (!win.cut) return `lens: z = ${lensCentre(z0, width)} ± ${fmt(width / 2, 3)} (linear)`;
+  const end = (z) => (z === n ? `${fmt(z, 4)} (near)` : z === far ? `${fmt(z, 4)} (far)` : fmt(z, 6));
+  return `lens: z from ${end(win.za)} to ${end(win.zb)} (linear)`;
+}
+
+// one lens row: the z of the values stored in the lens ({values}), or a line saying why none
+// are drawn ({text}; dense: too many to draw). Review r223 05b-3: zoomed in past a buffer's
+// step, its row stayed blank, as a broken strip would
+export function lensRow(z0, width, n, far, fmt_, limit = 600) {
+  const win = lensWindow(z0, width, n, far);
+  if (win === null) return { text: "no depth is stored outside the near and far planes" };
+  const zs = valuesIn(win.za, win.zb, n, far, fmt_, limit);
+  if (zs === null) {
+    const count = countBetween(win.za, win.zb, n, far, fmt_);
+    return { dense: true, text: `${count.toLocaleString("en-US")} values: zoom in to see them one by one` };
+  }
+  if (zs.length) return { values: zs };
+  const where = win.cut ? "in the lens" : `within ± ${fmt(width / 2, 3)}`;
+  return { text: `no stored value ${where}: zoom out` };
 }
 
 // round ticks for the lens' linear axis [za, zb]: steps of 1, 2 or 5 times a power of ten,
