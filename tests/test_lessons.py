@@ -571,7 +571,7 @@ def test_03_r216_snapping_is_for_coverage_and_the_digits_of_d():
     assert "That is why GPUs snap" not in md and "as they are on a snapped grid" not in md
     assert "but for **coverage**" in md and "lesson 06 §3" in md
     assert "from the *unsnapped* positions (llvmpipe does so" in md
-    assert "as they are on this experiment's quarter-pixel grid" in md
+    assert "exact (this experiment's quarter-pixel grid)" in md
     # 2: per term up to half the gap near 10^13 (10^-3); D off by the printed 2.0e-04
     assert _decade(ns.far_gap[ns.far_gap_at] / 2) == -3
     # printed() writes it to one digit, as "2·10⁻⁴"
