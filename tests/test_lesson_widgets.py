@@ -252,6 +252,98 @@ def test_explorer_title_says_the_contours_go_on_beyond_the_triangle(explorer):
     assert xs.min() < 0 and xs.max() > explorer.width  # not clipped to the triangle
 
 
+CORNERS = {  # review r216 03-5: the vertices the sliders' ends give, labels crowded
+    "v1 at (0, 0)": [[0, 0], [13, 5], [5, 12]],
+    "v1 at (16, 14)": [[16, 14], [13, 5], [5, 12]],
+    "v2 at (16, 14), v3 at (0, 0)": [[2, 1], [16, 14], [0, 0]],
+    "three corners": [[0, 14], [16, 0], [16, 14]],
+    "v2 and v3 side by side": [[0, 0], [16, 14], [15, 14]],
+    "a small triangle": [[8, 7], [9, 7], [8, 8]],
+}
+
+
+@pytest.fixture
+def classroom_explorer():
+    """Lesson 03's explorer as the lesson shows it: in the classroom style's large labels."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        ex = PlaneExplorer(backend="image")
+    yield ex
+    ex.close()
+
+
+def _label_boxes(ex):
+    ex.fig.canvas.draw()
+    return [label.get_bbox_patch().get_window_extent() for label in ex.triangle.labels]
+
+
+@pytest.mark.parametrize("name", sorted(CORNERS))
+def test_plane_explorer_vertex_labels_leave_dots_edges_and_each_other(classroom_explorer, name):
+    """Review r216 03-5: with v1 at (0, 0) its label's box covered the dot and the first 2 px
+    of both edges; at (16, 14) the dot; with v3 at (0, 0) "v3" lay on "v1". Every label now
+    stays inside the grid, off every dot, off the edges and off the other labels."""
+    explorer = classroom_explorer
+    xy = np.array(CORNERS[name], dtype=float)
+    for k in range(3):
+        explorer.x[k].value, explorer.y[k].value = xy[k]
+    boxes = _label_boxes(explorer)
+    frame = explorer.ax.get_window_extent()
+    dots = explorer.ax.transData.transform(xy)
+    radius = explorer.triangle.vertices.get_markersize() / 2 * explorer.fig.dpi / 72
+    for k, box in enumerate(boxes):
+        assert frame.x0 - 1 <= box.x0 and box.x1 <= frame.x1 + 1, (name, k)
+        assert frame.y0 - 1 <= box.y0 and box.y1 <= frame.y1 + 1, (name, k)
+        for dot in dots:  # no dot under a box, nor a box over part of one
+            assert not box.padded(radius).contains(*dot), (name, k)
+        for j in range(k):
+            assert not box.overlaps(boxes[j]), (name, k, j)
+        for a, b in zip(dots, np.roll(dots, -1, axis=0)):  # the edges, between the dots
+            points = a + np.linspace(0, 1, 201)[:, None] * (b - a)
+            points = points[
+                (np.hypot(*(points - a).T) > radius) & (np.hypot(*(points - b).T) > radius)
+            ]
+            assert not any(box.contains(*p) for p in points), (name, k)
+    assert not explorer.triangle.vertices.get_clip_on()  # a dot at a corner shown whole
+
+
+@pytest.mark.parametrize("f, levels", [((0.2, 0.9, 0.5), [0.3, 0.4, 0.5, 0.6, 0.7, 0.8]),
+                                       ((-1.0, 2.0, 0.5), [-0.5, 0.0, 0.5, 1.0, 1.5]),
+                                       ((0.2, 0.2, 0.5), [0.25, 0.3, 0.35, 0.4, 0.45])])  # fmt: skip
+def test_plane_explorer_contours_at_round_values_some_labelled(classroom_explorer, f, levels):
+    """Review r216 03-6: the contour lines lay at f = -0.57, -0.14, 0.29, ... (steps of 0.429)
+    and no line carried its value. They lie at round steps now, and every other line (all of
+    a few) carries its value on the line, inside the grid, clear of the vertex labels and of
+    one another."""
+    explorer = classroom_explorer
+    for k, value in enumerate(f):
+        explorer.f[k].value = value
+    assert explorer.levels.tolist() == levels
+    boxes = _label_boxes(explorer)
+    shown = [t for t in explorer.level_labels if t.get_visible()]
+    assert 2 <= len(shown) <= 3
+    g = explorer.system["g"]
+    frame = explorer.ax.get_window_extent()
+    for t in shown:
+        value = float(t.get_text().replace("−", "-"))
+        assert value in levels and np.isclose(np.dot(g[:2], t.get_position()) + g[2], value)
+        box = t.get_bbox_patch().get_window_extent()
+        assert frame.contains(box.x0, box.y0) and frame.contains(box.x1, box.y1)
+        assert not any(box.overlaps(b) for b in boxes)
+        boxes.append(box)
+    if min(levels) < 0:  # a minus sign, not a hyphen
+        assert "f = −0.5, 0.0" in explorer.info.value and "-0.5" not in explorer.info.value
+
+
+def test_plane_explorer_labels_wait_for_a_drag_to_end(explorer):
+    """The values on the lines are hidden while a vertex is in hand, as the vertex labels."""
+    _page_move(explorer, 0, 3.1, 2.4, final=False)
+    explorer._draw()
+    assert any(t.get_visible() for t in explorer.level_labels)  # hidden for the draft only
+    _page_move(explorer, 0, 3.1, 2.4, final=True, seq=2)
+    assert any(t.get_visible() for t in explorer.level_labels)
+
+
 # -- DepthPrecisionExplorer ---------------------------------------------------------------------
 def test_depth_explorer_curve_is_the_package_resolution():
     from teachraster.widgets.depth_explorer import DepthPrecisionExplorer

@@ -507,7 +507,8 @@ def test_03_r209_held_section_1_the_digits_lost_and_the_ranges_of_the_drift():
     text = ["".join(c["source"]) for c in cells]
     one = next(i for i, t in enumerate(text) if t.startswith("## 1."))
     two = next(i for i, t in enumerate(text) if t.startswith("## 2."))
-    assert "(two paragraphs, the numbers and two figures) appear once" in " ".join(
+    # r216 03-3: "two paragraphs" were three; the outputs are no longer counted
+    assert "This section's outputs (its text, numbers and figures) appear once" in " ".join(
         text[one].split()
     )
     codes = [t for c, t in zip(cells[one:two], text[one:two]) if c["cell_type"] == "code"]
@@ -551,3 +552,34 @@ def test_03_r209_held_section_1_the_digits_lost_and_the_ranges_of_the_drift():
         assert name in md, name
     longest = max(_paragraphs(cells), key=lambda p: len(p.split()))
     assert len(longest.split()) <= 150, longest[:80]
+
+
+def test_03_r216_snapping_is_for_coverage_and_the_digits_of_d():
+    """r216 03: 1 (C): GPUs snap for exact edge functions (coverage, lesson 06 §3), and set up
+    attributes from the unsnapped positions (CONVENTIONS, Interpolation), so the snapped grid
+    is no reason for exact differences; 2: 16 digits of 10^13 is 10^-3 per term (half the
+    gap), and D's printed 2e-4 is what their partial cancellation leaves; 4: window depth is
+    itself an f/w; 7: a minus sign, not a hyphen."""
+    import json
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    md = " ".join(
+        " ".join("".join(c["source"]).split()) for c in cells if c["cell_type"] == "markdown"
+    )
+    assert "That is why GPUs snap" not in md and "as they are on a snapped grid" not in md
+    assert "but for **coverage**" in md and "lesson 06 §3" in md
+    assert "from the *unsnapped* positions (llvmpipe does so" in md
+    assert "exact (this experiment's quarter-pixel grid)" in md
+    # 2: per term up to half the gap near 10^13 (10^-3); D off by the printed 2.0e-04
+    assert _decade(ns.far_gap[ns.far_gap_at] / 2) == -3
+    # printed() writes it to one digit, as "2·10⁻⁴"
+    assert f"{abs(ns.far_D_error):.1e}" == "2.0e-04" and f"{abs(ns.far_D_error):.0e}" == "2e-04"
+    assert abs(ns.far_D_error) < ns.far_gap[ns.far_gap_at] / 2  # less than one term's rounding
+    code = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    assert code.count("{printed(far_D_error)}") == 2 and "keeps about 16 digits, so D" not in code
+    # 4: the summary's "only f/w and 1/w" and section 3's window depth agree
+    assert md.count("$z_\\text{ndc} = z_\\text{clip}/w$ is itself an $f/w$") == 2
+    # 7
+    assert ns.far_sum < 0 and ns.far_sum_text == f"−{abs(ns.far_sum):.0f}"

@@ -1512,10 +1512,12 @@ def test_03_plane_explorer_setup_follows_a_value():
     explorer.f[2].value = 2.0
     moved = plane_system(explorer.xy, explorer.fvals)
     assert np.allclose(moved["g"][:2], moved["g_recentred"])
-    # the contour lines' values are written out (review r2 03-4): six equal steps of f
+    # the contour lines' values are written out (review r2 03-4), at round steps of f (r216
+    # 03-6: six equal steps from 0.2 to 2.0 were 0.457, 0.714, ...)
     levels = explorer.levels
-    assert len(levels) == 6 and np.allclose(np.diff(levels), np.diff(levels)[0])
-    assert "contour lines (dashed) at f = " + f"{levels[0]:.2f}" in explorer.info.value
+    assert levels.tolist() == [0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75]
+    assert "contour lines (dashed) at f = 0.25, 0.50, 0.75," in explorer.info.value
+    assert "(steps of 0.25; values on the lines)" in explorer.info.value
     explorer.close()
 
 

@@ -40,6 +40,7 @@ from .common import (
     tint,
     two_colour,
 )
+from .label_places import boxes_around, place_vertex_labels
 from .style import COLORS, SIGNED_CMAP, VALUE_CMAP
 
 #: Above this many pixels along a side the grid lines would merge into grey: none are drawn.
@@ -344,6 +345,9 @@ class TriangleArtists(Artists):
     labels: list = field(default_factory=list)
     edge_labels: list = field(default_factory=list)
     inside: bool = False  # vertex labels kept off the Axes' sides (see plot_triangle)
+    clear: bool = False  # vertex labels placed clear of the edges, dots and each other
+    #: with ``clear``: the display boxes (3, 4) the vertex labels were given room for
+    label_boxes: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
 
     def update(self, tri, edges=None) -> None:
         """Move everything to a new triangle (same artists)."""
@@ -361,7 +365,9 @@ class TriangleArtists(Artists):
         offsets = _outward(xy, centre, fs(0.9), ax)
         if _area2(xy) == 0:
             offsets = _square_to_line(xy, fs(0.9), ax)
-        if self.inside:
+        if self.clear and self.labels:
+            offsets = self._clear_offsets(xy)
+        elif self.inside:
             offsets = _within_top_bottom(ax, xy, _within_sides(ax, xy, offsets, fs(0.95)), fs(0.95))
         for label, name, p, off in zip(self.labels, names, xy, offsets):
             label.xy = tuple(p)
@@ -375,6 +381,22 @@ class TriangleArtists(Artists):
             label.set_position(off)
             label.set_text(edge_name(a, b))
 
+    def _clear_offsets(self, xy: np.ndarray) -> list:
+        """Offsets (points) of the vertex labels from their vertices, each where its box
+        covers no edge, dot or other label and stays inside the Axes
+        (:func:`~teachraster.plotting.label_places.place_vertex_labels`); the boxes are kept
+        in ``label_boxes``."""
+        ax = self.outline.axes
+        ax.get_xlim()  # brings autoscaled limits up to date before transData is read
+        scale = ax.figure.dpi / 72.0  # display pixels per point
+        size = self.labels[0].get_fontsize() * scale
+        half = (0.85 * size, 0.75 * size)  # two bold characters in their padded box
+        dot = (self.vertices.get_markersize() / 2 + 1.5) * scale  # its radius and a gap
+        shown = ax.transData.transform(xy)
+        centres = place_vertex_labels(shown, half, dot, ax.bbox.extents)
+        self.label_boxes = boxes_around(centres, half)
+        return [tuple((c - p) / scale) for c, p in zip(centres, shown)]
+
 
 def plot_triangle(
     ax,
@@ -386,6 +408,7 @@ def plot_triangle(
     edge_labels: bool = False,
     color=None,
     inside: bool = False,
+    clear: bool = False,
 ) -> TriangleArtists:
     """Draw a triangle's edges with direction arrows and the vertex labels.
 
@@ -413,6 +436,11 @@ def plot_triangle(
         Keep a vertex label at the grid's sides, top or bottom inside the Axes (its offset
         mirrored or moved in), for a figure with a key or colour bar beside the Axes and no layout engine
         to make room (the widgets). Default: pushed outwards, where a layout engine makes room.
+    clear : bool
+        With ``inside``: each vertex label where its box covers neither its vertex's dot nor
+        an edge, another dot or another label, inside the Axes, away from the triangle where
+        it can (review r216 03-5: at the grid's corners the PlaneExplorer's labels covered
+        their own dots and edges, and one another).
 
     Returns
     -------
@@ -425,7 +453,7 @@ def plot_triangle(
     # the dots above the labels' white boxes (zorder 6): a box pushed against its vertex
     # washed the dot out, and the text is about where the vertices lie (review r23 00-2)
     vertices = ax.plot([], [], "o", color=color, ms=ms(0.7), zorder=6.2)[0]
-    result = TriangleArtists(outline, vertices, inside=inside)
+    result = TriangleArtists(outline, vertices, inside=inside, clear=clear and inside)
     if arrows:
         for _ in range(3):
             arrow = FancyArrowPatch(

@@ -28,7 +28,8 @@ from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..core.triangle import Triangle
 from ..plotting import COLORS, plot_attribute, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.common import screen_ticks
+from ..plotting.common import fs, label_box, screen_ticks
+from ..plotting.label_places import boxes_around, place_on_line
 from .common import (
     Shown,
     close_tree,
@@ -47,8 +48,17 @@ from .sprites import ColourBarSprite, text_boxes
 #: The picture's alternative text in the page
 ALT = "the attribute plane over the pixel grid"
 
-#: Number of contour levels drawn between the smallest and largest vertex value.
-LEVELS = 6
+#: At most this many steps of f between the smallest and largest vertex value: the contour
+#: lines lie at round values (review r216 03-6: six equal steps gave f = -0.57, -0.14, ...),
+#: 4 to 8 of them for the sliders' values
+LEVELS = 8
+
+#: The steps of f between two contour lines: 1, 2, 2.5 or 5 times a power of ten
+LEVEL_STEPS = [1, 2, 2.5, 5, 10]
+
+#: With more lines than this, only every other one (the multiples of twice the step) carries
+#: its value: a few labels, not a column of them
+ALL_LABELLED = 4
 
 #: The figure's size in inches (at the page's 96 dpi: 605 × 413 px): the grid, as wide as
 #: the room left by its ticks and the colour bar allows, fills its height.
@@ -114,6 +124,52 @@ def plane_system(xy, f) -> dict:
         ABCD=np.array([plane.A, plane.B, plane.C, plane.D], dtype=np.float64),
     )
     return out
+
+
+def round_levels(lo: float, hi: float) -> np.ndarray:
+    """The contour levels strictly between ``lo`` and ``hi``: multiples of a round step
+    (:data:`LEVEL_STEPS`), at most :data:`LEVELS` steps across; none where ``hi <= lo``.
+
+    Examples
+    --------
+    >>> round_levels(0.2, 0.9).tolist()
+    [0.3, 0.4, 0.5, 0.6, 0.7, 0.8]
+    >>> round_levels(-1.0, 2.0).tolist()
+    [-0.5, 0.0, 0.5, 1.0, 1.5]
+    """
+    if not hi > lo:
+        return np.array([])
+    ticks = MaxNLocator(nbins=LEVELS, steps=LEVEL_STEPS).tick_values(lo, hi)
+    step = ticks[1] - ticks[0]
+    inner = ticks[(ticks > lo + 1e-9 * step) & (ticks < hi - 1e-9 * step)]
+    return np.array([float(f"{v:.12g}") + 0.0 for v in inner])  # 0.30000000000000004 -> 0.3
+
+
+def level_text(levels) -> list[str]:
+    """The levels as the labels and the numbers beside the figure write them: as many
+    decimals as the step needs, a minus sign for a negative value.
+
+    Examples
+    --------
+    >>> level_text([-0.5, 0.0, 0.25])
+    ['−0.50', '0.00', '0.25']
+    """
+    levels = np.asarray(levels, dtype=np.float64)
+    values = np.concatenate([levels, np.diff(levels)])  # the step's decimals too
+    places = next(d for d in range(7) if np.allclose(values * 10**d, np.round(values * 10**d),
+                                                     rtol=0, atol=1e-6))  # fmt: skip
+    return [f"{v + 0.0:.{places}f}".replace("-", "−") for v in levels]
+
+
+def labelled(levels) -> np.ndarray:
+    """Which levels carry their value (bool): all of a few, else the multiples of twice the
+    step."""
+    levels = np.asarray(levels, dtype=np.float64)
+    if len(levels) <= ALL_LABELLED:
+        return np.ones(len(levels), dtype=bool)
+    twice = 2 * (levels[1] - levels[0])
+    ratio = levels / twice
+    return np.isclose(ratio, np.round(ratio), atol=1e-6)
 
 
 def level_segments(g, levels, width: float, height: float) -> list:
@@ -210,7 +266,18 @@ class PlaneExplorer:
             self.contours = LineCollection(self._segments(), colors=COLORS["edge"],
                                            linewidths=1.5, linestyles="--")  # fmt: skip
             self.ax.add_collection(self.contours)
-            self.triangle = plot_triangle(self.ax, self.xy, arrows=False, inside=True)
+            self.triangle = plot_triangle(self.ax, self.xy, arrows=False, inside=True,
+                                          clear=True)  # fmt: skip
+            # a vertex at the grid's corner shows its whole dot, not a quarter of it (review
+            # r216 03-5); the sliders keep every vertex on the grid
+            self.triangle.vertices.set_clip_on(False)
+            # the values on the contour lines, in white boxes that break the dashes
+            self.level_labels = [
+                self.ax.text(0, 0, "", ha="center", va="center", fontsize=fs(0.8),
+                             color=COLORS["edge"], bbox=label_box(0.9), zorder=5,
+                             visible=False)
+                for _ in range(LEVELS)
+            ]  # fmt: skip
             # positions as the lesson's figures read them: v1 = (2, 1) on its ticks
             screen_ticks(self.ax, width, height)
             bar = self.image.colorbar
@@ -229,6 +296,7 @@ class PlaneExplorer:
             image = self.image
             self._bar = None if image.colorbar is None else ColourBarSprite(
                 self.fig, lambda: image.image, image.colorbar)  # fmt: skip
+            self._set_artists()  # the labels placed in the frozen layout
             # the vertices are dragged in the page (DragFigure, static/drag.js: the
             # TriangleEditor's way); the kernel fills with tr.rasterize at each position
             self.display = slider_display(
@@ -247,7 +315,7 @@ class PlaneExplorer:
         title = title_html(
             "An attribute is a plane: f = g_x x + g_y y + g_0",
             "Drag a vertex (or use its sliders) or change its value: the dashed contour lines "
-            "(f in equal steps) stay straight and parallel, and go on beyond the triangle, "
+            "(f in round steps) stay straight and parallel, and go on beyond the triangle, "
             "where the plane goes on too; the 3 × 3 system, M and A, B, C, D follow.",
         )
         rows = [control_row([self.x[k], self.y[k], self.f[k]]) for k in range(3)]
@@ -343,9 +411,10 @@ class PlaneExplorer:
 
     @property
     def levels(self) -> np.ndarray:
-        """The values of f on the contour lines: LEVELS equal steps between the vertex values."""
+        """The values of f on the contour lines: round steps between the vertex values
+        (:func:`round_levels`)."""
         f = self.shown_f
-        return np.linspace(f.min(), f.max(), LEVELS + 2)[1:-1]
+        return round_levels(float(f.min()), float(f.max()))
 
     def _segments(self) -> list:
         if "g" not in self.system:
@@ -359,7 +428,8 @@ class PlaneExplorer:
         vertex leaves it as it was."""
         # by zorder: the blit draws in list order, and the labels' white boxes (zorder 6)
         # drawn after the vertex dots (6.2) hid half of v1's dot (review r78 03-7)
-        above = sorted([self.contours, *self.triangle.artists], key=lambda a: a.get_zorder())
+        moving = [self.contours, *self.triangle.artists, *self.level_labels]
+        above = sorted(moving, key=lambda a: a.get_zorder())
         return LayeredBlit(self.fig, [(MOVING, [self.image.image]),
                                       (STILL, [self.grid.lines, *self.ax.spines.values()]),
                                       (MOVING, above)])  # fmt: skip
@@ -374,8 +444,8 @@ class PlaneExplorer:
         if self._bar is None:
             self._blit.draw()
             return
-        labels = [a for a in self.triangle.artists if isinstance(a, Text)]
-        if self._drag_xy is not None:  # a vertex in hand: its labels wait for the release
+        labels = [a for a in self.triangle.artists if isinstance(a, Text)] + self.level_labels
+        if self._drag_xy is not None:  # a vertex in hand: the labels wait for the release
             with hidden(labels):
                 self._bar.draw(self._blit, draft=True, others=[self.ax.bbox])
             return
@@ -396,8 +466,41 @@ class PlaneExplorer:
                 self.image.image.set_clim(*self._range())
         else:
             self.image.image.set_clim(*self._range())
-        self.contours.set_segments(self._segments())
+        segments = self._segments()
+        self.contours.set_segments(segments)
         self.triangle.update(self.shown_xy)
+        self._place_level_labels(segments)
+
+    def _place_level_labels(self, segments) -> None:
+        """The values of the :func:`labelled` contour lines, each on its line inside the
+        grid, off the triangle's edges, dots and vertex labels and off the other values,
+        outside the triangle where it can be (it hides no pixel there); a line with no
+        such place goes without."""
+        for label in self.level_labels:
+            label.set_visible(False)
+        if not segments:
+            return
+        ax, levels = self.ax, self.levels
+        scale = self.fig.dpi / 72.0
+        triangle = ax.transData.transform(self.shown_xy)
+        dot = self.triangle.vertices.get_markersize() / 2 * scale
+        taken = [*self.triangle.label_boxes]
+        frame = ax.bbox.extents
+        texts = level_text(levels)
+        for label, segment, text in zip(self.level_labels,
+                                        np.asarray(segments)[labelled(levels)],
+                                        np.asarray(texts)[labelled(levels)]):  # fmt: skip
+            size = label.get_fontsize() * scale
+            half = (0.32 * size * len(text) + 0.3 * size, 0.75 * size)  # digits, padded box
+            at = place_on_line(ax.transData.transform(segment), half, frame=frame,
+                               triangle=triangle, labels=np.reshape(taken, (-1, 4)),
+                               dots=boxes_around(triangle, (dot, dot)))  # fmt: skip
+            if at is None:
+                continue
+            label.set_text(text)
+            label.set_position(ax.transData.inverted().transform(at))
+            label.set_visible(True)
+            taken.append(boxes_around(at, half)[0])
 
     def _info_html(self) -> str:
         s = self.system
@@ -423,14 +526,16 @@ class PlaneExplorer:
         gx, gy, g0 = s["g"]
         A, B, C, D = s["ABCD"]
         levels = self.levels
-        step = levels[1] - levels[0] if len(levels) > 1 else 0.0
+        if len(levels) > 1:
+            step = level_text([0.0, levels[1] - levels[0]])[1]
+            contours = (f"contour lines (dashed) at f = {', '.join(level_text(levels))} "
+                        f"(steps of {step}; values on the lines)")  # fmt: skip
+        elif len(levels) == 1:
+            contours = f"contour line (dashed) at f = {level_text(levels)[0]}"
+        else:
+            contours = "contour lines: none (f is constant)"
         parts += [
-            (
-                f"contour lines (dashed) at f = {', '.join(f'{v:.2f}' for v in levels)} "
-                f"(steps of {step:.3f})"
-            )
-            if step > 0
-            else "contour lines: none (f is constant)",
+            contours,
             f"solution: g_x = {gx:.4f}, g_y = {gy:.4f}, g_0 = {g0:.4f}",
             f"<b>M</b> = [[{m00:.4f}, {m01:.4f}], [{m10:.4f}, {m11:.4f}]] (once per triangle)",
             "M · (f2 − f1, f3 − f1) = "
