@@ -238,3 +238,50 @@ def test_tile_explorers_first_picture_is_the_kernels_default(lab, page, tmp_path
     assert np.array_equal(first, kernel), f"the first picture is not the default ({tmp_path})"
     assert np.array_equal(settled, kernel), f"the page shows another picture ({tmp_path})"
     assert not page.errors, page.errors
+
+
+# Review r219 04-2: after a tilt change, faint ghosts of the profile's old tick labels ("30 60
+# 90" between the new "25 50 75 100") stood along the bottom of its label band. The kernel's
+# picture was right: the patches lay on a clear canvas over the <img> (the reference), and a
+# view scaled down to its column blended each patch's edge with the transparent pixels beside
+# it, where the <img>'s old labels showed through. A patch now lies on a whole picture.
+GHOST_CELLS = [
+    "import numpy as np\nfrom teachraster.plotting import use_style\n"
+    "style = use_style('classroom')\nfrom teachraster.widgets import TexturedPlaneViewer",
+    "viewer = TexturedPlaneViewer(tilt=60, checks=4)  # lesson 04's\n"
+    "viewer.widget.add_class('t-ghost')\nviewer",
+]
+# how many pixels of the canvas are not opaque (the figure itself is opaque everywhere)
+CLEAR = """(c) => { const cv = document.querySelector(`.${c} canvas.tr-drag-picture`);
+  const d = cv.getContext('2d').getImageData(0, 0, cv.width, cv.height).data;
+  let n = 0; for (let i = 3; i < d.length; i += 4) if (d[i] < 255) n++; return n; }"""
+
+
+def test_a_patch_lies_on_a_whole_picture_not_a_clear_canvas(lab, page, tmp_path):  # noqa: F811
+    import time
+
+    import numpy as np
+
+    _run_all(lab, page, GHOST_CELLS, "ghost.ipynb")
+    page.wait_for_function(ALL_AHEAD, arg="t-ghost", timeout=120_000)
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    slider = page.locator(".t-ghost input[type=range]").first
+    slider.scroll_into_view_if_needed()
+    slider.focus()
+    for key in ("Home", "End"):  # the profile's ticks change: 30 60 90 -> 25 50 75 100
+        before = page.evaluate(SHOWN, "t-ghost")
+        slider.press(key)
+        page.wait_for_function(f"(c) => ({SHOWN})(c) >= {before + 2}", arg="t-ghost",
+                               timeout=30_000)  # fmt: skip
+    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
+    time.sleep(1.0)
+    assert page.evaluate(CLEAR, "t-ghost") == 0  # nothing of the <img> shows through
+    shown = _shown_picture(page, "t-ghost")
+    saved = tmp_path / "kernel.npy"
+    run_new_cell(page, f"np.save({str(saved)!r}, viewer.display.widget._last)\n")
+    deadline = time.time() + 60
+    while not saved.exists() and time.time() < deadline:
+        time.sleep(0.5)
+    time.sleep(0.5)
+    assert np.array_equal(shown, np.load(saved)), f"the page shows another picture ({tmp_path})"
+    assert not page.errors, page.errors

@@ -2088,10 +2088,13 @@ def test_00_04_answers_wait_for_check_r66():
     said = [t for k, t in zip(kinds[ask:viewer], text[ask:viewer]) if k == "markdown"]
     assert not any("kink" in t or "straight *inside*" in t for t in said)
     assert "kink" in text[ask].split("explain=")[1]
-    # review r77 04-3: only the receding lines kink; the cross lines (constant v) do not
-    assert "what do the <b>receding</b> checker lines look like" in text[ask]
+    # review r77 04-3: only the receding lines kink; the cross lines (constant v) do not;
+    # r219 04-6: the spacing the choices pair with them is the checks' (the cross lines')
+    assert "what shape are the <b>receding</b> checker lines" in text[ask]
+    assert "how are the rows of checks spaced from near to far?" in text[ask]
     assert 'stay straight "\n    "and unkinked' in text[ask]
-    assert 'legend(loc="lower right"' in text[ask - 2]  # the |Δu| panel's key, below v2 v3
+    # r219 04-1: the |Δu| panel's key under the panel, outside the map (tests below)
+    assert 'legend(loc="upper center", bbox_to_anchor=(0.5, -0.17)' in text[ask - 2]
     # review r91 04-B: no text shown before q_affine is checked describes the affine steps
     shown = [t for k, t in zip(kinds[ask + 1 : viewer + 1], text[ask + 1 : viewer + 1])
              if k == "markdown"]  # fmt: skip
@@ -2100,6 +2103,63 @@ def test_00_04_answers_wait_for_check_r66():
     assert "steps $v$ evenly" in text[viewer] and text[viewer].index("hold()") < text[viewer].index(
         "Markdown("
     )
+
+
+@pytest.mark.notebook
+def test_04_r219_key_horizon_and_wording():
+    """Review r219 04: the |Δu| map's key hid covered pixels (row 12, col 6 whole) under a
+    comment saying none were there; the far floor's top row (104) was called the horizon,
+    which lies at window y 99.2, and the band between them was coloured sky; q_affine asked
+    about the receding lines' spacing, which is the cross lines'; its explanation had the two
+    triangles share the near and far edges; q_diagonal did not say the error is a distance;
+    cell 11 said teachraster interpolates f/w and 1/w and divides; backticks in display math
+    showed as quotes; lesson 00's map is the signed Δu."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from notebook_runs import executed, streams
+
+    ns = lesson("04_perspective_correct_interpolation")
+    # the key covers no covered pixel of the map: every covered pixel's box clear of it
+    ax = ns.view.image.axes
+    fig = ax.figure
+    FigureCanvasAgg(fig)
+    renderer = fig.canvas.get_renderer()
+    fig.draw(renderer)
+    key = ax.get_legend().get_window_extent(renderer)
+    rows, cols = np.nonzero(ns.fill.coverage)
+    corners = ax.transData.transform(np.column_stack([cols, rows]))
+    far = ax.transData.transform(np.column_stack([cols + 1, rows + 1]))
+    x0, x1 = np.minimum(corners[:, 0], far[:, 0]), np.maximum(corners[:, 0], far[:, 0])
+    y0, y1 = np.minimum(corners[:, 1], far[:, 1]), np.maximum(corners[:, 1], far[:, 1])
+    overlap = (x0 < key.x1) & (x1 > key.x0) & (y0 < key.y1) & (y1 > key.y0)
+    assert not overlap.any(), list(zip(rows[overlap], cols[overlap]))
+    # the true horizon is printed, above the floor's far edge, and the text says which is which
+    assert round(ns.horizon_y, 1) == 99.2 and ns.far_row == 104
+    run = executed("04_perspective_correct_interpolation")
+    printed = streams(run.notebook())
+    assert (
+        f"true horizon at window y = {ns.horizon_y:.1f}; the floor's far edge: row 104" in printed
+    )
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    far = next(t for t in text if "ahead = original.camera.matrix(" in t)
+    drawn = next(t for t in text if "ax.axhspan(top, horizon_y" in t)  # its figure, folded
+    assert "from the horizon down" not in far and "nothing drawn above the horizon" not in drawn
+    assert 'ax.axhspan(top, horizon_y, color=COLORS["fill"]' in drawn  # sky above the horizon
+    assert '"beyond the floor\'s far edge"' in drawn
+    md = " ".join(" ".join(t.split()) for t, c in zip(text, nb["cells"])
+                  if c["cell_type"] == "markdown")  # fmt: skip
+    assert "rows just under the horizon" not in md and "the true horizon" in md
+    # the wording items
+    ask = next(t for t in text if "q_affine = Predict(" in t)
+    assert "edge they share" not in ask and "a corner on the other" in ask
+    diag = next(t for t in text if "q_diagonal = Predict(" in t)
+    assert "the distance between the two" in diag and "the largest distance" in diag
+    assert "the distance between the two points looked up" in md  # defined before it, in 20
+    assert "multiplies each $f/w$ by it" not in md
+    assert "teachraster's rasteriser goes the other, equivalent way round" in md
+    displays = [m for t in text for m in re.findall(r"\$\$(.*?)\$\$", t, re.S)]
+    assert displays and not any("`" in m for m in displays)  # MathJax showed ‘smooth‘
+    assert "the *signed* $\\Delta u$" in md
 
 
 def test_05a_05b_no_answer_in_the_markdown_before_check():

@@ -635,6 +635,51 @@ def test_textured_viewer_draws_v_down_the_middle_column():
     viewer.close()
 
 
+def test_textured_viewer_redraws_the_profiles_ticks_when_they_change():
+    """Review r219 04-2: after a tilt change, ghosts of the profile's old tick labels seemed to
+    stay. The blit draws the profile's Axes (its ticks too) at every picture: the picture
+    after 60° -> 0° -> 90° (ticks 30 60 90, then 25 50 75 100) is a fresh viewer's at 90°.
+    (The ghosts were the page's: tests/test_browser_ahead.py.)"""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):  # as lesson 04 shows it: the profile has a row of its own
+        viewer = TexturedPlaneViewer(tilt=60, checks=4, backend="image")
+        labels = viewer.profile.title.axes.get_xticklabels
+        before = [t.get_text() for t in labels()]
+        viewer.tilt.value = 0.0
+        viewer.tilt.value = 90.0
+        assert [t.get_text() for t in labels()] != before
+        fresh = TexturedPlaneViewer(tilt=90, checks=4, backend="image")
+        assert _shown(viewer) == _shown(fresh)
+    viewer.close()
+    fresh.close()
+
+
+def test_textured_viewer_titles_sit_on_their_renders_which_fill_the_row():
+    """Review r219 04-3: the titles floated ~70 px above two 250 x 190 px renders (room kept
+    for column labels the renders do not have), and a wide gap parted the colour bar from
+    the profile."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        viewer = TexturedPlaneViewer(tilt=60, checks=4, backend="image")
+        fig = viewer.fig
+        renderer = fig.canvas.get_renderer()
+        px = fig.dpi / 72  # pixels per point
+        width = fig.get_figwidth() * fig.dpi
+        affine, persp, heat = viewer.view.axes[:3]
+        for ax in (affine, persp):
+            gap = ax.title.get_window_extent(renderer).y0 - ax.bbox.y1
+            assert 0 <= gap <= 8 * px, gap  # a few points, not the room of tick labels
+        assert affine.bbox.width > heat.bbox.width > 0  # the renders take the first row
+        assert persp.bbox.x1 > 0.9 * width
+        bar = viewer.view.heatmap.colorbar.ax.get_tightbbox(renderer)
+        profile = viewer.profile.title.axes.get_tightbbox(renderer)
+        assert 0 < profile.x0 - bar.x1 < 0.5 * fig.dpi  # under half an inch between them
+        assert width <= 940 + 1e-6
+    viewer.close()
+
+
 def test_textured_viewer_shows_texel_error_in_place():
     viewer = TexturedPlaneViewer(48, 36, tilt=50.0, backend="image")
     axes = viewer.fig.axes

@@ -228,7 +228,7 @@ def fit_column(fig: Figure) -> None:
 
 
 def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,
-                    below: bool = False, profile: bool = False) -> list:  # fmt: skip
+                    below: bool = False, profile: bool = False, ticks: bool = True) -> list:  # fmt: skip
     """Three equal panels for a ComparisonView / InterpolationView, as many per row as fit.
 
     The views add colour bars to the middle and right panels with ``fig.colorbar(ax=...)``,
@@ -246,6 +246,12 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     With ``profile`` a fourth Axes (for :func:`~teachraster.plotting.plot_profile`) fills the
     rest of a row the heatmap has to itself, so that no quarter of the figure stays empty;
     it is None when the three panels share one row (there is no empty room to fill).
+
+    ``ticks=False``: no panel shows tick labels (``TexturedPlaneViewer``'s renders), so the
+    room kept for them goes: the first row keeps room for its titles alone, and when the
+    heatmap's row wraps, the first row's panels grow to fill the column and the profile
+    sits nearer the colour bar (review r219 04-3: the titles floated ~70 px above two small
+    renders, and a wide gap parted the colour bar from the profile).
     """
     from .common import font_scale
 
@@ -257,7 +263,7 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
         pw = ph * width / height
     # left: row tick labels and "row i"; top: title above the column tick labels and
     # "column j"; gap and right: a colour bar's tick labels and its label
-    left, top = 0.6 * s, 0.8 * s
+    left, top = (0.6 * s, 0.8 * s) if ticks else (0.25 * s, 0.45 * s)
     bottom = 0.2 + (0.3 * s if below else 0.0)
     gaps = [0.35 * s] + [(0.75 * s if c else 0.35 * s) for c in colorbars]
     widths = [pw] + [pw / 0.8 + 0.3 if c else pw for c in colorbars]
@@ -269,25 +275,43 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     # the profile's row needs room under it for its tick labels and axis label
     alone = profile and len(rows) > 1 and len(rows[-1]) == 1
     bottoms = [bottom] * (len(rows) - 1) + [max(bottom, 0.2 + 0.6 * s) if alone else bottom]
-    fh = sum(ph + t + b for t, b in zip(tops, bottoms))
-    if alone:  # the profile as wide as a panel, if the column has room for it
-        start = left + widths[rows[-1][0]] + gaps[rows[-1][0]] + 0.85 * s
+    # after the heatmap's gap, room for the profile's value labels on its left; without
+    # ticks, 0.85 s after the heatmap's panel in all (its colour bar's labels lie inside it)
+    profile_gap = 0.85 * s if ticks else 0.85 * s - gaps[rows[-1][-1]]
+    if alone and not ticks:  # the column's width: the first row's panels grow into it
+        fw = max(fw, column_inches(fig))
+    elif alone:  # the profile as wide as a panel, if the column has room for it
+        start = left + widths[rows[-1][0]] + gaps[rows[-1][0]] + profile_gap
         fw = min(max(fw, start + pw + 0.25), max(fw, column_inches(fig)))
+    grow = [_row_growth(fw - left - 0.25, [widths[i] for i in row],
+                        [gaps[i] for i in row[:-1]]) if not ticks and alone and k == 0 else 1.0
+            for k, row in enumerate(rows)]  # fmt: skip
+    fh = sum(ph * g + t + b for g, t, b in zip(grow, tops, bottoms))
     fig.set_size_inches(fw, fh)
     axes = []
     y = fh
-    for row, t, b in zip(rows, tops, bottoms):
-        x, y = left, y - (ph + t + b)
+    for row, g, t, b in zip(rows, grow, tops, bottoms):
+        x, y = left, y - (ph * g + t + b)
         for i in row:
-            axes.append(fig.add_axes((x / fw, (y + b) / fh, widths[i] / fw, ph / fh)))
-            x += widths[i] + gaps[i]
+            axes.append(fig.add_axes((x / fw, (y + b) / fh, widths[i] * g / fw, ph * g / fh)))
+            x += widths[i] * g + gaps[i]
     if profile:
         # the rest of the heatmap's row, less room for the profile's value labels on its left
-        x += 0.85 * s
+        x += profile_gap
         room = fw - x - 0.25
         axes.append(fig.add_axes((x / fw, (y + bottoms[-1]) / fh, room / fw, ph / fh))
                     if alone and room > 0.5 * pw else None)  # fmt: skip
     return axes
+
+
+def _row_growth(room: float, widths, gaps, most: float = 1.6) -> float:
+    """How much a row's panels may grow (at least 1, at most ``most``) to fill ``room``
+    inches with their ``gaps`` between them.
+
+    >>> _row_growth(10.0, [3.0, 3.0], [1.0])
+    1.5
+    """
+    return float(min(most, max(1.0, (room - sum(gaps)) / sum(widths))))
 
 
 def column_inches(fig: Figure) -> float:

@@ -13,6 +13,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView, plot_profile
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
+from ..plotting.common import fs
 from .common import (
     Shown,
     close_tree,
@@ -172,7 +173,10 @@ class TexturedPlaneViewer:
         self._render(tilt)
         with style_context(style):
             fig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = comparison_axes(fig, height, width, colorbars=(False, True), profile=True)
+            # no tick labels on any panel: the titles close above the renders, which take
+            # the first row's width (review r219 04-3)
+            axes = comparison_axes(fig, height, width, colorbars=(False, True), profile=True,
+                                   ticks=False)  # fmt: skip
             self.view = ComparisonView(
                 self.affine, self.perspective, axes=axes[:3],
                 titles=("affine uv", "perspective-correct uv"), label="|error|",
@@ -184,6 +188,8 @@ class TexturedPlaneViewer:
             # the two renders labelled alike: no pixel ticks on either (review r91 04-E: only
             # "affine uv" had them); the error map has none either
             self.view.axes[0].set(xticks=[], yticks=[], xlabel="", ylabel="")
+            for ax in self.view.axes[:3]:  # no column labels to clear: the titles sit close
+                ax.set_title(ax.get_title(), y=1.0, pad=fs(0.5))
             if self.view.heatmap.colorbar is not None:
                 self.view.heatmap.colorbar.set_label("texels")
             # the heatmap's title states the maximum and its ring marks the pixel; the note

@@ -211,9 +211,29 @@ function render({ model, el }) {
   let shown = model.get("poster_frame");
   let painting = Promise.resolve();
   let missed = false; // a patch came for a frame this view does not show
+  // The canvas holds a whole picture, not patches alone over the <img>. A patch is painted
+  // on a whole picture only: on a clear canvas, a view scaled down to its column blended
+  // each patch's edge pixels with the transparent ones beside them, and the <img> under
+  // them (an older picture) showed through there: faint ghosts of the old tick labels
+  // along a patch's edge (review r219 04-2, the TexturedPlaneViewer's profile).
+  let whole = false;
   function sizePicture() {
     const [w, h] = model.get("size");
-    if (picture.width !== w || picture.height !== h) [picture.width, picture.height] = [w, h];
+    if (picture.width !== w || picture.height !== h) {
+      [picture.width, picture.height] = [w, h]; // which clears the canvas
+      whole = false;
+    }
+  }
+  // the picture the <img> shows, drawn on the canvas before a patch goes on it
+  async function wholeFromImg() {
+    if (whole) return;
+    try {
+      await img.decode();
+    } catch {
+      return; // nothing shown yet: the patch goes on a clear canvas, as before
+    }
+    pctx.drawImage(img, 0, 0, picture.width, picture.height);
+    whole = true;
   }
   sizePicture();
 
@@ -339,6 +359,13 @@ function render({ model, el }) {
     a[0] >= b[0] && a[1] >= b[1] && a[0] + a[2] <= b[0] + b[2] && a[1] + a[3] <= b[1] + b[3];
   function putPatch(place, raw) {
     const painted = raw && raw.byteLength;
+    if (!whole) {
+      // the reference under the first patch (the <img> shows it: the poster was the
+      // reference), so that no patch lies on a clear canvas (see ``whole``)
+      pctx.drawImage(ref.bitmap, 0, 0);
+      whole = true;
+      ref.dirty = null;
+    }
     if (ref.dirty && !(painted && within(ref.dirty, place))) {
       // the reference, put back (not where the new patch paints over it all: a drag's
       // patches cover the same plot, and drawing it back first was a second full blit)
@@ -376,6 +403,7 @@ function render({ model, el }) {
       }
       pctx.clearRect(0, 0, picture.width, picture.height);
       pctx.drawImage(bitmap, 0, 0);
+      whole = true;
       if (ref.bitmap) ref.bitmap.close();
       Object.assign(ref, { bitmap, frame: msg.ref, dirty: null });
       showPng(bytes);
@@ -436,6 +464,7 @@ function render({ model, el }) {
       }
       pctx.clearRect(0, 0, picture.width, picture.height);
       pctx.drawImage(bitmap, 0, 0);
+      whole = true;
       bitmap.close();
       showPng(bytes); // the <img> under the canvas holds the last whole frame
       missed = false;
@@ -446,6 +475,7 @@ function render({ model, el }) {
       const buf = raw instanceof ArrayBuffer ? raw : raw.buffer;
       const data = new Uint8ClampedArray(buf, raw.byteOffset || 0, 4 * w * h);
       const decoded = performance.now();
+      await wholeFromImg();
       pctx.putImageData(new ImageData(data, w, h), x, y);
       noteFirst(msg, bytes, decoded);
     } else if (msg.n - 1 !== shown) {
@@ -480,6 +510,7 @@ function render({ model, el }) {
       missed = false;
       sizePicture();
       pctx.clearRect(0, 0, picture.width, picture.height);
+      whole = false;
       showPng(model.get("poster"));
       shown = model.get("poster_frame");
     });
