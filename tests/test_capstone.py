@@ -116,8 +116,8 @@ WRONG = [
     ("textured_floor", {"perspective_weights": lambda lam, w: lam * w / (lam @ w)},
      "interpolation", "names the mistake: you multiplied λ by w"),
     ("glass", {"over": _straight_over}, "blending",
-     "over_premultiplied exercise's check names the mistake: you multiplied the source colour "
-     "by its alpha again"),
+     "over's check (lesson 12b §4's premultiplied over: ex.check(\"over_premultiplied\", over) "
+     "runs it) names the mistake: you multiplied the source colour by its alpha again"),
     # the A-buffer: each order mistake named in words, not only the numbers
     ("glass_sorted", {"a_buffer": _drawing_order}, "sorting",
      "the likely mistake: you composited in drawing order"),
@@ -337,7 +337,7 @@ def test_an_over_that_leaves_alpha_alone_fails_the_glass_on_its_own_cases(scene)
     exercise's own cases see the alpha the scene cannot."""
     report = ex.capstone(scene, **_mine(scene, over=_over_rgb_only))
     assert not report.passed and report.n_wrong == 0, str(report)
-    assert "over_premultiplied exercise's own cases" in report.failures[-1].explanation
+    assert "your over fails over's own cases (lesson 12b §4" in report.failures[-1].explanation
 
 
 def test_capstone_headings_are_numbered_in_order_and_the_sphere_claims_what_it_sees():

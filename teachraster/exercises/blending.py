@@ -183,6 +183,11 @@ def _destination_again(src, dst):
     return np.r_[src[:3] + dst[:3] * dst[3] * (1 - src[3]), src[3] + dst[3] * (1 - src[3])]
 
 
+#: What premultiplying a source twice does to the picture (the same words in each entry).
+TOO_DARK = ("every translucent source then shows only α of its colour, α·c where c belongs, "
+            "and comes out too dark; at a soft edge, where α falls off, that draws a dark "
+            "fringe like lesson 12b §4's")  # fmt: skip
+
 PREMULTIPLIED = [
     ("destination not scaled", "the destination was not scaled by (1 − α)",
      lambda s, d: scaled(s, d, 1, 1)),
@@ -200,11 +205,13 @@ PREMULTIPLIED = [
     ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
      "but it is premultiplied already: it is weighted by (1 − α) of the source alone",
      _destination_again),
-    ("premultiplied twice", "you multiplied the source by its alpha again, but it is "
-     "premultiplied already (that darkens the edges: the dark fringe); a premultiplied source "
-     "already carries its alpha", lambda s, d: scaled(s, d, s[3], 1 - s[3])),
-    ("premultiplied twice", "you multiplied the source colour by its alpha again, but it is "
-     "premultiplied already (the dark fringe): it already carries its alpha",
+    # r222 item 6: "(the dark fringe)" was said of glass darkened all over: the source is too
+    # dark wherever it is translucent, a fringe only at a soft edge
+    ("premultiplied twice", f"you multiplied the source by its alpha again, but it is "
+     f"premultiplied already ({TOO_DARK}); a premultiplied source already carries its alpha",
+     lambda s, d: scaled(s, d, s[3], 1 - s[3])),
+    ("premultiplied twice", f"you multiplied the source colour by its alpha again, but it is "
+     f"premultiplied already ({TOO_DARK}): it already carries its alpha",
      lambda s, d: colour_only(s, d, s[3] + d[3] * (1 - s[3]))),
     # r8: the most natural slip after 9.2a, and the destination's own alpha as its weight
     ("9.2a reused", "you applied 9.2a's light (its sum before the division by α) to "

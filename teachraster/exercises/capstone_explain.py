@@ -58,6 +58,22 @@ CHECKED_BY = ("covers", "barycentric", "perspective_weights", "depth_passes", "o
 #: name (the capstone's glass is premultiplied).
 CHECKED_AS = {"over": "over_premultiplied"}
 
+
+def check_words(checked: str, what: str = "check", short: bool = False) -> str:
+    """How a report names check ``checked``'s ``what`` ("check" or "own cases"): "the
+    depth_passes exercise's check". r222 item 3: no notebook holds an exercise named
+    over_premultiplied; the student writes ``over`` in 12.5 from lesson 12b §4's rule, so its
+    check is named by that function and that lesson (``short``: without the lesson, for a
+    failure's label, which its sentence follows)."""
+    if checked == CHECKED_AS["over"]:
+        if short:
+            return f"over's {what}"
+        runs = "runs it" if what == "check" else "runs them"
+        return (f"over's {what} (lesson 12b §4's premultiplied over: "
+                f'ex.check("{checked}", over) {runs})')  # fmt: skip
+    return f"the {checked} exercise's {what}"
+
+
 #: The capstone's tolerance (some 17 of float32's half-ulps at 1: a float32 computation's
 #: roundings pass), as :mod:`.capstone_render` compares (its ``TOL``).
 TOL = 1e-6
@@ -134,7 +150,7 @@ def named_mistake(used, name, inside: bool = False, case: tuple | None = None,
 
 
 def _head(checked: str) -> str:
-    return f"; the {checked} exercise's check names the mistake: "
+    return f"; {check_words(checked)} names the mistake: "
 
 
 def _exact_words(used, name, case: tuple, also) -> str:
@@ -159,7 +175,7 @@ def _exact_words(used, name, case: tuple, also) -> str:
     for m in _candidates(spec, kinds):
         if gives_every_answer(spec, m, cases):
             return _head(checked) + named_on(spec, m, *case).lstrip(" .:;")
-    return (f"; the {checked} exercise's check names {_kinds_words(kinds)} on its own cases, "
+    return (f"; {check_words(checked)} names {_kinds_words(kinds)} on its own cases, "
             f"but no such mistake gives your answers here and at the {len(cases) - 1} other "
             "points of the scene tried: compare your answer here with the rule")  # fmt: skip
 
@@ -211,7 +227,7 @@ def _staged(checked: str, words: str) -> str:
     said, hinted = staged(checked, words, exercise(checked).hints)
     if not hinted:
         return said
-    said = said.replace("'s check names the mistake: ", "'s check gives a hint: ", 1)
+    said = said.replace(" names the mistake: ", " gives a hint: ", 1)
     return f"{said}; {HINT_ONLY}"
 
 
@@ -268,11 +284,11 @@ def _unnamed(checked: str, report) -> str:
     explanation (the rule in words with the case's numbers, or its constant-answer or float32
     diagnosis), or, when the function passes there, that the scene asks what the cases do not."""
     if report.passed:
-        return (f"; your function passes the {checked} exercise's own cases, so the scene asks "
+        return (f"; your function passes {check_words(checked, 'own cases')}, so the scene asks "
                 "it something they do not: compare its answer here with the rule")  # fmt: skip
     if report.stopped is not None or not report.failures:
         return ""
-    return f"; the {checked} exercise's check, on its own cases, says: {report.failures[0].explanation}"
+    return f"; {check_words(checked)}, on its own cases, says: {report.failures[0].explanation}"
 
 
 def _words_by_kind(mistakes) -> dict:

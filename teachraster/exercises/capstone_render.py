@@ -30,7 +30,7 @@ from . import capstone_glass as glass
 from . import capstone_samples as samples
 from . import output
 from .alarm import CASE_WALL_FACTOR
-from .capstone_explain import CHECKED_AS, explain_pixel
+from .capstone_explain import CHECKED_AS, check_words, explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
 from .capstone_scenes import capstone_scene
 from .report import CheckFailed, Failure, Report
@@ -345,7 +345,7 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
         if failed is not None and failed.case.startswith(f"{name} on "):
             out.append(failed)  # that scene's own fallback: said once, not nested
         elif failed is not None:
-            place = (f"the {CHECKED_AS.get(name, name)} exercise's own cases" if where == "cases"
+            place = (check_words(CHECKED_AS.get(name, name), "own cases") if where == "cases"
                      else f"the {where} scene")  # fmt: skip
             said = failed.explanation if where == "cases" else \
                 f"{failed.case}, {failed.kind}: {failed.explanation}"  # fmt: skip
@@ -354,7 +354,9 @@ def _own_cases(spec: CapstoneScene, used, failures) -> list[Failure]:
             if failed.kind == "timeout":  # r94 D12-5: no tie, no "call per pixel" to a time-out
                 text = f"your {name} fails {place}: " + said.replace(
                     "(a Python call per pixel?)", f"(one call of {name} should take microseconds)")  # fmt: skip
-            out.append(Failure(f"{name} on {place}", text, None, None, kind=failed.kind))
+            label = (check_words(CHECKED_AS.get(name, name), "own cases", short=True)
+                     if where == "cases" else place)  # fmt: skip
+            out.append(Failure(f"{name} on {label}", text, None, None, kind=failed.kind))
     return out
 
 
@@ -426,8 +428,9 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
         if failed is not None and checked == "perspective_weights":
             failed, aside = _on_a_gpu(name, report.failures)
         if failed is not None:
-            place = f"the {checked} exercise's own cases"
-            out.append(Failure(f"{name} on {place}", f"your {name} fails {place} (some drawn "
+            place = check_words(checked, "own cases")
+            out.append(Failure(f"{name} on {check_words(checked, 'own cases', short=True)}",
+                               f"your {name} fails {place} (some drawn "
                                f"afresh for this check): {failed.case}: {failed.explanation}",
                                None, None, kind=failed.kind))  # fmt: skip
     return out, aside

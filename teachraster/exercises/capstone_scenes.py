@@ -3,10 +3,11 @@ a filter's mistakes apart.
 
 The floor's checkerboard is symmetric (its transpose is itself) and its (u, v) stay inside
 [0, 1], so a filter that swaps u and v, or clamps where it should repeat, would draw the same
-frame. The capstone's floor is tinted by two ramps, red along the columns and green along the
-rows (so the transpose shows), and its vertices' (u, v) run from −¼ to 1¼ (so on screen u
-crosses 0 and 1 and v crosses 1, and the wrap mode shows: r137 D12-2). The sphere's checkerboard is tinted the same way (r40 12-2: a
-bilinear that swaps u and v drew the untinted sphere right).
+frame. The capstone's floor is tinted by two ramps, red growing from column to column (with u)
+and green from row to row (with v), so the transpose shows, and its vertices' (u, v) run from
+−¼ to 1¼ (so on screen u crosses 0 and 1 and v crosses 1, and the wrap mode shows: r137
+D12-2). The sphere's checkerboard is tinted the same way (r40 12-2: a bilinear that swaps u
+and v drew the untinted sphere right).
 
 The grid's triangles all run one way on screen, so a ``covers`` that accepts one winding
 drew it right (r148 D12-1): the capstone's grid has every other quad's two triangles listed
@@ -37,8 +38,8 @@ def capstone_scene(name: str, tiled: bool = False, tinted: bool = False) -> Scen
         return scene
     tex = np.asarray(scene.texture, dtype=float)
     h, w = tex.shape[:2]
-    ramp_x = 0.55 + 0.45 * (np.arange(w) + 0.5) / w  # red grows along the columns (u)
-    ramp_y = 0.55 + 0.45 * (np.arange(h) + 0.5) / h  # green grows along the rows (v)
+    ramp_x = 0.55 + 0.45 * (np.arange(w) + 0.5) / w  # red grows column by column (with u)
+    ramp_y = 0.55 + 0.45 * (np.arange(h) + 0.5) / h  # green grows row by row (with v)
     tinted = tex.copy()
     tinted[..., 0] *= ramp_x[None, :]
     tinted[..., 1] *= ramp_y[:, None]

@@ -205,9 +205,28 @@ def owns_variants() -> list[frozenset]:
 
 # -- one wrong pixel, explained by the rules ------------------------------------------------------
 def values_at(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
-    """Edge functions at centre ``c``, signed so that inside is positive (exact)."""
+    """Edge functions at centre ``c``, signed so that inside is positive (exact): for
+    deciding, never for printing as E (:func:`edge_values`)."""
     s = 1.0 if area2(xy) >= 0 else -1.0
-    return np.array([s * float(edge_function(xy[k], xy[(k + 1) % 3], c)) for k in range(3)])
+    return s * edge_values(xy, c)
+
+
+def edge_values(xy: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """E12, E23, E31 at ``c`` as the conventions define E (exact): what the student's own
+    ``edge_function`` gives, whatever the winding (r222 C: the oriented values were printed
+    as E, their sign flipped for a triangle running counter-clockwise on screen)."""
+    return np.array([float(edge_function(xy[k], xy[(k + 1) % 3], c)) for k in range(3)])
+
+
+def interior_side(xy: np.ndarray) -> str:
+    """Which sign of E the interior of ``xy`` has, and why, in words (one place for them)."""
+    if area2(xy) > 0:
+        return "the interior is where E > 0"
+    return (
+        f"this triangle runs counter-clockwise on screen, E(v1, v2, v3) = {fmt(area2(xy))} < 0, "
+        "so its interior is where E < 0, and a test for E > 0 must flip the sign first or swap "
+        "two vertices"
+    )
 
 
 def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, int | None, str]:
@@ -222,13 +241,13 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             None,
             "zero area",
         )
-    e = values_at(xy, c)
+    e, signed = values_at(xy, c), edge_values(xy, c)
     zeros = [k for k in range(3) if e[k] == 0]
     if (e < 0).any():
         k = int(np.argmin(e))
         return (
-            f"centre {point(c)} is outside edge {edge_name(k)} (E = {fmt(-e[k])} px² on the "
-            f"side away from the interior): it is not covered; {yours}",
+            f"centre {point(c)} is outside edge {edge_name(k)} (E = {fmt(signed[k])} px²: "
+            f"{interior_side(xy)}): it is not covered; {yours}",
             k,
             "outside",
         )
@@ -251,9 +270,11 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
             "vertex",
         )
     k = int(np.argmin(e))
+    sign = "positive" if area2(xy) > 0 else "negative"
     text = (
         f"centre {point(c)} is strictly inside all three edges (E = "
-        f"{', '.join(fmt(v) for v in e)} px², all on the interior side): it is covered; {yours}"
+        f"{', '.join(fmt(v) for v in signed)} px², all {sign}: {interior_side(xy)}): it is "
+        f"covered; {yours}"
     )
     return text, k, "inside"
 

@@ -134,6 +134,28 @@ def _mistake(kind: str, words: str, **change) -> Mistake:
 #: The tie mistake's words: its repair, staged as a hint on the first wrong tries.
 TIE_WORDS = "a tie keeps the fragment already stored (strictly nearer passes): use <, not <="
 
+#: Why a test that passes only the nearest fragment of the whole pixel is wrong (r222 item 2).
+_ON_ARRIVAL = (
+    "the test is decided as each fragment arrives, against the depth the buffer holds then, "
+    "so the first fragment passes (the buffer is empty), and each later one passes when it is "
+    "strictly nearer than that depth, even if a nearer one comes after it"
+)
+NEAREST_WORDS = f"only the nearest fragment of the whole pixel passes in your answer: {_ON_ARRIVAL}"
+NEAREST_TIES_WORDS = (
+    "only the nearest fragments of the whole pixel (every one at its smallest depth) pass in "
+    f"your answer: {_ON_ARRIVAL}"
+)
+
+
+def _nearest_only(depths, ties: bool = False) -> np.ndarray:
+    """True for the nearest fragment alone (the first of equal nearest ones; ``ties``: every
+    one of them), whatever the drawing order; nothing for no fragments."""
+    d = np.asarray(depths, dtype=float)
+    if d.size == 0:
+        return np.zeros(0, dtype=bool)
+    return d == d.min() if ties else np.arange(d.size) == int(np.argmin(d))
+
+
 DEPTH_MISTAKES = [
     _mistake("ties", TIE_WORDS, ties=True),
     _mistake("glass writes", "a fragment that does not write depth (glass) is tested but "
@@ -158,6 +180,12 @@ DEPTH_MISTAKES = [
             "a later fragment passes too when it is strictly nearer than the depth the buffer "
             "holds (does your test ask whether the buffer is empty, not whether the fragment "
             "is nearer?)", gives=lambda d, w: np.arange(len(d)) == 0),
+    # r222 item 2: the nearest of the whole pixel alone (`np.argmin`, or every fragment equal
+    # to the minimum), a reading of "the last fragment that passes is on top", was told the
+    # rule only; the test is decided on arrival, before the later fragments are known
+    Mistake("nearest only", NEAREST_WORDS, gives=lambda d, w: _nearest_only(d)),
+    Mistake("nearest only, ties too", NEAREST_TIES_WORDS,
+            gives=lambda d, w: _nearest_only(d, ties=True)),
     # r199: "lets every fragment pass" said what, not why: a buffer never written does so
     Mistake("all pass", "your function lets every fragment pass, always (does the buffer ever "
             "take a depth? A fragment that passes and writes must store its depth, so that "
