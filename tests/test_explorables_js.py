@@ -185,6 +185,13 @@ def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on()
     assert all(label["flipped"] for label in labels)
     walked = call_js(EDGES, [("walkedName", [label]) for label in labels])
     assert walked == ["E23", "E42", "E34"]
+    # review r224-02 #5: the tint buttons use the same names as the labels and the table
+    tints, tints_a = call_js(
+        EDGES, [("tintChoices", ["B", scene["B"]]), ("tintChoices", ["A", scene["A"]])]
+    )
+    assert [label for _, label in tints[1:4]] == ["E23's", "E42's", "E34's"]
+    assert [value for value, _ in tints[1:4]] == ["E12", "E23", "E31"]  # the same slots
+    assert [label for _, label in tints_a[1:4]] == ["E12's", "E23's", "E31's"]  # A clockwise
 
 
 def test_edge_labels_stand_clear_of_the_edges_centres():

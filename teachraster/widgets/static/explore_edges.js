@@ -86,7 +86,7 @@ function mount(el, data, host) {
   const [view3d, ctx3] = makeCanvas(760, 640, "the three edge functions as planes over the grid");
   const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 330] });
   cam.maxElevation = 1.2; // never top-down: there the three planes cover one another
-  const ui = { scene: null, hover: null, picked: 0 };
+  const ui = { scene: null, hover: null, picked: 0, relabel: null };
 
   function draw() {
     const scene = (ui.scene = edgeScene(state.vertices, W, H, data.bits));
@@ -99,6 +99,7 @@ function mount(el, data, host) {
     drawShared(ctx, scene, cell, m, data.colors);
     drawTriangles(ctx, state, toPx, data.colors);
     drawEdgeLabels(ctx, chosen, state, toPx);
+    if (ui.relabel) ui.relabel(chosen); // a drag can reverse the winding, and so the names
     table.innerHTML = edgeTable(scene);
     readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
     host.picture(canvas);
@@ -111,7 +112,8 @@ function mount(el, data, host) {
     if (state.planes) paint3d.request(e);
   };
   orbitDrag(view3d, cam, (e) => paint3d.request(e));
-  const controls = edgeControls(state, host, both, view3d);
+  const controls = edgeControls(state, host, both, view3d, ui);
+  ui.relabel = controls.relabel;
   root.append(...controls.rows, canvas, element("div", { html: EDGES_KEY }), readout, table, view3d);
   vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
   paint.now();
@@ -138,15 +140,18 @@ const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c
 export const EDGE_NAMES = { A: ["E12", "E23", "E31"], B: ["E32", "E24", "E43"] };
 
 // the tint buttons for the chosen triangle: [state value, label]; the value is the edge's
-// place in the triangle (E12: its first edge), the label the edge's own name
-export function tintChoices(chosen) {
-  const names = EDGE_NAMES[chosen];
+// place in the triangle (E12: its first edge), the label the edge's name as the figure and
+// the table give it: walked backwards when `setup` (the triangle's) is counter-clockwise,
+// E23 for B's E32 (review r224-02 #5: one edge, one name on the screen)
+export function tintChoices(chosen, setup) {
+  const names = setup && setup.area2 !== 0
+    ? edgeLabels(setup, EDGE_NAMES[chosen]).map(walkedName) : EDGE_NAMES[chosen];
   return [["none", "no half-plane"], ["E12", `${names[0]}'s`], ["E23", `${names[1]}'s`],
     ["E31", `${names[2]}'s`], ["all", "all three"]];
 }
 
 // the explorer's buttons: whose signs, the 3-D planes, the snapping, the half-plane tinted
-function edgeControls(state, host, repaint, view3d) {
+function edgeControls(state, host, repaint, view3d, ui) {
   const chosen = choiceButtons([["A", "signs of A (v1 v2 v3)"], ["B", "signs of B (v3 v2 v4)"]],
     state.chosen, (which, e) => {
       state.chosen = which;
@@ -170,10 +175,15 @@ function edgeControls(state, host, repaint, view3d) {
     host.setState({ tint: which });
     repaint(e);
   });
+  // the tint buttons name the chosen triangle's own edges, as the labels and the table do
+  function relabel(setup) {
+    tintChoices(state.chosen, setup).forEach(([, label], k) => {
+      if (tints.buttons[k].textContent !== label) tints.buttons[k].textContent = label;
+    });
+  }
   function sync() {
     chosen.set(state.chosen);
-    // the tint buttons name the chosen triangle's own edges, as the table below does
-    tintChoices(state.chosen).forEach(([, label], k) => (tints.buttons[k].textContent = label));
+    relabel(ui.scene ? ui.scene[state.chosen] : null); // the last drawn scene's winding
     tints.set(state.tint);
     planes.setAttribute("aria-pressed", String(state.planes));
     snap.setAttribute("aria-pressed", String(Boolean(state.snap)));
@@ -182,7 +192,7 @@ function edgeControls(state, host, repaint, view3d) {
   const rows = [element("div", { class: "tr-x-row" }, [...chosen.buttons, planes, snap]),
     element("div", { class: "tr-x-row" }, [element("span", { text: "tint the half-plane:" }),
       ...tints.buttons])];
-  return { rows, sync };
+  return { rows, sync, relabel };
 }
 
 // dragging a vertex (snapped to the grid of state.snap px), or moving it with the keys
