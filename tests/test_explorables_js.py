@@ -214,6 +214,36 @@ def test_edge_labels_stand_clear_of_the_edges_centres():
         assert min(abs(n @ (c - a)) for c in corners) >= 0.5 * cell + 2 - 1e-6
 
 
+def test_edge_labels_stay_inside_the_canvas():
+    """Review r224-02 #3: with A counter-clockwise (v1 at (13, 13)) the label of v2→v1 sat
+    past the canvas's right side, "E21: right, bias −1" cut. Given the canvas's size, a label
+    that would stick out goes to the triangle's side of its edge (still clear of the edge's
+    centres), or is pushed inside."""
+    cell, half, bounds = 40.0, [80.0, 10.0], [700.0, 600.0]
+    # a steep edge 30 px from the right side, the triangle to its left: outside overflows
+    a, b, centroid = [670.0, 100.0], [640.0, 400.0], [400.0, 250.0]
+    (at,) = call_js(EDGES, [("labelCentre", [a, b, centroid, half, cell, bounds])])
+    assert half[0] <= at[0] <= bounds[0] - half[0] and half[1] <= at[1] <= bounds[1] - half[1]
+    d = np.subtract(b, a)
+    n = np.array([-d[1], d[0]]) / np.hypot(*d)
+    corners = [np.array(at) + np.array([sx * half[0], sy * half[1]])
+               for sx in (-1, 1) for sy in (-1, 1)]  # fmt: skip
+    assert min(abs(n @ (c - np.array(a))) for c in corners) >= 0.5 * cell + 2 - 1e-6
+    # and on random edges: always inside; where the outside fits, unchanged
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        a, b = rng.uniform(0, 700, 2), rng.uniform(0, 600, 2)
+        centroid = (a + b) / 2 + rng.uniform(-150, 150, 2)
+        args = [a.tolist(), b.tolist(), centroid.tolist(), half, cell]
+        free, at = call_js(EDGES, [("labelCentre", args), ("labelCentre", args + [bounds])])
+        assert half[0] - 1e-9 <= at[0] <= bounds[0] - half[0] + 1e-9
+        assert half[1] - 1e-9 <= at[1] <= bounds[1] - half[1] + 1e-9
+        inside = (
+            half[0] <= free[0] <= bounds[0] - half[0] and half[1] <= free[1] <= bounds[1] - half[1]
+        )
+        assert not inside or at == free
+
+
 def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
     from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
 

@@ -510,7 +510,8 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
     // B's edges named too (review r93 02-5: "left, bias 0" beside A's "E12: right, bias −1")
     const text = `${walkedName(e)}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const half = [ctx.measureText(text).width / 2 + 3, (size + 3) / 2];
-    const at = labelCentre(a, b, centroid, half, cell);
+    const box = ctx.canvas.logical || { w: ctx.canvas.width, h: ctx.canvas.height };
+    const at = labelCentre(a, b, centroid, half, cell, [box.w, box.h]);
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - half[0], at[1] - half[1], 2 * half[0], 2 * half[1]);
     ctx.fillStyle = EDGE_HUES[k];
@@ -523,14 +524,25 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
 // its box (half-sizes `half`, px) a whole half-pixel clear of the edge's line, so that it
 // never covers the ringed centres on a shared edge or their owner badges (review r192 02-6:
 // a horizontal shared edge's label hid the rings the lesson asks students to look at).
-export function labelCentre(a, b, centroid, half, cell) {
+// With the canvas's size `bounds` ([w, h], px) given, a box that would stick out of it goes
+// to the triangle's side of the edge instead, and failing that is pushed inside (review
+// r224-02 #3: "E21: right, bias −1" lost its "−1" at the canvas's right side).
+export function labelCentre(a, b, centroid, half, cell, bounds) {
   const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
   const len = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
   let n = [(a[1] - b[1]) / len, (b[0] - a[0]) / len];
   if (n[0] * (mid[0] - centroid[0]) + n[1] * (mid[1] - centroid[1]) < 0) n = [-n[0], -n[1]];
   const reach = Math.abs(n[0]) * half[0] + Math.abs(n[1]) * half[1];
   const away = 0.5 * cell + 2 + reach;
-  return [mid[0] + n[0] * away, mid[1] + n[1] * away];
+  const outside = [mid[0] + n[0] * away, mid[1] + n[1] * away];
+  if (!bounds) return outside;
+  const fits = (p) => p[0] - half[0] >= 0 && p[0] + half[0] <= bounds[0] &&
+    p[1] - half[1] >= 0 && p[1] + half[1] <= bounds[1];
+  if (fits(outside)) return outside;
+  const inside = [mid[0] - n[0] * away, mid[1] - n[1] * away];
+  const at = fits(inside) ? inside : outside;
+  const clamp = (x, h, w) => Math.max(h, Math.min(w - h, x));
+  return [clamp(at[0], half[0], bounds[0]), clamp(at[1], half[1], bounds[1])];
 }
 
 // The name of the edge a triangle is tested on: a counter-clockwise triangle is walked
