@@ -244,6 +244,35 @@ def test_edge_labels_stay_inside_the_canvas():
         assert not inside or at == free
 
 
+def test_edge_labels_and_vertex_dots_leave_the_signs_readable():
+    """Review r224-02 #4: "E12: right, bias −1" stood over two centres' signs, and v1's dot on
+    the centre (2.5, 1.5) hid its middle sign ("0○0"). A label takes a place that hides no
+    centre's signs when there is one; a dot on a centre pushes that centre's signs below it."""
+    cell, half, bounds = 40.0, [80.0, 10.0], [700.0, 600.0]
+    a, b, centroid = [100.0, 100.0], [500.0, 100.0], [300.0, 300.0]  # a horizontal edge
+    signs = [[300.0, 60.0], [340.0, 60.0]]  # two centres just above its middle, signs shown
+    reach = [cell * 0.54, cell * 0.3]
+
+    def hidden(p):
+        return sum(abs(p[0] - q[0]) < half[0] + reach[0] and abs(p[1] - q[1]) < half[1] + reach[1]
+                   for q in signs)  # fmt: skip
+
+    free = call_js(EDGES, [("labelCentre", [a, b, centroid, half, cell, bounds])])[0]
+    assert hidden(free) == 2  # the plain place: over both
+    args = [a, b, centroid, half, cell, bounds, signs, reach]
+    at, none = call_js(EDGES, [("placeLabel", args), ("placeLabel", args[:6] + [[], reach])])
+    assert none == free  # no signs drawn (one half-plane tinted): the plain place
+    assert hidden(at) == 0 and at[1] < a[1]  # still outside, above the edge
+    assert a[1] - (at[1] + half[1]) >= 0.5 * cell + 2 - 1e-6  # and clear of its centres
+    # a dot on the centre: the signs' ink (a sprite's top 0.3 blank) starts below the dot
+    size = 19
+    cy_free, cy_dot = call_js(
+        EDGES, [("belowDot", [300, 305, size, cell, []]), ("belowDot", [300, 305, size, cell,
+                                                                        [[300, 300]]])]
+    )  # fmt: skip
+    assert cy_free == 305 and cy_dot - 0.9 * size + 0.3 * size >= 300 + 6 - 1e-9
+
+
 def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
     from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
 

@@ -95,10 +95,11 @@ function mount(el, data, host) {
     const chosen = state.chosen === "A" ? scene.A : scene.B;
     drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
     drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
-    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover);
+    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover,
+      state.vertices.map(toPx));
     drawShared(ctx, scene, cell, m, data.colors);
     drawTriangles(ctx, state, toPx, data.colors);
-    drawEdgeLabels(ctx, chosen, state, toPx);
+    drawEdgeLabels(ctx, chosen, state, toPx, W, H);
     if (ui.relabel) ui.relabel(chosen); // a drag can reverse the winding, and so the names
     table.innerHTML = edgeTable(scene);
     readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
@@ -379,7 +380,7 @@ export function signsShown(setup, row, col, hover = null) {
 
 // three sign glyphs per centre near the edges (signsShown): E12, E23, E31 of the chosen
 // triangle, in their colours; with one half-plane tinted, its sign at every centre
-function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
+function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null, dots = []) {
   const logical = ctx.canvas.logical;
   const three = signSize(cell, logical ? logical.w : ctx.canvas.width);
   // one half-plane tinted: its sign alone, large (review r93 02-4: read on a projector)
@@ -391,7 +392,8 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
       if (only < 0 && !signsShown(setup, r, c, hover)) continue;
       const e = givenValues(setup, r, c);
       const cx = m.left + (c + 0.5) * cell;
-      const cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
+      let cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
+      if (only < 0) cy = belowDot(cx, cy, size, cell, dots);
       for (let k = 0; k < 3; k++) {
         if (only >= 0 && k !== only) continue;
         const s = signOf(e[k]);
@@ -401,6 +403,15 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
       }
     }
   }
+}
+
+// Where a centre's three signs stand (their baseline `cy`, px) when a vertex's dot (radius
+// 6 px, `dots` in px) sits on or next to the centre: just below the dot, whose black disc hid
+// the middle sign, "0○0" at v1 = (2.5, 1.5) (review r224-02 #4); the vertex's name stands
+// above right of its dot, clear of them. A sprite's top 0.3 of its size is blank.
+export function belowDot(cx, cy, size, cell, dots) {
+  const dot = dots.find((p) => Math.abs(p[0] - cx) < cell * 0.5 && Math.abs(p[1] - cy) < cell * 0.5);
+  return dot ? Math.max(cy, dot[1] + 6 + 0.6 * size) : cy;
 }
 
 // Which left corner of the cell (row, col) the owner's letter takes: the one farther from
@@ -492,7 +503,7 @@ function drawTriangles(ctx, state, toPx, colors) {
 }
 
 // each edge of the chosen triangle labelled with its kind and bias, outside the triangle
-function drawEdgeLabels(ctx, setup, state, toPx) {
+function drawEdgeLabels(ctx, setup, state, toPx, W, H) {
   if (setup.area2 === 0) return;
   const idx = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
   const v = idx.map((i) => toPx(state.vertices[i]));
@@ -500,6 +511,15 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
   const labels = edgeLabels(setup, EDGE_NAMES[state.chosen]);
   const size = textPx(ctx, 13);
   const cell = toPx([1, 0])[0] - toPx([0, 0])[0];
+  // the centres whose three signs are drawn (with one half-plane tinted, every centre shows
+  // one sign and no place is free), and how far a triplet reaches from its centre
+  const signs = [];
+  if (!["E12", "E23", "E31"].includes(state.tint)) {
+    for (let r = 0; r < H; r++) {
+      for (let c = 0; c < W; c++) if (signsShown(setup, r, c)) signs.push(toPx([c + 0.5, r + 0.5]));
+    }
+  }
+  const reach = [cell * SIGN_GAP + cell * SIGN_SCALE / 2, cell * 0.3];
   ctx.save();
   ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
@@ -511,7 +531,7 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
     const text = `${walkedName(e)}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const half = [ctx.measureText(text).width / 2 + 3, (size + 3) / 2];
     const box = ctx.canvas.logical || { w: ctx.canvas.width, h: ctx.canvas.height };
-    const at = labelCentre(a, b, centroid, half, cell, [box.w, box.h]);
+    const at = placeLabel(a, b, centroid, half, cell, [box.w, box.h], signs, reach);
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - half[0], at[1] - half[1], 2 * half[0], 2 * half[1]);
     ctx.fillStyle = EDGE_HUES[k];
@@ -527,7 +547,11 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
 // With the canvas's size `bounds` ([w, h], px) given, a box that would stick out of it goes
 // to the triangle's side of the edge instead, and failing that is pushed inside (review
 // r224-02 #3: "E21: right, bias −1" lost its "−1" at the canvas's right side).
-export function labelCentre(a, b, centroid, half, cell, bounds) {
+// With `covers` (a box's centre -> how many centres' signs it hides), the first place that
+// fits and hides none is taken: along the edge, then farther out, then on the triangle's side;
+// failing that, the one that hides fewest (review r224-02 #4: "E12: right, bias −1" stood
+// over two centres' signs).
+export function labelCentre(a, b, centroid, half, cell, bounds, covers = null) {
   const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
   const len = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
   let n = [(a[1] - b[1]) / len, (b[0] - a[0]) / len];
@@ -538,11 +562,35 @@ export function labelCentre(a, b, centroid, half, cell, bounds) {
   if (!bounds) return outside;
   const fits = (p) => p[0] - half[0] >= 0 && p[0] + half[0] <= bounds[0] &&
     p[1] - half[1] >= 0 && p[1] + half[1] <= bounds[1];
+  if (covers) {
+    let best = null;
+    let fewest = Infinity;
+    for (const side of [1, -1]) {
+      for (const extra of [0, 0.5 * cell, cell]) {
+        for (const t of [0.5, 0.4, 0.6, 0.3, 0.7]) {
+          const d = side * (away + extra);
+          const p = [a[0] + t * (b[0] - a[0]) + n[0] * d, a[1] + t * (b[1] - a[1]) + n[1] * d];
+          const hidden = fits(p) ? covers(p) : Infinity;
+          if (hidden === 0) return p;
+          if (hidden < fewest) [best, fewest] = [p, hidden];
+        }
+      }
+    }
+    if (best) return best;
+  }
   if (fits(outside)) return outside;
   const inside = [mid[0] - n[0] * away, mid[1] - n[1] * away];
   const at = fits(inside) ? inside : outside;
   const clamp = (x, h, w) => Math.max(h, Math.min(w - h, x));
   return [clamp(at[0], half[0], bounds[0]), clamp(at[1], half[1], bounds[1])];
+}
+
+// labelCentre with the centres whose signs are drawn, `signs` (px), each reaching `reach`
+// (half-sizes, px) from its centre: the label box hides as few of them as it can
+export function placeLabel(a, b, centroid, half, cell, bounds, signs, reach) {
+  const covers = (p) => signs.filter((q) => Math.abs(p[0] - q[0]) < half[0] + reach[0] &&
+    Math.abs(p[1] - q[1]) < half[1] + reach[1]).length;
+  return labelCentre(a, b, centroid, half, cell, bounds, signs.length ? covers : null);
 }
 
 // The name of the edge a triangle is tested on: a counter-clockwise triangle is walked
