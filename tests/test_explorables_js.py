@@ -185,6 +185,13 @@ def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on()
     assert all(label["flipped"] for label in labels)
     walked = call_js(EDGES, [("walkedName", [label]) for label in labels])
     assert walked == ["E23", "E42", "E34"]
+    # review r224-02 #5: the tint buttons use the same names as the labels and the table
+    tints, tints_a = call_js(
+        EDGES, [("tintChoices", ["B", scene["B"]]), ("tintChoices", ["A", scene["A"]])]
+    )
+    assert [label for _, label in tints[1:4]] == ["E23's", "E42's", "E34's"]
+    assert [value for value, _ in tints[1:4]] == ["E12", "E23", "E31"]  # the same slots
+    assert [label for _, label in tints_a[1:4]] == ["E12's", "E23's", "E31's"]  # A clockwise
 
 
 def test_edge_labels_stand_clear_of_the_edges_centres():
@@ -205,6 +212,65 @@ def test_edge_labels_stand_clear_of_the_edges_centres():
         corners = [np.array(at) + np.array([sx * half[0], sy * half[1]])
                    for sx in (-1, 1) for sy in (-1, 1)]  # fmt: skip
         assert min(abs(n @ (c - a)) for c in corners) >= 0.5 * cell + 2 - 1e-6
+
+
+def test_edge_labels_stay_inside_the_canvas():
+    """Review r224-02 #3: with A counter-clockwise (v1 at (13, 13)) the label of v2→v1 sat
+    past the canvas's right side, "E21: right, bias −1" cut. Given the canvas's size, a label
+    that would stick out goes to the triangle's side of its edge (still clear of the edge's
+    centres), or is pushed inside."""
+    cell, half, bounds = 40.0, [80.0, 10.0], [700.0, 600.0]
+    # a steep edge 30 px from the right side, the triangle to its left: outside overflows
+    a, b, centroid = [670.0, 100.0], [640.0, 400.0], [400.0, 250.0]
+    (at,) = call_js(EDGES, [("labelCentre", [a, b, centroid, half, cell, bounds])])
+    assert half[0] <= at[0] <= bounds[0] - half[0] and half[1] <= at[1] <= bounds[1] - half[1]
+    d = np.subtract(b, a)
+    n = np.array([-d[1], d[0]]) / np.hypot(*d)
+    corners = [np.array(at) + np.array([sx * half[0], sy * half[1]])
+               for sx in (-1, 1) for sy in (-1, 1)]  # fmt: skip
+    assert min(abs(n @ (c - np.array(a))) for c in corners) >= 0.5 * cell + 2 - 1e-6
+    # and on random edges: always inside; where the outside fits, unchanged
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        a, b = rng.uniform(0, 700, 2), rng.uniform(0, 600, 2)
+        centroid = (a + b) / 2 + rng.uniform(-150, 150, 2)
+        args = [a.tolist(), b.tolist(), centroid.tolist(), half, cell]
+        free, at = call_js(EDGES, [("labelCentre", args), ("labelCentre", args + [bounds])])
+        assert half[0] - 1e-9 <= at[0] <= bounds[0] - half[0] + 1e-9
+        assert half[1] - 1e-9 <= at[1] <= bounds[1] - half[1] + 1e-9
+        inside = (
+            half[0] <= free[0] <= bounds[0] - half[0] and half[1] <= free[1] <= bounds[1] - half[1]
+        )
+        assert not inside or at == free
+
+
+def test_edge_labels_and_vertex_dots_leave_the_signs_readable():
+    """Review r224-02 #4: "E12: right, bias −1" stood over two centres' signs, and v1's dot on
+    the centre (2.5, 1.5) hid its middle sign ("0○0"). A label takes a place that hides no
+    centre's signs when there is one; a dot on a centre pushes that centre's signs below it."""
+    cell, half, bounds = 40.0, [80.0, 10.0], [700.0, 600.0]
+    a, b, centroid = [100.0, 100.0], [500.0, 100.0], [300.0, 300.0]  # a horizontal edge
+    signs = [[300.0, 60.0], [340.0, 60.0]]  # two centres just above its middle, signs shown
+    reach = [cell * 0.54, cell * 0.3]
+
+    def hidden(p):
+        return sum(abs(p[0] - q[0]) < half[0] + reach[0] and abs(p[1] - q[1]) < half[1] + reach[1]
+                   for q in signs)  # fmt: skip
+
+    free = call_js(EDGES, [("labelCentre", [a, b, centroid, half, cell, bounds])])[0]
+    assert hidden(free) == 2  # the plain place: over both
+    args = [a, b, centroid, half, cell, bounds, signs, reach]
+    at, none = call_js(EDGES, [("placeLabel", args), ("placeLabel", args[:6] + [[], reach])])
+    assert none == free  # no signs drawn (one half-plane tinted): the plain place
+    assert hidden(at) == 0 and at[1] < a[1]  # still outside, above the edge
+    assert a[1] - (at[1] + half[1]) >= 0.5 * cell + 2 - 1e-6  # and clear of its centres
+    # a dot on the centre: the signs' ink (a sprite's top 0.3 blank) starts below the dot
+    size = 19
+    cy_free, cy_dot = call_js(
+        EDGES, [("belowDot", [300, 305, size, cell, []]), ("belowDot", [300, 305, size, cell,
+                                                                        [[300, 300]]])]
+    )  # fmt: skip
+    assert cy_free == 305 and cy_dot - 0.9 * size + 0.3 * size >= 300 + 6 - 1e-9
 
 
 def test_planes_read_e_at_a_named_point_and_stay_in_their_box():

@@ -930,6 +930,9 @@ def test_02_reordered_triangle_and_the_shared_row():
     assert not (up & low).any() and low[8].sum() == 12 and not up[8].any()
     up, low = ns.stacked["naive E >= 0"]
     assert (up & low)[8].sum() == 13
+    # review r224-02 #2: snapping is seen once, a vertex off the grid moves (1.125 a tie, to even)
+    assert "(3.25, 1), (14.5, 6.25)" in ns.off_grid.trace.caption(0)
+    assert "a tie to the even multiple" in text and "subpixel_bits=2" in text
 
 
 @pytest.mark.notebook

@@ -86,7 +86,7 @@ function mount(el, data, host) {
   const [view3d, ctx3] = makeCanvas(760, 640, "the three edge functions as planes over the grid");
   const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 330] });
   cam.maxElevation = 1.2; // never top-down: there the three planes cover one another
-  const ui = { scene: null, hover: null, picked: 0 };
+  const ui = { scene: null, hover: null, picked: 0, relabel: null };
 
   function draw() {
     const scene = (ui.scene = edgeScene(state.vertices, W, H, data.bits));
@@ -95,10 +95,12 @@ function mount(el, data, host) {
     const chosen = state.chosen === "A" ? scene.A : scene.B;
     drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
     drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
-    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover);
+    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover,
+      state.vertices.map(toPx));
     drawShared(ctx, scene, cell, m, data.colors);
     drawTriangles(ctx, state, toPx, data.colors);
-    drawEdgeLabels(ctx, chosen, state, toPx);
+    drawEdgeLabels(ctx, chosen, state, toPx, W, H);
+    if (ui.relabel) ui.relabel(chosen); // a drag can reverse the winding, and so the names
     table.innerHTML = edgeTable(scene);
     readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
     host.picture(canvas);
@@ -111,7 +113,8 @@ function mount(el, data, host) {
     if (state.planes) paint3d.request(e);
   };
   orbitDrag(view3d, cam, (e) => paint3d.request(e));
-  const controls = edgeControls(state, host, both, view3d);
+  const controls = edgeControls(state, host, both, view3d, ui);
+  ui.relabel = controls.relabel;
   root.append(...controls.rows, canvas, element("div", { html: EDGES_KEY }), readout, table, view3d);
   vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
   paint.now();
@@ -138,15 +141,18 @@ const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c
 export const EDGE_NAMES = { A: ["E12", "E23", "E31"], B: ["E32", "E24", "E43"] };
 
 // the tint buttons for the chosen triangle: [state value, label]; the value is the edge's
-// place in the triangle (E12: its first edge), the label the edge's own name
-export function tintChoices(chosen) {
-  const names = EDGE_NAMES[chosen];
+// place in the triangle (E12: its first edge), the label the edge's name as the figure and
+// the table give it: walked backwards when `setup` (the triangle's) is counter-clockwise,
+// E23 for B's E32 (review r224-02 #5: one edge, one name on the screen)
+export function tintChoices(chosen, setup) {
+  const names = setup && setup.area2 !== 0
+    ? edgeLabels(setup, EDGE_NAMES[chosen]).map(walkedName) : EDGE_NAMES[chosen];
   return [["none", "no half-plane"], ["E12", `${names[0]}'s`], ["E23", `${names[1]}'s`],
     ["E31", `${names[2]}'s`], ["all", "all three"]];
 }
 
 // the explorer's buttons: whose signs, the 3-D planes, the snapping, the half-plane tinted
-function edgeControls(state, host, repaint, view3d) {
+function edgeControls(state, host, repaint, view3d, ui) {
   const chosen = choiceButtons([["A", "signs of A (v1 v2 v3)"], ["B", "signs of B (v3 v2 v4)"]],
     state.chosen, (which, e) => {
       state.chosen = which;
@@ -170,10 +176,15 @@ function edgeControls(state, host, repaint, view3d) {
     host.setState({ tint: which });
     repaint(e);
   });
+  // the tint buttons name the chosen triangle's own edges, as the labels and the table do
+  function relabel(setup) {
+    tintChoices(state.chosen, setup).forEach(([, label], k) => {
+      if (tints.buttons[k].textContent !== label) tints.buttons[k].textContent = label;
+    });
+  }
   function sync() {
     chosen.set(state.chosen);
-    // the tint buttons name the chosen triangle's own edges, as the table below does
-    tintChoices(state.chosen).forEach(([, label], k) => (tints.buttons[k].textContent = label));
+    relabel(ui.scene ? ui.scene[state.chosen] : null); // the last drawn scene's winding
     tints.set(state.tint);
     planes.setAttribute("aria-pressed", String(state.planes));
     snap.setAttribute("aria-pressed", String(Boolean(state.snap)));
@@ -182,7 +193,7 @@ function edgeControls(state, host, repaint, view3d) {
   const rows = [element("div", { class: "tr-x-row" }, [...chosen.buttons, planes, snap]),
     element("div", { class: "tr-x-row" }, [element("span", { text: "tint the half-plane:" }),
       ...tints.buttons])];
-  return { rows, sync };
+  return { rows, sync, relabel };
 }
 
 // dragging a vertex (snapped to the grid of state.snap px), or moving it with the keys
@@ -369,7 +380,7 @@ export function signsShown(setup, row, col, hover = null) {
 
 // three sign glyphs per centre near the edges (signsShown): E12, E23, E31 of the chosen
 // triangle, in their colours; with one half-plane tinted, its sign at every centre
-function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
+function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null, dots = []) {
   const logical = ctx.canvas.logical;
   const three = signSize(cell, logical ? logical.w : ctx.canvas.width);
   // one half-plane tinted: its sign alone, large (review r93 02-4: read on a projector)
@@ -381,7 +392,8 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
       if (only < 0 && !signsShown(setup, r, c, hover)) continue;
       const e = givenValues(setup, r, c);
       const cx = m.left + (c + 0.5) * cell;
-      const cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
+      let cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
+      if (only < 0) cy = belowDot(cx, cy, size, cell, dots);
       for (let k = 0; k < 3; k++) {
         if (only >= 0 && k !== only) continue;
         const s = signOf(e[k]);
@@ -391,6 +403,15 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null) {
       }
     }
   }
+}
+
+// Where a centre's three signs stand (their baseline `cy`, px) when a vertex's dot (radius
+// 6 px, `dots` in px) sits on or next to the centre: just below the dot, whose black disc hid
+// the middle sign, "0○0" at v1 = (2.5, 1.5) (review r224-02 #4); the vertex's name stands
+// above right of its dot, clear of them. A sprite's top 0.3 of its size is blank.
+export function belowDot(cx, cy, size, cell, dots) {
+  const dot = dots.find((p) => Math.abs(p[0] - cx) < cell * 0.5 && Math.abs(p[1] - cy) < cell * 0.5);
+  return dot ? Math.max(cy, dot[1] + 6 + 0.6 * size) : cy;
 }
 
 // Which left corner of the cell (row, col) the owner's letter takes: the one farther from
@@ -482,7 +503,7 @@ function drawTriangles(ctx, state, toPx, colors) {
 }
 
 // each edge of the chosen triangle labelled with its kind and bias, outside the triangle
-function drawEdgeLabels(ctx, setup, state, toPx) {
+function drawEdgeLabels(ctx, setup, state, toPx, W, H) {
   if (setup.area2 === 0) return;
   const idx = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
   const v = idx.map((i) => toPx(state.vertices[i]));
@@ -490,6 +511,15 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
   const labels = edgeLabels(setup, EDGE_NAMES[state.chosen]);
   const size = textPx(ctx, 13);
   const cell = toPx([1, 0])[0] - toPx([0, 0])[0];
+  // the centres whose three signs are drawn (with one half-plane tinted, every centre shows
+  // one sign and no place is free), and how far a triplet reaches from its centre
+  const signs = [];
+  if (!["E12", "E23", "E31"].includes(state.tint)) {
+    for (let r = 0; r < H; r++) {
+      for (let c = 0; c < W; c++) if (signsShown(setup, r, c)) signs.push(toPx([c + 0.5, r + 0.5]));
+    }
+  }
+  const reach = [cell * SIGN_GAP + cell * SIGN_SCALE / 2, cell * 0.3];
   ctx.save();
   ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
@@ -500,7 +530,8 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
     // B's edges named too (review r93 02-5: "left, bias 0" beside A's "E12: right, bias −1")
     const text = `${walkedName(e)}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const half = [ctx.measureText(text).width / 2 + 3, (size + 3) / 2];
-    const at = labelCentre(a, b, centroid, half, cell);
+    const box = ctx.canvas.logical || { w: ctx.canvas.width, h: ctx.canvas.height };
+    const at = placeLabel(a, b, centroid, half, cell, [box.w, box.h], signs, reach);
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - half[0], at[1] - half[1], 2 * half[0], 2 * half[1]);
     ctx.fillStyle = EDGE_HUES[k];
@@ -513,14 +544,53 @@ function drawEdgeLabels(ctx, setup, state, toPx) {
 // its box (half-sizes `half`, px) a whole half-pixel clear of the edge's line, so that it
 // never covers the ringed centres on a shared edge or their owner badges (review r192 02-6:
 // a horizontal shared edge's label hid the rings the lesson asks students to look at).
-export function labelCentre(a, b, centroid, half, cell) {
+// With the canvas's size `bounds` ([w, h], px) given, a box that would stick out of it goes
+// to the triangle's side of the edge instead, and failing that is pushed inside (review
+// r224-02 #3: "E21: right, bias −1" lost its "−1" at the canvas's right side).
+// With `covers` (a box's centre -> how many centres' signs it hides), the first place that
+// fits and hides none is taken: along the edge, then farther out, then on the triangle's side;
+// failing that, the one that hides fewest (review r224-02 #4: "E12: right, bias −1" stood
+// over two centres' signs).
+export function labelCentre(a, b, centroid, half, cell, bounds, covers = null) {
   const mid = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
   const len = Math.hypot(b[0] - a[0], b[1] - a[1]) || 1;
   let n = [(a[1] - b[1]) / len, (b[0] - a[0]) / len];
   if (n[0] * (mid[0] - centroid[0]) + n[1] * (mid[1] - centroid[1]) < 0) n = [-n[0], -n[1]];
   const reach = Math.abs(n[0]) * half[0] + Math.abs(n[1]) * half[1];
   const away = 0.5 * cell + 2 + reach;
-  return [mid[0] + n[0] * away, mid[1] + n[1] * away];
+  const outside = [mid[0] + n[0] * away, mid[1] + n[1] * away];
+  if (!bounds) return outside;
+  const fits = (p) => p[0] - half[0] >= 0 && p[0] + half[0] <= bounds[0] &&
+    p[1] - half[1] >= 0 && p[1] + half[1] <= bounds[1];
+  if (covers) {
+    let best = null;
+    let fewest = Infinity;
+    for (const side of [1, -1]) {
+      for (const extra of [0, 0.5 * cell, cell]) {
+        for (const t of [0.5, 0.4, 0.6, 0.3, 0.7]) {
+          const d = side * (away + extra);
+          const p = [a[0] + t * (b[0] - a[0]) + n[0] * d, a[1] + t * (b[1] - a[1]) + n[1] * d];
+          const hidden = fits(p) ? covers(p) : Infinity;
+          if (hidden === 0) return p;
+          if (hidden < fewest) [best, fewest] = [p, hidden];
+        }
+      }
+    }
+    if (best) return best;
+  }
+  if (fits(outside)) return outside;
+  const inside = [mid[0] - n[0] * away, mid[1] - n[1] * away];
+  const at = fits(inside) ? inside : outside;
+  const clamp = (x, h, w) => Math.max(h, Math.min(w - h, x));
+  return [clamp(at[0], half[0], bounds[0]), clamp(at[1], half[1], bounds[1])];
+}
+
+// labelCentre with the centres whose signs are drawn, `signs` (px), each reaching `reach`
+// (half-sizes, px) from its centre: the label box hides as few of them as it can
+export function placeLabel(a, b, centroid, half, cell, bounds, signs, reach) {
+  const covers = (p) => signs.filter((q) => Math.abs(p[0] - q[0]) < half[0] + reach[0] &&
+    Math.abs(p[1] - q[1]) < half[1] + reach[1]).length;
+  return labelCentre(a, b, centroid, half, cell, bounds, signs.length ? covers : null);
 }
 
 // The name of the edge a triangle is tested on: a counter-clockwise triangle is walked
