@@ -597,14 +597,15 @@ def test_the_floors_uv_cross_the_borders_on_screen_as_12_7_says():
 
 
 def _cell(heading: str) -> str:
-    """The markdown cell of 12_capstone.ipynb under ``## heading``."""
+    """The markdown cell of 12_capstone.ipynb under ``## heading``, its whitespace folded."""
     import json
     from pathlib import Path
 
     path = Path(__file__).parents[1] / "notebooks/exercises/12_capstone.ipynb"
     cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
     text = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
-    return next(t for t in text if t.startswith(f"## {heading} "))
+    cell = next(t for t in text if t.startswith(f"## {heading} "))
+    return " ".join(cell.split())  # the words, whatever the line breaks
 
 
 def test_the_glass_panes_alphas_are_the_scenes_and_said():
