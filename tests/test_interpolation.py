@@ -401,6 +401,29 @@ def test_recentred_plane_is_accurate_far_from_the_origin():
     assert worst_absolute > 1e-7  # the lesson: the absolute form visibly loses precision
 
 
+def test_planes_in_float32_as_a_gpus_set_up():
+    """Review r226 F1: Direct3D sets up its interpolators in float32 (D3D11.3 §15.16.2); both
+    forms take ``dtype=np.float32`` and compute and evaluate in it. Near the origin they agree
+    with float64 to float32's precision; at 16 368 px (inside a 16 384-px target, positions on
+    the 1/256-px grid) the absolute form misses by more than 1 and the recentred one does not
+    notice the distance. float64 stays the default, bit for bit."""
+    xy, f = np.array([[0.5, 0.5], [13.25, 3.5], [4.75, 11.5]]), np.array([0.1, 7.3, -2.9])
+    pts = np.array([[3.5, 4.5], [8.5, 6.5]])
+    for form in (tr.plane_equation, tr.attribute_plane):
+        single = form(xy, f, dtype=np.float32)(*pts.T)
+        assert single.dtype == np.float32
+        np.testing.assert_allclose(single, form(xy, f)(*pts.T), atol=1e-5)
+        assert form(xy, f, dtype=np.float64)(*pts.T).tolist() == form(xy, f)(*pts.T).tolist()
+    far = xy + 16_368
+    exact = [_exact_plane_value(far, f, p + 16_368) for p in pts]
+    absolute = tr.plane_equation(far, f, dtype=np.float32)(*(pts + 16_368).T)
+    recentred = tr.attribute_plane(far, f, dtype=np.float32)(*(pts + 16_368).T)
+    assert max(abs(float(Fraction(float(v)) - e)) for v, e in zip(absolute, exact)) > 0.5
+    assert max(abs(float(Fraction(float(v)) - e)) for v, e in zip(recentred, exact)) < 5e-6
+    with pytest.raises(ValueError, match="dtype"):
+        tr.plane_equation(xy, f, dtype=np.float16)
+
+
 @settings(max_examples=examples(60), deadline=None)
 @given(triangles(subpixel_coords(-1, 13)), st.sampled_from(MODES))
 def test_hypothesis_constant_vector_attribute_is_exact(xy, mode):

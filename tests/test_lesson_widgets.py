@@ -335,6 +335,20 @@ def test_plane_explorer_contours_at_round_values_some_labelled(classroom_explore
         assert "f = −0.5, 0.0" in explorer.info.value and "-0.5" not in explorer.info.value
 
 
+def test_plane_explorer_promises_values_on_the_lines_only_where_they_stand(explorer):
+    """Review r226 W1: with v1 at x = 16 (a sliver) the six contour lines packed into a band a
+    pixel wide, one value or none fitted, and the numbers still said "values on the lines"."""
+    visible = lambda: sum(t.get_visible() for t in explorer.level_labels)  # noqa: E731
+    assert visible() == explorer.labels_placed == 3
+    assert "(steps of 0.1; values on the lines)" in explorer.info.value
+    explorer.x[0].value = 16.0
+    assert visible() == explorer.labels_placed < 3
+    assert "values on the lines)" not in explorer.info.value
+    assert "values on the lines where they fit)" in explorer.info.value
+    explorer.labels_placed = 0  # none fitted: the numbers say so
+    assert "the lines too close together here for their values" in explorer._info_html()
+
+
 def test_plane_explorer_labels_wait_for_a_drag_to_end(explorer):
     """The values on the lines are hidden while a vertex is in hand, as the vertex labels."""
     _page_move(explorer, 0, 3.1, 2.4, final=False)

@@ -555,9 +555,9 @@ def test_03_r209_held_section_1_the_digits_lost_and_the_ranges_of_the_drift():
 
 
 def test_03_r216_snapping_is_for_coverage_and_the_digits_of_d():
-    """r216 03: 1 (C): GPUs snap for exact edge functions (coverage, lesson 06 §3), and set up
-    attributes from the unsnapped positions (CONVENTIONS, Interpolation), so the snapped grid
-    is no reason for exact differences; 2: 16 digits of 10^13 is 10^-3 per term (half the
+    """r216 03: 1 (C): GPUs snap for exact edge functions (coverage, lesson 06 §3); r226 F1:
+    Direct3D sets the attributes up from the snapped positions (D3D11.3 §3.2.4), llvmpipe and
+    tr.render from the unsnapped ones; 2: 16 digits of 10^13 is 10^-3 per term (half the
     gap), and D's printed 2e-4 is what their partial cancellation leaves; 4: window depth is
     itself an f/w; 7: a minus sign, not a hyphen."""
     import json
@@ -569,8 +569,12 @@ def test_03_r216_snapping_is_for_coverage_and_the_digits_of_d():
         " ".join("".join(c["source"]).split()) for c in cells if c["cell_type"] == "markdown"
     )
     assert "That is why GPUs snap" not in md and "as they are on a snapped grid" not in md
-    assert "but for **coverage**" in md and "lesson 06 §3" in md
-    assert "from the *unsnapped* positions (llvmpipe does so" in md
+    assert "decides **coverage** there" in md and "lesson 06 §3" in md
+    # r226 F1: no "GPUs set up from the unsnapped positions"; llvmpipe's choice, named as its
+    assert "The attributes are set up in floating point from the *unsnapped*" not in md
+    assert (
+        "**llvmpipe**, and with it `tr.render`, sets up the attributes from the *unsnapped*" in md
+    )
     assert "exact (this experiment's quarter-pixel grid)" in md
     # 2: per term up to half the gap near 10^13 (10^-3); D off by the printed 2.0e-04
     assert _decade(ns.far_gap[ns.far_gap_at] / 2) == -3
@@ -583,3 +587,104 @@ def test_03_r216_snapping_is_for_coverage_and_the_digits_of_d():
     assert md.count("$z_\\text{ndc} = z_\\text{clip}/w$ is itself an $f/w$") == 2
     # 7
     assert ns.far_sum < 0 and ns.far_sum_text == f"−{abs(ns.far_sum):.0f}"
+
+
+def test_03_r226_direct3d_sets_up_from_snapped_positions_in_float32():
+    """r226 03: F1: the Direct3D 11.3 functional specification, quoted as it reads, sets up the
+    attribute interpolators from the snapped positions, in float32; its case measured: float32
+    within a 16 384-px target, where the absolute form misses by more than 1 and the recentred
+    one stays within a few steps. C2: the sum printed is A x + B y + D (near -619), not its
+    negation."""
+    import json
+    import re
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    md = " ".join(
+        " ".join("".join(c["source"]).split()) for c in cells if c["cell_type"] == "markdown"
+    )
+    # the specification's words (microsoft/DirectX-Specs, d3d/archive/D3D11_3_FunctionalSpec.htm)
+    quote = (
+        "Post-clipped vertex positions in the rasterizer are snapped to fixed point, to uniformly "
+        "distribute precision across the RenderTarget area. Many rasterizer operations, including "
+        "face culling as one example, occur on fixed point snapped positions, while other "
+        "operations, such as attribute interpolator setup, use positions that have been "
+        "converted back to floating point from the fixed point snapped positions."
+    )
+    assert quote in md.replace("> ", "") and "§3.2.4 *Fixed Point Integers*" in md
+    assert "§15.16.2" in md and "16.8 fixed point, §15.16 *Rasterizer Precision*" in md
+    # float32: the specification's words on its interpolators (§5.9.1.2), not §3.1's rules,
+    # which cover 16-, 32- and 64-bit floats alike
+    assert '"single precision floating point texture coordinates (and the associated' in md
+    assert '"follow the Floating Point Rules (3.1)" (§15.16.2): float32' not in md
+    assert "read literally" in md.lower() and "`subPixelPrecisionBits`" in md
+    # the float32 table: Direct3D's largest render target, offsets on its 1/256-px grid
+    assert ns.side == 16_384 and ns.offsets32[-1] == ns.side - 16
+    on_grid = [(ns.local + off) * 256 for off in ns.offsets32]
+    assert all(np.array_equal(units, np.round(units)) for units in on_grid)
+    assert 1.0 < ns.absolute32[-1] < 2.0 and 0.05 < ns.absolute32[-2] < 0.2
+    assert max(ns.recentred32) < 4 * ns.float32_gap  # "within 3 float32 steps"
+    assert round(max(ns.recentred32) / ns.float32_gap) == 3
+    code = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    assert "dtype=np.float32" in code and "Evaluating $Ax + By + D$ then adds" in code
+    assert "Evaluating $-(Ax + By + D)$ then adds" not in code
+    assert ns.far_sum < 0  # the sum printed, and quoted as −619, is A x + B y + D itself
+    held = next(
+        "".join(c["source"]) for c in cells if "Evaluating $Ax + By + D$" in "".join(c["source"])
+    )
+    assert "negated and divided by $C$" in re.sub(r'"\s*f?"', "", held)
+
+
+def test_03_r226_shared_edge_why_triangles_and_the_shaders_derivatives():
+    """r226 03: M1: two triangles sharing an edge agree along it (C0) and the slope jumps
+    across it; M2: three points fix a plane, four do not (CS148), so a quad's shading depends
+    on its diagonal; M3: for an affine attribute ddx, ddy are (g_x, g_y), for a perspective-
+    correct one they vary; S3: the helper pixels read f inside the vertex range; C1: the loop
+    the note means is shown; S1: where the gradients are measured; S2: three decimals."""
+    import json
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    md = " ".join(
+        " ".join("".join(c["source"]).split()) for c in cells if c["cell_type"] == "markdown"
+    )
+    # M1: C0 along the shared edge, the slope along it equal, across it not
+    assert ns.seam < 1e-15
+    (along_1, along_2), (across_1, across_2) = ns.slopes
+    assert abs(along_1 - along_2) < 1e-15 and abs(across_1 - across_2) > 0.1
+    assert np.sign(across_1) != np.sign(across_2)  # the crease: f falls, then rises
+    assert "the slope of $f$ jumps" in md and "Mach bands" in md
+    # M2: the fourth value off the plane; the two splits of the quad disagree
+    assert abs(ns.pair_planes[0](*ns.v4) - ns.f4) > 0.5
+    assert abs(ns.pair_planes[0](*ns.cross) - ns.other_split(*ns.cross)) > 0.5
+    assert "This isn't true for 4 points\" (the CS148 notes, *Why Triangles?*)" in md
+    # M3: the shader's derivatives
+    assert ns.ddx_error < 1e-15 and ns.ddy_error < 1e-15
+    assert ns.ddx_u.max() > 2 * ns.ddx_u.min() > 0
+    assert "a one-pixel difference *is* the gradient" in md
+    # S3: the helper pixels read f among the vertex values; f leaves them farther out
+    assert not (ns.beyond & ns.helpers).any() and ns.beyond.sum() == 60
+    # C1: the loop shown, with x stepped in the inner loop and the row start named once
+    loop = md.split("```c")[1].split("```")[0]
+    assert "x++" in loop and "y++) { Colour tempColour = initialCol;" in loop
+    assert "initialColour" not in loop and "xmin" not in loop and "The loop below" not in md
+    # S1: the gradient measured from p, g_0 at the origin
+    assert (
+        "measured at the origin and one pixel away" not in md
+        and "(the cell above's `gradient`)" in md
+    )
+    # S2: the area figure's weights to three decimals, which sum to 1
+    import teachraster as tr
+
+    assert round(sum(round(float(w), 3) for w in tr.barycentric(ns.xy, ns.p_out)), 3) == 1.0
+    assert "{weight:.3f}" in "".join(
+        next(c["source"] for c in cells if c.get("id") == "c02a-areas")
+    )
+    # S4: the qualifiers' table after the caveat (section 3), not in section 2's stepping
+    text = ["".join(c["source"]) for c in cells]
+    table = next(i for i, t in enumerate(text) if "| `noperspective` | `noperspective` |" in t)
+    caveat = next(i for i, t in enumerate(text) if "### Caveat: a plane over the screen" in t)
+    four = next(i for i, t in enumerate(text) if t.startswith("## 4."))
+    assert caveat < table < four

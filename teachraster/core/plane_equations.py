@@ -29,11 +29,27 @@ def _nondegenerate(c) -> None:
         raise ValueError("xy: zero-area triangle: the attribute plane is not defined")
 
 
+def _working_type(dtype) -> np.dtype:
+    # The arithmetic of a set-up and of its evaluation: float64 (the package's) or float32
+    # (a GPU's interpolators, Direct3D 11.3 §15.16.2; lesson 03 §4 compares the two).
+    dtype = np.dtype(dtype)
+    if dtype not in (np.float32, np.float64):
+        raise ValueError(f"dtype must be float32 or float64, got {dtype}")
+    return dtype
+
+
+def _as_type(values, dtype: np.dtype) -> np.ndarray:
+    # x, y as the set-up's type: float64 first (any input), then rounded once to float32.
+    return np.asarray(values, dtype=np.float64).astype(dtype, copy=False)
+
+
 @dataclass(frozen=True)
 class PlaneEquation:
     """``A x + B y + C f + D = 0`` through the three points (x_i, y_i, f_i) (*Triangle Rasterisation II - Interpolation*).
 
-    A, B, D have the attribute's shape (scalar or (k,)); C is twice the signed area.
+    A, B, D have the attribute's shape (scalar or (k,)); C is twice the signed area. All are
+    computed, and the plane evaluated, in the type :func:`plane_equation` was given (float64
+    unless asked otherwise).
     """
 
     A: np.ndarray
@@ -53,7 +69,8 @@ class PlaneEquation:
 
     def __call__(self, x, y) -> np.ndarray:
         """Evaluate directly: ``f = -(A x + B y + D) / C``."""
-        x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
+        dtype = np.result_type(self.A)
+        x, y = _as_type(x, dtype), _as_type(y, dtype)
         if np.ndim(self.A):
             x, y = x[..., None], y[..., None]
         return -(self.A * x + self.B * y + self.D) / self.C
@@ -84,38 +101,47 @@ class PlaneEquation:
         return np.add.accumulate(np.concatenate([firsts[:, None], steps], axis=1), axis=1)
 
 
-def plane_equation(xy, f) -> PlaneEquation:
+def plane_equation(xy, f, dtype=np.float64) -> PlaneEquation:
     """The plane through (x_i, y_i, f_i), with *Triangle Rasterisation II - Interpolation*'s formulas (absolute coordinates).
+
+    ``dtype`` (float64 or float32): the arithmetic of every coefficient and of the plane's
+    evaluation, the positions and values rounded to it first.
 
     >>> p = plane_equation([[0, 0], [4, 0], [0, 4]], [1.0, 3.0, 5.0])
     >>> float(p.dx), float(p.dy), float(p(1, 1))
     (0.5, 1.0, 2.5)
+    >>> plane_equation([[0, 0], [4, 0], [0, 4]], [1.0, 3.0, 5.0], dtype=np.float32)(1, 1).dtype
+    dtype('float32')
     """
-    (x1, y1), (x2, y2), (x3, y3) = as_finite("xy", xy, (3, 2))
-    f = _values(f)
+    dtype = _working_type(dtype)
+    (x1, y1), (x2, y2), (x3, y3) = as_finite("xy", xy, (3, 2)).astype(dtype)
+    f = _values(f).astype(dtype)
     r1, r2, r3 = f
     A = y1 * (r2 - r3) + y2 * (r3 - r1) + y3 * (r1 - r2)
     B = r1 * (x2 - x3) + r2 * (x3 - x1) + r3 * (x1 - x2)
     C = x1 * (y2 - y3) + x2 * (y3 - y1) + x3 * (y1 - y2)
     D = -(x1 * (y2 * r3 - y3 * r2) + x2 * (y3 * r1 - y1 * r3) + x3 * (y1 * r2 - y2 * r1))
     _nondegenerate(C)
-    return PlaneEquation(A=A, B=B, C=float(C), D=D)
+    return PlaneEquation(A=A, B=B, C=float(C) if dtype == np.float64 else C, D=D)
 
 
-def setup_matrix(xy) -> np.ndarray:
+def setup_matrix(xy, dtype=np.float64) -> np.ndarray:
     """Fatahalian's (CMU 15-462, *Texture*) once-per-triangle matrix M, which maps vertex differences to gradients.
 
     ``M = 1/det [[c_y - a_y, a_y - b_y], [a_x - c_x, b_x - a_x]]`` with
     ``det = (b_x - a_x)(c_y - a_y) - (c_x - a_x)(b_y - a_y)``.
 
+    ``dtype`` (float64 or float32): its arithmetic, the positions rounded to it first.
+
     >>> setup_matrix([[0, 0], [4, 0], [0, 2]])
     array([[0.25, 0.  ],
            [0.  , 0.5 ]])
     """
-    (ax, ay), (bx, by), (cx, cy) = as_finite("xy", xy, (3, 2))
+    dtype = _working_type(dtype)
+    (ax, ay), (bx, by), (cx, cy) = as_finite("xy", xy, (3, 2)).astype(dtype)
     det = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay)
     _nondegenerate(det)
-    return np.array([[cy - ay, ay - by], [ax - cx, bx - ax]]) / det
+    return np.array([[cy - ay, ay - by], [ax - cx, bx - ax]], dtype=dtype) / det
 
 
 @dataclass(frozen=True)
@@ -147,25 +173,29 @@ class AttributePlane:
         return self.B
 
     def __call__(self, x, y) -> np.ndarray:
-        dx = np.asarray(x, dtype=np.float64) - self.origin[0]
-        dy = np.asarray(y, dtype=np.float64) - self.origin[1]
+        dtype = np.result_type(self.A)  # the set-up's arithmetic, float64 unless asked
+        dx = _as_type(x, dtype) - dtype.type(self.origin[0])
+        dy = _as_type(y, dtype) - dtype.type(self.origin[1])
         if np.ndim(self.A):
             dx, dy = dx[..., None], dy[..., None]
         return self.value + self.A * dx + self.B * dy
 
 
-def attribute_plane(xy, f, M: np.ndarray | None = None) -> AttributePlane:
+def attribute_plane(xy, f, M: np.ndarray | None = None, dtype=np.float64) -> AttributePlane:
     """Plane of attribute ``f`` from the setup matrix: ``[A, B] = M [f_b - f_a, f_c - f_a]``.
 
-    Pass ``M`` to reuse one set-up for many attributes.
+    Pass ``M`` to reuse one set-up for many attributes. ``dtype`` (float64 or float32): the
+    arithmetic of the set-up and of the plane's evaluation, positions and values rounded to
+    it first.
 
     >>> plane = attribute_plane([[10, 10], [14, 10], [10, 14]], [1.0, 3.0, 5.0])
     >>> float(plane.A), float(plane.B), float(plane(11, 11))
     (0.5, 1.0, 2.5)
     """
-    v = as_finite("xy", xy, (3, 2))
-    f = _values(f)
-    M = setup_matrix(v) if M is None else np.asarray(M, dtype=np.float64)
+    dtype = _working_type(dtype)
+    v = as_finite("xy", xy, (3, 2)).astype(dtype)
+    f = _values(f).astype(dtype)
+    M = setup_matrix(v, dtype) if M is None else np.asarray(M, dtype=np.float64).astype(dtype)
     diffs = np.stack([f[1] - f[0], f[2] - f[0]])
     A, B = np.tensordot(M, diffs, axes=1)
     return AttributePlane(origin=(float(v[0, 0]), float(v[0, 1])), value=f[0], A=A, B=B)

@@ -475,9 +475,11 @@ class PlaneExplorer:
         """The values of the :func:`labelled` contour lines, each on its line inside the
         grid, off the triangle's edges, dots and vertex labels and off the other values,
         outside the triangle where it can be (it hides no pixel there); a line with no
-        such place goes without."""
+        such place goes without. ``labels_placed``: how many found a place (the numbers
+        beside the figure promise values on the lines only where some did)."""
         for label in self.level_labels:
             label.set_visible(False)
+        self.labels_placed = 0
         if not segments:
             return
         ax, levels = self.ax, self.levels
@@ -501,6 +503,7 @@ class PlaneExplorer:
             label.set_position(ax.transData.inverted().transform(at))
             label.set_visible(True)
             taken.append(boxes_around(at, half)[0])
+            self.labels_placed += 1
 
     def _info_html(self) -> str:
         s = self.system
@@ -529,7 +532,7 @@ class PlaneExplorer:
         if len(levels) > 1:
             step = level_text([0.0, levels[1] - levels[0]])[1]
             contours = (f"contour lines (dashed) at f = {', '.join(level_text(levels))} "
-                        f"(steps of {step}; values on the lines)")  # fmt: skip
+                        f"(steps of {step}; {self._values_shown()})")  # fmt: skip
         elif len(levels) == 1:
             contours = f"contour line (dashed) at f = {level_text(levels)[0]}"
         else:
@@ -546,6 +549,18 @@ class PlaneExplorer:
             f"dx = −A/C = {-A / C + 0.0:.4f}, dy = −B/C = {-B / C + 0.0:.4f}",
         ]
         return INFO_DIV + system + "<br>".join(parts) + "</div>"
+
+    def _values_shown(self) -> str:
+        """Where the contour lines' values stand, as the picture has them: on the lines, on
+        some, or nowhere (review r226 W1: on a sliver the lines pack into a band a pixel wide
+        where no value fits, and the numbers still said "values on the lines")."""
+        wanted = int(labelled(self.levels).sum())
+        placed = getattr(self, "labels_placed", wanted)
+        if placed >= wanted:
+            return "values on the lines"
+        if placed:
+            return "values on the lines where they fit"
+        return "the lines too close together here for their values"
 
     def _repr_mimebundle_(self, **kwargs):
         return self.widget._repr_mimebundle_(**kwargs)

@@ -143,8 +143,9 @@ def fill_stage(
     """4. Every covered pixel centre of every triangle not culled, in drawing order.
 
     Coverage is decided on the snapped grid (identical to :func:`teachraster.rasterize`);
-    the barycentrics ``Fragments.lam`` come from the unsnapped positions, as GPUs set up
-    attributes (so the new vertices clipping creates interpolate exactly). Filling always
+    the barycentrics ``Fragments.lam`` come from the unsnapped positions, as llvmpipe sets up
+    attributes (so the new vertices clipping creates interpolate exactly; Direct3D sets them
+    up from the snapped positions, D3D11.3 §3.2.4 and §15.16.2). Filling always
     runs, so it has no plan entry. ``spans`` (Hi-Z, :mod:`teachraster.pipeline.hiz_tiles`)
     drops hidden blocks of raster lines before they become fragments. ``coverage``, a
     caller's rule (:mod:`teachraster.pipeline.planning.overrides`), decides instead, centre

@@ -230,6 +230,21 @@ export function valueTicks(scale, elevation, zScale) {
   return scale * zScale * Math.cos(elevation) / 2 >= 24 ? [0, 0.5, 1] : [0];
 }
 
+// The corner of the W x H screen farthest from a camera at `yaw` and `elevation`: the value
+// axis stands there, behind the sheets (review r226 FIG3: at the corner (0, 0), turned to the
+// front, it ran through them)
+export function axisCorner(W, H, yaw, elevation) {
+  const towards = towardsCamera(yaw, elevation);
+  const corners = [[0, 0], [W, 0], [W, H], [0, H]];
+  const depth = ([x, y]) => x * towards[0] + y * towards[1];
+  return corners.reduce((far, c) => (depth(c) < depth(far) ? c : far));
+}
+
+// Where a vertex label stands: below its vertex on the screen, where the ground is, since
+// every sheet (a value f >= 0) rises above the vertex (review r226 FIG3: above it, the blue
+// sheet's lower edge crossed v1's label). The text's baseline `base` px under the box's top.
+export const VERTEX_LABEL = { up: -4, down: 22, base: 17 };
+
 function mount(el, data, host) {
   let state = { w: data.w, show: { correct: true, affine: true, fw: false, inv: false },
     ...host.state() };
@@ -285,14 +300,15 @@ function mount(el, data, host) {
     const { xy, f } = data;
     const w = state.w;
     const { polys, crossing, gap } = scene();
-    // the labels: the value axis at the screen's corner (0, ½, 1), each vertex, the gap. Text
+    // the labels: the value axis at the far corner (0, ½, 1), each vertex, the gap. Text
     // no smaller than 15 px: the canvas is shown shrunk to the notebook's column on a small
     // screen (review r7: 10-11 px there)
-    const labels = [0, 0.5, 1].map((v) => ({ p: [0, 0, v * zScale], text: ` ${v}`,
+    const [ax0, ay0] = axisCorner(W, H, cam.yaw, cam.elevation);
+    const labels = [0, 0.5, 1].map((v) => ({ p: [ax0, ay0, v * zScale], text: ` ${v}`,
       color: "#333", font: "16px sans-serif", fixed: true, up: 17, down: 5 }));
     xy.forEach(([x, y], k) => labels.push({ p: [x, y, 0], color: "#111",
       text: ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, font: "bold 16px sans-serif",
-      halo: true, up: 17, down: 5 }));
+      halo: true, ...VERTEX_LABEL }));
     const showGap = state.show.correct && state.show.affine && gap.gap > 1e-9;
     const first = labels.length;
     // the bar's labels: one at each end and one at its middle while the bar stands tall
@@ -306,7 +322,7 @@ function mount(el, data, host) {
     });
     measure();
     // the view fitted to what is drawn at this turn (review r78 03-3), above the key line
-    const points = polys.flatMap((poly) => poly.pts).concat([[0, 0, zScale]]);
+    const points = polys.flatMap((poly) => poly.pts).concat([[ax0, ay0, zScale]]);
     const box = { left: 8, top: 8, right: 632, bottom: 440 };
     fitView(cam, points, labels, box);
     if (showGap) {
@@ -323,9 +339,13 @@ function mount(el, data, host) {
     // (review r96 03-2): only those a label's height apart are kept
     const shown = valueTicks(cam.scale, cam.elevation, zScale);
     labels.splice(0, 3, ...labels.slice(0, 3).filter((l, k) => shown.includes([0, 0.5, 1][k])));
-    // each overlap in its true order (r96 03-1) at rest; while the view turns, by centre
-    // depth: the exact order costs ~130 ms a picture (node, 564 pieces), a 5-fps drag
-    drawPolygons(ctx, cam, polys, !cam.dragging);
+    // the ground first (its bias puts it under everything), then the value axis at the far
+    // corner, which every sheet covering it on the screen stands in front of (axisCorner), then
+    // each overlap of the sheets in its true order (r96 03-1) at rest; while the view turns, by
+    // centre depth: the exact order costs ~130 ms a picture (node, 564 pieces), a 5-fps drag
+    drawPolygons(ctx, cam, polys.filter((poly) => !poly.sheet));
+    line3d(ctx, cam, [ax0, ay0, 0], [ax0, ay0, zScale], "#555", 1.5);
+    drawPolygons(ctx, cam, polys.filter((poly) => poly.sheet), !cam.dragging);
     // where the two f sheets cross (see sheetPieces), drawn over them (r89 03-1)
     for (const [a, b] of crossing) {
       line3d(ctx, cam, [a[0], a[1], a[2] * zScale], [b[0], b[1], b[2] * zScale], "#222", 2.5);
@@ -346,7 +366,6 @@ function mount(el, data, host) {
         ctx.stroke();
       }
     }
-    line3d(ctx, cam, [0, 0, 0], [0, 0, zScale], "#555", 1.5);
     xy.forEach(([x, y], k) => {
       line3d(ctx, cam, [x, y, 0], [x, y, f[k] * zScale], "#444", 1, [3, 3]);
     });
@@ -355,8 +374,8 @@ function mount(el, data, host) {
     const ys = spreadLabels(labels.map((l, i) => ({ x: anchors[i][0], y: anchors[i][1] - l.up,
       w: l.w, h: l.up + l.down, fixed: l.fixed })), 0, 444);
     labels.forEach((l, i) => {
-      const [x, y] = [anchors[i][0], ys[i] + l.up];
-      if (Math.abs(y - anchors[i][1]) > 3) {
+      const [x, y] = [anchors[i][0], ys[i] + (l.base ?? l.up)]; // the text's baseline
+      if (Math.abs(ys[i] + l.up - anchors[i][1]) > 3) { // moved off its place: a leader
         strokeLine(ctx, anchors[i], [x + 4, y - 5], l.color, 1);
       }
       label2d(ctx, x, y, l.text, l.color, l.font, l.halo);
@@ -365,7 +384,7 @@ function mount(el, data, host) {
     ctx.font = "15px sans-serif";
     ctx.fillText(crossing.length
       ? "grey: the screen and the triangle; black: where the two f sheets cross"
-      : "grey: the screen and the triangle; height: the value (axis at the corner)", 8, 462);
+      : "grey: the screen and the triangle; height: the value (axis at the far corner)", 8, 462);
     readout.innerHTML = readoutText(w, state.show, gap);
     host.picture(canvas);
   }
