@@ -76,6 +76,8 @@ COMPARISON_SHOWN_PX = 556
 CLASSROOM_COLUMN_PX = 920
 COMPARISON_CLASSROOM_PX = 20.0
 COMPARISON_PANEL = 0.8
+#: Inches the comparison's colour bars are moved away from their panels (their labels' room)
+BAR_SHIFT = 0.3
 
 
 def shown_samples(method: str, samples: str) -> str:
@@ -262,6 +264,11 @@ class FillPlayer(Holdable):
             # in a classroom's column, scaled down to its greatest height: 20 px there
             view = self.interp_view
             bars = [im.colorbar.ax for im in (*view.images, view.heatmap) if im.colorbar]
+            # the colour bars a little farther from their panels: the vertex labels, at this
+            # size, reach past a panel's side ("v2" lay over a colour bar, review r225 FIG1)
+            for bar in bars:
+                box = bar.get_position()
+                bar.set_position(box.translated(BAR_SHIFT / ifig.get_figwidth(), 0.0))
             fw, fh = ifig.get_size_inches() * ifig.dpi
             for shown, px in ((COMPARISON_SHOWN_PX, 13.0),  # r37: 12.2 px read small
                               (min(CLASSROOM_COLUMN_PX, COMPARISON_MAX_PX * fw / fh),
