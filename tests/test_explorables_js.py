@@ -1031,30 +1031,35 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
 
     assert data["guard"] == guard_band(16, 16, 8) and data["exactPx"] == 2**21
     assert data["guardPx"] < 2**21 and "e+" not in html["clip"]
-    # review r157 00-3: "≤ 261,881 w" and "< 2,095,055 px" were rounded apart ((261,881 + 1)
-    # · 8 = 2,095,056); both are now printed exactly, from one function, and the window
-    # bound is (G + 1) · 8 of the G printed (inclusive, as classify tests the band)
+    # review r225 S4 (after r157 00-3, r166 00-8): the band is the simulator's choice, not a
+    # GPU's, whose band is set by its own fixed-point rasteriser; rounded (seven figures were
+    # noise in a tour; lessons 05a and 10 print it exactly), G and the reach agree
     guard, reach = guard_band_reach(16, 16, 8)
     assert (guard, reach) == (data["guard"], data["guardPx"]) == (261880.856, 2095054.848)
-    assert (
-        "G = 261,880.856" in html["clip"] and "≤ (G + 1) · 16/2 = 2,095,054.848 px" in html["clip"]
-    )
-    shown = re.findall(r"[\d,]+\.\d+", html["clip"].split("G = ")[1])[:2]
-    g_shown, px_shown = (float(x.replace(",", "")) for x in shown)
-    assert (
-        round((g_shown + 1) * 8, 3) == px_shown
-        and "&lt;" not in html["clip"].split("G = ")[1][:200]
-    )
-    assert "2,097,152 px" in html["clip"] and "a larger one gets a smaller G" in html["clip"]
-    # review r166 00-8: the guard band as the GPU's (its fixed-point range), not as the
-    # simulator's setting ("G is set per image")
+    assert "G ≈ 261,881" in html["clip"] and "within about 2.1 million px" in html["clip"]
+    assert "This simulator's band is its own choice" in html["clip"]
+    assert "2,097,152 px" in html["clip"] and "261,880.856" not in html["clip"]
     assert "G is set per image" not in html["clip"] and "fixed-point rasteriser" in html["clip"]
+    # the clip coordinates to three decimals each, z as x (r225 S4: 0.052632 beside 2.200)
+    for stage in ("vertex", "clip"):
+        cells = re.findall(r"<td>(-?\d+\.\d+)</td>", html[stage])[:12]  # v1 to v3, x y z w
+        assert all(len(c.split(".")[1]) == 3 for c in cells), cells
+        assert np.allclose([float(c) for c in cells], np.ravel(data["clip"]), atol=5.1e-4)
+    assert "0.052632" not in html["vertex"]
+    # r225 F1: the specification's names (object, eye, clip coordinates)
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "explore_pipeline.js").read_text()
+    assert "object → clip coordinates" in js and "model → clip" not in js
     # review r166 00-7: the stage names the stencil test, and says what it does; its key
     # matches the picture (depth 1 is grey 200, light; white is "no fragment", not the
     # cleared buffer's 1)
     assert "stencil test" in html["depth"] and "per-pixel integer" in html["depth"]
     assert "mid grey" not in html["depth"] and "depth 1 light grey" in html["depth"]
-    assert "white: no fragment (the buffer keeps its cleared 1 there)" in html["depth"]
+    # review r225 S3: the cleared value, 1, is not given a second colour: the picture shows
+    # the fragments' depths, white where none was written
+    assert "white: no fragment written (the cleared pixels, left blank)" in html["depth"]
+    assert "the buffer keeps its cleared 1 there" not in html["depth"]
+    # review r225 M1: depth is interpolated affinely, with no divide (unlike the attribute)
+    assert "affine on the screen: no divide by w, unlike s" in html["depth"]
     assert "cleared to white" in html["blend"] and "dark grey" not in html["blend"]
     # early-z (test and write before the shader) only when the shader neither discards nor
     # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the

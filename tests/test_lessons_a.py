@@ -171,7 +171,7 @@ def test_tour_says_the_players_last_step_shows_u():
     text = next(t for t in _cells("00_tour", "markdown") if t.startswith("## Step through it"))
     text = " ".join(text.split())
     assert "The steps show coverage, which" not in text
-    assert "the last step then colours each covered pixel by its interpolated `u`" in text
+    assert "the last step then colours each covered pixel by its interpolated `s`" in text
 
 
 # -- executed: the quoted numbers ---------------------------------------------------------------
@@ -202,7 +202,7 @@ def test_00_facing_and_the_two_methods():
     assert "snapping" in "\n".join(_cells("00_tour", "markdown"))
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
     # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
-    assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
+    assert round(ns.iso_at, 3) == 0.667 and ns.ds_iso.max() < 1e-12
     lam = tr.barycentric(ns.tri.xy, np.array([[x + 0.5, y + 0.5] for y in range(16)
                                               for x in range(16)]))  # fmt: skip
     inside = (lam >= 0).all(axis=1)
@@ -249,7 +249,7 @@ def test_00_facing_and_the_two_methods():
         assert ns.player.step == ns.start and ns.player.caption_text.startswith("row 5")
     # review r52 00-6: the zero-error line is solid and keyed, unlike the comparison's dashed
     # row, which the text names
-    assert '"--", color="white"' not in code and 'label="Δu = 0"' in code
+    assert '"--", color="white"' not in code and 'label="Δs = 0"' in code
     assert "it is not the line of zero error" in tour
 
 
@@ -274,12 +274,15 @@ def _tour_error_cell(w) -> dict:
 
     cells = _cells("00_tour", "code")
     imports = next(c for c in cells if "import teachraster as tr" in c)
-    error_map = next(c for c in cells if 'title="u along v1 → v2"' in c)
+    error_map = next(c for c in cells if 'title="s along v1 → v2"' in c)
+    halfway = next(c for c in cells if "q_half = Predict(" in c)
     ns: dict = {}
     exec(imports.replace("%matplotlib inline", ""), ns)
-    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=w, attrs={"u": [0.0, 1.0, 0.0]})
-    # the question it waits for (r208 00-5), stood in for
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=w, attrs={"s": [0.0, 1.0, 0.0]})
+    # the question it waits for (r208 00-5), stood in for; q_half's cell makes its weights
     ns.update(tri=tri, W=16, H=16, q_centres=SimpleNamespace(hold=lambda: None))
+    exec(halfway, ns)
+    ns["q_half"] = SimpleNamespace(hold=lambda: None)
     ns["halfplane"] = tr.rasterize(tri, 16, 16, method="halfplane", trace=True)
     out = io.StringIO()
     with warnings.catch_warnings(), contextlib.redirect_stdout(out):
@@ -341,8 +344,8 @@ def test_00_the_affine_gap_is_printed_at_centres_and_between_r166():
     assert round(float(np.nanmax(ns.err)), 3) == 0.152 == round(ns.largest_gap, 3)
     # 3 - 2 sqrt 2 on the edge v1 v2 (w doubles along it), the maximum of the whole triangle
     peak = 3 - 2 * np.sqrt(2)
-    assert abs(np.abs(ns.du_all).max() - peak) < 1e-5 and abs(ns.gap.max() - peak) < 1e-4
-    assert round(float(np.abs(ns.du_all).max()), 3) == round(float(ns.gap.max()), 3) == 0.172
+    assert abs(np.abs(ns.ds_all).max() - peak) < 1e-5 and abs(ns.gap.max() - peak) < 1e-4
+    assert round(float(np.abs(ns.ds_all).max()), 3) == round(float(ns.gap.max()), 3) == 0.172
     from notebook_runs import executed, streams
 
     printed = streams(executed("00_tour").notebook())
@@ -371,15 +374,15 @@ def test_00_the_map_follows_the_lessons_triangle_r208():
     showed w 1, 2, 4 and v1 at (2.2, 1.5). It is built from tri and follows it."""
     from teachraster.widgets.pipeline_map import TOUR_U, TOUR_W, TOUR_XY
 
-    given = tr.Triangle(TOUR_XY, w=TOUR_W, attrs={"u": TOUR_U})
+    given = tr.Triangle(TOUR_XY, w=TOUR_W, attrs={"s": TOUR_U})
     edits = [
         given,
-        tr.Triangle(TOUR_XY, w=[1.0, 1.0, 1.0], attrs={"u": TOUR_U}),
-        tr.Triangle([[2.5, 1.5], *TOUR_XY[1:]], w=TOUR_W, attrs={"u": TOUR_U}),
+        tr.Triangle(TOUR_XY, w=[1.0, 1.0, 1.0], attrs={"s": TOUR_U}),
+        tr.Triangle([[2.5, 1.5], *TOUR_XY[1:]], w=TOUR_W, attrs={"s": TOUR_U}),
     ]
     for tri in edits:
         data = _tour_map_cell(tri)["pipeline_map"].data
-        assert data["w"] == tri.w.tolist() and data["u"] == tri.attrs["u"].tolist()
+        assert data["w"] == tri.w.tolist() and data["u"] == tri.attrs["s"].tolist()
         assert np.allclose(np.array(data["window"])[:, :2], tri.xy, atol=1e-9)
         assert data["fragments"] == int(tr.rasterize(tri, 16, 16).coverage.sum())
     assert _tour_map_cell(edits[2])["pipeline_map"].data["window"][0][:2] == [2.5, 1.5]
@@ -396,13 +399,15 @@ def test_00_player_colours_and_held_outputs_r208():
     fills = next(c for c in code if 'axes[0].set_title(f"span tables, u4' in c)
     assert "part_fill" not in fills and "plot_coverage(ax, fill_)\n" in fills
     assert '"flat-bottom part: covered, rest"' not in fills and '"covered",' in fills
-    error_map = next(c for c in code if 'title="u along v1 → v2"' in c)
+    error_map = next(c for c in code if 'title="s along v1 → v2"' in c)
     assert error_map.startswith("q_centres.hold()")
     player = next(c for c in code if "FillPlayer(" in c)
     assert "empty grid" not in player and "step 0 shows only the snapped triangle" in player
-    tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
-    assert "Opened by its title instead, the comparison takes the steps' place" in tour
-    assert "close it to step again" in tour
+    # review r225 S7: the player's own hint says it (lesson 00's manual of it went)
+    from teachraster.widgets.player import COMPARISON_HINT
+
+    assert "It then takes the steps' place" in COMPARISON_HINT
+    assert "close it to step again" in COMPARISON_HINT
 
 
 def test_00_r37_items():
@@ -424,6 +429,62 @@ def test_00_r37_items():
     # is §15.1/§15.11, its default FALSE the API documentation's (D3D11_RASTERIZER_DESC)
     assert "§15.11 *Cull State*, §3.4.2.1 *Top-Left Rule*, §15.4 *Clipping*" in table
     assert "§3.4.1" not in table and "D3D11_RASTERIZER_DESC" in table
+
+
+@pytest.mark.notebook
+def test_00_r225_items():
+    """Review r225, lesson 00. F1: the GL specification's coordinate names (object, eye,
+    clip), model/world/view as the engines' and textbooks'. M1: window depth is affine on the
+    screen, interpolated with no divide: printed against the exact depth. M2: a question in
+    the perspective section (halfway along v1 -> v2 on the screen: s = 1/3, not 0.5), its
+    answer printed after it, no "plain to see". S1: the attribute is s, not Ek's screen u.
+    S2: the symbols lesson 00 uses list 00. S5: the opening is the figure and one paragraph.
+    S6: the error drawn as the player's comparison draws it, |Δs|. S7: the player's text is
+    short."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("00_tour")
+    md = _cells("00_tour", "markdown")
+    code = _cells("00_tour", "code")
+    tour = " ".join(" ".join(md).split())
+    printed = streams(executed("00_tour").notebook())
+    # F1
+    assert "model → world → view → clip space in OpenGL's" not in tour
+    assert "from object to eye to clip coordinates" in tour
+    assert "model (object), world and view (camera) space" in tour
+    # M1: z_win affine on the screen (to rounding), w itself not
+    assert ns.z_gap < 1e-12 and round(ns.w_gap, 2) == 0.96
+    assert f"window depth, affine - exact: at most {ns.z_gap:.0e}" in printed
+    assert "w itself, affine - exact: at most 0.96" in printed and "near 0.5, far 10;" in printed
+    assert "we actually don't need to do that" in tour
+    assert "*Perspective Correct Depth Interpolation*" in tour
+    # M2: asked before the figure that shows it, held behind it, printed after it
+    assert ns.half_answer == 0.33 and abs(ns.s_half - 1 / 3) < 1e-12
+    assert abs(ns.s_half_affine - 0.5) < 1e-12
+    assert "affine s = 0.500," in printed and "perspective-correct s = 0.333" in printed
+    ask = next(i for i, c in enumerate(code) if "q_half = Predict(" in c)
+    shown = next(i for i, c in enumerate(code) if 'title="s along v1 → v2"' in c)
+    assert shown == ask + 1 and "\nq_half.hold()\n" in code[shown]
+    before = tour[: tour.index("Work one point out by hand first")]
+    assert "0.333" not in before and "1/3" not in before and "plain to see" not in tour
+    # S1: one u (Ek's screen x); the attribute is s in the text, the figures and the map
+    assert set(ns.tri.attrs) == {"s"} and "`u`" not in tour and "attribute $u$" not in tour
+    assert "u at the covered centres" not in printed and "|Δu|" not in "\n".join(code)
+    # S2
+    table = next(t for t in md if "### Symbols used in every lesson" in t).splitlines()
+    for start in (r"| $E(\mathbf{a}", r"| $\lambda_1", r"| $w$, $w_k$", r"| $z_\text{win}$",
+                  r"| $f$, $f_k$"):  # fmt: skip
+        line = next(ln for ln in table if ln.startswith(start))
+        assert line.rstrip(" |").split("| ")[-1].startswith("00, "), line
+    # S5: nothing from the specifications before the first triangle
+    opening = " ".join(md[: next(i for i, t in enumerate(md) if t.startswith("## One triangle"))])
+    assert "§" not in opening and "Why triangles?" not in opening and "- **" not in opening
+    # S6: one encoding of the error, the player's
+    error_map = code[shown]
+    assert "SIGNED_CMAP" not in error_map and 'plot_error_heatmap(axd["ds"]' in error_map
+    # S7
+    step = next(t for t in md if t.startswith("## Step through it"))
+    assert len(step.splitlines()) <= 10
 
 
 @pytest.mark.notebook

@@ -1371,6 +1371,63 @@ def test_the_comparison_reads_12_px_inside_its_accordion_at_1024_px():
         widget.close()
 
 
+def test_the_comparison_reads_classroom_size_and_rings_beside_its_pixel_r225():
+    """Review r225 FIG1 (lesson 00 c14): in a classroom's 920-px column the comparison, scaled
+    down to its greatest height, read 11-13 px beside the lesson's figures' 17; its text now
+    reads 20 px there (the panels a little smaller) and 13 in the accordion at 1024 px. The
+    ring round the largest error lay on that pixel and hid its colour: it now runs round it,
+    clear of its corners."""
+    from teachraster.plotting import use_style
+    from teachraster.widgets.player import (
+        CLASSROOM_COLUMN_PX,
+        COMPARISON_CLASSROOM_PX,
+        COMPARISON_SHOWN_PX,
+    )
+
+    with use_style("classroom"):
+        widget, fig, max_height = _comparison_figure()
+    try:
+        size, text = smallest_text_px(fig, max_height=max_height, column=CLASSROOM_COLUMN_PX)
+        assert size >= COMPARISON_CLASSROOM_PX - 0.5, (size, text)
+        size, text = smallest_text_px(fig, max_height=max_height, column=COMPARISON_SHOWN_PX)
+        assert size >= 13.0, (size, text)
+        ring = widget.interp_view.heatmap.marker
+        ax = ring.axes
+        (x0, _), (x1, _) = ax.transData.transform([(0.0, 0.0), (1.0, 0.0)])
+        pixel = abs(x1 - x0) * 72 / fig.dpi  # points
+        inner = ring.get_markersize() / 2 - ring.get_markeredgewidth() / 2
+        assert ring.get_visible() and inner >= 0.75 * pixel > 0.5 * np.sqrt(2) * pixel
+    finally:
+        widget.close()
+
+
+def test_the_split_labels_keep_off_the_raster_line_r225():
+    """Review r225 FIG2 (lesson 00's player at its opening step 9, row 5 under the split):
+    the "4" sat on row 5's outline and a hollow centre, and "v2" on the dashed split line.
+    Both now lie above the split line and row 5's outline, clear of the long edge."""
+    from teachraster.plotting import use_style
+
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"s": [0.0, 1.0, 0.0]})  # fmt: skip  # lesson 00's triangle
+    with use_style("classroom"):
+        p = FillPlayer(tri, 16, 16, method="span", step=9, backend="image")
+    try:
+        view = p.view
+        view.fig.canvas.draw()
+        renderer = view.fig.canvas.get_renderer()
+        split = view.split
+        assert split.label.get_text() == "4" and split.label.xy == (2.0, 4.5)
+        v_mid = float(view.trace.span.sorted_xy[1, 1])
+        top_of_row = view.ax.transData.transform([(0.0, 5.0)])[0][1]  # row 5's outline
+        line = view.ax.transData.transform([(0.0, v_mid)])[0][1]
+        v2 = view.triangle.labels[1]
+        for label in (split.label, v2):
+            box = label.get_window_extent(renderer)
+            assert box.y0 > max(top_of_row, line), label.get_text()  # above both (y up)
+    finally:
+        p.close()
+
+
 def keyed(view) -> list[str]:
     """The labels a FillView's key shows."""
     return [t.get_text() for t in view.legend.texts if t.get_visible()]

@@ -260,6 +260,7 @@ class HeatmapArtists(Artists):
             i, j = np.unravel_index(np.nanargmax(err), err.shape)
             self.worst = (int(i), int(j))
             self.marker.set_data([j + 0.5], [i + 0.5])
+            self.marker.set_markersize(ring_size(self.marker))
             self.note.xy = (j + 0.5, i + 0.5)
             if not self.fixed_note:
                 # keep the note inside the image: it points left in the right half, and so on
@@ -281,6 +282,22 @@ class HeatmapArtists(Artists):
     def _set_title(self, text: str) -> None:
         if self.title is not None:
             self.title.set_text(text)
+
+
+def ring_size(marker: Line2D, smallest: float | None = None) -> float:
+    """A ring marker's size (points) that leaves the pixel it rings in view: its inner edge
+    round the pixel's corners, a tenth of a pixel clear (at the Axes' present size), and at
+    least ``smallest`` (default ``ms(2.0)``, the size on images of many small pixels).
+
+    On lesson 00's 16 x 16 grids a ring of ``ms(2.0)`` lay on the largest error's own pixel
+    and hid its colour, the one pixel it was there to show (review r225 FIG1).
+    """
+    smallest = ms(2.0) if smallest is None else smallest
+    ax = marker.axes
+    (x0, _), (x1, _) = ax.transData.transform([(0.0, 0.0), (1.0, 0.0)])
+    pixel = abs(x1 - x0) * 72.0 / ax.figure.dpi  # one image pixel, in points
+    # the centre line at half the diagonal plus a tenth of a pixel plus half the line width
+    return float(max(smallest, 2 * (0.8 * pixel) + marker.get_markeredgewidth()))
 
 
 def plot_error_heatmap(

@@ -38,7 +38,7 @@ class Stage:
 PIPELINE_STAGES: tuple[Stage, ...] = (
     Stage(
         "vertex processing",
-        "vertex shader: model → world → view → clip space",
+        "vertex shader: object (model) → clip coordinates",
         ("04_perspective_correct_interpolation", "05a_zbuffer"),
     ),  # fmt: skip
     # the stages of lesson 00's clickable map, all of them, so that the two pictures list

@@ -575,6 +575,12 @@ class SplitArtists(Artists):
         # pixel corner left of point 4 nearest the split line, between four centres: hung
         # below the line it blanked one centre and touched another (review r77 00-1)
         corner = (float(np.floor(s.u4 - 0.5)), float(np.round(v2y)))
+        # better, the row above the split line, midway between two of its centres: on the
+        # corner the "4" sat on the outline of the raster line just below the split and
+        # on its centre dots (review r225 FIG2); taken where it is clear of the long edge
+        above = (corner[0], float(np.floor(v2y - 0.85)) + 0.5)
+        if above[1] > 0 and _left_of_long_edge(s.sorted_xy, above, 0.35):
+            corner = above
         if away_left and room < wide - dx and corner[0] >= min(self.label.axes.get_xlim()) + 1:
             text, at, offset, align = "4", corner, (0.0, 0.0), ("center", "center")
         elif away_left and room < wide - dx:
@@ -591,6 +597,20 @@ class SplitArtists(Artists):
         self.label.set_color("#333333" if text == "4" else COLORS["split"])
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
+
+
+def _left_of_long_edge(sorted_xy, point, margin: float) -> bool:
+    """Whether ``point`` lies ``margin`` px or more left of the long edge (top to bottom of
+    the sorted vertices) at its height, or above the triangle.
+
+    >>> _left_of_long_edge(np.array([[2.0, 1.0], [9.0, 5.0], [5.0, 13.0]]), (2.0, 4.5), 0.3)
+    True
+    """
+    (xt, yt), (xb, yb) = sorted_xy[0], sorted_xy[2]
+    x, y = point
+    if y <= yt or yb == yt:
+        return True
+    return bool(x + margin <= xt + (y - yt) / (yb - yt) * (xb - xt))
 
 
 def _room_left_of(ax, x: float) -> float:

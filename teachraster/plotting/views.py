@@ -436,6 +436,7 @@ class FillView:
             self.rejected.set_visible(False)
         self.raster_line.width = W
         self.triangle.update(trace)
+        self._lift_middle_label(trace)
         # the edge names are what half-plane captions talk about; span captions do not
         for label in self.triangle.edge_labels:
             label.set_visible(trace.method == "halfplane")
@@ -443,6 +444,21 @@ class FillView:
         self._keyed = None  # the key is filled again for this fill (show_step)
         self.blit = self._blit_plan()  # new still artists; images may be new artists too
         return self.show_step(step, draw=draw)
+
+    def _lift_middle_label(self, trace) -> None:
+        """The middle vertex's label off the split line, which runs through that vertex: put
+        beside it, the label lay on the dashed line and the raster line outlined just under it
+        (review r225 FIG2, lesson 00's player at its opening step). Above the line, unless
+        the vertex is in the grid's top row."""
+        s = trace.span
+        if s is None or s.u4 is None or not self.triangle.labels:
+            return
+        xy = np.asarray(self.triangle.vertices.get_xydata(), dtype=np.float64)
+        label = self.triangle.labels[int(np.argmin(np.abs(xy - s.sorted_xy[1]).sum(axis=1)))]
+        dx, dy = label.get_position()  # offset points, y up
+        reach = 0.5 * label.get_fontsize() + fs(0.35)  # half the text, the line and a gap
+        if abs(dy) < reach:
+            label.set_position((dx, reach if s.sorted_xy[1, 1] >= 1.0 else -reach))
 
     # -- fast redraws ----------------------------------------------------------------------
     def _blit_plan(self):

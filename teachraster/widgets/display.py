@@ -228,7 +228,8 @@ def fit_column(fig: Figure) -> None:
 
 
 def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True), *,
-                    below: bool = False, profile: bool = False, ticks: bool = True) -> list:  # fmt: skip
+                    below: bool = False, profile: bool = False, ticks: bool = True,
+                    panel: float = 1.0) -> list:  # fmt: skip
     """Three equal panels for a ComparisonView / InterpolationView, as many per row as fit.
 
     The views add colour bars to the middle and right panels with ``fig.colorbar(ax=...)``,
@@ -252,14 +253,18 @@ def comparison_axes(fig: Figure, height: int, width: int, colorbars=(True, True)
     heatmap's row wraps, the first row's panels grow to fill the column and the profile
     sits nearer the colour bar (review r219 04-3: the titles floated ~70 px above two small
     renders, and a wide gap parted the colour bar from the profile).
+
+    ``panel``: the panels' size relative to the default, the margins kept. A figure shown
+    scaled down to a height (the FillPlayer's, :data:`~teachraster.widgets.player.COMPARISON_MAX_PX`)
+    keeps larger text with smaller panels (review r225 FIG1).
     """
     from .common import font_scale
 
     s = font_scale()
-    pw = 2.6 * max(1.0, 0.75 * s)  # inches per panel: titles need more room at large fonts
+    pw = 2.6 * max(1.0, 0.75 * s) * panel  # inches per panel: titles need room at large fonts
     ph = pw * height / width
-    if ph > 3.2 * max(1.0, 0.75 * s):  # tall images: limit the height instead
-        ph = 3.2 * max(1.0, 0.75 * s)
+    if ph > 3.2 * max(1.0, 0.75 * s) * panel:  # tall images: limit the height instead
+        ph = 3.2 * max(1.0, 0.75 * s) * panel
         pw = ph * width / height
     # left: row tick labels and "row i"; top: title above the column tick labels and
     # "column j"; gap and right: a colour bar's tick labels and its label

@@ -68,6 +68,16 @@ COMPARISON_HINT_OPEN = "Both ways side by side: the comparison below."
 #: px): the output column (592) less the accordion's padding (review r20, 00 c14). Its text
 #: is sized to read 12 px there.
 COMPARISON_SHOWN_PX = 556
+#: A classroom's notebook column (CSS px: JupyterLab at 1400 px or more, the file browser
+#: closed), where the comparison is scaled down by its height (COMPARISON_MAX_PX), not its
+#: width: its text is sized to read COMPARISON_CLASSROOM_PX there, as the lessons' own
+#: figures do, and its panels are COMPARISON_PANEL of comparison_axes' size to make room
+#: (review r225 FIG1: ticks and labels read 11-13 px beside the lesson's figures' 17).
+CLASSROOM_COLUMN_PX = 920
+COMPARISON_CLASSROOM_PX = 20.0
+COMPARISON_PANEL = 0.8
+#: Inches the comparison's colour bars are moved away from their panels (their labels' room)
+BAR_SHIFT = 0.3
 
 
 def shown_samples(method: str, samples: str) -> str:
@@ -245,20 +255,27 @@ class FillPlayer(Holdable):
         if self.tri.attrs:
             name = attribute or next(iter(self.tri.attrs))
             ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
-            axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True)
+            axes = comparison_axes(ifig, self.height, self.width, below=True, profile=True,
+                                   panel=COMPARISON_PANEL)  # fmt: skip
             self.interp_view = InterpolationView(self.fill, name, axes=axes)
             self.interp_view.highlight(interpolation)
             # shown shrunk to the accordion at 1024 px: its text sized to read 12 px there
-            # (reviews r9 00 c14, 04 c15: ticks, key and notes read 9-11 px; r20: 11.8)
+            # (reviews r9 00 c14, 04 c15: ticks, key and notes read 9-11 px; r20: 11.8);
+            # in a classroom's column, scaled down to its greatest height: 20 px there
             view = self.interp_view
             bars = [im.colorbar.ax for im in (*view.images, view.heatmap) if im.colorbar]
-            readable_text(
-                [*view.axes, *bars],
-                profile=view.profile,
-                texts=[view.heatmap.note, *view.in_use],
-                shown_px=COMPARISON_SHOWN_PX,
-                min_px=13.0,
-            )  # r37: 12.2 px read small
+            # the colour bars a little farther from their panels: the vertex labels, at this
+            # size, reach past a panel's side ("v2" lay over a colour bar, review r225 FIG1)
+            for bar in bars:
+                box = bar.get_position()
+                bar.set_position(box.translated(BAR_SHIFT / ifig.get_figwidth(), 0.0))
+            fw, fh = ifig.get_size_inches() * ifig.dpi
+            for shown, px in ((COMPARISON_SHOWN_PX, 13.0),  # r37: 12.2 px read small
+                              (min(CLASSROOM_COLUMN_PX, COMPARISON_MAX_PX * fw / fh),
+                               COMPARISON_CLASSROOM_PX)):  # fmt: skip
+                readable_text([*view.axes, *bars], profile=view.profile,
+                              texts=[view.heatmap.note, *view.in_use], shown_px=shown,
+                              min_px=px)  # fmt: skip
             # a toggle changes the images, outlines and colour bars: the rest stays cached
             self._interp_blit = comparison_edit_blit(self.interp_view)
             self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)

@@ -7,7 +7,7 @@
 // figure's (PIPELINE_STAGES: the same ten stages, review r157 00-10), the lessons in each box
 // the kernel's (data.lessons, from that table), not kept here.
 export const STAGES = [
-  ["vertex", "vertex|processing", "the vertex shader: model → clip space"],
+  ["vertex", "vertex|processing", "the vertex shader: object → clip coordinates"],
   ["assembly", "primitive|assembly", "vertices → triangles"],
   ["clip", "clipping|(guard band)", "near/far; x, y only beyond the guard band"],
   ["divide", "perspective|divide", "x, y, z ÷ w: clip → NDC"],
@@ -26,6 +26,8 @@ export const digits = (x, decimals = 0) => {
   return whole.replace(/\B(?=(\d{3})+(?!\d))/g, ",") + (part ? `.${part}` : "");
 };
 const num = (x, d = 4) => (x === null || x === undefined ? "–" : fmt(x, d));
+// clip coordinates, all to three decimals: 0.052632 beside 2.200 read as noise (review r225 S4)
+const dec3 = (x) => x.toFixed(3);
 const row = (cells, head = false) =>
   `<tr>${cells.map((c) => (head ? `<th>${c}</th>` : `<td>${c}</td>`)).join("")}</tr>`;
 const vertexRows = (data, f) => data.clip.map((_, k) => row([`v${k + 1}`, ...f(k)])).join("");
@@ -38,31 +40,32 @@ export function stageHtml(data, key) {
       return "<p>The vertex shader outputs clip coordinates (x, y, z, w) per vertex. The tour " +
         `triangle's are those of GL's perspective projection (near ${num(data.near)}, far ` +
         `${num(data.far)}; w is the depth along the viewing axis in front of the eye) and carry ` +
-        "the attribute u.</p><table>" +
-        row(["", "x", "y", "z", "w", "u"], true) +
-        vertexRows(data, (k) => [...data.clip[k].map((v) => num(v, 5)), num(data.u[k])]) + "</table>";
+        "the attribute s (lesson 00's name for it).</p><table>" +
+        row(["", "x", "y", "z", "w", "s"], true) +
+        vertexRows(data, (k) => [...data.clip[k].map(dec3), num(data.u[k])]) + "</table>";
     case "assembly":
       return "<p>Primitive assembly groups the vertices three by three, in the order given: " +
         "one triangle, v1 → v2 → v3. Nothing is known yet of where it lands on the screen.</p>";
     case "clip":
-      return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w. Real GPUs clip " +
-        "only against the near and far planes (and w &gt; 0), and not even those with depth " +
-        "clamp on (GL's GL_DEPTH_CLAMP, GL 4.6 §13.7; Direct3D's DepthClipEnable = FALSE): " +
-        "depth is then clamped to the depth range instead. x and y are clipped only far " +
-        "outside ±w, beyond a guard band that keeps every vertex within the range of the " +
-        "GPU's fixed-point rasteriser; the rasteriser's bounding box does the rest. " +
-        // both numbers exact (three decimals), from one function (guard_band_reach): the
-        // window bound is (G + 1) · size/2 of the G printed, as a reader can check
-        `Here |x|, |y| ≤ G w with G = ${digits(data.guard, 3)}, so that in the ` +
-        `window |x|, |y| ≤ (G + 1) · ${Math.max(data.width, data.height)}/2 = ` +
-        `${digits(data.guardPx, 3)} px, just inside the ${digits(data.exactPx)} px within ` +
-        "which the integer edge functions of lesson 02 stay exact. That range is in pixels: " +
-        `for this ${data.width} × ${data.height} window G is large, and a larger one gets a ` +
-        "smaller G. The test, on the clip coordinates (before any divide):</p><table>" +
+      return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w (OpenGL's " +
+        "default, GL 4.6 §13.7; Direct3D and Vulkan clip 0 ≤ z ≤ w, D3D11.3 §15.4). GPUs " +
+        "clip only against the near and far planes (and w &gt; 0), and not even those with " +
+        "depth clamp on (GL's GL_DEPTH_CLAMP; Direct3D's DepthClipEnable = FALSE): depth is " +
+        "then clamped to the depth range instead. x and y are clipped only far outside ±w, " +
+        "beyond a guard band that keeps every vertex within the range of the GPU's " +
+        "fixed-point rasteriser, each GPU its own; the rasteriser's bounding box does the " +
+        "rest (lesson 05a). " +
+        // the simulator's band, not a GPU's (review r225 S4), rounded: seven figures of
+        // guard_band_reach were noise in a tour; lessons 05a and 10 print it exactly
+        `This simulator's band is its own choice: here |x|, |y| ≤ G w with G ≈ ` +
+        `${digits(data.guard)}, which keeps this ${data.width} × ${data.height} window's ` +
+        `coordinates within about ${(data.guardPx / 1e6).toFixed(1)} million px, inside the ` +
+        `${digits(data.exactPx)} px where the integer edge functions of lesson 02 stay exact. ` +
+        "The test, on the clip coordinates (before any divide):</p><table>" +
         row(["", "x", "y", "z", "w", "−w ≤ x, y, z ≤ w?"], true) +
         vertexRows(data, (k) => {
           const c = data.clip[k], w = c[3];
-          return [...c.map((v) => num(v, 5)),
+          return [...c.map(dec3),
             c.slice(0, 3).every((v) => v >= -w && v <= w) ? "yes" : "no"];
         }) + `</table><p>${data.inside[0] ? "No plane cuts the triangle: it goes on whole." :
         "A plane cuts it: it is clipped into a polygon."}</p>`;
@@ -70,7 +73,7 @@ export function stageHtml(data, key) {
       return "<p>Dividing by w gives normalised device coordinates, each in [−1, 1] inside " +
         "the view volume. This is where perspective happens: far vertices (large w) move " +
         "towards the centre.</p><table>" + row(["", "x_ndc", "y_ndc", "z_ndc"], true) +
-        vertexRows(data, (k) => data.ndc[k].map((v) => num(v, 5))) + "</table>";
+        vertexRows(data, (k) => data.ndc[k].map(dec3)) + "</table>";
     case "viewport":
       return `<p>The viewport maps NDC to the ${data.width} × ${data.height} window: ` +
         "x = (x_ndc + 1) W/2, y = (1 − y_ndc) H/2 (y down), depth z = z_ndc/2 + 1/2.</p><table>" +
@@ -84,15 +87,16 @@ export function stageHtml(data, key) {
         "box the rasteriser tests.</p>";
     case "fragment":
       return "<p>The fragment shader runs once per fragment on the interpolated attributes: " +
-        "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
+        "here s, perspective-correct (interpolating s/w and 1/w), mapped to a colour. It " +
         "could write its own depth (<code>gl_FragDepth</code>) or discard the fragment, " +
         "which is why the depth test and the depth write logically come <i>after</i> it.</p>" +
-        "<p>Key: u = 0 dark blue, 0.5 grey, 1 yellow (cividis, the colour map every lesson " +
-        "uses for u); light grey: no fragment.</p>";
+        "<p>Key: s = 0 dark blue, 0.5 grey, 1 yellow (cividis, the colour map every lesson " +
+        "uses for values); light grey: no fragment.</p>";
     case "depth":
-      return `<p>Each fragment's depth (interpolated window depth) is compared with the ` +
+      return `<p>Each fragment's depth, the window depth interpolated with the plain screen ` +
+        "weights (it is affine on the screen: no divide by w, unlike s), is compared with the " +
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
-        "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed) runs this test " +
+        "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed; GL 4.6 §14.9) runs this test " +
         "and the depth write before the shader, to skip hidden fragments: a conditional " +
         "bypass, legal only when the shader neither discards, writes depth nor writes memory " +
         "(image or buffer stores, atomics: side effects a culled fragment must not lose). A shader that " +
@@ -102,9 +106,9 @@ export function stageHtml(data, key) {
         "test</b>, off here, runs just before the depth test (GL 4.6 §17.3): it compares a " +
         "per-pixel integer, the stencil value, with a reference, and whether a fragment " +
         "fails it, fails the depth test or passes both may update that value (masks, " +
-        "shadow volumes, and the counting of lesson 11).</p><p>Key: each fragment's depth, " +
+        "shadow volumes, and the counting of lesson 11).</p><p>Key: the fragments' depths, " +
         "the darker the grey, the nearer (depth 0 would be near black, depth 1 light grey); " +
-        "white: no fragment (the buffer keeps its cleared 1 there).</p>";
+        "white: no fragment written (the cleared pixels, left blank).</p>";
     case "blend":
       return "<p>Blending is off: each surviving fragment's colour replaces the pixel's (the " +
         "colour target was cleared to white). That is the final image.</p>";
