@@ -189,6 +189,33 @@ def test_cracks_reroll_and_tally(lesson):
     assert not lesson.errors, lesson.errors[:3]
 
 
+def test_cracks_larger_grid_rolls_until_one_cracks(lesson):
+    """Review r229 01-W2: with the toggle on, random pairs on 16 x 16 showed no crack ("0 of
+    1000"); on the 32 x 32 grid "Roll until one cracks" finds one, each pair counted."""
+    w = _widget(lesson, "cracks")
+    listed = w.get_by_role(
+        "button", name="evaluate each edge from the end its triangle lists first"
+    )
+    if listed.get_attribute("aria-pressed") != "true":
+        listed.click()
+    grid = w.get_by_role("button", name="32 × 32 grid")
+    grid.click()
+    assert grid.get_attribute("aria-pressed") == "true"
+    canvas = w.locator("canvas").first
+    assert float(canvas.evaluate("c => c.logical.w")) > 800  # two 32-cell panels
+    state = _kernel(lesson, "cracks.state")
+    assert state["large"] and state["roll"] == 0 and state["tally"]["integer"]["pairs"] == 1
+    w.get_by_role("button", name="Roll until one cracks").click()
+    w.get_by_text("found after").first.wait_for(timeout=30_000)
+    state = _kernel(lesson, "cracks.state")
+    tally = state["tally"]
+    assert state["roll"] > 0 and tally["integer"]["pairs"] == state["roll"] + 1
+    assert tally["dda"]["faulty"] + tally["crossing"]["faulty"] >= 1
+    grid.click()  # back to 16 x 16: the tally from nothing again
+    assert _kernel(lesson, "cracks.state")["tally"]["integer"]["pairs"] == 1
+    assert not lesson.errors, lesson.errors[:3]
+
+
 def test_depth_near_plane_dragged(lesson):
     w = _widget(lesson, "depth")
     canvas = w.locator("canvas").first

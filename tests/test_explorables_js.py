@@ -1368,3 +1368,60 @@ def test_gap_bar_labels_on_one_line_when_the_bar_is_short():
     assert len(short) == 1
     assert short[0]["text"].strip() == "f 0.799 / affine 0.608 / gap 0.191"
     assert short[0]["p"][2] == pytest.approx((0.799 + 0.608) / 2 * 8.8)
+
+
+def test_crack_explorer_finds_cracks_on_its_larger_grid():
+    """Review r229 01-W2: with the toggle on, "Roll 1000 more" found no crack on the 16 x 16
+    grid ("0 of 1000"), so the toggle showed cracks only through the stored pair. A button
+    switches to 32 x 32, where a thousand rolls show some, and "Roll until one cracks" rolls
+    (counting every pair) until a float fill cracks or draws twice; on 16 x 16, or with the
+    toggle off, it gives up, as lesson 01's text says."""
+    from teachraster.widgets import CrackExplorer
+
+    ex = CrackExplorer()
+    data, seed = ex.data, ex.data["seed"]
+    assert data["large"] == [32, 32] and ex.state["large"] is False
+    assert CrackExplorer(large=None).data["large"] is None
+    with pytest.raises(ValueError, match="large"):
+        CrackExplorer(large=41)
+    small_grid, large_grid, most = call_js(CRACKS, [("gridOf", [data, False]),
+                                                    ("gridOf", [data, True]),
+                                                    ("untilFault", [seed, 4, 4, True, 0])])  # fmt: skip
+    assert small_grid == [16, 16] and large_grid == [32, 32] and not most["found"]
+    # the page's first 1001 pairs of each grid, evaluated as listed: none and some
+    small, large = call_js(
+        CRACKS, [("rolls", [seed, 1001, 16, 16]), ("rolls", [seed, 1001, 32, 32])]
+    )
+    t_small, t_large = call_js(CRACKS, [("tallyOver", [small, 16, 16, True]),
+                                        ("tallyOver", [large, 32, 32, True])])  # fmt: skip
+    assert t_small["dda"]["faulty"] == t_small["crossing"]["faulty"] == 0
+    assert t_large["dda"]["faulty"] + t_large["crossing"]["faulty"] > 0
+    found, none_small, none_alike = call_js(CRACKS, [
+        ("untilFault", [seed, 32, 32, True]),
+        ("untilFault", [seed, 16, 16, True]),
+        ("untilFault", [seed, 32, 32, False, 1000]),
+    ])  # fmt: skip
+    assert found["found"] and found["n"] < 3000
+    assert found["tally"]["integer"]["pairs"] == found["n"] + 1  # every pair counted
+    a, b = (np.array(t) for t in found["pair"])
+    from teachraster.study.naive_spans import shared_edge_faults
+
+    faulty = [shared_edge_faults(a, b, 32, 32, m, as_listed=True) for m in ("crossing", "dda")]
+    assert any(len(f["cracks"]) or len(f["doubles"]) for f in faulty)  # the engine agrees
+    assert not none_small["found"] and none_small["n"] == 3000
+    assert not none_alike["found"]
+    notes = call_js(CRACKS, [("huntNote", [{"n": found["n"], "found": True}, True]),
+                             ("huntNote", [{"n": 3000, "found": False}, True]),
+                             ("huntNote", [{"n": 3000, "found": False}, False]),
+                             ("huntNote", [{"n": 3000, "found": False}, True, True])])  # fmt: skip
+    assert f"found after {found['n']} pairs" in notes[0]
+    assert "try the larger grid" in notes[1] and "turn on" not in notes[1]
+    assert "never cracks" in notes[2] and "roll again" in notes[3]
+
+
+def test_crack_note_does_not_send_lesson_01_to_itself():
+    """Review r229 01-S1: inside lesson 01 the note said "as lesson 01's loops do"."""
+    notes = call_js(CRACKS, [("crackNote", [False]), ("crackNote", [True])])
+    for note in notes:
+        assert "lesson 01" not in note and "as the span loops above do" in note
+    assert "Roll until one cracks" in notes[1]

@@ -91,7 +91,16 @@ def test_every_predict_cell_hides_its_source_and_no_shown_cell_holds_an_answer(n
 #: lessons' visible source or Markdown (hold() hides a cell's outputs, not its input).
 ANSWERED_BELOW = {
     "01_span_tables": {
-        "q_row": ["7.5 and 13.5", "columns 7-12", "rows 5, 9 and 13"],
+        # r229 01-P1: the rows through the vertices (1, 9, 17); the one-point span and the
+        # half-open rows answer two of them: only in held or folded cells below the question
+        "q_row": [
+            "fills nothing",
+            "columns 6-17",
+            "single point",
+            "a span of one point",
+            "\\lceil x_\\text{left}",
+            "v_\\text{top} \\le v < v_\\text{bot}",
+        ],
         "q_fail": ["60 of them", "30.0%", "a large share"],
     },
     "03_barycentric_and_plane_equations": {"q_weights": ["λ1 v1 + λ2 v2 + λ3 v3 ="]},
@@ -569,24 +578,42 @@ def test_01_predictions_and_the_stepping_failure_rates():
     ns = lesson("01_span_tables")
     assert ns.cover[5].sum() == 6  # the predicted answer: row 5 fills 6 pixels
     assert ns.ends[5][:2] == (5.5, 11.5)  # the ends the text computes by hand
-    # the row question (review r138 01·9: row 9, the split line, was read off the printed u4
-    # and v3; review r142 01-11: row 11's ends, 7 and 16, are pixel borders, so its answer was
-    # read off the picture by eye): row 13, below v3, crosses the long edge at 7.5 and the
-    # short edge v3-v1 at 13.5, both exactly on centres, so the tie rule decides both ends:
-    # the clicked answer is columns 7-12 (7.5 in, 13.5 out), nothing else
-    assert ns.asked_row == 13 and ns.v_mid < ns.v_asked < ns.v_bot
-    assert ns.ends_asked == list(ns.ends[13][:2]) == [7.5, 13.5] and ns.ties_asked == [True] * 2
-    assert np.flatnonzero(ns.row_answer[13]).tolist() == list(range(7, 13))
-    assert ns.row_answer.sum() == 6 and ns.cols_asked.tolist() == list(range(7, 13))
-    assert ns.tie_ends == ["7.5 is exactly a centre, and the left edge owns it: filled",
-                           "13.5 is exactly a centre, and the right edge does not own it: left "
-                           "to the neighbour"]  # fmt: skip
-    row_cell = next("".join(c["source"]) for c in json.loads(
-        (NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
-        if "q_row = PredictPixels(" in "".join(c["source"]))  # fmt: skip
-    row_question = row_cell.split("q_row = PredictPixels(")[1].split("answer=")[0]
-    assert "lies below the middle vertex" in row_question
-    assert "7.5" not in row_question and "12" not in row_question
+    # the row question (review r229 01-P1: row 13, ends 7.5 in and 13.5 out, was the row-5
+    # worked example again): the rows through the three vertices, which the worked example
+    # does not answer. Row 1 is a one-point span at the top vertex (on the left edge and the
+    # right one: nothing), row 9 runs from 6.5 (in) to the middle vertex 18.5 (out), row 17
+    # is the bottom vertex's, not visited: 12 pixels, none of them a vertex's
+    assert ns.vertex_rows == [1, 9, 17] and ns.row_counts == [0, 12, 0]
+    assert ns.vertex_ends == {1: [4.5, 4.5], 9: [6.5, 18.5], 17: [8.5, 8.5]}
+    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(6, 18))
+    assert ns.row_answer.sum() == 12 and ns.cols_mid.tolist() == list(range(6, 18))
+    assert ns.vertex_filled == [False, False, False]
+    # mirrored, the middle vertex is a left end: its pixel is filled (the Try-it says so)
+    assert ns.mirror_filled == [False, True, False]
+    nb_cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
+    texts = ["".join(c["source"]) for c in nb_cells]
+    ask = next(i for i, t in enumerate(texts) if "q_row = PredictPixels(" in t)
+    row_question = texts[ask].split("q_row = PredictPixels(")[1].split("answer=")[0]
+    assert "rows through the vertices" in row_question
+    for answer in ("6.5", "18.5", "12", "nothing", "one point"):
+        assert answer not in row_question, answer
+    # nothing before the question gives the one-point span or the half-open rows away: the
+    # rule is shown by a folded held cell after it (it was Markdown under the question)
+    before = " ".join(" ".join(texts[:ask]).split())
+    for phrase in (
+        "x_\\text{left} \\le c <",
+        "v_\\text{top} \\le v <",
+        "one point",
+        "single point",
+        "fills nothing",
+        "not visited",
+    ):
+        assert phrase not in before, phrase
+    rule = next(i for i, t in enumerate(texts) if "RULE_TEXT = " in t)
+    assert ask < rule and texts[rule].startswith("q_row.hold()")
+    assert nb_cells[rule]["metadata"]["jupyter"]["source_hidden"] is True
+    assert "so a span of one point" in ns.RULE_TEXT
+    assert "the edge heights are 16, 8 and 8, powers of two" in " ".join(ns.RULE_TEXT.split())
     # review r98 01-2: the Try-it says to re-fill before span_fill(trace.snapped, ...)
     summary = " ".join(_cells("01_span_tables", "markdown")[-1].split())
     assert "re-run the cell of section 1 (it fills the new triangle: `fill` and `trace`)" in summary
@@ -620,17 +647,25 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # Markdown below q_row, half answered it)
     assert ns.starred == [1, 5, 9, 13] and ns.both_ends == [1, 5, 9, 13]
     assert "rows 5, 9 and 13" not in told and "the left end's centre is filled" in told
-    # review r140 F1: the asked row's ends (q_row's answer) are not in the Markdown below the
-    # question; the held cell prints them once q_row is checked
-    assert "7.5 and 13.5" not in told and "columns 7-12" not in told
-    assert ns.ends_words == "7.5 and 13.5"
-    held_ends = next(c for c in nb["cells"] if "ends_words = " in "".join(c["source"]))
-    assert "".join(held_ends["source"]).startswith("q_row.hold()")
-    # review r78 01-2: the player's winding step says "back-facing"; the text says why it is
-    # filled anyway
-    assert any("clockwise on screen (back-facing)" in ns.trace.caption(k) for k in range(5))
+    # review r140 F1 / r229: q_row's rows are not in the Markdown below the question; the held
+    # cell prints them once q_row is checked
+    assert "columns 6-17" not in told and "fills nothing. Row 17" not in told
+    held_rows = next(c for c in nb["cells"] if "mirror_filled = " in "".join(c["source"]))
+    assert "".join(held_rows["source"]).startswith("q_row.hold()")
+    # review r229 01-S3: the triangle is listed counter-clockwise on screen, front-facing under
+    # the course's GL convention (it was back-facing, disclosed only in section 7); r78 01-2:
+    # the player's winding step says so, and the text says what culling would do
+    assert ns.tri.front_facing and ns.trace.turn == "counter-clockwise"
+    assert ns.trace.caption(1).startswith("signed area -96 px²: counter-clockwise on screen "
+                                          "(front-facing)")  # fmt: skip
     player_text = " ".join(" ".join(_cells("01_span_tables", "markdown")).split())
-    assert "calls our triangle back-facing" in player_text and "Culling is off" in player_text
+    assert "calls our triangle front-facing" in player_text
+    assert "culling being off as everywhere in the course" in player_text
+    # r229 01-M2: the winding is found before the sort, which forgets the order given
+    sort_text = " ".join(next(t for t in _cells("01_span_tables", "markdown")
+                              if t.startswith("## 1. Sort")).split())  # fmt: skip
+    assert "**before** the sort" in sort_text and "the sort throws away" in sort_text
+    assert "np.argsort(v, kind=" not in sort_text  # r229 01-S5: one clause on the tie-break
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
@@ -670,11 +705,16 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.fail_answer == "21 to 100" and ns.fail_answer in ns.fail_choices
     held_fail = next(c for c in nb["cells"] if "".join(c["source"]).startswith("q_fail.hold()"))
     assert "rates = " in "".join(held_fail["source"])
-    # c22 quotes the large grid's share of pairs the float DDA cracks or draws twice (review
-    # r7 01-5: "a few in a thousand" against the printed 0.6 %); c23 ends on the 64 x 64 grid
-    assert ns.size == 64 and f"{ns.counts['dda'] / ns.n:.1%}" == "0.6%"
+    # the explorer's text quotes the shares of pairs the float DDA cracks or draws twice on
+    # its two grids and section 5's (review r7 01-5: "a few in a thousand" against the printed
+    # 0.6 %; r229 01-W2: the 16 x 16 grid shows none, its 32 x 32 one some)
+    shares = {size: f"{c[1]['dda'] / c[0]:.1%}" for size, c in ns.crack_counts.items()}
+    assert shares == {16: "0.0%", 32: "0.2%", 64: "0.6%"} and ns.crack_counts[16][0] == 300
     text = "\n".join(_cells("01_span_tables", "markdown"))
-    assert "0.6 % of the pairs (by the float DDA)" in " ".join(text.split())
+    assert (
+        "the float DDA cracks or draws twice: none of 300 on the explorer's 16 × 16 grid, "
+        "0.2 % on its 32 × 32 grid, 0.6 % on 64 × 64"
+    ) in " ".join(text.split())
     # review r57 01-5: the explorer's text is a list of its controls, under the cell it quotes
     cells = _cells("01_span_tables", "markdown")
     reroll = next(t for t in cells if t.startswith("**Reroll it yourself.**"))
@@ -687,13 +727,16 @@ def test_01_predictions_and_the_stepping_failure_rates():
     grid = inspect.signature(CrackExplorer).parameters
     assert grid["width"].default == grid["height"].default == 16
     assert "Its grid is 16 × 16 px, not the 64 × 64" in " ".join(reroll.split())
-    assert reroll.count("\n- **") == 4
+    assert "a button switches it to 32 × 32" in " ".join(reroll.split())
+    assert grid["large"].default == 32
+    assert reroll.count("\n- **") == 5 and "\n- **Roll until one cracks:**" in reroll
     every = [("".join(c["source"]), c["cell_type"]) for c in
              json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]]  # fmt: skip
     rare = next(i for i, (t, k) in enumerate(every) if t.startswith("# How rare"))
     assert every[rare + 1][0] == reroll
     # r8 01-1: "in every pair the cell above counts, the float DDA's cracks fall on a vertex"
-    assert ns.n_cracks == ns.at_end > 0
+    assert all(c[2] == c[3] for c in ns.crack_counts.values())
+    assert sum(c[2] for c in ns.crack_counts.values()) > 0
     # the figure's claim: the neighbour makes the same error, so the tie pixel changes owner
     assert ns.times == {"exact (package)": 1, "stepped in float": 1}
     assert ns.owner == {"exact (package)": "neighbour", "stepped in float": "triangle"}
@@ -737,7 +780,9 @@ def test_01_r196_figure_text_and_plumbing():
     figure = next(t for t in text if t.startswith("# After Ek's §1.1: the two similar"))
     assert "Ek's Figure 1" not in figure and "(after Ek §1.1)" in figure
     # r203: the shared angle a filled wedge at the vertex (a thin arc read as a bar)
-    assert "Δv_{name}/Δu_{name} = {dv / du:g}" in figure and "Wedge((u_top, v_top), 2.5" in figure
+    # r229 01-S4: the ratio printed as Δu/Δv, which divides by a height, never by Δu = 0
+    assert "Δu_{name}/Δv_{name} = {du / dv:g}" in figure and "Wedge((u_top, v_top), 2.5" in figure
+    assert "dv / du" not in figure
     assert 'hatch="//"' in figure  # the small triangle an outline over the large one
     md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
     assert md.count("Ek's Figure 1") == 1 and "flat triangles (Ek's Figure 1)" in md
@@ -834,6 +879,102 @@ def test_01_gouraud_spans_match_the_package():
     assert np.nanmax(np.abs(ns.ours_c - ns.shaded.attrs["c"])) < 1e-12
     assert np.ptp(ns.slopes) < 1e-14 and abs(ns.slopes[0]) > 0.01  # one slope, not zero
     assert len(ns.slopes) == len(np.flatnonzero(ns.shaded.coverage.any(axis=1)))
+
+
+def _notebook_cells(name: str) -> list[dict]:
+    return json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())["cells"]
+
+
+@pytest.mark.notebook
+def test_01_r229_closed_bottom_try_it_runs_and_fills_the_bottom_row_twice():
+    """Review r229 01-C1: the Try-it "change v < BOT[1] to v <= BOT[1]" raised "cannot convert
+    float NaN to integer" on the flat-bottomed case: at v = v_mid = v_bot the loop crossed the
+    horizontal short edge, 0/0, which its own comment said could not happen. The loop never
+    takes a horizontal edge now; closed, it fills the bottom row, which the triangle below
+    fills too, as the Try-it says."""
+    import warnings
+
+    ns = lesson("01_span_tables")
+    loop_cell = next("".join(c["source"]) for c in _notebook_cells("01_span_tables")
+                     if "def span_fill(" in "".join(c["source"]))  # fmt: skip
+    loop = loop_cell[loop_cell.index("def crossing(") : loop_cell.index("cover, ends = span_fill(")]
+    assert loop.count("v < BOT[1]") == 1
+    assert "v >= v_mid = v_bot ends the loop" not in loop  # the comment that was wrong
+    closed = {"np": np}
+    exec(loop.replace("v < BOT[1]", "v <= BOT[1]"), closed)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no 0/0 (RuntimeWarning) on any case, no NaN
+        for name, pts in ns.cases.items():
+            cover, _ = closed["span_fill"](np.array(pts), 16, 20)
+            package = tr.rasterize(tr.Triangle(pts), 16, 20, method="span").coverage
+            extra = np.argwhere(cover & ~package)
+            if name != "flat-bottomed":
+                assert np.array_equal(cover, package), name  # a bottom vertex: a one-point span
+                continue
+            assert not (package & ~cover).any()
+            assert set(extra[:, 0]) == {10} and extra[:, 1].tolist() == list(range(1, 13))
+            below = tr.Triangle([[7.5, 18.5], [13.5, 10.5], [1.5, 10.5]])  # across the edge
+            assert tr.rasterize(below, 16, 20).coverage[10, 1:13].all()  # drawn twice
+        cover, _ = closed["span_fill"](ns.xy, ns.W, ns.H)
+        assert np.array_equal(cover, ns.fill.coverage)
+    try_it = " ".join(next(t for t in _cells("01_span_tables", "markdown")
+                           if t.startswith("**Try it:**")).split())  # fmt: skip
+    assert "never the horizontal edge, whose crossing would be 0/0" in try_it
+    assert "drawn twice" in try_it and 'Its line says "our loop agrees: False"' in try_it
+
+
+@pytest.mark.notebook
+def test_01_r229_off_centre_try_it_matches_for_the_true_reason():
+    """Review r229 01-C2: the Try-it said moving a vertex off the centres matches "because off
+    the centres a crossing almost never lands exactly on a centre"; after moving v2 (the
+    middle vertex) v1 and v3 stay on centres, and the long edge between them, 16 px high,
+    still crosses rows 1, 5, 9 and 13 exactly at a centre: computed exactly, so it matches.
+    The cell after the Try-it runs it and prints the ties."""
+    ns = lesson("01_span_tables")
+    assert ns.moved[1].tolist() == [18.3, 9.7] and np.array_equal(
+        ns.moved_cover, ns.moved_fill.coverage
+    )
+    assert ns.long_height == 16 and [t[:2] for t in ns.long_ties] == [
+        (1, 4.5), (5, 5.5), (9, 6.5), (13, 7.5)]  # fmt: skip
+    assert all(t[2] for t in ns.long_ties) and ns.short_ties == [1]  # row 1: the top vertex
+    cells = _notebook_cells("01_span_tables")
+    texts = ["".join(c["source"]) for c in cells]
+    tried = next(i for i, t in enumerate(texts) if t.startswith("**Try it:**"))
+    assert texts[tried + 1].startswith("# The first Try-it, run:")
+    try_it = " ".join(texts[tried].split())
+    assert "off the centres a crossing almost never lands exactly on a centre" not in try_it
+    assert "It does, but not because the ties are gone" in try_it
+    assert "the long edge between them, 16 px high, a power of two" in try_it
+    assert "the middle vertex is then a left end, and its pixel is filled" in try_it
+
+
+@pytest.mark.notebook
+def test_01_r229_a_sliver_breaks_into_dots_under_both_fills():
+    """Review r229 01-M1: span tables' classic visible failure, a triangle thinner than a
+    pixel, drawn: 4 of its 10 raster lines fill nothing, 6 pixels in all, the same under the
+    half-plane fill."""
+    ns = lesson("01_span_tables")
+    assert len(ns.sliver_counts) == 10 and ns.sliver_empty == [2, 3, 4, 7]
+    assert ns.sliver_ours.sum() == 6 and np.array_equal(ns.sliver_ours, ns.sliver_fill.coverage)
+    assert np.array_equal(ns.sliver_half, ns.sliver_ours)
+    assert abs(ns.sliver_fill.trace.signed_area) < 6  # thin: about 5 px² over 10 rows
+
+
+def test_01_r229_flat_cases_name_their_rows_and_columns():
+    """Review r229 01-FIG2: the 2 x 2 flat-case panel had no row or column numbers, while the
+    print above it compares rows 2, 6 and 10."""
+    cell = next("".join(c["source"]) for c in _notebook_cells("01_span_tables")
+                if "[\"flat-topped\", \"flat-bottomed\"]" in "".join(c["source"]))  # fmt: skip
+    assert "plot_pixel_grid(ax, 16, 12, ticks=7)" in cell and "ticks=False" not in cell
+    fig, ax = plt.subplots(figsize=(4.6, 3.8))
+    try:
+        from teachraster.plotting import plot_pixel_grid
+
+        plot_pixel_grid(ax, 16, 12, ticks=7)
+        rows = [t.get_text() for t in ax.get_yticklabels()]
+        assert {"2", "6", "10"} <= set(rows)
+    finally:
+        plt.close(fig)
 
 
 @pytest.mark.notebook

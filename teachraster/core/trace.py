@@ -199,6 +199,12 @@ class FillTrace:
         return SETUP_KINDS.index("bbox")
 
     @property
+    def sort_step(self) -> int | None:
+        """Index of the span tables' sort step (the roles top, middle, bottom found from it
+        on); None for the other methods."""
+        return self.setup_kinds.index("sort") if self.span is not None else None
+
+    @property
     def split_step(self) -> int | None:
         """Index of the span tables' split step (u4 shown from it on); None for half-planes."""
         return self.setup_kinds.index("split") if self.span is not None else None
@@ -412,6 +418,31 @@ class FillTrace:
         grid = "raw floats (no snapping)" if bits is None else f"the 1/{2**bits} px grid"
         return f"vertices on {grid}: {pts}"
 
+    @property
+    def turn(self) -> str | None:
+        """Which way v1 → v2 → v3 (as given) turn on screen: ``"clockwise"`` or
+        ``"counter-clockwise"``; None for zero area. The winding step's one word, for its
+        caption and its picture (the arrow a view draws round the triangle).
+
+        >>> import teachraster as tr
+        >>> tr.rasterize(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 4, 4, trace=True).trace.turn
+        'clockwise'
+        """
+        if self.signed_area == 0:
+            return None
+        return "clockwise" if self.signed_area > 0 else "counter-clockwise"
+
+    @property
+    def visited(self) -> np.ndarray | None:
+        """(n,) bool along ``span.rows`` (span tables): the raster lines the half-open loop
+        fills, ``y_top <= y < y_bot``; the bottom vertex's own line is traced, not visited.
+        None for the other methods."""
+        s = self.span
+        if s is None:
+            return None
+        y = s.rows + 0.5
+        return (s.sorted_xy[0, 1] <= y) & (y < s.sorted_xy[2, 1])
+
     def _winding_caption(self) -> str:
         area = self.signed_area
         if area == 0:
@@ -419,10 +450,10 @@ class FillTrace:
         else:
             turn = f"signed area {area:g} px²: "
             if area > 0:
-                turn += "clockwise on screen (back-facing)"
+                turn += f"{self.turn} on screen (back-facing)"
             else:
                 walk = "→".join(f"v{a + 1}" for a in self.edges[:, 0])
-                turn += f"counter-clockwise on screen (front-facing); walked {walk} instead, so "
+                turn += f"{self.turn} on screen (front-facing); walked {walk} instead, so "
                 turn += "the inside is on the positive side"
         return turn + ("; culled, nothing is filled" if self.culled else "")
 
@@ -481,7 +512,7 @@ class FillTrace:
         if stop > start:
             cols = f"column {start}" if stop == start + 1 else f"columns {start}-{stop - 1}"
             text = f"{where} covers {cols}"
-        elif self.samples is None and row + 0.5 == s.sorted_xy[2, 1]:
+        elif self.samples is None and not self.visited[i]:
             # the half-open rows y_top <= y < y_bot: this line is traced, not visited (r142 01-3)
             bot = f"v{s.order[2] + 1}"
             text = (

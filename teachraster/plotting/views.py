@@ -40,6 +40,7 @@ from .common import (
 )
 from .images import ImageArtists, attribute_image, plot_error_heatmap, plot_profile, show_values
 from .plots import (
+    TriangleArtists,
     plot_bbox,
     plot_coverage,
     plot_current_pixel,
@@ -49,6 +50,7 @@ from .plots import (
     plot_split,
     plot_triangle,
 )
+from .setup_marks import TURN_COLOR, plot_setup_marks
 from .style import COLORS, VALUE_CMAP
 
 #: Outline colours of classified blocks (tiles), by ``TileTrace.kind_code``: rejected (a grey
@@ -125,6 +127,39 @@ def sample_test_steps(trace: FillTrace) -> np.ndarray | None:
     steps = np.array(local[np.ix_(rows, cols)])
     steps[steps < 0] = last
     return steps
+
+
+#: The key's line for the roles the sort gives (drawn beside the vertex labels from the sort
+#: step to the split): a word in the roles' colour, as the picture writes them.
+ROLES_ENTRY = ("role after the sort", COLORS["split"], COLORS["split"], r"$\mathit{top}$")
+
+
+def _split_entries() -> list:
+    """The key's lines for what :func:`~teachraster.plotting.plot_split` draws: the two parts'
+    tints, then the split line and point 4 (named without x, y, u or v: the captions write y
+    where lesson 01 writes v, review r229 01-S2)."""
+    c = COLORS
+    return [("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
+            ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),
+            ("split line, point 4", c["split"], "white", "D")]  # fmt: skip
+
+
+def _arrow_off_point_4(triangle: TriangleArtists, trace: FillTrace) -> None:
+    """Span tables: move the long edge's arrow from the middle of the edge, where point 4 often
+    lies (exactly, when the middle vertex is halfway down), to its lower part: the arrowhead
+    sat on point 4 and its "4" (review r229 01-FIG1). (In its upper part it sat on lesson
+    01's row 5, whose span ends the text reads off the picture.)"""
+    s = trace.span
+    if s is None or s.u4 is None or not triangle.arrows:
+        return
+    xy = np.asarray(trace.snapped, dtype=np.float64)
+    long_edge = {int(s.order[0]), int(s.order[2])}
+    for arrow, (a, b) in zip(triangle.arrows, trace.edges):
+        if {int(a), int(b)} != long_edge:
+            continue
+        pa, pb = xy[a], xy[b]
+        t0, t1 = (0.7, 0.84) if a == s.order[0] else (0.16, 0.3)  # near the bottom vertex
+        arrow.set_positions(tuple(pa + t0 * (pb - pa)), tuple(pa + t1 * (pb - pa)))
 
 
 class FillView:
@@ -231,6 +266,9 @@ class FillView:
             label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")])
         self.raster_line = plot_raster_line(ax, trace, 0)
         self.pixel = plot_current_pixel(ax, trace, 0)
+        # what the set-up steps find: the winding, the raster lines, the roles (review r229
+        # 01-W1: steps 0-3 of a span fill drew one picture, only their captions differed)
+        self.setup_marks = plot_setup_marks(ax, trace, self.triangle.labels)
         # An explicit title position: automatic placement (above the top ticks) costs time
         # at every draw.
         self.header = ax.set_title("", y=1.0, pad=fs(3.2), loc="left")
@@ -288,7 +326,8 @@ class FillView:
     def artists(self) -> list:
         """Every artist the view created (for tests and custom styling)."""
         parts = [self.grid, self.coverage, self.bbox, self.split, self.centres, self.triangle,
-                 self.raster_line, self.pixel, self.legend, self.value_bar]  # fmt: skip
+                 self.raster_line, self.pixel, self.setup_marks, self.legend,
+                 self.value_bar]  # fmt: skip
         out = [a for p in parts if isinstance(p, Artists) for a in p.artists]
         return out + [self.rejected, self.values, self.sample_only, self.block_outlines,
                       self.header, self.caption_text]  # fmt: skip
@@ -358,18 +397,24 @@ class FillView:
         # the key and the split's tints are background: each state has its own cache (the
         # sample dots too: with bold dots, as many as there are pixels tested)
         setup = k < trace.first_work_step
-        # (the key lists less before the first fill step, review r58: a state of its own)
-        self._still = (boxed, split, testing, coloured, tested, setup and self.legend is not None,
-                       last)  # fmt: skip
+        # (the key lists less before the first fill step, review r58: a state of its own;
+        # each set-up step keys what it draws, review r229 01-W1)
+        self._still = (boxed, split, testing, coloured, tested,
+                       step.kind if setup and self.legend is not None else False, last)  # fmt: skip
         self.raster_line.update(step)
         self.pixel.update(step)
-        keyed = (testing, coloured, split, boxed, setup, last)
+        # the roles while the set-up speaks of them (sort, split); the row steps name parts
+        roles = setup and trace.sort_step is not None and k >= trace.sort_step
+        self.setup_marks.show(step.kind if setup else None, roles)
+        kind = step.kind if setup else None  # each set-up step draws its own marks and key
+        keyed = (testing, coloured, split, boxed, kind, last, roles)
         if self.legend is not None and keyed != self._keyed:
             self.legend.set_entries(
                 self._key_entries(
-                    trace, testing, coloured, split, boxed=boxed, setup=setup, last=last
+                    trace, testing, coloured, split, boxed=boxed, setup=kind, last=last,
+                    roles=roles,
                 )
-            )
+            )  # fmt: skip
             self._keyed = keyed
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
@@ -437,6 +482,8 @@ class FillView:
         self.raster_line.width = W
         self.triangle.update(trace)
         self._lift_middle_label(trace)
+        _arrow_off_point_4(self.triangle, trace)
+        self.setup_marks.update(trace, self.triangle.labels)
         # the edge names are what half-plane captions talk about; span captions do not
         for label in self.triangle.edge_labels:
             label.set_visible(trace.method == "halfplane")
@@ -473,11 +520,13 @@ class FillView:
             # among the triangle's lines, where their zorder puts them in a full draw: a
             # layer of their own above the labels hid v1 and E31 in every blitted frame
             middle += list(self.sample_dots)
+        s = self.setup_marks
         return LayeredBlit(self.fig, [
-            (MOVING, [self.rejected, self.coverage.image, self.values, r.band]),
+            (MOVING, [self.rejected, self.coverage.image, self.values, r.band, s.band,
+                      s.lines]),  # fmt: skip
             (STILL, middle),
             (MOVING, [self.block_outlines, r.cells, p.box, r.span, r.covered, r.missed,
-                      p.centre]),  # fmt: skip
+                      p.centre, s.turn_label, s.arc, s.head, *s.roles]),  # fmt: skip
             # the vertex dots above their labels' boxes, as in a full draw (review r23)
             (STILL, [split.point, split.label, *t.labels, *t.edge_labels, t.vertices]),
             # text costs more to draw than the pixels: the header moves only with the step
@@ -579,22 +628,16 @@ class FillView:
 
     def _key_entries(self, trace: FillTrace, testing: bool, coloured: bool,
                      split: bool = False, *, boxed: bool = True,
-                     setup: bool = False, last: bool = False) -> list:  # fmt: skip
+                     setup: str | None = None, last: bool = False,
+                     roles: bool = False) -> list:  # fmt: skip
         """What the step on show draws: the pixel or block under test only while there is one
         (reviews r8, lesson 04 c15; r22, lesson 00), the split line and point 4 once found
         (r22), the sample dots of a multisampled fill, and at the last step with values their
-        colours instead of "covered" and the split's tints, which it hides."""
+        colours instead of "covered" and the split's tints, which it hides. ``setup``: the
+        kind of a set-up step on show (None at a work step or the last)."""
         c, method = COLORS, trace.method
         if setup:
-            # before the first fill step the picture shows the vertices, the box once found,
-            # the split and the untested samples: eight lines for parts, spans and centres
-            # not drawn yet read as on show (reviews r33 and r58, lesson 00 step 0; one
-            # sample per pixel too, and tiles' "covered, rejected" at their step 0)
-            entries = ([("bounding box", "none", c["bbox"], DASHED_SQUARE)]
-                       if boxed and method != "span" else [])  # fmt: skip
-            if split:
-                entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
-            return entries + self._sample_entries(trace, coloured, setup=self._bold_dots)
+            return self._setup_entries(trace, setup, split, boxed, roles)
         # coloured: the first lines are the value bar's (a colour bar, not two swatches that
         # gave its ends only, the top 0.88 not v2's 1 unexplained: review r11, lesson 00)
         # with samples the blue is the centre's pass; a pixel shaded by a sample alone shows
@@ -608,18 +651,15 @@ class FillView:
         if method != "span":  # span tables draw no box (see show_step)
             entries.append(("bounding box", "none", c["bbox"], DASHED_SQUARE))
         if method == "span" and not coloured:
-            if split:  # the parts' tints, the line y = v_mid and point 4 (plot_split) appear
+            if split:  # the parts' tints, the split line and point 4 (plot_split) appear
                 # together, at the split's step (review r58 00-4: keyed before it was drawn)
-                entries += [
-                    ("flat-bottom part", to_rgba(c["flat_bottom"], 0.5), c["flat_bottom"]),
-                    ("flat-top part", to_rgba(c["flat_top"], 0.6), c["flat_top"]),
-                    ("split y = v_mid, point 4", c["split"], "white", "D"),
-                ]
+                entries += _split_entries()
         elif method == "span" and split:
             # the last step hides the parts' tints but keeps the dashed line and the diamond
             # at point 4: keyed there too (review r52, lesson 00: an unkeyed pink diamond)
-            entries.append(("split y = v_mid, point 4", c["split"], "white", "D"))
-        if method == "span" and not coloured:  # the last step draws no raster line
+            entries.append(_split_entries()[-1])
+        if method == "span" and not coloured and not last:  # the last step draws no raster
+            # line, nor its span and centres (review r229 01-FIG1: keyed there all the same)
             entries += [("raster line, its pixels", to_rgba(c["current"], 0.15), c["current"]),
                         ("span x_left .. x_right", c["current"], c["current"], "|"),
                         ("its centre covered", c["edge"], "white", "o"),
@@ -633,6 +673,31 @@ class FillView:
             # the cross at its centre (plot_current_pixel) is named too (review r3, 02)
             entries.append((PIXEL_UNDER_TEST, "none", c["current"]))
         return entries + self._sample_entries(trace, coloured, last=last)
+
+    def _setup_entries(self, trace: FillTrace, kind: str, split: bool, boxed: bool,
+                       roles: bool) -> list:  # fmt: skip
+        """The key of a set-up step: what that step draws, and the box, split and roles
+        once found. Before the first fill step the picture shows the vertices, the box once
+        found, the split and the untested samples: eight lines for parts, spans and centres
+        not drawn yet read as on show (reviews r33 and r58, lesson 00 step 0; one sample per
+        pixel too, and tiles' "covered, rejected" at their step 0). Review r229 01-W1/FIG1:
+        the winding, the raster lines and the roles are drawn and keyed at their steps, and
+        the split's step keys the two parts it tints."""
+        c, entries = COLORS, []
+        if kind == "winding" and trace.turn is not None:
+            arrow = r"$\circlearrowright$" if trace.turn == "clockwise" else r"$\circlearrowleft$"
+            entries.append(("v1→v2→v3: its winding", TURN_COLOR, TURN_COLOR, arrow))
+        if boxed and trace.method != "span":
+            entries.append(("bounding box", "none", c["bbox"], DASHED_SQUARE))
+        if kind == "rows" and trace.span is not None and len(trace.span.rows):
+            entries += [("raster lines to step through", to_rgba(c["current"], 0.15), c["current"]),
+                        ("dotted: the bottom vertex's", "none", "none"),
+                        ("line, traced, not visited", "none", "none")]  # fmt: skip
+        if roles:
+            entries.append(ROLES_ENTRY)
+        if split:
+            entries += _split_entries()
+        return entries + self._sample_entries(trace, False, setup=self._bold_dots)
 
     @property
     def _bold_dots(self) -> bool:

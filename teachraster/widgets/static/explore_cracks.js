@@ -116,6 +116,55 @@ export function tallyOver(pairs, W, H, asListed = false) {
   return pairs.reduce((t, pair) => tallied(t, pair, W, H, asListed), emptyTally());
 }
 
+// The grid on show: the explorer's own, or its large one (`data.large`, [W, H]) when `large`.
+// Random pairs on the small grid hardly ever crack, evaluated as listed (none in 3000 on
+// 16 x 16: lesson 01 counts it); on 32 x 32 about two in a thousand do (review r229 01-W2).
+export function gridOf(data, large) {
+  return large && data.large ? [...data.large] : [data.width, data.height];
+}
+
+// "Roll until one cracks" stops after this many pairs: evaluated alike no edge ever cracks,
+// and on the small grid random pairs almost never do
+export const MOST_ROLLS = 3000;
+
+// Roll pairs from `rand` until a float fill cracks the shared edge or draws a pixel twice,
+// at most `most`; every pair rolled goes into the tally. Returns the last pair, the tally,
+// how many pairs were rolled and whether the last one is such a pair.
+export function rollUntilFault(rand, tally, W, H, asListed, most = MOST_ROLLS) {
+  const bad = (t) => t.crossing.faulty + t.dda.faulty;
+  let pair = null;
+  for (let n = 1; n <= most; n++) {
+    pair = randomPair(rand, W, H);
+    const next = tallied(tally, pair, W, H, asListed);
+    const found = bad(next) > bad(tally);
+    tally = next;
+    if (found) return { pair, tally, n, found };
+  }
+  return { pair, tally, n: most, found: false };
+}
+
+// the same from a seed, after the pair the page shows first (for the tests)
+export function untilFault(seed, W, H, asListed, most = MOST_ROLLS) {
+  const rand = randomStream(seed);
+  const first = randomPair(rand, W, H);
+  return rollUntilFault(rand, tallyOver([first], W, H, asListed), W, H, asListed, most);
+}
+
+// What the last "Roll until one cracks" found, for the line above the tally (`large`: on the
+// larger grid, where a miss is bad luck)
+export function huntNote(hunt, asListed, large = false) {
+  if (!hunt) return "";
+  if (hunt.found) {
+    return `<b>Roll until one cracks:</b> found after ${hunt.n} pair${hunt.n === 1 ? "" : "s"} ` +
+      "(each one counted in the tally); the pair on show cracks or draws a pixel twice.";
+  }
+  return `<b>Roll until one cracks:</b> none in ${hunt.n} pairs (all counted in the tally). ` +
+    (!asListed ? "Evaluated alike, the shared edge never cracks: turn on <b>evaluate each " +
+        "edge from the end its triangle lists first</b>."
+      : large ? "Rare on this grid too: roll again."
+        : "On this grid random pairs almost never crack: try the larger grid.");
+}
+
 const pct = (k, n) => (n ? `${((100 * k) / n).toFixed(1)} %` : "–");
 
 export function tallyTable(tally) {
@@ -132,10 +181,9 @@ export function tallyTable(tally) {
 }
 
 function mount(el, data, host) {
-  const W = data.width;
-  const H = data.height;
   const state = { seed: data.seed, roll: 0, tally: emptyTally(), asListed: false, stored: false,
-    ...host.state() };
+    large: false, ...host.state() };
+  let [W, H] = gridOf(data, state.large);
   const root = frame(el, data.title,
     "Two triangles with their vertices on pixel centres share the edge p–q (thick). Each " +
     "panel fills both, A in blue and B in orange. <b>■</b>: a pixel centre exactly on the " +
@@ -144,7 +192,7 @@ function mount(el, data, host) {
     "<b style='color:#D55E00'>✕</b> in a red ring: drawn by neither (a crack); dashed box: " +
     "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
     "(not the stored pair that cracks) and starts again when the way the edges are " +
-    "evaluated changes.");
+    "evaluated, or the grid, changes.");
   let g = panelLayout(W, H);
   const [canvas, ctx] = makeCanvas(g.width, g.height,
     "the same pair of triangles filled three ways, cracks and double draws marked");
@@ -152,6 +200,7 @@ function mount(el, data, host) {
   const table = element("div");
   const showStored = (e) => {
     state.stored = true;
+    lastHunt = null;
     listedBy(state, true);
     pair = CRACKING_PAIR;
     controls.sync();
@@ -159,9 +208,12 @@ function mount(el, data, host) {
     host.setState({ stored: true, asListed: true, tally: state.tally });
   };
   const controls = crackControls(state, host, (n, e) => roll(n, e), (e) => paint.request(e),
-    fitsCrackingPair(W, H) ? showStored : null);
+    fitsCrackingPair(W, H) ? showStored : null,
+    { hunt: (e) => hunt(e), grid: data.large ? [data.large, (e) => setGrid(!state.large, e)] : null });
+  const hunted = element("div", { class: "tr-x-sub", "aria-live": "polite" });
   const note = element("div", { class: "tr-x-sub" });
-  root.append(controls.row, canvas, readout, table, note);
+  root.append(...controls.rows, canvas, readout, hunted, table, note);
+  let lastHunt = null; // what "Roll until one cracks" found last (the page's alone)
   let rand = randomStream(state.seed);
   let pair = null;
   for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H); // the pair on show
@@ -173,6 +225,7 @@ function mount(el, data, host) {
 
   function roll(n, e) {
     state.stored = false;
+    lastHunt = null;
     for (let k = 0; k < n; k++) {
       pair = randomPair(rand, W, H);
       state.tally = tallied(state.tally, pair, W, H, state.asListed);
@@ -180,6 +233,34 @@ function mount(el, data, host) {
     state.roll += n;
     paint.request(e);
     host.setState({ roll: state.roll, stored: false, tally: state.tally });
+  }
+
+  // roll until a float fill cracks or draws twice (review r229 01-W2: the toggle's cracks were
+  // seen only in the stored pair); every pair rolled is counted
+  function hunt(e) {
+    state.stored = false;
+    const found = rollUntilFault(rand, state.tally, W, H, state.asListed);
+    pair = found.pair;
+    state.tally = found.tally;
+    state.roll += found.n;
+    lastHunt = { n: found.n, found: found.found };
+    paint.request(e);
+    host.setState({ roll: state.roll, stored: false, tally: state.tally });
+  }
+
+  // the small grid or the large one: the first pair of the seed on it, the tally from nothing
+  function setGrid(large, e) {
+    state.large = Boolean(large);
+    [W, H] = gridOf(data, state.large);
+    Object.assign(state, { roll: 0, stored: false, tally: emptyTally() });
+    rand = randomStream(state.seed);
+    pair = randomPair(rand, W, H);
+    state.tally = tallied(state.tally, pair, W, H, state.asListed);
+    lastHunt = null;
+    relayout();
+    controls.sync();
+    paint.request(e);
+    host.setState({ large: state.large, roll: 0, stored: false, tally: state.tally });
   }
 
   function draw() {
@@ -197,19 +278,22 @@ function mount(el, data, host) {
     drawKey(ctx, g.key, cell);
     table.innerHTML = tallyTable(state.tally);
     readout.innerHTML = explainPixel(pair, ui.hover, W, H, found, state.asListed);
+    hunted.innerHTML = huntNote(lastHunt, state.asListed, state.large);
     note.innerHTML = crackNote(state.asListed);
     host.picture(canvas);
   }
   const paint = painter(canvas, draw);
   // the cells as large as the column allows, again whenever its width changes
-  const fit = () => {
+  const fit = () => relayout(false);
+  // the panels for the column and the grid on show (`always`: the grid changed)
+  function relayout(always = true) {
     const avail = root.clientWidth || NARROW_COLUMN_PX;
     const next = panelLayout(W, H, avail);
-    if (next.cell === g.cell) return;
+    if (!always && next.cell === g.cell && next.width === g.width) return;
     g = next;
     resizeCanvas(canvas, ctx, g.width, g.height);
     paint.request();
-  };
+  }
   if (globalThis.ResizeObserver) new ResizeObserver(fit).observe(root);
   fit();
   const point = (p, e) => {
@@ -229,16 +313,23 @@ function mount(el, data, host) {
       // the pair on show again only when the kernel moved it (not at the echo of our roll)
       const moved = (s.seed !== undefined && s.seed !== state.seed)
         || (s.roll !== undefined && s.roll !== state.roll)
-        || (s.stored !== undefined && s.stored !== state.stored);
+        || (s.stored !== undefined && s.stored !== state.stored)
+        || (s.large !== undefined && Boolean(s.large) !== Boolean(state.large));
       const { asListed, ...rest } = s;
       // a tally of its own with the change (a state restored) stays; ours echoed back does not
       const theirs = s.tally !== undefined && JSON.stringify(s.tally) !== JSON.stringify(state.tally);
       if (asListed !== undefined) listedBy(state, asListed, theirs);
       Object.assign(state, rest);
       if (moved) {
+        const [w, h] = gridOf(data, state.large);
+        if (w !== W || h !== H) {
+          [W, H] = [w, h];
+          relayout();
+        }
         rand = randomStream(state.seed);
         for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H);
         if (state.stored && fitsCrackingPair(W, H)) pair = CRACKING_PAIR;
+        lastHunt = null;
       }
       controls.sync();
       paint.request();
@@ -262,12 +353,14 @@ export function crackNote(asListed) {
   return asListed
     ? "Now each triangle evaluates the shared edge from the end it lists first. When the two " +
       "list it in opposite orders they round differently, and then, rarely, the edge cracks " +
-      "or a pixel is drawn twice; <b>Show a pair that cracks</b> loads one. Turned off, both " +
-      "walk it from its upper end, as lesson 01's loops do, and it never cracks."
-    : "Both triangles walk the shared edge from its upper end, as lesson 01's loops do: they " +
-      "round alike, so a tie goes to one of them, sometimes the wrong one, and the edge never " +
-      "cracks. Turn on <b>evaluate each edge from the end its triangle lists first</b> to see " +
-      "when it can.";
+      "or a pixel is drawn twice: <b>Roll until one cracks</b> finds one (on the larger grid; " +
+      "on the small one hardly ever), <b>Show a pair that cracks</b> loads a stored one. " +
+      "Turned off, both walk it from its upper end, as the span loops above do, and it never " +
+      "cracks."
+    : "Both triangles walk the shared edge from its upper end, as the span loops above do: " +
+      "they round alike, so a tie goes to one of them, sometimes the wrong one, and the edge " +
+      "never cracks. Turn on <b>evaluate each edge from the end its triangle lists first</b> " +
+      "to see when it can.";
 }
 
 // Set how the edges are evaluated. Whatever changes it (the toggle, "Show a pair that cracks",
@@ -281,8 +374,9 @@ export function listedBy(state, asListed, keepTally = false) {
   return state;
 }
 
-// Reroll, a thousand more, the tally reset, the edges evaluated as listed, the stored pair
-function crackControls(state, host, roll, repaint, showStored) {
+// Reroll, a thousand more, until one cracks, the tally reset, the edges evaluated as listed,
+// the large grid, the stored pair
+function crackControls(state, host, roll, repaint, showStored, more) {
   const listed = button("evaluate each edge from the end its triangle lists first", (e) => {
     listedBy(state, !state.asListed);
     sync();
@@ -295,12 +389,21 @@ function crackControls(state, host, roll, repaint, showStored) {
     host.setState({ tally: state.tally });
   });
   const stored = showStored ? [button("Show a pair that cracks", showStored)] : [];
+  const grid = more.grid
+    ? button(`${more.grid[0][0]} × ${more.grid[0][1]} grid`, more.grid[1], Boolean(state.large))
+    : null;
   function sync() {
     listed.setAttribute("aria-pressed", String(Boolean(state.asListed)));
+    if (grid) grid.setAttribute("aria-pressed", String(Boolean(state.large)));
   }
-  const row = element("div", { class: "tr-x-row" }, [button("Reroll", (e) => roll(1, e)),
-    button("Roll 1000 more", (e) => roll(1000, e)), reset, listed, ...stored]);
-  return { row, sync };
+  // two rows, each at most three lines in a 315-px column (tests/test_browser_layout.py):
+  // the pairs rolled, then how they are drawn and filled
+  const rolls = element("div", { class: "tr-x-row" }, [button("Reroll", (e) => roll(1, e)),
+    button("Roll 1000 more", (e) => roll(1000, e)), button("Roll until one cracks", more.hunt),
+    reset]);
+  const ways = element("div", { class: "tr-x-row" }, [listed, ...(grid ? [grid] : []),
+    ...stored]);
+  return { rows: [rolls, ways], sync };
 }
 
 // The ring around a crack, as a multiple of the cell: it circles the pixel square (> 0.71).

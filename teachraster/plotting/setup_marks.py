@@ -1,0 +1,231 @@
+"""What a fill's set-up steps find, drawn: the winding, the raster lines to visit, the roles.
+
+Before the first pixel a fill snaps its vertices, finds their winding, the raster lines (span
+tables) or the bounding box to work on, and, for span tables, sorts the vertices into roles
+and splits at point 4. The box and the split have artists of their own
+(:func:`~teachraster.plotting.plot_bbox`, :func:`~teachraster.plotting.plot_split`); the
+others were captions only, over one unchanged picture (review r229 01-W1: the player's steps
+1-3 were byte-identical frames). :func:`plot_setup_marks` draws them:
+
+- the **winding**: an arrow turning round the triangle's incentre the way v1 → v2 → v3 run
+  as given, and the trace's word for it (:attr:`~teachraster.core.trace.FillTrace.turn`);
+- the **raster lines** of a span-table fill: a band over the rows it steps through, a line
+  along the centre of each (solid where the half-open loop fills, dotted for the bottom
+  vertex's line, which it traces but does not visit:
+  :attr:`~teachraster.core.trace.FillTrace.visited`);
+- the **roles** the sort gives: ``top``, ``middle``, ``bottom`` beside the vertex labels
+  (:data:`~teachraster.core.trace.ROLES`, in the trace's ``span.order``).
+
+Everything is read from the trace; :meth:`SetupArtists.show` picks what a step shows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from matplotlib.collections import LineCollection
+from matplotlib.lines import Line2D
+from matplotlib.patches import FancyArrowPatch, Rectangle
+from matplotlib.text import Text
+
+from ..core.trace import ROLES, FillTrace
+from .common import Artists, annotate_near, as_trace, fs, label_box, lw
+from .style import COLORS
+
+#: The winding arrow's colour (a dark blue: no other artist of a fill's set-up uses it).
+TURN_COLOR = COLORS["inside"]
+#: How far round the incentre the winding arrow turns (degrees): most of a circle, open
+#: enough that its head and its tail read apart.
+TURN_DEGREES = 290.0
+
+
+@dataclass
+class SetupArtists(Artists):
+    """Artists of :func:`plot_setup_marks`."""
+
+    band: Rectangle
+    lines: LineCollection
+    arc: Line2D
+    head: FancyArrowPatch
+    turn_label: Text
+    roles: list = field(default_factory=list)
+    #: the trace drawn, and whether each mark has something to show for it
+    trace: FillTrace | None = None
+
+    def update(self, fill, labels=()) -> None:
+        """Move the marks to another fill (same artists). ``labels``: the vertex labels of
+        :func:`~teachraster.plotting.plot_triangle`, already placed; each role goes just
+        beyond its vertex's label, on the same side."""
+        trace = as_trace(fill, "plot_setup_marks")
+        self.trace = trace
+        self._update_turn(trace)
+        self._update_rows(trace)
+        self._update_roles(trace, list(labels))
+
+    def _update_turn(self, trace: FillTrace) -> None:
+        xy = np.asarray(trace.snapped, dtype=np.float64)
+        if trace.turn is None:
+            return
+        sides = np.array([np.hypot(*(xy[(k + 1) % 3] - xy[(k + 2) % 3])) for k in range(3)])
+        centre = sides @ xy / sides.sum()  # the incentre: farthest inside from every edge
+        inradius = abs(trace.signed_area) * 2 / sides.sum()
+        radius = max(0.8 * inradius, 0.6)
+        # y down: the angle in data coordinates grows clockwise on screen, the sign of the
+        # signed area (positive when v1 -> v2 -> v3 run clockwise on screen)
+        sign = 1.0 if trace.signed_area > 0 else -1.0
+        start = np.arctan2(*(xy[0] - centre)[::-1])  # from v1's side
+        angles = start + sign * np.radians(np.linspace(0.0, TURN_DEGREES, 60))
+        points = centre + radius * np.column_stack([np.cos(angles), np.sin(angles)])
+        self.arc.set_data(points[:-1, 0], points[:-1, 1])
+        self.head.set_positions(tuple(points[-4]), tuple(points[-1]))
+        self.turn_label.set_position(tuple(centre))
+        # "counter-clockwise" on two lines: narrow enough to stay inside the arc
+        self.turn_label.set_text("v1→v2→v3\n" + trace.turn.replace("-", "-\n"))
+
+    def _update_rows(self, trace: FillTrace) -> None:
+        s = trace.span
+        if s is None or not len(s.rows):
+            return
+        rows = np.asarray(s.rows)
+        self.band.set_y(float(rows[0]))
+        self.band.set_height(float(rows[-1] - rows[0] + 1))
+        y = rows + 0.5
+        self.lines.set_segments([((0, v), (trace.width, v)) for v in y])
+        visited = trace.visited
+        self.lines.set_linestyles([(0, None) if on else (0, (1.5, 2.5)) for on in visited])
+
+    def _update_roles(self, trace: FillTrace, labels: list) -> None:
+        s = trace.span
+        if s is None or len(labels) != 3:
+            return
+        ax = self.band.axes
+        ax.get_xlim()  # brings autoscaled limits up to date before transData is read
+        box = ax.get_window_extent()
+        scale = ax.figure.dpi / 72.0  # display pixels per point
+        centre = np.asarray(trace.snapped, dtype=np.float64).mean(axis=0)
+        for tag, role, vertex in zip(self.roles, ROLES, s.order):
+            label = labels[vertex]
+            at = ax.transData.transform(label.xy) / scale  # the vertex, in points
+            tag.xy = label.xy
+            tag.set_text(role)
+            tag.set_position(_role_offset(label, role, at, box.extents / scale,
+                                          label.xy[0] < centre[0]))  # fmt: skip
+
+    def show(self, kind: str | None, sorted_: bool) -> None:
+        """Show what the step of ``kind`` found: the winding at ``"winding"``, the raster
+        lines at ``"rows"``; the roles where ``sorted_`` (a view: at the sort and split
+        steps, which speak of them)."""
+        trace = self.trace
+        turning = kind == "winding" and trace is not None and trace.turn is not None
+        for artist in (self.arc, self.head, self.turn_label):
+            artist.set_visible(turning)
+        rows = kind == "rows" and trace is not None and trace.span is not None
+        rows = rows and bool(len(trace.span.rows))
+        self.band.set_visible(rows)
+        self.lines.set_visible(rows)
+        roles = sorted_ and trace is not None and trace.span is not None
+        for tag in self.roles:
+            tag.set_visible(roles)
+
+
+def _role_offset(label, role: str, at, extents, left: bool) -> tuple[float, float]:
+    """Where a role goes (points from its vertex): one line beyond the vertex label, the way
+    the label is pushed out; where that leaves the Axes (a vertex at the grid's top or
+    bottom: it ran over the tick labels or the frame), beside the label instead, on the
+    side away from the triangle (``left``) if it fits there, else on the other. Sideways a
+    tag may overhang the Axes by half its width (the margin beside the grid is clear)."""
+    dx, dy = label.get_position()  # the label's offset from its vertex, in points
+    size = label.get_fontsize()
+    half_w = size * (0.33 * len(role) + 0.3)  # half of the tag's padded box (italic)
+    half_h = 0.75 * size
+    x0, y0, x1, y1 = extents
+    norm = float(np.hypot(dx, dy)) or 1.0
+    out = (dx + 1.1 * size * dx / norm, dy + 1.1 * size * dy / norm)
+
+    def inside(offset):  # wholly inside vertically; sideways it may overhang by a half
+        x, y = at[0] + offset[0], at[1] + offset[1]
+        return x0 <= x <= x1 and y0 + half_h <= y <= y1 - half_h
+
+    if inside(out):
+        return out
+    beside = 0.85 * size + half_w + 2.0  # the label's half width, the tag's, a gap
+    sides = (-1.0, 1.0) if left else (1.0, -1.0)
+    for side in sides:
+        offset = (dx + side * beside, dy)
+        if inside(offset):
+            return offset
+    return (dx + sides[0] * beside, dy)
+
+
+def plot_setup_marks(ax, fill, labels=()) -> SetupArtists:
+    """The winding arrow, the raster lines to visit and the vertices' roles, hidden until
+    :meth:`SetupArtists.show` asks for them (see the module's text).
+
+    Parameters
+    ----------
+    ax : matplotlib Axes
+    fill : Fill (with trace) or FillTrace
+    labels : list of Annotation, optional
+        The vertex labels (``plot_triangle(...).labels``), beside which the roles go.
+
+    Returns
+    -------
+    SetupArtists
+        ``band`` and ``lines`` (the raster lines), ``arc``, ``head`` and ``turn_label``
+        (the winding), ``roles`` (three Annotations).
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> import teachraster as tr
+    >>> fill = tr.rasterize(tr.Triangle([[1, 1], [7, 2], [3, 7]]), 8, 8, method="span",
+    ...                     trace=True)
+    >>> fig, ax = plt.subplots()
+    >>> marks = plot_setup_marks(ax, fill)
+    >>> marks.show("winding", False)
+    >>> marks.turn_label.get_text().split()[-1], marks.band.get_visible()
+    ('clockwise', False)
+    >>> plt.close(fig)
+    """
+    trace = as_trace(fill, "plot_setup_marks")
+    c = COLORS["current"]
+    band = Rectangle((0, 0), 1, 1, fc=c, ec="none", alpha=0.08, zorder=0.6,
+                     transform=ax.get_yaxis_transform())  # fmt: skip
+    ax.add_patch(band)
+    # under the pixel grid (zorder 1.5), as a view's blitted layers draw them too
+    lines = LineCollection([], colors=c, linewidths=lw(0.45), alpha=0.8, zorder=1.4)
+    ax.add_collection(lines, autolim=False)
+    arc = ax.plot([], [], "-", color=TURN_COLOR, lw=lw(0.8), zorder=4.6,
+                  solid_capstyle="round")[0]  # fmt: skip
+    head = FancyArrowPatch((0, 0), (1, 0), arrowstyle="-|>", mutation_scale=fs(1.6),
+                           color=TURN_COLOR, lw=lw(0.8), shrinkA=0, shrinkB=0, zorder=4.6)  # fmt: skip
+    ax.add_patch(head)
+    turn_label = ax.text(
+        0,
+        0,
+        "",
+        ha="center",
+        va="center",
+        fontsize=fs(0.75),
+        fontweight="bold",
+        color=TURN_COLOR,
+        bbox=label_box(0.8),
+        linespacing=1.1,
+        zorder=4.55,
+    )  # under the arc and its head
+
+    # the roles under point 4 and the vertex labels and dots (zorder 5 and up), as a view's
+    # blitted layers draw them
+    roles = [
+        annotate_near(ax, "", (0, 0), xytext=(0, 0), textcoords="offset points", ha="center",
+                      va="center", fontsize=fs(0.8), fontstyle="italic", color=COLORS["split"],
+                      bbox=label_box(0.85), zorder=4.85, annotation_clip=False)
+        for _ in ROLES
+    ]  # fmt: skip
+    result = SetupArtists(band, lines, arc, head, turn_label, roles)
+    result.update(trace, labels)
+    result.show(None, False)
+    return result

@@ -1,0 +1,163 @@
+"""What a fill's set-up steps find is drawn, read from the trace (review r229 01-W1, 01-FIG1).
+
+Lesson 01's player showed its set-up steps 0-3 as one picture (the stage PNGs of steps 1, 2
+and 3 byte-identical): only the captions changed. Now the winding step draws an arrow turning
+the way v1 -> v2 -> v3 run, the rows step the raster lines to visit (the bottom vertex's
+dotted: traced, not visited), the sort and split steps the roles; the key names what each
+step draws (the split's step its two tinted parts, the last step no raster line), and the
+long edge's arrowhead no longer sits on point 4.
+"""
+
+from __future__ import annotations
+
+import hashlib
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.core.trace import ROLES  # noqa: E402
+from teachraster.plotting import FillView, use_style  # noqa: E402
+from teachraster.plotting.frames import frame_rgba  # noqa: E402
+
+#: Lesson 01's triangle, listed counter-clockwise on screen (review r229 01-S3), and the same
+#: triangle the other way round.
+CCW = [[8.5, 17.5], [18.5, 9.5], [4.5, 1.5]]
+CW = [[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]]
+
+
+def keyed(view) -> list[str]:
+    return [t.get_text() for t in view.legend.texts if t.get_visible()]
+
+
+@pytest.fixture
+def player():
+    """The player's view of lesson 01's triangle (drawn by blitting, as the player does)."""
+    from teachraster.widgets import FillPlayer
+
+    with plt.style.context("default"):
+        use_style("classroom")
+        p = FillPlayer(tr.Triangle(CCW), 20, 20, method="span", backend="image")
+        yield p
+        p.close()
+        plt.close("all")
+
+
+def picture(view, k: int) -> np.ndarray:
+    view.show_step(k, draw=False)
+    view.redraw()
+    return frame_rgba(view.fig)
+
+
+def test_each_set_up_step_draws_a_picture_of_its_own(player):
+    """r229 01-W1: steps 1 (winding), 2 (rows) and 3 (sort) were byte-identical frames."""
+    view = player.view
+    digests = [hashlib.md5(picture(view, k).tobytes()).hexdigest() for k in range(6)]
+    assert len(set(digests)) == 6, digests
+
+
+def test_the_set_up_marks_are_read_from_the_trace(player):
+    view, trace = player.view, player.view.trace
+    marks, span = view.setup_marks, trace.span
+    view.show_step(1, draw=False)  # winding: the arrow and the trace's word for it
+    assert marks.arc.get_visible() and marks.head.get_visible()
+    assert trace.turn == "counter-clockwise" and marks.turn_label.get_text().replace(
+        "-\n", "-"
+    ).endswith(trace.turn)
+    # the arc turns the way the signed area says (y down: negative is counter-clockwise)
+    x, y = marks.arc.get_data()
+    rx, ry = np.asarray(x) - np.mean(x), np.asarray(y) - np.mean(y)
+    turning = rx[:-1] * np.diff(ry) - ry[:-1] * np.diff(rx)  # z of (r x dr)
+    assert (np.sign(turning) == np.sign(trace.signed_area)).all()
+    assert not marks.band.get_visible() and not any(r.get_visible() for r in marks.roles)
+    assert "v1→v2→v3: its winding" in keyed(view)
+    view.show_step(2, draw=False)  # rows: a band over span.rows, a line along each centre
+    assert marks.band.get_visible() and not marks.arc.get_visible()
+    assert marks.band.get_y() == span.rows[0] and marks.band.get_height() == len(span.rows)
+    lines = marks.lines.get_segments()
+    assert [seg[0][1] for seg in lines] == list(span.rows + 0.5)
+    dotted = [style[1] is not None for style in marks.lines.get_linestyles()]
+    assert dotted == list(~trace.visited) and dotted[-1] and not any(dotted[:-1])
+    assert "raster lines to step through" in keyed(view)
+    for k in (3, 4):  # sort, split: the roles at the sorted vertices, in the trace's order
+        view.show_step(k, draw=False)
+        assert [r.get_text() for r in marks.roles] == list(ROLES)
+        assert [tuple(r.xy) for r in marks.roles] == [tuple(p) for p in span.sorted_xy]
+        assert all(r.get_visible() for r in marks.roles) and not marks.band.get_visible()
+    view.show_step(trace.first_work_step, draw=False)  # the row steps: none of them
+    assert not any(a.get_visible() for a in marks.artists)
+
+
+def test_the_key_names_what_the_step_draws(player):
+    """r229 01-FIG1: the split's step tinted two parts its key did not name; the last step
+    keyed a raster line, a span and its centres it does not draw; the split's line was keyed
+    "split y = v_mid", x and y mixed with u and v."""
+    view = player.view
+    view.show_step(view.trace.split_step, draw=False)
+    assert {"flat-bottom part", "flat-top part", "split line, point 4"} <= set(keyed(view))
+    view.show_step(-1, draw=False)
+    last = keyed(view)
+    for drawn_not in ("raster line, its pixels", "span x_left .. x_right", "its centre covered",
+                      "its centre not"):  # fmt: skip
+        assert drawn_not not in last
+    view.show_step(view.trace.first_work_step + 4, draw=False)
+    assert "raster line, its pixels" in keyed(view)
+    for k in range(len(view.trace)):
+        view.show_step(k, draw=False)
+        assert not any("y = v_mid" in t for t in keyed(view)), k
+
+
+def test_the_long_edges_arrow_is_off_point_4(player):
+    """r229 01-FIG1: the long edge's arrowhead sat on point 4 (the middle vertex is halfway
+    down, so point 4 is the edge's midpoint) and on its "4"."""
+    view, span = player.view, player.view.trace.span
+    point_4 = np.array([span.u4, span.sorted_xy[1, 1]])
+    xy = view.trace.snapped
+    long_edge = {int(span.order[0]), int(span.order[2])}
+    k = next(i for i, (a, b) in enumerate(view.trace.edges) if {int(a), int(b)} == long_edge)
+    arrow = np.array(view.triangle.arrows[k]._posA_posB)  # tail, head (data units)
+    assert np.hypot(*(arrow - point_4).T).min() > 2.5
+    # still on the edge, pointing along it
+    a, b = xy[view.trace.edges[k]]
+    for p in arrow:
+        assert abs((b - a)[0] * (p - a)[1] - (b - a)[1] * (p - a)[0]) < 1e-9
+    assert np.dot(arrow[1] - arrow[0], b - a) > 0
+
+
+@pytest.mark.parametrize("xy", [CCW, CW], ids=["ccw", "cw"])
+@pytest.mark.parametrize("method", ["span", "halfplane", "tiled"])
+def test_set_up_steps_blit_as_a_full_draw(xy, method):
+    """The marks are moving artists: a blitted set-up step equals a full draw."""
+    with plt.style.context("default"):
+        use_style("classroom")
+        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method=method, trace=True)
+        view = FillView(fill, step=0)
+        try:
+            for k in range(fill.trace.first_work_step + 1):
+                view.show_step(k, draw=False)
+                view.redraw()
+                fast = np.asarray(view.fig.canvas.buffer_rgba()).astype(int)
+                view.fig.canvas.draw()
+                full = np.asarray(view.fig.canvas.buffer_rgba()).astype(int)
+                assert np.abs(fast - full).max() <= 8, (method, k)
+            view.show_step(1, draw=False)  # every method draws the winding
+            assert view.setup_marks.arc.get_visible()
+            assert view.setup_marks.band.get_visible() is False
+        finally:
+            plt.close(view.fig)
+
+
+def test_a_zero_area_triangle_has_no_winding_arrow():
+    fill = tr.rasterize(tr.Triangle([[1.5, 6.5], [7.5, 6.5], [14.5, 6.5]]), 16, 12,
+                        method="span", trace=True)  # fmt: skip
+    view = FillView(fill, step=1)
+    try:
+        assert fill.trace.turn is None and not view.setup_marks.arc.get_visible()
+        assert not any("winding" in t for t in keyed(view))
+    finally:
+        plt.close(view.fig)
