@@ -99,7 +99,9 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     md = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
     code = ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
     flat = md.replace("\n", " ")
-    assert "conforming" not in flat and "two rules that the specifications both allow" in flat
+    # review r230 S3: Direct3D 11's functional spec fixes the rule (llvmpipe's); teachraster's
+    # is one GL and Vulkan allow
+    assert "conforming" not in flat and "teachraster's, which GL and Vulkan allow too" in flat
     assert "teachraster: the covered sample nearest the centre)" not in flat
     assert flat.count("the centre when it is covered") >= 3  # §5, its table, the summary
     assert "levels (a **rotated grid**" not in flat  # (the summary, far below, says five)
@@ -258,8 +260,9 @@ def test_lesson_08_review_r105_prediction_resolve_pixel_and_centred_pattern(ns):
     assert (ns.px_light >= ns.px_numbers - 1e-12).all() and (ns.px_light > ns.px_numbers).any()
     dark = int(np.argmin(ns.px_samples[ns.on_face[er, ec]][0]))  # the face's darkest channel
     assert ns.px_samples[ns.on_face[er, ec]][0][dark] == 0
-    quoted = f"{ns.px_numbers[dark]:.3f} as numbers and {ns.px_light[dark]:.3f} as light"
-    assert quoted == "0.500 as numbers and 0.735 as light" and quoted in text
+    # review r230 C1: the numbers tr.render averages here are sRGB codes
+    quoted = f"{ns.px_numbers[dark]:.3f} as codes and {ns.px_light[dark]:.3f} as light"
+    assert quoted == "0.500 as codes and 0.735 as light" and quoted in text
     # the error maps outline their triangle; Direct3D's reference rasterizer is quoted
     (maps,) = [s for s in sources if "art = plot_area_error(" in s]
     assert "np.vstack([xy2, xy2[:1]])" in maps
@@ -666,8 +669,9 @@ def test_lesson_08_review_r183_three_faults_abuffer_centroid_and_sliver_none(ns)
     assert ("MSAA keeps the mask but stores a fixed $S$ colours and $S$ depths per pixel "
             "instead of the list") in text  # fmt: skip
     # c26: the Direct3D reading is the lesson's; llvmpipe's rule the other reading
-    assert "The Direct3D row is this lesson's reading" in text
-    assert 'read as "fully covered", it would be llvmpipe\'s' in text
+    # review r230 S3: the reading is no longer the lesson's; D3D11.3 settles it
+    assert "The Direct3D row is this lesson's reading" not in text
+    assert 'The Direct3D 10 page means "fully covered" by "covered"' in text
     assert "as Direct3D's reference rasterizer moves outward" not in text
     assert '"derivatives of centroid-sampled inputs may be less accurate" (GLSL 4.60 §4.5)' in text
     # 8: the sliver question, built as the lesson builds it, takes "no pixel" as an answer
@@ -705,3 +709,165 @@ def test_lesson_08_review_r183_three_faults_abuffer_centroid_and_sliver_none(ns)
         "it stood on screen",
     ):
         assert history not in code, history
+
+
+#: Vulkan's table *Standard Sample Locations* (chapter *Rasterization*, *Multisampling*),
+#: sample i in row i: the positions the lesson says Vulkan, Direct3D and teachraster share.
+VULKAN_STANDARD_LOCATIONS = {
+    2: [(0.75, 0.75), (0.25, 0.25)],
+    4: [(0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875)],
+    8: [(0.5625, 0.3125), (0.4375, 0.6875), (0.8125, 0.5625), (0.3125, 0.1875),
+        (0.1875, 0.8125), (0.0625, 0.4375), (0.6875, 0.9375), (0.9375, 0.0625)],
+    16: [(0.5625, 0.5625), (0.4375, 0.3125), (0.3125, 0.625), (0.75, 0.4375),
+         (0.1875, 0.375), (0.625, 0.8125), (0.8125, 0.6875), (0.6875, 0.1875),
+         (0.375, 0.875), (0.5, 0.0625), (0.25, 0.125), (0.125, 0.75),
+         (0.0, 0.5), (0.9375, 0.25), (0.875, 0.9375), (0.0625, 0.0)],
+}  # fmt: skip
+
+
+def _lesson_text():
+    import json
+    from pathlib import Path
+
+    cells = json.loads(
+        (Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb").read_text()
+    )["cells"]
+    sources = ["".join(c["source"]) for c in cells]
+    md = " ".join(" ".join(s for c, s in zip(cells, sources) if c["cell_type"] == "markdown")
+                  .split())  # fmt: skip
+    return cells, sources, md
+
+
+def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
+    """Review r230 C1: lesson 12b's table says teachraster's resolve averages linear values,
+    lesson 08 said it averages numbers, the wrong ones. Both hold: tr.render averages what it
+    stores, codes in §6's cube, light in an sRGB8 target; the cell renders the cube into one.
+    M4: what each API promises for an sRGB resolve, with its section. S4: none promises the
+    box. M2: HDR colour resolved before tone mapping."""
+    import json
+    from pathlib import Path
+
+    from notebook_runs import executed, streams
+
+    _, sources, md = _lesson_text()
+    printed = streams(executed("08_antialiasing").notebook())
+    assert "`tr.render` resolves by averaging the numbers it stores, whatever they stand for" in md
+    assert "The cube's colours are **sRGB codes**" in md and "what `tr.render` does" not in md
+    er, ec = ns.er, ns.ec
+    np.testing.assert_allclose(ns.target_codes[er, ec], ns.px_light, atol=1e-12)
+    assert np.abs(ns.target_codes - ns.light_mean).max() < 1e-12  # every pixel, light's mean
+    quoted = "(" + ", ".join(f"{v:.3f}" for v in ns.px_light) + ")"
+    assert f"tr.render into an sRGB8 target, encoded: {quoted}" in printed
+    assert "codes averaged (tr.render here)" in printed
+    # lesson 12b's table row, which the lesson now agrees with (12b is not edited)
+    root = Path(__file__).resolve().parents[1]
+    twelve = json.loads((root / "notebooks" / "12b_blending.ipynb").read_text())["cells"]
+    table = " ".join("".join(c["source"]) for c in twelve)
+    assert "| teachraster | yes: `frame.color` is the mean of the samples' linear values" in table
+    assert "lesson 12b's table says of it" in md
+    # M4: the three APIs, each with its section
+    assert '"Multisample resolve is performed in linear space" (D3D11.3 §5.6.6)' in md
+    assert "*should* decode the samples before averaging and *must*" in md
+    assert "`VK_KHR_maintenance10`" in md and "can improve perceptual aliasing" in md
+    assert "falls against it is not said (GL 4.6 §18.3.1)" in md
+    # S4: the filter is left open everywhere
+    assert "but no API promises it: each leaves the filter to the implementation" in md
+    # M2: the numbers the text quotes are the cell's
+    res = ns.hdr_resolves
+    assert f"{ns.hdr_samples.mean():.3f}" == "10.025" and "its mean is 10.025" in md
+    assert f"{res['box mean, then tone-mapped']:.3f}" == "0.909" and "that is 0.909" in md
+    assert f"{20 / 21:.3f}" == "0.952" and "the lamp's own 0.952" in md  # Reinhard's x/(1+x)
+    for name in ("each sample tone-mapped, then the mean", "weighted mean, then tone-mapped"):
+        assert f"{res[name]:.3f}" == "0.500", name
+    assert "Karis, *Tone mapping*" in md and "the jaggies are back" in md
+
+
+def test_lesson_08_review_r230_msaa_leaves_the_floor_aliased(ns):
+    """Review r230 M1: what MSAA leaves aliased is shown, not only stated: lesson 09's floor,
+    1 sample, MSAA, supersampling and a 256-sample reference; inside the floor MSAA is the
+    1-sample image, supersampling less than half its error, trilinear filtering in between."""
+    from notebook_runs import executed, streams
+
+    e = ns.floor_errors
+    assert ns.same_inside and e["4× MSAA"] == e["1 sample"]
+    assert e["4× supersampling"] < 0.5 * e["4× MSAA"]
+    trilinear = float(
+        np.abs(ns.trilinear - ns.floor_reference).mean(axis=2)[ns.floor_inside].mean()
+    )
+    assert e["4× supersampling"] < trilinear < e["4× MSAA"]
+    assert ns.floor_inside.sum() > 500
+    printed = streams(executed("08_antialiasing").notebook())
+    assert "MSAA and 1 sample, the same colour at every one of them: True" in printed
+    _, sources, md = _lesson_text()
+    assert "Inside the floor MSAA changes nothing" in md
+    assert any("tr.render(floor, None, W_floor, H_floor, samples=4)" in s for s in sources)
+
+
+def test_lesson_08_review_r230_sample_shading_positions_and_discrepancy(ns):
+    """Review r230 F1: GL_SAMPLE_SHADING alone shades once per pixel; per-sample shading
+    needs glMinSampleShading(1.0), or gl_SampleID / a sample input. M3: which positions are
+    portable, Vulkan's table being teachraster's. M5: a source for "no pattern reaches 1/S".
+    S1: the question names no figure it hides. S9: the exercise numbering."""
+    cells, sources, md = _lesson_text()
+    assert "(`GL_SAMPLE_SHADING`): the shader runs per covered sample" not in md
+    assert "`glEnable(GL_SAMPLE_SHADING)` *and* `glMinSampleShading(1.0)`" in md
+    assert "max(⌈0 × S⌉, 1) = 1 run per pixel (GL 4.6 §14.3.1.1 *Sample Shading*" in md
+    assert "`gl_SampleID`" in md and "`SV_SampleIndex`" in md and "D3D11.3 §23.6" in md
+    # M3: Vulkan's standard locations are teachraster's patterns
+    for n, table in VULKAN_STANDARD_LOCATIONS.items():
+        np.testing.assert_array_equal(tr.sample_pattern(n), np.array(table))
+    assert "`VkPhysicalDeviceLimits::standardSampleLocations`" in md
+    assert "`D3D11_STANDARD_MULTISAMPLE_PATTERN` (D3D11.3 §19.2.4" in md
+    assert "`glGetMultisamplefv(GL_SAMPLE_POSITION, i, …)`" in md and "(GL 4.6 §14.3.1)" in md
+    # M5: the theorem and its sources, held with the chart (its S^-3/4 would answer q_fastest);
+    # the chart's steepest mean slope is far from -1
+    held = " ".join(ns.FASTEST_TEXT.split())
+    assert "Discrepancy theory proves it" in held and "Alexander" in held
+    assert "Matoušek, *Geometric Discrepancy*, 1999" in held and "Discrepancy theory" not in md
+    assert "(the theorem under the chart says none can)" in md
+    assert "no pattern can reach $1/S$ at every angle" in md
+    assert min(ns.edge_slopes[k] for k in ("grid", "jittered", "random")) > -0.9
+    # S1
+    (ask,) = [s for s in sources if "q_levels = Predict(" in s]
+    assert "The figure below" not in ask and "Check draws it" in ask
+    # S9
+    assert "**Exercise 6** (the exercises are numbered on their own; 6 goes with this lesson)" in md
+
+
+def test_lesson_08_review_r230_centroid_slopes_and_worst_pixels(ns):
+    """Review r230 S2: the standard patterns number their samples outward from the centre, so
+    teachraster's and llvmpipe's centroids differ only where the centre is covered; a random
+    pattern differs elsewhere too. S3: Direct3D 11.3 fixes the rule, the D3D10 page's context
+    quoted. S5: one range of S for every fitted slope. S6: what the worst pixels share, and
+    E23's gap, printed. FIG1: no dots on the 1-sample magnified panel."""
+    from notebook_runs import executed, streams
+
+    cells, sources, md = _lesson_text()
+    assert all(ns.outward.values()) and set(ns.outward) == {2, 4, 8, 16}
+    assert ns.centre_out["16 standard"][1] == 0 < ns.centre_out["16 random"][1]
+    assert "on 16\nrandom samples they differ elsewhere too" not in md  # (md is one line)
+    assert "on 16 random samples they differ elsewhere too" in md
+    assert '"(assuming the pixel is not fully covered)"' in md
+    assert "D3D11.3 functional spec §3.5.5, *Centroid Sampling of Attributes*" in md
+    assert "in increasing order of sample index" in md
+    # S5: every slope over S = 1, 4, 16
+    assert ns.FIT_COUNTS == (1, 4, 16)
+    for kind, k in ns.slopes.items():
+        r = [x for x in ns.rows if x["kind"] == kind and x["samples"] in ns.FIT_COUNTS]
+        assert len(r) == 3
+        fit = np.polyfit(np.log([x["samples"] for x in r]), np.log([x["mean_error"] for x in r]), 1)
+        assert k == pytest.approx(fit[0])
+    assert "Each slope is fitted over $S$ = 1, 4 and 16" in md
+    printed = streams(executed("08_antialiasing").notebook())
+    assert "fitted slopes k of error ∝ S^k, over S = 1, 4, 16:" in printed
+    # S6: the numbers the text quotes
+    gaps = (ns.e23_gap, float(np.median(ns.all_gaps)), float(ns.all_gaps.max()))
+    assert [f"{g:.2f}" for g in gaps] == ["0.23", "0.16", "0.24"]
+    assert "a gap of 0.23 px, near the widest of any direction (0.24 px" in md
+    assert "the median\ndirection's" not in md and "direction's widest gap is 0.16 px" in md
+    assert "along the axes 0.0625 px" in printed  # the rows of the 16-sample pattern
+    assert "Three of the five lie on the edge E23" in md
+    # FIG1: the 1-sample panel draws no dots; the legend says whose dots they are
+    (fig,) = [s for s in sources if "equal depth: where the triangles meet" in s]
+    assert "if fr.sample_triangle_id is not None else ()" in fig
+    assert "4 samples, a counted pixel" in fig

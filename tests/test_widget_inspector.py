@@ -291,3 +291,47 @@ def test_sixteen_random_numbers_sit_clearly_nearest_their_own_dot():
                 assert d[s] * OWN_DOT_MARGIN <= np.delete(d, s).min(), (row, col, s)
     finally:
         w.close()
+
+
+def test_review_r230_window_dots_tight_panel_clicks_and_top_left_edges():
+    """Review r230 FIG2: the magnified panel ran to y = 4.6 below a pixel ending at 4.0, an
+    empty band; the left panel drew lesson 08's 280 pixels with 4 dots of about 3 px each.
+    Now the left panel shows a window around the chosen pixel (its dots at least 8 points),
+    and each side of the magnified pixel has its own margin. S8: a click picks a pixel, and
+    the table names the top or left edges."""
+    from teachraster.plotting import use_style
+
+    with use_style("classroom"):
+        tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])  # lesson 08's
+        w = PixelInspector(tri, 20, 14, row=3, col=13, backend="image")
+        try:
+            assert w._window_size[0] < 20 and w._window_size[1] < 14  # a window, not all
+            (x0, x1), (y1, y0) = w._left.get_xlim(), w._left.get_ylim()
+            assert x0 <= 13 < 14 <= x1 and y0 <= 3 < 4 <= y1  # around the chosen pixel
+            assert w.samples.uncovered.get_markersize() >= 7.5  # points (3 px before)
+            w.fig.canvas.draw()
+            r = w.fig.canvas.get_renderer()
+            ax = w.pixel.square.axes
+            frame = ax.get_window_extent(r)
+            boxes = [lab.get_bbox_patch().get_window_extent(r) for lab in w.pixel.labels]
+            pixel = w.pixel.square.get_window_extent(r)
+            low = min([b.y0 for b in boxes] + [pixel.y0])
+            high = max([b.y1 for b in boxes] + [pixel.y1])
+            gap_pt = 20 * w.fig.dpi / 72  # the labels' pad and gap, and a little more
+            assert low - frame.y0 < gap_pt and frame.y1 - high < gap_pt, (low, high, frame)
+            # the window follows the pixel, to the image's last column
+            w.col.value = 19
+            assert w._left.get_xlim()[1] == 20
+            # a click on the left panel picks the pixel under it
+            w.click_at(5.5, 9.25)
+            assert (w.row.value, w.col.value) == (9, 5)
+            assert "pixel (row 9, col 5)" in w.pixel.square.axes.get_title()
+            assert "pixel (row 9, col 5)" in w.table.value
+            # S8: which edges are top or left, from the rule itself
+            names = [edge_name(a, b) for a, b in w.result.trace.edges]
+            top_left = [n for (a, b), n in zip(w.result.trace.edges, names)
+                        if tr.is_top_left(tri.xy[a], tri.xy[b])]  # fmt: skip
+            assert top_left == ["E31"]
+            assert "top or left edge(s), which take a sample on them: E31" in w.table.value
+        finally:
+            w.close()

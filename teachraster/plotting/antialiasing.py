@@ -204,7 +204,13 @@ def _sample_gap(ax, offsets) -> float:
 
 
 def plot_samples(
-    ax, source, *, fraction: bool = True, partial: bool = False, bold: bool = False
+    ax,
+    source,
+    *,
+    fraction: bool = True,
+    partial: bool = False,
+    bold: bool = False,
+    largest: float = DOT_SCALE,
 ) -> SampleArtists:
     """Every sample of every pixel at ``(j + ox, i + oy)``: filled where covered.
 
@@ -225,6 +231,9 @@ def plot_samples(
         Larger samples, the same at every step (see :data:`BOLD_STYLE`): covered filled
         blue, uncovered hollow vermillion, and hollow grey those that
         :meth:`SampleArtists.set_tested` says no step has tested yet (the fill player).
+    largest : float
+        The largest dot, times the style's marker size (:data:`DOT_SCALE` by default); dots
+        are smaller where the samples lie closer on screen.
 
     Returns
     -------
@@ -239,7 +248,7 @@ def plot_samples(
     uncovered = ax.plot([], [], "o", mfc="white", mec=COLORS["centre"],
                         mew=max(0.6, lw(0.2)), zorder=4)[0]  # fmt: skip
     widths = (max(0.5, lw(0.15)), max(0.8, lw(0.3)), max(2.0, lw(0.7)))
-    untested, largest = None, ms(DOT_SCALE)
+    untested, largest = None, ms(largest)
     if bold:
         largest *= BOLD_SCALE
         untested = ax.plot([], [], "o", zorder=4)[0]
@@ -349,7 +358,7 @@ class PixelSampleArtists(Artists):
         for s, (ox, oy) in enumerate(offsets):
             t = int(ids[row, col, s])
             color = "white" if t < 0 else TRIANGLE_COLORS[t % len(TRIANGLE_COLORS)]
-            self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4 if few else 1.0),
+            self.dots += ax.plot([col + ox], [row + oy], "o", ms=ms(1.4 if few else MANY_DOTS),
                                  mfc=color, mec=COLORS["edge"], zorder=5)  # fmt: skip
             if not few:
                 continue
@@ -358,7 +367,7 @@ class PixelSampleArtists(Artists):
         if not few:  # numbers only, each placed clear of the others, the dots and the centre
             ax.apply_aspect()  # the pixel's size as drawn: its sides are obstacles
             self.labels += _place_numbers(ax, col + offsets[:, 0], row + offsets[:, 1],
-                                          (col + 0.5, row + 0.5), ms(1.0),
+                                          (col + 0.5, row + 0.5), ms(MANY_DOTS),
                                           lines=self.edges)  # fmt: skip
         else:
             _fit_labels(ax, self.labels, row, col, lines=self.edges)
@@ -372,6 +381,10 @@ class PixelSampleArtists(Artists):
 
 #: Points between the pixel's side and a sample's label box in the margin beside it.
 LABEL_GAP = 6.0
+
+#: The magnified pixel's dots with more than 4 samples, times the style's marker size: 1.0
+#: drew 16 dots about 10 px across in a 900-px figure, small on a projector (review r230).
+MANY_DOTS = 1.2
 
 
 def _margin_label(ax, text: str, row: int, col: int, ox: float, oy: float):
@@ -409,16 +422,19 @@ MARGIN_X, MARGIN_Y = 0.28, 0.15
 
 def _fit_labels(ax, labels, row: int, col: int, *, lines=(), gap_pt: float = 6.0) -> None:
     """Keep the margin labels apart, off the triangle's edge ``lines`` and inside the panel,
-    the pixel in its middle.
+    with no more room around the pixel than they take.
 
     Labels on one side of the pixel that would overlap move apart, and a label an edge line
-    runs through moves up or down until it clears it (:func:`_spread_labels`); then the margins are solved for: the labels reach a fixed number of points beyond the
-    pixel's sides, so with ``n`` display pixels of them on each side and an Axes box ``W``
-    wide, the pixel gets ``W - 2n`` display pixels (likewise in height; the smaller wins,
-    the aspect is equal). s1's "+132.31" of lesson 08 c32 ran over the panel's right frame
-    (review r10); widening by the overflow alone took six rounds (a wider view shrinks the
-    pixel, and the labels move with its sides). Heights depend on the pixel's size (the
-    dots move), hence a few rounds.
+    runs through moves up or down until it clears it (:func:`_spread_labels`); then the
+    margins are solved for: the labels reach a fixed number of points beyond each of the
+    pixel's sides, so with ``l`` and ``r`` display pixels of them left and right and an Axes
+    box ``W`` wide, the pixel gets ``W - l - r`` display pixels (likewise in height; the
+    smaller wins, the aspect is equal, and the box shrinks to the limits in the other
+    direction). Each side has its own margin: one margin for both sides left the panel's
+    bottom third empty when only the top labels reached out (review r230 FIG2). s1's
+    "+132.31" of lesson 08 c32 ran over the panel's right frame (review r10); widening by the
+    overflow alone took six rounds (a wider view shrinks the pixel, and the labels move with
+    its sides). Heights depend on the pixel's size (the dots move), hence a few rounds.
     """
     if not labels:
         return
@@ -430,21 +446,39 @@ def _fit_labels(ax, labels, row: int, col: int, *, lines=(), gap_pt: float = 6.0
         ax.apply_aspect()
         _spread_labels(ax, labels, renderer, gap_pt=2.0, lines=lines)
         (px0, py0), (px1, py1) = ax.transData.transform([(col, row + 1), (col + 1, row)])
-        need_x = need_y = 0.0  # display pixels beyond the pixel's sides, gap and pad in
+        # display pixels beyond each side of the pixel, gap and pad in: left, right, bottom, top
+        need = np.zeros(4)
         for label in labels:
             box = label.get_window_extent(renderer)
             pad = (0.2 * label.get_fontsize() + gap_pt) * to_px  # label_box's pad, a gap
-            need_x = max(need_x, px0 - box.x0 + pad, box.x1 - px1 + pad)
-            need_y = max(need_y, py0 - box.y0 + pad, box.y1 - py1 + pad)
-        side = min(room.width - 2 * need_x, room.height - 2 * need_y)  # the pixel, on screen
+            need = np.maximum(need, [px0 - box.x0 + pad, box.x1 - px1 + pad,
+                                     py0 - box.y0 + pad, box.y1 - py1 + pad])  # fmt: skip
+        side = min(_pixel_side(room.width, need[0], need[1], MARGIN_X),
+                   _pixel_side(room.height, need[2], need[3], MARGIN_Y))  # fmt: skip
         # labels too large for the panel (a tiny figure): a pixel a quarter of it, cut labels
         side = max(side, 0.25 * min(room.width, room.height))
-        mx, my = max(MARGIN_X, need_x / side), max(MARGIN_Y, need_y / side)
-        left, top = ax.get_xlim()[0], ax.get_ylim()[1]  # y runs down: the top is second
-        if abs(left - (col - mx)) * side < 0.5 and abs(top - (row - my)) * side < 0.5:
+        ml, mr = (max(MARGIN_X, n / side) for n in need[:2])
+        mb, mt = (max(MARGIN_Y, n / side) for n in need[2:])
+        limits = ((col - ml, col + 1 + mr), (row + 1 + mb, row - mt))  # y runs down
+        now = (ax.get_xlim(), ax.get_ylim())
+        if np.abs(np.subtract(limits, now)).max() * side < 0.5:
             return
-        ax.set_xlim(col - mx, col + 1 + mx)
-        ax.set_ylim(row + 1 + my, row - my)
+        ax.set_xlim(*limits[0])
+        ax.set_ylim(*limits[1])
+
+
+def _pixel_side(room: float, before: float, after: float, least: float) -> float:
+    """The pixel's side, in display pixels, when ``room`` holds it and on each side of it the
+    larger of what the labels there need (``before``, ``after``) and ``least`` times the side
+    (the least margin, in pixels of the image).
+
+    >>> round(_pixel_side(340.0, 0.0, 100.0, 0.28), 1)  # labels on the right only
+    187.5
+    """
+    side = room - before - after
+    for _ in range(12):  # each round shrinks the error by 2 * least at most: it converges
+        side = room - max(before, least * side) - max(after, least * side)
+    return side
 
 
 def _spread_labels(ax, labels, renderer, *, gap_pt: float, lines=()) -> None:

@@ -15,9 +15,11 @@ from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
 from ..plotting import plot_pixel_grid, plot_pixel_samples, plot_samples
 from ..plotting.antialiasing import edge_value_text, sample_data
+from ..plotting.common import nice_step
 from ..plotting.style import VALUE_CMAP
 from .common import (
     SAMPLE_PATTERNS,
+    SLIDER_COLUMN_WIDTH,
     Holdable,
     Shown,
     close_tree,
@@ -26,12 +28,40 @@ from .common import (
     style_context,
     title_html,
 )
-from .display import FigureDisplay, new_figure, resolve_backend
+from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
+from .frame_inspector import click_image
 
 #: Up to 4 samples the left panel's covered fraction is a light grey under the dots (``Greys``
 #: from 0 to 1 / FEW_SAMPLES_GREY); with more it is the picture, in the colour map of lesson
 #: 08's other coverage figures (VALUE_CMAP: 0 dark blue, 1 yellow; review r136 08-7).
 FEW_SAMPLES_GREY = 2.5
+
+#: The left panel shows a window of the image around the chosen pixel, each pixel at least
+#: this many inches wide: the whole 20 × 14 image of lesson 08 drew 4 samples' dots about
+#: 3 px across, unreadable at the back of a room (review r230 FIG2).
+WINDOW_PIXEL_IN = 0.38
+#: Inches kept under the window for the colour key of the covered fraction and its label.
+KEY_ROOM_IN = 0.75
+
+
+def window_size(ax, width: int, height: int) -> tuple[int, int]:
+    """(columns, rows) of the window ``ax`` shows: as many pixels as fit at
+    :data:`WINDOW_PIXEL_IN` inches each above the key's room, at most the whole image."""
+    box = ax.get_position(original=True)
+    fig_w, fig_h = ax.figure.get_size_inches()
+    cols = max(1, int(box.width * fig_w / WINDOW_PIXEL_IN))
+    rows = max(1, int((box.height * fig_h - KEY_ROOM_IN) / WINDOW_PIXEL_IN))
+    return min(cols, width), min(rows, height)
+
+
+def window_origin(index: int, size: int, extent: int) -> int:
+    """The first column (row) of a window of ``size`` that keeps ``index`` in its middle,
+    inside an image of ``extent``.
+
+    >>> window_origin(13, 10, 20), window_origin(1, 10, 20), window_origin(19, 10, 20)
+    (8, 0, 10)
+    """
+    return int(min(max(index - size // 2, 0), extent - size))
 
 
 def fraction_key(fig, ax, width: int, height: int):
@@ -51,7 +81,11 @@ def fraction_key(fig, ax, width: int, height: int):
 
 
 class PixelInspector(Holdable):
-    """All samples of a small image, and one pixel magnified with what decided each sample.
+    """The samples of a small image, and one pixel magnified with what decided each sample.
+
+    The left panel shows a window of the image around the chosen pixel, its pixels at least
+    :data:`WINDOW_PIXEL_IN` inches wide (the whole image when it fits); a click on it picks
+    a pixel (:meth:`click_at`), as the row and column sliders do.
 
     Parameters
     ----------
@@ -74,6 +108,8 @@ class PixelInspector(Holdable):
     >>> w.col.value = 6; w.row.value = 2
     >>> int(w.result.sample_coverage[2, 6].sum())
     4
+    >>> w.click_at(3.5, 5.5); (w.row.value, w.col.value)  # a click at window (x, y)
+    (5, 3)
     >>> w.pattern.value = "16 standard"
     >>> len(w.pixel.dots)
     16
@@ -103,7 +139,12 @@ class PixelInspector(Holdable):
             )
             plot_pixel_grid(left, width, height)
             left.set_anchor("N")  # the grid at the top of its box: room for the key under it
-            self.samples = plot_samples(left, self.result)
+            self._left = left
+            # the window first: the dots are sized for the pixels as large as it draws them
+            self._window_size = window_size(left, width, height)
+            self._show_window()
+            # the dots as large as the window's pixels allow (each pixel's samples apart)
+            self.samples = plot_samples(left, self.result, largest=1.2)
             for tri in self._triangles():
                 closed = np.vstack([tri, tri[:1]])
                 # a white rim: the black edge shows on the dark blue of an empty pixel too
@@ -116,28 +157,28 @@ class PixelInspector(Holdable):
                 )
             # not clipped: the last row's and column's pixels are marked whole
             self.marker = left.plot([], [], color="#D55E00", lw=2.5, zorder=6, clip_on=False)[0]
-            self._left = left
             # what the left panel shows, under it (its column label sits on top)
             self._left_note = left.text(0.5, -0.03, "", transform=left.transAxes, ha="center",
                                         va="top", fontsize=14)  # fmt: skip
-            self.fraction_key = fraction_key(fig, left, width, height)
+            self.fraction_key = fraction_key(fig, left, *self._window_size)
             self.pixel = plot_pixel_samples(right, self.result, row, col,
                                             triangles=self._pixel_triangles())  # fmt: skip
             self._mark()
             self._few_or_fraction()
-            self.display = FigureDisplay(fig, self.backend)
-        self.fig = fig
+            self.fig = fig
+            picture = self._make_display()
         for control in (self.pattern, self.row, self.col):
             control.observe(self._changed, "value")
         title = title_html(
             "Pixel inspector: coverage sample by sample",
-            "Pick a pixel: each of its samples is tested against the edges like a pixel "
-            "centre (top-left rule included). Change the pattern to see what it catches.",
+            "Pick a pixel (click it on the left, or move row and col): each of its samples is "
+            "tested against the edges like a pixel centre (top-left rule included). Change the "
+            "pattern to see what it catches.",
         )
         controls = control_row([self.pattern, self.row, self.col])
         #: every sample's edge values in a table (a label per sample fits up to 4 only)
         self.table = widgets.HTML(self._table_html())
-        self.widget = widgets.VBox([title, controls, self.display.widget, self.table])
+        self.widget = widgets.VBox([title, controls, picture, self.table])
 
     def _compute(self) -> None:
         samples = pattern_samples(self.pattern.value)
@@ -172,7 +213,7 @@ class PixelInspector(Holdable):
             image = self.samples.fraction.image
             image.set_cmap("Greys" if few else VALUE_CMAP)
             image.set_clim(0, FEW_SAMPLES_GREY if few else 1.0)
-        self._left_note.set_text("every sample (filled = covered)" if few else "")
+        self._left_note.set_text("every sample around it (filled = covered)" if few else "")
         # with more samples the colours are the picture: a key says which is which fraction
         self.fraction_key.ax.set_visible(not few)
         self.fraction_key.set_label(f"{n} samples: covered fraction", fontsize=14)
@@ -180,6 +221,68 @@ class PixelInspector(Holdable):
     def _mark(self) -> None:
         r, c = self.row.value, self.col.value
         self.marker.set_data([c, c + 1, c + 1, c, c], [r, r, r + 1, r + 1, r])
+        self._show_window()
+
+    def _show_window(self) -> None:
+        """Move the left panel's window to keep the chosen pixel in its middle, its ticks
+        labelled with the image's own column and row indices."""
+        (cols, rows), ax = self._window_size, self._left
+        c0 = window_origin(self.col.value, cols, self.width)
+        r0 = window_origin(self.row.value, rows, self.height)
+        ax.set_xlim(c0, c0 + cols)
+        ax.set_ylim(r0 + rows, r0)
+        for axis, start, n in ((ax.xaxis, c0, cols), (ax.yaxis, r0, rows)):
+            step = nice_step(n)
+            idx = [i for i in range(start, start + n) if i % step == 0]
+            axis.set_ticks([i + 0.5 for i in idx], labels=[str(i) for i in idx])
+
+    # -- display and clicks --------------------------------------------------------------
+    def _make_display(self):
+        """The widget that shows the figure: ipympl's canvas (clicks through matplotlib), a
+        picture that reports clicks (anywidget), or a plain picture without anywidget."""
+        self.display, self.clicker = None, None
+        if self.backend == "ipympl":
+            self.display = FigureDisplay(self.fig, "ipympl")
+            self.fig.canvas.mpl_connect("button_press_event", self._on_press)
+            return self.display.widget
+        self.clicker = click_image(alt="the pixel inspector: click a pixel on the left")
+        if self.clicker is None:
+            self.display = FigureDisplay(self.fig, "image")
+            return self.display.widget
+        self.clicker.observe(self._on_click, "click")
+        # never wider than the column less ipywidgets' margins, as FigureDisplay's picture
+        self.clicker.layout = widgets.Layout(max_width=SLIDER_COLUMN_WIDTH)
+        self._refresh()
+        return self.clicker
+
+    def _refresh(self) -> None:
+        if self.display is not None:
+            self.display.refresh()
+            return
+        self.fig.canvas.draw()
+        self.clicker.value = png_bytes(self.fig)
+
+    def click_at(self, x: float, y: float) -> None:
+        """Choose the pixel under window point (x, y) (pixels, y down), as a click does."""
+        col, row = int(np.floor(x)), int(np.floor(y))
+        if 0 <= row < self.height and 0 <= col < self.width:
+            with self._holding():
+                self.row.value, self.col.value = row, col
+            self._changed({"owner": self.row})
+
+    def _on_press(self, event) -> None:
+        if event.inaxes is self._left and event.xdata is not None:
+            self.click_at(event.xdata, event.ydata)
+
+    def _on_click(self, change) -> None:
+        value = change["new"]
+        if len(value) < 2:
+            return
+        width, height = self.fig.canvas.get_width_height()
+        # the picture's fraction from its top left -> display pixels (y up) -> data
+        point = (value[0] * width, (1.0 - value[1]) * height)
+        if self._left.get_window_extent().contains(*point):
+            self.click_at(*self._left.transData.inverted().transform(point))
 
     def _changed(self, change) -> None:
         if self._quiet:
@@ -193,7 +296,7 @@ class PixelInspector(Holdable):
                               triangles=self._pixel_triangles())  # fmt: skip
         self._mark()
         self.table.value = self._table_html()
-        self.display.refresh()
+        self._refresh()
 
     def _table_html(self) -> str:
         """The chosen pixel's samples: offset, edge values (px², positive = inside) and
@@ -205,6 +308,9 @@ class PixelInspector(Holdable):
         r, c = self.row.value, self.col.value
         values = trace.samples.edge_values(r, c)
         names = [edge_name(a, b) for a, b in trace.edges]
+        # which edges take a sample exactly on them (review r230 S8: nothing said which)
+        top_left = [n for n, tl in zip(names, trace.samples.top_left) if tl]
+        rule = f"top or left edge(s), which take a sample on them: {', '.join(top_left) or 'none'}"
         covered = self.result.sample_coverage[r, c]
         offsets = self.result.samples
         head = "".join(f"<th>{n}</th>" for n in ("sample", "offset (x, y)", *names, "covered"))
@@ -217,7 +323,7 @@ class PixelInspector(Holdable):
                         f"<td>{'yes' if covered[s] else 'no'}</td></tr>")  # fmt: skip
         return (
             f"<details{' open' if len(offsets) > 4 else ''}><summary>pixel (row {r}, col {c}): every sample's edge values (px², positive = "
-            f"inside)</summary><table class='tr-samples' style='font-variant-numeric:"
+            f"inside); {rule}</summary><table class='tr-samples' style='font-variant-numeric:"
             f"tabular-nums'><tr>{head}</tr>{''.join(rows)}</table></details>"
         )
 
@@ -230,5 +336,6 @@ class PixelInspector(Holdable):
 
     def close(self) -> None:
         """Close every widget of the inspector."""
-        self.display.close()
+        if self.display is not None:
+            self.display.close()
         close_tree(self.widget)
