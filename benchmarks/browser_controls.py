@@ -149,7 +149,7 @@ def bench_controls(page, reps: int) -> list[tuple]:
             rows.append(("click", f"{p}: no picture found", [math.nan]))
     rows.append(control(page, "DivideCostExplorer: error toggle (kernel)", ".bench-divide", click,
                         toggle(page, ".bench-divide"), reps))  # fmt: skip
-    rows.append(control(page, "CasePicker: method toggle (kernel)", ".bench-cases", click,
+    rows.append(control(page, "CasePicker: naive-rule toggle (kernel)", ".bench-cases", click,
                         toggle(page, ".bench-cases"), reps))  # fmt: skip
     rows.append(control(page, "CasePicker: case menu (kernel)", ".bench-cases", change,
                         menu(page, ".bench-cases"), reps))  # fmt: skip

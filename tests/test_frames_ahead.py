@@ -430,23 +430,25 @@ def _png_pixels(png: bytes) -> np.ndarray:
 
 
 def test_case_pickers_pictures_drawn_ahead_are_its_pictures_and_are_shown_without_drawing():
-    """A case and method drawn ahead (on a figure of their own) are the picture, caption and
-    state a picker shows there; choosing them then draws nothing. Nothing is asked for
+    """A case and naive rule drawn ahead (on a figure of their own) are the picture, caption
+    and state a picker shows there; choosing them then draws nothing. Nothing is asked for
     before a first change (a lesson run without a page)."""
     from teachraster.plotting.frames import frame_rgba
     from teachraster.widgets.case_picker import CasePicker
 
-    picker = CasePicker("collinear", "span", backend="image")
+    picker = CasePicker("collinear", "E > 0", backend="image")
     ahead = picker._ahead
     assert not ahead.todo and not ahead.kept
-    picker.method.value = "halfplane"
-    picker.method.value = "span"  # back: the other method here comes first, not this one
-    assert ahead.todo[0] == ("collinear", "halfplane") and ("collinear", "span") not in ahead.todo
+    picker.rule.value = "E ≥ 0"
+    picker.rule.value = "E > 0"  # back: the rules either side here come first, not this one
+    assert ahead.todo[:2] == [("collinear", "whole px"), ("collinear", "E ≥ 0")]
+    assert ("collinear", "E > 0") not in ahead.todo
+    ahead.step()
     ahead.step()
     draws = picker.display.draws
-    picker.method.value = "halfplane"
+    picker.rule.value = "E ≥ 0"
     assert picker.display.draws == draws  # the picture kept, sent without drawing
-    fresh = CasePicker("collinear", "halfplane", backend="image")
+    fresh = CasePicker("collinear", "E ≥ 0", backend="image")
     assert np.array_equal(_png_pixels(picker.display.widget.value), frame_rgba(fresh.fig))
     assert picker.info.value == fresh.info.value and picker.passed == fresh.passed
     np.testing.assert_array_equal(picker.owner, fresh.owner)
@@ -503,25 +505,25 @@ def test_sampling_shape_drawn_ahead_is_sent_at_a_toggle_and_is_the_shapes_pictur
 
 
 def test_a_case_picker_in_a_kernel_keeps_the_pictures_it_draws():
-    """With an event loop running (a kernel), a case or method the picker drew itself is
+    """With an event loop running (a kernel), a case or rule the picker drew itself is
     kept: coming back to it draws nothing (without one, as above, every change draws)."""
     import asyncio
 
     from teachraster.widgets.case_picker import CasePicker
 
-    picker = CasePicker("collinear", "span", backend="image")
+    picker = CasePicker("collinear", "E > 0", backend="image")
 
     async def toggle_twice():
-        picker.method.value = "halfplane"
+        picker.rule.value = "E ≥ 0"
         shown = picker.display.widget.value
-        picker.method.value = "span"
+        picker.rule.value = "E > 0"
         draws = picker.display.draws
-        picker.method.value = "halfplane"
+        picker.rule.value = "E ≥ 0"
         return shown, draws
 
     shown, draws = asyncio.run(toggle_twice())
     assert picker.display.draws == draws and picker.display.widget.value == shown
-    assert ("collinear", "span") in picker._ahead.kept
+    assert ("collinear", "E > 0") in picker._ahead.kept
     picker.close()
 
 

@@ -463,19 +463,26 @@ def test_case_picker_titles_fit_and_a_long_sliver_stays_visible():
     """Review r2, 07: the two panel titles ran into each other ("…pixel → triangle" into
     "naive: max 16 hit(s) per pixel"), and diagonal_sliver's 62 owned pixels lay under a thick
     outline, two blank grids for a case whose point is 62 against 0."""
-    from teachraster.widgets.case_picker import CasePicker
+    from teachraster.widgets.case_picker import RULES, CasePicker, screen_cases
 
-    picker = CasePicker("fan_spokes_through_centres", backend="image")
+    picker = CasePicker("fan_spokes_through_centres", backend="image", style="classroom")
     try:
-        for name, method in [("fan_spokes_through_centres", "halfplane"),
-                             ("d3d_split_square", "span"), ("six_vertex_orders", "halfplane")]:  # fmt: skip
-            picker.case.value, picker.method.value = name, method
-            picker.fig.canvas.draw()
-            renderer = picker.fig.canvas.get_renderer()
-            left, right = (ax.title.get_window_extent(renderer) for ax in picker.axes)
-            assert not left.overlaps(right) and left.x0 >= 0, name
-            assert right.x1 <= picker.fig.bbox.width, name
-            assert f"{name}, {method} fill" == picker.fig.get_suptitle()
+        # review r227 FIG-1: every case with every rule, in the lesson's classroom style:
+        # titles apart, and each panel (its tick numbers too) inside the figure
+        for name in screen_cases():
+            for rule in RULES:
+                picker.case.value, picker.rule.value = name, rule
+                picker.fig.canvas.draw()
+                renderer = picker.fig.canvas.get_renderer()
+                left, right = (ax.title.get_window_extent(renderer) for ax in picker.axes)
+                assert not left.overlaps(right) and left.x0 >= 0, name
+                assert right.x1 <= picker.fig.bbox.width, name
+                for ax in picker.axes:
+                    box = ax.get_tightbbox(renderer)
+                    assert box.x0 >= 0 and box.y0 >= 0, (name, rule)
+                    assert box.x1 <= picker.fig.bbox.width, (name, rule)
+                    assert box.y1 <= picker.fig.bbox.height, (name, rule)
+                assert picker.fig.get_suptitle().startswith(f"{name}, naive: {rule}")
         picker.case.value = "diagonal_sliver"
         titles = [ax.get_title() for ax in picker.axes]
         assert "62 px" in titles[0] and "0 px" in titles[1]  # the case's point, in the titles
@@ -499,6 +506,7 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
     from matplotlib.patches import Rectangle
 
     from teachraster.widgets.case_picker import (
+        FIG_HEIGHT,
         MAX_ASPECT,
         MAX_VIEW,
         MIN_VIEW,
@@ -540,7 +548,7 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         assert picker.owner.shape == (4, 64) and (c1 - c0) <= MAX_ASPECT * (r1 - r0)
         assert (c0, c1) == (0, 12) and "columns 0–11 of 64" in picker.fig.get_suptitle()
         # review r6, 07-4: the 4 x 12 view in a figure as high as it needs, not 2/3 white
-        assert picker.fig.get_figheight() < 0.6 * 4.4 and picker.fig.get_figwidth() == 9.0
+        assert picker.fig.get_figheight() < 0.65 * FIG_HEIGHT and picker.fig.get_figwidth() == 9.0
         assert picker.hubs == [] and "outlined in black" not in picker.info.value
         # review r7, 07: diagonal_sliver was a dotted diagonal on the whole 64 x 64 grid; it is
         # now its first MAX_VIEW x MAX_VIEW corner, named in the title (thin outlines: above)
@@ -556,7 +564,7 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         picker.case.value = "snap_flips_winding"  # a tiny triangle keeps a grid around it
         r0, r1, c0, c1 = picker.view
         assert min(r1 - r0, c1 - c0) >= MIN_VIEW
-        assert picker.fig.get_figheight() == 4.4  # a square view gets the full height back
+        assert picker.fig.get_figheight() == FIG_HEIGHT  # a square view: the full height
     finally:
         picker.close()
 
@@ -765,11 +773,12 @@ def test_case_picker_shows_every_screen_case_with_both_methods():
     picker = CasePicker("d3d_split_square", backend="image")
     try:
         for name in names:
+            picker.case.value = name
             for method in hardcases.FILL_METHODS:
-                picker.case.value, picker.method.value = name, method
                 result = hardcases.get_case(name).run(method)
                 assert np.array_equal(picker.owner, owner_image(result.fills))
-                assert picker.passed and "passes its check" in picker.info.value
+            assert picker.passed and "passes its check" in picker.info.value
+            assert picker.methods_differ == 0
         picker.case.value = "fan_spokes_through_centres"
         assert int(picker.owner.max()) == 15 and not (picker.owner == SEVERAL).any()
         assert picker.naive_counts.max() == 16  # the hub, naive: all sixteen triangles
@@ -955,18 +964,17 @@ def test_explorers_moved_by_their_controls_draw_what_a_fresh_one_draws():
 
 
 def test_case_picker_moved_to_any_case_draws_what_a_fresh_one_draws():
-    """Every case and method, reached from the case before it, from the case after it, and by
-    the method toggle, draws the fresh picker's picture. coincident_vertices and sliver_pair
+    """Every case and two rules, reached from the case before it, from the case after it, and
+    by the rule toggle, draws the fresh picker's picture. coincident_vertices and sliver_pair
     did not (about 30,000 pixels): the layout, solved once per case and method, started from
     the last case's axes, and the constrained layout does not forget where it starts."""
-    from teachraster.study.hardcases import FILL_METHODS
-    from teachraster.widgets.case_picker import CasePicker, screen_cases
+    from teachraster.widgets.case_picker import CASE_NAIVE, CasePicker, screen_cases
 
-    names, (m0, m1) = screen_cases(), FILL_METHODS
+    names, (m0, m1) = screen_cases(), (CASE_NAIVE, "E > 0")
     fresh, wrong = {}, []
 
     def compare(picker, how):
-        key = (picker.case.value, picker.method.value)
+        key = (picker.case.value, picker.rule.value)
         if key not in fresh:
             fresh[key] = CasePicker(*key, backend="image")
             fresh[key].close()  # its figure stays, with the last picture drawn
@@ -982,11 +990,11 @@ def test_case_picker_moved_to_any_case_draws_what_a_fresh_one_draws():
         picker = CasePicker(order[-1], (m0, m1)[walk], backend="image")
         for name in order:
             arrive = (m0, m1)[(names.index(name) + walk) % 2]
-            if picker.method.value != arrive:  # (no extra step with an odd number of cases)
-                picker.method.value = arrive
+            if picker.rule.value != arrive:  # (no extra step with an odd number of cases)
+                picker.rule.value = arrive
             picker.case.value = name
             compare(picker, f"from {'before' if walk == 0 else 'after'}")
-            picker.method.value = other[arrive]
+            picker.rule.value = other[arrive]
             compare(picker, "by the toggle")
         picker.close()
     assert len(fresh) == 2 * len(names)

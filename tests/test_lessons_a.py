@@ -113,7 +113,9 @@ ANSWERED_BELOW = {
     "07_hard_cases": {
         "q_fan": ["FAN_TEXT = "],
         "q_gaps": ["GAPS_TEXT = ", "two strictly inside the wedge"],
-        "q_far": ["(q_far's answer)"],
+        # review r227 P-1: the reading of q_far's figures was a Markdown cell under its held
+        # cell, visible before Check ("thousands of pixels apart"); the held cell shows it now
+        "q_far": ["(q_far's answer)", "FAR_TEXT = ", "thousands of pixels apart"],
         "q_behind": ["BEHIND_TEXT = ", "mirrored vertex"],
     },
 }

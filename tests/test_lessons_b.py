@@ -1005,7 +1005,7 @@ def test_11_prints_every_line_in_a_column():
 # -- 07 hard cases ---------------------------------------------------------------------------
 def test_07_the_catalogue_still_passes():
     ns = lesson("07_hard_cases")
-    assert not ns.failures and ns.fan_naive.max() == 16
+    assert ns.rest and ns.fan_naive.max() == 16  # the rest cell checked every case it lists
     assert not ns.wrong32.any()  # the predicted "nothing at all" at 1e6 px in float32
 
 
@@ -1232,7 +1232,8 @@ def test_07_catalogue_tables_print_in_one_piece():
         streams = [o for o in cell.outputs if o.get("output_type") == "stream"]
         assert len(streams) == 1 and "\n\n\n" not in streams[0]["text"], cell.source[:60]
     sources = [c.source for c in nb.cells if c.cell_type == "code"]
-    assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 2
+    # review r227 S-1: the table of every case and method is gone; the rest's list stays
+    assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 1
     # review r119 07-C: the tie-rule checker's table and verdict too, in one output
     (tie,) = [c for c in nb.cells if c.cell_type == "code" and "def check_tie_rule" in c.source]
     streams = [o for o in tie.outputs if o.get("output_type") == "stream"]
@@ -1407,7 +1408,7 @@ def test_07_case_picker_driven_by_the_test():
 
     picker = CasePicker("fan_spokes_through_centres", backend="image")
     try:
-        picker.case.value, picker.method.value = "d3d_split_square", "span"
+        picker.case.value, picker.rule.value = "d3d_split_square", "E ≥ 0"
         assert picker.passed and picker.difference
         assert "covered twice or more" in picker.info.value  # the key, under the case's text
         # r8 07-5: a one-triangle case's key names the one colour drawn, no overlap class
@@ -1557,13 +1558,26 @@ def test_07_review_r145_reading_order_and_questions():
 def test_07_review_r145_picker_methods_and_subpixel_view():
     """Review r145 07-15, 07-16: the method toggle changed only the title (both methods give
     the same pixels): the info line says so; the sub-pixel view's vertex marks are small and
-    its naive panel outlines the rounded triangles that the naive version fills."""
-    from teachraster.widgets.case_picker import TINY_MARK, CasePicker
+    its naive panel outlines the rounded triangles that the naive version fills. Review r227
+    W-1: a toggle that changes nothing on screen is gone; the toggle now picks the naive rule
+    of the right panel, and every rule changes the picture of some case."""
+    import html
+
+    from teachraster.widgets.case_picker import CASE_NAIVE, RULES, TINY_MARK, CasePicker
+    from teachraster.widgets.display import png_bytes
 
     picker = CasePicker("subpixel_triangles", backend="image")
     try:
         assert picker.methods_differ == 0 and "the same pixels" in picker.info.value
-        assert "both give the same pixels" in picker.widget.children[0].value
+        assert not hasattr(picker, "method") and picker.rule.value == CASE_NAIVE
+        assert "the rule you pick" in picker.widget.children[0].value
+        # ticks: the image's own rows and columns (review r227 FIG-1): (2, 3) and (5, 5) named
+        # by the case's text are found by their numbers
+        r0, r1, c0, c1 = picker.view
+        ticks = [int(t.get_text()) for t in picker.axes[0].get_xticklabels()]
+        assert ticks == list(range(c0 + c0 % 2, c1, 2)) and 2 in ticks and r0 > 0
+        every = {*picker.axes[0].get_yticks(), *picker.axes[0].get_yticks(minor=True)}
+        assert sorted(every) == [r + 0.5 for r in range(r0, r1)]  # a tick on every row
         rounded = np.rint(picker._case.triangles)
         assert np.array_equal(picker.naive_triangles, rounded)
         for ax in picker.axes:
@@ -1572,8 +1586,24 @@ def test_07_review_r145_picker_methods_and_subpixel_view():
         drawn = [np.column_stack(ln.get_data())[:3] for ln in picker.axes[1].lines
                  if ln.get_marker() == "s"]  # fmt: skip
         assert all(any(np.array_equal(d, r) for r in rounded) for d in drawn)
-        picker.method.value = "span"
-        assert picker.methods_differ == 0 and "the same pixels" in picker.info.value
+        picker.rule.value = "whole px"  # the same rounding as the case's own naive version
+        assert np.array_equal(picker.naive_triangles, rounded)
+        # every rule draws another picture on the split square, and says what it does
+        picker.case.value = "d3d_split_square"
+        pictures, counts = {}, {}
+        for rule in RULES:
+            picker.rule.value = rule
+            picker.fig.canvas.draw()
+            pictures[rule], counts[rule] = png_bytes(picker.fig), picker.naive_counts.copy()
+            assert picker.naive_says in html.unescape(picker.info.value)
+        assert np.array_equal(counts[CASE_NAIVE], counts["E ≥ 0"])  # its own: E >= 0
+        assert counts["E ≥ 0"].max() == 2 and counts["E > 0"].sum() == 12  # 6 + 6 inside
+        assert len({pictures[r] for r in RULES if r != CASE_NAIVE}) == len(RULES) - 1
+        picker.rule.value = "E > 0"
+        assert "E &gt; 0: raw floats" in picker.info.value
+        assert "misses 13 that ours covers: 13 pixel(s) differ" in picker.info.value
+        picker.case.value, picker.rule.value = "six_vertex_orders", "one winding"
+        assert "disagree at 63 pixel(s); ours at none" in picker.difference
     finally:
         picker.close()
 
@@ -1611,9 +1641,14 @@ def test_07_review_r210_outline_centres_whole_count_and_origin_order():
     assert "whole=True" in fan.split("q_fan = Predict(")[1]
     (mine,) = [c for c in cells if c.startswith("def my_coverage(")]
     assert "origin[1] + np.arange(width)" in mine and "origin[0] + np.arange(height)" in mine
-    turn = " ".join(next(c for c in cells if c.startswith("## Your turn")).split())
+    turn = " ".join(next(c for c in cells if c.startswith("**Part 2: every coverage")).split())
     assert "`origin` as the (row, column) of its first pixel" in turn
-    assert '`render`\'s batched fill (`"batch"`)' in " ".join(cells[0].split())
+    # review r227 S-1: the introduction is about the GPU's rules, not the catalogue's API
+    intro = " ".join(cells[0].split())
+    assert (
+        '"batch"' not in intro and "check(result)" not in intro and "naive_difference" not in intro
+    )
+    assert "top-left rule" in intro and "clipping before the divide" in intro
 
 
 def test_07_review_r210_fan_figure_and_legends():
@@ -3674,7 +3709,9 @@ def test_07_review_r215_printed_lines_are_named_by_their_words():
                 after = flat[m.end() : m.end() + 20]
                 if after.startswith((" above the figure", ", above the")):
                     assert any(i is not None and n < i for _, n, i in homes), (k, quote)
-    assert named >= 15
+    # review r227 S-2: fewer pointers from the prose to its own printout (the numbers are in
+    # the text, computed, where a held cell shows it); those left are checked all the same
+    assert named >= 6
     cells = [" ".join(c.source.split()) for c in nb.cells]
     (gaps,) = [c for c in cells if c.startswith("q_gaps.hold()")]
     assert 'the line "with E >= 0 instead (no tie rule) the gaps are …" above the figure' in gaps
@@ -3704,7 +3741,8 @@ def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
     for a, b in zip(ns.far_tri + 1e6 + 1, np.roll(ns.far_tri + 1e6 + 1, -1, axis=0)):
         a32, b32 = a.astype(np.float32), b.astype(np.float32)
         assert float(a32[0] * b32[1]) % 2**16 == float(a32[1] * b32[0]) % 2**16 == 0
-    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
     for said in ("shifted by (1, 1) px, the edges move: E12 3,870 px outward, E23 1,278 px "
                  "outward, E31 17 px inward;",
                  "float32 draws 74,654 pixels of the 400 x 400 window round it, 0 of the "
@@ -3717,11 +3755,24 @@ def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
     explain = far.split("explain=")[1].replace('" f"', "").replace('" "', "")  # one text
     assert "or none of it" not in explain and "a triangle far larger than this one" in explain
     assert "{shift_drawn:,} pixels of the {len(shift_f32)}" in explain
-    text = " ".join(next(c for c in cells if c.startswith("Here the float32 version")).split())
-    assert "shift the triangle a little" not in text
+    # review r227 P-1: the reading answers q_far, so q_far's held cell displays it (it was a
+    # Markdown cell under the held one, visible before Check); C-2: the shifts it names are
+    # those printed (every other k), not ranges
+    assert not any(c.startswith("Here the float32 version") for c in cells)
+    (held,) = [c for c in run.cells if c.source.startswith("q_far.hold()")]
+    shown = [
+        o["data"]["text/markdown"] for o in held.outputs if "text/markdown" in o.get("data", {})
+    ]
+    text = " ".join(" ".join(shown).split())
+    assert text.startswith("Here the float32 version") and "shift the triangle a little" not in text
     for said in ("74,654 pixels of the 400 × 400 window round it, and none of the triangle's 64",
-                 "k = 24 to 30 and 51 to 55", "over a thousand pixels", "65,536"):  # fmt: skip
+                 "Of the 64 diagonal shifts, 56 draw nothing; part of the triangle comes only at "
+                 "k = 24, 26, 28 and 30, and all of it (with pixels round it) only at k = 51, 53 "
+                 "and 55", "over a thousand pixels", "65,536",
+                 "the relative form gets 0 of its 64 pixels wrong at $10^5$ px and 0 at $10^6$ "
+                 "px; the absolute form gets 64 and 64"):  # fmt: skip
         assert said in text, said
+    assert "24 to 30" not in text and "51 to 55" not in text
 
 
 def test_07_review_r215_the_v_label_hides_no_centre():
@@ -3772,3 +3823,124 @@ def test_07_review_r215_the_v_label_hides_no_centre():
             gap = np.hypot(cols[:, None] - x, rows[:, None] - (height - y)).min(axis=0)
             assert (gap > reach).all(), (ax.get_title(), gap.min(), reach)
     plt.close(fig)
+
+
+@pytest.mark.notebook
+def test_07_review_r227_split_square_t_junction_and_the_gpu_far_away():
+    """Review r227 F-1: §1's / split is Direct3D's example mirrored (Direct3D's own, the \\
+    split, gives the upper-right triangle 15 centres and the lower-left 10, as its page says);
+    C-1: the / diagonal's ends go to neither triangle, and the printed `must` says so. F-2,
+    M-1: a T-vertex exactly on AB seals the mesh; one snapping step above AB leaves the two
+    centres exactly on AB as gaps (a sparkle). M-2: the far case is tied to Direct3D's 16.8
+    range and the guard band, the lessons named. FIG-2, S-4: the figures' titles."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    assert ns.split_owners == {"/ split, here": {"upper-left": 15, "lower-right": 10},
+                               "\\ split, Direct3D's": {"upper-right": 15, "lower-left": 10}}  # fmt: skip
+    ours = ns.split_square[0]
+    assert ours[1, 6] == ours[6, 1] == 0 and ours[1:6, 1:6].all()  # the ends: neither triangle
+    # "the diagonal's centres to the lower-right triangle" (/), "to the upper-right" (\)
+    from teachraster.widgets.case_picker import owner_image
+
+    for name, inner in (("d3d_split_square_other_diagonal", [(2, 5), (3, 4), (4, 3), (5, 2)]),
+                        ("d3d_split_square", [(1, 1), (2, 2), (3, 3), (4, 4), (5, 5)])):  # fmt: skip
+        case = hardcases.get_case(name)
+        owner = owner_image(case.run().fills)
+        side = "lower-right" if "other" in name else "upper-right"
+        (k,) = {int(owner[rc]) for rc in inner}
+        x, y = case.triangles[k].mean(axis=0) - case.triangles.reshape(-1, 2).mean(axis=0)
+        assert ("upper" if y < 0 else "lower") + "-" + ("left" if x < 0 else "right") == side
+    mirrored = " ".join(hardcases.get_case("d3d_split_square_other_diagonal").expect.split())
+    own = " ".join(hardcases.get_case("d3d_split_square").expect.split())
+    assert "both ends of the diagonal ((1, 6) and (6, 1)) among them" in mirrored
+    assert "Direct3D's example mirrored" in mirrored and "Direct3D's split-square" not in mirrored
+    assert ("Direct3D's split-square example: the upper-right triangle gets 15 centres, the "
+            "lower-left 10") in own  # fmt: skip
+    assert "the diagonal's centres go to exactly one triangle" not in own + mirrored
+    cells = _07_sources()
+    (square,) = [" ".join(c.split()) for c in cells if c.startswith("## 1. Ties")]
+    assert "The Direct3D split square" not in square and "its mirror image" in square
+    (reading,) = [" ".join(c.split()) for c in cells if c.startswith("The top-left rule gives")]
+    assert "The diagonal's two ends, (1, 6) and (6, 1)," in reading
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    assert "/ split, here: upper-left 15, lower-right 10 centres" in printed
+    assert "\\ split, Direct3D's: upper-right 15, lower-left 10 centres" in printed
+    assert "both ends of the diagonal ((1, 6) and (6, 1)) among them" in printed
+    # the T-junction: exactly on AB sealed, a step above AB the two centres on AB lost
+    assert ns.fine_gaps == {"V exactly on AB": [], "V 1/256 px above AB": ns.gaps_on_ab,
+                            "V 1/256 px below AB": []}  # fmt: skip
+    assert set(ns.fine_twice.values()) == {0} and ns.gaps_on_ab == [[4, 4], [7, 11]]
+    assert "V 1/256 px above AB: gaps [[4, 4], [7, 11]], centres drawn twice 0" in printed
+    assert "V exactly on AB: gaps [], centres drawn twice 0" in printed
+    (tj,) = [" ".join(c.split()) for c in cells if c.startswith("**A T-junction.**")]
+    assert "watertight only if $V$ lies *exactly* on $AB$" in tj and "only along" not in tj
+    (gaps_held,) = [c for c in cells if c.startswith("q_gaps.hold()")]
+    assert "display(Markdown(SPARKLE_TEXT))" in gaps_held and "**sparkle**" in gaps_held
+    # far from the origin: what a GPU does instead, by the lessons' names
+    assert ("Direct3D's 16.8 fixed point: a range of 65,536 px, ±32,768 px round the origin; "
+            "1e6 px lies 31 times as far out") in printed  # fmt: skip
+    (far_held,) = [c for c in cells if c.startswith("q_far.hold()")]
+    far_text = " ".join(far_held.split("FAR_TEXT = ")[1].split())
+    for said in ("lesson 02, *Half-planes*", "lesson 05a, *The z-buffer vs the painter's "
+                 "algorithm*", "guard band", "integers, on snapped coordinates",
+                 "a software rasteriser's hazard"):  # fmt: skip
+        assert said in far_text, said
+    assert cells[cells.index(far_held) + 1].startswith("**Try it: float32 far from the origin,**")
+    # FIG-2: the vertices' w and f in a line over the panels; S-4: no "max 1 hit(s)/pixel"
+    (w_ratio,) = [c for c in cells if c.startswith('case, ours = introduce("perspective_w_ratio')]
+    assert 'fig.suptitle(";   ".join(values)' in w_ratio and "axes[0].text(" not in w_ratio
+    assert "hit(s)/pixel" not in "".join(cells) and "def panel_title(" in "".join(cells)
+
+
+def test_07_review_r227_your_turn_goes_on_to_every_coverage_case():
+    """Review r227 S-3: part 1 (the y-up tie rule) is one comparison; part 2 runs the same
+    checker on every coverage case, where a right tie rule alone still fails the three cases
+    that need snapping (its why and must printed for each), and a snapped fill (here with
+    lesson 02's integer bias) passes them all."""
+    from teachraster.study import hardcases
+    from teachraster.widgets.case_picker import screen_cases
+
+    ns = lesson("07_hard_cases")
+    assert ns.every_case == screen_cases() and len(ns.every_case) == 15
+    assert ns.all_verdict.startswith("Not yet") and "first make the meshes match" in ns.all_verdict
+    cells = _07_sources()
+    cell = next(c for c in cells if "def check_tie_rule" in c)
+    printed = []
+    scope = {"np": np, "hardcases": hardcases, "say": printed.extend,
+             "wrap": lambda text, first="", rest="": first + text}  # fmt: skip
+    exec(cell.split("\n\n\nmy_verdict")[0], scope)
+    check = scope["check_tie_rule"]
+
+    def y_up(snap):
+        def coverage(xy, width, height):
+            xy = np.asarray(xy, dtype=float)
+            x, y = np.meshgrid(np.arange(width) + 0.5, np.arange(height) + 0.5)
+            if snap:  # integer units of 1/256 px, the centres too (j + 1/2 is 128 units on)
+                xy, x, y = np.round(xy * 256), x * 256, y * 256
+            a, b, c = xy
+            if (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0:
+                xy = xy[[0, 2, 1]]  # oriented after snapping: snap_flips_winding
+            inside = np.ones((height, width), dtype=bool)
+            for p, q in zip(xy, np.roll(xy, -1, axis=0)):
+                e = (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
+                owns = q[1] < p[1] or (q[1] == p[1] and q[0] < p[0])  # top or left, y up
+                inside &= (e + (0 if owns else -1) >= 0) if snap else (e > 0) | ((e == 0) & owns)
+            return inside
+
+        return coverage
+
+    verdict, counts = check(y_up(False), screen_cases())
+    assert verdict.startswith("Not yet. The meshes match; these cases do not")
+    needs_snapping = {"translation_invariance", "snap_flips_winding", "snap_degenerate"}
+    assert {name for name, n in counts.items() if n} == needs_snapping
+    said = " ".join(printed)
+    assert all(f"  {name}: {hardcases.get_case(name).why}" in said for name in needs_snapping)
+    printed.clear()
+    verdict, counts = check(y_up(True), screen_cases())
+    assert verdict.startswith("Right: all 15 cases match ours") and not any(counts.values())
+    turn = " ".join(next(c for c in cells if c.startswith("**Part 2: every coverage")).split())
+    assert "$E + b \\ge 0$" in turn and "why does it need integers?" in turn

@@ -61,7 +61,7 @@ def test_browser_benchmark_quick_run_reports_every_figure():
                  "dragged", "PipelineMap: click a stage", "CrackExplorer: reroll",
                  "FootprintExplorer: click a pixel", "FootprintExplorer: click the texture",
                  # the controls that go through the kernel
-                 "DivideCostExplorer: error toggle", "CasePicker: method toggle",
+                 "DivideCostExplorer: error toggle", "CasePicker: naive-rule toggle",
                  "CasePicker: case menu", "SamplingExplorer: kernel toggle",
                  "SamplingExplorer: samples, one key", "TileExplorer: level, one key",
                  "TileExplorer: level slider dragged", "TileExplorer: traversal menu",

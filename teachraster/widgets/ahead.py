@@ -34,7 +34,7 @@ browser (nbclient, the tests) draws nothing ahead, and a page opened later asks 
 
 A control's other options at the picture on show (:class:`TogglesAhead`: ``FilterExplorer``'s
 filters, ``SamplingExplorer``'s shapes) and the few states of a PNG explorer's menus
-(:class:`PicturesAhead`: ``CasePicker``'s cases and methods, ``DivideCostExplorer``'s error
+(:class:`PicturesAhead`: ``CasePicker``'s cases and naive rules, ``DivideCostExplorer``'s error
 measures and prices) are drawn ahead too, and kept by the kernel: choosing one sends its
 picture at once.
 """
@@ -404,7 +404,7 @@ class PicturesAhead:
     """Pictures of an explorer's menus and toggles, drawn while the kernel idles on a figure
     of their own and kept by the kernel: choosing one of them then sends its picture at once.
 
-    For the explorers whose few states (a case and a fill method; an error measure) each
+    For the explorers whose few states (a case and a naive rule; an error measure) each
     cost a whole figure (artists made anew, axes laid out: 100-500 ms): ``CasePicker`` and
     ``DivideCostExplorer``. The figure the page shows is never touched: ``draw`` renders on
     a second one, made as the first, so that a picture kept is the one the explorer draws

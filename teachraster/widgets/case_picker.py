@@ -1,10 +1,12 @@
 """``CasePicker``: browse the hard-case catalogue, ours beside the naive rasteriser.
 
-Lesson 07's widget. Pick a screen-space case of :mod:`teachraster.study.hardcases` and a fill
-method: the left panel colours every pixel by the triangle that owns it (vermillion where a
-pixel is covered twice), the right panel shows what the case's naive implementation covers, and
-the text gives the case's *why*, what a correct rasteriser *must* do, whether ours passes its
-check, and how the naive version differs.
+Lesson 07's widget. Pick a screen-space case of :mod:`teachraster.study.hardcases` and a naive
+rule: the left panel colours every pixel by the triangle that owns it (vermillion where a
+pixel is covered twice), the right panel shows what a naive rasteriser covers (the case's own
+naive version, or one of :data:`~teachraster.study.hardcases.NAIVE_RULES` applied to the
+case: no tie rule either way, whole-pixel vertices, one winding), and the text gives the
+case's *why*, what a correct rasteriser *must* do, whether ours passes its check, and how the
+naive version differs. Both panels are ticked with the image's own rows and columns.
 
 Some cases are not meshes but separate copies of one triangle (every vertex order, whole-pixel
 shifts): their copies overlap by design, and a pixel covered by two of them is no error. For
@@ -39,7 +41,12 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 #: drawn ahead brings them with it.
 PICTURE_STATE = ("_case", "owner", "passed", "failure", "naive_counts", "difference", "offsets",
                  "copies", "naive_copies", "_box", "hubs", "view", "colors", "methods_differ",
-                 "naive_triangles")  # fmt: skip
+                 "naive_triangles", "naive_says")  # fmt: skip
+
+#: The naive rule the right panel starts with: the case's own naive version (what its
+#: ``naive_does`` says); the others are :data:`~teachraster.study.hardcases.NAIVE_RULES`.
+CASE_NAIVE = "case's own"
+RULES = (CASE_NAIVE, *hardcases.NAIVE_RULES)
 
 #: Owner value of a pixel covered by no triangle, and by more than one.
 NONE, SEVERAL = -1, -2
@@ -84,6 +91,27 @@ def owner_image(fills) -> np.ndarray:
         count += m
     owner[count > 1] = SEVERAL
     return owner
+
+
+def counts_difference(ours: np.ndarray, naive: np.ndarray) -> str:
+    """How a naive rule's coverage counts differ from ours, in one line.
+
+    >>> counts_difference(np.array([[1, 1, 0, 0]]), np.array([[2, 0, 1, 0]]))
+    'naive covers 1 centre(s) more than once, 1 that ours leaves to a neighbour, misses 1 that ours covers: 3 pixel(s) differ'
+    >>> counts_difference(np.array([[1, 0]]), np.array([[1, 0]]))
+    'naive covers the same centres as ours'
+    """
+    differ = int((ours != naive).sum())
+    if not differ:
+        return "naive covers the same centres as ours"
+    twice, extra = int((naive > 1).sum()), int(((naive > 0) & (ours == 0)).sum())
+    missed = int(((naive == 0) & (ours > 0)).sum())
+    covers = [f"{twice} centre(s) more than once"] * bool(twice) + [
+        f"{extra} that ours leaves to a neighbour"
+    ] * bool(extra)
+    parts = [f"covers {', '.join(covers)}"] * bool(covers)
+    parts += [f"misses {missed} that ours covers"] * bool(missed)
+    return f"naive {', '.join(parts)}: {differ} pixel(s) differ"
 
 
 def owner_color(k: int) -> str:
@@ -218,8 +246,28 @@ def outline(ax, xy, *, thin: bool = False, tiny: bool = False):
 MIN_VIEW, MAX_ASPECT, MAX_VIEW = 6, 3, 16
 
 #: The figure's height in inches (its width is 9): at most FIG_HEIGHT, and for a wide view just
-#: what two panels of about PANEL_WIDTH inches and their titles (TITLES_HEIGHT) need.
-FIG_HEIGHT, MIN_FIG_HEIGHT, TITLES_HEIGHT, PANEL_WIDTH = 4.4, 2.2, 1.0, 4.1
+#: what two panels of about PANEL_WIDTH inches, their titles and ticks (TITLES_HEIGHT) need.
+FIG_HEIGHT, MIN_FIG_HEIGHT, TITLES_HEIGHT, PANEL_WIDTH = 4.6, 2.4, 1.5, 4.1
+
+
+#: The key's words for :func:`window_ticks`' numbers.
+TICKS_KEY = "ticks: the image's rows (left) and columns (below)"
+
+
+def window_ticks(ax, r0: int, r1: int, c0: int, c1: int, *, dr: int = 0, dc: int = 0) -> None:
+    """Tick the rows r0:r1 and columns c0:c1 a panel shows with the image's own row and column
+    numbers, on the pixel centres: every pixel a minor tick, every one or two a number.
+    ``dr``, ``dc``: what to add to a panel's own coordinates to get the image's (a panel of
+    copies is drawn from its box's corner). The picker's text names pixels of the whole image,
+    and a cut-out view counted from its corner found the wrong one (review r227 FIG-1)."""
+    # numbers only, no "row" and "column" under them: a label under a panel of equal aspect
+    # fell off the figure's bottom (the constrained layout left too little room for it)
+    for axis, lo, hi, shift in ((ax.xaxis, c0, c1, dc), (ax.yaxis, r0, r1, dr)):
+        step = 1 if hi - lo <= 8 else 2
+        first = lo + (-(lo + shift)) % step  # the numbers at multiples of the step
+        every = np.arange(first, hi)[::step]
+        axis.set_ticks(every + 0.5, labels=[str(k + shift) for k in every], fontsize="small")
+        axis.set_ticks(np.arange(lo, hi) + 0.5, minor=True)
 
 
 def view_box(triangles, shape, *masks) -> tuple[int, int, int, int, bool, bool]:
@@ -392,24 +440,32 @@ def screen_cases() -> list[str]:
 
 
 class CasePicker:
-    """Choose a hard case and a fill method; see who owns each pixel, and what naive code does.
+    """Choose a hard case and a naive rule; see who owns each pixel, and what naive code does.
 
     Parameters
     ----------
     case : str
         Starting case (one of :func:`screen_cases`).
-    method : {"halfplane", "span"}
+    rule : str
+        The right panel's naive rasteriser, one of :data:`RULES`: :data:`CASE_NAIVE` (the
+        case's own naive version) or a rule of :data:`~teachraster.study.hardcases.NAIVE_RULES`.
     backend : {"auto", "ipympl", "image"}
     style : str, optional
 
     Attributes
     ----------
     widget : ipywidgets.VBox
-    case, method : Dropdown, ToggleButtons
+    case, rule : Dropdown, ToggleButtons
     owner : (H, W) int
-        :func:`owner_image` of our fill (what the left panel shows).
+        :func:`owner_image` of our fill (half-planes; what the left panel shows).
     naive_counts : (H, W) int or None
-        The naive implementation's coverage counts (right panel), if the case has them.
+        The naive rasteriser's coverage counts (right panel), if there are any (a case without
+        a naive version has none under :data:`CASE_NAIVE`).
+    naive_says : str
+        What the naive rasteriser shown does, in words.
+    methods_differ : int
+        Pixels whose owner span tables would decide otherwise than half-planes: 0 in every case,
+        as the conventions require (said in the text, not a picture of its own).
     passed : bool
         Whether our result passes the case's check.
     offsets : list of (dx, dy) or None
@@ -434,42 +490,51 @@ class CasePicker:
     >>> picker.case.value = "fan_spokes_through_centres"
     >>> int(picker.owner.max())
     15
+    >>> picker.rule.value = "E > 0"   # strict: the spokes' centres drawn by no triangle
+    >>> int(picker.naive_counts.max()), int((picker.naive_counts == 0).sum()) > 300
+    (1, True)
     >>> picker.close()
     """
 
     #: ``teachraster html``: the offline page steps through every hard case (:mod:`.offline`)
     _offline_sweep_ = "case"
 
-    def __init__(self, case: str = "fan_spokes_through_centres", method: str = "halfplane", *,
+    def __init__(self, case: str = "fan_spokes_through_centres", rule: str = CASE_NAIVE, *,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         names = screen_cases()
         if case not in names:
             raise ValueError(f"case must be one of the screen-space cases {names}, got {case!r}")
+        if rule not in RULES:
+            raise ValueError(f"rule must be one of {list(RULES)}, got {rule!r}")
         self.backend = resolve_backend(backend)
         self.case = widgets.Dropdown(options=names, value=case, description="case",
                                      layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
-        self.method = widgets.ToggleButtons(options=hardcases.FILL_METHODS, value=method)
+        # the naive rule, not the fill method: span tables and half-planes give the same
+        # pixels, so a method toggle changed nothing on screen (review r227 W-1); a rule does
+        self.rule = widgets.ToggleButtons(options=RULES, value=rule)
+        self.rule.style.button_width = "auto"
         self._style = style
         self._new_figure()
         self._run()
         self._draw()
-        self._places: dict = {}  # (case, method) -> where the layout put the axes and title
+        self._places: dict = {}  # (case, rule) -> where the layout put the axes and title
         self._lay_out()
         self.display = FigureDisplay(self.fig, self.backend)
         self.info = widgets.HTML(self._info_html())
-        #: pictures of other cases and methods drawn while the kernel idles (image display
+        #: pictures of other cases and rules drawn while the kernel idles (image display
         #: only), from the first change on: a lesson run without a page draws none
         self._ahead = PicturesAhead(self._draw_elsewhere) if self.backend == "image" else None
-        for control in (self.case, self.method):
+        for control in (self.case, self.rule):
             control.observe(lambda change: self.update(), "value")
         title = title_html(
             "Hard cases: who owns each pixel?",
             "Left: our fill, each pixel in the colour of the triangle that covers it. Right: "
-            "what a naive rasteriser covers. The key is under the case's text. The method "
-            "fills with span tables or half-planes: both give the same pixels (the line under "
-            "the verdict checks it for each case).",
+            "what a naive rasteriser covers: the case's own naive version, or the rule you "
+            "pick, applied to the case (E ≥ 0 or E > 0: no tie rule; whole px: vertices "
+            "rounded to whole pixels; one winding: no re-orientation). The ticks number the "
+            "image's rows and columns; the key is under the case's text.",
         )
-        controls = control_row([self.case, labelled("method", self.method)])
+        controls = control_row([self.case, labelled("naive", self.rule)])
         self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
 
     def _new_figure(self) -> None:
@@ -477,18 +542,23 @@ class CasePicker:
             self.fig = new_figure((9.0, FIG_HEIGHT), self.backend)  # fits the notebook column
             self.fig.set_layout_engine("constrained")
             self.axes = self.fig.subplots(1, 2)
+            for ax in self.axes:
+                # each panel at the bottom of its box: the layout reserves the room for the
+                # ticks under the box, and a panel of equal aspect centred higher up in it
+                # left too little (its column numbers fell off the figure's bottom)
+                ax.set_anchor("S")
 
     def _draw_elsewhere(self, key) -> tuple:
-        """``(png, caption, state)`` of case and method ``key``, drawn on a figure of its own
+        """``(png, caption, state)`` of case and rule ``key``, drawn on a figure of its own
         (a second picker's, made as this one's and kept for the next): the picture this
         picker draws there (:class:`~teachraster.widgets.ahead.PicturesAhead`)."""
         other = getattr(self, "_elsewhere", None)
         if other is None:
             other = self._elsewhere = object.__new__(CasePicker)
             other.backend, other._style, other._places = "image", self._style, self._places
-            other.case, other.method = SimpleNamespace(value=None), SimpleNamespace(value=None)
+            other.case, other.rule = SimpleNamespace(value=None), SimpleNamespace(value=None)
             other._new_figure()
-        other.case.value, other.method.value = key
+        other.case.value, other.rule.value = key
         other._run()
         other._draw()
         other._lay_out()
@@ -499,7 +569,7 @@ class CasePicker:
     def _run(self) -> None:
         c = hardcases.get_case(self.case.value)
         self._case = c
-        result = c.run(self.method.value)
+        result = c.run(c.methods[0])  # half-planes; span tables: the same (_methods_differ)
         self.owner = owner_image(result.fills)
         self.colors = owner_colors(self.owner, c.triangles)
         try:
@@ -507,31 +577,53 @@ class CasePicker:
             self.passed, self.failure = True, ""
         except AssertionError as err:
             self.passed, self.failure = False, str(err)
+        self.methods_differ = self._methods_differ(result)
+        masks = self._naive(result)
+        self._copies(result, masks)
+        if self.naive_copies is not None and self.rule.value != CASE_NAIVE:
+            # copies of one triangle overlap by design: what differs is where they disagree
+            n = len(self.offsets)
+            k = int(((self.naive_copies > 0) & (self.naive_copies < n)).sum())
+            self.difference = (f"naive: the {n} copies, each moved back onto the first, "
+                               f"disagree at {k} pixel(s); ours at none")  # fmt: skip
+
+    def _naive(self, result) -> list | None:
+        """The right panel's naive rasteriser on this case: its counts, what it filled, what
+        it does in words and how it differs from ours; returns its per-triangle coverage
+        where it has one (for copies of one triangle), else None."""
+        c, rule = self._case, self.rule.value
+        if rule != CASE_NAIVE:
+            w, h = c.inputs["size"]
+            masks, filled = hardcases.naive_rule_masks(c.triangles, w, h, rule)
+            self.naive_counts = np.sum(masks, axis=0, dtype=np.int64)
+            self.naive_triangles = None if filled is c.triangles else filled
+            self.naive_says = f"{rule}: {hardcases.NAIVE_RULES[rule][0]}"
+            self.difference = counts_difference(result.counts, self.naive_counts)
+            return masks
         naive = c.naive() if c.has_naive else None
         self.naive_counts = None if naive is None else naive.counts
         # the triangles the naive version fills, where they are not the case's (rounded ones)
         self.naive_triangles = ((naive.values or {}).get("triangles") if naive is not None
                                 else None)  # fmt: skip
+        self.naive_says = c.naive_does
         diff = c.naive_difference(result, naive) if naive is not None else None
         self.difference = diff or ""
-        self.methods_differ = self._methods_differ(result)
-        self._copies(result, naive)
+        return None if naive is None else (naive.values or {}).get("coverage")
 
     def _methods_differ(self, result) -> int:
-        """Pixels whose owner the other fill methods would decide otherwise: 0 for every case
-        (the conventions require it), said under the verdict so that the method toggle, which
-        changes nothing else on screen, is seen to check it (review r145, 07-15). Run once a
-        case (:data:`_METHODS_DIFFER`): the toggle's picture costs no second fill."""
+        """Pixels whose owner span tables would decide otherwise than half-planes: 0 for every
+        case (the conventions require it), said under the verdict (review r145, 07-15). Run
+        once a case (:data:`_METHODS_DIFFER`): a rule's picture costs no second fill."""
         name = self._case.name
         if name not in _METHODS_DIFFER:
             differ = np.zeros(self.owner.shape, dtype=bool)
-            for method in self._case.methods:
-                if method != self.method.value and method in hardcases.FILL_METHODS:
+            for method in self._case.methods[1:]:
+                if method in hardcases.FILL_METHODS:
                     differ |= owner_image(self._case.run(method).fills) != self.owner
             _METHODS_DIFFER[name] = int(differ.sum())
         return _METHODS_DIFFER[name]
 
-    def _copies(self, result, naive) -> None:
+    def _copies(self, result, masks) -> None:
         # Separate copies of one triangle (not a mesh): every copy moved back onto the first.
         self.offsets = copy_offsets(self._case.triangles)
         self.copies = self.naive_copies = None
@@ -539,7 +631,6 @@ class CasePicker:
             return
         self._box = copies_box(self._case.triangles[0], self.owner.shape)
         self.copies = aligned_counts([f.coverage for f in result.fills], self.offsets, self._box)
-        masks = None if naive is None else (naive.values or {}).get("coverage")
         if masks is not None and len(masks) == len(self.offsets):
             self.naive_copies = aligned_counts(masks, self.offsets, self._box)
 
@@ -549,9 +640,9 @@ class CasePicker:
                 ax.clear()
             tris = self._case.triangles
             self.hubs, self.view = [], None
-            # the case and the method above both panels; short two-line titles under it, so
+            # the case and the rule above both panels; short two-line titles under it, so
             # that the two panels' titles never run into each other
-            self.fig.suptitle(f"{self.case.value}, {self.method.value} fill")
+            self.fig.suptitle(f"{self.case.value}, naive: {self.rule.value}")
             if self.copies is not None:
                 self._fit_height(None, None)
                 self._draw_copies()
@@ -564,11 +655,11 @@ class CasePicker:
             r0, r1, c0, c1, cut_rows, cut_cols = view_box(tris, self.owner.shape, *shown)
             h, w = self.owner.shape
             if cut_rows:  # a corner of a large case: say which, and of what, on a line of its own
-                self.fig.suptitle(f"{self.case.value}, {self.method.value} fill\nrows "
+                self.fig.suptitle(f"{self.case.value}, naive: {self.rule.value}\nrows "
                                   f"{r0}–{r1 - 1}, columns {c0}–{c1 - 1} of {h} × {w}")  # fmt: skip
             elif cut_cols:
-                self.fig.suptitle(f"{self.case.value}, {self.method.value} fill: columns "
-                                  f"{c0}–{c1 - 1} of {w}")  # fmt: skip
+                self.fig.suptitle(f"{self.case.value}, naive: {self.rule.value} (columns "
+                                  f"{c0}–{c1 - 1} of {w})")  # fmt: skip
             self.view = (r0, r1, c0, c1)
             self._fit_height(r1 - r0, c1 - c0)
             # a corner cut from a large case (the diagonal sliver) keeps the thin outlines of
@@ -585,7 +676,7 @@ class CasePicker:
             if self.naive_counts is None:
                 h, w = self.owner.shape
                 plot_pixel_grid(ax, w, h, ticks=False)
-                ax.set_title("naive:\nno coverage for this case")
+                ax.set_title("naive:\nno version for this case")
             else:
                 n = self.naive_counts
                 plot_pixel_grid(ax, n.shape[1], n.shape[0], ticks=False)
@@ -597,7 +688,8 @@ class CasePicker:
                 for xy in shown_tris:
                     outline(ax, xy, thin=thin, tiny=tiny)
                 centres_on_top(ax, n.shape[1], n.shape[0], n > 0)
-                ax.set_title(f"naive:\n{int((n > 0).sum())} px, max {int(n.max())} hit(s)")
+                ax.set_title(f"naive:\n{int((n > 0).sum())} px"
+                             + (f", up to {int(n.max())} hits" if n.max() > 1 else ""))  # fmt: skip
             # a centre at a vertex of many triangles (the fan's hub) on top of their outlines
             self.hubs = shared_vertex_pixels(tris, self.owner.shape)
             for rc in self.hubs:
@@ -609,6 +701,7 @@ class CasePicker:
                     )
             for a in self.axes:
                 a.set(xlim=(c0, c1), ylim=(r1, r0))
+                window_ticks(a, r0, r1, c0, c1)
 
     def _fit_height(self, rows, cols) -> None:
         """The figure as high as the view needs: a view 3 times as wide as high (the sliver
@@ -627,21 +720,23 @@ class CasePicker:
         differ = plot_copies(self.axes[0], self.copies, n, first, self._box)
         self.axes[0].set_title(f"ours, {n} copies:\n{differ} px differ")
         ax = self.axes[1]
+        r0, r1, c0, c1 = self._box
         if self.naive_copies is None:
-            r0, r1, c0, c1 = self._box
             plot_pixel_grid(ax, c1 - c0, r1 - r0, ticks=False)
-            ax.set_title("naive:\nno coverage for this case")
+            ax.set_title("naive:\nno per-copy coverage")
         else:
             differ = plot_copies(ax, self.naive_copies, n, first, self._box)
-            ax.set_title(f"naive, {n} copies:\n{differ} px differ")
+            ax.set_title(f"naive, {n} copies:\n{differ} px differ")  # its rule: above
+        for a in self.axes:  # the box's own pixels, numbered as the first copy's in the image
+            window_ticks(a, 0, r1 - r0, 0, c1 - c0, dr=r0, dc=c0)
 
     def _lay_out(self) -> None:
-        """Place the two axes as the constrained layout does for this case and method, solved
+        """Place the two axes as the constrained layout does for this case and rule, solved
         once for each (their grid, ticks and titles set the layout): the solver cost about
         half of each picture (issue 31: 402 ms a control)."""
         # the layout also places the figure's title (matplotlib keeps it in _suptitle)
         title = getattr(self.fig, "_suptitle", None)
-        key = (self.case.value, self.method.value)
+        key = (self.case.value, self.rule.value)
         place = self._places.get(key)
         if place is None:
             for ax in self.axes:
@@ -665,9 +760,9 @@ class CasePicker:
             title.set_position(place[-1])
 
     def update(self) -> None:
-        """Run the chosen case with the chosen method and redraw (a picture drawn ahead for
+        """Run the chosen case with the chosen rule and redraw (a picture drawn ahead for
         them: shown at once)."""
-        key = (self.case.value, self.method.value)
+        key = (self.case.value, self.rule.value)
         kept = None if self._ahead is None else self._ahead.take(key)
         if kept is not None:
             show_kept(self, kept)
@@ -681,11 +776,12 @@ class CasePicker:
                 state = {k: v for k, v in vars(self).items() if k in PICTURE_STATE}
                 self._ahead.keep(key, (self.display.widget.value, self.info.value, state))
         if self._ahead is not None:
-            # the likeliest next choices: the other method here, the cases either side
-            names, others = list(self.case.options), list(self.method.options)
-            i = names.index(key[0])
+            # the likeliest next choices: the rules either side here, the cases either side
+            names, rules = list(self.case.options), list(self.rule.options)
+            i, k = names.index(key[0]), rules.index(key[1])
             near = [names[j] for j in (i + 1, i - 1) if 0 <= j < len(names)]
-            keys = [(key[0], m) for m in others] + [(n, key[1]) for n in near]
+            beside = [rules[j] for j in (k + 1, k - 1) if 0 <= j < len(rules)]
+            keys = [(key[0], r) for r in beside] + [(n, key[1]) for n in near]
             self._ahead.want([k for k in keys if k != key])
 
     def _info_html(self) -> str:
@@ -694,8 +790,8 @@ class CasePicker:
                    else f"<b style='color:#D55E00'>FAILS</b>: {html.escape(self.failure)}")  # fmt: skip
         lines = [f"<b>why</b>: {html.escape(c.why)}", f"<b>must</b>: {html.escape(c.expect)}",
                  f"ours: {verdict}", self._methods_html()]  # fmt: skip
-        if c.naive_does:
-            lines.append(f"<b>naive</b>: {html.escape(c.naive_does)}")
+        if self.naive_says:
+            lines.append(f"<b>naive</b>: {html.escape(self.naive_says)}")
         if self.difference:
             lines.append(f"→ {html.escape(self.difference)}")
         lines.append(self._key_html())
@@ -708,8 +804,7 @@ class CasePicker:
         if len(others) < 2:
             return f"fill method: {names} only for this case"
         if not self.methods_differ:
-            return (f"{names}: the same pixels, the same owners (the toggle changes only the "
-                    "method's name here)")  # fmt: skip
+            return "ours by half-planes and by span tables: the same pixels, the same owners"
         return (f"<b style='color:#D55E00'>{names} differ at {self.methods_differ} "
                 "pixel(s)</b>")  # fmt: skip
 
@@ -723,7 +818,7 @@ class CasePicker:
             return (f"<b>key</b>: separate copies of one triangle (not a mesh), each moved back "
                     f"onto the first: {swatch(EVERY_COPY, 'covered by every copy')}, "
                     f"{swatch(SOME_COPIES, 'by only some (the copies disagree)')}; "
-                    + self._marks_html())  # fmt: skip
+                    + self._marks_html() + f"; {TICKS_KEY} (the first copy's)")  # fmt: skip
         # triangles numbered from 1, as in the lesson's text (review r119 07-B)
         # name only what the panels draw (review r8, lesson 07: a one-triangle case listed
         # three owner colours and a class of pixels covered twice that neither panel showed)
@@ -762,7 +857,7 @@ class CasePicker:
         if twice:
             where = "both" if len(twice) == 2 else twice[0]
             parts.append(f"{where}, {swatch(COLORS['outside'], 'covered twice or more')}")
-        key = "<b>key</b>: " + "; ".join(parts + [self._marks_html()])
+        key = "<b>key</b>: " + "; ".join(parts + [self._marks_html(), TICKS_KEY])
         for i, j in self.hubs:
             owner = int(self.owner[i, j])
             who = (

@@ -50,10 +50,12 @@ from .case import (
 from .clip_space_cases import DepthResult, perspective_errors
 from .line_cases import LINE_CASES, LineCase, LineResult, get_line_case, list_line_cases
 from .naive import (
+    NAIVE_RULES,
     naive_affine,
     naive_counts,
     naive_coverage,
     naive_perspective32,
+    naive_rule_masks,
     naive_stepped32,
     naive_window,
 )
@@ -69,6 +71,7 @@ __all__ = [
     "LINE_CASES",
     "LineCase",
     "LineResult",
+    "NAIVE_RULES",
     "Fills",
     "HardCase",
     "Naive",
@@ -83,6 +86,7 @@ __all__ = [
     "naive_counts",
     "naive_coverage",
     "naive_perspective32",
+    "naive_rule_masks",
     "naive_stepped32",
     "naive_window",
     "perspective_errors",

@@ -23,6 +23,19 @@ from .checks import (
 )
 from .naive import naive_counts, naive_coverage
 
+#: Each split of the square: the diagonal's ends on its right or bottom side (left to the
+#: neighbouring squares, like the rest of those sides), and who gets how many centres. The
+#: \\ split is Direct3D's own example (its *Rasterization Rules* page: triangles (0, 0),
+#: (5, 0), (5, 5) and (0, 5), (0, 0), (5, 5), y down: 15 pixels and 10); / is its mirror image.
+_SPLITS = {
+    "\\": ("the diagonal's lower end (6, 6)",
+           "Direct3D's split-square example: the upper-right triangle gets 15 centres, the "
+           "lower-left 10"),
+    "/": ("both ends of the diagonal ((1, 6) and (6, 1))",
+          "Direct3D's example mirrored: the upper-left triangle gets 15 centres, the "
+          "lower-right 10"),
+}  # fmt: skip
+
 
 def _split_square(name, diagonal):
     lo, hi = 1.5, 6.5
@@ -32,6 +45,14 @@ def _split_square(name, diagonal):
         if diagonal == "\\"
         else triangles_array((tl, tr_, bl), (tr_, br, bl))
     )
+    ends, example = _SPLITS[diagonal]
+
+    def check(inputs, result: Fills) -> None:
+        # the pixels, and who gets how many: the split's 15 and 10 that ``expect`` quotes
+        check_mask(inputs, result)
+        got = tuple(int(f.coverage.sum()) for f in result.fills)
+        assert got == (15, 10), f"centres per triangle {got}, want (15, 10)"
+
     expected = pixel_mask(8, 8, lambda i, j: (i >= 1) & (i <= 5) & (j >= 1) & (j <= 5))
     add_case(
         HardCase(
@@ -39,9 +60,10 @@ def _split_square(name, diagonal):
             f"a square with corners on pixel centres split along its {diagonal} diagonal "
             "(through centres): every edge is a tie",
             "mesh",
-            "exactly the 25 centres (1..5, 1..5) covered, each once: the top and left sides "
-            "and the diagonal's centres go to exactly one triangle, the right and bottom "
-            "sides to none (Direct3D's split-square example)",
+            "exactly the 25 centres (1..5, 1..5) covered, each once. A centre on the right or "
+            "bottom side goes to no triangle of the square (the squares to the right and below "
+            f"own it), {ends} among them; every other centre on the top or left side or on "
+            f"the diagonal goes to exactly one triangle ({example})",
             frozen_inputs(
                 triangles=tris,
                 size=(8, 8),
@@ -49,7 +71,7 @@ def _split_square(name, diagonal):
                 attrs=np.array([[0.0, 1.0, 2.0], [0.0, 2.0, 3.0]]),
             ),  # fmt: skip
             fill_all,
-            check_mask,
+            check,
             "raw floats with E >= 0 (no top-left rule) give the diagonal's centres to both "
             "triangles, and also fill the right and bottom sides",
             naive_mesh("inclusive"),

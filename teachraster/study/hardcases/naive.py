@@ -131,3 +131,33 @@ def naive_perspective32(lam: np.ndarray, w, f) -> np.ndarray:
         q = lam32 / np.asarray(w, dtype=np.float64).astype(np.float32)
         q = q / q.sum(axis=1, keepdims=True)
     return (q.astype(np.float64) @ np.asarray(f, dtype=np.float64)).astype(np.float64)
+
+
+#: Naive rules the lesson 07 picker applies to any screen-space case, each a way a
+#: straightforward rasteriser goes wrong: name -> (what it does, in words; keyword arguments of
+#: :func:`naive_coverage`; whether the vertices are first rounded to whole pixels).
+NAIVE_RULES = {
+    "E ≥ 0": ("raw floats, a centre exactly on an edge inside every triangle that shares the "
+              "edge (no tie rule)", {"rule": "inclusive"}, False),
+    "E > 0": ("raw floats, a centre exactly on an edge inside no triangle (no tie rule)",
+              {"rule": "strict"}, False),
+    "whole px": ("vertices rounded to whole pixels (no sub-pixel bits), then the top-left rule",
+                 {"rule": "top_left"}, True),
+    "one winding": ("no re-orientation: a triangle wound the other way round covers nothing "
+                    "(top-left rule)", {"rule": "top_left", "orient": "none"}, False),
+}  # fmt: skip
+
+
+def naive_rule_masks(triangles, width: int, height: int, rule: str):
+    """Each triangle's coverage under the naive ``rule`` of :data:`NAIVE_RULES`, and the
+    triangles it filled (rounded to whole pixels for ``"whole px"``, else as given).
+
+    >>> tris = [[[0.5, 0.5], [4.5, 0.5], [0.5, 4.5]]]   # edges through 13 centres
+    >>> [int(naive_rule_masks(tris, 5, 5, r)[0][0].sum()) for r in ("E ≥ 0", "E > 0")]
+    [15, 3]
+    """
+    if rule not in NAIVE_RULES:
+        raise ValueError(f"rule must be one of {list(NAIVE_RULES)}, got {rule!r}")
+    _, kwargs, rounded = NAIVE_RULES[rule]
+    filled = np.rint(np.asarray(triangles, dtype=np.float64)) if rounded else triangles
+    return [naive_coverage(xy, width, height, **kwargs) for xy in filled], filled
