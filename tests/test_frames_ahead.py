@@ -469,9 +469,11 @@ def test_divide_cost_explorers_other_measure_drawn_ahead_is_its_picture():
 
     ex = DivideCostExplorer(_rows(), backend="image")
     assert not ex._ahead.todo and not ex._ahead.kept  # nothing before a first change
-    ex.divide.value = 9.0
-    # the other measure here first, then the prices either side
-    assert ex._ahead.todo == [(9.0, "mean error", 2), (12.0, "max error", 2), (8.0, "max error", 2)]
+    ex.divide.value = 10.0
+    # the other measure here first, then the prices either side (the price list unchanged)
+    p5 = "Pentium (P5)"
+    assert ex._ahead.todo == [(10.0, "mean error", 2, p5), (12.0, "max error", 2, p5),
+                              (8.0, "max error", 2, p5)]  # fmt: skip
     ex._ahead.step()
     draws = ex.display.draws
     ex.error.value = "mean error"

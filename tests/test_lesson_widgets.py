@@ -575,16 +575,17 @@ def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
     from widget_examples import _rows
 
     from teachraster.study.bench import FRONT_DEFINITION
-    from teachraster.study.operation_counts import CYCLES_1990S
+    from teachraster.study.operation_counts import GPU_CYCLES, PENTIUM_CYCLES
     from teachraster.widgets.divide_cost import DivideCostExplorer, divide_positions
 
     ex = DivideCostExplorer(_rows(), backend="image")
     try:
-        assert ex.divide.value == CYCLES_1990S["divides"] == 30
-        assert ex.divide.label == "30" and "divide = 30 cycles" in ex.info.value
+        assert ex.divide.value == PENTIUM_CYCLES["divides"] == 17
+        assert ex.divide.label == "17" and "divide = 17 cycles" in ex.info.value
         values = [v for _, v in ex.divide.options]
         assert values == sorted(values) and values[0] == 1 and values[-1] == 128
-        assert {1, 2, 9, 30, 128} <= set(values)  # the prices lesson 06 prints
+        assert {1, 2, 4, 17, 30, 40, 128} <= set(values)  # the prices lesson 06 prints
+        assert GPU_CYCLES["divides"] in values
         # the subtitle defines the front in the words of the rule the chart applies (r6, 06-1)
         assert FRONT_DEFINITION in ex.widget.children[0].value
         ex.divide.value = 1.0  # N = 2 costs more than perspective-correct and is less accurate

@@ -31,11 +31,22 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     # "the printed exponents start near 2 and fall as N grows" (spans end before their N-th pixel)
     ex = ns.exponents
     assert ex[0] > 1.9 and all(a > b for a, b in zip(ex, ex[1:])) and ex[-1] < 1.75, ex
-    # the cycle model puts every subdivided variant at a fraction of the exact divide's cost
-    assert all(r < 0.7 for r in ns.model_ratio.values()) and ns.model_ratio[16] < 0.15
-    cyc = ns.cyc
-    assert cyc["perspective"] > 10 * cyc["affine"]  # "tens of times what affine does"
+    # both price lists put every subdivided variant below the exact divide's cost, the GPU's
+    # closer to it ("subdivision saves less")
+    assert all(r < 1 for r in ns.model_ratio.values()) and ns.model_ratio[16] < 0.2
+    assert all(ns.model_ratio[n] < g < 1 for n, g in ns.gpu_ratio.items())
+    cyc, gpu = ns.cyc, ns.cyc_gpu
+    assert cyc["perspective"] > 10 * cyc["affine"]
     assert cyc["affine"] < cyc["subdivided N=16"] < cyc["perspective"] / 5  # "buys most of it back"
+    # r228 C1: "at the Pentium's prices the divide is most of perspective-correct's cost, at
+    # the GPU's less than half"
+    from teachraster.study import operation_counts as ops
+
+    assert ops.PENTIUM_CYCLES["divides"] / cyc["perspective"] > 0.5
+    assert ops.GPU_CYCLES["divides"] / gpu["perspective"] < 0.5
+    assert "divide is most of perspective-correct's cost, at the GPU's less than half" in (
+        " ".join(ns.TIME_TEXT.split())
+    )
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
     # "off by most of the texture" (review r7 06-3: not "hundreds" above a printed 209)
     from teachraster.study.bench import TEXELS
@@ -108,13 +119,15 @@ def test_06_review_r60_figures_say_what_they_draw():
     assert "What a GPU pays today" not in md and "Maxwell (2014)" in md and "Kepler (2012)" in md
     # r80 D2: Pascal to Turing added from the guide's table (CUDA 10 edition); 8.x and later
     # unchecked, so not quoted; "a sixth on Kepler, a quarter on the rest" is what it prints
-    assert list(ns.RECIPROCAL_RATE) == ["Kepler (3.x, 2012)", "Maxwell (5.x, 2014)",
-                                        "Pascal GP100 (6.0, 2016)", "Pascal (6.1, 2016)",
-                                        "Volta, Turing (7.x, 2017-18)"]  # fmt: skip
-    rates = [fma / rcp for fma, rcp in ns.RECIPROCAL_RATE.values()]
+    from teachraster.study.operation_counts import NVIDIA_RATES
+
+    assert list(NVIDIA_RATES) == ["Kepler (3.x, 2012)", "Maxwell (5.x, 2014)",
+                                  "Pascal GP100 (6.0, 2016)", "Pascal (6.1, 2016)",
+                                  "Volta, Turing (7.x, 2017-18)"]  # fmt: skip
+    rates = [fma / rcp for fma, rcp in NVIDIA_RATES.values()]
     assert rates == [6, 4, 4, 4, 4] and "Pascal (2016) and Volta and Turing (2017–18)" in md
     assert "the rows of Ampere and later are not quoted here" in md
-    assert not any(k.startswith(("Ampere", "Ada", "Hopper")) for k in ns.RECIPROCAL_RATE)
+    assert not any(k.startswith(("Ampere", "Ada", "Hopper")) for k in NVIDIA_RATES)
     # r102 06-2: the checkerboard's vermillion marks have a key in the figure itself
     checker = next(
         "".join(c["source"]) for c in nb["cells"] if "def draw_checks(" in "".join(c["source"])
@@ -133,7 +146,6 @@ def test_06_edge_table_gaps_and_incremental_lists():
     edges = [r for r in ns.rows if r["group"] == "edge functions"]
     # "the gaps and double columns of the edge-function table are 0 in every row"
     assert all(r["gaps"] == 0 and r["double_hits"] == 0 for r in edges)
-    assert set(ns.incremental_ratio) == {"fixed8", "fixed4", "float64", "float32", "unsnapped"}
     # the edge chart's front is one point (no step line): cheapest and exact
     from teachraster.study import bench
 
@@ -168,6 +180,9 @@ def test_06_edge_bits_and_depth_claims():
     depth_rows = [r for r in ns.rows if r["group"] == "depth"]
     front = [r["variant"] for r in bench.pareto_front(depth_rows, x="bits")]
     assert not any(v.startswith("linear") for v in front)
+    # r228 M1: reverse-Z in float32 gets every pixel right, in the same 32 bits
+    rev = rows[("depth", "reversed float32")]
+    assert rev["facing_wrong"] == rev["slanted_wrong"] == 0 and rev["stored_bits"] == 32
     # "window float32 and window unorm24 get exactly the same pixels wrong": the same step near 1;
     # review r25 06-2: the two wrong-pixel masks, by bench_depth's recipe, printed and equal
     assert ns.same_wrong and ns.wrong_at["float32"].any()
@@ -182,7 +197,7 @@ def test_06_edge_bits_and_depth_claims():
     # review r53 06-1: unorm24 occupies 32 bits (stencil or padding in the spare 8), as the
     # lesson's table of formats says: it ties window float32 on both axes, one point
     stored_front = [r["variant"] for r in bench.pareto_front(depth_rows, x="stored_bits")]
-    assert stored_front == ["window unorm16", "window float32", "window float64"]
+    assert stored_front == ["window unorm16", "reversed float32"]
     assert {r["variant"].split()[1]: r["stored_bits"] for r in depth_rows} == {
         "float64": 64,
         "float32": 32,
@@ -214,7 +229,7 @@ def test_06_edge_bits_and_depth_claims():
     # fixed-point loop, which keeps the remainder; the last sentence parses (no "tie rule")
     assert "and in fixed point too" not in ns.FILL_TEXT
     # r142 C1: lesson 01 calls it an integer DDA (quotient and remainder), not fixed point
-    assert "lesson 01's integer DDA is exact because it also keeps the remainder" in " ".join(
+    assert "Lesson 01's integer DDA is exact because it also keeps the remainder" in " ".join(
         ns.FILL_TEXT.split()
     )
     assert "fixed-point loop" not in ns.FILL_TEXT
@@ -234,17 +249,18 @@ def test_06_has_no_appendix_and_says_the_time_signs_once():
     """Review r146 12: appendices A (the cast), B (numpy's times) and C (stepping's drift) are
     gone: the cast is a sentence of the summary, the times are measured by the signs
     benchmark, the drift is a test (tests/test_lesson06_stepping_drift.py) and a sentence of
-    §2. The reasons for the time signs stand once, where the signs are printed."""
+    §2. r228 S1: what the time measures is said once, held with the table that prints it."""
     import json
 
+    ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     assert not any(c.startswith("## Appendix") for c in cells)
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
                            if raw["cell_type"] == "markdown").split())  # fmt: skip
-    assert md.count("a division by the piece's length") == 1
-    assert md.count('the line "subdivided slower than the exact divide at every N') == 1
-    assert "appendix" not in md.lower()
+    assert "a division by the piece's length" not in md
+    assert " ".join(ns.TIME_TEXT.split()).count("a division by the piece's length") == 1
+    assert "prints True when" not in md and "appendix" not in md.lower()
     # r152: the cast (old appendix A) stood only in the summary, with nothing behind it: gone
     assert "`fistp`" not in md
     # r152 C1/C2: set-up makes every variant dearer (it shrinks the divide's share); errors at
@@ -279,77 +295,58 @@ def test_06_every_gap_and_double_is_drawn_above_the_mesh():
 
 def test_06_reads_its_times_by_what_the_timer_includes():
     """Review r17 06-1..8, r20 06-1..4: the text says what numpy's timers include and states
-    only what is stable across runs (its signs, measured in CPU time by
-    benchmarks/bench_lesson06_signs.py: a benchmark, not a test); every table
-    prints each time's spread; the fill group times coverage alone beside the textured fill."""
+    no sign of a time (the signs are measured by benchmarks/bench_lesson06_signs.py: a
+    benchmark, not a test). r228 S1: the measured time stays (the course shows what accuracy
+    costs in time) as one column per table beside the two price lists, said plainly to time
+    this simulator on a CPU; the lines of time ratios read as findings, the booleans and the
+    paragraph on array passes are gone. S6: what reads those columns is held with them."""
     import json
+
+    from notebook_runs import executed
+
+    from teachraster.study import bench
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
-    md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
-                           if c["cell_type"] == "markdown").split())  # fmt: skip
-    code = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
-    # 06-1: no Python loop per row; the timer's uv is said (review r25 06-3: the span fill's
-    # numpy passes, simulator internals, are no longer explained)
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    code = "".join(c for c, raw in zip(cells, nb["cells"]) if raw["cell_type"] == "code")
     assert "span loop in Python" not in md and "core/span_tables.py" not in md
-    # review r135 06-3, r146 12: the text reads no ratio of fill times as a fact about the
-    # algorithms; r197 S1: nor mentions the textured fill's times at all
     assert "*textured* fill" not in md and "ratio's side of 1" not in md
-    assert "bench_lesson06_signs.py" in md
-    # r20 06-1..4: the times the signs rest on are the kernel's CPU time, fastest of interleaved
-    # rounds (waiting for a core not counted), and the text says so
-    assert "clock=time.process_time" in code and "ratio(" in code
-    assert "CPU time" in md and "waiting for a core" in md and "fastest of five rounds" in md
-    assert "ROUNDS = 5" in code  # "five" in the text
-    # 06-2, 06-3: the stable signs, not "not reliably" / "whatever this run measured"
-    assert "not reliably" not in md and "whatever this run measured" not in md
-    # r80 D3: the text states no sign of a time; the lesson prints each verdict of this run,
-    # in the words of bench_lesson06_signs.py's claims; r152 06-10: the text says when each
-    # line prints True (not "the line ... says whether", a sentence written for True)
-    assert "In numpy stepping is the *slower* one" not in md
-    assert "subdivision is *slower* than the exact divide" not in md
-    for verdict in ("subdivided slower than the exact divide at every N",
-                    "affine faster than perspective-correct, but above half its time",
-                    "incremental edges slower than direct in every arithmetic"):  # fmt: skip
-        assert f'the line "{verdict}' in " ".join(md.split()).replace('"\n', '"'), verdict
-        assert f"{verdict}: {{" in code, verdict
-    assert ns.subdivided_slower == all(v > 1 for v in ns.time_ratio.values())
-    assert ns.incremental_slower == all(v > 1 for v in ns.incremental_ratio.values())
-    assert ns.affine_above_half == (0.5 < ns.affine_time < 1)
-    assert "says whether" not in md and md.count("prints True when") == 3
-    assert "coverage included" in md
-    # affine "times nowhere near the model's twentieth of perspective-correct" (its time's
-    # side of 1 is not claimed: near 1, r20 06 run D printed 1.12; the bench measures "nowhere near")
-    assert ns.cyc["perspective"] / ns.cyc["affine"] == 19.5  # u and v priced (r48 06-D1)
-    assert "affine → perspective-correct alone" not in md
-    # r60 06-2: seven runs gave 0.77..0.86, never a flip: affine faster, by far less than the
-    # model says (the signs benchmark checks "faster, but above half its time")
-    assert "a little faster in some runs" not in md and "does not claim" not in md
-    assert "Affine is faster in numpy, but by far less than the model says" not in md  # r80 D3
-    # r60 06-3: only §1 and §2 print a time line (r128 06-5: §4's fill times, incoherent on
-    # a busy machine, moved to appendix B; §4 prints cycle ratios only)
-    # r197 minor: §1 prints its times in four lines, not "in a line each"
-    assert "in a line each" not in md and "only §1 and §2 print its times" in md
-    # r146 2: the command the lesson names reads the fastest round, as the lesson does
-    assert "--repeat 5 --cpu" not in md
+    # the times are the kernel's CPU time, the fastest of interleaved rounds, and the held text
+    # under the table says so, and what they time: the simulator, not a GPU or a Pentium
+    assert "clock=time.process_time" in code and "ROUNDS = 5" in code and "ratio(" in code
+    said = " ".join(ns.TIME_TEXT.split())
+    assert "times **this simulator, not a rasteriser**" in said
+    assert "on the computer running this notebook" in said and "coverage included" in said
     assert (
-        "the fastest of five rounds (waiting for a core is not counted; "
+        "(the fastest of five rounds, waiting for a core not counted; "
         "`python ../benchmarks/bench_lesson06_signs.py` measures the same way"
-    ) in md
-    # r37 06-5: one paragraph of §1 reads the time columns; the others no longer repeat it
-    assert "time says nothing: the eight times differ by noise" not in md
+    ) in said
+    assert "The `Pentium` and `GPU` columns are what each machine pays per pixel" in said
+    at = next(i for i, c in enumerate(cells) if "TIME_TEXT = (" in c)
+    assert cells[at].startswith("q_quake.hold()") and "display(Markdown(TIME_TEXT))" in cells[at]
+    # nothing visible reads the held lines or states a sign of a time (r228 S6)
+    for gone in ("prints True when", "subdivided slower than the exact divide",
+                 "The times measure the simulator", "incremental edges slower", "says whether"):  # fmt: skip
+        assert gone not in md and gone not in code, gone
+    assert "only §1 and §2 print its times" not in md and "§1 and §2 print that time" in md
+    # the time beside both prices, in the tables of §1 and §2
+    run = executed("06_what_accuracy_costs").notebook().cells
+    shown = ["".join(o.get("data", {}).get("text/html", "")) for c in run if c.cell_type == "code"
+             for o in c.outputs]  # fmt: skip
+    for heading in ("interpolation, operations per pixel", "edge functions, operations per pixel"):
+        (html,) = [h for h in shown if heading in h]
+        assert all(f"<th>{h}</th>" in html for h in ("Pentium", "GPU", "numpy ms")), heading
+    assert set(ns.time_ratio) == set(bench.SUBDIVISIONS)
     # 06-5, 06-6: N is the subdivision length only; the ratio printed is for N doubling
     assert "N(x)/D(x)" not in md + code and "P(x)/Q(x)" in code  # in QUAKE_TEXT (r128 06-1)
     assert "when N halves:" not in code and "mean error at N / at N/2" in code
-    # 06-7 (r17, r19): the Try it asks nothing the lesson printed above it (r19: "N = 16 costs
-    # half?" was printed by the slider's cell): it sends the student to the full study and to
-    # the CPU-time benchmark of the same signs
+    # 06-7 (r17, r19): the Try it asks nothing the lesson printed above it
     assert "explain why the front keeps its order" not in md and "costs half of what" not in md
-    assert "bench_lesson06_signs.py" in md and all(ns.quake_share[d] < 0.5 for d in ns.quake_share)
-    # r19: subdivided's per-pixel division is said (r20: the timer is CPU time, above)
-    assert "a division by the piece's length" in md
-    # r17 cell 23: why linear depth's crossing is a vertical line
-    # (r48 06-D3: now held with the figure, in cell 33's code, as q_depth's answer)
+    assert all(ns.quake_share[d] < 0.5 for d in ns.quake_share)
+    # r17 cell 23: why linear depth's crossing is a vertical line (held with the figure)
     assert "reaches the facing triangle's depth on one vertical line" in ns.CROSSING_TEXT
 
 
@@ -357,33 +354,42 @@ def test_06_divide_cost_slider_reprices_the_front():
     import json
 
     from teachraster.study.bench import SUBDIVISIONS
-    from teachraster.study.operation_counts import CYCLES_1990S
+    from teachraster.study.operation_counts import GPU_CYCLES, PENTIUM_CYCLES
     from teachraster.widgets.divide_cost import DivideCostExplorer, priced
 
     ns = lesson("06_what_accuracy_costs")
+    d_p5 = int(PENTIUM_CYCLES["divides"])
     ex = DivideCostExplorer(ns.interp_rows, backend="image")  # as the lesson makes it
     try:
-        # review r5 06-2: the slider starts at the model the lesson prints (30, not 32 = 2^5),
-        # and its line says what the cell after it prints at 30 cycles
-        assert ex.divide.value == CYCLES_1990S["divides"] == 30 in ns.front_at
-        at30 = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 30.0)}
-        assert f"<b>{at30['perspective'] / at30['affine']:.3g}×</b>" in ex.info.value
-        assert f"<b>{ns.quake_share[30]:.0%}</b>" in ex.info.value
+        # review r5 06-2: the slider starts at the prices the lesson prints (r228 F1: the
+        # Pentium's, 17), and its line says what the cell after it prints there
+        assert ex.divide.value == d_p5 == 17 and d_p5 in ns.front_at
+        at17 = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d_p5))}
+        assert at17 == {r["variant"]: r["cycles"] for r in ns.interp_rows}  # the tables' prices
+        assert f"<b>{at17['perspective'] / at17['affine']:.3g}×</b>" in ex.info.value
+        assert f"<b>{ns.quake_share[d_p5]:.0%}</b>" in ex.info.value
         assert ex.front[0] == "affine" and ex.front[-1] == "perspective"
         cheap = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 1.0)}
         ex.divide.value = 1.0
         assert "subdivided N=2" not in ex.front  # as dear as perspective-correct, and worse
         assert cheap["perspective"] / cheap["affine"] < 10 < ns.cyc["perspective"]
-        assert "5×" in ex.info.value  # (1 + 9) / 2: u and v priced (r48 06-D1)
+        assert "4×" in ex.info.value  # (1 + 7) / 2: u and v priced (r48 06-D1)
         cheap_text = ex.info.value
         ex.divide.value = 128.0  # the slider's top: the headline moves with the price
         assert ex.info.value != cheap_text and "N=16 costs <b>8%</b>" in ex.info.value
-        assert "N=16 costs <b>31%</b>" in cheap_text
+        assert "N=16 costs <b>36%</b>" in cheap_text
         ex.error.value = "mean error"
         assert ex.front[-1] == "perspective"
-        # one unit with the lesson's tables: cycles of the op-count model, not "additions"
+        # one unit with the lesson's tables: issue cycles, not "additions"
         assert "cycles" in ex.info.value and "additions" not in ex.info.value
-        assert ex.ax.get_xlabel() == "cycles per pixel (op-count model)"
+        assert ex.ax.get_xlabel() == "issue cycles per pixel (Pentium prices)"
+        # r228 C1: the GPU's prices are §1's GPU list, the lesson's one GPU model
+        ex.prices.value = "GPU (Maxwell to Turing)"
+        assert ex.divide.value == GPU_CYCLES["divides"] == 4
+        assert ex.ax.get_xlabel() == "issue cycles per pixel (GPU prices)"
+        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 4.0, multiply=1.0)}
+        assert f"<b>{gpu['perspective'] / gpu['affine']:.3g}×</b>" in ex.info.value
+        assert gpu["perspective"] == pytest.approx(ns.cyc_gpu["perspective"])
     finally:
         ex.close()
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -393,38 +399,40 @@ def test_06_divide_cost_slider_reprices_the_front():
     # variants cost more but a smaller share of the exact divide
     shares = [ns.quake_share[d] for d in sorted(ns.quake_share)]
     assert shares == sorted(shares, reverse=True) and shares[0] > 2 * shares[-1]
-    for d in (1, 30, 128):
+    for d in (1, 17, 128):
         c = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
         n_cost = [c[f"subdivided N={n}"] for n in sorted(SUBDIVISIONS)]
         assert n_cost == sorted(n_cost, reverse=True)
     # "the staircase keeps its order at every price; N = 2 leaves only when a divide costs no
-    # more than a multiply" (the closed forms d + 9 and 2 + (d + 17) / N, u and v priced: r48)
+    # more than a multiply and an addition" (the closed forms d + 7 and 2 + (d + 13) / N at
+    # the Pentium's prices, u and v: r48; d + 5 and 2 + (d + 9) / N at the GPU's)
     fronts = ns.front_at
-    assert (ns.p0, ns.a0, ns.s0, ns.d2) == (9, 2, 17, 3)  # printed by the cell, typed in the text
+    assert (ns.p0, ns.a0, ns.s0, ns.d2) == (7, 2, 13, 3)  # printed by the cell, read in the text
+    assert ns.closed["GPU (Maxwell to Turing)"] == (5, 2, 9, 3)
     assert "N=2" not in fronts[1] and fronts[1] == fronts[2]
-    assert fronts[2] == [v for v in fronts[9] if v != "N=2"]
+    assert fronts[2] == [v for v in fronts[4] if v != "N=2"]
     # r10 06-2, c25: the toggle's mean error keeps the front and its order; subdivision's mean
     # is a small fraction of its max, affine's is not
-    assert ns.front_mean == fronts[30]
+    assert ns.front_mean == fronts[d_p5]
     ratio = {v: mx / mean for v, (mx, mean) in ns.err.items() if v in ("affine", "N=16", "N=2")}
     assert ratio["affine"] < 2 and 100 < ratio["N=16"] < ratio["N=2"]
-    assert all(fronts[d] == fronts[9] for d in (9, 30, 128))
-    for d in (1, 9, 128):
+    assert all(fronts[d] == fronts[4] for d in (4, d_p5, 128))
+    for d in (1, 4, 128):
         priced_rows = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
-        assert priced_rows["perspective"] == pytest.approx(d + 9)
+        assert priced_rows["perspective"] == pytest.approx(d + 7)
         for n in (2, 16):
-            assert priced_rows[f"subdivided N={n}"] == pytest.approx(2 + (d + 17) / n)
+            assert priced_rows[f"subdivided N={n}"] == pytest.approx(2 + (d + 13) / n)
     md = "".join(line for c in nb["cells"] if c["cell_type"] == "markdown" for line in c["source"])
     # review r56: the closed forms answer q_price (an order at d = 1), so they are held text now
     held = ns.FRONT_TEXT
-    assert "$d + 9$" in held and "$2 + (d + 17)/N$" in held and "$d \\le 3$" in held
+    assert "$d + 7$" in held and "$2 + (d + 13)/N$" in held and "$d \\le 3$" in held
     assert "$d \\le 3$" not in md and "FRONT_TEXT = (" in next(
         "".join(c["source"])
         for c in nb["cells"]
         if "".join(c["source"]).startswith("q_price.hold()")
     )
-    # q_price: cheapest first at d = 1, N = 2 dearer than the exact divide (d <= 3), the cards
-    # in the question not already in that order
+    # q_price: cheapest first at the GPU's prices with 16 attributes, N = 2 dearer than the
+    # exact divide (d <= 31), the cards in the question not already in that order
     assert ns.price_order == ["affine", "subdivided N=16", "subdivided N=4", "perspective",
                               "subdivided N=2"]  # fmt: skip
     assert ns.price_items != ns.price_order and "answer=price_order" in "".join(
@@ -457,18 +465,19 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     )
     assert "The checkerboard below" not in md and "N = 16's only" not in md
     printed = streams(executed("06_what_accuracy_costs").notebook())
-    # 06-1: the tie, printed in the front and stated in the text
-    assert "'window float32 = window unorm24'" in printed
-    assert "two variants at the same point count once" in md and 'joined by "="' in md
+    # 06-1: the tie, printed and stated in the text (r228 M1: reverse-Z's float32 is on the
+    # front now, the tie off it: the line under the chart compares the two)
+    assert "['window unorm16', 'reversed float32']" in printed
+    assert "two variants at the same point count once and are drawn once" in md
     assert "464 and 464 wrong pixels" in printed
     # 06-2: the cost at the tie, printed and said
     p0, a0, s0, d2 = ns.p0, ns.a0, ns.s0, ns.d2
-    assert d2 + p0 == a0 + (d2 + s0) / 2 == 12
-    assert re.search(r"N=2 off the front when d <= 3 \(at d = 3 both cost 12\)", printed)
+    assert d2 + p0 == a0 + (d2 + s0) / 2 == 10
+    assert re.search(r"N=2 off the front when d <= 3 \(at d = 3 both cost 10\)", printed)
     front = " ".join(ns.FRONT_TEXT.split())
     assert "costs at least as much as the exact divide when" in front
     assert "costs more than it" not in front
-    assert "(the same at $d = 3$, 12 cycles each, more below)" in front
+    assert "(the same at $d = 3$, 10 cycles each, more below)" in front
     price = next(c for c in cells if "q_price = PredictOrder(" in c)
     ask, why = price.split("explain=")
     assert "where N = 2" not in ask and "the point is" not in ask
@@ -505,8 +514,9 @@ def test_06_review_r128_q_quake_held_and_wording():
         assert words not in md, words
     assert next(i for i, c in enumerate(cells) if "q_quake = Predict(" in c) < at
     price = next(c for c in cells if "q_price = PredictOrder(" in c).split("explain=")[0]
-    # r146: at a GPU's price, not a limit case below a multiply's
-    assert "Price a divide as a GPU does" in price and "limit case" not in price
+    # r146: at a GPU's price, not a limit case below a multiply's; r228 C1: §1's GPU list
+    assert "Price the operations as a GPU does, §1's second list" in price
+    assert "limit case" not in price and "ops.GPU_CYCLES" in price
     fill = next(c for c in cells if c.startswith("q_fill.hold()  # its output"))
     assert "ratio(hp, sp" not in fill and "fastest(" not in fill and "in this run" not in fill
     rule = next(c for c in cells if "q_rule = PredictPixels(" in c)
@@ -542,28 +552,31 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     assert "stepped span loop" in ns.FILL_TEXT and "\n\n" in ns.FILL_TEXT  # two paragraphs
     # W1: shuffled, no card in its place at d = 1 or in the d = 30 order
     assert not any(a == b for a, b in zip(ns.price_items, ns.price_order))
-    assert not any(a == b for a, b in zip(ns.price_items, ns.order30))
+    assert not any(a == b for a, b in zip(ns.price_items, ns.order_p5))
     assert sorted(ns.price_items) == sorted(ns.price_order)
     # D1: the held headline says the front shrinks, not that nothing changes; r102 06-1: and
     # agrees with q_price, whose answer reorders the costs: the costs reorder, the front not
     assert ns.FRONT_TEXT.startswith("**Shared by many attributes, the one reciprocal makes")
     assert "never reorder" not in ns.FRONT_TEXT
-    # the order at d = 1 is q_price's (N = 2 after the exact divide), at §1's 30 N = 2 before it
+    # the order at d = 1 is q_price's (N = 2 after the exact divide), at §1's 17 N = 2 before it
     assert ns.order_at[1].index("N=2") > ns.order_at[1].index("perspective")
-    assert ns.order_at[30].index("N=2") < ns.order_at[30].index("perspective")
+    assert ns.order_at[17].index("N=2") < ns.order_at[17].index("perspective")
     assert [v for v in ns.order_at[1] if v in ns.front_at[1]] == ns.front_at[1]
     for d in ns.order_at:  # the front, cheapest first, keeps its order at every price
         assert [v for v in ns.order_at[d] if v in ns.front_at[d]] == ns.front_at[d]
-    # r146: q_price at a GPU's price (12 cycles, four multiplies) with 16 attributes: the
-    # order of d = 1 at k = 2, for the reason a GPU has (the extras grow with k)
-    assert (ns.GPU_DIVIDE, ns.GPU_ATTRIBUTES) == (12, 16)
+    # r146: q_price at a GPU's price with 16 attributes: the order of d = 1 at k = 2, for the
+    # reason a GPU has (the extras grow with k); r228 C1: §1's GPU list (a reciprocal 4, a
+    # multiply and an addition 1: NVIDIA's rates), the one GPU model of the lesson
+    from teachraster.study.operation_counts import GPU_CYCLES
+
+    assert (ns.GPU_DIVIDE, ns.GPU_ATTRIBUTES) == (4, 16) and GPU_CYCLES["multiplies"] == 1
     assert [v.replace("subdivided ", "") for v in ns.price_order] == [
         v for v in ns.order_at[1] if v in ("affine", "N=16", "N=4", "perspective", "N=2")
     ]
     k, d = ns.GPU_ATTRIBUTES, ns.GPU_DIVIDE
-    assert ns.at_gpu["perspective"] == d + 4 * k + 1 and ns.d2_gpu == 2 * k - 1 == 31
+    assert ns.at_gpu["perspective"] == d + 2 * k + 1 and ns.d2_gpu == 2 * k - 1 == 31
     for n in (2, 4, 16):
-        assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(k + (d + 8 * k + 1) / n)
+        assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(k + (d + 4 * k + 1) / n)
     assert "**The front keeps its order.**" not in "".join(cells)
     # q_bits: the cue to E's own bound; r197 P1: lesson 02's count given (it prints it), the
     # widest range asked, not said
@@ -572,7 +585,7 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     assert str(2**ns.fits4) not in question and f"{2**ns.fits4:,}" not in question
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
     try:
-        assert "Grey: off the front." in ex.widget.children[0].value  # F3
+        assert "Grey: off it." in ex.widget.children[0].value  # F3
     finally:
         ex.close()
 
@@ -580,7 +593,9 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
 def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     """Review r118 06-1: the held headline said the front did not change, while its own text
     and the printed fronts had N = 2 off it at d = 1 and 2. It says what the printed "front:"
-    lines show: the same order at every price, N = 2 off at d = 1, 2 and on at 9, 30, 128."""
+    lines show: the same order at every price, N = 2 off at d = 1, 2 and on at 4, 17, 128
+    (r228: the GPU's and the Pentium's divide among them)."""
+    import json
     import re
 
     from notebook_runs import executed, streams
@@ -589,7 +604,7 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     printed = streams(executed("06_what_accuracy_costs").notebook())
     fronts = {int(d): f.split(" -> ") for d, f in re.findall(
         r"divide = +(\d+): front (.*)\n", printed)}  # fmt: skip
-    assert fronts == ns.front_at and sorted(fronts) == [1, 2, 9, 30, 128]
+    assert fronts == ns.front_at and sorted(fronts) == [1, 2, 4, 17, 128]
     off = [d for d, f in fronts.items() if "N=2" not in f]
     assert off == [1, 2] and ns.d2 == 3  # "off it at d = 1 and d = 2", "d <= 3"
     for d, front in fronts.items():  # the others on it at every price, in one order
@@ -599,10 +614,19 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     assert "the front keeps its order at every price and loses only $N = 2$" in text
     assert "not the front" not in text
     assert 'off it at $d = 1$ and $d = 2$ (their lines end "N=4 -> perspective")' in text
-    assert "on it again at $d = 9$, 30 and 128" in text
+    assert "on it again at $d = 4, 17$ and 128" in text
     # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
     assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
-    assert 0.5 * ns.c["divides"] < ns.setup_cycles / 4 < ns.c["divides"]  # "nearly a divide"
+    # r228: at the Pentium's prices, for 4 pixels "more per pixel than the divide itself"
+    assert ns.P5["divides"] < ns.setup_cycles / 4 < 2 * ns.P5["divides"]
+    assert "for a triangle of 4 pixels it is more per pixel than the divide itself" in " ".join(
+        " ".join(
+            "".join(c["source"])
+            for c in json.loads((ROOT / "notebooks/06_what_accuracy_costs.ipynb").read_text())[
+                "cells"
+            ]
+        ).split()
+    )
     # 06-9: the lesson ends on a sentence (r146: the summary's Try it)
     assert ns_markdown_last().rstrip().endswith(".")
 
@@ -692,9 +716,10 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     import json
 
     ns = lesson("06_what_accuracy_costs")
-    # set-up: "nearly a divide's worth per pixel" for a few pixels, "a small part" of a large one
-    divide = ns.c["divides"]
-    assert 0.5 * divide < ns.setup_cycles / 4 < divide and ns.setup_cycles / 10_000 < 0.1
+    # set-up: more than a divide per pixel for 4 pixels (r228: at the Pentium's prices), "a
+    # small part" of a large triangle
+    divide = ns.P5["divides"]
+    assert divide < ns.setup_cycles / 4 and ns.setup_cycles / 10_000 < 0.1
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
@@ -716,7 +741,7 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     assert list(ns.fronts) == ["interpolation"] and len(ns.fronts["interpolation"]) > 1
     assert "It is not exact by construction" not in md and "known in advance" in md
     assert "Quake used $N = 16$" not in md and "portable C version $N = 8$" in md
-    assert "`python ../benchmarks/bench_lesson06_signs.py`" in md
+    assert "`python ../benchmarks/bench_lesson06_signs.py`" in ns.TIME_TEXT
     assert "slide 21" in md and "*Triangle Rasterisation II - Interpolation*" in md
 
 
@@ -790,7 +815,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     def asked_at(name):
         return next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
 
-    answers = {"q_bits": f"{2**ns.fits4:,}", "q_fill": "6.3",
+    answers = {"q_bits": f"{2**ns.fits4:,}", "q_fill": f"{ns.fill_answer:.1f}",
                "q_depth": str(ns.lin32["slanted_wrong"])}  # fmt: skip
     for name in ("q_bits", "q_rule", "q_fill", "q_depth"):
         i = asked_at(name)
@@ -824,10 +849,13 @@ def test_06_review_r37_a_prediction_in_every_section():
              if k == "markdown" and not c.startswith("## Summary")]  # fmt: skip
     assert not any("32-bit unit" in c or "int32" in c for c in after)
     assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
-    assert abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 1
+    # r228 F1: at the Pentium's prices the divides weigh less; the choices carry one decimal
+    assert (
+        abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 0.5
+    )
     # q_fill's four choices differ, and the right one is the ratio the fill cell prints
     assert (
-        len(set(ns.fill_choices)) == 4 and f"about {ns.fill_ratio['256²']:.0f}" in ns.fill_choices
+        len(set(ns.fill_choices)) == 4 and f"about {ns.fill_ratio['256²']:.1f}" in ns.fill_choices
     )
     assert ns.fill_per_pixel_only == 4.0  # 8 against 2: the slip of ignoring box and lines
     # q_depth: linear float32 misses no facing pixel and many crossing ones, as float64 does
@@ -846,7 +874,8 @@ def test_06_review_r37_a_prediction_in_every_section():
     # the span loop: two divides per line and one at set-up (u4), as the table counts
     assert ns.sp256["divides"] == 2 * ns.lines256 + 1 and "split point $u_4$" in md
     assert "lose the exact integer ties" not in md and "pixels the snap itself moves" in md
-    assert "wobble" not in md and "Pentium-class" in md and "early-1990s" not in md
+    # r228 F1: the Pentium's own prices, not a "Pentium-class" model
+    assert "wobble" not in md and "Pentium-class" not in md and "Pentium (P5)" in md
     # r41 06-6: the error is shown as a texture: affine's checks wrong across the floor,
     # N = 16's at few pixels (its far edge)
     # r68 06-2: right by it; r132 06-3: after it, held with it (it answers q_quake)
@@ -941,8 +970,8 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
     cases = {
         "q_bits": ([ns.bits_answer], [c for c in ns.bits_choices if c != ns.bits_answer]),
         "q_fill": (
-            [f"about {ns.fill_answer:.0f}"],
-            [c for c in ns.fill_choices if c != f"about {ns.fill_answer:.0f}"],
+            [f"about {ns.fill_answer:.1f}"],
+            [c for c in ns.fill_choices if c != f"about {ns.fill_answer:.1f}"],
         ),
         "q_depth": ([ns.depth_answer], [c for c in ns.depth_choices if c != ns.depth_answer]),
         "q_quake": ([ns.quake_answer], [c for c in ns.quake_choices if c != ns.quake_answer]),
@@ -3447,7 +3476,7 @@ def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
     assert [r["variant"] for r in ns.fill] == ["halfplane 256²", "span 256²", "halfplane 512²",
                                                "span 512²"]  # fmt: skip
     printed = streams(executed("06_what_accuracy_costs").notebook())
-    assert "['window unorm16', 'window float32 = window unorm24']" in printed
+    assert "['window unorm16', 'reversed float32']" in printed  # r228 M1
     assert ns.reference["variant"] == "window float64" and ns.reference["error"] == 0
     assert "window float64 (the reference)" in " ".join(t.get_text() for t in ns.ax.texts)
     # the slider the conclusion rests on: 16 attributes, N = 2 off the front up to 2k - 1
@@ -3944,3 +3973,126 @@ def test_07_review_r227_your_turn_goes_on_to_every_coverage_case():
     assert verdict.startswith("Right: all 15 cases match ours") and not any(counts.values())
     turn = " ".join(next(c for c in cells if c.startswith("**Part 2: every coverage")).split())
     assert "$E + b \\ge 0$" in turn and "why does it need integers?" in turn
+
+
+def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
+    """Review r228 C1: one GPU price list through the lesson (q_price, the explorer's GPU
+    prices, the Try it), NVIDIA's throughput rows as printed; F1: the Pentium's weights are
+    its own issue intervals (Agner Fog's tables: FADD and FMUL 3 cycles, FDIV 19/33/39, the
+    last 2 overlapping the next floating-point instruction; an FMUL not right after another),
+    FDIV at single precision as Quake set it, and the text says where each comes from."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study import operation_counts as ops
+    from teachraster.widgets.divide_cost import PRICES
+
+    assert ops.PENTIUM_X87 == {"FADD": (3, 1), "FMUL": (3, 2), "FDIV single": (19, 17),
+                               "FDIV double": (33, 31), "FDIV extended": (39, 37)}  # fmt: skip
+    assert ops.PENTIUM_CYCLES == {"divides": 17, "multiplies": 2, "additions": 1}
+    fma, rcp = ops.NVIDIA_RATES["Maxwell (5.x, 2014)"]
+    assert ops.GPU_CYCLES == {"divides": fma / rcp, "multiplies": 1, "additions": 1}
+    assert PRICES is ops.PRICES and list(PRICES.values()) == [ops.PENTIUM_CYCLES, ops.GPU_CYCLES]
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    code = "".join(c for c, raw in zip(cells, nb["cells"]) if raw["cell_type"] == "code")
+    # no hybrid: no price typed in a cell or in the Try it, no 1990s list, no "Pentium-class"
+    for gone in ("CYCLES_1990S", "Pentium-class", '"divides": 4.0', "early-1990s", "1:3:30"):
+        assert gone not in md and gone not in code, gone
+    assert "ops.GPU_CYCLES" in next(c for c in cells if "q_price = PredictOrder(" in c)
+    assert 'ops.PENTIUM_X87["FDIV extended"][1]' in md  # the Try it reads the table
+    # the text names its sources and the numbers it quotes are printed
+    for source in ("Agner Fog's Pentium tables", "`Sys_LowFPPrecision`", "`R_RenderView_`",
+                   "*CUDA C Programming Guide*'s throughput table"):  # fmt: skip
+        assert source in md, source
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    for line in ("FADD             3 cycles, the next can start after 1",
+                 "FMUL             3 cycles, the next FMUL can start after 2",
+                 "FDIV single     19 cycles, the next can start after 17",
+                 "FDIV extended   39 cycles, the next can start after 37",
+                 "Maxwell (5.x, 2014)           128   32: the reciprocal at 1/4 of the rate",
+                 "Pentium (P5)             divide 17, multiply 2, addition 1",
+                 "GPU (Maxwell to Turing)  divide 4, multiply 1, addition 1"):  # fmt: skip
+        assert line in printed, line
+    assert "a divide 17 at single precision" in md and "a divide (one reciprocal) 4" in md
+
+
+def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
+    """Review r228 partly-fixed 8: the error in screen pixels beside texels (the table's px
+    column, the chart's right panel, q_quake's explanation); M2: a Your turn that needs the
+    scaling argument, its check failing on a wrong answer; M1: reverse-Z float32 in §5, the
+    chart and the summary; S2: float32 draws fixed4's pixels at 1e6 px; S3, S4, FIG1."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study import bench
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    # screen pixels: N = 16 misses by a few pixels at worst, a third of one on average
+    n16 = ns.subdivided[16]
+    assert 1 < n16["error_px"] < 10 and n16["mean_error_px"] < 0.5 and ns.affine["error_px"] > 256
+    shown = " ".join(
+        "".join(o.get("data", {}).get("text/html", ""))
+        for c in executed("06_what_accuracy_costs").notebook().cells
+        if c.cell_type == "code" and "q_quake = Predict(" in c.source
+        for o in c.outputs
+    )
+    assert f"{n16['error_px']:.1f} px away, the mean one {n16['mean_error_px']:.2f} px" in shown
+    quake = " ".join(ns.QUAKE_TEXT.split())
+    assert "**Texels or pixels.**" in quake and "off the screen" in quake
+    assert 2.5 < min(ns.px_cut.values()) and max(ns.px_cut.values()) < 4  # "close to quadratic"
+    assert [ax.get_title() for ax in ns.err_axes] == ["in the texture", "on screen"]
+    # the Your turn: asked after §1, before any 1024² number is printed; 8 is right, its
+    # neighbours are not; Run All leaves it waiting for an answer
+    at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
+    assert cells[at + 1].startswith("my_n = None") and "1024" not in printed.split("Give my_n")[0]
+    assert "Give my_n one of [2, 4, 8, 16, 32] first" in printed and ns.my_right is False
+    for answer, right in (
+        (8, True),
+        (4, False),
+        (16, False),
+    ):  # the check cell, as a student runs it
+        scope = {"bench": bench}
+        exec(cells[at + 1].replace("my_n = None", f"my_n = {answer}"), scope)
+        assert scope["my_right"] is right, answer
+    # reverse-Z: in the table, on the chart's floor, in the text and the summary
+    rev = next(r for r in ns.rows if r["variant"] == "reversed float32")
+    assert rev["error"] == 0 and ns.dz_far["reversed"] < bench.DEPTH_GAP < ns.dz_far["perspective"]
+    assert "reversed float32 wrong: 0 facing-pair and\n  0 crossing-pair pixels" in printed
+    assert "**Reverse-Z** spends the same 32 bits" in next(
+        c for c in cells if "dz_far['reversed']" in c and "display(" in c
+    )
+    assert "float32 with reverse-Z is the one to choose" in md and "`reversed float32`" in md
+    assert "reversed" in [t.get_text() for t in ns.ax.texts]  # the chart names it
+    # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
+    assert ns.f32_vs_f4[1_000_000] == 0 < ns.f32_vs_f4[100_000] < ns.f32_vs_f4[0] + 1
+    assert (
+        "mesh pixels where float32 and fixed4 (direct) differ: @0 138, @1e5 128, @1e6 0"
+        in (printed)
+        and "float32 *is* 4-bit sub-pixel fixed point there" in md
+    )
+    assert "20 of its 24 bits for the whole pixels, 4 for the fraction" in printed
+    # S3: fixed4 differs from the 1/256 reference, it is not "wrong"; S4: no nested aside
+    assert "differ from the 1/256 px reference (Direct3D's grid) everywhere" in md
+    assert "wrong pixels everywhere, but consistently" not in md
+    assert "(in floats, and as a fixed-point fraction too:" not in ns.FILL_TEXT
+    # FIG1: the explorer's status line at the axis labels' size, a short caption
+    from teachraster.widgets.divide_cost import CAPTION_PX, STATUS_PX, DivideCostExplorer
+
+    ex = DivideCostExplorer(ns.interp_rows, backend="image")
+    try:
+        assert ex.info.value.startswith(f"<div style='font-size:{STATUS_PX}px") and STATUS_PX >= 18
+        caption = ex.widget.children[0].value
+        assert f"font-size:{CAPTION_PX}px" in caption and CAPTION_PX >= 16
+        assert "as in the lesson's depth chart" not in caption
+    finally:
+        ex.close()

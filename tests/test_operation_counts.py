@@ -22,18 +22,34 @@ def test_interpolation_counts_follow_the_formulas():
 
 def test_interpolation_prices_u_and_v():
     """Review r48 06-D1: the study measures the uv error, so the model prices both texture
-    coordinates (k = 2) sharing one reciprocal: d + 3k + (k + 1) = 39 cycles at the 1990s
-    prices, about 20x affine's 2 (it priced u alone: 35 cycles, "35x affine")."""
-    c = ops.CYCLES_1990S
-    for k in (1, 2, 16):
-        d = c["divides"]
-        persp = ops.cycles(ops.interpolation_count("perspective", k))
-        assert persp == d + 3 * k + (k + 1)
-        assert ops.cycles(ops.interpolation_count("affine", k)) == k
-        for n in (2, 16):
-            sub = ops.cycles(ops.interpolation_count(f"subdivided N={n}", k))
-            assert sub == pytest.approx(k + (d + 3 * 2 * k + 2 * k + 1) / n)
-    assert ops.cycles(ops.interpolation_count("perspective")) == 39
+    coordinates (k = 2) sharing one reciprocal: d + mk + (k + 1) cycles, 24 at the Pentium's
+    prices (r228 F1: its issue intervals), 12x affine's 2; 9 at the GPU's."""
+    for prices in (ops.PENTIUM_CYCLES, ops.GPU_CYCLES):
+        d, m = prices["divides"], prices["multiplies"]
+        for k in (1, 2, 16):
+            persp = ops.cycles(ops.interpolation_count("perspective", k), prices)
+            assert persp == d + m * k + (k + 1)
+            assert ops.cycles(ops.interpolation_count("affine", k), prices) == k
+            for n in (2, 16):
+                sub = ops.cycles(ops.interpolation_count(f"subdivided N={n}", k), prices)
+                assert sub == pytest.approx(k + (d + m * 2 * k + 2 * k + 1) / n)
+    assert ops.cycles(ops.interpolation_count("perspective")) == 24
+    assert ops.cycles(ops.interpolation_count("perspective"), ops.GPU_CYCLES) == 9
+
+
+def test_the_price_lists_are_read_from_their_tables():
+    """Review r228 C1/F1: the Pentium's weights are its x87 issue intervals (Agner Fog's
+    tables: FADD, FMUL 3 cycles, FDIV 19/33/39, the last 2 overlapping the next
+    floating-point instruction; an FMUL not in the cycle after another), FDIV at single
+    precision; the GPU's are NVIDIA's throughput rows, the reciprocal at a quarter of the
+    multiply-add rate from Maxwell to Turing (a sixth on Kepler)."""
+    for name, (cycles, issue) in ops.PENTIUM_X87.items():
+        assert issue == (2 if name == "FMUL" else cycles - 2), name
+    assert ops.PENTIUM_CYCLES == {"divides": 17.0, "multiplies": 2.0, "additions": 1.0}
+    quarter = [g for g, (fma, rcp) in ops.NVIDIA_RATES.items() if fma == 4 * rcp]
+    assert quarter == list(ops.NVIDIA_RATES)[1:] and ops.GPU_CYCLES["divides"] == 4
+    assert ops.GPU_CYCLES["multiplies"] == ops.GPU_CYCLES["additions"] == 1  # one FMA pipe
+    assert list(ops.PRICES) == ["Pentium (P5)", "GPU (Maxwell to Turing)"]
 
 
 def test_edge_counts_and_bits():

@@ -208,7 +208,7 @@ def test_the_divide_cost_explorer_draws_its_other_measure_ahead_without_a_warnin
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error")
-            ex.divide.value = 9.0
+            ex.divide.value = 10.0
             ex._ahead.step()  # the other measure at this price, on a figure of its own
         assert ex._elsewhere.art.floor == pytest.approx(0.01)
     finally:

@@ -1718,15 +1718,15 @@ def test_divide_cost_attribute_slider_moves_where_n2_leaves_the_front():
     try:
         assert ex.attributes.value == 2 and {1, 2, 16, 32} <= set(ATTRIBUTE_COUNTS)
         assert ex.attributes in ex.widget.children[1].children  # on the controls' row
-        assert "up to 3 cycles" in ex.info.value  # d + 9 against 2 + (d + 17)/2
+        assert "up to 3 cycles" in ex.info.value  # d + 7 against 2 + (d + 13)/2 (Pentium)
         ex.divide.value = 4.0
         assert "subdivided N=2" in ex.front
         xlim2 = ex.ax.get_xlim()
-        ex.attributes.value = 16  # q_price's GPU: 16 attributes, a divide of 12 cycles
+        ex.attributes.value = 16  # q_price's 16 attributes, at the Pentium's multiply
         ex.divide.value = 12.0
         assert "<b>16 attributes" in ex.info.value and "up to 31 cycles" in ex.info.value
         cost = {p: ex.art.points[p].get_xdata()[0] for p in ex.art.points}
-        assert cost["perspective"] == 77.0 and cost["subdivided N=2"] == 86.5  # d + 4k + 1
+        assert cost["perspective"] == 61.0 and cost["subdivided N=2"] == 70.5  # d + 3k + 1
         assert ex.front == ["affine", "subdivided N=16", "subdivided N=4", "perspective"]
         ex.divide.value = 30.0
         assert "subdivided N=2" not in ex.front
@@ -1736,6 +1736,15 @@ def test_divide_cost_attribute_slider_moves_where_n2_leaves_the_front():
         assert hi > xlim2[1] and lo < min(cost.values()) and max(cost.values()) < hi
         ex.attributes.value = 2
         assert ex.ax.get_xlim() == xlim2 and "up to 3 cycles" in ex.info.value
+        # r228 C1: at the GPU's prices (q_price's), 16 attributes: the lesson's order
+        ex.attributes.value = 16
+        ex.prices.value = "GPU (Maxwell to Turing)"
+        assert ex.divide.value == 4.0 and "up to 31 cycles" in ex.info.value
+        cost = {p: ex.art.points[p].get_xdata()[0] for p in ex.art.points}
+        assert cost["perspective"] == 37.0 and cost["subdivided N=2"] == 50.5  # d + 2k + 1
+        assert ex.front == ["affine", "subdivided N=16", "subdivided N=4", "perspective"]
+        ex.prices.value = "Pentium (P5)"
+        assert ex.divide.value == 17.0 and "(a multiply 2)" in ex.info.value
     finally:
         ex.close()
     with pytest.raises(ValueError, match="attributes"):

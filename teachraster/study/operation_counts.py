@@ -27,8 +27,12 @@ follow from the formulas, not from timing:
   pixels only, with no test;
 - *depth*: one comparison per fragment; the format sets the bits stored.
 
-:data:`CYCLES_1990S` weights the three operations roughly as an early-1990s FPU did (a divide
-costing tens of additions); :func:`cycles` applies any weights.
+Two price lists weight the counts, both in *issue cycles*: how long the unit is busy with one
+operation before it can start the next of the same kind, read from the vendor's throughput
+tables. :data:`PENTIUM_CYCLES` is the Pentium's (P5) x87 FPU, the machine Quake was written
+for (:data:`PENTIUM_X87`); :data:`GPU_CYCLES` an NVIDIA GPU from Maxwell to Turing, whose
+add, multiply and multiply-add issue at one rate and whose reciprocal at a quarter of it
+(:data:`NVIDIA_RATES`). :func:`cycles` applies any weights (the Pentium's by default).
 
 :func:`tie_mesh` and :func:`crack_counts` build a watertight mesh whose shared edges pass
 through pixel centres and count the pixels a coverage rule leaves uncovered (gaps) or covers
@@ -48,9 +52,42 @@ from ..core.triangle import Triangle
 from . import bench
 from .bench.groups import triangulate_grid
 
-#: Rough cost of each operation in cycles on a early-1990s floating-point unit (an addition
-#: 1, a multiply 3, a divide 20-40): the weights of :func:`cycles`.
-CYCLES_1990S = {"divides": 30.0, "multiplies": 3.0, "additions": 1.0}
+#: The Pentium's (P5, 1993) x87 instructions: (clock cycles, issue interval), from Agner
+#: Fog's *How to optimize for the Pentium family of microprocessors*, its table of
+#: floating-point instructions: FADD, FMUL 3 clock cycles and FDIV 19, 33 or 39 at single,
+#: double or extended precision, each overlapping the next floating-point instruction by
+#: its last 2 cycles ("fp-ov"), except that an FMUL cannot start in the cycle after another
+#: FMUL. The issue interval is what is left: the cycles before the FPU can start the next
+#: floating-point instruction (the next FMUL, for an FMUL).
+PENTIUM_X87 = {"FADD": (3, 1), "FMUL": (3, 2), "FDIV single": (19, 17), "FDIV double": (33, 31),
+               "FDIV extended": (39, 37)}  # fmt: skip
+#: Weights of :func:`cycles`: the P5's issue intervals (:data:`PENTIUM_X87`), an FADD each
+#: cycle, an FMUL every 2, an FDIV every 17 at single precision, the precision Quake set
+#: before drawing ("make FDIV fast", ``Sys_LowFPPrecision`` in ``R_RenderView_``, ``r_main.c``).
+PENTIUM_CYCLES = {
+    "divides": float(PENTIUM_X87["FDIV single"][1]),
+    "multiplies": float(PENTIUM_X87["FMUL"][1]),
+    "additions": float(PENTIUM_X87["FADD"][1]),
+}
+#: NVIDIA's CUDA C Programming Guide, table "Throughput of Native Arithmetic Instructions"
+#: (results per clock cycle per multiprocessor): the rows "32-bit floating-point add,
+#: multiply, multiply-add" and "32-bit floating-point reciprocal, reciprocal square root, ...",
+#: by compute capability (Kepler and Maxwell as in the edition copied as nvidia_throughput.txt
+#: in PCSX2's GSdx renderer, Pascal to Turing as in the CUDA 10 edition's table; the rows of
+#: 8.x and later are not quoted).
+NVIDIA_RATES = {"Kepler (3.x, 2012)": (192, 32), "Maxwell (5.x, 2014)": (128, 32),
+                "Pascal GP100 (6.0, 2016)": (64, 16), "Pascal (6.1, 2016)": (128, 32),
+                "Volta, Turing (7.x, 2017-18)": (64, 16)}  # fmt: skip
+#: A GPU's prices in issue cycles of its multiply-add pipe (Maxwell to Turing,
+#: :data:`NVIDIA_RATES`): an addition, a multiply or a multiply-add 1, a reciprocal 4 (its
+#: rate is a quarter of theirs). A divide of the model is that reciprocal.
+GPU_CYCLES = {
+    "divides": NVIDIA_RATES["Maxwell (5.x, 2014)"][0] / NVIDIA_RATES["Maxwell (5.x, 2014)"][1],
+    "multiplies": 1.0,
+    "additions": 1.0,
+}
+#: The two price lists by the names the lesson and the DivideCostExplorer give them.
+PRICES = {"Pentium (P5)": PENTIUM_CYCLES, "GPU (Maxwell to Turing)": GPU_CYCLES}
 #: Bits of precision the arithmetic keeps: the significand of a float, a whole int64.
 BITS_KEPT = {"fixed8": 63, "fixed4": 63, "float64": 53, "float32": 24, "unsnapped": 53}
 DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
@@ -179,12 +216,13 @@ def count(row: dict) -> OpCount:
 
 
 def cycles(op: OpCount, weights: dict | None = None) -> float:
-    """Weighted cost of ``op``: divides, multiplies and additions times their weights.
+    """Weighted cost of ``op``: divides, multiplies and additions times their weights
+    (:data:`PENTIUM_CYCLES` unless ``weights`` is given).
 
-    >>> cycles(interpolation_count("perspective"))
-    39.0
+    >>> cycles(interpolation_count("perspective")), cycles(interpolation_count("perspective"), GPU_CYCLES)
+    (24.0, 9.0)
     """
-    w = CYCLES_1990S if weights is None else weights
+    w = PENTIUM_CYCLES if weights is None else weights
     return (
         op.divides * w["divides"] + op.multiplies * w["multiplies"] + op.additions * w["additions"]
     )

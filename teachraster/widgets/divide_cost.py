@@ -3,9 +3,12 @@
 Lesson 06's widget. Perspective-correct interpolation needs a divide per pixel; subdivided
 interpolation (Quake's) divides every N pixels and is affine in between; affine never divides.
 Which of them is worth its cost depends on what a divide costs against a multiply and an
-addition: tens of cycles on an early-1990s FPU, about as much as a few multiplies on a GPU.
-The slider sets that price; the chart re-prices every variant from its operation counts
-(:mod:`teachraster.study.operation_counts`) and redraws the Pareto front. A second slider sets
+addition: 17 issue cycles on the Pentium's FPU (an addition 1, a multiply 2), four
+multiply-adds' worth on a GPU (an addition and a multiply 1 each). The **prices** buttons pick
+one of the two price lists (:data:`~teachraster.study.operation_counts.PRICES`, each from its
+vendor's throughput table), the **divide** slider that list's divide; the chart re-prices every
+variant from its operation counts (:mod:`teachraster.study.operation_counts`) and redraws the
+Pareto front. A second slider sets
 the number of attributes interpolated per pixel: they share the one reciprocal of 1/w, while
 subdivision's per-anchor work grows with each of them, so that at a GPU's 16 or more
 attributes N = 2 costs more than the exact divide at every price up to 2k - 1 cycles (the
@@ -24,13 +27,14 @@ from matplotlib.transforms import Bbox
 
 from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
-from ..study.operation_counts import ATTRIBUTES, CYCLES_1990S, interpolation_count
+from ..study.operation_counts import ATTRIBUTES, PRICES, interpolation_count
 from .ahead import PicturesAhead, show_kept
 from .common import (
     Shown,
     control_row,
     fit_width,
     labelled,
+    projector_text,
     style_context,
     title_html,
 )
@@ -45,9 +49,15 @@ RIGHT_ROOM = 0.03
 ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
 
 #: The slider's divide costs in cycles, 1 to 128: about a quarter of an octave apart, and
-#: holding the prices the lesson prints (1, 2, 9, and the 1990s model's 30). A starting price
-#: not among them is added, so the slider starts exactly where the lesson's model is.
-DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 9, 12, 16, 20, 24, 30, 40, 48, 64, 80, 96, 128)
+#: holding the prices the lesson prints (1, 2, the GPU's 4, the Pentium's 17, 128, and 30
+#: and 40 either side of 16 attributes' limit of 31). A starting price not among them is
+#: added, so the slider starts exactly where it is asked to.
+DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 17, 20, 24, 30, 40, 48, 64, 80, 96, 128)
+#: The status line's font size (CSS px): the size of the chart's axis labels, read from the
+#: back of a room (review r228 FIG1: at JupyterLab's 13 px it could not be).
+STATUS_PX = 18
+#: The caption's font size (CSS px), and the title's, above the status line's.
+CAPTION_PX, TITLE_PX = 16, 21
 
 #: The attribute counts offered, 1 to 32: the study's u and v (2), and a GPU's 16 and more
 #: (Fatahalian, CMU 15-462 *Texture*: up to 128 scalar attributes per triangle).
@@ -87,8 +97,8 @@ def short_name(variant: str) -> str:
     return variant.replace("subdivided ", "")
 
 
-def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0,
-           attributes: int = ATTRIBUTES) -> list[dict]:  # fmt: skip
+def priced(rows, divide: float, multiply: float = PRICES["Pentium (P5)"]["multiplies"],
+           addition: float = 1.0, attributes: int = ATTRIBUTES) -> list[dict]:  # fmt: skip
     """Copies of ``rows`` with ``cycles`` recomputed from their operation counts.
 
     Parameters
@@ -96,15 +106,17 @@ def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0,
     rows : list of dict
         Interpolation rows with the operation counts of ``ATTRIBUTES`` (u and v).
     divide, multiply, addition : float
-        Cycles per operation.
+        Cycles per operation (the Pentium's multiply, 2, by default).
     attributes : int
         Attributes interpolated per pixel: each row's counts change by what
         :func:`~teachraster.study.operation_counts.interpolation_count` adds or removes for
         them (none at u and v), the reciprocal shared by all.
 
     >>> rows = [{"variant": "perspective", "divides": 1.0, "multiplies": 2.0, "additions": 3.0}]
-    >>> [priced(rows, 12, attributes=k)[0]["cycles"] for k in (2, 16)]  # d + 4k + 1
-    [21.0, 77.0]
+    >>> [priced(rows, 17, attributes=k)[0]["cycles"] for k in (2, 16)]  # d + 3k + 1
+    [24.0, 66.0]
+    >>> [priced(rows, 4, multiply=1, attributes=k)[0]["cycles"] for k in (2, 16)]  # d + 2k + 1
+    [9.0, 37.0]
     """
     out = []
     for r in rows:
@@ -119,19 +131,20 @@ def priced(rows, divide: float, multiply: float = 3.0, addition: float = 1.0,
     return out
 
 
-def n2_limit(rows, attributes: int = ATTRIBUTES) -> float:
+def n2_limit(rows, attributes: int = ATTRIBUTES, multiply: float = 2.0) -> float:
     """The dearest divide, in cycles, at which subdivision by N = 2 costs at least as much as
-    perspective-correct for ``attributes`` attributes: ``2k - 1`` in the lesson's model (a
-    multiply 3 cycles, an addition 1). Both costs are straight lines in the divide's price,
-    perspective-correct's of slope 1 and N = 2's of slope 1/2: they meet once.
+    perspective-correct for ``attributes`` attributes: ``2k - 1`` whatever a multiply costs
+    (an addition 1). Both costs are straight lines in the divide's price, perspective-correct's
+    of slope 1 and N = 2's of slope 1/2: they meet once.
 
     >>> rows = [{"variant": "perspective", "divides": 1.0, "multiplies": 2.0, "additions": 3.0},
     ...         {"variant": "subdivided N=2", "divides": 0.5, "multiplies": 2.0,
     ...          "additions": 4.5}]
-    >>> [n2_limit(rows, k) for k in (2, 16)]
-    [3.0, 31.0]
+    >>> [n2_limit(rows, k) for k in (2, 16)], n2_limit(rows, 16, multiply=1.0)
+    ([3.0, 31.0], 31.0)
     """
-    at0, at1 = ({r["variant"]: r["cycles"] for r in priced(rows, d, attributes=attributes)}
+    at0, at1 = ({r["variant"]: r["cycles"] for r in priced(rows, d, multiply,
+                                                            attributes=attributes)}
                 for d in (0.0, 1.0))  # fmt: skip
     slope = {v: at1[v] - at0[v] for v in ("perspective", "subdivided N=2")}
     gap = at0["subdivided N=2"] - at0["perspective"]  # N = 2's extra cost at a free divide
@@ -162,19 +175,23 @@ class DivideCostExplorer(Shown):
     rows : list of dict
         The study's interpolation rows with their operation counts
         (``ops.with_counts(bench.run(...))`` filtered to ``group == "interpolation"``).
-    divide : float
-        Starting cost of a divide in cycles of the operation-count model (an addition costs 1,
-        a multiply 3: :data:`~teachraster.study.operation_counts.CYCLES_1990S`, 30); the slider
-        starts there exactly.
+    divide : float, optional
+        Starting cost of a divide in issue cycles (an addition costs 1); by default the
+        ``prices``' own (17 or 4); the slider starts there exactly.
     error : {"max error", "mean error"}
     attributes : int
         Starting number of attributes interpolated per pixel (one of
         :data:`ATTRIBUTE_COUNTS`); 2, the study's u and v, by default.
+    prices : {"Pentium (P5)", "GPU (Maxwell to Turing)"}
+        The price list (:data:`~teachraster.study.operation_counts.PRICES`): a multiply's
+        cost, and the divide the slider starts at.
     backend : {"auto", "ipympl", "image"}
     style : str, optional
 
     Attributes
     ----------
+    prices : ipywidgets.ToggleButtons
+        Choosing a list moves the divide slider to that list's divide.
     divide : ipywidgets.SelectionSlider
         Over :func:`divide_positions` (:data:`DIVIDE_CYCLES` and the starting price).
     error : ipywidgets.ToggleButtons
@@ -188,13 +205,18 @@ class DivideCostExplorer(Shown):
     #: ``teachraster html``: the offline page steps through every divide cost (:mod:`.offline`)
     _offline_sweep_ = "divide"
 
-    def __init__(self, rows, divide: float = CYCLES_1990S["divides"], *,
-                 error: str = "max error", attributes: int = ATTRIBUTES,
+    def __init__(self, rows, divide: float | None = None, *, error: str = "max error",
+                 attributes: int = ATTRIBUTES, prices: str = "Pentium (P5)",
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.rows = [r for r in rows if r.get("group", "interpolation") == "interpolation"]
         if not self.rows:
             raise ValueError("rows must hold the study's interpolation rows")
+        if prices not in PRICES:
+            raise ValueError(f"prices must be one of {list(PRICES)}, got {prices!r}")
+        divide = PRICES[prices]["divides"] if divide is None else divide
         self.backend = resolve_backend(backend)
+        self.prices = widgets.ToggleButtons(options=list(PRICES), value=prices,
+                                            style={"button_width": "auto"})  # fmt: skip
         # a list of prices, not a log grid: 2^(k/4) skips 30, and the slider snapped the
         # model's 30 to 32 while the lesson printed 30 (review r5, 06-2)
         # the description at its own width, flush left: at the default width it sat right-aligned
@@ -227,16 +249,37 @@ class DivideCostExplorer(Shown):
         self.divide.observe(lambda change: self.update(), "value")
         self.attributes.observe(lambda change: self.update(replot=True), "value")
         self.error.observe(lambda change: self.update(replot=True), "value")
+        self.prices.observe(lambda change: self._new_prices(), "value")
         title = title_html(
-            "What a divide costs decides the price of exactness",
-            "Cost per pixel in cycles of the op-count model (an addition = 1, a multiply = 3). "
-            f"Vermillion: the Pareto front, the variants for which {FRONT_DEFINITION}. "
-            "Grey: off the front. A hollow ring: off the front though on its step line (it "
-            "ties a front point on cost and is less accurate, or on accuracy and costs more), "
-            "as in the lesson's depth chart.",
+            f"<span style='font-size:{TITLE_PX}px'>What a divide costs decides the price of "
+            "exactness</span>",
+            f"<span style='font-size:{CAPTION_PX}px'>Cost per pixel in issue cycles (an "
+            "addition = 1). Vermillion: the Pareto front, the variants for which "
+            f"{FRONT_DEFINITION}. Grey: off it. Hollow: on its line, off it.</span>",
         )
-        controls = control_row([self.divide, self.attributes, labelled("error", self.error)])
-        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+        controls = control_row([labelled("prices", self.prices), self.divide, self.attributes,
+                                labelled("error", self.error)])  # fmt: skip
+        self.widget = projector_text(
+            widgets.VBox([title, controls, self.info, self.display.widget]), title
+        )
+
+    def _new_prices(self) -> None:
+        """Another price list: its multiply on the chart, the slider at its divide (one
+        picture: the slider's own change is not drawn on the way)."""
+        divide = PRICES[self.prices.value]["divides"]
+        if self.divide.value == divide:
+            self.update(replot=True)
+            return
+        self._moving_slider = True
+        try:
+            self.divide.value = divide
+        finally:
+            self._moving_slider = False
+        self.update(replot=True)
+
+    @property
+    def _multiply(self) -> float:
+        return PRICES[self.prices.value]["multiplies"]
 
     def _cost_axis(self, attributes: int) -> tuple[float, float]:
         """The cost axis' limits at ``attributes``: one range for every price on the slider
@@ -247,7 +290,8 @@ class DivideCostExplorer(Shown):
         end (:meth:`_lay_out`)."""
         ends = [p for _, p in self.divide.options][:: len(self.divide.options) - 1]
         return cost_axis([r["cycles"] for d in ends
-                          for r in priced(self.rows, d, attributes=attributes)])  # fmt: skip
+                          for r in priced(self.rows, d, self._multiply,
+                                          attributes=attributes)])  # fmt: skip
 
     def close(self) -> None:
         """Close the figure and every widget of the box."""
@@ -268,12 +312,11 @@ class DivideCostExplorer(Shown):
         if other is None:
             other = self._elsewhere = object.__new__(DivideCostExplorer)
             other.rows, other.backend, other._places = self.rows, "image", self._places
-            other._cost_axis = self._cost_axis
-            other.divide, other.error, other.attributes = (SimpleNamespace(value=None)
-                                                           for _ in range(3))  # fmt: skip
+            other.divide, other.error, other.attributes, other.prices = (
+                SimpleNamespace(value=None, options=self.divide.options) for _ in range(4))  # fmt: skip
             with style_context(self._style):
                 other._new_figure()
-        other.divide.value, other.error.value, other.attributes.value = key
+        other.divide.value, other.error.value, other.attributes.value, other.prices.value = key
         with style_context(self._style):
             other._plot()
             other._lay_out()
@@ -293,7 +336,8 @@ class DivideCostExplorer(Shown):
         before = set(self.ax.get_children())
         self.art = plot_pareto(
             self.ax, self._priced(), "cycles", y=self._ykey,
-            xlabel="cycles per pixel (op-count model)", ylabel=f"{self.error.value} (texels)",
+            xlabel=f"issue cycles per pixel ({self.prices.value.split(' (')[0]} prices)",
+            ylabel=f"{self.error.value} (texels)",
             short=short_name, xlim=self.xlim, hollow_on_line=True,
         )  # fmt: skip
         # labels at 1-2-5 as lesson 06's own charts: a decade apart, only 10 and 100 were
@@ -327,7 +371,9 @@ class DivideCostExplorer(Shown):
     def update(self, replot: bool = False) -> None:
         """Re-price the variants and redraw (the same artists unless the error measure changed;
         a picture drawn ahead for this price and measure: shown at once)."""
-        key = (self.divide.value, self.error.value, self.attributes.value)
+        if getattr(self, "_moving_slider", False):
+            return  # a new price list moves the slider: drawn once, by _new_prices
+        key = (self.divide.value, self.error.value, self.attributes.value, self.prices.value)
         kept = None if self._ahead is None else self._ahead.take(key)
         if kept is not None:
             show_kept(self, kept)
@@ -352,12 +398,14 @@ class DivideCostExplorer(Shown):
             prices = [v for _, v in self.divide.options]
             i = prices.index(key[0])
             near = [prices[j] for j in (i + 1, i - 1) if 0 <= j < len(prices)]
-            self._ahead.want([(key[0], e, key[2]) for e in ERRORS if e != key[1]]
-                             + [(p, key[1], key[2]) for p in near])  # fmt: skip
+            self._ahead.want([(key[0], e, *key[2:]) for e in ERRORS if e != key[1]]
+                             + [(p, key[1], *key[2:]) for p in near])  # fmt: skip
 
     def _priced(self) -> list[dict]:
         """The rows priced at the sliders' divide and attribute count."""
-        return priced(self.rows, self.divide.value, attributes=self.attributes.value)
+        return priced(
+            self.rows, self.divide.value, self._multiply, attributes=self.attributes.value
+        )
 
     def _info_html(self) -> str:
         """What the sliders change: the divide's share of the exact divide's cost, what
@@ -377,11 +425,13 @@ class DivideCostExplorer(Shown):
         k = self.attributes.value
         headline = ""
         if "subdivided N=2" in rows:
-            limit = n2_limit(self.rows, k)
+            limit = n2_limit(self.rows, k, self._multiply)
             headline = (f"<b>{k} attribute{'s share' if k > 1 else ' has'} one reciprocal: N=2 "
                         f"costs at least as much as perspective-correct for every divide up to "
                         f"{limit:.3g} {'cycle' if limit == 1 else 'cycles'}.</b> ")  # fmt: skip
-        return (f"{headline}divide = {self.divide.value:.3g} {cycles}: the divide is "
+        multiply = f"a multiply {self._multiply:g}"
+        return (f"<div style='font-size:{STATUS_PX}px;line-height:1.35'>{headline}"
+                f"divide = {self.divide.value:.3g} {cycles} ({multiply}): the divide is "
                 f"<b>{share:.0%}</b> of perspective-correct's cost; perspective-correct costs "
                 f"<b>{ratio:.3g}×</b> affine{saving}. "
-                f"Front, cheapest first: {names}")  # fmt: skip
+                f"Front, cheapest first: {names}</div>")  # fmt: skip

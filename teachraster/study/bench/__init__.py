@@ -15,7 +15,8 @@ interpolation
     perspective-correct and subdivided (N = 2 ... 32) interpolation. Error: absolute error of
     the texture coordinates, in texels of a 256-texel texture, against a ray-plane
     intersection per pixel centre in 3D (float64), which never uses screen-space
-    barycentrics.
+    barycentrics; and (``error_px``, ``mean_error_px``) how far on screen that error moves
+    the texture, in pixels (:func:`floor_errors`).
 edge functions
     :func:`teachraster.study.precision.coverage` in five arithmetics, evaluated directly or
     incrementally. Error: pixels whose coverage differs from the exact rational coverage of
@@ -41,7 +42,8 @@ fill
     same fill of the bare positions, in the same rounds: the coverage alone.
 depth
     ``tr.render`` with each ``depth_format`` storing either the window depth (the hyperbola
-    ``z' = n + f - fn/z`` rescaled to [0, 1]) or a depth linear in view distance, on pairs of
+    ``z' = n + f - fn/z`` rescaled to [0, 1]) or a depth linear in view distance, and float32
+    reverse-Z (the reversed depth, the test reversed: :func:`greater_passes`), on pairs of
     nearly coplanar overlapping triangles at distances 1 to 500, and on crossing pairs (a
     camera-facing triangle pierced by a slanted one, :func:`slanted_pairs`) at distances 1 to
     900. Error: depth-order inversions, pixels whose visible triangle differs from the true
@@ -72,7 +74,9 @@ from .groups import (
     depth_clip,
     depth_pairs,
     fill_triangle,
+    floor_errors,
     floor_quad,
+    greater_passes,
     jittered_mesh,
     random_triangles,
     slanted_pairs,
@@ -98,6 +102,7 @@ from .settings import (
     DEPTH_FORMATS,
     DEPTH_GAP,
     DEPTH_MAPPINGS,
+    DEPTH_VARIANTS,
     EDGE_VARIANTS,
     ERROR_MEASURE,
     FAR,
@@ -122,6 +127,7 @@ __all__ = [
     "DEPTH_FORMATS",
     "DEPTH_GAP",
     "DEPTH_MAPPINGS",
+    "DEPTH_VARIANTS",
     "EDGE_VARIANTS",
     "ERROR_MEASURE",
     "FAR",
@@ -143,7 +149,9 @@ __all__ = [
     "slanted_pairs",
     "exact_coverage",
     "fill_triangle",
+    "floor_errors",
     "floor_quad",
+    "greater_passes",
     "format_table",
     "jittered_mesh",
     "main",

@@ -83,6 +83,45 @@ def exact_coverage(xy, width: int, height: int, bits: int | None = 8, origin=(0,
     return out
 
 
+def screen_offset_px(xy, w, uv, rows, cols, error) -> np.ndarray:
+    """How far on screen, in pixels, a texture-coordinate error moves the texture, per pixel.
+
+    A pixel at (x, y) that shows the texture at ``uv + e`` instead of ``uv`` shows, to first
+    order, what belongs at the screen point ``(x, y) + J⁻¹ e``, J the Jacobian
+    ∂(u, v)/∂(x, y) of the true texture coordinates there: this returns ``|J⁻¹ e|``. J comes
+    from the triangle's screen-space planes of 1/w and uv/w, both affine in x and y
+    (lesson 04): with u = (u/w) / (1/w), ∂u/∂x = (∂(u/w)/∂x − u ∂(1/w)/∂x) / (1/w).
+
+    Parameters
+    ----------
+    xy (3, 2), w (3,), uv (3, 2)
+        The triangle's window positions, clip w and texture coordinates.
+    rows, cols : (P,) int
+        The pixels (their centres are evaluated).
+    error : (P, 2)
+        Each pixel's error in the units of ``uv`` (texels and texel coordinates alike).
+
+    Returns
+    -------
+    (P,) float64, pixels.
+
+    >>> xy = np.array([[0.0, 0.0], [8.0, 0.0], [0.0, 8.0]])      # uv = xy / 8: 1/8 per px
+    >>> screen_offset_px(xy, np.ones(3), xy / 8, np.array([1]), np.array([1]),
+    ...                  np.array([[0.25, 0.0]]))                  # a quarter is 2 px
+    array([2.])
+    """
+    xy, w, uv = (np.asarray(a, dtype=np.float64) for a in (xy, w, uv))
+    plane = np.linalg.solve(np.column_stack([xy, np.ones(3)]), np.column_stack([uv / w[:, None],
+                            1.0 / w]))  # fmt: skip  # (3, 3): u/w, v/w, 1/w = a x + b y + c
+    at = np.column_stack([np.asarray(cols) + 0.5, np.asarray(rows) + 0.5, np.ones(len(rows))])
+    values = at @ plane  # (P, 3)
+    q = values[:, 2:3]
+    uv_at = values[:, :2] / q
+    jac = (plane[:2, :2].T[None] - uv_at[:, :, None] * plane[:2, 2][None, None, :]) / q[:, :, None]
+    shift = np.linalg.solve(jac, np.asarray(error, dtype=np.float64)[:, :, None])[:, :, 0]
+    return np.hypot(shift[:, 0], shift[:, 1])
+
+
 def uv_ground_truth(xy, w, uv, size: int, rows, cols) -> np.ndarray:
     """Texture coordinates at pixel centres by ray-plane intersection in 3D (float64).
 

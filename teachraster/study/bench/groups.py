@@ -13,14 +13,13 @@ from ...core.triangle import Triangle
 from ...core.validate import as_int, as_size
 from ...pipeline.geometry.camera import perspective
 from ...pipeline.rendering.render_scenes import render
-from ...pipeline.visibility.depth import linear_depth
+from ...pipeline.visibility.depth import linear_depth, reversed_depth
 from .. import precision
-from .ground_truth import exact_coverage, uv_ground_truth
+from .ground_truth import exact_coverage, screen_offset_px, uv_ground_truth
 from .settings import (
     DEPTH_DISTANCES,
-    DEPTH_FORMATS,
     DEPTH_GAP,
-    DEPTH_MAPPINGS,
+    DEPTH_VARIANTS,
     EDGE_VARIANTS,
     FAR,
     MESH_OFFSETS,
@@ -81,17 +80,37 @@ def _divides(cov: np.ndarray, mode: str, n: int) -> int:
     return int((-(-lengths // n) + ((lengths - 1) % n != 0)).sum())
 
 
+def floor_errors(size: int, interpolation: str, subdivision: int = 16, fills=None):
+    """The study's floor (:func:`floor_quad`) at ``size``² filled with ``interpolation``:
+    per covered pixel, the error of u and v in texels (P, 2) and how far on screen it moves
+    the texture, in pixels (P,) (:func:`~.ground_truth.screen_offset_px`); and the two
+    triangles' coverages. ``fills`` are the two triangles' fills when already made.
+
+    >>> texels, px, _ = floor_errors(64, "subdivided", 2)
+    >>> texels.shape[1], bool(px.max() < 1 < texels.max())   # far on the texture, near on screen
+    (2, True)
+    """
+    xy, w, uv = floor_quad(size)
+    if fills is None:
+        fills = [rasterize(Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}), size, size,
+                           interpolation=interpolation, subdivision=subdivision)
+                 for t in range(2)]  # fmt: skip
+    texels, px, covs = [], [], []
+    for t, fl in enumerate(fills):
+        rows, cols = np.nonzero(fl.coverage)
+        error = fl.attrs["uv"][rows, cols] - uv_ground_truth(xy[t], w[t], uv[t], size, rows, cols)
+        texels.append(error * TEXELS)
+        px.append(screen_offset_px(xy[t], w[t], uv[t], rows, cols, error))
+        covs.append(fl.coverage)
+    return np.concatenate(texels), np.concatenate(px), covs
+
+
 def bench_interpolation(
     cfg: dict, repeat: int, progress: Progress, clock: Callable[[], float] = time.perf_counter
 ) -> list[dict]:
     size = cfg["interp"]
     xy, w, uv = floor_quad(size)
     tris = [Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}) for t in range(2)]
-    truth = []
-    for t in range(2):
-        cov = rasterize(tris[t], size, size).coverage
-        rows, cols = np.nonzero(cov)
-        truth.append((cov, uv_ground_truth(xy[t], w[t], uv[t], size, rows, cols)))
     modes = [("affine", "affine", 1), ("perspective", "perspective", 1)]
     modes += [(f"subdivided N={n}", "subdivided", n) for n in SUBDIVISIONS]
     rows_out, timers = [], []
@@ -100,17 +119,18 @@ def bench_interpolation(
         def fill(mode=mode, n=n):
             return [rasterize(t, size, size, interpolation=mode, subdivision=n) for t in tris]
 
-        errs = []
-        for fl, (cov, want) in zip(fill(), truth):
-            errs.append(np.abs(fl.attrs["uv"][cov] - want).ravel() * TEXELS)
-        err = np.concatenate(errs)
-        divides = sum(_divides(cov, mode, n) for cov, _ in truth)
+        texels, px, covs = floor_errors(size, mode, n, fills=fill())
+        err = np.abs(texels).ravel()
+        divides = sum(_divides(cov, mode, n) for cov in covs)
         rows_out.append(
             {
                 "group": "interpolation",
                 "variant": name,
                 "error": float(err.max()),
                 "mean_abs_texels": float(err.mean()),
+                # the same errors on screen: how far the texel shown belongs, in pixels
+                "error_px": float(px.max()),
+                "mean_error_px": float(px.mean()),
                 "divides_per_pixel": divides / len(err) * 2,  # err holds u and v: 2 per pixel
             }
         )
@@ -321,16 +341,39 @@ def _in_cell(k: int, shape: np.ndarray, shift: float, d, aspect: float) -> np.nd
 
 
 def depth_clip(view: np.ndarray, mapping: str, aspect: float = 1.0) -> np.ndarray:
-    """Clip coordinates storing the window depth, or ``linear_depth`` of the view distance."""
+    """Clip coordinates storing the window depth, ``linear_depth`` of the view distance, or
+    (``"reversed"``) reverse-Z's ``reversed_depth`` (near 1, far 0: draw it with
+    :func:`greater_passes`)."""
     proj = perspective(60.0, aspect, NEAR, FAR)
     homo = np.concatenate([view, np.ones(view.shape[:2] + (1,))], axis=2)
     clip = homo @ proj.T
-    if mapping == "linear":
-        # z_win = (z/w)/2 + 1/2 = linear_depth  <=>  z = w (2 linear_depth - 1); exact per
-        # vertex, and affine across camera-facing triangles (not across slanted ones).
+    mapped = {"linear": linear_depth, "reversed": reversed_depth}.get(mapping)
+    if mapped is not None:
+        # z_win = (z/w)/2 + 1/2 = d  <=>  z = w (2 d - 1); exact per vertex. The reversed depth
+        # is affine on screen across any triangle (it is affine in 1/z, as window depth is),
+        # linear depth only across camera-facing ones. Both keep the clip planes: the
+        # reversed z is -z (far and near swap), computed from reversed_depth so that a far
+        # depth keeps its float64 digits (what 1 - d would round away).
         w = clip[..., 3]
-        clip[..., 2] = w * (2 * linear_depth(-view[..., 2], NEAR, FAR) - 1)
+        clip[..., 2] = w * (2 * mapped(-view[..., 2], NEAR, FAR) - 1)
     return clip
+
+
+def greater_passes(depths, writes) -> list[bool]:
+    """Reverse-Z's depth test of one pixel, for ``tr.render(..., overrides={"depth": ...})``:
+    the buffer cleared to 0 (the far plane), a fragment passes when its stored depth is
+    strictly greater than the buffer's (``GL_GREATER``), so a tie keeps the earlier fragment,
+    as the package's own strict test does.
+
+    >>> greater_passes([0.2, 0.5, 0.5, 0.1], [True] * 4)
+    [True, True, False, False]
+    """
+    stored, passed = 0.0, []
+    for d, writes_depth in zip(depths, writes):
+        passed.append(bool(d > stored))
+        if passed[-1] and writes_depth:
+            stored = d
+    return passed
 
 
 def bench_depth(
@@ -348,30 +391,30 @@ def bench_depth(
     slanted, _ = slanted_pairs()
     slanted_truth = render(depth_clip(slanted, "window"), size, size).triangle_id
     rows_out, timers = [], []
-    for mapping in DEPTH_MAPPINGS:
+    for mapping, fmt in DEPTH_VARIANTS:
         clip = depth_clip(view, mapping)
         slanted_clip = depth_clip(slanted, mapping)
-        for fmt in DEPTH_FORMATS:
+        test = {"overrides": {"depth": greater_passes}} if mapping == "reversed" else {}
 
-            def draw(clip=clip, fmt=fmt):
-                return render(clip, size, size, depth_format=fmt)
+        def draw(clip=clip, fmt=fmt, test=test):
+            return render(clip, size, size, depth_format=fmt, **test)
 
-            wrong = draw().triangle_id != truth
-            crossing = render(slanted_clip, size, size, depth_format=fmt).triangle_id
-            slanted_wrong = int((crossing != slanted_truth).sum())
-            bad_pairs = sorted(set(pair_of[wrong].tolist()) - {-1})
-            first = DEPTH_DISTANCES[bad_pairs[0]] if bad_pairs else ""
-            rows_out.append(
-                {
-                    "group": "depth",
-                    "variant": f"{mapping} {fmt}",
-                    "error": int(wrong.sum()) + slanted_wrong,
-                    "facing_wrong": int(wrong.sum()),
-                    "slanted_wrong": slanted_wrong,
-                    "first_inverted_z": first,
-                    "inverted_pairs": len(bad_pairs),
-                }
-            )
-            timers.append(draw)
-            progress.step(f"depth: {mapping} {fmt}")
+        wrong = draw().triangle_id != truth
+        crossing = render(slanted_clip, size, size, depth_format=fmt, **test).triangle_id
+        slanted_wrong = int((crossing != slanted_truth).sum())
+        bad_pairs = sorted(set(pair_of[wrong].tolist()) - {-1})
+        first = DEPTH_DISTANCES[bad_pairs[0]] if bad_pairs else ""
+        rows_out.append(
+            {
+                "group": "depth",
+                "variant": f"{mapping} {fmt}",
+                "error": int(wrong.sum()) + slanted_wrong,
+                "facing_wrong": int(wrong.sum()),
+                "slanted_wrong": slanted_wrong,
+                "first_inverted_z": first,
+                "inverted_pairs": len(bad_pairs),
+            }
+        )
+        timers.append(draw)
+        progress.step(f"depth: {mapping} {fmt}")
     return time_rows(rows_out, timers, repeat, progress, "window float64", clock=clock)

@@ -16,6 +16,12 @@ EDGE_VARIANTS = tuple(
 MESH_OFFSETS = (0, 100_000, 1_000_000)
 DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
 DEPTH_MAPPINGS = ("window", "linear")
+#: The depth variants, (mapping, format): every format for both mappings, and reverse-Z
+#: (``reversed_depth``, the test reversed: greater wins) in float32, the one format it is for
+#: (a unorm's even steps make reversing change nothing: lesson 05b §4).
+DEPTH_VARIANTS = tuple((m, f) for m in DEPTH_MAPPINGS for f in DEPTH_FORMATS) + (
+    ("reversed", "float32"),
+)
 #: View distances of the depth pairs, and the gap between the two triangles of a pair.
 DEPTH_DISTANCES = (1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0)
 DEPTH_GAP = 0.01
@@ -35,7 +41,7 @@ ERROR_MEASURE = {
 }
 #: Extra columns printed in the table, per group (all of them go to the CSV).
 TABLE_COLUMNS = {
-    "interpolation": ("mean_abs_texels", "divides_per_pixel"),
+    "interpolation": ("mean_abs_texels", "error_px", "mean_error_px", "divides_per_pixel"),
     "edge functions": ("gaps", "double_hits", "wrong_px_unsnapped_geometry"),
     "fill": ("coverage_median_s",),
     "depth": ("facing_wrong", "slanted_wrong", "first_inverted_z"),
@@ -72,5 +78,5 @@ def variant_names(quick: bool = False) -> dict[str, list[str]]:
         "interpolation": ["affine", "perspective"] + [f"subdivided N={n}" for n in SUBDIVISIONS],
         "edge functions": [f"{a} {e}" for a, e in EDGE_VARIANTS],
         "fill": fill,
-        "depth": [f"{m} {f}" for m in DEPTH_MAPPINGS for f in DEPTH_FORMATS],
+        "depth": [f"{m} {f}" for m, f in DEPTH_VARIANTS],
     }

@@ -13,14 +13,15 @@ from html import escape
 
 from .settings import ERROR_MEASURE
 
-#: The operation columns: (header, key, format, width).
+#: The operation columns: (header, key, format, width); "Pentium" is the cost in issue cycles
+#: at :data:`~teachraster.study.operation_counts.PENTIUM_CYCLES`, the prices of ``with_counts``.
 OP_COLUMNS = (
     ("error", "error", "9.3g", 9),
     ("div", "divides", "7.4g", 7),
     ("mul", "multiplies", "7.4g", 7),
     ("add", "additions", "9.4g", 9),
     ("bits", "bits", "", 5),
-    ("cycles", "cycles", "9.4g", 9),
+    ("Pentium", "cycles", "9.4g", 9),  # issue cycles at the Pentium's prices (the default)
 )
 
 
@@ -43,7 +44,10 @@ def ratio(a: dict, b: dict, timer: str = "time") -> float:
 
 
 def table_parts(
-    rows: Iterable[dict], group: str, extra: Iterable[tuple[str, Callable]] = ()
+    rows: Iterable[dict],
+    group: str,
+    extra: Iterable[tuple[str, Callable]] = (),
+    errors: Iterable[tuple[str, Callable]] = (),
 ) -> dict:
     """One group's table in parts: ``heading``, ``measure``, ``header`` (the columns that
     separate variants), ``body`` (a list of cells per variant), ``widths`` and ``note`` (the
@@ -57,12 +61,16 @@ def table_parts(
         The group to print (``"interpolation"``, ``"edge functions"``, ``"fill"``, ``"depth"``).
     extra : iterable of (header, format)
         Columns of the group's own: ``format(row)`` gives the cell's text.
+    errors : iterable of (header, format)
+        More columns of the group's own, shown right after ``error`` (the same error in
+        other units).
     """
     block = [r for r in rows if r["group"] == group]
     columns = [
         (head, (lambda r, k=key, f=fmt: "-" if r[k] is None else format(r[k], f)), w)
         for head, key, fmt, w in OP_COLUMNS
     ]
+    columns[1:1] = [(head, fmt, max(6, len(head))) for head, fmt in errors]
     columns += [(head, fmt, max(6, len(head))) for head, fmt in extra]
     cells = {head: [fmt(r).strip() for r in block] for head, fmt, _ in columns}
     shown = [c for c in columns if len(set(cells[c[0]])) > 1]
@@ -82,11 +90,14 @@ def table_parts(
 
 
 def table_lines(
-    rows: Iterable[dict], group: str, extra: Iterable[tuple[str, Callable]] = ()
+    rows: Iterable[dict],
+    group: str,
+    extra: Iterable[tuple[str, Callable]] = (),
+    errors: Iterable[tuple[str, Callable]] = (),
 ) -> list[str]:
     """The lines of one group's table (:func:`table_parts`), each at most about 80 characters:
     a heading, the error measure, the header and a line per variant, then the note."""
-    t = table_parts(rows, group, extra)
+    t = table_parts(rows, group, extra, errors)
 
     def line(cells):
         name_w, *widths = t["widths"]
@@ -128,14 +139,16 @@ def table_html(parts: dict) -> str:
 
 
 def table(rows: list[dict], group: str, extra: Iterable[tuple[str, Callable]] = (), *,
-          html: bool = False, keep: Callable[[dict], bool] | None = None) -> list[dict]:  # fmt: skip
+          html: bool = False, keep: Callable[[dict], bool] | None = None,
+          errors: Iterable[tuple[str, Callable]] = ()) -> list[dict]:  # fmt: skip
     """Print :func:`table_lines` (or, with ``html``, display :func:`table_html`: readable on
-    a projector) and return the group's rows; ``keep`` selects the rows shown and returned."""
+    a projector) and return the group's rows; ``keep`` selects the rows shown and returned,
+    ``errors`` adds columns after the error's (:func:`table_parts`)."""
     rows = [r for r in rows if r["group"] == group and (keep is None or keep(r))]
     if html:
         from IPython.display import HTML, display
 
-        display(HTML(table_html(table_parts(rows, group, extra))))
+        display(HTML(table_html(table_parts(rows, group, extra, errors))))
     else:
-        print("\n".join(table_lines(rows, group, extra)))
+        print("\n".join(table_lines(rows, group, extra, errors)))
     return rows
