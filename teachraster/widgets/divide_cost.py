@@ -215,8 +215,11 @@ class DivideCostExplorer(Shown):
             raise ValueError(f"prices must be one of {list(PRICES)}, got {prices!r}")
         divide = PRICES[prices]["divides"] if divide is None else divide
         self.backend = resolve_backend(backend)
-        self.prices = widgets.ToggleButtons(options=list(PRICES), value=prices,
-                                            style={"button_width": "auto"})  # fmt: skip
+        # short labels, the full names as tooltips: with the full names the controls took four
+        # rows in a 592-px column (test_browser_layout's limit is three)
+        self.prices = widgets.ToggleButtons(
+            options=[(name.split(" (")[0], name) for name in PRICES], value=prices,
+            tooltips=list(PRICES), style={"button_width": "auto"})  # fmt: skip
         # a list of prices, not a log grid: 2^(k/4) skips 30, and the slider snapped the
         # model's 30 to 32 while the lesson printed 30 (review r5, 06-2)
         # the description at its own width, flush left: at the default width it sat right-aligned
@@ -257,8 +260,11 @@ class DivideCostExplorer(Shown):
             "addition = 1). Vermillion: the Pareto front, the variants for which "
             f"{FRONT_DEFINITION}. Grey: off it. Hollow: on its line, off it.</span>",
         )
-        controls = control_row([labelled("prices", self.prices), self.divide, self.attributes,
-                                labelled("error", self.error)])  # fmt: skip
+        # the two choices on one line, the two sliders under them: in one wrapping row the four
+        # controls took four lines of a 592-px column, each alone
+        controls = widgets.VBox([
+            control_row([labelled("prices", self.prices), labelled("error", self.error)]),
+            control_row([self.divide, self.attributes])])  # fmt: skip
         self.widget = projector_text(
             widgets.VBox([title, controls, self.info, self.display.widget]), title
         )
