@@ -1717,7 +1717,8 @@ def test_divide_cost_attribute_slider_moves_where_n2_leaves_the_front():
     ex = DivideCostExplorer(rows, backend="image")
     try:
         assert ex.attributes.value == 2 and {1, 2, 16, 32} <= set(ATTRIBUTE_COUNTS)
-        assert ex.attributes in ex.widget.children[1].children  # on the controls' row
+        sliders = ex.widget.children[1].children[1]  # the controls' second row: the sliders
+        assert ex.attributes in sliders.children and ex.divide in sliders.children
         assert "up to 3 cycles" in ex.info.value  # d + 7 against 2 + (d + 13)/2 (Pentium)
         ex.divide.value = 4.0
         assert "subdivided N=2" in ex.front
