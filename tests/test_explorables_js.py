@@ -166,7 +166,7 @@ def test_tint_buttons_name_the_chosen_triangles_edges():
     assert [label for _, label in b[1:4]] == ["E32's", "E24's", "E43's"]
     assert [value for value, _ in a] == [value for value, _ in b]  # the same edge slots
     for name in ("E32 (v3→v2)", "E24 (v2→v4)", "E43 (v4→v3)"):  # as the explorer's table says
-        assert f"<b>{name}</b>" in table
+        assert f">{name}</b>" in table  # the name in bold (one line: r231 02-7)
 
 
 def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on():
@@ -179,7 +179,7 @@ def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on()
     row_b = table.split("<tr>")[2]
     assert "counter-clockwise on screen: tested on its edges walked backwards" in row_b
     for name in ("E23 (v2→v3)", "E42 (v4→v2)", "E34 (v3→v4)"):
-        assert f"<b>{name}</b>" in row_b
+        assert f">{name}</b>" in row_b
     assert "E32" not in row_b and "clockwise on screen" in table.split("<tr>")[1]
     labels = call_js(EDGES, [("edgeLabels", [scene["B"], ["E32", "E24", "E43"]])])[0]
     assert all(label["flipped"] for label in labels)
@@ -192,6 +192,46 @@ def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on()
     assert [label for _, label in tints[1:4]] == ["E23's", "E42's", "E34's"]
     assert [value for value, _ in tints[1:4]] == ["E12", "E23", "E31"]  # the same slots
     assert [label for _, label in tints_a[1:4]] == ["E12's", "E23's", "E31's"]  # A clockwise
+
+
+def test_one_edge_has_its_two_names_linked_and_its_table_cell_does_not_break_its_bias():
+    """Review r231 02-13: with B counter-clockwise the pointer's readout and the 3-D values
+    said "E32 = ..." while the labels and the table said "E23": the readouts now link the two
+    names, "E32 = −E23". 02-7: the table wrapped "right, bias / −1"; the kind and bias stay
+    on one line."""
+    quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [2.5, 6.5]]  # v4 over A: B turns CCW
+    scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
+    names_b, names_a, said, table = call_js(EDGES, [
+        ("valueNames", [scene["B"], "B"]), ("valueNames", [scene["A"], "A"]),
+        ("describe", [scene, [6.2, 5.7], "B", 14, 12]), ("edgeTable", [scene])])  # fmt: skip
+    assert names_b == ["E32 = −E23", "E24 = −E42", "E43 = −E34"]
+    assert names_a == ["E12", "E23", "E31"]  # clockwise: one name each
+    assert "<b>E32 = −E23</b> = " in said and "<b>E43 = −E34</b> = " in said
+    assert table.count('<span style="white-space:nowrap">') == 6
+    assert '<span style="white-space:nowrap">right, bias −1</span>' in table
+
+
+def test_owner_badges_stand_on_grid_corners_clear_of_the_signs():
+    """Review r231 02-7: a ringed centre's owner badge stood inside its cell, over the left
+    sign of "+0+"; it now stands on the cell's corner, half a pixel from every centre, and
+    takes the upper corner where a vertex's dot pushes the centre's signs below it."""
+    from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
+
+    scene = call_js(EDGES, [("edgeScene", [[list(v) for v in DEFAULT_VERTICES], 16, 14])])[0]
+    cell, m = 42.0, {"left": 30, "top": 26}
+    shared = scene["shared"]
+    assert len(shared) > 5
+    calls = [("badgeCentre", [scene, s["row"], s["col"], cell, m]) for s in shared]
+    got = call_js(EDGES, calls)
+    for s, (x, y) in zip(shared, got, strict=True):
+        cx, cy = m["left"] + (s["col"] + 0.5) * cell, m["top"] + (s["row"] + 0.5) * cell
+        assert abs(abs(x - cx) - cell / 2) < 1e-9 and abs(abs(y - cy) - cell / 2) < 1e-9
+        assert x < cx  # a left corner
+    # a vertex on a ringed centre: its badge takes the upper left corner
+    s = shared[0]
+    cx, cy = m["left"] + (s["col"] + 0.5) * cell, m["top"] + (s["row"] + 0.5) * cell
+    ((x, y),) = call_js(EDGES, [("badgeCentre", [scene, s["row"], s["col"], cell, m, [[cx, cy]]])])
+    assert y == cy - cell / 2
 
 
 def test_edge_labels_stand_clear_of_the_edges_centres():

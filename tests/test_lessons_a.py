@@ -1115,7 +1115,9 @@ def test_02_top_and_left_are_read_off_the_edge_vector_in_words():
     assert "is a **left** edge iff it goes up, $v_b < v_a$" in flat
     assert "a **top** edge iff it is horizontal and goes right, $v_b = v_a$ and $u_b > u_a$" in flat
     assert "gradient" in flat and "however slanted it looks" in flat
-    assert at > next(i for i, t in enumerate(text) if t.startswith("q_diagonal.hold()"))
+    assert at > next(i for i, t in enumerate(text) if t.startswith("q_square.hold()"))
+    # review r231 02-8: the directed edges are labelled by the student before §5b reads them off
+    assert at > next(i for i, t in enumerate(text) if t.startswith("q_edge12.hold()"))
     # the internal review tags are gone from what a student unfolds (review r169 02-11)
     assert not any(re.search(r"\(review r\d+", t) for t in text)
     assert "by accident" not in "".join(text)
@@ -1137,6 +1139,102 @@ def test_02_reordered_triangle_and_the_shared_row():
     # review r224-02 #2: snapping is seen once, a vertex off the grid moves (1.125 a tie, to even)
     assert "(3.25, 1), (14.5, 6.25)" in ns.off_grid.trace.caption(0)
     assert "a tie to the even multiple" in text and "subpixel_bits=2" in text
+
+
+@pytest.mark.notebook
+def test_02_r231_raw_floats_are_counted_and_the_snapping_cited_as_the_specs_say():
+    """Review r231 02-1..4: "switch off the snapping: the rule still holds" held only for the
+    square's binary halves; §5b now counts raw floats against snapped integers on random
+    shared-edge pairs (0.1-px grid). The 16.8 format is §15.16's, not §3.4.1's; a tie's
+    rounding is the package's and llvmpipe's choice (D3D11 allows 0.6 ULP); GL and Vulkan
+    promise "exactly one" for a common edge with identical endpoints, which a T-junction breaks."""
+    ns = lesson("02_half_planes")
+    on, twice, missed, wrong = ns.tally[None]
+    assert on > 50 and twice > 0 and missed > 0 and 0 < wrong < ns.n_pairs  # raw floats
+    assert ns.tally[8] == [on, 0, 0, 0]  # snapped: every centre on a shared edge once
+    assert ns.first_wrong is not None and ns.n_pairs == len(ns.float_pairs) == 100
+    assert all(x % 10 == 5 for x in ns.cj[0])  # centres in tenths, exact integers
+    code = _cells("02_half_planes", "code")
+    rule = next(c for c in code if c.startswith("q_square.hold()"))
+    flat_rule = re.sub(r"\s+", " ", rule)
+    assert "the rule still holds" not in flat_rule and "exact in binary" in flat_rule
+    assert "twice or not at all (§5b counts them)" in flat_rule
+    text = "\n".join(_cells("02_half_planes", "markdown"))
+    flat = re.sub(r"\s+", " ", text)
+    assert "**Raw floats are not exact.**" in flat and "Change `seed`" in flat
+    row = next(line for line in text.splitlines() if line.startswith("| Direct3D 11"))
+    assert "§15.16 *Rasterizer Precision* (16.8, exactly 8 bits)" in row
+    assert "§3.4.1 *Coordinate Snapping* (snapped to n.8 fixed point)" in row
+    assert "D3D11.3 §3.2.4.1 allows a D3D11 implementation 0.6 ULP" in flat
+    assert "OpenGL and Vulkan fix only the number of sub-pixel bits" in flat
+    assert "a tie to the even quarter)" not in flat  # the Try it says whose choice it is
+    for api in ("| OpenGL 4.6", "| Vulkan"):
+        line = next(x for x in text.splitlines() if x.startswith(api))
+        assert "common edge (with identical endpoints)" in line, api
+    assert "**T-junction**" in flat and "Lesson 07 (*Hard cases*, section 1)" in flat
+
+
+@pytest.mark.notebook
+def test_02_r231_figures_show_what_their_text_points_at():
+    """Review r231 02-5, 02-6: the square's right and bottom centres, which the rule leaves to
+    the neighbours, were under its outline; they are counted and drawn over it. The 4-sample
+    view is zoomed: the pixels with their centre out and a sample in, large."""
+    ns = lesson("02_half_planes")
+    assert int(ns.outer.sum()) == int(ns.left_out.sum()) == 25 == 13 + 12
+    assert not (ns.counts["top-left rule"][ns.outer]).any()
+    assert (ns.counts["naive E >= 0"][ns.outer] >= 1).all()  # the naive test takes them
+    assert int(ns.four.coverage.sum()) == 83 and int(ns.centre_in.sum()) == 70
+    assert int(ns.sample_only.sum()) == 13 and int((ns.sample_only & ns.zoomed).sum()) == 5
+    assert np.array_equal(ns.four.coverage, tr.rasterize(ns.tri, ns.W, ns.H, samples=4).coverage)
+    code = _cells("02_half_planes", "code")
+    held = next(c for c in code if c.startswith("q_square.hold()"))
+    assert "mine = outer & (n == 0)" in held and '"D", ms=9, mfc="white"' in held
+    zoom = next(c for c in code if "sample_only_face" in c)
+    assert "plot_samples(ax, four" in zoom and "ax.set(xlim=(col0" in zoom
+
+
+@pytest.mark.notebook
+def test_02_r231_the_directed_edges_are_predicted_and_the_rest():
+    """Review r231 02-8..16: a prediction on the lesson's own rule (each directed edge of a
+    triangle labelled with its kind and bias, three choices held until checked, before §5b);
+    the bail-out question's folded first line no longer gives its method; the signed distance;
+    the naive test and the square in a visible cell; snapping named before it is used; lesson
+    07 pointed to."""
+    ns = lesson("02_half_planes")
+    assert ns.wedge_answers == ["right, bias −1", "bottom, bias −1", "left, bias 0"]
+    assert tr.Triangle(ns.wedge).signed_area > 0  # clockwise on screen: walked as given
+    nb = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())
+    cells, text = nb["cells"], ["".join(c["source"]) for c in nb["cells"]]
+    ask = next(i for i, t in enumerate(text) if "edge_questions = [" in t)
+    held = next(i for i, t in enumerate(text) if t.startswith("q_edge12.hold()"))
+    five_b = next(i for i, t in enumerate(text) if t.startswith("### 5b."))
+    assert ask < held < five_b and held == ask + 1
+    assert "PredictChoice(" in text[ask] and "answer=wedge_answers[k]" in text[ask]
+    assert all(f"q_edge{e}.hold()" in text[held] for e in ("12", "23", "31"))
+    for i in (ask, held):
+        assert cells[i]["metadata"] == {"jupyter": {"source_hidden": True},
+                                        "tags": ["hide-input"]}  # fmt: skip
+    before = "".join(text[:ask])
+    assert "goes up, $v_b < v_a$" not in before and "bias of 0 for a top" not in before
+    # the bail-out question's first line (shown folded) names no method
+    bail = next(t for t in text if "q_bailout = PredictPixels(" in t)
+    assert "E12" not in bail.split("\n", 1)[0] and "maps" not in bail.split("\n", 1)[0]
+    assert "section 2's pictures" in bail  # said with the answer instead
+    # the signed distance, printed
+    assert ns.dist23 == pytest.approx(-54.9375 / np.hypot(8.75, 8.25))
+    assert round(abs(ns.dist23), 2) == 4.57 and round(ns.length23, 2) == 12.03
+    flat = re.sub(r"\s+", " ", "\n".join(_cells("02_half_planes", "markdown")))
+    assert "**signed distance**" in flat
+    # the naive test and the square's triangles stand in a visible cell above the question
+    square_ask = next(i for i, t in enumerate(text) if "q_square = PredictPixels(" in t)
+    shown = [i for i, t in enumerate(text[:square_ask]) if "def naive_coverage(" in t]
+    assert shown and not cells[shown[0]]["metadata"].get("jupyter", {}).get("source_hidden")
+    assert "pair = [" in text[shown[0]] and "upper_tri, lower_tri = " in text[shown[0]]
+    assert not any("def naive_coverage(" in t for t in text[square_ask:])
+    # snapping named where the 1/256 px units first appear, before §5b
+    step_md = next(t for t in text if "The question below asks that amount" in t)
+    assert "rounded to a multiple of 1/256 px before any test" in re.sub(r"\s+", " ", step_md)
+    assert "Lesson 07 (*Hard cases*" in flat and "fans whose spokes run through pixel" in flat
 
 
 @pytest.mark.notebook
@@ -1646,7 +1744,9 @@ def test_02_player_and_editor():
 @pytest.mark.notebook
 def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
     """Review a1 02 c13: the Predict was answered by the rule above it. Now the student clicks
-    the diagonal centres the upper triangle owns, before the rule is spelled out."""
+    the centres on the upper triangle's sides that it owns, before the rule is spelled out
+    (review r231 02-8: the diagonal alone was lesson 01's x_left <= c, recalled; its top side,
+    its right side and its three corners ask for the rule's every case)."""
     ns = lesson("02_half_planes")
     cells = json.loads((NOTEBOOKS / "02_half_planes.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
@@ -1655,15 +1755,17 @@ def test_02_diagonal_prediction_is_clicked_before_the_rule_is_given():
     assert ask < rule
     # review r99 02-2: the rule stood in the Markdown cell right under the question, on screen
     # before Check; now it is printed by the held cell after it
-    assert rule == ask + 1 and text[rule].startswith("q_diagonal.hold()")
+    assert rule == ask + 1 and text[rule].startswith("q_square.hold()")
     assert "display(Markdown(RULE_TEXT))" in text[rule]
     assert not any("(interior to its right)" in c for c in _cells("02_half_planes", "markdown"))
     assert "left** edge" not in "".join(text[:ask]) and "upper_owns" in text[ask]
     k = np.arange(2, 14)
     expected = np.zeros((ns.H, ns.W), bool)
-    expected[k, k] = True  # (2.5, 2.5) .. (13.5, 13.5); the corner (14.5, 14.5) to neither
-    assert np.array_equal(ns.upper_owns, expected)
-    assert ns.diagonal_all.sum() == 13
+    expected[k, k] = True  # the diagonal (2.5, 2.5) .. (13.5, 13.5); C (14.5, 14.5) to neither
+    expected[2, 2:14] = True  # the top side (2.5, 2.5) .. (13.5, 2.5); B (14.5, 2.5) neither
+    assert np.array_equal(ns.upper_owns, expected) and ns.upper_owns.sum() == 23
+    assert not ns.upper_owns[:, 14].any()  # the right side: the neighbour's
+    assert ns.on_sides.sum() == 36 == 3 * 13 - 3  # three sides of 13 centres, corners shared
     # review r93 02-3: exactly one triangle of a mesh owns the corner (14.5, 14.5): the upper
     # triangle of the square below-right (not "the neighbours to the right and below")
     ask_text = re.sub(r"\s+", " ", text[ask])

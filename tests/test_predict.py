@@ -176,6 +176,29 @@ def test_a_whole_number_question_waits_for_a_whole_number():
         Predict("Which?", ["a", "b"], answer="a", whole=True)
 
 
+def test_thousands_separators_are_read_where_the_answer_is_printed_with_them():
+    # review r231 02-12: "-294,912", typed as lesson 02 prints it, was read as -294.912
+    q = Predict("How many units²?", answer=-294912, thousands=True, headless=False)
+    for typed in ("-294,912", "−294,912", "-294912"):
+        q.control.value = typed
+        assert q.given == -294912 and not q.check.disabled, typed
+    q.control.value = "-294.912"  # a decimal point stays one: a number, checkable, wrong
+    assert q.given == -294.912 and not q.check.disabled
+    q.control.value = "0,5"  # a decimal comma outside groups of three digits stays one
+    assert q.given == 0.5
+    q.close()
+    plain = Predict("How far?", answer=0.25, headless=False)
+    plain.control.value = "1,250"  # without thousands: the decimal comma, as ever
+    assert plain.given == 1.25
+    plain.close()
+    whole = Predict("How many?", answer=1024, whole=True, headless=False)
+    whole.control.value = "1,024"  # a whole-number question reads thousands too
+    assert whole.given == 1024 and not whole.check.disabled
+    whole.close()
+    with pytest.raises(ValueError, match="numeric"):
+        Predict("Which?", ["a", "b"], answer="a", thousands=True)
+
+
 def test_check_waits_for_an_answer():
     q = Predict("How many?", answer=10, tolerance=1, headless=False)
     assert q.check.disabled  # nothing given yet

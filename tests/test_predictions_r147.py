@@ -139,15 +139,16 @@ def test_12a_q_tie_table_is_held():
     assert "lower row" not in seen and "| x-major" not in seen and "GL 1" not in seen
 
 
-def test_02_q_diagonal_names_what_it_asks():
+def test_02_q_square_names_what_it_asks():
     """r147: the widget said "pixels you expect lit" for a question on which centres the
-    upper triangle fills."""
+    upper triangle fills (r231 02-8: asked on all three of its sides now, q_square)."""
     ns = lesson("02_half_planes")
-    assert ns.upper_owns.sum() == 12
-    code = _source(_cells("02_half_planes")[_ask_index(_cells("02_half_planes"), "q_diagonal =")])
+    assert ns.upper_owns.sum() == 23
+    code = _source(_cells("02_half_planes")[_ask_index(_cells("02_half_planes"), "q_square =")])
     assert 'picked="filled by the upper triangle"' in code
-    seen = seen_before_check("02_half_planes", "q_diagonal = PredictPixels(", "q_diagonal")
-    assert "(13.5, 13.5)" not in seen and "12 centres" not in seen
+    seen = seen_before_check("02_half_planes", "q_square = PredictPixels(", "q_square")
+    assert "(13.5, 13.5)" not in seen and "23 centres" not in seen
+    assert "(13.5, 2.5)" not in seen and "right and bottom sides" not in seen
 
 
 def test_02_q_step_is_asked_in_the_snapped_integers(monkeypatch):
@@ -165,8 +166,12 @@ def test_02_q_step_is_asked_in_the_snapped_integers(monkeypatch):
     # the stem's numbers, Check, the answer and the notes for the two near slips
     monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
     cell = _source(_cells("02_half_planes")[_ask_index(_cells("02_half_planes"), "q_step =")])
+    # review r231 02-12: typed as the lesson prints it, "-294,912" is the answer (a comma
+    # between groups of three digits separates thousands), not -294.912
     for typed, right, note in (("-294912", True, None), ("-1152", False, "one unit"),
-                               ("-4.5", False, "in px²"), ("-294.912", False, None)):  # fmt: skip
+                               ("-4.5", False, "in px²"), ("-294.912", False, None),
+                               ("-294,912", True, None), ("−294,912", True, None),
+                               ("-1,152", False, "one unit")):  # fmt: skip
         scope = {"np": np, "Predict": Predict, "v1": ns.v1, "v2": ns.v2}
         exec(cell, scope)
         q = scope["q_step"]

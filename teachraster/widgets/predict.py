@@ -35,6 +35,7 @@ import io
 import itertools
 import math
 import os
+import re
 import struct
 from collections.abc import Callable, Mapping, Sequence
 
@@ -186,14 +187,28 @@ class HoldsAnswer:
                                  transient={"display_id": held.pop(0)}, update=True)  # fmt: skip
 
 
-def parse_number(text) -> float | None:
+#: A whole number written with commas between groups of three digits, "-294,912"
+THOUSANDS = re.compile(r"[+-]?\d{1,3}(,\d{3})+")
+
+
+def parse_number(text, *, thousands: bool = False) -> float | None:
     """A typed number, or None: ``"0,25"`` (a decimal comma), ``"3/4"``, ``"20 %"`` (the
-    number 20: the question says what it counts), ``"1e-3"``; None for anything else.
+    number 20: the question says what it counts), ``"1e-3"``, ``"−4.5"`` (a true minus sign,
+    as the lessons print it); None for anything else.
+
+    With ``thousands`` (a question whose answer is printed with thousands separators, or one
+    asking for a whole number), commas between groups of three digits separate thousands: ``"-294,912"``, typed as a lesson prints it, is -294912, not
+    -294.912 (review r231 02-12).
 
     >>> parse_number("3/4"), parse_number(" 20 % "), parse_number("0,5"), parse_number("")
     (0.75, 20.0, 0.5, None)
+    >>> parse_number("−294,912"), parse_number("−294,912", thousands=True)
+    (-294.912, -294912.0)
     """
-    t = str(text).strip().replace(",", ".").removesuffix("%").strip()
+    t = str(text).strip().replace("\u2212", "-")
+    if thousands and THOUSANDS.fullmatch(t):
+        t = t.replace(",", "")
+    t = t.replace(",", ".").removesuffix("%").strip()
     try:
         if t.count("/") == 1:
             num, den = (float(p) for p in t.split("/"))
@@ -271,7 +286,11 @@ class Predict(HoldsAnswer):
     whole : bool
         A numeric question that asks for a whole number: Check stays disabled, its tooltip
         saying so, until the number typed is one (review r170 05b-6: "2.5" was graded wrong
-        with no word about the format).
+        with no word about the format). Commas then separate thousands, as ``thousands``.
+    thousands : bool
+        A numeric question whose answer the lesson prints with thousands separators: commas
+        between groups of three digits are read as such, "-294,912" as -294912, not -294.912
+        (review r231 02-12); a decimal comma elsewhere ("0,5") is still one.
 
     Attributes
     ----------
@@ -309,11 +328,15 @@ class Predict(HoldsAnswer):
         style: str | None = "classroom",
         notes: Mapping | None = None,
         whole: bool = False,
+        thousands: bool = False,
     ) -> None:
         self.choices, self.tolerance = _check_arguments(question, choices, answer, tolerance)
         if whole and self.choices:
             raise ValueError("whole=True is for a numeric question, not for choices")
         self.whole = bool(whole)
+        if thousands and self.choices:
+            raise ValueError("thousands=True is for a numeric question, not for choices")
+        self.thousands = bool(thousands) or self.whole
         self.notes = _check_notes(notes, self.choices)
         if figure is not None and not callable(figure):
             raise TypeError(f"figure must be callable or None, got {type(figure).__name__}")
@@ -360,7 +383,8 @@ class Predict(HoldsAnswer):
 
     def _missing(self) -> str:
         """Check's tooltip while no valid answer is given."""
-        if self.whole and not self.choices and parse_number(self.control.value) is not None:
+        typed = parse_number(self.control.value, thousands=self.thousands)
+        if self.whole and not self.choices and typed is not None:
             return "type a whole number"
         return "give your answer first"
 
@@ -387,7 +411,7 @@ class Predict(HoldsAnswer):
         value = self._kept if self.revealed else self.control.value
         if self.choices:
             return value
-        number = parse_number(value)
+        number = parse_number(value, thousands=self.thousands)
         if number is not None and self.whole and number != round(number):
             return None
         return number

@@ -95,10 +95,15 @@ function mount(el, data, host) {
     const chosen = state.chosen === "A" ? scene.A : scene.B;
     drawHalfPlanes(ctx, chosen, W, H, toPx, cell, state.tint);
     drawGrid(ctx, m.left, m.top, W, H, cell, data.colors.grid, true);
+    // the rings and the edges first, the signs over them (a white halo keeps a "0" on its
+    // edge readable: drawn under the ring and the line, "0" read as "C", review r231 02-7),
+    // then the owners' badges and the vertices' dots and names
+    drawRings(ctx, scene, cell, m);
+    drawTriangles(ctx, state, toPx, data.colors);
     drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover,
       state.vertices.map(toPx));
-    drawShared(ctx, scene, cell, m, data.colors);
-    drawTriangles(ctx, state, toPx, data.colors);
+    drawBadges(ctx, scene, cell, m, state.vertices.map(toPx));
+    drawVertices(ctx, state, toPx);
     drawEdgeLabels(ctx, chosen, state, toPx, W, H);
     if (ui.relabel) ui.relabel(chosen); // a drag can reverse the winding, and so the names
     table.innerHTML = edgeTable(scene);
@@ -335,6 +340,11 @@ function sprite(text, colour, size, dpr) {
     x.font = `bold ${size}px monospace`;
     x.textAlign = "center";
     x.textBaseline = "middle";
+    // a white halo: the glyph is drawn over the edges' lines and the rings
+    x.lineWidth = Math.max(2, size * SIGN_HALO);
+    x.lineJoin = "round";
+    x.strokeStyle = "#fff";
+    x.strokeText(text, size / 2, size * 0.65);
     x.fillStyle = colour;
     x.fillText(text, size / 2, size * 0.65);
     SPRITES.set(key, c);
@@ -349,6 +359,8 @@ function sprite(text, colour, size, dpr) {
 // glyphs SIGN_GAP of a cell apart allow without touching). Three of them stay inside their
 // pixel; with one half-plane tinted its sign alone is drawn, ONE_SIGN_SCALE of a cell.
 export const ONE_SIGN_SCALE = 0.75;
+// the white halo round each glyph, a share of its size
+export const SIGN_HALO = 0.16;
 export const SIGN_SCALE = 0.48;
 export const SIGN_GAP = 0.3;
 export function signSize(cell, width) {
@@ -415,7 +427,9 @@ export function belowDot(cx, cy, size, cell, dots) {
 }
 
 // Which left corner of the cell (row, col) the owner's letter takes: the one farther from
-// the line of the shared edge v2-v3, "lower" on a tie (a horizontal edge).
+// the line of the shared edge v2-v3, "lower" on a tie (a horizontal edge). The letter's disc
+// is centred on that corner of the grid, half a pixel from every centre beside it: inside
+// the cell it stood over the centre's left sign (review r231 02-7).
 export function ownerCorner(scene, row, col) {
   const u = scene.A.unit;
   const [p, q] = [scene.A.given[1], scene.A.given[2]].map((v) => v.map((t) => t / u));
@@ -423,29 +437,44 @@ export function ownerCorner(scene, row, col) {
   return off(col, row + 1) >= off(col, row) ? "lower" : "upper";
 }
 
-function drawShared(ctx, scene, cell, m, colors) {
+function ownerColour(owner) {
+  return owner === "A" ? OKABE.blue : owner === "B" ? OKABE.orange
+    : owner === "both" ? "#000" : "#777";
+}
+
+// a ring round each centre of the shared edge, in the colour of the triangle that owns it
+function drawRings(ctx, scene, cell, m) {
   for (const { row, col, owner } of scene.shared) {
-    const cx = m.left + (col + 0.5) * cell;
-    const cy = m.top + (row + 0.5) * cell;
     ctx.lineWidth = 3;
-    ctx.strokeStyle = owner === "A" ? OKABE.blue : owner === "B" ? OKABE.orange
-      : owner === "both" ? "#000" : "#777";
+    ctx.strokeStyle = ownerColour(owner);
     ctx.beginPath();
-    ctx.arc(cx, cy, cell * 0.42, 0, 2 * Math.PI);
+    ctx.arc(m.left + (col + 0.5) * cell, m.top + (row + 0.5) * cell, cell * 0.42, 0, 2 * Math.PI);
     ctx.stroke();
-    // the owner's letter black on a white disc at the cell's corner: orange on B's light
-    // orange fill was nearly invisible, and 7 px high (review r93 02-4)
+  }
+}
+
+// Where the owner's letter stands (px): on the grid corner ownerCorner picks, clear of the
+// centre's signs and of its neighbours' (half a pixel from each). A centre under a vertex's
+// dot (`dots`, px) has its signs pushed below the dot (belowDot): its letter takes the upper
+// corner, clear of them (the vertex's name stands to the right).
+export function badgeCentre(scene, row, col, cell, m, dots = []) {
+  const [cx, cy] = [m.left + (col + 0.5) * cell, m.top + (row + 0.5) * cell];
+  const under = dots.some((p) => Math.abs(p[0] - cx) < cell * 0.5 && Math.abs(p[1] - cy) < cell * 0.5);
+  const low = !under && ownerCorner(scene, row, col) === "lower";
+  return [m.left + col * cell, m.top + (low ? row + 1 : row) * cell];
+}
+
+// the owner's letter black on a white disc: orange on B's light orange fill was nearly
+// invisible, and 7 px high (review r93 02-4)
+function drawBadges(ctx, scene, cell, m, dots) {
+  for (const { row, col, owner } of scene.shared) {
     const text = owner === "both" ? "AB" : owner === "none" ? "–" : owner;
     const size = Math.max(textPx(ctx, 14), Math.round(cell * 0.36));
     ctx.font = `bold ${size}px sans-serif`;
-    // at the cell's left corner farther from the shared edge's line, the lower one on a
-    // tie: a vertex's label stands above right of its dot, and at the upper left the letter
-    // ran into it on a horizontal edge, "v3B" (review r169 02-7)
-    const low = ownerCorner(scene, row, col) === "lower";
-    const [lx, ly] = [m.left + col * cell + size * 0.55,
-      low ? m.top + (row + 1) * cell - size * 0.55 : m.top + row * cell + size * 0.55];
+    const [lx, ly] = badgeCentre(scene, row, col, cell, m, dots);
     const r = Math.max(ctx.measureText(text).width / 2 + 2, size * 0.6);
     ctx.fillStyle = "#fff";
+    ctx.strokeStyle = ownerColour(owner);
     ctx.beginPath();
     ctx.arc(lx, ly, r, 0, 2 * Math.PI);
     ctx.fill();
@@ -487,6 +516,11 @@ function drawTriangles(ctx, state, toPx, colors) {
   ctx.stroke();
   ctx.setLineDash([]);
   for (let k = 0; k < 3; k++) arrowLine(ctx, v[chosen[k]], v[chosen[(k + 1) % 3]], EDGE_HUES[k], 3);
+}
+
+// each vertex's dot and name (above right of it), over the signs, which belowDot keeps off
+function drawVertices(ctx, state, toPx) {
+  const v = state.vertices.map(toPx);
   ctx.font = `bold ${textPx(ctx, 15)}px sans-serif`;
   v.forEach((p, i) => {
     ctx.fillStyle = "#000";
@@ -606,14 +640,25 @@ export function edgeTable(scene) {
   const rows = [["A", scene.A, ["E12 (v1→v2)", "E23 (v2→v3)", "E31 (v3→v1)"]],
     ["B", scene.B, ["E32 (v3→v2)", "E24 (v2→v4)", "E43 (v4→v3)"]]].map(([name, s, names]) => {
     if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
+    // the name and the kind each on one line: "right, bias / −1" wrapped (review r231 02-7)
     const cells = edgeLabels(s, names).map((e, k) =>
-      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}"><b>${walkedName(e)}</b> ` +
-      `${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}</td>`).join("");
+      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}">` +
+      `<b style="white-space:nowrap">${walkedName(e)}</b> <span style="white-space:nowrap">` +
+      `${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}</span></td>`).join("");
     const wind = s.originalArea2 > 0 ? "clockwise on screen"
       : "counter-clockwise on screen: tested on its edges walked backwards";
     return `<tr><td><b>${name}</b>, ${wind}</td>${cells}</tr>`;
   });
   return `<table>${rows.join("")}</table>`;
+}
+
+// An edge's value as the readouts give it: under its name as given, and for a triangle walked
+// backwards (counter-clockwise on screen) also under the name the labels and the table give it,
+// "E32 = −E23": one edge, its two names linked on the screen (review r231 02-13)
+export function valueNames(setup, chosen) {
+  const names = EDGE_NAMES[chosen];
+  if (setup.area2 === 0) return names;
+  return edgeLabels(setup, names).map((e) => (e.flipped ? `${e.name} = −${walkedName(e)}` : e.name));
 }
 
 // what the pointer is over: the centre's three edge values and who covers it
@@ -623,7 +668,7 @@ export function describe(scene, at, chosen, W, H) {
   const row = Math.floor(at[1]);
   if (col < 0 || row < 0 || col >= W || row >= H) return "";
   const setup = chosen === "A" ? scene.A : scene.B;
-  const names = EDGE_NAMES[chosen];
+  const names = valueNames(setup, chosen);
   const px2 = setup.unit * setup.unit;
   const e = givenValues(setup, row, col).map((v) => v / px2);
   const i = row * W + col;
@@ -748,16 +793,17 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   const c = cam.project([at[0], at[1], 0]);
   strokeLine(ctx, [c[0] - 6, c[1] - 6], [c[0] + 6, c[1] + 6], "#111", 2.5);
   strokeLine(ctx, [c[0] - 6, c[1] + 6], [c[0] + 6, c[1] - 6], "#111", 2.5);
-  // the values, in 2-D above the box: always inside the canvas
-  const names = EDGE_NAMES[chosen];
+  // the values, in 2-D above the box: always inside the canvas (the names as the readout
+  // under the picture gives them)
+  const names = valueNames(setup, chosen);
   ctx.fillStyle = "#111";
   ctx.font = `${size}px sans-serif`;
-  ctx.fillText(`E at the centre (${at[0]}, ${at[1]}), the black ✕ (point at a pixel to move it):`,
-    8, Math.round(size * 1.35));
+  ctx.fillText(`E (px²) at the centre (${at[0]}, ${at[1]}), the black ✕ (point at a pixel to ` +
+    "move it):", 8, Math.round(size * 1.35));
   ctx.font = `bold ${size}px sans-serif`;
   let x = 8;
   vals.forEach((e, k) => {
-    const text = `${names[k]} = ${fmt(e, 4)} px²`;
+    const text = `${names[k]} = ${fmt(e, 4)}`;
     ctx.fillStyle = EDGE_HUES[k];
     ctx.fillText(text, x, Math.round(size * 2.9));
     x += ctx.measureText(text).width + 18;
