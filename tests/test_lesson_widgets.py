@@ -868,16 +868,17 @@ def test_projection_explorer_ratio_moves_the_far_end_along_its_ray():
     ex.close()
 
 
-def test_projection_explorer_axes_stay_and_the_peak_is_marked():
-    """Review r144 04-2/3: the text says the segment's image on the screen stays put while
-    z1 / z0 moves, but the axes rescaled with the ratio (x to 0.7 at 1, to 4.2 at 8): they
-    hold every ratio of the slider now. The curve t(q) marks where |t - q| peaks (computed:
-    q* = sqrt(r) / (1 + sqrt(r)), 0.586 at r = 2), the caption prints it."""
-    from teachraster.plotting.projection import Segment
+def test_projection_explorer_fits_each_ratio_at_one_scale_and_the_peak_is_marked():
+    """Review r144 04-2/3 held the axes for every ratio of the slider; review r234 04-FIG1: at
+    the default ratio that left two thirds of the picture empty, the screen strip 60 px tall,
+    and x and z at unequal scales (the rays 2.7 times flatter than they are). The picture is
+    fitted to the current ratio at one scale, its keys beside it, over neither panel. The
+    curve t(q) marks where |t - q| peaks (computed: q* = sqrt(r) / (1 + sqrt(r)), 0.586 at
+    r = 2), the caption prints it."""
+    from teachraster.plotting.projection import Segment, frame_of
     from teachraster.widgets import ProjectionExplorer
 
     ex = ProjectionExplorer(Segment(-1.0, 1.0, 2.0, 4.0), backend="image")
-    picture, curve = ex.axes
     limits = {}
     for ratio in (1.0, 2.0, 8.0):
         ex.ratio.value = ratio
@@ -886,9 +887,20 @@ def test_projection_explorer_axes_stay_and_the_peak_is_marked():
         x, z = ex.segment.point([0.0, 1.0]).T
         (x_lo, x_hi), (z_lo, z_top) = limits[ratio]
         assert x_lo < x.min() and x.max() < x_hi and z_lo < z.min() and z.max() < z_top
-        # the key inside the axes, not beside them (60 % of the width was left for the picture)
-        box = picture.get_legend().get_window_extent()
-        assert picture.get_window_extent().contains(box.x0 + 1, box.y0 + 1)
+        lo, hi, top = frame_of([ex.segment])  # this ratio's segment alone
+        assert limits[ratio] == ((lo, hi), (-0.2, top)) and picture.get_aspect() == 1.0
+        # x and z at one scale on the page too: a unit as many pixels across as up
+        ex.fig.canvas.draw()
+        (px0, py0), (px1, py1) = picture.transData.transform([(0.0, 0.0), (1.0, 1.0)])
+        assert px1 - px0 == pytest.approx(py1 - py0, rel=1e-6)
+        # both keys beside the picture, over neither panel
+        assert picture.get_legend() is None and curve.get_legend() is None
+        keys = [a for a in ex._key_ax.get_children() if type(a).__name__ == "Legend"]
+        assert len(keys) == 2
+        for key in keys:
+            box = key.get_window_extent()
+            for panel in (picture, curve):
+                assert not panel.get_window_extent().overlaps(box)
         bars = [line for line in curve.get_lines() if "largest |t − q|" in str(line.get_label())]
         if ratio == 1.0:
             assert not bars and "t = q everywhere" in ex.info.value
@@ -904,7 +916,7 @@ def test_projection_explorer_axes_stay_and_the_peak_is_marked():
         assert np.ptp(bar.get_ydata()) == pytest.approx(ex.largest_gap)
         assert f"at q = {q_star:.3f}" in ex.info.value
         assert ratio != 2.0 or "0.172</b>, at q = 0.586" in ex.info.value
-    assert limits[1.0] == limits[2.0] == limits[8.0]
+    assert limits[1.0] != limits[8.0]  # refitted
     ex.close()
 
 

@@ -105,7 +105,7 @@ ANSWERED_BELOW = {
     },
     "03_barycentric_and_plane_equations": {"q_weights": ["λ1 v1 + λ2 v2 + λ3 v3 ="]},
     "04_perspective_correct_interpolation": {
-        "q_midpoint": ["t = q * z0 / (z1 - q * (z1 - z0))", "t_ritschel = ", "1 - t = (1 - q)"],
+        "q_point": ["t = q * z0 / (z1 - q * (z1 - z0))", "t_ritschel = ", "1 - t = (1 - q)"],
         "q_where": ["t = q * z0 / (z1 - q * (z1 - z0))", "1 - t = (1 - q)"],
         "q_affine": ["affine interpolation steps $v$ evenly"],
         "q_diagonal": ["$\\sqrt{2}$ times as far", "diagonal / side", "√2 ="],
@@ -1334,13 +1334,16 @@ def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_v
         sum("diagonal" in line for line in cells[ask].splitlines() if line.strip().startswith('"'))
         >= 2
     )
-    # the floor's renders in a hidden figure cell after the computing one (review r91 04-G)
-    # review r144 04-12: q_diagonal (ask + 2) between them, the text under the figure held
-    assert "dashed line is the diagonal" in cells[ask + 4] and "display(" in cells[ask + 4]
-    assert "q_diagonal = Predict(" in cells[ask + 2]
+    # the floor's renders in a hidden figure cell after the computing one (review r91 04-G),
+    # held by q_affine alone (r234 04-S2); review r144 04-12: q_diagonal (ask + 3) before the
+    # heatmap, the text under it held
+    assert "plot_image(ax, frames[mode]" in cells[ask + 2]
+    assert "dashed line is the diagonal" in cells[ask + 2] and "display(" in cells[ask + 2]
+    assert "dashed line is the diagonal" in cells[ask + 5] and "display(" in cells[ask + 5]
+    assert "q_diagonal = Predict(" in cells[ask + 3]
     assert all(
         nb["cells"][i]["metadata"].get("tags") == ["hide-input"]
-        for i in (ask + 2, ask + 3, ask + 4)
+        for i in (ask + 2, ask + 3, ask + 4, ask + 5)
     )
     assert any("plot_triangle(ax, tri" in c for c in cells)
     assert any("§14.6.1" in c and "(14.9)" in c and "(14.10)" in c for c in cells)
@@ -2381,16 +2384,17 @@ def test_00_04_answers_wait_for_check_r66():
     nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
     text = ["".join(c["source"]) for c in nb["cells"]]
     kinds = [c["cell_type"] for c in nb["cells"]]
-    ask = next(i for i, t in enumerate(text) if "q_midpoint = PredictPoint(" in t)
+    ask = next(i for i, t in enumerate(text) if "q_point = PredictPoint(" in t)
     boxed = next(i for i, t in enumerate(text) if r"\boxed{t =" in t)
     explorer = next(i for i, t in enumerate(text) if "ProjectionExplorer(" in t)
-    assert ask < explorer < boxed and text[explorer].startswith("q_midpoint.hold()")
-    # review r77 04-2: a ruler answers the drag; the belief (midpoint, nearer, farther) is
-    # asked first, recorded, and the drag's picture held until it is checked
+    assert ask < explorer < boxed and text[explorer].startswith("q_point.hold()")
+    # review r77 04-2: a ruler answers the drag; a first question is asked before it, and the
+    # drag's picture held until that one is checked. r234 04-P1: lesson 00 settled "nearer
+    # the eye" (its q_half), so the first question asks for t, a number, at another ratio
     where = next(i for i, t in enumerate(text) if "q_where = Predict(" in t)
     assert where < ask and text[ask].startswith("q_where.hold()")
-    assert '        "the segment\'s midpoint",\n        "a point nearer' in text[where]
-    assert 'answer="a point nearer the eye than the segment\'s midpoint"' in text[where]
+    assert "answer=mid_answer," in text[where] and "tolerance=0.02," in text[where]
+    assert "a point nearer the eye" not in text[where]
     ask = next(i for i, t in enumerate(text) if "q_affine = Predict(" in t)
     viewer = next(i for i, t in enumerate(text) if "TexturedPlaneViewer(" in t)
     assert text[viewer].startswith("q_affine.hold()")
@@ -2468,7 +2472,117 @@ def test_04_r219_key_horizon_and_wording():
     assert "teachraster's rasteriser goes the other, equivalent way round" in md
     displays = [m for t in text for m in re.findall(r"\$\$(.*?)\$\$", t, re.S)]
     assert displays and not any("`" in m for m in displays)  # MathJax showed ‘smooth‘
-    assert "the *signed* $\\Delta u$" in md
+    assert "*signed*" not in md  # r234 04-C1: lesson 00 now shows |Δs| too
+
+
+@pytest.mark.notebook
+def test_04_r234_questions_explorer_surfaces_floor_and_words():
+    """Review r234 04: q_where asked what lesson 00's q_half had settled ("nearer the eye"); the
+    explorer's axes held ratio 8 at unequal scales; the reveal's eye ray crossed a label; §2
+    showed its central fact as residuals only; no references; renders held by q_diagonal too,
+    their outline lost on white; a stray texel at u = 1 under repeat; the small words."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from notebook_runs import executed, streams
+
+    from teachraster.plotting.images import BEHIND_RENDER
+    from teachraster.plotting.projection import frame_of
+    from teachraster.widgets import (
+        AttributeSurfaces,
+        Predict,
+        PredictPoint,
+        ProjectionExplorer,
+        TexturedPlaneViewer,
+    )
+    from teachraster.widgets.common import style_context
+
+    name = "04_perspective_correct_interpolation"
+    ns = lesson(name)
+    printed = streams(executed(name).notebook())
+    nb = json.loads((NOTEBOOKS / f"{name}.ipynb").read_text())
+    text = {c["id"]: "".join(c["source"]) for c in nb["cells"]}
+    # the widgets and the question's drawing do not outlive the kernel: built here again from
+    # the cells' own code
+    built = {"np": np, "Segment": Segment, "Predict": Predict, "PredictPoint": PredictPoint,
+             "AttributeSurfaces": AttributeSurfaces}  # fmt: skip
+    for cid in ("c03a", "85fc0147", "c04-surfaces"):
+        exec(text[cid].replace("q_where.hold()", ""), built)
+    q_where, q_point, surfaces = built["q_where"], built["q_point"], built["surfaces"]
+    md = " ".join(" ".join(t.split()) for t, c in zip(text.values(), nb["cells"])
+                  if c["cell_type"] == "markdown")  # fmt: skip
+    # P1: t at ratio 4 (lesson 00 asked ratio 2, answer 1/3), a number, the printed one
+    assert ns.ratio == 4 and ns.mid_answer == round(ns.t_mid, 2) == 0.2
+    assert round(ns.t_tour, 2) == round(1 / 3, 2) and ns.tour_ratio == 2
+    assert f"the screen midpoint q = 0.5 is t = {ns.t_mid:.3f}" in printed
+    assert np.isclose(ns.t_over_z / ns.one_over_z, ns.t_mid)  # the explanation's division
+    assert all(abs(k - ns.mid_answer) > 0.02 for k in q_where.notes) and q_where.answer == 0.2
+    # the drag: another screen point, q = 0.75, t = 3/7, printed; the answer on its eye ray
+    assert ns.q_drag == 0.75 and np.isclose(ns.t_drag, 3 / 7)
+    assert f"the screen point you dragged for, q = 0.75, is t = {ns.t_drag:.3f}" in printed
+    ax_, az_ = q_point.answer
+    assert np.isclose(ax_ / az_, ns.s_drag) and np.isclose(ns.t_dragged, ns.t_drag)
+    # FIG2: the reveal's eye ray (from the eye, 15 % past the answer) crosses no label, and
+    # the reveal draws the image on the screen z = 1
+    assert q_point._reveal["revealCurve"] == [[-1.0, 1.0], [0.5, 1.0]]
+    with style_context("classroom"):  # the question's own style: its labels' size
+        fig, ax = plt.subplots(figsize=(8, 6.5), layout="constrained")
+        built["point_question"](ax)
+        ax.set(xlim=(-1.5, 2.5), ylim=(-0.3, 4.5))
+        FigureCanvasAgg(fig).draw()
+    ray = np.linspace(0.0, 1.15, 200)[:, None] * q_point.answer
+    for label in ax.texts:
+        box = label.get_window_extent().transformed(ax.transData.inverted())
+        inside = ((ray[:, 0] >= box.x0) & (ray[:, 0] <= box.x1) & (ray[:, 1] >= box.y0)
+                  & (ray[:, 1] <= box.y1))  # fmt: skip
+        assert not inside.any(), label.get_text()
+        assert box.y1 < 1.0 or box.y0 > 1.0 or box.x1 < -1.0  # nor the image on z = 1
+    plt.close(fig)
+    # FIG1: the explorer at one scale in x and z, fitted to the current ratio
+    assert "ProjectionExplorer(segment, q=q_drag)" in text["28863f61"]
+    ex = ProjectionExplorer(ns.segment, q=ns.q_drag, backend="image")
+    for ratio in (4.0, 8.0, 1.0):
+        ex.ratio.value = ratio
+        picture = ex.axes[0]
+        lo, hi, top = frame_of([ex.segment])
+        assert picture.get_aspect() == 1.0 and picture.get_xlim() == (lo, hi)
+        assert picture.get_ylim() == (-0.2, top)
+    ex.close()
+    # M1: the surfaces of lesson 03's widget over §2's triangle, f/w and 1/w on
+    assert isinstance(surfaces, AttributeSurfaces) and surfaces.data["xy"] == ns.xy.tolist()
+    assert surfaces.state["w"] == ns.w.tolist() and surfaces.data["f"] == ns.u_vertex.tolist()
+    assert surfaces.state["show"] == {"correct": True, "affine": False, "fw": True, "inv": True}
+    assert "v1, v2, v3: w = [1.0, 2.0, 4.0], u = [0.0, 1.0, 0.0]" in printed
+    with pytest.raises(ValueError, match="unknown sheets"):
+        AttributeSurfaces(show=["u"])
+    # M2: the references, as published
+    assert "Heckbert and Moreton" in md and "*Interpolation for Polygon Texture Mapping and" in md
+    assert "Springer, 1991, pp. 101–111" in md
+    assert "Blinn's column *Hyperbolic Interpolation* (IEEE Computer Graphics and" in md
+    assert "Applications 12(4), July 1992, pp. 89–94)" in md
+    # S2 and FIG3: the renders held by q_affine alone, on a tinted ground, as the viewer's
+    renders = next(t for t in text.values() if "plot_image(ax, frames[mode]" in t)
+    assert renders.startswith("q_affine.hold()") and "q_diagonal.hold()" not in renders
+    assert all(tuple(a.get_facecolor()) == tuple(BEHIND_RENDER) for a in ns.axes)
+    assert abs(BEHIND_RENDER[0] - 0.92) > 0.15  # not the light checks' grey
+    viewer = TexturedPlaneViewer(tilt=60, checks=4, backend="image")
+    assert all(tuple(a.get_facecolor()) == tuple(BEHIND_RENDER) for a in viewer.view.axes[:2])
+    # S1: u = 1.0 exactly (tilt 60 and 75) takes the last texel, not the first
+    for tilt in (60, 75):
+        viewer.tilt.value = tilt
+        at_one = viewer.uv_perspective[..., 0] == 1.0
+        assert at_one.any()
+        last = viewer.texture[:, -1]  # the column of texels at u = 1
+        rows = np.clip((viewer.uv_perspective[at_one, 1] * len(last)).astype(int), 0, len(last) - 1)
+        assert np.array_equal(viewer.perspective[at_one], last[rows])
+    viewer.close()
+    # S3, S4, S6, C1/S7
+    assert "side u = 1: 26.7" in printed and "side u = 0: 26.7" in printed
+    assert "changes faster than the pixels" not in md and "above the Nyquist limit" in md
+    assert ("exact everywhere only when all $w$ are equal, and along any line of constant $w$"
+            in md)  # fmt: skip
+    assert "Lesson 00's tour showed this map already: $|\\Delta s|$" in md
+    assert "where lesson 00's map is white" not in md and ns.view.marker.get_label() == (
+        "largest |Δu|"
+    )
 
 
 def test_05a_05b_no_answer_in_the_markdown_before_check():
@@ -2608,10 +2722,10 @@ def test_00_04_r97_items():
     nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
     cells, text = nb["cells"], ["".join(c["source"]) for c in nb["cells"]]
     boxed = [i for i, t in enumerate(text) if r"\boxed{t =" in t]
-    ask = next(i for i, t in enumerate(text) if "q_midpoint = PredictPoint(" in t)
+    ask = next(i for i, t in enumerate(text) if "q_point = PredictPoint(" in t)
     for i in boxed:  # the formula after the question is held, never a Markdown cell
         assert i > ask and cells[i]["cell_type"] == "code"
-        assert text[i].startswith("q_midpoint.hold()") and "display(Markdown(" in text[i]
+        assert text[i].startswith("q_point.hold()") and "display(Markdown(" in text[i]
         assert cells[i]["metadata"]["jupyter"]["source_hidden"] is True
     floor = next(i for i, t in enumerate(text) if "edge_texels = {}" in t)
     assert cells[floor]["metadata"].get("tags") == ["hide-input"]  # plumbing folded
@@ -2791,8 +2905,8 @@ def test_04_r144_ritschel_step_questions_and_floor_diagonal():
     assert "the terms without $t$ cancel" not in flat
     assert "$u_1 Z_1$ stands on both sides and cancels" in flat
     assert "$s Z_1 (u_2 - u_1)$, stays (it becomes the numerator of (10))" in flat
-    ask = next(t for t in text if "q_midpoint = PredictPoint(" in t)
-    drawing = ask[ask.index("def midpoint_question") : ask.index("q_midpoint = PredictPoint(")]
+    ask = next(t for t in text if "q_point = PredictPoint(" in t)
+    drawing = ask[ask.index("def point_question") : ask.index("q_point = PredictPoint(")]
     assert "screen" not in drawing.split("#")[0] and "ax.plot([0, x_]" not in drawing
     assert "ax.plot(*np.transpose([e0, e1])" in drawing and 'ax.plot([0], [0], "^"' in drawing
     assert "s_ends[0]" in ask and "(not drawn)" in ask  # the image's ends given, not drawn
@@ -2801,8 +2915,8 @@ def test_04_r144_ritschel_step_questions_and_floor_diagonal():
     combos = {(c.startswith("straight"), "kink" in c.replace("no kink", ""), "even" in c)
               for c in choices}  # fmt: skip
     assert {(True, k, e) for k in (True, False) for e in (True, False)} <= combos
-    floor = next(t for t in text if "plot_error_heatmap(axes[2]" in t)
-    assert "for ax in axes[:2]:\n    # on the renders a thin" in floor and "lw=1.2)" in floor
+    renders = next(t for t in text if "plot_image(ax, frames[mode]" in t)
+    assert "    # a thin, sparse dash" in renders and "lw=1.2)" in renders
     for t in text:
         if re.match(r"q_\w+\.hold\(\)", t):
             assert t.split("\n", 1)[0].endswith("# shown after you answer above"), t[:80]

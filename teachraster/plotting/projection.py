@@ -98,7 +98,8 @@ class ProjectionArtists:
         self.screen_point.set_data([s], [1.0])
         self.world_point.set_data([x], [z])
         self.affine_point.set_data(*self.segment.point(q).T)
-        self.label.set_text(f"q = {q:.2f} on the screen  →  t = {t:.2f} on the segment")
+        # two lines: over a picture at one scale in x and z (tall, narrow) one ran off it
+        self.label.set_text(f"q = {q:.2f} on the screen\n→  t = {t:.2f} on the segment")
         if self.curve_point is not None:
             self.curve_point.set_data([q], [t])
         return t
@@ -166,6 +167,9 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     # text set by update(), size fixed here; from the left edge, as the key takes the right
     out.label = ax.set_title(" ", fontsize=fs(0.9), loc="left")
     ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")
+    # one scale in x and z: the picture is an argument by similar triangles, and with unequal
+    # scales the rays looked 2.7 times flatter than they are (review r234 04-FIG1)
+    ax.set_aspect("equal", adjustable="box")
     # at most six x ticks: a short segment (z1 = z0 on the screen line) got nine 0.25 apart,
     # their classroom-size labels running together (review r5, 04)
     ax.xaxis.set_major_locator(MaxNLocator(nbins=5, steps=[1, 2, 2.5, 5, 10]))

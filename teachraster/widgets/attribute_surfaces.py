@@ -35,20 +35,31 @@ class AttributeSurfaces(Explorable):
         The attribute at each vertex, in [0, 1].
     width, height : int
         The screen under the triangle.
+    show : iterable of str, optional
+        The sheets switched on at the start, of ``SHEETS``: "correct" (the
+        perspective-correct f), "affine", "fw" (f/w) and "inv" (1/w). Default: the page's
+        own, the two f sheets (lesson 03 switches f/w and 1/w on later; lesson 04 opens on
+        all four, its claim being that two of them are planes).
 
     Examples
     --------
     >>> ex = AttributeSurfaces(w=[1, 1, 4])
     >>> ex.state["w"]
     [1.0, 1.0, 4.0]
+    >>> AttributeSurfaces(show=["correct", "fw"]).state["show"]["inv"]
+    False
     """
+
+    #: The sheets' names, as the page's buttons and ``state["show"]`` know them
+    SHEETS = ("correct", "affine", "fw", "inv")
 
     _esm = esm_source("raster_rules", "view3d", "explore_attributes")
     noun = "3-D attribute view"
     title = "The attribute over the triangle, in 3-D"
 
     def __init__(self, xy=((2.0, 2.0), (14.0, 4.0), (5.0, 14.0)), w=(1.0, 1.0, 4.0),
-                 f=(0.0, 1.0, 0.0), width: int = 16, height: int = 16) -> None:  # fmt: skip
+                 f=(0.0, 1.0, 0.0), width: int = 16, height: int = 16,
+                 show=None) -> None:  # fmt: skip
         xy = as_finite("xy", xy, (3, 2))
         w, f = as_finite("w", w, (3,)), as_finite("f", f, (3,))
         if (w <= 0).any():
@@ -60,6 +71,12 @@ class AttributeSurfaces(Explorable):
         self.data = {"xy": xy.tolist(), "w": w.tolist(), "f": f.tolist(), "width": width,
                      "height": height}  # fmt: skip
         self.state = {"w": w.tolist()}
+        if show is not None:
+            show = [show] if isinstance(show, str) else list(show)
+            unknown = [name for name in show if name not in self.SHEETS]
+            if unknown:
+                raise ValueError(f"show: unknown sheets {unknown}, expected some of {self.SHEETS}")
+            self.state["show"] = {name: name in show for name in self.SHEETS}
 
 
 class EyeRayExplorer(Explorable):

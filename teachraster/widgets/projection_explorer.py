@@ -15,8 +15,9 @@ re-rendered the whole figure for each (3 pictures in 1.5 s, issue 31).
 from __future__ import annotations
 
 import ipywidgets as widgets
+from matplotlib.legend import Legend
 
-from ..plotting.blitting import MOVING, STILL, LayeredBlit
+from ..plotting.blitting import MOVING, LayeredBlit
 from ..plotting.projection import Segment, frame_of, plot_projection
 from .common import Shown, style_context, title_html
 from .display import new_figure, resolve_backend
@@ -49,8 +50,11 @@ class ProjectionExplorer(Shown):
         z1 / z0, the far end's depth over the near end's (1 to 8). The far end moves along its
         own eye ray, so the segment's picture on the screen stays where it is: only how the
         screen steps fall on it changes (review r3 04: |t − q| depends on the ratio only).
-        The axes hold the segment at every ratio of the slider and stay put, so that the
-        screen image does not grow or shrink on the page either (review r144 04-2).
+        The axes are fitted to the segment at the current ratio, on one scale in x and z:
+        held for every ratio (review r144 04-2), they left two thirds of the picture empty at
+        the default ratio and squeezed the screen, its ticks and the hits into a strip
+        (review r234 04-FIG1). The segment's image on the screen is the same at every ratio;
+        only the scale of the page changes.
     t : float
         World parameter at the current q.
     largest_gap : float
@@ -76,18 +80,23 @@ class ProjectionExplorer(Shown):
     def __init__(self, segment: Segment | None = None, q: float = 0.5, *, n_steps: int = 8,
                  backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
         self.segment = Segment() if segment is None else segment
-        # one frame for every ratio of the slider: its ends hold the extremes (the far end
-        # moves along a straight line as the ratio grows)
-        self._frame = frame_of([self.segment.with_ratio(r) for r in RATIOS])
         self.backend = resolve_backend(backend)
         # in the page, its positions drawn ahead (coalesced where they are not)
         self.q = LiveSlider(value=q, min=0.0, max=1.0, step=0.01, description="q",
                             readout_format=".2f")  # fmt: skip
         self._q = float(self.q.value)  # the q of the picture on show
         with style_context(style):
-            self.fig = new_figure((9.0, 10.0), self.backend)
+            self.fig = new_figure((9.0, 7.0), self.backend)
             self.fig.set_layout_engine("constrained")
-            self.axes = self.fig.subplots(2, 1, height_ratios=[1.6, 1.0])
+            # the picture on the left, as tall as the figure (one scale in x and z makes it
+            # tall and narrow); its key and the curve t(q) on the right
+            axd = self.fig.subplot_mosaic(
+                [["picture", "key"], ["picture", "curve"]],
+                width_ratios=[1.15, 1.0],
+                height_ratios=[1.4, 1.0],
+            )
+            self.axes = [axd["picture"], axd["curve"]]
+            self._key_ax = axd["key"]
             self.n_steps, self.style = n_steps, style
             self._plot()
             self._lay_out()
@@ -119,25 +128,29 @@ class ProjectionExplorer(Shown):
 
     def _plot(self) -> None:
         ax, curve = self.axes
-        ax.clear()
-        curve.clear()
+        for each in (ax, curve, self._key_ax):
+            each.clear()
+        # fitted to the current ratio (frame_of the segment alone) at one scale in x and z
         self.artists = plot_projection(ax, self.segment, n_steps=self.n_steps, q=self._q,
-                                       curve_ax=curve, frame=self._frame)  # fmt: skip
+                                       curve_ax=curve, frame=frame_of([self.segment]))  # fmt: skip
         self.t = self.artists.update(self._q)
-        # the key inside, top left: the frame holds the segment at every ratio, so no part of
-        # the segment or of its rays lies there at any (left of the near end, the segment
-        # climbs to the right); only the ray at q runs on under it, past the point it shows.
-        # Beside the axes it left the picture 60 % of the figure's width (review r144 04-3)
-        key = ax.get_legend()
-        ax.legend(key.legend_handles, [t.get_text() for t in key.get_texts()],
-                  loc="upper left", fontsize=key.get_texts()[0].get_fontsize())  # fmt: skip
+        # both keys in an Axes of their own above the curve: beside the picture the picture's
+        # took the picture's own width, inside it lay over the rays at some q; the curve's,
+        # inside that narrower panel, over its dashed line
+        for key, where in ((ax.get_legend(), "upper center"), (curve.get_legend(), "lower center")):
+            # a Legend added as an artist: Axes.legend keeps one, and a second call replaced
+            # the first while drawing the second twice
+            self._key_ax.add_artist(Legend(
+                self._key_ax, key.legend_handles, [t.get_text() for t in key.get_texts()],
+                loc=where, fontsize=key.get_texts()[0].get_fontsize(), borderaxespad=0.0))  # fmt: skip
+            key.remove()
+        self._key_ax.axis("off")
         a = self.artists
         # a new q moves these only: the rest (the rays of equal steps, the segment, the
-        # axes, the keys) stays in a cached background, the curve's key over its point
+        # axes, the keys beside them) stays in a cached background
         self._blit = LayeredBlit(self.fig, [
             (MOVING, [a.ray, a.screen_point, a.world_point, a.affine_point, a.label,
-                      a.curve_point]),
-            (STILL, [curve.get_legend()])])  # fmt: skip
+                      a.curve_point])])  # fmt: skip
         self.peak_q, self.largest_gap = self.segment.peak()
 
     def _lay_out(self) -> None:

@@ -14,6 +14,7 @@ from ..pipeline.texturing.texture import checkerboard, sample, texel_error
 from ..plotting import ComparisonView, plot_profile
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
 from ..plotting.common import fs
+from ..plotting.images import BEHIND_RENDER
 from .common import (
     Shown,
     close_tree,
@@ -188,6 +189,8 @@ class TexturedPlaneViewer:
             # the two renders labelled alike: no pixel ticks on either (review r91 04-E: only
             # "affine uv" had them); the error map has none either
             self.view.axes[0].set(xticks=[], yticks=[], xlabel="", ylabel="")
+            for ax in self.view.axes[:2]:  # the square's outline against a tinted ground
+                ax.set_facecolor(BEHIND_RENDER)
             for ax in self.view.axes[:3]:  # no column labels to clear: the titles sit close
                 ax.set_title(ax.get_title(), y=1.0, pad=fs(0.5))
             if self.view.heatmap.colorbar is not None:
@@ -260,8 +263,11 @@ class TexturedPlaneViewer:
             frame = render(clip, self.width, self.height, attrs=uv, interpolation=mode)
             out[mode] = frame.attrs
         self.uv_affine, self.uv_perspective = out["affine"], out["perspective"]
-        self.affine = sample(self.texture, self.uv_affine)
-        self.perspective = sample(self.texture, self.uv_perspective)
+        # clamped, not repeated: the square's uv run from 0 to 1 exactly, and a pixel whose
+        # u is 1.0 wrapped to texel 0, one dark pixel beside the last light check at the
+        # square's right edge (review r234 04-S1; GL's REPEAT does the same)
+        self.affine = sample(self.texture, self.uv_affine, wrap="clamp")
+        self.perspective = sample(self.texture, self.uv_perspective, wrap="clamp")
         self.error = texel_error(self.uv_affine, self.uv_perspective, self.texture.shape)
 
     def _edit_blit(self) -> LayeredBlit:
