@@ -68,9 +68,11 @@ def student(offsets="right", span="size - 1", tie="top-left", orient=True, start
             owns = {"top-left": top_left, "E >= 0": True, "E > 0": False,
                     "accept strict": top_left}[tie]  # fmt: skip
             if bias is not None:  # the set-up's bias: one sign test each, as llvmpipe's
-                e0 = e0 - (0.0 if top_left else bias)
-                rejected |= (e0 + R < 0) if ops[0] == "<" else (e0 + R <= 0)
-                accepted &= (e0 + T >= 0) if ops[1] == ">=" else (e0 + T > 0)
+                # (r232: added after the offset, where it is exact; added to E₀ first it is
+                # lost to float64's rounding at the far ties, another mistake)
+                beta = 0.0 if top_left else bias
+                rejected |= (e0 + R - beta < 0) if ops[0] == "<" else (e0 + R - beta <= 0)
+                accepted &= (e0 + T - beta >= 0) if ops[1] == ">=" else (e0 + T - beta > 0)
                 continue
             rejected |= (e0 + R < 0) if owns else (e0 + R <= 0)
             accepted &= (e0 + T >= 0) if owns and tie != "accept strict" else (e0 + T > 0)

@@ -157,7 +157,10 @@ def test_hiz_words_name_the_bound_not_the_nearest_depth():
 
     first, report = _first_words("hiz_rejects", covered_min)
     assert "nearest depth the triangle can have" not in report, report
-    assert "the task's lower bound on the triangle's depth in the tile" in first, first
+    # r232 S2: the first words go from the stored depth and the verdicts to the cause, with no
+    # line naming the bound in between; the bound itself only once the hints are spent
+    assert "the tile's farthest stored depth is 0.166: the block is kept" in first, first
+    assert "so the bound (no nearer than the nearest vertex) is" not in first, first
     spent = ex.check("hiz_rejects", covered_min, budget=60).failures[0].explanation
     assert "so the bound (no nearer than the nearest vertex) is" in spent, spent
 

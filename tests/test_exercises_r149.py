@@ -48,9 +48,10 @@ def no_orient_no_area(xy, x0, y0, size):
         A, B = a[1] - b[1], b[0] - a[0]
         R, T = (size - 1) * (max(A, 0) + max(B, 0)), (size - 1) * (min(A, 0) + min(B, 0))
         top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
-        e0 = A * (px - a[0]) + B * (py - a[1]) + (0.0 if top_left else -(2.0**-16))
-        rejected |= e0 + R < 0
-        accepted &= e0 + T >= 0
+        e0 = A * (px - a[0]) + B * (py - a[1])
+        beta = 0.0 if top_left else -(2.0**-16)  # after the offset, where it is exact (r232)
+        rejected |= e0 + R + beta < 0
+        accepted &= e0 + T + beta >= 0
     return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
 
 

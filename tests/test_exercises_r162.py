@@ -61,9 +61,10 @@ def centre_floored(xy, x0, y0, size):
         c = -(a * ax + b * ay)
         half = ((size - 1) // 2) * (abs(a) + abs(b))
         top_left = by < ay or (by == ay and bx > ax)
-        e = a * cx + b * cy + c + (0.0 if top_left else -(2.0**-16))
-        rejected |= e + half < 0
-        accepted &= e - half >= 0
+        e = a * cx + b * cy + c
+        beta = 0.0 if top_left else -(2.0**-16)  # after the offset, where it is exact (r232)
+        rejected |= e + half + beta < 0
+        accepted &= e - half + beta >= 0
     return np.select([rejected, accepted], ["rejected", "accepted"], "partial")
 
 
@@ -219,8 +220,13 @@ def test_the_first_8_2_failure_does_not_print_the_bound(first_words):
     """C.1 (r149, r162): the task's bound on the case is the answer; a first failure asks."""
     first = ex.check("hiz_rejects", lesson_10_bound, budget=120).failures[0].explanation
     assert "so the bound (no nearer than the nearest vertex) is" not in first, first
-    assert "0.312" not in first and "what is it here?" in first, first
-    assert "the tile's farthest stored depth is 0.305" in first, first
+    assert "0.312" not in first, first
+    # r232 S2: no boilerplate before the cause; C2: the case's arguments, to call it again
+    assert "what is it here?" not in first and "decides" not in first, first
+    assert first.startswith(
+        "xyz = [[4.2, 4.2, 0.3], [7.8, 4.2, 0.372], [4.2, 7.8, 0.372]], row0 = 0"
+    )
+    assert "the tile's farthest stored depth is 0.305: the block is rejected" in first, first
 
 
 def test_c1_an_empty_pixel_is_said_beside_gls_clear_value(full_words):  # noqa: F811

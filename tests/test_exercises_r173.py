@@ -2,7 +2,8 @@
 would) and the words or picture the check must give, and must not.
 
 F1: "float64 holds these edge functions exactly" was true only near the origin: 7 of 300 ties
-6·10^5 px out got a wrong verdict from the notebook's own solution. M1 (8.2): a box one column
+6·10^5 px out got a wrong verdict from the notebook's own solution (r232: it counts in
+integers now). M1 (8.2): a box one column
 (row) too wide on its low side was told "the tile's outer corners" and, on the first try, the
 task's answer. M2: the box clipped to the tile but not rounded to centres was told, on a case
 with centres in the box, that its box held none. G1: 8.2's figure drew where the bound is taken
@@ -94,39 +95,33 @@ def _wrong(fn, ties) -> int:
     )
 
 
-def test_f1_the_readers_far_ties_break_float64_beyond_the_reach():
-    """The reader's case: the notebook's float64 solution misjudges some ties 6·10^5 px out,
-    every one beyond the reach the task now states; the reader's own example too."""
+def test_f1_the_readers_far_ties_are_exact_in_integers():
+    """The reader's case: float64 misjudged some ties 6·10^5 px out. r232 M1: the notebook's
+    solution now counts in lesson 10 §4's integer units and is right on all of them, far and
+    near; the reader's own example too."""
     solution = _solution("classify_block_solution")
-    far = _ties(300, 6e5, (1e5, 5e5))
-    assert all(np.abs(xy).max() > tile_blocks.FLOAT64_REACH for xy, _, _ in far)
-    assert _wrong(solution, far) > 0
+    assert "np.int64" in _cell("classify_block_solution")
+    assert _wrong(solution, _ties(300, 6e5, (1e5, 5e5))) == 0
+    assert _wrong(solution, _ties(300, 4e4, (2e4, 8e4), seed=5)) == 0
     xy = np.array([[-153507.19140625, 586460.484375], [416628.75390625, 69181.08203125],
                    [390200.484375, 612888.7578125]])  # fmt: skip
     x0, y0 = np.array([307363]), np.array([168316])
     assert str(tile_blocks.expected_block(xy, x0, y0, 1)[0]) == "rejected"
-    assert str(np.asarray(solution(xy, x0, y0, 1))[0]) == "accepted"
+    assert str(np.asarray(solution(xy, x0, y0, 1))[0]) == "rejected"
 
 
-def test_f1_within_the_reach_float64_is_exact():
-    """The same ties built within 2^17 px of the origin: the float64 solution is right on all."""
-    near = _ties(300, 4e4, (2e4, 8e4), seed=5)
-    assert all(np.abs(xy).max() < tile_blocks.FLOAT64_REACH for xy, _, _ in near)
-    assert _wrong(_solution("classify_block_solution"), near) == 0
-
-
-def test_f1_the_reach_is_printed_and_quoted_and_the_cases_keep_to_it(monkeypatch):
-    said = tile_blocks.float64_reach()
-    assert "2^17 = 131,072 px" in said and tile_blocks.FLOAT64_REACH == 131_072
-    assert "print(float64_reach())" in _cell("setup")
+def test_f1_the_bit_count_is_printed_and_the_cases_keep_to_it(monkeypatch):
+    """r232 M1: cell 1 prints lesson 10 §4's bit count for the check's cases (the float64
+    reach is gone with float64); a register too small for them is refused."""
+    said = tile_blocks.integer_budget()
+    assert "2·30 + 2 = 62 bits" in said and "int64 holds every value exactly" in said
+    assert "print(integer_budget())" in _cell("setup") and "float64_reach" not in _cell("setup")
     task = " ".join(_cell("classify_block_task").split())
-    # r198 D.3: a caret renders as itself in Markdown; the printed line keeps "2^17"
-    assert "2¹⁷ = 131,072 px of the origin" in task and "cell 1 prints" in task
-    assert "which holds these edge functions exactly;" not in task
-    # the check's cases keep to it: a reach below theirs is refused
-    monkeypatch.setattr(tile_blocks, "FLOAT64_REACH", 1000)
+    assert "**Count in integers**, as lesson 10 §4's walker does" in task
+    assert "cell 1 prints lesson 10 §4's bit count" in task and "2¹⁷" not in task
+    monkeypatch.setattr(tile_blocks, "INT_BITS", 32)
     with pytest.raises(AssertionError):
-        tile_blocks.float64_reach()
+        tile_blocks.integer_budget()
 
 
 # -- M1, M2, G2: 8.2's words ------------------------------------------------------------------
@@ -340,7 +335,7 @@ def test_d5_failures_and_the_package_both_said_in_the_one_line():
     """A failing answer that also calls the package's own function: its one line says both."""
     report = ex.check("hiz_rejects", box_bound(low_wide=True), budget=120)
     object.__setattr__(report, "package", "it calls teachraster's expected_reject: does not count")
-    with pytest.raises(AssertionError, match=r"7 of 70 cases fail; and not counted"):
+    with pytest.raises(AssertionError, match=r"7 of 72 cases fail; and not counted"):
         report.assert_passed()
 
 

@@ -155,16 +155,16 @@ def test_1_other_named_mistakes_keep_their_names_on_the_new_tiles(full_words):  
 
 # -- 3, 4, 5, 6 (M): 8.1's slips told the rule ---------------------------------------------------
 
-_R = "R = (size - 1) * (max(A, 0) + max(B, 0))"
-_T = "T = (size - 1) * (min(A, 0) + min(B, 0))"
+_R = "R = step * (max(A, 0) + max(B, 0))"
+_T = "T = step * (min(A, 0) + min(B, 0))"
 SLIPS_81 = {
     # 3: llvmpipe's reject offset (size steps) beside the task's accept offset, and the mirror
     "reject offset of size steps": (
-        _variant((_R, "R = size * (max(A, 0) + max(B, 0))")),
+        _variant((_R, "R = 256 * size * (max(A, 0) + max(B, 0))")),
         "your reject offset spans size steps (your accept offset is right)",
     ),
     "accept offset of size steps": (
-        _variant((_T, "T = size * (min(A, 0) + min(B, 0))")),
+        _variant((_T, "T = 256 * size * (min(A, 0) + min(B, 0))")),
         "your accept offset spans size steps (your reject offset is right)",
     ),
     # 4: two vertices swapped whatever the winding (code for counter-clockwise triangles)
@@ -176,11 +176,11 @@ SLIPS_81 = {
     ),
     # 5: no tie rule, E ≥ 0 or E > 0 on every edge
     "no top-left rule (E ≥ 0)": (
-        _variant(("beta = 0.0 if top_left else -(2.0**-16)", "beta = 0.0")),
+        _variant(("beta = 0 if top_left else -1", "beta = 0")),
         "your tests count every centre exactly on an edge as inside (E ≥ 0 on all three edges)",
     ),
     "no top-left rule (E > 0)": (
-        _variant(("beta = 0.0 if top_left else -(2.0**-16)", "beta = -(2.0**-16)")),
+        _variant(("beta = 0 if top_left else -1", "beta = -1")),
         "your tests count no centre exactly on an edge as inside (E > 0 on all three edges)",
     ),
 }
@@ -220,8 +220,8 @@ def test_3_combined_with_another_slip_it_is_not_named(full_words):  # noqa: F811
     """Reject offsets of size steps and no tie rule together: neither single gives every
     answer; the reject words are not said."""
     both = _variant(
-        (_R, "R = size * (max(A, 0) + max(B, 0))"),
-        ("beta = 0.0 if top_left else -(2.0**-16)", "beta = 0.0"),
+        (_R, "R = 256 * size * (max(A, 0) + max(B, 0))"),
+        ("beta = 0 if top_left else -1", "beta = 0"),
     )
     report = ex.check("classify_block", both, budget=120)
     assert report.failures
@@ -314,16 +314,16 @@ def test_2_the_timeout_figure_of_the_huge_blocks_reads(plt):  # noqa: F811
     assert "in blocks of 2¹⁹ px" in ax.get_xlabel()
 
 
-def test_7_the_insets_vertex_depths_do_not_cover_one_another(plt):  # noqa: F811
-    """The small triangle in the tile's corner: "0.3" was hidden under "0.372"."""
+def test_7_the_vertex_depths_do_not_cover_one_another(plt):  # noqa: F811
+    """The small triangle in the tile's corner: "0.3" was hidden under "0.372". r232 FIG2: the
+    depths of the vertices in view are labelled in the main panel, at their vertices."""
     case = next(c for c in hiz_tile.hiz_cases() if c[0].startswith("a small triangle in the tile's bottom-right"))  # fmt: skip
     fig, ax = plt.subplots(figsize=(9.0, 5.6), layout="constrained")
     hiz_tile.draw_hiz(ax, case, not case[2])
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
-    inset = ax.child_axes[0]
-    labels = [t for t in inset.texts if re.fullmatch(r"0\.\d+", t.get_text())]
-    assert sorted(t.get_text() for t in labels) == ["0.3", "0.372", "0.372"]
+    labels = [t for t in ax.texts if re.fullmatch(r"v\d: 0\.\d+", t.get_text())]
+    assert sorted(t.get_text() for t in labels) == ["v1: 0.3", "v2: 0.372", "v3: 0.372"]
     boxes = [t.get_window_extent(renderer) for t in labels]
     assert not any(_overlap(a, b) for i, a in enumerate(boxes) for b in boxes[i + 1 :])
     # r214 item 8: the legend's pixel-centre marker can be seen

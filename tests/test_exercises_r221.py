@@ -44,7 +44,10 @@ def _kinds(report) -> set[str]:
 
 
 def test_1_the_bottom_edge_cases_are_what_the_review_asked():
-    cases = [c for c in tile_blocks.block_cases() if "bottom edge" in c[0]]
+    # (r232 added a far tie on a 131,072-px bottom edge, "far from its first centre")
+    cases = [
+        c for c in tile_blocks.block_cases() if "bottom edge" in c[0] and "far from" not in c[0]
+    ]
     assert len(cases) == 2
     xy = cases[0][1][0]
     # a horizontal edge at y = 20.5 that runs left once oriented: the renderer covers no pixel
@@ -64,7 +67,8 @@ def test_1_the_bottom_edge_cases_are_what_the_review_asked():
 def test_1_every_horizontal_edge_top_fails_and_is_named(words, request):
     request.getfixturevalue(words)
     report = ex.check("classify_block", EVERY_HORIZONTAL_TOP, budget=120)
-    assert not report.passed and len(report.failures) == 2, str(report)
+    # the two bottom-edge cases, and r232's far tie on a bottom edge
+    assert not report.passed and len(report.failures) == 3, str(report)
     assert _kinds(report) == {"every horizontal edge top"}, str(report)
     for f in report.failures:
         assert "bottom edge" in f.case
@@ -86,12 +90,12 @@ def test_3_left_edges_only_is_no_bottom_left_rule(words, request):
 
 
 def test_1_the_case_count_and_a_right_answer():
-    assert len(tile_blocks.block_cases()) == 49
+    assert len(tile_blocks.block_cases()) == 56  # r232: 7 far ties
     report = ex.check("classify_block", _variant(), budget=120)
-    assert report.passed and "all 49 cases pass" in str(report)
+    assert report.passed and "all 56 cases pass" in str(report)
     # A and B exchanged in the offsets is equivalent (R and T are symmetric in them)
     swapped = _variant(
-        ("(size - 1) * (max(A, 0) + max(B, 0))", "(size - 1) * (max(B, 0) + max(A, 0))"),
+        ("step * (max(A, 0) + max(B, 0))", "step * (max(B, 0) + max(A, 0))"),
     )
     assert ex.check("classify_block", swapped, budget=120).passed
 
@@ -140,6 +144,6 @@ def test_4_buffer_0_0_is_named_the_first_stored_depth(words, request):
 
 
 def test_2_the_case_count_and_a_right_answer():
-    assert len(hiz_tile.hiz_cases()) == 70
+    assert len(hiz_tile.hiz_cases()) == 72  # r232: 2 borders at an odd k + ½
     report = ex.check("hiz_rejects", _hiz_variant(), budget=120)
-    assert report.passed and "all 70 cases pass" in str(report)
+    assert report.passed and "all 72 cases pass" in str(report)

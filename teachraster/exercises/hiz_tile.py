@@ -198,6 +198,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         *_r137_cases(),
         *_beyond_far_cases(),  # r214 item 1
         *_one_line_cases(),  # r221 items 2, 4
+        *_odd_border_cases(),  # r232 wrongly passed 2
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -286,9 +287,12 @@ def _box_cases() -> list[tuple[str, tuple]]:
     whole tile keeps them, the box's rejects; the box's own corners, or the pixels it touches,
     keep the second; the third's box holds no centre of the tile at all."""
     near_corner = _SMALL + [4, 4, 0]  # its box's centres: (4.5, 4.5) … (7.5, 7.5)
-    far_corner = _SMALL * [-1, -1, 1] + [4, 4, 0]  # mirrored: (0.5, 0.5) … (3.5, 3.5)
+    # mirrored: (0.5, 0.5) … (3.5, 3.5); rounded, as below: the sums' float noise
+    # (0.20000000000000018) was printed in each failure (r232 C2)
+    far_corner = np.round(_SMALL * [-1, -1, 1] + [4, 4, 0], 12)
     past = _SMALL * [0.8, 0.8, 1] + [4.54, 4.54, 0]  # box from 4.7: first centre 5.5, not 4.5
-    beyond = _SMALL * [4, 4, 1] + [14.9, 1, 0]  # box from x = 15.7: past the centre 15.5
+    # box from x = 15.7: past the centre 15.5
+    beyond = np.round(_SMALL * [4, 4, 1] + [14.9, 1, 0], 12)
     big = _SMALL * [2, 2, 1] + [6, 6, 0]  # a 16-px tile around a 7-px triangle
     buffer = np.full((TILE, TILE), 0.305)
     return [
@@ -460,6 +464,22 @@ def _one_line_cases() -> list[tuple[str, tuple]]:
              "of the stored depth", (_ONE_COLUMN[:, [1, 0, 2]], 0, 0, TILE, stored))]  # fmt: skip
 
 
+def _odd_border_cases() -> list[tuple[str, tuple]]:
+    """r232 wrongly passed 2: round() (half to even) for the box's first column passed every
+    case: :func:`_border_cases` put the box's left and top sides at 2.5 and 0.5, where half to
+    even gives the right column (2, 0). :data:`_ON_COLUMN` moved one column right (x = 3.5,
+    round gives 4, skipping column 3, where the depth is nearest, 0.1) and turned (y = 3.5):
+    the triangle covers those centres at 0.1, in front of the stored 0.13; the column after
+    lies at 0.15, behind it. Kept; round() rejects (a hole)."""
+    xyz = _ON_COLUMN + [1.0, 0.0, 0.0]
+    return [
+        (f"an edge exactly on the {what} of pixel centres {at} = 3.5, the box's {side} side, "
+         "where the depth is nearest", (v, 0, 0, TILE, np.full((TILE, TILE), 0.13)))
+        for what, at, side, v in (("column", "x", "left", xyz),
+                                  ("row", "y", "top", xyz[:, [1, 0, 2]]))
+    ]  # fmt: skip
+
+
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
 #: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
@@ -548,6 +568,8 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             ),
             # r141 D8.2-2: int(xmin + ½) for ⌈xmin − ½⌉ and int(xmax − ½) for ⌊xmax − ½⌋
             "int round": bool(_cut_bound(xyz, row0, col0, size, border="int") >= far),
+            # r232 wrongly passed 2: round() / np.round for the box's ends, half to even
+            "round half even": bool(_cut_bound(xyz, row0, col0, size, border="round") >= far),
             "box buffer": bool(near >= _box_buffer_far(xyz, row0, col0, size, buffer)),
             # r94 D8-6: the smaller of the two bounds, the plane's farthest extreme centre
             "smaller bound": bool(min(bare, zmin) >= far),
@@ -627,10 +649,13 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     leaves the left and top; "none": a strict inequality; "past": one more, ⌊xmax + ½⌋;
     "trunc": ``int(xmax − ½)``, truncated toward 0; "before": one more on the low side,
     ⌈xmin − ½⌉ − 1; "shifted": the ½ the wrong way, ⌈xmin + ½⌉ … ⌊xmax + ½⌋; "outward": floor
-    and ceil swapped, ⌊xmin − ½⌋ … ⌈xmax − ½⌉). +inf where the tile and the box share
+    and ceil swapped, ⌊xmin − ½⌋ … ⌈xmax − ½⌉; "round": round(xmin) … round(xmax) − 1, a half
+    rounded to the even integer, r232). +inf where the tile and the box share
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
-    judged = border in ("past", "trunc", "int", "before", "shifted", "outward") or past_tile
+    judged = (
+        border in ("past", "trunc", "int", "before", "shifted", "outward", "round") or past_tile
+    )
     if not judged and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (the others judge the box empty or not their own way)
     xy = np.asarray(xyz, dtype=float)[:, :2]
@@ -642,9 +667,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         a = a - 1 if border == "before" else a
         a = int(np.ceil(lo + 0.5)) if border == "shifted" else a
         a = int(np.floor(lo - 0.5)) if border == "outward" else a
+        a = int(np.round(lo)) if border == "round" else a  # half to even, as round() does
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
              "trunc": int(hi - 0.5), "int": int(hi - 0.5),
-             "shifted": int(np.floor(hi + 0.5)), "outward": int(np.ceil(hi - 0.5))}.get(
+             "shifted": int(np.floor(hi + 0.5)), "outward": int(np.ceil(hi - 0.5)),
+             "round": int(np.round(hi)) - 1}.get(
             border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
@@ -939,9 +966,13 @@ MISTAKES = {
         "beyond your 8; the tile is size × size, its last column col0 + size − 1 and its last row "
         "row0 + size − 1"
     ),
-    "row col swapped": "you swapped the tile's row and column: col0 is its first column (x), "
-    "row0 its first row (y); its pixel centres lie at x = col0 + ½ … col0 + size − ½, "
-    "y = row0 + ½ … row0 + size − ½",
+    # r232 half-named 4: the vertices read as (y, x, depth) give the same verdicts (the
+    # bound and the tile's farthest depth are the same mirrored about the diagonal)
+    "row col swapped": "you swapped the tile's row and column, or read each vertex as (y, x, "
+    "depth): the two give the same verdicts (the tile mirrored about the diagonal x = y, or the "
+    "triangle), so the check cannot tell which; col0 is the tile's first column (x), row0 its "
+    "first row (y), and each row of xyz is one vertex's (x, y, depth); its pixel centres lie at "
+    "x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size − ½",
 }
 
 
@@ -959,6 +990,32 @@ def _one_line_words(xyz, row0, col0, size) -> str:
         f"one {what} of centres, {what} {k} ({at} = {num(k + 0.5)}), and a fragment can lie "
         f"there: a box ∩ tile of one {what} still holds centres; it is empty only where its "
         f"first {what} lies past its last (first > last), not where they are equal"
+    )
+
+
+def _round_words(xyz, row0, col0, size) -> str:
+    """r232 wrongly passed 2: round() for the box's first column (row), half to even."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    for axis, first, what in ((0, col0, "column"), (1, row0, "row")):
+        lo = float(xy[:, axis].min())
+        if (
+            int(np.round(lo)) != int(np.ceil(lo - 0.5))
+            and first <= np.ceil(lo - 0.5) < first + size
+        ):
+            at, k = "xy"[axis], int(np.ceil(lo - 0.5))
+            return (
+                f"you rounded the box's ends with round() (or np.round), which rounds a half to "
+                f"the even integer: here {at}min = {num(lo)} and round gives {int(np.round(lo))}, "
+                f"skipping {what} {k}, whose centre lies exactly at {at}min, on the box's "
+                f"{'left' if axis == 0 else 'top'} side, where the triangle can cover it (the "
+                "top-left rule) and its depth is nearest: your bound can reject a block holding "
+                f"a fragment that is drawn (a hole); the box's first {what} is the first whose "
+                f"centre lies at or after {at}min, ⌈{at}min − ½⌉"
+            )
+    return (
+        "you rounded the box's ends with round() (or np.round), which rounds a half to the even "
+        "integer: at xmin = 3.5 it gives 4, skipping column 3, whose centre lies exactly at xmin; "
+        "the box's first column is the first whose centre lies at or after xmin, ⌈xmin − ½⌉"
     )
 
 
@@ -987,6 +1044,7 @@ MISTAKES["plane at integer points"] = (
     "y = r + ½, so your plane's values move by half a step of its gradient in each direction"
 )
 MISTAKES["dz/dx sign"] = _sign_words("x", 0)
+MISTAKES["round half even"] = lambda a, e, g: _round_words(*a[:4])
 MISTAKES["dz/dy sign"] = _sign_words("y", 1)
 
 
@@ -1067,8 +1125,47 @@ def _float32_words(args, expected, got) -> str:
 FLOAT32 = Mistake("float32", _float32_words, fits=lambda a, e, g: _tie_gap(a) is not None)
 
 
+def _full(x: float) -> str:
+    """``x`` as Python prints it (every digit it needs), whole numbers without ".0"."""
+    x = float(x) + 0.0
+    if not np.isfinite(x):
+        return "np.inf" if x > 0 else ("-np.inf" if x < 0 else "np.nan")
+    return str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x)
+
+
+#: The most pixels a tile's stored depths may differ from their commonest value and still be
+#: quoted one by one (the named cases: one or two; the random ones: all of them).
+QUOTED = 3
+
+
+def case_words(xyz, row0, col0, size, buffer) -> str:
+    """The case's arguments, as Python a student can paste to call the function on it again
+    (r232 C2: 8.2's lines quoted the stored depth only). A buffer of random depths is said by
+    its range and its farthest pixel (the only one a right answer reads)."""
+    rows = ", ".join(
+        "[" + ", ".join(_full(v) for v in vertex) + "]" for vertex in np.asarray(xyz, float)
+    )
+    buffer = np.asarray(buffer, dtype=float)
+    values, counts = np.unique(buffer, return_counts=True)
+    common = values[int(np.argmax(counts))]
+    odd = np.argwhere(buffer != common)
+    if len(odd) <= QUOTED:
+        stored = f"buffer = np.full(({size}, {size}), {_full(common)})"
+        stored += "".join(f"; buffer[{r}, {c}] = {_full(buffer[r, c])}" for r, c in odd)
+    else:
+        r, c = np.unravel_index(int(np.argmax(buffer)), buffer.shape)
+        stored = (f"buffer: {buffer.size} depths drawn at random from {num(buffer.min())} to "
+                  f"{num(buffer.max())}, the farthest buffer[{r}, {c}] = {_full(buffer[r, c])}")  # fmt: skip
+    return f"xyz = [{rows}], row0 = {row0}, col0 = {col0}, size = {size}, {stored}"
+
+
 def explain_hiz(args, expected, got) -> str:
-    """The extreme centres, the triangle's nearest depth there, the tile's farthest, verdicts."""
+    """The case's arguments, the extreme centres, the triangle's nearest depth there, the
+    tile's farthest, verdicts."""
+    return f"{case_words(*args)}; {_explain_bound(args, expected, got)}"
+
+
+def _explain_bound(args, expected, got) -> str:
     xyz, row0, col0, size, buffer = args
     box = _box_corners(xyz, row0, col0, size)
     verdict = (
@@ -1110,9 +1207,7 @@ def draw_hiz(ax, case, got):
     from .tries import hints_spent
 
     _, (xyz, row0, col0, size, buffer), expected = case
-    shown = np.where(np.isfinite(buffer), buffer, np.nan)
-    artists = [ax.imshow(shown, extent=(col0, col0 + size, row0 + size, row0), cmap="viridis",
-                         vmin=0, vmax=1, interpolation="nearest")]  # fmt: skip
+    artists = _stored(ax, buffer, row0, col0, size)
     # the triangle itself, outlined (r40 08-4: only an edge or none of it showed in the view;
     # r94 D8-12: a translucent fill tinted the stored depths under it, as if two were held)
     artists.append(ax.add_patch(Polygon(xyz[:, :2], closed=True, fill=False, hatch="//",
@@ -1128,7 +1223,9 @@ def draw_hiz(ax, case, got):
         artists += _extreme_centres(ax, xyz, row0, col0, size)
     # r149 E3: the tile's pixel centres (which lie in the box is the task), ticks on whole pixels
     cy, cx = np.mgrid[row0 : row0 + size, col0 : col0 + size] + 0.5
-    artists += ax.plot(cx.ravel(), cy.ravel(), ".", color="#d9d9d9", ms=2.5, zorder=3)
+    # (dark on the flat light tile, light on the coloured one, r232 FIG2)
+    dots = "#636363" if _uniform(buffer) else "#d9d9d9"
+    artists += ax.plot(cx.ravel(), cy.ravel(), ".", color=dots, ms=2.5, zorder=3)
     # r214 item 8: the legend's marker larger and darker than the centres' (a 2.5-pt light dot
     # on white could not be seen)
     artists += ax.plot([], [], "o", color="#969696", ms=4, label="pixel centres")
@@ -1144,9 +1241,85 @@ def draw_hiz(ax, case, got):
     # r198 C.4: no tick label at the view's top edge, where the title's second line sat on it
     ax.set_yticks(np.arange(row0, row0 + size + VIEW_MARGIN + 1, step))
     ax.set_aspect("equal")
+    artists += _vertex_depths(ax, xyz, _in_view(xyz, row0, col0, size))
     artists += _whole_triangle(ax, xyz, row0, col0, size)
-    artists.append(ax.figure.colorbar(artists[0], ax=ax, label="stored depth"))
     artists.append(_legend(ax, far))
+    return artists
+
+
+#: The colour of a tile whose drawn pixels all store one depth (no colour bar then).
+STORED_COLOUR = "#c6dbef"
+
+
+def _stored(ax, buffer, row0: int, col0: int, size: int) -> list:
+    """The tile's stored depths (+∞ white): one flat colour, its depth in the legend, where
+    every drawn pixel stores the same depth (r232 FIG2: a 0–1 colour bar over one value said
+    nothing); else coloured over their own range, with a colour bar, and the farthest pixel
+    outlined (the one the verdict reads)."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Rectangle
+
+    extent = (col0, col0 + size, row0 + size, row0)
+    drawn = np.isfinite(buffer)
+    finite = buffer[drawn]
+    if _uniform(buffer):
+        flat = ListedColormap([STORED_COLOUR]).with_extremes(bad="white")
+        image = ax.imshow(np.where(drawn, 0.0, np.nan), cmap=flat, vmin=0, vmax=1, extent=extent,
+                          interpolation="nearest")  # fmt: skip
+        if finite.size == 0:
+            return [image]
+        every = "every pixel" if drawn.all() else "every pixel drawn"
+        key = ax.plot([], [], "s", color=STORED_COLOUR, ms=9,
+                      label=f"stored depth {num(finite[0])}, {every}")  # fmt: skip
+        return [image, *key]
+    image = ax.imshow(np.where(drawn, buffer, np.nan), cmap="viridis", vmin=finite.min(),
+                      vmax=finite.max(), extent=extent, interpolation="nearest")  # fmt: skip
+    out = [image, ax.figure.colorbar(image, ax=ax, label="stored depth", shrink=0.6)]
+    if drawn.all():  # (else the farthest is an empty pixel, white and in the legend)
+        r, c = np.unravel_index(int(np.argmax(buffer)), buffer.shape)
+        out.append(ax.add_patch(Rectangle((col0 + c, row0 + r), 1, 1, fill=False, lw=2.0,
+                                          edgecolor="black", zorder=4,
+                                          label="the farthest stored depth")))  # fmt: skip
+    return out
+
+
+def _uniform(buffer) -> bool:
+    """Do the tile's drawn pixels (those not +∞) all store one depth (or is none drawn)?"""
+    finite = np.asarray(buffer, dtype=float)[np.isfinite(buffer)]
+    return finite.size == 0 or bool(finite.min() == finite.max())
+
+
+def _in_view(xyz, row0: int, col0: int, size: int) -> np.ndarray:
+    """Which vertices lie in the figure's view of the tile (the tile and :data:`VIEW_MARGIN`
+    px around it)."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    lo = np.array([col0, row0], float) - VIEW_MARGIN
+    hi = np.array([col0 + size, row0 + size], float) + VIEW_MARGIN
+    return ((xy >= lo) & (xy <= hi)).all(axis=1)
+
+
+def _vertex_depths(ax, xyz, which, reach: float = 9.0, named: bool = True) -> list:
+    """Each vertex of ``which`` as a dot and "vk: depth" (``named``; else the depth, in the
+    narrow inset), set outward from the triangle's
+    centroid, its box aligned on the side facing the vertex (r214 item 7: a small triangle's
+    labels no longer cover one another; r232 FIG2: the main panel labelled none, and the
+    inset's labels, with no dot, read as the tile's corners')."""
+    xyz = np.asarray(xyz, dtype=float)
+    centre = xyz[:, :2].mean(axis=0)
+    artists = []
+    for k in np.flatnonzero(which):
+        x, y, z = xyz[k]
+        d = np.array([x, y]) - centre
+        d = d / (np.hypot(*d) or 1.0)
+        ha = "center" if abs(d[0]) < 0.38 else ("left" if d[0] > 0 else "right")
+        va = "center" if abs(d[1]) < 0.38 else ("top" if d[1] > 0 else "bottom")  # y down
+        artists += ax.plot([x], [y], "o", color="#7f0000", ms=3.5, zorder=6)
+        text = f"v{k + 1}: {num(float(z))}" if named else num(float(z))
+        artists.append(ax.annotate(text, (x, y),
+                                   xytext=(reach * d[0], -reach * d[1]), textcoords="offset points",
+                                   ha=ha, va=va, fontsize="small", color="#7f0000", zorder=6,
+                                   bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
+                                         "edgecolor": "none", "alpha": 0.85}))  # fmt: skip
     return artists
 
 
@@ -1246,8 +1419,9 @@ def _extreme_centres(ax, xyz, row0, col0, size) -> list:
 
 
 def _whole_triangle(ax, xyz, row0, col0, size) -> list:
-    """An inset with the whole triangle, its vertices' depths and the tile (r49: a triangle
-    larger than the tile's close-up tinted all of it, and could not be seen)."""
+    """An inset with the whole triangle, the depths of the vertices beyond the main view and
+    the tile (r49: a triangle larger than the tile's close-up tinted all of it, and could not be
+    seen)."""
     from matplotlib.patches import Polygon, Rectangle
 
     inset = ax.inset_axes([-0.62, 0.5, 0.45, 0.45])  # outside: no label hidden
@@ -1260,20 +1434,9 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     # their vertex, a little further)
     pad = 0.3 * float((hi - lo).max()) + 3
     lo, hi = lo - pad, hi + pad
-    # r198 C.6: every vertex's depth (which way the plane rises), each set outward from the
-    # triangle's centroid; r214 item 7: each label's box reaches away from its vertex (aligned
-    # on the side facing it), so a small triangle's labels no longer cover one another
-    centre = xyz[:, :2].mean(axis=0)
-    for x, y, z in xyz:
-        d = np.array([x, y]) - centre
-        d = d / (np.hypot(*d) or 1.0)
-        ha = "center" if abs(d[0]) < 0.38 else ("left" if d[0] > 0 else "right")
-        va = "center" if abs(d[1]) < 0.38 else ("top" if d[1] > 0 else "bottom")  # y down
-        # r149 E3: "small" (was x-small, about 9 pt) on a white ground, clear of the tile's outline
-        inset.annotate(num(float(z)), (x, y), xytext=(3 * d[0], -3 * d[1]),
-                       textcoords="offset points", ha=ha, va=va, fontsize="small",
-                       color="#7f0000", bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
-                       "edgecolor": "none", "alpha": 0.85}, zorder=4)  # fmt: skip
+    # r198 C.6: the depth of every vertex the main panel does not show (which way the plane
+    # rises), beside a dot at the vertex (r232 FIG2); r149 E3: "small", on a white ground
+    _vertex_depths(inset, xyz, ~_in_view(xyz, row0, col0, size), reach=3.0, named=False)
     inset.set_xlim(lo[0], hi[0])
     inset.set_ylim(hi[1], lo[1])
     inset.set_aspect("equal")
@@ -1296,8 +1459,7 @@ HIZ_HINTS = (
                 r"\([^()]*\); the plane is nearest at \([^()]*\), so the bound \(no nearer than "
                 r"the nearest vertex\) is [^;]*; the tile's farthest stored depth is ([^:]*):"),
      # not "(the larger of the two)": that is what the "smaller bound" mistake is asked (r94)
-     r"the tile's farthest stored depth is \1, and the task's lower bound on the triangle's "
-     "depth in the tile decides (what is it here?):"),
+     r"the tile's farthest stored depth is \1:"),
     # r173 M1: the outer-corner words ended on the task's answer
     ("; take the plane at the extreme centres of the tile's part inside the triangle's "
      "bounding box", ": where in the tile can a fragment of the triangle lie?"),
@@ -1325,6 +1487,9 @@ HIZ_HINTS = (
      "10's keeps blocks this one rejects)", ": which of the tile's centres can hold a fragment "
      "of the triangle at all?"),
     ("; take only the centres inside it", ""),
+    # r232: round() half to even: which column (row) is the box's first is the task's question
+    (re.compile(r"; the box's first (column|row) is the first whose centre lies at or after "
+                r"[xy]min, ⌈[xy]min − ½⌉"), r"; which \1 is the box's first?"),
     ("; take the plane's minimum over the tile's centres inside the box", ""),
     # r94 D8-3: the swapped row and column gave the tile's extreme centres on the first try
     ("; its pixel centres lie at x = col0 + ½ … col0 + size − ½, y = row0 + ½ … row0 + size "

@@ -17,7 +17,9 @@ edge passes at E₀ + T, *partial* otherwise; each test is the one top-left rule
 left edge, −2^-16 px², E's smallest step at a centre, on the others: llvmpipe's ``c + 1`` in
 ``lp_setup_tri.c`` and ``c − 1`` in ``lp_rast_tri.c``) so that each test is one sign test;
 the verdicts are compared, so either way passes. A zero-area triangle rejects every block.
-Vertices are on the 1/256 grid. ``x0`` and ``y0`` are integer arrays of one shape (one block
+Vertices are on the 1/256 grid. The task counts in lesson 10 §4's integer units (256 a pixel,
+r232 M1): a float bias of a fraction of a px² added to a large E₀ rounds away, and the far ties
+of :data:`FAR_TIES` (|E₀| up to 2^38 px²) name that slip. ``x0`` and ``y0`` are integer arrays of one shape (one block
 each) and the answer an array of that shape (a single text stands for every block).
 
 The expected answer is computed from the package's pieces: the snapped, oriented set-up
@@ -149,6 +151,13 @@ BIASES = {"bias 2^-15": 2.0**-15, "bias 1/256": 2.0**-8, "bias 1": 1.0, "bias 1/
           "bias added": -(2.0**-16)}  # fmt: skip
 
 
+#: A tie rule for each test, (reject, accept), where the two tests differ: the rule in the reject
+#: test only (r141 D8.1-6), or the bias in one test only (r232: no bias in the reject test is
+#: llvmpipe's trivial reject on the edges that are neither top nor left).
+SPLIT_TIES = {"accept strict": ("top-left", "strict"), "reject loose": ("loose", "top-left"),
+              "accept loose": ("top-left", "loose")}  # fmt: skip
+
+
 def _passes(e, tie: str, setup, k: int, d) -> np.ndarray:
     """Edge k's test of the values ``e`` under rule ``tie`` (a bias: E ≥ it off top-left edges)."""
     if tie in BIASES:
@@ -179,6 +188,8 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     as given and no area computed, so a zero-area triangle is not rejected either (r149 M1);
     "swap always": two vertices swapped whatever the winding (code for counter-clockwise
     triangles only: a clockwise one is then oriented the wrong way, r214 item 4).
+    "reject loose" or "accept loose": no bias in that test alone (r232: E ≥ 0 on every edge
+    there, the other test right; :data:`SPLIT_TIES`).
     ``longer``: "reject" or "accept", that offset alone spans one step more (size steps from
     the first centre: llvmpipe's cautious reject offset, r214 item 3). ``logic``
     "inside" rejects a block whose four extreme points all lie outside the triangle and
@@ -201,8 +212,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         return _verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
     if tie == "as given":
         tie = "bottom-right" if ccw else "top-left"
-    accept_tie = "strict" if tie == "accept strict" else tie
-    tie = "top-left" if tie == "accept strict" else tie
+    tie, accept_tie = SPLIT_TIES.get(tie, (tie, tie))
     given = orient in (False, "unchecked")
     v = snap(np.asarray(xy, dtype=float)) if given else setup.p / setup.unit
     if orient == "unchecked" and tie == "top-left":
@@ -569,6 +579,42 @@ def _centre_floored_words(args, expected, got) -> str:
     )
 
 
+def _read_yx(xy, x0, y0, size):
+    """The package's verdicts with each vertex read as (y, x): the triangle mirrored about the
+    diagonal x = y."""
+    return expected_block(np.asarray(xy, dtype=float)[:, ::-1], x0, y0, size)
+
+
+#: r232 half-named 3: the vertices read as (y, x) give the verdicts of x0 and y0 swapped
+#: wherever no tie on a sloped edge tells them apart (mirrored about the diagonal, a triangle's
+#: top edges become left edges): said both ways where both give the answer.
+_AXES = {
+    "x0 y0": "you swapped x0 and y0: x0 holds the blocks' first columns (x), y0 their first "
+    "rows (y); a block's first pixel centre lies at (x0 + ½, y0 + ½)",
+    "yx": "you read the vertices as (y, x): each row of xy is one vertex's (x, y), x first (to "
+    "the right), then y (down); read the other way, the triangle is mirrored about the "
+    "diagonal x = y",
+    "both": "you swapped x0 and y0, or read the vertices as (y, x): on this case the two give "
+    "the same verdicts (the blocks mirrored about the diagonal x = y, or the triangle), so the "
+    "check cannot tell which; x0 holds the blocks' first columns (x), y0 their first rows (y), "
+    "and each row of xy is one vertex's (x, y); a block's first pixel centre lies at "
+    "(x0 + ½, y0 + ½)",
+}
+
+
+def _axes_words(primary: str):
+    """The words of x0 and y0 swapped (``primary`` "x0 y0") or of the vertices read as (y, x)
+    ("yx"): both where both give this case's answer."""
+
+    def words(args, expected, got):
+        swapped = same_kind(classify_with(*args, points="x0 y0 swapped"), got, args)
+        if swapped and same_kind(_read_yx(*args), got, args):
+            return _AXES["both"]
+        return _AXES[primary]
+
+    return words
+
+
 BLOCK_KNOBS = Knobs(classify_with, {
     "points": [
         Slip("outer corners", "you evaluated E at the block's outer corners; the extreme pixel "
@@ -585,9 +631,7 @@ BLOCK_KNOBS = Knobs(classify_with, {
         Slip("pixel corners", _at_first(lambda a, e, g: "you evaluated E at the pixels' "
              f"top-left corners ({a[1]}, {a[2]}) … ({a[1] + a[3] - 1}, {a[2] + a[3] - 1}); the "
              "pixel centres lie ½ px right and down of them"), "pixel corners"),
-        Slip("x0 and y0 swapped", "you swapped x0 and y0: x0 holds the blocks' first columns "
-             "(x), y0 their first rows (y); a block's first pixel centre lies at "
-             "(x0 + ½, y0 + ½)", "x0 y0 swapped"),
+        Slip("x0 and y0 swapped", _axes_words("x0 y0"), "x0 y0 swapped"),
         Slip("offsets not scaled", _span_words("one pixel step whatever the block's size", "; "
              "llvmpipe's offset for a one-pixel block, not scaled to the block?", lambda s: 1),
              "one step"),
@@ -735,6 +779,106 @@ TIE_KIND_SLIPS = [
         "right (x increasing, the interior below it), a top edge, fails in your tests, and the "
         "top-left rule includes it; here " + _tie_words(a, e, g)), tie="left"),
 ]  # fmt: skip
+
+
+#: r232 half-named 1, 2: the bias in one test only was told the rule at one centre ("edge
+#: v1→v3 excludes the block's four corner centres", "the top-left rule excludes it"), not the
+#: slip; each named where it gives every answer of the check.
+BIAS_IN_ONE_TEST = [
+    _only_whole("no bias in the reject test", lambda a, e, g: (
+        "your reject test takes no bias off the edges that are neither top nor left (E₀ + R < 0 "
+        "there; your accept test has the bias): a block whose best centre lies exactly on such "
+        "an edge (E = 0) holds no centre the triangle covers, yet you leave it partial. "
+        "llvmpipe's trivial reject does the same on those edges, on purpose (a cautious test: "
+        "its pixel tests then reject every pixel of the block); the task's reject test is the "
+        "exact one, with the same bias as the accept test; here " + _tie_words(a, e, g)),
+        tie="reject loose"),
+    _only_whole("no bias in the accept test", lambda a, e, g: (
+        "your accept test takes no bias off the edges that are neither top nor left (E₀ + T ≥ 0 "
+        "there; your reject test has the bias): a block whose worst centre lies exactly on such "
+        "an edge (E = 0), a centre the top-left rule leaves out, is accepted, and all its "
+        "pixels are filled without a test, that one too, so the triangle beyond that edge "
+        "fills it as well (a pixel drawn twice); the accept test needs the same bias as the "
+        "reject test; here " + _tie_words(a, e, g)), tie="accept loose"),
+]  # fmt: skip
+
+
+#: The smallest |E₀| (px²) at which a tie's bias is taken to be lost: half float64's spacing of
+#: numbers near 2^12 is 2^-41 px², below any bias a student types (10⁻¹² is lost from 2^14 on).
+#: A tie with a smaller E₀ decides against a bias that works (the notebook's old float model
+#: solution with no bias in its accept test was told "lost" at E₀ = 84 px²).
+LOST_FROM = 2.0**12
+
+
+def _bias_lost(args, expected, got) -> bool | None:
+    """Does the answer differ only where it takes the tie bias as 0 (E ≥ 0 on every edge), each
+    time at a tie far from the block's first centre (|E₀| ≥ :data:`LOST_FROM`)? (r232: a bias
+    of a fraction of a px² added to a large E₀, lost to float64's rounding.)"""
+    xy, x0, y0, size = args
+    gx, gy = grid_of(x0, y0)
+    want = np.broadcast_to(np.asarray(expected), gx.shape)
+    have = np.broadcast_to(np.asarray(got), gx.shape)
+    differ = want != have
+    if not differ.any():
+        return None
+    loose = np.broadcast_to(np.asarray(classify_with(*args, tie="loose")), gx.shape)
+    if not (have[differ] == loose[differ]).all():
+        return False
+    for bx, by, g in zip(gx[differ], gy[differ], have[differ], strict=True):
+        tie = _lost_tie(xy, int(bx), int(by), size, g == "accepted")
+        if tie is None or abs(tie[2]) < LOST_FROM:
+            return False
+    return True
+
+
+def _lost_tie(xy, bx: int, by: int, size: int, accept: bool):
+    """The tie of block (bx, by) on an edge neither top nor left at its extreme centre (the
+    smallest E over the block where ``accept``, else the largest): (edge k, corner j, E₀ of
+    that edge in px², the set-up, rows, cols); None where there is none."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    rows, cols = _corners(bx, by, size)
+    values = edge_values_at(setup, rows, cols) / setup.unit**2  # (4, 3) px², exact
+    pick = values.min(axis=0) if accept else values.max(axis=0)
+    ties = [k for k in range(3) if not setup.top_left[k] and pick[k] == 0]
+    if not ties:
+        return None
+    k = max(ties, key=lambda k: abs(values[0, k]))  # corner 0: the first centre
+    j = int(np.argmin(values[:, k]) if accept else np.argmax(values[:, k]))
+    return k, j, float(values[0, k]), setup, rows, cols
+
+
+def _bias_lost_words(args, expected, got) -> str:
+    """The first block where the bias was lost: the tie, the test it passed, E₀ there and
+    float64's spacing of numbers near it."""
+    _, (xy, bx, by, size), e, g, _ = first_block(args, expected, got)
+    accept = g == "accepted"
+    tie = _lost_tie(xy, bx, by, size, accept)
+    if tie is None:  # (the answer differs otherwise: the words of the rule say what)
+        return _block_rule(args, expected, got)[2:]
+    k, j, e0, setup, rows, cols = tie
+    name = f"v{setup.perm[k] + 1}→v{setup.perm[(k + 1) % 3] + 1}"
+    where = "accept test (E₀ + T + β ≥ 0)" if accept else "reject test (E₀ + R + β < 0)"
+    spacing = f"2^{int(np.log2(np.spacing(abs(e0))))}"
+    return (
+        f"your bias is lost to rounding: centre {vec((cols[j] + 0.5, rows[j] + 0.5))} lies "
+        f"exactly on edge {name}, which is neither top nor left, so the top-left rule excludes "
+        f"it, yet it passes your {where} as if there were no bias. You add the bias to a large "
+        f"number: at the block's first centre E₀ = {num(e0)} px² on that edge, and float64's "
+        f"numbers near it lie {spacing} px² apart, so E₀ + β rounds back to E₀ for any bias "
+        "below half that (where E₀ is small, the same bias works). Add the bias after the "
+        "offset ((E₀ + T) + β and (E₀ + R) + β are exact), or count in integer units, as lesson "
+        "10 §4 does, where every value and test is exact"
+    )
+
+
+#: r232 wrongly passed 1, C1: a bias lost to float64's rounding (β = −10⁻¹² or −10⁻⁹ added to
+#: E₀, or even −2⁻¹⁶ at a 2^19-px block), named where the answer differs only at ties on edges
+#: neither top nor left, taken there as E ≥ 0. After the tie rules (the table's order): an
+#: answer with no bias at all, or none in one test, is told so by their own words.
+BIAS_LOST = Mistake("bias lost to rounding", _bias_lost_words, fits=_bias_lost, only_whole=True)
+
+
+READ_YX = Mistake("vertices read as (y, x)", _axes_words("yx"), gives=_read_yx)
 
 
 def _constant(kind: str) -> Mistake:
@@ -1001,7 +1145,7 @@ BLOCK_HINTS = (
 def exercise(scene) -> Exercise:
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, INT_VERTICES, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *map(_constant, KINDS), BLOCK_KNOBS, CCW_ONLY],
+        [BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, BIAS_LOST, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
@@ -1082,11 +1226,50 @@ def _block_cases(rng, word):
     big = snap(np.array([[3.3, 2.1], [250.2, 60.7], [40.9, 254.4]]))
     gx, gy = _covering(big, 8)
     grids.append(("a 256-px triangle, every 8-px block over it", big, gx, gy, 8))
+    grids += _far_ties(FAR_TIES[:3])
+    return _labelled(grids)
+
+
+def _labelled(grids) -> list:
+    """(label with the case's numbers, args, the package's verdicts) of each grid."""
     return [
         (f"{label}: {tri_words(xy)}, {_grid_words(gx, gy, s)}", (xy, gx, gy, s),
          expected_block(xy, gx, gy, s))
         for label, xy, gx, gy, s in grids
     ]  # fmt: skip
+
+
+#: r232 (wrongly passed 1, C1): ties far from the block's first centre, each on an edge that is
+#: neither top nor left, where E₀ is large: 6·10⁴ px² and more. A bias of a fraction of a px²
+#: added to E₀ before the offset (β = −10⁻¹², −10⁻⁹, even −2⁻¹⁶ at 2^19-px blocks) is lost to
+#: float64's rounding there (half its spacing of numbers near E₀ exceeds it), and the tie passes
+#: as if there were no bias; every tie case before had E₀ below 10³ px² (or no tie at an extreme
+#: centre). Each: (label, vertices, first block (x0, y0), size, grid shape), the tie in the
+#: second block of a row (the first accepted, the third rejected) or the first of a 2 × 2 grid.
+#: |E₀| at the tie: 6·10⁴, 2.5·10⁵, 2.5·10⁶ px² (−10⁻¹² lost, −10⁻⁹ not), then 6.7·10⁷,
+#: 3.3·10⁷, 4.1·10⁷ px² (−10⁻⁹ lost too); the last two lie after the 2^19-px blocks.
+FAR_TIES = (
+    ("a 4000-px right edge through the right corners of a 16-px block, far from its first centre",
+     [[300.5, -992.0], [300.5, 3008.0], [-3000.0, 1008.0]], (269, 1000), 16, (3,)),
+    ("a 4000-px right edge through the right corners of a 64-px block, far from its first centre",
+     [[1000.5, -968.0], [1000.5, 3032.0], [0.0, 1032.0]], (873, 1000), 64, (3,)),
+    ("a 40,000-px right edge through a 64-px block's bottom-left corner, far from its first "
+     "centre (nothing inside)",
+     [[-19999.5, -19936.5], [20000.5, 20063.5], [-59999.5, 60063.5]], (0, 0), 64, (2, 2)),
+    ("a 65,536-px right edge through the right corners of a 1024-px block, far from its first "
+     "centre", [[1000.5, 0.0], [1000.5, 65536.0], [-64535.5, 32768.0]], (-1047, 32256), 1024, (3,)),
+    ("a 131,072-px bottom edge through the lower corners of a 256-px block, far from its first "
+     "centre", [[66164.0, 1000.5], [-64908.0, 1000.5], [628.0, -60000.0]], (500, 745), 256, (2, 2)),
+    ("a 40,000-px right edge through a 1024-px block's bottom-left corner, far from its first "
+     "centre (nothing inside)",
+     [[-19999.5, -18976.5], [20000.5, 21023.5], [-59999.5, 61023.5]], (0, 0), 1024, (2, 2)),
+)  # fmt: skip
+
+
+def _far_ties(ties) -> list:
+    """:data:`FAR_TIES` as grids: (label, vertices, x0 array, y0 array, size)."""
+    return [(label, np.array(xy, dtype=float), *_around(*first, size, shape), size)
+            for label, xy, first, size, shape in ties]  # fmt: skip
 
 
 def _grid_words(gx, gy, size) -> str:
@@ -1110,26 +1293,31 @@ def _huge_blocks() -> list:
     """3 × 3 grids of 2^19 × 2^19 px blocks, every verdict, both windings (r64 08-1: testing
     all size² centres passed every case, though the task asks for one evaluation per block).
     A scan of the centres cannot finish within the CPU limit, and the case's label says why.
-    Vertices on whole pixels, so that float64 edge functions are exact."""
+    Then the far ties of :data:`FAR_TIES` at 1024 and 256 px (r232), after them: a scan that
+    ran past its limit on the huge blocks is told so there, not on these."""
     xy = np.array([[-5e5, -5e5], [2e6, -5e5], [-5e5, 2e6]])
+    # r232 C1: the middle block's best centre (0.5, 524287.5) exactly on a right edge, where
+    # E₀ ≈ 2^38 px²: float64's numbers there lie 2^-14 px² apart, and β = −2^-16 px² added to
+    # E₀ before the offset is lost (the notebook's float model solution said partial)
+    tie = np.array([[-262144.0, 262144.0], [262145.0, 786431.0], [-524288.0, 524288.0]])
     why = "a scan of their 2.7·10^11 centres each does not finish; one evaluation per block does"  # fmt: skip
     gx, gy = _around(0, 0, HUGE, (3, 3))
-    return [
-        (f"{label}: {tri_words(t)}, {_grid_words(gx, gy, HUGE)}", (t, gx, gy, HUGE),
-         expected_block(t, gx, gy, HUGE))
-        for label, t in (
-            (f"blocks of 2^19 × 2^19 px inside, across and beyond a huge triangle's long edge ({why})", xy),
-            (f"counter-clockwise, blocks of 2^19 × 2^19 px over a huge triangle ({why})", xy[[0, 2, 1]]),
-        )
-    ]  # fmt: skip
+    return _labelled([
+        (f"blocks of 2^19 × 2^19 px inside, across and beyond a huge triangle's long edge ({why})", xy, gx, gy, HUGE),
+        (f"counter-clockwise, blocks of 2^19 × 2^19 px over a huge triangle ({why})", xy[[0, 2, 1]], gx, gy, HUGE),
+        (f"blocks of 2^19 × 2^19 px, a right edge through the middle one's bottom-left corner, "
+         f"far from its first centre (nothing inside; {why})", tie, gx - HUGE, gy - HUGE, HUGE),
+        *_far_ties(FAR_TIES[3:]),
+    ])  # fmt: skip
 
 
 _huge = cache(_huge_blocks)
 
 
 def block_cases() -> list:
-    """The hard and random grids (fixed, then drawn for this check), then the huge blocks,
-    last, so that a per-centre scan is told its other mistakes before it runs out of time."""
+    """The hard and random grids (fixed, then drawn for this check), then the huge blocks
+    and the far ties of 256 and 1024 px, last, so that a per-centre scan is told its other
+    mistakes before it runs out of time."""
     return _seeded_cases() + copy.deepcopy(_huge())
 
 
@@ -1348,36 +1536,32 @@ def _superscript(n: int) -> str:
     return str(n).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
 
 
-#: How far from the origin (px) float64 holds every edge function of 8.1 exactly, with vertices
-#: on the 1/256 grid and centres on the ½ grid (r173 F1): a difference of two coordinates is
-#: then below 2^18 px, a product of two below 2^36 px² (2^52 steps of 2^-16 px²), and E, a
-#: difference of two products, below 2^53 steps, which float64 holds (so do E₀ + R and E₀ + T,
-#: E at other centres within the reach). Beyond it, a product can need more than float64's 53
-#: bits: the reader's vertices 6·10^5 px out gave a wrong verdict in 7 of 300 ties.
-FLOAT64_REACH = 2**17
+#: Units a pixel of the task's integer count (lesson 10 §4: Direct3D's and llvmpipe's 8
+#: sub-pixel bits): vertices on the 1/256 grid and pixel centres are whole numbers of them.
+UNITS = 256
+#: The register classify_block counts in (NumPy's int64; Python's ints have no limit).
+INT_BITS = 64
 
 
-def _whole_pixels(xy) -> bool:
-    xy = np.asarray(xy, dtype=float)
-    return bool(np.array_equal(xy, np.round(xy)))
-
-
-def float64_reach() -> str:
-    """The sentence cell 1 of exercise 08 prints (cell 2 quotes its numbers): how far out
-    float64 is exact, and that every case of the check lies within that reach (its vertices
-    and the pixel centres of its blocks) or has vertices on whole pixels (the 2^19-px grids,
-    whose differences are multiples of ½ px: exact far beyond, to 2^24 px)."""
-    fine = 0.0
+def integer_budget() -> str:
+    """The sentence cell 1 of exercise 08 prints (cell 2 refers to it): lesson 10 §4's bit
+    count for the check's cases in units of 1/256 px. r232 M1: the task counts in integers as
+    the lesson's walker does (it asked for float64, whose exactness needed a reach, and a bias
+    added to a large E₀ rounded away, C1): every coordinate that enters, vertex or pixel centre,
+    lies within a range of L px, so two differ by less than 256·L ≤ 2^d units, and E needs
+    2d + 2 bits with its sign."""
+    lo, hi = np.inf, -np.inf
     for _, (xy, gx, gy, size), _ in block_cases():
-        if _whole_pixels(xy):
-            continue
-        far = max(np.abs(xy).max(), np.abs(gx).max() + size, np.abs(gy).max() + size)
-        fine = max(fine, float(far))
-    assert fine < FLOAT64_REACH, fine  # the check's own cases: float64 is exact on them
+        lo = min(lo, float(np.min(xy)), float(min(gx.min(), gy.min())))
+        hi = max(hi, float(np.max(xy)), float(max(gx.max(), gy.max()) + size))
+    span = hi - lo
+    d = int(np.ceil(np.log2(UNITS * span)))
+    assert 2 * d + 2 <= INT_BITS, d  # the check's own cases: int64 holds every value
     return (
-        f"8.1: float64 holds E exactly for vertices on the 1/256 grid and centres within "
-        f"2^17 = {FLOAT64_REACH:,} px of the origin; the check's cases lie within "
-        f"{fine:,.0f} px, or have their vertices on whole pixels (its 2^19-px blocks)"
+        f"8.1: the check's vertices and pixel centres lie within x, y = {lo:,.0f} … {hi:,.0f} px, "
+        f"a range of L = {span:,.0f} px: in units of 1/{UNITS} px two coordinates differ by less "
+        f"than {UNITS}·L < 2^{d}, so E needs 2·{d} + 2 = {2 * d + 2} bits (lesson 10 §4's count): "
+        f"int{INT_BITS} holds every value exactly"
     )
 
 
