@@ -11,6 +11,7 @@ from teachraster.study.antialiasing import (
     pixel_area,
     sample_error_study,
     study_triangles,
+    temporal_history,
 )
 
 
@@ -111,3 +112,33 @@ def test_edge_error_study_follows_mitchell():
     assert np.allclose(_half_plane_area(nx, ny, 0.5 * (nx + ny)), 0.5)
     with pytest.raises(ValueError, match="squares"):
         edge_error_study(counts=(8,))
+
+
+def test_temporal_history_averages_jittered_frames_and_reprojects():
+    """Lesson 08 §6 (review r240 M): TAA's history, h_t = (1 − α)·h_{t−1} + α·frame_t."""
+    rng = np.random.default_rng(5)
+    frames = rng.uniform(0, 1, (6, 3, 4))
+    h = temporal_history(frames, 0.25)
+    expect = frames[0].copy()
+    for f in frames[1:]:
+        expect = 0.75 * expect + 0.25 * f
+    np.testing.assert_allclose(h[-1], expect, rtol=0, atol=1e-15)
+    np.testing.assert_array_equal(h[0], frames[0])
+    assert (temporal_history(frames, 1.0) == frames).all()  # α = 1: no history kept
+    # a whole-pixel motion moves the history by whole pixels (the border repeated)
+    image = np.zeros((4, 5))
+    image[1, 2] = 1.0
+    moved = temporal_history([image, np.zeros((4, 5))], 0.5, motion=(1.0, 1.0))[1]
+    assert moved[2, 3] == 0.5 and moved.sum() == 0.5
+    # a fraction of a pixel: bilinear, the weights summing to one
+    half = temporal_history([image, np.zeros((4, 5))], 0.5, motion=(0.0, 0.5))[1]
+    assert half[1, 2] == half[2, 2] == 0.25
+    # colour channels share the weights
+    rgb = np.stack([frames, 2 * frames], axis=-1)
+    np.testing.assert_allclose(temporal_history(rgb, 0.25, motion=(0.3, -0.2))[..., 1],
+                               2 * temporal_history(frames, 0.25, motion=(0.3, -0.2)))  # fmt: skip
+    for bad in (0.0, 1.5, -0.1):
+        with pytest.raises(ValueError, match="alpha"):
+            temporal_history(frames, bad)
+    with pytest.raises(ValueError, match="frames"):
+        temporal_history(frames[0], 0.5)

@@ -103,7 +103,12 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     # is one GL and Vulkan allow
     assert "conforming" not in flat and "teachraster's, which GL and Vulkan allow too" in flat
     assert "teachraster: the covered sample nearest the centre)" not in flat
-    assert flat.count("the centre when it is covered") >= 3  # §5, its table, the summary
+    # review r240 S: Direct3D 11's rule is the one taught (§5 and the summary); teachraster's
+    # variant, which keeps a covered centre, is one sentence and a row of the folded table
+    words = " ".join(flat.split())
+    assert words.count("the centre if every sample is covered, else the first covered") == 1
+    assert "a partly covered pixel whose centre is covered keeps the centre" in words
+    assert words.count("the centre when it is covered") == 1  # the table's teachraster row
     assert "levels (a **rotated grid**" not in flat  # (the summary, far below, says five)
     (held,) = [c for c in cells if "levels (a **rotated grid**" in "".join(c["source"])]
     assert "".join(held["source"]).startswith("q_levels.hold()")  # a code cell, held,
@@ -694,12 +699,12 @@ def test_lesson_08_review_r183_three_faults_abuffer_centroid_and_sliver_none(ns)
     plt.close("all")
     # 11: the prose cut by about a quarter (words: §2 was 366, §6's opening 254; §5's prose
     # round the centroid table 165, the Direct3D reading and the derivatives now within it)
+    # (review r240: the words on screen, outside the folds read after the lecture)
     section2 = next(s for s in md if s.startswith("## 2. Supersampling vs MSAA"))
     section6 = next(s for s in md if s.startswith("## 6. The resolve, on a scene"))
-    assert len(section2.split()) <= 300 and len(section6.split()) <= 200
+    assert len(_unfolded(section2).split()) <= 300 and len(_unfolded(section6).split()) <= 200
     centroid = next(s for s in md if "| teachraster |" in s)
-    prose = [line for line in centroid.splitlines() if not line.startswith("|")]
-    assert len(" ".join(prose).split()) <= 165
+    assert len(_unfolded(centroid).split()) <= 175
     # 12: the code's comments say why, not how the figure came to be
     code = " ".join(" ".join(s.split()) for c, s in zip(cells, sources) if c["cell_type"] == "code")
     for history in (
@@ -723,6 +728,13 @@ VULKAN_STANDARD_LOCATIONS = {
          (0.375, 0.875), (0.5, 0.0625), (0.25, 0.125), (0.125, 0.75),
          (0.0, 0.5), (0.9375, 0.25), (0.875, 0.9375), (0.0625, 0.0)],
 }  # fmt: skip
+
+
+def _unfolded(markdown: str) -> str:
+    """A Markdown cell without its folds (``<details>``, read after the lecture)."""
+    import re
+
+    return re.sub(r"<details>.*?</details>", "", markdown, flags=re.S)
 
 
 def _lesson_text():
@@ -770,8 +782,9 @@ def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
     assert "*should* decode the samples before averaging and *must*" in md
     assert "`VK_KHR_maintenance10`" in md and "can improve perceptual aliasing" in md
     assert "falls against it is not said (GL 4.6 §18.3.1)" in md
-    # S4: the filter is left open everywhere
-    assert "but no API promises it: each leaves the filter to the implementation" in md
+    # S4, and review r240 F: two APIs promise the box mean, GL's blit and vkCmdResolveImage
+    # leave the filter open (test_lesson_08_review_r240_resolve_promised_and_stored)
+    assert "but no API promises it" not in md
     # M2: the numbers the text quotes are the cell's
     res = ns.hdr_resolves
     assert f"{ns.hdr_samples.mean():.3f}" == "10.025" and "its mean is 10.025" in md
@@ -843,10 +856,18 @@ def test_lesson_08_review_r230_centroid_slopes_and_worst_pixels(ns):
     from notebook_runs import executed, streams
 
     cells, sources, md = _lesson_text()
-    assert all(ns.outward.values()) and set(ns.outward) == {2, 4, 8, 16}
-    assert ns.centre_out["16 standard"][1] == 0 < ns.centre_out["16 random"][1]
-    assert "on 16\nrandom samples they differ elsewhere too" not in md  # (md is one line)
-    assert "on 16 random samples they differ elsewhere too" in md
+    # review r240 S: no lesson cell compares the simulator's centroid with llvmpipe's; the
+    # facts the text states are checked here
+    assert not hasattr(ns, "centre_out") and not any("rules_part" in s for s in sources)
+    for n in (2, 4, 8, 16):  # "the standard patterns number their samples outward"
+        distance = np.hypot(*(tr.sample_pattern(n) - 0.5).T)
+        assert (np.diff(distance) >= 0).all(), n
+    for pattern in (4, 8, 16):  # so Direct3D 11's rule and ours part only at a covered centre
+        centre, differ = _centroid_rules_differ(ns.thin, ns.W, 4, pattern)
+        assert not (differ & ~centre).any() and differ[centre].all() and centre.any(), pattern
+    centre, differ = _centroid_rules_differ(ns.thin, ns.W, 4, tr.sample_pattern(16, "random"))
+    assert (differ & ~centre).any()  # "on a random pattern ... also part"
+    assert "On a random pattern" in md and "also part where the centre is not covered" in md
     assert '"(assuming the pixel is not fully covered)"' in md
     assert "D3D11.3 functional spec §3.5.5, *Centroid Sampling of Attributes*" in md
     assert "in increasing order of sample index" in md
@@ -871,3 +892,128 @@ def test_lesson_08_review_r230_centroid_slopes_and_worst_pixels(ns):
     (fig,) = [s for s in sources if "equal depth: where the triangles meet" in s]
     assert "if fr.sample_triangle_id is not None else ()" in fig
     assert "4 samples, a counted pixel" in fig
+
+
+def _centroid_rules_differ(triangle, width, height, pattern):
+    """At the partly covered pixels: is the centre covered, and do Direct3D 11's centroid
+    (the centre if every sample is covered, else the first covered sample; llvmpipe's) and
+    teachraster's ``centroid=True`` take points with different values of ``v``?"""
+    fill = tr.rasterize(triangle, width, height, samples=pattern)
+    ours = tr.rasterize(triangle, width, height, samples=pattern, centroid=True).attrs["v"]
+    cov = fill.sample_coverage
+    r, c = np.nonzero(cov.any(axis=-1) & ~cov.all(axis=-1))
+    first = np.argmax(cov[r, c], axis=-1)
+    plane = tr.attribute_plane(tr.snap(triangle.xy), triangle.attrs["v"])
+    theirs = plane(c + fill.samples[first, 0], r + fill.samples[first, 1])
+    centre = tr.rasterize(triangle, width, height).coverage[r, c]
+    return centre, np.abs(theirs - ours[r, c]) > 1e-9
+
+
+def test_lesson_08_review_r240_resolve_promised_and_stored(ns):
+    """Review r240 F (and C against 12b): two APIs promise the box resolve, Direct3D on its
+    standard patterns and Vulkan's render-pass AVERAGE; GL's blit and vkCmdResolveImage leave
+    it open, as lesson 12b's table says. S: the sRGB8 resolve as a GPU stores it, code 188."""
+    import json
+    from pathlib import Path
+
+    from notebook_runs import executed, streams
+
+    from teachraster.pipeline.blending.colour_blending import store_colour
+
+    _, _, md = _lesson_text()
+    assert (
+        '"is defined as a simple average of the samples within each pixel" (D3D11.3 §19.2.4' in md
+    )
+    assert "Vulkan, in a render pass: `VK_RESOLVE_MODE_AVERAGE_BIT`, the default," in md
+    assert 'gives "the average of the sample values", at implementation-defined precision' in md
+    assert ("GL's `glBlitFramebuffer` and Vulkan's `vkCmdResolveImage` leave the filter to the "
+            "implementation (GL 4.6 §18.3.1") in md  # fmt: skip
+    root = Path(__file__).resolve().parents[1]
+    twelve = json.loads((root / "notebooks" / "12b_blending.ipynb").read_text())["cells"]
+    table = " ".join(" ".join("".join(c["source"]) for c in twelve).split())
+    assert '"a simple average of the samples within each pixel"' in table
+    assert '`VK_RESOLVE_MODE_AVERAGE_BIT`, the default where no mode is specified: "the average of the sample values"' in table  # fmt: skip
+    assert "| Vulkan, `vkCmdResolveImage` |" in table and "implementation-dependent" in table
+    # the sRGB8 target: the unrounded mean, and the code a GPU stores (the package's rule)
+    er, ec = ns.er, ns.ec
+    light = np.append(ns.srgb_target.color[er, ec, :3], 1.0)
+    stored = tr.linear_to_srgb(store_colour(light, "srgb8")[:3]) * 255
+    np.testing.assert_allclose(stored, ns.stored_codes[er, ec], atol=1e-9)
+    assert ns.stored_codes[er, ec].tolist() == [188, 214, 201]
+    printed = streams(executed("08_antialiasing").notebook())
+    assert "stored in an 8-bit sRGB image: codes (188, 214, 201) = (0.737, 0.839, 0.788)" in printed
+    assert (
+        f"{ns.stored_codes[er, ec][0] / 255:.3f}" == "0.737" and f"{ns.px_light[0]:.3f}" == "0.735"
+    )
+    assert (
+        "stores the nearest code, 188 (0.737)" in md and "keeps the resolved mean unrounded" in md
+    )
+
+
+def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
+    """Review r240 M: D3D11.3 §19.2.4's reasons for the standard patterns (the worst edge, the
+    16-division grid) tied to §7's 16-sample rows; TAA shown (jittered frames averaging to 16
+    samples, the history, reprojection); a highlight under MSAA and per-sample shading. S: the
+    floor's supersampling is an ordered grid; ¼ or ¾; the summary's positions; prose cut."""
+    import re
+
+    from notebook_runs import executed, streams
+
+    cells, sources, md = _lesson_text()
+    printed = streams(executed("08_antialiasing").notebook())
+    # §19.2.4, quoted as the specification words it
+    discrepancy = "the error between analytic coverage and sample based coverage"
+    assert f'"halfplane discrepancy – {discrepancy}", this section\'s error' in md
+    assert '"the worst case (L-inf) error over all halfplanes (single worst edge)" proved' in md
+    assert '"not that useful alone" (D3D11.3 §19.2.4)' in md
+    assert '"a sub-pixel grid limited to 16 horizontal and vertical divisions"' in md
+    assert '"it is undesirable for a sample pattern to have multiple samples line up' in md
+    sixteen = tr.sample_pattern(16)
+    assert (sixteen * 16 == np.round(sixteen * 16)).all()  # on the 1/16 grid, every row taken
+    assert sorted(sixteen[:, 1].tolist()) == [k / 16 for k in range(16)]
+    assert "Hardware patterns are chosen for the worst case" not in md
+    # TAA: 16 jittered frames average to the 16-sample image exactly; the history errs far
+    # less than one sample; moving, reprojection beats no reprojection beats one sample
+    assert np.abs(ns.averaged_16 - ns.still_16[0]).max() == 0 and ns.ALPHA == 0.1
+    assert "largest difference 0" in printed and "history (α = 0.1) after 32 frames" in printed
+    crossed = (ns.still_16[0] > 0) & (ns.still_16[0] < 1)  # the pixels the edges cross
+
+    def err(image):
+        return float(np.abs(image - ns.still_16[0])[crossed].mean())
+
+    assert err(ns.taa_still[-1]) < 0.25 * err(ns.centre_only)
+    assert f"history (α = 0.1) after 32 frames: {err(ns.taa_still[-1]):.3f}" in printed
+    e = ns.crawl_errors
+    assert (e["history, reprojected"] < e["history, not reprojected"]
+            < e["1 sample at the centre"])  # fmt: skip
+    assert '"formally defined as temporally-amortized supersampling" (Yang, Liu and Salvi' in md
+    assert "(Karis, *High Quality Temporal Supersampling*, SIGGRAPH 2014)" in md
+    assert "the ghost above it, top right" in md
+    # the highlight: MSAA is the 1-sample image; per-sample shading far nearer the reference
+    assert ns.band_same and "4× MSAA and 1 sample, the same image: True" in printed
+    b = ns.band_errors
+    assert b["4× per-sample shading"] < 0.5 * b["4× MSAA"]
+    assert f"the band, {ns.band_width:.2f} px wide at half its peak" in printed
+    assert "its `discard` keeps or drops all the pixel's samples together" in md
+    # S: the floor's supersampling is not per_sample=True, and says so
+    assert "`tr.render` has no per-sample mode" in md and "on an ordered grid" in md
+    # S: a crossing between a row's two samples gives ¼ or ¾
+    (ask,) = [s for s in sources if "q_levels = Predict(" in s]
+    assert "no quarter value" not in ask and "a quarter value there" not in ask
+    assert ask.count("odd quarter (¼ or ¾)") == 2
+    # S: the summary keeps the conditions under which the positions are fixed
+    summary = md.split("## Summary")[1]
+    assert "fix the standard positions" not in summary
+    assert (
+        "`standardSampleLocations`" in summary and "`D3D11_STANDARD_MULTISAMPLE_PATTERN`" in summary
+    )
+    # S: the prose on screen under 4,000 words (it was 4,738); the rest in folds
+    markdown = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
+    on_screen = sum(len(_unfolded(m).split()) for m in markdown)
+    assert on_screen < 4000, on_screen
+    folds = [m for m in markdown if "<details>" in m]
+    assert len(folds) >= 5 and all(
+        "<summary><b>More, for reading after the lecture:</b>" in m for m in folds
+    )
+    assert all(m.count("<details>") == m.count("</details>") for m in markdown)
+    assert not re.search(r"</details>\S", " ".join(markdown))

@@ -9,7 +9,8 @@ rasteriser fills: snapped to the sub-pixel grid (``subpixel_bits``, default 8).
 
 :func:`sample_error_study` measures, for 1, 2, 4, 8 and 16 samples and each pattern kind, how
 far the coverage fraction ``fill.coverage_fraction`` of ``tr.rasterize`` is from that area,
-and what each costs in time (median of repeated fills).
+and what each costs in time (median of repeated fills). :func:`temporal_history` is temporal
+antialiasing's accumulation: one jittered sample per pixel and frame, blended into a history.
 
 >>> area = pixel_area([[0, 0], [2, 0], [0, 2]], 2, 2)
 >>> area.tolist()                      # the diagonal halves pixels (0, 1) and (1, 0)
@@ -244,3 +245,61 @@ def edge_error_study(counts=(4, 16, 64, 256), edges: int = 4000, seed: int = 1,
         rows.append({"kind": "standard, axis edges", "samples": int(s),
                      "mean_error": float(np.abs(inside - level).mean())})  # fmt: skip
     return rows
+
+
+def _moved(image: np.ndarray, dx: float, dy: float) -> np.ndarray:
+    """``image`` (H, W, ...) resampled at (x − dx, y − dy), bilinear, its border repeated:
+    what it showed moved by (dx, dy) pixels, as a TAA reprojection fetches its history."""
+    h, w = image.shape[:2]
+    ys, xs = np.clip(np.arange(h) - dy, 0, h - 1), np.clip(np.arange(w) - dx, 0, w - 1)
+    y0, x0 = np.floor(ys).astype(int), np.floor(xs).astype(int)
+    y1, x1 = np.minimum(y0 + 1, h - 1), np.minimum(x0 + 1, w - 1)
+    extra = (1,) * (image.ndim - 2)  # colour channels, if any, share the weights
+    fy, fx = (ys - y0).reshape(-1, 1, *extra), (xs - x0).reshape(1, -1, *extra)
+    top = image[y0][:, x0] * (1 - fx) + image[y0][:, x1] * fx
+    bottom = image[y1][:, x0] * (1 - fx) + image[y1][:, x1] * fx
+    return top * (1 - fy) + bottom * fy
+
+
+def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0)) -> np.ndarray:
+    """Temporal antialiasing's accumulation: an exponential history of jittered frames.
+
+    Each frame is rendered with one sample per pixel, its position moved (jittered) from
+    frame to frame; the history starts as the first frame and then blends each new one in
+    with weight ``alpha``: ``h_t = (1 − alpha)·reproject(h_{t−1}) + alpha·frame_t``. A static
+    view needs no reprojection; where the image moves by ``motion`` = (dx, dy) px per frame,
+    the history is fetched where the content was (bilinear, as :func:`_moved`), which blurs
+    it a little every frame. No history clamping: see Karis, *High Quality Temporal
+    Supersampling* (SIGGRAPH 2014), and Yang, Liu and Salvi, *A Survey of Temporal
+    Antialiasing Techniques* (Computer Graphics Forum, 2020).
+
+    Parameters
+    ----------
+    frames : (T, H, W) or (T, H, W, C) array-like
+        The jittered frames, in order.
+    alpha : float
+        The new frame's weight, in (0, 1]; 0.1 is a common choice.
+    motion : (float, float)
+        How far the image moves per frame, px (y down).
+
+    Returns
+    -------
+    (T, H, W) or (T, H, W, C) ndarray
+        The history after each frame.
+
+    >>> temporal_history([[[0.0]], [[1.0]], [[1.0]]], alpha=0.5)[:, 0, 0].tolist()
+    [0.0, 0.5, 0.75]
+    """
+    frames = as_finite("frames", frames, None)
+    if frames.ndim < 3:
+        raise ValueError(f"frames must be (T, H, W) or (T, H, W, C), got shape {frames.shape}")
+    alpha = float(alpha)
+    if not 0.0 < alpha <= 1.0:
+        raise ValueError(f"alpha must lie in (0, 1], got {alpha}")
+    dx, dy = (float(v) for v in motion)
+    out = np.empty_like(frames)
+    out[0] = frames[0]
+    for t in range(1, len(frames)):
+        previous = out[t - 1] if dx == dy == 0.0 else _moved(out[t - 1], dx, dy)
+        out[t] = (1.0 - alpha) * previous + alpha * frames[t]
+    return out
