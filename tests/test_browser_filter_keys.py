@@ -15,6 +15,8 @@ Playwright or Chromium is missing.
 
 from __future__ import annotations
 
+import re
+
 import pytest
 from browser_cells import run_new_cell
 from test_browser import WHY, lab, page  # noqa: F401
@@ -88,7 +90,8 @@ def test_keys_then_a_filter_end_on_the_kernels_full_picture(lab, page, tmp_path)
     assert (tilt, filt, finite) == (60.0, "bilinear", True), "the kernel holds a draft"
     assert np.array_equal(kernel, fresh), "the kernel drew another picture than a fresh one"
     assert readout == "60", readout
-    assert caption.startswith("filter bilinear") and "on release" not in caption, caption
+    # r233 09 W1: the caption names the tilt its picture shows, then the filter
+    assert re.match(r"\s*60°:\s*bilinear\s", caption) and "on release" not in caption, caption
     assert np.array_equal(shown, kernel), f"the page shows another picture ({tmp_path})"
     # the readout never ran backwards: End took it to 89, then each step went down by one
     values = [v for v, _ in readouts]
@@ -154,7 +157,7 @@ def test_a_drag_ends_on_the_full_picture_drawn_ahead_and_the_kernel_sends_none(l
     np.save(tmp_path / "shown.npy", shown)
     assert (tilt, same_rms) == (70.0, True), "the kernel holds another state"
     assert np.array_equal(kernel, fresh), "the kernel's last picture is not a fresh one's"
-    assert caption.startswith("filter trilinear") and "on release" not in caption, caption
+    assert re.match(r"\s*70°:\s*trilinear\s", caption) and "on release" not in caption, caption
     assert np.array_equal(shown, kernel), f"the page shows another picture ({tmp_path})"
     assert not page.errors, page.errors
 
@@ -210,7 +213,7 @@ def _fits_and_stays(lab, page, filters) -> None:  # noqa: F811
         page.locator(".t-ffit select").first.select_option(name)
         page.wait_for_function(
             "n => document.querySelector('.t-ffit .tr-drag-caption').innerText"
-            ".startsWith('filter ' + n + ' ') && !/computing/.test("
+            ".includes('°: ' + n + ' ') && !/computing/.test("
             "document.querySelector('.t-ffit .tr-drag-caption').innerText)",
             arg=name, timeout=60_000)  # fmt: skip
         time.sleep(0.3)
@@ -218,3 +221,44 @@ def _fits_and_stays(lab, page, filters) -> None:  # noqa: F811
         assert got["caption"] < 1.5 * got["lineHeight"], (name, got)  # one line
         tops[name] = got["top"]
     assert max(tops.values()) - min(tops.values()) <= 1, tops
+
+
+W1_CELLS = [
+    "from teachraster.widgets import FilterExplorer",
+    "explorer = FilterExplorer(tilt=0, filter='trilinear', repeats=6)\n"
+    "explorer.widget.add_class('t-fw1')\nexplorer",
+]
+
+#: held down, out to 60 (past the pictures drawn ahead so far: drafts go to the kernel) and
+#: back to 5 (drawn ahead), still held
+OUT_AND_BACK = """async (css) => {
+    const r = document.querySelector(`.${css} input[type=range]`);
+    r.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true }));
+    const go = async (v) => { await new Promise(requestAnimationFrame); r.value = String(v);
+        r.dispatchEvent(new Event('input', { bubbles: true })); };
+    for (let v = 1; v <= 60; v++) await go(v);
+    for (let v = 59; v >= 5; v -= 2) await go(v);
+}"""
+
+
+def test_a_held_drag_shows_the_picture_and_numbers_of_the_readouts_tilt(lab, page):  # noqa: F811
+    """Review r233 09 W1: during a drag the readout said 54 while the picture and the line
+    above it were another tilt's: drafts the kernel answered late, for positions the slider
+    had left, were painted over the picture drawn ahead for the position it held. Now the
+    held position's picture is shown again at each late answer: held still, the caption
+    names the readout's tilt."""
+    import time
+
+    _run_all(lab, page, W1_CELLS, "filter_w1.ipynb")
+    page.wait_for_function(
+        "() => { const i = document.querySelector('.t-fw1 .tr-drag img');"
+        " return i && Number(i.dataset.ahead || 0) >= 8; }", timeout=180_000)  # fmt: skip
+    page.locator(".t-fw1 input[type=range]").first.scroll_into_view_if_needed()
+    page.evaluate(OUT_AND_BACK, "t-fw1")
+    time.sleep(4.0)  # the drafts on their way have come; the pointer still holds the slider
+    readout = page.locator(".t-fw1 .tr-live-slider span").first.inner_text()
+    caption = page.locator(".t-fw1 .tr-drag-caption").inner_text()
+    page.evaluate("() => document.querySelector('.t-fw1 input[type=range]')"
+                  ".dispatchEvent(new Event('change', { bubbles: true }))")  # fmt: skip
+    assert readout == "5" and re.match(r"\s*5°:", caption), (readout, caption)
+    assert not page.errors, page.errors

@@ -837,6 +837,27 @@ def test_footprint_level_and_probes_as_the_engine():
     assert len(levels) >= 3  # near and far pixels read different levels
 
 
+def test_footprint_view_draws_the_probes_as_the_static_figure():
+    """Review r233 M3: the widget printed the probe count but drew no probe; it draws the
+    squares of side P_max / N at the engine's probe centres, as plot_footprint does."""
+    from teachraster.plotting.footprint import footprint
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    data = floor_scene(32, 24, 80.0, 1)
+    pixels = [i for i, uv in enumerate(data["uv"]) if uv is not None]
+    fps = call_js(FOOTPRINT, [("footprintOf", [data["uv"][i], data["ddx"][i], data["ddy"][i],
+                                               64, 64, data["q"]]) for i in pixels])  # fmt: skip
+    squares = call_js(FOOTPRINT, [("probeSquares", [fp]) for fp in fps])
+    counts = set()
+    for i, got in zip(pixels, squares, strict=True):
+        fp = footprint(*(np.array(data[k][i]) for k in ("uv", "ddx", "ddy")), (64, 64))
+        side = fp.rho / fp.probes
+        want = [[x - side / 2, y - side / 2, side] for x, y in fp.probe_centres]
+        assert np.allclose(got, want, rtol=0, atol=1e-9)
+        counts.add(len(got))
+    assert max(counts) >= 3 and min(counts) <= 2  # more probes far away than near
+
+
 def test_footprint_readout_gives_every_number_to_two_decimals():
     """r104 09-7: the readout mixed significant digits ("axes 0.976 and 1.44", "λ = 0.526"
     beside "λ = 1.7"); it gives two decimals throughout, as cells 25 and 28 print them."""

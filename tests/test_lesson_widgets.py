@@ -1067,13 +1067,18 @@ def test_filter_explorer_panels_fit_the_column_apart():
             assert panel.x0 <= title.x0 and title.x1 <= panel.x1, ax.get_title()
         # review r184 09-7: the filtered image on the left, the level panel above the error
         # panel on its right, at one size; the figure FIGURE_PX tall (r42 09-3: three panels
-        # in a row were too small)
+        # in a row were too small). Review r233 09 FIG1: the quarter under the image held
+        # nothing and the two panels were 270 px wide: the footprint mean fills it, and the
+        # two panels on the right are wider than 300 px, the image kept at 3 px a pixel
         from teachraster.widgets.filter_explorer import FIGURE_PX
 
-        image, lod, error = (ax.get_window_extent(renderer) for ax in ex.axes)
+        image, truth, lod, error = (ax.get_window_extent(renderer) for ax in ex.axes)
         assert image.x1 < min(lod.x0, error.x0) and abs(lod.x0 - error.x0) < 1
         assert lod.y0 > error.y1 and abs(image.y1 - lod.y1) < 1
-        assert abs(lod.width - error.width) < 1 and image.width > lod.width
+        assert abs(lod.width - error.width) < 1 and image.width > lod.width > 300
+        assert round(image.width) == 3 * ex.width
+        assert truth.y1 < image.y0 and truth.x1 < lod.x0 and truth.height > 0.6 * image.height
+        assert truth.y0 < 0.05 * fig.bbox.height  # down to the figure's foot: nothing empty
         assert round(fig.get_figheight() * fig.dpi) == FIGURE_PX
     finally:
         ex.close()
@@ -1183,3 +1188,37 @@ def test_sampling_explorer_names_panel_two():
         assert key == ["samples", "prefiltered (faint)"]
     finally:
         s.close()
+
+
+def test_filter_explorer_grazing_floor_and_max_anisotropy():
+    """Review r233 09 M3: the square never showed a footprint more than three times as long as
+    wide, and the cap on the probes could not be moved. The grazing floor stretches the far
+    footprints to the cap of 16; max aniso changes the anisotropic picture, its error and its
+    reads (1 is trilinear); the scene keys the footprint averages kept. W1: the line above the
+    picture names the tilt it shows."""
+    from teachraster.widgets.filter_explorer import CAPS, FilterExplorer
+
+    ex = FilterExplorer(tilt=89, filter="anisotropic", repeats=6, samples=2,
+                        view="grazing floor", backend="image")  # fmt: skip
+    try:
+        cov = ex.frame.coverage
+        ax = [
+            np.hypot(*np.moveaxis(d[cov][:, :2] * 64, -1, 0)) for d in (ex.frame.ddx, ex.frame.ddy)
+        ]
+        assert (np.maximum(*ax) / np.minimum(*ax)).max() >= 15
+        errors, reads = {}, {}
+        for cap in CAPS:
+            ex.max_anisotropy.value = cap
+            errors[cap], reads[cap] = ex.rms, ex._reads()
+            assert int(np.nanmax(ex.levels_read.probes)) == cap  # the far footprints reach it
+        assert [errors[c] for c in CAPS] == sorted(errors.values(), reverse=True)
+        assert [reads[c] for c in CAPS] == sorted(reads.values())
+        ex.filter.value = "trilinear"
+        assert ex.rms == pytest.approx(errors[1], abs=1e-12)
+        assert "89°</span></b>: " in ex._info_html()
+        grazing = ex.truth
+        ex.view.value = "square"
+        assert ("square", 89.0) in ex._truths and ("grazing floor", 89.0) in ex._truths
+        assert not np.array_equal(np.nan_to_num(grazing), np.nan_to_num(ex.truth))
+    finally:
+        ex.close()

@@ -2263,7 +2263,7 @@ def test_09_quads_closed_form_and_predictions():
     assert abs(fp.lam - np.log2(8.2)) < 1e-9
     # the jump the cell measures: exactly square, one probe at trilinear's level and the same
     # value; a hair longer, two probes a level finer and a different value
-    square, longer = ns.jump["square"], ns.jump["1e-6 longer"]
+    square, longer = ns.jump["square", "GL"], ns.jump["1e-6 longer", "GL"]
     assert square[0] == 1 and square[1] == square[2] and square[3] < 1e-12
     assert longer[0] == 2 and abs(longer[2] - longer[1] - 1) < 1e-5 and longer[3] > 0.05
     # the box and the Gaussian: the Gaussian aliases less but is further from the ideal
@@ -2315,9 +2315,36 @@ def test_09_quads_closed_form_and_predictions():
     assert "log" not in prompt and "1.5" not in prompt
     # the probes question: its answer is the measured gap, in the last bucket, whose label
     # names the bucket's own bound
-    assert ns.gap_longer == ns.jump["1e-6 longer"][3] and ns.gap_longer > ns.cuts[-1]
-    assert ns.sizes[-1] == f"more than {ns.cuts[-1]:g}"
     assert ns.top > 0  # the figures start at the floor, not in the sky
+
+
+def test_09_r233_q_probes_names_both_formulas_and_measures_both():
+    """Review r233 F2/P1: q_probes asked without naming a formula, and its answer held only
+    for GL's; it names GL's and Vulkan's, and its answer pairs the two measured gaps."""
+    import json
+
+    ns = lesson("09_texture_filtering")
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    longer = ns.jump["1e-6 longer", "GL"]
+    # review r233 F2: Vulkan's preferred level of the same probes has no jump: two probes at
+    # trilinear's own level, about 0.01 from it (the reader measured 0.012)
+    vk_square, vk_longer = ns.jump["square", "Vulkan"], ns.jump["1e-6 longer", "Vulkan"]
+    assert vk_square[0] == 1 and vk_square[3] < 1e-12
+    assert vk_longer[0] == 2 and abs(vk_longer[1] - 3.0) < 1e-12  # log2(8.000008 / 1.000001)
+    assert f"{vk_longer[1]:.2f}" == f"{vk_longer[2]:.2f}"  # "trilinear's own level", printed
+    assert 0.005 < vk_longer[3] < 0.02 and f"{vk_longer[3]:.3f}" == "0.012"
+    assert f"{longer[3]:.3f}" == "0.132"
+    # r233 F2/P1: the question names both formulas, its answer pairs the two measured gaps
+    assert ns.gap_gl == ns.jump["1e-6 longer", "GL"][3] and ns.gap_gl > 0.05
+    assert ns.gap_vk == ns.jump["1e-6 longer", "Vulkan"][3]
+    assert ns.probe_answer == "GL: more than 0.05 · Vulkan: about 0.01"
+    assert ns.probe_answer in ns.probe_choices and len(set(ns.probe_choices)) == 5
+    asked = next(
+        "".join(c["source"]) for c in cells if "q_probes = Predict(" in "".join(c["source"])
+    )
+    stem = asked[asked.index("q_probes = Predict(") : asked.index("probe_choices,\n    answer")]
+    assert "GL's</b> example formula" in stem and "<b>Vulkan's</b> preferred" in stem
+    assert "⌈P<sub>max</sub>/P<sub>min</sub>⌉" in stem and "not rounded" in stem
 
 
 def test_09_answers_wait_for_check():
@@ -2468,7 +2495,7 @@ def test_09_r184_pointer_extents_held_rule_and_a_sheared_footprint():
     # 17: the notes after the explorer about half their old length (727 words), no number
     # the printout gives copied into them
     see = next(t for t in text if t.startswith("**What you should see**"))
-    notes = see[: see.index("<details>")]
+    notes = see.split("<details>")[0]  # r233 S4: the simulator's note moved to an appendix
     assert len(notes.split()) < 240 and not re.search(r"\d\.\d\d", notes)  # r195: ~200
 
 
@@ -2502,6 +2529,102 @@ def test_09_r195_reading_load_srgb_sampler_and_the_probe_jump():
     printed = streams(executed("09_texture_filtering").notebook())
     assert "(s)" not in printed, [ln for ln in printed.splitlines() if "(s)" in ln]
     assert "1 quad straddles both triangles and is shaded twice" in printed
+
+
+def test_09_r233_standards_probes_order_and_appendix():
+    """Review r233 09. F1: HLSL's ddx is coarse (DXC lowers it to DerivCoarseX) and no
+    standard fixes the quads' alignment; even alignment is the reference rasterizer's,
+    llvmpipe's and teachraster's. F2/P1: q_probes names GL's and Vulkan's formulas, both
+    measured; no probe count is printed or drawn before it. M1: Vulkan's and Direct3D's rules
+    beside GL's (λ bounds printed, the table of §8, the tie rounding printed). M2: Vulkan
+    decides magnification on the probes' level. M3: the grazing floor and the cap, measured.
+    FIG2: the seams' figure cropped to the band, the difference bare, by distance from a seam.
+    S1-S4."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("09_texture_filtering")
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    flat = " ".join(" ".join(text).split())
+    printed = streams(executed("09_texture_filtering").notebook())
+    # F1
+    assert "GLSL and HLSL leave coarse or fine" not in flat
+    assert "HLSL's plain `ddx`" in flat and "lowers it to `DerivCoarseX`" in flat
+    assert "no specification dictating how the 2x2 quads will be aligned" in flat
+    assert "Direct3D reference rasterizer's choice" in flat
+    assert "(aligned to even rows and columns)" not in flat
+    # F2, P1: the question names both formulas; its answer pairs the two measured gaps, and
+    # the footprints (their probe counts, figure and widget) come after it
+    ask = next(i for i, t in enumerate(text) if "q_probes = Predict(" in t)
+    footprints = next(i for i, t in enumerate(text) if t.startswith('picked = {"near"'))
+    widget = next(i for i, t in enumerate(text) if t.startswith("footprints = FootprintExplorer"))
+    assert ask < footprints < widget
+    above = executed("09_texture_filtering").notebook().cells[:ask]  # printed above it
+    above = "".join(o.get("text", "") for c in above if c.cell_type == "code" for o in c.outputs)
+    assert "probes at" not in above and "P_max/P_min" not in above
+    # below it, in its section, nothing unheld gives the measured answer away
+    below = []
+    for cell in executed("09_texture_filtering").notebook().cells[ask + 1 :]:
+        if cell.cell_type == "markdown" and cell.source.startswith("## "):
+            break
+        if cell.cell_type == "markdown":
+            below.append(cell.source)
+        elif not cell.source.startswith("q_probes.hold()"):
+            below += [o.get("text", "") for o in cell.outputs]
+    below = " ".join(below)
+    assert f"{ns.gap_gl:.3f}" not in below and f"{ns.gap_vk:.3f}" not in below
+    assert "jump" not in below
+    assert f"{ns.gap_gl:.3f}" == "0.132" and f"{ns.gap_vk:.3f}" == "0.012"
+    assert "1e-6 longer  GL            2           2.00       3.00   0.132" in printed
+    assert "1e-6 longer  Vulkan        2           3.00       3.00   0.012" in printed
+    rule = next(t for t in text if "**The jump is GL's formula's" in t)
+    assert rule.startswith("q_probes.hold()") and "use the value of N as an approximation" in rule
+    # M1: Vulkan's looser bounds on ρ, printed; the table of §8; the ties
+    assert ns.spread == {"GL": 1.0, "Vulkan": 1.5}
+    assert "at most apart: GL 1.00, Vulkan 1.50" in printed
+    assert ns.vk_gap["sqrt2 sum"] > ns.bound_gap["m_u + m_v"]
+    table = next(t for t in text if t.startswith("## 8. The sampler in GL, Direct3D and Vulkan"))
+    for name in ("`D3D11_SAMPLER_DESC`", "`D3D11_FILTER_ANISOTROPIC`", "`MaxAnisotropy`",
+                 "`VkSamplerCreateInfo`", "`magFilter`", "`mipmapMode`", "`anisotropyEnable`",
+                 "`maxAnisotropy`", "`mipLodBias`", "`MipLODBias`", "§7.18.11",
+                 "*Scale Factor Operation*", "*Image Level(s) Selection*",
+                 "`lp_build_pmin`"):  # fmt: skip
+        assert name in table, name
+    assert ns.gl_levels == [0, 1, 2] and ns.alt_levels == [1, 2, 3]
+    # M2: the middle pixel, minified for teachraster, is magnified for Vulkan
+    from teachraster.plotting.footprint import footprint
+
+    r, c = ns.picked["middle"]
+    middle = footprint(ns.frame.attrs[r, c], ns.frame.ddx[r, c], ns.frame.ddy[r, c],
+                       ns.levels[0].shape)  # fmt: skip
+    assert middle.lam > 0 >= ns.vk_lam["middle"] and ns.vk_lam["far"] > 0
+    assert "magnified; teachraster: minified" in printed
+    assert "Vulkan decides on the probes' level" in flat
+    # M3: the grazing floor's footprints reach the cap; each doubling of it lowers the error
+    assert ns.stretch_grazing >= 15 and ns.stretch_89 < 3
+    caps = sorted(k for k in ns.grazing_rms if k != "trilinear")
+    errors = [ns.grazing_rms[k] for k in caps]
+    assert errors == sorted(errors, reverse=True) and errors[0] == ns.grazing_rms["trilinear"]
+    assert errors[-1] < 0.6 * ns.grazing_rms["trilinear"]
+    # FIG2: cropped a few rows below the lowest seam; the difference is largest at the seams
+    assert ns.crop_rows[-1] < ns.H - 30
+    near, far = ns.by_distance[0] + ns.by_distance[1], ns.by_distance[6] + ns.by_distance[7]
+    assert near > 4 * far
+    # S1: "two or three pixels"; S2: sRGB introduced in lesson 08 §6
+    assert 2 < ns.near_px < 3 and "two or three pixels (§4 prints how many)" in flat
+    assert "(lesson 08, §6, *One pixel of the resolve*)" in flat and "(lesson 12b)" not in flat
+    # S3: the long paragraphs split into bullets; S4: the simulator's notes in an appendix
+    for marker in ("What the three columns show", "**The bright stripe down the middle**",
+                   "## 7. What each filter costs"):  # fmt: skip
+        cell = next(t for t in text if marker in t)
+        paragraphs = [p for p in cell.split("\n\n") if p.strip()]
+        assert max(len(p.split()) for p in paragraphs if not p.startswith("- ")) < 110, marker
+    appendix = next(t for t in text if t.startswith("## Appendix: two notes on the simulator"))
+    assert "*Beyond a triangle's horizon*" in appendix and "*Square to the last digit*" in appendix
+    assert not any("<details><summary>What the simulator does there" in t for t in text)
+    assert not any("Square to the last digit? (a note" in t for t in text)
 
 
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
@@ -2558,7 +2681,9 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     texts = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
     see = next(t for t in texts if "reads one whole texel" in t)
     caps = next(t for t in texts if "numbers on a driver's" in t)
-    assert "under half of it at" in see and "table under the spreads, at 30°" in see
+    # r233 S3: no back-reference to "the table under the spreads"; the RMS lines named
+    flat_see = " ".join(see.split())
+    assert "errs under half as much at every" in flat_see and "the RMS lines at 30°" in flat_see
     assert not re.search(r"\d\.\d\d", see) and not re.search(r"\d\.\d\d", caps)
     explorer = FilterExplorer(tilt=0, filter="nearest", repeats=int(ns.uv_x6.max()),
                               samples=2, backend="image")  # fmt: skip
@@ -3233,6 +3358,7 @@ def test_09_r104_labels_clear_of_the_key_and_of_the_answer():
 
     from teachraster.plotting import use_style
     from teachraster.plotting.footprint import footprint, plot_footprint
+    from teachraster.study.anisotropic_lod import continuous_probes
     from teachraster.widgets.common import style_context
 
     ns = lesson("09_texture_filtering")
@@ -3244,7 +3370,8 @@ def test_09_r104_labels_clear_of_the_key_and_of_the_answer():
     try:  # the cell again, on the lesson's own frame (its imports are not among the globals)
         with use_style("classroom"):
             exec(source, {**vars(ns), "np": np, "plt": plt, "footprint": footprint,
-                          "plot_footprint": plot_footprint})  # fmt: skip
+                          "plot_footprint": plot_footprint,
+                          "continuous_probes": continuous_probes})  # fmt: skip
     finally:
         plt.show = show
     (fig,) = shown

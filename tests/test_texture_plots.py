@@ -176,19 +176,20 @@ def test_filter_explorer_error_panel_is_as_large_as_the_image_and_its_maximum_of
     try:
         ex.fig.canvas.draw()
         renderer = ex.fig.canvas.get_renderer()
-        image, lod, error_box = (round(ax.get_window_extent().width) for ax in ex.axes)
+        image, _, lod, error_box = (round(ax.get_window_extent().width) for ax in ex.axes)
         assert lod == error_box and image > error_box, (image, lod, error_box)
         error = ex.panels["error"]
-        picture = ex.axes[2].get_window_extent()
+        picture = ex.axes[3].get_window_extent()
         note = error.note.get_window_extent(renderer)
         assert error.note.get_visible() and error.note.get_text().startswith("max ")
         assert note.y1 < picture.y0 and note.x1 <= ex.fig.bbox.x1  # below the picture
-        assert error.colorbar.ax.get_window_extent().y0 > note.y1  # below its colour bar
+        # r233 FIG1: the colour bars stand beside their panels, the note under the bar's foot
+        assert error.colorbar.ax.get_window_extent().y0 > note.y1
         with style_context("classroom"):  # the size of the style's axis labels
             labels = mpl.rcParams["axes.labelsize"]
             size = mpl.font_manager.FontProperties(size=labels).get_size_in_points()
         assert size > 16
         for bar in (error.colorbar, ex.panels["lod"].colorbar):
-            assert all(t.get_fontsize() >= size for t in bar.ax.get_xticklabels())
+            assert all(t.get_fontsize() >= size for t in bar.ax.get_yticklabels())
     finally:
         ex.close()

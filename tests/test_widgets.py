@@ -1206,8 +1206,8 @@ def test_filter_truths_computed_ahead_are_the_truths_at_those_tilts():
     ex = FilterExplorer(48, 36, tilt=80.0, samples=3, backend="image")
     ex._truths_ahead()  # one step up, then (next call) one step down
     ex._truths_ahead()
-    assert {79.0, 81.0} <= set(ex._truths)
-    ahead = ex._truths[81.0]
+    assert {("square", 79.0), ("square", 81.0)} <= set(ex._truths)  # keyed by scene and tilt
+    ahead = ex._truths["square", 81.0]
     ex.tilt.value = 81.0  # an arrow key: the truth at hand
     assert ex.truth is ahead
     direct = FilterExplorer(48, 36, tilt=81.0, samples=3, backend="image")
@@ -1225,8 +1225,8 @@ def test_filter_truths_ahead_reach_every_tilt_nearest_first_so_a_drag_ends_on_on
         order.append(ahead)
         ex._truths_ahead()
     assert order[:4] == [81.0, 79.0, 82.0, 78.0]  # nearest first, the next one up first
-    assert set(ex._truths) == {float(t) for t in range(90)}  # every position, none lost
-    kept = ex._truths[3.0]
+    assert set(ex._truths) == {("square", float(t)) for t in range(90)}  # every one, none lost
+    kept = ex._truths["square", 3.0]
     ex.tilt.value = 3.0  # a drag released far from 80 (or a value set from code) ...
     assert ex.truth is kept  # ... finds its truth kept, not computed again
     ex.close()

@@ -50,64 +50,78 @@ TRUTH_CACHE = 96
 #: status line above it, the whole explorer fits a 1000-px-tall screen in JupyterLab, so the
 #: image and the error panel are seen together (review r184, 09-7: stacked in three rows the
 #: figure was 875 px tall and the widget 1059-1083 px, the image and the error panel never on
-#: a 1400 × 1000 screen together).
-FIGURE_PX = 700
+#: a 1400 × 1000 screen together); 680 since the scene and the cap joined the controls.
+FIGURE_PX = 680
+
+#: The two scenes (``plane_clip``'s placement of the square): lesson 04's square, seen from
+#: above its near edge, whose footprints stay under three times as long as wide at every
+#: tilt; and a floor seen from an eye low above it, its far edge at a grazing angle, where
+#: they reach the cap of 16 (review r233 09 M3: no view of a strongly anisotropic
+#: footprint could be moved).
+VIEWS = {"square": {},
+         "grazing floor": {"distance": 0.6, "below": 0.15, "fit": "depth"}}  # fmt: skip
+
+#: The caps a driver offers (``max_anisotropy``; GL's ``TEXTURE_MAX_ANISOTROPY``, Vulkan's
+#: ``maxAnisotropy``, Direct3D's ``MaxAnisotropy``): 1 is one probe, trilinear.
+CAPS = (1, 2, 4, 8, 16)
 
 
 def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
     """Size ``fig`` to the notebook column and add the explorer's Axes.
 
-    Two columns: the filtered image on the left, as large as fits at a whole number of figure
-    pixels per image pixel (its checks keep equal widths); on the right the mip level(s) each
-    pixel reads above the error against the footprint mean, each with a colour bar under it
-    (its tick labels and label below it). The figure is :data:`FIGURE_PX` tall. Three panels
-    in one row were each about 190 px wide in a 1280 px browser: the far checks that the
-    lesson asks students to compare were a few pixels tall (review r42, 09-3); three rows
-    were taller than the screen (review r184, 09-7).
+    Two columns. On the left the filtered image, as large as fits at a whole number of
+    figure pixels per image pixel (its checks keep equal widths), and under it the box
+    average it is measured against; on the right the mip level(s) each pixel reads above
+    the error against that average, at one size, each with its colour bar on its right.
+    The figure is :data:`FIGURE_PX` tall. Three panels in one row were each about 190 px
+    wide in a 1280 px browser (review r42, 09-3); three rows were taller than the screen
+    (review r184, 09-7); the image with the two panels stacked beside it left the quarter
+    under the image empty and the two panels 270 px wide (review r233, 09 FIG1).
 
     Returns
     -------
-    panels : [Axes, Axes, Axes]
-        The image, the level panel, the error panel.
+    panels : [Axes, Axes, Axes, Axes]
+        The image, the box average, the level panel, the error panel.
     bars : [Axes, Axes]
-        The colour bars' Axes, under the level and the error panel.
+        The colour bars' Axes, right of the level and the error panel.
     note_at : (float, float)
         Where the error's maximum goes, in axes fraction of the error panel: right-aligned
-        below its colour bar's tick labels, off the picture.
+        under it, off the picture.
     """
     s, r, fw = font_scale(), width / height, column_inches(fig)
     fh = FIGURE_PX / fig.dpi
-    # Margins and gaps hold what sticks out of the panels: half a tick label beyond a colour
-    # bar's end (a range ending on a tick) and the titles' breathing room between panels.
-    left, right, gap = 0.15, 0.17 * s, 0.28 * s
+    left, right, gap, bottom = 0.15, 0.1, 0.2 * s, 0.1
     title = 0.25 * s + 0.1  # no tick labels: one row of titles (their pad included)
-    # between a panel and its colour bar (a pixel more than the bar's padded box needs: the
-    # cached bar is put back only where it overlaps no panel); the bar
-    pad, bar = 0.09 * s, 0.1 * s
-    below = pad + bar + 0.53 * s  # the bar, its tick labels and the row of its label
-    # the right column: two panels, each with its title above and its bar below, fill fh
-    h = (fh - 2 * (title + below)) / 2
-    w = h * r
-    # the image: the rest of the width, at an integer number of figure pixels per image pixel
-    # where the image is small enough, and no taller than the figure
-    room = min(fw - left - right - gap - w, (fh - title) * r)
+    # a colour bar beside its panel: the gap, the bar and its tick labels (no label: the
+    # panel's title says what the colours are)
+    pad, bar, beside = 0.09 * s, 0.1 * s, 0.3 * s
+    note = 0.45 * s  # the row under the error panel holding its maximum
+    # the image: at most a little over half the width, at a whole number of figure pixels
+    # per image pixel, leaving the box average under it at least half its height
+    room = min(0.57 * (fw - left - right - gap), (fh - 2 * title - bottom) / 1.5 * r)
     scale = max(int(room * fig.dpi / width), 1)
-    top_w = min(scale * width / fig.dpi, room)
+    top_w = scale * width / fig.dpi
     top_h = top_w / r
     fig.set_size_inches(fw, fh)
-    # the two columns centred in the figure's width, the image level with the level panel
-    x0 = left + (fw - left - right - top_w - gap - w) / 2
-    panels = [fig.add_axes((x0 / fw, (fh - title - top_h) / fh, top_w / fw, top_h / fh))]
+    panels = [fig.add_axes((left / fw, (fh - title - top_h) / fh, top_w / fw, top_h / fh))]
+    # the box average: the rest of the left column's height
+    truth_h = min(fh - 2 * title - top_h - bottom, top_h)
+    truth_w = truth_h * r
+    panels.append(fig.add_axes(((left + (top_w - truth_w) / 2) / fw, bottom / fh,
+                                truth_w / fw, truth_h / fh)))  # fmt: skip
+    # the right column: two panels of one size, each with a bar beside it
+    x = left + top_w + gap
+    w = min(fw - right - x - pad - bar - beside, (fh - 2 * title - note - bottom) / 2 * r)
+    h = w / r
     bars = []
-    x = x0 + top_w + gap
     for k in range(2):
-        y = fh - (k + 1) * (title + h) - k * below  # the panel's lower edge
+        y = fh - (k + 1) * (title + h)  # the panel's lower edge
         panels.append(fig.add_axes((x / fw, y / fh, w / fw, h / fh)))
-        bars.append(fig.add_axes((x / fw, (y - pad - bar) / fh, w / fw, bar / fh)))
-    # below the tick labels, as the bar's label, and clear of the bar's box (tick labels
-    # and all): the colour bar is put back from its cache only where nothing moving overlaps
-    label_row = (pad + bar + 0.36 * s) / h
-    return panels, bars, (1.0, -label_row)
+        bars.append(fig.add_axes(((x + w + pad) / fw, y / fh, bar / fw, h / fh)))
+    # right-aligned with the error panel's colour bar, below the panel and clear of the
+    # bar's lowest tick label (the bar is put back from its cache only where nothing
+    # moving overlaps it)
+    return panels, bars, ((w + pad + bar) / w, -0.22 * s / h)
 
 
 def _fixed(html: str, chars: int, align: str = "left") -> str:
@@ -121,16 +135,19 @@ def _fixed(html: str, chars: int, align: str = "left") -> str:
 class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
 
-    Three panels: the filtered image (on the left), the mip level(s) each pixel reads (top
-    right, as the engine decides them,
+    Four panels: the filtered image (top left) above the box average it should show (the
+    texture averaged over each pixel's true footprint,
+    :func:`teachraster.study.texture_truth.footprint_average`), and on the right the mip
+    level(s) each pixel reads (as the engine decides them,
     :func:`~teachraster.pipeline.texturing.texture_filters.levels_read`: one
     colour per level, two levels' colours mixed by their weights where a filter blends them,
     the probes' finer levels for ``anisotropic``, level 0 everywhere for ``nearest`` and
-    ``bilinear``) and, under it, the error against the texture averaged over each pixel's true
-    footprint (:func:`teachraster.study.texture_truth.footprint_average`). The square's
-    texture repeats ``repeats`` times, so tilting it far makes its checks much smaller than a
-    pixel: the moiré of ``nearest`` and ``bilinear``, the blur of ``trilinear``, the sharpness
-    of ``anisotropic``.
+    ``bilinear``) above the error against the box average. The square's texture repeats
+    ``repeats`` times, so tilting it far makes its checks much smaller than a pixel: the moiré
+    of ``nearest`` and ``bilinear``, the blur of ``trilinear``, the sharpness of
+    ``anisotropic``. The ``scene`` control lays the square as a floor seen at a grazing angle
+    (:data:`VIEWS`), where footprints grow up to 16 times as long as wide, and
+    ``max_anisotropy`` caps the anisotropic probes (:data:`CAPS`).
 
     Parameters
     ----------
@@ -144,6 +161,10 @@ class FilterExplorer:
         How often the checkerboard repeats across the square.
     samples : int
         Points per pixel side of the ground truth (``samples``² per pixel).
+    view : str
+        The starting scene, a key of :data:`VIEWS`.
+    max_anisotropy : int
+        The starting cap on the anisotropic probes, one of :data:`CAPS`.
     backend : {"auto", "ipympl", "image"}
     style : str, optional
 
@@ -152,6 +173,8 @@ class FilterExplorer:
     widget : ipywidgets.VBox
     tilt : LiveSlider
     filter : Dropdown
+    view : ToggleButtons
+    max_anisotropy : Dropdown
     image, truth, error : (H, W, 3), (H, W, 3), (H, W) arrays on show
     lod : (H, W) array
         λ per pixel.
@@ -193,6 +216,8 @@ class FilterExplorer:
         filter: str = "trilinear",
         repeats: int = 8,
         samples: int = 8,
+        view: str = "square",
+        max_anisotropy: int = 16,
         backend: str = "auto",
         style: str | None = None,
     ) -> None:
@@ -203,12 +228,21 @@ class FilterExplorer:
         self.repeats, self.samples = repeats, samples
         self.camera = Camera(eye=(0.0, 0.0, 0.0), target=(0.0, 0.0, -1.0), fov_y=60.0,
                              near=0.05, far=50.0)  # fmt: skip
+        # the four controls on one row of the column, so that the whole explorer still fits
+        # a 1000-px screen (review r184 09-7)
+        narrow = {"description_width": "initial"}
         self.filter = widgets.Dropdown(options=list(TEXTURE_FILTERS), value=filter,
-                                       description="filter")  # fmt: skip
+                                       description="filter", style=narrow,
+                                       layout=widgets.Layout(width="250px"))  # fmt: skip
+        self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="scene",
+                                     style=narrow, layout=widgets.Layout(width="190px"))  # fmt: skip
+        self.max_anisotropy = widgets.Dropdown(options=list(CAPS), value=max_anisotropy,
+                                               description="max aniso", style=narrow,
+                                               layout=widgets.Layout(width="150px"))  # fmt: skip
         # in the page, coalesced: the kernel renders the latest angle, never a queue
         self.tilt = LiveSlider(value=tilt, min=0.0, max=89.0, step=1.0,
                                description="tilt (°)", readout_format=".0f",
-                               layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
+                               layout=fit_width(widgets.Layout(width="330px")))  # fmt: skip
         self._truths: dict = {}
         self._read_counts: dict = {}
         self._render()
@@ -217,8 +251,9 @@ class FilterExplorer:
             axes, bars, note_at = explorer_axes(self.fig, height, width)
             self.panels = {
                 "image": plot_image(axes[0], self.image),
-                "lod": plot_levels_read(axes[1], self.levels_read, self.n_levels, cax=bars[0]),
-                "error": plot_error_heatmap(axes[2], self.image, self.truth, label="|error|",
+                "truth": plot_image(axes[1], self.truth),
+                "lod": plot_levels_read(axes[2], self.levels_read, self.n_levels, cax=bars[0]),
+                "error": plot_error_heatmap(axes[3], self.image, self.truth, label="|error|",
                                             title=False, cax=bars[1], note_at=note_at,
                                             vmax=ERROR_RANGE),
             }  # fmt: skip
@@ -227,10 +262,12 @@ class FilterExplorer:
             # the title says what the colours are; the label's row holds the maximum (the
             # note), clear of the colour bar, which is put back from a cache per range
             self.panels["error"].colorbar.set_label("")
-            names = ("filtered", "mip level(s) read", "error vs footprint mean")
+            self.panels["lod"].colorbar.set_label("")
+            names = ("filtered", "footprint mean", "mip level(s) read",
+                     "error vs footprint mean")  # fmt: skip
             for ax, name in zip(axes, names):
                 # at the size of axis labels: the style's title size made "error vs footprint
-                # mean" wider than its panel (three panels share the column)
+                # mean" wider than its panel
                 ax.set_title(name, fontsize=mpl.rcParams["axes.labelsize"])
                 ax.set_xticks([])
                 ax.set_yticks([])
@@ -244,19 +281,23 @@ class FilterExplorer:
                 self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
             )
         self.filter.observe(lambda change: self.update(restart=True), "value")
+        # another scene or cap: every picture kept (other filters, other tilts) is stale
+        for control in (self.view, self.max_anisotropy):
+            control.observe(lambda change: self.update(restart=True, stale=True), "value")
         self.tilt.observe(lambda change: self.update(), "value")
         self.tilt.on_release(self.update)  # a drag ended on a draft: the full picture
         self.info, info_widgets = info_line(self.display)
         self.info.value = self._info_html()
         title = title_html(
             "Texture filtering: a floor tilting to the horizon",
-            "Tilt until the checks are smaller than a pixel, then compare filters (even at 89° "
-            "the camera sees no footprint more than three times as long as wide). The ring in "
-            'the error panel marks the worst pixel, its error the "max" under the colour bar.',
+            "Tilt until the checks are smaller than a pixel, then compare filters. On the "
+            "square the camera sees no footprint more than three times as long as wide, on the "
+            "grazing floor up to 16 times: there max aniso matters. The ring in the error "
+            'panel marks the worst pixel, its error the "max" under it.',
         )
-        self.widget = projector_text(widgets.VBox([title, control_row([self.tilt, self.filter]),
-                                                   *info_widgets, self.display.widget]),
-                                     title)  # fmt: skip
+        controls = control_row([self.tilt, self.filter, self.view, self.max_anisotropy])
+        self.widget = projector_text(widgets.VBox([title, controls, *info_widgets,
+                                                   self.display.widget]), title)  # fmt: skip
         self._ahead = None
         #: the other filters' pictures at the tilt on show, drawn while the kernel idles
         self._toggles = TogglesAhead(self.display, self, TEXTURE_FILTERS)
@@ -270,24 +311,34 @@ class FilterExplorer:
     def _render(self) -> None:
         self._compute_at(self.tilt.value)
 
+    def clip_at(self, tilt: float, view: str | None = None) -> np.ndarray:
+        """The square's two clip-space triangles at ``tilt`` in scene ``view`` (default: the
+        scene on show), as the explorer renders them."""
+        view = self.view.value if view is None else view
+        return plane_clip(tilt, self.camera, self.width / self.height, **VIEWS[view])
+
     def _compute_at(self, tilt: float, filter: str | None = None) -> None:  # noqa: A002
-        clip = plane_clip(tilt, self.camera, self.width / self.height)
+        clip = self.clip_at(tilt)
         uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
         frame = render(clip, self.width, self.height, attrs=uv, derivatives=True)
         f = self.shown_filter = self.filter.value if filter is None else filter
+        cap = self.shown_cap = self.max_anisotropy.value
+        self.shown_view = self.view.value
         if f in ("nearest", "bilinear"):
             self.image = sample(self.texture, frame.attrs, f)
         else:
-            self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy)
+            self.image = sample(self.texture, frame.attrs, f, ddx=frame.ddx, ddy=frame.ddy,
+                                max_anisotropy=cap)  # fmt: skip
         self.lod = mip_level(frame.ddx, frame.ddy, self.texture.shape)
         # the engine's choice of levels for this filter, only coloured by the panel
-        self.levels_read = levels_read(f, frame.ddx, frame.ddy, self.texture.shape)
+        self.levels_read = levels_read(f, frame.ddx, frame.ddy, self.texture.shape, cap)
         self.frame, self.shown_tilt = frame, tilt
-        if self._drafting() and tilt not in self._truths:
+        key = (self.shown_view, tilt)
+        if self._drafting() and key not in self._truths:
             # a draft leaves the error out rather than wait for a new truth (at the release)
             self.truth, self.error, self.rms = None, None, float("nan")
             return
-        self.truth = self._truth(clip, uv, frame.triangle_id, tilt)
+        self.truth = self._truth(clip, uv, frame.triangle_id, key)
         self.error = np.abs(self.image - self.truth).mean(axis=-1)
         self.rms = float(np.sqrt(np.nanmean((self.image - self.truth) ** 2)))
 
@@ -297,8 +348,8 @@ class FilterExplorer:
         drawn before; the release brings the full picture."""
         return self.tilt.dragging
 
-    def _truth(self, clip, uv, triangle_id, key: float) -> np.ndarray:
-        """The footprint average at tilt ``key``, kept for the last few tilts: the
+    def _truth(self, clip, uv, triangle_id, key: tuple) -> np.ndarray:
+        """The footprint average at ``key`` (scene, tilt), kept for the last few tilts: the
         filter leaves it alone, and a student drags the slider back and forth."""
         truth = self._truths.pop(key, None)
         if truth is None:
@@ -307,8 +358,8 @@ class FilterExplorer:
         self._keep_truth(key, truth)
         return truth
 
-    def _keep_truth(self, tilt: float, truth: np.ndarray) -> None:
-        self._truths[tilt] = truth  # the most recent last
+    def _keep_truth(self, key: tuple, truth: np.ndarray) -> None:
+        self._truths[key] = truth  # the most recent last
         while len(self._truths) > TRUTH_CACHE:
             self._truths.pop(next(iter(self._truths)))
 
@@ -322,10 +373,10 @@ class FilterExplorer:
         ahead = self._next_truth_ahead()
         if ahead is None:
             return
-        clip = plane_clip(ahead, self.camera, self.width / self.height)
+        clip = self.clip_at(ahead)
         uv = np.broadcast_to(CORNER_UV[TRIANGLES] * self.repeats, (2, 3, 2))
         frame = render(clip, self.width, self.height, attrs=uv)
-        self._truth(clip, uv, frame.triangle_id, ahead)  # computed and kept
+        self._truth(clip, uv, frame.triangle_id, (self.view.value, ahead))  # kept
         later(self._truths_ahead, idle_only=True)  # the next nearest, next time
 
     def _next_truth_ahead(self) -> float | None:
@@ -336,7 +387,7 @@ class FilterExplorer:
         k0 = int(round((self.tilt.value - lo) / step))
         for d in range(1, n + 1):
             for k in (k0 + d, k0 - d):
-                if 0 <= k <= n and lo + k * step not in self._truths:
+                if 0 <= k <= n and (self.view.value, lo + k * step) not in self._truths:
                     return lo + k * step
         return None
 
@@ -345,7 +396,8 @@ class FilterExplorer:
         titles, frames and the level key stay in a cached background (the error's colour
         bar is drawn over it, :class:`~teachraster.widgets.sprites.ColourBarSprite`)."""
         error = self.panels["error"]
-        images = [self.panels["image"].image, self.panels["lod"].image, error.image]
+        images = [self.panels["image"].image, self.panels["truth"].image,
+                  self.panels["lod"].image, error.image]  # fmt: skip
         frames = [s for ax in self.axes for s in ax.spines.values()]  # drawn over the images
         return LayeredBlit(self.fig, [(MOVING, images), (STILL, frames),
                                       (MOVING, [error.marker, error.note])])  # fmt: skip
@@ -359,9 +411,12 @@ class FilterExplorer:
         others = [ax.bbox for ax in self.axes] + text_boxes([error.note], pad=PAD)
         self._bar.draw(self._blit, draft=self._drafting(), others=others)
 
-    def update(self, *, restart: bool = False) -> None:
+    def update(self, *, restart: bool = False, stale: bool = False) -> None:
         """Render again with the controls' values and update the panels in place
-        (``restart``: the filter changed, the pictures drawn ahead are stale)."""
+        (``restart``: the filter changed, the pictures drawn ahead are stale; ``stale``: the
+        scene or the cap changed, the other filters' pictures kept are stale too)."""
+        if stale:
+            self._toggles.where = None  # none of them is taken, and the next start drops all
         kept = self._toggles.take(self.tilt.value, self.filter.value) if restart else None
         if kept is not None and not self._full(kept[2]):
             kept = None  # only a full picture at the tilt on show stands for a toggle
@@ -397,7 +452,10 @@ class FilterExplorer:
     def _set_artists(self) -> None:
         self.panels["image"].update(self.image)
         self.panels["lod"].update(self.levels_read)
-        error = self.panels["error"]
+        error, truth = self.panels["error"], self.panels["truth"]
+        truth.image.set_visible(self.truth is not None)
+        if self.truth is not None:
+            truth.update(self.truth)
         if self.truth is None:  # a draft without the truth: no error to show
             for artist in (error.image, error.marker, error.note):
                 artist.set_visible(False)
@@ -418,8 +476,11 @@ class FilterExplorer:
         reads = self._reads()
         rms = "(on release)" if self.truth is None else f"{self.rms:.3f}"
         name = max(len(f) for f in TEXTURE_FILTERS) + 2  # bold is wider than 1ch a letter
+        # the picture's own tilt first: during a drag the slider's readout may run ahead of
+        # the kernel's picture, and these numbers are the picture's (review r233 09 W1)
         return (
-            f"filter {_fixed(f'<b>{self.shown_filter}</b>', name)} · RMS error vs footprint "
+            f"<b>{_fixed(f'{self.shown_tilt:.0f}°', 3, 'right')}</b>: "
+            f"{_fixed(f'<b>{self.shown_filter}</b>', name)} · RMS error vs footprint "
             f"mean <b>{rms}</b> · {_fixed(f'{reads:.1f}', 4, 'right')} texels read per pixel"
             f" · largest λ {np.nanmax(self.lod):.1f}"
         )
@@ -429,11 +490,12 @@ class FilterExplorer:
                 "<i>computing…</i>")  # fmt: skip
 
     def _reads(self) -> float:
-        key = (self.shown_tilt, self.shown_filter)
+        key = (self.shown_view, self.shown_tilt, self.shown_filter, self.shown_cap)
         if key not in self._read_counts:  # a few ms: kept, as the truth is
             cov = self.frame.coverage
             self._read_counts[key] = texel_reads(self.shown_filter, self.frame.ddx[cov],
-                                                 self.frame.ddy[cov], self.texture.shape)  # fmt: skip
+                                                 self.frame.ddy[cov], self.texture.shape,
+                                                 self.shown_cap)  # fmt: skip
             if len(self._read_counts) > 4 * TRUTH_CACHE:
                 self._read_counts.pop(next(iter(self._read_counts)))
         return self._read_counts[key]

@@ -4,7 +4,8 @@ Fatahalian (CMU 15-462 *Texture*) explains mip-mapping by the footprint: the pix
 mapped into texture space by the derivatives of (u, v), whose size ρ picks the level
 λ = log2 ρ (GL 4.6, eq. 8.7). The kernel renders a checkerboard floor once (uv and the 2 × 2
 quad derivatives of every pixel); the page then links the two views: click a screen pixel
-and its footprint appears in texture space with λ and the levels chosen; click a point of the
+and its footprint appears in texture space with λ, the levels chosen and the anisotropic
+probes (drawn as the static figure draws them); click a point of the
 texture and the pixels whose footprints hold it light up on the screen.
 
 Computed in the page (``static/explore_footprint.js``); λ and the levels are those of

@@ -222,6 +222,14 @@ def sample_anisotropic(levels, u, v, dx, dy, max_anisotropy, wrap) -> np.ndarray
     """EXT_texture_filter_anisotropic at finite ``u``, ``v`` (n,) with derivatives (n, 2)."""
     h, w = levels[0].shape[:2]
     n, lam, major = anisotropic_probes(dx, dy, w, h, max_anisotropy)
+    return sample_probes(levels, u, v, n, lam, major, wrap)
+
+
+def sample_probes(levels, u, v, n, lam, major, wrap) -> np.ndarray:
+    """The mean of ``n`` (n,) trilinear probes at level of detail ``lam`` (n,), spaced along
+    ``major`` (n, 2, in uv per pixel) as EXT_texture_filter_anisotropic places them. The
+    probes' count and level are parameters: :func:`anisotropic_probes` gives GL's, and
+    :mod:`teachraster.study.anisotropic_lod` Vulkan's, on the same probes."""
     # An infinite derivative has no finite probe offsets: its probes all sit at the centre,
     # on the smallest level (λ = inf), like every other filter's infinite footprint.
     major = np.where(np.isfinite(major), major, 0.0)

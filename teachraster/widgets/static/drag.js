@@ -423,10 +423,15 @@ function render({ model, el }) {
     canPaint: (e) => ref.bitmap !== null && e.ref === ref.frame,
     // how many pictures drawn ahead the page keeps (for tests and benchmarks)
     showAheadCount: (n) => (img.dataset.ahead = String(n)),
+    // after the kernel's pictures already on their way (one chain): a draft answered late,
+    // for a position the slider has left, is painted first and then covered by the picture
+    // of the position the slider holds now (slider.js shows it again at that answer)
     paintAhead(e, raw) {
-      putPatch(e.place, raw);
-      setCaption(e.caption);
-      counted();
+      painting = painting.then(() => {
+        putPatch(e.place, raw);
+        setCaption(e.caption);
+        counted();
+      });
     },
     // a picture drawn ahead left unpainted (the kernel's newer one came first): a key then
     // brings one picture, not two (data-frames + data-skipped counts both ways)

@@ -49,6 +49,14 @@ export function footprintOf(uv, ddx, ddy, w, h, q, maxAnisotropy = 16) {
     linear: linearLevels(lam, q), probes, probeLam: Math.log2(pmax / probes), probeCentres };
 }
 
+// The anisotropic probes as the static figure draws them (teachraster.plotting.footprint.
+// plot_footprint): a square of side P_max / N at each probe's centre, [x, y, side] with
+// (x, y) its upper-left corner in texels of level 0. One probe is trilinear's own read.
+export function probeSquares(fp) {
+  const side = fp.rho / fp.probes;
+  return fp.probeCentres.map(([x, y]) => [x - side / 2, y - side / 2, side]);
+}
+
 // whether `point` (texels) lies in the pixel's footprint ellipse: 2 (p - c) = s a + t b with
 // s² + t² <= 1 (teachraster.plotting.footprint.footprint_contains)
 export function ellipseHolds(uv, ddx, ddy, w, h, point) {
@@ -128,7 +136,8 @@ function mount(el, data, host) {
   const root = frame(el, data.title,
     "Left, the floor on the screen; right, the same floor in texture space, with every pixel " +
     "centre as a dot. Click a pixel (or move it with the arrow keys): its footprint appears " +
-    "in texture space, the ellipse the filters approximate, with λ and the level chosen. " +
+    "in texture space, the ellipse the filters approximate, with λ, the level chosen and the " +
+    "anisotropic probes (green). " +
     "Click in texture space: the pixels whose footprint holds that point light up. Beyond " +
     "the floor's edge the texture is drawn paler: the wrapped texels a filter reads there.");
   const cell = Math.max(6, Math.min(12, Math.floor(480 / W)));
@@ -371,6 +380,7 @@ function drawFootprint(ctx, fp, v, fromTex, main) {
     ctx.strokeStyle = OKABE.orange;
     ctx.lineWidth = 2.5;
     ctx.strokeRect(sx, sy, ex - sx, ey - sy);
+    drawProbes(ctx, fp, v, fromTex);
   }
   ctx.strokeStyle = main ? OKABE.blue : "rgba(213,94,0,0.8)";
   ctx.lineWidth = main ? 3 : 1.5;
@@ -382,6 +392,32 @@ function drawFootprint(ctx, fp, v, fromTex, main) {
     else ctx.moveTo(...p);
   }
   ctx.stroke();
+}
+
+// the anisotropic probes (GL's formula, lesson 09 §6): green squares in two shades by turns,
+// a dot at each centre, as in the lesson's static footprint figure (review r233 M3)
+function drawProbes(ctx, fp, v, fromTex) {
+  const shades = ["rgba(0,158,115,0.30)", "rgba(0,90,69,0.30)"];
+  ctx.save();
+  probeSquares(fp).forEach(([x, y, s], k) => {
+    const [x0, y0] = fromTex(v, [x, y]);
+    const [x1, y1] = fromTex(v, [x + s, y + s]);
+    ctx.fillStyle = shades[k % 2];
+    ctx.fillRect(x0, y0, x1 - x0, y1 - y0);
+    if (fp.probes > 1) {
+      ctx.strokeStyle = "rgba(0,90,69,0.9)";
+      ctx.lineWidth = 1.2;
+      ctx.strokeRect(x0, y0, x1 - x0, y1 - y0);
+    }
+  });
+  ctx.fillStyle = "#005A45";
+  for (const c of fp.probeCentres) {
+    const [x, y] = fromTex(v, c);
+    ctx.beginPath();
+    ctx.arc(x, y, 3.5, 0, 2 * Math.PI);
+    ctx.fill();
+  }
+  ctx.restore();
 }
 
 export function footprintText(state, fp, reading) {
@@ -402,8 +438,9 @@ export function footprintText(state, fp, reading) {
       `(its texel grid in blue); trilinear blends levels ${l0} and ${l1}` +
       `${t > 0 ? ` (weight ${f2(t)} on ${l1})` : " (one level)"} over the orange square of ` +
       `side ρ, fetching 2 × 2 texels of each (dashed: <span style="color:#CC79A7">level ` +
-      `${l0}</span>${t > 0 ? `, <span style="color:#009E73">level ${l1}</span>` : ""}); anisotropic takes ${fp.probes} probe${fp.probes > 1 ? "s" : ""} at ` +
-      `λ = ${f2(fp.probeLam)}.`);
+      `${l0}</span>${t > 0 ? `, <span style="color:#009E73">level ${l1}</span>` : ""}); anisotropic (GL's formula) takes ${fp.probes} ` +
+      `probe${fp.probes > 1 ? "s" : ""} at λ = ${f2(fp.probeLam)} (green squares, a dot at ` +
+      `each centre).`);
   } else if (state.pixel) {
     parts.push(`Pixel (row ${state.pixel[0]}, col ${state.pixel[1]}) is not on the floor.`);
   }

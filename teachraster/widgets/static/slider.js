@@ -154,6 +154,10 @@ function render({ model, el }) {
     // the kernel's time per value, where a benchmark can read it
     (input.kernelMs = input.kernelMs || []).push(msg.kernel_ms);
     notice.textContent = "";
+    // a draft answered after the slider moved on to a position with a picture drawn ahead:
+    // that picture (and its caption) again, over the draft's older one, so that the picture
+    // and its numbers follow the readout during a drag (review r233 09 W1)
+    if (s.held && s.shownAhead !== null && s.shownAhead === s.latest) showAhead();
     if (s.finalWaiting) sendFinal();
     else pump();
   });
