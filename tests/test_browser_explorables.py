@@ -199,9 +199,10 @@ def test_cracks_larger_grid_rolls_until_one_cracks(lesson):
     if listed.get_attribute("aria-pressed") != "true":
         listed.click()
     grid = w.get_by_role("button", name="32 × 32 grid")
+    canvas = w.locator("canvas").first
+    small_w = float(canvas.evaluate("c => c.logical.w"))  # the 16 x 16 grid's panels
     grid.click()
     assert grid.get_attribute("aria-pressed") == "true"
-    canvas = w.locator("canvas").first
     assert float(canvas.evaluate("c => c.logical.w")) > 800  # two 32-cell panels
     state = _kernel(lesson, "cracks.state")
     assert state["large"] and state["roll"] == 0 and state["tally"]["integer"]["pairs"] == 1
@@ -211,6 +212,14 @@ def test_cracks_larger_grid_rolls_until_one_cracks(lesson):
     tally = state["tally"]
     assert state["roll"] > 0 and tally["integer"]["pairs"] == state["roll"] + 1
     assert tally["dda"]["faulty"] + tally["crossing"]["faulty"] >= 1
+    # r239 01-FIG2: the stored pair on 32 x 32 filled a quarter of each panel; zoomed to the
+    # 16 x 16 box that holds it, the canvas is that of the 16 x 16 grid, and a line says so
+    w.get_by_role("button", name="Show a pair that cracks").click()
+    w.get_by_text("16 × 16 corner of the 32 × 32 grid").first.wait_for(timeout=5_000)
+    assert float(canvas.evaluate("c => c.logical.w")) == small_w
+    assert grid.get_attribute("aria-pressed") == "true"
+    w.get_by_role("button", name="Reroll").click()  # a roll: the whole 32 x 32 grid again
+    assert w.get_by_text("16 × 16 corner of the 32 × 32 grid").count() == 0
     grid.click()  # back to 16 x 16: the tally from nothing again
     assert _kernel(lesson, "cracks.state")["tally"]["integer"]["pairs"] == 1
     assert not lesson.errors, lesson.errors[:3]

@@ -1486,3 +1486,34 @@ def test_crack_note_does_not_send_lesson_01_to_itself():
     for note in notes:
         assert "lesson 01" not in note and "as the span loops above do" in note
     assert "Roll until one cracks" in notes[1]
+
+
+def test_crack_explorer_zooms_the_stored_pair_on_the_larger_grid():
+    """Review r239 01-FIG2: on the 32 x 32 grid "Show a pair that cracks" drew the stored
+    pair, 16 x 12 px, in the top-left quarter of each panel, its crack ring on the border.
+    The panels draw the 16 x 16 box that holds it (the fills unchanged: the pair covers
+    nothing outside it), and a line says so."""
+    pair = [[[0.5, 4.5], [15.5, 15.5], [1.5, 11.5]], [[15.5, 15.5], [0.5, 4.5], [12.5, 2.5]]]
+    got = call_js(CRACKS, [
+        ("crackingBox", []), ("shownGrid", [32, 32, True]), ("shownGrid", [32, 32, False]),
+        ("shownGrid", [16, 16, True]), ("shownGrid", [8, 8, True]),
+        ("storedNote", [32, 32, True]), ("storedNote", [16, 16, True]),
+        ("storedNote", [32, 32, False]),
+        ("faults", [pair[0], pair[1], 16, 16, "dda", True]),
+        ("faults", [pair[0], pair[1], 32, 32, "dda", True]),
+        ("panelLayout", [16, 16, 940]), ("panelLayout", [32, 32, 940]),
+    ])  # fmt: skip
+    box, big, plain, own, small, note, none_own, none_off, zoomed, whole, g16, g32 = got
+    assert box == [16, 16] and big == [16, 16] and plain == [32, 32] and own == [16, 16]
+    assert small == [8, 8]  # the pair does not fit: no stored pair on such a grid
+    assert "16 × 16 corner of the 32 × 32 grid" in note and none_own == none_off == ""
+    # the same cracks and doubles, zoomed or not; nothing drawn outside the box
+    assert zoomed["cracks"] == whole["cracks"] == [[4, 0]]
+    assert zoomed["doubles"] == whole["doubles"]
+    a32 = np.array(whole["a"]).reshape(32, 32)
+    b32 = np.array(whole["b"]).reshape(32, 32)
+    assert not a32[16:].any() and not a32[:, 16:].any() and not b32[16:].any()
+    assert not b32[:, 16:].any()
+    assert np.array_equal(a32[:16, :16].ravel(), zoomed["a"])
+    # zoomed, the cells are as large as on the 16 x 16 grid: the pair fills the panel
+    assert g16["cell"] > g32["cell"]

@@ -648,7 +648,10 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # the starred rows are printed by the held cell (r142: row 13's ties, typed in the
     # Markdown below q_row, half answered it)
     assert ns.starred == [1, 5, 9, 13] and ns.both_ends == [1, 5, 9, 13]
-    assert "rows 5, 9 and 13" not in told and "the left end's centre is filled" in told
+    assert "rows 5, 9 and 13" not in told and "the left end's centre is filled" not in told
+    # r239 01-C3: the reading of the stars, with its exception (row 1, a one-point span, fills
+    # nothing), is held: the exception answers q_row's row 1
+    assert "the left end's centre is filled" in ns.TABLE_TEXT
     # review r140 F1 / r229: q_row's rows are not in the Markdown below the question; the held
     # cell prints them once q_row is checked
     assert "columns 6-17" not in told and "fills nothing. Row 17" not in told
@@ -688,7 +691,8 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # are powers of two)", against the 1 triangle in 200 the computed crossing misfills
     assert ns.misfilled["computed crossing (section 4)"] == 1
     assert "exact only by luck" not in told
-    assert "It rarely misses a tie (section 5: 1 triangle in 200)" in told
+    # r239 01-S1: "misses a tie" was not what section 5 counted (wrong pixels filled)
+    assert "It rarely fills a wrong pixel (section 5: 1 triangle in 200)" in told
     # r196 01-2: "wherever du/dv has no exact binary fraction the stepped crossing lands a hair
     # to one side" is measured now: on such edges, most ties but not all (the reader's 70.8 %
     # exact counted vertical and binary-fraction steps too, which step exactly)
@@ -952,14 +956,104 @@ def test_01_r229_off_centre_try_it_matches_for_the_true_reason():
 
 @pytest.mark.notebook
 def test_01_r229_a_sliver_breaks_into_dots_under_both_fills():
-    """Review r229 01-M1: span tables' classic visible failure, a triangle thinner than a
-    pixel, drawn: 4 of its 10 raster lines fill nothing, 6 pixels in all, the same under the
-    half-plane fill."""
+    """Review r229 01-M1: a triangle thinner than a pixel, drawn: 4 of its 10 raster lines fill
+    nothing, 6 pixels in all, the same under the half-plane fill (r239 01-C2: sampling at
+    pixel centres breaks it into dots, not span tables)."""
     ns = lesson("01_span_tables")
     assert len(ns.sliver_counts) == 10 and ns.sliver_empty == [2, 3, 4, 7]
     assert ns.sliver_ours.sum() == 6 and np.array_equal(ns.sliver_ours, ns.sliver_fill.coverage)
     assert np.array_equal(ns.sliver_half, ns.sliver_ours)
     assert abs(ns.sliver_fill.trace.signed_area) < 6  # thin: about 5 px² over 10 rows
+
+
+def _markdown_of(name: str, cell_id: str) -> str:
+    cell = next(c for c in _notebook_cells(name) if c.get("id") == cell_id)
+    return " ".join("".join(cell["source"]).split())
+
+
+@pytest.mark.notebook
+def test_01_r239_arrows_show_the_walk_the_text_names():
+    """Review r239 01-C1: the edges' arrowheads ran v3→v2→v1 (the package's walk, v1→v3→v2)
+    under a text and a winding arc saying v1→v2→v3, with nothing said. Section 1 prints the
+    walk from the trace and says why the package walks the other way round; the held text
+    above the first figure with arrowheads (section 4's) names it; the figures whose
+    arrowheads sat on ties draw none (the player's winding step: tests/test_setup_marks.py)."""
+    ns = lesson("01_span_tables")
+    assert ns.edge_walk == "v1→v3→v2" and ns.trace.turn == "counter-clockwise"
+    assert "walked v1→v3→v2 instead" in ns.trace.caption(1)  # printed in section 1
+    sort_text = _markdown_of("01_span_tables", "c02")
+    assert "the order in which the package **walks** the edges" in sort_text
+    assert "It walks a counter-clockwise triangle the other way round" in sort_text
+    assert "show that walk, not the order given" in sort_text
+    assert f"its walk, {ns.edge_walk}, the reverse of the order given" in ns.TABLE_TEXT
+    cells = _notebook_cells("01_span_tables")
+    texts = ["".join(c["source"]) for c in cells]
+    held = next(i for i, t in enumerate(texts) if "TABLE_TEXT = (" in t)
+    assert texts[held].startswith("q_row.hold()") and "FillView(" in texts[held + 1]
+    assert cells[held]["metadata"]["jupyter"]["source_hidden"] is True
+    # every plot_triangle of the lesson draws no arrowheads (only the step views do)
+    calls = re.findall(r"plot_triangle\(([^\n]*)\)", "\n".join(texts))
+    assert calls and all("arrows=False" in call for call in calls), calls
+    player = _markdown_of("01_span_tables", "c14")
+    assert 'keyed "edges walked"' in player and "before the winding step has chosen it" in player
+
+
+@pytest.mark.notebook
+def test_01_r239_text_matches_what_the_cells_print():
+    """Review r239: C2 (the sliver's dots are point sampling's, not span tables'), C3 (row 1,
+    a one-point span, is the stars' exception), M1 (the work counted from both sides), S1-S6."""
+    ns = lesson("01_span_tables")
+    # C2 / S5 / S4: the sliver has its own section and its cause
+    sliver = _markdown_of("01_span_tables", "sliver_md")
+    assert sliver.startswith("## 7. A sliver: thinner than a pixel")
+    assert "span tables' classic visible failure" not in sliver
+    assert "what sampling at pixel centres does to it" in sliver
+    assert "(orange)" in _markdown_of("01_span_tables", "sliver_after")
+    assert "(red)" not in _markdown_of("01_span_tables", "sliver_after")
+    assert _markdown_of("01_span_tables", "c14").startswith("## 8. Step through it")
+    assert "8. step through the fill with a player" in _markdown_of("01_span_tables", "c00")
+    # C3: the stars' rule and its exception, printed
+    assert ns.one_point == [1] and ns.ends[1][:2] == (4.5, 4.5)
+    assert ns.left_ties == [5, 9, 13] and ns.right_ties == [5, 9, 13]
+    assert all(ns.cover[i, ns.ends[i][2]] for i in ns.left_ties)
+    assert not any(ns.cover[i, ns.ends[i][3]] for i in ns.right_ties)
+    table = " ".join(ns.TABLE_TEXT.split())
+    assert "On every starred row but row 1, the left end's centre is filled" in table
+    assert "Row 1 is a span of one point" in table and "which fills nothing" in table
+    assert "(step 9, counting from 0)" in table and ns.step_of_row[5] == 9
+    assert "Foley, van Dam, Feiner and Hughes" in table and "*active-edge list*" in table  # M2
+    # M1: the work, both ways: our triangle and the sliver
+    assert (len(ns.ends), int(ns.cover.sum()), ns.box_centres) == (16, 96, 255)
+    assert (len(ns.sliver_counts), ns.sliver_box.size) == (10, 140)
+    dda_end = _markdown_of("01_span_tables", "dda_end")
+    assert "they visit only the pixels they fill" in dda_end
+    assert _markdown_of("01_span_tables", "dda_giesen").startswith("That saving made span tables")
+    # S1: the computed crossing fills a wrong pixel in 1 of 200 (it never counted misses)
+    summary = _markdown_of("01_span_tables", "c17")
+    assert ns.misfilled["computed crossing (section 4)"] == 1 and ns.n_random == 200
+    assert "It rarely fills a wrong pixel (section 5: 1 triangle in 200)" in summary
+    assert "misses a tie" not in summary
+    assert (
+        "under span tables and half-planes alike" in summary and "samples pixel centres" in summary
+    )
+    # S2: the float and 16.16 loops fail often on different triangles
+    assert (ns.n_float, ns.n_16, ns.n_both) == (60, 60, 33)
+    assert ns.n_both == len(
+        ns.failed_on[ns.float_loop] & ns.failed_on["stepped, 16.16 fixed point"]
+    )
+    fail = " ".join(ns.FAIL_TEXT.split())
+    assert "often on different triangles: only 33 of the 60" in fail
+    assert "not always on the same triangles" not in fail and "$2^{-16}$" in fail
+    assert "$\\mathbf{a} + \\mathbf{b} - \\mathbf{c}$" in fail
+    # S3: the crack counts printed by grid size, the random draws unchanged
+    rarity = next("".join(c["source"]) for c in _notebook_cells("01_span_tables")
+                  if c.get("id") == "c21d-crack-rarity")  # fmt: skip
+    assert "in sorted(crack_counts.items())" in rarity
+    assert [ns.crack_counts[s][1]["dda"] for s in (16, 32, 64)] == [0, 4, 3]
+    # S6: the Try-it's larger image is named
+    assert "in a larger image like 4b's (`span_fill(big, 160, 160)`)" in _markdown_of(
+        "01_span_tables", "c17-try"
+    )
 
 
 def test_01_r229_flat_cases_name_their_rows_and_columns():

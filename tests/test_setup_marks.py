@@ -161,3 +161,90 @@ def test_a_zero_area_triangle_has_no_winding_arrow():
         assert not any("winding" in t for t in keyed(view))
     finally:
         plt.close(view.fig)
+
+
+def test_the_snap_step_tags_each_vertex_with_its_snapped_position(player):
+    """r239 01-W1: the player's opening step, the snap, drew the bare triangle and keyed
+    nothing (the key's column blank): each vertex now carries the caption's position, and the
+    key says how far the snap moved them (none: lesson 01's vertices lie on centres)."""
+    view, trace = player.view, player.view.trace
+    marks = view.setup_marks
+    view.show_step(0, draw=False)
+    assert view.trace.step(0).kind == "snap"
+    tags = [t.get_text() for t in marks.coords]
+    assert tags == ["(8.5, 17.5)", "(18.5, 9.5)", "(4.5, 1.5)"]
+    assert all(f"{tag}" in trace.caption(0) for tag in tags)
+    assert all(t.get_visible() for t in marks.coords)
+    assert [tuple(t.xy) for t in marks.coords] == [tuple(p) for p in trace.snapped]
+    assert keyed(view) == ["vertex, (its position)", "on the 1/256 px grid:", "the snap moved none"]
+    for k in range(1, len(trace)):
+        view.show_step(k, draw=False)
+        assert not any(t.get_visible() for t in marks.coords), k
+
+
+def test_the_snap_step_keys_how_far_a_vertex_moved():
+    with plt.style.context("default"):
+        use_style("classroom")
+        moved = [[8.5, 17.5], [18.3, 9.7], [4.5, 1.5]]
+        fill = tr.rasterize(tr.Triangle(moved), 20, 20, method="span", trace=True)
+        view = FillView(fill, step=0)
+        try:
+            far = np.hypot(*(np.asarray(moved) - fill.trace.snapped).T).max()
+            assert 0 < far < 2**-8 and keyed(view)[-1] == f"moved by ≤ {far:.2g} px"
+            assert view.setup_marks.coords[1].get_text() == "({:g}, {:g})".format(
+                *fill.trace.snapped[1]
+            )
+            # every tag wholly inside the Axes (r239 01-W1: "middle" crossed the frame)
+            view.fig.canvas.draw()
+            box = view.ax.get_window_extent()
+            for k in (0, 3):
+                view.show_step(k, draw=False)
+                view.fig.canvas.draw()
+                for tag in view.setup_marks.coords if k == 0 else view.setup_marks.roles:
+                    inner = tag.get_bbox_patch().get_window_extent()
+                    assert box.x0 - 1 <= inner.x0 and inner.x1 <= box.x1 + 1, (k, tag.get_text())
+        finally:
+            plt.close(view.fig)
+
+
+@pytest.mark.parametrize("xy", [CCW, CW], ids=["ccw", "cw"])
+def test_the_edges_arrows_show_the_walk_once_the_winding_has_chosen_it(xy):
+    """r239 01-C1: at the winding step the arc, labelled v1→v2→v3 counter-clockwise, stood
+    over arrowheads turning the other way (the package walks a counter-clockwise triangle
+    v1→v3→v2). The arrowheads, read from trace.edges, show from the step after the winding
+    on, keyed with the walk at the set-up steps."""
+    with plt.style.context("default"):
+        use_style("classroom")
+        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True)
+        view = FillView(fill, step=0)
+        try:
+            trace = fill.trace
+            walk = "→".join(f"v{a + 1}" for a, _ in trace.edges)
+            assert walk == ("v1→v3→v2" if xy is CCW else "v1→v2→v3")
+            for k in range(len(trace)):
+                view.show_step(k, draw=False)
+                shown = [a.get_visible() for a in view.triangle.arrows]
+                assert shown == [k > 1] * 3, k
+                setup = k < trace.first_work_step
+                assert (f"edges walked {walk}" in keyed(view)) == (setup and k > 1), k
+            # each arrow points along its edge of the trace, in the trace's direction
+            xy_s = trace.snapped
+            for arrow, (a, b) in zip(view.triangle.arrows, trace.edges):
+                tail, head = np.array(arrow._posA_posB)
+                assert np.dot(head - tail, xy_s[b] - xy_s[a]) > 0
+        finally:
+            plt.close(view.fig)
+
+
+def test_the_player_header_does_not_speak_of_gpus():
+    """r239 01-S7: "A GPU tests a block of pixels at once." headed a span-table walk."""
+    from teachraster.widgets import FillPlayer
+
+    with plt.style.context("default"):
+        p = FillPlayer(tr.Triangle(CCW), 20, 20, method="span", backend="image")
+        try:
+            header = p.widget.children[0].value
+            assert "GPU" not in header and "serial reference loop" in header
+        finally:
+            p.close()
+            plt.close("all")

@@ -1,12 +1,17 @@
-"""What a fill's set-up steps find, drawn: the winding, the raster lines to visit, the roles.
+"""What a fill's set-up steps find, drawn: the snapped vertices, the winding, the raster lines
+to visit, the roles.
 
 Before the first pixel a fill snaps its vertices, finds their winding, the raster lines (span
 tables) or the bounding box to work on, and, for span tables, sorts the vertices into roles
 and splits at point 4. The box and the split have artists of their own
 (:func:`~teachraster.plotting.plot_bbox`, :func:`~teachraster.plotting.plot_split`); the
 others were captions only, over one unchanged picture (review r229 01-W1: the player's steps
-1-3 were byte-identical frames). :func:`plot_setup_marks` draws them:
+1-3 were byte-identical frames; review r239 01-W1: step 0, the snap, drew nothing at all).
+:func:`plot_setup_marks` draws them:
 
+- the **snap**: each vertex tagged with its position on the sub-pixel grid, the caption's
+  numbers (:attr:`~teachraster.core.trace.FillTrace.snapped`), so that even a vertex the snap
+  leaves where it was shows what the step found;
 - the **winding**: an arrow turning round the triangle's incentre the way v1 → v2 → v3 run
   as given, and the trace's word for it (:attr:`~teachraster.core.trace.FillTrace.turn`);
 - the **raster lines** of a span-table fill: a band over the rows it steps through, a line
@@ -50,6 +55,8 @@ class SetupArtists(Artists):
     head: FancyArrowPatch
     turn_label: Text
     roles: list = field(default_factory=list)
+    #: the snapped positions, one tag per vertex (the snap step's marks)
+    coords: list = field(default_factory=list)
     #: the trace drawn, and whether each mark has something to show for it
     trace: FillTrace | None = None
 
@@ -62,6 +69,7 @@ class SetupArtists(Artists):
         self._update_turn(trace)
         self._update_rows(trace)
         self._update_roles(trace, list(labels))
+        self._update_coords(trace, list(labels))
 
     def _update_turn(self, trace: FillTrace) -> None:
         xy = np.asarray(trace.snapped, dtype=np.float64)
@@ -112,11 +120,37 @@ class SetupArtists(Artists):
             tag.set_position(_role_offset(label, role, at, box.extents / scale,
                                           label.xy[0] < centre[0]))  # fmt: skip
 
+    def _update_coords(self, trace: FillTrace, labels: list) -> None:
+        """Each vertex's snapped position beside its label, written as the snap's caption
+        writes it (``:g``), placed as the roles are (they never show at the same step);
+        with no labels, just above its vertex."""
+        xy = np.asarray(trace.snapped, dtype=np.float64)
+        texts = [f"({x:g}, {y:g})" for x, y in xy]
+        if len(labels) != 3:
+            for tag, text, p in zip(self.coords, texts, xy):
+                tag.xy = tuple(p)
+                tag.set_text(text)
+                tag.set_position((0.0, 1.2 * tag.get_fontsize()))
+            return
+        ax = self.band.axes
+        ax.get_xlim()  # brings autoscaled limits up to date before transData is read
+        box = ax.get_window_extent()
+        scale = ax.figure.dpi / 72.0  # display pixels per point
+        centre = xy.mean(axis=0)
+        for tag, label, text in zip(self.coords, labels, texts):
+            at = ax.transData.transform(label.xy) / scale
+            tag.xy = label.xy
+            tag.set_text(text)
+            tag.set_position(_role_offset(label, text, at, box.extents / scale,
+                                          label.xy[0] < centre[0], italic=False))  # fmt: skip
+
     def show(self, kind: str | None, sorted_: bool) -> None:
-        """Show what the step of ``kind`` found: the winding at ``"winding"``, the raster
-        lines at ``"rows"``; the roles where ``sorted_`` (a view: at the sort and split
-        steps, which speak of them)."""
+        """Show what the step of ``kind`` found: the snapped positions at ``"snap"``, the
+        winding at ``"winding"``, the raster lines at ``"rows"``; the roles where
+        ``sorted_`` (a view: at the sort and split steps, which speak of them)."""
         trace = self.trace
+        for tag in self.coords:
+            tag.set_visible(kind == "snap" and trace is not None)
         turning = kind == "winding" and trace is not None and trace.turn is not None
         for artist in (self.arc, self.head, self.turn_label):
             artist.set_visible(turning)
@@ -129,23 +163,26 @@ class SetupArtists(Artists):
             tag.set_visible(roles)
 
 
-def _role_offset(label, role: str, at, extents, left: bool) -> tuple[float, float]:
-    """Where a role goes (points from its vertex): one line beyond the vertex label, the way
-    the label is pushed out; where that leaves the Axes (a vertex at the grid's top or
-    bottom: it ran over the tick labels or the frame), beside the label instead, on the
-    side away from the triangle (``left``) if it fits there, else on the other. Sideways a
-    tag may overhang the Axes by half its width (the margin beside the grid is clear)."""
+def _role_offset(label, role: str, at, extents, left: bool,
+                 italic: bool = True) -> tuple[float, float]:  # fmt: skip
+    """Where a tag (a role, a position) goes (points from its vertex): one line beyond the
+    vertex label, the way the label is pushed out; where that leaves the Axes (a vertex at
+    the grid's top or bottom: it ran over the tick labels or the frame), beside the label
+    instead, on the side away from the triangle (``left``) if it fits there, else on the
+    other. A tag stays wholly inside the Axes: overhanging by half its width, "middle" at a
+    vertex near the grid's right side crossed the frame (review r239 01-W1)."""
     dx, dy = label.get_position()  # the label's offset from its vertex, in points
     size = label.get_fontsize()
-    half_w = size * (0.33 * len(role) + 0.3)  # half of the tag's padded box (italic)
+    # half of the tag's padded box (italic letters are wider than digits)
+    half_w = size * ((0.33 if italic else 0.3) * len(role) + 0.3)
     half_h = 0.75 * size
     x0, y0, x1, y1 = extents
     norm = float(np.hypot(dx, dy)) or 1.0
     out = (dx + 1.1 * size * dx / norm, dy + 1.1 * size * dy / norm)
 
-    def inside(offset):  # wholly inside vertically; sideways it may overhang by a half
+    def inside(offset):
         x, y = at[0] + offset[0], at[1] + offset[1]
-        return x0 <= x <= x1 and y0 + half_h <= y <= y1 - half_h
+        return x0 + half_w <= x <= x1 - half_w and y0 + half_h <= y <= y1 - half_h
 
     if inside(out):
         return out
@@ -155,7 +192,9 @@ def _role_offset(label, role: str, at, extents, left: bool) -> tuple[float, floa
         offset = (dx + side * beside, dy)
         if inside(offset):
             return offset
-    return (dx + sides[0] * beside, dy)
+    # neither fits (a narrow grid): beside the label, moved sideways into the Axes
+    x = float(np.clip(at[0] + dx + sides[0] * beside, x0 + half_w, max(x0 + half_w, x1 - half_w)))
+    return (x - at[0], dy)
 
 
 def plot_setup_marks(ax, fill, labels=()) -> SetupArtists:
@@ -173,7 +212,8 @@ def plot_setup_marks(ax, fill, labels=()) -> SetupArtists:
     -------
     SetupArtists
         ``band`` and ``lines`` (the raster lines), ``arc``, ``head`` and ``turn_label``
-        (the winding), ``roles`` (three Annotations).
+        (the winding), ``roles`` and ``coords`` (three Annotations each: the sort's roles,
+        the snapped positions).
 
     Examples
     --------
@@ -188,6 +228,9 @@ def plot_setup_marks(ax, fill, labels=()) -> SetupArtists:
     >>> marks.show("winding", False)
     >>> marks.turn_label.get_text().split()[-1], marks.band.get_visible()
     ('clockwise', False)
+    >>> marks.show("snap", False)
+    >>> [tag.get_text() for tag in marks.coords]
+    ['(1, 1)', '(7, 2)', '(3, 7)']
     >>> plt.close(fig)
     """
     trace = as_trace(fill, "plot_setup_marks")
@@ -225,7 +268,14 @@ def plot_setup_marks(ax, fill, labels=()) -> SetupArtists:
                       bbox=label_box(0.85), zorder=4.85, annotation_clip=False)
         for _ in ROLES
     ]  # fmt: skip
-    result = SetupArtists(band, lines, arc, head, turn_label, roles)
+    # the snapped positions, as the roles (they show at another step)
+    coords = [
+        annotate_near(ax, "", (0, 0), xytext=(0, 0), textcoords="offset points", ha="center",
+                      va="center", fontsize=fs(0.75), color=COLORS["edge"],
+                      bbox=label_box(0.85), zorder=4.85, annotation_clip=False)
+        for _ in range(3)
+    ]  # fmt: skip
+    result = SetupArtists(band, lines, arc, head, turn_label, roles, coords)
     result.update(trace, labels)
     result.show(None, False)
     return result

@@ -134,6 +134,31 @@ def sample_test_steps(trace: FillTrace) -> np.ndarray | None:
 ROLES_ENTRY = ("role after the sort", COLORS["split"], COLORS["split"], r"$\mathit{top}$")
 
 
+def walk_entry(trace: FillTrace) -> tuple:
+    """The key's line for the edges' arrowheads: the walk the winding step chose, the
+    trace's edges in their order (v1→v3→v2 for a triangle given counter-clockwise on
+    screen, review r239 01-C1)."""
+    walk = "→".join(f"v{int(a) + 1}" for a, _ in trace.edges)
+    return (f"edges walked {walk}", COLORS["edge"], COLORS["edge"], r"$\rightarrow$")
+
+
+def _snap_entries(trace: FillTrace) -> list:
+    """The key's lines for the snap's step: each vertex tagged with its snapped position
+    (:func:`~teachraster.plotting.setup_marks.plot_setup_marks`), and how far the snap moved
+    the farthest one (none: a vertex already on the grid, as on pixel centres)."""
+    c = COLORS
+    bits = trace.subpixel_bits
+    if bits is None:
+        return [("vertex, (its position)", c["edge"], c["edge"], "o"),
+                ("raw floats: no snapping", "none", "none")]  # fmt: skip
+    moved = float(np.hypot(*(np.asarray(trace.xy, float) - trace.snapped).T).max())
+    # each line as long as the key's column allows (about 24 characters)
+    by = "the snap moved none" if moved == 0 else f"moved by ≤ {moved:.2g} px"
+    return [("vertex, (its position)", c["edge"], c["edge"], "o"),
+            (f"on the 1/{2**bits} px grid:", "none", "none"),
+            (by, "none", "none")]  # fmt: skip
+
+
 def _split_entries() -> list:
     """The key's lines for what :func:`~teachraster.plotting.plot_split` draws: the two parts'
     tints, then the split line and point 4 (named without x, y, u or v: the captions write y
@@ -165,8 +190,9 @@ def _arrow_off_point_4(triangle: TriangleArtists, trace: FillTrace) -> None:
 class FillView:
     """Step through one fill: a figure whose artists each step updates in place.
 
-    It shows the pixel grid and centres, the triangle (edges in test order, with arrows and
-    the edge-function names used in the captions), the bounding box, the pixels filled so far,
+    It shows the pixel grid and centres, the triangle (edges in test order, with arrows from
+    the step after the winding on, which chooses that order, and the edge-function names used
+    in the captions), the bounding box, the pixels filled so far,
     for half-planes the pixels tested and rejected so far, the current raster line (span
     tables) or pixel (half-planes), the split at u4 (span tables), a header and the caption of
     the current step. The bounding box appears from its set-up step on and the split from the
@@ -401,13 +427,20 @@ class FillView:
         # each set-up step keys what it draws, review r229 01-W1)
         self._still = (boxed, split, testing, coloured, tested,
                        step.kind if setup and self.legend is not None else False, last)  # fmt: skip
+        # the edges' arrowheads show the walk the winding step chooses (trace.edges: a
+        # counter-clockwise triangle is walked the other way round): none before it, and
+        # none at it, where they turned against its arc labelled v1→v2→v3 (review r239 01-C1)
+        walked = k > trace.setup_kinds.index("winding")
+        for arrow in self.triangle.arrows:
+            arrow.set_visible(walked)
+        self._still += (walked,)
         self.raster_line.update(step)
         self.pixel.update(step)
         # the roles while the set-up speaks of them (sort, split); the row steps name parts
         roles = setup and trace.sort_step is not None and k >= trace.sort_step
         self.setup_marks.show(step.kind if setup else None, roles)
         kind = step.kind if setup else None  # each set-up step draws its own marks and key
-        keyed = (testing, coloured, split, boxed, kind, last, roles)
+        keyed = (testing, coloured, split, boxed, kind, last, roles, walked)
         if self.legend is not None and keyed != self._keyed:
             self.legend.set_entries(
                 self._key_entries(
@@ -526,7 +559,7 @@ class FillView:
                       s.lines]),  # fmt: skip
             (STILL, middle),
             (MOVING, [self.block_outlines, r.cells, p.box, r.span, r.covered, r.missed,
-                      p.centre, s.turn_label, s.arc, s.head, *s.roles]),  # fmt: skip
+                      p.centre, s.turn_label, s.arc, s.head, *s.roles, *s.coords]),  # fmt: skip
             # the vertex dots above their labels' boxes, as in a full draw (review r23)
             (STILL, [split.point, split.label, *t.labels, *t.edge_labels, t.vertices]),
             # text costs more to draw than the pixels: the header moves only with the step
@@ -684,6 +717,10 @@ class FillView:
         the winding, the raster lines and the roles are drawn and keyed at their steps, and
         the split's step keys the two parts it tints."""
         c, entries = COLORS, []
+        if kind == "snap":  # review r239 01-W1: the snap's step drew and keyed nothing
+            entries += _snap_entries(trace)
+        elif kind != "winding" and self.triangle.arrows:  # the walk chosen: the arrowheads
+            entries.append(walk_entry(trace))
         if kind == "winding" and trace.turn is not None:
             arrow = r"$\circlearrowright$" if trace.turn == "clockwise" else r"$\circlearrowleft$"
             entries.append(("v1→v2→v3: its winding", TURN_COLOR, TURN_COLOR, arrow))

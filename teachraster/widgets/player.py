@@ -322,9 +322,9 @@ class FillPlayer(Holdable):
             # (review r93 02-2: "How a GPU fills" titled a loop with bail-out)
             "How a serial reference loop fills a triangle, step by step",
             # one line shorter than the two sentences it was (test_browser_player: the player
-            # with its comparison closed must fit 860 px, it measured 877)
-            "A GPU tests a block of pixels at once. Play, drag or step (in the page); the "
-            "menus ask the kernel.",
+            # with its comparison closed must fit 860 px, it measured 877); no word on GPUs,
+            # an odd header over a span-table walk (review r239 01-S7)
+            "Play, drag or step (in the page); the menus ask the kernel.",
         )
         options = [labelled("method", self.method)]
         # Without attributes the interpolation changes nothing on show: no toggle for it.

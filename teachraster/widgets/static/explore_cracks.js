@@ -33,6 +33,25 @@ export const CRACKING_PAIR = [[[0.5, 4.5], [15.5, 15.5], [1.5, 11.5]],
   [[15.5, 15.5], [0.5, 4.5], [12.5, 2.5]]];
 export const crackingPair = () => CRACKING_PAIR.map((t) => t.map((v) => [...v]));
 export const fitsCrackingPair = (W, H) => CRACKING_PAIR.flat().every(([x, y]) => x < W && y < H);
+// the grid the stored pair needs, [W, H]: the smallest from (0, 0) that holds its vertices
+export const crackingBox = () => [0, 1].map((k) =>
+  Math.ceil(Math.max(...CRACKING_PAIR.flat().map((v) => v[k]))));
+
+// The grid the panels draw, [W, H]: the grid on show, or, with the stored pair on show, the
+// box that holds it. On the larger grid the stored pair filled a quarter of each panel, its
+// crack on the panel's border (review r239 01-FIG2): zoomed to its box, it fills the panel.
+// Its fills do not change: the pair covers no pixel outside its box.
+export function shownGrid(W, H, stored) {
+  return stored && fitsCrackingPair(W, H) ? crackingBox() : [W, H];
+}
+
+// the line under the picture when the stored pair is drawn zoomed (none on its own grid)
+export function storedNote(W, H, stored) {
+  const [w, h] = shownGrid(W, H, stored);
+  if (w === W && h === H) return "";
+  return `<b>Show a pair that cracks:</b> the stored pair, drawn on the ${w} × ${h} corner ` +
+    `of the ${W} × ${H} grid that holds it (zoomed in); a roll goes back to the whole grid.`;
+}
 
 // the pairs rolled from `seed`, `n` of them (the page's rolls, for the tests)
 export function rolls(seed, n, W, H) {
@@ -193,7 +212,9 @@ function mount(el, data, host) {
     "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
     "(not the stored pair that cracks) and starts again when the way the edges are " +
     "evaluated, or the grid, changes.");
-  let g = panelLayout(W, H);
+  // the grid the panels draw: W x H, or the stored pair's box (shownGrid)
+  const shown = () => shownGrid(W, H, state.stored);
+  let g = panelLayout(...shown());
   const [canvas, ctx] = makeCanvas(g.width, g.height,
     "the same pair of triangles filled three ways, cracks and double draws marked");
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
@@ -204,6 +225,7 @@ function mount(el, data, host) {
     listedBy(state, true);
     pair = CRACKING_PAIR;
     controls.sync();
+    relayout(false);
     paint.request(e);
     host.setState({ stored: true, asListed: true, tally: state.tally });
   };
@@ -231,6 +253,7 @@ function mount(el, data, host) {
       state.tally = tallied(state.tally, pair, W, H, state.asListed);
     }
     state.roll += n;
+    relayout(false);
     paint.request(e);
     host.setState({ roll: state.roll, stored: false, tally: state.tally });
   }
@@ -244,6 +267,7 @@ function mount(el, data, host) {
     state.tally = found.tally;
     state.roll += found.n;
     lastHunt = { n: found.n, found: found.found };
+    relayout(false);
     paint.request(e);
     host.setState({ roll: state.roll, stored: false, tally: state.tally });
   }
@@ -265,20 +289,22 @@ function mount(el, data, host) {
 
   function draw() {
     ctx.clearRect(0, 0, canvas.logical.w, canvas.logical.h);
-    const found = METHODS.map(([meth]) => faults(pair[0], pair[1], W, H, meth, state.asListed));
+    const [w, h] = shown(); // the panels' grid (the stored pair's box, zoomed)
+    const found = METHODS.map(([meth]) => faults(pair[0], pair[1], w, h, meth, state.asListed));
     const exact = found[2];
     const { cell } = g;
     METHODS.forEach(([, name], k) => {
       const [x0, y0] = g.origins[k];
-      drawPanel(ctx, found[k], exact, pair, { x0, y0, cell, W, H });
+      drawPanel(ctx, found[k], exact, pair, { x0, y0, cell, W: w, H: h });
       ctx.fillStyle = "#111";
       ctx.font = "bold 15px sans-serif";
       ctx.fillText(name, x0, y0 - ringReach(cell) - 6);
     });
     drawKey(ctx, g.key, cell);
     table.innerHTML = tallyTable(state.tally);
-    readout.innerHTML = explainPixel(pair, ui.hover, W, H, found, state.asListed);
-    hunted.innerHTML = huntNote(lastHunt, state.asListed, state.large);
+    readout.innerHTML = explainPixel(pair, ui.hover, w, h, found, state.asListed);
+    hunted.innerHTML = huntNote(lastHunt, state.asListed, state.large) ||
+      storedNote(W, H, state.stored);
     note.innerHTML = crackNote(state.asListed);
     host.picture(canvas);
   }
@@ -288,8 +314,10 @@ function mount(el, data, host) {
   // the panels for the column and the grid on show (`always`: the grid changed)
   function relayout(always = true) {
     const avail = root.clientWidth || NARROW_COLUMN_PX;
-    const next = panelLayout(W, H, avail);
-    if (!always && next.cell === g.cell && next.width === g.width) return;
+    const next = panelLayout(...shown(), avail);
+    if (!always && next.cell === g.cell && next.width === g.width && next.height === g.height) {
+      return;
+    }
     g = next;
     resizeCanvas(canvas, ctx, g.width, g.height);
     paint.request();
@@ -297,7 +325,7 @@ function mount(el, data, host) {
   if (globalThis.ResizeObserver) new ResizeObserver(fit).observe(root);
   fit();
   const point = (p, e) => {
-    ui.hover = p ? pixelUnder(p, g, W, H) : null;
+    ui.hover = p ? pixelUnder(p, g, ...shown()) : null;
     paint.request(e);
   };
   pointerInput(canvas, { onHover: point, onClick: point });
@@ -322,14 +350,13 @@ function mount(el, data, host) {
       Object.assign(state, rest);
       if (moved) {
         const [w, h] = gridOf(data, state.large);
-        if (w !== W || h !== H) {
-          [W, H] = [w, h];
-          relayout();
-        }
+        [W, H] = [w, h];
         rand = randomStream(state.seed);
         for (let k = 0; k <= state.roll; k++) pair = randomPair(rand, W, H);
         if (state.stored && fitsCrackingPair(W, H)) pair = CRACKING_PAIR;
         lastHunt = null;
+        relayout(false); // a new grid, or the stored pair's box
+
       }
       controls.sync();
       paint.request();
