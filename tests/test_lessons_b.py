@@ -2902,13 +2902,18 @@ def test_10_llvmpipe_128_against_our_64_on_one_convention():
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "128 against our 64" not in md and "hence the 63 px printed for int32" not in md
     assert "**256 units a pixel**" in md and "exactly llvmpipe's `MAX_FIXED_LENGTH32`" in md
-    assert f"A 1,024-px triangle needs {ns.budget.needed} bits" in md
-    assert "`<= MAX_FIXED_LENGTH32`" in md and "rounded down to a multiple of 4" in md
-    assert ns.box_from == {0: True, 2: False}
-    assert "passes from column 0 and fails from column 2" in md
-    # the package's own grid stands in a folded note, its source hidden
+    # r235 P: the 1,024-px count is q_bits' answer, said in its explanation, not above it
+    asked = next("".join(c["source"]) for c in cells if "q_bits = Predict(" in "".join(c["source"]))
+    assert "A 1,024-px triangle needs {q_bits_budget.needed} bits" in asked
+    assert ns.q_bits_budget.needed == ns.budget.needed == 38 and "1,024-px triangle needs" not in md
+    # the package's own grid stands in a folded note, its source hidden; llvmpipe's own test
+    # folded with it (review r235 S3)
     note = next(c for c in cells if "The simulator's own grid" in "".join(c["source"]))
     assert note["metadata"]["jupyter"]["source_hidden"] and "<details>" in "".join(note["source"])
+    fold = " ".join("".join(note["source"]).replace('"\n        "', "").split())
+    assert "`<= MAX_FIXED_LENGTH32`" in fold and "rounded down to a multiple of 4" in fold
+    assert ns.box_from == {0: True, 2: False}
+    assert "passes from column 0 and fails from column 2" in fold
     four = md.split("## 4.")[1].split("## 5.")[0]  # the section's visible text
     assert "512" not in four and "63 px" not in four and "folded note below" in four
     # Mesa's expression, in the package now, not in the lesson
@@ -2934,7 +2939,7 @@ def test_10_prints_counts_with_thousands_separators():
     printed = streams(executed("10_tiles_and_hierarchical_z").notebook())
     bare = re.findall(r"(?<![\d.,^*/])\d{4,}(?![\d.])", printed)
     assert not bare, bare
-    assert "below 1,024 px: at most 262,143 units" in printed and "160 px = 81,920 units" in printed
+    assert "below 1,024 px: at most 262,143 units" in printed and "320 px = 81,920 units" in printed
 
 
 @pytest.mark.notebook
@@ -2986,9 +2991,11 @@ def test_10_review_r26_hiz_question_held_text_and_sources():
     assert "holds the cleared depth" not in md  # r52 10-1: the partly-covered trap is held too
     assert "GL_GREATER" in md and "reversed-Z" in md and "for the rest of the frame" in md
     assert "US 11,176,734" in md and "Persson, *Depth in-depth*" not in md  # r36: sourced
-    # r176 10-3: Giesen is cited once, for what part 6 describes (a fixed block per clock)
-    assert md.count("Giesen") == 1 and "sort-middle" in md
+    # r176 10-3: Giesen is cited for what part 6 describes (a fixed block per clock); r235 M2:
+    # and part 7, the readable account of early-z and Hi-Z
+    assert md.count("Giesen") == 2 and "sort-middle" in md
     assert "Giesen, *A trip through the Graphics Pipeline 2011*, part 6" in md
+    assert "Giesen's *A trip through the Graphics Pipeline 2011*, part 7" in md
     ns = lesson("10_tiles_and_hierarchical_z")
     assert ns.same_path and "tiled" not in ns.drawn_orders
 
@@ -3757,12 +3764,16 @@ def test_10_r189_items():
     note = next(t for t in code if "The simulator's own grid" in t)
     assert "holds differences below {ours32} px" in note and "up to {ours32}" not in note
     assert "bit_budget(" not in note and "centre_bit=True" in note
-    # 10-2: offsets of 128 pass only with 0 or 128; printed, and said
+    # 10-2: offsets of 128 pass only with 0 or 128; shown, and said (in the fold, r235 S3)
+    shown = "\n".join(o["data"]["text/markdown"] for c in executed("10_tiles_and_hierarchical_z")
+                      .notebook().cells for o in c.get("outputs", [])
+                      if "text/markdown" in o.get("data", {}))  # fmt: skip
+    fold = " ".join(shown.split())
     assert ns.box_edge == {(129, 129): True, (129, 1): True, (129, 128): False}
     for (w, h), fits in ns.box_edge.items():
-        assert f"a {w} × {h} px box from column 0: {32 if fits else 64}-bit stepping" in printed
+        assert f"- a {w} × {h} px box from column 0: {32 if fits else 64}-bit stepping" in shown
     assert "a box of at most 128 pixels each way counted from" not in md
-    assert "a 129 × 129 px box and a 129 × 1 one pass, and a 129 × 128 one fails" in md
+    assert "a 129 × 129 px box and a 129 × 1 one pass, and a 129 × 128 one fails" in fold
     # 10-3: Greene's descent, level by level
     reads = {k: [(t.level, t.cells) for t in v] for k, v in ns.descents.items()}
     assert reads == {"A": [(1, 1)], "B": [(2, 1), (1, 2), (0, 2)]}
@@ -3786,9 +3797,12 @@ def test_10_r189_items():
     from teachraster.core.tile_trace import value_text
 
     assert value_text(-61.86) == "-61.9" and value_text(-81.04) == "-81"
-    # r201 m1: the 129-px box llvmpipe steps in 32 bits is safe by the area bound
-    assert "(256 · 129)² = 1,090,584,576 units²\n    < 2^31 = 2,147,483,648" in printed
-    assert "129-px box that passes is still safe" in " ".join(md.split())
+    # r201 m1, r235 F3: the 129-px box llvmpipe steps in 32 bits is within the area bound
+    # inside the box, but llvmpipe evaluates whole tiles: its safety is its 64-bit tile starts
+    # and the edges it drops (lp_rast_tri_tmp.h), said in the fold
+    assert "at most $(256 \\cdot 129)^2$ = 1,090,584,576 units²" in fold
+    assert "below $2^{31}$ = 2,147,483,648" in fold
+    assert "Why the 129-px box that passes is still safe" in fold
     assert asked.splitlines()[0].endswith("behind it.") and len(asked.splitlines()[0]) <= 80
     # 10-5: the long paragraphs' second halves folded
     for start, summary in [("### What the walk saves", "What a GPU's rasteriser pays for"),
@@ -3799,6 +3813,154 @@ def test_10_r189_items():
         assert any(summary in words for words in summaries), start
         for para in cell.split("<details>")[0].split("\n\n"):
             assert len(para.splitlines()) <= 14, (start, para[:60])
+
+
+def test_10_r235_items():
+    """Review r235, lesson 10. F1: conservative depth said as GLSL 4.60 §4.4.2.4 says it (a
+    direction that agrees with the depth function lets early-z reject, never write); F2:
+    llvmpipe's tiles live in the framebuffer, the CPU's cache keeps them close; F3, C1: the
+    count guarantees int32 below 128 px, and llvmpipe's 129-px boxes are safe by its 64-bit tile
+    starts and the edges it drops, not by the area bound inside the box; FIG1: the tests made at
+    a level solid, the blocks a larger block decided hatched; FIG2: llvmpipe's own pass drawn;
+    M1: the sliver; S1: q_small takes whole numbers; S2: the int32 picture on a GPU's grid;
+    S4, S5; lesson 02 (not 06) counts the bit the geometry saves; q_bits asks §4's count for a
+    1,024-px triangle before it is printed; the llvmpipe and simulator detail folded."""
+    import re
+
+    import matplotlib.pyplot as plt
+    from notebook_runs import executed
+
+    import teachraster as tr
+    from teachraster.plotting import decided_mask, plot_hierarchy, plot_llvmpipe_bins
+    from teachraster.plotting.tiles import BIN_MARKED, BIN_STYLE, DECIDED
+    from teachraster.study import llvmpipe_binner
+    from teachraster.widgets import TileExplorer
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    cells, text, md, code = _lesson_10_sources()
+    joined = [t.replace('"\n        "', "").replace('"\n        f"', "") for t in text]
+    flat = [" ".join(t.split()) for t in joined]  # a Markdown string's literals joined
+    # F1: GLSL 4.60 §4.4.2.4's words, and the rule they give
+    early = next(t for t in flat if t.startswith("## 7. Early-z"))
+    for words in ("qualified `depth_any`", "\"depth testing will always be performed after the "
+                  "shader has executed\" (GLSL 4.60 §4.4.2.4 *Fragment Outputs*)",
+                  "`depth_any` is the same as no declaration",
+                  "only a direction that agrees with the depth function allows early *rejection*",
+                  "`depth_greater` lets early-z reject it, and `depth_less` does not",
+                  "The early depth *write* is never allowed"):  # fmt: skip
+        assert words in early, words
+    assert "unless it declares which way it moves depth" not in md
+    # F2: llvmpipe's tiles are the framebuffer's; mobile GPUs' on chip
+    assert "a small fast memory" not in md and "only the CPU's cache keeps a 64×64 tile's" in md
+    assert "We don't actually benefit from having per tile cbuf/zsbuf pointers" in md
+    assert "on-chip **tile memory**" in md
+    # F3, C1: what the count guarantees; llvmpipe's own reason, with its numbers
+    assert "only while its coordinates differ by less than 128 px" not in md
+    assert "the term-by-term count guarantees int32 for a triangle whose coordinates" in md
+    assert "32 bits hold triangles within 128 px" not in md
+    shown = [" ".join(o["data"]["text/markdown"].split()) for c in executed(
+        "10_tiles_and_hierarchical_z").notebook().cells for o in c.get("outputs", [])
+        if "text/markdown" in o.get("data", {})]  # fmt: skip
+    fold = next(t for t in shown if "Why the 129-px box that passes is still safe" in t)
+    assert "(in which case plane_mask will not include it)" in fold and "lp_rast_tri_tmp.h" in fold
+    assert "= 32,895 px² = 2,155,806,720 units², above $2^{31}$" in fold
+    assert "= 16,512 px² = 1,082,130,432 units² of 0: below $2^{31}$" in fold
+    assert ns.area_129 < 2**31 < ns.corner_px2 * ns.px2 and ns.cross_px2 * ns.px2 < 2**31
+    assert ns.corner_px2 == 32_895 and ns.cross_px2 == 16_512 and ns.box_edge[(129, 129)]
+    # the triangle of the example: its box passes llvmpipe's test, and the tile holding its last
+    # pixel lies outside the edge all over (llvmpipe's centres on whole numbers are ours + 0.5)
+    lp = np.array([[0, 0], [129, 0], [0, 129]], float)
+    assert llvmpipe_binner.steps_in_32_bits(0, 128, 0, 128)
+    assert llvmpipe_binner.bin_rows(lp + 0.5, 3, 3)[2, 2] not in ("full", "partial")
+    x, y = np.meshgrid(np.arange(128, 193), np.arange(128, 193))
+    assert (129 * (129 - x - y) < 0).all() and abs(129 * (129 - 192 - 192)) == ns.corner_px2
+    # FIG1: the hierarchy hatches what a larger block decided, in the figure and the explorer
+    fig, axes = plt.subplots(1, 3)
+    try:
+        arts = plot_hierarchy(axes, ns.fill)
+        blocks = ns.fill.trace.blocks
+        for lev, art in enumerate(arts):
+            want = decided_mask(blocks, lev)
+            assert len(art.decided.get_paths()) == int(want.sum()) and (lev or not want.any())
+        assert DECIDED in [t.get_text() for t in arts[-1].legend.get_texts()]
+        # at the 1x1 level: hatched = pixels filled or skipped whole; the rest were tested
+        tested = (blocks.level == 2).sum()
+        assert tested == ns.counters.pixel_tests and decided_mask(blocks, 2).sum() > 0
+    finally:
+        plt.close(fig)
+    figure_cell = next(t for t in code if "plot_hierarchy(axes.ravel()[:3], fill)" in t)
+    assert "the solid pixels were tested" in figure_cell
+    assert "the solid pixels are the pixel tests, and the hatched green ones" in md
+    explorer = TileExplorer(tr.Triangle(ns.xy), 64, 64, block_sizes=(16, 4, 1), backend="image")
+    try:
+        explorer.block.value = 12
+        explorer.level.value = 2  # W1: the block readout goes back to 0 with the level view
+        assert explorer.block.value == 0 and explorer.caption_text.startswith("level 2:")
+        assert np.array_equal(explorer.decided, decided_mask(explorer.blocks, 2))
+        assert len(explorer.artists.decided.get_paths()) == int(explorer.decided.sum())
+        explorer.block.value = 40  # the walk hatches nothing: every block shown was tested
+        assert len(explorer.artists.decided.get_paths()) == 0
+    finally:
+        explorer.close()
+    # FIG2: llvmpipe's pass as llvmpipe makes it, the tile it bins and the walk rejects outlined
+    bins_cell = next(t for t in code if "plot_llvmpipe_bins(ax, lp_bins, marked=differ)" in t)
+    assert "This lesson's walk of the 64×64 tiles" not in bins_cell
+    fig, ax = plt.subplots()
+    try:
+        drawn = plot_llvmpipe_bins(ax, ns.lp_bins, marked=ns.differ)
+        labels = [h.get_label() for h in drawn.handles]
+        assert labels == [BIN_STYLE[k][2] for k in BIN_STYLE] + [BIN_MARKED]
+        assert len(drawn.tiles) == ns.lp_bins.size and len(drawn.marks) == len(ns.differ) == 1
+        untested = [t for t, k in zip(drawn.tiles, ns.lp_bins.ravel()) if k == "untested"]
+        assert len(untested) == ns.lp_n["untested"] and all(t.get_hatch() for t in untested)
+    finally:
+        plt.close(fig)
+    # M1: the sliver, its counts and the saving, printed and quoted
+    assert (ns.sliver_covered, ns.ss.blocks, ns.ss.pixel_tests) == (2288, 1680, 4592)
+    assert f"{ns.sliver_per_pixel:.2f}" == "2.74"
+    assert round(ns.sliver_box / ns.sliver_covered) == 113
+    assert round(ns.sliver_saving) == 41 and ns.sliver_box == ns.sliver_fill.trace.bbox.size
+    assert "spend 113 tests per covered pixel where the walk spends 2.74, 41 times fewer" in md
+    assert "sliver (2.74 tests per covered pixel)" in md and "(113 tests per covered pixel)" in md
+    assert "large triangles are cheap per pixel, small ones expensive" not in md
+    by_leg = dict(zip(ns.legs, ns.per_pixel))
+    assert all(ns.sliver_per_pixel > v for leg, v in by_leg.items() if leg >= 8)
+    assert ns.sliver_per_pixel < by_leg[4] and ns.sliver_long > 256 * 2**0.5
+    # S1: q_small and q_bits take whole numbers only
+    asked = next(t for t in code if "q_small = Predict(" in t)
+    assert "    whole=True," in asked
+    # S2: the int32 picture on a GPU's grid (256 units a pixel), both colours, f far past 2^31
+    assert ns.narrow.budget.units_per_pixel == 256 and ns.narrow.budget.needed == 36
+    assert ns.false_in.any() and ns.false_out.any() and ns.twice_area > 2 * 2**31
+    assert "on a GPU's grid (256 units a pixel, as §4 counts" in md
+    assert "The walk runs on the simulator's own grid" not in md
+    # S4: back faces drawn, and culled nothing is hidden
+    c = ns.culled_counts
+    assert c["hiz_rejected"] == c["early_z_killed"] == 0 and c["fragments"] == c["shaded"]
+    assert "(`cull=None`, its default, as lesson 11 says)" in md
+    # S5: the first grant
+    update = next(t for t in flat if "Keeping the farthest depth current" in t)
+    assert "US 11,107,269" in update and "granted 31 August 2021" in update
+    # lesson 02 counts the bit the geometry saves (§5b, How many bits?)
+    assert "Lesson 06 shows the geometry saves one bit" not in md and "lesson 06's" not in md
+    assert "Lesson 02 (§5b, *How many bits?*) shows the geometry saves one bit" in md
+    # q_bits: asked before its count is printed; nothing shown after it gives 38 away
+    ask = next(i for i, t in enumerate(text) if "q_bits = Predict(" in t)
+    assert cells[ask]["metadata"]["jupyter"]["source_hidden"]
+    assert "whole=True" in text[ask] and "notes={q_bits_budget.least_needed" in text[ask]
+    assert ns.q_bits_budget.needed == 38 and ns.q_bits_budget.least_needed == 37
+    for cell, t in zip(cells[ask + 1 :], text[ask + 1 :]):
+        if t.startswith("## "):
+            break
+        if cell["cell_type"] == "markdown":
+            assert not re.search(r"(?<![\d,.])38(?![\d,])", t), t[:60]
+        elif "budget" in t and "1024" in t:  # a cell that counts the 1,024-px range is held
+            assert t.startswith("q_bits.hold()"), t[:60]
+    # the detail for after the lecture folded, as other lessons fold it
+    for words in ("llvmpipe's small-triangle commands", "llvmpipe's own 32-bit test",
+                  "llvmpipe's binner in detail"):  # fmt: skip
+        where = next(t for t in flat if words in t)
+        assert f"<summary><b>More, for reading after the lecture:</b> {words}" in where, words
 
 
 # Review r215 07-1, 07-2, 07-4: a pointer to a printed line by its place ("the last line

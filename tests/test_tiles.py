@@ -419,6 +419,24 @@ def test_narrow_registers_exact_within_budget():
     assert checked == 200
 
 
+def test_narrow_walk_on_a_gpu_grid():
+    """Review r235 S2: ``centre_bit=False`` walks on a GPU's 2**s units a pixel (Direct3D's
+    16.8, llvmpipe's FIXED_ORDER): every value the package's divided by 4, so the exact walk is
+    the same coverage and the budget is §4's count (a 320-px triangle there: 36 bits, as a
+    160-px one on the package's 512 units). Whole pixels (s = 0) have no centres on that grid."""
+    tri = tr.Triangle(np.array([[3.2, 6.4], [312.6, 18.8], [62.8, 312.6]]))
+    gpu = fp.narrow_fill(tri, 320, 320, int_bits=32, block_sizes=(16, 4), centre_bit=False)
+    np.testing.assert_array_equal(gpu.exact, tr.rasterize(tri, 320, 320).coverage)
+    assert gpu.budget.units_per_pixel == 256 and gpu.budget.needed == 36
+    assert (gpu.coverage & ~gpu.exact).any() and (gpu.exact & ~gpu.coverage).any()
+    ours = fp.narrow_fill(tri, 320, 320, int_bits=32, block_sizes=(16, 4))
+    assert ours.budget.units_per_pixel == 512 and ours.budget.needed == 38
+    assert fp.bit_budget(320, 8, 32, centre_bit=False).needed == 36
+    with pytest.raises(ValueError, match="sub-pixel bit"):
+        fp.narrow_fill(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 8, 8, subpixel_bits=0,
+                       centre_bit=False)  # fmt: skip
+
+
 # -- bad input -----------------------------------------------------------------------------------
 @pytest.mark.parametrize("sizes", [(64, 16, 5), (0,), (), (16, 16), (4, 8), (-4,)])
 def test_bad_block_sizes_name_the_argument(sizes):

@@ -503,6 +503,8 @@ def test_level_slider_label_says_when_it_does_not_show_its_level():
         assert ex.level.description == LEVEL_LABELS[False] == "show level"
         ex.level.value = 1
         assert ex.level.description == "level" and ex.caption_text.startswith("level 1:")
+        assert ex.block.value == 0  # review r235 W1: the block readout follows the level
+        ex.block.value = 1
         ex.block.value = 0  # the block slider's start: no level's picture either
         assert ex.level.description == "show level"
         ex.traversal.value = "morton"  # back to the level view
@@ -597,3 +599,28 @@ def test_early_z_panels_draw_the_hi_z_tiles_and_say_the_key():
         assert len(grids[-1].get_segments()) == 48 // 8 + 1 + 32 // 8 + 1
     finally:
         plt.close(fig)
+
+
+def test_levels_hatch_what_a_larger_block_decided(fill, ax):
+    """Review r235 FIG1: at the 1×1 level the pixels an accepted 4×4 block filled (no test)
+    were the same green as the pixels tested. A level's view hatches the blocks a larger block
+    decided, the blocks classified at its own size stay solid; no level, no hatch."""
+    blocks = fill.trace.blocks
+    art = tp.plot_blocks(ax, fill, level=2, decided=True)
+    want = tp.decided_mask(blocks, 2)
+    assert want.sum() > 0 and not (want & (blocks.level == 2)).any()
+    assert not (want & (blocks.kind_code == 2)).any()  # a partial block is split, not decided
+    assert len(art.decided.get_paths()) == int(want.sum())
+    for path, b in zip(art.decided.get_paths(), art.order[want[art.order]]):
+        assert (
+            path.vertices[:, 0].min() == blocks.col[b]
+            and path.vertices[:, 1].min() == blocks.row[b]
+        )
+    art.show(tp.block_mask(blocks, level=0), decided=tp.decided_mask(blocks, 0))
+    assert len(art.decided.get_paths()) == 0 and not tp.decided_mask(blocks, None).any()
+    assert tp.plot_blocks(ax, fill, level=2).decided is None  # opt-in: the path figure has none
+
+
+def test_llvmpipe_bins_refuse_an_unknown_kind(ax):
+    with pytest.raises(ValueError, match="unknown tile kinds"):
+        tp.plot_llvmpipe_bins(ax, np.array([["full", "half"]], dtype=object))

@@ -43,7 +43,7 @@ so ``d <= 31`` and 64 bits suffice for every triangle it accepts.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -162,14 +162,22 @@ class BitBudget:
         ]
 
 
-def bit_budget(extent_px, subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64) -> BitBudget:
-    """The bits edge functions need when coordinate differences reach ``extent_px`` pixels."""
+def bit_budget(
+    extent_px, subpixel_bits: int = SUBPIXEL_BITS, int_bits: int = 64, *, centre_bit: bool = True
+) -> BitBudget:
+    """The bits edge functions need when coordinate differences reach ``extent_px`` pixels,
+    on the package's grid (``2**(s+1)`` units a pixel) or, ``centre_bit=False``, on a GPU's
+    (``2**s``: Direct3D's 16.8, llvmpipe's ``FIXED_ORDER``).
+
+    >>> bit_budget(320, 8, 32, centre_bit=False).needed == bit_budget(160, 8, 32).needed == 36
+    True
+    """
     extent = as_int("extent_px", extent_px, minimum=1)
     bits = check_bits(subpixel_bits)
     if bits is None:
         raise ValueError("subpixel_bits: a fixed-point budget needs a number of bits, got None")
     width = as_int("int_bits", int_bits, minimum=2)
-    unit = 2 ** (bits + 1)
+    unit = 2 ** (bits + bool(centre_bit))
     return _budget(extent, bits, width, unit, extent * unit, within=False)
 
 
@@ -286,11 +294,16 @@ def narrow_fill(
     int_bits: int = 32,
     subpixel_bits: int = SUBPIXEL_BITS,
     block_sizes=tiles.BLOCK_SIZES,
+    centre_bit: bool = True,
 ) -> NarrowFill:
     """Run the tiled walk with ``int_bits``-bit edge registers, and the exact walk beside it.
 
     When :func:`bit_budget` says the extent does not fit, the stepped values wrap around and
-    whole blocks are accepted or rejected wrongly: the overflow demonstration.
+    whole blocks are accepted or rejected wrongly: the overflow demonstration. The walk runs
+    on the package's grid (``2**(s+1)`` units a pixel), or with ``centre_bit=False`` on a
+    GPU's (``2**s``, as Direct3D's 16.8 and llvmpipe count; needs ``s >= 1``, where pixel
+    centres lie on that grid): every value there is the package's divided by 4, exactly, so
+    only where the values wrap changes, never the exact coverage.
     """
     if not isinstance(tri, Triangle):
         raise TypeError(f"tri must be a teachraster.Triangle, got {type(tri).__name__}")
@@ -301,6 +314,8 @@ def narrow_fill(
         raise ValueError("subpixel_bits: fixed-point stepping needs a number of bits, got None")
     setup = setup_edges(tri.xy, bits)
     box = pixel_bbox(setup, width, height)
+    if not centre_bit:
+        setup = _gpu_grid(setup)
     out = {}
     for name, dtype in (("narrow", INT_TYPES[int_bits]), ("exact", None)):
         local, _ = tiles.fill(
@@ -309,4 +324,18 @@ def narrow_fill(
         out[name] = np.zeros((height, width), dtype=bool)
         out[name][box.row0 : box.row1, box.col0 : box.col1] = local
     extent = fill_extent(tri.xy, width, height, bits, block_sizes)
-    return NarrowFill(out["narrow"], out["exact"], bit_budget(extent, bits, int_bits))
+    budget = bit_budget(extent, bits, int_bits, centre_bit=centre_bit)
+    return NarrowFill(out["narrow"], out["exact"], budget)
+
+
+def _gpu_grid(setup):
+    """The same snapped triangle on ``2**s`` units a pixel: the package's coordinates halved.
+
+    With ``s >= 1`` sub-pixel bits every snapped vertex and pixel centre is an even number of
+    the package's ``2**(s+1)`` units (the centre bit is needed only at ``s = 0``), so halving
+    is exact and every edge value is the package's divided by 4: same signs, same ties.
+    """
+    if setup.unit < 4 or (setup.p % 2).any():
+        raise ValueError("centre_bit=False needs a sub-pixel bit: pixel centres on the grid")
+    return replace(setup, p=setup.p // 2, unit=setup.unit // 2, area2=setup.area2 // 4,
+                   original_area2=setup.original_area2 // 4)  # fmt: skip

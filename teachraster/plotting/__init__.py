@@ -33,6 +33,7 @@ Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
 - :func:`plot_block_counters` -- llvmpipe-style counters as a table.
 - :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
 - :func:`plot_block_path` -- the walk through one level's blocks in a traversal order.
+- :func:`plot_llvmpipe_bins` -- llvmpipe's binning pass: what it does with each 64×64 tile.
 - :func:`plot_early_z` -- per pixel, fragments Hi-Z rejected, early-z killed, or shaded
   (``tr.render(..., trace=True)``).
 
@@ -155,6 +156,7 @@ from .tiles import (
     EarlyZArtists,
     TraversalArtists,
     block_mask,
+    decided_mask,
     early_z_counts,
     plot_block_counters,
     plot_block_path,
@@ -162,6 +164,7 @@ from .tiles import (
     plot_early_z,
     plot_early_z_panels,
     plot_hierarchy,
+    plot_llvmpipe_bins,
     plot_traversal,
     plot_walk_path,
     zoom_on_block,
@@ -211,6 +214,7 @@ __all__ = [
     "attribute_image",
     "bailout",
     "block_mask",
+    "decided_mask",
     "early_z_counts",
     "edge_images",
     "format_plan",
@@ -230,6 +234,7 @@ __all__ = [
     "plot_error_heatmap",
     "plot_filters",
     "plot_hierarchy",
+    "plot_llvmpipe_bins",
     "plot_image",
     "plot_levels_read",
     "plot_lod",

@@ -9,6 +9,7 @@
 - :func:`plot_block_counters` -- llvmpipe's counters as a small table;
 - :func:`plot_traversal` -- the visiting order of a grid's cells (scanline, serpentine,
   tiled, Morton) as colours and a path.
+- :func:`plot_llvmpipe_bins` -- llvmpipe's binning pass over the 64×64 tiles of a box.
 
 Every function takes an Axes (``plot_hierarchy`` a sequence of them) and returns artists.
 """
@@ -22,12 +23,12 @@ import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.colors import BoundaryNorm, ListedColormap, to_rgba
 from matplotlib.lines import Line2D
-from matplotlib.patches import Patch
+from matplotlib.patches import Patch, Rectangle
 from matplotlib.patheffects import withStroke
 from matplotlib.table import Table
 from matplotlib.text import Text
 
-from ..core.tile_trace import KINDS, TileTrace
+from ..core.tile_trace import KINDS, PARTIAL, TileTrace
 from ..core.trace import FillTrace
 from ..core.traversal import TRAVERSALS, traversal_order
 from ..core.validate import check_choice
@@ -56,6 +57,15 @@ CURRENT_BLOCK = "the block visited now"
 PENDING = "inside a partial block: not visited yet"
 #: ... and their colour: the partial orange at this opacity over white.
 PENDING_TINT = 0.35
+#: The key's name for the blocks a level's view shows that a larger block decided (accepted
+#: or rejected whole, :func:`decided_mask`): hatched, so that the tests made at the size shown
+#: (solid) stand apart from the pixels filled or skipped with no test of their own; at the
+#: 1×1 level, the pixel tests from the pixels filled by an accepted block (review r235 FIG1:
+#: both were the same green). Two lines: on one, the explorer's key widened its picture by
+#: 1.5 inches and shrank the grid in a notebook column.
+DECIDED = "hatched: decided by a larger block,\nno test of its own"
+#: ... their hatch, in white over the kind's colour.
+DECIDED_HATCH = "//"
 
 
 def tile_trace(fill, what: str = "this plot") -> tuple[FillTrace, TileTrace]:
@@ -79,6 +89,15 @@ def pending_children(blocks: TileTrace, shown: np.ndarray) -> np.ndarray:
     return pending
 
 
+def decided_mask(blocks: TileTrace, level: int | None) -> np.ndarray:
+    """(n,) bool: the blocks that a view of ``level`` shows (:func:`block_mask`) and that a
+    larger block decided: accepted or rejected at a size above ``block_sizes[level]``, so no
+    block of the size shown was tested inside them. None: no level, none decided."""
+    if level is None:
+        return np.zeros(len(blocks), dtype=bool)
+    return (blocks.level < level) & (blocks.kind_code != PARTIAL)
+
+
 def block_mask(
     blocks: TileTrace, *, level: int | None = None, upto: int | None = None, traversal="scanline"
 ) -> np.ndarray:
@@ -90,7 +109,7 @@ def block_mask(
     """
     n = len(blocks)
     if level is not None:
-        return ((blocks.level < level) & (blocks.kind_code != 2)) | (blocks.level == level)
+        return ((blocks.level < level) & (blocks.kind_code != PARTIAL)) | (blocks.level == level)
     if upto is not None:
         shown = np.zeros(n, dtype=bool)
         shown[blocks.visit_order(traversal)[: max(int(upto) + 1, 0)]] = True
@@ -115,6 +134,11 @@ class BlockArtists(Artists):
     window_grid: LineCollection | None = None
     #: the window shown: (col, row, width, height) of pixels, or None (the whole image)
     window: tuple[int, int, int, int] | None = None
+    #: the hatch over the blocks a larger block decided (``plot_blocks(..., decided=True)``,
+    #: :data:`DECIDED`), else None
+    decided: PolyCollection | None = None
+    #: the blocks' rectangles in drawing order, which the hatch layer picks from
+    rects: np.ndarray = field(default_factory=lambda: np.zeros((0, 4, 2)))
 
     def show_current(self, blocks: TileTrace, b: int | None) -> None:
         """Outline block ``b`` of ``blocks`` (:func:`current_block_xy`), or nothing when
@@ -159,10 +183,18 @@ class BlockArtists(Artists):
         self.window_grid.set_segments(segments)
         self.window_grid.set_visible(True)
 
-    def show(self, mask: np.ndarray, pending: np.ndarray | None = None) -> None:
-        """Show only the blocks where ``mask`` (indexed like the trace) is True, in place, and
-        those where ``pending`` is True in the :data:`PENDING` style (not yet classified)."""
+    def show(self, mask: np.ndarray, pending: np.ndarray | None = None,
+             decided: np.ndarray | None = None) -> None:  # fmt: skip
+        """Show only the blocks where ``mask`` (indexed like the trace) is True, in place,
+        those where ``pending`` is True in the :data:`PENDING` style (not yet classified), and
+        hatch those where ``decided`` is True (:data:`DECIDED`; with a hatch layer only)."""
         visible = np.asarray(mask, dtype=bool)[self.order]
+        if self.decided is not None:
+            hatched = np.zeros(len(visible), dtype=bool)
+            if decided is not None:
+                hatched = np.asarray(decided, dtype=bool)[self.order] & visible
+            # only the hatched blocks' outlines: a hatch has no colour of its own to hide
+            self.decided.set_verts(self.rects[hatched])
         face = _colors(self.kinds, BLOCK_ALPHA)
         edge = np.tile(to_rgba(BLOCK_EDGE), (len(self.kinds), 1))
         ones = np.asarray(self.sizes) == 1  # a white outline would hide a 1×1 block's colour
@@ -183,7 +215,8 @@ class BlockArtists(Artists):
         self.order = np.asarray(order)
         self.kinds = blocks.kind_code[self.order].astype(int)
         self.sizes = blocks.size[self.order]
-        self.blocks.set_verts(_rectangles(blocks, self.order))
+        self.rects = _rectangles(blocks, self.order)
+        self.blocks.set_verts(self.rects)
 
 
 def _colors(kinds: np.ndarray, alpha: float) -> np.ndarray:
@@ -210,6 +243,7 @@ def plot_blocks(
     legend: bool = True,
     unclassified: bool | None = None,
     current: bool = False,
+    decided: bool = False,
 ) -> BlockArtists:
     """Draw the classified blocks of a tiled fill, coloured by kind.
 
@@ -236,6 +270,9 @@ def plot_blocks(
         An outline for the block a walk visits now, hidden until
         ``show_current(blocks, b)`` places it (:func:`current_block_outline`), and its key
         entry (:data:`CURRENT_BLOCK`).
+    decided : bool
+        A hatch over the blocks a larger block decided (:func:`decided_mask`: at ``level``,
+        or as ``show(..., decided=)`` says later), and its key entry (:data:`DECIDED`).
 
     Returns
     -------
@@ -246,13 +283,15 @@ def plot_blocks(
     _, blocks = tile_trace(fill, "plot_blocks")
     check_choice("traversal", traversal, TRAVERSALS)
     order = blocks.visit_order(traversal)
-    coll = PolyCollection(_rectangles(blocks, order), linewidths=lw(0.5), zorder=2.5)
+    rects = _rectangles(blocks, order)
+    coll = PolyCollection(rects, linewidths=lw(0.5), zorder=2.5)
     ax.add_collection(coll, autolim=False)
-    result = BlockArtists(
-        coll, order=order, kinds=blocks.kind_code[order].astype(int), sizes=blocks.size[order]
-    )
+    result = BlockArtists(coll, order=order, kinds=blocks.kind_code[order].astype(int),
+                          sizes=blocks.size[order], rects=rects)  # fmt: skip
+    if decided:
+        result.decided = decided_layer(ax)
     shown = block_mask(blocks, level=level, upto=upto, traversal=traversal)
-    result.show(shown)
+    result.show(shown, decided=decided_mask(blocks, level))
     if current:
         result.current = current_block_outline(ax)
         result.current_width = result.current.get_linewidth()
@@ -260,7 +299,7 @@ def plot_blocks(
     if legend:
         if unclassified is None:
             unclassified = has_unclassified(blocks, shown)
-        handles = block_legend_handles(unclassified=unclassified)
+        handles = block_legend_handles(unclassified=unclassified, decided=decided)
         if current:
             handles.append(Patch(facecolor=tint(BLOCK_COLORS["partial"], PENDING_TINT),
                                  edgecolor=COLORS["grid"], label=PENDING))  # fmt: skip
@@ -334,11 +373,27 @@ def _outline_width(outline: Line2D, width: float) -> None:
     outline.set_path_effects([withStroke(linewidth=width + 3, foreground="white")])
 
 
-def block_legend_handles(*, unclassified: bool = True) -> list[Patch]:
-    """The key of :func:`plot_blocks`: one patch per kind, and (``unclassified``) the page
-    where no block is (yet)."""
+def decided_layer(ax) -> PolyCollection:
+    """An empty hatch layer over the blocks (under their current outline and the pixel grid of
+    a zoomed window) for :attr:`BlockArtists.decided`: white lines, no face, no edge."""
+    layer = PolyCollection(np.zeros((0, 4, 2)), facecolors="none", edgecolors="none",
+                           linewidths=0, hatch=DECIDED_HATCH, hatchcolor="white",
+                           zorder=2.55)  # fmt: skip
+    layer.set_hatch_linewidth(1.6)  # read on a projector over green and grey alike
+    ax.add_collection(layer, autolim=False)
+    return layer
+
+
+def block_legend_handles(*, unclassified: bool = True, decided: bool = False) -> list[Patch]:
+    """The key of :func:`plot_blocks`: one patch per kind, (``unclassified``) the page where no
+    block is (yet), and (``decided``) the hatch over blocks a larger block decided."""
     handles = [Patch(facecolor=BLOCK_COLORS[k], edgecolor=BLOCK_COLORS[k], label=k)
                for k in KINDS]  # fmt: skip
+    if decided:  # the hatch over the accepted green, as most hatched blocks show it
+        key = Patch(facecolor=BLOCK_COLORS["accepted"], edgecolor=BLOCK_COLORS["accepted"],
+                    hatch=DECIDED_HATCH, label=DECIDED)  # fmt: skip
+        key.set_hatchcolor("white")
+        handles.append(key)
     if unclassified:
         handles.append(Patch(facecolor="white", edgecolor=COLORS["grid"], label=UNCLASSIFIED))
     return handles
@@ -373,8 +428,9 @@ def plot_hierarchy(axes, fill, *, triangle: bool = True) -> list[BlockArtists]:
     """One panel per block size: the hierarchy after classifying that size.
 
     Each panel shows the pixel grid, the triangle and the blocks (opaque: at every level they
-    tile the bounding box, so the coverage is theirs to show); its title gives the size and
-    that level's counts.
+    tile the bounding box, so the coverage is theirs to show); the blocks a larger one decided
+    are hatched (:data:`DECIDED`), the ones classified at the panel's size solid. Its title
+    gives the size and that level's counts.
     """
     trace, blocks = tile_trace(fill, "plot_hierarchy")
     axes = list(np.ravel(axes))
@@ -386,7 +442,8 @@ def plot_hierarchy(axes, fill, *, triangle: bool = True) -> list[BlockArtists]:
         plot_pixel_grid(ax, trace.width, trace.height, ticks=4)
         if triangle:
             plot_triangle(ax, trace.snapped, arrows=False, labels=False)
-        out.append(plot_blocks(ax, trace, level=lev, legend=lev == len(axes) - 1))
+        out.append(plot_blocks(ax, trace, level=lev, legend=lev == len(axes) - 1,
+                               decided=True))  # fmt: skip
         ax.set_title(
             f"{size}×{size}: {c.empty[lev]} rejected, {c.full[lev]} accepted, "
             f"{c.partial[lev]} partial",
@@ -674,6 +731,72 @@ def plot_early_z_panels(axes, frame, kinds=("hi_z", "early_z", "shaded"), *, gri
         )
     return axes[0].figure.legend(handles=handles, loc="outside lower center", ncols=1,
                                  fontsize=13)  # fmt: skip
+
+
+#: How :func:`plot_llvmpipe_bins` draws each tile kind of llvmpipe's binner
+#: (:func:`teachraster.study.llvmpipe_binner.bin_rows`): (face colour, hatch, key entry). The
+#: two outside kinds apart, and the tiles no test reached white and dotted: the walk's grey
+#: "rejected" hid which tiles llvmpipe tests at all (review r235 FIG2).
+BIN_STYLE = {
+    "full": (BLOCK_COLORS["accepted"], None, "whole tile: shade-tile command, no pixel test"),
+    "partial": (BLOCK_COLORS["partial"], None, "edges cross: triangle command"),
+    "empty": (BLOCK_COLORS["rejected"], None, "tested, outside an edge (nr_empty_64)"),
+    "exit": ("#8C8C8C", None, "tested, outside an edge: ends its row"),
+    "untested": ("white", "..", "never tested: its row had ended"),
+}
+#: The key's name for a tile :func:`plot_llvmpipe_bins` outlines (``marked``).
+BIN_MARKED = "binned by llvmpipe, rejected by this lesson's walk"
+
+
+@dataclass
+class BinArtists(Artists):
+    """The tiles of a :func:`plot_llvmpipe_bins`, the outlines of its marked ones, and the
+    key's ``handles`` (one per kind drawn, then the outline's)."""
+
+    tiles: list = field(default_factory=list)
+    marks: list = field(default_factory=list)
+    handles: list = field(default_factory=list)
+
+
+def plot_llvmpipe_bins(ax, kinds, *, tile: int = 64, marked=()) -> BinArtists:
+    """llvmpipe's binning pass over the tiles of a box: each tile by what the binner did with
+    it (:data:`BIN_STYLE`), and the tiles ``marked`` (row, col) outlined in the course's
+    current-step colour (:data:`BIN_MARKED`).
+
+    ``kinds`` is the (rows, cols) array of :func:`~teachraster.study.llvmpipe_binner.bin_rows`;
+    tile (r, c) covers pixels ``r·tile ...`` and ``c·tile ...`` (the box from pixel (0, 0)).
+    Draw the pixel grid and the triangle around it; the key is the caller's (``handles``).
+    """
+    kinds = np.asarray(kinds, dtype=object)
+    unknown = set(kinds.ravel()) - set(BIN_STYLE)
+    if unknown:
+        raise ValueError(f"kinds: unknown tile kinds {sorted(unknown)}; known: {list(BIN_STYLE)}")
+    result = BinArtists()
+    for (r, c), kind in np.ndenumerate(kinds):
+        face, hatch, _ = BIN_STYLE[kind]
+        rect = Rectangle((c * tile, r * tile), tile, tile, facecolor=face, edgecolor="white",
+                         lw=lw(0.6), hatch=hatch, zorder=2.5)  # fmt: skip
+        if hatch:
+            rect.set_hatchcolor(COLORS["grid"])
+        result.tiles.append(ax.add_patch(rect))
+    inset = tile / 20  # inside the tile: on the image's border the frame hid half the line
+    for r, c in marked:  # over the tiles and the triangle's edges, with a white halo
+        x0, y0 = c * tile + inset, r * tile + inset
+        x1, y1 = x0 + tile - 2 * inset, y0 + tile - 2 * inset
+        (mark,) = ax.plot([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0], color=COLORS["current"],
+                          zorder=5)  # fmt: skip
+        _outline_width(mark, lw(1.2))
+        result.marks.append(mark)
+    for kind in (k for k in BIN_STYLE if (kinds == k).any()):
+        face, hatch, label = BIN_STYLE[kind]
+        key = Patch(facecolor=face, edgecolor=COLORS["grid"], hatch=hatch, label=label)
+        if hatch:
+            key.set_hatchcolor(COLORS["grid"])
+        result.handles.append(key)
+    if result.marks:
+        result.handles.append(Line2D([], [], color=COLORS["current"], lw=lw(1.2),
+                                     label=BIN_MARKED))  # fmt: skip
+    return result
 
 
 def zoom_on_block(ax, row: int, col: int, size: int = 16, *, every: int = 4) -> None:

@@ -9,7 +9,13 @@ from ..core.traversal import TRAVERSALS
 from ..core.triangle import Triangle
 from ..plotting import plot_blocks, plot_pixel_grid, plot_triangle
 from ..plotting.blitting import MOVING, STILL, LayeredBlit
-from ..plotting.tiles import CURRENT_BLOCK, UNCLASSIFIED, block_mask, pending_children
+from ..plotting.tiles import (
+    CURRENT_BLOCK,
+    UNCLASSIFIED,
+    block_mask,
+    decided_mask,
+    pending_children,
+)
 from .common import (
     SLIDER_COLUMN_WIDTH,
     Holdable,
@@ -53,7 +59,10 @@ class TileExplorer(Holdable):
     """Step through the blocks of a tiled fill: one level at a time, or one block at a time.
 
     The **level** slider shows the hierarchy after each block size is classified (rejected
-    grey, accepted green, partial orange; partial blocks are split at the next level). The
+    grey, accepted green, partial orange; partial blocks are split at the next level; the
+    blocks a larger block decided hatched, so that the tests made at the level's size stand
+    out: at a 1×1 level, the pixel tests from the pixels filled with none). Moving it puts the
+    block slider back to 0, where the picture is a level's. The
     **block** slider walks the blocks in the chosen **traversal** order (depth first, the
     children of a partial block right after it): at ``k`` the first ``k`` blocks are shown,
     the ``k``-th outlined (``current``: its index in the trace, None on the level slider)
@@ -132,7 +141,7 @@ class TileExplorer(Holdable):
         self.info, info_widgets = info_line(self.display)
         self.sizes.observe(self._on_refill, "value")
         self.traversal.observe(self._on_traversal, "value")
-        self.level.observe(lambda _: None if self._quiet else self.show_level(), "value")
+        self.level.observe(lambda _: None if self._quiet else self._on_level(), "value")
         self._wire_block(self.block)
         title = title_html(
             "Tiles: accept or reject whole blocks, test pixels only where an edge passes",
@@ -185,7 +194,7 @@ class TileExplorer(Holdable):
                 artist.remove()
         # the block slider shows blocks not classified yet, and the key is drawn once (below)
         self.artists = plot_blocks(self.ax, self.fill, traversal=self.traversal.value,
-                                   unclassified=True, current=True)  # fmt: skip
+                                   unclassified=True, current=True, decided=True)  # fmt: skip
         # the whole image: new artists know no window, the Axes may still be zoomed
         self.artists.show_window(self.ax, self.width, self.height, None)
         # the key stays while the level slider shows every block classified: it says where
@@ -197,11 +206,12 @@ class TileExplorer(Holdable):
         # the ticks and the key stay in a cached background, what lies over the blocks (the
         # triangle, the frame) in a still layer (a full draw cost 4-5x more; issue 31: the
         # level slider dragged at 1.3 fps); the current block's outline moves too, over all
-        coll, current = self.artists.blocks, self.artists.current
-        above = [a for a in self.ax.get_children() if a is not coll and a is not current
+        coll, current, hatch = self.artists.blocks, self.artists.current, self.artists.decided
+        moving = (coll, current, hatch)  # the blocks, their hatch and the outline change
+        above = [a for a in self.ax.get_children() if all(a is not m for m in moving)
                  and a.get_zorder() >= coll.get_zorder()]  # fmt: skip
-        self._blit = LayeredBlit(self.ax.figure,
-                                 [(MOVING, [coll]), (STILL, above), (MOVING, [current])])  # fmt: skip
+        self._blit = LayeredBlit(self.ax.figure, [(MOVING, [coll, hatch]), (STILL, above),
+                                                  (MOVING, [current])])  # fmt: skip
 
     def _draw_figure(self) -> None:
         self._blit.draw()
@@ -229,6 +239,13 @@ class TileExplorer(Holdable):
             self._ahead.restart()
 
     # -- views ----------------------------------------------------------------------------
+    def _on_level(self) -> None:
+        # the level slider shows a whole level: the block slider goes back to 0, where the
+        # picture is a level's (it kept "12" over "level 2: 1×1 blocks"; review r235 W1)
+        with self._holding():
+            self.block.value = 0
+        self.show_level()
+
     def show_level(self, level: int | None = None) -> None:
         """Show the hierarchy down to block size ``block_sizes[level]``."""
         self.level.description = LEVEL_LABELS[True]
@@ -239,6 +256,7 @@ class TileExplorer(Holdable):
     def _compute_at(self, level) -> None:
         level = int(round(level))
         self.shown = block_mask(self.blocks, level=level)
+        self.decided = decided_mask(self.blocks, level)  # hatched: no test at this size
         self.pending = None  # every block of the level is classified
         self.current = None  # a whole level: no one block visited now
         c, size = self.blocks.counters, self.sizes.value[level]
@@ -253,7 +271,7 @@ class TileExplorer(Holdable):
         self.caption_text = text
 
     def _set_artists(self) -> None:
-        self.artists.show(self.shown, self.pending)
+        self.artists.show(self.shown, self.pending, self.decided)
         window = self._window()
         if window != self.artists.window:
             # limits, ticks and the zoomed block's pixel grid: the cached background and the
@@ -289,6 +307,7 @@ class TileExplorer(Holdable):
         """Show the first ``k`` blocks of the traversal (0: none yet), captioning the last."""
         k = self.block.value if k is None else int(k)
         self.shown = block_mask(self.blocks, upto=k - 1, traversal=self.traversal.value)
+        self.decided = None  # the walk shows the blocks it tested, one by one
         # a visited partial block's children the walk has not reached: not its orange
         self.pending = pending_children(self.blocks, self.shown)
         # the block visited now, outlined (review r11, lesson 10: where is the walk?)
