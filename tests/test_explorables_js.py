@@ -1086,21 +1086,22 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
         assert f"{data['clip'][k][3]:g}" in html["vertex"]
         assert str(float(f"{data['window'][k][0]:.5g}")).rstrip("0").rstrip(".") in html["viewport"]
     assert f"{data['fragments']} pixel centres" in html["rasterize"]
-    # the guard band render clips this image with (review r7: not the clipper's default 2**20),
-    # in plain digits, just inside lesson 02's exact range of 2**21 px
-    from teachraster.pipeline.rendering.stages import guard_band, guard_band_reach
+    # the guard band render clips this image with (review r7: not the clipper's default 2**20):
+    # the vertices are tested against it
+    from teachraster.pipeline.geometry.clipping import INSIDE, classify
+    from teachraster.pipeline.rendering.stages import guard_band
 
-    assert data["guard"] == guard_band(16, 16, 8) and data["exactPx"] == 2**21
-    assert data["guardPx"] < 2**21 and "e+" not in html["clip"]
-    # review r225 S4 (after r157 00-3, r166 00-8): the band is the simulator's choice, not a
-    # GPU's, whose band is set by its own fixed-point rasteriser; rounded (seven figures were
-    # noise in a tour; lessons 05a and 10 print it exactly), G and the reach agree
-    guard, reach = guard_band_reach(16, 16, 8)
-    assert (guard, reach) == (data["guard"], data["guardPx"]) == (261880.856, 2095054.848)
-    assert "G ≈ 261,881" in html["clip"] and "within about 2.1 million px" in html["clip"]
-    assert "This simulator's band is its own choice" in html["clip"]
-    assert "2,097,152 px" in html["clip"] and "261,880.856" not in html["clip"]
+    assert data["guard"] == guard_band(16, 16, 8) == 261880.856
+    assert data["inside"] == [bool(c == INSIDE) for c in classify(np.array([data["clip"]]),
+                                                                     data["guard"])]  # fmt: skip
+    # review r241 S7 (after r225 S4, r166 00-8, r157 00-3): a GPU's band is its own
+    # fixed-point rasteriser's; the simulator's numbers are package internals in a tour (lessons
+    # 05a and 10 print them): one sentence says the band is the simulator's own, no number
+    assert "This simulator has a band of its own, sized in lessons 05a and 10." in html["clip"]
+    assert "G ≈" not in html["clip"] and "million px" not in html["clip"]
+    assert "2,097,152" not in html["clip"] and "e+" not in html["clip"]
     assert "G is set per image" not in html["clip"] and "fixed-point rasteriser" in html["clip"]
+    assert "guardPx" not in data and "exactPx" not in data  # nothing the page no longer shows
     # the clip coordinates to three decimals each, z as x (r225 S4: 0.052632 beside 2.200)
     for stage in ("vertex", "clip"):
         cells = re.findall(r"<td>(-?\d+\.\d+)</td>", html[stage])[:12]  # v1 to v3, x y z w
@@ -1120,7 +1121,12 @@ def test_pipeline_map_shows_the_engines_tour_triangle():
     assert "white: no fragment written (the cleared pixels, left blank)" in html["depth"]
     assert "the buffer keeps its cleared 1 there" not in html["depth"]
     # review r225 M1: depth is interpolated affinely, with no divide (unlike the attribute)
-    assert "affine on the screen: no divide by w, unlike s" in html["depth"]
+    assert "affine on the screen: no divide by w, unlike u" in html["depth"]
+    # review r241 S1: the attribute is u, as lesson 04 calls it (s is lesson 04's screen
+    # coordinate), in every stage's text and the vertex table
+    assert "<th>u</th>" in html["vertex"] and "lesson 04" in html["vertex"]
+    assert "interpolating u/w and 1/w" in html["fragment"] and "Key: u = 0" in html["fragment"]
+    assert not any(re.search(r"\bs/w\b|\battribute s\b|<th>s</th>", h) for h in html.values())
     assert "cleared to white" in html["blend"] and "dark grey" not in html["blend"]
     # early-z (test and write before the shader) only when the shader neither discards nor
     # writes depth (issue 29, r52); as lesson 05a teaches, a depth-writing shader needs the

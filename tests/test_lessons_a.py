@@ -182,7 +182,7 @@ def test_tour_says_the_players_last_step_shows_u():
     text = next(t for t in _cells("00_tour", "markdown") if t.startswith("## Step through it"))
     text = " ".join(text.split())
     assert "The steps show coverage, which" not in text
-    assert "the last step then colours each covered pixel by its interpolated `s`" in text
+    assert "the last step colours each covered pixel by its interpolated `u`" in text
 
 
 # -- executed: the quoted numbers ---------------------------------------------------------------
@@ -213,7 +213,7 @@ def test_00_facing_and_the_two_methods():
     assert "snapping" in "\n".join(_cells("00_tour", "markdown"))
     assert round(float(np.nanmax(ns.err)), 3) == 0.152  # printed, the heatmap's maximum
     # the dark band: Δu = 0 on the line of depth w2 from v2 to v1 + 2/3 (v3 - v1)
-    assert round(ns.iso_at, 3) == 0.667 and ns.ds_iso.max() < 1e-12
+    assert round(ns.iso_at, 3) == 0.667 and ns.du_iso.max() < 1e-12
     lam = tr.barycentric(ns.tri.xy, np.array([[x + 0.5, y + 0.5] for y in range(16)
                                               for x in range(16)]))  # fmt: skip
     inside = (lam >= 0).all(axis=1)
@@ -253,14 +253,14 @@ def test_00_facing_and_the_two_methods():
     # review r52 00-5: the player opens on the first raster line below the split (the
     # flat-bottom part filled, point 4 drawn), not on an empty grid; the text says so
     first = ns.span.trace.step(ns.start)
-    assert first.kind == "row" and first.row + 0.5 > ns.v_mid > first.row - 0.5
+    assert first.kind == "row" and first.row + 0.5 > ns.y_mid > first.row - 0.5
     assert ns.span.trace.step(ns.start - 1).kind == "row" and ns.start > ns.span.trace.split_step
     assert "opens part-way through the span-table fill" in tour
     if hasattr(ns, "player"):  # the widget, where the run keeps it
         assert ns.player.step == ns.start and ns.player.caption_text.startswith("row 5")
     # review r52 00-6: the zero-error line is solid and keyed, unlike the comparison's dashed
     # row, which the text names
-    assert '"--", color="white"' not in code and 'label="Δs = 0"' in code
+    assert '"--", color="white"' not in code and 'label="Δu = 0"' in code
     assert "it is not the line of zero error" in tour
 
 
@@ -269,14 +269,15 @@ def test_00_words_r22():
     distance), the title promises no five minutes, the legend says y for the split height."""
     code = "\n".join(_cells("00_tour", "code"))
     tour = " ".join(" ".join(_cells("00_tour", "markdown")).split())
-    assert "clockwise on this" not in code and 'split at y = v_mid"' in code
+    # review r241 S1: the legend names the split by the middle vertex, not by Ek's v_mid
+    assert "clockwise on this" not in code and '"split at the middle vertex\'s y",' in code
     assert "distance in front of the eye" not in tour and "five-minute" not in tour
     assert tour.count("JupyterLab's or Notebook's default display") == 1
 
 
 def _tour_error_cell(w) -> dict:
     """Lesson 00's error-map cell run on the tour triangle with clip-space ``w`` (its Try-it
-    edits the triangle's cell), after the import cell, as Run All runs them; returns the
+    edits the triangle's cell and runs this one again), after the import cell; returns the
     cell's globals and what it printed under ``"printed"``."""
     import contextlib
     import io
@@ -285,16 +286,14 @@ def _tour_error_cell(w) -> dict:
 
     cells = _cells("00_tour", "code")
     imports = next(c for c in cells if "import teachraster as tr" in c)
-    error_map = next(c for c in cells if 'title="s along v1 → v2"' in c)
-    halfway = next(c for c in cells if "q_half = Predict(" in c)
+    error_map = next(c for c in cells if 'title="u along v1 → v2"' in c)
     ns: dict = {}
     exec(imports.replace("%matplotlib inline", ""), ns)
-    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=w, attrs={"s": [0.0, 1.0, 0.0]})
-    # the question it waits for (r208 00-5), stood in for; q_half's cell makes its weights
-    ns.update(tri=tri, W=16, H=16, q_centres=SimpleNamespace(hold=lambda: None))
-    exec(halfway, ns)
-    ns["q_half"] = SimpleNamespace(hold=lambda: None)
-    ns["halfplane"] = tr.rasterize(tri, 16, 16, method="halfplane", trace=True)
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=w, attrs={"u": [0.0, 1.0, 0.0]})
+    # the questions it waits for (r208 00-5), stood in for: the cell needs nothing else of
+    # the cells above but tri, W and H (review r241 S10: the Try-it runs it alone)
+    held = SimpleNamespace(hold=lambda: None)
+    ns.update(tri=tri, W=16, H=16, q_centres=held, q_half=held)
     out = io.StringIO()
     with warnings.catch_warnings(), contextlib.redirect_stdout(out):
         # a 0/0 (numpy's RuntimeWarning) is a bug too; not a DeprecationWarning of the
@@ -355,8 +354,8 @@ def test_00_the_affine_gap_is_printed_at_centres_and_between_r166():
     assert round(float(np.nanmax(ns.err)), 3) == 0.152 == round(ns.largest_gap, 3)
     # 3 - 2 sqrt 2 on the edge v1 v2 (w doubles along it), the maximum of the whole triangle
     peak = 3 - 2 * np.sqrt(2)
-    assert abs(np.abs(ns.ds_all).max() - peak) < 1e-5 and abs(ns.gap.max() - peak) < 1e-4
-    assert round(float(np.abs(ns.ds_all).max()), 3) == round(float(ns.gap.max()), 3) == 0.172
+    assert abs(np.abs(ns.du_all).max() - peak) < 1e-5 and abs(ns.gap.max() - peak) < 1e-4
+    assert round(float(np.abs(ns.du_all).max()), 3) == round(float(ns.gap.max()), 3) == 0.172
     from notebook_runs import executed, streams
 
     printed = streams(executed("00_tour").notebook())
@@ -374,7 +373,7 @@ def _tour_map_cell(tri):
     held = SimpleNamespace(hold=lambda: None)
     ns: dict = {}
     exec(imports.replace("%matplotlib inline", ""), ns)
-    ns.update(tri=tri, W=16, H=16, q_facing=held, q_centres=held)
+    ns.update(tri=tri, W=16, H=16, q_facing=held, q_centres=held, q_half=held)
     exec(shown, ns)
     return ns
 
@@ -385,15 +384,15 @@ def test_00_the_map_follows_the_lessons_triangle_r208():
     showed w 1, 2, 4 and v1 at (2.2, 1.5). It is built from tri and follows it."""
     from teachraster.widgets.pipeline_map import TOUR_U, TOUR_W, TOUR_XY
 
-    given = tr.Triangle(TOUR_XY, w=TOUR_W, attrs={"s": TOUR_U})
+    given = tr.Triangle(TOUR_XY, w=TOUR_W, attrs={"u": TOUR_U})
     edits = [
         given,
-        tr.Triangle(TOUR_XY, w=[1.0, 1.0, 1.0], attrs={"s": TOUR_U}),
-        tr.Triangle([[2.5, 1.5], *TOUR_XY[1:]], w=TOUR_W, attrs={"s": TOUR_U}),
+        tr.Triangle(TOUR_XY, w=[1.0, 1.0, 1.0], attrs={"u": TOUR_U}),
+        tr.Triangle([[2.5, 1.5], *TOUR_XY[1:]], w=TOUR_W, attrs={"u": TOUR_U}),
     ]
     for tri in edits:
         data = _tour_map_cell(tri)["pipeline_map"].data
-        assert data["w"] == tri.w.tolist() and data["u"] == tri.attrs["s"].tolist()
+        assert data["w"] == tri.w.tolist() and data["u"] == tri.attrs["u"].tolist()
         assert np.allclose(np.array(data["window"])[:, :2], tri.xy, atol=1e-9)
         assert data["fragments"] == int(tr.rasterize(tri, 16, 16).coverage.sum())
     assert _tour_map_cell(edits[2])["pipeline_map"].data["window"][0][:2] == [2.5, 1.5]
@@ -407,10 +406,10 @@ def test_00_player_colours_and_held_outputs_r208():
     00-2, the text says that the comparison, opened by its title, takes the steps' place;
     00-6, step 0 is no empty grid."""
     code = _cells("00_tour", "code")
-    fills = next(c for c in code if 'axes[0].set_title(f"span tables, u4' in c)
+    fills = next(c for c in code if 'axes[0].set_title(f"span tables, point 4' in c)
     assert "part_fill" not in fills and "plot_coverage(ax, fill_)\n" in fills
     assert '"flat-bottom part: covered, rest"' not in fills and '"covered",' in fills
-    error_map = next(c for c in code if 'title="s along v1 → v2"' in c)
+    error_map = next(c for c in code if 'title="u along v1 → v2"' in c)
     assert error_map.startswith("q_centres.hold()")
     player = next(c for c in code if "FillPlayer(" in c)
     assert "empty grid" not in player and "step 0 shows only the snapped triangle" in player
@@ -447,11 +446,10 @@ def test_00_r225_items():
     """Review r225, lesson 00. F1: the GL specification's coordinate names (object, eye,
     clip), model/world/view as the engines' and textbooks'. M1: window depth is affine on the
     screen, interpolated with no divide: printed against the exact depth. M2: a question in
-    the perspective section (halfway along v1 -> v2 on the screen: s = 1/3, not 0.5), its
-    answer printed after it, no "plain to see". S1: the attribute is s, not Ek's screen u.
-    S2: the symbols lesson 00 uses list 00. S5: the opening is the figure and one paragraph.
-    S6: the error drawn as the player's comparison draws it, |Δs|. S7: the player's text is
-    short."""
+    the perspective section (halfway along v1 -> v2 on the screen: u = 1/3, not 0.5), its
+    answer printed after it, no "plain to see". S2: the symbols lesson 00 uses list 00. S5:
+    the opening is one paragraph. S6: the error drawn as the player's comparison draws it,
+    |Δu|. S7: the player's text is short. (S1, the attribute's name, is r241's now.)"""
     from notebook_runs import executed, streams
 
     ns = lesson("00_tour")
@@ -466,25 +464,23 @@ def test_00_r225_items():
     # M1: z_win affine on the screen (to rounding), w itself not
     assert ns.z_gap < 1e-12 and round(ns.w_gap, 2) == 0.96
     assert f"window depth, affine - exact: at most {ns.z_gap:.0e}" in printed
-    assert "w itself, affine - exact: at most 0.96" in printed and "near 0.5, far 10;" in printed
+    assert "near 0.5, far 10;" in printed
+    assert "w itself (Ritschel's view z), affine - exact: at most 0.96" in printed
     assert "we actually don't need to do that" in tour
     assert "*Perspective Correct Depth Interpolation*" in tour
     # M2: asked before the figure that shows it, held behind it, printed after it
-    assert ns.half_answer == 0.33 and abs(ns.s_half - 1 / 3) < 1e-12
-    assert abs(ns.s_half_affine - 0.5) < 1e-12
-    assert "affine s = 0.500," in printed and "perspective-correct s = 0.333" in printed
+    assert ns.half_answer == 0.33 and abs(ns.u_half - 1 / 3) < 1e-12
+    assert abs(ns.u_half_affine - 0.5) < 1e-12
+    assert "affine u = 0.500," in printed and "perspective-correct u = 0.333" in printed
     ask = next(i for i, c in enumerate(code) if "q_half = Predict(" in c)
-    shown = next(i for i, c in enumerate(code) if 'title="s along v1 → v2"' in c)
+    shown = next(i for i, c in enumerate(code) if 'title="u along v1 → v2"' in c)
     assert shown == ask + 1 and "\nq_half.hold()\n" in code[shown]
-    before = tour[: tour.index("Work one point out by hand first")]
+    before = tour[: tour.index("Before you read on, follow its eye ray")]
     assert "0.333" not in before and "1/3" not in before and "plain to see" not in tour
-    # S1: one u (Ek's screen x); the attribute is s in the text, the figures and the map
-    assert set(ns.tri.attrs) == {"s"} and "`u`" not in tour and "attribute $u$" not in tour
-    assert "u at the covered centres" not in printed and "|Δu|" not in "\n".join(code)
     # S2
     table = next(t for t in md if "### Symbols used in every lesson" in t).splitlines()
     for start in (r"| $E(\mathbf{a}", r"| $\lambda_1", r"| $w$, $w_k$", r"| $z_\text{win}$",
-                  r"| $f$, $f_k$"):  # fmt: skip
+                  r"| $f$, $f_k$", r"| $u$ |", r"| $q$, $t$", r"| $z$ |"):  # fmt: skip
         line = next(ln for ln in table if ln.startswith(start))
         assert line.rstrip(" |").split("| ")[-1].startswith("00, "), line
     # S5: nothing from the specifications before the first triangle
@@ -492,10 +488,88 @@ def test_00_r225_items():
     assert "§" not in opening and "Why triangles?" not in opening and "- **" not in opening
     # S6: one encoding of the error, the player's
     error_map = code[shown]
-    assert "SIGNED_CMAP" not in error_map and 'plot_error_heatmap(axd["ds"]' in error_map
+    assert "SIGNED_CMAP" not in error_map and 'plot_error_heatmap(axd["du"]' in error_map
     # S7
     step = next(t for t in md if t.startswith("## Step through it"))
     assert len(step.splitlines()) <= 10
+
+
+@pytest.mark.notebook
+def test_00_r241_items():
+    """Review r241, lesson 00. P1: the perspective question is asked on Ek's side view of the
+    edge v1 v2 before any text gives the rule (u/w and 1/w, divided), which its answer gives;
+    M1: the answer shows eight equal screen steps landing unequally on the edge (the package's
+    plot_projection, lesson 04's picture). S1: the attribute is u, as lesson 04 calls it, and
+    lesson 00's own text and outputs write screen positions x, y, not Ek's u, v; the table of
+    symbols says what u and s mean where. S2: Ritschel's view z is the case that needs the
+    correction (the printed 0.96). S3: the facing count takes whole numbers only. S4: the
+    player's caption is not printed again. S6: one pipeline picture, the map. S7: the map's
+    clipping stage has one sentence on the simulator's band. S8: CONVENTIONS.md linked.
+    S9: the vertex-processing bullet's links come first, its prose split into sentences.
+    S10: the Try-it runs single cells, and says why."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("00_tour")
+    md = _cells("00_tour", "markdown")
+    code = _cells("00_tour", "code")
+    tour = " ".join(" ".join(md).split())
+    printed = streams(executed("00_tour").notebook())
+    # P1: the picture, then the question; no text above it states the rule
+    side = next(i for i, c in enumerate(code) if "shows=False" in c)
+    ask = next(i for i, c in enumerate(code) if "q_half = Predict(" in c)
+    assert side == ask - 1 and "n_steps=1" in code[side]
+    before = tour[: tour.index("Before you read on, follow its eye ray")]
+    for rule in ("$u/w$", "u/w", "$1/w$", "and divides", "interpolating"):
+        assert rule not in before[before.index("## Affine vs") :], rule
+    asked = code[ask]
+    assert "answer=half_answer," in asked and "tolerance=half_tolerance," in asked
+    assert ns.half_tolerance == 0.05 and abs(ns.half_answer - 0.5) > ns.half_tolerance
+    assert abs(ns.half_answer - round(1 - ns.u_half, 2)) > ns.half_tolerance  # both lures
+    explain = asked.split("explain=")[1]
+    assert "<code>u/w</code> and <code>1/w</code>" in explain and "and divide" in explain
+    # M1: the answer's figure is Ek's, by the package's plotting: eight equal steps
+    assert "figure=ek_figure," in asked and "plot_projection(ax, side_view, n_steps=8" in asked
+    assert abs(float(ns.side_view.world_parameter(0.5)[0]) - ns.u_half) < 1e-12
+    assert ns.side_view.z1 / ns.side_view.z0 == ns.tri.w[1] / ns.tri.w[0]
+    # S1
+    assert set(ns.tri.attrs) == {"u"} and "`s`" not in tour and "attribute `s`" not in tour
+    assert "(u, v)" not in printed and "u4" not in printed and "v_mid" not in printed
+    assert "Ek writes screen positions $(u, v)$" not in tour
+    table = next(t for t in md if "### Symbols used in every lesson" in t).splitlines()
+    rows = {ln.split(" | ")[0]: ln for ln in table if ln.startswith("| ")}
+    assert "lessons 01, 02 and 10" in rows["| $(x, y)$"] and "(u, v)" in rows["| $(x, y)$"]
+    assert "texture coordinate" in rows["| $u$"] and "screen $x$ instead" in rows["| $u$"]
+    assert "$s = x/z$" in rows["| $s$"] and "Ritschel" in rows["| $s$"]
+    assert rows["| $s$"].rstrip(" |").endswith("| 04")
+    # S2: Ritschel's depth is the one that needs the correction
+    depth = next(t for t in md if t.startswith("**Depth needs no such correction.**"))
+    depth = " ".join(depth.split())
+    assert "slides show why" not in depth and "store another depth: the view depth $z$" in depth
+    assert "*is* wrong, as he says" in depth and "the window depth, which a GPU stores" in depth
+    # S3
+    facing = next(c for c in code if "q_facing = Predict(" in c)
+    assert "\n    whole=True," in facing
+    # S4: the player shows its own caption; the cell prints nothing
+    player = next(c for c in code if "FillPlayer(" in c)
+    assert "print(" not in player and "q_half.hold()" in player
+    # S6: the map is the one pipeline picture
+    assert not any("plot_pipeline(" in c for c in code)
+    assert "picture at the top" not in tour and "first picture" not in tour
+    # S7: see tests/test_explorables_js.py (the map's clipping stage)
+    # S8
+    assert tour.count("[`CONVENTIONS.md`](CONVENTIONS.md)") >= 2
+    assert "[CONVENTIONS.md](CONVENTIONS.md)" in tour and "(CONVENTIONS)" not in tour
+    # S9: the links on the bullet's first line, the prose in sentences after it
+    stage = next(t for t in md if t.startswith("### By stage")).splitlines()
+    first = next(i for i, ln in enumerate(stage) if ln.startswith("- **vertex processing**"))
+    assert stage[first].endswith("(05a_zbuffer.ipynb).") and "(" not in stage[first][:24]
+    assert all(ln.startswith("  ") and len(ln) <= 100 for ln in stage[first + 1 : first + 7])
+    # S10: single cells, which keep the answers; the cells it names need only tri, W and H
+    try_it = tour[tour.index("**Try it:**") :]
+    assert "run that cell (Shift+Enter), then the error map's cell" in try_it
+    assert "Run All would ask the three questions again" in try_it
+    fills = next(c for c in code if 'axes[0].set_title(f"span tables, point 4' in c)
+    assert "covered_share" not in fills and "halfplane" not in code[ask + 2]
 
 
 @pytest.mark.notebook

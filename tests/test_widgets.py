@@ -1401,6 +1401,74 @@ def test_the_comparison_reads_classroom_size_and_rings_beside_its_pixel_r225():
         widget.close()
 
 
+def test_the_comparison_reads_22_px_with_its_labels_off_the_frames_r241():
+    """Review r241 FIG1 (lesson 00's player): at 20 px the comparison's digits were 14-15 px
+    tall beside the lesson's figures' 17; the row tick "0" ran into the v1 label ("0-v1"),
+    and v1's white box sat on the panel's frame (on the orange frame of the panel in use).
+    Its text now reads 22 px in a classroom's column, the titles stand clear of the column
+    labels that grew with them, the first panel has no row 0, and every vertex label lies
+    wholly inside its panel or wholly beside it, haloed, not boxed, also after a toggle."""
+    from matplotlib.transforms import Bbox
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets.player import CLASSROOM_COLUMN_PX, COMPARISON_MAX_PX
+
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip  # lesson 00's triangle
+    with use_style("classroom"):
+        p = FillPlayer(tri, 16, 16, method="span", step=9, backend="image")
+    try:
+        fig, view = p.interp_display.fig, p.interp_view
+        size, text = smallest_text_px(fig, max_height=COMPARISON_MAX_PX,
+                                      column=CLASSROOM_COLUMN_PX)  # fmt: skip
+        assert size >= 22.0 - 0.5, (size, text)
+        rows = [t.get_text() for t in view.axes[0].get_yticklabels()]
+        assert rows == ["4", "8", "12"]
+        for toggle in (None, "affine"):
+            if toggle is not None:
+                p.interpolation.value = toggle
+            fig.canvas.draw()
+            renderer = fig.canvas.get_renderer()
+            for tri_art in view.triangles:
+                frame = tri_art.outline.axes.get_window_extent(renderer)
+                for label in tri_art.labels:
+                    box = label.get_window_extent(renderer)
+                    inside = frame.x0 < box.x0 and box.x1 < frame.x1
+                    beside = box.x1 < frame.x0 or frame.x1 < box.x0
+                    assert inside or beside, (label.get_text(), box, frame)
+                    assert frame.y0 < box.y0 and box.y1 < frame.y1, label.get_text()
+                    assert label.get_bbox_patch() is None and label.get_path_effects()
+            # each title above its panel's column labels, the labels of one vertex on one
+            # panel apart from another panel's and from the colour bars
+            ax = view.axes[0]
+            top = Bbox.union([t.get_window_extent(renderer) for t in ax.get_xticklabels()]
+                             + [ax.xaxis.label.get_window_extent(renderer)])  # fmt: skip
+            assert ax.title.get_window_extent(renderer).y0 > top.y1
+            labels = [lb.get_window_extent(renderer) for t in view.triangles for lb in t.labels]
+            bars = [im.colorbar.ax.get_window_extent(renderer)
+                    for im in (*view.images, view.heatmap) if im.colorbar]  # fmt: skip
+            for i, a in enumerate(labels):
+                assert not any(a.overlaps(b) for b in labels[i + 1 :] + bars)
+    finally:
+        p.close()
+
+
+def test_the_hint_says_the_comparison_keeps_one_sample_per_pixel_r241():
+    """Review r241 S5: with 4 samples the last caption counted 72 pixels and pointed to the
+    comparison below, which shows the 59 of one sample per pixel (its title says so)."""
+    from teachraster.widgets.player import COMPARISON_ONE_SAMPLE
+
+    p = _player_at_4_samples()
+    try:
+        last = p.frames.captions[-1]
+        assert "72 pixels" in last and last.endswith(f"{COMPARISON_HINT} {COMPARISON_ONE_SAMPLE}")
+        assert "1 sample per pixel" in p.comparison.get_title(0)
+        p.samples.value = "1 (centre)"
+        assert p.frames.captions[-1].endswith(COMPARISON_HINT)
+    finally:
+        p.close()
+
+
 def test_the_split_labels_keep_off_the_raster_line_r225():
     """Review r225 FIG2 (lesson 00's player at its opening step 9, row 5 under the split):
     the "4" sat on row 5's outline and a hollow centre, and "v2" on the dashed split line.

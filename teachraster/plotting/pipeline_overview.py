@@ -1,7 +1,10 @@
 """The graphics pipeline as one picture: each stage, what it does, and the lessons that teach it.
 
-Lesson 00 opens with it, so that every later lesson has a place: rasterisation (this course)
-sits between vertex processing, which ends in window coordinates, and the per-fragment stages.
+Rasterisation (this course) sits between vertex processing, which ends in window coordinates,
+and the per-fragment stages. Lesson 00 shows the stages as a clickable map
+(:mod:`teachraster.widgets.pipeline_map`, which reads its stages and lessons from here); this
+static picture of them is for pages and slides with no kernel (lesson 00 showed both until
+review r241 S6: one picture of the same ten stages is enough there).
 The stages are drawn in the logical order of the OpenGL and Direct3D pipelines: the fragment
 (pixel) shader runs before the per-fragment depth and stencil tests, which run before blending.
 *Early-z*, running the depth test and write before the shader, is a conditional bypass a

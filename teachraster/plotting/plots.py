@@ -18,6 +18,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap, Normalize
 from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch, Patch, Polygon, Rectangle
+from matplotlib.patheffects import withStroke
 from matplotlib.text import Text
 
 from ..core.bbox import BBox
@@ -595,6 +596,12 @@ class SplitArtists(Artists):
         # the lone "4" sits on the pink split line: pink on pink read faintly (review r91
         # 00-C), so it is drawn dark grey; the longer label beside the line stays pink
         self.label.set_color("#333333" if text == "4" else COLORS["split"])
+        # ... and among the centre dots, between two of them: a white halo round its glyph,
+        # not a box, which hid the dot beside it (review r241 FIG2, lesson 00's player)
+        lone = text == "4"
+        self.label.set_bbox(None if lone else label_box())
+        self.label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")]
+                                    if lone else [])  # fmt: skip
         for artist in (self.line, self.point, self.label):
             artist.set_visible(True)
 

@@ -86,6 +86,7 @@ class ProjectionArtists:
     curve_point: object = None
     steps: list = field(default_factory=list)
     top: float = 0.0  # the picture's top depth: the highlighted ray runs up to it
+    shows: bool = True  # False: the screen point at q only, not its ray or what it shows
 
     def update(self, q: float) -> float:
         """Highlight screen parameter ``q``; returns its world parameter t."""
@@ -94,8 +95,10 @@ class ProjectionArtists:
         (x, z) = self.segment.point(t)[0]
         s = float(self.segment.screen(q))
         far = self.top
-        self.ray.set_data([0.0, s * far], [0.0, far])
         self.screen_point.set_data([s], [1.0])
+        if not self.shows:  # a question asks where that ray lands: nothing answers it
+            return t
+        self.ray.set_data([0.0, s * far], [0.0, far])
         self.world_point.set_data([x], [z])
         self.affine_point.set_data(*self.segment.point(q).T)
         # two lines: over a picture at one scale in x and z (tall, narrow) one ran off it
@@ -120,7 +123,7 @@ def frame_of(segments) -> tuple[float, float, float]:
 
 
 def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: float = 0.5,
-                    curve_ax=None, frame=None) -> ProjectionArtists:  # fmt: skip
+                    curve_ax=None, frame=None, shows: bool = True) -> ProjectionArtists:  # fmt: skip
     """Draw eye, screen, segment and the rays of ``n_steps`` equal screen steps.
 
     Parameters
@@ -137,6 +140,10 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
         largest gap |t − q| as a bar at the q where it occurs.
     frame : (float, float, float), optional
         x from, x to and the top depth (:func:`frame_of`); default: the segment's own.
+    shows : bool
+        Draw the ray through the screen point at ``q`` and what it shows (the world point,
+        the affine guess, the title). False draws the screen point alone, for a question on
+        where its ray meets the segment (lesson 00): with ``n_steps=1`` nothing drawn answers it.
 
     Returns
     -------
@@ -147,23 +154,26 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     ts = segment.world_parameter(qs)
     pts, ss = segment.point(ts), segment.screen(qs)
     lo, hi, far = frame_of([segment]) if frame is None else frame
-    out = ProjectionArtists(segment, top=far)
+    out = ProjectionArtists(segment, top=far, shows=bool(shows))
     for x, z in pts:
         out.steps += ax.plot([0, x], [0, z], color=COLORS["grid"], lw=lw(0.3), zorder=1)
     ax.plot([lo, hi], [1, 1], color=COLORS["edge"], lw=lw(0.6), label="screen (z = 1)")
-    ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6),
-            label=f"{n_steps} equal steps of q")  # fmt: skip
+    steps = f"{n_steps} equal steps of q" if n_steps > 1 else "the ends' images"
+    ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6), label=steps)
     ax.plot(*pts.T, "-", color=COLORS["edge"], lw=lw(1.0), label="segment in the world")
     # above the large dot at t: at q = 0 or 1 that dot hid the end's own (review r77 04-4)
     ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), label="where those rays hit it", zorder=4)
     ax.plot([0], [0], "^", color=COLORS["edge"], ms=ms(1.3), label="eye")
-    (out.ray,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8), label="the ray at q")
+    # unlabelled when not shown: the key names only what is drawn
+    shown = {} if shows else {"label": "_hidden", "visible": False}
+    (out.ray,) = ax.plot([], [], color=COLORS["current"], lw=lw(0.8),
+                         **({"label": "the ray at q"} | shown))  # fmt: skip
     (out.screen_point,) = ax.plot([], [], "s", color=COLORS["current"], ms=ms(1.0),
                                   label="screen point q")  # fmt: skip
     (out.world_point,) = ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.3),
-                                 label="what it shows: t")  # fmt: skip
+                                 **({"label": "what it shows: t"} | shown))  # fmt: skip
     (out.affine_point,) = ax.plot([], [], "o", mfc="none", mec=COLORS["current"], mew=lw(0.5),
-                                  ms=ms(1.3), label="affine guess: t = q")  # fmt: skip
+                                  ms=ms(1.3), **({"label": "affine guess: t = q"} | shown))  # fmt: skip
     # text set by update(), size fixed here; from the left edge, as the key takes the right
     out.label = ax.set_title(" ", fontsize=fs(0.9), loc="left")
     ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")

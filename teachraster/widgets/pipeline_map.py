@@ -22,13 +22,13 @@ import numpy as np
 
 from ..core.edges import setup_edges
 from ..core.fill import rasterize
-from ..core.snapping import SUBPIXEL_BITS, UNIT_LIMIT, units_per_pixel
+from ..core.snapping import SUBPIXEL_BITS, units_per_pixel
 from ..core.triangle import Triangle
 from ..core.validate import as_finite, as_float, as_size
 from ..pipeline.geometry.clipping import INSIDE, classify
 from ..pipeline.geometry.viewport import to_window
 from ..pipeline.rendering.render_triangles import render
-from ..pipeline.rendering.stages import guard_band_reach
+from ..pipeline.rendering.stages import guard_band
 from ..plotting.pipeline_overview import PIPELINE_STAGES, lesson_number
 from ..plotting.style import VALUE_CMAP
 from .explorable import Explorable, esm_source
@@ -122,15 +122,15 @@ def tour_stages(xy=TOUR_XY, w=TOUR_W, u=TOUR_U, width: int = 16, height: int = 1
     # grey hid the navy u = 0 fragments, mid grey the grey u = 0.5 ones; cividis runs from
     # navy through grey to yellow, and white is farthest from all of it)
     colour[~frame.coverage] = CLEAR_COLOUR
-    # the guard band render clips this image with (not the clipper's default): its reach in
-    # window pixels, and the range where the fixed-point edge functions stay exact
-    guard, guard_px = guard_band_reach(width, height, SUBPIXEL_BITS)
+    # the guard band render clips this image with (not the clipper's default): the vertices
+    # are tested against it (lessons 05a and 10 give its size; the map says only that it is
+    # the simulator's own, review r241 S7)
+    guard = guard_band(width, height, SUBPIXEL_BITS)
     return {
         "width": width, "height": height, "near": near, "far": far,
         "clip": clip.tolist(), "u": list(map(float, u)), "w": list(map(float, w)),
         "inside": [bool(s == INSIDE) for s in classify(clip[None], guard)],
-        "guard": guard, "guardPx": guard_px,
-        "exactPx": UNIT_LIMIT / units_per_pixel(SUBPIXEL_BITS),
+        "guard": guard,
         "ndc": (clip[:, :3] / clip[:, 3:]).tolist(), "window": window.tolist(),
         "snapped": (setup.p[given] / units_per_pixel(SUBPIXEL_BITS)).tolist(),
         "area": float(setup.original_area2) / units_per_pixel(SUBPIXEL_BITS) ** 2 / 2,

@@ -6,11 +6,13 @@ import os
 import uuid
 
 import ipywidgets as widgets
+from matplotlib.patheffects import withStroke
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from ..core.validate import as_int, as_size
 from ..plotting import FillView, InterpolationView, plot_samples
+from ..plotting.common import fs
 from ..plotting.frames import encode_png, frame_rgba, render_group, step_texts
 from ..plotting.pages import page_data, player_fragment
 from .common import (
@@ -64,6 +66,10 @@ COMPARISON_HINT = (
     "the steps' place, to fit one screen; close it to step again."
 )
 COMPARISON_HINT_OPEN = "Both ways side by side: the comparison below."
+#: Added to the hint when the samples menu asks for more than one sample: the comparison
+#: keeps one sample per pixel (its title says so; review r241 S5: the caption pointed to it
+#: as if it showed the 72 pixels of the MSAA fill, not the 59 of one sample per pixel).
+COMPARISON_ONE_SAMPLE = "It shows the fill at one sample per pixel, the pixel centres."
 #: The comparison's width on screen at 1024 x 768 with JupyterLab's file browser open (CSS
 #: px): the output column (592) less the accordion's padding (review r20, 00 c14). Its text
 #: is sized to read 12 px there.
@@ -72,12 +78,72 @@ COMPARISON_SHOWN_PX = 556
 #: closed), where the comparison is scaled down by its height (COMPARISON_MAX_PX), not its
 #: width: its text is sized to read COMPARISON_CLASSROOM_PX there, as the lessons' own
 #: figures do, and its panels are COMPARISON_PANEL of comparison_axes' size to make room
-#: (review r225 FIG1: ticks and labels read 11-13 px beside the lesson's figures' 17).
+#: (review r225 FIG1: ticks and labels read 11-13 px beside the lesson's figures' 17; review
+#: r241 FIG1: at 20 px their digits were still 14-15 px tall, at 22 they are 16).
 CLASSROOM_COLUMN_PX = 920
-COMPARISON_CLASSROOM_PX = 20.0
+COMPARISON_CLASSROOM_PX = 22.0
 COMPARISON_PANEL = 0.8
-#: Inches the comparison's colour bars are moved away from their panels (their labels' room)
-BAR_SHIFT = 0.3
+#: Inches the comparison's colour bars are moved away from their panels: room for a vertex
+#: label beside a panel's side (:func:`labels_off_frames`; "v2" lay over a colour bar, reviews
+#: r225 and r241 FIG1)
+BAR_SHIFT = 0.5
+
+
+def tidy_comparison(view) -> None:
+    """The comparison's text, once raised to its classroom size (``readable_text``), given
+    the room it needs (review r241 FIG1): the first row's titles lifted above the column
+    labels, which grew with them; the first panel's row ticks without row 0, where the label
+    of a vertex near the top left stands ("0-v1"), as lesson 00's own error map does; the
+    vertex labels haloed, not boxed, and off the panels' frames (:func:`labels_off_frames`)."""
+    ax = view.axes[0]
+    ticks = ax.xaxis.get_ticklabels()[0].get_fontsize() if ax.xaxis.get_ticklabels() else 0.0
+    # above the title: the tick labels, the axis label, the ticks and their pads
+    pad = ticks + ax.xaxis.label.get_fontsize() + 20.0
+    for panel in view.axes[:2]:
+        title = panel.title
+        panel.set_title(title.get_text(), pad=pad, fontsize=title.get_fontsize(),
+                        fontweight=title.get_fontweight())  # fmt: skip
+    rows = [(y, t.get_text()) for y, t in zip(ax.get_yticks(), ax.get_yticklabels())]
+    kept = [(y, text) for y, text in rows if text != "0"]
+    if kept and len(kept) < len(rows):
+        ax.set_yticks([y for y, _ in kept], labels=[text for _, text in kept])
+    halo = [withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")]
+    for tri in view.triangles:
+        for label in tri.labels:
+            label.set_bbox(None)
+            label.set_path_effects(halo)
+    labels_off_frames(view)
+
+
+def labels_off_frames(view) -> None:
+    """Each vertex label of the comparison wholly inside its panel or wholly beside it, never
+    over its frame (review r241 FIG1: v1's box lay on the frame, and on the orange frame of
+    the panel in use): a label over a side moves out past it, one over the top or the bottom
+    moves in. Placed again after every update, which places the labels afresh."""
+    fig = view.fig
+    renderer = fig.canvas.get_renderer()
+    gap, points = 3.0, 72.0 / fig.dpi  # display pixels; points per display pixel
+    for tri in view.triangles:
+        ax = tri.outline.axes
+        ax.apply_aspect()  # the box a draw gives the equal-aspect panel, not the one it was given
+        frame = ax.get_window_extent(renderer)
+        for label in tri.labels:
+            if not label.get_visible():
+                continue
+            box = label.get_window_extent(renderer)
+            dx = dy = 0.0
+            # within a gap of a side counts as on it: a label touching the frame reads as
+            # crossing it
+            if box.x0 - gap < frame.x0 < box.x1 + gap:
+                dx = frame.x0 - gap - box.x1
+            elif box.x0 - gap < frame.x1 < box.x1 + gap:
+                dx = frame.x1 + gap - box.x0
+            if box.y0 - gap < frame.y0 < box.y1 + gap:
+                dy = frame.y0 + gap - box.y0
+            elif box.y0 - gap < frame.y1 < box.y1 + gap:
+                dy = frame.y1 - gap - box.y1
+            x, y = label.get_position()  # offset points from the vertex
+            label.set_position((x + dx * points, y + dy * points))
 
 
 def shown_samples(method: str, samples: str) -> str:
@@ -276,6 +342,7 @@ class FillPlayer(Holdable):
                 readable_text([*view.axes, *bars], profile=view.profile,
                               texts=[view.heatmap.note, *view.in_use], shown_px=shown,
                               min_px=px)  # fmt: skip
+            tidy_comparison(view)
             # a toggle changes the images, outlines and colour bars: the rest stays cached
             self._interp_blit = comparison_edit_blit(self.interp_view)
             self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
@@ -417,6 +484,8 @@ class FillPlayer(Holdable):
         comparison = getattr(self, "comparison", None)  # made after the first publish: closed
         opened = comparison is not None and comparison.selected_index is not None
         hint = COMPARISON_HINT_OPEN if opened else COMPARISON_HINT
+        if self._fill_key()[2] != ONE_SAMPLE:
+            hint = f"{hint} {COMPARISON_ONE_SAMPLE}"
         last = captions[-1].rstrip()
         end = "" if last.endswith((".", "!", "?")) else "."  # the step's text is a phrase
         return [*captions[:-1], f"{last}{end} {hint}"]
@@ -545,6 +614,7 @@ class FillPlayer(Holdable):
             self._publish(step.index)
         if self.interp_view is not None:
             self.interp_view.update(self.fill, draw=False)
+            labels_off_frames(self.interp_view)  # the update placed them afresh
             if change["owner"] is self.interpolation:
                 self.interp_view.highlight(self.interpolation.value)
                 self._interp_blit.invalidate()  # the highlight is in the background

@@ -19,12 +19,6 @@ export const STAGES = [
   ["blend", "blending", "colour → the colour target"],
 ];
 
-// a large number in plain digits, grouped by thousands (never in e-notation), with
-// `decimals` digits after the point
-export const digits = (x, decimals = 0) => {
-  const [whole, part] = x.toFixed(decimals).split(".");
-  return whole.replace(/\B(?=(\d{3})+(?!\d))/g, ",") + (part ? `.${part}` : "");
-};
 const num = (x, d = 4) => (x === null || x === undefined ? "–" : fmt(x, d));
 // clip coordinates, all to three decimals: 0.052632 beside 2.200 read as noise (review r225 S4)
 const dec3 = (x) => x.toFixed(3);
@@ -40,8 +34,8 @@ export function stageHtml(data, key) {
       return "<p>The vertex shader outputs clip coordinates (x, y, z, w) per vertex. The tour " +
         `triangle's are those of GL's perspective projection (near ${num(data.near)}, far ` +
         `${num(data.far)}; w is the depth along the viewing axis in front of the eye) and carry ` +
-        "the attribute s (lesson 00's name for it).</p><table>" +
-        row(["", "x", "y", "z", "w", "s"], true) +
+        "the attribute u (a texture coordinate, as lesson 04 names it).</p><table>" +
+        row(["", "x", "y", "z", "w", "u"], true) +
         vertexRows(data, (k) => [...data.clip[k].map(dec3), num(data.u[k])]) + "</table>";
     case "assembly":
       return "<p>Primitive assembly groups the vertices three by three, in the order given: " +
@@ -55,12 +49,9 @@ export function stageHtml(data, key) {
         "beyond a guard band that keeps every vertex within the range of the GPU's " +
         "fixed-point rasteriser, each GPU its own; the rasteriser's bounding box does the " +
         "rest (lesson 05a). " +
-        // the simulator's band, not a GPU's (review r225 S4), rounded: seven figures of
-        // guard_band_reach were noise in a tour; lessons 05a and 10 print it exactly
-        `This simulator's band is its own choice: here |x|, |y| ≤ G w with G ≈ ` +
-        `${digits(data.guard)}, which keeps this ${data.width} × ${data.height} window's ` +
-        `coordinates within about ${(data.guardPx / 1e6).toFixed(1)} million px, inside the ` +
-        `${digits(data.exactPx)} px where the integer edge functions of lesson 02 stay exact. ` +
+        // one sentence on the simulator's own band (review r241 S7: its numbers were package
+        // internals in a tour; lessons 05a and 10 print them)
+        "This simulator has a band of its own, sized in lessons 05a and 10. " +
         "The test, on the clip coordinates (before any divide):</p><table>" +
         row(["", "x", "y", "z", "w", "−w ≤ x, y, z ≤ w?"], true) +
         vertexRows(data, (k) => {
@@ -87,14 +78,14 @@ export function stageHtml(data, key) {
         "box the rasteriser tests.</p>";
     case "fragment":
       return "<p>The fragment shader runs once per fragment on the interpolated attributes: " +
-        "here s, perspective-correct (interpolating s/w and 1/w), mapped to a colour. It " +
+        "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
         "could write its own depth (<code>gl_FragDepth</code>) or discard the fragment, " +
         "which is why the depth test and the depth write logically come <i>after</i> it.</p>" +
-        "<p>Key: s = 0 dark blue, 0.5 grey, 1 yellow (cividis, the colour map every lesson " +
+        "<p>Key: u = 0 dark blue, 0.5 grey, 1 yellow (cividis, the colour map every lesson " +
         "uses for values); light grey: no fragment.</p>";
     case "depth":
       return `<p>Each fragment's depth, the window depth interpolated with the plain screen ` +
-        "weights (it is affine on the screen: no divide by w, unlike s), is compared with the " +
+        "weights (it is affine on the screen: no divide by w, unlike u), is compared with the " +
         `stored one (cleared to 1): nearer wins. ${data.passed} of ${data.fragments} ` +
         "fragments pass (nothing was drawn before). <b>Early-z</b> (dashed; GL 4.6 §14.9) runs this test " +
         "and the depth write before the shader, to skip hidden fragments: a conditional " +
