@@ -2747,7 +2747,7 @@ def test_04_r234_questions_explorer_surfaces_floor_and_words():
     assert "changes faster than the pixels" not in md and "above the Nyquist limit" in md
     assert ("exact everywhere only when all $w$ are equal, and along any line of constant $w$"
             in md)  # fmt: skip
-    assert "Lesson 00's tour showed this map already: $|\\Delta s|$" in md
+    assert "Lesson 00's tour showed this map already: $|\\Delta u|$" in md
     assert "where lesson 00's map is white" not in md and ns.view.marker.get_label() == (
         "largest |Δu|"
     )
