@@ -1,23 +1,18 @@
-"""Lesson 06's stated signs of numpy's times, measured: PASS/MISS per claim, never a test.
+"""The signs of numpy's times in lesson 06's study, measured: PASS/MISS per claim, never a test.
 
-Lesson 06 (*What accuracy costs*) says which way three of numpy's times go, with the reason:
-subdivided interpolation is slower than the exact divide at every N (the same array passes
-on its anchors, and more); incremental edge evaluation is slower than direct in every
-arithmetic (a cumulative sum besides the products). It also says that affine, which saves a
-few passes of many, is faster than perspective-correct but takes most of its time, nowhere near
-the cycle model's 2/39 (review r60 06-2: runs gave 0.77 to 0.86). The same per-pass reading
-explains the fill times the lesson does not show (its §4 prices the fills in operations only):
-a textured fill's time is mostly its uv interpolation, coverage a small part, and the two
-fills' coverages differ by far less than their operation counts (20x or more). Times are CPU time of this process, the
-fastest of interleaved rounds: waiting for a core is not counted (reviews r17 06-1..3, r20
-06-1..4; the lesson's study is timed the same way, ``bench.run(clock=time.process_time)``).
+Lesson 06 (*What accuracy costs*) prices its variants in operations and leaves the time of this
+simulator's numpy code to this script (review r238 S1: the time describes neither the Pentium
+nor a GPU). The claims, with the reason: subdivided interpolation is slower than the exact
+divide at every N (the same array passes on its anchors, and more); incremental edge
+evaluation is slower than direct in every arithmetic (a cumulative sum besides the products);
+affine, which saves a few passes of many, is faster than perspective-correct but takes most of
+its time, nowhere near the cycle model's ratio (review r60 06-2: runs gave 0.77 to 0.86). The
+same per-pass reading explains the fill times: a textured fill's time is mostly its uv
+interpolation, coverage a small part, and the two fills' coverages differ by far less than
+their operation counts (20x or more). Times are CPU time of this process, the fastest of
+interleaved rounds: waiting for a core is not counted (reviews r17 06-1..3, r20 06-1..4).
 Speed is a benchmark's business, not a test's: the suite only runs this script's smoke run
-(``--quick``), which checks that every claim is reported. The lesson does not state these
-signs as facts: it prints its own run's verdict on each of the three it reads, in the words of
-the claims below ("subdivided slower than the exact divide at every N: True", "affine faster
-than perspective-correct, but above half its time: True", "incremental edges slower than direct
-in every arithmetic: True"), and its text says when each prints True (reviews r80 D3, r152 10);
-this script measures the same signs over more rounds.
+(``--quick``), which checks that every claim is reported.
 
     python benchmarks/bench_lesson06_signs.py            # 9 rounds at the lesson's 256 px
     python benchmarks/bench_lesson06_signs.py --quick    # smoke run: 64 px, 2 rounds

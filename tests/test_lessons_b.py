@@ -38,15 +38,15 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     cyc, gpu = ns.cyc, ns.cyc_gpu
     assert cyc["perspective"] > 10 * cyc["affine"]
     assert cyc["affine"] < cyc["subdivided N=16"] < cyc["perspective"] / 5  # "buys most of it back"
-    # r228 C1: "at the Pentium's prices the divide is most of perspective-correct's cost, at
-    # the GPU's less than half"
+    # r238 S3 (r228 C1): at both price lists (a current GPU's reciprocal at 8) the divide is
+    # most of perspective-correct's cost for u and v alone; subdivision saves less at the GPU's
     from teachraster.study import operation_counts as ops
 
-    assert ops.PENTIUM_CYCLES["divides"] / cyc["perspective"] > 0.5
-    assert ops.GPU_CYCLES["divides"] / gpu["perspective"] < 0.5
-    assert "divide is most of perspective-correct's cost, at the GPU's less than half" in (
-        " ".join(ns.TIME_TEXT.split())
-    )
+    p5_share = ops.PENTIUM_CYCLES["divides"] / cyc["perspective"]
+    assert 0.5 < ops.GPU_CYCLES["divides"] / gpu["perspective"] < p5_share
+    said = " ".join(ns.PRICE_TEXT.split())
+    assert "at both, the divide is most of perspective-correct's cost for $u$ and $v$ alone" in said
+    assert "subdivision saves less" in said
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
     # "off by most of the texture" (review r7 06-3: not "hundreds" above a printed 209)
     from teachraster.study.bench import TEXELS
@@ -88,6 +88,100 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     assert all(e > 0 for e in extra) and extra == sorted(extra)
 
 
+def test_06_review_r238_the_law_the_floor_follows():
+    """Review r238 C1/C2: the text called the worst pixel's fall "close to the quadratic law"
+    after calling a similar fall of the mean a departure, and stated "N² / pixels across" for
+    the worst pixel, which the 1024² floor does not follow (4x the pixels cut it 2.1-2.7x). The
+    law the measurements support, with its reason: the mean on screen follows N² / pixels
+    across (about 4 per halving of N, 2 per doubling of the pixels), the worst pixel less (it
+    lies where w changes most across a piece); the your-turn's N = 8 follows from the 256² and
+    512² lines, and its checker prints the 1024² ones."""
+    import json
+    import textwrap
+
+    from teachraster.study import bench
+
+    ns = lesson("06_what_accuracy_costs")
+    assert 3.5 < min(ns.mean_px_cut) and max(ns.mean_px_cut) < 5.1  # the mean: about 4
+    assert 2.5 < min(ns.px_cut) and max(ns.px_cut) < 3.8  # the worst pixel: between 2 and 4
+    assert all(1.8 < v < 2.05 for v in ns.cut_mean.values())  # twice the pixels: the mean halves
+    assert all(1.1 < v < 1.9 for v in ns.cut_worst.values())  # the worst pixel's: less
+    text = " ".join(ns.QUAKE_TEXT.split())
+    assert "close to the quadratic law" not in text
+    for cut in (ns.mean_px_cut, ns.px_cut, ns.cut_mean.values(), ns.cut_worst.values()):
+        assert f"{min(cut):.1f} to {max(cut):.1f} times" in text, cut
+    assert (
+        "the mean error goes like $N^2$ divided by the pixels across, and the worst pixel's "
+        "more slowly, in $N$ and in the pixels across alike"
+    ) in text
+    assert f"up to $r = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
+    # the your-turn: 512²'s worst pixel cut once more as from 256² gives N = 8, as 1024² does
+    guess = {n: ns.worst_512[n] / ns.cut_worst[n] for n in bench.SUBDIVISIONS}
+    assert max(n for n, v in guess.items() if v < 1) == 8
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
+                           if raw["cell_type"] == "markdown").split())  # fmt: skip
+    assert "goes like N² / (pixels across)" not in " ".join(cells)
+    assert "every pixel is a quarter as wide" not in md
+    assert "On screen the mean error goes like $N^2$ divided by the pixels across" in md
+    checker = next(c for c in cells if "def check_longest_n(" in c)
+    scope = {"bench": bench, "textwrap": textwrap}
+    exec(checker, scope)  # as the student runs it, with my_n = None first
+    right, verdict = scope["check_longest_n"](8)
+    assert right and "less than the 2 of the square law" in verdict
+    assert not scope["check_longest_n"](16)[0] and not scope["check_longest_n"](4)[0]
+
+
+def test_06_review_r238_integer_prices_held_text_and_float32_bits():
+    """Review r238 F1: the exact span fill's crossings are integer divisions (IDIV 46, IMUL 9
+    on the P5), and q_fill's answer and choices follow from those prices; F2: fixed-point edge
+    functions priced on the Pentium's integer unit, no GPU column for them; S4: counts with
+    thousands separators; S5: no Markdown describes output still held (the edge table's
+    reading, the crack figure's key, the depth chart's lines are held with them); M2: float32
+    interpolation's error, printed and quoted."""
+    import json
+
+    from notebook_runs import executed
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    kinds = [c["cell_type"] for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, k in zip(cells, kinds) if k == "markdown").split())
+    # F1: the crossing exact in integers, priced so; q_fill from the printed prices
+    assert "A crossing is exact only in integers" in md and "lesson 01, §4b" in md
+    assert (ns.per_centre_q, ns.per_pixel_q, ns.per_crossing_q) == (11, 2, 46 + 9 + 1 + 2)
+    estimate = (
+        ns.per_centre_q
+        * ns.box256.size
+        / (ns.per_pixel_q * ns.covered256 + 2 * ns.lines256 * ns.per_crossing_q)
+    )
+    assert round(estimate, 1) == round(ns.fill_answer, 1) == 7.6
+    assert ns.fill_choices == ["about 3.7", "about 5.5", "about 7.6", "about 10.1"]
+    asked = next(c for c in cells if "q_fill = Predict(" in c).split("explain=")[0]
+    assert "P5I['divides']" in asked and "per_crossing_q" in asked and "§1" in asked
+    # F2: the edge table prices each arithmetic where it runs on the Pentium, and says so
+    assert "fixed-point ones on its integer unit" in md and "It has no `GPU` column" in md
+    # S4: whole counts in one piece, with separators
+    run = executed("06_what_accuracy_costs").notebook().cells
+    html = " ".join("".join(o.get("data", {}).get("text/html", "")) for c in run
+                    if c.cell_type == "code" for o in c.outputs)  # fmt: skip
+    assert ">2,438<" in html and ">2,324<" in html and "e+03" not in html and ">678,468<" in html
+    # S5: what reads held output is held with it, its source folded
+    for held, words in (("q_bits", "EDGE_TEXT = ("), ("q_rule", "In the figure, white squares"),
+                        ("q_depth", "CHART_TEXT = (")):  # fmt: skip
+        at = next(i for i, c in enumerate(cells) if words in c)
+        assert cells[at].startswith(f"{held}.hold()") and kinds[at] == "code", words
+        assert nb["cells"][at]["metadata"]["jupyter"]["source_hidden"], words
+    for shown in ("What the numbers say", "the `@1e6` column", "White squares are gaps",
+                  "In the depth chart", "window float64, the study's exact reference"):  # fmt: skip
+        assert shown not in md, shown
+    # M2: float32 perspective-correct interpolation, a fraction of a 1/256-texel step
+    assert 0 < ns.f32_worst < 1 / 256
+    assert "misses by a fraction of the texture unit's finest step, 1/256 texel" in md
+
+
 def test_06_doom_and_quake_in_a_sentence_each():
     """Review r146 12: the footprint, the error maps and the Doom/Quake paragraph were three
     more views of N = 16's error; the checkerboard stays, Doom and Quake keep a sentence each,
@@ -117,17 +211,20 @@ def test_06_review_r60_figures_say_what_they_draw():
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "What a GPU pays today" not in md and "Maxwell (2014)" in md and "Kepler (2012)" in md
-    # r80 D2: Pascal to Turing added from the guide's table (CUDA 10 edition); 8.x and later
-    # unchecked, so not quoted; "a sixth on Kepler, a quarter on the rest" is what it prints
+    # r80 D2: Pascal to Turing added from the guide's table (CUDA 10 edition); r238 S3: 8.x and
+    # 9.0 from the CUDA 12 edition's, the reciprocal at an eighth from 8.6 on (the price list's)
     from teachraster.study.operation_counts import NVIDIA_RATES
 
     assert list(NVIDIA_RATES) == ["Kepler (3.x, 2012)", "Maxwell (5.x, 2014)",
                                   "Pascal GP100 (6.0, 2016)", "Pascal (6.1, 2016)",
-                                  "Volta, Turing (7.x, 2017-18)"]  # fmt: skip
+                                  "Volta, Turing (7.x, 2017-18)", "Ampere A100 (8.0, 2020)",
+                                  "Ampere GA10x (8.6, 2020)", "Ada (8.9, 2022)",
+                                  "Hopper (9.0, 2022)"]  # fmt: skip
     rates = [fma / rcp for fma, rcp in NVIDIA_RATES.values()]
-    assert rates == [6, 4, 4, 4, 4] and "Pascal (2016) and Volta and Turing (2017–18)" in md
-    assert "the rows of Ampere and later are not quoted here" in md
-    assert not any(k.startswith(("Ampere", "Ada", "Hopper")) for k in NVIDIA_RATES)
+    assert rates == [6, 4, 4, 4, 4, 4, 8, 8, 8]
+    assert "Pascal (2016), Volta and Turing (2017–18) and the A100 (2020)" in md
+    assert "an eighth on Ampere's GA10x (2020), Ada and Hopper (2022)" in md
+    assert "§1's GPU list is that eighth" in md and "not quoted here" not in md
     # r102 06-2: the checkerboard's vermillion marks have a key in the figure itself
     checker = next(
         "".join(c["source"]) for c in nb["cells"] if "def draw_checks(" in "".join(c["source"])
@@ -146,10 +243,14 @@ def test_06_edge_table_gaps_and_incremental_lists():
     edges = [r for r in ns.rows if r["group"] == "edge functions"]
     # "the gaps and double columns of the edge-function table are 0 in every row"
     assert all(r["gaps"] == 0 and r["double_hits"] == 0 for r in edges)
-    # the edge chart's front is one point (no step line): cheapest and exact
-    from teachraster.study import bench
-
-    assert [r["variant"] for r in bench.pareto_front(edges, x="cycles")] == ["fixed8 incremental"]
+    # r238 F2: at the Pentium's prices fixed point runs on its integer unit (IMUL 9, 64-bit
+    # sums ADD + ADC): dearer than the FPU's floats for the same operations, as EDGE_TEXT says
+    assert ns.edge_cycles == {"fixed8": [66, 6], "float64": [21, 3]}
+    said = " ".join(ns.EDGE_TEXT.split())
+    assert (
+        "cost 66 issue cycles evaluated directly and 6 stepped, against float64's 21 and 3" in said
+    )
+    assert "Exact integers cost nothing extra" not in said
     # every table prints each variant's spread (review r25 06-3: numpy's time front is gone)
     for r in ns.rows:
         assert r["time_min_s"] <= r["time_median_s"] <= r["time_max_s"]
@@ -215,8 +316,9 @@ def test_06_edge_bits_and_depth_claims():
     assert np.isclose(ns.floor_w.max() / ns.floor_w.min(), 100)  # "w grows a hundredfold"
     # review r28 06-2: both loops counted alike (loop work per visited pixel and line): "several
     # times", growing with the triangle towards the printed limit
-    assert 4 < ns.fill_ratio["256²"] < ns.fill_ratio["512²"] < ns.fill_limit < 10, ns.fill_ratio
-    assert (ns.per_centre, ns.per_pixel) == (8, 2)
+    assert 4 < ns.fill_ratio["256²"] < ns.fill_ratio["512²"] < ns.fill_limit < 12, ns.fill_ratio
+    # r238 F1: priced on the Pentium's integer unit (11 cycles a box centre: its 64-bit steps)
+    assert (ns.per_centre, ns.per_pixel) == (11, 2)
     # review r53 06-12: the stepped span table priced, "close to the limit already at 256²";
     # review r135 06-1: stepped exactly (quotient, remainder, the compare for the carry: 3
     # additions per crossing), not one addition, which is exact in neither floats nor fixed point
@@ -234,7 +336,10 @@ def test_06_edge_bits_and_depth_claims():
     )
     assert "fixed-point loop" not in ns.FILL_TEXT
     assert "to stay a tie rule" not in ns.FILL_TEXT
-    assert "computes each crossing afresh, a divide per line, so that no rounding" in ns.FILL_TEXT
+    assert (
+        "computes each crossing afresh, an integer multiply and divide per crossing, so that no"
+        in (" ".join(ns.FILL_TEXT.split()))
+    )
     # review r135 06-2: the tie rule, not the cost of the arithmetic (floats can crack a mesh)
     assert ns.TIE_TEXT.startswith(
         "What cracks a mesh is an inconsistent **tie rule**, not the cost of the arithmetic."
@@ -258,8 +363,7 @@ def test_06_has_no_appendix_and_says_the_time_signs_once():
     assert not any(c.startswith("## Appendix") for c in cells)
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
                            if raw["cell_type"] == "markdown").split())  # fmt: skip
-    assert "a division by the piece's length" not in md
-    assert " ".join(ns.TIME_TEXT.split()).count("a division by the piece's length") == 1
+    assert "a division by the piece's length" not in md  # r238 S1: the time is the benchmark's
     assert "prints True when" not in md and "appendix" not in md.lower()
     # r152: the cast (old appendix A) stood only in the summary, with nothing behind it: gone
     assert "`fistp`" not in md
@@ -268,7 +372,7 @@ def test_06_has_no_appendix_and_says_the_time_signs_once():
     assert "both making the divide cheaper" not in md and "shrinks the divide's *share*" in md
     assert "0, or at rounding level (perspective-correct's 1e-13)" in md
     assert "would be off. Store it so anyway" not in " ".join(cells)
-    assert "lesson 03 shows drift along a 4096-pixel row" in md
+    assert "lesson 03 shows drift along a 4096-pixel row" in " ".join(ns.EDGE_TEXT.split())
 
 
 def test_06_every_gap_and_double_is_drawn_above_the_mesh():
@@ -293,18 +397,17 @@ def test_06_every_gap_and_double_is_drawn_above_the_mesh():
     assert ns.cracks["E > 0"]["gaps"] == ns.cracks["E >= 0"]["double_hits"] == 38
 
 
-def test_06_reads_its_times_by_what_the_timer_includes():
-    """Review r17 06-1..8, r20 06-1..4: the text says what numpy's timers include and states
-    no sign of a time (the signs are measured by benchmarks/bench_lesson06_signs.py: a
-    benchmark, not a test). r228 S1: the measured time stays (the course shows what accuracy
-    costs in time) as one column per table beside the two price lists, said plainly to time
-    this simulator on a CPU; the lines of time ratios read as findings, the booleans and the
-    paragraph on array passes are gone. S6: what reads those columns is held with them."""
+def test_06_leaves_the_simulators_time_to_its_benchmark():
+    """Review r17 06-1..8, r20 06-1..4: the text states no sign of a time (the signs are
+    measured by benchmarks/bench_lesson06_signs.py: a benchmark, not a test). r228 S1, r238 S1
+    and FIG1: the numpy columns, the "numpy:" line and the paragraph on array passes timed the
+    simulator, not a machine, and pushed the interpolation table past the notebook column: gone,
+    the introduction says where the time is measured. FIG1: the interpolation table keeps eight
+    columns, its numbers in one piece (1e-13, not a wrapped 1.42e-13); F2: the edge table has no
+    GPU column (a GPU evaluates edge functions in fixed-function hardware)."""
     import json
 
     from notebook_runs import executed
-
-    from teachraster.study import bench
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -314,34 +417,27 @@ def test_06_reads_its_times_by_what_the_timer_includes():
     code = "".join(c for c, raw in zip(cells, nb["cells"]) if raw["cell_type"] == "code")
     assert "span loop in Python" not in md and "core/span_tables.py" not in md
     assert "*textured* fill" not in md and "ratio's side of 1" not in md
-    # the times are the kernel's CPU time, the fastest of interleaved rounds, and the held text
-    # under the table says so, and what they time: the simulator, not a GPU or a Pentium
-    assert "clock=time.process_time" in code and "ROUNDS = 5" in code and "ratio(" in code
-    said = " ".join(ns.TIME_TEXT.split())
-    assert "times **this simulator, not a rasteriser**" in said
-    assert "on the computer running this notebook" in said and "coverage included" in said
-    assert (
-        "(the fastest of five rounds, waiting for a core not counted; "
-        "`python ../benchmarks/bench_lesson06_signs.py` measures the same way"
-    ) in said
-    assert "The `Pentium` and `GPU` columns are what each machine pays per pixel" in said
-    at = next(i for i, c in enumerate(cells) if "TIME_TEXT = (" in c)
-    assert cells[at].startswith("q_quake.hold()") and "display(Markdown(TIME_TEXT))" in cells[at]
-    # nothing visible reads the held lines or states a sign of a time (r228 S6)
-    for gone in ("prints True when", "subdivided slower than the exact divide",
-                 "The times measure the simulator", "incremental edges slower", "says whether"):  # fmt: skip
+    for gone in ("numpy ms", "numpy_ms", "TIME_TEXT", "time_ratio", "prints True when",
+                 "subdivided slower than the exact divide", "(beside them) time"):  # fmt: skip
         assert gone not in md and gone not in code, gone
-    assert "only §1 and §2 print its times" not in md and "§1 and §2 print that time" in md
-    # the time beside both prices, in the tables of §1 and §2
+    assert (
+        "`python ../benchmarks/bench_lesson06_signs.py`" in md and "describes neither machine" in md
+    )
     run = executed("06_what_accuracy_costs").notebook().cells
     shown = ["".join(o.get("data", {}).get("text/html", "")) for c in run if c.cell_type == "code"
              for o in c.outputs]  # fmt: skip
-    for heading in ("interpolation, operations per pixel", "edge functions, operations per pixel"):
-        (html,) = [h for h in shown if heading in h]
-        assert all(f"<th>{h}</th>" in html for h in ("Pentium", "GPU", "numpy ms")), heading
-    assert set(ns.time_ratio) == set(bench.SUBDIVISIONS)
+    (interp,) = [h for h in shown if "interpolation, operations per pixel" in h]
+    (edges,) = [h for h in shown if "edge functions, operations per pixel" in h]
+    heads = ["variant", "error", "px", "div", "mul", "add", "Pentium", "GPU"]
+    assert interp.count("<th>") == len(heads) and all(f"<th>{h}</th>" in interp for h in heads)
+    assert "<th>Pentium</th>" in edges and "<th>GPU</th>" not in edges and "numpy" not in edges
+    assert ">1e-13<" in interp and "1.42e-13" not in interp and "white-space:nowrap" in interp
+    # the divides the spans ran, beside the model's 1/N, printed under the table
+    printed = " ".join(o.get("text", "") for c in run if c.cell_type == "code" for o in c.outputs)
+    assert "divides per pixel the spans ran (the model: 1/N)" in printed
+    assert 'the line "divides per pixel the spans ran"' in md
     # 06-5, 06-6: N is the subdivision length only; the ratio printed is for N doubling
-    assert "N(x)/D(x)" not in md + code and "P(x)/Q(x)" in code  # in QUAKE_TEXT (r128 06-1)
+    assert "N(x)/D(x)" not in md + code
     assert "when N halves:" not in code and "mean error at N / at N/2" in code
     # 06-7 (r17, r19): the Try it asks nothing the lesson printed above it
     assert "explain why the front keeps its order" not in md and "costs half of what" not in md
@@ -384,10 +480,10 @@ def test_06_divide_cost_slider_reprices_the_front():
         assert "cycles" in ex.info.value and "additions" not in ex.info.value
         assert ex.ax.get_xlabel() == "issue cycles per pixel (Pentium prices)"
         # r228 C1: the GPU's prices are §1's GPU list, the lesson's one GPU model
-        ex.prices.value = "GPU (Maxwell to Turing)"
-        assert ex.divide.value == GPU_CYCLES["divides"] == 4
+        ex.prices.value = "GPU (Ampere GA10x, Ada, Hopper)"
+        assert ex.divide.value == GPU_CYCLES["divides"] == 8  # r238 S3: a current GPU's
         assert ex.ax.get_xlabel() == "issue cycles per pixel (GPU prices)"
-        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 4.0, multiply=1.0)}
+        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 8.0, multiply=1.0)}
         assert f"<b>{gpu['perspective'] / gpu['affine']:.3g}×</b>" in ex.info.value
         assert gpu["perspective"] == pytest.approx(ns.cyc_gpu["perspective"])
     finally:
@@ -408,15 +504,15 @@ def test_06_divide_cost_slider_reprices_the_front():
     # the Pentium's prices, u and v: r48; d + 5 and 2 + (d + 9) / N at the GPU's)
     fronts = ns.front_at
     assert (ns.p0, ns.a0, ns.s0, ns.d2) == (7, 2, 13, 3)  # printed by the cell, read in the text
-    assert ns.closed["GPU (Maxwell to Turing)"] == (5, 2, 9, 3)
+    assert ns.closed["GPU (Ampere GA10x, Ada, Hopper)"] == (5, 2, 9, 3)
     assert "N=2" not in fronts[1] and fronts[1] == fronts[2]
-    assert fronts[2] == [v for v in fronts[4] if v != "N=2"]
+    assert fronts[2] == [v for v in fronts[8] if v != "N=2"]
     # r10 06-2, c25: the toggle's mean error keeps the front and its order; subdivision's mean
     # is a small fraction of its max, affine's is not
     assert ns.front_mean == fronts[d_p5]
     ratio = {v: mx / mean for v, (mx, mean) in ns.err.items() if v in ("affine", "N=16", "N=2")}
     assert ratio["affine"] < 2 and 100 < ratio["N=16"] < ratio["N=2"]
-    assert all(fronts[d] == fronts[4] for d in (4, d_p5, 128))
+    assert all(fronts[d] == fronts[8] for d in (8, d_p5, 128))
     for d in (1, 4, 128):
         priced_rows = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, float(d))}
         assert priced_rows["perspective"] == pytest.approx(d + 7)
@@ -515,7 +611,7 @@ def test_06_review_r128_q_quake_held_and_wording():
     assert next(i for i, c in enumerate(cells) if "q_quake = Predict(" in c) < at
     price = next(c for c in cells if "q_price = PredictOrder(" in c).split("explain=")[0]
     # r146: at a GPU's price, not a limit case below a multiply's; r228 C1: §1's GPU list
-    assert "Price the operations as a GPU does, §1's second list" in price
+    assert "Price the operations as a GPU does, §1's GPU list" in price
     assert "limit case" not in price and "ops.GPU_CYCLES" in price
     fill = next(c for c in cells if c.startswith("q_fill.hold()  # its output"))
     assert "ratio(hp, sp" not in fill and "fastest(" not in fill and "in this run" not in fill
@@ -539,7 +635,7 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     cells = ["".join(c["source"]) for c in nb["cells"]]
     kinds = [c["cell_type"] for c in nb["cells"]]
     for name, held, words in (("q_rule", "TIE_TEXT", "only the rule decides who draws it"),
-                              ("q_fill", "FILL_TEXT", "So the ratio tends to 8 / 2")):  # fmt: skip
+                              ("q_fill", "FILL_TEXT", "So the ratio tends to 11 / 2")):  # fmt: skip
         asked = next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
         at = next(i for i, c in enumerate(cells) if f"{held} = (" in c)
         meta = nb["cells"][at]["metadata"]
@@ -569,7 +665,7 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
     # multiply and an addition 1: NVIDIA's rates), the one GPU model of the lesson
     from teachraster.study.operation_counts import GPU_CYCLES
 
-    assert (ns.GPU_DIVIDE, ns.GPU_ATTRIBUTES) == (4, 16) and GPU_CYCLES["multiplies"] == 1
+    assert (ns.GPU_DIVIDE, ns.GPU_ATTRIBUTES) == (8, 16) and GPU_CYCLES["multiplies"] == 1
     assert [v.replace("subdivided ", "") for v in ns.price_order] == [
         v for v in ns.order_at[1] if v in ("affine", "N=16", "N=4", "perspective", "N=2")
     ]
@@ -593,8 +689,8 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
 def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     """Review r118 06-1: the held headline said the front did not change, while its own text
     and the printed fronts had N = 2 off it at d = 1 and 2. It says what the printed "front:"
-    lines show: the same order at every price, N = 2 off at d = 1, 2 and on at 4, 17, 128
-    (r228: the GPU's and the Pentium's divide among them)."""
+    lines show: the same order at every price, N = 2 off at d = 1, 2 and on at 8, 17, 128
+    (r228: the GPU's and the Pentium's divide among them; r238 S3: a current GPU's 8)."""
     import json
     import re
 
@@ -604,7 +700,7 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     printed = streams(executed("06_what_accuracy_costs").notebook())
     fronts = {int(d): f.split(" -> ") for d, f in re.findall(
         r"divide = +(\d+): front (.*)\n", printed)}  # fmt: skip
-    assert fronts == ns.front_at and sorted(fronts) == [1, 2, 4, 17, 128]
+    assert fronts == ns.front_at and sorted(fronts) == [1, 2, 8, 17, 128]
     off = [d for d, f in fronts.items() if "N=2" not in f]
     assert off == [1, 2] and ns.d2 == 3  # "off it at d = 1 and d = 2", "d <= 3"
     for d, front in fronts.items():  # the others on it at every price, in one order
@@ -614,7 +710,7 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     assert "the front keeps its order at every price and loses only $N = 2$" in text
     assert "not the front" not in text
     assert 'off it at $d = 1$ and $d = 2$ (their lines end "N=4 -> perspective")' in text
-    assert "on it again at $d = 4, 17$ and 128" in text
+    assert "on it again at $d = 8, 17$ and 128" in text
     # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
     assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
     # r228: at the Pentium's prices, for 4 pixels "more per pixel than the divide itself"
@@ -739,10 +835,10 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     # review r53 06-2/06-3: one chart in §6; the walk only where the front has several points
     assert "interpolation's chart is the slider's widget" in md
     assert list(ns.fronts) == ["interpolation"] and len(ns.fronts["interpolation"]) > 1
-    assert "It is not exact by construction" not in md and "known in advance" in md
+    assert "It is not exact by construction" not in md and "known in advance" in ns.EDGE_TEXT
     assert "Quake used $N = 16$" not in md and "portable C version $N = 8$" in md
-    assert "`python ../benchmarks/bench_lesson06_signs.py`" in ns.TIME_TEXT
-    assert "slide 21" in md and "*Triangle Rasterisation II - Interpolation*" in md
+    assert "`python ../benchmarks/bench_lesson06_signs.py`" in md  # r238 S1: the intro's
+    assert "slide 21" in md and "*Triangle Rasterisation II - Interpolation*" in ns.EDGE_TEXT
 
 
 def test_06_review_r23_tables_fit_and_wording():
@@ -777,7 +873,8 @@ def test_06_review_r23_tables_fit_and_wording():
     assert "share shrinks like $1/k$" not in md and "$d/k$, falling like $1/k$" in ns.FRONT_TEXT
     assert "tens of texels" not in md and "over a hundred texels" not in md
     assert "The two naive rules fail on exactly the same centres" not in md
-    assert "Direct3D's 16.8 fixed point" in md and "needs 51" not in md
+    # r238 S5: the paragraphs that read §2's table are held with it (EDGE_TEXT)
+    assert "Direct3D's 16.8 fixed point" in ns.EDGE_TEXT and "needs 51" not in md + ns.EDGE_TEXT
     # r37 06-3: 49 is q_bits' answer, in the summary only (far below), not the text under it
     assert "needs 49 bits" not in md and "needs 49, E being twice a triangle's area" in md
     assert "needs 50" not in md and "50 counted term by" in md
@@ -785,8 +882,8 @@ def test_06_review_r23_tables_fit_and_wording():
     # repeated
     for name in ("OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"):
         assert md.count(f"| {name} |") == 0, name
-    assert "`subPixelPrecisionBits`" in md and "lesson 02 §5 tabulates" in md
-    assert "Lesson 05b (§2) lists the formats" in md and "`MAX_FIXED_LENGTH32`" in md
+    assert "`subPixelPrecisionBits`" in ns.EDGE_TEXT and "lesson 02 §5 tabulates" in ns.EDGE_TEXT
+    assert "Lesson 05b (§2) lists the formats" in md and "`MAX_FIXED_LENGTH32`" in ns.EDGE_TEXT
 
 
 def test_06_review_r37_a_prediction_in_every_section():
@@ -816,7 +913,7 @@ def test_06_review_r37_a_prediction_in_every_section():
         return next(i for i, c in enumerate(cells) if f"{name} = Predict" in c)
 
     answers = {"q_bits": f"{2**ns.fits4:,}", "q_fill": f"{ns.fill_answer:.1f}",
-               "q_depth": str(ns.lin32["slanted_wrong"])}  # fmt: skip
+               "q_depth": f"{ns.lin32['slanted_wrong']:,}"}  # fmt: skip
     for name in ("q_bits", "q_rule", "q_fill", "q_depth"):
         i = asked_at(name)
         # the cell right after the question is held on it; the Markdown just before says nothing
@@ -857,7 +954,8 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert (
         len(set(ns.fill_choices)) == 4 and f"about {ns.fill_ratio['256²']:.1f}" in ns.fill_choices
     )
-    assert ns.fill_per_pixel_only == 4.0  # 8 against 2: the slip of ignoring box and lines
+    # 11 against 2 (r238 F1: the integer unit's prices): the slip of ignoring box and lines
+    assert ns.fill_per_pixel_only == 5.5
     # q_depth: linear float32 misses no facing pixel and many crossing ones, as float64 does
     assert ns.lin32["facing_wrong"] == 0 < ns.lin32["slanted_wrong"] == ns.lin64["slanted_wrong"]
     # r113 06-3: q_depth asks the crossing count in float32 against float64 (as many: the
@@ -982,7 +1080,7 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
         )
         for value, verdict in [(v, True) for v in right] + [(v, False) for v in wrong]:
             scope = dict(tr=tr, bench=bench, ops=ops, fixed_point=fixed_point, Predict=Predict,
-                         np=np, uv_ground_truth=uv_ground_truth,
+                         np=np, uv_ground_truth=uv_ground_truth, P5I=ops.PENTIUM_INTEGER_CYCLES,
                          row=lambda g, v: by_name[(g, v)])  # fmt: skip
             exec(src, scope)  # the question cell, as the lesson runs it
             q = scope[name]
@@ -4287,7 +4385,7 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
     assert ops.PENTIUM_X87 == {"FADD": (3, 1), "FMUL": (3, 2), "FDIV single": (19, 17),
                                "FDIV double": (33, 31), "FDIV extended": (39, 37)}  # fmt: skip
     assert ops.PENTIUM_CYCLES == {"divides": 17, "multiplies": 2, "additions": 1}
-    fma, rcp = ops.NVIDIA_RATES["Maxwell (5.x, 2014)"]
+    fma, rcp = ops.NVIDIA_RATES[ops.GPU_NOW]  # r238 S3: a current GPU's, Ada's
     assert ops.GPU_CYCLES == {"divides": fma / rcp, "multiplies": 1, "additions": 1}
     assert PRICES is ops.PRICES and list(PRICES.values()) == [ops.PENTIUM_CYCLES, ops.GPU_CYCLES]
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -4301,8 +4399,8 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
     assert "ops.GPU_CYCLES" in next(c for c in cells if "q_price = PredictOrder(" in c)
     assert 'ops.PENTIUM_X87["FDIV extended"][1]' in md  # the Try it reads the table
     # the text names its sources and the numbers it quotes are printed
-    for source in ("Agner Fog's Pentium tables", "`Sys_LowFPPrecision`", "`R_RenderView_`",
-                   "*CUDA C Programming Guide*'s throughput table"):  # fmt: skip
+    for source in ("Agner Fog's measured tables", "`Sys_LowFPPrecision`", "`R_RenderView_`",
+                   "*CUDA C++ Programming Guide*'s throughput table"):  # fmt: skip
         assert source in md, source
     printed = streams(executed("06_what_accuracy_costs").notebook())
     for line in ("FADD             3 cycles, the next can start after 1",
@@ -4310,10 +4408,18 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
                  "FDIV single     19 cycles, the next can start after 17",
                  "FDIV extended   39 cycles, the next can start after 37",
                  "Maxwell (5.x, 2014)           128   32: the reciprocal at 1/4 of the rate",
-                 "Pentium (P5)             divide 17, multiply 2, addition 1",
-                 "GPU (Maxwell to Turing)  divide 4, multiply 1, addition 1"):  # fmt: skip
+                 "Ada (8.9, 2022)               128   16: the reciprocal at 1/8 of the rate",
+                 "Pentium (P5) x87: divide 17, multiply 2, addition 1",
+                 "Pentium (P5) integer: divide 46, multiply 9, addition 1, 64-bit addition 2",
+                 "GPU (Ampere GA10x, Ada, Hopper): divide 8, multiply 1, addition 1"):  # fmt: skip
         assert line in printed, line
-    assert "a divide 17 at single precision" in md and "a divide (one reciprocal) 4" in md
+    assert "a divide 17 at single precision" in md and "a divide (one reciprocal) 8" in md
+    # r238 S2: the sources are what they are (Agner Fog is no vendor); an FDIV holds the FPU
+    assert (
+        "vendors' throughput tables" not in md
+        and "before it can start the next of its kind" not in md
+    )
+    assert "An FDIV holds the whole FPU for those 17" in md
 
 
 def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
@@ -4345,7 +4451,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     assert f"{n16['error_px']:.1f} px away, the mean one {n16['mean_error_px']:.2f} px" in shown
     quake = " ".join(ns.QUAKE_TEXT.split())
     assert "**Texels or pixels.**" in quake and "off the screen" in quake
-    assert 2.5 < min(ns.px_cut.values()) and max(ns.px_cut.values()) < 4  # "close to quadratic"
+    assert 2.5 < min(ns.px_cut) and max(ns.px_cut) < 4  # r238 C1: "between 2 and 4", printed
     assert [ax.get_title() for ax in ns.err_axes] == ["in the texture", "on screen"]
     # the Your turn: asked after §1, before any 1024² number is printed; 8 is right, its
     # neighbours are not; Run All leaves it waiting for an answer
@@ -4357,7 +4463,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         (4, False),
         (16, False),
     ):  # the check cell, as a student runs it
-        scope = {"bench": bench}
+        scope = {"bench": bench, "textwrap": __import__("textwrap")}
         exec(cells[at + 1].replace("my_n = None", f"my_n = {answer}"), scope)
         assert scope["my_right"] is right, answer
     # reverse-Z: in the table, on the chart's floor, in the text and the summary
@@ -4367,19 +4473,20 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     assert "**Reverse-Z** spends the same 32 bits" in next(
         c for c in cells if "dz_far['reversed']" in c and "display(" in c
     )
-    assert "float32 with reverse-Z is the one to choose" in md and "`reversed float32`" in md
+    assert "float32 with reverse-Z is the one to choose" in md
+    assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
     assert "reversed" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
     assert ns.f32_vs_f4[1_000_000] == 0 < ns.f32_vs_f4[100_000] < ns.f32_vs_f4[0] + 1
     assert (
         "mesh pixels where float32 and fixed4 (direct) differ: @0 138, @1e5 128, @1e6 0"
         in (printed)
-        and "float32 *is* 4-bit sub-pixel fixed point there" in md
+        and "float32 *is* 4-bit sub-pixel fixed point there" in ns.EDGE_TEXT
     )
     assert "20 of its 24 bits for the whole pixels, 4 for the fraction" in printed
     # S3: fixed4 differs from the 1/256 reference, it is not "wrong"; S4: no nested aside
-    assert "differ from the 1/256 px reference (Direct3D's grid) everywhere" in md
-    assert "wrong pixels everywhere, but consistently" not in md
+    assert "differ from the 1/256 px reference (Direct3D's grid) everywhere" in ns.EDGE_TEXT
+    assert "wrong pixels everywhere, but consistently" not in md + ns.EDGE_TEXT
     assert "(in floats, and as a fixed-point fraction too:" not in ns.FILL_TEXT
     # FIG1: the explorer's status line at the axis labels' size, a short caption
     from teachraster.widgets.divide_cost import CAPTION_PX, STATUS_PX, DivideCostExplorer

@@ -23,7 +23,7 @@ def test_interpolation_counts_follow_the_formulas():
 def test_interpolation_prices_u_and_v():
     """Review r48 06-D1: the study measures the uv error, so the model prices both texture
     coordinates (k = 2) sharing one reciprocal: d + mk + (k + 1) cycles, 24 at the Pentium's
-    prices (r228 F1: its issue intervals), 12x affine's 2; 9 at the GPU's."""
+    prices (r228 F1: its issue intervals), 12x affine's 2; 13 at a current GPU's (r238 S3)."""
     for prices in (ops.PENTIUM_CYCLES, ops.GPU_CYCLES):
         d, m = prices["divides"], prices["multiplies"]
         for k in (1, 2, 16):
@@ -34,22 +34,28 @@ def test_interpolation_prices_u_and_v():
                 sub = ops.cycles(ops.interpolation_count(f"subdivided N={n}", k), prices)
                 assert sub == pytest.approx(k + (d + m * 2 * k + 2 * k + 1) / n)
     assert ops.cycles(ops.interpolation_count("perspective")) == 24
-    assert ops.cycles(ops.interpolation_count("perspective"), ops.GPU_CYCLES) == 9
+    assert ops.cycles(ops.interpolation_count("perspective"), ops.GPU_CYCLES) == 13
 
 
 def test_the_price_lists_are_read_from_their_tables():
     """Review r228 C1/F1: the Pentium's weights are its x87 issue intervals (Agner Fog's
     tables: FADD, FMUL 3 cycles, FDIV 19/33/39, the last 2 overlapping the next
     floating-point instruction; an FMUL not in the cycle after another), FDIV at single
-    precision; the GPU's are NVIDIA's throughput rows, the reciprocal at a quarter of the
-    multiply-add rate from Maxwell to Turing (a sixth on Kepler)."""
+    precision. r238 S3: the GPU's are NVIDIA's throughput rows for the current GPUs (8.6 to
+    9.0), the reciprocal at an eighth of the multiply-add rate there, a quarter from Maxwell
+    to Turing and on the A100 (a sixth on Kepler). r238 F1/F2: the Pentium's integer unit
+    prices integer work: IMUL r32 9, IDIV r32 46 (DIV 41), a 64-bit addition ADD + ADC."""
     for name, (cycles, issue) in ops.PENTIUM_X87.items():
         assert issue == (2 if name == "FMUL" else cycles - 2), name
     assert ops.PENTIUM_CYCLES == {"divides": 17.0, "multiplies": 2.0, "additions": 1.0}
-    quarter = [g for g, (fma, rcp) in ops.NVIDIA_RATES.items() if fma == 4 * rcp]
-    assert quarter == list(ops.NVIDIA_RATES)[1:] and ops.GPU_CYCLES["divides"] == 4
+    assert ops.PENTIUM_INTEGER == {"ADD": 1, "IMUL r32": 9, "DIV r32": 41, "IDIV r32": 46}
+    assert ops.PENTIUM_INTEGER_CYCLES == {"divides": 46.0, "multiplies": 9.0, "additions": 1.0,
+                                          "wide additions": 2.0}  # fmt: skip
+    ratio = {g: fma // rcp for g, (fma, rcp) in ops.NVIDIA_RATES.items()}
+    assert list(ratio.values()) == [6, 4, 4, 4, 4, 4, 8, 8, 8]
+    assert ratio[ops.GPU_NOW] == 8 == ops.GPU_CYCLES["divides"]
     assert ops.GPU_CYCLES["multiplies"] == ops.GPU_CYCLES["additions"] == 1  # one FMA pipe
-    assert list(ops.PRICES) == ["Pentium (P5)", "GPU (Maxwell to Turing)"]
+    assert list(ops.PRICES) == ["Pentium (P5)", "GPU (Ampere GA10x, Ada, Hopper)"]
 
 
 def test_edge_counts_and_bits():
@@ -58,6 +64,13 @@ def test_edge_counts_and_bits():
     assert ops.edge_count("float32 direct").bits == 24 < ops.edge_bits_needed(512, 1e6)
     assert ops.edge_count("fixed8 direct").bits >= ops.edge_bits_needed(2048, 1e6)
     assert ops.edge_bits_needed(16, 1_000_000) == 29  # the position dominates (20 + 8 + sign)
+    # r238 F2: the same operations, priced as each arithmetic runs on the Pentium: fixed point
+    # on its integer unit (6 IMULs, 6 32-bit and 3 64-bit additions), floats on its FPU
+    assert direct.integer and direct.wide == inc.wide == 3
+    assert ops.cycles(direct) == 6 * 9 + 6 * 1 + 3 * 2 == 66 and ops.cycles(inc) == 6
+    floats = ops.edge_count("float64 direct")
+    assert not floats.integer and floats.wide == 0 and ops.cycles(floats) == 6 * 2 + 9 == 21
+    assert ops.cycles(ops.edge_count("unsnapped incremental")) == 3
 
 
 def test_edge_bits_are_counted_once_for_lessons_06_and_10():
@@ -97,11 +110,17 @@ def test_fill_counts_scale_with_the_box_and_the_rows():
     # 2 per raster line); half-planes 3 steps and 3 tests per box centre, 3 per line
     assert hp.additions == 8 * box.size + 5 * rows and hp.divides == 0
     assert sp.divides == 1 + 2 * rows and sp.additions == 6 * rows + 2 * covered
+    # r238 F1: integer work, as the simulator fills (exact): the half-planes' steps add 64-bit
+    # edge values, a crossing's numerator is 64-bit; an IDIV and an IMUL per crossing
+    assert hp.integer and sp.integer and hp.wide == 3 * box.size + 3 * rows and sp.wide == 2 * rows
+    assert ops.cycles(ops.HALFPLANE_CENTRE) == 11 and ops.cycles(ops.SPAN_PIXEL) == 2
+    assert ops.cycles(ops.SPAN_CROSSING) == 46 + 9 + 1 + 2
+    assert ops.cycles(sp) == 46 * sp.divides + 9 * sp.multiplies + sp.additions + sp.wide
     assert ops.cycles(sp) < ops.cycles(hp)
-    # the ratio grows with size towards 8 per box centre over 2 per covered pixel
+    # the ratio grows with size towards 11 per box centre over 2 per covered pixel
     ratio = {n: ops.cycles(ops.fill_count(f"halfplane {n}²")) / ops.cycles(ops.fill_count(
         f"span {n}²")) for n in (64, 256, 1024)}  # fmt: skip
-    assert ratio[64] < ratio[256] < ratio[1024] < 4 * box.size / covered * 1.05
+    assert ratio[64] < ratio[256] < ratio[1024] < 11 / 2 * box.size / covered * 1.05
 
 
 def test_with_counts_adds_columns_to_every_row():
@@ -112,6 +131,7 @@ def test_with_counts_adds_columns_to_every_row():
         out[0]["cycles"] == ops.ATTRIBUTES == 2 and out[1]["bits"] == 16 and "cycles" not in rows[0]
     )
     assert ops.with_counts(rows, {"divides": 0, "multiplies": 0, "additions": 2})[0]["cycles"] == 4
+    assert out[0]["integer"] is False and out[0]["wide"] == 0
 
 
 def test_tie_mesh_is_watertight_and_on_pixel_centres():

@@ -7,9 +7,9 @@ counts what a scalar rasteriser would execute, per pixel, for each variant of
 comparisons count as additions), and the **bits of precision** the arithmetic keeps. The counts
 follow from the formulas, not from timing:
 
-- *interpolation*, per pixel along a span, the texture's :data:`ATTRIBUTES` ``k = 2``
-  attributes ``u`` and ``v`` (the study measures the error of both): affine steps each
-  (``k`` additions); perspective-correct steps ``u/w``, ``v/w`` and ``1/w`` (``k + 1``
+- *interpolation* (floating point), per pixel along a span, the texture's :data:`ATTRIBUTES`
+  ``k = 2`` attributes ``u`` and ``v`` (the study measures the error of both): affine steps
+  each (``k`` additions); perspective-correct steps ``u/w``, ``v/w`` and ``1/w`` (``k + 1``
   additions), takes one reciprocal of ``1/w`` and multiplies each attribute by it (1 divide,
   ``k`` multiplies); subdivided by ``N`` does that only at an anchor, every ``N``-th pixel,
   turns each attribute's change since the last anchor into a per-pixel step (``k``
@@ -17,22 +17,34 @@ follow from the formulas, not from timing:
   (per pixel: ``1/N`` divides, ``2k/N`` multiplies, ``k + (2k + 1)/N`` additions);
 - *edge functions*, per tested pixel, three edges: direct
   ``E = (b_x - a_x)(p_y - a_y) - (b_y - a_y)(p_x - a_x)`` with the edge's differences set up
-  once (2 multiplies, 3 additions per edge), incremental one addition per edge;
-- *fill*, per triangle, both loops counted alike: every pixel a loop visits costs its loop
-  work, ``x += 1`` and ``x < x_end`` (2 additions), and every raster line ``y += 1`` and
-  ``y < y_end`` (2 additions). Half-planes visit every centre of the bounding box and step
-  it incrementally (3 additions and 3 comparisons per centre, 3 additions per raster line to
-  step the row's start); the span loop (lesson 01's) computes ``u4`` (1 divide) and two
-  crossings per raster line (1 divide, 1 multiply, 2 additions each) and visits the covered
+  once (2 multiplies, 3 additions per edge), incremental one addition per edge; in floating
+  point, or in integers for the fixed-point variants;
+- *fill* (integers, as the simulator fills: exact), per triangle, both loops counted alike:
+  every pixel a loop visits costs its loop work, ``x += 1`` and ``x < x_end`` (2 additions),
+  and every raster line ``y += 1`` and ``y < y_end`` (2 additions). Half-planes visit every
+  centre of the bounding box and step it incrementally (3 additions and 3 comparisons per
+  centre, 3 additions per raster line to step the row's start); the span loop (lesson 01's)
+  computes ``u4`` (1 divide) and two crossings per raster line (1 divide, 1 multiply, 2
+  additions each: an integer floor division, ``core/span_tables.py``) and visits the covered
   pixels only, with no test;
 - *depth*: one comparison per fragment; the format sets the bits stored.
 
-Two price lists weight the counts, both in *issue cycles*: how long the unit is busy with one
-operation before it can start the next of the same kind, read from the vendor's throughput
-tables. :data:`PENTIUM_CYCLES` is the Pentium's (P5) x87 FPU, the machine Quake was written
-for (:data:`PENTIUM_X87`); :data:`GPU_CYCLES` an NVIDIA GPU from Maxwell to Turing, whose
-add, multiply and multiply-add issue at one rate and whose reciprocal at a quarter of it
-(:data:`NVIDIA_RATES`). :func:`cycles` applies any weights (the Pentium's by default).
+Integer work is also counted by width (:attr:`OpCount.wide`): on a 32-bit machine an
+addition of values wider than 32 bits takes two instructions. Coordinates on the 1/256 px
+grid and their differences fit 32 bits; a product of two differences needs 64 (one
+32 × 32-bit multiply gives it), and so does everything summed from products: an edge
+function's value, its steps, a crossing's numerator.
+
+Price lists weight the counts, in *issue cycles*: how many cycles an operation keeps its unit
+from starting the next one. :data:`PENTIUM_CYCLES` is the Pentium's (P5) x87 FPU, the machine
+Quake was written for (:data:`PENTIUM_X87`, Agner Fog's measured tables), and
+:data:`PENTIUM_INTEGER_CYCLES` its integer unit (:data:`PENTIUM_INTEGER`), which prices the
+integer variants; :data:`GPU_CYCLES` a current NVIDIA GPU's (Ampere GA10x, Ada, Hopper),
+whose add, multiply and multiply-add issue at one rate and whose reciprocal at an eighth of
+it (:data:`NVIDIA_RATES`, the CUDA guide's throughput table). A GPU list prices floating-point
+shader work only: a GPU evaluates edge functions in its fixed-function rasteriser.
+:func:`cycles` applies any weights (the Pentium's by default, integer or float by the
+variant's arithmetic).
 
 :func:`tie_mesh` and :func:`crack_counts` build a watertight mesh whose shared edges pass
 through pixel centres and count the pixels a coverage rule leaves uncovered (gaps) or covers
@@ -57,37 +69,60 @@ from .bench.groups import triangulate_grid
 #: floating-point instructions: FADD, FMUL 3 clock cycles and FDIV 19, 33 or 39 at single,
 #: double or extended precision, each overlapping the next floating-point instruction by
 #: its last 2 cycles ("fp-ov"), except that an FMUL cannot start in the cycle after another
-#: FMUL. The issue interval is what is left: the cycles before the FPU can start the next
-#: floating-point instruction (the next FMUL, for an FMUL).
+#: FMUL. The issue interval is what is left: the cycles before the FPU can start another
+#: floating-point instruction (the next FMUL, for an FMUL). An FDIV holds the whole FPU:
+#: no floating-point instruction starts during its issue interval (integer ones do).
 PENTIUM_X87 = {"FADD": (3, 1), "FMUL": (3, 2), "FDIV single": (19, 17), "FDIV double": (33, 31),
                "FDIV extended": (39, 37)}  # fmt: skip
-#: Weights of :func:`cycles`: the P5's issue intervals (:data:`PENTIUM_X87`), an FADD each
-#: cycle, an FMUL every 2, an FDIV every 17 at single precision, the precision Quake set
-#: before drawing ("make FDIV fast", ``Sys_LowFPPrecision`` in ``R_RenderView_``, ``r_main.c``).
+#: Weights of :func:`cycles` for floating-point work: the P5's issue intervals
+#: (:data:`PENTIUM_X87`), an FADD each cycle, an FMUL every 2, an FDIV every 17 at single
+#: precision, the precision Quake set before drawing ("make FDIV fast",
+#: ``Sys_LowFPPrecision`` in ``R_RenderView_``, ``r_main.c``).
 PENTIUM_CYCLES = {
     "divides": float(PENTIUM_X87["FDIV single"][1]),
     "multiplies": float(PENTIUM_X87["FMUL"][1]),
     "additions": float(PENTIUM_X87["FADD"][1]),
 }
-#: NVIDIA's CUDA C Programming Guide, table "Throughput of Native Arithmetic Instructions"
+#: The P5's integer instructions a 32-bit loop needs for the study's integer arithmetic, in
+#: clock cycles, from the same manual's list of integer instructions: ADD (and ADC) 1;
+#: IMUL r32 9, a 32 × 32-bit product, 64 bits in EDX:EAX; IDIV r32 46, EDX:EAX divided by a
+#: 32-bit value (DIV, unsigned, 41); IMUL and IDIV do not pair.
+PENTIUM_INTEGER = {"ADD": 1, "IMUL r32": 9, "DIV r32": 41, "IDIV r32": 46}
+#: Weights of :func:`cycles` for integer work on the P5 (:data:`PENTIUM_INTEGER`): an
+#: addition 1, a 64-bit one 2 (ADD, then ADC, which reads ADD's carry and so cannot pair
+#: with it), a multiply an IMUL, a divide an IDIV (signed: edge values and crossings have
+#: signs). Pairing of two simple instructions in one cycle is left out, for every variant.
+PENTIUM_INTEGER_CYCLES = {
+    "divides": float(PENTIUM_INTEGER["IDIV r32"]),
+    "multiplies": float(PENTIUM_INTEGER["IMUL r32"]),
+    "additions": float(PENTIUM_INTEGER["ADD"]),
+    "wide additions": 2.0 * PENTIUM_INTEGER["ADD"],
+}
+#: NVIDIA's *CUDA C++ Programming Guide*, table "Throughput of Native Arithmetic Instructions"
 #: (results per clock cycle per multiprocessor): the rows "32-bit floating-point add,
 #: multiply, multiply-add" and "32-bit floating-point reciprocal, reciprocal square root, ...",
 #: by compute capability (Kepler and Maxwell as in the edition copied as nvidia_throughput.txt
-#: in PCSX2's GSdx renderer, Pascal to Turing as in the CUDA 10 edition's table; the rows of
-#: 8.x and later are not quoted).
+#: in PCSX2's GSdx renderer, Pascal to Turing as in the CUDA 10 edition's table, Ampere to
+#: Hopper as in the CUDA 12 edition's). From 8.6 on the multiply-add rate doubled and the
+#: reciprocal's did not.
 NVIDIA_RATES = {"Kepler (3.x, 2012)": (192, 32), "Maxwell (5.x, 2014)": (128, 32),
                 "Pascal GP100 (6.0, 2016)": (64, 16), "Pascal (6.1, 2016)": (128, 32),
-                "Volta, Turing (7.x, 2017-18)": (64, 16)}  # fmt: skip
-#: A GPU's prices in issue cycles of its multiply-add pipe (Maxwell to Turing,
-#: :data:`NVIDIA_RATES`): an addition, a multiply or a multiply-add 1, a reciprocal 4 (its
-#: rate is a quarter of theirs). A divide of the model is that reciprocal.
+                "Volta, Turing (7.x, 2017-18)": (64, 16), "Ampere A100 (8.0, 2020)": (64, 16),
+                "Ampere GA10x (8.6, 2020)": (128, 16), "Ada (8.9, 2022)": (128, 16),
+                "Hopper (9.0, 2022)": (128, 16)}  # fmt: skip
+#: The GPU generations :data:`GPU_CYCLES` prices: the current ones.
+GPU_NOW = "Ada (8.9, 2022)"
+#: A GPU's prices in issue cycles of its multiply-add pipe (Ampere GA10x, Ada and Hopper,
+#: :data:`NVIDIA_RATES`): an addition, a multiply or a multiply-add 1, a reciprocal 8 (its
+#: rate is an eighth of theirs; a quarter from Maxwell to Turing). A divide of the model is
+#: that reciprocal.
 GPU_CYCLES = {
-    "divides": NVIDIA_RATES["Maxwell (5.x, 2014)"][0] / NVIDIA_RATES["Maxwell (5.x, 2014)"][1],
+    "divides": NVIDIA_RATES[GPU_NOW][0] / NVIDIA_RATES[GPU_NOW][1],
     "multiplies": 1.0,
     "additions": 1.0,
 }
-#: The two price lists by the names the lesson and the DivideCostExplorer give them.
-PRICES = {"Pentium (P5)": PENTIUM_CYCLES, "GPU (Maxwell to Turing)": GPU_CYCLES}
+#: The two float price lists by the names the lesson and the DivideCostExplorer give them.
+PRICES = {"Pentium (P5)": PENTIUM_CYCLES, "GPU (Ampere GA10x, Ada, Hopper)": GPU_CYCLES}
 #: Bits of precision the arithmetic keeps: the significand of a float, a whole int64.
 BITS_KEPT = {"fixed8": 63, "fixed4": 63, "float64": 53, "float32": 24, "unsnapped": 53}
 DEPTH_BITS = {"float64": 53, "float32": 24, "unorm24": 24, "unorm16": 16}
@@ -109,7 +144,12 @@ HALFPLANE_TESTS = 6.0
 
 @dataclass(frozen=True)
 class OpCount:
-    """Operations per pixel (or per triangle for the fill group), and bits kept."""
+    """Operations per pixel (or per triangle for the fill group), and bits kept.
+
+    ``integer`` says the arithmetic is integer (priced by :data:`PENTIUM_INTEGER_CYCLES`
+    unless other weights are given); ``wide`` how many of the ``additions`` add values wider
+    than 32 bits (two instructions each on a 32-bit machine).
+    """
 
     divides: float
     multiplies: float
@@ -117,6 +157,22 @@ class OpCount:
     bits: int | None = None
     per: str = "pixel"
     stored: int | None = field(default=None, repr=False)  # depth: bits stored per sample
+    integer: bool = field(default=False, repr=False)
+    wide: float = field(default=0.0, repr=False)
+
+
+#: The fills' integer work. A half-plane fill per box centre: its 3 edge steps (64-bit edge
+#: values: wide), 3 sign tests (the sign of one word) and the loop; per raster line the three
+#: row starts stepped (wide) and the loop.
+HALFPLANE_CENTRE = OpCount(0.0, 0.0, HALFPLANE_TESTS + LOOP_ADDITIONS, integer=True, wide=3.0)
+HALFPLANE_LINE = OpCount(0.0, 0.0, 3.0 + LOOP_ADDITIONS, integer=True, wide=3.0)
+#: The span loop per covered pixel: the loop only; per raster line: the loop; per crossing
+#: computed afresh, lesson 01's exact one: the row's offset from the edge's start (an
+#: addition), its product with the edge's run (a multiply, 64 bits), the tie's bias taken
+#: off (a wide addition) and a floor division by the edge's rise (a divide).
+SPAN_PIXEL = OpCount(0.0, 0.0, LOOP_ADDITIONS, integer=True)
+SPAN_LINE = OpCount(0.0, 0.0, LOOP_ADDITIONS, integer=True)
+SPAN_CROSSING = OpCount(1.0, 1.0, 2.0, integer=True, wide=1.0)
 
 
 def interpolation_count(variant: str, attributes: int = ATTRIBUTES) -> OpCount:
@@ -144,15 +200,23 @@ def interpolation_count(variant: str, attributes: int = ATTRIBUTES) -> OpCount:
 def edge_count(variant: str) -> OpCount:
     """Operations per tested pixel for three edge functions, and the bits kept.
 
+    The fixed-point variants are integer work: per edge the two coordinate differences fit
+    32 bits, the two products and E, their difference, need 64 (E's subtraction, or its
+    step, is a wide addition).
+
     >>> edge_count("float32 incremental")
     OpCount(divides=0.0, multiplies=0.0, additions=3.0, bits=24, per='pixel')
+    >>> cycles(edge_count("fixed8 direct")), cycles(edge_count("float64 direct"))
+    (66.0, 21.0)
     """
     arith, evaluation = variant.split()
     if arith not in BITS_KEPT or evaluation not in ("direct", "incremental"):
         raise ValueError(f"unknown edge-function variant {variant!r}")
+    integer = arith.startswith("fixed")
+    wide = 3.0 if integer else 0.0  # one 64-bit addition per edge: E's subtraction or step
     if evaluation == "direct":
-        return OpCount(0.0, 6.0, 9.0, BITS_KEPT[arith])
-    return OpCount(0.0, 0.0, 3.0, BITS_KEPT[arith])
+        return OpCount(0.0, 6.0, 9.0, BITS_KEPT[arith], integer=integer, wide=wide)
+    return OpCount(0.0, 0.0, 3.0, BITS_KEPT[arith], integer=integer, wide=wide)
 
 
 def edge_bits_needed(
@@ -179,24 +243,39 @@ def edge_bits_needed(
     return max(position, budget.least_needed if least else budget.needed)
 
 
+def _total(terms, per: str) -> OpCount:
+    """``sum(n * op for n, op in terms)``: integer work, its wide additions summed too."""
+    total = {k: sum(n * getattr(op, k) for n, op in terms)
+             for k in ("divides", "multiplies", "additions", "wide")}  # fmt: skip
+    return OpCount(total["divides"], total["multiplies"], total["additions"], None, per,
+                   integer=True, wide=total["wide"])  # fmt: skip
+
+
 def fill_count(variant: str) -> OpCount:
-    """Operations per triangle of the study's fill triangle for ``"halfplane …"`` / ``"span …"``.
+    """Operations per triangle of the study's fill triangle for ``"halfplane …"`` / ``"span …"``:
+    :data:`HALFPLANE_CENTRE` per box centre and :data:`HALFPLANE_LINE` per raster line, or
+    :data:`SPAN_PIXEL` per covered pixel, :data:`SPAN_LINE` and two :data:`SPAN_CROSSING`
+    per raster line and one divide (the split point ``u4``, with its multiply).
 
     Counted on the triangle :func:`teachraster.study.bench.fill_triangle` fills at that size
     (the trace adds bookkeeping, not arithmetic: the same counts).
+
+    >>> op = fill_count("span 64²")
+    >>> op.divides == op.multiplies + 1 == op.wide + 1   # a crossing: one of each
+    True
     """
     method = variant.split()[0].split("+")[0]
     size = int(variant.split()[-1].rstrip("²"))
     filled = rasterize(bench.fill_triangle(size), size, size, method="halfplane", trace=True)
     box = filled.trace.bbox
-    rows, loop = box.row1 - box.row0, LOOP_ADDITIONS
-    if method == "halfplane":  # every centre of the box: 3 steps, 3 sign tests, the loop
-        per_centre = HALFPLANE_TESTS + loop
-        return OpCount(0.0, 0.0, per_centre * box.size + (3.0 + loop) * rows, None, "triangle")
+    rows = box.row1 - box.row0
+    if method == "halfplane":  # every centre of the box
+        return _total([(box.size, HALFPLANE_CENTRE), (rows, HALFPLANE_LINE)], "triangle")
     if method == "span":  # two crossings per line, then the covered pixels: the loop only
         covered = int(filled.coverage.sum())
-        return OpCount(1.0 + 2.0 * rows, 2.0 * rows, (4.0 + loop) * rows + loop * covered, None,
-                       "triangle")  # fmt: skip
+        u4 = OpCount(1.0, 0.0, 0.0)  # its multiply is counted with the crossings' (2 per line)
+        return _total([(covered, SPAN_PIXEL), (rows, SPAN_LINE), (2 * rows, SPAN_CROSSING),
+                       (1, u4)], "triangle")  # fmt: skip
     raise ValueError(f"unknown fill variant {variant!r}")
 
 
@@ -216,28 +295,36 @@ def count(row: dict) -> OpCount:
 
 
 def cycles(op: OpCount, weights: dict | None = None) -> float:
-    """Weighted cost of ``op``: divides, multiplies and additions times their weights
-    (:data:`PENTIUM_CYCLES` unless ``weights`` is given).
+    """Weighted cost of ``op``: divides, multiplies and additions times their weights, a
+    wide addition at ``weights["wide additions"]`` where the list has one (else as any
+    addition). Without ``weights``: the Pentium's, :data:`PENTIUM_INTEGER_CYCLES` for
+    integer work and :data:`PENTIUM_CYCLES` for floating point.
 
     >>> cycles(interpolation_count("perspective")), cycles(interpolation_count("perspective"), GPU_CYCLES)
-    (24.0, 9.0)
+    (24.0, 13.0)
     """
-    w = PENTIUM_CYCLES if weights is None else weights
+    if weights is None:
+        weights = PENTIUM_INTEGER_CYCLES if op.integer else PENTIUM_CYCLES
+    add = weights["additions"]
+    wide = weights.get("wide additions", add)
     return (
-        op.divides * w["divides"] + op.multiplies * w["multiplies"] + op.additions * w["additions"]
-    )
+        op.divides * weights["divides"] + op.multiplies * weights["multiplies"]
+        + (op.additions - op.wide) * add + op.wide * wide
+    )  # fmt: skip
 
 
 def with_counts(rows: list[dict], weights: dict | None = None) -> list[dict]:
     """Copies of ``rows`` with ``divides``, ``multiplies``, ``additions``, ``bits`` (of
     precision kept), ``stored_bits`` (depth formats: bits stored per sample, else None),
-    ``cycles`` and ``per`` added (the operation counts beside the measured time)."""
+    ``cycles``, ``per``, ``integer`` and ``wide`` (its additions wider than 32 bits) added:
+    the operation counts beside the measured error. ``weights`` as in :func:`cycles`."""
     out = []
     for row in rows:
         op = count(row)
         out.append({**row, "divides": op.divides, "multiplies": op.multiplies,
                     "additions": op.additions, "bits": op.bits, "stored_bits": op.stored,
-                    "per": op.per, "cycles": cycles(op, weights)})  # fmt: skip
+                    "per": op.per, "integer": op.integer, "wide": op.wide,
+                    "cycles": cycles(op, weights)})  # fmt: skip
     return out
 
 

@@ -3,10 +3,11 @@
 Lesson 06's widget. Perspective-correct interpolation needs a divide per pixel; subdivided
 interpolation (Quake's) divides every N pixels and is affine in between; affine never divides.
 Which of them is worth its cost depends on what a divide costs against a multiply and an
-addition: 17 issue cycles on the Pentium's FPU (an addition 1, a multiply 2), four
-multiply-adds' worth on a GPU (an addition and a multiply 1 each). The **prices** buttons pick
-one of the two price lists (:data:`~teachraster.study.operation_counts.PRICES`, each from its
-vendor's throughput table), the **divide** slider that list's divide; the chart re-prices every
+addition: 17 issue cycles on the Pentium's FPU (an addition 1, a multiply 2), eight
+multiply-adds' worth on a current GPU (an addition and a multiply 1 each). The **prices**
+buttons pick one of the two price lists (:data:`~teachraster.study.operation_counts.PRICES`:
+Agner Fog's Pentium tables, NVIDIA's throughput table), the **divide** slider that list's
+divide; the chart re-prices every
 variant from its operation counts (:mod:`teachraster.study.operation_counts`) and redraws the
 Pareto front. A second slider sets
 the number of attributes interpolated per pixel: they share the one reciprocal of 1/w, while
@@ -49,8 +50,8 @@ RIGHT_ROOM = 0.03
 ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
 
 #: The slider's divide costs in cycles, 1 to 128: about a quarter of an octave apart, and
-#: holding the prices the lesson prints (1, 2, the GPU's 4, the Pentium's 17, 128, and 30
-#: and 40 either side of 16 attributes' limit of 31). A starting price not among them is
+#: holding the prices the lesson prints (1, 2, 4 from Maxwell to Turing, a current GPU's 8,
+#: the Pentium's 17, 128, and 30 and 40 either side of 16 attributes' limit of 31). A starting price not among them is
 #: added, so the slider starts exactly where it is asked to.
 DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 17, 20, 24, 30, 40, 48, 64, 80, 96, 128)
 #: The status line's font size (CSS px): the size of the chart's axis labels, read from the
@@ -177,12 +178,12 @@ class DivideCostExplorer(Shown):
         (``ops.with_counts(bench.run(...))`` filtered to ``group == "interpolation"``).
     divide : float, optional
         Starting cost of a divide in issue cycles (an addition costs 1); by default the
-        ``prices``' own (17 or 4); the slider starts there exactly.
+        ``prices``' own (17 or 8); the slider starts there exactly.
     error : {"max error", "mean error"}
     attributes : int
         Starting number of attributes interpolated per pixel (one of
         :data:`ATTRIBUTE_COUNTS`); 2, the study's u and v, by default.
-    prices : {"Pentium (P5)", "GPU (Maxwell to Turing)"}
+    prices : {"Pentium (P5)", "GPU (Ampere GA10x, Ada, Hopper)"}
         The price list (:data:`~teachraster.study.operation_counts.PRICES`): a multiply's
         cost, and the divide the slider starts at.
     backend : {"auto", "ipympl", "image"}

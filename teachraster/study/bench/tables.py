@@ -1,8 +1,8 @@
 """The study's tables as lesson 06 prints them: one group's error, operations and bits.
 
-:mod:`.report` writes the command line's table of medians; a lesson reads each variant's
-*fastest* round instead (the least disturbed one) and prices it in operations
-(:func:`teachraster.study.operation_counts.with_counts`). These helpers keep that
+:mod:`.report` writes the command line's table of medians; lesson 06 prices each variant in
+operations instead (:func:`teachraster.study.operation_counts.with_counts`) and leaves the
+simulator's time to ``benchmarks/bench_lesson06_signs.py``. These helpers keep that
 bookkeeping out of the lesson's first cell, so what a student sees first is graphics.
 """
 
@@ -14,7 +14,8 @@ from html import escape
 from .settings import ERROR_MEASURE
 
 #: The operation columns: (header, key, format, width); "Pentium" is the cost in issue cycles
-#: at :data:`~teachraster.study.operation_counts.PENTIUM_CYCLES`, the prices of ``with_counts``.
+#: at the Pentium's prices, the default of ``with_counts`` (its x87 FPU's for floating-point
+#: variants, its integer unit's for integer ones: :mod:`teachraster.study.operation_counts`).
 OP_COLUMNS = (
     ("error", "error", "9.3g", 9),
     ("div", "divides", "7.4g", 7),
@@ -25,22 +26,22 @@ OP_COLUMNS = (
 )
 
 
-def fastest(r: dict, timer: str = "time") -> float:
-    """A variant's fastest round in seconds: the time lesson 06 compares.
+def number(value, fmt: str = ".3g") -> str:
+    """A table's number, short and in one piece: ``-`` for None; from 1,000 up a whole number
+    with thousands separators (a count of pixels or cycles, not ``2.44e+03``); below 1e-6 one
+    digit (rounding level: ``1e-13``, not ``1.42e-13``, which a narrow cell broke at its
+    hyphen); else ``fmt``.
 
-    >>> fastest({"time_min_s": 0.002, "time_max_s": 0.005})
-    0.002
+    >>> [number(v) for v in (None, 2438, 3713.4, 493230.0, 1.42e-13, 0.0, 5.757, 0.03125)]
+    ['-', '2,438', '3,713', '493,230', '1e-13', '0', '5.76', '0.0312']
     """
-    return r[timer + "_min_s"]
-
-
-def ratio(a: dict, b: dict, timer: str = "time") -> float:
-    """``a``'s time over ``b``'s, each its fastest round.
-
-    >>> ratio({"time_min_s": 3.0}, {"time_min_s": 2.0})
-    1.5
-    """
-    return fastest(a, timer) / fastest(b, timer)
+    if value is None:
+        return "-"
+    if abs(value) >= 1000:
+        return f"{value:,.0f}"
+    if 0 < abs(value) < 1e-6:
+        return f"{value:.0e}"
+    return format(value, fmt)
 
 
 def table_parts(
@@ -67,8 +68,7 @@ def table_parts(
     """
     block = [r for r in rows if r["group"] == group]
     columns = [
-        (head, (lambda r, k=key, f=fmt: "-" if r[k] is None else format(r[k], f)), w)
-        for head, key, fmt, w in OP_COLUMNS
+        (head, (lambda r, k=key, f=fmt: number(r[k], f)), w) for head, key, fmt, w in OP_COLUMNS
     ]
     columns[1:1] = [(head, fmt, max(6, len(head))) for head, fmt in errors]
     columns += [(head, fmt, max(6, len(head))) for head, fmt in extra]
@@ -130,7 +130,9 @@ def table_html(parts: dict) -> str:
            "<tr>" + "".join(f"<th>{escape(c)}</th>" for c in parts["header"]) + "</tr>"]  # fmt: skip
     for cells in parts["body"]:
         tds = [f'<td style="text-align:left">{escape(cells[0])}</td>']
-        tds += [f'<td style="text-align:right">{escape(c)}</td>' for c in cells[1:]]
+        # numbers in one piece: "1.42e-13" broke at its hyphen in a narrow cell (r238 FIG1)
+        tds += [f'<td style="text-align:right;white-space:nowrap">{escape(c)}</td>'
+                for c in cells[1:]]  # fmt: skip
         out.append("<tr>" + "".join(tds) + "</tr>")
     out.append("</table>")
     if parts["note"]:
