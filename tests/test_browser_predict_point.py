@@ -88,4 +88,8 @@ def test_an_answer_off_the_plot_keeps_check_disabled(tmp_path):
         # one arrow key brings it back onto the plot: an answer, at the corner
         page.locator(".tr-predict-box canvas").focus()
         page.keyboard.press("ArrowRight")
+        for _ in range(100):  # the key's handler runs a frame later on a loaded machine
+            if check.is_enabled():
+                break
+            page.wait_for_timeout(50)
         assert check.is_enabled()

@@ -295,7 +295,10 @@ class FilterExplorer:
             "grazing floor up to 16 times: there max aniso matters. The ring in the error "
             'panel marks the worst pixel, its error the "max" under it.',
         )
-        controls = control_row([self.tilt, self.filter, self.view, self.max_anisotropy])
+        # two rows of two: in one wrapping row the four controls took four lines of a 315-px
+        # column (test_browser_layout allows three)
+        controls = widgets.VBox([control_row([self.tilt, self.filter]),
+                                 control_row([self.view, self.max_anisotropy])])  # fmt: skip
         self.widget = projector_text(widgets.VBox([title, controls, *info_widgets,
                                                    self.display.widget]), title)  # fmt: skip
         self._ahead = None
