@@ -7,6 +7,7 @@ Lessons 06 and 07 in code. Nothing here is imported by ``import teachraster``:
 - :mod:`.hardcases`: the catalogue of named hard cases, each with a naive variant;
 - :mod:`.antialiasing`: exact pixel areas, the ground truth of the sample-count study;
 - :mod:`.opengl`: the same triangles through OpenGL (Mesa's llvmpipe), for cross-checks;
+- :mod:`.opengl_owners`: who owns each pixel of a 2-D mesh in llvmpipe (lesson 07);
 - :mod:`.llvmpipe_binner`: llvmpipe's binning choices (32- or 64-bit stepping, the command
   of a small triangle, the row loop over 64×64 tiles) re-enacted for lesson 10.
 """
