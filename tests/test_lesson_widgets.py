@@ -569,6 +569,40 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         picker.close()
 
 
+def test_case_picker_magnifies_a_speck_in_an_inset():
+    """Review r236 FIG-2: snap_flips_winding's triangle (0.04 by 0.002 px) and snap_degenerate's
+    (0.0025 px) were specks under their vertex marks. Each panel now magnifies them in an inset
+    away from the covered pixel, the snapped vertices dashed (a diamond where they meet in one
+    point), the 1/256-px grid and the pixel centre drawn; no vertex marks on the grid."""
+    from teachraster.core.snapping import snap
+    from teachraster.widgets.case_picker import CasePicker
+
+    picker = CasePicker("snap_flips_winding", backend="image")
+    try:
+        assert picker.zoomed == list(picker.axes) and "the inset magnifies" in picker.info.value
+        given = picker._case.triangles[0]
+        for ax in picker.axes:
+            (inset,) = ax.child_axes
+            (x0, x1), (y1, y0) = inset.get_xlim(), inset.get_ylim()
+            for x, y in np.concatenate([given, snap(given)]):
+                assert x0 < x < x1 and y0 < y < y1
+            (scale,) = [t.get_text() for t in inset.texts]
+            assert scale == "× 40 by 323"  # stretched up and down: a sliver's winding seen
+            box = inset.get_position()
+            assert box.x0 > ax.get_position().x0 + 0.4 * ax.get_position().width  # lower right
+            assert not [ln for ln in ax.lines if ln.get_marker() == "s" and ln.get_visible()]
+        picker.case.value = "snap_degenerate"
+        for ax in picker.axes:
+            (inset,) = ax.child_axes
+            points = [ln.get_xydata()[0].tolist() for ln in inset.lines if ln.get_marker() == "D"]
+            assert points == [[2.5, 2.5]]  # every vertex snapped onto the centre
+        picker.case.value = "subpixel_triangles"  # a third of a pixel and up: seen on the grid
+        assert picker.zoomed == [] and not any(ax.child_axes for ax in picker.axes)
+        assert "the inset magnifies" not in picker.info.value
+    finally:
+        picker.close()
+
+
 def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
     """Review r5, 06-2: a log slider of step 1/4 octave has no 30, and the browser showed the
     model's 30 cycles as 32 ("37x") while lesson 06 printed 30 ("35x")."""

@@ -116,6 +116,8 @@ ANSWERED_BELOW = {
         # review r227 P-1: the reading of q_far's figures was a Markdown cell under its held
         # cell, visible before Check ("thousands of pixels apart"); the held cell shows it now
         "q_far": ["(q_far's answer)", "FAR_TEXT = ", "thousands of pixels apart"],
+        # review r236 M-1: which shifts draw follows the C sum, asked before the census
+        "q_sum": ["SUM_TEXT = ", "every one drawing nothing", "decides none of it"],
         "q_behind": ["BEHIND_TEXT = ", "mirrored vertex"],
     },
 }
@@ -2349,7 +2351,8 @@ def test_guard_band_exact_range_and_far_floor_words():
     ten = " ".join(" ".join(_cells("10_tiles_and_hierarchical_z", k)) for k in ("markdown", "code"))
     assert not re.search(r"(?<!guard )\bband\b", ten.replace("guard\n", "guard ")), "band"
     seven = " ".join(" ".join(_cells("07_hard_cases", "markdown")).split())
-    assert "lesson 10 prints the range it lies within" in seven and "prints its extent" not in seven
+    # review r236 S-7: the simulator's exact range, not "the guard band" (a GPU's is smaller)
+    assert "lesson 10 prints that range" in seven and "prints its extent" not in seven
     four = " ".join(" ".join(_cells("04_perspective_correct_interpolation", "markdown")).split())
     assert "noise" not in four and "horizontal streaks" in four
     # review r22 04-13: depth is exactly constant along a row; what aliases is the check row

@@ -1175,11 +1175,12 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     seven = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                               if c["cell_type"] == "markdown" or "BEHIND_TEXT" in "".join(c["source"])).split())  # fmt: skip
     assert "the line under the figure" not in seven
-    # review r215 07-1: the line named by its words, not its place
-    assert (
-        'the line "ours: the near-plane clip leaves … triangles" and the left panel\'s '
-        "title print how many"
-    ) in seven
+    # review r215 07-1: the line named by its words, not its place; review r236 S-1: no line
+    # at all, the count in the text (computed) and in the left panel's title
+    assert "fans into {clipped_into} triangles (the left panel)" in seven
+    assert 'the line "ours: the near-plane clip' not in seven
+    (behind,) = [c for c in cells_07() if c.startswith("q_behind.hold()")]
+    assert 'f"ours: clipped, {clipped_into} triangles,' in behind and "print(" not in behind
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
     moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
     assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
@@ -1308,11 +1309,14 @@ def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
     assert ns.gaps_on_ab == [c for c in ns.gap_cells if e_ab[tuple(c)] == 0] == [[4, 4], [7, 11]]
     assert tr.edge_function(ns.A, ns.B, ns.C) > 0 and ns.ab_top_left is False  # a right edge
     assert ns.inclusive_gaps == ns.gaps_inside  # E >= 0 draws those on AB, not the others
-    raw = streams(executed("07_hard_cases").notebook())
-    printed = " ".join(raw.split())
-    assert f"strictly inside the wedge A-V-B: {ns.gaps_inside}" in printed
-    assert f"exactly on AB (E = 0): {ns.gaps_on_ab}; AB top-left for ABC: False" in printed
-    assert f"(no tie rule) the gaps are {ns.gaps_inside}" in printed
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    # review r236 S-1: the gaps named in the held text (computed), not in printed lines it
+    # pointed at; the figure draws the two kinds apart
+    told_gaps = _07_held_markdown(run, "q_gaps.hold()")
+    assert "gaps when $V$ lies outside $ABC$ (left, black: (5, 7) and (6, 9);" in told_gaps
+    assert "(hatched: (4, 4) and (7, 11)) are the top-left rule's" in told_gaps
+    assert "its gaps are (5, 7) and (6, 9) only" in told_gaps
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     (gaps,) = [c for c in cells if "q_gaps = PredictPixels(" in c]
@@ -1339,8 +1343,7 @@ def test_07_review_r115_gaps_on_ab_behind_question_and_figures():
     assert "owner_colors(sliver_owner, case.triangles)" in sliver and "owner_color(" not in sliver
     assert "order {shown_name} shown" in "".join(cells) and ns.shown_name == "v1 v3 v2"
     assert "naive covers nothing for orders v1 v3 v2, v2 v1 v3, v3 v2 v1" in printed
-    gap_lines = raw.split("V outside ABC, the gap centres")[1].split("the gaps are")[0]
-    assert all(len(line) <= 80 for line in gap_lines.splitlines())
+    assert all(len(line) <= 80 for line in streams(run).splitlines())
 
 
 def test_07_catalogue_tables_print_in_one_piece():
@@ -1376,9 +1379,14 @@ def test_07_triangles_numbered_from_1():
 
     ns = lesson("07_hard_cases")
     printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
-    assert f"the hub centre belongs to triangle {ns.hub_owner + 1};" in printed
-    assert ns.owners == [ns.below] == [1]
-    assert "owner of the shared row: sliver [2] (the sliver below the shared edge is 2)" in printed
+    cells = _07_sources()
+    (fan,) = [c for c in cells if c.startswith("q_fan.hold()")]
+    assert 'label=f"the hub: triangle {hub_owner + 1}\'s"' in fan and ns.hub_owner == 0
+    # review r236 S-5: the row's owner in the slivers' title, "sliver 2", not "sliver [2]"
+    assert ns.owners == [ns.below] == [1] and ns.row_owners == "sliver 2" and ns.where
+    (sliver,) = [c for c in cells if 'introduce("sliver_pair")' in c]
+    assert 'set_title(f"ours: {row_owners}{where} owns the row"' in sliver
+    assert "sliver [" not in printed
     a, b, c = ns.fan_trio
     assert f"triangles {a + 1} and {c + 1} touch across triangle {b + 1}," in printed
     # no triangle or sliver numbered 0 ("a triangle 0.0025 px wide" is a width)
@@ -1580,10 +1588,14 @@ def test_07_review_r145_fan_text_and_printout_agree():
             if at:
                 k = at[0]  # the edges into and out of the vertex
                 assert not (tr.is_top_left(t[k - 1], t[k]) and tr.is_top_left(t[k], t[(k + 1) % 3]))
-    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
-    assert "ours: 40 of them once (the hub, the 32, 7 rim vertices);" in printed
-    assert "9 rim vertices none: no fan triangle has both its edges there top-left" in printed
-    assert "the 32 centres on the rim's edges: naive once each, ours 16" in printed
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    # review r236 S-1: the counts in the held text (computed), not in lines it pointed at
+    told = _07_held_markdown(run, "q_fan.hold()")
+    for said in ("Of the 49, ours draws 40 once (the hub, the 32, 7 rim vertices) and the "
+                 "other 9 none", "At 9 of the 16 rim vertices neither fan triangle is one",
+                 "of the 32 on the rim's edges it draws 16", "the hub 16 times"):  # fmt: skip
+        assert said in told, said
     assert "naive covers 49 pixel centre(s) more than once" in printed
     nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
@@ -1690,7 +1702,7 @@ def test_07_review_r145_picker_methods_and_subpixel_view():
     of the right panel, and every rule changes the picture of some case."""
     import html
 
-    from teachraster.widgets.case_picker import CASE_NAIVE, RULES, TINY_MARK, CasePicker
+    from teachraster.widgets.case_picker import CASE_NAIVE, RULES, TINY_WIDTH, CasePicker
     from teachraster.widgets.display import png_bytes
 
     picker = CasePicker("subpixel_triangles", backend="image")
@@ -1707,12 +1719,22 @@ def test_07_review_r145_picker_methods_and_subpixel_view():
         assert sorted(every) == [r + 0.5 for r in range(r0, r1)]  # a tick on every row
         rounded = np.rint(picker._case.triangles)
         assert np.array_equal(picker.naive_triangles, rounded)
+        # review r236 FIG-2: no vertex marks at all (small ones still covered the triangles),
+        # a fine outline; a triangle rounded to one point is a diamond
         for ax in picker.axes:
-            marks = [ln for ln in ax.lines if ln.get_marker() == "s"]
-            assert marks and {ln.get_markersize() for ln in marks} == {TINY_MARK}
+            vertices = [ln for ln in ax.lines if len(ln.get_xdata()) == 3]
+            assert vertices and not any(ln.get_visible() for ln in vertices)
+            outlines = [ln for ln in ax.lines if ln.get_marker() == "None"]
+            assert {ln.get_linewidth() for ln in outlines} == {TINY_WIDTH}
         drawn = [np.column_stack(ln.get_data())[:3] for ln in picker.axes[1].lines
-                 if ln.get_marker() == "s"]  # fmt: skip
-        assert all(any(np.array_equal(d, r) for r in rounded) for d in drawn)
+                 if ln.get_marker() == "None"]  # fmt: skip
+        assert len(drawn) == 4 and all(any(np.array_equal(d, r) for r in rounded) for d in drawn)
+        points = [
+            ln.get_xydata()[0].tolist() for ln in picker.axes[1].lines if ln.get_marker() == "D"
+        ]
+        assert (
+            points == [[7, 3], [6, 6]] and "its vertices rounded to one point" in picker.info.value
+        )
         picker.rule.value = "whole px"  # the same rounding as the case's own naive version
         assert np.array_equal(picker.naive_triangles, rounded)
         # every rule draws another picture on the split square, and says what it does
@@ -1735,6 +1757,20 @@ def test_07_review_r145_picker_methods_and_subpixel_view():
         picker.close()
 
 
+def _07_held_markdown(run, start: str) -> str:
+    """The Markdown the held cell of lesson 07 starting ``start`` displays, one line."""
+    (held,) = [c for c in run.cells if c.source.startswith(start)]
+    shown = [
+        o["data"]["text/markdown"] for o in held.outputs if "text/markdown" in o.get("data", {})
+    ]
+    return " ".join(" ".join(shown).split())
+
+
+def cells_07() -> list[str]:
+    """Lesson 07's cells' sources (an alias of :func:`_07_sources` for the tests above it)."""
+    return _07_sources()
+
+
 def _07_sources() -> list[str]:
     import json
 
@@ -1748,7 +1784,7 @@ def test_07_review_r210_outline_centres_whole_count_and_origin_order():
     drawn) are printed and named in the explanation. 07-2: q_fan takes whole numbers only.
     07-6: my_coverage takes origin as (row, col), exercise 10.1's order. 07-7: the intro names
     the depth cases' one method, "batch"."""
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     ns = lesson("07_hard_cases")
     assert ns.on_outline == [([11, 8], "BC", "right", False), ([8, 1], "CA", "left", True)]
@@ -1762,8 +1798,10 @@ def test_07_review_r210_outline_centres_whole_count_and_origin_order():
         "On the outline itself, not asked and no crack: {outline_words}."
         in gaps.split("explain=")[1]
     )
-    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
-    assert "[11, 8] on BC, a right edge: not drawn [8, 1] on CA, a left edge: drawn" in printed
+    run = executed("07_hard_cases").notebook()
+    assert "centre on the outline A-D-B-C ((11, 8) on BC, a right edge)" in _07_held_markdown(
+        run, "q_gaps.hold()"
+    )
     (fan,) = [c for c in cells if "q_fan = Predict(" in c]
     assert "whole=True" in fan.split("q_fan = Predict(")[1]
     (mine,) = [c for c in cells if c.startswith("def my_coverage(")]
@@ -4132,15 +4170,17 @@ def test_07_review_r215_printed_lines_are_named_by_their_words():
                 after = flat[m.end() : m.end() + 20]
                 if after.startswith((" above the figure", ", above the")):
                     assert any(i is not None and n < i for _, n, i in homes), (k, quote)
-    # review r227 S-2: fewer pointers from the prose to its own printout (the numbers are in
-    # the text, computed, where a held cell shows it); those left are checked all the same
-    assert named >= 6
+    # review r227 S-2, r236 S-1: no pointer from the prose to its own printout is left: the
+    # numbers are in the text (computed, where a held cell shows it) or on the figures
+    assert named == 0
     cells = [" ".join(c.source.split()) for c in nb.cells]
-    (gaps,) = [c for c in cells if c.startswith("q_gaps.hold()")]
-    assert 'the line "with E >= 0 instead (no tie rule) the gaps are …" above the figure' in gaps
     (depth,) = [c for c in cells if c.startswith("float32 and unorm24 lose about")]
-    assert '(the line "steps at depth 0.6: …" prints the steps)' in depth
-    assert '(the line "their depths differ by slope/16 per pixel", above the table)' in depth
+    assert "(the table's column \"step at 0.6\" gives each format's)" in depth
+    assert "by slope/16 per pixel (the figure's key)" in depth
+    (coplanar,) = [c for c in cells if c.startswith('case, ours = introduce("nearly_coplanar')]
+    assert "B − A: slope/{size_px // 2} per px" in coplanar and "step {depth_step[fmt]" in coplanar
+    (drift,) = [c for c in cells if c.startswith("The float32 stepper's signed error")]
+    assert "The figure writes over each range what it adds" in drift
 
 
 def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
@@ -4171,7 +4211,8 @@ def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
                  "float32 draws 74,654 pixels of the 400 x 400 window round it, 0 of the "
                  "triangle's 64", "part of the triangle: 4 shift(s), k = 24, 26, 28, 30",
                  "all of it and pixels round it: 3 shift(s), k = 51, 53, 55",
-                 "float32's gap near 1e12: 65,536"):  # fmt: skip
+                 "float32's gap near 1e12: 65,536", "−65,536: 9 shifts, every one drawing "
+                 "nothing", "0: 47 shifts, every one drawing nothing", "+65,536: 8 shifts"):  # fmt: skip
         assert said in printed, said
     cells = _07_sources()
     (far,) = [" ".join(c.split()) for c in cells if "q_far = PredictChoice(" in c]
@@ -4189,9 +4230,7 @@ def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
     text = " ".join(" ".join(shown).split())
     assert text.startswith("Here the float32 version") and "shift the triangle a little" not in text
     for said in ("74,654 pixels of the 400 × 400 window round it, and none of the triangle's 64",
-                 "Of the 64 diagonal shifts, 56 draw nothing; part of the triangle comes only at "
-                 "k = 24, 26, 28 and 30, and all of it (with pixels round it) only at k = 51, 53 "
-                 "and 55", "over a thousand pixels", "65,536",
+                 "follows one sum, the question below", "over a thousand pixels", "65,536",
                  "the relative form gets 0 of its 64 pixels wrong at $10^5$ px and 0 at $10^6$ "
                  "px; the absolute form gets 64 and 64"):  # fmt: skip
         assert said in text, said
@@ -4213,10 +4252,12 @@ def test_07_review_r215_the_v_label_hides_no_centre():
     helpers = next(c for c in cells if c.startswith("# The lesson's helpers"))
     mesh = next(c for c in cells if c.startswith("# Triangle ABC, and two triangles"))
     held = next(c for c in cells if c.startswith("q_gaps.hold()"))
-    figure = held[held.index("fig, axes = plt.subplots(1, 3") : held.index("plt.show()")]
+    # the figure and the helpers it draws with (the gaps' two kinds, the titles' counts)
+    figure = held[held.index("def cells_text(") : held.index("plt.show()")]
     scope = {}
     exec(imports + "use_style('classroom')\n" + helpers + mesh, scope)
     scope["t_crack"] = {name: np.zeros((16, 16), dtype=bool) for name in scope["t_cases"]}
+    scope["on_outline"] = []
     exec(figure, scope)
     fig = scope["fig"]
     fig.set_dpi(100)  # the notebook's
@@ -4245,6 +4286,15 @@ def test_07_review_r215_the_v_label_hides_no_centre():
             reach = ln.get_markersize() / 2 * fig.dpi / 72  # a dot's radius, in pixels
             gap = np.hypot(cols[:, None] - x, rows[:, None] - (height - y)).min(axis=0)
             assert (gap > reach).all(), (ax.get_title(), gap.min(), reach)
+    # review r236 FIG-3: nor does it touch a pixel drawn twice (the middle panel's point)
+    twice = 0
+    for ax, counts in zip(scope["axes"], scope["t_counts"].values()):
+        for r, c in np.argwhere(counts >= 2):
+            (x0, y0), (x1, y1) = ax.transData.transform([(c, r + 1), (c + 1, r)])
+            inside = (cols >= x0) & (cols <= x1) & (rows >= height - y1) & (rows <= height - y0)
+            assert not inside.any(), (ax.get_title(), (r, c))
+            twice += 1
+    assert twice == 2
     plt.close(fig)
 
 
@@ -4297,8 +4347,10 @@ def test_07_review_r227_split_square_t_junction_and_the_gpu_far_away():
     assert ns.fine_gaps == {"V exactly on AB": [], "V 1/256 px above AB": ns.gaps_on_ab,
                             "V 1/256 px below AB": []}  # fmt: skip
     assert set(ns.fine_twice.values()) == {0} and ns.gaps_on_ab == [[4, 4], [7, 11]]
-    assert "V 1/256 px above AB: gaps [[4, 4], [7, 11]], centres drawn twice 0" in printed
-    assert "V exactly on AB: gaps [], centres drawn twice 0" in printed
+    # review r236 S-1: the gaps in the held text and the panels' titles, not in printed lines
+    sparkle = _07_held_markdown(run, "q_gaps.hold()")
+    assert "the 2 centres exactly on $AB$, (4, 4) and (7, 11), are gaps" in sparkle
+    assert "With $V$ exactly on $AB$, at (8, 6) (left), the mesh is watertight" in sparkle
     (tj,) = [" ".join(c.split()) for c in cells if c.startswith("**A T-junction.**")]
     assert "watertight only if $V$ lies *exactly* on $AB$" in tj and "only along" not in tj
     (gaps_held,) = [c for c in cells if c.startswith("q_gaps.hold()")]
@@ -4312,7 +4364,11 @@ def test_07_review_r227_split_square_t_junction_and_the_gpu_far_away():
                  "algorithm*", "guard band", "integers, on snapped coordinates",
                  "a software rasteriser's hazard"):  # fmt: skip
         assert said in far_text, said
-    assert cells[cells.index(far_held) + 1].startswith("**Try it: float32 far from the origin,**")
+    # review r236 M-1: the sum's question (its text, the question, its held cell) before it
+    after = cells[cells.index(far_held) + 1 :]
+    assert after[0].startswith("**One sum decides.**") and "q_sum = PredictChoice(" in after[1]
+    assert after[2].startswith("q_sum.hold()")
+    assert after[3].startswith("**Try it: float32 far from the origin,**")
     # FIG-2: the vertices' w and f in a line over the panels; S-4: no "max 1 hit(s)/pixel"
     (w_ratio,) = [c for c in cells if c.startswith('case, ours = introduce("perspective_w_ratio')]
     assert 'fig.suptitle(";   ".join(values)' in w_ratio and "axes[0].text(" not in w_ratio
@@ -4499,3 +4555,124 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         assert "as in the lesson's depth chart" not in caption
     finally:
         ex.close()
+
+
+@pytest.mark.notebook
+def test_07_review_r236_one_sum_decides_the_float32_census():
+    """Review r236 M-1: the three edge functions sum to C12 + C23 + C31 at every point (the A's
+    and B's cancel round the triangle); exactly that is twice the signed area, 127.5, and in
+    float32 a multiple of 65,536: at the 64 diagonal shifts only −65,536, 0 or +65,536. The 8
+    shifts that draw anything are exactly those at +65,536, where the float32 form draws a
+    triangle 514 times as wide. Asked (q_sum) before the held cell prints and draws it."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study.hardcases import naive_coverage
+
+    ns = lesson("07_hard_cases")
+    assert ns.sum_exact == 2 * 63.75 and ns.sum_values == [-65536.0, 0.0, 65536.0]
+    drawing = sorted(k for kind, ks in ns.far_outcomes.items() if kind != "nothing" for k in ks)
+    assert (
+        drawing == [k for k, v in ns.far_sums.items() if v > 0] == [1, 24, 26, 28, 30, 51, 53, 55]
+    )
+    assert round(ns.sum_scale) == 514 and ns.sum_choices[-1].startswith("any of them")
+    assert ns.sum_choices[2] == "+65,536 only" and len(set(ns.sum_choices)) == 5
+    # the law as the explanation states it: the float32 E's sum to the float32 C sum at every
+    # centre of the window, up to a few units of the products' rounding
+    for k in (0, 1, 9, 24):
+        xy = (ns.far_tri + 1_000_000 + k).astype(np.float32)
+        o = 1_000_000 + k + 8 - 200
+        y, x = (np.mgrid[o : o + 400, o : o + 400] + 0.5).astype(np.float32)
+        total = np.zeros_like(x)
+        for a, b in zip(xy, np.roll(xy, -1, axis=0)):
+            total += (a[1] - b[1]) * x + (b[0] - a[0]) * y + (a[0] * b[1] - a[1] * b[0])
+        assert np.abs(total.astype(np.float64) - ns.far_sums[k]).max() <= 16
+        drawn = naive_coverage(ns.far_tri + 1_000_000 + k, 400, 400, rule="top_left",
+                               dtype=np.float32, absolute=True, origin=(o, o))  # fmt: skip
+        assert drawn.any() == (ns.far_sums[k] > 0)
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    assert (
+        "exactly 127.5 at every k (twice the signed area); in float32 one of −65,536, 0, +65,536"
+        in printed
+    )
+    told = _07_held_markdown(run, "q_sum.hold()")
+    for said in ("Of the 64 diagonal shifts, 56 draw nothing: every one whose float32 sum is "
+                 "−65,536 or 0", "The 8 that draw anything are exactly those at +65,536",
+                 "a triangle 514 times as wide as this one", "at k = 1 beside it",
+                 "at k = 24, 26, 28 and 30 over part of it", "k = 51, 53 and 55 round all of it"):  # fmt: skip
+        assert said in told, said
+    cells = _07_sources()
+    (ask,) = [c for c in cells if "q_sum = PredictChoice(" in c]
+    asked = ask.split("q_sum = PredictChoice(")[1].split("explain=")[0]
+    assert 'answer=f"{signed(max(sum_values))} only",' in asked  # "+65,536 only"
+    assert "514" not in asked and "sum_scale" not in asked  # the triangle's size: the answer's
+    explain = " ".join(ask.split("explain=")[1].split()).replace('" "', "").replace('" f"', "")
+    assert "the triangle far larger than this one" in explain and "signs of the" not in explain
+    (far,) = [c for c in cells if "q_far = PredictChoice(" in c]
+    assert "signs of the three roundings" not in far  # r236 M-1: the rule is the sum's
+    (held,) = [c for c in cells if c.startswith("q_far.hold()")]
+    assert "roundings, not the geometry, pick" not in held and "far_outcomes" not in held
+
+
+@pytest.mark.notebook
+def test_07_review_r236_llvmpipe_beside_ours_and_the_smaller_items():
+    """Review r236 M-2: llvmpipe draws §1's four meshes with the same owner at every pixel and
+    no pixel twice, and the picker's 15 coverage cases with our fragment counts (where OpenGL
+    runs; the cell says so in one line where it does not). FIG-1: the / split coloured by
+    owner, its key counting each. C-1: snapping is not what puts V off AB. S-2: no
+    "passes the check" lines. S-3: the large plotting cells folded. S-4, S-7, S-8, S-9."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study import hardcases
+    from teachraster.study.opengl import gl_available
+
+    ns = lesson("07_hard_cases")
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    cells = _07_sources()
+    (gpu,) = [c for c in cells if c.startswith("# llvmpipe, a real OpenGL rasteriser")]
+    assert 'print(f"no OpenGL here, so no llvmpipe: {gl_renderer}"[:80])' in gpu
+    if gl_available()[0]:
+        assert ns.gl_ok and ns.gl_agree == {"/ split": (25, 25, 0, 1), "\\ split": (25, 25, 0, 1),
+                                            "fan": (72, 72, 0, 1), "slivers": (60, 60, 0, 1)}  # fmt: skip
+        assert ns.gl_same_counts == [True] * 15
+        assert (
+            "the picker's 15 coverage cases: llvmpipe's fragments per pixel equal ours in 15"
+            in printed
+        )
+        (shown,) = [c for c in run.cells if c.source.startswith("# llvmpipe, a real OpenGL")]
+        assert sum("image/png" in o.get("data", {}) for o in shown.outputs) == 1
+    (intro,) = [" ".join(c.split()) for c in cells if c.startswith("**The same meshes on a GPU.**")]
+    assert "`tests/test_hardcases_gl.py`" in intro and "llvmpipe" in intro
+    # FIG-1: the / split's left panel by owner, the key counting each triangle's pixels
+    (square,) = [c for c in cells if c.startswith('case, ours = introduce("d3d_split_square_other')]
+    assert "owners=(ours.fills, [corner(t, case.triangles)" in square
+    (helpers,) = [c for c in cells if c.startswith("# The lesson's helpers")]
+    assert 'label=f"{names[k]}: {int((owner == k).sum())} px"' in helpers
+    # C-1: what puts V off AB is authoring, not snapping (which keeps it within a step)
+    (tj,) = [" ".join(c.split()) for c in cells if c.startswith("**A T-junction.**")]
+    assert "a vertex snapped to the grid can leave it" not in tj
+    assert "an authoring error, not rounding" in tj and "within a snapping step" in tj
+    # S-2: the simulator's self-test prints nothing; S-9: E ≥ 0 in the printout as in the prose
+    assert "passes the check" not in printed and "E >= 0" not in printed
+    assert 'hardcases.get_case("near_flat").naive()' not in "".join(cells)
+    # S-3: every cell of a case's printout and figures over 30 lines long is folded
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    folded = 0
+    for cell in nb["cells"]:
+        text = "".join(cell["source"])
+        if text.startswith(("case, ours = introduce(", "# llvmpipe")) and len(cell["source"]) > 30:
+            assert cell["metadata"].get("jupyter", {}).get("source_hidden"), text[:60]
+            folded += 1
+    assert folded == 6
+    # S-4: the CS148 quotation's section; S-7: the simulator's exact range is no guard band
+    md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
+                           if c["cell_type"] == "markdown").split())  # fmt: skip
+    assert "The CS148 notes (*2D Points Inside a 2D Triangle*) say just that" in md
+    assert "exact over the whole guard band" not in md and "simulator's whole exact range" in md
+    assert "as far from the origin as the guard band reaches" not in md
+    # S-8: the facing of snap_flips_winding said on screen
+    why = hardcases.get_case("snap_flips_winding").why
+    assert "clockwise on screen (back-facing)" in why and "counter-clockwise on screen" in why

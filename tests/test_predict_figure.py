@@ -293,6 +293,19 @@ def test_the_page_judges_as_the_kernel():
     assert got[7]["places"] == [False, False]
 
 
+def test_a_marker_on_the_answer_is_0_away_not_float_noise():
+    """Review r236 S-6: lesson 07's q_behind marker dropped on (16, 8) read "Your marker is
+    1.78e-15 px from the answer": the page and the kernel both call that 0."""
+    on = [16 + 1.78e-15, 8.0]
+    got = call_js(("predict_figure",), [("pointVerdict", [[16, 8], on, 1.5]),
+                                        ("pointVerdict", [[16, 8], [16.5, 8.0], 1.5])])  # fmt: skip
+    p = PredictPoint("Q?", answer=(16, 8), draw=None, xlim=(0, 32), ylim=(32, 0), tolerance=1.5)
+    p.given = on
+    assert got[0]["gap"] == p.gap == 0 and got[0]["correct"] and p.correct
+    assert "Your marker is 0 units from the answer" in p.verdict()
+    assert got[1]["gap"] == pytest.approx(0.5)
+
+
 def test_an_order_verdict_names_the_order_given_in_the_page_as_in_the_kernel():
     """Review r167 05a-8: a wrong order's verdict was "Not quite. The answer: no order
     works.", without what the student gave (Predict and PredictChoice say "You predicted ...;

@@ -10,6 +10,7 @@ Lessons 06 and 07 in code. Nothing here is imported by ``import teachraster``:
 - :mod:`.anisotropic_lod`: Vulkan's and Direct3D's anisotropic level of detail, beside the
   sampler's GL formula (lesson 09);
 - :mod:`.opengl`: the same triangles through OpenGL (Mesa's llvmpipe), for cross-checks;
+- :mod:`.opengl_owners`: who owns each pixel of a 2-D mesh in llvmpipe (lesson 07);
 - :mod:`.llvmpipe_binner`: llvmpipe's binning choices (32- or 64-bit stepping, the command
   of a small triangle, the row loop over 64×64 tiles) re-enacted for lesson 10.
 """

@@ -23,6 +23,7 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.patches import Rectangle
 
+from ..core.snapping import snap
 from ..plotting import COLORS, plot_coverage, plot_pixel_centres, plot_pixel_grid, plot_triangle
 from ..study import hardcases
 from .ahead import PicturesAhead, show_kept
@@ -41,7 +42,7 @@ from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
 #: drawn ahead brings them with it.
 PICTURE_STATE = ("_case", "owner", "passed", "failure", "naive_counts", "difference", "offsets",
                  "copies", "naive_copies", "_box", "hubs", "view", "colors", "methods_differ",
-                 "naive_triangles", "naive_says")  # fmt: skip
+                 "naive_triangles", "naive_says", "zoomed")  # fmt: skip
 
 #: The naive rule the right panel starts with: the case's own naive version (what its
 #: ``naive_does`` says); the others are :data:`~teachraster.study.hardcases.NAIVE_RULES`.
@@ -185,10 +186,14 @@ def thin_lines(shape, triangles: int = 1) -> bool:
     return max(shape) > THIN_ABOVE or triangles > THIN_TRIANGLES
 
 
-#: Triangles smaller than this (pixels, their bounding box's longer side) get vertex marks
-#: TINY_MARK points across: at :data:`VERTEX_MARK` the marks were as large as the triangles
-#: (review r145, 07-16; the lesson's own figure of them draws none).
-TINY_BELOW, TINY_MARK = 1.0, 3.5
+#: Triangles smaller than this (pixels, their bounding box's longer side) get no vertex marks
+#: and a fine outline (TINY_WIDTH points): even small marks and the classroom's thick line
+#: covered them, triangle 1 of ``subpixel_triangles`` a black blot and triangle 4 a dot
+#: (review r145, 07-16; r236 FIG-2; the lesson's own figure of them draws no marks either).
+TINY_BELOW, TINY_WIDTH = 1.0, 1.5
+#: Triangles smaller still (ZOOM_BELOW px) are a speck at any scale that shows their pixels:
+#: each gets an inset that magnifies it ZOOM_SIDE times its size (:func:`zoom_inset`).
+ZOOM_BELOW, ZOOM_SIDE = 0.1, 1.6
 
 
 def tiny_triangles(triangles) -> bool:
@@ -211,11 +216,14 @@ CENTRE_Z = 4.6
 
 def mark_vertices(art, *, thin: bool = False, tiny: bool = False) -> None:
     """The vertices of :func:`~teachraster.plotting.plot_triangle`'s ``art`` as hollow squares
-    (:data:`VERTEX_MARK`), told apart from the pixel centres' dots; ``tiny``: small ones
-    (:data:`TINY_MARK`), for triangles smaller than a pixel."""
-    size = TINY_MARK if tiny else VERTEX_MARK * (0.7 if thin else 1)
-    art.vertices.set(marker="s", markersize=size, markerfacecolor="none",
-                     markeredgecolor=VERTEX_COLOR, markeredgewidth=1.0 if tiny else 1.2 if thin else 2)  # fmt: skip
+    (:data:`VERTEX_MARK`), told apart from the pixel centres' dots; ``tiny`` (triangles
+    smaller than a pixel): none, a mark would hide the triangle."""
+    if tiny:
+        art.vertices.set_visible(False)
+        return
+    art.vertices.set(marker="s", markersize=VERTEX_MARK * (0.7 if thin else 1),
+                     markerfacecolor="none", markeredgecolor=VERTEX_COLOR,
+                     markeredgewidth=1.2 if thin else 2)  # fmt: skip
 
 
 def centres_on_top(ax, width: int, height: int, coverage) -> None:
@@ -230,12 +238,69 @@ def centres_on_top(ax, width: int, height: int, coverage) -> None:
 def outline(ax, xy, *, thin: bool = False, tiny: bool = False):
     """A triangle's outline without arrows or labels, its vertices marked (:func:`mark_vertices`);
     ``thin``: a fine, half-transparent line too, so that the pixels under it stay visible on a
-    large grid; ``tiny``: small vertex marks."""
+    large grid; ``tiny``: no vertex marks and a fine line (:data:`TINY_WIDTH`), so that a
+    triangle smaller than a pixel shows its shape."""
     art = plot_triangle(ax, xy, labels=False, arrows=False)
     mark_vertices(art, thin=thin, tiny=tiny)
     if thin:
         art.outline.set(linewidth=0.6, alpha=0.6)
+    elif tiny:
+        art.outline.set(linewidth=TINY_WIDTH)
+    if is_point(xy):  # no outline to see: a diamond, as the lesson draws it
+        ax.plot(*np.asarray(xy, dtype=float)[0], "D", ms=8, color=COLORS["outside"], zorder=6.2)
     return art
+
+
+def is_point(xy) -> bool:
+    """Whether the three vertices of ``xy`` are one point (a triangle rounded to zero size)."""
+    return len({tuple(v) for v in np.asarray(xy, dtype=float).tolist()}) == 1
+
+
+def zoom_inset(ax, triangles, centres, fills, *, view) -> list:
+    """``triangles`` (n, 3, 2) magnified in an inset of ``ax``, in the corner of the view
+    (rows r0:r1, columns c0:c1) farthest from them, joined to where they lie: each as given
+    (filled in its colour of ``fills``), its vertices snapped to the 1/256-px grid (dashed; a
+    diamond where they collapse to one point), the grid's lines, and every pixel centre inside
+    the inset, filled where ``centres`` ((H, W) bool) says covered. For triangles smaller than
+    :data:`ZOOM_BELOW` px, which no view of whole pixels shows (review r236 FIG-2).
+
+    Returns the inset and its zoom indicator."""
+    tris = np.asarray(triangles, dtype=float)
+    r0, r1, c0, c1 = view
+    every = np.concatenate([tris, snap(tris)]).reshape(-1, 2)  # given and snapped, all seen
+    lo, hi = every.min(axis=0), every.max(axis=0)
+    # each way ZOOM_SIDE times the triangles' extent, at least 2 snapping steps: a sliver
+    # (snap_flips_winding: 0.04 by 0.002 px) is stretched across, its winding seen
+    mid, side = (lo + hi) / 2, np.maximum(ZOOM_SIDE * (hi - lo), 2 / 256)
+    # the corner of the view farthest from the triangles (axes fraction, y up in the box)
+    fx, fy = (mid[0] - c0) / (c1 - c0), 1 - (mid[1] - r0) / (r1 - r0)
+    inset = ax.inset_axes([0.55 if fx < 0.5 else 0.03, 0.03 if fy > 0.5 else 0.55, 0.42, 0.42])
+    lo, hi = mid - side / 2, mid + side / 2
+    for v in np.arange(np.ceil(lo.min() * 256), np.floor(hi.max() * 256) + 1) / 256:
+        inset.axvline(v, color="0.85", lw=0.8, zorder=0)
+        inset.axhline(v, color="0.85", lw=0.8, zorder=0)
+    for xy, colour in zip(tris, fills):
+        inset.fill(*xy.T, color=colour, alpha=0.7, ec="black", lw=1.5, zorder=2)
+        snapped = snap(xy)
+        if is_point(snapped):  # zero area: a point
+            inset.plot(*snapped[0], "D", ms=7, color=COLORS["outside"], zorder=5)  # on a dot
+        else:
+            inset.fill(*snapped.T, fill=False, ec=VERTEX_COLOR, lw=1.5, ls="--", zorder=3)
+    rows = np.arange(np.ceil(lo[1] - 0.5), np.floor(hi[1] - 0.5) + 1).astype(int)
+    cols = np.arange(np.ceil(lo[0] - 0.5), np.floor(hi[0] - 0.5) + 1).astype(int)
+    for i in rows[(rows >= 0) & (rows < centres.shape[0])]:
+        for j in cols[(cols >= 0) & (cols < centres.shape[1])]:
+            inset.plot(j + 0.5, i + 0.5, "o", ms=9, mec="black", mew=1.5, zorder=4,
+                       mfc=COLORS["edge"] if centres[i, j] else "white")  # fmt: skip
+    inset.set(xlim=(lo[0], hi[0]), ylim=(hi[1], lo[1]), xticks=[], yticks=[])
+    # magnified against the panel: the inset is 0.42 of the panel's pixels each way
+    across, down = (0.42 * np.array([c1 - c0, r1 - r0]) / side).round().astype(int)
+    # inside the inset, at its foot: above it the title met the joining lines
+    inset.text(0.5, 0.03, f"× {across}" if abs(across - down) <= 0.1 * across
+               else f"× {across} by {down}", transform=inset.transAxes, ha="center",
+               va="bottom", fontsize="x-small", zorder=5,
+               bbox={"fc": "white", "ec": "none", "alpha": 0.85, "pad": 1})  # fmt: skip
+    return [inset, ax.indicate_inset_zoom(inset, edgecolor="black", alpha=0.8)]
 
 
 #: The view of a case: at least MIN_VIEW pixels each way (a tiny triangle keeps some grid
@@ -639,7 +704,7 @@ class CasePicker:
             for ax in self.axes:
                 ax.clear()
             tris = self._case.triangles
-            self.hubs, self.view = [], None
+            self.hubs, self.view, self.zoomed = [], None, []
             # the case and the rule above both panels; short two-line titles under it, so
             # that the two panels' titles never run into each other
             self.fig.suptitle(f"{self.case.value}, naive: {self.rule.value}")
@@ -702,6 +767,28 @@ class CasePicker:
             for a in self.axes:
                 a.set(xlim=(c0, c1), ylim=(r1, r0))
                 window_ticks(a, r0, r1, c0, c1)
+            self._zoom_specks()
+
+    def _zoom_specks(self) -> None:
+        """An inset on each panel magnifying the triangles too small to see in it
+        (:data:`ZOOM_BELOW`; :func:`zoom_inset`): ours as given, the naive version's as it
+        filled them (rounded to whole pixels, where its rule rounds)."""
+        self.zoomed = []
+        panels = [(self.axes[0], self._case.triangles, self.owner != NONE, None)]
+        if self.naive_counts is not None:
+            shown = self._case.triangles if self.naive_triangles is None else self.naive_triangles
+            panels.append((self.axes[1], shown, self.naive_counts > 0, NAIVE_ONCE))
+        for ax, tris, covered, colour in panels:
+            tris = np.asarray(tris, dtype=float)
+            size = np.ptp(tris, axis=1).max(axis=-1)
+            small = np.flatnonzero((size > 0) & (size < ZOOM_BELOW))  # a point needs no zoom
+            # one inset, for specks that lie together (none of the catalogue's lie apart)
+            if not len(small) or np.ptp(tris[small].reshape(-1, 2), axis=0).max() >= ZOOM_BELOW:
+                continue
+            # ours: each triangle in its owner's colour (a grey where it owns no pixel)
+            fills = [colour or self.colors.get(k, NAIVE_ONCE) for k in small]
+            zoom_inset(ax, tris[small], covered, fills, view=self.view)
+            self.zoomed.append(ax)
 
     def _fit_height(self, rows, cols) -> None:
         """The figure as high as the view needs: a view 3 times as wide as high (the sliver
@@ -858,6 +945,17 @@ class CasePicker:
             where = "both" if len(twice) == 2 else twice[0]
             parts.append(f"{where}, {swatch(COLORS['outside'], 'covered twice or more')}")
         key = "<b>key</b>: " + "; ".join(parts + [self._marks_html(), TICKS_KEY])
+        shown = self._case.triangles if self.naive_triangles is None else self.naive_triangles
+        if any(is_point(xy) for xy in shown):
+            key += (f"; <span style='color:{COLORS['outside']}'>◆</span> a triangle of zero "
+                    "size: its vertices rounded to one point")  # fmt: skip
+        if self.zoomed:
+            key += ("; the inset magnifies a triangle too small to see on the grid (× across by "
+                    "up and down, where they differ): as given "
+                    f"(filled), and <span style='color:{VERTEX_COLOR}'>dashed</span> with its "
+                    "vertices snapped to the 1/256-px grid (the grey lines), "
+                    f"<span style='color:{COLORS['outside']}'>◆</span> where they all snap to "
+                    "one point")  # fmt: skip
         for i, j in self.hubs:
             owner = int(self.owner[i, j])
             who = (

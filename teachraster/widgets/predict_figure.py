@@ -399,6 +399,19 @@ class PredictPixels(FigurePrediction):
                 f"{_plural(cell, c['total'])} {self.data['picked']}.")  # fmt: skip
 
 
+def point_gap(answer, given) -> float:
+    """How far a point question's marker ``given`` lies from its ``answer``, 0 within float
+    noise (1e-9 of the answer's size): a marker dropped on the answer read "1.78e-15 px from
+    the answer" (review r236 S-6); the page's ``pointVerdict`` rounds alike.
+
+    >>> point_gap((16, 8), (16 + 1.8e-15, 8)), point_gap((1, 2), (1.3, 2.4))
+    (0.0, 0.5)
+    """
+    answer = np.asarray(answer, dtype=float)
+    gap = float(np.hypot(*(np.asarray(given, dtype=float) - answer)))
+    return 0.0 if gap <= 1e-9 * max(1.0, *np.abs(answer)) else gap
+
+
 class PredictPoint(FigurePrediction):
     """Drag a marker to where you expect a point; Check shows the true point beside it.
 
@@ -539,7 +552,7 @@ class PredictPoint(FigurePrediction):
         """Distance from the marker to the answer (None before the marker is moved)."""
         if self.given is None:
             return None
-        return float(np.hypot(*(np.asarray(self.given) - self.answer)))
+        return point_gap(self.answer, self.given)
 
     @property
     def correct(self) -> bool | None:

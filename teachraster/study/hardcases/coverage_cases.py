@@ -72,7 +72,7 @@ def _split_square(name, diagonal):
             ),  # fmt: skip
             fill_all,
             check,
-            "raw floats with E >= 0 (no top-left rule) give the diagonal's centres to both "
+            "raw floats with E ≥ 0 (no top-left rule) give the diagonal's centres to both "
             "triangles, and also fill the right and bottom sides",
             naive_mesh("inclusive"),
             naive_double_hits,
@@ -102,7 +102,7 @@ def _fan_case():
             frozen_inputs(triangles=tris, size=(20, 20), interior=strictly_inside(rim, 20, 20)),
             fill_all,
             check_watertight,
-            "raw floats with E >= 0 hit every spoke's centres twice and the hub 16 times",
+            "raw floats with E ≥ 0 hit every spoke's centres twice and the hub 16 times",
             naive_mesh("inclusive"),
             naive_double_hits,
         )
@@ -197,7 +197,7 @@ add_case(
         ),
         fill_all,
         check_mask,
-        "raw floats with E >= 0 also fill the bottom row and the diagonal",
+        "raw floats with E ≥ 0 also fill the bottom row and the diagonal",
         naive_mesh("inclusive"),
         naive_differs,
     )
@@ -220,7 +220,7 @@ add_case(
         ),
         fill_all,
         check_mask,
-        "raw floats with E >= 0 and no tie rule keep the vertex (1, 1) and (7, 1) on the "
+        "raw floats with E ≥ 0 and no tie rule keep the vertex (1, 1) and (7, 1) on the "
         "sloped edges",
         naive_mesh("inclusive"),
         naive_differs,
@@ -240,7 +240,7 @@ add_case(
         ),
         fill_all,
         check_nothing,
-        "raw floats with E >= 0 and no bounding box fill every centre on the line through the "
+        "raw floats with E ≥ 0 and no bounding box fill every centre on the line through the "
         "vertices, in the whole image, beyond the vertices too (every E is 0 on it)",
         naive_mesh("inclusive"),
         naive_differs,
@@ -260,7 +260,7 @@ add_case(
         ),
         fill_all,
         check_nothing,
-        "raw floats with E >= 0 and no bounding box fill every centre on the line through the two "
+        "raw floats with E ≥ 0 and no bounding box fill every centre on the line through the two "
         "distinct points, in the whole image, beyond the segment's ends too",
         naive_mesh("inclusive"),
         naive_differs,
@@ -332,7 +332,7 @@ def _slivers():
             ),  # fmt: skip
             fill_all,
             check_watertight,
-            "raw floats with E >= 0 draw the whole row twice, both vertices' centres "
+            "raw floats with E ≥ 0 draw the whole row twice, both vertices' centres "
             "included (columns 0..60)",
             naive_mesh("inclusive"),
             naive_double_hits,

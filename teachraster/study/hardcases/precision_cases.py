@@ -234,8 +234,12 @@ def _snap_cases():
         culled = fills.extra
         check_finite(fills)
         fill = fills.fills[0]
-        assert Triangle(flip[0]).signed_area > 0, "case set-up: unsnapped should be clockwise"
-        assert fill.trace.signed_area < 0, "the snapped triangle should be counter-clockwise"
+        assert Triangle(flip[0]).signed_area > 0, (
+            "case set-up: unsnapped should be clockwise on screen"
+        )
+        assert fill.trace.signed_area < 0, (
+            "the snapped triangle should be counter-clockwise on screen"
+        )
         want = np.zeros((6, 6), dtype=bool)
         want[2, 2] = True
         bad = fill.coverage != want
@@ -253,7 +257,9 @@ def _snap_cases():
     add_case(
         HardCase(
             "snap_flips_winding",
-            "a tiny clockwise triangle whose snapped vertices run counter-clockwise",
+            # on screen, as CONVENTIONS names facing (the y-down numbers run the other way)
+            "a tiny triangle, clockwise on screen (back-facing), its snapped vertices "
+            "counter-clockwise on screen (front-facing)",
             "triangle",
             "everything follows the snapped triangle: it is front-facing (cull='front' "
             "removes it, cull='back' keeps it) and covers exactly pixel (2, 2), where its "

@@ -104,7 +104,10 @@ export function pointAnswered(given, box) {
 
 export function pointVerdict(answer, given, tolerance) {
   const gap = Math.hypot(given[0] - answer[0], given[1] - answer[1]);
-  return { gap, correct: gap <= tolerance };
+  // a marker on the answer but for the float noise of its screen-to-data conversion is on it:
+  // "1.78e-15 px from the answer" read as noise to a student (review r236 S-6; point_gap)
+  const noise = 1e-9 * Math.max(1, Math.abs(answer[0]), Math.abs(answer[1]));
+  return { gap: gap <= noise ? 0 : gap, correct: gap <= tolerance };
 }
 
 // the point question's instruction: the arrow keys move the marker too, once the figure has
