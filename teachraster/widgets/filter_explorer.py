@@ -295,10 +295,7 @@ class FilterExplorer:
             "grazing floor up to 16 times: there max aniso matters. The ring in the error "
             'panel marks the worst pixel, its error the "max" under it.',
         )
-        # two rows of two: in one wrapping row the four controls took four lines of a 315-px
-        # column (test_browser_layout allows three)
-        controls = widgets.VBox([control_row([self.tilt, self.filter]),
-                                 control_row([self.view, self.max_anisotropy])])  # fmt: skip
+        controls = _two_rows([self.tilt, self.filter], [self.view, self.max_anisotropy])
         self.widget = projector_text(widgets.VBox([title, controls, *info_widgets,
                                                    self.display.widget]), title)  # fmt: skip
         self._ahead = None
@@ -514,3 +511,9 @@ class FilterExplorer:
         self._toggles.close()
         self.display.close()
         close_tree(self.widget)
+
+
+def _two_rows(first, second) -> widgets.VBox:
+    """Two wrapping rows of controls: in one, the explorer's four controls took four lines of a
+    315-px column (a 1024 x 768 projector at 150 %; test_browser_layout allows three)."""
+    return widgets.VBox([control_row(first), control_row(second)])
