@@ -135,6 +135,20 @@ export default { render };
 """
 
 
+def clicked_point(fig, ax, value, *, inside: bool = False):
+    """The data point of ``ax`` under a click on the picture of ``fig``, from the click's
+    ``value`` (its fraction of the picture from the top left, as :func:`click_image` sends it);
+    None for no click, or, with ``inside``, for a click outside ``ax``."""
+    if len(value) < 2:
+        return None
+    width, height = fig.canvas.get_width_height()
+    # the picture's fraction from its top left -> display pixels (y up) -> data
+    point = (value[0] * width, (1.0 - value[1]) * height)
+    if inside and not ax.get_window_extent().contains(*point):
+        return None
+    return tuple(ax.transData.inverted().transform(point))
+
+
 def click_image(alt: str = ""):
     """A PNG image widget that reports clicks as ``click`` = [x, y, n] (fractions of its
     width and height from the top left, n counting clicks), or None without anywidget."""
@@ -609,14 +623,9 @@ class FrameInspector(Holdable):
             self.click_at(event.xdata, event.ydata)
 
     def _on_click(self, change) -> None:
-        value = change["new"]
-        if len(value) < 2:
-            return
-        width, height = self.fig.canvas.get_width_height()
-        # the image's fraction from its top left -> display pixels (y up) -> data
-        point = (value[0] * width, (1.0 - value[1]) * height)
-        x, y = self.ax.transData.inverted().transform(point)
-        self.click_at(x, y)
+        point = clicked_point(self.fig, self.ax, change["new"])
+        if point is not None:
+            self.click_at(*point)
 
     def _pixel_changed(self, change) -> None:
         if self._quiet:

@@ -29,7 +29,7 @@ from .common import (
     title_html,
 )
 from .display import FigureDisplay, new_figure, png_bytes, resolve_backend
-from .frame_inspector import click_image
+from .frame_inspector import click_image, clicked_point
 
 #: Up to 4 samples the left panel's covered fraction is a light grey under the dots (``Greys``
 #: from 0 to 1 / FEW_SAMPLES_GREY); with more it is the picture, in the colour map of lesson
@@ -275,14 +275,9 @@ class PixelInspector(Holdable):
             self.click_at(event.xdata, event.ydata)
 
     def _on_click(self, change) -> None:
-        value = change["new"]
-        if len(value) < 2:
-            return
-        width, height = self.fig.canvas.get_width_height()
-        # the picture's fraction from its top left -> display pixels (y up) -> data
-        point = (value[0] * width, (1.0 - value[1]) * height)
-        if self._left.get_window_extent().contains(*point):
-            self.click_at(*self._left.transData.inverted().transform(point))
+        point = clicked_point(self.fig, self._left, change["new"], inside=True)
+        if point is not None:
+            self.click_at(*point)
 
     def _changed(self, change) -> None:
         if self._quiet:
