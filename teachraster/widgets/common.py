@@ -117,6 +117,13 @@ def control_row(children, **layout) -> widgets.HBox:
         flex_flow="row wrap", align_items="center", max_width="100%", **layout))  # fmt: skip
 
 
+def control_rows(*rows) -> widgets.VBox:
+    """Several :func:`control_row` s, one under another: four controls in one wrapping row took
+    four lines of a 315-px column (a 1024 x 768 projector at 150 %), two rows of two take two
+    lines each at most (test_browser_layout allows three)."""
+    return widgets.VBox([control_row(row) for row in rows])
+
+
 #: what a renewed slider takes over from the one it replaces (:func:`renew_slider`); the
 #: Layout and the style are shared (closing a widget leaves them open)
 _SLIDER_TRAITS = ("description", "description_allow_html", "tooltip", "step", "orientation",

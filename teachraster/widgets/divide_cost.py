@@ -32,7 +32,7 @@ from ..study.operation_counts import ATTRIBUTES, PRICES, interpolation_count
 from .ahead import PicturesAhead, show_kept
 from .common import (
     Shown,
-    control_row,
+    control_rows,
     fit_width,
     labelled,
     projector_text,
@@ -261,11 +261,9 @@ class DivideCostExplorer(Shown):
             "addition = 1). Vermillion: the Pareto front, the variants for which "
             f"{FRONT_DEFINITION}. Grey: off it. Hollow: on its line, off it.</span>",
         )
-        # the two choices on one line, the two sliders under them: in one wrapping row the four
-        # controls took four lines of a 592-px column, each alone
-        controls = widgets.VBox([
-            control_row([labelled("prices", self.prices), labelled("error", self.error)]),
-            control_row([self.divide, self.attributes])])  # fmt: skip
+        # the two choices on one line, the two sliders under them
+        controls = control_rows([labelled("prices", self.prices), labelled("error", self.error)],
+                                [self.divide, self.attributes])  # fmt: skip
         self.widget = projector_text(
             widgets.VBox([title, controls, self.info, self.display.widget]), title
         )

@@ -19,7 +19,7 @@ from .ahead import TogglesAhead, show_kept
 from .common import (
     Shown,
     close_tree,
-    control_row,
+    control_rows,
     fit_width,
     font_scale,
     later,
@@ -295,7 +295,7 @@ class FilterExplorer:
             "grazing floor up to 16 times: there max aniso matters. The ring in the error "
             'panel marks the worst pixel, its error the "max" under it.',
         )
-        controls = _two_rows([self.tilt, self.filter], [self.view, self.max_anisotropy])
+        controls = control_rows([self.tilt, self.filter], [self.view, self.max_anisotropy])
         self.widget = projector_text(widgets.VBox([title, controls, *info_widgets,
                                                    self.display.widget]), title)  # fmt: skip
         self._ahead = None
@@ -511,9 +511,3 @@ class FilterExplorer:
         self._toggles.close()
         self.display.close()
         close_tree(self.widget)
-
-
-def _two_rows(first, second) -> widgets.VBox:
-    """Two wrapping rows of controls: in one, the explorer's four controls took four lines of a
-    315-px column (a 1024 x 768 projector at 150 %; test_browser_layout allows three)."""
-    return widgets.VBox([control_row(first), control_row(second)])
