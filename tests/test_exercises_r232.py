@@ -431,18 +431,27 @@ def _show():
     return space["show"]
 
 
+@pytest.fixture
+def shown(plt, monkeypatch):  # noqa: F811
+    """The figures ``show`` hands to ``plt.show``, whatever the backend's show does with them
+    (an inline backend left by another test closes them: the figure count read 0 in CI)."""
+    figures = []
+    monkeypatch.setattr(plt, "show", lambda *a, **k: figures.append(plt.gcf()))
+    return figures
+
+
 def _stub(*args):
     raise NotImplementedError()
 
 
 @pytest.mark.parametrize("fn", [_stub, lambda *a: None], ids=["raise", "pass"])
 @pytest.mark.parametrize("name", ["classify_block", "hiz_rejects"])
-def test_fig1_one_line_until_the_function_answers(plt, name, fn):  # noqa: F811
+def test_fig1_one_line_until_the_function_answers(plt, shown, name, fn):  # noqa: F811
     """The stub's 9 × 8 in (and 9 × 5.6 in) figures of empty frames are one line now (one figure
     still: every graded check shows one, tests/test_nbgrader.py)."""
     plt.close("all")
     _show()(ex.check(name, fn, budget=60))
-    (figure,) = [plt.figure(n) for n in plt.get_fignums()]
+    (figure,) = shown
     assert tuple(figure.get_size_inches()) == (9.0, 0.35)
     (text,) = figure.axes[0].texts
     assert text.get_text().startswith(f"{name}: ") and "once your function returns answers" in text.get_text()  # fmt: skip
@@ -450,12 +459,12 @@ def test_fig1_one_line_until_the_function_answers(plt, name, fn):  # noqa: F811
 
 @pytest.mark.parametrize(("fn", "height"), [(NO_ACCEPT_BIAS, 3.3 + 4.5), (_variant(), 3.3 + 3.0)],
                          ids=["a pixel differs", "passing"])  # fmt: skip
-def test_fig1_each_part_as_tall_as_what_it_draws(plt, first_words, fn, height):  # noqa: F811
+def test_fig1_each_part_as_tall_as_what_it_draws(plt, shown, first_words, fn, height):  # noqa: F811
     """r232 FIG1: a 9 × 8 in figure left a band of ~110 px between the case and the scene; the
     scene's part is now as tall as its panels, key and (where a pixel differs) explanation."""
     plt.close("all")
     _show()(ex.check("classify_block", fn, budget=120))
-    (figure,) = [plt.figure(n) for n in plt.get_fignums()]
+    (figure,) = shown
     assert figure.get_size_inches()[1] == pytest.approx(height)
     top, bottom = figure.subfigs
     figure.canvas.draw()

@@ -15,6 +15,7 @@ from ...core.validate import as_int, as_size
 from ...pipeline.geometry.camera import perspective
 from ...pipeline.rendering.render_scenes import render
 from ...pipeline.visibility.depth import linear_depth, reversed_depth
+from ...pipeline.visibility.zbuffer import passes_depth_test
 from .. import precision
 from .ground_truth import exact_coverage, screen_offset_px, uv_ground_truth
 from .settings import (
@@ -392,7 +393,8 @@ def greater_passes(depths, writes) -> list[bool]:
     """
     stored, passed = 0.0, []
     for d, writes_depth in zip(depths, writes):
-        passed.append(bool(d > stored))
+        # GL_GREATER is GL_LESS on negated depths: the package's one compare decides it
+        passed.append(bool(passes_depth_test(-d, -stored)))
         if passed[-1] and writes_depth:
             stored = d
     return passed
