@@ -9,11 +9,11 @@ triangle's nearest vertex". M4: a bias added, not taken off, was told "no top-le
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import numpy as np
 import pytest
+from graded_cells import graded_cell
 from test_exercise_8_1_offsets import student
 
 from teachraster import exercises as ex
@@ -155,8 +155,7 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.i
 
 
 def _cell(grade_id: str) -> str:
-    cells = json.loads(NOTEBOOK.read_text())["cells"]
-    return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
+    return graded_cell(NOTEBOOK, grade_id)
 
 
 def test_c1_the_block_walk_is_not_credited_to_pineda():

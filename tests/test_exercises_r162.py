@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from graded_cells import graded_cell
 from test_exercise_8_1_offsets import student
 
 # the fixtures of r149's tests: pyplot, the full words
@@ -275,8 +276,7 @@ def test_c2_the_same_wrong_code_fails_the_same_cases_twice():
 
 
 def _cell(grade_id: str) -> str:
-    cells = json.loads(NOTEBOOK.read_text())["cells"]
-    return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
+    return graded_cell(NOTEBOOK, grade_id)
 
 
 def test_f1_llvmpipe_also_keeps_a_block_one_unit_outside_a_top_or_left_edge():

@@ -15,13 +15,13 @@ package's source and the report again.
 
 from __future__ import annotations
 
-import json
 import math
 import random
 from pathlib import Path
 
 import numpy as np
 import pytest
+from graded_cells import graded_cell
 
 # the fixtures of r162's tests: a first try's words, the full words, pyplot
 from test_exercises_r162 import _plane, first_words, full_words, plt  # noqa: F401
@@ -33,12 +33,8 @@ from teachraster.exercises.report import CheckFailed
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.ipynb"
 
 
-def _cells() -> list:
-    return json.loads(NOTEBOOK.read_text())["cells"]
-
-
 def _cell(grade_id: str) -> str:
-    return next("".join(c["source"]) for c in _cells() if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
+    return graded_cell(NOTEBOOK, grade_id)
 
 
 def _solution(grade_id: str):

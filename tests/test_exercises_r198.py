@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from graded_cells import graded_cell
 
 # the fixtures of r149's tests: pyplot, the full words; r162's: the first try's words
 from test_exercises_r149 import full_words, plt  # noqa: F401
@@ -31,8 +32,7 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.i
 
 
 def _cell(grade_id: str) -> str:
-    cells = json.loads(NOTEBOOK.read_text())["cells"]
-    return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
+    return graded_cell(NOTEBOOK, grade_id)
 
 
 def _solution_with(cell: str, name: str, edits) -> object:

@@ -23,6 +23,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from graded_cells import flat, graded_cell
 from test_exercises_r149 import full_words, plt  # noqa: F401
 from test_exercises_r162 import first_words  # noqa: F401
 from test_exercises_r198 import _hiz_variant, _variant
@@ -34,12 +35,7 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.i
 
 
 def _cell(grade_id: str) -> str:
-    cells = json.loads(NOTEBOOK.read_text())["cells"]
-    return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
-
-
-def _flat(text: str) -> str:
-    return " ".join(text.split())
+    return graded_cell(NOTEBOOK, grade_id)
 
 
 # -- 1 (C): the bound clamped to the vertices' depth range ---------------------------------------
@@ -368,14 +364,14 @@ def test_9_no_review_id_in_the_students_code():
 
 
 def test_10_cell_5_claims_no_highest_bound_and_says_the_farthest_vertex_both_ways():
-    task = _flat(_cell("hiz_rejects_task"))
+    task = flat(_cell("hiz_rejects_task"))
     assert "highest" not in task
     assert "a bound clamped to its depth is refused" in task
     assert "+∞ is accepted there too" in task
 
 
 def test_11_llvmpipes_two_cautions_are_said_apart():
-    task = _flat(_cell("classify_block_task"))
+    task = flat(_cell("classify_block_task"))
     assert "Even at the block's best centre it asks E + 1 < 0" in task
     assert "And its test point lies a step further still" in task
     assert "In its units, at the block's best centre, its reject test asks" not in task

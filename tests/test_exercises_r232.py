@@ -19,7 +19,6 @@ case and the scene. FIG2: a uniform tile has no colour bar; vertex depths at the
 
 from __future__ import annotations
 
-import json
 import math
 import random
 import re
@@ -28,6 +27,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from exercise_solutions import classify_block_loops
+from graded_cells import flat, graded_cell
 from test_exercises_r149 import full_words, plt  # noqa: F401
 from test_exercises_r162 import first_words  # noqa: F401
 from test_exercises_r198 import _hiz_variant, _variant
@@ -41,12 +41,7 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/08_tiles.i
 
 
 def _cell(grade_id: str) -> str:
-    cells = json.loads(NOTEBOOK.read_text())["cells"]
-    return next("".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)  # fmt: skip
-
-
-def _flat(text: str) -> str:
-    return " ".join(text.split())
+    return graded_cell(NOTEBOOK, grade_id)
 
 
 def _kinds(report) -> set[str]:
@@ -227,7 +222,7 @@ def test_m1_the_solution_counts_in_integers_and_the_task_says_why():
     code = _cell("classify_block_solution")
     assert "np.int64" in code and "beta = 0 if top_left else -1" in code
     assert "lesson 10 §4" in code and "2.0**-16" not in code
-    task = _flat(_cell("classify_block_task"))
+    task = flat(_cell("classify_block_task"))
     assert "**Count in integers**, as lesson 10 §4's walker does: at 256 units a pixel" in task
     assert "a fraction of a px² added to a large E₀ rounds away" in task
     assert "compute in float64" not in task and "How far float64 is exact" not in task
@@ -409,7 +404,7 @@ def test_c2_every_82_failure_quotes_arguments_that_rerun_it(first_words):  # noq
 
 
 def test_s1_cell_5_states_the_bound_and_asks_the_why():
-    task = _flat(_cell("hiz_rejects_task"))
+    task = flat(_cell("hiz_rejects_task"))
     assert ("**The bound asked** is the bound that this fact and lesson 10's two give for a few "
             "numbers per tile, with no coverage test: the larger of the plane's minimum over the "
             "tile's pixel centres inside the box (its border included) and the nearest vertex's "

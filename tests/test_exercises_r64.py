@@ -7,11 +7,11 @@ constants in test_checker_constants.
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import pytest
 from exercise_solutions import CORRECT
+from graded_cells import graded_cell
 from reasoning_solutions import CORRECT as REASONING
 from student_variants import classify_every_centre, classify_pixel_corners
 
@@ -132,9 +132,7 @@ def test_the_stub_scene_shows_no_package_picture(plt):
 
 
 def _cell(path: str, grade_id: str) -> str:
-    cells = json.loads((ROOT / path).read_text(encoding="utf-8"))["cells"]
-    cell = next(c for c in cells if c["metadata"].get("nbgrader", {}).get("grade_id") == grade_id)
-    return "".join(cell["source"])
+    return graded_cell(ROOT / path, grade_id)
 
 
 def test_hiz_task_says_which_bound_is_asked_truthfully():
