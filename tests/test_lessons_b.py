@@ -94,8 +94,9 @@ def test_06_review_r238_the_law_the_floor_follows():
     the worst pixel, which the 1024² floor does not follow (4x the pixels cut it 2.1-2.7x). The
     law the measurements support, with its reason: the mean on screen follows N² / pixels
     across (about 4 per halving of N, 2 per doubling of the pixels), the worst pixel less (it
-    lies where w changes most across a piece); the your-turn's N = 8 follows from the 256² and
-    512² lines, and its checker prints the 1024² ones."""
+    lies where w changes most across a piece); the your-turn's estimate of N = 16's worst pixel
+    at 1024² follows from the 256² and 512² lines (r243 P1), and its checker prints the 1024²
+    one."""
     import json
     import textwrap
 
@@ -115,9 +116,9 @@ def test_06_review_r238_the_law_the_floor_follows():
         "more slowly, in $N$ and in the pixels across alike"
     ) in text
     assert f"up to $r = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
-    # the your-turn: 512²'s worst pixel cut once more as from 256² gives N = 8, as 1024² does
-    guess = {n: ns.worst_512[n] / ns.cut_worst[n] for n in bench.SUBDIVISIONS}
-    assert max(n for n, v in guess.items() if v < 1) == 8
+    # the your-turn: 512²'s worst pixel cut once more as from 256² (r243 P1: at N = 16)
+    guess = ns.worst_512[16] / ns.cut_worst[16]
+    assert 2.3 < guess < 2.7 and ns.worst_512[16] / 2 < 2.2
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
@@ -125,12 +126,11 @@ def test_06_review_r238_the_law_the_floor_follows():
     assert "goes like N² / (pixels across)" not in " ".join(cells)
     assert "every pixel is a quarter as wide" not in md
     assert "On screen the mean error goes like $N^2$ divided by the pixels across" in md
-    checker = next(c for c in cells if "def check_longest_n(" in c)
-    scope = {"bench": bench, "textwrap": textwrap}
-    exec(checker, scope)  # as the student runs it, with my_n = None first
-    right, verdict = scope["check_longest_n"](8)
-    assert right and "less than the 2 of the square law" in verdict
-    assert not scope["check_longest_n"](16)[0] and not scope["check_longest_n"](4)[0]
+    checker = next(c for c in cells if "def check_worst_px(" in c)
+    scope = {"bench": bench, "textwrap": textwrap, "np": np}
+    exec(checker, scope)  # as the student runs it, with my_px = None first
+    right, verdict = scope["check_worst_px"](round(guess, 1))
+    assert right and "not the square law's halving" in verdict
 
 
 def test_06_review_r238_integer_prices_held_text_and_float32_bits():
@@ -4506,19 +4506,11 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     assert "**Texels or pixels.**" in quake and "off the screen" in quake
     assert 2.5 < min(ns.px_cut) and max(ns.px_cut) < 4  # r238 C1: "between 2 and 4", printed
     assert [ax.get_title() for ax in ns.err_axes] == ["in the texture", "on screen"]
-    # the Your turn: asked after §1, before any 1024² number is printed; 8 is right, its
-    # neighbours are not; Run All leaves it waiting for an answer
+    # the Your turn: asked after §1, before any 1024² number is printed; Run All leaves it
+    # waiting for an answer (r243 P1: its answers are checked in test_06_review_r243_...)
     at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
-    assert cells[at + 1].startswith("my_n = None") and "1024" not in printed.split("Give my_n")[0]
-    assert "Give my_n one of [2, 4, 8, 16, 32] first" in printed and ns.my_right is False
-    for answer, right in (
-        (8, True),
-        (4, False),
-        (16, False),
-    ):  # the check cell, as a student runs it
-        scope = {"bench": bench, "textwrap": __import__("textwrap")}
-        exec(cells[at + 1].replace("my_n = None", f"my_n = {answer}"), scope)
-        assert scope["my_right"] is right, answer
+    assert cells[at + 1].startswith("my_px = None") and "1024" not in printed.split("Give my_px")[0]
+    assert "Give my_px your estimate in pixels" in printed and ns.my_right is False
     # reverse-Z: in the table, on the chart's floor, in the text and the summary
     rev = next(r for r in ns.rows if r["variant"] == "reversed float32")
     assert rev["error"] == 0 and ns.dz_far["reversed"] < bench.DEPTH_GAP < ns.dz_far["perspective"]
@@ -4528,7 +4520,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     )
     assert "float32 with reverse-Z is the one to choose" in md
     assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
-    assert "reversed" in [t.get_text() for t in ns.ax.texts]  # the chart names it
+    assert "reversed float32" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
     assert ns.f32_vs_f4[1_000_000] == 0 < ns.f32_vs_f4[100_000] < ns.f32_vs_f4[0] + 1
     assert (
@@ -4552,6 +4544,134 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         assert "as in the lesson's depth chart" not in caption
     finally:
         ex.close()
+
+
+def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wording():
+    """Review r243. C1: §1 and the slider's section said "a quarter from Maxwell to Turing"
+    beside a table printing the A100 at a quarter: one statement now, printed (the lines "the
+    reciprocal's share") and quoted alike in §1, the slider's section and "What a GPU pays".
+    FIG1: the explorer's slider read-outs at their labels' 16 px, k in the status line, the
+    cost axis labelled near its cheapest point at every attribute count (at 32 its first label
+    was 50, over affine's 32). FIG2: reverse-Z in unorm24 measured (wrong where window unorm24
+    is) and each 32-bit point named with its formats. P1: the Your turn asks N = 16's worst
+    pixel at 1024², where the square law and the measured cut give different answers; its
+    check fails on the square law and says why. M2: float16 (mediump) beside float32. S1:
+    both causes of cracks in the summary; S2: no visible Markdown points at held output as if
+    shown; S4: 64 bits with the sign against 35 with theirs."""
+    import functools
+    import json
+    import textwrap
+    from types import SimpleNamespace
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study import bench
+    from teachraster.widgets.divide_cost import ATTRIBUTE_COUNTS, READOUT_CSS, DivideCostExplorer
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    kinds = [c["cell_type"] for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, k in zip(cells, kinds) if k == "markdown").split())
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    # C1: the generations at each share, printed, and every statement of them alike
+    assert ns.shares == {6: ["Kepler"], 8: ["Ampere GA10x", "Ada", "Hopper"],
+                         4: ["Maxwell", "Pascal GP100", "Pascal", "Volta, Turing", "Ampere A100"]}  # fmt: skip
+    assert "  1/4: Maxwell, Pascal GP100, Pascal, Volta, Turing, Ampere A100" in printed
+    assert "  1/8: Ampere GA10x, Ada, Hopper" in printed
+    assert "Maxwell to Turing" not in md and "On a current GPU a reciprocal" not in md
+    for said in ("reciprocal at an eighth of it on GA10x, Ada and Hopper (a quarter from Maxwell "
+                 "to the A100", "On GA10x, Ada and Hopper a reciprocal runs on a special-function "
+                 "unit at an eighth of the multiply-add rate (a quarter from Maxwell to the A100",
+                 "a quarter on Maxwell (2014), Pascal (2016), Volta and Turing (2017–18) and the "
+                 "A100 (2020), and an eighth on Ampere's GA10x (2020), Ada and Hopper (2022)"):  # fmt: skip
+        assert said in md, said
+    # FIG1: read-outs at 16 px, k in the status line, a label near the cheapest point
+    assert ".widget-readout {font-size: 16px}" in READOUT_CSS
+    ex = DivideCostExplorer(ns.interp_rows, backend="image")
+    try:
+        assert READOUT_CSS in ex.widget.children[0].value
+        assert all("tr-readout" in s._dom_classes for s in (ex.divide, ex.attributes))
+        ex.prices.value = "GPU (Ampere GA10x, Ada, Hopper)"
+        ex.divide.value = 128.0
+        for k in ATTRIBUTE_COUNTS:
+            ex.attributes.value = k
+            ex.fig.canvas.draw()
+            lo, hi = ex.ax.get_xlim()
+            shown = [t.get_position()[0] for t in ex.ax.get_xticklabels()
+                     if t.get_text() and lo <= t.get_position()[0] <= hi]  # fmt: skip
+            cheapest = min(p.get_xdata()[0] for p in ex.art.points.values())
+            assert min(shown) <= 1.3 * cheapest, (k, shown, cheapest)
+            assert f"attributes k = {k}:" in ex.info.value
+        assert 30.0 in shown and cheapest == 32.0  # at k = 32: affine's 32, labelled from 30
+    finally:
+        ex.close()
+    # FIG2: reversed unorm24 wrong where window unorm24 is; the chart names each format
+    depth = {r["variant"]: r for r in ns.rows if r["group"] == "depth"}
+    assert depth["reversed unorm24"]["error"] == depth["window unorm24"]["error"] > 0
+    assert (
+        depth["reversed unorm24"]["stored_bits"] == 32 and depth["reversed float32"]["error"] == 0
+    )
+    assert ns.dz24["reversed"] == pytest.approx(ns.dz24["perspective"])
+    assert ns.dz24["reversed"] > bench.DEPTH_GAP  # no finer than window unorm24's at 500
+    assert "the same pixels as window unorm24: True" in printed
+    labels = [t.get_text() for t in ns.ax.texts if t.get_visible()]
+    assert "window float32, unorm24\nreversed unorm24" in labels and "reversed float32" in labels
+    assert "reversed" not in labels and "window" in labels  # unorm16's column: one format
+    held = " ".join(next(c for c in cells if "dz24['reversed']" in c and "display(" in c).split())
+    assert "Reverse-Z needs a float." in held
+    assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
+    # P1: the square law (512²'s worst halved) and the measured cut answer differently
+    at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
+    asked = " ".join(cells[at].split())
+    assert "How many pixels off will $N = 16$'s worst pixel be?" in asked and "1024 × 1024" in asked
+    fast = SimpleNamespace(floor_errors=functools.cache(bench.floor_errors))
+    scope = {"bench": fast, "textwrap": textwrap, "np": np}
+    exec(cells[at + 1], scope)  # as the student runs it
+    check = scope["check_worst_px"]
+    half, cut = ns.worst_512[16], ns.cut_worst[16]
+    right, verdict = check(round(half / 2, 2))
+    assert not right and "the square law" in " ".join(verdict.split())
+    assert "where w changes most across a piece" in " ".join(verdict.split())
+    right, verdict = check(round(half / cut, 2))
+    assert right and "not the square law's halving" in verdict
+    assert not check(round(half / 4, 2))[0] and not check(round(half, 2))[0]
+    assert check(None) == (False, "no answer yet") and check(True)[0] is False
+    measured = float(fast.floor_errors(1024, "subdivided", 16)[1].max())
+    assert abs(np.log(measured * cut / half)) < abs(np.log(measured * 2 / half)) / 2
+    # M2: float16 beside float32, about half its spacing, printed and quoted
+    assert ns.f16_bits == 11 and ns.f16_step == 2.0**-11
+    assert (
+        0.45 < ns.f16_worst / (ns.f16_step * bench.TEXELS) < 0.52
+        and ns.f16_worst > 10 * ns.f32_worst
+    )
+    assert "handed on in float16 (11 significand bits)" in printed
+    assert "1/8 texel\n  of the study's 256-texel texture, 2 of a 4096-texel one" in printed
+    for said in ("**Half precision**", "`mediump`", "`RelaxedPrecision`",
+                 "miss by about half of float16's spacing", "the bits it hands on are still a choice"):  # fmt: skip
+        assert said in md, said
+    # S1, S4: the summary
+    summary = " ".join(next(c for c in cells if c.startswith("## Summary")).split())
+    assert ("**Cracks** come from an inconsistent tie rule, or from a shared edge rounded "
+            "differently in its two triangles") in summary  # fmt: skip
+    assert (
+        "keeps 64 bits with the sign, more than the 35 the study's edge functions need with theirs"
+        in summary
+    )
+    assert "63 bits and a sign" not in md + ns.EDGE_TEXT and max(ns.needed_least.values()) == 35
+    assert (
+        "keeps 64 bits with the sign, and the mesh's edge functions need 35 with theirs"
+        in " ".join(ns.EDGE_TEXT.split())
+    )
+    assert "int64 holds it (64 bits with the sign), int32 does not" in printed
+    # S2: Markdown that names a held table or chart says when it is shown
+    for heading, held in (("## 3. Cracks", "q_bits"), ("## 4. Fill", "q_fill"),
+                          ("## 6. Error against cost", "q_depth")):  # fmt: skip
+        text = " ".join(next(c for c in cells if c.startswith(heading)).split())
+        assert f"shown once {held} is answered)" in text, heading
+    for gone in ("gaps 0 and double 0 for every variant (for", "the table's odd one",
+                 "The table's `add` column", "bits each occupies per sample, below,"):  # fmt: skip
+        assert gone not in md, gone
 
 
 @pytest.mark.notebook

@@ -114,7 +114,7 @@ NVIDIA_RATES = {"Kepler (3.x, 2012)": (192, 32), "Maxwell (5.x, 2014)": (128, 32
 GPU_NOW = "Ada (8.9, 2022)"
 #: A GPU's prices in issue cycles of its multiply-add pipe (Ampere GA10x, Ada and Hopper,
 #: :data:`NVIDIA_RATES`): an addition, a multiply or a multiply-add 1, a reciprocal 8 (its
-#: rate is an eighth of theirs; a quarter from Maxwell to Turing). A divide of the model is
+#: rate is an eighth of theirs; a quarter from Maxwell to the A100). A divide of the model is
 #: that reciprocal.
 GPU_CYCLES = {
     "divides": NVIDIA_RATES[GPU_NOW][0] / NVIDIA_RATES[GPU_NOW][1],

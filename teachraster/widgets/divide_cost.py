@@ -23,7 +23,7 @@ from types import SimpleNamespace
 
 import ipywidgets as widgets
 import numpy as np
-from matplotlib.ticker import FormatStrFormatter, LogLocator
+from matplotlib.ticker import FixedLocator, FormatStrFormatter, LogLocator
 from matplotlib.transforms import Bbox
 
 from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
@@ -50,7 +50,7 @@ RIGHT_ROOM = 0.03
 ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
 
 #: The slider's divide costs in cycles, 1 to 128: about a quarter of an octave apart, and
-#: holding the prices the lesson prints (1, 2, 4 from Maxwell to Turing, a current GPU's 8,
+#: holding the prices the lesson prints (1, 2, 4 from Maxwell to the A100, a current GPU's 8,
 #: the Pentium's 17, 128, and 30 and 40 either side of 16 attributes' limit of 31). A starting price not among them is
 #: added, so the slider starts exactly where it is asked to.
 DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 17, 20, 24, 30, 40, 48, 64, 80, 96, 128)
@@ -59,6 +59,10 @@ DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 17, 20, 24, 30, 40, 48, 64, 8
 STATUS_PX = 18
 #: The caption's font size (CSS px), and the title's, above the status line's.
 CAPTION_PX, TITLE_PX = 16, 21
+#: The sliders' read-outs ("17", "2") at their labels' size (the projector's 16 px,
+#: ``common.PROJECTOR_CSS``, which sizes the labels but not the read-outs): at JupyterLab's 13
+#: px they were the smallest text on the widget (review r243 FIG1).
+READOUT_CSS = "<style>.tr-projector .tr-readout .widget-readout {font-size: 16px}</style>"
 
 #: The attribute counts offered, 1 to 32: the study's u and v (2), and a GPU's 16 and more
 #: (Fatahalian, CMU 15-462 *Texture*: up to 128 scalar attributes per triangle).
@@ -91,6 +95,26 @@ def cost_axis(costs) -> tuple[float, float]:
     """
     lo, hi = float(np.min(costs)) / 1.3, float(np.max(costs))
     return lo, float(hi * 10 ** (0.02 + 0.12 * np.log10(hi / lo)))
+
+
+def cost_ticks(lo: float, hi: float) -> list[float]:
+    """The cost axis' labelled values in [``lo``, ``hi``]: 1-2-5, and where the first of
+    those lies over 1.5 times above ``lo``, one more below it at 1.5, 3 or 7 of a decade, so
+    that the cheapest points have a label near them (at 32 attributes affine's 32 cycles
+    sat on an axis labelled from 50 only: review r243 FIG1).
+
+    >>> cost_ticks(24.6, 258.0), cost_ticks(1.5, 246.0)[:3]
+    ([30.0, 50.0, 100.0, 200.0], [2.0, 5.0, 10.0])
+    """
+    decades = range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1)
+
+    def at(subs):
+        return [v for e in decades for m in subs if lo <= (v := round(m * 10.0**e, 9)) <= hi]
+
+    ticks = at((1, 2, 5))
+    if ticks and ticks[0] > 1.5 * lo:
+        ticks = [v for v in at((1.5, 3, 7)) if v < ticks[0]][:1] + ticks
+    return ticks
 
 
 def short_name(variant: str) -> str:
@@ -229,14 +253,14 @@ class DivideCostExplorer(Shown):
         self.divide = widgets.SelectionSlider(
             options=[(f"{v:g}", v) for v in divide_positions(divide)], value=float(divide),
             description="divide =", style={"description_width": "initial"},
-            layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
+            layout=fit_width(widgets.Layout(width="420px"))).add_class("tr-readout")  # fmt: skip
         self.error = widgets.ToggleButtons(options=list(ERRORS), value=error)
         if attributes not in ATTRIBUTE_COUNTS:
             raise ValueError(f"attributes must be one of {ATTRIBUTE_COUNTS}, got {attributes!r}")
         self.attributes = widgets.SelectionSlider(
             options=[(str(k), k) for k in ATTRIBUTE_COUNTS], value=attributes,
             description="attributes k =", style={"description_width": "initial"},
-            layout=fit_width(widgets.Layout(width="420px")))  # fmt: skip
+            layout=fit_width(widgets.Layout(width="420px"))).add_class("tr-readout")  # fmt: skip
         self._style = style
         with style_context(style):
             self._new_figure()
@@ -255,7 +279,7 @@ class DivideCostExplorer(Shown):
         self.error.observe(lambda change: self.update(replot=True), "value")
         self.prices.observe(lambda change: self._new_prices(), "value")
         title = title_html(
-            f"<span style='font-size:{TITLE_PX}px'>What a divide costs decides the price of "
+            f"{READOUT_CSS}<span style='font-size:{TITLE_PX}px'>What a divide costs decides the price of "
             "exactness</span>",
             f"<span style='font-size:{CAPTION_PX}px'>Cost per pixel in issue cycles (an "
             "addition = 1). Vermillion: the Pareto front, the variants for which "
@@ -346,8 +370,8 @@ class DivideCostExplorer(Shown):
             short=short_name, xlim=self.xlim, hollow_on_line=True,
         )  # fmt: skip
         # labels at 1-2-5 as lesson 06's own charts: a decade apart, only 10 and 100 were
-        # (and 10⁰, 10¹, 10² on the cost axis: r11)
-        self.ax.xaxis.set_major_locator(LogLocator(subs=(1, 2, 5)))
+        # (and 10⁰, 10¹, 10² on the cost axis: r11), one more near the axis' cheap end
+        self.ax.xaxis.set_major_locator(FixedLocator(cost_ticks(*self.xlim)))
         self.ax.yaxis.set_major_locator(error_locator(*self.ax.get_ylim(), self.art.floor))
         self.ax.xaxis.set_major_formatter(FormatStrFormatter("%g"))
         floor_ticks(self.ax, self.art.floor, FormatStrFormatter("%g"))
@@ -436,7 +460,8 @@ class DivideCostExplorer(Shown):
                         f"{limit:.3g} {'cycle' if limit == 1 else 'cycles'}.</b> ")  # fmt: skip
         multiply = f"a multiply {self._multiply:g}"
         return (f"<div style='font-size:{STATUS_PX}px;line-height:1.35'>{headline}"
-                f"divide = {self.divide.value:.3g} {cycles} ({multiply}): the divide is "
+                f"divide = {self.divide.value:.3g} {cycles} ({multiply}), attributes "
+                f"k = {k}: the divide is "
                 f"<b>{share:.0%}</b> of perspective-correct's cost; perspective-correct costs "
                 f"<b>{ratio:.3g}×</b> affine{saving}. "
                 f"Front, cheapest first: {names}</div>")  # fmt: skip

@@ -42,8 +42,9 @@ fill
     same fill of the bare positions, in the same rounds: the coverage alone.
 depth
     ``tr.render`` with each ``depth_format`` storing either the window depth (the hyperbola
-    ``z' = n + f - fn/z`` rescaled to [0, 1]) or a depth linear in view distance, and float32
-    reverse-Z (the reversed depth, the test reversed: :func:`greater_passes`), on pairs of
+    ``z' = n + f - fn/z`` rescaled to [0, 1]) or a depth linear in view distance, and
+    reverse-Z (the reversed depth, the test reversed: :func:`greater_passes`) in float32 and
+    in unorm24 (where it changes nothing), on pairs of
     nearly coplanar overlapping triangles at distances 1 to 500, and on crossing pairs (a
     camera-facing triangle pierced by a slanted one, :func:`slanted_pairs`) at distances 1 to
     900. Error: depth-order inversions, pixels whose visible triangle differs from the true

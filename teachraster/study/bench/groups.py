@@ -87,15 +87,17 @@ def floor_errors(size: int, interpolation: str, subdivision: int = 16, fills=Non
     per covered pixel, the error of u and v in texels (P, 2) and how far on screen it moves
     the texture, in pixels (P,) (:func:`~.ground_truth.screen_offset_px`); and the two
     triangles' coverages. ``fills`` are the two triangles' fills when already made.
-    ``"perspective float32"`` interpolates perspective-correctly in float32 (:func:`_float32_fill`).
+    ``"perspective float32"`` interpolates perspective-correctly in float32 (:func:`_float32_fill`),
+    ``"perspective float16"`` hands that result on in half precision (GLSL ES ``mediump``).
 
     >>> texels, px, _ = floor_errors(64, "subdivided", 2)
     >>> texels.shape[1], bool(px.max() < 1 < texels.max())   # far on the texture, near on screen
     (2, True)
     """
     xy, w, uv = floor_quad(size)
-    if fills is None and interpolation == "perspective float32":
-        fills = [_float32_fill(xy[t], w[t], uv[t], size) for t in range(2)]
+    if fills is None and interpolation in ("perspective float32", "perspective float16"):
+        handed = np.float16 if interpolation.endswith("16") else np.float32
+        fills = [_float32_fill(xy[t], w[t], uv[t], size, handed) for t in range(2)]
     if fills is None:
         fills = [rasterize(Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}), size, size,
                            interpolation=interpolation, subdivision=subdivision)
@@ -110,12 +112,15 @@ def floor_errors(size: int, interpolation: str, subdivision: int = 16, fills=Non
     return np.concatenate(texels), np.concatenate(px), covs
 
 
-def _float32_fill(xy, w, uv, size: int) -> SimpleNamespace:
+def _float32_fill(xy, w, uv, size: int, handed=np.float32) -> SimpleNamespace:
     """One floor triangle filled perspective-correctly in float32, as a shader receives it:
     the screen-space planes of u/w, v/w and 1/w (set up in float64, stored in float32)
     evaluated at each covered pixel centre in float32, then u = (u/w) · (1 / (1/w)), the
-    reciprocal and the products rounded to float32 too. ``coverage`` and ``attrs["uv"]`` as
-    a fill's (float64 values that float32 holds exactly; NaN outside)."""
+    reciprocal and the products rounded to float32 too. ``handed=np.float16``: u and v then
+    rounded to half precision, as a ``mediump`` varying (or SPIR-V ``RelaxedPrecision``) hands
+    them to a shader that keeps them in 16 bits; the interpolation itself stays float32.
+    ``coverage`` and ``attrs["uv"]`` as a fill's (float64 values that float32 holds exactly;
+    NaN outside)."""
     cov = rasterize(Triangle(xy), size, size).coverage
     rows, cols = np.nonzero(cov)
     planes = np.linalg.solve(np.column_stack([xy, np.ones(3)]),
@@ -124,7 +129,7 @@ def _float32_fill(xy, w, uv, size: int) -> SimpleNamespace:
     x, y = (cols + 0.5).astype(np.float32), (rows + 0.5).astype(np.float32)
     q = x[:, None] * a + y[:, None] * b + c  # float32 throughout
     uv_at = np.full((size, size, 2), np.nan)
-    uv_at[rows, cols] = q[:, :2] * (np.float32(1.0) / q[:, 2:])
+    uv_at[rows, cols] = (q[:, :2] * (np.float32(1.0) / q[:, 2:])).astype(handed)
     return SimpleNamespace(coverage=cov, attrs={"uv": uv_at})
 
 

@@ -17,10 +17,12 @@ MESH_OFFSETS = (0, 100_000, 1_000_000)
 DEPTH_FORMATS = ("float64", "float32", "unorm24", "unorm16")
 DEPTH_MAPPINGS = ("window", "linear")
 #: The depth variants, (mapping, format): every format for both mappings, and reverse-Z
-#: (``reversed_depth``, the test reversed: greater wins) in float32, the one format it is for
-#: (a unorm's even steps make reversing change nothing: lesson 05b §4).
+#: (``reversed_depth``, the test reversed: greater wins) in float32, the format it is for, and
+#: in unorm24, where a unorm's even steps make reversing change nothing (lesson 05b §4): a row
+#: that shows it (review r243 FIG2: the chart read as if reverse-Z helped unorm24 too).
 DEPTH_VARIANTS = tuple((m, f) for m in DEPTH_MAPPINGS for f in DEPTH_FORMATS) + (
     ("reversed", "float32"),
+    ("reversed", "unorm24"),
 )
 #: View distances of the depth pairs, and the gap between the two triangles of a pair.
 DEPTH_DISTANCES = (1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0)
