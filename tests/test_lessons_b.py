@@ -4546,34 +4546,26 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         ex.close()
 
 
-def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wording():
-    """Review r243. C1: §1 and the slider's section said "a quarter from Maxwell to Turing"
-    beside a table printing the A100 at a quarter: one statement now, printed (the lines "the
-    reciprocal's share") and quoted alike in §1, the slider's section and "What a GPU pays".
-    FIG1: the explorer's slider read-outs at their labels' 16 px, k in the status line, the
-    cost axis labelled near its cheapest point at every attribute count (at 32 its first label
-    was 50, over affine's 32). FIG2: reverse-Z in unorm24 measured (wrong where window unorm24
-    is) and each 32-bit point named with its formats. P1: the Your turn asks N = 16's worst
-    pixel at 1024², where the square law and the measured cut give different answers; its
-    check fails on the square law and says why. M2: float16 (mediump) beside float32. S1:
-    both causes of cracks in the summary; S2: no visible Markdown points at held output as if
-    shown; S4: 64 bits with the sign against 35 with theirs."""
-    import functools
+def _06_r243():
+    """Lesson 06's run, sources and printed lines, as the r243 tests read them."""
     import json
-    import textwrap
-    from types import SimpleNamespace
 
     from notebook_runs import executed, streams
-
-    from teachraster.study import bench
-    from teachraster.widgets.divide_cost import ATTRIBUTE_COUNTS, READOUT_CSS, DivideCostExplorer
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     kinds = [c["cell_type"] for c in nb["cells"]]
     md = " ".join(" ".join(c for c, k in zip(cells, kinds) if k == "markdown").split())
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    return ns, cells, md, streams(executed("06_what_accuracy_costs").notebook())
+
+
+def test_06_review_r243_c1_one_statement_of_the_reciprocals_price():
+    """Review r243 C1: §1 and the slider's section said "a quarter from Maxwell to Turing"
+    beside a table printing the A100 at a quarter too: one statement now, printed (the lines
+    "the reciprocal's share") and quoted alike in §1, the slider's section and "What a GPU
+    pays"."""
+    ns, cells, md, printed = _06_r243()
     # C1: the generations at each share, printed, and every statement of them alike
     assert ns.shares == {6: ["Kepler"], 8: ["Ampere GA10x", "Ada", "Hopper"],
                          4: ["Maxwell", "Pascal GP100", "Pascal", "Volta, Turing", "Ampere A100"]}  # fmt: skip
@@ -4586,6 +4578,16 @@ def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wordi
                  "a quarter on Maxwell (2014), Pascal (2016), Volta and Turing (2017–18) and the "
                  "A100 (2020), and an eighth on Ampere's GA10x (2020), Ada and Hopper (2022)"):  # fmt: skip
         assert said in md, said
+
+
+def test_06_review_r243_fig1_explorer_readouts_k_and_the_cheap_end_labelled():
+    """Review r243 FIG1: the explorer's slider read-outs were 13 px beside 16-px labels, the
+    status line did not repeat k, and at 32 attributes the cost axis' first label was 50, over
+    affine's 32: read-outs at 16 px, k in the status line, a label near the cheapest point at
+    every attribute count."""
+    from teachraster.widgets.divide_cost import ATTRIBUTE_COUNTS, READOUT_CSS, DivideCostExplorer
+
+    ns = lesson("06_what_accuracy_costs")
     # FIG1: read-outs at 16 px, k in the status line, a label near the cheapest point
     assert ".widget-readout {font-size: 16px}" in READOUT_CSS
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
@@ -4606,6 +4608,16 @@ def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wordi
         assert 30.0 in shown and cheapest == 32.0  # at k = 32: affine's 32, labelled from 30
     finally:
         ex.close()
+
+
+def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
+    """Review r243 FIG2: the depth chart's 32-bit column was ticked "float32 / unorm24" and its
+    floor point labelled "reversed": read as if reverse-Z helped unorm24 too. Reverse-Z in
+    unorm24 is measured (wrong where window unorm24 is) and each 32-bit point is named with
+    its formats."""
+    from teachraster.study import bench
+
+    ns, cells, md, printed = _06_r243()
     # FIG2: reversed unorm24 wrong where window unorm24 is; the chart names each format
     depth = {r["variant"]: r for r in ns.rows if r["group"] == "depth"}
     assert depth["reversed unorm24"]["error"] == depth["window unorm24"]["error"] > 0
@@ -4621,6 +4633,20 @@ def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wordi
     held = " ".join(next(c for c in cells if "dz24['reversed']" in c and "display(" in c).split())
     assert "Reverse-Z needs a float." in held
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
+
+
+def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
+    """Review r243 P1: "the longest N under one pixel at 1024²" came out 8 under the square
+    law and under the measured cut alike. The Your turn asks N = 16's worst pixel at 1024²,
+    where they differ (2.05 against 2.46; 2.51 measured); its check fails on the square law and
+    says why."""
+    import functools
+    import textwrap
+    from types import SimpleNamespace
+
+    from teachraster.study import bench
+
+    ns, cells, md, printed = _06_r243()
     # P1: the square law (512²'s worst halved) and the measured cut answer differently
     at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
     asked = " ".join(cells[at].split())
@@ -4639,6 +4665,15 @@ def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wordi
     assert check(None) == (False, "no answer yet") and check(True)[0] is False
     measured = float(fast.floor_errors(1024, "subdivided", 16)[1].max())
     assert abs(np.log(measured * cut / half)) < abs(np.log(measured * 2 / half)) / 2
+
+
+def test_06_review_r243_m2_half_precision_beside_float32():
+    """Review r243 M2: only float32 interpolation was measured; the live accuracy-for-cost
+    choice today is half precision (mediump, RelaxedPrecision): a float16 line beside it,
+    computed, and the closing sentence says the bits are still a choice."""
+    from teachraster.study import bench
+
+    ns, cells, md, printed = _06_r243()
     # M2: float16 beside float32, about half its spacing, printed and quoted
     assert ns.f16_bits == 11 and ns.f16_step == 2.0**-11
     assert (
@@ -4650,6 +4685,13 @@ def test_06_review_r243_one_gpu_price_explorer_reverse_z_your_turn_float16_wordi
     for said in ("**Half precision**", "`mediump`", "`RelaxedPrecision`",
                  "miss by about half of float16's spacing", "the bits it hands on are still a choice"):  # fmt: skip
         assert said in md, said
+
+
+def test_06_review_r243_s1_to_s4_summary_and_pointers_at_held_output():
+    """Review r243 S1: the summary gave one cause of cracks (the tie rule), not the rounding of
+    a shared edge; S2: cells 16, 20 and 30 pointed at tables and a chart still held; S4: "63
+    bits and a sign" against 35 counted with the sign."""
+    ns, cells, md, printed = _06_r243()
     # S1, S4: the summary
     summary = " ".join(next(c for c in cells if c.startswith("## Summary")).split())
     assert ("**Cracks** come from an inconsistent tie rule, or from a shared edge rounded "
