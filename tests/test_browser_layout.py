@@ -319,3 +319,26 @@ def test_the_divide_cost_labels_line_up_when_the_row_wraps(lab, page):  # noqa: 
     assert set(lefts) == {"divide =", "error"}, lefts
     assert len(set(top)) == 2, top  # the row wrapped (else there is nothing to line up)
     assert abs(lefts["divide ="] - lefts["error"]) <= 4, lefts
+
+
+#: Each DivideCostExplorer slider's label and read-out: their text and computed font sizes.
+READOUT_SIZES = """() => [...document.querySelectorAll('.tr-readout')].map(s => {
+    const label = s.querySelector('.widget-label'), readout = s.querySelector('.widget-readout');
+    return [label.textContent.trim(), readout.textContent.trim(),
+            parseFloat(getComputedStyle(label).fontSize),
+            parseFloat(getComputedStyle(readout).fontSize)];
+})"""
+
+
+def test_the_divide_cost_readouts_are_as_large_as_their_labels(lab, page):  # noqa: F811
+    """Review r243 FIG1: the sliders' read-outs ("17", "2") were JupyterLab's 13 px beside their
+    16-px labels ("divide =", "attributes k ="), the smallest text on the widget: they are at
+    least their labels' size."""
+    cells = [SETUP, "DivideCostExplorer(rows)"]
+    _run(page, lab, cells, "divide_readouts.ipynb")
+    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+    page.locator(".tr-readout .widget-readout").first.wait_for(timeout=120_000)
+    sizes = page.evaluate(READOUT_SIZES)
+    assert [s[:2] for s in sizes] == [["divide =", "17"], ["attributes k =", "2"]], sizes
+    assert all(readout >= max(16, label) for _, _, label, readout in sizes), sizes
+    assert not page.errors, page.errors[:3]

@@ -169,7 +169,7 @@ def test_06_review_r238_integer_prices_held_text_and_float32_bits():
                     if c.cell_type == "code" for o in c.outputs)  # fmt: skip
     assert ">2,438<" in html and ">2,324<" in html and "e+03" not in html and ">678,468<" in html
     # S5: what reads held output is held with it, its source folded
-    for held, words in (("q_bits", "EDGE_TEXT = ("), ("q_rule", "In the figure, white squares"),
+    for held, words in (("q_bits", "EDGE_TEXT = ("), ("q_rule", "In the figure, grey squares"),
                         ("q_depth", "CHART_TEXT = (")):  # fmt: skip
         at = next(i for i, c in enumerate(cells) if words in c)
         assert cells[at].startswith(f"{held}.hold()") and kinds[at] == "code", words
