@@ -142,3 +142,56 @@ def test_temporal_history_averages_jittered_frames_and_reprojects():
             temporal_history(frames, bad)
     with pytest.raises(ValueError, match="frames"):
         temporal_history(frames[0], 0.5)
+
+
+def test_temporal_history_clamps_to_the_new_frames_neighbourhood():
+    """Review r245 M1 (lesson 08 §6): with ``clamp`` the fetched history is clamped to the
+    new frame's 3 × 3 neighbourhood range before the blend (Karis 2014): a stale value left
+    where the new frame shows nothing nearby is gone, and the history stays within the range."""
+    from teachraster.study.antialiasing import _neighbourhood_range
+
+    ghost = np.zeros((2, 6, 7))
+    ghost[0, 1, 1] = 1.0  # covered in frame 0 only, far from anything in frame 1
+    ghost[1, 4, 5] = 1.0
+    kept = temporal_history(ghost, 0.1)[1]
+    clamped = temporal_history(ghost, 0.1, clamp=True)[1]
+    assert kept[1, 1] == pytest.approx(0.9) and clamped[1, 1] == 0.0
+    assert clamped[4, 5] == pytest.approx(0.1)  # its neighbourhood holds 1: 0.9·0 + 0.1·1
+    rng = np.random.default_rng(3)
+    frames = rng.uniform(0, 1, (5, 4, 6, 3))
+    h = temporal_history(frames, 0.2, motion=(0.4, -0.3), clamp=True)
+    for t in range(1, 5):
+        lo, hi = _neighbourhood_range(frames[t])
+        blended_lo = 0.8 * lo + 0.2 * frames[t]
+        blended_hi = 0.8 * hi + 0.2 * frames[t]
+        assert (h[t] >= blended_lo - 1e-12).all() and (h[t] <= blended_hi + 1e-12).all()
+    # the range is the 3 × 3 neighbourhood's, per channel, the border repeated
+    image = np.arange(12.0).reshape(3, 4)
+    lo, hi = _neighbourhood_range(image)
+    assert lo[1, 1] == 0 and hi[1, 1] == 10 and lo[0, 0] == 0 and hi[0, 0] == 5
+    # no clamp: exactly the old history
+    np.testing.assert_array_equal(temporal_history(frames, 0.2, clamp=False),
+                                  temporal_history(frames, 0.2))  # fmt: skip
+
+
+def test_edge_error_study_tries_the_standard_patterns_at_any_angle():
+    """Review r245 M3 (lesson 08 §7): the GPU's own patterns against the random edges too,
+    with the other kinds' edges unchanged (the fixed patterns draw nothing from the rng)."""
+    from teachraster.study.antialiasing import _half_plane_area, edge_error_study
+
+    rows = edge_error_study(counts=(4, 16), edges=800, seed=2)
+    plain = edge_error_study(counts=(4, 16), edges=800, seed=2, standard=())
+    others = [r for r in rows if "standard" not in r["kind"]]
+    assert others == plain
+    any_angle = {r["samples"]: r["mean_error"] for r in rows if r["kind"] == "standard"}
+    assert sorted(any_angle) == [2, 4, 8, 16]
+    # redone: the same 800 edges, drawn as the study draws them
+    rng = np.random.default_rng(2)
+    theta = rng.uniform(0.0, np.pi, 800)
+    nx, ny = np.cos(theta), np.sin(theta)
+    c = np.minimum(nx, 0) + np.minimum(ny, 0) + rng.uniform(0, 1, 800) * (abs(nx) + abs(ny))
+    area = _half_plane_area(nx, ny, c)
+    for s, e in any_angle.items():
+        p = tr.sample_pattern(s)
+        inside = (nx[:, None] * p[:, 0] + ny[:, None] * p[:, 1] <= c[:, None]).mean(1)
+        assert e == pytest.approx(float(np.abs(inside - area).mean()), rel=1e-12)

@@ -110,7 +110,8 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     assert "a partly covered pixel whose centre is covered keeps the centre" in words
     assert words.count("the centre when it is covered") == 1  # the table's teachraster row
     assert "levels (a **rotated grid**" not in flat  # (the summary, far below, says five)
-    (held,) = [c for c in cells if "levels (a **rotated grid**" in "".join(c["source"])]
+    # review r245 S3: the held text names the property (n-rooks) and the rotated grid apart
+    (held,) = [c for c in cells if "like n rooks on a chessboard" in "".join(c["source"])]
     assert "".join(held["source"]).startswith("q_levels.hold()")  # a code cell, held,
     assert held["metadata"]["jupyter"]["source_hidden"]  # its source collapsed as the question's
     sliver = next(c for c in code if "def draw_sliver" in c)
@@ -837,8 +838,10 @@ def test_lesson_08_review_r230_sample_shading_positions_and_discrepancy(ns):
     held = " ".join(ns.FASTEST_TEXT.split())
     assert "Discrepancy theory proves it" in held and "Alexander" in held
     assert "Matoušek, *Geometric Discrepancy*, 1999" in held and "Discrepancy theory" not in md
-    assert "(the theorem under the chart says none can)" in md
-    assert "no pattern can reach $1/S$ at every angle" in md
+    # review r245 P1: no unheld Markdown after q_fastest rules out its answers (the theorem
+    # stays in the held text above)
+    assert "(the theorem under the chart says none can)" not in md
+    assert "no pattern can reach $1/S$ at every angle" not in md
     assert min(ns.edge_slopes[k] for k in ("grid", "jittered", "random")) > -0.9
     # S1
     (ask,) = [s for s in sources if "q_levels = Predict(" in s]
@@ -988,7 +991,7 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
             < e["1 sample at the centre"])  # fmt: skip
     assert '"formally defined as temporally-amortized supersampling" (Yang, Liu and Salvi' in md
     assert "(Karis, *High Quality Temporal Supersampling*, SIGGRAPH 2014)" in md
-    assert "the ghost above it, top right" in md
+    assert "the ghost above it, middle left" in md  # review r245 M1: six panels now
     # the highlight: MSAA is the 1-sample image; per-sample shading far nearer the reference
     assert ns.band_same and "4× MSAA and 1 sample, the same image: True" in printed
     b = ns.band_errors
@@ -1017,3 +1020,147 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
     )
     assert all(m.count("<details>") == m.count("</details>") for m in markdown)
     assert not re.search(r"</details>\S", " ".join(markdown))
+
+
+def test_lesson_08_review_r245_srgb_introduced_and_the_cube_in_light(ns):
+    """Review r245 C1: lessons 09 and 12b say §6 introduces sRGB; it used the codes without the
+    curve, pointing back to 12b. §6 gives the IEC 61966-2-1 curve (the package's constants), a
+    cell writes both directions out and prints the two numbers the text quotes, and a plot.
+    S4: §6's headline cube is the sRGB8 target (light averaged), codes averaged the mistake."""
+    import inspect
+    import json
+    from pathlib import Path
+
+    from notebook_runs import executed, streams
+
+    from teachraster.core import blend_factors
+
+    cells, sources, md = _lesson_text()
+    printed = streams(executed("08_antialiasing").notebook())
+    assert "(IEC 61966-2-1) spends more codes on dark values" in md
+    assert "equal steps of light (lesson 12b §6)" not in md  # no pointer back to 12b
+    # the formula's constants are the package's, both ways
+    curve = inspect.getsource(blend_factors.srgb_to_linear) + inspect.getsource(
+        blend_factors.linear_to_srgb
+    )
+    for constant in ("12.92", "0.04045", "0.055", "1.055", "2.4", "0.0031308"):
+        assert constant in curve, constant
+    assert "L = \\frac{c}{12.92} \\quad (c \\le 0.04045)" in md
+    assert "L = \\left(\\frac{c + 0.055}{1.055}\\right)^{2.4} \\quad (c > 0.04045)" in md
+    # the worked numbers: printed by the cell, quoted by the text
+    told = (f"{float(tr.srgb_to_linear(0.5)):.3f}", f"{float(tr.linear_to_srgb(0.5)):.3f}")
+    assert told == ("0.214", "0.735")
+    assert "code 0.5 is light 0.214; light 0.5 is code 0.735" in printed
+    assert "code 0.5 is light 0.214, light 0.5 is code 0.735" in md
+    assert "the same as tr.srgb_to_linear and tr.linear_to_srgb: True" in printed
+    (k,) = [i for i, s in enumerate(sources) if s.startswith("### One pixel of the resolve")]
+    assert "def encode(light):" in sources[k + 1] and "plt.show()" in sources[k + 1]
+    assert "def decode(c):" in sources[k + 1] and "1 / 2.4" in sources[k + 1]
+    # lessons 09 and 12b point here, to the heading that now introduces the encoding
+    root = Path(__file__).resolve().parents[1]
+    for name, pointer in (("09_texture_filtering", "(lesson 08, §6, *One pixel of the resolve*)"),
+                          ("12b_blending", "(lesson 08 §6 introduces the encoding)")):  # fmt: skip
+        other = json.loads((root / "notebooks" / f"{name}.ipynb").read_text())["cells"]
+        assert pointer in " ".join(" ".join("".join(c["source"]) for c in other).split())
+    # S4: the panels of §6 are the sRGB8 target; the pixel's codes-averaged mean the mistake
+    (panels,) = [s for s in sources if "srgb8 = {s: tr.render(scene.clip(96 / 72)" in s]
+    assert "plot_image(ax, tr.linear_to_srgb(fr.color[..., :3])[crop])" in panels
+    assert "srgb_target = srgb8[4]" in " ".join(sources)
+    np.testing.assert_array_equal(ns.srgb_target.color, ns.srgb8[4].color)
+    assert "in an 8-bit sRGB target (whose resolve averages light: next section)" in md
+    assert "Given codes, it averages codes: the mistake" in md
+    (figure,) = [s for s in sources if '"cube codes"' in s]
+    assert "(the mistake)" in figure and "4 samples, light averaged" in figure
+
+
+def test_lesson_08_review_r245_caption_summary_and_reading_order(ns):
+    """Review r245 C2: the inspector shades covered fractions at every count (grey up to 4
+    samples); S2: both panels in coordinates, said once. P1: no unheld Markdown after
+    q_fastest states the rates or rules out −1. S1: §7's chart is read right under it, the
+    maps introduced before them. S3: n-rooks named, the rotated grid the 4-sample pattern.
+    S5: extrapolated only where the centre is outside."""
+    cells, sources, md = _lesson_text()
+    caption = " ".join(next(s for s in sources if s.startswith("## 8. Inspect a pixel")).split())
+    assert "(above 4 samples, each pixel shaded by its covered fraction instead)" not in caption
+    assert "each pixel shaded by its covered fraction (grey; above 4 samples in colour" in caption
+    assert "Both panels are in screen coordinates: pixel (row i, col j) spans x from j to j + 1" in caption  # fmt: skip
+    # P1: after the question, every Markdown cell (the summary included) leaves the rates alone
+    (k,) = [i for i, s in enumerate(sources) if "q_fastest = Predict(" in s]
+    after = " ".join(" ".join(s.split()) for c, s in zip(cells[k:], sources[k:])
+                     if c["cell_type"] == "markdown")  # fmt: skip
+    for told in ("S^{-3/4}", "S^{-1/2}", "none can", "at every angle", "No pattern"):
+        assert told not in after, told
+    summary = md.split("## Summary")[1]
+    assert "How fast the error falls with $S$ depends on where the samples lie (§7)" in summary
+    # S1: the chart's text right under the chart; the maps' introduction right before them
+    ids = [c["id"] for c in cells]
+    assert ids.index("c23b") == ids.index("c08caa52") + 1
+    assert ids.index("f90c4152") == ids.index("010d8f32") + 1
+    assert sources[ids.index("010d8f32")].startswith("Back to one triangle: its signed error")
+    # S3: one sample per row and column is n-rooks, true of every standard pattern; the
+    # rotated grid is the 4-sample one, a square turned by atan(1/2)
+    assert ns.rooks == [2, 4, 8, 16] and ns.turned == pytest.approx(np.degrees(np.arctan(0.5)))
+    assert "The **rotated grid** puts every sample on its own row and column" not in md
+    assert "The standard patterns are **n-rooks** (a sample on each row and column)" in summary
+    assert "the 4-sample **rotated grid** also spaces its rows evenly" in summary
+    assert "each **n-rooks** (one sample on every row and column)" in md
+    # S5
+    assert "At the pixel centre attributes are **extrapolated**" not in md
+    assert "Where the pixel centre lies outside the triangle, MSAA **extrapolates**" in summary
+    # the prose did not grow: r245 counted 4,990 Markdown words
+    total = sum(len(s.split()) for c, s in zip(cells, sources) if c["cell_type"] == "markdown")
+    assert total <= 4990, total
+
+
+def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
+    """Review r245 M1: the TAA study clamps its history to the new frame's neighbourhood and
+    prints the same error with the ghost pixels; Halton jitter, the Catmull-Rom fetch and
+    disocclusion named, with their sources. M2: the shader's runs on the cube, per pixel and
+    triangle and in 2 × 2 quads, counted. M3: the standard patterns at any angle on §7's
+    theory chart."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study.antialiasing import temporal_history
+
+    cells, sources, md = _lesson_text()
+    printed = streams(executed("08_antialiasing").notebook())
+    e, g = ns.crawl_errors, ns.ghosts
+    np.testing.assert_allclose(ns.crawl_taa["reprojected, clamped"],
+                               temporal_history(ns.crawl, ns.ALPHA, motion=(0.0, 1 / 16),
+                                                clamp=True))  # fmt: skip
+    for moved in ("not reprojected", "reprojected"):
+        assert g[f"history, {moved}, clamped"] < 0.5 * g[f"history, {moved}"]  # fewer ghosts
+        assert e[f"history, {moved}, clamped"] > e[f"history, {moved}"]  # the tail wiped
+    assert g["1 sample at the centre"] == 0
+    before, after = g["history, reprojected"], g["history, reprojected, clamped"]
+    assert f"the ghost pixels fall from {before} to {after}" in md
+    worse = f"from {e['history, reprojected']:.3f} to {e['history, reprojected, clamped']:.3f}"
+    assert worse == "from 0.142 to 0.182" and f"the mean error rises {worse}" in md
+    name = "history, reprojected, clamped"
+    assert f"  {name:34s} {e[name]:.3f} {g[name]:6d}" in printed
+    # a ghost pixel: empty at 16 samples, above 1/16 in the history, summed over frames 16-31
+    history = ns.crawl_taa["reprojected"][16:]
+    assert before == int(((ns.crawl_16[16:] == 0) & (history > 1 / 16)).sum())
+    assert "Halton (2, 3)" in md and "bicubic (Catmull-Rom) fetch" in md
+    assert "(a **disocclusion**, found by comparing depths)" in md
+    assert "(Karis, *High Quality Temporal Supersampling*, SIGGRAPH 2014)" in md
+    # M2: the shader's runs at 4 samples, recounted from the samples by another route
+    ids = ns.frames[4].sample_triangle_id
+    pairs, lanes = 0, 0
+    for t in range(int(ids.max()) + 1):
+        shown = (ids == t).any(axis=-1)
+        pairs += int(shown.sum())
+        h, w = shown.shape
+        quads = np.pad(shown, ((0, h % 2), (0, w % 2))).reshape((h + 1) // 2, 2, (w + 1) // 2, 2)
+        lanes += 4 * int(quads.any(axis=(1, 3)).sum())
+    assert (pairs, lanes) == (ns.pairs4, ns.lanes4) == (866, 1100)
+    assert ns.n_covered < ns.pairs4 < ns.lanes4 and ns.lanes1 < ns.lanes4
+    runs = " ".join(printed.split())
+    assert (f"The shader runs at {pairs:,} (pixel, triangle) pairs, not {ns.n_covered:,}" in runs
+            and f"{lanes:,} lanes, helpers included ({ns.lanes1:,} with 1 sample)" in runs)  # fmt: skip
+    assert "in whole 2 × 2 quads (lesson 09 §2)" in md
+    # M3: the standard patterns at any angle, fitted over S = 2-16, beside the axis edges
+    any_angle = ns.edge_slopes["standard, any angle (S = 2-16)"]
+    assert -0.8 < any_angle < ns.edge_slopes["standard, axis edges (S = 2-8)"] + 0.5
+    assert any_angle > ns.edge_slopes["standard, axis edges (S = 2-8)"]
+    assert "the standard patterns, at random angles and on axis-aligned edges, 2 to 16)" in md

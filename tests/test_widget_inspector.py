@@ -335,3 +335,28 @@ def test_review_r230_window_dots_tight_panel_clicks_and_top_left_edges():
             assert "top or left edge(s), which take a sample on them: E31" in w.table.value
         finally:
             w.close()
+
+
+def test_both_panels_label_a_pixel_in_screen_coordinates():
+    """Review r245 S2 (lesson 08 §8): the left panel labelled row and column indices at pixel
+    centres, the magnified pixel coordinates at its borders (13.0 ... 14.0): pixel 13 sat
+    between the ticks 12 and 14 on the left, 13 and 14 on the right. Both now give x, y on
+    the pixels' borders, the chosen pixel between the ticks j and j + 1 (or a step apart)."""
+    tri = tr.Triangle([[1.3, 1.6], [18.7, 4.2], [6.1, 12.8]])
+    w = PixelInspector(tri, 20, 14, row=3, col=13, backend="image")
+    try:
+        left, right = w._left, w.pixel.square.axes
+        for ax in (left, right):
+            xs, ys = ax.get_xticks(), ax.get_yticks()
+            assert np.allclose(xs * 2, np.round(xs * 2)) and np.allclose(ys * 2, np.round(ys * 2))
+        # the left panel: whole coordinates only, named x and y, the window's edges included
+        assert np.allclose(left.get_xticks(), np.round(left.get_xticks()))
+        assert left.get_xlabel() == "x" and left.get_ylabel() == "y"
+        x0, x1 = left.get_xlim()
+        assert x0 in left.get_xticks() and x0 <= 13 < 14 <= x1
+        assert list(right.get_xticks()) == [13, 13.5, 14]
+        w.col.value = 4  # the window moves; its ticks stay coordinates on the borders
+        assert np.allclose(left.get_xticks(), np.round(left.get_xticks()))
+        assert left.get_xlim()[0] <= 4 < 5 <= left.get_xlim()[1]
+    finally:
+        w.close()

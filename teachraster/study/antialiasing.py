@@ -10,7 +10,8 @@ rasteriser fills: snapped to the sub-pixel grid (``subpixel_bits``, default 8).
 :func:`sample_error_study` measures, for 1, 2, 4, 8 and 16 samples and each pattern kind, how
 far the coverage fraction ``fill.coverage_fraction`` of ``tr.rasterize`` is from that area,
 and what each costs in time (median of repeated fills). :func:`temporal_history` is temporal
-antialiasing's accumulation: one jittered sample per pixel and frame, blended into a history.
+antialiasing's accumulation: one jittered sample per pixel and frame, blended into a history
+(reprojected, and optionally clamped to the new frame's neighbourhood).
 
 >>> area = pixel_area([[0, 0], [2, 0], [0, 2]], 2, 2)
 >>> area.tolist()                      # the diagonal halves pixels (0, 1) and (1, 0)
@@ -201,10 +202,12 @@ def edge_error_study(counts=(4, 16, 64, 256), edges: int = 4000, seed: int = 1,
     covers. Kinds: ``"grid"`` (√S × √S ordered grid), ``"jittered"`` (one random sample in
     each grid cell, drawn anew for every edge: stratified sampling), ``"random"`` (S
     independent uniform samples), ``"grid, axis edges"`` (the ordered grid against
-    horizontal edges only: its worst case), and ``"standard, axis edges"`` (the standard
+    horizontal edges only: its worst case), ``"standard, axis edges"`` (the standard
     pattern of each count in ``standard`` against the same horizontal edges: every sample on
     a row of its own, so its error falls like 1/S there; 1/(4S) where the rows are centred in
-    their strips, 1/(2S) for the 16-sample pattern, whose rows start at the pixel's edge). Mitchell (*Consequences of stratified sampling in
+    their strips, 1/(2S) for the 16-sample pattern, whose rows start at the pixel's edge) and
+    ``"standard"`` (those patterns against the random edges: the GPU's own patterns where an
+    edge may run at any angle). Mitchell (*Consequences of stratified sampling in
     graphics*, SIGGRAPH 1996) shows that in pixels crossed by an edge stratified sampling's
     variance falls like S^-3/2, so its error like S^-3/4; independent samples fall like
     S^-1/2.
@@ -240,10 +243,14 @@ def edge_error_study(counts=(4, 16, 64, 256), edges: int = 4000, seed: int = 1,
         inside = (grid_y[None, :] <= level[:, None]).mean(1)
         rows.append({"kind": "grid, axis edges", "samples": s,
                      "mean_error": float(np.abs(inside - level).mean())})  # fmt: skip
-    for s in standard:
-        inside = (sample_pattern(s)[None, :, 1] <= level[:, None]).mean(1)
+    for s in standard:  # fixed patterns: no draw from rng, the other kinds' edges unchanged
+        p = sample_pattern(s)
+        inside = (p[None, :, 1] <= level[:, None]).mean(1)
         rows.append({"kind": "standard, axis edges", "samples": int(s),
                      "mean_error": float(np.abs(inside - level).mean())})  # fmt: skip
+        inside = (nx[:, None] * p[:, 0] + ny[:, None] * p[:, 1] <= c[:, None]).mean(1)
+        rows.append({"kind": "standard", "samples": int(s),
+                     "mean_error": float(np.abs(inside - area).mean())})  # fmt: skip
     return rows
 
 
@@ -261,7 +268,17 @@ def _moved(image: np.ndarray, dx: float, dy: float) -> np.ndarray:
     return top * (1 - fy) + bottom * fy
 
 
-def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0)) -> np.ndarray:
+def _neighbourhood_range(frame: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The least and greatest value of ``frame`` (H, W, ...) in each pixel's 3 × 3
+    neighbourhood (per channel, the border repeated): the box a TAA clamps its history to."""
+    h, w = frame.shape[:2]
+    padded = np.pad(frame, [(1, 1), (1, 1)] + [(0, 0)] * (frame.ndim - 2), mode="edge")
+    around = np.stack([padded[dy : dy + h, dx : dx + w] for dy in range(3) for dx in range(3)])
+    return around.min(axis=0), around.max(axis=0)
+
+
+def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0), *,
+                     clamp: bool = False) -> np.ndarray:  # fmt: skip
     """Temporal antialiasing's accumulation: an exponential history of jittered frames.
 
     Each frame is rendered with one sample per pixel, its position moved (jittered) from
@@ -269,9 +286,11 @@ def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0)) -> np.ndarra
     with weight ``alpha``: ``h_t = (1 − alpha)·reproject(h_{t−1}) + alpha·frame_t``. A static
     view needs no reprojection; where the image moves by ``motion`` = (dx, dy) px per frame,
     the history is fetched where the content was (bilinear, as :func:`_moved`), which blurs
-    it a little every frame. No history clamping: see Karis, *High Quality Temporal
-    Supersampling* (SIGGRAPH 2014), and Yang, Liu and Salvi, *A Survey of Temporal
-    Antialiasing Techniques* (Computer Graphics Forum, 2020).
+    it a little every frame. With ``clamp`` the fetched history is first clamped to the
+    range of the new frame in the pixel's 3 × 3 neighbourhood (Karis, *High Quality Temporal
+    Supersampling*, SIGGRAPH 2014): a stale value outside it cannot linger, nor can detail
+    that the new frame's one sample per pixel missed. See also Yang, Liu and Salvi, *A
+    Survey of Temporal Antialiasing Techniques* (Computer Graphics Forum, 2020).
 
     Parameters
     ----------
@@ -281,6 +300,8 @@ def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0)) -> np.ndarra
         The new frame's weight, in (0, 1]; 0.1 is a common choice.
     motion : (float, float)
         How far the image moves per frame, px (y down).
+    clamp : bool
+        Clamp the fetched history to the new frame's 3 × 3 neighbourhood range.
 
     Returns
     -------
@@ -289,6 +310,8 @@ def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0)) -> np.ndarra
 
     >>> temporal_history([[[0.0]], [[1.0]], [[1.0]]], alpha=0.5)[:, 0, 0].tolist()
     [0.0, 0.5, 0.75]
+    >>> temporal_history([[[0.0]], [[1.0]], [[1.0]]], alpha=0.5, clamp=True)[:, 0, 0].tolist()
+    [0.0, 1.0, 1.0]
     """
     frames = as_finite("frames", frames, None)
     if frames.ndim < 3:
@@ -301,5 +324,7 @@ def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0)) -> np.ndarra
     out[0] = frames[0]
     for t in range(1, len(frames)):
         previous = out[t - 1] if dx == dy == 0.0 else _moved(out[t - 1], dx, dy)
+        if clamp:
+            previous = np.clip(previous, *_neighbourhood_range(frames[t]))
         out[t] = (1.0 - alpha) * previous + alpha * frames[t]
     return out

@@ -132,7 +132,7 @@ class PixelInspector(Holdable):
         self._compute()
         with style_context(style):
             fig = new_figure((9, 4.4), self.backend)  # fits the notebook column
-            # room on the left for the "row i" label; the right panel's labels at classroom size
+            # room on the left for the y label; the right panel's labels at classroom size
             left, right = (
                 fig.add_axes((0.09, 0.13, 0.43, 0.73)),
                 fig.add_axes((0.6, 0.1, 0.39, 0.66)),
@@ -225,16 +225,18 @@ class PixelInspector(Holdable):
 
     def _show_window(self) -> None:
         """Move the left panel's window to keep the chosen pixel in its middle, its ticks
-        labelled with the image's own column and row indices."""
+        screen coordinates x and y on the pixels' borders, as the magnified pixel's: pixel
+        (row i, col j) lies between the ticks j and j + 1 in both panels."""
         (cols, rows), ax = self._window_size, self._left
         c0 = window_origin(self.col.value, cols, self.width)
         r0 = window_origin(self.row.value, rows, self.height)
         ax.set_xlim(c0, c0 + cols)
         ax.set_ylim(r0 + rows, r0)
-        for axis, start, n in ((ax.xaxis, c0, cols), (ax.yaxis, r0, rows)):
+        for axis, start, n, name in ((ax.xaxis, c0, cols, "x"), (ax.yaxis, r0, rows, "y")):
             step = nice_step(n)
-            idx = [i for i in range(start, start + n) if i % step == 0]
-            axis.set_ticks([i + 0.5 for i in idx], labels=[str(i) for i in idx])
+            at = [i for i in range(start, start + n + 1) if i % step == 0]
+            axis.set_ticks(at, labels=[str(i) for i in at])
+            axis.set_label_text(name)
 
     # -- display and clicks --------------------------------------------------------------
     def _make_display(self):
