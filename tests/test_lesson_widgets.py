@@ -603,6 +603,54 @@ def test_case_picker_magnifies_a_speck_in_an_inset():
         picker.close()
 
 
+def test_case_picker_inset_points_with_a_ring_not_a_triangle_or_a_dot():
+    """Review r244 FIG-1: matplotlib's zoom indicator joined the speck to the inset by two
+    black connectors at an outline's weight, which read as a large triangle, and drew its box
+    round snap_degenerate's 0.0025-px triangle as a filled black dot on centre (2, 2) of the
+    "ours: 0 px" panel: a covered centre. Now a dashed grey ring, larger than a centre's dot
+    and hollow, marks the speck, and one thin dashed grey line leads to the inset's nearest
+    corner."""
+    from matplotlib.colors import to_rgba
+    from matplotlib.inset import InsetIndicator
+    from matplotlib.patches import Circle
+
+    from teachraster.widgets.case_picker import ZOOM_GREY, CasePicker
+
+    picker = CasePicker("snap_degenerate", backend="image")
+    try:
+        for case in ("snap_degenerate", "snap_flips_winding"):
+            picker.case.value = case
+            assert picker.zoomed == list(picker.axes)
+            for ax in picker.axes:
+                assert not [a for a in ax.get_children() if isinstance(a, InsetIndicator)]
+                (ring,) = [p for p in ax.patches if isinstance(p, Circle)]
+                assert not ring.get_fill() and ring.get_linestyle() == "--"
+                assert ring.get_radius() >= 0.25 and np.allclose(ring.center, (2.5, 2.5), atol=0.05)
+                pointers = [ln for ln in ax.lines if ln.get_linestyle() == "--"]
+                assert len(pointers) == 1  # one line: two met at the speck like a triangle
+                (line,) = pointers
+                assert line.get_linewidth() <= 1.2 and line.get_color() == ZOOM_GREY
+                assert to_rgba(ring.get_edgecolor()) == to_rgba(ZOOM_GREY)
+                # the line starts on the ring and ends on the inset's nearest corner
+                (x0, y0), (x1, y1) = np.column_stack(line.get_data())
+                assert np.hypot(x0 - 2.5, y0 - 2.5) == pytest.approx(ring.get_radius(), abs=0.05)
+                (inset,) = ax.child_axes
+                picker.fig.canvas.draw()
+                box = inset.get_window_extent()
+                corner = ax.transData.transform((x1, y1))
+                corners = [(box.x0, box.y0), (box.x0, box.y1), (box.x1, box.y0), (box.x1, box.y1)]
+                assert min(np.hypot(*(corner - c)) for c in corners) < 2  # display pixels
+            # the centre under the speck keeps its own dot: white in "ours" (not covered)
+            ours = picker.axes[0]
+            white = [ln for ln in ours.lines if ln.get_marker() == "o" and
+                     ln.get_markerfacecolor() == "white" and len(ln.get_xdata()) > 3]  # fmt: skip
+            if case == "snap_degenerate":
+                assert any((2.5, 2.5) in set(zip(ln.get_xdata(), ln.get_ydata())) for ln in white)
+        assert "in the dashed ring" in picker.info.value
+    finally:
+        picker.close()
+
+
 def test_divide_cost_slider_starts_at_the_model_and_holds_the_lessons_prices():
     """Review r5, 06-2: a log slider of step 1/4 octave has no 30, and the browser showed the
     model's 30 cycles as 32 ("37x") while lesson 06 printed 30 ("35x")."""

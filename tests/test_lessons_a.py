@@ -119,6 +119,8 @@ ANSWERED_BELOW = {
         # review r236 M-1: which shifts draw follows the C sum, asked before the census
         "q_sum": ["SUM_TEXT = ", "every one drawing nothing", "decides none of it"],
         "q_behind": ["BEHIND_TEXT = ", "mirrored vertex"],
+        # review r244 change 2: float32 and unorm24 near 0.6, asked before the table says it
+        "q_depth": ["DEPTH_TEXT = ", "lose about the same", "both step by"],
     },
 }
 

@@ -1364,8 +1364,11 @@ def test_07_catalogue_tables_print_in_one_piece():
     sources = [c.source for c in nb.cells if c.cell_type == "code"]
     # review r227 S-1: the table of every case and method is gone; the rest's list stays
     assert sum(s.startswith("table = [") or "rest = []" in s for s in sources) == 1
-    # review r119 07-C: the tie-rule checker's table and verdict too, in one output
-    (tie,) = [c for c in nb.cells if c.cell_type == "code" and "def check_tie_rule" in c.source]
+    # review r119 07-C: the tie-rule checker's table and verdict too, in one output (r244
+    # S-3: printed by the student's cell, the checker folded above it)
+    (tie,) = [
+        c for c in nb.cells if c.cell_type == "code" and c.source.startswith("def my_coverage(")
+    ]
     streams = [o for o in tie.outputs if o.get("output_type") == "stream"]
     assert len(streams) == 1 and streams[0]["text"].count("centres drawn extra") == 4
 
@@ -1387,13 +1390,13 @@ def test_07_triangles_numbered_from_1():
     (sliver,) = [c for c in cells if 'introduce("sliver_pair")' in c]
     assert 'set_title(f"ours: {row_owners}{where} owns the row"' in sliver
     assert "sliver [" not in printed
-    a, b, c = ns.fan_trio
-    assert f"triangles {a + 1} and {c + 1} touch across triangle {b + 1}," in printed
     # no triangle or sliver numbered 0 ("a triangle 0.0025 px wide" is a width)
     assert not re.search(r"\b(triangle|sliver) 0(?![.\d])", printed)
 
 
 def test_07_case_texts_match_what_the_lesson_prints():
+    import itertools
+
     from teachraster.study import hardcases
 
     ns = lesson("07_hard_cases")
@@ -1409,11 +1412,21 @@ def test_07_case_texts_match_what_the_lesson_prints():
     # the fan: the hub's owner is labelled and named in the key
     assert ns.hub_owner == int(ns.fan_owner[ns.hub])
     # review r57 07-8: the picker's fan needs three colours, not two: triangles two apart touch
-    # across the thin one between them, so three in a row all touch each other
-    assert ns.fan_colours == 3 and len(ns.spoke_pairs) == ns.n_fan == 16
-    assert len(ns.fan_pairs) - len(ns.spoke_pairs) == 11
-    a, b, c = ns.fan_trio
-    assert {(a, b), (b, c), (a, c)} <= ns.fan_pairs and c - a == 2 and ns.thin_pixels == 3
+    # across the thin one between them, so three in a row all touch each other (review r244
+    # S-2: the lesson no longer teaches the picker's colouring; the fact is the picker's)
+    from teachraster.widgets.case_picker import owner_colors, owner_neighbours
+
+    fan = hardcases.get_case("fan_spokes_through_centres")
+    n_fan = len(fan.triangles)
+    pairs = owner_neighbours(ns.fan_owner, fan.triangles)
+    spokes = {(a, b) for a, b in pairs if (b - a) % n_fan in (1, n_fan - 1)}
+    assert len(set(owner_colors(ns.fan_owner, fan.triangles).values())) == 3
+    assert len(spokes) == n_fan == 16 and len(pairs) - len(spokes) == 11
+    trio = [t for t in itertools.combinations(range(n_fan), 3)
+            if t[2] - t[0] == 2 and set(itertools.combinations(t, 2)) <= pairs]  # fmt: skip
+    assert trio and int((ns.fan_owner == trio[0][1]).sum()) == 3
+    cells = _07_sources()
+    assert not any("owner_neighbours" in c or "must all differ" in c for c in cells)
 
 
 def test_07_your_turn_naive_differs_and_the_top_left_rule_fixes_it():
@@ -1633,9 +1646,10 @@ def test_07_review_r145_reading_order_and_questions():
     turn, gaps_held, two = at("## Your turn"), at("q_gaps.hold()"), at("## 2.")
     assert gaps_held < turn < at("def my_coverage(") < two
     assert at("## Summary") == len(cells) - 1 and "Try it" not in cells[-1]
-    picker, text, trio = at("picker = CasePicker("), at("Pick `fan_spokes"), at("# §1's fan in")
-    assert picker < text < trio and "print(" not in cells[picker]
-    assert "the cell below prints the counts" in " ".join(cells[text].split())
+    # review r244 S-2: the picker's colouring is no lesson: the rest follows the picker
+    picker = at("picker = CasePicker(")
+    assert "print(" not in cells[picker] and cells[picker + 1].startswith("## The rest of")
+    assert not any(c.startswith(("Pick `fan_spokes", "# §1's fan in")) for c in cells)
     far_held, drift = at("q_far.hold()"), at('case, ours = introduce("stepping_drift")')
     assert "stepping_drift" not in cells[far_held]
     assert cells[drift - 1].startswith("**Long rows: stepping drift.**")
@@ -1673,9 +1687,10 @@ def test_07_review_r145_reading_order_and_questions():
     assert ns.size_px // 2 == 16
     narrow = ns.coplanar_pixels[("unorm16", 1e-06)].sum(axis=1)
     assert narrow[16] < half / 2 and narrow[17] < half and (narrow[:16] == half).all()
-    fig5 = cells[at('case, ours = introduce("nearly_coplanar_overlap")')]
+    fig5 = cells[at("q_depth.hold()")]  # review r244 change 2: asked first (q_depth)
+    assert 'introduce("nearly_coplanar_overlap")' in fig5
     assert "A, drawn first, keeps the tie" in fig5 and "slope/{size_px // 2} per pixel" in fig5
-    text5 = " ".join(cells[at("float32 and unorm24 lose about")].split())
+    text5 = " ".join(fig5.split("DEPTH_TEXT = ")[1].split())
     for said in ("Triangle A is flat and drawn first", "by slope/16 per pixel", "ragged",
                  "rise gently with $y$", "leaves B most of row 16"):  # fmt: skip
         assert said in text5, said
@@ -3631,7 +3646,8 @@ def test_09_r110_the_reference_names_its_own_noise():
 
 
 @pytest.mark.parametrize(
-    "name", ["06_what_accuracy_costs", "09_texture_filtering", "11_debugging_a_frame"]
+    "name",
+    ["06_what_accuracy_costs", "07_hard_cases", "09_texture_filtering", "11_debugging_a_frame"],
 )
 def test_r112_no_review_ticket_in_a_students_view(name):
     """Review r112 (11, and 03): review ids ("r90 11-2", "review r82", "r104 09-5") stood in
@@ -4174,10 +4190,10 @@ def test_07_review_r215_printed_lines_are_named_by_their_words():
     # numbers are in the text (computed, where a held cell shows it) or on the figures
     assert named == 0
     cells = [" ".join(c.source.split()) for c in nb.cells]
-    (depth,) = [c for c in cells if c.startswith("float32 and unorm24 lose about")]
+    depth = _07_held_markdown(nb, "q_depth.hold()")  # review r244: held under q_depth
     assert "(the table's column \"step at 0.6\" gives each format's)" in depth
     assert "by slope/16 per pixel (the figure's key)" in depth
-    (coplanar,) = [c for c in cells if c.startswith('case, ours = introduce("nearly_coplanar')]
+    (coplanar,) = [c for c in cells if c.startswith("q_depth.hold()")]
     assert "B − A: slope/{size_px // 2} per px" in coplanar and "step {depth_step[fmt]" in coplanar
     (drift,) = [c for c in cells if c.startswith("The float32 stepper's signed error")]
     assert "The figure writes over each range what it adds" in drift
@@ -4825,7 +4841,7 @@ def test_07_review_r236_llvmpipe_beside_ours_and_the_smaller_items():
         if text.startswith(("case, ours = introduce(", "# llvmpipe")) and len(cell["source"]) > 30:
             assert cell["metadata"].get("jupyter", {}).get("source_hidden"), text[:60]
             folded += 1
-    assert folded == 6
+    assert folded >= 6  # review r244: §5's nearly coplanar cell is held under q_depth now
     # S-4: the CS148 quotation's section; S-7: the simulator's exact range is no guard band
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
@@ -4835,3 +4851,121 @@ def test_07_review_r236_llvmpipe_beside_ours_and_the_smaller_items():
     # S-8: the facing of snap_flips_winding said on screen
     why = hardcases.get_case("snap_flips_winding").why
     assert "clockwise on screen (back-facing)" in why and "counter-clockwise on screen" in why
+
+
+@pytest.mark.notebook
+def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
+    """Review r244. C-1: the doubled area printed exactly, 127.5 (":.0f" rounded it half to even,
+    128). FIG-2: the exact C sum named in the title, not a line on the row of zeros. FIG-3: C
+    and D named on the T-junction's panels. FIG-4: the six-orders figure names its vertices.
+    FIG-5: llvmpipe's figure keyed. M-1: the exactly coplanar decal with its outcome per format
+    and its cure, a depth bias (lesson 05b §5); the summary no longer sells depth bits as the
+    cure. M-2: vertex invariance named. P-1: near_flat a demonstration, not a question its
+    answer follows. Change 2: float32 against unorm24 near depth 0.6 asked (q_depth). Change 1:
+    no picker colouring, the checker out of the student's cell, the prose a third shorter."""
+    import json
+    import re
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    nb = json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
+    cells = _07_sources()
+
+    def at(start):
+        (i,) = [k for k, c in enumerate(cells) if c.startswith(start)]
+        return i
+
+    # C-1: 2·|area| = 127.5 said as the census says it
+    assert ns.doubled_area == 127.5 == ns.sum_exact
+    assert "the triangle's doubled area: 127.5 px²" in printed
+    assert "against a doubled area of 127.5" in printed and "doubled area: 128" not in printed
+    # FIG-2: no dashed line at 127.5 on an axis of ±98,304; the title says it is too small
+    held_sum = cells[at("q_sum.hold()")]
+    assert "ax.axhline(sum_exact" not in held_sum and "fontsize=12" not in held_sum
+    assert "is too small to see " in held_sum and '"at this scale)"' in held_sum
+    # FIG-3: every point the text names is named on the panels
+    imports = cells[1].split("style = use_style")[0].replace("%matplotlib inline\n", "")
+    scope = {}
+    exec(imports + "use_style('classroom')\n" + cells[at("# The lesson's helpers")], scope)
+    exec(cells[at("# Triangle ABC, and two triangles")], scope)
+    fig, ax = plt.subplots()
+    scope["name_points"](ax, scope["V_on"])
+    assert sorted(t.get_text() for t in ax.texts) == ["A", "B", "C", "D", "V"]
+    plt.close(fig)
+    # FIG-4: the order in the title is found on the vertices, named v1, v3, v2 in drawing order
+    shown = {}
+    scope["plt"].show = lambda: shown.setdefault("fig", scope["plt"].gcf())
+    case = scope["hardcases"].get_case("six_vertex_orders")
+    k = ns.shown_order
+    counts = np.zeros((16, 16), dtype=int)
+    scope["ours_vs_naive"](
+        case, counts, counts, case.triangles[1:2], names=[f"v{i + 1}" for i in k]
+    )
+    for axis in shown["fig"].axes[:2]:
+        assert [t.get_text() for t in axis.texts] == ["v1", "v3", "v2"]
+    plt.close(shown["fig"])
+    assert (
+        'names=[f"v{i + 1}" for i in shown_order]'
+        in cells[at('case, ours = introduce("six_vertex')]
+    )
+    # FIG-5: llvmpipe's owners keyed; the \\ split is not "the colours of the figures above"
+    gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
+    assert "fig.legend(" in gpu and "the pixel's owner, one colour per triangle" in gpu
+    gpu_text = " ".join(cells[at("**The same meshes on a GPU.**")].split())
+    assert "the colours of the figures above" not in gpu_text and "picker's colours" in gpu_text
+    # M-1: the decal: float64 fights by rounding alone, the others tie; one unit of bias cures all
+    assert ns.cop_fight == 0.01 and ns.cop_overlap == 985
+    assert ns.decal_wins[("float64", 0.01)] == 784
+    assert not any(n for (fmt, t), n in ns.decal_wins.items() if (fmt, t) != ("float64", 0.01))
+    assert ns.biased_wins == dict.fromkeys(("float64", "float32", "unorm24", "unorm16"), 985)
+    decal = _07_held_markdown(run, 'case, ours = introduce("coplanar_overlap")')
+    for said in ("784 of 985 pixels in a speckle", "More bits made it fight",
+                 "`glPolygonOffset`", "`DepthBias`", "**depth bias**", "lesson 05b §5",
+                 "wins all 985 pixels in every format"):  # fmt: skip
+        assert said in decal, said
+    summary = " ".join(cells[-1].split())
+    assert "enough depth bits for the depth range, or the scene z-fights" not in summary
+    assert "need a **depth bias**, not more bits (lesson 05b §5)" in summary
+    # M-2: how a program keeps shared vertices identical
+    assert "*Invariance*" in _07_held_markdown(run, "q_gaps.hold()")
+    assert "`invariant gl_Position`" in cells[at("q_gaps.hold()")]
+    # P-1: near_flat is shown, not asked (the picker prints its must at the pick), and its
+    # naive rule is named against §1's flat top's
+    rest = " ".join(cells[at("## The rest of the catalogue")].split())
+    assert "**Demonstration: one snapping step.**" in rest and "?" not in rest
+    assert "$E > 0$, is §1's naive flat top" in rest or "$E > 0$ is §1's naive flat top" in rest
+    # change 2: float32 and unorm24 lose about as many pixels near 0.6: both step by 2^-24
+    assert (ns.f32_lost, ns.u24_lost) == (16, 15) and ns.depth_answer == ns.depth_choices[1]
+    assert ns.f32_step == pytest.approx(ns.u24_step, rel=1e-6)
+    ask = at("# The depth question's data")
+    assert cells[ask + 1].startswith("q_depth.hold()") and "q_depth = PredictChoice(" in cells[ask]
+    assert "answer=depth_answer" in cells[ask] and "about the same" not in cells[ask - 1]
+    assert nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
+    # change 1: no picker colouring, folded plotting, the checker out of the student's cell
+    assert "must all differ" not in printed and "the picker uses" not in printed
+    assert nb["cells"][at('case, ours = introduce("d3d_split_square_other')]["metadata"]["jupyter"][
+        "source_hidden"
+    ]
+    mine, checker = at("def my_coverage("), at("# The checker of the exercise below")
+    assert checker == mine - 1 and "def check_tie_rule" not in cells[mine]
+    assert nb["cells"][checker]["metadata"]["jupyter"]["source_hidden"]
+    assert len(cells[mine].splitlines()) < 20
+    assert not re.search(r"NAIVE_ONCE|owner_neighbours|centres_on_top", cells[1])
+    # S-5: part 2 of the exercise after §2, which teaches snapping and zero-area rejection
+    assert at("## 2.") < at("**Part 2: every coverage case.**") < at("## 3.")
+    # the prose: 4,989 words before (Markdown and held texts), a third fewer for what was there
+    words = 0
+    for c in nb["cells"]:
+        text = "".join(c["source"])
+        if c["cell_type"] == "markdown":
+            words += len(text.split())
+        else:
+            words += sum(len(t.split()) for t in re.findall(r'_TEXT = r?f?"""(.*?)"""', text, re.S))
+    assert words < 3800, words  # the decal's 200 new words included

@@ -21,7 +21,7 @@ from types import SimpleNamespace
 
 import ipywidgets as widgets
 import numpy as np
-from matplotlib.patches import Rectangle
+from matplotlib.patches import Circle, Rectangle
 
 from ..core.snapping import snap
 from ..plotting import COLORS, plot_coverage, plot_pixel_centres, plot_pixel_grid, plot_triangle
@@ -194,6 +194,8 @@ TINY_BELOW, TINY_WIDTH = 1.0, 1.5
 #: Triangles smaller still (ZOOM_BELOW px) are a speck at any scale that shows their pixels:
 #: each gets an inset that magnifies it ZOOM_SIDE times its size (:func:`zoom_inset`).
 ZOOM_BELOW, ZOOM_SIDE = 0.1, 1.6
+#: The ring round a speck (radius, px) and the grey of it and of the line to the inset.
+ZOOM_RING, ZOOM_GREY = 0.3, "0.45"
 
 
 def tiny_triangles(triangles) -> bool:
@@ -264,7 +266,7 @@ def zoom_inset(ax, triangles, centres, fills, *, view) -> list:
     the inset, filled where ``centres`` ((H, W) bool) says covered. For triangles smaller than
     :data:`ZOOM_BELOW` px, which no view of whole pixels shows (review r236 FIG-2).
 
-    Returns the inset and its zoom indicator."""
+    Returns the inset and :func:`zoom_pointer`'s ring and line."""
     tris = np.asarray(triangles, dtype=float)
     r0, r1, c0, c1 = view
     every = np.concatenate([tris, snap(tris)]).reshape(-1, 2)  # given and snapped, all seen
@@ -274,7 +276,8 @@ def zoom_inset(ax, triangles, centres, fills, *, view) -> list:
     mid, side = (lo + hi) / 2, np.maximum(ZOOM_SIDE * (hi - lo), 2 / 256)
     # the corner of the view farthest from the triangles (axes fraction, y up in the box)
     fx, fy = (mid[0] - c0) / (c1 - c0), 1 - (mid[1] - r0) / (r1 - r0)
-    inset = ax.inset_axes([0.55 if fx < 0.5 else 0.03, 0.03 if fy > 0.5 else 0.55, 0.42, 0.42])
+    inset_box = (0.55 if fx < 0.5 else 0.03, 0.03 if fy > 0.5 else 0.55, 0.42, 0.42)
+    inset = ax.inset_axes(inset_box)
     lo, hi = mid - side / 2, mid + side / 2
     for v in np.arange(np.ceil(lo.min() * 256), np.floor(hi.max() * 256) + 1) / 256:
         inset.axvline(v, color="0.85", lw=0.8, zorder=0)
@@ -300,7 +303,27 @@ def zoom_inset(ax, triangles, centres, fills, *, view) -> list:
                else f"× {across} by {down}", transform=inset.transAxes, ha="center",
                va="bottom", fontsize="x-small", zorder=5,
                bbox={"fc": "white", "ec": "none", "alpha": 0.85, "pad": 1})  # fmt: skip
-    return [inset, ax.indicate_inset_zoom(inset, edgecolor="black", alpha=0.8)]
+    return [inset, *zoom_pointer(ax, mid, view, inset_box)]
+
+
+def zoom_pointer(ax, mid, view, box) -> list:
+    """Where the inset's speck lies on ``ax``: a dashed grey ring round ``mid`` (data
+    coordinates), larger than a centre's dot, and one thin dashed grey line from it to the
+    corner of the inset (``box``: its axes-fraction x0, y0, width, height) nearest to it.
+    Matplotlib's zoom indicator drew two black connectors, which read as a large triangle,
+    and its box round a 0.0025-px speck as a filled centre dot: "covered" (review r244 FIG-1)."""
+    r0, r1, c0, c1 = view
+    x0, y0, w, h = box
+    # the inset's corner nearest the speck, in the panel's axes fraction, then in data (y down)
+    near_x = x0 if mid[0] < c0 + (x0 + w / 2) * (c1 - c0) else x0 + w
+    near_y = y0 if mid[1] > r1 - (y0 + h / 2) * (r1 - r0) else y0 + h  # below: the foot
+    corner = np.array([c0 + near_x * (c1 - c0), r1 - near_y * (r1 - r0)])
+    ring = Circle(mid, ZOOM_RING, fill=False, ec=ZOOM_GREY, lw=1.2, ls="--", zorder=6.5)
+    ax.add_patch(ring)
+    start = mid + ZOOM_RING * (corner - mid) / np.hypot(*(corner - mid))
+    (line,) = ax.plot(*np.column_stack([start, corner]), color=ZOOM_GREY, lw=1.0, ls="--",
+                      zorder=6.5)  # fmt: skip
+    return [ring, line]
 
 
 #: The view of a case: at least MIN_VIEW pixels each way (a tiny triangle keeps some grid
@@ -950,7 +973,8 @@ class CasePicker:
             key += (f"; <span style='color:{COLORS['outside']}'>◆</span> a triangle of zero "
                     "size: its vertices rounded to one point")  # fmt: skip
         if self.zoomed:
-            key += ("; the inset magnifies a triangle too small to see on the grid (× across by "
+            key += ("; the inset magnifies a triangle too small to see on the grid, in the dashed "
+                    "ring (× across by "
                     "up and down, where they differ): as given "
                     f"(filled), and <span style='color:{VERTEX_COLOR}'>dashed</span> with its "
                     "vertices snapped to the 1/256-px grid (the grey lines), "

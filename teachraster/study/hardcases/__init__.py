@@ -47,7 +47,7 @@ from .case import (
     get_case,
     list_cases,
 )
-from .clip_space_cases import DepthResult, perspective_errors
+from .clip_space_cases import DepthResult, coplanar_clip, perspective_errors
 from .line_cases import LINE_CASES, LineCase, LineResult, get_line_case, list_line_cases
 from .naive import (
     NAIVE_RULES,
@@ -76,6 +76,7 @@ __all__ = [
     "HardCase",
     "Naive",
     "Rendered",
+    "coplanar_clip",
     "drift_along_row",
     "fill_window",
     "get_case",

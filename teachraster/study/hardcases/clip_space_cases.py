@@ -334,18 +334,25 @@ def _depth_run_factory(make_clip, truth):
     return run
 
 
+def coplanar_clip(tilt: float) -> np.ndarray:
+    """``coplanar_overlap``'s two clip-space triangles, (2, 3, 4): A (the wall, drawn first)
+    and B (the decal) in one plane, tilted by ``tilt`` (0: facing the camera). Lesson 07
+    renders them with a depth bias on B.
+
+    w = 1 and dyadic positions: window positions are on the snapping grid and the window
+    depth of a point is exactly (z + 1) / 2, so both triangles share one plane.
+    """
+
+    def z(x, y):
+        return 0.25 + tilt * (0.5 * x + 0.25 * y)
+
+    a = [(-3.0, -3.0), (3.0, -3.0), (0.0, 3.0)]
+    b = [(-2.5, 2.5), (2.5, 2.0), (0.5, -3.0)]
+    return np.array([[[x, y, z(x, y), 1.0] for x, y in t] for t in (a, b)])
+
+
 def _depth_cases():
     size = 32
-
-    def ortho_clip(tilt):
-        # w = 1 and dyadic positions: window positions are on the snapping grid and the
-        # window depth of a point is exactly (z + 1) / 2, so both triangles share one plane.
-        def z(x, y):
-            return 0.25 + tilt * (0.5 * x + 0.25 * y)
-
-        a = [(-3.0, -3.0), (3.0, -3.0), (0.0, 3.0)]
-        b = [(-2.5, 2.5), (2.5, 2.0), (0.5, -3.0)]
-        return np.array([[[x, y, z(x, y), 1.0] for x, y in t] for t in (a, b)])
 
     def check_coplanar(inputs, result: DepthResult) -> None:
         assert result.overlap > 500, "the triangles barely overlap"
@@ -370,7 +377,7 @@ def _depth_cases():
             "an ulp smaller) while float32, unorm24 and unorm16 round both to the same value: "
             "exact ties, the earlier triangle everywhere",
             frozen_inputs(size=size, tilts=(0.0, 0.25, 0.01)),
-            _depth_run_factory(ortho_clip, lambda tilt, x: np.zeros_like(x, dtype=bool)),
+            _depth_run_factory(coplanar_clip, lambda tilt, x: np.zeros_like(x, dtype=bool)),
             check_coplanar,
             methods=("batch",),
         )
