@@ -975,14 +975,24 @@ def test_projection_explorer_fits_each_ratio_at_one_scale_and_the_peak_is_marked
         ex.fig.canvas.draw()
         (px0, py0), (px1, py1) = picture.transData.transform([(0.0, 0.0), (1.0, 1.0)])
         assert px1 - px0 == pytest.approx(py1 - py0, rel=1e-6)
-        # both keys beside the picture, over neither panel
-        assert picture.get_legend() is None and curve.get_legend() is None
+        # the picture's key beside it, over neither panel; review r250 04-FIG3: the curve's
+        # short key in its own upper left, above the line t = q, which t(q) never crosses, so
+        # that t(q) gets the height the two keys took
+        assert picture.get_legend() is None
         keys = [a for a in ex._key_ax.get_children() if type(a).__name__ == "Legend"]
-        assert len(keys) == 2
-        for key in keys:
-            box = key.get_window_extent()
-            for panel in (picture, curve):
-                assert not panel.get_window_extent().overlaps(box)
+        assert len(keys) == 1
+        box = keys[0].get_window_extent()
+        for panel in (picture, curve):
+            assert not panel.get_window_extent().overlaps(box)
+        corner = curve.get_legend().get_window_extent().transformed(curve.transData.inverted())
+        assert corner.x0 < 0.05 and corner.y1 > 0.95 and corner.y0 > corner.x1  # above t = q
+        assert curve.get_window_extent().height > 0.4 * ex.fig.bbox.height
+        # r250 04-FIG3: at z1 / z0 = 1 the segment lies on the screen; the screen is a wide
+        # pale band under it, so both are seen
+        lines = {line.get_label(): line for line in picture.get_lines()}
+        screen, seg = lines["screen (z = 1)"], lines["segment in the world"]
+        assert screen.get_linewidth() > 1.5 * seg.get_linewidth()
+        assert screen.get_zorder() < seg.get_zorder() and screen.get_color() != seg.get_color()
         bars = [line for line in curve.get_lines() if "largest |t − q|" in str(line.get_label())]
         if ratio == 1.0:
             assert not bars and "t = q everywhere" in ex.info.value

@@ -1525,7 +1525,10 @@ def test_04_floor_predict_is_not_led_by_the_diagonal_and_the_heatmap_names_its_v
 def test_04_heatmap_edges_and_the_readable_floor():
     ns = lesson("04_perspective_correct_interpolation")
     peak = 3 - 2 * np.sqrt(2)
-    assert all(abs(v - peak) < 1e-4 for v in ns.edge_peak.values())  # "same peak on both edges"
+    # "same peak on both edges" where u changes; none along v3 v1 (u = 0 at both ends)
+    assert ns.edge_peak["v1v2"] == pytest.approx(peak) == ns.edge_peak["v2v3"]
+    assert ns.edge_peak["v3v1"] == 0.0
+    assert all(abs(ns.edge_gap[k].max() - v) < 1e-6 for k, v in ns.edge_peak.items())
     assert 2 < ns.floor_w.max() / ns.floor_w.min() < 3  # "w more than doubles"
     cover = ns.frames["perspective"].coverage
     rows = np.nonzero(cover.any(axis=1))[0]  # the whole floor in view, none of it cut off
@@ -1558,7 +1561,8 @@ def test_04_heatmap_edges_and_the_readable_floor():
     md = "\n".join(_cells("04_perspective_correct_interpolation", "markdown"))
     assert "37.8 against" not in md and "(printed above" not in asked
     # r154 C: lesson 00's heatmap is of another triangle (same depths and u)
-    assert "heatmap of the same triangle" not in md and "its triangle has other" in md
+    assert "heatmap of the same triangle" not in md
+    assert "for another triangle with the same depths and values" in md
     # the heatmap's dark band: Δu = 0 on v2's depth line, v2 to v1 + 2/3 (v3 - v1)
     assert round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
     near_far = np.nanmax(ns.texels[[rows.min(), rows.max()]])
@@ -1572,10 +1576,12 @@ def test_04_heatmap_edges_and_the_readable_floor():
     assert "their $z_0$ is the depth of\nour $\\mathbf{v}_1$, our $w_1$" in text
     assert "lesson 05a, section 4" in text  # w <= 0: clipping comes first (review r5-r7)
     # review r91 04-A: the marked maximum is not the centre nearest an edge's peak; it hugs
-    # edge v1 v2, while the centres nearest the peaks lie deeper inside and hold less
-    flat = " ".join(text.split())
-    assert "closest to either" not in flat and "hugs edge $v_1 v_2$" in flat
-    # every number the text quotes about the three centres is one the cell prints
+    # edge v1 v2, while the centres nearest the peaks lie deeper inside and hold less (r250
+    # FIG1: the text that says so is built from the current w, by the cell under the figure)
+    flat = " ".join(ns.peak_md.split())
+    assert "closest to either" not in flat and "inside edge $\\mathbf{v}_1\\mathbf{v}_2$" in flat
+    assert "beats those nearer the peak but deeper inside" in flat
+    # every number the text quotes about the three centres is one the cell computes
     edge = ns.xy[[1, 2, 0]] - ns.xy
     for r, c in [tuple(ns.worst), *[(ns.rows_c[k], ns.cols_c[k]) for k in ns.nearest]]:
         p = np.array([c + 0.5, r + 0.5])
@@ -1585,8 +1591,8 @@ def test_04_heatmap_edges_and_the_readable_floor():
         to_peak = np.hypot(*(ns.peaks - p).T).min()
         for number in (f"{ns.diff[r, c]:.3f}", f"{to_peak:.2f}", f"{to_edge:.2f}"):
             assert number in flat, ((r, c), number)
-    assert "0.163 at pixel (row 4, col 10)" in flat and "0.04 px inside it" in flat
-    assert np.isclose(ns.q_peak, np.sqrt(2) / (1 + np.sqrt(2)))
+    assert "0.163 at pixel (row 4, col 10)" in flat and "0.04 px inside edge" in flat
+    assert np.allclose([ns.peak_q["v1v2"], ns.peak_q["v2v3"]], np.sqrt(2) / (1 + np.sqrt(2)))
     worst = tuple(int(k) for k in ns.worst)
     assert worst == (4, 10) and round(float(ns.diff[worst]), 3) == 0.163
     to_peak = {}
@@ -2579,8 +2585,10 @@ def test_00_04_answers_wait_for_check_r66():
     assert "what shape are the <b>receding</b> checker lines" in text[ask]
     assert "how are the rows of checks spaced from near to far?" in text[ask]
     assert 'stay straight "\n    "and unkinked' in text[ask]
-    # r219 04-1: the |Δu| panel's key under the panel, outside the map (tests below)
-    assert 'legend(loc="upper center", bbox_to_anchor=(0.5, -0.17)' in text[ask - 2]
+    # r219 04-1: the |Δu| panel's key under the panel, outside the map (tests below); r250
+    # FIG4: one key for the map and the curves, under both
+    heat = next(t for t in text if "plot_error_heatmap(ax, fill.trace" in t)
+    assert 'fig.legend(*handles, loc="outside lower center"' in heat
     # review r91 04-B: no text shown before q_affine is checked describes the affine steps
     shown = [t for k, t in zip(kinds[ask + 1 : viewer + 1], text[ask + 1 : viewer + 1])
              if k == "markdown"]  # fmt: skip
@@ -2604,13 +2612,15 @@ def test_04_r219_key_horizon_and_wording():
     from notebook_runs import executed, streams
 
     ns = lesson("04_perspective_correct_interpolation")
-    # the key covers no covered pixel of the map: every covered pixel's box clear of it
+    # the key covers no covered pixel of the map: every covered pixel's box clear of it (r250:
+    # one key for the map and the curves beside it, under both)
     ax = ns.view.image.axes
     fig = ax.figure
     FigureCanvasAgg(fig)
     renderer = fig.canvas.get_renderer()
     fig.draw(renderer)
-    key = ax.get_legend().get_window_extent(renderer)
+    (key,) = fig.legends
+    key = key.get_window_extent(renderer)
     rows, cols = np.nonzero(ns.fill.coverage)
     corners = ax.transData.transform(np.column_stack([cols, rows]))
     far = ax.transData.transform(np.column_stack([cols + 1, rows + 1]))
@@ -2750,12 +2760,145 @@ def test_04_r234_questions_explorer_surfaces_floor_and_words():
     # S3, S4, S6, C1/S7
     assert "side u = 1: 26.7" in printed and "side u = 0: 26.7" in printed
     assert "changes faster than the pixels" not in md and "above the Nyquist limit" in md
-    assert ("exact everywhere only when all $w$ are equal, and along any line of constant $w$"
-            in md)  # fmt: skip
-    assert "Lesson 00's tour showed this map already: $|\\Delta u|$" in md
+    # r250 04-C1: "and along any line of constant w" (r234's S6) is false inside a triangle
+    assert "along any line of constant $w$ (the floor" not in md
+    assert "agree along the whole line if, and only if, they agree at both its ends" in md
+    assert "Lesson 00's tour drew this map for another triangle" in md
     assert "where lesson 00's map is white" not in md and ns.view.marker.get_label() == (
         "largest |Δu|"
     )
+
+
+def _lesson_04_cells() -> dict:
+    nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
+    return {c["id"]: "".join(c["source"]) for c in nb["cells"]}
+
+
+@pytest.mark.notebook
+def test_04_r250_constant_w_rule_checked_and_stated():
+    """Review r250 04-C1: the summary said affine interpolation is exact "along any line of
+    constant w"; inside a triangle it is not (the floor's pixel rows, each at one depth, carry
+    most of its error). Along such a line both interpolations are affine in screen position, so
+    they agree there only if they agree at both its ends: the cell checks it on the line of
+    depth w2, exact for u, off by a third for an attribute that is 1 at v3."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("04_perspective_correct_interpolation")
+    printed = streams(executed("04_perspective_correct_interpolation").notebook())
+    assert ns.iso_line and round(ns.s_iso, 3) == 0.667 and ns.du_iso.max() < 1e-12
+    assert np.ptp(ns.lam_iso @ (1 / ns.w)) < 1e-12  # the line is one of constant w
+    assert ns.bend < 1e-12 and ns.iso_gap == pytest.approx(1 / 3)
+    assert "f: affine 0.000 -> 0.667, perspective 0.000 -> 0.333" in printed
+    assert "f: largest |Δf| on it 0.333; both straight" in printed
+    # the floor: every pixel row at one depth, yet rows inside it carry error
+    rows = np.nonzero(ns.frames["perspective"].coverage.any(axis=1))[0]
+    assert np.nanmax(ns.texels[rows[len(rows) // 2]]) > 10
+    md = " ".join(" ".join(t.split()) for k, t in _lesson_04_cells().items()
+                  if k in ("c11", "c20"))  # fmt: skip
+    assert "along any line of constant $w$ (the floor" not in md
+    assert "on an edge whose two ends have the same $w$ (the floor's near and far edges" in md
+    assert "agree along the whole line if, and only if, they agree at both its ends" in md
+    assert "(section 5: the line of depth $w_2$ is exact for $u$, not for an attribute" in md
+
+
+def _section_5(w_text: str) -> dict:
+    """Lesson 04's §2 to §5 cells run again with ``w = np.array(w_text)`` (the summary's
+    Try-it), the widgets left out; their namespace."""
+    cells = _lesson_04_cells()
+    setup = cells["c01"].replace("%matplotlib inline", "")
+    made = cells["c04-surfaces"].replace("w = np.array([1.0, 2.0, 4.0])", f"w = np.array({w_text})")
+    assert made != cells["c04-surfaces"]
+    made = made.split("surfaces = ")[0]
+    toggle = cells["c09"].split("player = ")[0]
+    ns: dict = {"display": lambda *a, **k: None}
+    for source in (setup, made, cells["c05"], toggle, cells["c12"], cells["ab224988"],
+                   cells["c12-peak-md"], cells["c12-spans"]):  # fmt: skip
+        exec(source.replace("plt.show()", ""), ns)
+    return ns
+
+
+@pytest.mark.notebook
+def test_04_r250_section_5_follows_the_try_it():
+    """Review r250 04-FIG1: with the summary's Try-it (w = [1, 1, 8]) section 5 kept ratio 2's
+    peaks (q = 0.586 on both edges, 3 - 2√2), marked a peak on v1 v2 where the error is 0, and
+    its text still quoted 0.163 at (row 4, col 10). Now peaks, marks and text come from w.
+    FIG4: the two indistinguishable maps are gone; the map and the curves share one key."""
+    cells = _lesson_04_cells()
+    code = cells["c12"] + cells["ab224988"]
+    assert "0.586" not in code and "3 - 2 * np.sqrt(2)" not in code and "q_peak" not in code
+    assert "0.163" not in cells["c11"] and "row 4, col 10" not in cells["c11"]
+    try:
+        ns = _section_5("[1.0, 1.0, 8.0]")
+        fig = ns["fig"]
+        assert ns["edge_peak"]["v1v2"] == 0.0 == ns["edge_peak"]["v3v1"]
+        r = 8.0
+        assert ns["edge_peak"]["v2v3"] == pytest.approx((np.sqrt(r) - 1) ** 2 / (r - 1))
+        assert list(ns["peak_q"]) == ["v2v3"]  # one diamond, on the edge that has an error
+        gap = ns["edge_gap"]["v2v3"]
+        assert ns["peak_q"]["v2v3"] == pytest.approx(ns["qq"][gap.argmax()], abs=1e-3)
+        assert round(ns["peak_q"]["v2v3"], 3) == 0.739 and round(gap.max(), 3) == 0.478
+        worst = ns["worst"]
+        text = ns["peak_md"]
+        assert f"{np.nanmax(ns['diff']):.3f} at pixel (row {worst[0]}, col {worst[1]})" in text
+        assert worst == (12, 6) and "0.463" in text and "It is the pixel centre nearest" in text
+        map_ax, curves = ns["axd"]["map"], ns["axd"]["edges"]
+        diamonds = [ln for ln in map_ax.get_lines() if ln.get_marker() == "D"]
+        assert len(diamonds) == 1 and len(diamonds[0].get_xdata()) == 1
+        marks = [ln for ln in curves.get_lines() if ln.get_marker() == "D" and len(ln.get_xdata())]
+        assert [(float(m.get_xdata()[0]), float(m.get_ydata()[0])) for m in marks] == [
+            pytest.approx((ns["peak_q"]["v2v3"], ns["edge_peak"]["v2v3"]))
+        ]
+        # no reference line at 3 - 2√2, no rule at 0.586
+        assert not [ln for ln in curves.get_lines() if len(set(ln.get_ydata())) == 1
+                    and np.isclose(ln.get_ydata()[0], 3 - 2 * np.sqrt(2))]  # fmt: skip
+        # two panels and a colour bar; the key under both, over neither
+        panels = [a for a in fig.axes if a.get_label() != "<colorbar>"]
+        assert len(panels) == 2
+        fig.canvas.draw()
+        (key,) = fig.legends
+        box = key.get_window_extent()
+        assert all(not a.get_window_extent().overlaps(box) for a in panels)
+        # the map gets the width the two upper maps took: over a third of the figure's
+        assert map_ax.get_window_extent().width > 0.33 * fig.bbox.width
+    finally:
+        plt.close("all")
+
+
+@pytest.mark.notebook
+def test_04_r250_subdivided_spans_words_and_links():
+    """Review r250 04-M1: Quake's divide every N pixels, on §2's triangle, with numbers
+    (largest |Δu| 0.107 at N = 16, 0.022 at 4, against 0.163 affine), linked to lesson 06,
+    which prices it. S1: q_where's explanation names the section that derives each of t/z and
+    1/z. S2: no widget mechanics in the text. S3: no authoring history in the code. S4: the
+    exercise that asks for these weights is linked."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("04_perspective_correct_interpolation")
+    printed = streams(executed("04_perspective_correct_interpolation").notebook())
+    err = ns.subdivided_error
+    assert err[1] < 1e-12 and all(err[a] < err[b] for a, b in [(2, 4), (4, 8), (8, 16)])
+    assert err[16] < np.nanmax(ns.diff)
+    assert round(err[4], 3) == 0.022 and round(err[16], 3) == 0.107
+    assert "16                0.28          0.107" in printed
+    assert f"longest span: {ns.persp.coverage.sum(axis=1).max()} pixels" in printed
+    cells = _lesson_04_cells()
+    assert "[Lesson 06](06_what_accuracy_costs.ipynb), section 1" in cells["c12-spans-text"]
+    assert "import span_divides" in cells["c12-spans"]
+    assert "section 2 why t/z does" in cells["c03a"]
+    assert "t/z and 1/z are the values that step evenly" not in cells["c03a"]
+    md = " ".join(t for t in cells.values())
+    for mechanics in ("Pressing it opens", "title bar instead", "each button in its sheet's",
+                      "is refitted to the new segment", "(thin, so that"):  # fmt: skip
+        assert mechanics not in md, mechanics
+    comments = " ".join(line.split("#", 1)[1] for t in cells.values() for line in t.splitlines()
+                        if "#" in line)  # fmt: skip
+    for history in ("as a Markdown cell it stood", "it hid the", "it lay over", "it touched",
+                    "a thick one hid", "which the light checks (0.92 grey) merged into"):  # fmt: skip
+        assert history not in comments, history
+    assert "[Exercise 3](exercises/03_interpolation.ipynb), part 3.2" in cells["c20"]
+    # FIG2: the floor's diagonal over the heatmap is white, outlined in black
+    floor = cells["378d0282"]
+    assert 'color="white"' in floor and "withStroke" in floor and 'COLORS["outside"]' not in floor
 
 
 def test_05a_05b_no_answer_in_the_markdown_before_check():
@@ -3089,7 +3232,7 @@ def test_04_r144_ritschel_step_questions_and_floor_diagonal():
               for c in choices}  # fmt: skip
     assert {(True, k, e) for k in (True, False) for e in (True, False)} <= combos
     renders = next(t for t in text if "plot_image(ax, frames[mode]" in t)
-    assert "    # a thin, sparse dash" in renders and "lw=1.2)" in renders
+    assert "    # thin and sparse" in renders and "lw=1.2)" in renders
     for t in text:
         if re.match(r"q_\w+\.hold\(\)", t):
             assert t.split("\n", 1)[0].endswith("# shown after you answer above"), t[:80]

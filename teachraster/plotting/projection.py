@@ -20,7 +20,7 @@ import numpy as np
 from matplotlib.ticker import MaxNLocator
 
 from ..core.interpolation import perspective_weights
-from .common import fs, lw, ms
+from .common import fs, lw, ms, tint
 from .style import COLORS, OKABE_ITO
 
 
@@ -157,7 +157,10 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     out = ProjectionArtists(segment, top=far, shows=bool(shows))
     for x, z in pts:
         out.steps += ax.plot([0, x], [0, z], color=COLORS["grid"], lw=lw(0.3), zorder=1)
-    ax.plot([lo, hi], [1, 1], color=COLORS["edge"], lw=lw(0.6), label="screen (z = 1)")
+    # a wide pale band under the segment: a segment lying on the screen (z0 = z1 = 1) is
+    # still seen as a line of its own
+    ax.plot([lo, hi], [1, 1], color=tint(COLORS["fill"], 0.45), lw=lw(2.2), zorder=0.5,
+            solid_capstyle="butt", label="screen (z = 1)")  # fmt: skip
     steps = f"{n_steps} equal steps of q" if n_steps > 1 else "the ends' images"
     ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6), label=steps)
     ax.plot(*pts.T, "-", color=COLORS["edge"], lw=lw(1.0), label="segment in the world")
@@ -190,13 +193,13 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     if curve_ax is not None:
         qq = np.linspace(0.0, 1.0, 200)
         curve_ax.plot(qq, segment.world_parameter(qq), color=COLORS["edge"], lw=lw(0.8),
-                      label="t(q), perspective")  # fmt: skip
+                      label="t(q)")  # fmt: skip
         curve_ax.plot(qq, qq, "--", color=COLORS["grid"], lw=lw(0.6), label="t = q (affine)")
         q_star, gap = segment.peak()
         if gap > 1e-12:  # at z1 = z0 there is no gap to mark
             curve_ax.plot([q_star, q_star], [q_star - gap, q_star], color=OKABE_ITO["reddish_purple"],
                           lw=lw(0.6), marker="_", ms=ms(1.0),
-                          label=f"largest |t − q|, at q = {q_star:.3f}")  # fmt: skip
+                          label="largest |t − q|")  # fmt: skip
         # not clipped, and a margin round the unit square: at q = 0 or 1 the dot sat half
         # hidden on the frame's corner (review r77 04-4)
         (out.curve_point,) = curve_ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.2),

@@ -39,7 +39,8 @@ class AttributeSurfaces(Explorable):
         The sheets switched on at the start, of ``SHEETS``: "correct" (the
         perspective-correct f), "affine", "fw" (f/w) and "inv" (1/w). Default: the page's
         own, the two f sheets (lesson 03 switches f/w and 1/w on later; lesson 04 opens on
-        all four, its claim being that two of them are planes).
+        f, f/w and 1/w, its claim being that two of them are planes, and leaves the affine
+        plane for the student to switch on).
 
     Examples
     --------
@@ -70,13 +71,16 @@ class AttributeSurfaces(Explorable):
         super().__init__()
         self.data = {"xy": xy.tolist(), "w": w.tolist(), "f": f.tolist(), "width": width,
                      "height": height}  # fmt: skip
-        self.state = {"w": w.tolist()}
+        state = {"w": w.tolist()}
         if show is not None:
             show = [show] if isinstance(show, str) else list(show)
             unknown = [name for name in show if name not in self.SHEETS]
             if unknown:
                 raise ValueError(f"show: unknown sheets {unknown}, expected some of {self.SHEETS}")
-            self.state["show"] = {name: name in show for name in self.SHEETS}
+            state["show"] = {name: name in show for name in self.SHEETS}
+        # one assignment: a traitlets Dict syncs to the page only when it is assigned, never
+        # when changed in place (the page then opened on its own default sheets)
+        self.state = state
 
 
 class EyeRayExplorer(Explorable):

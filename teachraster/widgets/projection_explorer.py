@@ -93,7 +93,7 @@ class ProjectionExplorer(Shown):
             axd = self.fig.subplot_mosaic(
                 [["picture", "key"], ["picture", "curve"]],
                 width_ratios=[1.15, 1.0],
-                height_ratios=[1.4, 1.0],
+                height_ratios=[1.0, 1.2],
             )
             self.axes = [axd["picture"], axd["curve"]]
             self._key_ax = axd["key"]
@@ -134,16 +134,14 @@ class ProjectionExplorer(Shown):
         self.artists = plot_projection(ax, self.segment, n_steps=self.n_steps, q=self._q,
                                        curve_ax=curve, frame=frame_of([self.segment]))  # fmt: skip
         self.t = self.artists.update(self._q)
-        # both keys in an Axes of their own above the curve: beside the picture the picture's
-        # took the picture's own width, inside it lay over the rays at some q; the curve's,
-        # inside that narrower panel, over its dashed line
-        for key, where in ((ax.get_legend(), "upper center"), (curve.get_legend(), "lower center")):
-            # a Legend added as an artist: Axes.legend keeps one, and a second call replaced
-            # the first while drawing the second twice
-            self._key_ax.add_artist(Legend(
-                self._key_ax, key.legend_handles, [t.get_text() for t in key.get_texts()],
-                loc=where, fontsize=key.get_texts()[0].get_fontsize(), borderaxespad=0.0))  # fmt: skip
-            key.remove()
+        # the picture's key in an Axes of its own above the curve: beside the picture it took
+        # the picture's own width, inside it lay over the rays at some q. The curve's short
+        # key stays in its upper left, above the line t = q, where t(q) never goes (z1 >= z0).
+        key = ax.get_legend()
+        self._key_ax.add_artist(Legend(
+            self._key_ax, key.legend_handles, [t.get_text() for t in key.get_texts()],
+            loc="center", fontsize=key.get_texts()[0].get_fontsize(), borderaxespad=0.0))  # fmt: skip
+        key.remove()
         self._key_ax.axis("off")
         a = self.artists
         # a new q moves these only: the rest (the rays of equal steps, the segment, the

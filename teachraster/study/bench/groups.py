@@ -67,7 +67,7 @@ def floor_quad(size: int, roll: float = 25.0):
     return xy[tris], w[tris], uv[tris]
 
 
-def _divides(cov: np.ndarray, mode: str, n: int) -> int:
+def span_divides(cov: np.ndarray, mode: str, n: int) -> int:
     """Perspective divides a scalar span loop performs: the cost numpy's timing hides.
 
     Per pixel for perspective, none for affine, and for subdivided one at every n-th pixel
@@ -149,7 +149,7 @@ def bench_interpolation(
 
         texels, px, covs = floor_errors(size, mode, n, fills=fill())
         err = np.abs(texels).ravel()
-        divides = sum(_divides(cov, mode, n) for cov in covs)
+        divides = sum(span_divides(cov, mode, n) for cov in covs)
         rows_out.append(
             {
                 "group": "interpolation",
