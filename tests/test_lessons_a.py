@@ -571,9 +571,320 @@ def test_00_r241_items():
     # S10: single cells, which keep the answers; the cells it names need only tri, W and H
     try_it = tour[tour.index("**Try it:**") :]
     assert "run that cell (Shift+Enter), then the error map's cell" in try_it
-    assert "Run All would ask the three questions again" in try_it
+    assert "Run All would ask the four questions again" in try_it  # r249: q_fragments
     fills = next(c for c in code if 'axes[0].set_title(f"span tables, point 4' in c)
     assert "covered_share" not in fills and "halfplane" not in code[ask + 2]
+
+
+def _tour_code(cell_id: str) -> str:
+    """The source of lesson 00's cell ``cell_id``."""
+    nb = json.loads((NOTEBOOKS / "00_tour.ipynb").read_text())
+    return "".join(next(c for c in nb["cells"] if c.get("id") == cell_id)["source"])
+
+
+def _run_tour_cells(*cell_ids, **given) -> dict:
+    """Lesson 00's import cell and then ``cell_ids``, with ``given`` as globals (the cells
+    above them stood in for); the questions they hold for are stood in for too."""
+    from types import SimpleNamespace
+
+    held = SimpleNamespace(hold=lambda: None)
+    ns: dict = {f"q_{q}": held for q in ("facing", "centres", "half", "fragments")}
+    exec(_tour_code("c01").replace("%matplotlib inline", ""), ns)
+    ns["plt"].switch_backend("Agg")
+    ns["plt"].show = lambda: None
+    ns.update(given)
+    for cell_id in cell_ids:
+        exec(_tour_code(cell_id), ns)
+    return ns
+
+
+def _crosses(box, frame, gap: float = 1.0) -> bool:
+    """True when display box ``box`` lies across one of ``frame``'s sides."""
+    across_x = box.x0 - gap < frame.x0 < box.x1 + gap or box.x0 - gap < frame.x1 < box.x1 + gap
+    across_y = box.y0 - gap < frame.y0 < box.y1 + gap or box.y0 - gap < frame.y1 < box.y1 + gap
+    within_x = box.x1 > frame.x0 and box.x0 < frame.x1
+    within_y = box.y1 > frame.y0 and box.y0 < frame.y1
+    return (across_x and within_y) or (across_y and within_x)
+
+
+def test_00_r249_normals_and_the_two_us():
+    """Review r249, lesson 00. C1: the pointer to lessons 03 and 04 for interpolated normals
+    went to lessons that have none: the tour says that smooth shading would interpolate them
+    as any attribute, and that no lesson does. S1: where the player appears, one sentence
+    separates the captions' u4 (Ek's screen x) from the attribute u."""
+    md = _cells("00_tour", "markdown")
+    why = " ".join(next(t for t in md if "### Why triangles?" in t).split())
+    assert "one more attribute for lessons 03 and 04" not in why
+    assert "an attribute like `u`, by the rules lessons 03 and 04 teach for any attribute" in why
+    assert "no lesson interpolates a normal" in why
+    for name in ("03_barycentric_and_plane_equations", "04_perspective_correct_interpolation"):
+        text = "\n".join(_cells(name, "markdown") + _cells(name, "code")).lower()
+        assert "vertex normal" not in text and '"normal"' not in text, name
+    step = " ".join(next(t for t in md if t.startswith("## Step through it")).split())
+    assert r"$u_4$, $u_\text{top}$ are screen $x$ and $v_\text{mid}$ screen $y$" in step
+    assert "while `u` in code font is always the attribute" in step
+    drag = " ".join(next(t for t in md if t.startswith("### Drag it yourself")).split())
+    assert "(The line's u4 is Ek's $u_4$ again: screen $x$.)" in drag
+
+
+@pytest.mark.notebook
+def test_00_r249_the_cubes_two_fragments_are_asked_and_explained():
+    """Review r249 M1 and its change 1: the cube's exactly 2 fragments per covered pixel, the
+    guarantee of a watertight mesh, went unexplained ("the depth test keeps one"). It is the
+    tour's fourth question, asked before any text or output gives it, its answer computed
+    from the render (per pixel, before the depth test), held until checked, and explained:
+    the closed cube, the exact shared edges and, for a centre on an edge, the top-left rule,
+    shown on a square whose diagonal runs through centres (this view has no such tie)."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("00_tour")
+    nb = json.loads((NOTEBOOKS / "00_tour.ipynb").read_text())
+    cells = nb["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    ask = next(i for i, t in enumerate(text) if "q_fragments = Predict(" in t)
+    assert cells[ask]["metadata"]["jupyter"]["source_hidden"] is True
+    held = next(i for i, t in enumerate(text) if t.startswith("q_fragments.hold()"))
+    assert held == ask + 1 and "print(" in text[held]
+    # nothing between the last question's cells and this one tells the count
+    previous = max(i for i, t in enumerate(text) if t.startswith("q_facing.hold()"))
+    before = " ".join(" ".join(text[previous + 1 : ask]).split())
+    for phrase in ("two fragments", "2 per covered pixel", "half the fragments", "exactly"):
+        assert phrase not in before, phrase
+    asked = text[ask]
+    assert "answer=fragments_answer," in asked and "choices=[HIDDEN, EXACT, EDGES]," in asked
+    # the answer is the render's, pixel by pixel: 2 at every covered pixel
+    assert ns.counts == {2: ns.covered} and ns.covered == 8130 and ns.per_pixel.min() == 2
+    assert ns.fragments_answer == ns.EXACT and ns.fragments == 2 * ns.covered
+    printed = streams(executed("00_tour").notebook())
+    assert "2 fragments at 8,130 pixels" in printed and "centres exactly on an edge: 0" in printed
+    # the explanation: closed and convex, exact shared edges, the top-left rule for ties
+    explain = " ".join(asked.split("explain=")[1].split())
+    for words in ("closed and convex", "from the same snapped vertices", "<b>top-left rule</b>",
+                  "exactly one covers a centre on it", "lesson 02 §5"):  # fmt: skip
+        assert words in explain, words
+    assert ns.ties == 0 and "no centre of this view lies exactly on an edge" in asked
+    # the square: its shared diagonal through 10 centres, once each under the rule, twice
+    # with E >= 0, never with E > 0; every other centre once in all three
+    rule, inclusive, strict = ns.square_counts.values()
+    assert ns.diagonal.sum() == 10 and (ns.diagonal <= ns.inner).all()
+    assert (rule[ns.inner] == 1).all()
+    assert (inclusive[ns.diagonal] == 2).all() and (strict[ns.diagonal] == 0).all()
+    off = ns.inner & ~ns.diagonal
+    assert (inclusive[off] == 1).all() and (strict[off] == 1).all()
+    # culling's "half the fragments" comes after the held output, not before the question
+    assert text[held + 1].startswith("Culling the faces") and "half" in text[held + 1]
+
+
+def test_00_r249_figures_clear_of_frames_dots_and_keys():
+    """Review r249 FIG1: in the error map's panels "v1" lay on the top frame and "v2" across
+    the right one, and the "+" under the ring of the largest error. FIG2: in q_facing's
+    answer "v2" lay over its dot and the arrowhead. FIG3: in the player's comparison, the
+    row profile's key covered the affine curve's last dot."""
+    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    ns = _tour_error_cell([1.0, 2.0, 4.0])
+    canvas = FigureCanvasAgg(ns["fig"])  # the cell's figure was closed: drawn here again
+    canvas.draw()
+    renderer = canvas.get_renderer()
+    for labelled in ns["drawn"]:
+        ax = labelled.outline.axes
+        frame = ax.get_window_extent(renderer)
+        for label in labelled.labels:
+            assert not _crosses(label.get_window_extent(renderer), frame), label.get_text()
+    ring = np.add(ns["heat"].worst[::-1], 0.5)
+    plus = next(t for t in ns["axd"]["du"].texts if t.get_text() == "+")
+    assert np.hypot(*(np.array(plus.get_position()) - ring)) > 2.5
+    plt.close("all")
+
+    facing = _run_tour_cells("9e51dee3")
+    fig = facing["facing_figure"]()
+    fig.canvas.draw()
+    renderer, ax = fig.canvas.get_renderer(), fig.axes[0]
+    label = next(t for t in ax.texts if t.get_text() == "v2").get_window_extent(renderer)
+    dot = ax.transData.transform(facing["v2"])
+    radius = 9 / 2 * fig.dpi / 72  # the dots' ms=9
+    assert label.x0 > dot[0] + radius and label.y0 < dot[1] < label.y1  # right of its dot
+    plt.close(fig)
+
+    from teachraster.plotting import use_style
+    from teachraster.widgets import FillPlayer
+
+    use_style("classroom")
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    player = FillPlayer(tri, 16, 16, method="span", step=9, backend="image")
+    profile = player.interp_view.profile
+    pfig = profile.title.axes.figure
+    pfig.canvas.draw()
+    renderer, pax = pfig.canvas.get_renderer(), profile.title.axes
+    key = pax.get_legend().get_window_extent(renderer)
+    for line in profile.lines:
+        x, y = line.get_xdata(), line.get_ydata()
+        shown = pax.transData.transform(np.column_stack([x, y])[np.isfinite(y)])
+        r = line.get_markersize() / 2 * pfig.dpi / 72
+        under = ((shown[:, 0] + r > key.x0) & (shown[:, 0] - r < key.x1)
+                 & (shown[:, 1] + r > key.y0) & (shown[:, 1] - r < key.y1))  # fmt: skip
+        assert not under.any(), (line.get_label(), shown[under])
+    player.close()
+
+
+def test_00_r249_side_view_key_and_u():
+    """Review r249 S2: the side view's key said "where those rays hit it" of rays it did not
+    name, and the answer's title gave t where the question asks for u. The eye rays are in
+    the dots' entry now, and the tour's two side views name the world parameter u (= t:
+    u runs evenly along the edge in the world, as the explanation says)."""
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting.projection import Segment, plot_projection
+
+    for cell_id in ("tour-side-view", "tour-q-half"):
+        assert 'world="u")' in _tour_code(cell_id), cell_id
+    assert "<code>u</code> is Ek's <i>t</i>" in _tour_code("tour-q-half")
+    fig, ax = plt.subplots()
+    art = plot_projection(ax, Segment(-1.0, 1.0, 1.0, 2.0), q=0.5, world="u")
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "where those rays hit it" not in labels and "eye rays, where they meet it" in labels
+    assert "what it shows: u" in labels and "affine guess: u = q" in labels
+    assert "u = 0.33 on the segment" in art.label.get_text()
+    key = ax.get_legend().legend_handles[labels.index("eye rays, where they meet it")]
+    assert key.get_linestyle() == "-" and key.get_marker() == "o"  # a ray and its dot
+    plt.close(fig)
+    fig, ax = plt.subplots()  # lesson 04's: Ek's t, as before
+    assert (
+        "t = 0.33 on the segment"
+        in plot_projection(ax, Segment(-1.0, 1.0, 1.0, 2.0)).label.get_text()
+    )
+    plt.close(fig)
+
+
+@pytest.mark.notebook
+def test_00_r249_depth_formula_and_public_names():
+    """Review r249 S3: the depth check imported a deep internal module and the text gave
+    z_clip/w = a + b/w without a or b. The text gives both, and the cell writes the two lines
+    out and checks them against the package's public tr.window_depth."""
+    from notebook_runs import executed, streams
+
+    nb = json.loads((NOTEBOOKS / "00_tour.ipynb").read_text())
+    for cell in nb["cells"]:
+        if cell["cell_type"] == "code" and not cell["metadata"].get("jupyter", {}).get(
+            "source_hidden"
+        ):
+            source = "".join(cell["source"])
+            assert "teachraster.pipeline" not in source and "teachraster.core" not in source
+    depth = _tour_code("tour-depth-check")
+    assert "z_ndc = (far + near) / (far - near) - 2 * far * near / ((far - near) * w)" in depth
+    assert "return z_ndc / 2 + 0.5" in depth
+    text = " ".join(_tour_code("tour-depth-text").split())
+    assert r"$a = \frac{\text{far} + \text{near}}{\text{far} - \text{near}}$" in text
+    assert r"$b = -\frac{2\,\text{far}\cdot\text{near}}{\text{far} - \text{near}}$" in text
+    ns = lesson("00_tour")
+    assert ns.same_rule and ns.z_gap < 1e-12
+    printed = streams(executed("00_tour").notebook())
+    assert "these two lines give the package's tr.window_depth: True" in printed
+
+
+def test_00_r249_conventions_links_resolve():
+    """Review r249 S4: the tour's links to CONVENTIONS.md pointed beside the notebook, where
+    the repository has none. Each bare link (where the file lies beside the lessons
+    `teachraster lessons` copies, and beside a page `teachraster html` writes) comes with
+    the repository's, which resolves from notebooks/; the export copies the file beside
+    the page."""
+    from types import SimpleNamespace
+
+    from teachraster import course
+    from teachraster.cli.lesson_pages import copy_linked_files
+
+    tour = "\n".join(_cells("00_tour", "markdown"))
+    links = re.findall(r"\]\(([^)]*CONVENTIONS\.md)\)", tour)
+    assert links and set(links) == {"CONVENTIONS.md", "../CONVENTIONS.md"}
+    assert (NOTEBOOKS / "../CONVENTIONS.md").resolve() == course.conventions().resolve()
+    # every bare link has the repository's within the same sentence
+    for m in re.finditer(r"\]\(CONVENTIONS\.md\)", tour):
+        assert "](../CONVENTIONS.md)" in tour[m.end() : m.end() + 300], tour[
+            m.start() - 80 : m.end()
+        ]
+    nb = SimpleNamespace(cells=[SimpleNamespace(cell_type="markdown", source=tour)])
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as folder:
+        copies = copy_linked_files(nb, Path(folder))
+        assert [p.name for p in copies] == ["CONVENTIONS.md"]
+        assert copies[0].read_bytes() == course.conventions().read_bytes()
+    nb.cells[0].source = "no link here, `CONVENTIONS.md` named only"
+    with tempfile.TemporaryDirectory() as folder:
+        assert copy_linked_files(nb, Path(folder)) == [] and not any(Path(folder).iterdir())
+
+
+def test_00_r249_the_players_counter_gives_the_range():
+    """Review r249 S5: the tour's player opened on "9 of 17 (row)", read as the 9th of 17
+    steps where there are 18 (numbered 0-17). The readout gives the range, as FillView's
+    header does: "9 of 0–17 (row)"."""
+    from teachraster.widgets import FillPlayer
+
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    player = FillPlayer(tri, 16, 16, method="span", step=9, backend="image")
+    assert len(player.trace) == 18 and player.step_info == "of 0–17 (row)"
+    assert player.frames.infos[0] == "of 0–17 (snap)" and player.frames.infos[-1].startswith(
+        "of 0–17 ("
+    )
+    player.close()
+
+
+def test_00_r249_drag_the_tour_triangle():
+    """Review r249 change 2: nothing on the page could be dragged; the Try-it meant editing
+    code. Lesson 02's TriangleEditor now takes the tour triangle (u and w included), held
+    until the three questions it would answer are checked, and shows the fills, the error
+    map and the facing as its vertices move; the Try-it starts there."""
+    cell = _tour_code("tour-drag")
+    for q in ("q_facing", "q_centres", "q_half"):
+        assert f"{q}.hold()" in cell
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    ns = _run_tour_cells("tour-drag", tri=tri, W=16, H=16)
+    editor = ns["editor"]
+    assert np.allclose(editor.tri.xy, tri.xy) and np.allclose(editor.tri.w, tri.w)
+    assert "back-facing" in editor.info.value and editor.interp_view.maximum > 0.1
+    editor.set_vertex(2, x=7.5, y=1.5)  # v3 above the edge v1 -> v2: front-facing
+    assert "front-facing" in editor.info.value
+    for i in range(3):
+        editor.set_vertex(i, w=1.0)
+    assert editor.interp_view.maximum < 1e-12  # equal w: the error map goes black
+    assert np.allclose(tri.xy[2], [5.1, 12.8])  # the tour's own triangle stays as given
+    editor.close()
+    try_it = " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    try_it = try_it[try_it.index("**Try it:**") :]
+    assert try_it.startswith(
+        "**Try it:** in the editor (under *Drag it yourself*), set the three `w` equal"
+    )
+
+
+def test_00_r249_reference_tables_folded():
+    """Review r249 change 3: the last two cells were about 110 lines of reference tables.
+    Each keeps its heading (the links to #By-stage and #Conventions-and-symbols) and a short
+    summary; the lists and tables are folded in <details>."""
+    md = _cells("00_tour", "markdown")
+    stage = next(t for t in md if t.startswith("### By stage"))
+    conventions = next(t for t in md if t.startswith("## Conventions and symbols"))
+    for cell, folds in ((stage, 1), (conventions, 2)):
+        assert cell.count("<details><summary>") == folds == cell.count("</details>")
+        shown = re.sub(r"<details>.*?</details>", "", cell, flags=re.S)
+        assert len([ln for ln in shown.splitlines() if ln.strip()]) <= 14, shown
+        assert "| Vulkan" not in shown and "- **vertex processing**" not in shown
+    assert "### Symbols used in every lesson" in re.sub(r"<details>.*?</details>", "",
+                                                         conventions, flags=re.S)  # fmt: skip
+    # and folded in the page `teachraster html` writes too (its image embedding closed each
+    # <details> right after its summary, leaving the fold empty)
+    import nbformat
+
+    from teachraster.cli.lesson_pages import lesson_html
+
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_markdown_cell(stage)]
+    page = lesson_html(nb, NOTEBOOKS / "00_tour.ipynb")
+    fold = page[page.index("<details>") : page.index("</details>")]
+    assert "<strong>vertex processing</strong>" in fold and "lesson 05a §4" in fold
 
 
 @pytest.mark.notebook

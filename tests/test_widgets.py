@@ -115,7 +115,7 @@ def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     frames = player.frames
     captions = [s.caption for s in player.trace]  # text: the page never parses it
     assert frames.captions[:-1] == captions[:-1]
-    assert frames.infos[0] == f"of {len(player.trace) - 1} (snap)"
+    assert frames.infos[0] == f"of 0–{len(player.trace) - 1} (snap)"
     # review r9/r10 (lesson 04 c15): the last step's picture shows the values it interpolates
     # (coloured by them, keyed); its caption points to the comparison of both ways, and
     # its readout stays short: a long one pushed the speed menu onto a new line and
@@ -124,7 +124,7 @@ def test_the_page_gets_captions_as_text_and_groups_on_request(player):
     # review r208 00-3: the hint is a sentence of its own, after a full stop
     assert frames.captions[-1] == f"{captions[-1]}. {COMPARISON_HINT}"
     assert "click the comparison's title" in frames.captions[-1]
-    assert frames.infos[-1] == f"of {len(player.trace) - 1} (interpolate)"
+    assert frames.infos[-1] == f"of 0–{len(player.trace) - 1} (interpolate)"
     player.view.show_step(-1, draw=False)
     assert player.view.values.get_visible()
     bar = player.view.value_bar  # the key's colour bar of u (review r11: two swatches)
@@ -881,11 +881,13 @@ def test_ipympl_sends_one_fast_frame_per_step():
 
 
 def test_step_label_follows_the_slider(player):
+    # review r249 S5: the steps are numbered from 0, so the readout gives their range ("9 of
+    # 0–17"), not the last number ("9 of 17" read as a count of 17 steps), as FillView does
     player.slider.value = 0
-    assert player.step_info == f"of {len(player.trace) - 1} (snap)"
+    assert player.step_info == f"of 0–{len(player.trace) - 1} (snap)"
     player.method.value = "halfplane"
     player.slider.value = player.trace.first_work_step
-    assert player.step_info == f"of {len(player.trace) - 1} (pixel)"
+    assert player.step_info == f"of 0–{len(player.trace) - 1} (pixel)"
     assert player.view.header.get_text() == "Half-planes"  # still: drawn once, not per step
 
 

@@ -64,7 +64,26 @@ def export_notebook_html(notebook: Path, output: Path, *, timeout: int, quiet: b
     page.counts.update(count_widgets(nb))
     body = lesson_html(nb, notebook)
     output.write_text(body, encoding="utf-8")
+    copy_linked_files(nb, output.parent)
     return page
+
+
+def copy_linked_files(nb, folder: Path) -> list[Path]:
+    """A copy of ``CONVENTIONS.md`` in ``folder`` if a Markdown cell of ``nb`` links it by its
+    bare name, as it lies beside the lessons that ``teachraster lessons`` copies: the link
+    then opens from the page too (review r249 S4: the tour's links to it). The copies made."""
+    import shutil
+
+    from .. import course
+
+    text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+    name = course.CONVENTIONS
+    if f"]({name})" not in text and f"]({name}#" not in text:
+        return []
+    source, target = course.conventions(), folder / name
+    if not (target.exists() and target.samefile(source)):  # a page written beside it
+        shutil.copyfile(source, target)
+    return [target]
 
 
 def lesson_html(nb, notebook: Path) -> str:

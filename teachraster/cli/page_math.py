@@ -66,6 +66,14 @@ def markdown_renderer_class():
         def heading(self, text: str, level: int, **attrs) -> str:
             return plain_mathml(super().heading(text, level, **attrs))
 
+        def _html_embed_images(self, html: str) -> str:
+            # nbconvert writes every HTML block again through BeautifulSoup to embed its
+            # images, which closes the block's open tags: "<details><summary>...</summary>",
+            # a block of its own above the Markdown it folds, came out as an empty fold with
+            # that Markdown after it (review r249: the tour's reference tables). Only a block
+            # with an image needs it.
+            return super()._html_embed_images(html) if "<img" in html.lower() else html
+
     return MathMLRenderer
 
 

@@ -109,14 +109,21 @@ def all_groups(view, key: int = KEY) -> list[tuple[list, list]]:
     return [render_group(view, g, key) for g in range(-(-view.n_steps // key))]
 
 
+def step_info(trace, k: int) -> str:
+    """What the page shows after step ``k``'s number: ``"of 0–787 (pixel)"``.
+
+    The steps are numbered from 0, as the slider, the captions and FillView's header number
+    them: "9 of 17" read as the 9th of 17 steps where there are 18 (review r249 S5).
+    """
+    return f"of 0–{len(trace) - 1} ({trace.step(k).kind})"
+
+
 def step_texts(trace) -> tuple[list[str], list[str]]:
-    """Caption and "of 787 (pixel)" of every step, for the page to show beside its frame."""
-    last = len(trace) - 1
+    """Caption and "of 0–787 (pixel)" of every step, for the page to show beside its frame."""
     captions, infos = [], []
     for k in range(len(trace)):
-        step = trace.step(k)
-        captions.append(step.caption)
-        infos.append(f"of {last} ({step.kind})")
+        captions.append(trace.step(k).caption)
+        infos.append(step_info(trace, k))
     return captions, infos
 
 

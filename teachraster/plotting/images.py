@@ -412,7 +412,38 @@ class ProfileArtists(Artists):
             # r13, 04 c15: the key covered the lower ends of both curves)
             hi += KEY_ROOM * (hi - lo)
         ax.set_ylim(lo, hi)
+        if along_row and self.vlim is None:
+            self.clear_key()
         self.title.set_text(f"{'row' if along_row else 'column'} {self.index} (dashed)")
+
+    def clear_key(self) -> None:
+        """Raise the value axis' top until no dot of the curves lies under the key (upper
+        left), at the key's size now: KEY_ROOM is room for it at the style's font size, and a
+        widget that enlarges the key's text afterwards calls this again (review r249 FIG3:
+        at the player's classroom size the key covered the affine curve's last dot). Nothing
+        changes where KEY_ROOM suffices, or where no renderer can measure the key."""
+        ax = self.title.axes
+        key, get_renderer = ax.get_legend(), getattr(ax.figure.canvas, "get_renderer", None)
+        if key is None or get_renderer is None:
+            return
+        renderer = get_renderer()
+        frame = ax.get_window_extent(renderer)
+        box = key.get_window_extent(renderer)
+        lo, hi = ax.get_ylim()
+        to_data = ax.transData.inverted()
+        # the key's sides in data x, widened by a dot's radius; its foot as a share of the height
+        radius = max(line.get_markersize() for line in self.lines) / 2 * ax.figure.dpi / 72.0
+        x0, x1 = to_data.transform([[box.x0 - radius, 0.0], [box.x1 + radius, 0.0]])[:, 0]
+        foot = (box.y0 - frame.y0 - radius - 6.0) / frame.height  # 6 px of air
+        if foot < 0.3:  # a key this tall leaves no room worth keeping for the curves
+            return
+        top = hi
+        for line in self.lines:
+            x, y = np.asarray(line.get_xdata(), float), np.asarray(line.get_ydata(), float)
+            under = np.isfinite(y) & (x >= x0) & (x <= x1)
+            if under.any():
+                top = max(top, lo + (float(y[under].max()) - lo) / foot)
+        ax.set_ylim(lo, top)
 
 
 #: The share of a row profile's value range added above the curves for its key.

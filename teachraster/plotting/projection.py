@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from matplotlib.lines import Line2D
 from matplotlib.ticker import MaxNLocator
 
 from ..core.interpolation import perspective_weights
@@ -87,6 +88,7 @@ class ProjectionArtists:
     steps: list = field(default_factory=list)
     top: float = 0.0  # the picture's top depth: the highlighted ray runs up to it
     shows: bool = True  # False: the screen point at q only, not its ray or what it shows
+    world: str = "t"  # the name the title gives the world parameter
 
     def update(self, q: float) -> float:
         """Highlight screen parameter ``q``; returns its world parameter t."""
@@ -102,7 +104,7 @@ class ProjectionArtists:
         self.world_point.set_data([x], [z])
         self.affine_point.set_data(*self.segment.point(q).T)
         # two lines: over a picture at one scale in x and z (tall, narrow) one ran off it
-        self.label.set_text(f"q = {q:.2f} on the screen\n→  t = {t:.2f} on the segment")
+        self.label.set_text(f"q = {q:.2f} on the screen\n→  {self.world} = {t:.2f} on the segment")
         if self.curve_point is not None:
             self.curve_point.set_data([q], [t])
         return t
@@ -123,7 +125,8 @@ def frame_of(segments) -> tuple[float, float, float]:
 
 
 def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: float = 0.5,
-                    curve_ax=None, frame=None, shows: bool = True) -> ProjectionArtists:  # fmt: skip
+                    curve_ax=None, frame=None, shows: bool = True,
+                    world: str = "t") -> ProjectionArtists:  # fmt: skip
     """Draw eye, screen, segment and the rays of ``n_steps`` equal screen steps.
 
     Parameters
@@ -144,6 +147,10 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
         Draw the ray through the screen point at ``q`` and what it shows (the world point,
         the affine guess, the title). False draws the screen point alone, for a question on
         where its ray meets the segment (lesson 00): with ``n_steps=1`` nothing drawn answers it.
+    world : str
+        The world parameter's name in the key and the title: Ek's ``t`` (lesson 04), or an
+        attribute that runs evenly along the segment in the world, and so equals t (lesson
+        00's ``u``, review r249 S2: its question asks for u).
 
     Returns
     -------
@@ -154,7 +161,7 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     ts = segment.world_parameter(qs)
     pts, ss = segment.point(ts), segment.screen(qs)
     lo, hi, far = frame_of([segment]) if frame is None else frame
-    out = ProjectionArtists(segment, top=far, shows=bool(shows))
+    out = ProjectionArtists(segment, top=far, shows=bool(shows), world=str(world))
     for x, z in pts:
         out.steps += ax.plot([0, x], [0, z], color=COLORS["grid"], lw=lw(0.3), zorder=1)
     # a wide pale band under the segment: a segment lying on the screen (z0 = z1 = 1) is
@@ -165,7 +172,8 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     ax.plot(ss, np.ones_like(ss), "|", color=blue, ms=ms(1.6), mew=lw(0.6), label=steps)
     ax.plot(*pts.T, "-", color=COLORS["edge"], lw=lw(1.0), label="segment in the world")
     # above the large dot at t: at q = 0 or 1 that dot hid the end's own (review r77 04-4)
-    ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), label="where those rays hit it", zorder=4)
+    (hits,) = ax.plot(*pts.T, "o", color=orange, ms=ms(0.8), zorder=4,
+                      label="eye rays, where they meet it")  # fmt: skip
     ax.plot([0], [0], "^", color=COLORS["edge"], ms=ms(1.3), label="eye")
     # unlabelled when not shown: the key names only what is drawn
     shown = {} if shows else {"label": "_hidden", "visible": False}
@@ -174,9 +182,9 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     (out.screen_point,) = ax.plot([], [], "s", color=COLORS["current"], ms=ms(1.0),
                                   label="screen point q")  # fmt: skip
     (out.world_point,) = ax.plot([], [], "o", color=COLORS["current"], ms=ms(1.3),
-                                 **({"label": "what it shows: t"} | shown))  # fmt: skip
+                                 **({"label": f"what it shows: {world}"} | shown))  # fmt: skip
     (out.affine_point,) = ax.plot([], [], "o", mfc="none", mec=COLORS["current"], mew=lw(0.5),
-                                  ms=ms(1.3), **({"label": "affine guess: t = q"} | shown))  # fmt: skip
+                                  ms=ms(1.3), **({"label": f"affine guess: {world} = q"} | shown))  # fmt: skip
     # text set by update(), size fixed here; from the left edge, as the key takes the right
     out.label = ax.set_title(" ", fontsize=fs(0.9), loc="left")
     ax.set(xlim=(lo, hi), ylim=(-0.2, far), xlabel="x", ylabel="depth z")
@@ -188,7 +196,14 @@ def plot_projection(ax, segment: Segment = Segment(), *, n_steps: int = 8, q: fl
     ax.xaxis.set_major_locator(MaxNLocator(nbins=5, steps=[1, 2, 2.5, 5, 10]))
     # the key beside the picture: inside, nine entries cover part of the rays whatever
     # corner they take
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+    # the dots keyed on a grey eye ray: "where those rays hit it" named rays the key did not
+    # show (review r249 S2); one entry for both, so that the key grows no taller, and one
+    # Line2D, which a key made again from legend_handles keeps whole (ProjectionExplorer)
+    ray_and_hit = Line2D([], [], color=COLORS["grid"], lw=lw(0.3), marker="o", ms=ms(0.8),
+                         mfc=orange, mec=orange)  # fmt: skip
+    handles, labels = ax.get_legend_handles_labels()
+    handles = [ray_and_hit if h is hits else h for h in handles]
+    ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
               fontsize=fs(0.7))  # fmt: skip
     if curve_ax is not None:
         qq = np.linspace(0.0, 1.0, 200)

@@ -13,7 +13,7 @@ from ..core.triangle import Triangle
 from ..core.validate import as_int, as_size
 from ..plotting import FillView, InterpolationView, plot_samples
 from ..plotting.common import fs
-from ..plotting.frames import encode_png, frame_rgba, render_group, step_texts
+from ..plotting.frames import encode_png, frame_rgba, render_group, step_info, step_texts
 from ..plotting.pages import page_data, player_fragment
 from .common import (
     FALLBACK_CSS,
@@ -113,6 +113,8 @@ def tidy_comparison(view) -> None:
             label.set_bbox(None)
             label.set_path_effects(halo)
     labels_off_frames(view)
+    if view.profile is not None:  # its key grew with the text: the curves kept from under it
+        view.profile.clear_key()
 
 
 def labels_off_frames(view) -> None:
@@ -576,8 +578,8 @@ class FillPlayer(Holdable):
 
     @property
     def step_info(self) -> str:
-        """``"of 787 (pixel)"``: what the page shows beside the step number."""
-        return f"of {len(self.trace) - 1} ({self.trace.step(self.frames.value).kind})"
+        """``"of 0–787 (pixel)"``: what the page shows beside the step number."""
+        return step_info(self.trace, self.frames.value)
 
     # -- driving ----------------------------------------------------------------------------
     def show_step(self, k: int) -> None:
