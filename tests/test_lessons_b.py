@@ -3053,10 +3053,9 @@ def test_10_llvmpipe_128_against_our_64_on_one_convention():
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "128 against our 64" not in md and "hence the 63 px printed for int32" not in md
     assert "**256 units a pixel**" in md and "exactly llvmpipe's `MAX_FIXED_LENGTH32`" in md
-    # r235 P: the 1,024-px count is q_bits' answer, said in its explanation, not above it
-    asked = next("".join(c["source"]) for c in cells if "q_bits = Predict(" in "".join(c["source"]))
-    assert "A 1,024-px triangle needs {q_bits_budget.needed} bits" in asked
-    assert ns.q_bits_budget.needed == ns.budget.needed == 38 and "1,024-px triangle needs" not in md
+    # r247 P1: q_bits, a plug-in of the rule just above it, is gone; the cell under the rule
+    # counts the 1,024-px range, and q_wrap asks what no rule hands over
+    assert not any("q_bits" in "".join(c["source"]) for c in cells) and ns.budget.needed == 38
     # the package's own grid stands in a folded note, its source hidden; llvmpipe's own test
     # folded with it (review r235 S3)
     note = next(c for c in cells if "The simulator's own grid" in "".join(c["source"]))
@@ -3232,13 +3231,9 @@ def test_10_r100_items():
     assert (nearest >= own[tested].min(axis=1)).all()  # clamped to the triangle's depths
     assert (nearest <= first[tested]).all()  # never above the covered pixels' bound...
     assert (nearest < first[tested]).any()  # ...and below it somewhere: that one is tighter
-    # 10-4: the numbers quoted are the ones printed
-    share = [f"{100 * s:.1f} %" for s in ns.twice_share]
-    assert (f"{share[0]} of the covered pixels in the top quarter are shaded twice, {share[1]} in "
-            f"the second, and {share[2]} and {share[3]} in the two below the middle: "
-            f"{100 * ns.twice_above:.1f} % of the twice-shaded") in md  # fmt: skip
-    assert ns.twice_share[0] > 4 * ns.twice_share[1] > 4 * ns.twice_share[2] > ns.twice_share[3]
-    assert "along the top of the rim" not in md
+    # 10-4: r247 S2 dropped the quartile shares, which had no cause; test_10_r247_items checks
+    # the cause said instead
+    assert "along the top of the rim" not in md and not hasattr(ns, "twice_share")
     fig, ax = plt.subplots(figsize=(4.2, 4.7))  # the counters' panel of the lesson's figure
     try:
         table = plot_block_counters(ax, ns.fill).table
@@ -3272,7 +3267,8 @@ def test_10_r45_items():
     text = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(t for t, c in zip(text, nb["cells"])
                            if c["cell_type"] == "markdown").split())  # fmt: skip
-    assert "whole blocks are accepted" not in md and "not made of whole blocks" in md
+    held_text = next(t for t in text if t.startswith("q_wrap.hold()") and "Markdown(" in t)
+    assert "whole blocks are accepted" not in md and "not made of whole blocks" in held_text
     assert "whatever found it" not in md and "can lose" not in md
     # review r52 10-4: the numpy timing ("no clear winner" twice) is gone; the counts stay
     assert "fastest runs" not in md and "medians" not in md and "bench_tiles.py" in md
@@ -3312,7 +3308,11 @@ def test_10_r109_items():
     caption = ns.fill.trace.caption(8)
     px2 = ns.e_units * ns.blocks.px2_per_unit2
     assert isinstance(ns.e_units, int) and f"E12 = {px2:.0f} at its most inside" in caption
-    assert f"−{-ns.e_units:,} units², −{-px2:.2f} px²" in md and "E12 = -81" in md
+    # r247 S1: said in §4's fold on the simulator's grid, not printed in §2 or said in §4
+    assert ns.e_exact == f"−{-ns.e_units:,} units², −{-px2:.2f} px²" and "E12 = -81" not in md
+    fold = next("".join(c["source"]) for c in cells["cells"]
+                if "The simulator's own grid" in "".join(c["source"]))  # fmt: skip
+    assert "this grid: §2's last caption prints E12 = -81 (px², rounded), exactly " in fold
     assert "counted in grid units" in md
     # Hi-Z's nearest depth: exercise 8.2's bound, named as 8.2's checker names its mistakes
     assert "the depth plane at the tile's corners" not in md
@@ -3878,7 +3878,8 @@ def test_10_r185_items():
     assert [(t.level, t.cells, t.hidden) for t in a] == [(2, 1, False), (1, 1, True), (0, 4, True)]
     assert [(t.level, t.cells, t.hidden) for t in b] == [(2, 1, False), (1, 2, False), (0, 4, True)]
     finest_one = {k: min(t.level for t in v if t.cells == 1) for k, v in ns.pyramid_tests.items()}
-    assert finest_one == {"A": 1, "B": 2} and "(level 1 for A, level 2 for B)" in md
+    joined = " ".join(t.replace('"\n        "', "") for t in text)  # string literals joined
+    assert finest_one == {"A": 1, "B": 2} and "(level 1 for A, level 2 for B)" in joined
     # 10-10: no Mesa emulation is defined in the lesson; the package's are called
     assert not any("def llvmpipe_" in t or "def floor_pot" in t for t in code)
     assert any("llvmpipe_binner.bin_rows(" in t for t in code)
@@ -3931,7 +3932,8 @@ def test_10_r189_items():
     assert reads == {"A": [(1, 1)], "B": [(2, 1), (1, 2), (0, 2)]}
     assert all(v[-1].hidden for v in ns.descents.values())
     assert "reads 1 at level 2 + 2 at level 1 + 2 at level 0 = 5: hidden" in printed
-    assert "only the two tiles under the value that failed: five reads in all" in md
+    held = next(t for t in text if t.startswith("q_hiz.hold()") and "Greene's test" in t)
+    assert "only the two tiles under the value that failed: five reads in all" in held
     assert "with four reads" not in md
     # P5, P6: the held tile-map cell folded; the pointer names the layer count
     held = [c for c in cells if "".join(c["source"]).startswith("q_hiz.hold()")
@@ -4067,17 +4069,21 @@ def test_10_r235_items():
         assert len(untested) == ns.lp_n["untested"] and all(t.get_hatch() for t in untested)
     finally:
         plt.close(fig)
-    # M1: the sliver, its counts and the saving, printed and quoted
-    assert (ns.sliver_covered, ns.ss.blocks, ns.ss.pixel_tests) == (2288, 1680, 4592)
-    assert f"{ns.sliver_per_pixel:.2f}" == "2.74"
-    assert round(ns.sliver_box / ns.sliver_covered) == 113
-    assert round(ns.sliver_saving) == 41 and ns.sliver_box == ns.sliver_fill.trace.bbox.size
-    assert "spend 113 tests per covered pixel where the walk spends 2.74, 41 times fewer" in md
-    assert "sliver (2.74 tests per covered pixel)" in md and "(113 tests per covered pixel)" in md
+    # M1: the sliver, its counts and the saving, printed and quoted (r247 F1: the diagonal one
+    # of two now)
+    diagonal = ns.sliver_fills["on the diagonal"]
+    dc = diagonal.trace.blocks.counters
+    assert (int(diagonal.coverage.sum()), dc.blocks, dc.pixel_tests) == (2288, 1680, 4592)
+    assert f"{ns.sliver_cost['on the diagonal']:.2f}" == "2.74"
+    assert round(ns.sliver_box["on the diagonal"] / 2288) == 113
+    assert round(ns.sliver_saving["on the diagonal"]) == 41
+    assert "spend 113 tests per covered pixel where the walk spends 2.74: 41 times fewer" in md
     assert "large triangles are cheap per pixel, small ones expensive" not in md
     by_leg = dict(zip(ns.legs, ns.per_pixel))
-    assert all(ns.sliver_per_pixel > v for leg, v in by_leg.items() if leg >= 8)
-    assert ns.sliver_per_pixel < by_leg[4] and ns.sliver_long > 256 * 2**0.5
+    for cost in ns.sliver_cost.values():
+        assert all(cost > v for leg, v in by_leg.items() if leg >= 8) and cost < by_leg[4]
+    thin = ns.slivers["on the diagonal"].xy
+    assert np.hypot(*(thin[1:].mean(axis=0) - thin[0])) > 256 * 2**0.5
     # S1: q_small and q_bits take whole numbers only
     asked = next(t for t in code if "q_small = Predict(" in t)
     assert "    whole=True," in asked
@@ -4096,18 +4102,8 @@ def test_10_r235_items():
     # lesson 02 counts the bit the geometry saves (§5b, How many bits?)
     assert "Lesson 06 shows the geometry saves one bit" not in md and "lesson 06's" not in md
     assert "Lesson 02 (§5b, *How many bits?*) shows the geometry saves one bit" in md
-    # q_bits: asked before its count is printed; nothing shown after it gives 38 away
-    ask = next(i for i, t in enumerate(text) if "q_bits = Predict(" in t)
-    assert cells[ask]["metadata"]["jupyter"]["source_hidden"]
-    assert "whole=True" in text[ask] and "notes={q_bits_budget.least_needed" in text[ask]
-    assert ns.q_bits_budget.needed == 38 and ns.q_bits_budget.least_needed == 37
-    for cell, t in zip(cells[ask + 1 :], text[ask + 1 :]):
-        if t.startswith("## "):
-            break
-        if cell["cell_type"] == "markdown":
-            assert not re.search(r"(?<![\d,.])38(?![\d,])", t), t[:60]
-        elif "budget" in t and "1024" in t:  # a cell that counts the 1,024-px range is held
-            assert t.startswith("q_bits.hold()"), t[:60]
+    # q_bits (a plug-in, r247 P1) is gone: test_10_r247_items checks q_wrap in its place
+    assert not re.search(r"\bq_bits\b", " ".join(text))
     # the detail for after the lecture folded, as other lessons fold it
     for words in ("llvmpipe's small-triangle commands", "llvmpipe's own 32-bit test",
                   "llvmpipe's binner in detail"):  # fmt: skip
@@ -4969,3 +4965,129 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
         else:
             words += sum(len(t.split()) for t in re.findall(r'_TEXT = r?f?"""(.*?)"""', text, re.S))
     assert words < 3800, words  # the decal's 200 new words included
+
+
+@pytest.mark.notebook
+def test_10_r247_items():
+    """Review r247, lesson 10. F1: what the walk saves is the bounding box over the area, not
+    thinness: a sliver along a row beside the diagonal one, and the two rules said apart (edge
+    over area: the cost; box over area: the saving); C1: the int32 wrong regions' sides follow
+    an edge, lines parallel to one and the bounding box, counted by a cell; C2: a rejected
+    Hi-Z block fills its triangle's part of the tile; P1: q_bits (a plug-in) gives way to
+    q_wrap, where a wrapped walk goes wrong, its answer read off computed counts; P2: what a
+    smaller Hi-Z tile gains, and the pyramid's reading, are held with q_hiz; M1: §1 draws the
+    corner trick; M2: the depth pre-pass; S1: the package's 512-unit grid only in §4's fold;
+    FIG1: the standards table fits the column; FIG2: the traversal colours named; S2: the
+    sphere's quartile shares give way to their cause; S5: one clause a summary bullet."""
+    import re
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study import precision
+
+    ns = lesson("10_tiles_and_hierarchical_z")
+    cells, text, md, code = _lesson_10_sources()
+    run = executed("10_tiles_and_hierarchical_z").notebook()
+    printed = streams(run)
+    shown = " ".join(" ".join(o["data"]["text/markdown"].split()) for c in run.cells
+                     for o in c.get("outputs", []) if "text/markdown" in o.get("data", {}))  # fmt: skip
+    # F1: two slivers of one shape, as much edge for their area; the saving follows the box
+    assert list(ns.slivers) == ["on the diagonal", "along a row"]
+    edge = ns.sliver_edge
+    assert abs(edge["on the diagonal"] - edge["along a row"]) < 0.01
+    assert f"{edge['on the diagonal']:.2f} px of edge a px² of area" in printed
+    diag, row = ns.sliver_saving["on the diagonal"], ns.sliver_saving["along a row"]
+    assert diag > 30 and row < 1  # 41 times fewer tests; none saved, a few more made
+    box_row = ns.sliver_box["along a row"] / int(ns.sliver_fills["along a row"].coverage.sum())
+    for quoted in (f"the half-planes spend {box_row:.3g} tests per covered pixel, the walk "
+                   f"{ns.sliver_cost['along a row']:.2f}", f"(half-plane ÷ tiled = {row:.2g})",
+                   "how much **edge** a triangle has for its area sets the walk's **cost**",
+                   "how much **bounding box** it has for its area sets what the walk **saves**"):  # fmt: skip
+        assert quoted in md, quoted
+    assert f"half-plane ÷ tiled = {row:.2g}" in printed and f"{box_row:.3g} a covered" in printed
+    assert "where the walk saves most" not in md and "is also where the walk" not in md
+    summary = md.split("## Summary")[1]
+    assert f"{diag:.0f} times fewer tests on the diagonal sliver, none on the same" in summary
+    # C1: the sides, counted by the package and quoted from the counts; no block staircase
+    sides = ns.regions.sides
+    assert sum(sides.values()) > 1000 and sides["other"] == 0
+    assert sides["block"] < 0.02 * sum(sides.values())  # a few blocks misjudged, no more
+    assert sides["edge"] + sides["wrap"] + sides["box"] > 0.98 * sum(sides.values())
+    wrap_line = f"  {sides['wrap']:,} on lines where an edge's value passes a multiple of 2^31,"
+    assert wrap_line in printed
+    assert "along block boundaries" not in " ".join(text)
+    assert (
+        f"along lines parallel to an edge where its value passes a multiple of $2^{{31}}$ "
+        f"({sides['wrap']:,}), and along the bounding box ({sides['box']:,})"
+    ) in shown
+    # C2
+    assert "fills its tile's part of the sphere" not in md
+    assert "a rejected block fills its triangle's part of the tile" in md
+    # P1: q_wrap asked before the counts, its answer computed, everything after it held
+    ask = next(i for i, t in enumerate(text) if "q_wrap = Predict(" in t)
+    counts_at = next(i for i, t in enumerate(text) if "wrong pixels with int32" in t)
+    assert ask < counts_at and cells[ask]["metadata"]["jupyter"]["source_hidden"]
+    facts = precision.wrong_regions(ns.big.xy, ns.narrow)
+    assert facts == ns.wrap_facts == ns.regions
+    assert facts.wrongly_out > 5 * facts.wrongly_in and facts.near < 0.05 * facts.wrong
+    assert ns.q_wrap_answer == ns.WRAP_CHOICES[2] and "answer=q_wrap_answer," in text[ask]
+    assert "mostly inside the triangle" in ns.q_wrap_answer
+    for cell, t in zip(cells[ask + 1 :], text[ask + 1 :]):
+        if t.startswith("## "):
+            break
+        assert cell["cell_type"] == "code" and t.startswith("q_wrap.hold()"), t[:60]
+    assert "wrongly out" not in md and "rejected inside it (blue)" not in md
+    # P2: what a smaller tile gains, and why cleared tiles reject nothing, held with q_hiz
+    assert "covered whole sooner" not in md and "still hold the clear value" not in md
+    for words in ("So a smaller tile, \"\n        \"covered whole sooner",
+                  "still hold the clear value"):  # fmt: skip
+        where = next(t for t in text if words in t)
+        assert where.startswith("q_hiz.hold()"), words
+    # M1: §1 draws the block's values, its two corners where §1's cell finds them
+    first_fig = next(i for i, t in enumerate(text) if "plot_block_values(" in t)
+    assert first_fig < next(i for i, t in enumerate(text) if t.startswith("## 2."))
+    assert "plot_edge_values(ax_img" in text[first_fig] and "trivial-reject" in md
+    # M2: the pre-pass, in §7 and the summary
+    seven = md.split("## 7.")[1].split("## 8.")[0]
+    assert "**depth pre-pass**" in seven and "`GL_EQUAL`" in seven
+    assert "or after a depth pre-pass" in summary
+    # S1: §2 prints no units² of the 512 grid; §4's fold says the exact value
+    assert "units²" not in text[next(i for i, t in enumerate(text) if t.startswith("W = H = 64"))]
+    assert f"prints E12 = -81 (px², rounded), exactly {ns.e_exact}." in shown
+    assert "−21,243,740" not in md
+    # FIG1: every cell of the standards table breaks into short words: the longest unbroken
+    # word per column, summed, fits a notebook column (the old table's were 51 + 43 characters)
+    table = next(t for t in text if "| OpenGL 4.6 |" in t)
+    rows = [line.split("|")[1:-1] for line in table.splitlines() if line.startswith("| ")]
+    longest = [max(len(w.strip("*`()\";,.:")) for r in rows for w in r[k].split()) if any(
+        r[k].split() for r in rows) else 0 for k in range(len(rows[0]))]  # fmt: skip
+    assert max(longest) <= 30 and sum(longest) <= 90, longest
+    # FIG2
+    assert "coloured by it too: dark blue first, yellow last" in md
+    # S2: no quartile shares; the cause instead, and the cause holds: most twice-shaded pixels
+    # have both fragments from one ring of the mesh (the rings run from the north pole)
+    assert "41.3 %" not in md and "quarters of the sphere's height" not in md
+    assert "drawn ring by ring from the north pole" in md
+    sphere = ns.frames["uv_sphere"]
+    trace = sphere.trace
+    mesh = get_uv_sphere_mesh()
+    polar = np.arccos(np.clip(mesh.positions[:, 1], -1, 1))  # each vertex's angle from +y
+    ring = np.rint(polar[mesh.triangles].min(axis=1) / (np.pi / 16)).astype(int)
+    tri = trace.fragment_triangle if trace.parent is None else trace.parent[trace.fragment_triangle]
+    shaded = trace.fragment_passed
+    pixel = trace.fragment_row[shaded] * sphere.coverage.shape[1] + trace.fragment_col[shaded]
+    order = np.argsort(pixel, kind="stable")
+    pixel, rings = pixel[order], ring[tri[shaded]][order]
+    twice = np.flatnonzero(pixel[1:] == pixel[:-1])
+    assert len(twice) > 1000 and (rings[twice] == rings[twice + 1]).mean() > 0.8
+    # S5: one clause a bullet: short, with no parenthesis inside a parenthesis
+    bullets = [b for b in summary.split("- ")[1:]]
+    assert len(bullets) >= 10 and all(len(b.split()) <= 30 for b in bullets), bullets
+    assert not re.search(r"\([^)]*\(", summary)
+
+
+def get_uv_sphere_mesh():
+    """The mesh of lesson 10's uv_sphere scene (its rings run from the north pole, +y)."""
+    from teachraster.pipeline.scenes import get_scene
+
+    return get_scene("uv_sphere").mesh

@@ -145,3 +145,59 @@ def test_core_is_unchanged_by_importing_precision():
     # precision is a study module: the default path stays tr.rasterize's own.
     fill = tr.rasterize(tr.Triangle([[0, 0], [4, 0], [0, 4]]), 4, 4)
     assert int(fill.coverage.sum()) == 6
+
+
+def _gpu_edge_values(xy, width, height):
+    """E of each oriented edge at every pixel centre, exact integers on a GPU's grid (256 units
+    a pixel): computed here apart from the package, to check what wrong_regions reads."""
+    p = np.rint(np.asarray(xy, float) * 256).astype(np.int64)
+    (ax, ay), (bx, by), (cx, cy) = p
+    if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0:
+        p = p[[0, 2, 1]]
+    jj, ii = np.meshgrid(256 * np.arange(width) + 128, 256 * np.arange(height) + 128)
+    return np.array([(b[0] - a[0]) * (ii - a[1]) - (b[1] - a[1]) * (jj - a[0])
+                     for a, b in zip(p, np.roll(p, -1, axis=0))])  # fmt: skip
+
+
+def test_wrong_regions_of_lesson_10s_int32_walk():
+    """Review r247 C1 (lesson 10): the wrong regions' sides follow the triangle's edges, lines
+    parallel to an edge where its value passes a multiple of 2**31, and the bounding box; only
+    a handful lie on 4x4 block boundaries. Each side is checked here on exact integers."""
+    from teachraster.core import fixed_point
+
+    xy = [[3.2, 6.4], [312.6, 18.8], [62.8, 312.6]]
+    narrow = fixed_point.narrow_fill(tr.Triangle(xy), 320, 320, int_bits=32,
+                                     block_sizes=(16, 4), centre_bit=False)  # fmt: skip
+    found = precision.wrong_regions(xy, narrow)
+    wrong = narrow.wrong
+    assert found.wrong == int(wrong.sum()) > 0
+    assert found.wrongly_in == int((narrow.coverage & ~narrow.exact).sum())
+    e = _gpu_edge_values(xy, 320, 320)
+    total, wrap_checked = 0, 0
+    for axis in (0, 1):
+        n = wrong.shape[axis] - 1
+        a, b = np.arange(n), np.arange(1, n + 1)
+        side = wrong.take(a, axis=axis) != wrong.take(b, axis=axis)
+        total += int(side.sum())
+        ea, eb = e.take(a, axis=axis + 1), e.take(b, axis=axis + 1)
+        # floor division by 2**31 changes between the two centres, other than at 0 alone
+        band_a, band_b = ea // 2**31, eb // 2**31
+        crossed = (band_a != band_b) & ~(np.minimum(band_a, band_b) == -1) | (
+            np.abs(band_a - band_b) > 1)  # fmt: skip
+        wrap_checked += int((side & crossed.any(axis=0)).sum())
+    assert sum(found.sides.values()) == total
+    assert found.sides["other"] == 0 and found.sides["block"] < 0.02 * total
+    # every side counted as a wrap line does cross a nonzero multiple of 2**31 (some sides on
+    # one also cross an edge or lie on the box, and count there first)
+    assert found.sides["wrap"] <= wrap_checked and found.sides["wrap"] > 0.4 * total
+    assert found.sides["box"] > 0 and found.near < 0.05 * found.wrong
+
+
+def test_wrong_regions_within_the_budget_are_empty():
+    from teachraster.core import fixed_point
+
+    xy = [[2.2, 3.1], [25.6, 8.3], [9.4, 27.7]]
+    narrow = fixed_point.narrow_fill(tr.Triangle(xy), 32, 32, int_bits=32, block_sizes=(16, 4),
+                                     centre_bit=False)  # fmt: skip
+    found = precision.wrong_regions(xy, narrow)
+    assert found.wrong == found.near == 0 and not any(found.sides.values())

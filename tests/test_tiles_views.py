@@ -624,3 +624,27 @@ def test_levels_hatch_what_a_larger_block_decided(fill, ax):
 def test_llvmpipe_bins_refuse_an_unknown_kind(ax):
     with pytest.raises(ValueError, match="unknown tile kinds"):
         tp.plot_llvmpipe_bins(ax, np.array([["full", "half"]], dtype=object))
+
+
+def test_plot_block_values_marks_the_corners_the_step_signs_pick(ax):
+    """Review r247 M1 (lesson 10 §1): the corner trick drawn. The block's 64 values are written
+    in their cells; the largest is outlined as the reject test's corner, the smallest as the
+    accept test's, and they are the opposite corners the signs of the two steps pick."""
+    from teachraster.plotting.tiles import CORNER_MARKS
+
+    v1, v2 = np.array(XY[0]), np.array(XY[1])
+    row0, col0, s = 16, 8, 8
+    jj, ii = np.meshgrid(np.arange(col0, col0 + s) + 0.5, np.arange(row0, row0 + s) + 0.5)
+    values = (v2[0] - v1[0]) * (ii - v1[1]) - (v2[1] - v1[1]) * (jj - v1[0])
+    right, down = -(v2[1] - v1[1]), v2[0] - v1[0]
+    art = tp.plot_block_values(ax, values, row0, col0, steps=(right, down))
+    assert [t.get_text() for t in art.texts] == [f"{v:.0f}" for v in values.ravel()]
+    corners = {which: (int(box.get_y()), int(box.get_x()))
+               for (which, _, _), box in zip(CORNER_MARKS, art.corners)}  # fmt: skip
+    pick = {True: s - 1, False: 0}
+    assert corners["largest"] == (row0 + pick[down > 0], col0 + pick[right > 0])
+    assert corners["smallest"] == (row0 + pick[down < 0], col0 + pick[right < 0])
+    labels = " ".join(t.get_text() for t in art.labels)
+    assert "largest E12: reject test" in labels and "smallest E12: accept test" in labels
+    assert f"one step right: {right:+.1f}" in labels and f"one step down: {down:+.1f}" in labels
+    assert len(art.arrows) == 2

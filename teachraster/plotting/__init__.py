@@ -33,6 +33,7 @@ Tiles (``fill = tr.rasterize(tri, W, H, method="tiled", trace=True)``)
 - :func:`plot_block_counters` -- llvmpipe-style counters as a table.
 - :func:`plot_traversal` -- scanline, serpentine, tiled and Morton visiting orders.
 - :func:`plot_block_path` -- the walk through one level's blocks in a traversal order.
+- :func:`plot_block_values` -- one edge's values over a block, its extreme corners marked.
 - :func:`plot_llvmpipe_bins` -- llvmpipe's binning pass: what it does with each 64×64 tile.
 - :func:`plot_early_z` -- per pixel, fragments Hi-Z rejected, early-z killed, or shaded
   (``tr.render(..., trace=True)``).
@@ -152,6 +153,7 @@ from .tiles import (
     BLOCK_COLORS,
     BlockArtists,
     BlockPathArtists,
+    BlockValueArtists,
     CounterArtists,
     EarlyZArtists,
     TraversalArtists,
@@ -160,6 +162,7 @@ from .tiles import (
     early_z_counts,
     plot_block_counters,
     plot_block_path,
+    plot_block_values,
     plot_blocks,
     plot_early_z,
     plot_early_z_panels,
@@ -186,6 +189,7 @@ __all__ = [
     "BailoutArtists",
     "BlockArtists",
     "BlockPathArtists",
+    "BlockValueArtists",
     "CentreArtists",
     "ComparisonView",
     "CounterArtists",
@@ -223,6 +227,7 @@ __all__ = [
     "plot_barycentric",
     "plot_block_counters",
     "plot_block_path",
+    "plot_block_values",
     "plot_blocks",
     "plot_bbox",
     "plot_coverage",

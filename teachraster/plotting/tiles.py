@@ -10,6 +10,8 @@
 - :func:`plot_traversal` -- the visiting order of a grid's cells (scanline, serpentine,
   tiled, Morton) as colours and a path.
 - :func:`plot_llvmpipe_bins` -- llvmpipe's binning pass over the 64×64 tiles of a box.
+- :func:`plot_block_values` -- one edge's values over a block, its two extreme corners
+  marked (the corner trick).
 
 Every function takes an Axes (``plot_hierarchy`` a sequence of them) and returns artists.
 """
@@ -813,3 +815,85 @@ def zoom_on_block(ax, row: int, col: int, size: int = 16, *, every: int = 4) -> 
     for k in range(size + 1):  # above the blocks (zorder 2.5)
         ax.axvline(col + k, color="white", lw=1.0, zorder=4)
         ax.axhline(row + k, color="white", lw=1.0, zorder=4)
+
+
+@dataclass
+class BlockValueArtists(Artists):
+    """Artists of :func:`plot_block_values`: the values' colours and numbers, the two extreme
+    corners' outlines and labels, and the two step arrows."""
+
+    image: object
+    texts: list = field(default_factory=list)
+    corners: list = field(default_factory=list)
+    labels: list = field(default_factory=list)
+    arrows: list = field(default_factory=list)
+
+
+#: The two extreme corners of :func:`plot_block_values`: (which, colour, what its test decides).
+CORNER_MARKS = (
+    ("largest", COLORS["outside"], "reject test"),
+    ("smallest", BLOCK_COLORS["accepted"], "accept test"),
+)
+
+
+def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
+                      steps=None) -> BlockValueArtists:  # fmt: skip
+    """One edge's values at the pixel centres of a block, with its extreme corners marked:
+    the corner trick of lesson 10 §1 as a picture (after Abrash's *Rasterization on
+    Larrabee*, which draws a block's trivial-reject and trivial-accept corners).
+
+    ``values[i, j]`` is the value at pixel (``row0 + i``, ``col0 + j``). The largest value is
+    outlined in the "outside" colour (if even it is negative, no centre is inside: the block
+    is rejected), the smallest in the accepted blocks' colour (if even it passes, every centre
+    does). ``steps = (right, down)``, the value added by one step right and one step down,
+    draws the two steps as arrows along the block's top and left sides, whose signs pick the
+    two corners.
+    """
+    values = np.asarray(values, dtype=float)
+    h, w = values.shape
+    im = ax.pcolormesh(np.arange(col0, col0 + w + 1), np.arange(row0, row0 + h + 1), values,
+                       cmap=VALUE_CMAP, shading="flat", edgecolors="white", lw=0.5)  # fmt: skip
+    result = BlockValueArtists(im)
+    norm = im.norm
+    for (i, j), v in np.ndenumerate(values):
+        shade = np.asarray(im.cmap(norm(v))[:3]) @ [0.299, 0.587, 0.114]
+        result.texts.append(ax.text(col0 + j + 0.5, row0 + i + 0.5, f"{v:.0f}", ha="center",
+                                    va="center", fontsize=fs(0.45),
+                                    color="black" if shade > 0.5 else "white"))  # fmt: skip
+    # room above and left for the step arrows, below for the largest corner's label
+    ax.set(xlim=(col0 - 1.6, col0 + w + 0.1), ylim=(row0 + h + 1.1, row0 - 1.7))
+    ax.set_aspect("equal")
+    ax.set_xticks(col0 + np.arange(w) + 0.5, labels=[str(col0 + j) for j in range(w)])
+    ax.set_yticks(row0 + np.arange(h) + 0.5, labels=[str(row0 + i) for i in range(h)])
+    ax.tick_params(labelsize=fs(0.55), length=0)
+    ax.yaxis.tick_right()  # the left side holds the step down
+    ax.yaxis.set_label_position("right")
+    ax.set(xlabel="column j", ylabel="row i")
+    for spine in ax.spines.values():
+        spine.set_visible(False)
+    places = {"largest": np.unravel_index(values.argmax(), values.shape),
+              "smallest": np.unravel_index(values.argmin(), values.shape)}  # fmt: skip
+    for which, color, test in CORNER_MARKS:
+        i, j = (int(k) for k in places[which])
+        box = Rectangle((col0 + j, row0 + i), 1, 1, fill=False, ec=color, lw=lw(1.3), zorder=5)
+        ax.add_patch(box)
+        result.corners.append(box)
+        below = i == h - 1  # a label under a bottom corner, above a top one
+        y = row0 + h + 0.25 if below else row0 - 0.25
+        result.labels.append(ax.text(col0 + j + 0.5, y, f"{which} {name}: {test}",
+                                     ha="left" if j < w / 2 else "right", color=color,
+                                     va="top" if below else "bottom", fontsize=fs(0.6),
+                                     fontweight="bold"))  # fmt: skip
+    if steps is not None:
+        right, down = steps
+        for (x0, y0, x1, y1), text, rot in (
+            ((col0, row0 - 1.2, col0 + 2.2, row0 - 1.2), f"one step right: {right:+.1f}", 0),
+            ((col0 - 1.2, row0, col0 - 1.2, row0 + 2.2), f"one step down: {down:+.1f}", -90),
+        ):
+            arrow = ax.annotate("", (x1, y1), (x0, y0), arrowprops={
+                "arrowstyle": "-|>", "color": COLORS["edge"], "lw": lw(0.6)})  # fmt: skip
+            result.arrows.append(arrow)
+            tx, ty = (x1 + 0.2, y1) if rot == 0 else (x1, y1 + 0.2)
+            result.labels.append(ax.text(tx, ty, text, ha="left", va="center", rotation=rot,
+                                         rotation_mode="anchor", fontsize=fs(0.6)))  # fmt: skip
+    return result

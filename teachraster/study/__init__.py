@@ -2,7 +2,8 @@
 
 Lessons 06 and 07 in code. Nothing here is imported by ``import teachraster``:
 
-- :mod:`.precision`: cheaper and costlier arithmetic for the same half-plane test;
+- :mod:`.precision`: cheaper and costlier arithmetic for the same half-plane test, and where
+  a walk in 32-bit registers goes wrong (lesson 10);
 - :mod:`.bench`: the accuracy-vs-time study (``python -m teachraster.study.bench``);
 - :mod:`.hardcases`: the catalogue of named hard cases, each with a naive variant;
 - :mod:`.antialiasing`: exact pixel areas, the ground truth of the sample-count study, and

@@ -323,3 +323,102 @@ def mesh_coverage_counts(
         local, r0, c0 = _local_coverage(xy, width, height, arithmetic, evaluation, origin)
         counts[r0 : r0 + local.shape[0], c0 : c0 + local.shape[1]] += local
     return counts
+
+
+@dataclass(frozen=True)
+class WrongRegions:
+    """Where a walk in narrow registers got pixels wrong (:func:`wrong_regions`).
+
+    Attributes
+    ----------
+    wrongly_in, wrongly_out : int
+        Pixels accepted outside the triangle, and rejected inside it.
+    near : int
+        Wrong pixels whose centre lies within ``near_px`` px of an edge's line.
+    near_px : float
+    sides : dict
+        The pixel sides between a wrong pixel and a right one (4-neighbours), by where they
+        lie, each side counted once under the first that applies: ``"box"`` (one of the two
+        pixels lies outside the bounding box, where the walk writes nothing), ``"edge"`` (an
+        edge's value changes sign between the two centres: the triangle's own edge),
+        ``"wrap"`` (an edge's value passes a nonzero multiple of ``2**(int_bits - 1)``, where
+        the register's sign flips: a line parallel to that edge), ``"block"`` (on a boundary
+        of the smallest blocks: a block misjudged at its corners) and ``"other"``.
+    """
+
+    wrongly_in: int
+    wrongly_out: int
+    near: int
+    near_px: float
+    sides: dict
+
+    @property
+    def wrong(self) -> int:
+        """All the wrong pixels."""
+        return self.wrongly_in + self.wrongly_out
+
+
+def _crosses(e: np.ndarray, step: float, axis: int) -> tuple[np.ndarray, np.ndarray]:
+    """Between 4-neighbours along ``axis`` (one row or column apart): does some edge's value
+    change sign, and does it pass a nonzero multiple of ``step``?"""
+    a = e.take(np.arange(e.shape[axis + 1] - 1), axis=axis + 1)
+    b = e.take(np.arange(1, e.shape[axis + 1]), axis=axis + 1)
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    sign = ((a < 0) != (b < 0)).any(axis=0)
+    # the multiples k * step with lo < k * step <= hi: some k other than 0
+    first, last = np.floor(lo / step) + 1, np.floor(hi / step)
+    wrap = ((first <= last) & ~((first == 0) & (last == 0))).any(axis=0)
+    return sign, wrap
+
+
+def wrong_regions(xy, narrow, *, near_px: float = 2.0, block: int = 4) -> WrongRegions:
+    """Where the pixels of a narrow walk (:func:`teachraster.core.fixed_point.narrow_fill`)
+    went wrong: inside or outside, near an edge or not, and what the wrong regions' sides
+    follow (lesson 10 §4).
+
+    A value stepped in an ``n``-bit register is the exact one modulo ``2**n`` (additions
+    wrap, they do not round), so its sign flips where the exact value passes a multiple of
+    ``2**(n - 1)``: along lines parallel to the edge. The exact values come from
+    :func:`edge_values` (exact px² on the snapped grid), scaled to ``narrow.budget``'s units.
+
+    >>> import teachraster as tr
+    >>> from teachraster.core import fixed_point
+    >>> big = tr.Triangle([[3.2, 6.4], [312.6, 18.8], [62.8, 312.6]])
+    >>> fill = fixed_point.narrow_fill(big, 320, 320, int_bits=32, block_sizes=(16, 4),
+    ...                                centre_bit=False)
+    >>> found = wrong_regions(big.xy, fill)
+    >>> found.wrong == int(fill.wrong.sum()), found.wrongly_out > found.wrongly_in
+    (True, True)
+    """
+    xy = _as_xy(xy)
+    height, width = narrow.coverage.shape
+    budget = narrow.budget
+    e = edge_values(xy, width, height) * float(budget.units_per_pixel) ** 2  # exact, units²
+    wrong = narrow.wrong
+    setup = _setup(xy, "fixed8")  # the snapped vertices, as the walk has them
+    rows, cols = _bbox(setup, width, height, 0, 0)
+    box = np.zeros((height, width), dtype=bool)
+    box[rows[:, None], cols[None, :]] = True
+    p = setup.p.astype(np.float64) / setup.unit
+    lengths = np.hypot(*(np.roll(p, -1, axis=0) - p).T)  # edge k runs from p[k] to p[k + 1]
+    distance = (np.abs(e) / budget.units_per_pixel**2 / lengths[:, None, None]).min(axis=0)
+    sides = dict.fromkeys(("box", "edge", "wrap", "block", "other"), 0)
+    for axis in (0, 1):
+        keep = np.arange(wrong.shape[axis] - 1)
+        side = wrong.take(keep, axis=axis) != wrong.take(keep + 1, axis=axis)
+        outside = box.take(keep, axis=axis) != box.take(keep + 1, axis=axis)
+        sign, wrap = _crosses(e, 2.0 ** (budget.int_bits - 1), axis)
+        on_block = np.expand_dims((keep + 1) % block == 0, 1 - axis)
+        left = side.copy()
+        for name, where in (("box", outside), ("edge", sign), ("wrap", wrap),
+                            ("block", on_block), ("other", True)):  # fmt: skip
+            hit = left & where
+            sides[name] += int(hit.sum())
+            left &= ~hit
+    return WrongRegions(
+        wrongly_in=int((narrow.coverage & ~narrow.exact).sum()),
+        wrongly_out=int((narrow.exact & ~narrow.coverage).sum()),
+        near=int((wrong & (distance <= near_px)).sum()),
+        near_px=float(near_px),
+        sides=sides,
+    )
