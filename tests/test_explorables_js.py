@@ -858,6 +858,103 @@ def test_footprint_view_draws_the_probes_as_the_static_figure():
     assert max(counts) >= 3 and min(counts) <= 2  # more probes far away than near
 
 
+#: Draws the picked pixel's footprint and the zoom label on a context that records every
+#: call with the style it was made in (node has no canvas).
+RECORDING_DRIVER = """
+import { readFileSync } from "node:fs";
+const mod = await import(process.argv[2]);
+const [uv, ddx, ddy, q] = JSON.parse(readFileSync(process.argv[3], "utf8"));
+const T = 420;
+const STYLE = ["strokeStyle", "fillStyle", "lineWidth", "font"];
+const log = [];
+let state = { strokeStyle: "#000", fillStyle: "#000", lineWidth: 1, font: "10px sans-serif",
+  dash: [] };
+const stack = [];
+const target = {
+  canvas: { width: T, height: T, logical: { w: T, h: T, dpr: 1 } },
+  save() { stack.push({ ...state }); },
+  restore() { state = stack.pop(); },
+  setLineDash(d) { state.dash = [...d]; },
+  measureText(t) { return { width: 0.55 * parseFloat(state.font) * t.length }; },
+};
+const ctx = new Proxy(target, {
+  get(t, name) {
+    if (name in t) return t[name];
+    if (STYLE.includes(name)) return state[name];
+    return (...args) => log.push([name, args, { ...state }]);
+  },
+  set(t, name, value) {
+    state[name] = value;
+    return true;
+  },
+});
+const fp = mod.footprintOf(uv, ddx, ddy, 64, 64, q);
+const ext = Math.max(Math.hypot(...fp.axisX), Math.hypot(...fp.axisY), fp.rho, 4);
+const v = { cx: fp.centre[0], cy: fp.centre[1], half: 1.3 * ext };
+const fromTex = (w, [x, y]) => [T / 2 + ((x - w.cx) / w.half) * (T / 2),
+  T / 2 + ((y - w.cy) / w.half) * (T / 2)];
+mod.drawPicked(ctx, fp, mod.trilinearTaps(uv, ddx, ddy, 64, 64, q), v, fromTex);
+mod.drawZoomLabel(ctx, v, T);
+process.stdout.write(JSON.stringify({ log, nearest: fp.nearest, linear: fp.linear }));
+"""
+
+
+def _recorded_footprint(pixel):
+    """The drawing calls of the FootprintExplorer's texture view for ``pixel`` of lesson 09's
+    floor (48 x 36, tilt 80), with the style each was made in."""
+    from teachraster.widgets.explorable import esm_source
+    from teachraster.widgets.footprint_explorer import floor_scene
+
+    if NODE is None:
+        pytest.skip("node is not installed (the page-side functions are checked with node)")
+    data = floor_scene(48, 36, 80.0, 2)
+    i = pixel[0] * 48 + pixel[1]
+    with tempfile.TemporaryDirectory(prefix="tr-node-") as tmp:
+        module, driver, args = Path(tmp, "m.mjs"), Path(tmp, "run.mjs"), Path(tmp, "args.json")
+        module.write_text(esm_source(*FOOTPRINT), encoding="utf-8")
+        driver.write_text(RECORDING_DRIVER, encoding="utf-8")
+        args.write_text(json.dumps([data["uv"][i], data["ddx"][i], data["ddy"][i], data["q"]]))
+        done = subprocess.run([NODE, str(driver), module.as_uri(), str(args)],
+                              capture_output=True, text=True, timeout=120)  # fmt: skip
+    assert done.returncode == 0, done.stderr[-3000:]
+    return json.loads(done.stdout)
+
+
+@pytest.mark.parametrize("pixel", [(2, 24), (35, 24)])
+def test_footprint_level_grid_shows_over_the_fetched_texels_and_the_label_reads(pixel):
+    """Review r246 09 FIG1. At the default pixel (row 2) GL's nearest level is 3, whose texels
+    are a check wide: its grid, 35 % opaque under the fetched texels' dashed outlines, lay on
+    the check borders and the level-3 outline and showed no blue at all; at row 35 it was
+    faint. The grid is now opaque, in a colour neither fetched level's, drawn after the
+    outlines, which sit inside their texels, off the grid lines. The zoom label the lesson
+    sends students to ("texels … across") was 12 px: 16 now, drawn last."""
+    got = _recorded_footprint(pixel)
+    log = got["log"]
+    taps = [(k, args, st) for k, (name, args, st) in enumerate(log) if name == "strokeRect"
+            and st["strokeStyle"] in ("#CC79A7", "#009E73") and st["dash"] == [7, 4]]  # fmt: skip
+    assert len(taps) in (4, 8)
+    grid_at = next(k for k, (name, _, st) in enumerate(log)
+                   if name == "stroke" and st["strokeStyle"] == "#0072B2" and st["dash"])  # fmt: skip
+    grid = log[grid_at][2]
+    assert grid_at > max(k for k, _, _ in taps)  # over the fetched texels' outlines
+    assert grid["strokeStyle"] not in ("#CC79A7", "#009E73") and grid["lineWidth"] >= 2
+    assert "rgba" not in grid["strokeStyle"]  # opaque
+    # the grid's lines: the moveTo calls of its path
+    start = max(k for k, (name, _, _) in enumerate(log[:grid_at]) if name == "beginPath")
+    xs = {round(a[0], 6) for name, a, _ in log[start:grid_at] if name == "moveTo"}
+    ys = {round(a[1], 6) for name, a, _ in log[start:grid_at] if name == "moveTo"}
+    if got["nearest"] in got["linear"][:2]:  # a fetched level's outlines run along the grid
+        for _, (x, y, w, h), _ in taps:
+            for edge in (x, x + w):
+                assert min(abs(edge - g) for g in xs) >= 2, (edge, sorted(xs))
+            for edge in (y, y + h):
+                assert min(abs(edge - g) for g in ys) >= 2, (edge, sorted(ys))
+    label = [(k, a, st) for k, (name, a, st) in enumerate(log) if name == "fillText"]
+    ((k, (text, _, _), st),) = label
+    assert text.startswith("texels ") and text.endswith(" across") and k > grid_at
+    assert int(st["font"].split("px")[0]) >= 14
+
+
 def test_footprint_readout_gives_every_number_to_two_decimals():
     """r104 09-7: the readout mixed significant digits ("axes 0.976 and 1.44", "λ = 0.526"
     beside "λ = 1.7"); it gives two decimals throughout, as cells 25 and 28 print them."""

@@ -1158,22 +1158,83 @@ def test_filter_explorer_panels_fit_the_column_apart():
             title, panel = ax.title.get_window_extent(renderer), ax.get_window_extent(renderer)
             assert panel.x0 <= title.x0 and title.x1 <= panel.x1, ax.get_title()
         # review r184 09-7: the filtered image on the left, the level panel above the error
-        # panel on its right, at one size; the figure FIGURE_PX tall (r42 09-3: three panels
-        # in a row were too small). Review r233 09 FIG1: the quarter under the image held
-        # nothing and the two panels were 270 px wide: the footprint mean fills it, and the
-        # two panels on the right are wider than 300 px, the image kept at 3 px a pixel
+        # panel on its right, the figure at most FIGURE_PX tall (r42 09-3: three panels in a
+        # row were too small). Review r233 09 FIG1: the quarter under the image held nothing:
+        # the footprint mean fills it. Review r246 09 FIG2: the footprint mean was drawn at
+        # 0.62 times the filtered image's scale: all four panels are one size now, at a whole
+        # number of figure pixels per image pixel, so a pixel lies at one place in each
         from teachraster.widgets.filter_explorer import FIGURE_PX
 
         image, truth, lod, error = (ax.get_window_extent(renderer) for ax in ex.axes)
-        assert image.x1 < min(lod.x0, error.x0) and abs(lod.x0 - error.x0) < 1
-        assert lod.y0 > error.y1 and abs(image.y1 - lod.y1) < 1
-        assert abs(lod.width - error.width) < 1 and image.width > lod.width > 300
-        assert round(image.width) == 3 * ex.width
-        assert truth.y1 < image.y0 and truth.x1 < lod.x0 and truth.height > 0.6 * image.height
-        assert truth.y0 < 0.05 * fig.bbox.height  # down to the figure's foot: nothing empty
-        assert round(fig.get_figheight() * fig.dpi) == FIGURE_PX
+        for panel in (truth, lod, error):
+            assert abs(panel.width - image.width) < 0.5 and abs(panel.height - image.height) < 0.5
+        scale = image.width / ex.width
+        assert scale >= 2 and abs(scale - round(scale)) < 1e-6
+        assert abs(image.x0 - truth.x0) < 0.5 and abs(lod.x0 - error.x0) < 0.5
+        assert image.x1 < lod.x0 and truth.y1 < image.y0 and error.y1 < lod.y0
+        assert abs(image.y0 - lod.y0) < 0.5 and abs(truth.y0 - error.y0) < 0.5
+        assert round(fig.get_figheight() * fig.dpi) <= FIGURE_PX
     finally:
         ex.close()
+
+
+def test_filter_explorer_ring_whole_and_a_drag_keeps_the_status_line():
+    """Review r246 09 FIG2: on the grazing floor at 89° with anisotropic the worst pixel lies
+    in the bottom row, and its ring was half cut off by the panel's edge: it is drawn whole.
+    S1: during a drag the status line grew by "(on release)" and wrapped, pushing the figure
+    down a line while the mouse was held; the draft's line is laid out as the full one (the
+    same text outside boxes of fixed width, each box's text no wider than its box)."""
+    import re
+
+    from teachraster.widgets.filter_explorer import FilterExplorer
+
+    ex = FilterExplorer(tilt=89, filter="anisotropic", repeats=6, view="grazing floor",
+                        backend="image")  # fmt: skip
+    try:
+        error = ex.panels["error"]
+        assert error.worst[0] == ex.height - 1  # on the panel's edge (the reader's 0.324)
+        assert error.marker.get_clip_on() is False
+        full = ex._info_html()
+        ex.truth = None  # what a draft at a tilt without its footprint mean shows
+        draft = ex._info_html()
+    finally:
+        ex.close()
+    box = r'<span style="display:inline-block;min-width:(\d+)ch;text-align:\w+">(.*?)</span>'
+
+    def layout(html):
+        boxes = re.findall(box, html)
+        outside = re.sub(box, "[]", html)
+        for width, inner in boxes:  # bold takes about a tenth more than 1ch a letter
+            assert (
+                len(re.sub(r"<[^>]+>", "", inner)) * (1.1 if "<b>" in inner else 1)
+                <= int(width) + 0.5
+            ), (width, inner)
+        return outside, [w for w, _ in boxes]
+
+    assert "(on release)" in draft and "(on release)" not in full
+    assert layout(draft) == layout(full)
+
+
+def test_filter_explorer_menu_fits_its_longest_filter():
+    """Review r246 09 S1: the 250-px filter menu cut "nearest_mipmap_nearest" to
+    "nearest_mipmap_neares" at the projector's 16 px. Its width holds the description, the
+    longest name in DejaVu Sans at 16 px and the menu's arrow and padding (about 40 px)."""
+    from matplotlib.font_manager import FontProperties
+    from matplotlib.textpath import TextPath
+
+    from teachraster.pipeline.texturing.texture import TEXTURE_FILTERS
+    from teachraster.widgets.filter_explorer import FilterExplorer
+
+    ex = FilterExplorer(48, 36, tilt=0, filter="nearest", samples=2, backend="image")
+    try:
+        width = int(ex.filter.layout.width.removesuffix("px"))
+        assert ex.filter.layout.max_width == "100%"  # never wider than a narrow column
+    finally:
+        ex.close()
+    font = FontProperties(family="DejaVu Sans", size=16)  # px at 72 dpi: 1 pt = 1 px
+    px = lambda text: TextPath((0, 0), text, prop=font).get_extents().width  # noqa: E731
+    need = px("filter") + 8 + max(px(f) for f in TEXTURE_FILTERS) + 40
+    assert width >= need, (width, need)
 
 
 def test_filter_explorers_error_panels_share_one_colour_scale():

@@ -2778,6 +2778,114 @@ def test_09_r233_standards_probes_order_and_appendix():
     assert not any("Square to the last digit? (a note" in t for t in text)
 
 
+def _09_section(text: list, start: str, end: str) -> list:
+    """The cells' texts from the heading starting ``start`` up to the one starting ``end``."""
+    first = next(i for i, t in enumerate(text) if t.startswith(start))
+    last = next(i for i, t in enumerate(text) if t.startswith(end))
+    return text[first:last]
+
+
+def test_09_r246_probes_stated_exercise_linked_overshading_and_held_stripe():
+    """Review r246 09. P1: q_probes states where the probes lie (i/(N + 1) − ½ of the longer
+    vector: two a sixth of it either side), and §6's lead-in no longer says the standards
+    part (which left two of five choices). M1: exercise 7 linked after §5 and after §9. M2:
+    §2 prints the lanes launched per covered pixel against triangle size, growing towards a
+    quad's four as the triangles shrink. S2: the text on the filtered error maps is held with
+    them. S3: λ' lies exactly log2 N below trilinear's λ."""
+    import json
+
+    ns = lesson("09_texture_filtering")
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    flat = " ".join(" ".join(text).split())
+    # P1
+    asked = next(t for t in text if "q_probes = Predict(" in t)
+    stem = asked[asked.index("q_probes = Predict(") : asked.index("probe_choices,\n    answer")]
+    stem = " ".join(stem.replace('"\n    "', "").split())
+    assert "i/(N + 1) − ½ of its length from the footprint's centre" in stem
+    assert "two probes sit a sixth of the length either side of it" in stem
+    assert "give its anisotropic probes differently" not in stem
+    lead = next(t for t in text if t.startswith("## 6. Anisotropy"))
+    assert "where the standards part" not in lead and "part" not in lead.split("probes")[-1]
+    # M1: the exercise after §5 (before §6) and after §9 (before the summary)
+    link = "[exercises/07_texture_filtering.ipynb](exercises/07_texture_filtering.ipynb)"
+    for start, end in (("## 5.", "## 6."), ("## 9.", "## Summary")):
+        assert any(link in t for t in _09_section(text, start, end)), start
+    assert "parts 7.1 to 7.3" in flat and "part 7.4" in flat
+    # M2: in §2, lanes per covered pixel fall as the triangles grow; one-pixel triangles cost
+    # nearly a whole quad each, §1's two big triangles almost nothing
+    second = " ".join(_09_section(text, "## 2.", "## 3."))
+    assert "helper_share(tiles)" in second and "**What helpers cost.**" in second
+    sizes = [k for k in ns.overshading if k != "floor"]
+    assert sizes == [1, 4, 16, 64, 256]
+    lanes = [ns.overshading[k] for k in sizes]
+    assert lanes == sorted(lanes, reverse=True) and 3.5 < lanes[0] < 4 and lanes[-1] < 1.3
+    assert 1 < ns.overshading["floor"] < 1.05
+    from notebook_runs import executed, streams
+
+    printed = streams(executed("09_texture_filtering").notebook())
+    assert "quad overshading, a 64 x 64 image tiled with triangles of one size:" in printed
+    assert f"{ns.overshading[1]:.2f}" in printed
+    # S2: the stripe of the error maps is described under them, held as they are
+    stripe = next(i for i, t in enumerate(text) if "**The bright stripe down the middle**" in t)
+    assert text[stripe].startswith("q_reads.hold()") and cells[stripe]["cell_type"] == "code"
+    assert text[stripe - 1].startswith("q_reads.hold()") and "plot_filters(" in text[stripe - 1]
+    assert cells[stripe]["metadata"]["jupyter"]["source_hidden"] is True
+    # S3
+    nine = next(t for t in text if t.startswith("## 9. Tilt it yourself"))
+    assert "exactly $\\log_2 N$" in nine and "up to $\\log_2 N$" not in flat
+
+
+def _09_prose(nb) -> list:
+    """(cell, text) of lesson 09's prose: its Markdown cells and its held Markdown."""
+    return _07_prose(nb)
+
+
+def test_09_r246_printouts_named_by_their_words_and_standards_folded():
+    """Review r246 09 S4: the notes pointed into a 25-line printout by place ("the fourth
+    line", "the last lines"); every printed line the prose names it names by its words, as
+    lesson 07 does, and the line is printed in the cell beside it. The GL / Direct3D / Vulkan
+    side-notes are folded in one block beside §8's table, and the body (outside the folded
+    blocks) is about a third shorter than the reader's 7,244 words."""
+    import json
+    import re
+
+    from notebook_runs import executed
+
+    nb = executed("09_texture_filtering").notebook()
+    named = 0
+    for k, said in _09_prose(nb):
+        flat = " ".join(said.split())
+        assert not re.search(_POSITIONAL, flat, flags=re.I), (k, re.search(_POSITIONAL, flat, re.I))
+        near = [j for j in (k - 1, k, k + 1) if 0 <= j < len(nb.cells)]
+        printed = "".join(o.get("text", "") for j in near if nb.cells[j].cell_type == "code"
+                          for o in nb.cells[j].outputs if o.get("output_type") == "stream")  # fmt: skip
+        for m in re.finditer(_NAMED, flat):
+            for quote in filter(None, m.groups()):
+                named += 1
+                assert _names_a_printed_line(quote, printed), (k, quote)
+    assert named >= 12
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    sampler = next(t for t in text if t.startswith("## 8. The sampler in GL, Direct3D and Vulkan"))
+    folded = re.findall(r"<details>.*?</details>", sampler, flags=re.S)
+    assert len(folded) == 1
+    for note in ("no specification dictating how the 2x2 quads", "GL 4.6 §8.15",
+                 "`MAX_TEXTURE_MAX_ANISOTROPY` has a minimum of 16.0", "the 1999 EXT extension",
+                 "`maxSamplerAnisotropy`", "`GL_FRAGMENT_SHADER_DERIVATIVE_HINT`",
+                 "*Scale Factor Operation*", "`Magnifying = (clampedLOD <= 0)`"):  # fmt: skip
+        assert note in folded[0], note
+    body = []
+    for c, t in zip(cells, text):
+        if c["cell_type"] == "code" and 'Markdown(r"""' not in t:
+            continue
+        shown = t.split('Markdown(r"""', 1)[-1]
+        body += re.sub(r"<details>.*?</details>", "", shown, flags=re.S).split()
+        for note in ("(GL 4.6 §8.15)", "EXT extension", "`maxSamplerAnisotropy`", "`deriv_rtx`"):
+            assert note not in re.sub(r"<details>.*?</details>", "", shown, flags=re.S), note
+    assert len(body) < 0.7 * 7244, len(body)
+
+
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     ns = lesson("09_texture_filtering")
     b, nmn = ns.b, ns.nmn
@@ -2832,9 +2940,11 @@ def test_09_filter_explorer_starts_unaliased_and_moire_appears_with_the_tilt():
     texts = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
     see = next(t for t in texts if "reads one whole texel" in t)
     caps = next(t for t in texts if "numbers on a driver's" in t)
-    # r233 S3: no back-reference to "the table under the spreads"; the RMS lines named
+    # r233 S3: no back-reference to "the table under the spreads"; r246 S4: the RMS lines
+    # named by their printed header, not by their place
     flat_see = " ".join(see.split())
-    assert "errs under half as much at every" in flat_see and "the RMS lines at 30°" in flat_see
+    assert "errs under half as much at every" in flat_see
+    assert 'the lines under "RMS error vs footprint mean by level read, at 30°"' in flat_see
     assert not re.search(r"\d\.\d\d", see) and not re.search(r"\d\.\d\d", caps)
     explorer = FilterExplorer(tilt=0, filter="nearest", repeats=int(ns.uv_x6.max()),
                               samples=2, backend="image")  # fmt: skip

@@ -46,11 +46,11 @@ ALT = "the filtered texture, its mip levels and its error"
 TRUTH_CACHE = 96
 
 
-#: The figure's height in screen pixels at its own dpi: with the widget's title, controls and
-#: status line above it, the whole explorer fits a 1000-px-tall screen in JupyterLab, so the
-#: image and the error panel are seen together (review r184, 09-7: stacked in three rows the
-#: figure was 875 px tall and the widget 1059-1083 px, the image and the error panel never on
-#: a 1400 × 1000 screen together); 680 since the scene and the cap joined the controls.
+#: The figure's greatest height in screen pixels at its own dpi: with the widget's title,
+#: controls and status line above it, the whole explorer fits a 1000-px-tall screen in
+#: JupyterLab, so the image and the error panel are seen together (review r184, 09-7: stacked
+#: in three rows the figure was 875 px tall and the widget 1059-1083 px). The figure is as
+#: tall as its four panels need, at most this.
 FIGURE_PX = 680
 
 #: The two scenes (``plane_clip``'s placement of the square): lesson 04's square, seen from
@@ -61,6 +61,12 @@ FIGURE_PX = 680
 VIEWS = {"square": {},
          "grazing floor": {"distance": 0.6, "below": 0.15, "fit": "depth"}}  # fmt: skip
 
+#: The filter menu's width, its description included
+FILTER_MENU = "300px"
+
+#: The status line's RMS error during a drag at a tilt whose footprint mean is not at hand
+DRAFT_RMS = "(on release)"
+
 #: The caps a driver offers (``max_anisotropy``; GL's ``TEXTURE_MAX_ANISOTROPY``, Vulkan's
 #: ``maxAnisotropy``, Direct3D's ``MaxAnisotropy``): 1 is one probe, trilinear.
 CAPS = (1, 2, 4, 8, 16)
@@ -69,14 +75,15 @@ CAPS = (1, 2, 4, 8, 16)
 def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float, float]]:
     """Size ``fig`` to the notebook column and add the explorer's Axes.
 
-    Two columns. On the left the filtered image, as large as fits at a whole number of
-    figure pixels per image pixel (its checks keep equal widths), and under it the box
-    average it is measured against; on the right the mip level(s) each pixel reads above
-    the error against that average, at one size, each with its colour bar on its right.
-    The figure is :data:`FIGURE_PX` tall. Three panels in one row were each about 190 px
-    wide in a 1280 px browser (review r42, 09-3); three rows were taller than the screen
-    (review r184, 09-7); the image with the two panels stacked beside it left the quarter
-    under the image empty and the two panels 270 px wide (review r233, 09 FIG1).
+    Four panels of one size, at one whole number of figure pixels per image pixel (the
+    checks keep equal widths), so that a pixel lies at the same place in each: on the left
+    the filtered image above the box average it is measured against, on the right the mip
+    level(s) each pixel reads above the error against that average, each with its colour bar
+    on its right. The figure is as wide and tall as they need, at most the column and
+    :data:`FIGURE_PX`. Three panels
+    in one row were each about 190 px wide in a 1280 px browser (review r42, 09-3); three rows
+    were taller than the screen (review r184, 09-7); the box average at 0.62 times the
+    filtered image's scale could not be compared with it pixel by pixel (review r246, 09 FIG2).
 
     Returns
     -------
@@ -89,35 +96,27 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
         under it, off the picture.
     """
     s, r, fw = font_scale(), width / height, column_inches(fig)
-    fh = FIGURE_PX / fig.dpi
-    left, right, gap, bottom = 0.15, 0.1, 0.2 * s, 0.1
+    left, right, gap, bottom = 0.15, 0.1, 0.3 * s, 0.1
     title = 0.25 * s + 0.1  # no tick labels: one row of titles (their pad included)
     # a colour bar beside its panel: the gap, the bar and its tick labels (no label: the
     # panel's title says what the colours are)
     pad, bar, beside = 0.09 * s, 0.1 * s, 0.3 * s
     note = 0.45 * s  # the row under the error panel holding its maximum
-    # the image: at most a little over half the width, at a whole number of figure pixels
-    # per image pixel, leaving the box average under it at least half its height
-    room = min(0.57 * (fw - left - right - gap), (fh - 2 * title - bottom) / 1.5 * r)
-    scale = max(int(room * fig.dpi / width), 1)
-    top_w = scale * width / fig.dpi
-    top_h = top_w / r
-    fig.set_size_inches(fw, fh)
-    panels = [fig.add_axes((left / fw, (fh - title - top_h) / fh, top_w / fw, top_h / fh))]
-    # the box average: the rest of the left column's height
-    truth_h = min(fh - 2 * title - top_h - bottom, top_h)
-    truth_w = truth_h * r
-    panels.append(fig.add_axes(((left + (top_w - truth_w) / 2) / fw, bottom / fh,
-                                truth_w / fw, truth_h / fh)))  # fmt: skip
-    # the right column: two panels of one size, each with a bar beside it
-    x = left + top_w + gap
-    w = min(fw - right - x - pad - bar - beside, (fh - 2 * title - note - bottom) / 2 * r)
+    room_w = (fw - left - right - gap - pad - bar - beside) / 2
+    room_h = (FIGURE_PX / fig.dpi - 2 * title - note - bottom) / 2
+    scale = max(int(min(room_w, room_h * r) * fig.dpi / width), 1)
+    w = scale * width / fig.dpi
     h = w / r
-    bars = []
-    for k in range(2):
-        y = fh - (k + 1) * (title + h)  # the panel's lower edge
-        panels.append(fig.add_axes((x / fw, y / fh, w / fw, h / fh)))
-        bars.append(fig.add_axes(((x + w + pad) / fw, y / fh, bar / fw, h / fh)))
+    # as wide and tall as the panels need: a narrower column shrinks the figure less
+    fw, fh = left + 2 * w + gap + pad + bar + beside + right, 2 * title + 2 * h + note + bottom
+    fig.set_size_inches(fw, fh)
+    panels, bars = [], []
+    for x, beside_bar in ((left, False), (left + w + gap, True)):
+        for k in range(2):
+            y = fh - (k + 1) * (title + h)  # the panel's lower edge
+            panels.append(fig.add_axes((x / fw, y / fh, w / fw, h / fh)))
+            if beside_bar:
+                bars.append(fig.add_axes(((x + w + pad) / fw, y / fh, bar / fw, h / fh)))
     # right-aligned with the error panel's colour bar, below the panel and clear of the
     # bar's lowest tick label (the bar is put back from its cache only where nothing
     # moving overlaps it)
@@ -231,9 +230,11 @@ class FilterExplorer:
         # the four controls on one row of the column, so that the whole explorer still fits
         # a 1000-px screen (review r184 09-7)
         narrow = {"description_width": "initial"}
+        # wide enough for "nearest_mipmap_nearest" at the projector's 16 px (review r246 09
+        # S1: at 250 px it read "nearest_mipmap_neares")
         self.filter = widgets.Dropdown(options=list(TEXTURE_FILTERS), value=filter,
                                        description="filter", style=narrow,
-                                       layout=widgets.Layout(width="250px"))  # fmt: skip
+                                       layout=fit_width(widgets.Layout(width=FILTER_MENU)))  # fmt: skip
         self.view = widgets.Dropdown(options=list(VIEWS), value=view, description="scene",
                                      style=narrow, layout=widgets.Layout(width="190px"))  # fmt: skip
         self.max_anisotropy = widgets.Dropdown(options=list(CAPS), value=max_anisotropy,
@@ -276,6 +277,9 @@ class FilterExplorer:
             self.axes = axes
             self._blit = self._edit_blit()
             error = self.panels["error"]
+            # the ring may lie on the panel's edge: drawn whole, over the margin (review
+            # r246 09 FIG2: on the grazing floor at 89° half of it was cut off)
+            error.marker.set_clip_on(False)
             self._bar = ColourBarSprite(self.fig, lambda: error.image, error.colorbar)
             self.display = slider_display(
                 self.fig, self.backend, draw=self._draw, drafting=self._drafting, alt=ALT
@@ -472,17 +476,20 @@ class FilterExplorer:
         """The status line: short enough for one line in a 1400-px window, and as long for
         every filter (the name and the reads in boxes of a fixed width), so that switching
         filters never wraps it and moves the figure (review r184, 09-8: the longer names
-        wrapped it and the figure jumped 24 px)."""
+        wrapped it and the figure jumped 24 px). The RMS error comes last, in a box as wide
+        as a drag's "(on release)", so that a drag never lengthens the line either (review
+        r246 09 S1: it wrapped while the mouse was held and pushed the figure down a line)."""
         reads = self._reads()
-        rms = "(on release)" if self.truth is None else f"{self.rms:.3f}"
+        rms = DRAFT_RMS if self.truth is None else f"{self.rms:.3f}"
         name = max(len(f) for f in TEXTURE_FILTERS) + 2  # bold is wider than 1ch a letter
         # the picture's own tilt first: during a drag the slider's readout may run ahead of
         # the kernel's picture, and these numbers are the picture's (review r233 09 W1)
         return (
             f"<b>{_fixed(f'{self.shown_tilt:.0f}°', 3, 'right')}</b>: "
-            f"{_fixed(f'<b>{self.shown_filter}</b>', name)} · RMS error vs footprint "
-            f"mean <b>{rms}</b> · {_fixed(f'{reads:.1f}', 4, 'right')} texels read per pixel"
-            f" · largest λ {np.nanmax(self.lod):.1f}"
+            f"{_fixed(f'<b>{self.shown_filter}</b>', name)} · "
+            f"{_fixed(f'{reads:.1f}', 4, 'right')} texels per pixel"
+            f" · largest λ {np.nanmax(self.lod):.1f} · RMS vs footprint mean "
+            f"{_fixed(f'<b>{rms}</b>', len(DRAFT_RMS) + 1)}"
         )
 
     def _pending_html(self) -> str:

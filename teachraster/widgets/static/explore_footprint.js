@@ -175,9 +175,8 @@ function mount(el, data, host) {
     const fp = state.pixel && fpOf(state.pixel);
     if (fp) {
       const i = state.pixel[0] * W + state.pixel[1];
-      drawTaps(tctx, trilinearTaps(data.uv[i], data.ddx[i], data.ddy[i], data.texW, data.texH,
-        data.q), v, fromTex);
-      drawFootprint(tctx, fp, v, fromTex, true);
+      drawPicked(tctx, fp, trilinearTaps(data.uv[i], data.ddx[i], data.ddy[i], data.texW,
+        data.texH, data.q), v, fromTex);
     }
     if (state.point) {
       const [x, y] = fromTex(v, state.point);
@@ -186,6 +185,7 @@ function mount(el, data, host) {
       tctx.arc(x, y, 5, 0, 2 * Math.PI);
       tctx.fill();
     }
+    drawZoomLabel(tctx, v, T);  // last: nothing drawn over it
     readout.innerHTML = footprintText(state, fp, reading);
     host.picture(screen, tex);
   }
@@ -323,12 +323,38 @@ function drawTexture(ctx, texImage, data, v, T, fromTex) {
     if (x >= -3 && y >= -3 && x <= T + 3 && y <= T + 3) ctx.fillRect(x - dot / 2, y - dot / 2, dot, dot);
   });
   ctx.restore();
-  ctx.fillStyle = "#111";
-  ctx.font = "12px sans-serif";
-  ctx.fillText(`texels ${fmt(v.cx - v.half, 4)}…${fmt(v.cx + v.half, 4)} across`, 6, T - 8);
 }
 
-// the texels the trilinear filter fetches: level ⌊λ⌋ in purple, ⌊λ⌋ + 1 in green
+// The texture view's span, "texels … across", which lesson 09 sends students to read as they
+// walk a pixel up the floor: 16 px on a white box in the lower left, drawn last (review r246
+// FIG1: at 12 px its glyphs were 9 px tall, against 16 for the line under the pictures).
+export const ZOOM_LABEL_PX = 16;
+export function drawZoomLabel(ctx, v, T) {
+  const text = `texels ${fmt(v.cx - v.half, 4)}…${fmt(v.cx + v.half, 4)} across`;
+  const px = textPx(ctx, ZOOM_LABEL_PX);
+  ctx.save();
+  ctx.font = `${px}px sans-serif`;
+  ctx.fillStyle = "rgba(255,255,255,0.85)";
+  ctx.fillRect(2, T - px - 10, ctx.measureText(text).width + 8, px + 8);
+  ctx.fillStyle = "#111";
+  ctx.fillText(text, 6, T - 8);
+  ctx.restore();
+}
+
+// The picked pixel's footprint over the texture: the texels trilinear fetches, then the
+// nearest level's texel grid over them, then the footprint itself (mapped square, side-ρ
+// square, probes, ellipse).
+export function drawPicked(ctx, fp, taps, v, fromTex) {
+  drawTaps(ctx, taps, v, fromTex);
+  drawLevelGrid(ctx, fp, v, fromTex);
+  drawFootprint(ctx, fp, v, fromTex, true);
+}
+
+// the texels the trilinear filter fetches: level ⌊λ⌋ in purple, ⌊λ⌋ + 1 in green, each
+// outline a little inside its texel, so that the level grid on the texel borders stays in
+// view (review r246 FIG1: at the default pixel the nearest level is the fetched level 3,
+// whose outlines lay on its grid lines and hid them)
+const TAP_INSET = 3;
 function drawTaps(ctx, taps, v, fromTex) {
   const first = Math.min(...taps.map((t) => t[3]));
   ctx.save();
@@ -337,9 +363,40 @@ function drawTaps(ctx, taps, v, fromTex) {
   for (const [x, y, s, level] of taps) {
     const [x0, y0] = fromTex(v, [x, y]);
     const [x1, y1] = fromTex(v, [x + s, y + s]);
+    const inset = Math.min(TAP_INSET, 0.15 * (x1 - x0));
     ctx.strokeStyle = level === first ? OKABE.purple : OKABE.green;
-    ctx.strokeRect(x0, y0, x1 - x0, y1 - y0);
+    ctx.strokeRect(x0 + inset, y0 + inset, x1 - x0 - 2 * inset, y1 - y0 - 2 * inset);
   }
+  ctx.restore();
+}
+
+// The texel grid of GL's nearest level around the footprint (2^level texels of level 0):
+// dotted blue, opaque and over the fetched texels' outlines. Its lines fall on check borders
+// whenever a texel is a check wide (level 3): at 35 % opacity under the outlines it did not
+// show at all there (review r246 FIG1).
+export const LEVEL_GRID = { colour: OKABE.blue, width: 3, dash: [5, 3] };
+function drawLevelGrid(ctx, fp, v, fromTex) {
+  const [a, b, c] = [fp.axisX, fp.axisY, fp.centre];
+  const size = 2 ** fp.nearest;
+  const ext = Math.max(fp.rho, Math.hypot(...a), Math.hypot(...b)) * 0.8 + size;
+  ctx.save();
+  ctx.strokeStyle = LEVEL_GRID.colour;
+  ctx.lineWidth = LEVEL_GRID.width;
+  ctx.setLineDash(LEVEL_GRID.dash);
+  ctx.beginPath();
+  for (let g = Math.floor((c[0] - ext) / size) * size; g <= c[0] + ext; g += size) {
+    const [x0, y0] = fromTex(v, [g, c[1] - ext]);
+    const [, y1] = fromTex(v, [g, c[1] + ext]);
+    ctx.moveTo(x0, y0);
+    ctx.lineTo(x0, y1);
+  }
+  for (let g = Math.floor((c[1] - ext) / size) * size; g <= c[1] + ext; g += size) {
+    const [x0, y0] = fromTex(v, [c[0] - ext, g]);
+    const [x1] = fromTex(v, [c[0] + ext, g]);
+    ctx.moveTo(x0, y0);
+    ctx.lineTo(x1, y0);
+  }
+  ctx.stroke();
   ctx.restore();
 }
 
@@ -348,25 +405,6 @@ function drawFootprint(ctx, fp, v, fromTex, main) {
   const [a, b, c] = [fp.axisX, fp.axisY, fp.centre];
   const P = (k1, k2) => fromTex(v, [c[0] + (k1 * a[0] + k2 * b[0]) / 2, c[1] + (k1 * a[1] + k2 * b[1]) / 2]);
   if (main) {
-    // the texel grid of the nearest level around the footprint: 2^level texels of level 0
-    const size = 2 ** fp.nearest;
-    const ext = Math.max(fp.rho, Math.hypot(...a), Math.hypot(...b)) * 0.8 + size;
-    ctx.strokeStyle = "rgba(0,114,178,0.35)";
-    ctx.lineWidth = 1;
-    ctx.beginPath();
-    for (let g = Math.floor((c[0] - ext) / size) * size; g <= c[0] + ext; g += size) {
-      const [x0, y0] = fromTex(v, [g, c[1] - ext]);
-      const [, y1] = fromTex(v, [g, c[1] + ext]);
-      ctx.moveTo(x0, y0);
-      ctx.lineTo(x0, y1);
-    }
-    for (let g = Math.floor((c[1] - ext) / size) * size; g <= c[1] + ext; g += size) {
-      const [x0, y0] = fromTex(v, [c[0] - ext, g]);
-      const [x1] = fromTex(v, [c[0] + ext, g]);
-      ctx.moveTo(x0, y0);
-      ctx.lineTo(x1, y0);
-    }
-    ctx.stroke();
     ctx.setLineDash([6, 4]);
     ctx.strokeStyle = "#000";
     ctx.lineWidth = 1.5;
@@ -435,7 +473,7 @@ export function footprintText(state, fp, reading) {
       `${f2(Math.hypot(...fp.axisX))} and ${f2(Math.hypot(...fp.axisY))} texels ` +
       `(dashed: the pixel square, mapped; blue: the ellipse). ρ = ${f2(fp.rho)}, ` +
       `λ = log₂ ρ = ${f2(fp.lam)}: GL's nearest mip level is <b>${fp.nearest}</b> ` +
-      `(its texel grid in blue); trilinear blends levels ${l0} and ${l1}` +
+      `(its texel grid, dotted blue); trilinear blends levels ${l0} and ${l1}` +
       `${t > 0 ? ` (weight ${f2(t)} on ${l1})` : " (one level)"} over the orange square of ` +
       `side ρ, fetching 2 × 2 texels of each (dashed: <span style="color:#CC79A7">level ` +
       `${l0}</span>${t > 0 ? `, <span style="color:#009E73">level ${l1}</span>` : ""}); anisotropic (GL's formula) takes ${fp.probes} ` +
