@@ -3283,7 +3283,9 @@ def test_10_r45_items():
     # forgotten) is marked wrong, and the explanation names it
     asked = next(t for t in text if "q_small = Predict(" in t)
     assert ns.tiny_tests == 49 and "answer=int(tiny_tests),\n    tolerance=0," in asked
-    assert "(48 forgets the 64-block's own test" in asked
+    # r255 S3: the sum is built from the walk's counts, not typed in the folded source
+    assert ns.level_tests == [1, 16, 16, 16] and "1 + 16 + 16 + 16" not in asked
+    assert "48" not in asked
 
 
 def test_10_r109_items():
@@ -4079,9 +4081,10 @@ def test_10_r235_items():
     assert round(ns.sliver_saving["on the diagonal"]) == 41
     assert "spend 113 tests per covered pixel where the walk spends 2.74: 41 times fewer" in md
     assert "large triangles are cheap per pixel, small ones expensive" not in md
+    # r255 C1: averaged over where the corner sits, the slivers fall between legs 16 and 8
     by_leg = dict(zip(ns.legs, ns.per_pixel))
     for cost in ns.sliver_cost.values():
-        assert all(cost > v for leg, v in by_leg.items() if leg >= 8) and cost < by_leg[4]
+        assert by_leg[16] < cost < by_leg[8]
     thin = ns.slivers["on the diagonal"].xy
     assert np.hypot(*(thin[1:].mean(axis=0) - thin[0])) > 256 * 2**0.5
     # S1: q_small and q_bits take whole numbers only
@@ -5091,3 +5094,47 @@ def get_uv_sphere_mesh():
     from teachraster.pipeline.scenes import get_scene
 
     return get_scene("uv_sphere").mesh
+
+
+def _lesson_10_run():
+    """Lesson 10 executed: (namespace, printed streams, displayed Markdown as one line)."""
+    from notebook_runs import executed, streams
+
+    run = executed("10_tiles_and_hierarchical_z").notebook()
+    shown = " ".join(" ".join(o["data"]["text/markdown"].split()) for c in run.cells
+                     for o in c.get("outputs", []) if "text/markdown" in o.get("data", {}))  # fmt: skip
+    return lesson("10_tiles_and_hierarchical_z"), streams(run), shown
+
+
+def test_10_r255_c1_cost_series_off_the_block_grid():
+    """Review r255 C1: §3's legs series sat on the 4-px block grid (corner (100.3, 100.2)),
+    a best case that contradicted "cost follows edge for area". The series now also moves the
+    corner over the 16 places of its 4×4 block and averages; the rule is measured (tests per
+    covered pixel ÷ px of edge per px²), the slivers fall between legs 16 and 8 on average,
+    and what sitting on the grid is worth is printed and said. q_small's triangle is the
+    series' first, counted by the same helper."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    assert len(ns.shifts) == 16 and ns.shifts[0] == (0, 0)
+    assert ns.cost.shape == (len(ns.legs), 16)
+    asked = next(t for t in code if "q_small = Predict(" in t)
+    assert "tiny_counts, _ = walk_cost(2)" in asked
+    assert ns.tiny_tests == ns.tests[2] == round(ns.aligned[1] * ns.covers[2])
+    k8, k16 = ns.legs.index(8), ns.legs.index(16)
+    # the reader's count: the corner moved 2 px gives 4.47 at legs 8; the average is near it
+    assert 4 < ns.per_pixel[k8] < 5 and ns.aligned[k8] < 0.45 * ns.per_pixel[k8]
+    for cost in ns.sliver_cost.values():
+        assert ns.per_pixel[k16] < cost < ns.per_pixel[k8]
+    assert 0.35 < min(ns.aligned_share) and max(ns.aligned_share) < 0.6  # "about half"
+    rule = f"{min(ns.rule):.1f} to {max(ns.rule):.1f}"
+    assert 3 < min(ns.rule) and max(ns.rule) < 6
+    assert f"tests per covered pixel ÷ px of edge a px²: {rule}" in printed
+    assert f"{rule} tests per covered pixel for each px of edge per px² of area" in shown
+    share = f"{min(ns.aligned_share):.2f} to {max(ns.aligned_share):.2f}"
+    assert f"the walk makes {share} of the average's tests" in printed
+    assert f"sitting on the grid costs {share} of the average: about half" in shown
+    assert f"{ns.per_pixel[k8]:.2f} on average over the 16 places" in shown
+    assert "more than the triangle with 8-px legs" not in shown
+    assert "cost more than a compact triangle" not in md
+    summary = md.split("## Summary")[1]
+    assert "one sitting on the 4×4 block grid costs about half" in summary
