@@ -5138,3 +5138,17 @@ def test_10_r255_c1_cost_series_off_the_block_grid():
     assert "cost more than a compact triangle" not in md
     summary = md.split("## Summary")[1]
     assert "one sitting on the 4×4 block grid costs about half" in summary
+
+
+def test_10_r255_c2_the_summary_says_where_the_wrong_pixels_lie():
+    """Review r255 C2: the summary said the int32 wrong pixels lie "far from the edges" while
+    §4 counts 499 of the 1,150 sides of their regions on the triangle's edges. A value wraps
+    far from its own edge; the patches are often bounded by the others."""
+    ns = lesson("10_tiles_and_hierarchical_z")
+    md = _lesson_10_sources()[2]
+    summary = md.split("## Summary")[1]
+    assert "far from the edges" not in summary
+    assert "far from their own edge" in summary and "often bounded by its other edges" in summary
+    sides = ns.regions.sides
+    assert sides["edge"] > 0.3 * sum(sides.values())  # "often"
+    assert ns.regions.wrongly_out > 5 * ns.regions.wrongly_in  # "mostly inside"
