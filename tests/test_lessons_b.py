@@ -5152,3 +5152,26 @@ def test_10_r255_c2_the_summary_says_where_the_wrong_pixels_lie():
     sides = ns.regions.sides
     assert sides["edge"] > 0.3 * sum(sides.values())  # "often"
     assert ns.regions.wrongly_out > 5 * ns.regions.wrongly_in  # "mostly inside"
+
+
+def test_10_r255_fig_corner_values_and_the_walks_tile_moves():
+    """Review r255 FIG: §1's block writes its four corners' values only, large; the walk-path
+    figure prints §5's tile moves (into another 8×8 tile) beside the jumps for every order,
+    so that Morton's halving of scanline's tile moves shows next to its doubled jumps."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    corner_fig = next(t for t in code if "plot_block_values(" in t)
+    assert 'numbers="corners"' in corner_fig
+    moves, jumps = ns.path_tile_moves, ns.walk_jumps
+    assert set(moves) == set(jumps) == set(ns.TRAVERSALS)
+    for order, dashed in ns.path_jumps.items():
+        assert jumps[order] == dashed
+    assert (moves["scanline"], moves["morton"]) == (87, 43) == (jumps["morton"], jumps["scanline"])
+    assert moves["tiled"] == moves["morton"] < moves["serpentine"] < moves["scanline"]
+    for order in ns.TRAVERSALS:
+        assert f"{order:12s}{jumps[order]:6d}{moves[order]:12d}" in printed
+    assert "about twice as often as scanline, yet moves between tiles about half as often" in md
+    assert (
+        1.8 < jumps["morton"] / jumps["scanline"] < 2.2
+        and 0.4 < moves["morton"] / moves["scanline"] < 0.6
+    )

@@ -648,3 +648,25 @@ def test_plot_block_values_marks_the_corners_the_step_signs_pick(ax):
     assert "largest E12: reject test" in labels and "smallest E12: accept test" in labels
     assert f"one step right: {right:+.1f}" in labels and f"one step down: {down:+.1f}" in labels
     assert len(art.arrows) == 2
+
+
+def test_plot_block_values_can_write_only_the_corners_large(ax):
+    """Review r255 FIG (lesson 10 §1): 64 four-digit values were about 7 pt on a projector.
+    ``numbers="corners"`` writes the four corners only, larger: the two extremes in their
+    labels, the other two in their cells; anything else is refused."""
+    from teachraster.plotting.common import fs
+
+    v1, v2 = np.array(XY[0]), np.array(XY[1])
+    row0, col0, s = 16, 8, 8
+    jj, ii = np.meshgrid(np.arange(col0, col0 + s) + 0.5, np.arange(row0, row0 + s) + 0.5)
+    values = (v2[0] - v1[0]) * (ii - v1[1]) - (v2[1] - v1[1]) * (jj - v1[0])
+    art = tp.plot_block_values(ax, values, row0, col0, numbers="corners")
+    corners = {f"{values[i, j]:.0f}" for i in (0, s - 1) for j in (0, s - 1)}
+    extremes = {f"{values.max():.0f}", f"{values.min():.0f}"}
+    assert {t.get_text() for t in art.texts} == corners - extremes and len(art.texts) == 2
+    assert all(t.get_fontsize() >= fs(0.7) for t in art.texts)
+    labels = " ".join(t.get_text() for t in art.labels)
+    assert f"largest E12 = {values.max():.0f}: reject test" in labels
+    assert f"smallest E12 = {values.min():.0f}: accept test" in labels
+    with pytest.raises(ValueError, match="numbers must be"):
+        tp.plot_block_values(ax, values, row0, col0, numbers="some")
