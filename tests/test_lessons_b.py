@@ -5175,3 +5175,13 @@ def test_10_r255_fig_corner_values_and_the_walks_tile_moves():
         1.8 < jumps["morton"] / jumps["scanline"] < 2.2
         and 0.4 < moves["morton"] / moves["scanline"] < 0.6
     )
+
+
+def test_10_r255_s4_the_explorer_text_says_the_reset_and_the_two_orders():
+    """Review r255 S4: §6 says that the traversal and sizes menus put the block slider back to
+    0, and where tiled and Morton coincide and part."""
+    md = _lesson_10_sources()[2]
+    play = md.split("## 6.")[1].split("## 7.")[0]
+    assert "Changing the **traversal** or the **block sizes** also puts **block** back to 0" in play
+    assert "on a 4×4 grid of siblings the two visit the same path" in play
+    assert "the 8×8 top level of the preset **8 / 2**" in play

@@ -670,3 +670,24 @@ def test_plot_block_values_can_write_only_the_corners_large(ax):
     assert f"smallest E12 = {values.min():.0f}: accept test" in labels
     with pytest.raises(ValueError, match="numbers must be"):
         tp.plot_block_values(ax, values, row0, col0, numbers="some")
+
+
+def test_traversal_menu_tells_tiled_from_morton_and_resets_the_block_slider(explorer):
+    """Review r255 S4 (lesson 10 §6): the menu offered "tiled" and "morton" as two names for
+    one path (siblings are tiled 2×2: on a 4×4 grid of siblings both visit alike); its labels
+    now say what each is and where they coincide. They part on a larger grid (8 / 2's 8×8
+    top level). A traversal change puts the block slider back to 0, and the docstring says so."""
+    from teachraster.widgets.tiles import TRAVERSAL_LABELS, TileExplorer
+
+    labels = dict((v, k) for k, v in explorer.traversal.options)
+    assert labels == TRAVERSAL_LABELS and len(set(labels.values())) == 4
+    assert "= tiled on 4×4 siblings" in labels["morton"] and "2×2 tiles" in labels["tiled"]
+    blocks = explorer.blocks  # 16 / 4 / 1: every sibling grid is 4×4
+    assert np.array_equal(blocks.visit_order("tiled"), blocks.visit_order("morton"))
+    wide = tr.rasterize(tr.Triangle(XY), 64, 64, method="tiled", block_sizes=(8, 2), trace=True)
+    b8 = wide.trace.blocks
+    assert not np.array_equal(b8.visit_order("tiled"), b8.visit_order("morton"))
+    explorer.block.value = 30
+    explorer.traversal.value = "morton"
+    assert explorer.block.value == 0 and explorer.traversal.label == TRAVERSAL_LABELS["morton"]
+    assert "put the block\n    slider back to 0" in TileExplorer.__doc__
