@@ -3872,8 +3872,10 @@ def test_10_r185_items():
     # 10-2, 10-5
     tile_map = next(t for t in code if "farthest stored depth per 8×8 tile" in t)
     assert "the clear value 1, which the replay counts as +∞" in tile_map
+    # r255 S3: q_hiz's reasons moved from its explanation (HTML) to the held Markdown note
     asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
-    assert "<code>exercises/08_tiles.ipynb</code>" in asked and "`exercises/" not in asked
+    why = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)
+    assert "`exercises/" not in asked and "exercise 8.2 in `exercises/08_tiles.ipynb`" in why
     # 10-8: the pyramid's two levels over the 12 x 8 tiles, and the boxes' verdicts
     assert [g.shape for g in ns.pyramid] == [(8, 12), (4, 6), (2, 3)]
     a, b = ns.pyramid_tests["A"], ns.pyramid_tests["B"]
@@ -3944,7 +3946,8 @@ def test_10_r189_items():
     assert all(c["metadata"].get("tags") == ["hide-input"] for c in held)
     assert all(c["metadata"]["jupyter"]["source_hidden"] for c in held)
     asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
-    assert "the next cell counts" not in asked and "§7's layer count below" in asked
+    why = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)
+    assert "the next cell counts" not in asked + why and "§7's layer count below" in why
     assert any("def layers(" in t for t in code[code.index(asked) + 1 :])
     # 10-4, F2
     assert "hence their decimals" not in md and "rounded to whole numbers" not in md
@@ -5185,3 +5188,27 @@ def test_10_r255_s4_the_explorer_text_says_the_reset_and_the_two_orders():
     assert "Changing the **traversal** or the **block sizes** also puts **block** back to 0" in play
     assert "on a 4×4 grid of siblings the two visit the same path" in play
     assert "the 8×8 top level of the preset **8 / 2**" in play
+
+
+def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
+    """Review r255 (r247 S3): the folded sources of q_small, q_wrap and q_hiz spelled their
+    answers out ("1 + 16 + 16 + 16", "Mostly inside, in large patches", "those whose 64 pixel
+    centres the blue triangle covers"). The explanations are now built from computed counts;
+    the reasons sit in the cells held under each question."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    small = next(t for t in code if "q_small = Predict(" in t)
+    wrap = next(t for t in code if "q_wrap = Predict(" in t)
+    hiz = next(t for t in code if "q_hiz = PredictPixels(" in t)
+    assert "1 + 16 + 16 + 16" not in small and "# 48" not in small
+    assert "Mostly inside" not in wrap and "rarer" not in wrap
+    assert 'explain=f"{q_wrap_answer[0].upper()}{q_wrap_answer[1:]}: ' in wrap
+    assert "64 pixel centres the blue triangle covers" not in hiz and "# the answer" not in hiz
+    assert "a tile the triangle covers has all its pixel centres" not in hiz
+    held = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)
+    assert 'whose 64 "\n        "pixel centres the blue triangle covers' in held
+    assert (
+        "**Why those tiles.** Hi-Z rejects the big triangle's block in the tiles whose 64 pixel"
+        in shown
+    )
+    assert 'explain=f"{int(rejected_tiles.sum())} tiles, marked on the grid' in hiz
