@@ -3393,7 +3393,9 @@ def test_10_r45_items():
     # forgotten) is marked wrong, and the explanation names it
     asked = next(t for t in text if "q_small = Predict(" in t)
     assert ns.tiny_tests == 49 and "answer=int(tiny_tests),\n    tolerance=0," in asked
-    assert "(48 forgets the 64-block's own test" in asked
+    # r255 S3: the sum is built from the walk's counts, not typed in the folded source
+    assert ns.level_tests == [1, 16, 16, 16] and "1 + 16 + 16 + 16" not in asked
+    assert "48" not in asked
 
 
 def test_10_r109_items():
@@ -3980,8 +3982,10 @@ def test_10_r185_items():
     # 10-2, 10-5
     tile_map = next(t for t in code if "farthest stored depth per 8×8 tile" in t)
     assert "the clear value 1, which the replay counts as +∞" in tile_map
+    # r255 S3: q_hiz's reasons moved from its explanation (HTML) to the held Markdown note
     asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
-    assert "<code>exercises/08_tiles.ipynb</code>" in asked and "`exercises/" not in asked
+    why = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)
+    assert "`exercises/" not in asked and "exercise 8.2 in `exercises/08_tiles.ipynb`" in why
     # 10-8: the pyramid's two levels over the 12 x 8 tiles, and the boxes' verdicts
     assert [g.shape for g in ns.pyramid] == [(8, 12), (4, 6), (2, 3)]
     a, b = ns.pyramid_tests["A"], ns.pyramid_tests["B"]
@@ -4052,7 +4056,8 @@ def test_10_r189_items():
     assert all(c["metadata"].get("tags") == ["hide-input"] for c in held)
     assert all(c["metadata"]["jupyter"]["source_hidden"] for c in held)
     asked = next(t for t in code if "q_hiz = PredictPixels(" in t)
-    assert "the next cell counts" not in asked and "§7's layer count below" in asked
+    why = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)
+    assert "the next cell counts" not in asked + why and "§7's layer count below" in why
     assert any("def layers(" in t for t in code[code.index(asked) + 1 :])
     # 10-4, F2
     assert "hence their decimals" not in md and "rounded to whole numbers" not in md
@@ -4189,9 +4194,10 @@ def test_10_r235_items():
     assert round(ns.sliver_saving["on the diagonal"]) == 41
     assert "spend 113 tests per covered pixel where the walk spends 2.74: 41 times fewer" in md
     assert "large triangles are cheap per pixel, small ones expensive" not in md
+    # r255 C1: averaged over where the corner sits, the slivers fall between legs 16 and 8
     by_leg = dict(zip(ns.legs, ns.per_pixel))
     for cost in ns.sliver_cost.values():
-        assert all(cost > v for leg, v in by_leg.items() if leg >= 8) and cost < by_leg[4]
+        assert by_leg[16] < cost < by_leg[8]
     thin = ns.slivers["on the diagonal"].xy
     assert np.hypot(*(thin[1:].mean(axis=0) - thin[0])) > 256 * 2**0.5
     # S1: q_small and q_bits take whole numbers only
@@ -5201,3 +5207,118 @@ def get_uv_sphere_mesh():
     from teachraster.pipeline.scenes import get_scene
 
     return get_scene("uv_sphere").mesh
+
+
+def _lesson_10_run():
+    """Lesson 10 executed: (namespace, printed streams, displayed Markdown as one line)."""
+    from notebook_runs import executed, streams
+
+    run = executed("10_tiles_and_hierarchical_z").notebook()
+    shown = " ".join(" ".join(o["data"]["text/markdown"].split()) for c in run.cells
+                     for o in c.get("outputs", []) if "text/markdown" in o.get("data", {}))  # fmt: skip
+    return lesson("10_tiles_and_hierarchical_z"), streams(run), shown
+
+
+def test_10_r255_c1_cost_series_off_the_block_grid():
+    """Review r255 C1: §3's legs series sat on the 4-px block grid (corner (100.3, 100.2)),
+    a best case that contradicted "cost follows edge for area". The series now also moves the
+    corner over the 16 places of its 4×4 block and averages; the rule is measured (tests per
+    covered pixel ÷ px of edge per px²), the slivers fall between legs 16 and 8 on average,
+    and what sitting on the grid is worth is printed and said. q_small's triangle is the
+    series' first, counted by the same helper."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    assert len(ns.shifts) == 16 and ns.shifts[0] == (0, 0)
+    assert ns.cost.shape == (len(ns.legs), 16)
+    asked = next(t for t in code if "q_small = Predict(" in t)
+    assert "tiny_counts, _ = walk_cost(2)" in asked
+    assert ns.tiny_tests == ns.tests[2] == round(ns.aligned[1] * ns.covers[2])
+    k8, k16 = ns.legs.index(8), ns.legs.index(16)
+    # the reader's count: the corner moved 2 px gives 4.47 at legs 8; the average is near it
+    assert 4 < ns.per_pixel[k8] < 5 and ns.aligned[k8] < 0.45 * ns.per_pixel[k8]
+    for cost in ns.sliver_cost.values():
+        assert ns.per_pixel[k16] < cost < ns.per_pixel[k8]
+    assert 0.35 < min(ns.aligned_share) and max(ns.aligned_share) < 0.6  # "about half"
+    rule = f"{min(ns.rule):.1f} to {max(ns.rule):.1f}"
+    assert 3 < min(ns.rule) and max(ns.rule) < 6
+    assert f"tests per covered pixel ÷ px of edge a px²: {rule}" in printed
+    assert f"{rule} tests per covered pixel for each px of edge per px² of area" in shown
+    share = f"{min(ns.aligned_share):.2f} to {max(ns.aligned_share):.2f}"
+    assert f"the walk makes {share} of the average's tests" in printed
+    assert f"sitting on the grid costs {share} of the average: about half" in shown
+    assert f"{ns.per_pixel[k8]:.2f} on average over the 16 places" in shown
+    assert "more than the triangle with 8-px legs" not in shown
+    assert "cost more than a compact triangle" not in md
+    summary = md.split("## Summary")[1]
+    assert "one sitting on the 4×4 block grid costs about half" in summary
+
+
+def test_10_r255_c2_the_summary_says_where_the_wrong_pixels_lie():
+    """Review r255 C2: the summary said the int32 wrong pixels lie "far from the edges" while
+    §4 counts 499 of the 1,150 sides of their regions on the triangle's edges. A value wraps
+    far from its own edge; the patches are often bounded by the others."""
+    ns = lesson("10_tiles_and_hierarchical_z")
+    md = _lesson_10_sources()[2]
+    summary = md.split("## Summary")[1]
+    assert "far from the edges" not in summary
+    assert "far from their own edge" in summary and "often bounded by its other edges" in summary
+    sides = ns.regions.sides
+    assert sides["edge"] > 0.3 * sum(sides.values())  # "often"
+    assert ns.regions.wrongly_out > 5 * ns.regions.wrongly_in  # "mostly inside"
+
+
+def test_10_r255_fig_corner_values_and_the_walks_tile_moves():
+    """Review r255 FIG: §1's block writes its four corners' values only, large; the walk-path
+    figure prints §5's tile moves (into another 8×8 tile) beside the jumps for every order,
+    so that Morton's halving of scanline's tile moves shows next to its doubled jumps."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    corner_fig = next(t for t in code if "plot_block_values(" in t)
+    assert 'numbers="corners"' in corner_fig
+    moves, jumps = ns.path_tile_moves, ns.walk_jumps
+    assert set(moves) == set(jumps) == set(ns.TRAVERSALS)
+    for order, dashed in ns.path_jumps.items():
+        assert jumps[order] == dashed
+    assert (moves["scanline"], moves["morton"]) == (87, 43) == (jumps["morton"], jumps["scanline"])
+    assert moves["tiled"] == moves["morton"] < moves["serpentine"] < moves["scanline"]
+    for order in ns.TRAVERSALS:
+        assert f"{order:12s}{jumps[order]:6d}{moves[order]:12d}" in printed
+    assert "about twice as often as scanline, yet moves between tiles about half as often" in md
+    assert (
+        1.8 < jumps["morton"] / jumps["scanline"] < 2.2
+        and 0.4 < moves["morton"] / moves["scanline"] < 0.6
+    )
+
+
+def test_10_r255_s4_the_explorer_text_says_the_reset_and_the_two_orders():
+    """Review r255 S4: §6 says that the traversal and sizes menus put the block slider back to
+    0, and where tiled and Morton coincide and part."""
+    md = _lesson_10_sources()[2]
+    play = md.split("## 6.")[1].split("## 7.")[0]
+    assert "Changing the **traversal** or the **block sizes** also puts **block** back to 0" in play
+    assert "on a 4×4 grid of siblings the two visit the same path" in play
+    assert "the 8×8 top level of the preset **8 / 2**" in play
+
+
+def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
+    """Review r255 (r247 S3): the folded sources of q_small, q_wrap and q_hiz spelled their
+    answers out ("1 + 16 + 16 + 16", "Mostly inside, in large patches", "those whose 64 pixel
+    centres the blue triangle covers"). The explanations are now built from computed counts;
+    the reasons sit in the cells held under each question."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    small = next(t for t in code if "q_small = Predict(" in t)
+    wrap = next(t for t in code if "q_wrap = Predict(" in t)
+    hiz = next(t for t in code if "q_hiz = PredictPixels(" in t)
+    assert "1 + 16 + 16 + 16" not in small and "# 48" not in small
+    assert "Mostly inside" not in wrap and "rarer" not in wrap
+    assert 'explain=f"{q_wrap_answer[0].upper()}{q_wrap_answer[1:]}: ' in wrap
+    assert "64 pixel centres the blue triangle covers" not in hiz and "# the answer" not in hiz
+    assert "a tile the triangle covers has all its pixel centres" not in hiz
+    held = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)
+    assert 'whose 64 "\n        "pixel centres the blue triangle covers' in held
+    assert (
+        "**Why those tiles.** Hi-Z rejects the big triangle's block in the tiles whose 64 pixel"
+        in shown
+    )
+    assert 'explain=f"{int(rejected_tiles.sum())} tiles, marked on the grid' in hiz

@@ -648,3 +648,46 @@ def test_plot_block_values_marks_the_corners_the_step_signs_pick(ax):
     assert "largest E12: reject test" in labels and "smallest E12: accept test" in labels
     assert f"one step right: {right:+.1f}" in labels and f"one step down: {down:+.1f}" in labels
     assert len(art.arrows) == 2
+
+
+def test_plot_block_values_can_write_only_the_corners_large(ax):
+    """Review r255 FIG (lesson 10 §1): 64 four-digit values were about 7 pt on a projector.
+    ``numbers="corners"`` writes the four corners only, larger: the two extremes in their
+    labels, the other two in their cells; anything else is refused."""
+    from teachraster.plotting.common import fs
+
+    v1, v2 = np.array(XY[0]), np.array(XY[1])
+    row0, col0, s = 16, 8, 8
+    jj, ii = np.meshgrid(np.arange(col0, col0 + s) + 0.5, np.arange(row0, row0 + s) + 0.5)
+    values = (v2[0] - v1[0]) * (ii - v1[1]) - (v2[1] - v1[1]) * (jj - v1[0])
+    art = tp.plot_block_values(ax, values, row0, col0, numbers="corners")
+    corners = {f"{values[i, j]:.0f}" for i in (0, s - 1) for j in (0, s - 1)}
+    extremes = {f"{values.max():.0f}", f"{values.min():.0f}"}
+    assert {t.get_text() for t in art.texts} == corners - extremes and len(art.texts) == 2
+    assert all(t.get_fontsize() >= fs(0.7) for t in art.texts)
+    labels = " ".join(t.get_text() for t in art.labels)
+    assert f"largest E12 = {values.max():.0f}: reject test" in labels
+    assert f"smallest E12 = {values.min():.0f}: accept test" in labels
+    with pytest.raises(ValueError, match="numbers must be"):
+        tp.plot_block_values(ax, values, row0, col0, numbers="some")
+
+
+def test_traversal_menu_tells_tiled_from_morton_and_resets_the_block_slider(explorer):
+    """Review r255 S4 (lesson 10 §6): the menu offered "tiled" and "morton" as two names for
+    one path (siblings are tiled 2×2: on a 4×4 grid of siblings both visit alike); its labels
+    now say what each is and where they coincide. They part on a larger grid (8 / 2's 8×8
+    top level). A traversal change puts the block slider back to 0, and the docstring says so."""
+    from teachraster.widgets.tiles import TRAVERSAL_LABELS, TileExplorer
+
+    labels = dict((v, k) for k, v in explorer.traversal.options)
+    assert labels == TRAVERSAL_LABELS and len(set(labels.values())) == 4
+    assert "= tiled on 4×4 siblings" in labels["morton"] and "2×2 tiles" in labels["tiled"]
+    blocks = explorer.blocks  # 16 / 4 / 1: every sibling grid is 4×4
+    assert np.array_equal(blocks.visit_order("tiled"), blocks.visit_order("morton"))
+    wide = tr.rasterize(tr.Triangle(XY), 64, 64, method="tiled", block_sizes=(8, 2), trace=True)
+    b8 = wide.trace.blocks
+    assert not np.array_equal(b8.visit_order("tiled"), b8.visit_order("morton"))
+    explorer.block.value = 30
+    explorer.traversal.value = "morton"
+    assert explorer.block.value == 0 and explorer.traversal.label == TRAVERSAL_LABELS["morton"]
+    assert "put the block\n    slider back to 0" in TileExplorer.__doc__

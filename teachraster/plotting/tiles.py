@@ -837,7 +837,7 @@ CORNER_MARKS = (
 
 
 def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
-                      steps=None) -> BlockValueArtists:  # fmt: skip
+                      steps=None, numbers: str = "all") -> BlockValueArtists:  # fmt: skip
     """One edge's values at the pixel centres of a block, with its extreme corners marked:
     the corner trick of lesson 10 §1 as a picture (after Abrash's *Rasterization on
     Larrabee*, which draws a block's trivial-reject and trivial-accept corners).
@@ -847,25 +847,38 @@ def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
     is rejected), the smallest in the accepted blocks' colour (if even it passes, every centre
     does). ``steps = (right, down)``, the value added by one step right and one step down,
     draws the two steps as arrows along the block's top and left sides, whose signs pick the
-    two corners.
+    two corners. ``numbers="corners"`` writes only the four corners' values, large enough
+    for a projector (64 values of four digits fit a cell only in small print; the colours
+    still show the rest): the two extremes' in their labels, the other two in their cells.
     """
+    if numbers not in ("all", "corners"):
+        raise ValueError(f"numbers must be 'all' or 'corners', got {numbers!r}")
     values = np.asarray(values, dtype=float)
     h, w = values.shape
+    corners_only = numbers == "corners"
     im = ax.pcolormesh(np.arange(col0, col0 + w + 1), np.arange(row0, row0 + h + 1), values,
                        cmap=VALUE_CMAP, shading="flat", edgecolors="white", lw=0.5)  # fmt: skip
     result = BlockValueArtists(im)
     norm = im.norm
+    extremes = {values.argmax(), values.argmin()}  # flat indices: their labels say them
     for (i, j), v in np.ndenumerate(values):
+        if corners_only and (i not in (0, h - 1) or j not in (0, w - 1)
+                             or i * w + j in extremes):  # fmt: skip
+            continue
         shade = np.asarray(im.cmap(norm(v))[:3]) @ [0.299, 0.587, 0.114]
-        result.texts.append(ax.text(col0 + j + 0.5, row0 + i + 0.5, f"{v:.0f}", ha="center",
-                                    va="center", fontsize=fs(0.45),
+        # a corner's value is wider than its cell: it reaches inwards, over unlabelled cells
+        ha = "center" if not corners_only else "left" if j == 0 else "right"
+        x = col0 + j + (0.5 if not corners_only else 0.1 if j == 0 else 0.9)
+        result.texts.append(ax.text(x, row0 + i + 0.5, f"{v:.0f}", ha=ha, va="center",
+                                    fontsize=fs(0.7 if corners_only else 0.45),
+                                    fontweight="bold" if corners_only else "normal",
                                     color="black" if shade > 0.5 else "white"))  # fmt: skip
     # room above and left for the step arrows, below for the largest corner's label
     ax.set(xlim=(col0 - 1.6, col0 + w + 0.1), ylim=(row0 + h + 1.1, row0 - 1.7))
     ax.set_aspect("equal")
     ax.set_xticks(col0 + np.arange(w) + 0.5, labels=[str(col0 + j) for j in range(w)])
     ax.set_yticks(row0 + np.arange(h) + 0.5, labels=[str(row0 + i) for i in range(h)])
-    ax.tick_params(labelsize=fs(0.55), length=0)
+    ax.tick_params(labelsize=fs(0.7 if corners_only else 0.55), length=0)
     ax.yaxis.tick_right()  # the left side holds the step down
     ax.yaxis.set_label_position("right")
     ax.set(xlabel="column j", ylabel="row i")
@@ -880,7 +893,8 @@ def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
         result.corners.append(box)
         below = i == h - 1  # a label under a bottom corner, above a top one
         y = row0 + h + 0.25 if below else row0 - 0.25
-        result.labels.append(ax.text(col0 + j + 0.5, y, f"{which} {name}: {test}",
+        said = f" = {values[i, j]:.0f}" if corners_only else ""  # its value, in its label
+        result.labels.append(ax.text(col0 + j + 0.5, y, f"{which} {name}{said}: {test}",
                                      ha="left" if j < w / 2 else "right", color=color,
                                      va="top" if below else "bottom", fontsize=fs(0.6),
                                      fontweight="bold"))  # fmt: skip

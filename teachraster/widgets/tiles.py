@@ -49,6 +49,15 @@ STEPPED_CURRENT = "the block visited now (block slider)"
 #: value then is not what the picture shows (it read "level 0" over a 1×1 block; review
 #: r52, lesson 10), only where moving it goes.
 LEVEL_LABELS = {True: "level", False: "show level"}
+#: The traversal menu's labels: siblings are tiled in 2×2 tiles, so "tiled" and Morton
+#: visit a 4×4 grid of siblings (every block ratio of 4) in the same order; the menu says so
+#: rather than offer two names for one path (review r255 S4, lesson 10).
+TRAVERSAL_LABELS = {
+    "scanline": "scanline",
+    "serpentine": "serpentine",
+    "tiled": "tiled: 2×2 tiles, row by row",
+    "morton": "morton: Z-order (= tiled on 4×4 siblings)",
+}
 #: Blocks this small (px) or smaller are shown zoomed on their top-level block while the
 #: block slider visits them: a 1×1 block of a 64 × 64 grid was a ~6 px square found only by
 #: its outline (reviews r45 #7, r52 #10).
@@ -69,7 +78,8 @@ class TileExplorer(Holdable):
     and captioned; the page stays white where no block has been classified
     yet, a visited partial block's children not reached yet are a paler orange, and a child
     covers its partial parent (opaque colours: each one in the key).
-    The **block sizes** and **traversal** menus fill the triangle again. The counters
+    The **block sizes** and **traversal** menus fill the triangle again and put the block
+    slider back to 0 (block ``k`` is another block in another order). The counters
     (rejected / accepted / partial per size, llvmpipe's empty / full / partial, and the pixel tests run) are shown below.
 
     Parameters
@@ -108,7 +118,8 @@ class TileExplorer(Holdable):
         if block_sizes not in [v for _, v in options]:
             options.append((" / ".join(map(str, block_sizes)), block_sizes))
         self.sizes = widgets.Dropdown(options=options, value=block_sizes)
-        self.traversal = widgets.Dropdown(options=list(TRAVERSALS), value=traversal)
+        self.traversal = widgets.Dropdown(options=[(TRAVERSAL_LABELS[k], k) for k in TRAVERSALS],
+                                          value=traversal)  # fmt: skip
         # in the page, its few positions drawn ahead (ahead.FramesAhead): a drag shows the
         # page's own pictures (issue 31: 1.3-5.5 fps through the kernel)
         self.level = LiveSlider(value=0, min=0, max=len(block_sizes) - 1, step=1,
