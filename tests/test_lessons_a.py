@@ -230,7 +230,7 @@ def test_00_facing_and_the_two_methods():
     assert np.nanmax(ns.signed[ns.nearer]) > 0.1 and np.nanmin(ns.signed[~ns.nearer]) < -0.01
     assert np.nanmin(ns.signed[ns.nearer]) > -1e-12 and np.nanmax(ns.signed[~ns.nearer]) < 1e-12
     # the split caption names the split height by both names (review r2 00-3)
-    assert "split at y = v_mid = " in ns.span.trace.caption(4)
+    assert "split at v = v_mid = " in ns.span.trace.caption(4)  # r251 01-S1: heights as v
     # review r22 00-2: row 1's centre y = 1.5 is on the box's top edge and is tested (closed
     # box); the explanation (a widget: not among the globals) says so when it is
     assert ns.box.ymin == ns.box.row0 + 0.5 == 1.5
@@ -1005,9 +1005,10 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert nb_cells[rule]["metadata"]["jupyter"]["source_hidden"] is True
     assert "so a span of one point" in ns.RULE_TEXT
     assert "the edge heights are 16, 8 and 8, powers of two" in " ".join(ns.RULE_TEXT.split())
-    # review r98 01-2: the Try-it says to re-fill before span_fill(trace.snapped, ...)
-    summary = " ".join(_cells("01_span_tables", "markdown")[-1].split())
-    assert "re-run the cell of section 1 (it fills the new triangle: `fill` and `trace`)" in summary
+    # review r98 01-2: span_fill(trace.snapped, ...) of a re-filled triangle (r251 S6: the
+    # worked example's cell fills it itself)
+    example = next("".join(c["source"]) for c in nb_cells if c.get("id") == "c17-try-run")
+    assert "moved_fill = tr.rasterize(" in example and "span_fill(snapped, W, H)" in example
     # review r78 01-1: q_flat asks about the near-flat triangle (v2 1/256 px lower), which the
     # rules stated before do not answer by rote: row 2 loses its centres, row 6 gains 9.5
     assert ns.asked_rows == [2, 6, 10] and ns.ends2 == [2.5, 2.5] and ns.ends6[0] == 4.5
@@ -1063,7 +1064,8 @@ def test_01_predictions_and_the_stepping_failure_rates():
     assert ns.flat["flat-topped"].coverage[2].sum() == 10  # the predicted answer: 10 of 11
     rates = ns.rates  # "a large share", "almost none", "none" (review: 38 % against 0.5 %)
     assert rates["stepped, float (x += du/dv)"] > 0.2
-    assert rates["computed crossing (section 4)"] < 0.02
+    assert rates["computed, divide first (section 4)"] < 0.02
+    assert rates["computed, multiply first (4b)"] == 0  # r251 F1
     assert rates["stepped, integer DDA (q + r/d)"] == 0
     # review r142 01-C1: a 16.16 fixed-point step misfills as many as the float one (60 of
     # 200, the reader's recomputation): "as many" in the text and the printout
@@ -1078,10 +1080,10 @@ def test_01_predictions_and_the_stepping_failure_rates():
     )
     # r196 01-1: the summary said a float crossing is exact "only by luck (edge heights that
     # are powers of two)", against the 1 triangle in 200 the computed crossing misfills
-    assert ns.misfilled["computed crossing (section 4)"] == 1
+    assert ns.misfilled["computed, divide first (section 4)"] == 1
     assert "exact only by luck" not in told
     # r239 01-S1: "misses a tie" was not what section 5 counted (wrong pixels filled)
-    assert "It rarely fills a wrong pixel (section 5: 1 triangle in 200)" in told
+    assert "it rarely fills a wrong pixel (section 5: 1 triangle in 200)" in told
     # r196 01-2: "wherever du/dv has no exact binary fraction the stepped crossing lands a hair
     # to one side" is measured now: on such edges, most ties but not all (the reader's 70.8 %
     # exact counted vertical and binary-fraction steps too, which step exactly)
@@ -1089,7 +1091,7 @@ def test_01_predictions_and_the_stepping_failure_rates():
     fail_cell = next("".join(c["source"]) for c in nb["cells"]
                      if "q_fail = PredictChoice(" in "".join(c["source"]))  # fmt: skip
     assert "wherever" not in fail_cell
-    assert "(at {tie_missed} of the {n_ties} ties on such edges here)" in fail_cell
+    assert "lands a hair off {tie_missed} of the {n_ties} ties on such edges" in fail_cell
     assert "nearly always lands a hair to one side of it (not always" in told
     assert "The float stepping is wrong on a large share" not in told
     assert "misfills about as many" in told
@@ -1163,7 +1165,8 @@ def test_01_one_edge_stepped_three_ways():
     assert "Row 4 is the tie: the exact crossing is the centre 7.5" in told
     assert "remainder 0, on a line with a carry" in told
     assert "$+8.9 \\times 10^{-16}$" in told and "$+1.5 \\times 10^{-5}$" in told
-    assert "q_fail = PredictChoice(" in text[walk + 2]  # before the count it leads to
+    # before the count it leads to, after the census of the ties it asks about (r251 P1)
+    assert "def float_tie_misses(" in text[walk + 2] and "q_fail = PredictChoice(" in text[walk + 3]
 
 
 def test_01_r196_figure_text_and_plumbing():
@@ -1173,12 +1176,19 @@ def test_01_r196_figure_text_and_plumbing():
     cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
     text = ["".join(c["source"]) for c in cells]
     figure = next(t for t in text if t.startswith("# After Ek's §1.1: the two similar"))
-    assert "Ek's Figure 1" not in figure and "(after Ek §1.1)" in figure
+    # r251 S2: the drawing is teachraster.plotting.span_figures.plot_similar_triangles
+    import inspect
+
+    from teachraster.plotting import span_figures
+
+    drawing = inspect.getsource(span_figures.plot_similar_triangles)
+    assert "plot_similar_triangles(ax, fill, W, H)" in figure
+    assert "Ek's Figure 1" not in figure + drawing and "(after Ek §1.1)" in drawing
     # r203: the shared angle a filled wedge at the vertex (a thin arc read as a bar)
     # r229 01-S4: the ratio printed as Δu/Δv, which divides by a height, never by Δu = 0
-    assert "Δu_{name}/Δv_{name} = {du / dv:g}" in figure and "Wedge((u_top, v_top), 2.5" in figure
-    assert "dv / du" not in figure
-    assert 'hatch="//"' in figure  # the small triangle an outline over the large one
+    assert "Δu_{name}/Δv_{name} = {du / dv:g}" in figure and "Wedge((u_top, v_top), 2.5" in drawing
+    assert "dv / du" not in figure + drawing
+    assert 'hatch="//"' in drawing  # the small triangle an outline over the large one
     md = " ".join(" ".join(t for t, c in zip(text, cells) if c["cell_type"] == "markdown").split())
     assert md.count("Ek's Figure 1") == 1 and "flat triangles (Ek's Figure 1)" in md
     assert "The player works in the default display" not in md
@@ -1293,10 +1303,12 @@ def test_01_r229_closed_bottom_try_it_runs_and_fills_the_bottom_row_twice():
     loop_cell = next("".join(c["source"]) for c in _notebook_cells("01_span_tables")
                      if "def span_fill(" in "".join(c["source"]))  # fmt: skip
     loop = loop_cell[loop_cell.index("def crossing(") : loop_cell.index("cover, ends = span_fill(")]
-    assert loop.count("v < BOT[1]") == 1
+    # r251 S3: the rows by the columns' rule, ceil(v - 0.5); closed at the bottom by the Try-it
+    bottom = "np.ceil(BOT[1] - 0.5)"
+    assert loop.count(bottom) == 1 and "for i in range(height)" not in loop
     assert "v >= v_mid = v_bot ends the loop" not in loop  # the comment that was wrong
     closed = {"np": np}
-    exec(loop.replace("v < BOT[1]", "v <= BOT[1]"), closed)
+    exec(loop.replace(bottom, "np.floor(BOT[1] - 0.5) + 1"), closed)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # no 0/0 (RuntimeWarning) on any case, no NaN
         for name, pts in ns.cases.items():
@@ -1316,6 +1328,7 @@ def test_01_r229_closed_bottom_try_it_runs_and_fills_the_bottom_row_twice():
                            if t.startswith("**Try it:**")).split())  # fmt: skip
     assert "never the horizontal edge, whose crossing would be 0/0" in try_it
     assert "drawn twice" in try_it and 'Its line says "our loop agrees: False"' in try_it
+    assert "change `np.ceil(BOT[1] - 0.5)` to `np.floor(BOT[1] - 0.5) + 1`" in try_it
 
 
 @pytest.mark.notebook
@@ -1334,12 +1347,15 @@ def test_01_r229_off_centre_try_it_matches_for_the_true_reason():
     assert all(t[2] for t in ns.long_ties) and ns.short_ties == [1]  # row 1: the top vertex
     cells = _notebook_cells("01_span_tables")
     texts = ["".join(c["source"]) for c in cells]
-    tried = next(i for i, t in enumerate(texts) if t.startswith("**Try it:**"))
-    assert texts[tried + 1].startswith("# The first Try-it, run:")
-    try_it = " ".join(texts[tried].split())
-    assert "off the centres a crossing almost never lands exactly on a centre" not in try_it
-    assert "It does, but not because the ties are gone" in try_it
-    assert "the long edge between them, 16 px high, a power of two" in try_it
+    # r251 S6: a worked example, no longer a Try-it done for the student
+    shown = next(i for i, t in enumerate(texts) if t.startswith("**An example, worked:**"))
+    assert texts[shown + 1].startswith("# The example: v2 moved off its centre")
+    example = " ".join(texts[shown].split())
+    assert "off the centres a crossing almost never lands exactly on a centre" not in example
+    assert "but not because the ties are gone" in example
+    assert "the long edge between them, 16 px high, a power of two" in example
+    try_it = " ".join(next(t for t in texts if t.startswith("**Try it:**")).split())
+    assert "The cell below runs this" not in try_it
     assert "the middle vertex is then a left end, and its pixel is filled" in try_it
 
 
@@ -1419,8 +1435,8 @@ def test_01_r239_text_matches_what_the_cells_print():
     assert _markdown_of("01_span_tables", "dda_giesen").startswith("That saving made span tables")
     # S1: the computed crossing fills a wrong pixel in 1 of 200 (it never counted misses)
     summary = _markdown_of("01_span_tables", "c17")
-    assert ns.misfilled["computed crossing (section 4)"] == 1 and ns.n_random == 200
-    assert "It rarely fills a wrong pixel (section 5: 1 triangle in 200)" in summary
+    assert ns.misfilled["computed, divide first (section 4)"] == 1 and ns.n_random == 200
+    assert "it rarely fills a wrong pixel (section 5: 1 triangle in 200)" in summary
     assert "misses a tie" not in summary
     assert (
         "under span tables and half-planes alike" in summary and "samples pixel centres" in summary
@@ -1439,18 +1455,24 @@ def test_01_r239_text_matches_what_the_cells_print():
                   if c.get("id") == "c21d-crack-rarity")  # fmt: skip
     assert "in sorted(crack_counts.items())" in rarity
     assert [ns.crack_counts[s][1]["dda"] for s in (16, 32, 64)] == [0, 4, 3]
-    # S6: the Try-it's larger image is named
+    # S6: the example's larger image is named (r251 S6: an example now, not a Try-it)
     assert "in a larger image like 4b's (`span_fill(big, 160, 160)`)" in _markdown_of(
-        "01_span_tables", "c17-try"
+        "01_span_tables", "c17-example"
     )
 
 
 def test_01_r229_flat_cases_name_their_rows_and_columns():
     """Review r229 01-FIG2: the 2 x 2 flat-case panel had no row or column numbers, while the
     print above it compares rows 2, 6 and 10."""
+    import inspect
+
+    from teachraster.plotting.span_figures import plot_flat_case
+
     cell = next("".join(c["source"]) for c in _notebook_cells("01_span_tables")
                 if "[\"flat-topped\", \"flat-bottomed\"]" in "".join(c["source"]))  # fmt: skip
-    assert "plot_pixel_grid(ax, 16, 12, ticks=7)" in cell and "ticks=False" not in cell
+    # r251 S2: the panels are drawn by plot_flat_case, with ticks=7
+    assert "plot_flat_case(axd[name], f, 16, 12, name)" in cell and "ticks=False" not in cell
+    assert "plot_pixel_grid(ax, width, height, ticks=7)" in inspect.getsource(plot_flat_case)
     fig, ax = plt.subplots(figsize=(4.6, 3.8))
     try:
         from teachraster.plotting import plot_pixel_grid

@@ -70,7 +70,7 @@ def test_span_captions_keep_the_names_and_give_roles():
     trace = tr.rasterize(tr.Triangle(xy), 12, 12, method="span", trace=True).trace
     assert (
         trace.caption(3)
-        == "sorted by y: top v2 (2.5, 1.5), middle v3 (11.5, 6.5), bottom v1 (8.5, 11.5)"
+        == "sorted by v: top v2 (2.5, 1.5), middle v3 (11.5, 6.5), bottom v1 (8.5, 11.5)"
     )
     split = trace.caption(4)
     assert "long edge v2-v1" in split and "point 4" in split

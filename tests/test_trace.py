@@ -540,10 +540,10 @@ def test_span_captions_say_what_the_half_open_loop_does():
     xy = [[8.5, 17.5], [4.5, 1.5], [18.5, 9.5]]
     t = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True).trace
     assert t.step(2).kind == "rows" and "bbox" not in t.setup_kinds
-    assert "y_top <= y < y_bot" in t.caption(2) and "no box" in t.caption(2)
+    assert "v_top <= v < v_bot" in t.caption(2) and "no box" in t.caption(2)
     last_row = t.step(t.interpolation_step - 1)
     assert last_row.row == 17 and "not visited" in last_row.caption
-    assert "y_bot" in last_row.caption and "v1" in last_row.caption
+    assert "v_bot" in last_row.caption and "v1" in last_row.caption
     assert "not visited" not in t.caption(t.interpolation_step - 2)  # row 16 fills columns 8-9
     half = tr.rasterize(tr.Triangle(xy), 20, 20, method="halfplane", trace=True).trace
     assert half.step(2).kind == "bbox" and "bounding box" in half.caption(2)

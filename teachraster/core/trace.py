@@ -435,7 +435,7 @@ class FillTrace:
     @property
     def visited(self) -> np.ndarray | None:
         """(n,) bool along ``span.rows`` (span tables): the raster lines the half-open loop
-        fills, ``y_top <= y < y_bot``; the bottom vertex's own line is traced, not visited.
+        fills, ``v_top <= v < v_bot`` (v = screen y); the bottom vertex's own line is traced, not visited.
         None for the other methods."""
         s = self.span
         if s is None:
@@ -465,7 +465,7 @@ class FillTrace:
             # "meet" includes the bottom vertex's line, which the half-open loop traces but
             # never fills (its row step says so)
             return (f"raster lines {box.row0}-{box.row1 - 1} meet the triangle (top to bottom "
-                    "vertex, within the image); the loop fills those with y_top <= y < y_bot; "
+                    "vertex, within the image); the loop fills those with v_top <= v < v_bot; "
                     "span tables test no box of pixels")  # fmt: skip
         where = f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
         if not box.size:
@@ -480,7 +480,7 @@ class FillTrace:
             f"{role} v{o + 1} ({x:g}, {y:g})"
             for role, o, (x, y) in zip(ROLES, s.order, s.sorted_xy)
         )
-        return f"sorted by y: {order}"
+        return f"sorted by v: {order}"
 
     def _split_caption(self) -> str:
         s = self.span
@@ -489,13 +489,14 @@ class FillTrace:
             return "zero height: nothing to split"
         if s.flat_bottom is None:
             y = s.sorted_xy[0, 1]
-            return f"already flat-topped (top {top} and middle {mid} at y = {y:g}): no split"
+            return f"already flat-topped (top {top} and middle {mid} at v = {y:g}): no split"
         if s.flat_top is None:
             y = s.sorted_xy[1, 1]
-            return f"already flat-bottomed (middle {mid} and bottom {bot} at y = {y:g}): no split"
-        # Ek's formula, with roles for the notes' points 1, 2, 3, in (u, v) = (x, y)
+            return f"already flat-bottomed (middle {mid} and bottom {bot} at v = {y:g}): no split"
+        # Ek's formula, with roles for the notes' points 1, 2, 3, in his (u, v) = (x, y): the
+        # span captions write heights as v throughout, as lesson 01 does (review r251 01-S1)
         return (
-            f"split at y = v_mid = {s.sorted_xy[1, 1]:g} (middle {mid}): point 4 on the long edge "
+            f"split at v = v_mid = {s.sorted_xy[1, 1]:g} (middle {mid}): point 4 on the long edge "
             f"{top}-{bot} has u4 = u_top + (v_mid-v_top)/(v_bot-v_top)*(u_bot-u_top) = "
             f"{s.u4:.3f}; a flat-bottom ({top}, {mid}, point 4) and a flat-top "
             f"({mid}, point 4, {bot}) part"
@@ -506,18 +507,18 @@ class FillTrace:
         row, part = int(s.rows[i]), ("flat-bottom", "flat-top")[s.half[i]]
         start, stop = int(s.col_start[i]), int(s.col_stop[i])
         xl, xr = float(s.x_left[i]), float(s.x_right[i])
-        where = f"row {row} (y = {row + 0.5:g}, {part} part)"
+        where = f"row {row} (v = {row + 0.5:g}, {part} part)"
         if np.isfinite(xl) and np.isfinite(xr):
             where += f": span x = {xl:.2f} .. {xr:.2f}"
         if stop > start:
             cols = f"column {start}" if stop == start + 1 else f"columns {start}-{stop - 1}"
             text = f"{where} covers {cols}"
         elif self.samples is None and not self.visited[i]:
-            # the half-open rows y_top <= y < y_bot: this line is traced, not visited (r142 01-3)
+            # the half-open rows v_top <= v < v_bot: this line is traced, not visited (r142 01-3)
             bot = f"v{s.order[2] + 1}"
             text = (
-                f"row {row} (y = {row + 0.5:g} = y_bot, the bottom vertex {bot}'s height): "
-                "outside y_top <= y < y_bot, not visited: nothing filled"
+                f"row {row} (v = {row + 0.5:g} = v_bot, the bottom vertex {bot}'s height): "
+                "outside v_top <= v < v_bot, not visited: nothing filled"
             )
         else:
             text = f"{where} covers no pixel centre"

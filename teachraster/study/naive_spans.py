@@ -4,9 +4,10 @@ Ek (*Triangles and Perspective Correct Interpolation*, §1.1) fills a triangle r
 raster line between the crossings of its edges. Written in floating point, the fill is only as
 right as those crossings:
 
-- :func:`naive_span_fill` computes each crossing with the u4 formula and fills the centres
-  ``ceil(x_left - 0.5) <= j < ceil(x_right - 0.5)`` (the top-left rule, if the crossing were
-  exact);
+- :func:`naive_span_fill` computes each crossing with the u4 formula as Ek writes it, divide
+  first, and fills the centres ``ceil(x_left - 0.5) <= j < ceil(x_right - 0.5)`` (the
+  top-left rule, if the crossing were exact; multiplied first, ``a_u + (v - a_v)(b_u - a_u) /
+  (b_v - a_v)`` on snapped vertices, it is: lesson 01, 4b);
 - ``stepped=True`` walks each edge by ``Δu/Δv`` per raster line (a float DDA), so rounding
   accumulates.
 
@@ -30,7 +31,8 @@ from ..core.validate import as_finite, as_size
 
 
 def _crossing(a, b, v):
-    """u where the raster line at height v meets the edge a-b (the u4 formula, v_mid -> v)."""
+    """u where the raster line at height v meets the edge a-b (the u4 formula, v_mid -> v),
+    divide first: the quotient rounds before the multiply, so a tie can be lost."""
     return (v - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) + a[0]
 
 

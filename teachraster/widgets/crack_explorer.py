@@ -1,10 +1,13 @@
 """``CrackExplorer``: lesson 01's cracks and double draws, on random pairs of triangles.
 
 Ek (*Triangles and Perspective Correct Interpolation*, §1.1) fills span by span between edge
-crossings. In floating point a crossing that should be exactly a pixel centre can land a hair
-to either side: the two triangles sharing that edge then both draw the pixel, or neither does.
-The explorer fills a random pair (vertices on pixel centres, sharing an edge) three ways (two
-panels side by side, the third below with a key), the float crossing + ceil, the float DDA (x += Δu/Δv) and the integer edge functions,
+crossings. Computed in floating point as he writes it, divide first, a crossing that should be
+exactly a pixel centre can land a hair to either side (multiplied first, on snapped vertices,
+it cannot: lesson 01, 4b), and so can a crossing stepped by Δu/Δv: the two triangles sharing
+that edge then both draw the pixel, or neither does, or the wrong one does. The explorer fills
+a random pair (vertices on pixel centres, sharing an edge) three ways (two panels side by side,
+the third below with a key), the float crossing divided first + ceil, the float DDA
+(x += Δu/Δv) and the integer edge functions,
 marks the tie pixels each gives to the wrong triangle, the cracked and the doubly drawn ones,
 rerolls, and keeps a running tally, which starts again whenever the way the edges are
 evaluated changes (the toggle, the stored pair, the kernel), or the grid. (Measured: when both triangles evaluate the shared edge

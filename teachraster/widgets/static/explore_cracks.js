@@ -2,13 +2,14 @@
 //
 // A pair of random triangles with their vertices on pixel centres share the edge p-q:
 // A = (p, q, r) and B = (q, p, s), r and s on either side. Each is filled by the float span
-// fill with computed crossings + ceil, by the float DDA (x += du/dv per raster line) and by
+// fill with crossings computed as Ek writes them, divide first, + ceil (multiplied first they
+// would be exact: lesson 01, 4b), by the float DDA (x += du/dv per raster line) and by
 // the integer edge functions of the engine. A pixel both fill is drawn twice; a centre on the
 // shared edge that the integer fill gives to one of them and that neither fills is a crack.
 // Reroll draws a new pair; the tally counts over every pair drawn.
 
 export const METHODS = [
-  ["crossing", "float crossing + ceil"],
+  ["crossing", "float crossing, divide first"],
   ["dda", "float DDA: x += Δu/Δv"],
   ["integer", "integer edge functions"],
 ];
@@ -297,10 +298,11 @@ function mount(el, data, host) {
       const [x0, y0] = g.origins[k];
       drawPanel(ctx, found[k], exact, pair, { x0, y0, cell, W: w, H: h });
       ctx.fillStyle = "#111";
-      ctx.font = "bold 15px sans-serif";
-      ctx.fillText(name, x0, y0 - ringReach(cell) - 6);
+      ctx.font = `bold ${textPx(ctx, TITLE_PX)}px sans-serif`;
+      ctx.fillText(name, x0, y0 - ringReach(cell) - g.ticks - 6);
+      drawNumbers(ctx, x0, y0, w, h, cell, k % 2 === 0);
     });
-    drawKey(ctx, g.key, cell);
+    drawKey(ctx, g.key, cell, g.panelW + ringReach(cell));
     table.innerHTML = tallyTable(state.tally);
     readout.innerHTML = explainPixel(pair, ui.hover, w, h, found, state.asListed);
     hunted.innerHTML = huntNote(lastHunt, state.asListed, state.large) ||
@@ -449,13 +451,16 @@ export function panelLayout(W, H, avail = NARROW_COLUMN_PX) {
   while (cell < MAX_CELL && layoutWidth(W, cell + 1) <= avail) cell += 1;
   const ring = ringReach(cell);
   const gap = Math.max(26, 2 * ring + 2);
-  const m = { left: ring, top: TITLE + ring };
+  // the column numbers' row, at their size on this canvas (as the row numbers' margin)
+  const ticks = Math.ceil(1.1 * readablePx(14, layoutWidth(W, cell))) + 4;
+  const m = { left: numbersWidth(W, cell) + ring, top: TITLE + ticks + ring };
   const panelW = W * cell;
   const panelH = H * cell;
-  const below = ring + COUNT + TITLE + ring; // under a panel: its ring, its count, the next title
+  // under a panel: its ring, its count, the next title and column numbers, their ring
+  const below = ring + COUNT + TITLE + ticks + ring;
   const origins = [0, 1, 2, 3].map((k) => [m.left + (k % 2) * (panelW + gap),
     m.top + Math.floor(k / 2) * (panelH + below)]);
-  return { cell, gap, m, panelW, panelH, origins: origins.slice(0, 3), key: origins[3],
+  return { cell, gap, m, ticks, panelW, panelH, origins: origins.slice(0, 3), key: origins[3],
     radius: RING * cell, width: m.left + 2 * panelW + gap + ring,
     height: m.top + 2 * panelH + below + ring + COUNT };
 }
@@ -464,13 +469,45 @@ const [MIN_CELL, MAX_CELL] = [16, 30];
 
 // the canvas' width for two panels of W cells of `cell` px (panelLayout's sum)
 function layoutWidth(W, cell) {
+  return numbersWidth(W, cell) + bareWidth(W, cell);
+}
+
+// the same without the row numbers' margin
+function bareWidth(W, cell) {
   const ring = ringReach(cell);
   return ring + 2 * W * cell + Math.max(26, 2 * ring + 2) + ring;
 }
 
+// The margin of the row numbers: two digits at the size drawNumbers gives them on a canvas
+// that wide (textPx: larger on a canvas a narrow column shrinks, as a 32 x 32 grid's is).
+function numbersWidth(W, cell) {
+  return Math.ceil(1.3 * readablePx(14, bareWidth(W, cell) + 22)) + 4;
+}
+
 // the height of a panel's title above it and of its count line below it (px)
-const TITLE = 28;
-const COUNT = 20;
+const TITLE = 30;
+const COUNT = 22;
+// the type of the titles, the counts and the key, for a projector (review r251 01-FIG1: 13-
+// and 14-px type)
+const TITLE_PX = 18;
+const TEXT_PX = 16;
+
+// Every fourth row and column numbered, as the lesson names pixels by them (review r251
+// 01-FIG1: "pixel (row 4, column 0)" could only be found by counting): the columns above
+// each panel, the rows left of the left-hand panels (the right-hand one shares their rows;
+// the gap between them is the rings' room). Outside the rings' reach.
+function drawNumbers(ctx, x0, y0, W, H, cell, rows) {
+  const ring = ringReach(cell);
+  ctx.fillStyle = "#333";
+  ctx.font = `${textPx(ctx, 14)}px sans-serif`;
+  ctx.textAlign = "center";
+  for (let c = 0; c < W; c += 4) ctx.fillText(String(c), x0 + (c + 0.5) * cell, y0 - ring - 4);
+  ctx.textAlign = "right";
+  for (let r = 0; rows && r < H; r += 4) {
+    ctx.fillText(String(r), x0 - ring - 3, y0 + (r + 0.5) * cell + 5);
+  }
+  ctx.textAlign = "left";
+}
 
 // The marks in a pixel, for a projector (review r57, 01-1: at 16-px cells the "2" and "✕" were
 // 11 px and the tie squares 6): every glyph at least 14 px, "⇄" at least 16, as large as the
@@ -510,7 +547,7 @@ function drawPanel(ctx, f, exact, pair, g) {
     for (let c = 0; c < W; c++) {
       const on = onSegment(setup.given[0], setup.given[1], centreUnits(setup, r, c));
       ctx.fillStyle = on ? "#000" : "#999";
-      const d = on ? tieSize(cell) : 3;
+      const d = on ? tieSize(cell) : 4;
       ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
     }
   }
@@ -554,13 +591,17 @@ function drawPanel(ctx, f, exact, pair, g) {
   for (const [r, c] of f.doubles) haloed("2", x0 + (c + 0.5) * cell, y0 + (r + 0.82) * cell);
   for (const [r, c] of f.cracks) {
     haloed("✕", x0 + (c + 0.5) * cell, y0 + (r + 0.8) * cell);
-    // a ring around the crack: a single pixel, often at the image's border, is easy to miss
-    ctx.strokeStyle = OKABE.vermillion;
-    ctx.lineWidth = 3;
-    ctx.beginPath();
-    ctx.arc(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell, cell * RING, 0, 2 * Math.PI);
-    ctx.stroke();
+    // a ring around the crack: a single pixel, often at the image's border, is easy to miss;
+    // on a white halo, so that the border and the edges it crosses do not cut it
+    for (const [colour, width] of [["#fff", 7], [OKABE.vermillion, 3]]) {
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = width;
+      ctx.beginPath();
+      ctx.arc(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell, cell * RING, 0, 2 * Math.PI);
+      ctx.stroke();
+    }
   }
+  drawTags(ctx, pair, f, g);
   // the wrong-owner ties last, over the tie marker and the shared edge: large, black on a
   // white halo, so that the glyph survives on the thick black line
   ctx.font = `bold ${markPx(cell, "⇄")}px sans-serif`;
@@ -575,28 +616,105 @@ function drawPanel(ctx, f, exact, pair, g) {
   }
   ctx.textAlign = "left";
   ctx.fillStyle = "#111";
-  ctx.font = "14px sans-serif";
+  ctx.font = `${textPx(ctx, TEXT_PX)}px sans-serif`;
   const said = `${f.swapped.length} stolen (⇄), ${f.cracks.length} cracked, ` +
     `${f.doubles.length} doubled`;
-  ctx.fillText(said, x0, y0 + H * cell + ringReach(cell) + 14); // below a ring in the last row
+  ctx.fillText(said, x0, y0 + H * cell + ringReach(cell) + 16); // below a ring in the last row
+}
+
+// The tags p and q at the shared edge's ends and A and B in their triangles, as the key and
+// the lesson name them (review r251 01-FIG1: they were named but not drawn), each on a white
+// halo where it covers no edge and no crack's ring or double's mark (tagSpots).
+function drawTags(ctx, pair, f, g) {
+  const { x0, y0, cell, W, H } = g;
+  const marks = [...f.cracks, ...f.doubles, ...f.swapped].map(([r, c]) => [c + 0.5, r + 0.5]);
+  const spots = tagSpots(pair, marks, W, H);
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.lineJoin = "round";
+  for (const [text, [x, y], colour] of [["p", spots.p, "#111"], ["q", spots.q, "#111"],
+    ["A", spots.A, "#0072B2"], ["B", spots.B, "#8a5200"]]) {
+    ctx.font = `bold ${textPx(ctx, text === text.toUpperCase() ? 19 : 17)}px sans-serif`;
+    ctx.strokeStyle = "#fff";
+    ctx.lineWidth = 4;
+    ctx.strokeText(text, x0 + x * cell, y0 + y * cell);
+    ctx.fillStyle = colour;
+    ctx.fillText(text, x0 + x * cell, y0 + y * cell);
+  }
+  ctx.textBaseline = "alphabetic";
+  ctx.textAlign = "left";
+}
+
+// distance from point p to the segment a-b
+function segmentDistance(p, a, b) {
+  const d = [b[0] - a[0], b[1] - a[1]];
+  const len2 = d[0] * d[0] + d[1] * d[1];
+  const t = len2 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2)) : 0;
+  return Math.hypot(p[0] - a[0] - t * d[0], p[1] - a[1] - t * d[1]);
+}
+
+// is p inside the triangle t (or on its edges)?
+function insideTriangle(p, t) {
+  const s = [0, 1, 2].map((k) => {
+    const [a, b] = [t[k], t[(k + 1) % 3]];
+    return Math.sign((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]));
+  });
+  return !(s.includes(1) && s.includes(-1));
+}
+
+// Where the tags go, in grid units: p and q a cell or so from their vertex, A and B at their
+// triangle's centroid or near it, inside it; each spot inside the grid, at least half a cell
+// from every edge of the pair and clear of the marks (a crack's ring: RING cells), the
+// nearest such spot first, else the clearest.
+export function tagSpots(pair, marks, W, H) {
+  const edges = pair.flatMap((t) => [0, 1, 2].map((k) => [t[k], t[(k + 1) % 3]]));
+  const clearance = (p) => Math.min(
+    ...edges.map(([a, b]) => segmentDistance(p, a, b) / 0.5),
+    ...marks.map((m) => Math.hypot(p[0] - m[0], p[1] - m[1]) / (RING + 0.75)));
+  const around = (at, radii) => [0, ...radii].flatMap((d) => (d ? Array.from({ length: 16 },
+    (_, k) => [at[0] + d * Math.cos((k * Math.PI) / 8), at[1] + d * Math.sin((k * Math.PI) / 8)])
+    : [at]));
+  const pick = (candidates, ok) => {
+    let best = null;
+    for (const p of candidates) {
+      if (p[0] < 0.5 || p[0] > W - 0.5 || p[1] < 0.5 || p[1] > H - 0.5 || !ok(p)) continue;
+      const c = clearance(p);
+      if (c >= 1) return p;
+      if (!best || c > best[1]) best = [p, c];
+    }
+    return best ? best[0] : candidates[0];
+  };
+  const [A, B] = pair;
+  const centroid = (t) => [0, 1].map((k) => (t[0][k] + t[1][k] + t[2][k]) / 3);
+  return {
+    p: pick(around(A[0], [1.2, 1.6, 2.0]).slice(1), () => true),
+    q: pick(around(A[1], [1.2, 1.6, 2.0]).slice(1), () => true),
+    A: pick(around(centroid(A), [0.8, 1.6]), (pt) => insideTriangle(pt, A)),
+    B: pick(around(centroid(B), [0.8, 1.6]), (pt) => insideTriangle(pt, B)),
+  };
 }
 
 // The key, in the fourth place: each mark as the panels draw it, in type as large as theirs.
 // Its marks at KEY_CELL px at most, so that its rows stay apart when the panels' cells grow.
 const KEY_CELL = 20;
-function drawKey(ctx, [x0, y0], panelCell) {
+function drawKey(ctx, [x0, y0], panelCell, keyWidth) {
   const cell = Math.min(panelCell, KEY_CELL);
-  const rows = [["A (blue) and B (orange) share the", null], ["thick edge p–q. In each panel:", null],
-    ["a centre on p–q: a tie", "tie"], ["a tie the wrong triangle drew", "⇄"],
+  const rows = [["A (blue) and B (orange) share", null], ["the thick edge p–q. Marks:", null],
+    ["a centre on p–q: a tie", "tie"], ["a tie drawn by the wrong one", "⇄"],
     ["drawn twice", "2"], ["drawn by neither: a crack", "✕"],
     ["unlike the integer fill", "box"]];
-  const pitch = Math.round(1.5 * cell); // 24 px at 16-px cells, 30 at KEY_CELL
+  const pitch = Math.max(Math.round(1.5 * cell), 26); // 26 px at 16-px cells, 30 at KEY_CELL
   ctx.textAlign = "left";
   rows.forEach(([text, mark], i) => {
     const y = y0 + 12 + pitch * i;
     const x = mark ? x0 + Math.round(cell * 1.8) : x0;
     ctx.fillStyle = "#111";
-    ctx.font = "14px sans-serif";
+    // TEXT_PX, or a little less where a line would run past its place (the panel's width)
+    const px = textPx(ctx, TEXT_PX);
+    ctx.font = `${px}px sans-serif`;
+    const room = keyWidth - (x - x0);
+    const wide = ctx.measureText(text).width;
+    if (wide > room) ctx.font = `${Math.floor((px * room) / wide)}px sans-serif`;
     ctx.fillText(text, x, y + 5);
     const cx = x0 + Math.round(cell * 0.7);
     if (mark === "tie") {
