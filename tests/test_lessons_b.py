@@ -43,9 +43,15 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     from teachraster.study import operation_counts as ops
 
     p5_share = ops.PENTIUM_CYCLES["divides"] / cyc["perspective"]
-    assert 0.5 < ops.GPU_CYCLES["divides"] / gpu["perspective"] < p5_share
+    assert p5_share > 0.5
+    # r252 F1: the GPU's reciprocal runs on its own unit beside the FMA pipe: perspective-correct
+    # costs max(pipe, 8) = 8, not the serial 13, and the divide adds only its unhidden 2
+    assert (ns.gpu_pipe, gpu["perspective"], ns.gpu_serial, ns.gpu_unhidden) == (6, 8, 13, 2)
     said = " ".join(ns.PRICE_TEXT.split())
-    assert "at both, the divide is most of perspective-correct's cost for $u$ and $v$ alone" in said
+    assert "at both, the divide is most" not in said
+    assert "At the Pentium's the divide is most of perspective-correct's cost" in said
+    assert "it adds only the 2 cycles its 8 exceed their 6" in said
+    assert "would cost 13, not 8" in said
     assert "subdivision saves less" in said
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
     # "off by most of the texture" (review r7 06-3: not "hundreds" above a printed 209)
@@ -483,9 +489,17 @@ def test_06_divide_cost_slider_reprices_the_front():
         ex.prices.value = "GPU (Ampere GA10x, Ada, Hopper)"
         assert ex.divide.value == GPU_CYCLES["divides"] == 8  # r238 S3: a current GPU's
         assert ex.ax.get_xlabel() == "issue cycles per pixel (GPU prices)"
-        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 8.0, multiply=1.0)}
+        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 8.0, multiply=1.0,
+                                                          divide_issue=1.0)}  # fmt: skip
         assert f"<b>{gpu['perspective'] / gpu['affine']:.3g}×</b>" in ex.info.value
-        assert gpu["perspective"] == pytest.approx(ns.cyc_gpu["perspective"])
+        assert gpu["perspective"] == pytest.approx(ns.cyc_gpu["perspective"]) == 8
+        # r252 F1: the reciprocal overlaps the FMA pipe: 2 of its 8 cycles not hidden (25%),
+        # and at 16 attributes none; N = 2 dearer up to its own pipe work, 7 and 49 cycles
+        assert "not hidden by the multiply-adds are <b>25%</b>" in ex.info.value
+        assert "every divide up to 7 cycles" in ex.info.value
+        ex.attributes.value = 16
+        assert "are <b>0%</b>" in ex.info.value and "every divide up to 49 cycles" in ex.info.value
+        ex.attributes.value = 2
     finally:
         ex.close()
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -504,7 +518,7 @@ def test_06_divide_cost_slider_reprices_the_front():
     # the Pentium's prices, u and v: r48; d + 5 and 2 + (d + 9) / N at the GPU's)
     fronts = ns.front_at
     assert (ns.p0, ns.a0, ns.s0, ns.d2) == (7, 2, 13, 3)  # printed by the cell, read in the text
-    assert ns.closed["GPU (Ampere GA10x, Ada, Hopper)"] == (5, 2, 9, 3)
+    assert ns.closed["GPU (Ampere GA10x, Ada, Hopper)"] == (6, 2, 10, 7)  # r252 F1: overlapped
     assert "N=2" not in fronts[1] and fronts[1] == fronts[2]
     assert fronts[2] == [v for v in fronts[8] if v != "N=2"]
     # r10 06-2, c25: the toggle's mean error keeps the front and its order; subdivision's mean
@@ -578,8 +592,11 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     ask, why = price.split("explain=")
     assert "where N = 2" not in ask and "the point is" not in ask
     why = " ".join(re.sub(r'"\s*"', "", why).split())
-    assert "N = 2 costs at least as much as the exact divide when d ≤ 2k − 1" in why
-    assert "d ≤ 2k − 1" in why and "dearer" not in why and "outweigh" not in why
+    # r252 F1: at the GPU's prices the reciprocal is hidden; N = 2's pipe work exceeds
+    assert "longer than the reciprocal's 8, which is hidden" in why.replace("{GPU_DIVIDE:g}", "8")
+    assert "k + (4k + 2)/N on that pipe" in why and "d + 2k + 1" not in why
+    assert "dearer" not in why and "outweigh" not in why
+    assert "two units work in parallel" in " ".join(re.sub(r'"\s*f?"', "", ask).split())
     # 06-6: q_depth does not say that precision is not the cause
     depth = next(c for c in cells if "q_depth = Predict(" in c).split("explain=")[0]
     # r146: nor that float64 errs (it answered the question)
@@ -670,9 +687,11 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
         v for v in ns.order_at[1] if v in ("affine", "N=16", "N=4", "perspective", "N=2")
     ]
     k, d = ns.GPU_ATTRIBUTES, ns.GPU_DIVIDE
-    assert ns.at_gpu["perspective"] == d + 2 * k + 1 and ns.d2_gpu == 2 * k - 1 == 31
+    # r252 F1: the reciprocal on its own unit: max(d, 2k + 2), max(d/N, k + (4k + 2)/N)
+    assert ns.at_gpu["perspective"] == max(d, 2 * k + 2) == 34
+    assert ns.d2_serial == 2 * k - 1 == 31 and ns.d2_gpu == 3 * k + 1 == 49
     for n in (2, 4, 16):
-        assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(k + (d + 4 * k + 1) / n)
+        assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(max(d / n, k + (4 * k + 2) / n))
     assert "**The front keeps its order.**" not in "".join(cells)
     # q_bits: the cue to E's own bound; r197 P1: lesson 02's count given (it prints it), the
     # widest range asked, not said
@@ -3885,7 +3904,10 @@ def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
     # the slider the conclusion rests on: 16 attributes, N = 2 off the front up to 2k - 1
     front = " ".join(ns.FRONT_TEXT.split())
     assert "**attributes** to 16" in front and "every price up to 31 cycles" in front
-    assert ns.d2_gpu == 31
+    assert ns.d2_serial == 31 and ns.d2_gpu == 49  # r252 F1: the GPU's reciprocal overlaps
+    assert (
+        "up to 49 at the GPU's" in front and "the GPU's 8 and the Pentium's 17 alike" not in front
+    )
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
     try:
         ex.attributes.value = ns.GPU_ATTRIBUTES
@@ -4564,7 +4586,8 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
                                "FDIV double": (33, 31), "FDIV extended": (39, 37)}  # fmt: skip
     assert ops.PENTIUM_CYCLES == {"divides": 17, "multiplies": 2, "additions": 1}
     fma, rcp = ops.NVIDIA_RATES[ops.GPU_NOW]  # r238 S3: a current GPU's, Ada's
-    assert ops.GPU_CYCLES == {"divides": fma / rcp, "multiplies": 1, "additions": 1}
+    assert ops.GPU_CYCLES == {"divides": fma / rcp, "multiplies": 1, "additions": 1,
+                              "divide issue": 1}  # fmt: skip
     assert PRICES is ops.PRICES and list(PRICES.values()) == [ops.PENTIUM_CYCLES, ops.GPU_CYCLES]
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
