@@ -104,7 +104,6 @@ def test_06_review_r238_the_law_the_floor_follows():
     at 1024² follows from the 256² and 512² lines (r243 P1), and its checker prints the 1024²
     one."""
     import json
-    import textwrap
 
     from teachraster.study import bench
 
@@ -132,10 +131,14 @@ def test_06_review_r238_the_law_the_floor_follows():
     assert "goes like N² / (pixels across)" not in " ".join(cells)
     assert "every pixel is a quarter as wide" not in md
     assert "On screen the mean error goes like $N^2$ divided by the pixels across" in md
-    checker = next(c for c in cells if "def check_worst_px(" in c)
-    scope = {"bench": bench, "textwrap": textwrap, "np": np}
-    exec(checker, scope)  # as the student runs it, with my_px = None first
-    right, verdict = scope["check_worst_px"](round(guess, 1))
+    # r252 P1: the checker lives in the study, not in the student's cell, which holds only
+    # the answer and the call (its source named the right law)
+    assert not any("def check_worst_px(" in c for c in cells)
+    at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
+    assert cells[at + 1].splitlines()[0].startswith("my_px = None")
+    assert "bench.check_worst_px(my_px)" in cells[at + 1] and "laws" not in cells[at + 1]
+    assert "measured cut" not in cells[at + 1] and len(cells[at + 1].splitlines()) <= 3
+    right, verdict = bench.check_worst_px(round(guess, 1))
     assert right and "not the square law's halving" in verdict
 
 
@@ -4786,7 +4789,6 @@ def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
     where they differ (2.05 against 2.46; 2.51 measured); its check fails on the square law and
     says why."""
     import functools
-    import textwrap
     from types import SimpleNamespace
 
     from teachraster.study import bench
@@ -4797,9 +4799,8 @@ def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
     asked = " ".join(cells[at].split())
     assert "How many pixels off will $N = 16$'s worst pixel be?" in asked and "1024 × 1024" in asked
     fast = SimpleNamespace(floor_errors=functools.cache(bench.floor_errors))
-    scope = {"bench": fast, "textwrap": textwrap, "np": np}
-    exec(cells[at + 1], scope)  # as the student runs it
-    check = scope["check_worst_px"]
+    assert "bench.check_worst_px(my_px)" in cells[at + 1]  # r252 P1: the study's checker
+    check = functools.partial(bench.check_worst_px, errors=fast.floor_errors)
     half, cut = ns.worst_512[16], ns.cut_worst[16]
     right, verdict = check(round(half / 2, 2))
     assert not right and "the square law" in " ".join(verdict.split())
