@@ -4738,6 +4738,9 @@ def test_06_review_r243_fig1_explorer_readouts_k_and_the_cheap_end_labelled():
     ns = lesson("06_what_accuracy_costs")
     # FIG1: read-outs at 16 px, k in the status line, a label near the cheapest point
     assert ".widget-readout {font-size: 16px}" in READOUT_CSS
+    # r252 W1: the read-outs took typed values and ignored them: now they take none
+    assert ".tr-readout .widget-readout {pointer-events: none; user-select: none;" in READOUT_CSS
+    assert "-webkit-user-modify: read-only" in READOUT_CSS
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
     try:
         assert READOUT_CSS in ex.widget.children[0].value

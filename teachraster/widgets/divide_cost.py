@@ -61,8 +61,15 @@ STATUS_PX = 18
 CAPTION_PX, TITLE_PX = 16, 21
 #: The sliders' read-outs ("17", "2") at their labels' size (the projector's 16 px,
 #: ``common.PROJECTOR_CSS``, which sizes the labels but not the read-outs): at JupyterLab's 13
-#: px they were the smallest text on the widget (review r243 FIG1).
-READOUT_CSS = "<style>.tr-projector .tr-readout .widget-readout {font-size: 16px}</style>"
+#: px they were the smallest text on the widget (review r243 FIG1). And read-only: a
+#: SelectionSlider's read-out is ``contenteditable`` in JupyterLab but ignores what is typed
+#: into it, which then stood beside a chart drawn at the old value (review r252 W1); no
+#: pointer and no editing, so the slider and the arrow keys are the only way to set it.
+READOUT_CSS = (
+    "<style>.tr-projector .tr-readout .widget-readout {font-size: 16px}"
+    " .tr-readout .widget-readout {pointer-events: none; user-select: none;"
+    " -webkit-user-modify: read-only}</style>"
+)
 
 #: The attribute counts offered, 1 to 32: the study's u and v (2), and a GPU's 16 and more
 #: (Fatahalian, CMU 15-462 *Texture*: up to 128 scalar attributes per triangle).
