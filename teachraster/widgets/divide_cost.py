@@ -71,6 +71,13 @@ READOUT_CSS = (
     " -webkit-user-modify: read-only}</style>"
 )
 
+#: The divide prices the cost axis reaches to: the first of them at or above the slider's
+#: divide. One axis for every price (review r41 06-5: the points should move, not the axis)
+#: left the right ~45 % of the chart empty at the default 17 cycles, where the points end at
+#: 24 (review r252 FIG1); these steps keep the axis still over each stretch of the slider and
+#: fitted to the points at every price on it.
+AXIS_REACH = (20.0, 48.0, 128.0)
+
 #: The attribute counts offered, 1 to 32: the study's u and v (2), and a GPU's 16 and more
 #: (Fatahalian, CMU 15-462 *Texture*: up to 128 scalar attributes per triangle).
 ATTRIBUTE_COUNTS = (1, 2, 3, 4, 6, 8, 12, 16, 24, 32)
@@ -343,14 +350,18 @@ class DivideCostExplorer(Shown):
         """The price list's issue slot for a divide on its own unit (the GPU's), else None."""
         return PRICES[self.prices.value].get("divide issue")
 
-    def _cost_axis(self, attributes: int) -> tuple[float, float]:
-        """The cost axis' limits at ``attributes``: one range for every price on the slider
-        (:func:`cost_axis` over the cheapest and the dearest price's costs). Refitted at each
-        price, the axis moved with the points and the slider mostly relabelled its ticks
-        (review r41 06-5); one range for every attribute count too left the u-and-v chart in
-        the left half of it. The layout keeps room on the right for a tick label at the axis'
-        end (:meth:`_lay_out`)."""
-        ends = [p for _, p in self.divide.options][:: len(self.divide.options) - 1]
+    def _cost_axis(self, attributes: int, divide: float) -> tuple[float, float]:
+        """The cost axis' limits at ``attributes``: one range for every price of the slider's
+        stretch that holds ``divide`` (:data:`AXIS_REACH`: :func:`cost_axis` over the
+        cheapest price's costs and those at the stretch's end). Refitted at each price, the
+        axis moved with the points and the slider mostly relabelled its ticks (review r41
+        06-5); one range for the whole slider left the default's chart half empty (r252
+        FIG1); one range for every attribute count too left the u-and-v chart in the left
+        half of it. The layout keeps room on the right for a tick label at the axis' end
+        (:meth:`_lay_out`)."""
+        prices = [p for _, p in self.divide.options]
+        reach = min([r for r in AXIS_REACH if r >= divide] or [prices[-1]])
+        ends = [prices[0], min(reach, prices[-1])]
         return cost_axis([r["cycles"] for d in ends
                           for r in priced(self.rows, d, self._multiply,
                                           attributes=attributes,
@@ -391,7 +402,8 @@ class DivideCostExplorer(Shown):
         return ERRORS[self.error.value]
 
     def _plot(self) -> None:
-        self.xlim = self._cost_axis(self.attributes.value)  # a new attribute count: a new axis
+        # a new attribute count, or a divide in another stretch of the slider: a new axis
+        self.xlim = self._cost_axis(self.attributes.value, self.divide.value)
         # the previous measure's artists removed, not the axes cleared: a cleared log axis
         # makes each of its tick marks anew at the next draw (about 60 % of a toggle)
         for artist in getattr(self, "_drawn", ()):
@@ -442,6 +454,8 @@ class DivideCostExplorer(Shown):
             show_kept(self, kept)
             self._stale = True  # the figure still shows the picture before
         else:
+            if self._cost_axis(self.attributes.value, self.divide.value) != self.xlim:
+                replot = True  # the divide left its stretch of the slider (AXIS_REACH)
             if replot or self._stale:
                 with style_context(self._style):
                     self._plot()
