@@ -4667,6 +4667,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         c for c in cells if "dz_far['reversed']" in c and "display(" in c
     )
     assert "float32 with reverse-Z is the one to choose" in md
+    assert "where no stencil buffer doubles its size (`D32_FLOAT_S8X24_UINT`)" in md  # r252 M1
     assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
     assert "reversed float32" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
@@ -4783,6 +4784,12 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     assert "reversed" not in labels and "window" in labels  # unorm16's column: one format
     held = " ".join(next(c for c in cells if "dz24['reversed']" in c and "display(" in c).split())
     assert "Reverse-Z needs a float." in held
+    # r252 M1: the choice's two conditions, the stencil's bits printed and quoted
+    assert ns.with_stencil == {"float32": 64, "unorm24": 32}
+    flat = " ".join(held.split())
+    assert "{with_stencil['float32']} bits per sample (`D32_FLOAT_S8X24_UINT`)" in flat
+    assert "unorm24's {with_stencil['unorm24']} (`D24_UNORM_S8_UINT`" in flat
+    assert "`glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)`" in flat
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
 
@@ -4855,6 +4862,9 @@ def test_06_review_r243_s1_to_s4_summary_and_pointers_at_held_output():
         in " ".join(ns.EDGE_TEXT.split())
     )
     assert "int64 holds it (64 bits with the sign), int32 does not" in printed
+    # r252 S4 (S2): the table's bits column (63 for int64) has a key: it counts no sign
+    assert ("the table's bits: precision kept, no sign counted (fixed8/fixed4: int64's 63\n"
+            "  and its sign, 64 with it") in printed  # fmt: skip
     # S2: Markdown that names a held table or chart says when it is shown
     for heading, held in (("## 3. Cracks", "q_bits"), ("## 4. Fill", "q_fill"),
                           ("## 6. Error against cost", "q_depth")):  # fmt: skip
