@@ -717,8 +717,9 @@ def test_divide_cost_axis_fits_each_price_inside_the_figure_and_labelled_at_1_2_
     ex = DivideCostExplorer(rows, backend="image")
     try:
         limits, dearest = {}, {}
-        for divide, error in [(1.0, "max error"), (1.0, "mean error"), (30.0, "mean error"),
-                              (128.0, "mean error"), (128.0, "max error")]:  # fmt: skip
+        for divide, error in [(1.0, "max error"), (1.0, "mean error"), (17.0, "mean error"),
+                              (30.0, "mean error"), (128.0, "mean error"),
+                              (128.0, "max error")]:  # fmt: skip
             ex.divide.value, ex.error.value = divide, error
             fig = ex.fig
             fig.canvas.draw()
@@ -732,9 +733,14 @@ def test_divide_cost_axis_fits_each_price_inside_the_figure_and_labelled_at_1_2_
             if divide == 128.0:  # the dearest price fills over half the axis' decades
                 assert np.log(max(costs) / min(costs)) > 0.5 * np.log(hi / lo), (lo, hi)
             dearest[divide] = max(costs)
-        assert limits[1.0] == limits[30.0] == limits[128.0]  # one axis for every price
-        # and on it perspective-correct moves right as the divide gets dearer
+        # one axis over each stretch of the slider (AXIS_REACH), the points moving on it
+        assert limits[1.0] == limits[17.0] != limits[30.0] != limits[128.0]
+        assert dearest[1.0] < 12 < dearest[17.0] < limits[17.0][1]
         assert dearest[1.0] < 12 < dearest[30.0] < 50 < dearest[128.0]
+        # review r252 FIG1: at the default (17 cycles) the points fill most of the axis'
+        # decades (one axis for the whole slider left its right ~45 % empty)
+        lo, hi = limits[17.0]
+        assert np.log(hi / dearest[17.0]) < 0.25 * np.log(hi / lo), (lo, hi, dearest[17.0])
         # review r56 06-2: the axis ends just past the dearest point's label room (it ran to
         # about 700 cycles over points that end at 137)
         assert limits[128.0][1] < 2 * dearest[128.0]

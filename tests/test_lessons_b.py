@@ -43,9 +43,15 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     from teachraster.study import operation_counts as ops
 
     p5_share = ops.PENTIUM_CYCLES["divides"] / cyc["perspective"]
-    assert 0.5 < ops.GPU_CYCLES["divides"] / gpu["perspective"] < p5_share
+    assert p5_share > 0.5
+    # r252 F1: the GPU's reciprocal runs on its own unit beside the FMA pipe: perspective-correct
+    # costs max(pipe, 8) = 8, not the serial 13, and the divide adds only its unhidden 2
+    assert (ns.gpu_pipe, gpu["perspective"], ns.gpu_serial, ns.gpu_unhidden) == (6, 8, 13, 2)
     said = " ".join(ns.PRICE_TEXT.split())
-    assert "at both, the divide is most of perspective-correct's cost for $u$ and $v$ alone" in said
+    assert "at both, the divide is most" not in said
+    assert "At the Pentium's the divide is most of perspective-correct's cost" in said
+    assert "it adds only the 2 cycles its 8 exceed their 6" in said
+    assert "would cost 13, not 8" in said
     assert "subdivision saves less" in said
     rows = {(r["group"], r["variant"]): r for r in ns.rows}
     # "off by most of the texture" (review r7 06-3: not "hundreds" above a printed 209)
@@ -98,7 +104,6 @@ def test_06_review_r238_the_law_the_floor_follows():
     at 1024² follows from the 256² and 512² lines (r243 P1), and its checker prints the 1024²
     one."""
     import json
-    import textwrap
 
     from teachraster.study import bench
 
@@ -126,10 +131,14 @@ def test_06_review_r238_the_law_the_floor_follows():
     assert "goes like N² / (pixels across)" not in " ".join(cells)
     assert "every pixel is a quarter as wide" not in md
     assert "On screen the mean error goes like $N^2$ divided by the pixels across" in md
-    checker = next(c for c in cells if "def check_worst_px(" in c)
-    scope = {"bench": bench, "textwrap": textwrap, "np": np}
-    exec(checker, scope)  # as the student runs it, with my_px = None first
-    right, verdict = scope["check_worst_px"](round(guess, 1))
+    # r252 P1: the checker lives in the study, not in the student's cell, which holds only
+    # the answer and the call (its source named the right law)
+    assert not any("def check_worst_px(" in c for c in cells)
+    at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
+    assert cells[at + 1].splitlines()[0].startswith("my_px = None")
+    assert "bench.check_worst_px(my_px)" in cells[at + 1] and "laws" not in cells[at + 1]
+    assert "measured cut" not in cells[at + 1] and len(cells[at + 1].splitlines()) <= 3
+    right, verdict = bench.check_worst_px(round(guess, 1))
     assert right and "not the square law's halving" in verdict
 
 
@@ -483,9 +492,17 @@ def test_06_divide_cost_slider_reprices_the_front():
         ex.prices.value = "GPU (Ampere GA10x, Ada, Hopper)"
         assert ex.divide.value == GPU_CYCLES["divides"] == 8  # r238 S3: a current GPU's
         assert ex.ax.get_xlabel() == "issue cycles per pixel (GPU prices)"
-        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 8.0, multiply=1.0)}
+        gpu = {r["variant"]: r["cycles"] for r in priced(ns.interp_rows, 8.0, multiply=1.0,
+                                                          divide_issue=1.0)}  # fmt: skip
         assert f"<b>{gpu['perspective'] / gpu['affine']:.3g}×</b>" in ex.info.value
-        assert gpu["perspective"] == pytest.approx(ns.cyc_gpu["perspective"])
+        assert gpu["perspective"] == pytest.approx(ns.cyc_gpu["perspective"]) == 8
+        # r252 F1: the reciprocal overlaps the FMA pipe: 2 of its 8 cycles not hidden (25%),
+        # and at 16 attributes none; N = 2 dearer up to its own pipe work, 7 and 49 cycles
+        assert "not hidden by the multiply-adds are <b>25%</b>" in ex.info.value
+        assert "every divide up to 7 cycles" in ex.info.value
+        ex.attributes.value = 16
+        assert "are <b>0%</b>" in ex.info.value and "every divide up to 49 cycles" in ex.info.value
+        ex.attributes.value = 2
     finally:
         ex.close()
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -504,7 +521,7 @@ def test_06_divide_cost_slider_reprices_the_front():
     # the Pentium's prices, u and v: r48; d + 5 and 2 + (d + 9) / N at the GPU's)
     fronts = ns.front_at
     assert (ns.p0, ns.a0, ns.s0, ns.d2) == (7, 2, 13, 3)  # printed by the cell, read in the text
-    assert ns.closed["GPU (Ampere GA10x, Ada, Hopper)"] == (5, 2, 9, 3)
+    assert ns.closed["GPU (Ampere GA10x, Ada, Hopper)"] == (6, 2, 10, 7)  # r252 F1: overlapped
     assert "N=2" not in fronts[1] and fronts[1] == fronts[2]
     assert fronts[2] == [v for v in fronts[8] if v != "N=2"]
     # r10 06-2, c25: the toggle's mean error keeps the front and its order; subdivision's mean
@@ -578,8 +595,11 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     ask, why = price.split("explain=")
     assert "where N = 2" not in ask and "the point is" not in ask
     why = " ".join(re.sub(r'"\s*"', "", why).split())
-    assert "N = 2 costs at least as much as the exact divide when d ≤ 2k − 1" in why
-    assert "d ≤ 2k − 1" in why and "dearer" not in why and "outweigh" not in why
+    # r252 F1: at the GPU's prices the reciprocal is hidden; N = 2's pipe work exceeds
+    assert "longer than the reciprocal's 8, which is hidden" in why.replace("{GPU_DIVIDE:g}", "8")
+    assert "k + (4k + 2)/N on that pipe" in why and "d + 2k + 1" not in why
+    assert "dearer" not in why and "outweigh" not in why
+    assert "two units work in parallel" in " ".join(re.sub(r'"\s*f?"', "", ask).split())
     # 06-6: q_depth does not say that precision is not the cause
     depth = next(c for c in cells if "q_depth = Predict(" in c).split("explain=")[0]
     # r146: nor that float64 errs (it answered the question)
@@ -670,9 +690,11 @@ def test_06_review_r80_held_answers_shuffled_cards_and_headline():
         v for v in ns.order_at[1] if v in ("affine", "N=16", "N=4", "perspective", "N=2")
     ]
     k, d = ns.GPU_ATTRIBUTES, ns.GPU_DIVIDE
-    assert ns.at_gpu["perspective"] == d + 2 * k + 1 and ns.d2_gpu == 2 * k - 1 == 31
+    # r252 F1: the reciprocal on its own unit: max(d, 2k + 2), max(d/N, k + (4k + 2)/N)
+    assert ns.at_gpu["perspective"] == max(d, 2 * k + 2) == 34
+    assert ns.d2_serial == 2 * k - 1 == 31 and ns.d2_gpu == 3 * k + 1 == 49
     for n in (2, 4, 16):
-        assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(k + (d + 4 * k + 1) / n)
+        assert ns.at_gpu[f"subdivided N={n}"] == pytest.approx(max(d / n, k + (4 * k + 2) / n))
     assert "**The front keeps its order.**" not in "".join(cells)
     # q_bits: the cue to E's own bound; r197 P1: lesson 02's count given (it prints it), the
     # widest range asked, not said
@@ -3887,7 +3909,10 @@ def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
     # the slider the conclusion rests on: 16 attributes, N = 2 off the front up to 2k - 1
     front = " ".join(ns.FRONT_TEXT.split())
     assert "**attributes** to 16" in front and "every price up to 31 cycles" in front
-    assert ns.d2_gpu == 31
+    assert ns.d2_serial == 31 and ns.d2_gpu == 49  # r252 F1: the GPU's reciprocal overlaps
+    assert (
+        "up to 49 at the GPU's" in front and "the GPU's 8 and the Pentium's 17 alike" not in front
+    )
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
     try:
         ex.attributes.value = ns.GPU_ATTRIBUTES
@@ -4570,7 +4595,8 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
                                "FDIV double": (33, 31), "FDIV extended": (39, 37)}  # fmt: skip
     assert ops.PENTIUM_CYCLES == {"divides": 17, "multiplies": 2, "additions": 1}
     fma, rcp = ops.NVIDIA_RATES[ops.GPU_NOW]  # r238 S3: a current GPU's, Ada's
-    assert ops.GPU_CYCLES == {"divides": fma / rcp, "multiplies": 1, "additions": 1}
+    assert ops.GPU_CYCLES == {"divides": fma / rcp, "multiplies": 1, "additions": 1,
+                              "divide issue": 1}  # fmt: skip
     assert PRICES is ops.PRICES and list(PRICES.values()) == [ops.PENTIUM_CYCLES, ops.GPU_CYCLES]
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
@@ -4647,6 +4673,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         c for c in cells if "dz_far['reversed']" in c and "display(" in c
     )
     assert "float32 with reverse-Z is the one to choose" in md
+    assert "where no stencil buffer doubles its size (`D32_FLOAT_S8X24_UINT`)" in md  # r252 M1
     assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
     assert "reversed float32" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
@@ -4718,6 +4745,9 @@ def test_06_review_r243_fig1_explorer_readouts_k_and_the_cheap_end_labelled():
     ns = lesson("06_what_accuracy_costs")
     # FIG1: read-outs at 16 px, k in the status line, a label near the cheapest point
     assert ".widget-readout {font-size: 16px}" in READOUT_CSS
+    # r252 W1: the read-outs took typed values and ignored them: now they take none
+    assert ".tr-readout .widget-readout {pointer-events: none; user-select: none;" in READOUT_CSS
+    assert "-webkit-user-modify: read-only" in READOUT_CSS
     ex = DivideCostExplorer(ns.interp_rows, backend="image")
     try:
         assert READOUT_CSS in ex.widget.children[0].value
@@ -4760,6 +4790,12 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     assert "reversed" not in labels and "window" in labels  # unorm16's column: one format
     held = " ".join(next(c for c in cells if "dz24['reversed']" in c and "display(" in c).split())
     assert "Reverse-Z needs a float." in held
+    # r252 M1: the choice's two conditions, the stencil's bits printed and quoted
+    assert ns.with_stencil == {"float32": 64, "unorm24": 32}
+    flat = " ".join(held.split())
+    assert "{with_stencil['float32']} bits per sample (`D32_FLOAT_S8X24_UINT`)" in flat
+    assert "unorm24's {with_stencil['unorm24']} (`D24_UNORM_S8_UINT`" in flat
+    assert "`glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)`" in flat
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
 
@@ -4769,7 +4805,6 @@ def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
     where they differ (2.05 against 2.46; 2.51 measured); its check fails on the square law and
     says why."""
     import functools
-    import textwrap
     from types import SimpleNamespace
 
     from teachraster.study import bench
@@ -4780,9 +4815,8 @@ def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
     asked = " ".join(cells[at].split())
     assert "How many pixels off will $N = 16$'s worst pixel be?" in asked and "1024 × 1024" in asked
     fast = SimpleNamespace(floor_errors=functools.cache(bench.floor_errors))
-    scope = {"bench": fast, "textwrap": textwrap, "np": np}
-    exec(cells[at + 1], scope)  # as the student runs it
-    check = scope["check_worst_px"]
+    assert "bench.check_worst_px(my_px)" in cells[at + 1]  # r252 P1: the study's checker
+    check = functools.partial(bench.check_worst_px, errors=fast.floor_errors)
     half, cut = ns.worst_512[16], ns.cut_worst[16]
     right, verdict = check(round(half / 2, 2))
     assert not right and "the square law" in " ".join(verdict.split())
@@ -4834,6 +4868,9 @@ def test_06_review_r243_s1_to_s4_summary_and_pointers_at_held_output():
         in " ".join(ns.EDGE_TEXT.split())
     )
     assert "int64 holds it (64 bits with the sign), int32 does not" in printed
+    # r252 S4 (S2): the table's bits column (63 for int64) has a key: it counts no sign
+    assert ("the table's bits: precision kept, no sign counted (fixed8/fixed4: int64's 63\n"
+            "  and its sign, 64 with it") in printed  # fmt: skip
     # S2: Markdown that names a held table or chart says when it is shown
     for heading, held in (("## 3. Cracks", "q_bits"), ("## 4. Fill", "q_fill"),
                           ("## 6. Error against cost", "q_depth")):  # fmt: skip

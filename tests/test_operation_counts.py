@@ -24,17 +24,28 @@ def test_interpolation_prices_u_and_v():
     """Review r48 06-D1: the study measures the uv error, so the model prices both texture
     coordinates (k = 2) sharing one reciprocal: d + mk + (k + 1) cycles, 24 at the Pentium's
     prices (r228 F1: its issue intervals), 12x affine's 2; 13 at a current GPU's (r238 S3)."""
-    for prices in (ops.PENTIUM_CYCLES, ops.GPU_CYCLES):
-        d, m = prices["divides"], prices["multiplies"]
-        for k in (1, 2, 16):
-            persp = ops.cycles(ops.interpolation_count("perspective", k), prices)
-            assert persp == d + m * k + (k + 1)
-            assert ops.cycles(ops.interpolation_count("affine", k), prices) == k
-            for n in (2, 16):
-                sub = ops.cycles(ops.interpolation_count(f"subdivided N={n}", k), prices)
-                assert sub == pytest.approx(k + (d + m * 2 * k + 2 * k + 1) / n)
+    prices = ops.PENTIUM_CYCLES  # one unit: the cycles add
+    d, m = prices["divides"], prices["multiplies"]
+    for k in (1, 2, 16):
+        persp = ops.cycles(ops.interpolation_count("perspective", k), prices)
+        assert persp == d + m * k + (k + 1)
+        assert ops.cycles(ops.interpolation_count("affine", k), prices) == k
+        for n in (2, 16):
+            sub = ops.cycles(ops.interpolation_count(f"subdivided N={n}", k), prices)
+            assert sub == pytest.approx(k + (d + m * 2 * k + 2 * k + 1) / n)
+    # review r252 F1: the GPU's reciprocal runs on the special-function unit beside the FMA
+    # pipe, costing it one issue slot: a pixel costs the slower unit, not the sum
+    gpu = ops.GPU_CYCLES
+    d, i = gpu["divides"], gpu["divide issue"]
+    for k in (1, 2, 16):
+        persp = ops.cycles(ops.interpolation_count("perspective", k), gpu)
+        assert persp == max(d, 2 * k + 1 + i)
+        for n in (2, 16):
+            sub = ops.cycles(ops.interpolation_count(f"subdivided N={n}", k), gpu)
+            assert sub == pytest.approx(max(d / n, k + (4 * k + 1 + i) / n))
     assert ops.cycles(ops.interpolation_count("perspective")) == 24
-    assert ops.cycles(ops.interpolation_count("perspective"), ops.GPU_CYCLES) == 13
+    assert ops.cycles(ops.interpolation_count("perspective"), ops.GPU_CYCLES) == 8  # not 13
+    assert ops.cycles(ops.interpolation_count("perspective", 16), ops.GPU_CYCLES) == 34
 
 
 def test_the_price_lists_are_read_from_their_tables():
@@ -55,6 +66,7 @@ def test_the_price_lists_are_read_from_their_tables():
     assert list(ratio.values()) == [6, 4, 4, 4, 4, 4, 8, 8, 8]
     assert ratio[ops.GPU_NOW] == 8 == ops.GPU_CYCLES["divides"]
     assert ops.GPU_CYCLES["multiplies"] == ops.GPU_CYCLES["additions"] == 1  # one FMA pipe
+    assert ops.GPU_CYCLES["divide issue"] == 1  # the reciprocal's slot on it (r252 F1)
     assert list(ops.PRICES) == ["Pentium (P5)", "GPU (Ampere GA10x, Ada, Hopper)"]
 
 

@@ -1808,14 +1808,17 @@ def test_divide_cost_attribute_slider_moves_where_n2_leaves_the_front():
         lo, hi = ex.ax.get_xlim()  # a new axis for the dearer variants, every point inside it
         assert hi > xlim2[1] and lo < min(cost.values()) and max(cost.values()) < hi
         ex.attributes.value = 2
+        assert ex.ax.get_xlim() != xlim2  # r252 FIG1: d = 40 reaches past d = 4's stretch
+        ex.divide.value = 4.0
         assert ex.ax.get_xlim() == xlim2 and "up to 3 cycles" in ex.info.value
         # r228 C1: at the GPU's prices (q_price's), 16 attributes: the lesson's order; r238
         # S3: a current GPU's, its reciprocal at an eighth of the multiply-add rate
         ex.attributes.value = 16
         ex.prices.value = "GPU (Ampere GA10x, Ada, Hopper)"
-        assert ex.divide.value == 8.0 and "up to 31 cycles" in ex.info.value
+        # r252 F1: the reciprocal on its own unit: max(d, 2k + 2) and N = 2's k + (4k + 2)/2
+        assert ex.divide.value == 8.0 and "up to 49 cycles" in ex.info.value
         cost = {p: ex.art.points[p].get_xdata()[0] for p in ex.art.points}
-        assert cost["perspective"] == 41.0 and cost["subdivided N=2"] == 52.5  # d + 2k + 1
+        assert cost["perspective"] == 34.0 and cost["subdivided N=2"] == 49.0
         assert ex.front == ["affine", "subdivided N=16", "subdivided N=4", "perspective"]
         ex.prices.value = "Pentium (P5)"
         assert ex.divide.value == 17.0 and "(a multiply 2)" in ex.info.value

@@ -41,7 +41,8 @@ Quake was written for (:data:`PENTIUM_X87`, Agner Fog's measured tables), and
 :data:`PENTIUM_INTEGER_CYCLES` its integer unit (:data:`PENTIUM_INTEGER`), which prices the
 integer variants; :data:`GPU_CYCLES` a current NVIDIA GPU's (Ampere GA10x, Ada, Hopper),
 whose add, multiply and multiply-add issue at one rate and whose reciprocal at an eighth of
-it (:data:`NVIDIA_RATES`, the CUDA guide's throughput table). A GPU list prices floating-point
+it (:data:`NVIDIA_RATES`, the CUDA guide's throughput table) on a unit of its own, in
+parallel with them: a pixel costs the slower unit's cycles, not their sum. A GPU list prices floating-point
 shader work only: a GPU evaluates edge functions in its fixed-function rasteriser.
 :func:`cycles` applies any weights (the Pentium's by default, integer or float by the
 variant's arithmetic).
@@ -112,14 +113,20 @@ NVIDIA_RATES = {"Kepler (3.x, 2012)": (192, 32), "Maxwell (5.x, 2014)": (128, 32
                 "Hopper (9.0, 2022)": (128, 16)}  # fmt: skip
 #: The GPU generations :data:`GPU_CYCLES` prices: the current ones.
 GPU_NOW = "Ada (8.9, 2022)"
-#: A GPU's prices in issue cycles of its multiply-add pipe (Ampere GA10x, Ada and Hopper,
-#: :data:`NVIDIA_RATES`): an addition, a multiply or a multiply-add 1, a reciprocal 8 (its
-#: rate is an eighth of theirs; a quarter from Maxwell to the A100). A divide of the model is
-#: that reciprocal.
+#: A GPU's prices in issue cycles (Ampere GA10x, Ada and Hopper, :data:`NVIDIA_RATES`): an
+#: addition, a multiply or a multiply-add 1 on the multiply-add (FMA) pipe, a reciprocal 8
+#: (its rate is an eighth of theirs; a quarter from Maxwell to the A100). A divide of the
+#: model is that reciprocal, a special-function instruction (``MUFU.RCP``) that runs on the
+#: special-function units, which each SM partition has beside its FP32 units (NVIDIA Ampere
+#: GA102 whitepaper, the SM diagram): the dispatcher spends one issue slot on it
+#: (``"divide issue"``) and the FMA pipe goes on while it runs, so :func:`cycles` prices a
+#: pixel at the slower of the two units, not at their sum (the CUDA guide's throughput table,
+#: §5.4.1 "Arithmetic Instructions", gives each class its own rate).
 GPU_CYCLES = {
     "divides": NVIDIA_RATES[GPU_NOW][0] / NVIDIA_RATES[GPU_NOW][1],
     "multiplies": 1.0,
     "additions": 1.0,
+    "divide issue": 1.0,
 }
 #: The two float price lists by the names the lesson and the DivideCostExplorer give them.
 PRICES = {"Pentium (P5)": PENTIUM_CYCLES, "GPU (Ampere GA10x, Ada, Hopper)": GPU_CYCLES}
@@ -300,17 +307,24 @@ def cycles(op: OpCount, weights: dict | None = None) -> float:
     addition). Without ``weights``: the Pentium's, :data:`PENTIUM_INTEGER_CYCLES` for
     integer work and :data:`PENTIUM_CYCLES` for floating point.
 
+    Where the list has a ``"divide issue"`` (:data:`GPU_CYCLES`) the divide runs on a unit of
+    its own, in parallel: the other pipe pays that issue slot per divide, and the cost is the
+    larger of the two units' cycles, ``max(pipe, divides × divide)``.
+
     >>> cycles(interpolation_count("perspective")), cycles(interpolation_count("perspective"), GPU_CYCLES)
-    (24.0, 13.0)
+    (24.0, 8.0)
+    >>> cycles(interpolation_count("perspective", 16), GPU_CYCLES)  # the reciprocal hidden
+    34.0
     """
     if weights is None:
         weights = PENTIUM_INTEGER_CYCLES if op.integer else PENTIUM_CYCLES
     add = weights["additions"]
     wide = weights.get("wide additions", add)
-    return (
-        op.divides * weights["divides"] + op.multiplies * weights["multiplies"]
-        + (op.additions - op.wide) * add + op.wide * wide
-    )  # fmt: skip
+    rest = op.multiplies * weights["multiplies"] + (op.additions - op.wide) * add + op.wide * wide
+    divide = op.divides * weights["divides"]
+    if "divide issue" not in weights:  # one unit does everything: the cycles add
+        return divide + rest
+    return max(rest + op.divides * weights["divide issue"], divide)  # two units overlap
 
 
 def with_counts(rows: list[dict], weights: dict | None = None) -> list[dict]:

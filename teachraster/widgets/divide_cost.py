@@ -28,7 +28,7 @@ from matplotlib.transforms import Bbox
 
 from ..plotting.pareto import floor_ticks, plot_pareto, update_pareto
 from ..study.bench.report import FRONT_DEFINITION
-from ..study.operation_counts import ATTRIBUTES, PRICES, interpolation_count
+from ..study.operation_counts import ATTRIBUTES, PRICES, OpCount, cycles, interpolation_count
 from .ahead import PicturesAhead, show_kept
 from .common import (
     Shown,
@@ -61,8 +61,22 @@ STATUS_PX = 18
 CAPTION_PX, TITLE_PX = 16, 21
 #: The sliders' read-outs ("17", "2") at their labels' size (the projector's 16 px,
 #: ``common.PROJECTOR_CSS``, which sizes the labels but not the read-outs): at JupyterLab's 13
-#: px they were the smallest text on the widget (review r243 FIG1).
-READOUT_CSS = "<style>.tr-projector .tr-readout .widget-readout {font-size: 16px}</style>"
+#: px they were the smallest text on the widget (review r243 FIG1). And read-only: a
+#: SelectionSlider's read-out is ``contenteditable`` in JupyterLab but ignores what is typed
+#: into it, which then stood beside a chart drawn at the old value (review r252 W1); no
+#: pointer and no editing, so the slider and the arrow keys are the only way to set it.
+READOUT_CSS = (
+    "<style>.tr-projector .tr-readout .widget-readout {font-size: 16px}"
+    " .tr-readout .widget-readout {pointer-events: none; user-select: none;"
+    " -webkit-user-modify: read-only}</style>"
+)
+
+#: The divide prices the cost axis reaches to: the first of them at or above the slider's
+#: divide. One axis for every price (review r41 06-5: the points should move, not the axis)
+#: left the right ~45 % of the chart empty at the default 17 cycles, where the points end at
+#: 24 (review r252 FIG1); these steps keep the axis still over each stretch of the slider and
+#: fitted to the points at every price on it.
+AXIS_REACH = (20.0, 48.0, 128.0)
 
 #: The attribute counts offered, 1 to 32: the study's u and v (2), and a GPU's 16 and more
 #: (Fatahalian, CMU 15-462 *Texture*: up to 128 scalar attributes per triangle).
@@ -123,7 +137,8 @@ def short_name(variant: str) -> str:
 
 
 def priced(rows, divide: float, multiply: float = PRICES["Pentium (P5)"]["multiplies"],
-           addition: float = 1.0, attributes: int = ATTRIBUTES) -> list[dict]:  # fmt: skip
+           addition: float = 1.0, attributes: int = ATTRIBUTES,
+           divide_issue: float | None = None) -> list[dict]:  # fmt: skip
     """Copies of ``rows`` with ``cycles`` recomputed from their operation counts.
 
     Parameters
@@ -136,12 +151,18 @@ def priced(rows, divide: float, multiply: float = PRICES["Pentium (P5)"]["multip
         Attributes interpolated per pixel: each row's counts change by what
         :func:`~teachraster.study.operation_counts.interpolation_count` adds or removes for
         them (none at u and v), the reciprocal shared by all.
+    divide_issue : float, optional
+        The divide on a unit of its own, costing the other pipe this many issue cycles (a
+        GPU's reciprocal: the price list's ``"divide issue"``); the two units overlap
+        (:func:`~teachraster.study.operation_counts.cycles`). None: one unit, cycles add.
 
     >>> rows = [{"variant": "perspective", "divides": 1.0, "multiplies": 2.0, "additions": 3.0}]
     >>> [priced(rows, 17, attributes=k)[0]["cycles"] for k in (2, 16)]  # d + 3k + 1
     [24.0, 66.0]
     >>> [priced(rows, 4, multiply=1, attributes=k)[0]["cycles"] for k in (2, 16)]  # d + 2k + 1
     [9.0, 37.0]
+    >>> [priced(rows, 8, 1, divide_issue=1, attributes=k)[0]["cycles"] for k in (2, 16)]
+    [8.0, 34.0]
     """
     out = []
     for r in rows:
@@ -150,27 +171,41 @@ def priced(rows, divide: float, multiply: float = PRICES["Pentium (P5)"]["multip
             now, then = (interpolation_count(r["variant"], k) for k in (attributes, ATTRIBUTES))
             ops = [o + getattr(now, n) - getattr(then, n)
                    for o, n in zip(ops, ("divides", "multiplies", "additions"))]  # fmt: skip
-        c = ops[0] * divide + ops[1] * multiply + ops[2] * addition
+        weights = {"divides": divide, "multiplies": multiply, "additions": addition}
+        if divide_issue is not None:
+            weights["divide issue"] = divide_issue
+        c = cycles(OpCount(*ops), weights)  # operation_counts' rule, overlap included
         out.append({**r, "divides": ops[0], "multiplies": ops[1], "additions": ops[2],
                     "cycles": float(c)})  # fmt: skip
     return out
 
 
-def n2_limit(rows, attributes: int = ATTRIBUTES, multiply: float = 2.0) -> float:
+def n2_limit(rows, attributes: int = ATTRIBUTES, multiply: float = 2.0,
+             divide_issue: float | None = None) -> float:  # fmt: skip
     """The dearest divide, in cycles, at which subdivision by N = 2 costs at least as much as
-    perspective-correct for ``attributes`` attributes: ``2k - 1`` whatever a multiply costs
-    (an addition 1). Both costs are straight lines in the divide's price, perspective-correct's
-    of slope 1 and N = 2's of slope 1/2: they meet once.
+    perspective-correct for ``attributes`` attributes. On one unit: ``2k - 1`` whatever a
+    multiply costs (an addition 1); both costs are straight lines in the divide's price,
+    perspective-correct's of slope 1 and N = 2's of slope 1/2: they meet once. With the
+    divide on a unit of its own (``divide_issue``), N = 2 costs its other pipe's work, which
+    exceeds perspective-correct's, until the divide alone (perspective-correct's cost once
+    the divide is not hidden) passes it: the limit is N = 2's cost at a free divide,
+    ``(m + 2)k + 1`` with one issue cycle.
 
     >>> rows = [{"variant": "perspective", "divides": 1.0, "multiplies": 2.0, "additions": 3.0},
     ...         {"variant": "subdivided N=2", "divides": 0.5, "multiplies": 2.0,
     ...          "additions": 4.5}]
     >>> [n2_limit(rows, k) for k in (2, 16)], n2_limit(rows, 16, multiply=1.0)
     ([3.0, 31.0], 31.0)
+    >>> [n2_limit(rows, k, multiply=1.0, divide_issue=1.0) for k in (2, 16)]
+    [7.0, 49.0]
     """
     at0, at1 = ({r["variant"]: r["cycles"] for r in priced(rows, d, multiply,
-                                                            attributes=attributes)}
+                                                            attributes=attributes,
+                                                            divide_issue=divide_issue)}
                 for d in (0.0, 1.0))  # fmt: skip
+    if divide_issue is not None:  # two units: N = 2's pipe work is the divide's limit
+        assert at0["subdivided N=2"] >= at0["perspective"]
+        return at0["subdivided N=2"]
     slope = {v: at1[v] - at0[v] for v in ("perspective", "subdivided N=2")}
     gap = at0["subdivided N=2"] - at0["perspective"]  # N = 2's extra cost at a free divide
     return gap / (slope["perspective"] - slope["subdivided N=2"])
@@ -310,17 +345,27 @@ class DivideCostExplorer(Shown):
     def _multiply(self) -> float:
         return PRICES[self.prices.value]["multiplies"]
 
-    def _cost_axis(self, attributes: int) -> tuple[float, float]:
-        """The cost axis' limits at ``attributes``: one range for every price on the slider
-        (:func:`cost_axis` over the cheapest and the dearest price's costs). Refitted at each
-        price, the axis moved with the points and the slider mostly relabelled its ticks
-        (review r41 06-5); one range for every attribute count too left the u-and-v chart in
-        the left half of it. The layout keeps room on the right for a tick label at the axis'
-        end (:meth:`_lay_out`)."""
-        ends = [p for _, p in self.divide.options][:: len(self.divide.options) - 1]
+    @property
+    def _divide_issue(self) -> float | None:
+        """The price list's issue slot for a divide on its own unit (the GPU's), else None."""
+        return PRICES[self.prices.value].get("divide issue")
+
+    def _cost_axis(self, attributes: int, divide: float) -> tuple[float, float]:
+        """The cost axis' limits at ``attributes``: one range for every price of the slider's
+        stretch that holds ``divide`` (:data:`AXIS_REACH`: :func:`cost_axis` over the
+        cheapest price's costs and those at the stretch's end). Refitted at each price, the
+        axis moved with the points and the slider mostly relabelled its ticks (review r41
+        06-5); one range for the whole slider left the default's chart half empty (r252
+        FIG1); one range for every attribute count too left the u-and-v chart in the left
+        half of it. The layout keeps room on the right for a tick label at the axis' end
+        (:meth:`_lay_out`)."""
+        prices = [p for _, p in self.divide.options]
+        reach = min([r for r in AXIS_REACH if r >= divide] or [prices[-1]])
+        ends = [prices[0], min(reach, prices[-1])]
         return cost_axis([r["cycles"] for d in ends
                           for r in priced(self.rows, d, self._multiply,
-                                          attributes=attributes)])  # fmt: skip
+                                          attributes=attributes,
+                                          divide_issue=self._divide_issue)])  # fmt: skip
 
     def close(self) -> None:
         """Close the figure and every widget of the box."""
@@ -357,7 +402,8 @@ class DivideCostExplorer(Shown):
         return ERRORS[self.error.value]
 
     def _plot(self) -> None:
-        self.xlim = self._cost_axis(self.attributes.value)  # a new attribute count: a new axis
+        # a new attribute count, or a divide in another stretch of the slider: a new axis
+        self.xlim = self._cost_axis(self.attributes.value, self.divide.value)
         # the previous measure's artists removed, not the axes cleared: a cleared log axis
         # makes each of its tick marks anew at the next draw (about 60 % of a toggle)
         for artist in getattr(self, "_drawn", ()):
@@ -408,6 +454,8 @@ class DivideCostExplorer(Shown):
             show_kept(self, kept)
             self._stale = True  # the figure still shows the picture before
         else:
+            if self._cost_axis(self.attributes.value, self.divide.value) != self.xlim:
+                replot = True  # the divide left its stretch of the slider (AXIS_REACH)
             if replot or self._stale:
                 with style_context(self._style):
                     self._plot()
@@ -432,9 +480,8 @@ class DivideCostExplorer(Shown):
 
     def _priced(self) -> list[dict]:
         """The rows priced at the sliders' divide and attribute count."""
-        return priced(
-            self.rows, self.divide.value, self._multiply, attributes=self.attributes.value
-        )
+        return priced(self.rows, self.divide.value, self._multiply,
+                      attributes=self.attributes.value, divide_issue=self._divide_issue)  # fmt: skip
 
     def _info_html(self) -> str:
         """What the sliders change: the divide's share of the exact divide's cost, what
@@ -444,24 +491,32 @@ class DivideCostExplorer(Shown):
         names = " → ".join(short_name(v) for v in self.front)
         exact = rows["perspective"]["cycles"]
         ratio = exact / rows["affine"]["cycles"]
-        share = self.divide.value * rows["perspective"]["divides"] / exact
+        # what the divide adds to perspective-correct: all its cycles on one unit, on a unit of
+        # its own only what the other pipe's work does not hide (review r252 F1)
+        free = priced([rows["perspective"]], 0.0, self._multiply,
+                      divide_issue=self._divide_issue)[0]["cycles"]  # fmt: skip
+        share = (exact - free) / exact
         quake = rows.get("subdivided N=16")
         saving = ""
         if quake is not None:
             saving = (f"; Quake's N=16 costs <b>{quake['cycles'] / exact:.0%}</b> of "
                       "perspective-correct")  # fmt: skip
-        cycles = "cycle" if self.divide.value == 1 else "cycles"
+        unit = "cycle" if self.divide.value == 1 else "cycles"
         k = self.attributes.value
         headline = ""
         if "subdivided N=2" in rows:
-            limit = n2_limit(self.rows, k, self._multiply)
+            limit = n2_limit(self.rows, k, self._multiply, self._divide_issue)
             headline = (f"<b>{k} attribute{'s share' if k > 1 else ' has'} one reciprocal: N=2 "
                         f"costs at least as much as perspective-correct for every divide up to "
                         f"{limit:.3g} {'cycle' if limit == 1 else 'cycles'}.</b> ")  # fmt: skip
         multiply = f"a multiply {self._multiply:g}"
+        divide_is = "the divide is"
+        if self._divide_issue is not None:  # on its own unit: only what is not hidden counts
+            multiply += ", the divide on its own unit, in parallel"
+            divide_is = "the divide's cycles not hidden by the multiply-adds are"
         return (f"<div style='font-size:{STATUS_PX}px;line-height:1.35'>{headline}"
-                f"divide = {self.divide.value:.3g} {cycles} ({multiply}), attributes "
-                f"k = {k}: the divide is "
+                f"divide = {self.divide.value:.3g} {unit} ({multiply}), attributes "
+                f"k = {k}: {divide_is} "
                 f"<b>{share:.0%}</b> of perspective-correct's cost; perspective-correct costs "
                 f"<b>{ratio:.3g}×</b> affine{saving}. "
                 f"Front, cheapest first: {names}</div>")  # fmt: skip

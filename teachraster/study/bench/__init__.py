@@ -121,6 +121,9 @@ from .timing import (
     time_interleaved,
     time_rows,
 )
+from .worst_pixel import (
+    check_worst_px,
+)
 
 __all__ = [
     "COMMON_COLUMNS",
@@ -147,6 +150,7 @@ __all__ = [
     "columns",
     "depth_clip",
     "depth_pairs",
+    "check_worst_px",
     "slanted_pairs",
     "exact_coverage",
     "fill_triangle",
