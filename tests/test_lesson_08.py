@@ -991,7 +991,7 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
             < e["1 sample at the centre"])  # fmt: skip
     assert '"formally defined as temporally-amortized supersampling" (Yang, Liu and Salvi' in md
     assert "(Karis, *High Quality Temporal Supersampling*, SIGGRAPH 2014)" in md
-    assert "the ghost above it, middle left" in md  # review r245 M1: six panels now
+    assert "behind the motion (above it, middle left)" in md  # review r245 M1: six panels now
     # the highlight: MSAA is the 1-sample image; per-sample shading far nearer the reference
     assert ns.band_same and "4× MSAA and 1 sample, the same image: True" in printed
     b = ns.band_errors
@@ -1137,7 +1137,9 @@ def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
     worse = f"from {e['history, reprojected']:.3f} to {e['history, reprojected, clamped']:.3f}"
     assert worse == "from 0.142 to 0.182" and f"the mean error rises {worse}" in md
     name = "history, reprojected, clamped"
-    assert f"  {name:34s} {e[name]:.3f} {g[name]:6d}" in printed
+    split = ns.ghost_split[name]
+    assert (f"  {name:34s} {e[name]:.3f} {g[name]:6d} {split['behind']:6d} "
+            f"{split['ahead']:5d}") in printed  # fmt: skip
     # a ghost pixel: empty at 16 samples, above 1/16 in the history, summed over frames 16-31
     history = ns.crawl_taa["reprojected"][16:]
     assert before == int(((ns.crawl_16[16:] == 0) & (history > 1 / 16)).sum())
@@ -1164,3 +1166,34 @@ def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
     assert -0.8 < any_angle < ns.edge_slopes["standard, axis edges (S = 2-8)"] + 0.5
     assert any_angle > ns.edge_slopes["standard, axis edges (S = 2-8)"]
     assert "the standard patterns, at random angles and on axis-aligned edges, 2 to 16)" in md
+
+
+def test_lesson_08_review_r254_taa_ghosts_split_behind_and_ahead(ns):
+    """Review r254 C1: "reprojected, it follows" stood beside 306 -> 289 ghost pixels, 149 of
+    them above the triangle and 140 below: the count mixed the trail (behind the motion) with
+    the blur of the bilinear fetch (both sides). The study now counts each side, the lesson
+    prints both, and the text says what they show."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study.antialiasing import ghost_sides
+
+    _, _, md = _lesson_text()
+    printed = " ".join(streams(executed("08_antialiasing").notebook()).split())
+    split = ns.ghost_split
+    assert split == {name: ghost_sides(h[16:], ns.crawl_16[16:], (0.0, 1 / 16))
+                     for name, h in ns.shown_crawl.items()}  # fmt: skip
+    assert all(s["beside"] == 0 for s in split.values())
+    kept, moved = split["history, not reprojected"], split["history, reprojected"]
+    clamped = split["history, reprojected, clamped"]
+    assert kept["ahead"] == 0 < kept["behind"]  # a trail: behind only
+    assert abs(moved["behind"] - moved["ahead"]) < 0.1 * moved["behind"]  # a blur: both sides
+    assert (kept["behind"], moved["behind"], moved["ahead"]) == (306, 149, 140)
+    assert (clamped["behind"], clamped["ahead"]) == (71, 26)
+    assert "behind the motion (above the triangle) and ahead of it (below)" in printed
+    assert f"all {kept['behind']} ghost pixels lie behind the motion" in md
+    assert (f"Reprojected, {moved['behind']} lie behind and {moved['ahead']} ahead: not a trail "
+            "but a blur on both sides of the edges") in md  # fmt: skip
+    assert (f"from {ns.ghosts['history, reprojected']} to "
+            f"{ns.ghosts['history, reprojected, clamped']} ({clamped['behind']} behind, "
+            f"{clamped['ahead']} ahead)") in md  # fmt: skip
+    assert "Reprojected, it follows" not in md
