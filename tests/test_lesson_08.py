@@ -1197,3 +1197,17 @@ def test_lesson_08_review_r254_taa_ghosts_split_behind_and_ahead(ns):
             f"{ns.ghosts['history, reprojected, clamped']} ({clamped['behind']} behind, "
             f"{clamped['ahead']} ahead)") in md  # fmt: skip
     assert "Reprojected, it follows" not in md
+
+
+def test_lesson_08_review_r254_labels_inside_their_frames():
+    """Review r254 FIG1: the sRGB curve's label "code 0.735: light 0.500" ran over the right
+    spine at c = 1; it now starts at the L axis, on its dotted line. FIG2: "centre: v = +1.16
+    (extrapolated)" crossed the pixel's border and the frame; it now sits under the ✕ on two
+    lines, centred, inside the pixel."""
+    _, sources, _ = _lesson_text()
+    (curve,) = [s for s in sources if "def decode(c):" in s]
+    assert '(float(encode(0.5)), 0.5, "axis", (8, 5))' in curve
+    assert '(c if at == "point" else 0.0, light)' in curve
+    (centre,) = [s for s in sources if "q_centre.hold()" in s and "ax.annotate" in s]
+    assert '(extrapolated)", (pc + 0.5, pr + 0.5)' in centre and ":+.2f}\\n(extrapolated)" in centre
+    assert "xytext=(0, -20)" in centre and 'ha="center", va="top"' in centre
