@@ -683,8 +683,10 @@ def test_lesson_08_review_r183_three_faults_abuffer_centroid_and_sliver_none(ns)
     # 8: the sliver question, built as the lesson builds it, takes "no pixel" as an answer
     (ask,) = [s for s in sources if "q_sliver = PredictPixels(" in s]
     assert "none=" in ask and "or tick <i>no pixel</i>" in ask
+    from teachraster.study.antialiasing import pixel_area
+
     scope = {"tr": __import__("teachraster"), "np": np, "plt": plt, "PredictPixels": PredictPixels,
-             "screen_ticks": screen_ticks}  # fmt: skip
+             "screen_ticks": screen_ticks, "pixel_area": pixel_area}  # fmt: skip
     exec(ask, scope)
     q = scope["q_sliver"]
     assert "noneLabel" in q.data and q.given is None
@@ -1211,3 +1213,25 @@ def test_lesson_08_review_r254_labels_inside_their_frames():
     (centre,) = [s for s in sources if "q_centre.hold()" in s and "ax.annotate" in s]
     assert '(extrapolated)", (pc + 0.5, pr + 0.5)' in centre and ":+.2f}\\n(extrapolated)" in centre
     assert "xytext=(0, -20)" in centre and 'ha="center", va="top"' in centre
+
+
+def test_lesson_08_review_r254_sliver_against_the_exact_area(ns):
+    """Review r254 M1: the sliver's reveal compared 4× MSAA with nothing; the pixels it draws
+    at ¼ are covered 0.085 to 0.028 (3 to 9 times too bright), printed beside the fractions.
+    S3: the explanation says the tail (pixels 8 to 10) is still lost."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study.antialiasing import pixel_area
+
+    printed = streams(executed("08_antialiasing").notebook())
+    area = pixel_area(ns.sliver.xy, ns.W_strip, 3)[1]
+    np.testing.assert_array_equal(ns.sliver_area, area)
+    assert ns.sliver_drawn.tolist() == list(range(8)) and ns.sliver_lost.tolist() == [8, 9, 10]
+    assert (ns.sliver_4.coverage_fraction[1][ns.sliver_drawn] == 0.25).all()
+    assert "  area     " + " ".join(f"{v:5.3f}" for v in area) in printed
+    assert "0.085 0.077" in printed and "0.028 0.020 0.012 0.004" in printed
+    explain = " ".join(ns.sliver_explain.split())
+    assert ("each at ¼, where the sliver covers only 0.085 to 0.028 of the pixel: 3 to 9 times "
+            "too bright") in explain  # fmt: skip
+    assert "Pixels 8 to 10 (areas 0.020 to 0.004) are still lost" in explain
+    assert "each at a quarter of full coverage" not in explain
