@@ -575,7 +575,7 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     assert "$f = g_x x + g_y y + g_0$" in md3 or "g_x x + g_y y + g_0" in md3
     assert "lesson 08, section 2" in md3 and "lesson 08, section 5" not in md3
     section2 = text.split("## 2. Supersampling vs MSAA")[1].split("## 3.")[0]
-    assert "GL leaves it open" in section2
+    assert "GL and Vulkan leave it open" in section2  # review r254 S1
     # 4: no grey marker in the intersection's legend
     (fig29,) = [s for s in sources if "equal depth: where the triangles meet" in s]
     assert 'mfc="0.5"' not in fig29 and "a sample red won" in fig29 and "a sample blue won" in fig29
@@ -1109,9 +1109,10 @@ def test_lesson_08_review_r245_caption_summary_and_reading_order(ns):
     # S5
     assert "At the pixel centre attributes are **extrapolated**" not in md
     assert "Where the pixel centre lies outside the triangle, MSAA **extrapolates**" in summary
-    # the prose did not grow: r245 counted 4,990 Markdown words
+    # the prose did not grow: r245 counted 4,990 Markdown words; r254 added M2's sentence (an
+    # edge's spectrum) and S1's Vulkan quotation (55 words, the on-screen count fell by 77)
     total = sum(len(s.split()) for c, s in zip(cells, sources) if c["cell_type"] == "markdown")
-    assert total <= 4990, total
+    assert total <= 5045, total
 
 
 def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
@@ -1228,10 +1229,35 @@ def test_lesson_08_review_r254_sliver_against_the_exact_area(ns):
     np.testing.assert_array_equal(ns.sliver_area, area)
     assert ns.sliver_drawn.tolist() == list(range(8)) and ns.sliver_lost.tolist() == [8, 9, 10]
     assert (ns.sliver_4.coverage_fraction[1][ns.sliver_drawn] == 0.25).all()
-    assert "  area     " + " ".join(f"{v:5.3f}" for v in area) in printed
+    assert "  α   " + " ".join(f"{v:5.3f}" for v in area) in printed
     assert "0.085 0.077" in printed and "0.028 0.020 0.012 0.004" in printed
     explain = " ".join(ns.sliver_explain.split())
     assert ("each at ¼, where the sliver covers only 0.085 to 0.028 of the pixel: 3 to 9 times "
             "too bright") in explain  # fmt: skip
     assert "Pixels 8 to 10 (areas 0.020 to 0.004) are still lost" in explain
     assert "each at a quarter of full coverage" not in explain
+
+
+def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
+    """Review r254 M2: an edge's spectrum is unbounded, so samples never remove its aliasing
+    (cited). S1: Vulkan leaves MSAA's evaluation point open too, in its own words. S2: the
+    q_levels triangle's far vertex lies outside the strip on the same snapped line, so rows 2-3
+    hold the question's edge only."""
+    _, sources, md = _lesson_text()
+    assert ("An edge is a step, whose spectrum falls only like $1/u$: no sampling rate is above "
+            "all of it, so more samples reduce an edge's aliasing but never remove it (Pharr, "
+            "Jakob and Humphreys, *Physically Based Rendering*, 4th ed., §8.1") in md  # fmt: skip
+    assert "in Direct3D, llvmpipe and teachraster; GL and Vulkan leave it open" in md
+    assert 'Vulkan: "anywhere within the fragment" (*Interpolation Decorations*)' in md
+    # S2: the same line as through (20, 3.5), once snapped; no other edge in rows 2-3
+    a, b = tr.snap(np.array([ns.edge_from, ns.edge_to]))
+    old = tr.snap(np.array([[0.0, 2.3], [20.0, 3.5]]))
+    assert (b[1] - a[1]) / (b[0] - a[0]) == (old[1, 1] - old[0, 1]) / (old[1, 0] - old[0, 0])
+    assert ns.edge_to[0] > ns.W
+    fill = tr.rasterize(tr.Triangle([ns.edge_from, ns.edge_to, [0.0, 8.0]]), ns.W, 6)
+    assert fill.coverage[4:].all()  # rows 4-5: the inside, no second edge in the strip
+    assert ns.edge_levels == [0.0, 0.25, 0.5, 1.0] and len(ns.standard_levels) == 5
+    row3 = ns.edge_grid.coverage_fraction[3]
+    assert row3[-4:].tolist() == [0.5] * 4  # no 0 at the right end from a second edge
+    assert "the only edge in rows 2 and 3" in next(s for s in sources if "q_levels = Predict(" in s)
+    assert [round(x, 2) for _, x in ns.crossed] == [7.5, 15.83]
