@@ -195,3 +195,24 @@ def test_edge_error_study_tries_the_standard_patterns_at_any_angle():
         p = tr.sample_pattern(s)
         inside = (nx[:, None] * p[:, 0] + ny[:, None] * p[:, 1] <= c[:, None]).mean(1)
         assert e == pytest.approx(float(np.abs(inside - area).mean()), rel=1e-12)
+
+
+def test_ghost_sides_tells_a_trail_from_a_blur():
+    """Review r254 C1 (lesson 08 §6): ghost pixels counted behind and ahead of the motion."""
+    from teachraster.study.antialiasing import ghost_sides
+
+    target = np.zeros((1, 6, 3))
+    target[0, 3, 1] = 1.0  # the shape: one pixel, moving down
+    trail = np.zeros_like(target)
+    trail[0, :3, 1] = 0.5  # left above it: behind the motion
+    assert ghost_sides(trail, target, (0.0, 0.1)) == {"behind": 3, "ahead": 0, "beside": 0}
+    assert ghost_sides(trail, target, (0.0, -0.1)) == {"behind": 0, "ahead": 3, "beside": 0}
+    blur = np.zeros_like(target)
+    blur[0, 2:5, :] = 0.5  # around it: above, below and beside
+    assert ghost_sides(blur, target, (0.0, 0.1)) == {"behind": 1, "ahead": 1, "beside": 6}
+    faint = np.full_like(target, 1 / 16)  # the least step is not a ghost
+    assert ghost_sides(faint, target, (0.0, 0.1))["behind"] == 0
+    with pytest.raises(ValueError, match="motion"):
+        ghost_sides(trail, target, (0.0, 0.0))
+    with pytest.raises(ValueError, match="alike"):
+        ghost_sides(trail, target[:, :5], (0.0, 0.1))

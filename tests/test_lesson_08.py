@@ -575,7 +575,7 @@ def test_lesson_08_review_r171_gif_plane_legend_maps_rms_and_missing_items(ns):
     assert "$f = g_x x + g_y y + g_0$" in md3 or "g_x x + g_y y + g_0" in md3
     assert "lesson 08, section 2" in md3 and "lesson 08, section 5" not in md3
     section2 = text.split("## 2. Supersampling vs MSAA")[1].split("## 3.")[0]
-    assert "GL leaves it open" in section2
+    assert "GL and Vulkan leave it open" in section2  # review r254 S1
     # 4: no grey marker in the intersection's legend
     (fig29,) = [s for s in sources if "equal depth: where the triangles meet" in s]
     assert 'mfc="0.5"' not in fig29 and "a sample red won" in fig29 and "a sample blue won" in fig29
@@ -683,8 +683,10 @@ def test_lesson_08_review_r183_three_faults_abuffer_centroid_and_sliver_none(ns)
     # 8: the sliver question, built as the lesson builds it, takes "no pixel" as an answer
     (ask,) = [s for s in sources if "q_sliver = PredictPixels(" in s]
     assert "none=" in ask and "or tick <i>no pixel</i>" in ask
+    from teachraster.study.antialiasing import pixel_area
+
     scope = {"tr": __import__("teachraster"), "np": np, "plt": plt, "PredictPixels": PredictPixels,
-             "screen_ticks": screen_ticks}  # fmt: skip
+             "screen_ticks": screen_ticks, "pixel_area": pixel_area}  # fmt: skip
     exec(ask, scope)
     q = scope["q_sliver"]
     assert "noneLabel" in q.data and q.given is None
@@ -991,7 +993,7 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
             < e["1 sample at the centre"])  # fmt: skip
     assert '"formally defined as temporally-amortized supersampling" (Yang, Liu and Salvi' in md
     assert "(Karis, *High Quality Temporal Supersampling*, SIGGRAPH 2014)" in md
-    assert "the ghost above it, middle left" in md  # review r245 M1: six panels now
+    assert "behind the motion (above it, middle left)" in md  # review r245 M1: six panels now
     # the highlight: MSAA is the 1-sample image; per-sample shading far nearer the reference
     assert ns.band_same and "4× MSAA and 1 sample, the same image: True" in printed
     b = ns.band_errors
@@ -1107,9 +1109,10 @@ def test_lesson_08_review_r245_caption_summary_and_reading_order(ns):
     # S5
     assert "At the pixel centre attributes are **extrapolated**" not in md
     assert "Where the pixel centre lies outside the triangle, MSAA **extrapolates**" in summary
-    # the prose did not grow: r245 counted 4,990 Markdown words
+    # the prose did not grow: r245 counted 4,990 Markdown words; r254 added M2's sentence (an
+    # edge's spectrum) and S1's Vulkan quotation (55 words, the on-screen count fell by 77)
     total = sum(len(s.split()) for c, s in zip(cells, sources) if c["cell_type"] == "markdown")
-    assert total <= 4990, total
+    assert total <= 5045, total
 
 
 def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
@@ -1137,7 +1140,9 @@ def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
     worse = f"from {e['history, reprojected']:.3f} to {e['history, reprojected, clamped']:.3f}"
     assert worse == "from 0.142 to 0.182" and f"the mean error rises {worse}" in md
     name = "history, reprojected, clamped"
-    assert f"  {name:34s} {e[name]:.3f} {g[name]:6d}" in printed
+    split = ns.ghost_split[name]
+    assert (f"  {name:34s} {e[name]:.3f} {g[name]:6d} {split['behind']:6d} "
+            f"{split['ahead']:5d}") in printed  # fmt: skip
     # a ghost pixel: empty at 16 samples, above 1/16 in the history, summed over frames 16-31
     history = ns.crawl_taa["reprojected"][16:]
     assert before == int(((ns.crawl_16[16:] == 0) & (history > 1 / 16)).sum())
@@ -1164,3 +1169,95 @@ def test_lesson_08_review_r245_taa_clamp_quads_and_standard_at_any_angle(ns):
     assert -0.8 < any_angle < ns.edge_slopes["standard, axis edges (S = 2-8)"] + 0.5
     assert any_angle > ns.edge_slopes["standard, axis edges (S = 2-8)"]
     assert "the standard patterns, at random angles and on axis-aligned edges, 2 to 16)" in md
+
+
+def test_lesson_08_review_r254_taa_ghosts_split_behind_and_ahead(ns):
+    """Review r254 C1: "reprojected, it follows" stood beside 306 -> 289 ghost pixels, 149 of
+    them above the triangle and 140 below: the count mixed the trail (behind the motion) with
+    the blur of the bilinear fetch (both sides). The study now counts each side, the lesson
+    prints both, and the text says what they show."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study.antialiasing import ghost_sides
+
+    _, _, md = _lesson_text()
+    printed = " ".join(streams(executed("08_antialiasing").notebook()).split())
+    split = ns.ghost_split
+    assert split == {name: ghost_sides(h[16:], ns.crawl_16[16:], (0.0, 1 / 16))
+                     for name, h in ns.shown_crawl.items()}  # fmt: skip
+    assert all(s["beside"] == 0 for s in split.values())
+    kept, moved = split["history, not reprojected"], split["history, reprojected"]
+    clamped = split["history, reprojected, clamped"]
+    assert kept["ahead"] == 0 < kept["behind"]  # a trail: behind only
+    assert abs(moved["behind"] - moved["ahead"]) < 0.1 * moved["behind"]  # a blur: both sides
+    assert (kept["behind"], moved["behind"], moved["ahead"]) == (306, 149, 140)
+    assert (clamped["behind"], clamped["ahead"]) == (71, 26)
+    assert "behind the motion (above the triangle) and ahead of it (below)" in printed
+    assert f"all {kept['behind']} ghost pixels lie behind the motion" in md
+    assert (f"Reprojected, {moved['behind']} lie behind and {moved['ahead']} ahead: not a trail "
+            "but a blur on both sides of the edges") in md  # fmt: skip
+    assert (f"from {ns.ghosts['history, reprojected']} to "
+            f"{ns.ghosts['history, reprojected, clamped']} ({clamped['behind']} behind, "
+            f"{clamped['ahead']} ahead)") in md  # fmt: skip
+    assert "Reprojected, it follows" not in md
+
+
+def test_lesson_08_review_r254_labels_inside_their_frames():
+    """Review r254 FIG1: the sRGB curve's label "code 0.735: light 0.500" ran over the right
+    spine at c = 1; it now starts at the L axis, on its dotted line. FIG2: "centre: v = +1.16
+    (extrapolated)" crossed the pixel's border and the frame; it now sits under the ✕ on two
+    lines, centred, inside the pixel."""
+    _, sources, _ = _lesson_text()
+    (curve,) = [s for s in sources if "def decode(c):" in s]
+    assert '(float(encode(0.5)), 0.5, "axis", (8, 5))' in curve
+    assert '(c if at == "point" else 0.0, light)' in curve
+    (centre,) = [s for s in sources if "q_centre.hold()" in s and "ax.annotate" in s]
+    assert '(extrapolated)", (pc + 0.5, pr + 0.5)' in centre and ":+.2f}\\n(extrapolated)" in centre
+    assert "xytext=(0, -20)" in centre and 'ha="center", va="top"' in centre
+
+
+def test_lesson_08_review_r254_sliver_against_the_exact_area(ns):
+    """Review r254 M1: the sliver's reveal compared 4× MSAA with nothing; the pixels it draws
+    at ¼ are covered 0.085 to 0.028 (3 to 9 times too bright), printed beside the fractions.
+    S3: the explanation says the tail (pixels 8 to 10) is still lost."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study.antialiasing import pixel_area
+
+    printed = streams(executed("08_antialiasing").notebook())
+    area = pixel_area(ns.sliver.xy, ns.W_strip, 3)[1]
+    np.testing.assert_array_equal(ns.sliver_area, area)
+    assert ns.sliver_drawn.tolist() == list(range(8)) and ns.sliver_lost.tolist() == [8, 9, 10]
+    assert (ns.sliver_4.coverage_fraction[1][ns.sliver_drawn] == 0.25).all()
+    assert "  α   " + " ".join(f"{v:5.3f}" for v in area) in printed
+    assert "0.085 0.077" in printed and "0.028 0.020 0.012 0.004" in printed
+    explain = " ".join(ns.sliver_explain.split())
+    assert ("each at ¼, where the sliver covers only 0.085 to 0.028 of the pixel: 3 to 9 times "
+            "too bright") in explain  # fmt: skip
+    assert "Pixels 8 to 10 (areas 0.020 to 0.004) are still lost" in explain
+    assert "each at a quarter of full coverage" not in explain
+
+
+def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
+    """Review r254 M2: an edge's spectrum is unbounded, so samples never remove its aliasing
+    (cited). S1: Vulkan leaves MSAA's evaluation point open too, in its own words. S2: the
+    q_levels triangle's far vertex lies outside the strip on the same snapped line, so rows 2-3
+    hold the question's edge only."""
+    _, sources, md = _lesson_text()
+    assert ("An edge is a step, whose spectrum falls only like $1/u$: no sampling rate is above "
+            "all of it, so more samples reduce an edge's aliasing but never remove it (Pharr, "
+            "Jakob and Humphreys, *Physically Based Rendering*, 4th ed., §8.1") in md  # fmt: skip
+    assert "in Direct3D, llvmpipe and teachraster; GL and Vulkan leave it open" in md
+    assert 'Vulkan: "anywhere within the fragment" (*Interpolation Decorations*)' in md
+    # S2: the same line as through (20, 3.5), once snapped; no other edge in rows 2-3
+    a, b = tr.snap(np.array([ns.edge_from, ns.edge_to]))
+    old = tr.snap(np.array([[0.0, 2.3], [20.0, 3.5]]))
+    assert (b[1] - a[1]) / (b[0] - a[0]) == (old[1, 1] - old[0, 1]) / (old[1, 0] - old[0, 0])
+    assert ns.edge_to[0] > ns.W
+    fill = tr.rasterize(tr.Triangle([ns.edge_from, ns.edge_to, [0.0, 8.0]]), ns.W, 6)
+    assert fill.coverage[4:].all()  # rows 4-5: the inside, no second edge in the strip
+    assert ns.edge_levels == [0.0, 0.25, 0.5, 1.0] and len(ns.standard_levels) == 5
+    row3 = ns.edge_grid.coverage_fraction[3]
+    assert row3[-4:].tolist() == [0.5] * 4  # no 0 at the right end from a second edge
+    assert "the only edge in rows 2 and 3" in next(s for s in sources if "q_levels = Predict(" in s)
+    assert [round(x, 2) for _, x in ns.crossed] == [7.5, 15.83]

@@ -328,3 +328,57 @@ def temporal_history(frames, alpha: float = 0.1, motion=(0.0, 0.0), *,
             previous = np.clip(previous, *_neighbourhood_range(frames[t]))
         out[t] = (1.0 - alpha) * previous + alpha * frames[t]
     return out
+
+
+def ghost_sides(images, targets, motion, *, least: float = 1 / 16) -> dict:
+    """Ghost pixels of a moving shape's history, counted by the side of the shape they lie on.
+
+    A ghost pixel is one the reference ``targets`` leave empty (0) where ``images`` show more
+    than ``least`` (for a 16-sample reference, its least step). Looking from it along the
+    motion: with the shape ahead of it (and not behind), it lies **behind** the motion, where
+    a trail is left; with the shape behind it, **ahead**. A trail lies behind only; a blur
+    spreads to both sides, so the two counts tell a trail from a blur (lesson 08 §6).
+
+    Parameters
+    ----------
+    images, targets : (T, H, W) array-like
+        The history and the reference, frame by frame.
+    motion : (float, float)
+        The shape's motion per frame, px (y down); not zero.
+    least : float
+        The least value that counts as shown.
+
+    Returns
+    -------
+    dict
+        ``{"behind": n, "ahead": n, "beside": n}``, summed over the frames (``beside``: the
+        shape neither ahead nor behind along the motion, or both).
+
+    >>> target = np.zeros((1, 5, 1)); target[0, 2] = 1.0   # the shape in row 2, moving down
+    >>> image = np.full((1, 5, 1), 0.5)
+    >>> ghost_sides(image, target, (0.0, 0.25))
+    {'behind': 2, 'ahead': 2, 'beside': 0}
+    """
+    images, targets = as_finite("images", images, None), as_finite("targets", targets, None)
+    if images.ndim != 3 or images.shape != targets.shape:
+        raise ValueError(f"images and targets must be (T, H, W) alike, got {images.shape} "
+                         f"and {targets.shape}")  # fmt: skip
+    dx, dy = (float(v) for v in motion)
+    if dx == dy == 0.0:
+        raise ValueError("motion must not be zero: a still shape has no behind")
+    ux, uy = np.array([dx, dy]) / np.hypot(dx, dy)
+    ghost = (targets == 0) & (images > least)
+    covered = targets > 0
+    _, h, w = covered.shape
+    rows, cols = np.mgrid[:h, :w]
+    seen = {1: np.zeros_like(covered), -1: np.zeros_like(covered)}  # shape ahead, behind
+    for step in range(1, h + w):  # one pixel at a time along the motion, both ways
+        for sign, found in seen.items():
+            r = np.rint(rows + sign * step * uy).astype(int)
+            c = np.rint(cols + sign * step * ux).astype(int)
+            inside = (r >= 0) & (r < h) & (c >= 0) & (c < w)
+            found[:, inside] |= covered[:, r[inside], c[inside]]
+    behind = ghost & seen[1] & ~seen[-1]
+    ahead = ghost & seen[-1] & ~seen[1]
+    return {"behind": int(behind.sum()), "ahead": int(ahead.sum()),
+            "beside": int((ghost & ~behind & ~ahead).sum())}  # fmt: skip
