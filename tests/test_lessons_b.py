@@ -159,7 +159,11 @@ def test_06_review_r238_integer_prices_held_text_and_float32_bits():
     kinds = [c["cell_type"] for c in nb["cells"]]
     md = " ".join(" ".join(c for c, k in zip(cells, kinds) if k == "markdown").split())
     # F1: the crossing exact in integers, priced so; q_fill from the printed prices
-    assert "A crossing is exact only in integers" in md and "lesson 01, §4b" in md
+    # r251 F1: a float crossing is exact multiply-first (lesson 01 §4b): integers are the
+    # simulator's choice, not the only exact one
+    assert "simulator computes each crossing in integers" in md and "lesson 01, §4b" in md
+    assert "A crossing is exact only in integers" not in md and "is no tie rule" not in md
+    assert "computed multiply-first, below 2¹⁸ px" in md
     assert (ns.per_centre_q, ns.per_pixel_q, ns.per_crossing_q) == (11, 2, 46 + 9 + 1 + 2)
     estimate = (
         ns.per_centre_q
