@@ -5026,15 +5026,17 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
     assert "fig.legend(" in gpu and "the pixel's owner, one colour per triangle" in gpu
     gpu_text = " ".join(cells[at("**The same meshes on a GPU.**")].split())
     assert "the colours of the figures above" not in gpu_text and "picker's colours" in gpu_text
-    # M-1: the decal: float64 fights by rounding alone, the others tie; one unit of bias cures all
-    assert ns.cop_fight == 0.01 and ns.cop_overlap == 985
-    assert ns.decal_wins[("float64", 0.01)] == 784
+    # M-1: the decal: float64 fights by rounding alone, the others tie; an offset cures all
+    # (review r253: a small decal inside the wall, 121 px, and the offset's sign: -1 units)
+    assert ns.cop_fight == 0.01 and ns.cop_overlap == 121
+    assert ns.decal_wins[("float64", 0.01)] == 58
     assert not any(n for (fmt, t), n in ns.decal_wins.items() if (fmt, t) != ("float64", 0.01))
-    assert ns.biased_wins == dict.fromkeys(("float64", "float32", "unorm24", "unorm16"), 985)
+    fmts = ("float64", "float32", "unorm24", "unorm16")
+    assert {f: ns.offset_wins[(f, -1.0)] for f in fmts} == dict.fromkeys(fmts, 121)
     decal = _07_held_markdown(run, 'case, ours = introduce("coplanar_overlap")')
-    for said in ("784 of 985 pixels in a speckle", "More bits made it fight",
-                 "`glPolygonOffset`", "`DepthBias`", "**depth bias**", "lesson 05b §5",
-                 "wins all 985 pixels in every format"):  # fmt: skip
+    for said in ("58 of 121 pixels in a speckle", "More bits made it fight",
+                 "`glPolygonOffset(factor, units)`", "`DepthBias`", "**depth bias**",
+                 "lesson 05b §5", "wins all 121 of 121 pixels in every format"):  # fmt: skip
         assert said in decal, said
     summary = " ".join(cells[-1].split())
     assert "enough depth bits for the depth range, or the scene z-fights" not in summary
@@ -5201,3 +5203,61 @@ def get_uv_sphere_mesh():
     from teachraster.pipeline.scenes import get_scene
 
     return get_scene("uv_sphere").mesh
+
+
+@pytest.mark.notebook
+def test_07_review_r253_polygon_offset_sign_and_a_visible_decal():
+    """Review r253. F-1: the polygon offset is ADDED to the depth (GL 4.6 §14.6.5, Direct3D's
+    DepthBias), so under "less" the decal needs a negative one, glPolygonOffset(0, -1); the
+    lesson had "units nearer (glPolygonOffset(0, units))" with units = +1. The cell now renders
+    both signs: -1 wins every shared pixel, +1 none. FIG-1: the decal is small and inside the
+    wall (it covered 985 of 1024 pixels, its outline off screen); the figure shows the float64
+    speckle, the tie and the cure. S-5: "fight in every format" qualified."""
+    from notebook_runs import executed
+
+    ns = lesson("07_hard_cases")
+    run = executed("07_hard_cases").notebook()
+    cells = _07_sources()
+    (cop,) = [c for c in cells if c.startswith('case, ours = introduce("coplanar_overlap")')]
+    assert "decal_frame(fmt, 1.0)" not in cop and 'decal_frame("unorm24", 1.0)' not in cop
+    assert "offset_clip_depth(clip[1:], -bias)" not in cop
+    assert "is ADDED to its depth" in cop and '"unorm24, offset (0, −1)"' in cop
+    fmts = ("float64", "float32", "unorm24", "unorm16")
+    for fmt in fmts:  # the right sign wins every shared pixel, the wrong one none
+        assert ns.offset_wins[(fmt, -1.0)] == ns.cop_overlap and ns.offset_wins[(fmt, 1.0)] == 0
+    decal = _07_held_markdown(run, 'case, ours = introduce("coplanar_overlap")')
+    for said in ("**add** the offset to the fragment's depth (GL 4.6 §14.6.5)",
+                 "`glPolygonOffset(0, -1)`", "The wrong sign, +1 on the decal, pushes it behind: 0 "
+                 "pixels", "+1 belongs on the wall", "`glPolygonOffset(-1, -1)`"):  # fmt: skip
+        assert said in decal, said
+    assert "fight in every format" not in decal and "models it in unorm24" in decal
+    # FIG-1: the decal is well inside the wall and both lie inside the image
+    import teachraster as tr
+    from teachraster.pipeline.viewport import to_window
+    from teachraster.study.hardcases import coplanar_clip
+
+    xy = to_window(coplanar_clip(ns.cop_fight), 32, 32)[..., :2]
+    assert ((xy >= 0) & (xy <= 32)).all()  # every outline on screen
+    wall = tr.render(coplanar_clip(0.0)[:1], 32, 32).coverage
+    assert ns.cop_overlap < 0.4 * wall.sum() and wall.sum() < 0.75 * 32 * 32
+    summary = " ".join(cells[-1].split())
+    assert "a *negative* polygon offset on the decal" in summary
+
+
+@pytest.mark.notebook
+def test_05b_review_r253_polygon_offset_is_added_so_the_decal_gets_negative_factors():
+    """Review r253 F-1 (05b §5): the formula was "moved towards the viewer by units·r + ...",
+    next to glPolygonOffset(factor, units); GL adds o = m·factor + r·units to the depth, so the
+    decal's factors are negative, glPolygonOffset(-1, -1), and the code passes them so."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    text = [" ".join("".join(c["source"]).split()) for c in nb["cells"]]
+    assert not any("moved towards the viewer by" in t for t in text)
+    (sec5,) = [t for t in text if t.startswith("## 5. Depth bias")]
+    assert "gets an offset **added** to it" in sec5 and "`glPolygonOffset(-1, -1)`" in sec5
+    assert "both add the offset to the fragment's depth" in sec5
+    code = "".join(t for c, t in zip(nb["cells"], text) if c["cell_type"] == "code")
+    assert "units=-1.0, slope=slopes, slope_factor=-1.0" in code
+    assert "offset_clip_depth(decal_clip[12:], -bias)" not in code
+    assert "units=-float(k)" in code and "-bias_k" not in code

@@ -346,8 +346,10 @@ def coplanar_clip(tilt: float) -> np.ndarray:
     def z(x, y):
         return 0.25 + tilt * (0.5 * x + 0.25 * y)
 
-    a = [(-3.0, -3.0), (3.0, -3.0), (0.0, 3.0)]
-    b = [(-2.5, 2.5), (2.5, 2.0), (0.5, -3.0)]
+    # a wall inside the image, its outline visible, and a small decal well inside it (a
+    # poster on a wall: a decal covering the screen read as the screen changing colour)
+    a = [(-0.9375, -0.875), (0.9375, -0.75), (0.0, 0.9375)]
+    b = [(-0.5, -0.5625), (0.5, -0.4375), (-0.0625, 0.4375)]
     return np.array([[[x, y, z(x, y), 1.0] for x, y in t] for t in (a, b)])
 
 
@@ -355,7 +357,7 @@ def _depth_cases():
     size = 32
 
     def check_coplanar(inputs, result: DepthResult) -> None:
-        assert result.overlap > 500, "the triangles barely overlap"
+        assert result.overlap > 100, "the triangles barely overlap"
         for fmt in DEPTH_ORDER:
             n = result.wrong[(fmt, 0.0)]
             assert n == 0, f"{fmt}: camera-facing coplanar: the later triangle won {n} ties"
