@@ -1703,9 +1703,10 @@ def test_07_review_r145_reading_order_and_questions():
                 "perspective_w_scale"}  # fmt: skip
     assert not left_out & set(screen_cases())
     assert all(f"`{name}`" in browse for name in left_out)
-    # §4 prints ours' largest error, which the text says stays within 1e-9
-    assert ns.w_ratio_ours < 1e-9 and "(the cell prints its largest error)" in " ".join(
-        cells[at("**Perspective denominators.**")].split()
+    # §4 prints ours' largest error and (review r253 M-1) a GPU's float32 one, no typed bound
+    persp = " ".join(cells[at("**Perspective denominators.**")].split())
+    assert (
+        ns.w_ratio_ours < 1e-9 and "ours (float64) and a GPU's" in persp and "10^{-9}" not in persp
     )
 
 
@@ -5023,7 +5024,7 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
     )
     # FIG-5: llvmpipe's owners keyed; the \\ split is not "the colours of the figures above"
     gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
-    assert "fig.legend(" in gpu and "the pixel's owner, one colour per triangle" in gpu
+    assert "fig.legend(" in gpu and "the pixel's owner: one colour per triangle" in gpu
     gpu_text = " ".join(cells[at("**The same meshes on a GPU.**")].split())
     assert "the colours of the figures above" not in gpu_text and "picker's colours" in gpu_text
     # M-1: the decal: float64 fights by rounding alone, the others tie; an offset cures all
@@ -5261,3 +5262,84 @@ def test_05b_review_r253_polygon_offset_is_added_so_the_decal_gets_negative_fact
     assert "units=-1.0, slope=slopes, slope_factor=-1.0" in code
     assert "offset_clip_depth(decal_clip[12:], -bias)" not in code
     assert "units=-float(k)" in code and "-bias_k" not in code
+
+
+@pytest.mark.notebook
+def test_07_review_r253_float32_perspective_column_backs_the_summary():
+    """Review r253 M-1: §4 measured only the simulator (float64, "within 1e-9", 2.2e-16) while
+    the summary said "float32 1/w handles ratios like 1e6". The cell now prints a float32
+    column (λ, 1/w and both sums in float32, a GPU's interpolator) per w set: 1.3e-10, 1.4e-7,
+    2.6e-8 of the range, as the reader measured."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    f32 = ns.w_errors["float32 λ/w"]
+    assert [float(f"{e:.1e}") for e in f32] == [1.3e-10, 1.4e-7, 2.6e-8]
+    assert ns.w_ratio_f32 == max(f32) < 2e-7 and ns.w_ratio_ours < 1e-15
+    assert "float32 λ/w" in printed and "1.4e-07" in printed and "0.001, 1000, 1000" in printed
+    summary = " ".join(_07_sources()[-1].split())
+    assert "float32 $\\lambda/w$ handles ratios like $10^6$ (§4's float32 column" in summary
+
+
+@pytest.mark.notebook
+def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
+    """Review r253. FIG-2: llvmpipe's key said "one colour per triangle" while the fan panel
+    alternates two. FIG-3: v1/v2 labels crossed the panel frames (cells 20 and 38); they are
+    kept inside now. S-9: the far window's axes labelled. S-4: "The rest of the catalogue"
+    prints each case's must. S-7: the Direct3D page's integer pixel centres named. Summary:
+    llvmpipe an OpenGL rasteriser, not a GPU one. S-1: the dangling sentence gone."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    run = executed("07_hard_cases").notebook()
+    printed = streams(run)
+    cells = _07_sources()
+    text = [" ".join(c.split()) for c in cells]
+
+    def at(start):
+        (i,) = [k for k, c in enumerate(cells) if c.startswith(start)]
+        return i
+
+    gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
+    assert "one colour per triangle; the fan's 16 alternate two" in gpu
+    assert '"the pixel\'s owner, one colour per triangle"' not in gpu
+    # FIG-3: every vertex name of the six-orders figure lies inside its panel's frame
+    imports = cells[1].split("style = use_style")[0].replace("%matplotlib inline\n", "")
+    scope = {}
+    exec(imports + "use_style('classroom')\n" + cells[at("# The lesson's helpers")], scope)
+    shown = {}
+    scope["plt"].show = lambda: shown.setdefault("fig", scope["plt"].gcf())
+    case = scope["hardcases"].get_case("six_vertex_orders")
+    counts = np.zeros((16, 16), dtype=int)
+    names = [f"v{i + 1}" for i in ns.shown_order]
+    scope["ours_vs_naive"](case, counts, counts, case.triangles[1:2], names=names)
+    fig = shown["fig"]
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for axis in fig.axes[:2]:
+        frame = axis.get_window_extent(renderer)
+        for label in axis.texts:
+            box = label.get_window_extent(renderer)
+            assert frame.x0 < box.x0 and box.x1 < frame.x1, label.get_text()
+            assert frame.y0 < box.y0 and box.y1 < frame.y1, label.get_text()
+    plt.close(fig)
+    persp = cells[at('case, ours = introduce("perspective_w_ratio_1e6")')]
+    assert '((-6, -2), "right", "top")' not in persp and "off the frame" in persp
+    # S-9: the window's axes say what their numbers are
+    far = cells[at("q_far.hold()")]
+    assert 'xlabel="column in the window (px)", ylabel="row in the window (px)"' in far
+    # S-4: every remaining case prints its must
+    rest = cells[at('# not "remaining"')]
+    assert 'wrap(case.expect, "    must: ", "    ")' in rest
+    assert printed.count("    must: ") >= 5 and "what it must do" in text[at("## The rest")]
+    # S-7: Direct3D 9's page, integer centres, against this lesson's +0.5
+    split = text[at("## 1. Ties on pixel centres")]
+    assert "Direct3D 9's *Rasterization Rules* page" in split
+    assert "pixel centres at integer coordinates" in split and "+0.5" in split
+    assert "A dashed-looking edge" not in " ".join(text)
+    assert "a real OpenGL rasteriser, draws" in text[-1] and "real GPU rasteriser" not in text[-1]

@@ -172,7 +172,26 @@ def _persp_run(inputs, method) -> Fills:
     )
 
 
-def perspective_errors(inputs, result: Fills) -> list[float]:
+def _float32_perspective(xy, w, f, cols, rows) -> np.ndarray:
+    """Perspective-correct f at pixel centres computed as a GPU's interpolator does, in
+    float32 throughout: λ from the snapped edge functions, then Σ λ_i (f_i / w_i) over
+    Σ λ_i / w_i."""
+    v = snap(xy).astype(np.float32)
+    px = cols.astype(np.float32) + np.float32(0.5)
+    py = rows.astype(np.float32) + np.float32(0.5)
+    (ax, ay), (bx, by), (cx, cy) = v
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    lam = [((cx - bx) * (py - by) - (cy - by) * (px - bx)) / area,
+           ((ax - cx) * (py - cy) - (ay - cy) * (px - cx)) / area,
+           ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) / area]  # fmt: skip
+    inv_w = (np.float32(1) / np.asarray(w, dtype=np.float32)).astype(np.float32)
+    f_w = (np.asarray(f, dtype=np.float32) * inv_w).astype(np.float32)
+    num = sum(lam[i] * f_w[i] for i in range(3))
+    den = sum(lam[i] * inv_w[i] for i in range(3))
+    return (num / den).astype(np.float64)
+
+
+def perspective_errors(inputs, result: Fills, *, float32: bool = False) -> list[float]:
     """The largest error of each fill's attribute against the exact rational
     perspective-correct value (Fractions), over its covered pixels, as a fraction of the
     attribute's range: one number per row of ``inputs["ws"]``.
@@ -182,7 +201,10 @@ def perspective_errors(inputs, result: Fills) -> list[float]:
     inputs : mapping
         A perspective case's inputs (``xy``, ``f``, ``ws``).
     result : Fills
-        Its :meth:`HardCase.run`.
+        Its :meth:`HardCase.run` (its coverage; with ``float32`` its values are not used).
+    float32 : bool
+        Measure a GPU's arithmetic instead of the simulator's float64: λ, 1/w and the two
+        sums in float32 (lesson 07 §4 prints both).
 
     Returns
     -------
@@ -195,7 +217,9 @@ def perspective_errors(inputs, result: Fills) -> list[float]:
         rows, cols = np.nonzero(fill.coverage)
         assert len(rows), "covers nothing"
         exact = _exact_perspective(xy, w, f, cols, rows)
-        errors.append(float(np.max(np.abs(fill.attrs["f"][rows, cols] - exact)) / span))
+        got = (_float32_perspective(xy, w, f, cols, rows) if float32
+               else fill.attrs["f"][rows, cols])  # fmt: skip
+        errors.append(float(np.max(np.abs(got - exact)) / span))
     return errors
 
 
