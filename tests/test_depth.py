@@ -328,6 +328,8 @@ def test_depth_bias_and_slope():
 
     assert np.isclose(depth_bias(0.3, "unorm24", units=2.0), 2 / (2**24 - 1))
     assert depth_bias(0.5, "float32", units=1.0) == np.spacing(np.float32(0.5))
+    assert depth_bias(0.5, "float32", units=-1.0) == -np.spacing(np.float32(0.5))
+    assert depth_bias(0.5, "unorm16") == 0.0  # GL's initial units: no offset
     assert np.isclose(depth_bias(0.5, "float64", units=0.0, slope=0.02, slope_factor=1.5), 0.03)
     tri = np.array([[[0, 0, 0.5], [8, 0, 0.5], [0, 4, 0.9]], [[0, 0, 0], [1, 1, 0], [2, 2, 0]]])
     slopes = max_depth_slope(tri)
@@ -349,12 +351,20 @@ def test_decal_with_depth_bias_wins_the_depth_test():
     from teachraster.pipeline.depth import depth_bias, offset_clip_depth
 
     # A wall and a decal on it (the same plane), the decal drawn second: without a bias
-    # the tie keeps the wall; one unit of bias gives every decal pixel to the decal.
+    # the tie keeps the wall. The offset is ADDED to the depth (GL 4.6 §14.6.5, Direct3D's
+    # DepthBias), so under "less" the decal needs glPolygonOffset(0, -1): then it wins every
+    # pixel; the wrong sign, +1 on the decal, pushes it behind and it loses every pixel.
     wall = np.array([[[-1, -1, 0.3, 1], [3, -1, 0.3, 1], [-1, 3, 0.3, 1]]], dtype=float)
     decal = wall.copy()
     plain = tr.render(np.concatenate([wall, decal]), 8, 8, depth_format="unorm16")
     assert (plain.triangle_id == 0).all()
-    bias = depth_bias(0.65, "unorm16", units=1.0)
-    biased = tr.render(np.concatenate([wall, offset_clip_depth(decal, -bias)]), 8, 8,
-                       depth_format="unorm16")  # fmt: skip
-    assert (biased.triangle_id == 1).all()
+    for units, winner in ((-1.0, 1), (1.0, 0)):
+        bias = depth_bias(0.65, "unorm16", units=units)
+        assert np.sign(bias) == np.sign(units)  # the APIs' sign: o = units * r, added
+        biased = tr.render(np.concatenate([wall, offset_clip_depth(decal, bias)]), 8, 8,
+                           depth_format="unorm16")  # fmt: skip
+        assert (biased.triangle_id == winner).all(), units
+    # the same cure the other way round: +1 on the wall, drawn first, and the decal unbiased
+    pushed = offset_clip_depth(wall, depth_bias(0.65, "unorm16", units=1.0))
+    assert (tr.render(np.concatenate([pushed, decal]), 8, 8, depth_format="unorm16").triangle_id
+            == 1).all()  # fmt: skip

@@ -2029,9 +2029,10 @@ def test_05b_try_it_one_unit_of_bias_loses_where_the_histogram_says_in_the_float
     model = next(c for c in _cells("05b_depth_precision", "code") if "def decal_nearer" in c)
     scope = {**vars(ns), "np": np, "tr": tr, "to_window": to_window}
     exec(model.split("\n\n\n(rows_d")[0], scope)
-    one_unit = depth_bias(ns.window[..., 2].max(axis=1), "unorm24", units=1.0, slope=ns.slopes,
+    # glPolygonOffset(0, -1) on the decal: the offset is added (GL 4.6 §14.6.5), so -1 is nearer
+    one_unit = depth_bias(ns.window[..., 2].max(axis=1), "unorm24", units=-1.0, slope=ns.slopes,
                           slope_factor=0.0)  # fmt: skip
-    decal_1 = offset_clip_depth(ns.decal_clip[12:], -one_unit)
+    decal_1 = offset_clip_depth(ns.decal_clip[12:], one_unit)
     (rows, cols), apart_1 = scope["decal_nearer"](ns.decal_clip[:12], decal_1)
     lost = apart_1 >= 0  # the decal is shown only where it is strictly nearer
     behind = ns.apart >= 1  # the histogram's 1 and 2: one step of bias does not reach
@@ -3268,7 +3269,7 @@ def test_05a_05b_no_answer_in_the_markdown_before_check():
             assert text[k].startswith("q_reverse.hold()"), text[k][:60]
     visible = [t for c, t in zip(cells, text) if c["cell_type"] == "code"
                and not c["metadata"].get("jupyter", {}).get("source_hidden")]  # fmt: skip
-    assert not any("units=float(k)" in t or "units_clip" in t for t in visible)
+    assert not any("float(k)" in t or "units_clip" in t for t in visible)
     a_cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
     a_text = ["".join(c["source"]) for c in a_cells]
     a_ask = next(i for i, t in enumerate(a_text) if "PredictOrder(" in t)

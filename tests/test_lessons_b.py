@@ -1729,9 +1729,10 @@ def test_07_review_r145_reading_order_and_questions():
                 "perspective_w_scale"}  # fmt: skip
     assert not left_out & set(screen_cases())
     assert all(f"`{name}`" in browse for name in left_out)
-    # §4 prints ours' largest error, which the text says stays within 1e-9
-    assert ns.w_ratio_ours < 1e-9 and "(the cell prints its largest error)" in " ".join(
-        cells[at("**Perspective denominators.**")].split()
+    # §4 prints ours' largest error and (review r253 M-1) a GPU's float32 one, no typed bound
+    persp = " ".join(cells[at("**Perspective denominators.**")].split())
+    assert (
+        ns.w_ratio_ours < 1e-9 and "ours (float64) and a GPU's" in persp and "10^{-9}" not in persp
     )
 
 
@@ -5070,18 +5071,20 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
     )
     # FIG-5: llvmpipe's owners keyed; the \\ split is not "the colours of the figures above"
     gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
-    assert "fig.legend(" in gpu and "the pixel's owner, one colour per triangle" in gpu
+    assert "fig.legend(" in gpu and "the pixel's owner: one colour per triangle" in gpu
     gpu_text = " ".join(cells[at("**The same meshes on a GPU.**")].split())
     assert "the colours of the figures above" not in gpu_text and "picker's colours" in gpu_text
-    # M-1: the decal: float64 fights by rounding alone, the others tie; one unit of bias cures all
-    assert ns.cop_fight == 0.01 and ns.cop_overlap == 985
-    assert ns.decal_wins[("float64", 0.01)] == 784
+    # M-1: the decal: float64 fights by rounding alone, the others tie; an offset cures all
+    # (review r253: a small decal inside the wall, 121 px, and the offset's sign: -1 units)
+    assert ns.cop_fight == 0.01 and ns.cop_overlap == 121
+    assert ns.decal_wins[("float64", 0.01)] == 58
     assert not any(n for (fmt, t), n in ns.decal_wins.items() if (fmt, t) != ("float64", 0.01))
-    assert ns.biased_wins == dict.fromkeys(("float64", "float32", "unorm24", "unorm16"), 985)
+    fmts = ("float64", "float32", "unorm24", "unorm16")
+    assert {f: ns.offset_wins[(f, -1.0)] for f in fmts} == dict.fromkeys(fmts, 121)
     decal = _07_held_markdown(run, 'case, ours = introduce("coplanar_overlap")')
-    for said in ("784 of 985 pixels in a speckle", "More bits made it fight",
-                 "`glPolygonOffset`", "`DepthBias`", "**depth bias**", "lesson 05b §5",
-                 "wins all 985 pixels in every format"):  # fmt: skip
+    for said in ("58 of 121 pixels in a speckle", "More bits made it fight",
+                 "`glPolygonOffset(factor, units)`", "`DepthBias`", "**depth bias**",
+                 "lesson 05b §5", "wins all 121 of 121 pixels in every format"):  # fmt: skip
         assert said in decal, said
     summary = " ".join(cells[-1].split())
     assert "enough depth bits for the depth range, or the scene z-fights" not in summary
@@ -5363,3 +5366,142 @@ def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
         in shown
     )
     assert 'explain=f"{int(rejected_tiles.sum())} tiles, marked on the grid' in hiz
+
+
+@pytest.mark.notebook
+def test_07_review_r253_polygon_offset_sign_and_a_visible_decal():
+    """Review r253. F-1: the polygon offset is ADDED to the depth (GL 4.6 §14.6.5, Direct3D's
+    DepthBias), so under "less" the decal needs a negative one, glPolygonOffset(0, -1); the
+    lesson had "units nearer (glPolygonOffset(0, units))" with units = +1. The cell now renders
+    both signs: -1 wins every shared pixel, +1 none. FIG-1: the decal is small and inside the
+    wall (it covered 985 of 1024 pixels, its outline off screen); the figure shows the float64
+    speckle, the tie and the cure. S-5: "fight in every format" qualified."""
+    from notebook_runs import executed
+
+    ns = lesson("07_hard_cases")
+    run = executed("07_hard_cases").notebook()
+    cells = _07_sources()
+    (cop,) = [c for c in cells if c.startswith('case, ours = introduce("coplanar_overlap")')]
+    assert "decal_frame(fmt, 1.0)" not in cop and 'decal_frame("unorm24", 1.0)' not in cop
+    assert "offset_clip_depth(clip[1:], -bias)" not in cop
+    assert "is ADDED to its depth" in cop and '"unorm24, offset (0, −1)"' in cop
+    fmts = ("float64", "float32", "unorm24", "unorm16")
+    for fmt in fmts:  # the right sign wins every shared pixel, the wrong one none
+        assert ns.offset_wins[(fmt, -1.0)] == ns.cop_overlap and ns.offset_wins[(fmt, 1.0)] == 0
+    decal = _07_held_markdown(run, 'case, ours = introduce("coplanar_overlap")')
+    for said in ("**add** the offset to the fragment's depth (GL 4.6 §14.6.5)",
+                 "`glPolygonOffset(0, -1)`", "The wrong sign, +1 on the decal, pushes it behind: 0 "
+                 "pixels", "+1 belongs on the wall", "`glPolygonOffset(-1, -1)`"):  # fmt: skip
+        assert said in decal, said
+    assert "fight in every format" not in decal and "models it in unorm24" in decal
+    # FIG-1: the decal is well inside the wall and both lie inside the image
+    import teachraster as tr
+    from teachraster.pipeline.viewport import to_window
+    from teachraster.study.hardcases import coplanar_clip
+
+    xy = to_window(coplanar_clip(ns.cop_fight), 32, 32)[..., :2]
+    assert ((xy >= 0) & (xy <= 32)).all()  # every outline on screen
+    wall = tr.render(coplanar_clip(0.0)[:1], 32, 32).coverage
+    assert ns.cop_overlap < 0.4 * wall.sum() and wall.sum() < 0.75 * 32 * 32
+    summary = " ".join(cells[-1].split())
+    assert "a *negative* polygon offset on the decal" in summary
+
+
+@pytest.mark.notebook
+def test_05b_review_r253_polygon_offset_is_added_so_the_decal_gets_negative_factors():
+    """Review r253 F-1 (05b §5): the formula was "moved towards the viewer by units·r + ...",
+    next to glPolygonOffset(factor, units); GL adds o = m·factor + r·units to the depth, so the
+    decal's factors are negative, glPolygonOffset(-1, -1), and the code passes them so."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    text = [" ".join("".join(c["source"]).split()) for c in nb["cells"]]
+    assert not any("moved towards the viewer by" in t for t in text)
+    (sec5,) = [t for t in text if t.startswith("## 5. Depth bias")]
+    assert "gets an offset **added** to it" in sec5 and "`glPolygonOffset(-1, -1)`" in sec5
+    assert "both add the offset to the fragment's depth" in sec5
+    code = "".join(t for c, t in zip(nb["cells"], text) if c["cell_type"] == "code")
+    assert "units=-1.0, slope=slopes, slope_factor=-1.0" in code
+    assert "offset_clip_depth(decal_clip[12:], -bias)" not in code
+    assert "units=-float(k)" in code and "-bias_k" not in code
+
+
+@pytest.mark.notebook
+def test_07_review_r253_float32_perspective_column_backs_the_summary():
+    """Review r253 M-1: §4 measured only the simulator (float64, "within 1e-9", 2.2e-16) while
+    the summary said "float32 1/w handles ratios like 1e6". The cell now prints a float32
+    column (λ, 1/w and both sums in float32, a GPU's interpolator) per w set: 1.3e-10, 1.4e-7,
+    2.6e-8 of the range, as the reader measured."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
+    f32 = ns.w_errors["float32 λ/w"]
+    assert [float(f"{e:.1e}") for e in f32] == [1.3e-10, 1.4e-7, 2.6e-8]
+    assert ns.w_ratio_f32 == max(f32) < 2e-7 and ns.w_ratio_ours < 1e-15
+    assert "float32 λ/w" in printed and "1.4e-07" in printed and "0.001, 1000, 1000" in printed
+    summary = " ".join(_07_sources()[-1].split())
+    assert "float32 $\\lambda/w$ handles ratios like $10^6$ (§4's float32 column" in summary
+
+
+@pytest.mark.notebook
+def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
+    """Review r253. FIG-2: llvmpipe's key said "one colour per triangle" while the fan panel
+    alternates two. FIG-3: v1/v2 labels crossed the panel frames (cells 20 and 38); they are
+    kept inside now. S-9: the far window's axes labelled. S-4: "The rest of the catalogue"
+    prints each case's must. S-7: the Direct3D page's integer pixel centres named. Summary:
+    llvmpipe an OpenGL rasteriser, not a GPU one. S-1: the dangling sentence gone."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    run = executed("07_hard_cases").notebook()
+    printed = streams(run)
+    cells = _07_sources()
+    text = [" ".join(c.split()) for c in cells]
+
+    def at(start):
+        (i,) = [k for k, c in enumerate(cells) if c.startswith(start)]
+        return i
+
+    gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
+    assert "one colour per triangle; the fan's 16 alternate two" in gpu
+    assert '"the pixel\'s owner, one colour per triangle"' not in gpu
+    # FIG-3: every vertex name of the six-orders figure lies inside its panel's frame
+    imports = cells[1].split("style = use_style")[0].replace("%matplotlib inline\n", "")
+    scope = {}
+    exec(imports + "use_style('classroom')\n" + cells[at("# The lesson's helpers")], scope)
+    shown = {}
+    scope["plt"].show = lambda: shown.setdefault("fig", scope["plt"].gcf())
+    case = scope["hardcases"].get_case("six_vertex_orders")
+    counts = np.zeros((16, 16), dtype=int)
+    names = [f"v{i + 1}" for i in ns.shown_order]
+    scope["ours_vs_naive"](case, counts, counts, case.triangles[1:2], names=names)
+    fig = shown["fig"]
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for axis in fig.axes[:2]:
+        frame = axis.get_window_extent(renderer)
+        for label in axis.texts:
+            box = label.get_window_extent(renderer)
+            assert frame.x0 < box.x0 and box.x1 < frame.x1, label.get_text()
+            assert frame.y0 < box.y0 and box.y1 < frame.y1, label.get_text()
+    plt.close(fig)
+    persp = cells[at('case, ours = introduce("perspective_w_ratio_1e6")')]
+    assert '((-6, -2), "right", "top")' not in persp and "off the frame" in persp
+    # S-9: the window's axes say what their numbers are
+    far = cells[at("q_far.hold()")]
+    assert 'xlabel="column in the window (px)", ylabel="row in the window (px)"' in far
+    # S-4: every remaining case prints its must
+    rest = cells[at('# not "remaining"')]
+    assert 'wrap(case.expect, "    must: ", "    ")' in rest
+    assert printed.count("    must: ") >= 5 and "what it must do" in text[at("## The rest")]
+    # S-7: Direct3D 9's page, integer centres, against this lesson's +0.5
+    split = text[at("## 1. Ties on pixel centres")]
+    assert "Direct3D 9's *Rasterization Rules* page" in split
+    assert "pixel centres at integer coordinates" in split and "+0.5" in split
+    assert "A dashed-looking edge" not in " ".join(text)
+    assert "a real OpenGL rasteriser, draws" in text[-1] and "real GPU rasteriser" not in text[-1]

@@ -19,8 +19,9 @@ is stored matters as much as how many bits store it:
   the resolution.
 
 :func:`depth_bias` is Direct3D's / OpenGL's polygon offset (``DepthBias`` and
-``SlopeScaledDepthBias``, ``glPolygonOffset(factor, units)``): a per-triangle constant added to
-the window depth so a decal lying on a wall wins the test; :func:`max_depth_slope` gives the
+``SlopeScaledDepthBias``, ``glPolygonOffset(factor, units)``): a per-triangle offset added to
+the window depth, negative on a decal lying on a wall so that it wins the "less" test (or
+positive on the wall); :func:`max_depth_slope` gives the
 slope term and :func:`offset_clip_depth` applies a window-depth offset to clip-space triangles.
 
 Because the hyperbola flattens out with distance, one step of a 16- or 24-bit buffer spans a
@@ -340,18 +341,22 @@ def max_depth_slope(window) -> np.ndarray:
     return np.where(det == 0, np.nan, out)
 
 
-def depth_bias(depth, fmt: str, *, units: float = 1.0, slope: float = 0.0,
+def depth_bias(depth, fmt: str, *, units: float = 0.0, slope: float = 0.0,
                slope_factor: float = 0.0) -> np.ndarray:  # fmt: skip
-    """Polygon offset: ``units * r + slope_factor * slope``, the amount to move a depth nearer.
+    """Polygon offset ``o = units * r + slope_factor * slope``, **added** to the window depth.
 
-    Direct3D 11 computes ``DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope``
-    (OpenGL's ``glPolygonOffset(factor, units)`` is ``factor * slope + units * r``), where
+    The sign is the APIs': OpenGL 4.6 §14.6.5 (*Depth Offset*) adds
+    ``o = m * factor + r * units`` (``glPolygonOffset(factor, units)``) to each fragment's
+    depth before the depth test, and Direct3D 11 adds
+    ``DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope``; both factors may be negative.
     ``r`` is the smallest difference the depth buffer resolves at ``depth``: one step of the
     format (``1 / (2**B - 1)`` for unorm, the float spacing at ``depth`` for floats; Direct3D
-    takes the exponent of the triangle's largest depth, which is the same step). A decal drawn
-    on a wall with ``units >= 1`` stores a depth at least one step nearer, so it wins the depth
-    test instead of z-fighting; the slope term keeps that true across a steep triangle, whose
-    interpolated depths differ by more than one step from pixel to pixel.
+    takes the exponent of the triangle's largest depth, which is the same step). With the
+    default "less" test (smaller is nearer) a decal drawn on a wall therefore gets **negative**
+    factors, ``glPolygonOffset(-1, -1)``: ``units <= -1`` stores it at least one step nearer, so
+    it wins instead of z-fighting (positive factors on the wall do the same; with reverse-Z,
+    where larger is nearer, the signs flip). The slope term keeps that true across a steep
+    triangle, whose interpolated depths differ by more than one step from pixel to pixel.
 
     Parameters
     ----------
@@ -359,19 +364,20 @@ def depth_bias(depth, fmt: str, *, units: float = 1.0, slope: float = 0.0,
         Stored depth(s) where the offset applies (its step sets ``r``).
     fmt : {"float64", "float32", "unorm24", "unorm16"}
     units, slope_factor : float
-        The constant and slope-scaled factors.
+        The constant and slope-scaled factors (GL's ``units`` and ``factor``), signed; 0 by
+        default, as in GL.
     slope : float or array-like
-        :func:`max_depth_slope` of the triangle (depth per pixel).
+        :func:`max_depth_slope` of the triangle (depth per pixel, >= 0).
 
     Returns
     -------
-    float64 ndarray: the offset, >= 0 for non-negative factors. Subtract it (smaller is nearer)
-    or, with reverse-Z, add it.
+    float64 ndarray: the offset ``o``, to add to the window depth
+    (:func:`offset_clip_depth`); negative for negative factors.
 
     Examples
     --------
-    >>> float(depth_bias(0.5, "unorm16", units=1.0) * 65535)
-    1.0
+    >>> float(depth_bias(0.5, "unorm16", units=-1.0) * 65535)   # a decal: one step nearer
+    -1.0
     >>> float(depth_bias(0.5, "float32", units=2.0)) == 2 * float(np.spacing(np.float32(0.5)))
     True
     """
@@ -386,7 +392,8 @@ def offset_clip_depth(clip, offset) -> np.ndarray:
     Window depth is ``z / (2 w) + 1/2`` (CONVENTIONS), so adding ``2 * offset * w`` to clip
     z moves the window depth of every point of the triangle by exactly ``offset`` and changes
     nothing else: ``x``, ``y`` and ``w`` (hence coverage and interpolation) are untouched. Pass
-    ``-depth_bias(...)`` to pull a decal nearer (smaller is nearer).
+    ``depth_bias(...)`` as it is, the APIs' polygon offset added to the depth: negative units
+    pull a decal nearer (smaller is nearer).
 
     Parameters
     ----------
