@@ -3696,3 +3696,56 @@ def test_05a_r158_words_conventions_prepass_and_try_it():
                   "`glDisable(GL_DEPTH_TEST)`"):  # fmt: skip
         assert any(line.startswith(f"| {state}") for line in text["c02_off"].splitlines())
     assert max(len(p) for p in text["c02"].split("\n\n")) < 600  # no 25-line paragraph
+
+
+def _page_start(slider) -> float:
+    """The value the page's FloatLogSlider sends back when it is drawn: noUiSlider (bundled
+    with ipywidgets 8) puts its start on the nearest step, in percent of the range
+    (``toStepping``, ``getStep``, ``fromStepping``), and the view sends base ** that."""
+    import math
+
+    lo, hi = slider.min, slider.max
+    at = math.log(slider.value) / math.log(slider.base)
+    pct = 100.0 if at >= hi else 100 * (at - lo) / (hi - lo)
+    if pct != 100:
+        step = 100 * slider.step / (hi - lo)
+        pct = math.floor(pct / step + 0.5) * step  # JavaScript's Math.round
+    snapped = hi if pct >= 100 else pct * (hi - lo) / 100 + lo
+    return slider.base**snapped
+
+
+def test_00_r256_the_editor_starts_at_the_tours_w():
+    """Review r256 W1: the editor's w sliders ran on a log grid from log10(0.2) in steps of
+    0.01; the page put their start on that grid and sent it back, so the tour triangle's
+    w3 = 4 became 3.99 (w1 1.0024) and the editor said 0.151 where cells 12 and 13 say
+    0.152. Each w slider's grid now runs through its own start, so what the page sends back
+    is the tour's w = 1, 2, 4 (to the last ulp the editor rounds off), and the editor's first
+    numbers are the cells'."""
+    from ipywidgets import FloatLogSlider
+    from notebook_runs import executed, streams
+
+    from teachraster.widgets.editor import W_STEP, w_grid, w_value
+
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    ns = _run_tour_cells("tour-drag", tri=tri, W=16, H=16)
+    editor = ns["editor"]
+    for slider, w in zip(editor.w, tri.w):
+        sent = _page_start(slider)
+        assert abs(sent - w) < 1e-12 * w and w_value(sent) == w
+        assert 10**slider.min <= 0.2 + 1e-12 and 10**slider.max >= 10 - 1e-9
+        slider.value = sent  # what the page does on drawing the slider
+    assert editor.w_values.tolist() == [1.0, 2.0, 4.0]
+    gap = f"{editor.interp_view.maximum:.3f}"
+    assert f"largest |affine − perspective| of u = {gap}" in editor.info.value
+    printed = streams(executed("00_tour").notebook())
+    assert gap == "0.152" and f"largest |affine - perspective| at the 59 centres: {gap}" in printed
+    assert "differ by up to 0.152" in " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    # the grid of any start: on it, within W_RANGE or beyond it to hold the start
+    for w in (0.05, 0.2, 0.7, 3.7, 10.0, 25.0):
+        lo, hi = w_grid(w)
+        assert lo <= min(np.log10(0.2), np.log10(w)) + 1e-12
+        assert hi >= np.log10(max(10, w)) - 1e-12
+        start = FloatLogSlider(value=w, min=lo, max=hi, step=W_STEP)
+        assert w_value(_page_start(start)) == w
+    editor.close()
