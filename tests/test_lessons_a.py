@@ -651,7 +651,7 @@ def test_00_r249_the_cubes_two_fragments_are_asked_and_explained():
     for phrase in ("two fragments", "2 per covered pixel", "half the fragments", "exactly"):
         assert phrase not in before, phrase
     asked = text[ask]
-    assert "answer=fragments_answer," in asked and "choices=[HIDDEN, EXACT, EDGES]," in asked
+    assert "answer=fragments_answer," in asked and "choices=[OUTLINE, EXACT, EDGES]," in asked
     # the answer is the render's, pixel by pixel: 2 at every covered pixel
     assert ns.counts == {2: ns.covered} and ns.covered == 8130 and ns.per_pixel.min() == 2
     assert ns.fragments_answer == ns.EXACT and ns.fragments == 2 * ns.covered
@@ -3749,3 +3749,20 @@ def test_00_r256_the_editor_starts_at_the_tours_w():
         start = FloatLogSlider(value=w, min=lo, max=hi, step=W_STEP)
         assert w_value(_page_start(start)) == w
     editor.close()
+
+
+def test_00_r256_the_cube_question_has_three_live_choices():
+    """Review r256 P1: the cube question's first choice ("1 at most pixels: the faces turned
+    away lie behind the others") was ruled out by its own stem and by the text above it
+    (culling off: every face is rasterised). Its third choice is now a live misconception,
+    1 fragment along the outline where the near and far faces meet, with a note on why not;
+    the answer is still the render's, pixel by pixel."""
+    ns = lesson("00_tour")
+    asked = _tour_code("tour-q-fragments")
+    assert "the faces turned away lie behind the others" not in asked
+    assert ns.OUTLINE.startswith("2 inside the outline, but 1 along it")
+    assert "choices=[OUTLINE, EXACT, EDGES]," in asked
+    assert 'OUTLINE: "Along the outline' in asked and "2 or none, never 1" in asked
+    # the outline is where the lure says the count drops; the render has 2 there too
+    assert ns.outline.sum() > 100 and (ns.frame.overlay("overdraw")[ns.outline] == 2).all()
+    assert not ns.odd.any() and ns.fragments_answer == ns.EXACT
