@@ -3766,3 +3766,13 @@ def test_00_r256_the_cube_question_has_three_live_choices():
     # the outline is where the lure says the count drops; the render has 2 there too
     assert ns.outline.sum() > 100 and (ns.frame.overlay("overdraw")[ns.outline] == 2).all()
     assert not ns.odd.any() and ns.fragments_answer == ns.EXACT
+
+
+def test_00_r256_every_widget_showing_the_facing_waits_for_q_facing():
+    """Review r256 P2: the player's first step says "clockwise on screen (back-facing)" and
+    draws the arrows v1 -> v2 -> v3, the answer to q_facing, but it was held only behind the
+    questions on the fills and on u. Like the map and the editor, it now waits for q_facing."""
+    for cell_id, widget in (("c07", "FillPlayer("), ("c03c-map", "PipelineMap("),
+                            ("tour-drag", "TriangleEditor(")):  # fmt: skip
+        cell = _tour_code(cell_id)
+        assert widget in cell and cell.startswith("q_facing.hold()"), cell_id
