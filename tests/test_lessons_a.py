@@ -3776,3 +3776,29 @@ def test_00_r256_every_widget_showing_the_facing_waits_for_q_facing():
                             ("tour-drag", "TriangleEditor(")):  # fmt: skip
         cell = _tour_code(cell_id)
         assert widget in cell and cell.startswith("q_facing.hold()"), cell_id
+
+
+def test_00_r256_the_edge_function_is_written_and_decides_the_facing():
+    """Review r256 change 2 (M2): E(a, b, p) = (b - a) × (p - a) was only in the folded
+    symbols table. The text on the two fills writes it out (Ek's test function f01), and the
+    facing answer gives E12's sign, at each of the column's centres in its figure and at the
+    tour's v3 (+119.22, twice the signed area 59.61 the next cell prints)."""
+    md = " ".join(
+        next(t for t in _cells("00_tour", "markdown") if "## Two ways to fill" in t).split()
+    )
+    formula = (r"$E(\mathbf{a}, \mathbf{b}, \mathbf{p}) = (\mathbf{b} - \mathbf{a}) \times "
+               r"(\mathbf{p} - \mathbf{a}) = (b_x - a_x)(p_y - a_y) - (b_y - a_y)(p_x - a_x)$")  # fmt: skip
+    assert formula in md and "Ek's test function $f_{01}$" in md
+    ns = _run_tour_cells("9e51dee3")
+    assert ((ns["e12"] < 0) == ns["makes_front"][:, ns["column"]]).all()
+    explain = ns["q_facing"].explain
+    assert "<b>edge function</b> <i>E</i><sub>12</sub>(v3) = (v2 − v1) × (v3 − v1)" in explain
+    assert "<i>E</i><sub>12</sub>(v3) = +119.22" in explain
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]])
+    assert f"{tri.signed_area:.2f}" == "59.61"
+    fig = ns["facing_figure"]()
+    signs = [t.get_text() for t in fig.axes[0].texts if t.get_text() in ("−", "+")]
+    assert signs == ["−" if e < 0 else "+" for e in ns["e12"]]
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == ["v3 here: front, E12 < 0", "back, E12 > 0"]
+    plt.close(fig)
