@@ -232,9 +232,9 @@ def test_00_facing_and_the_two_methods():
     # the split caption names the split height by both names (review r2 00-3)
     assert "split at y = v_mid = " in ns.span.trace.caption(4)
     # review r22 00-2: row 1's centre y = 1.5 is on the box's top edge and is tested (closed
-    # box); the explanation (a widget: not among the globals) says so when it is
+    # box); review r256 S4 left that digression to lessons 02 and 10: the explanation gives
+    # the rows the box's centres span, row 1 included
     assert ns.box.ymin == ns.box.row0 + 0.5 == 1.5
-    assert "on the box's top edge" in "\n".join(_cells("00_tour", "code"))
     # review r45 00-2: q_centres asks for the covered share (59 of 144: 41 %), which needs
     # "a triangle fills at most half of its box", not a count of columns and rows; the
     # held cell prints it
@@ -660,7 +660,7 @@ def test_00_r249_the_cubes_two_fragments_are_asked_and_explained():
     # the explanation: closed and convex, exact shared edges, the top-left rule for ties
     explain = " ".join(asked.split("explain=")[1].split())
     for words in ("closed and convex", "from the same snapped vertices", "<b>top-left rule</b>",
-                  "exactly one covers a centre on it", "lesson 02 §5"):  # fmt: skip
+                  "exactly one covers a centre on it", "(lesson 02 §5)"):  # fmt: skip
         assert words in explain, words
     assert ns.ties == 0 and "no centre of this view lies exactly on an edge" in asked
     # the square: its shared diagonal through 10 centres, once each under the rule, twice
@@ -3345,7 +3345,7 @@ def test_00_04_r97_items():
     tour = "\n".join(_cells("00_tour", "code"))
     assert "46 %, is right" not in tour and "larger still" not in tour
     assert "the answer is covered_share (41 %); the area ratio, area_share (46 %), is not" in tour
-    assert "The share of centres is lower still because the box holds more centres" in tour
+    assert "The share of centres is lower" in tour and "holds the centres of columns" in tour
     nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
     cells, text = nb["cells"], ["".join(c["source"]) for c in nb["cells"]]
     boxed = [i for i, t in enumerate(text) if r"\boxed{t =" in t]
@@ -3802,3 +3802,28 @@ def test_00_r256_the_edge_function_is_written_and_decides_the_facing():
     labels = [t.get_text() for t in fig.legends[0].get_texts()]
     assert labels == ["v3 here: front, E12 < 0", "back, E12 > 0"]
     plt.close(fig)
+
+
+def test_00_r256_answers_and_the_conventions_paragraph_halved():
+    """Review r256 S1 and S4: the three longest answers ran to about 190 (q_centres), 200
+    (q_half) and 230 words (q_fragments), and cell 0 spent six lines on where CONVENTIONS.md
+    lies. Each answer is now at most 120 words, with the numbers it quotes; cell 0 gives the
+    file one link and its repository address; cell 14's link has no nested brackets."""
+    ns = _run_tour_cells("c03", "64b56d27", "tour-side-view", "tour-q-half", "tour-q-fragments",
+                         W=16, H=16)  # fmt: skip
+    for q, words in (("q_centres", ("41 % (59 of 144 centres)", "12 × 12 = 144", "46 %")),
+                     ("q_half", ("0.333:", "and divide", "not 0.5")),
+                     ("q_fragments", ("Exactly 2, at all 8,130", "closed and convex"))):  # fmt: skip
+        text = re.sub(r"<[^>]+>", "", ns[q].explain)
+        assert len(text.split()) <= 120, (q, len(text.split()))
+        for w in words:
+            assert w in text, (q, w)
+    assert "the box is closed" not in ns["q_centres"].explain
+    plt.close("all")
+    first = " ".join(_cells("00_tour", "markdown")[0].split())
+    assert "one folder up from this notebook" not in first and "Each link to it below" not in first
+    assert "[`CONVENTIONS.md`](CONVENTIONS.md)" in first and "(../CONVENTIONS.md)" in first
+    assert "`teachraster html`" not in first
+    depth = next(t for t in _cells("00_tour", "markdown") if t.startswith("**Depth needs"))
+    assert "(../CONVENTIONS.md)), *Interpolation*)" not in depth
+    assert "(*Interpolation* in [CONVENTIONS.md](CONVENTIONS.md); [in the repository]" in depth
