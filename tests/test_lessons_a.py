@@ -232,9 +232,9 @@ def test_00_facing_and_the_two_methods():
     # the split caption names the split height by both names (review r2 00-3)
     assert "split at v = v_mid = " in ns.span.trace.caption(4)  # r251 01-S1: heights as v
     # review r22 00-2: row 1's centre y = 1.5 is on the box's top edge and is tested (closed
-    # box); the explanation (a widget: not among the globals) says so when it is
+    # box); review r256 S4 left that digression to lessons 02 and 10: the explanation gives
+    # the rows the box's centres span, row 1 included
     assert ns.box.ymin == ns.box.row0 + 0.5 == 1.5
-    assert "on the box's top edge" in "\n".join(_cells("00_tour", "code"))
     # review r45 00-2: q_centres asks for the covered share (59 of 144: 41 %), which needs
     # "a triangle fills at most half of its box", not a count of columns and rows; the
     # held cell prints it
@@ -651,7 +651,7 @@ def test_00_r249_the_cubes_two_fragments_are_asked_and_explained():
     for phrase in ("two fragments", "2 per covered pixel", "half the fragments", "exactly"):
         assert phrase not in before, phrase
     asked = text[ask]
-    assert "answer=fragments_answer," in asked and "choices=[HIDDEN, EXACT, EDGES]," in asked
+    assert "answer=fragments_answer," in asked and "choices=[OUTLINE, EXACT, EDGES]," in asked
     # the answer is the render's, pixel by pixel: 2 at every covered pixel
     assert ns.counts == {2: ns.covered} and ns.covered == 8130 and ns.per_pixel.min() == 2
     assert ns.fragments_answer == ns.EXACT and ns.fragments == 2 * ns.covered
@@ -660,7 +660,7 @@ def test_00_r249_the_cubes_two_fragments_are_asked_and_explained():
     # the explanation: closed and convex, exact shared edges, the top-left rule for ties
     explain = " ".join(asked.split("explain=")[1].split())
     for words in ("closed and convex", "from the same snapped vertices", "<b>top-left rule</b>",
-                  "exactly one covers a centre on it", "lesson 02 §5"):  # fmt: skip
+                  "exactly one covers a centre on it", "(lesson 02 §5)"):  # fmt: skip
         assert words in explain, words
     assert ns.ties == 0 and "no centre of this view lies exactly on an edge" in asked
     # the square: its shared diagonal through 10 centres, once each under the rule, twice
@@ -3368,7 +3368,7 @@ def test_00_04_r97_items():
     tour = "\n".join(_cells("00_tour", "code"))
     assert "46 %, is right" not in tour and "larger still" not in tour
     assert "the answer is covered_share (41 %); the area ratio, area_share (46 %), is not" in tour
-    assert "The share of centres is lower still because the box holds more centres" in tour
+    assert "The share of centres is lower" in tour and "holds the centres of columns" in tour
     nb = json.loads((NOTEBOOKS / "04_perspective_correct_interpolation.ipynb").read_text())
     cells, text = nb["cells"], ["".join(c["source"]) for c in nb["cells"]]
     boxed = [i for i, t in enumerate(text) if r"\boxed{t =" in t]
@@ -3719,3 +3719,134 @@ def test_05a_r158_words_conventions_prepass_and_try_it():
                   "`glDisable(GL_DEPTH_TEST)`"):  # fmt: skip
         assert any(line.startswith(f"| {state}") for line in text["c02_off"].splitlines())
     assert max(len(p) for p in text["c02"].split("\n\n")) < 600  # no 25-line paragraph
+
+
+def _page_start(slider) -> float:
+    """The value the page's FloatLogSlider sends back when it is drawn: noUiSlider (bundled
+    with ipywidgets 8) puts its start on the nearest step, in percent of the range
+    (``toStepping``, ``getStep``, ``fromStepping``), and the view sends base ** that."""
+    import math
+
+    lo, hi = slider.min, slider.max
+    at = math.log(slider.value) / math.log(slider.base)
+    pct = 100.0 if at >= hi else 100 * (at - lo) / (hi - lo)
+    if pct != 100:
+        step = 100 * slider.step / (hi - lo)
+        pct = math.floor(pct / step + 0.5) * step  # JavaScript's Math.round
+    snapped = hi if pct >= 100 else pct * (hi - lo) / 100 + lo
+    return slider.base**snapped
+
+
+def test_00_r256_the_editor_starts_at_the_tours_w():
+    """Review r256 W1: the editor's w sliders ran on a log grid from log10(0.2) in steps of
+    0.01; the page put their start on that grid and sent it back, so the tour triangle's
+    w3 = 4 became 3.99 (w1 1.0024) and the editor said 0.151 where cells 12 and 13 say
+    0.152. Each w slider's grid now runs through its own start, so what the page sends back
+    is the tour's w = 1, 2, 4 (to the last ulp the editor rounds off), and the editor's first
+    numbers are the cells'."""
+    from ipywidgets import FloatLogSlider
+    from notebook_runs import executed, streams
+
+    from teachraster.widgets.editor import W_STEP, w_grid, w_value
+
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    ns = _run_tour_cells("tour-drag", tri=tri, W=16, H=16)
+    editor = ns["editor"]
+    for slider, w in zip(editor.w, tri.w):
+        sent = _page_start(slider)
+        assert abs(sent - w) < 1e-12 * w and w_value(sent) == w
+        assert 10**slider.min <= 0.2 + 1e-12 and 10**slider.max >= 10 - 1e-9
+        slider.value = sent  # what the page does on drawing the slider
+    assert editor.w_values.tolist() == [1.0, 2.0, 4.0]
+    gap = f"{editor.interp_view.maximum:.3f}"
+    assert f"largest |affine − perspective| of u = {gap}" in editor.info.value
+    printed = streams(executed("00_tour").notebook())
+    assert gap == "0.152" and f"largest |affine - perspective| at the 59 centres: {gap}" in printed
+    assert "differ by up to 0.152" in " ".join(" ".join(_cells("00_tour", "markdown")).split())
+    # the grid of any start: on it, within W_RANGE or beyond it to hold the start
+    for w in (0.05, 0.2, 0.7, 3.7, 10.0, 25.0):
+        lo, hi = w_grid(w)
+        assert lo <= min(np.log10(0.2), np.log10(w)) + 1e-12
+        assert hi >= np.log10(max(10, w)) - 1e-12
+        start = FloatLogSlider(value=w, min=lo, max=hi, step=W_STEP)
+        assert w_value(_page_start(start)) == w
+    editor.close()
+
+
+def test_00_r256_the_cube_question_has_three_live_choices():
+    """Review r256 P1: the cube question's first choice ("1 at most pixels: the faces turned
+    away lie behind the others") was ruled out by its own stem and by the text above it
+    (culling off: every face is rasterised). Its third choice is now a live misconception,
+    1 fragment along the outline where the near and far faces meet, with a note on why not;
+    the answer is still the render's, pixel by pixel."""
+    ns = lesson("00_tour")
+    asked = _tour_code("tour-q-fragments")
+    assert "the faces turned away lie behind the others" not in asked
+    assert ns.OUTLINE.startswith("2 inside the outline, but 1 along it")
+    assert "choices=[OUTLINE, EXACT, EDGES]," in asked
+    assert 'OUTLINE: "Along the outline' in asked and "2 or none, never 1" in asked
+    # the outline is where the lure says the count drops; the render has 2 there too
+    assert ns.outline.sum() > 100 and (ns.frame.overlay("overdraw")[ns.outline] == 2).all()
+    assert not ns.odd.any() and ns.fragments_answer == ns.EXACT
+
+
+def test_00_r256_every_widget_showing_the_facing_waits_for_q_facing():
+    """Review r256 P2: the player's first step says "clockwise on screen (back-facing)" and
+    draws the arrows v1 -> v2 -> v3, the answer to q_facing, but it was held only behind the
+    questions on the fills and on u. Like the map and the editor, it now waits for q_facing."""
+    for cell_id, widget in (("c07", "FillPlayer("), ("c03c-map", "PipelineMap("),
+                            ("tour-drag", "TriangleEditor(")):  # fmt: skip
+        cell = _tour_code(cell_id)
+        assert widget in cell and cell.startswith("q_facing.hold()"), cell_id
+
+
+def test_00_r256_the_edge_function_is_written_and_decides_the_facing():
+    """Review r256 change 2 (M2): E(a, b, p) = (b - a) × (p - a) was only in the folded
+    symbols table. The text on the two fills writes it out (Ek's test function f01), and the
+    facing answer gives E12's sign, at each of the column's centres in its figure and at the
+    tour's v3 (+119.22, twice the signed area 59.61 the next cell prints)."""
+    md = " ".join(
+        next(t for t in _cells("00_tour", "markdown") if "## Two ways to fill" in t).split()
+    )
+    formula = (r"$E(\mathbf{a}, \mathbf{b}, \mathbf{p}) = (\mathbf{b} - \mathbf{a}) \times "
+               r"(\mathbf{p} - \mathbf{a}) = (b_x - a_x)(p_y - a_y) - (b_y - a_y)(p_x - a_x)$")  # fmt: skip
+    assert formula in md and "Ek's test function $f_{01}$" in md
+    ns = _run_tour_cells("9e51dee3")
+    assert ((ns["e12"] < 0) == ns["makes_front"][:, ns["column"]]).all()
+    explain = ns["q_facing"].explain
+    assert "<b>edge function</b> <i>E</i><sub>12</sub>(v3) = (v2 − v1) × (v3 − v1)" in explain
+    assert "<i>E</i><sub>12</sub>(v3) = +119.22" in explain
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]])
+    assert f"{tri.signed_area:.2f}" == "59.61"
+    fig = ns["facing_figure"]()
+    signs = [t.get_text() for t in fig.axes[0].texts if t.get_text() in ("−", "+")]
+    assert signs == ["−" if e < 0 else "+" for e in ns["e12"]]
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == ["v3 here: front, E12 < 0", "back, E12 > 0"]
+    plt.close(fig)
+
+
+def test_00_r256_answers_and_the_conventions_paragraph_halved():
+    """Review r256 S1 and S4: the three longest answers ran to about 190 (q_centres), 200
+    (q_half) and 230 words (q_fragments), and cell 0 spent six lines on where CONVENTIONS.md
+    lies. Each answer is now at most 120 words, with the numbers it quotes; cell 0 gives the
+    file one link and its repository address; cell 14's link has no nested brackets."""
+    ns = _run_tour_cells("c03", "64b56d27", "tour-side-view", "tour-q-half", "tour-q-fragments",
+                         W=16, H=16)  # fmt: skip
+    for q, words in (("q_centres", ("41 % (59 of 144 centres)", "12 × 12 = 144", "46 %")),
+                     ("q_half", ("0.333:", "and divide", "not 0.5")),
+                     ("q_fragments", ("Exactly 2, at all 8,130", "closed and convex"))):  # fmt: skip
+        text = re.sub(r"<[^>]+>", "", ns[q].explain)
+        assert len(text.split()) <= 120, (q, len(text.split()))
+        for w in words:
+            assert w in text, (q, w)
+    assert "the box is closed" not in ns["q_centres"].explain
+    plt.close("all")
+    first = " ".join(_cells("00_tour", "markdown")[0].split())
+    assert "one folder up from this notebook" not in first and "Each link to it below" not in first
+    assert "[`CONVENTIONS.md`](CONVENTIONS.md)" in first and "(../CONVENTIONS.md)" in first
+    assert "`teachraster html`" not in first
+    depth = next(t for t in _cells("00_tour", "markdown") if t.startswith("**Depth needs"))
+    assert "(../CONVENTIONS.md)), *Interpolation*)" not in depth
+    assert "(*Interpolation* in [CONVENTIONS.md](CONVENTIONS.md); [in the repository]" in depth

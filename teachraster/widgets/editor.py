@@ -55,6 +55,32 @@ STEP_ONLY = {"pixel under test, × centre", "raster line, its pixels", "span x_l
 #: ratios, which is what perspective depends on).
 W_RANGE = (0.2, 10.0)
 
+#: Step of the w sliders in log10 w: 30 steps per doubling (about 2.3 % each).
+W_STEP = math.log10(2) / 30
+
+
+def w_grid(w: float) -> tuple[float, float]:
+    """(min, max) in log10 of a w slider that starts at ``w``: W_RANGE (or more, to hold
+    ``w``) on a grid of W_STEP that runs through ``w`` itself.
+
+    The page snaps a log slider's start to min + k·step and sends that back: with a grid
+    from log10(0.2), the tour's w3 = 4 came back as 3.99 (review r256 W1).
+
+    >>> lo, hi = w_grid(4.0)
+    >>> round((math.log10(4.0) - lo) / W_STEP, 9) % 1, 10**lo <= 0.2, 10**hi >= 10
+    (0.0, True, True)
+    """
+    at = math.log10(w)
+    below = math.ceil(round((at - math.log10(W_RANGE[0])) / W_STEP, 9))
+    above = math.ceil(round((math.log10(W_RANGE[1]) - at) / W_STEP, 9))
+    return at - max(below, 0) * W_STEP, at + max(above, 0) * W_STEP
+
+
+def w_value(value: float) -> float:
+    """A w slider's value to 12 significant digits: the page sends base**(min + k·step),
+    an ulp or two off the w it started at (4.000000000000001 for 4)."""
+    return float(f"{float(value):.12g}")
+
 
 class TriangleEditor(Holdable):
     """Edit a triangle's vertices (x, y and w) and see the fill, u4 and the error heatmap follow.
@@ -174,8 +200,8 @@ class TriangleEditor(Holdable):
                                     max=on_grid(max(float(height), xy[i, 1]), 1), step=GRID,
                                     description=f"y{i + 1} (px)", readout_format=".2f",
                                     style=style_kw, layout=layout)  # fmt: skip
-            lo, hi = math.log10(min(W_RANGE[0], w[i])), math.log10(max(W_RANGE[1], w[i]))
-            wi = widgets.FloatLogSlider(value=w[i], base=10, min=lo, max=hi, step=0.01,
+            lo, hi = w_grid(w[i])  # the grid runs through w[i]: the page keeps it exact
+            wi = widgets.FloatLogSlider(value=w[i], base=10, min=lo, max=hi, step=W_STEP,
                                         description=f"w{i + 1} (depth)", readout_format=".2f",
                                         style=style_kw, layout=layout)  # fmt: skip
             for s in (x, y, wi):
@@ -349,8 +375,8 @@ class TriangleEditor(Holdable):
 
     @property
     def w_values(self) -> np.ndarray:
-        """(3,) w set on the sliders."""
-        return np.array([s.value for s in self.w])
+        """(3,) w set on the sliders (to 12 significant digits: see :func:`w_value`)."""
+        return np.array([w_value(s.value) for s in self.w])
 
     def set_vertex(self, i: int, x: float | None = None, y: float | None = None,
                    w: float | None = None) -> None:  # fmt: skip
