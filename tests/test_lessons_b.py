@@ -2923,6 +2923,18 @@ def test_09_r257_c1_the_box_is_a_target_and_a_gaussian_reference_beside_it():
     assert "errors against the box" in md[58]
 
 
+def test_09_r257_c2_footprint_size_and_texels_read_named_apart():
+    """Review r257 C2: cell 57 printed "(3.48 texels per pixel)" for the footprint's size, ρ,
+    beside a status line counting texels read: the printout now names a width."""
+    import re
+
+    from notebook_runs import executed, streams
+
+    printed = streams(executed("09_texture_filtering").notebook())
+    assert "texels per pixel)" not in printed
+    assert re.search(r"a footprint \d\.\d\d texels of level 0 wide \(ρ = 2\^λ\)", printed)
+
+
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     ns = lesson("09_texture_filtering")
     b, nmn = ns.b, ns.nmn
