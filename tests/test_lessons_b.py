@@ -2935,6 +2935,27 @@ def test_09_r257_c2_footprint_size_and_texels_read_named_apart():
     assert re.search(r"a footprint \d\.\d\d texels of level 0 wide \(ρ = 2\^λ\)", printed)
 
 
+def test_09_r257_small_pointer_label_clamp_and_zoom_label():
+    """Review r257. S1: q_reads' explanation pointed to §5's table, which has no
+    nearest_mipmap_nearest row: it points to §7's. S2: cell 40 labelled teachraster's choice
+    (magnified on the pixel's λ) "GL:". S3: "exactly log2 N below" holds only where λ' > 0;
+    the panel clamps at level 0. S4: the footprint explorer's zoom label is named as a width."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    text = [" ".join("".join(c["source"]).split()) for c in cells]
+    ask = next(t for t in text if t.startswith("# §7's study, run here"))
+    assert "as in §7's table" in ask and "which prints every filter's error" in ask
+    assert "§5's table below renders" not in ask
+    printed = streams(executed("09_texture_filtering").notebook())
+    assert "   GL: " not in printed and printed.count("teachraster (GL's probes): ") == 3
+    nine = next(t for t in text if t.startswith("## 9. Tilt it yourself"))
+    assert "where $\\lambda' \\le 0$ it shows level 0, the level clamped" in nine
+    assert 'its "u … to …: … texels across" label' in " ".join(text)
+
+
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():
     ns = lesson("09_texture_filtering")
     b, nmn = ns.b, ns.nmn
