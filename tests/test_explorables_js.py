@@ -928,7 +928,7 @@ def test_footprint_level_grid_shows_over_the_fetched_texels_and_the_label_reads(
     the check borders and the level-3 outline and showed no blue at all; at row 35 it was
     faint. The grid is now opaque, in a colour neither fetched level's, drawn after the
     outlines, which sit inside their texels, off the grid lines. The zoom label the lesson
-    sends students to ("texels … across") was 12 px: 16 now, drawn last."""
+    sends students to was 12 px: 16 now, drawn last."""
     got = _recorded_footprint(pixel)
     log = got["log"]
     taps = [(k, args, st) for k, (name, args, st) in enumerate(log) if name == "strokeRect"
@@ -952,7 +952,12 @@ def test_footprint_level_grid_shows_over_the_fetched_texels_and_the_label_reads(
                 assert min(abs(edge - g) for g in ys) >= 2, (edge, sorted(ys))
     label = [(k, a, st) for k, (name, a, st) in enumerate(log) if name == "fillText"]
     ((k, (text, _, _), st),) = label
-    assert text.startswith("texels ") and text.endswith(" across") and k > grid_at
+    # review r257 S4: the span as a width, "u 54.2 to 76.2: 22 texels across", not a range
+    # that read as a count ("texels 54.15…76.2 across")
+    m = re.fullmatch(r"u (-?[\d.]+) to (-?[\d.]+): ([\d.]+) texels across", text)
+    assert m and k > grid_at, text
+    lo, hi, wide = map(float, m.groups())
+    assert wide == pytest.approx(hi - lo, rel=0.02, abs=0.1)
     assert int(st["font"].split("px")[0]) >= 14
 
 

@@ -1381,3 +1381,17 @@ def test_filter_explorer_grazing_floor_and_max_anisotropy():
         assert not np.array_equal(np.nan_to_num(grazing), np.nan_to_num(ex.truth))
     finally:
         ex.close()
+
+
+def test_filter_explorer_status_line_counts_texels_read():
+    """Review r257 C2: the status line said "1.0 texels per pixel · largest λ 1.8" at 0°, which
+    reads as a contradiction of λ = log2 ρ (ρ = 3.48 texels there): its number counts texel
+    *reads*, and says so, as §7's chart axis does."""
+    from teachraster.widgets.filter_explorer import FilterExplorer
+
+    ex = FilterExplorer(tilt=0, filter="nearest", repeats=6, backend="image")
+    try:
+        line = ex._info_html()
+    finally:
+        ex.close()
+    assert "texels read per pixel" in line and "texels per pixel" not in line

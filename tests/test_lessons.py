@@ -398,8 +398,8 @@ def test_09_anisotropy_wins_on_minified_pixels_and_costs_more():
     ns = lesson("09_texture_filtering")
     # review r61 09-6: the cap on the probes, 1 to 16: cap 1 is trilinear, 16 the default;
     # the error falls by less each time, the reads keep growing, 8 to 16 about a third more
-    err = {cap: e for cap, (e, _) in ns.by_cap.items()}
-    reads = {cap: r for cap, (_, r) in ns.by_cap.items()}
+    err = {cap: e for cap, (e, _, _) in ns.by_cap.items()}
+    reads = {cap: r for cap, (_, r, _) in ns.by_cap.items()}
     assert err[1] == pytest.approx(ns.trilinear_error) and err[16] == pytest.approx(ns.aniso_error)
     caps = sorted(err)
     drops = [err[a] - err[b] for a, b in zip(caps, caps[1:])]

@@ -10,6 +10,7 @@ from teachraster.study.texture_truth import (
     exact_uv,
     filter_study,
     footprint_average,
+    gaussian_average,
     texel_reads,
 )
 
@@ -55,6 +56,25 @@ def test_constant_texture_and_uncovered_pixels():
     assert np.isnan(truth[0, 0]) and np.allclose(truth[ids >= 0], 0.25)
 
 
+def test_gaussian_average_is_a_weighted_mean_about_the_pixel_centre(rng):
+    """Review r257 C1: the second reference. A constant texture stays constant (the weights
+    are normalised, points beyond the horizon dropped); on an axis-aligned texture of 4 x 4
+    texels a pixel, the Gaussian of σ = 0.5 px reaches into the neighbours: it is smoother
+    than the box, and its mean over the image is the texture's."""
+    clip, uv = full_screen_quad(u_scale=7.0, w=(1, 1, 4, 4))
+    ids = tr.render(clip, 10, 6, attrs=uv).triangle_id
+    ids[0, 0] = -1
+    flat = gaussian_average(clip, uv, np.full((5, 3), 0.25), ids, samples=6)
+    assert np.isnan(flat[0, 0]) and np.allclose(flat[ids >= 0], 0.25)
+    tex = rng.uniform(0, 1, (32, 32))
+    clip, uv = full_screen_quad()
+    ids = tr.render(clip, 8, 8, attrs=uv).triangle_id
+    box = footprint_average(clip, uv, tex, ids, samples=16)
+    smooth = gaussian_average(clip, uv, tex, ids, samples=24)
+    assert smooth.std() < 0.8 * box.std()
+    assert abs(smooth.mean() - tex.mean()) < 0.02
+
+
 def test_texel_reads_and_the_study_rows():
     scene = tr.get_scene("textured_floor")
     frame = tr.render(scene, width=64, height=48, texture_filter="trilinear")
@@ -72,6 +92,8 @@ def test_texel_reads_and_the_study_rows():
     assert by["trilinear"]["error_minified"] < by["bilinear"]["error_minified"]
     assert by["anisotropic"]["error_minified"] < by["trilinear"]["error_minified"]
     assert all(r["time_median_s"] > 0 for r in rows)
+    # the Gaussian reference too (review r257 C1): mipmaps still beat no mipmaps against it
+    assert by["trilinear"]["error_minified_gaussian"] < by["bilinear"]["error_minified_gaussian"]
 
 
 @pytest.mark.parametrize("samples", [1, 3])

@@ -97,6 +97,26 @@ def footprint_average(clip, uv, texture, triangle_id, *, samples: int = 16, seed
     linear solve per point; ``tests/test_texture_truth.py`` checks the two against each other
     on random triangles. The texel is read here, not by the engine's filters.
     """
+    return _weighted_average(clip, uv, texture, triangle_id, samples, seed, sigma=None)
+
+
+def gaussian_average(clip, uv, texture, triangle_id, *, sigma: float = 0.5,
+                     samples: int = 12, seed: int = 0):  # fmt: skip
+    """The texture under a Gaussian of ``sigma`` px around each pixel centre: (H, W, C).
+
+    A second reference beside :func:`footprint_average`'s box (lesson 09): the box passes
+    frequencies above the Nyquist limit (its sinc's side lobes), so a filter that keeps the
+    box's own moiré scores well against it. This one weights points of the window by
+    ``exp(-d² / 2σ²)``, ``d`` their distance from the pixel centre, cut at 3σ, each mapped
+    exactly onto the pixel's triangle's plane and read as a box texel: Greene and Heckbert's
+    elliptical weighted average, without its local linear approximation. σ = 0.5 px is lesson
+    08's Gaussian one pixel wide. ``samples`` × ``samples`` jittered points cover the 6σ square.
+    """
+    return _weighted_average(clip, uv, texture, triangle_id, samples, seed, sigma=sigma)
+
+
+def _weighted_average(clip, uv, texture, triangle_id, samples, seed, sigma):
+    """The box mean over the pixel square (``sigma`` None) or the Gaussian mean around it."""
     tex = np.asarray(texture, dtype=np.float64)
     th, tw = tex.shape[:2]
     table = tex.reshape(th * tw, -1)
@@ -105,24 +125,28 @@ def footprint_average(clip, uv, texture, triangle_id, *, samples: int = 16, seed
     rows, cols = np.nonzero(triangle_id >= 0)
     out = np.full((height, width, table.shape[1]), np.nan)
     s = int(samples)
-    grid = (np.arange(s) + 0.0) / s
-    jitter = _jitter(seed, s, len(rows))
+    # the points' square around the pixel: the pixel itself, or ±3σ about its centre
+    lo, span = (0.0, 1.0) if sigma is None else (0.5 - 3 * sigma, 6 * sigma)
+    grid = span * np.arange(s) / s + lo
+    jitter = _jitter(seed, s, len(rows)) * span
     # About 200 bytes of temporaries per point: 100,000 points keep this near 20 MiB, so a
     # classroom kernel stays small (lesson 09); larger chunks are no faster.
     chunk = max(1, 100_000 // (s * s))
     for start in range(0, len(rows), chunk):
         r, c = rows[start : start + chunk], cols[start : start + chunk]
         jit = jitter[start : start + chunk]
-        x = c[:, None, None] + grid[None, None, :] + jit[..., 0]
-        y = r[:, None, None] + grid[None, :, None] + jit[..., 1]
+        dx, dy = grid[None, None, :] + jit[..., 0], grid[None, :, None] + jit[..., 1]
+        weight = (np.ones_like(dx) if sigma is None
+                  else np.exp(-((dx - 0.5) ** 2 + (dy - 0.5) ** 2) / (2 * sigma**2)))  # fmt: skip
+        x, y = c[:, None, None] + dx, r[:, None, None] + dy
         m = maps[triangle_id[r, c]][:, :, :, None, None]  # (n, 3, 3, 1, 1)
         u_num, v_num, den = (m[:, k, 0] * x + m[:, k, 1] * y + m[:, k, 2] for k in range(3))
-        out[r, c] = _box_mean(table, th, tw, u_num, v_num, den)
+        out[r, c] = _box_mean(table, th, tw, u_num, v_num, den, weight)
     return out if tex.ndim == 3 else out[..., 0]
 
 
-def _box_mean(table, th: int, tw: int, u_num, v_num, den) -> np.ndarray:
-    """Mean over each pixel's (s, s) points of the texel (nearest, repeat) each one sees."""
+def _box_mean(table, th: int, tw: int, u_num, v_num, den, weight) -> np.ndarray:
+    """Weighted mean over each pixel's (s, s) points of the texel (nearest, repeat) each sees."""
     n = len(den)
     # NaN, infinity and points beyond the horizon get some texel index (never used)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -130,11 +154,10 @@ def _box_mean(table, th: int, tw: int, u_num, v_num, den) -> np.ndarray:
         index = _texel(v, th) * tw + _texel(u, tw)
     ok = (den > 0) & np.isfinite(u) & np.isfinite(v)  # w = 1 / den > 0: the plane is seen
     vals = np.take(table, index.reshape(n, -1), axis=0)  # (n, s * s, C)
-    vals[~ok.reshape(n, -1)] = 0.0
-    count = ok.reshape(n, -1).sum(axis=1)
-    total = vals.sum(axis=1)
+    w = np.where(ok, weight, 0.0).reshape(n, -1)
+    total = np.einsum("np,npc->nc", w, vals)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return total / count[:, None]
+        return total / w.sum(axis=1)[:, None]
 
 
 def _texel(u: np.ndarray, size: int) -> np.ndarray:
@@ -191,7 +214,9 @@ def filter_study(
 
     Returns one row per filter: ``filter``, ``error`` (root-mean-square difference from the
     truth over covered pixels and channels), ``error_minified`` (the same over the pixels
-    where the texture is minified, λ > 0, where aliasing lives), ``time_median_s`` (the whole ``tr.render`` of the
+    where the texture is minified, λ > 0, where aliasing lives), ``error_minified_gaussian``
+    (the same against :func:`gaussian_average`, σ = 0.5 px: a target without the box's
+    moiré), ``time_median_s`` (the whole ``tr.render`` of the
     scene, timed round-robin with the others), ``texel_reads`` (mean per pixel) and
     ``uses_mipmaps``.
     """
@@ -205,6 +230,9 @@ def filter_study(
     clip = scene.clip(width / height)
     truth = footprint_average(clip, scene.mesh.corner("uv"), scene.texture, first.triangle_id,
                               samples=samples)  # fmt: skip
+    # the smoother second reference, over a 3 x 3 px square: twice the points each way
+    smooth = gaussian_average(clip, scene.mesh.corner("uv"), scene.texture, first.triangle_id,
+                              samples=2 * samples)  # fmt: skip
     probe = render_scene(scene, None, width, height, derivatives=True)
     uv = probe.layout["uv"]
     lam = mip_level(probe.ddx[..., uv], probe.ddy[..., uv], scene.texture.shape)
@@ -225,6 +253,9 @@ def filter_study(
             "filter": f,
             "error": float(np.sqrt(np.nanmean(err[cov] ** 2))),
             "error_minified": float(np.sqrt(np.nanmean(err[minified] ** 2))),
+            "error_minified_gaussian": float(
+                np.sqrt(np.nanmean((frame.image - smooth)[minified] ** 2))
+            ),
             "time_median_s": t,
             "texel_reads": reads,
             "uses_mipmaps": f in MIPMAP_FILTERS,

@@ -487,7 +487,9 @@ class FilterExplorer:
         return (
             f"<b>{_fixed(f'{self.shown_tilt:.0f}°', 3, 'right')}</b>: "
             f"{_fixed(f'<b>{self.shown_filter}</b>', name)} · "
-            f"{_fixed(f'{reads:.1f}', 4, 'right')} texels per pixel"
+            # texel *reads*: a footprint's size in texels is ρ, which λ = log2 ρ gives (review
+            # r257 C2: "1.0 texels per pixel · largest λ 1.8" read as a contradiction)
+            f"{_fixed(f'{reads:.1f}', 4, 'right')} texels read per pixel"
             f" · largest λ {np.nanmax(self.lod):.1f} · RMS vs footprint mean "
             f"{_fixed(f'<b>{rms}</b>', len(DRAFT_RMS) + 1)}"
         )

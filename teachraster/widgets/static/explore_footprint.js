@@ -325,12 +325,14 @@ function drawTexture(ctx, texImage, data, v, T, fromTex) {
   ctx.restore();
 }
 
-// The texture view's span, "texels … across", which lesson 09 sends students to read as they
-// walk a pixel up the floor: 16 px on a white box in the lower left, drawn last (review r246
-// FIG1: at 12 px its glyphs were 9 px tall, against 16 for the line under the pictures).
+// The texture view's span, "u … to …: … texels across", which lesson 09 sends students to read
+// as they walk a pixel up the floor: 16 px on a white box in the lower left, drawn last (review
+// r246 FIG1: at 12 px its glyphs were 9 px tall, against 16 for the line under the pictures).
+// The width is said as a width (review r257 S4: "texels 54.15…76.2 across" read as a count).
 export const ZOOM_LABEL_PX = 16;
 export function drawZoomLabel(ctx, v, T) {
-  const text = `texels ${fmt(v.cx - v.half, 4)}…${fmt(v.cx + v.half, 4)} across`;
+  const span = `u ${fmt(v.cx - v.half, 3)} to ${fmt(v.cx + v.half, 3)}`;
+  const text = `${span}: ${fmt(2 * v.half, 3)} texels across`;
   const px = textPx(ctx, ZOOM_LABEL_PX);
   ctx.save();
   ctx.font = `${px}px sans-serif`;
