@@ -468,11 +468,18 @@ def test_case_picker_titles_fit_and_a_long_sliver_stays_visible():
     picker = CasePicker("fan_spokes_through_centres", backend="image", style="classroom")
     try:
         # review r227 FIG-1: every case with every rule, in the lesson's classroom style:
-        # titles apart, and each panel (its tick numbers too) inside the figure
-        for name in screen_cases():
-            for rule in RULES:
+        # titles apart, and each panel (its tick numbers too) inside the figure. The rules in
+        # a snake order (a case's first rule is the last case's last), so that one change
+        # draws each picture, not two; the picker's display drew it on the figure's canvas
+        # (FigureDisplay.refresh), so the layout is read off that drawing, not a third one.
+        draws = picker.display.draws
+        for i, name in enumerate(screen_cases()):
+            for rule in RULES if i % 2 == 0 else RULES[::-1]:
+                before = (picker.case.value, picker.rule.value)
                 picker.case.value, picker.rule.value = name, rule
-                picker.fig.canvas.draw()
+                # drawn once (a change of case alone or of rule alone), or shown already
+                assert picker.display.draws == draws + ((name, rule) != before), (name, rule)
+                draws = picker.display.draws
                 renderer = picker.fig.canvas.get_renderer()
                 left, right = (ax.title.get_window_extent(renderer) for ax in picker.axes)
                 assert not left.overlaps(right) and left.x0 >= 0, name
