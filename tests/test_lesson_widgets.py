@@ -175,8 +175,16 @@ def test_plane_explorer_colours_the_pixels_rasterize_covers(explorer):
                   for _ in range(300)]  # fmt: skip
     on_an_edge = 0
     for xy in triangles:
-        for k in range(3):
-            explorer.x[k].value, explorer.y[k].value = xy[k]
+        # the six sliders set quietly, then one update from them (as a vertex dragged in the
+        # page sets its two, _on_page_move): a picture per slider moved cost six updates a
+        # triangle, five of them of a triangle not checked; update() reads only the sliders
+        explorer._quiet = True
+        try:
+            for k in range(3):
+                explorer.x[k].value, explorer.y[k].value = xy[k]
+        finally:
+            explorer._quiet = False
+        explorer.update()
         assert np.array_equal(explorer.xy, xy)
         covered = tr.rasterize(tr.Triangle(xy), 16, 14).coverage
         assert np.array_equal(~np.isnan(explorer.values), covered), xy.tolist()
