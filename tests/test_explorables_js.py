@@ -240,11 +240,14 @@ def test_edge_labels_stand_clear_of_the_edges_centres():
     side away from the triangle, whatever the edge's direction."""
     cell, half = 42.0, [70.0, 10.0]
     rng = np.random.default_rng(3)
+    edges = []
     for _ in range(40):
         a, b = rng.uniform(0, 600, 2), rng.uniform(0, 600, 2)
-        centroid = (a + b) / 2 + rng.uniform(-200, 200, 2)
-        (at,) = call_js(EDGES, [("labelCentre", [a.tolist(), b.tolist(), centroid.tolist(),
-                                                  half, cell])])  # fmt: skip
+        edges.append((a, b, (a + b) / 2 + rng.uniform(-200, 200, 2)))
+    # one node process for the 40 edges (explorables_node: a test batches its inputs)
+    got = call_js(EDGES, [("labelCentre", [a.tolist(), b.tolist(), centroid.tolist(), half,
+                                           cell]) for a, b, centroid in edges])  # fmt: skip
+    for (a, b, centroid), at in zip(edges, got, strict=True):
         d = b - a
         n = np.array([-d[1], d[0]]) / np.hypot(*d)
         side = np.sign(n @ (np.array(at) - a))
@@ -262,7 +265,16 @@ def test_edge_labels_stay_inside_the_canvas():
     cell, half, bounds = 40.0, [80.0, 10.0], [700.0, 600.0]
     # a steep edge 30 px from the right side, the triangle to its left: outside overflows
     a, b, centroid = [670.0, 100.0], [640.0, 400.0], [400.0, 250.0]
-    (at,) = call_js(EDGES, [("labelCentre", [a, b, centroid, half, cell, bounds])])
+    rng = np.random.default_rng(5)
+    edges = []  # random edges, checked below
+    for _ in range(40):
+        ra, rb = rng.uniform(0, 700, 2), rng.uniform(0, 600, 2)
+        rc = (ra + rb) / 2 + rng.uniform(-150, 150, 2)
+        edges.append([ra.tolist(), rb.tolist(), rc.tolist(), half, cell])
+    # one node process for every call (explorables_node: a test batches its inputs)
+    calls = [("labelCentre", [a, b, centroid, half, cell, bounds])]
+    calls += [("labelCentre", args + extra) for args in edges for extra in ([], [bounds])]
+    at, *placed = call_js(EDGES, calls)
     assert half[0] <= at[0] <= bounds[0] - half[0] and half[1] <= at[1] <= bounds[1] - half[1]
     d = np.subtract(b, a)
     n = np.array([-d[1], d[0]]) / np.hypot(*d)
@@ -270,12 +282,8 @@ def test_edge_labels_stay_inside_the_canvas():
                for sx in (-1, 1) for sy in (-1, 1)]  # fmt: skip
     assert min(abs(n @ (c - np.array(a))) for c in corners) >= 0.5 * cell + 2 - 1e-6
     # and on random edges: always inside; where the outside fits, unchanged
-    rng = np.random.default_rng(5)
-    for _ in range(40):
-        a, b = rng.uniform(0, 700, 2), rng.uniform(0, 600, 2)
-        centroid = (a + b) / 2 + rng.uniform(-150, 150, 2)
-        args = [a.tolist(), b.tolist(), centroid.tolist(), half, cell]
-        free, at = call_js(EDGES, [("labelCentre", args), ("labelCentre", args + [bounds])])
+    assert len(placed) == 2 * len(edges)
+    for free, at in zip(placed[::2], placed[1::2], strict=True):
         assert half[0] - 1e-9 <= at[0] <= bounds[0] - half[0] + 1e-9
         assert half[1] - 1e-9 <= at[1] <= bounds[1] - half[1] + 1e-9
         inside = (
@@ -366,8 +374,9 @@ def test_planes_read_e_at_a_named_point_and_stay_in_their_box():
             assert (np.abs(sx) <= cw / 2).all() and (np.abs(sy) <= ch / 2).all()
     # review r99 (r93 02-8): fitted at the view's own tilt, the box still fits at every yaw,
     # and fills the height at its widest yaw (no empty band under a low view)
-    for elev in np.linspace(0.05, 1.2, 9):
-        scale = call_js(EDGES, [("fitBox", [W, H, h, cw, ch, 8, elev, 8])])[0]
+    elevs = np.linspace(0.05, 1.2, 9)
+    scales = call_js(EDGES, [("fitBox", [W, H, h, cw, ch, 8, elev, 8]) for elev in elevs])
+    for elev, scale in zip(elevs, scales, strict=True):
         tall = 0.0
         for yaw in np.linspace(0, 2 * np.pi, 73):
             x, y, z = (box - [W / 2, H / 2, 0]).T
@@ -385,13 +394,17 @@ def test_the_e_axis_ticks_keep_two_lines_of_text_apart_on_the_screen():
     together; the step is chosen in screen space: at least two text heights apart, else only
     the 0 tick."""
     span, size = 100.0, 17.0
-    for elev in np.linspace(0.05, np.pi / 2, 12):
-        px_per = 3.0 * np.cos(elev)  # screen px per px² of E at this elevation
-        step = call_js(EDGES, [("eTickStep", [span, px_per, size])])[0]
+    elevs = np.linspace(0.05, np.pi / 2, 12)
+    px_pers = [3.0 * np.cos(elev) for elev in elevs]  # screen px per px² of E at this elevation
+    # one node process for every call (explorables_node: a test batches its inputs)
+    *steps, side_on, from_top = call_js(
+        EDGES, [("eTickStep", [span, px_per, size]) for px_per in [*px_pers, 3.0, 0.0]]
+    )
+    for elev, px_per, step in zip(elevs, px_pers, steps, strict=True):
         assert step * px_per >= 2 * size - 1e-9 or step > span, (elev, step)
         assert step >= span / 3
-    assert call_js(EDGES, [("eTickStep", [span, 3.0, size])])[0] == 50  # side on: -50, 0, 50
-    assert call_js(EDGES, [("eTickStep", [span, 0.0, size])])[0] > span  # from the top: 0
+    assert side_on == 50  # side on: -50, 0, 50
+    assert from_top > span  # from the top: 0
 
 
 def test_a_turned_view_keeps_its_e_ticks_where_they_fit():
@@ -399,15 +412,18 @@ def test_a_turned_view_keeps_its_e_ticks_where_they_fit():
     text heights was rounded up past the box's half height. Where ±step fits the box at 1.25
     text heights apart (clear of each other), the axis keeps them."""
     size = 17.0
-    for span in (60.0, 100.0, 130.0, 170.0, 240.0):
-        # span's height on the screen (px): from 2.5 text heights, twice 1.25, up, a nice
-        # step (1, 2, 2.5, 5 x 10^k, at most twice the next smaller) always fits in between
-        for screen in np.linspace(2.5 * size, 4 * size, 15):
-            px_per = screen / span
-            step = call_js(EDGES, [("eTickStep", [span, px_per, size])])[0]
-            assert step <= span, (span, screen, step)  # -step, 0, +step on the axis
-            assert step * px_per >= 1.25 * size - 1e-9  # and never on top of one another
-    assert call_js(EDGES, [("eTickStep", [130.0, 43.0 / 130.0, size])])[0] <= 130.0
+    # span's height on the screen (px): from 2.5 text heights, twice 1.25, up, a nice
+    # step (1, 2, 2.5, 5 x 10^k, at most twice the next smaller) always fits in between
+    cases = [(span, screen) for span in (60.0, 100.0, 130.0, 170.0, 240.0)
+             for screen in np.linspace(2.5 * size, 4 * size, 15)]  # fmt: skip
+    # one node process for all 76 calls (explorables_node: a test batches its inputs)
+    calls = [("eTickStep", [span, screen / span, size]) for span, screen in cases]
+    *steps, last = call_js(EDGES, [*calls, ("eTickStep", [130.0, 43.0 / 130.0, size])])
+    for (span, screen), step in zip(cases, steps, strict=True):
+        px_per = screen / span
+        assert step <= span, (span, screen, step)  # -step, 0, +step on the axis
+        assert step * px_per >= 1.25 * size - 1e-9  # and never on top of one another
+    assert last <= 130.0
 
 
 def test_edge_signs_are_drawn_near_the_edges_and_under_the_pointer():

@@ -175,8 +175,16 @@ def test_plane_explorer_colours_the_pixels_rasterize_covers(explorer):
                   for _ in range(300)]  # fmt: skip
     on_an_edge = 0
     for xy in triangles:
-        for k in range(3):
-            explorer.x[k].value, explorer.y[k].value = xy[k]
+        # the six sliders set quietly, then one update from them (as a vertex dragged in the
+        # page sets its two, _on_page_move): a picture per slider moved cost six updates a
+        # triangle, five of them of a triangle not checked; update() reads only the sliders
+        explorer._quiet = True
+        try:
+            for k in range(3):
+                explorer.x[k].value, explorer.y[k].value = xy[k]
+        finally:
+            explorer._quiet = False
+        explorer.update()
         assert np.array_equal(explorer.xy, xy)
         covered = tr.rasterize(tr.Triangle(xy), 16, 14).coverage
         assert np.array_equal(~np.isnan(explorer.values), covered), xy.tolist()
@@ -468,11 +476,18 @@ def test_case_picker_titles_fit_and_a_long_sliver_stays_visible():
     picker = CasePicker("fan_spokes_through_centres", backend="image", style="classroom")
     try:
         # review r227 FIG-1: every case with every rule, in the lesson's classroom style:
-        # titles apart, and each panel (its tick numbers too) inside the figure
-        for name in screen_cases():
-            for rule in RULES:
+        # titles apart, and each panel (its tick numbers too) inside the figure. The rules in
+        # a snake order (a case's first rule is the last case's last), so that one change
+        # draws each picture, not two; the picker's display drew it on the figure's canvas
+        # (FigureDisplay.refresh), so the layout is read off that drawing, not a third one.
+        draws = picker.display.draws
+        for i, name in enumerate(screen_cases()):
+            for rule in RULES if i % 2 == 0 else RULES[::-1]:
+                before = (picker.case.value, picker.rule.value)
                 picker.case.value, picker.rule.value = name, rule
-                picker.fig.canvas.draw()
+                # drawn once (a change of case alone or of rule alone), or shown already
+                assert picker.display.draws == draws + ((name, rule) != before), (name, rule)
+                draws = picker.display.draws
                 renderer = picker.fig.canvas.get_renderer()
                 left, right = (ax.title.get_window_extent(renderer) for ax in picker.axes)
                 assert not left.overlaps(right) and left.x0 >= 0, name
@@ -860,6 +875,7 @@ def test_case_picker_shows_every_screen_case_with_both_methods():
     names = screen_cases()
     assert "fan_spokes_through_centres" in names and "behind_camera" not in names
     picker = CasePicker("d3d_split_square", backend="image")
+    picker.display.refresh = lambda: None  # owners, verdicts and text are tested, not pixels
     try:
         for name in names:
             picker.case.value = name
