@@ -131,6 +131,19 @@ def _fixed(html: str, chars: int, align: str = "left") -> str:
             f"{html}</span>")  # fmt: skip
 
 
+def _name_panels(axes) -> None:
+    """Title the four panels, with no ticks or axis labels."""
+    names = ("filtered", "footprint mean", "mip level(s) read", "error vs footprint mean")
+    for ax, name in zip(axes, names):
+        # at the size of axis labels: the style's title size made "error vs footprint mean"
+        # wider than its panel
+        ax.set_title(name, fontsize=mpl.rcParams["axes.labelsize"])
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_xlabel("")
+        ax.set_ylabel("")
+
+
 class FilterExplorer:
     """A checkerboard square tilting away from the camera, filtered as you choose.
 
@@ -264,16 +277,7 @@ class FilterExplorer:
             # note), clear of the colour bar, which is put back from a cache per range
             self.panels["error"].colorbar.set_label("")
             self.panels["lod"].colorbar.set_label("")
-            names = ("filtered", "footprint mean", "mip level(s) read",
-                     "error vs footprint mean")  # fmt: skip
-            for ax, name in zip(axes, names):
-                # at the size of axis labels: the style's title size made "error vs footprint
-                # mean" wider than its panel
-                ax.set_title(name, fontsize=mpl.rcParams["axes.labelsize"])
-                ax.set_xticks([])
-                ax.set_yticks([])
-                ax.set_xlabel("")
-                ax.set_ylabel("")
+            _name_panels(axes)
             self.axes = axes
             self._blit = self._edit_blit()
             error = self.panels["error"]
