@@ -207,7 +207,7 @@ def _float_bias_first():
 
 
 def test_f1_the_task_quotes_the_printed_limit():
-    printed = block_arithmetic.float64_limit()
+    printed = tile_blocks.float64_limit()
     task = flat(graded_cell(NOTEBOOK, "classify_block_task"))
     for number in ("2³⁷ px²", "370,728 px", "2,000,000 px"):
         assert number in printed and number in task, number

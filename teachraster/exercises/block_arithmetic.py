@@ -26,35 +26,14 @@ import numpy as np
 
 from ..core.edges import setup_edges
 from ..core.snapping import SUBPIXEL_BITS
+from .block_grid import UNITS, grid_of, same_kind, superscript, verdicts
 from .exercise import Mistake
 from .scalars import vec
-from .tile_blocks import (
-    UNITS,  # the task's count: 256 units a pixel (lesson 10 §4, a GPU's grid)
-    _superscript,
-    _verdicts,
-    coordinate_range,
-    grid_of,
-    same_kind,
-)
 
 #: float64's significand: a whole number of units² is exact in px² up to this many bits.
 FLOAT64_BITS = 53
 #: The largest value an int32 register holds.
 INT32_MAX = 2**31 - 1
-
-
-def float64_limit() -> str:
-    """The sentence cell 1 of exercise 08 prints beside lesson 10 §4's count (cell 2 quotes
-    it, r248 F1): where float64 pixels stop being exact on the check's cases."""
-    fraction = 2 * 8  # bits after the point of a product: 8 from each factor (1/256 grid)
-    exact = FLOAT64_BITS - fraction
-    reach = max(abs(c) for c in coordinate_range())
-    return (
-        f"float64 pixels: a product of two differences on the 1/256 grid has {fraction} bits "
-        f"after the point, so float64's {FLOAT64_BITS} bits hold it exactly only below "
-        f"2{_superscript(exact)} px² (differences up to about {2 ** (exact / 2):,.0f} px); the check's "
-        f"coordinates reach {reach:,.0f} px"
-    )
 
 
 def units_edges(xy) -> list[dict]:
@@ -182,8 +161,8 @@ def rounded_in_float64(args, expected, got) -> bool | None:
     xy, x0, y0, size = args
     gx, gy = np.broadcast_arrays(np.asarray(x0), np.asarray(y0))
     have = np.broadcast_to(np.asarray(got), gx.shape)
-    verdicts = {(int(x), int(y)): str(g) for x, y, g in zip(gx.ravel(), gy.ravel(), have.ravel(), strict=True)}  # fmt: skip
-    return True if all(verdicts[b] in float64_verdicts(xy, *b, size) for b in blocks) else None
+    given = {(int(x), int(y)): str(g) for x, y, g in zip(gx.ravel(), gy.ravel(), have.ravel(), strict=True)}  # fmt: skip
+    return True if all(given[b] in float64_verdicts(xy, *b, size) for b in blocks) else None
 
 
 def _px2(units2: int) -> float:
@@ -197,7 +176,7 @@ def sci(x: float) -> str:
     exp = int(np.floor(np.log10(abs(x))))
     if -3 <= exp <= 3:
         return f"{x:.{max(3, exp + 1)}g}"
-    return f"{x / 10**exp:.3g}·10{_superscript(exp)}"
+    return f"{x / 10**exp:.3g}·10{superscript(exp)}"
 
 
 def float64_words(args, expected, got) -> str:
@@ -302,7 +281,7 @@ def classify_units(xy, x0, y0, size, beta=-1):
     edges = units_edges(xy)
     (ax, ay), A, B = edges[0]["a"], edges[0]["A"], edges[0]["B"]
     if B * (edges[2]["a"][1] - ay) + A * (edges[2]["a"][0] - ax) == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
     rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
     step = UNITS * (size - 1)
     for edge in edges:
@@ -311,7 +290,7 @@ def classify_units(xy, x0, y0, size, beta=-1):
         e0 = A * (px - ax) + B * (py - ay) + (0 if edge["top_left"] else beta)
         rejected |= e0 + R < 0
         accepted &= e0 + T >= 0
-    return _verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
+    return verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
 
 
 def half_unit_words(args, expected, got) -> str:

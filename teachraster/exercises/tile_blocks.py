@@ -46,14 +46,13 @@ import numpy as np
 from ..core.edges import edge_values_at, passes, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short, transposed_shape_words
+from .block_grid import KINDS, UNITS, grid_of, same_kind, superscript, verdicts
 from .cases import SEED, seeded
 from .coverage import covered
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .package_answers import CHECKER_WORDS
 from .running import WrongAnswerType
 from .scalars import full_number, num, tri_words, vec
-
-KINDS = ("rejected", "accepted", "partial")
 
 
 def _corners(x0, y0, size: int):
@@ -62,30 +61,18 @@ def _corners(x0, y0, size: int):
     return np.array([y0, y0, far_y, far_y]), np.array([x0, far_x, x0, far_x])
 
 
-def grid_of(x0, y0) -> tuple[np.ndarray, np.ndarray]:
-    """``x0`` and ``y0`` as integer arrays of one shape (scalars: shape ())."""
-    return np.broadcast_arrays(np.asarray(x0, dtype=np.int64), np.asarray(y0, dtype=np.int64))
-
-
-def _verdicts(rejected, accepted, shape, scalar: bool):
-    """The verdict texts of a grid from its masks (one text for a scalar block)."""
-    kinds = np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
-    kinds = np.asarray(kinds, dtype="<U8").reshape(shape)
-    return str(kinds[()]) if scalar else kinds
-
-
 def expected_block(xy, x0, y0, size):
     """The package's verdict for each block of the grid (one text for scalar x0, y0)."""
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     gx, gy = grid_of(x0, y0)
     scalar = gx.ndim == 0
     if setup.area2 == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, scalar)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, scalar)
     rows, cols = _corners(gx.ravel(), gy.ravel(), size)  # (4, n)
     e = edge_values_at(setup, rows.ravel(), cols.ravel())  # (4 n, 3), exact, in units²
     ok = np.stack([setup.inside(k, e[:, k]) for k in range(3)], axis=1).reshape(4, -1, 3)
     rejected = (~ok.any(axis=0)).any(axis=-1)
-    return _verdicts(rejected, ok.all(axis=(0, 2)), gx.shape, scalar)
+    return verdicts(rejected, ok.all(axis=(0, 2)), gx.shape, scalar)
 
 
 #: Where a mistaken classify_block evaluates E once per block, and how many steps its offsets
@@ -219,12 +206,12 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     if orient == "swap always":  # right for a counter-clockwise triangle, flipped otherwise
         orient = True if ccw else "flipped"
     if (setup.area2 == 0 and orient != "unchecked") or (orient == "cull" and ccw):
-        return _verdicts(np.ones(shape, bool), False, shape, scalar)
+        return verdicts(np.ones(shape, bool), False, shape, scalar)
     if logic == "inside":
         xs, ys = np.array([px, px + d, px, px + d]), np.array([py, py, py + d, py + d])
         inside = covered(np.asarray(xy, dtype=float), np.stack([xs.ravel(), ys.ravel()], axis=1))
         inside = inside.reshape(4, -1)
-        return _verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
+        return verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
     if tie == "as given":
         tie = "bottom-right" if ccw else "top-left"
     tie, accept_tie = SPLIT_TIES.get(tie, (tie, tie))
@@ -256,7 +243,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         accepted = ~rejected
     elif logic in SIGN_SLIPS:  # r162: the tests' own comparison slipped, ≤ or >
         return _sign_slip(xy, x0, y0, size, logic)
-    return _verdicts(rejected, accepted & ~rejected, shape, scalar)
+    return verdicts(rejected, accepted & ~rejected, shape, scalar)
 
 
 #: r162: the sign tests with the wrong comparison: the reject test E₀ + R + β ≤ 0 (a block
@@ -273,7 +260,7 @@ def _sign_slip(xy, x0, y0, size, logic: str):
     gx, gy = grid_of(x0, y0)
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     if setup.area2 == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
     rows, cols = _corners(gx.ravel(), gy.ravel(), size)
     e = (edge_values_at(setup, rows.ravel(), cols.ravel()) / setup.unit**2).reshape(4, -1, 3)
     beta = np.where(np.asarray(setup.top_left, bool), 0.0, -STEP)  # (3,)
@@ -281,7 +268,7 @@ def _sign_slip(xy, x0, y0, size, logic: str):
     reject_fails = best <= 0 if logic == "reject at zero" else best < 0
     accept_passes = worst > 0 if logic == "accept above zero" else worst >= 0
     rejected = reject_fails.any(axis=1)
-    return _verdicts(rejected, accept_passes.all(axis=1) & ~rejected, gx.shape, gx.ndim == 0)
+    return verdicts(rejected, accept_passes.all(axis=1) & ~rejected, gx.shape, gx.ndim == 0)
 
 
 def edge_kind(d) -> str:
@@ -329,12 +316,6 @@ def call_block(fn, args):
             f"array of shape {shape}, the shape of x0 and y0{transposed_shape_words(got.shape, shape)}"
         )
     return got
-
-
-def same_kind(got, expected, args) -> bool:
-    if isinstance(expected, str) or isinstance(got, str):
-        return bool(np.all(np.asarray(got) == np.asarray(expected)))
-    return np.shape(got) == np.shape(expected) and bool(np.all(got == expected))
 
 
 def match_kind(got, answer, args) -> bool:
@@ -958,7 +939,7 @@ def _by_coverage(xy, x0, y0, size):
     ys = gy.reshape(-1, 1) + i.reshape(1, -1) + 0.5
     inside = covered(np.asarray(xy, dtype=float), np.stack([xs.ravel(), ys.ravel()], axis=1))
     inside = inside.reshape(gx.size, -1)
-    return _verdicts(~inside.any(axis=1), inside.all(axis=1), gx.shape, gx.ndim == 0)
+    return verdicts(~inside.any(axis=1), inside.all(axis=1), gx.shape, gx.ndim == 0)
 
 
 #: r73 08-4: an exact test of every centre was told "you tested only 2 of the 4 extreme centres".
@@ -983,7 +964,7 @@ def _float32_verdict(xy, x0, y0, size):
     gx, gy = grid_of(x0, y0)
     area = e(v[0], v[1], v[2][0], v[2][1])
     if area == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
     if area < 0:
         v = v[[0, 2, 1]]
     px, py = (gx.ravel() + 0.5).astype(f), (gy.ravel() + 0.5).astype(f)
@@ -995,7 +976,7 @@ def _float32_verdict(xy, x0, y0, size):
         e0 = e(a, b, px, py)
         rejected |= ~passes((e0 + f(r)).astype(f), owns)
         accepted &= passes((e0 + f(t)).astype(f), owns)
-    return _verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
+    return verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
 
 
 #: r107 N8-1: float32 edge functions passed every case (no centre lay within float32's
@@ -1701,7 +1682,7 @@ def _ticks_in_blocks(ax, size: int) -> None:
     from matplotlib.ticker import FuncFormatter, MultipleLocator
 
     power = int(size).bit_length() - 1
-    unit = f"2{_superscript(power)}" if size == 1 << power else f"{size:,}"
+    unit = f"2{superscript(power)}" if size == 1 << power else f"{size:,}"
     # r248: a far tie's view spans 9 blocks: every other one labelled past 6 (they ran together)
     span = max(abs(np.diff(ax.get_xlim()))[0], abs(np.diff(ax.get_ylim()))[0]) / size
     step = size * max(1, int(np.ceil(span / 6)))
@@ -1711,14 +1692,6 @@ def _ticks_in_blocks(ax, size: int) -> None:
     ax.set_xlabel(f"x0, y0 in blocks of {unit} px; {ax.get_xlabel()}")
 
 
-def _superscript(n: int) -> str:
-    """``n`` in superscript digits ("19" → "¹⁹")."""
-    return str(n).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
-
-
-#: Units a pixel of the task's integer count (lesson 10 §4: Direct3D's and llvmpipe's 8
-#: sub-pixel bits): vertices on the 1/256 grid and pixel centres are whole numbers of them.
-UNITS = 256
 #: The register classify_block counts in (NumPy's int64; Python's ints have no limit).
 INT_BITS = 64
 
@@ -1750,6 +1723,22 @@ def integer_budget() -> str:
         f"a range of L = {span:,.0f} px: in units of 1/{UNITS} px two coordinates differ by less "
         f"than {UNITS}·L < 2^{d}, so E needs 2·{d} + 2 = {2 * d + 2} bits (lesson 10 §4's count): "
         f"int{INT_BITS} holds every value exactly"
+    )
+
+
+def float64_limit() -> str:
+    """The sentence cell 1 of exercise 08 prints beside lesson 10 §4's count (cell 2 quotes
+    it, r248 F1): where float64 pixels stop being exact on the check's cases."""
+    from . import block_arithmetic as ba  # (it reads the grid module, not this one)
+
+    fraction = 2 * 8  # bits after the point of a product: 8 from each factor (1/256 grid)
+    exact = ba.FLOAT64_BITS - fraction
+    reach = max(abs(c) for c in coordinate_range())
+    return (
+        f"float64 pixels: a product of two differences on the 1/256 grid has {fraction} bits "
+        f"after the point, so float64's {ba.FLOAT64_BITS} bits hold it exactly only below "
+        f"2{superscript(exact)} px² (differences up to about {2 ** (exact / 2):,.0f} px); the check's "
+        f"coordinates reach {reach:,.0f} px"
     )
 
 
