@@ -538,6 +538,30 @@ def classify_block_offsets(xy, x0, y0, size, dtype=float):
     return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
 
 
+def classify_block_units(xy, x0, y0, size):
+    """The same counted in integer units of 1/256 px (lesson 10 §4's count), int64: exact at
+    every size. r248 F1: float64 pixels (:func:`classify_block_offsets`) round E₀ once its
+    products pass 2^37 px², and the check's far float64 ties fail them."""
+    v = np.rint(np.asarray(xy, dtype=float) * 256).astype(np.int64)
+    px, py = np.asarray(x0) * 256 + 128, np.asarray(y0) * 256 + 128
+    area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+    if area == 0:
+        return np.full(px.shape, "rejected")
+    if area < 0:
+        v = v[[0, 2, 1]]
+    rejected, accepted = np.zeros(px.shape, bool), np.ones(px.shape, bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        A, B = a[1] - b[1], b[0] - a[0]
+        reject = 256 * (size - 1) * (max(A, 0) + max(B, 0))
+        accept = 256 * (size - 1) * (min(A, 0) + min(B, 0))
+        e0 = A * (px - a[0]) + B * (py - a[1])
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        rejected |= (e0 + reject < 0) if top_left else (e0 + reject <= 0)
+        accepted &= (e0 + accept >= 0) if top_left else (e0 + accept > 0)
+    return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
+
+
 def classify_block_float32(xy, x0, y0, size):
     """The same in float32: exact where the products fit 24 bits (small coordinates)."""
     return classify_block_offsets(xy, x0, y0, size, dtype=np.float32)
@@ -555,7 +579,7 @@ def _one_block_four_corners(xy, x0, y0, size):
 #: extreme centres).
 classify_block_loops = per_block(_one_block)
 classify_block_four_corners = per_block(_one_block_four_corners)
-classify_block = classify_block_offsets
+classify_block = classify_block_units
 
 
 CORRECT.update(

@@ -105,7 +105,8 @@ def test_a_stub_is_told_so(name):
     report = ex.check(name, stub)
     assert report.not_implemented and "not implemented yet" in str(report)
     report = ex.check(name, forgot)
-    assert report.failures[0].explanation == "your function returned None (a missing `return`?)"
+    # (r248 S1: 8.2's line quotes the case's call first)
+    assert report.failures[0].explanation.endswith("your function returned None (a missing `return`?)")  # fmt: skip
 
 
 def test_two_colours_never_print_alike():

@@ -276,7 +276,8 @@ def test_compare_shows_yours_the_packages_and_the_differences(name, plt):
     if covered is None:
         assert artists and title.startswith(f"{len(differing)} pixel")
     else:  # r149 E1: the tile walk counts coverage apart from the walk, and marks it first
-        counts = re.findall(r"(\d+) (?:pixels? covered wrongly|walked differently)", title)
+        # (r248 S4: "… pixels walked differently", the unit said)
+        counts = re.findall(r"(\d+) pixels? (?:covered wrongly|walked differently)", title)
         assert artists and sum(map(int, counts)) == len(differing), title
         assert f"{int(covered.sum())} pixel" in title or not covered.any(), title
         if covered.any():

@@ -93,7 +93,9 @@ def _centre_only(x0, y0, size):
 
 @pytest.mark.parametrize("fn", [
     _block(points=_centre_only),  # a one-point test at the block's geometric centre
-    lambda *a: (lambda k: "partial" if k == "accepted" else k)(_block()(*a)),  # never accepts
+    # never accepts (r248: np.where over the grid; the scalar form raised on every grid of
+    # more than one block, and answered the far float64 ties' one-block grids only)
+    lambda *a: (lambda k: np.where(k == "accepted", "partial", k))(np.asarray(_block()(*a))),
 ])  # fmt: skip
 def test_no_line_of_the_summary_names_a_mistake_the_function_does_not_make(fn):
     """r107 N8-2 (a), (b): later lines named "only 2 of the 4 extreme centres", "x0 + size + ½
@@ -115,7 +117,10 @@ def test_float32_edge_functions_fail_named_float32():
     assert (expected_block(xy, 3000, 3000, 1), classify_float32(xy, 3000, 3000, 1)) == (
         "rejected", "accepted")  # fmt: skip
     report = ex.check("classify_block", classify_float32)
-    assert not report.passed and all(f.kind == "float32" for f in report.failures), str(report)
+    assert not report.passed and report.failures[0].kind == "float32", str(report)
+    # r248 F1: the far float64 ties fail float32 too, some named as float64 pixels' rounding
+    for f in report.failures:
+        assert f.kind == "float32" or f.case.startswith("far out in float64"), (f.case, f.kind)
     assert "x0=3000, y0=3000" in report.failures[0].explanation
 
 

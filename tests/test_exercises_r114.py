@@ -168,7 +168,11 @@ def test_a_winding_dependent_tie_rule_is_not_called_top_right():
     winding, was told "your edge tests follow a top-right rule"."""
     report = ex.check("classify_block", _sign_flipped_ties_as_given)
     assert not report.passed
-    assert {f.kind for f in report.failures} == {"tie rule of the edges as given"}, str(report)
+    # r248 F1: in float64 pixels, a slip of its own the far float64 ties name
+    far = [f for f in report.failures if f.case.startswith("far out in float64")]
+    kinds = {f.kind for f in report.failures if f not in far}
+    assert kinds == {"tie rule of the edges as given"}, str(report)
+    assert {f.kind for f in far} <= kinds | {"float64 pixels"}, str(report)
     assert "top-right" not in str(report), str(report)
 
 

@@ -58,16 +58,21 @@ def no_orient_no_area(xy, x0, y0, size):
 def test_m1_no_orientation_names_the_winding_on_every_failing_case(full_words):
     report = ex.check("classify_block", no_orient_no_area, budget=120)
     assert not report.passed
-    assert {f.kind for f in report.failures} == {"one winding only, no area"}, [
-        (f.kind, f.explanation[-200:]) for f in report.failures
-    ]
+    # r248 F1: in float64 pixels, a slip of its own the far float64 ties name (and only they)
+    floats = [f for f in report.failures if f.kind == "float64 pixels"]
+    assert all(f.case.startswith("far out in float64") for f in floats)
+    assert {f.kind for f in report.failures} - {"float64 pixels"} == {
+        "one winding only, no area"
+    }, [(f.kind, f.explanation[-200:]) for f in report.failures]
     for f in report.failures:
+        if f in floats:
+            continue
         assert "handle both windings" in f.explanation, f.explanation
         assert "never computed the triangle's area" in f.explanation, f.explanation
         assert "Corners outside the triangle do not reject" not in f.explanation, f.explanation
     zero = [f for f in report.failures if "zero area" in f.case]
     assert zero and "collinear" in zero[0].explanation
-    ccw = [f for f in report.failures if "zero area" not in f.case]
+    ccw = [f for f in report.failures if "zero area" not in f.case and f not in floats]
     assert all("counter-clockwise on screen" in f.explanation for f in ccw)
 
 
@@ -92,11 +97,15 @@ def test_m2_the_measured_range_holds_a_large_bias(full_words):
 
 def test_m4_a_bias_added_is_named_by_its_sign(full_words):
     report = ex.check("classify_block", student(bias=-(2.0**-16)), budget=120)
-    assert {f.kind for f in report.failures} == {"tie-rule bias added"}
+    # r248 F1: the student computes in float64 pixels, named so on the far float64 ties
+    far = [f for f in report.failures if f.case.startswith("far out in float64")]
+    assert {f.kind for f in report.failures if f not in far} == {"tie-rule bias added"}
+    assert {f.kind for f in far} <= {"tie-rule bias added", "float64 pixels"}
     labels = [f.case for f in report.failures]
     assert any("outside a right edge" in label for label in labels), labels
     for f in report.failures:
-        assert "your bias has the wrong sign" in f.explanation
+        if f not in far:
+            assert "your bias has the wrong sign" in f.explanation
         assert "lies exactly on edge" not in f.explanation
         assert "no top-left rule" not in f.kind
 
@@ -104,7 +113,10 @@ def test_m4_a_bias_added_is_named_by_its_sign(full_words):
 def test_m4_no_tie_rule_is_still_told_the_tie(full_words):
     """E ≥ 0 (no bias at all) differs from the bias added on the new case, and keeps its words."""
     report = ex.check("classify_block", student(tie="E >= 0"), budget=120)
-    assert {f.kind for f in report.failures} == {"no top-left rule (E ≥ 0)"}
+    # r248 F1: in float64 pixels, a slip of its own the far float64 ties name (and only they)
+    floats = [f for f in report.failures if f.kind == "float64 pixels"]
+    assert all(f.case.startswith("far out in float64") for f in floats)
+    assert {f.kind for f in report.failures} - {"float64 pixels"} == {"no top-left rule (E ≥ 0)"}
     assert not any("outside a right edge" in f.case for f in report.failures)
 
 

@@ -82,8 +82,10 @@ def test_m1_offsets_short_of_the_last_centre_are_named_so(name, full_words):  # 
     fn, kind = UNDERSHOOT[name]
     report = ex.check("classify_block", fn, budget=120)
     assert not report.passed
-    assert {f.kind for f in report.failures} == {kind}, [f.kind for f in report.failures]
+    assert _kinds_apart_from_float64(report) == {kind}, [f.kind for f in report.failures]
     for f in report.failures:
+        if f.kind == "float64 pixels":
+            continue
         assert "short of the block's" in f.explanation, f.explanation
         assert not [w for w in WRONG_CAUSES if w in f.explanation], f.explanation
 
@@ -129,8 +131,16 @@ def test_unnamed_8_1_slips_are_named(name, full_words):  # noqa: F811
     fn, kind, words = SLIPS[name]
     report = ex.check("classify_block", fn, budget=120)
     assert not report.passed
-    assert {f.kind for f in report.failures} == {kind}, [f.kind for f in report.failures]
-    assert all(words in f.explanation for f in report.failures), report.failures[0].explanation
+    assert _kinds_apart_from_float64(report) == {kind}, [f.kind for f in report.failures]
+    assert all(words in f.explanation for f in report.failures if f.kind == kind), report.failures[0].explanation  # fmt: skip
+
+
+def _kinds_apart_from_float64(report) -> set:
+    """The report's kinds, those of the far float64 ties left out where they are float64
+    pixels' (r248 F1: these students compute in float64 pixels, a second slip of their own)."""
+    far = [f for f in report.failures if f.case.startswith("far out in float64")]
+    assert all(f.kind == "float64 pixels" for f in far if f.kind not in {g.kind for g in report.failures if g not in far})  # fmt: skip
+    return {f.kind for f in report.failures if f not in far or f.kind != "float64 pixels"}
 
 
 def _plane(xyz):
@@ -224,8 +234,8 @@ def test_the_first_8_2_failure_does_not_print_the_bound(first_words):
     assert "0.312" not in first, first
     # r232 S2: no boilerplate before the cause; C2: the case's arguments, to call it again
     assert "what is it here?" not in first and "decides" not in first, first
-    assert first.startswith(
-        "xyz = [[4.2, 4.2, 0.3], [7.8, 4.2, 0.372], [4.2, 7.8, 0.372]], row0 = 0"
+    assert first.startswith(  # (r248 S1: statements, runnable as one line)
+        "xyz = np.array([[4.2, 4.2, 0.3], [7.8, 4.2, 0.372], [4.2, 7.8, 0.372]]); row0 = 0"
     )
     assert "the tile's farthest stored depth is 0.305: the block is rejected" in first, first
 
@@ -244,14 +254,12 @@ def test_c1_an_empty_pixel_is_said_beside_gls_clear_value(full_words):  # noqa: 
         far = np.max(np.where(np.isinf(buffer), 1.0, buffer))
         return bool(max(min(z), p[:, 2].min()) >= far)
 
+    # r248 S2: GL's clear value is what a GPU holds: the reading passes (the task says both)
     report = ex.check("hiz_rejects", as_far_plane, budget=120)
-    words = report.failures[0].explanation
-    assert report.failures[0].kind == "empty as far plane", words
-    assert "GL clears the buffer to 1.0" in words and "GL_LESS" in words, words
-    assert "like lesson 10's replay" in words, words
+    assert report.passed, str(report)
     task = _cell("hiz_rejects_task")
-    for said in ("1.0 by default (lesson 05a)", "`GL_LESS`", "fails there",
-                 "like lesson 10's replay", "+∞ instead, *not yet known*"):  # fmt: skip
+    for said in ("GL holds its clear value, 1.0 (lesson 05a)", "`GL_LESS`",
+                 "as in lesson 10's replay", "`np.inf` in the check's buffers (*not yet known*"):  # fmt: skip
         assert said in " ".join(task.split()), said  # r214: re-wrapped
 
 

@@ -113,8 +113,9 @@ def test_f1_the_bit_count_is_printed_and_the_cases_keep_to_it(monkeypatch):
     assert "2·30 + 2 = 62 bits" in said and "int64 holds every value exactly" in said
     assert "print(integer_budget())" in _cell("setup") and "float64_reach" not in _cell("setup")
     task = " ".join(_cell("classify_block_task").split())
-    assert "**Count in integers**, as lesson 10 §4's walker does" in task
-    assert "cell 1 prints lesson 10 §4's bit count" in task and "2¹⁷" not in task
+    # r248 C1: lesson 10 §4 counts on a GPU's grid (the walker keeps 512 units a pixel)
+    assert "**Count in integers**, as lesson 10 §4 counts, on a GPU's grid" in task
+    assert "exact in int64 (cell 1)" in task and "2¹⁷" not in task
     monkeypatch.setattr(tile_blocks, "INT_BITS", 32)
     with pytest.raises(AssertionError):
         tile_blocks.integer_budget()
@@ -331,7 +332,7 @@ def test_d5_failures_and_the_package_both_said_in_the_one_line():
     """A failing answer that also calls the package's own function: its one line says both."""
     report = ex.check("hiz_rejects", box_bound(low_wide=True), budget=120)
     object.__setattr__(report, "package", "it calls teachraster's expected_reject: does not count")
-    with pytest.raises(AssertionError, match=r"7 of 72 cases fail; and not counted"):
+    with pytest.raises(AssertionError, match=r"7 of 71 cases fail; and not counted"):
         report.assert_passed()
 
 

@@ -908,6 +908,7 @@ def diagnose(
         name = params[back] if back < len(params) else f"number {back + 1}"
         words = handed_back_words(name)
         return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
+    chosen_of = {}
     for r in failing:
         chosen = next((f for f in whole if r.index in f.failing), None)
         if chosen is None:
@@ -916,12 +917,20 @@ def diagnose(
                 here = [f for f in here if len(f.failing) == len(failing)]
             here.sort(key=lambda f: (f.mistake.symptom, -f.agrees, len(f.mistake.parts), f.order))
             chosen = here[0] if here else None
+        chosen_of[r.index] = chosen and chosen.mistake
         if chosen is not None:
             kind, words = _named(spec, chosen.mistake, r)
         else:
             kind, words = _generic(spec, r)
         kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake, r.index in explained)
         out[r.index] = (kind, _say(spec, r, words))
+    # r248: a second slip is said only where every other failing case is named too
+    if None in chosen_of.values():
+        for r in failing:
+            if chosen_of[r.index] is not None and chosen_of[r.index].with_others:
+                kind, words = _generic(spec, r)
+                kind, words = _honest(spec, r, kind, words, None, r.index in explained)
+                out[r.index] = (kind, _say(spec, r, words))
     return _said_once(spec, out)
 
 

@@ -62,6 +62,10 @@ class Mistake:
         this case (an ε added to E, a constant factor); the mistake is named only where that
         number is the same on every failing case it fits (r164: an "ε" fitted case by case
         took a constant factor, whose ε grows with E, for a guard against dividing by 0).
+    with_others : bool
+        A second slip, named on the failing cases it fits only where every other failing case
+        is named too (r248: float64 pixels at the far float64 ties, beside another slip of the
+        same answer; a random answer's verdict there, with the rest unexplained, is no cause).
     reads : str, optional
         A name the student's code must read (a global or an attribute, such as ``det`` of
         ``np.linalg.det``) for the mistake to be named: two mistakes whose answers are the
@@ -81,6 +85,7 @@ class Mistake:
     must_fit: Callable | None = field(default=None, repr=False)
     parameter: Callable | None = field(default=None, repr=False)
     reads: str | None = None
+    with_others: bool = False
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words
@@ -239,6 +244,12 @@ class Exercise:
         What the time-out words ask in place of :data:`.running.PER_PIXEL` ("a Python call
         per pixel?"), for a function called once per point, which has no pixels (r175 B7:
         ``barycentric``); None: those words.
+    call_words : callable, optional
+        ``call_words(*args)``: the case's arguments as Python the student can paste to call
+        the function again, said before a case that gave no answer (an exception, None, a
+        wrong type), with the traceback's last line in the student's code for an exception
+        (r248 S1: 8.2's lines for an exception, None or NaN quoted no argument); None: the
+        case's label alone.
     inputs_drawn : bool
         ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
         lines): the untouched stub's figure draws the first case so. False (default): the
@@ -271,6 +282,7 @@ class Exercise:
     hints: Sequence[tuple[str, str]] = ()
     inputs_drawn: bool = False
     slow: str | None = None
+    call_words: Callable | None = None
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded (the same mistakes on

@@ -13,7 +13,8 @@ is safe but looser: named, not taken (r126 N8-1); so is the bound clamped to the
 depth range at the far end too (r214: the farthest vertex bounds a fragment from behind only),
 while +inf where the plane lies beyond the farthest vertex at every centre in question (no
 fragment there) is accepted as tighter. A tile with an empty pixel (+inf) rejects only a
-triangle with no fragment in it.
+triangle with no fragment in it; read as GL's clear value 1.0 instead, it also rejects one at
+exactly depth 1.0, which GL_LESS fails there, and that verdict is accepted too (r248 S2).
 
 Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
 uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`
@@ -36,7 +37,7 @@ from .cases import SEED, seeded
 from .coverage import covered
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .package_answers import CHECKER_WORDS
-from .scalars import num
+from .scalars import full_number, num
 
 #: Tile side of the cases (hardware Hi-Z uses 8 × 8).
 TILE = 8
@@ -187,9 +188,6 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         # but costs a test per pixel: the bound asked is the corners' and the nearest vertex's
         ("a sliver crossing the tile: its covered centres all lie behind",
          (_SLIVER, 0, 0, TILE, np.full((TILE, TILE), 0.1662))),
-        # r94 D8-5: an empty pixel read as the far plane 1.0 passed every case
-        ("a triangle on the far plane (depth 1), one pixel of the tile still empty",
-         (flat + [0, 0, 0.5], 8, 8, TILE, _with(full, (5, 2), np.inf))),
         *_steep_cases(),
         *_box_cases(),
         *_tile_size_cases(),  # r141 D8.2-1
@@ -499,13 +497,33 @@ def same_verdict(got: bool, expected: bool, args=None) -> bool:
     """The task's verdict, or that of a bound as safe and tighter: (r137 D8-2) the half-open
     box (on the box's right and bottom border the top-left rule covers no centre: a right or
     bottom edge, or the rightmost or bottom vertex, lies there), or (r214 item 10) +inf where
-    the plane lies beyond the farthest vertex at every centre in question (no fragment there)."""
+    the plane lies beyond the farthest vertex at every centre in question (no fragment there);
+    each with an empty pixel (+inf) read as GL's clear value too (:func:`gl_cleared`, r248 S2)."""
     if got == expected:
         return True
-    return args is not None and any(
-        got == tighter_reject(*args, open_high=o, far_empty=f)
-        for o in (False, True) for f in (False, True) if o or f
+    if args is None:
+        return False
+    xyz, row0, col0, size, buffer = args
+    buffers = [buffer] if np.isfinite(buffer).all() else [buffer, gl_cleared(buffer)]
+    return any(
+        got == tighter_reject(xyz, row0, col0, size, b, open_high=o, far_empty=f)
+        for b in buffers for o in (False, True) for f in (False, True)
+        if o or f or b is not buffer
     )  # fmt: skip
+
+
+#: GL's default depth clear value (``glClearDepth``, lesson 05a): what a GPU's pixel that
+#: nothing was drawn to holds.
+GL_CLEAR_DEPTH = 1.0
+
+
+def gl_cleared(buffer) -> np.ndarray:
+    """The tile as GL holds it: an empty pixel (+inf, this exercise's and lesson 10's replay's
+    *not yet known*) at GL's clear value, 1.0. r248 S2: a student who models the GPU (the
+    tile's farthest depth after a clear is the clear value, as AMD's HTILE fast clear keeps
+    it) was marked wrong on a triangle at exactly depth 1.0, which GL_LESS fails against 1.0:
+    the two readings differ only there, and both verdicts are accepted."""
+    return np.where(np.isinf(buffer), GL_CLEAR_DEPTH, buffer)
 
 
 def tighter_reject(xyz, row0, col0, size, buffer, open_high=True, far_empty=False) -> bool:
@@ -587,8 +605,15 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # r114 D8-3: the plane at the tile's middle (the mean of the extreme centres') was
             # told "the plane's largest value at the corners"
             "tile middle": bool(max(_bare_plane(xyz, mid_r, mid_c), zmin) >= far),
-            "empty as far plane": bool(near >= np.where(np.isinf(buffer), 1.0, buffer).max()),
             "vertex": bool(zmin >= far),
+            # r248 half-named 8: "the nearest vertex" read as the one nearest the tile on
+            # screen (by its distance to the tile, or to the tile's middle)
+            **{
+                key: bool(
+                    max(bare, float(xyz[_screen_nearest(xyz, row0, col0, size, to), 2])) >= far
+                )
+                for key, to in SCREEN_NEAREST.items()
+            },  # fmt: skip
             "no clamp": bool(bare >= far),
             # r214 item 1: the bound clamped to the vertices' depth range, at both ends
             "clamped to range": bool(
@@ -632,6 +657,39 @@ def _read_slips(xyz, row0, col0, size, buffer, box, near) -> dict[str, bool]:
             "dz/dx sign": bool(_slipped_bound(xyz, box, signs=(-1, 1)) >= far),
             "dz/dy sign": bool(_slipped_bound(xyz, box, signs=(1, -1)) >= far),
         }
+
+
+#: r248 half-named 8: the two readings of "the vertex nearest the tile" on screen.
+SCREEN_NEAREST = {"vertex nearest on screen": "tile", "vertex nearest the tile's middle": "middle"}
+
+
+def _screen_nearest(xyz, row0: int, col0: int, size: int, to: str = "tile") -> int:
+    """The vertex nearest the tile on screen: by its distance to the tile (``to`` "tile", 0
+    inside it; ties: the first) or to the tile's middle ("middle")."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    lo, hi = np.array([col0, row0], float), np.array([col0 + size, row0 + size], float)
+    if to == "middle":
+        gap = xy - (lo + hi) / 2
+    else:
+        gap = np.maximum(lo - xy, 0.0) + np.maximum(xy - hi, 0.0)
+    return int(np.argmin(np.hypot(gap[:, 0], gap[:, 1])))
+
+
+def _screen_words(args, expected, got) -> str:
+    """r248 half-named 8: which vertex was taken, and which one bounds the depth."""
+    xyz, row0, col0, size, _ = args
+    xyz = np.asarray(xyz, dtype=float)
+    near = int(np.argmin(xyz[:, 2]))
+    taken = next((_screen_nearest(xyz, row0, col0, size, to) for to in SCREEN_NEAREST.values()
+                  if _screen_nearest(xyz, row0, col0, size, to) != near), near)  # fmt: skip
+    return (
+        f"you took the depth of the vertex nearest the tile on screen, v{taken + 1} "
+        f'({num(float(xyz[taken, 2]))}): "the nearest vertex" means the one nearest the eye, '
+        f"with the smallest depth, here v{near + 1} ({num(float(xyz[near, 2]))}); no fragment "
+        "of the triangle is nearer than that vertex, wherever it lies on screen, while the "
+        "vertex nearest the tile can lie behind fragments in it (a bound from it can reject a "
+        "fragment that is drawn)"
+    )
 
 
 def _one_line(xyz, row0: int, col0: int, size: int) -> bool:
@@ -902,12 +960,6 @@ MISTAKES = {
     "tile middle": "you took the plane at the tile's middle: that is its mean over the tile, "
     "and fragments elsewhere in the tile lie nearer: the block is hidden only if even its "
     "nearest fragment is (where in the tile is the plane nearest?)",
-    # r162 C1: said of this exercise's buffer, beside GL's clear value (lessons 05a and 10)
-    "empty as far plane": "you read an empty pixel (+inf) as the far plane, 1.0: GL clears "
-    "the buffer to 1.0, where under its default GL_LESS a fragment at 1.0 fails; but this "
-    "buffer, like lesson 10's replay, holds +inf where nothing is drawn yet (not yet known), "
-    "and a fragment there passes whatever its depth, even one at 1.0, so this triangle may "
-    "not be rejected here",
     "vertex": "you compared the triangle's nearest vertex (or a bound never above it, such "
     "as the plane at the corners of the whole, uncut bounding box: over the box the plane "
     "reaches below every vertex): in this tile its depth plane is "
@@ -949,9 +1001,11 @@ MISTAKES = {
     "one line empty": lambda a, e, g: _one_line_words(*a[:4]),
     "strict": "a fragment exactly at the stored depth fails the test (strictly nearer "
     "passes), so a block at exactly the tile's farthest depth is rejected too: use ≥",
-    "empty ignored": "a pixel of the tile is still empty (+inf here: nothing drawn yet): a "
-    "fragment there passes whatever its depth, so a triangle that can have a fragment in this tile may not be "
-    "rejected",
+    # r248 S2: GL's clear value (1.0) fails only a fragment at exactly 1.0: said both ways
+    "empty ignored": "a pixel of the tile is still empty (+inf here: nothing drawn yet; GL "
+    "holds its clear value, 1.0): a fragment there passes whatever its depth (under GL, any "
+    "nearer than 1.0), so a triangle that can have a fragment in this tile nearer than that "
+    "may not be rejected",
     "farthest vertex": "you compared the triangle's farthest vertex: the block is hidden only "
     "if even the triangle's nearest possible depth in the tile lies at or behind the tile's "
     "farthest stored depth",
@@ -1036,6 +1090,7 @@ def _clamped_words(args, expected, got) -> str:
 
 
 MISTAKES["clamped to range"] = _clamped_words
+MISTAKES.update(dict.fromkeys(SCREEN_NEAREST, _screen_words))  # r248 half-named 8
 #: r141 D8.2-2: the tile half-open or closed, the same mistake
 MISTAKES["vertex in tile, half-open"] = MISTAKES["vertex in tile"]
 MISTAKES["plane at integer points"] = (
@@ -1125,12 +1180,7 @@ def _float32_words(args, expected, got) -> str:
 FLOAT32 = Mistake("float32", _float32_words, fits=lambda a, e, g: _tie_gap(a) is not None)
 
 
-def _full(x: float) -> str:
-    """``x`` as Python prints it (every digit it needs), whole numbers without ".0"."""
-    x = float(x) + 0.0
-    if not np.isfinite(x):
-        return "np.inf" if x > 0 else ("-np.inf" if x < 0 else "np.nan")
-    return str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x)
+_full = full_number  # (8.1's lines quote their cases the same way, r248 S1)
 
 
 #: The most pixels a tile's stored depths may differ from their commonest value and still be
@@ -1156,7 +1206,15 @@ def case_words(xyz, row0, col0, size, buffer) -> str:
         r, c = np.unravel_index(int(np.argmax(buffer)), buffer.shape)
         stored = (f"buffer: {buffer.size} depths drawn at random from {num(buffer.min())} to "
                   f"{num(buffer.max())}, the farthest buffer[{r}, {c}] = {_full(buffer[r, c])}")  # fmt: skip
-    return f"xyz = [{rows}], row0 = {row0}, col0 = {col0}, size = {size}, {stored}"
+    # r248 S1: statements separated by ";", pasted as one line they run
+    return f"xyz = np.array([{rows}]); row0 = {row0}; col0 = {col0}; size = {size}; {stored}"
+
+
+def call_words(xyz, row0, col0, size, buffer) -> str:
+    """:func:`case_words` and the call, said where a case gave no answer (r248 S1)."""
+    return (
+        f"{case_words(xyz, row0, col0, size, buffer)}; hiz_rejects(xyz, row0, col0, size, buffer)"
+    )
 
 
 def explain_hiz(args, expected, got) -> str:
@@ -1351,8 +1409,9 @@ def _box_and_site(ax, xyz, row0, col0, size) -> list:
     label = "its bounding box" if seen else "_nolegend_"
     artists = [ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor=BOX_COLOUR, lw=2.0,
                                       linestyle="--", label=label))]  # fmt: skip
-    if not seen:
-        artists += ax.plot([], [], " ", label="its bounding box: beyond this view")
+    if not seen:  # r248 FIG1: with the box's own dashed key (an empty slot before)
+        artists += ax.plot([], [], color=BOX_COLOUR, lw=2.0, linestyle="--",
+                           label="its bounding box: beyond this view")  # fmt: skip
     from .tries import hints_spent
 
     # r173 G1: where the bound is taken (and whether the nearest vertex sets it) is the task's
@@ -1431,8 +1490,8 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
     lo = np.minimum([col0, row0], xyz[:, :2].min(axis=0))
     hi = np.maximum([col0 + size, row0 + size], xyz[:, :2].max(axis=0))
     # room for a vertex's label (r64: cut at the border; r214: labels now reach away from
-    # their vertex, a little further)
-    pad = 0.3 * float((hi - lo).max()) + 3
+    # their vertex, a little further; r248 FIG1: their white halos still cut the frame at 0.3)
+    pad = 0.5 * float((hi - lo).max()) + 3
     lo, hi = lo - pad, hi + pad
     # r198 C.6: the depth of every vertex the main panel does not show (which way the plane
     # rises), beside a dot at the vertex (r232 FIG2); r149 E3: "small", on a white ground
@@ -1502,7 +1561,7 @@ HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
     [replace(m, only_whole=True) if m.kind in ONLY_WHOLE + EXACT else m
      for m in variant_mistakes(_variants, MISTAKES, (FLOAT32,))],
-    draw=draw_hiz, hints=HIZ_HINTS,
+    draw=draw_hiz, hints=HIZ_HINTS, call_words=call_words,  # r248 S1
     # r94 D8-6: a bool answer agrees with many mistakes on any one case: "use ≥" was said to
     # a function using ≥ (the smaller of the two bounds); name only a mistake giving every
     # failing answer

@@ -83,6 +83,9 @@ class Outcome:
     error: str | None = None
     not_implemented: bool = False
     kind: str = ""
+    #: Where it raised in the student's own code (:func:`student_line`; "" where it did not
+    #: raise, or not there); an exercise with ``call_words`` says it (r248 S1).
+    where: str = ""
 
     @property
     def ok(self) -> bool:
@@ -204,6 +207,31 @@ def effective_budget(seconds) -> float:
 def last_line(exc: BaseException) -> str:
     """The exception as Python's last traceback line says it: ``ValueError: ...``."""
     return traceback.format_exception_only(type(exc), exc)[-1].strip()
+
+
+def _library_dirs() -> tuple[str, ...]:
+    """The directories of code that is not the student's: this package, Python's own library
+    and the installed packages (numpy's own raises land there)."""
+    import sysconfig
+
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # teachraster/
+    paths = sysconfig.get_paths()
+    found = {here, *(paths.get(k) for k in ("stdlib", "platstdlib", "purelib", "platlib"))}
+    return tuple(os.path.abspath(p) + os.sep for p in found if p)
+
+
+def student_line(exc: BaseException) -> str:
+    """The traceback's last line inside the student's own code, as "line 9, in hiz_rejects:
+    `r = buffer[8, 0]`" (a notebook cell's lines count from the cell's first); "" where no
+    frame of it is the student's (r248 S1: "raised IndexError" named no line)."""
+    library = _library_dirs()
+    frames = [f for f in traceback.extract_tb(exc.__traceback__)
+              if not os.path.abspath(f.filename).startswith(library)]  # fmt: skip
+    if not frames:
+        return ""
+    f = frames[-1]
+    code = f" `{f.line.strip()}`" if f.line and f.line.strip() else ""
+    return f"line {f.lineno}, in {f.name}:{code}" if code else f"line {f.lineno}, in {f.name}"
 
 
 def seconds_words(s: float) -> str:
@@ -434,7 +462,8 @@ def describe_exception(exc: BaseException) -> Outcome:
             "answer needs no such scan: a few numbers per edge decide it at any size"
         )
         return Outcome(error=text, kind="memory")
-    return Outcome(error=f"your function raised {last_line(exc)}", kind="raised")
+    return Outcome(error=f"your function raised {last_line(exc)}", kind="raised",
+                   where=student_line(exc))  # fmt: skip
 
 
 def run_checker(body: Callable[[], Any], fallback: Any) -> Any:

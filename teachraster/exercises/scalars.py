@@ -89,6 +89,19 @@ def vec(v, other=None) -> str:
     return "(" + ", ".join(num(a, b) for a, b in zip(v, o)) + ")"
 
 
+def full_number(x: float) -> str:
+    """``x`` as Python prints it (every digit it needs), whole numbers without ".0": a number a
+    student can paste to call a function on a case again (8.1's and 8.2's lines).
+
+    >>> full_number(2.0), full_number(-276483.12109375), full_number(float("inf"))
+    ('2', '-276483.12109375', 'np.inf')
+    """
+    x = float(x) + 0.0
+    if not np.isfinite(x):
+        return "np.inf" if x > 0 else ("-np.inf" if x < 0 else "np.nan")
+    return str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x)
+
+
 def tri_words(xy) -> str:
     return f"v1={vec(xy[0])}, v2={vec(xy[1])}, v3={vec(xy[2])}"
 

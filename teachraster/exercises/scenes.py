@@ -197,10 +197,12 @@ def _scale(*images) -> tuple[float, float]:
     return (float(finite.min()), float(finite.max())) if finite.size else (0.0, 1.0)
 
 
-def _key(axes, scene: Scene, shown, got=None):
+def _key(axes, scene: Scene, shown, got=None, marked: bool = False):
     """What the colours mean: a legend of the categories under the package's panel (r40 08-3:
     the tile walk's three blues and greens had none; r214: only those a panel shows, the
-    package's or ``got``), or one colour bar for both pictures."""
+    package's or ``got``; r248 S4: and the outline of the pixel explained below, where one is
+    ``marked``), or one colour bar for both pictures."""
+    from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     if scene.categories:
@@ -208,6 +210,9 @@ def _key(axes, scene: Scene, shown, got=None):
         present = set(np.unique(np.concatenate([i[np.isfinite(i)] for i in drawn])).tolist())
         handles = [Patch(facecolor=c, edgecolor="0.5", label=name)
                    for k, (name, c) in enumerate(scene.categories) if k in present]  # fmt: skip
+        if marked:
+            handles.append(Line2D([], [], color=MARK_COLOUR, lw=2, marker="s", mfc="none",
+                                  ms=7, ls="none", label="the pixel explained below"))  # fmt: skip
         return [axes[1].legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.02),
                                ncols=2, fontsize="x-small", frameon=False)]  # fmt: skip
     if scene.reference.ndim == 3 or shown is None:
@@ -288,7 +293,8 @@ def _coverage_title(wrong: np.ndarray, n: int) -> str:
         f"{k} pixel{'s' * (k != 1)} covered wrongly{where} (red){ringed}" if k else "coverage right"
     )
     rest = n - k
-    walked = f"; {rest} walked differently (orange)" if rest else ""
+    # r248 S4: the unit said
+    walked = f"; {rest} pixel{'s' * (rest != 1)} walked differently (orange)" if rest else ""
     # r173 D1: two lines of 31 characters ran past the figure's right edge over a narrow panel
     return textwrap.fill(covered + walked, TITLE_WIDTH)
 
@@ -323,19 +329,19 @@ def draw_comparison(scene: Scene, axes=None, pixel=None, connect: bool = True):
         artists.append(axes[2].text(0.5, 0.5, textwrap.fill("none to show: no picture of yours", 16), ha="center", va="center", transform=axes[2].transAxes, fontsize="x-small"))  # fmt: skip
     else:
         artists += _difference_panel(axes[2], scene)
-    artists += _key(axes, scene, theirs, got)
-    axes[0].set_title("yours", fontsize="small")
-    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 26), fontsize="small")
-    for ax in axes:
-        ax.set_xticks([])
-        ax.set_yticks([])
-    marks = _Marks(scene, axes)
     if isinstance(pixel, str) and pixel == "first":  # the first differing pixel, if any
         differs = scene.differs() if got is not None else np.zeros(1, dtype=bool)
         wrong = scene.coverage_differs() if got is not None else None
         if wrong is not None and wrong.any():  # r149 E1: a pixel covered wrongly first
             differs = wrong
         pixel = tuple(np.argwhere(differs)[0]) if differs.any() else None
+    artists += _key(axes, scene, theirs, got, marked=pixel is not None)
+    axes[0].set_title("yours", fontsize="small")
+    axes[1].set_title(textwrap.fill(f"the package's: {scene.title}", 26), fontsize="small")
+    for ax in axes:
+        ax.set_xticks([])
+        ax.set_yticks([])
+    marks = _Marks(scene, axes)
     if pixel is not None:
         marks.show(*as_pixel(pixel))
     if connect:

@@ -17,9 +17,11 @@ edge passes at E₀ + T, *partial* otherwise; each test is the one top-left rule
 left edge, −2^-16 px², E's smallest step at a centre, on the others: llvmpipe's ``c + 1`` in
 ``lp_setup_tri.c`` and ``c − 1`` in ``lp_rast_tri.c``) so that each test is one sign test;
 the verdicts are compared, so either way passes. A zero-area triangle rejects every block.
-Vertices are on the 1/256 grid. The task counts in lesson 10 §4's integer units (256 a pixel,
-r232 M1): a float bias of a fraction of a px² added to a large E₀ rounds away, and the far ties
-of :data:`FAR_TIES` (|E₀| up to 2^38 px²) name that slip. ``x0`` and ``y0`` are integer arrays of one shape (one block
+Vertices are on the 1/256 grid. The task counts in integer units, 256 a pixel, as lesson 10
+§4 counts on a GPU's grid (r232 M1; the package's own walker keeps 512, r248 C1): a float bias
+of a fraction of a px² added to a large E₀ rounds away, and the far ties of :data:`FAR_TIES`
+(|E₀| up to 2^38 px²) name that slip; float64 pixels round E₀ itself once its products pass
+2^37 px², and :data:`FLOAT64_TIES` name that one (r248 F1, :mod:`.block_arithmetic`). ``x0`` and ``y0`` are integer arrays of one shape (one block
 each) and the answer an array of that shape (a single text stands for every block).
 
 The expected answer is computed from the package's pieces: the snapped, oriented set-up
@@ -44,14 +46,13 @@ import numpy as np
 from ..core.edges import edge_values_at, passes, setup_edges
 from ..core.snapping import SUBPIXEL_BITS, snap
 from .answers import short, transposed_shape_words
+from .block_grid import KINDS, UNITS, grid_of, same_kind, superscript, verdicts
 from .cases import SEED, seeded
 from .coverage import covered
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .package_answers import CHECKER_WORDS
 from .running import WrongAnswerType
-from .scalars import num, tri_words, vec
-
-KINDS = ("rejected", "accepted", "partial")
+from .scalars import full_number, num, tri_words, vec
 
 
 def _corners(x0, y0, size: int):
@@ -60,30 +61,18 @@ def _corners(x0, y0, size: int):
     return np.array([y0, y0, far_y, far_y]), np.array([x0, far_x, x0, far_x])
 
 
-def grid_of(x0, y0) -> tuple[np.ndarray, np.ndarray]:
-    """``x0`` and ``y0`` as integer arrays of one shape (scalars: shape ())."""
-    return np.broadcast_arrays(np.asarray(x0, dtype=np.int64), np.asarray(y0, dtype=np.int64))
-
-
-def _verdicts(rejected, accepted, shape, scalar: bool):
-    """The verdict texts of a grid from its masks (one text for a scalar block)."""
-    kinds = np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
-    kinds = np.asarray(kinds, dtype="<U8").reshape(shape)
-    return str(kinds[()]) if scalar else kinds
-
-
 def expected_block(xy, x0, y0, size):
     """The package's verdict for each block of the grid (one text for scalar x0, y0)."""
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     gx, gy = grid_of(x0, y0)
     scalar = gx.ndim == 0
     if setup.area2 == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, scalar)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, scalar)
     rows, cols = _corners(gx.ravel(), gy.ravel(), size)  # (4, n)
     e = edge_values_at(setup, rows.ravel(), cols.ravel())  # (4 n, 3), exact, in units²
     ok = np.stack([setup.inside(k, e[:, k]) for k in range(3)], axis=1).reshape(4, -1, 3)
     rejected = (~ok.any(axis=0)).any(axis=-1)
-    return _verdicts(rejected, ok.all(axis=(0, 2)), gx.shape, scalar)
+    return verdicts(rejected, ok.all(axis=(0, 2)), gx.shape, scalar)
 
 
 #: Where a mistaken classify_block evaluates E once per block, and how many steps its offsets
@@ -113,11 +102,11 @@ POINTS = {
 
 
 def _pos(v):
-    return np.maximum(v, 0.0)
+    return np.maximum(v, 0)  # (0, not 0.0: integer units stay integers, r248)
 
 
 def _neg(v):
-    return np.minimum(v, 0.0)
+    return np.minimum(v, 0)
 
 
 #: The (reject, accept) offsets from E's coefficients a = ∂E/∂x, b = ∂E/∂y and the span d,
@@ -126,12 +115,17 @@ OFFSETS = {
     "right": lambda a, b, d: (d * (_pos(a) + _pos(b)), d * (_neg(a) + _neg(b))),
     "x mirrored": lambda a, b, d: (d * (_neg(a) + _pos(b)), d * (_pos(a) + _neg(b))),
     "y mirrored": lambda a, b, d: (d * (_pos(a) + _neg(b)), d * (_neg(a) + _pos(b))),
-    "far corner": lambda a, b, d: (d * (a + b), 0.0 * a),
+    "far corner": lambda a, b, d: (d * (a + b), 0 * a),
     "sign flipped": lambda a, b, d: (-d * (_pos(a) + _pos(b)), -d * (_neg(a) + _neg(b))),
     "swapped": lambda a, b, d: (d * (_neg(a) + _neg(b)), d * (_pos(a) + _pos(b))),
     "two corners": lambda a, b, d: (_pos(d * (a + b)), _neg(d * (a + b))),
     # r198 B: the middle's half span ±(|A| + |B|) taken whole from the first centre
     "both ways": lambda a, b, d: (d * (abs(a) + abs(b)), -d * (abs(a) + abs(b))),
+    # r248 half-named 2-4: one test without its offset (E₀ alone), and A taken as y₂ − y₁,
+    # its minus sign lost in the offsets (E₀ has it)
+    "no accept offset": lambda a, b, d: (d * (_pos(a) + _pos(b)), 0 * a),
+    "no reject offset": lambda a, b, d: (0 * a, d * (_neg(a) + _neg(b))),
+    "A's sign lost": lambda a, b, d: (d * (_pos(-a) + _pos(b)), d * (_neg(-a) + _neg(b))),
 }
 
 
@@ -159,9 +153,15 @@ SPLIT_TIES = {"accept strict": ("top-left", "strict"), "reject loose": ("loose",
 
 
 def _passes(e, tie: str, setup, k: int, d) -> np.ndarray:
-    """Edge k's test of the values ``e`` under rule ``tie`` (a bias: E ≥ it off top-left edges)."""
+    """Edge k's test of the values ``e`` (units² of the package's grid, :func:`classify_with`)
+    under rule ``tie`` (a bias: E ≥ it off top-left edges; "plus one": llvmpipe's +1 on a top
+    or left edge's constant without its −1 on every one, E ≥ −2^-16 px² there and E ≥ 0
+    elsewhere, r248 half-named 5)."""
+    per_px2 = setup.unit**2  # units² a px² (a bias in px² is a whole number of them)
+    if tie == "plus one":
+        return e >= (-round(STEP * per_px2) if setup.top_left[k] else 0)
     if tie in BIASES:
-        return e >= (0.0 if setup.top_left[k] else BIASES[tie])
+        return e >= (0 if setup.top_left[k] else round(BIASES[tie] * per_px2))
     return passes(e, _owns(tie, setup, k, d))
 
 
@@ -194,8 +194,10 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     the first centre: llvmpipe's cautious reject offset, r214 item 3). ``logic``
     "inside" rejects a block whose four extreme points all lie outside the triangle and
     accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
-    accepts a block every edge's maximising corner passes. Edge functions in pixels: exact
-    for vertices on the 1/256 grid and points on the 1/2 grid.
+    accepts a block every edge's maximising corner passes. Edge functions in integer units of
+    the package's grid (512 a pixel: vertices on the 1/256 grid and points on the 1/2 grid are
+    whole numbers of them), exact at any size (r248 F1: in float64 pixels a slip with no
+    effect on a far float64 tie was named there, for float64's rounding).
     """
     gx, gy = grid_of(x0, y0)
     scalar, shape = gx.ndim == 0, gx.shape
@@ -204,17 +206,22 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     if orient == "swap always":  # right for a counter-clockwise triangle, flipped otherwise
         orient = True if ccw else "flipped"
     if (setup.area2 == 0 and orient != "unchecked") or (orient == "cull" and ccw):
-        return _verdicts(np.ones(shape, bool), False, shape, scalar)
+        return verdicts(np.ones(shape, bool), False, shape, scalar)
     if logic == "inside":
         xs, ys = np.array([px, px + d, px, px + d]), np.array([py, py, py + d, py + d])
         inside = covered(np.asarray(xy, dtype=float), np.stack([xs.ravel(), ys.ravel()], axis=1))
         inside = inside.reshape(4, -1)
-        return _verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
+        return verdicts(~inside.any(axis=0), inside.all(axis=0), shape, scalar)
     if tie == "as given":
         tie = "bottom-right" if ccw else "top-left"
     tie, accept_tie = SPLIT_TIES.get(tie, (tie, tie))
     given = orient in (False, "unchecked")
-    v = snap(np.asarray(xy, dtype=float)) if given else setup.p / setup.unit
+    # r248 F1: in integer units of the package's grid (every point here is on the 1/2 grid,
+    # every vertex on the 1/256 one), exact at any size: float64 pixels round past 2^37 px²
+    unit = setup.unit
+    v = np.rint(snap(np.asarray(xy, dtype=float)) * unit).astype(np.int64) if given else setup.p
+    px, py = (np.rint(np.asarray(c, dtype=float) * unit).astype(np.int64) for c in (px, py))
+    d = int(round(d * unit))
     if orient == "unchecked" and tie == "top-left":
         tie = accept_tie = "left-top"  # the rule from the kinds of the edges as given
     if orient == "flipped":
@@ -228,7 +235,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
         r, t = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d)
         if longer:  # one offset a step longer than the other
-            r2, t2 = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d + 1)
+            r2, t2 = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d + unit)
             r, t = (r2, t) if longer == "reject" else (r, t2)
         rejected |= ~_passes(e0 + r, tie, setup, k, b - a)
         accepted &= _passes(e0 + t, accept_tie, setup, k, b - a)
@@ -236,7 +243,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         accepted = ~rejected
     elif logic in SIGN_SLIPS:  # r162: the tests' own comparison slipped, ≤ or >
         return _sign_slip(xy, x0, y0, size, logic)
-    return _verdicts(rejected, accepted & ~rejected, shape, scalar)
+    return verdicts(rejected, accepted & ~rejected, shape, scalar)
 
 
 #: r162: the sign tests with the wrong comparison: the reject test E₀ + R + β ≤ 0 (a block
@@ -253,7 +260,7 @@ def _sign_slip(xy, x0, y0, size, logic: str):
     gx, gy = grid_of(x0, y0)
     setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
     if setup.area2 == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
     rows, cols = _corners(gx.ravel(), gy.ravel(), size)
     e = (edge_values_at(setup, rows.ravel(), cols.ravel()) / setup.unit**2).reshape(4, -1, 3)
     beta = np.where(np.asarray(setup.top_left, bool), 0.0, -STEP)  # (3,)
@@ -261,7 +268,7 @@ def _sign_slip(xy, x0, y0, size, logic: str):
     reject_fails = best <= 0 if logic == "reject at zero" else best < 0
     accept_passes = worst > 0 if logic == "accept above zero" else worst >= 0
     rejected = reject_fails.any(axis=1)
-    return _verdicts(rejected, accept_passes.all(axis=1) & ~rejected, gx.shape, gx.ndim == 0)
+    return verdicts(rejected, accept_passes.all(axis=1) & ~rejected, gx.shape, gx.ndim == 0)
 
 
 def edge_kind(d) -> str:
@@ -311,14 +318,27 @@ def call_block(fn, args):
     return got
 
 
-def same_kind(got, expected, args) -> bool:
-    if isinstance(expected, str) or isinstance(got, str):
-        return bool(np.all(np.asarray(got) == np.asarray(expected)))
-    return np.shape(got) == np.shape(expected) and bool(np.all(got == expected))
-
-
 def match_kind(got, answer, args) -> bool:
-    return answer is not None and same_kind(got, answer, args)
+    """Does a mistake's answer give the student's? Blocks that float64 pixels can decide
+    either way (:func:`.block_arithmetic.float64_slip`: E₀'s products past 2^37 px², the
+    deciding centre within float64's steps of an edge) are left out of the comparison: the
+    mistakes compute in float64 pixels, the student in whatever it chose (r248 F1: a slip in
+    float64 or in integer units is named by the slip, the far ties' rounding by its own)."""
+    if answer is None:
+        return False
+    if same_kind(got, answer, args):
+        return True
+    if isinstance(got, str) or isinstance(answer, str) or np.shape(got) != np.shape(answer):
+        return False
+    from .block_arithmetic import float64_exact, float64_slip
+
+    xy, x0, y0, size = args
+    if float64_exact(xy, x0, y0, size):
+        return False
+    gx, gy = grid_of(x0, y0)
+    differ = np.asarray(got) != np.asarray(answer)
+    return all(float64_slip(xy, int(bx), int(by), size) is not None
+               for bx, by in zip(gx[differ], gy[differ], strict=True))  # fmt: skip
 
 
 def first_block(args, expected, got):
@@ -821,12 +841,15 @@ def _bias_lost(args, expected, got) -> bool | None:
     differ = want != have
     if not differ.any():
         return None
+    from .block_arithmetic import float64_verdicts
+
     loose = np.broadcast_to(np.asarray(classify_with(*args, tie="loose")), gx.shape)
-    if not (have[differ] == loose[differ]).all():
-        return False
-    for bx, by, g in zip(gx[differ], gy[differ], have[differ], strict=True):
+    for bx, by, g, lo in zip(gx[differ], gy[differ], have[differ], loose[differ], strict=True):
+        # r248 F1: float64 pixels also round E₀ itself, bias or not: such a block fits too
+        if g in float64_verdicts(xy, int(bx), int(by), size):
+            continue
         tie = _lost_tie(xy, int(bx), int(by), size, g == "accepted")
-        if tie is None or abs(tie[2]) < LOST_FROM:
+        if g != lo or tie is None or abs(tie[2]) < LOST_FROM:
             return False
     return True
 
@@ -850,7 +873,11 @@ def _lost_tie(xy, bx: int, by: int, size: int, accept: bool):
 def _bias_lost_words(args, expected, got) -> str:
     """The first block where the bias was lost: the tie, the test it passed, E₀ there and
     float64's spacing of numbers near it."""
+    from .block_arithmetic import float64_slip, float64_words
+
     _, (xy, bx, by, size), e, g, _ = first_block(args, expected, got)
+    if float64_slip(xy, bx, by, size) is not None:  # r248 F1: E₀ itself rounded
+        return float64_words(args, expected, got)
     accept = g == "accepted"
     tie = _lost_tie(xy, bx, by, size, accept)
     if tie is None:  # (the answer differs otherwise: the words of the rule say what)
@@ -865,16 +892,20 @@ def _bias_lost_words(args, expected, got) -> str:
         f"it, yet it passes your {where} as if there were no bias. You add the bias to a large "
         f"number: at the block's first centre E₀ = {num(e0)} px² on that edge, and float64's "
         f"numbers near it lie {spacing} px² apart, so E₀ + β rounds back to E₀ for any bias "
-        "below half that (where E₀ is small, the same bias works). Add the bias after the "
-        "offset ((E₀ + T) + β and (E₀ + R) + β are exact), or count in integer units, as lesson "
-        "10 §4 does, where every value and test is exact"
+        "below half that (where E₀ is small, the same bias works). Adding it after the offset "
+        "is no cure: float64 holds E₀ itself exactly only while its products stay below "
+        f"2^37 px² (vertices on the 1/256 grid), and the check's coordinates reach "
+        f"{max(np.abs(coordinate_range())):,.0f} px. Count in integer units (256 a pixel, as "
+        "lesson 10 §4 counts), where every value and test is exact"
     )
 
 
 #: r232 wrongly passed 1, C1: a bias lost to float64's rounding (β = −10⁻¹² or −10⁻⁹ added to
 #: E₀, or even −2⁻¹⁶ at a 2^19-px block), named where the answer differs only at ties on edges
-#: neither top nor left, taken there as E ≥ 0. After the tie rules (the table's order): an
-#: answer with no bias at all, or none in one test, is told so by their own words.
+#: neither top nor left, taken there as E ≥ 0, or (r248 F1) at blocks float64 pixels round
+#: otherwise (:func:`.block_arithmetic.float64_slip`: E₀'s products past 2^37 px², where the
+#: float64 words are said). After the tie rules (the table's order): an answer with no bias at
+#: all, or none in one test, is told so by their own words.
 BIAS_LOST = Mistake("bias lost to rounding", _bias_lost_words, fits=_bias_lost, only_whole=True)
 
 
@@ -908,7 +939,7 @@ def _by_coverage(xy, x0, y0, size):
     ys = gy.reshape(-1, 1) + i.reshape(1, -1) + 0.5
     inside = covered(np.asarray(xy, dtype=float), np.stack([xs.ravel(), ys.ravel()], axis=1))
     inside = inside.reshape(gx.size, -1)
-    return _verdicts(~inside.any(axis=1), inside.all(axis=1), gx.shape, gx.ndim == 0)
+    return verdicts(~inside.any(axis=1), inside.all(axis=1), gx.shape, gx.ndim == 0)
 
 
 #: r73 08-4: an exact test of every centre was told "you tested only 2 of the 4 extreme centres".
@@ -933,7 +964,7 @@ def _float32_verdict(xy, x0, y0, size):
     gx, gy = grid_of(x0, y0)
     area = e(v[0], v[1], v[2][0], v[2][1])
     if area == 0:
-        return _verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+        return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
     if area < 0:
         v = v[[0, 2, 1]]
     px, py = (gx.ravel() + 0.5).astype(f), (gy.ravel() + 0.5).astype(f)
@@ -945,17 +976,21 @@ def _float32_verdict(xy, x0, y0, size):
         e0 = e(a, b, px, py)
         rejected |= ~passes((e0 + f(r)).astype(f), owns)
         accepted &= passes((e0 + f(t)).astype(f), owns)
-    return _verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
+    return verdicts(rejected, accepted & ~rejected, gx.shape, gx.ndim == 0)
 
 
 #: r107 N8-1: float32 edge functions passed every case (no centre lay within float32's
 #: rounding of an edge); the cases "far out, a centre 1/65536 px² from an edge" show it.
 FLOAT32 = Mistake(
     "float32",
-    "did you compute the edge functions in float32? With vertices on the 1/256 grid, E's "
-    "products have 16 bits after the point, and at 3000 px float32's 24 bits cannot hold them: "
-    "this centre, 1/65536 px² from an edge, rounds onto it (or across it). Compute in float64 "
-    "(plain Python floats or np.float64), which holds them exactly",
+    lambda a, e, g: (
+        "did you compute the edge functions in float32? With vertices on the 1/256 grid, E's "
+        "products have 16 bits after the point, and at 3000 px float32's 24 bits cannot hold "
+        "them: this centre, 1/65536 px² from an edge, rounds onto it (or across it). float64 "
+        "holds such products exactly only below 2^37 px² (r248 F1), and the check's "
+        f"coordinates reach {max(np.abs(coordinate_range())):,.0f} px: count in integer units "
+        "(256 a pixel, as lesson 10 §4 counts), in int64, exact at any size"
+    ),
     gives=_float32_verdict,
 )
 
@@ -1022,6 +1057,63 @@ OFFSET_SINGLES = [
 ]  # fmt: skip
 
 
+def _here(a, e, g) -> str:
+    """The rule at the first block that differs (its edge and extreme centre), after "here"."""
+    return "; here " + _block_rule(a, e, g)[2:]
+
+
+#: r248 half-named 2-5: slips that were told the rule at one centre only ("edge v1→v2 fails at
+#: the pixel centre of the block where its E is smallest"), each named by its cause.
+R248_SLIPS = [
+    _single("no accept offset", _at_first(lambda a, e, g: "your accept test never adds T: "
+            "it asks E₀ + β ≥ 0, at the block's first centre only, yet E is smaller elsewhere "
+            "in the block wherever A < 0 or B < 0; a block is accepted only where every edge "
+            "passes even at its smallest value over the block's centres, E₀ + T (T ≤ 0), so "
+            "yours accepts blocks that hold centres outside the triangle" + _here(a, e, g)),
+            offsets="no accept offset"),
+    _single("no reject offset", _at_first(lambda a, e, g: "your reject test never adds R: "
+            "it rejects where E₀ + β < 0, at the block's first centre only, yet E is larger "
+            "elsewhere in the block wherever A > 0 or B > 0; a block is rejected only where "
+            "one edge fails even at its largest value over the block's centres, E₀ + R "
+            "(R ≥ 0), so yours rejects blocks that hold covered centres (holes)" + _here(a, e, g)),
+            offsets="no reject offset"),
+    _single("A's sign lost in the offsets", _offset_words(
+        "your offsets take A = y₂ − y₁, with its minus sign lost (your E₀ has it): "
+        "E = (x₂ − x₁)·(y − y₁) − (y₂ − y₁)·(x − x₁), so A = ∂E/∂x = y₁ − y₂, and where it is "
+        "not 0 your offsets pick the wrong column of the block and add its steps the wrong "
+        "way"), offsets="A's sign lost"),
+    _single("llvmpipe's +1 without its −1", _at_first(lambda a, e, g: "you took llvmpipe's "
+            "+1 on the constant of a left or top edge but not its −1 on every constant: in "
+            "units your bias is +1 on top and left edges and 0 on the others, so a centre one "
+            "unit (2^-16 px²) outside a top or left edge passes and one exactly on a right or "
+            "bottom edge passes too; llvmpipe's two together give 0 on a top or left edge and "
+            "−1 on any other: the β asked" + _here(a, e, g)), tie="plus one"),
+]  # fmt: skip
+
+
+def _labels_swapped(xy, x0, y0, size):
+    """The package's verdicts with "rejected" and "accepted" swapped."""
+    want = expected_block(xy, x0, y0, size)
+    if setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS).area2 == 0:
+        return want  # (a zero-area triangle's early return has no np.where to swap)
+    swap = {"rejected": "accepted", "accepted": "rejected", "partial": "partial"}
+    if isinstance(want, str):
+        return swap[want]
+    return np.vectorize(swap.get, otypes=["<U8"])(want)
+
+
+#: r248 half-named 6: the texts swapped in the final np.where were told the rule only.
+LABELS_SWAPPED = Mistake(
+    "verdicts swapped",
+    "your verdicts are the right ones under each other's names: where a block is rejected you "
+    'say "accepted", and where it is accepted "rejected" (the two texts swapped in your '
+    'np.where, or the masks?); a block that one edge rules out is "rejected", one every edge '
+    'includes whole is "accepted"',
+    _labels_swapped,
+    only_whole=True,
+)
+
+
 def _ccw_only(args, expected, got) -> bool:
     """Is this case's triangle counter-clockwise on screen (y down), with area?"""
     setup, ccw = _oriented(args[0])
@@ -1062,7 +1154,7 @@ SIGN_MISTAKES = [
 def explain_block(args, expected, got) -> str:
     """The first block of the grid that differs, its extreme centres, and both verdicts."""
     xy, x0, y0, size = args
-    _, (_, bx, by, _), e, g, wrong = first_block(args, expected, got)
+    idx, (_, bx, by, _), e, g, wrong = first_block(args, expected, got)
     total = int(np.size(grid_of(x0, y0)[0]))
     block = (
         f"x0={bx}, y0={by}, size={size} (extreme centres x = {num(bx + 0.5)}, "
@@ -1072,7 +1164,9 @@ def explain_block(args, expected, got) -> str:
         return f"the block {block} is {e}; yours says {g}"
     differ = "differs" if wrong == 1 else "differ"
     which = f"all {total} blocks of the grid differ" if wrong == total else f"{wrong} of the grid's {total} blocks {differ}"  # fmt: skip
-    return f"{which}; the first, {block}, is {e}; yours says {g}"
+    # r248 S1: where it sits in your answer, as x0 and y0 index it
+    at = "[" + ", ".join(map(str, idx)) + "]"
+    return f"{which}; the first, at {at}, {block}, is {e}; yours says {g}"
 
 
 def _block_rule(args, expected, got) -> str:
@@ -1143,10 +1237,15 @@ BLOCK_HINTS = (
 
 
 def exercise(scene) -> Exercise:
+    from . import block_arithmetic as ba  # (it reads this module's grids and verdicts)
+
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, BIAS_LOST, CCW_ONLY],
+        [ba.INT32, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
+        # r248 S1: each case's label holds its call (:func:`call_words`); an exception adds
+        # the traceback's last line in the student's code
+        call_words=lambda *args: "",
         # r107 N8-2 (as r94 D8-6 for hiz_rejects): three verdicts, so many a mistake agrees
         # with a wrong one on one case; named only where it gives every failing answer
         partial_names=False,
@@ -1233,7 +1332,7 @@ def _block_cases(rng, word):
 def _labelled(grids) -> list:
     """(label with the case's numbers, args, the package's verdicts) of each grid."""
     return [
-        (f"{label}: {tri_words(xy)}, {_grid_words(gx, gy, s)}", (xy, gx, gy, s),
+        (f"{label}: {call_words(xy, gx, gy, s)}", (xy, gx, gy, s),
          expected_block(xy, gx, gy, s))
         for label, xy, gx, gy, s in grids
     ]  # fmt: skip
@@ -1272,13 +1371,25 @@ def _far_ties(ties) -> list:
             for label, xy, first, size, shape in ties]  # fmt: skip
 
 
-def _grid_words(gx, gy, size) -> str:
-    if gx.ndim == 1:
-        return f"a row of {gx.size} blocks, x0={int(gx[0])}…{int(gx[-1])}, y0={int(gy[0])}, size={size}"  # fmt: skip
-    return (
-        f"a {gx.shape[0]} × {gx.shape[1]} grid of blocks, x0={int(gx.min())}…{int(gx.max())}, "
-        f"y0={int(gy.min())}…{int(gy.max())}, size={size}"
+def call_words(xy, gx, gy, size) -> str:
+    """The case as Python a student can paste to call classify_block on it again (r248 S1:
+    "a 2 × 2 grid of blocks, x0=16…20, y0=4…8" was no argument, and read as a range of 5)."""
+    rows = ", ".join(
+        "[" + ", ".join(full_number(c) for c in p) + "]" for p in np.asarray(xy, float)
     )
+    if gx.ndim == 1:  # a row of blocks
+        grid = f"x0 = np.array({_values(gx)}); y0 = np.full({gx.size}, {int(gy[0])})"
+    else:
+        grid = f"x0, y0 = np.meshgrid({_values(gx[0])}, {_values(gy[:, 0])})"
+    return f"xy = np.array([{rows}]); {grid}; classify_block(xy, x0, y0, {size})"
+
+
+def _values(v) -> str:
+    """Evenly spaced integers as a list (up to 4) or an ``np.arange`` (more)."""
+    v = [int(x) for x in np.ravel(v)]
+    if len(v) <= 4:
+        return str(v)
+    return f"np.arange({v[0]}, {v[-1] + (v[1] - v[0])}, {v[1] - v[0]})"
 
 
 # r162 C2: every case seeded (r49 drew some afresh per check: the count moved on a re-run)
@@ -1308,7 +1419,50 @@ def _huge_blocks() -> list:
         (f"blocks of 2^19 × 2^19 px, a right edge through the middle one's bottom-left corner, "
          f"far from its first centre (nothing inside; {why})", tie, gx - HUGE, gy - HUGE, HUGE),
         *_far_ties(FAR_TIES[3:]),
+        *(_float64_tie(*tie) for tie in FLOAT64_TIES),
     ])  # fmt: skip
+
+
+#: r248 F1: float64 pixels passed every case, whether E > 0 and E ≥ 0 were written out per edge
+#: or the bias was added after the offset (the check's own advice), since every far tie had
+#: whole-pixel vertices, where E₀'s products stay exact. With 1/256 fractions they are exact
+#: only below 2^37 px²: here they reach 3·10¹¹ … 2·10¹² px², each block's deciding centre lies
+#: on an edge or a few 2^-16 px² from it, and float64 pixels decide it wrongly in every form
+#: tried (A·(x − x₁) + B·(y − y₁), the conventions' E, A·x + B·y + C; with the offsets or at the
+#: extreme centre itself: the last four cases), while integer units are exact. The first is the
+#: reader's. Each: (vertices, first block (x0, y0), size), a grid of one block.
+FLOAT64_TIES = (
+    ([[-276483.12109375, -153034.4765625], [805634.4921875, 958915.953125],
+      [-92323.4140625, 497252.1015625]], (0, 0), 131072),
+    ([[641284.5859375, -241962.359375], [465788.95703125, 1300628.4296875],
+      [-29126.953125, 1003905.09375]], (262144, 524288), 262144),
+    ([[748382.109375, 1440629.64453125], [-103280.80078125, 5234.69140625],
+      [482807.9140625, -209168.99609375]], (32768, 262144), 16384),
+    ([[785065.171875, 123306.77734375], [-7581.7890625, 731115.11328125],
+      [-445811.48828125, -329830.62890625]], (0, 262144), 262144),
+    ([[-184739.39453125, 1629235.2109375], [1473004.31640625, -326322.73828125],
+      [1241497.6875, 636631.08203125]], (945204, 296296), 1),
+    ([[1823073.64453125, 389113.578125], [-332594.62109375, 1642953.21875],
+      [118340.34375, 552972.47265625]], (223956, 1319236), 1),
+)  # fmt: skip
+
+
+def _float64_tie(xy, first, size):
+    """A case of :data:`FLOAT64_TIES` as a grid (label, vertices, x0, y0, size), its label
+    saying where the deciding centre lies (computed: :func:`.block_arithmetic.float64_slip`)."""
+    from .block_arithmetic import UNITS, float64_slip
+
+    xy = np.array(xy, dtype=float)
+    edge, t, key = float64_slip(xy, *first, size)
+    x, y = (c / UNITS for c in (t["hi"] if key == "best" else t["lo"]))
+    e = t[key]
+    on = "exactly on" if e == 0 else f"{abs(e)}/65536 px² {'inside' if e > 0 else 'outside'}"
+    kind = edge_kind((edge["B"], -edge["A"]))
+    which = "its centre" if size == 1 else f"its {'best' if key == 'best' else 'worst'} centre"
+    block = "one pixel" if size == 1 else f"a {size:,}-px block"
+    label = (f"far out in float64: {block}, vertices with 1/256 fractions up to "
+             f"{np.abs(xy).max():,.0f} px out, {which} ({num(x)}, {num(y)}) {on} a {kind} edge")  # fmt: skip
+    return (label, xy, *_around(*first, size, (1, 1)), size)
 
 
 _huge = cache(_huge_blocks)
@@ -1507,8 +1661,12 @@ def draw_block_case(ax, case, got):
     ax.set_ylim(hi[1], lo[1])
     if size >= BLOCK_TICKS:
         _ticks_in_blocks(ax, size)
+        ax.set_ylabel("y0 (blocks)")
     else:
         plain_ticks(ax)
+        # r248 S4: the axes' quantity and unit
+        ax.set_xlabel(f"x (px); {ax.get_xlabel()}")
+        ax.set_ylabel("y (px, down)")
     ax.set_aspect("equal")
     return artists
 
@@ -1524,36 +1682,39 @@ def _ticks_in_blocks(ax, size: int) -> None:
     from matplotlib.ticker import FuncFormatter, MultipleLocator
 
     power = int(size).bit_length() - 1
-    unit = f"2{_superscript(power)}" if size == 1 << power else f"{size:,}"
+    unit = f"2{superscript(power)}" if size == 1 << power else f"{size:,}"
+    # r248: a far tie's view spans 9 blocks: every other one labelled past 6 (they ran together)
+    span = max(abs(np.diff(ax.get_xlim()))[0], abs(np.diff(ax.get_ylim()))[0]) / size
+    step = size * max(1, int(np.ceil(span / 6)))
     for axis in (ax.xaxis, ax.yaxis):
-        axis.set_major_locator(MultipleLocator(size))
+        axis.set_major_locator(MultipleLocator(step))
         axis.set_major_formatter(FuncFormatter(lambda value, _: f"{value / size:g}"))
     ax.set_xlabel(f"x0, y0 in blocks of {unit} px; {ax.get_xlabel()}")
 
 
-def _superscript(n: int) -> str:
-    """``n`` in superscript digits ("19" → "¹⁹")."""
-    return str(n).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
-
-
-#: Units a pixel of the task's integer count (lesson 10 §4: Direct3D's and llvmpipe's 8
-#: sub-pixel bits): vertices on the 1/256 grid and pixel centres are whole numbers of them.
-UNITS = 256
 #: The register classify_block counts in (NumPy's int64; Python's ints have no limit).
 INT_BITS = 64
 
 
-def integer_budget() -> str:
-    """The sentence cell 1 of exercise 08 prints (cell 2 refers to it): lesson 10 §4's bit
-    count for the check's cases in units of 1/256 px. r232 M1: the task counts in integers as
-    the lesson's walker does (it asked for float64, whose exactness needed a reach, and a bias
-    added to a large E₀ rounded away, C1): every coordinate that enters, vertex or pixel centre,
-    lies within a range of L px, so two differ by less than 256·L ≤ 2^d units, and E needs
-    2d + 2 bits with its sign."""
+@cache
+def coordinate_range() -> tuple[float, float]:
+    """The smallest and largest x or y (px) of the check's vertices and blocks."""
     lo, hi = np.inf, -np.inf
     for _, (xy, gx, gy, size), _ in block_cases():
         lo = min(lo, float(np.min(xy)), float(min(gx.min(), gy.min())))
         hi = max(hi, float(np.max(xy)), float(max(gx.max(), gy.max()) + size))
+    return lo, hi
+
+
+def integer_budget() -> str:
+    """The sentence cell 1 of exercise 08 prints (cell 2 refers to it): lesson 10 §4's bit
+    count for the check's cases in units of 1/256 px. r232 M1: the task counts in integers, as
+    lesson 10 §4 counts on a GPU's grid (r248 C1: the package's walker keeps 512 units a pixel;
+    the task asked for float64, whose exactness needed a reach, and a bias added to a large E₀
+    rounded away, r232 C1): every coordinate that enters, vertex or pixel centre,
+    lies within a range of L px, so two differ by less than 256·L ≤ 2^d units, and E needs
+    2d + 2 bits with its sign."""
+    lo, hi = coordinate_range()
     span = hi - lo
     d = int(np.ceil(np.log2(UNITS * span)))
     assert 2 * d + 2 <= INT_BITS, d  # the check's own cases: int64 holds every value
@@ -1562,6 +1723,22 @@ def integer_budget() -> str:
         f"a range of L = {span:,.0f} px: in units of 1/{UNITS} px two coordinates differ by less "
         f"than {UNITS}·L < 2^{d}, so E needs 2·{d} + 2 = {2 * d + 2} bits (lesson 10 §4's count): "
         f"int{INT_BITS} holds every value exactly"
+    )
+
+
+def float64_limit() -> str:
+    """The sentence cell 1 of exercise 08 prints beside lesson 10 §4's count (cell 2 quotes
+    it, r248 F1): where float64 pixels stop being exact on the check's cases."""
+    from . import block_arithmetic as ba  # (it reads the grid module, not this one)
+
+    fraction = 2 * 8  # bits after the point of a product: 8 from each factor (1/256 grid)
+    exact = ba.FLOAT64_BITS - fraction
+    reach = max(abs(c) for c in coordinate_range())
+    return (
+        f"float64 pixels: a product of two differences on the 1/256 grid has {fraction} bits "
+        f"after the point, so float64's {ba.FLOAT64_BITS} bits hold it exactly only below "
+        f"2{superscript(exact)} px² (differences up to about {2 ** (exact / 2):,.0f} px); the check's "
+        f"coordinates reach {reach:,.0f} px"
     )
 
 

@@ -124,7 +124,8 @@ def check_exercise(spec: Exercise, fn) -> Report:
         label, _, expected = case
         if outcome.error is not None:
             draw = _drawer(spec, case, None)
-            failures.append(Failure(label, outcome.error, expected, None, draw, outcome.kind))
+            text = _without_answer(spec, case[1], outcome)
+            failures.append(Failure(label, text, expected, None, draw, outcome.kind))
         elif k in said:
             kind, text = said[k]
             got = answers[k]
@@ -144,6 +145,16 @@ def check_exercise(spec: Exercise, fn) -> Report:
         spec.name, failures, len(cases), False, example, stopped, len(ran), package,
         precision=precision, scene=scene,
     )  # fmt: skip
+
+
+def _without_answer(spec: Exercise, args, outcome) -> str:
+    """The words of a case that gave no answer: with the exercise's ``call_words``, the call
+    first and, for an exception, the traceback's last line in the student's code (r248 S1)."""
+    if spec.call_words is None or outcome.kind in STOPS or outcome.error == SKIPPED:
+        return outcome.error
+    call = run_checker(lambda: spec.call_words(*args), "")
+    where = f"; the traceback's last line in your code: {outcome.where}" if outcome.where else ""
+    return f"{call}: {outcome.error}{where}" if call else f"{outcome.error}{where}"
 
 
 def _low_precision(results) -> str | None:
