@@ -22,7 +22,7 @@ from teachraster.widgets import offline
 #: Widgets whose page steps or slides (the rest shows its picture).
 LIVE = {"FillPlayer", "LinePlayer", "ZBufferStepper", "TileExplorer", "TexturedPlaneViewer",
         "FilterExplorer", "DepthPrecisionExplorer", "PlaneExplorer", "ProjectionExplorer",
-        "SamplingExplorer", "DivideCostExplorer", "PixelInspector", "CasePicker",
+        "SamplingExplorer", "SpanSubdivisionExplorer", "DivideCostExplorer", "PixelInspector", "CasePicker",
         "FrameInspector", "Predict"}  # fmt: skip
 #: Widgets that compute in the page (teachraster.widgets.explorable): live everywhere.
 COMPUTED_IN_THE_PAGE = {"PipelineMap", "CrackExplorer", "EdgeFunctionExplorer",

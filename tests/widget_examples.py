@@ -25,6 +25,7 @@ def examples():
     from teachraster import widgets as w
     from teachraster.widgets.divide_cost import DivideCostExplorer
     from teachraster.widgets.sampling_explorer import SamplingExplorer
+    from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
 
     tri = tr.Triangle(TRI, attrs={"u": [0.0, 1.0, 0.5]})
     return {
@@ -51,6 +52,7 @@ def examples():
         "BlendingExplorer": lambda: w.BlendingExplorer(size=(16, 16), backend="image"),
         "SamplingExplorer": lambda: SamplingExplorer(backend="image"),
         "DivideCostExplorer": lambda: DivideCostExplorer(_rows(), backend="image"),
+        "SpanSubdivisionExplorer": lambda: SpanSubdivisionExplorer(backend="image"),
         # computed in the page (teachraster.widgets.explorable): live in an offline page
         "PipelineMap": lambda: w.PipelineMap(),
         "CrackExplorer": lambda: w.CrackExplorer(8, 8),

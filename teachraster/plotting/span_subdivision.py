@@ -1,0 +1,116 @@
+"""One span subdivided, drawn: the true u, the chords between exact divides, the worst miss.
+
+Lesson 06's :class:`~teachraster.widgets.span_explorer.SpanSubdivisionExplorer` draws with
+these; :func:`plot_span` draws once, :func:`update_span` moves the same artists to another
+:class:`~teachraster.study.span_subdivision.SpanSubdivision` (the axes stay put, so a
+widget can blit). The numbers come from :mod:`teachraster.study.span_subdivision`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.ticker import FormatStrFormatter, NullFormatter
+
+from ..study.span_subdivision import SpanSubdivision, true_u
+from .style import COLORS, OKABE_ITO
+
+#: The miss panel's log axis (texels): below its floor a miss is drawn on the floor.
+MISS_FLOOR, MISS_TOP = 0.01, 400.0
+#: Points per pixel of the fine curves (true u, and the chords' miss between pixel centres).
+FINE_PER_PIXEL = 8
+
+
+@dataclass
+class SpanArtists:
+    """What :func:`plot_span` drew, moved in place by :func:`update_span`."""
+
+    true: object  # the perspective-correct u, fine
+    chords: object  # the affine chords through the anchors
+    anchors: object  # the exact divides (dots)
+    worst: object  # the worst miss: a vertical segment from the true u to the chord
+    worst_text: object  # its value, beside it
+    miss: object  # |chord - true| along the span, fine (texels)
+    bounds: object  # each piece's closed-form worst miss, a dash over the piece
+    pixel_miss: object  # |chord - true| at the pixel centres (dots)
+
+
+def _fine(s: SpanSubdivision):
+    x = np.linspace(0.0, s.length - 1, (s.length - 1) * FINE_PER_PIXEL + 1)
+    chord = np.interp(x, s.anchors, s.anchor_u)
+    return x, true_u(x, s.length, s.r, s.texels), chord
+
+
+def _bound_path(s: SpanSubdivision):
+    """Each piece's closed-form worst miss as a horizontal dash over the piece (NaN-broken)."""
+    xs, ys = [], []
+    for k, b in enumerate(s.bound_texels):
+        if len(s.anchors) < 2:
+            break
+        xs += [s.anchors[k], s.anchors[k + 1], np.nan]
+        ys += [max(b, MISS_FLOOR), max(b, MISS_FLOOR), np.nan]
+    return xs, ys
+
+
+def _worst_segment(s: SpanSubdivision):
+    x = s.worst_x
+    return [x, x], [float(true_u(x, s.length, s.r, s.texels)), float(np.interp(x, s.anchors,
+                                                                             s.anchor_u))]  # fmt: skip
+
+
+def plot_span(ax_u, ax_miss, s: SpanSubdivision) -> SpanArtists:
+    """The span ``s`` on two axes sharing x (pixels along the span): u in texels (``ax_u``),
+    and the chords' miss in texels on a log scale (``ax_miss``)."""
+    x, u, chord = _fine(s)
+    (true,) = ax_u.plot(x, u, color="0.2", lw=2.5, label="true u (perspective-correct)")
+    (chords,) = ax_u.plot(x, chord, color=COLORS["outside"], lw=2.5,
+                          label="chords (affine between divides)")  # fmt: skip
+    (dots,) = ax_u.plot(s.anchors, s.anchor_u, "o", color=COLORS["outside"], ms=8,
+                        label="exact divides")  # fmt: skip
+    (worst,) = ax_u.plot(*_worst_segment(s), color=OKABE_ITO["blue"], lw=4,
+                         solid_capstyle="butt", label="worst miss")  # fmt: skip
+    worst_text = ax_u.annotate("", (0, 0), xytext=(-10, 0), textcoords="offset points",
+                               ha="right", va="center", color=OKABE_ITO["blue"],
+                               fontsize="small")  # fmt: skip
+    ax_u.set(xlim=(-1, s.length), ylim=(-0.04 * s.texels, 1.04 * s.texels),
+             ylabel="u (texels)")  # fmt: skip
+    ax_u.legend(loc="upper left", fontsize="small", frameon=False)
+    (miss,) = ax_miss.plot(x, np.maximum(np.abs(chord - u), MISS_FLOOR), color=COLORS["outside"],
+                           lw=2, label="chord − true")  # fmt: skip
+    (bounds,) = ax_miss.plot(*_bound_path(s), color=OKABE_ITO["blue"], lw=2.5, ls="--",
+                             label="(√ρ − 1)²/(ρ − 1) · Δu")  # fmt: skip
+    (pix,) = ax_miss.plot(np.arange(s.length), np.maximum(np.abs(s.pixel_miss), MISS_FLOOR), "o",
+                          color="0.2", ms=3.5, label="at pixel centres")  # fmt: skip
+    ax_miss.set_yscale("log")
+    ax_miss.yaxis.set_major_formatter(FormatStrFormatter("%g"))  # 0.01 ... 100, not 10⁻²
+    ax_miss.yaxis.set_minor_formatter(NullFormatter())
+    ax_miss.set(ylim=(MISS_FLOOR, MISS_TOP), xlabel="pixel along the span",
+                ylabel="miss (texels)")  # fmt: skip
+    # the key under the panel: inside it, any corner hid an arc at some N and r
+    ax_miss.figure.legend(handles=[miss, bounds, pix], loc="outside lower center",
+                          fontsize="small", frameon=False, ncols=3)  # fmt: skip
+    for ax in (ax_u, ax_miss):
+        ax.grid(True, alpha=0.3)
+    art = SpanArtists(true, chords, dots, worst, worst_text, miss, bounds, pix)
+    _label_worst(art, s)
+    return art
+
+
+def _label_worst(art: SpanArtists, s: SpanSubdivision) -> None:
+    xs, ys = _worst_segment(s)
+    art.worst_text.xy = (xs[0], (ys[0] + ys[1]) / 2)
+    art.worst_text.set_text(f"{s.worst_texels:.3g} texels")
+
+
+def update_span(art: SpanArtists, s: SpanSubdivision) -> None:
+    """Move every artist of ``art`` to ``s`` (nothing drawn here)."""
+    x, u, chord = _fine(s)
+    art.true.set_ydata(u)
+    art.chords.set_ydata(chord)
+    art.anchors.set_data(s.anchors, s.anchor_u)
+    art.worst.set_data(*_worst_segment(s))
+    _label_worst(art, s)
+    art.miss.set_ydata(np.maximum(np.abs(chord - u), MISS_FLOOR))
+    art.bounds.set_data(*_bound_path(s))
+    art.pixel_miss.set_ydata(np.maximum(np.abs(s.pixel_miss), MISS_FLOOR))
