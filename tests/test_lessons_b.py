@@ -5575,3 +5575,37 @@ def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
     assert "pixel centres at integer coordinates" in split and "+0.5" in split
     assert "A dashed-looking edge" not in " ".join(text)
     assert "a real OpenGL rasteriser, draws" in text[-1] and "real GPU rasteriser" not in text[-1]
+
+
+def test_06_one_span_explorer_and_q_span():
+    """Review r252 change 1: subdivision on one span the student moves (N, r), with a
+    question answered by moving it; the cuts it asks for printed under it, held by q_span."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    ids = [c.get("id") for c in nb["cells"]]
+    cells = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
+    # where the lesson explains subdivision: after the floor's figures, before the Your turn
+    assert ids.index("c05") < ids.index("spantext") < ids.index("spanexplorer")
+    assert ids.index("spanexplorer") < ids.index("q06span") < ids.index("spancuts")
+    assert ids.index("spancuts") < ids.index("yourturn")
+    assert cells["spancuts"].startswith("q_span.hold()")
+    assert nb["cells"][ids.index("spancuts")]["metadata"]["jupyter"]["source_hidden"]
+    # the explorer starts where the question's low r is (a widget is not kept in the globals)
+    assert f"SpanSubdivisionExplorer(16, {ns.span_r[0]:g})" in cells["spanexplorer"]
+    assert SpanSubdivisionExplorer.__module__ in cells["spanexplorer"]
+    # the text's claims: a cut of about 4 at a low r (the square law), less at r = 100
+    assert 3.5 < ns.span_cut[ns.span_r[0]] <= 4.0
+    assert 2.2 < ns.cut100 < 3.5 and ns.span_answer == ns.span_choices[1]
+    assert "cut of about 4" in " ".join(cells["spantext"].split())
+    # the explanation's worst piece is the span's last, at both N
+    assert all(ns.far[n].worst == len(ns.far[n].rho) - 1 for n in (8, 16))
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    if "halving N cut it" in printed:  # held in the browser until q_span is checked
+        for r in ns.span_r:
+            assert f"{ns.span_cut[r]:.2f} times" in printed
