@@ -171,9 +171,12 @@ def test_06_review_r238_integer_prices_held_text_and_float32_bits():
         / (ns.per_pixel_q * ns.covered256 + 2 * ns.lines256 * ns.per_crossing_q)
     )
     assert round(estimate, 1) == round(ns.fill_answer, 1) == 7.6
-    assert ns.fill_choices == ["about 3.7", "about 5.5", "about 7.6", "about 10.1"]
+    # r252 P2: q_fill asks the mechanism (the ratio at 512² against 256²), not the arithmetic
+    assert ns.fill_pick == 0 and ns.fill_answer_512 > 1.05 * ns.fill_answer
+    assert round(ns.fill_answer_512, 1) == round(ns.fill_ratio["512²"], 1)
     asked = next(c for c in cells if "q_fill = Predict(" in c).split("explain=")[0]
     assert "P5I['divides']" in asked and "per_crossing_q" in asked and "§1" in asked
+    assert "512²" in asked and "rise" in asked and "How many times" not in asked
     # F2: the edge table prices each arithmetic where it runs on the Pentium, and says so
     assert "fixed-point ones on its integer unit" in md and "It has no `GPU` column" in md
     # S4: whole counts in one piece, with separators
@@ -972,16 +975,12 @@ def test_06_review_r37_a_prediction_in_every_section():
              if k == "markdown" and not c.startswith("## Summary")]  # fmt: skip
     assert not any("32-bit unit" in c or "int32" in c for c in after)
     assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
-    # r228 F1: at the Pentium's prices the divides weigh less; the choices carry one decimal
-    assert (
-        abs(ns.fill_no_box - ns.fill_answer) > 1 and abs(ns.fill_no_divides - ns.fill_answer) > 0.5
-    )
-    # q_fill's four choices differ, and the right one is the ratio the fill cell prints
-    assert (
-        len(set(ns.fill_choices)) == 4 and f"about {ns.fill_ratio['256²']:.1f}" in ns.fill_choices
-    )
-    # 11 against 2 (r238 F1: the integer unit's prices): the slip of ignoring box and lines
-    assert ns.fill_per_pixel_only == 5.5
+    # q_fill's four choices differ; the right one follows the ratios the fill cell prints
+    assert len(set(ns.fill_choices)) == 4 and ns.fill_ratio["512²"] > ns.fill_ratio["256²"]
+    # the explanation: the box's empty part grows like the triangle (its centres per covered
+    # pixel about the same at both sizes)
+    per_covered_256 = ns.box256.size / ns.covered256
+    assert abs(ns.box_per_covered - per_covered_256) < 0.1 * per_covered_256
     # q_depth: linear float32 misses no facing pixel and many crossing ones, as float64 does
     assert ns.lin32["facing_wrong"] == 0 < ns.lin32["slanted_wrong"] == ns.lin64["slanted_wrong"]
     # r113 06-3: q_depth asks the crossing count in float32 against float64 (as many: the
@@ -1094,8 +1093,8 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
     cases = {
         "q_bits": ([ns.bits_answer], [c for c in ns.bits_choices if c != ns.bits_answer]),
         "q_fill": (
-            [f"about {ns.fill_answer:.1f}"],
-            [c for c in ns.fill_choices if c != f"about {ns.fill_answer:.1f}"],
+            [ns.fill_choices[ns.fill_pick]],
+            [c for c in ns.fill_choices if c != ns.fill_choices[ns.fill_pick]],
         ),
         "q_depth": ([ns.depth_answer], [c for c in ns.depth_choices if c != ns.depth_answer]),
         "q_quake": ([ns.quake_answer], [c for c in ns.quake_choices if c != ns.quake_answer]),
