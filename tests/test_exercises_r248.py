@@ -224,9 +224,9 @@ def test_c1_the_task_says_what_lesson_10s_walker_keeps():
             "walker keeps 512)") in task  # fmt: skip
     assert "lesson 10 §4's walker does" not in task
     lesson = " ".join(flat("".join(c["source"])) for c in json.loads(LESSON_10.read_text())["cells"])  # fmt: skip
-    # §4's walker holds E on the package's grid (cell 5), its count and its int32 walk use a
-    # GPU's (cells 19, 25)
-    assert "(512 units a pixel, §4)" in lesson
+    # §4 counts and walks in int32 on a GPU's grid (256 units a pixel); the simulator's own
+    # grid (512 units a pixel, printed from units_per_pixel) is named beside it
+    assert "The simulator's own grid" in lesson and "units_per_pixel(8)" in lesson
     assert "on a GPU's grid, 256 units a pixel (§4's count), not the simulator's 512" in lesson
     assert "Count on a GPU's own grid" in lesson and "**256 units a pixel**" in lesson
     assert "walker does" not in graded_cell(NOTEBOOK, "classify_block_solution")
