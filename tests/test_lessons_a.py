@@ -3673,6 +3673,8 @@ def test_05a_r182_stepper_question_and_small_items():
     # the stepper, then the held count
     stepper = next(i for i, t in enumerate(src) if "stepper = ZBufferStepper(" in t)
     assert ask < stepper and nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
+    # review r259 P-1: two clicks on next showed the answer; the stepper is held until Check
+    assert src[stepper].startswith("q_step.hold()")
     assert src[stepper + 1].startswith("q_step.hold()") and "shown_at_end" in src[stepper + 1]
     assert "shown_other" in src[stepper + 1]
     said = re.sub(r'"\s*\n\s*"', "", next(t for t in src if "use **previous**" in t))
