@@ -3695,6 +3695,27 @@ def test_05a_r182_stepper_question_and_small_items():
     assert 'xlabel="x (view units)"' in code["c18"] and "ylim=(-0.3, 3.3)" in code["guard_fig"]
 
 
+def test_05a_r259_depth_states_in_every_api():
+    """Review r259 M-1: the table of depth-test states gave OpenGL and teachraster only; it
+    names Direct3D 11, Vulkan and llvmpipe too, each with its section, and quotes that
+    disabling the test stops the writes in all three APIs. S-3: the window depth is defined
+    where it is first used."""
+    text = {c.get("id"): "".join(c["source"]) for c in
+            json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]}  # fmt: skip
+    header = next(line for line in text["c02_off"].splitlines() if line.startswith("| OpenGL"))
+    for column in ("OpenGL 4.6 state (§17.3.4)", "D3D11.3 §17.9, §17.11", "*Depth Test*",
+                   "llvmpipe", "`tr.render`"):  # fmt: skip
+        assert column in header, column
+    rows = [line for line in text["c02_off"].splitlines() if line.startswith("| `gl")]
+    assert len(rows) == 4 and all(row.count(" | ") == 6 for row in rows)
+    off = next(row for row in rows if row.startswith("| `glDisable(GL_DEPTH_TEST)`"))
+    assert "`DepthEnable = FALSE`" in off and "`depthTestEnable = VK_FALSE`" in off
+    flat = " ".join(text["c02_off"].split())
+    assert "depth test and depth buffer write are not performed" in flat
+    assert "Depth writes are always disabled when `depthTestEnable` is `VK_FALSE`" in flat
+    assert "$z_\\text{win} = (z/w)/2 + 1/2$" in " ".join(text["c02"].split())
+
+
 def test_05a_r158_words_conventions_prepass_and_try_it():
     """Review r158 05a-1: the teachraster row cites CONVENTIONS.md, which said "x and y are
     not clipped"; it now gives the band and its formula. 05a-8: the Try it named the
