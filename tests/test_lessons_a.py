@@ -3714,6 +3714,12 @@ def test_05a_r259_depth_states_in_every_api():
     assert "depth test and depth buffer write are not performed" in flat
     assert "Depth writes are always disabled when `depthTestEnable` is `VK_FALSE`" in flat
     assert "$z_\\text{win} = (z/w)/2 + 1/2$" in " ".join(text["c02"].split())
+    # S-1: the main text says, as the fold does, that early tests with discard are the
+    # vendor's choice, not a fact of every GPU
+    shown = " ".join(text["c11"].split("<details>")[0].split())
+    assert "That is why alpha-tested foliage" not in shown
+    assert "whether a GPU does it is its vendor's choice" in shown
+    assert "Some GPUs instead turn early-z off for such shaders" in shown
 
 
 def test_05a_r158_words_conventions_prepass_and_try_it():
