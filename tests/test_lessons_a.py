@@ -3606,10 +3606,14 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
         assert ns.snap_cuts[g_, bits] == ns.snap_cuts[g_, None] > 100
     assert ns.snap_cuts[1.0, bits] == len(ns.random_clip) < ns.N_RANDOM == 200  # all are cut
     text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    # review r259 S-2: the study is a folded block built from its numbers, none typed
+    note = " ".join(ns.snap_note.split())
+    assert note.startswith("<details>") and note.endswith("</details>")
     view, band = (f"{len(ns.snap_changed[g_, bits])} of {ns.snap_cuts[g_, bits]}" for g_ in (1, 2))
-    assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in text
-    assert f"{ns.N_RANDOM} random triangles reaching out of the image" in text
-    assert f"llvmpipe's band for {band}," in text and "unsnapped no cut changed one" in text
+    assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in note
+    assert f"{ns.N_RANDOM} random triangles reaching out of the image" in note
+    assert f"llvmpipe's band for {band}," in note and "unsnapped no cut changed one" in note
+    assert not re.search(r"for \d+ of the \d+ triangles", text)  # no count typed in Markdown
     # every changed centre lies within a snapping step of a cut edge (the pieces' edges,
     # through their snapped vertices), as the text says
     from teachraster.core.snapping import snap
@@ -3627,7 +3631,15 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
             assert min(gaps) < ns.STEP_PX == 1 / 256
     assert ns.flip_cover["whole"] != ns.flip_cover["cut"]
     assert ns.gap_whole < ns.STEP_PX / 2 and ns.gap_cut < ns.STEP_PX / 2
-    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in text
+    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in note
+    assert f"{ns.gap_whole:.5f}" not in text
+    nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
+    folded = [c for c in nb["cells"] if c.get("id") in ("guard_snap", "guard_snap_fig")]
+    assert all(c["metadata"]["jupyter"]["source_hidden"] for c in folded)
+    assert "display(Markdown(snap_note))" in "".join(folded[1]["source"])
+    assert not any("print(" in "".join(c["source"]) for c in folded)  # all in the fold
+    # FIG-1: the key in a row of its own, the zoom's title within its panel
+    assert 'title=f"centre: {flip_side} only"' in "".join(folded[1]["source"])
     for wrong in ("A cut moves no edge", "changes no fragment position", "makes any band safe"):
         assert wrong not in text
     # review r190 05a-12: cost is the main argument, the rounding a second one
