@@ -3606,10 +3606,14 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
         assert ns.snap_cuts[g_, bits] == ns.snap_cuts[g_, None] > 100
     assert ns.snap_cuts[1.0, bits] == len(ns.random_clip) < ns.N_RANDOM == 200  # all are cut
     text = " ".join(" ".join(_cells("05a_zbuffer", "markdown")).split())
+    # review r259 S-2: the study is a folded block built from its numbers, none typed
+    note = " ".join(ns.snap_note.split())
+    assert note.startswith("<details>") and note.endswith("</details>")
     view, band = (f"{len(ns.snap_changed[g_, bits])} of {ns.snap_cuts[g_, bits]}" for g_ in (1, 2))
-    assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in text
-    assert f"{ns.N_RANDOM} random triangles reaching out of the image" in text
-    assert f"llvmpipe's band for {band}," in text and "unsnapped no cut changed one" in text
+    assert f"for {view.replace(' of ', ' of the ')} triangles it cut" in note
+    assert f"{ns.N_RANDOM} random triangles reaching out of the image" in note
+    assert f"llvmpipe's band for {band}," in note and "unsnapped no cut changed one" in note
+    assert not re.search(r"for \d+ of the \d+ triangles", text)  # no count typed in Markdown
     # every changed centre lies within a snapping step of a cut edge (the pieces' edges,
     # through their snapped vertices), as the text says
     from teachraster.core.snapping import snap
@@ -3627,7 +3631,15 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
             assert min(gaps) < ns.STEP_PX == 1 / 256
     assert ns.flip_cover["whole"] != ns.flip_cover["cut"]
     assert ns.gap_whole < ns.STEP_PX / 2 and ns.gap_cut < ns.STEP_PX / 2
-    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in text
+    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in note
+    assert f"{ns.gap_whole:.5f}" not in text
+    nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
+    folded = [c for c in nb["cells"] if c.get("id") in ("guard_snap", "guard_snap_fig")]
+    assert all(c["metadata"]["jupyter"]["source_hidden"] for c in folded)
+    assert "display(Markdown(snap_note))" in "".join(folded[1]["source"])
+    assert not any("print(" in "".join(c["source"]) for c in folded)  # all in the fold
+    # FIG-1: the key in a row of its own, the zoom's title within its panel
+    assert 'title=f"centre: {flip_side} only"' in "".join(folded[1]["source"])
     for wrong in ("A cut moves no edge", "changes no fragment position", "makes any band safe"):
         assert wrong not in text
     # review r190 05a-12: cost is the main argument, the rounding a second one
@@ -3673,6 +3685,8 @@ def test_05a_r182_stepper_question_and_small_items():
     # the stepper, then the held count
     stepper = next(i for i, t in enumerate(src) if "stepper = ZBufferStepper(" in t)
     assert ask < stepper and nb["cells"][ask]["metadata"]["jupyter"]["source_hidden"]
+    # review r259 P-1: two clicks on next showed the answer; the stepper is held until Check
+    assert src[stepper].startswith("q_step.hold()")
     assert src[stepper + 1].startswith("q_step.hold()") and "shown_at_end" in src[stepper + 1]
     assert "shown_other" in src[stepper + 1]
     said = re.sub(r'"\s*\n\s*"', "", next(t for t in src if "use **previous**" in t))
@@ -3691,6 +3705,33 @@ def test_05a_r182_stepper_question_and_small_items():
     )
     code = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
     assert 'xlabel="x (view units)"' in code["c18"] and "ylim=(-0.3, 3.3)" in code["guard_fig"]
+
+
+def test_05a_r259_depth_states_in_every_api():
+    """Review r259 M-1: the table of depth-test states gave OpenGL and teachraster only; it
+    names Direct3D 11, Vulkan and llvmpipe too, each with its section, and quotes that
+    disabling the test stops the writes in all three APIs. S-3: the window depth is defined
+    where it is first used."""
+    text = {c.get("id"): "".join(c["source"]) for c in
+            json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]}  # fmt: skip
+    header = next(line for line in text["c02_off"].splitlines() if line.startswith("| OpenGL"))
+    for column in ("OpenGL 4.6 state (§17.3.4)", "D3D11.3 §17.9, §17.11", "*Depth Test*",
+                   "llvmpipe", "`tr.render`"):  # fmt: skip
+        assert column in header, column
+    rows = [line for line in text["c02_off"].splitlines() if line.startswith("| `gl")]
+    assert len(rows) == 4 and all(row.count(" | ") == 6 for row in rows)
+    off = next(row for row in rows if row.startswith("| `glDisable(GL_DEPTH_TEST)`"))
+    assert "`DepthEnable = FALSE`" in off and "`depthTestEnable = VK_FALSE`" in off
+    flat = " ".join(text["c02_off"].split())
+    assert "depth test and depth buffer write are not performed" in flat
+    assert "Depth writes are always disabled when `depthTestEnable` is `VK_FALSE`" in flat
+    assert "$z_\\text{win} = (z/w)/2 + 1/2$" in " ".join(text["c02"].split())
+    # S-1: the main text says, as the fold does, that early tests with discard are the
+    # vendor's choice, not a fact of every GPU
+    shown = " ".join(text["c11"].split("<details>")[0].split())
+    assert "That is why alpha-tested foliage" not in shown
+    assert "whether a GPU does it is its vendor's choice" in shown
+    assert "Some GPUs instead turn early-z off for such shaders" in shown
 
 
 def test_05a_r158_words_conventions_prepass_and_try_it():

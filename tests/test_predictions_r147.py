@@ -251,6 +251,9 @@ def test_05a_q_step_is_asked_before_its_answer_stands():
     cells = _cells("05a_zbuffer")
     ask = _ask_index(cells, "q_step = Predict(")
     assert not any("ZBufferStepper(" in _source(c) for c in cells[:ask])
+    # review r259 P-1: the stepper itself answers it (step to the later triangles): held too
+    shown_stepper = next(c for c in cells[ask:] if "ZBufferStepper(" in _source(c))
+    assert _source(shown_stepper).startswith("q_step.hold()")
     assert "a front face drawn later" not in seen
     assert f"the stepper opens on triangle {ns.k_open}" in seen  # what the question reads
 
