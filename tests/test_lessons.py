@@ -472,9 +472,14 @@ def test_03_r155_homogeneous_rows_and_the_msaa_centre():
                  if c["cell_type"] == "markdown").split()
     )  # fmt: skip
     assert "$w_k (x_k, y_k, 1)$" in md and "the third column holds each vertex's $w$" not in md
-    assert "Direct3D's default" in md and "GL leaves the location open" in md
-    # r171: lesson 08 says so in its section 2 (its section 5 is on centroid sampling)
-    assert "open: lesson 08, section 2)" in md and "lesson 08, section 5" not in md
+    assert "Direct3D's default" in md and "GL and Vulkan leave the location open" in md
+    # r171: lesson 08 says so in its section 2; r258 C1: centroid sampling is its section 5
+    assert "open: lesson 08, section 2; centroid sampling is its section 5)" in md
+    eight = json.loads((NOTEBOOK_DIR / "08_antialiasing.ipynb").read_text())["cells"]
+    heads = [line for c in eight for line in "".join(c["source"]).splitlines()
+             if line.startswith("## ")]  # fmt: skip
+    assert "## 2. Supersampling vs MSAA" in heads
+    assert "## 5. Where MSAA evaluates attributes, and centroid sampling" in heads
     assert "two weights are negative" in md and "one weight negative" not in md
 
 
