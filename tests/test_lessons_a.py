@@ -1219,7 +1219,7 @@ def test_03_predictions_point_and_drift_are_the_packages():
     barycentric point is placed on the figure (PredictPoint) before any formula."""
     ns = lesson("03_barycentric_and_plane_equations")
     assert ns.one_rounding == 2.0**-15  # half of float32's step 2^-14 near 1000
-    assert any("3e-05" in label for label in ns.drift)
+    assert any("about 3·10⁻⁵)" in label for label in ns.drift)  # r258 S5: as the others
     chosen = [k for k, (lo, hi) in ns.drift.items() if lo < ns.end32 <= hi]
     assert chosen == ["between 10⁻² and 10⁻¹"]
     # review r7 03-1/2: "over a thousand times" one rounding, printed; the roundings of one
