@@ -5575,3 +5575,36 @@ def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
     assert "pixel centres at integer coordinates" in split and "+0.5" in split
     assert "A dashed-looking edge" not in " ".join(text)
     assert "a real OpenGL rasteriser, draws" in text[-1] and "real GPU rasteriser" not in text[-1]
+
+
+def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
+    """Review r260 F-1, M-1: r is one step in Direct3D, llvmpipe and teachraster, chosen by the
+    implementation in GL (§14.6.5) and Vulkan (VK_EXT_depth_bias_control); a five-row table
+    with D3D's integer DepthBias; the question states its r. M-2: reverse-Z flips the signs,
+    and Microsoft's "larger z ... in front" is the greater-wins case. S-4: the clamp."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    (sec5,) = [t for t in text if t.startswith("## 5. Depth bias")]
+    flat = " ".join(sec5.split())
+    assert "with $r$ one step of the buffer" not in flat
+    assert "one step of a unorm buffer in Direct3D, llvmpipe and this simulator" in flat
+    table = sec5.split("**The depth bias in the standards**")[1]
+    rows = {line.split("|")[1].strip(): line for line in table.splitlines()
+            if line.startswith("| ") and "---" not in line}  # fmt: skip
+    assert list(rows)[1:] == ["OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
+                              "teachraster"]  # fmt: skip
+    assert "implementation-dependent" in rows["OpenGL 4.6"] and "§14.6.5" in rows["OpenGL 4.6"]
+    assert "(an **integer**)" in rows["Direct3D 11"] and "`DepthBias = -1`" in rows["Direct3D 11"]
+    assert "`VK_EXT_depth_bias_control`" in rows["Vulkan"] and "not fixed" in rows["Vulkan"]
+    assert "`util_get_depth_format_mrd`" in rows["llvmpipe (Mesa)"]
+    # M-2: reverse-Z flips the signs
+    assert "With **reverse-Z** (section 4: greater is nearer) every sign flips" in flat
+    assert '"Polygons with a larger z value will be drawn in front of polygons' in flat
+    # the question says which r it takes
+    ask = next(t for t in text if "q_bias = Predict(" in t)
+    assert "Take r as Direct3D " in ask and "adds −k unorm24 steps" not in ask
+    # S-4: the remedy is the clamp, the slope factor already the smallest
+    assert not any("Hence the factors are kept small" in t for t in text)
+    assert any("The remedy is the clamp" in " ".join(t.split()) for t in text)
