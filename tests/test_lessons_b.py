@@ -5608,3 +5608,26 @@ def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
     # S-4: the remedy is the clamp, the slope factor already the smallest
     assert not any("Hence the factors are kept small" in t for t in text)
     assert any("The remedy is the clamp" in " ".join(t.split()) for t in text)
+
+
+@pytest.mark.notebook
+def test_05b_review_r260_the_near_plane_sets_the_resolution():
+    """Review r260 F-2: the summary blamed "a large far/near ratio"; Δz ≈ step z²/n, so the near
+    plane sets it. Section 2 prints unorm24's Δz at z = 50 for three far planes and a near
+    plane ten times farther."""
+    import json
+
+    from notebook_runs import executed, lesson, streams
+
+    ns = lesson("05b_depth_precision")
+    dz = ns.dz_at_50
+    far = [dz[(0.1, f)] for f in (100.0, 1000.0, 1e5)]
+    assert max(far) / min(far) < 1.002 and round(far[1], 7) == 1.49e-3
+    assert round(dz[(1.0, 1e4)] / far[1], 3) == 0.1  # the same ratio 10^4, ten times finer
+    printed = streams(executed("05b_depth_precision").notebook())
+    assert "near 0.1, far 1000 (far/near 10000): 1.4900e-03" in printed
+    assert "near 1, far 10000 (far/near 10000): 1.4900e-04" in printed
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    summary = " ".join("".join(nb["cells"][-1]["source"]).split())
+    assert "far/near ratio" not in summary and "set by the near plane" in summary
+    assert max(len(line) for line in printed.splitlines()) <= 80
