@@ -472,9 +472,14 @@ def test_03_r155_homogeneous_rows_and_the_msaa_centre():
                  if c["cell_type"] == "markdown").split()
     )  # fmt: skip
     assert "$w_k (x_k, y_k, 1)$" in md and "the third column holds each vertex's $w$" not in md
-    assert "Direct3D's default" in md and "GL leaves the location open" in md
-    # r171: lesson 08 says so in its section 2 (its section 5 is on centroid sampling)
-    assert "open: lesson 08, section 2)" in md and "lesson 08, section 5" not in md
+    assert "Direct3D's default" in md and "GL and Vulkan leave the location open" in md
+    # r171: lesson 08 says so in its section 2; r258 C1: centroid sampling is its section 5
+    assert "open: lesson 08, section 2; centroid sampling is its section 5)" in md
+    eight = json.loads((NOTEBOOK_DIR / "08_antialiasing.ipynb").read_text())["cells"]
+    heads = [line for c in eight for line in "".join(c["source"]).splitlines()
+             if line.startswith("## ")]  # fmt: skip
+    assert "## 2. Supersampling vs MSAA" in heads
+    assert "## 5. Where MSAA evaluates attributes, and centroid sampling" in heads
     assert "two weights are negative" in md and "one weight negative" not in md
 
 
@@ -694,3 +699,53 @@ def test_03_r226_shared_edge_why_triangles_and_the_shaders_derivatives():
     caveat = next(i for i, t in enumerate(text) if "### Caveat: a plane over the screen" in t)
     four = next(i for i, t in enumerate(text) if t.startswith("## 4."))
     assert caveat < table < four
+
+
+def test_03_r258_true_colours_rules_table_and_what_the_shader_receives():
+    """r258 03: FIG1: the plane beyond the triangle keeps its true colours (no veil), coverage
+    drawn as a staircase; M1: the rules table, GL / D3D / Vulkan / llvmpipe / teachraster with
+    sections; M2: two weights, two multiply-adds per component, and the shorter blended normal."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    md = " ".join(" ".join(t.split()) for c, t in zip(cells, text) if c["cell_type"] == "markdown")
+    printed = streams(executed("03_barycentric_and_plane_equations").notebook())
+    # FIG1: no white veil or hatch over the uncovered pixels; the staircase borders the 55
+    fig = next(t for t in text if "the plane beyond the triangle" in t)
+    assert "facecolor=(1, 1, 1" not in fig and 'hatch="//"' not in fig
+    assert "pale and hatched" not in md and "each in its true colour" in md
+    edges = {tuple(map(tuple, s)) for s in ns.steps}
+    assert len(edges) == len(ns.steps) > 0  # each border side drawn once
+    # M1: one row per rule, one column per standard, with sections
+    table = next(t for t in text if t.startswith("### The rules of this lesson, standard by"))
+    header = next(line for line in table.splitlines() if line.startswith("| rule |"))
+    for column in ("OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe", "teachraster"):
+        assert column in header, column
+    rows = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
+    assert len(rows) == 5 and all(line.count(" | ") == 5 for line in rows)
+    for cite in ("§14.6.1", "§3.2.4, §15.16.2", "§13.6 *Flatshading*", "`VK_EXT_provoking_vertex`",
+                 "§4.5 *Interpolation Qualifiers*", "*Interpolation Decorations*",
+                 "`subPixelPrecisionBits`", "*leading vertex*"):  # fmt: skip
+        assert cite in table, cite
+    # M2: two weights, two multiply-adds a component: 256 for 32 float4 attributes
+    assert ns.shader_gap < 1e-15 and ns.components == 128
+    assert np.isclose(ns.lam_i + ns.lam_j + tr_lambda1(ns), 1.0)
+    assert "128 components, 256 multiply-adds a pixel" in printed
+    assert "`v_interp_p1_f32`" in md and "`BaryCoordNoPerspAMD`" in md
+    # the blended unit normals are shorter than 1: Phong shading renormalises
+    assert 0.85 < ns.lengths.min() < ns.lengths.max() < 1.0
+    assert f"{ns.lengths.min():.3f} to {ns.lengths.max():.3f}" in printed
+    # no printed line wider than 80 columns
+    assert max(len(line) for line in printed.splitlines()) <= 80
+
+
+def tr_lambda1(ns) -> float:
+    """λ1 at the lesson's point p, the weight a GPU does not send."""
+    import teachraster as tr
+
+    return float(tr.barycentric(ns.xy, ns.p)[0])

@@ -1219,7 +1219,7 @@ def test_03_predictions_point_and_drift_are_the_packages():
     barycentric point is placed on the figure (PredictPoint) before any formula."""
     ns = lesson("03_barycentric_and_plane_equations")
     assert ns.one_rounding == 2.0**-15  # half of float32's step 2^-14 near 1000
-    assert any("3e-05" in label for label in ns.drift)
+    assert any("about 3·10⁻⁵)" in label for label in ns.drift)  # r258 S5: as the others
     chosen = [k for k, (lo, hi) in ns.drift.items() if lo < ns.end32 <= hi]
     assert chosen == ["between 10⁻² and 10⁻¹"]
     # review r7 03-1/2: "over a thousand times" one rounding, printed; the roundings of one
@@ -2138,11 +2138,16 @@ def test_05b_reverse_question_asks_a_number_and_the_values_explorer_waits_for_it
     assert "answer=k_rev,\n    whole=True," in asked and "reverse_choices" not in asked
     assert ns.k_rev == -5
     dz = float(tr.depth_resolution(300.0, ns.n_, ns.f_, "float32", mapping="reversed"))
-    assert ns.dz_rev_300 == dz and round(np.log10(dz)) == ns.k_rev
+    assert ns.dz_rev_300 == dz and np.floor(np.log10(dz)) == ns.k_rev
     assert ns.dz_rev_300 < ns.delta / 100 and not ns.fights_reversed["float32"].any()
-    # window depth's Δz there (the tempting answer) is ten to the -1, and its note says why
-    assert round(np.log10(ns.predicted["float32"][-1])) == -1  # the note's key
-    assert 'round(float(np.log10(predicted["float32"][-1]))): "That is Δz with window' in asked
+    # r260 P-1: asked as the decade 10^k <= Δz < 10^(k+1), so the estimate the text gives
+    # (a float32 step is 2^-24 to 2^-23 of d; d / |dd/dz| = z - z²/f) lands on the same k
+    assert [np.floor(np.log10(b)) for b in ns.rev_estimate] == [ns.k_rev, ns.k_rev]
+    assert ns.rev_estimate[0] < ns.dz_rev_300 < ns.rev_estimate[1]
+    assert "lies between 10<sup>k</sup> and" in asked and "is about 10<sup>k</sup>" not in asked
+    # window depth's Δz there (the tempting answer) is in the decade 10^-2, its note says why
+    assert np.floor(np.log10(ns.predicted["float32"][-1])) == -2  # the note's key
+    assert 'int(np.floor(np.log10(predicted["float32"][-1]))): "That is Δz with window' in asked
     values = next(c for c in code if "DepthValuesExplorer(near=n_, far=f_)" in c)
     assert values.startswith("q_reverse.hold()")
     md = next(c for c in _cells("05b_depth_precision", "markdown") if "### Where the stored" in c)

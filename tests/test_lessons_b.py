@@ -5608,3 +5608,59 @@ def test_06_one_span_explorer_and_q_span():
     if "halving N cut it" in printed:  # held in the browser until q_span is checked
         for r in ns.span_r:
             assert f"{ns.span_cut[r]:.2f} times" in printed
+
+
+def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
+    """Review r260 F-1, M-1: r is one step in Direct3D, llvmpipe and teachraster, chosen by the
+    implementation in GL (§14.6.5) and Vulkan (VK_EXT_depth_bias_control); a five-row table
+    with D3D's integer DepthBias; the question states its r. M-2: reverse-Z flips the signs,
+    and Microsoft's "larger z ... in front" is the greater-wins case. S-4: the clamp."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    (sec5,) = [t for t in text if t.startswith("## 5. Depth bias")]
+    flat = " ".join(sec5.split())
+    assert "with $r$ one step of the buffer" not in flat
+    assert "one step of a unorm buffer in Direct3D, llvmpipe and this simulator" in flat
+    table = sec5.split("**The depth bias in the standards**")[1]
+    rows = {line.split("|")[1].strip(): line for line in table.splitlines()
+            if line.startswith("| ") and "---" not in line}  # fmt: skip
+    assert list(rows)[1:] == ["OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
+                              "teachraster"]  # fmt: skip
+    assert "implementation-dependent" in rows["OpenGL 4.6"] and "§14.6.5" in rows["OpenGL 4.6"]
+    assert "(an **integer**)" in rows["Direct3D 11"] and "`DepthBias = -1`" in rows["Direct3D 11"]
+    assert "`VK_EXT_depth_bias_control`" in rows["Vulkan"] and "not fixed" in rows["Vulkan"]
+    assert "`util_get_depth_format_mrd`" in rows["llvmpipe (Mesa)"]
+    # M-2: reverse-Z flips the signs
+    assert "With **reverse-Z** (section 4: greater is nearer) every sign flips" in flat
+    assert '"Polygons with a larger z value will be drawn in front of polygons' in flat
+    # the question says which r it takes
+    ask = next(t for t in text if "q_bias = Predict(" in t)
+    assert "Take r as Direct3D " in ask and "adds −k unorm24 steps" not in ask
+    # S-4: the remedy is the clamp, the slope factor already the smallest
+    assert not any("Hence the factors are kept small" in t for t in text)
+    assert any("The remedy is the clamp" in " ".join(t.split()) for t in text)
+
+
+@pytest.mark.notebook
+def test_05b_review_r260_the_near_plane_sets_the_resolution():
+    """Review r260 F-2: the summary blamed "a large far/near ratio"; Δz ≈ step z²/n, so the near
+    plane sets it. Section 2 prints unorm24's Δz at z = 50 for three far planes and a near
+    plane ten times farther."""
+    import json
+
+    from notebook_runs import executed, lesson, streams
+
+    ns = lesson("05b_depth_precision")
+    dz = ns.dz_at_50
+    far = [dz[(0.1, f)] for f in (100.0, 1000.0, 1e5)]
+    assert max(far) / min(far) < 1.002 and round(far[1], 7) == 1.49e-3
+    assert round(dz[(1.0, 1e4)] / far[1], 3) == 0.1  # the same ratio 10^4, ten times finer
+    printed = streams(executed("05b_depth_precision").notebook())
+    assert "near 0.1, far 1000 (far/near 10000): 1.4900e-03" in printed
+    assert "near 1, far 10000 (far/near 10000): 1.4900e-04" in printed
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    summary = " ".join("".join(nb["cells"][-1]["source"]).split())
+    assert "far/near ratio" not in summary and "set by the near plane" in summary
+    assert max(len(line) for line in printed.splitlines()) <= 80
