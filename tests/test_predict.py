@@ -261,7 +261,7 @@ def test_hold_hides_the_rest_of_the_cell_until_checked_then_shows_it_once(publis
     held_id = kw["transient"]["display_id"]
     assert "update" not in kw
     # the stand-in a saved, reopened notebook shows says why, and gives nothing away
-    assert "hidden until the prediction is checked" in html
+    assert "shown once the question above is checked" in html
     # review r157 00-7: where the style is stripped (an untrusted copy), nothing hides the
     # outputs: the line then says so instead. The live text is hidden inline and shown by
     # the style; the other text is shown inline and hidden by the style

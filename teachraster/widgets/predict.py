@@ -96,11 +96,11 @@ HELD_CSS = (
     ".{held} .teachraster-held-bare {{display: none}}</style>"
 )
 
-#: What stands in for the held outputs, live and in a notebook saved before the answer.
+#: What stands in for the held outputs, live and in a notebook saved before the answer: one
+#: short grey line, since a lesson holds up to nine cells and nine copies of a two-line
+#: explanation read as noise (review r259 S-7).
 HELD_TEXT = (
-    "Answer the prediction above to see this: the output of this cell gives its answer "
-    "away, so it stays hidden until the prediction is checked. If it stays hidden after "
-    "you have checked, run this cell again."
+    "(shown once the question above is checked; if it stays hidden after that, run this cell again)"
 )
 
 
