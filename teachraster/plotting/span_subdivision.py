@@ -114,3 +114,39 @@ def update_span(art: SpanArtists, s: SpanSubdivision) -> None:
     art.miss.set_ydata(np.maximum(np.abs(chord - u), MISS_FLOOR))
     art.bounds.set_data(*_bound_path(s))
     art.pixel_miss.set_ydata(np.maximum(np.abs(s.pixel_miss), MISS_FLOOR))
+
+
+#: One colour per screen size in :func:`plot_subdivision_law` (256², 512², 1024², ...).
+SIZE_COLOURS = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["bluish_green"])
+
+
+def plot_subdivision_law(ax, worst: dict, mean: dict) -> list:
+    """The floor's error on screen (px) against N, log-log: ``worst[size][N]`` solid with
+    dots, ``mean[size][N]`` dashed with squares, one colour per size; grey guides of slope 1
+    and 2 (error ∝ N, ∝ N²) through the largest size's mean at the smallest N, so that a
+    curve's slope reads against them. Returns the legend's handles."""
+    from matplotlib.lines import Line2D
+
+    handles = []
+    for colour, size in zip(SIZE_COLOURS, worst):
+        ns = sorted(worst[size])
+        ax.plot(ns, [worst[size][n] for n in ns], "o-", color=colour, lw=3, ms=8)
+        ax.plot(ns, [mean[size][n] for n in ns], "s--", color=colour, lw=2.5, ms=7)
+        handles.append(Line2D([], [], color=colour, lw=6, label=f"{size}²"))
+    ns = np.array(sorted(next(iter(worst.values()))), dtype=float)
+    start = mean[list(mean)[-1]][int(ns[0])] / 2  # below every curve: a guide, not a curve
+    for slope, dash in ((1, ":"), (2, "-.")):
+        ax.plot(ns, start * (ns / ns[0]) ** slope, dash, color="0.45", lw=2)
+        ax.text(ns[-1] * 1.06, start * (ns[-1] / ns[0]) ** slope, f"∝ N{'²' if slope == 2 else ''}",
+                color="0.35", va="center", fontsize="small")  # fmt: skip
+    handles += [Line2D([], [], color="0.2", marker="o", lw=3, label="worst pixel"),
+                Line2D([], [], color="0.2", marker="s", ls="--", lw=2.5, label="mean")]  # fmt: skip
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log")
+    ax.set_xticks(ns, [f"{n:g}" for n in ns])  # 2, 4, ... not 2¹, 2², ...
+    ax.set_xlim(ns[0] / 1.25, ns[-1] * 1.6)  # room for the guides' labels
+    ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
+    ax.yaxis.set_minor_formatter(NullFormatter())
+    ax.set(xlabel="N (pixels between exact divides)", ylabel="error on screen (px)")
+    ax.grid(True, which="major", alpha=0.3)
+    return handles
