@@ -1,0 +1,37 @@
+"""Lesson 01, review r265: each test fails on the lesson before the fix.
+
+C1: the float error's size, as printed; P2: q_row on the mirrored triangle, whose middle
+vertex's pixel is filled; M1/M2: the fill-rule table and the exercise; P1: q_fail a number on
+a 0-200 line; FIG1-FIG3: the prestep's changed pixels, the crack explorer's marks at 32 x 32,
+the player's vertex tags.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from notebook_runs import lesson
+
+ROOT = Path(__file__).resolve().parent.parent
+NOTEBOOK = ROOT / "notebooks" / "01_span_tables.ipynb"
+
+
+def _cells() -> list[dict]:
+    return json.loads(NOTEBOOK.read_text())["cells"]
+
+
+def _source(cell_id: str) -> str:
+    return " ".join("".join(next(c for c in _cells() if c.get("id") == cell_id)["source"]).split())
+
+
+@pytest.mark.notebook
+def test_c1_the_float_error_keeps_its_sign_but_not_its_size():
+    """Cell 26 said the float error "grows" down the edge; the table shrinks on row 6."""
+    ns = lesson("01_span_tables")
+    assert ns.float_signs == {1} and ns.float_peak == 5
+    assert abs(ns.float_off[6]) < abs(ns.float_off[5])  # shrinks on row 6
+    told = _source("dda_walk_text")
+    assert "keeps its sign and grows" not in told
+    assert "it grows to row 5 and shrinks on row 6" in told
