@@ -35,3 +35,22 @@ def test_c1_the_float_error_keeps_its_sign_but_not_its_size():
     told = _source("dda_walk_text")
     assert "keeps its sign and grows" not in told
     assert "it grows to row 5 and shrinks on row 6" in told
+
+
+@pytest.mark.notebook
+def test_p2_q_row_needs_the_rule_at_the_middle_vertex():
+    """q_row's new rows had empty answers, and row 9 repeated the worked row 5: clicking row 9
+    alone passed. On the mirrored triangle row 9 starts at v2, a left end: its pixel is in."""
+    import numpy as np
+
+    ns = lesson("01_span_tables")
+    (u2, v2) = ns.mirrored[1]
+    assert ns.row_answer[int(v2), int(u2)] and ns.mirror_filled == [False, True, False]
+    # "a vertex's pixel is never filled", true of the triangle as given, now misses one
+    assert ns.vertex_filled == [False, False, False]
+    guess = ns.row_answer.copy()
+    guess[int(v2), int(u2)] = False
+    assert not np.array_equal(guess, ns.row_answer)
+    explain = " ".join(_source("ece0fd62").split("explain=")[1].split())
+    assert "the first is v2's own" in explain and "<i>left</i> edges now" in explain
+    assert "Row {r_mid}: x<sub>left</sub> = {mid_l:g} is v2 itself" in explain

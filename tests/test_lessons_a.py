@@ -974,19 +974,21 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # does not answer. Row 1 is a one-point span at the top vertex (on the left edge and the
     # right one: nothing), row 9 runs from 6.5 (in) to the middle vertex 18.5 (out), row 17
     # is the bottom vertex's, not visited: 12 pixels, none of them a vertex's
+    # r265 P2: asked on the triangle mirrored (u -> 20 - u), where row 9 starts at the middle
+    # vertex, a left end: its pixel is filled (as given it is the right end: empty), so the
+    # answer needs the rule at the vertex, not row 5's worked pattern again
     assert ns.vertex_rows == [1, 9, 17] and ns.row_counts == [0, 12, 0]
-    assert ns.vertex_ends == {1: [4.5, 4.5], 9: [6.5, 18.5], 17: [8.5, 8.5]}
-    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(6, 18))
-    assert ns.row_answer.sum() == 12 and ns.cols_mid.tolist() == list(range(6, 18))
+    assert ns.vertex_ends == {1: [15.5, 15.5], 9: [1.5, 13.5], 17: [11.5, 11.5]}
+    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(1, 13))
+    assert ns.row_answer.sum() == 12 and ns.cols_mid.tolist() == list(range(1, 13))
     assert ns.vertex_filled == [False, False, False]
-    # mirrored, the middle vertex is a left end: its pixel is filled (the Try-it says so)
-    assert ns.mirror_filled == [False, True, False]
+    assert ns.mirror_filled == [False, True, False] and ns.row_answer[9, 1]  # v2's pixel
     nb_cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
     texts = ["".join(c["source"]) for c in nb_cells]
     ask = next(i for i, t in enumerate(texts) if "q_row = PredictPixels(" in t)
     row_question = texts[ask].split("q_row = PredictPixels(")[1].split("answer=")[0]
-    assert "rows through the vertices" in row_question
-    for answer in ("6.5", "18.5", "12", "nothing", "one point"):
+    assert "Our triangle mirrored" in row_question and "middle vertex v2" in row_question
+    for answer in ("13.5", "12", "nothing", "one point", "left end", "filled"):
         assert answer not in row_question, answer
     # nothing before the question gives the one-point span or the half-open rows away: the
     # rule is shown by a folded held cell after it (it was Markdown under the question)
@@ -1045,7 +1047,7 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # review r140 F1 / r229: q_row's rows are not in the Markdown below the question; the held
     # cell prints them once q_row is checked
     assert "columns 6-17" not in told and "fills nothing. Row 17" not in told
-    held_rows = next(c for c in nb["cells"] if "mirror_filled = " in "".join(c["source"]))
+    held_rows = next(c for c in nb["cells"] if "q_row, mirrored: rows" in "".join(c["source"]))
     assert "".join(held_rows["source"]).startswith("q_row.hold()")
     # review r229 01-S3: the triangle is listed counter-clockwise on screen, front-facing under
     # the course's GL convention (it was back-facing, disclosed only in section 7); r78 01-2:
@@ -1356,7 +1358,7 @@ def test_01_r229_off_centre_try_it_matches_for_the_true_reason():
     assert "the long edge between them, 16 px high, a power of two" in example
     try_it = " ".join(next(t for t in texts if t.startswith("**Try it:**")).split())
     assert "The cell below runs this" not in try_it
-    assert "the middle vertex is then a left end, and its pixel is filled" in try_it
+    assert "mirror the triangle" not in try_it  # r265 P2: q_row asks it now
 
 
 @pytest.mark.notebook
