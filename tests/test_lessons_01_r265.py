@@ -54,3 +54,18 @@ def test_p2_q_row_needs_the_rule_at_the_middle_vertex():
     explain = " ".join(_source("ece0fd62").split("explain=")[1].split())
     assert "the first is v2's own" in explain and "<i>left</i> edges now" in explain
     assert "Row {r_mid}: x<sub>left</sub> = {mid_l:g} is v2 itself" in explain
+
+
+def test_m1_m2_the_rule_in_the_apis_and_the_exercise():
+    """No fill-rule table where the lesson first applies the rule; no pointer to the exercise."""
+    ids = [c.get("id") for c in _cells()]
+    table = _source("c11-apis")
+    assert ids.index("c11-apis") == ids.index("c11") + 1  # after q_row's last held cell
+    for where in ("§14.6.1", "§3.4.2.1 *Top-Left Rule*", "§3.4.1 *Coordinate Snapping*",
+                  "*Basic Polygon Rasterization*", "llvmpipe", "teachraster"):  # fmt: skip
+        assert where in table, where
+    assert "*are* Direct3D's top-left rule written for span tables" in table
+    assert "left and top edges closed, right and bottom edges open" in table
+    end = _source(ids[-1])
+    assert "[exercises/02_span_split](exercises/02_span_split.ipynb)" in end
+    assert (ROOT / "notebooks" / "exercises" / "02_span_split.ipynb").exists()
