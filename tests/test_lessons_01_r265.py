@@ -69,3 +69,18 @@ def test_m1_m2_the_rule_in_the_apis_and_the_exercise():
     end = _source(ids[-1])
     assert "[exercises/02_span_split](exercises/02_span_split.ipynb)" in end
     assert (ROOT / "notebooks" / "exercises" / "02_span_split.ipynb").exists()
+
+
+@pytest.mark.notebook
+def test_p1_q_fail_is_a_count_on_a_line():
+    """q_fail was a five-bucket choice ("21 to 100") where the census gives a number."""
+    ns = lesson("01_span_tables")
+    ask = _source("c19-q-fail")
+    assert "q_fail = PredictPoint(" in ask and "PredictChoice(" not in ask
+    assert "xlim=(0, n_random)" in ask and "along=((0, 0.5), (n_random, 0.5))" in ask
+    assert "start=(0, 0.5)" in ask  # no count suggested
+    assert ns.fail_point == (ns.n_float, 0.5) == (60, 0.5)
+    assert round(ns.guess) == 59 and abs(ns.guess - 60) <= ns.fail_tolerance < 109 - 60
+    ids = [c.get("id") for c in _cells()]
+    held = _cells()[ids.index("c19-q-fail") + 1]
+    assert "".join(held["source"]).startswith("q_fail.hold()")  # the count printed after it

@@ -1091,7 +1091,7 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # exact counted vertical and binary-fraction steps too, which step exactly)
     assert (ns.n_ties, ns.tie_missed) == (283, 266) and ns.tie_missed < ns.n_ties
     fail_cell = next("".join(c["source"]) for c in nb["cells"]
-                     if "q_fail = PredictChoice(" in "".join(c["source"]))  # fmt: skip
+                     if "q_fail = PredictPoint(" in "".join(c["source"]))  # fmt: skip
     assert "wherever" not in fail_cell
     assert "lands a hair off {tie_missed} of the {n_ties} ties on such edges" in fail_cell
     assert "nearly always lands a hair to one side of it (not always" in told
@@ -1100,8 +1100,8 @@ def test_01_predictions_and_the_stepping_failure_rates():
     held_figure = next(c for c in nb["cells"] if "exact_T = " in "".join(c["source"]))
     assert "".join(held_figure["source"]).startswith("q_fail.hold()")
     # review r142 01-13: the float failure rate is predicted before it is printed; the
-    # question cell is folded, its answer held until Check and one of the choices
-    assert ns.fail_answer == "21 to 100" and ns.fail_answer in ns.fail_choices
+    # question cell is folded, its answer held until Check (r265 P1: a count on a 0-200 line)
+    assert ns.fail_point == (60, 0.5)
     held_fail = next(c for c in nb["cells"] if "".join(c["source"]).startswith("q_fail.hold()"))
     assert "rates = " in "".join(held_fail["source"])
     # the explorer's text quotes the shares of pairs the float DDA cracks or draws twice on
@@ -1168,7 +1168,7 @@ def test_01_one_edge_stepped_three_ways():
     assert "remainder 0, on a line with a carry" in told
     assert "$+8.9 \\times 10^{-16}$" in told and "$+1.5 \\times 10^{-5}$" in told
     # before the count it leads to, after the census of the ties it asks about (r251 P1)
-    assert "def float_tie_misses(" in text[walk + 2] and "q_fail = PredictChoice(" in text[walk + 3]
+    assert "def float_tie_misses(" in text[walk + 2] and "q_fail = PredictPoint(" in text[walk + 3]
 
 
 def test_01_r196_figure_text_and_plumbing():
