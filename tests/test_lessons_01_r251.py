@@ -211,8 +211,12 @@ def test_fig2_v2_label_leaves_row_9_free():
     ns = lesson("01_span_tables")
     source = _source("ece0fd62")
     body = source[source.index("def asked_row_figure(") : source.index("r_top, r_mid, r_bot")]
-    scope = {"plot_triangle": plot_triangle, "COLORS": COLORS, "mirror_fill": ns.mirror_fill,
-             "vertex_rows": ns.vertex_rows}  # fmt: skip (r265 P2: the mirrored triangle)
+    scope = {
+        "plot_triangle": plot_triangle,
+        "COLORS": COLORS,
+        "mirror_fill": ns.mirror_fill,
+        "vertex_rows": ns.vertex_rows,
+    }  # fmt: skip (r265 P2: the mirrored triangle)
     exec(body, scope)
     fig = plt.figure()
     try:
