@@ -275,10 +275,11 @@ def test_s1_package_narration_is_folded():
     assert "The package's captions, and the player's, are shared" not in c00
     folded = c02.split("<details>")[1]
     assert "`trace.edges`" in folded and "`trace.edges`" not in c02.split("<details>")[0]
-    assert "<details>" in c14 and "edges walked" in c14.split("<details>")[1]
+    # r265 S1/density: one explanation of the walk (section 1's fold), not three
+    assert "<details>" not in c14 and "edges walked" in folded
     table = _source("c10")
     assert "Each row is one step of the package's trace." not in table
-    assert "<details>" in table
+    assert "<details>" not in table and "section 1)" in table
 
 
 def test_s2_figure_code_lives_in_the_plotting_module():

@@ -1392,7 +1392,7 @@ def test_01_r239_arrows_show_the_walk_the_text_names():
     assert "the order in which the package **walks** the edges" in sort_text
     assert "It walks a counter-clockwise triangle the other way round" in sort_text
     assert "show that walk, not the order given" in sort_text
-    assert f"its walk, {ns.edge_walk}, the reverse of the order given" in ns.TABLE_TEXT
+    assert f"the package's walk,\n{ns.edge_walk}, section 1" in ns.TABLE_TEXT  # r265: one fold
     cells = _notebook_cells("01_span_tables")
     texts = ["".join(c["source"]) for c in cells]
     held = next(i for i, t in enumerate(texts) if "TABLE_TEXT = (" in t)
@@ -1401,8 +1401,9 @@ def test_01_r239_arrows_show_the_walk_the_text_names():
     # every plot_triangle of the lesson draws no arrowheads (only the step views do)
     calls = re.findall(r"plot_triangle\(([^\n]*)\)", "\n".join(texts))
     assert calls and all("arrows=False" in call for call in calls), calls
-    player = _markdown_of("01_span_tables", "c14")
-    assert 'keyed "edges walked"' in player and "before the winding step has chosen it" in player
+    # r265: the player's own fold folded into section 1's, the one place the walk is told
+    assert 'the player from its winding step on, keyed "edges walked"' in sort_text
+    assert "<details>" not in _markdown_of("01_span_tables", "c14")
 
 
 @pytest.mark.notebook
