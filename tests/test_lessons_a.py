@@ -974,19 +974,21 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # does not answer. Row 1 is a one-point span at the top vertex (on the left edge and the
     # right one: nothing), row 9 runs from 6.5 (in) to the middle vertex 18.5 (out), row 17
     # is the bottom vertex's, not visited: 12 pixels, none of them a vertex's
+    # r265 P2: asked on the triangle mirrored (u -> 20 - u), where row 9 starts at the middle
+    # vertex, a left end: its pixel is filled (as given it is the right end: empty), so the
+    # answer needs the rule at the vertex, not row 5's worked pattern again
     assert ns.vertex_rows == [1, 9, 17] and ns.row_counts == [0, 12, 0]
-    assert ns.vertex_ends == {1: [4.5, 4.5], 9: [6.5, 18.5], 17: [8.5, 8.5]}
-    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(6, 18))
-    assert ns.row_answer.sum() == 12 and ns.cols_mid.tolist() == list(range(6, 18))
+    assert ns.vertex_ends == {1: [15.5, 15.5], 9: [1.5, 13.5], 17: [11.5, 11.5]}
+    assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(1, 13))
+    assert ns.row_answer.sum() == 12 and ns.cols_mid.tolist() == list(range(1, 13))
     assert ns.vertex_filled == [False, False, False]
-    # mirrored, the middle vertex is a left end: its pixel is filled (the Try-it says so)
-    assert ns.mirror_filled == [False, True, False]
+    assert ns.mirror_filled == [False, True, False] and ns.row_answer[9, 1]  # v2's pixel
     nb_cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
     texts = ["".join(c["source"]) for c in nb_cells]
     ask = next(i for i, t in enumerate(texts) if "q_row = PredictPixels(" in t)
     row_question = texts[ask].split("q_row = PredictPixels(")[1].split("answer=")[0]
-    assert "rows through the vertices" in row_question
-    for answer in ("6.5", "18.5", "12", "nothing", "one point"):
+    assert "Our triangle mirrored" in row_question and "middle vertex v2" in row_question
+    for answer in ("13.5", "12", "nothing", "one point", "left end", "filled"):
         assert answer not in row_question, answer
     # nothing before the question gives the one-point span or the half-open rows away: the
     # rule is shown by a folded held cell after it (it was Markdown under the question)
@@ -1045,7 +1047,7 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # review r140 F1 / r229: q_row's rows are not in the Markdown below the question; the held
     # cell prints them once q_row is checked
     assert "columns 6-17" not in told and "fills nothing. Row 17" not in told
-    held_rows = next(c for c in nb["cells"] if "mirror_filled = " in "".join(c["source"]))
+    held_rows = next(c for c in nb["cells"] if "q_row, mirrored: rows" in "".join(c["source"]))
     assert "".join(held_rows["source"]).startswith("q_row.hold()")
     # review r229 01-S3: the triangle is listed counter-clockwise on screen, front-facing under
     # the course's GL convention (it was back-facing, disclosed only in section 7); r78 01-2:
@@ -1089,7 +1091,7 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # exact counted vertical and binary-fraction steps too, which step exactly)
     assert (ns.n_ties, ns.tie_missed) == (283, 266) and ns.tie_missed < ns.n_ties
     fail_cell = next("".join(c["source"]) for c in nb["cells"]
-                     if "q_fail = PredictChoice(" in "".join(c["source"]))  # fmt: skip
+                     if "q_fail = PredictPoint(" in "".join(c["source"]))  # fmt: skip
     assert "wherever" not in fail_cell
     assert "lands a hair off {tie_missed} of the {n_ties} ties on such edges" in fail_cell
     assert "nearly always lands a hair to one side of it (not always" in told
@@ -1098,8 +1100,8 @@ def test_01_predictions_and_the_stepping_failure_rates():
     held_figure = next(c for c in nb["cells"] if "exact_T = " in "".join(c["source"]))
     assert "".join(held_figure["source"]).startswith("q_fail.hold()")
     # review r142 01-13: the float failure rate is predicted before it is printed; the
-    # question cell is folded, its answer held until Check and one of the choices
-    assert ns.fail_answer == "21 to 100" and ns.fail_answer in ns.fail_choices
+    # question cell is folded, its answer held until Check (r265 P1: a count on a 0-200 line)
+    assert ns.fail_point == (60, 0.5)
     held_fail = next(c for c in nb["cells"] if "".join(c["source"]).startswith("q_fail.hold()"))
     assert "rates = " in "".join(held_fail["source"])
     # the explorer's text quotes the shares of pairs the float DDA cracks or draws twice on
@@ -1166,7 +1168,7 @@ def test_01_one_edge_stepped_three_ways():
     assert "remainder 0, on a line with a carry" in told
     assert "$+8.9 \\times 10^{-16}$" in told and "$+1.5 \\times 10^{-5}$" in told
     # before the count it leads to, after the census of the ties it asks about (r251 P1)
-    assert "def float_tie_misses(" in text[walk + 2] and "q_fail = PredictChoice(" in text[walk + 3]
+    assert "def float_tie_misses(" in text[walk + 2] and "q_fail = PredictPoint(" in text[walk + 3]
 
 
 def test_01_r196_figure_text_and_plumbing():
@@ -1356,7 +1358,7 @@ def test_01_r229_off_centre_try_it_matches_for_the_true_reason():
     assert "the long edge between them, 16 px high, a power of two" in example
     try_it = " ".join(next(t for t in texts if t.startswith("**Try it:**")).split())
     assert "The cell below runs this" not in try_it
-    assert "the middle vertex is then a left end, and its pixel is filled" in try_it
+    assert "mirror the triangle" not in try_it  # r265 P2: q_row asks it now
 
 
 @pytest.mark.notebook
@@ -1390,7 +1392,7 @@ def test_01_r239_arrows_show_the_walk_the_text_names():
     assert "the order in which the package **walks** the edges" in sort_text
     assert "It walks a counter-clockwise triangle the other way round" in sort_text
     assert "show that walk, not the order given" in sort_text
-    assert f"its walk, {ns.edge_walk}, the reverse of the order given" in ns.TABLE_TEXT
+    assert f"the package's walk,\n{ns.edge_walk}, section 1" in ns.TABLE_TEXT  # r265: one fold
     cells = _notebook_cells("01_span_tables")
     texts = ["".join(c["source"]) for c in cells]
     held = next(i for i, t in enumerate(texts) if "TABLE_TEXT = (" in t)
@@ -1399,8 +1401,9 @@ def test_01_r239_arrows_show_the_walk_the_text_names():
     # every plot_triangle of the lesson draws no arrowheads (only the step views do)
     calls = re.findall(r"plot_triangle\(([^\n]*)\)", "\n".join(texts))
     assert calls and all("arrows=False" in call for call in calls), calls
-    player = _markdown_of("01_span_tables", "c14")
-    assert 'keyed "edges walked"' in player and "before the winding step has chosen it" in player
+    # r265: the player's own fold folded into section 1's, the one place the walk is told
+    assert 'the player from its winding step on, keyed "edges walked"' in sort_text
+    assert "<details>" not in _markdown_of("01_span_tables", "c14")
 
 
 @pytest.mark.notebook

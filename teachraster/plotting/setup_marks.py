@@ -137,12 +137,17 @@ class SetupArtists(Artists):
         box = ax.get_window_extent()
         scale = ax.figure.dpi / 72.0  # display pixels per point
         centre = xy.mean(axis=0)
+        # the edges, in points: a position tag is long, and beside its label it cut an edge or
+        # floated columns from its vertex (review r265 01-FIG3); it goes where it crosses none
+        corners = ax.transData.transform(xy) / scale
+        edges = [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
         for tag, label, text in zip(self.coords, labels, texts):
             at = ax.transData.transform(label.xy) / scale
             tag.xy = label.xy
             tag.set_text(text)
             tag.set_position(_role_offset(label, text, at, box.extents / scale,
-                                          label.xy[0] < centre[0], italic=False))  # fmt: skip
+                                          label.xy[0] < centre[0], italic=False,
+                                          edges=edges, tag_size=tag.get_fontsize()))  # fmt: skip
 
     def show(self, kind: str | None, sorted_: bool) -> None:
         """Show what the step of ``kind`` found: the snapped positions at ``"snap"``, the
@@ -163,19 +168,40 @@ class SetupArtists(Artists):
             tag.set_visible(roles)
 
 
+def _crosses(edges, centre, half_w: float, half_h: float) -> bool:
+    """Whether a segment of ``edges`` (pairs of points) enters the box of half sizes
+    ``half_w``, ``half_h`` around ``centre`` (all in points), sampled finely enough for a box
+    of a few points."""
+    t = np.linspace(0.0, 1.0, 200)[:, None]
+    for a, b in edges:
+        pts = np.asarray(a) + t * (np.asarray(b) - np.asarray(a))
+        inside = (np.abs(pts[:, 0] - centre[0]) <= half_w) & (
+            np.abs(pts[:, 1] - centre[1]) <= half_h
+        )
+        if inside.any():
+            return True
+    return False
+
+
 def _role_offset(label, role: str, at, extents, left: bool,
-                 italic: bool = True) -> tuple[float, float]:  # fmt: skip
+                 italic: bool = True, edges=None,
+                 tag_size: float | None = None) -> tuple[float, float]:  # fmt: skip
     """Where a tag (a role, a position) goes (points from its vertex): one line beyond the
     vertex label, the way the label is pushed out; where that leaves the Axes (a vertex at
     the grid's top or bottom: it ran over the tick labels or the frame), beside the label
     instead, on the side away from the triangle (``left``) if it fits there, else on the
     other. A tag stays wholly inside the Axes: overhanging by half its width, "middle" at a
-    vertex near the grid's right side crossed the frame (review r239 01-W1)."""
+    vertex near the grid's right side crossed the frame (review r239 01-W1). With ``edges``
+    (the triangle's, in points), the first of these places, then of a few more near the vertex
+    (beside it on its own row, above or below its label, along its angle's bisector), the
+    nearest to the vertex whose box crosses no edge; ``tag_size`` is the tag's font size
+    (default: the label's)."""
     dx, dy = label.get_position()  # the label's offset from its vertex, in points
     size = label.get_fontsize()
+    own = size if tag_size is None else tag_size
     # half of the tag's padded box (italic letters are wider than digits)
-    half_w = size * ((0.33 if italic else 0.3) * len(role) + 0.3)
-    half_h = 0.75 * size
+    half_w = own * ((0.33 if italic else 0.3) * len(role) + 0.3)
+    half_h = 0.75 * own
     x0, y0, x1, y1 = extents
     norm = float(np.hypot(dx, dy)) or 1.0
     out = (dx + 1.1 * size * dx / norm, dy + 1.1 * size * dy / norm)
@@ -184,12 +210,31 @@ def _role_offset(label, role: str, at, extents, left: bool,
         x, y = at[0] + offset[0], at[1] + offset[1]
         return x0 + half_w <= x <= x1 - half_w and y0 + half_h <= y <= y1 - half_h
 
-    if inside(out):
-        return out
     beside = 0.85 * size + half_w + 2.0  # the label's half width, the tag's, a gap
     sides = (-1.0, 1.0) if left else (1.0, -1.0)
-    for side in sides:
-        offset = (dx + side * beside, dy)
+    places = [out, *((dx + side * beside, dy) for side in sides)]
+    if edges is not None:
+        # beside the vertex dot on its own row, a little farther each time (into the angle
+        # between its edges, where the dot leaves no room), and above or below the label
+        near = [half_w + (0.6 + 0.5 * j) * size for j in range(6)]
+        extra = [(side * d, 0.0) for d in near for side in sides]
+        extra += [(dx, dy + side * 1.6 * size) for side in (1.0, -1.0)]
+        # along the bisector of the vertex's angle, outwards (away from both its edges) and
+        # into the angle, where a vertex at the grid's side leaves no room outside
+        ends = [b if np.allclose(a, at) else a for a, b in edges
+                if np.allclose(a, at) or np.allclose(b, at)]  # fmt: skip
+        units = [(np.asarray(e) - at) / (float(np.hypot(*(np.asarray(e) - at))) or 1.0)
+                 for e in ends]  # fmt: skip
+        halfway = sum(units) if len(units) == 2 else np.zeros(2)
+        if float(np.hypot(*halfway)) > 1e-9:
+            halfway = halfway / float(np.hypot(*halfway))
+            extra += [tuple(sign * (half_w + 0.5 * j * size) * halfway)
+                      for j in range(1, 16) for sign in (-1.0, 1.0)]  # fmt: skip
+        clear = [offset for offset in places + extra if inside(offset) and not _crosses(
+            edges, (at[0] + offset[0], at[1] + offset[1]), half_w + 2.0, half_h)]  # fmt: skip
+        if clear:  # the nearest to its vertex: a tag read with its vertex, not columns off
+            return min(clear, key=lambda offset: float(np.hypot(*offset)))
+    for offset in places[:3]:
         if inside(offset):
             return offset
     # neither fits (a narrow grid): beside the label, moved sideways into the Axes

@@ -212,6 +212,10 @@ class SpanEndArtists(Artists):
     title: Text | None = None
 
 
+#: The colour of :func:`plot_span_ends`' marked pixels: neither the fill's, nor the ticks'.
+MARKED_COLOR = COLORS["split"]
+
+
 def plot_span_ends(ax, coverage, ends: dict, xy, width: int, height: int, *, marked=(),
                    title: str = "") -> SpanEndArtists:  # fmt: skip
     """A span fill with each raster line's two span ends ticked where the loop put them.
@@ -225,7 +229,9 @@ def plot_span_ends(ax, coverage, ends: dict, xy, width: int, height: int, *, mar
     xy : (3, 2) array
         The triangle drawn (the snapped vertices the loop filled).
     marked : sequence of (row, col)
-        Pixels outlined (the lesson: where two fills differ).
+        Pixels hatched and framed in a colour of their own (the lesson: where two fills
+        differ), over the fill or the white alike, so that they read on a projector, where a
+        thin outline is lost in the grid.
     """
     plot_pixel_grid(ax, width, height)
     plot_coverage(ax, coverage)
@@ -236,8 +242,8 @@ def plot_span_ends(ax, coverage, ends: dict, xy, width: int, height: int, *, mar
     out.ends = ax.plot(us, vs, ls="", marker="|", ms=16, mew=3, color=COLORS["current"],
                        zorder=5)[0]  # fmt: skip
     for i, j in marked:
-        box = Rectangle((j + 0.08, i + 0.08), 0.84, 0.84, fc="none", ec=COLORS["edge"], lw=2.5,
-                        ls=(0, (2, 1)), zorder=4.5)  # fmt: skip
+        box = Rectangle((j + 0.1, i + 0.1), 0.8, 0.8, fc="none", ec=MARKED_COLOR, lw=3,
+                        hatch="///", zorder=4.5)  # fmt: skip
         ax.add_patch(box)
         out.marked.append(box)
     out.title = ax.set_title(title, fontsize="medium")

@@ -512,9 +512,17 @@ function drawNumbers(ctx, x0, y0, W, H, cell, rows) {
 // The marks in a pixel, for a projector (review r57, 01-1: at 16-px cells the "2" and "✕" were
 // 11 px and the tie squares 6): every glyph at least 14 px, "⇄" at least 16, as large as the
 // pixel allows, and the tie squares half a pixel wide. Two panels across still fit 585 px.
-export const markPx = (cell, mark) =>
-  mark === "⇄" ? Math.max(16, Math.round(cell * 1.0)) : Math.max(14, Math.round(cell * 0.85));
-export const tieSize = (cell) => Math.max(8, Math.round(cell * 0.5));
+// `k` (markScale) grows the least sizes on a canvas wider than the narrow column, which the
+// column shrinks: the 32 x 32 grid's (review r265 01-FIG2: its marks and key drawn at about
+// 6 px on screen), as textPx grows the type.
+export const markPx = (cell, mark, k = 1) =>
+  mark === "⇄" ? Math.max(Math.round(16 * k), Math.round(cell * 1.0))
+    : Math.max(Math.round(14 * k), Math.round(cell * 0.85));
+export const tieSize = (cell, k = 1) =>
+  Math.min(Math.max(8, cell - 2), Math.max(Math.round(8 * k), Math.round(cell * 0.5)));
+// how much a column of NARROW_COLUMN_PX shrinks this canvas at most (readablePx's factor)
+export const markScale = (canvasWidth) => Math.max(1, canvasWidth / NARROW_COLUMN_PX);
+const scaleOf = (ctx) => markScale(ctx.canvas.logical ? ctx.canvas.logical.w : ctx.canvas.width);
 
 // how far the ring reaches beyond its pixel, its line width included
 const ringReach = (cell) => Math.ceil((RING - 0.5) * cell) + 3;
@@ -530,6 +538,7 @@ function pixelUnder(p, g, W, H) {
 
 function drawPanel(ctx, f, exact, pair, g) {
   const { x0, y0, cell, W, H } = g;
+  const k = scaleOf(ctx);
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
       const i = r * W + c;
@@ -547,14 +556,14 @@ function drawPanel(ctx, f, exact, pair, g) {
     for (let c = 0; c < W; c++) {
       const on = onSegment(setup.given[0], setup.given[1], centreUnits(setup, r, c));
       ctx.fillStyle = on ? "#000" : "#999";
-      const d = on ? tieSize(cell) : 4;
+      const d = on ? tieSize(cell, k) : 4;
       ctx.fillRect(x0 + (c + 0.5) * cell - d / 2, y0 + (r + 0.5) * cell - d / 2, d, d);
     }
   }
   // pixels unlike the integer fill: dashed boxes
-  ctx.setLineDash([3, 2]);
+  ctx.setLineDash([3 * k, 2 * k]);
   ctx.strokeStyle = "#000";
-  ctx.lineWidth = 1.5;
+  ctx.lineWidth = 1.5 * k;
   for (let i = 0; i < W * H; i++) {
     if (f.a[i] === exact.a[i] && f.b[i] === exact.b[i]) continue;
     const [r, c] = [Math.floor(i / W), i % W];
@@ -577,7 +586,7 @@ function drawPanel(ctx, f, exact, pair, g) {
   ctx.moveTo(A[0][0], A[0][1]);
   ctx.lineTo(A[1][0], A[1][1]);
   ctx.stroke();
-  ctx.font = `bold ${markPx(cell, "2")}px sans-serif`;
+  ctx.font = `bold ${markPx(cell, "2", k)}px sans-serif`;
   ctx.textAlign = "center";
   ctx.fillStyle = OKABE.vermillion;
   // on a white halo, as the "⇄" below: a crack sits on the tie square and the shared edge
@@ -595,7 +604,7 @@ function drawPanel(ctx, f, exact, pair, g) {
     // on a white halo, so that the border and the edges it crosses do not cut it
     for (const [colour, width] of [["#fff", 7], [OKABE.vermillion, 3]]) {
       ctx.strokeStyle = colour;
-      ctx.lineWidth = width;
+      ctx.lineWidth = width * k;
       ctx.beginPath();
       ctx.arc(x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell, cell * RING, 0, 2 * Math.PI);
       ctx.stroke();
@@ -604,7 +613,7 @@ function drawPanel(ctx, f, exact, pair, g) {
   drawTags(ctx, pair, f, g);
   // the wrong-owner ties last, over the tie marker and the shared edge: large, black on a
   // white halo, so that the glyph survives on the thick black line
-  ctx.font = `bold ${markPx(cell, "⇄")}px sans-serif`;
+  ctx.font = `bold ${markPx(cell, "⇄", k)}px sans-serif`;
   ctx.lineJoin = "round";
   for (const [r, c] of f.swapped) {
     const [x, y] = [x0 + (c + 0.5) * cell, y0 + (r + 0.5) * cell + cell * 0.33];
@@ -698,7 +707,9 @@ export function tagSpots(pair, marks, W, H) {
 // Its marks at KEY_CELL px at most, so that its rows stay apart when the panels' cells grow.
 const KEY_CELL = 20;
 function drawKey(ctx, [x0, y0], panelCell, keyWidth) {
-  const cell = Math.min(panelCell, KEY_CELL);
+  const k = scaleOf(ctx);
+  // at least 16 px once the column has shrunk the canvas (r265 01-FIG2), as the marks
+  const cell = Math.max(Math.min(panelCell, KEY_CELL), Math.round(16 * k));
   const rows = [["A (blue) and B (orange) share", null], ["the thick edge p–q. Marks:", null],
     ["a centre on p–q: a tie", "tie"], ["a tie drawn by the wrong one", "⇄"],
     ["drawn twice", "2"], ["drawn by neither: a crack", "✕"],
@@ -718,12 +729,12 @@ function drawKey(ctx, [x0, y0], panelCell, keyWidth) {
     ctx.fillText(text, x, y + 5);
     const cx = x0 + Math.round(cell * 0.7);
     if (mark === "tie") {
-      const d = tieSize(cell);
+      const d = tieSize(cell, k);
       ctx.fillRect(cx - d / 2, y - d / 2, d, d);
     }
     if (mark === "box") {
-      ctx.setLineDash([3, 2]);
-      ctx.lineWidth = 1.5;
+      ctx.setLineDash([3 * k, 2 * k]);
+      ctx.lineWidth = 1.5 * k;
       ctx.strokeStyle = "#000";
       ctx.strokeRect(cx - cell / 2 + 2, y - cell / 2 + 2, cell - 4, cell - 4);
       ctx.setLineDash([]);
@@ -731,13 +742,13 @@ function drawKey(ctx, [x0, y0], panelCell, keyWidth) {
     if (mark === "✕") {
       // the ring the panels draw around a crack (review r65 01-3: the key had the bare ✕)
       ctx.strokeStyle = OKABE.vermillion;
-      ctx.lineWidth = 3;
+      ctx.lineWidth = 3 * k;
       ctx.beginPath();
       ctx.arc(cx, y, cell * RING, 0, 2 * Math.PI);
       ctx.stroke();
     }
     if (mark && mark.length === 1) {
-      ctx.font = `bold ${markPx(cell, mark)}px sans-serif`;
+      ctx.font = `bold ${markPx(cell, mark, k)}px sans-serif`;
       ctx.textAlign = "center";
       ctx.fillStyle = mark === "⇄" ? "#000" : OKABE.vermillion;
       ctx.fillText(mark, cx, y + cell * 0.3);
