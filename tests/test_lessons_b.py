@@ -2178,6 +2178,46 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     )
 
 
+def test_11_r261_depth_test_off_is_always_in_every_api_table():
+    """Review r261 M1: teachraster's ``depth_test=False`` passes every fragment and still
+    writes its depth (GL's ``glDepthFunc(GL_ALWAYS)``), which is not what GL, Direct3D or
+    Vulkan call a disabled depth test (no depth write). The lesson prints both (the buffer
+    after the test off, and empty with writes off too), its held cell after Question 1 has
+    the GL / Direct3D / Vulkan / llvmpipe / teachraster table, and the inspector's check box
+    and the history's first line say ALWAYS."""
+    import json
+
+    from teachraster.widgets.frame_inspector import DEPTH_TEST_LABEL, FrameInspector
+
+    ns = lesson("11_debugging_a_frame")
+    at = (ns.far_won.row, ns.far_won.col)
+    assert ns.off.depth[at] == ns.far_won[1].depth_after  # written: the last fragment's
+    assert np.isnan(ns.no_writes.depth[at])  # both switches off: nothing written
+    assert "depth test off (ALWAYS)" in ns.far_won.table().splitlines()[0]
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    held = next("".join(c["source"]) for c in cells if c.get("id") == "farwhy")
+    assert held.startswith("q_redraw.hold()")
+    said = eval("(" + held[held.index("Markdown(") + 9 : held.rindex(")\n)")] + ")")  # shown
+    rows = {line.split("|")[1].strip(): line for line in said.splitlines() if line.startswith("| ")}
+    assert set(rows) >= {"OpenGL 4.6", "Direct3D 11/12", "Vulkan", "teachraster"}
+    assert any(k.startswith("llvmpipe") for k in rows)
+    for api, off, always, mask in (
+        ("OpenGL 4.6", "glDisable(GL_DEPTH_TEST)", "glDepthFunc(GL_ALWAYS)", "glDepthMask(GL_FALSE)"),
+        ("Direct3D 11/12", "DepthEnable = FALSE", "D3D11_COMPARISON_ALWAYS", "D3D11_DEPTH_WRITE_MASK_ZERO"),
+        ("Vulkan", "depthTestEnable = VK_FALSE", "VK_COMPARE_OP_ALWAYS", "depthWriteEnable = VK_FALSE"),
+        ("teachraster", "depth_test=False, depth_write=False", "`depth_test=False`", "depth_write=False"),
+    ):  # fmt: skip
+        cols = rows[api].split("|")[2:5]
+        assert off in cols[0] and always in cols[1] and mask in cols[2], rows[api]
+    assert "Depth writes are always disabled when depthTestEnable is VK_FALSE" in said
+    assert DEPTH_TEST_LABEL in said and "ALWAYS" in DEPTH_TEST_LABEL
+    text = " ".join("".join(c["source"]) for c in cells)
+    assert "untick *depth test*" not in " ".join(text.split())
+    w = FrameInspector("intersecting_triangles", 16, 12, backend="image")
+    assert w.depth_test.description == DEPTH_TEST_LABEL
+    w.close()
+
+
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     ns = lesson("11_debugging_a_frame")
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
