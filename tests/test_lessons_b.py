@@ -2218,6 +2218,26 @@ def test_11_r261_depth_test_off_is_always_in_every_api_table():
     w.close()
 
 
+def test_11_r261_hi_z_is_said_to_be_modelled_at_one_sample_only():
+    """Review r261 W1: at 4 samples the hi_z view read "Hi-Z: 0" in every scene and Question
+    4's pixel failed_depth, and nothing said that teachraster replays Hi-Z at one sample
+    only; a student concluded that MSAA defeats Hi-Z, which GPUs do not show. §5, Question 4,
+    its folded answer (printed numbers) and the summary say it; the view's title too
+    (tests/test_overlays_clipped.py)."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    assert int(ns.cube4.overlay("hi_z").sum()) == 0 and ns.at4 == ["failed_depth"]
+    assert ns.stopped[ns.hz_rec.triangle]["hi_z"] > 0  # at 1 sample Hi-Z rejects it there
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
+    assert "teachraster replays Hi-Z at **one sample per pixel only**" in text["be99b4cd"]
+    assert "GPUs keep Hi-Z under MSAA" in text["be99b4cd"]
+    assert "show `hi_z` for `cube`, with 1 sample" in text["230a6ce0"]
+    assert "GPUs keep it under MSAA" in text["bae649e5"]
+    assert "<i>not modelled with MSAA</i>" in text["fe558b7e"]
+
+
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     ns = lesson("11_debugging_a_frame")
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
