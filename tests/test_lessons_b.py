@@ -2238,6 +2238,51 @@ def test_11_r261_hi_z_is_said_to_be_modelled_at_one_sample_only():
     assert "<i>not modelled with MSAA</i>" in text["fe558b7e"]
 
 
+def test_11_r261_hi_z_bound_and_the_two_names_mapped():
+    """Review r261 M2: how a GPU knows a block's nearest depth without interpolating it (the
+    depth plane at the tile's corners, or the least vertex depth) is said, and Question 4's
+    answer prints the block's bound against the tile's farthest stored depth (not "its
+    fragments' depths"). S1: the overdraw / depth_complexity names are the other way round
+    from the usual ones; §5's table gives both names."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    # the bound printed: the plane at the tile's corners, no nearer than the tile's farthest
+    r0, c0 = ns.tile_rc
+    assert (r0 % 8, c0 % 8) == (0, 0) and r0 <= ns.at[0] < r0 + 8 and c0 <= ns.at[1] < c0 + 8
+    assert ns.hz_nearest >= ns.hz_farthest and ns.hz_nearest <= ns.hz_rec.depth
+    # the bound is the plane at the tile's corner centres clamped to the vertex depths (the
+    # tighter of the corner and the vertex bounds); the text prints both
+    corners = [(r0, c0), (r0, c0 + 7), (r0 + 7, c0), (r0 + 7, c0 + 7)]
+    tri = ns.cube.trace.window[ns.hz_rec.triangle]
+    plane = np.linalg.solve(np.column_stack([tri[:, :2], np.ones(3)]), tri[:, 2])
+    at_corners = [plane @ (c + 0.5, r + 0.5, 1) for r, c in corners]
+    assert ns.hz_corner == pytest.approx(min(at_corners), abs=1e-9)
+    assert ns.hz_vertex == tri[:, 2].min()
+    assert ns.hz_nearest == pytest.approx(max(ns.hz_corner, ns.hz_vertex), abs=1e-9)
+    assert ns.hz_corner < ns.hz_vertex  # here the corner lies outside the triangle
+    assert ns.hz_rec.depth_before <= ns.hz_farthest < ns.hz_nearest  # the tile's farthest
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
+    s5 = text["be99b4cd"]
+    assert "How can it know the block's nearest depth without interpolating it?" in s5
+    assert "smallest of the triangle's three vertex depths" in s5
+    assert "the plane at the tile's four corner pixel centres, each clamped to the range" in s5
+    assert "(its fragments in that 8×8 tile)" not in text["fe558b7e"]
+    assert "depth plane at the tile's corners, §5" in text["0e705df6"]
+    # S1: both names in one table
+    rows = [line for line in s5.split(" | ") if line]
+    assert (
+        "| `overdraw` | every fragment that reached it, before the depth test | *depth complexity*"
+        in s5
+    )
+    assert (
+        "| `depth_complexity` | the fragments that passed" in s5
+        and "what *overdraw* usually means" in s5
+    )
+    assert rows
+
+
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     ns = lesson("11_debugging_a_frame")
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
