@@ -2283,6 +2283,25 @@ def test_11_r261_hi_z_bound_and_the_two_names_mapped():
     assert rows
 
 
+def test_11_r261_small_items_and_the_edge_names_of_the_contract():
+    """Review r261 S2: GL defines the tests late for every shader without the qualifier, not
+    only for one that may discard. S4: a tool's pixel history lists the events that touched
+    the pixel (discarded draws, clears, copies too). CONVENTIONS' frame-debugging line names
+    both sets of edge names, as its Names paragraph does."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
+    assert "defines the tests of a shader that may `discard` as late" not in text
+    assert "GL defines the tests as late, after the shader, whatever the shader does" in text
+    assert "only the draws that produced a fragment" not in text
+    assert "the events that touched the pixel" in text
+    contract = " ".join((ROOT / "CONVENTIONS.md").read_text().split())
+    assert (
+        "edges as E12, E23, E31, or E13, E32, E21 for a triangle walked the other way" in contract
+    )
+
+
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     ns = lesson("11_debugging_a_frame")
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
