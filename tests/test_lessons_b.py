@@ -4043,7 +4043,8 @@ def test_r112_r110_wording():
 
     text11, text09 = words("11_debugging_a_frame"), words("09_texture_filtering")
     assert "is a number per pixel" in text11 and "a count per pixel" not in text11
-    assert "forces the late tests" not in text11 and "GL defines the tests of a shader" in text11
+    # r261 S2: late for every shader without the qualifier, not only for one that may discard
+    assert "forces the late tests" not in text11 and "GL defines the tests as late" in text11
     assert "(a little lowered)" not in text09 and "each at least a level finer" in text09
 
 
