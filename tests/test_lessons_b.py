@@ -2179,6 +2179,130 @@ def test_11_05a_10_agree_on_when_early_z_is_legal():
     )
 
 
+def test_11_r261_depth_test_off_is_always_in_every_api_table():
+    """Review r261 M1: teachraster's ``depth_test=False`` passes every fragment and still
+    writes its depth (GL's ``glDepthFunc(GL_ALWAYS)``), which is not what GL, Direct3D or
+    Vulkan call a disabled depth test (no depth write). The lesson prints both (the buffer
+    after the test off, and empty with writes off too), its held cell after Question 1 has
+    the GL / Direct3D / Vulkan / llvmpipe / teachraster table, and the inspector's check box
+    and the history's first line say ALWAYS."""
+    import json
+
+    from teachraster.widgets.frame_inspector import DEPTH_TEST_LABEL, FrameInspector
+
+    ns = lesson("11_debugging_a_frame")
+    at = (ns.far_won.row, ns.far_won.col)
+    assert ns.off.depth[at] == ns.far_won[1].depth_after  # written: the last fragment's
+    assert np.isnan(ns.no_writes.depth[at])  # both switches off: nothing written
+    assert "depth test off (ALWAYS)" in ns.far_won.table().splitlines()[0]
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    held = next("".join(c["source"]) for c in cells if c.get("id") == "farwhy")
+    assert held.startswith("q_redraw.hold()")
+    said = eval("(" + held[held.index("Markdown(") + 9 : held.rindex(")\n)")] + ")")  # shown
+    rows = {line.split("|")[1].strip(): line for line in said.splitlines() if line.startswith("| ")}
+    assert set(rows) >= {"OpenGL 4.6", "Direct3D 11/12", "Vulkan", "teachraster"}
+    assert any(k.startswith("llvmpipe") for k in rows)
+    for api, off, always, mask in (
+        ("OpenGL 4.6", "glDisable(GL_DEPTH_TEST)", "glDepthFunc(GL_ALWAYS)", "glDepthMask(GL_FALSE)"),
+        ("Direct3D 11/12", "DepthEnable = FALSE", "D3D11_COMPARISON_ALWAYS", "D3D11_DEPTH_WRITE_MASK_ZERO"),
+        ("Vulkan", "depthTestEnable = VK_FALSE", "VK_COMPARE_OP_ALWAYS", "depthWriteEnable = VK_FALSE"),
+        ("teachraster", "depth_test=False, depth_write=False", "`depth_test=False`", "depth_write=False"),
+    ):  # fmt: skip
+        cols = rows[api].split("|")[2:5]
+        assert off in cols[0] and always in cols[1] and mask in cols[2], rows[api]
+    assert "Depth writes are always disabled when depthTestEnable is VK_FALSE" in said
+    assert DEPTH_TEST_LABEL in said and "ALWAYS" in DEPTH_TEST_LABEL
+    text = " ".join("".join(c["source"]) for c in cells)
+    assert "untick *depth test*" not in " ".join(text.split())
+    w = FrameInspector("intersecting_triangles", 16, 12, backend="image")
+    assert w.depth_test.description == DEPTH_TEST_LABEL
+    w.close()
+
+
+def test_11_r261_hi_z_is_said_to_be_modelled_at_one_sample_only():
+    """Review r261 W1: at 4 samples the hi_z view read "Hi-Z: 0" in every scene and Question
+    4's pixel failed_depth, and nothing said that teachraster replays Hi-Z at one sample
+    only; a student concluded that MSAA defeats Hi-Z, which GPUs do not show. §5, Question 4,
+    its folded answer (printed numbers) and the summary say it; the view's title too
+    (tests/test_overlays_clipped.py)."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    assert int(ns.cube4.overlay("hi_z").sum()) == 0 and ns.at4 == ["failed_depth"]
+    assert ns.stopped[ns.hz_rec.triangle]["hi_z"] > 0  # at 1 sample Hi-Z rejects it there
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
+    assert "teachraster replays Hi-Z at **one sample per pixel only**" in text["be99b4cd"]
+    assert "GPUs keep Hi-Z under MSAA" in text["be99b4cd"]
+    assert "show `hi_z` for `cube`, with 1 sample" in text["230a6ce0"]
+    assert "GPUs keep it under MSAA" in text["bae649e5"]
+    assert "<i>not modelled with MSAA</i>" in text["fe558b7e"]
+
+
+def test_11_r261_hi_z_bound_and_the_two_names_mapped():
+    """Review r261 M2: how a GPU knows a block's nearest depth without interpolating it (the
+    depth plane at the tile's corners, or the least vertex depth) is said, and Question 4's
+    answer prints the block's bound against the tile's farthest stored depth (not "its
+    fragments' depths"). S1: the overdraw / depth_complexity names are the other way round
+    from the usual ones; §5's table gives both names."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    # the bound printed: the plane at the tile's corners, no nearer than the tile's farthest
+    r0, c0 = ns.tile_rc
+    assert (r0 % 8, c0 % 8) == (0, 0) and r0 <= ns.at[0] < r0 + 8 and c0 <= ns.at[1] < c0 + 8
+    assert ns.hz_nearest >= ns.hz_farthest and ns.hz_nearest <= ns.hz_rec.depth
+    # the bound is the plane at the tile's corner centres clamped to the vertex depths (the
+    # tighter of the corner and the vertex bounds); the text prints both
+    corners = [(r0, c0), (r0, c0 + 7), (r0 + 7, c0), (r0 + 7, c0 + 7)]
+    tri = ns.cube.trace.window[ns.hz_rec.triangle]
+    plane = np.linalg.solve(np.column_stack([tri[:, :2], np.ones(3)]), tri[:, 2])
+    at_corners = [plane @ (c + 0.5, r + 0.5, 1) for r, c in corners]
+    assert ns.hz_corner == pytest.approx(min(at_corners), abs=1e-9)
+    assert ns.hz_vertex == tri[:, 2].min()
+    assert ns.hz_nearest == pytest.approx(max(ns.hz_corner, ns.hz_vertex), abs=1e-9)
+    assert ns.hz_corner < ns.hz_vertex  # here the corner lies outside the triangle
+    assert ns.hz_rec.depth_before <= ns.hz_farthest < ns.hz_nearest  # the tile's farthest
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
+    s5 = text["be99b4cd"]
+    assert "How can it know the block's nearest depth without interpolating it?" in s5
+    assert "smallest of the triangle's three vertex depths" in s5
+    assert "the plane at the tile's four corner pixel centres, each clamped to the range" in s5
+    assert "(its fragments in that 8×8 tile)" not in text["fe558b7e"]
+    assert "depth plane at the tile's corners, §5" in text["0e705df6"]
+    # S1: both names in one table
+    rows = [line for line in s5.split(" | ") if line]
+    assert (
+        "| `overdraw` | every fragment that reached it, before the depth test | *depth complexity*"
+        in s5
+    )
+    assert (
+        "| `depth_complexity` | the fragments that passed" in s5
+        and "what *overdraw* usually means" in s5
+    )
+    assert rows
+
+
+def test_11_r261_small_items_and_the_edge_names_of_the_contract():
+    """Review r261 S2: GL defines the tests late for every shader without the qualifier, not
+    only for one that may discard. S4: a tool's pixel history lists the events that touched
+    the pixel (discarded draws, clears, copies too). CONVENTIONS' frame-debugging line names
+    both sets of edge names, as its Names paragraph does."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
+    assert "defines the tests of a shader that may `discard` as late" not in text
+    assert "GL defines the tests as late, after the shader, whatever the shader does" in text
+    assert "only the draws that produced a fragment" not in text
+    assert "the events that touched the pixel" in text
+    contract = " ".join((ROOT / "CONVENTIONS.md").read_text().split())
+    assert (
+        "edges as E12, E23, E31, or E13, E32, E21 for a triangle walked the other way" in contract
+    )
+
+
 def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     ns = lesson("11_debugging_a_frame")
     # "0 everywhere on a healthy frame, glass included": the empty depth buffer is not counted
@@ -3920,7 +4044,8 @@ def test_r112_r110_wording():
 
     text11, text09 = words("11_debugging_a_frame"), words("09_texture_filtering")
     assert "is a number per pixel" in text11 and "a count per pixel" not in text11
-    assert "forces the late tests" not in text11 and "GL defines the tests of a shader" in text11
+    # r261 S2: late for every shader without the qualifier, not only for one that may discard
+    assert "forces the late tests" not in text11 and "GL defines the tests as late" in text11
     assert "(a little lowered)" not in text09 and "each at least a level finer" in text09
 
 

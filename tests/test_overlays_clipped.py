@@ -17,6 +17,7 @@ from test_render import clip_from_window
 
 import teachraster as tr
 from teachraster.pipeline.debugging.overlays import KINDS
+from teachraster.plotting.frame_debug import HIZ_MSAA_TITLE
 
 W, H = 24, 18
 
@@ -203,12 +204,17 @@ def test_frame_inspector_overlay_titles_and_colour_bars_fit_in_the_classroom_sty
         try:
             renderer = w.fig.canvas.get_renderer()
             # under 4x MSAA the overdraw and depth-complexity labels name samples (longer)
-            views = [(1, v) for v in KINDS] + [(4, "overdraw"), (4, "depth_complexity")]
+            # and review r261 W1: the hi_z view says that Hi-Z is not modelled at 4 samples
+            views = [(1, v) for v in KINDS] + [(4, "overdraw"), (4, "depth_complexity"),
+                                               (4, "hi_z")]  # fmt: skip
             for samples, view in views:
                 w.samples.value = samples
                 w.view.value = view
                 w.fig.canvas.draw()
                 _bar_fits(w, renderer, view)
+                if view == "hi_z":
+                    hiz_at_4 = w.ax.get_title() == HIZ_MSAA_TITLE
+                    assert hiz_at_4 == (samples == 4), w.ax.get_title()
         finally:
             w.close()
         # review r18, exercise 11: on a frame as short as the exercise's, "passed depth test,

@@ -39,6 +39,12 @@ OVERLAY_LABELS_MSAA = {
     "depth_complexity": "samples passed depth, per pixel",
 }
 
+#: The "hi_z" view's title under MSAA: teachraster replays Hi-Z at one sample only, so the
+#: view is 0 there. Said, since "Hi-Z: 0" at 4 samples read as "MSAA defeats Hi-Z" (review
+#: r261 W1), which GPUs do not show: their Hi-Z summary of a tile is then the farthest depth
+#: over all its samples.
+HIZ_MSAA_TITLE = "Hi-Z: not modelled with MSAA (GPUs keep it)"
+
 #: The colour of "nothing arrived here" (a count of 0, or no triangle).
 NOTHING = (0.93, 0.93, 0.93)
 
@@ -228,7 +234,8 @@ def fit_title(ax, margin: float = 4.0):
 def overlay_title(kind: str, values: np.ndarray, n_samples: int = 1, *,
                   share: float | None = None) -> str:  # fmt: skip
     """A one-line summary of an overlay in numbers (under MSAA, overdraw and depth
-    complexity say that they count samples). The quad overshading's is the frame's
+    complexity say that they count samples; Hi-Z says that it is not modelled,
+    :data:`HIZ_MSAA_TITLE`). The quad overshading's is the frame's
     ``share`` of helpers among all lanes launched
     (:func:`~teachraster.pipeline.debugging.overlays.helper_share`), not a mean of the
     per-quad fractions, which would drop the quads without helpers."""
@@ -240,6 +247,8 @@ def overlay_title(kind: str, values: np.ndarray, n_samples: int = 1, *,
         seen = values[values > 0]
         median = int(np.median(seen)) if len(seen) else 0
         return f"triangle size: median {median:,} px"
+    if kind == "hi_z" and n_samples > 1:  # not a count of 0: no replay was run
+        return HIZ_MSAA_TITLE
     total, top = int(values.sum()), int(values.max(initial=0))
     name = kind.replace("_", " ").replace("hi z", "Hi-Z").replace("nan", "NaN")
     unit = " samples" if n_samples > 1 and kind in OVERLAY_LABELS_MSAA else ""

@@ -84,6 +84,14 @@ HISTORY_COLOUR_WIDTH = FRAME_MARGINS[0] + FRAME_BOX[0] + FRAME_MARGINS[2]
 #: and in fractions of the height: bottom, height (the records' labels under it, the title).
 HISTORY_AXES = (1.2, 0.14, 0.24, 0.66)
 
+#: The depth-test check box's words. Unticked, ``render(..., depth_test=False)``: every
+#: fragment passes and still writes its depth, what GL calls ``glDepthFunc(GL_ALWAYS)``
+#: (Direct3D ``D3D11_COMPARISON_ALWAYS``, Vulkan ``VK_COMPARE_OP_ALWAYS``), not what the APIs
+#: call a disabled test (``glDisable(GL_DEPTH_TEST)``, ``DepthEnable = FALSE``,
+#: ``depthTestEnable = VK_FALSE``), which writes no depth (review r261 M1: a box labelled
+#: "depth test" behaved like no API's test-off).
+DEPTH_TEST_LABEL = "depth test (off = ALWAYS, writes on)"
+
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
 GLASS_ALPHA = 0.5
 
@@ -327,6 +335,8 @@ class FrameInspector(Holdable):
         pixel nearest it where the frame and its pair differ: :func:`changed_pixel`).
     samples : {1, 4}
     depth_test : bool
+        Unticked, ``depth_test=False``: GL's ``glDepthFunc(GL_ALWAYS)``, depth still written
+        (:data:`DEPTH_TEST_LABEL`).
     glass : bool
         Draw the scene as glass (:func:`glass_frame`): the history then shows the colour
         buffer before and after every fragment.
@@ -393,7 +403,7 @@ class FrameInspector(Holdable):
                                      description="view", layout=menu, style=fitted)  # fmt: skip
         self.samples = widgets.Dropdown(options=[1, 4], value=samples, description="samples",
                                         layout=short)  # fmt: skip
-        self.depth_test = _check_box(depth_test, "depth test")
+        self.depth_test = _check_box(depth_test, DEPTH_TEST_LABEL)
         self.glass = _check_box(glass, "glass (blend over)")
         # each as wide as the column: ipywidgets' ~125-px track gave ~2 px a step for 48 or
         # 64 values (review r62, lesson 11 #4)

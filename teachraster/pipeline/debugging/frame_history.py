@@ -583,8 +583,10 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
     its samples' identical colour lines on one (:func:`colour_lines`); ``fold=False``: a
     line per record, as ``h.records`` holds them."""
     shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
+    # off is GL's ALWAYS (every fragment passes, and writes where its mask lets it), not
+    # glDisable(GL_DEPTH_TEST): said, so that the table is not read as the APIs' test-off
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
-             f"{'on' if h.depth_test else 'off'}:")  # fmt: skip
+             f"{'on' if h.depth_test else 'off (ALWAYS)'}:")  # fmt: skip
     way = f"{len({r.triangle for r in h.records})} triangle(s) on the way; shows {shows}"
     if h.n_samples > 1 and h.shows >= 0:  # each sample keeps its own triangle
         way += " (most samples)"

@@ -17,7 +17,9 @@ the plan's ``hi_z`` entry), and really drops the hidden blocks before their dept
 Exactness. The block's smallest depth is the triangle's depth plane at the tile's extreme
 pixel centres (the corner trick of the tiled fill: the plane is affine, and the float
 expression that :meth:`Fragments.plane` evaluates is monotone along rows and columns), after
-the same quantisation as the buffer: no fragment of the block is stored nearer. The tile
+the same quantisation as the buffer: no fragment of the block is stored nearer. That
+expression clamps to the range of the triangle's vertex depths, so the bound is the tighter
+of the corner bound and the triangle's nearest vertex (lesson 11 §5 says so). The tile
 maximum is taken over the buffer *as it was when the triangle arrived* (a running minimum
 per pixel in drawing order). A rejected fragment is therefore one the depth test would
 have failed.
@@ -175,7 +177,8 @@ def _unique_runs(key: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _corner_depths(frags, window, tri, row, col, image, depth_format, tile) -> np.ndarray:
-    """Smallest stored depth of each triangle over its tile: the plane at the 4 corners."""
+    """Smallest stored depth of each triangle over its tile: the plane at the 4 corners
+    (clamped, as everywhere, to the vertex depths: no nearer than the nearest vertex)."""
     height, width = image
     last_r = np.minimum(row + tile, height) - 1
     last_c = np.minimum(col + tile, width) - 1
