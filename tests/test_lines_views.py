@@ -61,9 +61,10 @@ def test_line_view_updates_in_place(ax):
 
 
 def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
-    """Diamond rule: step k shows the diamonds of its own column thick, and every diamond the
-    steps so far tested, lit or ended in; at the end they are plot_diamonds' own. Other
-    rules (and the set-up steps) draw none."""
+    """Diamond rule: step k shows the diamonds of its own column the line comes near thick,
+    and every such diamond the steps so far tested, lit or ended in; at the end they are
+    plot_diamonds' own with tested="near" (review r262 FIG1: not the walk's whole window).
+    Other rules (and the set-up steps) draw none."""
     fill = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, trace=True)
     s = fill.trace.steps
     view = LineView.create(ax, fill, step=0)
@@ -71,13 +72,15 @@ def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
     view.show_step(3)  # column 1: the tie
     now = {tuple(p.vertices[0]) for p in view.diamonds["now"].get_paths()}
     assert (
-        now == {(1.5, r + 0.0) for r in s.rows[s.step == 1]}
+        now
+        == {(1.5, r + 0.0) for r in s.rows[(s.step == 1) & fill.trace.near()]}
+        == {(1.5, 0.0), (1.5, 1.0)}
         and "column 1" in view.caption.get_text()
     )
     lit = view.diamonds["lit"].get_paths()
     assert len(lit) == int(fill.trace.coverage_at(3).sum()) == 2
     view.show_step(-1)
-    whole = plot_diamonds(ax, fill)
+    whole = plot_diamonds(ax, fill, tested="near")
     for name, drawn in (("lit", whole.lit), ("ends", whole.ends), ("tested", whole.missed)):
         assert len(view.diamonds[name].get_paths()) == len(drawn.get_paths()), name
     view.trace = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, rule="dda", trace=True).trace
