@@ -747,7 +747,8 @@ def test_review_r105_dda_and_smooth_line_predictions(ns):
 
 def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypatch):
     """The two questions, built from their cells as a student's kernel builds them: Check waits
-    for a number, the answer and its tolerance are right, the near slips are not."""
+    for an answer (q_dda a number, q_smooth the marker moved), the answer and its tolerance
+    are right, the near slips are not."""
     from fractions import Fraction
 
     import teachraster as tr
@@ -761,10 +762,6 @@ def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypat
             "q_dda",
             [("37", True), ("34", True), ("40", True), ("28", False), ("1", False)],
         ),  # fmt: skip
-        "smoothq": (
-            "q_smooth",
-            [("0.44", True), ("0.41", True), ("0.68", False), ("0.5", False), ("1", False)],
-        ),  # fmt: skip
     }
     for cell_id, (name, answers) in cases.items():
         for value, verdict in answers:
@@ -773,6 +770,24 @@ def test_review_r105_dda_and_smooth_questions_take_an_answer_first(ns, monkeypat
                          tall=ns.tall)  # fmt: skip
             exec(_cell_source(cell_id), scope)  # the question cell, as the lesson runs it
             assert _answered(scope[name], value) is verdict, (name, value)
+    # review r262 P1: q_smooth is answered on the figure, the marker dragged along the column's
+    # centre line to the rectangle's upper edge; the area is the pixel's part below it. Right:
+    # the edge (area 0.439) within 0.03 px; wrong: half the pixel, Wu's weight 0.380 (y 3.62)
+    import matplotlib.pyplot as plt
+
+    from teachraster.widgets import PredictPoint
+
+    scope = dict(tr=tr, np=np, plt=plt, PredictPoint=PredictPoint, Fraction=Fraction, p0=ns.p0,
+                 p1=ns.p1, pixel_area=pixel_area, wide_line_triangles=wide_line_triangles,
+                 tall=ns.tall)  # fmt: skip
+    exec(_cell_source("smoothq"), scope)
+    q, row, x = scope["q_smooth"], ns.sm_row, ns.sm_col + 0.5
+    assert q.given is None and q.correct is None and q.data["start"] == [x, row + 1.0]
+    for area, verdict in ((ns.sm_area, True), (0.46, True), (0.415, True), (0.5, False),
+                          (ns.wu_weights[0], False), (0.0, False)):  # fmt: skip
+        q.given = (x, row + 1 - area)
+        assert q.correct is verdict, area
+    plt.close("all")
 
 
 def test_review_r101_polyline_figure_sets_the_rule_beside_every_pixel_touched(ns):

@@ -70,7 +70,8 @@ def test_r217_12b_measures_table_and_object_sorting():
     order = re.findall(r"\((True|False), (True|False)\)", printed)
     assert order == [("False", "False"), ("True", "False"), ("True", "True"), ("False", "True")]
     bullets = [line for line in tryit.splitlines() if line.startswith("- **")]
-    assert len(bullets) == 3
+    assert len(bullets) == 4  # review r263 M3: the blend state's bullet first
+    assert bullets[0].startswith('- **"blend"** and **"alpha"**')
     # item 5: objects, two passes, back faces first, with the sources quoted
     text = _flat(cells["sortfails"])
     assert text.startswith("Engines sort whole **objects**, not triangles")

@@ -61,9 +61,10 @@ def test_line_view_updates_in_place(ax):
 
 
 def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
-    """Diamond rule: step k shows the diamonds of its own column thick, and every diamond the
-    steps so far tested, lit or ended in; at the end they are plot_diamonds' own. Other
-    rules (and the set-up steps) draw none."""
+    """Diamond rule: step k shows the diamonds of its own column the line comes near thick,
+    and every such diamond the steps so far tested, lit or ended in; at the end they are
+    plot_diamonds' own with tested="near" (review r262 FIG1: not the walk's whole window).
+    Other rules (and the set-up steps) draw none."""
     fill = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, trace=True)
     s = fill.trace.steps
     view = LineView.create(ax, fill, step=0)
@@ -71,13 +72,15 @@ def test_line_view_draws_the_diamonds_its_captions_speak_of(ax):
     view.show_step(3)  # column 1: the tie
     now = {tuple(p.vertices[0]) for p in view.diamonds["now"].get_paths()}
     assert (
-        now == {(1.5, r + 0.0) for r in s.rows[s.step == 1]}
+        now
+        == {(1.5, r + 0.0) for r in s.rows[(s.step == 1) & fill.trace.near()]}
+        == {(1.5, 0.0), (1.5, 1.0)}
         and "column 1" in view.caption.get_text()
     )
     lit = view.diamonds["lit"].get_paths()
     assert len(lit) == int(fill.trace.coverage_at(3).sum()) == 2
     view.show_step(-1)
-    whole = plot_diamonds(ax, fill)
+    whole = plot_diamonds(ax, fill, tested="near")
     for name, drawn in (("lit", whole.lit), ("ends", whole.ends), ("tested", whole.missed)):
         assert len(view.diamonds[name].get_paths()) == len(drawn.get_paths()), name
     view.trace = tr.rasterize_line((0.5, 0.5), (8.5, 4.5), 10, 6, rule="dda", trace=True).trace
@@ -155,14 +158,16 @@ def test_blending_explorer_controls_keep_their_text():
 
     ex = BlendingExplorer(backend="image", size=(24, 24))
     try:
-        row = ex.widget.children[1]
-        assert row.layout.flex_flow == "row wrap"
+        row = ex.widget.children[2]  # children[1]: the blend state's row (review r263 M3)
+        assert (
+            row.layout.flex_flow == "row wrap" and ex.widget.children[1].children[1] is ex.opacity
+        )
         for column in row.children[1:]:
             assert column.layout.flex == "0 0 auto"
-        controls = (ex.earlier, ex.later, ex.sort, ex.premultiplied, ex.srgb, ex.decode, ex.white)
+        controls = (ex.earlier, ex.later, ex.sort, ex.srgb, ex.decode, ex.white)
         for control in controls:
             assert control.layout.width == "auto" and control.layout.flex == "0 0 auto"
-        assert not ex.premultiplied.indent and not ex.srgb.indent and not ex.white.indent
+        assert not ex.srgb.indent and not ex.white.indent
     finally:
         ex.close()
 
@@ -183,9 +188,9 @@ def test_blending_explorer_clears_to_black_or_white():
         assert np.allclose(ex.color[bare], 1) and np.allclose(ex.sorted_color[bare], 1)
         assert "cleared to opaque white" in ex.info.value
         assert ex.differ > 0 and ex.color[~bare, 3].min() < 1
-        ex.premultiplied.value = True  # over white, the two encodings display alike
+        ex.mode.value = "premultiplied"  # over white, the two encodings display alike
         premultiplied_rgb = ex.color[..., :3].copy()
-        ex.premultiplied.value = False
+        ex.mode.value = "over"
         assert np.allclose(ex.color[..., :3], premultiplied_rgb)
         ex.white.value = False
         assert ex.differ == black_differ
@@ -210,7 +215,7 @@ def test_blending_explorer_order_and_toggles():
         ex.later.click()
         assert ex.differ > 0
         straight = ex.color.copy()
-        ex.premultiplied.value = True
+        ex.mode.value = "premultiplied"
         # premultiplied "over" into a transparent buffer gives Porter-Duff's alpha
         # 1 - Π(1 - a) (three layers of 0.6 where all overlap); straight alpha squares it
         assert np.isclose(ex.color[..., 3].max(), 1 - 0.4**3)
@@ -218,7 +223,7 @@ def test_blending_explorer_order_and_toggles():
         moved = ex.color.copy()
         ex.srgb.value = True
         assert not np.allclose(ex.color, moved)
-        ex.premultiplied.value = False
+        ex.mode.value = "over"
         # an 8-bit sRGB target: whole codes after every layer (ex.color holds linear values)
         codes = tr.linear_to_srgb(np.clip(ex.color[..., :3], 0, 1)) * 255
         assert np.allclose(codes, np.round(codes), atol=1e-6)
@@ -412,12 +417,47 @@ def test_blending_explorer_says_when_stored_alpha_is_one_everywhere():
         ex.alpha.value = True
         assert ex.color[..., 3].min() < 1 and "nothing shows through" not in ex.info.value
         assert "stored alpha over a checkerboard" in ex.info.value
-        ex.premultiplied.value = True
+        ex.mode.value = "premultiplied"
         assert np.allclose(ex.color[..., 3], 1)
         assert "stored alpha over a checkerboard (1 everywhere: nothing shows through)" in (
             ex.info.value
         )
         ex.alpha.value = False
         assert "checkerboard" not in ex.info.value
+    finally:
+        ex.close()
+
+
+def test_blending_explorer_blend_state_and_alpha():
+    """Review r263 M3: the explorer gains the blend state: a mode (over, premultiplied,
+    additive, multiply, its factor pair in the status line) and one alpha for every triangle.
+    Additive and multiply give 0 differing pixels in any order (multiply's float products part
+    by last bits only, under the 1e-9 the count allows); "over" depends on it at every alpha
+    below 1, and the artists are updated in place."""
+    from teachraster.widgets.blending import BLEND_CHOICES, BlendingExplorer, compose
+
+    ex = BlendingExplorer(backend="image", size=(24, 24), white=True)
+    try:
+        assert list(BLEND_CHOICES) == ["over", "premultiplied", "additive", "multiply"]
+        assert ex.opacity.value == 0.6 and "alpha 0.60" in ex.info.value
+        image = ex.artists.image
+        assert ex.differ > 0 and "(SRC_ALPHA, ONE_MINUS_SRC_ALPHA)" in ex.info.value
+        for mode in ("additive", "multiply"):
+            ex.mode.value = mode
+            assert ex.differ == 0, mode
+            ex.select.value = 0
+            ex.later.click()
+            assert ex.differ == 0 and f"blend {mode!r}" in ex.info.value
+        assert "(DST_COLOR, ZERO)" in ex.info.value and "alpha unused" in ex.info.value
+        ex.mode.value = "additive"
+        assert "untick 'clear to opaque white'" in ex.info.value
+        ex.mode.value = "over"
+        for a in (0.2, 0.9):
+            ex.opacity.value = a
+            assert ex.differ > 0
+            expected = compose(ex.clip, ex.rgba, ex.order, alpha=a, size=(24, 24),
+                               clear_color=(1, 1, 1, 1))  # fmt: skip
+            assert np.array_equal(ex.color, expected)
+        assert ex.artists.image is image  # updated in place
     finally:
         ex.close()

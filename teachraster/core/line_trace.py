@@ -203,3 +203,33 @@ class LineTrace:
             return np.zeros(0, np.int64), np.zeros(0, np.int64)
         mine = self.steps.state == ENDS_INSIDE
         return self.steps.rows[mine], self.steps.cols[mine]
+
+    def near(self) -> np.ndarray:
+        """(m,) bool: the candidates worth drawing, those the line comes near.
+
+        The walk tests a window of candidates in each column (row), most of them far from
+        the line. Kept: those lit, ended in or decided by a tie, and the missed ones whose
+        pixel the segment passes through inside that column (a diamond the line misses
+        although it crosses the pixel). The diamond explorer draws the same ones
+        (``nearCandidates`` in ``widgets/static/explore_lines.js``; reviews r83, r88, r262).
+        """
+        s = self.steps
+        if s is None:
+            return np.zeros(0, bool)
+        ax, ot = (0, 1) if s.x_major else (1, 0)
+        a, b = np.asarray(self.p0, float), np.asarray(self.p1, float)
+        major = s.major[s.step]  # each candidate's column (row)
+        # the part of the segment inside that column, and its extent along the minor axis
+        lo = np.maximum(major, min(a[ax], b[ax]))
+        hi = np.minimum(major + 1, max(a[ax], b[ax]))
+        span = b[ax] - a[ax]
+
+        def at(u):
+            return a[ot] + (u - a[ax]) * (b[ot] - a[ot]) / span if span else np.full_like(u, a[ot])
+
+        m0, m1 = np.minimum(at(lo), at(hi)), np.maximum(at(lo), at(hi))
+        minor = s.rows if s.x_major else s.cols
+        crossed = np.where(m0 == m1, (minor <= m0) & (m0 < minor + 1),
+                           (minor < m1) & (m0 < minor + 1))  # fmt: skip
+        tie = s.tie if s.tie is not None else np.zeros_like(crossed)
+        return (s.state != 0) | tie | crossed

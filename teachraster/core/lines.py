@@ -63,9 +63,9 @@ def rasterize_line(
     width, height : int
         Image size in pixels.
     rule : {"diamond", "bresenham", "dda"}
-        The diamond-exit rule (GL, Direct3D; p1's own diamond is left out so that a polyline
-        lights each shared vertex once), Bresenham's integer midpoint loop between the end
-        pixels, or the float32 DDA; the last two also leave out p1's pixel.
+        The diamond-exit rule (GL, Vulkan's Bresenham mode; p1's own diamond is left out so
+        that a polyline lights each shared vertex once), Bresenham's integer midpoint loop
+        between the end pixels, or the float32 DDA; the last two also leave out p1's pixel.
     line_width : float
         1 (one-pixel lines, the rule above) or more: the rectangle of that width around the
         segment, as two triangles under the top-left rule (``rule`` must be "diamond").

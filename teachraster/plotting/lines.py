@@ -62,14 +62,16 @@ def plot_diamonds(ax, line, *, grid: bool = True, tested: str = "all") -> Diamon
 
     ``line`` is a traced diamond-rule line (``tr.rasterize_line(..., trace=True)``).
     ``tested`` chooses the missed diamonds drawn: ``"all"`` every one the walk tested (its
-    window of candidates, an internal of the simulator), ``"ties"`` only those that lost a tie
-    (the line runs through their corner: the ones the rule itself had to decide), ``"none"``.
+    window of candidates, an internal of the simulator), ``"near"`` those the line comes near
+    (:meth:`~teachraster.core.line_trace.LineTrace.near`, what the player and the explorer
+    draw), ``"ties"`` only those that lost a tie (the line runs through their corner: the ones
+    the rule itself had to decide), ``"none"``.
     """
     trace = as_line_trace(line)
     if trace.steps is None:
         raise ValueError("plot_diamonds draws one-pixel lines (line_width=1)")
-    if tested not in ("all", "ties", "none"):
-        raise ValueError(f"tested must be 'all', 'ties' or 'none'; got {tested!r}")
+    if tested not in ("all", "near", "ties", "none"):
+        raise ValueError(f"tested must be 'all', 'near', 'ties' or 'none'; got {tested!r}")
     width, height = trace.size
     pixel_axes(ax, width, height)
     lines = []
@@ -81,7 +83,8 @@ def plot_diamonds(ax, line, *, grid: bool = True, tested: str = "all") -> Diamon
     s = trace.steps
     polys = {state: [_diamond(r, c) for r, c, st in zip(s.rows, s.cols, s.state) if st == state]
              for state in (LIT, ENDS_INSIDE)}  # fmt: skip
-    shown = (s.state == 0) & {"all": True, "ties": s.tie, "none": False}[tested]
+    which = {"all": True, "near": trace.near(), "ties": s.tie, "none": False}[tested]
+    shown = (s.state == 0) & which
     polys[0] = [_diamond(r, c) for r, c in zip(s.rows[shown], s.cols[shown])]
     lit = PolyCollection(polys[LIT], facecolor=COLORS["fill"], edgecolor=COLORS["edge"],
                          linewidth=lw(0.6), zorder=1)  # fmt: skip
@@ -195,15 +198,18 @@ _DIAMOND_STYLES = {
 
 def _diamonds_at(trace: LineTrace, k: int) -> dict:
     """The diamonds to draw once steps 0..k have run, by :data:`_DIAMOND_STYLES` name: every
-    candidate a finished step tested, by its state, and the candidates of step k itself."""
+    candidate a finished step tested that the line comes near (:meth:`LineTrace.near`, as
+    the diamond explorer draws them), by its state, and those of step k itself. The walk's
+    other candidates, rows away from the line, are left out (review r262 FIG1: the player
+    outlined five rows of a column, as if the rule tested them all)."""
     out = {name: [] for name in _DIAMOND_STYLES}
     s = trace.steps
     if trace.rule != "diamond" or s is None:
         return out
     work = trace.index(k) - len(SETUP)
     names = {MISSED: "tested", LIT: "lit", ENDS_INSIDE: "ends"}
-    for r, c, st, at in zip(s.rows, s.cols, s.state, s.step):
-        if at <= work:
+    for r, c, st, at, near in zip(s.rows, s.cols, s.state, s.step, trace.near()):
+        if at <= work and near:
             out[names[int(st)]].append(_diamond(r, c))
             if at == work:
                 out["now"].append(_diamond(r, c))

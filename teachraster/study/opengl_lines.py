@@ -128,6 +128,14 @@ def gl_version() -> str:
     return str(ctx.info["GL_VERSION"])
 
 
+def gl_line_width_range() -> tuple[float, float]:
+    """``ALIASED_LINE_WIDTH_RANGE`` of the context: the widths ``glLineWidth`` may draw without
+    multisampling (GL requires only 1; a driver whose range stops at 1 draws every line 1 px)."""
+    ctx, _ = gl_context()
+    low, high = ctx.info["GL_ALIASED_LINE_WIDTH_RANGE"]
+    return float(low), float(high)
+
+
 def _on_diamond_boundary(p) -> bool:
     """Whether window point ``p`` lies exactly on the boundary of some pixel's diamond."""
     fx, fy = p[0] - np.floor(p[0]), p[1] - np.floor(p[1])

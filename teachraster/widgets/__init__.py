@@ -40,7 +40,8 @@ Widgets
 - :class:`PlaneExplorer` (lesson 03), :class:`DepthPrecisionExplorer` (lesson 05b: bits, near
   plane, reverse-Z) and :class:`CasePicker` (lesson 07: any hard case, ours beside naive).
 - :class:`LinePlayer` and :class:`BlendingExplorer` (lessons 12a, 12b): a line step by step under the
-  diamond rule, Bresenham or DDA; transparent triangles reordered, premultiplied, sRGB.
+  diamond rule, Bresenham or DDA; transparent triangles reordered, their blend state and
+  alpha chosen, sRGB.
 
 Offline pages
 -------------

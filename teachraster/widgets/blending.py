@@ -1,16 +1,18 @@
-"""``BlendingExplorer``: reorder transparent triangles, toggle premultiplied alpha and sRGB.
+"""``BlendingExplorer``: reorder transparent triangles, pick the blend state, toggle sRGB.
 
 Lesson 12b's blending widget. A few transparent triangles are drawn with ``render(...,
 blend=...)``; the list on the left is the submission order (select one, move it earlier or
-later, or sort back to front). The left panel shows the colour buffer in the chosen order,
+later, or sort back to front). Above it the blend state: the mode ("over", "premultiplied",
+"additive", "multiply", each with its factor pair in the status line) and one alpha for every
+triangle (review r263 M3: additive and multiply give 0 differing pixels in any order). The left panel shows the colour buffer in the chosen order,
 the right one the same triangles sorted back to front, with how many pixels differ. Both show
 the RGB written, opaque, as a window displays it (review r31: the stored alpha drawn over a
 checkerboard greyed every colour); the "stored alpha" checkbox draws them over a checkerboard
 by their stored alpha instead. "clear to opaque white" clears the buffer to (1, 1, 1, 1)
 instead of transparent black (0, 0, 0, 0): the background of the lesson's figures, where
-straight and premultiplied colours display alike. The other checkboxes switch to premultiplied colours
-(``blend="premultiplied"``, colours multiplied by alpha first: the same RGB on this buffer,
-a different stored alpha) and to an 8-bit sRGB framebuffer (``color_format="srgb8"``, as
+straight and premultiplied colours display alike ("premultiplied": ``blend="premultiplied"``,
+colours multiplied by alpha first: the same RGB on this buffer, a different stored alpha).
+The other checkboxes switch to an 8-bit sRGB framebuffer (``color_format="srgb8"``, as
 GL's: the triangles' colours taken as linear light, blended in linear light, encoded and
 rounded to 8 bits after every layer) rather than blending the numbers directly. A separate
 box, "colours sRGB-encoded (decode)", takes the triangles' colours as sRGB codes and decodes
@@ -23,11 +25,16 @@ from __future__ import annotations
 import ipywidgets as widgets
 import numpy as np
 
-from ..core.blend_factors import srgb_to_linear
+from ..core.blend_factors import BLEND_MODES, srgb_to_linear
+from ..core.validate import check_choice
 from ..pipeline.render_triangles import render
 from ..plotting.lines import plot_rgba, rgba_shown
-from .common import Shown, control_row, style_context, title_html
+from .common import Shown, control_row, labelled, style_context, title_html
 from .display import FigureDisplay, new_figure, resolve_backend
+
+#: The explorer's blend states: ``render``'s modes, each with its factor pair (FUNC_ADD).
+BLEND_CHOICES = {mode: BLEND_MODES[mode] for mode in ("over", "premultiplied", "additive",
+                                                      "multiply")}  # fmt: skip
 
 
 def default_scene():
@@ -52,8 +59,10 @@ def compose(
     decode=False,
     size=(48, 48),
     clear_color=(0.0, 0.0, 0.0, 0.0),
+    mode=None,
+    alpha=None,
 ):
-    """The (H, W, 4) colour buffer of triangles ``order`` blended *over* in that order.
+    """The (H, W, 4) colour buffer of triangles ``order`` blended in that order.
 
     ``rgba`` holds straight-alpha colours. ``srgb``: an 8-bit sRGB framebuffer
     (``color_format="srgb8"``, GL's ``SRGB8_ALPHA8`` with ``GL_FRAMEBUFFER_SRGB``): the colours
@@ -65,23 +74,31 @@ def compose(
     ``srgb`` the buffer then stores those linear numbers unencoded.
     ``premultiplied``: multiply colour by alpha first and blend with (ONE, ONE_MINUS_SRC_ALPHA);
     the result is the buffer as stored, premultiplied.
+    ``mode``: one of :data:`BLEND_CHOICES` (``render``'s ``blend``), instead of
+    ``premultiplied``: "premultiplied" multiplies the colours by alpha first as above;
+    "additive" (ONE, ONE) and "multiply" (DST_COLOR, ZERO) take the colours as they are.
+    ``alpha``: every triangle's alpha replaced by this one (None: the colours' own).
     ``clear_color``: the buffer's RGBA before the first triangle (linear values; black and
     white are the same in either encoding), as ``render``'s.
     """
     colours = np.array(rgba, dtype=np.float64)[list(order)]
+    if alpha is not None:
+        colours[..., 3] = alpha
     if decode:
         colours[..., :3] = srgb_to_linear(colours[..., :3])
-    if premultiplied:
+    if mode is None:
+        mode = "premultiplied" if premultiplied else "over"
+    check_choice("mode", mode, tuple(BLEND_CHOICES))
+    if mode == "premultiplied":
         colours[..., :3] *= colours[..., 3:]
-    mode = "premultiplied" if premultiplied else "over"
     return render(np.asarray(clip)[list(order)], *size, attrs=colours, blend=mode,
                   depth_write=False, clear_color=clear_color,
                   color_format="srgb8" if srgb else "float64").color  # fmt: skip
 
 
 class BlendingExplorer(Shown):
-    """Submission order, premultiplied alpha and sRGB, with the colour buffer beside the sorted
-    back-to-front one.
+    """Submission order, blend state (mode and alpha), premultiplied alpha and sRGB, with the
+    colour buffer beside the sorted back-to-front one.
 
     Parameters
     ----------
@@ -96,7 +113,13 @@ class BlendingExplorer(Shown):
     ----------
     order : list of int
         The current submission order; ``select``, ``earlier``, ``later``, ``sort`` change it.
-    premultiplied, srgb, decode, alpha, white : Checkbox
+    mode : ToggleButtons
+        The blend state, one of :data:`BLEND_CHOICES`: "over" (SRC_ALPHA,
+        ONE_MINUS_SRC_ALPHA), "premultiplied" (the colours multiplied by alpha; ONE,
+        ONE_MINUS_SRC_ALPHA), "additive" (ONE, ONE), "multiply" (DST_COLOR, ZERO).
+    opacity : FloatSlider
+        Every triangle's alpha (the scene's own to start with).
+    srgb, decode, alpha, white : Checkbox
         ``srgb``: an 8-bit sRGB framebuffer, ``color_format="srgb8"`` (colours linear).
         ``decode``: the colours are sRGB codes, decoded to linear first (an sRGB texture's).
         ``alpha``: draw the stored alpha over a checkerboard instead of the RGB as displayed.
@@ -114,6 +137,8 @@ class BlendingExplorer(Shown):
     True
     >>> ex.white.value = True; ex.color[0, 0].tolist()  # a corner no triangle covers
     [1.0, 1.0, 1.0, 1.0]
+    >>> ex.mode.value = "additive"; ex.differ  # additive commutes: the order is irrelevant
+    0
     >>> ex.close()
     """
 
@@ -134,8 +159,16 @@ class BlendingExplorer(Shown):
         self.later = widgets.Button(description="later ↓", layout=widgets.Layout(**whole))
         self.sort = widgets.Button(description="sort back to front",
                                    layout=widgets.Layout(**whole))  # fmt: skip
-        self.premultiplied = widgets.Checkbox(value=False, description="premultiplied",
-                                              indent=False, layout=widgets.Layout(**whole))  # fmt: skip
+        # the blend state: the mode (its factor pair in the status line) and one alpha for
+        # every triangle (review r263 M3: additive and multiply seen not to depend on order)
+        self.mode = widgets.ToggleButtons(options=list(BLEND_CHOICES), value="over",
+                                          layout=widgets.Layout(width="auto"),
+                                          style={"button_width": "auto"})  # fmt: skip
+        alphas = np.unique(self.rgba[..., 3])
+        self.opacity = widgets.FloatSlider(
+            value=float(alphas[0]) if len(alphas) == 1 else 0.6, min=0.05, max=1.0, step=0.05,
+            description="alpha", readout_format=".2f", continuous_update=False,
+            layout=widgets.Layout(width="300px", max_width="100%"))  # fmt: skip
         self.srgb = widgets.Checkbox(value=False, description="sRGB framebuffer", indent=False,
                                      layout=widgets.Layout(**whole))  # fmt: skip
         self.decode = widgets.Checkbox(value=False, description="colours sRGB-encoded (decode)",
@@ -161,12 +194,14 @@ class BlendingExplorer(Shown):
         self.earlier.on_click(lambda _: self._move(-1))
         self.later.on_click(lambda _: self._move(+1))
         self.sort.on_click(lambda _: self._sort())
-        for box in (self.premultiplied, self.srgb, self.decode, self.alpha, self.white):
+        for box in (self.mode, self.opacity, self.srgb, self.decode, self.alpha, self.white):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
-            "Blending: order, premultiplied alpha, sRGB",
+            "Blending: order, blend state, premultiplied alpha, sRGB",
             "The list: the triangles in the order drawn, the first at the top. Move one "
-            "earlier or later: 'over' depends on the order. 'clear to opaque "
+            "earlier or later: 'over' depends on the order. 'blend' picks the blend state "
+            "(its factor pair in the line under the controls), 'alpha' every triangle's "
+            "alpha: additive and multiply give 0 differing pixels in any order. 'clear to opaque "
             "white' clears the buffer to (1, 1, 1, 1), the white of the lesson's figures; "
             "unticked, it is cleared to transparent black (0, 0, 0, 0), into which straight "
             "alpha stores a wrong alpha. The panels show the colours written, as displayed; tick 'stored alpha' "
@@ -179,11 +214,12 @@ class BlendingExplorer(Shown):
         buttons = widgets.VBox([self.earlier, self.later, self.sort],
                                layout=widgets.Layout(align_items="stretch", **column))  # fmt: skip
         boxes = widgets.VBox(
-            [self.premultiplied, self.srgb, self.decode, self.alpha, self.white],
+            [self.srgb, self.decode, self.alpha, self.white],
             layout=widgets.Layout(**column),
         )
         controls = control_row([self.select, buttons, boxes])
-        self.widget = widgets.VBox([title, controls, self.info, self.display.widget])
+        state = control_row([labelled("blend", self.mode), self.opacity])
+        self.widget = widgets.VBox([title, state, controls, self.info, self.display.widget])
 
     def _options(self):
         # the triangles in the order drawn, by their index (the status line's) and colour; no
@@ -202,12 +238,12 @@ class BlendingExplorer(Shown):
 
     def _shown(self) -> dict:
         """How :func:`rgba_shown` draws the buffers under the current checkboxes."""
-        return {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
+        return {"premultiplied": self.mode.value == "premultiplied", "srgb": self.srgb.value,
                 "view": "alpha" if self.alpha.value else "displayed"}  # fmt: skip
 
     def _compute(self) -> None:
         clear = (1.0, 1.0, 1.0, 1.0) if self.white.value else (0.0, 0.0, 0.0, 0.0)
-        opts = {"premultiplied": self.premultiplied.value, "srgb": self.srgb.value,
+        opts = {"mode": self.mode.value, "alpha": self.opacity.value, "srgb": self.srgb.value,
                 "decode": self.decode.value, "size": self.size, "clear_color": clear}  # fmt: skip
         self.color = compose(self.clip, self.rgba, self.order, **opts)
         self.sorted_color = compose(self.clip, self.rgba, self.depth_order, **opts)
@@ -244,14 +280,24 @@ class BlendingExplorer(Shown):
         order = " → ".join(str(t) for t in self.order)
         # name both orders: a lesson may compare other orders of the same triangles (r8)
         back = " → ".join(str(t) for t in self.depth_order)
+        src, dst = BLEND_CHOICES[self.mode.value]
         return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front "
-                f"({back})"
-                f"{' (premultiplied)' if self.premultiplied.value else ''}"
+                f"({back}); blend {self.mode.value!r} = ({src}, {dst}), alpha "
+                f"{self.opacity.value:.2f}{self._mode_note()}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}"
                 f"{' (colours decoded from sRGB)' if self.decode.value else ''}"
                 # name the clear either way: unticked it is black (review r71)
                 f"; cleared to {'opaque white' if self.white.value else 'transparent black'}"
                 f"{self._alpha_note()}")  # fmt: skip
+
+    def _mode_note(self) -> str:
+        """What the status line adds for a mode that ignores alpha, or that leaves [0, 1] on
+        the white clear (additive: every covered pixel shows white there)."""
+        if self.mode.value == "additive":
+            return " (alpha unused" + ("; onto white every sum exceeds 1 and shows white: "
+                                       "untick 'clear to opaque white')" if self.white.value
+                                       else ")")  # fmt: skip
+        return " (alpha unused)" if self.mode.value == "multiply" else ""
 
     def _alpha_note(self) -> str:
         """The status line's word on the stored-alpha view: where the buffer is opaque

@@ -1,0 +1,94 @@
+"""Review r263 (lesson 12b, round 29): the blend state in the explorer (M3), layers grouped
+offscreen, straight against premultiplied (M2), the standards table of the blend rules (M1),
+llvmpipe's drift measured against the exact composite (S1) and the small items."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from notebook_runs import executed, lesson, streams
+
+pytestmark = [pytest.mark.filterwarnings("ignore::DeprecationWarning"), pytest.mark.notebook]
+NB = Path(__file__).resolve().parents[1] / "notebooks" / "12b_blending.ipynb"
+
+
+def _flat(cid: str) -> str:
+    cells = json.loads(NB.read_text())["cells"]
+    return " ".join("".join(next(c for c in cells if c.get("id") == cid)["source"]).split())
+
+
+@pytest.fixture(scope="module")
+def nsb():
+    return lesson("12b_blending")
+
+
+def test_grouped_layers_straight_against_premultiplied(nsb):
+    """M2: B and C composited into a layer cleared to (0, 0, 0, 0), then onto white, then A:
+    premultiplied gives the direct picture (associative, Porter and Duff 1984), straight alpha
+    is off by 0.24 and its layer stores 0.36 where C alone covers (a·a), not 0.6."""
+    text = _flat("groupmd")
+    assert "Porter and Duff, *Compositing Digital Images*, SIGGRAPH 1984" in text
+    assert "**associative**" in text and "alpha 0.6" in text and nsb.disc_alpha == 0.6
+    straight, premult = nsb.grouping[False], nsb.grouping[True]
+    assert round(straight[3], 2) == 0.24 and premult[3] < 1e-15
+    assert round(float(straight[1][nsb.only_c][3]), 2) == 0.36
+    assert round(float(premult[1][nsb.only_c][3]), 2) == 0.6
+    printed = streams(executed("12b_blending").notebook())
+    assert "straight: grouped minus direct, RGB up to 0.24;" in printed
+    assert "the layer's alpha under C alone 0.36 (C's alpha 0.6)" in printed
+    assert "Porter and Duff 1984" in _flat("f26a5112")
+
+
+def test_blend_rules_table(nsb):
+    """M1: ordering, per-sample blending, the sRGB target's linear blending (and GL's enable),
+    fixed-point clamping: GL, Direct3D, Vulkan, llvmpipe, teachraster with their sections."""
+    text = _flat("blendrules")
+    header = "| rule | GL 4.6 | Direct3D 10/11/12 | Vulkan | llvmpipe | teachraster |"
+    assert header in text
+    for rule in ("submission order", "per sample under MSAA", "sRGB target blends in linear",
+                 "fixed-point target clamps"):  # fmt: skip
+        assert rule in text, rule
+    assert "§2.1 *Execution Model*" in text and "*Fixed Order of Pipeline Results*" in text
+    assert "*Additional Multisample Fragment Operations*" in text
+    assert "`GL_FRAMEBUFFER_SRGB` **enabled**" in text and "no enable to forget" in text
+    assert "§17.3.6" in text and "§17.3.7" in text and "§2.3.5.2" in text
+
+
+def test_llvmpipe_drift_against_the_exact_composite(nsb):
+    """S1: the cell prints each target's codes minus the exact composite (float64, clamped per
+    layer, never rounded): teachraster's rounding stays within 0.12 of a code on average, up
+    to 5.1 after 40 additive layers; llvmpipe's +6.81 there is its own."""
+    text = _flat("srgbglmd")
+    assert "**exact composite**" in text and "within 0.12 of a code" in text
+    assert "up to 5.1 codes" in text and "+6.81 codes on average" in text
+    if not nsb.ok:
+        pytest.skip("no OpenGL context")
+    exact = nsb.srgb_exact
+    assert max(abs(v["ours"][0]) for v in exact.values()) <= 0.125
+    assert round(exact[("additive", 40)]["ours"][1], 1) == 5.1
+    assert f"{exact[('additive', 40)]['llvmpipe'][0]:+.2f}" == "+6.81"
+    printed = streams(executed("12b_blending").notebook())
+    assert "ours +0.12 (at most 5.1), llvmpipe +6.81 (at most 11.5)" in printed
+
+
+def test_explorer_blend_state_in_the_lesson(nsb):
+    """M3: the explorer's blend state; additive and multiply give 0 differing pixels, over the
+    600 of its start (the cell prints the three, "over" last: the explorer is left on it)."""
+    assert nsb.mode_differ == {"additive": 0, "multiply": 0, "over": nsb.explorer_differ}
+    printed = streams(executed("12b_blending").notebook())
+    assert f"'additive' 0; 'multiply' 0; 'over' {nsb.explorer_differ}" in printed
+    text = _flat("tryit")
+    assert '**"blend"** and **"alpha"** are the blend state of §1' in text
+    assert "no pixel differs in any order" in text
+
+
+def test_small_items_r263():
+    """S2: the GPU's depth-peeling test stated (a shader compare and discard); S3: the order
+    paragraph split; S4: WBOIT's takeaway first."""
+    assert "bound as a texture, and discards a fragment not behind it" in _flat("oit")
+    cells = json.loads(NB.read_text())["cells"]
+    order = "".join(next(c for c in cells if c.get("id") == "a8d65864")["source"])
+    assert order.count("\n\n") >= 3
+    assert _flat("oit_whymd").startswith("In short: WBOIT is exact only where")
