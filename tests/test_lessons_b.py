@@ -5237,8 +5237,8 @@ def test_10_r247_items():
     assert "where the walk saves most" not in md and "is also where the walk" not in md
     summary = md.split("## Summary")[1]
     # r264 C1: along a row the walk saves none and makes more tests (the ratio, printed)
-    assert (f"{diag:.0f} times fewer tests on the diagonal sliver; on the same sliver along a row"
-            f" it saves none and makes a few more (half-plane ÷ tiled = {row:.2g})") in summary
+    assert (f"{diag:.0f} times fewer tests on the diagonal sliver, more along a row "
+            f"(half-plane ÷ tiled = {row:.2g})") in summary
     assert "none on the same sliver" not in summary
     # C1: the sides, counted by the package and quoted from the counts; no block staircase
     sides = ns.regions.sides
@@ -5438,6 +5438,25 @@ def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
         in shown
     )
     assert 'explain=f"{int(rejected_tiles.sum())} tiles, marked on the grid' in hiz
+
+
+def test_10_r264_f1_a_nearer_clear_rejects_at_once():
+    """Review r264 F1: "Hi-Z can reject only once the faces drawn before cover the whole tile"
+    holds for a clear to the far plane only: a GPU keeps the clear depth per tile, so after
+    glClearDepth(0.5) every block behind 0.5 is rejected at once. The note says so, says that
+    the renderer takes no clear depth (the replay's +∞ is the far-plane case), and the tile-map
+    cell counts the tiles a clear to 0.5 would reject; no forward reference to lesson 11."""
+    ns, printed, shown = _lesson_10_run()
+    note = next(t for t in _lesson_10_sources()[1] if "**Keeping the farthest depth" in t)
+    assert note.startswith("q_hiz.hold()")
+    for said in ("After a clear to the far plane (1.0, the default), Hi-Z can reject a block",
+                 "after `glClearDepth(0.5)` every tile's farthest depth is 0.5 before any face",
+                 "teachraster's renderer takes no clear depth: its buffer starts empty"):  # fmt: skip
+        assert said in shown, said
+    assert "lesson 11, question 4" not in note and "not yet known" not in note
+    every = ns.tile_far.size
+    assert int((ns.cleared_far < 0.7).sum()) == every == 96
+    assert f"cleared to 0.5 instead: {every} of {every} tiles nearer than 0.7" in printed
 
 
 @pytest.mark.notebook
