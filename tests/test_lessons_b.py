@@ -5440,6 +5440,26 @@ def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
     assert 'explain=f"{int(rejected_tiles.sum())} tiles, marked on the grid' in hiz
 
 
+def test_10_r264_m1_the_step_table_walks_a_block_by_additions():
+    """Review r264 M1: §4 said the walker "only adds" (a 4×4 step table per edge) and never
+    showed it. A cell right after that sentence builds each edge's table on the 256-unit grid,
+    walks a 16×16 block by additions alone and prints that they equal direct evaluation."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    says = next(i for i, t in enumerate(text) if "from then on only\n**adds**" in t)
+    cell = text[says + 1]
+    assert cells[says + 1]["cell_type"] == "code" and "step = down * np.arange(4)" in cell
+    assert "walks a 16×16 block by additions alone" in text[says]
+    assert "16×16 block at (row 16, col 16), 3 edges: additions = direct: True" in printed
+    assert ns.all_exact is True
+    # the table printed is E12's: steps of the snapped v1 -> v2, in units² (256 units a pixel)
+    u = np.rint(ns.xy * 256).astype(np.int64)
+    right, down = -(u[1, 1] - u[0, 1]) * 256, (u[1, 0] - u[0, 0]) * 256
+    assert f"right {right:+,}, down {down:+,}" in printed
+    assert "".join(f"{v:14,}" for v in (3 * down, 3 * down + right, 3 * down + 2 * right,
+                                        3 * down + 3 * right)) in printed  # fmt: skip
+
+
 def test_10_r264_f1_a_nearer_clear_rejects_at_once():
     """Review r264 F1: "Hi-Z can reject only once the faces drawn before cover the whole tile"
     holds for a clear to the far plane only: a GPU keeps the clear depth per tile, so after
