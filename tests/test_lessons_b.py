@@ -5237,8 +5237,10 @@ def test_10_r247_items():
     assert "where the walk saves most" not in md and "is also where the walk" not in md
     summary = md.split("## Summary")[1]
     # r264 C1: along a row the walk saves none and makes more tests (the ratio, printed)
-    assert (f"{diag:.0f} times fewer tests on the diagonal sliver, more along a row "
-            f"(half-plane ÷ tiled = {row:.2g})") in summary
+    assert (
+        f"{diag:.0f} times fewer tests on the diagonal sliver, more along a row "
+        f"(half-plane ÷ tiled = {row:.2g})"
+    ) in summary
     assert "none on the same sliver" not in summary
     # C1: the sides, counted by the package and quoted from the counts; no block staircase
     sides = ns.regions.sides
@@ -5458,6 +5460,33 @@ def test_10_r264_m1_the_step_table_walks_a_block_by_additions():
     assert f"right {right:+,}, down {down:+,}" in printed
     assert "".join(f"{v:14,}" for v in (3 * down, 3 * down + right, 3 * down + 2 * right,
                                         3 * down + 3 * right)) in printed  # fmt: skip
+
+
+def test_10_r264_m2_tile_size_and_order_measured_on_the_sphere():
+    """Review r264 M2: "a smaller tile, covered whole sooner, lets Hi-Z reject more" was
+    asserted, never measured, and nothing in §7 could be changed. A cell replays the sphere in
+    three orders (mesh, front to back, back to front) at tiles 4, 8 and 16 (``replay_tiles``;
+    the student changes SPHERE_ORDERS or TILE_SIZES), prints the counts and the stored depths,
+    draws the front-to-back rejections per tile size, and the text quotes the printed counts.
+    A table and a figure, not a widget."""
+    ns, printed, shown = _lesson_10_run()
+    counts = ns.tile_counts
+    assert ns.TILE_SIZES == (4, 8, 16)
+    assert counts["mesh order", 8] == ns.frames["uv_sphere"].trace.hiz.counts  # the replay above
+    for order in ("mesh order", "front to back"):
+        rejected = [counts[order, t]["hiz_rejected"] for t in ns.TILE_SIZES]
+        assert rejected[0] > rejected[1] > rejected[2] > 0, rejected  # smaller rejects more
+        assert " / ".join(f"{n:,}" for n in rejected) in shown
+        for t, n in zip(ns.TILE_SIZES, rejected):
+            stored = -(-320 // t) * -(-240 // t)
+            assert f"{order:15s}{t:4d}px{stored:15,}{n:15,}" in printed
+    assert all(counts["back to front", t]["hiz_rejected"] == 0 for t in ns.TILE_SIZES)
+    assert "back to front, Hi-Z rejects 0 / 0 / 0 at these sizes" in shown
+    shaded = [counts[o, 8]["shaded"] for o in ("front to back", "back to front")]
+    assert shaded[1] > 0.99 * counts["back to front", 8]["fragments"] > 1.9 * shaded[0]
+    md = _lesson_10_sources()[2]
+    assert "is measured on the sphere at the end of this section" in md
+    assert "gains is in the note held under the question above" not in md
 
 
 def test_10_r264_f1_a_nearer_clear_rejects_at_once():
