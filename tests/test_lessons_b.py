@@ -3515,7 +3515,9 @@ def test_10_r109_items():
     # 10-4: the caption's value, rounded, and the integer behind it, quoted as printed
     caption = ns.fill.trace.caption(8)
     px2 = ns.e_units * ns.blocks.px2_per_unit2
-    assert isinstance(ns.e_units, int) and f"E12 = {px2:.0f} at its most inside" in caption
+    assert (
+        isinstance(ns.e_units, int) and f"E12 = {px2:.0f} at its centre" in caption
+    )  # r264 S7: 1x1
     # r247 S1: said in §4's fold on the simulator's grid, not printed in §2 or said in §4
     assert ns.e_exact == f"−{-ns.e_units:,} units², −{-px2:.2f} px²" and "E12 = -81" not in md
     fold = next("".join(c["source"]) for c in cells["cells"]
@@ -5487,6 +5489,29 @@ def test_10_r264_m2_tile_size_and_order_measured_on_the_sphere():
     md = _lesson_10_sources()[2]
     assert "is measured on the sphere at the end of this section" in md
     assert "gains is in the note held under the question above" not in md
+
+
+def test_10_r264_m3_conservative_rasterisation_fig1_and_small_items():
+    """Review r264 M3 (r255 M3): §2 names conservative rasterisation where its corner tests
+    are the conservative ones, with D3D12's tiers, GL_NV_conservative_raster and
+    VK_EXT_conservative_rasterization. FIG1: §1's vertex labels stay inside the Axes, clear of
+    the row tick 0. S1/S7: a rejected 1×1 block's caption says "at its centre". S6: "at least
+    half" of the box, and §3's rule said so that it parses."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    two = md.split("## 2.")[1].split("## 3.")[0]
+    for said in ("**conservative rasterisation**", "*overestimation*", "*underestimation*",
+                 "conservative rasterisation tiers 1–3", "`SV_InnerCoverage`",
+                 "`GL_NV_conservative_raster`", "`VK_EXT_conservative_rasterization`"):  # fmt: skip
+        assert said in two, said
+    corner_fig = next(t for t in code if "plot_block_values(" in t)
+    assert "plot_triangle(ax_img, xy, arrows=False, inside=True)" in corner_fig
+    assert "1×1 block at (row 0, col 2): E12 = -81 at its centre fails: rejected, it is not" in (
+        printed
+    )
+    assert "most inside corner fails: rejected, no pixel" not in printed.split("same coverage")[0]
+    assert "At least half of those centres lie outside the triangle" in md
+    assert "a roughly constant number of tests per covered pixel for each px of edge" in md
 
 
 def test_10_r264_f1_a_nearer_clear_rejects_at_once():
