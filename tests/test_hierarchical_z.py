@@ -158,3 +158,29 @@ def test_builtin_scenes_replay(name):
         c = frame.trace.hiz.counts
         assert c["shaded"] == frame.trace.fragment_passed.sum()
         np.testing.assert_array_equal(frame.trace.hiz.fragment_rejected, every.fragment_rejected)
+
+
+def test_replay_tiles_other_tile_sizes_are_exact_and_8_is_the_trace():
+    """Review r264 M2 (lesson 10 measures the tile size): ``replay_tiles`` replays a traced
+    frame with other tiles. At 8 it is the trace's own replay; at 4 and 16 it rejects only
+    fragments the sequential z-buffer fails, and every block it compares against the tile's
+    farthest depth as that z-buffer had it; it refuses a frame without a one-sample trace."""
+    from teachraster.pipeline.visibility.hierarchical_z import replay_tiles
+
+    clip = get_scene("uv_sphere").clip(W / H)
+    frame = tr.render(clip, W, H, trace=True)
+    same = replay_tiles(frame.trace, HIZ_TILE)
+    assert np.array_equal(same.block_rejected, frame.trace.hiz.block_rejected)
+    assert same.counts == frame.trace.hiz.counts
+    for tile in (4, 16):
+        hiz = replay_tiles(frame.trace, tile)
+        assert hiz.tile == tile and hiz.counts["fragments"] == same.counts["fragments"]
+        passed, farthest = replay(frame, W, H, tile)
+        np.testing.assert_array_equal(hiz.fragment_passed, passed)
+        assert not (hiz.fragment_rejected & passed).any()
+        for b in np.flatnonzero(hiz.block_rejected):
+            key = (int(hiz.block_triangle[b]), int(hiz.block_row[b]) // tile,
+                   int(hiz.block_col[b]) // tile)  # fmt: skip
+            assert hiz.block_nearest[b] >= farthest[key]
+    with pytest.raises(ValueError, match="one-sample"):
+        replay_tiles(tr.render(clip, W, H, trace=True, depth_test=False).trace, 4)

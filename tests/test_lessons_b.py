@@ -3640,7 +3640,9 @@ def test_10_r109_items():
     # 10-4: the caption's value, rounded, and the integer behind it, quoted as printed
     caption = ns.fill.trace.caption(8)
     px2 = ns.e_units * ns.blocks.px2_per_unit2
-    assert isinstance(ns.e_units, int) and f"E12 = {px2:.0f} at its most inside" in caption
+    assert (
+        isinstance(ns.e_units, int) and f"E12 = {px2:.0f} at its centre" in caption
+    )  # r264 S7: 1x1
     # r247 S1: said in §4's fold on the simulator's grid, not printed in §2 or said in §4
     assert ns.e_exact == f"−{-ns.e_units:,} units², −{-px2:.2f} px²" and "E12 = -81" not in md
     fold = next("".join(c["source"]) for c in cells["cells"]
@@ -5362,7 +5364,12 @@ def test_10_r247_items():
     assert f"half-plane ÷ tiled = {row:.2g}" in printed and f"{box_row:.3g} a covered" in printed
     assert "where the walk saves most" not in md and "is also where the walk" not in md
     summary = md.split("## Summary")[1]
-    assert f"{diag:.0f} times fewer tests on the diagonal sliver, none on the same" in summary
+    # r264 C1: along a row the walk saves none and makes more tests (the ratio, printed)
+    assert (
+        f"{diag:.0f} times fewer tests on the diagonal sliver, more along a row "
+        f"(half-plane ÷ tiled = {row:.2g})"
+    ) in summary
+    assert "none on the same sliver" not in summary
     # C1: the sides, counted by the package and quoted from the counts; no block staircase
     sides = ns.regions.sides
     assert sum(sides.values()) > 1000 and sides["other"] == 0
@@ -5561,6 +5568,95 @@ def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
         in shown
     )
     assert 'explain=f"{int(rejected_tiles.sum())} tiles, marked on the grid' in hiz
+
+
+def test_10_r264_m1_the_step_table_walks_a_block_by_additions():
+    """Review r264 M1: §4 said the walker "only adds" (a 4×4 step table per edge) and never
+    showed it. A cell right after that sentence builds each edge's table on the 256-unit grid,
+    walks a 16×16 block by additions alone and prints that they equal direct evaluation."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    says = next(i for i, t in enumerate(text) if "from then on only\n**adds**" in t)
+    cell = text[says + 1]
+    assert cells[says + 1]["cell_type"] == "code" and "step = down * np.arange(4)" in cell
+    assert "walks a 16×16 block by additions alone" in text[says]
+    assert "16×16 block at (row 16, col 16), 3 edges: additions = direct: True" in printed
+    assert ns.all_exact is True
+    # the table printed is E12's: steps of the snapped v1 -> v2, in units² (256 units a pixel)
+    u = np.rint(ns.xy * 256).astype(np.int64)
+    right, down = -(u[1, 1] - u[0, 1]) * 256, (u[1, 0] - u[0, 0]) * 256
+    assert f"right {right:+,}, down {down:+,}" in printed
+    assert "".join(f"{v:14,}" for v in (3 * down, 3 * down + right, 3 * down + 2 * right,
+                                        3 * down + 3 * right)) in printed  # fmt: skip
+
+
+def test_10_r264_m2_tile_size_and_order_measured_on_the_sphere():
+    """Review r264 M2: "a smaller tile, covered whole sooner, lets Hi-Z reject more" was
+    asserted, never measured, and nothing in §7 could be changed. A cell replays the sphere in
+    three orders (mesh, front to back, back to front) at tiles 4, 8 and 16 (``replay_tiles``;
+    the student changes SPHERE_ORDERS or TILE_SIZES), prints the counts and the stored depths,
+    draws the front-to-back rejections per tile size, and the text quotes the printed counts.
+    A table and a figure, not a widget."""
+    ns, printed, shown = _lesson_10_run()
+    counts = ns.tile_counts
+    assert ns.TILE_SIZES == (4, 8, 16)
+    assert counts["mesh order", 8] == ns.frames["uv_sphere"].trace.hiz.counts  # the replay above
+    for order in ("mesh order", "front to back"):
+        rejected = [counts[order, t]["hiz_rejected"] for t in ns.TILE_SIZES]
+        assert rejected[0] > rejected[1] > rejected[2] > 0, rejected  # smaller rejects more
+        assert " / ".join(f"{n:,}" for n in rejected) in shown
+        for t, n in zip(ns.TILE_SIZES, rejected):
+            stored = -(-320 // t) * -(-240 // t)
+            assert f"{order:15s}{t:4d}px{stored:15,}{n:15,}" in printed
+    assert all(counts["back to front", t]["hiz_rejected"] == 0 for t in ns.TILE_SIZES)
+    assert "back to front, Hi-Z rejects 0 / 0 / 0 at these sizes" in shown
+    shaded = [counts[o, 8]["shaded"] for o in ("front to back", "back to front")]
+    assert shaded[1] > 0.99 * counts["back to front", 8]["fragments"] > 1.9 * shaded[0]
+    md = _lesson_10_sources()[2]
+    assert "is measured on the sphere at the end of this section" in md
+    assert "gains is in the note held under the question above" not in md
+
+
+def test_10_r264_m3_conservative_rasterisation_fig1_and_small_items():
+    """Review r264 M3 (r255 M3): §2 names conservative rasterisation where its corner tests
+    are the conservative ones, with D3D12's tiers, GL_NV_conservative_raster and
+    VK_EXT_conservative_rasterization. FIG1: §1's vertex labels stay inside the Axes, clear of
+    the row tick 0. S1/S7: a rejected 1×1 block's caption says "at its centre". S6: "at least
+    half" of the box, and §3's rule said so that it parses."""
+    ns, printed, shown = _lesson_10_run()
+    cells, text, md, code = _lesson_10_sources()
+    two = md.split("## 2.")[1].split("## 3.")[0]
+    for said in ("**conservative rasterisation**", "*overestimation*", "*underestimation*",
+                 "conservative rasterisation tiers 1–3", "`SV_InnerCoverage`",
+                 "`GL_NV_conservative_raster`", "`VK_EXT_conservative_rasterization`"):  # fmt: skip
+        assert said in two, said
+    corner_fig = next(t for t in code if "plot_block_values(" in t)
+    assert "plot_triangle(ax_img, xy, arrows=False, inside=True)" in corner_fig
+    assert "1×1 block at (row 0, col 2): E12 = -81 at its centre fails: rejected, it is not" in (
+        printed
+    )
+    assert "most inside corner fails: rejected, no pixel" not in printed.split("same coverage")[0]
+    assert "At least half of those centres lie outside the triangle" in md
+    assert "a roughly constant number of tests per covered pixel for each px of edge" in md
+
+
+def test_10_r264_f1_a_nearer_clear_rejects_at_once():
+    """Review r264 F1: "Hi-Z can reject only once the faces drawn before cover the whole tile"
+    holds for a clear to the far plane only: a GPU keeps the clear depth per tile, so after
+    glClearDepth(0.5) every block behind 0.5 is rejected at once. The note says so, says that
+    the renderer takes no clear depth (the replay's +∞ is the far-plane case), and the tile-map
+    cell counts the tiles a clear to 0.5 would reject; no forward reference to lesson 11."""
+    ns, printed, shown = _lesson_10_run()
+    note = next(t for t in _lesson_10_sources()[1] if "**Keeping the farthest depth" in t)
+    assert note.startswith("q_hiz.hold()")
+    for said in ("After a clear to the far plane (1.0, the default), Hi-Z can reject a block",
+                 "after `glClearDepth(0.5)` every tile's farthest depth is 0.5 before any face",
+                 "teachraster's renderer takes no clear depth: its buffer starts empty"):  # fmt: skip
+        assert said in shown, said
+    assert "lesson 11, question 4" not in note and "not yet known" not in note
+    every = ns.tile_far.size
+    assert int((ns.cleared_far < 0.7).sum()) == every == 96
+    assert f"cleared to 0.5 instead: {every} of {every} tiles nearer than 0.7" in printed
 
 
 @pytest.mark.notebook

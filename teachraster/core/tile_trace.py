@@ -272,9 +272,11 @@ class TileTrace:
         name = [edge_name(a, c) for a, c in edges]
         if kind == REJECTED:
             k = int(self.rejected_by[b])
+            # a 1x1 block has one centre: its test is the pixel test (review r264 S7)
+            at = "its centre" if s == 1 else "its most inside corner"
             why = (
-                f"{name[k]} = {value_text(self.e_max[b, k] * self.px2_per_unit2)} at its most inside "
-                f"corner fails: rejected, no pixel of it is covered"
+                f"{name[k]} = {value_text(self.e_max[b, k] * self.px2_per_unit2)} at {at} "
+                f"fails: rejected, {'it is not' if s == 1 else 'no pixel of it is'} covered"
             )
         elif kind == ACCEPTED:
             low = ", ".join(

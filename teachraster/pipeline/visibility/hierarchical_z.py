@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -162,6 +163,27 @@ def replay_stage(frags: Fragments, window: np.ndarray, visible, width: int, heig
     rejected[idx] = ~passes_depth_test(nearest[idx], farthest[idx])
     return HiZResult(tile, block_tri, b_row, b_col, tested, rejected, nearest, farthest,
                      block, arrivals.passed)  # fmt: skip
+
+
+def replay_tiles(trace, tile: int) -> HiZResult:
+    """The replay of a traced one-sample render (its ``RenderTrace``) again, with Hi-Z tiles
+    of ``tile`` pixels a side: what a GPU whose tiles have that size would reject, for the
+    tile size's trade-off (lesson 10). ``tile`` = :data:`HIZ_TILE` gives ``trace.hiz``.
+
+    The fragments, their stored depths and depth masks are the trace's own; only the tiles
+    change. Raises ValueError for a render without the depth test or with MSAA (its trace
+    keeps no single-sample fragments).
+    """
+    debug = getattr(trace, "debug", None)
+    if trace.hiz is None or debug is None or debug.fragments is None:
+        raise ValueError("replay_tiles needs a one-sample tr.render(..., trace=True) with the "
+                         "depth test on")  # fmt: skip
+    a, frags = debug.inputs, debug.fragments
+    writes = None if debug.writes is None else debug.writes[frags.tri]  # per fragment
+    visible = SimpleNamespace(depth_test=True, pixel=debug.pixel, depth=trace.fragment_depth,
+                              writes=writes)  # fmt: skip
+    return replay_stage(frags, trace.window, visible, a.width, a.height, a.depth_format,
+                        tile=int(tile))  # fmt: skip
 
 
 def _unique_runs(key: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
