@@ -100,9 +100,12 @@ def test_keys_then_a_filter_end_on_the_kernels_full_picture(lab, page, tmp_path)
     assert not page.errors, page.errors
 
 
+#: 64 x 48 pixels, not 160 x 120: the kernel draws the full picture at each of the 90 tilts
+#: ahead (5.6 s of CPU at the lesson's size, 1.9 s at this one), and which picture the page
+#: shows after the drag is told as well by a small one
 DRAG_CELLS = [
     "import numpy as np\nfrom teachraster.widgets import FilterExplorer",
-    "explorer = FilterExplorer(tilt=40, filter='trilinear', repeats=6)\n"
+    "explorer = FilterExplorer(64, 48, tilt=40, filter='trilinear', repeats=6)\n"
     "explorer.widget.add_class('t-fdrag')\nexplorer",
 ]
 
@@ -142,7 +145,7 @@ def test_a_drag_ends_on_the_full_picture_drawn_ahead_and_the_kernel_sends_none(l
     saved = tmp_path / "fresh.npy"
     run_new_cell(
         page,
-        "fresh = FilterExplorer(tilt=70, filter='trilinear', repeats=6)\n"
+        "fresh = FilterExplorer(64, 48, tilt=70, filter='trilinear', repeats=6)\n"
         f"np.save({str(saved)!r}.replace('.npy', '_seq.npy'), explorer.display.widget._last)\n"
         f"np.save({str(saved)!r}.replace('.npy', '_state.npy'), "
         "np.array((explorer.tilt.value, explorer.rms == fresh.rms), dtype=object))\n"

@@ -26,11 +26,18 @@ pytestmark = [
 ]
 
 NAME = "plane_drag.ipynb"
+#: An 8 x 7 grid, not the lesson's 16 x 14 (the figure is as large on the page): every slider
+#: position of the nine is drawn ahead in the kernel and decoded in the page, and the small
+#: grid has 279 of them, not 459 (the file alone: 75.6 -> 67.2 s of CPU, measured).
+#: v1 at (2, 1), as the lesson's.
 CELLS = [
     "import json\nimport numpy as np\nimport teachraster as tr\n"
     "from teachraster.widgets.plane_explorer import PlaneExplorer",
-    "ex = PlaneExplorer()\nex.widget.add_class('t-plane')\nex",
+    "ex = PlaneExplorer(((2.0, 1.0), (7.5, 3.0), (3.0, 6.5)), width=8, height=7)\n"
+    "ex.widget.add_class('t-plane')\nex",
 ]
+#: the sliders' positions, quarter pixels: 3 x (8 * 4 + 1) (x), 3 x (7 * 4 + 1) (y), 3 x 31 (f)
+ALL_POSITIONS = 3 * 33 + 3 * 29 + 3 * 31
 FRAMES = "() => Number(document.querySelector('.t-plane .tr-drag img').dataset.frames || 0)"
 #: the readout beside a slider of the explorer, by its name
 READOUT = """name => [...document.querySelectorAll('.t-plane .tr-live-slider')]
@@ -95,7 +102,7 @@ def test_a_vertex_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
     )
     got = _kernel(page, "[ex.x[0].value, ex.y[0].value, ex.display.widget.handles[0], "
                         "bool(np.array_equal(~np.isnan(ex.values), "
-                        "tr.rasterize(tr.Triangle(ex.xy), 16, 14).coverage))]")  # fmt: skip
+                        "tr.rasterize(tr.Triangle(ex.xy), ex.width, ex.height).coverage))]")  # fmt: skip
     # the sliders, the page's handle and the fill agree on where v1 was let go; that is
     # where the pointer was, give or take a layout shift under load (at load 25 the picture
     # moved between the last move and the release: let go at y 4.75, on the quarter grid)
@@ -181,8 +188,7 @@ def test_every_slider_is_drawn_ahead_and_f2_is_dragged_in_the_page(lab, page, tm
     img = page.locator(".t-plane .tr-drag img").first
     img.wait_for(timeout=120_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
-    # all nine sliders' positions: 3 x 65 (x), 3 x 57 (y), 3 x 31 (f)
-    page.wait_for_function(f"() => ({AHEAD})() >= {3 * 65 + 3 * 57 + 3 * 31}", timeout=300_000)
+    page.wait_for_function(f"() => ({AHEAD})() >= {ALL_POSITIONS}", timeout=300_000)
     before = _kernel(page, "[ex.f[1].messages, ex.display.draws, ex.display.widget._frame]")
     page.locator(F2).first.scroll_into_view_if_needed()
     page.evaluate(DRAG_F2, F2)
@@ -198,4 +204,4 @@ def test_every_slider_is_drawn_ahead_and_f2_is_dragged_in_the_page(lab, page, tm
     assert _kernel(page, "ex.f[1].value") == 1.2
     _painted_as_sent(page, tmp_path)
     assert _kernel(page, "bool(np.array_equal(ex.display.widget._last, PlaneExplorer("
-                         "ex.xy, ex.fvals).display.widget._last))")  # fmt: skip
+                         "ex.xy, ex.fvals, ex.width, ex.height).display.widget._last))")  # fmt: skip
