@@ -541,3 +541,18 @@ def test_r267_the_nearest_vertex_alone_is_not_told_the_uncut_box():
     report = ex.check("hiz_rejects", fn)
     assert _kinds(report) == {"vertex"}, str(report)
     assert "uncut" not in report.failures[0].explanation
+
+
+def test_r267_m2_a_standards_table_with_lessons_02_and_10s_sections():
+    task = "".join(json.loads(NOTEBOOK.read_text())["cells"][5]["source"])
+    rows = {line.split("|")[1].strip(): line for line in task.splitlines() if line.startswith("| ")}
+    assert {"OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"} <= set(rows)
+    lessons = "".join(
+        "".join(c["source"])
+        for f in (ROOT / "notebooks/02_half_planes.ipynb", LESSON_10)
+        for c in json.loads(f.read_text())["cells"]
+    )
+    # every section the table quotes is one lessons 02 and 10 give
+    for section in ("§14.6.1", "§3.4.2.1 *Top-Left Rule*", "*Basic Polygon Rasterization*",
+                    "§14.9, *Early Per-Fragment Tests*", "§16.12.2", "*Fragment Operations*"):  # fmt: skip
+        assert section in task and section in lessons, section
