@@ -464,3 +464,95 @@ def test_m1_the_notebook_still_has_two_tasks_and_both_solutions_pass():
     assert [i for i in ids if i and i.endswith("_check")] == ["classify_block_check", "hiz_rejects_check"]  # fmt: skip
     assert ex.check("classify_block", _variant(), budget=120).passed
     assert ex.check("hiz_rejects", _hiz_variant(), budget=120).passed
+
+
+# -- r267: the five half-named slips, each named by its cause first -------------------------------
+
+#: (the student, the kind, words the first explanation holds), 8.1
+R267_SLIPS = {
+    # cell 3's solution without its cast: np.rint returns float64
+    "units held in float64": (
+        _variant((".astype(np.int64)", "")), "units held in float64",
+        "your units are float64 numbers: np.rint rounds to whole numbers but returns float64"),
+    "reject only when every edge fails": (
+        _variant(("rejected = np.zeros(px.shape, dtype=bool)",
+                  "rejected = np.ones(px.shape, dtype=bool)"),
+                 ("rejected |= e0 + R < 0", "rejected &= e0 + R < 0")),
+        "reject only when every edge fails",
+        "you rejected a block only when every edge fails its reject test"),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("words", ["first_words", "full_words"])
+@pytest.mark.parametrize("slip", list(R267_SLIPS))
+def test_r267_81_half_named_slips_are_named_by_their_cause_first(slip, words, request):
+    request.getfixturevalue(words)
+    fn, kind, said = R267_SLIPS[slip]
+    with np.errstate(all="ignore"):
+        report = ex.check("classify_block", fn, budget=120)
+    assert not report.passed and _kinds(report) == {kind}, str(report)
+    first = report.failures[0].explanation
+    assert re.search(r"yours says (rejected|accepted|partial): " + re.escape(said), first), first
+
+
+def test_r267_float64_pixels_are_not_told_float64_units():
+    """float64 pixels give the very answers of float64 units: only np.rint tells them apart."""
+    report = ex.check("classify_block", float_pixels(), budget=120)
+    assert "units held in float64" not in _kinds(report)
+    assert "float64 pixels" in _kinds(report)
+
+
+_HIZ_BOX = ("c_lo = max(col0, np.ceil(min(x1, x2, x3) - 0.5))", "c_lo = np.ceil(min(x1, x2, x3) - 0.5)")  # fmt: skip
+#: (the student, the kind, words the first explanation holds), 8.2
+R267_HIZ_SLIPS = {
+    "box not cut to the tile": (
+        _hiz_variant(
+            _HIZ_BOX,
+            ("c_hi = min(col0 + size - 1, np.floor(max(x1, x2, x3) - 0.5))",
+             "c_hi = np.floor(max(x1, x2, x3) - 0.5)"),
+            ("r_lo = max(row0, np.ceil(min(y1, y2, y3) - 0.5))", "r_lo = np.ceil(min(y1, y2, y3) - 0.5)"),
+            ("r_hi = min(row0 + size - 1, np.floor(max(y1, y2, y3) - 0.5))",
+             "r_hi = np.floor(max(y1, y2, y3) - 0.5)")),
+        "box uncut, whole box empty", "you took the extreme centres of the whole bounding box, "
+        "not cut to the tile"),
+    "dz/dx and dz/dy swapped": (
+        _hiz_variant(("corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)",
+                      "corners = z1 + b * (xs[:, None] - x1) + a * (ys[None, :] - y1)")),
+        "gradients swapped", "your plane's dz/dx and dz/dy are exchanged"),
+    "the plane at the first centre only": (
+        _hiz_variant(("corners.min()", "corners[0, 0]")),
+        "first centre only", "you took the plane at one centre only"),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize("words", ["first_words", "full_words"])
+@pytest.mark.parametrize("slip", list(R267_HIZ_SLIPS))
+def test_r267_82_half_named_slips_are_named_by_their_cause_first(slip, words, request):
+    request.getfixturevalue(words)
+    fn, kind, said = R267_HIZ_SLIPS[slip]
+    report = ex.check("hiz_rejects", fn)
+    assert not report.passed and _kinds(report) == {kind}, str(report)
+    first = report.failures[0].explanation
+    assert re.search(r"you (rejected|kept) it: " + re.escape(said), first), first
+
+
+def test_r267_the_nearest_vertex_alone_is_not_told_the_uncut_box():
+    fn = _hiz_variant(("nearest = max(corners.min(), min(z1, z2, z3))", "nearest = min(z1, z2, z3)"))  # fmt: skip
+    report = ex.check("hiz_rejects", fn)
+    assert _kinds(report) == {"vertex"}, str(report)
+    assert "uncut" not in report.failures[0].explanation
+
+
+def test_r267_m2_a_standards_table_with_lessons_02_and_10s_sections():
+    task = "".join(json.loads(NOTEBOOK.read_text())["cells"][5]["source"])
+    rows = {line.split("|")[1].strip(): line for line in task.splitlines() if line.startswith("| ")}
+    assert {"OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"} <= set(rows)
+    lessons = "".join(
+        "".join(c["source"])
+        for f in (ROOT / "notebooks/02_half_planes.ipynb", LESSON_10)
+        for c in json.loads(f.read_text())["cells"]
+    )
+    # every section the table quotes is one lessons 02 and 10 give
+    for section in ("§14.6.1", "§3.4.2.1 *Top-Left Rule*", "*Basic Polygon Rasterization*",
+                    "§14.9, *Early Per-Fragment Tests*", "§16.12.2", "*Fragment Operations*"):  # fmt: skip
+        assert section in task and section in lessons, section

@@ -66,14 +66,17 @@ def plane_at(xyz: np.ndarray, rows, cols, clamp: bool = True) -> np.ndarray:
     return _bare_plane(xyz, rows, cols)
 
 
-def _bare_plane(xyz, rows, cols, at: float = 0.5, signs=(1, 1)):
+def _bare_plane(xyz, rows, cols, at: float = 0.5, signs=(1, 1), swapped: bool = False):
     """The plane through the three vertices at (cols + ``at``, rows + ``at``), the pixel
     centres by default, in the arrays' own precision; ``signs`` multiply its gradient's
-    components (a student's slip in solving for it, r198 B)."""
+    components (a student's slip in solving for it, r198 B); ``swapped``: dz/dx and dz/dy
+    exchanged (r267 half-named 4)."""
     (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = xyz
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
     a = signs[0] * ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
     b = signs[1] * ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+    if swapped:
+        a, b = b, a
     half = np.asarray(at, dtype=np.asarray(xyz).dtype)
     return z1 + a * (cols + half - x1) + b * (rows + half - y1)
 
@@ -656,6 +659,11 @@ def _read_slips(xyz, row0, col0, size, buffer, box, near) -> dict[str, bool]:
             "plane at integer points": bool(_slipped_bound(xyz, box, at=0.0) >= far),
             "dz/dx sign": bool(_slipped_bound(xyz, box, signs=(-1, 1)) >= far),
             "dz/dy sign": bool(_slipped_bound(xyz, box, signs=(1, -1)) >= far),
+            # r267 half-named 3-5: the box not cut to the tile, an empty box judged on the
+            # whole box; a and b exchanged; the plane at the first centre only (8.1's E₀)
+            "box uncut, whole box empty": bool(_uncut_bound(xyz) >= far),
+            "gradients swapped": bool(_slipped_bound(xyz, box, swapped=True) >= far),
+            "first centre only": bool(_slipped_bound(xyz, box, first=True) >= far),
         }
 
 
@@ -743,6 +751,18 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     return _bound_at(xyz, np.array([r0, r0, r1, r1]), np.array([c0, c1, c0, c1]))
 
 
+def _uncut_bound(xyz) -> float:
+    """r267 half-named 3: the plane's minimum at the extreme centres of the whole bounding box,
+    not cut to the tile (+inf only where the box holds no pixel centre at all), no nearer than
+    the nearest vertex."""
+    xy = np.asarray(xyz, dtype=float)[:, :2]
+    lo, hi = np.ceil(xy.min(axis=0) - 0.5), np.floor(xy.max(axis=0) - 0.5)
+    if (lo > hi).any():
+        return np.inf
+    rows, cols = np.array([lo[1], lo[1], hi[1], hi[1]]), np.array([lo[0], hi[0], lo[0], hi[0]])
+    return _bound_at(xyz, rows, cols)
+
+
 def _vertex_in_tile_bound(xyz, row0, col0, size, bare: float, open_high=False) -> float:
     """The plane's minimum over the box's centres, no nearer than the nearest vertex *inside
     the tile* (the bare plane where none is; ``open_high``: the tile without its right and
@@ -764,13 +784,14 @@ def _box_buffer_far(xyz, row0, col0, size, buffer) -> float:
     )
 
 
-def _slipped_bound(xyz, box, at: float = 0.5, signs=(1, 1)) -> float:
+def _slipped_bound(xyz, box, at: float = 0.5, signs=(1, 1), swapped=False, first=False) -> float:
     """The task's bound over the box's extreme centres (+inf: none) with the plane slipped
-    (:func:`_bare_plane`'s ``at`` and ``signs``), no nearer than the nearest vertex."""
+    (:func:`_bare_plane`'s ``at``, ``signs`` and ``swapped``), no nearer than the nearest
+    vertex; ``first``: at the rectangle's first centre only (r267 half-named 5)."""
     if box is None:
         return np.inf
-    rows, cols = (np.asarray(v) for v in box)
-    low = float(_bare_plane(np.asarray(xyz, dtype=float), rows, cols, at, signs).min())
+    rows, cols = (np.asarray(v)[:1] if first else np.asarray(v) for v in box)
+    low = float(_bare_plane(np.asarray(xyz, dtype=float), rows, cols, at, signs, swapped).min())
     return max(low, float(np.asarray(xyz, dtype=float)[:, 2].min()))
 
 
@@ -789,6 +810,61 @@ def _sign_words(axis: str, k: int):
         )
 
     return words
+
+
+def _uncut_words(xyz, row0, col0, size) -> str:
+    """r267 half-named 3: the whole box's extreme centres, not cut to the tile."""
+    xyz = np.asarray(xyz, dtype=float)
+    lo, hi = np.ceil(xyz[:, :2].min(axis=0) - 0.5), np.floor(xyz[:, :2].max(axis=0) - 0.5)
+    lo, hi = lo.astype(int) + 0, hi.astype(int) + 0  # (no "-0")
+    spans = (f"the whole box's centres run over columns {lo[0]} to {hi[0]} and rows "
+             f"{lo[1]} to {hi[1]}, but this tile holds columns {col0} to "
+             f"{col0 + size - 1} and rows {row0} to {row0 + size - 1}")  # fmt: skip
+    cut = ("; cut the box to the tile: its columns max(col0, ⌈xmin − ½⌉) … "
+           "min(col0 + size − 1, ⌊xmax − ½⌋), its rows alike")  # fmt: skip
+    if _box_corners(xyz, row0, col0, size) is None:
+        return (f"you took the whole bounding box, not cut to the tile: {spans}, so none of "
+                "the box's centres lies in this tile and no fragment of the triangle can be "
+                f"here (reject the block), yet your bound is taken outside it{cut}")  # fmt: skip
+    rows = np.array([lo[1], lo[1], hi[1], hi[1]])
+    cols = np.array([lo[0], hi[0], lo[0], hi[0]])
+    k = int(np.argmin(_bare_plane(xyz, rows, cols)))
+    return (f"you took the extreme centres of the whole bounding box, not cut to the tile: "
+            f"{spans}; over the whole box the plane is nearest at ({num(cols[k] + 0.5)}, "
+            f"{num(rows[k] + 0.5)}), outside this tile, so your bound falls to "
+            f"{num(_uncut_bound(xyz))}, where no fragment in this tile is that near (a safe "
+            f"bound, but looser: it keeps blocks Hi-Z could reject){cut}")  # fmt: skip
+
+
+def _swapped_words(xyz) -> str:
+    """r267 half-named 4: dz/dx and dz/dy exchanged: where that plane misses the vertices."""
+    xyz = np.asarray(xyz, dtype=float)
+    z = _bare_plane(xyz, xyz[:, 1] - 0.5, xyz[:, 0] - 0.5, swapped=True)
+    j = int(np.argmax(np.abs(z - xyz[:, 2])))
+    return (
+        "your plane's dz/dx and dz/dy are exchanged (a and b swapped: a multiplies x − x1, b "
+        f"multiplies y − y1): that plane gives {num(float(z[j]))} at v{j + 1}, whose depth is "
+        f"{num(float(xyz[j, 2]))}; the plane passes through all three vertices: check your a "
+        "and b against them"
+    )
+
+
+def _first_centre_words(xyz, row0, col0, size) -> str:
+    """r267 half-named 5: the plane at the first centre of the tile cut to the box only."""
+    xyz = np.asarray(xyz, dtype=float)
+    rows, cols = _box_corners(xyz, row0, col0, size)
+    bare = _bare_plane(xyz, rows, cols)
+    k = int(np.argmin(bare))
+    slope = _bare_plane(xyz, np.array([0.0, 0.0, 1.0]), np.array([0.0, 1.0, 0.0]))
+    return (
+        f"you took the plane at one centre only, ({num(cols[0] + 0.5)}, {num(rows[0] + 0.5)}), "
+        "the first of the tile's centres inside the box (as 8.1's E₀): that is the plane's "
+        "minimum only where it grows right and down, and here dz/dx = "
+        f"{num(float(slope[1] - slope[0]))}, dz/dy = {num(float(slope[2] - slope[0]))}: over "
+        f"the rectangle of centres it is nearest at ({num(cols[k] + 0.5)}, {num(rows[k] + 0.5)}), "
+        f"{num(float(bare[k]))} (which of its four extreme centres is that, for each sign of "
+        "the slopes?)"
+    )
 
 
 def _integer_bound(xyz, row0, col0, size) -> float:
@@ -899,6 +975,10 @@ MISTAKES = {
     "box uncut": "you took the extreme centres of the whole bounding box, not cut to the tile: "
     "here the plane is nearest at centres of the box outside this tile (a safe bound, but "
     "looser: it keeps blocks Hi-Z could reject); which of the box's centres lie in this tile?",
+    # r267 half-named 3-5 (their words, :func:`_uncut_words` …, follow the table)
+    "box uncut, whole box empty": lambda a, e, g: _uncut_words(*a[:4]),
+    "gradients swapped": lambda a, e, g: _swapped_words(a[0]),
+    "first centre only": lambda a, e, g: _first_centre_words(*a[:4]),
     "box in x only": "you cut the tile to the box in x only: your rows run over the whole "
     "tile, and here the plane is nearest in rows above or below the box, where no fragment "
     "lies (a safe bound, but looser); cut the rows to the box too",
@@ -960,9 +1040,9 @@ MISTAKES = {
     "tile middle": "you took the plane at the tile's middle: that is its mean over the tile, "
     "and fragments elsewhere in the tile lie nearer: the block is hidden only if even its "
     "nearest fragment is (where in the tile is the plane nearest?)",
-    "vertex": "you compared the triangle's nearest vertex (or a bound never above it, such "
-    "as the plane at the corners of the whole, uncut bounding box: over the box the plane "
-    "reaches below every vertex): in this tile its depth plane is "
+    # r267 half-named 3: the whole box, uncut, has words of its own now (it was said here)
+    "vertex": "you compared the triangle's nearest vertex (or a bound never above it): in "
+    "this tile its depth plane is "
     "farther than that vertex; evaluate the plane at the extreme centres of the tile's part "
     "inside the triangle's bounding box (the "
     "vertex alone is a safe bound, but the larger of the two bounds is asked: the vertex "
@@ -1510,6 +1590,10 @@ def _whole_triangle(ax, xyz, row0, col0, size) -> list:
 #: hints until two different answers have failed (r64 08-3: every first failure's header gave
 #: the extreme centres and the nearest one; :attr:`.exercise.Exercise.hints`).
 HIZ_HINTS = (
+    # r267 half-named 3: the cause is said on the first try, the cut itself asked
+    ("; cut the box to the tile: its columns max(col0, ⌈xmin − ½⌉) … min(col0 + size − 1, "
+     "⌊xmax − ½⌋), its rows alike", "; cut the box to the tile: which of its centres lie in "
+     "this tile?"),
     # r122 N8-2: "the nearest depth the triangle can have" named the bound, which may lie
     # nearer than any fragment of the triangle in the tile
     # r162 C.1: the bound's value is the task's answer on this case: not printed until two

@@ -194,7 +194,8 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     the first centre: llvmpipe's cautious reject offset, r214 item 3). ``logic``
     "inside" rejects a block whose four extreme points all lie outside the triangle and
     accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
-    accepts a block every edge's maximising corner passes. Edge functions in integer units of
+    accepts a block every edge's maximising corner passes; "every edge rejects" rejects a block
+    only when all three edges fail their reject test (``&=`` for ``|=``, r267). Edge functions in integer units of
     the package's grid (512 a pixel: vertices on the 1/256 grid and points on the 1/2 grid are
     whole numbers of them), exact at any size (r248 F1: in float64 pixels a slip with no
     effect on a far float64 tie was named there, for float64's rounding).
@@ -230,6 +231,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         tie, accept_tie = ("left-top" if t == "top-left" else t for t in (tie, accept_tie))
     rejected = np.zeros(px.shape, bool)
     accepted = np.ones(px.shape, bool)
+    every_fails = np.ones(px.shape, bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
         e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
@@ -238,7 +240,10 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
             r2, t2 = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d + unit)
             r, t = (r2, t) if longer == "reject" else (r, t2)
         rejected |= ~_passes(e0 + r, tie, setup, k, b - a)
+        every_fails &= ~_passes(e0 + r, tie, setup, k, b - a)
         accepted &= _passes(e0 + t, accept_tie, setup, k, b - a)
+    if logic == "every edge rejects":  # r267 half-named 2: ``rejected &=`` for ``|=``
+        rejected = every_fails
     if logic == "accept by the best corner":
         accepted = ~rejected
     elif logic in SIGN_SLIPS:  # r162: the tests' own comparison slipped, ≤ or >
@@ -909,6 +914,72 @@ def _bias_lost_words(args, expected, got) -> str:
 BIAS_LOST = Mistake("bias lost to rounding", _bias_lost_words, fits=_bias_lost, only_whole=True)
 
 
+def _float_units_fits(args, expected, got) -> bool | None:
+    """Does the answer differ only where float64 rounds a count in units: a tie's bias lost
+    (:func:`_bias_lost`) or E₀ itself rounded (:func:`.block_arithmetic.rounded_in_float64`)?"""
+    from .block_arithmetic import rounded_in_float64
+
+    lost = _bias_lost(args, expected, got)
+    return None if lost is None else bool(lost or rounded_in_float64(args, expected, got))
+
+
+def _float_units_words(rounds: str):
+    """r267 half-named 1: integer units held in float64 (``np.rint`` without its cast)."""
+
+    def words(args, expected, got) -> str:
+        from .block_arithmetic import float64_slip, sci
+
+        _, (xy, bx, by, size), e, g, _ = first_block(args, expected, got)
+        slip = float64_slip(xy, bx, by, size)
+        if slip is not None:  # E₀'s products past 2^53 units²: E₀ itself rounded
+            edge, t, key = slip
+            big = max(abs(v) for v in t["terms"][:2])
+            cx, cy = t["hi"] if key == "best" else t["lo"]
+            on = "exactly on that edge" if t[key] == 0 else f"{abs(t[key])} units² from that edge"
+            detail = (
+                f"on edge {edge['name']} E₀'s products reach {sci(big)} units², where float64's "
+                f"numbers lie 2^{int(np.log2(np.spacing(float(big))))} units² apart, and the "
+                f"block's centre {vec((cx / UNITS, cy / UNITS))} lies {on}: E₀ itself is "
+                f"rounded, so {'E₀ + R' if key == 'best' else 'E₀ + T'} can land on either side"
+            )
+        else:
+            tie = _lost_tie(xy, bx, by, size, g == "accepted")
+            if tie is None:  # (a float64 verdict no tie or product explains: the rule)
+                return _block_rule(args, expected, got)[2:]
+            k, j, e0, setup, rows, cols = tie
+            name = f"v{setup.perm[k] + 1}→v{setup.perm[(k + 1) % 3] + 1}"
+            e0 = round(e0 * UNITS**2)
+            detail = (
+                f"centre {vec((cols[j] + 0.5, rows[j] + 0.5))} lies exactly on edge {name}, "
+                f"neither top nor left, and at the block's first centre E₀ = {e0:,} units², "
+                f"where float64's numbers lie 2^{int(np.log2(np.spacing(abs(float(e0)))))} "
+                "units² apart: E₀ + β (β = −1) rounds back to E₀, and the centre passes your "
+                f"{'accept' if g == 'accepted' else 'reject'} test as if there were no bias"
+            )
+        return (
+            f"your units are float64 numbers: np.{rounds} rounds to whole numbers but returns "
+            "float64, so every E you compute is a float64, exact only up to 2^53 units² "
+            f"(2^37 px²). Here, {detail}. Cast the units to integers, "
+            f"np.{rounds}(xy * 256).astype(np.int64): int64 holds every value of the check "
+            "exactly (cell 1)"
+        )
+
+    return words
+
+
+#: r267 half-named 1: cell 3's solution without ``.astype(np.int64)`` (np.rint returns float64)
+#: was told "float64 pixels … 16 bits after the point" and "your bias is lost to rounding":
+#: named by its cause where the code reads the rounding function and every failing case is a
+#: tie float64 rounds (float64 pixels and float64 units give the very same answers, scaled by
+#: 256, so only what the code reads tells them apart). After the half-unit bias (an int64 count
+#: with β = −0.5 reads np.rint too), before float64 pixels and the lost bias.
+FLOAT_UNITS = [
+    Mistake("units held in float64", _float_units_words(name), fits=_float_units_fits,
+            only_whole=True, reads=name)
+    for name in ("rint", "round", "around")
+]  # fmt: skip
+
+
 READ_YX = Mistake("vertices read as (y, x)", _axes_words("yx"), gives=_read_yx)
 
 
@@ -1148,6 +1219,13 @@ SIGN_MISTAKES = [
             "and such a centre passes the pixel test (E + β ≥ 0): accept when E₀ + T + β ≥ 0 "
             "on every edge; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
             logic="accept above zero"),
+    # r267 half-named 2: told only the rule ("one such edge rejects the block")
+    _single("reject only when every edge fails", _at_first(lambda a, e, g: "you rejected a "
+            "block only when every edge fails its reject test (rejected &= … for |=?): the "
+            "three edges' outer sides never all hold one centre, so such a block is never "
+            "rejected, yet one edge alone that fails at the block's best centre rules out "
+            "every centre of it; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
+            logic="every edge rejects"),
 ]  # fmt: skip
 
 
@@ -1241,7 +1319,7 @@ def exercise(scene) -> Exercise:
 
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [ba.INT32, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
+        [ba.INT32, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, *FLOAT_UNITS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r248 S1: each case's label holds its call (:func:`call_words`); an exception adds
         # the traceback's last line in the student's code
