@@ -300,22 +300,31 @@ LABEL_LEFTS = """() => {
 }"""
 
 
-def test_the_divide_cost_labels_line_up_when_the_row_wraps(lab, page):  # noqa: F811
+@pytest.fixture(scope="module")
+def divide_cost(lab, page):  # noqa: F811
+    """One DivideCostExplorer run for the module's two tests of it (each measures the page,
+    neither changes it: the resize is undone); a worker that runs only one builds its own."""
+    cells = [SETUP, "DivideCostExplorer(rows)"]
+    _run(page, lab, cells, "divide_cost.ipynb")
+    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+    page.locator(".widget-label:text-is('error')").wait_for(timeout=120_000)
+    page.locator(".tr-readout .widget-readout").first.wait_for(timeout=120_000)
+    return page
+
+
+def test_the_divide_cost_labels_line_up_when_the_row_wraps(divide_cost):
     """Review r24 06-8: at 1024 x 768 (a 592-px column) the "error" label wraps under the
     slider flush left, while "divide =" sat right-aligned in the slider's description box,
     indented: the two labels start at the same left edge (within a widget's margin)."""
-    cells = [SETUP, "DivideCostExplorer(rows)"]
-    _run(page, lab, cells, "divide_labels.ipynb")
-    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
-    page.locator(".widget-label:text-is('error')").wait_for(timeout=120_000)
+    tab = divide_cost
     try:
-        _resize(page, "1024x768")
-        lefts = page.evaluate(LABEL_LEFTS)
-        top = page.evaluate("""() => [...document.querySelectorAll('.widget-label')]
+        _resize(tab, "1024x768")
+        lefts = tab.evaluate(LABEL_LEFTS)
+        top = tab.evaluate("""() => [...document.querySelectorAll('.widget-label')]
             .filter(e => ['divide =', 'error'].includes(e.textContent.trim()))
             .map(e => Math.round(e.getBoundingClientRect().top))""")
     finally:
-        _resize(page, "1400x900", redrawn=False)
+        _resize(tab, "1400x900", redrawn=False)
     assert set(lefts) == {"divide =", "error"}, lefts
     assert len(set(top)) == 2, top  # the row wrapped (else there is nothing to line up)
     assert abs(lefts["divide ="] - lefts["error"]) <= 4, lefts
@@ -330,15 +339,12 @@ READOUT_SIZES = """() => [...document.querySelectorAll('.tr-readout')].map(s => 
 })"""
 
 
-def test_the_divide_cost_readouts_are_as_large_as_their_labels(lab, page):  # noqa: F811
+def test_the_divide_cost_readouts_are_as_large_as_their_labels(divide_cost):
     """Review r243 FIG1: the sliders' read-outs ("17", "2") were JupyterLab's 13 px beside their
     16-px labels ("divide =", "attributes k ="), the smallest text on the widget: they are at
     least their labels' size."""
-    cells = [SETUP, "DivideCostExplorer(rows)"]
-    _run(page, lab, cells, "divide_readouts.ipynb")
-    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
-    page.locator(".tr-readout .widget-readout").first.wait_for(timeout=120_000)
-    sizes = page.evaluate(READOUT_SIZES)
+    tab = divide_cost
+    sizes = tab.evaluate(READOUT_SIZES)
     assert [s[:2] for s in sizes] == [["divide =", "17"], ["attributes k =", "2"]], sizes
     assert all(readout >= max(16, label) for _, _, label, readout in sizes), sizes
-    assert not page.errors, page.errors[:3]
+    assert not tab.errors, tab.errors[:3]
