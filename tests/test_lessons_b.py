@@ -5798,6 +5798,34 @@ def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
     assert "a real OpenGL rasteriser, draws" in text[-1] and "real GPU rasteriser" not in text[-1]
 
 
+def test_07_review_r266_who_requires_what():
+    """Review r266 F-1 / M-1: only Direct3D mandates the top-left rule and 8-bit snapping;
+    OpenGL 4.6 §14.6.1 and Vulkan ask only for "exactly one", with SUBPIXEL_BITS /
+    subPixelPrecisionBits ≥ 4. Cell 0 said "A GPU gets them all right with ... the top-left
+    rule"; §1 now has the standards table (the sections lessons 01, 02, 05a and 05b cite)."""
+    cells = _07_sources()
+    text = [" ".join(c.split()) for c in cells]
+    intro = text[0]
+    assert "A GPU gets them all right" not in intro and "real GPU rasteriser" not in intro
+    assert "Direct3D mandates its rules: the top-left rule and 8 sub-pixel bits" in intro
+    assert 'OpenGL and Vulkan require only "exactly one" and at least 4 sub-pixel bits' in intro
+    (sec1,) = [c for c in cells if c.startswith("## 1. Ties on pixel centres")]
+    rows = {line.split("|")[1].strip(): line for line in sec1.splitlines() if line.startswith("| ")}
+    assert list(rows) == ["", "OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
+                          "teachraster"]  # fmt: skip
+    for api, cited in {"OpenGL 4.6": ("§14.6.1", "`SUBPIXEL_BITS` ≥ 4", "§13.7", "§14.6.5"),
+                       "Direct3D 11": ("§3.4.2.1 *Top-Left Rule*", "exactly 8 bits", "§15.4",
+                                       "`DepthBias`: added"),
+                       "Vulkan": ("*Basic Polygon Rasterization*", "`subPixelPrecisionBits` ≥ 4",
+                                  "*Primitive Clipping*", "*Depth Bias*")}.items():  # fmt: skip
+        for said in cited:
+            assert said in rows[api], (api, said)
+    assert "exactly one produces the fragment; no rule named" in rows["OpenGL 4.6"]
+    (turn,) = [t for t in text if t.startswith("## Your turn: the tie rule")]
+    assert "GL itself names no tie rule (§1's table)" in turn
+    assert "Direct3D's; OpenGL and Vulkan ask only for exactly one owner" in text[-1]
+
+
 def test_06_one_span_explorer_and_q_span():
     """Review r252 change 1: subdivision on one span the student moves (N, r), with a
     question answered by moving it; the cuts it asks for printed under it, held by q_span."""
