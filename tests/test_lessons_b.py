@@ -5321,7 +5321,9 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
             words += len(text.split())
         else:
             words += sum(len(t.split()) for t in re.findall(r'_TEXT = r?f?"""(.*?)"""', text, re.S))
-    assert words < 3800, words  # the decal's 200 new words included
+    # the decal's 200 new words included; r266's standards table (who requires what, about
+    # 190 words) paid for in part by shorter held texts (FAR_TEXT, GAPS_TEXT, cells 0, 5)
+    assert words < 4000, words
 
 
 @pytest.mark.notebook
@@ -5807,22 +5809,22 @@ def test_07_review_r266_who_requires_what():
     text = [" ".join(c.split()) for c in cells]
     intro = text[0]
     assert "A GPU gets them all right" not in intro and "real GPU rasteriser" not in intro
-    assert "Direct3D mandates its rules: the top-left rule and 8 sub-pixel bits" in intro
-    assert 'OpenGL and Vulkan require only "exactly one" and at least 4 sub-pixel bits' in intro
+    assert "Direct3D mandates the top-left rule and 8 sub-pixel bits" in intro
+    assert 'OpenGL and Vulkan require only "exactly one" and at least 4 bits' in intro
     (sec1,) = [c for c in cells if c.startswith("## 1. Ties on pixel centres")]
     rows = {line.split("|")[1].strip(): line for line in sec1.splitlines() if line.startswith("| ")}
     assert list(rows) == ["", "OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
                           "teachraster"]  # fmt: skip
     for api, cited in {"OpenGL 4.6": ("§14.6.1", "`SUBPIXEL_BITS` ≥ 4", "§13.7", "§14.6.5"),
-                       "Direct3D 11": ("§3.4.2.1 *Top-Left Rule*", "exactly 8 bits", "§15.4",
-                                       "`DepthBias`: added"),
+                       "Direct3D 11": ("the top-left rule", "exactly 8 bits", "§3.4.2.1",
+                                       "§15.4", "`DepthBias`: added"),
                        "Vulkan": ("*Basic Polygon Rasterization*", "`subPixelPrecisionBits` ≥ 4",
                                   "*Primitive Clipping*", "*Depth Bias*")}.items():  # fmt: skip
         for said in cited:
             assert said in rows[api], (api, said)
-    assert "exactly one produces the fragment; no rule named" in rows["OpenGL 4.6"]
+    assert "exactly one of the two draws it; no rule named" in rows["OpenGL 4.6"]
     (turn,) = [t for t in text if t.startswith("## Your turn: the tie rule")]
-    assert "GL itself names no tie rule (§1's table)" in turn
+    assert "GL names no tie rule (§1's table)" in turn
     assert "Direct3D's; OpenGL and Vulkan ask only for exactly one owner" in text[-1]
 
 
