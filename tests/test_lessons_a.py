@@ -209,9 +209,10 @@ def test_00_facing_and_the_two_methods():
     asked = code[code.index("q_facing = PredictPixels(") :]
     asked = asked[: asked.index("\nq_facing")]
     assert "answer=makes_front," in asked and "draw=asked_facing," in asked
-    assert "{n_y_up} centres" in asked and "arrowprops" not in _tour_code("9e51dee3").split(
-        "def facing_figure"
-    )[0]
+    assert (
+        "{n_y_up} centres" in asked
+        and "arrowprops" not in _tour_code("9e51dee3").split("def facing_figure")[0]
+    )
     answer = _tour_code("tour-facing-answer")
     assert answer.startswith("q_facing.hold()") and "facing_figure()" in answer
     assert ns.same  # "they fill the same pixels (the next cell checks)"
@@ -561,7 +562,7 @@ def test_00_r241_items():
     assert "*is* wrong, as he says" in depth and "the window depth, which a GPU stores" in depth
     # S3
     facing = next(c for c in code if "q_facing = PredictPixels(" in c)  # r271 P1: clicked
-    assert "\n    cell=\"centre\"," in facing
+    assert '\n    cell="centre",' in facing
     # S4: the player shows its own caption; the cell prints nothing
     player = next(c for c in code if "FillPlayer(" in c)
     assert "print(" not in player and "q_half.hold()" in player
