@@ -3908,3 +3908,27 @@ def test_00_r256_answers_and_the_conventions_paragraph_halved():
     depth = next(t for t in _cells("00_tour", "markdown") if t.startswith("**Depth needs"))
     assert "(../CONVENTIONS.md)), *Interpolation*)" not in depth
     assert "(*Interpolation* in [CONVENTIONS.md](CONVENTIONS.md); [in the repository]" in depth
+
+
+def test_00_r271_api_table_has_snapping_and_interpolation():
+    """Review r271 M2: the tour states two rules the API table left out. Snapping: "as GPUs
+    do ... 1/256 px" read as universal, where Direct3D requires 8 bits and OpenGL and Vulkan
+    guarantee only 4 (lesson 02's table); interpolation: u perspective-correct by default,
+    affine on request, depth affine (lesson 03's table)."""
+    md = _cells("00_tour", "markdown")
+    fills = " ".join(next(t for t in md if t.startswith("## Two ways to fill")).split())
+    assert "as GPUs do" not in fills and "as Direct3D requires and llvmpipe does" in fills
+    assert "OpenGL and Vulkan leave the precision to the GPU, at least 4 bits" in fills
+    table = next(t for t in md if "**What each API does**" in t)
+    rows = {ln.split(" | ")[0]: ln for ln in table.splitlines() if ln.startswith("| ")}
+    header = next(ln for ln in table.splitlines() if ln.startswith("| | "))
+    assert "| sub-pixel precision | attributes; depth |" in header
+    for api, bits in (("| OpenGL 4.6", "`SUBPIXEL_BITS`, at least 4"),
+                      ("| Direct3D 11", "exactly 8 bits (16.8 fixed point)"),
+                      ("| Vulkan", "`subPixelPrecisionBits`, at least 4"),
+                      ("| llvmpipe (Mesa)", "| 8 bits |"), ("| teachraster", "8 bits")):  # fmt: skip
+        assert bits in rows[api], api
+        assert rows[api].count(" | ") == header.count(" | "), api  # every column filled
+    assert "`noperspective`" in rows["| OpenGL 4.6"] and "`NoPerspective`" in rows["| Vulkan"]
+    assert "HLSL `linear`" in rows["| Direct3D 11"] and "§15.16 *Rasterizer Precision*" in table
+    assert all("depth affine" in rows[a] for a in ("| OpenGL 4.6", "| Vulkan", "| teachraster"))
