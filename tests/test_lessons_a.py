@@ -3932,3 +3932,26 @@ def test_00_r271_api_table_has_snapping_and_interpolation():
     assert "`noperspective`" in rows["| OpenGL 4.6"] and "`NoPerspective`" in rows["| Vulkan"]
     assert "HLSL `linear`" in rows["| Direct3D 11"] and "§15.16 *Rasterizer Precision*" in table
     assert all("depth affine" in rows[a] for a in ("| OpenGL 4.6", "| Vulkan", "| teachraster"))
+
+
+def test_00_r271_checkers_show_the_perspective_error():
+    """Review r271 M1: the perspective error was never shown on a texture. After q_half (held
+    on it) the tour triangle carries a checkerboard, affine beside perspective-correct, drawn
+    by the package's fill; the looked-up checks differ, and the figure fits the column."""
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    cell = _tour_code("tour-checkers")
+    assert cell.startswith("q_half.hold()") and "interpolation=how" in cell
+    ns = _run_tour_cells("tour-checkers", tri=tri, W=16, H=16)
+    assert ns["fig"].get_size_inches()[0] * 96 <= 940
+    affine, correct = (ax.images[0].get_array() for ax in ns["fig"].axes[:2])
+    differ = np.ma.filled(affine != correct, False)
+    assert differ.sum() > 0.2 * np.isfinite(np.ma.filled(correct, np.nan)).sum()
+    plt.close("all")
+    code = [t for t in _cells("00_tour", "code")]
+    ask = next(i for i, t in enumerate(code) if "q_half = PredictPoint(" in t)
+    assert code[ask + 2] == cell  # after the held answer, before the error map
+    map_text = " ".join(
+        next(t for t in _cells("00_tour", "markdown") if "## The triangle" in t).split()
+    )
+    assert "blue box is this course's stage, rasterisation" in map_text  # r271 FIG3
