@@ -200,15 +200,21 @@ def test_00_facing_and_the_two_methods():
     assert ns.front_rows.tolist() == [0, 1, 2] and round(ns.y_edge, 2) == 3.21
     assert ns.makes_front.sum() == 3 and not ns.makes_front[:, ns.column + 1 :].any()
     # review r157 00-5: clicked on a y-down picture with the arrow drawn, the question was
-    # answered by looking; it is now a count worked out from the numbers (3), with no
-    # picture before the answer, and the y-up answer (13) is the trap its note names
+    # answered by looking. Review r271 P1 asks for the act on the figure again: the centres
+    # of column 7 are clicked on the grid, which shows v1, v2 and their edge with no arrow
+    # (the walking order is the question's), and the held cell after it prints the count
+    # (3) and the y-up trap (13), which the explanation names, and draws the signs of E12
     assert ns.n_front == 3 and ns.n_y_up == 13
     code = "\n".join(_cells("00_tour", "code"))
-    asked = code[code.index("q_facing = Predict(") :]
+    asked = code[code.index("q_facing = PredictPixels(") :]
     asked = asked[: asked.index("\nq_facing")]
-    assert "answer=n_front," in asked and "figure=facing_figure," in asked
-    assert "draw=" not in asked and "PredictPixels(" not in code and "tolerance" not in asked
-    assert "n_y_up: f" in asked
+    assert "answer=makes_front," in asked and "draw=asked_facing," in asked
+    assert (
+        "{n_y_up} centres" in asked
+        and "arrowprops" not in _tour_code("9e51dee3").split("def facing_figure")[0]
+    )
+    answer = _tour_code("tour-facing-answer")
+    assert answer.startswith("q_facing.hold()") and "facing_figure()" in answer
     assert ns.same  # "they fill the same pixels (the next cell checks)"
     # the predicted answer: the bounding box's centres, 12 x 12 (review r3 00-2: not a guess)
     assert ns.box.size == 144 == ns.halfplane.trace.n_work and ns.span.trace.n_work == 12
@@ -476,9 +482,11 @@ def test_00_r225_items():
     assert ns.half_answer == 0.33 and abs(ns.u_half - 1 / 3) < 1e-12
     assert abs(ns.u_half_affine - 0.5) < 1e-12
     assert "affine u = 0.500," in printed and "perspective-correct u = 0.333" in printed
-    ask = next(i for i, c in enumerate(code) if "q_half = Predict(" in c)
+    ask = next(i for i, c in enumerate(code) if "q_half = PredictPoint(" in c)
     shown = next(i for i, c in enumerate(code) if 'title="u along v1 → v2"' in c)
-    assert shown == ask + 1 and "\nq_half.hold()\n" in code[shown]
+    # r271 P1/M1: the held answer (printed, Ek's eight steps) and the checkers come between
+    assert code[ask + 1].startswith("q_half.hold()") and "ek_figure()" in code[ask + 1]
+    assert ask < shown <= ask + 3 and "\nq_half.hold()\n" in code[shown]
     before = tour[: tour.index("Before you read on, follow its eye ray")]
     assert "0.333" not in before and "1/3" not in before and "plain to see" not in tour
     # S2
@@ -519,20 +527,22 @@ def test_00_r241_items():
     tour = " ".join(" ".join(md).split())
     printed = streams(executed("00_tour").notebook())
     # P1: the picture, then the question; no text above it states the rule
-    side = next(i for i, c in enumerate(code) if "shows=False" in c)
-    ask = next(i for i, c in enumerate(code) if "q_half = Predict(" in c)
-    assert side == ask - 1 and "n_steps=1" in code[side]
+    side = next(i for i, c in enumerate(code) if "side_view = Segment(" in c)
+    ask = next(i for i, c in enumerate(code) if "q_half = PredictPoint(" in c)
+    # r271 P1: the side view is the question's own picture, where the marker is dragged
+    assert side == ask - 1 and "n_steps=1" in code[ask] and "shows=False" in code[ask]
     before = tour[: tour.index("Before you read on, follow its eye ray")]
     for rule in ("$u/w$", "u/w", "$1/w$", "and divides", "interpolating"):
         assert rule not in before[before.index("## Affine vs") :], rule
     asked = code[ask]
-    assert "answer=half_answer," in asked and "tolerance=half_tolerance," in asked
+    assert "answer=half_point," in asked and "tolerance=half_tolerance * edge_length," in asked
+    assert np.allclose(ns.side_view.point(ns.half_answer)[0], ns.half_point, atol=0.01)
     assert ns.half_tolerance == 0.05 and abs(ns.half_answer - 0.5) > ns.half_tolerance
     assert abs(ns.half_answer - round(1 - ns.u_half, 2)) > ns.half_tolerance  # both lures
     explain = asked.split("explain=")[1]
     assert "<code>u/w</code> and <code>1/w</code>" in explain and "and divide" in explain
     # M1: the answer's figure is Ek's, by the package's plotting: eight equal steps
-    assert "figure=ek_figure," in asked and "plot_projection(ax, side_view, n_steps=8" in asked
+    assert "ek_figure()" in code[ask + 1] and "plot_projection(ax, side_view, n_steps=8" in asked
     assert abs(float(ns.side_view.world_parameter(0.5)[0]) - ns.u_half) < 1e-12
     assert ns.side_view.z1 / ns.side_view.z0 == ns.tri.w[1] / ns.tri.w[0]
     # S1
@@ -551,8 +561,8 @@ def test_00_r241_items():
     assert "slides show why" not in depth and "store another depth: the view depth $z$" in depth
     assert "*is* wrong, as he says" in depth and "the window depth, which a GPU stores" in depth
     # S3
-    facing = next(c for c in code if "q_facing = Predict(" in c)
-    assert "\n    whole=True," in facing
+    facing = next(c for c in code if "q_facing = PredictPixels(" in c)  # r271 P1: clicked
+    assert '\n    cell="centre",' in facing
     # S4: the player shows its own caption; the cell prints nothing
     player = next(c for c in code if "FillPlayer(" in c)
     assert "print(" not in player and "q_half.hold()" in player
@@ -573,7 +583,7 @@ def test_00_r241_items():
     assert "run that cell (Shift+Enter), then the error map's cell" in try_it
     assert "Run All would ask the four questions again" in try_it  # r249: q_fragments
     fills = next(c for c in code if 'axes[0].set_title(f"span tables, point 4' in c)
-    assert "covered_share" not in fills and "halfplane" not in code[ask + 2]
+    assert "covered_share" not in fills and "halfplane" not in _tour_code("tour-depth-check")
 
 
 def _tour_code(cell_id: str) -> str:
@@ -738,8 +748,7 @@ def test_00_r249_side_view_key_and_u():
 
     from teachraster.plotting.projection import Segment, plot_projection
 
-    for cell_id in ("tour-side-view", "tour-q-half"):
-        assert 'world="u")' in _tour_code(cell_id), cell_id
+    assert _tour_code("tour-q-half").count('world="u")') == 2  # the question's and the answer's
     assert "<code>u</code> is Ek's <i>t</i>" in _tour_code("tour-q-half")
     fig, ax = plt.subplots()
     art = plot_projection(ax, Segment(-1.0, 1.0, 1.0, 2.0), q=0.5, world="u")
@@ -3899,3 +3908,50 @@ def test_00_r256_answers_and_the_conventions_paragraph_halved():
     depth = next(t for t in _cells("00_tour", "markdown") if t.startswith("**Depth needs"))
     assert "(../CONVENTIONS.md)), *Interpolation*)" not in depth
     assert "(*Interpolation* in [CONVENTIONS.md](CONVENTIONS.md); [in the repository]" in depth
+
+
+def test_00_r271_api_table_has_snapping_and_interpolation():
+    """Review r271 M2: the tour states two rules the API table left out. Snapping: "as GPUs
+    do ... 1/256 px" read as universal, where Direct3D requires 8 bits and OpenGL and Vulkan
+    guarantee only 4 (lesson 02's table); interpolation: u perspective-correct by default,
+    affine on request, depth affine (lesson 03's table)."""
+    md = _cells("00_tour", "markdown")
+    fills = " ".join(next(t for t in md if t.startswith("## Two ways to fill")).split())
+    assert "as GPUs do" not in fills and "as Direct3D requires and llvmpipe does" in fills
+    assert "OpenGL and Vulkan leave the precision to the GPU, at least 4 bits" in fills
+    table = next(t for t in md if "**What each API does**" in t)
+    rows = {ln.split(" | ")[0]: ln for ln in table.splitlines() if ln.startswith("| ")}
+    header = next(ln for ln in table.splitlines() if ln.startswith("| | "))
+    assert "| sub-pixel precision | attributes; depth |" in header
+    for api, bits in (("| OpenGL 4.6", "`SUBPIXEL_BITS`, at least 4"),
+                      ("| Direct3D 11", "exactly 8 bits (16.8 fixed point)"),
+                      ("| Vulkan", "`subPixelPrecisionBits`, at least 4"),
+                      ("| llvmpipe (Mesa)", "| 8 bits |"), ("| teachraster", "8 bits")):  # fmt: skip
+        assert bits in rows[api], api
+        assert rows[api].count(" | ") == header.count(" | "), api  # every column filled
+    assert "`noperspective`" in rows["| OpenGL 4.6"] and "`NoPerspective`" in rows["| Vulkan"]
+    assert "HLSL `linear`" in rows["| Direct3D 11"] and "§15.16 *Rasterizer Precision*" in table
+    assert all("depth affine" in rows[a] for a in ("| OpenGL 4.6", "| Vulkan", "| teachraster"))
+
+
+def test_00_r271_checkers_show_the_perspective_error():
+    """Review r271 M1: the perspective error was never shown on a texture. After q_half (held
+    on it) the tour triangle carries a checkerboard, affine beside perspective-correct, drawn
+    by the package's fill; the looked-up checks differ, and the figure fits the column."""
+    tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0],
+                      attrs={"u": [0.0, 1.0, 0.0]})  # fmt: skip
+    cell = _tour_code("tour-checkers")
+    assert cell.startswith("q_half.hold()") and "interpolation=how" in cell
+    ns = _run_tour_cells("tour-checkers", tri=tri, W=16, H=16)
+    assert ns["fig"].get_size_inches()[0] * 96 <= 940
+    affine, correct = (ax.images[0].get_array() for ax in ns["fig"].axes[:2])
+    differ = np.ma.filled(affine != correct, False)
+    assert differ.sum() > 0.2 * np.isfinite(np.ma.filled(correct, np.nan)).sum()
+    plt.close("all")
+    code = [t for t in _cells("00_tour", "code")]
+    ask = next(i for i, t in enumerate(code) if "q_half = PredictPoint(" in t)
+    assert code[ask + 2] == cell  # after the held answer, before the error map
+    map_text = " ".join(
+        next(t for t in _cells("00_tour", "markdown") if "## The triangle" in t).split()
+    )
+    assert "blue box is this course's stage, rasterisation" in map_text  # r271 FIG3
