@@ -120,7 +120,7 @@ def test_06_review_r238_the_law_the_floor_follows():
         "the mean error goes like $N^2$ divided by the pixels across, and the worst pixel's "
         "more slowly, in $N$ and in the pixels across alike"
     ) in text
-    assert f"up to $r = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
+    assert f"up to $\\rho = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
     # the your-turn: 512²'s worst pixel cut once more as from 256² (r243 P1: at N = 16)
     guess = ns.worst_512[16] / ns.cut_worst[16]
     assert 2.3 < guess < 2.7 and ns.worst_512[16] / 2 < 2.2
@@ -5799,37 +5799,86 @@ def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
 
 
 def test_06_one_span_explorer_and_q_span():
-    """Review r252 change 1: subdivision on one span the student moves (N, r), with a
-    question answered by moving it; the cuts it asks for printed under it, held by q_span."""
+    """Review r252 change 1: subdivision on one span the student moves (N, r). r268 P1/C1: the
+    question is asked before the explorer shows (it is held until q_span is checked), the cuts
+    printed after; its explanation ties the span to the floor by the floor's own numbers (its
+    steepest pieces' ρ and the worst pixel's cuts, printed under its chart), not by a
+    "hundredfold" the floor's pieces never reach."""
     import json
 
     from notebook_runs import executed, streams
 
+    from teachraster.study.span_subdivision import SPAN_PIXELS, SPAN_TEXELS
     from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     ids = [c.get("id") for c in nb["cells"]]
     cells = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
-    # where the lesson explains subdivision: after the floor's figures, before the Your turn
-    assert ids.index("c05") < ids.index("spantext") < ids.index("spanexplorer")
-    assert ids.index("spanexplorer") < ids.index("q06span") < ids.index("spancuts")
+    # where the lesson explains subdivision: after the floor's figures, before the Your turn;
+    # the question before the explorer, which is held until it is checked
+    assert ids.index("c05") < ids.index("spantext") < ids.index("q06span")
+    assert ids.index("q06span") < ids.index("spanexplorer") < ids.index("spancuts")
     assert ids.index("spancuts") < ids.index("yourturn")
-    assert cells["spancuts"].startswith("q_span.hold()")
+    for held in ("spanexplorer", "spancuts"):
+        assert cells[held].startswith("q_span.hold()")
     assert nb["cells"][ids.index("spancuts")]["metadata"]["jupyter"]["source_hidden"]
-    # the explorer starts where the question's low r is (a widget is not kept in the globals)
+    # the explorer starts at r = 10, a slider stop, its last piece near the floor's steepest
     assert f"SpanSubdivisionExplorer(16, {ns.span_r[0]:g})" in cells["spanexplorer"]
-    assert SpanSubdivisionExplorer.__module__ in cells["spanexplorer"]
-    # the text's claims: a cut of about 4 at a low r (the square law), less at r = 100
-    assert 3.5 < ns.span_cut[ns.span_r[0]] <= 4.0
+    assert SpanSubdivisionExplorer.__module__ in cells["q06span"]
+    assert ns.span_r == (10.0, 100.0) and abs(ns.near.rho[ns.near.worst] - ns.ratio_q) < 0.5
+    text = " ".join(cells["spantext"].split())
+    assert f"{SPAN_PIXELS} pixels ({SPAN_PIXELS - 1} steps)" in text
+    assert f"crossing {SPAN_TEXELS} texels" in text and "cut of about 4" in text
+    assert "by hand" not in text and "by moving the explorer" not in text
+    # the question: a large r, asked without the explorer; the answer between 2 and 4
+    asked = ns.span_question
+    assert "Move the explorer" not in asked and "hundredfold" not in asked
+    assert f"reaches {ns.ratio_q:.2f} at N = 16" in asked and "r = 100" in asked
     assert 2.2 < ns.cut100 < 3.5 and ns.span_answer == ns.span_choices[1]
-    assert "cut of about 4" in " ".join(cells["spantext"].split())
-    # the explanation's worst piece is the span's last, at both N
+    assert 3.0 < ns.span_cut[ns.span_r[0]] < 3.5
+    # the explanation's worst piece is the span's last, at both N; the floor's numbers
     assert all(ns.far[n].worst == len(ns.far[n].rho) - 1 for n in (8, 16))
+    said = " ".join(ns.span_explain.split())
+    assert "hundredfold" not in said and "The floor's worst pixel lies on such pieces" not in said
+    assert f"fell {ns.cut_by[16]:.2f} times from N = 16 to 8" in said
+    assert f"least, {ns.cut_by[32]:.2f}, from 32 to 16" in said
+    assert f"ρ = {ns.steepest[32]['rho']:.2f}" in said
+    assert min(ns.cut_by, key=ns.cut_by.get) == max(
+        ns.steepest, key=lambda n: ns.steepest[n]["rho"]
+    )
     printed = streams(executed("06_what_accuracy_costs").notebook())
     if "halving N cut it" in printed:  # held in the browser until q_span is checked
         for r in ns.span_r:
             assert f"{ns.span_cut[r]:.2f} times" in printed
+
+
+def test_06_review_r268_the_floors_cuts_and_steepest_pieces_printed():
+    """r268 C1: the floor's worst pixel falls 3.70x from N = 16 to 8 and least (2.72x) from 32
+    to 16: both printed under the law's chart, each beside the larger N's steepest piece
+    (ρ, its length, its span's), and the held text quotes them."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("06_what_accuracy_costs")
+    assert list(ns.cut_by) == [4, 8, 16, 32]
+    assert 3.5 < ns.cut_by[16] < 3.9 and 2.5 < ns.cut_by[32] < 2.9
+    assert ns.steepest[16]["rho"] == pytest.approx(ns.ratio_q)
+    n32 = ns.steepest[32]
+    assert n32["x1"] - n32["x0"] == n32["span"] - 1 < 32  # a whole span, shorter than N
+    text = " ".join(ns.QUAKE_TEXT.split())
+    assert f"is {ns.cut_by[16]:.2f} from $N = 16$ to 8, near the square law's 4" in text
+    assert f"smallest, {ns.cut_by[32]:.2f}, from 32 to 16" in text
+    assert f"$\\rho = {n32['rho']:.2f}$: a whole span of {n32['span']} pixels" in text
+    assert "For a large r the share nears 1" not in text
+    assert "a piece of $N$ pixels covers half as much of the floor" in text
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    if "halving N: the worst pixel's cut" in printed:  # held in the browser by q_quake
+        for n, cut in ns.cut_by.items():
+            sp = ns.steepest[n]
+            line = (f"  {n:2d} -> {n // 2:2d}: cut {cut:.2f}x   ρ = {sp['rho']:.2f}, "
+                    f"{sp['x1'] - sp['x0']} px of a span of {sp['span']} px")  # fmt: skip
+            assert line in printed.splitlines()
+        assert max(len(x) for x in printed.splitlines()) <= 80
 
 
 def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():

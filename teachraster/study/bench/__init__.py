@@ -123,6 +123,7 @@ from .timing import (
 )
 from .worst_pixel import (
     check_worst_px,
+    steepest_piece,
 )
 
 __all__ = [
@@ -151,6 +152,7 @@ __all__ = [
     "depth_clip",
     "depth_pairs",
     "check_worst_px",
+    "steepest_piece",
     "slanted_pairs",
     "exact_coverage",
     "fill_triangle",

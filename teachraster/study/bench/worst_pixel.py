@@ -10,7 +10,39 @@ import textwrap
 
 import numpy as np
 
-from .groups import floor_errors
+from .groups import floor_errors, floor_quad
+
+
+def steepest_piece(size: int, n: int) -> dict:
+    """The study's floor at ``size``², subdivided by ``n`` as ``tr.rasterize`` does (an exact
+    divide at every n-th pixel of a span from its first, and at its last): the piece whose
+    ends' depths differ most. Returns its depth ratio ``rho`` (≥ 1), ``row``, anchor columns
+    ``x0``, ``x1`` and the ``span``'s length in pixels (a span shorter than n + 1 pixels is one
+    piece: the divide every n never happens there).
+
+    >>> p = steepest_piece(256, 16)
+    >>> round(p["rho"], 2), p["x1"] - p["x0"], p["span"]
+    (3.51, 14, 15)
+    """
+    import teachraster as tr
+
+    xy, w, _ = floor_quad(size)
+    best = {"rho": 0.0}
+    for t in range(2):
+        cov = tr.rasterize(tr.Triangle(xy[t], w=w[t]), size, size).coverage
+        for row in np.flatnonzero(cov.any(axis=1)):
+            cols = np.flatnonzero(cov[row])
+            at = np.unique(np.r_[cols[0] : cols[-1] + 1 : n, cols[-1]])
+            if len(at) < 2:
+                continue
+            centres = np.column_stack([at + 0.5, np.full(len(at), row + 0.5)])
+            w_at = 1 / (tr.barycentric(xy[t], centres) / w[t]).sum(axis=1)  # 1/w is affine
+            rho = np.maximum(w_at[1:] / w_at[:-1], w_at[:-1] / w_at[1:])
+            k = int(np.argmax(rho))
+            if rho[k] > best["rho"]:
+                best = {"rho": float(rho[k]), "row": int(row), "x0": int(at[k]),
+                        "x1": int(at[k + 1]), "span": len(cols)}  # fmt: skip
+    return best
 
 
 def check_worst_px(estimate, n: int = 16, size: int = 1024, errors=floor_errors):
