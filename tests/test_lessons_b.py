@@ -100,12 +100,9 @@ def test_06_review_r238_the_law_the_floor_follows():
     the worst pixel, which the 1024² floor does not follow (4x the pixels cut it 2.1-2.7x). The
     law the measurements support, with its reason: the mean on screen follows N² / pixels
     across (about 4 per halving of N, 2 per doubling of the pixels), the worst pixel less (it
-    lies where w changes most across a piece); the your-turn's estimate of N = 16's worst pixel
-    at 1024² follows from the 256² and 512² lines (r243 P1), and its checker prints the 1024²
-    one."""
+    lies where w changes most across a piece); the your-turn's checker is the study's
+    (r252 P1; its question: test_06_review_r268_your_turn_...)."""
     import json
-
-    from teachraster.study import bench
 
     ns = lesson("06_what_accuracy_costs")
     assert 3.5 < min(ns.mean_px_cut) and max(ns.mean_px_cut) < 5.1  # the mean: about 4
@@ -121,9 +118,6 @@ def test_06_review_r238_the_law_the_floor_follows():
         "more slowly, in $N$ and in the pixels across alike"
     ) in text
     assert f"up to $\\rho = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
-    # the your-turn: 512²'s worst pixel cut once more as from 256² (r243 P1: at N = 16)
-    guess = ns.worst_512[16] / ns.cut_worst[16]
-    assert 2.3 < guess < 2.7 and ns.worst_512[16] / 2 < 2.2
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
@@ -132,14 +126,12 @@ def test_06_review_r238_the_law_the_floor_follows():
     assert "every pixel is a quarter as wide" not in md
     assert "On screen the mean error goes like $N^2$ divided by the pixels across" in md
     # r252 P1: the checker lives in the study, not in the student's cell, which holds only
-    # the answer and the call (its source named the right law)
-    assert not any("def check_worst_px(" in c for c in cells)
+    # the answer and the call (its source named the right answer)
+    assert not any("def check_doubling_cut(" in c for c in cells)
     at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
     assert cells[at + 1].splitlines()[0].startswith("my_px = None")
-    assert "bench.check_worst_px(my_px)" in cells[at + 1] and "laws" not in cells[at + 1]
-    assert "measured cut" not in cells[at + 1] and len(cells[at + 1].splitlines()) <= 3
-    right, verdict = bench.check_worst_px(round(guess, 1))
-    assert right and "not the square law's halving" in verdict
+    assert "bench.check_doubling_cut(my_px)" in cells[at + 1] and "more" not in cells[at + 1]
+    assert len(cells[at + 1].splitlines()) <= 3
 
 
 def test_06_review_r238_integer_prices_held_text_and_float32_bits():
@@ -5001,34 +4993,44 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
 
-def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
-    """Review r243 P1: "the longest N under one pixel at 1024²" came out 8 under the square
-    law and under the measured cut alike. The Your turn asks N = 16's worst pixel at 1024²,
-    where they differ (2.05 against 2.46; 2.51 measured); its check fails on the square law and
-    says why."""
+def test_06_review_r268_your_turn_asks_which_way_n32s_cut_moves():
+    """Review r268 P2 (r243 P1, r252 P1): the Your turn was one division of printed numbers
+    (512²'s worst pixel cut once more as from 256²). It now asks whether doubling the pixels
+    across once more cuts N = 32's worst pixel by more than the last time (1.22x), about as
+    much, or less: more (1.71x), since at 256² and 512² its steepest piece is a whole span
+    shorter than N, at 1024² a piece of N. The study's checker judges the direction; repeating
+    the printed cut, or no cut, or more than the square law fails."""
     import functools
-    from types import SimpleNamespace
 
     from teachraster.study import bench
 
     ns, cells, md, printed = _06_r243()
-    # P1: the square law (512²'s worst halved) and the measured cut answer differently
     at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
     asked = " ".join(cells[at].split())
-    assert "How many pixels off will $N = 16$'s worst pixel be?" in asked and "1024 × 1024" in asked
-    fast = SimpleNamespace(floor_errors=functools.cache(bench.floor_errors))
-    assert "bench.check_worst_px(my_px)" in cells[at + 1]  # r252 P1: the study's checker
-    check = functools.partial(bench.check_worst_px, errors=fast.floor_errors)
-    half, cut = ns.worst_512[16], ns.cut_worst[16]
-    right, verdict = check(round(half / 2, 2))
-    assert not right and "the square law" in " ".join(verdict.split())
-    assert "where w changes most across a piece" in " ".join(verdict.split())
-    right, verdict = check(round(half / cut, 2))
-    assert right and "not the square law's halving" in verdict
-    assert not check(round(half / 4, 2))[0] and not check(round(half, 2))[0]
+    assert "1024 × 1024" in asked and "$N = 32$'s worst pixel" in asked
+    assert "by more than last time, about as much, or less?" in asked
+    assert "cut it less than it cut $N = 16$'s" in asked
+    assert ns.cut_worst[32] < ns.cut_worst[16]
+    line = ("  " + ", ".join(f"N = {n} {ns.worst_px[n]:.2f} and {ns.worst_512[n]:.2f} px "
+                             f"({ns.cut_worst[n]:.2f}x)" for n in (16, 32)))  # fmt: skip
+    if "the worst pixel at 256² and 512²" in printed:  # held by q_quake in the browser
+        assert line in printed.splitlines()
+    # the steepest pieces the question points at: a whole span shorter than N at 256²
+    n32 = ns.steepest[32]
+    assert n32["x1"] - n32["x0"] < 32 and n32["x1"] - n32["x0"] == n32["span"] - 1
+    errors = functools.cache(bench.floor_errors)
+    check = functools.partial(bench.check_doubling_cut, errors=errors)
+    half, before = ns.worst_512[32], ns.cut_worst[32]
+    right, verdict = check(round(half / 1.7, 2))
+    assert right and "is more than the" in verdict and "a whole span, shorter than N" in verdict
+    assert check(round(half / 2, 2))[0]  # the square law's halving: the right way
+    for wrong in (half / before, half, half / 3):  # the last cut again, no cut, too much
+        assert not check(round(wrong, 2))[0]
     assert check(None) == (False, "no answer yet") and check(True)[0] is False
-    measured = float(fast.floor_errors(1024, "subdivided", 16)[1].max())
-    assert abs(np.log(measured * cut / half)) < abs(np.log(measured * 2 / half)) / 2
+    measured = float(errors(1024, "subdivided", 32)[1].max())
+    assert half / measured > 1.1 * before  # the floor's cut grew
+    pieces = {s: bench.steepest_piece(s, 32) for s in (256, 512, 1024)}
+    assert [p["x1"] - p["x0"] < 32 for p in pieces.values()] == [True, True, False]
 
 
 def test_06_review_r243_m2_half_precision_beside_float32():

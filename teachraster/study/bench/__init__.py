@@ -122,7 +122,7 @@ from .timing import (
     time_rows,
 )
 from .worst_pixel import (
-    check_worst_px,
+    check_doubling_cut,
     steepest_piece,
 )
 
@@ -151,7 +151,7 @@ __all__ = [
     "columns",
     "depth_clip",
     "depth_pairs",
-    "check_worst_px",
+    "check_doubling_cut",
     "steepest_piece",
     "slanted_pairs",
     "exact_coverage",
