@@ -5937,3 +5937,30 @@ def test_05b_review_r260_the_near_plane_sets_the_resolution():
     summary = " ".join("".join(nb["cells"][-1]["source"]).split())
     assert "far/near ratio" not in summary and "set by the near plane" in summary
     assert max(len(line) for line in printed.splitlines()) <= 80
+
+
+def test_06_review_r268_m3_approximate_reciprocal_beside_float32():
+    """r268 M2 (r252 M3): the approximate reciprocal (SSE's rcpps, 12 bits) with and without one
+    Newton step, its measured error on the floor beside float32's and float16's, printed and
+    quoted."""
+    import json
+
+    from teachraster.study import bench
+
+    ns, cells, md, printed = _06_r243()
+    rcp, newton = ns.rcp["rcp12"], ns.rcp["rcp12 newton"]
+    assert bench.RCP_BITS == 12
+    # "about as many texels as float16", "well under a texel"; Newton: float32's
+    assert 0.7 < rcp[0] / ns.f16_worst < 1.3 and rcp[0] < 0.1
+    assert 0.9 < newton[0] / ns.f32_worst < 1.1
+    assert rcp[0] > 30 * newton[0]
+    text = " ".join(md.split())
+    assert "**An approximate reciprocal**" in text and "`rcpps`" in text
+    assert "as many texels as float16" in text and "the result is float32's" in text
+    assert (
+        f"the reciprocal to 12 bits (relative error up to 2^-12): worst error\n"
+        f"  {rcp[0]:.3f} texels, {rcp[1]:.2f} px on screen" in printed
+    )
+    assert f"({newton[0] / ns.f32_worst:.2f}x float32's)" in printed
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    assert any("perspective {name}" in "".join(c["source"]) for c in nb["cells"])

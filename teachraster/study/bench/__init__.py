@@ -68,6 +68,7 @@ from .ground_truth import (
     uv_ground_truth,
 )
 from .groups import (
+    RCP_BITS,
     bench_depth,
     bench_edges,
     bench_fill,
@@ -130,6 +131,7 @@ __all__ = [
     "COMMON_COLUMNS",
     "DEPTH_DISTANCES",
     "DEPTH_FORMATS",
+    "RCP_BITS",
     "DEPTH_GAP",
     "DEPTH_MAPPINGS",
     "DEPTH_VARIANTS",
