@@ -100,12 +100,9 @@ def test_06_review_r238_the_law_the_floor_follows():
     the worst pixel, which the 1024² floor does not follow (4x the pixels cut it 2.1-2.7x). The
     law the measurements support, with its reason: the mean on screen follows N² / pixels
     across (about 4 per halving of N, 2 per doubling of the pixels), the worst pixel less (it
-    lies where w changes most across a piece); the your-turn's estimate of N = 16's worst pixel
-    at 1024² follows from the 256² and 512² lines (r243 P1), and its checker prints the 1024²
-    one."""
+    lies where w changes most across a piece); the your-turn's checker is the study's
+    (r252 P1; its question: test_06_review_r268_your_turn_...)."""
     import json
-
-    from teachraster.study import bench
 
     ns = lesson("06_what_accuracy_costs")
     assert 3.5 < min(ns.mean_px_cut) and max(ns.mean_px_cut) < 5.1  # the mean: about 4
@@ -120,10 +117,7 @@ def test_06_review_r238_the_law_the_floor_follows():
         "the mean error goes like $N^2$ divided by the pixels across, and the worst pixel's "
         "more slowly, in $N$ and in the pixels across alike"
     ) in text
-    assert f"up to $r = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
-    # the your-turn: 512²'s worst pixel cut once more as from 256² (r243 P1: at N = 16)
-    guess = ns.worst_512[16] / ns.cut_worst[16]
-    assert 2.3 < guess < 2.7 and ns.worst_512[16] / 2 < 2.2
+    assert f"up to $\\rho = {ns.ratio_q:.2f}$ across one of $N = 16$'s pieces" in text
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
@@ -132,14 +126,12 @@ def test_06_review_r238_the_law_the_floor_follows():
     assert "every pixel is a quarter as wide" not in md
     assert "On screen the mean error goes like $N^2$ divided by the pixels across" in md
     # r252 P1: the checker lives in the study, not in the student's cell, which holds only
-    # the answer and the call (its source named the right law)
-    assert not any("def check_worst_px(" in c for c in cells)
+    # the answer and the call (its source named the right answer)
+    assert not any("def check_doubling_cut(" in c for c in cells)
     at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
     assert cells[at + 1].splitlines()[0].startswith("my_px = None")
-    assert "bench.check_worst_px(my_px)" in cells[at + 1] and "laws" not in cells[at + 1]
-    assert "measured cut" not in cells[at + 1] and len(cells[at + 1].splitlines()) <= 3
-    right, verdict = bench.check_worst_px(round(guess, 1))
-    assert right and "not the square law's halving" in verdict
+    assert "bench.check_doubling_cut(my_px)" in cells[at + 1] and "more" not in cells[at + 1]
+    assert len(cells[at + 1].splitlines()) <= 3
 
 
 def test_06_review_r238_integer_prices_held_text_and_float32_bits():
@@ -5001,34 +4993,44 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
 
-def test_06_review_r243_p1_your_turn_tells_the_square_law_from_the_finding():
-    """Review r243 P1: "the longest N under one pixel at 1024²" came out 8 under the square
-    law and under the measured cut alike. The Your turn asks N = 16's worst pixel at 1024²,
-    where they differ (2.05 against 2.46; 2.51 measured); its check fails on the square law and
-    says why."""
+def test_06_review_r268_your_turn_asks_which_way_n32s_cut_moves():
+    """Review r268 P2 (r243 P1, r252 P1): the Your turn was one division of printed numbers
+    (512²'s worst pixel cut once more as from 256²). It now asks whether doubling the pixels
+    across once more cuts N = 32's worst pixel by more than the last time (1.22x), about as
+    much, or less: more (1.71x), since at 256² and 512² its steepest piece is a whole span
+    shorter than N, at 1024² a piece of N. The study's checker judges the direction; repeating
+    the printed cut, or no cut, or more than the square law fails."""
     import functools
-    from types import SimpleNamespace
 
     from teachraster.study import bench
 
     ns, cells, md, printed = _06_r243()
-    # P1: the square law (512²'s worst halved) and the measured cut answer differently
     at = next(i for i, c in enumerate(cells) if c.startswith("### Your turn"))
     asked = " ".join(cells[at].split())
-    assert "How many pixels off will $N = 16$'s worst pixel be?" in asked and "1024 × 1024" in asked
-    fast = SimpleNamespace(floor_errors=functools.cache(bench.floor_errors))
-    assert "bench.check_worst_px(my_px)" in cells[at + 1]  # r252 P1: the study's checker
-    check = functools.partial(bench.check_worst_px, errors=fast.floor_errors)
-    half, cut = ns.worst_512[16], ns.cut_worst[16]
-    right, verdict = check(round(half / 2, 2))
-    assert not right and "the square law" in " ".join(verdict.split())
-    assert "where w changes most across a piece" in " ".join(verdict.split())
-    right, verdict = check(round(half / cut, 2))
-    assert right and "not the square law's halving" in verdict
-    assert not check(round(half / 4, 2))[0] and not check(round(half, 2))[0]
+    assert "1024 × 1024" in asked and "$N = 32$'s worst pixel" in asked
+    assert "by more than last time, about as much, or less?" in asked
+    assert "cut it less than it cut $N = 16$'s" in asked
+    assert ns.cut_worst[32] < ns.cut_worst[16]
+    line = ("  " + ", ".join(f"N = {n} {ns.worst_px[n]:.2f} and {ns.worst_512[n]:.2f} px "
+                             f"({ns.cut_worst[n]:.2f}x)" for n in (16, 32)))  # fmt: skip
+    if "the worst pixel at 256² and 512²" in printed:  # held by q_quake in the browser
+        assert line in printed.splitlines()
+    # the steepest pieces the question points at: a whole span shorter than N at 256²
+    n32 = ns.steepest[32]
+    assert n32["x1"] - n32["x0"] < 32 and n32["x1"] - n32["x0"] == n32["span"] - 1
+    errors = functools.cache(bench.floor_errors)
+    check = functools.partial(bench.check_doubling_cut, errors=errors)
+    half, before = ns.worst_512[32], ns.cut_worst[32]
+    right, verdict = check(round(half / 1.7, 2))
+    assert right and "is more than the" in verdict and "a whole span, shorter than N" in verdict
+    assert check(round(half / 2, 2))[0]  # the square law's halving: the right way
+    for wrong in (half / before, half, half / 3):  # the last cut again, no cut, too much
+        assert not check(round(wrong, 2))[0]
     assert check(None) == (False, "no answer yet") and check(True)[0] is False
-    measured = float(fast.floor_errors(1024, "subdivided", 16)[1].max())
-    assert abs(np.log(measured * cut / half)) < abs(np.log(measured * 2 / half)) / 2
+    measured = float(errors(1024, "subdivided", 32)[1].max())
+    assert half / measured > 1.1 * before  # the floor's cut grew
+    pieces = {s: bench.steepest_piece(s, 32) for s in (256, 512, 1024)}
+    assert [p["x1"] - p["x0"] < 32 for p in pieces.values()] == [True, True, False]
 
 
 def test_06_review_r243_m2_half_precision_beside_float32():
@@ -5869,37 +5871,86 @@ def test_07_review_r266_the_e_sum_and_a_try_it_not_answered_before():
 
 
 def test_06_one_span_explorer_and_q_span():
-    """Review r252 change 1: subdivision on one span the student moves (N, r), with a
-    question answered by moving it; the cuts it asks for printed under it, held by q_span."""
+    """Review r252 change 1: subdivision on one span the student moves (N, r). r268 P1/C1: the
+    question is asked before the explorer shows (it is held until q_span is checked), the cuts
+    printed after; its explanation ties the span to the floor by the floor's own numbers (its
+    steepest pieces' ρ and the worst pixel's cuts, printed under its chart), not by a
+    "hundredfold" the floor's pieces never reach."""
     import json
 
     from notebook_runs import executed, streams
 
+    from teachraster.study.span_subdivision import SPAN_PIXELS, SPAN_TEXELS
     from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     ids = [c.get("id") for c in nb["cells"]]
     cells = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
-    # where the lesson explains subdivision: after the floor's figures, before the Your turn
-    assert ids.index("c05") < ids.index("spantext") < ids.index("spanexplorer")
-    assert ids.index("spanexplorer") < ids.index("q06span") < ids.index("spancuts")
+    # where the lesson explains subdivision: after the floor's figures, before the Your turn;
+    # the question before the explorer, which is held until it is checked
+    assert ids.index("c05") < ids.index("spantext") < ids.index("q06span")
+    assert ids.index("q06span") < ids.index("spanexplorer") < ids.index("spancuts")
     assert ids.index("spancuts") < ids.index("yourturn")
-    assert cells["spancuts"].startswith("q_span.hold()")
+    for held in ("spanexplorer", "spancuts"):
+        assert cells[held].startswith("q_span.hold()")
     assert nb["cells"][ids.index("spancuts")]["metadata"]["jupyter"]["source_hidden"]
-    # the explorer starts where the question's low r is (a widget is not kept in the globals)
+    # the explorer starts at r = 10, a slider stop, its last piece near the floor's steepest
     assert f"SpanSubdivisionExplorer(16, {ns.span_r[0]:g})" in cells["spanexplorer"]
-    assert SpanSubdivisionExplorer.__module__ in cells["spanexplorer"]
-    # the text's claims: a cut of about 4 at a low r (the square law), less at r = 100
-    assert 3.5 < ns.span_cut[ns.span_r[0]] <= 4.0
+    assert SpanSubdivisionExplorer.__module__ in cells["q06span"]
+    assert ns.span_r == (10.0, 100.0) and abs(ns.near.rho[ns.near.worst] - ns.ratio_q) < 0.5
+    text = " ".join(cells["spantext"].split())
+    assert f"{SPAN_PIXELS} pixels ({SPAN_PIXELS - 1} steps)" in text
+    assert f"crossing {SPAN_TEXELS} texels" in text and "cut of about 4" in text
+    assert "by hand" not in text and "by moving the explorer" not in text
+    # the question: a large r, asked without the explorer; the answer between 2 and 4
+    asked = ns.span_question
+    assert "Move the explorer" not in asked and "hundredfold" not in asked
+    assert f"reaches {ns.ratio_q:.2f} at N = 16" in asked and "r = 100" in asked
     assert 2.2 < ns.cut100 < 3.5 and ns.span_answer == ns.span_choices[1]
-    assert "cut of about 4" in " ".join(cells["spantext"].split())
-    # the explanation's worst piece is the span's last, at both N
+    assert 3.0 < ns.span_cut[ns.span_r[0]] < 3.5
+    # the explanation's worst piece is the span's last, at both N; the floor's numbers
     assert all(ns.far[n].worst == len(ns.far[n].rho) - 1 for n in (8, 16))
+    said = " ".join(ns.span_explain.split())
+    assert "hundredfold" not in said and "The floor's worst pixel lies on such pieces" not in said
+    assert f"fell {ns.cut_by[16]:.2f} times from N = 16 to 8" in said
+    assert f"least, {ns.cut_by[32]:.2f}, from 32 to 16" in said
+    assert f"ρ = {ns.steepest[32]['rho']:.2f}" in said
+    assert min(ns.cut_by, key=ns.cut_by.get) == max(
+        ns.steepest, key=lambda n: ns.steepest[n]["rho"]
+    )
     printed = streams(executed("06_what_accuracy_costs").notebook())
     if "halving N cut it" in printed:  # held in the browser until q_span is checked
         for r in ns.span_r:
             assert f"{ns.span_cut[r]:.2f} times" in printed
+
+
+def test_06_review_r268_the_floors_cuts_and_steepest_pieces_printed():
+    """r268 C1: the floor's worst pixel falls 3.70x from N = 16 to 8 and least (2.72x) from 32
+    to 16: both printed under the law's chart, each beside the larger N's steepest piece
+    (ρ, its length, its span's), and the held text quotes them."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("06_what_accuracy_costs")
+    assert list(ns.cut_by) == [4, 8, 16, 32]
+    assert 3.5 < ns.cut_by[16] < 3.9 and 2.5 < ns.cut_by[32] < 2.9
+    assert ns.steepest[16]["rho"] == pytest.approx(ns.ratio_q)
+    n32 = ns.steepest[32]
+    assert n32["x1"] - n32["x0"] == n32["span"] - 1 < 32  # a whole span, shorter than N
+    text = " ".join(ns.QUAKE_TEXT.split())
+    assert f"is {ns.cut_by[16]:.2f} from $N = 16$ to 8, near the square law's 4" in text
+    assert f"smallest, {ns.cut_by[32]:.2f}, from 32 to 16" in text
+    assert f"$\\rho = {n32['rho']:.2f}$: a whole span of {n32['span']} pixels" in text
+    assert "For a large r the share nears 1" not in text
+    assert "a piece of $N$ pixels covers half as much of the floor" in text
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    if "halving N: the worst pixel's cut" in printed:  # held in the browser by q_quake
+        for n, cut in ns.cut_by.items():
+            sp = ns.steepest[n]
+            line = (f"  {n:2d} -> {n // 2:2d}: cut {cut:.2f}x   ρ = {sp['rho']:.2f}, "
+                    f"{sp['x1'] - sp['x0']} px of a span of {sp['span']} px")  # fmt: skip
+            assert line in printed.splitlines()
+        assert max(len(x) for x in printed.splitlines()) <= 80
 
 
 def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
@@ -5956,3 +6007,30 @@ def test_05b_review_r260_the_near_plane_sets_the_resolution():
     summary = " ".join("".join(nb["cells"][-1]["source"]).split())
     assert "far/near ratio" not in summary and "set by the near plane" in summary
     assert max(len(line) for line in printed.splitlines()) <= 80
+
+
+def test_06_review_r268_m3_approximate_reciprocal_beside_float32():
+    """r268 M2 (r252 M3): the approximate reciprocal (SSE's rcpps, 12 bits) with and without one
+    Newton step, its measured error on the floor beside float32's and float16's, printed and
+    quoted."""
+    import json
+
+    from teachraster.study import bench
+
+    ns, cells, md, printed = _06_r243()
+    rcp, newton = ns.rcp["rcp12"], ns.rcp["rcp12 newton"]
+    assert bench.RCP_BITS == 12
+    # "about as many texels as float16", "well under a texel"; Newton: float32's
+    assert 0.7 < rcp[0] / ns.f16_worst < 1.3 and rcp[0] < 0.1
+    assert 0.9 < newton[0] / ns.f32_worst < 1.1
+    assert rcp[0] > 30 * newton[0]
+    text = " ".join(md.split())
+    assert "**An approximate reciprocal**" in text and "`rcpps`" in text
+    assert "as many texels as float16" in text and "the result is float32's" in text
+    assert (
+        f"the reciprocal to 12 bits (relative error up to 2^-12): worst error\n"
+        f"  {rcp[0]:.3f} texels, {rcp[1]:.2f} px on screen" in printed
+    )
+    assert f"({newton[0] / ns.f32_worst:.2f}x float32's)" in printed
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    assert any("perspective {name}" in "".join(c["source"]) for c in nb["cells"])

@@ -23,17 +23,71 @@ def engine_row(length: int, r: float, texels: float, n: int, mode: str = "subdiv
     return fill.attrs["u"][8, cols]
 
 
+@pytest.mark.parametrize("length", [ss.SPAN_PIXELS, 64])
 @pytest.mark.parametrize("n, r", [(4, 7.0), (16, 7.0), (16, 60.0), (64, 3.0), (2, 1.5)])
-def test_the_span_model_is_the_engines_subdivided_interpolation(n, r):
-    s = ss.subdivide_span(n, r, length=64, texels=256.0)
-    assert np.allclose(engine_row(64, r, 256.0, n), s.pixel_u, atol=1e-9)
-    exact = engine_row(64, r, 256.0, n, "perspective")
-    assert np.allclose(exact, ss.true_u(np.arange(64), 64, r, 256.0), atol=1e-9)
-    # every pixel's miss within its piece's closed form, the worst close to it
-    piece = np.searchsorted(s.anchors, np.arange(64), side="right") - 1
+def test_the_span_model_is_the_engines_subdivided_interpolation(n, r, length):
+    s = ss.subdivide_span(n, r, length=length, texels=256.0)
+    assert np.allclose(engine_row(length, r, 256.0, n), s.pixel_u, atol=1e-9)
+    exact = engine_row(length, r, 256.0, n, "perspective")
+    assert np.allclose(exact, ss.true_u(np.arange(length), length, r, 256.0), atol=1e-9)
+    # every pixel's miss within its piece's closed form, in texels and on screen
+    piece = np.searchsorted(s.anchors, np.arange(length), side="right") - 1
     piece = np.minimum(piece, len(s.bound_texels) - 1)
+    assert np.array_equal(piece, s.piece)
     assert np.all(np.abs(s.pixel_miss) <= s.bound_texels[piece] + 1e-9)
-    assert np.abs(s.pixel_miss).max() >= 0.9 * s.worst_texels
+    assert np.all(np.abs(s.pixel_miss_px) <= s.bound_px[piece] + 1e-9)
+
+
+def test_the_explorers_span_has_pieces_exactly_n_long():
+    """r268 W1: 65 centres, 64 steps: every N of the slider divides the span evenly, and the
+    cut when N halves falls steadily as r grows (64 centres left a short last piece)."""
+    assert ss.SPAN_PIXELS == 65
+    for n in (2, 4, 8, 16, 32, 64):
+        assert set(np.diff(ss.anchors(ss.SPAN_PIXELS, n))) == {n}
+    cuts = [ss.subdivide_span(16, r).worst_px / ss.subdivide_span(8, r).worst_px
+            for r in 10 ** (np.arange(1, 17) / 8)]  # fmt: skip
+    assert all(a > b for a, b in zip(cuts, cuts[1:])), cuts
+
+
+def brute_force(n: int, r: float):
+    """The span at pixel centres, from the formulas alone: the chord's u by interpolating the
+    anchors' exact u; where the chord's u truly lies, by a fine search of the true u."""
+    length, texels = ss.SPAN_PIXELS, float(ss.SPAN_TEXELS)
+    x = np.arange(length)
+    at = np.unique(np.r_[np.arange(0, length, n), length - 1])
+    t = x / (length - 1)
+    u = texels * (t / r) / ((1 - t) + t / r)
+    chord = np.interp(x, at, u[at])
+    fine = np.linspace(0, length - 1, 64 * 2000 + 1)
+    tf = fine / (length - 1)
+    uf = texels * (tf / r) / ((1 - tf) + tf / r)
+    lies = np.interp(chord, uf, fine)  # u grows along the span: invert by interpolation
+    return at, chord - u, lies - x
+
+
+@pytest.mark.parametrize("n", [2, 64, 16])
+@pytest.mark.parametrize("r", [1.0, 100.0, 10.0])
+def test_the_caption_reports_pixel_centres_from_one_piece(n, r):
+    """r268 W2: the caption's texels and px are the misses at the pixel centres of one piece
+    (the one whose centre is farthest off on screen), checked by brute force at both ends of
+    both sliders; its bound is that piece's closed form."""
+    from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
+
+    at, miss, miss_px = brute_force(n, r)
+    piece = np.minimum(np.searchsorted(at, np.arange(len(miss)), side="right") - 1, len(at) - 2)
+    worst = int(piece[np.argmax(np.abs(miss_px))])
+    on = piece == worst
+    texels, px = np.abs(miss[on]).max(), np.abs(miss_px).max()
+    assert abs(miss_px[on]).max() == px
+    ex = SpanSubdivisionExplorer(n, r, backend="image")
+    s, caption = ex.result, ex.info.value
+    assert s.worst == worst and abs(s.worst_texels - texels) < 1e-9
+    assert abs(s.worst_px - px) < 1e-3
+    a, b = int(at[worst]), int(at[worst + 1])
+    assert f"pixels {a}–{b}" in caption and f"of its {b - a} px" in caption
+    assert f"<b>{texels:.3g} texels</b>" in caption and f"<b>{px:.3g} px</b>" in caption
+    assert f"Δu = {s.anchor_u[worst + 1] - s.anchor_u[worst]:.3g} texels" in caption
+    ex.close()
 
 
 def test_the_closed_form_is_the_largest_gap_of_a_chord():
@@ -54,7 +108,7 @@ def test_the_closed_form_is_the_largest_gap_of_a_chord():
 def test_on_screen_the_miss_follows_the_square_law_only_where_w_changes_little():
     cut = {r: ss.subdivide_span(16, r).worst_px / ss.subdivide_span(8, r).worst_px
            for r in (1.2, 100.0)}  # fmt: skip
-    assert 3.7 < cut[1.2] <= 4.0 and 2.0 < cut[100.0] < 3.0
+    assert 3.8 < cut[1.2] <= 4.0 and 2.0 < cut[100.0] < 3.0
 
 
 def test_the_explorer_moves_its_artists_and_stays_finite_at_every_slider_end():

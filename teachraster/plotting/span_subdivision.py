@@ -69,7 +69,7 @@ def plot_span(ax_u, ax_miss, s: SpanSubdivision) -> SpanArtists:
     (dots,) = ax_u.plot(s.anchors, s.anchor_u, "o", color=COLORS["outside"], ms=8,
                         label="exact divides")  # fmt: skip
     (worst,) = ax_u.plot(*_worst_segment(s), color=OKABE_ITO["blue"], lw=4,
-                         solid_capstyle="butt", label="worst miss")  # fmt: skip
+                         solid_capstyle="butt", label="worst miss at a centre")  # fmt: skip
     worst_text = ax_u.annotate("", (0, 0), xytext=(-10, 0), textcoords="offset points",
                                ha="right", va="center", color=OKABE_ITO["blue"],
                                fontsize="small")  # fmt: skip

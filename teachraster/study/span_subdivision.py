@@ -28,8 +28,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-#: The span the explorer draws: its length in pixels and the texels u crosses along it.
-SPAN_PIXELS, SPAN_TEXELS = 64, 256
+#: The span the explorer draws: its length in pixels and the texels u crosses along it. 65
+#: pixel centres are 64 steps, so that every N of the sliders (2 ... 64) divides the span into
+#: pieces of exactly N pixels' steps (64 centres left the last piece one step short).
+SPAN_PIXELS, SPAN_TEXELS = 65, 256
 
 
 def miss_share(rho) -> np.ndarray:
@@ -65,6 +67,17 @@ def true_u(x, length: int, r: float, texels: float):
     return texels * (t / r) / ((1.0 - t) + t / r)
 
 
+def where_u(u, length: int, r: float, texels: float):
+    """The pixel position whose true u is ``u``: :func:`true_u` inverted (a share a = u/texels
+    of the way in u lies at t = a / (a + (1 - a)/r) of the span).
+
+    >>> round(float(where_u(true_u(20.0, 65, 7.0, 256.0), 65, 7.0, 256.0)), 9)
+    20.0
+    """
+    a = np.asarray(u, dtype=float) / texels
+    return a / (a + (1.0 - a) / r) * max(length - 1, 1)
+
+
 def depth_w(x, length: int, r: float):
     """w at pixel position ``x``: its reciprocal affine in x, 1 at the first pixel, r at the last."""
     t = np.asarray(x, dtype=float) / max(length - 1, 1)
@@ -83,33 +96,42 @@ class SpanSubdivision:
     anchor_u: np.ndarray  # u there (texels)
     pixel_u: np.ndarray  # the chords' u at every pixel centre
     pixel_miss: np.ndarray  # chord minus true u at every pixel centre (texels)
+    pixel_miss_px: np.ndarray  # where the chord's u truly lies, minus the centre (pixels)
+    piece: np.ndarray  # the piece each pixel centre lies on (an anchor: the piece it starts)
     rho: np.ndarray  # each piece's depth ratio, later over earlier
     bound_texels: np.ndarray  # each piece's worst miss between its anchors (texels)
     bound_px: np.ndarray  # and on screen (pixels)
-    worst: int  # the piece with the largest bound in texels
-    worst_x: float  # where on it (pixel position) the miss is largest
+    worst: int  # the piece whose pixel centre shows a texel farthest from where it belongs
+    worst_x: int  # the centre on that piece where the miss in texels is largest
 
     @property
     def worst_texels(self) -> float:
-        return float(self.bound_texels[self.worst])
+        """The largest miss in texels at a pixel centre of the worst piece."""
+        return float(abs(self.pixel_miss[self.worst_x]))
 
     @property
     def worst_px(self) -> float:
-        return float(self.bound_px.max())
+        """The largest miss on screen at a pixel centre (on the worst piece, by its choice)."""
+        return float(np.abs(self.pixel_miss_px).max())
+
+    @property
+    def worst_px_x(self) -> int:
+        """The pixel centre of :attr:`worst_px` (on the worst piece)."""
+        return int(np.argmax(np.abs(self.pixel_miss_px)))
 
 
 def subdivide_span(n: int, r: float, length: int = SPAN_PIXELS,
                    texels: float = SPAN_TEXELS) -> SpanSubdivision:  # fmt: skip
     """The span subdivided by ``n`` at depth ratio ``r`` (the last pixel's w over the
-    first's, ≥ 1): the anchors, the chords at every pixel, and each piece's worst miss by the
-    closed form (between anchors, where no pixel centre need lie: the pixels' own misses are
-    at most that).
+    first's, ≥ 1): the anchors, the chords and their misses at every pixel centre (in texels
+    and on screen), and each piece's worst miss by the closed form (between anchors, where no
+    pixel centre need lie: the centres' own misses are at most that).
 
     >>> s = subdivide_span(64, 4.0, length=65, texels=100.0)   # one piece: the whole span
-    >>> round(s.worst_texels, 4), round(s.worst_px, 4), s.worst_x     # a third, at τ = 2/3
-    (33.3333, 21.3333, 42.66666666666667)
-    >>> bool(abs(s.pixel_miss).max() <= s.worst_texels)
-    True
+    >>> [round(float(b[0]), 4) for b in (s.bound_texels, s.bound_px)]  # a third of Δu, of 64 px
+    [33.3333, 21.3333]
+    >>> s.worst_x, round(s.worst_texels, 4), round(s.worst_px, 4)   # τ = 2/3 lies near 43
+    (43, 33.3292, 21.3307)
     """
     n, length = int(n), int(length)
     r, texels = float(r), float(texels)
@@ -125,9 +147,12 @@ def subdivide_span(n: int, r: float, length: int = SPAN_PIXELS,
     change = np.diff(u_at) if len(at) > 1 else np.zeros(1)
     pieces = np.diff(at) if len(at) > 1 else np.zeros(1)
     bound_texels, bound_px = share * change, share * pieces
-    worst = int(np.argmax(bound_texels))
-    root = np.sqrt(rho[worst])
-    worst_x = float(at[worst] + pieces[worst] * root / (root + 1.0)) if len(at) > 1 else 0.0
-    return SpanSubdivision(length, n, r, texels, at, u_at, chords,
-                           chords - true_u(x, length, r, texels), rho, bound_texels,
-                           bound_px, worst, worst_x)  # fmt: skip
+    miss = chords - true_u(x, length, r, texels)
+    miss_px = where_u(chords, length, r, texels) - x
+    piece = np.minimum(np.searchsorted(at, x, side="right") - 1, len(rho) - 1)
+    # the piece and both numbers the explorer's caption gives: from the same centres
+    worst = int(piece[np.argmax(np.abs(miss_px))])
+    on = np.flatnonzero(piece == worst)
+    worst_x = int(on[np.argmax(np.abs(miss[on]))])
+    return SpanSubdivision(length, n, r, texels, at, u_at, chords, miss, miss_px, piece, rho,
+                           bound_texels, bound_px, worst, worst_x)  # fmt: skip

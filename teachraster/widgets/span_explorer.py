@@ -48,11 +48,11 @@ class SpanSubdivisionExplorer(Shown):
 
     Examples
     --------
-    >>> ex = SpanSubdivisionExplorer(16, 1.5, backend="image")
+    >>> ex = SpanSubdivisionExplorer(16, 1.5, backend="image")  # 65 centres: 64 steps
     >>> before = ex.result.worst_px
     >>> ex.n.value = 8                       # nearly the square law where w changes little
     >>> round(before / ex.result.worst_px, 1)
-    3.7
+    3.9
     >>> ex.close()
     """
 
@@ -97,10 +97,11 @@ class SpanSubdivisionExplorer(Shown):
             control.observe(lambda change: self.update(), "value")
         title = title_html(
             "One span: an exact divide every N pixels",
-            f"A {SPAN_PIXELS}-pixel span whose depth w grows by a factor r from its first "
-            "pixel to its last. Dark: the true u; vermillion: the chords between the exact "
-            "divides; blue: the worst miss, and each piece's closed form (√ρ − 1)²/(ρ − 1) of "
-            "its change of u, ρ the piece's own depth ratio.",
+            f"A span of {SPAN_PIXELS} pixels ({SPAN_PIXELS - 1} steps) whose depth w grows by a "
+            "factor r from its first pixel to its last. Dark: the true u; vermillion: the "
+            "chords between the exact divides; blue: the worst miss at a pixel centre, and "
+            "each piece's closed form (√ρ − 1)²/(ρ − 1) of its change of u, ρ the piece's own "
+            "depth ratio.",
         )
         self.widget = projector_text(
             widgets.VBox([title, control_row([self.n, self.r]), *info_widgets,
@@ -135,12 +136,15 @@ class SpanSubdivisionExplorer(Shown):
         update_span(self.art, self.result)
 
     def _info_html(self) -> str:
+        """The worst piece's numbers, all from its pixel centres, and its closed-form bound."""
         s = self.result
         k = s.worst
-        a, b = int(s.anchors[k]), int(s.anchors[k + 1]) if len(s.anchors) > 1 else 0
-        rho, change = float(s.rho[k]), float(s.anchor_u[k + 1] - s.anchor_u[k])
-        share = s.worst_texels / change if change else 0.0
-        return (f"N = {s.n}, r = {s.r:.3g}: the worst piece, pixels {a}–{b}, has ρ = "
-                f"{rho:.3g} and misses by {share:.3f} of its Δu = {change:.3g} texels: "
-                f"<b>{s.worst_texels:.3g} texels</b>; on screen a texel shown belongs at most "
-                f"<b>{s.worst_px:.3g} px</b> away ((√ρ − 1)²/(ρ − 1) of a piece's length)")  # fmt: skip
+        a, b = (int(s.anchors[k]), int(s.anchors[k + 1])) if len(s.anchors) > 1 else (0, 0)
+        rho, change = float(s.rho[k]), float(s.anchor_u[k + 1] - s.anchor_u[k]) if b else 0.0
+        share = float(s.bound_texels[k] / change) if change else 0.0
+        return (f"N = {s.n}, r = {s.r:.3g}: the worst piece, pixels {a}–{b}, ρ = {rho:.3g}. "
+                f"At its pixel centres the chord misses by up to <b>{s.worst_texels:.3g} "
+                f"texels</b> (pixel {s.worst_x}) and shows a texel that belongs up to "
+                f"<b>{s.worst_px:.3g} px</b> away (pixel {s.worst_px_x}). Between centres, "
+                f"at most (√ρ − 1)²/(ρ − 1) = {share:.3f} of its Δu = {change:.3g} texels "
+                f"and of its {b - a} px")  # fmt: skip

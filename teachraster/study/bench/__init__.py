@@ -68,6 +68,7 @@ from .ground_truth import (
     uv_ground_truth,
 )
 from .groups import (
+    RCP_BITS,
     bench_depth,
     bench_edges,
     bench_fill,
@@ -122,13 +123,15 @@ from .timing import (
     time_rows,
 )
 from .worst_pixel import (
-    check_worst_px,
+    check_doubling_cut,
+    steepest_piece,
 )
 
 __all__ = [
     "COMMON_COLUMNS",
     "DEPTH_DISTANCES",
     "DEPTH_FORMATS",
+    "RCP_BITS",
     "DEPTH_GAP",
     "DEPTH_MAPPINGS",
     "DEPTH_VARIANTS",
@@ -150,7 +153,8 @@ __all__ = [
     "columns",
     "depth_clip",
     "depth_pairs",
-    "check_worst_px",
+    "check_doubling_cut",
+    "steepest_piece",
     "slanted_pairs",
     "exact_coverage",
     "fill_triangle",

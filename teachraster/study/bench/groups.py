@@ -88,16 +88,18 @@ def floor_errors(size: int, interpolation: str, subdivision: int = 16, fills=Non
     the texture, in pixels (P,) (:func:`~.ground_truth.screen_offset_px`); and the two
     triangles' coverages. ``fills`` are the two triangles' fills when already made.
     ``"perspective float32"`` interpolates perspective-correctly in float32 (:func:`_float32_fill`),
-    ``"perspective float16"`` hands that result on in half precision (GLSL ES ``mediump``).
+    ``"perspective float16"`` hands that result on in half precision (GLSL ES ``mediump``),
+    ``"perspective rcp12"`` takes the reciprocal to 12 bits (SSE's ``rcpps``, :func:`rcp12`) and
+    ``"perspective rcp12 newton"`` refines it by one Newton step.
 
     >>> texels, px, _ = floor_errors(64, "subdivided", 2)
     >>> texels.shape[1], bool(px.max() < 1 < texels.max())   # far on the texture, near on screen
     (2, True)
     """
     xy, w, uv = floor_quad(size)
-    if fills is None and interpolation in ("perspective float32", "perspective float16"):
-        handed = np.float16 if interpolation.endswith("16") else np.float32
-        fills = [_float32_fill(xy[t], w[t], uv[t], size, handed) for t in range(2)]
+    if fills is None and interpolation in FLOAT32_FILLS:
+        handed, reciprocal = FLOAT32_FILLS[interpolation]
+        fills = [_float32_fill(xy[t], w[t], uv[t], size, handed, reciprocal) for t in range(2)]
     if fills is None:
         fills = [rasterize(Triangle(xy[t], w=w[t], attrs={"uv": uv[t]}), size, size,
                            interpolation=interpolation, subdivision=subdivision)
@@ -112,14 +114,53 @@ def floor_errors(size: int, interpolation: str, subdivision: int = 16, fills=Non
     return np.concatenate(texels), np.concatenate(px), covs
 
 
-def _float32_fill(xy, w, uv, size: int, handed=np.float32) -> SimpleNamespace:
+#: Significand bits (the leading one counted) of :func:`rcp12`'s reciprocal
+RCP_BITS = 12
+
+
+def rcp12(q: np.ndarray) -> np.ndarray:
+    """A stand-in for SSE's ``rcpps``: float32's 1/q with its significand rounded to
+    :data:`RCP_BITS` bits, a relative error of at most 2^-12 (Intel documents ``rcpps``'s as
+    under 1.5 · 2^-12, from a table, not this rounding).
+
+    >>> float(abs(rcp12(np.float32([3.0]))[0] * 3 - 1)) <= 2.0**-12
+    True
+    """
+    m, e = np.frexp(np.float32(1.0) / q)  # m in [0.5, 1): RCP_BITS bits kept
+    return np.ldexp(np.round(m * 2.0**RCP_BITS) / 2.0**RCP_BITS, e).astype(np.float32)
+
+
+def rcp12_newton(q: np.ndarray) -> np.ndarray:
+    """:func:`rcp12` refined by one Newton step r (2 − q r) in float32 (2 multiplies and a
+    subtraction): its relative error squared, down to float32's rounding."""
+    r = rcp12(q)
+    return (r * (np.float32(2.0) - q * r)).astype(np.float32)
+
+
+def _exact_rcp(q: np.ndarray) -> np.ndarray:
+    return np.float32(1.0) / q
+
+
+#: The float32 fills :func:`floor_errors` makes: (the type u and v are handed on in, the
+#: reciprocal of 1/w)
+FLOAT32_FILLS = {
+    "perspective float32": (np.float32, _exact_rcp),
+    "perspective float16": (np.float16, _exact_rcp),
+    "perspective rcp12": (np.float32, rcp12),
+    "perspective rcp12 newton": (np.float32, rcp12_newton),
+}
+
+
+def _float32_fill(
+    xy, w, uv, size: int, handed=np.float32, reciprocal=_exact_rcp
+) -> SimpleNamespace:
     """One floor triangle filled perspective-correctly in float32, as a shader receives it:
     the screen-space planes of u/w, v/w and 1/w (set up in float64, stored in float32)
     evaluated at each covered pixel centre in float32, then u = (u/w) · (1 / (1/w)), the
     reciprocal and the products rounded to float32 too. ``handed=np.float16``: u and v then
     rounded to half precision, as a ``mediump`` varying (or SPIR-V ``RelaxedPrecision``) hands
     them to a shader that keeps them in 16 bits; the interpolation itself stays float32.
-    ``coverage`` and ``attrs["uv"]`` as a fill's (float64 values that float32 holds exactly;
+    ``reciprocal``: how 1/(1/w) is taken (:data:`FLOAT32_FILLS`). ``coverage`` and ``attrs["uv"]`` as a fill's (float64 values that float32 holds exactly;
     NaN outside)."""
     cov = rasterize(Triangle(xy), size, size).coverage
     rows, cols = np.nonzero(cov)
@@ -129,7 +170,7 @@ def _float32_fill(xy, w, uv, size: int, handed=np.float32) -> SimpleNamespace:
     x, y = (cols + 0.5).astype(np.float32), (rows + 0.5).astype(np.float32)
     q = x[:, None] * a + y[:, None] * b + c  # float32 throughout
     uv_at = np.full((size, size, 2), np.nan)
-    uv_at[rows, cols] = (q[:, :2] * (np.float32(1.0) / q[:, 2:])).astype(handed)
+    uv_at[rows, cols] = (q[:, :2] * reciprocal(q[:, 2:])).astype(handed)
     return SimpleNamespace(coverage=cov, attrs={"uv": uv_at})
 
 
