@@ -772,7 +772,7 @@ def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
     np.testing.assert_allclose(ns.target_codes[er, ec], ns.px_light, atol=1e-12)
     assert np.abs(ns.target_codes - ns.light_mean).max() < 1e-12  # every pixel, light's mean
     quoted = "(" + ", ".join(f"{v:.3f}" for v in ns.px_light) + ")"
-    assert f"tr.render into an sRGB8 target, encoded: {quoted}" in printed
+    assert f"srgb8 frame.color (light), mean encoded: {quoted}, unrounded" in printed
     assert "codes averaged (tr.render here)" in printed
     # lesson 12b's table row, which the lesson now agrees with (12b is not edited)
     root = Path(__file__).resolve().parents[1]
@@ -780,6 +780,9 @@ def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
     table = " ".join("".join(c["source"]) for c in twelve)
     assert "| teachraster | yes: `frame.color` is the mean of the samples' linear values" in table
     assert "lesson 12b's table says of it" in md
+    # review r269 C1: the GPU's target stores codes (GL 4.6 §17.3.7); the simulator keeps light
+    assert "it stores linear values" not in md
+    assert "A GPU's 8-bit sRGB target stores **codes**" in md and "§17.3.6–17.3.7" in md
     # M4: the three APIs, each with its section
     assert '"Multisample resolve is performed in linear space" (D3D11.3 §5.6.6)' in md
     assert "*should* decode the samples before averaging and *must*" in md
@@ -946,7 +949,7 @@ def test_lesson_08_review_r240_resolve_promised_and_stored(ns):
     np.testing.assert_allclose(stored, ns.stored_codes[er, ec], atol=1e-9)
     assert ns.stored_codes[er, ec].tolist() == [188, 214, 201]
     printed = streams(executed("08_antialiasing").notebook())
-    assert "stored in an 8-bit sRGB image: codes (188, 214, 201) = (0.737, 0.839, 0.788)" in printed
+    assert "the 8-bit target holds codes (188, 214, 201) = (0.737, 0.839, 0.788)" in printed
     assert (
         f"{ns.stored_codes[er, ec][0] / 255:.3f}" == "0.737" and f"{ns.px_light[0]:.3f}" == "0.735"
     )
