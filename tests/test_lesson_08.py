@@ -1264,3 +1264,42 @@ def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
     assert row3[-4:].tolist() == [0.5] * 4  # no 0 at the right end from a second edge
     assert "the only edge in rows 2 and 3" in next(s for s in sources if "q_levels = Predict(" in s)
     assert [round(x, 2) for _, x in ns.crossed] == [7.5, 15.83]
+
+
+def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
+    """Review r269 M1: one GL / Direct3D / Vulkan / llvmpipe / teachraster table for the
+    lesson's five rules, with sections, consistent with lesson 12b's sRGB table. M2: a cell
+    compares llvmpipe with teachraster (positions, per-sample coverage, the resolve,
+    centroid), or says that there is no OpenGL. M3: MLAA/SMAA and temporal upscaling named.
+    S1: the standard pattern, not the grid, is off-centre at 16. S2: memory against bandwidth."""
+    from notebook_runs import executed, streams
+
+    _, sources, md = _lesson_text()
+    (table,) = [s for s in sources if s.startswith("### The lesson's rules, standard by standard")]
+    rows = [r for r in table.splitlines() if r.startswith("| ")]
+    assert (
+        rows[0]
+        == "| rule | OpenGL 4.6 (GLSL 4.60) | Direct3D 11 | Vulkan | llvmpipe | teachraster |"
+    )
+    assert [r.split(" | ")[0] for r in rows[1:]] == [
+        "| where MSAA evaluates an attribute (§2)", "| sample positions (§3)",
+        "| resolve filter (§6)", "| sRGB resolve (§6)", "| sample-rate shading (here)"]  # fmt: skip
+    for section in ("GLSL §4.5", "§14.3.1)", "§18.3.1", "§14.3.1.1", "§19.2.4", "§5.6.6", "§23.6"):
+        assert section in table, section
+    assert "`ResolveSubresource`" in table and "`sampleShadingEnable`" in table
+    assert "| not promised (§18.3.1;" in table and "| in linear light (§5.6.6) |" in table
+    printed = streams(executed("08_antialiasing").notebook())
+    if "no OpenGL here:" in printed:
+        return
+    assert all(ns.gl_same.values()) and ns.resolve_gap == 0
+    assert "sample positions = tr.sample_pattern(4): True" in printed
+    assert "§4's fan: 396 covered samples, the same ones: True" in printed
+    part, apart, centres = ns.centroid_apart
+    assert 0 < apart < part and centres
+    assert f"centroid: {part} partly covered pixels, {apart} with another value;" in printed
+    # M3, S1, S2
+    assert "(MLAA, SMAA)" in md and "(TAAU, DLSS, FSR, XeSS)" in md
+    assert "At 16 the standard pattern rounds one way" in md
+    assert "memory grows like $S$, bandwidth up to $S$" in " ".join(md.split()) or (
+        "memory grows like $S$, bandwidth up to" in md
+    )
