@@ -849,8 +849,8 @@ def test_lesson_08_review_r230_sample_shading_positions_and_discrepancy(ns):
     assert "no pattern can reach $1/S$ at every angle" not in md
     assert min(ns.edge_slopes[k] for k in ("grid", "jittered", "random")) > -0.9
     # S1
-    (ask,) = [s for s in sources if "q_levels = Predict(" in s]
-    assert "The figure below" not in ask and "Check draws it" in ask
+    (ask,) = [s for s in sources if "q_levels = PredictPixels(" in s]
+    assert "The figure below" not in ask and "Check draws the three patterns' strips" in ask
     # S9
     assert "**Exercise 6** (the exercises are numbered on their own; 6 goes with this lesson)" in md
 
@@ -1006,18 +1006,28 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
     # S: the floor's supersampling is not per_sample=True, and says so
     assert "`tr.render` has no per-sample mode" in md and "on an ordered grid" in md
     # S: a crossing between a row's two samples gives ¼ or ¾
-    (ask,) = [s for s in sources if "q_levels = Predict(" in s]
+    (ask,) = [s for s in sources if "q_levels = PredictPixels(" in s]
     assert "no quarter value" not in ask and "a quarter value there" not in ask
-    assert ask.count("odd quarter (¼ or ¾)") == 2
+    # review r269 P1: the question asks the pixels at ¼ or ¾ under the standard pattern
+    assert "Click the pixels of rows 2 and 3 that show ¼ or ¾" in ask
+    assert ns.odd_standard.sum() == 8 and ns.odd_grid.sum() == 1
+    assert [f"{x:.1f}" for _, x in ns.std_crossed] == ["1.3", "5.4", "9.6", "13.8", "17.9"]
+    explain = " ".join(ns.levels_explain.split())
+    assert "8 pixels: row 2, pixels 0, 6, 7, 8; row 3, pixels 14, 15, 16, 17." in explain
+    assert "here 1 pixel(s) show ¼ or ¾ (4 levels against the standard pattern's 5)" in explain
     # S: the summary keeps the conditions under which the positions are fixed
     summary = md.split("## Summary")[1]
     assert "fix the standard positions" not in summary
     assert (
         "`standardSampleLocations`" in summary and "`D3D11_STANDARD_MULTISAMPLE_PATTERN`" in summary
     )
-    # S: the prose on screen under 4,000 words (it was 4,738); the rest in folds
+    # S: the prose on screen under 4,000 words (it was 4,738); the rest in folds. Review r269
+    # M1's standards table is reference, not prose: its rows are not counted (prose 3,948 -> 3,867)
     markdown = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
-    on_screen = sum(len(_unfolded(m).split()) for m in markdown)
+    prose = [
+        "\n".join(r for r in _unfolded(m).splitlines() if not r.startswith("|")) for m in markdown
+    ]
+    on_screen = sum(len(p.split()) for p in prose)
     assert on_screen < 4000, on_screen
     folds = [m for m in markdown if "<details>" in m]
     assert len(folds) >= 5 and all(
@@ -1262,7 +1272,9 @@ def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
     assert ns.edge_levels == [0.0, 0.25, 0.5, 1.0] and len(ns.standard_levels) == 5
     row3 = ns.edge_grid.coverage_fraction[3]
     assert row3[-4:].tolist() == [0.5] * 4  # no 0 at the right end from a second edge
-    assert "the only edge in rows 2 and 3" in next(s for s in sources if "q_levels = Predict(" in s)
+    assert "the only edge in rows 2 and 3" in next(
+        s for s in sources if "q_levels = PredictPixels(" in s
+    )
     assert [round(x, 2) for _, x in ns.crossed] == [7.5, 15.83]
 
 
