@@ -772,7 +772,7 @@ def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
     np.testing.assert_allclose(ns.target_codes[er, ec], ns.px_light, atol=1e-12)
     assert np.abs(ns.target_codes - ns.light_mean).max() < 1e-12  # every pixel, light's mean
     quoted = "(" + ", ".join(f"{v:.3f}" for v in ns.px_light) + ")"
-    assert f"tr.render into an sRGB8 target, encoded: {quoted}" in printed
+    assert f"srgb8 frame.color (light), mean encoded: {quoted}, unrounded" in printed
     assert "codes averaged (tr.render here)" in printed
     # lesson 12b's table row, which the lesson now agrees with (12b is not edited)
     root = Path(__file__).resolve().parents[1]
@@ -780,6 +780,9 @@ def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
     table = " ".join("".join(c["source"]) for c in twelve)
     assert "| teachraster | yes: `frame.color` is the mean of the samples' linear values" in table
     assert "lesson 12b's table says of it" in md
+    # review r269 C1: the GPU's target stores codes (GL 4.6 §17.3.7); the simulator keeps light
+    assert "it stores linear values" not in md
+    assert "A GPU's 8-bit sRGB target stores **codes**" in md and "§17.3.6–17.3.7" in md
     # M4: the three APIs, each with its section
     assert '"Multisample resolve is performed in linear space" (D3D11.3 §5.6.6)' in md
     assert "*should* decode the samples before averaging and *must*" in md
@@ -846,8 +849,8 @@ def test_lesson_08_review_r230_sample_shading_positions_and_discrepancy(ns):
     assert "no pattern can reach $1/S$ at every angle" not in md
     assert min(ns.edge_slopes[k] for k in ("grid", "jittered", "random")) > -0.9
     # S1
-    (ask,) = [s for s in sources if "q_levels = Predict(" in s]
-    assert "The figure below" not in ask and "Check draws it" in ask
+    (ask,) = [s for s in sources if "q_levels = PredictPixels(" in s]
+    assert "The figure below" not in ask and "Check draws the three patterns' strips" in ask
     # S9
     assert "**Exercise 6** (the exercises are numbered on their own; 6 goes with this lesson)" in md
 
@@ -946,7 +949,7 @@ def test_lesson_08_review_r240_resolve_promised_and_stored(ns):
     np.testing.assert_allclose(stored, ns.stored_codes[er, ec], atol=1e-9)
     assert ns.stored_codes[er, ec].tolist() == [188, 214, 201]
     printed = streams(executed("08_antialiasing").notebook())
-    assert "stored in an 8-bit sRGB image: codes (188, 214, 201) = (0.737, 0.839, 0.788)" in printed
+    assert "the 8-bit target holds codes (188, 214, 201) = (0.737, 0.839, 0.788)" in printed
     assert (
         f"{ns.stored_codes[er, ec][0] / 255:.3f}" == "0.737" and f"{ns.px_light[0]:.3f}" == "0.735"
     )
@@ -1003,18 +1006,28 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
     # S: the floor's supersampling is not per_sample=True, and says so
     assert "`tr.render` has no per-sample mode" in md and "on an ordered grid" in md
     # S: a crossing between a row's two samples gives ¼ or ¾
-    (ask,) = [s for s in sources if "q_levels = Predict(" in s]
+    (ask,) = [s for s in sources if "q_levels = PredictPixels(" in s]
     assert "no quarter value" not in ask and "a quarter value there" not in ask
-    assert ask.count("odd quarter (¼ or ¾)") == 2
+    # review r269 P1: the question asks the pixels at ¼ or ¾ under the standard pattern
+    assert "Click the pixels of rows 2 and 3 that show ¼ or ¾" in ask
+    assert ns.odd_standard.sum() == 8 and ns.odd_grid.sum() == 1
+    assert [f"{x:.1f}" for _, x in ns.std_crossed] == ["1.3", "5.4", "9.6", "13.8", "17.9"]
+    explain = " ".join(ns.levels_explain.split())
+    assert "8 pixels: row 2, pixels 0, 6, 7, 8; row 3, pixels 14, 15, 16, 17." in explain
+    assert "here 1 pixel(s) show ¼ or ¾ (4 levels against the standard pattern's 5)" in explain
     # S: the summary keeps the conditions under which the positions are fixed
     summary = md.split("## Summary")[1]
     assert "fix the standard positions" not in summary
     assert (
         "`standardSampleLocations`" in summary and "`D3D11_STANDARD_MULTISAMPLE_PATTERN`" in summary
     )
-    # S: the prose on screen under 4,000 words (it was 4,738); the rest in folds
+    # S: the prose on screen under 4,000 words (it was 4,738); the rest in folds. Review r269
+    # M1's standards table is reference, not prose: its rows are not counted (prose 3,948 -> 3,867)
     markdown = ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
-    on_screen = sum(len(_unfolded(m).split()) for m in markdown)
+    prose = [
+        "\n".join(r for r in _unfolded(m).splitlines() if not r.startswith("|")) for m in markdown
+    ]
+    on_screen = sum(len(p.split()) for p in prose)
     assert on_screen < 4000, on_screen
     folds = [m for m in markdown if "<details>" in m]
     assert len(folds) >= 5 and all(
@@ -1111,7 +1124,10 @@ def test_lesson_08_review_r245_caption_summary_and_reading_order(ns):
     assert "Where the pixel centre lies outside the triangle, MSAA **extrapolates**" in summary
     # the prose did not grow: r245 counted 4,990 Markdown words; r254 added M2's sentence (an
     # edge's spectrum) and S1's Vulkan quotation (55 words, the on-screen count fell by 77)
-    total = sum(len(s.split()) for c, s in zip(cells, sources) if c["cell_type"] == "markdown")
+    # r269 added the standards table (reference, not prose: not counted) and M3's sentences,
+    # and cut as many words elsewhere
+    total = sum(len(s.split()) for c, s in zip(cells, sources)
+                if c["cell_type"] == "markdown" and not s.startswith("### The lesson's rules"))  # fmt: skip
     assert total <= 5045, total
 
 
@@ -1259,5 +1275,46 @@ def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
     assert ns.edge_levels == [0.0, 0.25, 0.5, 1.0] and len(ns.standard_levels) == 5
     row3 = ns.edge_grid.coverage_fraction[3]
     assert row3[-4:].tolist() == [0.5] * 4  # no 0 at the right end from a second edge
-    assert "the only edge in rows 2 and 3" in next(s for s in sources if "q_levels = Predict(" in s)
+    assert "the only edge in rows 2 and 3" in next(
+        s for s in sources if "q_levels = PredictPixels(" in s
+    )
     assert [round(x, 2) for _, x in ns.crossed] == [7.5, 15.83]
+
+
+def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
+    """Review r269 M1: one GL / Direct3D / Vulkan / llvmpipe / teachraster table for the
+    lesson's five rules, with sections, consistent with lesson 12b's sRGB table. M2: a cell
+    compares llvmpipe with teachraster (positions, per-sample coverage, the resolve,
+    centroid), or says that there is no OpenGL. M3: MLAA/SMAA and temporal upscaling named.
+    S1: the standard pattern, not the grid, is off-centre at 16. S2: memory against bandwidth."""
+    from notebook_runs import executed, streams
+
+    _, sources, md = _lesson_text()
+    (table,) = [s for s in sources if s.startswith("### The lesson's rules, standard by standard")]
+    rows = [r for r in table.splitlines() if r.startswith("| ")]
+    assert (
+        rows[0]
+        == "| rule | OpenGL 4.6 (GLSL 4.60) | Direct3D 11 | Vulkan | llvmpipe | teachraster |"
+    )
+    assert [r.split(" | ")[0] for r in rows[1:]] == [
+        "| where MSAA evaluates an attribute (§2)", "| sample positions (§3)",
+        "| resolve filter (§6)", "| sRGB resolve (§6)", "| sample-rate shading (here)"]  # fmt: skip
+    for section in ("GLSL §4.5", "§14.3.1)", "§18.3.1", "§14.3.1.1", "§19.2.4", "§5.6.6", "§23.6"):
+        assert section in table, section
+    assert "`ResolveSubresource`" in table and "`sampleShadingEnable`" in table
+    assert "| not promised (§18.3.1;" in table and "| in linear light (§5.6.6) |" in table
+    printed = streams(executed("08_antialiasing").notebook())
+    if "no OpenGL here:" in printed:
+        return
+    assert all(ns.gl_same.values()) and ns.resolve_gap == 0
+    assert "sample positions = tr.sample_pattern(4): True" in printed
+    assert "§4's fan: 396 covered samples, the same ones: True" in printed
+    part, apart, centres = ns.centroid_apart
+    assert 0 < apart < part and centres
+    assert f"centroid: {part} partly covered pixels, {apart} with another value;" in printed
+    # M3, S1, S2
+    assert "(MLAA, SMAA)" in md and "(TAAU, DLSS, FSR, XeSS)" in md
+    assert "At 16 the standard pattern rounds one way" in md
+    assert "memory grows like $S$, bandwidth up to $S$" in " ".join(md.split()) or (
+        "memory grows like $S$, bandwidth up to" in md
+    )
