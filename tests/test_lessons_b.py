@@ -2906,6 +2906,12 @@ def test_09_r233_standards_probes_order_and_appendix():
     assert "Vulkan decides on the probes' level" in flat
     # M3: the grazing floor's footprints reach the cap; each doubling of it lowers the error
     assert ns.stretch_grazing >= 15 and ns.stretch_89 < 3
+    # review r270 S6: the anisotropy step of §9's "Do" list starts on the grazing floor, whose
+    # footprints reach 16 ("reach 16"), the square's stay under three times ("under three")
+    nine = next(t for t in (" ".join(x.split()) for x in text) if t.startswith("## 9. Tilt"))
+    step = nine[nine.index("for anisotropy switch **scene** to the **grazing floor**") :]
+    assert "stay under three times as long as wide" in step and "reach 16" in step
+    assert f"{ns.stretch_grazing:.0f}" == "16" and step.index("reach 16") < step.index("At 89°")
     caps = sorted(k for k in ns.grazing_rms if k != "trilinear")
     errors = [ns.grazing_rms[k] for k in caps]
     assert errors == sorted(errors, reverse=True) and errors[0] == ns.grazing_rms["trilinear"]
