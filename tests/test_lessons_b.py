@@ -2898,6 +2898,12 @@ def test_09_r233_standards_probes_order_and_appendix():
     assert "Vulkan decides on the probes' level" in flat
     # M3: the grazing floor's footprints reach the cap; each doubling of it lowers the error
     assert ns.stretch_grazing >= 15 and ns.stretch_89 < 3
+    # review r270 S6: the anisotropy step of §9's "Do" list starts on the grazing floor, whose
+    # footprints reach 16 ("reach 16"), the square's stay under three times ("under three")
+    nine = next(t for t in (" ".join(x.split()) for x in text) if t.startswith("## 9. Tilt"))
+    step = nine[nine.index("for anisotropy switch **scene** to the **grazing floor**") :]
+    assert "stay under three times as long as wide" in step and "reach 16" in step
+    assert f"{ns.stretch_grazing:.0f}" == "16" and step.index("reach 16") < step.index("At 89°")
     caps = sorted(k for k in ns.grazing_rms if k != "trilinear")
     errors = [ns.grazing_rms[k] for k in caps]
     assert errors == sorted(errors, reverse=True) and errors[0] == ns.grazing_rms["trilinear"]
@@ -3049,7 +3055,14 @@ def test_09_r257_c1_the_box_is_a_target_and_a_gaussian_reference_beside_it():
     assert 0 < ns.gap_gauss < 0.01
     own = vs["the box average itself"]["gauss", "all"]
     assert all(abs(own - vs[f]["gauss", "all"]) < 0.005 for f in ("trilinear", "anisotropic"))
-    assert "trilinear a little ahead" in md[47] and "within a few thousandths" in md[47]
+    assert "trilinear is ahead, here within a few thousandths" in md[47]
+    # review r270 C2: the Gaussian keeps the crop's moiré arcs at about half the box's
+    # contrast; trilinear is the filter that greys them out
+    spread = ns.arc_spread
+    assert 0.4 < ns.arc_ratio < 0.6 and spread["trilinear"] < 0.1 * spread["Gaussian"]
+    assert abs(spread["anisotropic"] - spread["box"]) < 0.1 * spread["box"]
+    assert "about half their contrast" in md[47] and "trilinear greys them out" in md[47]
+    assert "which the Gaussian greys out" not in md[47]
     # the caps: "against the Gaussian the caps differ by a few thousandths and cap 1 errs least"
     gauss = ns.cap_gauss
     assert ns.best_gauss == 1 and max(gauss.values()) - min(gauss.values()) < 0.01
@@ -3059,7 +3072,23 @@ def test_09_r257_c1_the_box_is_a_target_and_a_gaussian_reference_beside_it():
     assert by_box[0] == "anisotropic"
     assert by_gauss.index("anisotropic") > by_gauss.index("trilinear")
     assert [f for f in by_box if f != "anisotropic"] == [f for f in by_gauss if f != "anisotropic"]
-    assert "only anisotropic changes rank" in md[48]
+    assert "only anisotropic moves relative to the others, from first to third" in md[48]
+    assert by_box.index("anisotropic") == 0 and by_gauss.index("anisotropic") == 2
+    # review r270 C1: the summary quotes both resolutions' Gaussian errors, as printed
+    g6 = {f: vs[f]["gauss", "all"] for f in ("trilinear", "anisotropic")}
+    g7 = ns.gauss_7
+    assert g6["trilinear"] < g6["anisotropic"] and g7["trilinear"] < g7["anisotropic"]
+    assert g7["linear_mipmap_nearest"] < g7["anisotropic"] and ns.reads_7["anisotropic"] > 30
+    assert (
+        f"{g6['trilinear']:.3f} against {g6['anisotropic']:.3f} at 256 × 192 (§6) and "
+        f"{g7['trilinear']:.3f} against {g7['anisotropic']:.3f} at 128 × 96 (§7)" in md[60]
+    )
+    assert (
+        f"`linear_mipmap_nearest` ({g7['linear_mipmap_nearest']:.3f}, "
+        f"{ns.reads_7['linear_mipmap_nearest']:.0f} reads) also beats anisotropic "
+        f"({ns.reads_7['anisotropic']:.0f} reads)" in md[60]
+    )
+    assert "slightly less" not in md[60]
     # §7's held note and the summary: nmn errs less than bilinear against both references
     assert ns.nmn["error_minified_gaussian"] < ns.b["error_minified_gaussian"]
     assert "against both references" in md[60] and "a chosen target, not a floor" in md[60]

@@ -111,9 +111,10 @@ export function pointVerdict(answer, given, tolerance) {
 }
 
 // the point question's instruction: the arrow keys move the marker too, once the figure has
-// been clicked (review r215 07-3: nothing said so)
-export const POINT_HINT = "Drag the orange marker to your answer (or click the figure, then " +
-  "use the arrow keys; Shift: ten steps).";
+// been clicked (review r215 07-3: nothing said so); a click only gives the figure the keys, it
+// moves nothing (review r270 09: "or click the figure" read as "click to place it")
+export const POINT_HINT = "Drag the orange marker to your answer (or click the figure to " +
+  "select it, then use the arrow keys; Shift: ten steps). A click alone does not move it.";
 
 // the live readout of a point marker's x ("code 186"): data.readout, data.readoutDigits
 export function readoutText(label, x, digits) {
