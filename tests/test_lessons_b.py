@@ -4629,7 +4629,7 @@ def test_07_review_r215_the_v_label_hides_no_centre():
     mesh = next(c for c in cells if c.startswith("# Triangle ABC, and two triangles"))
     held = next(c for c in cells if c.startswith("q_gaps.hold()"))
     # the figure and the helpers it draws with (the gaps' two kinds, the titles' counts)
-    figure = held[held.index("def cells_text(") : held.index("plt.show()")]
+    figure = held[held.index("def draw_gaps(") : held.index("plt.show()")]
     scope = {}
     exec(imports + "use_style('classroom')\n" + helpers + mesh, scope)
     scope["t_crack"] = {name: np.zeros((16, 16), dtype=bool) for name in scope["t_cases"]}
