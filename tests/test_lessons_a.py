@@ -3140,7 +3140,10 @@ def test_04_r250_constant_w_rule_checked_and_stated():
     assert "along any line of constant $w$ (the floor" not in md
     assert "on an edge whose two ends have the same $w$ (the floor's near and far edges" in md
     assert "agree along the whole line if, and only if, they agree at both its ends" in md
-    assert "(section 5: the line of depth $w_2$ is exact for $u$, not for an attribute" in md
+    assert (
+        "(section 5, with section 2's depths: the line of depth $w_2$ is exact for $u$, "
+        "not for an attribute"
+    ) in md  # r272 C1: the Try-it changes the depths
 
 
 def _section_5(w_text: str) -> dict:
