@@ -122,3 +122,43 @@ def test_f1_one_row_of_checks_needs_the_camera_along_them(capsys):
     assert ns["v_spread"] < 1e-12
     assert f"largest spread of v along a pixel row: ≈ 0 ({ns['v_spread']:.0e}" in printed
     plt.close("all")
+
+
+def test_m1_one_standards_table_for_the_rule():
+    """There was no GL/D3D/Vulkan/llvmpipe/teachraster table for the rule (M1)."""
+    cells = _cells()
+    ids = list(cells)
+    assert ids.index("c04-apis") == ids.index("c04") + 1
+    table = cells["c04-apis"]
+    head = "| | OpenGL 4.6 (GLSL 4.60) | Direct3D 11 | Vulkan | llvmpipe | teachraster |"
+    assert head in table
+    # the same columns as lesson 03's table of its rules
+    three = json.loads((ROOT / "notebooks/03_barycentric_and_plane_equations.ipynb").read_text())
+    rules = next("".join(c["source"]) for c in three["cells"] if c.get("id") == "c03-rules-table")
+    assert head.replace("| |", "| rule |") in rules
+    rows = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
+    assert [r.split(" | ")[0] for r in rows[1:]] == [
+        "| perspective-correct attribute (the default)", "| affine attribute",
+        "| window depth", "| where the divide is made", "| what a shader can read",
+    ]  # fmt: skip
+    assert all(r.count(" | ") == 5 for r in rows)  # six columns each
+    for cite in ("eq. (14.9) of §14.6.1 *Basic Polygon Rasterization*", "eq. (14.10)",
+                 "`D3D_INTERPOLATION_LINEAR_NOPERSPECTIVE`", "HLSL *Interpolation Modifiers*",
+                 "*Interpolation Decorations*", "`lp_bld_interp.c`", "`LP_INTERP_PERSPECTIVE`",
+                 "`lp_build_rcp`", "`gl_FragCoord.w`", "`gl_BaryCoordEXT`",
+                 "`gl_BaryCoordNoPerspEXT`", "`SV_Barycentrics`",
+                 "`VK_KHR_fragment_shader_barycentric`", "`tr.perspective_weights`",
+                 "`fill.trace.pixel_barycentric`"):  # fmt: skip
+        assert cite in table, cite
+    # the prose no longer lists the keywords the table gives
+    assert "Direct3D's `noperspective` interpolation modifier" not in cells["c04"]
+
+
+def test_m1_the_table_names_what_the_package_has():
+    import teachraster as tr
+
+    lam = np.array([[0.5, 0.5, 0.0]])
+    mu = tr.perspective_weights(lam, np.array([1.0, 3.0, 1.0]))
+    assert np.allclose(mu, [[0.75, 0.25, 0.0]])  # (λ_i / w_i) / Σ λ_j / w_j
+    fill = tr.rasterize(tr.Triangle([[1, 1], [9, 2], [3, 8]], w=[1, 2, 4]), 10, 10, trace=True)
+    assert fill.trace.pixel_barycentric.shape[1] == 3
