@@ -51,7 +51,7 @@ def _section_5(capsys, w_text=None):
     if w_text:
         made = made.replace("w = np.array([1.0, 2.0, 4.0])", f"w = np.array({w_text})")
     return _run([cells["c01"], made, cells["c05"], cells["c09"].split("player = ")[0],
-                 cells["c12"]], capsys)  # fmt: skip
+                 cells["c12"], cells["q-worst"]], capsys)  # fmt: skip
 
 
 @pytest.mark.notebook
@@ -162,3 +162,37 @@ def test_m1_the_table_names_what_the_package_has():
     assert np.allclose(mu, [[0.75, 0.25, 0.0]])  # (λ_i / w_i) / Σ λ_j / w_j
     fill = tr.rasterize(tr.Triangle([[1, 1], [9, 2], [3, 8]], w=[1, 2, 4]), 10, 10, trace=True)
     assert fill.trace.pixel_barycentric.shape[1] == 3
+
+
+@pytest.mark.notebook
+@pytest.mark.parametrize("w_text", [None, "[1.0, 1.0, 8.0]"])
+def test_m2_click_the_pixel_with_the_largest_error(capsys, w_text):
+    """Sections 2-5 had no prediction answered on a figure (M2): now q_worst asks for the
+    pixel of largest |Δu| before the heatmap, which it holds with the text under it."""
+    cells = _cells()
+    ids = list(cells)
+    assert ids.index("q-worst") == ids.index("c12") + 1 == ids.index("ab224988") - 1
+    for held in ("ab224988", "c12-peak-md"):
+        assert cells[held].startswith("q_worst.hold()"), held
+    assert "PredictPixels," in cells["c01"]
+    ns, _ = _section_5(capsys, w_text)
+    diff, worst, q = ns["diff"], ns["worst"], ns["q_worst"]
+    assert worst == tuple(int(k) for k in np.unravel_index(np.nanargmax(diff), diff.shape))
+    assert worst == ((4, 10) if w_text is None else (12, 6))  # the reviewer's, and r250's
+    assert ns["worst_pixel"].sum() == 1 and ns["worst_pixel"][worst]
+    q.given = [list(worst)]
+    assert q.correct
+    for lure in ns["lured"]:  # the centre nearest a diamond: close, but not the largest
+        q.given = [list(lure)]
+        assert not q.correct and diff[lure] < diff[worst]
+    explain = q.explain
+    assert f"Pixel (row {worst[0]}, col {worst[1]}), |Δu| = {diff[worst]:.3f}." in explain
+    if w_text is None:
+        assert ns["lured"] == [(4, 9), (10, 8)]
+        assert "(row 4, col 9), (row 10, col 8), hold only 0.160, 0.143." in explain
+    else:
+        assert ns["lured"] == [] and "It is the pixel centre nearest a diamond." in explain
+    # nothing before the question gives the pixel away
+    before = " ".join(cells[k] for k in ids[: ids.index("q-worst")])
+    assert f"row {worst[0]}, col {worst[1]}" not in before
+    plt.close("all")

@@ -3156,8 +3156,8 @@ def _section_5(w_text: str) -> dict:
     made = made.split("surfaces = ")[0]
     toggle = cells["c09"].split("player = ")[0]
     ns: dict = {"display": lambda *a, **k: None}
-    for source in (setup, made, cells["c05"], toggle, cells["c12"], cells["ab224988"],
-                   cells["c12-peak-md"], cells["c12-spans"]):  # fmt: skip
+    for source in (setup, made, cells["c05"], toggle, cells["c12"], cells["q-worst"],
+                   cells["ab224988"], cells["c12-peak-md"], cells["c12-spans"]):  # fmt: skip
         exec(source.replace("plt.show()", ""), ns)
     return ns
 
