@@ -196,3 +196,22 @@ def test_m2_click_the_pixel_with_the_largest_error(capsys, w_text):
     before = " ".join(cells[k] for k in ids[: ids.index("q-worst")])
     assert f"row {worst[0]}, col {worst[1]}" not in before
     plt.close("all")
+
+
+def test_fig4_the_explorer_says_when_the_segment_lies_on_the_screen():
+    """At z1/z0 = 1 the lesson's segment (z0 = 1) lies on the screen line: one line where the
+    key promises two, and nothing said so (FIG4). Now the line under the sliders says it."""
+    from teachraster.plotting.projection import Segment
+    from teachraster.widgets import ProjectionExplorer
+
+    explorer = ProjectionExplorer(Segment(-1.0, 1.0, 2.0, 4.0), q=0.75)
+    try:
+        assert "lies <i>on</i> the screen" not in explorer.info.value
+        explorer.ratio.value = 1.0
+        line = explorer.info.value
+        assert "t = q everywhere" in line and "0.000" in line
+        assert "both ends at depth 1: the segment lies <i>on</i> the screen" in line
+        explorer.ratio.value = 2.0
+        assert "lies <i>on</i> the screen" not in explorer.info.value
+    finally:
+        plt.close("all")
