@@ -3149,7 +3149,10 @@ def test_04_r250_constant_w_rule_checked_and_stated():
     assert "along any line of constant $w$ (the floor" not in md
     assert "on an edge whose two ends have the same $w$ (the floor's near and far edges" in md
     assert "agree along the whole line if, and only if, they agree at both its ends" in md
-    assert "(section 5: the line of depth $w_2$ is exact for $u$, not for an attribute" in md
+    assert (
+        "(section 5, with section 2's depths: the line of depth $w_2$ is exact for $u$, "
+        "not for an attribute"
+    ) in md  # r272 C1: the Try-it changes the depths
 
 
 def _section_5(w_text: str) -> dict:
@@ -3162,8 +3165,8 @@ def _section_5(w_text: str) -> dict:
     made = made.split("surfaces = ")[0]
     toggle = cells["c09"].split("player = ")[0]
     ns: dict = {"display": lambda *a, **k: None}
-    for source in (setup, made, cells["c05"], toggle, cells["c12"], cells["ab224988"],
-                   cells["c12-peak-md"], cells["c12-spans"]):  # fmt: skip
+    for source in (setup, made, cells["c05"], toggle, cells["c12"], cells["q-worst"],
+                   cells["ab224988"], cells["c12-peak-md"], cells["c12-spans"]):  # fmt: skip
         exec(source.replace("plt.show()", ""), ns)
     return ns
 

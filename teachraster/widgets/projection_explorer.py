@@ -169,8 +169,13 @@ class ProjectionExplorer(Shown):
     def _info_html(self) -> str:
         r = self.segment.z1 / self.segment.z0
         where = f"at q = {self.peak_q:.3f}" if self.largest_gap > 1e-12 else "t = q everywhere"
+        # both ends on the screen line z = 1: the segment and its image are one line, which
+        # read as a missing segment (review r272 FIG4); the pale band under it is the screen
+        on_screen = all(abs(z - 1.0) < 1e-12 for z in (self.segment.z0, self.segment.z1))
+        note = (" · both ends at depth 1: the segment lies <i>on</i> the screen and is its own "
+                "image (the pale band under it)") if on_screen else ""  # fmt: skip
         return (f"depth ratio z1 / z0 = {r:.2f} · largest |t − q| over the screen: "
-                f"<b>{self.largest_gap:.3f}</b>, {where}")  # fmt: skip
+                f"<b>{self.largest_gap:.3f}</b>, {where}{note}")  # fmt: skip
 
     def set_ratio(self, ratio: float) -> None:
         """Move the far end along its eye ray to depth ``ratio`` · z0, and redraw."""
