@@ -2263,8 +2263,10 @@ def test_11_r261_hi_z_bound_and_the_two_names_mapped():
     assert "the plane at the tile's four corner pixel centres, each clamped to the range" in s5
     assert "(its fragments in that 8×8 tile)" not in text["fe558b7e"]
     # r274 C2: cell 4 names the same bound Question 4 prints (the tighter of the two)
-    assert "the tighter of two: the triangle's depth plane at the tile's corners, and its " \
+    assert (
+        "the tighter of two: the triangle's depth plane at the tile's corners, and its "
         "nearest vertex" in text["0e705df6"]
+    )
     assert "the block's nearest depth is the triangle's depth plane" not in text["0e705df6"]
     # S1: both names in one table
     rows = [line for line in s5.split(" | ") if line]
