@@ -2301,6 +2301,23 @@ def test_11_r274_05a_overdraw_is_depth_complexity_minus_one():
     assert "inspector counts it as its <code>depth_complexity</code> view minus one" in text
 
 
+def test_11_r274_the_early_test_rule_has_a_row_per_api():
+    """Review r274 M2: cell 34's early-fragment-test rule named only GL; it has a short table
+    (GL, Direct3D, Vulkan, llvmpipe, teachraster) with each API's way to demand early tests,
+    and points to lesson 10 §7's full table."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = "".join(next(c["source"] for c in cells if c.get("id") == "5f1c0a13"))
+    rows = {ln.split("|")[1].strip(): ln for ln in text.splitlines() if ln.startswith("| ")}
+    for api, demand in (("OpenGL 4.6", "layout(early_fragment_tests) in;"),
+                        ("Direct3D 11/12", "[earlydepthstencil]"),
+                        ("Vulkan", "`EarlyFragmentTests`"), ("llvmpipe (Mesa)", "as OpenGL"),
+                        ("teachraster", "as if every shader asked")):  # fmt: skip
+        assert demand in rows[api].split("|")[3], api
+    assert "lesson 10 §7 has the full table" in text
+
+
 def test_11_r261_small_items_and_the_edge_names_of_the_contract():
     """Review r261 S2: GL defines the tests late for every shader without the qualifier, not
     only for one that may discard. S4: a tool's pixel history lists the events that touched
