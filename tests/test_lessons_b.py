@@ -2301,6 +2301,17 @@ def test_11_r274_05a_overdraw_is_depth_complexity_minus_one():
     assert "inspector counts it as its <code>depth_complexity</code> view minus one" in text
 
 
+def test_11_r274_the_inspector_hint_under_question_1_names_no_colour():
+    """Review r274 P1: cell 15's visible markdown, below the held cells and readable before
+    q_far_wins is answered, said the farther triangle on show is blue (half its answer)."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = "".join(next(c["source"] for c in cells if c.get("id") == "23816f6c"))
+    assert "Watch Question 1's rule in the inspector" in text
+    assert "blue" not in text and "red" not in text
+
+
 def test_11_r274_the_early_test_rule_has_a_row_per_api():
     """Review r274 M2: cell 34's early-fragment-test rule named only GL; it has a short table
     (GL, Direct3D, Vulkan, llvmpipe, teachraster) with each API's way to demand early tests,
