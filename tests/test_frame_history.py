@@ -1270,6 +1270,31 @@ def test_glass_swatches_in_the_inspector_are_legible():
         w.close()
 
 
+def test_the_glass_chart_is_shown_at_its_own_width():
+    """Review r274 FIG1: ticking glass widened the history chart to 7 inches, but its image
+    kept the width it had (4.6 inches), so the browser shrank it by 0.66: its text read 9
+    px, 18 px otherwise. The image widget's width follows the figure's, both ways."""
+    pytest.importorskip("matplotlib").use("Agg")
+    from teachraster.widgets import FrameInspector
+
+    w = FrameInspector("uv_sphere", 64, 48, backend="image")
+    try:
+
+        def shown():  # the widget's width against the figure's, in px
+            fig = w.hist_fig
+            return w.hist_display.widget.layout.width, f"{round(fig.get_figwidth() * fig.dpi)}px"
+
+        narrow = shown()
+        assert narrow[0] == narrow[1]
+        w.glass.value = True
+        wide = shown()
+        assert wide[0] == wide[1] and int(wide[0][:-2]) > int(narrow[0][:-2])
+        w.glass.value = False
+        assert shown() == narrow
+    finally:
+        w.close()
+
+
 def test_the_swatches_label_fits_a_narrow_chart():
     """Review r211 11-4: the one label over the colour swatches ran past a narrow chart's
     right edge; it shrinks (to 9 points at least), then takes its short form."""

@@ -2262,7 +2262,12 @@ def test_11_r261_hi_z_bound_and_the_two_names_mapped():
     assert "smallest of the triangle's three vertex depths" in s5
     assert "the plane at the tile's four corner pixel centres, each clamped to the range" in s5
     assert "(its fragments in that 8×8 tile)" not in text["fe558b7e"]
-    assert "depth plane at the tile's corners, §5" in text["0e705df6"]
+    # r274 C2: cell 4 names the same bound Question 4 prints (the tighter of the two)
+    assert (
+        "the tighter of two: the triangle's depth plane at the tile's corners, and its "
+        "nearest vertex" in text["0e705df6"]
+    )
+    assert "the block's nearest depth is the triangle's depth plane" not in text["0e705df6"]
     # S1: both names in one table
     rows = [line for line in s5.split(" | ") if line]
     assert (
@@ -2274,6 +2279,54 @@ def test_11_r261_hi_z_bound_and_the_two_names_mapped():
         and "what *overdraw* usually means" in s5
     )
     assert rows
+
+
+def test_11_r274_05a_overdraw_is_depth_complexity_minus_one():
+    """Review r274 C1: lesson 05a's *overdraw* (fragments shaded and written for nothing) is
+    lesson 11's ``depth_complexity`` - 1 over the covered pixels, not ``overdraw`` - 1; §5
+    says so and its cell prints both, the first checked against the trace. 05a's answer
+    names the view."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    covered = ns.sphere.coverage
+    assert ns.wasted_05a == int((ns.passed[covered] - 1).sum()) > 0
+    assert int((ns.over[covered] - 1).sum()) > ns.wasted_05a
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    s5 = next(" ".join("".join(c["source"]).split()) for c in cells if c.get("id") == "be99b4cd")
+    assert "Lesson 05a used the usual meaning" in s5
+    assert "Here that is `depth_complexity` − 1 at each covered pixel" in s5
+    cells = json.loads((ROOT / "notebooks" / "05a_zbuffer.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
+    assert "inspector counts it as its <code>depth_complexity</code> view minus one" in text
+
+
+def test_11_r274_the_inspector_hint_under_question_1_names_no_colour():
+    """Review r274 P1: cell 15's visible markdown, below the held cells and readable before
+    q_far_wins is answered, said the farther triangle on show is blue (half its answer)."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = "".join(next(c["source"] for c in cells if c.get("id") == "23816f6c"))
+    assert "Watch Question 1's rule in the inspector" in text
+    assert "blue" not in text and "red" not in text
+
+
+def test_11_r274_the_early_test_rule_has_a_row_per_api():
+    """Review r274 M2: cell 34's early-fragment-test rule named only GL; it has a short table
+    (GL, Direct3D, Vulkan, llvmpipe, teachraster) with each API's way to demand early tests,
+    and points to lesson 10 §7's full table."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = "".join(next(c["source"] for c in cells if c.get("id") == "5f1c0a13"))
+    rows = {ln.split("|")[1].strip(): ln for ln in text.splitlines() if ln.startswith("| ")}
+    for api, demand in (("OpenGL 4.6", "layout(early_fragment_tests) in;"),
+                        ("Direct3D 11/12", "[earlydepthstencil]"),
+                        ("Vulkan", "`EarlyFragmentTests`"), ("llvmpipe (Mesa)", "as OpenGL"),
+                        ("teachraster", "as if every shader asked")):  # fmt: skip
+        assert demand in rows[api].split("|")[3], api
+    assert "lesson 10 §7 has the full table" in text
 
 
 def test_11_r261_small_items_and_the_edge_names_of_the_contract():

@@ -173,13 +173,11 @@ class FigureDisplay:
             fit_column(fig)
             self.widget = fig.canvas
         else:
-            width = int(round(fig.get_figwidth() * fig.dpi))
-            # natural size, but never wider than the notebook column (the image scales down):
-            # the column less ipywidgets' margin on each side, or a figure wider than the
-            # column overflowed its box by 4 px and scrolled (the PixelInspector at a
-            # 1280-px window, review r194)
-            layout = widgets.Layout(width=f"{width}px", max_width=SLIDER_COLUMN_WIDTH,
-                                    height="auto")  # fmt: skip
+            # natural size (the width is set by refresh), but never wider than the notebook
+            # column (the image scales down): the column less ipywidgets' margin on each
+            # side, or a figure wider than the column overflowed its box by 4 px and
+            # scrolled (the PixelInspector at a 1280-px window, review r194)
+            layout = widgets.Layout(max_width=SLIDER_COLUMN_WIDTH, height="auto")
             self.widget = widgets.Image(format="png", layout=layout)
             self.widget.add_class("teachraster-figure")  # a handle for browser tests
         self.refresh()
@@ -207,6 +205,10 @@ class FigureDisplay:
                 canvas.blit(self.fig.bbox)
             return
         (canvas.draw if self.draw is None else self.draw)()
+        # the widget's width follows the figure's, which may have been resized since: the
+        # inspector's history chart widens in glass (review r274 FIG1: kept at its first
+        # width, the image was shrunk by 0.66 and its text read 9 px instead of 14)
+        self.widget.layout.width = f"{int(round(self.fig.get_figwidth() * self.fig.dpi))}px"
         self.widget.value = png_bytes(self.fig)
 
     def close(self) -> None:
