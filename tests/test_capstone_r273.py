@@ -50,3 +50,44 @@ def test_the_centre_guess_needs_every_differing_sample_to_match_the_centre():
     assert CENTRE in _msaa(at_centre)
     assert CENTRE not in _msaa(_swapped)
     assert CENTRE not in _msaa(_shifted)
+
+
+# -- 2: a tie on an edge of a counter-clockwise triangle, named as the conventions name it --
+def _edge_kind_by_conventions(a, b) -> str:
+    """CONVENTIONS' top-left test for the edge walked a→b (y down, interior on the right of
+    the walk for E > 0): top when horizontal with b.x > a.x, left when b.y < a.y."""
+    if a[1] == b[1]:
+        return "top" if b[0] > a[0] else "bottom"
+    return "left" if b[1] < a[1] else "right"
+
+
+def test_a_tie_of_a_counter_clockwise_triangle_names_the_edge_as_walked():
+    """r273 12-2: triangle 127 of the grid (E(v1, v2, v3) = −6.75) was said to lie on edge
+    v1→v2; walked v1→v2 the conventions' formula says left (covered), the rule says right."""
+    import re
+
+    from teachraster.exercises import coverage
+
+    xy = np.array([(31.79296875, 10.20703125), (34.390625, 7.609375), (31.79296875, 7.609375)])
+    assert coverage.area2(xy) < 0
+    words, _, _ = coverage.explain_pixel(xy, np.array([33.5, 8.5]), False)
+    assert "edge v2→v1 (E21: this triangle runs the other way), a right edge" in words, words
+    a, b = (int(v) - 1 for v in re.search(r"edge v(\d)→v(\d)", words).groups())
+    assert _edge_kind_by_conventions(xy[a], xy[b]) == "right"
+    # a clockwise triangle keeps v1→v2
+    words, _, _ = coverage.explain_pixel(xy[[0, 2, 1]], np.array([33.5, 8.5]), False)
+    assert "edge v3→v1, a right edge" in words, words
+
+
+def test_the_grid_hint_names_the_edge_the_rule_walks():
+    from student_variants import WRONG
+    from test_capstone import _mine
+
+    from teachraster.exercises import tries
+
+    tries.forget_hints("covers")
+    try:
+        first = str(ex.capstone("grid", **_mine("grid", covers=WRONG["covers with E >= 0"][1])))
+    finally:
+        tries.spend_hints(["covers"])
+    assert "edge v2→v1 (E21: this triangle runs the other way): the top-left rule" in first

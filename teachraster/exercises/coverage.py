@@ -79,6 +79,17 @@ def edge_name(k: int) -> str:
     return f"v{k + 1}→v{(k + 1) % 3 + 1}"
 
 
+def ruled_edge(xy: np.ndarray, k: int, note: bool = True) -> str:
+    """Edge k named in the direction the top-left rule walks it (r273 12-2: a tie on edge
+    v1→v2 of a counter-clockwise triangle sent a student who checks by hand to the opposite
+    kind): v1→v2 where the triangle runs clockwise on screen, else v2→v1, with the
+    conventions' name E21 (``note``)."""
+    if area2(xy) >= 0:
+        return edge_name(k)
+    a, b = (k + 1) % 3 + 1, k + 1
+    return f"v{a}→v{b} (E{a}{b}: this triangle runs the other way)" if note else f"v{a}→v{b}"
+
+
 # -- coverage under a rule, right or wrong ------------------------------------------------------
 def covered(xy, points, owns=TOP_LEFT, winding: str = "both", vertices: str = "snapped"):
     """Which ``points`` (n, 2) triangle ``xy`` covers under a rule, right or wrong.
@@ -256,13 +267,13 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
         kind = edge_kind(xy, k)
         rule = "covers it" if kind in ("top", "left") else "leaves it uncovered"
         return (
-            f"centre {point(c)} lies exactly on edge {edge_name(k)}, a {kind} edge: the "
+            f"centre {point(c)} lies exactly on edge {ruled_edge(xy, k)}, a {kind} edge: the "
             f"top-left rule {rule}, {yours}",
             k,
             f"on a {kind} edge",
         )
     if len(zeros) == 2:
-        kinds = [f"{edge_name(k)} ({edge_kind(xy, k)})" for k in zeros]
+        kinds = [f"{ruled_edge(xy, k, note=False)} ({edge_kind(xy, k)})" for k in zeros]
         return (
             f"centre {point(c)} is a vertex, on edges {kinds[0]} and {kinds[1]}: the top-left "
             f"rule covers it only when both are top or left edges; {yours}",

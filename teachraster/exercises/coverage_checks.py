@@ -524,7 +524,8 @@ def constant(name: str):
 #: Words that would name the kind of an edge, which the task asks to work out (r46 E3, r64):
 #: on the first failing answers the edge is named by its vertices only.
 HINTS = (
-    (re.compile(r"(edge v\d→v\d), a (?:top|left|bottom|right) edge: the top-left rule "
+    (re.compile(r"(edge v\d→v\d(?: \(E\d\d: this triangle runs the other way\))?), a "
+                r"(?:top|left|bottom|right) edge: the top-left rule "
                 r"(covers it|leaves it uncovered)"),
      r"\1: the top-left rule \2 (which kind of edge is it, with y pointing down?)"),
     (re.compile(r"on edges (v\d→v\d) \((?:top|left|bottom|right)\) and (v\d→v\d) "
