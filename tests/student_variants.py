@@ -1343,7 +1343,7 @@ WRONG = {
     "glass untested": ("depth_passes", _passes_with(test_all=False), "still tested"),
     "against the previous fragment": ("depth_passes", _passes_with(previous=True), "just before"),
     # r85 04: told only "lets no fragment pass, ever"
-    "buffer started at 0": ("depth_passes", _passes_with(start=0.0), "started the buffer at 0"),
+    "buffer started at 0": ("depth_passes", _passes_with(start=0.0), "a buffer started at 0"),
     "every fragment passes": (
         "depth_passes",
         lambda d, w: [True] * len(d),

@@ -91,3 +91,62 @@ def test_the_grid_hint_names_the_edge_the_rule_walks():
     finally:
         tries.spend_hints(["covers"])
     assert "edge v2→v1 (E21: this triangle runs the other way): the top-left rule" in first
+
+
+# -- 3: the cause behind each symptom ---------------------------------------------------------
+def _mine(scene, **changed):
+    from teachraster.exercises.capstone_render import SCENES
+
+    return {name: changed.get(name, sol.CAPSTONE[name]) for name in SCENES[scene].uses}
+
+
+@pytest.mark.parametrize("scene", ["grid", "cube_msaa"])
+@pytest.mark.parametrize("covers, words", [
+    (_shifted, "you tested p + (0.5, 0.5), not p"),
+    (_swapped, "you tested the point (p[1], p[0])"),
+])  # fmt: skip
+def test_a_covers_that_tests_another_point_is_named(scene, covers, words):
+    """r273 12-3: p moved by half a pixel (sample offsets measured from the centre, issue
+    30's class) and p's x and y swapped were told only the tie they broke."""
+    said = str(ex.capstone(scene, **_mine(scene, covers=covers)))
+    assert words in said, said
+    assert CENTRE not in said
+
+
+def test_the_covers_check_names_the_point_mistakes():
+    for covers, kind in ((_shifted, "tested past p"), (_swapped, "p swapped")):
+        report = ex.check("covers", covers)
+        assert not report.passed
+        assert report.failures[0].kind == kind, report.failures[0].kind
+
+
+def _farther_from_infinity(depths, writes):
+    stored, out = np.inf, []
+    for d, write in zip(depths, writes):
+        passes = d > stored
+        out.append(passes)
+        if passes and write:
+            stored = d
+    return out
+
+
+def test_greater_against_infinity_is_not_told_a_buffer_at_0_as_fact():
+    said = str(ex.capstone("intersecting_triangles",
+                           **_mine("intersecting_triangles", depth_passes=_farther_from_infinity)))  # fmt: skip
+    own = str(ex.check("depth_passes", _farther_from_infinity))
+    for text in (said, own):
+        assert "(>) against a buffer started at +∞" in text, text
+        assert "you started the buffer at 0" not in text
+
+
+def _reversed_a_buffer(depths, colours, background):
+    result = np.asarray(background, dtype=float)
+    for k in range(len(depths) - 1, -1, -1):
+        result = np.asarray(sol.over_premultiplied(colours[k], result))
+    return result
+
+
+def test_an_a_buffer_in_reverse_drawing_order_is_named():
+    said = str(ex.capstone("glass_sorted", **_mine("glass_sorted", a_buffer=_reversed_a_buffer)))
+    assert "you composited in reverse drawing order" in said, said
+    assert "you composited in drawing order" not in said

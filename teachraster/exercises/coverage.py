@@ -135,17 +135,19 @@ def _apply(data, owns, winding: str) -> np.ndarray:
 
 
 @lru_cache(maxsize=512)
-def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap: bool, vertices: str):
+def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap, vertices: str):
     w, h = size
     rows, cols = np.indices((h, w))
     # "corners": (j, i); "x at corners" / "y at corners": half a pixel off in one axis (r64 01-1)
     ox = 0.0 if at in ("corners", "x at corners") else 0.5
     oy = 0.0 if at in ("corners", "y at corners") else 0.5
+    if at == "past p":  # r273 12-3: half a pixel added to p, a centre, again (j + 1, i + 1)
+        ox = oy = 1.0
     points = np.stack([cols + origin[0] + ox, rows + origin[1] + oy], axis=-1)
     points = points.reshape(-1, 2)
     v = np.frombuffer(xy, dtype=float).reshape(3, 2)
-    if swap:
-        v, points = v[:, ::-1], points[:, ::-1]
+    if swap:  # "points": only p's x and y swapped (r273 12-3), the vertices as given
+        v, points = (v if swap == "points" else v[:, ::-1]), points[:, ::-1]
     return _edge_data(v, points, vertices)
 
 
@@ -154,8 +156,9 @@ def rule_image(
 ) -> np.ndarray:
     """(h, w) coverage of one triangle on the case's window under a rule (:func:`covered`);
     ``at="corners"`` samples pixel (i, j) at (j, i) instead of its centre ("x at corners":
-    at (j, i + 0.5), "y at corners": at (j + 0.5, i)), ``swap`` swaps x
-    and y in the vertices and the points (a student's p[1], p[0])."""
+    at (j, i + 0.5), "y at corners": at (j + 0.5, i), "past p": at (j + 1, i + 1)), ``swap``
+    swaps x and y in the vertices and the points ("points": in the points alone, a student's
+    p[1], p[0])."""
     w, h = case.size
     key = np.ascontiguousarray(xy, dtype=float).tobytes()
     data = _cached_edges(key, tuple(case.origin), (w, h), at, swap, vertices)
