@@ -150,3 +150,37 @@ def test_an_a_buffer_in_reverse_drawing_order_is_named():
     said = str(ex.capstone("glass_sorted", **_mine("glass_sorted", a_buffer=_reversed_a_buffer)))
     assert "you composited in reverse drawing order" in said, said
     assert "you composited in drawing order" not in said
+
+
+# -- 4: points cascade, as cell 0 says ------------------------------------------------------
+def _swapped_bilinear(texture, uv, wrap):
+    return sol.bilinear(texture, np.asarray(uv, dtype=float)[::-1], wrap)
+
+
+def _trilinear_on(bilinear):
+    def trilinear(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q)
+        d = int(np.floor(lam))
+        a = bilinear(pyramid[d], uv, wrap)
+        b = bilinear(pyramid[min(d + 1, q)], uv, wrap)
+        return (1 - (lam - d)) * a + (lam - d) * b
+
+    return trilinear
+
+
+def test_cell_0_says_how_one_bilinear_mistake_cascades():
+    """r273 12-6: a correct trilinear on a wrong bilinear scores 0; cell 0 says so, with the
+    scenes this test fails."""
+    import json
+
+    from test_capstone_r174 import NOTEBOOK
+
+    intro = "".join(json.loads(NOTEBOOK.read_text())["cells"][0]["source"])
+    assert "Points cascade" in intro
+    assert "a `bilinear` with u and v swapped fails 12.7, 12.8 and\n12.10" in intro
+    mine = dict(bilinear=_swapped_bilinear, trilinear=_trilinear_on(_swapped_bilinear))
+    for scene in ("floor_bilinear", "floor_trilinear", "sphere"):
+        assert not ex.capstone(scene, **_mine(scene, **mine)).passed, scene
+    right = _trilinear_on(sol.bilinear)
+    assert ex.capstone("floor_trilinear", trilinear=right).passed
