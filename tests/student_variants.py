@@ -1112,6 +1112,17 @@ WRONG = {
     "covers returns True": ("covers", returns(True), "covers every pixel it is asked about"),
     "covers in float32": ("covers", _covers_with(_owns, dtype=np.float32), "float32"),
     "covers with x and y swapped": ("covers", covers_xy_swapped, "x and y are swapped"),
+    # r273 12-3: told only the tie each broke
+    "covers, p moved half a pixel": (
+        "covers",
+        lambda xy, p: CORRECT["covers"](xy, (p[0] + 0.5, p[1] + 0.5)),
+        "you tested p + (0.5, 0.5), not p",
+    ),  # fmt: skip
+    "covers, x and y of p swapped": (
+        "covers",
+        lambda xy, p: CORRECT["covers"](xy, (p[1], p[0])),
+        "you tested the point (p[1], p[0])",
+    ),  # fmt: skip
     # fill
     "fill with centres at (j, i)": (
         "fill",
@@ -1343,7 +1354,13 @@ WRONG = {
     "glass untested": ("depth_passes", _passes_with(test_all=False), "still tested"),
     "against the previous fragment": ("depth_passes", _passes_with(previous=True), "just before"),
     # r85 04: told only "lets no fragment pass, ever"
-    "buffer started at 0": ("depth_passes", _passes_with(start=0.0), "started the buffer at 0"),
+    "buffer started at 0": ("depth_passes", _passes_with(start=0.0), "a buffer started at 0"),
+    # r273 12-3: told "you started the buffer at 0" as a fact
+    "> against a buffer at +inf": (
+        "depth_passes",
+        lambda d, w: [bool(x > math.inf) for x in d],
+        "(>) against a buffer started at +∞",
+    ),  # fmt: skip
     "every fragment passes": (
         "depth_passes",
         lambda d, w: [True] * len(d),

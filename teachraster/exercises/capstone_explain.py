@@ -87,7 +87,7 @@ def explain_pixel(spec, used, mine, reference, pixel) -> tuple[str, str]:
     row, col = pixel
     if spec.sample_covers:
         said = samples.explain(lambda xy, p: _call(used, "covers", xy, p),
-                               lambda inside: named_mistake(used, "covers", inside=inside),
+                               lambda inside, centre: covers_words(used, inside, centre),
                                mine, reference, row, col)  # fmt: skip
         return (
             ("sample coverage", said)
@@ -331,11 +331,26 @@ def _coverage(used, reference, pixel, rr, covered) -> str:
     asked = f"covers({_points(xy)}, {vec(p)})"
     said = error or f"your {asked} returned {yours!r}"
     why, _, _ = explain_coverage(xy, p, covered)
-    named = named_mistake(used, "covers", inside="strictly inside" in why)
+    named = covers_words(used, "strictly inside" in why)
     # r114 D12-2: the edge's kind (exercise 1's question) was given on the first try: the
     # sentence in the mode covers' own check is in, as the quoted exercise words are
     why = _covers_staged(why)
     return f"triangle {rr.triangle}: {said}; the package: {why}{named}"
+
+
+def covers_words(used, inside: bool, centre: str = "") -> str:
+    """The words for the student's covers mistake, in one order for every scene (r273 12-1):
+    what its own check finds (a constant answer, one winding, ...) first; ``centre``, the
+    words of a covers that tests the pixel's centre, only where that check finds nothing
+    and the MSAA scene offers them (its answers match the centre's on every differing
+    sample)."""
+    named = named_mistake(used, "covers", inside=inside)
+    if centre and (
+        not named
+        or named.startswith(f"; your function passes {check_words('covers', 'own cases')}")
+    ):
+        return centre
+    return named
 
 
 def _covers_staged(words: str) -> str:

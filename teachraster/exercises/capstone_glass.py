@@ -104,6 +104,7 @@ def variants(depths, colours, background) -> dict[str, np.ndarray]:
     clear = np.zeros(4)
     return {
         "drawing order": _fold(colours, range(n), background, _over),
+        "reversed drawing order": _fold(colours, range(n - 1, -1, -1), background, _over),
         "nearest first": _fold(colours, near_first, background, _over),
         "no background": _fold(colours, far_first, clear, _over),
         "premultiplied twice": _fold(colours, far_first, background, _straight),
@@ -112,14 +113,20 @@ def variants(depths, colours, background) -> dict[str, np.ndarray]:
     }
 
 
+#: The repair of compositing in drawing order, either way round.
+SORT = (
+    ", so sort by depth and start from the farthest (each nearer one is laid over what lies "
+    "behind it)"
+)
+
 NO_BACKGROUND = "you composited the fragments onto transparent black"
 
 #: The words that give 12.5's order away, said only once two different frames of the
 #: student's ``a_buffer`` have failed (r84 12-2: every failing pixel said "farthest first,
 #: each nearer fragment laid over what lies behind it"; :func:`.tries.hinted_check`).
 REPAIRS = {
-    "drawing order": ", so sort by depth and start from the farthest (each nearer one is laid "
-    "over what lies behind it)",
+    "drawing order": SORT,
+    "reversed drawing order": SORT,
     "nearest first": "; lay them on farthest first (or go nearest first with the under step "
     "of exercise 9, weighting each by the transmittance left in front)",
 }
@@ -127,6 +134,11 @@ REPAIRS = {
 MISTAKES = {
     "drawing order": "you composited in drawing order, as the GPU blends: at this pixel the "
     "fragment drawn later lies behind the one drawn first" + REPAIRS["drawing order"],
+    # r273 12-3: the last drawn laid on first, the first drawn on top, got the rule alone
+    "reversed drawing order": "you composited in reverse drawing order (the last drawn at the "
+    "bottom, the first drawn on top): drawing order, either way round, says nothing of depth, "
+    "and at this pixel the reversed order is not farthest first"
+    + REPAIRS["reversed drawing order"],
     "nearest first": "you laid each fragment over the result in order of increasing depth: "
     "the nearest then ends at the bottom" + REPAIRS["nearest first"],
     "no background": NO_BACKGROUND + ": the background "

@@ -69,8 +69,9 @@ def sample_cover(frame, covers=None) -> Sampled:
 def explain(call, named, mine, reference, row: int, col: int) -> str | None:
     """Why the samples of pixel (row, col) are covered otherwise than the package's rule
     covers them (the first triangle and sample that differ), or None where they agree.
-    ``call(xy, p)``: the student's covers, (answer, "") or (None, why not); ``named(inside)``:
-    the covers exercise's name for its mistake."""
+    ``call(xy, p)``: the student's covers, (answer, "") or (None, why not); ``named(inside,
+    centre)``: the words for its mistake, ``centre`` those of a covers that tests the pixel's
+    centre, offered where :func:`as_at_centre` holds (the grid's order, one place for it)."""
     ours, yours = reference.sample_cover[row, col], mine.sample_cover[row, col]
     offsets = np.asarray(reference.trace.debug.offsets, dtype=float)
     for t, xy in triangles(reference):
@@ -83,17 +84,33 @@ def explain(call, named, mine, reference, row: int, col: int) -> str | None:
             said = error or f"your covers({_xy(xy)}, ({p[0]:g}, {p[1]:g})) returned {got!r}"
             why, _, _ = explain_coverage(xy, p, bool(ours_k))
             why = why.replace("centre (", "sample (", 1)
-            centre = bool(covered(xy, np.array([[col + 0.5, row + 0.5]]))[0])
-            if not error and bool(got) == centre != bool(ours_k):
-                likely = (f"; your covers answers as at the pixel's centre ({col + 0.5:g}, "
+            centre = ""
+            if not error and as_at_centre(mine, reference):
+                centre = (f"; your covers answers as at the pixel's centre ({col + 0.5:g}, "
                           f"{row + 0.5:g}), not at the point p it is given: with 4 samples "
                           "it is asked at each sample position, so test p itself")  # fmt: skip
-            else:
-                likely = named("strictly inside" in why)
+            likely = named("strictly inside" in why, centre)
             return (f"triangle {t}, sample {k} at ({p[0]:g}, {p[1]:g}) (offset "
                     f"({offset[0]:g}, {offset[1]:g}) from the pixel's corner): {said}; the "
                     f"package: {why}{likely}")  # fmt: skip
     return None
+
+
+def as_at_centre(mine, reference) -> bool:
+    """Whether the student's covers answers as the rule does at the pixel's centre on every
+    sample of every pixel where the frames' sample coverage differs (r273 12-1: a covers
+    returning False, or handling one winding, matched the centre at the one sample shown and
+    was told it tests the centre): only a covers that tests the centre gives that."""
+    differ = np.argwhere((mine.sample_cover != reference.sample_cover).any(axis=2))
+    if not len(differ):
+        return False
+    centres = differ[:, ::-1] + 0.5
+    yours = mine.sample_cover[differ[:, 0], differ[:, 1]]
+    for t, xy in triangles(reference):
+        at_centre = covered(xy, centres.astype(float))
+        if not ((yours >> t & 1).astype(bool) == at_centre[:, None]).all():
+            return False
+    return True
 
 
 def _xy(xy) -> str:

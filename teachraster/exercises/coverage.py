@@ -79,6 +79,17 @@ def edge_name(k: int) -> str:
     return f"v{k + 1}→v{(k + 1) % 3 + 1}"
 
 
+def ruled_edge(xy: np.ndarray, k: int, note: bool = True) -> str:
+    """Edge k named in the direction the top-left rule walks it (r273 12-2: a tie on edge
+    v1→v2 of a counter-clockwise triangle sent a student who checks by hand to the opposite
+    kind): v1→v2 where the triangle runs clockwise on screen, else v2→v1, with the
+    conventions' name E21 (``note``)."""
+    if area2(xy) >= 0:
+        return edge_name(k)
+    a, b = (k + 1) % 3 + 1, k + 1
+    return f"v{a}→v{b} (E{a}{b}: this triangle runs the other way)" if note else f"v{a}→v{b}"
+
+
 # -- coverage under a rule, right or wrong ------------------------------------------------------
 def covered(xy, points, owns=TOP_LEFT, winding: str = "both", vertices: str = "snapped"):
     """Which ``points`` (n, 2) triangle ``xy`` covers under a rule, right or wrong.
@@ -124,17 +135,19 @@ def _apply(data, owns, winding: str) -> np.ndarray:
 
 
 @lru_cache(maxsize=512)
-def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap: bool, vertices: str):
+def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap, vertices: str):
     w, h = size
     rows, cols = np.indices((h, w))
     # "corners": (j, i); "x at corners" / "y at corners": half a pixel off in one axis (r64 01-1)
     ox = 0.0 if at in ("corners", "x at corners") else 0.5
     oy = 0.0 if at in ("corners", "y at corners") else 0.5
+    if at == "past p":  # r273 12-3: half a pixel added to p, a centre, again (j + 1, i + 1)
+        ox = oy = 1.0
     points = np.stack([cols + origin[0] + ox, rows + origin[1] + oy], axis=-1)
     points = points.reshape(-1, 2)
     v = np.frombuffer(xy, dtype=float).reshape(3, 2)
-    if swap:
-        v, points = v[:, ::-1], points[:, ::-1]
+    if swap:  # "points": only p's x and y swapped (r273 12-3), the vertices as given
+        v, points = (v if swap == "points" else v[:, ::-1]), points[:, ::-1]
     return _edge_data(v, points, vertices)
 
 
@@ -143,8 +156,9 @@ def rule_image(
 ) -> np.ndarray:
     """(h, w) coverage of one triangle on the case's window under a rule (:func:`covered`);
     ``at="corners"`` samples pixel (i, j) at (j, i) instead of its centre ("x at corners":
-    at (j, i + 0.5), "y at corners": at (j + 0.5, i)), ``swap`` swaps x
-    and y in the vertices and the points (a student's p[1], p[0])."""
+    at (j, i + 0.5), "y at corners": at (j + 0.5, i), "past p": at (j + 1, i + 1)), ``swap``
+    swaps x and y in the vertices and the points ("points": in the points alone, a student's
+    p[1], p[0])."""
     w, h = case.size
     key = np.ascontiguousarray(xy, dtype=float).tobytes()
     data = _cached_edges(key, tuple(case.origin), (w, h), at, swap, vertices)
@@ -256,13 +270,13 @@ def explain_pixel(xy: np.ndarray, c: np.ndarray, covered: bool) -> tuple[str, in
         kind = edge_kind(xy, k)
         rule = "covers it" if kind in ("top", "left") else "leaves it uncovered"
         return (
-            f"centre {point(c)} lies exactly on edge {edge_name(k)}, a {kind} edge: the "
+            f"centre {point(c)} lies exactly on edge {ruled_edge(xy, k)}, a {kind} edge: the "
             f"top-left rule {rule}, {yours}",
             k,
             f"on a {kind} edge",
         )
     if len(zeros) == 2:
-        kinds = [f"{edge_name(k)} ({edge_kind(xy, k)})" for k in zeros]
+        kinds = [f"{ruled_edge(xy, k, note=False)} ({edge_kind(xy, k)})" for k in zeros]
         return (
             f"centre {point(c)} is a vertex, on edges {kinds[0]} and {kinds[1]}: the top-left "
             f"rule covers it only when both are top or left edges; {yours}",

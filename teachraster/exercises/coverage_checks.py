@@ -472,11 +472,48 @@ def mistakes(name: str) -> list:
         table.append(
             Mistake("transposed", SWAPPED, gives=lambda case: rule_swapped(case) & _masks(case))
         )
+        table += _point_mistakes()
     table.append(_rule_knobs(masked, corners=name == "fill"))
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
     return table
+
+
+#: r273 12-3: p moved by half a pixel and p's x and y swapped were told only a tie they broke.
+PAST_P = (
+    "you tested p + (0.5, 0.5), not p: p is already the point to test (a pixel's centre "
+    "(j + 0.5, i + 0.5), or in the MSAA scene a sample's position), so adding half a pixel "
+    "moves it to the next pixel's corner (sample offsets measured from the pixel's centre "
+    "instead of its corner, or half a pixel added twice)"
+)
+P_SWAPPED = (
+    "you tested the point (p[1], p[0]): x and y of p are swapped, the vertices are not. A "
+    "point is (x, y) = (p[0], p[1]), x to the right, y down, as each vertex is"
+)
+
+
+def _point_mistakes() -> list[Mistake]:
+    """Mistakes in the point ``covers`` tests: moved half a pixel past it, x and y swapped."""
+    return [
+        Mistake("tested past p", _own_example(PAST_P, _sampled_at(1.0, 1.0)),
+                gives=lambda case: cov.rule_images(case, at="past p") & _masks(case)),
+        Mistake("p swapped", _own_example(P_SWAPPED, _swapped_point),
+                gives=lambda case: cov.rule_images(case, swap="points") & _masks(case)),
+    ]  # fmt: skip
+
+
+def _swapped_point(case, xy, e, g, i, j):
+    """Pixel (i, j) tested at its centre's mirror (y, x): the two points' verdicts."""
+    c = _centre(case, i, j)
+    s = c[::-1]
+    if bool(cov.covered(xy, s)[0]) != g[i, j]:  # another mistake decides this pixel
+        return None
+    rule = "covers it" if e[i, j] else "leaves it uncovered"
+    where = _where(xy, c), _where(xy, s)
+    return (f"the centre {cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, so the "
+            f"rule {rule}; you tested {cov.point(s)}, which lies {where[1]}, and "
+            f"{_yours(g[i, j])}", _ties(*where))  # fmt: skip
 
 
 def rule_swapped(case: CoverageCase) -> np.ndarray:
@@ -524,7 +561,8 @@ def constant(name: str):
 #: Words that would name the kind of an edge, which the task asks to work out (r46 E3, r64):
 #: on the first failing answers the edge is named by its vertices only.
 HINTS = (
-    (re.compile(r"(edge v\d→v\d), a (?:top|left|bottom|right) edge: the top-left rule "
+    (re.compile(r"(edge v\d→v\d(?: \(E\d\d: this triangle runs the other way\))?), a "
+                r"(?:top|left|bottom|right) edge: the top-left rule "
                 r"(covers it|leaves it uncovered)"),
      r"\1: the top-left rule \2 (which kind of edge is it, with y pointing down?)"),
     (re.compile(r"on edges (v\d→v\d) \((?:top|left|bottom|right)\) and (v\d→v\d) "

@@ -194,10 +194,15 @@ DEPTH_MISTAKES = [
     # r85 04: a buffer started at 0 was told only its symptom ("lets no fragment pass,
     # ever"); its answers are a placeholder's all False (no depth lies below 0), so both
     # are said, the cause first
-    _mistake("cleared to 0", "no fragment passes, ever: you started the buffer at 0, the "
-             "nearest depth, and nothing is strictly nearer than 0 (or False is left in for "
-             "every fragment). GL clears the buffer to the far value, 1.0; here it starts "
-             "empty, so the first fragment passes whatever its depth", start=0.0),
+    # r273 12-3: `>` against a buffer started at +inf gives the same all False, and was told
+    # "you started the buffer at 0" as a fact: every cause of that answer is said
+    _mistake("cleared to 0", "no fragment passes, ever (False for every fragment, whatever "
+             "the depths). Three ways to that answer: a buffer started at 0, the nearest "
+             "depth (nothing is strictly nearer than 0); the test turned round (>) against a "
+             "buffer started at +∞ (nothing is farther than +∞); or False left in. Pass a "
+             "fragment that is strictly nearer (<) than the depth the buffer holds; here it "
+             "starts empty, so the first fragment passes whatever its depth (GL clears it to "
+             "the far value, 1.0)", start=0.0),
 ]  # fmt: skip
 
 
