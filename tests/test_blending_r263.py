@@ -108,7 +108,7 @@ def test_llvmpipe_column_is_measured_r275(nsb):
         pytest.skip("no OpenGL context")
     assert nsb.gl_order_differ == nsb.over_differ == 642
     for order in ("0 → 1 → 2", "2 → 1 → 0"):
-        assert f"§2 drawn {order} on llvmpipe: the 3 runs identical; minus render at most" in (
+        assert f"§2 drawn {order} on llvmpipe: the 3 runs identical;\n  minus render at most" in (
             printed
         )
     assert "the two orders on llvmpipe: 642 pixels differ (render: 642)" in printed
