@@ -92,3 +92,26 @@ def test_small_items_r263():
     order = "".join(next(c for c in cells if c.get("id") == "a8d65864")["source"])
     assert order.count("\n\n") >= 3
     assert _flat("oit_whymd").startswith("In short: WBOIT is exact only where")
+
+
+def test_llvmpipe_column_is_measured_r275(nsb):
+    """Review r275 C2: the table's llvmpipe column cited evidence the lesson never produced;
+    a cell now draws §2's two orders (three runs each) and §5's 4-sample blend on llvmpipe,
+    and the table cites that cell. Without GL the cell says so, as the other llvmpipe cell."""
+    text = _flat("blendrules")
+    assert "§2's pictures are the same run after run" not in text and "(§6's table)" not in text
+    assert "each drawn three times, give the same pictures every run" in text
+    assert "matches `render`'s per-sample blend, not one blend per pixel" in text
+    printed = streams(executed("12b_blending").notebook())
+    if not nsb.ok:
+        assert "no OpenGL here:" in printed
+        pytest.skip("no OpenGL context")
+    assert nsb.gl_order_differ == nsb.over_differ == 642
+    for order in ("0 → 1 → 2", "2 → 1 → 0"):
+        assert f"§2 drawn {order} on llvmpipe: the 3 runs identical;\n  minus render at most" in (
+            printed
+        )
+    assert "the two orders on llvmpipe: 642 pixels differ (render: 642)" in printed
+    off = nsb.gl_msaa_off
+    assert off["per sample, then the mean (render)"] < 1e-6 < off["one blend per pixel"]
+    assert f"one blend per pixel at most {off['one blend per pixel']:.1e}" in printed

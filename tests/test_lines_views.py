@@ -448,9 +448,10 @@ def test_blending_explorer_blend_state_and_alpha():
             ex.select.value = 0
             ex.later.click()
             assert ex.differ == 0 and f"blend {mode!r}" in ex.info.value
-        assert "(DST_COLOR, ZERO)" in ex.info.value and "alpha unused" in ex.info.value
+        assert "(DST_COLOR, ZERO)" in ex.info.value and "product of the alphas" in ex.info.value
+        ex.white.value = True  # additive unticked it
         ex.mode.value = "additive"
-        assert "untick 'clear to opaque white'" in ex.info.value
+        assert "'clear to opaque white' unticked for additive" in ex.info.value
         ex.mode.value = "over"
         for a in (0.2, 0.9):
             ex.opacity.value = a
@@ -459,5 +460,71 @@ def test_blending_explorer_blend_state_and_alpha():
                                clear_color=(1, 1, 1, 1))  # fmt: skip
             assert np.array_equal(ex.color, expected)
         assert ex.artists.image is image  # updated in place
+    finally:
+        ex.close()
+
+
+def test_blending_explorer_status_line_says_what_each_mode_does_to_alpha():
+    """Review r275 C1: the line said "(alpha unused)" for multiply and additive, yet with
+    "stored alpha" ticked the alpha slider changed the picture. It now says what each mode does
+    to the colour and to the stored alpha, and the stored alpha is what it says: multiply
+    stores the product of the alphas, additive their sum (one factor pair serves both)."""
+    import teachraster as tr
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24))  # transparent black: a_d starts at 0
+    try:
+        ex.alpha.value = True
+        assert "alpha unused" not in ex.info.value
+        assert "stored alpha a_s·a_s + a_d·(1 − a_s)" in ex.info.value  # over
+        ex.mode.value = "premultiplied"
+        assert "the same RGB as 'over'" in ex.info.value
+        assert "stored alpha a_s + a_d·(1 − a_s)" in ex.info.value
+        a = 0.05
+        ex.opacity.value = a
+        ex.mode.value = "additive"
+        assert "the stored alpha is the sum of the alphas, a_s + a_d" in ex.info.value
+        layers = sum(~np.isnan(tr.render(ex.clip[[k]], 24, 24).depth) for k in range(3))
+        assert set(np.unique(layers)) == {0, 1, 2, 3}  # how many triangles cover each pixel
+        assert np.allclose(ex.color[..., 3], layers * a)  # the sum of the alphas
+        before = ex.color[..., 3].copy()
+        ex.opacity.value = 1.0  # the slider changes the stored alpha: 1, 2, 3
+        assert np.allclose(ex.color[..., 3], layers) and not np.allclose(before, layers)
+        ex.white.value = True  # multiply onto white: a_d starts at 1
+        ex.mode.value = "multiply"
+        assert "the stored alpha is the product of the alphas, a_s·a_d" in ex.info.value
+        ex.opacity.value = a
+        assert np.allclose(ex.color[..., 3], a**layers)  # the product of the alphas
+        assert "alpha does not enter the colour" in ex.info.value
+    finally:
+        ex.close()
+
+
+def test_blending_explorer_additive_sets_the_white_clear_aside():
+    """Review r275 W1: "additive" on the default white clear turned both panels plain white.
+    Picking it unticks "clear to opaque white" and the status line says so in bold; leaving
+    additive ticks it again; a white the student ticks under additive stays, with a warning;
+    multiply on black (every product 0) is named too."""
+    from teachraster.widgets.blending import BlendingExplorer
+
+    ex = BlendingExplorer(backend="image", size=(24, 24), white=True)
+    try:
+        ex.mode.value = "additive"
+        assert not ex.white.value and np.array_equal(ex.color[0, 0], [0, 0, 0, 0])
+        shown = ex.color[..., :3]
+        assert ((shown > 0) & (shown < 1)).any()  # something to see: not plain white
+        assert "<b>'clear to opaque white' unticked for additive</b>" in ex.info.value
+        assert "cleared to transparent black" in ex.info.value
+        ex.mode.value = "over"
+        assert ex.white.value and "unticked for additive" not in ex.info.value
+        ex.mode.value = "additive"
+        ex.white.value = True  # the student's choice: kept, and warned
+        assert ex.white.value and "untick 'clear to opaque white'" in ex.info.value
+        assert (ex.color[..., :3].min(axis=2) >= 1).all()  # every pixel white: why it warns
+        ex.white.value = False
+        ex.mode.value = "multiply"  # the student unticked it: not restored
+        assert not ex.white.value
+        assert "onto black every product is 0 and shows black" in ex.info.value
+        assert np.allclose(ex.color[..., :3], 0)
     finally:
         ex.close()

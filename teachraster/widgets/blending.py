@@ -4,7 +4,10 @@ Lesson 12b's blending widget. A few transparent triangles are drawn with ``rende
 blend=...)``; the list on the left is the submission order (select one, move it earlier or
 later, or sort back to front). Above it the blend state: the mode ("over", "premultiplied",
 "additive", "multiply", each with its factor pair in the status line) and one alpha for every
-triangle (review r263 M3: additive and multiply give 0 differing pixels in any order). The left panel shows the colour buffer in the chosen order,
+triangle (review r263 M3: additive and multiply give 0 differing pixels in any order); the status line
+says what the mode does to the colour and to the stored alpha (one factor pair serves both).
+Picking "additive" unticks "clear to opaque white", on which every sum shows white, and
+leaving it ticks the box again (review r275 W1). The left panel shows the colour buffer in the chosen order,
 the right one the same triangles sorted back to front, with how many pixels differ. Both show
 the RGB written, opaque, as a window displays it (review r31: the stored alpha drawn over a
 checkerboard greyed every colour); the "stored alpha" checkbox draws them over a checkerboard
@@ -178,6 +181,8 @@ class BlendingExplorer(Shown):
         # lesson 12b opens it on white, the clear colour of its figures (review r63 12b-3)
         self.white = widgets.Checkbox(value=bool(white), description="clear to opaque white",
                                       indent=False, layout=widgets.Layout(**whole))  # fmt: skip
+        # the white clear the explorer set aside for "additive" (review r275 W1), to restore
+        self._white_set_aside = False
         self._compute()
         with style_context(style):
             self.fig = new_figure((9.0, 5.0), self.backend)
@@ -194,7 +199,9 @@ class BlendingExplorer(Shown):
         self.earlier.on_click(lambda _: self._move(-1))
         self.later.on_click(lambda _: self._move(+1))
         self.sort.on_click(lambda _: self._sort())
-        for box in (self.mode, self.opacity, self.srgb, self.decode, self.alpha, self.white):
+        self.mode.observe(self._mode_changed, "value")
+        self.white.observe(self._white_changed, "value")
+        for box in (self.opacity, self.srgb, self.decode, self.alpha):
             box.observe(lambda change: self.update(), "value")
         title = title_html(
             "Blending: order, blend state, premultiplied alpha, sRGB",
@@ -290,14 +297,49 @@ class BlendingExplorer(Shown):
                 f"; cleared to {'opaque white' if self.white.value else 'transparent black'}"
                 f"{self._alpha_note()}")  # fmt: skip
 
+    def _mode_changed(self, change) -> None:
+        """Picking "additive" on the white clear unticks it, and leaving "additive" ticks it
+        again: onto white every sum exceeds 1 and both panels showed plain white until the
+        student acted on the status line (review r275 W1). The status line says so."""
+        aside = change["new"] == "additive" and self.white.value
+        restore = change["old"] == "additive" and self._white_set_aside
+        if aside or restore:
+            self.white.value = not self.white.value  # _white_changed updates the panels
+        self._white_set_aside = aside
+        self.update()
+
+    def _white_changed(self, change) -> None:
+        self._white_set_aside = False  # the student's own choice (or the restore) from now on
+        self.update()
+
+    #: What each mode does to the colour and to the stored alpha: one factor pair serves both
+    #: (§1), so additive and multiply, whose colour ignores alpha, still blend the alphas
+    #: (review r275 C1: the line said "alpha unused", yet "stored alpha" changed with it).
+    MODE_NOTES = {
+        "over": "colour src·a_s + dst·(1 − a_s); stored alpha a_s·a_s + a_d·(1 − a_s)",
+        "premultiplied": "colour src·a_s + dst·(1 − a_s), the same RGB as 'over'; stored alpha "
+        "a_s + a_d·(1 − a_s): tick 'stored alpha' to see the difference",
+        "additive": "alpha does not enter the colour, src + dst; the stored alpha is the sum "
+        "of the alphas, a_s + a_d",
+        "multiply": "alpha does not enter the colour, src·dst; the stored alpha is the product "
+        "of the alphas, a_s·a_d",
+    }
+
     def _mode_note(self) -> str:
-        """What the status line adds for a mode that ignores alpha, or that leaves [0, 1] on
-        the white clear (additive: every covered pixel shows white there)."""
-        if self.mode.value == "additive":
-            return " (alpha unused" + ("; onto white every sum exceeds 1 and shows white: "
-                                       "untick 'clear to opaque white')" if self.white.value
-                                       else ")")  # fmt: skip
-        return " (alpha unused)" if self.mode.value == "multiply" else ""
+        """The status line's word on the mode: what it does to colour and stored alpha, and
+        where the clear hides it (additive onto white: every sum exceeds 1 and shows white;
+        multiply onto black: every product is 0 and shows black)."""
+        note = f" ({self.MODE_NOTES[self.mode.value]})"
+        if self.mode.value == "additive" and self._white_set_aside:
+            note += ("; <b>'clear to opaque white' unticked for additive</b>: onto white every "
+                     "sum exceeds 1 and shows white (ticked again when you leave additive)")  # fmt: skip
+        elif self.mode.value == "additive" and self.white.value:
+            note += ("; <b>onto white every sum exceeds 1 and shows white</b>: untick 'clear "
+                     "to opaque white'")  # fmt: skip
+        elif self.mode.value == "multiply" and not self.white.value:
+            note += ("; <b>onto black every product is 0 and shows black</b>: tick 'clear to "
+                     "opaque white'")  # fmt: skip
+        return note
 
     def _alpha_note(self) -> str:
         """The status line's word on the stored-alpha view: where the buffer is opaque
