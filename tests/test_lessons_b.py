@@ -631,6 +631,11 @@ def test_06_review_r128_q_quake_held_and_wording():
     price = next(c for c in cells if "q_price = PredictOrder(" in c).split("explain=")[0]
     # r146: at a GPU's price, not a limit case below a multiply's; r228 C1: §1's GPU list
     assert "Price the operations as a GPU does, §1's GPU list" in price
+    # r276 C1: the GPU column and q_price price Quake's loop on a GPU's units, said up front
+    assert "on Quake's span loop (§1's thought" in price and "runs no such loop" in price
+    prices_md = next(c for c in cells if c.startswith("**Price lists**"))
+    assert "**The `GPU` column is a thought experiment:** Quake's span loop" in prices_md
+    assert "share one reciprocal of $1/w$ per pixel" in prices_md
     assert "limit case" not in price and "ops.GPU_CYCLES" in price
     fill = next(c for c in cells if c.startswith("q_fill.hold()  # its output"))
     assert "ratio(hp, sp" not in fill and "fastest(" not in fill and "in this run" not in fill
