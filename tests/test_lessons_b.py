@@ -4901,7 +4901,9 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         c for c in cells if "dz_far['reversed']" in c and "display(" in c
     )
     assert "float32 with reverse-Z is the one to choose" in md
-    assert "where no stencil buffer doubles its size (`D32_FLOAT_S8X24_UINT`)" in md  # r252 M1
+    # r252 M1; r276 F1: 64 bits is Direct3D's declared size, Vulkan's padding is optional
+    assert "where no stencil buffer is needed (with one, Direct3D's `D32_FLOAT_S8X24_UINT`" in md
+    assert "declares 64 bits a sample, Vulkan's `D32_SFLOAT_S8_UINT` needs only 40)" in md
     assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
     assert "reversed float32" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
@@ -5021,8 +5023,11 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     # r252 M1: the choice's two conditions, the stencil's bits printed and quoted
     assert ns.with_stencil == {"float32": 64, "unorm24": 32}
     flat = " ".join(held.split())
-    assert "{with_stencil['float32']} bits per sample (`D32_FLOAT_S8X24_UINT`)" in flat
-    assert "unorm24's {with_stencil['unorm24']} (`D24_UNORM_S8_UINT`" in flat
+    assert "{with_stencil['float32']} bits per sample (`D32_FLOAT_S8X24_UINT`, 24 of them" in flat
+    assert "{with_stencil['unorm24']} bits (`D24_UNORM_S8_UINT`)" in flat
+    # r276 F1: Vulkan's D32_SFLOAT_S8_UINT leaves the 24 bits of padding optional: 40, printed
+    assert ns.float32_s8_least == 40 and "in Vulkan's D32_SFLOAT_S8_UINT at least 40" in printed
+    assert "makes the padding optional (at least {float32_s8_least})" in flat
     assert "`glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)`" in flat
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
@@ -6075,3 +6080,37 @@ def test_06_review_r268_m3_approximate_reciprocal_beside_float32():
     assert f"({newton[0] / ns.f32_worst:.2f}x float32's)" in printed
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     assert any("perspective {name}" in "".join(c["source"]) for c in nb["cells"])
+
+
+def test_06_review_r276_precision_table():
+    """r276 M1/F1: one table of the precisions lesson 06 relies on (sub-pixel and sub-texel bits,
+    half-precision inputs, depth formats with a stencil) for OpenGL, Direct3D, Vulkan, llvmpipe
+    and teachraster, with sections; its rows agree with lessons 00's, 05b's and 07's."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    at = next(i for i, c in enumerate(cells) if c.startswith("**The precisions in the standards"))
+    assert cells[at + 1].startswith("## Summary")
+    rows = {
+        line.split("|")[1].strip(): line for line in cells[at].splitlines() if line.startswith("| ")
+    }
+    assert list(rows)[1:] == [
+        "OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"
+    ]  # fmt: skip
+    assert "`SUBPIXEL_BITS`, at least 4" in rows["OpenGL 4.6"] and "`mediump`" in rows["OpenGL 4.6"]
+    assert "exactly 8 (16.8)" in rows["Direct3D 11"] and "`min16float`" in rows["Direct3D 11"]
+    assert "§7.18.16.1" in rows["Direct3D 11"] and "(64: 24 unused)" in rows["Direct3D 11"]
+    assert "`subPixelPrecisionBits`, at least 4" in rows["Vulkan"]
+    assert "`subTexelPrecisionBits`, at least 4" in rows["Vulkan"]
+    assert "`RelaxedPrecision`" in rows["Vulkan"] and "optionally 24 bits" in rows["Vulkan"]
+    assert "| 8 |" in rows["llvmpipe (Mesa)"] and "8 (`subpixel_bits`" in rows["teachraster"]
+    # the same facts as lessons 00's, 05b's and 07's tables
+    for other, facts in (("00_tour", ("`SUBPIXEL_BITS`, at least 4", "exactly 8 bits (16.8")),
+                         ("05b_depth_precision", ("`D32_FLOAT_S8X24_UINT` (64: 32 + 8 + 24",
+                                                  "`DEPTH32F_STENCIL8` (32 + 8")),
+                         ("07_hard_cases", ("`subPixelPrecisionBits` ≥ 4", "16.8: exactly 8"))):  # fmt: skip
+        theirs = json.loads((ROOT / "notebooks" / f"{other}.ipynb").read_text())
+        text = "".join("".join(c["source"]) for c in theirs["cells"])
+        for fact in facts:
+            assert fact in text, (other, fact)
