@@ -631,6 +631,11 @@ def test_06_review_r128_q_quake_held_and_wording():
     price = next(c for c in cells if "q_price = PredictOrder(" in c).split("explain=")[0]
     # r146: at a GPU's price, not a limit case below a multiply's; r228 C1: §1's GPU list
     assert "Price the operations as a GPU does, §1's GPU list" in price
+    # r276 C1: the GPU column and q_price price Quake's loop on a GPU's units, said up front
+    assert "on Quake's span loop (§1's thought" in price and "runs no such loop" in price
+    prices_md = next(c for c in cells if c.startswith("**Price lists**"))
+    assert "**The `GPU` column is a thought experiment:** Quake's span loop" in prices_md
+    assert "share one reciprocal of $1/w$ per pixel" in prices_md
     assert "limit case" not in price and "ops.GPU_CYCLES" in price
     fill = next(c for c in cells if c.startswith("q_fill.hold()  # its output"))
     assert "ratio(hp, sp" not in fill and "fastest(" not in fill and "in this run" not in fill
@@ -901,9 +906,10 @@ def test_06_review_r23_tables_fit_and_wording():
     assert "needs 49 bits" not in md and "needs 49, E being twice a triangle's area" in md
     assert "needs 50" not in md and "50 counted term by" in md
     # issue 29, r146 12: the standards tables are lesson 02's, 05b's and 10's: linked, not
-    # repeated
+    # repeated; r276 M1: one short table of the precisions this lesson relies on, only that
     for name in ("OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"):
-        assert md.count(f"| {name} |") == 0, name
+        assert md.count(f"| {name} |") == 1, name
+    assert md.count("| where |") == 1 and "**The precisions in the standards.**" in md
     assert "`subPixelPrecisionBits`" in ns.EDGE_TEXT and "lesson 02 §5 tabulates" in ns.EDGE_TEXT
     assert "Lesson 05b (§2) lists the formats" in md and "`MAX_FIXED_LENGTH32`" in ns.EDGE_TEXT
 
@@ -4949,7 +4955,9 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
         c for c in cells if "dz_far['reversed']" in c and "display(" in c
     )
     assert "float32 with reverse-Z is the one to choose" in md
-    assert "where no stencil buffer doubles its size (`D32_FLOAT_S8X24_UINT`)" in md  # r252 M1
+    # r252 M1; r276 F1: 64 bits is Direct3D's declared size, Vulkan's padding is optional
+    assert "where no stencil buffer is needed (with one, Direct3D's `D32_FLOAT_S8X24_UINT`" in md
+    assert "declares 64 bits a sample, Vulkan's `D32_SFLOAT_S8_UINT` needs only 40)" in md
     assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
     assert "reversed float32" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
@@ -5069,8 +5077,12 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     # r252 M1: the choice's two conditions, the stencil's bits printed and quoted
     assert ns.with_stencil == {"float32": 64, "unorm24": 32}
     flat = " ".join(held.split())
-    assert "{with_stencil['float32']} bits per sample (`D32_FLOAT_S8X24_UINT`)" in flat
-    assert "unorm24's {with_stencil['unorm24']} (`D24_UNORM_S8_UINT`" in flat
+    assert "{with_stencil['float32']} bits per sample (`D32_FLOAT_S8X24_UINT`, 24 of them" in flat
+    assert "{with_stencil['unorm24']} bits (`D24_UNORM_S8_UINT`)" in flat
+    # r276 F1: Vulkan's D32_SFLOAT_S8_UINT leaves the 24 bits of padding optional: 40, printed
+    assert ns.float32_s8_least == 40 and "in Vulkan's D32_SFLOAT_S8_UINT at least 40" in printed
+    assert "makes the padding optional (at least" in flat
+    assert '"{float32_s8_least}), and OpenGL lets an implementation' in flat
     assert "`glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)`" in flat
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
@@ -5983,13 +5995,20 @@ def test_06_one_span_explorer_and_q_span():
     assert ns.span_r == (10.0, 100.0) and abs(ns.near.rho[ns.near.worst] - ns.ratio_q) < 0.5
     text = " ".join(cells["spantext"].split())
     assert f"{SPAN_PIXELS} pixels ({SPAN_PIXELS - 1} steps)" in text
-    assert f"crossing {SPAN_TEXELS} texels" in text and "cut of about 4" in text
+    assert f"crossing {SPAN_TEXELS} texels" in text and "Predict first" in text
+    # r276 P1: the reasoning (the share, the cut of about 4 at a low r) is held, after q_span
+    assert "cut of about 4" not in text and "Why a piece misses" not in text
+    assert "display(Markdown(SPAN_WHY))" in cells["spancuts"] and "cut of about 4" in ns.SPAN_WHY
     assert "by hand" not in text and "by moving the explorer" not in text
-    # the question: a large r, asked without the explorer; the answer between 2 and 4
+    # the question: a large r, asked without the explorer; r276 P1: a number, the cut, within
+    # a stated tolerance that takes the measured 2.36 but not the square law's 4
     asked = ns.span_question
     assert "Move the explorer" not in asked and "hundredfold" not in asked
     assert f"reaches {ns.ratio_q:.2f} at N = 16" in asked and "r = 100" in asked
-    assert 2.2 < ns.cut100 < 3.5 and ns.span_answer == ns.span_choices[1]
+    assert 2.2 < ns.cut100 < 3.5 and "span_choices" not in cells["q06span"]
+    assert "answer=cut100" in cells["q06span"] and "tolerance=SPAN_TOLERANCE" in cells["q06span"]
+    assert abs(4 - ns.cut100) > ns.SPAN_TOLERANCE and abs(3 - ns.cut100) > ns.SPAN_TOLERANCE
+    assert f"(within ± {ns.SPAN_TOLERANCE:g} counts as right)" in asked
     assert 3.0 < ns.span_cut[ns.span_r[0]] < 3.5
     # the explanation's worst piece is the span's last, at both N; the floor's numbers
     assert all(ns.far[n].worst == len(ns.far[n].rho) - 1 for n in (8, 16))
@@ -6116,3 +6135,37 @@ def test_06_review_r268_m3_approximate_reciprocal_beside_float32():
     assert f"({newton[0] / ns.f32_worst:.2f}x float32's)" in printed
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     assert any("perspective {name}" in "".join(c["source"]) for c in nb["cells"])
+
+
+def test_06_review_r276_precision_table():
+    """r276 M1/F1: one table of the precisions lesson 06 relies on (sub-pixel and sub-texel bits,
+    half-precision inputs, depth formats with a stencil) for OpenGL, Direct3D, Vulkan, llvmpipe
+    and teachraster, with sections; its rows agree with lessons 00's, 05b's and 07's."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    at = next(i for i, c in enumerate(cells) if c.startswith("**The precisions in the standards"))
+    assert cells[at + 1].startswith("## Summary")
+    rows = {
+        line.split("|")[1].strip(): line for line in cells[at].splitlines() if line.startswith("| ")
+    }
+    assert list(rows)[1:] == [
+        "OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)", "teachraster"
+    ]  # fmt: skip
+    assert "`SUBPIXEL_BITS`, at least 4" in rows["OpenGL 4.6"] and "`mediump`" in rows["OpenGL 4.6"]
+    assert "exactly 8 (16.8)" in rows["Direct3D 11"] and "`min16float`" in rows["Direct3D 11"]
+    assert "§7.18.16.1" in rows["Direct3D 11"] and "(64: 24 unused)" in rows["Direct3D 11"]
+    assert "`subPixelPrecisionBits`, at least 4" in rows["Vulkan"]
+    assert "`subTexelPrecisionBits`, at least 4" in rows["Vulkan"]
+    assert "`RelaxedPrecision`" in rows["Vulkan"] and "optionally 24 bits" in rows["Vulkan"]
+    assert "| 8 |" in rows["llvmpipe (Mesa)"] and "8 (`subpixel_bits`" in rows["teachraster"]
+    # the same facts as lessons 00's, 05b's and 07's tables
+    for other, facts in (("00_tour", ("`SUBPIXEL_BITS`, at least 4", "exactly 8 bits (16.8")),
+                         ("05b_depth_precision", ("`D32_FLOAT_S8X24_UINT` (64: 32 + 8 + 24",
+                                                  "`DEPTH32F_STENCIL8` (32 + 8")),
+                         ("07_hard_cases", ("`subPixelPrecisionBits` ≥ 4", "16.8: exactly 8"))):  # fmt: skip
+        theirs = json.loads((ROOT / "notebooks" / f"{other}.ipynb").read_text())
+        text = "".join("".join(c["source"]) for c in theirs["cells"])
+        for fact in facts:
+            assert fact in text, (other, fact)
