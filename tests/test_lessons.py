@@ -737,6 +737,9 @@ def test_03_r258_true_colours_rules_table_and_what_the_shader_receives():
     assert np.isclose(ns.lam_i + ns.lam_j + tr_lambda1(ns), 1.0)
     assert "128 components, 256 multiply-adds a pixel" in printed
     assert "`v_interp_p1_f32`" in md and "`BaryCoordNoPerspAMD`" in md
+    # r277 F1: (I, J) are in the hardware's vertex order (v1 first is our assumption), and the
+    # two instructions are GCN to RDNA 2's
+    assert "the hardware's own vertex order" in md and "from GCN to RDNA 2" in md
     # the blended unit normals are shorter than 1: Phong shading renormalises
     assert 0.85 < ns.lengths.min() < ns.lengths.max() < 1.0
     assert f"{ns.lengths.min():.3f} to {ns.lengths.max():.3f}" in printed
