@@ -6054,6 +6054,11 @@ def test_06_review_r268_the_floors_cuts_and_steepest_pieces_printed():
         assert max(len(x) for x in printed.splitlines()) <= 80
 
 
+def ask_text(text: list[str]) -> str:
+    """The q_bias question's source, one line (lesson 05b)."""
+    return " ".join(next(t for t in text if "q_bias = Predict(" in t).split())
+
+
 def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
     """Review r260 F-1, M-1: r is one step in Direct3D, llvmpipe and teachraster, chosen by the
     implementation in GL (§14.6.5) and Vulkan (VK_EXT_depth_bias_control); a five-row table
@@ -6066,7 +6071,11 @@ def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
     (sec5,) = [t for t in text if t.startswith("## 5. Depth bias")]
     flat = " ".join(sec5.split())
     assert "with $r$ one step of the buffer" not in flat
-    assert "one step of a unorm buffer in Direct3D, llvmpipe and this simulator" in flat
+    # r279 F-1: llvmpipe's unorm r is two steps (lp_state_fs.c: offset_units * mrd * 2; measured
+    # on llvmpipe's 24-bit buffer: u units move the depth 2u steps)
+    assert (
+        "one step of a unorm buffer in Direct3D and this simulator, two steps in llvmpipe" in flat
+    )
     table = sec5.split("**The depth bias in the standards**")[1]
     rows = {line.split("|")[1].strip(): line for line in table.splitlines()
             if line.startswith("| ") and "---" not in line}  # fmt: skip
@@ -6076,6 +6085,7 @@ def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
     assert "(an **integer**)" in rows["Direct3D 11"] and "`DepthBias = -1`" in rows["Direct3D 11"]
     assert "`VK_EXT_depth_bias_control`" in rows["Vulkan"] and "not fixed" in rows["Vulkan"]
     assert "`util_get_depth_format_mrd`" in rows["llvmpipe (Mesa)"]
+    assert "**two** steps" in rows["llvmpipe (Mesa)"] and "llvmpipe takes two" in ask_text(text)
     # M-2: reverse-Z flips the signs
     assert "With **reverse-Z** (section 4: greater is nearer) every sign flips" in flat
     assert '"Polygons with a larger z value will be drawn in front of polygons' in flat
