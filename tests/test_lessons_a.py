@@ -3651,7 +3651,16 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
             assert min(gaps) < ns.STEP_PX == 1 / 256
     assert ns.flip_cover["whole"] != ns.flip_cover["cut"]
     assert ns.gap_whole < ns.STEP_PX / 2 and ns.gap_cut < ns.STEP_PX / 2
-    assert f"the centre, {ns.gap_whole:.5f} px from the triangle's edge" in note
+    # review r278 F-1: the text names the edge that crossed the centre, from its numbers: the
+    # exact edge keeps it inside, the snapped triangle's edge (far vertices rounded) does not
+    depth = ns.flip_depth
+    assert abs(depth["whole"]) == pytest.approx(ns.gap_whole) and ns.flip_moved == ["whole"]
+    assert depth["exact"] > 0 > depth["whole"] and depth["cut"] > 0
+    assert abs(depth["exact"]) < ns.STEP_PX / 2 and ns.gap_cut == pytest.approx(depth["cut"])
+    assert (f"The centre lies {depth['exact']:.5f} px inside the exact edge and "
+            f"{depth['cut']:.5f} px inside the pieces' edge") in note  # fmt: skip
+    assert f"which lies {-depth['whole']:.5f} px outside it" in note
+    assert "This example shows the other one" in note and "changed sides." not in note
     assert f"{ns.gap_whole:.5f}" not in text
     nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
     folded = [c for c in nb["cells"] if c.get("id") in ("guard_snap", "guard_snap_fig")]
@@ -3660,6 +3669,7 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
     assert not any("print(" in "".join(c["source"]) for c in folded)  # all in the fold
     # FIG-1: the key in a row of its own, the zoom's title within its panel
     assert 'title=f"centre: {flip_side} only"' in "".join(folded[1]["source"])
+    assert '(edge_exact, "the exact edge"' in "".join(folded[1]["source"])  # r278 F-1: drawn
     for wrong in ("A cut moves no edge", "changes no fragment position", "makes any band safe"):
         assert wrong not in text
     # review r190 05a-12: cost is the main argument, the rounding a second one
