@@ -2853,6 +2853,11 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     before = "\n".join(t for c, t in zip(cells[:ask], text[:ask]) if c["cell_type"] == "markdown")
     assert "mirrored" not in before.split("## 4.")[1] and "beyond the far plane" not in before
     after = "\n".join(text[ask:])
+    # review r278 P-1: the verdict that the divide must wait is held with the answer
+    held = next(i for i, t in enumerate(text) if t.startswith("q_clip.hold()"))
+    shown = "\n".join(t for c, t in zip(cells, text) if c["cell_type"] == "markdown")
+    assert "divide must wait" not in shown and "before the divide makes it" not in shown
+    assert held == ask + 1 and "so clippers cut in clip space, before the divide" in text[held]
     # review r182 05a-11: the scissor's quote and depth clamping folded, still named
     assert "implicit\n*viewport scissor*" in after and "§15.6 *Viewport*" in after
     assert "must really cut" not in after and "**Depth clamping.**" in after
