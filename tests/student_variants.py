@@ -1667,6 +1667,8 @@ KINDS = {
     "frame 4, the frame shown's value typed in": "typed in",
     "frame 2, the triangle's number read off the intended history": "the intended frame's number",
     "buffer started at 0": "cleared to 0",
+    # r273: the same answers as a buffer at 0 (no fragment passes); the words list both causes
+    "> against a buffer at +inf": "cleared to 0",
 }
 
 
