@@ -267,19 +267,6 @@ SLIPS = {
 }  # fmt: skip
 
 
-@pytest.mark.parametrize("words", ["first_words", "full_words"])
-@pytest.mark.parametrize("slip", list(SLIPS))
-def test_half_named_slips_are_named_by_their_cause_first(slip, words, request):
-    request.getfixturevalue(words)
-    fn, kind, said = SLIPS[slip]
-    with np.errstate(all="ignore"):
-        report = ex.check("classify_block", fn, budget=120)
-    assert not report.passed and _kinds(report) == {kind}, str(report)
-    first = report.failures[0].explanation
-    # the case's numbers first, then the cause
-    assert re.search(r"yours says (rejected|accepted|partial): " + re.escape(said), first), first
-
-
 def test_hn1_int32_is_named_only_where_the_code_reads_int32():
     """A student in float64 pixels fails the same far cases: not told int32."""
     report = ex.check("classify_block", float_pixels(), budget=120)
@@ -484,14 +471,16 @@ R267_SLIPS = {
 
 
 @pytest.mark.parametrize("words", ["first_words", "full_words"])
-@pytest.mark.parametrize("slip", list(R267_SLIPS))
-def test_r267_81_half_named_slips_are_named_by_their_cause_first(slip, words, request):
+@pytest.mark.parametrize("slip", [*SLIPS, *R267_SLIPS])
+def test_half_named_slips_are_named_by_their_cause_first(slip, words, request):
+    """r248's slips (SLIPS) and r267's 8.1 slips (R267_SLIPS), one test for both tables."""
     request.getfixturevalue(words)
-    fn, kind, said = R267_SLIPS[slip]
+    fn, kind, said = {**SLIPS, **R267_SLIPS}[slip]
     with np.errstate(all="ignore"):
         report = ex.check("classify_block", fn, budget=120)
     assert not report.passed and _kinds(report) == {kind}, str(report)
     first = report.failures[0].explanation
+    # the case's numbers first, then the cause
     assert re.search(r"yours says (rejected|accepted|partial): " + re.escape(said), first), first
 
 
