@@ -163,12 +163,17 @@ def test_06_review_r238_integer_prices_held_text_and_float32_bits():
         / (ns.per_pixel_q * ns.covered256 + 2 * ns.lines256 * ns.per_crossing_q)
     )
     assert round(estimate, 1) == round(ns.fill_answer, 1) == 7.6
-    # r252 P2: q_fill asks the mechanism (the ratio at 512² against 256²), not the arithmetic
-    assert ns.fill_pick == 0 and ns.fill_answer_512 > 1.05 * ns.fill_answer
-    assert round(ns.fill_answer_512, 1) == round(ns.fill_ratio["512²"], 1)
+    # r283 P1: q_fill asks the 512² ratio, typed: the 256² terms scaled (area x 4, lines x 2)
+    # land within its tolerance; "it stays" (the 256² ratio) and the limit do not
+    assert ns.fill_answer_512 > 1.05 * ns.fill_answer
+    assert round(ns.fill_answer_512, 1) == round(ns.fill_ratio["512²"], 1) == 8.9
+    assert abs(ns.fill_estimate - ns.fill_answer_512) < ns.FILL_TOLERANCE
+    for wrong in (ns.fill_answer, ns.fill_limit):
+        assert abs(wrong - ns.fill_answer_512) > 2 * ns.FILL_TOLERANCE, wrong
     asked = next(c for c in cells if "q_fill = Predict(" in c).split("explain=")[0]
     assert "P5I['divides']" in asked and "per_crossing_q" in asked and "§1" in asked
-    assert "512²" in asked and "rise" in asked and "How many times" not in asked
+    assert "512²" in asked and "How many times" in asked and "tolerance=FILL_TOLERANCE" in asked
+    assert "rise" not in asked and "fill_choices" not in asked
     # F2: the edge table prices each arithmetic where it runs on the Pentium, and says so
     assert "fixed-point ones on its integer unit" in md and "It has no `GPU` column" in md
     # S4: whole counts in one piece, with separators
@@ -600,7 +605,7 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     assert "dearer" not in why and "outweigh" not in why
     assert "two units work in parallel" in " ".join(re.sub(r'"\s*f?"', "", ask).split())
     # 06-6: q_depth does not say that precision is not the cause
-    depth = next(c for c in cells if "q_depth = Predict(" in c).split("explain=")[0]
+    depth = next(c for c in cells if "q_depth = PredictPoint(" in c).split("explain=")[0]
     # r146: nor that float64 errs (it answered the question)
     assert "wrong triangle in <b>float64</b>" not in depth and "even in" not in depth
     assert "some pixels" not in depth
@@ -974,8 +979,8 @@ def test_06_review_r37_a_prediction_in_every_section():
              if k == "markdown" and not c.startswith("## Summary")]  # fmt: skip
     assert not any("32-bit unit" in c or "int32" in c for c in after)
     assert round(ns.fill_answer, 1) == round(ns.fill_ratio["256²"], 1)
-    # q_fill's four choices differ; the right one follows the ratios the fill cell prints
-    assert len(set(ns.fill_choices)) == 4 and ns.fill_ratio["512²"] > ns.fill_ratio["256²"]
+    # q_fill's answer is the ratio the fill cell prints at 512²
+    assert ns.fill_answer_512 == ns.fill_ratio["512²"] > ns.fill_ratio["256²"]
     # the explanation: the box's empty part grows like the triangle (its centres per covered
     # pixel about the same at both sizes)
     per_covered_256 = ns.box256.size / ns.covered256
@@ -988,9 +993,16 @@ def test_06_review_r37_a_prediction_in_every_section():
     # ratio of the two counts, typed (1: the same count)
     assert ns.depth_ratio == 1.0 and ns.lin64_q == ns.lin64["slanted_wrong"]
     q_depth_text = cells[asked_at("q_depth")].split("explain=")[0]
-    assert "Lesson 05b (§1)" in q_depth_text and "unorm24" not in q_depth_text
-    # r146: a choice that does not say float64 errs; the answer: as many in both
-    assert "answer=depth_answer" in q_depth_text and ns.depth_answer == ns.depth_choices[2]
+    assert "lesson 05b §1" in q_depth_text and "unorm24" not in q_depth_text
+    # r283 P2: q_depth acts on the crossing pair's figure: the marker goes where linear depth
+    # puts the crossing on the dashed row, the vertical line where the vertices' depths,
+    # linear in x, reach the facing one's; the true crossing lies outside the tolerance
+    assert "answer=(x_linear, row_q + 0.5)" in q_depth_text
+    assert abs(ns.x_linear - ns.x_window) > 2 * ns.DEPTH_TOLERANCE
+    linear = ns.front["linear"][ns.row_q, : ns.cell]
+    linear_front = (linear >= 0) & (linear % 2 == 1)  # the facing triangle in front
+    assert abs(np.flatnonzero(linear_front)[0] + 0.5 - ns.x_linear) < 1  # the render agrees
+    assert ns.x_window - ns.x_linear > 2 * ns.DEPTH_TOLERANCE  # the true crossing: right of it
     assert ns.same_wrong  # the float32 = unorm24 remark, now after the question
     md = "\n".join(c for c, k in zip(cells, kinds) if k == "markdown")
     # the span loop: two divides per line and one at set-up (u4), as the table counts
@@ -1091,11 +1103,11 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
 
     cases = {
         "q_bits": ([ns.bits_answer], [c for c in ns.bits_choices if c != ns.bits_answer]),
+        # r283 P1: q_fill typed; "it stays" (the 256² ratio) and the limit are slips
         "q_fill": (
-            [ns.fill_choices[ns.fill_pick]],
-            [c for c in ns.fill_choices if c != ns.fill_choices[ns.fill_pick]],
+            [f"{ns.fill_answer_512:.1f}", f"{ns.fill_estimate:.1f}"],
+            [f"{ns.fill_answer:.1f}", f"{ns.fill_limit:.1f}"],
         ),
-        "q_depth": ([ns.depth_answer], [c for c in ns.depth_choices if c != ns.depth_answer]),
         "q_quake": ([ns.quake_answer], [c for c in ns.quake_choices if c != ns.quake_answer]),
     }
     for name, (right, wrong) in cases.items():
@@ -4905,7 +4917,7 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
                  "Pentium (P5) integer: divide 46, multiply 9, addition 1, 64-bit addition 2",
                  "GPU (Ampere GA10x, Ada, Hopper): divide 8, multiply 1, addition 1"):  # fmt: skip
         assert line in printed, line
-    assert "a divide 17 at single precision" in md and "a divide (one reciprocal) 8" in md
+    assert "a divide (19) 17 at single" in md and "a divide (one reciprocal) 8" in md
     # r238 S2: the sources are what they are (Agner Fog is no vendor); an FDIV holds the FPU
     assert (
         "vendors' throughput tables" not in md
@@ -4957,7 +4969,10 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     assert "float32 with reverse-Z is the one to choose" in md
     # r252 M1; r276 F1: 64 bits is Direct3D's declared size, Vulkan's padding is optional
     assert "where no stencil buffer is needed (with one, Direct3D's `D32_FLOAT_S8X24_UINT`" in md
-    assert "declares 64 bits a sample, Vulkan's `D32_SFLOAT_S8_UINT` needs only 40)" in md
+    assert (
+        "declares 64 bits a sample, Vulkan's `D32_SFLOAT_S8_UINT` at least 40, its padding optional)"
+        in md
+    )
     assert "`reversed float32` sits on it" in ns.CHART_TEXT  # r238 S5: held with the chart
     assert "reversed float32" in [t.get_text() for t in ns.ax.texts]  # the chart names it
     # S2: at 1e6 px float32 is 4-bit fixed point: 0 pixels differ from fixed4 there
@@ -6179,3 +6194,62 @@ def test_06_review_r276_precision_table():
         text = "".join("".join(c["source"]) for c in theirs["cells"])
         for fact in facts:
             assert fact in text, (other, fact)
+
+
+def test_06_review_r283_fmul_rcp_blocked_fill_and_guides():
+    """Review r283: C1 the FMUL's 2 is its issue rate, not the overlap rule; F1 a GPU's
+    reciprocal is about an ulp, not exact; S4 Vulkan's D32_SFLOAT_S8_UINT "at least 40"; M1
+    half-planes in 8 x 8 blocks priced from the tiled walk's counts, the summary's fill ratios
+    those printed; FIG1 the slope guides start on the curves; S1 ρ for a piece; S2 "costs"."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    from teachraster.study import operation_counts as ops
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    md = " ".join(" ".join(c for c, k in zip(cells, [c["cell_type"] for c in nb["cells"]])
+                           if k == "markdown").split())  # fmt: skip
+    # C1: the overlap gives FADD 3 - 2 and FDIV 19 - 2; FMUL's 2 is its own issue interval
+    assert ops.PENTIUM_X87["FADD"] == (3, 1) and ops.PENTIUM_X87["FDIV single"] == (19, 17)
+    assert ops.PENTIUM_X87["FMUL"] == (3, 2)
+    assert "an addition (3 cycles) costs 1 and a divide (19) 17" in md
+    assert "an FMUL cannot start in the cycle after another FMUL" in md
+    assert "a multiply 2 and a divide 17" not in md
+    # F1, S4
+    assert "exact divide is now cheap" not in md and "correct to about an ulp" in md
+    assert "needs only 40" not in md and "`D32_SFLOAT_S8_UINT` at least 40" in md
+    assert ns.float32_s8_least == 40
+    # M1: the blocked fill, counted by the tiled walk; its ratios as the summary quotes them
+    b = ns.blocked["256²"]
+    assert b["rejected"] + b["accepted"] + b["partial"] == 1024  # the box's 8 x 8 grid
+    assert b["pixel_tests"] == 64 * b["partial"]
+    assert b["pixels_accepted"] == 64 * b["accepted"]
+    ratios = [round(ns.blocked[s]["ratio"], 1) for s in ("256²", "512²")]
+    assert ratios == [1.9, 1.8] and all(r < 2 for r in (ns.blocked[s]["ratio"] for s in ns.blocked))
+    assert [round(ns.fill_ratio[s], 1) for s in ("256²", "512²")] == [7.6, 8.9]
+    assert "need 7.6 to 8.9 times the span loop's cycles" in md and "1.9 to 1.8 times" in md
+    assert "several times fewer" not in md
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    assert "169,088 cycles, 1.9x the span loop's" in printed
+    assert "527,440 cycles, 1.8x the span loop's" in printed
+    # FIG1: each guide pair starts on its family's first point (worst and mean, first size)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting.span_subdivision import plot_subdivision_law
+
+    fig, ax = plt.subplots()
+    worst, mean = {256: {2: 0.17, 4: 0.6, 8: 1.9}}, {256: {2: 0.0044, 4: 0.02, 8: 0.09}}
+    plot_subdivision_law(ax, worst, mean)
+    guides = [line for line in ax.lines if line.get_color() == "0.45"]
+    assert sorted(float(g.get_ydata()[0]) for g in guides) == [0.0044, 0.0044, 0.17, 0.17]
+    plt.close(fig)
+    # S1, S2
+    quake = next(c for c in cells if "q_quake = Predict(" in c)
+    assert "a ratio ρ = " in quake and "ratio r =" not in quake
+    assert "subdivided by $N$ costs " in next(c for c in cells if "FRONT_TEXT = (" in c)

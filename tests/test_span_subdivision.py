@@ -145,3 +145,26 @@ def test_the_explorer_refuses_what_its_sliders_cannot_show():
     for n, r in [(3, 4.0), (128, 4.0), (16, 0.5), (16, 1000.0)]:
         with pytest.raises(ValueError):
             SpanSubdivisionExplorer(n, r, backend="image")
+
+
+def test_at_r_1_the_caption_says_no_miss_and_the_label_clears_the_ticks():
+    """Review r283 FIG2: at r = 1 the closed form is 0/0: the caption says its limit, no miss,
+    instead of "= 0.000"; the worst miss sits at pixel 0, so its label goes right of it,
+    inside the axes, not over the y-axis ticks."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting.span_subdivision import plot_span
+    from teachraster.study import span_subdivision as spans
+    from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
+
+    ex = SpanSubdivisionExplorer(2, 1.0, backend="image")
+    assert "none (at ρ = 1 u is affine)" in ex.info.value and "= 0.000" not in ex.info.value
+    ex.close()
+    for r, side in ((1.0, "left"), (10.0, "right")):
+        fig, (ax_u, ax_miss) = plt.subplots(2, 1)
+        art = plot_span(ax_u, ax_miss, spans.subdivide_span(16, r))
+        assert art.worst_text.get_horizontalalignment() == side, r
+        plt.close(fig)

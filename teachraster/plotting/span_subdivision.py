@@ -100,6 +100,10 @@ def plot_span(ax_u, ax_miss, s: SpanSubdivision) -> SpanArtists:
 def _label_worst(art: SpanArtists, s: SpanSubdivision) -> None:
     xs, ys = _worst_segment(s)
     art.worst_text.xy = (xs[0], (ys[0] + ys[1]) / 2)
+    # left of the miss, unless that puts it over the y-axis ticks (r = 1: the miss at pixel 0)
+    left = xs[0] > 0.25 * s.length
+    art.worst_text.xyann = (-10 if left else 10, 0)
+    art.worst_text.set_horizontalalignment("right" if left else "left")
     art.worst_text.set_text(f"{s.worst_texels:.3g} texels")
 
 
@@ -123,8 +127,8 @@ SIZE_COLOURS = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["bluish_green"
 def plot_subdivision_law(ax, worst: dict, mean: dict) -> list:
     """The floor's error on screen (px) against N, log-log: ``worst[size][N]`` solid with
     dots, ``mean[size][N]`` dashed with squares, one colour per size; grey guides of slope 1
-    and 2 (error ∝ N, ∝ N²) through the largest size's mean at the smallest N, so that a
-    curve's slope reads against them. Returns the legend's handles."""
+    and 2 (error ∝ N, ∝ N²) through the first size's worst pixel and mean at the smallest N,
+    so that each family's slope reads against guides that start on it. Returns the legend's handles."""
     from matplotlib.lines import Line2D
 
     handles = []
@@ -134,11 +138,14 @@ def plot_subdivision_law(ax, worst: dict, mean: dict) -> list:
         ax.plot(ns, [mean[size][n] for n in ns], "s--", color=colour, lw=2.5, ms=7)
         handles.append(Line2D([], [], color=colour, lw=6, label=f"{size}²"))
     ns = np.array(sorted(next(iter(worst.values()))), dtype=float)
-    start = mean[list(mean)[-1]][int(ns[0])] / 2  # below every curve: a guide, not a curve
-    for slope, dash in ((1, ":"), (2, "-.")):
-        ax.plot(ns, start * (ns / ns[0]) ** slope, dash, color="0.45", lw=2)
-        ax.text(ns[-1] * 1.06, start * (ns[-1] / ns[0]) ** slope, f"∝ N{'²' if slope == 2 else ''}",
-                color="0.35", va="center", fontsize="small")  # fmt: skip
+    first = list(worst)[0]  # each family's guides start on its own first point (review r283)
+    for family in (worst[first], mean[first]):
+        start = family[int(ns[0])]
+        for slope, dash in ((1, ":"), (2, "-.")):
+            ax.plot(ns, start * (ns / ns[0]) ** slope, dash, color="0.45", lw=2, zorder=1)
+            ax.text(ns[-1] * 1.06, start * (ns[-1] / ns[0]) ** slope,
+                    f"∝ N{'²' if slope == 2 else ''}", color="0.35", va="center",
+                    fontsize="small")  # fmt: skip
     handles += [Line2D([], [], color="0.2", marker="o", lw=3, label="worst pixel"),
                 Line2D([], [], color="0.2", marker="s", ls="--", lw=2.5, label="mean")]  # fmt: skip
     ax.set_xscale("log", base=2)

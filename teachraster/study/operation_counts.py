@@ -180,6 +180,12 @@ HALFPLANE_LINE = OpCount(0.0, 0.0, 3.0 + LOOP_ADDITIONS, integer=True, wide=3.0)
 SPAN_PIXEL = OpCount(0.0, 0.0, LOOP_ADDITIONS, integer=True)
 SPAN_LINE = OpCount(0.0, 0.0, LOOP_ADDITIONS, integer=True)
 SPAN_CROSSING = OpCount(1.0, 1.0, 2.0, integer=True, wide=1.0)
+#: Blocked half-planes (lesson 10's walk, one block size): per block of the box's block grid,
+#: each edge's value stepped to the block (3 wide additions), its two extreme corners from
+#: it (6 wide additions: the corner trick's offsets), their 6 sign tests and the loop.
+BLOCK_TEST = OpCount(0.0, 0.0, 3.0 + 6.0 + 6.0 + LOOP_ADDITIONS, integer=True, wide=9.0)
+#: The block size of the blocked fill lesson 06 prices (Capens; Giesen's 8 x 8 blocks).
+FILL_BLOCK = 8
 
 
 def interpolation_count(variant: str, attributes: int = ATTRIBUTES) -> OpCount:
@@ -284,6 +290,32 @@ def fill_count(variant: str) -> OpCount:
         return _total([(covered, SPAN_PIXEL), (rows, SPAN_LINE), (2 * rows, SPAN_CROSSING),
                        (1, u4)], "triangle")  # fmt: skip
     raise ValueError(f"unknown fill variant {variant!r}")
+
+
+def blocked_fill_count(size: int, block: int = FILL_BLOCK) -> tuple[OpCount, dict]:
+    """Operations per triangle of half-planes in ``block`` × ``block`` blocks on the study's
+    fill triangle at ``size``², and the walk's block counts (``rejected``, ``accepted``,
+    ``partial``, ``pixel_tests``, ``pixels_accepted``), counted by the tiled fill itself.
+
+    Every block of the box's grid pays :data:`BLOCK_TEST`; a rejected block nothing more; an
+    accepted one fills its pixels untested (:data:`SPAN_PIXEL` each, :data:`SPAN_LINE` per
+    line); a partial one tests its centres as half-planes do (:data:`HALFPLANE_CENTRE` each,
+    :data:`HALFPLANE_LINE` per line).
+
+    >>> op, blocks = blocked_fill_count(64)
+    >>> op.divides, blocks["pixel_tests"] == 64 * blocks["partial"]
+    (0.0, True)
+    """
+    filled = rasterize(bench.fill_triangle(size), size, size, method="tiled",
+                       block_sizes=(block,), trace=True)  # fmt: skip
+    c = filled.trace.blocks.counters
+    blocks = {"rejected": c.empty[0], "accepted": c.full[0], "partial": c.partial[0],
+              "pixel_tests": c.pixel_tests, "pixels_accepted": c.pixels_accepted}  # fmt: skip
+    op = _total([(sum(c.empty + c.full + c.partial), BLOCK_TEST),
+                 (c.pixels_accepted, SPAN_PIXEL), (block * c.full[0], SPAN_LINE),
+                 (c.pixel_tests, HALFPLANE_CENTRE), (block * c.partial[0], HALFPLANE_LINE)],
+                "triangle")  # fmt: skip
+    return op, blocks
 
 
 def count(row: dict) -> OpCount:

@@ -142,9 +142,13 @@ class SpanSubdivisionExplorer(Shown):
         a, b = (int(s.anchors[k]), int(s.anchors[k + 1])) if len(s.anchors) > 1 else (0, 0)
         rho, change = float(s.rho[k]), float(s.anchor_u[k + 1] - s.anchor_u[k]) if b else 0.0
         share = float(s.bound_texels[k] / change) if change else 0.0
+        # at ρ = 1 the closed form is 0/0: its limit, no miss, said as such (review r283)
+        bound = (f"at most (√ρ − 1)²/(ρ − 1) = {share:.3f} of its Δu = {change:.3g} texels "
+                 f"and of its {b - a} px" if rho > 1 else
+                 f"none (at ρ = 1 u is affine): 0 of its Δu = {change:.3g} "
+                 f"texels and of its {b - a} px")  # fmt: skip
         return (f"N = {s.n}, r = {s.r:.3g}: the worst piece, pixels {a}–{b}, ρ = {rho:.3g}. "
                 f"At its pixel centres the chord misses by up to <b>{s.worst_texels:.3g} "
                 f"texels</b> (pixel {s.worst_x}) and shows a texel that belongs up to "
                 f"<b>{s.worst_px:.3g} px</b> away (pixel {s.worst_px_x}). Between centres, "
-                f"at most (√ρ − 1)²/(ρ − 1) = {share:.3f} of its Δu = {change:.3g} texels "
-                f"and of its {b - a} px")  # fmt: skip
+                + bound)  # fmt: skip
