@@ -555,12 +555,12 @@ def _nan_words(args, expected, got) -> str | None:
 _NAN_WORDS = "your answer holds NaN (a 0/0, or a NaN input passed on?)"
 
 
-def _not_finite(r: Result) -> bool:
-    """Does the answer hold ±inf or NaN where the expected answer is finite?"""
+def _holds_inf(r: Result) -> bool:
+    """Does the answer hold ±inf where the expected answer is finite?"""
     g, e = _numbers(r.got), _numbers(r.expected)
     if g is None or e is None or g.dtype == object or e.dtype == object:
         return False
-    return bool(not np.isfinite(g).all() and np.isfinite(e).all())
+    return bool(np.isinf(g).any() and np.isfinite(e).all())
 
 
 def _all_nan(value) -> bool:
@@ -925,9 +925,10 @@ def diagnose(
         return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
     chosen_of = {}
     for r in failing:
-        # r286 C1: inf or NaN is said as such, not as a symptom ("out of range") of a slip;
-        # a slip the checker runs and finds giving that very answer still names it
-        odd = run_checker(lambda r=r: _not_finite(r), False)
+        # r286 C1: inf is said as such, not as a symptom ("one texel alone") of a slip; a
+        # slip the checker runs and finds giving that very answer still names it (NaN keeps
+        # its symptoms: "both alphas 0 … not a division by zero" says more)
+        odd = run_checker(lambda r=r: _holds_inf(r), False)
         ran = [f for f in fits if f.mistake.gives is not None] if odd else fits
         chosen = next(
             (f for f in whole if r.index in f.failing and (f.mistake.gives or not odd)), None

@@ -255,7 +255,7 @@ def draw_quad(ax, case, got):
     for y in range(r0 - 2, r0 + 4):
         for x in range(c0 - 2, c0 + 4):
             inside = _inside(xy, x + 0.5, y + 0.5)
-            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#e4e4e4" if inside
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#d2d2d2" if inside
                                                   else "white", edgecolor="#bbbbbb", lw=0.5)))  # fmt: skip
     if method:
         q = lanes(xy, w, f, r0, c0)
@@ -279,7 +279,7 @@ def draw_quad(ax, case, got):
                                f"{vec(got, expected)}", transform=ax.transAxes,
                                fontsize="x-small", va="bottom",
                                bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
-    handles = [Patch(facecolor="#e4e4e4", edgecolor="#bbbbbb", label="covered"),
+    handles = [Patch(facecolor="#d2d2d2", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
     if method:
         handles[1:1] = [Patch(facecolor="#c8c8c8", edgecolor="#2b7bba", label="its quad"),

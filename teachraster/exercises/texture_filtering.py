@@ -717,13 +717,10 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "levels {d0} and {d1} (the texture is minified, level 0 would alias)"), "finest"),
     ],
     "texels": [
-        Slip("level 0's size for every level", "you filtered every level with level 0's W "
-             "and H (x = u·W₀ − ½): each level's bilinear needs that level's own size, "
-             "texel centres at (i + ½)/W_level", "level 0 size"),
-        Slip("level 0's size for every level", _level0_tiled_words, "level 0 size, tiled"),
         Slip("nearest texels", "you took the nearest texel of each level; trilinear filters "
              "each level bilinearly, with its own size", "nearest"),
-        Slip("uv scaled per level", "you scaled uv by 2^level for each level; (u, v) is "
+        Slip("uv scaled per level", "you scaled uv by 2^level for each level (the same as "
+             "filtering every level with level 0's W and H); (u, v) is "
              "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
              "the level's texels from that level's own W and H: pass uv unchanged",
              "uv times 2^d"),
@@ -731,6 +728,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
              "the level's texels from that level's own W and H: pass uv unchanged",
              "uv over 2^d"),
+        # after "uv scaled per level", the same answer where every level halves exactly
+        Slip("level 0's size for every level", "you filtered every level with level 0's W "
+             "and H (x = u·W₀ − ½): each level's bilinear needs that level's own size, "
+             "texel centres at (i + ½)/W_level", "level 0 size"),
+        Slip("level 0's size for every level", _level0_tiled_words, "level 0 size, tiled"),
         Slip("bilinear: texel corners", "the levels are sampled at texel corners (x = u·W, "
              "not u·W − ½)" + _BILINEAR_FIRST, "corners"),
         Slip("bilinear: always clamp", "the levels are clamped at the border whatever the wrap "
