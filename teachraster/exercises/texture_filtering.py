@@ -470,6 +470,7 @@ def draw_texture_case(ax, case, got):
     each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2 asks for: drawn
     once two different answers have failed, as the words say it (r64 07 D2)."""
     from matplotlib.patches import Rectangle
+    from matplotlib.ticker import MaxNLocator
 
     from . import tries
 
@@ -506,6 +507,9 @@ def draw_texture_case(ax, case, got):
     ax.set_xlim(min(0, x0) - 0.2, max(w, x0 + 2) + 0.2)
     ax.set_ylim(max(h, y0 + 2) + 0.2, min(0, y0) - 0.2)
     ax.set_aspect("equal")
+    # r286 FIG7: texel numbers are whole ("0.0 2.5 5.0 7.5" read as fractions of a texel)
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.yaxis.set_major_locator(MaxNLocator(integer=True))
     where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
              f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
     if method:
