@@ -110,7 +110,8 @@ def near(a, b, tol: float = MATCH_TOL) -> bool:
     ta, tb = type(a), type(b)
     if ta in _FLOATS and tb in _FLOATS:  # the same test as below, without numpy
         a, b = float(a), float(b)
-        if a == b or abs(a - b) <= tol * max(1.0, abs(a), abs(b)):
+        # r286 C1: a finite difference only (inf is within tol·inf of every number)
+        if a == b or abs(a - b) <= tol * max(1.0, abs(a), abs(b)) < np.inf:
             return True
         return a != a and b != b  # both NaN
     if ta is tb is str:
@@ -138,7 +139,8 @@ def near(a, b, tol: float = MATCH_TOL) -> bool:
         x, y = x.reshape(()), y.reshape(())
     with np.errstate(invalid="ignore", over="ignore"):
         scale = np.maximum(1.0, np.maximum(np.abs(x), np.abs(y)))
-        ok = (x == y) | (np.abs(x - y) <= tol * scale) | (np.isnan(x) & np.isnan(y))
+        ok = (x == y) | (np.abs(x - y) <= tol * scale) & (scale < np.inf)
+        ok |= np.isnan(x) & np.isnan(y)
     return bool(np.all(ok))
 
 
@@ -541,18 +543,31 @@ def _nan_words(args, expected, got) -> str | None:
     g = _numbers(got)
     if g is None or np.isfinite(g).all():
         return None
+    # r286 C1: where, so that one bad channel of a colour is found
+    bad = np.isnan(g) if np.isnan(g).any() else ~np.isfinite(g)
+    at = "" if g.size == 1 else f" at {[int(i) for i in np.argwhere(bad.reshape(g.shape))[0]]}"
     if np.isnan(g).any():
-        return _NAN_WORDS
-    return "your answer holds infinity (a division by zero?)"
+        return _NAN_WORDS.replace("NaN", f"NaN{at}", 1)
+    sign = "-" if (g[bad] < 0).all() else "+" if (g[bad] > 0).all() else "±"
+    return f"your answer holds {sign}inf{at} (infinity: a division by zero?)"
 
 
 _NAN_WORDS = "your answer holds NaN (a 0/0, or a NaN input passed on?)"
 
 
+def _holds_inf(r: Result) -> bool:
+    """Does the answer hold ±inf where the expected answer is finite?"""
+    g, e = _numbers(r.got), _numbers(r.expected)
+    if g is None or e is None or g.dtype == object or e.dtype == object:
+        return False
+    return bool(np.isinf(g).any() and np.isfinite(e).all())
+
+
 def _all_nan(value) -> bool:
-    """Is every number of ``value`` NaN (a constant answer told NaN, not "placeholder")?"""
+    """Is every number of ``value`` NaN or ±inf (a constant answer told NaN, not
+    "placeholder")?"""
     x = _numbers(value)
-    return x is not None and x.size > 0 and x.dtype != object and bool(np.isnan(x).all())
+    return x is not None and x.size > 0 and x.dtype != object and not np.isfinite(x).any()
 
 
 def _shape_words(expected, got) -> str | None:
@@ -878,8 +893,8 @@ def diagnose(
         # (CONVENTIONS.md, Exercises and grading)
         nan = _all_nan(value)
         kind = "nan" if nan else "constant"
-        if nan:
-            words = _NAN_WORDS
+        if nan:  # r286 C1: ±inf everywhere is told as NaN is, not "a placeholder"
+            words = _nan_words((), None, np.ravel(_numbers(value))[:1]) or _NAN_WORDS
         elif spec.constant is not None:
             words = spec.constant(value)
         else:
@@ -910,9 +925,16 @@ def diagnose(
         return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
     chosen_of = {}
     for r in failing:
-        chosen = next((f for f in whole if r.index in f.failing), None)
+        # r286 C1: inf is said as such, not as a symptom ("one texel alone") of a slip; a
+        # slip the checker runs and finds giving that very answer still names it (NaN keeps
+        # its symptoms: "both alphas 0 … not a division by zero" says more)
+        odd = run_checker(lambda r=r: _holds_inf(r), False)
+        ran = [f for f in fits if f.mistake.gives is not None] if odd else fits
+        chosen = next(
+            (f for f in whole if r.index in f.failing and (f.mistake.gives or not odd)), None
+        )
         if chosen is None:
-            here = [f for f in fits if r.index in f.failing and not f.coincidence]
+            here = [f for f in ran if r.index in f.failing and not f.coincidence]
             if not spec.partial_names:  # every failing answer, or no name
                 here = [f for f in here if len(f.failing) == len(failing)]
             here.sort(key=lambda f: (f.mistake.symptom, -f.agrees, len(f.mistake.parts), f.order))

@@ -121,7 +121,10 @@ def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", 
     ay = (float(ddy[0]) * sx, float(ddy[1]) * sy)
     if pair == "coordinate":
         ax, ay = (ax[0], ay[0]), (ax[1], ay[1])
-    rho = _COMBINE[combine](_NORMS[norm](ax), _NORMS[norm](ay))
+    if combine == "vectors":  # r286 M3: ddx + ddy added as vectors, the diagonal step
+        rho = _NORMS[norm]((ax[0] + ay[0], ax[1] + ay[1]))
+    else:
+        rho = _COMBINE[combine](_NORMS[norm](ax), _NORMS[norm](ay))
     if rho <= 0 and log != "none":
         return None
     lam = _LOG[log](rho)
@@ -148,8 +151,9 @@ LEVEL_KNOBS = Knobs(level_with, {
     ],
     "norm": [
         Slip("largest component", "each axis' length is Euclidean, √(a² + b²), not its largest "
-             "component", "max"),
-        Slip("|a| + |b|", "each axis' length is Euclidean, √(a² + b²), not |a| + |b|", "sum"),
+             "component (GL 4.6 §8.14.1 allows it as an approximation; this task asks for the ideal ρ)", "max"),
+        Slip("|a| + |b|", "each axis' length is Euclidean, √(a² + b²), not |a| + |b|"
+             " (GL 4.6 §8.14.1 allows it as an approximation; this task asks for the ideal ρ)", "sum"),
         Slip("squared length", "that is log2 of the squared length, twice λ: take the square "
              "root first (or halve the log)", "squared"),
     ],
@@ -160,6 +164,9 @@ LEVEL_KNOBS = Knobs(level_with, {
         Slip("summed before the root", "you summed the squares of both axes before the root, "
              "√(|∂/∂x|² + |∂/∂y|²); GL takes the longer axis, ρ = max(|∂/∂x|, |∂/∂y|), each "
              "axis its own length", "root"),
+        Slip("ddx + ddy as vectors", "you added ddx and ddy as vectors, ‖ddx + ddy‖: that is "
+             "the step to the diagonal pixel; each derivative is its own footprint axis, and GL "
+             "takes the longer of their two lengths", "vectors"),
         Slip("geometric mean", "that is the log of the geometric mean of the axes; GL takes the "
              "longer axis", "geometric"),
         Slip("mean of the axes", "that is the mean of the two axes; GL takes the longer axis "

@@ -410,7 +410,10 @@ def _texel_explainer(uv, texture, reference, lam=None):
             "repeat",
         )
         words = tf.explain_trilinear(args, reference[row, col], got[row, col])
-        return f"{where}, λ={num(float(lam[row, col]))}, {words}"
+        q, at = len(texture) - 1, float(lam[row, col])
+        if not 0 <= at <= q:  # r286 S10: where λ leaves the pyramid, the likely cause asked
+            words += f"; λ lies outside the pyramid [0, {q}] here: was it clamped first?"
+        return f"{where}, λ={num(at)}, {words}"
 
     return explain
 

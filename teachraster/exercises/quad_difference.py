@@ -86,8 +86,9 @@ def same_pair(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
     return all_close(np.asarray(got) / size, np.asarray(expected) / size, 3e-5)
 
 
-def _at(xy, w, f, x, y, clamp=False, affine=False) -> float:
-    """f at point (x, y): perspective-correct (or affine), extrapolated unless ``clamp``."""
+def _at(xy, w, f, x, y, clamp=False, affine=False, times_w=False) -> float:
+    """f at point (x, y): perspective-correct (or affine, or weighted λ·w for ``times_w``),
+    extrapolated unless ``clamp``."""
     (x1, y1), (x2, y2), (x3, y3) = xy
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
     lam = np.array([(x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
@@ -95,6 +96,9 @@ def _at(xy, w, f, x, y, clamp=False, affine=False) -> float:
                     (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x)]) / area  # fmt: skip
     if affine:
         return float(lam @ f)
+    if times_w:  # r286: λ·w normalised, lesson 04's mistake (the divide by w turned around)
+        mu = lam * w
+        return float(mu @ f / mu.sum())
     mu = perspective_weights(lam[None], w, extrapolate=not clamp)[0]
     return float(mu @ f)
 
@@ -110,8 +114,21 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
     right = pair(r0, c0)
     fine_x = _at(xy, w, f, c0 + 1.5, row + 0.5) - _at(xy, w, f, c0 + 0.5, row + 0.5)
     fine_y = _at(xy, w, f, col + 0.5, r0 + 1.5) - _at(xy, w, f, col + 0.5, r0 + 0.5)
+    at = (col + 0.5, row + 0.5)
+    eps = 1e-5  # a centred difference this small is the exact derivative to ~1e-10
+    exact = [_at(xy, w, f, at[0] + eps, at[1]) - _at(xy, w, f, at[0] - eps, at[1]),
+             _at(xy, w, f, at[0], at[1] + eps) - _at(xy, w, f, at[0], at[1] - eps)]  # fmt: skip
+    lr = _at(xy, w, f, c0 + 1.5, r0 + 1.5)
     return {
         "unaligned": pair(row, col),
+        # r286 M3: the slips a reader found told only the rule
+        "lower right": np.array(
+            [lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]
+        ),  # fmt: skip
+        "exact": np.array(exact) / (2 * eps),
+        "odd quads": pair(row - (row + 1) % 2, col - (col + 1) % 2),
+        "λ·w": pair(r0, c0, times_w=True),
+        "clamped and y up": pair(r0, c0, clamp=True) * [1, -1],
         # r64 07 D3: the quad's number taken for its upper-left pixel; lanes at pixel corners
         "quad number": pair(row // 2, col // 2),
         "corners": pair(r0, c0, centre=0.0),
@@ -138,13 +155,29 @@ MISTAKES = {
     "unaligned": "you took the quad whose upper-left pixel is this pixel: quads are aligned "
     "to even rows and columns, so pixel (row, col) belongs to the quad starting at "
     "(row − row mod 2, col − col mod 2)",
+    "lower right": "you differenced against the quad's lower-right lane (f(lower right) "
+    "minus its neighbours); coarse derivatives take the upper-left lane as the reference: ddx "
+    "is its right neighbour minus it, ddy its lower neighbour minus it",
+    "exact": "that is the exact derivative at the pixel's centre (a limit, or a tiny step): "
+    "the GPU has only the values at its quad's four lanes, so ddx and ddy are differences of "
+    "two lanes one whole pixel apart",
+    "odd quads": "your quads start on odd rows and columns: quads are aligned to even rows "
+    "and columns, so pixel (row, col) belongs to the quad starting at (row − row mod 2, "
+    "col − col mod 2)",
+    "λ·w": "you weighted the barycentrics by w (λ·w, normalised): perspective-correct "
+    "interpolation divides by w, weights λ_i/w_i normalised (lesson 04)",
+    "clamped and y up": "two slips: you clamped the interpolation at a helper pixel (a helper "
+    "extrapolates the triangle's values, weights outside [0, 1] and all; "
+    "`perspective_weights` clamps unless extrapolate=True); and your ddy has the wrong sign "
+    "(y grows downwards: the lower lane minus the upper one)",
     "quad number": "you took pixel (row // 2, col // 2) for the quad's upper-left pixel: that "
     "is the quad's number; its upper-left pixel is at twice that, (row − row mod 2, "
     "col − col mod 2)",
     "corners": "you evaluated f at the pixels' corners (col, row); a lane's value is the one at "
     "its pixel's centre (col + ½, row + ½), where the pixel is shaded",
     "clamped": "you clamped the interpolation at a helper pixel (outside the triangle): a "
-    "helper extrapolates the triangle's values, weights outside [0, 1] and all",
+    "helper extrapolates the triangle's values, weights outside [0, 1] and all "
+    "(`perspective_weights` clamps unless extrapolate=True)",
     "affine": "you interpolated affinely at the lanes: the values are perspective-correct "
     "(the divide by w), and so are their differences",
     "fine": "these are fine derivatives (each pixel's own row and column of the quad); "
@@ -222,7 +255,7 @@ def draw_quad(ax, case, got):
     for y in range(r0 - 2, r0 + 4):
         for x in range(c0 - 2, c0 + 4):
             inside = _inside(xy, x + 0.5, y + 0.5)
-            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#e4e4e4" if inside
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#d2d2d2" if inside
                                                   else "white", edgecolor="#bbbbbb", lw=0.5)))  # fmt: skip
     if method:
         q = lanes(xy, w, f, r0, c0)
@@ -246,7 +279,7 @@ def draw_quad(ax, case, got):
                                f"{vec(got, expected)}", transform=ax.transAxes,
                                fontsize="x-small", va="bottom",
                                bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
-    handles = [Patch(facecolor="#e4e4e4", edgecolor="#bbbbbb", label="covered"),
+    handles = [Patch(facecolor="#d2d2d2", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
     if method:
         handles[1:1] = [Patch(facecolor="#c8c8c8", edgecolor="#2b7bba", label="its quad"),

@@ -241,9 +241,18 @@ def _difference_panel(ax, scene: Scene):
     if not scene.categories and np.isfinite(d).any():
         # from 0: where every difference is the same size (a quarter of a pixel's samples)
         # the default scale drew them as its lowest, near-white shade (r64 06-3)
-        artists.append(ax.imshow(d, cmap="Reds", vmin=0, vmax=float(np.nanmax(d)),
-                                 extent=(0, w, h, 0), interpolation="nearest"))  # fmt: skip
-        biggest = f"\nlargest {np.nanmax(d):.3g} (darkest red)"
+        red = ax.imshow(d, cmap="Reds", vmin=0, vmax=float(np.nanmax(d)),
+                        extent=(0, w, h, 0), interpolation="nearest")  # fmt: skip
+        # r286 FIG8: a key for the reds under the panel; the title, which ran past the
+        # figure's edge with "(darkest red)", only says the largest
+        # (in an inset under the panel: a colour bar taking room from the panel moved it out
+        # of line with the two pictures)
+        cax = ax.inset_axes((0.1, -0.1, 0.8, 0.06))
+        bar = ax.figure.colorbar(red, cax=cax, orientation="horizontal")
+        bar.ax.tick_params(labelsize="x-small")
+        bar.set_label("|yours − package's|", fontsize="x-small")
+        artists += [red, bar]
+        biggest = f"\nlargest {np.nanmax(d):.3g}"
     else:
         mask = np.zeros((h, w, 4))
         mask[differs] = (0.84, 0.19, 0.12, 1.0)
@@ -369,7 +378,8 @@ def _stub_panels(scene: Scene, axes):
         if title == "the package's" and scene.inputs is not None:
             # its inputs instead, where the scene gives them (06, 07: r64 06-4, 07)
             shown = scene.inputs(ax)
-            ax.set_title(textwrap.fill(f"the scene's input: {shown}", 34), fontsize="small")
+            # r286 FIG6: 34 characters a line ran into the neighbouring panels' titles
+            ax.set_title(textwrap.fill(f"the scene's input: {shown}", 26), fontsize="small")
             continue
         artists.append(ax.text(0.5, 0.5, textwrap.fill(note, 20), ha="center", va="center",
                                transform=ax.transAxes, fontsize="small"))  # fmt: skip
@@ -391,8 +401,16 @@ class _Marks:
         x, y = [col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row]
         for box in self.boxes:
             box.set_data(x, y)
-        self.text.set_text(textwrap.fill(f"pixel ({row}, {col}): {words}", 90))
+        self.text.set_text(textwrap.fill(f"pixel ({row}, {col}): {words}", self._width()))
         return words
+
+    def _width(self) -> int:
+        """Characters a line of the explanation, from the figure's width and the font (r286
+        FIG5: 90 characters were cut at both sides of a 9-inch figure in the classroom
+        style), at about 0.55 em a character."""
+        fig = self.text.figure
+        inches = fig.bbox.width / fig.dpi
+        return max(40, min(110, int(0.95 * inches * 72 / (0.55 * self.text.get_fontsize()))))
 
     def click(self, event):
         if event.inaxes in self.axes and event.xdata is not None:

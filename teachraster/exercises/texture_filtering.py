@@ -79,7 +79,7 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     x's; ``wrap_as``
     wraps with another mode whatever the case says (clamping x and y to the texel centres
     first is the same as ``wrap_as="clamp"``; ``"swapped"``: clamps for "repeat" and tiles for
-    "clamp"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
+    "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
     ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels;
     ``transpose`` swaps the texture's rows and columns (its H and W too), ``"index"`` reads
     texel (row, col) as ``texture[col, row]`` with H and W right (IndexError where col ≥ H, as
@@ -108,13 +108,18 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     if mode == "swapped":  # the two modes exchanged
         mode = "clamp" if wrap == "repeat" else "repeat"
 
-    def index(i, n):
-        return int(np.mod(i, n)) if mode == "repeat" else int(np.clip(i, 0, n - 1))
+    def index(i, n, tiled=None):
+        tiled = mode == "repeat" if tiled is None else tiled
+        return int(np.mod(i, n)) if tiled else int(np.clip(i, 0, n - 1))
 
     def texel(r, c):
         return tex[c, r] if transpose == "index" else tex[r, c]
 
-    c0, c1, r0, r1 = index(x0, w), index(x0 + 1, w), index(y0, h), index(y0 + 1, h)
+    rows_tiled = False if mode == "columns" else None  # r286: "repeat" on the columns only
+    if mode == "columns":
+        mode = wrap
+    c0, c1 = index(x0, w), index(x0 + 1, w)
+    r0, r1 = index(y0, h, rows_tiled), index(y0 + 1, h, rows_tiled)
     top = texel(r0, c0) * (1 - fx) + texel(r0, c1) * fx
     bottom = texel(r1, c0) * (1 - fx) + texel(r1, c1) * fx
     return top * (1 - fy) + bottom * fy
@@ -268,7 +273,10 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
                   "axis takes its own", "fractions")],
     "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
                 Slip("always repeat", _wrap_words("repeat"), "repeat"),
-                Slip("wrap modes swapped", _modes_swapped_words, "swapped")],
+                Slip("wrap modes swapped", _modes_swapped_words, "swapped"),
+                Slip("repeat on columns only", "wrap 'repeat' tiles the texture along both "
+                     "axes; you tiled the columns (u) but clamped the rows (v): wrap the row "
+                     "index as you wrap the column index", "columns")],
     "clamp": [
         Slip("clamped (u, v) first", "you clamped (u, v) to [0, 1] first: with wrap 'repeat' a "
              "coordinate outside [0, 1] tiles, and near the border the texels beyond wrap "
@@ -294,6 +302,13 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
 })  # fmt: skip
 
 
+def _reversed(value):
+    """The channels reversed, or None where that is the same answer (one channel, or a
+    palindrome such as grey)."""
+    v = np.asarray(value, dtype=float)
+    return None if v.ndim == 0 or np.array_equal(v, v[::-1]) else v[::-1]
+
+
 def _nearest(tex, uv, wrap):
     return sample(tex, np.asarray(uv, dtype=float)[None], "nearest", wrap)[0]
 
@@ -317,6 +332,8 @@ def _some_texel(tex: np.ndarray, got) -> bool:
     g = np.asarray(got, dtype=float)
     flat = tex.reshape(tex.shape[0] * tex.shape[1], -1)
     if g.size != flat.shape[1] or len(flat) > 4096:  # the exercise's textures are small
+        return False
+    if not np.isfinite(g).all():  # r286 C1: inf is within TOL·inf of every texel
         return False
     scale = np.maximum(1.0, np.maximum(np.abs(flat), np.abs(g.reshape(1, -1))))
     return bool((np.abs(flat - g.reshape(1, -1)) <= TOL * scale).all(axis=1).any())
@@ -347,6 +364,13 @@ BILINEAR_MISTAKES = [
     # r64 07 D2: `return texture[0, 0]` was given the method
     Mistake("texel [0, 0]", ": that is texel [0, 0] (the upper-left one), whatever uv: a "
             "placeholder left in?", gives=lambda tex, uv, wrap: np.asarray(tex, float)[0, 0]),
+    # r286 M3, M4: the channels in another order, and a value that ignores uv
+    Mistake("channels reversed", ": the same values in another channel order (reversed, as "
+            "BGR for RGB): channel k of the answer is channel k of the texture",
+            gives=lambda tex, uv, wrap: _reversed(expected_bilinear(tex, uv, wrap))),
+    Mistake("texture's mean", ": that is the mean of the whole texture, whatever uv: bilinear "
+            "blends only the four texels around (u, v)",
+            gives=lambda tex, uv, wrap: np.asarray(tex, float).mean(axis=(0, 1))),
     Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
             "around (u, v)", gives=_nearest),
     # a symptom: a texel alone is also what swapped weights give at a texel centre (r40 07-1),
@@ -446,6 +470,7 @@ def draw_texture_case(ax, case, got):
     each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2 asks for: drawn
     once two different answers have failed, as the words say it (r64 07 D2)."""
     from matplotlib.patches import Rectangle
+    from matplotlib.ticker import MaxNLocator
 
     from . import tries
 
@@ -482,6 +507,9 @@ def draw_texture_case(ax, case, got):
     ax.set_xlim(min(0, x0) - 0.2, max(w, x0 + 2) + 0.2)
     ax.set_ylim(max(h, y0 + 2) + 0.2, min(0, y0) - 0.2)
     ax.set_aspect("equal")
+    # r286 FIG7: texel numbers are whole ("0.0 2.5 5.0 7.5" read as fractions of a texel)
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.yaxis.set_major_locator(MaxNLocator(integer=True))
     where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
              f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
     if method:
@@ -568,12 +596,14 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
 
     ``clamp`` "weight" clamps the levels but weighs them by the raw λ − ⌊λ⌋, "extrapolate"
     weighs by λ minus the clamped lower level, "index" uses ⌊λ⌋ as a Python index (level −1
-    is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone) or "lower"
-    (⌊λ⌋ alone); ``texels="nearest"`` filters each level with its nearest texel.
+    is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone), "round()"
+    (the level Python's round() of the weight picks) or "lower" (⌊λ⌋ alone); ``clamp="q - 1"``
+    clamps λ to [0, q − 1]; ``texels="level 0 size"`` filters every level with level 0's W
+    and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
     q = len(pyramid) - 1
-    if clamp == "lambda":
-        lam = min(max(lod, 0.0), q)
+    if clamp in ("lambda", "q - 1"):  # "q - 1": r286, the last level taken for q − 1
+        lam = min(max(lod, 0.0), q if clamp == "lambda" else max(q - 1, 0))
         lower = int(np.floor(lam))
         t = lam - lower
     else:
@@ -587,10 +617,17 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     upper = min(lower + 1, q) if lower >= 0 else lower + 1
 
     def level(d):
+        if texels.startswith("level 0 size"):  # r286: level 0's W and H for every level
+            (h0, w0), (h, w) = np.shape(pyramid[0])[:2], np.shape(pyramid[d])[:2]
+            uv_d = np.asarray(uv, dtype=float) * [w0 / w, h0 / h]
+            tiled = {"wrap_as": "repeat"} if texels.endswith("tiled") else {}
+            return plain_bilinear(pyramid[d], uv_d, wrap, **tiled)
         return _filter(pyramid[d], _level_uv(uv, d, texels), wrap, texels)
 
     if levels == "nearest":
         return level(int(np.clip(round(lod), 0, q)))
+    if levels == "round()":  # r286: Python's round() of the weight, half to even
+        return level(upper if round(t) else lower)
     if levels == "lower":
         return level(lower)
     if levels == "finest":
@@ -644,6 +681,14 @@ def _tri_words(text):
     return words
 
 
+def _level0_tiled_words(args, expected, got) -> str:
+    """Level 0's size, and every level tiled: the tiling said only where the case clamps."""
+    tiled = ("" if args[3] == "repeat" else ", and tiled ('repeat') every level although this "
+             f"case asks for wrap={args[3]!r}")  # fmt: skip
+    return (f"you filtered every level with level 0's W and H (x = u·W₀ − ½){tiled}: each "
+            "level's bilinear needs that level's own size, texel centres at (i + ½)/W_level")  # fmt: skip
+
+
 TRILINEAR_KNOBS = Knobs(trilinear_with, {
     "clamp": [
         Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
@@ -652,6 +697,9 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
         Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
              "[0, q] = [0, {q}] first; the weight λ − ⌊λ⌋ then stays in [0, 1]"),
              "extrapolate"),
+        Slip("λ clamped to [0, q − 1]", _tri_words("λ = {lod}: you clamped λ to [0, q − 1]; "
+             "the pyramid's levels run from 0 to q = {q} (the last, 1×1 level is level q), so "
+             "clamp λ to [0, {q}]"), "q - 1"),
         Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
              "[0, q] = [0, {q}] first (⌊λ⌋ = −1 is not a level: Python's pyramid[-1] is the last "
              "one)"), "index"),
@@ -661,6 +709,10 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
     "levels": [
         Slip("nearest level", _tri_words("that is level {near} alone (the nearest); trilinear "
              "blends levels {d0} and {d1}"), "nearest"),
+        Slip("round() for the nearest level", _tri_words("that is one level alone, chosen "
+             "with Python's round(), which rounds halves to even (round(0.5) = 0, round(2.5) = "
+             "2); and trilinear takes no level alone: it blends levels {d0} and {d1}, level "
+             "{d1} weighted by λ − ⌊λ⌋ = {t}"), "round()"),
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
         Slip("upper level only", _tri_words("that is level {d1} alone; trilinear blends it with "
@@ -671,7 +723,8 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
     "texels": [
         Slip("nearest texels", "you took the nearest texel of each level; trilinear filters "
              "each level bilinearly, with its own size", "nearest"),
-        Slip("uv scaled per level", "you scaled uv by 2^level for each level; (u, v) is "
+        Slip("uv scaled per level", "you scaled uv by 2^level for each level (the same as "
+             "filtering every level with level 0's W and H); (u, v) is "
              "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
              "the level's texels from that level's own W and H: pass uv unchanged",
              "uv times 2^d"),
@@ -679,6 +732,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
              "the level's texels from that level's own W and H: pass uv unchanged",
              "uv over 2^d"),
+        # after "uv scaled per level", the same answer where every level halves exactly
+        Slip("level 0's size for every level", "you filtered every level with level 0's W "
+             "and H (x = u·W₀ − ½): each level's bilinear needs that level's own size, "
+             "texel centres at (i + ½)/W_level", "level 0 size"),
+        Slip("level 0's size for every level", _level0_tiled_words, "level 0 size, tiled"),
         Slip("bilinear: texel corners", "the levels are sampled at texel corners (x = u·W, "
              "not u·W − ½)" + _BILINEAR_FIRST, "corners"),
         Slip("bilinear: always clamp", "the levels are clamped at the border whatever the wrap "

@@ -21,12 +21,25 @@ def close(got, expected, tol: float = TOL) -> bool:
 
 
 def all_close(got: np.ndarray, expected: np.ndarray, tol: float = TOL) -> bool:
-    """Elementwise :func:`close` of arrays of the same shape."""
+    """Elementwise :func:`close` of arrays of the same shape.
+
+    Non-finite entries must be equal, as in :func:`close` (r286 C1: the scale
+    max(1, |got|, |expected|) is inf where got is, and inf ≤ tol·inf held, so an answer of
+    ±inf passed):
+
+    >>> all_close([1.0, np.inf], [1.0, 2.0]), all_close([np.nan, -np.inf], [np.nan, -np.inf])
+    (False, True)
+    """
     got, expected = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
     if got.shape != expected.shape:
         return False
-    scale = np.maximum(1.0, np.maximum(np.abs(got), np.abs(expected)))
-    return bool(np.all(np.abs(got - expected) <= tol * scale))
+    finite = np.isfinite(got) & np.isfinite(expected)
+    same = (got == expected) | (np.isnan(got) & np.isnan(expected))
+    if not np.all(finite | same):
+        return False
+    g, e = got[finite], expected[finite]
+    scale = np.maximum(1.0, np.maximum(np.abs(g), np.abs(e)))
+    return bool(np.all(np.abs(g - e) <= tol * scale))
 
 
 def dedupe(poly: np.ndarray, tol: float = TOL) -> np.ndarray:
