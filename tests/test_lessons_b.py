@@ -5908,7 +5908,14 @@ def test_07_review_r266_who_requires_what():
     assert "A GPU gets them all right" not in intro and "real GPU rasteriser" not in intro
     assert "Direct3D mandates the top-left rule and 8 sub-pixel bits" in intro
     assert 'OpenGL and Vulkan require only "exactly one" and at least 4 bits' in intro
-    (sec1,) = [c for c in cells if c.startswith("## 1. Ties on pixel centres")]
+    # review r284 S-7: the table stands after §1's first figure (the split square), not before
+    (sec1,) = [c for c in cells if "**Who requires what.**" in c]
+    first_figure = next(
+        i for i, c in enumerate(cells) if "ours_vs_naive(" in c and "introduce(" in c
+    )
+    assert cells.index(sec1) > first_figure
+    assert "**Who requires what.**" not in text[next(i for i, t in enumerate(text)
+                                                     if t.startswith("## 1. Ties"))]  # fmt: skip
     rows = {line.split("|")[1].strip(): line for line in sec1.splitlines() if line.startswith("| ")}
     assert list(rows) == ["", "OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
                           "teachraster"]  # fmt: skip
