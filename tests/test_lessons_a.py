@@ -121,6 +121,8 @@ ANSWERED_BELOW = {
         "q_behind": ["BEHIND_TEXT = ", "mirrored vertex"],
         # review r244 change 2: float32 and unorm24 near 0.6, asked before the table says it
         "q_depth": ["DEPTH_TEXT = ", "lose about the same", "both step by"],
+        # review r284 P-1: the Try it's answer, y up beside y down, held under q_try
+        "q_try": ["TRY_TEXT = ", "rounding accident", "try_split"],
     },
 }
 

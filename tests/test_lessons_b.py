@@ -1420,7 +1420,7 @@ def test_07_triangles_numbered_from_1():
     printed = " ".join(streams(executed("07_hard_cases").notebook()).split())
     cells = _07_sources()
     (fan,) = [c for c in cells if c.startswith("q_fan.hold()")]
-    assert 'label=f"the hub: triangle {hub_owner + 1}\'s"' in fan and ns.hub_owner == 0
+    assert 'f"the hub: triangle {hub_owner + 1}\'s"' in fan and ns.hub_owner == 0
     # review r236 S-5: the row's owner in the slivers' title, "sliver 2", not "sliver [2]"
     assert ns.owners == [ns.below] == [1] and ns.row_owners == "sliver 2" and ns.where
     (sliver,) = [c for c in cells if 'introduce("sliver_pair")' in c]
@@ -1759,7 +1759,8 @@ def test_07_review_r145_picker_methods_and_subpixel_view():
 
     picker = CasePicker("subpixel_triangles", backend="image")
     try:
-        assert picker.methods_differ == 0 and "the same pixels" in picker.info.value
+        # review r284 S-5: the methods' agreement is the simulator's self-test: not shown
+        assert picker.methods_differ == 0 and "the same pixels" not in picker.info.value
         assert not hasattr(picker, "method") and picker.rule.value == CASE_NAIVE
         assert "the rule you pick" in picker.widget.children[0].value
         # ticks: the image's own rows and columns (review r227 FIG-1): (2, 3) and (5, 5) named
@@ -1897,7 +1898,8 @@ def test_07_review_r210_fan_figure_and_legends():
     raw = streams(executed("07_hard_cases").notebook())
     assert all(len(line) <= 80 for line in raw.splitlines())
     printed = " ".join(raw.split())
-    assert "0 at the origin, 0 at 1e4 px, 64 at 1e5 px, 64 at 1e6 px" in printed
+    # review r284 P-1: the per-offset line answered the Try it ("0 at 1e4 px"): not printed
+    assert "0 at 1e4 px" not in printed
     assert "wrong at 10000" not in printed and "float32 at 1e5 px" in printed
     # counts_legend: run the lesson's helpers and read each key's columns as matplotlib fills
     # them (column by column, the first columns one longer)
@@ -4627,7 +4629,7 @@ def test_07_review_r215_printed_lines_are_named_by_their_words():
     (coplanar,) = [c for c in cells if c.startswith("q_depth.hold()")]
     assert "B − A: slope/{size_px // 2} per px" in coplanar and "step {depth_step[fmt]" in coplanar
     (drift,) = [c for c in cells if c.startswith("The float32 stepper's signed error")]
-    assert "The figure writes over each range what it adds" in drift
+    assert "The box at the lower left lists what each range of $f$ adds" in drift  # r284 S-3
 
 
 def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
@@ -5279,7 +5281,8 @@ def test_07_review_r236_llvmpipe_beside_ours_and_the_smaller_items():
         )
         (shown,) = [c for c in run.cells if c.source.startswith("# llvmpipe, a real OpenGL")]
         assert sum("image/png" in o.get("data", {}) for o in shown.outputs) == 1
-    (intro,) = [" ".join(c.split()) for c in cells if c.startswith("**The same meshes on a GPU.**")]
+    gpu_head = "**The same meshes in a real OpenGL: Mesa's llvmpipe.**"  # r284 S-2: no GPU
+    (intro,) = [" ".join(c.split()) for c in cells if c.startswith(gpu_head)]
     assert "`tests/test_hardcases_gl.py`" in intro and "llvmpipe" in intro
     # FIG-1: the / split's left panel by owner, the key counting each triangle's pixels
     (square,) = [c for c in cells if c.startswith('case, ours = introduce("d3d_split_square_other')]
@@ -5380,7 +5383,7 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
     # FIG-5: llvmpipe's owners keyed; the \\ split is not "the colours of the figures above"
     gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
     assert "fig.legend(" in gpu and "the pixel's owner: one colour per triangle" in gpu
-    gpu_text = " ".join(cells[at("**The same meshes on a GPU.**")].split())
+    gpu_text = " ".join(cells[at("**The same meshes in a real OpenGL")].split())
     assert "the colours of the figures above" not in gpu_text and "picker's colours" in gpu_text
     # M-1: the decal: float64 fights by rounding alone, the others tie; an offset cures all
     # (review r253: a small decal inside the wall, 121 px, and the offset's sign: -1 units)
@@ -5434,6 +5437,8 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
             words += sum(len(t.split()) for t in re.findall(r'_TEXT = r?f?"""(.*?)"""', text, re.S))
     # the decal's 200 new words included; r266's standards table (who requires what, about
     # 190 words) paid for in part by shorter held texts (FAR_TEXT, GAPS_TEXT, cells 0, 5)
+    # r284's Try it question and its held reading (about 150 words) paid for by a shorter
+    # FAR_TEXT, Try it, intro and catalogue text
     assert words < 4000, words
 
 
@@ -5872,7 +5877,7 @@ def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
         return i
 
     gpu = cells[at("# llvmpipe, a real OpenGL rasteriser")]
-    assert "one colour per triangle; the fan's 16 alternate two" in gpu
+    assert "one colour per triangle; the fan's 16 share three" in gpu  # r284 S-6: the picker's
     assert '"the pixel\'s owner, one colour per triangle"' not in gpu
     # FIG-3: every vertex name of the six-orders figure lies inside its panel's frame
     imports = cells[1].split("style = use_style")[0].replace("%matplotlib inline\n", "")
@@ -5922,7 +5927,14 @@ def test_07_review_r266_who_requires_what():
     assert "A GPU gets them all right" not in intro and "real GPU rasteriser" not in intro
     assert "Direct3D mandates the top-left rule and 8 sub-pixel bits" in intro
     assert 'OpenGL and Vulkan require only "exactly one" and at least 4 bits' in intro
-    (sec1,) = [c for c in cells if c.startswith("## 1. Ties on pixel centres")]
+    # review r284 S-7: the table stands after §1's first figure (the split square), not before
+    (sec1,) = [c for c in cells if "**Who requires what.**" in c]
+    first_figure = next(
+        i for i, c in enumerate(cells) if "ours_vs_naive(" in c and "introduce(" in c
+    )
+    assert cells.index(sec1) > first_figure
+    assert "**Who requires what.**" not in text[next(i for i, t in enumerate(text)
+                                                     if t.startswith("## 1. Ties"))]  # fmt: skip
     rows = {line.split("|")[1].strip(): line for line in sec1.splitlines() if line.startswith("| ")}
     assert list(rows) == ["", "OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
                           "teachraster"]  # fmt: skip
@@ -5977,6 +5989,53 @@ def test_07_review_r266_the_e_sum_and_a_try_it_not_answered_before():
     assert scope["try_far"](_far_coverage(True, np.float32), ns.FAR_OFFSETS) == {
         1_000: 0, 10_000: 7, 30_000: 70}  # fmt: skip
     assert "at 1e4 px (16 x 16 window)" not in printed  # the student's run answers it
+
+
+@pytest.mark.notebook
+def test_07_review_r284_the_try_it_asked_and_answered_in_its_own_numbers():
+    """Review r284 P-1: the far cell printed "0 at 1e4 px" before the Try it, whose y-up
+    float32 form gets 7 wrong there and 70 drawn outside at 3e4 px. The far cell no longer
+    prints the per-offset line; q_try asks, its answer computed from the y-up form (the same
+    as the tests' own rewrite of my_coverage); the held cell gives y up beside y down, C's
+    errors and the gaps, and the text quotes them, with Direct3D's ±32,768 px. S-1: try_far
+    counts pixels outside the triangle apart from those missing of its 64."""
+    from notebook_runs import executed, streams
+
+    ns = lesson("07_hard_cases")
+    assert ns.try_yup == {1_000: 0, 10_000: 7, 30_000: 70}
+    assert ns.try_answer == ns.try_choices[1] == "none at 10³ px, some at 10⁴ and 3·10⁴"
+    assert ns.try_split == {1_000: [(0, 0), (0, 0)], 10_000: [(0, 7), (0, 0)],
+                            30_000: [(70, 0), (73, 0)]}  # fmt: skip
+    from teachraster.study import hardcases
+
+    cells = _07_sources()
+    (far,) = [c for c in cells if c.startswith("def try_far(")]
+    scope = {"np": np, "far_case": hardcases.get_case("far_from_origin"), "hardcases": hardcases}
+    exec(far.split("\n\n\nFAR_OFFSETS")[0], scope)  # the tests' own rewrite: the same counts
+    assert scope["try_far"](_far_coverage(True, np.float32), ns.FAR_OFFSETS, show=False) == (
+        ns.try_yup
+    )
+    assert ns.try_c_off[1_000] == [0.0, 0.0] and ns.try_c_off[10_000] == [4.625, 0.875]
+    assert ns.try_gap == {1_000: 0.0625, 10_000: 8.0, 30_000: 64.0}
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    assert "0 at 1e4 px" not in printed and "pixels wrong: naive float32" not in printed
+    assert "wrong pixels from 1e5" not in printed
+    assert "1 pixel wrong: 1 drawn outside the triangle, 0 of its 64 missing" in printed
+    held = _07_held_markdown(run, "q_try.hold()")
+    for said in ("are 8 apart: C is off by up to 4.625 in your y-up numbers, 0.875 in the "
+                 "y-down ones", "yours misses 7 pixels, the y-down form 0",
+                 "rounding accident", "(gap 64: an edge moves up to 5.5 px)",
+                 "outside the triangle, 70 and 73", "±32,768 px (D3D11.3 §15.16"):  # fmt: skip
+        assert said in held, said
+    (k,) = [i for i, c in enumerate(cells) if c.startswith("def try_far(")]
+    assert (
+        cells[k + 1].startswith("# The Try it's question")
+        and "q_try = PredictChoice(" in (cells[k + 1])
+    )
+    assert cells[k + 2].startswith("q_try.hold()")
+    try_it = " ".join(cells[k - 1].split())
+    assert "`E = A*x + B*y + C` in that order" in try_it and "**Predict first**" in try_it
 
 
 def test_06_one_span_explorer_and_q_span():

@@ -5,8 +5,9 @@ rule: the left panel colours every pixel by the triangle that owns it (vermillio
 pixel is covered twice), the right panel shows what a naive rasteriser covers (the case's own
 naive version, or one of :data:`~teachraster.study.hardcases.NAIVE_RULES` applied to the
 case: no tie rule either way, whole-pixel vertices, one winding), and the text gives the
-case's *why*, what a correct rasteriser *must* do, whether ours passes its check, and how the
-naive version differs. Both panels are ticked with the image's own rows and columns.
+case's *why*, what a correct rasteriser *must* do (and, only if ours fails it, that it does),
+and how the naive version differs. Both panels are ticked with the image's own rows and
+columns.
 
 Some cases are not meshes but separate copies of one triangle (every vertex order, whole-pixel
 shifts): their copies overlap by design, and a pixel covered by two of them is no error. For
@@ -896,10 +897,13 @@ class CasePicker:
 
     def _info_html(self) -> str:
         c = self._case
-        verdict = ("<b style='color:#009E73'>passes its check</b>" if self.passed
-                   else f"<b style='color:#D55E00'>FAILS</b>: {html.escape(self.failure)}")  # fmt: skip
-        lines = [f"<b>why</b>: {html.escape(c.why)}", f"<b>must</b>: {html.escape(c.expect)}",
-                 f"ours: {verdict}", self._methods_html()]  # fmt: skip
+        # the simulator's self-test speaks only when it fails: the text is about the GPU's
+        # rules (review r284 S-5; the lesson's introduce() is silent the same way)
+        lines = [f"<b>why</b>: {html.escape(c.why)}", f"<b>must</b>: {html.escape(c.expect)}"]
+        if not self.passed:
+            lines.append(f"ours: <b style='color:#D55E00'>FAILS</b>: {html.escape(self.failure)}")
+        if self.methods_differ:
+            lines.append(self._methods_html())
         if self.naive_says:
             lines.append(f"<b>naive</b>: {html.escape(self.naive_says)}")
         if self.difference:
@@ -908,13 +912,8 @@ class CasePicker:
         return "<br>".join(lines)
 
     def _methods_html(self) -> str:
-        """One line: whether the fill methods give the same pixels here."""
-        others = [m for m in self._case.methods if m in hardcases.FILL_METHODS]
-        names = " and ".join(others)
-        if len(others) < 2:
-            return f"fill method: {names} only for this case"
-        if not self.methods_differ:
-            return "ours by half-planes and by span tables: the same pixels, the same owners"
+        """One line, shown only when the fill methods disagree here: which, and where."""
+        names = " and ".join(m for m in self._case.methods if m in hardcases.FILL_METHODS)
         return (f"<b style='color:#D55E00'>{names} differ at {self.methods_differ} "
                 "pixel(s)</b>")  # fmt: skip
 

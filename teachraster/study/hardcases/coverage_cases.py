@@ -163,8 +163,8 @@ _six_orders()
 add_case(
     HardCase(
         "flat_top",
-        "a flat-top triangle (top edge on a row of centres): the span split degenerates "
-        "(lesson 01 §6: no split)",
+        "a flat-top triangle (top edge on a row of centres): point 4, where spans split, is "
+        "the top vertex (lesson 01 §6)",
         "triangle",
         "exactly the centres with i >= 1, j >= 1, i + j < 8 (21 pixels): the top and left "
         "edges' centres covered, the hypotenuse's (a right edge) not",

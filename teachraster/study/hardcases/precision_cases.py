@@ -144,7 +144,8 @@ def _far_case():
             check,
             "float32 edge functions in absolute form (A x + B y + C, C = x_a y_b - y_a x_b: two "
             "products of size x·y, ~1e12 at 1e6 px, cancelling to ~1e7) lose the "
-            "bits that decide coverage (wrong pixels from 1e5); *Triangle Rasterisation II - Interpolation*'s absolute plane "
+            "bits that decide coverage (every pixel wrong at 1e5 and 1e6 px; nearer in, how many "
+            "depends on how the products round); *Triangle Rasterisation II - Interpolation*'s absolute plane "
             "equation in float64 is off by ~3e-6 at 1e6",
             naive,
             shows,
