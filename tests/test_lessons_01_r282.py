@@ -114,7 +114,7 @@ def test_m1_clipping_is_said_and_the_try_it_holds():
     assert "Rows and spans are **clipped to the image**" in " ".join(ns.TABLE_TEXT.split())
     assert "gets each span end exactly, by an integer division" in " ".join(ns.TABLE_TEXT.split())
     try_it = _source("c17-try")
-    assert "off[2] = [4.5, -6.5]" in try_it
+    assert "off[2] = [2.5, -6.5]" in try_it
     # the Try-it, done: v3 above the image; the loops start at row 0 and match the package
     cells = _cells()
     scope: dict = {"np": np, "tr": tr, "math": __import__("math")}
@@ -122,7 +122,7 @@ def test_m1_clipping_is_said_and_the_try_it_holds():
         code = "".join(next(c for c in cells if c.get("id") == cid)["source"])
         code = code.split("\n\n\ncover, ends =")[0].split("\n\n\nstepped, stepped_ends")[0]
         exec(code.replace("q_row.hold()", ""), scope)
-    off = np.array([[8.5, 17.5], [18.5, 9.5], [4.5, -6.5]])
+    off = np.array([[8.5, 17.5], [18.5, 9.5], [2.5, -6.5]])  # every edge du/dv dyadic
     ref = tr.rasterize(tr.Triangle(off), 20, 20, method="span").coverage
     cover, ends = scope["span_fill"](off, 20, 20)
     stepped, _ = scope["span_fill_stepped"](off, 20, 20)
