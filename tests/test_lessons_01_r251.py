@@ -215,7 +215,7 @@ def test_fig2_v2_label_leaves_row_9_free():
         "plot_triangle": plot_triangle,
         "COLORS": COLORS,
         "mirror_fill": ns.mirror_fill,
-        "vertex_rows": ns.vertex_rows,
+        "q_rows": ns.q_rows,
     }  # fmt: skip (r265 P2: the mirrored triangle)
     exec(body, scope)
     fig = plt.figure()
@@ -273,13 +273,13 @@ def test_s1_span_captions_write_heights_as_v():
 def test_s1_package_narration_is_folded():
     c00, c02, c14 = (" ".join(_source(k).split()) for k in ("c00", "c02", "c14"))
     assert "The package's captions, and the player's, are shared" not in c00
-    folded = c02.split("<details>")[1]
-    assert "`trace.edges`" in folded and "`trace.edges`" not in c02.split("<details>")[0]
-    # r265 S1/density: one explanation of the walk (section 1's fold), not three
-    assert "<details>" not in c14 and "edges walked" in folded
+    # r265 S1/density: one explanation of the walk, not three; r282 S5: no arrowheads in span
+    # mode, so one sentence in section 1 and no fold
+    assert "<details>" not in c02 and "walk" not in c14
     table = _source("c10")
     assert "Each row is one step of the package's trace." not in table
-    assert "<details>" not in table and "section 1)" in table
+    # r282 S3: the polygon aside (edge tables) is folded; the walk is no longer named there
+    assert table.count("<details>") == 1 and "edge_walk" not in table
 
 
 def test_s2_figure_code_lives_in_the_plotting_module():

@@ -988,10 +988,15 @@ def test_01_predictions_and_the_stepping_failure_rates():
     # r265 P2: asked on the triangle mirrored (u -> 20 - u), where row 9 starts at the middle
     # vertex, a left end: its pixel is filled (as given it is the right end: empty), so the
     # answer needs the rule at the vertex, not row 5's worked pattern again
-    assert ns.vertex_rows == [1, 9, 17] and ns.row_counts == [0, 12, 0]
-    assert ns.vertex_ends == {1: [15.5, 15.5], 9: [1.5, 13.5], 17: [11.5, 11.5]}
+    # r282 P1: rows 1 and 17 needed the half-open rule, held until Check: q_row asks row 5
+    # mirrored (ends 8.5 in, 14.5 out: not the worked row's mirror image) and row 9, both
+    # decided by the rule as section 4 states it; rows 1 and 17 are the held rule's examples
+    assert ns.q_rows == [5, 9] and ns.row_counts == [6, 12]
+    assert ns.vertex_rows == [1, 9, 17] and ns.vertex_counts == [0, 12, 0]
+    assert ns.row_ends == {1: [15.5, 15.5], 5: [8.5, 14.5], 9: [1.5, 13.5], 17: [11.5, 11.5]}
+    assert ns.cols_5.tolist() == list(range(8, 14)) and ns.worked_5.tolist() == list(range(5, 11))
     assert np.flatnonzero(ns.row_answer[9]).tolist() == list(range(1, 13))
-    assert ns.row_answer.sum() == 12 and ns.cols_mid.tolist() == list(range(1, 13))
+    assert ns.row_answer.sum() == 18 and ns.cols_mid.tolist() == list(range(1, 13))
     assert ns.vertex_filled == [False, False, False]
     assert ns.mirror_filled == [False, True, False] and ns.row_answer[9, 1]  # v2's pixel
     nb_cells = json.loads((NOTEBOOKS / "01_span_tables.ipynb").read_text())["cells"]
@@ -1392,18 +1397,18 @@ def _markdown_of(name: str, cell_id: str) -> str:
 @pytest.mark.notebook
 def test_01_r239_arrows_show_the_walk_the_text_names():
     """Review r239 01-C1: the edges' arrowheads ran v3→v2→v1 (the package's walk, v1→v3→v2)
-    under a text and a winding arc saying v1→v2→v3, with nothing said. Section 1 prints the
-    walk from the trace and says why the package walks the other way round; the held text
-    above the first figure with arrowheads (section 4's) names it; the figures whose
-    arrowheads sat on ties draw none (the player's winding step: tests/test_setup_marks.py)."""
+    under a text and a winding arc saying v1→v2→v3, with nothing said. r282 S5: span tables
+    draw no arrowheads now (tests/test_setup_marks.py), so the lesson's fold on the walk and
+    its mentions go; one sentence in section 1 reads the winding caption's "walked"."""
     ns = lesson("01_span_tables")
-    assert ns.edge_walk == "v1→v3→v2" and ns.trace.turn == "counter-clockwise"
+    assert ns.trace.turn == "counter-clockwise"
     assert "walked v1→v3→v2 instead" in ns.trace.caption(1)  # printed in section 1
     sort_text = _markdown_of("01_span_tables", "c02")
-    assert "the order in which the package **walks** the edges" in sort_text
-    assert "It walks a counter-clockwise triangle the other way round" in sort_text
-    assert "show that walk, not the order given" in sort_text
-    assert f"the package's walk,\n{ns.edge_walk}, section 1" in ns.TABLE_TEXT  # r265: one fold
+    assert "<details>" not in sort_text and "arrowhead" not in sort_text
+    assert "the span loop has no walk: it runs down every edge, top to bottom" in sort_text
+    assert (
+        "arrowhead" not in ns.TABLE_TEXT and "edge_walk" not in _notebook_cells("01_span_tables")[3]
+    )
     cells = _notebook_cells("01_span_tables")
     texts = ["".join(c["source"]) for c in cells]
     held = next(i for i, t in enumerate(texts) if "TABLE_TEXT = (" in t)
@@ -1412,9 +1417,7 @@ def test_01_r239_arrows_show_the_walk_the_text_names():
     # every plot_triangle of the lesson draws no arrowheads (only the step views do)
     calls = re.findall(r"plot_triangle\(([^\n]*)\)", "\n".join(texts))
     assert calls and all("arrows=False" in call for call in calls), calls
-    # r265: the player's own fold folded into section 1's, the one place the walk is told
-    assert 'the player from its winding step on, keyed "edges walked"' in sort_text
-    assert "<details>" not in _markdown_of("01_span_tables", "c14")
+    assert "walk" not in _markdown_of("01_span_tables", "c14")
 
 
 @pytest.mark.notebook

@@ -4,8 +4,8 @@ Lesson 01's player showed its set-up steps 0-3 as one picture (the stage PNGs of
 and 3 byte-identical): only the captions changed. Now the winding step draws an arrow turning
 the way v1 -> v2 -> v3 run, the rows step the raster lines to visit (the bottom vertex's
 dotted: traced, not visited), the sort and split steps the roles; the key names what each
-step draws (the split's step its two tinted parts, the last step no raster line), and the
-long edge's arrowhead no longer sits on point 4.
+step draws (the split's step its two tinted parts, the last step no raster line), and span
+tables draw no arrowheads (review r282 01-S5).
 """
 
 from __future__ import annotations
@@ -112,21 +112,15 @@ def test_the_key_names_what_the_step_draws(player):
         assert not any("y = v_mid" in t for t in keyed(view)), k
 
 
-def test_the_long_edges_arrow_is_off_point_4(player):
-    """r229 01-FIG1: the long edge's arrowhead sat on point 4 (the middle vertex is halfway
-    down, so point 4 is the edge's midpoint) and on its "4"."""
-    view, span = player.view, player.view.trace.span
-    point_4 = np.array([span.u4, span.sorted_xy[1, 1]])
-    xy = view.trace.snapped
-    long_edge = {int(span.order[0]), int(span.order[2])}
-    k = next(i for i, (a, b) in enumerate(view.trace.edges) if {int(a), int(b)} == long_edge)
-    arrow = np.array(view.triangle.arrows[k]._posA_posB)  # tail, head (data units)
-    assert np.hypot(*(arrow - point_4).T).min() > 2.5
-    # still on the edge, pointing along it
-    a, b = xy[view.trace.edges[k]]
-    for p in arrow:
-        assert abs((b - a)[0] * (p - a)[1] - (b - a)[1] * (p - a)[0]) < 1e-9
-    assert np.dot(arrow[1] - arrow[0], b - a) > 0
+def test_span_tables_draw_no_arrowheads(player):
+    """r282 01-S5: the arrowheads showed the package's walk v1→v3→v2 on a triangle the lesson
+    calls counter-clockwise, and cost it paragraphs of excuse; the span loop has no walk (it
+    runs down every edge, top to bottom). r229 01-FIG1's arrowhead on point 4 goes with them."""
+    view = player.view
+    for k in range(len(view.trace)):
+        view.show_step(k, draw=False)
+        assert not any(a.get_visible() for a in view.triangle.arrows), k
+        assert not any(t.startswith("edges walked") for t in keyed(view)), k
 
 
 @pytest.mark.parametrize("xy", [CCW, CW], ids=["ccw", "cw"])
@@ -212,10 +206,10 @@ def test_the_edges_arrows_show_the_walk_once_the_winding_has_chosen_it(xy):
     """r239 01-C1: at the winding step the arc, labelled v1→v2→v3 counter-clockwise, stood
     over arrowheads turning the other way (the package walks a counter-clockwise triangle
     v1→v3→v2). The arrowheads, read from trace.edges, show from the step after the winding
-    on, keyed with the walk at the set-up steps."""
+    on, keyed with the walk at the set-up steps (half-planes: span tables draw none)."""
     with plt.style.context("default"):
         use_style("classroom")
-        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True)
+        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="halfplane", trace=True)
         view = FillView(fill, step=0)
         try:
             trace = fill.trace
