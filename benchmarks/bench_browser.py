@@ -145,6 +145,26 @@ editor""",
 ]
 
 
+#: The smoke run's (``--quick``) explorers with the most pictures drawn ahead, smaller (as large
+#: on the page): each slider position is drawn in the kernel and decoded in the page, again
+#: after every control moved. The PlaneExplorer on an 8 x 7 grid, not the lesson's 16 x 14
+#: (tests/test_browser_plane_drag's: 279 pictures a round, not 459); the FilterExplorer's
+#: texture 64 x 48, not 160 x 120 (tests/test_browser_filter_keys': its 90 full pictures
+#: 5.6 -> 1.9 s of kernel CPU). Their rows are measured as in the report's run; only their
+#: figures differ, and the smoke run's figures are not the report's.
+QUICK_CELLS = {
+    "plane = PlaneExplorer()":
+        "plane = PlaneExplorer(((2.0, 1.0), (7.5, 3.0), (3.0, 6.5)), width=8, height=7)",
+    'explorer = FilterExplorer(tilt=80, filter="trilinear")':
+        'explorer = FilterExplorer(64, 48, tilt=80, filter="trilinear")',
+}  # fmt: skip
+
+#: ``polling`` (ms) of the waits on the kernel (Run All's groups, the pictures drawn ahead):
+#: Playwright's default evaluates the predicate at every animation frame, which keeps Chromium
+#: drawing frames for the whole wait (1.1-1.3 s of CPU per 15 s on lesson 03's page,
+#: tests/notebook_browser.py's POLL_MS); nothing timed here starts or ends on these waits.
+POLL_MS = 100
+
 #: JupyterLab's notebook windowing mode in the benchmark
 WINDOWING = os.environ.get("BENCH_WINDOWING", "none")
 
@@ -155,10 +175,10 @@ def free_port() -> int:
         return s.getsockname()[1]
 
 
-def write_notebook(folder: Path, only: list | None = None) -> str:
+def write_notebook(folder: Path, only: list | None = None, quick: bool = False) -> str:
     """The benchmark's notebook in ``folder``; with ``only`` (the CSS classes of slider
     explorers or dragged figures) the baselines and those widgets alone, then the line
-    :func:`run_all_cells` waits for."""
+    :func:`run_all_cells` waits for; ``quick``: the smoke run's (:data:`QUICK_CELLS`)."""
     import nbformat
 
     nb = nbformat.v4.new_notebook()
@@ -166,6 +186,10 @@ def write_notebook(folder: Path, only: list | None = None) -> str:
     if only is not None:
         chosen = [c for c in CELLS if any(f'add_class("{cls}")' in c for cls in only)]
         cells = [*CELLS[:3], *chosen, CELLS[-1]]
+    if quick:
+        for full, small in QUICK_CELLS.items():
+            assert sum(full in c for c in cells) <= 1, full
+            cells = [c.replace(full, small) for c in cells]
     nb.cells = [nbformat.v4.new_code_cell(c) for c in cells]
     # a kernel named up front: JupyterLab would otherwise ask which one
     nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
@@ -183,6 +207,12 @@ def start_lab(work: Path):
     (settings / "@jupyterlab/notebook-extension").mkdir(parents=True)
     (settings / "@jupyterlab/notebook-extension/tracker.jupyterlab-settings").write_text(
         json.dumps({"windowingMode": WINDOWING}))  # fmt: skip
+    # no nbgrader, as in a student's JupyterLab (``teachraster[lab]``; it is a test dependency):
+    # its server extensions cost the server 3.2 s at each start and its four page plugins ask
+    # the server for courses at each page load (tests/notebook_browser.py leaves them out too)
+    (work / "config" / "labconfig").mkdir(parents=True)
+    (work / "config" / "labconfig" / "page_config.json").write_text(
+        json.dumps({"disabledExtensions": {"@jupyter/nbgrader": True}}))  # fmt: skip
     env = dict(os.environ, JUPYTER_CONFIG_DIR=str(work / "config"),
                JUPYTER_RUNTIME_DIR=str(work / "runtime"), JUPYTER_DATA_DIR=str(work / "data"),
                IPYTHONDIR=str(work / "ipython"),
@@ -195,7 +225,9 @@ def start_lab(work: Path):
          "--ServerApp.ip=127.0.0.1", f"--ServerApp.port={port}", "--ServerApp.port_retries=0",
          "--IdentityProvider.token=", "--ServerApp.password=",
          f"--ServerApp.root_dir={work / 'nb'}", f"--LabApp.user_settings_dir={settings}",
-         f"--LabApp.workspaces_dir={work / 'workspaces'}"],
+         f"--LabApp.workspaces_dir={work / 'workspaces'}",
+         *(f"--ServerApp.jpserver_extensions=nbgrader.server_extensions.{name}=False"
+           for name in ("formgrader", "validate_assignment", "assignment_list", "course_list"))],
         stdout=log, stderr=subprocess.STDOUT, env=env, cwd=work,
     )  # fmt: skip
     base = f"http://127.0.0.1:{port}"
@@ -258,7 +290,7 @@ def wait_for_ahead(page, classes=None) -> None:
             " if (!r || !i) return false;"
             " const n = Math.floor((Number(r.max) - Number(r.min)) / Number(r.step) + 1e-9) + 1;"
             " return i && Number(i.dataset.ahead || 0) >= n; }",
-            arg=cls, timeout=300_000)  # fmt: skip
+            arg=cls, timeout=300_000, polling=POLL_MS)  # fmt: skip
 
 
 def ahead_settled(page, css_class: str, still_s: float = 1.5, timeout_s: float = 300) -> None:
@@ -283,7 +315,7 @@ def wait_for_groups(page) -> None:
         "() => { const c = document.querySelector('.bench-player canvas.teachraster-figure');"
         " const r = c && c.closest('.tr-frames').querySelector('input[type=range]');"
         " return c && Number(c.dataset.groups) >= Math.ceil((Number(r.max) + 1) / 8); }",
-        timeout=300_000)  # fmt: skip
+        timeout=300_000, polling=POLL_MS)  # fmt: skip
 
 
 def bench_baselines(page, tries):
@@ -754,7 +786,7 @@ def main(argv=None) -> int:
     work = Path(tempfile.mkdtemp(prefix="bench-browser-"))
     (work / "nb").mkdir()
     only = None if chosen is None else sorted({x[0] for x in [*chosen, *drags]})
-    name = write_notebook(work / "nb", only)
+    name = write_notebook(work / "nb", only, args.quick)
     proc, base, log = _Stopwatch()("lab start", start_lab, work)
     try:
         with sync_playwright() as p:

@@ -23,8 +23,8 @@ from pathlib import Path
 import pytest
 from notebook_browser import CHROMIUM as CHROMIUM  # the other browser tests read these here
 from notebook_browser import CHROMIUM_ARGS as CHROMIUM_ARGS
+from notebook_browser import POLL_MS, listed, open_cells, unavailable
 from notebook_browser import _shut_down_kernels as _shut_down_kernels  # for the other files
-from notebook_browser import listed, open_cells, unavailable
 
 ROOT = Path(__file__).resolve().parents[1]
 LESSON = "01_span_tables.ipynb"
@@ -101,12 +101,14 @@ def test_lesson_01_plays_and_steps_in_the_browser(lab, page, tmp_path):
 
     # The first fill player of the lesson: its step slider, play button, caption and frames.
     player = page.locator(".jp-OutputArea-output").filter(has=page.locator(".tr-frames")).first
-    expect(player).to_be_visible(timeout=120_000)
+    # waited for as a selector is (Playwright backs off between looks): ``expect`` looked
+    # every few frames, 2.6 s of CPU per 15 s of the lesson's cells running, against 0.5
+    player.wait_for(state="visible", timeout=120_000)
     slider = player.get_by_role("slider", name="step")
     canvas = player.locator("canvas.teachraster-figure").first
     caption = player.locator(".teachraster-caption").first
     page.wait_for_function("el => el.dataset.step !== undefined", arg=canvas.element_handle(),
-                           timeout=60_000)  # fmt: skip
+                           timeout=60_000, polling=POLL_MS)  # fmt: skip
     page.screenshot(path=str(tmp_path / "lesson01_start.png"), full_page=False)
 
     # 1. The keyboard: focus the slider and press the right arrow three times; JupyterLab's

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import pytest
 from browser_cells import run_new_cell
+from notebook_browser import POLL_MS
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_saved import _run_all
 
@@ -70,7 +71,7 @@ SHOWN = ("(c) => { const d = document.querySelector(`.${c} .tr-drag img`).datase
 def test_pictures_drawn_ahead_are_shown_at_once_and_are_the_kernels(lab, page):  # noqa: F811
     _run_all(lab, page, CELLS, NAME)
     for cls in ("t-depth", "t-viewer"):
-        page.wait_for_function(ALL_AHEAD, arg=cls, timeout=120_000)
+        page.wait_for_function(ALL_AHEAD, arg=cls, timeout=120_000, polling=POLL_MS)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
 
     # a key: the picture from the page's store at once, then the kernel's, the same pixels
@@ -90,7 +91,7 @@ def test_pictures_drawn_ahead_are_shown_at_once_and_are_the_kernels(lab, page): 
     slider = page.locator(".t-depth input[type=range]").first
     slider.scroll_into_view_if_needed()
     for key in ("ArrowRight", "ArrowRight", "ArrowLeft"):
-        page.wait_for_function(ALL_AHEAD, arg="t-depth", timeout=60_000)
+        page.wait_for_function(ALL_AHEAD, arg="t-depth", timeout=60_000, polling=POLL_MS)
         before, shown = page.evaluate(FRAMES, "t-depth"), page.evaluate(SHOWN, "t-depth")
         caption = page.locator(".t-depth .tr-drag-caption").inner_text()
         slider.press(key)
@@ -161,7 +162,7 @@ def test_format_switches_then_reverse_z_show_the_kernels_picture(lab, page, tmp_
     import numpy as np
 
     _run_all(lab, page, SEQUENCE_CELLS, "sequence.ipynb")
-    page.wait_for_function(ALL_AHEAD, arg="t-seq", timeout=120_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-seq", timeout=120_000, polling=POLL_MS)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
     for fmt in ("float32", "unorm24", "float32"):
         page.locator(".t-seq button", has_text=fmt).first.click()
@@ -169,7 +170,7 @@ def test_format_switches_then_reverse_z_show_the_kernels_picture(lab, page, tmp_
     page.locator(".t-seq input[type=checkbox]").first.check()
     time.sleep(4.0)  # the final picture, then every picture drawn ahead again
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
-    page.wait_for_function(ALL_AHEAD, arg="t-seq", timeout=120_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-seq", timeout=120_000, polling=POLL_MS)
     w, h, data = page.evaluate(SHOWN_B64, "t-seq")  # before a new cell re-renders the view
     shown = np.frombuffer(base64.b64decode(data), np.uint8).reshape(h, w, 4)
     caption = page.locator(".t-seq .tr-drag-caption").inner_text()
@@ -217,9 +218,9 @@ def test_tile_explorers_first_picture_is_the_kernels_default(lab, page, tmp_path
     # the picture as it first reaches the page (the poster decoded), then once every level's
     # picture has been drawn ahead and the kernel idles: both the kernel's default
     page.wait_for_function("""() => { const i = document.querySelector('.t-tiles .tr-drag img');
-        return i && i.complete && i.naturalWidth > 0; }""", timeout=120_000)  # fmt: skip
+        return i && i.complete && i.naturalWidth > 0; }""", timeout=120_000, polling=POLL_MS)  # fmt: skip
     first = _shown_picture(page, "t-tiles")
-    page.wait_for_function(ALL_AHEAD, arg="t-tiles", timeout=120_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-tiles", timeout=120_000, polling=POLL_MS)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
     time.sleep(1.0)  # a poster sent after the pictures drawn ahead would come meanwhile
     settled = _shown_picture(page, "t-tiles")
@@ -263,7 +264,7 @@ def test_a_patch_lies_on_a_whole_picture_not_a_clear_canvas(lab, page, tmp_path)
     import numpy as np
 
     _run_all(lab, page, GHOST_CELLS, "ghost.ipynb")
-    page.wait_for_function(ALL_AHEAD, arg="t-ghost", timeout=120_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-ghost", timeout=120_000, polling=POLL_MS)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
     slider = page.locator(".t-ghost input[type=range]").first
     slider.scroll_into_view_if_needed()

@@ -22,7 +22,7 @@ import urllib.request
 
 import pytest
 from browser_cells import run_new_cell
-from notebook_browser import CELL_SHOWN, open_cells
+from notebook_browser import CELL_SHOWN, POLL_MS, open_cells
 from test_browser import CHROMIUM, CHROMIUM_ARGS, WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_saved import _put_notebook, _stop_kernels
 
@@ -88,7 +88,7 @@ def lesson(lab, page):  # noqa: F811
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     page.wait_for_function("n => document.querySelectorAll('.jp-OutputArea-output .tr-x').length >= n",
-                           arg=len(TITLES), timeout=180_000)  # fmt: skip
+                           arg=len(TITLES), timeout=180_000, polling=POLL_MS)  # fmt: skip
     _wait_idle(page)
     return page
 

@@ -19,6 +19,7 @@ import re
 
 import pytest
 from browser_cells import run_new_cell
+from notebook_browser import POLL_MS
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_ahead import ALL_AHEAD, FRAMES, SHOWN_B64, drag_range
 from test_browser_saved import _run_all
@@ -55,7 +56,7 @@ def test_keys_then_a_filter_end_on_the_kernels_full_picture(lab, page, tmp_path)
     import numpy as np
 
     _run_all(lab, page, CELLS, "filter_keys.ipynb")
-    page.wait_for_function(ALL_AHEAD, arg="t-filter", timeout=180_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-filter", timeout=180_000, polling=POLL_MS)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
     slider = page.locator(".t-filter input[type=range]").first
     slider.scroll_into_view_if_needed()
@@ -121,7 +122,7 @@ def test_a_drag_ends_on_the_full_picture_drawn_ahead_and_the_kernel_sends_none(l
     import numpy as np
 
     _run_all(lab, page, DRAG_CELLS, "filter_drag.ipynb")
-    page.wait_for_function(ALL_AHEAD, arg="t-fdrag", timeout=180_000)
+    page.wait_for_function(ALL_AHEAD, arg="t-fdrag", timeout=180_000, polling=POLL_MS)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=60_000)
     slider = page.locator(".t-fdrag input[type=range]").first
     slider.scroll_into_view_if_needed()
@@ -291,7 +292,7 @@ def test_a_held_drag_shows_the_picture_and_numbers_of_the_readouts_tilt(lab, pag
     _run_all(lab, page, W1_CELLS, "filter_w1.ipynb")
     page.wait_for_function(
         "() => { const i = document.querySelector('.t-fw1 .tr-drag img');"
-        " return i && Number(i.dataset.ahead || 0) >= 8; }", timeout=180_000)  # fmt: skip
+        " return i && Number(i.dataset.ahead || 0) >= 8; }", timeout=180_000, polling=POLL_MS)  # fmt: skip
     page.locator(".t-fw1 input[type=range]").first.scroll_into_view_if_needed()
     page.evaluate(OUT_AND_BACK, "t-fw1")
     time.sleep(4.0)  # the drafts on their way have come; the pointer still holds the slider

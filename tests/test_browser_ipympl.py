@@ -15,6 +15,7 @@ Playwright, Chromium or ipympl is missing (CI makes the browser required).
 from __future__ import annotations
 
 import pytest
+from notebook_browser import POLL_MS
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_saved import _run_all
 
@@ -46,7 +47,7 @@ def test_ipympl_figures_fit_the_column(lab, page):  # noqa: F811
     canvases = page.locator(".jupyter-matplotlib-canvas-div")
     page.wait_for_function(
         "() => document.querySelectorAll('.jupyter-matplotlib-canvas-div').length >= 4",
-        timeout=120_000)  # fmt: skip
+        timeout=120_000, polling=POLL_MS)  # fmt: skip
     page.wait_for_timeout(1500)  # sized once their first frame is in
     boxes = page.evaluate("""() => [...document.querySelectorAll('.jupyter-matplotlib-canvas-div')]
         .map(div => {

@@ -27,7 +27,7 @@ Playwright or Chromium is missing (CI makes them required).
 from __future__ import annotations
 
 import pytest
-from notebook_browser import _FINISHED
+from notebook_browser import _FINISHED, POLL_MS
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_player import _run
 
@@ -225,7 +225,7 @@ def _measure(tab, base: str, app: str) -> dict:
     cells = [SETUP] + [cell for _, cell in WIDGETS]
     _run(tab, base, cells, f"layout_{app.split('/')[0]}.ipynb", app=app)
     try:
-        tab.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+        tab.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000, polling=POLL_MS)
     except Exception:  # noqa: BLE001 (say which cells had not run: timed out once under load)
         prompts = tab.evaluate("""() => [...document.querySelectorAll(
             '.jp-Notebook .jp-CodeCell .jp-InputPrompt')].map(p => p.textContent.trim())""")
@@ -233,7 +233,7 @@ def _measure(tab, base: str, app: str) -> dict:
     failed = tab.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.error"]')
     assert not failed.count(), failed.first.inner_text()[-3000:]
     try:
-        tab.wait_for_function(SHOWN, timeout=120_000)
+        tab.wait_for_function(SHOWN, timeout=120_000, polling=POLL_MS)
     except Exception:  # noqa: BLE001 (say which)
         raise AssertionError(f"no widget shown: {tab.evaluate(NOT_SHOWN)}") from None
     tab.wait_for_timeout(3000)  # pictures arrive after the views
@@ -306,7 +306,7 @@ def divide_cost(lab, page):  # noqa: F811
     neither changes it: the resize is undone); a worker that runs only one builds its own."""
     cells = [SETUP, "DivideCostExplorer(rows)"]
     _run(page, lab, cells, "divide_cost.ipynb")
-    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000)
+    page.wait_for_function(_FINISHED, arg=len(cells), timeout=300_000, polling=POLL_MS)
     page.locator(".widget-label:text-is('error')").wait_for(timeout=120_000)
     page.locator(".tr-readout .widget-readout").first.wait_for(timeout=120_000)
     return page

@@ -16,6 +16,7 @@ import time
 
 import numpy as np
 import pytest
+from notebook_browser import POLL_MS
 from test_browser import WHY, lab, page  # noqa: F401
 from test_browser_explorables import _kernel  # a cell's printed JSON
 from test_browser_saved import _run_all
@@ -55,12 +56,10 @@ def _still(tab, img, tries: int = 40) -> None:
             return
 
 
-def test_a_vertex_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
-    page.set_viewport_size({"width": 1400, "height": 900})
-    _run_all(lab, page, CELLS, NAME)
-    img = page.locator(".t-plane .tr-drag img").first
-    img.wait_for(timeout=120_000)
-    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+def _vertex_dragged_in_the_page(page, img, tmp_path) -> None:  # noqa: F811
+    """v1 dragged in the page to (6, 4) and back: drafts painted meanwhile, the sliders'
+    readouts following, the release on the quarter grid, filled by ``tr.rasterize``; the
+    page's canvas the kernel's last picture each time."""
     page.wait_for_function("() => document.querySelector('.t-plane .tr-drag img').naturalWidth > 0",
                            timeout=30_000)  # fmt: skip
     x0, y0, sx, sy = _kernel(page, "ex.display.widget.transform")
@@ -176,19 +175,25 @@ DRAG_F2 = """async (sel) => {
 }"""
 
 
-def test_every_slider_is_drawn_ahead_and_f2_is_dragged_in_the_page(lab, page, tmp_path):  # noqa: F811
+def test_every_slider_is_drawn_ahead_f2_and_a_vertex_are_dragged_in_the_page(lab, page, tmp_path):  # noqa: E501, F811
     """Issue 31: only the slider moved last (v1 x) was drawn ahead, so f2's first drag went
     through the kernel (16 fps). Once the kernel has idled, every slider's pictures are in
     the page: f2's first drag is then shown by the page alone (the kernel hears of its
     release, nothing else) and ends on the full picture drawn ahead, which the kernel does
     not send again; the page's canvas is then, pixel for pixel, the kernel's picture, and
-    that is the picture a new explorer with these values draws."""
+    that is the picture a new explorer with these values draws.
+
+    Then, on the same page (one run of the notebook for both; they were two tests, each
+    with its own run of it), a vertex dragged in the page (:func:`_vertex_dragged_in_the_page`):
+    the f2 drag above moved no vertex, so v1 is where the lesson puts it."""
     page.set_viewport_size({"width": 1400, "height": 900})
     _run_all(lab, page, CELLS, NAME)
     img = page.locator(".t-plane .tr-drag img").first
     img.wait_for(timeout=120_000)
     page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
-    page.wait_for_function(f"() => ({AHEAD})() >= {ALL_POSITIONS}", timeout=300_000)
+    page.wait_for_function(
+        f"() => ({AHEAD})() >= {ALL_POSITIONS}", timeout=300_000, polling=POLL_MS
+    )
     before = _kernel(page, "[ex.f[1].messages, ex.display.draws, ex.display.widget._frame]")
     page.locator(F2).first.scroll_into_view_if_needed()
     page.evaluate(DRAG_F2, F2)
@@ -205,3 +210,4 @@ def test_every_slider_is_drawn_ahead_and_f2_is_dragged_in_the_page(lab, page, tm
     _painted_as_sent(page, tmp_path)
     assert _kernel(page, "bool(np.array_equal(ex.display.widget._last, PlaneExplorer("
                          "ex.xy, ex.fvals, ex.width, ex.height).display.widget._last))")  # fmt: skip
+    _vertex_dragged_in_the_page(page, img, tmp_path)

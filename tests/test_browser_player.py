@@ -12,7 +12,7 @@ Playwright or Chromium is missing (CI makes them required).
 from __future__ import annotations
 
 import pytest
-from notebook_browser import open_cells
+from notebook_browser import POLL_MS, open_cells
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 from test_browser_explorables import _kernel
 
@@ -72,7 +72,8 @@ def test_the_players_icons_are_drawn_and_its_speed_is_chosen_in_the_page(lab, pa
     player.get_by_role("button", name="play").click()
     assert player.get_by_role("button", name="pause").locator("svg.tr-icon").count() == 1
     slider = player.get_by_role("slider", name="step")
-    page.wait_for_function("s => s.value === s.max", arg=slider.element_handle(), timeout=60_000)
+    page.wait_for_function("s => s.value === s.max", arg=slider.element_handle(), timeout=60_000,
+                           polling=POLL_MS)  # fmt: skip
     player.get_by_role("button", name="play").wait_for(timeout=10_000)  # stopped at the end
     assert not page.errors, page.errors[:3]
 
@@ -232,7 +233,7 @@ def test_the_first_key_on_the_step_moves_the_readout_at_once(lab, page, key):  #
         if page.evaluate(SHOWN, handle)["want"] == want:
             assert player.locator(".tr-wait").inner_text().startswith(f"drawing step {want}")
     page.wait_for_function(  # the picture comes once the kernel is free
-        f"p => ({SHOWN})(p).step === {want!r}", arg=handle, timeout=60_000
+        f"p => ({SHOWN})(p).step === {want!r}", arg=handle, timeout=60_000, polling=POLL_MS
     )
     done = page.evaluate(SHOWN, handle)
     assert done["want"] is None and not player.locator(".tr-wait").is_visible(), done
