@@ -23,7 +23,7 @@ from teachraster.widgets import offline
 LIVE = {"FillPlayer", "LinePlayer", "ZBufferStepper", "TileExplorer", "TexturedPlaneViewer",
         "FilterExplorer", "DepthPrecisionExplorer", "PlaneExplorer", "ProjectionExplorer",
         "SamplingExplorer", "SpanSubdivisionExplorer", "DivideCostExplorer", "PixelInspector", "CasePicker",
-        "FrameInspector", "Predict"}  # fmt: skip
+        "FrameInspector", "Predict", "HiZTileExplorer"}  # fmt: skip
 #: Widgets that compute in the page (teachraster.widgets.explorable): live everywhere.
 COMPUTED_IN_THE_PAGE = {"PipelineMap", "CrackExplorer", "EdgeFunctionExplorer",
                         "AttributeSurfaces", "EyeRayExplorer", "DepthValuesExplorer",

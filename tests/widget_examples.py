@@ -20,6 +20,15 @@ def _rows():
     return out
 
 
+def _hiz_frames():
+    """Two full-screen triangles at two depths, drawn in both orders (traced)."""
+    import numpy as np
+
+    tri = np.array([[[-1, -1, z, 1], [3, -1, z, 1], [-1, 3, z, 1]] for z in (0.0, 0.5)])
+    return {"near first": tr.render(tri, 16, 16, trace=True),
+            "far first": tr.render(tri[::-1], 16, 16, trace=True)}  # fmt: skip
+
+
 def examples():
     """name -> a function making that widget (image backend, small sizes)."""
     from teachraster import widgets as w
@@ -50,6 +59,7 @@ def examples():
         "CasePicker": lambda: w.CasePicker(backend="image"),
         "LinePlayer": lambda: w.LinePlayer((0.5, 0.5), (9.5, 4.5), 11, 6, backend="image"),
         "BlendingExplorer": lambda: w.BlendingExplorer(size=(16, 16), backend="image"),
+        "HiZTileExplorer": lambda: w.HiZTileExplorer(_hiz_frames(), (4, 8), backend="image"),
         "SamplingExplorer": lambda: SamplingExplorer(backend="image"),
         "DivideCostExplorer": lambda: DivideCostExplorer(_rows(), backend="image"),
         "SpanSubdivisionExplorer": lambda: SpanSubdivisionExplorer(backend="image"),

@@ -668,8 +668,8 @@ def plot_walk_path(ax, fill, traversal: str = "scanline", *, level: int = -1) ->
     Steps to a 4-neighbour (the next block left, right, up or down) are solid; every other
     move is a jump, as lesson 10 §5 counts them (a row's end, the last child of one parent to
     the first of the next, a diagonal of Morton's Z), dashed and thinner so that it does not
-    hide the blocks it crosses: the dashes can be counted against the printed jumps. A filled
-    dot marks the first block, a square the last. ``level`` indexes ``block_sizes`` (default:
+    hide the blocks it crosses: the dashes can be counted against the printed jumps. A ringed
+    star marks the first block (not a dot: the triangle's vertices are dots), a square the last. ``level`` indexes ``block_sizes`` (default:
     the smallest).
     """
     _, blocks = tile_trace(fill, "plot_walk_path")
@@ -689,7 +689,10 @@ def plot_walk_path(ax, fill, traversal: str = "scanline", *, level: int = -1) ->
     ]  # fmt: skip
     for line in lines:
         ax.add_collection(line)
-    start = ax.plot(px[0], py[0], "o", ms=12, color="black", zorder=6)[0]
+    # a yellow star, ringed in black: a black dot was the triangle's vertex dots, and
+    # the first block lies at a vertex (review r281 FIG1, lesson 10)
+    start = ax.plot(px[0], py[0], "*", ms=22, mfc=OKABE_ITO["yellow"], mec="black", mew=1.5,
+                    zorder=6)[0]  # fmt: skip
     end = ax.plot(px[-1], py[-1], "s", ms=11, mfc="white", mec="black", mew=2, zorder=6)[0]
     ax.set_title(traversal)
     return WalkPathArtists(*lines, start, end, len(px))
@@ -837,7 +840,8 @@ CORNER_MARKS = (
 
 
 def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
-                      steps=None, numbers: str = "all") -> BlockValueArtists:  # fmt: skip
+                      steps=None, numbers: str = "all", cmap=VALUE_CMAP,
+                      norm=None) -> BlockValueArtists:  # fmt: skip
     """One edge's values at the pixel centres of a block, with its extreme corners marked:
     the corner trick of lesson 10 §1 as a picture (after Abrash's *Rasterization on
     Larrabee*, which draws a block's trivial-reject and trivial-accept corners).
@@ -850,6 +854,8 @@ def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
     two corners. ``numbers="corners"`` writes only the four corners' values, large enough
     for a projector (64 values of four digits fit a cell only in small print; the colours
     still show the rest): the two extremes' in their labels, the other two in their cells.
+    ``cmap`` and ``norm``: a panel beside :func:`plot_edge_values` passes its image's, so that
+    a colour means the same value in both (review r281 FIG2, lesson 10).
     """
     if numbers not in ("all", "corners"):
         raise ValueError(f"numbers must be 'all' or 'corners', got {numbers!r}")
@@ -857,7 +863,8 @@ def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
     h, w = values.shape
     corners_only = numbers == "corners"
     im = ax.pcolormesh(np.arange(col0, col0 + w + 1), np.arange(row0, row0 + h + 1), values,
-                       cmap=VALUE_CMAP, shading="flat", edgecolors="white", lw=0.5)  # fmt: skip
+                       cmap=cmap, norm=norm, shading="flat", edgecolors="white",
+                       lw=0.5)  # fmt: skip
     result = BlockValueArtists(im)
     norm = im.norm
     extremes = {values.argmax(), values.argmin()}  # flat indices: their labels say them

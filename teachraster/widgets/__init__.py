@@ -17,6 +17,8 @@ Widgets
   affine-vs-perspective error heatmap follow.
 - :class:`TileExplorer` -- the block hierarchy of a tiled fill, level by level or block by
   block in a traversal order, with block sizes and traversal as menus and the counters.
+- :class:`HiZTileExplorer` -- one scene's Hi-Z replay, drawing order × tile size as menus:
+  the stored depths, the fragments rejected, killed and shaded, the rejections drawn.
 - :class:`TexturedPlaneViewer` -- a checkerboard square tilted away from the camera, affine vs
   perspective-correct texture coordinates side by side, with the error in texels; a tilt
   slider.
@@ -95,6 +97,7 @@ from .filter_explorer import FilterExplorer
 from .footprint_explorer import FootprintExplorer
 from .frame_inspector import FrameInspector
 from .frames import FramesWidget
+from .hiz_tiles import HiZTileExplorer
 from .inspector import PixelInspector
 from .line_diamonds import DiamondExplorer
 from .line_player import LinePlayer
@@ -126,6 +129,7 @@ __all__ = [
     "FilterExplorer",
     "FootprintExplorer",
     "FramesWidget",
+    "HiZTileExplorer",
     "FillPlayer",
     "LinePlayer",
     "LiveSlider",
