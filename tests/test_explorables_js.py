@@ -1521,23 +1521,26 @@ def test_value_axis_labels_only_where_they_do_not_overlap():
     assert got[0] == [0, 0.5, 1] and got[-1] == [0]
 
 
-def test_value_axis_stands_at_the_corner_farthest_from_the_camera():
+def test_value_axis_stands_at_the_corner_leftmost_on_the_picture():
     # review r226 FIG3: at the corner (0, 0), turned to the front, the axis "1 / 0.5 / 0" ran
-    # through the sheets; it stands at the far corner now (drawn before them), and the vertex
-    # labels below their vertices, off the sheets that rise above them
+    # through the sheets; r288 FIG2: at the far corner its labels lay over the sheets and its
+    # "0" floated mid-picture (the ground there hidden). It stands at the corner leftmost on
+    # the picture now: vertical lines stay vertical, so every sheet lies right of it; the
+    # vertex labels below their vertices, off the sheets that rise above them
     parts = ("raster_rules", "view3d", "explore_attributes")
     views = [(-0.5, 0.45), (1.0, 0.15), (2.6, 0.05), (-2.2, 0.8), (0.3, 1.5)]
     got = call_js(parts, [("axisCorner", [16, 14, yaw, e]) for yaw, e in views])
     corners = [[0, 0], [16, 0], [16, 14], [0, 14]]
     for (yaw, e), corner in zip(views, got):
-        # the camera's depth axis (view3d.js towardsCamera): the far corner has the least depth
-        depth = [x * np.sin(yaw) * np.cos(e) + y * np.cos(yaw) * np.cos(e) for x, y in corners]
-        assert corner == corners[int(np.argmin(depth))]
-    assert got[0] == [16, 0]  # the opening view: behind v2, at the back
+        # camera3d's picture x (up to its scale and shift), the same for every height
+        across = [x * np.cos(yaw) - y * np.sin(yaw) for x, y in corners]
+        assert corner == corners[int(np.argmin(across))]
+    assert got[0] == [0, 0]  # the opening view: the left corner, by v1, on open ground
     from teachraster.widgets import explorable
 
     source = (explorable.STATIC / "explore_attributes.js").read_text()
     assert "...VERTEX_LABEL" in source and "[0, 0, zScale]" not in source
+    assert "fixed: true, up: 17, down: 5, halo: true" in source  # the axis labels haloed
 
 
 def test_gap_bar_labels_on_one_line_when_the_bar_is_short():

@@ -230,14 +230,17 @@ export function valueTicks(scale, elevation, zScale) {
   return scale * zScale * Math.cos(elevation) / 2 >= 24 ? [0, 0.5, 1] : [0];
 }
 
-// The corner of the W x H screen farthest from a camera at `yaw` and `elevation`: the value
-// axis stands there, behind the sheets (review r226 FIG3: at the corner (0, 0), turned to the
-// front, it ran through them)
+// The corner of the W x H screen leftmost in a view at `yaw` (`elevation` turns nothing
+// sideways): the value axis stands there. The view keeps vertical lines vertical, so every
+// sheet, standing over a point of the screen, lies on the picture at or right of that corner:
+// the axis and its labels stay clear of them (review r226 FIG3: at the fixed corner (0, 0),
+// turned to the front, it ran through them; r288 FIG2: at the far corner, behind the sheets,
+// its labels lay over them and its 0 floated mid-picture, the ground there hidden).
 export function axisCorner(W, H, yaw, elevation) {
-  const towards = towardsCamera(yaw, elevation);
+  void elevation;
   const corners = [[0, 0], [W, 0], [W, H], [0, H]];
-  const depth = ([x, y]) => x * towards[0] + y * towards[1];
-  return corners.reduce((far, c) => (depth(c) < depth(far) ? c : far));
+  const across = ([x, y]) => x * Math.cos(yaw) - y * Math.sin(yaw); // as camera3d's x
+  return corners.reduce((left, c) => (across(c) < across(left) - 1e-9 ? c : left));
 }
 
 // Where a vertex label stands: below its vertex on the screen, where the ground is, since
@@ -305,7 +308,7 @@ function mount(el, data, host) {
     // screen (review r7: 10-11 px there)
     const [ax0, ay0] = axisCorner(W, H, cam.yaw, cam.elevation);
     const labels = [0, 0.5, 1].map((v) => ({ p: [ax0, ay0, v * zScale], text: ` ${v}`,
-      color: "#333", font: "16px sans-serif", fixed: true, up: 17, down: 5 }));
+      color: "#333", font: "16px sans-serif", fixed: true, up: 17, down: 5, halo: true }));
     xy.forEach(([x, y], k) => labels.push({ p: [x, y, 0], color: "#111",
       text: ` v${k + 1}: f=${fmt(f[k], 3)}, w=${fmt(w[k], 3)}`, font: "bold 16px sans-serif",
       halo: true, ...VERTEX_LABEL }));
@@ -345,6 +348,10 @@ function mount(el, data, host) {
     // centre depth: the exact order costs ~130 ms a picture (node, 564 pieces), a 5-fps drag
     drawPolygons(ctx, cam, polys.filter((poly) => !poly.sheet));
     line3d(ctx, cam, [ax0, ay0, 0], [ax0, ay0, zScale], "#555", 1.5);
+    for (const v of shown) { // a tick at each labelled height, where its label points
+      const [tx, ty] = cam.project([ax0, ay0, v * zScale]);
+      strokeLine(ctx, [tx, ty], [tx + 5, ty], "#555", 1.5);
+    }
     drawPolygons(ctx, cam, polys.filter((poly) => poly.sheet), !cam.dragging);
     // where the two f sheets cross (see sheetPieces), drawn over them (r89 03-1)
     for (const [a, b] of crossing) {
@@ -384,7 +391,7 @@ function mount(el, data, host) {
     ctx.font = "15px sans-serif";
     ctx.fillText(crossing.length
       ? "grey: the screen and the triangle; black: where the two f sheets cross"
-      : "grey: the screen and the triangle; height: the value (axis at the far corner)", 8, 462);
+      : "grey: the screen and the triangle; height: the value (axis at the left corner)", 8, 462);
     readout.innerHTML = readoutText(w, state.show, gap);
     host.picture(canvas);
   }
