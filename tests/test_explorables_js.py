@@ -1531,7 +1531,7 @@ def test_value_axis_stands_at_the_corner_leftmost_on_the_picture():
     views = [(-0.5, 0.45), (1.0, 0.15), (2.6, 0.05), (-2.2, 0.8), (0.3, 1.5)]
     got = call_js(parts, [("axisCorner", [16, 14, yaw, e]) for yaw, e in views])
     corners = [[0, 0], [16, 0], [16, 14], [0, 14]]
-    for (yaw, e), corner in zip(views, got):
+    for (yaw, _e), corner in zip(views, got):
         # camera3d's picture x (up to its scale and shift), the same for every height
         across = [x * np.cos(yaw) - y * np.sin(yaw) for x, y in corners]
         assert corner == corners[int(np.argmin(across))]
