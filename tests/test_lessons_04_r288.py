@@ -76,7 +76,7 @@ def test_fig1_m1_m2_s1_printed(capsys, w_text):
             assert ns["same_curve"] == [("v1v2", "v2v3")]
             assert np.abs(ns["edge_gap"]["v1v2"] - ns["edge_gap"]["v2v3"]).max() < 1e-12
             assert "v1v2 and v2v3: one curve (w ratio 2 and 2, u change 1 and 1)" in out
-            assert labels == ["v1 → v2 and v2 → v3 (one curve)"]
+            assert labels == ["v1 → v2 = v2 → v3"]
             # S1: the pixel centres' largest, labelled so
             assert "78 covered pixels; the largest errors over their centres:" in out
             assert "  affine              vs 3D truth: 0.163" in out

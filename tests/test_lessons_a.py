@@ -3420,7 +3420,7 @@ def test_04_summary_error_is_ratio_times_change_r97():
                    if t.startswith("## Summary"))  # fmt: skip
     flat = " ".join(summary.split())
     assert (
-        "$\\sqrt{2}$ times the sides' (q_diagonal's answer)" in flat
+        "$\\sqrt{2}$ times the sides' (section 6's second question)" in flat
     )  # r154: no 37.8 below the question
     r = ns.z1 / ns.z0
     assert f"{(np.sqrt(r) - 1) ** 2 / (r - 1):.3f} for $r = {r:g}$" in flat
