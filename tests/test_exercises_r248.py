@@ -349,6 +349,25 @@ def test_s1_an_exception_shows_the_traceback_line_in_the_students_code(tmp_path)
                                       "hiz_rejects: `return bool(b[8, 0] > 0)`"), f.explanation  # fmt: skip
 
 
+def test_s1_one_exception_object_raised_on_every_case_names_its_line_on_each(tmp_path):
+    """One exception object raised again on every case (a module-level ``ERROR``) names the
+    same line on each, and is left without the cases' frames: its traceback grew by a case's
+    frames at every raise, and describing it walked them all (quadratic: 3/4 of
+    test_checker_truth's CPU)."""
+    source = "ERROR = IndexError('row 8')\ndef hiz_rejects(xyz, row0, col0, size, buffer):\n    raise ERROR\n"  # fmt: skip
+    path = tmp_path / "cell.py"
+    path.write_text(source)
+    space = {}
+    exec(compile(source, str(path), "exec"), space)  # noqa: S102
+    report = ex.check("hiz_rejects", space["hiz_rejects"], budget=120)
+    raised = [f for f in report.failures if f.kind == "raised"]
+    assert len(raised) > 1, str(report)
+    for f in raised:
+        assert f.explanation.endswith("; the traceback's last line in your code: line 3, in "
+                                      "hiz_rejects: `raise ERROR`"), f.explanation  # fmt: skip
+    assert space["ERROR"].__traceback__ is None
+
+
 def test_s1_81_labels_are_a_call_that_reruns_the_case():
     for label, args, _ in tile_blocks.block_cases():
         call = label.split(": xy = ", 1)[1]
