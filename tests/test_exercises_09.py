@@ -118,7 +118,8 @@ def test_the_tie_words_agree_with_lesson_12_and_conventions():
     lights the lower row, teachraster (and Direct3D) the upper one."""
     first = _first("line_pixels", line_with(-EPS, 0))
     assert "GL moves the segment" not in first.explanation
-    assert "row k − 1, the upper row, as Direct3D does" in first.explanation
+    # r289 S8: lesson 12a §1 calls the y-down −(ε, ε²) Vulkan's rule, Direct3D's "another"
+    assert "row k − 1, the upper row, as Vulkan's rule does" in first.explanation
     assert "lights the lower row, row k: lesson 12a §1" in first.explanation
     assert "GL moves it up" not in _first("line_pixels", line_with(-EPS, E2)).explanation
     import json
