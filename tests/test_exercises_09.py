@@ -1109,7 +1109,9 @@ def test_a_stop_just_below_1_prints_the_alpha_against_1():
         return acc
 
     texts = [f.explanation for f in ex.check("front_to_back", three).failures]
-    stopped = [t for t in texts if "you stopped after layer" in t]
+    # r289 C1: "you stopped after layer m" where the check counted the layers read, "your
+    # composite is that of the m nearest" where it infers the stop from the value
+    stopped = [t for t in texts if "where the alpha was" in t]
     assert stopped, texts
     for text in stopped:
         alpha = re.search(r"where the alpha was ([0-9.]+), (just )?below 1", text)
@@ -1389,11 +1391,11 @@ def test_9_2a_general_message_sends_back_to_the_steps_without_the_weights():
     """r19 E-2: a wrong answer no mistake names got the general recipe, which stated the
     weights the task asks the student to derive; it now points at the derivation's steps."""
 
-    def double_premultiplied(s, d):  # no mistake names it: the general message
-        s, d = np.asarray(s, float), np.asarray(d, float)
-        return over_straight(np.r_[s[:3] * s[3], s[3]], np.r_[d[:3] * d[3], d[3]])
+    def colour_rooted(s, d):  # no mistake names it: the general message (r289 M2: double
+        right = over_straight(s, d)  # premultiplication, this test's example, is named now)
+        return np.r_[np.sqrt(right[:3]), right[3]]
 
-    report = ex.check("over_straight", double_premultiplied, budget=60)
+    report = ex.check("over_straight", colour_rooted, budget=60)
     assert not report.passed
     general = [f.explanation.split("yours is ", 1)[1] for f in report.failures]
     assert general and all("derivation's steps" in w for w in general), general
