@@ -169,7 +169,7 @@ def _mip_vectors(ddx, ddy, size):
 
 SLIPS = [
     ("mip_level", _mip_vectors, "ddx + ddy as vectors", "added ddx and ddy as vectors"),
-    ("bilinear", _reversed_channels, "channels reversed", "another channel order"),
+    ("bilinear", _reversed_channels, "channel order", "another channel order (BGR"),
     ("bilinear", lambda t, uv, w: _bil(t, uv, w, rows="clamp"), "repeat on columns only",
      "tiled the columns (u) but clamped the rows (v)"),
     ("bilinear", lambda t, uv, w: np.asarray(t, float).mean(axis=(0, 1)), "texture's mean",

@@ -14,6 +14,7 @@ import numpy as np
 from ..core.blend_factors import blend_equation
 from .blend_mistakes import (
     CARRIES,
+    CHANNEL_ORDER,
     GLOW_DIVIDED,
     ZERO_DIVIDED,
     alpha_mistakes,
@@ -244,5 +245,5 @@ def atop_mistakes() -> list[Mistake]:
     table = [Mistake(k, w, gives=g) for k, w, g in ATOP_MISTAKES]
     share = "the result's alpha is the share of the pixel in which something of it shows"
     return [Mistake("glow lost", _atop_glow_lost_words, gives=_atop_via_straight),
-            GLOW_DIVIDED, ZERO_DIVIDED, *table, *GLOW_MISTAKES,
+            GLOW_DIVIDED, ZERO_DIVIDED, *table, CHANNEL_ORDER, *GLOW_MISTAKES,
             NOTHING_ATOP, SOURCE_SKIPPED, *alpha_mistakes(premultiplied_atop, ATOP_ALPHAS, share)]  # fmt: skip

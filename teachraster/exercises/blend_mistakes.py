@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .channel_order import channel_order_mistake
 from .exercise import Mistake
 from .scalars import num, vec
 from .tolerance import all_close
@@ -26,6 +27,12 @@ def scaled(src, dst, s, d):
 
 def colour_only(src, dst, alpha):
     return np.r_[src[:3] * src[3] + dst[:3] * (1 - src[3]), alpha]
+
+
+#: The right colour in another channel order (r289 M1: ARGB, BGRA, red and alpha swapped got
+#: "go back through the derivation"), in 9.2a and 9.2b.
+CHANNEL_ORDER = channel_order_mistake("the right colours in another channel order", ": return "
+                                      "(r, g, b, a), alpha last", tol=1e-6)  # fmt: skip
 
 
 #: COMMON's outputs with words true of premultiplied colours (r18 D-2: COMMON's "the source

@@ -16,7 +16,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, blend_equation
-from .blend_mistakes import ALPHAS, alpha_mistakes, colour_only, faint_words, scaled
+from .blend_mistakes import (
+    ALPHAS,
+    CHANNEL_ORDER,
+    alpha_mistakes,
+    colour_only,
+    faint_words,
+    scaled,
+)
 from .exercise import Mistake
 from .scalars import vec
 from .tolerance import all_close
@@ -107,7 +114,8 @@ STRAIGHT = [
      "src + (1 − α_s)·dst, to straight ones: a straight colour does not carry its coverage, so "
      "each must first count in the share of the pixel where it shows (C·α), and the sum, "
      "α·C, divided by α", lambda s, d: scaled(s, d, 1, 1 - s[3])),
-    ("GL's straight blend", "you used GL's straight blend, src·α_s + dst·(1 − α_s) on all four "
+    ("GL's straight blend", "you used GL's straight blend (as the package's "
+     "blend_equation(src, dst) does by default), src·α_s + dst·(1 − α_s) on all four "
      "channels: over a translucent destination its colour is wrong unless the source is "
      "opaque or wholly transparent (a translucent destination shows in α_d of the share "
      "1 − α_s, not in all of it), and its alpha weighs α_s by itself (α_s squared)",
@@ -131,6 +139,15 @@ STRAIGHT = [
          s[:3] * s[3] + d[:3] * d[3], s[3] + d[3] * (1 - s[3])])),
     ("arguments swapped", "you blended dst over src: the first argument, src, is the incoming "
      "fragment, the second, dst, what the buffer holds", lambda s, d: straight_over(d, s)),
+    # r289 M2: named in 9.2b and 9.3, and here it got the derivation's steps
+    ("premultiplied twice", "you multiplied each colour by its alpha twice (C·α·α, the dark "
+     "fringe): the light of a straight colour is C·α, once, and the sum divided by α",
+     lambda s, d: _divided(np.r_[s[:3] * s[3] ** 2 + d[:3] * d[3] ** 2 * (1 - s[3]),
+                                 s[3] + d[3] * (1 - s[3])])),
+    ("premultiplied twice", "you multiplied each colour by its alpha twice (C·α·α, the dark "
+     "fringe) and did not divide: the light of a straight colour is C·α, once, and the "
+     "straight answer is that light divided by α", lambda s, d: np.r_[
+         s[:3] * s[3] ** 2 + d[:3] * d[3] ** 2 * (1 - s[3]), s[3] + d[3] * (1 - s[3])]),
 ]  # fmt: skip
 
 
@@ -329,7 +346,7 @@ def straight_mistakes() -> list[Mistake]:
     swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                       only_whole=True)  # fmt: skip
     nothing = [DST_WHERE_NOTHING, SRC_WHERE_NOTHING]  # before the swap, which gives src there
-    return [nan, FAINT_STRAIGHT, *nothing, *table, swapped, *_divided_by_wrong_alpha(),
+    return [nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, *_divided_by_wrong_alpha(),
             *alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
 
 

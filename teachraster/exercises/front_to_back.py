@@ -289,6 +289,8 @@ def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
     return {
         "reversed": loop(lambda acc, c: apply_blend(c, acc, *PREMULTIPLIED)),
         "no transmittance": loop(lambda acc, c: acc + c),
+        # r289 S2: the alpha weighed by 1 − A, the colour added whole
+        "colour not weighed": loop(lambda acc, c: np.r_[acc[:3] + c[:3], under(acc, c)[3]]),
         "double premultiplication": loop(straight),
         "alpha summed": loop(lambda acc, c: np.r_[acc[:3] + (1 - acc[3]) * c[:3], acc[3] + c[3]]),
         # r24 D-5: the sum clamped to 1, colour right, got the rule restated
@@ -389,6 +391,20 @@ def _no_opaque_layer_words(args, expected, got) -> str:
             "layer first, from the farthest: those read them all too)")  # fmt: skip
 
 
+def _stopped_there(args, expected, got) -> bool:
+    """The composite of the m nearest layers, from a function that read no more than m + 1 of
+    them (a loop may fetch one more before it tests): a stop the check counted, not one it
+    infers from the value (r289 C1: a function that read all 23 layers and returned the last,
+    which equals the first layer's composite there, was told it stopped after layer 1)."""
+    stop = _stopped_at(args, expected, got)
+    if stop is None or isinstance(got, ReadPast):
+        return False
+    if isinstance(got, ReadShort):
+        return got.read <= stop[0] + 1
+    # unmarked: read within the stop window, or (a stack never opaque) not counted at all
+    return stop_window(args[0])[0] is None
+
+
 def _stopped_words(args, expected, got) -> str:
     m, alpha = _stopped_at(args, expected, got)
     # r12 09-5: num(0.99963) alone is "1", which read "the alpha was 1: below 1"; told from
@@ -396,8 +412,10 @@ def _stopped_words(args, expected, got) -> str:
     five = f"{alpha:.5f}".rstrip("0")  # as the colour tuple beside it prints it
     shown = max(num(alpha, 1.0), five if float(five) < 1 else "", key=len)
     near = "just below 1" if alpha > 0.99 else "below 1"
-    return (f"you stopped after layer {m} of {len(args[0])}, where the alpha was {shown}, "
-            f"{near}: the layers behind still show through the transmittance 1 − A "
+    head = (f"you stopped after layer {m} of {len(args[0])}" if isinstance(got, ReadShort) else
+            f"your composite is that of the {m} nearest of the {len(args[0])} layers alone, "
+            "as a loop that stops there gives it")  # fmt: skip
+    return (f"{head}, where the alpha was {shown}, {near}: the layers behind still show through the transmittance 1 − A "
             f"= {1 - alpha:.2g}; stop only once the alpha is 1")  # fmt: skip
 
 
@@ -412,8 +430,7 @@ WALK = [
             and _none_opaque(a, g)),
     Mistake("read behind the opaque layer", _read_past_words,
             fits=lambda a, e, g: isinstance(g, ReadPast) and all_close(g, e, 1e-6)),
-    Mistake("stopped early", _stopped_words,
-            fits=lambda a, e, g: _stopped_at(a, e, g) is not None),
+    Mistake("stopped early", _stopped_words, fits=_stopped_there),
     # r22 D-7: a right loop over white, and one rounded to whole numbers, got the rule
     Mistake("over white", "you composited over white: the task's background is transparent "
             "black, (0, 0, 0, 0), which adds no light and covers nothing, so the composite "
@@ -440,6 +457,9 @@ MISTAKES = {
     "no transmittance": "you added the layers up: a layer behind is seen only through the "
     "layers in front, so weigh it by the transmittance 1 − A left by them (A: the alpha "
     "accumulated so far)",
+    "colour not weighed": "you added each layer's colour whole, without the transmittance "
+    "1 − A in front of it (your alpha is right): a layer behind is seen only through what the "
+    "layers in front leave, so its colour counts (1 − A)·c, as its alpha does",
     "double premultiplication": "you multiplied each layer's colour by its alpha: the colours "
     "are premultiplied already (that darkens every semi-transparent layer)",
     "alpha summed": "you added the alphas: coverage composes like colour, A ← A + (1 − A)·α",

@@ -140,7 +140,7 @@ def _diamonds(p0, p1, eps, end, order, closed, start, half, centre, inside):
     if end is not True:
         e = np.asarray(p1, float) if str(end).startswith("unmoved") else b
         far = np.abs(e[0] - cx) + np.abs(e[1] - cy)
-        ok &= far > half if end == "unmoved closed" else far >= half
+        ok &= far > half if end == "unmoved closed" or closed == "all" else far >= half
     if start:
         ok &= np.abs(a[0] - cx) + np.abs(a[1] - cy) >= half
     pixels = zip(rows.ravel()[ok].astype(int), cols.ravel()[ok].astype(int))
@@ -223,6 +223,21 @@ def sampled_dda(p0, p1):
     )
 
 
+def rounded_dda(p0, p1, centred=False):
+    """A DDA that rounds (r289 S1): n = max(|dx|, |dy|) steps between the end points' pixels
+    (``centred``: the end points less ½, which puts the pixel centres on whole numbers, n
+    counted between them rounded), each point x0 + k·dx/n rounded to the nearest whole pixel,
+    p1's step left out."""
+    if centred:
+        x0, y0, x1, y1 = (float(v) - 0.5 for v in (*p0, *p1))
+        n = max(abs(round(x1) - round(x0)), abs(round(y1) - round(y0)))
+    else:
+        x0, y0, x1, y1 = (int(np.floor(v)) for v in (*p0, *p1))
+        n = max(abs(x1 - x0), abs(y1 - y0))
+    steps = ((round(x0 + (x1 - x0) * k / n), round(y0 + (y1 - y0) * k / n)) for k in range(n))
+    return frozenset((y, x) for x, y in steps if 0 <= x < WINDOW and 0 <= y < WINDOW)
+
+
 def _unmoved_range(p0, p1):
     """The rule's pixels inside the box of the pixels the unmoved end points lie in."""
     (c0, c1), (r0, r1) = (sorted((int(np.floor(p0[k])), int(np.floor(p1[k])))) for k in (0, 1))
@@ -270,12 +285,14 @@ def dda_pixels(p0, p1):
     return frozenset(p for p in out if 0 <= p[0] < WINDOW and 0 <= p[1] < WINDOW)
 
 
+#: Said after the cause (r289 S3: ~430 characters of it opened every tie explanation), and
+#: attributed as lesson 12a §1 does: the −(ε, ε²) in y-down numbers is Vulkan's rule (S8).
 _TIE = (
     "at a tie (a segment along a diamond's edge, or through its corner) the rule moves both end "
-    "points by (x, y) − (ε, ε²), ε vanishingly small, in these y-down window numbers: x by −ε "
-    "(left), y by −ε² (up the image), so that a vertical line on x = k lights column k − 1 and "
-    "a horizontal one on y = k row k − 1, the upper row, as Direct3D does (GL moves y by −ε² "
-    "in its own window, whose y points up, and lights the lower row, row k: lesson 12a §1)"
+    "points by (−ε, −ε²), ε vanishingly small: x left, y up the image (y points down here), so "
+    "a vertical line on x = k lights column k − 1 and a horizontal one on y = k row k − 1, the "
+    "upper row, as Vulkan's rule does (GL, whose window has y up, lights the lower row, row k: "
+    "lesson 12a §1)"
 )
 #: How :data:`_TIE` reads after the first line that says it in full (r23 D-6).
 _TIE_AGAIN = "at a tie the rule moves both end points by (−ε, −ε²), as said above"
@@ -301,8 +318,8 @@ def _lost(what: str, axes):
     "left y as it is", and the student had not)."""
 
     def words(args, expected, got) -> str:
-        return (f"{_TIE}; {what} (or yours was lost in floating point"
-                f"{_float_example(args, axes)}; compute with Fraction, as the task says)")  # fmt: skip
+        return (f"{what} (or yours was lost in floating point{_float_example(args, axes)}; "
+                f"compute with Fraction, as the task says); {_TIE}")  # fmt: skip
 
     return words
 
@@ -366,8 +383,6 @@ def _start_diamond_dark(a, e, g):
 
 
 LINE_KNOBS = Knobs(diamond_pixels, {
-    "eps": [Slip(kind, words if callable(words) else f"{_TIE}; {words}", move)
-            for move, (kind, words) in _MOVES.items()],
     "end": [Slip("end pixel lit", _end_lit, True),
             Slip("end tested before moving", _end_unmoved, "unmoved"),
             # r11 09-F: with the boundary counted in as well, the rule was restated
@@ -378,8 +393,17 @@ LINE_KNOBS = Knobs(diamond_pixels, {
     "closed": [Slip("closed diamond", "your diamond includes its boundary (|dx| + |dy| ≤ ½); "
                     "it is open (< ½): a segment that only touches a corner or runs along an "
                     "edge does not meet it, and such ties go to the segment moved by "
-                    "(−ε, −ε²)", True)],
+                    "(−ε, −ε²)", True),
+              # r289 S1: the boundary counted in everywhere, p1's diamond too (with no ε, the
+              # reader's closed diamond got the rule restated)
+              Slip("closed diamond", "your diamonds include their boundary (|dx| + |dy| ≤ ½), "
+                   "p1's too; they are open (< ½): a segment that only touches a corner or runs "
+                   "along an edge does not meet one, and such ties go to the segment moved by "
+                   "(−ε, −ε²)", "all")],
     "start": [Slip("start diamond dark", _start_diamond_dark, True)],
+    # last: in a combination the other slip's cause comes first, the tie words last (r289 S3)
+    "eps": [Slip(kind, words if callable(words) else f"{words}; {_TIE}", move)
+            for move, (kind, words) in _MOVES.items()],
 })  # fmt: skip
 
 #: ε too large (r9: 1/100 passed every case): each gives its own answer, named by its value.
@@ -454,6 +478,18 @@ LINE_MISTAKES = [
         "fall in, wherever in the pixel; the rule lights the pixels whose diamond "
         "|x − (col + ½)| + |y − (row + ½)| < ½ the segment passes through and leaves",
         gives=sampled_dda,
+    ),
+    # r289 S1: rounding DDAs, from the end points' pixels and from their centres
+    *(
+        Mistake(
+            "DDA",
+            "you stepped a DDA from pixel to pixel, rounding x0 + k·dx/n to the nearest whole "
+            "pixel at each of n = max(|dx|, |dy|) steps (lesson 12a §3): that lights the pixel "
+            "nearest each sample; the rule lights the pixels whose diamond the segment itself "
+            "passes through and leaves",
+            gives=lambda p0, p1, c=c: rounded_dda(p0, p1, c),
+        )
+        for c in (False, True)
     ),
     Mistake(
         "search range from the unmoved ends",

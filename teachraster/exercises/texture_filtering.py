@@ -24,6 +24,7 @@ from ..pipeline.mip_pyramid import mipmap
 from ..pipeline.texture import sample
 from .answers import as_numbers
 from .cases import SEED, fixed_and_drawn
+from .channel_order import channel_order_mistake
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
 from .tolerance import TOL, all_close
@@ -302,13 +303,6 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
 })  # fmt: skip
 
 
-def _reversed(value):
-    """The channels reversed, or None where that is the same answer (one channel, or a
-    palindrome such as grey)."""
-    v = np.asarray(value, dtype=float)
-    return None if v.ndim == 0 or np.array_equal(v, v[::-1]) else v[::-1]
-
-
 def _nearest(tex, uv, wrap):
     return sample(tex, np.asarray(uv, dtype=float)[None], "nearest", wrap)[0]
 
@@ -364,10 +358,10 @@ BILINEAR_MISTAKES = [
     # r64 07 D2: `return texture[0, 0]` was given the method
     Mistake("texel [0, 0]", ": that is texel [0, 0] (the upper-left one), whatever uv: a "
             "placeholder left in?", gives=lambda tex, uv, wrap: np.asarray(tex, float)[0, 0]),
-    # r286 M3, M4: the channels in another order, and a value that ignores uv
-    Mistake("channels reversed", ": the same values in another channel order (reversed, as "
-            "BGR for RGB): channel k of the answer is channel k of the texture",
-            gives=lambda tex, uv, wrap: _reversed(expected_bilinear(tex, uv, wrap))),
+    # r286 M3, M4: the channels in another order (the rule shared with 9.2's colours), and
+    # a value that ignores uv
+    channel_order_mistake(": the same values in another channel order", ": channel k of the "
+                          "answer is channel k of the texture", tol=TOL),
     Mistake("texture's mean", ": that is the mean of the whole texture, whatever uv: bilinear "
             "blends only the four texels around (u, v)",
             gives=lambda tex, uv, wrap: np.asarray(tex, float).mean(axis=(0, 1))),
