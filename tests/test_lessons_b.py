@@ -6340,7 +6340,7 @@ def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
     # M2: blocked against stepped, printed and quoted (about 2.7x at 256²)
     over = {s: ns.blocked[s]["over_stepped"] for s in ("256²", "512²")}
     assert 2.5 < over["256²"] < 2.9 and over["512²"] < over["256²"]
-    for s, v in over.items():
+    for v in over.values():
         assert f"{v:.1f}x the stepped one's" in printed
     said = " ".join(ns.FILL_TEXT.split())
     assert (f"blocked half-planes need {over['256²']:.1f}x its cycles "
