@@ -6356,7 +6356,8 @@ def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
     assert round(ns.per_px_hp) == round(ns.per_centre_q * ns.box_per_covered) == 22
     # S3: the worst pixel leaves the steepest piece's row at N = 32; the text says so
     assert ns.worst_row[32] != ns.steepest[32]["row"]
-    assert f"row {ns.steepest[32]['row']}; row {ns.worst_row[32]}" in printed
+    assert f"N = 32 {ns.worst_row[32]} and {ns.steepest[32]['row']}" in printed
+    assert max(len(x) for x in printed.splitlines()) <= 80
     quake = " ".join(ns.QUAKE_TEXT.split())
     assert "The cuts do not fall in the order of $\\rho$" in quake
     assert f"to row {ns.worst_row[32]}, off the steepest piece's row" in quake
