@@ -6343,8 +6343,8 @@ def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
     for v in over.values():
         assert f"{v:.1f}x the stepped one's" in printed
     said = " ".join(ns.FILL_TEXT.split())
-    assert (f"blocked half-planes need {over['256²']:.1f}x its cycles "
-            f"({over['512²']:.1f}x at 512²)") in said  # fmt: skip
+    assert (f"cheaper still: blocked half-planes need {over['256²']:.1f}x its cycles at "
+            f"256², {over['512²']:.1f}x at 512²") in said  # fmt: skip
     # S4: one rounding of q_fill's answer, 8.9 as the explanation and the summary say
     fill = next(c for c in cells if "q_fill = Predict(" in c)
     assert "answer=round(fill_answer_512, 1)" in fill
