@@ -5064,7 +5064,10 @@ def test_06_review_r243_fig1_explorer_readouts_k_and_the_cheap_end_labelled():
             cheapest = min(p.get_xdata()[0] for p in ex.art.points.values())
             assert min(shown) <= 1.3 * cheapest, (k, shown, cheapest)
             assert f"attributes k = {k}:" in ex.info.value
-        assert 30.0 in shown and cheapest == 32.0  # at k = 32: affine's 32, labelled from 30
+            if k == 32:  # affine's 32, labelled from 30
+                assert 30.0 in shown and cheapest == 32.0
+        # r290 W1: the slider reaches the 128 attributes the lesson quotes (cells 41-42)
+        assert max(ATTRIBUTE_COUNTS) == 128 and 128 in ns.shared
     finally:
         ex.close()
 
@@ -6312,3 +6315,51 @@ def test_06_review_r283_fmul_rcp_blocked_fill_and_guides():
     quake = next(c for c in cells if "q_quake = Predict(" in c)
     assert "a ratio ρ = " in quake and "ratio r =" not in quake
     assert "subdivided by $N$ costs " in next(c for c in cells if "FRONT_TEXT = (" in c)
+
+
+def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
+    """Review r290: FIG1 the vertex labels of q_depth's picture sat on the triangle's corners
+    (offset down for the top vertex although the y axis points down), so the dots looked off
+    the drawn shape; M2 blocked half-planes were not priced against the stepped span loop the
+    text calls cheaper still; S4 q_fill's answer showed 8.95 where the text says 8.9; S3 the
+    worst pixel's cuts are not monotone in ρ; S1 "r near 1" in q_quake's explanation."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    from teachraster.widgets import Predict
+
+    ns = lesson("06_what_accuracy_costs")
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    cells = ["".join(c["source"]) for c in nb["cells"]]
+    printed = streams(executed("06_what_accuracy_costs").notebook())
+    # FIG1: labels outside the triangle (up for the top vertex), the outline through the dots
+    depth = next(c for c in cells if "q_depth = PredictPoint(" in c)
+    assert "xytext=(0, 12 if y < cell / 2 else -12)" in depth
+    assert "np.r_[x_vert, x_vert[0]]" in depth and "ylim=(cell + 3, 0)" in depth
+    # M2: blocked against stepped, printed and quoted (about 2.7x at 256²)
+    over = {s: ns.blocked[s]["over_stepped"] for s in ("256²", "512²")}
+    assert 2.5 < over["256²"] < 2.9 and over["512²"] < over["256²"]
+    for v in over.values():
+        assert f"{v:.1f}x the stepped one's" in printed
+    said = " ".join(ns.FILL_TEXT.split())
+    assert (f"cheaper still: blocked half-planes need {over['256²']:.1f}x its cycles at "
+            f"256², {over['512²']:.1f}x at 512²") in said  # fmt: skip
+    # S4: one rounding of q_fill's answer, 8.9 as the explanation and the summary say
+    fill = next(c for c in cells if "q_fill = Predict(" in c)
+    assert "answer=round(fill_answer_512, 1)" in fill
+    shown = Predict("?", answer=round(ns.fill_answer_512, 1), tolerance=ns.FILL_TOLERANCE,
+                    explain="")._answer_text()  # fmt: skip
+    assert shown.startswith("8.9 (") and "8.95" not in shown
+    # "about 22 per covered pixel at any size": 22.3 at 256², 22.1 at 512² (cell 28's 2.01)
+    assert "about {per_px_hp:.0f} per covered pixel at any size" in fill
+    assert round(ns.per_px_hp) == round(ns.per_centre_q * ns.box_per_covered) == 22
+    # S3: the worst pixel leaves the steepest piece's row at N = 32; the text says so
+    assert ns.worst_row[32] != ns.steepest[32]["row"]
+    assert f"N = 32 {ns.worst_row[32]} and {ns.steepest[32]['row']}" in printed
+    assert max(len(x) for x in printed.splitlines()) <= 80
+    quake = " ".join(ns.QUAKE_TEXT.split())
+    assert "The cuts do not fall in the order of $\\rho$" in quake
+    assert f"to row {ns.worst_row[32]}, off the steepest piece's row" in quake
+    # S1
+    assert "r near 1" not in next(c for c in cells if "q_quake = Predict(" in c)
