@@ -1341,7 +1341,7 @@ def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns)
     for told in ("§14.6.6 *Polygon Multisample Rasterization*", "§14.6.1's", "§3.4.2.1",
                  "*Basic Polygon Rasterization*", "`tr.is_top_left`", "no rule named"):  # fmt: skip
         assert told in row, told
-    assert table.count("\n| ") == 8 and "Six rules of §2–§4 and §6" in table
+    assert table.count("\n| ") == 7 and "Six rules of §2–§4 and §6" in table
     printed = streams(executed("08_antialiasing").notebook())
     if "no OpenGL here:" not in printed:
         assert ns.gl_same["§4's fan, 4-sample hub"] and ns.ties == 20
