@@ -101,7 +101,7 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     flat = md.replace("\n", " ")
     # review r230 S3: Direct3D 11's functional spec fixes the rule (llvmpipe's); teachraster's
     # is one GL and Vulkan allow
-    assert "conforming" not in flat and "teachraster's, which GL and Vulkan allow too" in flat
+    assert "conforming" not in flat and "differs in one case, which GL and Vulkan allow too" in flat
     assert "teachraster: the covered sample nearest the centre)" not in flat
     # review r240 S: Direct3D 11's rule is the one taught (§5 and the summary); teachraster's
     # variant, which keeps a covered centre, is one sentence and a row of the folded table
@@ -1298,7 +1298,8 @@ def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
     )
     assert [r.split(" | ")[0] for r in rows[1:]] == [
         "| where MSAA evaluates an attribute (§2)", "| sample positions (§3)",
-        "| resolve filter (§6)", "| sRGB resolve (§6)", "| sample-rate shading (here)"]  # fmt: skip
+        "| the tie rule, per sample (§4)", "| resolve filter (§6)", "| sRGB resolve (§6)",
+        "| sample-rate shading (here)"]  # fmt: skip
     for section in ("GLSL §4.5", "§14.3.1)", "§18.3.1", "§14.3.1.1", "§19.2.4", "§5.6.6", "§23.6"):
         assert section in table, section
     assert "`ResolveSubresource`" in table and "`sampleShadingEnable`" in table
@@ -1318,3 +1319,58 @@ def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
     assert "memory grows like $S$, bandwidth up to $S$" in " ".join(md.split()) or (
         "memory grows like $S$, bandwidth up to" in md
     )
+
+
+def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns):
+    """Review r287 M1: the standards table has a row for the tie rule per sample, and the
+    llvmpipe cell measures it on a fan whose spokes pass through 4-sample positions (§4's fan
+    has none there). S1: the row "not reprojected, clamped" is discussed: as few ghosts behind
+    as with reprojection, none ahead, yet the worst error. S4: a reason for teachraster's
+    centroid rule. S2: the explorer's shape chooser is greyed out at filter width 0. S3: the
+    verdict and the inspector's edge values use the minus sign."""
+    from notebook_runs import executed, streams
+
+    from teachraster.plotting.antialiasing import edge_value_text
+    from teachraster.widgets.predict import Predict
+    from teachraster.widgets.sampling_explorer import SamplingExplorer
+
+    _, sources, md = _lesson_text()
+    words = " ".join(md.split())
+    (table,) = [s for s in sources if s.startswith("### The lesson's rules, standard by standard")]
+    (row,) = [r for r in table.splitlines() if r.startswith("| the tie rule, per sample (§4)")]
+    for told in ("§14.6.6 *Polygon Multisample Rasterization*", "§14.6.1's", "§3.4.2.1",
+                 "*Basic Polygon Rasterization*", "`tr.is_top_left`", "no rule named"):  # fmt: skip
+        assert told in row, told
+    assert table.count("\n| ") == 7 and "Six rules of §2–§4 and §6" in table
+    printed = streams(executed("08_antialiasing").notebook())
+    if "no OpenGL here:" not in printed:
+        assert ns.gl_same["§4's fan, 4-sample hub"] and ns.ties == 20
+        assert f"    {ns.ties} of them exactly on a spoke two triangles share (ties)" in printed
+    # S1: the numbers the sentence quotes, printed in cell 49's table
+    e, split = ns.crawl_errors, ns.ghost_split
+    alone, both = split["history, not reprojected, clamped"], split["history, reprojected, clamped"]
+    assert alone["ahead"] == 0 and abs(alone["behind"] - both["behind"]) <= 2
+    worst = e["history, not reprojected, clamped"]
+    assert worst == max(v for k, v in e.items() if k.startswith("history"))
+    assert (f"the trail falls as far ({alone['behind']}, all behind) and nothing blurs ahead, "
+            f"yet it errs most ({worst:.3f}): the clamp hides a missing reprojection") in words  # fmt: skip
+    # S4
+    assert ("keeps the centre, where MSAA's own value already lies inside the triangle") in words
+    # S2
+    explorer = SamplingExplorer(backend="image")
+    try:
+        assert explorer.kernel.disabled
+        explorer.width.value = 1.0
+        assert not explorer.kernel.disabled
+    finally:
+        explorer.close()
+    # S3
+    assert edge_value_text(-4.86) == "−4.86" and edge_value_text(4.86) == "+4.86"
+    q = Predict("exponent?", answer=-0.74, tolerance=0.05, headless=False)
+    try:
+        q.control.value = "-0.6"
+        q.check.click()
+        said = q.feedback.value
+        assert "<b>−0.6</b>; the answer is <b>−0.74 (± 0.05)</b>" in said and "-0." not in said
+    finally:
+        q.close()

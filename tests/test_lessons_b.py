@@ -2983,8 +2983,7 @@ def test_09_r233_standards_probes_order_and_appendix():
     assert errors[-1] < 0.6 * ns.grazing_rms["trilinear"]
     # FIG2: cropped a few rows below the lowest seam; the difference is largest at the seams
     assert ns.crop_rows[-1] < ns.H - 30
-    near, far = ns.by_distance[0] + ns.by_distance[1], ns.by_distance[6] + ns.by_distance[7]
-    assert near > 4 * far
+    assert ns.by_distance[0] > 4 * ns.by_distance[3]  # by quad rows since r285 S1
     # S1: "two or three pixels"; S2: sRGB introduced in lesson 08 §6
     assert 2 < ns.near_px < 3 and "two or three pixels (§4 prints how many)" in flat
     assert "(lesson 08, §6, *One pixel of the resolve*)" in flat and "(lesson 12b)" not in flat
@@ -3106,6 +3105,36 @@ def test_09_r246_printouts_named_by_their_words_and_standards_folded():
         for note in ("(GL 4.6 §8.15)", "EXT extension", "`maxSamplerAnisotropy`", "`deriv_rtx`"):
             assert note not in re.sub(r"<details>.*?</details>", "", shown, flags=re.S), note
     assert len(body) < 0.7 * 7244, len(body)
+
+
+def test_09_r285_seams_by_quad_rows_gl_names_and_the_explorer_frame():
+    """Review r285 09 S1: the bars by distance from a seam peaked one row away and alternated
+    odd above even: coarse λ is one value per 2 x 2 quad, so every seam lies between quad
+    rows; counted in quad rows the difference falls from the seam, and the text's numbers
+    are those printed. S2: the §5 filters (and nearest, bilinear) carry GL's names. S4: at
+    0° the square fills the frame's height only: the view is zoomed to fit it."""
+    import json
+
+    from notebook_runs import executed, streams
+
+    ns = lesson("09_texture_filtering")
+    assert ns.seam_starts and all(row % 2 == 0 for row in ns.seam_starts)  # quad rows
+    gaps = list(ns.by_distance.values())
+    assert gaps == sorted(gaps, reverse=True) and ns.gap_at_seams == gaps[0]
+    printed = streams(executed("09_texture_filtering").notebook())
+    told = "by quad rows from a seam: " + ", ".join(f"{d}: {g:.3f}" for d, g in enumerate(gaps))
+    assert told in printed and f"{gaps[0]:.3f} in the quads at a seam" in printed
+    cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
+    flat = " ".join(" ".join("".join(c["source"]) for c in cells).split())
+    assert "departs from trilinear's most in the quads beside a seam" in flat
+    assert "coarse $\\lambda$ is one value per quad" in flat and "same column;" not in flat
+    for ours, gl in (("nearest_mipmap_nearest", "GL_NEAREST_MIPMAP_NEAREST"),
+                     ("linear_mipmap_nearest", "GL_LINEAR_MIPMAP_NEAREST"),
+                     ("nearest_mipmap_linear", "GL_NEAREST_MIPMAP_LINEAR"),
+                     ("trilinear", "GL_LINEAR_MIPMAP_LINEAR")):  # fmt: skip
+        assert f"| `{ours}`<br>*`{gl}`* |" in flat, ours
+    assert "**nearest** (`GL_NEAREST`)" in flat and "**bilinear** (`GL_LINEAR`)" in flat
+    assert "the view zoomed to fit the frame" in flat and "to fill the frame" not in flat
 
 
 def test_09_r257_c1_the_box_is_a_target_and_a_gaussian_reference_beside_it():

@@ -585,12 +585,16 @@ def edge_value_text(v: float) -> str:
     rule decides), else signed with two decimals (one precision for every label), and in
     scientific notation when that would round a non-zero value to 0.00.
 
+    The sign of a negative value is the minus sign "−", as in the lesson's text (review r287
+    S3: "-4.86" beside the text's "−4.86").
+
     >>> [edge_value_text(v) for v in (0.0, -2.0, 10.3125, 0.001)]
-    ['0', '-2.00', '+10.31', '+1.0e-03']
+    ['0', '−2.00', '+10.31', '+1.0e-03']
     """
     if v == 0:
         return "0"
-    return f"{v:+.2f}" if abs(v) >= 0.005 else f"{v:+.1e}"
+    text = f"{v:+.2f}" if abs(v) >= 0.005 else f"{v:+.1e}"
+    return "−" + text[1:] if text.startswith("-") else text
 
 
 def _place_numbers(ax, xs, ys, centre, dot_pt: float, *, lines=()) -> list:

@@ -256,6 +256,13 @@ def _check_notes(notes, choices) -> dict:
     return checked
 
 
+def _number(value: float) -> str:
+    """A number for the verdict, its sign the minus sign "−" as in the lessons' text (review
+    r287 S3: "the answer is -0.74" beside the text's "−0.74")."""
+    text = f"{value:g}"
+    return "−" + text[1:] if text.startswith("-") else text
+
+
 class Predict(HoldsAnswer):
     """Ask first, reveal after: a multiple-choice or numeric prediction question.
 
@@ -430,16 +437,16 @@ class Predict(HoldsAnswer):
         if self.choices:
             return html.escape(self.answer)
         if not self.tolerance:
-            return f"{self.answer:g}"
+            return _number(self.answer)
         # one digit finer than the tolerance, no more (r105 08-5: "1.15849 (± 0.1)")
         digits = max(0, 1 - math.floor(math.log10(self.tolerance)))
-        return f"{round(self.answer, digits):g} (± {self.tolerance:g})"
+        return f"{_number(round(self.answer, digits))} (± {self.tolerance:g})"
 
     def _verdict(self) -> str:
         """One HTML line: what the student said against the answer."""
         if self.given is None:
             return f"The answer: <b>{self._answer_text()}</b>."
-        said = html.escape(self.given if self.choices else f"{self.given:g}")
+        said = html.escape(self.given) if self.choices else _number(self.given)
         word = "Right" if self.correct else "Not quite"
         colour = "#009E73" if self.correct else "#D55E00"  # Okabe–Ito bluish green, vermillion
         note = next((text for key, text in self.notes.items() if key == self.given), "")
@@ -488,7 +495,7 @@ class Predict(HoldsAnswer):
     def record_html(self) -> str:
         """The line saved in the cell's output after "Check": the prediction, not the verdict
         (the widget shows that; repeated below it, a student read it twice)."""
-        said = html.escape(self.given if self.choices else f"{self.given:g}")
+        said = html.escape(self.given) if self.choices else _number(self.given)
         return (
             f"<div style='color:#555'><i>Saved with the notebook: you predicted {said}.</i></div>"
         )

@@ -99,6 +99,11 @@ class SamplingExplorer(Shown):
         self.info.value = self._info_html()
         for control in (self.rate, self.width):
             control.observe(lambda change: self.update(), "value")
+        # at width 0 there is no prefilter, so no shape to choose: the chooser is greyed out
+        # (review r287 S2: it showed "box" chosen beside "0.00 (none: the signal)")
+        self.kernel.disabled = self.width.value == 0
+        self.width.observe(lambda change: setattr(self.kernel, "disabled", change.new == 0),
+                           "value")  # fmt: skip
         # another shape: every picture drawn ahead is stale
         self.kernel.observe(lambda change: self.update(restart=True), "value")
         title = title_html(
