@@ -34,10 +34,17 @@ def test_10_r292_items():
     assert 0.1 * r.outside < r.outside_past < 0.5 * r.outside and r.inside_past > 0.9 * r.inside
     assert 2 < r.peak < 3 and r.wrongly_in > 0
     e = precision.edge_values(ns.big.xy, ns.N, ns.N) * 256.0**2
-    past = (e < -(2.0**31)).any(axis=0) & ~ns.narrow.exact
+    jj, ii = np.meshgrid(np.arange(ns.N) + 0.5, np.arange(ns.N) + 0.5)
+    lo, hi = ns.big.xy.min(axis=0), ns.big.xy.max(axis=0)
+    box = (jj >= lo[0]) & (jj <= hi[0]) & (ii >= lo[1]) & (ii <= hi[1])
+    past = (e < -(2.0**31)).any(axis=0) & ~ns.narrow.exact & box
+    assert int(past.sum()) == r.outside_past
     assert (ns.false_in & ~past).sum() == 0  # no wrongly-in pixel short of -2^31
     rows, cols = np.nonzero(past)
-    assert rows.min() > ns.N / 2 and cols.min() > ns.N / 2  # the corner opposite E23
+    # one edge (the long one, v2 to v3) is the one they fail, and they lie in the box's
+    # corner opposite it, the bottom right
+    assert sum(bool((e[k][past] < -(2.0**31)).any()) for k in range(3)) == 1
+    assert rows.min() > 0.45 * ns.N and cols.min() > 0.5 * ns.N
     # C2
     assert "from the star to the square" in md and "filled dot" not in md
     # F1
