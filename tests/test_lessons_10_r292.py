@@ -57,7 +57,7 @@ def test_10_r292_items():
     assert "the least four tiles allow" not in md  # said only in the held explanation
     # M2: q_tile before the table and the explorer, both held, and the text after them
     ask = next(i for i, t in enumerate(text) if "q_tile = Predict(" in t)
-    assert "hiz_explorer = HiZTileExplorer(" in text[ask] and "print(" not in text[ask]
+    assert "hiz_explorer = HiZTileExplorer(" in text[ask - 1] and "print(" not in text[ask]
     for k in (ask + 1, ask + 2):
         assert text[k].startswith("q_tile.hold()"), k
     assert "stored depths" in text[ask + 1] and "**Smaller tiles reject more**" in text[ask + 2]
