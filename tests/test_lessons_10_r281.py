@@ -11,7 +11,7 @@ def test_10_r281_items():
     false for §3's small triangles (3 of 4 covered with 2-px legs): it now says "about half"
     for a large triangle, which §3's large one measures (50 %), and names the tiny case. M1: §4
     folds a table of each standard's sub-pixel bits with its sections and int32's range,
-    each range printed. M3: §5 asks q_trav (scanline's tile moves, counted on the figure)
+    each range printed. M3: §5 asks q_trav (which order moves between tiles least, r292)
     and holds the table that answers it; §7's sphere is played in a HiZTileExplorer (order ×
     tile size) whose replays give the printed table. FIG1: the walk's first block is a
     ringed star, not a dot like the vertices; FIG2: the block's values take the left panel's
@@ -47,7 +47,8 @@ def test_10_r281_items():
     # M3: q_trav, asked under the figure it is counted on, its table held
     asked = next(i for i, t in enumerate(text) if "q_trav = Predict(" in t)
     assert "plot_traversal(" in text[asked] and text[asked + 1].startswith("q_trav.hold()")
-    assert 'answer=trav_moves["scanline"],' in text[asked] and "whole=True," in text[asked]
+    # r292 P1: a choice reasoned on the paths (which order moves least), no longer a count
+    assert "answer=TRAV_CHOICES[least]," in text[asked] and ns.least == ("tiled", "morton")
     assert ns.trav_moves["scanline"] == ns.tile_changes["scanline"] == 15
     assert ns.trav_moves == ns.tile_changes and (ns.trav_moves["serpentine"], ns.trav_moves[
         "tiled"], ns.trav_moves["morton"]) == (9, 3, 3)  # fmt: skip

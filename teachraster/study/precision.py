@@ -344,6 +344,15 @@ class WrongRegions:
         ``"wrap"`` (an edge's value passes a nonzero multiple of ``2**(int_bits - 1)``, where
         the register's sign flips: a line parallel to that edge), ``"block"`` (on a boundary
         of the smallest blocks: a block misjudged at its corners) and ``"other"``.
+    outside, outside_past : int
+        Pixel centres inside the bounding box but outside the triangle, and those of them where
+        some edge's exact value lies below ``-2**(int_bits - 1)``: only these can wrap to a
+        positive value and come out wrongly in.
+    inside, inside_past : int
+        Centres the exact walk covers, and those where some edge's value reaches
+        ``2**(int_bits - 1)``: only these can wrap to a negative one and come out wrongly out.
+    peak : float
+        The largest edge value at a covered centre, in units of ``2**(int_bits - 1)``.
     """
 
     wrongly_in: int
@@ -351,6 +360,11 @@ class WrongRegions:
     near: int
     near_px: float
     sides: dict
+    outside: int = 0
+    outside_past: int = 0
+    inside: int = 0
+    inside_past: int = 0
+    peak: float = 0.0
 
     @property
     def wrong(self) -> int:
@@ -415,10 +429,19 @@ def wrong_regions(xy, narrow, *, near_px: float = 2.0, block: int = 4) -> WrongR
             hit = left & where
             sides[name] += int(hit.sum())
             left &= ~hit
+    # magnitude: a sign flips only where a value passes 2**(n - 1); outside, the walk stops at
+    # the box, so only the box's centres count
+    half = 2.0 ** (budget.int_bits - 1)
+    outside, inside = box & ~narrow.exact, narrow.exact
     return WrongRegions(
         wrongly_in=int((narrow.coverage & ~narrow.exact).sum()),
         wrongly_out=int((narrow.exact & ~narrow.coverage).sum()),
         near=int((wrong & (distance <= near_px)).sum()),
         near_px=float(near_px),
         sides=sides,
+        outside=int(outside.sum()),
+        outside_past=int((outside & (e < -half).any(axis=0)).sum()),
+        inside=int(inside.sum()),
+        inside_past=int((inside & (e >= half).any(axis=0)).sum()),
+        peak=float(e[:, inside].max() / half) if inside.any() else 0.0,
     )
