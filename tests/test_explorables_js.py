@@ -178,7 +178,7 @@ def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on()
     scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
     (table,) = call_js(EDGES, [("edgeTable", [scene])])
     row_b = table.split("<tr>")[2]
-    assert "counter-clockwise on screen: tested on its edges walked backwards" in row_b
+    assert "counter-clockwise on screen: tested backwards" in row_b
     for name in ("E23 (v2→v3)", "E42 (v4→v2)", "E34 (v3→v4)"):
         assert f">{name}</b>" in row_b
     assert "E32" not in row_b and "clockwise on screen" in table.split("<tr>")[1]
@@ -475,8 +475,8 @@ def test_the_shared_edge_and_the_vertices_leave_their_signs_to_the_pointer():
     quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [2.5, 6.5]]  # B counter-clockwise
     (ccw,) = call_js(EDGES, [("edgeScene", [quad, 14, 12])])
     (table,) = call_js(EDGES, [("edgeTable", [ccw])])
-    assert table.startswith('<table><colgroup><col style="width:25%">')
-    assert "<b>B</b><br><small>counter-clockwise on screen" in table
+    assert table.startswith('<table><colgroup><col style="width:31%">')
+    assert "<b>B</b><br><small>counter-clockwise on screen: tested backwards" in table
 
 
 CRACKS = ("raster_rules", "explore_cracks")

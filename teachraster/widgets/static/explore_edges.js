@@ -62,7 +62,7 @@ export function edgeLabels(setup, names) {
 const EDGES_CSS = `
 .tr-edges-legend span { display: inline-block; margin-right: 12px; }
 .tr-edges-table table { table-layout: fixed; width: 100%; max-width: 860px; }
-.tr-edges-table td { padding: 1px 6px; vertical-align: top; }
+.tr-edges-table td { padding: 1px 6px; vertical-align: top; text-align: left; }
 `;
 
 function mount(el, data, host) {
@@ -669,16 +669,16 @@ export function edgeTable(scene) {
     if (s.area2 === 0) return `<tr><td><b>${name}</b></td><td colspan=3>zero area: covers nothing</td></tr>`;
     // the name and the kind each on one line: "right, bias / −1" wrapped (review r231 02-7)
     const cells = edgeLabels(s, names).map((e, k) =>
-      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}">` +
+      `<td style="text-align:left;color:${name === "A" ? EDGE_HUES[k] : "#333"}">` +
       `<b style="white-space:nowrap">${walkedName(e)}</b> <span style="white-space:nowrap">` +
       `${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}</span></td>`).join("");
     // the winding on a line of its own in a column of fixed width: the counter-clockwise
     // sentence wrapped the row and shifted its columns (review r291 02-2)
     const wind = s.originalArea2 > 0 ? "clockwise on screen"
-      : "counter-clockwise on screen: tested on its edges walked backwards";
-    return `<tr><td><b>${name}</b><br><small>${wind}</small></td>${cells}</tr>`;
+      : "counter-clockwise on screen: tested backwards";
+    return `<tr><td style="text-align:left"><b>${name}</b><br><small>${wind}</small></td>${cells}</tr>`;
   });
-  const cols = `<colgroup><col style="width:25%"><col span="3" style="width:25%"></colgroup>`;
+  const cols = `<colgroup><col style="width:31%"><col span="3" style="width:23%"></colgroup>`;
   return `<table>${cols}${rows.join("")}</table>`;
 }
 
