@@ -140,9 +140,10 @@ def test_canvas_text_reads_12_px_in_the_column_at_1024_px():
         assert size >= px and size * min(1.0, 585 / w) >= 12 - 1e-9, (w, px, size)
     # lesson 02's 16 x 14 grid: 42-px cells on a 714-px canvas (review r93 02-4: 37-px cells
     # on a 634-px one drew the signs 9-10 px high)
-    cell = min(44, 680 // 16, 600 // 14)
+    # review r291 02-2: 50-px cells (42 drew the signs about 10 px high at a 1400-px page)
+    cell = min(50, 800 // 16, 700 // 14)
     width = 30 + 16 * cell + 12
-    assert cell == 42
+    assert cell == 50
     (size,) = call_js(EDGES, [("signSize", [cell, width])])
     assert size * 585 / width >= 12 + 1  # the signs a little above the floor
     assert size * 585 / width >= 16  # and on a projector (was 14.8 px in a 585-px column)
@@ -177,7 +178,7 @@ def test_a_counter_clockwise_triangle_is_labelled_by_the_edges_it_is_tested_on()
     scene = call_js(EDGES, [("edgeScene", [quad, 14, 12])])[0]
     (table,) = call_js(EDGES, [("edgeTable", [scene])])
     row_b = table.split("<tr>")[2]
-    assert "counter-clockwise on screen: tested on its edges walked backwards" in row_b
+    assert "counter-clockwise on screen: tested backwards" in row_b
     for name in ("E23 (v2→v3)", "E42 (v4→v2)", "E34 (v3→v4)"):
         assert f">{name}</b>" in row_b
     assert "E32" not in row_b and "clockwise on screen" in table.split("<tr>")[1]
@@ -451,6 +452,31 @@ def test_edge_signs_are_drawn_near_the_edges_and_under_the_pointer():
     far = next(rc for rc, s in zip(cells, shown) if not s)
     hover = [far[1] + 0.3, far[0] + 0.7]
     assert call_js(EDGES, [("signsShown", [scene["A"], *far, hover])]) == [True]
+
+
+def test_the_shared_edge_and_the_vertices_leave_their_signs_to_the_pointer():
+    """Review r291 02-2 (r242 02-7): on the shared edge the "0" digits stood beside the
+    owners' rings and letters, and "00" over the vertex dots. Those centres show their signs
+    only under the pointer; the table keeps fixed columns, the winding on a line of its own."""
+    from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
+
+    verts = [list(v) for v in DEFAULT_VERTICES]
+    (scene,) = call_js(EDGES, [("edgeScene", [verts, 16, 14])])
+    (quiet,) = call_js(EDGES, [("quietCentres", [scene, verts])])
+    shared = [[s["row"], s["col"]] for s in scene["shared"]]
+    assert shared and all(rc in quiet for rc in shared)
+    at_vertices = [[int(y), int(x)] for x, y in verts]  # each default vertex on a centre
+    assert all(rc in quiet for rc in at_vertices)
+    assert {tuple(rc) for rc in quiet} == {tuple(rc) for rc in shared + at_vertices}
+    calls = [("signsShown", [scene["A"], r, c, None, quiet]) for r, c in quiet]
+    calls += [("signsShown", [scene["A"], r, c, [c + 0.5, r + 0.5], quiet]) for r, c in quiet]
+    shown = call_js(EDGES, calls)
+    assert not any(shown[: len(quiet)]) and all(shown[len(quiet) :])
+    quad = [[2.5, 2.5], [9.5, 3.5], [4.5, 9.5], [2.5, 6.5]]  # B counter-clockwise
+    (ccw,) = call_js(EDGES, [("edgeScene", [quad, 14, 12])])
+    (table,) = call_js(EDGES, [("edgeTable", [ccw])])
+    assert table.startswith('<table><colgroup><col style="width:31%">')
+    assert "<b>B</b><br><small>counter-clockwise on screen: tested backwards" in table
 
 
 CRACKS = ("raster_rules", "explore_cracks")

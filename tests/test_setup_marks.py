@@ -195,7 +195,8 @@ def test_the_snap_step_keys_how_far_a_vertex_moved():
                 view.show_step(k, draw=False)
                 view.fig.canvas.draw()
                 for tag in view.setup_marks.coords if k == 0 else view.setup_marks.roles:
-                    inner = tag.get_bbox_patch().get_window_extent()
+                    # the positions are haloed, not boxed, in a view (review r291 02-3)
+                    inner = (tag.get_bbox_patch() or tag).get_window_extent()
                     assert box.x0 - 1 <= inner.x0 and inner.x1 <= box.x1 + 1, (k, tag.get_text())
         finally:
             plt.close(view.fig)
@@ -242,3 +243,29 @@ def test_the_player_header_does_not_speak_of_gpus():
         finally:
             p.close()
             plt.close("all")
+
+
+def test_the_half_plane_labels_stand_between_the_centre_rows():
+    """Review r291 02-3: the edge names' boxes and the snapped positions covered pixel-centre
+    dots in the player and the editor. They are haloed and placed on the grid's row
+    boundaries, clear of every centre."""
+    from teachraster.plotting.label_places import boxes_around, overlap_share
+
+    xy = [[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]]  # lesson 02's triangle
+    with plt.style.context("default"):
+        use_style("classroom")
+        fill = tr.rasterize(tr.Triangle(xy), 16, 16, method="halfplane", trace=True)
+        view = FillView(fill, step=0)
+        try:
+            view.fig.canvas.draw()
+            u, v = np.meshgrid(np.arange(16) + 0.5, np.arange(16) + 0.5)
+            dots = boxes_around(view.ax.transData.transform(np.column_stack([u.ravel(), v.ravel()])),
+                                (2.0, 2.0))  # fmt: skip
+            tags = [*view.triangle.edge_labels, *view.setup_marks.coords]
+            assert all(t.get_bbox_patch() is None for t in tags)
+            for tag in tags:
+                e = tag.get_window_extent()
+                share = overlap_share(np.array([[e.x0, e.y0, e.x1, e.y1]]), dots)
+                assert share[0] == 0, tag.get_text()
+        finally:
+            plt.close(view.fig)

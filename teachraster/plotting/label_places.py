@@ -245,3 +245,57 @@ def place_on_line(segment, half, *, frame, triangle, labels, dots, samples: int 
     cost = cost + COST["turn"] * np.hypot(*(cand - centre).T) / reach
     best = int(np.argmin(cost))
     return None if cost[best] >= CLASH else cand[best]
+
+
+#: How far from its edge's midpoint an edge label may go (pixels of the grid, each way)
+EDGE_LABEL_REACH = 3.0
+
+
+def place_edge_labels(mids, half, *, to_display, frame, triangle, dots) -> np.ndarray:
+    """Centres (display pixels, (3, 2)) for the labels of a triangle's three edges on a pixel
+    grid, each a box of half-size ``half`` (display pixels) within :data:`EDGE_LABEL_REACH`
+    grid pixels of its edge's midpoint ``mids`` (3, 2, grid coordinates), clear of the
+    ``dots`` (n, 4 boxes: the pixel centres and the vertex dots), the edges and the other
+    labels, outside the triangle (display, (3, 2)) where it can, and nearer its own edge than
+    the others (it names that one). The candidates sit on the grid's row boundaries (whole
+    y), where a box less than a pixel high covers no centre (review r291 02-3: "E31" hid row
+    8's centres), then between them.
+
+    Examples
+    --------
+    >>> tri = np.array([[1.0, 1.0], [9.0, 1.0], [1.0, 9.0]])
+    >>> mids = (tri + np.roll(tri, -1, axis=0)) / 2
+    >>> u, v = np.meshgrid(np.arange(10) + 0.5, np.arange(10) + 0.5)
+    >>> dots = boxes_around(np.column_stack([u.ravel(), v.ravel()]), (0.1, 0.1))
+    >>> c = place_edge_labels(mids, (0.4, 0.3), to_display=lambda p: np.asarray(p, float),
+    ...                       frame=(0, 0, 10, 10), triangle=tri, dots=dots)
+    >>> bool((overlap_share(boxes_around(c, (0.4, 0.3)), dots) == 0).all())
+    True
+    """
+    mids = np.asarray(mids, dtype=np.float64)
+    steps = np.arange(-EDGE_LABEL_REACH, EDGE_LABEL_REACH + 1e-9, 0.25)
+    edges = np.stack([triangle, np.roll(triangle, -1, axis=0)], axis=1)
+    grid_px = float(np.hypot(*(to_display([1.0, 0.0]) - to_display([0.0, 0.0])))) or 1.0
+    placed: list = []
+    for k, mid in enumerate(mids):
+        dx, dy = np.meshgrid(steps, steps)
+        cand = np.column_stack([mid[0] + dx.ravel(), mid[1] + dy.ravel()])
+        cand = np.vstack([cand, np.column_stack([cand[:, 0], np.round(cand[:, 1])])])
+        shown = np.asarray(to_display(cand), dtype=np.float64)
+        boxes = boxes_around(shown, half)
+        gap = np.stack([_to_segment(shown, a, b) for a, b in edges])  # (3, n)
+        astray = gap[k] > np.delete(gap, k, axis=0).min(axis=0)
+        far = np.hypot(*(cand - mid).T)
+        cost = (clutter(boxes, half, frame=frame, triangle=triangle, dots=dots)
+                + beside(boxes, boxes_around(placed, half)) + COST["astray"] * astray
+                + 2 * COST["inside"] * inside_share(boxes, triangle)
+                + COST["ring"] * far + COST["ring"] * gap[k] / grid_px)  # fmt: skip
+        placed.append(shown[int(np.argmin(cost))])
+    return np.array(placed)
+
+
+def _to_segment(points: np.ndarray, a, b) -> np.ndarray:
+    """Distance of each of the (n, 2) ``points`` from the segment a-b."""
+    d = np.asarray(b, dtype=np.float64) - a
+    t = np.clip(((points - a) @ d) / max(float(d @ d), 1e-12), 0.0, 1.0)
+    return np.hypot(*(points - (a + t[:, None] * d)).T)

@@ -41,7 +41,7 @@ from .common import (
     tint,
     two_colour,
 )
-from .label_places import boxes_around, place_vertex_labels
+from .label_places import boxes_around, place_edge_labels, place_vertex_labels
 from .style import COLORS, SIGNED_CMAP, VALUE_CMAP
 
 #: Above this many pixels along a side the grid lines would merge into grey: none are drawn.
@@ -349,6 +349,10 @@ class TriangleArtists(Artists):
     clear: bool = False  # vertex labels placed clear of the edges, dots and each other
     #: with ``clear``: the display boxes (3, 4) the vertex labels were given room for
     label_boxes: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
+    #: points (n, 2, data coordinates: the pixel centres of a grid) the edge labels keep
+    #: clear of, placed on the grid's row boundaries (:func:`place_edge_labels`); None: pushed
+    #: outwards from their edges' midpoints
+    keep_clear: np.ndarray | None = None
 
     def update(self, tri, edges=None) -> None:
         """Move everything to a new triangle (same artists)."""
@@ -375,12 +379,32 @@ class TriangleArtists(Artists):
             label.set_position(off)
             label.set_text(name)
         mids = np.array([(xy[a] + xy[b]) / 2 for a, b in edges])
-        for label, (a, b), p, off in zip(
-            self.edge_labels, edges, mids, _outward(mids, centre, fs(0.9), ax)
-        ):
+        offsets = _outward(mids, centre, fs(0.9), ax)
+        if self.keep_clear is not None and self.edge_labels:
+            offsets = self._edge_offsets(xy, mids)
+        for label, (a, b), p, off in zip(self.edge_labels, edges, mids, offsets):
             label.xy = tuple(p)
             label.set_position(off)
             label.set_text(edge_name(a, b))
+
+    def _edge_offsets(self, xy: np.ndarray, mids: np.ndarray) -> list:
+        """Offsets (points) of the edge labels from their edges' midpoints, each where its box
+        covers no pixel centre of ``keep_clear``, no vertex dot, edge or other label (review
+        r291 02-3: the boxes hid the centres the lesson is about)."""
+        ax = self.outline.axes
+        ax.get_xlim()  # brings autoscaled limits up to date before transData is read
+        scale = ax.figure.dpi / 72.0  # display pixels per point
+        size = self.edge_labels[0].get_fontsize() * scale
+        # three italic characters, in their padded box or haloed (the views)
+        boxed = self.edge_labels[0].get_bbox_patch() is not None
+        half = (1.3 * size, 0.62 * size) if boxed else (1.0 * size, 0.42 * size)
+        shown = ax.transData.transform
+        dot = (self.vertices.get_markersize() / 2 + 1.5) * scale
+        dots = np.vstack([boxes_around(shown(self.keep_clear), (0.15 * size, 0.15 * size)),
+                          boxes_around(shown(xy), (dot, dot)), self.label_boxes])  # fmt: skip
+        centres = place_edge_labels(mids, half, to_display=shown, frame=ax.bbox.extents,
+                                    triangle=shown(xy), dots=dots)  # fmt: skip
+        return [tuple((c - p) / scale) for c, p in zip(centres, shown(mids))]
 
     def _clear_offsets(self, xy: np.ndarray) -> list:
         """Offsets (points) of the vertex labels from their vertices, each where its box

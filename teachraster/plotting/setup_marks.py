@@ -141,13 +141,22 @@ class SetupArtists(Artists):
         # floated columns from its vertex (review r265 01-FIG3); it goes where it crosses none
         corners = ax.transData.transform(xy) / scale
         edges = [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
+        # the grid's row boundaries (whole y), in points: a tag centred on one covers no pixel
+        # centre when less than a pixel high (review r291 02-3: "(14.5, 6.25)" on row 6's)
+        rows = (
+            ax.transData.transform(
+                np.column_stack([np.zeros(trace.height + 1), np.arange(trace.height + 1)])
+            )[:, 1]
+            / scale
+        )
         for tag, label, text in zip(self.coords, labels, texts):
             at = ax.transData.transform(label.xy) / scale
             tag.xy = label.xy
             tag.set_text(text)
             tag.set_position(_role_offset(label, text, at, box.extents / scale,
                                           label.xy[0] < centre[0], italic=False,
-                                          edges=edges, tag_size=tag.get_fontsize()))  # fmt: skip
+                                          edges=edges, tag_size=tag.get_fontsize(),
+                                          rows=rows))  # fmt: skip
 
     def show(self, kind: str | None, sorted_: bool) -> None:
         """Show what the step of ``kind`` found: the snapped positions at ``"snap"``, the
@@ -168,6 +177,12 @@ class SetupArtists(Artists):
             tag.set_visible(roles)
 
 
+def _clear_of(offset, inside, edges, at, half_w: float, half_h: float) -> bool:
+    """A tag at ``offset`` from ``at`` lies inside the Axes and crosses no edge."""
+    centre = (at[0] + offset[0], at[1] + offset[1])
+    return inside(offset) and not _crosses(edges, centre, half_w + 2.0, half_h)
+
+
 def _crosses(edges, centre, half_w: float, half_h: float) -> bool:
     """Whether a segment of ``edges`` (pairs of points) enters the box of half sizes
     ``half_w``, ``half_h`` around ``centre`` (all in points), sampled finely enough for a box
@@ -184,8 +199,8 @@ def _crosses(edges, centre, half_w: float, half_h: float) -> bool:
 
 
 def _role_offset(label, role: str, at, extents, left: bool,
-                 italic: bool = True, edges=None,
-                 tag_size: float | None = None) -> tuple[float, float]:  # fmt: skip
+                 italic: bool = True, edges=None, tag_size: float | None = None,
+                 rows=None) -> tuple[float, float]:  # fmt: skip
     """Where a tag (a role, a position) goes (points from its vertex): one line beyond the
     vertex label, the way the label is pushed out; where that leaves the Axes (a vertex at
     the grid's top or bottom: it ran over the tick labels or the frame), beside the label
@@ -195,7 +210,9 @@ def _role_offset(label, role: str, at, extents, left: bool,
     (the triangle's, in points), the first of these places, then of a few more near the vertex
     (beside it on its own row, above or below its label, along its angle's bisector), the
     nearest to the vertex whose box crosses no edge; ``tag_size`` is the tag's font size
-    (default: the label's)."""
+    (default: the label's). With ``rows`` (the y, in points, of the grid's row boundaries),
+    each place moved onto the nearest boundary is tried first: there a tag less than a pixel
+    high covers none of the pixel centres."""
     dx, dy = label.get_position()  # the label's offset from its vertex, in points
     size = label.get_fontsize()
     own = size if tag_size is None else tag_size
@@ -230,8 +247,13 @@ def _role_offset(label, role: str, at, extents, left: bool,
             halfway = halfway / float(np.hypot(*halfway))
             extra += [tuple(sign * (half_w + 0.5 * j * size) * halfway)
                       for j in range(1, 16) for sign in (-1.0, 1.0)]  # fmt: skip
-        clear = [offset for offset in places + extra if inside(offset) and not _crosses(
-            edges, (at[0] + offset[0], at[1] + offset[1]), half_w + 2.0, half_h)]  # fmt: skip
+        tried = places + extra
+        if rows is not None and len(rows):
+            rows = np.asarray(rows, dtype=np.float64)
+            snapped = [(x, float(rows[np.argmin(np.abs(rows - at[1] - y))] - at[1]))
+                       for x, y in tried]  # fmt: skip
+            tried = [o for o in snapped if _clear_of(o, inside, edges, at, half_w, half_h)] or tried
+        clear = [o for o in tried if _clear_of(o, inside, edges, at, half_w, half_h)]
         if clear:  # the nearest to its vertex: a tag read with its vertex, not columns off
             return min(clear, key=lambda offset: float(np.hypot(*offset)))
     for offset in places[:3]:

@@ -265,6 +265,9 @@ class FillView:
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
         self.triangle = plot_triangle(ax, trace, edge_labels=True, inside=True)  # the key beside
+        if centres:  # the edge names between the centre dots, not over them (review r291 02-3)
+            u, v = np.meshgrid(np.arange(W) + 0.5, np.arange(H) + 0.5)
+            self.triangle.keep_clear = np.column_stack([u.ravel(), v.ravel()])
         # the vertex names without their white boxes, a white halo round the letters instead:
         # v1's box blanked row 1's centre dots, in a lesson about which centres are covered
         # (review r33, lesson 00). The vertex dots stay above (6.2), as in plot_triangle.
@@ -276,6 +279,11 @@ class FillView:
         # what the set-up steps find: the winding, the raster lines, the roles (review r229
         # 01-W1: steps 0-3 of a span fill drew one picture, only their captions differed)
         self.setup_marks = plot_setup_marks(ax, trace, self.triangle.labels)
+        # the edge names and the snapped positions haloed, not boxed, as the vertex names: a
+        # box reached over the centre dots beside it (review r291 02-3)
+        for label in [*self.triangle.edge_labels, *self.setup_marks.coords]:
+            label.set_bbox(None)
+            label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")])
         # An explicit title position: automatic placement (above the top ticks) costs time
         # at every draw.
         self.header = ax.set_title("", y=1.0, pad=fs(3.2), loc="left")

@@ -278,6 +278,11 @@ class PredictPixels(FigurePrediction):
     draw : callable, optional
         ``draw(ax)`` adds the lesson's artists (a triangle, a line) to the grid's Axes,
         whose data coordinates are pixels (x right, y down).
+    asked : callable, optional
+        ``asked(ax)`` adds marks that belong to the question only (rings round the cells it
+        asks about): shown until Check, then left out, so that the revealed figure draws only
+        what its key names (right, missed, marked). A ring left on a cell rightly unmarked read
+        as "missed" beside the key's swatch (review r291 02-1).
     explain : str
         Shown with the verdict (HTML).
     centres : bool
@@ -315,7 +320,7 @@ class PredictPixels(FigurePrediction):
     (True, {'right': 3, 'extra': 0, 'missed': 0, 'total': 3})
     """
 
-    def __init__(self, question: str, answer, *, draw=None, explain: str = "",
+    def __init__(self, question: str, answer, *, draw=None, asked=None, explain: str = "",
                  centres: bool = True, side: float = 5.0, style: str | None = "classroom",
                  cell: str = "pixel", picked: str = "lit",
                  none: str | None = None) -> None:  # fmt: skip
@@ -330,7 +335,7 @@ class PredictPixels(FigurePrediction):
         height, width = mask.shape
         if width * height > 64 * 64:
             raise ValueError(f"answer: at most 64 x 64 pixels to click, got {width}x{height}")
-        draw = _check_draw(draw)
+        draw, asked = _check_draw(draw), _check_draw(asked)
 
         def axes_for(fig):
             from ..plotting import plot_pixel_centres, plot_pixel_grid
@@ -341,14 +346,18 @@ class PredictPixels(FigurePrediction):
                 plot_pixel_centres(ax, width, height)
             return ax
 
-        def drawn(ax):
-            if draw is not None:
-                draw(ax)
+        def drawn(ax, with_asked=True):
+            for add in (draw, asked if with_asked else None):
+                if add is not None:
+                    add(ax)
             # The whole grid, whatever the drawing did to the limits (a line or a fill
             # autoscales them, and cut off the last row).
             ax.set(xlim=(0, width), ylim=(height, 0))
 
         picture = figure_picture(drawn, axes_for, (side, side), style)
+        if asked is not None:  # the same Axes and transform, without the question's marks
+            answered = figure_picture(lambda ax: drawn(ax, False), axes_for, (side, side), style)
+            picture["pngAnswered"] = answered["png"]
         self.answer = mask.copy()
         # the "none" choice is HTML, as the question is (the page shows it as such)
         offered = {} if none is None else {"noneLabel": none}

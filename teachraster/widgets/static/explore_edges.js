@@ -61,7 +61,8 @@ export function edgeLabels(setup, names) {
 
 const EDGES_CSS = `
 .tr-edges-legend span { display: inline-block; margin-right: 12px; }
-.tr-edges-table td { padding: 1px 6px; }
+.tr-edges-table table { table-layout: fixed; width: 100%; max-width: 860px; }
+.tr-edges-table td { padding: 1px 6px; vertical-align: top; text-align: left; }
 `;
 
 function mount(el, data, host) {
@@ -72,14 +73,18 @@ function mount(el, data, host) {
     ...host.state() };
   const root = frame(el, data.title,
     "Drag a vertex (or focus the picture, press 1–4 to pick one and move it with the arrow " +
-    "keys). At the pixel centres within a pixel of the chosen triangle's edges, where the " +
+    "keys: a press moves it ¼ px with the snap on, 1/256 px with it off, 1 px with Shift). " +
+    "At the pixel centres within a pixel of the chosen triangle's edges, where the " +
     "signs change, and at the centre under the pointer: the signs of E12, E23, E31, in " +
     "their edges' colours; tint a half-plane to see where its E keeps one sign (its sign " +
     "alone is then drawn at every centre, large). A centre " +
-    "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it.");
+    "exactly on the shared edge v2–v3 is ringed in the colour of the triangle that owns it " +
+    "(point at it, or at a vertex's centre, for its signs).");
   const m = { left: 30, top: 26 };
-  const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 22, maxCell: 44,
-    fitW: 680, fitH: 600, margin: m, pad: 12,
+  // cells of 50 px on lesson 02's 16 x 14 grid (42 drew the signs about 10 px high at a
+  // 1400-px page, review r291 02-2)
+  const { canvas, ctx, cell, toPx, toGrid } = pixelCanvas(W, H, { minCell: 22, maxCell: 50,
+    fitW: 800, fitH: 700, margin: m, pad: 12,
     label: "two triangles over the pixel grid with the edge-function signs at every centre" });
   const readout = element("div", { class: "tr-x-readout", "aria-live": "polite" });
   const table = element("div", { class: "tr-edges-table" });
@@ -100,11 +105,12 @@ function mount(el, data, host) {
     // then the owners' badges and the vertices' dots and names
     drawRings(ctx, scene, cell, m);
     drawTriangles(ctx, state, toPx, data.colors);
+    const quiet = quietCentres(scene, state.vertices);
     drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover,
-      state.vertices.map(toPx));
+      state.vertices.map(toPx), quiet);
     drawBadges(ctx, scene, cell, m, state.vertices.map(toPx));
     drawVertices(ctx, state, toPx);
-    drawEdgeLabels(ctx, chosen, state, toPx, W, H);
+    drawEdgeLabels(ctx, chosen, state, toPx, W, H, quiet);
     if (ui.relabel) ui.relabel(chosen); // a drag can reverse the winding, and so the names
     table.innerHTML = edgeTable(scene);
     readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
@@ -382,17 +388,36 @@ function segmentDistance(a, b, p) {
 
 // Are the three signs drawn at the centre of (row, col)? Within SIGNS_NEAR px of an edge of
 // `setup` (the chosen triangle), or the centre under the pointer `hover` (px, or null).
-export function signsShown(setup, row, col, hover = null) {
+export function signsShown(setup, row, col, hover = null, quiet = []) {
   if (hover && Math.floor(hover[0]) === col && Math.floor(hover[1]) === row) return true;
+  if (quiet.some(([r, c]) => r === row && c === col)) return false;
   const u = setup.unit;
   const v = setup.given.map((q) => q.map((t) => t / u));
   const p = [col + 0.5, row + 0.5];
   return [0, 1, 2].some((k) => segmentDistance(v[k], v[(k + 1) % 3], p) <= SIGNS_NEAR);
 }
 
+// The centres whose three signs are left to the pointer (signsShown's `quiet`): those on the
+// shared edge, whose ring and owner's letter say what the rule decided, and those within
+// QUIET_NEAR px of a vertex (`vertices`, grid px), where the dot and its name stand. Their
+// "0" digits beside the rings and badges, and "00" over the vertex dots, collided (review
+// r291 02-2, r242 02-7); hovering a centre still shows its three signs.
+export const QUIET_NEAR = 0.75;
+export function quietCentres(scene, vertices) {
+  const quiet = scene.shared.map(({ row, col }) => [row, col]);
+  for (const [x, y] of vertices) {
+    for (let r = Math.floor(y - QUIET_NEAR); r <= Math.floor(y + QUIET_NEAR); r++) {
+      for (let c = Math.floor(x - QUIET_NEAR); c <= Math.floor(x + QUIET_NEAR); c++) {
+        if (Math.hypot(c + 0.5 - x, r + 0.5 - y) <= QUIET_NEAR) quiet.push([r, c]);
+      }
+    }
+  }
+  return quiet;
+}
+
 // three sign glyphs per centre near the edges (signsShown): E12, E23, E31 of the chosen
 // triangle, in their colours; with one half-plane tinted, its sign at every centre
-function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null, dots = []) {
+function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null, dots = [], quiet = []) {
   const logical = ctx.canvas.logical;
   const three = signSize(cell, logical ? logical.w : ctx.canvas.width);
   // one half-plane tinted: its sign alone, large (review r93 02-4: read on a projector)
@@ -401,7 +426,7 @@ function drawSigns(ctx, setup, W, H, cell, m, only = -1, hover = null, dots = []
   const gap = cell * SIGN_GAP;
   for (let r = 0; r < H; r++) {
     for (let c = 0; c < W; c++) {
-      if (only < 0 && !signsShown(setup, r, c, hover)) continue;
+      if (only < 0 && !signsShown(setup, r, c, hover, quiet)) continue;
       const e = givenValues(setup, r, c);
       const cx = m.left + (c + 0.5) * cell;
       let cy = m.top + (r + 0.5) * cell + (only < 0 ? cell * 0.12 : size * 0.25);
@@ -521,7 +546,7 @@ function drawTriangles(ctx, state, toPx, colors) {
 // each vertex's dot and name (above right of it), over the signs, which belowDot keeps off
 function drawVertices(ctx, state, toPx) {
   const v = state.vertices.map(toPx);
-  ctx.font = `bold ${textPx(ctx, 15)}px sans-serif`;
+  ctx.font = `bold ${textPx(ctx, 17)}px sans-serif`;
   v.forEach((p, i) => {
     ctx.fillStyle = "#000";
     ctx.beginPath();
@@ -537,20 +562,22 @@ function drawVertices(ctx, state, toPx) {
 }
 
 // each edge of the chosen triangle labelled with its kind and bias, outside the triangle
-function drawEdgeLabels(ctx, setup, state, toPx, W, H) {
+function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = []) {
   if (setup.area2 === 0) return;
   const idx = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
   const v = idx.map((i) => toPx(state.vertices[i]));
   const centroid = [(v[0][0] + v[1][0] + v[2][0]) / 3, (v[0][1] + v[1][1] + v[2][1]) / 3];
   const labels = edgeLabels(setup, EDGE_NAMES[state.chosen]);
-  const size = textPx(ctx, 13);
+  const size = textPx(ctx, 15);
   const cell = toPx([1, 0])[0] - toPx([0, 0])[0];
   // the centres whose three signs are drawn (with one half-plane tinted, every centre shows
   // one sign and no place is free), and how far a triplet reaches from its centre
   const signs = [];
   if (!["E12", "E23", "E31"].includes(state.tint)) {
     for (let r = 0; r < H; r++) {
-      for (let c = 0; c < W; c++) if (signsShown(setup, r, c)) signs.push(toPx([c + 0.5, r + 0.5]));
+      for (let c = 0; c < W; c++) {
+        if (signsShown(setup, r, c, null, quiet)) signs.push(toPx([c + 0.5, r + 0.5]));
+      }
     }
   }
   const reach = [cell * SIGN_GAP + cell * SIGN_SCALE / 2, cell * 0.3];
@@ -639,17 +666,20 @@ export function walkedName(label) {
 export function edgeTable(scene) {
   const rows = [["A", scene.A, ["E12 (v1→v2)", "E23 (v2→v3)", "E31 (v3→v1)"]],
     ["B", scene.B, ["E32 (v3→v2)", "E24 (v2→v4)", "E43 (v4→v3)"]]].map(([name, s, names]) => {
-    if (s.area2 === 0) return `<tr><td>${name}</td><td colspan=3>zero area: covers nothing</td></tr>`;
+    if (s.area2 === 0) return `<tr><td><b>${name}</b></td><td colspan=3>zero area: covers nothing</td></tr>`;
     // the name and the kind each on one line: "right, bias / −1" wrapped (review r231 02-7)
     const cells = edgeLabels(s, names).map((e, k) =>
-      `<td style="color:${name === "A" ? EDGE_HUES[k] : "#333"}">` +
+      `<td style="text-align:left;color:${name === "A" ? EDGE_HUES[k] : "#333"}">` +
       `<b style="white-space:nowrap">${walkedName(e)}</b> <span style="white-space:nowrap">` +
       `${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}</span></td>`).join("");
+    // the winding on a line of its own in a column of fixed width: the counter-clockwise
+    // sentence wrapped the row and shifted its columns (review r291 02-2)
     const wind = s.originalArea2 > 0 ? "clockwise on screen"
-      : "counter-clockwise on screen: tested on its edges walked backwards";
-    return `<tr><td><b>${name}</b>, ${wind}</td>${cells}</tr>`;
+      : "counter-clockwise on screen: tested backwards";
+    return `<tr><td style="text-align:left"><b>${name}</b><br><small>${wind}</small></td>${cells}</tr>`;
   });
-  return `<table>${rows.join("")}</table>`;
+  const cols = `<colgroup><col style="width:31%"><col span="3" style="width:23%"></colgroup>`;
+  return `<table>${cols}${rows.join("")}</table>`;
 }
 
 // An edge's value as the readouts give it: under its name as given, and for a triangle walked

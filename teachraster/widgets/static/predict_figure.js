@@ -323,10 +323,17 @@ function revealStart(host, data, state, byClick, sent, waiting) {
   return known;
 }
 
-// the figure shows the answer: repainted, and the picture kept for the saved notebook
-function revealOnFigure(host, canvas, paint) {
+// the figure shows the answer: repainted, and the picture kept for the saved notebook. A
+// picture drawn without the question's own marks (data.pngAnswered: rings round the cells
+// asked about) replaces the question's first, so that the figure shows only what the key
+// names (review r291 02-1: rings left on cells rightly unmarked read as "missed")
+function revealOnFigure(host, canvas, paint, data = {}) {
   paint.request();
-  host.picture(overlaid(canvas));
+  const img = canvas.parentElement.querySelector("img");
+  const answered = data.pngAnswered && `data:image/png;base64,${data.pngAnswered}`;
+  if (!answered || img.src === answered) return host.picture(overlaid(canvas));
+  img.addEventListener("load", () => host.picture(overlaid(canvas)), { once: true });
+  img.src = answered;
 }
 
 function mountPixels(root, data, host) {
@@ -414,7 +421,7 @@ function mountPixels(root, data, host) {
     show(v.correct, `You marked ${state.given.length} ${cells(state.given.length)}: ` +
       `${v.right} right, ${v.extra} too many, ${v.missed} missed. The answer: <b>${v.total}</b> ` +
       `${cells(v.total)} ${picked}.` + pixelLegend(), known);
-    revealOnFigure(host, canvas, paint);
+    revealOnFigure(host, canvas, paint, data);
   }
 
   function cellAt(p) {

@@ -1,0 +1,82 @@
+"""Lesson 02, review r291: each test fails on the lesson before the fix.
+
+FIG1: after Check the pixels question draws only what its key names (the question's rings
+left out); P6: q_edge23 asks an edge the text does not spell out; M8: zero-area triangles,
+said and printed.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import json
+import re
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+from notebook_runs import lesson  # noqa: E402
+
+import teachraster as tr  # noqa: E402
+from teachraster.widgets import PredictPixels  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+NOTEBOOK = ROOT / "notebooks" / "02_half_planes.ipynb"
+
+
+def _texts() -> list[str]:
+    return ["".join(c["source"]) for c in json.loads(NOTEBOOK.read_text())["cells"]]
+
+
+def _rgba(png: str) -> np.ndarray:
+    from matplotlib.image import imread
+
+    return imread(io.BytesIO(base64.b64decode(png)), format="png")
+
+
+def test_fig1_the_question_marks_are_left_out_of_the_revealed_figure():
+    """The pink rings round the asked centres stayed on after Check, beside the key's pink
+    "missed": 13 centres rightly left unmarked read as misses. ``asked=`` draws them on the
+    question's picture only; the page swaps in the picture without them at the reveal."""
+    truth = np.eye(4, dtype=bool)
+
+    def ring(ax):
+        ax.plot([0.5, 3.5], [3.5, 0.5], "o", ms=13, mfc="none", mec="m", mew=2)
+
+    plain = PredictPixels("Which?", answer=truth)
+    assert "pngAnswered" not in plain.data  # no question marks: one picture, as before
+    q = PredictPixels("Which?", answer=truth, asked=ring)
+    before, after = _rgba(q.data["png"]), _rgba(q.data["pngAnswered"])
+    assert before.shape == after.shape and not np.array_equal(before, after)
+    assert np.array_equal(after, _rgba(plain.data["png"]))  # the same picture, rings aside
+    js = (ROOT / "teachraster" / "widgets" / "static" / "predict_figure.js").read_text()
+    assert "data.pngAnswered" in js and "revealOnFigure(host, canvas, paint, data)" in js
+    ask = next(t for t in _texts() if "q_square = PredictPixels(" in t)
+    assert "asked=ring_sides" in ask and "def ring_sides(ax)" in ask
+    draw = ask.split("def draw_square(ax):")[1].split("def ring_sides")[0]
+    assert "on_sides" not in draw  # the rings only in the question's marks
+    assert "lesson 00's conventions and lesson 01 §4" in ask  # r291 02-7: the rule's source
+
+
+def test_p6_q_edge23_is_not_quite_level():
+    """E23 was exactly horizontal with the triangle above: the bottom edge cell 20's text
+    names. Now v3 is a quarter pixel above v2: a left edge, bias 0, reasoned from the side
+    the inside lies on."""
+    ns = lesson("02_half_planes")
+    assert ns.wedge_answers[1] == "left, bias 0"
+    assert tr.Triangle(ns.wedge).signed_area > 0
+    assert "rises by 0.25 px" in ns.edge_why[1].replace("</i>", "")
+    ask = next(t for t in _texts() if "edge_questions = [" in t)
+    assert "the edge is not quite level" in ask
+
+
+def test_m8_zero_area_triangles_are_said_and_printed():
+    ns = lesson("02_half_planes")
+    assert ns.collinear.signed_area == 0 and ns.collinear.front_facing is False
+    assert ns.flat_px == {None: 0, "back": 0}
+    md = re.sub(r"\s+", " ", next(t for t in _texts() if t.startswith("Bail-out saves")))
+    assert "Zero area geometry is considered back facing" in md and "§15.11.1" in md
+    assert "draws nothing for it, culled or not" in md
