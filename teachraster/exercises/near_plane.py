@@ -168,14 +168,21 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             "bits - 1": solve(1.0 / (2 ** (bits - 1) - 1), far),
             "z not squared": step * far * z / (gap * far + step * z),
             "z and gap swapped": step * far * gap * gap / (z * far + step * gap * gap),
+            # r295 H-2..H-6: typical slips that were told only the symptom or the rule
+            "xor": solve(1.0 / ((2 ^ bits) - 1), far),
+            "sign slip": step * far * z * z / (gap * far - step * z * z),
+            "negated": -solve(step, far),
+            **{f"{b} bits": solve(1.0 / (2**b - 1), far) for b in (16, 24) if b != bits},
         }
 
 
 MISTAKES = {
     "2^bits": "you took the buffer's step as 1/2^bits; a unorm buffer's largest value is "
     "2^bits − 1, which stores depth 1, so the step is 1/(2^bits − 1)",
-    "ndc": "you took a step of 2/(2^bits − 1), as if the buffer stored NDC depth in [−1, 1]: "
-    "it stores window depth in [0, 1]",
+    # r295 M-1: half the gap gives the very same n (2·step/gap = step/(gap/2))
+    "ndc": "you took a step of 2/(2^bits − 1), as if the buffer stored NDC depth in [−1, 1] "
+    "(or, the same n, you halved the gap): it stores window depth in [0, 1], one step is "
+    "1/(2^bits − 1), and the surfaces are the whole gap apart",
     "infinite far": "you dropped the factor (f − n)/f: your n is right only for a far plane "
     "at infinity; solve step (f − n) z² / (f n) ≤ gap for n exactly",
     "linear": "you used linear depth, (z − n)/(f − n), whose resolution is the same "
@@ -188,33 +195,50 @@ MISTAKES = {
     "(for f ≫ n), so n grows like z², not like z",
     "z and gap swapped": "you swapped z and gap: z is the distance of the surfaces, gap "
     "their separation (the arguments are safe_near(z, gap, far, bits))",
+    "xor": "`^` is exclusive or in Python (2 ^ 16 = 18, 2 ^ 24 = 26), not a power: the power "
+    "is 2**bits, so the step is 1/(2**bits − 1)",
+    "sign slip": "a sign slipped as you solved for n: gathering the terms in n gives "
+    "gap·f + step·z² beside n, a plus, where yours has gap·f − step·z²",
+    "negated": "your n has the right size and the wrong sign: a near plane lies in front of "
+    "the eye, n > 0",
+    **{
+        f"{b} bits": f"your n is the one for a {b}-bit buffer, whatever `bits` is: the step is "
+        "1/(2^bits − 1) with the case's own bits"
+        for b in (16, 24)
+    },
 }
 
 
 def explain_near(args, expected, got) -> str:
     """The case, the smallest near plane and yours, with the resolution yours gives."""
     z, gap, far, bits = args
-    lo = _bounds(float(z), float(gap), float(far), int(bits))[0]
+    lo, hi = _bounds(float(z), float(gap), float(far), int(bits))
     head = (f"at z = {num(z)} with far = {num(far)} and {bits} bits, surfaces {num(gap)} apart "
-            f"need n ≥ {num(expected, got)} (to first order; {num(lo, got)} counting whole "
-            f"steps); yours is {num(got, expected)}")  # fmt: skip
+            f"need n ≥ {_num(expected, got, lo)} (to first order; {_num(lo, got, expected)} "
+            f"counting whole steps); yours is {num(got, expected)}")  # fmt: skip
     if not np.isfinite(got) or not 0 < got < z:
         return head
     yours = resolution(z, got, far, bits)
-    lo, hi = _bounds(float(z), float(gap), float(far), int(bits))
     if got < lo:
         steps = steps_apart(z - gap, z, got, far, bits)
-        verdict = (f"too coarse: the two surfaces' window depths lie {num(steps)} of a step "
-                   "apart, so both can round to one stored value and z-fight")  # fmt: skip
+        # r295 R-2: 0.9995 of a step was printed "1 of a step" beside "too coarse"
+        verdict = (f"too coarse: the two surfaces' window depths lie {num(steps, 1.0)} of a "
+                   "step apart, so both can round to one stored value and z-fight")  # fmt: skip
     elif got > hi:
         # r84 05-1: "any near plane from lo to hi tells them apart" read as if yours did not
         verdict = (f"finer than needed: yours tells them apart too, but lies further out than "
                    f"the smallest near plane that does, losing precision elsewhere; the check "
-                   f"accepts {num(lo, got)} to {num(hi, got)}, the smallest by any reading of "
-                   "whole steps up to 1 % further out")  # fmt: skip
+                   f"accepts {_num(lo, got, hi)} to {_num(hi, got, lo)}, the smallest by any "
+                   "reading of whole steps up to 1 % further out")  # fmt: skip
     else:
         verdict = "right"
     return f"{head}, where the buffer resolves Δz = {num(yours)} ({verdict})"
+
+
+def _num(x: float, *others: float) -> str:
+    """``x`` with the digits that tell it from each of ``others`` (r295 R-1: bounds 0.00275
+    and 0.00339 were both printed "0.003", told only from the student's 8)."""
+    return max((num(x, o) for o in others), key=len)
 
 
 def _rule(args, expected, got) -> str:
@@ -225,8 +249,10 @@ def _rule(args, expected, got) -> str:
 
 
 def _out_of_range(args, expected, got) -> bool:
+    """Finite and outside (0, z): NaN and ±inf are told as such (r295 H-1: NaN was told
+    only "0 < n < z")."""
     z = args[0]
-    return not np.isfinite(got) or not 0 < got < z
+    return bool(np.isfinite(got)) and not 0 < got < z
 
 
 RANGE = Mistake("range", ": a near plane lies between the eye and the surfaces, 0 < n < z",
@@ -247,10 +273,32 @@ def draw_near(ax, case, got):
     artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
     artists.append(ax.axvline(expected, color="#2b7bba",
                               label=f"smallest n (expected) {num(expected, got)}"))  # fmt: skip
+    # r295 S-1: the band the check accepts, which "finer than needed" speaks of
+    first, last = _bounds(float(z), float(gap), float(far), int(bits))
+    artists.append(
+        ax.axvspan(
+            first,
+            last,
+            color="#d9ecd9",
+            lw=0,
+            zorder=0,
+            label=f"accepted {_num(first, last)} to {_num(last, first)}",
+        )
+    )
     if shown:
         colour = "#7fbf7f" if same_near(got, expected, (z, gap, far, bits)) else "#d7301f"
         artists.append(ax.axvline(got, color=colour, linestyle="--",
                                   label=f"your n {num(got, expected)}"))  # fmt: skip
+    elif got is not None:  # r295 FIG-2: a NaN or out-of-range answer was not in the figure
+        why = "not a number" if np.isnan(got) else f"outside 0 < n < {num(z)}"
+        artists += ax.plot([], [], " ", label=f"your n {num(got)}: not drawn, {why}")
+    ax.set_xlim(lo, hi)
+    if hi / lo < 10:  # r295 FIG-1: within a decade every minor tick was labelled, overlapping
+        from matplotlib.ticker import FuncFormatter, MaxNLocator, NullLocator
+
+        ax.xaxis.set_major_locator(MaxNLocator(4))
+        ax.xaxis.set_minor_locator(NullLocator())
+        ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.3g}"))
     ax.set_xlabel("near plane n")
     ax.set_ylabel("depth resolution Δz")
     artists.append(ax.legend(fontsize="x-small"))

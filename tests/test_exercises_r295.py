@@ -1,0 +1,132 @@
+"""r295 (exercise 05, ``safe_near``): six typical slips were told only the symptom or the rule,
+one was named as another, two printed numbers hid what they meant, and the report's figure
+overlapped its tick labels.
+
+H-1: NaN was told "a near plane lies between the eye and the surfaces, 0 < n < z", never
+NaN. H-2..H-6: ``^`` for the power, a sign slipped solving for n, the bits ignored (16 or 24
+always), a negated n. M-1: half the gap (the same n as NDC's step) was told only "NDC".
+R-1: the accepted bounds 0.00275 and 0.00339 both printed "0.003"; R-2: 0.9995 of a step
+printed "1 of a step" beside "too coarse". FIG-1/FIG-2/S-1: the report's figure.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import reasoning_solutions as sol
+
+from teachraster import exercises as ex
+from teachraster.exercises.near_plane import draw_near, explain_near, near_cases
+
+
+def _first(fn):
+    report = ex.check("safe_near", fn, budget=60)
+    assert not report.passed, "a wrong variant passes"
+    assert all(f.kind for f in report.failures), "every failure has a kind"
+    return report.failures[0]
+
+
+def _step(bits, scale=1.0):
+    return scale / (2**bits - 1)
+
+
+def _solve(step, z, gap, far):
+    return step * far * z * z / (gap * far + step * z * z)
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [
+        lambda z, g, f, b: math.nan,  # one object: told as a constant NaN
+        lambda z, g, f, b: float("nan"),  # a new NaN each call: was told "0 < n < z"
+        lambda z, g, f, b: math.nan if b == 24 else sol.safe_near(z, g, f, b),
+    ],
+    ids=["math.nan always", "a fresh NaN always", "on 24 bits"],
+)
+def test_nan_is_told_as_nan_not_as_out_of_range(fn):
+    first = _first(fn)
+    assert first.kind == "nan", first.explanation
+    assert "holds NaN" in first.explanation and "0 < n < z" not in first.explanation
+
+
+SLIPS = {
+    "xor": (lambda z, g, f, b: _solve(1 / ((2 ^ b) - 1), z, g, f), "exclusive or"),
+    "sign slip": (
+        lambda z, g, f, b: _step(b) * f * z * z / (g * f - _step(b) * z * z),
+        "a sign slipped",
+    ),
+    "negated": (lambda z, g, f, b: -sol.safe_near(z, g, f, b), "wrong sign"),
+    "24 bits": (lambda z, g, f, b: sol.safe_near(z, g, f, 24), "24-bit buffer, whatever"),
+    "16 bits": (lambda z, g, f, b: sol.safe_near(z, g, f, 16), "16-bit buffer, whatever"),
+}
+
+
+@pytest.mark.parametrize("kind", list(SLIPS))
+def test_a_typical_slip_is_named_first(kind):
+    fn, words = SLIPS[kind]
+    first = _first(fn)
+    assert first.kind == kind, first.explanation
+    assert words in first.explanation, first.explanation
+    assert "0 < n < z" not in first.explanation
+
+
+def test_half_the_gap_is_named_beside_ndc():
+    """M-1: gap/2 gives the very n of a 2/(2^bits − 1) step: both readings are said."""
+    first = _first(lambda z, g, f, b: sol.safe_near(z, g / 2, f, b))
+    assert first.kind == "ndc", first.explanation
+    assert "NDC" in first.explanation and "halved the gap" in first.explanation
+
+
+def _case(args):
+    return next(c for c in near_cases() if c[1] == args)
+
+
+def test_the_accepted_bounds_are_printed_apart():
+    """R-1: told from each other, not only from the student's 8."""
+    _, args, expected = _case((20.0, 2.0, 25.0, 16))
+    words = explain_near(args, expected, 8.0)
+    accepts = words.split("the check accepts ", 1)[1].split(",", 1)[0]
+    low, high = accepts.split(" to ")
+    assert low != high and float(low) < expected < float(high), accepts
+    need = words.split("need n ≥ ", 1)[1].split(";", 1)[0]
+    first_order, steps = need.split(" (to first order")[0], words.split("; ", 1)[1].split(" ")[0]
+    assert first_order != steps, words
+
+
+def test_less_than_one_step_is_not_printed_as_one():
+    """R-2: 0.9995 of a step beside "too coarse"."""
+    _, args, expected = _case((300.0, 0.005, 1000.0, 24))
+    words = explain_near(args, expected, float(np.float16(expected)))
+    assert "too coarse" in words, words
+    apart = words.split("lie ", 1)[1].split(" of a step", 1)[0]
+    assert float(apart) < 1 and apart != "1", words
+
+
+def test_the_figure_labels_few_ticks_draws_the_band_and_says_a_nan():
+    """FIG-1: within a decade every minor tick was labelled, overlapping; S-1: the accepted
+    band; FIG-2: a NaN answer appears in the key."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    case = near_cases()[0]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    draw_near(ax, case, case[2] * 1.001)
+    fig.canvas.draw()
+    labels = [t for t in ax.get_xticklabels(minor=True) + ax.get_xticklabels() if t.get_text()]
+    lo, hi = ax.get_xlim()
+    shown = [t for t in labels if lo <= t.get_position()[0] <= hi]
+    assert 2 <= len(shown) <= 5, [t.get_text() for t in shown]
+    boxes = sorted((t.get_window_extent() for t in shown), key=lambda b: b.x0)
+    assert all(a.x1 < b.x0 for a, b in zip(boxes, boxes[1:])), "tick labels overlap"
+    key = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any(t.startswith("accepted ") for t in key), key
+    plt.close(fig)
+    fig, ax = plt.subplots()
+    draw_near(ax, case, math.nan)
+    key = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any("your n nan" in t and "not a number" in t for t in key), key
+    plt.close(fig)
