@@ -599,7 +599,7 @@ def _brightest(colours, ids, background):
 
 
 def _mean_texel(texture, uv, wrap):
-    """A bilinear no mistake gives: the mean of the texture."""
+    """The mean of the texture (itself a named mistake since r286; squared, none is)."""
     return np.asarray(texture, float).mean(axis=(0, 1))
 
 
@@ -638,7 +638,8 @@ def _clip_from_end(v):
      ("resolve", _brightest, lambda c, i, b: _brightest(c, i, b) / 2, "(S − k)·background"),
      ("resolve_srgb", _brightest, lambda c, i, b: _brightest(c, i, b) / 2,
       "linear_to_srgb((Σ"),
-     ("bilinear", _mean_texel, lambda t, uv, w: _mean_texel(t, uv, w) / 2, "u·W − ½"),
+     ("bilinear", lambda t, uv, w: _mean_texel(t, uv, w) ** 2,
+          lambda t, uv, w: _mean_texel(t, uv, w) ** 2 / 2, "u·W − ½"),
      ("trilinear", _ends, lambda p, uv, lod, wrap="repeat": _ends(p, uv, lod, wrap) / 2,
       "clamp λ to [0, q]"),
      ("quad_derivatives", _quad_rows_below(1), _quad_rows_below(2), "row − row mod 2")],

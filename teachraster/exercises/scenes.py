@@ -401,7 +401,9 @@ class _Marks:
         x, y = [col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row]
         for box in self.boxes:
             box.set_data(x, y)
-        self.text.set_text(textwrap.fill(f"pixel ({row}, {col}): {words}", self._width()))
+        # whole words only: "top-left" split at its hyphen reads as two words
+        line = f"pixel ({row}, {col}): {words}"
+        self.text.set_text(textwrap.fill(line, self._width(), break_on_hyphens=False))
         return words
 
     def _width(self) -> int:
