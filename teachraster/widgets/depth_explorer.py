@@ -310,8 +310,10 @@ class DepthPrecisionExplorer:
     def _keep_room_for_legend(self) -> None:
         """Lay the axes out above the key: its height (two rows, whatever the format) and a
         small gap are taken from the bottom of the constrained layout."""
-        self.fig.canvas.draw()
-        key = self.ax.get_legend().get_window_extent()
+        # the layout as a draw solves it (the second solve starts from this one), and the
+        # key measured: no picture rendered for either
+        self.fig.get_layout_engine().execute(self.fig)
+        key = self.ax.get_legend().get_window_extent(self.fig.canvas.get_renderer())
         bottom = (key.y1 + 0.1 * self.fig.dpi) / self.fig.bbox.height
         self.fig.get_layout_engine().set(rect=(0.0, bottom, 1.0, 1.0 - bottom))
 

@@ -433,7 +433,7 @@ class DivideCostExplorer(Shown):
         if place is None:
             self.ax.set_in_layout(True)  # set_position() below took it out of the layout
             self.fig.set_layout_engine("constrained")
-            self.fig.canvas.draw()
+            self.fig.get_layout_engine().execute(self.fig)  # the solver alone: no picture
             solved = self.ax.get_position()
             # room on the right for half a tick label at the axis' end: the cost axis is
             # fitted at each price, and a label ending it at another price ran off the
