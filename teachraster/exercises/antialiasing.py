@@ -18,6 +18,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..core.edges import edge_function
 from ..core.fill import rasterize
 from ..core.sample_patterns import sample_pattern
@@ -27,6 +28,7 @@ from ..pipeline.render_triangles import Frame
 from .answers import as_number, as_numbers
 from .blend_mistakes import EIGHT_BIT
 from .cases import SEED, fixed_and_drawn
+from .channel_order import channel_order_mistake
 from .coverage import TOP_LEFT, covered, kind_of, owns_kind, owns_variants, owns_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .scalars import num, vec
@@ -110,6 +112,14 @@ def _coverage_cases(rng, word):
          [[0, 1.375 + 1 / 1024], [3, -4], [6, 1.375 + 1 / 1024]], (1, 2), four),
         ("off the grid: a half step (1/512 px) rounds to even, onto sample 0",
          [[2.375 + 1 / 512, -1], [6, 1.5], [2.375 + 1 / 512, 5]], (1, 2), four),
+        # r293 MN1: a grid of 1/512 px (or 1/128) gave the same answers as rounding half up
+        # (or down) on every case: one sample between the grids tells each pair apart
+        ("off the grid: a right edge 1/512 px right of the grid, the sample on it",
+         [[2.375 + 1 / 512, -1], [2.375 + 1 / 512, 5], [-2, 1.5]], (1, 2),
+         [[0.375 + 1 / 512, 0.125]]),
+        ("off the grid: 7/1024 px past the grid rounds up, past the sample",
+         [[2.375 + 7 / 1024, -1], [6, 1.5], [2.375 + 7 / 1024, 5]], (1, 2),
+         [[0.375 + 1 / 256, 0.125]]),
         ("zero area through the samples", [[2.375, 1.125], [2.875, 1.375], [3.375, 1.625]], (1, 2), four),  # fmt: skip
         ("one sample at the centre, on an edge", [[2.5, 0], [6, 3], [2.5, 6]], (1, 2), sample_pattern(1)),  # fmt: skip
         ("2 samples, a diagonal through both", [[0, 0], [8, 8], [0, 8]], (1, 1), sample_pattern(2)),
@@ -175,6 +185,14 @@ SNAPPING = {
     "x only": lambda xy: np.column_stack([snap(xy)[:, 0], np.asarray(xy, float)[:, 1]]),
     "y only": lambda xy: np.column_stack([np.asarray(xy, float)[:, 0], snap(xy)[:, 1]]),
 }
+#: Sub-pixel bits of the other grids a student may snap to (r293 MN1: 1/16 px, GL's least
+#: SUBPIXEL_BITS, was told "not down" and "(ox, oy) the other way round"): whole pixels,
+#: 1/16, 1/64, 1/128 and 1/512 px, each rounded half to even as the rule's 1/256.
+GRIDS = (0, 4, 6, 7, 9)
+SNAPPING.update({f"{b} bits": (lambda xy, b=b: np.rint(np.asarray(xy, float) * 2**b) / 2**b)
+                 for b in GRIDS})  # fmt: skip
+#: An edge's kind seen from the other end (an edge walked backwards).
+_REVERSED_KIND = {"top": "bottom", "bottom": "top", "left": "right", "right": "left"}
 
 
 def fraction_with(
@@ -183,8 +201,16 @@ def fraction_with(
 ):  # fmt: skip
     """coverage_fraction with the usual mistakes as knobs (the defaults are the rule)."""
     pts = POINTS[points](pixel, samples)
-    inside = covered(SNAPPING[snapping](xy), pts, owns, winding, vertices="exact")
-    return float(inside.sum()) if count else float(inside.mean())
+    v = SNAPPING[snapping](xy)
+    if winding == "ties unturned":  # signs flipped for a counter-clockwise triangle, but its
+        # edges classified as given, walked backwards: top taken for bottom, left for right
+        if float(edge_function(v[0], v[1], v[2])) < 0:
+            owns = frozenset(_REVERSED_KIND[k] for k in owns)
+        winding = "both"
+    inside = covered(v, pts, owns, winding, vertices="exact")
+    share = {True: float(inside.sum()), "percent": 100 * float(inside.mean()),
+             "uncovered": 1 - float(inside.mean())}  # fmt: skip
+    return share.get(count, float(inside.mean()))
 
 
 def _snap_words(args, expected, got) -> str:
@@ -205,6 +231,21 @@ def _one_axis_words(snapped: str, raw: str):
         return (
             f"you snapped {snapped} but left {raw} unsnapped: snap both coordinates of "
             f"every vertex to the 1/256 grid (here {raw}: {moved})"
+        )
+
+    return words
+
+
+def _grid_words(bits: int):
+    def words(args, expected, got) -> str:
+        xy = np.asarray(args[0], float)
+        grid = "whole pixels" if bits == 0 else f"1/{2**bits} px ({bits} sub-pixel bits)"
+        theirs = SNAPPING[f"{bits} bits"](xy)
+        moved = ", ".join(f"{exact(a)} → {exact(b)}, not {exact(c)}"
+                          for a, b, c in zip(xy, snap(xy), theirs) if (b != c).any())  # fmt: skip
+        return (
+            f"you snapped the vertices to {grid}; the grid is 1/256 px (8 sub-pixel bits, as "
+            f"Direct3D requires), rounded half to even{': ' + moved if moved else ''}"
         )
 
     return words
@@ -264,13 +305,32 @@ COVERAGE_KNOBS = Knobs(fraction_with, {
              "(samples covered) / S", True),
     ],
 })  # fmt: skip
+#: r293 MN1, HN4: slips named alone, never combined with the others (each combination is
+#: one more run of every case: the check's CPU)
+ALONE_KNOBS = Knobs(fraction_with, {
+    "snapping": [Slip("another snapping grid", _grid_words(b), f"{b} bits") for b in GRIDS],
+    "winding": [
+        # r293 MN2: told "you cover the samples on top edges and leave out … left and right"
+        Slip("tie rule before turning", "this triangle runs counter-clockwise on screen: you "
+             "flipped the signs of E but decided which edges are top and left on its edges as "
+             "given, each walked backwards (a left edge taken for a right one, a top for a "
+             "bottom); decide them on the edges as they run once the triangle is turned "
+             "(swap two vertices first)", "ties unturned"),
+    ],
+    "count": [
+        Slip("percentage", "that is a percentage (100 × the fraction); return the fraction "
+             "itself, between 0 and 1", "percent"),
+        Slip("uncovered share", "that is the share of samples the triangle leaves uncovered "
+             "(1 − the fraction); return the covered share", "uncovered"),
+    ],
+}, most=1)  # fmt: skip
 TIE_KNOBS = Knobs(
     fraction_with,
     {"owns": [Slip(owns_kind(o), _tie_words(o), o) for o in owns_variants()]},
     most=1,
 )
 
-COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS]
+COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS]
 
 
 def _coverage_rule(args, expected, got) -> str:
@@ -319,11 +379,20 @@ def same_fraction(got, expected, args) -> bool:
     return abs(got - expected) <= 1e-6
 
 
+#: The time-out's question where the picture calls the function once per pixel and triangle,
+#: as its signature asks (r293 HN5: "a Python call per pixel?" asked of such a function).
+COVERAGE_SLOW = (
+    " (the picture calls coverage_fraction once per pixel and triangle, as it must: is one "
+    "call doing far more than snapping three vertices and testing S samples?)"
+)
+
+
 def coverage_exercise(scene) -> Exercise:
     return Exercise(
         "coverage_fraction", coverage_cases, as_fraction, same_fraction, explain_coverage,
         _coverage_rule, COVERAGE_MISTAKES, answers=(PackageAnswer(rasterize),),
-        draw=draw_coverage_case, scene=scene, inputs_drawn=True,
+        draw=draw_coverage_case, scene=scene, inputs_drawn=True, example=1,
+        slow=COVERAGE_SLOW,
     )  # fmt: skip
 
 
@@ -468,6 +537,28 @@ def _fixed_count(args, expected, got) -> float | None:
     return n if np.allclose(g * n, total, rtol=1e-9, atol=1e-12) else None
 
 
+def _in_light(colours, ids, background):
+    """6.3's resolve where 6.2's numbers are plain: decoded from sRGB, averaged, encoded."""
+    light = srgb_to_linear(_with_background(np.nan_to_num(colours), ids, background))
+    return linear_to_srgb(light.mean(axis=0))
+
+
+def _on_255(args, expected, got) -> bool:
+    """``got`` is the right colour × 255 (unrounded, rounded, or truncated as uint8 does)."""
+    g, e = np.asarray(got, dtype=float), np.asarray(expected, dtype=float)
+    if g.shape != e.shape or not np.isfinite(g).all() or g.max() <= 1 + 1e-6:
+        return False
+    return bool(np.all(np.abs(g - 255 * e) < 1))
+
+
+#: r293 HN2: `* 255` and uint8 answers were told the rule (6.2 and 6.3).
+ON_255 = Mistake("0–255 scale", ": that is the colour on the 0–255 scale of 8-bit codes (× 255); "
+                 "the colours here are numbers from 0 to 1: return the mean on that scale, "
+                 "unrounded", fits=_on_255, only_whole=True)  # fmt: skip
+#: r293 MN3: a right colour in BGR was told the weights' rule (the rule shared with 7.2, 9.2).
+CHANNEL_ORDER = channel_order_mistake(": the right colour in another channel order", ": return "
+                                      "(R, G, B), in the samples' own order", tol=1e-6)  # fmt: skip
+
 RESOLVE_MISTAKES = [
     Mistake("covered only", _covered_words, gives=_covered_mean),
     Mistake("uncovered as black", _resolve_words("the uncovered samples count as the background "
@@ -508,6 +599,12 @@ RESOLVE_MISTAKES = [
             only_whole=True),  # every failing answer: a max is one sum / 2 by chance
     # r163 12-9: a mean rounded to 8 bits, round(x·255)/255, was told to count the background
     EIGHT_BIT,
+    CHANNEL_ORDER,
+    ON_255,
+    # r293 HN1: the resolve of 6.3 (in linear light) handed in for 6.2 was told the rule
+    Mistake("in linear light", _resolve_words("you decoded the samples from sRGB, averaged "
+            "and encoded again, as 6.3 does; here the colours are plain numbers (linear), to "
+            "average as they are"), gives=_in_light),
 ]  # fmt: skip
 
 

@@ -17,6 +17,8 @@ import numpy as np
 from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import (
+    CHANNEL_ORDER,
+    ON_255,
     as_colour,
     draw_resolve_case,
     expected_resolve,
@@ -106,6 +108,15 @@ def _power(x, g):
     return np.clip(np.asarray(x, dtype=float), 0, None) ** g
 
 
+def _no_linear_part(x):
+    """sRGB's power branch used everywhere, below code 0.04045 too."""
+    return ((np.asarray(x, dtype=float) + 0.055) / 1.055) ** 2.4
+
+
+def _no_linear_part_back(y):
+    return 1.055 * np.clip(np.asarray(y, dtype=float), 0, None) ** (1 / 2.4) - 0.055
+
+
 def _background_raw(colours, ids, background):
     c = _covered(ids)
     mixed = np.where(c[:, None], _decode(np.nan_to_num(np.asarray(colours, float))),
@@ -160,6 +171,29 @@ MISTAKES = [
             "and a power of 2.4 above it (srgb_to_linear, linear_to_srgb compute it exactly)",
             gives=lambda c, i, b: _mix(c, i, b, lambda x: _power(x, 2.2),
                                        lambda x: _power(x, 1 / 2.2))),
+    # r293 MN4: a power of 2.4, or the curve without its straight part, was asked "at which
+    # step must each value be light?", though the steps were right
+    Mistake("power 2.4", ": that is a plain power of 2.4: sRGB's curve is a straight line "
+            "near black (c / 12.92 up to code 0.04045) and ((c + 0.055) / 1.055)^2.4 above "
+            "(srgb_to_linear, linear_to_srgb compute it exactly)",
+            gives=lambda c, i, b: _mix(c, i, b, lambda x: _power(x, 2.4),
+                                       lambda x: _power(x, 1 / 2.4))),
+    Mistake("curve without its straight part", ": your sRGB curve has no straight part: up "
+            "to code 0.04045 (light 0.0031308) it is the line c / 12.92, not the power "
+            "(srgb_to_linear, linear_to_srgb compute it exactly)",
+            gives=lambda c, i, b: _mix(c, i, b, _no_linear_part, _no_linear_part_back)),
+    # r293 HN3: 6.2's slips, told the rule here
+    Mistake("triangle 0 as background", ": you counted the samples of triangle 0 as "
+            "uncovered: ids number the triangles from 0, and only −1 marks an uncovered sample "
+            "(covered is ids ≥ 0, not ids > 0)",
+            gives=lambda c, i, b: _mix(c, np.where(np.asarray(i) == 0, -1, i), b, _decode,
+                                       _encode)),
+    Mistake("NaN samples", ": uncovered samples hold NaN (no triangle wrote them), and a mean "
+            "with NaN is NaN: put the background in them",
+            gives=lambda c, i, b: _encode(_decode(c).mean(axis=0))
+            if (np.asarray(i) < 0).any() else None),
+    CHANNEL_ORDER,
+    ON_255,
 ]  # fmt: skip
 
 

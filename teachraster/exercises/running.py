@@ -243,7 +243,8 @@ def seconds_words(s: float) -> str:
 
 def _timeout(alarm: Alarm | None, b: Budget, case: str | None, stuck: bool = False) -> Outcome:
     """The outcome of a case stopped by its limits (``alarm``) or by the budget (None)."""
-    where = f" on case {case}" if case else ""
+    # "on the picture", not "on case the picture" (r293 S2)
+    where = "" if not case else f" on {case}" if case.startswith("the ") else f" on case {case}"
     why = "budget" if alarm is None else (alarm.why or alarm.due() or "cpu")
     if why == "cpu" and alarm.seconds < b.seconds * b.share * (1 - 1e-9):
         why = "budget"  # the case's limit was what remained of the budget

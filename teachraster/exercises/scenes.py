@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import output
-from .running import CASE_SHARE, DEFAULT_BUDGET, Outcome, budget, run_case
+from .running import CASE_SHARE, DEFAULT_BUDGET, PER_PIXEL, Outcome, budget, run_case
 
 #: Colours of differing pixels and of the marked pixel.
 DIFF_COLOUR, MARK_COLOUR = "#d7301f", "#ff9f1c"
@@ -55,6 +55,9 @@ class Scene:
     reference_parts: np.ndarray | None = field(default=None, repr=False)
     #: CPU seconds of the check's budget: the picture may take what one of its cases may.
     seconds: float = DEFAULT_BUDGET
+    #: The time-out words' question, the exercise's own (r293 HN5: coverage_fraction, called
+    #: once per pixel by its signature, was asked "a Python call per pixel?").
+    slow: str = PER_PIXEL
     #: Why the student's function is not run for the picture (the check stopped on a time
     #: limit: a loop is not run twice), or None.
     blocked: str | None = None
@@ -81,7 +84,7 @@ class Scene:
             if self.blocked is not None:
                 self._outcome = Outcome(error=self.blocked, kind="timeout")
             else:
-                with budget(self.seconds, share=CASE_SHARE), output.captured():
+                with budget(self.seconds, share=CASE_SHARE, slow=self.slow), output.captured():
                     self._outcome = run_case(self.run, case="the picture")
         return self._outcome.value if self._outcome.ok else None
 

@@ -181,7 +181,7 @@ def _scene(spec: Exercise, fn):
     if spec.scene is None:
         return None
     scene = spec.scene(fn)
-    scene.seconds = current().seconds
+    scene.seconds, scene.slow = current().seconds, current().slow
     return scene
 
 
