@@ -178,36 +178,45 @@ def as_polygon(value) -> np.ndarray:
         raise WrongAnswerType(
             f"returned {short(value)}: a triangle clipped by one plane has at most 4 vertices"
         )
-    if sized and np.size(value) == 0:
+    try:
+        empty = sized and np.size(value) == 0
+    except ValueError:  # r294 R-cn1: ragged rows; as_numbers says what is wrong with them
+        empty = False
+    if empty:
         return np.zeros((0, 4))
     return as_numbers(value, (-1, 4), "an (n, 4) array of vertices (x, y, z, w)")
 
 
-def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=None) -> np.ndarray:
-    """Sutherland-Hodgman against one plane, with the usual mistakes as knobs.
+def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=None,
+              crossings="both", crossing_first=False) -> np.ndarray:  # fmt: skip
+    """Sutherland-Hodgman of a convex polygon (a triangle, or a polygon already clipped)
+    against one plane, with the usual mistakes as knobs.
 
     ``distance(vertex)`` is the signed distance (z + w: the right one); ``t_from(a, b)`` the
     crossing parameter (default d_a / (d_a − d_b)); ``new=False`` adds no vertex where an edge
     crosses; ``from_end`` measures t from the other end of the edge; ``keep_w`` ("inside" or
     "first") gives the new vertex the w of the edge's inside vertex or of its first one
-    instead of interpolating it. None where undefined.
+    instead of interpolating it; ``crossings`` ("leaving" or "entering") adds the new vertex
+    only where an edge leaves the kept side or only where it comes back; ``crossing_first``
+    puts an edge's new vertex before its first vertex. None where undefined.
     """
     v = np.asarray(v, dtype=float)
     distance = distance or (lambda p: p[2] + p[3])
     out = []
     with np.errstate(divide="ignore", invalid="ignore"):
-        for i in range(3):
-            a, b = v[i], v[(i + 1) % 3]
+        for i in range(len(v)):
+            a, b = v[i], v[(i + 1) % len(v)]
             da, db = distance(a), distance(b)
-            if da >= 0:
-                out.append(a)
-            if (da >= 0) != (db >= 0) and new:
+            kept = [a] if da >= 0 else []
+            wanted = {"both": True, "leaving": da >= 0, "entering": da < 0}[crossings]
+            if (da >= 0) != (db >= 0) and new and wanted:
                 t = da / (da - db) if t_from is None else t_from(a, b)
                 t = 1 - t if from_end else t
                 c = a + t * (b - a)
                 if keep_w is not None:
                     c[3] = a[3] if keep_w == "first" or da >= 0 else b[3]
-                out.append(c)
+                kept = [c] + kept if crossing_first else kept + [c]
+            out += kept
     poly = np.array(out).reshape(-1, 4)
     return poly if np.isfinite(poly).all() else None
 
@@ -284,14 +293,29 @@ def _w_words(args, expected, got) -> str:
     )
 
 
-def _behind(args, expected, got) -> bool:
+def _own(v: np.ndarray, p: np.ndarray) -> bool:
+    """Is ``p`` one of the triangle's own vertices, within a rounding far coarser than
+    float32's (r294 M-cn4: a vertex kept but rounded, by float16 or a cast, was called a new
+    vertex with a wrong t)?"""
+    scale = max(1.0, float(np.abs(v).max()))
+    return bool((np.abs(np.asarray(v, float) - p).max(axis=1) <= 1e-3 * scale).any())
+
+
+def _kept_behind(args, got) -> list:
+    """The triangle's own vertices that ``got`` keeps behind the plane (a new vertex behind
+    it has a wrong t: :func:`_off_plane` says so, r294 H-cn4)."""
     (v,) = args
     scale = max(1.0, float(np.abs(v).max()))
-    return any(p[2] + p[3] < -TOL * scale for p in np.asarray(got, dtype=float).reshape(-1, 4))
+    g = np.asarray(got, dtype=float).reshape(-1, 4)
+    return [p for p in g if p[2] + p[3] < -TOL * scale and _own(v, p)]
+
+
+def _behind(args, expected, got) -> bool:
+    return bool(_kept_behind(args, got))
 
 
 def _behind_words(args, expected, got) -> str:
-    bad = next(p for p in np.asarray(got, dtype=float).reshape(-1, 4) if p[2] + p[3] < 0)
+    bad = _kept_behind(args, got)[0]
     return f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
 
 
@@ -299,19 +323,24 @@ def _new_vertices(args, got) -> list:
     """The vertices of ``got`` that are none of the triangle's own."""
     (v,) = args
     g = np.asarray(got, dtype=float).reshape(-1, 4)
-    return [p for p in g if not any(all_close(p, q) for q in v)]
+    return [p for p in g if not _own(v, p)]
+
+
+def _off_plane_by(args) -> float:
+    """How far off the plane a new vertex may lie: the comparison's own tolerance (a float32
+    answer's t is within it; r294 H-cn4: at 1e-4, a t 0.01 % off was told only "keeps a
+    vertex behind")."""
+    return FLOAT32_TOL * max(1.0, float(np.abs(args[0]).max()))
 
 
 def _off_plane(args, expected, got) -> bool:
     """A new vertex that is not on the near plane (r85 04: t = ½ or a wrong sign of t was
     told only its symptom, or a generic rule)."""
-    scale = max(1.0, float(np.abs(args[0]).max()))
-    return any(abs(p[2] + p[3]) > 1e-4 * scale for p in _new_vertices(args, got))
+    return any(abs(p[2] + p[3]) > _off_plane_by(args) for p in _new_vertices(args, got))
 
 
 def _off_plane_words(args, expected, got) -> str:
-    scale = max(1.0, float(np.abs(args[0]).max()))
-    p = next(p for p in _new_vertices(args, got) if abs(p[2] + p[3]) > 1e-4 * scale)
+    p = next(p for p in _new_vertices(args, got) if abs(p[2] + p[3]) > _off_plane_by(args))
     return (
         f"your new vertex {vec(p)} is not on the near plane: its z + w is {num(p[2] + p[3])}, "
         "not 0, so its t is wrong (a crossing lies where z + w, which changes linearly along "
@@ -321,6 +350,26 @@ def _off_plane_words(args, expected, got) -> str:
 
 def _divided(a) -> float:
     return a[2] / a[3] + 1
+
+
+def _divided_polygon(v) -> np.ndarray | None:
+    """The right polygon divided by w (NDC), where no vertex has w = 0."""
+    p = clip_with(v)
+    if p is None or (p[:, 3] == 0).any():
+        return None
+    return p / p[:, 3:4]
+
+
+def _transposed(args, expected, got) -> bool:
+    """A square answer (4 vertices) whose columns are the polygon's vertices."""
+    g = np.asarray(got, dtype=float)
+    return g.shape == (4, 4) and not same_polygon(g, expected) and same_polygon(g.T, expected)
+
+
+def _far_too(v) -> np.ndarray | None:
+    """Clipped against the near plane, then against the far plane (w − z ≥ 0) too."""
+    p = clip_with(v)
+    return p if p is None or not len(p) else clip_with(p, lambda q: q[3] - q[2])
 
 
 CLIP_MISTAKES = [
@@ -358,6 +407,35 @@ CLIP_MISTAKES = [
     Mistake("reversed", "your polygon has the right vertices in reverse order: keep the "
             "triangle's order (walk the edges v1→v2→v3→v1)",
             fits=lambda args, e, g: len(g) > 0 and same_polygon(np.asarray(g)[::-1], e)),
+    # r294: answers of the wrong form were told "its t is wrong" (M-cn1..3), a missing
+    # crossing only by its shape (H-cn1), the crossing's place and the turned test by the rule
+    # or a symptom (H-cn2, H-cn3)
+    Mistake("divided by w", "you divided your vertices by w: return the clipped polygon in "
+            "clip space, (x, y, z, w) as the triangle's vertices are given; the divide by w "
+            "comes after clipping", gives=_divided_polygon),
+    Mistake("far plane too", "you clipped against the far plane too (w − z ≥ 0): this "
+            "exercise clips against the near plane only, z + w ≥ 0, so a vertex beyond the far "
+            "plane stays", gives=_far_too),
+    Mistake("inside turned round", "you kept the side behind the near plane: your inside "
+            "test is turned round; the kept side is z + w ≥ 0",
+            gives=lambda v: clip_with(v, lambda p: -(p[2] + p[3]))),
+    Mistake("one crossing", "you added a new vertex only where an edge leaves the kept side "
+            "(inside → behind): an edge that comes back (behind → inside) crosses the plane "
+            "too, and its crossing is a vertex of the polygon",
+            gives=lambda v: clip_with(v, crossings="leaving")),
+    Mistake("one crossing", "you added a new vertex only where an edge comes back to the kept "
+            "side (behind → inside): an edge that leaves it (inside → behind) crosses the "
+            "plane too, and its crossing is a vertex of the polygon",
+            gives=lambda v: clip_with(v, crossings="entering")),
+    Mistake("crossing before its edge", "your vertices are right, but each new vertex comes "
+            "before the first vertex a of its edge a→b: keep a (when it is inside), then add "
+            "the edge's crossing, so that the vertices stay in order around the polygon",
+            gives=lambda v: clip_with(v, crossing_first=True)),
+    # r294 M-cn2: a 4 × 4 answer transposed was told "its t is wrong" (the shared transposed
+    # mistake is named only where every failing answer is one: a 3 × 4 one is refused first)
+    Mistake("transposed", "your polygon is transposed: each row must be one vertex (x, y, z, "
+            "w), not one component of every vertex (np.array([xs, ys, zs, ws]) needs a .T, or "
+            "np.column_stack)", fits=_transposed),
     Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
 ]  # fmt: skip

@@ -35,6 +35,9 @@ NAMED = (
     ("a wall, then glass behind it", [0.4, 0.6], [True, False]),
     ("two panes of glass, then a wall between them", [0.2, 0.6, 0.4], [False, False, True]),
     ("glass, then a wall at the same depth", [0.5, 0.5], [False, True]),
+    # r294 W1: glass on a tie with the wall drawn before it fails (GL_LESS); without this case
+    # a rule that lets such glass pass (`<=` for glass only) passed every fixed case
+    ("a wall, then glass at the same depth", [0.4, 0.4], [True, False]),
     ("nothing drawn", [], []),
     # r39 04-4: a buffer cleared to the far value 1.0 (GL's default) differs from an empty one
     # only for a fragment exactly on the far plane
@@ -91,14 +94,16 @@ def same_passes(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 
 def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=True,
-              previous=False, start=np.inf) -> np.ndarray:  # fmt: skip
+              previous=False, start=np.inf, glass_ties=False, glass_fails=False) -> np.ndarray:  # fmt: skip
     """The z-buffer with one rule changed (each keyword is one typical mistake)."""
     stored, last, out = start, start, []
     for d, write in zip(depths.tolist(), writes.tolist()):
         against = last if previous else stored
-        ok = d <= against if ties else d < against
+        ok = d <= against if ties or (glass_ties and not write) else d < against
         if not test_all and not write:
             ok = True
+        if glass_fails and not write:
+            ok = False
         out.append(ok)
         if (ok or not update) and (write or not mask):
             stored = d
@@ -163,6 +168,15 @@ DEPTH_MISTAKES = [
              "*written*", mask=False),
     _mistake("glass untested", "a fragment that does not write depth is still tested: glass "
              "behind a wall is hidden by it", test_all=False),
+    # r294 W1, M-dp1: `<=` for glass only passed the fixed cases, and when a drawn case caught
+    # it was told "a fragment that fails the test changes nothing"
+    _mistake("glass ties", "glass at the same depth as the depth the buffer holds passes in "
+             "your answer: a tie fails for glass too (only a strictly nearer fragment passes, "
+             "whether or not it writes depth)", glass_ties=True),
+    # r294 H-dp1: the depth mask folded into the test (`d < stored and write`) was told the rule
+    _mistake("glass never passes", "glass never passes in your answer: the depth mask decides "
+             "only whether a fragment that passes changes the buffer, not whether it passes; "
+             "glass nearer than the depth the buffer holds passes", glass_fails=True),
     _mistake("failed writes", "a fragment that fails the test changes nothing: only a "
              "fragment that passes (and writes) sets the buffer", update=False),
     _mistake("cleared to 1", "you started the buffer at 1.0 (GL clears it to the far value "
