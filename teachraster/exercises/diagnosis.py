@@ -552,6 +552,20 @@ def _nan_words(args, expected, got) -> str | None:
     return f"your answer holds {sign}inf{at} (infinity: a division by zero?)"
 
 
+def _inf_by_float32(spec: Exercise, r: Result) -> str | None:
+    """±inf far from the origin where the exercise's own float32 words name the cause (a
+    float32 plane in absolute coordinates cancels its area to 0, then divides by it): said
+    with the inf, as before r286 told inf only as "a division by zero?"."""
+    if spec.float32_words is None:
+        return None
+    special = spec.float32_words(r.args, r.expected, r.got)
+    # float32 turns finite inputs into inf only through a difference cancelled to 0 then
+    # divided by (overflow is _outside_float32's): other float32 words do not explain an inf
+    if not special or "cancel" not in special:
+        return None
+    return f"{_nan_words(r.args, r.expected, r.got)}{special}"
+
+
 _NAN_WORDS = "your answer holds NaN (a 0/0, or a NaN input passed on?)"
 
 
@@ -944,6 +958,11 @@ def diagnose(
             kind, words = _named(spec, chosen.mistake, r)
         else:
             kind, words = _generic(spec, r)
+        unnamed_inf = odd and chosen is None
+        inf32 = unnamed_inf and run_checker(lambda r=r: _inf_by_float32(spec, r), None)
+        if inf32:
+            out[r.index] = ("float32", _say(spec, r, inf32))
+            continue
         kind, words = _honest(spec, r, kind, words, chosen and chosen.mistake, r.index in explained)
         out[r.index] = (kind, _say(spec, r, words))
     # r248: a second slip is said only where every other failing case is named too
