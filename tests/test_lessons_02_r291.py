@@ -70,7 +70,12 @@ def test_p6_q_edge23_is_not_quite_level():
     assert tr.Triangle(ns.wedge).signed_area > 0
     assert "rises by 0.25 px" in ns.edge_why[1].replace("</i>", "")
     ask = next(t for t in _texts() if "edge_questions = [" in t)
-    assert "the edge is not quite level" in ask
+    # r299 P: the prompt gives no hint that removes the trap; r299 C1/C2: the reveal says
+    # a quarter pixel lower is level (a bottom edge), and E31 is not the only owning edge
+    assert "not quite level" not in ask
+    assert "exactly horizontal: a bottom edge" in ns.edge_why[1]
+    assert "two of the three edges do" in ns.edge_why[2]
+    assert "the one edge of the three" not in ask
 
 
 def test_m8_zero_area_triangles_are_said_and_printed():
