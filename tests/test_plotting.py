@@ -1027,3 +1027,34 @@ def test_the_vertex_dots_are_drawn_above_their_labels_boxes():
     ):
         assert art.vertices.get_zorder() > max(t.get_zorder() for t in art.labels)
     plt.close(fig)
+
+
+def _segment_distance(p, a, b) -> tuple[float, float]:
+    """Distance of ``p`` from the segment a-b and the parameter of its nearest point."""
+    d = b - a
+    t = float(np.clip((p - a) @ d / (d @ d), 0.0, 1.0))
+    return float(np.hypot(*(p - (a + t * d)))), t
+
+
+@pytest.mark.parametrize("v2", [(14.5, 6.25), (1.0, 12.0)], ids=["clockwise", "counter"])
+def test_edge_labels_sit_at_the_edges_they_name(v2):
+    """Each edge label lies by the middle of the edge its name denotes (E21 between v2 and v1),
+    for either winding: the test order then differs from v1→v2→v3 (review r299 02-3: after
+    the flip "E21" and "E13" sat at each other's edge)."""
+    xy = np.array([(2.25, 1.75), v2, (5.75, 14.5)])
+    view = tp.FillView(make_fill(xy=xy), step=-1)
+    view.fig.canvas.draw()
+    to_data = view.ax.transData.inverted().transform
+    snapped = view.trace.snapped
+    names = {f"E{a + 1}{b + 1}" for a, b in view.trace.edges}
+    assert {t.get_text() for t in view.triangle.edge_labels} == names
+    assert len(names) == 3 and (("E12" in names) != ("E21" in names))  # one winding
+    for label in view.triangle.edge_labels:
+        box = label.get_window_extent()
+        centre = to_data([[(box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2]])[0]
+        a, b = (int(c) - 1 for c in label.get_text()[1:])
+        gap, t = _segment_distance(centre, snapped[a], snapped[b])
+        others = [_segment_distance(centre, snapped[i], snapped[j])[0]
+                  for i, j in [(0, 1), (1, 2), (2, 0)] if {i, j} != {a, b}]  # fmt: skip
+        assert gap < min(others), (label.get_text(), centre)
+        assert 0.15 < t < 0.85 and gap < 2.0, (label.get_text(), centre, t, gap)

@@ -251,7 +251,7 @@ def place_on_line(segment, half, *, frame, triangle, labels, dots, samples: int 
 EDGE_LABEL_REACH = 3.0
 
 
-def place_edge_labels(mids, half, *, to_display, frame, triangle, dots) -> np.ndarray:
+def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots) -> np.ndarray:
     """Centres (display pixels, (3, 2)) for the labels of a triangle's three edges on a pixel
     grid, each a box of half-size ``half`` (display pixels) within :data:`EDGE_LABEL_REACH`
     grid pixels of its edge's midpoint ``mids`` (3, 2, grid coordinates), clear of the
@@ -259,7 +259,10 @@ def place_edge_labels(mids, half, *, to_display, frame, triangle, dots) -> np.nd
     labels, outside the triangle (display, (3, 2)) where it can, and nearer its own edge than
     the others (it names that one). The candidates sit on the grid's row boundaries (whole
     y), where a box less than a pixel high covers no centre (review r291 02-3: "E31" hid row
-    8's centres), then between them.
+    8's centres), then between them. ``edges`` (3, 2) are the vertex indices (into
+    ``triangle``) of each label's edge, in the order of ``mids``: the test order of a fill
+    differs from v1→v2→v3 when the triangle winds the other way (review r299 02-3: after the
+    flip "E21" and "E13" were drawn at each other's edge).
 
     Examples
     --------
@@ -267,14 +270,15 @@ def place_edge_labels(mids, half, *, to_display, frame, triangle, dots) -> np.nd
     >>> mids = (tri + np.roll(tri, -1, axis=0)) / 2
     >>> u, v = np.meshgrid(np.arange(10) + 0.5, np.arange(10) + 0.5)
     >>> dots = boxes_around(np.column_stack([u.ravel(), v.ravel()]), (0.1, 0.1))
-    >>> c = place_edge_labels(mids, (0.4, 0.3), to_display=lambda p: np.asarray(p, float),
+    >>> c = place_edge_labels(mids, (0.4, 0.3), edges=[[0, 1], [1, 2], [2, 0]],
+    ...                       to_display=lambda p: np.asarray(p, float),
     ...                       frame=(0, 0, 10, 10), triangle=tri, dots=dots)
     >>> bool((overlap_share(boxes_around(c, (0.4, 0.3)), dots) == 0).all())
     True
     """
     mids = np.asarray(mids, dtype=np.float64)
     steps = np.arange(-EDGE_LABEL_REACH, EDGE_LABEL_REACH + 1e-9, 0.25)
-    edges = np.stack([triangle, np.roll(triangle, -1, axis=0)], axis=1)
+    segments = np.asarray(triangle, dtype=np.float64)[np.asarray(edges, dtype=int)]  # (3, 2, 2)
     grid_px = float(np.hypot(*(to_display([1.0, 0.0]) - to_display([0.0, 0.0])))) or 1.0
     placed: list = []
     for k, mid in enumerate(mids):
@@ -283,7 +287,7 @@ def place_edge_labels(mids, half, *, to_display, frame, triangle, dots) -> np.nd
         cand = np.vstack([cand, np.column_stack([cand[:, 0], np.round(cand[:, 1])])])
         shown = np.asarray(to_display(cand), dtype=np.float64)
         boxes = boxes_around(shown, half)
-        gap = np.stack([_to_segment(shown, a, b) for a, b in edges])  # (3, n)
+        gap = np.stack([_to_segment(shown, a, b) for a, b in segments])  # (3, n), mids' order
         astray = gap[k] > np.delete(gap, k, axis=0).min(axis=0)
         far = np.hypot(*(cand - mid).T)
         cost = (clutter(boxes, half, frame=frame, triangle=triangle, dots=dots)

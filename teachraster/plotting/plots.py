@@ -381,13 +381,13 @@ class TriangleArtists(Artists):
         mids = np.array([(xy[a] + xy[b]) / 2 for a, b in edges])
         offsets = _outward(mids, centre, fs(0.9), ax)
         if self.keep_clear is not None and self.edge_labels:
-            offsets = self._edge_offsets(xy, mids)
+            offsets = self._edge_offsets(xy, mids, edges)
         for label, (a, b), p, off in zip(self.edge_labels, edges, mids, offsets):
             label.xy = tuple(p)
             label.set_position(off)
             label.set_text(edge_name(a, b))
 
-    def _edge_offsets(self, xy: np.ndarray, mids: np.ndarray) -> list:
+    def _edge_offsets(self, xy: np.ndarray, mids: np.ndarray, edges: np.ndarray) -> list:
         """Offsets (points) of the edge labels from their edges' midpoints, each where its box
         covers no pixel centre of ``keep_clear``, no vertex dot, edge or other label (review
         r291 02-3: the boxes hid the centres the lesson is about)."""
@@ -402,8 +402,8 @@ class TriangleArtists(Artists):
         dot = (self.vertices.get_markersize() / 2 + 1.5) * scale
         dots = np.vstack([boxes_around(shown(self.keep_clear), (0.15 * size, 0.15 * size)),
                           boxes_around(shown(xy), (dot, dot)), self.label_boxes])  # fmt: skip
-        centres = place_edge_labels(mids, half, to_display=shown, frame=ax.bbox.extents,
-                                    triangle=shown(xy), dots=dots)  # fmt: skip
+        centres = place_edge_labels(mids, half, edges=edges, to_display=shown,
+                                    frame=ax.bbox.extents, triangle=shown(xy), dots=dots)  # fmt: skip
         return [tuple((c - p) / scale) for c, p in zip(centres, shown(mids))]
 
     def _clear_offsets(self, xy: np.ndarray) -> list:
