@@ -60,7 +60,13 @@ def test_p1_the_player_follows_the_question_it_would_answer():
     # nothing before the question points at the comparison's error map
     before = " ".join(cells[k] for k in ids[: ids.index("q-worst")])
     assert "FillPlayer(tri" not in before and "its comparison shows" not in before
-    assert "The player at the end of section 5 has the same toggle" in _flat(cells["c08"])
+    # r297 S1, C1: the player is in section 5, not at its end (section 5 goes on after it),
+    # and q_affine's explanation sends the student there, not to section 4; S2: the widget's
+    # own line asks for one pixel, as the question does
+    assert "The player in section 5, after its question, has the same toggle" in _flat(cells["c08"])
+    affine = next(t for t in cells.values() if "q_affine = " in t)
+    assert "comparison in section 5" in affine and "section 4" not in affine
+    assert "one=True," in cells["q-worst"] and "one pixel whose centre" in cells["q-worst"]
     assert "its comparison shows both interpolations" in _flat(cells["c12-player-text"])
 
 

@@ -249,7 +249,9 @@ def test_00_facing_and_the_two_methods():
     assert ns.covered_share == round(100 * ns.span.coverage.sum() / ns.box.size) == 41
     code = "\n".join(_cells("00_tour", "code"))  # the widget is not among the globals
     # review r52 00-1: no hint toward "half", and a tolerance that marks the reflex 50 wrong
-    assert "answer=covered_share,\n" in code and "    tolerance=3,\n" in code
+    assert "answer=covered_share,\n" in code and "centres_tolerance = 3 " in code
+    # review r296 P2: the question says its tolerance
+    assert "    tolerance=centres_tolerance,\n" in code and "(within ±{centres_tolerance})" in code
     assert abs(50 - ns.covered_share) > 3 and "Think about how much" not in code
     # review r157 00-6 (reversing r77 00-4): the area ratio (59.61 / 129.95 = 46 %) follows
     # from the area printed after q_facing: accepted, it made the question a division. It is
@@ -1398,17 +1400,19 @@ def _markdown_of(name: str, cell_id: str) -> str:
 def test_01_r239_arrows_show_the_walk_the_text_names():
     """Review r239 01-C1: the edges' arrowheads ran v3→v2→v1 (the package's walk, v1→v3→v2)
     under a text and a winding arc saying v1→v2→v3, with nothing said. r282 S5: span tables
-    draw no arrowheads now (tests/test_setup_marks.py), so the lesson's fold on the walk and
-    its mentions go; one sentence in section 1 reads the winding caption's "walked"."""
+    drew no arrowheads then; r296 W1 put them back (tests/test_setup_marks.py), with one
+    sentence under the first step view; one sentence in section 1 reads the caption's "walked"."""
     ns = lesson("01_span_tables")
     assert ns.trace.turn == "counter-clockwise"
     assert "walked v1→v3→v2 instead" in ns.trace.caption(1)  # printed in section 1
     sort_text = _markdown_of("01_span_tables", "c02")
     assert "<details>" not in sort_text and "arrowhead" not in sort_text
     assert "the span loop has no walk: it runs down every edge, top to bottom" in sort_text
-    assert (
-        "arrowhead" not in ns.TABLE_TEXT and "edge_walk" not in _notebook_cells("01_span_tables")[3]
-    )
+    # r296 W1: span tables draw the arrowheads again (lesson 00's winding Try-it needs them);
+    # one sentence where the first step view is shown says what they show
+    table = " ".join(ns.TABLE_TEXT.split())
+    assert table.count("arrowhead") == 1 and "which decides facing and culling" in table
+    assert "edge_walk" not in _notebook_cells("01_span_tables")[3]
     cells = _notebook_cells("01_span_tables")
     texts = ["".join(c["source"]) for c in cells]
     held = next(i for i, t in enumerate(texts) if "TABLE_TEXT = (" in t)

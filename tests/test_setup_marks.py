@@ -4,8 +4,8 @@ Lesson 01's player showed its set-up steps 0-3 as one picture (the stage PNGs of
 and 3 byte-identical): only the captions changed. Now the winding step draws an arrow turning
 the way v1 -> v2 -> v3 run, the rows step the raster lines to visit (the bottom vertex's
 dotted: traced, not visited), the sort and split steps the roles; the key names what each
-step draws (the split's step its two tinted parts, the last step no raster line), and span
-tables draw no arrowheads (review r282 01-S5).
+step draws (the split's step its two tinted parts, the last step no raster line), and the
+long edge's arrowhead no longer sits on point 4.
 """
 
 from __future__ import annotations
@@ -112,15 +112,21 @@ def test_the_key_names_what_the_step_draws(player):
         assert not any("y = v_mid" in t for t in keyed(view)), k
 
 
-def test_span_tables_draw_no_arrowheads(player):
-    """r282 01-S5: the arrowheads showed the package's walk v1→v3→v2 on a triangle the lesson
-    calls counter-clockwise, and cost it paragraphs of excuse; the span loop has no walk (it
-    runs down every edge, top to bottom). r229 01-FIG1's arrowhead on point 4 goes with them."""
-    view = player.view
-    for k in range(len(view.trace)):
-        view.show_step(k, draw=False)
-        assert not any(a.get_visible() for a in view.triangle.arrows), k
-        assert not any(t.startswith("edges walked") for t in keyed(view)), k
+def test_the_long_edges_arrow_is_off_point_4(player):
+    """r229 01-FIG1: the long edge's arrowhead sat on point 4 (the middle vertex is halfway
+    down, so point 4 is the edge's midpoint) and on its "4"."""
+    view, span = player.view, player.view.trace.span
+    point_4 = np.array([span.u4, span.sorted_xy[1, 1]])
+    xy = view.trace.snapped
+    long_edge = {int(span.order[0]), int(span.order[2])}
+    k = next(i for i, (a, b) in enumerate(view.trace.edges) if {int(a), int(b)} == long_edge)
+    arrow = np.array(view.triangle.arrows[k]._posA_posB)  # tail, head (data units)
+    assert np.hypot(*(arrow - point_4).T).min() > 2.5
+    # still on the edge, pointing along it
+    a, b = xy[view.trace.edges[k]]
+    for p in arrow:
+        assert abs((b - a)[0] * (p - a)[1] - (b - a)[1] * (p - a)[0]) < 1e-9
+    assert np.dot(arrow[1] - arrow[0], b - a) > 0
 
 
 @pytest.mark.parametrize("xy", [CCW, CW], ids=["ccw", "cw"])
@@ -207,10 +213,10 @@ def test_the_edges_arrows_show_the_walk_once_the_winding_has_chosen_it(xy):
     """r239 01-C1: at the winding step the arc, labelled v1→v2→v3 counter-clockwise, stood
     over arrowheads turning the other way (the package walks a counter-clockwise triangle
     v1→v3→v2). The arrowheads, read from trace.edges, show from the step after the winding
-    on, keyed with the walk at the set-up steps (half-planes: span tables draw none)."""
+    on, keyed with the walk at the set-up steps."""
     with plt.style.context("default"):
         use_style("classroom")
-        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="halfplane", trace=True)
+        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True)
         view = FillView(fill, step=0)
         try:
             trace = fill.trace
@@ -269,3 +275,30 @@ def test_the_half_plane_labels_stand_between_the_centre_rows():
                 assert share[0] == 0, tag.get_text()
         finally:
             plt.close(view.fig)
+
+
+def test_the_editors_point_4_label_is_clear_of_the_triangle():
+    """r296 FIG1 (lesson 00's editor, v3 dragged above the edge v1 -> v2 to (7.5, 0.5)): the
+    label "point 4 / u4 = 8.82" hung below the split line over the covered pixels and the long
+    edge; it goes where its box is clear of the triangle (its number alone, "4", where the
+    two lines do not fit; the editor's line gives u4)."""
+    from teachraster.plotting.plots import _box_clear
+    from teachraster.widgets import TriangleEditor
+
+    with plt.style.context("default"):
+        use_style("classroom")
+        tri = tr.Triangle([[2.2, 1.5], [13.7, 5.2], [5.1, 12.8]], w=[1.0, 2.0, 4.0])
+        editor = TriangleEditor(tri, 16, 16)
+        try:
+            editor.set_vertex(2, 7.5, 0.5)
+            label, span = editor.view.split.label, editor.view.trace.span
+            size = label.get_fontsize()
+            box = (
+                (size * 0.9, size * 1.15) if label.get_text() == "4" else (size * 6.65, size * 3.2)
+            )
+            align = (label.get_horizontalalignment(), label.get_verticalalignment())
+            assert _box_clear(label.axes, span.sorted_xy, label.xy, label.get_position(), align,
+                              box)  # fmt: skip
+            assert "split at u4 = 8.82" in editor.info.value
+        finally:
+            plt.close(editor.fig)

@@ -592,6 +592,7 @@ class SplitArtists(Artists):
         # the text's width and its box, in points (DejaVu Sans bold: about 0.65 em a glyph)
         wide = self.label.get_fontsize() * (0.65 * max(map(len, text.split("\n"))) + 0.8)
         room = _room_left_of(self.label.axes, s.u4)
+        size = (wide, self.label.get_fontsize() * (1.2 * (text.count("\n") + 1) + 0.8))
         at, offset = (s.u4, v2y), (dx, -fs(0.6))
         align = ("right" if away_left else "left", "top")
         # no room left of point 4 for both lines: its number alone, still outside the triangle
@@ -612,6 +613,19 @@ class SplitArtists(Artists):
             # not even that: the label starts at the grid's left edge instead (review r9 00
             # c14: it stuck out of the grid onto the "row i" axis label)
             offset, align = (fs(0.3) - room, -fs(0.6)), ("left", "top")
+        elif not _box_clear(self.label.axes, s.sorted_xy, at, offset, align, size):
+            # below the line it lay over the covered pixels and the long edge, when that edge
+            # runs on down and away from point 4 (lesson 00's editor, v3 dragged above v1 -> v2,
+            # review r296 FIG1): above the line, on the same side, if it fits there; else its
+            # number alone, "4", above or below the line (the caption gives u4's value)
+            one = (self.label.get_fontsize() * 0.9, self.label.get_fontsize() * 1.15)  # "4", halo
+            places = [((dx, fs(0.6)), (align[0], "bottom"), text, size)] + [
+                ((dx, dy), (align[0], va), "4", one)
+                for dy, va in ((fs(0.3), "bottom"), (-fs(0.3), "top"))]  # fmt: skip
+            for place, how, words, box in places:
+                if _box_clear(self.label.axes, s.sorted_xy, at, place, how, box):
+                    offset, align, text = place, how, words
+                    break
         self.label.xy = at
         self.label.set_position(offset)
         self.label.set_horizontalalignment(align[0])
@@ -642,6 +656,33 @@ def _left_of_long_edge(sorted_xy, point, margin: float) -> bool:
     if y <= yt or yb == yt:
         return True
     return bool(x + margin <= xt + (y - yt) / (yb - yt) * (xb - xt))
+
+
+def _box_clear(ax, tri, at, offset, align, size) -> bool:
+    """Whether a label box of ``size`` (width, height, in points) at ``offset`` points from
+    data point ``at``, aligned ``align`` (ha, va), lies clear of the triangle ``tri`` (3 × 2,
+    data units), within the Axes: no edge enters the box and no point of it is inside."""
+    x, y = ax.transData.transform(at) + np.asarray(offset) * ax.figure.dpi / 72.0
+    w, high = (np.asarray(size, dtype=np.float64) * ax.figure.dpi / 72.0).tolist()
+    x0 = {"left": x, "right": x - w, "center": x - w / 2}[align[0]]
+    y0 = {"bottom": y, "top": y - high, "center": y - high / 2}[align[1]]
+    frame = ax.get_window_extent()
+    if x0 < frame.x0 or y0 < frame.y0 or x0 + w > frame.x1 or y0 + high > frame.y1:
+        return False
+    gx, gy = np.meshgrid(np.linspace(x0, x0 + w, 9), np.linspace(y0, y0 + high, 5))
+    box = ax.transData.inverted().transform(np.column_stack([gx.ravel(), gy.ravel()]))
+    lo, hi = box.min(axis=0), box.max(axis=0)
+    t = np.linspace(0.0, 1.0, 200)[:, None]
+    tri = np.asarray(tri, dtype=np.float64)
+    for a, b in zip(tri, np.roll(tri, -1, axis=0)):
+        pts = a + t * (b - a)
+        if ((pts >= lo) & (pts <= hi)).all(axis=1).any():
+            return False
+    # inside: the same side of all three edges (either winding)
+    sides = [np.sign((b[0] - a[0]) * (box[:, 1] - a[1]) - (b[1] - a[1]) * (box[:, 0] - a[0]))
+             for a, b in zip(tri, np.roll(tri, -1, axis=0))]  # fmt: skip
+    inside = (sides[0] == sides[1]) & (sides[1] == sides[2]) & (sides[0] != 0)
+    return not inside.any()
 
 
 def _room_left_of(ax, x: float) -> float:

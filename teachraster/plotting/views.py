@@ -40,6 +40,7 @@ from .common import (
 )
 from .images import ImageArtists, attribute_image, plot_error_heatmap, plot_profile, show_values
 from .plots import (
+    TriangleArtists,
     plot_bbox,
     plot_coverage,
     plot_current_pixel,
@@ -168,12 +169,30 @@ def _split_entries() -> list:
             ("split line, point 4", c["split"], "white", "D")]  # fmt: skip
 
 
+def _arrow_off_point_4(triangle: TriangleArtists, trace: FillTrace) -> None:
+    """Span tables: move the long edge's arrow from the middle of the edge, where point 4 often
+    lies (exactly, when the middle vertex is halfway down), to its lower part: the arrowhead
+    sat on point 4 and its "4" (review r229 01-FIG1). (In its upper part it sat on lesson
+    01's row 5, whose span ends the text reads off the picture.)"""
+    s = trace.span
+    if s is None or s.u4 is None or not triangle.arrows:
+        return
+    xy = np.asarray(trace.snapped, dtype=np.float64)
+    long_edge = {int(s.order[0]), int(s.order[2])}
+    for arrow, (a, b) in zip(triangle.arrows, trace.edges):
+        if {int(a), int(b)} != long_edge:
+            continue
+        pa, pb = xy[a], xy[b]
+        t0, t1 = (0.7, 0.84) if a == s.order[0] else (0.16, 0.3)  # near the bottom vertex
+        arrow.set_positions(tuple(pa + t0 * (pb - pa)), tuple(pa + t1 * (pb - pa)))
+
+
 class FillView:
     """Step through one fill: a figure whose artists each step updates in place.
 
     It shows the pixel grid and centres, the triangle (edges in test order, with arrows from
-    the step after the winding on, which chooses that order, but for span tables, and the
-    edge-function names used in the captions), the bounding box, the pixels filled so far,
+    the step after the winding on, which chooses that order, and the edge-function names used
+    in the captions), the bounding box, the pixels filled so far,
     for half-planes the pixels tested and rejected so far, the current raster line (span
     tables) or pixel (half-planes), the split at u4 (span tables), a header and the caption of
     the current step. The bounding box appears from its set-up step on and the split from the
@@ -418,10 +437,8 @@ class FillView:
                        step.kind if setup and self.legend is not None else False, last)  # fmt: skip
         # the edges' arrowheads show the walk the winding step chooses (trace.edges: a
         # counter-clockwise triangle is walked the other way round): none before it, and
-        # none at it, where they turned against its arc labelled v1→v2→v3 (review r239 01-C1).
-        # None for span tables either: their loop runs down every edge, top to bottom, and
-        # arrowheads against the winding cost lesson 01 paragraphs of excuse (review r282 S5)
-        walked = trace.span is None and k > trace.setup_kinds.index("winding")
+        # none at it, where they turned against its arc labelled v1→v2→v3 (review r239 01-C1)
+        walked = k > trace.setup_kinds.index("winding")
         for arrow in self.triangle.arrows:
             arrow.set_visible(walked)
         self._still += (walked,)
@@ -506,6 +523,7 @@ class FillView:
         self.raster_line.width = W
         self.triangle.update(trace)
         self._lift_middle_label(trace)
+        _arrow_off_point_4(self.triangle, trace)
         self.setup_marks.update(trace, self.triangle.labels)
         # the edge names are what half-plane captions talk about; span captions do not
         for label in self.triangle.edge_labels:
@@ -709,7 +727,7 @@ class FillView:
         c, entries = COLORS, []
         if kind == "snap":  # review r239 01-W1: the snap's step drew and keyed nothing
             entries += _snap_entries(trace)
-        elif kind != "winding" and self.triangle.arrows and trace.span is None:  # arrowheads
+        elif kind != "winding" and self.triangle.arrows:  # the walk chosen: the arrowheads
             entries.append(walk_entry(trace))
         if kind == "winding" and trace.turn is not None:
             arrow = r"$\circlearrowright$" if trace.turn == "clockwise" else r"$\circlearrowleft$"

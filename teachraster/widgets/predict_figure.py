@@ -302,6 +302,10 @@ class PredictPixels(FigurePrediction):
         honest prediction may be none (a sliver that one sample per pixel loses): ticked, it
         is an answer, and Check is enabled with no cell marked. Marking a cell unticks it.
         Without it (the default) Check waits for a marked cell.
+    one : bool
+        The question asks for one cell: the widget's line reads "Click the {cell} you expect
+        {picked}", not "the {cell}s ... (drag to paint several)", which contradicted "the one
+        pixel" of lesson 04's q_worst (review r297 S2). Default False.
 
     Attributes
     ----------
@@ -323,7 +327,7 @@ class PredictPixels(FigurePrediction):
     def __init__(self, question: str, answer, *, draw=None, asked=None, explain: str = "",
                  centres: bool = True, side: float = 5.0, style: str | None = "classroom",
                  cell: str = "pixel", picked: str = "lit",
-                 none: str | None = None) -> None:  # fmt: skip
+                 none: str | None = None, one: bool = False) -> None:  # fmt: skip
         words = {"cell": cell, "picked": picked} | ({} if none is None else {"none": none})
         for name, word in words.items():
             if not isinstance(word, str) or not word.strip():
@@ -363,7 +367,8 @@ class PredictPixels(FigurePrediction):
         offered = {} if none is None else {"noneLabel": none}
         super().__init__(question, explain, {"kind": "pixels", "width": width, "height": height,
                                              **picture, "cell": html.escape(cell),
-                                             "picked": html.escape(picked), **offered},
+                                             "picked": html.escape(picked), "one": bool(one),
+                                             **offered},
                          {"answer": np.argwhere(mask).tolist()})  # fmt: skip
         # ``acted``: the "none" choice ticked, an answer with no cell marked (the page sends it)
         self.state = {"given": [], "acted": False, "revealed": False}

@@ -356,7 +356,8 @@ function mountPixels(root, data, host) {
   const cell = data.cell || "pixel";
   const picked = data.picked || "lit";
   const cells = (n) => (n === 1 ? cell : `${cell}s`);
-  const note = element("div", { text: `Click the ${cell}s you expect ${picked} (drag to paint several).` });
+  const note = element("div", { text: data.one ? `Click the ${cell} you expect ${picked}.`
+    : `Click the ${cell}s you expect ${picked} (drag to paint several).` });
   root.insertBefore(note, canvas.parentElement);
   const W = data.width;
   const H = data.height;
