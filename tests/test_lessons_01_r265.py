@@ -153,7 +153,7 @@ def test_fig3_snap_tags_cross_no_edge_and_sit_by_their_vertex():
                 snapped = np.asarray(view.trace.snapped, dtype=float)
                 t = np.linspace(0, 1, 400)[:, None]
                 for tag, vertex in zip(view.setup_marks.coords, snapped):
-                    box = tag.get_bbox_patch().get_window_extent()
+                    box = (tag.get_bbox_patch() or tag).get_window_extent()  # r291: haloed, no box
                     (u0, v0), (u1, v1) = inv.transform([[box.x0, box.y0], [box.x1, box.y1]])
                     lo, hi = np.minimum([u0, v0], [u1, v1]), np.maximum([u0, v0], [u1, v1])
                     for k in range(3):
