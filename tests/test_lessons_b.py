@@ -5551,8 +5551,9 @@ def test_10_r247_items():
     assert "wrongly out" not in md and "rejected inside it (blue)" not in md
     # P2: what a smaller tile gains, and why cleared tiles reject nothing, held with q_hiz
     assert "covered whole sooner" not in md and "still hold the clear value" not in md
-    for words in ("So a smaller tile, \"\n        \"covered whole sooner",
-                  "still hold the clear value"):  # fmt: skip
+    # r300 P1: the held note no longer says which way the tile size moves the count (q_tile
+    # asks it); it points at the measurement
+    for words in ("How the tile size changes what Hi-Z rejects", "still hold the clear value"):
         where = next(t for t in text if words in t)
         assert where.startswith("q_hiz.hold()"), words
     # M1: §1 draws the block's values, its two corners where §1's cell finds them
@@ -5765,6 +5766,7 @@ def test_10_r264_m2_tile_size_and_order_measured_on_the_sphere():
     md = _lesson_10_sources()[2]
     assert "is measured on the sphere at the end of this section" in md
     assert "gains is in the note held under the question above" not in md
+    assert "what a smaller\ntile gains, more rejections" not in md  # r300 P1: q_tile's answer
 
 
 def test_10_r264_m3_conservative_rasterisation_fig1_and_small_items():
