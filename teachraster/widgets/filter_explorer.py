@@ -477,23 +477,25 @@ class FilterExplorer:
             error.update(self.image, self.truth)
 
     def _info_html(self) -> str:
-        """The status line: short enough for one line in a 1400-px window for every filter,
-        at a drag too, when "(on release)" stands for the RMS error (review r246 09 S1: a
-        line that wrapped pushed the figure down). The filter's name comes last, so that
-        neither its length nor the RMS's opens a gap inside the line (review r285 09 S4: a
-        fixed-width slot left "nearest" trailing 17 blanks); the numbers keep narrow boxes,
-        right-aligned, so that their digits do not shift the phrases after them."""
+        """The status line: short enough for one line in a 1400-px window, and as long for
+        every filter (the name and the reads in boxes of a fixed width), so that switching
+        filters never wraps it and moves the figure (review r184, 09-8: the longer names
+        wrapped it and the figure jumped 24 px). The RMS error comes last, in a box as wide
+        as a drag's "(on release)", so that a drag never lengthens the line either (review
+        r246 09 S1: it wrapped while the mouse was held and pushed the figure down a line)."""
         reads = self._reads()
         rms = DRAFT_RMS if self.truth is None else f"{self.rms:.3f}"
+        name = max(len(f) for f in TEXTURE_FILTERS) + 2  # bold is wider than 1ch a letter
         # the picture's own tilt first: during a drag the slider's readout may run ahead of
         # the kernel's picture, and these numbers are the picture's (review r233 09 W1)
         return (
             f"<b>{_fixed(f'{self.shown_tilt:.0f}°', 3, 'right')}</b>: "
+            f"{_fixed(f'<b>{self.shown_filter}</b>', name)} · "
             # texel *reads*: a footprint's size in texels is ρ, which λ = log2 ρ gives (review
             # r257 C2: "1.0 texels per pixel · largest λ 1.8" read as a contradiction)
             f"{_fixed(f'{reads:.1f}', 4, 'right')} texels read per pixel"
-            f" · largest λ {np.nanmax(self.lod):.1f} · RMS vs footprint mean <b>{rms}</b>"
-            f" · <b>{self.shown_filter}</b>"
+            f" · largest λ {np.nanmax(self.lod):.1f} · RMS vs footprint mean "
+            f"{_fixed(f'<b>{rms}</b>', len(DRAFT_RMS) + 1)}"
         )
 
     def _pending_html(self) -> str:
