@@ -340,13 +340,7 @@ def _sampled_at(ox: float, oy: float):
 
     def describe(case, xy, e, g, i, j):
         c, s = _centre(case, i, j), _centre(case, i, j, ox, oy)
-        if bool(cov.covered(xy, s)[0]) != g[i, j]:  # another mistake decides this pixel
-            return None
-        rule = "covers it" if e[i, j] else "leaves it uncovered"
-        where = _where(xy, c), _where(xy, s)
-        return (f"the centre {cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, so "
-                f"the rule {rule}; you sampled {cov.point(s)}, which lies {where[1]}, and "
-                f"{_yours(g[i, j])}", _ties(*where))  # fmt: skip
+        return _point_instead(xy, e, g, i, j, c, s, "sampled")
 
     return describe
 
@@ -506,13 +500,19 @@ def _point_mistakes() -> list[Mistake]:
 def _swapped_point(case, xy, e, g, i, j):
     """Pixel (i, j) tested at its centre's mirror (y, x): the two points' verdicts."""
     c = _centre(case, i, j)
-    s = c[::-1]
-    if bool(cov.covered(xy, s)[0]) != g[i, j]:  # another mistake decides this pixel
+    return _point_instead(xy, e, g, i, j, c, c[::-1], "tested")
+
+
+def _point_instead(xy, e, g, i, j, c, s, verb: str):
+    """Pixel (i, j) decided at the point ``s`` instead of its centre ``c``: the two points'
+    verdicts, or None where the student's answer is not the one ``s`` gives (another mistake
+    decides this pixel)."""
+    if bool(cov.covered(xy, s)[0]) != g[i, j]:
         return None
     rule = "covers it" if e[i, j] else "leaves it uncovered"
     where = _where(xy, c), _where(xy, s)
     return (f"the centre {cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, so the "
-            f"rule {rule}; you tested {cov.point(s)}, which lies {where[1]}, and "
+            f"rule {rule}; you {verb} {cov.point(s)}, which lies {where[1]}, and "
             f"{_yours(g[i, j])}", _ties(*where))  # fmt: skip
 
 
