@@ -41,7 +41,13 @@ from .common import (
     tint,
     two_colour,
 )
-from .label_places import boxes_around, place_edge_labels, place_vertex_labels
+from .label_places import (
+    boxes_around,
+    inside_share,
+    length_inside,
+    place_edge_labels,
+    place_vertex_labels,
+)
 from .style import COLORS, SIGNED_CMAP, VALUE_CMAP
 
 #: Above this many pixels along a side the grid lines would merge into grey: none are drawn.
@@ -661,7 +667,8 @@ def _left_of_long_edge(sorted_xy, point, margin: float) -> bool:
 def _box_clear(ax, tri, at, offset, align, size) -> bool:
     """Whether a label box of ``size`` (width, height, in points) at ``offset`` points from
     data point ``at``, aligned ``align`` (ha, va), lies clear of the triangle ``tri`` (3 × 2,
-    data units), within the Axes: no edge enters the box and no point of it is inside."""
+    data units), within the Axes: no edge enters the box and no point of it is inside (with
+    no edge in it, the box is wholly in or wholly out: its centre decides)."""
     x, y = ax.transData.transform(at) + np.asarray(offset) * ax.figure.dpi / 72.0
     w, high = (np.asarray(size, dtype=np.float64) * ax.figure.dpi / 72.0).tolist()
     x0 = {"left": x, "right": x - w, "center": x - w / 2}[align[0]]
@@ -669,20 +676,10 @@ def _box_clear(ax, tri, at, offset, align, size) -> bool:
     frame = ax.get_window_extent()
     if x0 < frame.x0 or y0 < frame.y0 or x0 + w > frame.x1 or y0 + high > frame.y1:
         return False
-    gx, gy = np.meshgrid(np.linspace(x0, x0 + w, 9), np.linspace(y0, y0 + high, 5))
-    box = ax.transData.inverted().transform(np.column_stack([gx.ravel(), gy.ravel()]))
-    lo, hi = box.min(axis=0), box.max(axis=0)
-    t = np.linspace(0.0, 1.0, 200)[:, None]
-    tri = np.asarray(tri, dtype=np.float64)
-    for a, b in zip(tri, np.roll(tri, -1, axis=0)):
-        pts = a + t * (b - a)
-        if ((pts >= lo) & (pts <= hi)).all(axis=1).any():
-            return False
-    # inside: the same side of all three edges (either winding)
-    sides = [np.sign((b[0] - a[0]) * (box[:, 1] - a[1]) - (b[1] - a[1]) * (box[:, 0] - a[0]))
-             for a, b in zip(tri, np.roll(tri, -1, axis=0))]  # fmt: skip
-    inside = (sides[0] == sides[1]) & (sides[1] == sides[2]) & (sides[0] != 0)
-    return not inside.any()
+    box = np.array([[x0, y0, x0 + w, y0 + high]])
+    shown = ax.transData.transform(np.asarray(tri, dtype=np.float64))
+    edges = np.stack([shown, np.roll(shown, -1, axis=0)], axis=1)
+    return not (length_inside(box, edges)[0] > 0 or inside_share(box, shown)[0] > 0)
 
 
 def _room_left_of(ax, x: float) -> float:
