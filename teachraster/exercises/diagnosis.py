@@ -556,14 +556,12 @@ def _inf_by_float32(spec: Exercise, r: Result) -> str | None:
     """±inf far from the origin where the exercise's own float32 words name the cause (a
     float32 plane in absolute coordinates cancels its area to 0, then divides by it): said
     with the inf, as before r286 told inf only as "a division by zero?"."""
-    if spec.float32_words is None:
+    # float32 turns finite inputs into inf only through a difference cancelled to 0 then
+    # divided by (overflow is _outside_float32's): the exercise says whether it can
+    if not spec.float32_makes_inf or spec.float32_words is None:
         return None
     special = spec.float32_words(r.args, r.expected, r.got)
-    # float32 turns finite inputs into inf only through a difference cancelled to 0 then
-    # divided by (overflow is _outside_float32's): other float32 words do not explain an inf
-    if not special or "cancel" not in special:
-        return None
-    return f"{_nan_words(r.args, r.expected, r.got)}{special}"
+    return f"{_nan_words(r.args, r.expected, r.got)}{special}" if special else None
 
 
 _NAN_WORDS = "your answer holds NaN (a 0/0, or a NaN input passed on?)"

@@ -186,6 +186,9 @@ class Exercise:
     float32_words : callable, optional
         ``float32_words(args, expected, got)``: words for float32 on this case (None: the
         general words).
+    float32_makes_inf : bool
+        Can float32 turn this exercise's finite inputs into ±inf (a difference cancelled to 0,
+        then divided by)? Then an unnamed inf is said with ``float32_words``.
     constant : callable, optional
         ``constant(value)``: the words for an answer that never changes, if not the default.
     answers : sequence of PackageAnswer
@@ -265,6 +268,7 @@ class Exercise:
     mistakes: Sequence = ()
     float32: Callable | None = None
     float32_words: Callable | None = None
+    float32_makes_inf: bool = False
     constant: Callable | None = None
     answers: Sequence[PackageAnswer] = ()
     draw: Callable | None = None

@@ -677,7 +677,8 @@ ONE_POINT = " (one call computes one point's three weights: it should take micro
 BARYCENTRIC = Exercise(
     "barycentric", barycentric_cases, lambda v: as_numbers(v, (3,), "3 weights, shape (3,)"),
     same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
-    float32=bary_float32, float32_words=bary_float32_words, answers=BARYCENTRIC_ANSWERS,
+    float32=bary_float32, float32_words=bary_float32_words, float32_makes_inf=True,
+    answers=BARYCENTRIC_ANSWERS,
     draw=_draw_bary, call=call_barycentric, slow=ONE_POINT, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student (r153 D3-6: the
