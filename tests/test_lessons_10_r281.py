@@ -44,11 +44,12 @@ def test_10_r281_items():
                  "teachraster's grid (the centre bit): 8 bits, int32 for differences below 64 px",
                  "llvmpipe's FIXED_ORDER: 8 sub-pixel bits"):  # fmt: skip
         assert line in printed, line
-    # M3: q_trav, asked under the figure it is counted on, its table held
+    # M3: q_trav, its figure and table held (r300 P2: asked before the figure numbers the
+    # visits, serpentine's count)
     asked = next(i for i, t in enumerate(text) if "q_trav = Predict(" in t)
-    assert "plot_traversal(" in text[asked] and text[asked + 1].startswith("q_trav.hold()")
-    # r292 P1: a choice reasoned on the paths (which order moves least), no longer a count
-    assert "answer=TRAV_CHOICES[least]," in text[asked] and ns.least == ("tiled", "morton")
+    assert "plot_traversal(" in text[asked + 1] and text[asked + 1].startswith("q_trav.hold()")
+    assert text[asked + 2].startswith("q_trav.hold()") and "plot_traversal(" not in text[asked]
+    assert "answer=serp," in text[asked] and ns.least == ("tiled", "morton")
     assert ns.trav_moves["scanline"] == ns.tile_changes["scanline"] == 15
     assert ns.trav_moves == ns.tile_changes and (ns.trav_moves["serpentine"], ns.trav_moves[
         "tiled"], ns.trav_moves["morton"]) == (9, 3, 3)  # fmt: skip
@@ -79,7 +80,8 @@ def test_10_r281_items():
     assert start.get_marker() == "*" and start.get_markerfacecolor() != "black"
     plt.close(fig)
     corner_fig = next(t for t in code if "plot_block_values(" in t)
-    assert "cmap=e12_art.image.cmap, norm=e12_art.image.norm" in corner_fig
+    # r300 FIG1: on the left panel's colours the block was one flat blue: its own range now
+    assert 'cmap="Blues", norm=block_norm' in corner_fig
 
 
 @pytest.mark.gl
