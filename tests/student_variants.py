@@ -2059,3 +2059,62 @@ KINDS.update(
         "quad lanes as (y, x)": "points (y, x)",
     }
 )
+
+
+# -- r301 07: eight slips whose first explanation gave the rule, not the mistake ---------------
+def _level_area(ddx, ddy, size):
+    """½·log2 |det J|: the side of a square of the footprint's area, in texels."""
+    ax, ay = _axes(ddx, ddy, size)
+    return 0.5 * math.log2(abs(ax[0] * ay[1] - ax[1] * ay[0]))
+
+
+def _quad_lanes(how):
+    """quad_derivatives with ddx along the quad's lower row, ddy along its right column, or
+    each pixel's quad partner minus the pixel (the sign turns on odd columns and rows)."""
+
+    def quad_derivatives(xy, w, f, row, col):
+        xy, w, f = (np.asarray(a, dtype=float) for a in (xy, w, f))
+
+        def value(c, r):  # f at pixel (r, c)'s centre, perspective-correct, extrapolated
+            p = (c + 0.5, r + 0.5)
+            lam = np.array([edge_function(xy[(k + 1) % 3], xy[(k + 2) % 3], p)
+                            for k in range(3)]) / edge_function(*xy)  # fmt: skip
+            return float((lam / w) @ f / (lam / w).sum())
+
+        r0, c0 = row - row % 2, col - col % 2
+        if how == "partner":
+            own = value(col, row)
+            return value(col ^ 1, row) - own, value(col, row ^ 1) - own
+        ddx = value(c0 + 1, r0) - value(c0, r0)
+        ddy = value(c0, r0 + 1) - value(c0, r0)
+        if how == "lower row":
+            ddx = value(c0 + 1, r0 + 1) - value(c0, r0 + 1)
+        if how == "right column":
+            ddy = value(c0 + 1, r0 + 1) - value(c0 + 1, r0)
+        return ddx, ddy
+
+    return quad_derivatives
+
+
+R301 = {
+    "bilinear with x = u·W + ½": (
+        "bilinear", _bilinear_with(centre=-0.5), "you added the half texel", "half texel added"),
+    "bilinear as one mean over every value": (
+        "bilinear", lambda t, uv, wrap: float(np.mean(t)), "its channels averaged together",
+        "texture's mean, one number"),
+    "λ of the footprint's area": ("mip_level", _level_area, "footprint's area", "footprint area"),
+    "λ rounded": (
+        "mip_level", lambda *a: float(round(CORRECT["mip_level"](*a))),
+        "you rounded λ to a whole number", "rounded"),
+    "λ + ½": ("mip_level", lambda *a: CORRECT["mip_level"](*a) + 0.5, "log2 ρ + ½", "plus half"),
+    "quad ddx along the lower row": (
+        "quad_derivatives", _quad_lanes("lower row"), "along the quad's lower row", "lower row"),
+    "quad ddy along the right column": (
+        "quad_derivatives", _quad_lanes("right column"), "along the quad's right column",
+        "right column"),
+    "quad partner minus own pixel": (
+        "quad_derivatives", _quad_lanes("partner"), "partner in the quad minus the pixel itself",
+        "partner minus own"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R301.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R301.items()})

@@ -109,12 +109,14 @@ _COMBINE = {
     "mean": lambda x, y: (x + y) / 2,
 }
 _LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r,
-        "plus one": lambda r: math.log2(r) + 1, "floor": lambda r: math.floor(math.log2(r))}  # fmt: skip
+        "plus one": lambda r: math.log2(r) + 1, "floor": lambda r: math.floor(math.log2(r)),
+        "round": lambda r: float(round(math.log2(r))), "plus half": lambda r: math.log2(r) + 0.5}  # fmt: skip
 
 
 def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False, pair="step"):  # fmt: skip
     """mip_level with the usual mistakes as knobs (the defaults are GL's rule); ``pair``
-    "coordinate" builds the axes as (∂u/∂x, ∂u/∂y) and (∂v/∂x, ∂v/∂y) (r85 07: unnamed)."""
+    "coordinate" builds the axes as (∂u/∂x, ∂u/∂y) and (∂v/∂x, ∂v/∂y) (r85 07: unnamed);
+    ``combine="area"`` takes ρ = √|det J|, the footprint's area as a square (r301)."""
     h, w = size
     sx, sy = {"texels": (w, h), "units": (1, 1), "swapped": (h, w)}[scale]
     ax = (float(ddx[0]) * sx, float(ddx[1]) * sy)
@@ -123,6 +125,8 @@ def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", 
         ax, ay = (ax[0], ay[0]), (ax[1], ay[1])
     if combine == "vectors":  # r286 M3: ddx + ddy added as vectors, the diagonal step
         rho = _NORMS[norm]((ax[0] + ay[0], ax[1] + ay[1]))
+    elif combine == "area":  # r301: ½·log2 |det J|, the side of a square of the same area
+        rho = math.sqrt(abs(ax[0] * ay[1] - ax[1] * ay[0]))
     else:
         rho = _COMBINE[combine](_NORMS[norm](ax), _NORMS[norm](ay))
     if rho <= 0 and log != "none":
@@ -167,6 +171,12 @@ LEVEL_KNOBS = Knobs(level_with, {
         Slip("ddx + ddy as vectors", "you added ddx and ddy as vectors, ‖ddx + ddy‖: that is "
              "the step to the diagonal pixel; each derivative is its own footprint axis, and GL "
              "takes the longer of their two lengths", "vectors"),
+        # r301: the footprint's area (a rule of the literature) was told only the rule
+        Slip("footprint area", "your λ is ½·log2 of the footprint's area, |det J| (the "
+             "parallelogram the two axes span, in texels²): that is the side of a square of "
+             "the same area, shorter than the longer axis wherever the footprint is stretched "
+             "or skewed; GL takes the longer axis (ρ = max), so that no direction is "
+             "undersampled", "area"),
         Slip("geometric mean", "that is the log of the geometric mean of the axes; GL takes the "
              "longer axis", "geometric"),
         Slip("mean of the axes", "that is the mean of the two axes; GL takes the longer axis "
@@ -181,6 +191,13 @@ LEVEL_KNOBS = Knobs(level_with, {
              "one texel per pixel (ρ = 1) is λ = 0", "plus one"),
         Slip("rounded down", "you rounded λ down to a whole level (floor or int()): λ is "
              "fractional, and 7.3's trilinear blends the two levels around it", "floor"),
+        # r301: λ rounded, and λ + ½ (GL's nearest-level rounding), were told only the rule
+        Slip("rounded", "you rounded λ to a whole number: λ is log2 ρ as it comes, fractional "
+             "in general; the level choice comes later (7.3's trilinear blends the two levels "
+             "around it)", "round"),
+        Slip("plus half", "your λ is log2 ρ + ½, half a level too many: the ½ belongs to "
+             "rounding λ to the nearest level (GL's NEAREST_MIPMAP choice), which comes later; "
+             "λ itself is log2 ρ, so one texel per pixel (ρ = 1) is λ = 0", "plus half"),
     ],
     "pair": [
         Slip("derivatives paired by coordinate", "you paired the derivatives by coordinate, "

@@ -119,6 +119,10 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
     exact = [_at(xy, w, f, at[0] + eps, at[1]) - _at(xy, w, f, at[0] - eps, at[1]),
              _at(xy, w, f, at[0], at[1] + eps) - _at(xy, w, f, at[0], at[1] - eps)]  # fmt: skip
     lr = _at(xy, w, f, c0 + 1.5, r0 + 1.5)
+    own = _at(xy, w, f, col + 0.5, row + 0.5)
+    # r301: each pixel's quad partner (the other lane of its row, of its column) minus it
+    partner = np.array([_at(xy, w, f, (col ^ 1) + 0.5, row + 0.5) - own,
+                        _at(xy, w, f, col + 0.5, (row ^ 1) + 0.5) - own])  # fmt: skip
     return {
         "unaligned": pair(row, col),
         # r286 M3: the slips a reader found told only the rule
@@ -141,6 +145,10 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         "row col swapped": pair(col - col % 2, row - row % 2),
         # the lanes' points as (y, x): each difference then runs along the other axis too
         "points (y, x)": pair(c0, r0)[::-1],
+        # r301: one difference along the quad's other row or column was told only the rule
+        "lower row": np.array([lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), right[1]]),
+        "right column": np.array([right[0], lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]),
+        "partner minus own": partner,
         "centred": np.array(
             [
                 _at(xy, w, f, col + 1.5, row + 0.5) - _at(xy, w, f, col - 0.5, row + 0.5),
@@ -193,7 +201,28 @@ MISTAKES = {
     "(x, y) = (col + ½, row + ½), x along the row",
     "centred": "you took a centred difference around the pixel, (f(x + 1) − f(x − 1))/2: the "
     "GPU differences the lanes of the pixel's 2×2 quad, right minus left, lower minus upper",
+    "lower row": "your ddx is taken along the quad's lower row (lower right − lower left); "
+    "coarse derivatives take ddx along its upper row, f(upper right) − f(upper left), for all "
+    "four pixels",
+    "right column": "your ddy is taken along the quad's right column (lower right − upper "
+    "right); coarse derivatives take ddy along its left column, f(lower left) − f(upper left), "
+    "for all four pixels",
+    "partner minus own": lambda a, e, g: _partner_words(a[3], a[4]),
 }
+
+
+def _partner_words(row: int, col: int) -> str:
+    """Each pixel's quad partner minus the pixel itself, said for this pixel's row and column
+    (r301: told only the rule): the sign turns on odd columns and rows."""
+    flips = [f"on odd column {col} the partner lies to the left, so your ddx is left minus "
+             "right" if col % 2 else "", f"on odd row {row} the partner lies above, so your "
+             "ddy is upper minus lower" if row % 2 else ""]  # fmt: skip
+    said = "; ".join(x for x in flips if x) or "here the pixel is the upper-left lane itself"
+    return (
+        f"you took each pixel's partner in the quad minus the pixel itself: {said}. A "
+        "difference runs right minus left and lower minus upper, and coarse derivatives "
+        "take the quad's upper row and left column for all four pixels"
+    )
 
 
 def explain_quad(args, expected, got) -> str:

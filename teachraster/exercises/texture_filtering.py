@@ -66,7 +66,9 @@ def same_value(got, expected, args) -> bool:
     return all_close(got.reshape(np.shape(expected)), expected, 1e-6)
 
 
-ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1)}
+#: (the shift subtracted, the texels added to W): x = u·(W + span) − shift; "plus half" is
+#: the half texel added, x = u·W + ½ (r301: the sign of the shift turned)
+ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1), "plus half": (-0.5, 0)}
 
 
 def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=False,
@@ -74,7 +76,8 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     """A bilinear filter with knobs for the usual mistakes (the defaults are GL's LINEAR).
 
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
-    last texel centres at u = 0 and 1 (x = u·(W − 1)); ``floor="trunc"`` finds the texel to the
+    last texel centres at u = 0 and 1 (x = u·(W − 1)), "plus half" adds the half texel
+    (x = u·W + ½); ``floor="trunc"`` finds the texel to the
     left with int(); ``swap`` gives the left texel the weight of the right one (``"x"``, ``"y"``:
     along that axis only), ``swap="fractions"`` blends along x by y's fraction and along y by
     x's; ``wrap_as``
@@ -259,6 +262,11 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
         Slip("u·(W − 1)", lambda a, e, g: "u·(W − 1) puts the first and last texel centres at "
              f"u = 0 and 1; texel centres are at (i + ½)/W, so x = u·W − ½ (here "
              f"{num(_xy(a)[0])})", "stretched"),
+        # r301: the half texel added was told only the rule
+        Slip("half texel added", lambda a, e, g: "you added the half texel, x = u·W + ½ and "
+             "y = v·H + ½: every sample lands one whole texel right of and below its place, so "
+             "at a texel's centre you read the texel diagonally below-right of it; texel centres are "
+             f"at (i + ½)/W, so x = u·W − ½ (here {num(_xy(a)[0])})", "plus half"),
     ],
     "floor": [Slip("int() for floor", _trunc_words, "trunc")],
     "swap": [Slip("weights swapped", "the weight of the right (lower) texel is the fraction "
@@ -365,6 +373,12 @@ BILINEAR_MISTAKES = [
     Mistake("texture's mean", ": that is the mean of the whole texture, whatever uv: bilinear "
             "blends only the four texels around (u, v)",
             gives=lambda tex, uv, wrap: np.asarray(tex, float).mean(axis=(0, 1))),
+    # r301: one mean over every value, channels too, was told only the rule (it fails the
+    # three-channel cases, which the per-channel mean above gives)
+    Mistake("texture's mean, one number", ": that is the mean of all the texture's values "
+            "as one number (its channels averaged together too), whatever uv: bilinear blends "
+            "only the four texels around (u, v), each channel on its own",
+            gives=lambda tex, uv, wrap: float(np.mean(np.asarray(tex, float)))),
     Mistake("nearest texel", ": that is the nearest texel; bilinear blends the four texels "
             "around (u, v)", gives=_nearest),
     # a symptom: a texel alone is also what swapped weights give at a texel centre (r40 07-1),
