@@ -1624,12 +1624,14 @@ def test_the_history_chart_names_the_frame_it_shows():
 def test_each_frame_opens_at_a_pixel_where_its_pair_differs():
     """r32 D11-2: every frame opened at (24, 32), where frames 3 to 9 agree with their
     intended frames, so the two tables were the same. A frame chosen in the list opens at a
-    pixel where its pair differs: the pixel on show if they differ there (so a pixel carries
-    over to a look-alike), else the nearest that does; the notebook says so."""
+    pixel where its pair differs and that bears the mark of its mistake (r298 W2: frame 6
+    opened at (23, 47), which its sliver misses): the pixel on show if it is one (so a pixel
+    carries over to a look-alike), else the nearest that is; the notebook says so."""
     from teachraster.widgets import FrameInspector
     from teachraster.widgets.frame_inspector import changed_pixel
 
-    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(), backend="image")
+    w = FrameInspector(frames=ex.frames_to_inspect(), pairs=ex.frame_pairs(),
+                       marks=ex.frame_marks(), backend="image")  # fmt: skip
     try:
         assert bf._differs(1)[w.row.value, w.col.value]
         for n in ANSWERS:
@@ -1638,6 +1640,7 @@ def test_each_frame_opens_at_a_pixel_where_its_pair_differs():
                 w.scene.value = name
                 at = (w.row.value, w.col.value)
                 assert bf._differs(n)[at], (name, at)
+                assert ANSWERS[n] in _marks(n, *at), (name, at)
                 assert (w.history.row, w.history.col) == at
                 assert f"row {at[0]}, col {at[1]}" in w.hist_ax.get_title()
                 assert w.table.value.count("<b>") == 2 and f"<b>{name}</b>" in w.table.value
@@ -1659,6 +1662,10 @@ def test_each_frame_opens_at_a_pixel_where_its_pair_differs():
     assert changed_pixel(f, f, 3, 4) == (3, 4)
     text = " ".join(_cells()["inspector_text"].split())
     assert "opens at a pixel where it and its pair differ" in text, text
+    assert "ex.frame_marks()" in _cells()["inspector"]
+    # r298 W2: without the marks, frame 6 opened from (24, 32) where its sliver does not pass
+    six = ex.broken_frame(6)
+    assert ANSWERS[6] not in _marks(6, *changed_pixel(six.frame, six.intended, 24, 32))
 
 
 def test_a_next_that_finds_nothing_is_told_what_happened():
@@ -1671,3 +1678,56 @@ def test_a_next_that_finds_nothing_is_told_what_happened():
 
     text = str(ex.check("broken_frame_1", copied))
     assert "StopIteration: a next(...) found no item" in text, text
+
+
+def test_the_sliver_is_outlined_dashed_and_drawn_in_the_failure_picture():
+    """r298 W1, FIG1: the sliver of frames 6 and 8 covers no pixel centre, so no view showed
+    it. Every submitted triangle is outlined from the trace, the sliver dashed and the others
+    solid; a "sliver" answer's failure picture adds the pixel's square and the thin triangle,
+    enlarged, which its explanation names."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Polygon
+
+    from teachraster.plotting.frame_debug import plot_triangle_edges
+
+    fig, ax = plt.subplots()
+    try:
+        for n in (6, 8):
+            frame = ex.broken_frame(n).frame
+            thin = int(np.argmin(bf._altitudes(frame)))
+            lines = plot_triangle_edges(ax, frame)
+            dashed = [dashes is not None for _, dashes in lines.get_linestyles()]
+            assert len(dashed) == 3 * len(frame.trace.window), n
+            assert [i // 3 for i, d in enumerate(dashed) if d] == [thin] * 3, n
+        ax.clear()
+        report = ex.check("broken_frame_6", lambda b: ("sliver", (23, 47), (0.8489, 0.299992)))
+        assert "does not pass through this pixel's square" in report.failures[0].explanation
+        report.plot(ax)
+        assert ax.get_xlim()[1] == 2 * bf.W + 12 + 12 + bf.ZOOM_SIZE
+        needle = [p for p in ax.patches if isinstance(p, Polygon)]
+        assert len(needle) == 1  # clipped to the zoom, not the whole strip
+        assert needle[0].get_clip_box().width < ax.bbox.width / 3
+        assert "(23, 47) rendered, enlarged" in ax.get_xlabel()
+    finally:
+        plt.close(fig)
+
+
+def test_the_history_header_names_the_compare_and_the_depth_format():
+    """r298 M1, S1: frame 3's tie comes from a 16-bit depth buffer and frames 1 and 7 keep the
+    smaller depth (LESS) of data mapped the other way; the header said neither."""
+    first = ex.broken_frame(3).frame.history(13, 52).table().splitlines()[0]
+    assert first.endswith("depth test on (LESS), unorm16 depth:"), first
+    off = tr.render(tr.get_scene("intersecting_triangles"), None, 64, 48, trace=True,
+                    depth_test=False).history(24, 32).table().splitlines()[0]  # fmt: skip
+    assert off.endswith("depth test off (ALWAYS), float64 depth:"), off
+
+
+def test_a_triangle_number_as_an_integral_float_is_read():
+    """r298 S4: 9.0 was refused as "not an int"; 9.5 still is."""
+    assert bf._as_evidence("culled winding", 9.0) == 9
+    assert bf._as_evidence("culled winding", np.float64(9.0)) == 9
+    with pytest.raises(Exception, match="triangle's number"):
+        bf._as_evidence("culled winding", 9.5)

@@ -31,7 +31,7 @@ How it is built (one engine for every exercise):
   beside the package's (:mod:`.capstone_render`); ``broken_frame(n)`` is one of the frames
   lesson 11's exercises diagnose (:mod:`teachraster.exercises.broken_frames`),
   ``frames_to_inspect()`` every one of them and its intended frame for the ``FrameInspector``,
-  ``frame_pairs()`` which two are a pair.
+  ``frame_pairs()`` which two are a pair, ``frame_marks()`` the pixels each opens at.
 
 The checker sits above the study layer: it takes its cases from the hard-case catalogue
 (:mod:`teachraster.study.hardcases`) and its expected answers from the core, so there is one
@@ -43,6 +43,7 @@ from .broken_frames import (
     CAUSES,
     EVIDENCE,
     broken_frame,
+    frame_marks,
     frame_note,
     frame_pairs,
     frames_to_inspect,
@@ -66,6 +67,7 @@ __all__ = [
     "frame_note",
     "capstone",
     "check",
+    "frame_marks",
     "frame_pairs",
     "frames_to_inspect",
     "names",

@@ -501,6 +501,28 @@ def frame_pairs() -> dict[str, str]:
     return {f"frame {b.number}": f"intended {b.number}" for b in broken_frames()}
 
 
+def _bears_mark(number: int, row: int, col: int) -> bool:
+    """Does pixel (row, col) of frame ``number`` bear the mark of the frame's own cause
+    (:data:`_SIGNS`): where its two histories part as that mistake makes them part?"""
+    cause = next(c for c in CAUSES if _keyed(number, c))
+    return bool(_SIGNS[cause][0](_pixel(number, row, col), _as_frame(number)))
+
+
+def frame_marks() -> dict:
+    """For ``FrameInspector(marks=...)``: each name of :func:`frames_to_inspect`, a test
+    ``bears(row, col)`` of the changed pixels a frame opens at, those that bear the mark of
+    its mistake (review r298 W2: frame 6 opened at (23, 47), where its thin triangle does not
+    pass, and a diagnosis there is refused). It names no cause; it says only where the two
+    histories part as the frame's mistake makes them part, as the check asks.
+
+    >>> marks = frame_marks()
+    >>> marks["frame 1"](24, 28), marks["intended 1"](0, 0)
+    (True, False)
+    """
+    return {f"{what} {b.number}": (lambda row, col, n=b.number: _bears_mark(n, row, col))
+            for b in broken_frames() for what in ("frame", "intended")}  # fmt: skip
+
+
 #: A note on each frame (how it was made, and how its mistake usually shows), told once its
 #: check has passed: the words name the mistake (r16 N2: kept in the notebook's locked cell,
 #: they stood in its source, readable before the frame was solved). r18-5: every frame after
@@ -723,7 +745,8 @@ def _as_evidence(cause: str, value):
         raise WrongAnswerType(f"returned the stage {value!r} as the evidence: the evidence for "
                               f"{cause!r} is {what}, read off the pixel's history")  # fmt: skip
     if kind == "triangle":
-        if isinstance(value, bool | np.bool_) or not _integral(value):
+        # r298 S4: 9.0 is triangle 9 (an integral float, as for a row or column)
+        if isinstance(value, bool | np.bool_) or not _integral(value, exact=False):
             raise WrongAnswerType(f"returned the evidence {short(value)}: for {cause!r} it is "
                                   f"a triangle's number, an int: {what}")  # fmt: skip
         return int(value)
@@ -1159,9 +1182,22 @@ def _altitudes(frame: Frame) -> np.ndarray:
     return area2 / longest
 
 
+#: The failure picture's zoom on a sliver answer: pixels each side of the chosen one, and
+#: the data units (frame pixels) the zoom takes beside the two frames (its height: the frame's).
+ZOOM_REACH, ZOOM_SIZE = 2, H
+
+
 def _draw(ax, case, got):
     """The broken frame with the chosen pixel marked, and the intended one beside it in the
-    same axes (an inset outside the axes would be clipped by the figure's edge)."""
+    same axes (an inset outside the axes would be clipped by the figure's edge), each with
+    its triangles' outlines (dashed where one covers no centre: the sliver,
+    :func:`~teachraster.plotting.frame_debug.plot_triangle_edges`). For an answer naming
+    "sliver", a zoom on the chosen pixel beside them: its square, the pixel centres and the
+    thin triangle, which the explanation names (review r298 FIG1: they were not drawn)."""
+    from matplotlib.transforms import Affine2D  # only where a figure is drawn
+
+    from ..plotting.frame_debug import plot_triangle_edges
+
     number = int(case[2])
     if isinstance(got, _Number):  # the passing example: the answer accepted, if any
         got = got.right
@@ -1170,20 +1206,65 @@ def _draw(ax, case, got):
     artists = [ax.imshow(_rgb(b.frame), extent=(0, W, H, 0), interpolation="nearest"),
                ax.imshow(_rgb(b.intended), extent=(W + gap, 2 * W + gap, H, 0),
                          interpolation="nearest")]  # fmt: skip
-    if isinstance(got, tuple) and len(got) == 3 and got[0] in CAUSES:  # an answer, as read
+    for frame, x in ((b.frame, 0), (b.intended, W + gap)):
+        lines = plot_triangle_edges(ax, frame)
+        if lines is not None:
+            lines.set_transform(Affine2D().translate(x, 0) + ax.transData)
+            artists.append(lines)
+    right, label = 2 * W + gap, "left: as rendered · right: as intended"
+    answer = isinstance(got, tuple) and len(got) == 3 and got[0] in CAUSES
+    if answer:  # an answer, as read
         _, (row, col), _ = got
-        from matplotlib.patheffects import withStroke  # only where a figure is drawn
+        from matplotlib.patheffects import withStroke
 
         halo = [withStroke(linewidth=5, foreground="white")]  # r18-15: found on any colour
         for x in (col, col + W + gap):  # on both pictures (r7: on the broken one only)
             artists += ax.plot([x, x + 1, x + 1, x, x], [row, row, row + 1, row + 1, row],
                                color="#D55E00", lw=2.5, path_effects=halo)  # fmt: skip
-    ax.set_xlim(0, 2 * W + gap)
+        if got[0] == "sliver" and 0 <= row < H and 0 <= col < W:
+            artists += _zoom(ax, b.frame, row, col, right + gap)
+            right = right + gap + ZOOM_SIZE
+            label = f"as rendered · as intended · ({row}, {col}) rendered, enlarged"
+    ax.set_xlim(0, right)
     ax.set_ylim(H, 0)
     ax.set_xticks([0, W // 2, W - 1, W + gap, W + gap + W // 2, 2 * W + gap - 1],
                   ["0", str(W // 2), str(W - 1), "0", str(W // 2), str(W - 1)])  # fmt: skip
-    ax.set_xlabel("left: as rendered · right: as intended", fontsize="small")
+    ax.set_xlabel(label, fontsize="small")
     ax.set_title(f"frame {number}: {b.symptom}", fontsize="small")
+    return artists
+
+
+def _zoom(ax, frame: Frame, row: int, col: int, x0: float) -> list:
+    """Pixel (row, col) of ``frame`` and :data:`ZOOM_REACH` pixels round it, enlarged into
+    the square [x0, x0 + ZOOM_SIZE] × [0, H] of ``ax``: the picture, the pixel centres
+    (dots), the pixel's square (orange) and the frame's thinnest triangle (:func:`_altitudes`,
+    the one the check calls "the thin triangle"), read off its trace, clipped to the square."""
+    from matplotlib.patches import Polygon, Rectangle
+
+    n = 2 * ZOOM_REACH + 1
+    scale = ZOOM_SIZE / n
+    c0, r0 = col - ZOOM_REACH, row - ZOOM_REACH
+
+    def at(x, y):  # frame window (x, y) -> the zoom's data coordinates
+        return x0 + (np.asarray(x) - c0) * scale, (np.asarray(y) - r0) * scale
+
+    padded = np.pad(_rgb(frame), ((ZOOM_REACH,) * 2, (ZOOM_REACH,) * 2, (0, 0)), constant_values=1)
+    crop = padded[row : row + n, col : col + n]  # white beyond the frame's edge
+    artists = [ax.imshow(crop, extent=(x0, x0 + ZOOM_SIZE, H, 0), interpolation="nearest")]
+    box = Rectangle((x0, 0), ZOOM_SIZE, H, fill=False, lw=1, ec="#444444")
+    artists.append(ax.add_patch(box))
+    for k in range(1, n):  # the pixel grid
+        artists += ax.plot(*at([c0 + k] * 2, [r0, r0 + n]), color="#888888", lw=0.5)
+        artists += ax.plot(*at([c0, c0 + n], [r0 + k] * 2), color="#888888", lw=0.5)
+    cx, cy = np.meshgrid(np.arange(c0, c0 + n) + 0.5, np.arange(r0, r0 + n) + 0.5)
+    artists += ax.plot(*at(cx.ravel(), cy.ravel()), "o", color="#222222", ms=2.5)
+    x, y = at([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row])
+    artists += ax.plot(x, y, color="#D55E00", lw=2.5)
+    k = int(np.argmin(_altitudes(frame)))
+    thin = Polygon(np.column_stack(at(*frame.trace.window[k, :, :2].T)), closed=True,
+                   fc="#0072B2", ec="#0072B2", alpha=0.6, lw=1.5)  # fmt: skip
+    artists.append(ax.add_patch(thin))
+    thin.set_clip_path(box)
     return artists
 
 

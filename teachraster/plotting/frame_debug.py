@@ -178,12 +178,17 @@ def plot_triangle_edges(
     lw: float = 0.6,
     alpha: float = 0.45,
 ):
-    """Draw thin the edges of the triangles the frame shows (its trace's window positions,
-    after clipping, of each triangle that owns a pixel) over a picture of it, so that where
-    triangles meet can be seen even where their colours blend into one another (review r90
-    11-4: the fan's hub, white on white). Left out (None returned) where those triangles
-    cover fewer than ``min_pixels`` pixels each on average: edges a pixel or two apart would
-    hide the picture (a 64 x 48 uv_sphere: 3 px a triangle). Also None without a trace.
+    """Draw thin the edges of every triangle the frame submitted (its trace's window
+    positions, after clipping) whose bounding box reaches the image and that was not culled,
+    as RenderDoc's wireframe overlay does, so that where triangles meet can be seen even
+    where their colours blend into one another (review r90 11-4: the fan's hub, white on
+    white). A triangle that covers no pixel centre (a sliver between the rows of centres,
+    :func:`~teachraster.pipeline.debugging.overlays.covered_pieces`) is drawn dashed: it
+    reaches no pixel's history as a fragment, and without its outline no view showed it
+    (review r298 W1: exercise 11's frames 6 and 8). Left out (None returned) where the
+    triangles the frame shows cover fewer than ``min_pixels`` pixels each on average: edges
+    a pixel or two apart would hide the picture (a 64 x 48 uv_sphere: 3 px a triangle).
+    Also None without a trace. Returns the LineCollection, one segment an edge.
 
     Examples
     --------
@@ -200,16 +205,33 @@ def plot_triangle_edges(
     """
     from matplotlib.collections import LineCollection
 
+    from ..pipeline.debugging.overlays import covered_pieces
+
     trace = getattr(frame, "trace", None)
-    if trace is None:
+    if trace is None or getattr(trace, "debug", None) is None:
         return None
     owners = frame.triangle_id[frame.triangle_id >= 0]
-    shown = np.isin(trace.parent, owners) & ~trace.culled
-    if not shown.any() or owners.size / np.unique(owners).size < min_pixels:
+    if not owners.size or owners.size / np.unique(owners).size < min_pixels:
         return None
-    xy = trace.window[shown, :, :2]
-    edges = np.stack([xy, np.roll(xy, -1, axis=1)], axis=2).reshape(-1, 2, 2)
-    lines = LineCollection(edges, colors=color, linewidths=lw, alpha=alpha, zorder=3)
+    height, width = frame.triangle_id.shape
+    xy = trace.window[:, :, :2]
+    with np.errstate(invalid="ignore"):  # a NaN corner: its triangle is left out
+        reaches = ((xy[:, :, 0].max(axis=1) >= 0) & (xy[:, :, 0].min(axis=1) <= width)
+                   & (xy[:, :, 1].max(axis=1) >= 0) & (xy[:, :, 1].min(axis=1) <= height))  # fmt: skip
+    drawn = np.flatnonzero(reaches & ~np.asarray(trace.culled, bool))
+    if not len(drawn):
+        return None
+    covered = covered_pieces(frame)[drawn]
+    edges = np.stack([xy[drawn], np.roll(xy[drawn], -1, axis=1)], axis=2).reshape(-1, 2, 2)
+    # each edge from its left end: a sliver's two long edges, walked opposite ways, would
+    # start their dashes at opposite ends and fill each other's gaps into a solid line
+    flip = edges[:, 0, 0] > edges[:, 1, 0]
+    edges[flip] = edges[flip, ::-1]
+    each = np.repeat(covered, 3)
+    # a dashed triangle is drawn darker and twice as thick: a sliver is the one to find
+    rgba = [mpl.colors.to_rgba(color, alpha if c else min(1.0, 2 * alpha)) for c in each]
+    lines = LineCollection(edges, colors=rgba, linewidths=np.where(each, lw, 2 * lw), zorder=3,
+                           linestyles=["solid" if c else (0, (3, 2)) for c in each])  # fmt: skip
     ax.add_collection(lines, autolim=False)
     return lines
 

@@ -263,22 +263,33 @@ def _picture(frame) -> np.ndarray:
     )
 
 
-def changed_pixel(frame, pair, row: int, col: int) -> tuple[int, int]:
+def changed_pixel(frame, pair, row: int, col: int, bears=None) -> tuple[int, int]:
     """(row, col) itself where the pictures of ``frame`` and ``pair`` differ there, else the
     pixel nearest it where they differ (ties: the first in reading order), else (row, col):
     where a frame opens beside its pair (review r32 D11-2: every frame opened at (24, 32),
     where seven of exercise 11's nine pairs agree, and the two tables were the same). A
     pixel kept where it differs lets a student carry a pixel from a frame to its look-alike;
-    the nearest one is one of many, no answer singled out."""
+    the nearest one is one of many, no answer singled out. ``bears`` (row, col) -> bool, if
+    given, narrows "differ" to the changed pixels it accepts (exercise 11: those that bear
+    the mark of the frame's mistake, review r298 W2: frame 6 opened where its sliver does
+    not pass), asked in order of distance until one is accepted; where it accepts none, the
+    rule without it."""
     a, b = _picture(frame), _picture(pair)
     if a.shape != b.shape:  # one with colour, one without: compare what each shows
         a, b = (np.asarray(f.triangle_id, float)[..., None] for f in (frame, pair))
     differs = ~np.isclose(a, b, atol=1e-6).all(axis=2)
-    if differs[row, col] or not differs.any():
+    if not differs.any():
         return row, col
-    rows, cols = np.nonzero(differs)  # in reading order: argmin keeps the first tie
-    k = int(np.argmin((rows - row) ** 2 + (cols - col) ** 2))
-    return int(rows[k]), int(cols[k])
+    rows, cols = np.nonzero(differs)  # in reading order: a stable sort keeps the first tie
+    near = np.argsort((rows - row) ** 2 + (cols - col) ** 2, kind="stable")
+    if bears is not None:  # the pixel on show first, if it differs, then the nearest
+        first = [k for k in near if (rows[k], cols[k]) == (row, col)]
+        for k in first + [k for k in near if (rows[k], cols[k]) != (row, col)]:
+            if bears(int(rows[k]), int(cols[k])):
+                return int(rows[k]), int(cols[k])
+    if differs[row, col]:
+        return row, col
+    return int(rows[near[0]]), int(cols[near[0]])
 
 
 #: The history table's font size, alone and with its pair's beside it: 14 px where the window
@@ -350,6 +361,10 @@ class FrameInspector(Holdable):
         show, as an engineer compares two captures in two RenderDoc windows (review r14,
         exercise 11: the inspector showed one frame, the other was read from memory). A frame
         chosen in the list opens at a pixel where it and its pair differ (review r32).
+    marks : dict of str to callable, optional
+        With ``pairs``: for a frame's name, ``bears(row, col) -> bool``, the changed pixels
+        the frame should open at (:func:`changed_pixel`; exercise 11's
+        ``ex.frame_marks()``: those that bear the mark of the frame's mistake).
     backend, style
         As for the other widgets.
 
@@ -382,9 +397,11 @@ class FrameInspector(Holdable):
                  height: int = 48, *, view: str = "image", row: int | None = None,
                  col: int | None = None, samples: int = 1, depth_test: bool = True,
                  glass: bool = False, frames: dict | None = None, pairs: dict | None = None,
-                 backend: str = "auto", style: str | None = None) -> None:  # fmt: skip
+                 marks: dict | None = None, backend: str = "auto",
+                 style: str | None = None) -> None:  # fmt: skip
         self.frames = _checked_frames(frames)
         self.pairs = _checked_pairs(pairs, self.frames)
+        self.marks = dict(marks or {})
         if self.frames:
             scene = scene if scene in self.frames else next(iter(self.frames))
             height, width = next(iter(self.frames.values())).triangle_id.shape
@@ -417,7 +434,11 @@ class FrameInspector(Holdable):
             pair = self.frames[self.pairs[scene]] if scene in self.pairs else None
             if pair is not None:
                 self.row.value, self.col.value = changed_pixel(
-                    self.frames[scene], pair, self.row.value, self.col.value
+                    self.frames[scene],
+                    pair,
+                    self.row.value,
+                    self.col.value,
+                    self.marks.get(scene),
                 )
         self.beside = _check_box(bool(self.pairs), "its pair beside")
         # the table scrolls sideways in its own box where the column is narrower than its
@@ -537,7 +558,6 @@ class FrameInspector(Holdable):
                 shown = self.frame.color[..., :3]
             image = np.where(np.isnan(shown), 1.0, np.clip(shown, 0, 1))
             plot_image(ax, image)
-            plot_triangle_edges(ax, self.frame)  # where triangles meet (r90 11-4: fan's hub)
             glass = " (glass)" if self.glass.value else ""  # what is drawn (review r8, 11)
             # r21 D9: a frame handed in is named by its key ("frame 1"), a scene is not
             name = self.scene.value if self.frames else f"{self.scene.value}: the frame"
@@ -550,6 +570,9 @@ class FrameInspector(Holdable):
             # labels): "samples passed depth, per pixel" is wider than the bar
             box = self.cax.get_position()
             self.cax.xaxis.label.set_x((0.5 - box.x0) / box.width)
+        # where triangles meet (r90 11-4: fan's hub), in every view, and every submitted
+        # triangle, dashed where it covers no centre (r298 W1: the sliver was in none)
+        plot_triangle_edges(ax, self.frame)
         fit_title(ax)
         # the pixel's outline and four ticks pointing at it, with a white halo: one pixel of
         # a 64-pixel frame must be found on a projector, on any colour
@@ -663,7 +686,7 @@ class FrameInspector(Holdable):
         if pair is None:
             return
         at = changed_pixel(self.frames[self.scene.value], self.frames[pair], self.row.value,
-                           self.col.value)  # fmt: skip
+                           self.col.value, self.marks.get(self.scene.value))  # fmt: skip
         with self._holding():
             self.row.value, self.col.value = at
 

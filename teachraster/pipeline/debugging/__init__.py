@@ -13,7 +13,14 @@ registers itself here (importing ``teachraster`` imports every stage).
 
 from ..rendering.render_triangles import FRAME_DEBUGGERS
 from .frame_history import OUTCOMES, HistoryRecord, PixelHistory, pixel_history
-from .overlays import KINDS, helper_share, overlay, passed_per_triangle, quad_triangles
+from .overlays import (
+    KINDS,
+    covered_pieces,
+    helper_share,
+    overlay,
+    passed_per_triangle,
+    quad_triangles,
+)
 
 FRAME_DEBUGGERS.update(history=pixel_history, overlay=overlay)
 
@@ -22,6 +29,7 @@ __all__ = [
     "OUTCOMES",
     "HistoryRecord",
     "PixelHistory",
+    "covered_pieces",
     "helper_share",
     "overlay",
     "passed_per_triangle",

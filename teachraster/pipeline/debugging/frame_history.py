@@ -52,7 +52,7 @@ from ..blending.colour_blending import write_colour
 from ..rasterization.batched_fill import weight_source
 from ..rendering.stages import Visibility, fragment_values, interpolate_stage
 from ..visibility.depth import quantize
-from ..visibility.zbuffer import passed_on_arrival
+from ..visibility.zbuffer import COMPARE_OFF, COMPARE_ON, passed_on_arrival
 from .edge_names import CLIP_EDGE, INPUT_EDGE, SEAM, piece_edges
 
 #: The outcomes, in the pipeline's order of tests (the first that failed is reported).
@@ -153,6 +153,8 @@ class PixelHistory:
     shows: int  # the input triangle the frame shows at the pixel (-1 none)
     clipped_away: int = 0  # input triangles clipping removed whole (no screen position)
     blend: object = None  # the colour buffer's BlendState (None: no colour buffer)
+    depth_format: str = "float64"  # the depth buffer's format (``render(depth_format=...)``)
+    compare: str = COMPARE_ON  # the depth test's compare op (COMPARE_OFF with it off)
 
     def __len__(self) -> int:
         return len(self.records)
@@ -243,8 +245,13 @@ def pixel_history(frame, row, col) -> PixelHistory:
     if dbg.blend is not None:
         records = _colours(frame, dbg, row, col, records)
     dropped = int((np.asarray(frame.trace.clip_status) == 2).sum())
-    return PixelHistory(row, col, tuple(records), n_samples, dbg.inputs.depth_test,
-                        int(frame.triangle_id[row, col]), dropped, dbg.blend)  # fmt: skip
+    a = dbg.inputs
+    compare = COMPARE_ON if a.depth_test else COMPARE_OFF
+    if a.depth_test and getattr(getattr(a, "overrides", None), "depth", None) is not None:
+        compare = "your rule"  # a student's depth rule replaced the package's
+    return PixelHistory(row, col, tuple(records), n_samples, a.depth_test,
+                        int(frame.triangle_id[row, col]), dropped, dbg.blend, a.depth_format,
+                        compare)  # fmt: skip
 
 
 def _setup(dbg, window):
@@ -584,9 +591,11 @@ def history_table(h: PixelHistory, narrow: bool = False, like=None, fold: bool =
     line per record, as ``h.records`` holds them."""
     shows = "nothing" if h.shows < 0 else f"triangle {h.shows}"
     # off is GL's ALWAYS (every fragment passes, and writes where its mask lets it), not
-    # glDisable(GL_DEPTH_TEST): said, so that the table is not read as the APIs' test-off
+    # glDisable(GL_DEPTH_TEST): said, so that the table is not read as the APIs' test-off.
+    # The compare and the depth buffer's format (review r298 M1, S1: a tie that only a
+    # 16-bit buffer makes, and a reversed mapping under LESS, need both to be read)
     where = (f"pixel (row {h.row}, col {h.col}), {h.n_samples} sample(s), depth test "
-             f"{'on' if h.depth_test else 'off (ALWAYS)'}:")  # fmt: skip
+             f"{'on' if h.depth_test else 'off'} ({h.compare}), {h.depth_format} depth:")  # fmt: skip
     way = f"{len({r.triangle for r in h.records})} triangle(s) on the way; shows {shows}"
     if h.n_samples > 1 and h.shows >= 0:  # each sample keeps its own triangle
         way += " (most samples)"

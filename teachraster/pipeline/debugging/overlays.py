@@ -104,6 +104,15 @@ def passed_per_triangle(frame) -> np.ndarray:
     return np.bincount(work.triangle, weights=work.passed_samples, minlength=n).astype(np.int64)
 
 
+def covered_pieces(frame) -> np.ndarray:
+    """(M,) bool: did each triangle after clipping (``frame.trace.window``) cover a pixel
+    centre (with MSAA, a sample) of the image, hidden or not? What a wireframe overlay
+    draws solid; False for a culled triangle and for one that covers none (a sliver
+    between the centres). Needs ``trace=True``."""
+    work = _traced_work(frame, "the covered triangles")
+    return np.bincount(work.piece, minlength=len(frame.trace.window)) > 0
+
+
 @dataclass(frozen=True)
 class Work:
     """Per (triangle, pixel) fragment of a frame, in drawing order within each pixel.

@@ -30,6 +30,11 @@ from __future__ import annotations
 
 import numpy as np
 
+#: The compare op :func:`passes_depth_test` applies, with the test on and off, as the APIs name
+#: it (``GL_LESS`` / ``VK_COMPARE_OP_LESS``, ``GL_ALWAYS``): what a pixel history's header says
+#: (review r298 S1: it said "depth test on" and never which compare).
+COMPARE_ON, COMPARE_OFF = "LESS", "ALWAYS"
+
 
 def passes_depth_test(depth, buffer, depth_test: bool = True) -> np.ndarray:
     """Does a fragment (or sample) with stored depth ``depth`` pass the depth test against
