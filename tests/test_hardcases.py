@@ -136,6 +136,15 @@ def test_split_square_summary_names_both_kinds_of_difference():
     assert line.endswith(f"differs from ours at {differ} pixel(s)")
 
 
+def test_naive_lines_write_pixels_and_shifts_as_the_lessons_do():
+    """Review r304 S-2: the naive lines printed Python lists ([[1, 1], [1, 2], [1, 3]])."""
+    for name, said in (("flat_top", "e.g. (1, 1), (1, 2) and (1, 3) (row, column)"),
+                       ("translation_invariance", "shifts (1, 0), (0, 3), (10, 3) and (31, 5) px")):  # fmt: skip
+        case = hc.get_case(name)
+        line = case.naive_difference(case.run(), case.naive())
+        assert said in line and "[" not in line, line
+
+
 def test_registry():
     assert hc.list_cases() == list(hc.CASES)
     assert hc.list_cases("clip") == ["behind_camera", "eye_plane_vertex", "hair_in_front_of_eye"]

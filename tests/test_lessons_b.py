@@ -1575,7 +1575,9 @@ def test_07_try_it_far_from_origin_runs_and_shows_the_failure():
     assert "**Try it:" in sources[k - 1] and "origin=(0, 0)" in sources[mine]
     assert mine < held < k - 1 < k < section_4
     text = " ".join(sources[k - 1].split())
-    assert "1 of the 64 wrong at both distances" in text and "16 \\times 16" in text
+    # r304 S-1: the wrong pixel is a tie outside the triangle, not one of its 64
+    assert "1 pixel wrong at both distances, a tie outside the triangle (" in text
+    assert "1 of the 64 wrong" not in text and "16 \\times 16" in text
     far_case = hardcases.get_case("far_from_origin")
     assert far_case.run().coverage[100_000].shape == (16, 16)
     assert int(far_case.run().coverage[100_000].sum()) == 64
@@ -5343,7 +5345,10 @@ def test_07_review_r236_llvmpipe_beside_ours_and_the_smaller_items():
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
     assert "The CS148 notes (*2D Points Inside a 2D Triangle*) say just that" in md
-    assert "exact over the whole guard band" not in md and "simulator's whole exact range" in md
+    assert "exact over the whole guard band" not in md and "whole exact range" not in md
+    # r304 S-5: the range by its number, the one the case's must gives
+    assert "exact up to $\\pm 2^{21}$ px (the case's *must* below" in md
+    assert "exact up to ±2**21 px" in hardcases.get_case("far_from_origin").expect
     assert "as far from the origin as the guard band reaches" not in md
     # S-8: the facing of snap_flips_winding said on screen
     why = hardcases.get_case("snap_flips_winding").why
@@ -6037,7 +6042,13 @@ def test_07_review_r284_the_try_it_asked_and_answered_in_its_own_numbers():
 
     ns = lesson("07_hard_cases")
     assert ns.try_yup == {1_000: 0, 10_000: 7, 30_000: 70}
-    assert ns.try_answer == ns.try_choices[1] == "none at 10³ px, some at 10⁴ and 3·10⁴"
+    # r304 P-1: q_try asks what q_far's argument decides, the bound at 1e4 px (gap 8 over the
+    # shortest edge, 11.7 px), not which offset happens to go wrong first
+    assert ns.try_gap == {1_000: 0.0625, 10_000: 8.0, 30_000: 64.0}
+    assert abs(ns.try_bound[10_000] - 8 / ns.edge_lengths.min()) < 1e-12
+    assert 0.1 < ns.try_bound[10_000] < 1
+    assert ns.try_answer == ns.try_choices[3] == "between 1/10 px and 1 px"
+    assert not any("some at" in c or "none at" in c for c in ns.try_choices)
     assert ns.try_split == {1_000: [(0, 0), (0, 0)], 10_000: [(0, 7), (0, 0)],
                             30_000: [(70, 0), (73, 0)]}  # fmt: skip
     from teachraster.study import hardcases
@@ -6057,9 +6068,10 @@ def test_07_review_r284_the_try_it_asked_and_answered_in_its_own_numbers():
     assert "wrong pixels from 1e5" not in printed
     assert "1 pixel wrong: 1 drawn outside the triangle, 0 of its 64 missing" in printed
     held = _07_held_markdown(run, "q_try.hold()")
-    for said in ("are 8 apart: C is off by up to 4.625 in your y-up numbers, 0.875 in the "
-                 "y-down ones", "yours misses 7 pixels, the y-down form 0",
-                 "rounding accident", "(gap 64: an edge moves up to 5.5 px)",
+    for said in ("are 8 apart, so C can be off by up to 8 and an edge move up to 0.69 px",
+                 "C is off by 4.625 in your y-up numbers, 0.875 in the y-down ones",
+                 "yours misses 7 pixels, the y-down form 0", "The bound follows from the gap; "
+                 "the count is a rounding accident.", "(gap 64: an edge moves up to 5.5 px)",
                  "outside the triangle, 70 and 73", "±32,768 px (D3D11.3 §15.16"):  # fmt: skip
         assert said in held, said
     (k,) = [i for i, c in enumerate(cells) if c.startswith("def try_far(")]
@@ -6068,8 +6080,45 @@ def test_07_review_r284_the_try_it_asked_and_answered_in_its_own_numbers():
         and "q_try = PredictChoice(" in (cells[k + 1])
     )
     assert cells[k + 2].startswith("q_try.hold()")
+    # r304 S-7: a cell for my_coverage32 after the question, its float32 lines marked
+    assert (
+        cells[k + 3].startswith("# Try it: my_coverage32")
+        and "<- 3: A*x + B*y + C" in (cells[k + 3])
+    )
+    assert "# try_far(my_coverage32, FAR_OFFSETS)" in cells[k + 3]
     try_it = " ".join(cells[k - 1].split())
     assert "`E = A*x + B*y + C` in that order" in try_it and "**Predict first**" in try_it
+
+
+def test_07_review_r304_float32_bits_figure_sizes_and_keys():
+    """Review r304 (sources only). F-1: float32 has 23 stored fraction bits (24 significant
+    with the implicit 1) and 9 bits of sign and exponent. FIG-1: the depth-band panels number
+    their rows (the text names rows 16 to 20). FIG-2: llvmpipe's key shows all three owner
+    colours. FIG-3: rc_ticks and the drift box at the style's size, not 11 and 12 pt. S-3: at
+    C sum 0 the three E are small, not all 0. S-4: the tie rule's lessons only."""
+    cells = {c.get("id"): " ".join("".join(c["source"]).split()) for c in _07_notebook()["cells"]}
+    depth_q = cells["c17dq"]
+    assert "23 stored fraction bits plus the implicit leading 1 give 24 significant" in depth_q
+    assert "The other 9 bits of the float " in depth_q
+    assert "are its sign (1) and exponent (8)" in depth_q
+    assert "The other 8 bits" not in depth_q
+    assert "rc_ticks(ax, first=ax is axes[0], cols=8)" in cells["c16"]
+    helpers = next(t for t in cells.values() if t.startswith("# The lesson's helpers"))
+    assert "labelsize=11" not in helpers and "fontsize=11" not in helpers
+    assert "fontsize=12" not in cells["c11driftcode"] and "fontsize=13" not in cells["c11driftcode"]
+    gpu = next(t for t in cells.values() if "gl_owners(c.triangles" in t)
+    assert "Patch(color=c) for c in dict.fromkeys(fan_colours.values())" in gpu
+    assert "NEIGHBOUR_COLORS[1]))" not in gpu
+    assert "would have to be 0 together" not in cells["c11sumq"]
+    assert "which holds no pixel centre at any of these shifts" in cells["c11sumq"]
+    split = next(t for t in cells.values() if t.startswith("The top-left rule gives each tie"))
+    assert "(lessons 01 §4 and 02 §5)" in split and "05a §4" not in split
+
+
+def _07_notebook() -> dict:
+    import json
+
+    return json.loads((ROOT / "notebooks" / "07_hard_cases.ipynb").read_text())
 
 
 def test_06_one_span_explorer_and_q_span():

@@ -100,7 +100,10 @@ def naive_differs(inputs, ours: Fills, naive: Naive) -> str | None:
     diff = naive.counts != ours.counts
     if not diff.any():
         return None
-    return f"naive coverage differs at {int(diff.sum())} pixel(s), e.g. {first_pixels(diff, 3)}"
+    # pixels as the lessons write them, (1, 1), (1, 2) and (1, 3), not a Python list (r304 S-2)
+    named = [f"({r}, {c})" for r, c in first_pixels(diff, 3)]
+    shown = ", ".join(named[:-1]) + f" and {named[-1]}" if len(named) > 1 else named[0]
+    return f"naive coverage differs at {int(diff.sum())} pixel(s), e.g. {shown} (row, column)"
 
 
 def naive_mesh(rule: str, **kwargs):

@@ -191,7 +191,12 @@ def _translation_case():
             s for s, c in zip(shifts[1:], naive.values["coverage"][1:])
             if (c != np.roll(np.roll(ref, s[1], axis=0), s[0], axis=1)).any()
         ]  # fmt: skip
-        return f"naive coverage changes under the shifts {moved}" if moved else None
+        if not moved:
+            return None
+        # the shifts as the lessons write pairs, (1, 0) and (0, 3), not a Python list (r304 S-2)
+        named = [f"({dx:g}, {dy:g})" for dx, dy in moved]
+        shown = ", ".join(named[:-1]) + f" and {named[-1]}" if len(named) > 1 else named[0]
+        return f"naive coverage changes under the shifts {shown} px (x, y)"
 
     add_case(
         HardCase(
