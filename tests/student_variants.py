@@ -2118,3 +2118,102 @@ R301 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R301.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R301.items()})
+
+
+# -- r306 04: slips told another mistake's name, or only the shape or the rule -----------------
+def _clip_dropped_whole(v):
+    """X1: the triangle dropped whole as soon as one vertex is behind the plane."""
+    v = np.asarray(v, dtype=float)
+    return v if (v[:, 2] + v[:, 3] >= 0).all() else np.zeros((0, 4))
+
+
+def _clip_open(v):
+    """H1: `for i in range(2)`, the closing edge v3→v1 forgotten."""
+    v, out = np.asarray(v, dtype=float), []
+    for i in range(2):
+        a, b = v[i], v[i + 1]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+
+def _clip_moved(v):
+    """H2: each vertex behind moved onto the plane, towards its next vertex if that one is
+    inside, else its previous one (one crossing per vertex behind)."""
+    v = np.asarray(v, dtype=float)
+    d = v[:, 2] + v[:, 3]
+    if (d < 0).all():
+        return np.zeros((0, 4))
+    out = []
+    for i in range(3):
+        j = (i + 1) % 3 if d[(i + 1) % 3] >= 0 else (i + 2) % 3
+        out.append(v[i] if d[i] >= 0 else v[i] + d[i] / (d[i] - d[j]) * (v[j] - v[i]))
+    return np.array(out)
+
+
+def _clip_keep_y(v):
+    """H3: the crossing's y taken from the edge's first vertex, not interpolated."""
+    v, out = np.asarray(v, dtype=float), []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            p = a + da / (da - db) * (b - a)
+            p[1] = a[1]
+            out.append(p)
+    return np.array(out).reshape(-1, 4)
+
+
+def _passes_mask_swapped(depths, writes):
+    """X2: the depth mask read the wrong way round (glass writes, walls do not)."""
+    return _passes_with()(depths, [not w for w in writes])
+
+
+def _passes_nearest_opaque(depths, writes):
+    """H4: only the final winner, the nearest opaque fragment (the first of equal ones)."""
+    opaque = [i for i in range(len(depths)) if writes[i]]
+    out = [False] * len(depths)
+    if opaque:
+        out[min(opaque, key=lambda i: (depths[i], i))] = True
+    return out
+
+
+def _passes_as_near_as_nearest_opaque(depths, writes):
+    """H5: `d <= min(opaque depths)`, decided over the whole pixel."""
+    nearest = min((d for d, w in zip(depths, writes) if w), default=math.inf)
+    return [d <= nearest for d in depths]
+
+
+R306 = {
+    "clip dropped whole": (
+        "clip_near", _clip_dropped_whole, "you dropped the whole triangle", "dropped whole"),
+    "clip without the closing edge": (
+        "clip_near", _clip_open, "the closing edge v3→v1 is missing", "closing edge missing"),
+    "clip moving the vertex onto the plane": (
+        "clip_near", _clip_moved, "onto the plane along one of its edges",
+        "vertex moved onto the plane"),
+    "clip with y not interpolated": (
+        "clip_near", _clip_keep_y, "y included", "y not interpolated"),
+    "clip with t = ½": (
+        "clip_near", lambda v: clip_against(v, t=lambda a, b: 0.5), "halfway along its edge",
+        "t = ½"),
+    "clip with t = d_a/(d_a + d_b)": (
+        "clip_near",
+        lambda v: clip_against(v, t=lambda a, b: (a[2] + a[3]) / (a[2] + a[3] + b[2] + b[3])),
+        "you took t = d_a/(d_a + d_b)", "t with d_a + d_b"),
+    "passes with the depth mask swapped": (
+        "depth_passes", _passes_mask_swapped, "depth mask the wrong way round", "mask swapped"),
+    "passes for the nearest opaque only": (
+        "depth_passes", _passes_nearest_opaque, "only the nearest opaque fragment",
+        "nearest opaque only"),
+    "passes when as near as the nearest opaque": (
+        "depth_passes", _passes_as_near_as_nearest_opaque,
+        "at least as near as the nearest opaque fragment", "as near as the nearest opaque"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R306.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R306.items()})

@@ -92,15 +92,15 @@ def _clip(t_of):
     return clip_near
 
 
-@pytest.mark.parametrize("t_of", [
-    lambda a, b, da, db: 0.5,  # the midpoint
-    lambda a, b, da, db: da / (da + db),  # a sign slip
+@pytest.mark.parametrize(("t_of", "words"), [
+    (lambda a, b, da, db: 0.5, "halfway along its edge (t = ½)"),  # the midpoint
+    (lambda a, b, da, db: da / (da + db), "you took t = d_a/(d_a + d_b)"),  # a sign slip
 ])  # fmt: skip
-def test_a_crossing_off_the_plane_is_named(t_of):
+def test_a_crossing_off_the_plane_is_named(t_of, words):
     """r85 04: t = ½ was told its symptom only ("keeps (…), whose z + w < 0"), a wrong sign
-    the generic rule."""
+    the generic rule; r306: then "not on the near plane", the quantity, not the slip."""
     report = _first_try("clip_near", _clip(t_of))
-    assert "is not on the near plane" in report.failures[0].explanation, str(report)
+    assert words in report.failures[0].explanation, str(report)
 
 
 def test_t_from_z_alone_says_where_the_vertex_lies_once():

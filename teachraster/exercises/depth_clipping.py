@@ -132,10 +132,10 @@ def _random_clip(rng) -> np.ndarray:
 
 def clip_cases():
     out = []
-    for name in ("behind_camera", "eye_plane_vertex", "hair_in_front_of_eye"):
+    for name, said in _HARD.items():
         for v in CASES[name].inputs["clip"]:
             if near_only(v):
-                out.append((name, (np.array(v, dtype=float),)))
+                out.append((said, (np.array(v, dtype=float),)))
     rng = np.random.default_rng(SEED + 4)
     counts = [0, 0, 0, 0]  # random cases by how many vertices lie behind the plane
     while min(counts[:3]) < 5:
@@ -169,6 +169,12 @@ def clip_cases():
     return cases
 
 
+#: The catalogue's near-plane cases, named in words as the other cases are (r306 S4).
+_HARD = {
+    "behind_camera": "a vertex behind the camera",
+    "eye_plane_vertex": "a vertex on the eye plane (w = 0)",
+    "hair_in_front_of_eye": "a vertex a hair in front of the eye",
+}
 _BEHIND = ("no vertex behind", "one vertex behind", "two vertices behind", "all behind")
 
 
@@ -188,23 +194,25 @@ def as_polygon(value) -> np.ndarray:
 
 
 def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=None,
-              crossings="both", crossing_first=False) -> np.ndarray:  # fmt: skip
+              crossings="both", crossing_first=False, component=3,
+              closed=True) -> np.ndarray:  # fmt: skip
     """Sutherland-Hodgman of a convex polygon (a triangle, or a polygon already clipped)
     against one plane, with the usual mistakes as knobs.
 
     ``distance(vertex)`` is the signed distance (z + w: the right one); ``t_from(a, b)`` the
     crossing parameter (default d_a / (d_a − d_b)); ``new=False`` adds no vertex where an edge
     crosses; ``from_end`` measures t from the other end of the edge; ``keep_w`` ("inside" or
-    "first") gives the new vertex the w of the edge's inside vertex or of its first one
-    instead of interpolating it; ``crossings`` ("leaving" or "entering") adds the new vertex
-    only where an edge leaves the kept side or only where it comes back; ``crossing_first``
-    puts an edge's new vertex before its first vertex. None where undefined.
+    "first") gives the new vertex's ``component`` (w: 3) the value of the edge's inside vertex
+    or of its first one instead of interpolating it; ``crossings`` ("leaving" or "entering")
+    adds the new vertex only where an edge leaves the kept side or only where it comes back;
+    ``crossing_first`` puts an edge's new vertex before its first vertex; ``closed=False``
+    leaves out the closing edge (v3→v1 of a triangle). None where undefined.
     """
     v = np.asarray(v, dtype=float)
     distance = distance or (lambda p: p[2] + p[3])
     out = []
     with np.errstate(divide="ignore", invalid="ignore"):
-        for i in range(len(v)):
+        for i in range(len(v) if closed else len(v) - 1):
             a, b = v[i], v[(i + 1) % len(v)]
             da, db = distance(a), distance(b)
             kept = [a] if da >= 0 else []
@@ -214,7 +222,7 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
                 t = 1 - t if from_end else t
                 c = a + t * (b - a)
                 if keep_w is not None:
-                    c[3] = a[3] if keep_w == "first" or da >= 0 else b[3]
+                    c[component] = a[component] if keep_w == "first" or da >= 0 else b[component]
                 kept = [c] + kept if crossing_first else kept + [c]
             out += kept
     poly = np.array(out).reshape(-1, 4)
@@ -277,19 +285,104 @@ def _words_with_crossing(text: str, z_alone: bool = False):
     return lambda args, expected, got: f"{text}: {_crossing(args[0], z_alone)}"
 
 
-def _w_words(args, expected, got) -> str:
-    """The new vertex's w the student kept, and the interpolated one (r39 04-2)."""
-    g = np.asarray(got, float).reshape(-1, 4)
+_NAMES = "xyzw"
+
+
+def _component_words(k: int):
+    """Words for a new vertex whose component ``k`` was kept from an end of its edge, not
+    interpolated: the student's value and the interpolated one (r39 04-2: w; r306 H3: y)."""
+
+    def words(args, expected, got) -> str:
+        g = np.asarray(got, float).reshape(-1, 4)
+        (v,) = args
+        name, rest = _NAMES[k], [j for j in range(4) if j != k]
+        new = [p for p in expected if not any(all_close(p, q) for q in v)]
+        if not new:
+            return f"interpolate all four components of the new vertices, {name} included"
+        p = new[0]
+        near = g[int(np.argmin(np.abs(g[:, rest] - p[rest]).sum(axis=1)))] if len(g) else p
+        right = ", ".join(_NAMES[j] for j in rest[:2]) + f" and {_NAMES[rest[2]]}"
+        shown = ", ".join(num(near[j]) for j in rest)
+        return (
+            f"your new vertex with ({', '.join(_NAMES[j] for j in rest)}) = ({shown}) has the "
+            f"right {right} but "
+            f"{name} = {num(near[k])}; interpolated at the same t, {name} is {num(p[k])}: "
+            f"interpolate all four components, {name} included"
+        )
+
+    return words
+
+
+def _behind_one(v) -> int | None:
+    """The one vertex behind the near plane (None unless exactly one is)."""
+    behind = np.flatnonzero(np.asarray(v)[:, 2] + np.asarray(v)[:, 3] < 0)
+    return int(behind[0]) if len(behind) == 1 else None
+
+
+def _moved_onto_plane(v, towards: int = 1) -> np.ndarray:
+    """Each vertex behind the plane moved onto it along one of its edges, to the next vertex
+    (``towards`` 1) or the previous one (−1) when that one is inside, else the other: one
+    crossing per vertex behind (r306 H2, the commonest first attempt)."""
+    v = np.asarray(v, dtype=float)
+    d = v[:, 2] + v[:, 3]
+    if (d < 0).all():
+        return np.zeros((0, 4))
+    out = []
+    for i in range(3):
+        if d[i] >= 0:
+            out.append(v[i])
+            continue
+        j = (i + towards) % 3 if d[(i + towards) % 3] >= 0 else (i - towards) % 3
+        out.append(v[i] + d[i] / (d[i] - d[j]) * (v[j] - v[i]))
+    return np.array(out)
+
+
+def _moved_words(args, expected, got) -> str:
     (v,) = args
-    new = [p for p in expected if not any(all_close(p, q) for q in v)]
-    if not new:
-        return "interpolate all four components of the new vertices, w included"
-    p = new[0]
-    near = g[int(np.argmin(np.abs(g[:, :3] - p[:3]).sum(axis=1)))] if len(g) else p
+    k = _behind_one(v)
+    if k is None:
+        return (
+            "you moved each vertex behind the plane onto it: with one vertex behind, both "
+            "its edges cross the plane, and each crossing is a vertex of the polygon"
+        )
+    a, b = (k - 1) % 3, (k + 1) % 3
     return (
-        f"your new vertex at ({num(near[0])}, {num(near[1])}, {num(near[2])}) has the right x, "
-        f"y and z but w = {num(near[3])}; interpolated at the same t, w is {num(p[3])}: "
-        "interpolate all four components, w included"
+        f"you moved v{k + 1} (z + w = {num(v[k, 2] + v[k, 3])}) onto the plane along one of "
+        f"its edges: both its edges, v{a + 1}→v{k + 1} and v{k + 1}→v{b + 1}, cross the plane, "
+        "and each crossing is a vertex of the polygon: one vertex behind leaves a "
+        "quadrilateral (4 vertices), not a triangle"
+    )
+
+
+def _dropped(v) -> np.ndarray:
+    """The triangle whole when no vertex is behind the plane, else nothing (r306 X1)."""
+    v = np.asarray(v, dtype=float)
+    return v if (v[:, 2] + v[:, 3] >= 0).all() else np.zeros((0, 4))
+
+
+def _dropped_words(args, expected, got) -> str:
+    (v,) = args
+    d = v[:, 2] + v[:, 3]
+    k = int(np.argmin(d))
+    return (
+        f"you dropped the whole triangle because v{k + 1} = {vec(v[k])} lies behind the near "
+        f"plane (z + w = {num(d[k])}): clip it instead; the part in front of the plane stays, "
+        f"cut along it ({len(expected)} vertices here)"
+    )
+
+
+def _closing_words(args, expected, got) -> str:
+    (v,) = args
+    d = v[:, 2] + v[:, 3]
+    lost = []
+    if d[2] >= 0:
+        lost.append("v3 is never kept")
+    if (d[2] >= 0) != (d[0] >= 0):
+        lost.append("the crossing on v3→v1 is never added")
+    return (
+        "you walked only the edges v1→v2 and v2→v3: the closing edge v3→v1 is missing"
+        + (f", so {' and '.join(lost)}" if lost else "")
+        + "; walk v1→v2→v3→v1 (the vertex after v3 is v1: index (i + 1) % 3)"
     )
 
 
@@ -399,8 +492,9 @@ CLIP_MISTAKES = [
     Mistake("eye plane", "your new vertices lie on w = 0, the plane through the eye: you "
             "measured the distance as w alone; the near plane is z = −w, the distance to it "
             "z + w", gives=lambda v: clip_with(v, lambda p: p[3])),
-    Mistake("w not interpolated", _w_words, gives=lambda v: clip_with(v, keep_w="inside")),
-    Mistake("w not interpolated", _w_words, gives=lambda v: clip_with(v, keep_w="first")),
+    *(Mistake(f"{_NAMES[k]} not interpolated", _component_words(k),
+              gives=lambda v, k=k, how=how: clip_with(v, keep_w=how, component=k))
+      for k in (3, 0, 1, 2) for how in ("inside", "first")),
     Mistake("no new vertices", "you dropped the vertices behind the near plane but added none "
             "where the edges cross it: each crossing edge gives a new vertex, on the plane",
             gives=lambda v: clip_with(v, new=False)),
@@ -436,6 +530,21 @@ CLIP_MISTAKES = [
     Mistake("transposed", "your polygon is transposed: each row must be one vertex (x, y, z, "
             "w), not one component of every vertex (np.array([xs, ys, zs, ws]) needs a .T, or "
             "np.column_stack)", fits=_transposed),
+    # r306: the triangle dropped whole (X1, told "z − w"), the closing edge forgotten (H1)
+    # and a vertex moved onto the plane (H2), told only the shape; t = ½ and d_a/(d_a + d_b)
+    # told only "its t is wrong"
+    Mistake("dropped whole", _dropped_words, gives=_dropped),
+    Mistake("closing edge missing", _closing_words, gives=lambda v: clip_with(v, closed=False)),
+    Mistake("vertex moved onto the plane", _moved_words, gives=_moved_onto_plane),
+    Mistake("vertex moved onto the plane", _moved_words,
+            gives=lambda v: _moved_onto_plane(v, towards=-1)),
+    Mistake("t = ½", _words_with_crossing("you put each new vertex halfway along its edge "
+            "(t = ½)"),
+            gives=lambda v: clip_with(v, t_from=lambda a, b: 0.5)),
+    Mistake("t with d_a + d_b", _words_with_crossing("you took t = d_a/(d_a + d_b): at a "
+            "crossing d_a and d_b have opposite signs, so their sum is not how much the "
+            "distance changes along the edge"),
+            gives=lambda v: clip_with(v, t_from=lambda a, b: (a[2] + a[3]) / (a[2] + a[3] + b[2] + b[3]))),
     Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
 ]  # fmt: skip
@@ -459,8 +568,10 @@ _CLIP_HINTS = (
 
 #: A polygon computed in float32 is right within its rounding (r64 04-4: every GPU clips in
 #: float32), as a colour is in 06, 07 and 09; a wrong t or plane is off by far more. Not 1e-6:
-#: t = d_a/(d_a − d_b) loses digits where the distances nearly cancel, and a fresh drawn case
-#: failed float32 by 2e-6 at |v| = 1.75 (about 1 check in 25, found at merge).
+#: float32 loses digits inside a distance z + w whose z and w nearly cancel (a vertex near the
+#: plane), and in a + t·(b − a) where the new vertex is much shorter than the edge's ends (at
+#: a crossing d_a − d_b adds two magnitudes: it never cancels; r306 F1), and a fresh drawn
+#: case failed float32 by 2e-6 at |v| = 1.75 (about 1 check in 25, found at merge).
 FLOAT32_TOL = 1e-5
 
 
@@ -475,7 +586,19 @@ def _constant_polygon(value) -> str:
 
 
 def explain_clip(args, expected, got) -> str:
-    return f"your polygon {_poly(np.asarray(got, float).reshape(-1, 4), expected)} should be {_poly(expected, np.asarray(got, float).reshape(-1, 4))}"  # fmt: skip
+    g = np.asarray(got, float).reshape(-1, 4)
+    e = _without_repeats(expected)
+    # r306 S5: a vertex on the plane is kept and is its edge's crossing too: quoted once
+    again = " (the vertex on the plane may also be given twice)" if len(e) < len(expected) else ""
+    return f"your polygon {_poly(g, e)} should be {_poly(e, g)}{again}"
+
+
+def _without_repeats(p: np.ndarray) -> np.ndarray:
+    """``p`` without a vertex equal to the one before it (the last compared with the first)."""
+    keep = [k for k in range(len(p)) if k == 0 or not all_close(p[k], p[k - 1])]
+    if len(keep) > 1 and all_close(p[keep[-1]], p[0]):
+        keep.pop()
+    return p[keep]
 
 
 def _clip_rule(args, expected, got) -> str:

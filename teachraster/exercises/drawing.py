@@ -169,25 +169,64 @@ def draw_split(ax, v, expected, got):
 
 
 def draw_clip(ax, v, expected, got):
-    """Triangle and polygons over (x, z + w): the near plane is the line z + w = 0."""
+    """The triangle and the polygons in two panels sharing z + w (the near plane is the line
+    z + w = 0): x on the left, y on the right (r306 FIG1: with x alone a polygon wrong only
+    in y was drawn on the expected one). Without an answer, the x panel alone, on the right:
+    the report's note takes the left part. An empty polygon is said so (r306 FIG2)."""
+    ax.set_axis_off()
+    boxes = [(0.0, 0.45), (0.55, 0.45)] if got is not None else [(0.56, 0.44)]
+    panels = []
+    for left, width in boxes:
+        share = {"sharey": panels[0]} if panels else {}
+        panels.append(ax.inset_axes([left, 0.0, width, 1.0], **share))
+    artists = []
+    for k, panel in enumerate(panels):
+        artists += _clip_panel(panel, k, v, expected, got)
+    panels[0].set_ylabel("z + w (inside ≥ 0)")
+    handles, labels = panels[0].get_legend_handles_labels()
+    artists.append(panels[-1].legend(handles, labels, fontsize="x-small", loc="upper left",
+                                     bbox_to_anchor=(1.04, 1)))  # fmt: skip
+    return artists
+
+
+def _clip_panel(ax, k, v, expected, got) -> list:
+    """Component ``k`` (0: x, 1: y) of the triangle and the polygons against z + w."""
 
     def ring(p):
         p = np.vstack([p, p[:1]])
-        return p[:, 0], p[:, 2] + p[:, 3]
+        return p[:, k], p[:, 2] + p[:, 3]
 
     artists = list(ax.plot(*ring(v), color="black", linewidth=1, label="triangle"))
     artists.append(ax.axhline(0, color=EDGE_COLOUR, linewidth=2, label="near plane z + w = 0"))
+    empty = []
     if len(expected):
         artists += ax.plot(*ring(expected), "o-", color="#2b7bba", label="clipped (expected)")
+    else:
+        artists += ax.plot([], [], " ", label="clipped (expected): empty")
+        empty.append("expected: empty")
     if got is not None and len(got) and np.isfinite(drawable(got, v)).all():
         artists += ax.plot(*ring(got), "x--", color=STATE_COLOURS[3], label="yours")
     elif got is not None and len(got):
         artists += _off_chart(ax, np.ravel(got), drawable(np.ravel(got), v))
-    for k, p in enumerate(v):
-        artists.append(ax.annotate(f"v{k + 1}", (p[0], p[2] + p[3]), fontsize="x-small"))
-    ax.set_xlabel("x (clip space)")
-    ax.set_ylabel("z + w (inside ≥ 0)")
-    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    elif got is not None:
+        artists += ax.plot([], [], " ", label="yours: empty (no vertex)")
+        empty.append("yours: empty")
+    if empty:
+        artists.append(ax.text(0.5, 0.04, ", ".join(empty), transform=ax.transAxes,
+                               ha="center", va="bottom", fontsize="small",
+                               color=STATE_COLOURS[3] if "yours: empty" in empty else "black"))  # fmt: skip
+    at = {}  # vertices drawn at one point get one label ("v1, v2": y is often shared)
+    for j, p in enumerate(v):
+        at.setdefault((float(p[k]), float(p[2] + p[3])), []).append(f"v{j + 1}")
+    for point, names in at.items():  # beside the vertex, not on its marker (r306 FIG3)
+        artists.append(ax.annotate(", ".join(names), point, xytext=(5, 5),
+                                   textcoords="offset points", fontsize="x-small",
+                                   bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
+                                         "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
+    ax.margins(0.15)  # room for the labels inside the axes, off the spines
+    ax.set_xlabel(f"{'xy'[k]} (clip space)")
+    if k:
+        ax.tick_params(labelleft=False)
     return artists
 
 

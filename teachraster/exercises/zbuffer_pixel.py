@@ -114,8 +114,8 @@ def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=Tr
 def explain_depth(args, expected, got) -> str:
     """The first fragment decided wrongly: its depth, what the buffer holds, both verdicts."""
     depths, writes = args
-    if len(got) != len(expected):
-        return f"{len(depths)} fragment(s) arrive; you returned {len(got)} value(s)"
+    if len(got) != len(expected):  # r306 S3: the shape's words say how many you returned
+        return f"{len(depths)} fragment(s) arrive"
     k = int(np.flatnonzero(got != expected)[0])
     glass = ", glass: no depth write" if not writes[k] else ""
     return (
@@ -152,13 +152,23 @@ NEAREST_TIES_WORDS = (
 )
 
 
-def _nearest_only(depths, ties: bool = False) -> np.ndarray:
+def _nearest_only(depths, ties: bool = False, writes=None) -> np.ndarray:
     """True for the nearest fragment alone (the first of equal nearest ones; ``ties``: every
-    one of them), whatever the drawing order; nothing for no fragments."""
+    one of them), whatever the drawing order; nothing for no fragments. With ``writes``, of
+    the opaque fragments alone (r306 H4: glass never passes)."""
     d = np.asarray(depths, dtype=float)
-    if d.size == 0:
-        return np.zeros(0, dtype=bool)
+    if writes is not None:
+        d = np.where(np.asarray(writes, dtype=bool), d, np.inf)
+    if d.size == 0 or not np.isfinite(d).any():
+        return np.zeros(d.size, dtype=bool)
     return d == d.min() if ties else np.arange(d.size) == int(np.argmin(d))
+
+
+def _as_near_as_nearest_opaque(depths, writes) -> np.ndarray:
+    """True for every fragment at or nearer than the nearest opaque one of the whole pixel
+    (every one when none is opaque): ``d <= min(opaque)`` (r306 H5)."""
+    d, w = np.asarray(depths, dtype=float), np.asarray(writes, dtype=bool)
+    return d <= (d[w].min() if w.any() else np.inf)
 
 
 DEPTH_MISTAKES = [
@@ -200,11 +210,26 @@ DEPTH_MISTAKES = [
     Mistake("nearest only", NEAREST_WORDS, gives=lambda d, w: _nearest_only(d)),
     Mistake("nearest only, ties too", NEAREST_TIES_WORDS,
             gives=lambda d, w: _nearest_only(d, ties=True)),
+    # r306 H4, H5: the nearest opaque fragment alone, or every fragment at least as near as
+    # it, was told the rule on the first line (the nearest of all on the second)
+    Mistake("nearest opaque only", "only the nearest opaque fragment of the whole pixel passes "
+            f"in your answer (glass never): {_ON_ARRIVAL}",
+            gives=lambda d, w: _nearest_only(d, writes=w)),
+    Mistake("as near as the nearest opaque", "in your answer a fragment passes when it is at "
+            "least as near as the nearest opaque fragment of the whole pixel: "
+            f"{_ON_ARRIVAL}", gives=_as_near_as_nearest_opaque),
+    # r306 X2: glass writing and walls not (the mask read the wrong way round) was told
+    # "lets every fragment pass, always" on a case with no glass
+    Mistake("mask swapped", "you read the depth mask the wrong way round: in your answer "
+            "glass (writes False) stores its depth and the opaque fragments (writes True) do "
+            "not; an opaque fragment that passes stores its depth, glass leaves the buffer as "
+            "it was", gives=lambda d, w: _simulate(d, ~np.asarray(w, dtype=bool))),
     # r199: "lets every fragment pass" said what, not why: a buffer never written does so
+    # r306 X2: "always" is said only of an answer that is all True on every case
     Mistake("all pass", "your function lets every fragment pass, always (does the buffer ever "
             "take a depth? A fragment that passes and writes must store its depth, so that "
             "later ones are tested against it)",
-            gives=lambda d, w: np.ones(len(d), dtype=bool)),
+            gives=lambda d, w: np.ones(len(d), dtype=bool), only_whole=True),
     # r85 04: a buffer started at 0 was told only its symptom ("lets no fragment pass,
     # ever"); its answers are a placeholder's all False (no depth lies below 0), so both
     # are said, the cause first
@@ -225,9 +250,15 @@ def _held(depths, writes, passed, k) -> str:
     return "nothing yet (empty)" if not written else f"{num(written[-1])}"
 
 
+#: The frame of a bar whose verdict the student got wrong (r306 FIG3: the wrong verdict was
+#: only a small label on a bar coloured by the right one).
+WRONG_FRAME = "#ff9f1c"
+
+
 def draw_depth_passes(ax, case, got):
     """The fragments in drawing order as bars at their depths (hatched: glass, no depth
-    write), green where they pass and red where they fail; each tick says yours."""
+    write), green where they pass and red where they fail; each tick says yours, and a bar
+    whose verdict you got wrong is framed thick, its label marked ✗."""
     _, (depths, writes), expected = case
     n = len(depths)
     if n == 0:
@@ -235,20 +266,28 @@ def draw_depth_passes(ax, case, got):
         return [ax.text(0.5, 0.5, "no fragments", ha="center", transform=ax.transAxes)]
     x = np.arange(n)
     colours = ["#7fbf7f" if p else "#d7301f" for p in expected]
-    artists = list(ax.bar(x, depths, color=colours, edgecolor="black",
+    mine = got is not None and len(got) == n
+    wrong = [bool(mine and got[i] != expected[i]) for i in range(n)]
+    artists = list(ax.bar(x, depths, color=colours,
+                          edgecolor=[WRONG_FRAME if w else "black" for w in wrong],
+                          linewidth=[4 if w else 1 for w in wrong],
                           hatch=[None if w else "//" for w in writes]))  # fmt: skip
-    if got is not None and len(got) == n:
+    if mine:
         for i in range(n):
             # at the bar's foot: above it, the buffer's line may run (r64)
-            artists.append(ax.text(i, 0.02, "yours:\n" + ("passes" if got[i] else "fails"),
+            said = "passes" if got[i] else "fails"
+            artists.append(ax.text(i, 0.02, f"yours:\n{said}" + (" ✗" if wrong[i] else ""),
                                    ha="center", va="bottom", fontsize="x-small",
+                                   fontweight="bold" if wrong[i] else "normal",
                                    bbox={"boxstyle": "round,pad=0.15", "facecolor": "white",
-                                         "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
+                                         "edgecolor": WRONG_FRAME if wrong[i] else "none",
+                                         "alpha": 0.9}))  # fmt: skip
     artists += _buffer_line(ax, depths, writes)
     ax.set_xticks(x, [f"{i}" + ("" if writes[i] else "\nglass") for i in range(n)],
                   fontsize="x-small")  # fmt: skip
     ax.set_ylim(0, 1.08)
-    ax.set_xlabel("fragments in drawing order\n(green: passes, red: fails)")
+    key = "green: passes, red: fails" + (";\nframed ✗: your verdict differs" if any(wrong) else "")
+    ax.set_xlabel(f"fragments in drawing order\n({key})")
     ax.set_ylabel("depth (smaller is nearer)")
     return artists
 
