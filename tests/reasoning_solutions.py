@@ -48,6 +48,12 @@ def safe_near(z, gap, far, bits):
     return step * far * z**2 / (gap * far + step * z**2)
 
 
+def reverse_z_gap(z, near, far):
+    d = (near / z - near / far) / (1 - near / far)  # reverse-Z: 1 at near, 0 at far
+    step = float(np.spacing(np.float32(d)))  # float32's step at the stored value
+    return step / (near / ((1 - near / far) * z * z))  # over |dd/dz|
+
+
 def robust_fill(xy, width, height, origin=(0, 0)):
     v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
 
@@ -212,6 +218,7 @@ CORRECT = {
     "perspective_weights": perspective_weights,
     "depth_passes": depth_passes,
     "safe_near": safe_near,
+    "reverse_z_gap": reverse_z_gap,
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
     "hiz_rejects": hiz_rejects,

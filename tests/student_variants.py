@@ -1032,6 +1032,61 @@ def returns(value):
     return fn
 
 
+# == reverse_z_gap (exercise 5.2) ==================================================================
+
+
+def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
+    """Δz = one step at the stored depth / |dd/dz|, with one slip: ``depth`` "window" (not
+    reversed), "ndc" (2d − 1 through GL's default [−1, 1]) or "infinite far" (d = n/z);
+    ``step`` "float32", "float64", "at 1" (2^-24), "above 1" (2^-23), "relative" (2^-23 d),
+    "unorm24"; ``slope`` "exact", "infinite far" (n/z²), "z" (n/((1 − n/f) z)), "none" (the
+    step returned), "times" (multiplied); ``factor`` scales the answer (½: half a step)."""
+
+    def reverse_z_gap(z, near, far):
+        if depth == "window":
+            d = (1 - near / z) / (1 - near / far)
+        elif depth == "infinite far":
+            d = near / z
+        else:
+            d = (near / z - near / far) / (1 - near / far)
+        value = {"float32": np.float32, "float64": np.float64}.get(step, np.float32)(d)
+        s = {
+            "at 1": 2.0**-24,
+            "above 1": 2.0**-23,
+            "relative": d * 2.0**-23,
+            "unorm24": 1 / (2**24 - 1),
+        }.get(step, float(np.spacing(value)))
+        if depth == "ndc":
+            s = abs(float(np.spacing(np.float32(2 * d - 1)))) / 2
+        k = {"exact": near / ((1 - near / far) * z * z), "infinite far": near / (z * z),
+             "z": near / ((1 - near / far) * z), "none": 1.0}.get(slope, 1.0)  # fmt: skip
+        if slope == "times":
+            return factor * s * near / ((1 - near / far) * z * z)
+        return factor * s / k
+
+    return reverse_z_gap
+
+
+def gap_bisected(z, near, far):
+    """Whole float32 steps: the smallest g at which the farther surface's reversed depth lies
+    a step of the stored value's float below the nearer one's (bisection, no slope)."""
+    rev = lambda x: (near / x - near / far) / (1 - near / far)  # noqa: E731
+    d = np.float32(rev(z))
+    s = float(d - np.nextafter(d, np.float32(0)))
+    lo, hi = 0.0, z
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if rev(z) - rev(z + mid) >= s else (mid, hi)
+    return hi
+
+
+def gap_float32(z, near, far):
+    z, near, far = np.float32(z), np.float32(near), np.float32(far)
+    one = np.float32(1)
+    d = (near / z - near / far) / (one - near / far)
+    return np.spacing(d) * (one - near / far) * z * z / near
+
+
 #: Correct but different: (exercise, function); every one must pass.
 DIFFERENT = {
     "shoelace edge function": ("edge_function", edge_shoelace),
@@ -1072,6 +1127,11 @@ DIFFERENT = {
         "safe_near",
         lambda z, gap, far, bits: 1 / (gap * (2**bits - 1) / z**2 + 1 / far),
     ),  # fmt: skip
+    # 5.2: whole float32 steps by bisection; np.spacing above d (the nearer float is below it
+    # where d is a power of two); float32 throughout
+    "reverse-Z gap by whole steps": ("reverse_z_gap", gap_bisected),
+    "reverse-Z gap from np.spacing": ("reverse_z_gap", _gap_with()),
+    "reverse-Z gap in float32": ("reverse_z_gap", gap_float32),
     "robust fill, vectorised": ("robust_fill", _fill_with()),
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
@@ -1375,6 +1435,52 @@ WRONG = {
         _near_with(lambda b: 1 / (2**b - 1), infinite_far=True),
         "(f − n)/f",
     ),  # fmt: skip
+    # reverse_z_gap (5.2): each slip of the float32 step, the stored depth or the slope
+    "gap from window depth": (
+        "reverse_z_gap",
+        _gap_with(depth="window"),
+        "float32's step taken at depth 1",
+    ),
+    "gap with the step at 1": (
+        "reverse_z_gap",
+        _gap_with(step="at 1"),
+        "float32's step taken at depth 1",
+    ),
+    "gap with the step above 1": (
+        "reverse_z_gap",
+        _gap_with(step="above 1"),
+        "float32's step just above",
+    ),
+    "gap with unorm24's step": (
+        "reverse_z_gap",
+        _gap_with(step="unorm24"),
+        "float32's step taken at depth 1, 2^-24, or unorm24",
+    ),
+    "gap with float64's step": (
+        "reverse_z_gap",
+        _gap_with(step="float64"),
+        "the buffer is float32",
+    ),
+    "gap with a relative step": (
+        "reverse_z_gap",
+        _gap_with(step="relative"),
+        "share of d as float32's step",
+    ),
+    "gap through GL's NDC": ("reverse_z_gap", _gap_with(depth="ndc"), "where float32 near −1"),
+    "gap of half a step": ("reverse_z_gap", _gap_with(factor=0.5), "half a step"),
+    "gap for an infinite far": (
+        "reverse_z_gap",
+        _gap_with(depth="infinite far", slope="infinite far"),
+        "dropped the far plane",
+    ),  # fmt: skip
+    "gap with the infinite far's slope": (
+        "reverse_z_gap",
+        _gap_with(slope="infinite far"),
+        "dropped the far plane",
+    ),  # fmt: skip
+    "gap as the step in depth": ("reverse_z_gap", _gap_with(slope="none"), "step in stored depth"),
+    "gap times the slope": ("reverse_z_gap", _gap_with(slope="times"), "multiplied the step"),
+    "gap with z not squared": ("reverse_z_gap", _gap_with(slope="z"), "falls like 1/z²"),
     # robust_fill
     "fill of raw vertices": ("robust_fill", _fill_with(snap=False), "snap them"),
     "fill with E >= 0": ("robust_fill", _fill_with(tie=lambda a, b: True), "covered twice"),
@@ -1630,6 +1736,19 @@ KINDS = {
     "every fragment passes": "all pass",
     "near with NDC's step": "ndc",
     "near for an infinite far": "infinite far",
+    "gap from window depth": "window depth",
+    "gap with the step at 1": "window depth",
+    "gap with the step above 1": "step above 1",
+    "gap with unorm24's step": "window depth",
+    "gap with float64's step": "float64",
+    "gap with a relative step": "relative step",
+    "gap through GL's NDC": "gl ndc",
+    "gap of half a step": "half",
+    "gap for an infinite far": "infinite far",
+    "gap with the infinite far's slope": "infinite far, slope",
+    "gap as the step in depth": "step in depth",
+    "gap times the slope": "times slope",
+    "gap with z not squared": "z not squared",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",
@@ -1793,8 +1912,8 @@ DIFFERENT.update({
 
 #: Passing float32 answers: the report names float32 (not failed, not silent).
 FLOAT32 = {label: DIFFERENT[label] for label in (
-    "safe near in float32", "quad derivatives in float32", "front to back in float32",
-    "float32 resolve", "float32 bilinear", "float32 trilinear", "over in float32",
+    "safe near in float32", "reverse-Z gap in float32", "quad derivatives in float32",
+    "front to back in float32", "float32 resolve", "float32 bilinear", "float32 trilinear", "over in float32",
     "clip in float32",
 )}  # fmt: skip
 

@@ -130,3 +130,46 @@ def test_the_figure_labels_few_ticks_draws_the_band_and_says_a_nan():
     key = [t.get_text() for t in ax.get_legend().get_texts()]
     assert any("your n nan" in t and "not a number" in t for t in key), key
     plt.close(fig)
+
+
+# -- fixex05: exercise 5.2 (reverse_z_gap), the notebook's text -------------------------------
+
+
+def _task_text(grade_id):
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "notebooks/exercises/05_depth_precision.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    cell = next(c for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade_id)
+    return "".join(cell["source"])
+
+
+def test_the_tasks_state_the_slack_their_checks_allow_and_5_1_its_step():
+    """The 1 % of both tasks is each checker's SLACK; 5.1 says the step in window depth (r295
+    S-2: "steps of one integer" was the stored value's); 5.2 names float32 and both
+    neighbours."""
+    from teachraster.exercises import near_plane, reverse_z
+
+    first, second = _task_text("safe_near_task"), _task_text("reverse_z_gap_task")
+    for text, slack in ((first, near_plane.SLACK), (second, reverse_z.SLACK)):
+        assert f"{slack:.0%}".replace("%", " %") in text, text
+    assert "step\nof 1/(2^bits − 1) in window depth" in first, first
+    assert "**float32**" in second and "either neighbour" in second, second
+
+
+def test_reverse_z_gap_takes_either_neighbour_at_a_power_of_two_and_no_more():
+    """At d = 1/4 the float above is twice as far as the float below: both pass; 2 % coarser
+    than the coarser reading fails as too coarse."""
+    from teachraster.exercises import reverse_z
+
+    args = (1.6, 1.0, 2.0)
+    assert float(reverse_z.reversed_depth(*args)) == 0.25
+    below, above = sorted(set(reverse_z.readings(*args)))
+    assert above == 2 * below
+    expected = reverse_z.expected_gap(*args)
+    for ok in (below, above, above * 1.005):
+        assert reverse_z.same_gap(ok, expected, args)
+    assert not reverse_z.same_gap(above * 1.02, expected, args)
+    assert not reverse_z.same_gap(below * 0.99, expected, args)
+    assert "too coarse" in reverse_z.explain_gap(args, expected, above * 1.02)

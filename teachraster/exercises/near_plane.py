@@ -180,9 +180,10 @@ MISTAKES = {
     "2^bits": "you took the buffer's step as 1/2^bits; a unorm buffer's largest value is "
     "2^bits − 1, which stores depth 1, so the step is 1/(2^bits − 1)",
     # r295 M-1: half the gap gives the very same n (2·step/gap = step/(gap/2))
-    "ndc": "you took a step of 2/(2^bits − 1), as if the buffer stored NDC depth in [−1, 1] "
-    "(or, the same n, you halved the gap): it stores window depth in [0, 1], one step is "
-    "1/(2^bits − 1), and the surfaces are the whole gap apart",
+    "ndc": "you took a step of 2/(2^bits − 1), as if the buffer stored NDC depth in [−1, 1], "
+    "or you halved the gap (half a step of margin on each side?): either gives this n. The "
+    "buffer stores window depth in [0, 1], one step is 1/(2^bits − 1), and the surfaces are "
+    "the whole gap apart",
     "infinite far": "you dropped the factor (f − n)/f: your n is right only for a far plane "
     "at infinity; solve step (f − n) z² / (f n) ≤ gap for n exactly",
     "linear": "you used linear depth, (z − n)/(f − n), whose resolution is the same "

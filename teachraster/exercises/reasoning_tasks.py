@@ -8,7 +8,7 @@ typical mistakes), defined in its own module:
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
   ``safe_near`` (05b, :mod:`.near_plane`): reasoning in place of ``split_point``,
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
-  earlier versions);
+  earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
@@ -26,6 +26,7 @@ from . import hiz_tile as hz
 from . import near_plane as npl
 from . import perspective_weighting as pw
 from . import quad_difference as qd
+from . import reverse_z as rz
 from . import spans
 from . import zbuffer_pixel as zb
 from .exercise import Exercise
@@ -36,6 +37,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
     "depth_passes": lambda: zb.DEPTH_PASSES,
     "safe_near": lambda: npl.SAFE_NEAR,
+    "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,

@@ -1,0 +1,291 @@
+"""Exercise ``reverse_z_gap`` (lesson 05b, §4): what a float32 reverse-Z buffer resolves.
+
+Lesson 05b's central result: reverse-Z stores d = (n/z − n/f) / (1 − n/f) (1 at the near
+plane, 0 at the far plane), and in a **float32** buffer the far depths land near 0, where a
+float's steps are tiny, so the resolution grows about like z instead of z² (Lapidous and
+Jiao 1999; Reed, *Depth Precision Visualized*). The student works out the smallest gap Δz at
+view distance z that such a buffer resolves: §2's "one step over the slope", with the step a
+float32's at the value stored, which nothing prints as a formula (the step is fixed within a
+binade [2^e, 2^(e+1)), 2^(e−23), not 2^-23 of d).
+
+Expected answers: :func:`teachraster.depth_resolution` (``float32``, ``mapping="reversed"``).
+An answer is judged by the criterion, not closeness to that number: it passes when it is one
+float32 step at the stored depth over |dd/dz| by either neighbour of the stored float (they
+differ where d is a power of two: the float below is half as far as the float above), with
+float32's rounding below and at most :data:`SLACK` above (a rounded-up gap is still resolved).
+"""
+
+from __future__ import annotations
+
+import copy
+from functools import cache
+
+import numpy as np
+
+from ..pipeline.visibility.depth import depth_resolution, reversed_depth, window_depth
+from .answers import as_number
+from .cases import DRAWN, drawn_rng
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .package_answers import CHECKER_WORDS
+from .scalars import num
+
+#: (z, near, far) of the fixed cases: lesson 05b's planes (near 0.1, far 1000) from z = 1 to
+#: z = 999 (d from 0.1 down to 1e-7), z close to the near plane (window depth below 1/2, so
+#: float32's step there is not 1's), near/far = 1/10 (the far plane's factor 1 − n/f moves Δz
+#: by 10 %), and d exactly 1/4, a power of two.
+SETTINGS = (
+    (300.0, 0.1, 1000.0), (1.0, 0.1, 1000.0), (10.0, 0.1, 1000.0), (500.0, 0.1, 1000.0),
+    (999.0, 0.1, 1000.0), (0.15, 0.1, 1000.0), (2.0, 1.0, 10.0), (5.0, 1.0, 10.0),
+    (1.6, 1.0, 2.0), (3000.0, 0.5, 1e5), (40.0, 0.01, 50.0),
+)  # fmt: skip
+
+#: How much coarser than the finest reading an answer may be (a gap rounded up to a few
+#: digits is still one the buffer resolves).
+SLACK = 0.01
+#: float32's relative rounding, below the finest reading (a student computing in float32).
+ROUNDING = 1e-6
+
+
+def _slope(z: float, near: float, far: float) -> float:
+    """|dd/dz| of the reversed depth (window depth's slope: d = 1 − z_win)."""
+    return near / ((1.0 - near / far) * z * z)
+
+
+def _nearer_step(d: float, dtype=np.float32) -> float:
+    """The gap from ``d`` (rounded to ``dtype``) to its nearer neighbour: below it at a power
+    of two (the package's step, :func:`depth_resolution`)."""
+    x = dtype(d)
+    above = abs(float(np.spacing(x)))
+    below = abs(float(x) - float(np.nextafter(x, dtype(-np.inf))))
+    return min(above, below)
+
+
+def readings(z: float, near: float, far: float) -> list[float]:
+    """Δz by each reading of "one float32 step at the stored depth": the gap to the float
+    above the stored d, to the float below it, and the step of d's own binade."""
+    d = float(reversed_depth(z, near, far))
+    x = np.float32(d)
+    steps = [
+        abs(float(np.spacing(x))),
+        abs(float(x) - float(np.nextafter(x, np.float32(-np.inf)))),
+        2.0 ** (np.floor(np.log2(d)) - 23),
+    ]
+    return [s / _slope(z, near, far) for s in steps]
+
+
+def bounds(z: float, near: float, far: float) -> tuple[float, float]:
+    """(lowest, highest) Δz that passes."""
+    r = readings(z, near, far)
+    return min(r) * (1 - ROUNDING), max(r) * (1 + SLACK)
+
+
+@cache
+def _bounds(z, near, far) -> tuple[float, float]:
+    return bounds(z, near, far)
+
+
+def expected_gap(z: float, near: float, far: float) -> float:
+    """The package's Δz of a float32 reverse-Z buffer at z."""
+    return float(depth_resolution([z], near, far, "float32", mapping="reversed")[0])
+
+
+def gap_cases() -> list[tuple[str, tuple, float]]:
+    """The fixed cases (built once, copied) and :data:`DRAWN` drawn for this check, so a
+    table of the fixed cases' answers fails."""
+    out, rng = copy.deepcopy(_gap_cases()), drawn_rng()
+    for k in range(DRAWN):
+        z, near, far = _drawn_setting(rng)
+        label = (f"drawn for this check {k + 1}: z = {num(z)}, near = {num(near)}, "
+                 f"far = {num(far)}")  # fmt: skip
+        out.append((label, (z, near, far), expected_gap(z, near, far)))
+    return out
+
+
+def _drawn_setting(rng) -> tuple[float, float, float]:
+    """(z, near, far), three significant digits: far from 10 to 10⁵, near a thousandth to a
+    millionth of it (or a tenth), z between twice the near plane and 0.95 of the far."""
+    far = float(f"{10 ** rng.uniform(1, 5):.3g}")
+    near = float(f"{far * 10 ** rng.choice([rng.uniform(-6, -3), -1.0]):.3g}")
+    z = float(f"{near * 10 ** rng.uniform(np.log10(2), np.log10(0.95 * far / near)):.3g}")
+    return z, near, far
+
+
+@cache
+def _gap_cases() -> list[tuple[str, tuple, float]]:
+    return [(f"z = {num(z)}, near = {num(near)}, far = {num(far)}", (z, near, far),
+             expected_gap(z, near, far)) for z, near, far in SETTINGS]  # fmt: skip
+
+
+def same_gap(got, expected, args=None) -> bool:
+    """One float32 step at the stored depth over the slope, by any reading (:func:`bounds`);
+    without the case's ``args``, within 1e-6 of ``expected``."""
+    if args is None:
+        return bool(abs(got - expected) <= 1e-6 * abs(expected))
+    if not np.isfinite(got):
+        return False
+    lo, hi = _bounds(*(float(a) for a in args))
+    return lo <= got <= hi
+
+
+def _variants(z, near, far) -> dict[str, float]:
+    """The Δz typical slips give (each one change)."""
+    d = float(reversed_depth(z, near, far))
+    slope = _slope(z, near, far)
+    step = _nearer_step(d)
+    win = float(window_depth(z, near, far))
+    return {
+        "window depth": _nearer_step(win) / slope,
+        "step above 1": 2.0**-23 / slope,
+        "float64": _nearer_step(d, np.float64) / slope,
+        "relative step": d * 2.0**-23 / slope,
+        "relative step, half": d * 2.0**-24 / slope,
+        "half": step / (2 * slope),
+        "gl ndc": _nearer_step(2 * d - 1) / 2 / slope,
+        "infinite far": _nearer_step(near / z) * z * z / near,
+        "infinite far, slope": step * z * z / near,
+        "step in depth": step,
+        "times slope": step * slope,
+        "z not squared": step * z * (1 - near / far) / near,
+    }
+
+
+_RELATIVE = ("you took a fixed share of d as float32's step (its relative precision, "
+             "2^-23 or 2^-24 of d): within a binade [2^e, 2^(e+1)) every step is the same, "
+             "2^(e−23), which is 2^-23 · d only where d is a power of two")  # fmt: skip
+_INFINITE = (
+    "you dropped the far plane: d = n/z and |dd/dz| = n/z² hold for f = ∞ only; "
+    "with this far plane d = (n/z − n/f)/(1 − n/f) and |dd/dz| = n/((1 − n/f) z²)"
+)
+
+MISTAKES = {
+    # r295 M-1's lesson: one answer, several readings, all named. Window depth's float32 step
+    # is 2^-24 wherever z_win ≥ 1/2, so 2^-24 (the step below 1) and unorm24's 1/(2^24 − 1)
+    # give this very answer there, and the right one elsewhere (there d ≥ 1/2)
+    "window depth": "that is the Δz of ordinary window depth z_win, not reversed (or, the "
+    "same answer, float32's step taken at depth 1, 2^-24, or unorm24's step): far depths lie "
+    "near 1 there, where float32's step is 2^-24. Reverse-Z stores d = 1 − z_win, which lies "
+    "near 0 for far surfaces, where float32's steps are tiny",
+    "step above 1": "you took float32's step just above depth 1, 2^-23: the buffer stores d, "
+    "near 0 for far surfaces, and float32's step is the one at d",
+    "float64": "you took float64's step at d (np.spacing of a float64): the buffer is "
+    "float32, whose steps are 2^29 times coarser",
+    "relative step": _RELATIVE,
+    "relative step, half": _RELATIVE,
+    # two readings give this very answer: half a step, and NDC's slope
+    "half": "yours is half of it: you took half a step (a value's rounding error, ±step/2) "
+    "or the slope of an NDC depth 2d − 1 in [−1, 1], twice d's. Two surfaces store different "
+    "values once their depths are a whole step apart, and the buffer stores d in [0, 1]",
+    "gl ndc": "you sent d through OpenGL's default NDC, 2d − 1 in [−1, 1], where float32 "
+    "near −1 has steps of 2^-24 only: that is reverse-Z without glClipControl(..., "
+    "GL_ZERO_TO_ONE) (lesson 05b, §4). The buffer here stores d itself, in [0, 1]",
+    "infinite far": _INFINITE,
+    "infinite far, slope": _INFINITE,
+    "step in depth": "you returned the step in stored depth; Δz is a distance in view "
+    "depth: that step divided by |dd/dz|",
+    "times slope": "you multiplied the step by |dd/dz|; divide it: Δz = step / |dd/dz|",
+    "z not squared": "you used z where the slope falls like 1/z²: |dd/dz| = n/((1 − n/f) z²)",
+}
+
+
+def explain_gap(args, expected, got) -> str:
+    """The case, the stored depth, the smallest gap and the student's, with a verdict."""
+    z, near, far = args
+    lo, hi = _bounds(float(z), float(near), float(far))
+    d = float(reversed_depth(z, near, far))
+    head = (f"at z = {num(z)} with near = {num(near)} and far = {num(far)}, reverse-Z stores "
+            f"d = {d:.4g}, where the buffer resolves Δz = {num(expected, got)}; yours is "
+            f"{num(got, expected)}")  # fmt: skip
+    if not np.isfinite(got) or got <= 0:
+        return head
+    # the band, as safe_near's words give it (at a power of two it is 2 wide: either neighbour)
+    band = f"the check accepts {_num(lo, hi)} to {_num(hi, lo)}"
+    if got < lo:
+        return (f"{head} ({num(expected / got, 1.0)} times too fine: surfaces that close can "
+                f"store one value; {band})")  # fmt: skip
+    if got > hi:
+        return f"{head} ({num(got / expected, 1.0)} times too coarse; {band})"
+    return f"{head} (right)"
+
+
+def _rule(args, expected, got) -> str:
+    return (". Δz is one float32 step at the stored d (fixed within each binade "
+            "[2^e, 2^(e+1)): 2^(e−23)) divided by |dd/dz| = n/((1 − n/f) z²)")  # fmt: skip
+
+
+def _same_answer(got, answer, args) -> bool:
+    """A mistake gives the student's answer: within 1e-6 relative (Δz is often 1e-8 or
+    less, where the default's absolute tolerance near zero would take any tiny number)."""
+    if answer is None or not np.isfinite(answer) or not np.isfinite(got):
+        return answer is not None and got == answer
+    return abs(got - answer) <= 1e-6 * max(abs(got), abs(answer))
+
+
+def _num(x: float, other: float) -> str:
+    """``x`` with at least 3 significant digits, more where needed to tell it from ``other``."""
+    return max(num(x, other), f"{x:.3g}", key=len)
+
+
+def _not_positive(args, expected, got) -> bool:
+    return bool(np.isfinite(got)) and got <= 0
+
+
+RANGE = Mistake("range", ": a gap is a positive distance", fits=_not_positive, symptom=True)
+
+
+def draw_gap(ax, case, got):
+    """Δz against z (log-log) near the case, float32 reverse-Z and window depth, the accepted
+    range at the case's z, the expected gap and yours."""
+    _, (z, near, far), expected = case
+    lo_z, hi_z = max(z / 4, near * 1.01), min(z * 4, far * 0.999)
+    zs = np.geomspace(lo_z, hi_z, 400)
+    artists = ax.loglog(zs, depth_resolution(zs, near, far, "float32", mapping="reversed"),
+                        color="black", label="float32, reverse-Z")  # fmt: skip
+    artists += ax.loglog(zs, depth_resolution(zs, near, far, "float32"), color="#888888",
+                         linestyle=":", label="float32, window depth")  # fmt: skip
+    first, last = _bounds(float(z), float(near), float(far))
+    # the band is 1 % tall, a sliver on decades of Δz: the legend says its ends
+    artists += ax.plot([z, z], [first, last], color="#7fbf7f", lw=8, solid_capstyle="butt",
+                       label=f"accepted {_num(first, last)} to {_num(last, first)}",
+                       zorder=1)  # fmt: skip
+    artists += ax.plot([z], [expected], "o", color="#2b7bba", ms=8,
+                       label=f"Δz (expected) {num(expected, got)}")  # fmt: skip
+    if got is not None and np.isfinite(got) and got > 0:
+        colour = "#7fbf7f" if same_gap(got, expected, (z, near, far)) else "#d7301f"
+        artists += ax.plot([z], [got], "x", color=colour, ms=12, mew=2.5,
+                           label=f"your Δz {num(got, expected)}")  # fmt: skip
+        ax.set_ylim(min(ax.get_ylim()[0], got / 3), max(ax.get_ylim()[1], got * 3))
+    elif got is not None:
+        why = "not a number" if np.isnan(got) else "not a positive distance"
+        artists += ax.plot([], [], " ", label=f"your Δz {num(got)}: not drawn, {why}")
+    ax.set_xlim(lo_z, hi_z)
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
+
+    # z spans a decade or so: 1, 2 and 5 times powers of ten, written plainly (matplotlib's
+    # minor labels overlapped, its major ones left a single 10²)
+    ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+    ax.xaxis.set_minor_locator(NullLocator())
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.set_xlabel(f"view depth z (near {num(near)}, far {num(far)})")
+    ax.set_ylabel("smallest resolved gap Δz")
+    # beside the axes: inside, it lay on the window-depth curve (which rises to the top left
+    # or right, whichever the case)
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    return artists
+
+
+REVERSE_Z_GAP = Exercise(
+    "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
+    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=_same_answer,
+    # float32's rounding is relative to Δz itself (1e-8 and less), not to 1
+    float32=lambda args: expected_gap(*args),
+    answers=(
+        PackageAnswer(expected_gap, words=CHECKER_WORDS),
+        PackageAnswer(depth_resolution, what="float32 reverse-Z's Δz, this very answer",
+                      when=lambda a: a.get("fmt") == "float32" and a.get("mapping") == "reversed"),
+    ), hints=(
+        (". Δz is one float32 step at the stored d (fixed within each binade [2^e, 2^(e+1)): "
+         "2^(e−23)) divided by |dd/dz| = n/((1 − n/f) z²)",
+         ". Find the float32 step at the value the buffer stores, and how fast that value "
+         "changes with z"),
+    ),
+)  # fmt: skip
