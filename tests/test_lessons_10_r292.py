@@ -59,7 +59,7 @@ def test_10_r292_items():
     for k in (ask + 1, ask + 2):
         assert text[k].startswith("q_tile.hold()"), k
     assert "stored depths" in text[ask + 1] and "**Smaller tiles reject more**" in text[ask + 2]
-    assert ns.q_tile_answer == "smaller tiles reject more"
+    assert ns.q_tile_answer == ns.tile_counts["front to back", 16]["hiz_rejected"]  # r305 P1
     assert ns.f2b == [ns.tile_counts["front to back", t]["hiz_rejected"] for t in (4, 8, 16)]
     # M1: one folded paragraph, in §9
     nine = md.split("## 9.")[1]
