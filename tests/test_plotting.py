@@ -156,6 +156,29 @@ def test_pixel_axes_are_y_down_with_centres_on_ticks():
     assert ax.get_xticks()[0] == 0.5
 
 
+def test_clear_axes_keeps_the_ticks_and_draws_what_a_cleared_axes_draws():
+    """clear_axes (the FrameInspector's redraw) keeps the Tick objects that ax.clear() makes
+    anew, and the picture is a cleared Axes' one, bit for bit, across tick changes made
+    before the clear (a minor pad, a top axis, a smaller label)."""
+    from teachraster.plotting.common import clear_axes
+
+    def picture(clear):
+        fig, ax = plt.subplots(figsize=(3, 2), dpi=50)
+        tp.plot_pixel_grid(ax, 30, 20)  # many ticks, on top
+        ax.set_xticks([0.5, 3.5], ["a", "b"], minor=True, fontsize="x-small")
+        ax.tick_params(axis="x", which="minor", pad=12)
+        fig.canvas.draw()
+        kept = ax.xaxis.majorTicks[1]
+        clear(ax)
+        tp.plot_pixel_grid(ax, 6, 4)  # fewer ticks, bottom labels gone
+        ax.set_xticks([1, 3], ["c", "d"], minor=True)  # between the major ones
+        fig.canvas.draw()
+        return np.asarray(fig.canvas.buffer_rgba()).copy(), ax.xaxis.majorTicks[1] is kept
+
+    (cleared, _), (ours, same) = picture(lambda ax: ax.clear()), picture(clear_axes)
+    assert same and np.array_equal(ours, cleared)
+
+
 def test_triangle_labels_and_arrows():
     fig, ax = plt.subplots()
     xy = np.array([[1.0, 1.0], [9.0, 2.0], [3.0, 8.0]])

@@ -20,7 +20,7 @@ from matplotlib.colors import BoundaryNorm, ListedColormap, LogNorm, Normalize
 
 from ..core.validate import check_choice
 from ..pipeline.debugging.overlays import KINDS, helper_share
-from .common import Artists, pixel_axes, show_image
+from .common import Artists, clear_axes, pixel_axes, show_image
 from .style import ERROR_CMAP, VALUE_CMAP
 
 #: What one unit of each overlay is, for the colour bar.
@@ -156,7 +156,7 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None,
     if colorbar:
         room = dict(ax=ax, shrink=0.8) if cax is None else dict(cax=cax)
         if cax is not None:
-            cax.clear()
+            clear_axes(cax)
         result.colorbar = ax.figure.colorbar(im, **room, ticks=ticks, format="%g",
                                              orientation=orientation)  # fmt: skip
         label = overlay_label(kind, n_samples)

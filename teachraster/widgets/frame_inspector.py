@@ -25,6 +25,7 @@ from ..pipeline.rendering.render_scenes import render
 from ..pipeline.rendering.render_triangles import render as render_clip
 from ..pipeline.rendering.scenes import SCENES, get_scene
 from ..plotting import plot_history, plot_image, plot_overlay
+from ..plotting.common import clear_axes
 from ..plotting.frame_debug import fit_title, plot_triangle_edges
 from .common import (
     SLIDER_COLUMN_WIDTH,
@@ -549,7 +550,7 @@ class FrameInspector(Holdable):
 
     def _draw_frame(self) -> None:
         ax = self.ax
-        ax.clear()
+        clear_axes(ax)
         self.cax.set_visible(self.view.value != "image")
         self._fit_figure()
         if self.view.value == "image":
@@ -592,7 +593,7 @@ class FrameInspector(Holdable):
 
     def _draw_history(self) -> None:
         self._fit_history()
-        self.hist_ax.clear()
+        clear_axes(self.hist_ax)
         plot_history(self.hist_ax, self.history)
         if self.frames:  # r22 D1: whose history, as the chart stands under the pair's table
             self.hist_ax.set_title(self.history_title(), fontsize="small")
