@@ -141,14 +141,16 @@ def clear_axes(ax) -> None:
     """``ax.clear()`` for a figure drawn again, keeping the axes' Tick objects.
 
     Matplotlib makes every tick anew after a clear (two lines, two texts and their
-    transforms each, ~0.5 ms a tick): about a fifth of a FrameInspector view change. The ticks are kept and given the props of the
-    fresh tick the clear made, as matplotlib gives them to every tick it adds after the
-    first (``Axis._copy_tick_props``): the picture is the one a cleared Axes draws, pixel
+    transforms each, ~0.5 ms a tick): about a fifth of a FrameInspector view change. The
+    ticks are kept and given the props of the fresh tick the clear made, as matplotlib
+    gives them to every tick it adds after the first (``Axis._copy_tick_props``): the picture is the one a cleared Axes draws, pixel
     for pixel (tests/test_lesson_widgets.py compares walked widgets with fresh ones).
     """
     kept = [(axis, vars(axis).get("majorTicks"), vars(axis).get("minorTicks"))
             for axis in (ax.xaxis, ax.yaxis)]  # fmt: skip
     ax.clear()
+    if not hasattr(ax.xaxis, "_copy_tick_props"):
+        return  # a matplotlib without it (private API): the plain clear, ticks made anew
     for axis, *ticks in kept:
         for name, old in zip(("majorTicks", "minorTicks"), ticks):
             if not old or len(old) < 2:
