@@ -20,6 +20,7 @@ from exercise_solutions import (
     _covers_with,
     _owns,
     _snap_exact,
+    _srgb_decode,
     bilinear,
     clip_against,
     covers,
@@ -2336,3 +2337,64 @@ R306 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R306.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R306.items()})
+
+
+# -- r308 06: one wrongly passed, two misnamed, seven half-named -------------------------------
+def _on_256(v):
+    return Fraction(round(Fraction(float(v)) * 256), 256)  # half to even, as vertices are
+
+
+def _with_bg(c, i, b):
+    return np.where(np.asarray(i)[:, None] >= 0, np.nan_to_num(np.asarray(c, float)), b)
+
+
+def _srgb_encode(y):  # the exact sRGB curve back (IEC 61966-2-1)
+    y = np.asarray(y, dtype=float)
+    return np.where(y <= 0.0031308, y * 12.92, 1.055 * np.abs(y) ** (1 / 2.4) - 0.055)
+
+
+def _srgb_mix_in_codes(c, i, b):
+    """The covered samples resolved in light and encoded, the background's share in codes."""
+    i = np.asarray(i)
+    k, s = int((i >= 0).sum()), len(i)
+    if k == 0:
+        return np.asarray(b, dtype=float)
+    light = _srgb_decode(np.asarray(c, float)[i >= 0]).mean(axis=0)
+    return (k * _srgb_encode(light) + (s - k) * np.asarray(b, float)) / s
+
+
+R308 = {
+    "coverage with the samples snapped": (
+        "coverage_fraction",
+        lambda xy, pixel, samples: _coverage(xy, pixel, [(_on_256(x), _on_256(y))
+                                                         for x, y in samples]),
+        "you snapped the sample positions"),
+    "resolve as a median": (
+        "resolve", lambda c, i, b: np.median(_with_bg(c, i, b), axis=0), "median of the samples"),
+    "resolve, the background if any sample is uncovered": (
+        "resolve", lambda c, i, b: np.asarray(b, float) if (np.asarray(i) < 0).any()
+        else np.mean(c, axis=0), "you returned the background because a sample is uncovered"),
+    "resolve over S − 1": (
+        "resolve", lambda c, i, b: _with_bg(c, i, b).sum(axis=0) / max(len(i) - 1, 1),
+        "divided by S − 1"),
+    "resolve_srgb with the uncovered samples black": (
+        "resolve_srgb", lambda c, i, b: _srgb_encode(_srgb_decode(np.nan_to_num(c)).mean(axis=0)),
+        "not as black"),
+    "resolve_srgb with the background alone decoded": (
+        "resolve_srgb",
+        lambda c, i, b: _srgb_encode(CORRECT["resolve"](c, i, _srgb_decode(b))),
+        "you decoded the background but not the samples"),
+    "resolve_srgb encoded without decoding": (
+        "resolve_srgb", lambda c, i, b: _srgb_encode(CORRECT["resolve"](c, i, b)),
+        "you encoded the mean without decoding first"),
+    "resolve_srgb with the background mixed in codes": (
+        "resolve_srgb", _srgb_mix_in_codes, "mixed in the background's share as encoded"),
+    "resolve_srgb over 4 in light": (
+        "resolve_srgb",
+        lambda c, i, b: _srgb_encode(_srgb_decode(_with_bg(c, i, b)).sum(axis=0) / 4),
+        "you divided by 4 whatever the number of samples"),
+    "resolve_srgb of the codes over 4": (
+        "resolve_srgb", lambda c, i, b: _with_bg(c, i, b).sum(axis=0) / 4,
+        "sRGB-encoded numbers, as 6.2's resolve does, dividing by 4"),
+}  # fmt: skip
+WRONG.update(R308)

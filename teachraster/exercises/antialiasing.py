@@ -120,6 +120,11 @@ def _coverage_cases(rng, word):
         ("off the grid: 7/1024 px past the grid rounds up, past the sample",
          [[2.375 + 7 / 1024, -1], [6, 1.5], [2.375 + 7 / 1024, 5]], (1, 2),
          [[0.375 + 1 / 256, 0.125]]),
+        # r308 WP1: snapping the samples too passed every case (each sample off the 1/256
+        # grid was far from an edge): a sample 1/512 px outside a left edge on the grid rounds
+        # (half to even) onto it, where the edge owns it
+        ("a sample 1/512 px left of a left edge (samples are not snapped)",
+         [[2.375, -1], [6, 1.5], [2.375, 5]], (1, 2), [[0.375 - 1 / 512, 0.125]]),
         ("zero area through the samples", [[2.375, 1.125], [2.875, 1.375], [3.375, 1.625]], (1, 2), four),  # fmt: skip
         ("one sample at the centre, on an edge", [[2.5, 0], [6, 3], [2.5, 6]], (1, 2), sample_pattern(1)),  # fmt: skip
         ("2 samples, a diagonal through both", [[0, 0], [8, 8], [0, 8]], (1, 1), sample_pattern(2)),
@@ -160,7 +165,7 @@ def explain_coverage(args, expected, got) -> str:
     inside = covered_samples(snapped, points)
     which = ", ".join(str(k) for k in np.flatnonzero(inside)) or "none"
     return (
-        f"pixel (row {pixel[0]}, col {pixel[1]}) of {tri_words(xy)} with {s} samples: the rule "
+        f"pixel (row {pixel[0]}, col {pixel[1]}) of {tri_words(xy)} with {s} sample{'s' * (s != 1)}: the rule "
         f"covers {int(inside.sum())} of {s} (samples {which}), {num(expected)}; yours is "
         f"{num(got, expected)}"
     )
@@ -175,6 +180,7 @@ POINTS = {
     "y up": lambda pixel, samples: np.asarray(samples, float) * [1, -1] + [pixel[1], pixel[0] + 1],
     "(row, col)": lambda pixel, samples: np.asarray(samples, float) + [pixel[0], pixel[1]],
     "(oy, ox)": lambda pixel, samples: np.asarray(samples, float)[:, ::-1] + [pixel[1], pixel[0]],
+    "snapped": lambda pixel, samples: snap(sample_points(pixel, samples)),
 }
 SNAPPING = {
     "even": snap,
@@ -191,6 +197,22 @@ SNAPPING = {
 GRIDS = (0, 4, 6, 7, 9)
 SNAPPING.update({f"{b} bits": (lambda xy, b=b: np.rint(np.asarray(xy, float) * 2**b) / 2**b)
                  for b in GRIDS})  # fmt: skip
+
+
+def _snapped_samples_words(args, expected, got) -> str:
+    """r308 WP1: the sample positions snapped to the vertices' grid, named with the sample
+    that snapping moves onto (or across) an edge here."""
+    _, pixel, samples = args
+    points = sample_points(pixel, samples)
+    moved = ", ".join(f"sample {k} {exact(a)} → {exact(b)}"
+                      for k, (a, b) in enumerate(zip(points, snap(points))) if (a != b).any())  # fmt: skip
+    return (
+        "you snapped the sample positions to the 1/256 grid too: only the vertices are "
+        "snapped; a sample lies where its offset puts it (col + ox, row + oy), on the 1/512 "
+        f"grid as given{': here ' + moved if moved else ''}"
+    )
+
+
 #: An edge's kind seen from the other end (an edge walked backwards).
 _REVERSED_KIND = {"top": "bottom", "bottom": "top", "left": "right", "right": "left"}
 
@@ -317,6 +339,7 @@ ALONE_KNOBS = Knobs(fraction_with, {
              "bottom); decide them on the edges as they run once the triangle is turned "
              "(swap two vertices first)", "ties unturned"),
     ],
+    "points": [Slip("samples snapped", _snapped_samples_words, "snapped")],
     "count": [
         Slip("percentage", "that is a percentage (100 × the fraction); return the fraction "
              "itself, between 0 and 1", "percent"),
@@ -347,7 +370,9 @@ def draw_coverage_case(ax, case, got):
     points = sample_points((row, col), samples)
     inside = covered_samples(snapped, points)
     ring = np.vstack([snapped, snapped[:1]])
-    artists = list(ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1))
+    # r308 FIG2: the inside shaded (an outline alone, one edge in view, showed no side)
+    artists = ax.fill(*snapped.T, color="#2b7bba", alpha=0.15, linewidth=0, label="triangle")
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     if got is None:  # before any answer the samples undecided (r64: the stub shows no answer)
         inside = np.zeros(len(points), dtype=bool)
     else:
@@ -359,12 +384,23 @@ def draw_coverage_case(ax, case, got):
     if got is None:
         ax.set_xlabel(f"pixel (row {row}, col {col}), {len(points)} samples")
     else:
-        ax.set_xlabel(f"fraction {num(case[2])}, yours {num(got, case[2])}")
+        tie = _tie_caption(snapped, points)
+        ax.set_xlabel(f"fraction {num(case[2])}, yours {num(got, case[2])}{tie}", fontsize="small")
     ax.set_xlim(col - 1, col + 2)
     ax.set_ylim(row + 2, row - 1)
     ax.set_aspect("equal")
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     return artists
+
+
+def _tie_caption(snapped, points) -> str:
+    """A second line under the case: the first sample exactly on an edge and the rule's
+    verdict, or "" (r308 FIG2: "sample 0 on a left edge" said nothing of its tie)."""
+    on = next(((k, w) for k, p in enumerate(points) if (w := _edge_words(snapped, p))), None)
+    if on is None:
+        return ""
+    k, words = on
+    return f"\nsample {k} {words.replace('lies exactly', 'lies')}"
 
 
 def as_fraction(value) -> float:
@@ -456,7 +492,8 @@ def explain_resolve(args, expected, got) -> str:
     colours, ids, background = args
     s, k = len(ids), int((ids >= 0).sum())
     return (
-        f"ids {ids.tolist()} ({k} of {s} samples covered), background {vec(background)}: the "
+        f"ids {ids.tolist()} ({k} of {s} sample{'s' * (s != 1)} covered), background "
+        f"{vec(background)}: the "
         f"resolve is {vec(expected, got)}; yours is {vec(got, expected)}"
     )
 
@@ -464,6 +501,8 @@ def explain_resolve(args, expected, got) -> str:
 def _mean_rule(args) -> str:
     _, ids, _ = args
     s, k = len(ids), int((ids >= 0).sum())
+    if k == s:  # r308 S3: "the 0 uncovered ones counting as the background" said of none
+        return f"the mean over all {s} samples"
     return (
         f"the mean over all {s} samples, the {s - k} uncovered one{'s' * (s - k != 1)} "
         "counting as the background"
@@ -519,12 +558,16 @@ def _with_background(colours, ids, background):
     return np.where((ids >= 0)[:, None], colours, background)
 
 
-def _fixed_count(args, expected, got) -> float | None:
+def _fixed_count(args, expected, got, decode=None, mean=False) -> float | None:
     """N ≠ S where ``got`` is the samples (the uncovered ones as the background) summed and
-    divided by N, or None."""
+    divided by N, or None; with ``decode`` (6.3: ``srgb_to_linear``) summed in light, the
+    sum over N encoded again; with ``mean`` N = S too (6.3: the codes averaged, a mistake)."""
     colours, ids, background = args
-    total = _with_background(colours, ids, background).sum(axis=0)
     try:
+        if decode is not None:
+            colours = decode(np.nan_to_num(np.asarray(colours, dtype=float)))
+            background, got = decode(background), decode(got)
+        total = _with_background(colours, ids, background).sum(axis=0)
         g = np.asarray(got, dtype=float).reshape(total.shape)
     except (TypeError, ValueError):
         return None
@@ -532,9 +575,50 @@ def _fixed_count(args, expected, got) -> float | None:
     if not np.isfinite(g).all() or total[big] == 0 or g[big] == 0:
         return None
     n = float(total[big] / g[big])
-    if n <= 1 + 1e-9 or abs(n - len(ids)) < 1e-9:  # 1: the sum, a mistake of its own
+    if n <= 1 + 1e-9 or (abs(n - len(ids)) < 1e-9 and not mean):  # 1: the sum, a mistake
         return None
     return n if np.allclose(g * n, total, rtol=1e-9, atol=1e-12) else None
+
+
+def fixed_count_mistake(words: str = "", decode=None) -> Mistake:
+    """The samples summed and divided by one N whatever S (r199 12-9: ``sum / 4``), in 6.2's
+    numbers or (``decode``) in 6.3's light; ``words`` come first (6.3: the codes averaged,
+    where N = S is a mistake too)."""
+
+    def parameter(args, expected, got):
+        return _fixed_count(args, expected, got, decode, mean=bool(words))
+
+    def said(args, expected, got):
+        n, s = num(parameter(args, expected, got)), len(args[1])
+        if words:
+            return (f"{words}, dividing by {n} whatever the number of samples (this pixel has "
+                    f"S = {s}, len(sample_ids)): decode first, average over the S samples in "
+                    "linear light, encode the mean")  # fmt: skip
+        return (f": you divided by {n} whatever the number of samples: this pixel has S = {s}, "
+                "and the mean divides by the samples the pixel has (len(sample_ids))")  # fmt: skip
+
+    # only_whole: every failing answer (a max is one sum / 2 by chance)
+    return Mistake("fixed count", said, fits=lambda a, e, g: parameter(a, e, g) is not None,
+                   parameter=parameter, only_whole=True)  # fmt: skip
+
+
+#: The uncovered samples taken as black (np.nan_to_num), said in 6.2 and 6.3 (r308 MN1: 6.3
+#: asked at which step each value must be light, though the steps were right).
+UNCOVERED_AS_BLACK = "the uncovered samples count as the background {bg}, not as black"
+
+
+def uncovered_as_black(colours, ids, background):
+    return np.where((np.asarray(ids) >= 0)[:, None], colours, 0.0).mean(axis=0)
+
+
+def _background_if_any_words(args, expected, got) -> str:
+    _, ids, _ = args
+    s, k = len(ids), int((ids >= 0).sum())
+    return (
+        f": you returned the background because a sample is uncovered: it fills only the "
+        f"uncovered samples' share ({s - k} of {s}), and the {k} covered "
+        f"{'ones count' if k != 1 else 'one counts'} too; " + _mean_rule(args)
+    )
 
 
 def _in_light(colours, ids, background):
@@ -561,9 +645,7 @@ CHANNEL_ORDER = channel_order_mistake(": the right colour in another channel ord
 
 RESOLVE_MISTAKES = [
     Mistake("covered only", _covered_words, gives=_covered_mean),
-    Mistake("uncovered as black", _resolve_words("the uncovered samples count as the background "
-            "{bg}, not as black"),
-            gives=lambda c, i, b: np.where((i >= 0)[:, None], c, 0.0).mean(axis=0)),
+    Mistake("uncovered as black", _resolve_words(UNCOVERED_AS_BLACK), gives=uncovered_as_black),
     Mistake("NaN samples", _resolve_words("uncovered samples hold NaN (no triangle wrote "
             "them), and a mean with NaN is NaN"), gives=lambda c, i, b: c.mean(axis=0)),
     Mistake("majority", _resolve_words("that is the colour of the triangle owning most "
@@ -592,11 +674,19 @@ RESOLVE_MISTAKES = [
             if (i >= 0).any() else None),
     # r199 12-9: `sum / 4` (the capstone's 4 samples) failed 6.2's cases of other S, asked
     # about an uncovered share on a pixel whose samples were all covered
-    Mistake("fixed count", lambda a, e, g: f": you divided by {num(_fixed_count(a, e, g))} "
-            f"whatever the number of samples: this pixel has S = {len(a[1])}, and the mean "
-            "divides by the samples the pixel has (len(sample_ids))",
-            fits=lambda a, e, g: _fixed_count(a, e, g) is not None, parameter=_fixed_count,
-            only_whole=True),  # every failing answer: a max is one sum / 2 by chance
+    fixed_count_mistake(),
+    # r308 MN2, HN: the median, the background wherever a sample is uncovered, S − 1
+    Mistake("median", _resolve_words("that is the median of the samples (the uncovered ones "
+            "rightly the background): the resolve is their mean, each sample an equal share "
+            "of the pixel"),
+            gives=lambda c, i, b: np.median(_with_background(c, i, b), axis=0)),
+    Mistake("background if any uncovered", _background_if_any_words,
+            gives=lambda c, i, b: np.asarray(b, dtype=float) if (i < 0).any()
+            else c.mean(axis=0)),
+    Mistake("divided by S − 1", lambda a, e, g: f": you divided by S − 1 = {len(a[1]) - 1}, "
+            f"not by the S = {len(a[1])} samples the pixel has (len(sample_ids))",
+            gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0) / (len(i) - 1)
+            if len(i) > 1 else None),
     # r163 12-9: a mean rounded to 8 bits, round(x·255)/255, was told to count the background
     EIGHT_BIT,
     CHANNEL_ORDER,
@@ -678,8 +768,9 @@ def draw_resolve_case(ax, case, got, extra=None):
     for k in range(1, s):
         artists += ax.plot([k * width] * 2, [0, 1], color="white", linewidth=0.8)
     ticks = [1.5]
-    names = [f"{s} samples, {int(covered.sum())} covered\n(hatched: none, the\n"
-             f"background {vec(background)})"]  # fmt: skip
+    # r308 S4: "hatched: none" under a strip with no hatching read as the key
+    names = [f"{s} samples, {int(covered.sum())} covered\n(hatched = uncovered:\n"
+             f"the background {vec(background)})"]  # fmt: skip
     cells = []
     if got is not None:
         want, yours = colour_texts(case[2], got)

@@ -19,13 +19,16 @@ from ..pipeline.render_triangles import Frame
 from .antialiasing import (
     CHANNEL_ORDER,
     ON_255,
+    UNCOVERED_AS_BLACK,
     as_colour,
     draw_resolve_case,
     expected_resolve,
+    fixed_count_mistake,
     resolve_case,
     resolve_cases,
     same_colour,
     swatch_words,
+    uncovered_as_black,
 )
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import num, vec
@@ -88,15 +91,16 @@ def _rule(args, expected, got) -> str:
     return RULE
 
 
-def _mix(colours, ids, background, decode, encode, covered_only=False):
-    """A resolve with the decoding and encoding given (identity: the numbers as they are)."""
+def _mix(colours, ids, background, decode, encode, covered_only=False, background_decode=None):
+    """A resolve with the decoding and encoding given (identity: the numbers as they are);
+    ``background_decode`` where the background is decoded otherwise than the samples."""
     c = _covered(ids)
     if covered_only:
         if not c.any():
             return None
         return encode(decode(np.asarray(colours, float)[c]).mean(axis=0))
     mixed = np.where(c[:, None], decode(np.nan_to_num(np.asarray(colours, float))),
-                     decode(np.asarray(background, float)))  # fmt: skip
+                     (background_decode or decode)(np.asarray(background, float)))  # fmt: skip
     return encode(mixed.mean(axis=0))
 
 
@@ -118,10 +122,29 @@ def _no_linear_part_back(y):
 
 
 def _background_raw(colours, ids, background):
+    return _mix(colours, ids, background, _decode, _encode, background_decode=_same)
+
+
+def _in_light(resolve):
+    """A 6.2 resolve (or a slip of one) done the right way round: samples and background
+    decoded, the mean encoded (r308: 6.2's slips made in light, one model for both)."""
+    return lambda c, i, b: _encode(resolve(_decode(c), np.asarray(i), srgb_to_linear(b)))
+
+
+def _background_in_codes(colours, ids, background):
+    """The covered samples averaged in light and encoded, then mixed with the encoded
+    background by their shares (r308 HN: two resolves, one in light, one in codes)."""
     c = _covered(ids)
-    mixed = np.where(c[:, None], _decode(np.nan_to_num(np.asarray(colours, float))),
-                     np.asarray(background, float))  # fmt: skip
-    return _encode(mixed.mean(axis=0))
+    s, k = len(c), int(c.sum())
+    if k == 0:
+        return None
+    covered = _encode(_decode(np.asarray(colours, float)[c]).mean(axis=0))
+    return (k * covered + (s - k) * np.asarray(background, float)) / s
+
+
+def _black_words(args, expected, got) -> str:
+    return (": " + UNCOVERED_AS_BLACK.format(bg=vec(args[2])) + " (np.nan_to_num makes "
+            "them 0): put the background in them, decoded like the samples")  # fmt: skip
 
 
 def _encoded_average_words(args, expected, got) -> str:
@@ -192,6 +215,23 @@ MISTAKES = [
             "with NaN is NaN: put the background in them",
             gives=lambda c, i, b: _encode(_decode(c).mean(axis=0))
             if (np.asarray(i) < 0).any() else None),
+    # r308 MN1, HN: 6.2's slips in light, and the decoding or encoding half done
+    Mistake("uncovered as black", _black_words, gives=_in_light(uncovered_as_black)),
+    fixed_count_mistake(decode=srgb_to_linear),
+    fixed_count_mistake(": you averaged the sRGB-encoded numbers, as 6.2's resolve does"),
+    Mistake("only the background decoded", ": you decoded the background but not the "
+            "samples: they are sRGB-encoded too; decode every value before averaging",
+            gives=lambda c, i, b: _mix(c, i, b, _same, _encode,
+                                       background_decode=srgb_to_linear)),
+    Mistake("encoded without decoding", ": you encoded the mean without decoding first: the "
+            "samples and the background are sRGB-encoded already, so your mean is a mean of "
+            "codes; decode them (srgb_to_linear), average, then encode",
+            gives=lambda c, i, b: _mix(c, i, b, _same, _encode)),
+    Mistake("background mixed in codes", lambda a, e, g: ": you averaged the covered "
+            "samples in light but mixed in the background's share as encoded numbers: the "
+            f"{int((~_covered(a[1])).sum())} uncovered samples join the average in light too "
+            "(decode the background, average all S samples, encode once)",
+            gives=_background_in_codes),
     CHANNEL_ORDER,
     ON_255,
 ]  # fmt: skip
@@ -200,7 +240,7 @@ MISTAKES = [
 def explain(args, expected, got) -> str:
     colours, ids, background = args
     s, k = len(ids), int(_covered(ids).sum())
-    return (f"ids {np.asarray(ids).tolist()} ({k} of {s} samples covered), sRGB-encoded "
+    return (f"ids {np.asarray(ids).tolist()} ({k} of {s} sample{'s' * (s != 1)} covered), sRGB-encoded "
             f"background {vec(background)}: the resolve in linear light, encoded, is "
             f"{vec(expected, got)}; yours is {vec(got, expected)}")  # fmt: skip
 
@@ -211,3 +251,67 @@ RESOLVE_SRGB = Exercise(
     reference=("teachraster.exercises.antialiasing",), hints=((RULE, HINT), (_RECIPE, _RECIPE_HINT)), inputs_drawn=True,
     once=((RULE, "; as said for the first failing case"),),
 )  # fmt: skip
+
+
+def _wedges():
+    """The 6.1/6.2 fan's samples with its triangles black and white in turn, on white:
+    four black wedges whose every edge meets white (r308 M1: 6.3 had no scene)."""
+    from .picture_scenes import fan_colours
+
+    ids, _, _, _ = fan_colours()  # 6.2's scene: which triangle covers each sample
+    colours = np.where((ids >= 0)[..., None], (ids % 2 == 1)[..., None] * np.ones(3), np.nan)
+    return ids, colours, np.ones(3)
+
+
+def _resolved(fn, ids, colours, background):
+    """``fn`` on every pixel's samples (its grey, channel 0), or the words of what it raised."""
+    from .scenes import call
+
+    h, w = ids.shape[:2]
+    out = np.empty((h, w))
+    try:
+        for i in range(h):
+            for j in range(w):
+                out[i, j] = call(fn, as_colour, colours[i, j], ids[i, j], background)[0]
+    except NotImplementedError:
+        return "not implemented yet"
+    except Exception as e:  # noqa: BLE001 — the student's code: said, never raised
+        return f"{type(e).__name__}: {e}"[:80]
+    return out
+
+
+def show_two_resolves(resolve, resolve_srgb, axes=None):
+    """Your 6.2 resolve and your 6.3 resolve of the same black-and-white wedges side by side
+    (the numbers shown as the screen shows codes), and one row of each: averaged as codes,
+    every edge pixel is darker, the black wedges bolder. Returns the artists."""
+    import textwrap
+
+    import matplotlib.pyplot as plt
+
+    if axes is None:
+        axes = plt.subplots(1, 3, figsize=(9.0, 3.4), layout="constrained")[1]
+    ids, colours, background = _wedges()
+    row = 6  # a row through two wedges' slanted edges
+    titles = ("your resolve (6.2): codes averaged", "your resolve_srgb (6.3): light averaged")
+    artists, rows = [], []
+    for ax, fn, title in zip(axes, (resolve, resolve_srgb), titles):
+        got = _resolved(fn, ids, colours, background)
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title(textwrap.fill(title, 24), fontsize="small")
+        if isinstance(got, str):
+            artists.append(ax.text(0.5, 0.5, textwrap.fill(got, 20), ha="center", va="center",
+                                   transform=ax.transAxes, fontsize="x-small"))  # fmt: skip
+            continue
+        artists.append(ax.imshow(got, cmap="gray", vmin=0, vmax=1, interpolation="nearest"))
+        artists += ax.plot([-0.5, got.shape[1] - 0.5], [row, row], color="#ff9f1c", lw=0.8)
+        rows.append((title.split(":")[0], got[row]))
+    for (name, values), style in zip(rows, ("o-", "s--")):
+        artists += axes[2].plot(values, style, ms=3, label=name)
+    axes[2].set_title(f"row {row} (orange line):\nthe codes shown", fontsize="small")
+    axes[2].set_xlabel("column", fontsize="x-small")
+    axes[2].set_ylim(-0.05, 1.55)  # the key above the curves, none hidden under it
+    axes[2].set_yticks([0, 0.5, 1])
+    if rows:
+        artists.append(axes[2].legend(fontsize="x-small", loc="upper center"))
+    return artists
