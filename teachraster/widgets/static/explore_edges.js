@@ -63,6 +63,8 @@ const EDGES_CSS = `
 .tr-edges-legend span { display: inline-block; margin-right: 12px; }
 .tr-edges-table table { table-layout: fixed; width: 100%; max-width: 860px; }
 .tr-edges-table td { padding: 1px 6px; vertical-align: top; text-align: left; }
+.tr-edges-views { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 12px; }
+.tr-edges-views canvas { flex: none; }
 `;
 
 function mount(el, data, host) {
@@ -126,7 +128,10 @@ function mount(el, data, host) {
   orbitDrag(view3d, cam, (e) => paint3d.request(e));
   const controls = edgeControls(state, host, both, view3d, ui);
   ui.relabel = controls.relabel;
-  root.append(...controls.rows, canvas, element("div", { html: EDGES_KEY }), readout, table, view3d);
+  // the 3-D view beside the grid where the page is wide enough, else right under it, not
+  // under the key and the table (review r302 02-FIG2: it opened 900 px below its button)
+  const views = element("div", { class: "tr-edges-views" }, [canvas, view3d]);
+  root.append(...controls.rows, views, element("div", { html: EDGES_KEY }), readout, table);
   vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
   paint.now();
   controls.sync();
@@ -145,7 +150,9 @@ const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c
   "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, " +
   "<b>black (AB)</b>: both, grey (–): neither. Both or neither happens when the two " +
   "triangles lie on the same side of the edge (then it is a left or top edge for both, or a " +
-  "right or bottom edge for both), and at a shared vertex, left to a third triangle.";
+  "right or bottom edge for both), and at a shared vertex, left to a third triangle. " +
+  "Tint <i>all three</i>: black hatching where all three E keep the inside's sign, the " +
+  "chosen triangle's inside.";
 
 // each triangle's edges as the table names them (B = v3 v2 v4: its first edge runs v3 -> v2)
 // (CONVENTIONS: named by its two vertices in walking order)
@@ -176,6 +183,8 @@ function edgeControls(state, host, repaint, view3d, ui) {
     sync();
     host.setState({ planes: state.planes });
     repaint(e);
+    // opened, scrolled into sight (on a projector it fell below the screen's edge)
+    if (state.planes && view3d.scrollIntoView) view3d.scrollIntoView({ block: "nearest" });
   }, state.planes);
   const snap = button("snap to ¼ px", () => {
     state.snap = state.snap ? 0 : 0.25;
