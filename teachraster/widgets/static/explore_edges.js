@@ -93,7 +93,11 @@ function mount(el, data, host) {
   const [view3d, ctx3] = makeCanvas(760, 640, "the three edge functions as planes over the grid");
   const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 330] });
   cam.maxElevation = 1.2; // never top-down: there the three planes cover one another
-  const ui = { scene: null, hover: null, picked: 0, relabel: null };
+  // moved: the pixel [col, row] of the vertex the last input moved (a drag, a key), where the
+  // pointer still is: its three signs wait for the pointer to go to another pixel (review
+  // r302 02-FIG2: dragged onto v2's row, v3's centre piled "+00", "v3", the B badge and two
+  // rings); the readout still describes that centre
+  const ui = { scene: null, hover: null, picked: 0, relabel: null, moved: null };
 
   function draw() {
     const scene = (ui.scene = edgeScene(state.vertices, W, H, data.bits));
@@ -108,8 +112,8 @@ function mount(el, data, host) {
     drawRings(ctx, scene, cell, m);
     drawTriangles(ctx, state, toPx, data.colors);
     const quiet = quietCentres(scene, state.vertices);
-    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover,
-      state.vertices.map(toPx), quiet);
+    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint),
+      ui.moved ? null : ui.hover, state.vertices.map(toPx), quiet);
     drawBadges(ctx, scene, cell, m, state.vertices.map(toPx));
     drawVertices(ctx, state, toPx);
     drawEdgeLabels(ctx, chosen, state, toPx, W, H, quiet);
@@ -216,6 +220,8 @@ function edgeControls(state, host, repaint, view3d, ui) {
   return { rows, sync, relabel };
 }
 
+const pixelOf = ([x, y]) => [Math.floor(x), Math.floor(y)];
+
 // dragging a vertex (snapped to the grid of state.snap px), or moving it with the keys
 function vertexInput(canvas, v) {
   const { state, host, ui, toPx, toGrid, W, H, repaint } = v;
@@ -233,11 +239,14 @@ function vertexInput(canvas, v) {
       if (s) [x, y] = [Math.round(x / s) * s, Math.round(y / s) * s];
       move(i, x, y);
       ui.hover = toGrid(p);
+      ui.moved = pixelOf(ui.hover);
       repaint(e);
     },
     onRelease: () => host.setState({ vertices: state.vertices }),
     onHover(p, e) {
       ui.hover = p ? toGrid(p) : null;
+      const at = ui.hover && pixelOf(ui.hover);
+      if (ui.moved && !(at && at[0] === ui.moved[0] && at[1] === ui.moved[1])) ui.moved = null;
       repaint(e);
     },
   });
@@ -253,6 +262,7 @@ function vertexInput(canvas, v) {
     const [x, y] = state.vertices[ui.picked];
     move(ui.picked, x + d[0] * step, y + d[1] * step);
     ui.hover = state.vertices[ui.picked];
+    ui.moved = pixelOf(ui.hover);
     repaint(e);
     host.setState({ vertices: state.vertices });
   });
