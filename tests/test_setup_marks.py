@@ -176,7 +176,7 @@ def test_the_snap_step_tags_each_vertex_with_its_snapped_position(player):
     assert all(f"{tag}" in trace.caption(0) for tag in tags)
     assert all(t.get_visible() for t in marks.coords)
     assert [tuple(t.xy) for t in marks.coords] == [tuple(p) for p in trace.snapped]
-    assert keyed(view) == ["vertex, (its position)", "on the 1/256 px grid:", "the snap moved none"]
+    assert keyed(view) == ["vertex (its position", "on the 1/256 px grid):", "the snap moved none"]
     for k in range(1, len(trace)):
         view.show_step(k, draw=False)
         assert not any(t.get_visible() for t in marks.coords), k
@@ -251,24 +251,29 @@ def test_the_player_header_does_not_speak_of_gpus():
             plt.close("all")
 
 
-def test_the_half_plane_labels_stand_between_the_centre_rows():
+@pytest.mark.parametrize("v2", [(14.5, 6.25), (1.0, 8.0)], ids=["clockwise", "flipped"])
+def test_the_half_plane_labels_stand_between_the_centre_rows(v2):
     """Review r291 02-3: the edge names' boxes and the snapped positions covered pixel-centre
     dots in the player and the editor. They are haloed and placed on the grid's row
-    boundaries, clear of every centre."""
+    boundaries, clear of every centre. Review r302 02-FIG1: "E12" still touched row 3's dots
+    and after the flip "E21", "E13" sat by them: the letters with their halo keep 2 px from
+    every dot."""
     from teachraster.plotting.label_places import boxes_around, overlap_share
 
-    xy = [[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]]  # lesson 02's triangle
+    xy = [[2.25, 1.75], v2, [5.75, 14.5]]  # lesson 02's triangle, then v2 across v3 -> v1
     with plt.style.context("default"):
         use_style("classroom")
         fill = tr.rasterize(tr.Triangle(xy), 16, 16, method="halfplane", trace=True)
         view = FillView(fill, step=0)
         try:
             view.fig.canvas.draw()
+            scale = view.fig.dpi / 72.0
             u, v = np.meshgrid(np.arange(16) + 0.5, np.arange(16) + 0.5)
+            reach = (view.centres.inside.get_markersize() / 2 + view.triangle.edge_halo / 2) * scale
             dots = boxes_around(view.ax.transData.transform(np.column_stack([u.ravel(), v.ravel()])),
-                                (2.0, 2.0))  # fmt: skip
+                                (reach + 2.0, reach + 2.0))  # fmt: skip
             tags = [*view.triangle.edge_labels, *view.setup_marks.coords]
-            assert all(t.get_bbox_patch() is None for t in tags)
+            assert all(t.get_bbox_patch() is None for t in tags) and view.triangle.edge_halo > 0
             for tag in tags:
                 e = tag.get_window_extent()
                 share = overlap_share(np.array([[e.x0, e.y0, e.x1, e.y1]]), dots)

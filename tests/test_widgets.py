@@ -1580,7 +1580,7 @@ def test_player_shows_samples_untested_until_their_step_and_keys_only_what_is_dr
         dots, trace = p.sample_dots, p.view.trace
         p.view.show_step(0, draw=False)
         # r239 01-W1: the snap's own marks too (each vertex's snapped position), keyed first
-        snap = ["vertex, (its position)", "on the 1/256 px grid:"]  # then how far it moved
+        snap = ["vertex (its position", "on the 1/256 px grid):"]  # then how far it moved
         assert keyed(p.view) == [*snap, "moved by ≤ 0.0017 px", "sample not tested yet"]
         assert not len(dots.covered.get_offsets()) and not len(dots.uncovered.get_xdata())
         assert len(dots.untested.get_xdata())

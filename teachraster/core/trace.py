@@ -467,7 +467,8 @@ class FillTrace:
             return (f"raster lines {box.row0}-{box.row1 - 1} meet the triangle (top to bottom "
                     "vertex, within the image); the loop fills those with v_top <= v < v_bot; "
                     "span tables test no box of pixels")  # fmt: skip
-        where = f"bounding box x {box.xmin:g} .. {box.xmax:g}, y {box.ymin:g} .. {box.ymax:g}: "
+        # u, v: the notes' names for screen x, y, as in the span caption above (review r302 02-10)
+        where = f"bounding box u {box.xmin:g} .. {box.xmax:g}, v {box.ymin:g} .. {box.ymax:g}: "
         if not box.size:
             return where + "no pixel centre of the image inside"
         return where + (f"rows {box.row0}-{box.row1 - 1}, columns {box.col0}-{box.col1 - 1} "

@@ -31,7 +31,12 @@ RING_STEP = 0.6
 #: turning from the preferred direction (1 - cos of the angle), each ring farther out, and
 #: standing nearer another vertex than its own (it would name the wrong one)
 COST = {"out": 1000.0, "label": 100.0, "dot": 100.0, "touch": 20.0, "edge": 40.0,
-        "inside": 10.0, "turn": 3.0, "ring": 1.0, "astray": 100.0}  # fmt: skip
+        "inside": 10.0, "turn": 3.0, "ring": 1.0, "astray": 100.0, "crowd": 30.0}  # fmt: skip
+
+#: An edge label clear of the dots by less than this share of a grid pixel still pays
+#: COST["crowd"]: between two rows of centres it goes to the middle, not just off the dots
+#: (review r302 02-FIG1: "E31" 2 px from row 7's centres read as lying on them)
+CROWD_MARGIN = 0.1
 
 #: Pixels an edge's line reaches beyond its centre line (half the classroom style's width and
 #: a gap): a box nearer than this touches it
@@ -290,7 +295,9 @@ def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots) -
         gap = np.stack([_to_segment(shown, a, b) for a, b in segments])  # (3, n), mids' order
         astray = gap[k] > np.delete(gap, k, axis=0).min(axis=0)
         far = np.hypot(*(cand - mid).T)
+        crowded = overlap_share(boxes + CROWD_MARGIN * grid_px * np.array([-1, -1, 1, 1]), dots)
         cost = (clutter(boxes, half, frame=frame, triangle=triangle, dots=dots)
+                + COST["crowd"] * (crowded > 0)
                 + beside(boxes, boxes_around(placed, half)) + COST["astray"] * astray
                 + 2 * COST["inside"] * inside_share(boxes, triangle)
                 + COST["ring"] * far + COST["ring"] * gap[k] / grid_px)  # fmt: skip

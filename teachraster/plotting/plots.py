@@ -359,6 +359,9 @@ class TriangleArtists(Artists):
     #: clear of, placed on the grid's row boundaries (:func:`place_edge_labels`); None: pushed
     #: outwards from their edges' midpoints
     keep_clear: np.ndarray | None = None
+    #: the width (points) of the white halo round the edge labels' letters, if any: the
+    #: placement keeps the halo, too, off the centres of ``keep_clear``
+    edge_halo: float = 0.0
 
     def update(self, tri, edges=None) -> None:
         """Move everything to a new triangle (same artists)."""
@@ -401,12 +404,18 @@ class TriangleArtists(Artists):
         ax.get_xlim()  # brings autoscaled limits up to date before transData is read
         scale = ax.figure.dpi / 72.0  # display pixels per point
         size = self.edge_labels[0].get_fontsize() * scale
-        # three italic characters, in their padded box or haloed (the views)
+        # three italic characters (their text box is about 2 by 1 font sizes), in their padded
+        # box or haloed (the views): the halo's stroke reaches half its width beyond the
+        # letters. Review r302 02-FIG1: a box 0.84 font sizes high, smaller than the letters,
+        # let "E12" touch row 3's centre dots in the player, and the editor's labels sit by them
         boxed = self.edge_labels[0].get_bbox_patch() is not None
-        half = (1.3 * size, 0.62 * size) if boxed else (1.0 * size, 0.42 * size)
+        halo = self.edge_halo / 2 * scale
+        half = (1.3 * size, 0.62 * size) if boxed else (1.0 * size + halo, 0.5 * size + halo)
         shown = ax.transData.transform
         dot = (self.vertices.get_markersize() / 2 + 1.5) * scale
-        dots = np.vstack([boxes_around(shown(self.keep_clear), (0.15 * size, 0.15 * size)),
+        # a centre dot (2.5 points wide in the classroom style) and a gap of about as much
+        centre = 0.3 * size
+        dots = np.vstack([boxes_around(shown(self.keep_clear), (centre, centre)),
                           boxes_around(shown(xy), (dot, dot)), self.label_boxes])  # fmt: skip
         centres = place_edge_labels(mids, half, edges=edges, to_display=shown,
                                     frame=ax.bbox.extents, triangle=shown(xy), dots=dots)  # fmt: skip

@@ -149,13 +149,15 @@ def _snap_entries(trace: FillTrace) -> list:
     c = COLORS
     bits = trace.subpixel_bits
     if bits is None:
-        return [("vertex, (its position)", c["edge"], c["edge"], "o"),
+        return [("vertex (its position)", c["edge"], c["edge"], "o"),
                 ("raw floats: no snapping", "none", "none")]  # fmt: skip
     moved = float(np.hypot(*(np.asarray(trace.xy, float) - trace.snapped).T).max())
     # each line as long as the key's column allows (about 24 characters)
     by = "the snap moved none" if moved == 0 else f"moved by ≤ {moved:.2g} px"
-    return [("vertex, (its position)", c["edge"], c["edge"], "o"),
-            (f"on the 1/{2**bits} px grid:", "none", "none"),
+    # one sentence over three lines: "vertex (its position on the 1/256 px grid): the snap
+    # moved none" (review r302 02-9: "vertex, (its position) on the ... grid" read garbled)
+    return [("vertex (its position", c["edge"], c["edge"], "o"),
+            (f"on the 1/{2**bits} px grid):", "none", "none"),
             (by, "none", "none")]  # fmt: skip
 
 
@@ -300,9 +302,11 @@ class FillView:
         self.setup_marks = plot_setup_marks(ax, trace, self.triangle.labels)
         # the edge names and the snapped positions haloed, not boxed, as the vertex names: a
         # box reached over the centre dots beside it (review r291 02-3)
+        halo = max(2.5, fs(0.22))
+        self.triangle.edge_halo = halo  # kept off the centre dots too
         for label in [*self.triangle.edge_labels, *self.setup_marks.coords]:
             label.set_bbox(None)
-            label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")])
+            label.set_path_effects([withStroke(linewidth=halo, foreground="white")])
         # An explicit title position: automatic placement (above the top ticks) costs time
         # at every draw.
         self.header = ax.set_title("", y=1.0, pad=fs(3.2), loc="left")

@@ -256,10 +256,17 @@ def _check_notes(notes, choices) -> dict:
     return checked
 
 
-def _number(value: float) -> str:
+def _number(value: float, thousands: bool = False) -> str:
     """A number for the verdict, its sign the minus sign "−" as in the lessons' text (review
-    r287 S3: "the answer is -0.74" beside the text's "−0.74")."""
-    text = f"{value:g}"
+    r287 S3: "the answer is -0.74" beside the text's "−0.74"); with ``thousands`` a whole
+    number has commas between groups of three digits, as the lesson prints it (review r302
+    02-4: "the answer is −294912" above the explanation's "−294,912").
+
+    >>> _number(-294912.0, thousands=True), _number(-294912.0), _number(0.5, thousands=True)
+    ('−294,912', '−294912', '0.5')
+    """
+    whole = thousands and float(value).is_integer()
+    text = f"{int(value):,}" if whole else f"{value:g}"
     return "−" + text[1:] if text.startswith("-") else text
 
 
@@ -437,7 +444,7 @@ class Predict(HoldsAnswer):
         if self.choices:
             return html.escape(self.answer)
         if not self.tolerance:
-            return _number(self.answer)
+            return _number(self.answer, self.thousands)
         # one digit finer than the tolerance, no more (r105 08-5: "1.15849 (± 0.1)")
         digits = max(0, 1 - math.floor(math.log10(self.tolerance)))
         return f"{_number(round(self.answer, digits))} (± {self.tolerance:g})"
@@ -446,7 +453,7 @@ class Predict(HoldsAnswer):
         """One HTML line: what the student said against the answer."""
         if self.given is None:
             return f"The answer: <b>{self._answer_text()}</b>."
-        said = html.escape(self.given) if self.choices else _number(self.given)
+        said = html.escape(self.given) if self.choices else _number(self.given, self.thousands)
         word = "Right" if self.correct else "Not quite"
         colour = "#009E73" if self.correct else "#D55E00"  # Okabe–Ito bluish green, vermillion
         note = next((text for key, text in self.notes.items() if key == self.given), "")
@@ -495,7 +502,7 @@ class Predict(HoldsAnswer):
     def record_html(self) -> str:
         """The line saved in the cell's output after "Check": the prediction, not the verdict
         (the widget shows that; repeated below it, a student read it twice)."""
-        said = html.escape(self.given) if self.choices else _number(self.given)
+        said = html.escape(self.given) if self.choices else _number(self.given, self.thousands)
         return (
             f"<div style='color:#555'><i>Saved with the notebook: you predicted {said}.</i></div>"
         )

@@ -63,6 +63,8 @@ const EDGES_CSS = `
 .tr-edges-legend span { display: inline-block; margin-right: 12px; }
 .tr-edges-table table { table-layout: fixed; width: 100%; max-width: 860px; }
 .tr-edges-table td { padding: 1px 6px; vertical-align: top; text-align: left; }
+.tr-edges-views { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 12px; }
+.tr-edges-views canvas { flex: none; }
 `;
 
 function mount(el, data, host) {
@@ -91,7 +93,11 @@ function mount(el, data, host) {
   const [view3d, ctx3] = makeCanvas(760, 640, "the three edge functions as planes over the grid");
   const cam = camera3d({ centre: [W / 2, H / 2, 0], elevation: PLANES_ELEVATION, at: [380, 330] });
   cam.maxElevation = 1.2; // never top-down: there the three planes cover one another
-  const ui = { scene: null, hover: null, picked: 0, relabel: null };
+  // moved: the pixel [col, row] of the vertex the last input moved (a drag, a key), where the
+  // pointer still is: its three signs wait for the pointer to go to another pixel (review
+  // r302 02-FIG2: dragged onto v2's row, v3's centre piled "+00", "v3", the B badge and two
+  // rings); the readout still describes that centre
+  const ui = { scene: null, hover: null, picked: 0, relabel: null, moved: null };
 
   function draw() {
     const scene = (ui.scene = edgeScene(state.vertices, W, H, data.bits));
@@ -106,8 +112,8 @@ function mount(el, data, host) {
     drawRings(ctx, scene, cell, m);
     drawTriangles(ctx, state, toPx, data.colors);
     const quiet = quietCentres(scene, state.vertices);
-    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint), ui.hover,
-      state.vertices.map(toPx), quiet);
+    drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint),
+      ui.moved ? null : ui.hover, state.vertices.map(toPx), quiet);
     drawBadges(ctx, scene, cell, m, state.vertices.map(toPx));
     drawVertices(ctx, state, toPx);
     drawEdgeLabels(ctx, chosen, state, toPx, W, H, quiet);
@@ -126,7 +132,10 @@ function mount(el, data, host) {
   orbitDrag(view3d, cam, (e) => paint3d.request(e));
   const controls = edgeControls(state, host, both, view3d, ui);
   ui.relabel = controls.relabel;
-  root.append(...controls.rows, canvas, element("div", { html: EDGES_KEY }), readout, table, view3d);
+  // the 3-D view beside the grid where the page is wide enough, else right under it, not
+  // under the key and the table (review r302 02-FIG2: it opened 900 px below its button)
+  const views = element("div", { class: "tr-edges-views" }, [canvas, view3d]);
+  root.append(...controls.rows, views, element("div", { html: EDGES_KEY }), readout, table);
   vertexInput(canvas, { state, host, ui, toPx, toGrid, W, H, repaint: both });
   paint.now();
   controls.sync();
@@ -145,7 +154,9 @@ const EDGES_KEY = "Fill: <b style='color:#3a8fc4'>A</b>, <b style='color:#c98a1c
   "<b style='color:#0072B2'>A</b> owns it, <b style='color:#E69F00'>B</b> owns it, " +
   "<b>black (AB)</b>: both, grey (–): neither. Both or neither happens when the two " +
   "triangles lie on the same side of the edge (then it is a left or top edge for both, or a " +
-  "right or bottom edge for both), and at a shared vertex, left to a third triangle.";
+  "right or bottom edge for both), and at a shared vertex, left to a third triangle. " +
+  "Tint <i>all three</i>: black hatching where all three E keep the inside's sign, the " +
+  "chosen triangle's inside.";
 
 // each triangle's edges as the table names them (B = v3 v2 v4: its first edge runs v3 -> v2)
 // (CONVENTIONS: named by its two vertices in walking order)
@@ -176,6 +187,8 @@ function edgeControls(state, host, repaint, view3d, ui) {
     sync();
     host.setState({ planes: state.planes });
     repaint(e);
+    // opened, scrolled into sight (on a projector it fell below the screen's edge)
+    if (state.planes && view3d.scrollIntoView) view3d.scrollIntoView({ block: "nearest" });
   }, state.planes);
   const snap = button("snap to ¼ px", () => {
     state.snap = state.snap ? 0 : 0.25;
@@ -207,6 +220,8 @@ function edgeControls(state, host, repaint, view3d, ui) {
   return { rows, sync, relabel };
 }
 
+const pixelOf = ([x, y]) => [Math.floor(x), Math.floor(y)];
+
 // dragging a vertex (snapped to the grid of state.snap px), or moving it with the keys
 function vertexInput(canvas, v) {
   const { state, host, ui, toPx, toGrid, W, H, repaint } = v;
@@ -224,11 +239,14 @@ function vertexInput(canvas, v) {
       if (s) [x, y] = [Math.round(x / s) * s, Math.round(y / s) * s];
       move(i, x, y);
       ui.hover = toGrid(p);
+      ui.moved = pixelOf(ui.hover);
       repaint(e);
     },
     onRelease: () => host.setState({ vertices: state.vertices }),
     onHover(p, e) {
       ui.hover = p ? toGrid(p) : null;
+      const at = ui.hover && pixelOf(ui.hover);
+      if (ui.moved && !(at && at[0] === ui.moved[0] && at[1] === ui.moved[1])) ui.moved = null;
       repaint(e);
     },
   });
@@ -244,6 +262,7 @@ function vertexInput(canvas, v) {
     const [x, y] = state.vertices[ui.picked];
     move(ui.picked, x + d[0] * step, y + d[1] * step);
     ui.hover = state.vertices[ui.picked];
+    ui.moved = pixelOf(ui.hover);
     repaint(e);
     host.setState({ vertices: state.vertices });
   });
