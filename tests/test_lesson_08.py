@@ -1353,7 +1353,8 @@ def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns)
     worst = e["history, not reprojected, clamped"]
     assert worst == max(v for k, v in e.items() if k.startswith("history"))
     assert (f"the trail falls as far ({alone['behind']}, all behind) and nothing blurs ahead, "
-            f"yet it errs most ({worst:.3f}): the clamp hides a missing reprojection") in words  # fmt: skip
+            f"yet of the four histories it errs most ({worst:.3f}): the clamp hides a missing "
+            "reprojection") in words  # fmt: skip
     # S4
     assert ("keeps the centre, where MSAA's own value already lies inside the triangle") in words
     # S2
