@@ -2336,3 +2336,63 @@ R306 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R306.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R306.items()})
+
+
+# -- r310 04: slips told only the rule, or another mistake's words ------------------------------
+def _passes_from_first_depth(depths, writes):
+    """H1: `stored = depths[0]`, the usual start of a running minimum."""
+    if not len(depths):
+        return []
+    stored, out = depths[0], []
+    for d, w in zip(depths, writes):
+        out.append(d < stored)
+        if d < stored and w:
+            stored = d
+    return out
+
+
+def _clip_crossing_in_ndc(v):
+    """H4: the crossing interpolated in NDC (where z/w = −1), lifted back by the w
+    interpolated at that t."""
+    v, out = np.asarray(v, dtype=float), []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            na, nb = a[:3] / a[3], b[:3] / b[3]
+            t = (na[2] + 1) / (na[2] - nb[2])
+            w = a[3] + t * (b[3] - a[3])
+            out.append(np.r_[(na + t * (nb - na)) * w, w])
+    return np.array(out).reshape(-1, 4)
+
+
+def _clip_with_centroid(v):
+    """X1: the right polygon and its centroid appended."""
+    p = CORRECT["clip_near"](v)
+    return np.vstack([p, p.mean(axis=0)]) if len(p) else p
+
+
+R310 = {
+    "passes from the first fragment's depth": (
+        "depth_passes", _passes_from_first_depth, "`stored = depths[0]`",
+        "started at the first depth"),
+    "clip crossing found in NDC": (
+        "clip_near", _clip_crossing_in_ndc, "you found the crossing after the divide",
+        "crossing found after the divide"),
+    "clip with the centroid appended": (
+        "clip_near", _clip_with_centroid, "one vertex too many", "vertex too many"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R310.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R310.items()})
+
+
+def _clip_closed(v):
+    """r310 borderline: the polygon as a closed polyline, its first vertex repeated at the end
+    (cell 5 says it is accepted)."""
+    p = CORRECT["clip_near"](v)
+    return np.vstack([p, p[:1]]) if len(p) else p
+
+
+DIFFERENT["clip as a closed polyline"] = ("clip_near", _clip_closed)
