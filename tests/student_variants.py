@@ -2396,3 +2396,53 @@ def _clip_closed(v):
 
 
 DIFFERENT["clip as a closed polyline"] = ("clip_near", _clip_closed)
+
+
+# -- r310 M2: exercise 4.3, a colour through the clip ------------------------------------------
+def _colour_clip(t_colour):
+    """Positions clipped right; each new vertex's colour from ``t_colour(ca, cb, wa, wb, za,
+    zb, t)``."""
+
+    def clip_near_colour(v, colours):
+        v, c = np.asarray(v, dtype=float), np.asarray(colours, dtype=float)
+        out = []
+        for i in range(3):
+            j = (i + 1) % 3
+            da, db = v[i, 2] + v[i, 3], v[j, 2] + v[j, 3]
+            if da >= 0:
+                out.append(np.r_[v[i], c[i]])
+            if (da >= 0) != (db >= 0):
+                t = da / (da - db)
+                colour = t_colour(c[i], c[j], v[i, 3], v[j, 3], v[i, 2], v[j, 2], t)
+                out.append(np.r_[v[i] + t * (v[j] - v[i]), colour])
+        return np.array(out).reshape(-1, 7)
+
+    return clip_near_colour
+
+
+def _ndc_t(ca, cb, wa, wb, za, zb, t):
+    """The t where z/w reaches −1 between the divided ends."""
+    s = (za / wa + 1) / (za / wa - zb / wb)
+    return (1 - s) * ca + s * cb
+
+
+R310_COLOUR = {
+    "colour at the t found after the divide": (
+        "clip_near_colour", _colour_clip(_ndc_t), "found after the divide",
+        "colour after the divide"),
+    "colour perspective-corrected in clip space": (
+        "clip_near_colour",
+        _colour_clip(lambda ca, cb, wa, wb, za, zb, t:
+                     ((1 - t) * ca / wa + t * cb / wb) / ((1 - t) / wa + t / wb)),
+        "interpolated colour/w and 1/w", "colour perspective-corrected"),
+    "colour of the inside end": (
+        "clip_near_colour",
+        _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ca if za + wa >= 0 else cb),
+        "inside end", "colour of the inside end"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R310_COLOUR.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R310_COLOUR.items()})
+DIFFERENT["clip_near_colour with (1 − t)·a + t·b, a list"] = (
+    "clip_near_colour",
+    _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ((1 - t) * ca + t * cb).tolist()),
+)

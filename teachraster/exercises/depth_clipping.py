@@ -225,7 +225,7 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
                     c[component] = a[component] if keep_w == "first" or da >= 0 else b[component]
                 kept = [c] + kept if crossing_first else kept + [c]
             out += kept
-    poly = np.array(out).reshape(-1, 4)
+    poly = np.array(out).reshape(-1, v.shape[1])  # attributes may ride along (4.3)
     return poly if np.isfinite(poly).all() else None
 
 
