@@ -213,10 +213,24 @@ def diagnosis(number, row=None, col=None):
     return lambda b: (cause, (row, col), READ[number](b, row, col))
 
 
+def clip_near_colour(v, colours):
+    p = np.column_stack([np.asarray(v, float), np.asarray(colours, float)])
+    out = []
+    for i in range(3):
+        a, b = p[i], p[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):  # position and colour at the same t, in clip space
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 7)
+
+
 CORRECT = {
     "span": span,
     "perspective_weights": perspective_weights,
     "depth_passes": depth_passes,
+    "clip_near_colour": clip_near_colour,
     "safe_near": safe_near,
     "reverse_z_gap": reverse_z_gap,
     "robust_fill": robust_fill,

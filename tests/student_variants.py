@@ -2398,3 +2398,113 @@ R308 = {
         "sRGB-encoded numbers, as 6.2's resolve does, dividing by 4"),
 }  # fmt: skip
 WRONG.update(R308)
+
+
+# -- r310 04: slips told only the rule, or another mistake's words ------------------------------
+def _passes_from_first_depth(depths, writes):
+    """H1: `stored = depths[0]`, the usual start of a running minimum."""
+    if not len(depths):
+        return []
+    stored, out = depths[0], []
+    for d, w in zip(depths, writes):
+        out.append(d < stored)
+        if d < stored and w:
+            stored = d
+    return out
+
+
+def _clip_crossing_in_ndc(v):
+    """H4: the crossing interpolated in NDC (where z/w = −1), lifted back by the w
+    interpolated at that t."""
+    v, out = np.asarray(v, dtype=float), []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            na, nb = a[:3] / a[3], b[:3] / b[3]
+            t = (na[2] + 1) / (na[2] - nb[2])
+            w = a[3] + t * (b[3] - a[3])
+            out.append(np.r_[(na + t * (nb - na)) * w, w])
+    return np.array(out).reshape(-1, 4)
+
+
+def _clip_with_centroid(v):
+    """X1: the right polygon and its centroid appended."""
+    p = CORRECT["clip_near"](v)
+    return np.vstack([p, p.mean(axis=0)]) if len(p) else p
+
+
+R310 = {
+    "passes from the first fragment's depth": (
+        "depth_passes", _passes_from_first_depth, "`stored = depths[0]`",
+        "started at the first depth"),
+    "clip crossing found in NDC": (
+        "clip_near", _clip_crossing_in_ndc, "you found the crossing after the divide",
+        "crossing found after the divide"),
+    "clip with the centroid appended": (
+        "clip_near", _clip_with_centroid, "one vertex too many", "vertex too many"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R310.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R310.items()})
+
+
+def _clip_closed(v):
+    """r310 borderline: the polygon as a closed polyline, its first vertex repeated at the end
+    (cell 5 says it is accepted)."""
+    p = CORRECT["clip_near"](v)
+    return np.vstack([p, p[:1]]) if len(p) else p
+
+
+DIFFERENT["clip as a closed polyline"] = ("clip_near", _clip_closed)
+
+
+# -- r310 M2: exercise 4.3, a colour through the clip ------------------------------------------
+def _colour_clip(t_colour):
+    """Positions clipped right; each new vertex's colour from ``t_colour(ca, cb, wa, wb, za,
+    zb, t)``."""
+
+    def clip_near_colour(v, colours):
+        v, c = np.asarray(v, dtype=float), np.asarray(colours, dtype=float)
+        out = []
+        for i in range(3):
+            j = (i + 1) % 3
+            da, db = v[i, 2] + v[i, 3], v[j, 2] + v[j, 3]
+            if da >= 0:
+                out.append(np.r_[v[i], c[i]])
+            if (da >= 0) != (db >= 0):
+                t = da / (da - db)
+                colour = t_colour(c[i], c[j], v[i, 3], v[j, 3], v[i, 2], v[j, 2], t)
+                out.append(np.r_[v[i] + t * (v[j] - v[i]), colour])
+        return np.array(out).reshape(-1, 7)
+
+    return clip_near_colour
+
+
+def _ndc_t(ca, cb, wa, wb, za, zb, t):
+    """The t where z/w reaches −1 between the divided ends."""
+    s = (za / wa + 1) / (za / wa - zb / wb)
+    return (1 - s) * ca + s * cb
+
+
+R310_COLOUR = {
+    "colour at the t found after the divide": (
+        "clip_near_colour", _colour_clip(_ndc_t), "found after the divide",
+        "colour after the divide"),
+    "colour perspective-corrected in clip space": (
+        "clip_near_colour",
+        _colour_clip(lambda ca, cb, wa, wb, za, zb, t:
+                     ((1 - t) * ca / wa + t * cb / wb) / ((1 - t) / wa + t / wb)),
+        "interpolated colour/w and 1/w", "colour perspective-corrected"),
+    "colour of the inside end": (
+        "clip_near_colour",
+        _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ca if za + wa >= 0 else cb),
+        "inside end", "colour of the inside end"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R310_COLOUR.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R310_COLOUR.items()})
+DIFFERENT["clip_near_colour with (1 − t)·a + t·b, a list"] = (
+    "clip_near_colour",
+    _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ((1 - t) * ca + t * cb).tolist()),
+)

@@ -225,7 +225,7 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
                     c[component] = a[component] if keep_w == "first" or da >= 0 else b[component]
                 kept = [c] + kept if crossing_first else kept + [c]
             out += kept
-    poly = np.array(out).reshape(-1, 4)
+    poly = np.array(out).reshape(-1, v.shape[1])  # attributes may ride along (4.3)
     return poly if np.isfinite(poly).all() else None
 
 
@@ -441,6 +441,49 @@ def _off_plane_words(args, expected, got) -> str:
     )
 
 
+def _ndc_crossing(v) -> np.ndarray | None:
+    """The crossing found after the divide (r310 H4): t where z/w reaches −1 along the edge
+    in NDC, the NDC point there lifted back by the w interpolated at that t; on the plane,
+    off the edge."""
+    v = np.asarray(v, dtype=float)
+    if (v[:, 3] == 0).any():
+        return None
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            na, nb = a[:3] / a[3], b[:3] / b[3]
+            t = (na[2] + 1) / (na[2] - nb[2])
+            wt = a[3] + t * (b[3] - a[3])
+            out.append(np.r_[(na + t * (nb - na)) * wt, wt])
+    poly = np.array(out).reshape(-1, 4)
+    return poly if np.isfinite(poly).all() else None
+
+
+def _one_too_many(args, expected, got) -> bool:
+    """One vertex more than the polygon, and without it the polygon (r310 X1: an extra
+    vertex, off every edge, was told "its t is wrong")."""
+    g = np.asarray(got, dtype=float).reshape(-1, 4)
+    return len(g) == len(expected) + 1 and any(
+        same_polygon(np.delete(g, k, axis=0), expected, FLOAT32_TOL) for k in range(len(g))
+    )
+
+
+def _one_too_many_words(args, expected, got) -> str:
+    g = np.asarray(got, dtype=float).reshape(-1, 4)
+    k = next(
+        k for k in range(len(g)) if same_polygon(np.delete(g, k, axis=0), expected, FLOAT32_TOL)
+    )
+    return (
+        f"your polygon has one vertex too many: without {vec(g[k])} it is right. The clipped "
+        "polygon's vertices are the triangle's kept vertices and the crossings of its edges, "
+        "nothing else"
+    )
+
+
 def _divided(a) -> float:
     return a[2] / a[3] + 1
 
@@ -545,6 +588,15 @@ CLIP_MISTAKES = [
             "crossing d_a and d_b have opposite signs, so their sum is not how much the "
             "distance changes along the edge"),
             gives=lambda v: clip_with(v, t_from=lambda a, b: (a[2] + a[3]) / (a[2] + a[3] + b[2] + b[3]))),
+    # r310 H4: the crossing found in NDC and lifted back was told the rule; X1: an extra
+    # vertex (the centroid) appended was told "its t is wrong"
+    Mistake("crossing found after the divide", _words_with_crossing("you found the crossing "
+            "after the divide: you interpolated x/w, y/w, z/w along the edge (in NDC) and "
+            "multiplied back by w; the divide is not linear along the edge, so t in NDC is not "
+            "t in clip space, the w you took at it is wrong, and your new vertex lies on the "
+            "near plane but off the edge. Find t from z + w in clip space and "
+            "interpolate x, y, z and w there"), gives=_ndc_crossing),
+    Mistake("vertex too many", _one_too_many_words, fits=_one_too_many),
     Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
 ]  # fmt: skip

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .scalars import num
+
 #: Pixel states: right and empty, right and covered, missing, extra.
 STATE_COLOURS = ("#ffffff", "#c8c8c8", "#2b7bba", "#d7301f")
 STATE_NAMES = ("", "covered", "missing (the rule covers it)", "extra (the rule does not)")
@@ -171,10 +173,19 @@ def draw_split(ax, v, expected, got):
 def draw_clip(ax, v, expected, got):
     """The triangle and the polygons in two panels sharing z + w (the near plane is the line
     z + w = 0): x on the left, y on the right (r306 FIG1: with x alone a polygon wrong only
-    in y was drawn on the expected one). Without an answer, the x panel alone, on the right:
-    the report's note takes the left part. An empty polygon is said so (r306 FIG2)."""
+    in y was drawn on the expected one). Where y is the same at every vertex drawn (the floor
+    triangle) the y panel is one vertical line: the value is said instead (r310 FIG1). Without
+    an answer, the x panel alone, on the right: the report's note takes the left part. An
+    empty polygon is said so (r306 FIG2)."""
     ax.set_axis_off()
-    boxes = [(0.0, 0.45), (0.55, 0.45)] if got is not None else [(0.56, 0.44)]
+    ys = np.concatenate([np.asarray(v, float)[:, 1], np.asarray(expected, float)[:, 1]])
+    if got is not None and len(got) and np.isfinite(drawable(got, v)).all():
+        ys = np.concatenate([ys, np.asarray(got, float).reshape(-1, 4)[:, 1]])
+    flat_y = bool(np.ptp(ys) <= 1e-9 * max(1.0, float(np.abs(ys).max())))
+    if got is None:
+        boxes = [(0.56, 0.44)]
+    else:
+        boxes = [(0.0, 0.7)] if flat_y else [(0.0, 0.45), (0.55, 0.45)]
     panels = []
     for left, width in boxes:
         share = {"sharey": panels[0]} if panels else {}
@@ -182,11 +193,42 @@ def draw_clip(ax, v, expected, got):
     artists = []
     for k, panel in enumerate(panels):
         artists += _clip_panel(panel, k, v, expected, got)
+    _zoom_on_kept(panels, v, expected, got)
+    for panel in panels:  # a label in the right half on the vertex's left, off the spine (r310)
+        middle = sum(panel.get_xlim()) / 2
+        for label in panel.texts:
+            if hasattr(label, "xyann") and label.xy[0] > middle:
+                label.xyann = (-5, 5)
+                label.set_horizontalalignment("right")
     panels[0].set_ylabel("z + w (inside ≥ 0)")
     handles, labels = panels[0].get_legend_handles_labels()
+    if flat_y and got is not None:
+        handles += panels[0].plot([], [], " ")
+        labels.append(f"y = {num(ys[0])} at every vertex:\nno y panel")
     artists.append(panels[-1].legend(handles, labels, fontsize="x-small", loc="upper left",
                                      bbox_to_anchor=(1.04, 1)))  # fmt: skip
     return artists
+
+
+def _zoom_on_kept(panels, v, expected, got) -> None:
+    """Each panel's limits around the kept polygon, yours and the near plane (r310 FIG1: a
+    small polygon sat in a corner of axes scaled to the whole triangle); the triangle runs
+    off the panel where it is larger."""
+    pts = [np.asarray(expected, float).reshape(-1, 4)]
+    if got is not None and len(got) and np.isfinite(drawable(got, v)).all():
+        pts.append(np.asarray(got, float).reshape(-1, 4))
+    pts = np.vstack(pts)
+    if not len(pts):  # nothing kept, nothing of yours: the whole triangle
+        return
+    d = np.r_[pts[:, 2] + pts[:, 3], 0.0]  # the plane z + w = 0 stays in view
+    whole = np.asarray(v, float)
+    for k, panel in enumerate(panels):
+        for lo, hi, span, setter in (
+            (pts[:, k].min(), pts[:, k].max(), np.ptp(whole[:, k]), panel.set_xlim),
+            (d.min(), d.max(), np.ptp(whole[:, 2] + whole[:, 3]), panel.set_ylim),
+        ):
+            pad = max(0.15 * (hi - lo), 0.05 * span, 1e-3)
+            setter(lo - pad, hi + pad)
 
 
 def _clip_panel(ax, k, v, expected, got) -> list:
@@ -212,8 +254,9 @@ def _clip_panel(ax, k, v, expected, got) -> list:
         artists += ax.plot([], [], " ", label="yours: empty (no vertex)")
         empty.append("yours: empty")
     if empty:
-        artists.append(ax.text(0.5, 0.04, ", ".join(empty), transform=ax.transAxes,
-                               ha="center", va="bottom", fontsize="small",
+        # in the middle: zoomed on the polygon, the plane runs near the foot (r310)
+        artists.append(ax.text(0.5, 0.5, ", ".join(empty), transform=ax.transAxes,
+                               ha="center", va="center", fontsize="small",
                                color=STATE_COLOURS[3] if "yours: empty" in empty else "black"))  # fmt: skip
     at = {}  # vertices drawn at one point get one label ("v1, v2": y is often shared)
     for j, p in enumerate(v):

@@ -6,7 +6,7 @@ typical mistakes), defined in its own module:
 
 - ``span`` (lesson 01, :mod:`.spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
-  ``safe_near`` (05b, :mod:`.near_plane`): reasoning in place of ``split_point``,
+  ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`): reasoning in place of ``split_point``,
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
   earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
@@ -20,6 +20,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from . import broken_frames as bf
+from . import clip_colour as cc
 from . import front_to_back as fb
 from . import hard_case_fill as hf
 from . import hiz_tile as hz
@@ -36,6 +37,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "span": lambda: spans.SPAN,
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
     "depth_passes": lambda: zb.DEPTH_PASSES,
+    "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
     "safe_near": lambda: npl.SAFE_NEAR,
     "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
     "robust_fill": lambda: hf.ROBUST_FILL,

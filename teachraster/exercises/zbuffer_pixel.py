@@ -193,6 +193,12 @@ DEPTH_MISTAKES = [
              "1.0 by default, and then a fragment exactly on the far plane fails): here the "
              "buffer starts empty, so the first fragment passes whatever its depth, 1.0 "
              "included", start=1.0),
+    # r310 H1: `stored = depths[0]`, the usual start of a running minimum, was told the rule
+    Mistake("started at the first depth", "you started the buffer at the first fragment's "
+            "depth (`stored = depths[0]`), so fragment 0 is compared with its own depth and "
+            "fails: the buffer starts empty, so the first fragment passes whatever its depth, "
+            "and only a fragment that passes and writes puts its depth in the buffer",
+            gives=lambda d, w: _simulate(d, w, start=d[0] if len(d) else np.inf)),
     _mistake("previous", "you compared each fragment with the one just before it; compare "
              "with the depth the buffer holds (the nearest written so far)", previous=True),
     Mistake("farther passes", "you let the farther fragment pass (>, not <): smaller depth "

@@ -1,0 +1,192 @@
+"""Exercise ``clip_near_colour(v, colours)`` (lesson 05a, exercise 4.3): a vertex colour
+carried through the near-plane clip (r310 M2: the clipped polygon of 4.2 carried nothing, and
+"why it must be found in clip space" was asked and never checked).
+
+The student returns the clipped polygon with each vertex's colour, rows (x, y, z, w, r, g, b).
+A new vertex's colour is taken at the same t as its position, in clip space, where every
+vertex output is linear along the edge; the typical slips take it at the t found after the
+divide, from one end of the edge, or perspective-corrected as on the screen (lesson 04).
+
+Expected answers: the core's Sutherland-Hodgman with the colours as attributes
+(:func:`teachraster.pipeline.geometry.clipping.clip_polygon`) on 4.2's cases, each with
+seeded colours; the one case with a vertex beyond the far plane by :func:`.clip_with`, near
+plane only, as in 4.2.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..pipeline.geometry.clipping import clip_polygon
+from .answers import MAX_VERTICES, as_numbers, short
+from .cases import SEED
+from .depth_clipping import (
+    FLOAT32_TOL,
+    _clip_rule,
+    _divided,
+    clip_cases,
+    clip_with,
+    explain_clip,
+    near_only,
+)
+from .exercise import Exercise, Mistake, PackageAnswer
+from .running import WrongAnswerType
+from .scalars import vec
+from .tolerance import all_close, same_polygon
+
+
+def with_colours(v, colours) -> np.ndarray:
+    """The expected (n, 7) polygon: the core's clip with the colours as attributes (near plane
+    only: :func:`.clip_with` where another plane would cut, as 4.2's expected polygon)."""
+    v, c = np.asarray(v, float), np.asarray(colours, float)
+    if near_only(v):
+        return np.column_stack(clip_polygon(v, c))
+    return clip_with(np.column_stack([v, c]))
+
+
+def colour_cases():
+    rng = np.random.default_rng(SEED + 43)
+    out = []
+    for label, (v,), _ in clip_cases():
+        c = np.round(rng.uniform(0, 1, (3, 3)), 2)
+        out.append((f"{label}; colours {vec(c[0])}, {vec(c[1])}, {vec(c[2])}", (v, c),
+                    with_colours(v, c)))  # fmt: skip
+    return out
+
+
+def as_coloured(value) -> np.ndarray:
+    sized = isinstance(value, (list, tuple)) or (isinstance(value, np.ndarray) and value.ndim)
+    if sized and len(value) > MAX_VERTICES:
+        raise WrongAnswerType(
+            f"returned {short(value)}: a triangle clipped by one plane has at most 4 vertices"
+        )
+    if sized and np.size(value) == 0:
+        return np.zeros((0, 7))
+    return as_numbers(value, (-1, 7), "an (n, 7) array of vertices (x, y, z, w, r, g, b)", 7 * 8)
+
+
+def colour_with(v, colours, t_colour) -> np.ndarray:
+    """The right positions, each new vertex's colour from ``t_colour(a, b, t)`` (a, b: the
+    edge's (x, y, z, w, r, g, b) rows; t: the right crossing), a slip each."""
+    p = np.column_stack([np.asarray(v, float), np.asarray(colours, float)])
+    out = []
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(3):
+            a, b = p[i], p[(i + 1) % 3]
+            da, db = a[2] + a[3], b[2] + b[3]
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0):
+                t = da / (da - db)
+                new = a + t * (b - a)
+                new[4:] = t_colour(a, b, t)
+                out.append(new)
+    poly = np.array(out).reshape(-1, 7)
+    return poly if np.isfinite(poly).all() else None
+
+
+def _lerp(a, b, t):
+    return a[4:] + t * (b[4:] - a[4:])
+
+
+def _after_divide(a, b, t):
+    """The colour at the t where z/w reaches −1 along the edge."""
+    s = _divided(a) / (_divided(a) - _divided(b))
+    return _lerp(a, b, s)
+
+
+def _perspective(a, b, t):
+    """colour/w and 1/w interpolated at t, then divided: the screen's rule used in clip space."""
+    return _lerp(a / a[3], b / b[3], t) / ((1 - t) / a[3] + t / b[3])
+
+
+def explain_colour(args, expected, got) -> str:
+    """Positions first (4.2's words); then the first vertex whose colour is wrong."""
+    v, _ = args
+    g = np.asarray(got, float).reshape(-1, 7)
+    if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):
+        return "your positions are wrong (get 4.2 right first): " + explain_clip(
+            (v,), expected[:, :4], g[:, :4]
+        )
+    for p in g:
+        right = [q for q in expected if all_close(q[:4], p[:4], FLOAT32_TOL)]
+        if right and not all_close(p[4:], right[0][4:], FLOAT32_TOL):
+            q = right[0]
+            return (
+                f"your positions are right, but the vertex {vec(p[:4])} has colour "
+                f"{vec(p[4:], q[4:])}, not {vec(q[4:], p[4:])}"
+            )
+    return "your colours are not in the order of your vertices"
+
+
+def _rule(args, expected, got) -> str:
+    g = np.asarray(got, float).reshape(-1, 7)
+    if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):  # 4.2's rule, not a colour's
+        return _clip_rule((args[0],), expected[:, :4], g[:, :4])
+    return (
+        ". A new vertex's colour is interpolated as its position is: at the same t, "
+        "colour_a + t·(colour_b − colour_a), in clip space"
+    )
+
+
+_WHY = (
+    "a vertex's colour, like its position, changes linearly along the edge in clip space, so "
+    "the new vertex takes its colour at its own t"
+)
+
+COLOUR_MISTAKES = [
+    Mistake("colour after the divide", "you took the colour at the fraction where z/w reaches "
+            f"−1, found after the divide: {_WHY}. After the divide equal fractions of the "
+            "projected edge are not equal fractions of the edge itself (lesson 04's "
+            "perspective weighting), so that t is another point's",
+            gives=lambda v, c: colour_with(v, c, _after_divide)),
+    Mistake("colour perspective-corrected", "you interpolated colour/w and 1/w and divided, "
+            "the perspective-correct rule for steps on the screen: before the divide there is "
+            f"nothing to correct, {_WHY}",
+            gives=lambda v, c: colour_with(v, c, _perspective)),
+    Mistake("colour of the inside end", "your new vertices keep the colour of their edge's "
+            f"inside end, not interpolated: {_WHY}",
+            gives=lambda v, c: colour_with(v, c, lambda a, b, t: (a if a[2] + a[3] >= 0 else b)[4:])),
+    Mistake("colour of the first end", "your new vertices keep the colour of their edge's "
+            f"first end, not interpolated: {_WHY}",
+            gives=lambda v, c: colour_with(v, c, lambda a, b, t: a[4:])),
+    Mistake("colour t from the other end", "you took the colour at 1 − t, measured from the "
+            f"edge's other end: {_WHY}, colour_a + t·(colour_b − colour_a)",
+            gives=lambda v, c: colour_with(v, c, lambda a, b, t: _lerp(a, b, 1 - t))),
+    Mistake("colour halfway", "you gave each new vertex the colour halfway along its edge "
+            f"(t = ½): {_WHY}", gives=lambda v, c: colour_with(v, c, lambda a, b, t: _lerp(a, b, 0.5))),
+]  # fmt: skip
+
+
+def _draw(ax, case, got):
+    """4.2's figure of the positions, each vertex a disc of its colour: expected large, yours
+    a square inside it (a wrong colour is a square of another colour)."""
+    from .drawing import draw_clip
+
+    (v, _), expected = case[1], case[2]
+    g = None if got is None else np.asarray(got, float).reshape(-1, 7)
+    artists = draw_clip(ax, v, expected[:, :4], None if g is None else g[:, :4])
+    for k, panel in enumerate(ax.child_axes):
+        for p, marker, size in [(expected, "o", 360), *([(g, "s", 70)] if g is not None else [])]:
+            if len(p) and np.isfinite(p).all():
+                artists.append(panel.scatter(p[:, k], p[:, 2] + p[:, 3], s=size, marker=marker,
+                                             c=np.clip(p[:, 4:], 0, 1), edgecolors="black",
+                                             zorder=5))  # fmt: skip
+    # under the x axis: the report's title holds the top
+    panel = ax.child_axes[0]
+    artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the expected colours; "
+                                    "squares: yours"))  # fmt: skip
+    return artists
+
+
+CLIP_NEAR_COLOUR = Exercise(
+    "clip_near_colour", colour_cases, as_coloured,
+    lambda g, e, a: same_polygon(g, e, FLOAT32_TOL), explain_colour, _rule, COLOUR_MISTAKES,
+    answers=(PackageAnswer(with_colours),), draw=_draw,
+    # 4.2's cases and clip: a student's call into them does not count
+    reference=("teachraster.exercises.depth_clipping",),
+    # issue 30: the formula the task asks to work out is said once two wrong answers failed
+    hints=((": at the same t, colour_a + t·(colour_b − colour_a), in clip space",
+            ": at the same fraction of the edge, in clip space (which fraction?)"),
+           (", colour_a + t·(colour_b − colour_a)", ""),),
+)  # fmt: skip
