@@ -584,6 +584,15 @@ class SplitArtists(Artists):
     point: Line2D
     label: Text
 
+    def hatch_over_coverage(self) -> None:
+        """The two parts hatched, drawn over the covered pixels: painted under them, the parts
+        a key names showed only as slivers beside the edges (review r93 02-9b, the editor;
+        review r307 FIG1, lesson 00's two fills)."""
+        for poly, name, hatch in ((self.flat_bottom, "flat_bottom", "//"),
+                                  (self.flat_top, "flat_top", "\\\\")):  # fmt: skip
+            poly.set(zorder=0.6, hatch=hatch, fc="none", hatch_linewidth=lw(0.6),
+                     ec=COLORS[name], lw=lw(0.8))  # fmt: skip
+
     def update(self, fill) -> None:
         """Show the split of another fill; everything is hidden unless it used span tables."""
         trace = as_trace(fill, "plot_split")
@@ -637,10 +646,21 @@ class SplitArtists(Artists):
             places = [((dx, fs(0.6)), (align[0], "bottom"), text, size)] + [
                 ((dx, dy), (align[0], va), "4", one)
                 for dy, va in ((fs(0.3), "bottom"), (-fs(0.3), "top"))]  # fmt: skip
-            for place, how, words, box in places:
+            # then the "4" on the other side of point 4; and if nothing is clear with point 4
+            # beside the top or bottom vertex, no label: the diamond and the key name it
+            # (review r307 FIG4: at the right frame the label ran out of the grid over the
+            # editor's key, and a "4" there lay on v1's name)
+            other = "right" if align[0] == "left" else "left"
+            mirrored = [((-dx, dy), (other, va), "4", one)
+                        for dy, va in ((fs(0.3), "bottom"), (-fs(0.3), "top"))]  # fmt: skip
+            # point 4 within a pixel of the top or bottom vertex: a "4" there lies on its name
+            near = np.hypot(*(s.sorted_xy[[0, 2]] - (s.u4, v2y)).T).min() < 1.0
+            for place, how, words, box in places + (mirrored if not near else []):
                 if _box_clear(self.label.axes, s.sorted_xy, at, place, how, box):
                     offset, align, text = place, how, words
                     break
+            else:
+                text = "" if near else text
         self.label.xy = at
         self.label.set_position(offset)
         self.label.set_horizontalalignment(align[0])
@@ -652,7 +672,7 @@ class SplitArtists(Artists):
         # ... and among the centre dots, between two of them: a white halo round its glyph,
         # not a box, which hid the dot beside it (review r241 FIG2, lesson 00's player)
         lone = text == "4"
-        self.label.set_bbox(None if lone else label_box())
+        self.label.set_bbox(None if lone or not text else label_box())
         self.label.set_path_effects([withStroke(linewidth=max(2.5, fs(0.22)), foreground="white")]
                                     if lone else [])  # fmt: skip
         for artist in (self.line, self.point, self.label):

@@ -14,7 +14,6 @@ from ..core.triangle import Triangle
 from ..core.validate import as_finite, as_size
 from ..plotting import COLORS, FillView, InterpolationView
 from ..plotting.blitting import MOVING
-from ..plotting.common import lw
 from .common import (
     Holdable,
     close_tree,
@@ -299,11 +298,7 @@ class TriangleEditor(Holdable):
     def _parts_over_coverage(self) -> None:
         """Span tables' two parts hatched over the covered pixels: painted under them, the
         parts the key names showed only as slivers beside the edges (review r93 02-9b)."""
-        split = self.view.split
-        for poly, name, hatch in ((split.flat_bottom, "flat_bottom", "//"),
-                                  (split.flat_top, "flat_top", "\\\\")):  # fmt: skip
-            poly.set(zorder=0.6, hatch=hatch, fc="none", hatch_linewidth=lw(0.6),
-                     ec=COLORS[name], lw=lw(0.8))  # fmt: skip
+        self.view.split.hatch_over_coverage()
 
     def _fill_blit(self):
         """The fill figure's blit, the probe's cross drawn over everything (it moves too)."""

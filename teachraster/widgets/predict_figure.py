@@ -507,7 +507,11 @@ class PredictPoint(FigurePrediction):
 
         def axes_for(fig):
             ax = fig.add_subplot()
-            fig.set_layout_engine("constrained")
+            # laid out inside a margin: constrained layout put a key beside the Axes flush
+            # with the figure's edge, and the page cut off its frame (review r307 FIG2,
+            # lesson 00's q_half)
+            mx, my = (TRIM_MARGIN_PX / size for size in fig.bbox.size)
+            fig.set_layout_engine("constrained", rect=(mx, my, 1 - 2 * mx, 1 - 2 * my))
             return ax
 
         def drawn(ax):

@@ -43,9 +43,11 @@ export function stageHtml(data, key) {
     case "clip":
       return "<p>A vertex is inside the view volume when −w ≤ x, y, z ≤ w (OpenGL's " +
         "default, GL 4.6 §13.7; Direct3D and Vulkan clip 0 ≤ z ≤ w, D3D11.3 §15.4). GPUs " +
-        "clip only against the near and far planes (and w &gt; 0), and not even those with " +
-        "depth clamp on (GL's GL_DEPTH_CLAMP; Direct3D's DepthClipEnable = FALSE): depth is " +
-        "then clamped to the depth range instead. x and y are clipped only far outside ±w, " +
+        // depth clamp drops the near and far planes only: "not even those" read as if it
+        // dropped w > 0 too (review r307 S3; D3D11 DepthClipEnable: "0 < w" still clipped)
+        "clip only against the near and far planes and w &gt; 0; with depth clamp on (GL's " +
+        "GL_DEPTH_CLAMP; Direct3D's DepthClipEnable = FALSE) only against w &gt; 0, and " +
+        "depth is clamped to the depth range instead. x and y are clipped only far outside ±w, " +
         "beyond a guard band that keeps every vertex within the range of the GPU's " +
         "fixed-point rasteriser, each GPU its own; the rasteriser's bounding box does the " +
         "rest (lesson 05a). " +
@@ -74,8 +76,9 @@ export function stageHtml(data, key) {
       return setupHtml(data);
     case "rasterize":
       return `<p>${data.fragments} pixel centres are inside (the top-left rule decides the ` +
-        "ties): each becomes a fragment with its barycentric weights. Outlined: the bounding " +
-        "box the rasteriser tests.</p>";
+        "ties): each becomes a fragment with its barycentric weights. Outlined: the pixels " +
+        "whose centres the rasteriser tests, the bounding box of the vertices widened to " +
+        "whole pixels (the set-up's rows and columns).</p>";
     case "fragment":
       return "<p>The fragment shader runs once per fragment on the interpolated attributes: " +
         "here u, perspective-correct (interpolating u/w and 1/w), mapped to a colour. It " +
