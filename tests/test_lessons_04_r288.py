@@ -66,8 +66,11 @@ def test_p1_the_player_follows_the_question_it_would_answer():
     assert "The player in section 5, after its question, has the same toggle" in _flat(cells["c08"])
     affine = next(t for t in cells.values() if "q_affine = " in t)
     assert "comparison in section 5" in affine and "section 4" not in affine
-    assert "one=True," in cells["q-worst"] and "one pixel whose centre" in cells["q-worst"]
+    # r312 P1: the question asks for every centre reaching the peak (none), not "the one"
+    assert "one pixel whose centre" not in cells["q-worst"] and "none=" in cells["q-worst"]
     assert "its comparison shows both interpolations" in _flat(cells["c12-player-text"])
+    # r312 S3: the player's edge names tied once to the text's
+    assert "edge $\\mathbf{v}_1\\mathbf{v}_2$ is its E12" in _flat(cells["c12-player-text"])
 
 
 @pytest.mark.notebook
@@ -110,9 +113,9 @@ def test_s1_s2_s3_s4_words():
     assert "largest gap over the whole triangle, every point of it" in _flat(
         cells["c04-surfaces-text"]
     )
-    assert "over the covered pixel centres only, not over the whole triangle" in _flat(
-        cells["c04-check-text"]
-    )
+    check = _flat(cells["c04-check-text"])
+    assert "over the covered pixel centres only, not over the whole triangle" in check
+    assert "This check's largest errors" in check  # r312 S2: not "Its" (the 3-D view's?)
     assert "deviation from linear in q: 1/z up to" in cells["c03"]
     assert "z linear in q:" not in cells["c03"]
     spans = _flat(cells["c12-spans-text"])
@@ -120,4 +123,15 @@ def test_s1_s2_s3_s4_words():
     assert "q_diagonal's answer" not in cells["c20"]
     assert "answered the drag" not in cells["85fc0147"]
     m1 = _flat(cells["c08"])
+    # r312 S3: no benchmark-module import in a student's cell; S5: the long cells split
+    assert "import span_divides" in cells["c01"] and "import" not in cells["c12-spans"]
+    assert "ruler" not in cells["85fc0147"]
+    ids = list(cells)
+    assert ids[ids.index("c04-rule") : ids.index("c04-apis")] == [
+        "c04-rule", "c04-history", "c04-divide", "c04"
+    ]  # fmt: skip
+    far = ["c15-far", "c15", "c15-horizon", "c15-aliasing"]
+    assert ids[ids.index("c15-far") : ids.index("c15-far") + 4] == far
+    for cid in ("c04-rule", "c04-history", "c04-divide", "c04", *far):
+        assert len(cells[cid].split()) < 400, cid
     assert "leaves every vertex's $w$ at 1, so there affine interpolation is exact" in m1

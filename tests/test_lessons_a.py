@@ -3083,10 +3083,17 @@ def test_04_r234_questions_explorer_surfaces_floor_and_words():
     # the reveal draws the image on the screen z = 1
     assert q_point._reveal["revealCurve"] == [[-1.0, 1.0], [0.5, 1.0]]
     with style_context("classroom"):  # the question's own style: its labels' size
-        fig, ax = plt.subplots(figsize=(8, 6.5), layout="constrained")
+        fig, ax = plt.subplots(figsize=(7.0, 6.8), layout="constrained")
         built["point_question"](ax)
-        ax.set(xlim=(-1.5, 2.5), ylim=(-0.3, 4.5))
+        ax.set(xlim=(-1.5, 3.0), ylim=(-0.3, 4.5))
         FigureCanvasAgg(fig).draw()
+    # r312 S1: one scale in x and z, as the explorer's
+    assert "figsize=(7.0, 6.8)," in text["85fc0147"] and ax.get_aspect() == 1.0
+    assert "xlim=(-1.5, 3.0)," in text["85fc0147"]
+    box = ax.get_window_extent()
+    assert box.width / 4.5 == pytest.approx(box.height / 4.8, rel=0.01)
+    legend = ax.get_legend().get_window_extent().transformed(ax.transData.inverted())
+    assert legend.x0 > 0.2 and legend.y1 < 1.0  # clear of the eye and of the screen z = 1
     ray = np.linspace(0.0, 1.15, 200)[:, None] * q_point.answer
     for label in ax.texts:
         box = label.get_window_extent().transformed(ax.transData.inverted())
@@ -3262,7 +3269,7 @@ def test_04_r250_subdivided_spans_words_and_links():
     assert f"longest span: {ns.persp.coverage.sum(axis=1).max()} pixels" in printed
     cells = _lesson_04_cells()
     assert "[Lesson 06](06_what_accuracy_costs.ipynb), section 1" in cells["c12-spans-text"]
-    assert "import span_divides" in cells["c12-spans"]
+    assert "import span_divides" in cells["c01"]  # r312 S3: in the setup, not the student's
     assert "section 2 why t/z does" in cells["c03a"]
     assert "t/z and 1/z are the values that step evenly" not in cells["c03a"]
     md = " ".join(t for t in cells.values())
