@@ -1039,7 +1039,7 @@ def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
     """Δz = one step at the stored depth / |dd/dz|, with one slip: ``depth`` "window" (not
     reversed), "ndc" (2d − 1 through GL's default [−1, 1]) or "infinite far" (d = n/z);
     ``step`` "float32", "float64", "at 1" (2^-24), "above 1" (2^-23), "relative" (2^-23 d),
-    "unorm24"; ``slope`` "exact", "infinite far" (n/z²), "z" (n/((1 − n/f) z)), "none" (the
+    "unorm24", "float16"; ``slope`` "exact", "infinite far" (n/z²), "z" (n/((1 − n/f) z)), "none" (the
     step returned), "times" (multiplied); ``factor`` scales the answer (½: half a step)."""
 
     def reverse_z_gap(z, near, far):
@@ -1049,7 +1049,9 @@ def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
             d = near / z
         else:
             d = (near / z - near / far) / (1 - near / far)
-        value = {"float32": np.float32, "float64": np.float64}.get(step, np.float32)(d)
+        value = {"float32": np.float32, "float64": np.float64, "float16": np.float16}.get(
+            step, np.float32
+        )(d)
         s = {
             "at 1": 2.0**-24,
             "above 1": 2.0**-23,
@@ -1065,6 +1067,18 @@ def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
         return factor * s / k
 
     return reverse_z_gap
+
+
+def near_rounds_apart(z, gap, far, bits):
+    """r311 H-2: the first n (scanning out) at which the two surfaces' window depths round to
+    different integers: a step boundary between them, not a whole step apart."""
+    scale = 2**bits - 1
+    n = z * 1e-6
+    while round(far / (far - n) * (1 - n / (z + gap)) * scale) == round(
+        far / (far - n) * (1 - n / z) * scale
+    ):
+        n *= 1.0005
+    return n
 
 
 def gap_bisected(z, near, far):
@@ -1481,6 +1495,19 @@ WRONG = {
     "gap as the step in depth": ("reverse_z_gap", _gap_with(slope="none"), "step in stored depth"),
     "gap times the slope": ("reverse_z_gap", _gap_with(slope="times"), "multiplied the step"),
     "gap with z not squared": ("reverse_z_gap", _gap_with(slope="z"), "falls like 1/z²"),
+    # r311 H-1..H-4: half a step in 5.1 (5.2's words), a lucky rounding, float16, n and f swapped
+    "near with half a step": ("safe_near", _near_with(lambda b: 0.5 / (2**b - 1)), "half a step"),
+    "near where the rounded integers differ": ("safe_near", near_rounds_apart, "only by luck"),
+    "gap with float16's step": (
+        "reverse_z_gap",
+        _gap_with(step="float16"),
+        "the buffer is float32, 23 bits",
+    ),
+    "gap with near and far swapped": (
+        "reverse_z_gap",
+        lambda z, near, far: _gap_with()(z, far, near),
+        "float32's step is 2^-24) and a negative slope",
+    ),  # fmt: skip
     # robust_fill
     "fill of raw vertices": ("robust_fill", _fill_with(snap=False), "snap them"),
     "fill with E >= 0": ("robust_fill", _fill_with(tie=lambda a, b: True), "covered twice"),
@@ -1749,6 +1776,10 @@ KINDS = {
     "gap as the step in depth": "step in depth",
     "gap times the slope": "times slope",
     "gap with z not squared": "z not squared",
+    "near with half a step": "half",
+    "near where the rounded integers differ": "rounded integers",
+    "gap with float16's step": "float16",
+    "gap with near and far swapped": "near and far swapped",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",
