@@ -1081,6 +1081,38 @@ def near_rounds_apart(z, gap, far, bits):
     return n
 
 
+def _bias_with(slip=None):
+    """decal_bias (5.3) with one slip: the offset o = ∓(r + m), r one step, m MaxDepthSlope."""
+
+    def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        r = 0.5 / (2**bits - 1) if slip == "half" else 1 / (2**bits - 1)
+        r = 1 / 2**bits if slip == "2^bits" else r
+        tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
+        m = far * near / (far - near) * tan / z * pixel
+        m = {"view slope": pixel * z * tan, "per unit": m / pixel, "no slope": 0.0}.get(slip, m)
+        o = {"no tie": m, "in steps": (r + m) / r}.get(slip, r + m)
+        sign = 1 if reverse else -1
+        return {"sign": -sign * o, "reverse ignored": -o}.get(slip, sign * o)
+
+    return decal_bias
+
+
+def bias_from_neighbours(z, tilt, pixel, near, far, bits, reverse, clear):
+    """MaxDepthSlope from the window depths at two neighbouring pixels (z_win is affine in
+    screen x on the plane, so the difference is exact)."""
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    beside = z / (1 - pixel * math.tan(math.radians(tilt)))
+    o = 1 / (2**bits - 1) + abs(z_win(beside) - z_win(z))
+    return o if reverse else -o
+
+
+def bias_float32(z, tilt, pixel, near, far, bits, reverse, clear):
+    z, pixel, near, far = (np.float32(v) for v in (z, pixel, near, far))
+    tan = np.float32(np.tan(np.radians(np.float32(tilt))))
+    o = np.float32(1) / np.float32(2**bits - 1) + far * near / (far - near) * tan / z * pixel
+    return o if reverse else -o
+
+
 def gap_bisected(z, near, far):
     """Whole float32 steps: the smallest g at which the farther surface's reversed depth lies
     a step of the stored value's float below the nearer one's (bisection, no slope)."""
@@ -1146,6 +1178,8 @@ DIFFERENT = {
     "reverse-Z gap by whole steps": ("reverse_z_gap", gap_bisected),
     "reverse-Z gap from np.spacing": ("reverse_z_gap", _gap_with()),
     "reverse-Z gap in float32": ("reverse_z_gap", gap_float32),
+    "decal bias by the API's formula": ("decal_bias", _bias_with()),
+    "decal bias from two neighbouring pixels": ("decal_bias", bias_from_neighbours),
     "robust fill, vectorised": ("robust_fill", _fill_with()),
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
@@ -1503,6 +1537,33 @@ WRONG = {
         _gap_with(step="float16"),
         "the buffer is float32, 23 bits",
     ),
+    # decal_bias (5.3, r311 M-1): each slip of the step, the slope, the tie or the sign
+    "decal bias with the wrong sign": ("decal_bias", _bias_with("sign"), "wrong sign"),
+    "decal bias negative under reverse-Z": (
+        "decal_bias",
+        _bias_with("reverse ignored"),
+        "negative under reverse-Z too",
+    ),
+    "decal bias without the tie's step": (
+        "decal_bias",
+        _bias_with("no tie"),
+        "a tie keeps the wall",
+    ),
+    "decal bias without the slope term": (
+        "decal_bias",
+        _bias_with("no slope"),
+        "left out the slope",
+    ),
+    "decal bias in steps": ("decal_bias", _bias_with("in steps"), "counted in steps"),
+    "decal bias from view depth's slope": (
+        "decal_bias",
+        _bias_with("view slope"),
+        "of the view depth",
+    ),
+    "decal bias with tan of degrees": ("decal_bias", _bias_with("degrees"), "takes radians"),
+    "decal bias per unit of x/z": ("decal_bias", _bias_with("per unit"), "not per pixel"),
+    "decal bias with 1/2^bits": ("decal_bias", _bias_with("2^bits"), "you took r as 1/2^"),
+    "decal bias with half a step": ("decal_bias", _bias_with("half"), "half a step"),
     "gap with near and far swapped": (
         "reverse_z_gap",
         lambda z, near, far: _gap_with()(z, far, near),
@@ -1780,6 +1841,16 @@ KINDS = {
     "near where the rounded integers differ": "rounded integers",
     "gap with float16's step": "float16",
     "gap with near and far swapped": "near and far swapped",
+    "decal bias with the wrong sign": "sign",
+    "decal bias negative under reverse-Z": "reverse ignored",
+    "decal bias without the tie's step": "no tie",
+    "decal bias without the slope term": "no slope",
+    "decal bias in steps": "in steps",
+    "decal bias from view depth's slope": "view slope",
+    "decal bias with tan of degrees": "degrees",
+    "decal bias per unit of x/z": "per unit",
+    "decal bias with 1/2^bits": "2^bits",
+    "decal bias with half a step": "half",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",
@@ -1929,6 +2000,7 @@ def line_start_dark(p0, p1):
 #: Correct but different (vectorised, float32 within its rounding, another formula): must pass.
 DIFFERENT.update({
     "safe near in float32": ("safe_near", near_float32),
+    "decal bias in float32": ("decal_bias", bias_float32),
     "clip in float32": ("clip_near", clip_float32),
     "quad derivatives in float32": ("quad_derivatives", quad_float32),
     "front to back in float32": ("front_to_back", layers_float32),
@@ -1943,7 +2015,7 @@ DIFFERENT.update({
 
 #: Passing float32 answers: the report names float32 (not failed, not silent).
 FLOAT32 = {label: DIFFERENT[label] for label in (
-    "safe near in float32", "reverse-Z gap in float32", "quad derivatives in float32",
+    "safe near in float32", "reverse-Z gap in float32", "decal bias in float32", "quad derivatives in float32",
     "front to back in float32", "float32 resolve", "float32 bilinear", "float32 trilinear", "over in float32",
     "clip in float32",
 )}  # fmt: skip

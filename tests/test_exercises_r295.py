@@ -203,3 +203,20 @@ def test_r311_legends_sit_beside_the_axes_and_5_2_zooms_on_its_band():
     assert any("yours →" in t.get_text() for t in inset.texts)
     plt.close(fig)
     assert "counting whole steps" not in _task_text("safe_near_task")
+
+
+def test_r311_decal_bias_takes_every_offset_between_its_bounds_with_the_right_sign():
+    """M-1: 5.3 is judged by its two conditions (r + m ≤ |o| ≤ what the object in front
+    leaves), not closeness; the sign flips under reverse-Z; the task cites the APIs."""
+    from teachraster.exercises import decal_bias as db
+
+    for _, args, expected in db.bias_cases()[:8]:
+        lo, hi = db.bounds(*args)
+        sign = 1 if args[6] else -1
+        assert 0 < lo < hi and expected == pytest.approx(sign * lo)
+        for ok in (lo, (lo + hi) / 2, hi):
+            assert db.same_offset(sign * ok, expected, args)
+        for bad in (lo * 0.999, hi * 1.001, -lo):
+            assert not db.same_offset(sign * bad, expected, args), (args, bad)
+    text = _task_text("decal_bias_task")
+    assert all(w in text for w in ("SlopeScaledDepthBias", "glPolygonOffset", "vkCmdSetDepthBias"))

@@ -9,6 +9,7 @@ typical mistakes), defined in its own module:
   ``safe_near`` (05b, :mod:`.near_plane`): reasoning in place of ``split_point``,
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
   earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
+  ``decal_bias`` (05b, :mod:`.decal_bias`): the depth offset a tilted decal needs;
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
@@ -20,6 +21,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from . import broken_frames as bf
+from . import decal_bias as db
 from . import front_to_back as fb
 from . import hard_case_fill as hf
 from . import hiz_tile as hz
@@ -38,6 +40,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "depth_passes": lambda: zb.DEPTH_PASSES,
     "safe_near": lambda: npl.SAFE_NEAR,
     "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
+    "decal_bias": lambda: db.DECAL_BIAS,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,
