@@ -54,6 +54,14 @@ def reverse_z_gap(z, near, far):
     return step / (near / ((1 - near / far) * z * z))  # over |dd/dz|
 
 
+def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)  # one step of the buffer
+    # MaxDepthSlope: z_win = f/(f - n) (1 - n/z) and, on the tilted plane, 1/z = (1 - s tan θ)/z
+    # with s = x/z, which moves by `pixel` per pixel
+    m = far * near / (far - near) * np.tan(np.radians(tilt)) / z * pixel
+    return (r + m) if reverse else -(r + m)
+
+
 def robust_fill(xy, width, height, origin=(0, 0)):
     v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
 
@@ -233,6 +241,7 @@ CORRECT = {
     "clip_near_colour": clip_near_colour,
     "safe_near": safe_near,
     "reverse_z_gap": reverse_z_gap,
+    "decal_bias": decal_bias,
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
     "hiz_rejects": hiz_rejects,

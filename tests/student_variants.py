@@ -1040,7 +1040,7 @@ def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
     """Δz = one step at the stored depth / |dd/dz|, with one slip: ``depth`` "window" (not
     reversed), "ndc" (2d − 1 through GL's default [−1, 1]) or "infinite far" (d = n/z);
     ``step`` "float32", "float64", "at 1" (2^-24), "above 1" (2^-23), "relative" (2^-23 d),
-    "unorm24"; ``slope`` "exact", "infinite far" (n/z²), "z" (n/((1 − n/f) z)), "none" (the
+    "unorm24", "float16"; ``slope`` "exact", "infinite far" (n/z²), "z" (n/((1 − n/f) z)), "none" (the
     step returned), "times" (multiplied); ``factor`` scales the answer (½: half a step)."""
 
     def reverse_z_gap(z, near, far):
@@ -1050,7 +1050,9 @@ def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
             d = near / z
         else:
             d = (near / z - near / far) / (1 - near / far)
-        value = {"float32": np.float32, "float64": np.float64}.get(step, np.float32)(d)
+        value = {"float32": np.float32, "float64": np.float64, "float16": np.float16}.get(
+            step, np.float32
+        )(d)
         s = {
             "at 1": 2.0**-24,
             "above 1": 2.0**-23,
@@ -1066,6 +1068,50 @@ def _gap_with(depth="reversed", step="float32", slope="exact", factor=1.0):
         return factor * s / k
 
     return reverse_z_gap
+
+
+def near_rounds_apart(z, gap, far, bits):
+    """r311 H-2: the first n (scanning out) at which the two surfaces' window depths round to
+    different integers: a step boundary between them, not a whole step apart."""
+    scale = 2**bits - 1
+    n = z * 1e-6
+    while round(far / (far - n) * (1 - n / (z + gap)) * scale) == round(
+        far / (far - n) * (1 - n / z) * scale
+    ):
+        n *= 1.0005
+    return n
+
+
+def _bias_with(slip=None):
+    """decal_bias (5.3) with one slip: the offset o = ∓(r + m), r one step, m MaxDepthSlope."""
+
+    def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        r = 0.5 / (2**bits - 1) if slip == "half" else 1 / (2**bits - 1)
+        r = 1 / 2**bits if slip == "2^bits" else r
+        tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
+        m = far * near / (far - near) * tan / z * pixel
+        m = {"view slope": pixel * z * tan, "per unit": m / pixel, "no slope": 0.0}.get(slip, m)
+        o = {"no tie": m, "in steps": (r + m) / r}.get(slip, r + m)
+        sign = 1 if reverse else -1
+        return {"sign": -sign * o, "reverse ignored": -o}.get(slip, sign * o)
+
+    return decal_bias
+
+
+def bias_from_neighbours(z, tilt, pixel, near, far, bits, reverse, clear):
+    """MaxDepthSlope from the window depths at two neighbouring pixels (z_win is affine in
+    screen x on the plane, so the difference is exact)."""
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    beside = z / (1 - pixel * math.tan(math.radians(tilt)))
+    o = 1 / (2**bits - 1) + abs(z_win(beside) - z_win(z))
+    return o if reverse else -o
+
+
+def bias_float32(z, tilt, pixel, near, far, bits, reverse, clear):
+    z, pixel, near, far = (np.float32(v) for v in (z, pixel, near, far))
+    tan = np.float32(np.tan(np.radians(np.float32(tilt))))
+    o = np.float32(1) / np.float32(2**bits - 1) + far * near / (far - near) * tan / z * pixel
+    return o if reverse else -o
 
 
 def gap_bisected(z, near, far):
@@ -1133,6 +1179,8 @@ DIFFERENT = {
     "reverse-Z gap by whole steps": ("reverse_z_gap", gap_bisected),
     "reverse-Z gap from np.spacing": ("reverse_z_gap", _gap_with()),
     "reverse-Z gap in float32": ("reverse_z_gap", gap_float32),
+    "decal bias by the API's formula": ("decal_bias", _bias_with()),
+    "decal bias from two neighbouring pixels": ("decal_bias", bias_from_neighbours),
     "robust fill, vectorised": ("robust_fill", _fill_with()),
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
@@ -1482,6 +1530,46 @@ WRONG = {
     "gap as the step in depth": ("reverse_z_gap", _gap_with(slope="none"), "step in stored depth"),
     "gap times the slope": ("reverse_z_gap", _gap_with(slope="times"), "multiplied the step"),
     "gap with z not squared": ("reverse_z_gap", _gap_with(slope="z"), "falls like 1/z²"),
+    # r311 H-1..H-4: half a step in 5.1 (5.2's words), a lucky rounding, float16, n and f swapped
+    "near with half a step": ("safe_near", _near_with(lambda b: 0.5 / (2**b - 1)), "half a step"),
+    "near where the rounded integers differ": ("safe_near", near_rounds_apart, "only by luck"),
+    "gap with float16's step": (
+        "reverse_z_gap",
+        _gap_with(step="float16"),
+        "the buffer is float32, 23 bits",
+    ),
+    # decal_bias (5.3, r311 M-1): each slip of the step, the slope, the tie or the sign
+    "decal bias with the wrong sign": ("decal_bias", _bias_with("sign"), "wrong sign"),
+    "decal bias negative under reverse-Z": (
+        "decal_bias",
+        _bias_with("reverse ignored"),
+        "negative under reverse-Z too",
+    ),
+    "decal bias without the tie's step": (
+        "decal_bias",
+        _bias_with("no tie"),
+        "a tie keeps the wall",
+    ),
+    "decal bias without the slope term": (
+        "decal_bias",
+        _bias_with("no slope"),
+        "left out the slope",
+    ),
+    "decal bias in steps": ("decal_bias", _bias_with("in steps"), "counted in steps"),
+    "decal bias from view depth's slope": (
+        "decal_bias",
+        _bias_with("view slope"),
+        "of the view depth",
+    ),
+    "decal bias with tan of degrees": ("decal_bias", _bias_with("degrees"), "takes radians"),
+    "decal bias per unit of x/z": ("decal_bias", _bias_with("per unit"), "not per pixel"),
+    "decal bias with 1/2^bits": ("decal_bias", _bias_with("2^bits"), "you took r as 1/2^"),
+    "decal bias with half a step": ("decal_bias", _bias_with("half"), "half a step"),
+    "gap with near and far swapped": (
+        "reverse_z_gap",
+        lambda z, near, far: _gap_with()(z, far, near),
+        "float32's step is 2^-24) and a negative slope",
+    ),  # fmt: skip
     # robust_fill
     "fill of raw vertices": ("robust_fill", _fill_with(snap=False), "snap them"),
     "fill with E >= 0": ("robust_fill", _fill_with(tie=lambda a, b: True), "covered twice"),
@@ -1750,6 +1838,20 @@ KINDS = {
     "gap as the step in depth": "step in depth",
     "gap times the slope": "times slope",
     "gap with z not squared": "z not squared",
+    "near with half a step": "half",
+    "near where the rounded integers differ": "rounded integers",
+    "gap with float16's step": "float16",
+    "gap with near and far swapped": "near and far swapped",
+    "decal bias with the wrong sign": "sign",
+    "decal bias negative under reverse-Z": "reverse ignored",
+    "decal bias without the tie's step": "no tie",
+    "decal bias without the slope term": "no slope",
+    "decal bias in steps": "in steps",
+    "decal bias from view depth's slope": "view slope",
+    "decal bias with tan of degrees": "degrees",
+    "decal bias per unit of x/z": "per unit",
+    "decal bias with 1/2^bits": "2^bits",
+    "decal bias with half a step": "half",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",
@@ -1899,6 +2001,7 @@ def line_start_dark(p0, p1):
 #: Correct but different (vectorised, float32 within its rounding, another formula): must pass.
 DIFFERENT.update({
     "safe near in float32": ("safe_near", near_float32),
+    "decal bias in float32": ("decal_bias", bias_float32),
     "clip in float32": ("clip_near", clip_float32),
     "quad derivatives in float32": ("quad_derivatives", quad_float32),
     "front to back in float32": ("front_to_back", layers_float32),
@@ -1913,7 +2016,7 @@ DIFFERENT.update({
 
 #: Passing float32 answers: the report names float32 (not failed, not silent).
 FLOAT32 = {label: DIFFERENT[label] for label in (
-    "safe near in float32", "reverse-Z gap in float32", "quad derivatives in float32",
+    "safe near in float32", "reverse-Z gap in float32", "decal bias in float32", "quad derivatives in float32",
     "front to back in float32", "float32 resolve", "float32 bilinear", "float32 trilinear", "over in float32",
     "clip in float32",
 )}  # fmt: skip

@@ -173,3 +173,50 @@ def test_reverse_z_gap_takes_either_neighbour_at_a_power_of_two_and_no_more():
     assert not reverse_z.same_gap(above * 1.02, expected, args)
     assert not reverse_z.same_gap(below * 0.99, expected, args)
     assert "too coarse" in reverse_z.explain_gap(args, expected, above * 1.02)
+
+
+# -- fixex05b: r311 --------------------------------------------------------------------------
+
+
+def test_r311_legends_sit_beside_the_axes_and_5_2_zooms_on_its_band():
+    """FIG-2: 5.1's legend covered its lines; FIG-1: 5.2's 1 % band was a sliver on a log axis
+    (an inset on a linear scale shows it, its ends as ticks). S-2: no "counting whole steps"."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises import reverse_z
+
+    case = near_cases()[-4]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    draw_near(ax, case, case[2] / 2)
+    fig.canvas.draw()
+    assert ax.get_legend().get_window_extent().x0 > ax.get_window_extent().x1
+    plt.close(fig)
+    case = reverse_z.gap_cases()[0]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    reverse_z.draw_gap(ax, case, case[2] * 1.3)
+    (inset,) = ax.child_axes
+    first, last = reverse_z.bounds(*case[1])
+    assert list(inset.get_xticks()) == [first, last]
+    assert any("yours →" in t.get_text() for t in inset.texts)
+    plt.close(fig)
+    assert "counting whole steps" not in _task_text("safe_near_task")
+
+
+def test_r311_decal_bias_takes_every_offset_between_its_bounds_with_the_right_sign():
+    """M-1: 5.3 is judged by its two conditions (r + m ≤ |o| ≤ what the object in front
+    leaves), not closeness; the sign flips under reverse-Z; the task cites the APIs."""
+    from teachraster.exercises import decal_bias as db
+
+    for _, args, expected in db.bias_cases()[:8]:
+        lo, hi = db.bounds(*args)
+        sign = 1 if args[6] else -1
+        assert 0 < lo < hi and expected == pytest.approx(sign * lo)
+        for ok in (lo, (lo + hi) / 2, hi):
+            assert db.same_offset(sign * ok, expected, args)
+        for bad in (lo * 0.999, hi * 1.001, -lo):
+            assert not db.same_offset(sign * bad, expected, args), (args, bad)
+    text = _task_text("decal_bias_task")
+    assert all(w in text for w in ("SlopeScaledDepthBias", "glPolygonOffset", "vkCmdSetDepthBias"))

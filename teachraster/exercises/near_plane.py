@@ -172,9 +172,21 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             "xor": solve(1.0 / ((2 ^ bits) - 1), far),
             "sign slip": step * far * z * z / (gap * far - step * z * z),
             "negated": -solve(step, far),
+            # r311 H-1: "rounding to nearest, so half a step is enough"
+            "half": solve(step / 2, far),
             **{f"{b} bits": solve(1.0 / (2**b - 1), far) for b in (16, 24) if b != bits},
         }
 
+
+#: r311 H-1: the half-step model, named in 5.1 and 5.2 (:mod:`.reverse_z`) alike. Rounding
+#: to nearest errs by at most half a step, but two depths half a step apart can still round to
+#: one stored value (0.1 and 0.45 of a step both store 0): only a whole step apart always
+#: stores two.
+HALF_STEP = (
+    "you took half a step (a stored value's rounding error, ±step/2) as enough. Two depths "
+    "half a step apart can still round to one stored value (0.1 and 0.45 of a step both "
+    "store 0); only depths a whole step apart always store different values"
+)
 
 MISTAKES = {
     "2^bits": "you took the buffer's step as 1/2^bits; a unorm buffer's largest value is "
@@ -202,6 +214,7 @@ MISTAKES = {
     "gap·f + step·z² beside n, a plus, where yours has gap·f − step·z²",
     "negated": "your n has the right size and the wrong sign: a near plane lies in front of "
     "the eye, n > 0",
+    "half": HALF_STEP,
     **{
         f"{b} bits": f"your n is the one for a {b}-bit buffer, whatever `bits` is: the step is "
         "1/(2^bits − 1) with the case's own bits"
@@ -216,7 +229,7 @@ def explain_near(args, expected, got) -> str:
     lo, hi = _bounds(float(z), float(gap), float(far), int(bits))
     head = (f"at z = {num(z)} with far = {num(far)} and {bits} bits, surfaces {num(gap)} apart "
             f"need n ≥ {_num(expected, got, lo)} (to first order; {_num(lo, got, expected)} "
-            f"counting whole steps); yours is {num(got, expected)}")  # fmt: skip
+            f"with their window depths a whole step apart); yours is {num(got, expected)}")  # fmt: skip
     if not np.isfinite(got) or not 0 < got < z:
         return head
     yours = resolution(z, got, far, bits)
@@ -255,6 +268,28 @@ def _out_of_range(args, expected, got) -> bool:
     z = args[0]
     return bool(np.isfinite(got)) and not 0 < got < z
 
+
+def _rounds_apart(args, expected, got) -> bool:
+    """r311 H-2: too close, yet at n = ``got`` the two depths round to different integers (a
+    scan for "the rounded integers differ" stops at such a lucky n)."""
+    z, gap, far, bits = args
+    if not (np.isfinite(got) and 0 < got < z):
+        return False
+    scale = 2**bits - 1
+    stored = np.rint(window_depth([z - gap, z, z + gap], got, far) * scale)
+    return bool(got < _bounds(float(z), float(gap), float(far), int(bits))[0]) and (
+        stored[0] != stored[1] or stored[1] != stored[2]
+    )
+
+
+ROUNDS_APART = Mistake(
+    "rounded integers",
+    ". At your n the two depths do round to different integers, but only by luck: a step "
+    "boundary happens to fall between them, though they lie less than a step apart. Move z or "
+    "n a little and both round to one value; the buffer tells surfaces apart wherever they "
+    "lie only when their window depths are a whole step apart",
+    fits=_rounds_apart,
+)
 
 RANGE = Mistake("range", ": a near plane lies between the eye and the surfaces, 0 < n < z",
                 fits=_out_of_range, symptom=True)  # fmt: skip
@@ -302,13 +337,14 @@ def draw_near(ax, case, got):
         ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:.3g}"))
     ax.set_xlabel("near plane n")
     ax.set_ylabel("depth resolution Δz")
-    artists.append(ax.legend(fontsize="x-small"))
+    # r311 FIG-2: beside the axes, as 5.2's: inside, it covered the expected line and the band
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     return artists
 
 
 SAFE_NEAR = Exercise(
     "safe_near", near_cases, as_number, same_near, explain_near, _rule,
-    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_near,
+    variant_mistakes(_variants, MISTAKES, (ROUNDS_APART, RANGE)), draw=draw_near,
     # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
     answers=(PackageAnswer(expected_near, words=CHECKER_WORDS),), hints=(
         # r39 05-3: the first wrong try printed the inequality the task asks to derive

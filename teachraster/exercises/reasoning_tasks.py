@@ -6,9 +6,11 @@ typical mistakes), defined in its own module:
 
 - ``span`` (lesson 01, :mod:`.spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
-  ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`): reasoning in place of ``split_point``,
+  ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
+  reasoning in place of ``split_point``,
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
   earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
+  ``decal_bias`` (05b, :mod:`.decal_bias`): the depth offset a tilted decal needs;
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
@@ -21,6 +23,7 @@ from collections.abc import Callable
 
 from . import broken_frames as bf
 from . import clip_colour as cc
+from . import decal_bias as db
 from . import front_to_back as fb
 from . import hard_case_fill as hf
 from . import hiz_tile as hz
@@ -40,6 +43,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
     "safe_near": lambda: npl.SAFE_NEAR,
     "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
+    "decal_bias": lambda: db.DECAL_BIAS,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,

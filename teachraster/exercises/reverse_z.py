@@ -26,6 +26,7 @@ from ..pipeline.visibility.depth import depth_resolution, reversed_depth, window
 from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .near_plane import HALF_STEP
 from .package_answers import CHECKER_WORDS
 from .scalars import num
 
@@ -137,6 +138,10 @@ def _variants(z, near, far) -> dict[str, float]:
         "window depth": _nearer_step(win) / slope,
         "step above 1": 2.0**-23 / slope,
         "float64": _nearer_step(d, np.float64) / slope,
+        # r311 H-3/H-4: the format's precision (float16), and the planes swapped in d's
+        # formula (which gives window depth, with a negative slope)
+        "float16": _nearer_step(d, np.float16) / slope,
+        "near and far swapped": -_nearer_step(win) / slope,
         "relative step": d * 2.0**-23 / slope,
         "relative step, half": d * 2.0**-24 / slope,
         "half": step / (2 * slope),
@@ -169,12 +174,17 @@ MISTAKES = {
     "near 0 for far surfaces, and float32's step is the one at d",
     "float64": "you took float64's step at d (np.spacing of a float64): the buffer is "
     "float32, whose steps are 2^29 times coarser",
+    "float16": "you took float16's step at d (np.float16, 10 bits of fraction): the buffer is "
+    "float32, 23 bits of fraction, whose steps are 2^13 = 8192 times finer",
+    "near and far swapped": "you swapped n and f in d = (n/z − n/f)/(1 − n/f): with them "
+    "swapped it gives ordinary window depth z_win (far depths near 1, where float32's step is "
+    "2^-24) and a negative slope, so yours is minus window depth's Δz. Reverse-Z keeps the "
+    "planes and flips the depth: d = 1 − z_win",
     "relative step": _RELATIVE,
     "relative step, half": _RELATIVE,
     # two readings give this very answer: half a step, and NDC's slope
-    "half": "yours is half of it: you took half a step (a value's rounding error, ±step/2) "
-    "or the slope of an NDC depth 2d − 1 in [−1, 1], twice d's. Two surfaces store different "
-    "values once their depths are a whole step apart, and the buffer stores d in [0, 1]",
+    "half": f"yours is half of it: {HALF_STEP}. Or you took the slope of an NDC depth 2d − 1 "
+    "in [−1, 1], twice d's: the buffer stores d in [0, 1]",
     "gl ndc": "you sent d through OpenGL's default NDC, 2d − 1 in [−1, 1], where float32 "
     "near −1 has steps of 2^-24 only: that is reverse-Z without glClipControl(..., "
     "GL_ZERO_TO_ONE) (lesson 05b, §4). The buffer here stores d itself, in [0, 1]",
@@ -243,7 +253,8 @@ def draw_gap(ax, case, got):
     artists += ax.loglog(zs, depth_resolution(zs, near, far, "float32"), color="#888888",
                          linestyle=":", label="float32, window depth")  # fmt: skip
     first, last = _bounds(float(z), float(near), float(far))
-    # the band is 1 % tall, a sliver on decades of Δz: the legend says its ends
+    # the band is 1 % tall, a sliver on decades of Δz: the inset below shows it on a linear
+    # scale (r311 FIG-1)
     artists += ax.plot([z, z], [first, last], color="#7fbf7f", lw=8, solid_capstyle="butt",
                        label=f"accepted {_num(first, last)} to {_num(last, first)}",
                        zorder=1)  # fmt: skip
@@ -258,6 +269,7 @@ def draw_gap(ax, case, got):
         why = "not a number" if np.isnan(got) else "not a positive distance"
         artists += ax.plot([], [], " ", label=f"your Δz {num(got)}: not drawn, {why}")
     ax.set_xlim(lo_z, hi_z)
+    artists += _zoom(ax, (z, near, far), (first, last), expected, got)
     from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 
     # z spans a decade or so: 1, 2 and 5 times powers of ten, written plainly (matplotlib's
@@ -271,6 +283,35 @@ def draw_gap(ax, case, got):
     # or right, whichever the case)
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     return artists
+
+
+def _zoom(ax, args, band, expected, got) -> list:
+    """An inset below the legend, beside the axes (inside, it lay on the sawtooth): Δz on a
+    linear scale around the expected one, the accepted band, the expected gap and yours (or
+    an arrow to it, when it lies off this scale)."""
+    first, last = band
+    z = args[0]
+    inset = ax.inset_axes([1.06, 0.1, 0.5, 0.18])
+    left, right = first - 0.5 * (last - first), last + 0.5 * (last - first)
+    artists = [inset.axvspan(first, last, color="#7fbf7f", lw=0)]
+    artists += inset.plot([expected], [0.5], "o", color="#2b7bba", ms=6)
+    if got is not None and np.isfinite(got) and got > 0:
+        ok = same_gap(got, expected, args)
+        colour = "#7fbf7f" if ok else "#d7301f"
+        if left <= got <= right:
+            artists += inset.plot([got], [0.5], "x", color=colour, ms=9, mew=2)
+        else:  # off this scale: an arrow at the side it lies on
+            x, ha, arrow = (right, "right", "→") if got > right else (left, "left", "←")
+            artists.append(inset.text(x, 0.5, f"yours {arrow}", color=colour, ha=ha,
+                                      va="center", fontsize="x-small",
+                                      bbox={"fc": "white", "ec": "none", "pad": 1}))  # fmt: skip
+    inset.set_xlim(left, right)
+    inset.set_ylim(0, 1)
+    inset.set_yticks([])
+    inset.set_xticks([first, last])
+    inset.set_xticklabels([_num(first, last), _num(last, first)], fontsize="x-small")
+    inset.set_title(f"accepted Δz at z = {num(z)}, zoomed", fontsize="x-small", pad=3)
+    return artists + [inset]
 
 
 REVERSE_Z_GAP = Exercise(
