@@ -2731,7 +2731,7 @@ def test_guard_band_exact_range_and_far_floor_words():
     assert not re.search(r"(?<!guard )\bband\b", ten.replace("guard\n", "guard ")), "band"
     seven = " ".join(" ".join(_cells("07_hard_cases", "markdown")).split())
     # review r236 S-7: the simulator's exact range, not "the guard band" (a GPU's is smaller)
-    assert "lesson 10 prints that range" in seven and "prints its extent" not in seven
+    assert "lesson 10 prints the range" in seven and "prints its extent" not in seven
     four = " ".join(" ".join(_cells("04_perspective_correct_interpolation", "markdown")).split())
     assert "noise" not in four and "horizontal streaks" in four
     # review r22 04-13: depth is exactly constant along a row; what aliases is the check row
