@@ -234,6 +234,16 @@ def clip_near_colour(v, colours):
     return np.array(out).reshape(-1, 7)
 
 
+def broken_frame_3_steps(b, row=13, col=52):
+    """Frame 3's wall and intended pane in the 16-bit buffer's whole steps, and the steps
+    between them: round(d · (2**16 - 1)) of the depths the intended history holds."""
+    records = b.intended.history(row, col).records
+    wall = next(r.depth for r in records if r.outcome == "passed" and r.color[3] == 1)
+    pane = _glass(b.intended.history(row, col)).depth
+    wall, pane = round(wall * (2**16 - 1)), round(pane * (2**16 - 1))
+    return wall, pane, wall - pane
+
+
 CORRECT = {
     "span": span,
     "perspective_weights": perspective_weights,
@@ -246,5 +256,6 @@ CORRECT = {
     "quad_derivatives": quad_derivatives,
     "hiz_rejects": hiz_rejects,
     **{f"broken_frame_{n}": diagnosis(n) for n in BROKEN_FRAMES},
+    "broken_frame_3_steps": broken_frame_3_steps,
     "front_to_back": front_to_back,
 }

@@ -1717,10 +1717,11 @@ WRONG = {
         lambda b: ("missing premultiplication", (0, 0), (0.31, 0.28, 0.24)),
         "have the same colour at (0, 0)",
     ),  # fmt: skip
+    # r309: the stored (tied) depth is the broken frame's; the evidence, the intended frame's
     "frame 3, the stored depth for the intended one": (
         "broken_frame_3",
         lambda b: ("z-fighting", (13, 52), 0.6),
-        "do bear the mark of 'z-fighting'",
+        "0.6 is the value in the other frame of the pair (the broken frame's history",
     ),  # fmt: skip
     # r9 (exercises-09-11-r9.md §11): the right sliver at a pixel it does not cross was told
     # "the cause is another"; (col, row) and the sliver's pair swapped were half-named; a
@@ -1733,12 +1734,13 @@ WRONG = {
     "frame 1, (col, row) for (row, col)": (
         "broken_frame_1",
         lambda b: ("depth function", (28, 24), _rs.READ[1](b, 24, 28)),
-        "Your value is the evidence at (24, 28): a pixel is (row, col)",
+        # r309 S1: the specific hint opens the explanation now
+        ": your value is the evidence at (24, 28): a pixel is (row, col)",
     ),  # fmt: skip
     "frame 6, the sliver's two numbers swapped": (
         "broken_frame_6",
         lambda b: ("sliver", (22, 40), _rs.READ[6](b, 22, 40)[::-1]),
-        "Your two numbers are in the other order",
+        "): your two numbers are in the other order",  # r309 S1: first, after the numbers
     ),  # fmt: skip
     "frame 4, the frame shown's value typed in": (
         "broken_frame_4",
@@ -1882,7 +1884,7 @@ KINDS = {
     "frame 1 blamed on z-fighting": "cause",
     "frame 2 blamed on the depth function, its evidence read right": "cause",
     "frame 4, a pixel the mistake left alone": "pixel",
-    "frame 3, the stored depth for the intended one": "evidence",
+    "frame 3, the stored depth for the intended one": "the other frame's value",
     "frame 6, the sliver at a pixel it does not cross": "pixel without the mark",
     "frame 1, (col, row) for (row, col)": "evidence",
     "frame 6, the sliver's two numbers swapped": "evidence",
@@ -2611,3 +2613,94 @@ DIFFERENT["clip_near_colour with (1 − t)·a + t·b, a list"] = (
     "clip_near_colour",
     _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ((1 - t) * ca + t * cb).tolist()),
 )
+
+
+# == r309: exercise 11, a value read off the other frame of the pair; RGBA for (r, g, b); ====
+# frame 3's tie counted in the 16-bit buffer's steps (broken_frame_3_steps, M3)
+def _records(b, row, col, intended=False):
+    return (b.intended if intended else b.frame).history(row, col).records
+
+
+def _glass_of(b, row, col, intended=False):
+    return next(r for r in _records(b, row, col, intended)
+                if r.outcome == "passed" and r.color[3] < 1)  # fmt: skip
+
+
+def _wall_and_pane(b):
+    """The intended frame's wall and pane depths at (13, 52), as a student reads them."""
+    wall = next(r.depth for r in _records(b, 13, 52, True)
+                if r.outcome == "passed" and r.color[3] == 1)  # fmt: skip
+    return wall, _glass_of(b, 13, 52, True).depth
+
+
+def _steps_with(scale, apart=None):
+    def fn(b):
+        wall, pane = (round(d * scale) for d in _wall_and_pane(b))
+        return wall, pane, (wall - pane) if apart is None else apart(*_wall_and_pane(b))
+
+    return fn
+
+
+OTHER_FRAME = "is the value in the other frame of the pair"
+R309 = {
+    "frame 1, the intended frame's depth shown": (
+        "broken_frame_1",
+        lambda b: ("depth function", (24, 28),
+                   next(r.depth for r in _records(b, 24, 28, True) if r.shown)),
+        f"{OTHER_FRAME} (the intended frame's history", "the other frame's value"),
+    "frame 3, the tied pane's depth in the broken frame": (
+        "broken_frame_3",
+        lambda b: ("z-fighting", (13, 52),
+                   next(r.depth for r in _records(b, 13, 52) if r.outcome == "hi_z")),
+        f"{OTHER_FRAME} (the broken frame's history", "the other frame's value"),
+    "frame 4, the intended frame's fragment colour": (
+        "broken_frame_4",
+        lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52, True).color[:3]),
+        f"{OTHER_FRAME} (the intended frame's history", "the other frame's value"),
+    "frame 5, the intended frame's 'after'": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41), _glass_of(b, 23, 41, True).color_after[:3]),
+        f"{OTHER_FRAME} (the intended frame's history", "the other frame's value"),
+    "frame 6, the broken frame's wall depth": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), (_rs.READ[6](b, 22, 40)[0],
+                                        next(r.depth for r in _records(b, 22, 40) if r.shown))),
+        f"{OTHER_FRAME} (the broken frame's history", "the other frame's value"),
+    "frame 4, RGBA for (r, g, b)": (
+        "broken_frame_4",
+        lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52).color),
+        "it is (r, g, b): three numbers; yours has 4 (alpha?", "type"),
+    "frame 9, RGBA 'after' for (r, g, b)": (
+        "broken_frame_9",
+        lambda b: ("blend order", (13, 52), _glass_of(b, 13, 52).color_after),
+        "it is (r, g, b): three numbers; yours has 4 (alpha?", "type"),
+    "frame 3 steps of 1/65536": (
+        "broken_frame_3_steps", _steps_with(2**16), "you scaled by 2¹⁶ = 65536", "2^16 steps"),
+    "frame 3 depths for steps": (
+        "broken_frame_3_steps", lambda b: (*_wall_and_pane(b), np.subtract(*_wall_and_pane(b))),
+        "those are the depths themselves", "depths for steps"),
+    "frame 3 depth difference for steps": (
+        "broken_frame_3_steps", _steps_with(2**16 - 1, apart=lambda w, p: w - p),
+        "is the difference of the depths, not of the steps", "depth difference for steps"),
+    "frame 3 printed depths' difference scaled": (
+        "broken_frame_3_steps",
+        _steps_with(2**16 - 1, apart=lambda w, p: (round(w, 6) - round(p, 6)) * (2**16 - 1)),
+        "not a whole number of steps", "steps not whole"),
+    "frame 3 steps typed in": (
+        "broken_frame_3_steps", lambda b: (39321, 39255, 66), "those are frame 3's numbers as "
+        "shown", "typed in"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R309.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R309.items()})
+DIFFERENT.update({
+    "frame 3 steps from the printed depths, as np.int64": (
+        "broken_frame_3_steps",
+        lambda b: tuple(np.int64(round(round(d, 6) * 65535)) for d in _wall_and_pane(b))
+        + (np.int64(round(round(_wall_and_pane(b)[0], 6) * 65535)
+                    - round(round(_wall_and_pane(b)[1], 6) * 65535)),),
+    ),
+    "frame 3 steps as floats, a list": (
+        "broken_frame_3_steps",
+        lambda b: [float(v) for v in _rs.broken_frame_3_steps(b)],
+    ),
+})  # fmt: skip

@@ -1103,7 +1103,12 @@ def test_broken_frame_answers_are_read_strictly():
     assert "one number" in said(("depth function", (24, 28), (0.1, 0.2, 0.3)))
     # the evidence's form is read strictly for the frame's own cause (r16 N1: for another
     # cause, that the cause is wrong comes first: test_the_right_answer_passes_...)
-    assert "three or four numbers" in said(("missing premultiplication", (13, 52), 0.4), 4)
+    assert "a colour (r, g, b), three numbers" in said(
+        ("missing premultiplication", (13, 52), 0.4), 4
+    )
+    # r309 S2: RGBA passed where the list asks (r, g, b); refused now, saying why
+    rgba = said(("missing premultiplication", (13, 52), (0.31, 0.28, 0.24, 0.5)), 4)
+    assert "it is (r, g, b): three numbers; yours has 4 (alpha?" in rgba, rgba
     assert "two numbers" in said(("sliver", (22, 40), 0.12), 6)
     wrong_cause = ex.check("broken_frame_1", lambda b: ("sliver", (22, 40), 0.12))
     assert wrong_cause.failures[0].kind == "cause", str(wrong_cause)
@@ -1709,6 +1714,10 @@ def test_the_sliver_is_outlined_dashed_and_drawn_in_the_failure_picture():
         assert ax.get_xlim()[1] == 2 * bf.W + 12 + 12 + bf.ZOOM_SIZE
         needle = [p for p in ax.patches if isinstance(p, Polygon)]
         assert len(needle) == 1  # clipped to the zoom, not the whole strip
+        # r309 S5: drawn in the strip's blue it read as the strip; a colour of its own, keyed
+        assert matplotlib.colors.to_hex(needle[0].get_edgecolor()) == bf.THIN_COLOUR.lower()
+        key = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert key == ["the thin triangle"], key
         assert needle[0].get_clip_box().width < ax.bbox.width / 3
         assert "(23, 47) rendered, enlarged" in ax.get_xlabel()
     finally:
@@ -1731,3 +1740,27 @@ def test_a_triangle_number_as_an_integral_float_is_read():
     assert bf._as_evidence("culled winding", np.float64(9.0)) == 9
     with pytest.raises(Exception, match="triangle's number"):
         bf._as_evidence("culled winding", 9.5)
+
+
+def test_r309_the_text_says_four_decimals_and_asks_frame_3_in_the_buffers_steps():
+    """r309 S4: "four digits" for values printed to four decimals; S2: a colour is (r, g, b);
+    M3: 11.3b asks frame 3's tie in unorm16 steps, its question printed only in frame 3's note
+    (asked before 11.3 passes, it would tell the cause), its solution's number the reference's."""
+    cells, order = _cells(), list(_cells())
+    how = " ".join(cells["how_text"].split())
+    assert "four decimals they print" in how and "four digits" not in how, how
+    assert "a colour as (r, g, b), three numbers" in how, how
+    assert order.index("frame_3_steps_task") == order.index("frame_3_note") + 1
+    assert order[order.index("frame_3_steps_task") + 1 :][:2] == [
+        "broken_frame_3_steps_solution",
+        "broken_frame_3_steps_check",
+    ]
+    task = " ".join(cells["frame_3_steps_task"].split()).lower()
+    for telling in ("unorm", "z-fight", "tie", "16-bit", "precision"):
+        assert telling not in task, telling
+    assert "unorm16" not in cells["broken_frame_3_steps_solution"].split("### BEGIN")[0]
+    wall, pane, apart = sol.broken_frame_3_steps(ex.broken_frame(3))
+    assert f"drawn {apart} steps nearer" in cells["broken_frame_3_steps_solution"]
+    note = ex.frame_note(3, ex.check("broken_frame_3", sol.diagnosis(3)))
+    assert "11.3b asks:" in note and "round(d · (2¹⁶ − 1))" in note, note
+    assert "11.3b" not in ex.frame_note(3, None)

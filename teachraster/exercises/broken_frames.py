@@ -8,7 +8,8 @@ pixel, surfaces too close for the depth buffer). The student sees the frame besi
 one, inspects pixel histories (``frame.history(row, col)``, the ``FrameInspector``) and answers
 with a cause from :data:`CAUSES`, a pixel where the two frames differ, and the evidence
 :data:`EVIDENCE` names for that cause: a number or colour read off that pixel's history (a
-depth to its six printed decimals, a colour or a distance to its four printed digits).
+depth to its six printed decimals, a colour (r, g, b) or a distance to its four printed
+decimals).
 
 What is hidden and what is not. The frames come in look-alike groups (1-2, 3-4-9, 5-6-7-8)
 with the same symptom, the same picture and the same intended picture pixel for pixel; frames that
@@ -45,8 +46,10 @@ the two frames agree; the frame's cause at a changed pixel that does not show it
 (:data:`_SIGNS`; the sliver's: the thin triangle passes through the pixel); a cause that is
 not the frame's (the value is then not judged: r18-2); a triangle's number read off the
 intended frame's history (r84 11-2: the cube's redrawn pair numbers its two frames apart); the
-frame shown's value given for the redrawn frame; a value that is not the evidence there (and a
-row and column, or the sliver's two numbers, swapped).
+frame shown's value given for the redrawn frame; the evidence's value read off the other frame
+of the pair (r309: the intended frame's, or the broken frame's where the list asks the
+intended frame's); a value that is not the evidence there (and a row and column, or the
+sliver's two numbers, swapped: said first).
 """
 
 from __future__ import annotations
@@ -523,6 +526,16 @@ def frame_marks() -> dict:
             for b in broken_frames() for what in ("frame", "intended")}  # fmt: skip
 
 
+#: Frame 3's follow-up (11.3b, :mod:`.broken_frame_steps`), printed in frame 3's note.
+_STEPS_QUESTION = (
+    "the histories' first line says unorm16, a buffer that holds a depth d as the whole\n"
+    "number round(d · (2¹⁶ − 1)) (lesson 05b). At a pixel of the pane, which whole numbers\n"
+    "does it hold for the wall and for the pane in the intended frame, and how many steps\n"
+    "apart are they? broken_frame_3_steps(b) returns (wall, pane, apart), worked out from\n"
+    "the depths the intended frame's history prints (frame 3's pane is drawn nearer than the\n"
+    "wall too, by less than half a step: its depth rounds to the wall's whole number)."
+)
+
 #: A note on each frame (how it was made, and how its mistake usually shows), told once its
 #: check has passed: the words name the mistake (r16 N2: kept in the notebook's locked cell,
 #: they stood in its source, readable before the frame was solved). r18-5: every frame after
@@ -533,7 +546,10 @@ _NOTES = {
     "tools export it) shows its inside wherever back faces are culled.",
     3: "Frame 3 is contrived so that the pane is missing everywhere: it lies parallel to the\n"
     "wall, so every pixel ties. At an angle the tie would come and go, and the two surfaces\n"
-    "would show through each other in stitches.",
+    "would show through each other in stitches.\n"
+    # r309 M3: the follow-up that needs lesson 05b, asked only here (asked before 11.3 passes,
+    # it would tell frame 3's cause)
+    f"11.3b asks: {_STEPS_QUESTION}",
     # r18-4: "so that the pair looks alike" (the pair is a frame and its intended frame)
     # r18-3: "so that it looks like frame 3" told, once 11.4 passed, that frame 3's cause is
     # another (and "like frame 6", frame 6's cause): a note names no other frame
@@ -674,13 +690,14 @@ def _evidence(number, cause: str, p: _Pixel) -> list:
 
 
 #: How far a value may be from the history's: half a unit of the last digit it prints (six
-#: decimals for depths, four digits for colours and distances), and a little more.
+#: decimals for depths, four for colours and distances), and a little more.
 _TOLERANCE = {"depth": 2e-6, "number": 6e-5, "colour": 1e-4, "pair": (6e-5, 2e-6),
               "triangle": 0}  # fmt: skip
 
 
 def _matches(kind: str, value, evidence: list) -> bool:
-    """Is ``value`` (a number, 3 or 4 colour channels, or a pair) one of ``evidence``?"""
+    """Is ``value`` (a number, colour channels, or a pair) one of ``evidence`` (colours
+    compared on the value's channels: the records' RGBA on their r, g, b)?"""
     tol = _TOLERANCE[kind]
     if kind in ("depth", "number", "triangle"):
         return any(abs(value - e) <= tol for e in evidence)
@@ -739,7 +756,7 @@ def _real(value) -> float | None:
 
 
 def _as_evidence(cause: str, value):
-    """The evidence for ``cause``, read strictly: a number, or 3 or 4 colour channels."""
+    """The evidence for ``cause``, read strictly: a number, a colour (r, g, b) or a pair."""
     kind, what = EVIDENCE[cause]
     if isinstance(value, str) and _words(value) in STAGES:  # r8's answer form: a stage
         raise WrongAnswerType(f"returned the stage {value!r} as the evidence: the evidence for "
@@ -760,12 +777,15 @@ def _as_evidence(cause: str, value):
         channels = [_real(v) for v in value] if not isinstance(value, str) else [None]
     except TypeError:
         channels = [None]
-    sizes, form = (
-        ((3, 4), "a colour, three or four numbers (r, g, b[, a])")
-        if kind == "colour"
-        else ((2,), "two numbers")
+    size, form = (
+        (3, "a colour (r, g, b), three numbers") if kind == "colour" else (2, "two numbers")
     )
-    if len(channels) not in sizes or None in channels:
+    if kind == "colour" and len(channels) == 4 and None not in channels:
+        # r309 S2: RGBA passed where the list asks (r, g, b); the alpha is no part of it
+        raise WrongAnswerType(f"returned the evidence {short(value)}: for {cause!r} it is "
+                              "(r, g, b): three numbers; yours has 4 (alpha? give "
+                              f"value[:3]): {what}")  # fmt: skip
+    if len(channels) != size or None in channels:
         raise WrongAnswerType(f"returned the evidence {short(value)}: for {cause!r} it is "
                               f"{form}: {what}")  # fmt: skip
     return tuple(channels)
@@ -883,7 +903,8 @@ def _judged(number, got) -> tuple[str, _Pixel | None]:
     function), "right", "pixel" (the frames agree there), "unmarked" (the frame's cause, at a
     changed pixel that does not show it), "cause", "intended" (the evidence triangle's number
     in the intended frame's history, not this frame's), "copied" (the frame shown's value,
-    given for the redrawn one) or "evidence"."""
+    given for the redrawn one), "other" (the evidence's value read off the other frame of the
+    pair, :func:`_mirrored`) or "evidence"."""
     if getattr(number, "nested", False):
         return "nested", None
     return _judged_on(_as_frame(number), got)
@@ -911,6 +932,10 @@ def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
         broken_frame(b.number), cause, row, col, value
     ):
         return "copied", p
+    # after "copied": a value typed in from the frame shown may be, by chance, the redrawn
+    # pair's other frame's (frame 7's 0.4, a redrawn strip's depth)
+    if _matches(kind, value, _mirrored(b, cause, p)[1]):
+        return "other", p
     return "evidence", p
 
 
@@ -921,6 +946,43 @@ def _meant_numbers(b: BrokenFrame, cause: str, p: _Pixel) -> set:
     evidence = set(_evidence(b, cause, p))
     keys = {_key(b.frame, r.piece) for r in p.mine.records if r.triangle in evidence}
     return {r.triangle for r in p.meant.records if _key(b.intended, r.piece) in keys}
+
+
+def _mirrored(b: BrokenFrame, cause: str, p: _Pixel) -> tuple[str, list]:
+    """The evidence's counterpart in the other frame of the pair: which history that is, and
+    its values there (r309: a value read off the wrong frame of the pair, the commonest slip,
+    was told only "your value is not ..."). The same triangles (by corners) as the evidence's,
+    and for a depth the fragment the other frame shows; for the sliver, a depth of the broken
+    frame's own fragments in place of the one the intended frame draws instead."""
+    mine, meant = p.mine.records, p.meant.records
+    if cause == "z-fighting":  # the evidence is the intended frame's: its counterpart, ours
+        return "the broken frame's", [r.depth for r in _ties(p)]
+    if cause == "sliver":
+        found = {value for value, _ in _evidence(b, cause, p)}
+        return "the broken frame's", [(d, r.depth) for d in found for r in mine
+                                      if r.outcome == "passed"]  # fmt: skip
+    keys = {_key(b.frame, r.piece) for r in mine if _read_from(b, cause, p, r)}
+    same = [r for r in meant if _key(b.intended, r.piece) in keys]
+    if cause == "depth function":
+        shown = [r for r in meant if r.shown]
+        return "the intended frame's", [r.depth for r in (*same, *shown) if r.depth is not None]
+    if cause == "missing premultiplication":
+        return "the intended frame's", [r.color for r in same if r.color]
+    if cause == "blend order":
+        return "the intended frame's", [r.color_after for r in same if r.color_after]
+    return "the intended frame's", []
+
+
+def _read_from(b: BrokenFrame, cause: str, p: _Pixel, record) -> bool:
+    """Is ``record`` of the broken frame's history one the evidence of ``cause`` is read
+    from (:func:`_evidence`)?"""
+    if cause == "depth function":
+        return bool(record.shown)
+    if cause == "missing premultiplication":
+        return record.outcome == "passed" and record.color in _evidence(b, cause, p)
+    if cause == "blend order":
+        return record.outcome == "passed" and record.color_after in _evidence(b, cause, p)
+    return False
 
 
 def _same(got, number, args=None) -> bool:
@@ -977,16 +1039,17 @@ def _in_history(b: BrokenFrame, cause: str, row: int, col: int, value) -> bool:
 
 
 def _swapped(number, got) -> str:
-    """Words for an answer that is right with its row and column, or its pair, swapped. A
+    """Words for an answer that is right with its row and column, or its pair, swapped ("":
+    neither), a sentence of its own. A
     swap is claimed only where the value is not in the given pixel's own histories (r12 11-1:
     triangle 8, culled at (24, 28), is also the evidence at (28, 24); the student read the
     right pixel, the wrong record)."""
     b, (cause, (row, col), value) = _as_frame(number), got
     if _right_at(b, cause, col, row, value) and not _in_history(b, cause, row, col, value):
-        return (f". Your value is the evidence at ({col}, {row}): a pixel is (row, col), the "
+        return (f"Your value is the evidence at ({col}, {row}): a pixel is (row, col), the "
                 "row first, then the column")  # fmt: skip
     if EVIDENCE[cause][0] == "pair" and _right_at(b, cause, row, col, tuple(value)[::-1]):
-        return (". Your two numbers are in the other order: (the distance outside the thin "
+        return ("Your two numbers are in the other order: (the distance outside the thin "
                 "triangle, the intended frame's depth)")  # fmt: skip
     return ""
 
@@ -1073,12 +1136,13 @@ def _evidence_words(args, number, got) -> str:
         "pair": "every digit it prints (the distance's four decimals, the depth's six)",
         "triangle": "its number in this frame (the same triangle in the intended frame has "
         "the same corners on screen, frame.trace.window[k, :, :2], whatever its number)",
-    }.get(kind, "the four digits it prints")
-    return (f"the two histories of ({row}, {col}) do bear the mark of {cause!r} "
+    }.get(kind, "the four decimals it prints")
+    swap = _swapped(number, got)  # r309 S1: the specific hint first, where the eye starts
+    return ((f"{swap[0].lower()}{swap[1:]}. The" if swap else "the")
+            + f" two histories of ({row}, {col}) do bear the mark of {cause!r} "
             f"({_SIGNS[cause][1]}), but your value is not {what}, at that pixel"
             + (_triangle_words(number, got) if kind == "triangle" else "")
-            + f". Read it off {_history_hint(number, row, col, what)}, with {digits}"
-            + _swapped(number, got))  # fmt: skip
+            + f". Read it off {_history_hint(number, row, col, what)}, with {digits}")  # fmt: skip
 
 
 def _triangle_words(number, got) -> str:
@@ -1097,6 +1161,27 @@ def _triangle_words(number, got) -> str:
         else "the intended frame's history has no triangle with its corners here"
     )
     return f": triangle {value} is {mine[0].outcome} here, but {drawn}"
+
+
+def _other_frame_words(args, number, got) -> str:
+    """The evidence's value read off the other frame of the pair (:func:`_mirrored`): said
+    first, then where to read it (r309: five such answers were told only what was asked)."""
+    cause, (row, col), value = got
+    b = _as_frame(number)
+    whose = _mirrored(b, cause, _pixel(b, row, col))[0]
+    own = "the intended frame's" if whose == "the broken frame's" else "the broken frame's"
+    what = EVIDENCE[cause][1]
+    if cause == "sliver":
+        part = f"your depth, {round(tuple(value)[1], 6)}, is"
+        what = "the depth of the fragment the intended frame draws there instead"
+    else:
+        part = f"your value {_shown(cause, value)} is"
+    where = "" if "history" in what else f", in {own} history"
+    hint = _history_hint(number, row, col, "the intended" if "intended" in own else what)
+    return (
+        f"{part} the value in the other frame of the pair ({whose} history of ({row}, "
+        f"{col})): the list asks for {what}{where}. Read it off {hint}"
+    )
 
 
 def _other_look(number: int) -> str:
@@ -1151,9 +1236,10 @@ def _verdict(name: str):
 
 
 def _pixel_words(a, e, g) -> str:
+    swap = _swapped(e, g)
     return (f"frame {int(e)} and its intended frame have the same colour at ({g[1][0]}, "
             f"{g[1][1]}): pick a pixel where the two pictures differ, whose history the "
-            "mistake changed" + _swapped(e, g))  # fmt: skip
+            "mistake changed" + (f". {swap}" if swap else ""))  # fmt: skip
 
 
 #: What a wrong answer is told, one kind each (the module docstring says in which order).
@@ -1164,6 +1250,7 @@ DIAGNOSIS_MISTAKES = (
     Mistake("cause", _cause_words, fits=_verdict("cause")),
     Mistake("the intended frame's number", _meant_words, fits=_verdict("intended")),
     Mistake("typed in", _copied_words, fits=_verdict("copied")),
+    Mistake("the other frame's value", _other_frame_words, fits=_verdict("other")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
 )
 
@@ -1185,6 +1272,9 @@ def _altitudes(frame: Frame) -> np.ndarray:
 #: The failure picture's zoom on a sliver answer: pixels each side of the chosen one, and
 #: the data units (frame pixels) the zoom takes beside the two frames (its height: the frame's).
 ZOOM_REACH, ZOOM_SIZE = 2, H
+#: The thin triangle's colour in the zoom: neither the strip's (blues) nor the wall's, nor the
+#: chosen pixel's orange (Okabe-Ito reddish purple).
+THIN_COLOUR = "#CC79A7"
 
 
 def _draw(ax, case, got):
@@ -1261,10 +1351,18 @@ def _zoom(ax, frame: Frame, row: int, col: int, x0: float) -> list:
     x, y = at([col, col + 1, col + 1, col, col], [row, row, row + 1, row + 1, row])
     artists += ax.plot(x, y, color="#D55E00", lw=2.5)
     k = int(np.argmin(_altitudes(frame)))
+    # r309 S5: in the strip's own blue it read as the strip drawn; a colour of its own, dashed
+    # as the outlines draw a triangle that covers no centre, named in a key
     thin = Polygon(np.column_stack(at(*frame.trace.window[k, :, :2].T)), closed=True,
-                   fc="#0072B2", ec="#0072B2", alpha=0.6, lw=1.5)  # fmt: skip
+                   fc=THIN_COLOUR, ec=THIN_COLOUR, alpha=0.75, lw=1.5, ls="--",
+                   label="the thin triangle")  # fmt: skip
     artists.append(ax.add_patch(thin))
     thin.set_clip_path(box)
+    # the key in the zoom's top row, which the needle (a slope of 1/4 through the middle row)
+    # never reaches (under the axes it ran into the x label), in points: the classroom
+    # style's relative sizes made it wider than the zoom
+    artists.append(ax.legend(handles=[thin], loc="upper right", fontsize=6, framealpha=0.9,
+                             borderpad=0.3, handlelength=1.2, handletextpad=0.4))  # fmt: skip
     return artists
 
 

@@ -14,13 +14,15 @@ typical mistakes), defined in its own module:
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
-- ``broken_frame_1`` … ``broken_frame_9`` (11, :mod:`.broken_frames`).
+- ``broken_frame_1`` … ``broken_frame_9`` (11, :mod:`.broken_frames`), and
+  ``broken_frame_3_steps`` (11 with 05b, :mod:`.broken_frame_steps`): frame 3's tie in steps.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
+from . import broken_frame_steps as bfs
 from . import broken_frames as bf
 from . import clip_colour as cc
 from . import decal_bias as db
@@ -48,5 +50,6 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,
     **bf.EXERCISES,
+    "broken_frame_3_steps": lambda: bfs.BROKEN_FRAME_3_STEPS,
     "front_to_back": lambda: fb.FRONT_TO_BACK,
 }
