@@ -212,6 +212,12 @@ def test_ghost_sides_tells_a_trail_from_a_blur():
     assert ghost_sides(blur, target, (0.0, 0.1)) == {"behind": 1, "ahead": 1, "beside": 6}
     faint = np.full_like(target, 1 / 16)  # the least step is not a ghost
     assert ghost_sides(faint, target, (0.0, 0.1))["behind"] == 0
+    # review r313 FIG1: the masks the figure outlines are the pixels counted
+    from teachraster.study.antialiasing import ghost_masks
+
+    marks = ghost_masks(trail, target, (0.0, 0.1))
+    assert np.array_equal(np.argwhere(marks["behind"][0]), [[0, 1], [1, 1], [2, 1]])
+    assert not marks["ahead"].any() and not marks["beside"].any()
     with pytest.raises(ValueError, match="motion"):
         ghost_sides(trail, target, (0.0, 0.0))
     with pytest.raises(ValueError, match="alike"):

@@ -1375,3 +1375,30 @@ def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns)
         assert "<b>−0.6</b>; the answer is <b>−0.74 (± 0.05)</b>" in said and "-0." not in said
     finally:
         q.close()
+
+
+def test_lesson_08_review_r313_ghosts_outlined_circles_floor_rms_and_maintenance10(ns):
+    """Review r313. FIG1: the TAA panels outline each history's ghost pixels by side (half of
+    them too faint to see in colour), the text says so. FIG2: q_levels' circles as large as
+    q_sliver's. FIG3: the floor figure shows only the rows where 1 sample departs from the
+    reference. S1: the discrepancy paragraph tells mean |error| from RMS. S2: the Vulkan sRGB
+    row names VK_KHR_maintenance10."""
+    import json
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[1] / "notebooks" / "08_antialiasing.ipynb"
+    cells = {c["id"]: "".join(c["source"]) for c in json.loads(path.read_text())["cells"]}
+    assert "ghost_masks(image[None], crawl_16[last][None], MOTION)" in cells["30cda8d6"]
+    words = " ".join(cells["836112a2"].split())
+    assert "outlines each history's ghost pixels in its last frame: orange behind" in words
+    assert '"o", ms=8,' in cells["7dcf3ede"] and "ms=5" not in cells["7dcf3ede"]
+    far = ns.floor_crop
+    floor_rows = np.flatnonzero(ns.on_floor.any(axis=(1, 2, 3)))
+    assert far.stop - far.start <= 0.6 * len(floor_rows)  # 10 of 19 rows
+    departs = np.abs(ns.floor_images["1 sample"] - ns.floor_reference).mean(axis=(1, 2))
+    assert (departs[far] > 0.01).any() and (departs[far.stop :] <= 0.01).all()
+    held = " ".join(ns.FASTEST_TEXT.split())
+    assert "These are means of |error|; Mitchell's statement is about the variance" in held
+    assert "so its RMS error falls like jittered's, $S^{-3/4}$" in held
+    row = next(line for line in cells["6ff4236c"].splitlines() if line.startswith("| sRGB"))
+    assert "`VK_KHR_maintenance10` reports which and may let the application require" in row

@@ -332,7 +332,10 @@ def test_review_r230_window_dots_tight_panel_clicks_and_top_left_edges():
             top_left = [n for (a, b), n in zip(w.result.trace.edges, names)
                         if tr.is_top_left(tri.xy[a], tri.xy[b])]  # fmt: skip
             assert top_left == ["E31"]
-            assert "top or left edge(s), which take a sample on them: E31" in w.table.value
+            assert (
+                "the triangle's top or left edge(s), which cover a sample exactly on them: E31"
+                in w.table.value
+            )
         finally:
             w.close()
 

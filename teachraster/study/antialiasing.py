@@ -359,6 +359,16 @@ def ghost_sides(images, targets, motion, *, least: float = 1 / 16) -> dict:
     >>> ghost_sides(image, target, (0.0, 0.25))
     {'behind': 2, 'ahead': 2, 'beside': 0}
     """
+    return {side: int(mask.sum()) for side, mask in ghost_masks(images, targets, motion,
+                                                                least=least).items()}  # fmt: skip
+
+
+def ghost_masks(images, targets, motion, *, least: float = 1 / 16) -> dict:
+    """The ghost pixels :func:`ghost_sides` counts, as (T, H, W) boolean masks by side.
+
+    Returns ``{"behind": mask, "ahead": mask, "beside": mask}`` (the figures outline them:
+    a ghost's value may be too faint to see in a colour map).
+    """
     images, targets = as_finite("images", images, None), as_finite("targets", targets, None)
     if images.ndim != 3 or images.shape != targets.shape:
         raise ValueError(f"images and targets must be (T, H, W) alike, got {images.shape} "
@@ -380,5 +390,4 @@ def ghost_sides(images, targets, motion, *, least: float = 1 / 16) -> dict:
             found[:, inside] |= covered[:, r[inside], c[inside]]
     behind = ghost & seen[1] & ~seen[-1]
     ahead = ghost & seen[-1] & ~seen[1]
-    return {"behind": int(behind.sum()), "ahead": int(ahead.sum()),
-            "beside": int((ghost & ~behind & ~ahead).sum())}  # fmt: skip
+    return {"behind": behind, "ahead": ahead, "beside": ghost & ~behind & ~ahead}

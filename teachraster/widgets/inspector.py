@@ -307,7 +307,9 @@ class PixelInspector(Holdable):
         names = [edge_name(a, b) for a, b in trace.edges]
         # which edges take a sample exactly on them (review r230 S8: nothing said which)
         top_left = [n for n, tl in zip(names, trace.samples.top_left) if tl]
-        rule = f"top or left edge(s), which take a sample on them: {', '.join(top_left) or 'none'}"
+        # a property of the triangle, not of this pixel (review r313 S3)
+        rule = (f"the triangle's top or left edge(s), which cover a sample exactly on them: "
+                f"{', '.join(top_left) or 'none'}")  # fmt: skip
         covered = self.result.sample_coverage[r, c]
         offsets = self.result.samples
         head = "".join(f"<th>{n}</th>" for n in ("sample", "offset (x, y)", *names, "covered"))
