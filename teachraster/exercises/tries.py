@@ -197,10 +197,12 @@ def apply_hints(words: str, hints) -> str:
     return words
 
 
-#: What a report (or a capstone quoting an exercise's check) adds to words given as a hint.
+#: What a report (or a capstone quoting an exercise's check) adds to words given as a hint. Only
+#: failures whose words were hinted count (:func:`hinted_check`): r317 C1, "2 different answers
+#: have failed" read as any two failures, and a third still got the hint.
 HINT_ONLY = (
     "a hint only: work from it and the numbers of the case (the full words come once "
-    f"{HINTED_ANSWERS} different answers of yours have failed)"
+    f"{HINTED_ANSWERS} different answers of yours have failed with a hint like this one)"
 )
 
 
