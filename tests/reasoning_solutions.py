@@ -59,6 +59,9 @@ def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
     # MaxDepthSlope: z_win = f/(f - n) (1 - n/z) and, on the tilted plane, 1/z = (1 - s tan θ)/z
     # with s = x/z, which moves by `pixel` per pixel
     m = far * near / (far - near) * np.tan(np.radians(tilt)) / z * pixel
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    if r + m > z_win(z) - z_win(z - clear) - m:  # the object in front, drawn first, keeps a tie
+        return float("nan")
     return (r + m) if reverse else -(r + m)
 
 

@@ -1086,11 +1086,20 @@ def _bias_with(slip=None):
     """decal_bias (5.3) with one slip: the offset o = ∓(r + m), r one step, m MaxDepthSlope."""
 
     def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        # the test for "no offset does both" right, so the slip shows in the offset alone
+        r, m = (
+            1 / (2**bits - 1),
+            far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel,
+        )
+        z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+        if slip != "clear ignored" and r + m > z_win(z) - z_win(z - clear) - m:
+            return math.nan  # the object in front leaves no offset that does both
         r = 0.5 / (2**bits - 1) if slip == "half" else 1 / (2**bits - 1)
         r = 1 / 2**bits if slip == "2^bits" else r
         tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
         m = far * near / (far - near) * tan / z * pixel
         m = {"view slope": pixel * z * tan, "per unit": m / pixel, "no slope": 0.0}.get(slip, m)
+        m = m / z if slip == "z squared" else m
         o = {"no tie": m, "in steps": (r + m) / r}.get(slip, r + m)
         sign = 1 if reverse else -1
         return {"sign": -sign * o, "reverse ignored": -o}.get(slip, sign * o)
@@ -1103,14 +1112,32 @@ def bias_from_neighbours(z, tilt, pixel, near, far, bits, reverse, clear):
     screen x on the plane, so the difference is exact)."""
     z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
     beside = z / (1 - pixel * math.tan(math.radians(tilt)))
-    o = 1 / (2**bits - 1) + abs(z_win(beside) - z_win(z))
+    m = abs(z_win(beside) - z_win(z))
+    o = 1 / (2**bits - 1) + m
+    if o > z_win(z) - z_win(z - clear) - m:  # the object in front must still hide the decal
+        return math.nan
     return o if reverse else -o
+
+
+def bias_two_steps(z, tilt, pixel, near, far, bits, reverse, clear):
+    """llvmpipe's r, two steps (lesson 05b's table): more than needed, and still behind the
+    object in front, which is drawn first and keeps a tie (r316 item 3)."""
+    r = 2 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    if r / 2 + m > z_win(z) - z_win(z - clear) - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
 
 
 def bias_float32(z, tilt, pixel, near, far, bits, reverse, clear):
     z, pixel, near, far = (np.float32(v) for v in (z, pixel, near, far))
     tan = np.float32(np.tan(np.radians(np.float32(tilt))))
-    o = np.float32(1) / np.float32(2**bits - 1) + far * near / (far - near) * tan / z * pixel
+    m = far * near / (far - near) * tan / z * pixel
+    o = np.float32(1) / np.float32(2**bits - 1) + m
+    z_win = lambda zz: far / (far - near) * (np.float32(1) - near / zz)  # noqa: E731
+    if o > z_win(z) - z_win(z - np.float32(clear)) - m:
+        return np.float32(np.nan)
     return o if reverse else -o
 
 
@@ -1181,6 +1208,7 @@ DIFFERENT = {
     "reverse-Z gap in float32": ("reverse_z_gap", gap_float32),
     "decal bias by the API's formula": ("decal_bias", _bias_with()),
     "decal bias from two neighbouring pixels": ("decal_bias", bias_from_neighbours),
+    "decal bias with llvmpipe's two steps": ("decal_bias", bias_two_steps),
     "robust fill, vectorised": ("robust_fill", _fill_with()),
     "quad derivatives from edge functions": ("quad_derivatives", _quad_with()),
     "Hi-Z by brute force": ("hiz_rejects", _hiz_with()),
@@ -1565,6 +1593,8 @@ WRONG = {
     "decal bias per unit of x/z": ("decal_bias", _bias_with("per unit"), "not per pixel"),
     "decal bias with 1/2^bits": ("decal_bias", _bias_with("2^bits"), "you took r as 1/2^"),
     "decal bias with half a step": ("decal_bias", _bias_with("half"), "half a step"),
+    "decal bias ignoring clear": ("decal_bias", _bias_with("clear ignored"), "ignores `clear`"),
+    "decal bias with z squared in m": ("decal_bias", _bias_with("z squared"), "divided by z"),
     "gap with near and far swapped": (
         "reverse_z_gap",
         lambda z, near, far: _gap_with()(z, far, near),
@@ -1854,6 +1884,8 @@ KINDS = {
     "decal bias per unit of x/z": "per unit",
     "decal bias with 1/2^bits": "2^bits",
     "decal bias with half a step": "half",
+    "decal bias ignoring clear": "clear ignored",
+    "decal bias with z squared in m": "z squared",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",

@@ -218,5 +218,23 @@ def test_r311_decal_bias_takes_every_offset_between_its_bounds_with_the_right_si
             assert db.same_offset(sign * ok, expected, args)
         for bad in (lo * 0.999, hi * 1.001, -lo):
             assert not db.same_offset(sign * bad, expected, args), (args, bad)
+        two_steps = sign * (lo + db.step(args[5]))  # r316 item 3: llvmpipe's r passes
+        assert db.same_offset(two_steps, expected, args)
+    # r316 M-2: where the object leaves less than r + m, NaN is the answer and r + m fails
+    tight = db.bias_cases()[8:10]
+    assert all(db.impossible(args) and np.isnan(e) for _, args, e in tight)
+    for _, args, e in tight:
+        sign = 1 if args[6] else -1
+        assert db.same_offset(np.nan, e, args) and not db.same_offset(
+            sign * db.bounds(*args)[0], e, args
+        )
+    # r316 item 5: the hints hold m back (its number and the bounds that give it away)
+    from teachraster.exercises.tries import apply_hints
+
+    _, args, e = db.bias_cases()[0]
+    said = apply_hints(db.explain_offset(args, e, e / 10), db.HINTS)
+    assert "m (yours to work out)" in said and "steps behind" not in said
+    assert db.num(db.slope(*args[:5])) not in said
     text = _task_text("decal_bias_task")
     assert all(w in text for w in ("SlopeScaledDepthBias", "glPolygonOffset", "vkCmdSetDepthBias"))
+    assert "slope factor of 1" in text and "np.nan" in text
