@@ -502,9 +502,9 @@ def bilinear_exercise(scene) -> Exercise:
 
 
 def draw_texture_case(ax, case, got):
-    """The texture (level 0) in texel units, its texel centres and the point (u·W, v·H); the
-    expected value and yours below (r40 07-3: two bars of one number showed nothing of the
-    filter). Before any answer (``got`` None) the inputs only. The four texels bilinear blends,
+    """The texture (level 0) in texel units, the point (u·W, v·H) and, with the method, the
+    texel centres; the expected value and yours below (r40 07-3: two bars of one number
+    showed nothing of the filter). Before any answer (``got`` None) the inputs only. The four texels bilinear blends,
     each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2 asks for: drawn
     once two different answers have failed, as the words say it (r64 07 D2)."""
     from matplotlib.patches import Rectangle
@@ -522,8 +522,6 @@ def draw_texture_case(ax, case, got):
     shown = shown if shown.ndim == 2 or shown.shape[2] == 3 else shown[..., 0]
     artists = [ax.imshow(shown, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0),
                          interpolation="nearest")]  # fmt: skip
-    cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
-    artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
     px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
     x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
     fx, fy = px - 0.5 - x0, py - 0.5 - y0
@@ -533,6 +531,11 @@ def draw_texture_case(ax, case, got):
         and got is not None
         and (tries.hints_spent("bilinear") or same_value(got, case[2], None))
     )
+    # the texel centres answer 7.2's first question (r317 P1: the stub's figure drew them, the
+    # × on one): drawn with the method only, and on 7.3's figures (7.2 has taught them)
+    if method or levels:
+        cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
+        artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
     for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1)) if method else ():
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
         artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
@@ -552,7 +555,7 @@ def draw_texture_case(ax, case, got):
              f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
     if method:
         where = f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres"
-    text = f"uv = {vec(uv)} (×), {where}; orange dots: texel centres"
+    text = f"uv = {vec(uv)} (×), {where}" + ("; orange dots: texel centres" if levels else "")
     if got is not None:
         expected = np.ravel(case[2])
         yours = "" if np.size(got) != expected.size else f", yours {_value(got, expected)}"
