@@ -2377,6 +2377,86 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R301.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R301.items()})
 
 
+# -- r317 07: seven slips whose first explanation gave the rule or the symptom ----------------
+def _bilinear_blend(tex, x, y, col, row):
+    """Texels (row(i), col(j)) around (x, y), blended: the shared part of the slips below."""
+    j, i = math.floor(x), math.floor(y)
+    fx, fy = x - j, y - i
+    top = (1 - fx) * tex[row(i), col(j)] + fx * tex[row(i), col(j + 1)]
+    bottom = (1 - fx) * tex[row(i + 1), col(j)] + fx * tex[row(i + 1), col(j + 1)]
+    return (1 - fy) * top + fy * bottom
+
+
+def _bilinear_mod_then_clip(texture, uv, wrap):
+    """'repeat' as (u, v) % 1, the texel indices then clamped in both modes."""
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    u, v = (uv[0] % 1.0, uv[1] % 1.0) if wrap == "repeat" else (uv[0], uv[1])
+    return _bilinear_blend(tex, u * w - 0.5, v * h - 0.5, lambda j: min(max(j, 0), w - 1),
+                           lambda i: min(max(i, 0), h - 1))  # fmt: skip
+
+
+def _bilinear_clamp_uv_tiled(texture, uv, wrap):
+    """'clamp' as (u, v) clipped to [0, 1], the texel indices tiled in both modes."""
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    u, v = np.clip(uv, 0.0, 1.0) if wrap == "clamp" else uv
+    return _bilinear_blend(tex, u * w - 0.5, v * h - 0.5, lambda j: j % w, lambda i: i % h)
+
+
+def _bilinear_one_row(texture, uv, wrap):
+    """A lerp along x in row floor(v·H) alone: no vertical blend."""
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x = uv[0] * w - 0.5
+    j, fx = math.floor(x), x - math.floor(x)
+    r = math.floor(uv[1] * h)
+    r = r % h if wrap == "repeat" else min(max(r, 0), h - 1)
+    c0, c1 = (j % w, (j + 1) % w) if wrap == "repeat" else (min(max(j, 0), w - 1), min(max(j + 1, 0), w - 1))  # fmt: skip
+    return (1 - fx) * tex[r, c0] + fx * tex[r, c1]
+
+
+def _trilinear_levels(lower):
+    """trilinear with the lower level ``lower(λ)`` and upper ``lower + 1`` (``cap``: at most q)."""
+
+    def fn(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q)
+        d, cap = lower(lam)
+        t = lam - d
+        up = min(d + 1, q) if cap else d + 1
+        return (1 - t) * bilinear(pyramid[d], uv, wrap) + t * bilinear(pyramid[up], uv, wrap)
+
+    return fn
+
+
+R317 = {
+    "mip level, λ from ddx alone": (
+        "mip_level", lambda dx, dy, s: math.log2(math.hypot(dx[0] * s[1], dx[1] * s[0])),
+        "your λ uses ddx alone", "ddx alone"),
+    "mip level, λ with v scaled by W": (
+        "mip_level", lambda dx, dy, s: math.log2(max(math.hypot(dx[0] * s[1], dx[1] * s[1]),
+                                                     math.hypot(dy[0] * s[1], dy[1] * s[1]))),
+        "you scaled v by W", "v scaled by W"),
+    "bilinear, 'repeat' as uv % 1 with clamped texels": (
+        "bilinear", _bilinear_mod_then_clip, "wrapped (u, v) into [0, 1) and then clamped",
+        "wrapped (u, v), clamped texels"),
+    "bilinear, 'clamp' as uv clipped with tiled texels": (
+        "bilinear", _bilinear_clamp_uv_tiled, "with wrap 'clamp' you clamped (u, v) to [0, 1] "
+        "but tiled the texel indices", "'clamp' tiles the texels"),
+    "bilinear without the vertical blend": (
+        "bilinear", _bilinear_one_row, "you blended along x only", "no vertical blend"),
+    "trilinear with round(λ) for the lower level": (
+        "trilinear", _trilinear_levels(lambda lam: (round(lam), True)),
+        "you took round(λ) for the lower level", "round() for floor"),
+    "trilinear, upper level ⌊λ⌋ + 1 beyond q": (
+        "trilinear", _trilinear_levels(lambda lam: (math.floor(lam), False)),
+        "there is no level q + 1 = 4", "raised"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R317.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R317.items()})
+
+
 # -- r306 04: slips told another mistake's name, or only the shape or the rule -----------------
 def _clip_dropped_whole(v):
     """X1: the triangle dropped whole as soon as one vertex is behind the plane."""

@@ -361,6 +361,13 @@ def test_a_stub_or_a_crash_is_shown_not_raised(plt):
     fig, axes = plt.subplots(1, 3)
     report.compare(axes, pixel="first")
     assert "not implemented yet" in axes[0].texts[0].get_text()
+    # r317 P1: the stub's figure (the inputs) does not mark the texel centres 7.2 asks for
+    from teachraster.exercises.texture_filtering import bilinear_cases, draw_texture_case
+
+    fig, ax = plt.subplots()
+    draw_texture_case(ax, bilinear_cases()[0], None)
+    assert not [line for line in ax.lines if line.get_marker() == "."]
+    assert "texel centres" not in ax.get_xlabel()
     crash = ex.check("classify_block", lambda *a: 1 / 0)
     assert "ZeroDivisionError" in crash.explain_pixel(0, 0)
 

@@ -253,6 +253,11 @@ class Exercise:
         wrong type), with the traceback's last line in the student's code for an exception
         (r248 S1: 8.2's lines for an exception, None or NaN quoted no argument); None: the
         case's label alone.
+    raised_words : callable, optional
+        ``raised_words(args, error) -> str``: words added to a case on which the function
+        raised ``error`` (the report's "your function raised IndexError: ..."), naming the
+        mistake that raises there, or "" (r317: 7.3's level q + 1 at λ = q was told the
+        symptom only); None: the error alone.
     inputs_drawn : bool
         ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
         lines): the untouched stub's figure draws the first case so. False (default): the
@@ -287,6 +292,7 @@ class Exercise:
     inputs_drawn: bool = False
     slow: str | None = None
     call_words: Callable | None = None
+    raised_words: Callable | None = None
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded (the same mistakes on

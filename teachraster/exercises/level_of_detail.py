@@ -107,6 +107,8 @@ _COMBINE = {
     "root": lambda x, y: math.sqrt(x * x + y * y),
     "geometric": lambda x, y: math.sqrt(x * y),
     "mean": lambda x, y: (x + y) / 2,
+    "x only": lambda x, y: x,  # r317: ddy ignored (ddx's axis alone), and the other way round
+    "y only": lambda x, y: y,
 }
 _LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r,
         "plus one": lambda r: math.log2(r) + 1, "floor": lambda r: math.floor(math.log2(r)),
@@ -118,7 +120,7 @@ def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", 
     "coordinate" builds the axes as (∂u/∂x, ∂u/∂y) and (∂v/∂x, ∂v/∂y) (r85 07: unnamed);
     ``combine="area"`` takes ρ = √|det J|, the footprint's area as a square (r301)."""
     h, w = size
-    sx, sy = {"texels": (w, h), "units": (1, 1), "swapped": (h, w)}[scale]
+    sx, sy = {"texels": (w, h), "units": (1, 1), "swapped": (h, w), "W": (w, w), "H": (h, h)}[scale]
     ax = (float(ddx[0]) * sx, float(ddx[1]) * sy)
     ay = (float(ddy[0]) * sx, float(ddy[1]) * sy)
     if pair == "coordinate":
@@ -152,6 +154,11 @@ LEVEL_KNOBS = Knobs(level_with, {
              "lengths", "units"),
         Slip("W and H swapped", lambda a, e, g: f"u runs along the W = {a[2][1]} columns and v "
              f"along the H = {a[2][0]} rows; you scaled u by H and v by W", "swapped"),
+        # r317: one size for both coordinates was told only the rule
+        Slip("v scaled by W", lambda a, e, g: f"you scaled v by W = {a[2][1]} as well as u: "
+             f"v runs along the H = {a[2][0]} rows, so its texels are v times H", "W"),
+        Slip("u scaled by H", lambda a, e, g: f"you scaled u by H = {a[2][0]} as well as v: "
+             f"u runs along the W = {a[2][1]} columns, so its texels are u times W", "H"),
     ],
     "norm": [
         Slip("largest component", "each axis' length is Euclidean, √(a² + b²), not its largest "
@@ -163,6 +170,13 @@ LEVEL_KNOBS = Knobs(level_with, {
     ],
     "combine": [
         Slip("shorter axis", _shorter, "min"),
+        # r317: one derivative alone was told only the rule
+        Slip("ddx alone", "your λ uses ddx alone, the footprint's axis along x: ddy, the axis "
+             "along y, is a footprint axis too, and GL takes the longer of the two (ρ = max), "
+             "so that no direction is undersampled", "x only"),
+        Slip("ddy alone", "your λ uses ddy alone, the footprint's axis along y: ddx, the axis "
+             "along x, is a footprint axis too, and GL takes the longer of the two (ρ = max), "
+             "so that no direction is undersampled", "y only"),
         Slip("sum of the axes", "your λ uses the sum of the derivatives; GL takes the longer of "
              "the two footprint axes", "sum"),
         Slip("summed before the root", "you summed the squares of both axes before the root, "

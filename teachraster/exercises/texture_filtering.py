@@ -72,7 +72,8 @@ ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1), "pl
 
 
 def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=False,
-                   wrap_as=None, clamp=None, transpose=False, flip_u=False, flip_v=False):  # fmt: skip
+                   wrap_as=None, clamp=None, transpose=False, flip_u=False, flip_v=False,
+                   blend="both"):  # fmt: skip
     """A bilinear filter with knobs for the usual mistakes (the defaults are GL's LINEAR).
 
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
@@ -84,10 +85,14 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     wraps with another mode whatever the case says (clamping x and y to the texel centres
     first is the same as ``wrap_as="clamp"``; ``"swapped"``: clamps for "repeat" and tiles for
     "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
-    ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels;
+    ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels (``"mod
+    repeat"``: for "repeat" only), ``"uv, tiled"`` clamps (u, v) for "clamp" and tiles the
+    texels all the same;
     ``transpose`` swaps the texture's rows and columns (its H and W too), ``"index"`` reads
     texel (row, col) as ``texture[col, row]`` with H and W right (IndexError where col ≥ H, as
-    the student's raises); ``flip_u`` takes 1 − u for u, ``flip_v`` 1 − v for v.
+    the student's raises); ``flip_u`` takes 1 − u for u, ``flip_v`` 1 − v for v;
+    ``blend="x only"`` blends along x within the row v lies in (⌊v·H⌋), ``"y only"`` along y
+    within the column u lies in.
     """
     tex = np.asarray(texture, dtype=float)
     if transpose is True:
@@ -96,9 +101,12 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     centre, span = ORIGINS[origin]
     u, v = np.clip(uv, 0.0, 1.0) if clamp == "uv" else np.asarray(uv, dtype=float)
     u, v = (1.0 - u if flip_u else u), (1.0 - v if flip_v else v)
-    if clamp == "mod":  # (u, v) wrapped into [0, 1) first, the texels then clamped
-        u, v = np.mod(u, 1.0), np.mod(v, 1.0)
+    if clamp == "mod" or (clamp == "mod repeat" and wrap == "repeat"):
+        u, v = np.mod(u, 1.0), np.mod(v, 1.0)  # (u, v) wrapped first, the texels clamped
         wrap_as = "clamp"
+    if clamp == "uv, tiled" and wrap == "clamp":  # r317: 'clamp' as (u, v) clamped, tiled
+        u, v = np.clip(u, 0.0, 1.0), np.clip(v, 0.0, 1.0)
+        wrap_as = "repeat"
     x, y = u * (w + span) - centre, v * (h + span) - centre
     x0, y0 = (np.trunc if floor == "trunc" else np.floor)(np.array([x, y]))
     fx, fy = x - x0, y - y0
@@ -124,6 +132,10 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         mode = wrap
     c0, c1 = index(x0, w), index(x0 + 1, w)
     r0, r1 = index(y0, h, rows_tiled), index(y0 + 1, h, rows_tiled)
+    if blend == "x only":  # r317: one row, the one v lies in, blended along x alone
+        r0, fy = index(np.floor(v * h), h), 0.0
+    if blend == "y only":
+        c0, fx = index(np.floor(u * w), w), 0.0
     top = texel(r0, c0) * (1 - fx) + texel(r0, c1) * fx
     bottom = texel(r1, c0) * (1 - fx) + texel(r1, c1) * fx
     return top * (1 - fy) + bottom * fy
@@ -295,6 +307,15 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
              "clamped the texels to the border: with wrap 'repeat' the texels beyond the border "
              "wrap around too (column −1 is column W − 1), so wrap the texel indices, not (u, v)",
              "mod"),
+        # r317: the same for 'repeat' only ('clamp' right) was told only the rule
+        Slip("wrapped (u, v), clamped texels", "you wrapped (u, v) into [0, 1) and then "
+             "clamped the texels to the border: with wrap 'repeat' the texels beyond the border "
+             "wrap around too (column −1 is column W − 1), so wrap the texel indices, not (u, v)",
+             "mod repeat"),
+        Slip("'clamp' tiles the texels", "with wrap 'clamp' you clamped (u, v) to [0, 1] but "
+             "tiled the texel indices: at u = 0 the column left of the first is then the last "
+             "one, column W − 1, and it blends in; 'clamp' clamps the texel indices (column −1 "
+             "is column 0, the border texel), and then (u, v) need no clamping", "uv, tiled"),
     ],
     "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
                        f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
@@ -308,6 +329,15 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     "flip_v": [Slip("v flipped", "you flipped v (1 − v): the texture's row 0 lies at v = 0, "
                     "y = v·H − ½ (GL's first row of texel data is at t = 0), so the filter "
                     "takes v as it comes", True)],
+    # r317: a blend along one axis only, in the row (column) the sample lies in, was told the rule
+    "blend": [Slip("no vertical blend", "you blended along x only, within the one row v lies "
+                   "in: bilinear blends two rows too, the one above the sample and the one below "
+                   "it, each weighted by how close the sample lies to that row's centres",
+                   "x only"),
+              Slip("no horizontal blend", "you blended along y only, within the one column u "
+                   "lies in: bilinear blends two columns too, the one left of the sample and the "
+                   "one right of it, each weighted by how close the sample lies to that "
+                   "column's centres", "y only")],
 })  # fmt: skip
 
 
@@ -472,9 +502,9 @@ def bilinear_exercise(scene) -> Exercise:
 
 
 def draw_texture_case(ax, case, got):
-    """The texture (level 0) in texel units, its texel centres and the point (u·W, v·H); the
-    expected value and yours below (r40 07-3: two bars of one number showed nothing of the
-    filter). Before any answer (``got`` None) the inputs only. The four texels bilinear blends,
+    """The texture (level 0) in texel units, the point (u·W, v·H) and, with the method, the
+    texel centres; the expected value and yours below (r40 07-3: two bars of one number
+    showed nothing of the filter). Before any answer (``got`` None) the inputs only. The four texels bilinear blends,
     each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2 asks for: drawn
     once two different answers have failed, as the words say it (r64 07 D2)."""
     from matplotlib.patches import Rectangle
@@ -492,8 +522,6 @@ def draw_texture_case(ax, case, got):
     shown = shown if shown.ndim == 2 or shown.shape[2] == 3 else shown[..., 0]
     artists = [ax.imshow(shown, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0),
                          interpolation="nearest")]  # fmt: skip
-    cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
-    artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
     px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
     x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
     fx, fy = px - 0.5 - x0, py - 0.5 - y0
@@ -503,6 +531,11 @@ def draw_texture_case(ax, case, got):
         and got is not None
         and (tries.hints_spent("bilinear") or same_value(got, case[2], None))
     )
+    # the texel centres answer 7.2's first question (r317 P1: the stub's figure drew them, the
+    # × on one): drawn with the method only, and on 7.3's figures (7.2 has taught them)
+    if method or levels:
+        cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
+        artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
     for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1)) if method else ():
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
         artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
@@ -522,7 +555,7 @@ def draw_texture_case(ax, case, got):
              f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
     if method:
         where = f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres"
-    text = f"uv = {vec(uv)} (×), {where}; orange dots: texel centres"
+    text = f"uv = {vec(uv)} (×), {where}" + ("; orange dots: texel centres" if levels else "")
     if got is not None:
         expected = np.ravel(case[2])
         yours = "" if np.size(got) != expected.size else f", yours {_value(got, expected)}"
@@ -605,14 +638,15 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     ``clamp`` "weight" clamps the levels but weighs them by the raw λ − ⌊λ⌋, "extrapolate"
     weighs by λ minus the clamped lower level, "index" uses ⌊λ⌋ as a Python index (level −1
     is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone), "round()"
-    (the level Python's round() of the weight picks) or "lower" (⌊λ⌋ alone); ``clamp="q - 1"``
+    (the level Python's round() of the weight picks), "lower" (⌊λ⌋ alone) or "round for
+    floor" (levels round(λ) and round(λ) + 1, weighted by λ − round(λ)); ``clamp="q - 1"``
     clamps λ to [0, q − 1]; ``texels="level 0 size"`` filters every level with level 0's W
     and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
     q = len(pyramid) - 1
     if clamp in ("lambda", "q - 1"):  # "q - 1": r286, the last level taken for q − 1
         lam = min(max(lod, 0.0), q if clamp == "lambda" else max(q - 1, 0))
-        lower = int(np.floor(lam))
+        lower = int(round(lam) if levels == "round for floor" else np.floor(lam))  # r317
         t = lam - lower
     else:
         lower = int(np.floor(lod))
@@ -684,7 +718,17 @@ def _tri_words(text):
         pyramid, uv, lod, wrap = args
         q, lam, d0, d1, t = _split(pyramid, lod)
         near = int(np.clip(round(lod), 0, q))
-        return text.format(d0=d0, d1=d1, t=num(t), near=near, lod=num(lod), q=q)
+        return text.format(
+            d0=d0,
+            d1=d1,
+            t=num(t),
+            near=near,
+            lod=num(lod),
+            q=q,
+            lam=num(lam),
+            off=num(lam - round(lam)),
+            near_up=min(round(lam) + 1, q),
+        )
 
     return words
 
@@ -721,6 +765,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "with Python's round(), which rounds halves to even (round(0.5) = 0, round(2.5) = "
              "2); and trilinear takes no level alone: it blends levels {d0} and {d1}, level "
              "{d1} weighted by λ − ⌊λ⌋ = {t}"), "round()"),
+        # r317: round(λ) for ⌊λ⌋ was told only the rule
+        Slip("round() for floor", _tri_words("you took round(λ) for the lower level: λ = "
+             "{lam} rounds to level {near}, so the weight λ − round(λ) = {off} and the levels "
+             "blended are {near} and {near_up}; trilinear blends levels ⌊λ⌋ = {d0} and {d1}, "
+             "level {d1} weighted by λ − ⌊λ⌋ = {t}"), "round for floor"),
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
         Slip("upper level only", _tri_words("that is level {d1} alone; trilinear blends it with "
@@ -778,6 +827,19 @@ def _trilinear_rule(args, expected, got) -> str:
     return TRILINEAR_RULE
 
 
+def _no_level_above_q(args, error) -> str:
+    """An IndexError where ⌊λ⌋, λ clamped, is the last level q (λ in [q, q + 1), where a
+    missing clamp of λ changes no level): the upper level taken as ⌊λ⌋ + 1 without the
+    "at most q" (r317: told "raised IndexError: list index out of range" only)."""
+    pyramid, _, lod, _ = args
+    q = len(pyramid) - 1
+    if not error.startswith("your function raised IndexError") or not q <= lod < q + 1:
+        return ""
+    return (f": at λ = {num(lod)}, ⌊λ⌋ = {q} is already the last level, q = {q}, and there "
+            f"is no level q + 1 = {q + 1} (pyramid[{q + 1}] is out of range): the upper level "
+            "is ⌊λ⌋ + 1 at most q, so here level q is blended with itself")  # fmt: skip
+
+
 def trilinear_exercise(scene) -> Exercise:
     return Exercise(
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
@@ -785,5 +847,5 @@ def trilinear_exercise(scene) -> Exercise:
         draw=draw_texture_case, scene=scene,
         hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
-        inputs_drawn=True,
+        inputs_drawn=True, raised_words=_no_level_above_q,
     )  # fmt: skip

@@ -150,11 +150,14 @@ def check_exercise(spec: Exercise, fn) -> Report:
 def _without_answer(spec: Exercise, args, outcome) -> str:
     """The words of a case that gave no answer: with the exercise's ``call_words``, the call
     first and, for an exception, the traceback's last line in the student's code (r248 S1)."""
+    error = outcome.error
+    if spec.raised_words is not None and outcome.kind == "raised":
+        error += run_checker(lambda: spec.raised_words(args, outcome.error), "")
     if spec.call_words is None or outcome.kind in STOPS or outcome.error == SKIPPED:
-        return outcome.error
+        return error
     call = run_checker(lambda: spec.call_words(*args), "")
     where = f"; the traceback's last line in your code: {outcome.where}" if outcome.where else ""
-    return f"{call}: {outcome.error}{where}" if call else f"{outcome.error}{where}"
+    return f"{call}: {error}{where}" if call else f"{error}{where}"
 
 
 def _low_precision(results) -> str | None:
