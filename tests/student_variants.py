@@ -2539,6 +2539,11 @@ R315 = {
         lambda c, i, b: CORRECT["resolve"](np.nan_to_num(np.asarray(c, float)) ** (1 / 2.2), i,
                                            np.asarray(b, float) ** (1 / 2.2)) ** 2.2,
         "you raised the samples to 1/2.2 and the mean to 2.2"),
+    "resolve_srgb with the curves as powers of 2.4, swapped": (
+        "resolve_srgb",
+        lambda c, i, b: CORRECT["resolve"](np.nan_to_num(np.asarray(c, float)) ** (1 / 2.4), i,
+                                           np.asarray(b, float) ** (1 / 2.4)) ** 2.4,
+        "you raised the samples to 1/2.4 and the mean to 2.4"),
 }  # fmt: skip
 WRONG.update(R315)
 
