@@ -2617,6 +2617,49 @@ R308 = {
 WRONG.update(R308)
 
 
+# -- r315 06: five half-named (told the rule only) ------------------------------------------
+def _resolve_per_triangle(c, i, b):
+    """Each colour the pixel shows (a triangle's, the background's) one equal weight."""
+    i, c = np.asarray(i), np.asarray(c, dtype=float)
+    shown = [c[i == t][0] for t in sorted(set(i[i >= 0].tolist()))]
+    return np.mean(shown + ([np.asarray(b, float)] if (i < 0).any() else []), axis=0)
+
+
+def _srgb_background_twice(c, i, b):
+    """`bg = srgb_to_linear(background)`, then handed to a step that decodes it again."""
+    light = np.where(
+        np.asarray(i)[:, None] >= 0,
+        _srgb_decode(np.nan_to_num(np.asarray(c, float))),
+        _srgb_decode(_srgb_decode(np.asarray(b, float))),
+    )
+    return _srgb_encode(light.mean(axis=0))
+
+
+R315 = {
+    "coverage 1 if any sample is covered": (
+        "coverage_fraction",
+        lambda xy, pixel, samples: float(_coverage(xy, pixel, samples) > 0),
+        "you returned 1 because a sample is covered"),
+    "resolve, each triangle one equal weight": (
+        "resolve", _resolve_per_triangle, "you gave each colour the pixel shows one equal weight"),
+    "resolve as a max": (
+        "resolve", lambda c, i, b: _with_bg(c, i, b).max(axis=0), "largest value of each channel"),
+    "resolve_srgb with the background decoded twice": (
+        "resolve_srgb", _srgb_background_twice, "you decoded the background twice"),
+    "resolve_srgb with the curves as powers, swapped": (
+        "resolve_srgb",
+        lambda c, i, b: CORRECT["resolve"](np.nan_to_num(np.asarray(c, float)) ** (1 / 2.2), i,
+                                           np.asarray(b, float) ** (1 / 2.2)) ** 2.2,
+        "you raised the samples to 1/2.2 and the mean to 2.2"),
+    "resolve_srgb with the curves as powers of 2.4, swapped": (
+        "resolve_srgb",
+        lambda c, i, b: CORRECT["resolve"](np.nan_to_num(np.asarray(c, float)) ** (1 / 2.4), i,
+                                           np.asarray(b, float) ** (1 / 2.4)) ** 2.4,
+        "you raised the samples to 1/2.4 and the mean to 2.4"),
+}  # fmt: skip
+WRONG.update(R315)
+
+
 # -- r310 04: slips told only the rule, or another mistake's words ------------------------------
 def _passes_from_first_depth(depths, writes):
     """H1: `stored = depths[0]`, the usual start of a running minimum."""

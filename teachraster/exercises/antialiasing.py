@@ -213,6 +213,17 @@ def _snapped_samples_words(args, expected, got) -> str:
     )
 
 
+def _any_sample_words(args, expected, got) -> str:
+    """The pixel taken as covered (1) as soon as one sample is: a single sample's yes or no."""
+    xy, pixel, samples = args
+    k, s = int(covered_samples(snap(xy), sample_points(pixel, samples)).sum()), len(samples)
+    return (
+        f"you returned 1 because a sample is covered (here {k} of the {s}), as a pixel with "
+        "one sample is covered or not: with S samples an edge through the pixel covers a "
+        "share of it; count the samples covered and divide by S"
+    )
+
+
 #: An edge's kind seen from the other end (an edge walked backwards).
 _REVERSED_KIND = {"top": "bottom", "bottom": "top", "left": "right", "right": "left"}
 
@@ -231,7 +242,7 @@ def fraction_with(
         winding = "both"
     inside = covered(v, pts, owns, winding, vertices="exact")
     share = {True: float(inside.sum()), "percent": 100 * float(inside.mean()),
-             "uncovered": 1 - float(inside.mean())}  # fmt: skip
+             "uncovered": 1 - float(inside.mean()), "any": float(inside.any())}  # fmt: skip
     return share.get(count, float(inside.mean()))
 
 
@@ -345,6 +356,8 @@ ALONE_KNOBS = Knobs(fraction_with, {
              "itself, between 0 and 1", "percent"),
         Slip("uncovered share", "that is the share of samples the triangle leaves uncovered "
              "(1 − the fraction); return the covered share", "uncovered"),
+        # r315 HN: told only the rule, whose "like a pixel centre" pointed at another slip
+        Slip("1 if any sample", _any_sample_words, "any"),
     ],
 }, most=1)  # fmt: skip
 TIE_KNOBS = Knobs(
@@ -611,6 +624,28 @@ def uncovered_as_black(colours, ids, background):
     return np.where((np.asarray(ids) >= 0)[:, None], colours, 0.0).mean(axis=0)
 
 
+def _per_triangle(colours, ids, background):
+    """One equal weight for each triangle a sample shows (and for the background, where a
+    sample is uncovered), whatever the share of the samples each has (r315 HN)."""
+    ids = np.asarray(ids)
+    shown = [colours[ids == t][0] for t in np.unique(ids[ids >= 0])]
+    shown += [np.asarray(background, dtype=float)] if (ids < 0).any() else []
+    return np.mean(shown, axis=0)
+
+
+def _per_triangle_words(args, expected, got) -> str:
+    _, ids, _ = args
+    ids = np.asarray(ids)
+    shares = [f"triangle {t} has {int((ids == t).sum())}" for t in np.unique(ids[ids >= 0])]
+    shares += [f"the background {int((ids < 0).sum())}"] if (ids < 0).any() else []
+    return (
+        f": you gave each colour the pixel shows one equal weight ({len(shares)} colours "
+        f"averaged), whatever share of the samples it has (of the {len(ids)}: "
+        f"{', '.join(shares)}): each sample counts the same, so each colour weighs by its "
+        "samples; " + _mean_rule(args)
+    )
+
+
 def _background_if_any_words(args, expected, got) -> str:
     _, ids, _ = args
     s, k = len(ids), int((ids >= 0).sum())
@@ -680,6 +715,12 @@ RESOLVE_MISTAKES = [
             "rightly the background): the resolve is their mean, each sample an equal share "
             "of the pixel"),
             gives=lambda c, i, b: np.median(_with_background(c, i, b), axis=0)),
+    # r315 HN: told only the rule
+    Mistake("equal weight per triangle", _per_triangle_words, gives=_per_triangle),
+    Mistake("maximum", _resolve_words("that is the largest value of each channel over the "
+            "samples (a max, the uncovered ones rightly the background): the resolve is their "
+            "mean, each sample an equal share of the pixel"),
+            gives=lambda c, i, b: _with_background(c, i, b).max(axis=0)),
     Mistake("background if any uncovered", _background_if_any_words,
             gives=lambda c, i, b: np.asarray(b, dtype=float) if (i < 0).any()
             else c.mean(axis=0)),

@@ -4,9 +4,10 @@ Exercise 6.2's resolve averages the numbers it is given. The samples of an 8-bit
 are sRGB-encoded, and encoded numbers are not light: half of a black pixel and half of a white
 one must show the light of 50 % white, which encodes as 0.735, not 0.5. So the resolve
 decodes every sample (and the background) to linear light, averages there, and encodes the
-mean again (GL's ``FRAMEBUFFER_SRGB`` resolve; lesson 08 §6 and lesson 12b). The student
-works out that order; the curves are the package's tools (``tr.srgb_to_linear``,
-``tr.linear_to_srgb``). Cases: exercise 6.2's, read as sRGB-encoded, and black on white at
+mean again (lesson 08 §6 and lesson 12b; Direct3D promises it, D3D11.3 §5.6.6, Vulkan says
+"should", GL does not promise it, GL 4.6 §18.3.1: lesson 08's table of the standards). The
+student works out that order; the curves are the package's tools (``srgb_to_linear``,
+``linear_to_srgb``). Cases: exercise 6.2's, read as sRGB-encoded, and black on white at
 each coverage of 4 samples.
 """
 
@@ -142,6 +143,33 @@ def _background_in_codes(colours, ids, background):
     return (k * covered + (s - k) * np.asarray(background, float)) / s
 
 
+def _twice(x):
+    return srgb_to_linear(srgb_to_linear(x))
+
+
+def _background_twice_words(args, expected, got) -> str:
+    """r315 HN: the background decoded, then decoded again (a decoded value handed to a
+    function that decodes), said with its numbers."""
+    b = np.asarray(args[2], dtype=float)
+    return (
+        f": you decoded the background twice: {vec(b)} encoded is the light "
+        f"{vec(srgb_to_linear(b))}, and decoding that again gives {vec(_twice(b))}, a darker "
+        "background; decode every value once (srgb_to_linear), average, encode the mean once"
+    )
+
+
+def _powers_swapped_words(gamma: float):
+    def words(args, expected, got) -> str:
+        return (
+            f": you raised the samples to 1/{num(gamma)} and the mean to {num(gamma)}: that "
+            "encodes where you should decode (and the other way round), with a plain power for "
+            "sRGB's curve; srgb_to_linear takes the encoded samples to light, linear_to_srgb "
+            "takes the mean back"
+        )
+
+    return words
+
+
 def _black_words(args, expected, got) -> str:
     return (": " + UNCOVERED_AS_BLACK.format(bg=vec(args[2])) + " (np.nan_to_num makes "
             "them 0): put the background in them, decoded like the samples")  # fmt: skip
@@ -187,6 +215,9 @@ MISTAKES = [
             "the mean back", gives=lambda c, i, b: _mix(c, i, b, linear_to_srgb, srgb_to_linear)),
     Mistake("background not decoded", ": the background is sRGB-encoded like the samples: "
             "decode it too before it joins the average", gives=_background_raw),
+    # r315 HN: the two below were told only the rule
+    Mistake("background decoded twice", _background_twice_words,
+            gives=lambda c, i, b: _mix(c, i, b, _decode, _encode, background_decode=_twice)),
     Mistake("covered only", ": you averaged the covered samples only; an uncovered sample "
             "counts as the background", gives=lambda c, i, b: _mix(c, i, b, _decode, _encode,
                                                                    covered_only=True)),
@@ -201,6 +232,10 @@ MISTAKES = [
             "(srgb_to_linear, linear_to_srgb compute it exactly)",
             gives=lambda c, i, b: _mix(c, i, b, lambda x: _power(x, 2.4),
                                        lambda x: _power(x, 1 / 2.4))),
+    *(Mistake("powers swapped", _powers_swapped_words(g),
+              gives=lambda c, i, b, g=g: _mix(c, i, b, lambda x: _power(x, 1 / g),
+                                              lambda x: _power(x, g)))
+      for g in (2.2, 2.4)),
     Mistake("curve without its straight part", ": your sRGB curve has no straight part: up "
             "to code 0.04045 (light 0.0031308) it is the line c / 12.92, not the power "
             "(srgb_to_linear, linear_to_srgb compute it exactly)",
