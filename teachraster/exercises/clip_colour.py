@@ -68,21 +68,14 @@ def as_coloured(value) -> np.ndarray:
 def colour_with(v, colours, t_colour) -> np.ndarray:
     """The right positions, each new vertex's colour from ``t_colour(a, b, t)`` (a, b: the
     edge's (x, y, z, w, r, g, b) rows; t: the right crossing), a slip each."""
-    p = np.column_stack([np.asarray(v, float), np.asarray(colours, float)])
-    out = []
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for i in range(3):
-            a, b = p[i], p[(i + 1) % 3]
-            da, db = a[2] + a[3], b[2] + b[3]
-            if da >= 0:
-                out.append(a)
-            if (da >= 0) != (db >= 0):
-                t = da / (da - db)
-                new = a + t * (b - a)
-                new[4:] = t_colour(a, b, t)
-                out.append(new)
-    poly = np.array(out).reshape(-1, 7)
-    return poly if np.isfinite(poly).all() else None
+
+    def point(a, b, t):
+        new = a + t * (b - a)
+        new[4:] = t_colour(a, b, t)
+        return new
+
+    return clip_with(np.column_stack([np.asarray(v, float), np.asarray(colours, float)]),
+                     point=point)  # fmt: skip
 
 
 def _lerp(a, b, t):

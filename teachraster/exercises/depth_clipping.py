@@ -195,7 +195,7 @@ def as_polygon(value) -> np.ndarray:
 
 def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=None,
               crossings="both", crossing_first=False, component=3,
-              closed=True) -> np.ndarray:  # fmt: skip
+              closed=True, point=None) -> np.ndarray:  # fmt: skip
     """Sutherland-Hodgman of a convex polygon (a triangle, or a polygon already clipped)
     against one plane, with the usual mistakes as knobs.
 
@@ -206,7 +206,9 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
     or of its first one instead of interpolating it; ``crossings`` ("leaving" or "entering")
     adds the new vertex only where an edge leaves the kept side or only where it comes back;
     ``crossing_first`` puts an edge's new vertex before its first vertex; ``closed=False``
-    leaves out the closing edge (v3→v1 of a triangle). None where undefined.
+    leaves out the closing edge (v3→v1 of a triangle); ``point(a, b, t)`` makes the new vertex
+    from the edge and its t (default a + t·(b − a): 4.3's colour, a crossing found in NDC).
+    None where undefined.
     """
     v = np.asarray(v, dtype=float)
     distance = distance or (lambda p: p[2] + p[3])
@@ -220,7 +222,7 @@ def clip_with(v, distance=None, t_from=None, new=True, from_end=False, keep_w=No
             if (da >= 0) != (db >= 0) and new and wanted:
                 t = da / (da - db) if t_from is None else t_from(a, b)
                 t = 1 - t if from_end else t
-                c = a + t * (b - a)
+                c = a + t * (b - a) if point is None else point(a, b, t)
                 if keep_w is not None:
                     c[component] = a[component] if keep_w == "first" or da >= 0 else b[component]
                 kept = [c] + kept if crossing_first else kept + [c]
@@ -448,19 +450,14 @@ def _ndc_crossing(v) -> np.ndarray | None:
     v = np.asarray(v, dtype=float)
     if (v[:, 3] == 0).any():
         return None
-    out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0:
-            out.append(a)
-        if (da >= 0) != (db >= 0):
-            na, nb = a[:3] / a[3], b[:3] / b[3]
-            t = (na[2] + 1) / (na[2] - nb[2])
-            wt = a[3] + t * (b[3] - a[3])
-            out.append(np.r_[(na + t * (nb - na)) * wt, wt])
-    poly = np.array(out).reshape(-1, 4)
-    return poly if np.isfinite(poly).all() else None
+
+    def lifted(a, b, _t):
+        na, nb = a[:3] / a[3], b[:3] / b[3]
+        t = (na[2] + 1) / (na[2] - nb[2])
+        wt = a[3] + t * (b[3] - a[3])
+        return np.r_[(na + t * (nb - na)) * wt, wt]
+
+    return clip_with(v, point=lifted)
 
 
 def _one_too_many(args, expected, got) -> bool:
