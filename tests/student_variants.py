@@ -2859,3 +2859,73 @@ DIFFERENT.update({
         lambda b: [float(v) for v in _rs.broken_frame_3_steps(b)],
     ),
 })  # fmt: skip
+
+
+# -- r319 04: the reader's variants of 4.2's after-the-divide slips (X1, H1: regressed
+# silently, the corpus's own variants differed) and 4.3's column, pairing and w = 0 slips -----
+def _clip_walk(v, test, t):
+    """Sutherland-Hodgman with the inside test ``test(p) >= 0`` and the crossing ``t(a, b)``."""
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        if test(a) >= 0:
+            out.append(a)
+        if (test(a) >= 0) != (test(b) >= 0):
+            out.append(a + t(a, b) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+
+def _clip_t(a, b):
+    return (a[2] + a[3]) / ((a[2] + a[3]) - (b[2] + b[3]))
+
+
+def _clip_divided_first(v):
+    """X1: the vertices divided by w, then clipped by the right code."""
+    v = np.asarray(v, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return _clip_walk(v / v[:, 3:4], lambda p: p[2] + p[3], _clip_t)
+
+
+def _clip_tested_after_divide(v):
+    """H1: `z/w + 1 >= 0` as the inside test, the crossing's t still from z + w."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return _clip_walk(np.asarray(v, dtype=float), lambda p: p[2] / p[3] + 1, _clip_t)
+
+
+def _perspective_at_ndc(ca, cb, wa, wb, za, zb, t):
+    """H5: lesson 04's weights at the fraction where z/w reaches −1 (right where every w > 0)."""
+    s = (za / wa + 1) / (za / wa - zb / wb)
+    return ((1 - s) * ca / wa + s * cb / wb) / ((1 - s) / wa + s / wb)
+
+
+_colour_right = _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ca + t * (cb - ca))
+
+
+def _colour_first(v, colours):
+    p = _colour_right(v, colours)
+    return np.column_stack([p[:, 4:], p[:, :4]])
+
+
+R319 = {
+    "clip with the vertices divided by w first": (
+        "clip_near", _clip_divided_first, "you divided your vertices by w before clipping",
+        "divided by w"),
+    "clip tested as z/w + 1 >= 0": (
+        "clip_near", _clip_tested_after_divide, "you tested after the divide: v3",
+        "after the divide"),
+    "colour columns first": (
+        "clip_near_colour", _colour_first, "your rows are (r, g, b, x, y, z, w)",
+        "colour columns first"),
+    "colours one vertex off": (
+        "clip_near_colour",
+        lambda v, c: _colour_right(v, np.roll(np.asarray(c), 1, axis=0)),
+        "a kept vertex keeps its own colour", "colours on the wrong vertex"),
+    "colours BGR": (
+        "clip_near_colour", lambda v, c: _colour_right(v, np.asarray(c)[:, ::-1]),
+        "your colours are reversed, (b, g, r)", "colours BGR"),
+    "colour perspective-corrected after the divide": (
+        "clip_near_colour", _colour_clip(_perspective_at_ndc), "whose w = 0",
+        "colour perspective-corrected after the divide"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R319.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R319.items()})

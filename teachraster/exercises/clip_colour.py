@@ -93,11 +93,46 @@ def _perspective(a, b, t):
     return _lerp(a / a[3], b / b[3], t) / ((1 - t) / a[3] + t / b[3])
 
 
+def _columns_first(v, colours) -> np.ndarray:
+    """The right rows with the colour first, (r, g, b, x, y, z, w) (r319 X2)."""
+    p = with_colours(v, colours)
+    return np.column_stack([p[:, 4:], p[:, :4]])
+
+
+def _nan_at_w0(args, expected, got) -> bool:
+    """Right positions, and NaN colours only where the case has a vertex with w = 0 (r319 H5:
+    lesson 04's weights at the fraction found after the divide; right wherever every w > 0)."""
+    v, _ = args
+    g = np.asarray(got, float).reshape(-1, 7)
+    if not (np.asarray(v)[:, 3] == 0).any() or np.isfinite(g[:, 4:]).all():
+        return False
+    if g.shape != expected.shape or not np.isfinite(g[:, :4]).all():
+        return False
+    ok = np.isfinite(g).all(axis=1)
+    return all_close(g[:, :4], expected[:, :4], FLOAT32_TOL) and all_close(
+        g[ok], expected[ok], FLOAT32_TOL
+    )
+
+
+def _nan_at_w0_words(args, expected, got) -> str:
+    v, _ = args
+    k = int(np.flatnonzero(np.asarray(v)[:, 3] == 0)[0])
+    return (
+        f"your colour is NaN where an edge ends at v{k + 1} = {vec(v[k])}, whose w = 0: you "
+        "took lesson 04's perspective-correct weights at the fraction of the projected edge. "
+        "Where every w > 0 that is right (those weights turn the fraction on the screen into "
+        "this same t), but a vertex with w = 0 has no projection, so the divide by w fails; in "
+        "clip space nothing is divided: colour_a + t·(colour_b − colour_a), at the position's t"
+    )
+
+
 def explain_colour(args, expected, got) -> str:
     """Positions first (4.2's words); then the first vertex whose colour is wrong."""
     v, _ = args
     g = np.asarray(got, float).reshape(-1, 7)
     if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):
+        if same_polygon(g[:, 3:], expected[:, :4], FLOAT32_TOL):  # r319 X2: colours first
+            return f"your first row is {vec(g[0])}, not {vec(expected[0])}"
         return "your positions are wrong (get 4.2 right first): " + explain_clip(
             (v,), expected[:, :4], g[:, :4]
         )
@@ -148,6 +183,22 @@ COLOUR_MISTAKES = [
             gives=lambda v, c: colour_with(v, c, lambda a, b, t: _lerp(a, b, 1 - t))),
     Mistake("colour halfway", "you gave each new vertex the colour halfway along its edge "
             f"(t = ½): {_WHY}", gives=lambda v, c: colour_with(v, c, lambda a, b, t: _lerp(a, b, 0.5))),
+    # r319: the colour columns first (X2, told "your positions are wrong"); a kept vertex given
+    # another vertex's colour or BGR (H3, H4, told the rule about new vertices); lesson 04's
+    # weights at the fraction after the divide, NaN at w = 0 (H5, told only "holds NaN")
+    Mistake("colour columns first", "your rows are (r, g, b, x, y, z, w), the colour first: "
+            "each row is the position, then its colour, (x, y, z, w, r, g, b)",
+            gives=_columns_first),
+    *(Mistake("colours on the wrong vertex", "your colours sit one vertex off: a kept vertex "
+              "keeps its own colour (row i of `colours` goes with row i of `v`), and a new "
+              "vertex takes its colour between its own edge's two ends",
+              gives=lambda v, c, k=k: with_colours(v, np.roll(np.asarray(c, float), k, axis=0)))
+      for k in (1, -1)),
+    Mistake("colours BGR", "your colours are reversed, (b, g, r): a kept vertex keeps its own "
+            "colour as given, (r, g, b) in the last three columns",
+            gives=lambda v, c: with_colours(v, np.asarray(c, float)[:, ::-1])),
+    Mistake("colour perspective-corrected after the divide", _nan_at_w0_words, fits=_nan_at_w0,
+            only_whole=True),
 ]  # fmt: skip
 
 

@@ -265,7 +265,8 @@ def _divide_words(args, expected, got) -> str:
         return "you tested z/w >= -1 after the divide: test z + w >= 0 in clip space, before dividing by w"  # fmt: skip
     k = flipped[0]
     return (
-        f"you tested after the divide: v{k + 1} = {vec(v[k])} has w = {num(v[k, 3])} < 0: after "
+        f"you tested after the divide: v{k + 1} = {vec(v[k])} has w = {num(v[k, 3])}"
+        f"{' < 0' if v[k, 3] < 0 else ''}: after "
         f"the divide its z/w = {num(v[k, 2] / v[k, 3])} looks "
         f"{'inside' if after[k] else 'outside'}, but z + w = {num(d[k])} says it is "
         f"{'inside' if d[k] >= 0 else 'behind the near plane'}: test z + w >= 0 in clip space, "
@@ -493,6 +494,34 @@ def _divided_polygon(v) -> np.ndarray | None:
     return p / p[:, 3:4]
 
 
+def _clip_t(a, b) -> float:
+    """The right crossing's t, d_a/(d_a − d_b) with d = z + w (for a test made otherwise)."""
+    return (a[2] + a[3]) / ((a[2] + a[3]) - (b[2] + b[3]))
+
+
+def _divided_first(v) -> np.ndarray | None:
+    """The triangle divided by w, then clipped by the right code (r319 X1: told "its t is
+    wrong" about a vertex only divided): w = 1 after the divide, so z + w ≥ 0 is z/w ≥ −1."""
+    v = np.asarray(v, dtype=float)
+    return None if (v[:, 3] == 0).any() else clip_with(v / v[:, 3:4])
+
+
+def _divided_first_words(args, expected, got) -> str:
+    (v,) = args
+    behind = [k for k in range(3) if v[k, 3] < 0]
+    why = (
+        f": v{behind[0] + 1} = {vec(v[behind[0]])} has w = {num(v[behind[0], 3])} < 0, and the "
+        f"divide turns it into {vec(v[behind[0]] / v[behind[0], 3])}, in front of the plane"
+        if behind
+        else ""
+    )
+    return (
+        f"you divided your vertices by w before clipping{why}; clip in clip space, (x, y, z, w) "
+        "as the triangle's vertices are given, and return the polygon there: the divide by w "
+        "comes after clipping"
+    )
+
+
 def _transposed(args, expected, got) -> bool:
     """A square answer (4 vertices) whose columns are the polygon's vertices."""
     g = np.asarray(got, dtype=float)
@@ -508,6 +537,10 @@ def _far_too(v) -> np.ndarray | None:
 CLIP_MISTAKES = [
     Mistake("unclipped", _unclipped_words, gives=lambda v: np.asarray(v, dtype=float)),
     Mistake("after the divide", _divide_words, gives=lambda v: clip_with(v, _divided)),
+    # r319 H1: the test after the divide, the crossing's t still from z + w (told only "keeps
+    # a vertex behind")
+    Mistake("after the divide", _divide_words,
+            gives=lambda v: clip_with(v, _divided, t_from=_clip_t)),
     # r85 04: the hinted words said where the vertex lies twice
     Mistake("t from z only", _words_with_crossing("you took t from z alone, as if the plane "
             "were z = 0", z_alone=True),
@@ -547,6 +580,7 @@ CLIP_MISTAKES = [
     Mistake("divided by w", "you divided your vertices by w: return the clipped polygon in "
             "clip space, (x, y, z, w) as the triangle's vertices are given; the divide by w "
             "comes after clipping", gives=_divided_polygon),
+    Mistake("divided by w", _divided_first_words, gives=_divided_first),
     Mistake("far plane too", "you clipped against the far plane too (w − z ≥ 0): this "
             "exercise clips against the near plane only, z + w ≥ 0, so a vertex beyond the far "
             "plane stays", gives=_far_too),
