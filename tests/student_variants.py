@@ -1751,7 +1751,8 @@ WRONG = {
     "frame 3, the stored depth for the intended one": (
         "broken_frame_3",
         lambda b: ("z-fighting", (13, 52), 0.6),
-        "0.6 is the value in the other frame of the pair (the broken frame's history",
+        # r318: 0.6 is the wall's depth in the intended frame too: the surface is named first
+        "0.6 is the depth of another surface: triangle 0's in the intended frame's history",
     ),  # fmt: skip
     # r9 (exercises-09-11-r9.md §11): the right sliver at a pixel it does not cross was told
     # "the cause is another"; (col, row) and the sliver's pair swapped were half-named; a
@@ -1916,7 +1917,7 @@ KINDS = {
     "frame 1 blamed on z-fighting": "cause",
     "frame 2 blamed on the depth function, its evidence read right": "cause",
     "frame 4, a pixel the mistake left alone": "pixel",
-    "frame 3, the stored depth for the intended one": "the other frame's value",
+    "frame 3, the stored depth for the intended one": "another surface's depth",
     "frame 6, the sliver at a pixel it does not cross": "pixel without the mark",
     "frame 1, (col, row) for (row, col)": "evidence",
     "frame 6, the sliver's two numbers swapped": "evidence",
@@ -2807,7 +2808,13 @@ R309 = {
         "broken_frame_3",
         lambda b: ("z-fighting", (13, 52),
                    next(r.depth for r in _records(b, 13, 52) if r.outcome == "hi_z")),
-        f"{OTHER_FRAME} (the broken frame's history", "the other frame's value"),
+        "and the tied fragment's in the broken frame's history", "another surface's depth"),
+    # r318: the wall's depth read off the intended frame (the stored depth the pane ties with)
+    "frame 3, the wall's depth in the intended frame": (
+        "broken_frame_3",
+        lambda b: ("z-fighting", (13, 52),
+                   next(r.depth for r in _records(b, 13, 52, True) if r.color[3] == 1)),
+        "is the depth of another surface: triangle 0's", "another surface's depth"),
     "frame 4, the intended frame's fragment colour": (
         "broken_frame_4",
         lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52, True).color[:3]),
@@ -2841,9 +2848,20 @@ R309 = {
         "broken_frame_3_steps",
         _steps_with(2**16 - 1, apart=lambda w, p: (round(w, 6) - round(p, 6)) * (2**16 - 1)),
         "not a whole number of steps", "steps not whole"),
+    # r318: the steps apart typed in (66 in every redraw then); the printed depths rounded up
+    "frame 3 steps apart typed in": (
+        "broken_frame_3_steps",
+        lambda b: (_steps_with(2**16 - 1)(b)[0], _steps_with(2**16 - 1)(b)[0] - 66, 66),
+        "66 steps apart is frame 3's as shown", "apart typed in"),
+    "frame 3 printed depths scaled, rounded up": (
+        "broken_frame_3_steps",
+        lambda b: (*(math.ceil(round(d, 6) * 65535) for d in _wall_and_pane(b)),
+                   np.subtract(*(math.ceil(round(d, 6) * 65535) for d in _wall_and_pane(b)))),
+        "the buffer rounds to the nearest step", "rounded up or down"),
     "frame 3 steps typed in": (
+        # r318: failing both redrawn frames alike, it is told as a constant, in these words
         "broken_frame_3_steps", lambda b: (39321, 39255, 66), "those are frame 3's numbers as "
-        "shown", "typed in"),
+        "shown", "constant"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R309.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R309.items()})

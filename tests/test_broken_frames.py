@@ -17,6 +17,7 @@ import reasoning_solutions as sol
 
 import teachraster as tr
 from teachraster import exercises as ex
+from teachraster.exercises import broken_frame_steps as bfs
 from teachraster.exercises import broken_frames as bf
 
 #: The key, for the tests only (the package keeps salted hashes).
@@ -1756,11 +1757,17 @@ def test_r309_the_text_says_four_decimals_and_asks_frame_3_in_the_buffers_steps(
         "broken_frame_3_steps_check",
     ]
     task = " ".join(cells["frame_3_steps_task"].split()).lower()
-    for telling in ("unorm", "z-fight", "tie", "16-bit", "precision"):
+    # r318 C2: neither heading nor text names the depth format or lesson 05b before 11.3
+    for telling in ("unorm", "z-fight", "tie", "16-bit", "precision", "buffer", "05b", "format"):
         assert telling not in task, telling
     assert "unorm16" not in cells["broken_frame_3_steps_solution"].split("### BEGIN")[0]
     wall, pane, apart = sol.broken_frame_3_steps(ex.broken_frame(3))
     assert f"drawn {apart} steps nearer" in cells["broken_frame_3_steps_solution"]
     note = ex.frame_note(3, ex.check("broken_frame_3", sol.diagnosis(3)))
-    assert "11.3b asks:" in note and "round(d · (2¹⁶ − 1))" in note, note
+    # r318 M1: the formula is the check's hint, not the question's; C1: the glass writes no
+    # depth, so the pane's number is what it is compared as
+    assert "11.3b asks:" in note and "round(" not in note and "compared as" in note, note
     assert "11.3b" not in ex.frame_note(3, None)
+    # r318: the redrawn frames' panes lie other distances from the wall (66 typed in passed)
+    cases = bfs.BROKEN_FRAME_3_STEPS.cases()
+    assert [c[2][2] for c in cases] == [apart, 41, 97], cases

@@ -2,24 +2,32 @@
 
 Frame 3 of :mod:`.broken_frames` loses its pane to a tie in a 16-bit depth buffer. Review r309
 M3: its evidence, the intended pane's depth, is copied off a history and needs none of lesson
-05b's reasoning. This task asks for it: the whole numbers the unorm16 buffer holds for the wall
-and for the intended pane at a pixel of the pane, and how many steps apart they are, derived
-from the depths the intended frame's history prints and the format its first line names (a
-unorm depth d is stored as round(d · (2¹⁶ − 1)), GL 4.6 §2.3.5; lesson 05b). The frame pair is
-the frame shown, then frame 3 redrawn with another wall (:data:`.broken_frames._REDRAWN`), so
-numbers typed in fail. Typical mistakes named: steps of 1/2¹⁶ in place of 1/(2¹⁶ − 1), the
-depths or their difference given for steps, a difference of the printed (rounded) depths
-scaled but not rounded to a whole number of steps. (Truncation is no mistake here: the
-depths stored are whole steps, k/65535, whose product with 65535 is k in float64 and in the
-printed six decimals, for every look.)
+05b's reasoning. This task asks for it: the whole number the unorm16 buffer stores the wall's
+depth as, the one the intended pane's depth is compared as (the glass writes no depth, r318
+C1), and how many steps apart they are, derived from the depths the intended frame's history
+prints and the format its first line names (a unorm depth d is stored as round(d · (2¹⁶ − 1)),
+GL 4.6 §2.3.5; lesson 05b; said as a hint until two answers failed, r318 M1). The frame pair
+is the frame shown, then frame 3 redrawn twice with another wall and its intended pane
+another distance from the wall (:func:`.broken_frames._frame_3_apart`: r318, 66 steps in
+every look, so 66 typed in passed). Typical mistakes named: steps of 1/2¹⁶ in place of
+1/(2¹⁶ − 1), the depths or their difference given for steps, a difference of the printed
+(rounded) depths scaled but not rounded to a whole number of steps, the printed depths scaled
+and rounded up or down, the frame shown's steps apart typed in. (Rounding up or down the
+depths themselves is no mistake here and cannot be told apart: the renderer compares each
+fragment's depth as the buffer would store it, rounded to the nearest step, np.rint in
+:func:`~teachraster.pipeline.visibility.depth.quantize`, so every depth a history holds is a
+whole step k/65535, whose product with 65535 is k in float64.)
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .answers import refuse_non_answers, short
-from .broken_frames import _redrawn, broken_frame
+from .broken_frames import _frame_3_apart, broken_frame
+from .diagnosis import constant_words
 from .exercise import Exercise, Mistake
 from .running import WrongAnswerType
 
@@ -29,8 +37,12 @@ STEPS = 2**16 - 1
 #: depths: the pane lies parallel to the wall).
 PIXEL = (13, 52)
 #: What the answer is, as the notebook's task and every wrong answer's words say it.
-WHAT = ("(wall, pane, apart): the whole numbers the 16-bit buffer holds for the wall and for "
-        "the intended pane at a pixel of the pane, and how many steps apart they are")  # fmt: skip
+WHAT = ("(wall, pane, apart): the whole number the 16-bit buffer stores the wall's depth as, "
+        "the one the intended pane's depth is compared as, at a pixel of the pane, and how "
+        "many steps apart they are")  # fmt: skip
+#: How far (in steps) the redrawn frames' intended panes lie nearer than the wall: not 66 (the
+#: frame shown's), and not whole steps (the pane's depth is compared as the nearest step).
+APART = (41.3, 97.4)
 
 
 def _depths(b) -> tuple[float, float]:
@@ -55,10 +67,11 @@ def _printed(b) -> tuple[float, float]:
 
 
 def _cases():
-    """The frame shown and frame 3 redrawn with another wall (other depths, other steps)."""
-    shown, redrawn = broken_frame(3), _redrawn(3)
-    return [("the frame shown", (shown,), _stored(shown)),
-            ("the frame redrawn", (redrawn,), _stored(redrawn))]  # fmt: skip
+    """The frame shown and frame 3 redrawn twice, with another wall and its intended pane
+    another distance from the wall (other depths, other steps apart)."""
+    frames = [broken_frame(3), *(_frame_3_apart(steps) for steps in APART)]
+    names = ("the frame shown", "the frame redrawn", "the frame redrawn again")
+    return [(name, (b,), _stored(b)) for name, b in zip(names, frames, strict=True)]
 
 
 def as_steps(value) -> tuple[float, float, float]:
@@ -90,11 +103,13 @@ def _explain(args, expected, got) -> str:
     )
 
 
+#: The rule, said once two answers have failed (r318 M1: the question gave it, and the task
+#: was a transcription); until then, :data:`HINTS`' words.
+RULE = ": a unorm16 buffer stores a depth d as the whole number round(d · (2¹⁶ − 1))"
+
+
 def _rule(args, expected, got) -> str:
-    return (
-        ": a unorm16 buffer holds the whole number round(d · (2¹⁶ − 1)) for a depth d "
-        "(lesson 05b); the steps apart are the difference of the two whole numbers"
-    )
+    return f"{RULE} (lesson 05b); the steps apart are the difference of the two whole numbers"
 
 
 def _copied(args, expected, got) -> bool:
@@ -103,10 +118,47 @@ def _copied(args, expected, got) -> bool:
     return b is not broken_frame(3) and tuple(got) == _stored(broken_frame(3))
 
 
+def _apart_copied(args, expected, got) -> bool:
+    """The frame shown's steps apart, given for a redrawn frame whose pane lies elsewhere."""
+    (b,) = args
+    shown = _stored(broken_frame(3))[2]
+    return b is not broken_frame(3) and got[2] == shown != expected[2]
+
+
+def _printed_rounded(b, rounding) -> tuple[float, float]:
+    """The printed (six-decimal) depths times 65535, rounded by ``rounding``."""
+    return tuple(float(rounding(d * STEPS)) for d in _printed(b))
+
+
+def _rounded_off(args, expected, got) -> bool:
+    """The printed depths scaled, then rounded up or down (not to the nearest step)."""
+    (b,) = args
+    return tuple(got[:2]) != tuple(expected[:2]) and any(
+        tuple(got[:2]) == _printed_rounded(b, f) for f in (math.ceil, math.floor)
+    )
+
+
+#: What the frame shown's numbers, typed in, are told.
+TYPED = (": those are frame 3's numbers as shown; this is frame 3 redrawn with another wall "
+         "and its pane another distance from it, so read the depths off "
+         "b.intended.history(row, col) inside your function")  # fmt: skip
+
+
+def _constant(value) -> str:
+    """The frame shown's numbers typed in fail both redrawn frames, a constant answer: said as
+    the typed-in mistake (r318: three cases now), other constants as every check says them."""
+    try:
+        typed = tuple(float(v) for v in value) == _stored(broken_frame(3))
+    except (TypeError, ValueError):
+        typed = False
+    return TYPED.removeprefix(": ") if typed else constant_words(value)
+
+
 MISTAKES = [
-    Mistake("typed in", ": those are frame 3's numbers as shown; this is frame 3 redrawn with "
-            "another wall, so read the depths off b.intended.history(row, col) inside your "
-            "function", fits=lambda a, e, g: _copied(a, e, g)),
+    Mistake("typed in", TYPED, fits=lambda a, e, g: _copied(a, e, g)),
+    Mistake("apart typed in", lambda a, e, g: f": {g[2]:g} steps apart is frame 3's as "
+            "shown; this frame's intended pane is drawn another distance from the wall: count "
+            "the steps from the depths its history prints", fits=_apart_copied),
     Mistake("2^16 steps", ": you scaled by 2¹⁶ = 65536; a unorm16 buffer has 2¹⁶ − 1 = 65535 "
             "steps from 0 to 1 (so that 1 is stored exactly): round(d · 65535)",
             gives=lambda b: _stored(b, 2**16)),
@@ -121,7 +173,16 @@ MISTAKES = [
             "to six decimals; subtract the two whole numbers the buffer holds",
             fits=lambda a, e, g: g[:2] == e[:2] and not float(g[2]).is_integer()
             and abs(g[2] - e[2]) < 0.5),
+    Mistake("rounded up or down", ": the printed depths are rounded to six decimals, so "
+            "d · 65535 lies a little off the whole step; rounding it up or down (ceil, "
+            "floor, int) can miss that step: the buffer rounds to the nearest step",
+            fits=_rounded_off),
 ]  # fmt: skip
+
+#: The rule's formula, said as a hint until two different answers have failed (r318 M1).
+HINTS = ((RULE, ": a unorm16 buffer stores a depth as a whole number of steps from 0 to 1 "
+          "(how many steps, and how is d turned into one?)"),
+         ("round(d · 65535)", "a whole number of steps"),)  # fmt: skip
 
 
 def _near(got, values) -> bool:
@@ -153,5 +214,5 @@ def _draw(ax, case, got):
 #: The exercise, for the registry.
 BROKEN_FRAME_3_STEPS = Exercise(
     "broken_frame_3_steps", _cases, as_steps, _same, _explain, _rule, MISTAKES, draw=_draw,
-    reference=("teachraster.exercises.broken_frames",),
+    reference=("teachraster.exercises.broken_frames",), hints=HINTS, constant=_constant,
 )  # fmt: skip

@@ -46,7 +46,8 @@ the two frames agree; the frame's cause at a changed pixel that does not show it
 (:data:`_SIGNS`; the sliver's: the thin triangle passes through the pixel); a cause that is
 not the frame's (the value is then not judged: r18-2); a triangle's number read off the
 intended frame's history (r84 11-2: the cube's redrawn pair numbers its two frames apart); the
-frame shown's value given for the redrawn frame; the evidence's value read off the other frame
+frame shown's value given for the redrawn frame; another surface's depth in the evidence's own
+history (z-fighting: the wall's, r318); the evidence's value read off the other frame
 of the pair (r309: the intended frame's, or the broken frame's where the list asks the
 intended frame's); a value that is not the evidence there (and a row and column, or the
 sliver's two numbers, swapped: said first).
@@ -486,6 +487,17 @@ def _redrawn(number: int, look: _Look | None = None) -> BrokenFrame:
     return _drawn(number, look or _REDRAWN[secrets.randbelow(len(_REDRAWN))])
 
 
+def _frame_3_apart(steps: float, look: _Look | None = None) -> BrokenFrame:
+    """Frame 3 (the same tie) redrawn with ``look`` (one of :data:`_REDRAWN` at random) and
+    its intended pane ``steps`` of the 16-bit buffer nearer than the wall, for 11.3b (r318:
+    in every look the pane was 66 steps nearer, so 66 typed in passed). Frame 3's check
+    keeps :func:`_redrawn`."""
+    symptom, broken, _ = _SPECS[2]
+    look = look or _REDRAWN[secrets.randbelow(len(_REDRAWN))]
+    intended = _pixels([_wall(look), _pane(look, steps / 65535)])
+    return BrokenFrame(3, symptom, _handed_out(broken(look)), _handed_out(intended))
+
+
 def frames_to_inspect() -> dict[str, Frame]:
     """Every frame of the exercise for ``FrameInspector(frames=...)``: "frame n" and
     "intended n" side by side in the list, so that a pixel's two histories can be compared
@@ -528,12 +540,13 @@ def frame_marks() -> dict:
 
 #: Frame 3's follow-up (11.3b, :mod:`.broken_frame_steps`), printed in frame 3's note.
 _STEPS_QUESTION = (
-    "the histories' first line says unorm16, a buffer that holds a depth d as the whole\n"
-    "number round(d · (2¹⁶ − 1)) (lesson 05b). At a pixel of the pane, which whole numbers\n"
-    "does it hold for the wall and for the pane in the intended frame, and how many steps\n"
-    "apart are they? broken_frame_3_steps(b) returns (wall, pane, apart), worked out from\n"
-    "the depths the intended frame's history prints (frame 3's pane is drawn nearer than the\n"
-    "wall too, by less than half a step: its depth rounds to the wall's whole number)."
+    "the histories' first line names the depth format, unorm16\n"
+    "(lesson 05b). At a pixel of the pane, which whole number does the buffer store the wall's\n"
+    "depth as, which whole number is the intended pane's depth compared as (the glass writes no\n"
+    "depth: the buffer keeps the wall's), and how many steps apart are they?\n"
+    "broken_frame_3_steps(b) returns (wall, pane, apart), worked out from the depths the\n"
+    "intended frame's history prints (frame 3's pane is drawn nearer than the wall too, by less\n"
+    "than half a step)."
 )
 
 #: A note on each frame (how it was made, and how its mistake usually shows), told once its
@@ -903,7 +916,8 @@ def _judged(number, got) -> tuple[str, _Pixel | None]:
     function), "right", "pixel" (the frames agree there), "unmarked" (the frame's cause, at a
     changed pixel that does not show it), "cause", "intended" (the evidence triangle's number
     in the intended frame's history, not this frame's), "copied" (the frame shown's value,
-    given for the redrawn one), "other" (the evidence's value read off the other frame of the
+    given for the redrawn one), "surface" (another surface's depth, :func:`_other_surface`),
+    "other" (the evidence's value read off the other frame of the
     pair, :func:`_mirrored`) or "evidence"."""
     if getattr(number, "nested", False):
         return "nested", None
@@ -932,11 +946,27 @@ def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
         broken_frame(b.number), cause, row, col, value
     ):
         return "copied", p
+    # r318: the wall's depth for frame 3's pane is the wrong surface in the same history
+    # (0.6 is also the depth the broken frame stores): said before "the other frame's"
+    if _other_surface(cause, p, value):
+        return "surface", p
     # after "copied": a value typed in from the frame shown may be, by chance, the redrawn
     # pair's other frame's (frame 7's 0.4, a redrawn strip's depth)
     if _matches(kind, value, _mirrored(b, cause, p)[1]):
         return "other", p
     return "evidence", p
+
+
+def _other_surface(cause: str, p: _Pixel, value):
+    """For z-fighting, the record of another surface in the intended frame's history (the one
+    the evidence is read from) whose depth ``value`` is (r318: the wall's, the stored depth the
+    pane ties with, was told "the value in the other frame"); None otherwise."""
+    if cause != "z-fighting":
+        return None
+    # a tie stores the wall's depth: the broken frame's tied value is the wall's too, and the
+    # surface is named first (the evidence itself is judged "right" before this is asked)
+    return next((r for r in p.meant.records
+                 if r.depth is not None and _matches("depth", value, [r.depth])), None)  # fmt: skip
 
 
 def _meant_numbers(b: BrokenFrame, cause: str, p: _Pixel) -> set:
@@ -1184,6 +1214,23 @@ def _other_frame_words(args, number, got) -> str:
     )
 
 
+def _surface_words(args, number, got) -> str:
+    """The depth of another surface in the intended frame's history (:func:`_other_surface`)."""
+    cause, (row, col), value = got
+    b = _as_frame(number)
+    p = _pixel(b, row, col)
+    r = _other_surface(cause, p, value)
+    # the tied fragment's depth in the broken frame is the same number (r309's slip)
+    also = _matches("depth", value, _mirrored(b, cause, p)[1])
+    return (
+        f"your value {_shown(cause, value)} is the depth of another surface: triangle "
+        f"{r.triangle}'s in the intended frame's history of ({row}, {col}), the depth the "
+        "buffer holds there"
+        + (", and the tied fragment's in the broken frame's history" if also else "")
+        + f": the list asks for {EVIDENCE[cause][1]}"
+    )
+
+
 def _other_look(number: int) -> str:
     """What the redrawn frame ``number`` changes (:class:`_Look`), in words: the cube has no
     wall or strip (r21 D6)."""
@@ -1250,6 +1297,7 @@ DIAGNOSIS_MISTAKES = (
     Mistake("cause", _cause_words, fits=_verdict("cause")),
     Mistake("the intended frame's number", _meant_words, fits=_verdict("intended")),
     Mistake("typed in", _copied_words, fits=_verdict("copied")),
+    Mistake("another surface's depth", _surface_words, fits=_verdict("surface")),
     Mistake("the other frame's value", _other_frame_words, fits=_verdict("other")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
 )
