@@ -1353,7 +1353,7 @@ def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns)
     worst = e["history, not reprojected, clamped"]
     assert worst == max(v for k, v in e.items() if k.startswith("history"))
     assert (f"the trail falls as far ({alone['behind']}, all behind) and nothing blurs ahead, "
-            f"yet of the four histories it errs most ({worst:.3f}): the clamp hides a missing "
+            f"yet of the histories it errs most ({worst:.3f}): the clamp hides a missing "
             "reprojection") in words  # fmt: skip
     # S4
     assert ("keeps the centre, where MSAA's own value already lies inside the triangle") in words
@@ -1390,7 +1390,7 @@ def test_lesson_08_review_r313_ghosts_outlined_circles_floor_rms_and_maintenance
     cells = {c["id"]: "".join(c["source"]) for c in json.loads(path.read_text())["cells"]}
     assert "ghost_masks(image[None], crawl_16[last][None], MOTION)" in cells["30cda8d6"]
     words = " ".join(cells["836112a2"].split())
-    assert "outlines each history's ghost pixels in its last frame: orange behind" in words
+    assert "Moving (ghosts outlined), a history not reprojected trails" in words
     assert '"o", ms=8,' in cells["7dcf3ede"] and "ms=5" not in cells["7dcf3ede"]
     far = ns.floor_crop
     floor_rows = np.flatnonzero(ns.on_floor.any(axis=(1, 2, 3)))

@@ -8,7 +8,7 @@ C1), and how many steps apart they are, derived from the depths the intended fra
 prints and the format its first line names (a unorm depth d is stored as round(d · (2¹⁶ − 1)),
 GL 4.6 §2.3.5; lesson 05b; said as a hint until two answers failed, r318 M1). The frame pair
 is the frame shown, then frame 3 redrawn twice with another wall and its intended pane
-another distance from the wall (:func:`.broken_frames._frame_3_apart`: r318, 66 steps in
+another distance from the wall (:func:`.broken_frames.frame_3_apart`: r318, 66 steps in
 every look, so 66 typed in passed). Typical mistakes named: steps of 1/2¹⁶ in place of
 1/(2¹⁶ − 1), the depths or their difference given for steps, a difference of the printed
 (rounded) depths scaled but not rounded to a whole number of steps, the printed depths scaled
@@ -26,7 +26,7 @@ import math
 import numpy as np
 
 from .answers import refuse_non_answers, short
-from .broken_frames import _frame_3_apart, broken_frame
+from .broken_frames import broken_frame, frame_3_apart
 from .diagnosis import constant_words
 from .exercise import Exercise, Mistake
 from .running import WrongAnswerType
@@ -69,7 +69,7 @@ def _printed(b) -> tuple[float, float]:
 def _cases():
     """The frame shown and frame 3 redrawn twice, with another wall and its intended pane
     another distance from the wall (other depths, other steps apart)."""
-    frames = [broken_frame(3), *(_frame_3_apart(steps) for steps in APART)]
+    frames = [broken_frame(3), *(frame_3_apart(steps) for steps in APART)]
     names = ("the frame shown", "the frame redrawn", "the frame redrawn again")
     return [(name, (b,), _stored(b)) for name, b in zip(names, frames, strict=True)]
 

@@ -487,7 +487,7 @@ def _redrawn(number: int, look: _Look | None = None) -> BrokenFrame:
     return _drawn(number, look or _REDRAWN[secrets.randbelow(len(_REDRAWN))])
 
 
-def _frame_3_apart(steps: float, look: _Look | None = None) -> BrokenFrame:
+def frame_3_apart(steps: float, look: _Look | None = None) -> BrokenFrame:
     """Frame 3 (the same tie) redrawn with ``look`` (one of :data:`_REDRAWN` at random) and
     its intended pane ``steps`` of the 16-bit buffer nearer than the wall, for 11.3b (r318:
     in every look the pane was 66 steps nearer, so 66 typed in passed). Frame 3's check

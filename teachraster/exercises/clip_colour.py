@@ -22,11 +22,11 @@ from .answers import MAX_VERTICES, as_numbers, short
 from .cases import SEED
 from .depth_clipping import (
     FLOAT32_TOL,
-    _clip_rule,
-    _divided,
     clip_cases,
+    clip_rule,
     clip_with,
     explain_clip,
+    ndc_z,
     near_only,
 )
 from .exercise import Exercise, Mistake, PackageAnswer
@@ -84,7 +84,7 @@ def _lerp(a, b, t):
 
 def _after_divide(a, b, t):
     """The colour at the t where z/w reaches −1 along the edge."""
-    s = _divided(a) / (_divided(a) - _divided(b))
+    s = ndc_z(a) / (ndc_z(a) - ndc_z(b))
     return _lerp(a, b, s)
 
 
@@ -150,7 +150,7 @@ def explain_colour(args, expected, got) -> str:
 def _rule(args, expected, got) -> str:
     g = np.asarray(got, float).reshape(-1, 7)
     if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):  # 4.2's rule, not a colour's
-        return _clip_rule((args[0],), expected[:, :4], g[:, :4])
+        return clip_rule((args[0],), expected[:, :4], g[:, :4])
     return (
         ". A new vertex's colour is interpolated as its position is: at the same t, "
         "colour_a + t·(colour_b − colour_a), in clip space"

@@ -42,7 +42,7 @@ from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .near_plane import HALF_STEP
 from .package_answers import CHECKER_WORDS
-from .reverse_z import _same_answer
+from .reverse_z import gives_same_gap
 from .scalars import num
 
 #: (z, tilt in degrees, pixel, near, far, bits, reverse) of the fixed cases: a wall facing
@@ -168,7 +168,7 @@ def same_offset(got, expected, args=None) -> bool:
     """Right sign, and |o| between :func:`bounds` (NaN where no offset fits); without
     ``args``, within 1e-6 of it."""
     if args is None:
-        return _same_answer(got, expected, None)
+        return gives_same_gap(got, expected, None)
     if impossible(args):
         return bool(np.isnan(got))
     if not np.isfinite(got) or (got > 0) != bool(args[6]) or got == 0:
@@ -350,13 +350,15 @@ def draw_offset(ax, case, got):
     ax.set_xlim(left, right)
     ax.set_yticks([])
     ax.set_xlabel(f"|offset| − m, in steps of the {args[5]}-bit buffer (1/(2^{args[5]} − 1))")
-    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    # under the axes, not beside them: its labels are long, and beside a notebook column's
+    # figure they made it 1,040 px wide (the column holds 940)
+    artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.3)))
     return artists
 
 
 DECAL_BIAS = Exercise(
     "decal_bias", bias_cases, as_number, same_offset, explain_offset, _rule,
-    variant_mistakes(_variants, MISTAKES, (ZERO,)), draw=draw_offset, match=_same_answer,
+    variant_mistakes(_variants, MISTAKES, (ZERO,)), draw=draw_offset, match=gives_same_gap,
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),
     hints=HINTS,

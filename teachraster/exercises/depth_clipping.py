@@ -482,7 +482,7 @@ def _one_too_many_words(args, expected, got) -> str:
     )
 
 
-def _divided(a) -> float:
+def ndc_z(a) -> float:
     return a[2] / a[3] + 1
 
 
@@ -536,18 +536,18 @@ def _far_too(v) -> np.ndarray | None:
 
 CLIP_MISTAKES = [
     Mistake("unclipped", _unclipped_words, gives=lambda v: np.asarray(v, dtype=float)),
-    Mistake("after the divide", _divide_words, gives=lambda v: clip_with(v, _divided)),
+    Mistake("after the divide", _divide_words, gives=lambda v: clip_with(v, ndc_z)),
     # r319 H1: the test after the divide, the crossing's t still from z + w (told only "keeps
     # a vertex behind")
     Mistake("after the divide", _divide_words,
-            gives=lambda v: clip_with(v, _divided, t_from=_clip_t)),
+            gives=lambda v: clip_with(v, ndc_z, t_from=_clip_t)),
     # r85 04: the hinted words said where the vertex lies twice
     Mistake("t from z only", _words_with_crossing("you took t from z alone, as if the plane "
             "were z = 0", z_alone=True),
             gives=lambda v: clip_with(v, t_from=lambda a, b: a[2] / (a[2] - b[2]))),
     Mistake("t from the divide", _words_with_crossing("you took t from z/w after the divide; "
             "the new vertex is interpolated in clip space, at t = d1/(d1 − d2) with d = z + w"),
-            gives=lambda v: clip_with(v, t_from=lambda a, b: _divided(a) / (_divided(a) - _divided(b)))),
+            gives=lambda v: clip_with(v, t_from=lambda a, b: ndc_z(a) / (ndc_z(a) - ndc_z(b)))),
     Mistake("t from the other end", _words_with_crossing("you measured t from the other end "
             "of the edge: the new vertex is a + t·(b − a) with t = d_a/(d_a − d_b)"),
             gives=lambda v: clip_with(v, from_end=True)),
@@ -684,7 +684,7 @@ def _without_repeats(p: np.ndarray) -> np.ndarray:
     return p[keep]
 
 
-def _clip_rule(args, expected, got) -> str:
+def clip_rule(args, expected, got) -> str:
     return (
         f": {_crossing(args[0], z_alone=False)}. Interpolate the new vertices in clip space, "
         "before the divide, "
@@ -718,7 +718,7 @@ def _draw_clip(ax, case, got):
 
 CLIP_NEAR = Exercise(
     "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e, FLOAT32_TOL), explain_clip,
-    _clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
+    clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
     answers=(PackageAnswer(clip_polygon),), draw=_draw_clip, hints=_CLIP_HINTS,
     constant=_constant_polygon,
     match=lambda got, answer, args: same_polygon(np.asarray(got, float).reshape(-1, 4), answer, 1e-6),

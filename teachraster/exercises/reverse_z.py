@@ -222,7 +222,7 @@ def _rule(args, expected, got) -> str:
             "[2^e, 2^(e+1)): 2^(e−23)) divided by |dd/dz| = n/((1 − n/f) z²)")  # fmt: skip
 
 
-def _same_answer(got, answer, args) -> bool:
+def gives_same_gap(got, answer, args) -> bool:
     """A mistake gives the student's answer: within 1e-6 relative (Δz is often 1e-8 or
     less, where the default's absolute tolerance near zero would take any tiny number)."""
     if answer is None or not np.isfinite(answer) or not np.isfinite(got):
@@ -316,7 +316,7 @@ def _zoom(ax, args, band, expected, got) -> list:
 
 REVERSE_Z_GAP = Exercise(
     "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
-    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=_same_answer,
+    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
     # float32's rounding is relative to Δz itself (1e-8 and less), not to 1
     float32=lambda args: expected_gap(*args),
     answers=(
