@@ -496,6 +496,12 @@ def as_colour(value) -> np.ndarray:
     return as_numbers(value, (3,), "one colour of 3 channels (R, G, B)")
 
 
+def _sample_counts(ids) -> tuple[int, int]:
+    """A pixel's samples and how many of them are covered (id >= 0), as every resolve
+    explanation counts them."""
+    return len(ids), int((np.asarray(ids) >= 0).sum())
+
+
 def same_colour(got, expected, args) -> bool:
     """Within 1e-6: a colour computed in float32 (an image from imread) is right."""
     return all_close(got, expected, 1e-6)
@@ -503,7 +509,7 @@ def same_colour(got, expected, args) -> bool:
 
 def explain_resolve(args, expected, got) -> str:
     colours, ids, background = args
-    s, k = len(ids), int((ids >= 0).sum())
+    s, k = _sample_counts(ids)
     return (
         f"ids {ids.tolist()} ({k} of {s} sample{'s' * (s != 1)} covered), background "
         f"{vec(background)}: the "
@@ -513,7 +519,7 @@ def explain_resolve(args, expected, got) -> str:
 
 def _mean_rule(args) -> str:
     _, ids, _ = args
-    s, k = len(ids), int((ids >= 0).sum())
+    s, k = _sample_counts(ids)
     if k == s:  # r308 S3: "the 0 uncovered ones counting as the background" said of none
         return f"the mean over all {s} samples"
     return (
@@ -534,7 +540,7 @@ def _covered_words(args, expected, got) -> str:
     """The covered samples averaged alone: the background's share of the pixel left out (and,
     with no sample covered, a mean of nothing)."""
     _, ids, _ = args
-    s, k = len(ids), int((ids >= 0).sum())
+    s, k = _sample_counts(ids)
     if k == 0:
         said = (": you averaged the covered samples only (np.nanmean over the samples does "
                 "so), and none is covered here: the mean of no samples is NaN, but the "
@@ -648,7 +654,7 @@ def _per_triangle_words(args, expected, got) -> str:
 
 def _background_if_any_words(args, expected, got) -> str:
     _, ids, _ = args
-    s, k = len(ids), int((ids >= 0).sum())
+    s, k = _sample_counts(ids)
     return (
         f": you returned the background because a sample is uncovered: it fills only the "
         f"uncovered samples' share ({s - k} of {s}), and the {k} covered "
