@@ -219,11 +219,14 @@ def test_the_explorer_fits_a_1000_px_screen_and_a_filter_never_moves_its_picture
     never showed the image and the error panel together, and its status line wrapped for the
     longer filter names, moving the picture down 24 px at every switch between filters. Now
     the whole widget fits the notebook's visible height, its status line takes one line for
-    every filter, and the picture's top stays put through all seven."""
+    every filter, and the picture's top stays put through all seven. Review r314 S1: at a
+    1280-px window the line wrapped its RMS value onto a second line, and a box as wide as
+    the longest name left a gap after "nearest": now 1280 px wide, and the name is followed
+    directly by its " · "."""
     from teachraster.pipeline.texturing.texture import TEXTURE_FILTERS
 
     size = page.viewport_size
-    page.set_viewport_size({"width": 1400, "height": 1000})
+    page.set_viewport_size({"width": 1280, "height": 1000})
     try:
         _fits_and_stays(lab, page, TEXTURE_FILTERS)
     finally:
@@ -245,7 +248,7 @@ def _fits_and_stays(lab, page, filters) -> None:  # noqa: F811
         page.locator(".t-ffit select").first.select_option(name)
         page.wait_for_function(
             "n => document.querySelector('.t-ffit .tr-drag-caption').innerText"
-            ".includes('°: ' + n + ' ') && !/computing/.test("
+            ".includes('°: ' + n + ' · ') && !/computing/.test("
             "document.querySelector('.t-ffit .tr-drag-caption').innerText)",
             arg=name, timeout=60_000)  # fmt: skip
         time.sleep(0.3)

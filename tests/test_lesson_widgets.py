@@ -1413,3 +1413,5 @@ def test_filter_explorer_status_line_counts_texels_read():
     finally:
         ex.close()
     assert "texels read per pixel" in line and "texels per pixel" not in line
+    # review r314 S1: the name in a box as wide as the longest left a gap after "nearest"
+    assert "</b>: <b>nearest</b> · " in line and "RMS error" in line

@@ -477,24 +477,25 @@ class FilterExplorer:
             error.update(self.image, self.truth)
 
     def _info_html(self) -> str:
-        """The status line: short enough for one line in a 1400-px window, and as long for
-        every filter (the name and the reads in boxes of a fixed width), so that switching
-        filters never wraps it and moves the figure (review r184, 09-8: the longer names
-        wrapped it and the figure jumped 24 px). The RMS error comes last, in a box as wide
-        as a drag's "(on release)", so that a drag never lengthens the line either (review
+        """The status line: one line at a 1280-px window for every filter, so that switching
+        filters never wraps it and moves the figure (review r184, 09-8: the figure jumped
+        24 px). The filter's name takes only its own width: a box as wide as the longest name
+        left a gap of up to 15 letters after "nearest" (review r314 S1), and a name one
+        longer only moves the numbers after it. The RMS error comes last, in a box as wide as
+        a drag's "(on release)", so that a drag never lengthens the line either (review
         r246 09 S1: it wrapped while the mouse was held and pushed the figure down a line)."""
         reads = self._reads()
         rms = DRAFT_RMS if self.truth is None else f"{self.rms:.3f}"
-        name = max(len(f) for f in TEXTURE_FILTERS) + 2  # bold is wider than 1ch a letter
         # the picture's own tilt first: during a drag the slider's readout may run ahead of
         # the kernel's picture, and these numbers are the picture's (review r233 09 W1)
         return (
             f"<b>{_fixed(f'{self.shown_tilt:.0f}°', 3, 'right')}</b>: "
-            f"{_fixed(f'<b>{self.shown_filter}</b>', name)} · "
+            f"<b>{self.shown_filter}</b> · "
             # texel *reads*: a footprint's size in texels is ρ, which λ = log2 ρ gives (review
-            # r257 C2: "1.0 texels per pixel · largest λ 1.8" read as a contradiction)
+            # r257 C2: "1.0 texels per pixel · largest λ 1.8" read as a contradiction); "RMS
+            # error" as the lesson's tables say it (r314 S1: the longer name wrapped the line)
             f"{_fixed(f'{reads:.1f}', 4, 'right')} texels read per pixel"
-            f" · largest λ {np.nanmax(self.lod):.1f} · RMS vs footprint mean "
+            f" · largest λ {np.nanmax(self.lod):.1f} · RMS error "
             f"{_fixed(f'<b>{rms}</b>', len(DRAFT_RMS) + 1)}"
         )
 
