@@ -116,10 +116,13 @@ def cost_ticks(lo: float, hi: float) -> list[float]:
     """The cost axis' labelled values in [``lo``, ``hi``]: 1-2-5, and where the first of
     those lies over 1.5 times above ``lo``, one more below it at 1.5, 3 or 7 of a decade, so
     that the cheapest points have a label near them (at 32 attributes affine's 32 cycles
-    sat on an axis labelled from 50 only: review r243 FIG1).
+    sat on an axis labelled from 50 only: review r243 FIG1). An axis under a decade long
+    that would carry fewer than four labels gets 1-1.5-2-3-5-7 (at 16 attributes the
+    Pentium's axis read 15, 20, 50, and the costs past 50 that the lesson compares had no
+    label near them: review r322 FIG2).
 
-    >>> cost_ticks(24.6, 258.0), cost_ticks(1.5, 246.0)[:3]
-    ([30.0, 50.0, 100.0, 200.0], [2.0, 5.0, 10.0])
+    >>> cost_ticks(24.6, 258.0), cost_ticks(1.5, 246.0)[:3], cost_ticks(14.0, 80.0)
+    ([30.0, 50.0, 100.0, 200.0], [2.0, 5.0, 10.0], [15.0, 20.0, 30.0, 50.0, 70.0])
     """
     decades = range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1)
 
@@ -127,6 +130,8 @@ def cost_ticks(lo: float, hi: float) -> list[float]:
         return [v for e in decades for m in subs if lo <= (v := round(m * 10.0**e, 9)) <= hi]
 
     ticks = at((1, 2, 5))
+    if hi < 10 * lo and len(ticks) < 4:
+        return at((1, 1.5, 2, 3, 5, 7))
     if ticks and ticks[0] > 1.5 * lo:
         ticks = [v for v in at((1.5, 3, 7)) if v < ticks[0]][:1] + ticks
     return ticks
