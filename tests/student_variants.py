@@ -2947,3 +2947,62 @@ R319 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R319.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R319.items()})
+
+
+# -- r326 09: the reader's line and over slips that got the rule (or another slip) said --------
+from lines_blending_solutions import over_straight as _over_straight  # noqa: E402
+
+
+def _line_sorted(p0, p1):
+    """M2: the end points put in order left to right (a Bresenham loop's swap) before drawing."""
+    return _line(*sorted((tuple(p0), tuple(p1))))
+
+
+def _line_read_yx(p0, p1):
+    """M1: the end points read as (row, col), the pairs then (row, col) by that reading."""
+    return _line((p0[1], p0[0]), (p1[1], p1[0]))
+
+
+def _line_read_yx_both(p0, p1):
+    """M1: read as (y, x), and the pairs swapped back as "(col, row)" told it to."""
+    return [(c, r) for r, c in _line_read_yx(p0, p1)]
+
+
+def _over_lesson_rule_divided(src, dst):
+    """M3: lesson 12b §4's premultiplied rule on straight inputs, then divided by α."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    r = s + d * (1 - s[3])
+    return np.r_[r[:3] / r[3], r[3]] if r[3] else np.zeros(4)
+
+
+def _over_by_dst_alpha(src, dst):
+    """M3: the light divided by α_d (a guard where it is 0), the alpha right."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    a = s[3] + d[3] * (1 - s[3])
+    if a == 0:
+        return np.zeros(4)
+    return np.r_[(s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])) / max(d[3], 1e-12), a]
+
+
+R326 = {
+    "line end points sorted left to right": (
+        "line_pixels", _line_sorted, "you drew this segment from p1 to p0", "end points sorted"),
+    "line end points read as (y, x)": (
+        "line_pixels", _line_read_yx, "you read the end points as (y, x)",
+        "end points read as (y, x)"),
+    "line read as (y, x), pairs swapped back": (
+        "line_pixels", _line_read_yx_both, "you read the end points as (y, x) and returned "
+        "(col, row) pairs", "ε in y, ε² in x"),
+    "over_straight by the premultiplied rule, divided by α": (
+        "over_straight", _over_lesson_rule_divided, "without weighting them by their alphas",
+        "lesson's rule on straight colours, divided by α"),
+    # S5: kind "float32" for a float16 answer (its words said float16)
+    "over_straight in float16": (
+        "over_straight", lambda s, d: np.asarray(_over_straight(s, d), np.float16),
+        "float16's rounding", "float16"),
+    "over_straight divided by α_d": (
+        "over_straight", _over_by_dst_alpha, "you divided the light by the destination's alpha",
+        "divided by the destination's alpha"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R326.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R326.items()})

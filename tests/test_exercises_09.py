@@ -1870,7 +1870,7 @@ def test_the_tie_rule_is_said_once_with_each_lines_own_numbers():
     clause quoted "3.0 − 1e-17" also on the lines at x = 5 and y = 6."""
     report = ex.check("line_pixels", line_with(0, 0), budget=60)
     text = str(report)
-    tie = "at a tie (a segment along a diamond's edge, or through its corner)"
+    tie = "at a tie the rule moves both end points by (−ε, −ε²), ε vanishingly small"  # r326 S4
     assert text.count(tie) == 1, text
     said = [f.explanation for f in report.failures]
     assert tie in said[0] and all(tie not in s for s in said[1:]), said
@@ -2066,3 +2066,35 @@ def test_line_pixels_algorithm_is_a_hint_in_the_notebook_and_said_after_two_trie
         assert second.count("open interval") == 1, second  # said in full once
     finally:
         tries.spend_hints(["line_pixels"])
+
+
+def test_r326_the_end_points_are_x_y_and_the_gl_pairs_alpha_is_wrong_over_opaque():
+    """r326 M1: cell 2 and the stub's docstring never said that p0 and p1 are (x, y); S1: the
+    textbook pair "gives the right colour over an opaque destination", but not its alpha."""
+    cells = _nb_cells()
+    task = " ".join(cells["line_pixels_task"].split())
+    assert "`p0` and `p1` are points **(x, y)**" in task and "**(row, col)** pairs" in task
+    assert "p0 and p1 are (x, y)" in cells["line_pixels_solution"].split("### BEGIN")[0]
+    over = " ".join(cells["over_straight_task"].split())
+    assert "opaque destination (its alpha is wrong even there)" in over, over
+
+
+def test_r326_the_passing_9_3_figure_greys_the_layers_no_loop_reads():
+    """r326 S3: behind the opaque layer 3 (and the layer a loop may fetch), layers 5 and 6 of
+    the passing figure's stack were drawn like the others."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    from teachraster.exercises.front_to_back import draw_layers, layer_cases
+
+    case = next(c for c in layer_cases() if c[0] == "an opaque layer in the middle")
+    fig, ax = plt.subplots()
+    draw_layers(ax, case, case[2])
+    greyed = sorted(round(p.get_x() / 1.3) for p in ax.patches if isinstance(p, Rectangle)
+                    and p.get_facecolor()[:3] == (1.0, 1.0, 1.0))  # fmt: skip
+    label = ax.get_xlabel()
+    plt.close(fig)
+    assert greyed == [4, 5] and "greyed: layers no right loop reads" in label, (greyed, label)

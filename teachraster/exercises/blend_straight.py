@@ -140,6 +140,13 @@ STRAIGHT = [
     ("arguments swapped", "you blended dst over src: the first argument, src, is the incoming "
      "fragment, the second, dst, what the buffer holds", lambda s, d: straight_over(d, s)),
     # r289 M2: named in 9.2b and 9.3, and here it got the derivation's steps
+    # r326 M3: the same rule with the task's division by α got the derivation's steps
+    ("lesson's rule on straight colours, divided by α", "you added the straight colours "
+     "without weighting them by their alphas (lesson 12b §4's rule for premultiplied colours, "
+     "src + (1 − α_s)·dst, on straight inputs), then divided by α: a straight colour does not "
+     "carry its coverage, so each must first count in the share of the pixel where it shows, "
+     "C_s·α_s and C_d·α_d·(1 − α_s), before the sum is divided by α",
+     lambda s, d: _divided(scaled(s, d, 1, 1 - s[3]))),
     ("premultiplied twice", "you multiplied each colour by its alpha twice (C·α·α, the dark "
      "fringe): the light of a straight colour is C·α, once, and the sum divided by α",
      lambda s, d: _divided(np.r_[s[:3] * s[3] ** 2 + d[:3] * d[3] ** 2 * (1 - s[3]),
@@ -191,6 +198,33 @@ DST_WHERE_NOTHING = Mistake("dst where nothing covers", _nothing_words(1), fits=
 #: src there too). only_whole: a swapped pair fails other cases as well, and is named there.
 SRC_WHERE_NOTHING = Mistake("src where nothing covers", _nothing_words(0),
                             fits=_where_nothing(0), only_whole=True)  # fmt: skip
+
+
+def _by_destination_alpha(args, expected, got) -> bool | None:
+    """The right light divided by α_d instead of α, the result's alpha right (r326 M3); where
+    α_d is 0, the light divided by a guard's tiny number (or inf), each channel without
+    light 0 (or 0/0). None where nothing covers the pixel (a guard's answer) or α_d = α."""
+    src, dst = (np.asarray(c, float) for c in args)
+    g = np.asarray(got, float).ravel()
+    a = src[3] + dst[3] * (1 - src[3])
+    if g.shape != (4,) or a == 0 or dst[3] == a:
+        return None
+    if not all_close(g[3:], [a], 1e-6):
+        return False
+    light = src[:3] * src[3] + dst[:3] * dst[3] * (1 - src[3])
+    if dst[3] > 0:
+        return np.isfinite(g).all() and all_close(g[:3], light / dst[3], 1e-6)
+    with np.errstate(invalid="ignore"):
+        dark = (light == 0) & ((g[:3] == 0) | np.isnan(g[:3]))
+        huge = (light > 0) & (g[:3] >= 1e6 * light)
+    return bool((dark | huge).all())
+
+
+#: r326 M3: the light divided by the destination's alpha got the derivation's steps.
+BY_DESTINATION_ALPHA = Mistake(
+    "divided by the destination's alpha", "you divided the light by the destination's alpha "
+    "α_d: the straight colour is the light divided by the result's alpha, α = α_s + "
+    "α_d·(1 − α_s), the share of the pixel either covers", fits=_by_destination_alpha)  # fmt: skip
 
 
 def _nan_at_zero(args, expected, got) -> bool:
@@ -346,7 +380,8 @@ def straight_mistakes() -> list[Mistake]:
     swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                       only_whole=True)  # fmt: skip
     nothing = [DST_WHERE_NOTHING, SRC_WHERE_NOTHING]  # before the swap, which gives src there
-    return [nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, *_divided_by_wrong_alpha(),
+    return [nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, BY_DESTINATION_ALPHA,
+            *_divided_by_wrong_alpha(),
             *alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
 
 

@@ -33,6 +33,7 @@ from .alarm import CASE_WALL_FACTOR
 from .capstone_explain import CHECKED_AS, check_words, explain_pixel
 from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
 from .capstone_scenes import capstone_scene
+from .diagnosis import PRECISION_KINDS
 from .report import CheckFailed, Failure, Report
 from .running import CASE_SHARE, effective_budget, run_case, run_checker, wall_limit
 from .running import budget as time_budget
@@ -424,7 +425,7 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
         report = own_report(checked, fn)
         # float32 within its rounding passes the capstone (:data:`TOL`), as in _fallback
         failed = None if report.passed else next(
-            (f for f in report.failures if f.kind != "float32"), None)  # fmt: skip
+            (f for f in report.failures if f.kind not in PRECISION_KINDS), None)  # fmt: skip
         if failed is not None and checked == "perspective_weights":
             failed, aside = _on_a_gpu(name, report.failures)
         if failed is not None:
@@ -441,7 +442,7 @@ def _on_a_gpu(name: str, failures: list[Failure]) -> tuple[Failure | None, str |
     range), and a note on those it failed beyond that range (None where there are none)."""
     from .perspective_weighting import beyond_a_gpu
 
-    counted = [f for f in failures if f.kind != "float32" and not beyond_a_gpu(f.case)]
+    counted = [f for f in failures if f.kind not in PRECISION_KINDS and not beyond_a_gpu(f.case)]
     beyond = [f for f in failures if beyond_a_gpu(f.case)]
     aside = None if not beyond else (
         f"your {name} still fails {len(beyond)} of exercise 3.2's cases whose w lie beyond "
@@ -465,7 +466,7 @@ def _fallback(name: str, fn, where: str) -> Failure | None:
         return None
     # float32 within its rounding passes the capstone (:data:`TOL`), even where an exercise's
     # own cases ask for float64's digits
-    return next((f for f in report.failures if f.kind != "float32"), None)
+    return next((f for f in report.failures if f.kind not in PRECISION_KINDS), None)
 
 
 def _spread(wrong: np.ndarray, most: int = 12) -> list:

@@ -49,7 +49,8 @@ rounding"). One rule, here, for every exercise.
 6. Otherwise the rule, with the case's numbers.
 
 Each failure's kind is the kind of the mistake named (for a combination, of the parts that
-change this case's answer), so that one failure of each kind can be shown first.
+change this case's answer; for a "float32" mistake, the answer's own precision, float16 where it
+is), so that one failure of each kind can be shown first.
 """
 
 from __future__ import annotations
@@ -231,6 +232,11 @@ def handed_back_words(name: str) -> str:
         "others: a placeholder (such as `return "
         f"{name}`) left in, or a `return` reached too early?"
     )
+
+
+#: The kinds of a failure put down to the arithmetic's precision: the low-precision
+#: mistake's kind is the answer's precision (r326 S5: a float16 answer was kind "float32").
+PRECISION_KINDS = ("float32", "float16")
 
 
 def precision_of(got) -> tuple[str, float]:
@@ -882,7 +888,10 @@ def _named(spec: Exercise, m: Mistake, r: Result) -> tuple[str, str]:
     parts = run_checker(lambda: _active_parts(spec, m, r), list(m.parts) or [m])
     if not m.parts:
         words = run_checker(lambda: m.say(r.args, r.expected, r.got), "")
-        return m.kind, words + run_checker(lambda: _precision_note(spec, m, r), "")
+        kind = m.kind
+        if kind == "float32":  # an answer in float16 is told so in words: its kind too
+            kind = run_checker(lambda: precision_of(r.got)[0], kind)
+        return kind, words + run_checker(lambda: _precision_note(spec, m, r), "")
     kind = " and ".join(p.kind for p in parts)
     words = run_checker(lambda: "; and ".join(p.say(r.args, r.expected, r.got) for p in parts), "")
     return kind, words

@@ -535,11 +535,21 @@ def _layer_slots(n: int, marked) -> list:
     return out
 
 
+def _skipped(layers) -> range:
+    """The layers (0-based) that no right loop reads: those behind the one it may fetch after
+    the opaque composite (:func:`stop_window`'s last); empty where it may read them all."""
+    _, last = stop_window(layers)
+    return range(last + 1, len(layers)) if last is not None else range(0)
+
+
 def draw_layers(ax, case, got):
     """The layers as swatches over a checkerboard, then the expected and your composites
     (before any answer, the layers only: the figure never shows the answer first); layers
     read behind the opaque one crossed out and labelled "read", but the one a loop may fetch
-    to find out that it can stop (labelled "allowed")."""
+    to find out that it can stop (labelled "allowed"); in any other figure, the layers no
+    right loop reads (those behind that one) greyed, as the key says."""
+    from matplotlib.patches import Rectangle
+
     (layers,) = case[1]
     # numbers: eight labels share the axes' width (r11 09-D: "layer 6expected"); "yours" on
     # the line of the others (r18 D-8: it stood a line lower in every figure)
@@ -554,6 +564,10 @@ def draw_layers(ax, case, got):
         for k in range(got.read, got.opaque):
             names[k] += "\nnot read"
         marked += [got.read, got.opaque - 1]
+    skipped = _skipped(layers) if got is not None and not isinstance(got, Misread) else range(0)
+    # r326 S3: the passing figure shows what a right loop never reads, too (greyed, said in
+    # the key: a word under each of six layers ran into the next)
+    marked += [skipped.start, skipped.stop - 1] if skipped else []
     slots = _layer_slots(len(layers), marked)
     runs = [p for p, k in enumerate(slots) if isinstance(k, tuple)]
     cells = [np.zeros(4) if isinstance(k, tuple) else layers[k] for k in slots]
@@ -567,11 +581,16 @@ def draw_layers(ax, case, got):
         artists[p].remove()
         artists[p] = ax.text(p * 1.3 + 0.5, 0.5, "…", ha="center", va="center")
     for p, k in enumerate(slots):  # crossed out: read behind the opaque layer
+        x = p * 1.3  # swatches' spacing (blend_display.swatches)
         if k in past:
-            x = p * 1.3  # swatches' spacing (blend_display.swatches)
             artists += ax.plot([x, x + 1, x, x + 1], [0, 1, 1, 0], color="#D55E00", lw=2)
-    artists.append(ax.set_xlabel("layers 1, 2, ..., nearest first; premultiplied, drawn over "
-                                 "a checkerboard", fontsize="x-small"))  # fmt: skip
+        if k in skipped or (isinstance(k, tuple) and k[0] in skipped):  # greyed: never read
+            artists.append(ax.add_patch(Rectangle((x, 0), 1, 1, facecolor="white", alpha=0.7,
+                                                  edgecolor="none")))  # fmt: skip
+    key = ("layers 1, 2, ..., nearest first; premultiplied, drawn over a checkerboard" +
+           ("\ngreyed: layers no right loop reads (it may fetch one past the opaque "
+            "composite)" if skipped else ""))  # fmt: skip
+    artists.append(ax.set_xlabel(key, fontsize="x-small"))
     return artists
 
 

@@ -7,8 +7,10 @@ answer for every sloped line, Direct3D's for a horizontal line on a row boundary
 (:func:`diamond_pixels`, here in floats with ε = 2⁻²⁰ and ε² = 2⁻⁴⁰, far above float64's
 rounding of these coordinates and far below their 1/8 grid): the end pixel lit, or tested
 before it was moved, the start pixel left dark, a closed diamond, no perturbation or one in
-another direction, an ε too large, pairs given as (col, row), Bresenham's walk, and a DDA that
-rounds the line at each column instead of testing diamonds. The cases hold ties of every kind:
+another direction, an ε too large, pairs given as (col, row), the end points read as (y, x),
+the segment drawn from p1 to p0 (always, or where sorting the end points puts p1 first, as a
+Bresenham loop does), Bresenham's walk, and a DDA that rounds the line at each column instead
+of testing diamonds. The cases hold ties of every kind:
 horizontal and vertical lines on pixel boundaries (both directions), 45° lines along diamond
 edges, lines through diamond corners, and lines that pass a diamond corner so closely that an
 ε of 1/100 moves them across it. A mistake is named only where it gives every failing answer
@@ -285,14 +287,14 @@ def dda_pixels(p0, p1):
     return frozenset(p for p in out if 0 <= p[0] < WINDOW and 0 <= p[1] < WINDOW)
 
 
-#: Said after the cause (r289 S3: ~430 characters of it opened every tie explanation), and
-#: attributed as lesson 12a §1 does: the −(ε, ε²) in y-down numbers is Vulkan's rule (S8).
+#: Said after the cause (r289 S3: ~430 characters of it opened every tie explanation; r326 S4:
+#: it still followed the cause at that length), and attributed as lesson 12a §1 does: the
+#: −(ε, ε²) in y-down numbers is Vulkan's rule (S8).
 _TIE = (
-    "at a tie (a segment along a diamond's edge, or through its corner) the rule moves both end "
-    "points by (−ε, −ε²), ε vanishingly small: x left, y up the image (y points down here), so "
-    "a vertical line on x = k lights column k − 1 and a horizontal one on y = k row k − 1, the "
-    "upper row, as Vulkan's rule does (GL, whose window has y up, lights the lower row, row k: "
-    "lesson 12a §1)"
+    "at a tie the rule moves both end points by (−ε, −ε²), ε vanishingly small: x left, y up "
+    "the image, so a line on x = k lights column k − 1 and one on y = k row k − 1, the upper "
+    "row, as Vulkan's rule does (GL's window has y up and lights the lower row, row k: lesson "
+    "12a §1)"
 )
 #: How :data:`_TIE` reads after the first line that says it in full (r23 D-6).
 _TIE_AGAIN = "at a tie the rule moves both end points by (−ε, −ε²), as said above"
@@ -344,7 +346,11 @@ _MOVES = {
                        "+ε² (the rule moves them left and up)"),
     (0.0, -EPS * EPS): ("x not moved", "you did not move x"),
     (0.0, -EPS): ("only y moved", "you did not move x, and moved y by −ε"),
-    (-EPS * EPS, -EPS): ("ε in y, ε² in x", "you moved x by −ε² and y by −ε: the larger move "
+    # r326: what reading the end points as (y, x) and returning (col, row) pairs gives (the
+    # image transposed twice, the tie moves once): the likelier cause, said first
+    (-EPS * EPS, -EPS): ("ε in y, ε² in x", "you read the end points as (y, x) and returned "
+                         "(col, row) pairs, or gave each coordinate the other's move: either "
+                         "way you moved x by −ε² and y by −ε. p0 and p1 are (x, y), and the larger move "
                          "belongs to x (−ε), the tinier one to y (−ε²)"),
 }  # fmt: skip
 
@@ -437,6 +443,56 @@ def _start_dark(p0, p1):
     return diamond_pixels(p0, p1) - {start}
 
 
+def _drawn_sorted(key):
+    """``gives``: the rule on the segment drawn from the end point that ``key`` puts first
+    (a Bresenham loop's swap, r326 M2): p1 → p0 where ``key(p1, p0) < key(p0, p1)``."""
+    return lambda p0, p1: diamond_pixels(p1, p0) if key(p1, p0) < key(p0, p1) else (
+        diamond_pixels(p0, p1))  # fmt: skip
+
+
+def _sorted_words(order: str):
+    """Words for :func:`_drawn_sorted`: the direction the rule follows, and which end's pixel
+    it leaves dark, by the case's numbers."""
+
+    def words(args, expected, got) -> str:
+        lit = ", ".join(f"(row {r}, col {c})" for r, c in sorted(got - expected))
+        dark = ", ".join(f"(row {r}, col {c})" for r, c in sorted(expected - got))
+        return (f"you drew this segment from p1 to p0 (you put the end points in order {order}, "
+                "as a Bresenham loop does): the rule depends on the direction; it runs from p0 "
+                "to p1 and leaves only p1's own diamond dark" +
+                (f"; you lit p1's pixel {lit}" if lit else "") +
+                (f"; you left p0's pixel {dark} dark" if dark else ""))  # fmt: skip
+
+    return words
+
+
+def _major(p, q):
+    """Sort key of a Bresenham loop: the coordinate that changes more from p to q (x on a
+    tie), then the other."""
+    x_major = abs(q[0] - p[0]) >= abs(q[1] - p[1])
+    return (p[0], p[1]) if x_major else (p[1], p[0])
+
+
+#: r326 M2: end points put in order before drawing reverse about half the segments, and got
+#: the rule restated (the "reversed" mistake reverses all of them, and fits no other).
+SORTED_ENDS = {
+    "left to right": lambda p, q: (p[0], p[1]),
+    "left to right (by x alone)": lambda p, q: p[0],
+    "top to bottom": lambda p, q: (p[1], p[0]),
+    "top to bottom (by y alone)": lambda p, q: p[1],
+    "along the axis that changes more": _major,
+}
+
+
+def _transposed_words(args, expected, got) -> str:
+    """r326 M1: the end points read as (row, col), the pairs then right by that reading."""
+    (x0, y0), _ = args
+    return (f"you read the end points as (y, x): p0 and p1 are (x, y), x along the columns and "
+            f"y down the rows, so p0 = ({x0}, {y0}) lies in column {int(np.floor(x0))}, row "
+            f"{int(np.floor(y0))}; your pixels are those of the segment mirrored across the "
+            "diagonal")  # fmt: skip
+
+
 _BRESENHAM = ("you walked the line with Bresenham's error term (lesson 12a §2): it takes the "
               "end points to the pixels they lie in and steps one whole pixel at a time; the "
               "diamond-exit rule tests the diamonds the segment itself passes through and "
@@ -453,6 +509,15 @@ LINE_MISTAKES = [
         "diamond dark (not p0's); both end points move by the same −(ε, ε²), so reversing "
         "the segment changes only which end's diamond stays dark",
         gives=lambda p0, p1: diamond_pixels(p1, p0),
+    ),
+    *(
+        Mistake("end points sorted", _sorted_words(order), gives=_drawn_sorted(key))
+        for order, key in SORTED_ENDS.items()
+    ),
+    Mistake(
+        "end points read as (y, x)",
+        _transposed_words,
+        gives=lambda p0, p1: diamond_pixels((p0[1], p0[0]), (p1[1], p1[0])),
     ),
     Mistake(
         "start pixel dark",
