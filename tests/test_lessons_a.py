@@ -2878,6 +2878,8 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     shown = "\n".join(t for c, t in zip(cells, text) if c["cell_type"] == "markdown")
     assert "divide must wait" not in shown and "before the divide makes it" not in shown
     assert held == ask + 1 and "so clippers cut in clip space, before the divide" in text[held]
+    # review r321 P-1: its source prints that verdict and "outside the edge": folded too
+    assert cells[held]["metadata"]["jupyter"]["source_hidden"]
     # review r182 05a-11: the scissor's quote and depth clamping folded, still named
     assert "implicit\n*viewport scissor*" in after and "§15.6 *Viewport*" in after
     assert "must really cut" not in after and "**Depth clamping.**" in after
@@ -3695,6 +3697,15 @@ def test_05a_r182_a_cut_rounds_its_new_vertices():
             f"{depth['cut']:.5f} px inside the pieces' edge") in note  # fmt: skip
     assert f"which lies {-depth['whole']:.5f} px outside it" in note
     assert "This example shows the other one" in note and "changed sides." not in note
+    # review r321 S-2: the band buys sameness and work, not accuracy: against exact coverage
+    # the pixels a cut changed are wrong in the uncut triangle as well as in the pieces
+    changed = sum(map(len, ns.snap_changed[1.0, bits].values()))
+    assert ns.blame_whole + ns.blame_cut == changed and ns.blame_whole > 0 < ns.blame_cut
+    assert f"the uncut triangle is wrong at {ns.blame_whole} of the {changed} pixels" in note
+    assert f"and the pieces at {ns.blame_cut}" in note and "buys no accuracy" in note
+    summary = next(c for c in _cells("05a_zbuffer", "code") if "q_clip.hold()\nq_step" in c)
+    assert "but buys no accuracy" in summary and "{blame_cut} pixels" in summary
+    assert "rounding of new vertices that can move" not in summary
     assert f"{ns.gap_whole:.5f}" not in text
     nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
     folded = [c for c in nb["cells"] if c.get("id") in ("guard_snap", "guard_snap_fig")]
@@ -3769,6 +3780,56 @@ def test_05a_r182_stepper_question_and_small_items():
     )
     code = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
     assert 'xlabel="x (view units)"' in code["c18"] and "ylim=(-0.3, 3.3)" in code["guard_fig"]
+
+
+def test_05a_r321_gl_starts_with_the_test_off_and_depth_is_affine():
+    """Review r321 M-2: GL's depth test is disabled until glEnable(GL_DEPTH_TEST) (GL 4.6
+    §17.3.4, checked against the specification's text); M-3: window depth is interpolated
+    affinely in screen space, with the notes cited. S-3: the guard-band figure's image is
+    |x_clip| <= w (its axis is view x); S-4: the cell measures, it asks nothing."""
+    text = {c.get("id"): "".join(c["source"]) for c in
+            json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]}  # fmt: skip
+    rule = " ".join(text["c02"].split())
+    assert '(OpenGL 4.6 §17.3.4: "In the initial state the function is LESS and the test' in rule
+    assert "`glEnable(GL_DEPTH_TEST)`" in rule and "as if the depth buffer test always" in rule
+    assert "interpolates window depth **affinely** in screen space" in rule
+    assert "(Ritschel, *Interpolation and z-buffering*, eq. 12; Ek, *Triangles and" in rule
+    assert "|x_clip| ≤ w" in text["guard_fig"] and "|x| ≤ w" not in text["guard_fig"]
+    assert "Then it measures what a cut does" in text["guard_gpus_md"]
+
+
+def test_05a_r321_try_it_moves_the_third_vertex_and_the_cells_run(capsys):
+    """Review r321 W-1: the Try-it moved "one vertex beyond the far plane", and the question
+    cell then raised AssertionError (the near plane no longer cut the edge it asks about). It
+    names the third vertex, and the question cell says in words why it asks nothing; the cells
+    from view_xyz to the near-plane figure run for both of the Try-it's vertices. S-1: the
+    held printout lists points of the edge only (0 <= t <= 1), in order."""
+    cells = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]
+    src = {c.get("id"): "".join(c["source"]) for c in cells}
+    try_it = " ".join(src[cells[-1]["id"]].split())
+    assert "move the third vertex beyond the far plane instead (`z = -12`" in try_it
+    runs = {}
+    for z in ("-0.2", "-12.0"):  # bullets 3 and 4 of the Try-it
+        scope = {}
+        exec(src["c01"].replace("%matplotlib inline\n", ""), scope)
+        for cid in ("c16", "c16q", "c16h", "c16s", "c18"):  # view_xyz ... the figure
+            code = src[cid].replace("plt.show()", "plt.close('all')")
+            if cid == "c16":
+                assert "[0.1, -0.2, 0.3]" in code
+                code = code.replace("[0.1, -0.2, 0.3]", f"[0.1, -0.2, {z}]")
+            exec(code, scope)
+        runs[z] = scope, capsys.readouterr().out
+    (near, near_out), (far, far_out) = runs["-0.2"], runs["-12.0"]
+    assert near["near_cuts"] and near["clip_answer"] == near["clip_choices"][1]
+    assert (
+        near["edge_t"][0] == 0 and near["edge_t"][-1] == 1 and (np.diff(near["edge_t"]) > 0).all()
+    )
+    assert "w = 0 on that edge" not in near_out and "so clippers cut" not in near_out
+    assert "The part from the first vertex to the near plane" in near["clip_explain"]
+    assert not far["near_cuts"] and "No question this time" in far_out
+    assert "both in front, so the near plane does not cut this edge" in " ".join(far_out.split())
+    assert [s.plane for s in far["steps"] if s.new.any()] == ["far z <= w"]
+    assert max(len(line) for line in far_out.splitlines()) <= 80
 
 
 def test_05a_r259_depth_states_in_every_api():

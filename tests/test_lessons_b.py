@@ -3672,7 +3672,8 @@ def test_10_r100_items():
     assert "affine on the screen (lesson 05a)" not in md
     assert "affine on the screen (lesson 05b, section 1" in md and "Ritschel" in md
     assert "Window depth is affine in screen space" in markdown("05b_depth_precision")
-    assert "affine" not in markdown("05a_zbuffer")
+    # review r321 M-3: 05a now says it too, citing the notes; lesson 10 still cites 05b
+    assert "interpolates window depth **affinely** in screen space" in markdown("05a_zbuffer")
     code = (ROOT / "notebooks" / "10_tiles_and_hierarchical_z.ipynb").read_text()
     assert "a GPU rejects at most what the replay rejects" not in code
     assert "the same way rejects at most what the replay rejects" in code

@@ -258,6 +258,15 @@ def test_05a_q_step_is_asked_before_its_answer_stands():
     assert f"the stepper opens on triangle {ns.k_open}" in seen  # what the question reads
 
 
+def test_05a_q_clip_is_not_answered_by_a_held_cells_source():
+    """r321 P-1: the cell held behind q_clip printed "outside the edge" (which rules out the
+    far-plane choice) and the verdict from a visible source: it is folded, as q_clip is."""
+    ns = lesson("05a_zbuffer")
+    assert ns.t_far < 0 and ns.clip_answer == ns.clip_choices[3]
+    seen = seen_before_check("05a_zbuffer", "q_clip = Predict(", "q_clip")
+    assert "outside the edge" not in seen and "so clippers cut in clip space" not in seen
+
+
 def test_08_q_fastest_notes_reason_right(monkeypatch):
     """r171 F1: the note for −1 said errors added in one direction give −1; they give
     √S · 1/S = S^−1/2. −1 needs a bounded number of undecided samples. Each wrong answer's
