@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -431,9 +433,10 @@ def test_blending_explorer_says_when_stored_alpha_is_one_everywhere():
 def test_blending_explorer_blend_state_and_alpha():
     """Review r263 M3: the explorer gains the blend state: a mode (over, premultiplied,
     additive, multiply, its factor pair in the status line) and one alpha for every triangle.
-    Additive and multiply give 0 differing pixels in any order (multiply's float products part
-    by last bits only, under the 1e-9 the count allows); "over" depends on it at every alpha
-    below 1, and the artists are updated in place."""
+    Additive and multiply differ in any order only by rounding (review r324 C1: the count
+    ignored differences below 1e-9 and so showed 0 for multiply, whose float products part by
+    their last bits, as lesson 12b §2 prints; it now counts them and says how far); "over"
+    depends on the order at every alpha below 1, and the artists are updated in place."""
     from teachraster.widgets.blending import BLEND_CHOICES, BlendingExplorer, compose
 
     ex = BlendingExplorer(backend="image", size=(24, 24), white=True)
@@ -444,10 +447,23 @@ def test_blending_explorer_blend_state_and_alpha():
         assert ex.differ > 0 and "(SRC_ALPHA, ONE_MINUS_SRC_ALPHA)" in ex.info.value
         for mode in ("additive", "multiply"):
             ex.mode.value = mode
-            assert ex.differ == 0, mode
+            assert ex.gap.rounding, mode
             ex.select.value = 0
             ex.later.click()
-            assert ex.differ == 0 and f"blend {mode!r}" in ex.info.value
+            assert ex.gap.rounding and f"blend {mode!r}" in ex.info.value
+        ex.order = [2, 1, 0]  # multiply on white: §2's last bits (the count used to say 0)
+        ex.update()
+        assert ex.differ > 0 and ex.gap.ulps <= 2
+        assert "unit(s) in the last place" in ex.info.value and "float rounding" in ex.info.value
+        ex.order = [0, 1, 2]
+        ex.srgb.value = True  # the 8-bit target rounds every layer: a code apart
+        assert ex.differ > 0 and ex.gap.codes == 1 and "1 code(s): rounding" in ex.info.value
+        ex.srgb.value = False
+        # the caption says the same, and briefly (review r324 S5: seven lines of it, some 900
+        # characters, stood above the controls)
+        caption = re.sub("<[^>]+>", "", ex.widget.children[0].value)
+        assert "differ only by rounding" in caption and "0 differing" not in caption
+        assert len(caption) < 600
         assert "(DST_COLOR, ZERO)" in ex.info.value and "product of the alphas" in ex.info.value
         ex.white.value = True  # additive unticked it
         ex.mode.value = "additive"

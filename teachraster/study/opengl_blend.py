@@ -3,11 +3,12 @@
 
 :func:`gl_blend` draws the triangles one by one in submission order with the same blend state
 (``glBlendFunc`` pair, ``glDepthMask`` per triangle, ``GL_LESS`` on a float32 depth buffer,
-clear colour) into an ``RGBA32F`` colour buffer, or into an ``SRGB8_ALPHA8`` one with
+clear colour) into an ``RGBA32F`` colour buffer, into an ``SRGB8_ALPHA8`` one with
 ``GL_FRAMEBUFFER_SRGB`` on (then GL converts the stored colour to linear before blending and
-back after, rounding to 8 bits at every step), optionally with 4-sample MSAA resolved by a
-blit. As in :mod:`teachraster.study.opengl`, clip y is negated in the vertex shader so GL's
-rows are ours, read back unflipped.
+back after, rounding to 8 bits at every step), or into an ``RGBA8`` (UNORM) one, which
+clamps (lesson 12b measures it), optionally with 4-sample MSAA resolved by a blit; with any
+``glBlendEquation`` operator. As in :mod:`teachraster.study.opengl`, clip y is negated in the
+vertex shader so GL's rows are ours, read back unflipped.
 """
 
 from __future__ import annotations
@@ -38,7 +39,8 @@ void main() { o_colour = colour; }
 
 
 def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, depth_test=True,
-             clear_color=(0.0, 0.0, 0.0, 0.0), srgb=False, samples=0) -> np.ndarray:  # fmt: skip
+             clear_color=(0.0, 0.0, 0.0, 0.0), srgb=False, unorm8=False, samples=0,
+             equation="FUNC_ADD") -> np.ndarray:  # fmt: skip
     """The colour buffer after GL blends ``attrs`` (N, 3, 4) RGBA of triangles ``clip``.
 
     Parameters
@@ -48,11 +50,15 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
         ``glBlendFunc`` pair, or None: ``GL_BLEND`` disabled (the fragment colour replaces).
     depth_write : bool or (N,) bools, ``glDepthMask`` per triangle.
     srgb : bool, an ``SRGB8_ALPHA8`` target with ``GL_FRAMEBUFFER_SRGB`` (else ``RGBA32F``).
+    unorm8 : bool, an ``RGBA8`` target (8-bit unsigned normalized, no sRGB) instead.
     samples : int, 0 or 4: multisampled, resolved by ``glBlitFramebuffer``.
+    equation : ``glBlendEquation``'s operator, "FUNC_ADD" (the default), "FUNC_SUBTRACT",
+        "FUNC_REVERSE_SUBTRACT", "MIN" or "MAX".
 
     Returns
     -------
-    (height, width, 4) float64 (RGBA32F) or uint8 (sRGB-encoded, as stored), row 0 on top.
+    (height, width, 4) float64 (RGBA32F) or uint8 (the codes stored: sRGB-encoded, or
+    RGBA8's), row 0 on top.
     """
     import moderngl
 
@@ -67,7 +73,11 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
     pos = ctx.buffer(clip.astype("f4").tobytes())
     col = ctx.buffer(attrs.astype("f4").tobytes())
     vao = ctx.vertex_array(prog, [(pos, "4f", "in_pos"), (col, "4f", "in_col")])
-    fmt = {"internal_format": _GL_SRGB8_ALPHA8, "dtype": "f1"} if srgb else {"dtype": "f4"}
+    if srgb and unorm8:
+        raise ValueError("srgb and unorm8: one colour target, pick one")
+    eight = srgb or unorm8  # the codes of an 8-bit target, read back as they are stored
+    fmt = {"internal_format": _GL_SRGB8_ALPHA8} if srgb else {}
+    fmt["dtype"] = "f1" if eight else "f4"
     target = ctx.texture((width, height), 4, samples=samples, **fmt)
     fbo = ctx.framebuffer([target])
     objects, depth_rb = [vao, pos, col, fbo, target], None
@@ -84,14 +94,14 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
         if blend is not None:
             src, dst = blend if isinstance(blend, tuple) else BLEND_MODES[blend]
             ctx.blend_func = getattr(moderngl, src), getattr(moderngl, dst)
-            ctx.blend_equation = moderngl.FUNC_ADD
+            ctx.blend_equation = getattr(moderngl, equation)
         fbo.depth_mask = True
         fbo.clear(*clear_color, depth=1.0)
         for i in range(n):  # submission order, each with its own depth mask
             fbo.depth_mask = bool(writes[i])
             vao.render(moderngl.TRIANGLES, vertices=3, first=3 * i)
         fbo.depth_mask = True
-        return _read(ctx, fbo, (width, height), srgb, samples, objects)
+        return _read(ctx, fbo, (width, height), srgb, eight, samples, objects)
     finally:
         if srgb:
             ctx.disable_direct(_GL_FRAMEBUFFER_SRGB)
@@ -102,9 +112,9 @@ def gl_blend(clip, width, height, attrs, *, blend="over", depth_write=True, dept
             obj.release()
 
 
-def _read(ctx, fbo, size, srgb, samples, objects) -> np.ndarray:
+def _read(ctx, fbo, size, srgb, eight, samples, objects) -> np.ndarray:
     """Read the colour target back (resolving MSAA by a blit into a one-sample copy)."""
-    dtype, kind = ("f1", np.uint8) if srgb else ("f4", np.float32)
+    dtype, kind = ("f1", np.uint8) if eight else ("f4", np.float32)
     if samples:
         fmt = {"internal_format": _GL_SRGB8_ALPHA8} if srgb else {}
         single = ctx.texture(size, 4, dtype=dtype, **fmt)
@@ -114,4 +124,4 @@ def _read(ctx, fbo, size, srgb, samples, objects) -> np.ndarray:
         fbo = out_fbo
     out = np.empty((size[1], size[0], 4), dtype=kind)
     fbo.read_into(out, components=4, dtype=dtype)
-    return out if srgb else out.astype(np.float64)
+    return out if eight else out.astype(np.float64)

@@ -4,7 +4,8 @@ Lesson 12b's blending widget. A few transparent triangles are drawn with ``rende
 blend=...)``; the list on the left is the submission order (select one, move it earlier or
 later, or sort back to front). Above it the blend state: the mode ("over", "premultiplied",
 "additive", "multiply", each with its factor pair in the status line) and one alpha for every
-triangle (review r263 M3: additive and multiply give 0 differing pixels in any order); the status line
+triangle (review r263 M3: additive and multiply differ in any order only by rounding,
+whose size the status line gives: review r324 C1); the status line
 says what the mode does to the colour and to the stored alpha (one factor pair serves both).
 Picking "additive" unticks "clear to opaque white", on which every sum shows white, and
 leaving it ticks the box again (review r275 W1). The left panel shows the colour buffer in the chosen order,
@@ -25,11 +26,14 @@ them to linear first, as sampling an sRGB texture does; one name, one meaning (r
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import ipywidgets as widgets
 import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, srgb_to_linear
 from ..core.validate import check_choice
+from ..pipeline.blending.colour_blending import srgb8_codes
 from ..pipeline.render_triangles import render
 from ..plotting.lines import plot_rgba, rgba_shown
 from .common import Shown, control_row, labelled, style_context, title_html
@@ -99,6 +103,64 @@ def compose(
                   color_format="srgb8" if srgb else "float64").color  # fmt: skip
 
 
+#: Float rounding, not order: each layer rounds its sum or product once (to within half a unit
+#: in the last place), so a few layers in two orders part by a few units; "over" parts by
+#: some 1e15 units.
+ROUNDING_ULPS = 16
+
+
+@dataclass(frozen=True)
+class OrderGap:
+    """How far apart two colour buffers of the same triangles, drawn in two orders, are.
+
+    ``differ``: the pixels where any channel differs at all (float64: in any bit; an "srgb8"
+    target: in any stored code); ``largest``: the largest difference of one channel, in the
+    values stored; ``ulps``: that in units in the last place of float64 there; ``codes``:
+    the largest difference in stored 8-bit codes ("srgb8"; None for float64).
+    """
+
+    differ: int
+    largest: float
+    ulps: int
+    codes: int | None
+
+    @property
+    def rounding(self) -> bool:
+        """Only rounding parts the two: float64's last bits, or one 8-bit code."""
+        return self.codes <= 1 if self.codes is not None else self.ulps <= ROUNDING_ULPS
+
+    def words(self) -> str:
+        """How far, for a status line: "" where nothing differs."""
+        if not self.differ:
+            return ""
+        if self.codes is not None:
+            return f", by up to {self.codes} code(s)" + (
+                ": rounding to 8 bits" if self.rounding else ""
+            )
+        if self.rounding:
+            return (f", by at most {self.ulps} unit(s) in the last place ({self.largest:.1e}): "
+                    "float rounding")  # fmt: skip
+        return f", by up to {self.largest:.3f}"
+
+
+def order_gap(a, b, srgb: bool = False) -> OrderGap:
+    """:class:`OrderGap` of colour buffers ``a`` and ``b`` (H, W, 4): every difference
+    counts, as lesson 12b §2 counts them (review r324 C1: the explorer ignored those below
+    1e-9, and so reported 0 where §2 found multiply's last bits apart). ``srgb``: the
+    buffers are an "srgb8" target's (linear values of stored codes), compared code by code.
+
+    >>> a = np.full((1, 1, 4), 0.1)
+    >>> order_gap(a, np.nextafter(a, 1)).words()  # the next float64 up
+    ', by at most 1 unit(s) in the last place (1.4e-17): float rounding'
+    """
+    a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
+    diff = np.abs(a - b)
+    ulps = diff / np.spacing(np.maximum(np.abs(a), np.abs(b)))
+    codes = int(np.abs(srgb8_codes(a) - srgb8_codes(b)).max()) if srgb else None
+    return OrderGap(int((diff > 0).any(axis=2).sum()), float(diff.max()),
+                    int(np.ceil(ulps.max())), codes)  # fmt: skip
+
+
 class BlendingExplorer(Shown):
     """Submission order, blend state (mode and alpha), premultiplied alpha and sRGB, with the
     colour buffer beside the sorted back-to-front one.
@@ -129,7 +191,13 @@ class BlendingExplorer(Shown):
         ``white``: clear to opaque white (1, 1, 1, 1) instead of transparent black.
     depth_order : list of int
         The triangles back to front (farthest first), the order the right panel draws.
-    color, sorted_color : (H, W, 4) what the two panels show; ``differ`` pixels that differ.
+    color, sorted_color : (H, W, 4) what the two panels show.
+    gap : OrderGap
+        How far the two panels lie apart: ``differ`` pixels differ at all (in any bit, or
+        in any stored code of the sRGB framebuffer), by how much, and whether only by
+        rounding (``gap.rounding``).
+    differ : int
+        ``gap.differ``.
 
     Examples
     --------
@@ -140,8 +208,8 @@ class BlendingExplorer(Shown):
     True
     >>> ex.white.value = True; ex.color[0, 0].tolist()  # a corner no triangle covers
     [1.0, 1.0, 1.0, 1.0]
-    >>> ex.mode.value = "additive"; ex.differ  # additive commutes: the order is irrelevant
-    0
+    >>> ex.mode.value = "multiply"; ex.gap.rounding  # multiply commutes, up to rounding
+    True
     >>> ex.close()
     """
 
@@ -203,19 +271,17 @@ class BlendingExplorer(Shown):
         self.white.observe(self._white_changed, "value")
         for box in (self.opacity, self.srgb, self.decode, self.alpha):
             box.observe(lambda change: self.update(), "value")
+        # Short (review r324 S5: seven lines above the controls repeated the lesson's cell):
+        # what each control does, and the one claim the count checks; the lesson has the rest.
         title = title_html(
             "Blending: order, blend state, premultiplied alpha, sRGB",
-            "The list: the triangles in the order drawn, the first at the top. Move one "
-            "earlier or later: 'over' depends on the order. 'blend' picks the blend state "
-            "(its factor pair in the line under the controls), 'alpha' every triangle's "
-            "alpha: additive and multiply give 0 differing pixels in any order. 'clear to opaque "
-            "white' clears the buffer to (1, 1, 1, 1), the white of the lesson's figures; "
-            "unticked, it is cleared to transparent black (0, 0, 0, 0), into which straight "
-            "alpha stores a wrong alpha. The panels show the colours written, as displayed; tick 'stored alpha' "
-            "to see alpha as a checkerboard. 'sRGB framebuffer' is color_format=\"srgb8\": "
-            "the colours are taken as linear light (as GL takes a shader's output), blended "
-            "in light and stored encoded; 'colours sRGB-encoded' decodes them first, as "
-            "sampling an sRGB texture does.",
+            "The list is the order drawn, first at the top: move a triangle earlier or later. "
+            "'over' depends on the order; additive and multiply commute, so they differ only "
+            "by rounding (the line under the controls counts every difference and says how "
+            "far). 'clear to opaque white' unticked: cleared to transparent black (0, 0, 0, "
+            "0). 'stored alpha' draws alpha over a checkerboard. 'sRGB framebuffer' is "
+            "color_format=\"srgb8\" (colours taken as linear light); 'colours sRGB-encoded' "
+            "decodes them first.",
         )
         column = dict(flex="0 0 auto", margin="0 12px 0 0")
         buttons = widgets.VBox([self.earlier, self.later, self.sort],
@@ -254,7 +320,8 @@ class BlendingExplorer(Shown):
                 "decode": self.decode.value, "size": self.size, "clear_color": clear}  # fmt: skip
         self.color = compose(self.clip, self.rgba, self.order, **opts)
         self.sorted_color = compose(self.clip, self.rgba, self.depth_order, **opts)
-        self.differ = int((np.abs(self.color - self.sorted_color) > 1e-9).any(axis=2).sum())
+        self.gap = order_gap(self.color, self.sorted_color, srgb=self.srgb.value)
+        self.differ = self.gap.differ
 
     def _move(self, delta: int) -> None:
         k = self.select.value
@@ -289,7 +356,7 @@ class BlendingExplorer(Shown):
         back = " → ".join(str(t) for t in self.depth_order)
         src, dst = BLEND_CHOICES[self.mode.value]
         return (f"drawn {order}: <b>{self.differ}</b> pixel(s) differ from back to front "
-                f"({back}); blend {self.mode.value!r} = ({src}, {dst}), alpha "
+                f"({back}){self.gap.words()}; blend {self.mode.value!r} = ({src}, {dst}), alpha "
                 f"{self.opacity.value:.2f}{self._mode_note()}"
                 f"{' (sRGB framebuffer)' if self.srgb.value else ''}"
                 f"{' (colours decoded from sRGB)' if self.decode.value else ''}"

@@ -128,10 +128,23 @@ def store_colour(rgba: np.ndarray, color_format: str) -> np.ndarray:
     """
     if color_format == "float64":
         return rgba
-    c = np.clip(rgba, 0.0, 1.0)
+    out = srgb8_codes(rgba) / 255.0
+    out[..., :3] = srgb_to_linear(out[..., :3])
+    return out
+
+
+def srgb8_codes(rgba: np.ndarray) -> np.ndarray:
+    """The 8-bit codes (0 to 255, as float64) an "srgb8" target stores for linear ``rgba``
+    (..., 4): clamped to [0, 1], RGB encoded by the sRGB curve and alpha as it is, each
+    rounded to the nearest code. :func:`store_colour` decodes them again.
+
+    >>> srgb8_codes(np.array([0.5, 0.5, 0.5, 0.5])).tolist()
+    [188.0, 188.0, 188.0, 128.0]
+    """
+    c = np.clip(np.asarray(rgba, dtype=np.float64), 0.0, 1.0)
     out = np.empty_like(c)
-    out[..., :3] = srgb_to_linear(np.round(linear_to_srgb(c[..., :3]) * 255.0) / 255.0)
-    out[..., 3] = np.round(c[..., 3] * 255.0) / 255.0
+    out[..., :3] = np.round(linear_to_srgb(c[..., :3]) * 255.0)
+    out[..., 3] = np.round(c[..., 3] * 255.0)
     return out
 
 
