@@ -1082,24 +1082,41 @@ def near_rounds_apart(z, gap, far, bits):
     return n
 
 
-def _bias_with(slip=None):
-    """decal_bias (5.3) with one slip: the offset o = ∓(r + m), r one step, m MaxDepthSlope."""
+def gap_float32_infinite_slope(z, near, far):
+    """5.2 all in float32, |dd/dz| = n/z² (the far plane's factor dropped): r325 was told
+    "float32's rounding" while the slope is 11 % off."""
+    z, near, far = np.float32(z), np.float32(near), np.float32(far)
+    d = (near / z - near / far) / (np.float32(1) - near / far)
+    return np.spacing(d) / (near / (z * z))
+
+
+def _bias_with(slip=None, test="right"):
+    """decal_bias (5.3) with one slip: the offset o = ∓(r + m), r one step, m MaxDepthSlope.
+    ``test`` for NaN: "right" (the slip shows in the offset alone), "own" (the slip's r and
+    m in the test too: a complete solution, r325), "room" (r + m > room: the decal's own m
+    toward the object forgotten), "cautious" (r + 2m > room − m: NaN where an offset fits)."""
 
     def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
-        # the test for "no offset does both" right, so the slip shows in the offset alone
+        z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+        space = z_win(z) - z_win(z - clear)
         r, m = (
             1 / (2**bits - 1),
             far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel,
         )
-        z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
-        if slip != "clear ignored" and r + m > z_win(z) - z_win(z - clear) - m:
+        nan = {"room": r + m > space, "cautious": r + 2 * m > space - m}.get(test)
+        if nan is None:
+            nan = slip != "clear ignored" and r + m > space - m
+        if test != "own" and nan:
             return math.nan  # the object in front leaves no offset that does both
         r = 0.5 / (2**bits - 1) if slip == "half" else 1 / (2**bits - 1)
         r = 1 / 2**bits if slip == "2^bits" else r
         tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
+        tan = math.sin(math.radians(tilt)) if slip == "sin" else tan
         m = far * near / (far - near) * tan / z * pixel
         m = {"view slope": pixel * z * tan, "per unit": m / pixel, "no slope": 0.0}.get(slip, m)
         m = m / z if slip == "z squared" else m
+        if test == "own" and r + m > space - m:
+            return math.nan
         o = {"no tie": m, "in steps": (r + m) / r}.get(slip, r + m)
         sign = 1 if reverse else -1
         return {"sign": -sign * o, "reverse ignored": -o}.get(slip, sign * o)
@@ -1595,6 +1612,41 @@ WRONG = {
     "decal bias with half a step": ("decal_bias", _bias_with("half"), "half a step"),
     "decal bias ignoring clear": ("decal_bias", _bias_with("clear ignored"), "ignores `clear`"),
     "decal bias with z squared in m": ("decal_bias", _bias_with("z squared"), "divided by z"),
+    # r325: the object's test without the decal's own m; complete solutions whose NaN test
+    # uses their own wrong m; sin for tan; NaN where an offset fits; 5.2's d = n/z with the
+    # finite far's slope and a float32 slope slip (was blamed on float32); 5.1's step 1/bits
+    "decal bias tested against room alone": (
+        "decal_bias",
+        _bias_with(test="room"),
+        "compares r + m with room alone",
+    ),
+    "decal bias per unit, own NaN test": (
+        "decal_bias",
+        _bias_with("per unit", test="own"),
+        "the `* pixel` is missing",
+    ),
+    "decal bias with tan of degrees, own NaN test": (
+        "decal_bias",
+        _bias_with("degrees", test="own"),
+        "takes radians",
+    ),
+    "decal bias with sin for tan": ("decal_bias", _bias_with("sin"), "the slope needs tan θ"),
+    "decal bias NaN where an offset fits": (
+        "decal_bias",
+        _bias_with(test="cautious"),
+        "NaN means “no offset works” here, and this case has one",
+    ),
+    "gap with d = n/z": (
+        "reverse_z_gap",
+        _gap_with(depth="infinite far"),
+        "you stored d = n/z",
+    ),
+    "gap in float32 without the far plane's factor": (
+        "reverse_z_gap",
+        gap_float32_infinite_slope,
+        "dropped the far plane",
+    ),
+    "near with a step of 1/bits": ("safe_near", _near_with(lambda b: 1 / b), "as 1/bits"),
     "gap with near and far swapped": (
         "reverse_z_gap",
         lambda z, near, far: _gap_with()(z, far, near),
@@ -1887,6 +1939,14 @@ KINDS = {
     "decal bias with half a step": "half",
     "decal bias ignoring clear": "clear ignored",
     "decal bias with z squared in m": "z squared",
+    "decal bias tested against room alone": "object without m",
+    "decal bias per unit, own NaN test": "per unit, own test",
+    "decal bias with tan of degrees, own NaN test": "degrees, own test",
+    "decal bias with sin for tan": "sine",
+    "decal bias NaN where an offset fits": "nan",
+    "gap with d = n/z": "infinite far, depth",
+    "gap in float32 without the far plane's factor": "infinite far, slope",
+    "near with a step of 1/bits": "1/bits",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",

@@ -235,6 +235,21 @@ def test_r311_decal_bias_takes_every_offset_between_its_bounds_with_the_right_si
     said = apply_hints(db.explain_offset(args, e, e / 10), db.HINTS)
     assert "m (yours to work out)" in said and "steps behind" not in said
     assert db.num(db.slope(*args[:5])) not in said
+    # r325 C1: so does the figure, on the same failure (its key gave m in steps)
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises import tries
+
+    tries.forget_hints("decal_bias")
+    fig, ax = plt.subplots()
+    db.draw_offset(ax, db.bias_cases()[0], e / 10)
+    key = " ".join(t.get_text() for t in ax.get_legend().get_texts())
+    assert "m yours to work out" in key and db.num(db.slope(*args[:5]) / db.step(24)) not in key
+    plt.close(fig)
+    # r325 M1: room between r + m and r + 2m, where a test of r + m against room alone passes
+    for _, args, e in db.bias_cases()[10:12]:
+        r, m = db.step(args[5]), db.slope(*args[:5])
+        assert np.isnan(e) and r + m < db.room(args[0], args[3], args[4], args[7]) < r + 2 * m
     text = _task_text("decal_bias_task")
     assert all(w in text for w in ("SlopeScaledDepthBias", "glPolygonOffset", "vkCmdSetDepthBias"))
     assert "slope factor of 1" in text and "np.nan" in text

@@ -13,12 +13,14 @@ both rounded to a ``bits``-bit unorm buffer, the strict test keeping the wall at
 error is a worst-case budget, the one a slope factor of 1 pays for (the decal's triangles set
 up from their own vertices, off the wall's plane by up to a pixel's depth change), not lesson
 05b §5's measurement: its decal shares the wall's plane and rasteriser, so the two depths come
-out a rounding apart, the case m → 0 of this model, where a step or a few suffice (r316 C4).
+out a rounding apart: this model with m replaced by the few steps that set-up errs by, not
+m = 0, where one step would do (r316 C4, r325 C2).
 The decal wins at every pixel iff |o| ≥ r + m; an opaque object ``clear`` in front of the wall
 on the view axis, drawn before the decal (a tie keeps it), still hides the decal iff
 |o| ≤ z_win(z) − z_win(z − clear) − m (r316 item 3: llvmpipe's r of two steps passes). When
 that is less than r + m no offset does both, and the answer is NaN (:data:`TIGHT`: a solution
-ignoring ``clear`` fails there). With reverse-Z (1 − z_win stored, greater wins) the sign
+ignoring ``clear`` fails there; :data:`BAND`: room between r + m and r + 2m, where a test of
+r + m against room alone fails). With reverse-Z (1 − z_win stored, greater wins) the sign
 flips.
 
 An answer is judged by that criterion, not closeness: any offset of the right sign between
@@ -66,6 +68,13 @@ TIGHT = (
     (10.0, 60.0, 6.01e-4, 0.1, 1000.0, 24, False), (5.0, 70.0, 1e-3, 0.5, 200.0, 16, True),
 )  # fmt: skip
 TIGHT_SHARE = 0.8
+#: Settings whose object leaves room between r + m and r + 2m (m > r there, so this share of
+#: r + m): room − m < r + m, NaN again, where a test of r + m against room alone (the decal's
+#: own m toward the object forgotten) returns r + m and the decal shows through (r325 M1).
+BAND = (
+    (300.0, 80.0, 6.01e-4, 0.1, 1000.0, 24, False), (50.0, 45.0, 6.01e-4, 0.1, 1000.0, 24, True),
+)  # fmt: skip
+BAND_SHARE = 1.5
 #: float32's relative rounding, allowed at both ends: a tilt held in float32 moves tan θ by
 #: up to 3e-6 of itself at 88° (tan's relative slope there is 1/(sin θ cos θ) ≈ 29).
 ROUNDING = 1e-5
@@ -144,7 +153,8 @@ def _case(setting, label=None, share=ROOM + 1):
 
 @cache
 def _fixed_cases():
-    return [_case(s) for s in SETTINGS] + [_case(s, share=TIGHT_SHARE) for s in TIGHT]
+    return ([_case(s) for s in SETTINGS] + [_case(s, share=TIGHT_SHARE) for s in TIGHT]
+            + [_case(s, share=BAND_SHARE) for s in BAND])  # fmt: skip
 
 
 def bias_cases():
@@ -178,25 +188,45 @@ def same_offset(got, expected, args=None) -> bool:
 
 
 def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, float]:
-    """The offsets typical slips give (each one change), signed as the case needs."""
+    """The offsets typical slips give (each one change), signed as the case needs: NaN where
+    no offset fits (the right test), and for a slip of r or m also by the student's own test,
+    ``r' + m' > room − m'`` (``…, own test``: r325, a complete solution whose NaN fires on
+    its own wrong m was told "a 0/0")."""
     r, m = step(bits), slope(z, tilt, pixel, near, far)
     sign = 1.0 if reverse else -1.0
-    tight = impossible((z, tilt, pixel, near, far, bits, reverse, clear))
+    args = (z, tilt, pixel, near, far, bits, reverse, clear)
+    tight = impossible(args)
+    space = room(z, near, far, clear)
+    rad = math.radians(tilt)
+
+    def offset(o):  # the right test for NaN, the slip in the offset alone
+        return math.nan if tight else sign * o
+
+    def own(r_, m_):  # the slip's r' and m' in the test for NaN too
+        return math.nan if r_ + m_ > space - m_ else sign * (r_ + m_)
+
+    degrees = m * math.tan(tilt) / math.tan(rad) if 0 < tilt < 90 else None
+    per_unit = m / pixel
+    sine = m * math.sin(rad) / math.tan(rad) if 0 < tilt < 90 else None
     return {
         "clear ignored": sign * (r + m) if tight else None,
-        "z squared": sign * (r + m / z),
-        "sign": -sign * (r + m),
-        "reverse ignored": -(r + m),
-        "no tie": sign * m,
-        "no slope": sign * r,
-        "in steps": sign * (1 + m / r),
-        "view slope": sign * (r + pixel * z * math.tan(math.radians(tilt))),
-        "degrees": sign * (r + m * math.tan(tilt) / math.tan(math.radians(tilt)))
-        if 0 < tilt < 90
-        else None,
-        "per unit": sign * (r + m / pixel),
-        "2^bits": sign * (1.0 / 2**bits + m),
-        "half": sign * (r / 2 + m),
+        # the object's test without the decal's own m toward it: r + m > room
+        "object without m": sign * (r + m) if tight and r + m <= space else None,
+        "z squared": offset(r + m / z),
+        "sign": math.nan if tight else -sign * (r + m),
+        "reverse ignored": math.nan if tight else -(r + m),
+        "no tie": offset(m),
+        "no slope": offset(r),
+        "in steps": offset(1 + m / r),
+        "view slope": offset(r + pixel * z * math.tan(rad)),
+        "degrees": None if degrees is None else offset(r + degrees),
+        "degrees, own test": None if degrees is None else own(r, degrees),
+        "per unit": offset(r + per_unit),
+        "per unit, own test": own(r, per_unit),
+        "sine": None if sine is None else offset(r + sine),
+        "sine, own test": None if sine is None else own(r, sine),
+        "2^bits": offset(1.0 / 2**bits + m),
+        "half": offset(r / 2 + m),
     }
 
 
@@ -205,12 +235,23 @@ def _m_said(m, r) -> str:
     return f"m = {num(m)} ({num(m / r)} steps)"
 
 
+_DEGREES = ": the tilt is in degrees and the tangent takes radians: tan(np.radians(tilt))"
+_PER_UNIT = (": your slope is per unit of x/z, not per pixel (the `* pixel` is missing): one "
+             "pixel spans `pixel` of x/z, so MaxDepthSlope is that slope times pixel")  # fmt: skip
+_SINE = (": you took sin θ where the slope needs tan θ: a point seen at s = x/z on the wall "
+         "tilted by θ lies at 1/z' = (1 − s tan θ)/z, so the depth changes per pixel with tan θ")  # fmt: skip
+
 MISTAKES = {
     "clear ignored": lambda a, e, g: (
         f": your offset ignores `clear`: the object only {num(a[7])} in front leaves room − m "
         "less than r + m, so no offset draws the decal over the wall and keeps the object in "
         "front: return NaN here (an offset this size puts the decal in front of the object)"
     ),
+    "object without m": ": your test for NaN compares r + m with room alone: at its nearest "
+    "the decal lies m in front of the wall, so it stays behind the object only if "
+    "|o| ≤ room − m, and no offset fits unless r + m ≤ room − m (room ≥ r + 2m). Here room "
+    "lies between r + m and r + 2m: return NaN (an offset of r + m shows the decal through "
+    "the object)",
     "z squared": ": your slope is the wall's divided by z: dz_win/dz = f n/((f − n) z²) is "
     "per unit of view depth, and one pixel moves the wall's view depth by z · tan θ · pixel "
     "(1/z' = (1 − s tan θ)/z), so one z cancels",
@@ -229,8 +270,8 @@ MISTAKES = {
     "both depths then store one value, and a tie keeps the wall (drawn first; the test is "
     "strict): one step r more makes the decal strictly nearer, |o| = r + m",
     "no slope": lambda a, e, g: (
-        f": you left out the slope term: one step r covers a tie, the lesson's decal on the "
-        f"wall's own plane (its depths a rounding apart), not this task's budget. Here the two "
+        f": you left out the slope term: one step r covers a tie of two equal depths (the lesson's "
+        f"decal, on the wall's own plane, needed a few for its rounding), not this task's budget. Here the two "
         f"depths at a pixel can differ by one pixel's slope {_m_said(slope(*a[:5]), step(a[5]))}"
         ", so |o| = r + m"
     ),
@@ -238,9 +279,12 @@ MISTAKES = {
     "window depth: one step is r = 1/(2^bits − 1), and o = units·r + factor·m is a depth",
     "view slope": ": you took the slope of the view depth z per pixel (pixel·z·tan θ), not of "
     "the window depth the buffer stores: multiply by dz_win/dz = f n/((f − n) z²)",
-    "degrees": ": the tilt is in degrees and the tangent takes radians: tan(np.radians(tilt))",
-    "per unit": ": your slope is per unit of x/z, not per pixel: one pixel spans `pixel` of "
-    "it, so MaxDepthSlope is that slope times pixel",
+    "degrees": _DEGREES,
+    "degrees, own test": _DEGREES,
+    "per unit": _PER_UNIT,
+    "per unit, own test": _PER_UNIT,
+    "sine": _SINE,
+    "sine, own test": _SINE,
     "2^bits": lambda a, e, g: (
         f": you took r as 1/2^{a[5]}: the largest stored integer, 2^{a[5]} − 1, holds depth 1, "
         f"so one step is 1/(2^{a[5]} − 1), and yours falls short of a step by a hair: at the "
@@ -311,54 +355,80 @@ def _zero(args, expected, got) -> bool:
 ZERO = Mistake("zero", ": no offset: the two depths tie or the wall wins", fits=_zero, symptom=True)
 
 
+def _nan_with_room(args, expected, got) -> bool | None:
+    return (not impossible(args)) if bool(np.isnan(got)) else None
+
+
+#: r325: NaN is a legal answer here ("no offset works"), so an unnamed NaN is not "a 0/0"
+NAN = Mistake(
+    "nan", ": NaN means “no offset works” here, and this case has one: r + m ≤ room − m. "
+    "Your test for NaN fires where it should not: check the m it uses", fits=_nan_with_room,
+    symptom=True,
+)  # fmt: skip
+
+
+def gives_same_offset(got, answer, args) -> bool:
+    """A mistake gives the student's answer: NaN for NaN (no offset fits), else as
+    :func:`.reverse_z.gives_same_gap`."""
+    if answer is not None and np.isnan(answer) and np.isnan(got):
+        return True
+    return gives_same_gap(got, answer, args)
+
+
 def draw_offset(ax, case, got):
-    """|o| beyond the pixel's depth slope m, in steps of the buffer (linear: a missing tie step
-    is one step, which a log axis of |o| hid beside thousands of steps of m): the accepted
-    band, the smallest and yours (an arrow when it lies off the axis)."""
+    """|o| in steps of the buffer on a strip (symlog: one step beside thousands of m, where a
+    linear axis put 0, 1 and yours on the left spine, r325 FIG1): the object's room, the
+    accepted band and the smallest, m, and yours. Until the hints are spent and while yours
+    fails, m and the bounds (which give it) are held back as the words hold them (r325 C1)."""
+    from . import tries
+
     _, args, expected = case
     lo, hi = bounds(*args)
-    s, m = 1.0 / step(args[5]), slope(*args[:5])
-    top = (hi - m) * s  # the most the object in front leaves, beyond m
-    if impossible(args):  # the object leaves less than a step beyond m: nothing to accept
-        artists = [ax.axvline(top, color="#2b7bba", label=f"the object: {num(top, 1.0)} "
-                              "steps beyond m, short of 1: no offset fits (NaN)")]  # fmt: skip
+    r, m = step(args[5]), slope(*args[:5])
+    space = room(args[0], args[3], args[4], args[7])
+    ok = got is not None and bool(np.isfinite(got)) and same_offset(got, expected, args)
+    full = tries.hints_spent("decal_bias") or ok
+    artists = [ax.axvline(space / r, color="#555555", label=f"the object: room = "
+                          f"{num(space / r)} steps")]  # fmt: skip
+    xs = [0.0, space / r]
+    if not full:
+        artists += ax.plot([], [], " ", label="accepted: r + m to room − m (m yours to work out)")
+    elif impossible(args):
+        artists.append(ax.axvline(hi / r, color="#2b7bba", linestyle="-.", label=f"room − m = "
+                                  f"{num(hi / r, lo / r)} steps < r + m: no offset fits (NaN)"))  # fmt: skip
+        xs.append(hi / r)
     else:
-        artists = [ax.axvspan(1.0, top, color="#d9ecd9", lw=0, zorder=0,
-                              label=f"accepted: 1 to {num(top, 1.0)} steps beyond m")]  # fmt: skip
-        artists.append(ax.axvline((abs(expected) - m) * s, color="#2b7bba",
-                                  label="smallest (expected): one step beyond"))  # fmt: skip
-    artists.append(ax.axvline(0.0, color="#888888", linestyle=":",
-                              label=f"m = {num(m * s)} steps: the decal's depth at worst"))  # fmt: skip
-    left, right = min(-1.0, 1.1 * top), max(2.0, 1.3 * top)  # a tight case's object: left of m
+        artists.append(ax.axvspan(lo / r, hi / r, color="#d9ecd9", lw=0, zorder=0,
+                                  label=f"accepted: {num(lo / r, hi / r)} to {num(hi / r, lo / r)}"
+                                  " steps (r + m to room − m)"))  # fmt: skip
+        artists.append(ax.axvline(lo / r, color="#2b7bba", label="smallest (expected): r + m"))
+    if full:
+        artists.append(ax.axvline(m / r, color="#888888", linestyle=":",
+                                  label=f"m = {num(m / r)} steps: the decal's depth at worst"))  # fmt: skip
+        xs += [lo / r, m / r]
     if got is not None and np.isfinite(got) and got != 0:
-        colour = "#7fbf7f" if same_offset(got, expected, args) else "#d7301f"
-        x = (abs(got) - m) * s
-        beyond = f"{x:.4g}" if abs(x) >= 1e-6 else "0"  # float64's residue of m − m is 0
-        label = f"yours {got * s:.6g} steps" + (
-            ": wrong sign" if (got > 0) != bool(args[6]) else f", {beyond} beyond m"
-        )
-        if -10 <= x <= 10 * right:
-            right, left = max(right, 1.1 * x), min(left, 1.1 * x)
-            artists.append(ax.axvline(x, color=colour, linestyle="--", label=label))
-        else:  # off this axis: said at the side it lies on
-            at, ha, arrow = (right, "right", "→") if x > 0 else (left, "left", "←")
-            artists += ax.plot([], [], " ", label=label)
-            artists.append(ax.text(at, 0.5, f"yours {arrow}", color=colour, ha=ha, va="center",
-                                   transform=ax.get_xaxis_transform(), fontsize="small"))  # fmt: skip
+        x = abs(got) / r
+        wrong_sign = (got > 0) != bool(args[6])
+        label = f"yours {num(got / r)} steps" + (": wrong sign, drawn as |o|" if wrong_sign else "")
+        artists.append(ax.axvline(x, color="#7fbf7f" if ok else "#d7301f", linestyle="--",
+                                  lw=2, label=label))  # fmt: skip
+        xs.append(x)
     elif got is not None:
         artists += ax.plot([], [], " ", label=f"yours {num(got)}: not drawn")
-    ax.set_xlim(left, right)
+    ax.set_xscale("symlog", linthresh=1.0)
+    ax.set_xlim(0.0, 2.0 * max(xs + [2.0]))
     ax.set_yticks([])
-    ax.set_xlabel(f"|offset| − m, in steps of the {args[5]}-bit buffer (1/(2^{args[5]} − 1))")
+    ax.set_box_aspect(0.3)  # a number line, not a box (r325 FIG1)
+    ax.set_xlabel(f"|offset| in steps of the {args[5]}-bit buffer")
     # under the axes, not beside them: its labels are long, and beside a notebook column's
     # figure they made it 1,040 px wide (the column holds 940)
-    artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.3)))
+    artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.8)))
     return artists
 
 
 DECAL_BIAS = Exercise(
     "decal_bias", bias_cases, as_number, same_offset, explain_offset, _rule,
-    variant_mistakes(_variants, MISTAKES, (ZERO,)), draw=draw_offset, match=gives_same_gap,
+    variant_mistakes(_variants, MISTAKES, (ZERO, NAN)), draw=draw_offset, match=gives_same_offset,
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),
     hints=HINTS,

@@ -250,14 +250,15 @@ def precision_of(got) -> tuple[str, float]:
 def rounding_bound(spec: Exercise, args, expected, got) -> float:
     """How far a float32 (float16) computation of this case may be off: ``FLOAT32_OPS``
     roundings of the case's scale (:attr:`.exercise.Exercise.float32`, else the largest
-    number of the right answer), at least of 1."""
+    number of the right answer), at least of :attr:`.exercise.Exercise.float32_floor` (1
+    unless the exercise's answers are far below it)."""
     _, eps = precision_of(got)
     if spec.float32 is not None:
         scale = spec.float32(args)
     else:
         e = _numbers(expected)
         scale = float(np.max(np.abs(e), initial=0.0)) if e is not None and e.size else 0.0
-    return FLOAT32_OPS * eps * max(float(scale or 0.0), 1.0)
+    return FLOAT32_OPS * eps * max(float(scale or 0.0), spec.float32_floor)
 
 
 def answer_error(expected, got) -> float | None:

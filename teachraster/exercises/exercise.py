@@ -183,6 +183,10 @@ class Exercise:
         ``float32(args)``: the magnitude whose float32 rounding bounds the error of a float32
         computation of this case (coordinates squared for an edge function far from the
         origin). float32 is named only for an answer within that rounding.
+    float32_floor : float
+        The least scale that rounding is taken of (1: numbers of order 1, coordinates; 0:
+        the scale alone, for answers far below 1, reverse-Z's Δz of 1e-8, where a floor of 1
+        called 6× errors float32's rounding: r325 C3).
     float32_words : callable, optional
         ``float32_words(args, expected, got)``: words for float32 on this case (None: the
         general words).
@@ -274,6 +278,7 @@ class Exercise:
     float32: Callable | None = None
     float32_words: Callable | None = None
     float32_makes_inf: bool = False
+    float32_floor: float = 1.0
     constant: Callable | None = None
     answers: Sequence[PackageAnswer] = ()
     draw: Callable | None = None

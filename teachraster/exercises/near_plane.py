@@ -160,6 +160,7 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
     with np.errstate(all="ignore"):
         return {
             "2^bits": solve(1.0 / 2**bits, far),
+            "1/bits": solve(1.0 / bits, far),  # r325: the bits, not the values they hold
             "ndc": solve(2 * step, far),
             "infinite far": step * z * z / gap,
             "linear": far - gap / step,
@@ -191,6 +192,8 @@ HALF_STEP = (
 MISTAKES = {
     "2^bits": "you took the buffer's step as 1/2^bits; a unorm buffer's largest value is "
     "2^bits − 1, which stores depth 1, so the step is 1/(2^bits − 1)",
+    "1/bits": "you took the buffer's step as 1/bits: `bits` bits hold 2^bits values, 0 to "
+    "2^bits − 1, evenly over depth 0 to 1, so one step is 1/(2^bits − 1)",
     # r295 M-1: half the gap gives the very same n (2·step/gap = step/(gap/2))
     "ndc": "you took a step of 2/(2^bits − 1), as if the buffer stored NDC depth in [−1, 1], "
     "or you halved the gap (half a step of margin on each side?): either gives this n. The "

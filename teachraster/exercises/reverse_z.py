@@ -148,6 +148,8 @@ def _variants(z, near, far) -> dict[str, float]:
         "gl ndc": _nearer_step(2 * d - 1) / 2 / slope,
         "infinite far": _nearer_step(near / z) * z * z / near,
         "infinite far, slope": step * z * z / near,
+        # r325: d = n/z stored, the finite far plane's slope kept
+        "infinite far, depth": _nearer_step(near / z) / slope,
         "step in depth": step,
         "times slope": step * slope,
         "z not squared": step * z * (1 - near / far) / near,
@@ -190,6 +192,9 @@ MISTAKES = {
     "GL_ZERO_TO_ONE) (lesson 05b, §4). The buffer here stores d itself, in [0, 1]",
     "infinite far": _INFINITE,
     "infinite far, slope": _INFINITE,
+    "infinite far, depth": "you stored d = n/z, reverse-Z for a far plane at infinity, and "
+    "kept this far plane's slope: with this far plane d = (n/z − n/f)/(1 − n/f), and "
+    "the buffer's step is the one at that d",
     "step in depth": "you returned the step in stored depth; Δz is a distance in view "
     "depth: that step divided by |dd/dz|",
     "times slope": "you multiplied the step by |dd/dz|; divide it: Δz = step / |dd/dz|",
@@ -291,7 +296,7 @@ def _zoom(ax, args, band, expected, got) -> list:
     an arrow to it, when it lies off this scale)."""
     first, last = band
     z = args[0]
-    inset = ax.inset_axes([1.06, 0.1, 0.5, 0.18])
+    inset = ax.inset_axes([1.06, 0.08, 0.62, 0.22])
     left, right = first - 0.5 * (last - first), last + 0.5 * (last - first)
     artists = [inset.axvspan(first, last, color="#7fbf7f", lw=0)]
     artists += inset.plot([expected], [0.5], "o", color="#2b7bba", ms=6)
@@ -310,15 +315,17 @@ def _zoom(ax, args, band, expected, got) -> list:
     inset.set_yticks([])
     inset.set_xticks([first, last])
     inset.set_xticklabels([_num(first, last), _num(last, first)], fontsize="x-small")
-    inset.set_title(f"accepted Δz at z = {num(z)}, zoomed", fontsize="x-small", pad=3)
+    # from the inset's left edge rightwards: centred, it ran over the main axes (r325 FIG2)
+    inset.set_title(f"accepted Δz at z = {num(z)}, zoomed", fontsize="x-small", pad=3, loc="left")
     return artists + [inset]
 
 
 REVERSE_Z_GAP = Exercise(
     "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
     variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
-    # float32's rounding is relative to Δz itself (1e-8 and less), not to 1
-    float32=lambda args: expected_gap(*args),
+    # float32's rounding is relative to Δz itself (1e-8 and less), not to 1 (r325 C3: floored
+    # at 1, a slope slip 11 % off and 6× errors were called float32's rounding)
+    float32=lambda args: expected_gap(*args), float32_floor=0.0,
     answers=(
         PackageAnswer(expected_gap, words=CHECKER_WORDS),
         PackageAnswer(depth_resolution, what="float32 reverse-Z's Δz, this very answer",
