@@ -625,10 +625,12 @@ def test_03_r226_direct3d_sets_up_from_snapped_positions_in_float32():
     )
     assert quote in md.replace("> ", "") and "§3.2.4 *Fixed Point Integers*" in md
     assert "§15.16.2" in md and "16.8 fixed point, §15.16 *Rasterizer Precision*" in md
-    # float32: the specification's words on its interpolators (§5.9.1.2), not §3.1's rules,
-    # which cover 16-, 32- and 64-bit floats alike
+    # float32: §15.16.2 sends the interpolators to §3.1's rules, whose overview (§3.1.1, not
+    # the 16- and 64-bit formats of §3.1) puts every computation under IEEE 754 single
+    # precision (review r320 S7); §5.9.1.2's words on its interpolators beside it
+    assert '"follow the Floating Point Rules (3.1)" (§15.16.2), under which' in md
+    assert '32-bit single precision floating point behavior" (§3.1.1;' in md
     assert '"single precision floating point texture coordinates (and the associated' in md
-    assert '"follow the Floating Point Rules (3.1)" (§15.16.2): float32' not in md
     assert "read literally" in md.lower() and "`subPixelPrecisionBits`" in md
     # the float32 table: Direct3D's largest render target, offsets on its 1/256-px grid
     assert ns.side == 16_384 and ns.offsets32[-1] == ns.side - 16
@@ -728,7 +730,7 @@ def test_03_r258_true_colours_rules_table_and_what_the_shader_receives():
         assert column in header, column
     rows = [line for line in table.splitlines() if line.startswith("| ") and "---" not in line]
     assert len(rows) == 5 and all(line.count(" | ") == 5 for line in rows)
-    for cite in ("§14.6.1", "§3.2.4, §15.16.2", "§13.6 *Flatshading*", "`VK_EXT_provoking_vertex`",
+    for cite in ("§14.6.1", "§3.2.4, §3.4.1, §15.16.2", "§13.6 *Flatshading*", "`VK_EXT_provoking_vertex`",
                  "§4.5 *Interpolation Qualifiers*", "*Interpolation Decorations*",
                  "`subPixelPrecisionBits`", "*leading vertex*"):  # fmt: skip
         assert cite in table, cite
@@ -752,3 +754,64 @@ def tr_lambda1(ns) -> float:
     import teachraster as tr
 
     return float(tr.barycentric(ns.xy, ns.p)[0])
+
+
+def test_03_r320_every_table_cell_cites_and_the_sheet_is_a_prediction():
+    """r320 03: M1: each cell of the standards table names its section or source: Direct3D's
+    leading vertex (D3D11.3 §8.14) and its pixel centre (§3.5.5), the llvmpipe cells (a Mesa
+    file or the course's own measurement), Vulkan's single-sample centre; M2: where the curved
+    sheet rises above the affine plane is asked (q_sheet, a PredictPixels) before the view and
+    the text that say it, which are held; S1: section 1's formula cell shown, its plots folded;
+    S3, S4: superscripts and minus signs."""
+    import json
+    import re
+
+    from notebook_runs import executed, streams
+
+    import teachraster as tr
+
+    ns = lesson("03_barycentric_and_plane_equations")
+    path = NOTEBOOK_DIR / "03_barycentric_and_plane_equations.ipynb"
+    cells = json.loads(path.read_text())["cells"]
+    text = ["".join(c["source"]) for c in cells]
+    by_id = {c["id"]: t for c, t in zip(cells, text)}
+    table = by_id["c03-rules-table"]
+    rows = [line.split(" | ")[1:] for line in table.splitlines() if line.startswith("| ")][1:]
+    for row in rows:  # the columns GL, D3D, Vulkan and llvmpipe each cite
+        for cell in row[:4]:
+            assert re.search(r"§\d|\*[A-Z][^*]+\*|`[\w.]+\.c`|`tests/", cell), cell
+    for cite in ("§8.14 *Leading Vertex*", "§3.5.5", "`lp_state_setup.c`", "`lp_bld_interp.c`",
+                 "`test_attributes_follow_the_unsnapped_vertices`", '"the center of the fragment area"',
+                 "the GL–Direct3D difference cannot be shown here"):  # fmt: skip
+        assert cite in table, cite
+    assert "dcl_input" not in table and "anywhere within the fragment" not in table
+    # M2: the answer is the package's, on v2's side of the line from v3 to e (affine f = f3)
+    assert ns.w_far == 8.0 and ns.above_affine.sum() == 32 and ns.below_affine.sum() == 23
+    assert ns.sheet_covered.sum() == 55 and np.isclose(ns.e_along, 3 / 7)
+    lam = tr.barycentric(ns.xy, np.column_stack([np.nonzero(ns.sheet_covered)[1] + 0.5,
+                                                 np.nonzero(ns.sheet_covered)[0] + 0.5]))  # fmt: skip
+    edge_value = (lam[:, 0] * ns.f[0] + lam[:, 1] * ns.f[1]) / (lam[:, 0] + lam[:, 1])
+    assert np.array_equal(edge_value > ns.f[2], ns.above_affine[ns.sheet_covered])
+    ids = [c["id"] for c in cells]
+    ask = ids.index("q-sheet")
+    # its explanation's numbers: the counts, and where the rise is largest (x, y of the centre)
+    assert 'explain=f"{above_affine.sum()} of the {sheet_covered.sum()} covered pixels' in (
+        " ".join(text[ask].split())
+    )
+    assert (ns.rise_at[1] + 0.5, ns.rise_at[0] + 0.5) == (6.5, 10.5)
+    assert ids[ask + 1 : ask + 3] == ["c18c-surfaces", "c18c-surfaces-held"]
+    assert all(text[k].startswith("q_sheet.hold()") for k in (ask + 1, ask + 2))
+    assert "PredictPixels(" in text[ask] and "answer=above_affine" in text[ask]
+    before = " ".join(text[:ask])
+    assert "sags" not in before and "bulges" not in before and "sags *below*" in text[ask + 2]
+    printed = streams(executed("03_barycentric_and_plane_equations").notebook())
+    assert "f above the affine plane at 32, below at 23" in printed
+    assert f"largest rise {np.nanmax(ns.sheet_gap):.3f}" in printed
+    # S1: the formula cell shown, the plotting cells folded; p's formula still held and folded
+    assert not cells[ids.index("c03")]["metadata"].get("jupyter")
+    for cid in ("c02a-areas", "c06", "c78ad05a", "c09b-shared-edge", "c03-point-held"):
+        assert cells[ids.index(cid)]["metadata"]["jupyter"]["source_hidden"] is True, cid
+    # S3, S4
+    assert "<sup>" not in by_id["recentre_predict"].split("explain=")[0]
+    assert "direct, −(Ax + By + D)/C" in printed and "absolute −(Ax+By+D)/C" in printed
+    assert "attribute values −2.9 to 7.3" in printed

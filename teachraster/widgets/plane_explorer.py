@@ -145,6 +145,20 @@ def round_levels(lo: float, hi: float) -> np.ndarray:
     return np.array([float(f"{v:.12g}") + 0.0 for v in inner])  # 0.30000000000000004 -> 0.3
 
 
+def fixed(value: float, places: int = 4) -> str:
+    """``value`` to ``places`` decimals as the panel prints it, never a negative zero: with
+    v2 straight below v1, M's corner is −0.0 (or −1e-17) and printed "-0.0000" (review r320
+    S5); a constant f gave −0.0 for dx, dy alike.
+
+    Examples
+    --------
+    >>> fixed(-0.0), fixed(-1e-17), fixed(-1.04762, 4), fixed(109.0, 3)
+    ('0.0000', '0.0000', '-1.0476', '109.000')
+    """
+    text = f"{value:.{places}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0 else text
+
+
 def level_text(levels) -> list[str]:
     """The levels as the labels and the numbers beside the figure write them: as many
     decimals as the step needs, a minus sign for a negative value.
@@ -537,16 +551,15 @@ class PlaneExplorer:
             contours = f"contour line (dashed) at f = {level_text(levels)[0]}"
         else:
             contours = "contour lines: none (f is constant)"
+        g_r, n4 = s["g_recentred"], fixed  # n4(v): four decimals, never "-0.0000"
         parts += [
             contours,
-            f"solution: g_x = {gx:.4f}, g_y = {gy:.4f}, g_0 = {g0:.4f}",
-            f"<b>M</b> = [[{m00:.4f}, {m01:.4f}], [{m10:.4f}, {m11:.4f}]] (once per triangle)",
-            "M · (f2 − f1, f3 − f1) = "
-            f"({s['g_recentred'][0]:.4f}, {s['g_recentred'][1]:.4f}) = (g_x, g_y)",
-            f"<b>A, B, C, D</b> = {A:.3f}, {B:.3f}, {C:.3f}, {D:.3f} "
-            f"(C = 2 × signed area = {s['area2']:.3f})",
-            # + 0.0: a constant f gives −0.0, which would print as "-0.0000"
-            f"dx = −A/C = {-A / C + 0.0:.4f}, dy = −B/C = {-B / C + 0.0:.4f}",
+            f"solution: g_x = {n4(gx)}, g_y = {n4(gy)}, g_0 = {n4(g0)}",
+            f"<b>M</b> = [[{n4(m00)}, {n4(m01)}], [{n4(m10)}, {n4(m11)}]] (once per triangle)",
+            f"M · (f2 − f1, f3 − f1) = ({n4(g_r[0])}, {n4(g_r[1])}) = (g_x, g_y)",
+            f"<b>A, B, C, D</b> = {fixed(A, 3)}, {fixed(B, 3)}, {fixed(C, 3)}, {fixed(D, 3)} "
+            f"(C = 2 × signed area = {fixed(s['area2'], 3)})",
+            f"dx = −A/C = {n4(-A / C)}, dy = −B/C = {n4(-B / C)}",
         ]
         return INFO_DIV + system + "<br>".join(parts) + "</div>"
 
