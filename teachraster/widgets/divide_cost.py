@@ -51,9 +51,11 @@ ERRORS = {"max error": "error", "mean error": "mean_abs_texels"}
 
 #: The slider's divide costs in cycles, 1 to 128: about a quarter of an octave apart, and
 #: holding the prices the lesson prints (1, 2, 4 from Maxwell to the A100, a current GPU's 8,
-#: the Pentium's 17, 128, and 30 and 40 either side of 16 attributes' limit of 31). A starting price not among them is
-#: added, so the slider starts exactly where it is asked to.
-DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 17, 20, 24, 30, 40, 48, 64, 80, 96, 128)
+#: the Pentium's 17, 128, and 30 and 32, 48 and 50 either side of 16 attributes' limits of
+#: 31 and 49 at the Pentium's and the GPU's prices, which lesson 06 asks the student to
+#: cross: review r329 S3). A starting price not among them is added, so the slider starts
+#: exactly where it is asked to.
+DIVIDE_CYCLES = (1, 1.5, 2, 3, 4, 5, 6, 8, 10, 12, 17, 20, 24, 30, 32, 40, 48, 50, 64, 80, 96, 128)
 #: The status line's font size (CSS px): the size of the chart's axis labels, read from the
 #: back of a room (review r228 FIG1: at JupyterLab's 13 px it could not be).
 STATUS_PX = 18
@@ -116,13 +118,13 @@ def cost_ticks(lo: float, hi: float) -> list[float]:
     """The cost axis' labelled values in [``lo``, ``hi``]: 1-2-5, and where the first of
     those lies over 1.5 times above ``lo``, one more below it at 1.5, 3 or 7 of a decade, so
     that the cheapest points have a label near them (at 32 attributes affine's 32 cycles
-    sat on an axis labelled from 50 only: review r243 FIG1). An axis under a decade long
-    that would carry fewer than four labels gets 1-1.5-2-3-5-7 (at 16 attributes the
-    Pentium's axis read 15, 20, 50, and the costs past 50 that the lesson compares had no
-    label near them: review r322 FIG2).
+    sat on an axis labelled from 50 only: review r243 FIG1). An axis under two decades long
+    that would carry fewer than five labels gets 1-1.5-2-3-5-7 (at 16 attributes the
+    Pentium's axis read 15, 20, 50, 100, and perspective's and N = 2's 79 cycles, the
+    break-even the lesson asks about, had no label near them: reviews r322 and r329 FIG).
 
-    >>> cost_ticks(24.6, 258.0), cost_ticks(1.5, 246.0)[:3], cost_ticks(14.0, 80.0)
-    ([30.0, 50.0, 100.0, 200.0], [2.0, 5.0, 10.0], [15.0, 20.0, 30.0, 50.0, 70.0])
+    >>> cost_ticks(24.6, 258.0), cost_ticks(1.5, 246.0)[:3], cost_ticks(14.0, 150.0)
+    ([30.0, 50.0, 70.0, 100.0, 150.0, 200.0], [2.0, 5.0, 10.0], [15.0, 20.0, 30.0, 50.0, 70.0, 100.0, 150.0])
     """
     decades = range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1)
 
@@ -130,7 +132,7 @@ def cost_ticks(lo: float, hi: float) -> list[float]:
         return [v for e in decades for m in subs if lo <= (v := round(m * 10.0**e, 9)) <= hi]
 
     ticks = at((1, 2, 5))
-    if hi < 10 * lo and len(ticks) < 4:
+    if hi < 100 * lo and len(ticks) < 5:
         return at((1, 1.5, 2, 3, 5, 7))
     if ticks and ticks[0] > 1.5 * lo:
         ticks = [v for v in at((1.5, 3, 7)) if v < ticks[0]][:1] + ticks

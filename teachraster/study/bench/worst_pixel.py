@@ -63,8 +63,8 @@ def check_doubling_cut(estimate, n: int = 32, size: int = 1024, errors=floor_err
     """Judge ``estimate``, the worst screen error (px) of the study's floor subdivided by ``n``
     at ``size``², against the worst at ``size``/2 and ``size``/4: does the cut it implies
     (from ``size``/2 to ``size``) exceed the one before, match it, or fall short, as measured?
-    Right when it moves the same way as the measurement, and by no more than the square law's
-    2 allows (+10 %). Prints the measured worst pixels, their steepest pieces and the verdict;
+    Right when it moves the same way as the measurement, and by no more than the mean's 2
+    allows (+10 %: on screen the mean goes like N² over the pixels across). Prints the measured worst pixels, their steepest pieces and the verdict;
     returns ``(right, verdict)``. ``errors`` is :func:`~.groups.floor_errors` (a cached one in
     tests).
 
@@ -98,8 +98,8 @@ def check_doubling_cut(estimate, n: int = 32, size: int = 1024, errors=floor_err
            "when a piece of N pixels covers half as much floor.")  # fmt: skip
     right = _trend(yours, before) == _trend(cut, before) and yours <= 2 * SAME
     if yours > 2 * SAME:
-        verdict = (f"Not quite: your estimate cuts it {yours:.2f}x, more than the square law's "
-                   "2 that even the mean only follows. " + why)  # fmt: skip
+        verdict = (f"Not quite: your estimate cuts it {yours:.2f}x, more than the 2 that even "
+                   "the mean only follows (it goes like N² over the pixels across). " + why)  # fmt: skip
     else:
         verdict = (f"{'Right' if right else 'Not quite'}: your cut, {yours:.2f}x, is "
                    f"{_trend(yours, before)} the {before:.2f}x before; the measured one, "
