@@ -2385,6 +2385,26 @@ def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     assert "cell 14" not in code and "§2's last paragraph sends you back" in code
 
 
+def test_11_r323_the_nan_view_is_shown_lit_and_stops_at_the_seam():
+    """r323 M1: the nan view was only counted, and the text called its pixels "a small fan
+    round one vertex: all of its triangles"; six visible triangles meet at that point, and only
+    the three using the broken vertex are lit, its twin across the texture seam is intact."""
+    import json
+
+    ns = lesson("11_debugging_a_frame")
+    lit_ids = set(ns.broken.triangle_id[ns.broken.overlay("nan") > 0].tolist())
+    assert lit_ids == set(ns.shown_by) and len(ns.shown_by) == 3
+    assert ns.twins == [ns.bad_vertex, 229] == [197, 229]
+    assert ns.seen_there == ns.at_point and len(ns.at_point) == 6
+    assert all(ns.bad_vertex not in ns.sphere_mesh.triangles[t] for t in set(ns.at_point) - lit_ids)
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    text = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
+    assert "small fan round one vertex" not in text and "half a fan" in text
+    assert "Six triangles meet at the broken point, all six visible" in text
+    assert "only the three that use vertex 197 are lit" in text and "second vertex, 229" in text
+    assert 'plot_overlay(axes[0], broken, "nan"' in text  # drawn, not only counted
+
+
 def test_11_overdraw_comes_from_drawing_without_culling():
     ns = lesson("11_debugging_a_frame")
     # "overdraw is 2 at every pixel it covers"; with cull="back": 1, no Hi-Z, same picture
@@ -2448,6 +2468,19 @@ def test_11_helper_share_counts_every_lane_launched():
     with np.errstate(invalid="ignore", divide="ignore"):
         launched = np.where(frac < 1, useful / (1 - frac), 0)
     assert np.isclose(1 - useful.sum() / launched.sum(), ns.share["textured_floor"])
+    # r323 C1: "median triangle" was a median over covered pixels (1,671 px: the floor's larger
+    # triangle); it is now one size per visible triangle, as printed (cells 26 and 28)
+    for f, sizes in ((ns.sphere, ns.tri_px["uv_sphere"]), (ns.floor, ns.tri_px["textured_floor"])):
+        ids = f.triangle_id[f.triangle_id >= 0]
+        assert len(sizes) == len(np.unique(ids))
+    assert sorted(ns.tri_px["textured_floor"]) == [57, 1671]  # all visible: one size each
+    assert np.median(ns.tri_px["uv_sphere"]) == 3
+    from notebook_runs import executed
+
+    printed = "".join(o.get("text", "") for c in executed("11_debugging_a_frame").notebook().cells
+                      if c.cell_type == "code" for o in c.outputs)  # fmt: skip
+    assert "2 visible triangles of 57 to 1,671 px, median 864 px" in printed
+    assert "median triangle" not in printed and all("visible triangles" in x for x in ns.q3_lines)
 
 
 def test_11_question_4_counts_tiles_as_lesson_10_names_them():

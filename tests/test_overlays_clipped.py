@@ -354,3 +354,25 @@ def test_overlay_colour_bar_lies_under_the_frame_when_asked():
             plot_overlay(ax, frame, "hi_z", orientation="sideways")
     finally:
         plt.close(fig)
+
+
+def test_a_sparse_views_key_shows_the_grey_its_zeros_are_drawn_in():
+    """Review r323 S3: the hi_z and nan views draw a covered pixel's 0 in a darker grey, but
+    their key's "0" had the background's lighter grey, which no 0 on the frame has; and an
+    empty view (hi_z at 4 samples) had a key up to a "1" that meant nothing."""
+    pytest.importorskip("matplotlib")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import plot_overlay
+    from teachraster.plotting.frame_debug import COVERED
+
+    for samples, top in ((1, 1), (4, 0)):
+        frame = tr.render(tr.get_scene("cube"), None, 64, 48, trace=True, samples=samples)
+        fig, ax = plt.subplots()
+        try:
+            art = plot_overlay(ax, frame, "hi_z")
+            assert tuple(art.image.cmap(0)[:3]) == COVERED
+            assert list(art.colorbar.get_ticks()) == list(range(top + 1))
+            assert "lighter grey: no triangle" in art.colorbar.ax.get_ylabel()
+        finally:
+            plt.close(fig)

@@ -87,9 +87,12 @@ def overlay_style(kind: str, values: np.ndarray):
     top = int(values.max(initial=0))
     base = mpl.colormaps[VALUE_CMAP if kind != "nan" else ERROR_CMAP]
     if top <= DISCRETE_LIMIT:
-        n = max(top, 1)
-        colours = [(*NOTHING, 1.0)] + [base(0.15 + 0.85 * i / max(n - 1, 1))
-                                                for i in range(n)]  # fmt: skip
+        # a sparse view draws its 0 on the covered pixels only, in their grey, and the bar
+        # shows that grey (review r323 S3: its "0" had the background's, not on the frame);
+        # a view that is 0 everywhere gets a bar of 0 alone (a "1" there meant nothing)
+        n = top
+        zero = COVERED if kind in SPARSE else NOTHING
+        colours = [(*zero, 1.0)] + [base(0.15 + 0.85 * i / max(n - 1, 1)) for i in range(n)]
         cmap = ListedColormap(colours[: n + 1])
         norm = BoundaryNorm(np.arange(-0.5, n + 1.0), cmap.N)
         step = max(1, -(-(n + 1) // 12))
@@ -145,7 +148,7 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None,
         covered = np.asarray(frame.coverage, dtype=bool)
         show_image(ax, np.where(covered, 1.0, np.nan), cmap=ListedColormap([COVERED]),
                    norm=Normalize(0.0, 1.0), zorder=0.5)  # fmt: skip
-        shown = np.where(covered & (values == 0), np.nan, shown)
+        shown = np.where(values > 0, shown, np.nan)  # 0: the covered grey or the background
     im = show_image(ax, shown, cmap=cmap, norm=norm)
     result = OverlayArtists(im)
     hiz = getattr(getattr(frame, "trace", None), "hiz", None)
@@ -161,7 +164,7 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None,
                                              orientation=orientation)  # fmt: skip
         label = overlay_label(kind, n_samples)
         if kind in SPARSE:
-            label += "\n(darker grey: covered, 0)"
+            label += "\n(lighter grey: no triangle)"
         result.colorbar.set_label(label, fontsize="small")
         result.colorbar.minorticks_off()  # a log bar's minor labels ("6 × 10⁰") crowd it
     share = helper_share(frame) if kind == "quad_overshading" else None
