@@ -218,6 +218,10 @@ def test_predictions_and_standards_numbers(ns, nsb):
     # MSAA with blending: the predicted alpha is the resolved one, not 1 (one factor pair)
     assert ns.k in (1, 2, 3) and abs(ns.resolved[3] - ns.resolved_alpha) < 1e-12
     assert ns.blended_alpha == 0.8125 and ns.resolved_alpha < 1  # c38's "alpha 0.8125"
+    # r332 P1: the answer read from the engine's frame, not a formula in the question's
+    # source; it is the per-sample blend's resolve: over's one factor pair for alpha too
+    a = ns.yellow_alpha
+    assert abs(ns.resolved_alpha - (ns.k * (a * a + (1 - a)) + 4 - ns.k) / 4) < 1e-12
     alphas = np.sort(ns.msaa.sample_color[ns.i, ns.j, :, 3])
     assert np.allclose(alphas, [0.8125] * ns.k + [1] * (4 - ns.k))
     blues = np.sort(ns.msaa.sample_color[ns.i, ns.j, :, 2])  # "its blue: 0.75 ... 1"
