@@ -120,6 +120,9 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     assert "shown = ~((rows == 1) & (offsets4[s, 1] < 0.5))" in sliver
     assert "y between 1 and 1.5" in sliver and "are left out" in sliver
     assert "in row 1 the samples at y =" not in sliver
+    # review r327 S2: the coordinate conventions are the axes' labels, not the question's text
+    assert "(y grows downward, " not in sliver and "the coordinates the axes give" in sliver
+    assert sliver.count('ax.set(xlabel=PIXEL_BORDERS, ylabel="y, down")') == 1
     assert "deferred shading" in flat and "G-buffer" in flat
 
 
