@@ -120,6 +120,9 @@ def test_lesson_08_review_r26_wording_and_held_answers():
     assert "shown = ~((rows == 1) & (offsets4[s, 1] < 0.5))" in sliver
     assert "y between 1 and 1.5" in sliver and "are left out" in sliver
     assert "in row 1 the samples at y =" not in sliver
+    # review r327 S2: the coordinate conventions are the axes' labels, not the question's text
+    assert "(y grows downward, " not in sliver and "the coordinates the axes give" in sliver
+    assert sliver.count('ax.set(xlabel=PIXEL_BORDERS, ylabel="y, down")') == 1
     assert "deferred shading" in flat and "G-buffer" in flat
 
 
@@ -782,7 +785,14 @@ def test_lesson_08_review_r230_resolve_averages_what_it_stores(ns):
     assert "lesson 12b's table says of it" in md
     # review r269 C1: the GPU's target stores codes (GL 4.6 §17.3.7); the simulator keeps light
     assert "it stores linear values" not in md
-    assert "A GPU's 8-bit sRGB target stores **codes**" in md and "§17.3.6–17.3.7" in md
+    assert "A GPU's 8-bit sRGB target stores **codes**" in md
+    # review r327 C2: GL promises the decode for blending (§17.3.6.1 Blend Equation, per sample
+    # by §17.3.10), not for the resolve: the main text says so, as its fold and the table do
+    assert "blends or resolves" not in md and "§17.3.6–17.3.7" not in md
+    assert ("blending decodes each sample to light and re-encodes it (GL 4.6 §17.3.6.1, §17.3.7, "
+            "with `GL_FRAMEBUFFER_SRGB`). The resolve averages light where Direct3D 11 promises "
+            "it; Vulkan recommends it, GL does not say (fold below)") in md  # fmt: skip
+    assert "| not promised (§18.3.1); blending decodes and encodes (§17.3.6.1, §17.3.7) |" in md
     # M4: the three APIs, each with its section
     assert '"Multisample resolve is performed in linear space" (D3D11.3 §5.6.6)' in md
     assert "*should* decode the samples before averaging and *must*" in md
@@ -848,6 +858,16 @@ def test_lesson_08_review_r230_sample_shading_positions_and_discrepancy(ns):
     assert "(the theorem under the chart says none can)" not in md
     assert "no pattern can reach $1/S$ at every angle" not in md
     assert min(ns.edge_slopes[k] for k in ("grid", "jittered", "random")) > -0.9
+    # review r327 C1: the last sentence says what the legend prints: the random-angle curves
+    # stay short of -1, the standard patterns on axis-aligned edges reach it
+    any_angle = [ns.edge_slopes[k] for k in ns.ANY_ANGLE.values()]
+    axis = ns.edge_slopes["standard, axis edges (S = 2-8)"]
+    assert min(any_angle) == ns.edge_slopes[ns.ANY_ANGLE[ns.steepest]] > -0.9
+    assert f"{axis:.2f}" in ("-0.99", "-1.00", "-1.01") and "none of them reaches" not in held
+    steepest, axis = (f"{k:.2f}".replace("-", "−") for k in (min(any_angle), axis))
+    assert (f"At random angles none reaches a slope of −1 (the steepest, {ns.steepest}, "
+            f"{steepest}); only the n-rooks standard patterns on axis-aligned edges do ({axis}, "
+            "$S$ = 2 to 8)") in held  # fmt: skip
     # S1
     (ask,) = [s for s in sources if "q_levels = PredictPixels(" in s]
     assert "The figure below" not in ask and "Check draws the three patterns' strips" in ask
@@ -1015,6 +1035,15 @@ def test_lesson_08_review_r240_patterns_taa_highlight_and_prose(ns):
     explain = " ".join(ns.levels_explain.split())
     assert "8 pixels: row 2, pixels 0, 6, 7, 8; row 3, pixels 14, 15, 16, 17." in explain
     assert "here 1 pixel(s) show ¼ or ¾ (4 levels against the standard pattern's 5)" in explain
+    # review r327 S1: a pixel that holds a pass goes with its own sample's side of the pass
+    assert "a pixel that holds a pass goes with the side its own sample on that row lies on" in (
+        explain
+    )
+    pattern = ns.standard4
+    for y, x in ns.std_crossed:
+        r, j = int(y), int(x)
+        (s,) = np.flatnonzero(np.isclose(pattern[:, 1], y - r))
+        assert ns.edge_standard.sample_coverage[r, j, s] == (j + pattern[s, 0] < x)
     # S: the summary keeps the conditions under which the positions are fixed
     summary = md.split("## Summary")[1]
     assert "fix the standard positions" not in summary
@@ -1264,7 +1293,15 @@ def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
             "all of it, so more samples reduce an edge's aliasing but never remove it (Pharr, "
             "Jakob and Humphreys, *Physically Based Rendering*, 4th ed., §8.1") in md  # fmt: skip
     assert "in Direct3D, llvmpipe and teachraster; GL and Vulkan leave it open" in md
-    assert 'Vulkan: "anywhere within the fragment" (*Interpolation Decorations*)' in md
+    # Vulkan's current wording (1.3.221 on; lesson 03's table), Direct3D's functional spec
+    assert "anywhere within the fragment" not in md and "dcl_input" not in md
+    assert (
+        'Vulkan: "an implementation-defined position within the fragment area" '
+        '(*Interpolation Decorations*; one sample: "the center of the fragment area")'
+    ) in md
+    assert ('Direct3D: "pixel-frequency interpolation-modes such as linear evaluate at the pixel '
+            'center" (D3D11.3 §3.5.5)') in md  # fmt: skip
+    assert 'with one sample per pixel "the center of the fragment area"' in md  # the table
     # S2: the same line as through (20, 3.5), once snapped; no other edge in rows 2-3
     a, b = tr.snap(np.array([ns.edge_from, ns.edge_to]))
     old = tr.snap(np.array([[0.0, 2.3], [20.0, 3.5]]))
@@ -1303,7 +1340,7 @@ def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
     for section in ("GLSL §4.5", "§14.3.1)", "§18.3.1", "§14.3.1.1", "§19.2.4", "§5.6.6", "§23.6"):
         assert section in table, section
     assert "`ResolveSubresource`" in table and "`sampleShadingEnable`" in table
-    assert "| not promised (§18.3.1;" in table and "| in linear light (§5.6.6) |" in table
+    assert "| not promised (§18.3.1);" in table and "| in linear light (§5.6.6) |" in table
     printed = streams(executed("08_antialiasing").notebook())
     if "no OpenGL here:" in printed:
         return
@@ -1345,7 +1382,11 @@ def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns)
     printed = streams(executed("08_antialiasing").notebook())
     if "no OpenGL here:" not in printed:
         assert ns.gl_same["§4's fan, 4-sample hub"] and ns.ties == 20
-        assert f"    {ns.ties} of them exactly on a spoke two triangles share (ties)" in printed
+        # review r327 S4: the line names its fan
+        assert (
+            f"    ties in the 4-sample-hub fan (on a spoke two triangles share): {ns.ties}"
+            in printed
+        )
     # S1: the numbers the sentence quotes, printed in cell 49's table
     e, split = ns.crawl_errors, ns.ghost_split
     alone, both = split["history, not reprojected, clamped"], split["history, reprojected, clamped"]
