@@ -353,6 +353,9 @@ def test_00_tour_numbers():
     # review r45 00-7: culling shown, not only named: half the fragments, the same picture
     assert 2 * ns.kept == ns.fragments and ns.same_picture
     assert {e.name for e in ns.frame.plan} >= {"clipping", "culling", "depth_test", "perspective"}
+    # review r333 M2: the llvmpipe comparison shown, not only claimed (where GL is there)
+    if ns.gl_ok:
+        assert ns.gl_same == ns.gl_ids.size == 320 * 240
 
 
 # -- 09 texture filtering --------------------------------------------------------------------------
