@@ -640,7 +640,7 @@ def test_03_r226_direct3d_sets_up_from_snapped_positions_in_float32():
     on_grid = [(ns.local + off) * 256 for off in ns.offsets32]
     assert all(np.array_equal(units, np.round(units)) for units in on_grid)
     assert 1.0 < ns.absolute32[-1] < 2.0 and 0.05 < ns.absolute32[-2] < 0.2
-    assert max(ns.recentred32) < 4 * ns.float32_gap  # "within 3 float32 steps"
+    assert max(ns.recentred32) < 4 * ns.float32_gap  # "within 3.1 float32 steps" (r330 C1)
     assert round(max(ns.recentred32) / ns.float32_gap) == 3
     code = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
     assert "dtype=np.float32" in code and "Evaluating $Ax + By + D$ then adds" in code
