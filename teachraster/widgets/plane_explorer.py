@@ -148,15 +148,18 @@ def round_levels(lo: float, hi: float) -> np.ndarray:
 def fixed(value: float, places: int = 4) -> str:
     """``value`` to ``places`` decimals as the panel prints it, never a negative zero: with
     v2 straight below v1, M's corner is −0.0 (or −1e-17) and printed "-0.0000" (review r320
-    S5); a constant f gave −0.0 for dx, dy alike.
+    S5); a constant f gave −0.0 for dx, dy alike. A negative value takes the minus sign
+    "−", as the lessons' text and the contour levels write it (review r330: "-1.0476").
 
     Examples
     --------
     >>> fixed(-0.0), fixed(-1e-17), fixed(-1.04762, 4), fixed(109.0, 3)
-    ('0.0000', '0.0000', '-1.0476', '109.000')
+    ('0.0000', '0.0000', '−1.0476', '109.000')
     """
     text = f"{value:.{places}f}"
-    return text[1:] if text.startswith("-") and float(text) == 0 else text
+    if text.startswith("-"):
+        return text[1:] if float(text) == 0 else "−" + text[1:]
+    return text
 
 
 def level_text(levels) -> list[str]:
