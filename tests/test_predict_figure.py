@@ -494,6 +494,17 @@ def test_the_answers_label_keeps_off_the_segment_the_marker_moves_along():
     assert _crosses(boxes[0], [segment]) and not _crosses(boxes[1], [segment])
 
 
+def test_the_answers_label_keeps_off_the_curve_the_reveal_draws():
+    """Review r330 FIG1 (lesson 03's q_weights): "the answer" lay across the middle of the
+    line λ1 = 0.6 that the reveal draws through the dot; the reveal curve's pieces are now
+    among the lines the label keeps clear of, after the marker's segment and keep_clear."""
+    data = {"along": [[0, 0], [1, 0]], "keepClear": [[[2, 2], [3, 3]]]}
+    got = call_js(("predict_figure",), [("labelLines", [data, [[0, 5], [1, 6], [2, 8]]]),
+                                        ("labelLines", [{}, None])])  # fmt: skip
+    assert got[0] == [[[0, 0], [1, 0]], [[2, 2], [3, 3]], [[0, 5], [1, 6]], [[1, 6], [2, 8]]]
+    assert got[1] == []
+
+
 def _crosses(box, segments) -> bool:
     """Whether a label's box (canvas pixels) lies across any of ``segments``."""
     for (ax, ay), (bx, by) in segments:

@@ -198,6 +198,13 @@ export function answerLabel(mine, truth, readout = null, height = Infinity, line
   return tries.find((p) => clear(p) && !crosses(p)) || tries.find(clear) || tries[0];
 }
 
+// the segments (data coordinates) "the answer" should keep clear of: the marker's segment,
+// PredictPoint's keep_clear and the curve the reveal draws, each of its pieces
+export function labelLines(data, revealCurve = null) {
+  const curve = (revealCurve || []).slice(1).map((p, k) => [revealCurve[k], p]);
+  return [...(data.along ? [data.along] : []), ...(data.keepClear || []), ...curve];
+}
+
 // the box "the answer" fills at the 18 px bold font (about 104 px wide), from its baseline
 // up (at 14 px the label came out at 10 px in a column at 1024 px: review r8, lesson 04 c3)
 export const ANSWER_FONT = "bold 18px sans-serif";
@@ -536,9 +543,10 @@ function mountPoint(root, data, host) {
       ctx.fill();
       const avoid = readoutBox(mine); // measured in the readout's font, before the label's is set
       ctx.font = ANSWER_FONT;
-      // the segment the marker moves along, and the figure's lines the label should not
-      // cover (PredictPoint's keep_clear: lesson 03's triangle edges, review r106 03-W2)
-      const lines = [...(data.along ? [data.along] : []), ...(data.keepClear || [])].map((s) => s.map(toPx));
+      // the segment the marker moves along, the figure's lines the label should not cover
+      // (PredictPoint's keep_clear: lesson 03's triangle edges, review r106 03-W2) and the
+      // curve the reveal draws (lesson 03's line λ1 = 0.6 ran under the label: review r330)
+      const lines = labelLines(data, known.revealCurve).map((s) => s.map(toPx));
       const { x, y, align } = answerLabel(mine, truth, avoid, canvas.height, lines);
       // on a white ground: the lines through the answer (the segment, the eye ray) crossed the
       // words and read "theranswer" (review r58 04-7)
