@@ -4864,7 +4864,8 @@ def test_07_review_r227_split_square_t_junction_and_the_gpu_far_away():
     # review r236 S-1: the gaps in the held text and the panels' titles, not in printed lines
     sparkle = _07_held_markdown(run, "q_gaps.hold()")
     assert "the 2 centres exactly on $AB$, (4, 4) and (7, 11), are gaps" in sparkle
-    assert "With $V$ exactly on $AB$, at (8, 6) (left), the mesh is watertight" in sparkle
+    # r338 S1: the point as x and y, beside pixels named (row, column)
+    assert "With $V$ exactly on $AB$, at $x = 8$, $y = 6$ (left), the mesh is watertight" in sparkle
     (tj,) = [" ".join(c.split()) for c in cells if c.startswith("**A T-junction.**")]
     assert "watertight only if $V$ lies *exactly* on $AB$" in tj and "only along" not in tj
     (gaps_held,) = [c for c in cells if c.startswith("q_gaps.hold()")]

@@ -195,6 +195,12 @@ def test_thousands_separators_are_read_where_the_answer_is_printed_with_them():
     whole.control.value = "1,024"  # a whole-number question reads thousands too
     assert whole.given == 1024 and not whole.check.disabled
     whole.close()
+    # review r339 S1: with a tolerance the verdict printed "11264 (± 500)" beside "11,264"
+    near = Predict("How many?", answer=11264, whole=True, tolerance=500, headless=False)
+    near.control.value = "3,000"
+    near.check.click()
+    assert "11,264 (± 500)" in near.feedback.value and "3,000" in near.feedback.value
+    near.close()
     with pytest.raises(ValueError, match="numeric"):
         Predict("Which?", ["a", "b"], answer="a", thousands=True)
 

@@ -447,7 +447,8 @@ class Predict(HoldsAnswer):
             return _number(self.answer, self.thousands)
         # one digit finer than the tolerance, no more (r105 08-5: "1.15849 (± 0.1)")
         digits = max(0, 1 - math.floor(math.log10(self.tolerance)))
-        return f"{_number(round(self.answer, digits))} (± {self.tolerance:g})"
+        # thousands as the lesson prints them (r339 S1: "11264 (± 500)" beside "11,264")
+        return f"{_number(round(self.answer, digits), self.thousands)} (± {self.tolerance:g})"
 
     def _verdict(self) -> str:
         """One HTML line: what the student said against the answer."""
