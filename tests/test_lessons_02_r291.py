@@ -103,3 +103,14 @@ def test_r328_ek_quoted_as_he_wrote_and_the_samples_entry_named():
     six = re.sub(r"\s+", " ", next(t for t in _texts() if t.startswith("## 6. Step through")))
     assert 'samples menu at "4 standard (rotated grid)"' in six
     assert "4 standard (rotated grid)" in SAMPLE_PATTERNS
+
+
+def test_r328_the_editor_keeps_room_for_its_readout_to_wrap():
+    """r328 02-3: entering the counter-clockwise triangle, the probe's line wrapped and the
+    figure jumped under the pointer; the readout keeps three lines' room from the start."""
+    from teachraster.widgets import TriangleEditor
+
+    ed = TriangleEditor(tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]]), 16, 16,
+                        method="halfplane", probe=(7.5, 7.5), comparison=False)  # fmt: skip
+    assert ed.info.layout.min_height == "calc(3 * var(--jp-widgets-inline-height, 28px))"
+    ed.close()
