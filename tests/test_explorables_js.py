@@ -1671,3 +1671,34 @@ def test_crack_explorer_zooms_the_stored_pair_on_the_larger_grid():
     assert np.array_equal(a32[:16, :16].ravel(), zoomed["a"])
     # zoomed, the cells are as large as on the 16 x 16 grid: the pair fills the panel
     assert g16["cell"] > g32["cell"]
+
+
+def test_one_row_shared_edge_leaves_v3_its_name_and_labels_stay_inside_the_grid():
+    """Review r328 02-FIG1: with v2 and v3 on one row, the centre left of v3 (on the edge's
+    line, beyond its end) drew "+0−" beside v3's ring and B letter, and "v3" stood on its
+    ring; a label of B's edge stood on the grid's bottom frame. That centre is quiet, the
+    name takes a place clear of the rings, letters and shown signs, and a label given the
+    grid's rectangle stays inside it."""
+    verts = [[2.5, 1.5], [13.5, 5.5], [5.5, 5.5], [14.5, 12.5]]  # key 3, Shift+Up x 8
+    cell, m, (W, H) = 50.0, {"left": 30, "top": 26}, (16, 14)
+    (scene,) = call_js(EDGES, [("edgeScene", [verts, W, H])])
+    (quiet,) = call_js(EDGES, [("quietCentres", [scene, verts])])
+    assert [5, 4] in quiet and [5, 14] in quiet  # a pixel beyond v3 and beyond v2
+    px = lambda x, y: [m["left"] + x * cell, m["top"] + y * cell]  # noqa: E731
+    v3 = px(*verts[2])
+    rings = [[*px(s["col"] + 0.5, s["row"] + 0.5), 0.42 * cell] for s in scene["shared"]]
+    letters = call_js(EDGES, [("badgeCentre", [scene, s["row"], s["col"], cell, m,
+                                               [px(*v) for v in verts]]) for s in scene["shared"]])  # fmt: skip
+    boxes = [[x - 11, y - 11, x + 11, y + 11] for x, y in letters]
+    grid, half = [*px(0, 0), *px(W, H)], [12.0, 9.5]
+    (at,) = call_js(EDGES, [("vertexNameAt", [v3, half, cell, grid, rings, boxes])])
+    box = [at[0] - half[0], at[1] - half[1], at[0] + half[0], at[1] + half[1]]
+    for cx, cy, r in rings:
+        near = np.hypot(max(box[0] - cx, 0, cx - box[2]), max(box[1] - cy, 0, cy - box[3]))
+        assert near > r + 1.5
+    assert not any(b[0] < box[2] and box[0] < b[2] and b[1] < box[3] and box[1] < b[3]
+                   for b in boxes)  # fmt: skip
+    # an edge along the grid's bottom row, its triangle above: the label goes inside the frame
+    a, b, centroid = px(4, 13.5), px(9, 13.5), px(6, 10)
+    (lab,) = call_js(EDGES, [("labelCentre", [a, b, centroid, [80.0, 10.0], cell, grid])])
+    assert grid[1] + 10 <= lab[1] <= grid[3] - 10 and grid[0] + 80 <= lab[0] <= grid[2] - 80

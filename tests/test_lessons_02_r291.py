@@ -76,6 +76,9 @@ def test_p6_q_edge23_is_not_quite_level():
     assert "exactly horizontal: a bottom edge" in ns.edge_why[1]
     assert "two of the three edges do" in ns.edge_why[2]
     assert "the one edge of the three" not in ask
+    # r328 02-6: prompts 2 and 3 repeat the vertices, the quarter pixel among them
+    assert "v2 = (14.5, 7.5), v3 = (3.5, 7.25)" in ns.wedge_named
+    assert 'else f"The same triangle, {wedge_named}. "' in ask
 
 
 def test_m8_zero_area_triangles_are_said_and_printed():
@@ -85,3 +88,29 @@ def test_m8_zero_area_triangles_are_said_and_printed():
     md = re.sub(r"\s+", " ", next(t for t in _texts() if t.startswith("Bail-out saves")))
     assert "Zero area geometry is considered back facing" in md and "§15.11.1" in md
     assert "draws nothing for it, culled or not" in md
+
+
+def test_r328_ek_quoted_as_he_wrote_and_the_samples_entry_named():
+    """r328 02-5: cell 12 put a paraphrase of Ek in quotation marks; it now quotes his note
+    word for word, with author and title. 02-8: the samples menu has two 4-sample entries;
+    the text names the one its counts are for, as the menu spells it."""
+    from teachraster.widgets.common import SAMPLE_PATTERNS
+
+    md = next(t for t in _texts() if t.startswith("## 3. Bail-out"))
+    assert '> importantly you can "bail" out of the test as soon as you find a negative value' in md
+    assert "Carl Henrik Ek (*Triangles and Perspective Correct Interpolation*, §1.2)" in md
+    assert '"You can bail out' not in md
+    six = re.sub(r"\s+", " ", next(t for t in _texts() if t.startswith("## 6. Step through")))
+    assert 'samples menu at "4 standard (rotated grid)"' in six
+    assert "4 standard (rotated grid)" in SAMPLE_PATTERNS
+
+
+def test_r328_the_editor_keeps_room_for_its_readout_to_wrap():
+    """r328 02-3: entering the counter-clockwise triangle, the probe's line wrapped and the
+    figure jumped under the pointer; the readout keeps three lines' room from the start."""
+    from teachraster.widgets import TriangleEditor
+
+    ed = TriangleEditor(tr.Triangle([[2.25, 1.75], [14.5, 6.25], [5.75, 14.5]]), 16, 16,
+                        method="halfplane", probe=(7.5, 7.5), comparison=False)  # fmt: skip
+    assert ed.info.layout.min_height == "calc(3 * var(--jp-widgets-inline-height, 28px))"
+    ed.close()

@@ -218,7 +218,13 @@ class TriangleEditor(Holdable):
         )
         self.method.style.button_width = "auto"
         self.method.observe(self._on_method, "value")
-        self.info = widgets.HTML(layout=widgets.Layout(min_height="2.6em"))
+        # room for three lines (an HTML widget's line is --jp-widgets-inline-height high):
+        # the probe's line wraps once when the cross enters a triangle walked
+        # counter-clockwise, and the figure below jumped 28 px under the pointer in mid-drag
+        # (review r328 02-3)
+        self.info = widgets.HTML(
+            layout=widgets.Layout(min_height="calc(3 * var(--jp-widgets-inline-height, 28px))")
+        )
         self._set_info()
 
         hint = (

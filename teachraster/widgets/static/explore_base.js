@@ -45,6 +45,12 @@ export function fmt(x, digits = 4) {
   return Math.abs(s) >= 1e6 || Math.abs(s) < 1e-4 ? s.toExponential(digits - 1) : String(s);
 }
 
+// fmt with the lessons' minus sign, U+2212 ("−8", not "-8"), for text that also shows "−" in
+// names or formulas (review r328 02-10: "E32 = −E23 = -8" mixed the two)
+export function fmtMinus(x, digits = 4) {
+  return fmt(x, digits).replace(/-/g, "\u2212");
+}
+
 const BASE_CSS = `
 .tr-x { font: 14px/1.45 var(--jp-ui-font-family, system-ui, sans-serif); color: #111;
   max-width: 100%; }

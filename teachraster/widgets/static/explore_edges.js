@@ -115,8 +115,9 @@ function mount(el, data, host) {
     drawSigns(ctx, chosen, W, H, cell, m, ["E12", "E23", "E31"].indexOf(state.tint),
       ui.moved ? null : ui.hover, state.vertices.map(toPx), quiet);
     drawBadges(ctx, scene, cell, m, state.vertices.map(toPx));
-    drawVertices(ctx, state, toPx);
-    drawEdgeLabels(ctx, chosen, state, toPx, W, H, quiet);
+    const names = vertexNames(ctx, scene, chosen, state, toPx, W, H, cell, m, quiet);
+    drawVertices(ctx, state, toPx, names.map((n) => n.at));
+    drawEdgeLabels(ctx, chosen, state, toPx, W, H, quiet, names.map((n) => n.box));
     if (ui.relabel) ui.relabel(chosen); // a drag can reverse the winding, and so the names
     table.innerHTML = edgeTable(scene);
     readout.innerHTML = describe(scene, ui.hover, state.chosen, W, H);
@@ -421,9 +422,22 @@ export function signsShown(setup, row, col, hover = null, quiet = []) {
 // QUIET_NEAR px of a vertex (`vertices`, grid px), where the dot and its name stand. Their
 // "0" digits beside the rings and badges, and "00" over the vertex dots, collided (review
 // r291 02-2, r242 02-7); hovering a centre still shows its three signs.
+// Also quiet: a centre on the shared edge's line a pixel beyond one of its ends, whose "0"
+// stood beside the end's ring and owner's letter ("+0−" left of v3 with v2 and v3 on one row,
+// review r328 02-FIG1).
 export const QUIET_NEAR = 0.75;
 export function quietCentres(scene, vertices) {
   const quiet = scene.shared.map(({ row, col }) => [row, col]);
+  const [p, q] = [vertices[1], vertices[2]];
+  for (const end of [p, q]) {
+    for (const [dr, dc] of [[-1, 0], [1, 0], [0, -1], [0, 1]]) {
+      const [x, y] = [end[0] + dc, end[1] + dr];
+      const centre = Number.isInteger(x - 0.5) && Number.isInteger(y - 0.5);
+      const along = (x - p[0]) * (q[0] - p[0]) + (y - p[1]) * (q[1] - p[1]);
+      const beyond = along < 0 || along > (q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2;
+      if (centre && beyond && edgeValue(p, q, [x, y]) === 0) quiet.push([Math.floor(y), Math.floor(x)]);
+    }
+  }
   for (const [x, y] of vertices) {
     for (let r = Math.floor(y - QUIET_NEAR); r <= Math.floor(y + QUIET_NEAR); r++) {
       for (let c = Math.floor(x - QUIET_NEAR); c <= Math.floor(x + QUIET_NEAR); c++) {
@@ -508,15 +522,25 @@ export function badgeCentre(scene, row, col, cell, m, dots = []) {
   return [m.left + col * cell, m.top + (low ? row + 1 : row) * cell];
 }
 
+// each owner's letter: its text, font size, disc centre and radius (px)
+function badges(ctx, scene, cell, m, dots) {
+  const size = Math.max(textPx(ctx, 14), Math.round(cell * 0.36));
+  ctx.save();
+  ctx.font = `bold ${size}px sans-serif`;
+  const out = scene.shared.map(({ row, col, owner }) => {
+    const text = owner === "both" ? "AB" : owner === "none" ? "–" : owner;
+    const r = Math.max(ctx.measureText(text).width / 2 + 2, size * 0.6);
+    return { owner, text, size, at: badgeCentre(scene, row, col, cell, m, dots), r };
+  });
+  ctx.restore();
+  return out;
+}
+
 // the owner's letter black on a white disc: orange on B's light orange fill was nearly
 // invisible, and 7 px high (review r93 02-4)
 function drawBadges(ctx, scene, cell, m, dots) {
-  for (const { row, col, owner } of scene.shared) {
-    const text = owner === "both" ? "AB" : owner === "none" ? "–" : owner;
-    const size = Math.max(textPx(ctx, 14), Math.round(cell * 0.36));
+  for (const { owner, text, size, at: [lx, ly], r } of badges(ctx, scene, cell, m, dots)) {
     ctx.font = `bold ${size}px sans-serif`;
-    const [lx, ly] = badgeCentre(scene, row, col, cell, m, dots);
-    const r = Math.max(ctx.measureText(text).width / 2 + 2, size * 0.6);
     ctx.fillStyle = "#fff";
     ctx.strokeStyle = ownerColour(owner);
     ctx.beginPath();
@@ -562,10 +586,13 @@ function drawTriangles(ctx, state, toPx, colors) {
   for (let k = 0; k < 3; k++) arrowLine(ctx, v[chosen[k]], v[chosen[(k + 1) % 3]], EDGE_HUES[k], 3);
 }
 
-// each vertex's dot and name (above right of it), over the signs, which belowDot keeps off
-function drawVertices(ctx, state, toPx) {
+// each vertex's dot and name, over the signs, which belowDot keeps off; the names where
+// `names` (centres, px) puts them
+function drawVertices(ctx, state, toPx, names) {
   const v = state.vertices.map(toPx);
   ctx.font = `bold ${textPx(ctx, 17)}px sans-serif`;
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
   v.forEach((p, i) => {
     ctx.fillStyle = "#000";
     ctx.beginPath();
@@ -576,12 +603,95 @@ function drawVertices(ctx, state, toPx) {
     ctx.arc(p[0], p[1], 3, 0, 2 * Math.PI);
     ctx.fill();
     ctx.fillStyle = "#000";
-    ctx.fillText(`v${i + 1}`, p[0] + 8, p[1] - 8);
+    ctx.fillText(`v${i + 1}`, names[i][0], names[i][1]);
   });
+  ctx.textAlign = "left";
+  ctx.textBaseline = "alphabetic";
+}
+
+// Does the box [x0, y0, x1, y1] touch the ring (circle [cx, cy, r], its stroke `w` wide) or
+// stand inside it, where its centre is?
+function boxOnRing(box, [cx, cy, r], w = 3) {
+  const gap = [Math.max(box[0] - cx, 0, cx - box[2]), Math.max(box[1] - cy, 0, cy - box[3])];
+  return Math.hypot(gap[0], gap[1]) <= r + w / 2;
+}
+
+const overlaps = (a, b) => a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+
+// Where a vertex's name (a box of half-sizes `half`, px) stands round its dot at `p` (px):
+// above right of it when that is free, else the first place, nearest first, whose box touches
+// no ring (`rings`, [cx, cy, r]), no box of `boxes` (the owners' letters, the shown signs, the
+// other dots and names) and stays inside `bounds` ([x0, y0, x1, y1], the grid); failing
+// that, the one next to the dot touching fewest. With v2 and v3 on one row, "v3" stood on
+// its ring, beside the B letter (review r328 02-FIG1).
+export function vertexNameAt(p, half, cell, bounds, rings, boxes) {
+  // above right first (where the names stood), then the other diagonals, the sides, and
+  // the directions between them
+  const dirs = [[1, -1], [-1, -1], [1, 1], [-1, 1], [1, 0], [-1, 0], [0, -1], [0, 1],
+    [2, -1], [1, -2], [-1, -2], [-2, -1], [2, 1], [1, 2], [-1, 2], [-2, 1]]
+    .map(([x, y]) => [x / Math.hypot(x, y), y / Math.hypot(x, y)]);
+  let best = null;
+  let fewest = Infinity;
+  for (const d of [8, 0.3 * cell, 0.5 * cell, 0.7 * cell, 0.9 * cell, 1.1 * cell]) {
+    for (const [ux, uy] of dirs) {
+      const reach = d + Math.abs(ux) * half[0] + Math.abs(uy) * half[1];
+      const at = [p[0] + ux * reach, p[1] + uy * reach];
+      const box = [at[0] - half[0], at[1] - half[1], at[0] + half[0], at[1] + half[1]];
+      const out = box[0] < bounds[0] || box[1] < bounds[1] || box[2] > bounds[2] ||
+        box[3] > bounds[3];
+      if (out) continue;
+      // a ring's thin line hides less than a letter or a sign
+      const hits = rings.filter((r) => boxOnRing(box, r)).length +
+        3 * boxes.filter((b) => overlaps(box, b)).length;
+      if (hits === 0) return at;
+      // failing a free place, one next to the dot: a name far off reads as another's
+      if (d === 8 && hits < fewest) [best, fewest] = [at, hits];
+    }
+  }
+  return best || [p[0] + 8 + half[0], p[1] - 8 - half[1]];
+}
+
+// the centres (px) whose three signs are drawn (with one half-plane tinted, every centre
+// shows one sign and no place is free: none), and how far a triplet reaches from its centre
+function signCentres(setup, state, toPx, W, H, quiet) {
+  const signs = [];
+  if (["E12", "E23", "E31"].includes(state.tint)) return signs;
+  for (let r = 0; r < H; r++) {
+    for (let c = 0; c < W; c++) {
+      if (signsShown(setup, r, c, null, quiet)) signs.push(toPx([c + 0.5, r + 0.5]));
+    }
+  }
+  return signs;
+}
+const signReach = (cell) => [cell * SIGN_GAP + cell * SIGN_SCALE / 2, cell * 0.3];
+
+// The vertices' names (centres, px, and boxes) clear of the rings, the owners' letters, the
+// shown signs, the dots and one another (vertexNameAt), inside the grid
+function vertexNames(ctx, scene, setup, state, toPx, W, H, cell, m, quiet) {
+  const v = state.vertices.map(toPx);
+  const reach = signReach(cell);
+  const boxes = signCentres(setup, state, toPx, W, H, quiet)
+    .map(([x, y]) => [x - reach[0], y - reach[1], x + reach[0], y + reach[1]]);
+  for (const { at: [x, y], r } of badges(ctx, scene, cell, m, v)) boxes.push([x - r, y - r, x + r, y + r]);
+  for (const [x, y] of v) boxes.push([x - 7, y - 7, x + 7, y + 7]);
+  const rings = scene.shared.map(({ row, col }) => [...toPx([col + 0.5, row + 0.5]), cell * 0.42]);
+  const grid = [...toPx([0, 0]), ...toPx([W, H])];
+  ctx.save();
+  ctx.font = `bold ${textPx(ctx, 17)}px sans-serif`;
+  const size = textPx(ctx, 17);
+  const at = v.map((p, i) => {
+    const half = [ctx.measureText(`v${i + 1}`).width / 2 + 2, size * 0.55];
+    const c = vertexNameAt(p, half, cell, grid, rings, boxes);
+    const box = [c[0] - half[0], c[1] - half[1], c[0] + half[0], c[1] + half[1]];
+    boxes.push(box);
+    return { at: c, box };
+  });
+  ctx.restore();
+  return at;
 }
 
 // each edge of the chosen triangle labelled with its kind and bias, outside the triangle
-function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = []) {
+function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = [], names = []) {
   if (setup.area2 === 0) return;
   const idx = state.chosen === "A" ? [0, 1, 2] : [2, 1, 3];
   const v = idx.map((i) => toPx(state.vertices[i]));
@@ -589,17 +699,9 @@ function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = []) {
   const labels = edgeLabels(setup, EDGE_NAMES[state.chosen]);
   const size = textPx(ctx, 15);
   const cell = toPx([1, 0])[0] - toPx([0, 0])[0];
-  // the centres whose three signs are drawn (with one half-plane tinted, every centre shows
-  // one sign and no place is free), and how far a triplet reaches from its centre
-  const signs = [];
-  if (!["E12", "E23", "E31"].includes(state.tint)) {
-    for (let r = 0; r < H; r++) {
-      for (let c = 0; c < W; c++) {
-        if (signsShown(setup, r, c, null, quiet)) signs.push(toPx([c + 0.5, r + 0.5]));
-      }
-    }
-  }
-  const reach = [cell * SIGN_GAP + cell * SIGN_SCALE / 2, cell * 0.3];
+  const signs = signCentres(setup, state, toPx, W, H, quiet);
+  const reach = signReach(cell);
+  const grid = [...toPx([0, 0]), ...toPx([W, H])]; // inside the grid's frame, not on it
   ctx.save();
   ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
@@ -610,8 +712,7 @@ function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = []) {
     // B's edges named too (review r93 02-5: "left, bias 0" beside A's "E12: right, bias −1")
     const text = `${walkedName(e)}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const half = [ctx.measureText(text).width / 2 + 3, (size + 3) / 2];
-    const box = ctx.canvas.logical || { w: ctx.canvas.width, h: ctx.canvas.height };
-    const at = placeLabel(a, b, centroid, half, cell, [box.w, box.h], signs, reach);
+    const at = placeLabel(a, b, centroid, half, cell, grid, signs, reach, names);
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - half[0], at[1] - half[1], 2 * half[0], 2 * half[1]);
     ctx.fillStyle = EDGE_HUES[k];
@@ -640,8 +741,11 @@ export function labelCentre(a, b, centroid, half, cell, bounds, covers = null) {
   const away = 0.5 * cell + 2 + reach;
   const outside = [mid[0] + n[0] * away, mid[1] + n[1] * away];
   if (!bounds) return outside;
-  const fits = (p) => p[0] - half[0] >= 0 && p[0] + half[0] <= bounds[0] &&
-    p[1] - half[1] >= 0 && p[1] + half[1] <= bounds[1];
+  // [w, h] from the origin, or a rectangle [x0, y0, x1, y1] (the grid: review r328 02-FIG1,
+  // "E34: left, bias 0" stood on its bottom frame, inside the canvas)
+  const [x0, y0, x1, y1] = bounds.length === 4 ? bounds : [0, 0, ...bounds];
+  const fits = (p) => p[0] - half[0] >= x0 && p[0] + half[0] <= x1 &&
+    p[1] - half[1] >= y0 && p[1] + half[1] <= y1;
   if (covers) {
     let best = null;
     let fewest = Infinity;
@@ -661,16 +765,18 @@ export function labelCentre(a, b, centroid, half, cell, bounds, covers = null) {
   if (fits(outside)) return outside;
   const inside = [mid[0] - n[0] * away, mid[1] - n[1] * away];
   const at = fits(inside) ? inside : outside;
-  const clamp = (x, h, w) => Math.max(h, Math.min(w - h, x));
-  return [clamp(at[0], half[0], bounds[0]), clamp(at[1], half[1], bounds[1])];
+  const clamp = (x, h, lo, hi) => Math.max(lo + h, Math.min(hi - h, x));
+  return [clamp(at[0], half[0], x0, x1), clamp(at[1], half[1], y0, y1)];
 }
 
 // labelCentre with the centres whose signs are drawn, `signs` (px), each reaching `reach`
-// (half-sizes, px) from its centre: the label box hides as few of them as it can
-export function placeLabel(a, b, centroid, half, cell, bounds, signs, reach) {
+// (half-sizes, px) from its centre: the label box hides as few of them as it can, and of the
+// boxes `boxes` ([x0, y0, x1, y1], px: the vertices' names)
+export function placeLabel(a, b, centroid, half, cell, bounds, signs, reach, boxes = []) {
   const covers = (p) => signs.filter((q) => Math.abs(p[0] - q[0]) < half[0] + reach[0] &&
-    Math.abs(p[1] - q[1]) < half[1] + reach[1]).length;
-  return labelCentre(a, b, centroid, half, cell, bounds, signs.length ? covers : null);
+    Math.abs(p[1] - q[1]) < half[1] + reach[1]).length +
+    boxes.filter((b) => overlaps([p[0] - half[0], p[1] - half[1], p[0] + half[0], p[1] + half[1]], b)).length;
+  return labelCentre(a, b, centroid, half, cell, bounds, signs.length || boxes.length ? covers : null);
 }
 
 // The name of the edge a triangle is tested on: a counter-clockwise triangle is walked
@@ -723,7 +829,7 @@ export function describe(scene, at, chosen, W, H) {
   const i = row * W + col;
   const who = scene.covA[i] && scene.covB[i] ? "both A and B (they overlap)"
     : scene.covA[i] ? "A" : scene.covB[i] ? "B" : "neither";
-  const vals = e.map((v, k) => `<b>${names[k]}</b> = ${v > 0 ? "+" : ""}${fmt(v, 6)}`).join(", ");
+  const vals = e.map((v, k) => `<b>${names[k]}</b> = ${v > 0 ? "+" : ""}${fmtMinus(v, 6)}`).join(", ");
   const onShared = scene.shared.find((s) => s.row === row && s.col === col);
   const tie = onShared ? ` It lies exactly on the shared edge: ${onShared.owner === "none"
     ? "neither owns it" : `${onShared.owner} owns it`} (top-left rule).` : "";
@@ -852,7 +958,7 @@ function drawPlanes(ctx, cam, scene, chosen, W, H, canvas, hover) {
   ctx.font = `bold ${size}px sans-serif`;
   let x = 8;
   vals.forEach((e, k) => {
-    const text = `${names[k]} = ${fmt(e, 4)}`;
+    const text = `${names[k]} = ${fmtMinus(e, 4)}`;
     ctx.fillStyle = EDGE_HUES[k];
     ctx.fillText(text, x, Math.round(size * 2.9));
     x += ctx.measureText(text).width + 18;
@@ -898,7 +1004,7 @@ function drawEAxis(ctx, cam, corners, h, zs) {
     const q = cam.project([x, y, e * zs]);
     strokeLine(ctx, [q[0] - 5, q[1]], [q[0], q[1]], "#111", 1.5);
     ctx.fillStyle = "#111";
-    ctx.fillText(fmt(e, 4), q[0] - 7, q[1] + Math.round(size * 0.35));
+    ctx.fillText(fmtMinus(e, 4), q[0] - 7, q[1] + Math.round(size * 0.35));
   }
   const t = cam.project([x, y, h]);
   ctx.font = `bold ${textPx(ctx, PLANES_TEXT)}px sans-serif`;
