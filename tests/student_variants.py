@@ -1115,6 +1115,7 @@ def _bias_with(slip=None, test="right"):
             return math.nan  # the object in front leaves no offset that does both
         r = 0.5 / (2**bits - 1) if slip == "half" else 1 / (2**bits - 1)
         r = 1 / 2**bits if slip == "2^bits" else r
+        r = 1 / (2 ^ bits - 1) if slip == "xor" else r  # r340: Python reads 2 ^ (bits - 1)
         tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
         tan = math.sin(math.radians(tilt)) if slip == "sin" else tan
         m = far * near / (far - near) * tan / z * pixel
@@ -1662,6 +1663,18 @@ WRONG = {
         "dropped the far plane",
     ),
     "near with a step of 1/bits": ("safe_near", _near_with(lambda b: 1 / b), "as 1/bits"),
+    # r340: `^` as students type it, 1/(2^bits - 1), read as 1/(2 ^ (bits - 1))
+    "near with 1/(2^bits - 1)": (
+        "safe_near",
+        _near_with(lambda b: 1 / (2 ^ b - 1)),
+        "reads as 2 ^ (bits − 1)",
+    ),
+    "decal bias with 1/(2^bits - 1)": ("decal_bias", _bias_with("xor"), "reads as 2 ^ (bits − 1)"),
+    "decal bias with 1/(2^bits - 1), own NaN test": (
+        "decal_bias",
+        _bias_with("xor", test="own"),
+        "reads as 2 ^ (bits − 1)",
+    ),
     "gap with near and far swapped": (
         "reverse_z_gap",
         lambda z, near, far: _gap_with()(z, far, near),
@@ -1964,6 +1977,9 @@ KINDS = {
     "gap with d = n/z": "infinite far, depth",
     "gap in float32 without the far plane's factor": "infinite far, slope",
     "near with a step of 1/bits": "1/bits",
+    "near with 1/(2^bits - 1)": "xor, unbracketed",
+    "decal bias with 1/(2^bits - 1), own NaN test": "nan",
+    "decal bias with 1/(2^bits - 1)": "xor",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",

@@ -42,7 +42,7 @@ from ..pipeline.visibility.depth import depth_bias, window_depth
 from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .near_plane import HALF_STEP
+from .near_plane import HALF_STEP, XOR_UNBRACKETED
 from .package_answers import CHECKER_WORDS
 from .reverse_z import gives_same_gap
 from .scalars import num
@@ -243,6 +243,9 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         "sine, own test": None if sine is None else own(r, sine),
         "2^bits": offset(1.0 / 2**bits + m),
         "half": offset(r / 2 + m),
+        # r340: 1/(2^bits - 1) typed, 1/(2 ^ (bits - 1)) run (in the test for NaN too, the
+        # answer is NaN on every case: :data:`NAN_WORDS` names it)
+        "xor": offset(1.0 / (2 ^ (bits - 1)) + m),
     }
 
 
@@ -315,6 +318,7 @@ MISTAKES = {
         "worst rounding the two depths tie"
     ),
     "half": f": {HALF_STEP}. Beyond the pixel's span m the decal needs a whole step r",
+    "xor": f": {XOR_UNBRACKETED}",
 }
 
 
@@ -381,6 +385,15 @@ ZERO = Mistake("zero", ": no offset: the two depths tie or the wall wins", fits=
 
 def _nan_with_room(args, expected, got) -> bool | None:
     return (not impossible(args)) if bool(np.isnan(got)) else None
+
+
+#: r340: a NaN the table does not name (NaN on every case: what a `^` typo in r gives with
+#: the test for NaN), said without "a 0/0": NaN is a legal answer here
+NAN_WORDS = (
+    "your answer is NaN, “no offset works”, and this case has one (r + m ≤ room − m): check "
+    "the r and m your test for NaN uses. `^` is exclusive or in Python, not a power: "
+    "`2^bits - 1` reads as 2 ^ (bits − 1); use 2**bits"
+)
 
 
 #: r325: NaN is a legal answer here ("no offset works"), so an unnamed NaN is not "a 0/0"
@@ -456,4 +469,5 @@ DECAL_BIAS = Exercise(
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),
     hints=HINTS,
+    nan_words=NAN_WORDS,
 )  # fmt: skip
