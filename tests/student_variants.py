@@ -1094,11 +1094,16 @@ def _bias_with(slip=None, test="right"):
     """decal_bias (5.3) with one slip: the offset o = ∓(r + m), r one step, m MaxDepthSlope.
     ``test`` for NaN: "right" (the slip shows in the offset alone), "own" (the slip's r and
     m in the test too: a complete solution, r325), "room" (r + m > room: the decal's own m
-    toward the object forgotten), "cautious" (r + 2m > room − m: NaN where an offset fits)."""
+    toward the object forgotten), "cautious" (r + 2m > room − m: NaN where an offset fits),
+    "behind" (room = z_win(z + clear) − z_win(z)), "first order" (room = f n/((f − n) z²) · clear,
+    r340)."""
 
     def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
         z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
-        space = z_win(z) - z_win(z - clear)
+        space = {
+            "behind": z_win(z + clear) - z_win(z),
+            "first order": far * near / ((far - near) * z * z) * clear,
+        }.get(test, z_win(z) - z_win(z - clear))
         r, m = (
             1 / (2**bits - 1),
             far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel,
@@ -1110,6 +1115,7 @@ def _bias_with(slip=None, test="right"):
             return math.nan  # the object in front leaves no offset that does both
         r = 0.5 / (2**bits - 1) if slip == "half" else 1 / (2**bits - 1)
         r = 1 / 2**bits if slip == "2^bits" else r
+        r = 1 / (2 ^ bits - 1) if slip == "xor" else r  # r340: Python reads 2 ^ (bits - 1)
         tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
         tan = math.sin(math.radians(tilt)) if slip == "sin" else tan
         m = far * near / (far - near) * tan / z * pixel
@@ -1631,6 +1637,16 @@ WRONG = {
         "takes radians",
     ),
     "decal bias with sin for tan": ("decal_bias", _bias_with("sin"), "the slope needs tan θ"),
+    "decal bias with the object behind the wall": (
+        "decal_bias",
+        _bias_with(test="behind"),
+        "you placed the object behind the wall",
+    ),
+    "decal bias with room to first order": (
+        "decal_bias",
+        _bias_with(test="first order"),
+        "you took room to first order",
+    ),
     "decal bias NaN where an offset fits": (
         "decal_bias",
         _bias_with(test="cautious"),
@@ -1647,6 +1663,18 @@ WRONG = {
         "dropped the far plane",
     ),
     "near with a step of 1/bits": ("safe_near", _near_with(lambda b: 1 / b), "as 1/bits"),
+    # r340: `^` as students type it, 1/(2^bits - 1), read as 1/(2 ^ (bits - 1))
+    "near with 1/(2^bits - 1)": (
+        "safe_near",
+        _near_with(lambda b: 1 / (2 ^ b - 1)),
+        "reads as 2 ^ (bits − 1)",
+    ),
+    "decal bias with 1/(2^bits - 1)": ("decal_bias", _bias_with("xor"), "reads as 2 ^ (bits − 1)"),
+    "decal bias with 1/(2^bits - 1), own NaN test": (
+        "decal_bias",
+        _bias_with("xor", test="own"),
+        "reads as 2 ^ (bits − 1)",
+    ),
     "gap with near and far swapped": (
         "reverse_z_gap",
         lambda z, near, far: _gap_with()(z, far, near),
@@ -1943,10 +1971,15 @@ KINDS = {
     "decal bias per unit, own NaN test": "per unit, own test",
     "decal bias with tan of degrees, own NaN test": "degrees, own test",
     "decal bias with sin for tan": "sine",
-    "decal bias NaN where an offset fits": "nan",
+    "decal bias NaN where an offset fits": "r + 2m",
+    "decal bias with the object behind the wall": "behind",
+    "decal bias with room to first order": "first order",
     "gap with d = n/z": "infinite far, depth",
     "gap in float32 without the far plane's factor": "infinite far, slope",
     "near with a step of 1/bits": "1/bits",
+    "near with 1/(2^bits - 1)": "xor, unbracketed",
+    "decal bias with 1/(2^bits - 1), own NaN test": "nan",
+    "decal bias with 1/(2^bits - 1)": "xor",
     "fill of raw vertices": "no snapping",
     "fill with E >= 0": "E >= 0",
     "fill snapped with floor": "floor snapping",

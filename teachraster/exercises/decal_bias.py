@@ -42,7 +42,7 @@ from ..pipeline.visibility.depth import depth_bias, window_depth
 from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .near_plane import HALF_STEP
+from .near_plane import HALF_STEP, XOR_UNBRACKETED
 from .package_answers import CHECKER_WORDS
 from .reverse_z import gives_same_gap
 from .scalars import num
@@ -75,6 +75,14 @@ BAND = (
     (300.0, 80.0, 6.01e-4, 0.1, 1000.0, 24, False), (50.0, 45.0, 6.01e-4, 0.1, 1000.0, 24, True),
 )  # fmt: skip
 BAND_SHARE = 1.5
+#: (setting, share) whose object leaves room − m just above r + m, clear/z about 0.07: an
+#: offset fits, where a room taken behind the wall, z_win(z + clear) − z_win(z) (smaller by
+#: about 2 clear/z), says NaN on both, and one to first order, f n/((f − n) z²) · clear
+#: (smaller by about clear/z), on the first only: the two slips told apart (r340).
+FIT = (
+    ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 2.1),
+    ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 2.25),
+)
 #: float32's relative rounding, allowed at both ends: a tilt held in float32 moves tan θ by
 #: up to 3e-6 of itself at 88° (tan's relative slope there is 1/(sin θ cos θ) ≈ 29).
 ROUNDING = 1e-5
@@ -154,7 +162,8 @@ def _case(setting, label=None, share=ROOM + 1):
 @cache
 def _fixed_cases():
     return ([_case(s) for s in SETTINGS] + [_case(s, share=TIGHT_SHARE) for s in TIGHT]
-            + [_case(s, share=BAND_SHARE) for s in BAND])  # fmt: skip
+            + [_case(s, share=BAND_SHARE) for s in BAND]
+            + [_case(s, share=share) for s, share in FIT])  # fmt: skip
 
 
 def bias_cases():
@@ -205,11 +214,18 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
     def own(r_, m_):  # the slip's r' and m' in the test for NaN too
         return math.nan if r_ + m_ > space - m_ else sign * (r_ + m_)
 
+    behind = _wall(z + clear, near, far) - _wall(z, near, far)
+    first = far * near / ((far - near) * z * z) * clear  # lesson 05b §2's dz_win/dz · clear
     degrees = m * math.tan(tilt) / math.tan(rad) if 0 < tilt < 90 else None
     per_unit = m / pixel
     sine = m * math.sin(rad) / math.tan(rad) if 0 < tilt < 90 else None
     return {
         "clear ignored": sign * (r + m) if tight else None,
+        "behind": math.nan if r + m > behind - m else sign * (r + m),
+        "first order": math.nan if r + m > first - m else sign * (r + m),
+        # a test for NaN twice as strict as it needs, a variant (not the NAN symptom alone):
+        # r340's near-boundary case made a coincident slip of m outrank the symptom
+        "r + 2m": math.nan if r + 2 * m > space - m else sign * (r + m),
         # the object's test without the decal's own m toward it: r + m > room
         "object without m": sign * (r + m) if tight and r + m <= space else None,
         "z squared": offset(r + m / z),
@@ -227,6 +243,9 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         "sine, own test": None if sine is None else own(r, sine),
         "2^bits": offset(1.0 / 2**bits + m),
         "half": offset(r / 2 + m),
+        # r340: 1/(2^bits - 1) typed, 1/(2 ^ (bits - 1)) run (in the test for NaN too, the
+        # answer is NaN on every case: :data:`NAN_WORDS` names it)
+        "xor": offset(1.0 / (2 ^ (bits - 1)) + m),
     }
 
 
@@ -247,6 +266,14 @@ MISTAKES = {
         "less than r + m, so no offset draws the decal over the wall and keeps the object in "
         "front: return NaN here (an offset this size puts the decal in front of the object)"
     ),
+    "behind": ": you placed the object behind the wall (z + clear): it is in front, at "
+    "z − clear, so room = z_win(z) − z_win(z − clear)",
+    "first order": ": you took room to first order, f n/((f − n) z²) · clear, which falls short "
+    "of it by about a factor 1 − clear/z: the object's window depth is exact, so room = "
+    "z_win(z) − z_win(z − clear)",
+    "r + 2m": ": NaN means “no offset works” here, and this case has one: r + m ≤ room − m. "
+    "Your test for NaN asks for r + 2m: the decal at its nearest lies m in front of the wall, "
+    "|o| + m from it, so |o| = r + m fits while room − m ≥ r + m",
     "object without m": ": your test for NaN compares r + m with room alone: at its nearest "
     "the decal lies m in front of the wall, so it stays behind the object only if "
     "|o| ≤ room − m, and no offset fits unless r + m ≤ room − m (room ≥ r + 2m). Here room "
@@ -291,6 +318,7 @@ MISTAKES = {
         "worst rounding the two depths tie"
     ),
     "half": f": {HALF_STEP}. Beyond the pixel's span m the decal needs a whole step r",
+    "xor": f": {XOR_UNBRACKETED}",
 }
 
 
@@ -357,6 +385,15 @@ ZERO = Mistake("zero", ": no offset: the two depths tie or the wall wins", fits=
 
 def _nan_with_room(args, expected, got) -> bool | None:
     return (not impossible(args)) if bool(np.isnan(got)) else None
+
+
+#: r340: a NaN the table does not name (NaN on every case: what a `^` typo in r gives with
+#: the test for NaN), said without "a 0/0": NaN is a legal answer here
+NAN_WORDS = (
+    "your answer is NaN, “no offset works”, and this case has one (r + m ≤ room − m): check "
+    "the r and m your test for NaN uses. `^` is exclusive or in Python, not a power: "
+    "`2^bits - 1` reads as 2 ^ (bits − 1); use 2**bits"
+)
 
 
 #: r325: NaN is a legal answer here ("no offset works"), so an unnamed NaN is not "a 0/0"
@@ -432,4 +469,5 @@ DECAL_BIAS = Exercise(
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),
     hints=HINTS,
+    nan_words=NAN_WORDS,
 )  # fmt: skip

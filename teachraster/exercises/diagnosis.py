@@ -574,6 +574,12 @@ def _inf_by_float32(spec: Exercise, r: Result) -> str | None:
 _NAN_WORDS = "your answer holds NaN (a 0/0, or a NaN input passed on?)"
 
 
+def _legal_nan(spec: Exercise, words: str | None) -> str:
+    """NaN's words, the exercise's own where NaN is a legal answer (not "a 0/0", r340)."""
+    words = words or _NAN_WORDS
+    return spec.nan_words if spec.nan_words is not None and "NaN" in words else words
+
+
 def _holds_inf(r: Result) -> bool:
     """Does the answer hold ±inf where the expected answer is finite?"""
     g, e = _numbers(r.got), _numbers(r.expected)
@@ -927,7 +933,7 @@ def diagnose(
         nan = _all_nan(value)
         kind = "nan" if nan else "constant"
         if nan:  # r286 C1: ±inf everywhere is told as NaN is, not "a placeholder"
-            words = _nan_words((), None, np.ravel(_numbers(value))[:1]) or _NAN_WORDS
+            words = _legal_nan(spec, _nan_words((), None, np.ravel(_numbers(value))[:1]))
         elif spec.constant is not None:
             words = spec.constant(value)
         else:
@@ -1034,7 +1040,7 @@ def _generic(spec: Exercise, r: Result) -> tuple[str, str]:
         return "shape", shape
     nan = run_checker(lambda: _nan_words(r.args, r.expected, r.got), None)
     if nan:
-        return "nan", nan
+        return "nan", _legal_nan(spec, nan)
     rule = run_checker(lambda: spec.rule(r.args, r.expected, r.got), "")
     return "value", rule
 

@@ -195,6 +195,9 @@ class Exercise:
         then divided by)? Then an unnamed inf is said with ``float32_words``.
     constant : callable, optional
         ``constant(value)``: the words for an answer that never changes, if not the default.
+    nan_words : str, optional
+        The words for a NaN answer where NaN is a legal answer (``decal_bias``: no offset
+        fits), in place of "a 0/0" (r340).
     answers : sequence of PackageAnswer
         The package's functions that are this exercise's answer (their use is reported and not
         counted).
@@ -280,6 +283,7 @@ class Exercise:
     float32_makes_inf: bool = False
     float32_floor: float = 1.0
     constant: Callable | None = None
+    nan_words: str | None = None
     answers: Sequence[PackageAnswer] = ()
     draw: Callable | None = None
     scene: Callable | None = None

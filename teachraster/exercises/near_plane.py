@@ -171,6 +171,8 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             "z and gap swapped": step * far * gap * gap / (z * far + step * gap * gap),
             # r295 H-2..H-6: typical slips that were told only the symptom or the rule
             "xor": solve(1.0 / ((2 ^ bits) - 1), far),
+            # r340: as students type it, 1/(2^bits - 1), which Python reads as 2 ^ (bits - 1)
+            "xor, unbracketed": solve(1.0 / (2 ^ (bits - 1)), far),
             "sign slip": step * far * z * z / (gap * far - step * z * z),
             "negated": -solve(step, far),
             # r311 H-1: "rounding to nearest, so half a step is enough"
@@ -187,6 +189,12 @@ HALF_STEP = (
     "you took half a step (a stored value's rounding error, ±step/2) as enough. Two depths "
     "half a step apart can still round to one stored value (0.1 and 0.45 of a step both "
     "store 0); only depths a whole step apart always store different values"
+)
+
+#: r340: the `^` typo as students type it, named in 5.1 and 5.3 (:mod:`.decal_bias`) alike
+XOR_UNBRACKETED = (
+    "`^` is exclusive or in Python, not a power: `2^bits - 1` reads as 2 ^ (bits − 1), "
+    "2 ^ 15 = 13 for 16 bits, 2 ^ 23 = 21 for 24; use 2**bits: the step is 1/(2**bits − 1)"
 )
 
 MISTAKES = {
@@ -213,6 +221,7 @@ MISTAKES = {
     "their separation (the arguments are safe_near(z, gap, far, bits))",
     "xor": "`^` is exclusive or in Python (2 ^ 16 = 18, 2 ^ 24 = 26), not a power: the power "
     "is 2**bits, so the step is 1/(2**bits − 1)",
+    "xor, unbracketed": XOR_UNBRACKETED,
     "sign slip": "a sign slipped as you solved for n: gathering the terms in n gives "
     "gap·f + step·z² beside n, a plus, where yours has gap·f − step·z²",
     "negated": "your n has the right size and the wrong sign: a near plane lies in front of "
