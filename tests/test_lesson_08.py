@@ -1318,6 +1318,24 @@ def test_lesson_08_review_r254_edge_spectrum_vulkan_and_the_levels_strip(ns):
     assert [round(x, 2) for _, x in ns.crossed] == [7.5, 15.83]
 
 
+def test_lesson_08_review_r337_fig1_samples_graze_the_levels_edge(ns):
+    """Review r337 FIG-1: q_levels' circles lie down to 0.0025 px from the drawn edge, under a
+    screen pixel. No edge fixes it: each sample row it crosses in the strip holds a sample every
+    pixel, so one lies within slope / 2 of it, and rows 2-3 hold a slope of 0.1 at most (a
+    search of edges in rows 2-3 of strips 8 to 20 pixels wide that keep the standard pattern's 5
+    levels and the grid's fewer found none clearing 0.05 px). So the question gives the nearest
+    distance and sends the student to the passes."""
+    x = np.arange(ns.W)[:, None] + ns.standard4[:, 0]
+    y = np.add.outer((2, 3), ns.standard4[:, 1])[:, None]
+    (dx, dy), (x0, y0) = ns.edge_to - ns.edge_from, ns.edge_from
+    distance = np.abs(dx * (y - y0) - dy * (x - x0)) / np.hypot(dx, dy)
+    assert ns.graze == pytest.approx(distance.min()) and ns.slope / 2 < 0.05
+    assert (distance < 2 * ns.graze).sum() >= 2  # "some"
+    (ask,) = [s for s in _lesson_text()[1] if "q_levels = PredictPixels(" in s]
+    assert "pattern's samples, some within {graze:.4f} px of the edge: find where it passes" in ask
+    assert "share of its samples" not in ask  # the words it replaced
+
+
 def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
     """Review r269 M1: one GL / Direct3D / Vulkan / llvmpipe / teachraster table for the
     lesson's five rules, with sections, consistent with lesson 12b's sRGB table. M2: a cell
