@@ -390,7 +390,7 @@ def _nan_with_room(args, expected, got) -> bool | None:
 #: r340: a NaN the table does not name (NaN on every case: what a `^` typo in r gives with
 #: the test for NaN), said without "a 0/0": NaN is a legal answer here
 NAN_WORDS = (
-    "your answer is NaN, “no offset works”, and this case has one (r + m ≤ room − m): check "
+    "your answer holds NaN, “no offset works”, and this case has one (r + m ≤ room − m): check "
     "the r and m your test for NaN uses. `^` is exclusive or in Python, not a power: "
     "`2^bits - 1` reads as 2 ^ (bits − 1); use 2**bits"
 )
@@ -398,7 +398,8 @@ NAN_WORDS = (
 
 #: r325: NaN is a legal answer here ("no offset works"), so an unnamed NaN is not "a 0/0"
 NAN = Mistake(
-    "nan", ": NaN means “no offset works” here, and this case has one: r + m ≤ room − m. "
+    "nan", ": your answer holds NaN. NaN means “no offset works” here, and this case has one: "
+    "r + m ≤ room − m. "
     "Your test for NaN fires where it should not: check the m it uses", fits=_nan_with_room,
     symptom=True,
 )  # fmt: skip
