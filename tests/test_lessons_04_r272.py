@@ -180,7 +180,7 @@ def test_m2_click_the_pixel_with_the_largest_error(capsys, w_text):
     cells = _cells()
     ids = list(cells)
     assert ids.index("q-worst") == ids.index("c12") + 1 == ids.index("ab224988") - 1
-    for held in ("ab224988", "c12-peak-md"):
+    for held in ("ab224988", "c12-peak-md", "c12-held-errors", "c12-spans"):
         assert cells[held].startswith("q_worst.hold()"), held
     assert "PredictPixels," in cells["c01"]
     ns, _ = _section_5(capsys, w_text)
@@ -208,6 +208,9 @@ def test_m2_click_the_pixel_with_the_largest_error(capsys, w_text):
     before = " ".join(cells[k] for k in ids[: ids.index("q-worst")])
     assert f"row {worst[0]}, col {worst[1]}" not in before
     assert "why no pixel shows that largest value" not in " ".join(before.split())
+    # r335 P1: no cell before it prints the affine errors at the pixel centres (0.163)
+    for printed in ("u_affine - u_true", "lam @ u_vertex - u_alpha", "np.nanmax(diff)"):
+        assert printed not in before, printed
     plt.close("all")
 
 
@@ -228,3 +231,16 @@ def test_fig4_the_explorer_says_when_the_segment_lies_on_the_screen():
         assert "lies <i>on</i> the screen" not in explorer.info.value
     finally:
         plt.close("all")
+
+
+@pytest.mark.notebook
+def test_r335_p1_nothing_seen_before_q_worst_prints_the_centres_largest():
+    """r335 P1: sections 2-4 printed the affine error's largest over the pixel centres (0.163,
+    below the edges' 0.172), which answers q_worst ("none"); now those lines, and the spans
+    table's affine row under it, are held until it is checked."""
+    from test_predictions_r147 import seen_before_check
+
+    seen = seen_before_check(
+        "04_perspective_correct_interpolation", "q_worst = PredictPixels(", "q_worst"
+    )
+    assert "0.163" not in seen and "0.160" not in seen

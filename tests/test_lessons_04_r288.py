@@ -42,7 +42,7 @@ def _section_5(capsys, w_text=None) -> tuple[dict, str]:
         made = made.replace("w = np.array([1.0, 2.0, 4.0])", f"w = np.array({w_text})")
     ns: dict = {"display": lambda *a, **k: None}
     capsys.readouterr()
-    for cid in ("c01", "c05", "c07", "c09", "c12", "q-worst", "ab224988", "c12-player"):
+    for cid in "c01 c05 c07 c09 c12 q-worst ab224988 c12-held-errors c12-player".split():
         source = made if cid == "c05" else ""
         source += cells[cid].replace("%matplotlib inline", "").replace("plt.show()", "")
         source = source.split("player = FillPlayer(")[0]  # the widget left out
@@ -88,8 +88,12 @@ def test_fig1_m1_m2_s1_printed(capsys, w_text):
             assert labels == ["v1 → v2 = v2 → v3"]
             # S1: the pixel centres' largest, labelled so
             assert "78 covered pixels; the largest errors over their centres:" in out
-            assert "  affine              vs 3D truth: 0.163" in out
-            assert "largest |affine - perspective| over the 78 pixel centres: 0.163" in out
+            # r335 P1: the affine lines answer q_worst, so they are printed after it
+            assert "the affine u over the 78 covered pixel centres, largest errors:" in out
+            assert "  vs section 2's 3D truth:               0.163" in out
+            assert "  vs section 3's Σ α_i u_i:              0.163" in out
+            assert "  vs section 4's perspective-correct u:  0.163" in out
+            assert "the 3-D view's largest gap, over the whole triangle: 0.172, on an edge" in out
             # M2: the ringed pixel's two plane values and its one divide
             assert "pixel (row 4, col 10): λ = 0.318, 0.678, 0.004" in out
             assert "  Σλu/w = 0.3392, Σλ/w = 0.6580: one divide, u = 0.516" in out
@@ -114,8 +118,13 @@ def test_s1_s2_s3_s4_words():
         cells["c04-surfaces-text"]
     )
     check = _flat(cells["c04-check-text"])
-    assert "over the covered pixel centres only, not over the whole triangle" in check
-    assert "This check's largest errors" in check  # r312 S2: not "Its" (the 3-D view's?)
+    # r335 P1: the affine errors at the centres (and that they are below the view's gap)
+    # wait for q_worst; the held cell says what they are over
+    assert "wait for section 5's question" in check and "smaller" not in check
+    assert (
+        "over the\n# covered pixel centres only, not over the whole triangle"
+        in cells["c12-held-errors"]
+    )
     assert "deviation from linear in q: 1/z up to" in cells["c03"]
     assert "z linear in q:" not in cells["c03"]
     spans = _flat(cells["c12-spans-text"])
