@@ -205,9 +205,17 @@ def lab() -> Lab:
 #: next test started on the same page, so it is left out here, for every test.
 NOTEBOOK_7_ERROR = "reading 'schema'"
 
+#: JupyterLab's and Notebook 7's own rejection, word for word, when a notebook's session or
+#: document context is disposed while a request of it is still under way (``changeKernel``,
+#: ``_handleNewSession``, ``_maybeSave`` in @jupyterlab/apputils and docregistry: ``throw
+#: Error("Disposed")``): the page leaves a notebook for the next one before the server
+#: answered. Seen once in 2026-12-06's CI run (stop 51) during the layout test in Notebook 7;
+#: the package's page-side code throws no such error (its errors name themselves).
+FRONT_END_DISPOSED = "Disposed"
+
 
 def _keep_error(errors: list, message: str) -> None:
-    if NOTEBOOK_7_ERROR not in message:
+    if NOTEBOOK_7_ERROR not in message and message.strip() != FRONT_END_DISPOSED:
         errors.append(message)
 
 
