@@ -438,6 +438,37 @@ def trilinear_lower_only(pyramid, uv, lod, wrap="repeat"):
     return bilinear(pyramid[int(min(max(math.floor(lod), 0), q))], uv, wrap)
 
 
+def _bilinear_tiling(texture, uv, wrap="repeat"):
+    """A bilinear that ignores its wrap: it tiles whatever it is asked."""
+    return bilinear(texture, uv, "repeat")
+
+
+def trilinear_on_a_tiling_bilinear(pyramid, uv, lod, wrap="repeat"):
+    """A right trilinear that passes wrap on, to a bilinear that ignores it (r341 X-1)."""
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    lower = math.floor(lam)
+    upper, t = min(lower + 1, q), lam - lower
+    return (1 - t) * _bilinear_tiling(pyramid[lower], uv, wrap) + t * _bilinear_tiling(
+        pyramid[upper], uv, wrap
+    )
+
+
+def _bilinear_repeat_default(texture, uv, wrap="repeat"):
+    return bilinear(texture, uv, wrap)
+
+
+def trilinear_wrap_not_passed(pyramid, uv, lod, wrap="repeat"):
+    """A right trilinear that never hands its wrap to bilinear (whose default is 'repeat')."""
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    lower = math.floor(lam)
+    upper, t = min(lower + 1, q), lam - lower
+    return (1 - t) * _bilinear_repeat_default(pyramid[lower], uv) + t * (
+        _bilinear_repeat_default(pyramid[upper], uv)
+    )
+
+
 # == classify_block ================================================================================
 
 
@@ -1419,6 +1450,17 @@ WRONG = {
     "trilinear, nearest level": ("trilinear", None, "(the nearest)"),
     "trilinear, unclamped weight": ("trilinear", trilinear_unclamped_weight, "clamp it to [0, q]"),
     "trilinear, lower level only": ("trilinear", trilinear_lower_only, "alone"),
+    # r341 X-1: the two causes of every level tiled, told apart by whether trilinear reads wrap
+    "trilinear on a bilinear that ignores wrap": (
+        "trilinear",
+        trilinear_on_a_tiling_bilinear,
+        "the bilinear it calls tiles whatever",
+    ),
+    "trilinear, wrap not passed on": (
+        "trilinear",
+        trilinear_wrap_not_passed,
+        "pass trilinear's `wrap` on",
+    ),
     # classify_block
     "blocks by their outer corners": ("classify_block", None, "outer corners"),
     "blocks rejected by corners outside": (

@@ -920,7 +920,9 @@ def diagnose(
 ) -> dict[int, tuple[str, str]]:
     """(kind, explanation) for each failing case of ``results``, by index (module docstring);
     ``params``: the names of the student's function's arguments; ``reads``: the names its
-    code reads (a mistake with :attr:`~.exercise.Mistake.reads` is named only among them)."""
+    code reads, its own parameters read included (a mistake with
+    :attr:`~.exercise.Mistake.reads` is named only among them, one with
+    :attr:`~.exercise.Mistake.unread` only outside them)."""
     failing = [r for r in results if not r.ok]
     if not failing:
         return {}
@@ -941,7 +943,10 @@ def diagnose(
             words = constant_words(value, number)
         return {r.index: (kind, _said_constant(spec, r, words)) for r in failing}
     rounded = rounded_mistake()
-    mistakes = [m for m in spec.all_mistakes() if m.reads is None or m.reads in reads]
+    mistakes = [
+        m for m in spec.all_mistakes()
+        if (m.reads is None or m.reads in reads) and (m.unread is None or m.unread not in reads)
+    ]  # fmt: skip
     mistakes += [transposed_mistake(), rounded, low_precision_mistake(spec)]
     fits = _evaluate(spec, mistakes, results)
     if all(run_checker(lambda r=r: _whole(r.got), False) for r in failing):

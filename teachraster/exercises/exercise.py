@@ -72,6 +72,10 @@ class Mistake:
         same on every case (r175 B5: ``det(M) == 0`` before a solve, and a solve whose
         LinAlgError is the test) are told apart by what the code reads
         (:func:`.package_answers.names_read`).
+    unread : str, optional
+        A parameter the student's function must never read for the mistake to be named
+        (:func:`.package_answers.parameters_read`; r341 X-1: "wrap not passed on" was said of a
+        trilinear that passes it on, to a bilinear that ignores it).
     """
 
     kind: str
@@ -86,6 +90,7 @@ class Mistake:
     parameter: Callable | None = field(default=None, repr=False)
     reads: str | None = None
     with_others: bool = False
+    unread: str | None = None
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words
@@ -98,6 +103,8 @@ class Slip:
     kind: str
     words: str | Callable[..., str]
     value: Any
+    reads: str | None = None  # as Mistake.reads and Mistake.unread
+    unread: str | None = None
 
 
 @dataclass(frozen=True)
@@ -134,9 +141,11 @@ class Knobs:
             return lambda *args: self.gives(*args, **rest)
 
         kind = " and ".join(p.kind for p in parts)
+        reads = next((slip.reads for _, slip in combo if slip.reads), None)
+        unread = next((slip.unread for _, slip in combo if slip.unread), None)
         if len(parts) == 1:
-            return Mistake(kind, parts[0].words, gives)
-        return Mistake(kind, "", gives, parts=parts, without=without)
+            return Mistake(kind, parts[0].words, gives, reads=reads, unread=unread)
+        return Mistake(kind, "", gives, parts=parts, without=without, reads=reads, unread=unread)
 
 
 @dataclass(frozen=True)

@@ -445,6 +445,33 @@ def names_read(fn, depth: int = 4) -> frozenset:
     return frozenset(name for code in _codes(fn, depth) for name in code.co_names)
 
 
+#: The instructions by which a function's code reads a local of its own (Python 3.11–3.13): a
+#: parameter read inside a nested function is a cell, made and closed over by the outer code.
+_LOCAL_READS = frozenset({"LOAD_FAST", "LOAD_FAST_CHECK", "LOAD_FAST_LOAD_FAST", "LOAD_DEREF",
+                          "LOAD_CLOSURE", "MAKE_CELL"})  # fmt: skip
+
+
+def parameters_read(fn) -> frozenset:
+    """The parameters of ``fn`` that its own code reads (r341 X-1: a trilinear that never
+    reads its ``wrap`` did not pass it on; one that reads it calls a bilinear that ignores
+    it): what :attr:`~.exercise.Mistake.unread` asks of it.
+
+    >>> sorted(parameters_read(lambda texture, uv, wrap="repeat": texture[0] + uv))
+    ['texture', 'uv']
+    """
+    code = getattr(fn, "__code__", None)
+    if code is None:
+        return frozenset()
+    flags = code.co_flags
+    n = code.co_argcount + code.co_kwonlyargcount
+    n += bool(flags & inspect.CO_VARARGS) + bool(flags & inspect.CO_VARKEYWORDS)
+    loaded = set()
+    for i in dis.get_instructions(code):
+        if i.opname in _LOCAL_READS:
+            loaded.update(i.argval if isinstance(i.argval, tuple) else (i.argval,))
+    return frozenset(loaded.intersection(code.co_varnames[:n]))
+
+
 @lru_cache(maxsize=4096)  # the package's codes are read again at every check
 def _print(code) -> tuple:
     """What a copy of ``code`` keeps: its instructions with the names and constants they read

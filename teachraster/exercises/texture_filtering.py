@@ -801,7 +801,14 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
         # r85 07 D3: `wrap` not passed on was told to rethink its levels and weights
         Slip("wrap not passed on", lambda a, e, g: f"every level is tiled ('repeat') although "
              f"this case asks for wrap={a[3]!r}: pass trilinear's `wrap` on to each bilinear "
-             "call (the default 'repeat' is only the default)", "repeat"),
+             "call (the default 'repeat' is only the default)", "repeat", unread="wrap"),
+        # r341 X-1: the same answer from a trilinear that reads its wrap and passes it on
+        Slip("bilinear: ignores wrap", lambda a, e, g: f"every level is tiled ('repeat') "
+             f"although this case asks for wrap={a[3]!r}, and your trilinear reads its `wrap`: "
+             "the bilinear it calls tiles whatever wrap says (7.2: 'clamp' repeats the border "
+             "texels outwards); get bilinear's check to pass first (or, if trilinear reads "
+             "`wrap` without handing it to each bilinear call, pass it on)", "repeat",
+             reads="wrap"),
         Slip("bilinear: weights swapped", "within each level the texel weights are swapped"
              + _BILINEAR_FIRST, "swapped"),
         Slip("bilinear: rows and columns swapped", "each level's rows and columns are swapped"

@@ -17,7 +17,7 @@ import numpy as np
 
 from .diagnosis import Result, diagnose
 from .exercise import Exercise, content_key, copies
-from .package_answers import names_read, package_note, watching
+from .package_answers import names_read, package_note, parameters_read, watching
 from .report import Failure, Report
 from .running import SKIPPED, current, run_case, run_checker
 
@@ -116,7 +116,7 @@ def check_exercise(spec: Exercise, fn) -> Report:
             ok = run_checker(lambda v=value, e=expected, a=args: bool(spec.same(v, e, a)), False)
             raw, key = returned.raw.get(k), returned.key(k)
             results.append(Result(k, args, expected, outcome.value, ok, raw, key))
-    reads = run_checker(lambda: names_read(fn), frozenset())
+    reads = run_checker(lambda: names_read(fn) | parameters_read(fn), frozenset())
     said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()), reads)
     answers = {r.index: r.got for r in results}
     failures = []
