@@ -438,6 +438,14 @@ def trilinear_lower_only(pyramid, uv, lod, wrap="repeat"):
     return bilinear(pyramid[int(min(max(math.floor(lod), 0), q))], uv, wrap)
 
 
+def _resolve_by_vote(colours, ids, background):
+    """The background where fewer than half the samples are covered, else the covered mean."""
+    covered = np.asarray(ids) >= 0
+    if 2 * covered.sum() < len(ids):
+        return np.asarray(background, float)
+    return np.asarray(colours, float)[covered].mean(axis=0)
+
+
 def _bilinear_tiling(texture, uv, wrap="repeat"):
     """A bilinear that ignores its wrap: it tiles whatever it is asked."""
     return bilinear(texture, uv, "repeat")
@@ -1450,6 +1458,13 @@ WRONG = {
     "trilinear, nearest level": ("trilinear", None, "(the nearest)"),
     "trilinear, unclamped weight": ("trilinear", trilinear_unclamped_weight, "clamp it to [0, q]"),
     "trilinear, lower level only": ("trilinear", trilinear_lower_only, "alone"),
+    # r341 half-named (capstone): resolve by a vote; dst premultiplied again on all channels
+    "resolve by a vote of its samples": ("resolve", _resolve_by_vote, "a vote of its samples"),
+    "over, dst premultiplied again on four channels": (
+        "over_premultiplied",
+        lambda s, d: np.asarray(s, float) + np.asarray(d, float) * d[3] * (1 - s[3]),
+        "multiplied the destination by its alpha again, on all four",
+    ),
     # r341 X-1: the two causes of every level tiled, told apart by whether trilinear reads wrap
     "trilinear on a bilinear that ignores wrap": (
         "trilinear",

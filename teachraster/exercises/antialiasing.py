@@ -662,6 +662,30 @@ def _background_if_any_words(args, expected, got) -> str:
     )
 
 
+def _by_majority(at_half: bool):
+    """The background where too few samples are covered (fewer than half; ``at_half``: half
+    or fewer), else the covered samples' mean alone (r341, capstone 12.10: told the covered
+    mean only, on a pixel that got the background)."""
+
+    def gives(colours, ids, background):
+        s, k = _sample_counts(ids)
+        few = 2 * k <= s if at_half else 2 * k < s
+        return np.asarray(background, dtype=float) if few else _covered_mean(colours, ids, 0)
+
+    return gives
+
+
+def _by_majority_words(args, expected, got) -> str:
+    _, ids, _ = args
+    s, k = _sample_counts(ids)
+    return (
+        f": you decided the pixel by a vote of its samples ({k} of {s} covered here): the "
+        "background where about half or fewer are covered, else the covered samples' mean "
+        "alone; a pixel is neither all one nor all the other, each sample is an equal share "
+        "of it, covered or not; " + _mean_rule(args)
+    )
+
+
 def _in_light(colours, ids, background):
     """6.3's resolve where 6.2's numbers are plain: decoded from sRGB, averaged, encoded."""
     light = srgb_to_linear(_with_background(np.nan_to_num(colours), ids, background))
@@ -730,6 +754,8 @@ RESOLVE_MISTAKES = [
     Mistake("background if any uncovered", _background_if_any_words,
             gives=lambda c, i, b: np.asarray(b, dtype=float) if (i < 0).any()
             else c.mean(axis=0)),
+    Mistake("background unless most covered", _by_majority_words, gives=_by_majority(False)),
+    Mistake("background unless most covered", _by_majority_words, gives=_by_majority(True)),
     Mistake("divided by S − 1", lambda a, e, g: f": you divided by S − 1 = {len(a[1]) - 1}, "
             f"not by the S = {len(a[1])} samples the pixel has (len(sample_ids))",
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0) / (len(i) - 1)

@@ -205,6 +205,10 @@ PREMULTIPLIED = [
     ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
      "but it is premultiplied already: it is weighted by (1 − α) of the source alone",
      _destination_again),
+    # r341 (capstone 12.9): the same slip on all four channels was told only the rule
+    ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
+     "on all four channels (its alpha too: α_d·α_d), but it is premultiplied already: it is "
+     "weighted by (1 − α) of the source alone", lambda s, d: s + d * d[3] * (1 - s[3])),
     # r222 item 6: "(the dark fringe)" was said of glass darkened all over: the source is too
     # dark wherever it is translucent, a fringe only at a soft edge
     ("premultiplied twice", f"you multiplied the source by its alpha again, but it is "
