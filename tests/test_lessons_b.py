@@ -2652,10 +2652,10 @@ def test_09_quads_closed_form_and_predictions():
     assert 0.55 < ns.ratio < 0.85
     assert ns.changed == ns.wider == [4, 5, 6, 7] and ns.reads_answer == ns.reads_choices[1]
     source = (ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text()
-    asked = source[source.index("q_reads = Predict(") :]
+    asked = source[source.index("q_reads = PredictChoice(") :]
     asked = asked[: asked.index("q_reads.hold()")]
     assert "128 × 96" in asked and "256 × 192" in asked  # the explain's numbers' source
-    measured = source[source.index("reads_choices = [") : source.index("q_reads = Predict(")]
+    measured = source[source.index("reads_choices = [") : source.index("q_reads = PredictChoice(")]
     assert "reads_answer = reads_choices[1]" in measured and "2**k > check" in source
     # the Predict of §6, before the EXT formula: 8.2 x 8 texels takes 2 probes, a level finer
     from teachraster.plotting.footprint import footprint
@@ -2742,9 +2742,11 @@ def test_09_r233_q_probes_names_both_formulas_and_measures_both():
     assert ns.probe_answer == "GL: more than 0.05 · Vulkan: about 0.01"
     assert ns.probe_answer in ns.probe_choices and len(set(ns.probe_choices)) == 5
     asked = next(
-        "".join(c["source"]) for c in cells if "q_probes = Predict(" in "".join(c["source"])
+        "".join(c["source"]) for c in cells if "q_probes = PredictChoice(" in "".join(c["source"])
     )
-    stem = asked[asked.index("q_probes = Predict(") : asked.index("probe_choices,\n    answer")]
+    stem = asked[
+        asked.index("q_probes = PredictChoice(") : asked.index("probe_choices,\n    answer")
+    ]
     assert "GL's</b> example formula" in stem and "<b>Vulkan's</b> preferred" in stem
     assert "⌈P<sub>max</sub>/P<sub>min</sub>⌉" in stem and "not rounded" in stem
 
@@ -2775,10 +2777,29 @@ def test_09_answers_wait_for_check():
     assert "printed how many" not in text[ask["q_probes"]]
     # review r61 09-2: q_reads is asked before §5's renders, whose printed table (nearest,
     # bilinear, mipmapped) would answer it; that cell and §7's table are held
-    reads_at = next(i for i, t in enumerate(text) if re.search(r"^q_reads = Predict", t, re.M))
+    reads_at = next(
+        i for i, t in enumerate(text) if re.search(r"^q_reads = PredictChoice\(", t, re.M)
+    )
     renders = next(i for i, t in enumerate(text) if "RMS error {rms[f]:.3f}" in t)
     assert reads_at + 1 == renders and text[renders].startswith("q_reads.hold()")
     assert not any("mipmap" in t and "RMS error" in t for t in text[:reads_at])
+    # review r336 W1: both multiple choices are PredictChoice, judged in the page (Check enabled
+    # at the pick, with no wait for a kernel busy with Run All), on the options and answers
+    # measured; their own outputs hold neither the explanation nor the measured gaps
+    from notebook_runs import executed
+
+    run, gap_gl = executed("09_texture_filtering"), lesson("09_texture_filtering").gap_gl
+    for name, args, explained, said in (
+        ("q_reads", "reads_choices,\n    answer=reads_answer,\n", "into flat grey", "flat grey"),
+        ("q_probes", "probe_choices,\n    answer=probe_answer,\n", "GL {gap_gl:.3f}",
+         f"GL {gap_gl:.3f}"),
+    ):  # fmt: skip
+        i = next(i for i, t in enumerate(text) if f"\n{name} = PredictChoice(\n" in t)
+        assert args in text[i] and explained in text[i], name
+        assert text[i + 1].startswith(f"{name}.hold()"), name
+        shown = json.dumps(run.notebook().cells[i].outputs, ensure_ascii=False)
+        assert "PredictChoice object" in shown and said not in shown, name
+    assert not any(re.search(r"\bPredict\(", t) for t in text)  # none judged in the kernel
     assert "approximate" in text[ask["q_level"] - 1] and "§8.14.1" in text[ask["q_level"] - 1]
     ns = lesson("09_texture_filtering")
     assert max(ns.bound_gap.values()) <= 1  # GL's bounds: levels at most one apart
@@ -2813,7 +2834,7 @@ def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe(
         assert rms == pytest.approx(row["error_minified"], rel=1e-9), f
     assert ns.moved_same < 0.5  # checks off the blocks: "most pixels ... change"
     assert ns.same_30 == 1.0  # the explorer's checks, at 30°
-    seen = seen_before_check("09_texture_filtering", "q_reads = Predict(", "q_reads")
+    seen = seen_before_check("09_texture_filtering", "q_reads = PredictChoice(", "q_reads")
     assert "nmn = nearest" not in seen and "grey levels" not in seen
     assert "checks 8 texels wide, the first from texel 0 to 7" in seen  # the premise, printed
     cells = json.loads((ROOT / "notebooks" / "09_texture_filtering.ipynb").read_text())["cells"]
@@ -2959,7 +2980,7 @@ def test_09_r233_standards_probes_order_and_appendix():
     assert "(aligned to even rows and columns)" not in flat
     # F2, P1: the question names both formulas; its answer pairs the two measured gaps, and
     # the footprints (their probe counts, figure and widget) come after it
-    ask = next(i for i, t in enumerate(text) if "q_probes = Predict(" in t)
+    ask = next(i for i, t in enumerate(text) if "q_probes = PredictChoice(" in t)
     footprints = next(i for i, t in enumerate(text) if t.startswith('picked = {"near"'))
     widget = next(i for i, t in enumerate(text) if t.startswith("footprints = FootprintExplorer"))
     assert ask < footprints < widget
@@ -3055,8 +3076,10 @@ def test_09_r246_probes_stated_exercise_linked_overshading_and_held_stripe():
     text = ["".join(c["source"]) for c in cells]
     flat = " ".join(" ".join(text).split())
     # P1
-    asked = next(t for t in text if "q_probes = Predict(" in t)
-    stem = asked[asked.index("q_probes = Predict(") : asked.index("probe_choices,\n    answer")]
+    asked = next(t for t in text if "q_probes = PredictChoice(" in t)
+    stem = asked[
+        asked.index("q_probes = PredictChoice(") : asked.index("probe_choices,\n    answer")
+    ]
     stem = " ".join(stem.replace('"\n    "', "").split())
     assert "i/(N + 1) − ½ of its length from the footprint's centre" in stem
     assert "two probes sit a sixth of the length either side of it" in stem
