@@ -34,3 +34,28 @@ def test_a_parameter_is_read_in_a_nested_function_or_a_star_argument():
     assert parameters_read(nested) == {"pyramid", "wrap"}
     assert parameters_read(starred) == {"kwargs"}
     assert parameters_read(print) == frozenset()  # no Python code: nothing known
+
+
+@pytest.mark.parametrize("cell_start, lesson, sections", [
+    ("## 12.1", "02_half_planes", ["§14.6.1", "§3.4.2.1", "*Basic Polygon Rasterization*"]),
+    ("## 12.4", "05a_zbuffer", ["§17.3.4", "§17.9", "VkPipelineDepthStencilStateCreateInfo"]),
+])  # fmt: skip
+def test_the_two_graded_tie_rules_have_a_table_citing_the_lessons_sections(
+    cell_start, lesson, sections
+):
+    """r341 M: no GL/D3D/Vulkan line for the two tie rules the capstone grades; each task now
+    has one, citing the sections its lesson's full table cites."""
+    import json
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1] / "notebooks"
+
+    def markdown(name):
+        cells = json.loads((root / f"{name}.ipynb").read_text())["cells"]
+        return ["".join(c["source"]) for c in cells if c["cell_type"] == "markdown"]
+
+    task = next(t for t in markdown("exercises/12_capstone") if t.startswith(cell_start))
+    table = task[task.index("| ") :]
+    taught = "\n".join(markdown(lesson))
+    for section in sections:
+        assert section in table and section in taught, section
