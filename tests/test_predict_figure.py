@@ -447,6 +447,13 @@ def test_the_answers_label_keeps_clear_of_the_readout():
         assert not overlap(box, cross), (mine, box)
         assert 0 <= box["y0"] and box["y1"] <= height
     assert places[-1]["align"] == "right"  # by the right edge the readout turns left
+    # review r336 S7: the readout in the axis labels' size, its box as tall as that font
+    from pathlib import Path
+
+    js = (Path(tr.__file__).parent / "widgets" / "static" / "predict_figure.js").read_text()
+    size = int(js.split('READOUT_FONT = "bold ')[1].split("px")[0])
+    assert size >= 20 and js.count("ctx.font = READOUT_FONT") == 2 and "bold 16px" not in js
+    assert all(p["box"]["y1"] - p["box"]["y0"] >= size for p in places)
 
 
 def test_the_revealed_pixels_have_a_key_and_missed_ones_are_not_orange():

@@ -157,14 +157,20 @@ export function orderVerdict(answer, given) {
   return { places, correct: places.every(Boolean) };
 }
 
+// the live readout's font: the size of the figure's axis labels once the canvas is shown at
+// a notebook column's width (review r336 S7: at 16 px "ρ 4.65" read at about 12 px on screen,
+// the smallest text in the figure, though the question asks the student to read it)
+export const READOUT_FONT = "bold 21px sans-serif";
+
 // where the live readout goes (canvas pixels, y down): up and to the right of the marker,
-// or to its left when the canvas ends; its box is what the answer's label must keep clear of
+// or to its left when the canvas ends; its box (the font's cap height and descent) is what
+// the answer's label must keep clear of
 export function readoutPlace(mine, textWidth, canvasWidth) {
   const right = mine[0] + 18 + textWidth > canvasWidth;
   const x = mine[0] + (right ? -18 : 18);
-  const y = mine[1] - 16;
+  const y = mine[1] - 17;
   return { x, y, align: right ? "right" : "left",
-    box: { x0: right ? x - textWidth : x, x1: right ? x : x + textWidth, y0: y - 14, y1: y + 3 } };
+    box: { x0: right ? x - textWidth : x, x1: right ? x : x + textWidth, y0: y - 18, y1: y + 4 } };
 }
 
 // where "the answer" goes by the true point (canvas pixels, y down): above the dot, or below
@@ -500,7 +506,7 @@ function mountPoint(root, data, host) {
   // the readout's box at the marker (null without one), measured in the font it is drawn in
   function readoutBox(mine) {
     if (!data.readout) return null;
-    ctx.font = "bold 16px sans-serif";
+    ctx.font = READOUT_FONT;
     return readoutPlace(mine, ctx.measureText(readoutNow()).width, canvas.width).box;
   }
   function draw() {
@@ -575,7 +581,7 @@ function mountPoint(root, data, host) {
     ctx.stroke();
     if (data.readout) { // what the marker sits on, while it moves: no counting key presses
       const text = readoutNow();
-      ctx.font = "bold 16px sans-serif";
+      ctx.font = READOUT_FONT;
       const { x, y, align } = readoutPlace(mine, ctx.measureText(text).width, canvas.width);
       ctx.textAlign = align;
       ctx.lineWidth = 4;
