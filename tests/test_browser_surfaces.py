@@ -58,6 +58,17 @@ def test_lesson_04_surfaces_open_on_u_and_the_two_planes(lab, page):  # noqa: F8
     }
     # as the text says: u, u/w and 1/w on; the affine plane is the student's to switch on
     assert pressed == {"correct": "true", "affine": "false", "fw": "true", "inv": "true"}
+    # r342 FIG1: each button keys its sheet's colour, framed in white: the pressed
+    # perspective-correct button's stripe, the same blue, had vanished into its background
+    styles = {
+        sheet: view.get_by_role("button", name=name, exact=True)
+        .locator(".tr-x-swatch")
+        .evaluate("e => [getComputedStyle(e).backgroundColor, getComputedStyle(e).borderTopColor]")
+        for sheet, name in BUTTONS.items()
+    }
+    # OKABE.blue (0, 114, 178) at the sheets' 0.55 over white, as the picture shows it
+    assert styles["correct"] == ["rgb(115, 177, 213)", "rgb(255, 255, 255)"]
+    assert len({fill for fill, _ in styles.values()}) == 4
     view.get_by_role("button", name=BUTTONS["affine"], exact=True).click()
     assert (
         view.get_by_role("button", name=BUTTONS["affine"], exact=True).get_attribute("aria-pressed")

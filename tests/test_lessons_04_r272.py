@@ -173,10 +173,10 @@ def test_m1_the_table_names_what_the_package_has():
 @pytest.mark.parametrize("w_text", [None, "[1.0, 1.0, 8.0]"])
 def test_m2_click_the_pixel_with_the_largest_error(capsys, w_text):
     """Sections 2-5 had no prediction answered on a figure (M2): now q_worst asks about the
-    pixels of largest |Δu| before the heatmap, which it holds with the text under it. r312 P1:
-    "the one pixel with the largest |Δu|" hung on 0.163 against 0.160, which no argument of
-    the lesson decides; now it asks which centres reach the edges' peak: none, by the
-    lesson's argument (largest on the edges, at the diamonds, where no centre lies)."""
+    pixels of largest |Δu| before the heatmap, which it holds with the text under it. r342 P1:
+    "which centres reach the edges' peak" was answered by the 3-D view's "largest over the
+    whole triangle"; now it asks for the one pixel of largest |Δu| again (r312 P1's worry,
+    0.163 against 0.160, met by the dotted lines of constant w along which |Δu| is affine)."""
     cells = _cells()
     ids = list(cells)
     assert ids.index("q-worst") == ids.index("c12") + 1 == ids.index("ab224988") - 1
@@ -187,27 +187,31 @@ def test_m2_click_the_pixel_with_the_largest_error(capsys, w_text):
     diff, worst, q = ns["diff"], ns["worst"], ns["q_worst"]
     assert worst == tuple(int(k) for k in np.unravel_index(np.nanargmax(diff), diff.shape))
     assert worst == ((4, 10) if w_text is None else (12, 6))  # the reviewer's, and r250's
-    highest = max(ns["edge_peak"].values())
-    assert np.nanmax(diff) < highest and not ns["reach"].any()  # no centre reaches the peak
-    q.given = []  # "no pixel" ticked
+    assert np.argwhere(q.answer).tolist() == [list(worst)] and q.data["one"]
+    q.given = [list(worst)]
     assert q.correct
-    for lure in [worst, *ns["near_cells"]]:  # the largest, and the centres nearest a diamond
+    for lure in ns["lured"]:  # the centres nearest a diamond
         q.given = [list(lure)]
         assert not q.correct
+    # the dotted lines are lines of constant w: 1/w is the same at both their ends
+    lines = ns["constant_w_lines"]()
+    assert len(lines) >= 5
+    for a, b in lines:
+        lam = ns["tr"].barycentric(ns["xy"], np.array([a, b]))
+        assert np.ptp(lam @ (1 / ns["w"])) < 1e-12
     explain = q.explain
-    assert f"None: no pixel centre reaches {highest:.3f}." in explain
-    assert f"The largest at a centre is {diff[worst]:.3f}, at pixel (row {worst[0]}, " in explain
+    assert f"Pixel (row {worst[0]}, col {worst[1]}): |Δu| = {diff[worst]:.3f}" in explain
     if w_text is None:
-        assert ns["lured"] == [(4, 9), (10, 8)] and f"{highest:.3f}" == "0.172"
-        assert "(row 4, col 9), (row 10, col 8), show only 0.160, 0.143:" in explain
+        assert ns["lured"] == [(4, 9), (10, 8)] and f"{diff[worst]:.3f}" == "0.163"
+        assert "(row 4, col 9), (row 10, col 8), lie deeper inside: only 0.160, 0.143." in explain
     else:
         assert ns["lured"] == [] and "It is the pixel centre nearest a diamond." in explain
-    assert f"<b>Mark every pixel whose centre has |Δu| of {highest:.3f} or more</b>" in q.question
-    assert "one=True" not in cells["q-worst"] and "none=" in cells["q-worst"]
+    assert "<b>Click the pixel whose centre has the largest |Δu|</b>" in q.question
+    assert "one=True" in cells["q-worst"] and "none=" not in cells["q-worst"]
     # nothing before the question gives the answer away
     before = " ".join(cells[k] for k in ids[: ids.index("q-worst")])
     assert f"row {worst[0]}, col {worst[1]}" not in before
-    assert "why no pixel shows that largest value" not in " ".join(before.split())
+    assert "falls off quickly inward" not in " ".join(before.split())
     # r335 P1: no cell before it prints the affine errors at the pixel centres (0.163)
     for printed in ("u_affine - u_true", "lam @ u_vertex - u_alpha", "np.nanmax(diff)"):
         assert printed not in before, printed
@@ -236,11 +240,12 @@ def test_fig4_the_explorer_says_when_the_segment_lies_on_the_screen():
 @pytest.mark.notebook
 def test_r335_p1_nothing_seen_before_q_worst_prints_the_centres_largest():
     """r335 P1: sections 2-4 printed the affine error's largest over the pixel centres (0.163,
-    below the edges' 0.172), which answers q_worst ("none"); now those lines, and the spans
-    table's affine row under it, are held until it is checked."""
+    below the edges' 0.172), which answered q_worst; now those lines, and the spans table's
+    affine row under it, are held until it is checked. r342 P1: nor is the pixel named."""
     from test_predictions_r147 import seen_before_check
 
     seen = seen_before_check(
         "04_perspective_correct_interpolation", "q_worst = PredictPixels(", "q_worst"
     )
     assert "0.163" not in seen and "0.160" not in seen
+    assert "row 4, col 10" not in seen and "(4, 10)" not in seen

@@ -66,8 +66,8 @@ def test_p1_the_player_follows_the_question_it_would_answer():
     assert "The player in section 5, after its question, has the same toggle" in _flat(cells["c08"])
     affine = next(t for t in cells.values() if "q_affine = " in t)
     assert "comparison in section 5" in affine and "section 4" not in affine
-    # r312 P1: the question asks for every centre reaching the peak (none), not "the one"
-    assert "one pixel whose centre" not in cells["q-worst"] and "none=" in cells["q-worst"]
+    # r342 P1: the question asks for the one pixel of largest |Δu|, one click
+    assert "Click the pixel whose centre has" in cells["q-worst"] and "one=True" in cells["q-worst"]
     assert "its comparison shows both interpolations" in _flat(cells["c12-player-text"])
     # r312 S3: the player's edge names tied once to the text's
     assert "edge $\\mathbf{v}_1\\mathbf{v}_2$ is its E12" in _flat(cells["c12-player-text"])
@@ -144,3 +144,21 @@ def test_s1_s2_s3_s4_words():
     for cid in ("c04-rule", "c04-history", "c04-divide", "c04", *far):
         assert len(cells[cid].split()) < 400, cid
     assert "leaves every vertex's $w$ at 1, so there affine interpolation is exact" in m1
+
+
+def test_r342_m2_s2_s3_s4_words():
+    """r342: M2, clipping's new vertices get perspective-correct attributes (clip space); S2,
+    the Try-it names where FW, FH are set; S3, the floor's text no longer repeats q_diagonal's
+    answer; S4, the far figure's blue sky is painted on it, not rendered."""
+    cells = _cells()
+    clip = _flat(cells["c04"])
+    assert "OpenGL 4.6 §13.7.1 *Clipping Shader Outputs*" in clip
+    assert "with the same $t$ as its position. It does so in clip space, before the divide" in clip
+    assert "set `FW, FH = 64, 48` in the folded cell that prints the floor's vertex $w$" in _flat(
+        cells["c20"]
+    )
+    assert "FW, FH = 320, 240" in cells["c14"] and "vertex w from" in cells["c14"]
+    floor = _flat(cells["floor_md"])
+    assert "moves the lookup" not in floor and "for the reason the answer above gives" in floor
+    assert "lookup √2 times as far" in cells["q-diagonal"]  # the answer keeps it
+    assert "is painted on the figure, not rendered" in _flat(cells["c15-horizon"])

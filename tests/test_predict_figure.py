@@ -689,3 +689,16 @@ def test_the_point_marker_stays_on_the_plot_and_an_answer_off_it_is_refused():
     assert point.count("constrain(") == 2 and "toFixed" not in point  # drag and keys
     assert "checkDisabled(state.revealed, answered())" in point
     assert "POINT_HINT" in point and "arrow keys" in js.split("POINT_HINT =")[1].split(";")[0]
+
+
+def test_a_point_verdict_quotes_the_gap_no_finer_than_the_tolerance():
+    """Review r342 S1: lesson 04's q_point (tolerance 0.15) read "Your marker is 0.00101 units
+    from the answer"; the page and the kernel now write 0.001."""
+    from teachraster.widgets.predict_figure import gap_text
+
+    cases = [(0.00101, 0.15), (17.888, 1.5), (2.0, 4.0), (0.3, 0.0), (0.0, 0.15)]
+    got = call_js(("predict_figure",), [("gapText", list(case)) for case in cases])
+    assert got == [gap_text(*case) for case in cases] == ["0.001", "17.9", "2", "0.3", "0"]
+    p = PredictPoint("Q?", answer=(1, 2), draw=None, xlim=(0, 4), ylim=(0, 4), tolerance=0.15)
+    p.given = [1.00101, 2.0]
+    assert "Your marker is 0.001 units from the answer" in p.verdict()

@@ -426,6 +426,19 @@ def point_gap(answer, given) -> float:
     return 0.0 if gap <= 1e-9 * max(1.0, *np.abs(answer)) else gap
 
 
+def gap_text(gap: float, tolerance: float) -> str:
+    """A point verdict's distance, to three significant digits but no finer than a hundredth
+    of the tolerance's order: "0.00101 units" for a tolerance of 0.15 read as more precise
+    than a drag can be (review r342 S1); the page's ``gapText`` writes the same.
+
+    >>> gap_text(0.00101, 0.15), gap_text(17.888, 1.5), gap_text(2.0, 4), gap_text(0.3, 0)
+    ('0.001', '17.9', '2', '0.3')
+    """
+    if tolerance > 0:
+        gap = round(gap, 2 - int(np.floor(np.log10(tolerance))))
+    return f"{gap + 0.0:.3g}"  # + 0.0: no "-0"
+
+
 class PredictPoint(FigurePrediction):
     """Drag a marker to where you expect a point; Check shows the true point beside it.
 
@@ -588,7 +601,7 @@ class PredictPoint(FigurePrediction):
         within = f"; within {self.tolerance:.3g} {units} is right" if self.tolerance else ""
         if self.readout() is not None:
             word += f" You predicted {self.readout()}."
-        return (f"{word} Your marker is {self.gap:.3g} {units} from the answer "
+        return (f"{word} Your marker is {gap_text(self.gap, self.tolerance)} {units} from the answer "
                 f"({self.answer[0]:.3g}, {self.answer[1]:.3g}){within}.")  # fmt: skip
 
 

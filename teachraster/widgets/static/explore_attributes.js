@@ -158,6 +158,15 @@ export function readoutText(w, show, gap) {
     : `${text} Switch both f sheets on to see it as a bar.`;
 }
 
+// the sheets are drawn this opaque over the white page (their swatches show that colour)
+const SHEET_ALPHA = 0.55;
+
+// a sheet's colour as the picture shows it on white: `hex` at SHEET_ALPHA over #fff, "rgb(...)"
+export function sheetTint(hex) {
+  const rgb = [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16));
+  return `rgb(${rgb.map((c) => Math.round(SHEET_ALPHA * c + (1 - SHEET_ALPHA) * 255)).join(", ")})`;
+}
+
 const SURFACES = [
   ["correct", "f, perspective-correct = (f/w) / (1/w)", OKABE.blue],
   ["affine", "f, affine (screen-space plane)", OKABE.orange],
@@ -177,7 +186,7 @@ export function scenePolys(xy, w, f, names, W, H, zScale) {
   for (const piece of pieces) {
     for (const name of names) {
       polys.push({ pts: piece[name].map(([x, y, v]) => [x, y, v * zScale]), sheet: name,
-        fill: colours[name], alpha: 0.55, stroke: "rgba(255,255,255,0.25)" });
+        fill: colours[name], alpha: SHEET_ALPHA, stroke: "rgba(255,255,255,0.25)" });
     }
   }
   return { polys, crossing };
@@ -264,7 +273,15 @@ function mount(el, data, host) {
       host.setState({ show: state.show });
       paint.request(e);
     }, state.show[key]);
-    b.style.borderLeft = `6px solid ${colour}`;
+    // each sheet's colour as the picture shows it, keyed on its button: a swatch framed in
+    // white, seen on a pressed button's blue too (a left stripe of the perspective-correct
+    // sheet's full blue vanished into it: the one sheet the text is about had no key, reviews
+    // r312, r335, r342 FIG)
+    const swatch = element("span", { class: "tr-x-swatch", "aria-hidden": "true" });
+    swatch.style.cssText = `display:inline-block;width:0.9em;height:0.9em;margin-right:6px;` +
+      `vertical-align:-0.1em;background:${sheetTint(colour)};border:2px solid #fff;` +
+      "outline:1px solid #555";
+    b.prepend(swatch);
     return b;
   });
   const wSlider = slider("w of v3", { min: 1, max: 8, step: 0.1, value: state.w[2],

@@ -110,6 +110,15 @@ export function pointVerdict(answer, given, tolerance) {
   return { gap: gap <= noise ? 0 : gap, correct: gap <= tolerance };
 }
 
+// a point verdict's distance: three significant digits, no finer than a hundredth of the
+// tolerance's order ("0.00101 units" at a tolerance of 0.15 read as more precise than a drag
+// can be, review r342 S1); gap_text in predict_figure.py writes the same
+export function gapText(gap, tolerance) {
+  const shown = tolerance > 0
+    ? Number(gap.toFixed(Math.max(0, 2 - Math.floor(Math.log10(tolerance))))) : gap;
+  return fmt(shown, 3);
+}
+
 // the point question's instruction: the arrow keys move the marker too, once the figure has
 // been clicked (review r215 07-3: nothing said so); a click only gives the figure the keys, it
 // moves nothing (review r270 09: "or click the figure" read as "click to place it")
@@ -603,7 +612,7 @@ function mountPoint(root, data, host) {
     const v = pointVerdict(known.answer, state.given, data.tolerance);
     const mine = data.readout
       ? `You predicted ${readoutText(data.readout, state.given[0], data.readoutDigits)}. ` : "";
-    show(v.correct, `${mine}Your marker is ${fmt(v.gap, 3)} ${data.units} from the answer (green)` +
+    show(v.correct, `${mine}Your marker is ${gapText(v.gap, data.tolerance)} ${data.units} from the answer (green)` +
       `${data.tolerance ? `; within ${fmt(data.tolerance, 3)} ${data.units} is right` : ""}.`, known);
     revealOnFigure(host, canvas, paint);
   }
