@@ -6286,8 +6286,9 @@ def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
     (sec5,) = [t for t in text if t.startswith("## 5. Depth bias")]
     flat = " ".join(sec5.split())
     assert "with $r$ one step of the buffer" not in flat
-    # r279 F-1: llvmpipe's unorm r is two steps (lp_state_fs.c: offset_units * mrd * 2; measured
-    # on llvmpipe's 24-bit buffer: u units move the depth 2u steps)
+    # r279 F-1: llvmpipe's unorm r is two steps (r346 F2: lp_state_setup.c,
+    # lp_make_setup_variant_key: offset_units * mrd * 2; measured on llvmpipe's 24-bit buffer:
+    # u units move the depth 2u steps)
     assert (
         "one step of a unorm buffer in Direct3D and this simulator, two steps in llvmpipe" in flat
     )
@@ -6301,15 +6302,51 @@ def test_05b_review_r260_bias_unit_per_api_reverse_z_sign_and_the_clamp():
     assert "`VK_EXT_depth_bias_control`" in rows["Vulkan"] and "not fixed" in rows["Vulkan"]
     assert "`util_get_depth_format_mrd`" in rows["llvmpipe (Mesa)"]
     assert "**two** steps" in rows["llvmpipe (Mesa)"] and "llvmpipe takes two" in ask_text(text)
+    # r346 F2: the file that multiplies by mrd * 2, and llvmpipe's slope is the maximum
+    assert "`lp_state_setup.c`" in rows["llvmpipe (Mesa)"] and "lp_state_fs.c" not in sec5
+    assert "**the maximum**, `MAX2(dzdx, dzdy)`" in rows["llvmpipe (Mesa)"]
     # M-2: reverse-Z flips the signs
     assert "With **reverse-Z** (section 4: greater is nearer) every sign flips" in flat
     assert '"Polygons with a larger z value will be drawn in front of polygons' in flat
     # the question says which r it takes
     ask = next(t for t in text if "q_bias = Predict(" in t)
-    assert "Take r as Direct3D " in ask and "adds −k unorm24 steps" not in ask
-    # S-4: the remedy is the clamp, the slope factor already the smallest
+    assert "Take r, as Direct3D " in ask and "to be one unorm24 step" in ask  # r346 S1
+    assert "adds −k unorm24 steps" not in ask
+    # S-4: the remedy is the clamp; r346 F1: the slope factor is a float, -1 not the smallest
     assert not any("Hence the factors are kept small" in t for t in text)
-    assert any("The remedy is the clamp" in " ".join(t.split()) for t in text)
+    flat_all = [" ".join(t.split()) for t in text]
+    assert any("the remedy is the clamp" in t for t in flat_all)
+    assert any("a smaller one such as $-0.1$ is allowed" in t for t in flat_all)
+    assert not any("smallest non-zero" in t for t in flat_all)
+
+
+def test_05b_review_r346_reverse_z_table_and_one_style_for_delta():
+    """Review r346 M1: reverse-Z's recipe per API is a table (OpenGL, Direct3D, Vulkan, llvmpipe,
+    teachraster) with sections, not "In both APIs". S2: δ is dashed in every figure, the text
+    says so; r279 S-2: the reveal's green curve has a key entry. S3: the gloss is the lesson's."""
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "05b_depth_precision.ipynb").read_text())
+    text = ["".join(c["source"]) for c in nb["cells"]]
+    (sec4,) = [t for t in text if t.startswith("## 4. Reverse-Z")]
+    rows = {line.split("|")[1].strip(): line for line in sec4.splitlines()
+            if line.startswith("| ") and "---" not in line}  # fmt: skip
+    assert list(rows)[1:] == ["OpenGL 4.6", "Direct3D 11", "Vulkan", "llvmpipe (Mesa)",
+                              "teachraster"]  # fmt: skip
+    assert "§13.7 *Primitive Clipping*" in rows["OpenGL 4.6"] and "`ARB_clip_control`" in sec4
+    assert "§17.3.4 *Depth Buffer Test*" in rows["OpenGL 4.6"]
+    assert "`VK_EXT_depth_clip_control`" in rows["Vulkan"] and "*Depth Test*" in rows["Vulkan"]
+    assert "`D3D11_COMPARISON_GREATER`" in rows["Direct3D 11"]
+    assert "none: `tr.render` keeps the nearer" in rows["teachraster"]
+    assert not any("In both APIs" in t for t in text)
+    ask = next(t for t in text if "q_fight = PredictPoint(" in t)
+    assert 'delta], "--", color="0.3"' in ask and "along the dashed δ line" in ask
+    assert 'color="#009E73", lw=3, label="after Check' in ask  # the reveal's colour (JS)
+    plot = next(t for t in text if "Reverse-Z: float32 resolution" in t)
+    assert 'ax.axhline(delta, color="gray", lw=2, ls="--"' in plot and "-." not in plot
+    assert "(the wide pale band)" in next(t for t in text if "reverse_md = (" in t)
+    assert "depth aliasing, z-buffer tearing)" not in text[0]
+    assert "falls gently" not in "".join(text)
 
 
 @pytest.mark.notebook
