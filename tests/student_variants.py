@@ -1118,7 +1118,10 @@ def _bias_with(slip=None, test="right"):
         r = 1 / (2 ^ bits - 1) if slip == "xor" else r  # r340: Python reads 2 ^ (bits - 1)
         tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
         tan = math.sin(math.radians(tilt)) if slip == "sin" else tan
+        tan = math.cos(math.radians(tilt)) if slip == "cos" else tan
+        tan = 1 / math.tan(math.radians(tilt)) if slip == "cot" else tan
         m = far * near / (far - near) * tan / z * pixel
+        m = near * tan / z * pixel if slip == "infinite far" else m  # r340: no f/(f − n)
         m = {"view slope": pixel * z * tan, "per unit": m / pixel, "no slope": 0.0}.get(slip, m)
         m = m / z if slip == "z squared" else m
         if test == "own" and r + m > space - m:
@@ -1162,6 +1165,15 @@ def bias_float32(z, tilt, pixel, near, far, bits, reverse, clear):
     if o > z_win(z) - z_win(z - np.float32(clear)) - m:
         return np.float32(np.nan)
     return o if reverse else -o
+
+
+def gap_one_minus_window(z, near, far):
+    """r340 M4: d as 1 − z_win, all in float32 (lesson 05b §4's trap): right in its binade at
+    z = 999 by luck (d = 2^-24), 0 or 2^-24 where d is 2e-8."""
+    z, near, far = np.float32(z), np.float32(near), np.float32(far)
+    one = np.float32(1)
+    d = one - far / (far - near) * (one - near / z)
+    return float(np.spacing(d) / (near / ((one - near / far) * z * z)))
 
 
 def gap_bisected(z, near, far):
@@ -1674,6 +1686,48 @@ WRONG = {
         "decal_bias",
         _bias_with("xor", test="own"),
         "reads as 2 ^ (bits − 1)",
+    ),
+    "gap with d = 1 − z_win in float32": (
+        "reverse_z_gap",
+        gap_one_minus_window,
+        "you computed d as 1 − z_win in float32",
+    ),
+    "gap with d = 1 − z_win, z_win rounded to float32": (
+        "reverse_z_gap",
+        lambda z, near, far: (
+            float(np.spacing(np.float32(1) - np.float32(far / (far - near) * (1 - near / z))))
+            * (1 - near / far)
+            * z
+            * z
+            / near
+        ),
+        "you computed d as 1 − z_win in float32",
+    ),
+    # r340: slips of m in an otherwise complete solution (its own test for NaN uses them too)
+    "decal bias with z squared in m, own NaN test": (
+        "decal_bias",
+        _bias_with("z squared", test="own"),
+        "your slope is the wall's divided by z",
+    ),
+    "decal bias from view depth's slope, own NaN test": (
+        "decal_bias",
+        _bias_with("view slope", test="own"),
+        "you took the slope of the view depth",
+    ),
+    "decal bias without the far plane's factor, own NaN test": (
+        "decal_bias",
+        _bias_with("infinite far", test="own"),
+        "lacks the far plane's factor f/(f − n)",
+    ),
+    "decal bias with cos for tan, own NaN test": (
+        "decal_bias",
+        _bias_with("cos", test="own"),
+        "you took cos θ where the slope needs tan θ",
+    ),
+    "decal bias with 1/tan for tan, own NaN test": (
+        "decal_bias",
+        _bias_with("cot", test="own"),
+        "you took 1/tan θ where the slope needs tan θ",
     ),
     "gap with near and far swapped": (
         "reverse_z_gap",
