@@ -3153,3 +3153,63 @@ R326 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R326.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R326.items()})
+
+
+# == depth_setup (exercise 5.4, r340 M3/M5: 5.1 and 5.2 meet in a choice) ========================
+def _setup_with(unorm="right", reverse="right", dz="right", fmt_rev="float32 reverse-z"):
+    """depth_setup built on the right safe_near and reverse_z_gap, with one slip: ``unorm``
+    "nearest ignored" (unorm24 at 5.1's n whatever nearest), "never" (reverse-Z first, unorm24
+    never preferred), "at nearest" (unorm24 at nearest without comparing); ``reverse``
+    "unchecked" (reverse-Z never compared with the gap), "never" ("neither" once unorm24
+    fails), "pushed" (its near plane 5 × nearest); ``dz`` "gap" (the gap quoted), "other"
+    (unorm24's Δz quoted for reverse-Z); ``fmt_rev`` the words for reverse-Z."""
+
+    def depth_setup(z, gap, far, nearest):
+        n = _rs.safe_near(z, gap, far, 24)
+        if unorm == "nearest ignored" or (unorm == "right" and n <= nearest):
+            return "unorm24", n, gap
+        if unorm == "at nearest":
+            return "unorm24", nearest, 1 / (2**24 - 1) * (far - nearest) * z * z / (far * nearest)
+        near = 5 * nearest if reverse == "pushed" else nearest
+        got = _rs.reverse_z_gap(z, near, far)
+        if unorm == "never" and got > gap and n <= nearest:
+            return "unorm24", n, gap
+        works = {"unchecked": True, "never": False}.get(reverse, got <= gap)
+        quoted = {"gap": gap, "other": 1 / (2**24 - 1) * (far - near) * z * z / (far * near)}
+        return (fmt_rev if works else "neither"), near, quoted.get(dz, got) if works else got
+
+    return depth_setup
+
+
+DIFFERENT.update({
+    "depth set-up at nearest, reverse-Z's near plane halved, format in capitals": (
+        "depth_setup",
+        lambda z, gap, far, nearest: (
+            ("UNORM24", nearest, 1 / (2**24 - 1) * (far - nearest) * z * z / (far * nearest))
+            if _rs.safe_near(z, gap, far, 24) <= nearest
+            else _setup_with(fmt_rev="Reverse-Z")(z, gap, far, nearest / 2)[:1]
+            + (nearest / 2, _rs.reverse_z_gap(z, nearest / 2, far))
+        ),
+    ),
+})  # fmt: skip
+
+WRONG.update({
+    "depth set-up ignoring nearest": (
+        "depth_setup", _setup_with(unorm="nearest ignored"), "lies beyond `nearest`"),
+    "depth set-up preferring reverse-Z": (
+        "depth_setup", _setup_with(unorm="never"), "unorm24 does it here"),
+    "depth set-up, unorm24 at nearest unchecked": (
+        "depth_setup", _setup_with(unorm="at nearest"), "more than the gap"),
+    "depth set-up, reverse-Z unchecked": (
+        "depth_setup", _setup_with(reverse="unchecked"), "Say \"neither\""),
+    "depth set-up, neither once unorm24 fails": (
+        "depth_setup", _setup_with(reverse="never"), "reverse-Z resolves Δz"),
+    "depth set-up, reverse-Z's near plane beyond nearest": (
+        "depth_setup", _setup_with(reverse="pushed"), "buys reverse-Z nothing"),
+    "depth set-up quoting the gap": (
+        "depth_setup", _setup_with(dz="gap"), "you gave the gap back as Δz"),
+    "depth set-up quoting unorm24's Δz": (
+        "depth_setup", _setup_with(dz="other"), "the other buffer's"),
+    "depth set-up with float32 without reverse-Z": (
+        "depth_setup", _setup_with(fmt_rev="float32"), "float32 without reverse-Z"),
+})  # fmt: skip
