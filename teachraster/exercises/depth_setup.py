@@ -371,8 +371,12 @@ def draw_setup(ax, case, got):
     return artists
 
 
+#: The verdict, held back until two different answers have failed (:mod:`.tries`): the numbers
+#: before it are the evidence, and comparing them is the task.
+HINTS = ((re.compile(r', so the answer is "[^"]+"'), ""),)
+
 DEPTH_SETUP = Exercise(
     "depth_setup", setup_cases, as_setup, same_setup, explain_setup, _rule, MISTAKES,
     draw=draw_setup, answers=(PackageAnswer(expected_setup, words=CHECKER_WORDS),), example=2,
-    reference=("teachraster.exercises.near_plane", "teachraster.exercises.reverse_z"),
+    reference=("teachraster.exercises.near_plane", "teachraster.exercises.reverse_z"), hints=HINTS,
 )  # fmt: skip
