@@ -54,6 +54,14 @@ def reverse_z_gap(z, near, far):
     return step / (near / ((1 - near / far) * z * z))  # over |dd/dz|
 
 
+def depth_setup(z, gap, far, nearest):
+    n = safe_near(z, gap, far, 24)  # 5.1: the smallest unorm24 near plane for the gap
+    if n <= nearest:  # allowed: unorm24 (depth and stencil in 32 bits a pixel)
+        return "unorm24", n, gap  # at that n unorm24 resolves the gap itself
+    dz = reverse_z_gap(z, nearest, far)  # 5.2: hardly depends on the near plane
+    return ("reverse-z" if dz <= gap else "neither"), nearest, dz
+
+
 def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
     r = 1 / (2**bits - 1)  # one step of the buffer
     # MaxDepthSlope: z_win = f/(f - n) (1 - n/z) and, on the tilted plane, 1/z = (1 - s tan θ)/z
@@ -255,6 +263,7 @@ CORRECT = {
     "safe_near": safe_near,
     "reverse_z_gap": reverse_z_gap,
     "decal_bias": decal_bias,
+    "depth_setup": depth_setup,
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
     "hiz_rejects": hiz_rejects,

@@ -1157,7 +1157,10 @@ def _bias_with(slip=None, test="right"):
         r = 1 / (2 ^ bits - 1) if slip == "xor" else r  # r340: Python reads 2 ^ (bits - 1)
         tan = math.tan(tilt) if slip == "degrees" else math.tan(math.radians(tilt))
         tan = math.sin(math.radians(tilt)) if slip == "sin" else tan
+        tan = math.cos(math.radians(tilt)) if slip == "cos" else tan
+        tan = 1 / math.tan(math.radians(tilt)) if slip == "cot" else tan
         m = far * near / (far - near) * tan / z * pixel
+        m = near * tan / z * pixel if slip == "infinite far" else m  # r340: no f/(f − n)
         m = {"view slope": pixel * z * tan, "per unit": m / pixel, "no slope": 0.0}.get(slip, m)
         m = m / z if slip == "z squared" else m
         if test == "own" and r + m > space - m:
@@ -1201,6 +1204,15 @@ def bias_float32(z, tilt, pixel, near, far, bits, reverse, clear):
     if o > z_win(z) - z_win(z - np.float32(clear)) - m:
         return np.float32(np.nan)
     return o if reverse else -o
+
+
+def gap_one_minus_window(z, near, far):
+    """r340 M4: d as 1 − z_win, all in float32 (lesson 05b §4's trap): right in its binade at
+    z = 999 by luck (d = 2^-24), 0 or 2^-24 where d is 2e-8."""
+    z, near, far = np.float32(z), np.float32(near), np.float32(far)
+    one = np.float32(1)
+    d = one - far / (far - near) * (one - near / z)
+    return float(np.spacing(d) / (near / ((one - near / far) * z * z)))
 
 
 def gap_bisected(z, near, far):
@@ -1731,6 +1743,48 @@ WRONG = {
         "decal_bias",
         _bias_with("xor", test="own"),
         "reads as 2 ^ (bits − 1)",
+    ),
+    "gap with d = 1 − z_win in float32": (
+        "reverse_z_gap",
+        gap_one_minus_window,
+        "you computed d as 1 − z_win in float32",
+    ),
+    "gap with d = 1 − z_win, z_win rounded to float32": (
+        "reverse_z_gap",
+        lambda z, near, far: (
+            float(np.spacing(np.float32(1) - np.float32(far / (far - near) * (1 - near / z))))
+            * (1 - near / far)
+            * z
+            * z
+            / near
+        ),
+        "you computed d as 1 − z_win in float32",
+    ),
+    # r340: slips of m in an otherwise complete solution (its own test for NaN uses them too)
+    "decal bias with z squared in m, own NaN test": (
+        "decal_bias",
+        _bias_with("z squared", test="own"),
+        "your slope is the wall's divided by z",
+    ),
+    "decal bias from view depth's slope, own NaN test": (
+        "decal_bias",
+        _bias_with("view slope", test="own"),
+        "you took the slope of the view depth",
+    ),
+    "decal bias without the far plane's factor, own NaN test": (
+        "decal_bias",
+        _bias_with("infinite far", test="own"),
+        "lacks the far plane's factor f/(f − n)",
+    ),
+    "decal bias with cos for tan, own NaN test": (
+        "decal_bias",
+        _bias_with("cos", test="own"),
+        "you took cos θ where the slope needs tan θ",
+    ),
+    "decal bias with 1/tan for tan, own NaN test": (
+        "decal_bias",
+        _bias_with("cot", test="own"),
+        "you took 1/tan θ where the slope needs tan θ",
     ),
     "gap with near and far swapped": (
         "reverse_z_gap",
@@ -3156,3 +3210,63 @@ R326 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R326.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R326.items()})
+
+
+# == depth_setup (exercise 5.4, r340 M3/M5: 5.1 and 5.2 meet in a choice) ========================
+def _setup_with(unorm="right", reverse="right", dz="right", fmt_rev="float32 reverse-z"):
+    """depth_setup built on the right safe_near and reverse_z_gap, with one slip: ``unorm``
+    "nearest ignored" (unorm24 at 5.1's n whatever nearest), "never" (reverse-Z first, unorm24
+    never preferred), "at nearest" (unorm24 at nearest without comparing); ``reverse``
+    "unchecked" (reverse-Z never compared with the gap), "never" ("neither" once unorm24
+    fails), "pushed" (its near plane 5 × nearest); ``dz`` "gap" (the gap quoted), "other"
+    (unorm24's Δz quoted for reverse-Z); ``fmt_rev`` the words for reverse-Z."""
+
+    def depth_setup(z, gap, far, nearest):
+        n = _rs.safe_near(z, gap, far, 24)
+        if unorm == "nearest ignored" or (unorm == "right" and n <= nearest):
+            return "unorm24", n, gap
+        if unorm == "at nearest":
+            return "unorm24", nearest, 1 / (2**24 - 1) * (far - nearest) * z * z / (far * nearest)
+        near = 5 * nearest if reverse == "pushed" else nearest
+        got = _rs.reverse_z_gap(z, near, far)
+        if unorm == "never" and got > gap and n <= nearest:
+            return "unorm24", n, gap
+        works = {"unchecked": True, "never": False}.get(reverse, got <= gap)
+        quoted = {"gap": gap, "other": 1 / (2**24 - 1) * (far - near) * z * z / (far * near)}
+        return (fmt_rev if works else "neither"), near, quoted.get(dz, got) if works else got
+
+    return depth_setup
+
+
+DIFFERENT.update({
+    "depth set-up at nearest, reverse-Z's near plane halved, format in capitals": (
+        "depth_setup",
+        lambda z, gap, far, nearest: (
+            ("UNORM24", nearest, 1 / (2**24 - 1) * (far - nearest) * z * z / (far * nearest))
+            if _rs.safe_near(z, gap, far, 24) <= nearest
+            else _setup_with(fmt_rev="Reverse-Z")(z, gap, far, nearest / 2)[:1]
+            + (nearest / 2, _rs.reverse_z_gap(z, nearest / 2, far))
+        ),
+    ),
+})  # fmt: skip
+
+WRONG.update({
+    "depth set-up ignoring nearest": (
+        "depth_setup", _setup_with(unorm="nearest ignored"), "lies beyond `nearest`"),
+    "depth set-up preferring reverse-Z": (
+        "depth_setup", _setup_with(unorm="never"), "unorm24 does it here"),
+    "depth set-up, unorm24 at nearest unchecked": (
+        "depth_setup", _setup_with(unorm="at nearest"), "more than the gap"),
+    "depth set-up, reverse-Z unchecked": (
+        "depth_setup", _setup_with(reverse="unchecked"), "Say \"neither\""),
+    "depth set-up, neither once unorm24 fails": (
+        "depth_setup", _setup_with(reverse="never"), "reverse-Z resolves Δz"),
+    "depth set-up, reverse-Z's near plane beyond nearest": (
+        "depth_setup", _setup_with(reverse="pushed"), "buys reverse-Z nothing"),
+    "depth set-up quoting the gap": (
+        "depth_setup", _setup_with(dz="gap"), "you gave the gap back as Δz"),
+    "depth set-up quoting unorm24's Δz": (
+        "depth_setup", _setup_with(dz="other"), "the other buffer's"),
+    "depth set-up with float32 without reverse-Z": (
+        "depth_setup", _setup_with(fmt_rev="float32"), "float32 without reverse-Z"),
+})  # fmt: skip

@@ -253,3 +253,21 @@ def test_r311_decal_bias_takes_every_offset_between_its_bounds_with_the_right_si
     text = _task_text("decal_bias_task")
     assert all(w in text for w in ("SlopeScaledDepthBias", "glPolygonOffset", "vkCmdSetDepthBias"))
     assert "slope factor of 1" in text and "np.nan" in text
+
+
+def test_r340_depth_setup_cases_lie_clear_of_every_border_and_reverse_z_ignores_the_near_plane():
+    """5.4 (r340 M3/M5): every case, fixed and drawn, is one that every reading of "resolves"
+    agrees on, the fixed ones hold each outcome, and the words' claim holds: reverse-Z's Δz
+    lies between 2^-24 and 2^-23 of z (1 − z/f) whatever the near plane; the table names r for
+    all three APIs."""
+    from teachraster.exercises import depth_setup as ds
+
+    cases = ds.setup_cases()
+    assert all(ds.clear_of_borders(*args) for _, args, _ in cases)
+    assert {e[0] for _, _, e in cases[: len(ds.SETTINGS)]} == {ds.UNORM, ds.REVERSE, ds.NEITHER}
+    for _, (z, _, far, nearest), _ in cases:
+        fine, coarse = ds._finest(z, far)
+        for n in (nearest / 100, nearest, min(10 * nearest, z / 2)):
+            assert fine * (1 - 1e-9) <= ds.expected_gap(z, n, far) <= coarse * (1 + 1e-9)
+    text = _task_text("decal_bias_task")
+    assert all(w in text for w in ("minimum resolvable difference", "§14.6.5", "depthBiasExact"))

@@ -206,7 +206,6 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
     args = (z, tilt, pixel, near, far, bits, reverse, clear)
     tight = impossible(args)
     space = room(z, near, far, clear)
-    rad = math.radians(tilt)
 
     def offset(o):  # the right test for NaN, the slip in the offset alone
         return math.nan if tight else sign * o
@@ -216,9 +215,14 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
 
     behind = _wall(z + clear, near, far) - _wall(z, near, far)
     first = far * near / ((far - near) * z * z) * clear  # lesson 05b §2's dz_win/dz · clear
-    degrees = m * math.tan(tilt) / math.tan(rad) if 0 < tilt < 90 else None
-    per_unit = m / pixel
-    sine = m * math.sin(rad) / math.tan(rad) if 0 < tilt < 90 else None
+    # slips of m, each in the offset alone and in the student's own test for NaN too (r340:
+    # the own-test forms of z², view slope, the far plane's factor, cos and 1/tan were told
+    # only the rule, or another slip's words)
+    slopes = _slipped_slopes(m, z, tilt, pixel, near, far)
+    slipped = {}
+    for kind, m_ in slopes.items():
+        slipped[kind] = None if m_ is None else offset(r + m_)
+        slipped[f"{kind}, own test"] = None if m_ is None else own(r, m_)
     return {
         "clear ignored": sign * (r + m) if tight else None,
         "behind": math.nan if r + m > behind - m else sign * (r + m),
@@ -228,24 +232,34 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         "r + 2m": math.nan if r + 2 * m > space - m else sign * (r + m),
         # the object's test without the decal's own m toward it: r + m > room
         "object without m": sign * (r + m) if tight and r + m <= space else None,
-        "z squared": offset(r + m / z),
         "sign": math.nan if tight else -sign * (r + m),
         "reverse ignored": math.nan if tight else -(r + m),
         "no tie": offset(m),
         "no slope": offset(r),
         "in steps": offset(1 + m / r),
-        "view slope": offset(r + pixel * z * math.tan(rad)),
-        "degrees": None if degrees is None else offset(r + degrees),
-        "degrees, own test": None if degrees is None else own(r, degrees),
-        "per unit": offset(r + per_unit),
-        "per unit, own test": own(r, per_unit),
-        "sine": None if sine is None else offset(r + sine),
-        "sine, own test": None if sine is None else own(r, sine),
+        **slipped,
         "2^bits": offset(1.0 / 2**bits + m),
         "half": offset(r / 2 + m),
         # r340: 1/(2^bits - 1) typed, 1/(2 ^ (bits - 1)) run (in the test for NaN too, the
         # answer is NaN on every case: :data:`NAN_WORDS` names it)
         "xor": offset(1.0 / (2 ^ (bits - 1)) + m),
+    }
+
+
+def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
+    """m as each typical slip of it gives it (None where the slip says nothing: a trigonometric
+    slip at 0° or 90°)."""
+    rad = math.radians(tilt)
+    inside = 0 < tilt < 90
+    return {
+        "z squared": m / z,
+        "view slope": pixel * z * math.tan(rad),
+        "infinite far": m * (far - near) / far,
+        "degrees": m * math.tan(tilt) / math.tan(rad) if inside else None,
+        "per unit": m / pixel,
+        "sine": m * math.sin(rad) / math.tan(rad) if inside else None,
+        "cosine": m * math.cos(rad) / math.tan(rad) if inside else None,
+        "cotangent": m / math.tan(rad) ** 2 if inside else None,
     }
 
 
@@ -259,6 +273,32 @@ _PER_UNIT = (": your slope is per unit of x/z, not per pixel (the `* pixel` is m
              "pixel spans `pixel` of x/z, so MaxDepthSlope is that slope times pixel")  # fmt: skip
 _SINE = (": you took sin θ where the slope needs tan θ: a point seen at s = x/z on the wall "
          "tilted by θ lies at 1/z' = (1 − s tan θ)/z, so the depth changes per pixel with tan θ")  # fmt: skip
+
+_Z_SQUARED = (": your slope is the wall's divided by z: dz_win/dz = f n/((f − n) z²) is "
+              "per unit of view depth, and one pixel moves the wall's view depth by "
+              "z · tan θ · pixel (1/z' = (1 − s tan θ)/z), so one z cancels")  # fmt: skip
+_VIEW = (": you took the slope of the view depth z per pixel (pixel·z·tan θ), not of the "
+         "window depth the buffer stores: multiply by dz_win/dz = f n/((f − n) z²)")  # fmt: skip
+_FAR = (": your slope lacks the far plane's factor f/(f − n): z_win = f/(f − n) · (1 − n/z), "
+        "so dz_win/dz = f n/((f − n) z²); n/z² alone is the slope for a far plane at infinity")  # fmt: skip
+_COSINE = (": you took cos θ where the slope needs tan θ: a point seen at s = x/z on the wall "
+           "tilted by θ lies at 1/z' = (1 − s tan θ)/z, so the depth changes per pixel with "
+           "tan θ (0 for a wall facing the camera, without bound as it turns edge-on)")  # fmt: skip
+_COTANGENT = (": you took 1/tan θ where the slope needs tan θ: a wall facing the camera "
+              "(θ = 0) has no slope, and the slope grows without bound as it turns edge-on; "
+              "a point seen at s = x/z on the wall lies at 1/z' = (1 − s tan θ)/z")  # fmt: skip
+#: The words of each slip of m (:func:`_slipped_slopes`), said alike with the student's own
+#: test for NaN
+_SLOPE_WORDS = {
+    "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
+    "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
+}  # fmt: skip
+#: Both slips make m thousands of times too large, and a test for NaN with that m says NaN
+#: on every case: nothing tells the two apart, so either is said (r340)
+_TOO_LARGE = (f"{_PER_UNIT}. Or, giving the same NaN: you took the slope of the view depth z "
+              "per pixel (pixel·z·tan θ), not of the window depth the buffer stores: multiply "
+              "it by dz_win/dz = f n/((f − n) z²)")  # fmt: skip
+_OWN_WORDS = {"per unit, own test": _TOO_LARGE, "view slope, own test": _TOO_LARGE}
 
 MISTAKES = {
     "clear ignored": lambda a, e, g: (
@@ -279,9 +319,6 @@ MISTAKES = {
     "|o| ≤ room − m, and no offset fits unless r + m ≤ room − m (room ≥ r + 2m). Here room "
     "lies between r + m and r + 2m: return NaN (an offset of r + m shows the decal through "
     "the object)",
-    "z squared": ": your slope is the wall's divided by z: dz_win/dz = f n/((f − n) z²) is "
-    "per unit of view depth, and one pixel moves the wall's view depth by z · tan θ · pixel "
-    "(1/z' = (1 − s tan θ)/z), so one z cancels",
     "sign": lambda a, e, g: (
         ": wrong sign for reverse-Z: the buffer stores 1 − z_win and the test keeps the "
         "greater value, so the decal moves nearer with a positive offset (glPolygonOffset(1, 1))"
@@ -304,14 +341,11 @@ MISTAKES = {
     ),
     "in steps": ": that offset is counted in steps of the buffer (DepthBias's units), not in "
     "window depth: one step is r = 1/(2^bits − 1), and o = units·r + factor·m is a depth",
-    "view slope": ": you took the slope of the view depth z per pixel (pixel·z·tan θ), not of "
-    "the window depth the buffer stores: multiply by dz_win/dz = f n/((f − n) z²)",
-    "degrees": _DEGREES,
-    "degrees, own test": _DEGREES,
-    "per unit": _PER_UNIT,
-    "per unit, own test": _PER_UNIT,
-    "sine": _SINE,
-    "sine, own test": _SINE,
+    **{
+        k: _OWN_WORDS.get(k, w)
+        for kind, w in _SLOPE_WORDS.items()
+        for k in (kind, f"{kind}, own test")
+    },
     "2^bits": lambda a, e, g: (
         f": you took r as 1/2^{a[5]}: the largest stored integer, 2^{a[5]} − 1, holds depth 1, "
         f"so one step is 1/(2^{a[5]} − 1), and yours falls short of a step by a hair: at the "

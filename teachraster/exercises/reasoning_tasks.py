@@ -11,6 +11,8 @@ typical mistakes), defined in its own module:
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
   earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
   ``decal_bias`` (05b, :mod:`.decal_bias`): the depth offset a tilted decal needs;
+  ``depth_setup`` (05b, :mod:`.depth_setup`): unorm24 or float32 reverse-Z for a scene, and
+  its near plane, from the student's own ``safe_near`` and ``reverse_z_gap``;
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
@@ -26,6 +28,7 @@ from . import broken_frame_steps as bfs
 from . import broken_frames as bf
 from . import clip_colour as cc
 from . import decal_bias as db
+from . import depth_setup as ds
 from . import front_to_back as fb
 from . import hard_case_fill as hf
 from . import hiz_tile as hz
@@ -46,6 +49,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "safe_near": lambda: npl.SAFE_NEAR,
     "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
     "decal_bias": lambda: db.DECAL_BIAS,
+    "depth_setup": lambda: ds.DEPTH_SETUP,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,

@@ -33,11 +33,13 @@ from .scalars import num
 #: (z, near, far) of the fixed cases: lesson 05b's planes (near 0.1, far 1000) from z = 1 to
 #: z = 999 (d from 0.1 down to 1e-7), z close to the near plane (window depth below 1/2, so
 #: float32's step there is not 1's), near/far = 1/10 (the far plane's factor 1 − n/f moves Δz
-#: by 10 %), and d exactly 1/4, a power of two.
+#: by 10 %), d exactly 1/4, a power of two, and d = 2.0e-8 (z = 5e5, far 1e6), below float32's step
+#: at 1: d computed as 1 − z_win in float32 is 0 or 2^-24 there, never in d's binade (r340
+#: M4: at z = 999 it landed on 2^-24, whose step below is d's own, and passed).
 SETTINGS = (
     (300.0, 0.1, 1000.0), (1.0, 0.1, 1000.0), (10.0, 0.1, 1000.0), (500.0, 0.1, 1000.0),
     (999.0, 0.1, 1000.0), (0.15, 0.1, 1000.0), (2.0, 1.0, 10.0), (5.0, 1.0, 10.0),
-    (1.6, 1.0, 2.0), (3000.0, 0.5, 1e5), (40.0, 0.01, 50.0),
+    (1.6, 1.0, 2.0), (3000.0, 0.5, 1e5), (40.0, 0.01, 50.0), (5e5, 0.02, 1e6),
 )  # fmt: skip
 
 #: How much coarser than the finest reading an answer may be (a gap rounded up to a few
@@ -128,13 +130,30 @@ def same_gap(got, expected, args=None) -> bool:
     return lo <= got <= hi
 
 
+def one_minus_window(z, near, far, all_float32: bool = True) -> float:
+    """d as 1 − z_win in float32: z_win rounded to float32 (computed in float32 as students
+    write it, f/(f − n) · (1 − n/z), or in float64 and then rounded), then subtracted from 1
+    (exact there), so d is a whole multiple of 2^-24 wherever z_win ≥ 1/2."""
+    if all_float32:
+        z, near, far = np.float32(z), np.float32(near), np.float32(far)
+        win = far / (far - near) * (np.float32(1) - near / z)
+    else:
+        win = np.float32(window_depth(z, near, far))
+    return float(np.float32(1) - np.float32(win))
+
+
 def _variants(z, near, far) -> dict[str, float]:
     """The Δz typical slips give (each one change)."""
     d = float(reversed_depth(z, near, far))
     slope = _slope(z, near, far)
     step = _nearer_step(d)
     win = float(window_depth(z, near, far))
+    # r340 M4: the step above d computed as 1 − z_win in float32 (0 → float32's least step)
+    rounded = {k: float(np.spacing(np.float32(one_minus_window(z, near, far, k)))) / slope
+               for k in (True, False)}  # fmt: skip
     return {
+        "1 - z_win in float32": rounded[True],
+        "1 - z_win in float32, z_win in float64": rounded[False],
         "window depth": _nearer_step(win) / slope,
         "step above 1": 2.0**-23 / slope,
         "float64": _nearer_step(d, np.float64) / slope,
@@ -164,7 +183,23 @@ _INFINITE = (
     "with this far plane d = (n/z − n/f)/(1 − n/f) and |dd/dz| = n/((1 − n/f) z²)"
 )
 
+
+def _one_minus_window_words(args, expected, got) -> str:
+    z, near, far = args
+    d = float(reversed_depth(z, near, far))
+    rounded = {one_minus_window(z, near, far, k) for k in (True, False)}
+    said = " or ".join(f"{v:.4g}" for v in sorted(rounded))
+    return (": you computed d as 1 − z_win in float32. Near 1, float32's step is 2^-24 "
+            f"≈ 6e-8, so z_win is rounded to it before the subtraction and d comes out {said} "
+            f"where it is {d:.4g}: another binade, another step. That cancellation is what "
+            "reverse-Z must avoid (lesson 05b, §4: never as 1 − d from an already rounded d); "
+            "a pipeline that writes float32(1 − z_win) resolves no better than window depth. "
+            "Compute d = (n/z − n/f)/(1 − n/f) itself")  # fmt: skip
+
+
 MISTAKES = {
+    "1 - z_win in float32": _one_minus_window_words,
+    "1 - z_win in float32, z_win in float64": _one_minus_window_words,
     # r295 M-1's lesson: one answer, several readings, all named. Window depth's float32 step
     # is 2^-24 wherever z_win ≥ 1/2, so 2^-24 (the step below 1) and unorm24's 1/(2^24 − 1)
     # give this very answer there, and the right one elsewhere (there d ≥ 1/2)

@@ -1,0 +1,382 @@
+"""Exercise ``depth_setup`` (lesson 05b, §2 and §4): which depth buffer, and which near plane.
+
+Review r340 (M3, M5; r325 M2, M4): 5.1 (``safe_near``) and 5.2 (``reverse_z_gap``) are one
+formula each and never meet. Here the student uses both to decide: a scene shows geometry
+as close as ``nearest`` (the near plane may not lie beyond it), its far plane is ``far``, and
+two surfaces ``gap`` apart at view distance ``z`` must not z-fight. A unorm24 buffer does it
+when the smallest near plane that resolves the gap (5.1) is no farther than ``nearest``; else
+float32 reverse-Z may (5.2), whose Δz = one float32 step at d over |dd/dz| lies between
+2^-24 and 2^-23 of z (1 − z/f) whatever the near plane (d over its slope is z (1 − z/f)), so
+pushing its near plane out buys nothing; else neither does. unorm24 is preferred where it
+does the job: its depth and an 8-bit stencil share 32 bits a pixel (Direct3D's
+``D24_UNORM_S8_UINT``), where float32 depth with a stencil takes 64 (``D32_FLOAT_S8X24_UINT``).
+
+The answer is (format, near, Δz): the choice, the near plane the student would use, and what
+that set-up resolves at z there, the numbers that defend the choice. It is judged by criterion:
+the right choice, any near plane in (0, nearest] at which the choice does the job (for
+unorm24, from the smallest by any reading of 5.1's check up to ``nearest``), and Δz what the
+chosen buffer resolves at z with *that* near plane (unorm24: one step over the slope, within
+1 %; float32 reverse-Z: 5.2's accepted band; "neither": reverse-Z's, the better of the two,
+which still falls short). The reference (:func:`expected_setup`) is the package's:
+:func:`.near_plane.expected_near` and :func:`.reverse_z.expected_gap`. The cases lie clear of
+the borders (the smallest unorm24 near plane at most 0.8 or at least 1.25 times ``nearest``;
+the gap at least 1.3 times reverse-Z's coarsest Δz, or below 0.7 of its finest), so every
+reading of "resolves" agrees.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from functools import cache
+
+import numpy as np
+
+from .answers import refuse_non_answers, short
+from .cases import DRAWN, drawn_rng
+from .exercise import Exercise, Mistake, PackageAnswer
+from .near_plane import bounds as near_bounds
+from .near_plane import expected_near, resolution
+from .package_answers import CHECKER_WORDS
+from .reverse_z import bounds as gap_bounds
+from .reverse_z import expected_gap
+from .running import WrongAnswerType
+from .scalars import num
+
+#: The formats as the answer names them: "reverse-z" is a float32 buffer with reverse-Z (the
+#: explanations say "reverse-Z" alone: "float32" in them would read as blaming the arithmetic)
+UNORM, REVERSE, NEITHER, FORWARD = "unorm24", "reverse-z", "neither", "float32"
+#: What the answer is, as the task and every wrong answer's words say it.
+WHAT = ('(format, near, dz): format "unorm24", "reverse-z" or "neither", the near '
+        "plane you would use, and the smallest gap that set-up resolves at z there")  # fmt: skip
+#: unorm24's Δz at the student's near plane: one step over the slope, this share either way.
+SLACK = 0.01
+
+#: (z, gap, far, nearest) of the fixed cases: lesson 05b's planes (far 1000) with unorm24
+#: enough with room (n 1/30 of nearest) or just (0.8), float32 reverse-Z needed (unorm24's
+#: near plane 150 times nearest, or just 1.25), a first-person view (nearest 0.01, far 10⁴),
+#: and neither (the gap below reverse-Z's finest Δz: at z = 900, and far out at z = 5e5).
+SETTINGS = (
+    (50.0, 0.01, 1000.0, 0.5), (100.0, 7.5e-4, 1000.0, 1.0), (500.0, 0.001, 1000.0, 0.1),
+    (100.0, 6.0e-3, 1000.0, 0.125), (2000.0, 0.05, 1e4, 0.01), (900.0, 3.5e-6, 1000.0, 0.1),
+    (10.0, 1.0e-4, 100.0, 1.0), (5e5, 0.01, 1e6, 0.02),
+)  # fmt: skip
+
+
+def _finest(z, far) -> tuple[float, float]:
+    """(finest, coarsest) Δz of float32 reverse-Z at z, any near plane: 2^-24 and 2^-23 of
+    z (1 − z/f), d over its slope."""
+    span = z * (1 - z / far)
+    return 2.0**-24 * span, 2.0**-23 * span
+
+
+def choice(z, gap, far, nearest) -> str:
+    """The buffer the scene needs: unorm24 if its smallest near plane is allowed, else float32
+    reverse-Z if it resolves the gap, else neither."""
+    if expected_near(z, gap, far, 24) <= nearest:
+        return UNORM
+    return REVERSE if expected_gap(z, nearest, far) <= gap else NEITHER
+
+
+def expected_setup(z, gap, far, nearest) -> tuple[str, float, float]:
+    """The package's answer: unorm24 at its smallest near plane (5.1's), or float32 reverse-Z
+    at ``nearest`` with its Δz (5.2's), for "neither" too."""
+    chosen = choice(z, gap, far, nearest)
+    if chosen == UNORM:
+        n = expected_near(z, gap, far, 24)
+        return UNORM, n, resolution(z, n, far, 24)
+    return chosen, nearest, expected_gap(z, nearest, far)
+
+
+def clear_of_borders(z, gap, far, nearest) -> bool:
+    """Every reading agrees on this case (see the module's docstring)."""
+    ratio = expected_near(z, gap, far, 24) / nearest
+    fine, coarse = _finest(z, far)
+    unorm_clear = ratio <= 0.8 or ratio >= 1.25
+    return unorm_clear and (ratio <= 0.8 or gap >= 1.3 * coarse or gap <= 0.7 * fine)
+
+
+def _label(z, gap, far, nearest) -> str:
+    return f"z = {num(z)}, gap = {num(gap)}, far = {num(far)}, nearest = {num(nearest)}"
+
+
+@cache
+def _fixed():
+    return [(_label(*s), s, expected_setup(*s)) for s in SETTINGS]
+
+
+def setup_cases():
+    """The fixed cases (built once, copied) and :data:`DRAWN` drawn for this check: one of
+    each outcome in turn."""
+    out, rng = copy.deepcopy(_fixed()), drawn_rng()
+    for k in range(DRAWN):
+        s = _drawn(rng, (UNORM, REVERSE, NEITHER)[k % 3])
+        out.append((f"drawn for this check {k + 1}: {_label(*s)}", s, expected_setup(*s)))
+    return out
+
+
+def _drawn(rng, outcome) -> tuple[float, float, float, float]:
+    """(z, gap, far, nearest), three significant digits, with ``outcome`` the answer."""
+    while True:
+        far = float(f"{10 ** rng.uniform(2, 5):.3g}")
+        z = float(f"{far * rng.uniform(0.05, 0.9):.3g}")
+        nearest = float(f"{z * 10 ** rng.uniform(-4, -1.5):.3g}")
+        fine, coarse = _finest(z, far)
+        if outcome == UNORM:
+            gap = resolution(z, nearest * rng.uniform(0.05, 0.7), far, 24)
+        elif outcome == REVERSE:
+            top = resolution(z, 1.5 * nearest, far, 24)
+            gap = coarse * 1.5 * (top / (1.5 * coarse)) ** rng.uniform(0, 1)
+        else:
+            gap = fine * rng.uniform(0.2, 0.6)
+        s = (z, float(f"{gap:.3g}"), far, nearest)
+        if clear_of_borders(*s) and choice(*s) == outcome:
+            return s
+
+
+def as_setup(value) -> tuple[str, float, float]:
+    """(format, near, dz): the format's words read loosely (case, spaces, "reverse z"), the
+    numbers strictly (finite)."""
+    refuse_non_answers(value, "three values " + WHAT)
+    try:
+        fmt, near, dz = value
+    except (TypeError, ValueError):
+        raise WrongAnswerType(f"returned {short(value)}: return {WHAT}") from None
+    if not isinstance(fmt, (str, np.str_)):
+        raise WrongAnswerType(f"returned {short(value)}: its first value is the format, {WHAT}")
+    words = " ".join(re.sub(r"[-_]", " ", str(fmt).lower()).split())
+    read = {"unorm24": UNORM, "unorm 24": UNORM, "d24": UNORM, "float32 reverse z": REVERSE,
+            "reverse z": REVERSE, "float32": FORWARD, "neither": NEITHER}.get(words)  # fmt: skip
+    if read is None:
+        raise WrongAnswerType(f'returned the format {short(fmt)}: say "unorm24", '
+                              '"reverse-z" or "neither"')  # fmt: skip
+    numbers = []
+    for v in (near, dz):
+        if isinstance(v, (bool, str, bytes, np.bool_)) or not np.ndim(v) == 0:
+            raise WrongAnswerType(f"returned {short(value)}: near and dz are numbers, {WHAT}")
+        numbers.append(float(v))
+    if not all(math.isfinite(v) for v in numbers):
+        raise WrongAnswerType(f"returned {short(value)}: near and dz are finite numbers, {WHAT}")
+    return read, numbers[0], numbers[1]
+
+
+def _resolves(fmt, z, n, far) -> tuple[float, float]:
+    """(lowest, highest) Δz the answer may quote for ``fmt`` at near plane ``n``."""
+    if fmt == UNORM:
+        dz = resolution(z, n, far, 24)
+        return dz * (1 - SLACK), dz * (1 + SLACK)
+    return gap_bounds(z, n, far)
+
+
+def _near_ok(args, fmt, n) -> bool:
+    z, gap, far, nearest = args
+    if not 0 < n <= nearest * (1 + 1e-9):
+        return False
+    return fmt != UNORM or n >= near_bounds(z, gap, far, 24)[0] * (1 - 1e-6)
+
+
+def _dz_ok(args, fmt, n, dz) -> bool:
+    z, _, far, _ = args
+    if not 0 < n < z:
+        return False
+    lo, hi = _resolves(fmt, z, n, far)
+    return lo <= dz <= hi
+
+
+def same_setup(got, expected, args=None) -> bool:
+    """The right format, a near plane in (0, nearest] that does the job, and the Δz of that
+    set-up there; without ``args``, equal to ``expected`` within 1e-6."""
+    fmt, n, dz = got
+    if args is None:
+        return fmt == expected[0] and all(
+            abs(a - b) <= 1e-6 * abs(b) for a, b in zip((n, dz), expected[1:], strict=True)
+        )
+    return fmt == expected[0] and _near_ok(args, fmt, n) and _dz_ok(args, fmt, n, dz)
+
+
+def explain_setup(args, expected, got) -> str:
+    """The scene, what each buffer resolves, the right choice and the student's."""
+    z, gap, far, nearest = args
+    n_u = expected_near(z, gap, far, 24)
+    fmt, n, dz = got
+    # where only a near plane at z would do, "n ≥ 900" at z = 900 read as a usable one
+    need = f"n ≥ {num(n_u)}" if n_u < 0.99 * z else "a near plane at z itself"
+    return (f"at z = {num(z)} with far = {num(far)}, surfaces {num(gap)} apart and nothing "
+            f"nearer than {num(nearest)}: unorm24 needs {need} (Δz at n = "
+            f"{num(nearest)}: {num(resolution(z, nearest, far, 24))}), reverse-Z "
+            f"resolves Δz = {num(expected_gap(z, nearest, far))} at n = {num(nearest)}, so the "
+            f'answer is "{expected[0]}"; yours is ("{fmt}", {num(n)}, {num(dz)})')  # fmt: skip
+
+
+def _rule(args, expected, got) -> str:
+    return ('. Take unorm24 if its smallest near plane (5.1) is at most `nearest`; else '
+            'reverse-Z if its Δz at z (5.2) is at most the gap; else "neither". The '
+            "near plane lies in (0, nearest], and Δz is what your buffer resolves at z with it")  # fmt: skip
+
+
+# -- the typical mistakes: each a description of the answer (any near plane, any digits) --
+
+
+def _fits(want_fmt, expected_fmts, test=None):
+    def fits(args, expected, got):
+        if got[0] != want_fmt or expected[0] not in expected_fmts:
+            return False
+        return True if test is None else bool(test(args, got))
+
+    return fits
+
+
+def _beyond(args, got) -> bool:
+    return got[1] > args[3] * (1 + 1e-9)
+
+
+def _words_beyond(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    return (f": your near plane {num(got[1])} lies beyond `nearest` = {num(nearest)}: it clips "
+            f"geometry the scene shows. With n ≤ {num(nearest)} unorm24 resolves at best Δz = "
+            f"{num(resolution(z, nearest, far, 24))} at z, more than the gap: compare 5.1's near "
+            "plane with `nearest` before you choose unorm24")  # fmt: skip
+
+
+def _words_too_coarse(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    return (f": at your near plane {num(got[1])} unorm24 resolves Δz = "
+            f"{num(resolution(z, got[1], far, 24))} at z, more than the gap {num(gap)}: the two "
+            f"surfaces z-fight. It needs n ≥ {num(expected_near(z, gap, far, 24))}, beyond "
+            f"`nearest` = {num(nearest)}")  # fmt: skip
+
+
+def _words_unorm_does(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    return (f": unorm24 does it here, with any near plane from "
+            f"{num(expected_near(z, gap, far, 24))} to {num(nearest)} (5.1), and is preferred: "
+            "its depth and stencil share 32 bits a pixel. Compare 5.1's near plane with "
+            "`nearest` first")  # fmt: skip
+
+
+def _words_reverse_does(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    return (f": reverse-Z resolves Δz = {num(expected_gap(z, nearest, far))} at z "
+            f"with n = {num(nearest)}, within the gap {num(gap)}: it does the job where unorm24 "
+            "cannot")  # fmt: skip
+
+
+def _words_reverse_short(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    fine, _ = _finest(z, far)
+    return (f": reverse-Z resolves Δz = {num(expected_gap(z, got[1], far))} at z with "
+            f"your n = {num(got[1])}, more than the gap {num(gap)}, and no near plane helps: "
+            f"its Δz is one step of the stored float at d over |dd/dz|, 2^-24 to 2^-23 of z (1 − z/f) "
+            f"(here ≥ {num(fine)}) whatever n is. Say \"neither\"")  # fmt: skip
+
+
+def _quoted_other(args, got) -> bool:
+    """Δz quoted of the other buffer at the student's near plane."""
+    z, _, far, _ = args
+    if not 0 < got[1] < z:
+        return False
+    other = REVERSE if got[0] == UNORM else UNORM
+    lo, hi = _resolves(other, z, got[1], far)
+    return lo <= got[2] <= hi
+
+
+def _gap_quoted(args, got) -> bool:
+    """The gap returned as Δz where the set-up resolves another."""
+    return abs(got[2] - args[1]) <= 1e-9 * args[1]
+
+
+def _dz_words(what):
+    def words(args, expected, got):
+        z, gap, far, nearest = args
+        fmt, n = got[0], got[1]
+        shown = REVERSE if fmt == NEITHER else fmt
+        lo, hi = _resolves(shown, z, n, far) if 0 < n < z else (math.nan, math.nan)
+        said = num(lo) if fmt == UNORM else f"{num(lo)} to {num(hi)}"
+        return (f": {what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
+                + ("; for \"neither\" give reverse-Z's numbers, the better of the two"
+                   if fmt == NEITHER else ""))  # fmt: skip
+
+    return words
+
+
+def _dz_wrong(args, expected, got) -> bool:
+    return (
+        got[0] == expected[0]
+        and _near_ok(args, got[0], got[1])
+        and not _dz_ok(args, got[0], got[1], got[2])
+    )
+
+
+MISTAKES = [
+    Mistake("float32 forward", ": float32 without reverse-Z stores z_win, near 1 for far "
+            "surfaces, where float32's step is 2^-24, no finer than unorm24's 1/(2^24 − 1): it "
+            "buys nothing there. Reverse-Z stores d = 1 − z_win, near 0 for far surfaces, where "
+            "float32's steps are tiny (lesson 05b, §4)",
+            fits=lambda a, e, g: g[0] == FORWARD),
+    Mistake("beyond nearest", _words_beyond, fits=_fits(UNORM, (REVERSE, NEITHER), _beyond)),
+    Mistake("unorm24 too coarse", _words_too_coarse, fits=_fits(UNORM, (REVERSE, NEITHER))),
+    Mistake("unorm24 preferred", _words_unorm_does, fits=_fits(REVERSE, (UNORM,))),
+    Mistake("neither, unorm24 does", _words_unorm_does, fits=_fits(NEITHER, (UNORM,))),
+    Mistake("neither, reverse-Z does", _words_reverse_does, fits=_fits(NEITHER, (REVERSE,))),
+    Mistake("reverse-Z too coarse", _words_reverse_short, fits=_fits(REVERSE, (NEITHER,))),
+    Mistake("reverse-Z near beyond nearest", lambda a, e, g: (
+        f": your near plane {num(g[1])} lies beyond `nearest` = {num(a[3])}: it clips geometry "
+        "the scene shows, and buys reverse-Z nothing (its Δz hardly depends on n)"),
+        fits=lambda a, e, g: g[0] == e[0] != UNORM and _beyond(a, g)),
+    Mistake("unorm24 near too close", lambda a, e, g: (
+        f": at your near plane {num(g[1])} unorm24 resolves Δz = "
+        f"{num(resolution(a[0], g[1], a[2], 24)) if 0 < g[1] < a[0] else '—'}, more than the "
+        f"gap: it needs n ≥ {num(expected_near(a[0], a[1], a[2], 24))} (5.1)"),
+        fits=lambda a, e, g: g[0] == e[0] == UNORM and 0 < g[1] <= a[3]
+        and not _near_ok(a, UNORM, g[1])),
+    Mistake("dz of the other buffer", _dz_words("that Δz is the other buffer's"),
+            fits=lambda a, e, g: _dz_wrong(a, e, g) and _quoted_other(a, g)),
+    Mistake("dz is the gap", _dz_words("you gave the gap back as Δz; quote what your set-up "
+                                       "resolves, the number that shows it does the job"),
+            fits=lambda a, e, g: _dz_wrong(a, e, g) and _gap_quoted(a, g)),
+    Mistake("dz", _dz_words("your Δz is not what your set-up resolves there"), fits=_dz_wrong,
+            symptom=True),
+]  # fmt: skip
+
+
+def draw_setup(ax, case, got):
+    """Δz at z against the near plane (log-log) for unorm24 and float32 reverse-Z, the gap,
+    ``nearest`` (beyond it, shaded: not allowed), and the student's (near, Δz)."""
+    _, (z, gap, far, nearest), expected = case
+    lo, hi = nearest / 1000, nearest * 100
+    if got is not None and isinstance(got, tuple) and 0 < got[1] < z:  # yours in view
+        lo, hi = min(lo, got[1] / 3), max(hi, got[1] * 3)
+    hi = min(hi, z * 0.9)
+    ns = np.geomspace(lo, hi, 200)
+    artists = ax.loglog(ns, [resolution(z, n, far, 24) for n in ns], color="black",
+                        label="unorm24")  # fmt: skip
+    artists += ax.loglog(ns, [expected_gap(z, n, far) for n in ns], color="#2b7bba",
+                         label="reverse-Z (float32)")  # fmt: skip
+    artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
+    artists.append(ax.axvspan(nearest, hi, color="#eeeeee", lw=0, zorder=0,
+                              label=f"beyond nearest = {num(nearest)}: clips the scene"))  # fmt: skip
+    if got is not None and isinstance(got, tuple) and lo <= got[1] <= hi and got[2] > 0:
+        ok = same_setup(got, expected, (z, gap, far, nearest))
+        artists += ax.plot([got[1]], [got[2]], "x", color="#7fbf7f" if ok else "#d7301f",
+                           ms=11, mew=2.5, label=f'yours: "{got[0]}", n {num(got[1])}, '
+                           f"Δz {num(got[2])}")  # fmt: skip
+    elif got is not None and isinstance(got, tuple):
+        artists += ax.plot([], [], " ", label=f'yours: "{got[0]}", n {num(got[1])}: off this plot')
+    ax.set_xlim(lo, hi)
+    ax.set_xlabel(f"near plane n (z = {num(z)}, far = {num(far)})")
+    ax.set_ylabel("smallest resolved gap Δz at z")
+    # under the axes, as 5.3's: beside them, "yours" made the figure wider than a notebook column
+    artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2)))
+    return artists
+
+
+#: The verdict, held back until two different answers have failed (:mod:`.tries`): the numbers
+#: before it are the evidence, and comparing them is the task.
+HINTS = ((re.compile(r', so the answer is "[^"]+"'), ""),)
+
+DEPTH_SETUP = Exercise(
+    "depth_setup", setup_cases, as_setup, same_setup, explain_setup, _rule, MISTAKES,
+    draw=draw_setup, answers=(PackageAnswer(expected_setup, words=CHECKER_WORDS),), example=2,
+    reference=("teachraster.exercises.near_plane", "teachraster.exercises.reverse_z"), hints=HINTS,
+)  # fmt: skip
