@@ -6,8 +6,12 @@ triangle; ``fill`` once per triangle, and may return bools or 0/1 numbers
 (``np.zeros((h, w))`` filled with 1.0 is a correct answer). The mistakes are the rule with a
 knob turned (:func:`.coverage.rule_images`): the tie rule by the kinds of edges that own their
 centres, one winding only, sampling at pixel corners, vertices rounded to whole pixels; and an
-empty answer, a transposed or upside-down image, x and y swapped, float32 far from the origin.
-An explanation names the mistake, then shows it on one wrong pixel, the most telling one.
+empty answer, a transposed or upside-down image, x and y swapped, float32 far from the origin;
+r347's: border rows or columns a loop skips, a bounding box one short, a left-right mirror,
+other sampling points, vertices moved to pixel centres, tolerances on E, a tie test that forgot
+"exactly horizontal". An explanation names the mistake, then shows it on one wrong pixel, the
+most telling one; where no mistake gives the answer it says what differs, in facts only
+(:func:`.coverage.differences`), and names the tie rule only where every wrong centre is a tie.
 """
 
 from __future__ import annotations

@@ -42,7 +42,7 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     ax.grid(which="minor", color="#eeeeee", linewidth=0.5)
     ring = np.vstack([xy, xy[:1]])
     artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
-    artists += vertex_labels(ax, xy, (w + h) / 40)
+    artists += vertex_labels(ax, xy, (w + h) / 40, (x0, y0, w, h))
     if edge is not None:
         a, b = xy[edge], xy[(edge + 1) % 3]
         artists += ax.plot([a[0], b[0]], [a[1], b[1]], color=EDGE_COLOUR, linewidth=3)
@@ -66,13 +66,16 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     return artists
 
 
-def vertex_labels(ax, xy, near: float, names=("v1", "v2", "v3")) -> list:
+def vertex_labels(ax, xy, near: float, window, names=("v1", "v2", "v3")) -> list:
     """Each vertex's name beside it, pushed away from the triangle's centre so that no label
-    sits on an edge; vertices closer than ``near`` (px) share one label, "v1, v2, v3" (r347 FIG:
-    a 0.04-px triangle printed its three names over each other), and each is a dot, so a
-    triangle too small to see still shows where it is."""
+    sits on an edge (back inwards at the border of ``window`` = (x0, y0, w, h), where it would
+    leave the picture); vertices closer than ``near`` (px) share one label, "v1, v2, v3"
+    (r347 FIG: a 0.04-px triangle printed its three names over each other), and each is a
+    dot, so a triangle too small to see still shows where it is."""
     xy = np.asarray(xy, dtype=float)
     centre = xy.mean(axis=0)
+    x0, y0, w, h = window
+    lo, hi = np.array([x0, y0]) + 2 * near, np.array([x0 + w, y0 + h]) - 2 * near
     artists = ax.plot(xy[:, 0], xy[:, 1], ".", color="black", ms=3)
     done: set[int] = set()
     for k, v in enumerate(xy):
@@ -83,6 +86,7 @@ def vertex_labels(ax, xy, near: float, names=("v1", "v2", "v3")) -> list:
         away = v - centre
         norm = np.hypot(*away)
         away = away / norm if norm > 1e-9 else np.array([0.7, -0.7])
+        away = np.where(((v < lo) & (away < 0)) | ((v > hi) & (away > 0)), -away, away)
         artists.append(ax.annotate(
             ", ".join(names[m] for m in group), v, xytext=tuple(9 * away * (1, -1)),
             textcoords="offset points", fontsize="x-small", color="black",
@@ -117,7 +121,7 @@ def draw_mesh(ax, case, expected, ties) -> list:
         ring = np.vstack([xy, xy[:1]])
         artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
         if n == 1:
-            artists += vertex_labels(ax, xy, (w + h) / 40)
+            artists += vertex_labels(ax, xy, (w + h) / 40, (x0, y0, w, h))
     handles = [Patch(color=palette[1 + k % (len(palette) - 1)],
                      label=f"covered by triangle {k}" if n > 1 else "covered")
                for k in range(n)]  # fmt: skip
