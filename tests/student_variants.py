@@ -3213,6 +3213,8 @@ KINDS.update({label: kind for label, (_, _, _, kind) in R326.items()})
 
 
 # == depth_setup (exercise 5.4, r340 M3/M5: 5.1 and 5.2 meet in a choice) ========================
+
+
 def _setup_with(unorm="right", reverse="right", dz="right", fmt_rev="float32 reverse-z"):
     """depth_setup built on the right safe_near and reverse_z_gap, with one slip: ``unorm``
     "nearest ignored" (unorm24 at 5.1's n whatever nearest), "never" (reverse-Z first, unorm24
@@ -3270,3 +3272,113 @@ WRONG.update({
     "depth set-up with float32 without reverse-Z": (
         "depth_setup", _setup_with(fmt_rev="float32"), "float32 without reverse-Z"),
 })  # fmt: skip
+
+
+# -- r347 01: fill loops that skip a border (passed), offsets and mirrors told the tie rule ------
+def _fill_loop(rows=range, cols=range, at=(0.5, 0.5), mirror=False, move=None):
+    """A per-pixel fill by the correct covers with one slip: the loops' ranges (``rows(h)``,
+    ``cols(w)``), the sampling point (j + at[0], i + at[1]), the columns mirrored, the
+    vertices moved."""
+
+    def fill(xy, width, height):
+        v = np.asarray(xy, dtype=float)
+        v = move(v) if move else v
+        out = np.zeros((height, width), dtype=bool)
+        for i in rows(height):
+            for j in cols(width):
+                out[i, width - 1 - j if mirror else j] = covers(v, (j + at[0], i + at[1]))
+        return out
+
+    return fill
+
+
+def _fill_box_short(xy, width, height):
+    """A bounding-box loop whose end ``ceil(max) - 1`` is exclusive."""
+    v = np.asarray(xy, dtype=float)
+    lo, hi = np.floor(v.min(axis=0)).astype(int), np.ceil(v.max(axis=0)).astype(int) - 1
+    out = np.zeros((height, width), dtype=bool)
+    for i in range(max(lo[1], 0), min(hi[1], height)):
+        for j in range(max(lo[0], 0), min(hi[0], width)):
+            out[i, j] = covers(v, (j + 0.5, i + 0.5))
+    return out
+
+
+def _covers_tolerant(area_tol=0.0, edge_tol=0.0):
+    """covers with ``abs(E) < tol`` taken as 0: for the zero-area test, or for each edge."""
+
+    def fn(xy, p):
+        v = [np.asarray(q, dtype=float) for q in xy]
+        area = edge_function(v[0], v[1], v[2])
+        if abs(area) <= area_tol:
+            return False
+        if area < 0:
+            v = [v[0], v[2], v[1]]
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = edge_function(a, b, p)
+            e = 0.0 if abs(e) < edge_tol else e
+            if e < 0 or (e == 0 and not _owns(a, b)):
+                return False
+        return True
+
+    return fn
+
+
+def _covers_negated(xy, p):
+    """E(b, a, p) throughout, the orientation done with it, the conventions' tie test."""
+    neg = lambda a, b, q: edge_function(b, a, q)  # noqa: E731
+    v = [np.asarray(q, dtype=float) for q in xy]
+    area = neg(v[0], v[1], v[2])
+    if area == 0:
+        return False
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = neg(a, b, p)
+        if e < 0 or (e == 0 and not _owns(a, b)):
+            return False
+    return True
+
+
+R347 = {
+    "fill skipping the last column": (
+        "fill", _fill_loop(cols=lambda w: range(w - 1)), "skips column", "border skipped"),
+    "fill skipping the first row": (
+        "fill", _fill_loop(rows=lambda h: range(1, h)), "skips row 0", "border skipped"),
+    "fill skipping the first column": (
+        "fill", _fill_loop(cols=lambda w: range(1, w)), "skips column 0", "border skipped"),
+    "fill skipping the last row and the last column": (
+        "fill", _fill_loop(rows=lambda h: range(h - 1), cols=lambda w: range(w - 1)),
+        "(the last row)", "border skipped"),
+    "fill with a bounding box one short": (
+        "fill", _fill_box_short, "one pixel short", "bounding box one short"),
+    "fill mirrored left-right": (
+        "fill", _fill_loop(mirror=True), "mirrored left–right", "mirrored left-right"),
+    "fill sampled at (j + 1, i + 1)": (
+        "fill", _fill_loop(at=(1.0, 1.0)), "(j + 1, i + 1)", "sampled at (j + 1, i + 1)"),
+    "fill sampled at (j + ½, i + 1)": (
+        "fill", _fill_loop(at=(0.5, 1.0)), "y = i + 1", "sampled at y = i + 1"),
+    "fill sampled at (j + 1, i + ½)": (
+        "fill", _fill_loop(at=(1.0, 0.5)), "x = j + 1", "sampled at x = j + 1"),
+    "fill sampled at (j − ½, i − ½)": (
+        "fill", _fill_loop(at=(-0.5, -0.5)), "(j − 0.5, i − 0.5)",
+        "sampled at (j − 0.5, i − 0.5)"),
+    "fill with vertices moved to pixel centres": (
+        "fill", _fill_loop(move=lambda v: np.round(v - 0.5) + 0.5), "nearest pixel centre",
+        "vertices moved to pixel centres"),
+    "covers, zero area by abs(E) < 1e-3": (
+        "covers", _covers_tolerant(area_tol=1e-3), "tiny but not 0", "zero area by a tolerance"),
+    "covers, edges by abs(E) < 1e-2": (
+        "covers", _covers_tolerant(edge_tol=1e-2), "within 0.0078125 px² of 0",
+        "edges by a tolerance"),
+    "covers, top-left as dy < 0 or dx > 0": (
+        "covers", _covers_with(lambda a, b: b[1] < a[1] or b[0] > a[0]),
+        "every edge that runs to the right", "right-running edges own their ties"),
+    "covers with −E": ("covers", _covers_negated, "returning −E", "bottom-right rule"),
+    # item 2: a slip the checker does not know is told in facts, not sent to the tie rule
+    "fill sampled at (j + 1.5, i + ½), unknown": (
+        "fill", _fill_loop(at=(1.5, 0.5)), "the tie rule alone does not explain it", "value"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R347.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R347.items()})

@@ -112,16 +112,28 @@ def covered(xy, points, owns=TOP_LEFT, winding: str = "both", vertices: str = "s
 
 def _edge_data(xy: np.ndarray, points: np.ndarray, vertices: str):
     """(E of each oriented edge at the points (3, n), the edges' kinds, the signed area)."""
-    v = {"rounded": np.round, "truncated": np.trunc, "exact": np.asarray}.get(vertices, snap)(xy)
+    v = MOVES.get(vertices, snap)(xy)
     area = float(edge_function(v[0], v[1], v[2]))
     if area < 0:
         v = v[[0, 2, 1]]
     e = np.array([edge_function(v[k], v[(k + 1) % 3], points) for k in range(3)])
-    return e, tuple(kind_of(v[k], v[(k + 1) % 3]) for k in range(3)), area
+    return e, tuple(kind_of(v[k], v[(k + 1) % 3]) for k in range(3)), area, v
+
+
+#: How a student may move the vertices before testing ("snapped" is the rule): r347 3 adds
+#: "centred", each vertex moved to the nearest pixel centre (round(v - 0.5) + 0.5).
+MOVES = {
+    "rounded": np.round,
+    "truncated": np.trunc,
+    "exact": np.asarray,
+    "centred": lambda v: np.round(np.asarray(v, dtype=float) - 0.5) + 0.5,
+}
 
 
 def _apply(data, owns, winding: str) -> np.ndarray:
-    e, kinds, area = data
+    """``owns``: the kinds of edge that own their ties, or ``owns(a, b) -> bool`` on the
+    oriented edge a→b (a student's own tie test, r347 3: ``dy < 0 or dx > 0``)."""
+    e, kinds, area, v = data
     n = e.shape[1]
     wrong_side = (winding == "clockwise only" and area < 0) or (
         winding == "counter-clockwise only" and area > 0
@@ -130,7 +142,8 @@ def _apply(data, owns, winding: str) -> np.ndarray:
         return np.zeros(n, dtype=bool)
     inside = np.ones(n, dtype=bool)
     for k in range(3):
-        inside &= passes(e[k], kinds[k] in owns)
+        own = owns(v[k], v[(k + 1) % 3]) if callable(owns) else kinds[k] in owns
+        inside &= passes(e[k], bool(own))
     return inside
 
 
@@ -143,6 +156,8 @@ def _cached_edges(xy: bytes, origin: tuple, size: tuple, at: str, swap, vertices
     oy = 0.0 if at in ("corners", "y at corners") else 0.5
     if at == "past p":  # r273 12-3: half a pixel added to p, a centre, again (j + 1, i + 1)
         ox = oy = 1.0
+    if isinstance(at, tuple):  # r347 2: any other sampling point (j + ox, i + oy)
+        ox, oy = at
     points = np.stack([cols + origin[0] + ox, rows + origin[1] + oy], axis=-1)
     points = points.reshape(-1, 2)
     v = np.frombuffer(xy, dtype=float).reshape(3, 2)
@@ -308,8 +323,10 @@ def example_pixel(case: CoverageCase, k: int, got: np.ndarray, expected: np.ndar
     missed_all = bool(np.any(expected)) and not np.any(np.logical_and(got, expected))
     if missed_all and True in inside:
         n = inside.index(True)
+    elif 0 in zeros:  # r347 2: a tie is the example only where every wrong centre is one
+        n = next((m for m, z in enumerate(zeros) if z == 0 and inside[m]), zeros.index(0))
     else:
-        n = zeros.index(1) if 1 in zeros else (inside.index(True) if True in inside else 0)
+        n = zeros.index(1) if 1 in zeros else 0
     return tuple(int(v) for v in wrong[n]), centres[n]
 
 
@@ -346,3 +363,65 @@ def head(case: CoverageCase, got, expected) -> tuple[str, int, tuple, int | None
             )
     missing, extra = int((e & ~g).sum()), int((g & ~e).sum())
     return f"{text} ({missing} pixel(s) missing, {extra} extra)", k, (i, j), edge
+
+
+# -- what differs, when no typical mistake gives the answer (r347 2) ------------------------------
+def _lines(indices, what: str, last: int) -> str:
+    """ "row 0 (the first row)", "columns 3 to 7" ... for the sorted distinct ``indices``."""
+    lo, hi = int(indices[0]), int(indices[-1])
+    if lo == hi:
+        side = " (the first)" if lo == 0 else (" (the last)" if lo == last else "")
+        return f"{what} {lo}{side}"
+    return f"{what}s {lo} to {hi}"
+
+
+def centre_values(case: CoverageCase, xy) -> tuple:
+    """(E of each oriented edge at every centre of the window, (3, h, w), interior positive;
+    the edges' lengths): one numpy pass for a whole image's wrong pixels."""
+    w, h = case.size
+    rows, cols = np.indices((h, w))
+    points = np.stack([cols + case.origin[0] + 0.5, rows + case.origin[1] + 0.5], axis=-1)
+    e, _, _, v = _edge_data(np.asarray(xy, dtype=float), points.reshape(-1, 2), "snapped")
+    lengths = np.array([np.hypot(*(v[(k + 1) % 3] - v[k])) for k in range(3)])
+    return e.reshape(3, h, w), lengths
+
+
+def differences(case: CoverageCase, got, expected) -> str:
+    """What differs on this case, in facts only (r347 2: the fallback named the tie rule
+    whatever the mistake): how many pixels, where, and how many of their centres lie exactly
+    on an edge. The tie rule is named only where every wrong centre is one."""
+    got = np.asarray(got)
+    if got.shape != expected.shape:
+        return ""
+    wrong = np.argwhere(got != expected)
+    if not len(wrong):
+        return ""
+    ties, far = 0, 0.0
+    for t, xy in enumerate(case.triangles):
+        mask = got[t] != expected[t]
+        if area2(xy) == 0 or not mask.any():
+            continue
+        e, lengths = centre_values(case, xy)
+        e = e[:, mask]
+        ties += int(((e == 0).any(axis=0) & (e >= 0).all(axis=0)).sum())
+        far = max(far, float((np.abs(e) / lengths[:, None]).min(axis=0).max()))
+    n, h, w = expected.shape
+    missing, extra = int((expected & ~got).sum()), int((got & ~expected).sum())
+    rows, cols = np.unique(wrong[:, 1]), np.unique(wrong[:, 2])
+    where = f"in {_lines(rows, 'row', h - 1)}, {_lines(cols, 'column', w - 1)}"
+    text = (
+        f"{len(wrong)} pixel(s) differ from the rule's ({missing} missing, {extra} extra) {where}"
+    )
+    if ties == len(wrong):
+        return (
+            f"{text}, and every one of their centres lies exactly on an edge (E = 0): on this "
+            "case what differs is how a centre on an edge is decided (by the tie rule, or by "
+            "a point tested slightly off the centre: a failing case whose wrong centres lie "
+            "off the edges would tell)"
+        )
+    return (
+        f"{text}; {ties} of these centres lie exactly on an edge and {len(wrong) - ties} off "
+        f"every edge (the farthest {fmt(round(far, 3))} px from the nearest edge's line), so "
+        "the tie rule alone does not explain it. None of the typical mistakes this check "
+        "knows gives your image: compare it with the rule's in the figure"
+    )

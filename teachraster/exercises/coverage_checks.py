@@ -6,8 +6,12 @@ triangle; ``fill`` once per triangle, and may return bools or 0/1 numbers
 (``np.zeros((h, w))`` filled with 1.0 is a correct answer). The mistakes are the rule with a
 knob turned (:func:`.coverage.rule_images`): the tie rule by the kinds of edges that own their
 centres, one winding only, sampling at pixel corners, vertices rounded to whole pixels; and an
-empty answer, a transposed or upside-down image, x and y swapped, float32 far from the origin.
-An explanation names the mistake, then shows it on one wrong pixel, the most telling one.
+empty answer, a transposed or upside-down image, x and y swapped, float32 far from the origin;
+r347's: border rows or columns a loop skips, a bounding box one short, a left-right mirror,
+other sampling points, vertices moved to pixel centres, tolerances on E, a tie test that forgot
+"exactly horizontal". An explanation names the mistake, then shows it on one wrong pixel, the
+most telling one; where no mistake gives the answer it says what differs, in facts only
+(:func:`.coverage.differences`), and names the tie rule only where every wrong centre is a tie.
 """
 
 from __future__ import annotations
@@ -134,7 +138,22 @@ def fill_cases():
 def _fill_cases():
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
-    return [(c.label, (c,), _expected(c)) for c in cases + _oblong_cases()]
+    return [(c.label, (c,), _expected(c)) for c in cases + _oblong_cases() + _border_cases()]
+
+
+def _border_cases() -> list[CoverageCase]:
+    """Triangles that reach every border row and column of the image (r347 1: a loop that
+    skipped the last column or the first row passed every case): one larger than the image
+    (clockwise on screen), and a mesh of two splitting the image along its diagonal, one of
+    each winding."""
+    big = np.array([[[-3.0, -2.0], [25.0, -2.0], [-3.0, 20.0]]])
+    half = np.array([[[0.0, 0.0], [10.0, 7.0], [0.0, 7.0]], [[0.0, 0.0], [10.0, 7.0], [10.0, 0.0]]])
+    return [
+        CoverageCase("a triangle larger than the image: a 9 × 6 image (width × height), every "
+                     "pixel covered", big, (0, 0), (9, 6)),
+        CoverageCase("two triangles splitting a 10 × 7 image along its diagonal (a mesh)",
+                     half, (0, 0), (10, 7), mesh=True),
+    ]  # fmt: skip
 
 
 def _oblong_cases() -> list[CoverageCase]:
@@ -349,7 +368,7 @@ def _moved_vertices(how: str):
     """Vertices rounded (or truncated) to whole pixels: the triangle the student filled."""
 
     def describe(case, xy, e, g, i, j):
-        v = {"rounded": np.round, "truncated": np.trunc}[how](xy)
+        v = cov.MOVES[how](xy)
         c = _centre(case, i, j)
         if bool(cov.covered(xy, c, vertices=how)[0]) != g[i, j]:
             return None
@@ -385,9 +404,22 @@ def _flipped_pixel(case, xy, e, g, i, j):
                            "the pixel in the mirrored row")  # fmt: skip
 
 
+#: r347 3: −E (E(b, a, p)) under the right tie test gives a bottom-right rule's very coverage.
+NEGATED_E = (
+    "; an edge function returning −E (a and b the other way round) under the conventions' "
+    'tie test gives this very coverage: if your tie test is right, run ex.check("edge_function", '
+    "edge_function)"
+)
+
+
+def _owns_words(owns) -> str:
+    words = cov.owns_words(owns)
+    return words + NEGATED_E if owns == frozenset({"bottom", "right"}) else words
+
+
 def _rule_knobs(masked: bool, corners: bool) -> Knobs:
     knobs = {
-        "owns": [Slip(cov.owns_kind(o), cov.owns_words(o), o) for o in cov.owns_variants()],
+        "owns": [Slip(cov.owns_kind(o), _owns_words(o), o) for o in cov.owns_variants()],
         "winding": [
             Slip("ties by the edges as given", _ties_as_given_words, "ties as given"),
             Slip("one winding only", _winding_words, "clockwise only"),
@@ -453,6 +485,250 @@ def _transposed_words(args, expected, got) -> str:
     )
 
 
+# -- r347: loops that skip a border, a box one short, a mirror, other sampling points, tolerances
+#: The sides of an image a loop may skip, and how many rows or columns (range(1, n), range(n - 1),
+#: range(n - 2)): (top, bottom, left, right).
+_BANDS = sorted(
+    ((t, b, lft, r) for t in range(3) for b in range(3) for lft in range(3) for r in range(3)),
+    key=sum,
+)[1:]
+
+
+def _banded(e: np.ndarray, band) -> np.ndarray:
+    t, b, lft, r = band
+    out = e.copy()
+    out[:t], out[out.shape[0] - b :], out[:, :lft], out[:, out.shape[1] - r :] = 0, 0, 0, 0
+    return out
+
+
+def _skipped_band(args, expected, got):
+    """The fewest border rows and columns (top, bottom, left, right) whose pixels, all left
+    out, turn the rule's images into the student's (the rest right), or None. (A triangle
+    wholly inside them leaves an empty image: :data:`_always` names it only where every
+    failing case fits.)"""
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return None
+    for band in _BANDS:
+        if all(np.array_equal(_banded(e, band), g) for e, g in zip(expected, got)):
+            return band
+    return None
+
+
+def _band_words(args, expected, got) -> str:
+    (case,) = args
+    w, h = case.size
+    t, b, lft, r = _skipped_band(args, expected, got)
+
+    def lines(n, first, what, total):
+        if n == 0:
+            return []
+        rng = f"range(1, {total})" if first else f"range({total} - 1)"
+        if n == 2:
+            rng = f"range(2, {total})" if first else f"range({total} - 2)"
+        where = ("the first" if first else "the last") + (f" {n} {what}s" if n > 1 else f" {what}")
+        index = 0 if first else (h if what == "row" else w) - 1
+        name = f"{what} {index} ({where})" if n == 1 else where
+        return [(name, rng)]
+
+    parts = (lines(t, True, "row", "height") + lines(b, False, "row", "height")
+             + lines(lft, True, "column", "width") + lines(r, False, "column", "width"))  # fmt: skip
+    names = " and ".join(n for n, _ in parts)
+    loops = " or ".join(f"`{g}`" for _, g in parts)
+    return (
+        f"your loop skips {names} of the image: every pixel there is False, the rest of the "
+        f"image is right ({int((expected & ~got).sum())} pixel(s) missing there). A loop "
+        f"such as {loops} leaves it out: `range(n)` runs over 0 … n − 1, every row "
+        "(range(height)) and every column (range(width)) of the image"
+    )
+
+
+def _box_short(case) -> np.ndarray:
+    """A bounding-box loop whose end, ``ceil(max) - 1``, is exclusive: one row and one column
+    short at the bottom and the right."""
+    images = _expected(case)
+    for n, xy in enumerate(case.triangles):
+        end = np.ceil(np.asarray(xy, dtype=float).max(axis=0) - case.origin).astype(int) - 1
+        images[n, max(end[1], 0) :, :] = False
+        images[n, :, max(end[0], 0) :] = False
+    return images
+
+
+BOX_SHORT = (
+    "your bounding box stops one pixel short at the right and the bottom: the last column "
+    "(row) whose centre the triangle may cover is ceil(x_max) − 1 (ceil(y_max) − 1), so the "
+    "loop is range(floor(x_min), ceil(x_max)) with its end exclusive (clamped to the image), "
+    "not range(…, ceil(x_max) − 1)"
+)
+X_MIRRORED = (
+    "your image is mirrored left–right: column j holds the pixels whose centres have "
+    "x = j + 0.5, x pointing right (column 0 at the left), so do not flip the columns "
+    "(width − 1 − j)"
+)
+
+#: Sampling points a fill may take for pixel (i, j) instead of its centre (r347 2, 3): kind,
+#: words.
+OFFSETS = {
+    (1.0, 1.0): ("sampled at (j + 1, i + 1)", "your pixel (row i, col j) is sampled at (j + 1, "
+                 "i + 1), its bottom-right corner, not its centre (j + 0.5, i + 0.5) (half a "
+                 "pixel added twice?)"),
+    (0.5, 1.0): ("sampled at y = i + 1", "your row i is sampled at y = i + 1, the pixel's "
+                 "bottom side, not at its centre y = i + 0.5 (the columns are right: x = j + 0.5)"),
+    (1.0, 0.5): ("sampled at x = j + 1", "your column j is sampled at x = j + 1, the pixel's "
+                 "right side, not at its centre x = j + 0.5 (the rows are right: y = i + 0.5)"),
+    (-0.5, -0.5): ("sampled at (j − 0.5, i − 0.5)", "your pixel (row i, col j) is sampled at "
+                   "(j − 0.5, i − 0.5), the centre of the pixel above and to the left, not its "
+                   "own (j + 0.5, i + 0.5): half a pixel taken off instead of added"),
+}  # fmt: skip
+
+
+def _sampling_mistakes() -> list[Mistake]:
+    return [
+        Mistake(kind, _own_example(words, _sampled_at(ox, oy)),
+                gives=lambda case, at=(ox, oy): cov.rule_images(case, at=at))
+        for (ox, oy), (kind, words) in OFFSETS.items()
+    ]  # fmt: skip
+
+
+def _centred_words(args, expected, got) -> str:
+    return _own_example(
+        "you moved each vertex to the nearest pixel centre (round(v − 0.5) + 0.5): a vertex "
+        "keeps its position, snapped to the 1/256-px grid only",
+        _moved_vertices("centred"),
+    )(args, expected, got)
+
+
+def _owns_right_running(a, b) -> bool:
+    """A tie test that forgot 'exactly horizontal': every edge running right owns its ties."""
+    return bool(b[1] < a[1] or b[0] > a[0])
+
+
+RIGHT_RUNNING = (
+    "your tie test counts every edge that runs to the right as a top edge, the right edges "
+    "running down and to the right too: a top edge is one exactly horizontal (y the same at "
+    "both ends), its interior below it"
+)
+
+
+def _tiny(xy) -> bool:
+    return 0 < abs(cov.area2(xy)) < 1.0
+
+
+def _float32_exact(case) -> bool:
+    """Near the origin and short: float32 would give the rule's answer here, so an E taken
+    as 0 that is not is a tolerance, not float32's rounding (:func:`_float32_fits`)."""
+    xy = np.asarray(case.triangles, dtype=float)
+    extent = float(np.abs(xy - xy[:, :1]).max())
+    return float(np.abs(xy).max()) < 1e4 and extent < 1000
+
+
+def _area_tolerance_fits(args, expected, got) -> bool:
+    """Every wrong triangle is a tiny one (0 < |E(v1, v2, v3)| < 1 px²) left empty, the rest
+    right: a zero-area test with a tolerance (abs(E) < 1e-3)."""
+    (case,) = args
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return False
+    if not _float32_exact(case):
+        return False
+    wrong = [k for k in range(len(got)) if not np.array_equal(got[k], expected[k])]
+    return bool(wrong) and all(_tiny(case.triangles[k]) and not got[k].any() for k in wrong)
+
+
+def _area_tolerance_words(args, expected, got) -> str:
+    (case,) = args
+    k = cov.wrong_triangle(got, expected)
+    return (
+        f"you covered nothing of a triangle whose E(v1, v2, v3) = "
+        f"{cov.fmt(cov.area2(case.triangles[k]))} px² is tiny but not 0: a zero-area test with "
+        "a tolerance (abs(E) < 1e-3) takes it for a flat one. The vertices are on the "
+        "1/256-px grid, so E is exact: only E == 0 is zero area"
+    )
+
+
+def _edge_tolerance(args, expected, got) -> float | None:
+    """The least tolerance ε such that E within ε of 0 taken as 0 (a tie) gives the student's
+    every image of this case, if it is below 0.1 px² and changes something, else None."""
+    (case,) = args
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return None
+    if not _float32_exact(case):
+        return None
+    values = [cov.centre_values(case, xy)[0] for xy in case.triangles]
+    eps = 0.0
+    for k, e in enumerate(values):
+        wrong = e[:, got[k] != expected[k]]
+        if wrong.size:
+            small = np.where(wrong != 0, np.abs(wrong), np.inf).min(axis=0)
+            eps = max(eps, float(small.max()))
+    if not 0 < eps < 0.1:
+        return None
+    for k, xy in enumerate(case.triangles):
+        if not np.array_equal(_tolerant_image(case, xy, np.nextafter(eps, 1)), got[k]):
+            return None
+    return eps
+
+
+def _tolerant_image(case, xy, eps: float) -> np.ndarray:
+    w, h = case.size
+    if cov.area2(xy) == 0:
+        return np.zeros((h, w), dtype=bool)
+    rows, cols = np.indices((h, w))
+    points = np.stack([cols + case.origin[0] + 0.5, rows + case.origin[1] + 0.5], -1)
+    e, kinds, area, v = cov._edge_data(np.asarray(xy, dtype=float), points.reshape(-1, 2),
+                                       "snapped")  # fmt: skip
+    e = np.where(np.abs(e) < eps, 0.0, e)
+    return cov._apply((e, kinds, area, v), cov.TOP_LEFT, "both").reshape(h, w)
+
+
+def _edge_tolerance_words(args, expected, got) -> str:
+    eps = _edge_tolerance(args, expected, got)
+    return (
+        f"you take an edge function within {cov.fmt(eps)} px² of 0 for 0 (a tolerance such as "
+        "abs(E) < 1e-2): a centre that close to an edge is then decided by the tie rule, "
+        "though it lies strictly on one side. The vertices are on the 1/256-px grid and the "
+        "centres on the half-pixel grid, so E is exact: compare it with 0 exactly"
+    )
+
+
+def _always(*args) -> bool:
+    return True
+
+
+def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
+    """r347's mistakes that no knob reproduces (singles: they do not combine)."""
+
+    def masks(images, case):
+        return images & _masks(case) if masked else images
+
+    table = [
+        Mistake("right-running edges own their ties", RIGHT_RUNNING,
+                gives=lambda case: masks(cov.rule_images(case, owns=_owns_right_running), case)),
+        # r347: named only where they give every failing case they must (a fit on one case
+        # alone is a coincidence: a point sampled off the centre left a sliver empty)
+        Mistake("zero area by a tolerance", _area_tolerance_words, fits=_area_tolerance_fits,
+                must_fit=_always),
+        Mistake("edges by a tolerance", _edge_tolerance_words,
+                fits=lambda *a: _edge_tolerance(*a) is not None,
+                must_fit=lambda args, *_: _float32_exact(args[0])),
+        Mistake("vertices moved to pixel centres", _centred_words,
+                gives=lambda case: masks(cov.rule_images(case, vertices="centred"), case)),
+    ]  # fmt: skip
+    if name == "fill":
+        table += [
+            Mistake("border skipped", _band_words,
+                    fits=lambda *a: _skipped_band(*a) is not None, must_fit=_always),
+            Mistake("bounding box one short", BOX_SHORT, gives=_box_short),
+            _mirrored("mirrored left-right", _own_example(X_MIRRORED, _x_flipped_pixel),
+                      lambda e: e[:, ::-1]),
+            *_sampling_mistakes(),
+        ]  # fmt: skip
+    return table
+
+
+def _x_flipped_pixel(case, xy, e, g, i, j):
+    return _mirrored_pixel(case, xy, e, g, i, j, (i, e.shape[1] - 1 - j),
+                           "the pixel in the mirrored column")  # fmt: skip
+
+
 def mistakes(name: str) -> list:
     """The mistakes table of ``covers`` or ``fill``, most specific first."""
     masked = name == "covers"
@@ -467,6 +743,7 @@ def mistakes(name: str) -> list:
             Mistake("transposed", SWAPPED, gives=lambda case: rule_swapped(case) & _masks(case))
         )
         table += _point_mistakes()
+    table += _r347_mistakes(name, masked)
     table.append(_rule_knobs(masked, corners=name == "fill"))
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
@@ -527,6 +804,11 @@ def explain(args, expected, got) -> str:
     return text
 
 
+def _differences(args, expected, got) -> str:
+    (case,) = args
+    return cov.differences(case, got, expected)
+
+
 def compose(head: str, words: str) -> str:
     """The mistake first, then the pixel that shows it; a placeholder alone (r64: the example
     of an answer that never changes told the top-left rule), and a mistake that gives its own
@@ -577,8 +859,15 @@ def draw(ax, case, got):
     _, (c,), expected = case
     if got is None:
         return draw_coverage(ax, c, c.triangles[0], expected[0], None, None, None)
-    if same_coverage(got, expected, None):
-        return draw_coverage(ax, c, c.triangles[0], expected[0], expected[0], None, None)
+    if same_coverage(got, expected, None):  # r347 FIG: the whole mesh, its ties ringed
+        from .drawing import draw_mesh
+
+        ties = np.zeros(expected.shape[1:], dtype=bool)
+        for xy in c.triangles:
+            if cov.area2(xy) != 0:
+                e = cov.centre_values(c, xy)[0]
+                ties |= (e == 0).any(axis=0) & (e >= 0).all(axis=0)
+        return draw_mesh(ax, c, expected, ties)
     _, k, pixel, edge = cov.head(c, got, expected)
     g = np.asarray(got[k])
     g = g if g.shape == expected[k].shape else g.T
@@ -597,7 +886,7 @@ TIE_RULE_ANSWERS = tuple(
 def _exercise(name: str, cases, call, scene=None) -> Exercise:
     return Exercise(
         name, cases, convert=None, same=same_coverage, explain=explain,
-        rule=lambda *a: "", mistakes=mistakes(name), draw=draw, scene=scene, call=call,
+        rule=_differences, mistakes=mistakes(name), draw=draw, scene=scene, call=call,
         answers=(PackageAnswer(rasterize), *TIE_RULE_ANSWERS), compose=compose,
         constant=constant(name),
         hints=HINTS,

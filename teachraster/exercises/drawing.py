@@ -42,8 +42,7 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     ax.grid(which="minor", color="#eeeeee", linewidth=0.5)
     ring = np.vstack([xy, xy[:1]])
     artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
-    for k, v in enumerate(xy):
-        artists.append(ax.annotate(f"v{k + 1}", v, fontsize="x-small", color="black"))
+    artists += vertex_labels(ax, xy, (w + h) / 40, (x0, y0, w, h))
     if edge is not None:
         a, b = xy[edge], xy[(edge + 1) % 3]
         artists += ax.plot([a[0], b[0]], [a[1], b[1]], color=EDGE_COLOUR, linewidth=3)
@@ -63,6 +62,78 @@ def draw_coverage(ax, case, xy, expected, got, edge, pixel):
     ax.set_xlim(x0, x0 + w)
     ax.set_ylim(y0 + h, y0)
     plain_ticks(ax)
+    ax.set_aspect("equal")
+    return artists
+
+
+def vertex_labels(ax, xy, near: float, window, names=("v1", "v2", "v3")) -> list:
+    """Each vertex's name beside it, pushed away from the triangle's centre so that no label
+    sits on an edge (back inwards at the border of ``window`` = (x0, y0, w, h), where it would
+    leave the picture); vertices closer than ``near`` (px) share one label, "v1, v2, v3"
+    (r347 FIG: a 0.04-px triangle printed its three names over each other), and each is a
+    dot, so a triangle too small to see still shows where it is."""
+    xy = np.asarray(xy, dtype=float)
+    centre = xy.mean(axis=0)
+    x0, y0, w, h = window
+    lo, hi = np.array([x0, y0]) + 2 * near, np.array([x0 + w, y0 + h]) - 2 * near
+    artists = ax.plot(xy[:, 0], xy[:, 1], ".", color="black", ms=3)
+    done: set[int] = set()
+    for k, v in enumerate(xy):
+        if k in done:
+            continue
+        group = [m for m in range(len(xy)) if m not in done and np.hypot(*(xy[m] - v)) < near]
+        done.update(group)
+        away = v - centre
+        norm = np.hypot(*away)
+        away = away / norm if norm > 1e-9 else np.array([0.7, -0.7])
+        away = np.where(((v < lo) & (away < 0)) | ((v > hi) & (away > 0)), -away, away)
+        artists.append(ax.annotate(
+            ", ".join(names[m] for m in group), v, xytext=tuple(9 * away * (1, -1)),
+            textcoords="offset points", fontsize="x-small", color="black",
+            ha="left" if away[0] >= 0 else "right", va="center",
+        ))  # fmt: skip
+    return artists
+
+
+def draw_mesh(ax, case, expected, ties) -> list:
+    """A case every triangle of which the answer got right (a passing check, r347 FIG): each
+    pixel in its triangle's colour, the pixel centres as dots, the centres lying exactly on
+    an edge (``ties``, (h, w) bool) ringed, and every triangle's outline and vertices."""
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    n, h, w = expected.shape
+    x0, y0 = case.origin
+    palette = ("#ffffff", "#9ecae1", "#fdae6b", "#a1d99b", "#bcbddc", "#fc9272")
+    owner = np.zeros((h, w), dtype=int)
+    for k in range(n):
+        owner[expected[k]] = 1 + k % (len(palette) - 1)
+    artists = [ax.imshow(owner, cmap=ListedColormap(palette), vmin=0, vmax=len(palette) - 1,
+                         extent=(x0, x0 + w, y0 + h, y0), interpolation="nearest")]  # fmt: skip
+    ax.set_xticks(np.arange(x0, x0 + w + 1), minor=True)
+    ax.set_yticks(np.arange(y0, y0 + h + 1), minor=True)
+    ax.grid(which="minor", color="#eeeeee", linewidth=0.5)
+    cy, cx = np.indices((h, w)) + 0.5
+    artists += ax.plot(x0 + cx.ravel(), y0 + cy.ravel(), ".", color="#555555", ms=2)
+    ti, tj = np.nonzero(ties)
+    artists += ax.plot(x0 + tj + 0.5, y0 + ti + 0.5, "o", mfc="none", mec="black", ms=7)
+    for xy in case.triangles:
+        ring = np.vstack([xy, xy[:1]])
+        artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+        if n == 1:
+            artists += vertex_labels(ax, xy, (w + h) / 40, (x0, y0, w, h))
+    handles = [Patch(color=palette[1 + k % (len(palette) - 1)],
+                     label=f"covered by triangle {k}" if n > 1 else "covered")
+               for k in range(n)]  # fmt: skip
+    handles.append(ax.plot([], [], "o", mfc="none", mec="black", label="centre on an edge")[0])
+    artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
+                             bbox_to_anchor=(1.02, 1)))  # fmt: skip
+    ax.set_xlim(x0, x0 + w)
+    ax.set_ylim(y0 + h, y0)
+    plain_ticks(ax)
+    if max(w, h) <= 16:  # a small window: a tick on every pixel border
+        ax.set_xticks(np.arange(x0, x0 + w + 1))
+        ax.set_yticks(np.arange(y0, y0 + h + 1))
     ax.set_aspect("equal")
     return artists
 
