@@ -75,6 +75,10 @@ def test_p6_q_edge23_is_not_quite_level():
     assert "not quite level" not in ask
     assert "exactly horizontal: a bottom edge" in ns.edge_why[1]
     assert "two of the three edges do" in ns.edge_why[2]
+    # r343 P1: E12's reveal, read before E23 is checked, gave the general rule E23's trap
+    # tests; the rule is said with E23's answer
+    assert "horizontal" not in ns.edge_why[0] and "top side" not in ns.edge_why[0]
+    assert "Only an exactly horizontal edge is a top or a bottom edge" in ns.edge_why[1]
     assert "the one edge of the three" not in ask
     # r328 02-6: prompts 2 and 3 repeat the vertices, the quarter pixel among them
     assert "v2 = (14.5, 7.5), v3 = (3.5, 7.25)" in ns.wedge_named
@@ -114,3 +118,16 @@ def test_r328_the_editor_keeps_room_for_its_readout_to_wrap():
                         method="halfplane", probe=(7.5, 7.5), comparison=False)  # fmt: skip
     assert ed.info.layout.min_height == "calc(3 * var(--jp-widgets-inline-height, 28px))"
     ed.close()
+
+
+def test_r343_the_square_counts_print_in_lines_that_fit_a_column():
+    """r328 S4 / r343 FIG: cell 20 printed lines of 127-134 characters, wrapped mid-word in
+    the browser at 900-1400 px; its counts are a table now, every line at most 80."""
+    from notebook_runs import executed
+
+    cells = executed("02_half_planes").notebook().cells
+    (counts,) = [c for c in cells if c.get("id") == "c12"]
+    lines = [line for out in counts.outputs if out.output_type == "stream"
+             for line in out.text.splitlines()]  # fmt: skip
+    assert any(line.startswith("naive E >= 0") for line in lines)
+    assert lines and max(len(line) for line in lines) <= 80, max(lines, key=len)
