@@ -131,3 +131,19 @@ def test_r343_the_square_counts_print_in_lines_that_fit_a_column():
              for line in out.text.splitlines()]  # fmt: skip
     assert any(line.startswith("naive E >= 0") for line in lines)
     assert lines and max(len(line) for line in lines) <= 80, max(lines, key=len)
+
+
+def test_r343_the_prose_did_not_grow_and_the_float_failure_is_drawn():
+    """r343 S1: cells 0, 15, 33 and 35 split into short paragraphs and bullets, asides folded
+    in <details>; with M1/M2's sentences the Markdown still counts fewer words than the 3,938
+    before. r328/r343 M: cell 28's raw-float failure is drawn beside the same pair snapped."""
+    texts = json.loads(NOTEBOOK.read_text())["cells"]
+    words = sum(len("".join(c["source"]).split()) for c in texts if c["cell_type"] == "markdown")
+    assert words <= 3900, words
+    five_c = next(t for t in _texts() if t.startswith("### 5c."))
+    assert "<details>" in five_c and len(five_c.split("<details>")[0].split()) < 220
+    ns = lesson("02_half_planes")
+    a, b, _, _ = ns.first_pair
+    row, col = ns.row, ns.col  # the ringed centre: on the shared edge, drawn twice unsnapped
+    assert (a[0] - col * 10 - 5) * (b[1] - a[1]) == (a[1] - row * 10 - 5) * (b[0] - a[0])
+    assert ns.times == 1  # the last panel drawn: snapped, once
