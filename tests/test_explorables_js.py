@@ -467,7 +467,10 @@ def test_the_shared_edge_and_the_vertices_leave_their_signs_to_the_pointer():
     assert shared and all(rc in quiet for rc in shared)
     at_vertices = [[int(y), int(x)] for x, y in verts]  # each default vertex on a centre
     assert all(rc in quiet for rc in at_vertices)
-    assert {tuple(rc) for rc in quiet} == {tuple(rc) for rc in shared + at_vertices}
+    # r343 02-FIG1: and the four centres beside v2 and v3, each on its ring's centre
+    beside = [[int(y) + dr, int(x) + dc] for x, y in verts[1:3]
+              for dr, dc in ((-1, 0), (1, 0), (0, -1), (0, 1))]  # fmt: skip
+    assert {tuple(rc) for rc in quiet} == {tuple(rc) for rc in shared + at_vertices + beside}
     calls = [("signsShown", [scene["A"], r, c, None, quiet]) for r, c in quiet]
     calls += [("signsShown", [scene["A"], r, c, [c + 0.5, r + 0.5], quiet]) for r, c in quiet]
     shown = call_js(EDGES, calls)
@@ -1702,3 +1705,44 @@ def test_one_row_shared_edge_leaves_v3_its_name_and_labels_stay_inside_the_grid(
     a, b, centroid = px(4, 13.5), px(9, 13.5), px(6, 10)
     (lab,) = call_js(EDGES, [("labelCentre", [a, b, centroid, [80.0, 10.0], cell, grid])])
     assert grid[1] + 10 <= lab[1] <= grid[3] - 10 and grid[0] + 80 <= lab[0] <= grid[2] - 80
+
+
+def test_default_view_gives_v3_a_name_clear_of_its_ring_and_labels_clear_of_the_edges():
+    """Review r343 02-FIG1: in the default view "v3" stood under v3's grey ring and its "−"
+    letter, every place beside the ring holding a centre's signs; an edge's label could
+    stand across a drawn edge. The centres beside a ringed end are quiet, and names and
+    labels count a drawn edge through their box as a collision."""
+    from teachraster.widgets.edge_explorer import DEFAULT_VERTICES
+
+    verts = [list(v) for v in DEFAULT_VERTICES]
+    cell, m, (W, H) = 50.0, {"left": 30, "top": 26}, (16, 14)
+    (scene,) = call_js(EDGES, [("edgeScene", [verts, W, H])])
+    (quiet,) = call_js(EDGES, [("quietCentres", [scene, verts])])
+    px = lambda x, y: [m["left"] + x * cell, m["top"] + y * cell]  # noqa: E731
+    dots = [px(*v) for v in verts]
+    rings = [[*px(s["col"] + 0.5, s["row"] + 0.5), 0.42 * cell] for s in scene["shared"]]
+    letters = call_js(EDGES, [("badgeCentre", [scene, s["row"], s["col"], cell, m, dots])
+                              for s in scene["shared"]])  # fmt: skip
+    centres = [(r, c) for r in range(H) for c in range(W)]
+    shown = call_js(EDGES, [("signsShown", [scene["A"], r, c, None, quiet]) for r, c in centres])
+    reach = [cell * 0.3 + cell * 0.48 / 2, cell * 0.3]
+    boxes = [[x - 11, y - 11, x + 11, y + 11] for x, y in letters]
+    boxes += [[x - reach[0], y - reach[1], x + reach[0], y + reach[1]]
+              for (r, c), s in zip(centres, shown) if s for x, y in [px(c + 0.5, r + 0.5)]]  # fmt: skip
+    (segments,) = call_js(EDGES, [("edgeSegments", [dots])])
+    grid, half = [*px(0, 0), *px(W, H)], [12.0, 9.5]
+    (at,) = call_js(EDGES, [("vertexNameAt", [dots[2], half, cell, grid, rings, boxes, segments])])
+    box = [at[0] - half[0], at[1] - half[1], at[0] + half[0], at[1] + half[1]]
+    for cx, cy, r in rings:
+        assert (
+            np.hypot(max(box[0] - cx, 0, cx - box[2]), max(box[1] - cy, 0, cy - box[3])) > r + 1.5
+        )
+    assert not any(b[0] < box[2] and box[0] < b[2] and b[1] < box[3] and box[1] < b[3]
+                   for b in boxes)  # fmt: skip
+    crossed = call_js(EDGES, [("segmentCrossesBox", [s, e, box]) for s, e in segments])
+    assert not any(crossed)
+    # the crossing test itself: through, beside, ending inside, parallel along a side
+    assert call_js(EDGES, [("segmentCrossesBox", args) for args in (
+        [[0, 5], [20, 5], [5, 0, 10, 10]], [[0, 20], [20, 20], [5, 0, 10, 10]],
+        [[0, 0], [7, 7], [5, 0, 10, 10]], [[5, -5], [5, -1], [5, 0, 10, 10]])]) == [
+        True, False, True, False]  # fmt: skip

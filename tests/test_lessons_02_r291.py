@@ -75,6 +75,10 @@ def test_p6_q_edge23_is_not_quite_level():
     assert "not quite level" not in ask
     assert "exactly horizontal: a bottom edge" in ns.edge_why[1]
     assert "two of the three edges do" in ns.edge_why[2]
+    # r343 P1: E12's reveal, read before E23 is checked, gave the general rule E23's trap
+    # tests; the rule is said with E23's answer
+    assert "horizontal" not in ns.edge_why[0] and "top side" not in ns.edge_why[0]
+    assert "Only an exactly horizontal edge is a top or a bottom edge" in ns.edge_why[1]
     assert "the one edge of the three" not in ask
     # r328 02-6: prompts 2 and 3 repeat the vertices, the quarter pixel among them
     assert "v2 = (14.5, 7.5), v3 = (3.5, 7.25)" in ns.wedge_named
@@ -114,3 +118,32 @@ def test_r328_the_editor_keeps_room_for_its_readout_to_wrap():
                         method="halfplane", probe=(7.5, 7.5), comparison=False)  # fmt: skip
     assert ed.info.layout.min_height == "calc(3 * var(--jp-widgets-inline-height, 28px))"
     ed.close()
+
+
+def test_r343_the_square_counts_print_in_lines_that_fit_a_column():
+    """r328 S4 / r343 FIG: cell 20 printed lines of 127-134 characters, wrapped mid-word in
+    the browser at 900-1400 px; its counts are a table now, every line at most 80."""
+    from notebook_runs import executed
+
+    cells = executed("02_half_planes").notebook().cells
+    (counts,) = [c for c in cells if c.get("id") == "c12"]
+    lines = [line for out in counts.outputs if out.output_type == "stream"
+             for line in out.text.splitlines()]  # fmt: skip
+    assert any(line.startswith("naive E >= 0") for line in lines)
+    assert lines and max(len(line) for line in lines) <= 80, max(lines, key=len)
+
+
+def test_r343_the_prose_did_not_grow_and_the_float_failure_is_drawn():
+    """r343 S1: cells 0, 15, 33 and 35 split into short paragraphs and bullets, asides folded
+    in <details>; with M1/M2's sentences the Markdown still counts fewer words than the 3,938
+    before. r328/r343 M: cell 28's raw-float failure is drawn beside the same pair snapped."""
+    texts = json.loads(NOTEBOOK.read_text())["cells"]
+    words = sum(len("".join(c["source"]).split()) for c in texts if c["cell_type"] == "markdown")
+    assert words <= 3900, words
+    five_c = next(t for t in _texts() if t.startswith("### 5c."))
+    assert "<details>" in five_c and len(five_c.split("<details>")[0].split()) < 220
+    ns = lesson("02_half_planes")
+    a, b, _, _ = ns.first_pair
+    row, col = ns.row, ns.col  # the ringed centre: on the shared edge, drawn twice unsnapped
+    assert (a[0] - col * 10 - 5) * (b[1] - a[1]) == (a[1] - row * 10 - 5) * (b[0] - a[0])
+    assert ns.times == 1  # the last panel drawn: snapped, once

@@ -1700,7 +1700,8 @@ def test_02_r231_raw_floats_are_counted_and_the_snapping_cited_as_the_specs_say(
     assert "§15.16 *Rasterizer Precision* (16.8, exactly 8 bits)" in row
     assert "§3.4.1 *Coordinate Snapping* (snapped to n.8 fixed point)" in row
     assert "D3D11.3 §3.2.4.1 allows a D3D11 implementation 0.6 ULP" in flat
-    assert "OpenGL and Vulkan fix only the number of sub-pixel bits" in flat
+    # r343 S2: they fix a minimum (>= 4, the table's), not the number
+    assert "OpenGL and Vulkan require only a minimum number of sub-pixel bits (4)" in flat
     assert "a tie to the even quarter)" not in flat  # the Try it says whose choice it is
     for api in ("| OpenGL 4.6", "| Vulkan"):
         line = next(x for x in text.splitlines() if x.startswith(api))
@@ -1769,7 +1770,7 @@ def test_02_r231_the_directed_edges_are_predicted_and_the_rest():
     assert "pair = [" in text[shown[0]] and "upper_tri, lower_tri = " in text[shown[0]]
     assert not any("def naive_coverage(" in t for t in text[square_ask:])
     # snapping named where the 1/256 px units first appear, before §5b
-    step_md = next(t for t in text if "The question below asks that amount" in t)
+    step_md = next(t for t in text if "The question below asks which of the three" in t)
     assert "rounded to a multiple of 1/256 px before any test" in re.sub(r"\s+", " ", step_md)
     assert "Lesson 07 (*Hard cases*" in flat and "fans whose spokes run through pixel" in flat
 
@@ -2355,14 +2356,14 @@ def test_02_stepping_prediction_is_asked_before_its_answer_is_printed():
     before = ["".join(c["source"]) for c in cells]
     before = before[: next(i for i, t in enumerate(before) if "q_step = Predict(" in t)]
     assert not any("-(v_2 - v_1)" in t or "u_2 - u_1$" in t for t in before[3:])
-    assert ns.step_px * 256**2 == ns.step_right == -294_912
-    # review r147 #8: asked in the snapped integers (units²), not in px², one coefficient
-    assert ns.step_units == ns.step_right
+    assert ns.steps_px["E12"] * 256**2 == ns.step_right == -294_912
+    # review r147 #8, r343 P2: the largest of the three steps, not one coefficient
+    assert ns.steps_px[ns.fastest] == max(ns.steps_px.values(), key=abs)
     cell = next(c for c in cells if "q_step = Predict(" in "".join(c["source"]))
     assert cell["metadata"] == {"jupyter": {"source_hidden": True}, "tags": ["hide-input"]}
-    q = Predict("E12 a pixel right?", answer=ns.step_units, headless=False)
+    q = Predict("E31 a pixel right?", answer=ns.steps_px[ns.fastest], headless=False)
     assert q.check.disabled
-    q.control.value = str(ns.step_units)
+    q.control.value = str(ns.steps_px[ns.fastest])
     assert not q.check.disabled
     q.check.click()
     assert q.correct

@@ -151,31 +151,28 @@ def test_02_q_square_names_what_it_asks():
     assert "(13.5, 2.5)" not in seen and "right and bottom sides" not in seen
 
 
-def test_02_q_step_is_asked_in_the_snapped_integers(monkeypatch):
-    """r147 #8: one coefficient read off (−4.5 px²). Now in the integers the next cell steps
-    with: a pixel is 256 units, so −(v2 − v1) in units times 256; the held cell below no
-    longer shows the step's formula in its source."""
+def test_02_q_step_asks_which_edge_function_steps_most(monkeypatch):
+    """r147 #8: one coefficient read off (−4.5 px²); r343 P2: its ×256² in units² tested a
+    unit conversion. Now the three steps right, −(v_b − v_a) each, compared: E31's +12.75 px²
+    (the held cell reads all three off the values at the centres); the slips get notes."""
     from teachraster.widgets import Predict
 
     ns = lesson("02_half_planes")
-    assert ns.step_units == ns.step_right == -294_912 == ns.step_px * 256**2
-    assert ns.v1_units == (576, 448) and ns.v2_units == (3712, 1600)
+    assert ns.steps_px == ns.read_off == {"E12": -4.5, "E23": -8.25, "E31": 12.75}
+    assert ns.fastest == "E31" and ns.step_right == -4.5 * 256**2  # E12, stepped in units²
     seen = seen_before_check("02_half_planes", "q_step = Predict(", "q_step")
-    for given in ("294912", "294,912", "-(y2 - y1) * s", "−4.5", "-4.5"):
+    for given in ("12.75", "−8.25", "-8.25", "-(y2 - y1) * s"):
         assert given not in seen, given
-    # the stem's numbers, Check, the answer and the notes for the two near slips
     monkeypatch.setenv("TEACHRASTER_HEADLESS", "0")
     cell = _source(_cells("02_half_planes")[_ask_index(_cells("02_half_planes"), "q_step =")])
-    # review r231 02-12: typed as the lesson prints it, "-294,912" is the answer (a comma
-    # between groups of three digits separates thousands), not -294.912
-    for typed, right, note in (("-294912", True, None), ("-1152", False, "one unit"),
-                               ("-4.5", False, "in px²"), ("-294.912", False, None),
-                               ("-294,912", True, None), ("−294,912", True, None),
-                               ("-1,152", False, "one unit")):  # fmt: skip
-        scope = {"np": np, "Predict": Predict, "v1": ns.v1, "v2": ns.v2}
+    for typed, right, note in (("12.75", True, None), ("+12.75", True, None),
+                               ("-4.5", False, "E12's step"), ("-8.25", False, "E23's step"),
+                               ("-12.75", False, "wrong sign"), ("12.25", False, "down"),
+                               ("-294912", False, None)):  # fmt: skip
+        scope = {"np": np, "Predict": Predict, "v1": ns.v1, "v2": ns.v2, "v3": ns.v3}
         exec(cell, scope)
         q = scope["q_step"]
-        assert "(576, 448) units" in q.question and "(3712, 1600) units" in q.question
+        assert "v3 = (5.75, 14.5)" in q.question and "units" not in q.question
         assert q.check.disabled
         q.control.value = typed
         q.check.click()

@@ -471,7 +471,7 @@ def test_probe_gives_the_edge_functions_and_is_dragged_like_a_vertex():
         assert e.probe.tolist() == [0.5, 0.5] and "outside" in e.info.value
         # review r169 02-8: the point with 2 decimals, as the values (a drag leaves 1/256 px)
         e._on_page_move(3, 2.98828125, 8.05859375, True)
-        assert "at the marked point (2.99, 8.06):" in e.info.value
+        assert "at the cross (2.99, 8.06):" in e.info.value
         e._on_page_move(3, 0.5, 0.5, True)
         assert e.probe_marker.get_xydata().tolist() == [[0.5, 0.5]]
         assert e.view.header.get_text() == "Span tables"  # a finished fill: no step count

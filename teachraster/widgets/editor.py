@@ -485,15 +485,15 @@ class TriangleEditor(Holdable):
         elif (e > 0).all():
             verdict = "all positive: inside (clockwise on screen)"
         elif (e < 0).all():  # the package tests the edges walked backwards, E21 = −E12 ...
-            verdict = ("all negative: inside (counter-clockwise: the fill tests E21, E32, "
-                       "E13, their negatives)")  # fmt: skip
+            # short: the readout wrapped to one more line and the figure jumped (r343)
+            verdict = "all negative: inside (counter-clockwise: tested as E21, E32, E13)"
         elif zeros and ((e >= 0).all() or (e <= 0).all()):
             verdict = ("one is 0: on an edge (the top-left rule decides)" if zeros == 1 else
                        "two are 0: on a vertex (covered only if both edges are top or left)")  # fmt: skip
         else:
             verdict = "signs differ: outside"
         # 2 decimals, as the values: a dragged cross is at 1/256 px, "(2.98828, 8.05859)"
-        return f"at the marked point ({x:.2f}, {y:.2f}): {values} · {verdict}"
+        return f"at the cross ({x:.2f}, {y:.2f}): {values} · {verdict}"
 
     # -- mouse dragging (ipympl) ------------------------------------------------------------
     def _on_press(self, event) -> None:

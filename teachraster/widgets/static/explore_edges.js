@@ -425,12 +425,21 @@ export function signsShown(setup, row, col, hover = null, quiet = []) {
 // Also quiet: a centre on the shared edge's line a pixel beyond one of its ends, whose "0"
 // stood beside the end's ring and owner's letter ("+0−" left of v3 with v2 and v3 on one row,
 // review r328 02-FIG1).
+// And quiet: the four centres beside an end of the shared edge that sits on a centre, its
+// ring's: the name of the vertex needs a place clear of the ring, and each of those places
+// held a centre's three signs ("v3" stood on its ring by the owner's letter, review r343
+// 02-FIG1).
 export const QUIET_NEAR = 0.75;
+const SIDES = [[-1, 0], [1, 0], [0, -1], [0, 1]];
 export function quietCentres(scene, vertices) {
   const quiet = scene.shared.map(({ row, col }) => [row, col]);
   const [p, q] = [vertices[1], vertices[2]];
+  for (const [x, y] of [p, q]) {
+    const ringed = scene.shared.some(({ row, col }) => col + 0.5 === x && row + 0.5 === y);
+    if (ringed) for (const [dr, dc] of SIDES) quiet.push([Math.floor(y) + dr, Math.floor(x) + dc]);
+  }
   for (const end of [p, q]) {
-    for (const [dr, dc] of [[-1, 0], [1, 0], [0, -1], [0, 1]]) {
+    for (const [dr, dc] of SIDES) {
       const [x, y] = [end[0] + dc, end[1] + dr];
       const centre = Number.isInteger(x - 0.5) && Number.isInteger(y - 0.5);
       const along = (x - p[0]) * (q[0] - p[0]) + (y - p[1]) * (q[1] - p[1]);
@@ -623,8 +632,9 @@ const overlaps = (a, b) => a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a
 // no ring (`rings`, [cx, cy, r]), no box of `boxes` (the owners' letters, the shown signs, the
 // other dots and names) and stays inside `bounds` ([x0, y0, x1, y1], the grid); failing
 // that, the one next to the dot touching fewest. With v2 and v3 on one row, "v3" stood on
-// its ring, beside the B letter (review r328 02-FIG1).
-export function vertexNameAt(p, half, cell, bounds, rings, boxes) {
+// its ring, beside the B letter (review r328 02-FIG1). A drawn edge (`segments`, [[x, y],
+// [x, y]] px) through the box counts as a ring does ("v3" on the dashed edge to v4, r343).
+export function vertexNameAt(p, half, cell, bounds, rings, boxes, segments = []) {
   // above right first (where the names stood), then the other diagonals, the sides, and
   // the directions between them
   const dirs = [[1, -1], [-1, -1], [1, 1], [-1, 1], [1, 0], [-1, 0], [0, -1], [0, 1],
@@ -642,7 +652,8 @@ export function vertexNameAt(p, half, cell, bounds, rings, boxes) {
       if (out) continue;
       // a ring's thin line hides less than a letter or a sign
       const hits = rings.filter((r) => boxOnRing(box, r)).length +
-        3 * boxes.filter((b) => overlaps(box, b)).length;
+        3 * boxes.filter((b) => overlaps(box, b)).length +
+        segments.filter(([s, e]) => segmentCrossesBox(s, e, box)).length;
       if (hits === 0) return at;
       // failing a free place, one next to the dot: a name far off reads as another's
       if (d === 8 && hits < fewest) [best, fewest] = [at, hits];
@@ -681,7 +692,7 @@ function vertexNames(ctx, scene, setup, state, toPx, W, H, cell, m, quiet) {
   const size = textPx(ctx, 17);
   const at = v.map((p, i) => {
     const half = [ctx.measureText(`v${i + 1}`).width / 2 + 2, size * 0.55];
-    const c = vertexNameAt(p, half, cell, grid, rings, boxes);
+    const c = vertexNameAt(p, half, cell, grid, rings, boxes, edgeSegments(v));
     const box = [c[0] - half[0], c[1] - half[1], c[0] + half[0], c[1] + half[1]];
     boxes.push(box);
     return { at: c, box };
@@ -702,6 +713,7 @@ function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = [], names = []) {
   const signs = signCentres(setup, state, toPx, W, H, quiet);
   const reach = signReach(cell);
   const grid = [...toPx([0, 0]), ...toPx([W, H])]; // inside the grid's frame, not on it
+  const segments = edgeSegments(state.vertices.map(toPx)); // no label across a line
   ctx.save();
   ctx.font = `bold ${size}px sans-serif`;
   ctx.textAlign = "center";
@@ -712,7 +724,7 @@ function drawEdgeLabels(ctx, setup, state, toPx, W, H, quiet = [], names = []) {
     // B's edges named too (review r93 02-5: "left, bias 0" beside A's "E12: right, bias −1")
     const text = `${walkedName(e)}: ${e.kind}, bias ${e.bias < 0 ? "−1" : "0"}`;
     const half = [ctx.measureText(text).width / 2 + 3, (size + 3) / 2];
-    const at = placeLabel(a, b, centroid, half, cell, grid, signs, reach, names);
+    const at = placeLabel(a, b, centroid, half, cell, grid, signs, reach, names, segments);
     ctx.fillStyle = "rgba(255,255,255,0.85)";
     ctx.fillRect(at[0] - half[0], at[1] - half[1], 2 * half[0], 2 * half[1]);
     ctx.fillStyle = EDGE_HUES[k];
@@ -770,13 +782,45 @@ export function labelCentre(a, b, centroid, half, cell, bounds, covers = null) {
 }
 
 // labelCentre with the centres whose signs are drawn, `signs` (px), each reaching `reach`
-// (half-sizes, px) from its centre: the label box hides as few of them as it can, and of the
-// boxes `boxes` ([x0, y0, x1, y1], px: the vertices' names)
-export function placeLabel(a, b, centroid, half, cell, bounds, signs, reach, boxes = []) {
-  const covers = (p) => signs.filter((q) => Math.abs(p[0] - q[0]) < half[0] + reach[0] &&
-    Math.abs(p[1] - q[1]) < half[1] + reach[1]).length +
-    boxes.filter((b) => overlaps([p[0] - half[0], p[1] - half[1], p[0] + half[0], p[1] + half[1]], b)).length;
-  return labelCentre(a, b, centroid, half, cell, bounds, signs.length || boxes.length ? covers : null);
+// (half-sizes, px) from its centre: the label box hides as few of them as it can, of the
+// boxes `boxes` ([x0, y0, x1, y1], px: the vertices' names) and of the drawn edges
+// `segments` ([[x, y], [x, y]], px: a label across a line, review r343 02-FIG1)
+export function placeLabel(a, b, centroid, half, cell, bounds, signs, reach, boxes = [],
+  segments = []) {
+  const covers = (p) => {
+    const box = [p[0] - half[0], p[1] - half[1], p[0] + half[0], p[1] + half[1]];
+    return signs.filter((q) => Math.abs(p[0] - q[0]) < half[0] + reach[0] &&
+      Math.abs(p[1] - q[1]) < half[1] + reach[1]).length +
+      boxes.filter((o) => overlaps(box, o)).length +
+      segments.filter(([s, e]) => segmentCrossesBox(s, e, box)).length;
+  };
+  const any = signs.length || boxes.length || segments.length;
+  return labelCentre(a, b, centroid, half, cell, bounds, any ? covers : null);
+}
+
+// the drawn edges of both triangles (A = v1 v2 v3, B = v3 v2 v4; v2-v3 once), from the
+// vertices `v` (px)
+export function edgeSegments(v) {
+  return [[0, 1], [1, 2], [2, 0], [2, 3], [3, 1]].map(([i, j]) => [v[i], v[j]]);
+}
+
+// Does the segment s -> e (px) pass through the box [x0, y0, x1, y1]? (Liang-Barsky)
+export function segmentCrossesBox(s, e, box) {
+  const d = [e[0] - s[0], e[1] - s[1]];
+  let [t0, t1] = [0, 1];
+  const sides = [[-d[0], s[0] - box[0]], [d[0], box[2] - s[0]], [-d[1], s[1] - box[1]],
+    [d[1], box[3] - s[1]]];
+  for (const [p, q] of sides) {
+    if (p === 0) {
+      if (q < 0) return false; // parallel to this side, outside it
+      continue;
+    }
+    const r = q / p;
+    if (p < 0) t0 = Math.max(t0, r);
+    else t1 = Math.min(t1, r);
+    if (t0 > t1) return false;
+  }
+  return true;
 }
 
 // The name of the edge a triangle is tested on: a counter-clockwise triangle is walked
