@@ -134,3 +134,19 @@ def test_q_smooth_pixel_square_and_reveal_clear_of_the_outline(ns):
                 x, y = a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])
                 assert not (box["x0"] <= x <= box["x1"] and box["y0"] <= y <= box["y1"]), box
     q.close()
+
+
+def test_attribute_plot_and_llvmpipe_wide_line(ns):
+    """S6: §6 plots f against q (the figure fits the column). S7 (r280 S6): llvmpipe's own
+    4 px line is measured against the parallelogram panel: equal, as the table says."""
+    from notebook_runs import executed
+
+    (fig,) = [f for f in executed("12a_lines").probe["figures"]
+              if f["titles"] == ["f along the line, far end at w = 4"]]  # fmt: skip
+    assert round(fig["width"]) <= 940
+    assert "then plots them against $q$" in _flat("perspmd")
+    assert "(none where measured)" in _flat("widetbl")
+    if not ns.wide_gl_ok:
+        pytest.skip("no OpenGL context: llvmpipe's wide line not measured")
+    assert int(ns.llvm_wide.sum()) == int(ns.gl_shape.sum()) == 40
+    assert not (ns.llvm_wide != ns.gl_shape).any()
