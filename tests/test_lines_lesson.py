@@ -432,15 +432,17 @@ def test_tie_table_says_what_the_cell_computes(ns):
         ours, gl, d3d = (r[0] for r in ns.tie_rows[name])
         # the two candidates: row y - 1 above the corner (y down), row y below it
         said = [y - 1 if "upper" in c else y if "lower" in c else None for c in cells[1:]]
-        # review r160 12a-2: Vulkan's column, its rule the y-down one teachraster computes
-        assert said == [gl, ns.vk_rows[name][0], d3d, ours] and ns.vk_rows[name] == [ours], name
+        # review r160 12a-2: Vulkan's column, its rule the y-down one teachraster computes;
+        # r345 M1: llvmpipe's column (the fourth) is checked in test_lines_r345 against GL
+        assert said[:3] + said[4:] == [gl, ns.vk_rows[name][0], d3d, ours], name
+        assert ns.vk_rows[name] == [ours], name
     # review r111 12a-1: the y-major tie, at x = 1 in row 1, between columns 0 and 1; Direct3D's
     # y-major diamond keeps its right corner (D3D11.3 §3.4.3), so all three light column 0
     steep = [r.split("|")[1:-1] for r in text.splitlines() if r.startswith("| y-major")]
     assert len(steep) == 1
     said = [0 if "left" in c else 1 if "right" in c else None for c in steep[0][1:]]
     ours, gl, d3d = (c[0] for c in ns.steep_cols)
-    assert said == [gl, ns.steep_vk[0], d3d, ours] == [0, 0, 0, 0]
+    assert said[:3] + said[4:] == [gl, ns.steep_vk[0], d3d, ours] == [0, 0, 0, 0]
 
 
 def test_explorer_count_beside_section_2s(nsb):
