@@ -121,6 +121,8 @@ def test_s1_s2_s3_s4_words():
     # r335 P1: the affine errors at the centres (and that they are below the view's gap)
     # wait for q_worst; the held cell says what they are over
     assert "wait for section 5's question" in check and "smaller" not in check
+    # r349 S1: the numbers are in the third held cell after q_worst, not the next one
+    assert "the third held cell after that question prints them" in check
     assert (
         "over the\n# covered pixel centres only, not over the whole triangle"
         in cells["c12-held-errors"]
@@ -162,3 +164,19 @@ def test_r342_m2_s2_s3_s4_words():
     assert "moves the lookup" not in floor and "for the reason the answer above gives" in floor
     assert "lookup √2 times as far" in cells["q-diagonal"]  # the answer keeps it
     assert "is painted on the figure, not rendered" in _flat(cells["c15-horizon"])
+
+
+def test_r349_s4_the_two_sides_added_get_their_note():
+    """r349 S4: 53.4 (the two sides' errors added) got no note in q_diagonal; it now says why
+    the errors add like the sides of a square."""
+    import re
+
+    text = json.loads(
+        (
+            Path(__file__).resolve().parents[1]
+            / "notebooks"
+            / "04_perspective_correct_interpolation.ipynb"
+        ).read_text()
+    )["cells"]
+    q = next("".join(c["source"]) for c in text if "q_diagonal = Predict(" in "".join(c["source"]))
+    assert re.search(r"round\(2 \* side, 1\): \"That is the two sides' errors added", q)
