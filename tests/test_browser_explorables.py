@@ -166,6 +166,10 @@ def test_cracks_reroll_and_tally(lesson):
     w = _widget(lesson, "cracks")
     # the default's first pair: the float DDA gives three ties to the wrong triangle
     w.get_by_text("1 (100.0 %), 3 px").first.wait_for(timeout=5_000)
+    # r344 01-FIG1: the key paragraph at the panels' 16 px, not small grey text
+    key = w.locator(".tr-x-sub").first
+    assert key.evaluate("e => getComputedStyle(e).fontSize") == "16px"
+    assert key.evaluate("e => getComputedStyle(e).color") == "rgb(17, 17, 17)"
     w.get_by_role("button", name="Reroll").click()
     w.get_by_text("of 2 (").first.wait_for(timeout=5_000)  # the tally counts two pairs
     w.get_by_role("button", name="Roll 1000 more").click()

@@ -41,9 +41,10 @@ def test_c1_the_package_divides_hardware_does_not():
     why = _source("5997d157")
     shown = re.sub(r"<details>.*?</details>", "", why)
     assert "The package, like hardware, decides coverage" not in why
-    assert "one **integer floor division** of it" in shown
-    assert "`edge_bounds` in `core/span_tables.py`" in shown
-    assert "Hardware decides coverage with edge functions instead (lesson 02): no divider" in shown
+    assert "one **integer floor division**" in shown
+    # r344 S3: the package's internals (`edge_bounds` in `core/span_tables.py`) left out
+    assert "`edge_bounds`" not in shown
+    assert "Hardware uses edge functions instead (lesson 02): no divider" in shown
     code = (ROOT / "teachraster" / "core" / "span_tables.py").read_text()
     assert "def edge_bounds(" in code and "q = (K - bias) // np.abs(safe)" in code
     lesson06 = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -136,3 +137,11 @@ def test_s3_s5_reading_load():
     assert c14.count("<details>") == 1
     shown = re.sub(r"<details>.*?</details>", "", c14)
     assert len(shown.split()) < 110 and "- **snap**" not in shown
+
+
+def test_r344_s4_the_prose_shrank():
+    """Review r344 S4 (r303 S2): 5,583 Markdown words, cells of 469 (Summary), 460 (4b's
+    reading), 450 (the integer DDA) and 399 (the crack explorer's guide). Cut, not grown."""
+    nb = json.loads((ROOT / "notebooks" / "01_span_tables.ipynb").read_text())
+    sizes = [len("".join(c["source"]).split()) for c in nb["cells"] if c["cell_type"] == "markdown"]
+    assert sum(sizes) <= 5400 and max(sizes) <= 410, (sum(sizes), max(sizes))

@@ -943,7 +943,9 @@ def test_01_exact_stepping_is_not_one_addition():
     assert "makes the loop one addition per edge and line" not in text
     assert "in fixed point (quotient and remainder) on none" not in text
     assert "two additions and a compare per edge and line" in text
-    assert "two and a compare with the crossing kept exactly as a quotient and a remainder" in text
+    assert (
+        "An **integer DDA** (quotient and remainder, Hecker's) fills a wrong pixel on none" in text
+    )
     # the loop does what the text counts: per edge and line q += dq, r += dr, one compare
     fixed = next("".join(c["source"]) for c in every
                  if "def span_fill_int_dda(" in "".join(c["source"]))  # fmt: skip
@@ -1120,9 +1122,9 @@ def test_01_predictions_and_the_stepping_failure_rates():
                      if "q_fail = PredictPoint(" in "".join(c["source"]))  # fmt: skip
     assert "wherever" not in fail_cell
     assert "lands a hair off {tie_missed} of the {n_ties} ties on such edges" in fail_cell
-    assert "nearly always lands a hair to one side of it (not always" in told
+    assert "nearly always lands a hair to one side (not always" in told
     assert "The float stepping is wrong on a large share" not in told
-    assert "misfills about as many" in told
+    assert "and 16.16 fixed point about as many" in told
     held_figure = next(c for c in nb["cells"] if "exact_T = " in "".join(c["source"]))
     assert "".join(held_figure["source"]).startswith("q_fail.hold()")
     # review r142 01-13: the float failure rate is predicted before it is printed; the
@@ -1412,14 +1414,36 @@ def test_01_r239_arrows_show_the_walk_the_text_names():
     sentence under the first step view; one sentence in section 1 reads the caption's "walked"."""
     ns = lesson("01_span_tables")
     assert ns.trace.turn == "counter-clockwise"
-    assert "walked v1→v3→v2 instead" in ns.trace.caption(1)  # printed in section 1
+    # r344 C1: span tables walk nothing, so the caption names no walk, and the arrowheads
+    # run down every edge (tests/test_setup_marks.py); the held text says so, by name
+    assert "walked" not in ns.trace.caption(1)  # printed in section 1
     sort_text = _markdown_of("01_span_tables", "c02")
     assert "<details>" not in sort_text and "arrowhead" not in sort_text
-    assert "the span loop has no walk: it runs down every edge, top to bottom" in sort_text
+    assert "it runs down every edge, top to bottom" in sort_text and "walk" not in sort_text
+    held = " ".join(ns.TABLE_TEXT.split())
+    assert ("arrowheads point the way the loop runs down each edge, top to bottom: the long "
+            "edge v3→v1 on one side, v3→v2→v1 on the other") in held  # fmt: skip
+    assert "show the winding" not in held and "they show no winding" in held
+    # r344 P: the estimate q_fail asks for is computed in the held cell, not in the question's
+    ask = next(c for c in _notebook_cells("01_span_tables") if "q_fail = PredictPoint(" in
+               "".join(c["source"]))  # fmt: skip
+    assert "guess" not in "".join(ask["source"]) and 'readout="{} triangles"' in "".join(
+        ask["source"]
+    )
+    assert round(ns.guess) == 59
+    # r344 S5: the misses start at 2^20 (none below 2^19, twice the bound), as printed
+    first_miss = min(k for k, (_, n) in ns.built.items() if n)
+    assert first_miss == 20 and ns.built[19][1] == 0 and ns.bound == 2**18
+    told = " ".join(_markdown_of("01_span_tables", "5997d157").split())
+    assert (
+        "None is missed below $2^{19}$ px, twice the bound; the misses start below $2^{20}$" in told
+    )
+    # r344 M1: the colour's prestep along the row, named and measured
+    assert ns.c_no_prestep > 0.01 and f"{ns.c_no_prestep:.3f}" == "0.019"
     # r296 W1: span tables draw the arrowheads again (lesson 00's winding Try-it needs them);
     # one sentence where the first step view is shown says what they show
     table = " ".join(ns.TABLE_TEXT.split())
-    assert table.count("arrowhead") == 1 and "which decides facing and culling" in table
+    assert table.count("arrowhead") == 1 and "which only decides facing and culling" in table
     assert "edge_walk" not in _notebook_cells("01_span_tables")[3]
     cells = _notebook_cells("01_span_tables")
     texts = ["".join(c["source"]) for c in cells]

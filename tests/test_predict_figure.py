@@ -236,9 +236,14 @@ def test_a_point_marker_can_read_out_the_code_it_sits_on():
     plain = PredictPoint("Code?", **codes, step=1)
     plain.given = (186, 0.5)
     assert plain.data["readout"] is None and "predicted" not in plain.verdict()
+    # r344 01-S1: "{} triangles" reads "60 triangles", not "triangles 60"
+    count = PredictPoint("How many?", **codes, step=1, readout="{} triangles")
+    count.given = (60, 0.5)
+    assert count.readout() == "60 triangles"
     got = call_js(("predict_figure",), [("readoutText", ["code", 186.0, 0]),
-                                        ("readoutText", ["x", 1.25, 2])])  # fmt: skip
-    assert got == [p.readout(), fine.readout()]
+                                        ("readoutText", ["x", 1.25, 2]),
+                                        ("readoutText", ["{} triangles", 60.0, 0])])  # fmt: skip
+    assert got == [p.readout(), fine.readout(), count.readout()]
 
 
 @pytest.mark.parametrize(

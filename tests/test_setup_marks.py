@@ -24,6 +24,7 @@ import teachraster as tr  # noqa: E402
 from teachraster.core.trace import ROLES  # noqa: E402
 from teachraster.plotting import FillView, use_style  # noqa: E402
 from teachraster.plotting.frames import frame_rgba  # noqa: E402
+from teachraster.plotting.views import drawn_edges  # noqa: E402
 
 #: Lesson 01's triangle, listed counter-clockwise on screen (review r229 01-S3), and the same
 #: triangle the other way round.
@@ -119,11 +120,12 @@ def test_the_long_edges_arrow_is_off_point_4(player):
     point_4 = np.array([span.u4, span.sorted_xy[1, 1]])
     xy = view.trace.snapped
     long_edge = {int(span.order[0]), int(span.order[2])}
-    k = next(i for i, (a, b) in enumerate(view.trace.edges) if {int(a), int(b)} == long_edge)
+    edges = drawn_edges(view.trace)
+    k = next(i for i, (a, b) in enumerate(edges) if {int(a), int(b)} == long_edge)
     arrow = np.array(view.triangle.arrows[k]._posA_posB)  # tail, head (data units)
     assert np.hypot(*(arrow - point_4).T).min() > 2.5
     # still on the edge, pointing along it
-    a, b = xy[view.trace.edges[k]]
+    a, b = xy[edges[k]]
     for p in arrow:
         assert abs((b - a)[0] * (p - a)[1] - (b - a)[1] * (p - a)[0]) < 1e-9
     assert np.dot(arrow[1] - arrow[0], b - a) > 0
@@ -209,30 +211,40 @@ def test_the_snap_step_keys_how_far_a_vertex_moved():
 
 
 @pytest.mark.parametrize("xy", [CCW, CW], ids=["ccw", "cw"])
-def test_the_edges_arrows_show_the_walk_once_the_winding_has_chosen_it(xy):
+@pytest.mark.parametrize("method", ["span", "halfplane"])
+def test_the_edges_arrows_show_the_walk_once_the_winding_has_chosen_it(xy, method):
     """r239 01-C1: at the winding step the arc, labelled v1→v2→v3 counter-clockwise, stood
     over arrowheads turning the other way (the package walks a counter-clockwise triangle
-    v1→v3→v2). The arrowheads, read from trace.edges, show from the step after the winding
-    on, keyed with the walk at the set-up steps."""
+    v1→v3→v2). Half-planes: the arrowheads, read from trace.edges, show from the step after
+    the winding on, keyed with the walk at the set-up steps. r344 01-C1: span tables walk
+    nothing; their arrowheads run down every edge, top to bottom, from the sort on."""
     with plt.style.context("default"):
         use_style("classroom")
-        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method="span", trace=True)
+        fill = tr.rasterize(tr.Triangle(xy), 20, 20, method=method, trace=True)
         view = FillView(fill, step=0)
         try:
             trace = fill.trace
             walk = "→".join(f"v{a + 1}" for a, _ in trace.edges)
             assert walk == ("v1→v3→v2" if xy is CCW else "v1→v2→v3")
+            span = method == "span"
+            first = trace.sort_step if span else 2
+            entry = "each edge, top to bottom" if span else f"edges walked {walk}"
+            assert ("walked" in trace.caption(1)) == (not span and xy is CCW)
             for k in range(len(trace)):
                 view.show_step(k, draw=False)
                 shown = [a.get_visible() for a in view.triangle.arrows]
-                assert shown == [k > 1] * 3, k
+                assert shown == [k >= first] * 3, k
                 setup = k < trace.first_work_step
-                assert (f"edges walked {walk}" in keyed(view)) == (setup and k > 1), k
-            # each arrow points along its edge of the trace, in the trace's direction
+                assert (entry in keyed(view)) == (setup and k >= first), k
+            # each arrow points along its edge: the trace's walk, or down (v grows) for spans
             xy_s = trace.snapped
-            for arrow, (a, b) in zip(view.triangle.arrows, trace.edges):
+            edges = drawn_edges(trace)
+            assert np.array_equal(edges, trace.edges) != span
+            for arrow, (a, b) in zip(view.triangle.arrows, edges):
                 tail, head = np.array(arrow._posA_posB)
                 assert np.dot(head - tail, xy_s[b] - xy_s[a]) > 0
+                if span:
+                    assert head[1] > tail[1]
         finally:
             plt.close(view.fig)
 

@@ -451,6 +451,10 @@ class FillTrace:
             turn = f"signed area {area:g} px²: "
             if area > 0:
                 turn += f"{self.turn} on screen (back-facing)"
+            elif self.span is not None:
+                # span tables step every edge top to bottom: no walk to name (review r344
+                # 01-C1: "walked v1→v3→v2" beside a loop that walks nothing)
+                turn += f"{self.turn} on screen (front-facing)"
             else:
                 walk = "→".join(f"v{a + 1}" for a in self.edges[:, 0])
                 turn += f"{self.turn} on screen (front-facing); walked {walk} instead, so "

@@ -65,6 +65,9 @@ DOT_SHARE, RING_SHARE = 0.8, 0.6
 #: are farther apart than the gap, which two neighbouring pixels' samples set, and the white
 #: halo keeps two dots apart where they nearly touch (review r37, lesson 00: 7 px at 4 samples).
 BOLD_SHARE = 0.9
+#: Bold dots take their gap as this quantile of the samples' closest-neighbour distances
+#: (the same for the regular patterns; a jittered one has a few very close pairs).
+BOLD_GAP = 0.25
 #: With ``plot_samples(bold=True)`` (the fill player): covered samples filled in the
 #: palette's "tests passed" blue, uncovered ones hollow in its "tests failed" vermillion (a
 #: colour-blind-safe pair, neither on the value map's blue-to-yellow), untested ones hollow
@@ -115,7 +118,10 @@ class SampleArtists(Artists):
         """Show another multisampled fill or frame (any size and pattern)."""
         self._ids, self._offsets = sample_data(source)
         self._tested = None  # a new fill: every sample's result on show until set_tested
-        self._gap = _sample_gap(self.covered.axes, self._offsets)
+        # bold dots (the player's) size by a typical sample's closest neighbour, not the
+        # closest pair: 16 jittered samples set a pair 0.03 px apart, dots about 3 px across
+        # (review r344 01-FIG1); the white halos keep the few closer pairs apart
+        self._gap = _sample_gap(self.covered.axes, self._offsets, BOLD_GAP if self.bold else 0.0)
         self._place()
         if self.fraction is not None:
             self.fraction.update((self._ids >= 0).mean(axis=2))
@@ -189,15 +195,17 @@ class SampleArtists(Artists):
             self.covered.set_path_effects([])
 
 
-def _sample_gap(ax, offsets) -> float:
-    """The closest two samples' distance (in a pixel or across a pixel side), in points at
-    ``ax``'s magnification; inf for one sample a pixel."""
+def _sample_gap(ax, offsets, quantile: float = 0.0) -> float:
+    """The distance of a sample to its closest neighbour (in its pixel or across a pixel
+    side), in points at ``ax``'s magnification: the smallest over the pattern, or that
+    ``quantile`` of the samples' distances; inf for one sample a pixel."""
     if len(offsets) < 2:
         return float("inf")
-    shifts = np.array([[0, 0], [1, 0], [0, 1], [1, 1], [-1, 1]], dtype=float)
+    shifts = np.array([[i, j] for i in (-1, 0, 1) for j in (-1, 0, 1)], dtype=float)
     pts = (offsets[None, :, :] + shifts[:, None, :]).reshape(-1, 2)
     gaps = np.hypot(*(offsets[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
-    gap = float(gaps[gaps > 1e-9].min())  # data units (pixels)
+    gaps[gaps <= 1e-9] = np.inf  # the sample itself
+    gap = float(np.quantile(gaps.min(axis=1), quantile))  # data units (pixels)
     (x0, x1), bbox = ax.get_xlim(), ax.get_window_extent()
     pt_per_px = bbox.width / abs(x1 - x0) * 72.0 / ax.figure.dpi
     return gap * pt_per_px

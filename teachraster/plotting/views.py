@@ -137,9 +137,25 @@ ROLES_ENTRY = ("role after the sort", COLORS["split"], COLORS["split"], r"$\math
 def walk_entry(trace: FillTrace) -> tuple:
     """The key's line for the edges' arrowheads: the walk the winding step chose, the
     trace's edges in their order (v1→v3→v2 for a triangle given counter-clockwise on
-    screen, review r239 01-C1)."""
+    screen, review r239 01-C1); for span tables, which walk nothing, the way the loop runs
+    down each edge (:func:`drawn_edges`)."""
+    if trace.span is not None:
+        return ("each edge, top to bottom", COLORS["edge"], COLORS["edge"], r"$\rightarrow$")
     walk = "→".join(f"v{int(a) + 1}" for a, _ in trace.edges)
     return (f"edges walked {walk}", COLORS["edge"], COLORS["edge"], r"$\rightarrow$")
+
+
+def drawn_edges(trace: FillTrace) -> np.ndarray:
+    """(3, 2) int: the edges as the arrowheads point. Span tables run down every edge, the
+    long one and the short one of each part, top to bottom: the arrows a walk round the
+    triangle drew (v1→v3→v2, clockwise on screen) read as its winding, which the text calls
+    counter-clockwise (review r344 01-C1). The other methods: the walk the winding step
+    chose (``trace.edges``), whose edge functions they test."""
+    s = trace.span
+    if s is None:
+        return trace.edges
+    top, mid, bot = (int(i) for i in s.order)
+    return np.array([[top, bot], [top, mid], [mid, bot]])
 
 
 def _snap_entries(trace: FillTrace) -> list:
@@ -181,7 +197,7 @@ def _arrow_off_point_4(triangle: TriangleArtists, trace: FillTrace) -> None:
         return
     xy = np.asarray(trace.snapped, dtype=np.float64)
     long_edge = {int(s.order[0]), int(s.order[2])}
-    for arrow, (a, b) in zip(triangle.arrows, trace.edges):
+    for arrow, (a, b) in zip(triangle.arrows, drawn_edges(trace)):
         if {int(a), int(b)} != long_edge:
             continue
         pa, pb = xy[a], xy[b]
@@ -285,7 +301,10 @@ class FillView:
         self.bbox = plot_bbox(ax, trace)
         self.split = plot_split(ax, trace)
         self.centres = plot_pixel_centres(ax, W, H) if centres else None
-        self.triangle = plot_triangle(ax, trace, edge_labels=True, inside=True)  # the key beside
+        # inside: the key sits beside the Axes
+        self.triangle = plot_triangle(
+            ax, trace, edges=drawn_edges(trace), edge_labels=True, inside=True
+        )
         if centres:  # the edge names between the centre dots, not over them (review r291 02-3)
             u, v = np.meshgrid(np.arange(W) + 0.5, np.arange(H) + 0.5)
             self.triangle.keep_clear = np.column_stack([u.ravel(), v.ravel()])
@@ -441,8 +460,12 @@ class FillView:
                        step.kind if setup and self.legend is not None else False, last)  # fmt: skip
         # the edges' arrowheads show the walk the winding step chooses (trace.edges: a
         # counter-clockwise triangle is walked the other way round): none before it, and
-        # none at it, where they turned against its arc labelled v1→v2→v3 (review r239 01-C1)
-        walked = k > trace.setup_kinds.index("winding")
+        # none at it, where they turned against its arc labelled v1→v2→v3 (review r239 01-C1).
+        # Span tables: each edge top to bottom, from the sort on, which finds the top
+        if trace.span is not None:
+            walked = k >= trace.sort_step
+        else:
+            walked = k > trace.setup_kinds.index("winding")
         for arrow in self.triangle.arrows:
             arrow.set_visible(walked)
         self._still += (walked,)
@@ -525,7 +548,7 @@ class FillView:
         if trace.halfplane is None and trace.blocks is None:
             self.rejected.set_visible(False)
         self.raster_line.width = W
-        self.triangle.update(trace)
+        self.triangle.update(trace, drawn_edges(trace))
         self._lift_middle_label(trace)
         _arrow_off_point_4(self.triangle, trace)
         self.setup_marks.update(trace, self.triangle.labels)
@@ -731,7 +754,7 @@ class FillView:
         c, entries = COLORS, []
         if kind == "snap":  # review r239 01-W1: the snap's step drew and keyed nothing
             entries += _snap_entries(trace)
-        elif kind != "winding" and self.triangle.arrows:  # the walk chosen: the arrowheads
+        elif self.triangle.arrows and self.triangle.arrows[0].get_visible():  # the arrowheads
             entries.append(walk_entry(trace))
         if kind == "winding" and trace.turn is not None:
             arrow = r"$\circlearrowright$" if trace.turn == "clockwise" else r"$\circlearrowleft$"

@@ -466,7 +466,8 @@ class PredictPoint(FigurePrediction):
         1 on an axis of integer codes. Default: a hundredth of the smaller Axes span.
     readout : str, optional
         Label a live readout of the marker's x while it moves, e.g. "code": the figure shows
-        "code 186" beside the marker (to ``step``'s decimals) and the verdict repeats it.
+        "code 186" beside the marker (to ``step``'s decimals) and the verdict repeats it. A
+        label with "{}" puts the number there: "{} triangles" reads "60 triangles".
         Default: no readout (where reading the answer off the marker would give it away).
     ray_from : (2,) array-like, optional
         The reveal also draws the ray from this point through the answer (the eye ray that
@@ -593,7 +594,9 @@ class PredictPoint(FigurePrediction):
         """The page's live readout of the marker's x ("code 186"), None without one."""
         if self.data["readout"] is None or self.given is None:
             return None
-        return f"{self.data['readout']} {self.given[0]:.{self.data['readoutDigits']}f}"
+        label, n = self.data["readout"], f"{self.given[0]:.{self.data['readoutDigits']}f}"
+        # "{} triangles" places the number (review r344 01-S1: "triangles 60"), as the page does
+        return label.replace("{}", n, 1) if "{}" in label else f"{label} {n}"
 
     def verdict(self) -> str:
         word = "Right." if self.correct else "Not quite."

@@ -213,6 +213,8 @@ function mount(el, data, host) {
     "unlike the integer fill. Reroll for a new pair; the tally counts every random pair drawn " +
     "(not the stored pair that cracks) and starts again when the way the edges are " +
     "evaluated, or the grid, changes.");
+  // the key at the panels' text size, not the grey subtitle's 14 px (review r344 01-FIG1)
+  Object.assign(root.querySelector(".tr-x-sub").style, { fontSize: `${TEXT_PX}px`, color: "#111" });
   // the grid the panels draw: W x H, or the stored pair's box (shownGrid)
   const shown = () => shownGrid(W, H, state.stored);
   let g = panelLayout(...shown());

@@ -125,9 +125,11 @@ export function gapText(gap, tolerance) {
 export const POINT_HINT = "Drag the orange marker to your answer (or click the figure to " +
   "select it, then use the arrow keys; Shift: ten steps). A click alone does not move it.";
 
-// the live readout of a point marker's x ("code 186"): data.readout, data.readoutDigits
+// the live readout of a point marker's x ("code 186"): data.readout, data.readoutDigits; a
+// label with "{}" places the number there ("{} triangles": "60 triangles", review r344 01-S1)
 export function readoutText(label, x, digits) {
-  return `${label} ${x.toFixed(digits)}`;
+  const n = x.toFixed(digits);
+  return label.includes("{}") ? label.replace("{}", n) : `${label} ${n}`;
 }
 
 // A dragged marker whose readout shows whole numbers (codes) lands on one, as the arrow keys
