@@ -3382,3 +3382,45 @@ R347 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R347.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R347.items()})
+
+
+# -- r352 01: fill boxes clamped at one end only (passed / told the symptom), boxes one short at
+# the left and top (told the tie rule), a point a tiny step off the centre (told the tie rule) --
+def _fill_box(start=math.floor, end=math.ceil, low=True, high=True, at=(0.5, 0.5)):
+    """A bounding-box fill by the correct covers: ``range(start(min), end(max))``, clamped to
+    the image at its lower end (``low``) and its upper end (``high``), pixel (i, j) tested at
+    (j + at[0], i + at[1])."""
+
+    def fill(xy, width, height):
+        v = np.asarray(xy, dtype=float)
+        out = np.zeros((height, width), dtype=bool)
+        rows = [start(v[:, 1].min()), end(v[:, 1].max())]
+        cols = [start(v[:, 0].min()), end(v[:, 0].max())]
+        if low:
+            rows[0], cols[0] = max(rows[0], 0), max(cols[0], 0)
+        if high:
+            rows[1], cols[1] = min(rows[1], height), min(cols[1], width)
+        for i in range(*rows):
+            for j in range(*cols):
+                out[i, j] = covers(v, (j + at[0], i + at[1]))
+        return out
+
+    return fill
+
+
+R352 = {
+    "fill with a box clamped at its upper end only": (
+        "fill", _fill_box(low=False), "not clamped at 0", "box not clamped at 0"),
+    "fill with a box clamped at its lower end only": (
+        "fill", _fill_box(high=False), "clamp the box to the image", "raised"),
+    "fill with a box range(ceil(min), floor(max))": (
+        "fill", _fill_box(math.ceil, math.floor), "misses its first column",
+        "bounding box one short"),
+    "fill with a box range(round(min), round(max))": (
+        "fill", _fill_box(round, round), "misses its first column", "bounding box one short"),
+    "fill sampled at (j + ½ + 1e-6, i + ½ + 1e-6)": (
+        "fill", _fill_box(at=(0.5 + 1e-6, 0.5 + 1e-6)), "a tiny step off each centre",
+        "a point a tiny step off the centre"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R352.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R352.items()})

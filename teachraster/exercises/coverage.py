@@ -386,10 +386,11 @@ def centre_values(case: CoverageCase, xy) -> tuple:
     return e.reshape(3, h, w), lengths
 
 
-def differences(case: CoverageCase, got, expected) -> str:
+def differences(case: CoverageCase, got, expected, causes: str = "") -> str:
     """What differs on this case, in facts only (r347 2: the fallback named the tie rule
     whatever the mistake): how many pixels, where, and how many of their centres lie exactly
-    on an edge. The tie rule is named only where every wrong centre is one."""
+    on an edge. Where every wrong centre is one, it says it cannot tell the cause and lists
+    ``causes`` as possibilities (r352 C: it proposed the tie rule for a box one short)."""
     got = np.asarray(got)
     if got.shape != expected.shape:
         return ""
@@ -414,10 +415,9 @@ def differences(case: CoverageCase, got, expected) -> str:
     )
     if ties == len(wrong):
         return (
-            f"{text}, and every one of their centres lies exactly on an edge (E = 0): on this "
-            "case what differs is how a centre on an edge is decided (by the tie rule, or by "
-            "a point tested slightly off the centre: a failing case whose wrong centres lie "
-            "off the edges would tell)"
+            f"{text}, and every one of their centres lies exactly on an edge (E = 0). None of "
+            "the typical mistakes this check knows gives your image, so it cannot tell the "
+            f"cause; mistakes that change only such centres include {causes}"
         )
     return (
         f"{text}; {ties} of these centres lie exactly on an edge and {len(wrong) - ties} off "

@@ -9,9 +9,13 @@ centres, one winding only, sampling at pixel corners, vertices rounded to whole 
 empty answer, a transposed or upside-down image, x and y swapped, float32 far from the origin;
 r347's: border rows or columns a loop skips, a bounding box one short, a left-right mirror,
 other sampling points, vertices moved to pixel centres, tolerances on E, a tie test that forgot
-"exactly horizontal". An explanation names the mistake, then shows it on one wrong pixel, the
-most telling one; where no mistake gives the answer it says what differs, in facts only
-(:func:`.coverage.differences`), and names the tie rule only where every wrong centre is a tie.
+"exactly horizontal"; r352's (:mod:`.coverage_boxes`): a bounding box clamped at its upper end
+only (negative indices wrap), one short at any side, a point a tiny step off the centre, and
+the clamp said where a box raises IndexError. An explanation names the mistake, then shows it
+on one wrong pixel, the most telling one; where no mistake gives the answer it says what
+differs, in facts only
+(:func:`.coverage.differences`), with the possible causes (:data:`TIE_CAUSES`) listed as such
+only where every wrong centre is a tie.
 """
 
 from __future__ import annotations
@@ -24,6 +28,7 @@ import numpy as np
 from ..core.edges import is_top_left, passes, top_left_edges
 from ..core.fill import rasterize
 from . import coverage as cov
+from . import coverage_boxes as boxes
 from .answers import as_bool, as_coverage, short
 from .cases import (
     CoverageCase,
@@ -148,11 +153,17 @@ def _border_cases() -> list[CoverageCase]:
     each winding."""
     big = np.array([[[-3.0, -2.0], [25.0, -2.0], [-3.0, 20.0]]])
     half = np.array([[[0.0, 0.0], [10.0, 7.0], [0.0, 7.0]], [[0.0, 0.0], [10.0, 7.0], [10.0, 0.0]]])
+    # r352 1: out at the top only, then at the left only (each winding), most pixels empty: a
+    # box clamped at its upper end alone wraps its negative rows (columns) round to the bottom
+    # (right), where the larger triangle's real rows overwrote them again
+    out = np.array([[[2.0, -3.0], [7.0, 2.0], [1.0, 3.0]], [[-3.0, 2.0], [2.0, 7.0], [3.0, 1.0]]])
     return [
         CoverageCase("a triangle larger than the image: a 9 × 6 image (width × height), every "
                      "pixel covered", big, (0, 0), (9, 6)),
         CoverageCase("two triangles splitting a 10 × 7 image along its diagonal (a mesh)",
                      half, (0, 0), (10, 7), mesh=True),
+        CoverageCase("two triangles reaching out of an 8 × 8 image, one at the top, one at the "
+                     "left (not a mesh)", out, (0, 0), (8, 8)),
     ]  # fmt: skip
 
 
@@ -542,23 +553,110 @@ def _band_words(args, expected, got) -> str:
     )
 
 
-def _box_short(case) -> np.ndarray:
-    """A bounding-box loop whose end, ``ceil(max) - 1``, is exclusive: one row and one column
-    short at the bottom and the right."""
-    images = _expected(case)
-    for n, xy in enumerate(case.triangles):
-        end = np.ceil(np.asarray(xy, dtype=float).max(axis=0) - case.origin).astype(int) - 1
-        images[n, max(end[1], 0) :, :] = False
-        images[n, :, max(end[0], 0) :] = False
-    return images
+def _short_sides(args, expected, got):
+    (case,) = args
+    return boxes.short_sides(case, expected, got)
 
 
-BOX_SHORT = (
-    "your bounding box stops one pixel short at the right and the bottom: the last column "
-    "(row) whose centre the triangle may cover is ceil(x_max) − 1 (ceil(y_max) − 1), so the "
-    "loop is range(floor(x_min), ceil(x_max)) with its end exclusive (clamped to the image), "
-    "not range(…, ceil(x_max) − 1)"
+#: r352 2: the words for a box one short at its first row or column, or its last.
+BOX_SHORT_START = (
+    "your loop over the bounding box misses its {sides}: a pixel whose centre {centre} lies "
+    "inside can have {cond} ({ceil} skips it, round() too where the fraction is ½ or more); "
+    "start at {floor} (clamped to 0)"
 )
+BOX_SHORT = (
+    "your bounding box stops one pixel short at the {sides}: the last column (row) whose "
+    "centre the triangle may cover is ceil(x_max) − 1 (ceil(y_max) − 1), so the loop is "
+    "range(floor(x_min), ceil(x_max)) with its end exclusive (clamped to the image), not "
+    "range(…, ceil(x_max) − 1) (nor floor(x_max), round(x_max))"
+)
+
+
+def _box_short_words(args, expected, got) -> str:
+    """Which sides of the box the student's loop misses, over every triangle of the case, and
+    one pixel of them (:func:`.coverage_boxes.short_sides`)."""
+    found = [any(t[n] for t in _short_sides(args, expected, got)) for n in range(4)]
+    top, bottom, left, right = found
+    parts = []
+    if left or top:
+        both = left and top
+        parts.append(BOX_SHORT_START.format(
+            sides=" and its ".join(s for s, f in (("first column", left), ("first row", top)) if f),
+            centre="(j + ½, i + ½)" if both else ("j + ½" if left else "i + ½"),
+            cond="j < x_min or i < y_min" if both else ("j < x_min" if left else "i < y_min"),
+            ceil="ceil(min)" if both else ("ceil(x_min)" if left else "ceil(y_min)"),
+            floor="floor(x_min) and floor(y_min)" if both else (
+                "floor(x_min)" if left else "floor(y_min)"),
+        ))  # fmt: skip
+    if right or bottom:
+        sides = " and the ".join(s for s, f in (("right", right), ("bottom", bottom)) if f)
+        parts.append(BOX_SHORT.format(sides=sides))
+    return _own_example("; and ".join(parts), _box_side_pixel)(args, expected, got)
+
+
+def _box_side_pixel(case, xy, e, g, i, j):
+    """A pixel the short box leaves out: which side of the box, and the box's formula there."""
+    if not e[i, j] or g[i, j]:
+        return None
+    w, h = case.size
+    r0, r1, c0, c1 = boxes.box(case, xy)
+    x_min, y_min = (np.asarray(xy, dtype=float) - case.origin).min(axis=0)
+    x_max, y_max = (np.asarray(xy, dtype=float) - case.origin).max(axis=0)
+    sides = (
+        (j == c0, f"first column is floor(x_min) = floor({cov.fmt(x_min)}) = {c0}"),
+        (i == r0, f"first row is floor(y_min) = floor({cov.fmt(y_min)}) = {r0}"),
+        (j == c1 - 1 < w, f"last column is ceil(x_max) − 1 = ceil({cov.fmt(x_max)}) − 1 = {j}"),
+        (i == r1 - 1 < h, f"last row is ceil(y_max) − 1 = ceil({cov.fmt(y_max)}) − 1 = {i}"),
+    )
+    side = next((words for on, words in sides if on), None)
+    if side is None:
+        return None
+    c = _centre(case, i, j)
+    where = _where(xy, c)
+    return (f"the box's {side}; pixel (row {i}, col {j}), centre {cov.point(c)}, lies {where}: "
+            "the rule covers it, your image leaves it uncovered", _ties(where))  # fmt: skip
+
+
+#: r352 1: a box clamped at its upper end only passed (the one case out at the top covered
+#: every pixel, so the wrapped writes were right there).
+WRAPPED = (
+    "your bounding box is not clamped at 0: a negative row/column index wraps to the other "
+    "side of the image in numpy (image[-1] is the last row), so the box's rows above the image "
+    "(columns left of it) are written into its last rows (columns): start the loop at "
+    "max(0, floor(y_min)) (max(0, floor(x_min)))"
+)
+
+
+def _wrapped_pixel(case, xy, e, g, i, j):
+    """Pixel [i, j] holds the verdict of a row or column of the box outside the image."""
+    si, sj = boxes.wrapped_source(case, xy, i, j)
+    w, h = case.size
+    if (si >= 0 and sj >= 0) or si == h or sj == w:
+        return None
+    s, c = _centre(case, si, sj), _centre(case, i, j)
+    if bool(cov.covered(xy, s)[0]) != g[i, j]:
+        return None
+    where = _where(xy, s), _where(xy, c)
+    state = "covered" if g[i, j] else "not covered"
+    return (f"your image's [{i}, {j}] holds the verdict of the box's row {si}, column {sj} "
+            f"(centre {cov.point(s)}, {where[0]}: {state}), since [{si}, {sj}] is [{i}, {j}] "
+            f"in numpy; pixel [{i}, {j}] itself, centre {cov.point(c)}, lies {where[1]}: "
+            f"{'covered' if e[i, j] else 'not covered'}",
+            _ties(*where))  # fmt: skip
+
+
+def _box_raised(args, error: str) -> str:
+    """r352 3: an index outside the image (a box clamped at its lower end only) was told the
+    IndexError alone."""
+    if "IndexError" not in error:
+        return ""
+    (case,) = args
+    w, h = case.size
+    return (f"; an index outside the image ({w} × {h} here, width × height): clamp the box to "
+            f"the image (0..width−1, 0..height−1), range(max(0, floor(y_min)), min(height, "
+            "ceil(y_max))) and the same in x")  # fmt: skip
+
+
 X_MIRRORED = (
     "your image is mirrored left–right: column j holds the pixels whose centres have "
     "x = j + 0.5, x pointing right (column 0 at the left), so do not flip the columns "
@@ -716,12 +814,42 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
         table += [
             Mistake("border skipped", _band_words,
                     fits=lambda *a: _skipped_band(*a) is not None, must_fit=_always),
-            Mistake("bounding box one short", BOX_SHORT, gives=_box_short),
+            # r352 1, 2: a box clamped at its upper end only; one short at any side
+            Mistake("box not clamped at 0", _own_example(WRAPPED, _wrapped_pixel),
+                    gives=lambda case: boxes.wrapped_images(case, _expected(case))),
+            Mistake("bounding box one short", _box_short_words,
+                    fits=lambda *a: _short_sides(*a) is not None, must_fit=_always),
             _mirrored("mirrored left-right", _own_example(X_MIRRORED, _x_flipped_pixel),
                       lambda e: e[:, ::-1]),
             *_sampling_mistakes(),
         ]  # fmt: skip
     return table
+
+
+def _nudged(args, expected, got):
+    (case,) = args
+    return boxes.nudged_direction(case, expected, got)
+
+
+def _nudged_words(args, expected, got) -> str:
+    """r352 3: which tiny step off the centre gives the student's images (the first that does:
+    a case may not tell a step along x or y from a diagonal one)."""
+    sx, sy = _nudged(args, expected, got)
+    way = " and ".join(w for w in ({1: "right", -1: "left"}.get(sx), {1: "down", -1: "up"}.get(sy))
+                       if w)  # fmt: skip
+    x = {1: "j + 0.5 + 1e-6", -1: "j + 0.5 − 1e-6", 0: "j + 0.5"}[sx]
+    y = {1: "i + 0.5 + 1e-6", -1: "i + 0.5 − 1e-6", 0: "i + 0.5"}[sy]
+    # along x or y, a tie test by the other axis's direction alone gives the same pixels
+    alike = "" if sx and sy else (
+        f" (a tie test in `covers` that looks at the edge's {'y' if sx else 'x'} direction "
+        "alone gives the same pixels: if `covers` passes its own check, it is the point)")  # fmt: skip
+    return (
+        "every pixel you get wrong has its centre exactly on an edge, and your images are the "
+        f"rule's tested a tiny step off each centre (a step {way}, at ({x}, {y}), gives "
+        "them): a centre on an edge then lands on the side the step takes it, and the tie "
+        "rule never decides. Test the centre (j + 0.5, i + 0.5) itself: vertices and centres "
+        f"are on the 1/256-px grid, so E is exact there{alike}"
+    )
 
 
 def _x_flipped_pixel(case, xy, e, g, i, j):
@@ -745,6 +873,9 @@ def mistakes(name: str) -> list:
         table += _point_mistakes()
     table += _r347_mistakes(name, masked)
     table.append(_rule_knobs(masked, corners=name == "fill"))
+    if name == "fill":  # r352 3: after the tie rules, which it may equal on a case
+        table.append(Mistake("a point a tiny step off the centre", _nudged_words,
+                             fits=lambda *a: _nudged(*a) is not None, must_fit=_always))  # fmt: skip
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
@@ -804,9 +935,23 @@ def explain(args, expected, got) -> str:
     return text
 
 
-def _differences(args, expected, got) -> str:
-    (case,) = args
-    return cov.differences(case, got, expected)
+#: r352 C: what may change only the centres on an edge, said as possibilities where no
+#: typical mistake gives the answer (cell 0: "without guessing a cause").
+TIE_CAUSES = {
+    "covers": "a tie test that decides some edges' centres the other way, or the point tested "
+    "a tiny step off p",
+    "fill": "a tie test in `covers` that decides some edges' centres the other way (if "
+    "`covers` passes its own check, it is not that), each pixel tested a tiny step off its "
+    "centre, or a loop that misses some rows or columns",
+}
+
+
+def _differences_of(name: str):
+    def words(args, expected, got) -> str:
+        (case,) = args
+        return cov.differences(case, got, expected, TIE_CAUSES[name])
+
+    return words
 
 
 def compose(head: str, words: str) -> str:
@@ -886,11 +1031,12 @@ TIE_RULE_ANSWERS = tuple(
 def _exercise(name: str, cases, call, scene=None) -> Exercise:
     return Exercise(
         name, cases, convert=None, same=same_coverage, explain=explain,
-        rule=_differences, mistakes=mistakes(name), draw=draw, scene=scene, call=call,
+        rule=_differences_of(name), mistakes=mistakes(name), draw=draw, scene=scene, call=call,
         answers=(PackageAnswer(rasterize), *TIE_RULE_ANSWERS), compose=compose,
         constant=constant(name),
         hints=HINTS,
         reference=("teachraster.exercises.coverage",),  # expected_coverage (r14 09-1)
+        raised_words=_box_raised if name == "fill" else None,
     )  # fmt: skip
 
 
