@@ -3424,3 +3424,82 @@ R352 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R352.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R352.items()})
+
+
+# -- r348 03 (fixex03x): thin far triangles refused, and six slips that got the rule only -----
+def _bary_from_areas(xy, p):
+    """3.1 by edge functions, with the exact zero-area test: the base the slips below alter."""
+    a, b, c = (np.asarray(q, dtype=float) for q in xy)
+    area = edge_function(a, b, c)
+    if area == 0:
+        raise ValueError("zero area")
+    return _sub_areas((a, b, c), p) / area
+
+
+def _bary_by_condition(xy, p):
+    """A 3×3 solve refused by the matrix's condition number."""
+    m = np.vstack([np.asarray(xy, dtype=float).T, np.ones(3)])
+    if np.linalg.cond(m) > 1e12:
+        raise ValueError("degenerate")
+    return np.linalg.solve(m, np.array([p[0], p[1], 1.0]))
+
+
+def _bary_relative_threshold(xy, p):
+    """|E| compared with a threshold relative to the coordinates' size squared."""
+    v = np.asarray(xy, dtype=float)
+    area = edge_function(v[0], v[1], v[2])
+    if abs(area) <= 1e-12 * float(np.abs(v).max()) ** 2:
+        raise ValueError("degenerate")
+    return _sub_areas(v, p) / area
+
+
+def _bary_lambda3_typo(xy, p):
+    lam = _bary_from_areas(xy, p)
+    return np.array([lam[0], lam[1], 1 - lam[0] + lam[1]])
+
+
+def _bary_no_sum_row(xy, p):
+    """The two equations for x and y only, solved by least squares."""
+    v = np.asarray(xy, dtype=float)
+    if edge_function(v[0], v[1], v[2]) == 0:
+        raise ValueError("zero area")
+    return np.linalg.lstsq(v.T, np.asarray(p, dtype=float), rcond=None)[0]
+
+
+def _weights_w_linear(lam, w):
+    """λ_i / w_i times the point's w taken as Σ λ_j w_j."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    return lam / w * float(lam @ w)
+
+
+def _weights_by_max(lam, w):
+    q = np.asarray(lam, dtype=float) / np.asarray(w, dtype=float)
+    return q / q.max()
+
+
+R348 = {
+    "barycentric refused by a condition number": (
+        "barycentric", _bary_by_condition, "your code reads np.linalg.cond", "condition number"),
+    "barycentric refused by a relative threshold": (
+        "barycentric", _bary_relative_threshold, "you refused a thin but real triangle",
+        "refused a proper triangle"),
+    "barycentric of p + (½, ½)": (
+        "barycentric", lambda xy, p: _bary_from_areas(xy, np.asarray(p, dtype=float) + 0.5),
+        "those of p + (½, ½)", "p shifted by ½"),
+    "barycentric of vertices cast to int": (
+        "barycentric", lambda xy, p: _bary_from_areas(np.asarray(xy, int), p),
+        "your vertices lost their fractions", "vertices truncated"),
+    "barycentric with λ3 = 1 − λ1 + λ2": (
+        "barycentric", _bary_lambda3_typo, "is 1 − λ1 + λ2, a sign slip", "λ3 = 1 − λ1 + λ2"),
+    "barycentric without the sum equation": (
+        "barycentric", _bary_no_sum_row, "the third equation, λ1 + λ2 + λ3 = 1, is missing",
+        "no sum equation"),
+    "perspective weights with w interpolated linearly": (
+        "perspective_weights", _weights_w_linear, "w interpolated linearly on the screen",
+        "w interpolated linearly"),
+    "perspective weights normalised by the largest": (
+        "perspective_weights", _weights_by_max, "by the largest of them",
+        "normalised by the largest"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R348.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R348.items()})

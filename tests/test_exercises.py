@@ -390,7 +390,7 @@ def test_barycentric_is_asked_by_its_definition_and_its_rule_is_a_hint_first():
     assert "sub-triangle" not in text and "signed area" not in text
     assert "sum to 1" in text and "p = λ1·v1 + λ2·v2 + λ3·v3" in text
 
-    def shifted(xy, p, by=0.5):  # the weights of p + (by, by)
+    def shifted(xy, p, by=0.25):  # the weights of p + (by, by) (r348: by ½ is named)
         v1, v2, v3 = np.asarray(xy, float)
         q = np.asarray(p, float) + by
         e = [edge_function(v2, v3, q), edge_function(v3, v1, q), edge_function(v1, v2, q)]
@@ -400,7 +400,7 @@ def test_barycentric_is_asked_by_its_definition_and_its_rule_is_a_hint_first():
     try:
         first = ex.check("barycentric", shifted)
         assert "E of the edge opposite" not in str(first) and "sum to 1" in str(first)
-        second = ex.check("barycentric", lambda xy, p: shifted(xy, p, 0.25))
+        second = ex.check("barycentric", lambda xy, p: shifted(xy, p, 0.125))
         assert "E of the edge opposite v_i at p" in str(second)
     finally:
         tries.spend_hints(["barycentric"])

@@ -126,9 +126,9 @@ NAMED_03 = [
     # D3-2: clipped to [0, 1] and renormalised (the pipeline's own clamp)
     ("barycentric", lambda xy, p: np.clip(_bary(xy, p), 0, 1) / np.clip(_bary(xy, p), 0, 1).sum(),
      "clamped", "do not clamp them"),
-    # D3-3: λ3 = 1 − λ1 + λ2: the sum it breaks is said
+    # D3-3: λ3 = 1 − λ1 + λ2: the sum it breaks was said; since r348 the slip itself
     ("barycentric", lambda xy, p: _bary(xy, p) * [1, 1, 0] + [0, 0, 1 - _bary(xy, p)[0] + _bary(xy, p)[1]],
-     None, "; yours sum to 1.4, not 1"),
+     "λ3 = 1 − λ1 + λ2", "is 1 − λ1 + λ2, a sign slip"),
     ("perspective_weights", lambda lam, w: (np.asarray(lam) / w) / np.abs(np.asarray(lam) / w).sum(),
      "absolute sum", "the sum of the sizes |λ_j / w_j|"),
     ("perspective_weights", lambda lam, w: _mu([1, 1, 1], w), "no lambda", "leave λ out"),

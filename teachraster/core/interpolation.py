@@ -151,9 +151,11 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
 
     ``extrapolate=True`` skips the clamping of λ, for evaluation points outside the
     triangle: there the total may legitimately be <= 0 (the point lies beyond the
-    horizon of the triangle's plane, where 1/w changes sign); such rows, and rows whose
-    every term underflowed, come out non-finite, as on a GPU (no log-domain rescue: a
-    logarithm needs positive weights).
+    horizon of the triangle's plane, where 1/w changes sign); such rows come out
+    non-finite, as on a GPU (no log-domain rescue: a logarithm needs positive weights). A
+    row whose every term underflowed is scaled again by the smallest w among the vertices
+    with λ_i ≠ 0 (the smallest w may be that of a vertex whose λ is 0): λ = (0, ½, ½) with
+    w = (1e-310, 1e300, 1e300) gives (0, ½, ½), not NaN.
     """
     if not extrapolate:
         lam = convex_weights(lam)
@@ -164,6 +166,14 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
         q = lam * (smallest / w)
     total = q[..., 0] + q[..., 1] + q[..., 2]
     if extrapolate:
+        # r348 F1: the smallest w may belong to a vertex whose λ is 0 (a point on the edge
+        # opposite it), and every other term underflow (w 1e-310 against 1e300): those rows
+        # are scaled again by the smallest w among the vertices that weigh, where the term
+        # of that vertex is its λ itself
+        redo = total == 0
+        if redo.any():
+            q[redo] = _scaled_by_weighing(lam[redo], w[redo])
+            total[redo] = q[redo].sum(axis=-1)
         with np.errstate(divide="ignore", invalid="ignore"):
             return q / total[..., None]
     # Ratios of w beyond the float range (1e200 against 1e-200) can still underflow every
@@ -176,6 +186,15 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
         total[bad] = q[bad].sum(axis=-1)
     q /= total[..., None]
     return q
+
+
+def _scaled_by_weighing(lam: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """λ_i · s / w_i, s the smallest w among each row's vertices with λ_i ≠ 0 (a term of 0
+    where λ_i = 0: never 0 · inf); a row of three zero λ stays zero."""
+    weighing = lam != 0
+    s = np.min(np.where(weighing, w, np.inf), axis=-1, keepdims=True)
+    with np.errstate(under="ignore", invalid="ignore", over="ignore"):
+        return np.where(weighing, lam * (s / w), 0.0)
 
 
 def normalised_weights(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -23,7 +23,7 @@ from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
 from .diagnosis import held_by_precision, scaled_mistake
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, num, tri_words, vec
-from .tolerance import all_close, close
+from .tolerance import TOL, all_close, close
 
 
 # -- barycentric ------------------------------------------------------------------------------
@@ -45,7 +45,24 @@ def barycentric_cases():
             p = centre_near(now.uniform(xy.min(axis=0), xy.max(axis=0)))
             out.append((f"drawn for this check {len(out) - n_fixed + 1}: "
                         f"{tri_words(xy)}, p={vec(p)}", (xy, p), barycentric(xy, p)))  # fmt: skip
+    for what, xy, p in THIN_FAR:
+        xy, p = np.array(xy), np.array(p)
+        out.append((f"{what}: {tri_words(xy)}, p={vec(p)}", (xy, p), barycentric(xy, p)))
     return out + degenerate_cases()
+
+
+#: r348 item 1: thin but proper triangles 100 000 px out, whose E(v1, v2, v3) (2^-8, 2^-16)
+#: float64 computes exactly from differences of the coordinates; a refusal by the 3×3 matrix's
+#: condition number (7.7e12 here) or by a threshold relative to x² (1e-12·x² = 0.01) passed
+#: every other case
+THIN_FAR = (
+    ("thin, 100 000 px out, E(v1, v2, v3) = 1/256",
+     [[100000.0, 100000.0], [100001.0, 100000.0], [100000.5, 100000.00390625]],
+     (100000.5, 100000.5)),
+    ("thinner, 100 000 px out, E(v1, v2, v3) = 1/65536",
+     [[100000.0, 100000.0], [100000.00390625, 100000.0], [100000.5, 100000.00390625]],
+     (100000.5, 100000.5)),
+)  # fmt: skip
 
 
 #: The answer read from a ``barycentric`` that raised ValueError: what a triangle of zero area
@@ -103,7 +120,20 @@ def same_barycentric(got, expected, args) -> bool:
         # a str beside an array compares element by element (r164 C2: the refusing
         # mistakes' ValueError beside expected weights raised, and no mistake was named)
         return isinstance(got, str) and isinstance(expected, str) and got == expected
-    return all_close(got, expected)
+    return all_close(got, expected, THIN_TOL if _thin_far(args) else TOL)
+
+
+#: r348 item 1: the tolerance on a thin triangle far from the origin (:data:`THIN_FAR`). Its
+#: 3×3 matrix is ill-conditioned (7.7e12, 1.1e15), and a right solve of it in absolute
+#: coordinates (np.linalg.solve, as the task allows) loses digits in proportion: 2.5e-9 and
+#: 4e-7 of its weights here, where differences to a vertex lose none. These cases test the
+#: refusal, not those digits; every wrong formula is off by far more than 1e-6.
+THIN_TOL = 1e-6
+
+
+def _thin_far(args) -> bool:
+    xy, _ = args
+    return abs(_area(xy)) < 1 and _far(args)[0] >= 1e4
 
 
 def _areas(xy, p) -> np.ndarray:
@@ -188,7 +218,9 @@ def _epsilon_fits(args, expected, got) -> bool | None:
     guard = delta > 0 or (delta < 0) == (area < 0)
     if delta == 0 or abs(delta) > 1e-3 or not guard or _rounded(g, expected):
         return False
-    return bool(np.allclose(g, _areas(xy, p) / (area + delta), rtol=1e-12, atol=1e-300))
+    # (1e-9: δ read back from a sum of weights of 1e4 cancelling to 0.13, as on the thin
+    # triangle of E = 2^-16 of :data:`THIN_FAR`, is good to a few 1e-12 only)
+    return bool(np.allclose(g, _areas(xy, p) / (area + delta), rtol=1e-9, atol=1e-300))
 
 
 def _epsilon(args, expected, got) -> float | None:
@@ -288,6 +320,16 @@ def _zero_area_words(args, expected, got) -> str:
 def _refused_words(args, expected, got) -> str:
     xy, _ = args
     area = _area(xy)
+    far, _ = _far(args)
+    if abs(area) < 1 and far >= 1e4:  # r348 item 1: a condition number, a relative threshold
+        return (
+            f": you refused a thin but real triangle {num(far)} px from the origin: its "
+            f"E(v1, v2, v3) = {area!r} (twice its area) is exact in float64, computed from "
+            "differences of the coordinates on the 1/256-px grid, and it is not 0, so the "
+            "triangle has weights. Only E == 0 exactly is no triangle; a "
+            "test that grows with the coordinates (a threshold relative to x², a condition "
+            "number of the 3×3 matrix) refuses such a triangle"
+        )
     if abs(area) >= 1:  # r164 C2: "however thin" was said of a 67.5-px² triangle
         return (
             f": this triangle's E(v1, v2, v3) = {num(area)} is not 0 (its area is "
@@ -321,6 +363,94 @@ def _winding_words(args, expected, got) -> str:
         f"{way} on screen (its area is {num(abs(area) / 2)} px²), and you refused every "
         f"triangle of that winding. 3.1 asks that the same formula serve both windings (each "
         "weight is a ratio of two signed areas, whose signs cancel), so refuse only E == 0"
+    )
+
+
+def _p_shifted(by: float):
+    """The weights of p + (by, by): r348, a pixel centre's ½ added to p a second time."""
+
+    def gives(xy, p):
+        return _areas(xy, np.asarray(p, float) + by) / _area(xy)
+
+    return gives
+
+
+def _p_shifted_words(by: float):
+    def words(args, expected, got):
+        _, p = args
+        moved = vec(np.asarray(p, float) + by)
+        sign = "+" if by > 0 else "−"
+        return (
+            f": your weights are those of p {sign} (½, ½) = {moved}, not of p = {vec(p)}: p is "
+            "already the point to weigh (a pixel centre's ½ is in it); take p as given"
+        )
+
+    return words
+
+
+def _truncated(with_p: bool):
+    """The weights computed from vertices (and p) cast to int, which truncates (r348:
+    ``np.asarray(xy, int)``); the zero-area test on the truncated vertices."""
+
+    def gives(xy, p):
+        t = np.trunc(np.asarray(xy, float))
+        q = np.trunc(np.asarray(p, float)) if with_p else np.asarray(p, float)
+        return REFUSED if _area(t) == 0 else _areas(t, q) / _area(t)
+
+    return gives
+
+
+def _truncated_words(args, expected, got) -> str:
+    xy, p = (np.asarray(a, float) for a in args)
+    k = next((k for k in range(3) if (xy[k] != np.trunc(xy[k])).any()), 0)
+    return (
+        f": your vertices lost their fractions: v{k + 1} = {vec(xy[k])} became "
+        f"{vec(np.trunc(xy[k]))} (an int array, or int(...), truncates); keep the coordinates "
+        "as floats: they lie on the 1/256-px grid, and float64 holds them exactly"
+    )
+
+
+def _lambda3_typo(xy, p) -> np.ndarray:
+    """r348: λ3 = 1 − λ1 + λ2, a sign slip in the last weight."""
+    lam = _areas(xy, p) / _area(xy)
+    return np.array([lam[0], lam[1], 1.0 - lam[0] + lam[1]])
+
+
+def _lambda3_words(args, expected, got) -> str:
+    return (
+        f": your λ1 and λ2 are right, but your λ3 = {num(got[2], expected[2])} is "
+        f"1 − λ1 + λ2, a sign slip: the weights sum to 1, so λ3 = 1 − λ1 − λ2 = "
+        f"{num(expected[2], got[2])}"
+    )
+
+
+def _rebuilds_p(xy, p, got, tol: float = 1e-9) -> bool:
+    """Do weights ``got`` rebuild p, λ1·v1 + λ2·v2 + λ3·v3 = p (to ``tol`` of the size of
+    the coordinates: 1e-6 where the words print the point, so a float32 answer's rounding
+    is no "(4.5, 3.5), not p = (4.5, 3.5)")?"""
+    xy, p = np.asarray(xy, float), np.asarray(p, float)
+    scale = max(1.0, float(np.abs(xy).max()) * float(np.abs(got).max()))
+    return bool(np.all(np.abs(np.asarray(got, float) @ xy - p) <= tol * scale))
+
+
+def _no_sum_row(args, expected, got) -> bool | None:
+    """r348: the weights solve the two equations for x and y but not the sum (a least-squares
+    solve of those two alone)."""
+    if isinstance(expected, str) or isinstance(got, str):
+        return None
+    g = np.asarray(got, dtype=float)
+    if g.shape != (3,) or not np.isfinite(g).all() or abs(float(g.sum()) - 1) <= 1e-6:
+        return False
+    xy, p = args
+    return _rebuilds_p(xy, p, g)
+
+
+def _no_sum_row_words(args, expected, got) -> str:
+    _, p = args
+    return (
+        f": your weights rebuild p (λ1·v1 + λ2·v2 + λ3·v3 = {vec(p)}) but sum to "
+        f"{num(float(np.sum(got)), 1.0)}, not 1: the third equation, λ1 + λ2 + λ3 = 1, is "
+        "missing (the two equations for x and y alone leave a whole line of solutions)"
     )
 
 
@@ -405,6 +535,38 @@ def _reads_det_words(args, expected, got) -> str:
     )
 
 
+def _float32_flattened(args, expected, got) -> bool | None:
+    """A proper triangle refused where its vertices, as float32 holds them, have E == 0."""
+    if isinstance(expected, str) or not isinstance(got, str):
+        return None
+    xy, _ = args
+    return bool(_e32(*np.asarray(xy, dtype=np.float32)) == 0)
+
+
+def _float32_flattened_words(args, expected, got) -> str:
+    far, _ = _far(args)
+    xy, _ = args
+    return (
+        f": you refused a thin but real triangle. {num(far)} px from the origin float32 "
+        f"numbers are {num(float(np.spacing(np.float32(far))))} px apart: in float32 its "
+        "vertices leave the 1/256-px grid and lie on one line, so its E(v1, v2, v3), "
+        f"{_area(xy)!r} in float64, becomes 0. Keep the coordinates in float64, where E is exact"
+    )
+
+
+def _cond_words(args, expected, got) -> str:
+    xy, _ = args
+    m = np.vstack([np.asarray(xy, float).T, np.ones(3)])
+    return (
+        f": your code reads np.linalg.cond, and this triangle's 3×3 matrix has a condition "
+        f"number of {np.linalg.cond(m):.1e}, yet its E(v1, v2, v3) = {_area(xy)!r} is "
+        "exact in float64 and not 0: you refused a thin but real triangle. A condition number "
+        "says how much a solve may magnify rounding (it grows with the distance from the "
+        "origin), not whether the area is 0; test E == 0 exactly and raise ValueError for it "
+        "alone"
+    )
+
+
 ZERO_AREA_MISTAKES = [
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(-1.0))),
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(1.0))),
@@ -420,6 +582,15 @@ ZERO_AREA_MISTAKES = [
                                   and float(np.abs(np.asarray(g, float)).max()) >= SOLVER_NOISE)),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
+    # r348 item 4: vertices cast to int (truncated), p too or not; the zero-area test on them
+    *(Mistake("vertices truncated", _truncated_words, gives=_truncated(with_p))
+      for with_p in (False, True)),
+    # r348 item 1: float32 cannot hold a thin far triangle's vertices: its E becomes 0 (named
+    # where the code reads float32: a float64 threshold refuses the same triangle)
+    Mistake("float32", _float32_flattened_words, fits=_float32_flattened, reads="float32"),
+    # r348 item 1: ``if np.linalg.cond(M) > 1e12: raise ValueError`` refused a thin far one
+    Mistake("condition number", _cond_words, reads="cond",
+            fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
     Mistake("refused a proper triangle", _refused_words,
             fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
 ]  # fmt: skip
@@ -475,6 +646,11 @@ def _proper_mistakes() -> list[Mistake]:
     ]  # fmt: skip
     out.append(Mistake("reversed where E < 0", REVERSED_WHERE_NEGATIVE,
                        gives=_reversed_where_negative))  # fmt: skip
+    # r348 item 4: four slips that got the rule (or its sum) only
+    out += [Mistake("p shifted by ½", _p_shifted_words(by), gives=_p_shifted(by))
+            for by in (0.5, -0.5)]  # fmt: skip
+    out.append(Mistake("λ3 = 1 − λ1 + λ2", _lambda3_words, gives=_lambda3_typo))
+    out.append(Mistake("no sum equation", _no_sum_row_words, fits=_no_sum_row))
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):
             out.append(Mistake("order", ORDER, gives=lambda xy, p, perm=perm: (_areas(xy, p) / _area(xy))[list(perm)]))  # fmt: skip
@@ -492,14 +668,23 @@ def bary_float32_words(args, expected, got) -> str | None:
     of λ itself (the general words), the inputs rounded to float32 (they lose the 1/256-px
     grid), or more than both (a plane in absolute coordinates cancels)."""
     far, _ = _far(args)
-    error = float(np.max(np.abs(np.asarray(got, float) - expected)))
-    if far < 1e4 or error <= 8 * 2.0**-24 * max(1.0, float(np.abs(expected).max())):
-        return None
     xy, p = args
     spacing = float(np.spacing(np.float32(far)))
+    head = f". {num(far)} px from the origin float32 numbers are {num(spacing)} px apart"
+    flat = _e32(*np.asarray(xy, dtype=np.float32)) == 0
+    if far >= 1e4 and flat and not np.isfinite(np.asarray(got, float)).all():  # r348: thin
+        return (
+            f"{head} and cannot hold the 1/256-px grid of the vertices: in float32 this thin "
+            f"triangle's vertices lie on one line, so its E(v1, v2, v3) = {_area(xy)!r} "
+            "becomes 0, and your weights divide by it. Keep the coordinates in float64 (plain "
+            "Python floats or np.float64), where E is exact"
+        )
+    with np.errstate(invalid="ignore"):
+        error = float(np.max(np.abs(np.asarray(got, float) - expected)))
+    if far < 1e4 or error <= 8 * 2.0**-24 * max(1.0, float(np.abs(expected).max())):
+        return None
     moved = barycentric(np.float32(xy).astype(float), np.float32(p).astype(float))
     by_inputs = float(np.max(np.abs(moved - expected)))
-    head = f". {num(far)} px from the origin float32 numbers are {num(spacing)} px apart"
     if error <= 4 * by_inputs + 1e-6:
         return (
             f"{head} and cannot hold the 1/256-px grid of the vertices and p: in float32 they "
@@ -550,6 +735,11 @@ def _bary_rule(args, expected, got) -> str:
     total = float(np.sum(np.asarray(got, dtype=float)))
     # r137 D3-3: a sum other than 1 is said, whatever broke it (λ3 = 1 − λ1 + λ2, ...)
     off = f"; yours sum to {num(total, 1.0)}, not 1" if abs(total - 1) > 1e-6 else ""
+    g = np.asarray(got, dtype=float)
+    if g.shape == (3,) and np.isfinite(g).all() and not _rebuilds_p(xy, args[1], g, 1e-6):
+        # r348 P1: what the student can check on the case's numbers, hint or not
+        rebuilt = g @ np.asarray(xy, float)
+        off += f"; yours rebuild λ1·v1 + λ2·v2 + λ3·v3 = {vec(rebuilt)}, not p = {vec(args[1])}"
     return (
         f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}{off}"
     )

@@ -123,12 +123,21 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             "sum of 1/w": (lam / w) / np.sum(1 / w),
             **{f"no 1/w in the sum at v{k + 1}": (lam / w) / (np.sum(lam / w) - lam[k] / w[k]
                                                            + lam[k]) for k in range(3)},
+            # r348 item 4: the point's w taken as Σ λ_j w_j (w affine on the screen), and
+            # λ_i / w_i divided by the largest of them
+            "w interpolated linearly": (lam / w) * (lam @ w),
+            "normalised by the largest": (lam / w) / np.max(lam / w),
         }  # fmt: skip
 
 
 def _normalised(q: np.ndarray) -> np.ndarray:
     return q / q.sum()
 
+
+#: r348 item 4: the words that give the repair away, staged as hints (:data:`HINTS`)
+W_NOT_AFFINE = ("w is not affine on the screen, 1/w is: the point's 1/w is Σ λ_j / w_j, the "
+                "sum of your own three numerators")  # fmt: skip
+BY_THEIR_SUM = "weights sum to 1, so divide by their sum"
 
 MISTAKES = {
     "affine": "these are the screen weights λ themselves: that is affine interpolation, "
@@ -164,6 +173,13 @@ MISTAKES = {
     **{f"no 1/w in the sum at v{k + 1}": f"the sum you divide by holds λ{k + 1} itself where "
        f"your numerator of v{k + 1} has λ{k + 1} / w{k + 1}: divide by the sum of your own "
        "three numerators" for k in range(3)},
+    "w interpolated linearly": lambda a, e, g: (
+        "you took the point's w as Σ λ_j w_j, w interpolated linearly on the screen, and "
+        f"divided λ_i / w_i by its 1/w, so your weights sum to {_their_sum(g)}, not 1: "
+        f"{W_NOT_AFFINE}"),
+    "normalised by the largest": lambda a, e, g: (
+        "you divided your λ_i / w_i by the largest of them: the largest weight is then 1 "
+        f"and they sum to {_their_sum(g)}; {BY_THEIR_SUM}"),
 }  # fmt: skip
 
 
@@ -365,5 +381,8 @@ PERSPECTIVE_WEIGHTS = Exercise(
          "w and turn that around (how often does the screen position divide by w?)"),
         ("; every vertex's λ is divided by its own w", "; write λ_i in terms of μ and the three "
          "w: what does each vertex's w do to its weight?"),
+        (W_NOT_AFFINE, "is the point's w affine on the screen, as you took it? (write the "
+         "screen position as the clip position over w)"),
+        (BY_THEIR_SUM, "by what must they be divided to sum to 1?"),
     ),
 )  # fmt: skip
