@@ -12,7 +12,8 @@ buffer, and unorm24 is preferred where it does the job by the formats' nominal s
 and an 8-bit stencil share 32 bits a pixel (Direct3D's ``D24_UNORM_S8_UINT``), float32 depth
 with a stencil is declared 64 (``D32_FLOAT_S8X24_UINT``). r351 item 1: that is the declared
 size only (lesson 05b's table: OpenGL may store separate planes, Vulkan requires only one of
-the two packed formats, and some GPUs emulate 24-bit depth in 32-bit floats); the task says so.
+the two packed formats, AMD stores depth and stencil apart, Apple has no 24-bit depth); the
+task says so.
 
 The answer is (format, near, Δz): the choice, the near plane the student would use, and what
 that set-up resolves at z there, the numbers that defend the choice. It is judged by criterion:
