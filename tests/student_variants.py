@@ -3503,3 +3503,83 @@ R348 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R348.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R348.items()})
+
+
+# -- r351 05: depth precision's half-named and misnamed students (5.1, 5.3, 5.4) --------------
+def _setup_r351(near=None, rev_near=None, dz=None, f32=False):
+    """depth_setup by the right choice (5.1's n against nearest, reverse-Z's Δz at nearest
+    against the gap) with one slip: ``near(z, nearest)`` the near plane it returns for unorm24,
+    ``rev_near(z, nearest)`` for reverse-Z, ``dz(z, near, far)`` reverse-Z's Δz as it computes
+    it, ``f32`` the near plane returned as a float32."""
+
+    def depth_setup(z, gap, far, nearest):
+        if _rs.safe_near(z, gap, far, 24) <= nearest:
+            n = nearest if near is None else near(z, nearest)
+            return "unorm24", n, 1 / (2**24 - 1) * (far - n) * z * z / (far * n)
+        n = nearest if rev_near is None else rev_near(z, nearest)
+        works = _rs.reverse_z_gap(z, nearest, far) <= gap
+        got = (dz or _rs.reverse_z_gap)(z, n, far)
+        chosen = "reverse-z" if (works if dz is None else got <= gap) else "neither"
+        return chosen, np.float32(n) if f32 else n, got
+
+    return depth_setup
+
+
+def _gap_step_at_one(z, near, far):
+    """5.2 with float32's step at 1, np.spacing(np.float32(1)), for the step at d."""
+    return float(np.spacing(np.float32(1))) / (near / ((1 - near / far) * z * z))
+
+
+def _near_rounded_down(z, gap, far, bits):
+    """5.1's n rounded down to 2 significant digits (0.15 for 0.153)."""
+    n = _rs.safe_near(z, gap, far, bits)
+    unit = 10 ** (math.floor(math.log10(n)) - 1)
+    return math.floor(n / unit) * unit
+
+
+def _bias_r351(slip):
+    """decal_bias with ``slip``: "doubled" (2m, in the test for NaN too: "the decal can be m
+    either way"), "positive" (+(r + m) with the less-wins test as well)."""
+
+    def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+        r = 1 / (2**bits - 1)
+        m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+        m = 2 * m if slip == "doubled" else m
+        if r + m > z_win(z) - z_win(z - clear) - m:
+            return math.nan
+        return (r + m) if (reverse or slip == "positive") else -(r + m)
+
+    return decal_bias
+
+
+DIFFERENT["depth set-up with its near plane as a float32"] = (
+    "depth_setup", _setup_r351(f32=True))  # fmt: skip
+WRONG.update({
+    "near rounded down to two digits": (
+        "safe_near", _near_rounded_down, "rounded down to 2 significant digits"),
+    "decal bias with m doubled, own NaN test": (
+        "decal_bias", _bias_r351("doubled"), "your m is twice one pixel's depth slope"),
+    "decal bias positive with the less-wins test": (
+        "decal_bias", _bias_r351("positive"), "your offset is positive with the forward test"),
+    "depth set-up, reverse-Z Δz with float32's step at 1": (
+        "depth_setup", _setup_r351(dz=_gap_step_at_one), "float32's step at depth 1"),
+    "depth set-up with reverse_z_gap's arguments swapped": (
+        "depth_setup", _setup_r351(dz=lambda z, n, f: _rs.reverse_z_gap(n, z, f)),
+        "its first two arguments swapped"),
+    "depth set-up with its near plane just beyond nearest": (
+        "depth_setup", _setup_r351(near=lambda z, nearest: 1.01 * nearest),
+        "lies beyond `nearest`"),
+    "depth set-up, reverse-Z's near plane at 1e-45 z": (
+        "depth_setup", _setup_r351(rev_near=lambda z, nearest: 1e-45 * z),
+        "its near plane does not do the job"),
+})  # fmt: skip
+KINDS.update({
+    "near rounded down to two digits": "rounded down",
+    "decal bias with m doubled, own NaN test": "doubled, own test",
+    "decal bias positive with the less-wins test": "positive",
+    "depth set-up, reverse-Z Δz with float32's step at 1": "reverse-Z step at 1",
+    "depth set-up with reverse_z_gap's arguments swapped": "reverse_z_gap swapped",
+    "depth set-up with its near plane just beyond nearest": "unorm24 near beyond nearest",
+    "depth set-up, reverse-Z's near plane at 1e-45 z": "reverse-Z near too close",
+})  # fmt: skip

@@ -572,10 +572,12 @@ def test_safe_near_too_far_out_is_not_told_it_fails_to_tell_them_apart():
     import matplotlib.pyplot as plt
 
     report = ex.check("safe_near", lambda z, g, f, b: 1.02 * sol.safe_near(z, g, f, b))
-    finer = [f.explanation for f in report.failures if "finer than needed" in f.explanation]
+    finer = [f.explanation for f in report.failures if "farther than needed" in f.explanation]
     assert finer, str(report)
     for words in finer:
         assert "yours tells them apart too" in words and "the check accepts" in words, words
+        # r351 item 2: Δz falls with n everywhere; the cost of a farther plane is clipping
+        assert "clips" in words and "precision" not in words, words
         assert "tells them apart, and yours" not in words
     from teachraster.exercises.near_plane import draw_near, near_cases
 

@@ -234,6 +234,8 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         "object without m": sign * (r + m) if tight and r + m <= space else None,
         "sign": math.nan if tight else -sign * (r + m),
         "reverse ignored": math.nan if tight else -(r + m),
+        # r351: the mirror of "reverse ignored", positive with the less-wins test too
+        "positive": math.nan if tight else r + m,
         "no tie": offset(m),
         "no slope": offset(r),
         "in steps": offset(1 + m / r),
@@ -252,6 +254,9 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
     rad = math.radians(tilt)
     inside = 0 < tilt < 90
     return {
+        # r351: "the decal can be m either way, so 2m": first, as its own test's NaN on the
+        # tight cases is also what per unit's gives, and that was said once hints were spent
+        "doubled": 2 * m,
         "z squared": m / z,
         "view slope": pixel * z * math.tan(rad),
         "infinite far": m * (far - near) / far,
@@ -289,7 +294,12 @@ _COTANGENT = (": you took 1/tan θ where the slope needs tan θ: a wall facing t
               "a point seen at s = x/z on the wall lies at 1/z' = (1 − s tan θ)/z")  # fmt: skip
 #: The words of each slip of m (:func:`_slipped_slopes`), said alike with the student's own
 #: test for NaN
+_DOUBLED = (": your m is twice one pixel's depth slope. The decal's depth lies within m of "
+            "the wall's either way, but each bound needs only one side: from m behind it must "
+            "end a step in front, |o| ≥ r + m, and from m in front it must stay behind the "
+            "object, |o| ≤ room − m")  # fmt: skip
 _SLOPE_WORDS = {
+    "doubled": _DOUBLED,
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
@@ -330,6 +340,10 @@ MISTAKES = {
     "reverse ignored": ": your offset is negative under reverse-Z too: reverse-Z stores "
     "1 − z_win and the test keeps the greater value, so there the decal moves nearer with a "
     "positive offset (glPolygonOffset(1, 1))",
+    "positive": ": your offset is positive with the forward test, which keeps the smaller "
+    "depth: smaller is nearer, so the decal moves nearer with a negative offset "
+    "(glPolygonOffset(−1, −1)); a positive one pushes it behind the wall. Only under reverse-Z "
+    "(greater wins) is the offset positive",
     "no tie": ": you offset the decal by the pixel's depth span m alone. At the worst rounding "
     "both depths then store one value, and a tie keeps the wall (drawn first; the test is "
     "strict): one step r more makes the decal strictly nearer, |o| = r + m",
@@ -367,7 +381,9 @@ def explain_offset(args, expected, got) -> str:
             f"pixel, r = 1/(2^{bits} − 1); the decal needs |o| from {num(lo, hi)} (r + m) to "
             f"{num(hi, lo)} (room − m, where room = {num(room(z, near, far, clear))}: the object "
             f"{num(clear)} in front, drawn before the decal, must still hide it), "
-            f"{'positive' if reverse else 'negative'}; yours is {num(got, lo)}")  # fmt: skip
+            f"{'positive' if reverse else 'negative'}; yours is "
+            # told from the signed bound: against |o| a positive r + m printed 17 digits (r351)
+            f"{num(got, lo if reverse else -lo)}")  # fmt: skip
     if impossible(args):
         if np.isnan(got):
             return f"{head} (right: room − m < r + m, no offset does both)"
@@ -481,12 +497,14 @@ def draw_offset(ax, case, got):
     if got is not None and np.isfinite(got) and got != 0:
         x = abs(got) / r
         wrong_sign = (got > 0) != bool(args[6])
-        label = f"yours {num(got / r)} steps" + (": wrong sign, drawn as |o|" if wrong_sign else "")
+        label = f"yours {num(got / r)} steps" + (": wrong sign" if wrong_sign else "") + ", as |o|"
         artists.append(ax.axvline(x, color="#7fbf7f" if ok else "#d7301f", linestyle="--",
                                   lw=2, label=label))  # fmt: skip
         xs.append(x)
     elif got is not None:
         artists += ax.plot([], [], " ", label=f"yours {num(got)}: not drawn")
+    if full and lo / r >= ZOOM_FROM:
+        artists.append(_zoom(ax, r, m, lo, hi, got, ok))
     ax.set_xscale("symlog", linthresh=1.0)
     ax.set_xlim(0.0, 2.0 * max(xs + [2.0]))
     ax.set_yticks([])
@@ -496,6 +514,28 @@ def draw_offset(ax, case, got):
     # figure they made it 1,040 px wide (the column holds 940)
     artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.8)))
     return artists
+
+
+#: From this many steps on, m, r + m and an answer a step apart share a pixel on the symlog
+#: strip (r351 item 6): an inset draws them on a linear scale, in the strip's empty left part.
+ZOOM_FROM = 20.0
+
+
+def _zoom(ax, r, m, lo, hi, got, ok):
+    """An inset on a linear scale around m and r + m (one step apart), with the accepted band
+    and yours when it lies there."""
+    inset = ax.inset_axes([0.03, 0.3, 0.42, 0.6])
+    x0, x1 = m / r - 1, lo / r + 1.5
+    inset.axvspan(lo / r, hi / r, color="#d9ecd9", lw=0, zorder=0)
+    inset.axvline(m / r, color="#888888", linestyle=":")
+    inset.axvline(lo / r, color="#2b7bba")
+    if got is not None and np.isfinite(got) and x0 <= abs(got) / r <= x1:
+        inset.axvline(abs(got) / r, color="#7fbf7f" if ok else "#d7301f", linestyle="--", lw=2)
+    inset.set_xlim(x0, x1)
+    inset.set_xticks([m / r, lo / r], ["m", "r + m"], fontsize="xx-small")
+    inset.tick_params(axis="x", pad=1, length=2)
+    inset.set_yticks([])
+    return inset
 
 
 DECAL_BIAS = Exercise(

@@ -7,9 +7,13 @@ two surfaces ``gap`` apart at view distance ``z`` must not z-fight. A unorm24 bu
 when the smallest near plane that resolves the gap (5.1) is no farther than ``nearest``; else
 float32 reverse-Z may (5.2), whose Δz = one float32 step at d over |dd/dz| lies between
 2^-24 and 2^-23 of z (1 − z/f) whatever the near plane (d over its slope is z (1 − z/f)), so
-pushing its near plane out buys nothing; else neither does. unorm24 is preferred where it
-does the job: its depth and an 8-bit stencil share 32 bits a pixel (Direct3D's
-``D24_UNORM_S8_UINT``), where float32 depth with a stencil takes 64 (``D32_FLOAT_S8X24_UINT``).
+pushing its near plane out buys nothing; else neither does. The scene needs a stencil
+buffer, and unorm24 is preferred where it does the job by the formats' nominal sizes: its depth
+and an 8-bit stencil share 32 bits a pixel (Direct3D's ``D24_UNORM_S8_UINT``), float32 depth
+with a stencil is declared 64 (``D32_FLOAT_S8X24_UINT``). r351 item 1: that is the declared
+size only (lesson 05b's table: OpenGL may store separate planes, Vulkan requires only one of
+the two packed formats, AMD stores depth and stencil apart, Apple has no 24-bit depth); the
+task says so.
 
 The answer is (format, near, Δz): the choice, the near plane the student would use, and what
 that set-up resolves at z there, the numbers that defend the choice. It is judged by criterion:
@@ -39,8 +43,9 @@ from .exercise import Exercise, Mistake, PackageAnswer
 from .near_plane import bounds as near_bounds
 from .near_plane import expected_near, resolution
 from .package_answers import CHECKER_WORDS
+from .reverse_z import _slope as reverse_slope
 from .reverse_z import bounds as gap_bounds
-from .reverse_z import expected_gap
+from .reverse_z import expected_gap, readings
 from .running import WrongAnswerType
 from .scalars import num
 
@@ -52,6 +57,9 @@ WHAT = ('(format, near, dz): format "unorm24", "reverse-z" or "neither", the nea
         "plane you would use, and the smallest gap that set-up resolves at z there")  # fmt: skip
 #: unorm24's Δz at the student's near plane: one step over the slope, this share either way.
 SLACK = 0.01
+#: A near plane this share beyond ``nearest`` is still ``nearest``: float32's rounding of it,
+#: at most 6e-8 (r351: float32(0.1) = 0.1 + 1.5e-9 was told "0.1 lies beyond nearest = 0.1").
+NEAR_ROUNDING = 1e-6
 
 #: (z, gap, far, nearest) of the fixed cases: lesson 05b's planes (far 1000) with unorm24
 #: enough with room (n 1/30 of nearest) or just (0.8), float32 reverse-Z needed (unorm24's
@@ -169,10 +177,21 @@ def _resolves(fmt, z, n, far) -> tuple[float, float]:
     return gap_bounds(z, n, far)
 
 
+def _reverse_finest(z, n, far) -> float:
+    """reverse-Z's finest Δz at z by a float32 neighbour of the stored d (not d's binade,
+    which for a subnormal d, at n ≈ 1e-45 z, is far finer than any float32 step)."""
+    return min(readings(z, n, far)[:2])
+
+
 def _near_ok(args, fmt, n) -> bool:
+    """n in (0, nearest], where the choice does the job: unorm24 from 5.1's smallest on,
+    reverse-Z where its Δz (any reading) is within the gap (r351: at n = 1e-45 z, d rounds to
+    float32 0 and Δz was 700 against a gap of 0.001, and passed)."""
     z, gap, far, nearest = args
-    if not 0 < n <= nearest * (1 + 1e-9):
+    if not 0 < n <= nearest * (1 + NEAR_ROUNDING):
         return False
+    if fmt == REVERSE:
+        return n < z and _reverse_finest(z, n, far) <= gap
     return fmt != UNORM or n >= near_bounds(z, gap, far, 24)[0] * (1 - 1e-6)
 
 
@@ -200,13 +219,15 @@ def explain_setup(args, expected, got) -> str:
     z, gap, far, nearest = args
     n_u = expected_near(z, gap, far, 24)
     fmt, n, dz = got
+    # yours with the digits that tell it from the bound it is judged by (r351 item 3)
+    bound = n_u if fmt == UNORM and n <= nearest else nearest
     # where only a near plane at z would do, "n ≥ 900" at z = 900 read as a usable one
-    need = f"n ≥ {num(n_u)}" if n_u < 0.99 * z else "a near plane at z itself"
+    need = f"n ≥ {num(n_u, n)}" if n_u < 0.99 * z else "a near plane at z itself"
     return (f"at z = {num(z)} with far = {num(far)}, surfaces {num(gap)} apart and nothing "
-            f"nearer than {num(nearest)}: unorm24 needs {need} (Δz at n = "
+            f"nearer than {num(nearest, n)}: unorm24 needs {need} (Δz at n = "
             f"{num(nearest)}: {num(resolution(z, nearest, far, 24))}), reverse-Z "
             f"resolves Δz = {num(expected_gap(z, nearest, far))} at n = {num(nearest)}, so the "
-            f'answer is "{expected[0]}"; yours is ("{fmt}", {num(n)}, {num(dz)})')  # fmt: skip
+            f'answer is "{expected[0]}"; yours is ("{fmt}", {num(n, bound)}, {num(dz)})')  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
@@ -228,12 +249,19 @@ def _fits(want_fmt, expected_fmts, test=None):
 
 
 def _beyond(args, got) -> bool:
-    return got[1] > args[3] * (1 + 1e-9)
+    return got[1] > args[3] * (1 + NEAR_ROUNDING)
+
+
+def _yours_beyond(args, got) -> str:
+    """The words "your near plane n lies beyond `nearest` = m", with the digits that tell them
+    apart (r351: "0.1 lies beyond nearest = 0.1")."""
+    n, nearest = got[1], args[3]
+    return f"your near plane {num(n, nearest)} lies beyond `nearest` = {num(nearest, n)}"
 
 
 def _words_beyond(args, expected, got) -> str:
     z, gap, far, nearest = args
-    return (f": your near plane {num(got[1])} lies beyond `nearest` = {num(nearest)}: it clips "
+    return (f": {_yours_beyond(args, got)}: it clips "
             f"geometry the scene shows. With n ≤ {num(nearest)} unorm24 resolves at best Δz = "
             f"{num(resolution(z, nearest, far, 24))} at z, more than the gap: compare 5.1's near "
             "plane with `nearest` before you choose unorm24")  # fmt: skip
@@ -251,8 +279,8 @@ def _words_unorm_does(args, expected, got) -> str:
     z, gap, far, nearest = args
     return (f": unorm24 does it here, with any near plane from "
             f"{num(expected_near(z, gap, far, 24))} to {num(nearest)} (5.1), and is preferred: "
-            "its depth and stencil share 32 bits a pixel. Compare 5.1's near plane with "
-            "`nearest` first")  # fmt: skip
+            "with the stencil the scene needs, its format is nominally 32 bits a pixel, "
+            "reverse-Z's 64. Compare 5.1's near plane with `nearest` first")  # fmt: skip
 
 
 def _words_reverse_does(args, expected, got) -> str:
@@ -308,12 +336,86 @@ def _dz_wrong(args, expected, got) -> bool:
     )
 
 
+def _reverse_dz_as(reading):
+    """A reverse-Z or "neither" answer whose Δz is ``reading(z, n, far)`` within 1 %, not what
+    reverse-Z resolves there (r351's half-named: each was told only the wrong choice or the
+    symptom)."""
+
+    def fits(args, expected, got):
+        z, _, far, _ = args
+        fmt, n, dz = got
+        if fmt not in (REVERSE, NEITHER) or expected[0] == UNORM or not 0 < n < z:
+            return False
+        lo, hi = _resolves(REVERSE, z, n, far)
+        with np.errstate(all="ignore"):
+            said = [v for v in reading(z, n, far) if math.isfinite(v) and v > 0]
+        return not lo <= dz <= hi and any(abs(dz - v) <= 0.01 * v for v in said)
+
+    return fits
+
+
+def _step_at_one(z, n, far):
+    """Δz with float32's step at depth 1, np.spacing(np.float32(1)) = 2^-23, for the one at d
+    (2^-24, the step below 1, is unorm24's Δz within 1 %: "the other buffer's")."""
+    return [2.0**-23 / reverse_slope(z, n, far)]
+
+
+def _swapped(z, n, far):
+    """5.2's Δz called as reverse_z_gap(near, z, far)."""
+    try:
+        return list(gap_bounds(n, z, far)) + [expected_gap(n, z, far)]
+    except (ValueError, ZeroDivisionError, FloatingPointError):
+        return []
+
+
+def _reverse_too_close(args, expected, got) -> bool:
+    """reverse-Z's near plane so close that d falls to float32's subnormals (or 0): its Δz
+    is no longer a fixed share of z (1 − z/f) and exceeds the gap (r351: n = 1e-45 z)."""
+    z, gap, far, nearest = args
+    n = got[1]
+    if not (got[0] == expected[0] == REVERSE and 0 < n < z and not _beyond(args, got)):
+        return False
+    return _reverse_finest(z, n, far) > gap
+
+
+def _words_reverse_too_close(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    n = got[1]
+    d = (n / z - n / far) / (1 - n / far)
+    return (f": at your near plane {num(n)} reverse-Z stores d = {d:.3g} for z, "
+            # "float32" would read as blaming the student's arithmetic (see FORWARD's note)
+            f"{'stored as 0' if np.float32(d) == 0 else 'stored below 2^-126, as a subnormal'}, "
+            "where the buffer's steps no longer shrink with d: it resolves Δz = "
+            f"{num(_reverse_finest(z, n, far))} at z, more than the gap {num(gap)}. Your choice is "
+            "right; its near plane does not do the job")  # fmt: skip
+
+
+def _words_unorm_too_close(args, expected, got) -> str:
+    """Each number with the digits that tell it from the one it is compared with (r351 item 3:
+    a near plane just short of 5.1's printed alike)."""
+    z, gap, far, _ = args
+    n, need = got[1], expected_near(z, gap, far, 24)
+    dz = num(resolution(z, n, far, 24), gap) if 0 < n < z else "—"
+    return (f": at your near plane {num(n, need)} unorm24 resolves Δz = {dz}, more than the "
+            f"gap {num(gap)}: it needs n ≥ {num(need, n)} (5.1)")  # fmt: skip
+
+
 MISTAKES = [
     Mistake("float32 forward", ": float32 without reverse-Z stores z_win, near 1 for far "
             "surfaces, where float32's step is 2^-24, no finer than unorm24's 1/(2^24 − 1): it "
             "buys nothing there. Reverse-Z stores d = 1 − z_win, near 0 for far surfaces, where "
             "float32's steps are tiny (lesson 05b, §4)",
             fits=lambda a, e, g: g[0] == FORWARD),
+    Mistake("reverse-Z step at 1", lambda a, e, g: (
+        f": your Δz {num(g[2])} is float32's step at depth 1 over the slope: reverse-Z stores "
+        f"d ≈ {(g[1] / a[0] - g[1] / a[2]) / (1 - g[1] / a[2]):.3g} for z, where float32's "
+        "step is far finer (np.spacing(np.float32(d)), 5.2): with it, reverse-Z resolves Δz = "
+        f"{num(expected_gap(a[0], g[1], a[2]))}"), fits=_reverse_dz_as(_step_at_one)),
+    Mistake("reverse_z_gap swapped", lambda a, e, g: (
+        f": your Δz {num(g[2])} is reverse_z_gap(near, z, far), its first two arguments "
+        "swapped: call reverse_z_gap(z, near, far), which gives "
+        f"{num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
+        fits=_reverse_dz_as(_swapped)),
     Mistake("beyond nearest", _words_beyond, fits=_fits(UNORM, (REVERSE, NEITHER), _beyond)),
     Mistake("unorm24 too coarse", _words_too_coarse, fits=_fits(UNORM, (REVERSE, NEITHER))),
     Mistake("unorm24 preferred", _words_unorm_does, fits=_fits(REVERSE, (UNORM,))),
@@ -321,13 +423,15 @@ MISTAKES = [
     Mistake("neither, reverse-Z does", _words_reverse_does, fits=_fits(NEITHER, (REVERSE,))),
     Mistake("reverse-Z too coarse", _words_reverse_short, fits=_fits(REVERSE, (NEITHER,))),
     Mistake("reverse-Z near beyond nearest", lambda a, e, g: (
-        f": your near plane {num(g[1])} lies beyond `nearest` = {num(a[3])}: it clips geometry "
+        f": {_yours_beyond(a, g)}: it clips geometry "
         "the scene shows, and buys reverse-Z nothing (its Δz hardly depends on n)"),
         fits=lambda a, e, g: g[0] == e[0] != UNORM and _beyond(a, g)),
-    Mistake("unorm24 near too close", lambda a, e, g: (
-        f": at your near plane {num(g[1])} unorm24 resolves Δz = "
-        f"{num(resolution(a[0], g[1], a[2], 24)) if 0 < g[1] < a[0] else '—'}, more than the "
-        f"gap: it needs n ≥ {num(expected_near(a[0], a[1], a[2], 24))} (5.1)"),
+    Mistake("unorm24 near beyond nearest", lambda a, e, g: (
+        f": {_yours_beyond(a, g)}: it clips geometry the scene shows. unorm24 is right, at "
+        f"any near plane from {num(expected_near(*a[:3], 24))} (5.1) to `nearest` itself"),
+        fits=lambda a, e, g: g[0] == e[0] == UNORM and _beyond(a, g)),
+    Mistake("reverse-Z near too close", _words_reverse_too_close, fits=_reverse_too_close),
+    Mistake("unorm24 near too close", _words_unorm_too_close,
         fits=lambda a, e, g: g[0] == e[0] == UNORM and 0 < g[1] <= a[3]
         and not _near_ok(a, UNORM, g[1])),
     Mistake("dz of the other buffer", _dz_words("that Δz is the other buffer's"),
@@ -365,7 +469,8 @@ def draw_setup(ax, case, got):
         artists += ax.plot([], [], " ", label=f'yours: "{got[0]}", n {num(got[1])}: off this plot')
     ax.set_xlim(lo, hi)
     ax.set_xlabel(f"near plane n (z = {num(z)}, far = {num(far)})")
-    ax.set_ylabel("smallest resolved gap Δz at z")
+    # short: the long label reached the failure's two-line title (r351 item 7)
+    ax.set_ylabel("Δz resolved at z")
     # under the axes, as 5.3's: beside them, "yours" made the figure wider than a notebook column
     artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.2)))
     return artists

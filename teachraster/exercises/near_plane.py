@@ -252,9 +252,11 @@ def explain_near(args, expected, got) -> str:
                    "step apart, so both can round to one stored value and z-fight")  # fmt: skip
     elif got > hi:
         # r84 05-1: "any near plane from lo to hi tells them apart" read as if yours did not
-        verdict = (f"finer than needed: yours tells them apart too, but lies further out than "
-                   f"the smallest near plane that does, losing precision elsewhere; the check "
-                   f"accepts {_num(lo, got, hi)} to {_num(hi, got, lo)}, the smallest by any "
+        # r351 item 2: Δz falls with n at every depth: a farther near plane costs no precision,
+        # it clips the geometry between the two planes (5.4's words)
+        verdict = (f"farther than needed: yours tells them apart too, but lies further out than "
+                   f"the smallest near plane that does, and clips any geometry between the two; "
+                   f"the check accepts {_num(lo, got, hi)} to {_num(hi, got, lo)}, the smallest by any "
                    "reading of whole steps up to 1 % further out")  # fmt: skip
     else:
         verdict = "right"
@@ -303,6 +305,41 @@ ROUNDS_APART = Mistake(
     fits=_rounds_apart,
 )
 
+
+def _rounded_to(x: float, got: float) -> int | None:
+    """The significant digits (1 to 6) to which ``x`` rounded down or to nearest gives
+    ``got``, or None."""
+    if not (np.isfinite(got) and 0 < got < x):
+        return None
+    for k in range(1, 7):
+        unit = 10.0 ** (np.floor(np.log10(x)) - k + 1)
+        for r in (np.floor(x / unit) * unit, np.round(x / unit) * unit):
+            if abs(r - got) <= 1e-9 * x:
+                return k
+    return None
+
+
+def _rounded_down(args, expected, got) -> bool:
+    """r340/r351: the smallest near plane rounded down to a few digits (0.15 for 0.153), which
+    falls short; it was told "only by luck"."""
+    z, gap, far, bits = args
+    lo = _bounds(float(z), float(gap), float(far), int(bits))[0]
+    return (
+        bool(np.isfinite(got)) and got < lo * (1 - 1e-6) and _rounded_to(expected, got) is not None
+    )
+
+
+ROUNDED_DOWN = Mistake(
+    "rounded down",
+    lambda a, e, g: (
+        f": your n is the smallest near plane, {num(e, g)}, rounded down to "
+        f"{_rounded_to(e, g)} significant digit{'s' if _rounded_to(e, g) > 1 else ''}: that lies "
+        "nearer than the smallest, where the two surfaces' window depths are less than a step "
+        "apart. Round up, or keep every digit"
+    ),
+    fits=_rounded_down,
+)
+
 RANGE = Mistake("range", ": a near plane lies between the eye and the surfaces, 0 < n < z",
                 fits=_out_of_range, symptom=True)  # fmt: skip
 
@@ -321,7 +358,7 @@ def draw_near(ax, case, got):
     artists.append(ax.axhline(gap, color="#888888", linestyle=":", label=f"gap {num(gap)}"))
     artists.append(ax.axvline(expected, color="#2b7bba",
                               label=f"smallest n (expected) {num(expected, got)}"))  # fmt: skip
-    # r295 S-1: the band the check accepts, which "finer than needed" speaks of
+    # r295 S-1: the band the check accepts, which "farther than needed" speaks of
     first, last = _bounds(float(z), float(gap), float(far), int(bits))
     artists.append(
         ax.axvspan(
@@ -356,7 +393,7 @@ def draw_near(ax, case, got):
 
 SAFE_NEAR = Exercise(
     "safe_near", near_cases, as_number, same_near, explain_near, _rule,
-    variant_mistakes(_variants, MISTAKES, (ROUNDS_APART, RANGE)), draw=draw_near,
+    variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, ROUNDS_APART, RANGE)), draw=draw_near,
     # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
     answers=(PackageAnswer(expected_near, words=CHECKER_WORDS),), hints=(
         # r39 05-3: the first wrong try printed the inequality the task asks to derive
