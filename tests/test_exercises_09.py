@@ -1846,7 +1846,8 @@ def test_r23_text_fixes():
     # r24 D-3: lesson 12 never says "plus", and prints its additive mode on a straight colour
     # r25 D-4: lesson 12's "over" mode is the straight pair, over only on an opaque destination
     assert 'prints only *over* (its "premultiplied" mode; its "over" mode is the straight' in atop
-    assert "*over* only on an opaque destination" in atop, atop
+    # r359 C1: its colour only, its alpha wrong even there (as 9.2a's text says)
+    assert "*over*'s only on an opaque destination, its alpha not even there" in atop, atop
     assert "is their *plus* when the colours are premultiplied" in atop, atop
     assert "PDF composites with *over* alone, its blend modes aside" in atop, atop
     lesson = " ".join(_lesson_12_text().split())
