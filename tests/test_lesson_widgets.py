@@ -1204,7 +1204,7 @@ def test_filter_explorer_panels_fit_the_column_apart():
 
 def test_filter_explorer_ring_whole_and_a_drag_keeps_the_status_line():
     """Review r246 09 FIG2: on the grazing floor at 89° with anisotropic the worst pixel lies
-    in the bottom row, and its ring was half cut off by the panel's edge: it is drawn whole.
+    in the bottom row (off the middle stripe: r336 S9), and its ring was half cut off by the panel's edge: it is drawn whole.
     S1: during a drag the status line grew by "(on release)" and wrapped, pushing the figure
     down a line while the mouse was held; the draft's line is laid out as the full one (the
     same text outside boxes of fixed width, each box's text no wider than its box)."""
@@ -1216,7 +1216,14 @@ def test_filter_explorer_ring_whole_and_a_drag_keeps_the_status_line():
                         backend="image")  # fmt: skip
     try:
         error = ex.panels["error"]
-        assert error.worst[0] == ex.height - 1  # on the panel's edge (the reader's 0.324)
+        assert error.worst[0] == ex.height - 1  # on the panel's edge
+        # r336 S9: the bright middle stripe (no filter's defect, §5) held the maximum, 0.324,
+        # and the ring; the ring's search leaves its two columns out, and the note says so
+        middle = (ex.width // 2 - 1, ex.width // 2)
+        assert error.worst[1] not in middle and error.ringed < error.maximum
+        largest = np.abs(ex.image - ex.truth).max(axis=-1)  # the panel's error, per pixel
+        assert error.maximum == np.nanmax(largest[:, middle[0] : middle[1] + 1])
+        assert error.note.get_text() == f"max {error.ringed:.3g} (ringed), middle stripe left out"
         assert error.marker.get_clip_on() is False
         full = ex._info_html()
         ex.truth = None  # what a draft at a tilt without its footprint mean shows

@@ -3286,6 +3286,11 @@ def test_09_r257_small_pointer_label_clamp_and_zoom_label():
     nine = next(t for t in text if t.startswith("## 9. Tilt it yourself"))
     assert "where $\\lambda' \\le 0$ it shows level 0, the level clamped" in nine
     assert 'its "u … to …: … texels across" label' in " ".join(text)
+    # review r336 S9: the explorer's ring leaves the middle stripe out, and the text says so;
+    # M3: nearest_mipmap_linear is drawn, among the other mipmap filters (§7)
+    assert "A ring marks the worst pixel off the middle stripe (§5: no filter's defect)" in nine
+    drawn = next(t for t in text if "mip_filters = [[" in t)
+    assert '["nearest_mipmap_linear", "trilinear"]]' in drawn and "ax.imshow(" in drawn
 
 
 def test_09_summary_claim_more_reads_do_not_always_buy_accuracy():

@@ -459,6 +459,9 @@ def test_a_magnified_footprint_draws_the_2x2_texels_bilinear_reads():
     fig, ax = plt.subplots()
     art = plot_footprint(ax, fp)
     square = art["square"]
+    # review r336 S4: the one probe's dot, at the pixel's centre, over the ellipse and square
+    np.testing.assert_allclose(art["dots"].get_xydata(), [[0.0, 0.0]])
+    assert art["dots"].get_zorder() > max(art["ellipse"].get_zorder(), square.get_zorder())
     assert isinstance(square, Rectangle) and square.get_linestyle() == "--"
     assert (square.get_width(), square.get_height()) == (2.0, 2.0)
     np.testing.assert_allclose(square.get_xy(), fp.bilinear - fp.centre)

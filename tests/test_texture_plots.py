@@ -69,6 +69,12 @@ def test_plot_pyramid_shows_every_level():
     art = plot_pyramid(ax, levels)
     assert len(art.images) == len(levels) == 6
     assert art.labels[0].get_text() == "0: 32×32"
+    # review r336 S3: the levels too small for a label (4 and 5 here) drawn again, enlarged,
+    # each with its size, in the panel's corner beside them
+    texts = [t.get_text() for t in art.labels]
+    assert "4–5, drawn 4× larger:" in texts and {"4: 2×2", "5: 1×1"} <= set(texts)
+    (x0, x1, y1, y0), (_, a1, _, _) = art.enlarged[0].get_extent(), art.images[4].get_extent()
+    assert len(art.enlarged) == 2 and x1 - x0 == y1 - y0 == 4 * 2 and x0 > a1
 
 
 def test_plot_filters_reports_rms_against_truth():

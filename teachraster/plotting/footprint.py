@@ -107,7 +107,8 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     bilinear read of level 0 (``fp.bilinear``: magnified), what it reads is drawn instead of
     the square of side ρ: the 2 × 2 texels of that read, dashed (and filled: the one probe).
 
-    Returns the dict of artists: ``parallelogram``, ``ellipse``, ``square``, ``probes``.
+    Returns the dict of artists: ``parallelogram``, ``ellipse``, ``square``, ``probes`` (the
+    centres), ``dots`` (drawn at them, over everything).
     """
     a, b = fp.axis_x, fp.axis_y
     shift = fp.centre if centred else np.zeros(2)
@@ -153,7 +154,8 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
     # Overlapping probes (spaced P_max / (N + 1), each P_max / N wide) merged into one band:
     # two shades in turn, each outlined, and a dot at each centre, so that they can be
     # counted. One probe is trilinear's own read: filled only, its outline would hide the
-    # orange.
+    # orange; its dot is drawn too, over everything (review r336 S4: the near panel's one
+    # probe had no dot, and the ellipse's line would have covered one drawn under it).
     green = OKABE_ITO["bluish_green"]
     for k, p in enumerate(probes):
         face = to_rgba(green if k % 2 == 0 else PROBE_DARK, 0.35)
@@ -162,8 +164,11 @@ def plot_footprint(ax, fp: Footprint, texture=None, *, margin: float = 1.2, lege
                                zorder=2,
                                label=(f"{fp.probes} anisotropic probes, λ = {fp.probe_lam:.1f}"
                                       if k == 0 else None)))  # fmt: skip
-    if len(probes) > 1:
-        ax.plot(*np.asarray(probes).T, "o", ms=4, color=PROBE_DARK, zorder=4)
+    # at the probes' own centres (a magnified pixel's one read: its sample point, not the
+    # 2 x 2 texels' middle), over the ellipse and the squares' outlines
+    (art["dots"],) = ax.plot(*np.asarray(fp.probe_centres - shift).T, "o",
+                             ms=4 if len(probes) > 1 else 6, color=PROBE_DARK, mec="white",
+                             mew=0.8, zorder=6)  # fmt: skip
     art["probes"] = fp.probe_centres
     what = "texels from the centre" if centred else "texels"
     ax.set(xlim=(lo[0], hi[0]), ylim=(hi[1], lo[1]), aspect="equal",

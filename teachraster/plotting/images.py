@@ -225,7 +225,9 @@ def abs_error(a, b) -> np.ndarray:
 
 @dataclass
 class HeatmapArtists(Artists):
-    """Artists of :func:`plot_error_heatmap`; ``maximum`` is the reported largest error."""
+    """Artists of :func:`plot_error_heatmap`; ``maximum`` is the largest error, ``ringed``
+    the ringed one's, which the note states (the same unless ``skip_columns`` holds the
+    maximum)."""
 
     image: object
     marker: Line2D
@@ -239,26 +241,35 @@ class HeatmapArtists(Artists):
     show_note: bool = True  # False: the title alone states the maximum, the ring marks it
     round_range: bool = False  # True: the colour range ends on a round number (round_up)
     vmax: float | None = None  # a fixed top of the colour range (images compared side by side)
+    #: columns the ring's search leaves out, and the note's words for them: a stripe every
+    #: filter shows, which is no filter's defect (FilterExplorer's middle line, review r336 S9)
+    skip_columns: tuple[int, ...] = ()
+    skipped: str = ""
+    ringed: float = float("nan")  # the ringed pixel's error, the note's "max"
 
     def update(self, a, b) -> None:
         """Show the error of new images (same artists; the colour bar follows)."""
         err = abs_error(a, b)
-        m = quiet_nanmax(err)
-        self.maximum = m
+        self.maximum = quiet_nanmax(err)
+        searched = err
+        if self.skip_columns:
+            searched = err.copy()
+            searched[:, list(self.skip_columns)] = np.nan
+        m = self.ringed = quiet_nanmax(searched)
         self.worst = None
         self.image = set_image(self.image, err)
         if self.colorbar is not None and self.colorbar.mappable is not self.image:
             self.colorbar.update_normal(self.image)
         h, w = err.shape
         # A zero (or no) error still needs a valid, non-empty colour range.
-        top = m if np.isfinite(m) and m > 0 else 1.0
+        top = self.maximum if np.isfinite(self.maximum) and self.maximum > 0 else 1.0
         if self.vmax is not None:
             top = self.vmax
         elif self.round_range:
             top = round_up(top)
         self.image.set_clim(0.0, top)
         if np.isfinite(m):
-            i, j = np.unravel_index(np.nanargmax(err), err.shape)
+            i, j = np.unravel_index(np.nanargmax(searched), err.shape)
             self.worst = (int(i), int(j))
             self.marker.set_data([j + 0.5], [i + 0.5])
             self.marker.set_markersize(ring_size(self.marker))
@@ -268,7 +279,8 @@ class HeatmapArtists(Artists):
                 self.note.set_position((-fs(1.2) if j > w / 2 else fs(1.2),
                                         fs(1.2) if i > h / 2 else -fs(1.2)))  # fmt: skip
                 self.note.set_horizontalalignment("right" if j > w / 2 else "left")
-            self.note.set_text(f"max {m:.3g}" + (" (ringed)" if self.fixed_note else ""))
+            self.note.set_text(f"max {m:.3g}" + (" (ringed)" if self.fixed_note else "")
+                               + (f", {self.skipped}" if self.skip_columns else ""))  # fmt: skip
             # a zero maximum has no pixel to point at: every pixel is one (all w equal)
             self.marker.set_visible(m > 0)
             self.note.set_visible(m > 0 and self.show_note)

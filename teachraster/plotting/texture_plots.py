@@ -244,15 +244,17 @@ def plot_levels_read(ax, read: LevelsRead, n_levels: int, *, colorbar: bool = Tr
 # -- the pyramid -------------------------------------------------------------------------------
 @dataclass
 class PyramidArtists(Artists):
-    """One image and one label per level."""
+    """One image per level, the labels, and the small levels' enlarged copies."""
 
     images: list = field(default_factory=list)
     labels: list = field(default_factory=list)
+    enlarged: list = field(default_factory=list)
 
 
-def plot_pyramid(ax, levels, *, gap: float = 0.04) -> PyramidArtists:
+def plot_pyramid(ax, levels, *, gap: float = 0.04, zoom: int = 4) -> PyramidArtists:
     """A mip pyramid laid out the classic way: level 0, then each smaller level to its right,
-    stacked top to bottom, all at the same texel scale.
+    stacked top to bottom, all at the same texel scale; the levels too small to carry a label
+    are drawn again ``zoom`` times larger in the corner beside them, each with its size.
 
     Parameters
     ----------
@@ -260,19 +262,18 @@ def plot_pyramid(ax, levels, *, gap: float = 0.04) -> PyramidArtists:
     levels : list of (h, w) or (h, w, 3) arrays (``tr.mipmap(texture)``)
     gap : float
         Space between levels, as a fraction of level 0's width.
+    zoom : int
+        How much larger the small levels' second copies are drawn.
     """
     h0, w0 = levels[0].shape[:2]
     pad = gap * w0
     out = PyramidArtists()
     x, y = w0 + pad, 0.0
-    small = []  # levels too small for a label of their own: one label for them all
+    small = []  # levels too small for a label of their own: drawn again, enlarged
     for i, lv in enumerate(levels):
         h, w = lv.shape[:2]
         x0, y0 = (0.0, 0.0) if i == 0 else (x, y)
-        data = rgba_image(lv) if lv.ndim == 3 else lv
-        kw = {} if lv.ndim == 3 else {"cmap": "gray", "vmin": 0.0, "vmax": 1.0}
-        out.images.append(ax.imshow(data, extent=(x0, x0 + w, y0 + h, y0),
-                                    interpolation="nearest", **kw))  # fmt: skip
+        out.images.append(_level_image(ax, lv, x0, y0))
         if i == 0 or h * 8 >= h0:  # label the levels big enough to carry one
             label = f"{i}: {w}×{h}"
             if i == 0:  # below level 0; the others to their right, clear of the next level
@@ -280,21 +281,52 @@ def plot_pyramid(ax, levels, *, gap: float = 0.04) -> PyramidArtists:
             else:
                 where = {"x": x0 + w + pad * 0.5, "y": y0 + h / 2, "ha": "left", "va": "center"}
             out.labels.append(ax.text(s=label, fontsize=fs(0.7), **where))
-        elif not small:
-            small.append((i, x0 + w + pad * 0.5, y0, w, h))
+        else:
+            small.append(i)
         if i > 0:
             y += h + pad * 1.2
+    right, foot = x + w0 * 0.95, max(h0 + 3 * pad, y) + 2 * pad
     if small:
-        first, sx, sy, w, h = small[0]
-        last = levels[-1].shape[:2]
-        out.labels.append(ax.text(sx, sy, f"{first}–{len(levels) - 1}: {w}×{h} … "
-                                  f"{last[1]}×{last[0]}", fontsize=fs(0.7), ha="left",
-                                  va="top"))  # fmt: skip
-    ax.set_xlim(-pad, x + w0 * 0.95)
-    ax.set_ylim(max(h0 + 3 * pad, y) + 2 * pad, -pad)
+        # review r336 S3: levels 4-7 of a 128² texture were specks under one label, beside
+        # an empty third of the panel; that corner now shows them enlarged, each named
+        first = levels[small[0]].shape[:2]
+        top = sum(levels[k].shape[0] + pad * 1.2 for k in range(1, small[0]))
+        end, low = _enlarged(ax, levels, small, x + first[1] + 2 * pad, top, zoom, out)
+        right, foot = max(right, end), max(foot, low)
+    ax.set_xlim(-pad, right)
+    ax.set_ylim(foot, -pad)
     ax.set_aspect("equal")
     ax.set_axis_off()
     return out
+
+
+def _level_image(ax, lv, x0: float, y0: float, scale: float = 1.0):
+    """One level drawn with its top left corner at (``x0``, ``y0``), ``scale`` units a texel."""
+    h, w = lv.shape[:2]
+    data = rgba_image(lv) if lv.ndim == 3 else lv
+    kw = {} if lv.ndim == 3 else {"cmap": "gray", "vmin": 0.0, "vmax": 1.0}
+    return ax.imshow(data, extent=(x0, x0 + w * scale, y0 + h * scale, y0),
+                     interpolation="nearest", **kw)  # fmt: skip
+
+
+def _enlarged(ax, levels, small: list, x0: float, top: float, zoom: int, out) -> tuple:
+    """The ``small`` levels again, ``zoom`` times larger, in a row from (``x0``, ``top``)
+    under a heading, each with its size below it; returns the row's right end and the
+    labels' foot."""
+    w0 = levels[0].shape[1]
+    out.labels.append(ax.text(x0, top, f"{small[0]}–{small[-1]}, drawn {zoom}× larger:",
+                              fontsize=fs(0.7), ha="left", va="top"))  # fmt: skip
+    base = top + 0.1 * w0 + levels[small[0]].shape[0] * zoom  # one baseline, below the heading
+    x = x0
+    for k in small:
+        h, w = levels[k].shape[:2]
+        slot = max(w * zoom, 0.3 * w0)  # at least as wide as the label under it
+        out.enlarged.append(_level_image(ax, levels[k], x + (slot - w * zoom) / 2,
+                                         base - h * zoom, zoom))  # fmt: skip
+        out.labels.append(ax.text(x + slot / 2, base + 0.02 * w0, f"{k}: {w}×{h}",
+                                  fontsize=fs(0.7), ha="center", va="top"))  # fmt: skip
+        x += slot + 0.02 * w0
+    return x, base + 0.12 * w0  # the labels' foot
 
 
 # -- filters side by side ----------------------------------------------------------------------

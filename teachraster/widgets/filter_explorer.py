@@ -123,6 +123,20 @@ def explorer_axes(fig, height: int, width: int) -> tuple[list, list, tuple[float
     return panels, bars, ((w + pad + bar) / w, -0.22 * s / h)
 
 
+def middle_columns(width: int) -> tuple[int, ...]:
+    """The two pixel columns either side of the square's middle line, x = ``width`` / 2.
+
+    The square is centred in both scenes, so that line is u = repeats / 2: a check border
+    (and, for an even count, a wrap of the texture). It falls exactly between two columns:
+    no pixel straddles it, so the box average keeps full contrast on both sides, while every
+    filter that blends texels ramps across it: a bright stripe in every filter's error that
+    is no filter's defect (lesson 09 §5). The ring's search leaves it out (review r336 S9: on
+    the grazing floor at 89° it ringed the stripe's foot, away from the far checks). With an
+    odd width a column straddles the line, and there is no stripe.
+    """
+    return (width // 2 - 1, width // 2) if width % 2 == 0 else ()
+
+
 def _fixed(html: str, chars: int, align: str = "left") -> str:
     """``html`` in an inline box at least ``chars`` characters wide, aligned ``align`` in it
     (a number right-aligned, so that its padding does not open a gap inside the phrase after
@@ -271,6 +285,9 @@ class FilterExplorer:
                                             title=False, cax=bars[1], note_at=note_at,
                                             vmax=ERROR_RANGE),
             }  # fmt: skip
+            error = self.panels["error"]
+            error.skip_columns, error.skipped = middle_columns(width), "middle stripe left out"
+            error.update(self.image, self.truth)
             for bar in bars:  # read from the back of the room: the size of axis labels
                 bar.tick_params(labelsize=mpl.rcParams["axes.labelsize"])
             # the title says what the colours are; the label's row holds the maximum (the
@@ -301,7 +318,7 @@ class FilterExplorer:
             "Tilt until the checks are smaller than a pixel, then compare filters. On the "
             "square the camera sees no footprint more than three times as long as wide, on the "
             "grazing floor up to 16 times: there max aniso matters. The ring in the error "
-            'panel marks the worst pixel, its error the "max" under it.',
+            'panel marks the worst pixel off the middle stripe, its error the "max" under it.',
         )
         controls = control_rows([self.tilt, self.filter], [self.view, self.max_anisotropy])
         self.widget = projector_text(widgets.VBox([title, controls, *info_widgets,
