@@ -3583,3 +3583,76 @@ KINDS.update({
     "depth set-up with its near plane just beyond nearest": "unorm24 near beyond nearest",
     "depth set-up, reverse-Z's near plane at 1e-45 z": "reverse-Z near too close",
 })  # fmt: skip
+
+
+# == r355 (exercise 2, span): wrongly passed, misnamed and half-named students ====================
+
+
+def _span_student(swap_xy=False, strict=False, area=True, flat="top", y_offset=0.5,
+                  split=True, long_left=False, stop=0, rounding=None):  # fmt: skip
+    """A float64 student of ``span``, right but for the knobs: sort by y, the long edge's
+    crossing and the short edge's (the split), the top-left rounding. ``flat`` is the
+    horizontal edge that owns its centres ("top", "bottom", or "both": no rule)."""
+
+    def span(xy, row):
+        xy = np.asarray(xy, dtype=float)[:, ::-1] if swap_xy else np.asarray(xy, dtype=float)
+        y = row + y_offset
+        v = sorted((tuple(p) for p in xy.tolist()), key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        left = right = rounding or (lambda x: math.ceil(x - 0.5))
+        if area and (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0:
+            return 0, 0
+        if not y1 <= y <= y3:
+            return 0, 0
+        if y1 == y2 == y or y2 == y3 == y:  # along a horizontal edge
+            kind = "bottom" if y3 == y else "top"
+            if flat in (kind, "both") or y1 == y3:
+                on = [x for x, vy in v if vy == y]
+                return left(min(on)), right(max(on)) + stop
+            return 0, 0
+
+        def at(a, b):
+            return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+        if strict:
+            xs = [at(a, b) for a, b in ((v[0], v[1]), (v[1], v[2]), (v[0], v[2]))
+                  if a[1] < y < b[1]]  # fmt: skip
+            return (left(min(xs)), right(max(xs))) if xs else (0, 0)
+        long_x = at(v[0], v[2])
+        if y1 == y2:
+            short_x = at(v[1], v[2])
+        else:
+            short_x = at(v[0], v[1]) if y <= y2 or not split else at(v[1], v[2])
+        if long_left:
+            return left(long_x), right(short_x)
+        return left(min(long_x, short_x)), right(max(long_x, short_x)) + stop
+
+    return span
+
+
+R355 = {
+    "span, strict min < y < max": ("span", _span_student(strict=True), "strictly between", "strict"),
+    "span without the area test": ("span", _span_student(area=False), "zero area", "no area test"),
+    "span with x and y swapped": ("span", _span_student(swap_xy=True), "swapped x and y",
+                                  "x and y swapped"),
+    "span, horizontal rule reversed": ("span", _span_student(flat="bottom"),
+                                       "the wrong way round: a top edge", "horizontal reversed"),
+    "span at y = row − ½": ("span", _span_student(y_offset=-0.5), "y = row − ½", "row − ½"),
+    "span at y = row + 1": ("span", _span_student(y_offset=1.0), "y = row + 1,", "row + 1"),
+    "span at y = row + 1.5": ("span", _span_student(y_offset=1.5), "y = row + 1.5", "row + 1.5"),
+    "span without the split": ("span", _span_student(split=False), "(the split)", "no split"),
+    "span, stop + 1": ("span", _span_student(stop=1), "your stop is one column too far right",
+                       "stop + 1"),
+    "span, (first, last)": ("span", _span_student(stop=-1), "(first, last)", "last"),
+    "span, the long edge always left": ("span", _span_student(long_left=True),
+                                        "middle vertex lies left of it", "long edge left"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R355.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R355.items()})
+#: r355 C2: int(x + ½) and no bottom-edge rule: the rounding variants keep that rule, so the
+#: missing one is named too
+TWO_MISTAKES["span, ties reversed and no bottom-edge rule"] = (
+    "span",
+    _span_student(flat="both", rounding=lambda x: math.floor(x + 0.5)),
+    ("ties go the wrong way round", "a bottom edge owns none"),
+)

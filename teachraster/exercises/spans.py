@@ -15,6 +15,7 @@ the 1/256-px grid, so :class:`fractions.Fraction` holds every number exactly).
 from __future__ import annotations
 
 import copy
+import dataclasses
 import math
 from fractions import Fraction
 from functools import cache
@@ -64,10 +65,44 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, [row])
         out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
                     "end)", (xy, row), covered[row]))  # fmt: skip
-    out += _wide_cases()
-    # first (the drawing of a passing check): a row with covered centres on a vertex's line
-    first = next(k for k, case in enumerate(out) if case[2] and "vertex" in case[0])
+    out += _wide_cases() + _edge_cases()
+    # first (the drawing of a passing check, and the first failure most students see): a row
+    # with covered centres whose crossings of two slanted edges lie on centres (r355 S2: a row
+    # along a top edge, whose x_l and x_r are vertices, was called "the left edge")
+    first = next(k for k, case in enumerate(out) if case[2] and _slanted_tie(*case[1]))
     return [out[first]] + out[:first] + out[first + 1 :]
+
+
+def _slanted_tie(xy: np.ndarray, row: int) -> bool:
+    """The row's centre line crosses two slanted edges, each exactly on a centre."""
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    return (cross is not None and not _horizontal_edge(xy, row + 0.5)
+            and all((x - Fraction(1, 2)).denominator == 1 for x in cross))  # fmt: skip
+
+
+#: r355 M4, M5: rows no triangle above asks about. A middle vertex exactly on a centre line with
+#: slanted edges on both sides of it (a strict ``min(ay, by) < y < max(ay, by)`` drops the
+#: crossing there from both short edges, and passed every other row), in both windings and
+#: with the middle vertex right and left of the long edge; and a zero-area triangle lying along
+#: a centre line (without the area test its ends read as a horizontal edge's).
+EDGE_CASES = (
+    (
+        "a middle vertex on the centre line, slanted edges",
+        ((0.5, 0.5), (10.5, 5.5), (2.5, 10.5)),
+        5,
+    ),
+    ("a middle vertex on the centre line, slanted edges", ((9.5, 0.5), (0.5, 4.5), (7.25, 9.5)), 4),
+    ("a zero-area triangle along a centre line", ((0.5, 1.5), (5.5, 1.5), (3.25, 1.5)), 1),
+)
+
+
+def _edge_cases() -> list[tuple[str, tuple, frozenset]]:
+    out = []
+    for label, points, row in EDGE_CASES:
+        xy = np.array(points)
+        turn = "" if "zero-area" in label else f" ({winding(xy)})"
+        out.append((f"{label}{turn}, row {row}", (xy, row), _covered_rows(xy, [row])[row]))
+    return out
 
 
 #: Half the base of the wide cases' triangles: 5·10^11 px (their vertices stay on the 1/256-px
@@ -234,8 +269,10 @@ def _far_float32_fits(args, expected, got) -> bool:
         return False
     centre, near = min(moved) + 0.5, 4 * float(np.spacing(np.float32(far)))
     # where float32's steps pass a pixel (the 10^12-px triangle: 32768 px) every column is
-    # "near" a crossing: only float32's own span names it there
-    return near < 1 and min(abs(float(x) - centre) for x in xs) <= near
+    # "near" a crossing: only float32's own span names it there. r355 C3: a crossing exactly
+    # on a centre (a tie) is float64's off-by-one (stop + 1, (first, last)), not float32's
+    gap = min(abs(float(x) - centre) for x in xs)
+    return near < 1 and 0 < gap <= near
 
 
 def _far_float32_words(args, expected, got) -> str:
@@ -271,21 +308,87 @@ def _columns(lo, hi) -> frozenset:
 
 
 def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
-    """The columns typical wrong roundings give on ``row`` (exact crossings)."""
+    """The columns typical wrong solutions give on ``row`` (exact crossings). A rounding
+    variant keeps the bottom-edge rule and the area test (r355 C2: without them "ties
+    reversed" also gave a missing bottom-edge rule's answer, so that second mistake was never
+    named)."""
     out = {}
-    centre, top = crossings(xy, Fraction(2 * row + 1, 2)), crossings(xy, row)
+    y = Fraction(2 * row + 1, 2)
+    centre = crossings(xy, y)
     half = Fraction(1, 2)
+    bottom = _horizontal_edge(xy, y) == "bottom"
     if centre is not None:
         xl, xr = centre
-        # r73 02-1: int(x + ½), C's habit: centres right, ties the wrong way round (it passes
-        # every row without a tie, so it is no "sampled at x = col")
-        out["ties reversed"] = _columns(math.floor(xl + half), math.floor(xr + half))
-        out["corners"] = _columns(math.ceil(xl), math.ceil(xr))
-        out["right inclusive"] = _columns(math.ceil(xl - half), math.floor(xr - half) + 1)
-        out["left exclusive"] = _columns(math.floor(xl - half) + 1, math.ceil(xr - half))
-        out["rounded"] = _columns(round(xl), round(xr))
-    out["row top"] = frozenset() if top is None else _columns(math.ceil(top[0] - half),
-                                                               math.ceil(top[1] - half))  # fmt: skip
+        lo, hi = math.ceil(xl - half), math.ceil(xr - half)
+        rounded = {
+            # r73 02-1: int(x + ½), C's habit: centres right, ties the wrong way round (it
+            # passes every row without a tie, so it is no "sampled at x = col")
+            "ties reversed": _columns(math.floor(xl + half), math.floor(xr + half)),
+            "corners": _columns(math.ceil(xl), math.ceil(xr)),
+            "right inclusive": _columns(lo, math.floor(xr - half) + 1),
+            "left exclusive": _columns(math.floor(xl - half) + 1, hi),
+            "rounded": _columns(round(xl), round(xr)),
+            "stop + 1": _columns(lo, hi + 1),
+            "last": _columns(lo, hi - 1),
+        }
+        out.update({k: frozenset() if bottom else v for k, v in rounded.items()})
+        out["horizontal reversed"] = _horizontal_reversed(xy, row, lo, hi)
+    out.update(_edge_variants(xy, row))
+    for kind, dy in SHIFTS.items():  # the wrong line: the pixels' top, bottom, the next row
+        cross = crossings(xy, row + dy)
+        out[kind] = frozenset() if cross is None else _columns(math.ceil(cross[0] - half),
+                                                               math.ceil(cross[1] - half))  # fmt: skip
+    swapped = np.asarray(xy)[:, ::-1]
+    if np.ptp(swapped[:, 0]) < 10**6:  # (the 10^12-px triangle's swap: no span to hold)
+        out["x and y swapped"] = exact_columns(swapped, row)
+    return out
+
+
+#: The lines a student may intersect instead of the centre line y = row + ½ (r355: y = row − ½,
+#: row + 1 and row + 1.5 were named "row top" or "ends").
+SHIFTS = {"row top": Fraction(0), "row − ½": Fraction(-1, 2), "row + 1": Fraction(1),
+          "row + 1.5": Fraction(3, 2)}  # fmt: skip
+
+
+def _horizontal_reversed(xy, row, lo, hi) -> frozenset:
+    """The rule for a horizontal edge the wrong way round: a top edge's centres left out, a
+    bottom edge's covered (r355: named "row top")."""
+    return frozenset() if _horizontal_edge(xy, row + 0.5) == "top" else _columns(lo, hi)
+
+
+def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
+    """Wrong choices of the edges that bound the row, each right wherever it changes nothing:
+    crossings only strictly inside an edge, no area test, no split (the top-to-middle edge
+    used below the middle vertex too), the long edge always the left end (r355 M4, M5 and
+    the half-named students)."""
+    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y, half = Fraction(2 * row + 1, 2), Fraction(1, 2)
+    right = exact_columns(xy, row)
+    out = dict.fromkeys(("strict", "no area test", "no split", "long edge left"), right)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if area == 0:  # every vertex on one line: its crossings are its ends on this line
+        xs = [x for x, vy in v if vy == y] if y1 == y3 else [
+            a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+            for a, b in ((v[0], v[2]),) if y1 <= y <= y3]  # fmt: skip
+        if xs:
+            out["no area test"] = _columns(math.ceil(min(xs) - half), math.ceil(max(xs) - half))
+        return out
+    if not y1 <= y <= y3 or _horizontal_edge(xy, y):
+        return out
+
+    def at(a, b):
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+    strict = [at(a, b) for a, b in ((v[0], v[1]), (v[1], v[2]), (v[0], v[2]))
+              if a[1] < y < b[1]]  # fmt: skip
+    out["strict"] = (_columns(math.ceil(min(strict) - half), math.ceil(max(strict) - half))
+                     if strict else frozenset())  # fmt: skip
+    long_x = at(v[0], v[2])
+    no_split = at(v[0], v[1]) if y1 != y2 else at(v[1], v[2])
+    out["no split"] = _columns(*sorted((math.ceil(long_x - half), math.ceil(no_split - half))))
+    short_x = at(v[0], v[1]) if y <= y2 else at(v[1], v[2])
+    out["long edge left"] = _columns(math.ceil(long_x - half), math.ceil(short_x - half))
     return out
 
 
@@ -306,6 +409,33 @@ MISTAKES = {
     "its centre col + ½ lies between them, so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉",
     "row top": "you intersected the edges with y = row, the top of the pixels, not with the "
     "line of their centres, y = row + ½",
+    "row − ½": "you intersected the edges with y = row − ½, the centres of the row above, "
+    "not with this row's centre line, y = row + ½",
+    "row + 1": "you intersected the edges with y = row + 1, the bottom of the pixels, not "
+    "with the line of their centres, y = row + ½",
+    "row + 1.5": "you intersected the edges with y = row + 1.5, the centres of the row below, "
+    "not with this row's centre line, y = row + ½",
+    "x and y swapped": "you swapped x and y: a vertex is (x, y) = (xy[k, 0], xy[k, 1]), and a "
+    "raster line is a horizontal line, y = row + ½, whose crossings are x values",
+    "horizontal reversed": "your rule for a horizontal edge on the centre line is the wrong "
+    "way round: a top edge (the triangle below it) owns its centres, a bottom edge (the "
+    "triangle above it) owns none",
+    "stop + 1": "your stop is one column too far right: stop is the first column *not* "
+    "covered, one past the last covered one (the first end, first, is right)",
+    "last": "you returned (first, last), the last covered column as the second number: it is "
+    "stop, the first column *not* covered (last + 1)",
+    "strict": "you took a crossing only strictly between an edge's ends (min < y < max): "
+    "where the centre line passes through a vertex, both edges that meet there end on it and "
+    "a strict test drops its crossing from both; an edge includes its ends (≤)",
+    "no area test": "you treated the line as a triangle: a triangle of zero area covers "
+    "nothing, so test the area (the edge function of the three vertices) before the crossings",
+    "no split": "you used the edge from the top vertex to the middle one below the middle "
+    "vertex too: the edge that bounds the triangle on that side changes at the middle vertex "
+    "(the split), and below it runs from the middle vertex to the bottom one",
+    "long edge left": "you took the long edge's crossing (top vertex to bottom one) as the "
+    "left end: the long edge is the left one only when the middle vertex lies right of it; "
+    "here the middle vertex lies left of it, so the long edge bounds the span on the right "
+    "(take the smaller crossing as x_l)",
 }
 
 
@@ -314,6 +444,11 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
     xy, row = args
     y = row + 0.5
     cross = crossings(xy, Fraction(2 * row + 1, 2))
+    if cross is None and winding(xy) == "zero area":  # r355 M5: not "does not cross" a line on it
+        return (
+            f"the triangle ({_vertices(xy)}) has zero area (its vertices lie on one line), so "
+            f"row {row} covers no column; yours covers {_span_words(got)}"
+        )
     if cross is None:
         return (
             f"the centre line y = {num(y)} of row {row} does not cross this {winding(xy)} "
@@ -364,6 +499,15 @@ def _ends_fits(args, expected, got) -> bool:
     )
 
 
+def _ends_words(args, expected, got) -> str:
+    """Which end is off (r355 S3: "one end" left the student to work out which)."""
+    if got == expected - {min(expected)}:
+        return (f"your first is one column too far right: column {min(expected)}, whose "
+                "centre lies at or right of x_l, is the first covered one")  # fmt: skip
+    return (f"your stop is one column too far right: stop is the first column *not* covered, "
+            f"here {max(expected) + 1}")  # fmt: skip
+
+
 SYMPTOMS = (
     Mistake(
         "first and stop swapped",
@@ -372,14 +516,20 @@ SYMPTOMS = (
         "first covers nothing",
         fits=_swapped_fits,
     ),  # fmt: skip
-    Mistake("float32", _far_float32_words, fits=_far_float32_fits),
+    # r355 C3: named only where float32 explains every failure: a float64 (first, last) or
+    # y = row + 1 also misses the one far row where float32 moves an end, and was asked there
+    # whether it computed in float32
+    Mistake("float32", _far_float32_words, fits=_far_float32_fits, only_whole=True),
     Mistake("horizontal edge", _horizontal_words, fits=_horizontal_fits, symptom=True),
-    Mistake("ends", "one end of your span is off by one column", fits=_ends_fits, symptom=True),
+    Mistake("ends", _ends_words, fits=_ends_fits, symptom=True),
 )
 
 
 def _horizontal_edge(xy: np.ndarray, y: float) -> str:
-    """ "top" or "bottom" when a horizontal edge lies on the line at ``y``, else ""."""
+    """ "top" or "bottom" when a horizontal edge lies on the line at ``y``, else "" (also for
+    a zero-area triangle lying along the line, r355 M5: it lies neither above nor below)."""
+    if all(p[1] == y for p in xy):
+        return ""
     for k in range(3):
         a, b, c = xy[k], xy[(k + 1) % 3], xy[(k + 2) % 3]
         if a[1] == b[1] == y:
@@ -422,10 +572,17 @@ def draw_span(ax, case, got):
         if state:
             artists.append(ax.add_patch(Rectangle((col, row), 1, 1, color=colours[state],
                                                   alpha=0.8)))  # fmt: skip
-        artists += ax.plot(col + 0.5, y, ".", color="black", ms=3)
+        artists += ax.plot(col + 0.5, y, ".", color="black", ms=4, zorder=4)
     if cross is not None:
         xs = [float(cross[0]), float(cross[1])]
-        artists += ax.plot(xs, [y, y], "|", color="#ff9f1c", ms=14, mew=3, label="x_l, x_r")
+        artists += ax.plot(xs, [y, y], "|", color="#ff9f1c", ms=14, mew=3, label="x_l, x_r",
+                           zorder=3)  # fmt: skip
+        # r355 FIG1: the ticks hid the centres the exercise is about, those exactly on a
+        # crossing: drawn above them and ringed, as exercise 1's figure rings its ties
+        ties = sorted({x for x in xs if lo <= x - 0.5 < hi and (x - 0.5).is_integer()})
+        if ties:
+            artists += ax.plot(ties, [y] * len(ties), "o", mfc="none", mec="black", ms=9,
+                               mew=1.2, zorder=5, label="centre on a crossing")  # fmt: skip
     for name, colour in colours.items():
         artists.append(ax.add_patch(Rectangle((0, 0), 0, 0, color=colour, label=name)))
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
@@ -434,6 +591,7 @@ def draw_span(ax, case, got):
     ax.set_ylim(min(bottom, max(top, row - 6) + 14), top)  # a huge triangle: rows near this one
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
+    ax.set_ylabel("y (px, down)", fontsize="small")
     return artists
 
 
@@ -456,9 +614,17 @@ def _state(rule: bool, yours: bool, no_answer: bool) -> str:
     return "missing" if rule else "extra"
 
 
+def _mistakes() -> list[Mistake]:
+    """The table; the reversed horizontal rule is named only where it gives every answer: a
+    student with no horizontal rule at all (both edges' centres covered) differs from the rule
+    on bottom-edge rows only, where the reversed rule also gives its answer."""
+    return [dataclasses.replace(m, only_whole=True) if m.kind == "horizontal reversed" else m
+            for m in variant_mistakes(_variants, MISTAKES, SYMPTOMS)]  # fmt: skip
+
+
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
-    variant_mistakes(_variants, MISTAKES, SYMPTOMS), answers=(PackageAnswer(rasterize),),
+    _mistakes(), answers=(PackageAnswer(rasterize),),
     draw=draw_span, constant=_constant_span, hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
