@@ -3656,3 +3656,125 @@ TWO_MISTAKES["span, ties reversed and no bottom-edge rule"] = (
     _span_student(flat="both", rounding=lambda x: math.floor(x + 0.5)),
     ("ties go the wrong way round", "a bottom edge owns none"),
 )
+
+
+# == r357 (fixex04x): exercise 04's kept vertices told as new ones, and six half-named slips ====
+def _clip_r357(change):
+    """The right polygon, then ``change(polygon, v)`` applied to it (a slip at the end)."""
+
+    def clip_near(v):
+        return change(CORRECT["clip_near"](v).copy(), np.asarray(v, dtype=float))
+
+    return clip_near
+
+
+def _set_w_one(p, v):
+    p[:, 3] = 1.0
+    return p
+
+
+def _kept_w_doubled(p, v):
+    """A made-up slip in the kept vertices only: their w doubled."""
+    for row in p:
+        if any(np.array_equal(row, q) for q in v):
+            row[3] *= 2
+    return p
+
+
+def _clip_open_keeping_v3(v):
+    """H5: `for i in range(2)` over the edges, v3 still appended when it is inside."""
+    v, out = np.asarray(v, dtype=float), []
+    for i in range(3):
+        da = v[i, 2] + v[i, 3]
+        if da >= 0:
+            out.append(v[i])
+        if i < 2:
+            db = v[i + 1, 2] + v[i + 1, 3]
+            if (da >= 0) != (db >= 0):
+                out.append(v[i] + da / (da - db) * (v[i + 1] - v[i]))
+    return np.array(out).reshape(-1, 4)
+
+
+def _colours_r357(change):
+    """4.3 right, then ``change(polygon, v, colours)``."""
+
+    def clip_near_colour(v, colours):
+        return change(_colour_right(v, colours), np.asarray(v, float), np.asarray(colours, float))
+
+    return clip_near_colour
+
+
+def _colours_over_w(v, colours):
+    """Misnamed 3: colour/w carried through the clip, never multiplied back."""
+    v = np.asarray(v, dtype=float)
+    return _colour_right(v, np.asarray(colours, dtype=float) / v[:, 3:4])
+
+
+def _clamped(p, v, c):
+    p[:, 4:] = np.minimum(p[:, 4:], 0.5)
+    return p
+
+
+def _by_row(p, v, c):
+    for k in range(len(p)):
+        p[k, 4:] = c[k % 3]
+    return p
+
+
+def _passes_shifted(depths, writes):
+    """H1: each verdict appended before its fragment is tested (one too many at the start,
+    the last one lost)."""
+    out = _passes_with()(depths, writes)
+    return ([True] + out[:-1]) if out else out
+
+
+def _passes_glass_hides_glass(depths, writes):
+    """H2: glass compared with the nearest earlier pane too, as if glass hid glass."""
+    stored, pane, out = math.inf, math.inf, []
+    for d, w in zip(depths, writes):
+        ok = d < (stored if w else min(stored, pane))
+        out.append(ok)
+        if ok and w:
+            stored = d
+        if ok and not w:
+            pane = min(pane, d)
+    return out
+
+
+R357 = {
+    "clip with w set to 1": (
+        "clip_near", _clip_r357(_set_w_one), "your w is 1 at every vertex", "w set to 1"),
+    "clip with x and y swapped": (
+        "clip_near", _clip_r357(lambda p, v: p[:, [1, 0, 2, 3]]),
+        "your x and y columns are swapped", "x and y swapped"),
+    "clip with the kept vertices' w doubled": (
+        "clip_near", _clip_r357(_kept_w_doubled), "A kept vertex is returned unchanged",
+        "kept vertex changed"),
+    "clip with distance z + 1": (
+        "clip_near", lambda v: clip_against(v, lambda p: p[2] + 1),
+        "as z + 1, the bound z/w ≥ −1 of NDC with w forgotten", "distance z + 1"),
+    "clip with t = d_a/(d_b − d_a)": (
+        "clip_near",
+        lambda v: clip_against(v, t=lambda a, b: (a[2] + a[3]) / (b[2] + b[3] - a[2] - a[3])),
+        "you took t = d_a/(d_b − d_a), its sign turned", "t sign slip"),
+    "clip without the closing edge, v3 kept": (
+        "clip_near", _clip_open_keeping_v3, "the crossing on v3→v1 is never added",
+        "closing edge missing"),
+    "colours divided by w": (
+        "clip_near_colour", _colours_over_w, "divided the colours by w and never multiplied",
+        "colours divided by w"),
+    "colours clamped to 0.5": (
+        "clip_near_colour", _colours_r357(_clamped), "its own cut to at most 0.5",
+        "kept colour changed"),
+    "colours by output row": (
+        "clip_near_colour", _colours_r357(_by_row), "your row k takes the colour of row k",
+        "colours by row number"),
+    "passes shifted by one fragment": (
+        "depth_passes", _passes_shifted, "your verdicts are shifted by one fragment",
+        "shifted by one"),
+    "passes with glass hiding glass": (
+        "depth_passes", _passes_glass_hides_glass, "a pane of glass hides the glass behind it",
+        "glass hides glass"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R357.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R357.items()})

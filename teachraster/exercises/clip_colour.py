@@ -31,7 +31,7 @@ from .depth_clipping import (
 )
 from .exercise import Exercise, Mistake, PackageAnswer
 from .running import WrongAnswerType
-from .scalars import vec
+from .scalars import num, vec
 from .tolerance import all_close, same_polygon
 
 
@@ -126,15 +126,85 @@ def _nan_at_w0_words(args, expected, got) -> str:
     )
 
 
+def _kept_colour(args, expected, got) -> tuple[int, np.ndarray] | None:
+    """(k, colour): the first kept vertex vk whose colour ``got`` changed, positions right
+    (r357: a kept vertex's colour divided by w or clamped was told the rule of a new vertex's
+    colour, "which fraction?")."""
+    v, c = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 7)
+    if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):
+        return None
+    for k in np.flatnonzero(v[:, 2] + v[:, 3] >= 0):
+        rows = [p for p in g if all_close(p[:4], v[k], FLOAT32_TOL)]
+        if rows and not any(all_close(p[4:], c[k], FLOAT32_TOL) for p in rows):
+            return int(k), rows[0][4:]
+    return None
+
+
+def _colour_change(q, p, v, c) -> str:
+    """What turned colour ``q`` of a kept vertex into ``p``, in words, or ""."""
+    k = next(i for i in range(len(v)) if all_close(c[i], q, 0))
+    if v[k, 3] not in (0, 1) and all_close(p, q / v[k, 3], FLOAT32_TOL):
+        return (
+            f"its own divided by its w = {num(v[k, 3])} (divided by w and never multiplied back?)"
+        )
+    other = [j for j in range(len(c)) if j != k and all_close(p, c[j], FLOAT32_TOL)]
+    if other:
+        return f"the colour of v{other[0] + 1}"
+    moved = ~np.isclose(p, q, rtol=FLOAT32_TOL, atol=FLOAT32_TOL)
+    if moved.any() and np.allclose(p[moved], p[moved][0]):
+        bound = p[moved][0]
+        if (q[moved] > bound).all() and (p <= bound + FLOAT32_TOL).all():
+            return f"its own cut to at most {num(bound)} (clamped?)"
+        if (q[moved] < bound).all() and (p >= bound - FLOAT32_TOL).all():
+            return f"its own raised to at least {num(bound)} (clamped?)"
+    return ""
+
+
+def _kept_colour_words(args, expected, got) -> str:
+    v, c = (np.asarray(a, float) for a in args)
+    k, p = _kept_colour(args, expected, got)
+    what = _colour_change(c[k], p, v, c)
+    return (
+        f"a kept vertex keeps its own colour exactly, as given (row {k + 1} of `colours`)"
+        + (f"; yours is {what}" if what else "")
+        + ". Only a new vertex's "
+        "colour is interpolated"
+    )
+
+
+def _divided_colours(v, colours) -> np.ndarray | None:
+    """The colours divided by w, interpolated so and never multiplied back (r357 misnamed 3)."""
+    v = np.asarray(v, float)
+    if (v[:, 3] == 0).any():
+        return None
+    return with_colours(v, np.asarray(colours, float) / v[:, 3:4])
+
+
+def _colours_by_row(v, colours) -> np.ndarray:
+    """Row k of the polygon given colours[k % 3] (r357 half-named 6)."""
+    p = with_colours(v, colours)
+    p[:, 4:] = np.asarray(colours, float)[np.arange(len(p)) % 3]
+    return p
+
+
 def explain_colour(args, expected, got) -> str:
-    """Positions first (4.2's words); then the first vertex whose colour is wrong."""
-    v, _ = args
+    """Positions first (4.2's words); then the first kept vertex whose colour is wrong (r357),
+    then the first new one."""
+    v, c = args
     g = np.asarray(got, float).reshape(-1, 7)
     if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):
         if same_polygon(g[:, 3:], expected[:, :4], FLOAT32_TOL):  # r319 X2: colours first
             return f"your first row is {vec(g[0])}, not {vec(expected[0])}"
         return "your positions are wrong (get 4.2 right first): " + explain_clip(
             (v,), expected[:, :4], g[:, :4]
+        )
+    kept = _kept_colour(args, expected, g)
+    if kept is not None:
+        k, p = kept
+        return (
+            f"your positions are right, but v{k + 1} = {vec(v[k])}, which is kept, has colour "
+            f"{vec(p, c[k])}, not its own {vec(c[k], p)}"
         )
     for p in g:
         right = [q for q in expected if all_close(q[:4], p[:4], FLOAT32_TOL)]
@@ -151,6 +221,8 @@ def _rule(args, expected, got) -> str:
     g = np.asarray(got, float).reshape(-1, 7)
     if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):  # 4.2's rule, not a colour's
         return clip_rule((args[0],), expected[:, :4], g[:, :4])
+    if _kept_colour(args, expected, got) is not None:
+        return ". A kept vertex keeps its own colour exactly, as given"
     return (
         ". A new vertex's colour is interpolated as its position is: at the same t, "
         "colour_a + t·(colour_b − colour_a), in clip space"
@@ -199,6 +271,20 @@ COLOUR_MISTAKES = [
             gives=lambda v, c: with_colours(v, np.asarray(c, float)[:, ::-1])),
     Mistake("colour perspective-corrected after the divide", _nan_at_w0_words, fits=_nan_at_w0,
             only_whole=True),
+    # r357: colours divided by w and never multiplied back (misnamed 3); row k's colour from
+    # colours[k % 3] (H6); any other change to a kept vertex's colour (a clamp: misnamed 4)
+    Mistake("colours divided by w", "you divided the colours by w and never multiplied back: "
+            "lesson 04 divides by w to interpolate on the screen, then multiplies back; in "
+            "clip space nothing is divided: a kept vertex keeps its own colour, and a new "
+            "vertex takes its colour at its own t between its edge's two ends",
+            gives=_divided_colours),
+    Mistake("colours by row number", "your row k takes the colour of row k of `colours` "
+            "(colours[k % 3]), but the polygon's rows are not the triangle's: a vertex behind "
+            "is dropped and new vertices come between. A kept vertex keeps the colour of its "
+            "own row of `v`, and a new vertex takes its colour between its own edge's two ends",
+            gives=_colours_by_row),
+    Mistake("kept colour changed", _kept_colour_words, fits=lambda a, e, g: _kept_colour(a, e, g)
+            is not None, symptom=True),
 ]  # fmt: skip
 
 
@@ -207,15 +293,18 @@ def _draw(ax, case, got):
     a square inside it (a wrong colour is a square of another colour)."""
     from .drawing import draw_clip
 
-    (v, _), expected = case[1], case[2]
+    (v, colours), expected = case[1], case[2]
     g = None if got is None else np.asarray(got, float).reshape(-1, 7)
-    artists = draw_clip(ax, v, expected[:, :4], None if g is None else g[:, :4])
+    artists = draw_clip(ax, v, expected[:, :4], None if g is None else g[:, :4], colours)
     for k, panel in enumerate(ax.child_axes):
         for p, marker, size in [(expected, "o", 360), *([(g, "s", 70)] if g is not None else [])]:
             if len(p) and np.isfinite(p).all():
                 artists.append(panel.scatter(p[:, k], p[:, 2] + p[:, 3], s=size, marker=marker,
                                              c=np.clip(p[:, 4:], 0, 1), edgecolors="black",
                                              zorder=5))  # fmt: skip
+        for label in panel.texts:  # r357 FIG3: "v1" was half under the disc
+            if hasattr(label, "xyann") and "off the panel" not in label.get_text():
+                label.xyann = (12 if label.xyann[0] > 0 else -12, 12)
     # under the x axis: the report's title holds the top
     panel = ax.child_axes[0]
     artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the expected colours; "

@@ -374,11 +374,11 @@ def _dropped_words(args, expected, got) -> str:
     )
 
 
-def _closing_words(args, expected, got) -> str:
+def _closing_words(args, expected, got, v3_kept: bool = False) -> str:
     (v,) = args
     d = v[:, 2] + v[:, 3]
     lost = []
-    if d[2] >= 0:
+    if d[2] >= 0 and not v3_kept:
         lost.append("v3 is never kept")
     if (d[2] >= 0) != (d[0] >= 0):
         lost.append("the crossing on v3→v1 is never added")
@@ -387,6 +387,13 @@ def _closing_words(args, expected, got) -> str:
         + (f", so {' and '.join(lost)}" if lost else "")
         + "; walk v1→v2→v3→v1 (the vertex after v3 is v1: index (i + 1) % 3)"
     )
+
+
+def _open_keeping_v3(v) -> np.ndarray | None:
+    """The edges v1→v2 and v2→v3 walked, v3 still kept when inside (r357 half-named 5)."""
+    v = np.asarray(v, dtype=float)
+    p = clip_with(v, closed=False)
+    return p if p is None or v[2, 2] + v[2, 3] < 0 else np.vstack([p, v[2]])
 
 
 def _own(v: np.ndarray, p: np.ndarray) -> bool:
@@ -415,6 +422,112 @@ def _behind_words(args, expected, got) -> str:
     return f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
 
 
+def _kept_changed(args, expected, got) -> tuple[int, np.ndarray | None] | None:
+    """(k, row): the first vertex vk of the triangle in front of the plane that ``got`` does
+    not return as it is (within :func:`_own`'s rounding), and the row of ``got`` that stands
+    in its place, the one most like it (None: none does); None when every kept vertex is
+    there (r357: a kept vertex with w set to 1 or x and y swapped was told "your new vertex
+    … its t is wrong")."""
+    (v,) = args
+    v, g = np.asarray(v, dtype=float), np.asarray(got, dtype=float).reshape(-1, 4)
+    if not np.isfinite(g).all():
+        return None
+    scale = max(1.0, float(np.abs(v).max()))
+    stray = [p for p in g if not _own(v, p)
+             and not any(all_close(p, q, FLOAT32_TOL) for q in expected)]  # fmt: skip
+    for k in np.flatnonzero(v[:, 2] + v[:, 3] >= 0):
+        q = v[k]
+        if len(g) and (np.abs(g - q).max(axis=1) <= 1e-3 * scale).any():
+            continue
+        if not stray:
+            return int(k), None
+        best = max(stray, key=lambda p: (_permuted(q, p) is not None,
+                                         int((np.abs(p - q) <= TOL * scale).sum()),
+                                         -float(np.abs(p - q).sum())))  # fmt: skip
+        return int(k), best
+    return None
+
+
+def _permuted(q: np.ndarray, p: np.ndarray) -> tuple | None:
+    """The order of q's components that gives p (fewest moved first), or None."""
+    import itertools
+
+    orders = sorted(
+        itertools.permutations(range(4)), key=lambda o: sum(i != j for i, j in enumerate(o))
+    )
+    return next((o for o in orders[1:] if all_close(p, q[list(o)], FLOAT32_TOL)), None)
+
+
+def what_changed(q: np.ndarray, p: np.ndarray, names: str = _NAMES) -> str:
+    """What turned ``q`` (a kept vertex) into ``p``, in words: two components swapped, divided
+    by w, w set to 1, or the components that differ."""
+    order = _permuted(q, p) if len(q) == 4 else None
+    if order is not None:
+        moved = [i for i, j in enumerate(order) if i != j]
+        if len(moved) == 2:
+            return f"its {names[moved[0]]} and {names[moved[1]]} swapped"
+        return f"its components in the order ({', '.join(names[j] for j in order)})"
+    if len(q) == 4 and q[3] != 0 and all_close(p, q / q[3], FLOAT32_TOL):
+        return f"divided by its w = {num(q[3])}"
+    changed = [k for k in range(len(q)) if not all_close(p[k], q[k], FLOAT32_TOL)]
+    if len(q) == 4 and changed == [3] and p[3] == 1:
+        return "its w set to 1"
+    return ", ".join(f"{names[k]} {num(q[k], p[k])} → {num(p[k], q[k])}" for k in changed)
+
+
+def _kept_fits(args, expected, got) -> bool:
+    return _kept_changed(args, expected, got) is not None
+
+
+def _kept_words(args, expected, got) -> str:
+    (v,) = args
+    k, p = _kept_changed(args, expected, got)
+    q = v[k]
+    where = f"v{k + 1} = {vec(q)} lies in front of the near plane (z + w = {num(q[2] + q[3])} ≥ 0)"
+    if p is None:
+        return f"{where}, and your polygon leaves it out: a vertex on the kept side stays"
+    return (
+        f"{where}, so it is kept as it is, but yours changed it to {vec(p, q)}: "
+        f"{what_changed(q, p)}. A kept vertex is returned unchanged, all four of x, y, z and w; "
+        "only the new vertices are interpolated"
+    )
+
+
+def _w_one(v) -> np.ndarray | None:
+    """The right polygon with w set to 1 at every vertex (r357 misnamed 1)."""
+    p = clip_with(v)
+    if p is not None:
+        p[:, 3] = 1.0
+    return p
+
+
+def _w_one_words(args, expected, got) -> str:
+    change = _kept_changed(args, expected, got)
+    shown = (
+        f" (v{change[0] + 1} = {vec(args[0][change[0]])} comes back as {vec(change[1])})"
+        if change and change[1] is not None
+        else ""
+    )
+    return (
+        f"your w is 1 at every vertex{shown}: you set w to 1, as after the divide, but left x, y "
+        "and z undivided. Return the polygon in clip space: a kept vertex as it is, w included, "
+        "and each new vertex's w interpolated at its t, as x, y and z are"
+    )
+
+
+def _xy_words(args, expected, got) -> str:
+    change = _kept_changed(args, expected, got)
+    shown = (
+        f": v{change[0] + 1} = {vec(args[0][change[0]])} comes back as {vec(change[1])}"
+        if change and change[1] is not None
+        else ""
+    )
+    return (
+        f"your x and y columns are swapped{shown}. Each row is one vertex (x, y, z, w), in the "
+        "order the triangle's vertices are given; a kept vertex comes back as it is"
+    )
+
+
 def _new_vertices(args, got) -> list:
     """The vertices of ``got`` that are none of the triangle's own."""
     (v,) = args
@@ -431,7 +544,10 @@ def _off_plane_by(args) -> float:
 
 def _off_plane(args, expected, got) -> bool:
     """A new vertex that is not on the near plane (r85 04: t = ½ or a wrong sign of t was
-    told only its symptom, or a generic rule)."""
+    told only its symptom, or a generic rule); not where a kept vertex came back changed
+    (r357: that is said first, :func:`_kept_changed`)."""
+    if _kept_changed(args, expected, got) is not None:
+        return False
     return any(abs(p[2] + p[3]) > _off_plane_by(args) for p in _new_vertices(args, got))
 
 
@@ -609,6 +725,21 @@ CLIP_MISTAKES = [
     # told only "its t is wrong"
     Mistake("dropped whole", _dropped_words, gives=_dropped),
     Mistake("closing edge missing", _closing_words, gives=lambda v: clip_with(v, closed=False)),
+    # r357: the closing edge skipped but v3 still kept (H5); a kept vertex's w set to 1 and x
+    # and y swapped (misnamed 1, 2); the distance z + 1 (w forgotten, H3); t's sign (H4)
+    Mistake("closing edge missing", lambda a, e, g: _closing_words(a, e, g, v3_kept=True),
+            gives=_open_keeping_v3),
+    Mistake("w set to 1", _w_one_words, gives=_w_one),
+    Mistake("x and y swapped", _xy_words,
+            gives=lambda v: None if clip_with(v) is None else clip_with(v)[:, [1, 0, 2, 3]]),
+    Mistake("distance z + 1", _words_with_crossing("you measured the distance to the plane as "
+            "z + 1, the bound z/w ≥ −1 of NDC with w forgotten: in clip space the near plane "
+            "is z + w = 0, so w belongs in the distance, z + w"),
+            gives=lambda v: clip_with(v, lambda p: p[2] + 1)),
+    Mistake("t sign slip", _words_with_crossing("you took t = d_a/(d_b − d_a), its sign turned: "
+            "at a crossing it comes out negative, so your new vertex lies off the edge, beyond "
+            "its first end a; t must lie between 0 and 1"),
+            gives=lambda v: clip_with(v, t_from=lambda a, b: -_clip_t(a, b))),
     Mistake("vertex moved onto the plane", _moved_words, gives=_moved_onto_plane),
     Mistake("vertex moved onto the plane", _moved_words,
             gives=lambda v: _moved_onto_plane(v, towards=-1)),
@@ -628,6 +759,7 @@ CLIP_MISTAKES = [
             "near plane but off the edge. Find t from z + w in clip space and "
             "interpolate x, y, z and w there"), gives=_ndc_crossing),
     Mistake("vertex too many", _one_too_many_words, fits=_one_too_many),
+    Mistake("kept vertex changed", _kept_words, fits=_kept_fits, symptom=True),
     Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
 ]  # fmt: skip

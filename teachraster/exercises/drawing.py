@@ -241,13 +241,15 @@ def draw_split(ax, v, expected, got):
     return artists
 
 
-def draw_clip(ax, v, expected, got):
+def draw_clip(ax, v, expected, got, colours=None):
     """The triangle and the polygons in two panels sharing z + w (the near plane is the line
     z + w = 0): x on the left, y on the right (r306 FIG1: with x alone a polygon wrong only
     in y was drawn on the expected one). Where y is the same at every vertex drawn (the floor
     triangle) the y panel is one vertical line: the value is said instead (r310 FIG1). Without
     an answer, the x panel alone, on the right: the report's note takes the left part. An
-    empty polygon is said so (r306 FIG2)."""
+    empty polygon is said so (r306 FIG2). A vertex outside the zoomed panel is marked at its
+    edge, with its z + w (and its colour, ``colours``: r357 FIG2, v3 behind the camera was
+    off the panel)."""
     ax.set_axis_off()
     ys = np.concatenate([np.asarray(v, float)[:, 1], np.asarray(expected, float)[:, 1]])
     if got is not None and len(got) and np.isfinite(drawable(got, v)).all():
@@ -255,6 +257,9 @@ def draw_clip(ax, v, expected, got):
     flat_y = bool(np.ptp(ys) <= 1e-9 * max(1.0, float(np.abs(ys).max())))
     if got is None:
         boxes = [(0.56, 0.44)]
+        # r357 FIG2: a blank strip for the panel's y label and ticks, so that the report's
+        # note (in the widest strip no inset covers) keeps off them
+        ax.inset_axes([0.4, 0.0, 0.16, 1.0]).set_axis_off()
     else:
         boxes = [(0.0, 0.7)] if flat_y else [(0.0, 0.45), (0.55, 0.45)]
     panels = []
@@ -265,6 +270,8 @@ def draw_clip(ax, v, expected, got):
     for k, panel in enumerate(panels):
         artists += _clip_panel(panel, k, v, expected, got)
     _zoom_on_kept(panels, v, expected, got)
+    for k, panel in enumerate(panels):
+        artists += _mark_off_panel(panel, k, v, colours)
     for panel in panels:  # a label in the right half on the vertex's left, off the spine (r310)
         middle = sum(panel.get_xlim()) / 2
         for label in panel.texts:
@@ -278,6 +285,36 @@ def draw_clip(ax, v, expected, got):
         labels.append(f"y = {num(ys[0])} at every vertex:\nno y panel")
     artists.append(panels[-1].legend(handles, labels, fontsize="x-small", loc="upper left",
                                      bbox_to_anchor=(1.04, 1)))  # fmt: skip
+    return artists
+
+
+def _mark_off_panel(panel, k, v, colours=None) -> list:
+    """Each vertex of ``v`` outside the panel's limits as an arrowhead at the nearest edge,
+    pointing its way, labelled with its z + w (r357 FIG2)."""
+    (x0, x1), (y0, y1) = panel.get_xlim(), panel.get_ylim()
+    d = np.asarray(v, float)[:, 2] + np.asarray(v, float)[:, 3]
+    if (d < y0).any():  # room below the plane's vertices for the arrowhead and its label
+        y0 -= 0.25 * (y1 - y0)
+        panel.set_ylim(y0, y1)
+    artists = []
+    for j, p in enumerate(np.asarray(v, float)):
+        x, d = p[k], p[2] + p[3]
+        if x0 <= x <= x1 and y0 <= d <= y1:
+            continue
+        inset_x, inset_y = 0.03 * (x1 - x0), 0.04 * (y1 - y0)
+        at = (min(max(x, x0 + inset_x), x1 - inset_x), min(max(d, y0 + inset_y), y1 - inset_y))
+        marker = "v" if d < y0 else "^" if d > y1 else "<" if x < x0 else ">"
+        face = "white" if colours is None else np.clip(np.asarray(colours, float)[j], 0, 1)
+        artists += panel.plot(*at, marker=marker, markersize=11, color="black",
+                              markerfacecolor=face, clip_on=False, zorder=6)  # fmt: skip
+        # beside the arrowhead, on the side with more room (off the discs and edges above)
+        right = at[0] <= (x0 + x1) / 2
+        artists.append(panel.annotate(f"v{j + 1} off the panel:\nz + w = {num(d)}", at,
+                                      xytext=(9 if right else -9, 0), textcoords="offset points",
+                                      fontsize="x-small", va="center",
+                                      ha="left" if right else "right",
+                                      bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
+                                            "edgecolor": "none", "alpha": 0.8}))  # fmt: skip
     return artists
 
 

@@ -94,11 +94,14 @@ def same_passes(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 
 def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=True,
-              previous=False, start=np.inf, glass_ties=False, glass_fails=False) -> np.ndarray:  # fmt: skip
+              previous=False, start=np.inf, glass_ties=False, glass_fails=False,
+              glass_hides_glass=False) -> np.ndarray:  # fmt: skip
     """The z-buffer with one rule changed (each keyword is one typical mistake)."""
-    stored, last, out = start, start, []
+    stored, last, out, pane = start, start, [], np.inf
     for d, write in zip(depths.tolist(), writes.tolist()):
         against = last if previous else stored
+        if glass_hides_glass and not write:
+            against = min(against, pane)
         ok = d <= against if ties or (glass_ties and not write) else d < against
         if not test_all and not write:
             ok = True
@@ -107,6 +110,8 @@ def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=Tr
         out.append(ok)
         if (ok or not update) and (write or not mask):
             stored = d
+        if ok and not write:
+            pane = min(pane, d)
         last = d
     return np.array(out, dtype=bool)
 
@@ -183,6 +188,10 @@ DEPTH_MISTAKES = [
     _mistake("glass ties", "glass at the same depth as the depth the buffer holds passes in "
              "your answer: a tie fails for glass too (only a strictly nearer fragment passes, "
              "whether or not it writes depth)", glass_ties=True),
+    # r357 H2: glass compared with earlier glass too, as if a pane hid what lies behind it
+    _mistake("glass hides glass", "in your answer a pane of glass hides the glass behind it: "
+             "glass is compared only with the depth the buffer holds, and an earlier pane "
+             "wrote nothing there (glass does not write depth)", glass_hides_glass=True),
     # r294 H-dp1: the depth mask folded into the test (`d < stored and write`) was told the rule
     _mistake("glass never passes", "glass never passes in your answer: the depth mask decides "
              "only whether a fragment that passes changes the buffer, not whether it passes; "
@@ -249,6 +258,37 @@ DEPTH_MISTAKES = [
              "starts empty, so the first fragment passes whatever its depth (GL clears it to "
              "the far value, 1.0)", start=0.0),
 ]  # fmt: skip
+
+
+def _shift(args, expected, got) -> int | None:
+    """+1 when each verdict of ``got`` is the right one of the fragment before it, −1 of the
+    one after it, else None (r357 half-named 1)."""
+    if len(got) != len(expected) or len(got) < 2:
+        return None
+    if np.array_equal(got[1:], expected[:-1]):
+        return 1
+    return -1 if np.array_equal(got[:-1], expected[1:]) else None
+
+
+def _shift_words(args, expected, got) -> str:
+    which = "before" if _shift(args, expected, got) == 1 else "after"
+    return (
+        f"your verdicts are shifted by one fragment: each is the right verdict of the fragment "
+        f"{which} it. Return one True/False per fragment in drawing order, the k-th for "
+        "fragment k (is a verdict appended before its fragment is tested, or one too many at "
+        "the start?)"
+    )
+
+
+def _shifted(args, expected, got) -> bool | None:
+    if len(got) != len(expected) or len(got) < 2:
+        return None  # no say: a shape, or one fragment
+    return _shift(args, expected, got) is not None
+
+
+#: r357 H1: after every cause the checker runs, and only where it fits every failing case (a
+#: description, no answer it gives: not in :data:`DEPTH_MISTAKES`, which the capstone runs)
+SHIFTED = Mistake("shifted by one", _shift_words, fits=_shifted, only_whole=True)
 
 
 def _held(depths, writes, passed, k) -> str:
@@ -318,7 +358,8 @@ def _buffer_line(ax, depths, writes) -> list:
 
 
 DEPTH_PASSES = Exercise(
-    "depth_passes", depth_cases, as_passes, same_passes, explain_depth, _rule, DEPTH_MISTAKES,
+    "depth_passes", depth_cases, as_passes, same_passes, explain_depth, _rule,
+    [*DEPTH_MISTAKES, SHIFTED],
     answers=(PackageAnswer(passed_on_arrival),), draw=draw_depth_passes, hints=(
         # issue 30 (r46 C2): the task asks for the buffer's rule; the first wrong try asks back
         ("A fragment passes when it is strictly nearer than the depth the buffer holds, and "
