@@ -446,6 +446,14 @@ def _resolve_by_vote(colours, ids, background):
     return np.asarray(colours, float)[covered].mean(axis=0)
 
 
+def _resolve_by_id_vote(colours, ids, background):
+    """The colour of the id most samples hold, the background when that id is −1."""
+    ids = np.asarray(ids)
+    values, counts = np.unique(ids, return_counts=True)
+    top = values[np.argmax(counts)]
+    return np.asarray(background, float) if top < 0 else np.asarray(colours, float)[ids == top][0]
+
+
 def _bilinear_tiling(texture, uv, wrap="repeat"):
     """A bilinear that ignores its wrap: it tiles whatever it is asked."""
     return bilinear(texture, uv, "repeat")
@@ -1472,6 +1480,8 @@ WRONG = {
     "trilinear, lower level only": ("trilinear", trilinear_lower_only, "alone"),
     # r341 half-named (capstone): resolve by a vote; dst premultiplied again on all channels
     "resolve by a vote of its samples": ("resolve", _resolve_by_vote, "a vote of its samples"),
+    # r361: the most frequent id, the background's −1 among them
+    "resolve by the most frequent id": ("resolve", _resolve_by_id_vote, "most samples hold"),
     "over, dst premultiplied again on four channels": (
         "over_premultiplied",
         lambda s, d: np.asarray(s, float) + np.asarray(d, float) * d[3] * (1 - s[3]),

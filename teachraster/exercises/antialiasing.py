@@ -559,6 +559,16 @@ def _majority(colours, ids, background):
     return colours[ids == np.bincount(ids[c]).argmax()][0] if c.any() else None
 
 
+def _majority_of_ids(colours, ids, background):
+    """The id most samples hold, the background's −1 among them, shown alone: the background
+    where most samples are uncovered, else that triangle's colour (r361, capstone 12.9: told
+    only the hint on a pixel with 1 of 4 samples covered)."""
+    ids = np.asarray(ids)
+    values, counts = np.unique(ids, return_counts=True)
+    top = values[np.argmax(counts)]
+    return np.asarray(background, dtype=float) if top < 0 else colours[ids == top].mean(axis=0)
+
+
 def _resolve_words(text: str, rule: bool = True):
     """A slip's words, then (``rule``) how the mean is taken here; a placeholder's slip (the
     background alone, sample 0 alone) gets no rule: it names what is wrong and leaves the
@@ -715,6 +725,9 @@ RESOLVE_MISTAKES = [
             "them), and a mean with NaN is NaN"), gives=lambda c, i, b: c.mean(axis=0)),
     Mistake("majority", _resolve_words("that is the colour of the triangle owning most "
             "samples; the resolve mixes them all"), gives=_majority),
+    Mistake("majority", _resolve_words("that is the colour most samples hold, the background "
+            "counted as one more id (it wins where most samples are uncovered); the resolve "
+            "mixes them all"), gives=_majority_of_ids),
     Mistake("background once", _resolve_words("the background counts once for every uncovered "
             "sample, not once in all"),
             gives=lambda c, i, b: (np.nansum(c[i >= 0], axis=0) + b) / ((i >= 0).sum() + 1)),
