@@ -3487,6 +3487,44 @@ def _weights_by_max(lam, w):
     return q / q.max()
 
 
+def _bary_untranslated(xy, p):
+    """r358 2: Cramer's rule about v3, with p on the right in place of p − v3."""
+    v = np.asarray(xy, dtype=float)
+    if edge_function(v[0], v[1], v[2]) == 0:
+        raise ValueError("zero area")
+    (a, b), (c, d) = (v[0] - v[2], v[1] - v[2])
+    det = a * d - b * c
+    lam1, lam2 = (p[0] * d - c * p[1]) / det, (a * p[1] - b * p[0]) / det
+    return np.array([lam1, lam2, 1 - lam1 - lam2])
+
+
+def _bary_asserted(xy, p):
+    """r358 5: the zero area refused by an assert."""
+    v = np.asarray(xy, dtype=float)
+    area = edge_function(v[0], v[1], v[2])
+    assert area != 0, "zero area"
+    return _sub_areas(v, p) / area
+
+
+def _bary_by_tiny_det(xy, p):
+    """r358 wrong detail: the 3×3 determinant compared with a threshold far below any area."""
+    m = np.vstack([np.asarray(xy, dtype=float).T, np.ones(3)])
+    if abs(np.linalg.det(m)) < 1e-300:
+        raise ValueError("degenerate")
+    return np.linalg.solve(m, np.array([p[0], p[1], 1.0]))
+
+
+def _weights_r358(slip):
+    def perspective_weights(lam, w):
+        lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+        q = lam / w
+        if slip == "clipped":
+            return np.clip(q / q.sum(), 0.0, 1.0)
+        return q / (lam @ w) if slip == "by Σλw" else q * np.mean(w)
+
+    return perspective_weights
+
+
 R348 = {
     "barycentric refused by a condition number": (
         "barycentric", _bary_by_condition, "your code reads np.linalg.cond", "condition number"),
@@ -3510,6 +3548,36 @@ R348 = {
     "perspective weights normalised by the largest": (
         "perspective_weights", _weights_by_max, "by the largest of them",
         "normalised by the largest"),
+    # r358: the eight half-named neighbours of the slips above, and the det test's words
+    "barycentric clipped to [0, 1], not renormalised": (
+        "barycentric", lambda xy, p: np.clip(_bary_from_areas(xy, p), 0.0, 1.0),
+        "you clamped them", "clamped"),
+    "barycentric about v3 with p untranslated": (
+        "barycentric", _bary_untranslated, "you put p itself on the right-hand side",
+        "p not translated"),
+    "barycentric with λ3 = λ1 + λ2 − 1": (
+        "barycentric", lambda xy, p: (lambda lam: np.array([*lam[:2], lam[0] + lam[1] - 1]))(
+            _bary_from_areas(xy, p)),
+        "is λ1 + λ2 − 1, a sign slip", "λ3 = λ1 + λ2 − 1"),
+    "barycentric of vertices rounded": (
+        "barycentric", lambda xy, p: _bary_from_areas(np.round(np.asarray(xy, float)), p),
+        "rounds to whole pixels", "vertices rounded"),
+    "barycentric refusing a zero area by assert": (
+        "barycentric", _bary_asserted,
+        "an assert raises AssertionError, and is skipped under python -O: raise ValueError",
+        "raised"),
+    "barycentric refused by |det| < 1e-300": (
+        "barycentric", _bary_by_tiny_det, "or against a threshold far below any real area",
+        "rounded determinant"),
+    "perspective weights clipped to [0, 1]": (
+        "perspective_weights", _weights_r358("clipped"), "you clamped your weights",
+        "μ clipped"),
+    "perspective weights divided by Σλw": (
+        "perspective_weights", _weights_r358("by Σλw"), "by Σ λ_j w_j",
+        "divided by Σλw"),
+    "perspective weights times the mean w": (
+        "perspective_weights", _weights_r358("mean"), "by the mean of the three w",
+        "times the mean w"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R348.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R348.items()})

@@ -115,6 +115,17 @@ def call_barycentric(fn, args):
     return as_numbers(value, (3,), "3 weights, shape (3,)")
 
 
+def _bary_raised(args, error: str) -> str:
+    """r358 5: ``assert E != 0`` on a zero area was told the AssertionError alone."""
+    xy, _ = args
+    if "AssertionError" not in error or _area(xy) != 0:
+        return ""
+    return (
+        " (this triangle has zero area, and 3.1 expects ValueError: an assert raises "
+        "AssertionError, and is skipped under python -O: raise ValueError)"
+    )
+
+
 def same_barycentric(got, expected, args) -> bool:
     if isinstance(expected, str) or isinstance(got, str):
         # a str beside an array compares element by element (r164 C2: the refusing
@@ -191,13 +202,31 @@ def _reversed_where_negative(xy, p) -> np.ndarray:
     return lam[::-1] if _area(xy) < 0 else lam
 
 
-def _clamped(xy, p) -> np.ndarray | None:
-    """Negative weights set to 0 (and any above 1 to 1, as np.clip(λ, 0, 1) does) and the rest
-    renormalised: inside the triangle λ itself (r137 D3-2: "None" there made the clamp agree
-    with too few answers to be named)."""
-    lam = _areas(xy, p) / _area(xy)
-    kept = np.clip(lam, 0.0, 1.0)
-    return kept / kept.sum()
+def _clamped(upper: float, renormalised: bool):
+    """Negative weights set to 0 (and any above ``upper`` to it: 1 as np.clip(λ, 0, 1) does,
+    inf as np.maximum(λ, 0) does), the rest renormalised or not (r358 1: the clip left
+    unrenormalised got the rule only): inside the triangle λ itself (r137 D3-2: "None" there
+    made the clamp agree with too few answers to be named)."""
+
+    def gives(xy, p):
+        kept = np.clip(_areas(xy, p) / _area(xy), 0.0, upper)
+        return kept / kept.sum() if renormalised else kept
+
+    return gives
+
+
+def _clamped_words(args, expected, got) -> str:
+    """r358 1: one text for every clamp of the weights, with what it broke on this case."""
+    xy, p = args
+    g = np.asarray(got, dtype=float)
+    total = float(g.sum())
+    summed = "" if abs(total - 1) <= 1e-9 else f"sum to {num(total, 1.0)} and "
+    return (
+        ": your weights are never negative: you clamped them (to [0, 1], or at 0), but where p "
+        "lies outside an edge the weight of the vertex opposite that edge is negative, and "
+        f"clamping breaks λ1·v1 + λ2·v2 + λ3·v3 = p (yours {summed}rebuild "
+        f"{vec(g @ np.asarray(xy, float))}, not p = {vec(p)}); do not clamp them"
+    )
 
 
 def _epsilon_fits(args, expected, got) -> bool | None:
@@ -388,40 +417,97 @@ def _p_shifted_words(by: float):
     return words
 
 
-def _truncated(with_p: bool):
-    """The weights computed from vertices (and p) cast to int, which truncates (r348:
-    ``np.asarray(xy, int)``); the zero-area test on the truncated vertices."""
+#: How vertices lose their fractions (r348: truncated by an int cast; r358 4: rounded),
+#: and the words that say how
+WHOLE_PIXELS = {
+    "truncated": (np.trunc, "an int array, or int(...), truncates"),
+    "rounded": (np.round, "np.round, or round(...), rounds to whole pixels"),
+}
+
+
+def _truncated(with_p: bool, how: str = "truncated"):
+    """The weights computed from vertices (and p) made whole numbers: cast to int, which
+    truncates (r348: ``np.asarray(xy, int)``), or rounded; the zero-area test on them."""
+    whole = WHOLE_PIXELS[how][0]
 
     def gives(xy, p):
-        t = np.trunc(np.asarray(xy, float))
-        q = np.trunc(np.asarray(p, float)) if with_p else np.asarray(p, float)
+        t = whole(np.asarray(xy, float))
+        q = whole(np.asarray(p, float)) if with_p else np.asarray(p, float)
         return REFUSED if _area(t) == 0 else _areas(t, q) / _area(t)
 
     return gives
 
 
-def _truncated_words(args, expected, got) -> str:
-    xy, p = (np.asarray(a, float) for a in args)
-    k = next((k for k in range(3) if (xy[k] != np.trunc(xy[k])).any()), 0)
-    return (
-        f": your vertices lost their fractions: v{k + 1} = {vec(xy[k])} became "
-        f"{vec(np.trunc(xy[k]))} (an int array, or int(...), truncates); keep the coordinates "
-        "as floats: they lie on the 1/256-px grid, and float64 holds them exactly"
-    )
+def _truncated_words(how: str = "truncated", with_p: bool = False):
+    whole, said = WHOLE_PIXELS[how]
+
+    def words(args, expected, got) -> str:
+        xy, p = (np.asarray(a, float) for a in args)
+        k = next((k for k in range(3) if (xy[k] != whole(xy[k])).any()), 0)
+        moved = (f", and p = {vec(p)} became {vec(whole(p) + 0.0)}"
+                 if with_p and (p != whole(p)).any() else "")  # fmt: skip
+        return (
+            f": your vertices lost their fractions: v{k + 1} = {vec(xy[k])} became "
+            f"{vec(whole(xy[k]) + 0.0)} ({said}){moved}; keep the coordinates as floats: they "
+            "lie on the 1/256-px grid, and float64 holds them exactly"
+        )
+
+    return words
 
 
-def _lambda3_typo(xy, p) -> np.ndarray:
-    """r348: λ3 = 1 − λ1 + λ2, a sign slip in the last weight."""
-    lam = _areas(xy, p) / _area(xy)
-    return np.array([lam[0], lam[1], 1.0 - lam[0] + lam[1]])
+#: λ3 written with a sign slip, c0 + c1·λ1 + c2·λ2, and how it reads (r348: 1 − λ1 + λ2;
+#: r358 3: λ1 + λ2 − 1 got the rule only, so every other choice of the three signs)
+LAMBDA3_SLIPS = {
+    (1, -1, 1): "1 − λ1 + λ2", (1, 1, -1): "1 + λ1 − λ2", (-1, 1, 1): "λ1 + λ2 − 1",
+    (1, 1, 1): "1 + λ1 + λ2", (-1, -1, 1): "λ2 − λ1 − 1", (-1, 1, -1): "λ1 − λ2 − 1",
+    (-1, -1, -1): "−1 − λ1 − λ2",
+}  # fmt: skip
 
 
-def _lambda3_words(args, expected, got) -> str:
-    return (
-        f": your λ1 and λ2 are right, but your λ3 = {num(got[2], expected[2])} is "
-        f"1 − λ1 + λ2, a sign slip: the weights sum to 1, so λ3 = 1 − λ1 − λ2 = "
-        f"{num(expected[2], got[2])}"
-    )
+def _lambda3_typo(signs):
+    """λ1 and λ2 right, λ3 = c0 + c1·λ1 + c2·λ2 for the signs ``signs``."""
+
+    def gives(xy, p):
+        lam = _areas(xy, p) / _area(xy)
+        return np.array([lam[0], lam[1], signs[0] + signs[1] * lam[0] + signs[2] * lam[1]])
+
+    return gives
+
+
+def _lambda3_words(form: str):
+    def words(args, expected, got):
+        return (
+            f": your λ1 and λ2 are right, but your λ3 = {num(got[2], expected[2])} is "
+            f"{form}, a sign slip: the weights sum to 1, so λ3 = 1 − λ1 − λ2 = "
+            f"{num(expected[2], got[2])}"
+        )
+
+    return words
+
+
+def _untranslated(k: int):
+    """r358 2: the solve about v_k, (v_i − v_k)·λ_i + (v_j − v_k)·λ_j = p − v_k, with p on
+    the right in place of p − v_k: the weights of p + v_k."""
+
+    def gives(xy, p):
+        return _areas(xy, np.asarray(p, float) + np.asarray(xy, float)[k]) / _area(xy)
+
+    return gives
+
+
+def _untranslated_words(k: int):
+    i, j = (n + 1 for n in range(3) if n != k)
+    v = f"v{k + 1}"
+
+    def words(args, expected, got):
+        xy, p = (np.asarray(a, float) for a in args)
+        return (
+            f": your weights are those of p + {v} = {vec(p + xy[k])}, not of p = {vec(p)}: in "
+            f"a solve about {v}, (v{i} − {v})·λ{i} + (v{j} − {v})·λ{j} = p − {v}, and you "
+            f"put p itself on the right-hand side: subtract {v} from p, as from the vertices"
+        )
+
+    return words
 
 
 def _rebuilds_p(xy, p, got, tol: float = 1e-9) -> bool:
@@ -528,8 +614,9 @@ def _reads_det_words(args, expected, got) -> str:
     return (
         ": your code reads np.linalg.det, but numpy computes a determinant by LU elimination "
         "in rounded arithmetic: on these three vertices, which lie on one line, it comes out "
-        "as rounding noise, not 0, so det(...) == 0 let this triangle through and the solve "
-        "returned noise as weights. A rounded determinant is no exact area test; E(v1, v2, "
+        "as rounding noise, not 0, so your test of it (against 0, or against a threshold far "
+        "below any real area) let this triangle through and the solve returned noise as "
+        "weights. A rounded determinant is no exact area test; E(v1, v2, "
         "v3) of lesson 02, from differences of the coordinates, is exact on the 1/256-px "
         "grid: test E == 0 and raise ValueError"
     )
@@ -583,8 +670,9 @@ ZERO_AREA_MISTAKES = [
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
     # r348 item 4: vertices cast to int (truncated), p too or not; the zero-area test on them
-    *(Mistake("vertices truncated", _truncated_words, gives=_truncated(with_p))
-      for with_p in (False, True)),
+    # (r358 4: or rounded)
+    *(Mistake(f"vertices {how}", _truncated_words(how, with_p), gives=_truncated(with_p, how))
+      for how in WHOLE_PIXELS for with_p in (False, True)),
     # r348 item 1: float32 cannot hold a thin far triangle's vertices: its E becomes 0 (named
     # where the code reads float32: a float64 threshold refuses the same triangle)
     Mistake("float32", _float32_flattened_words, fits=_float32_flattened, reads="float32"),
@@ -628,9 +716,8 @@ def _proper_mistakes() -> list[Mistake]:
                 gives=lambda xy, p: np.abs(_areas(xy, p)) / abs(_area(xy))),
         # r94 D3-5: two common mistakes got only the rule (clamping is what the package's
         # perspective_weights does by default)
-        Mistake("clamped", ": your weights are never negative: where p lies outside an edge, "
-                "the weight of the vertex opposite that edge is negative (the weights still "
-                "rebuild p and sum to 1); do not clamp them", gives=_clamped),
+        *(Mistake("clamped", _clamped_words, gives=_clamped(upper, renormalised))
+          for upper in (1.0, np.inf) for renormalised in (True, False)),
         Mistake("p's x and y swapped", ": you swapped p's x and y: p = (x, y), its column "
                 "first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
         Mistake("half areas", _sum_words("you took half of each sub-triangle's E (its "
@@ -649,7 +736,11 @@ def _proper_mistakes() -> list[Mistake]:
     # r348 item 4: four slips that got the rule (or its sum) only
     out += [Mistake("p shifted by ½", _p_shifted_words(by), gives=_p_shifted(by))
             for by in (0.5, -0.5)]  # fmt: skip
-    out.append(Mistake("λ3 = 1 − λ1 + λ2", _lambda3_words, gives=_lambda3_typo))
+    out += [Mistake(f"λ3 = {form}", _lambda3_words(form), gives=_lambda3_typo(signs))
+            for signs, form in LAMBDA3_SLIPS.items()]  # fmt: skip
+    # r358 2: p left untranslated in a solve about one vertex
+    out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
+            for k in range(3)]  # fmt: skip
     out.append(Mistake("no sum equation", _no_sum_row_words, fits=_no_sum_row))
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):
@@ -869,7 +960,7 @@ BARYCENTRIC = Exercise(
     same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
     float32=bary_float32, float32_words=bary_float32_words, float32_makes_inf=True,
     answers=BARYCENTRIC_ANSWERS,
-    draw=_draw_bary, call=call_barycentric, slow=ONE_POINT, hints=(
+    draw=_draw_bary, call=call_barycentric, slow=ONE_POINT, raised_words=_bary_raised, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student (r153 D3-6: the
         # whole number, "= 9.343", not up to its decimal point)

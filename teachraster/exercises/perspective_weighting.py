@@ -127,7 +127,24 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             # λ_i / w_i divided by the largest of them
             "w interpolated linearly": (lam / w) * (lam @ w),
             "normalised by the largest": (lam / w) / np.max(lam / w),
+            # r358 6: μ itself clamped, to [0, 1] or at 0, renormalised or not (the clamp of λ
+            # is "clamped" and "clipped" above)
+            **_clamped_mu(_normalised(lam / w)),
+            # r358 7, 8: λ_i / w_i divided by Σ λ_j w_j, or multiplied by the mean w
+            "divided by Σλw": (lam / w) / (lam @ w),
+            "times the mean w": (lam / w) * np.mean(w),
         }  # fmt: skip
+
+
+def _clamped_mu(mu: np.ndarray) -> dict[str, np.ndarray | None]:
+    """μ clipped to [0, 1] or at 0, as is and renormalised: only where it changes μ."""
+    out = {}
+    for upper, named in ((1.0, "μ clipped"), (np.inf, "μ clamped at 0")):
+        kept = np.clip(mu, 0.0, upper)
+        changed = not np.array_equal(kept, mu)
+        out[named] = kept if changed else None
+        out[f"{named}, renormalised"] = _normalised(kept) if changed and kept.sum() else None
+    return out
 
 
 def _normalised(q: np.ndarray) -> np.ndarray:
@@ -138,6 +155,17 @@ def _normalised(q: np.ndarray) -> np.ndarray:
 W_NOT_AFFINE = ("w is not affine on the screen, 1/w is: the point's 1/w is Σ λ_j / w_j, the "
                 "sum of your own three numerators")  # fmt: skip
 BY_THEIR_SUM = "weights sum to 1, so divide by their sum"
+
+
+def _clamped_mu_words(args, expected, got) -> str:
+    """r358 6: the clamp of μ itself, with what it broke."""
+    summed = "" if _sums_to_1(got) else f", and yours sum to {_their_sum(got)}, not 1"
+    return (
+        "you clamped your weights (to [0, 1], or at 0): the point lies outside the triangle (as "
+        "a clipped or extrapolated one does), and its weights are not clamped here: a negative "
+        f"λ gives a negative μ{summed}"
+    )
+
 
 MISTAKES = {
     "affine": "these are the screen weights λ themselves: that is affine interpolation, "
@@ -180,6 +208,14 @@ MISTAKES = {
     "normalised by the largest": lambda a, e, g: (
         "you divided your λ_i / w_i by the largest of them: the largest weight is then 1 "
         f"and they sum to {_their_sum(g)}; {BY_THEIR_SUM}"),
+    **{k: _clamped_mu_words for k in ("μ clipped", "μ clipped, renormalised", "μ clamped at 0",
+                                      "μ clamped at 0, renormalised")},
+    "divided by Σλw": lambda a, e, g: (
+        "you divided your λ_i / w_i by Σ λ_j w_j, the point's w interpolated linearly on the "
+        f"screen, so your weights sum to {_their_sum(g)}, not 1; {BY_THEIR_SUM}"),
+    "times the mean w": lambda a, e, g: (
+        "you multiplied your λ_i / w_i by the mean of the three w, so your weights sum to "
+        f"{_their_sum(g)}, not 1: the mean w is no normaliser; {BY_THEIR_SUM}"),
 }  # fmt: skip
 
 
