@@ -46,3 +46,28 @@ def test_v3_is_marked_at_the_panels_edge_and_the_note_keeps_off_the_y_label():
             label = panel.yaxis.label.get_window_extent().transformed(ax.transAxes.inverted())
             assert _free_span(ax)[1] < label.x0, (_free_span(ax), label.x0)
         plt.close(fig)
+
+
+def test_4_3s_discs_sit_on_their_vertices_when_the_answer_is_none():
+    """r364 FIG1: with no answer, 4.3 drew the expected colours on draw_clip's blank strip (the
+    first inset), so every disc lay off its vertex, some outside the panel."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises import clip_colour
+    from teachraster.exercises.drawing import clip_panels
+
+    case = clip_colour.colour_cases()[0]
+    expected = case[2]
+    fig, ax = plt.subplots(figsize=(7, 4))
+    clip_colour._draw(ax, case, None)
+    (panel,) = clip_panels(ax)  # the x panel alone
+    (discs,) = panel.collections
+    np.testing.assert_allclose(
+        discs.get_offsets(), np.column_stack([expected[:, 0], expected[:, 2] + expected[:, 3]])
+    )
+    strip = [a for a in ax.child_axes if a not in clip_panels(ax)]
+    assert len(strip) == 1 and not strip[0].collections
+    plt.close(fig)

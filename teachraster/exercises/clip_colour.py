@@ -291,12 +291,13 @@ COLOUR_MISTAKES = [
 def _draw(ax, case, got):
     """4.2's figure of the positions, each vertex a disc of its colour: expected large, yours
     a square inside it (a wrong colour is a square of another colour)."""
-    from .drawing import draw_clip
+    from .drawing import clip_panels, draw_clip
 
     (v, colours), expected = case[1], case[2]
     g = None if got is None else np.asarray(got, float).reshape(-1, 7)
     artists = draw_clip(ax, v, expected[:, :4], None if g is None else g[:, :4], colours)
-    for k, panel in enumerate(ax.child_axes):
+    panels = clip_panels(ax)
+    for k, panel in enumerate(panels):
         for p, marker, size in [(expected, "o", 360), *([(g, "s", 70)] if g is not None else [])]:
             if len(p) and np.isfinite(p).all():
                 artists.append(panel.scatter(p[:, k], p[:, 2] + p[:, 3], s=size, marker=marker,
@@ -306,7 +307,7 @@ def _draw(ax, case, got):
             if hasattr(label, "xyann") and "off the panel" not in label.get_text():
                 label.xyann = (12 if label.xyann[0] > 0 else -12, 12)
     # under the x axis: the report's title holds the top
-    panel = ax.child_axes[0]
+    panel = panels[0]
     artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the expected colours; "
                                     "squares: yours"))  # fmt: skip
     return artists

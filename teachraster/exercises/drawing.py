@@ -241,6 +241,16 @@ def draw_split(ax, v, expected, got):
     return artists
 
 
+#: The label of draw_clip's blank strip (an inset that is no panel; r364 FIG1: 4.3 drew the
+#: expected colours on it, and every disc moved off its vertex, when the answer was None).
+BLANK_STRIP = "blank strip"
+
+
+def clip_panels(ax) -> list:
+    """The panels :func:`draw_clip` drew in ``ax``, x first (its blank strip left out)."""
+    return [a for a in ax.child_axes if a.get_label() != BLANK_STRIP]
+
+
 def draw_clip(ax, v, expected, got, colours=None):
     """The triangle and the polygons in two panels sharing z + w (the near plane is the line
     z + w = 0): x on the left, y on the right (r306 FIG1: with x alone a polygon wrong only
@@ -259,7 +269,9 @@ def draw_clip(ax, v, expected, got, colours=None):
         boxes = [(0.56, 0.44)]
         # r357 FIG2: a blank strip for the panel's y label and ticks, so that the report's
         # note (in the widest strip no inset covers) keeps off them
-        ax.inset_axes([0.4, 0.0, 0.16, 1.0]).set_axis_off()
+        strip = ax.inset_axes([0.4, 0.0, 0.16, 1.0])
+        strip.set_axis_off()
+        strip.set_label(BLANK_STRIP)  # not a panel: 4.3 draws its discs on the panels alone
     else:
         boxes = [(0.0, 0.7)] if flat_y else [(0.0, 0.45), (0.55, 0.45)]
     panels = []
