@@ -3667,10 +3667,14 @@ KINDS.update({
 
 
 def _span_student(swap_xy=False, strict=False, area=True, flat="top", y_offset=0.5,
-                  split=True, long_left=False, stop=0, rounding=None):  # fmt: skip
+                  split=True, long_left=False, stop=0, rounding=None, side=None,
+                  lower_dy=None):  # fmt: skip
     """A float64 student of ``span``, right but for the knobs: sort by y, the long edge's
     crossing and the short edge's (the split), the top-left rounding. ``flat`` is the
-    horizontal edge that owns its centres ("top", "bottom", or "both": no rule)."""
+    horizontal edge that owns its centres ("top", "bottom", "both": no rule, or "none");
+    ``side`` picks x_l by the middle vertex's side of the long edge judged at the row ("row") or
+    by the top vertex ("x1") instead of min/max; ``lower_dy(y1, y2, y3)`` is the lower short
+    edge's denominator."""
 
     def span(xy, row):
         xy = np.asarray(xy, dtype=float)[:, ::-1] if swap_xy else np.asarray(xy, dtype=float)
@@ -3701,6 +3705,12 @@ def _span_student(swap_xy=False, strict=False, area=True, flat="top", y_offset=0
             short_x = at(v[1], v[2])
         else:
             short_x = at(v[0], v[1]) if y <= y2 or not split else at(v[1], v[2])
+        if lower_dy and y1 != y2 and y > y2:
+            short_x = x2 + (y - y2) * (x3 - x2) / lower_dy(y1, y2, y3)
+        if side:
+            long_is_left = x2 > (long_x if side == "row" else x1)
+            a, b = (long_x, short_x) if long_is_left else (short_x, long_x)
+            return left(a), right(b)
         if long_left:
             return left(long_x), right(short_x)
         return left(min(long_x, short_x)), right(max(long_x, short_x)) + stop
@@ -3724,6 +3734,17 @@ R355 = {
     "span, (first, last)": ("span", _span_student(stop=-1), "(first, last)", "last"),
     "span, the long edge always left": ("span", _span_student(long_left=True),
                                         "middle vertex lies left of it", "long edge left"),
+    # r363 M1, C3-C6
+    "span, side judged at the row": ("span", _span_student(side="row"),
+                                     "by the long edge's crossing at this row", "side at row"),
+    "span, side judged by x2 > x1": ("span", _span_student(side="x1"), "(x2 > x1)",
+                                     "side x2 > x1"),
+    "span, lower edge over y3 − y1": ("span", _span_student(lower_dy=lambda a, b, c: c - a),
+                                      "you divided by y3 − y1", "lower denominator"),
+    "span, no top-edge rule": ("span", _span_student(flat="none"),
+                               "a horizontal top edge that runs along", "no top edge"),
+    "span, ⌊x⌋ for both ends": ("span", _span_student(rounding=math.floor),
+                                "you rounded both crossings down", "floor"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R355.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R355.items()})

@@ -513,6 +513,18 @@ def test_span_returned_as_stop_first_is_named_not_a_placeholder():
     assert all("placeholder" not in f.explanation for f in report.failures)
 
 
+def test_span_one_column_short_reads_its_ends_from_the_pair():
+    """r363 C6: (3, 3) where column 3 is covered was told "your first is one column too far
+    right"; its stop is the one too far left."""
+    from teachraster.exercises import spans
+
+    args = (np.array([[3.30078125, 2.30078125], [3.80078125, 2.3984375],
+                      [3.44921875, 2.8984375]]), 2)  # fmt: skip
+    words = spans._ends_words(args, frozenset({3}), spans.as_span((3, 3)))
+    assert words.startswith("your stop is one column too far left") and "here 4" in words
+    assert spans._ends_words(args, frozenset({3}), spans.as_span((4, 4))).startswith("your first")
+
+
 def test_span_that_is_always_empty_is_told_in_the_students_terms():
     """r39 02-3: never the checker's frozenset()."""
     report = _named("span", lambda xy, row: (0, 0), "constant", "the same empty span (0, 0)")

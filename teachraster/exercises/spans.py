@@ -65,7 +65,7 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, [row])
         out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
                     "end)", (xy, row), covered[row]))  # fmt: skip
-    out += _wide_cases() + _edge_cases()
+    out += _wide_cases() + _edge_cases() + _half_cases()
     # first (the drawing of a passing check, and the first failure most students see): a row
     # with covered centres whose crossings of two slanted edges lie on centres (r355 S2: a row
     # along a top edge, whose x_l and x_r are vertices, was called "the left edge")
@@ -158,6 +158,29 @@ def _float32_rows(count: int = 3) -> list[tuple[np.ndarray, int]]:
             out.append((xy, row))
         if len(out) == count:
             break
+    return out
+
+
+#: r363 M1: rows in the middle of each half (above and below the middle vertex) of random
+#: triangles on the 1/256-px grid (numpy seed 363, found by comparing the variant with the
+#: exact columns) where the middle vertex's side, judged by the long edge at the row instead
+#: of at the middle vertex's height, swaps x_l and x_r: every other row asks only near a
+#: vertex, where the two agree, and that student passed every case.
+HALF_CASES = (
+    ("upper", ((26.33203125, 30.13671875), (20.5, 10.76171875), (24.0234375, 27.703125)), 19),
+    ("upper", ((1.7578125, 23.69921875), (23.63671875, 0.4921875), (13.47265625, 18.52734375)),
+     9),
+    ("lower", ((26.0625, 10.62890625), (31.24609375, 7.85546875), (21.94140625, 18.96875)), 14),
+    ("lower", ((15.33203125, 1.16796875), (22.90625, 24.18359375), (24.40625, 31.44921875)), 27),
+)  # fmt: skip
+
+
+def _half_cases() -> list[tuple[str, tuple, frozenset]]:
+    out = []
+    for half, points, row in HALF_CASES:
+        xy = np.array(points)
+        out.append((f"random, row {row} (the middle of the {half} half: which side of the long "
+                    "edge is the middle vertex?)", (xy, row), _covered_rows(xy, [row])[row]))  # fmt: skip
     return out
 
 
@@ -325,6 +348,8 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             # passes every row without a tie, so it is no "sampled at x = col")
             "ties reversed": _columns(math.floor(xl + half), math.floor(xr + half)),
             "corners": _columns(math.ceil(xl), math.ceil(xr)),
+            # r363 C6: ⌊x⌋ for both ends was told the rule, then "first too far right"
+            "floor": _columns(math.floor(xl), math.floor(xr)),
             "right inclusive": _columns(lo, math.floor(xr - half) + 1),
             "left exclusive": _columns(math.floor(xl - half) + 1, hi),
             "rounded": _columns(round(xl), round(xr)),
@@ -333,6 +358,9 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         }
         out.update({k: frozenset() if bottom else v for k, v in rounded.items()})
         out["horizontal reversed"] = _horizontal_reversed(xy, row, lo, hi)
+        # r363 C3: a top edge left out, a bottom edge right, was named "y = row"
+        top = _horizontal_edge(xy, y) == "top"
+        out["no top edge"] = frozenset() if top else exact_columns(xy, row)
     out.update(_edge_variants(xy, row))
     for kind, dy in SHIFTS.items():  # the wrong line: the pixels' top, bottom, the next row
         cross = crossings(xy, row + dy)
@@ -365,7 +393,18 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     (x1, y1), (x2, y2), (x3, y3) = v
     y, half = Fraction(2 * row + 1, 2), Fraction(1, 2)
     right = exact_columns(xy, row)
-    out = dict.fromkeys(("strict", "no area test", "no split", "long edge left"), right)
+    out = dict.fromkeys(
+        (
+            "strict",
+            "no area test",
+            "no split",
+            "long edge left",
+            "side at row",
+            "side x2 > x1",
+            "lower denominator",
+        ),
+        right,
+    )
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
     if area == 0:  # every vertex on one line: its crossings are its ends on this line
         xs = [x for x, vy in v if vy == y] if y1 == y3 else [
@@ -389,6 +428,15 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     out["no split"] = _columns(*sorted((math.ceil(long_x - half), math.ceil(no_split - half))))
     short_x = at(v[0], v[1]) if y <= y2 else at(v[1], v[2])
     out["long edge left"] = _columns(math.ceil(long_x - half), math.ceil(short_x - half))
+    # r363 M1, C5: the side of the long edge the middle vertex lies on, judged by the long
+    # edge at this row (not at the middle vertex's height), or by the top vertex's x
+    for kind, long_is_left in (("side at row", x2 > long_x), ("side x2 > x1", x2 > x1)):
+        a, b = (long_x, short_x) if long_is_left else (short_x, long_x)
+        out[kind] = _columns(math.ceil(a - half), math.ceil(b - half))
+    if y > y2 and y1 != y2:  # r363 C4: the lower short edge divided by the long edge's height
+        wrong = x2 + (y - y2) * (x3 - x2) / (y3 - y1)
+        out["lower denominator"] = _columns(*sorted((math.ceil(long_x - half),
+                                                     math.ceil(wrong - half))))  # fmt: skip
     return out
 
 
@@ -405,6 +453,10 @@ MISTAKES = {
     "⌈x_r − ½⌉ is the first column *not* covered)",
     "left exclusive": "you left out the centre that lies exactly on the left edge: a left edge "
     "owns its centres under the top-left rule (⌈x_l − ½⌉, not ⌊x_l − ½⌋ + 1)",
+    "floor": "you rounded both crossings down (⌊x_l⌋, ⌊x_r⌋), as if a column were covered "
+    "when its left side, x = col, lay between them: it is covered when its centre col + ½ "
+    "does, so you covered a column whose centre lies left of x_l, or left out one whose "
+    "centre lies left of x_r; count the columns whose centres lie between x_l and x_r",
     "rounded": "you rounded the crossings to the nearest integer: a column is covered when "
     "its centre col + ½ lies between them, so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉",
     "row top": "you intersected the edges with y = row, the top of the pixels, not with the "
@@ -415,6 +467,9 @@ MISTAKES = {
     "with the line of their centres, y = row + ½",
     "row + 1.5": "you intersected the edges with y = row + 1.5, the centres of the row below, "
     "not with this row's centre line, y = row + ½",
+    "no top edge": "you left out the centres on a horizontal top edge that runs along the "
+    "centre line (a bottom edge you handled right): a top edge, with the triangle below it, "
+    "owns its centres",
     "x and y swapped": "you swapped x and y: a vertex is (x, y) = (xy[k, 0], xy[k, 1]), and a "
     "raster line is a horizontal line, y = row + ½, whose crossings are x values",
     "horizontal reversed": "your rule for a horizontal edge on the centre line is the wrong "
@@ -432,6 +487,17 @@ MISTAKES = {
     "no split": "you used the edge from the top vertex to the middle one below the middle "
     "vertex too: the edge that bounds the triangle on that side changes at the middle vertex "
     "(the split), and below it runs from the middle vertex to the bottom one",
+    "side at row": "your x_l and x_r are swapped on this row: you judged which side of the "
+    "long edge the middle vertex lies on by the long edge's crossing at this row; judge it "
+    "where the long edge reaches the middle vertex's height (or take the smaller crossing as "
+    "x_l)",
+    "side x2 > x1": "your x_l and x_r are swapped on this row: you judged which side of the "
+    "long edge the middle vertex lies on by comparing it with the top vertex (x2 > x1); judge "
+    "it by the long edge where it reaches the middle vertex's height (or take the smaller "
+    "crossing as x_l)",
+    "lower denominator": "below the middle vertex your crossing of the edge from the middle "
+    "vertex to the bottom one is off: you divided by y3 − y1, the long edge's height, not by "
+    "that edge's own height y3 − y2: x = x2 + (y − y2)·(x3 − x2)/(y3 − y2)",
     "long edge left": "you took the long edge's crossing (top vertex to bottom one) as the "
     "left end: the long edge is the left one only when the middle vertex lies right of it; "
     "here the middle vertex lies left of it, so the long edge bounds the span on the right "
@@ -494,18 +560,31 @@ def _horizontal_words(args, expected, got) -> str:
 
 
 def _ends_fits(args, expected, got) -> bool:
-    return bool(expected) and (
-        got == expected - {min(expected)} or got == expected | {max(expected) + 1}
+    return _end_off(expected, got) is not None
+
+
+def _end_off(expected, got) -> str | None:
+    """Which end is one column off ("first" too far right, "stop" too far right or left), read
+    from the pair returned (r363 C6: a one-column span returned as (3, 3) was told "your first
+    is one column too far right"; its stop is one too far left)."""
+    if not expected:
+        return None
+    lo, hi = min(expected), max(expected) + 1
+    pair = _returned(got) or (min(got, default=hi), max(got, default=hi - 1) + 1)
+    return {(lo + 1, hi): "first", (lo, hi + 1): "stop right", (lo, hi - 1): "stop left"}.get(
+        tuple(pair)
     )
 
 
 def _ends_words(args, expected, got) -> str:
     """Which end is off (r355 S3: "one end" left the student to work out which)."""
-    if got == expected - {min(expected)}:
+    end, stop = _end_off(expected, got), max(expected) + 1
+    if end == "first":
         return (f"your first is one column too far right: column {min(expected)}, whose "
                 "centre lies at or right of x_l, is the first covered one")  # fmt: skip
-    return (f"your stop is one column too far right: stop is the first column *not* covered, "
-            f"here {max(expected) + 1}")  # fmt: skip
+    side = "right" if end == "stop right" else "left"
+    return (f"your stop is one column too far {side}: stop is the first column *not* covered, "
+            f"here {stop} (your first is right)")  # fmt: skip
 
 
 SYMPTOMS = (
