@@ -1059,13 +1059,23 @@ def _segment_distance(p, a, b) -> tuple[float, float]:
     return float(np.hypot(*(p - (a + t * d)))), t
 
 
-@pytest.mark.parametrize("v2", [(14.5, 6.25), (1.0, 12.0)], ids=["clockwise", "counter"])
+@pytest.mark.parametrize("v2", [(14.5, 6.25), (1.0, 12.0), (0.46484375, 6.2890625)],
+                         ids=["clockwise", "counter", "editor-by-the-frame"])  # fmt: skip
 def test_edge_labels_sit_at_the_edges_they_name(v2):
     """Each edge label lies by the middle of the edge its name denotes (E21 between v2 and v1),
     for either winding: the test order then differs from v1→v2→v3 (review r299 02-3: after
-    the flip "E21" and "E13" sat at each other's edge)."""
+    the flip "E21" and "E13" sat at each other's edge), and clear of the vertex names (review
+    r354 FIG1: lesson 02's editor, v2 dragged to the frame: "E21" covered "v1", 3 px from its
+    edge)."""
     xy = np.array([(2.25, 1.75), v2, (5.75, 14.5)])
-    view = tp.FillView(make_fill(xy=xy), step=-1)
+    if v2[0] < 1:
+        from teachraster.widgets import TriangleEditor
+
+        editor = TriangleEditor(tr.Triangle(xy), 16, 16, method="halfplane", backend="image",
+                                style="classroom", probe=(7.5, 7.5), comparison=False)  # fmt: skip
+        view = editor.view
+    else:
+        view = tp.FillView(make_fill(xy=xy), step=-1)
     view.fig.canvas.draw()
     to_data = view.ax.transData.inverted().transform
     snapped = view.trace.snapped
@@ -1081,3 +1091,4 @@ def test_edge_labels_sit_at_the_edges_they_name(v2):
                   for i, j in [(0, 1), (1, 2), (2, 0)] if {i, j} != {a, b}]  # fmt: skip
         assert gap < min(others), (label.get_text(), centre)
         assert 0.15 < t < 0.85 and gap < 2.0, (label.get_text(), centre, t, gap)
+        assert not any(box.overlaps(v.get_window_extent()) for v in view.triangle.labels)

@@ -453,3 +453,28 @@ def test_a_note_explains_one_given_answer():
             Predict("Bits?", answer=49, notes=notes)
     with pytest.raises(ValueError, match="notes"):
         Predict("Which?", ["a", "b"], answer="a", notes={"c": "no such choice"})
+
+
+def test_a_cell_holding_for_several_questions_says_it_waits_for_all(published, monkeypatch):
+    """Review r354 02-S2: lesson 02's answer cell holds for three edge questions; after the
+    first was checked its line still said "shown once the question above is checked". Each
+    line of such a cell names them all, the first one updated when the second is held."""
+    from teachraster.widgets import predict
+
+    monkeypatch.setattr(predict, "_this_cell", lambda: ("kernel", 7))
+    qs = [Predict(f"Edge {k}?", ["a", "b"], answer="a", headless=False) for k in range(3)]
+    for q in qs:
+        q.hold()
+    lines = [(data["text/plain"], kw) for data, kw in published]
+    shown = [text for text, kw in lines if "update" not in kw]
+    assert shown[0] == predict.HELD_TEXT and len(shown) == 3
+    assert shown[2] == lines[-1][0] and "once all three questions above are checked" in shown[2]
+    ids = [kw["transient"]["display_id"] for _, kw in lines if "update" not in kw]
+    last = {kw["transient"]["display_id"]: text for text, kw in lines}  # each line's last text
+    assert all(last[i] == shown[2] for i in ids)
+    monkeypatch.setattr(predict, "_this_cell", lambda: ("kernel", 8))  # the next cell: one
+    published.clear()
+    Predict("Alone?", ["a", "b"], answer="a", headless=False).hold()
+    assert [data["text/plain"] for data, _ in published] == [predict.HELD_TEXT]
+    for q in qs:
+        q.close()

@@ -891,6 +891,21 @@ def test_step_label_follows_the_slider(player):
     assert player.view.header.get_text() == "Half-planes"  # still: drawn once, not per step
 
 
+def test_the_last_step_of_a_triangle_without_attributes_is_named_result():
+    """Review r354 02-S5: lesson 02's player read "172 of 0–172 (interpolate)" beside "no
+    attributes to interpolate"; the last step of a bare triangle shows the result."""
+    from teachraster.plotting.frames import step_info
+
+    bare = tr.rasterize(tr.Triangle([[1, 1], [14, 4], [5, 14]]), W, H, trace=True).trace
+    assert "no attributes to interpolate" in bare.step(-1).caption
+    assert step_info(bare, -1) == f"of 0–{len(bare) - 1} (result)" and not bare.interpolates
+    from teachraster.plotting import FillView
+
+    view = FillView(bare, step=-1)  # the figure's header names it alike
+    assert view.header.get_text().endswith(f"step {len(bare) - 1} of 0–{len(bare) - 1} (result)")
+    assert tr.rasterize(triangle(), W, H, trace=True).trace.interpolates
+
+
 # -- dragging in the page ----------------------------------------------------------------------
 def test_page_drag_moves_the_vertex_and_answers_each_position(editor):
     page = editor.display.widget
@@ -917,6 +932,28 @@ def test_page_drag_moves_the_vertex_and_answers_each_position(editor):
     assert x0 + sx * 11.25 == pytest.approx(px)
     assert y0 + sy * 6.5 == pytest.approx(page.size[1] - py)
     assert page.handles[1] == [11.25, 6.5]
+
+
+def test_page_drag_a_position_arriving_after_the_release_leaves_the_figure_at_the_release(
+    editor,
+):
+    """Review r354 W1: after a fast drag, the figure and the area stayed on the drag's first
+    position while the sliders showed where it was let go (ipykernel 7 handed the busy
+    kernel the first position after the release). It is dropped, and outside a drag the
+    sliders, not a drag's left-over positions, say where the vertices are."""
+    page = editor.display.widget
+    page.send = lambda content, buffers=None: None
+    move = {"type": "move", "i": 1, "view": "a"}
+    page._on_page_message(page, {**move, "x": 10.0, "y": 5.0, "seq": 2}, [])
+    page._on_page_message(page, {**move, "x": 2.5, "y": 5.5, "seq": 3, "final": True}, [])
+    page._on_page_message(page, {**move, "x": 10.5, "y": 5.0, "seq": 1}, [])  # late: dropped
+    assert editor._drag_xy is None and (editor.x[1].value, editor.y[1].value) == (2.5, 5.5)
+    assert editor.fill.trace.snapped[1].tolist() == [2.5, 5.5] == page.handles[1]
+    assert f"area {abs(editor.fill.trace.signed_area):.2f}" in editor.info.value
+    page._on_page_message(page, {**move, "view": "b", "x": 9.0, "y": 5.0, "seq": 1}, [])
+    assert editor.fill.trace.snapped[1].tolist() == [9.0, 5.0]  # another view's drag: taken
+    editor.y[1].value = 6.0  # a slider outside a drag: the drag's position is not kept
+    assert editor.fill.trace.snapped[1].tolist() == [2.5, 6.0] and editor._drag_xy is None
 
 
 def test_editor_redraws_only_the_triangle(editor):

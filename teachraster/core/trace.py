@@ -569,6 +569,18 @@ class FillTrace:
             return f"; its {s} samples: none covered, the pixel is not shaded"
         return f"; its {s} samples: {k} covered, the pixel is shaded (MSAA)"
 
+    @property
+    def interpolates(self) -> bool:
+        """Whether the last step interpolates anything: attributes or depth, of a triangle
+        not culled (else it only shows the finished coverage)."""
+        return not self.culled and (bool(self.pixel_affine) or self.pixel_depth is not None)
+
+    def phase(self, step: Step) -> str:
+        """What the readouts call ``step``: its kind, but "result" for the last step of a
+        triangle with nothing to interpolate ("(interpolate)" stood beside "no attributes to
+        interpolate", review r354 02-S5)."""
+        return "result" if step.kind == "interpolate" and not self.interpolates else step.kind
+
     def _interpolation_caption(self) -> str:
         n = int(np.count_nonzero(self.covered))
         if self.culled:

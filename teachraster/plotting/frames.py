@@ -115,7 +115,7 @@ def step_info(trace, k: int) -> str:
     The steps are numbered from 0, as the slider, the captions and FillView's header number
     them: "9 of 17" read as the 9th of 17 steps where there are 18 (review r249 S5).
     """
-    return f"of 0–{len(trace) - 1} ({trace.step(k).kind})"
+    return f"of 0–{len(trace) - 1} ({trace.phase(trace.step(k))})"
 
 
 def step_texts(trace) -> tuple[list[str], list[str]]:

@@ -29,9 +29,15 @@ RING_STEP = 0.6
 #: label (and more per share of its own area) or over a vertex dot, touching an edge at all and then per
 #: box width of edge, covering the triangle's inside (per share of its area, sampled),
 #: turning from the preferred direction (1 - cos of the angle), each ring farther out, and
-#: standing nearer another vertex than its own (it would name the wrong one)
+#: standing nearer another vertex than its own (it would name the wrong one); an edge label
+#: by an end of its edge (:data:`END_SHARE`)
 COST = {"out": 1000.0, "label": 100.0, "dot": 100.0, "touch": 20.0, "edge": 40.0,
-        "inside": 10.0, "turn": 3.0, "ring": 1.0, "astray": 100.0, "crowd": 30.0}  # fmt: skip
+        "inside": 10.0, "turn": 3.0, "ring": 1.0, "astray": 100.0, "crowd": 30.0,
+        "end": 60.0}  # fmt: skip
+
+#: An edge label whose foot on its edge lies farther than this share of the edge from the
+#: middle pays COST["end"], in proportion to how much farther (all of it at an end)
+END_SHARE = 0.3
 
 #: An edge label clear of the dots by less than this share of a grid pixel still pays
 #: COST["crowd"]: between two rows of centres it goes to the middle, not just off the dots
@@ -256,7 +262,8 @@ def place_on_line(segment, half, *, frame, triangle, labels, dots, samples: int 
 EDGE_LABEL_REACH = 3.0
 
 
-def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots) -> np.ndarray:
+def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots,
+                      labels=None) -> np.ndarray:  # fmt: skip
     """Centres (display pixels, (3, 2)) for the labels of a triangle's three edges on a pixel
     grid, each a box of half-size ``half`` (display pixels) within :data:`EDGE_LABEL_REACH`
     grid pixels of its edge's midpoint ``mids`` (3, 2, grid coordinates), clear of the
@@ -267,7 +274,9 @@ def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots) -
     8's centres), then between them. ``edges`` (3, 2) are the vertex indices (into
     ``triangle``) of each label's edge, in the order of ``mids``: the test order of a fill
     differs from v1→v2→v3 when the triangle winds the other way (review r299 02-3: after the
-    flip "E21" and "E13" were drawn at each other's edge).
+    flip "E21" and "E13" were drawn at each other's edge). ``labels`` (m, 4 boxes, display):
+    other labels (the vertex names) kept clear of as the edge labels keep clear of each other
+    (review r354 FIG1: "E21" over "v1").
 
     Examples
     --------
@@ -286,6 +295,7 @@ def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots) -
     segments = np.asarray(triangle, dtype=np.float64)[np.asarray(edges, dtype=int)]  # (3, 2, 2)
     grid_px = float(np.hypot(*(to_display([1.0, 0.0]) - to_display([0.0, 0.0])))) or 1.0
     placed: list = []
+    named = np.zeros((0, 4)) if labels is None else np.asarray(labels, dtype=np.float64)
     for k, mid in enumerate(mids):
         dx, dy = np.meshgrid(steps, steps)
         cand = np.column_stack([mid[0] + dx.ravel(), mid[1] + dy.ravel()])
@@ -294,11 +304,17 @@ def place_edge_labels(mids, half, *, edges, to_display, frame, triangle, dots) -
         boxes = boxes_around(shown, half)
         gap = np.stack([_to_segment(shown, a, b) for a, b in segments])  # (3, n), mids' order
         astray = gap[k] > np.delete(gap, k, axis=0).min(axis=0)
+        # beside an end of its edge rather than its middle: by a vertex it names the vertex
+        # more than the edge ("E21" right of "v1", review r354 FIG1)
+        a, b = segments[k]
+        along = ((shown - a) @ (b - a)) / max(float((b - a) @ (b - a)), 1e-12)
+        beyond = np.clip(np.abs(along - 0.5) - END_SHARE, 0, None) / (0.5 - END_SHARE + 1e-9)
         far = np.hypot(*(cand - mid).T)
         crowded = overlap_share(boxes + CROWD_MARGIN * grid_px * np.array([-1, -1, 1, 1]), dots)
         cost = (clutter(boxes, half, frame=frame, triangle=triangle, dots=dots)
                 + COST["crowd"] * (crowded > 0)
-                + beside(boxes, boxes_around(placed, half)) + COST["astray"] * astray
+                + beside(boxes, np.vstack([boxes_around(placed, half), named]))
+                + COST["astray"] * astray + COST["end"] * beyond
                 + 2 * COST["inside"] * inside_share(boxes, triangle)
                 + COST["ring"] * far + COST["ring"] * gap[k] / grid_px)  # fmt: skip
         placed.append(shown[int(np.argmin(cost))])

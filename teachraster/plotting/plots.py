@@ -388,6 +388,10 @@ class TriangleArtists(Artists):
             label.set_position(off)
             label.set_text(name)
         mids = np.array([(xy[a] + xy[b]) / 2 for a, b in edges])
+        if self.keep_clear is not None and self.edge_labels and not self.clear:
+            # the vertex labels' boxes, for the edge labels to keep clear of: after the flip
+            # "E21" was drawn over "v1", far from its own edge (review r354 FIG1)
+            self.label_boxes = self._label_boxes(xy, offsets)
         offsets = _outward(mids, centre, fs(0.9), ax)
         if self.keep_clear is not None and self.edge_labels:
             offsets = self._edge_offsets(xy, mids, edges)
@@ -416,10 +420,33 @@ class TriangleArtists(Artists):
         # a centre dot (2.5 points wide in the classroom style) and a gap of about as much
         centre = 0.3 * size
         dots = np.vstack([boxes_around(shown(self.keep_clear), (centre, centre)),
-                          boxes_around(shown(xy), (dot, dot)), self.label_boxes])  # fmt: skip
+                          boxes_around(shown(xy), (dot, dot))])  # fmt: skip
+        # the vertex names as labels: over one costs more than over a centre dot, and more
+        # the more of it is hidden (as dots, "E21" still sat on "v1": every place near its
+        # short edge by the frame covered a dot or the triangle, review r354 FIG1)
         centres = place_edge_labels(mids, half, edges=edges, to_display=shown,
-                                    frame=ax.bbox.extents, triangle=shown(xy), dots=dots)  # fmt: skip
+                                    frame=ax.bbox.extents, triangle=shown(xy), dots=dots,
+                                    labels=self.label_boxes)  # fmt: skip
         return [tuple((c - p) / scale) for c, p in zip(centres, shown(mids))]
+
+    def _vertex_label_half(self) -> tuple:
+        """(display pixels per point, the half-size of a vertex label's box in display
+        pixels): two bold characters in their padded box."""
+        ax = self.outline.axes
+        scale = ax.figure.dpi / 72.0
+        size = self.labels[0].get_fontsize() * scale
+        return scale, (0.85 * size, 0.75 * size)
+
+    def _label_boxes(self, xy: np.ndarray, offsets) -> np.ndarray:
+        """The display boxes (n, 4) of the vertex labels shown, at ``offsets`` (points)."""
+        shown = [label.get_visible() for label in self.labels]
+        if not any(shown):
+            return np.zeros((0, 4))
+        ax = self.outline.axes
+        ax.get_xlim()  # brings autoscaled limits up to date before transData is read
+        scale, half = self._vertex_label_half()
+        centres = ax.transData.transform(xy) + np.asarray(offsets, dtype=np.float64) * scale
+        return boxes_around(centres[np.asarray(shown)], half)
 
     def _clear_offsets(self, xy: np.ndarray) -> list:
         """Offsets (points) of the vertex labels from their vertices, each where its box
@@ -428,9 +455,7 @@ class TriangleArtists(Artists):
         in ``label_boxes``."""
         ax = self.outline.axes
         ax.get_xlim()  # brings autoscaled limits up to date before transData is read
-        scale = ax.figure.dpi / 72.0  # display pixels per point
-        size = self.labels[0].get_fontsize() * scale
-        half = (0.85 * size, 0.75 * size)  # two bold characters in their padded box
+        scale, half = self._vertex_label_half()
         dot = (self.vertices.get_markersize() / 2 + 1.5) * scale  # its radius and a gap
         shown = ax.transData.transform(xy)
         centres = place_vertex_labels(shown, half, dot, ax.bbox.extents)

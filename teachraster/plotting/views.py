@@ -487,7 +487,7 @@ class FillView:
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
             # the steps are numbered from 0: "of 0-22" rather than "of 22", which reads as a count
-            self.header.set_text(f"{method}: step {k} of 0–{len(trace) - 1} ({step.kind})")
+            self.header.set_text(f"{method}: step {k} of 0–{len(trace) - 1} ({trace.phase(step)})")
         else:
             self.header.set_text(method)
         self._caption = step.caption

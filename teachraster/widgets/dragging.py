@@ -125,6 +125,8 @@ class DragFigure(anywidget.AnyWidget):
         self.deflate = deflate
         self.moves = 0
         self._seq = 0
+        #: per view of the page, the number of the last release handled (see _stale)
+        self._released: dict = {}
         self._t0 = 0.0
         self._last = None  # the last picture sent: patches are computed against it
         self._ref = None  # reference mode: the picture patches are computed against
@@ -149,7 +151,7 @@ class DragFigure(anywidget.AnyWidget):
         elif kind == "ref" and self.reference and self._last is not None:
             if int(content.get("ref", -1)) == self.ref_frame:
                 self._send_reference()
-        if kind != "move" or self.on_move is None:
+        if kind != "move" or self.on_move is None or self._stale(content):
             return
         self.moves += 1
         self._seq = int(content.get("seq", 0))
@@ -163,6 +165,18 @@ class DragFigure(anywidget.AnyWidget):
             self.on_move(int(content["i"]), float(content["x"]), float(content["y"]), final)
         finally:
             self.in_drag = False
+
+    def _stale(self, content) -> bool:
+        """True for a position of a drag whose release was handled already (and record a
+        release). The page sends them in order, but ipykernel 7 may hand a kernel that is
+        busy (a notebook still running) its messages out of order: the first position of a
+        fast drag came after the release, and the figure stayed mid-drag, on the old vertex,
+        while the sliders showed where it was let go (review r354 W1, 1 drag in 6)."""
+        view, seq = content.get("view"), int(content.get("seq", 0))
+        if content.get("final"):
+            self._released[view] = max(seq, self._released.get(view, 0))
+            return False
+        return seq < self._released.get(view, 0)
 
     def show(self, fig, ax, handles, *, final: bool = True, rgba=None) -> None:
         """Send the figure's current pixels (drawn already) and where the handles are now.

@@ -368,9 +368,10 @@ class TriangleEditor(Holdable):
 
     @property
     def xy(self) -> np.ndarray:
-        """(3, 2) vertex positions set on the sliders (or where a drag in the page has them:
-        the sliders follow at the release)."""
-        if self._drag_xy is not None:
+        """(3, 2) vertex positions set on the sliders (or, while a drag in the page is under
+        way, where it has them: the sliders follow at the release). Outside a drag the
+        sliders rule: a drag's positions left over never hold the figure (review r354 W1)."""
+        if self._drag_xy is not None and self._dragging_in_page:
             return self._drag_xy.copy()
         return np.array([[self.x[i].value, self.y[i].value] for i in range(3)])
 
@@ -425,6 +426,8 @@ class TriangleEditor(Holdable):
         """
         t0 = time.perf_counter()
         dragging = self._dragging_in_page
+        if not dragging:  # the sliders have it now (see xy)
+            self._drag_xy = None
         self.tri = Triangle(self.xy, w=self.w_values, z=self.tri.z, attrs=self.tri.attrs)
         self.fill = self._rasterize(self.tri, self.method.value)
         self.view.set_fill(self.fill, step=-1, draw=False)

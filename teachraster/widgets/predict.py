@@ -104,6 +104,44 @@ HELD_TEXT = (
 )
 
 
+#: What each held line says when a cell holds its outputs for several questions (``hold()``
+#: called on each): they show only once all are checked, and "the question above" read as
+#: the first, which the student checked to find them still hidden (review r354 02-S2)
+HELD_ALL_TEXT = (
+    "(shown once all {n} questions above are checked; if it stays hidden after that, run "
+    "this cell again)"
+)
+
+#: The number of questions a cell's held lines wait for, as HELD_ALL_TEXT writes it
+COUNT_WORDS = {2: "two", 3: "three", 4: "four", 5: "five", 6: "six"}
+
+#: The held lines of the cell running now: (its request's message id, [(display id, css)])
+_cell_holds: list = [None, []]
+
+
+def _this_cell():
+    """What names the cell running now (its request's message id), None outside a kernel."""
+    try:
+        from IPython import get_ipython
+    except ImportError:  # pragma: no cover - ipywidgets depends on IPython
+        return None
+    shell = get_ipython()
+    if shell is None or getattr(shell, "kernel", None) is None:
+        return None
+    header = (getattr(shell, "parent_header", None) or {}).get("header", {})
+    return header.get("msg_id")
+
+
+def _held_line(display_id: str, css: str, text: str) -> dict:
+    """The held line's data: the style, the live text and the bare one (see HELD_CSS)."""
+    # two texts: the style shows the first, and where it is stripped the inline styles
+    # (which sanitisers keep) show the second
+    line = (f"<div class='teachraster-held {display_id}' style='color:#555'>"
+            f"<i class='teachraster-held-live' style='display: none'>{text}</i>"
+            f"<i class='teachraster-held-bare'>{HELD_BARE_TEXT}</i></div>")  # fmt: skip
+    return {"text/html": css + line, "text/plain": text}
+
+
 #: What the held line says where its style is stripped (see :data:`HELD_CSS`): then nothing
 #: hides the outputs after it, and "it stays hidden" would be untrue (review r157 00-7).
 HELD_BARE_TEXT = (
@@ -143,13 +181,18 @@ class HoldsAnswer:
         display_id = f"teachraster-held-{os.getpid()}-{next(_ids)}"
         held.append(display_id)
         css = HELD_CSS.format(held=display_id, released=self._released_class())
-        # two texts: the style shows the first, and where it is stripped the inline styles
-        # (which sanitisers keep) show the second
-        line = (f"<div class='teachraster-held {display_id}' style='color:#555'>"
-                f"<i class='teachraster-held-live' style='display: none'>{HELD_TEXT}</i>"
-                f"<i class='teachraster-held-bare'>{HELD_BARE_TEXT}</i></div>")  # fmt: skip
-        publish_display_data({"text/html": css + line, "text/plain": HELD_TEXT},
+        cell = _this_cell()
+        if _cell_holds[0] != cell or cell is None:
+            _cell_holds[:] = [cell, []]
+        lines = _cell_holds[1]
+        lines.append((display_id, css))
+        n = len(lines)
+        text = HELD_TEXT if n == 1 else HELD_ALL_TEXT.format(n=COUNT_WORDS.get(n, n))
+        publish_display_data(_held_line(display_id, css, text),
                              transient={"display_id": display_id})  # fmt: skip
+        for earlier, earlier_css in lines[:-1]:  # the cell's other lines wait for all, too
+            publish_display_data(_held_line(earlier, earlier_css, text),
+                                 transient={"display_id": earlier}, update=True)  # fmt: skip
 
     def _released_class(self) -> str:
         """The class the prediction's widget takes once revealed (see :data:`HELD_CSS`).

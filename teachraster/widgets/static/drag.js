@@ -262,6 +262,9 @@ function render({ model, el }) {
 
   // pending: seq -> time sent, of the positions not answered yet
   const s = { dragging: null, latest: null, sent: null, pending: new Map(), seq: 0 };
+  // this view's name in its positions: the kernel numbers each view's drags apart (a
+  // position that reaches it after its drag's release is dropped, dragging.py)
+  const viewId = Math.random().toString(36).slice(2);
   // the first frame of a drag, timed (for benchmarks: data-first-frame on the <img>):
   // press -> position sent -> answer received -> picture decoded -> painted, in ms
   let first = null;
@@ -290,7 +293,7 @@ function render({ model, el }) {
       setTimeout(() => checkAlive(s.seq), 6000);
     }
     if (first && first.seq === undefined) [first.seq, first.sent] = [s.seq, performance.now()];
-    model.send({ type: "move", i: s.dragging, x, y, seq: s.seq, final });
+    model.send({ type: "move", i: s.dragging, x, y, seq: s.seq, final, view: viewId });
   }
 
   function pump() {
