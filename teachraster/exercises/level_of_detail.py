@@ -245,6 +245,7 @@ def exercise(scene) -> Exercise:
         "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
         _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
         scene=scene, inputs_drawn=True, hints=HINTS,
+        example=4,  # r362 FIG1: 1 × 16 texels, 7.1's question (λ = 0 showed two unit arrows)
     )  # fmt: skip
 
 

@@ -538,6 +538,7 @@ def bilinear_exercise(scene) -> Exercise:
         draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT), *NAMED_HINTS),
         once=((BILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
+        example=8,  # r362 FIG1: u = 0.05, 7.2's question (a texel centre had weights 1, 0, 0, 0)
     )  # fmt: skip
 
 
@@ -580,6 +581,7 @@ def draw_texture_case(ax, case, got):
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
         artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
                                               edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
+        artists += _draw_wrapped(ax, shown, int(x0 + dx), int(y0 + dy), case[1][2])
         artists.append(ax.text(x0 + dx + 0.5, y0 + dy + 0.78, f"w {weight:.2g}", ha="center",
                                fontsize="x-small", color="#2b7bba",
                                bbox={"facecolor": "white", "alpha": 0.8, "pad": 1,
@@ -591,7 +593,7 @@ def draw_texture_case(ax, case, got):
     # r286 FIG7: texel numbers are whole ("0.0 2.5 5.0 7.5" read as fractions of a texel)
     ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax.yaxis.set_major_locator(MaxNLocator(integer=True))
-    where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
+    where = (f"level 0 of levels 0–{len(case[1][0]) - 1}, λ = {num(case[1][2])}" if levels else
              f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
     if method:
         where = f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres"
@@ -602,6 +604,27 @@ def draw_texture_case(ax, case, got):
         text = f"uv = {vec(uv)} (×), {where};\nthe filtered value is {_value(expected, got)}{yours}"
     artists.append(ax.set_xlabel(text, fontsize="x-small"))
     return artists
+
+
+def _draw_wrapped(ax, shown, c, r, wrap) -> list:
+    """A box beyond the border filled with the texel it stands for, and which one (r362
+    FIG1: u = 0.05's column −1 was an empty box): "repeat" tiles, "clamp" takes the border."""
+    from matplotlib.patches import Rectangle
+
+    h, w = shown.shape[:2]
+    if 0 <= c < w and 0 <= r < h:
+        return []
+    if wrap == "repeat":
+        cw, rw = c % w, r % h
+    else:
+        cw, rw = min(max(c, 0), w - 1), min(max(r, 0), h - 1)
+    grey = np.broadcast_to(np.clip(shown[rw, cw], 0, 1), (3,))
+    name = f"col {cw}" if 0 <= r < h else f"row {rw}" if 0 <= c < w else f"({rw}, {cw})"
+    return [
+        ax.add_patch(Rectangle((c, r), 1, 1, facecolor=tuple(grey), edgecolor="none", zorder=0)),
+        ax.text(c + 0.5, r + 0.3, f"= {name}", ha="center", fontsize="xx-small", color="#2b7bba",
+                bbox={"facecolor": "white", "alpha": 0.8, "pad": 1, "edgecolor": "none"}),
+    ]  # fmt: skip
 
 
 # -- trilinear --------------------------------------------------------------------------------
@@ -902,4 +925,5 @@ def trilinear_exercise(scene) -> Exercise:
         hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True, raised_words=_no_level_above_q,
+        example=2,  # r362 FIG1: λ = 1.5, between two levels (λ = 0 was level 0 alone)
     )  # fmt: skip
