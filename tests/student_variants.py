@@ -3877,3 +3877,66 @@ R357 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R357.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R357.items()})
+
+
+# -- r362 07: half-named bilinear/trilinear slips, and ceil told the rule in some kernels -----
+def _bilinear_r362(*, rounding=math.floor, scale_swapped=False, wrap_uv=False, fy_zero=False):
+    """A student's bilinear with one r362 slip: ``rounding`` for floor, u scaled by H and v by
+    W, (u, v) wrapped/clamped first with only the upper index clamped, or fy left at 0."""
+
+    def fn(texture, uv, wrap):
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        u, v = float(uv[0]), float(uv[1])
+        if wrap_uv:
+            u, v = (u % 1.0, v % 1.0) if wrap == "repeat" else (min(max(u, 0.0), 1.0), min(max(v, 0.0), 1.0))  # fmt: skip
+        x, y = (u * h - 0.5, v * w - 0.5) if scale_swapped else (u * w - 0.5, v * h - 0.5)
+        x0, y0 = int(rounding(x)), int(rounding(y))
+        fx, fy = x - x0, (0.0 if fy_zero else y - y0)
+        if wrap_uv:  # x0 = −1 is Python's last column
+            c, r = (x0, min(x0 + 1, w - 1)), (y0, min(y0 + 1, h - 1))
+        elif wrap == "repeat":
+            c, r = (x0 % w, (x0 + 1) % w), (y0 % h, (y0 + 1) % h)
+        else:
+            c = (min(max(x0, 0), w - 1), min(max(x0 + 1, 0), w - 1))
+            r = (min(max(y0, 0), h - 1), min(max(y0 + 1, 0), h - 1))
+        top = (1 - fx) * tex[r[0], c[0]] + fx * tex[r[0], c[1]]
+        return (1 - fy) * top + fy * ((1 - fx) * tex[r[1], c[0]] + fx * tex[r[1], c[1]])
+
+    return fn
+
+
+def _trilinear_round_lower(pyramid, uv, lod, wrap="repeat"):
+    """Lower level round(λ), the weight still λ − ⌊λ⌋."""
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    d, t = round(lam), lam - math.floor(lam)
+    return (1 - t) * bilinear(pyramid[d], uv, wrap) + t * bilinear(pyramid[min(d + 1, q)], uv, wrap)
+
+
+def _mip_ceil(ddx, ddy, size):
+    h, w = size
+    rho = max(math.hypot(ddx[0] * w, ddx[1] * h), math.hypot(ddy[0] * w, ddy[1] * h))
+    return float(math.ceil(math.log2(rho)))
+
+
+R362 = {
+    "bilinear with round() for floor": (
+        "bilinear", _bilinear_r362(rounding=round), "you took round(x) for the texel to the",
+        "round() for floor"),
+    "bilinear with u scaled by H and v by W": (
+        "bilinear", _bilinear_r362(scale_swapped=True), "you scaled u by H and v by W",
+        "u·H and v·W"),
+    "bilinear with (u, v) wrapped, upper index clamped": (
+        "bilinear", _bilinear_r362(wrap_uv=True), "clamped only the right and lower texel",
+        "(u, v) wrapped, upper index clamped"),
+    "bilinear with the vertical fraction left at 0": (
+        "bilinear", _bilinear_r362(fy_zero=True), "in row ⌊y⌋ alone", "no vertical blend"),
+    "trilinear with round(λ) for the lower level, weight λ − ⌊λ⌋": (
+        "trilinear", _trilinear_round_lower, "you took round(λ) for the lower level",
+        "round() for floor"),
+    "mip level rounded up (ceil)": (
+        "mip_level", _mip_ceil, "you rounded λ up to a whole level (ceil)", "rounded up"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R362.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R362.items()})

@@ -208,3 +208,16 @@ def test_the_block_figure_draws_the_decisive_centres_only_once_hints_are_spent()
         plt.close(fig)
     finally:
         tries.spend_hints(["classify_block"])
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 6])
+def test_mip_level_ceil_is_named_whatever_the_drawn_cases(seed, monkeypatch):
+    """r362 W1: ceil(log2 ρ) was named "rounded" only while every drawn λ lay in the upper
+    half of a level; seeds 1, 2 and 6 draw one in the lower half (the rule alone before)."""
+    from student_variants import _mip_ceil
+
+    from teachraster.exercises import cases
+
+    monkeypatch.setattr(cases, "drawn_rng", lambda: np.random.default_rng(seed))
+    report = ex.check("mip_level", _mip_ceil, budget=BUDGET)
+    assert "rounded λ up to a whole level (ceil)" in report.failures[0].explanation, str(report)

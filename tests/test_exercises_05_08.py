@@ -661,3 +661,14 @@ def test_a_placeholder_is_named_without_the_rule(name, fn, named):
     assert named in text, text
     for rule in ("counting as the background", "(S − k)", "linear_to_srgb(", "u·W − ½", "⌊x⌋"):
         assert rule not in text, text
+
+
+def test_the_passing_texture_figures_draw_the_questions_cases(plt):
+    """r362 FIG1: a passing 7.1/7.2 check drew λ = 0 and a texel centre (weights 1, 0, 0, 0);
+    they draw the cases 7.1 and 7.2 ask about, the wrapped column named and filled."""
+    for name, words in (("mip_level", "λ = 4, yours 4"), ("bilinear", "uv = (0.05, 0.4)")):
+        report = ex.check(name, CORRECT[name])
+        fig, ax = plt.subplots()
+        report.plot(ax)
+        assert report.passed and words in ax.get_xlabel(), ax.get_xlabel()
+    assert [t for t in ax.texts if t.get_text() == "= col 3"], [t.get_text() for t in ax.texts]

@@ -112,7 +112,8 @@ _COMBINE = {
 }
 _LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r,
         "plus one": lambda r: math.log2(r) + 1, "floor": lambda r: math.floor(math.log2(r)),
-        "round": lambda r: float(round(math.log2(r))), "plus half": lambda r: math.log2(r) + 0.5}  # fmt: skip
+        "round": lambda r: float(round(math.log2(r))),
+        "ceil": lambda r: float(math.ceil(math.log2(r))), "plus half": lambda r: math.log2(r) + 0.5}  # fmt: skip
 
 
 def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False, pair="step"):  # fmt: skip
@@ -205,6 +206,11 @@ LEVEL_KNOBS = Knobs(level_with, {
              "one texel per pixel (ρ = 1) is λ = 0", "plus one"),
         Slip("rounded down", "you rounded λ down to a whole level (floor or int()): λ is "
              "fractional, and 7.3's trilinear blends the two levels around it", "floor"),
+        # r362 W1, S6: ceil was told "rounded" where the drawn cases' λ lay in the upper half
+        # of a level, and only the rule (1 kernel in 8) where one lay in the lower half
+        Slip("rounded up", "you rounded λ up to a whole level (ceil): λ is log2 ρ as it comes, "
+             "fractional in general, and 7.3's trilinear blends the two levels around it",
+             "ceil"),
         # r301: λ rounded, and λ + ½ (GL's nearest-level rounding), were told only the rule
         Slip("rounded", "you rounded λ to a whole number: λ is log2 ρ as it comes, fractional "
              "in general; the level choice comes later (7.3's trilinear blends the two levels "
@@ -239,6 +245,7 @@ def exercise(scene) -> Exercise:
         "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
         _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
         scene=scene, inputs_drawn=True, hints=HINTS,
+        example=4,  # r362 FIG1: 1 × 16 texels, 7.1's question (λ = 0 showed two unit arrows)
     )  # fmt: skip
 
 

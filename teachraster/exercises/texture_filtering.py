@@ -73,7 +73,7 @@ ORIGINS = {"centres": (0.5, 0), "corners": (0.0, 0), "stretched": (0.0, -1), "pl
 
 def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=False,
                    wrap_as=None, clamp=None, transpose=False, flip_u=False, flip_v=False,
-                   blend="both"):  # fmt: skip
+                   blend="both", scale="right"):  # fmt: skip
     """A bilinear filter with knobs for the usual mistakes (the defaults are GL's LINEAR).
 
     ``origin`` "corners" samples at texel corners (x = u·W), "stretched" puts the first and
@@ -92,7 +92,11 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     texel (row, col) as ``texture[col, row]`` with H and W right (IndexError where col ≥ H, as
     the student's raises); ``flip_u`` takes 1 − u for u, ``flip_v`` 1 − v for v;
     ``blend="x only"`` blends along x within the row v lies in (⌊v·H⌋), ``"y only"`` along y
-    within the column u lies in.
+    within the column u lies in, ``"x only, row ⌊y⌋"`` along x within row ⌊y⌋ (the vertical
+    fraction left at 0); ``floor="round"`` takes round(x) for ⌊x⌋ (a fraction in [−½, ½));
+    ``scale="swapped"`` takes x = u·H − ½, y = v·W − ½; ``clamp="uv, upper index"`` wraps
+    (u, v) for "repeat" (clamps them for "clamp") and then clamps only the right and lower
+    texel indices, the left and upper ones used as they are (Python's index −1 is the last).
     """
     tex = np.asarray(texture, dtype=float)
     if transpose is True:
@@ -107,8 +111,12 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     if clamp == "uv, tiled" and wrap == "clamp":  # r317: 'clamp' as (u, v) clamped, tiled
         u, v = np.clip(u, 0.0, 1.0), np.clip(v, 0.0, 1.0)
         wrap_as = "repeat"
-    x, y = u * (w + span) - centre, v * (h + span) - centre
-    x0, y0 = (np.trunc if floor == "trunc" else np.floor)(np.array([x, y]))
+    if clamp == "uv, upper index":  # r362: (u, v) wrapped or clamped, the upper index clamped
+        u, v = (np.mod(u, 1.0), np.mod(v, 1.0)) if wrap == "repeat" else np.clip([u, v], 0, 1)
+    su, sv = (h, w) if scale == "swapped" else (w, h)  # r362: u scaled by H and v by W
+    x, y = u * (su + span) - centre, v * (sv + span) - centre
+    rounding = {"trunc": np.trunc, "round": np.round}.get(floor, np.floor)
+    x0, y0 = rounding(np.array([x, y]))
     fx, fy = x - x0, y - y0
     if swap in (True, "x"):
         fx = 1 - fx
@@ -132,6 +140,10 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         mode = wrap
     c0, c1 = index(x0, w), index(x0 + 1, w)
     r0, r1 = index(y0, h, rows_tiled), index(y0 + 1, h, rows_tiled)
+    if clamp == "uv, upper index":
+        c0, c1, r0, r1 = int(x0), min(int(x0) + 1, w - 1), int(y0), min(int(y0) + 1, h - 1)
+    if blend == "x only, row ⌊y⌋":  # r362: the vertical fraction left at 0
+        fy = 0.0
     if blend == "x only":  # r317: one row, the one v lies in, blended along x alone
         r0, fy = index(np.floor(v * h), h), 0.0
     if blend == "y only":
@@ -238,6 +250,18 @@ def _trunc_words(args, expected, got) -> str:
     )
 
 
+def _round_words(args, expected, got) -> str:
+    """round() for floor: said on the axis where the two differ (r362)."""
+    x, y = _xy(args)
+    axis, value = ("x", x) if np.round(x) != np.floor(x) else ("y", y)
+    return (
+        f"you took round({axis}) for the texel to the {'left' if axis == 'x' else 'top'}: for "
+        f"{axis} = {num(value)} that is {num(np.round(value))}, but the two texels around "
+        f"{axis} are ⌊{axis}⌋ = {num(np.floor(value))} and ⌊{axis}⌋ + 1, and the fraction "
+        f"{axis} − ⌊{axis}⌋ stays in [0, 1)"
+    )
+
+
 def _wrap_words(mode):
     def words(args, expected, got):
         if mode == "clamp":
@@ -280,7 +304,12 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
              "at a texel's centre you read the texel diagonally below-right of it; texel centres are "
              f"at (i + ½)/W, so x = u·W − ½ (here {num(_xy(a)[0])})", "plus half"),
     ],
-    "floor": [Slip("int() for floor", _trunc_words, "trunc")],
+    "floor": [Slip("int() for floor", _trunc_words, "trunc"),
+              Slip("round() for floor", _round_words, "round")],  # r362: told only the rule
+    # r362: told only the rule (mip_level names the same slip)
+    "scale": [Slip("u·H and v·W", lambda a, e, g: f"u runs along the W = {a[0].shape[1]} "
+                   f"columns and v along the H = {a[0].shape[0]} rows; you scaled u by H and v "
+                   "by W: x = u·W − ½, y = v·H − ½", "swapped")],
     "swap": [Slip("weights swapped", "the weight of the right (lower) texel is the fraction "
                   "x − ⌊x⌋ (y − ⌊y⌋); you gave it to the left (upper) one", True),
              # r40 07-1: swapped along one axis, this was called "nearest filtering"
@@ -316,6 +345,13 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
              "tiled the texel indices: at u = 0 the column left of the first is then the last "
              "one, column W − 1, and it blends in; 'clamp' clamps the texel indices (column −1 "
              "is column 0, the border texel), and then (u, v) need no clamping", "uv, tiled"),
+        # r362: told only the rule
+        Slip("(u, v) wrapped, upper index clamped", "you wrapped (u, v) into [0, 1) (clamped "
+             "them for 'clamp') and then clamped only the right and lower texel indices: near "
+             "u = 0 the left one, ⌊x⌋ = −1, is Python's index −1, the last column, in both "
+             "modes, and for 'repeat' the right one beyond the last column is not column 0; "
+             "wrap both texel indices as the mode says ('repeat': modulo W, 'clamp': to "
+             "[0, W − 1]), and (u, v) need no wrapping", "uv, upper index"),
     ],
     "transpose": [Slip("rows and columns swapped", lambda a, e, g: f"u runs along the W = "
                        f"{a[0].shape[1]} columns, v along the H = {a[0].shape[0]} rows: "
@@ -337,7 +373,11 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
               Slip("no horizontal blend", "you blended along y only, within the one column u "
                    "lies in: bilinear blends two columns too, the one left of the sample and the "
                    "one right of it, each weighted by how close the sample lies to that "
-                   "column's centres", "y only")],
+                   "column's centres", "y only"),
+              # r362: row ⌊y⌋ blended along x alone was told only the rule
+              Slip("no vertical blend", lambda a, e, g: "you blended along x only, in row "
+                   f"⌊y⌋ alone (y = {num(_xy(a)[1])}): bilinear blends row ⌊y⌋ with row "
+                   "⌊y⌋ + 1 below it, the lower row weighted by y − ⌊y⌋", "x only, row ⌊y⌋")],
 })  # fmt: skip
 
 
@@ -498,6 +538,7 @@ def bilinear_exercise(scene) -> Exercise:
         draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT), *NAMED_HINTS),
         once=((BILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True,
+        example=8,  # r362 FIG1: u = 0.05, 7.2's question (a texel centre had weights 1, 0, 0, 0)
     )  # fmt: skip
 
 
@@ -540,6 +581,7 @@ def draw_texture_case(ax, case, got):
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
         artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
                                               edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
+        artists += _draw_wrapped(ax, shown, int(x0 + dx), int(y0 + dy), case[1][2])
         artists.append(ax.text(x0 + dx + 0.5, y0 + dy + 0.78, f"w {weight:.2g}", ha="center",
                                fontsize="x-small", color="#2b7bba",
                                bbox={"facecolor": "white", "alpha": 0.8, "pad": 1,
@@ -551,7 +593,7 @@ def draw_texture_case(ax, case, got):
     # r286 FIG7: texel numbers are whole ("0.0 2.5 5.0 7.5" read as fractions of a texel)
     ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax.yaxis.set_major_locator(MaxNLocator(integer=True))
-    where = (f"level 0 of {len(case[1][0])}, λ = {num(case[1][2])}" if levels else
+    where = (f"level 0 of levels 0–{len(case[1][0]) - 1}, λ = {num(case[1][2])}" if levels else
              f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
     if method:
         where = f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres"
@@ -562,6 +604,27 @@ def draw_texture_case(ax, case, got):
         text = f"uv = {vec(uv)} (×), {where};\nthe filtered value is {_value(expected, got)}{yours}"
     artists.append(ax.set_xlabel(text, fontsize="x-small"))
     return artists
+
+
+def _draw_wrapped(ax, shown, c, r, wrap) -> list:
+    """A box beyond the border filled with the texel it stands for, and which one (r362
+    FIG1: u = 0.05's column −1 was an empty box): "repeat" tiles, "clamp" takes the border."""
+    from matplotlib.patches import Rectangle
+
+    h, w = shown.shape[:2]
+    if 0 <= c < w and 0 <= r < h:
+        return []
+    if wrap == "repeat":
+        cw, rw = c % w, r % h
+    else:
+        cw, rw = min(max(c, 0), w - 1), min(max(r, 0), h - 1)
+    grey = np.broadcast_to(np.clip(shown[rw, cw], 0, 1), (3,))
+    name = f"col {cw}" if 0 <= r < h else f"row {rw}" if 0 <= c < w else f"({rw}, {cw})"
+    return [
+        ax.add_patch(Rectangle((c, r), 1, 1, facecolor=tuple(grey), edgecolor="none", zorder=0)),
+        ax.text(c + 0.5, r + 0.3, f"= {name}", ha="center", fontsize="xx-small", color="#2b7bba",
+                bbox={"facecolor": "white", "alpha": 0.8, "pad": 1, "edgecolor": "none"}),
+    ]  # fmt: skip
 
 
 # -- trilinear --------------------------------------------------------------------------------
@@ -639,15 +702,17 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     weighs by λ minus the clamped lower level, "index" uses ⌊λ⌋ as a Python index (level −1
     is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone), "round()"
     (the level Python's round() of the weight picks), "lower" (⌊λ⌋ alone) or "round for
-    floor" (levels round(λ) and round(λ) + 1, weighted by λ − round(λ)); ``clamp="q - 1"``
+    floor" (levels round(λ) and round(λ) + 1, weighted by λ − round(λ)), "round lower" (the
+    same levels, weighted by λ − ⌊λ⌋); ``clamp="q - 1"``
     clamps λ to [0, q − 1]; ``texels="level 0 size"`` filters every level with level 0's W
     and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
     q = len(pyramid) - 1
     if clamp in ("lambda", "q - 1"):  # "q - 1": r286, the last level taken for q − 1
         lam = min(max(lod, 0.0), q if clamp == "lambda" else max(q - 1, 0))
-        lower = int(round(lam) if levels == "round for floor" else np.floor(lam))  # r317
-        t = lam - lower
+        rounds = levels in ("round for floor", "round lower")
+        lower = int(round(lam) if rounds else np.floor(lam))  # r317
+        t = lam - (np.floor(lam) if levels == "round lower" else lower)  # r362
     else:
         lower = int(np.floor(lod))
         t = lod - lower
@@ -770,6 +835,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "{lam} rounds to level {near}, so the weight λ − round(λ) = {off} and the levels "
              "blended are {near} and {near_up}; trilinear blends levels ⌊λ⌋ = {d0} and {d1}, "
              "level {d1} weighted by λ − ⌊λ⌋ = {t}"), "round for floor"),
+        # r362: round(λ) for the lower level, the weight still λ − ⌊λ⌋, was told the rule
+        Slip("round() for floor", _tri_words("you took round(λ) for the lower level: λ = "
+             "{lam} rounds to level {near}, so you blended levels {near} and {near_up}; "
+             "trilinear blends levels ⌊λ⌋ = {d0} and {d1}, level {d1} weighted by λ − ⌊λ⌋ = "
+             "{t}"), "round lower"),
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
         Slip("upper level only", _tri_words("that is level {d1} alone; trilinear blends it with "
@@ -855,4 +925,5 @@ def trilinear_exercise(scene) -> Exercise:
         hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True, raised_words=_no_level_above_q,
+        example=2,  # r362 FIG1: λ = 1.5, between two levels (λ = 0 was level 0 alone)
     )  # fmt: skip
