@@ -43,9 +43,9 @@ from .exercise import Exercise, Mistake, PackageAnswer
 from .near_plane import bounds as near_bounds
 from .near_plane import expected_near, resolution
 from .package_answers import CHECKER_WORDS
-from .reverse_z import _slope as reverse_slope
 from .reverse_z import bounds as gap_bounds
 from .reverse_z import expected_gap, readings
+from .reverse_z import reversed_depth_slope as reverse_slope
 from .running import WrongAnswerType
 from .scalars import num
 

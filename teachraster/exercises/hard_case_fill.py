@@ -177,8 +177,8 @@ def _coarse_words(args, expected, got) -> str:
     bits = _coarse_grids(args, got)
     grids = _grid(bits[0]) if len(bits) == 1 else f"{_grid(bits[0])} to {_grid(bits[-1])}"
     return (f"you snap to a coarser grid than 1/256 px (a grid of {grids} gives this answer): "
-            "a GPU keeps 8 sub-pixel bits, so snap to 1/256 px, np.rint(xy * 256) / 256; a "
-            "coarser grid moves a vertex far enough to carry an edge across pixel centres")  # fmt: skip
+            "the course's GPU keeps 8 sub-pixel bits, as Direct3D requires (GL and Vulkan ask "
+            "for at least 4), so snap to 1/256 px, np.rint(xy * 256) / 256; a coarser grid moves a vertex far enough to carry an edge across pixel centres")  # fmt: skip
 
 
 #: Named only when it gives every answer: a coarse grid may match one case by coincidence.
@@ -390,8 +390,8 @@ MISTAKES = {
     "(np.rint(xy * 256) / 256), as a GPU's fixed-point set-up does, so that a triangle and "
     "its neighbour agree on every tie",
     "half-up snapping": "you round a vertex half-way between two grid points up "
-    "(np.floor(x · 256 + ½)): a GPU's fixed-point conversion rounds half to even, as np.rint "
-    "does, so a vertex exactly on a half step goes to the even grid point and a centre on the "
+    "(np.floor(x · 256 + ½)): the course's fixed-point conversion (teachraster's, lesson 07's "
+    "table) rounds half to even, as np.rint does, so a vertex exactly on a half step goes to the even grid point and a centre on the "
     "edge changes sides",
     "float32 vertices": _float32_vertices,
     "floor snapping": "you snap by truncating (np.floor): every vertex moves up to 1/256 px "

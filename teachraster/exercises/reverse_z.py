@@ -49,7 +49,7 @@ SLACK = 0.01
 ROUNDING = 1e-6
 
 
-def _slope(z: float, near: float, far: float) -> float:
+def reversed_depth_slope(z: float, near: float, far: float) -> float:
     """|dd/dz| of the reversed depth (window depth's slope: d = 1 − z_win)."""
     return near / ((1.0 - near / far) * z * z)
 
@@ -73,7 +73,7 @@ def readings(z: float, near: float, far: float) -> list[float]:
         abs(float(x) - float(np.nextafter(x, np.float32(-np.inf)))),
         2.0 ** (np.floor(np.log2(d)) - 23),
     ]
-    return [s / _slope(z, near, far) for s in steps]
+    return [s / reversed_depth_slope(z, near, far) for s in steps]
 
 
 def bounds(z: float, near: float, far: float) -> tuple[float, float]:
@@ -145,7 +145,7 @@ def one_minus_window(z, near, far, all_float32: bool = True) -> float:
 def _variants(z, near, far) -> dict[str, float]:
     """The Δz typical slips give (each one change)."""
     d = float(reversed_depth(z, near, far))
-    slope = _slope(z, near, far)
+    slope = reversed_depth_slope(z, near, far)
     step = _nearer_step(d)
     win = float(window_depth(z, near, far))
     # r340 M4: the step above d computed as 1 − z_win in float32 (0 → float32's least step)

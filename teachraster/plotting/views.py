@@ -477,12 +477,9 @@ class FillView:
         kind = step.kind if setup else None  # each set-up step draws its own marks and key
         keyed = (testing, coloured, split, boxed, kind, last, roles, walked)
         if self.legend is not None and keyed != self._keyed:
-            self.legend.set_entries(
-                self._key_entries(
-                    trace, testing, coloured, split, boxed=boxed, setup=kind, last=last,
-                    roles=roles,
-                )
-            )  # fmt: skip
+            entries = self._key_entries(trace, testing, coloured, split, boxed=boxed,
+                                        setup=kind, last=last, roles=roles)  # fmt: skip
+            self.legend.set_entries(entries)
             self._keyed = keyed
         method = METHOD_NAMES.get(trace.method, trace.method)
         if self._step_header:
