@@ -454,6 +454,15 @@ def _resolve_by_id_vote(colours, ids, background):
     return np.asarray(background, float) if top < 0 else np.asarray(colours, float)[ids == top][0]
 
 
+def _srgb_resolve_8bit(colours, ids, background):
+    """6.3's resolve in light, encoded, then rounded to an 8-bit code."""
+    from teachraster.core.blend_factors import linear_to_srgb, srgb_to_linear
+
+    covered = (np.asarray(ids) >= 0)[:, None]
+    c = np.where(covered, np.nan_to_num(np.asarray(colours, float)), background)
+    return np.round(linear_to_srgb(srgb_to_linear(c).mean(axis=0)) * 255) / 255
+
+
 def _bilinear_tiling(texture, uv, wrap="repeat"):
     """A bilinear that ignores its wrap: it tiles whatever it is asked."""
     return bilinear(texture, uv, "repeat")
@@ -1482,6 +1491,12 @@ WRONG = {
     "resolve by a vote of its samples": ("resolve", _resolve_by_vote, "a vote of its samples"),
     # r361: the most frequent id, the background's −1 among them
     "resolve by the most frequent id": ("resolve", _resolve_by_id_vote, "most samples hold"),
+    # r368: 6.3's resolve stored as an 8-bit sRGB framebuffer would (lesson 08's code 188)
+    "sRGB resolve rounded to 8 bits": (
+        "resolve_srgb",
+        _srgb_resolve_8bit,
+        "rounded to steps of 1/255",
+    ),
     "over, dst premultiplied again on four channels": (
         "over_premultiplied",
         lambda s, d: np.asarray(s, float) + np.asarray(d, float) * d[3] * (1 - s[3]),

@@ -31,6 +31,7 @@ from .antialiasing import (
     swatch_words,
     uncovered_as_black,
 )
+from .blend_mistakes import EIGHT_BIT
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import num, vec
 
@@ -269,6 +270,9 @@ MISTAKES = [
             gives=_background_in_codes),
     CHANNEL_ORDER,
     ON_255,
+    # r368: a resolve stored as an 8-bit sRGB framebuffer would (lesson 08's code 188) was
+    # sent back to its decode/encode order, which was right
+    EIGHT_BIT,
 ]  # fmt: skip
 
 
