@@ -3955,3 +3955,24 @@ R362 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R362.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R362.items()})
+
+# The first failure's kind of the r340/r351 variants of 5.2, 5.3 and 5.4 (issue 30's exercises
+# each carry one: test_reasoning_exercises)
+KINDS.update({
+    'gap with d = 1 − z_win in float32': '1 - z_win in float32',
+    'gap with d = 1 − z_win, z_win rounded to float32': '1 - z_win in float32, z_win in float64',
+    'decal bias with z squared in m, own NaN test': 'z squared, own test',
+    "decal bias from view depth's slope, own NaN test": 'per unit, own test',
+    "decal bias without the far plane's factor, own NaN test": 'infinite far',
+    'decal bias with cos for tan, own NaN test': 'cosine, own test',
+    'decal bias with 1/tan for tan, own NaN test': 'cotangent, own test',
+    'depth set-up ignoring nearest': 'beyond nearest',
+    'depth set-up preferring reverse-Z': 'unorm24 preferred',
+    'depth set-up, unorm24 at nearest unchecked': 'unorm24 too coarse',
+    'depth set-up, reverse-Z unchecked': 'reverse-Z too coarse',
+    'depth set-up, neither once unorm24 fails': 'neither, reverse-Z does',
+    "depth set-up, reverse-Z's near plane beyond nearest": 'reverse-Z near beyond nearest',
+    'depth set-up quoting the gap': 'dz is the gap',
+    "depth set-up quoting unorm24's Δz": 'dz of the other buffer',
+    'depth set-up with float32 without reverse-Z': 'float32 forward',
+})  # fmt: skip
