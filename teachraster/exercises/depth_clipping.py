@@ -501,13 +501,17 @@ def _w_one(v) -> np.ndarray | None:
     return p
 
 
-def _w_one_words(args, expected, got) -> str:
+def _kept_shown(args, expected, got, template: str) -> str:
+    """``template`` filled with the first kept vertex that changed (``{v}``, ``{was}``,
+    ``{now}``), or "" where none did."""
     change = _kept_changed(args, expected, got)
-    shown = (
-        f" (v{change[0] + 1} = {vec(args[0][change[0]])} comes back as {vec(change[1])})"
-        if change and change[1] is not None
-        else ""
-    )
+    if not change or change[1] is None:
+        return ""
+    return template.format(v=change[0] + 1, was=vec(args[0][change[0]]), now=vec(change[1]))
+
+
+def _w_one_words(args, expected, got) -> str:
+    shown = _kept_shown(args, expected, got, " (v{v} = {was} comes back as {now})")
     return (
         f"your w is 1 at every vertex{shown}: you set w to 1, as after the divide, but left x, y "
         "and z undivided. Return the polygon in clip space: a kept vertex as it is, w included, "
@@ -516,12 +520,7 @@ def _w_one_words(args, expected, got) -> str:
 
 
 def _xy_words(args, expected, got) -> str:
-    change = _kept_changed(args, expected, got)
-    shown = (
-        f": v{change[0] + 1} = {vec(args[0][change[0]])} comes back as {vec(change[1])}"
-        if change and change[1] is not None
-        else ""
-    )
+    shown = _kept_shown(args, expected, got, ": v{v} = {was} comes back as {now}")
     return (
         f"your x and y columns are swapped{shown}. Each row is one vertex (x, y, z, w), in the "
         "order the triangle's vertices are given; a kept vertex comes back as it is"

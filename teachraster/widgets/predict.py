@@ -66,14 +66,19 @@ def is_headless() -> bool:
         return False
     if os.environ.get("TEACHRASTER_STATIC_PAGES") == "1":  # `teachraster html`: a static page
         return True
+    if _kernel_shell() is None:
+        return True
+    return os.environ.get("MPLBACKEND", "").strip().lower() == "agg"
+
+
+def _kernel_shell():
+    """IPython's shell where a kernel runs this code, else None (a script, a console)."""
     try:
         from IPython import get_ipython
     except ImportError:  # pragma: no cover - ipywidgets depends on IPython
-        return True
+        return None
     shell = get_ipython()
-    if shell is None or getattr(shell, "kernel", None) is None:
-        return True
-    return os.environ.get("MPLBACKEND", "").strip().lower() == "agg"
+    return None if shell is None or getattr(shell, "kernel", None) is None else shell
 
 
 #: Hides, in JupyterLab and Notebook 7, every output of a cell after the one holding the
@@ -121,12 +126,8 @@ _cell_holds: list = [None, []]
 
 def _this_cell():
     """What names the cell running now (its request's message id), None outside a kernel."""
-    try:
-        from IPython import get_ipython
-    except ImportError:  # pragma: no cover - ipywidgets depends on IPython
-        return None
-    shell = get_ipython()
-    if shell is None or getattr(shell, "kernel", None) is None:
+    shell = _kernel_shell()
+    if shell is None:
         return None
     header = (getattr(shell, "parent_header", None) or {}).get("header", {})
     return header.get("msg_id")
