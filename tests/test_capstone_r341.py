@@ -59,3 +59,30 @@ def test_the_two_graded_tie_rules_have_a_table_citing_the_lessons_sections(
     taught = "\n".join(markdown(lesson))
     for section in sections:
         assert section in table and section in taught, section
+
+
+def test_a_warning_is_told_by_its_category():
+    """r371 C1: numpy's DeprecationWarning (np.cross on 2-vectors, in a correct covers) was
+    told "numpy telling of an operation that overflowed or divided by zero"."""
+    import warnings
+
+    import numpy as np
+
+    def covers_cross(xy, p):
+        v1, v2, v3 = (np.asarray(v, dtype=float) for v in xy)
+        p = np.asarray(p, dtype=float)
+        warnings.warn("2D cross products are deprecated", DeprecationWarning, stacklevel=1)
+        e = [np.cross(b - a, p - a) for a, b in ((v1, v2), (v2, v3), (v3, v1))]
+        return all(x >= 0 for x in e) or all(x <= 0 for x in e)
+
+    report = ex.check("covers", covers_cross)
+    said = report.printed or ""
+    assert "will change or go away in a later version" in said and "overflowed" not in said, said
+
+    def overflowing(xy, p):
+        with np.errstate(over="warn"):
+            np.float32(3e38) * np.float32(10)
+        return False
+
+    said = ex.check("covers", overflowing).printed or ""
+    assert "overflowed, divided by zero or had no valid answer" in said, said

@@ -92,8 +92,7 @@ class Capture:
             n = sum(self.warned.values())
             texts = "; ".join(self.warned)
             said.append(f"your code raised {n} warning{'s' * (n != 1)} during the check "
-                        f"({texts}): not a print of yours, numpy telling of an operation "
-                        "that overflowed or divided by zero")  # fmt: skip
+                        f"({texts}): not a print of yours, {_warned_words(self.warned)}")  # fmt: skip
         if self.lines:
             shown = min(self.lines, len(self.kept))
             # r84 03-3: written when the check returns, so above a report printed after it
@@ -116,6 +115,23 @@ class Capture:
         stream.write("\n".join(self.kept) + "\n")
         if more > 0:
             stream.write(f"--- ... and {more} more lines, not shown ---\n")
+
+
+#: What a warning of each category tells, as the report says it (r371 C1: a numpy
+#: DeprecationWarning from np.cross on 2-vectors was told "an operation that overflowed").
+WARNING_WORDS = {
+    "RuntimeWarning": "numpy telling of an operation that overflowed, divided by zero or "
+    "had no valid answer",
+    "DeprecationWarning": "a library telling that something your code calls will change or "
+    "go away in a later version (the answer is not affected now)",
+}
+
+
+def _warned_words(warned) -> str:
+    """What the warnings caught tell, by their categories (``"Category: message"`` keys)."""
+    kinds = dict.fromkeys(text.split(":", 1)[0] for text in warned)
+    said = [WARNING_WORDS.get(kind, f"a {kind} from a library your code calls") for kind in kinds]
+    return "; ".join(said)
 
 
 class _Stream:
