@@ -468,7 +468,10 @@ def test_a_cell_holding_for_several_questions_says_it_waits_for_all(published, m
     lines = [(data["text/plain"], kw) for data, kw in published]
     shown = [text for text, kw in lines if "update" not in kw]
     assert shown[0] == predict.HELD_TEXT and len(shown) == 3
-    assert shown[2] == lines[-1][0] and "once all three questions above are checked" in shown[2]
+    assert shown[2] == lines[-1][0]
+    assert "once all three questions above that it waits for are checked" in shown[2]
+    # r370: two read "all two questions above"
+    assert "once both questions above that it waits for" in shown[1], shown[1]
     ids = [kw["transient"]["display_id"] for _, kw in lines if "update" not in kw]
     last = {kw["transient"]["display_id"]: text for text, kw in lines}  # each line's last text
     assert all(last[i] == shown[2] for i in ids)

@@ -113,8 +113,8 @@ HELD_TEXT = (
 #: called on each): they show only once all are checked, and "the question above" read as
 #: the first, which the student checked to find them still hidden (review r354 02-S2)
 HELD_ALL_TEXT = (
-    "(shown once all {n} questions above are checked; if it stays hidden after that, run "
-    "this cell again)"
+    "(shown once {which} above that it waits for are checked; if it stays hidden after that, "
+    "run this cell again)"
 )
 
 #: The number of questions a cell's held lines wait for, as HELD_ALL_TEXT writes it
@@ -188,7 +188,9 @@ class HoldsAnswer:
         lines = _cell_holds[1]
         lines.append((display_id, css))
         n = len(lines)
-        text = HELD_TEXT if n == 1 else HELD_ALL_TEXT.format(n=COUNT_WORDS.get(n, n))
+        # r370: "all two" for two; and "above" alone read as every question above the cell
+        which = "both questions" if n == 2 else f"all {COUNT_WORDS.get(n, n)} questions"
+        text = HELD_TEXT if n == 1 else HELD_ALL_TEXT.format(which=which)
         publish_display_data(_held_line(display_id, css, text),
                              transient={"display_id": display_id})  # fmt: skip
         for earlier, earlier_css in lines[:-1]:  # the cell's other lines wait for all, too
