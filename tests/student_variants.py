@@ -3976,3 +3976,103 @@ KINDS.update({
     "depth set-up quoting unorm24's Δz": 'dz of the other buffer',
     'depth set-up with float32 without reverse-Z': 'float32 forward',
 })  # fmt: skip
+
+
+# -- r373: exercise 10's robust_fill, mistakes a reader found misnamed or passing ------------
+def _fill_r373(round_xy=None, eps=None, rows=0, thin=0.0, nan=False, tie_as_given=False,
+               any_flat=False, absolute=False, int32=False):  # fmt: skip
+    """The teacher's robust_fill with one of r373's knobs: another rounding of the vertices,
+    an ε in the edge test, rows off by ``rows``, thin triangles refused, NaN at [0, 0], the
+    tie rule read before re-orienting, every horizontal edge a top one, A x + B y + C in
+    float64, or 1/256-px integers in int32."""
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        if int32:
+            return _int32_fill_r373(xy, width, height, origin)
+        raw = np.asarray(xy, dtype=float)
+        v = round_xy(raw) if round_xy else np.rint(raw * 256) / 256
+        area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+        if abs(area) <= thin:
+            return np.zeros((height, width), dtype=bool)
+        given = v.copy()
+        if area < 0:
+            v = v[[0, 2, 1]]
+        y = origin[0] + np.arange(rows, height + rows)[:, None] + 0.5
+        x = origin[1] + np.arange(width)[None, :] + 0.5
+        inside = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            if absolute:
+                e = (a[1] - b[1]) * x + (b[0] - a[0]) * y + (a[0] * b[1] - a[1] * b[0])
+            else:
+                e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+            p, q = (given[k], given[(k + 1) % 3]) if tie_as_given else (a, b)
+            tie = q[1] < p[1] or (q[1] == p[1] and (any_flat or q[0] > p[0]))
+            if eps:
+                inside &= (e > -eps) if tie else (e > eps)
+            else:
+                inside &= (e >= 0) if tie else (e > 0)
+        if nan:
+            inside = inside.astype(float)
+            inside[0, 0] = np.nan
+        return inside
+
+    return robust_fill
+
+
+def _int32_fill_r373(xy, width, height, origin):
+    """r373 W41: C2's integer fill (1/256 px, centres at 256 j + 128, a bias of −1 off the
+    top-left edges) in int32."""
+    v = np.rint(np.asarray(xy, dtype=float) * 256).astype(np.int32)
+    (ax, ay), (bx, by), (cx, cy) = v
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    out = np.zeros((height, width), dtype=bool)
+    if area == 0:
+        return out
+    if area < 0:
+        v = v[[0, 2, 1]]
+    ys = (origin[0] + np.arange(height, dtype=np.int32))[:, None] * 256 + 128
+    xs = (origin[1] + np.arange(width, dtype=np.int32))[None, :] * 256 + 128
+    out[:] = True
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        e = dx * (ys - a[1]) - dy * (xs - a[0])
+        out &= e + (0 if (dy < 0 or (dy == 0 and dx > 0)) else -1) >= 0
+    return out
+
+
+R373 = {
+    "fill with rows off by one": (
+        _fill_r373(rows=1), "your rows are off by one", "rows off by one"),
+    "fill refusing thin triangles": (
+        _fill_r373(thin=0.5), "you gave nothing to a thin triangle", "thin triangles refused"),
+    "fill rounding to 2 decimals": (
+        _fill_r373(round_xy=lambda xy: np.round(xy, 2)), "you round to 0.01 px",
+        "decimal rounding"),
+    "fill with NaN at [0, 0]": (_fill_r373(nan=True), "holds NaN at [0, 0]", "nan"),
+    "fill in the absolute form in float64": (
+        _fill_r373(absolute=True), "A x + B y + C from absolute coordinates",
+        "absolute form in float64"),
+    "fill snapped to 1/512 px": (
+        _fill_r373(round_xy=lambda xy: np.rint(xy * 512) / 512), "finer grid than 1/256 px",
+        "fine snapping"),
+    "fill with ε = 1e-3 in the edge test": (
+        _fill_r373(eps=1e-3), "you compare E with a tolerance, ε = 0.001", "epsilon"),
+    "fill snapping x only": (
+        _fill_r373(round_xy=lambda xy: np.c_[np.rint(xy[:, 0] * 256) / 256, xy[:, 1]]),
+        "your y coordinates are not snapped", "only x snapped"),
+    "fill with every horizontal edge a top one": (
+        _fill_r373(any_flat=True), "both horizontal edges, top and bottom",
+        "any horizontal edge is top"),
+    "fill snapped with ceil": (
+        _fill_r373(round_xy=lambda xy: np.ceil(xy * 256) / 256), "rounding up (np.ceil)",
+        "ceil snapping"),
+    "fill with the tie rule read before re-orienting": (
+        _fill_r373(tie_as_given=True), "your tie rule reads the edges as given, not as oriented",
+        "tie rule before orienting (index)"),
+    "fill in 1/256-px integers in int32": (
+        _fill_r373(int32=True), "your integer edge functions overflow", "int32 overflow"),
+}  # fmt: skip
+WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _) in R373.items()})
+KINDS.update({label: kind for label, (_, _, kind) in R373.items()})

@@ -76,8 +76,27 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     # fixed-point conversion) puts the left edge through centres, half up beside them
     half = np.array([[2.5 + 1 / 512, 1.0], [2.5 + 1 / 512, 9.0], [9.0, 5.0]])
     out.append(("half step: vertices half-way between 1/256 grid points", (half, 12, 12, (0, 0))))
+    # r373 W24: a centre 2 steps of E (2 · 2⁻¹⁶ px²) inside a right edge at 10⁶ px, where
+    # A x + B y + C in float64 rounds to 2⁻¹² px²: the absolute form reads it as a tie
+    out.append((f"far_from_origin at {o} px, a centre 2⁻¹⁵ px² inside an edge",
+                (NEAR_TIE + o, 16, 16, (o, o))))  # fmt: skip
+    # r373 W41: a triangle about 900 px across, whose E in 1/256-px integers reaches 5e10,
+    # past int32; the window straddles its right edge
+    out.append((f"a triangle {WIDE_ACROSS} px across (window at row 400, column 685)",
+                (WIDE.copy(), 16, 16, (400, 685))))  # fmt: skip
     out += _random_cases(np.random.default_rng(SEED + 50), "random")
     return [(label, args, expected_fill(*args)) for label, args in out]
+
+
+#: r373 W24: a snapped triangle (local coordinates; the case adds 10⁶ px) with a centre, pixel
+#: (6, 4), 2⁻¹⁵ px² inside its edge v2→v3: float64 rounds A x + B y + C there to 2⁻¹² px².
+NEAR_TIE = np.array([[5.34765625, 10.48046875], [5.55078125, 7.83984375], [2.7109375, 4.21875]])
+#: r373 W41: a triangle hundreds of pixels across (on the 1/256 grid, near the origin).
+WIDE = np.array([[0.25, 0.5], [900.5, 3.75], [450.125, 880.0]])
+WIDE_ACROSS = int(np.ptp(WIDE, axis=0).max())
+#: The inputs the task promises (the notebook states them; tests hold the cases to them):
+#: every coordinate within this many px of the origin, a triangle at most this many px across.
+MOST_FAR, MOST_ACROSS = 2**20, 1024
 
 
 def _random_cases(rng, word) -> list[tuple[str, tuple]]:
@@ -141,7 +160,93 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
             s, width, height, rule="top_left", absolute=True, dtype=np.float32, **kw
         ),  # fmt: skip
         "float32": naive_coverage(s, width, height, rule="top_left", dtype=np.float32, **kw),
+        **_more_variants(xy, width, height, origin),
     }
+
+
+def _more_variants(xy, width, height, origin) -> dict[str, np.ndarray]:
+    """r373's typical mistakes, each one repair done another way: the window one row or
+    column off, one axis snapped, ceil snapping, the tie rule read off the vertices as given,
+    both horizontal edges as top, A x + B y + C in float64, 1/256-px integers in int32."""
+    raw, s = np.asarray(xy, float), snap(np.asarray(xy, float))
+    kw = dict(rule="top_left", origin=tuple(origin))
+    o = np.asarray(origin)
+    out = {f"{axis} off by one{sign}": expected_fill(xy, width, height, o + step)
+           for axis, steps in (("rows", ((1, 0), (-1, 0))), ("columns", ((0, 1), (0, -1))))
+           for sign, step in zip(("", ", the other way"), steps)}  # fmt: skip
+    for k, axis in enumerate(("x", "y")):
+        one = raw.copy()
+        one[:, k] = np.rint(raw[:, k] * 256) / 256
+        out[f"only {axis} snapped"] = naive_coverage(one, width, height, **kw)
+    out["ceil snapping"] = naive_coverage(np.ceil(raw * 256) / 256, width, height, **kw)
+    for given in ("index", "edge"):
+        out[f"tie rule before orienting ({given})"] = edge_fill(s, width, height, origin,
+                                                                given=given)  # fmt: skip
+    out["any horizontal edge is top"] = edge_fill(s, width, height, origin, owns=_any_flat)
+    out["absolute form in float64"] = naive_coverage(s, width, height, absolute=True, **kw)
+    out["int32 overflow"] = int32_fill(xy, width, height, origin)
+    return out
+
+
+def _top_left(a, b) -> bool:
+    """The top-left rule on an edge a→b of a triangle oriented so that E(v1, v2, v3) > 0."""
+    return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
+
+
+def _any_flat(a, b) -> bool:
+    """r373 W35: a left edge, or any horizontal one (top and bottom alike)."""
+    return bool(b[1] <= a[1])
+
+
+def edge_fill(s, width: int, height: int, origin, *, owns=_top_left, given=None, eps=None):
+    """Coverage of the snapped triangle ``s`` from float64 differences, a centre on edge a→b
+    inside when ``owns(a, b)``; ``given`` ("index", "edge"): the tie rule read off the vertices
+    as given, not as oriented (edge k of the given order, or the same edge run the given way:
+    r373 W40); ``eps`` = (ε, form): E compared with a tolerance, "tie" (E > −ε on an owned
+    edge, E > ε on the others), "loose" (E ≥ −ε everywhere) or "strict" (E > ε everywhere)."""
+    w = np.asarray(s, float)
+    v = w[[0, 2, 1]] if _area(w) < 0 else w
+    y = origin[0] + np.arange(height)[:, None] + 0.5
+    x = origin[1] + np.arange(width)[None, :] + 0.5
+    inside = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+        if given == "index":
+            tie = owns(w[k], w[(k + 1) % 3])
+        elif given == "edge" and v is not w:
+            tie = owns(b, a)
+        else:
+            tie = owns(a, b)
+        if eps is None:
+            inside &= (e >= 0) if tie else (e > 0)
+        else:
+            eps_value, form = eps
+            low = -eps_value if form == "loose" or (form == "tie" and tie) else eps_value
+            inside &= (e >= low) if form == "loose" else (e > low)
+    return inside
+
+
+def int32_fill(xy, width: int, height: int, origin) -> np.ndarray:
+    """r373 W41: the fill in 1/256-px integers (centres at 256 j + 128, the top-left rule as a
+    bias of −1), every product in int32, which wraps past 2³¹."""
+    v = np.rint(np.asarray(xy, float) * 256).astype(np.int32)
+    ys = (origin[0] + np.arange(height, dtype=np.int32))[:, None] * 256 + 128
+    xs = (origin[1] + np.arange(width, dtype=np.int32))[None, :] * 256 + 128
+    out = np.ones((height, width), dtype=bool)
+    with np.errstate(over="ignore"):
+        (ax, ay), (bx, by), (cx, cy) = v
+        area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        if area == 0:
+            return ~out
+        if area < 0:
+            v = v[[0, 2, 1]]
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            dx, dy = b[0] - a[0], b[1] - a[1]
+            e = dx * (ys - a[1]) - dy * (xs - a[0])
+            out &= e + (0 if (dy < 0 or (dy == 0 and dx > 0)) else -1) >= 0
+    return out
 
 
 def _reversed(s, width, height, kw, expected) -> dict[str, np.ndarray]:
@@ -160,13 +265,9 @@ REVERSED = {"top edge reversed": "bottom_left", "left edge reversed": "top_right
 COARSE_BITS = range(8)
 
 
-def _coarse_grids(args, got) -> list[int]:
-    """The coarser grids (1/2^bits px) whose snapping gives ``got`` on this case."""
-    xy, width, height, origin = args
-    raw = np.asarray(xy, float)
-    return [bits for bits in COARSE_BITS if np.array_equal(naive_coverage(
-        np.rint(raw * 2**bits) / 2**bits, width, height, rule="top_left", origin=tuple(origin)),
-        got)]  # fmt: skip
+def _coarse_grids(args, got, bits_range=COARSE_BITS) -> list[int]:
+    """The grids (1/2^bits px, bits in ``bits_range``) whose snapping gives ``got`` here."""
+    return [bits for bits in bits_range if np.array_equal(_on_grid(bits)(*args), got)]
 
 
 def _grid(bits: int) -> str:
@@ -181,9 +282,88 @@ def _coarse_words(args, expected, got) -> str:
             "for at least 4), so snap to 1/256 px, np.rint(xy * 256) / 256; a coarser grid moves a vertex far enough to carry an edge across pixel centres")  # fmt: skip
 
 
-#: Named only when it gives every answer: a coarse grid may match one case by coincidence.
-COARSE = Mistake("coarse snapping", _coarse_words, only_whole=True,
-                 fits=lambda a, e, g: bool(_coarse_grids(a, g)))  # fmt: skip
+def _rounded_fill(vertices, width, height, origin) -> np.ndarray:
+    """The right fill (float64 differences, the top-left rule) of vertices rounded some way."""
+    return naive_coverage(vertices, width, height, rule="top_left", origin=tuple(origin))
+
+
+def _on_grid(bits: int):
+    """``gives``: the fill of the vertices snapped to a grid of 1/2^bits px."""
+
+    def gives(xy, width, height, origin):
+        raw = np.asarray(xy, float)
+        return _rounded_fill(np.rint(raw * 2**bits) / 2**bits, width, height, origin)
+
+    return gives
+
+
+def _fine_words(args, expected, got) -> str:
+    bits = _coarse_grids(args, got, FINE_BITS)
+    grids = _grid(bits[0]) if len(bits) == 1 else f"{_grid(bits[0])} to {_grid(bits[-1])}"
+    return (f"you snap to a finer grid than 1/256 px (a grid of {grids} gives this answer): "
+            "the course's GPU keeps exactly 8 sub-pixel bits, so its vertices sit on the "
+            "1/256-px grid and no finer; a vertex on your grid can lie up to 1/512 px from "
+            "the GPU's, enough to carry an edge across a centre near it")  # fmt: skip
+
+
+def _decimal_words(d: int) -> str:
+    return (f"you round to {10.0**-d:g} px (np.round(xy, {d})), not to the 1/256-px grid: "
+            f"{10.0**-d:g} is no power of 2, so your vertices land between the GPU's grid "
+            "points, and a centre near an edge changes sides")  # fmt: skip
+
+
+def _epsilon_words(eps: float) -> str:
+    return (f"you compare E with a tolerance, ε = {eps:g} px²: on the snapped grid E is exact, "
+            f"a whole number of steps of 2⁻¹⁶ = {2.0**-16:.2g} px², so no tolerance is needed, "
+            f"and yours moves every centre within {eps:g} px² of an edge to the other side of "
+            "it; compare E with 0 and let the top-left rule decide E = 0")  # fmt: skip
+
+
+def _rounded(d: int):
+    return lambda xy, w, h, origin: _rounded_fill(np.round(np.asarray(xy, float), d), w, h, origin)
+
+
+def _tolerant(eps: float, form: str):
+    return lambda xy, w, h, origin: edge_fill(snap(np.asarray(xy, float)), w, h, origin,
+                                              eps=(eps, form))  # fmt: skip
+
+
+#: Grids finer than 1/256 px (sub-pixel bits 9 to 16), decimal roundings (1 to 6 places),
+#: tolerances of E (px²; below E's step on the snapped grid, 2⁻¹⁶ px², one changes nothing)
+#: that a student may use (r373 W31, W21, W33: told "raw vertices", "E > 0", "float32").
+FINE_BITS, DECIMALS = range(9, 17), range(1, 7)
+EPSILONS, EPS_FORMS = tuple(10.0**-k for k in range(1, 6)), ("tie", "loose", "strict")
+
+
+def _roundings() -> list[Mistake]:
+    """Snapping to another grid, rounding to decimals, a tolerance in the edge test: one
+    mistake per grid (per tolerance), each named only where it gives every answer of the
+    check, passing ones included (a grid may match one case by coincidence)."""
+    out = [Mistake("coarse snapping", _coarse_words, gives=_on_grid(b), only_whole=True)
+           for b in COARSE_BITS]  # fmt: skip
+    out += [Mistake("fine snapping", _fine_words, gives=_on_grid(b), only_whole=True)
+            for b in FINE_BITS]  # fmt: skip
+    out += [Mistake("decimal rounding", _decimal_words(d), gives=_rounded(d), only_whole=True)
+            for d in DECIMALS]  # fmt: skip
+    out += [Mistake("epsilon", _epsilon_words(eps), gives=_tolerant(eps, form), only_whole=True)
+            for eps in EPSILONS for form in EPS_FORMS]  # fmt: skip
+    return out
+
+
+def _thin(args, expected, got) -> bool:
+    """r373 W19: nothing covered where the snapped triangle has a small area, not zero."""
+    area = abs(_area(snap(np.asarray(args[0], float))))
+    return got.dtype == bool and not got.any() and bool(expected.any()) and 0 < area < 8
+
+
+def _thin_words(args, expected, got) -> str:
+    area = abs(_area(snap(np.asarray(args[0], float)))) / 2
+    return (f"you gave nothing to a thin triangle: snapped, its area is {area:.3g} px², small "
+            "but not zero, and it covers the centres strictly inside it; only a snapped area "
+            "of exactly 0 covers nothing")  # fmt: skip
+
+
+THIN = Mistake("thin triangles refused", _thin_words, fits=_thin, only_whole=True)
 
 
 def _far(args) -> float:
@@ -232,12 +412,20 @@ def _precision_decides(args, got) -> bool:
 
 
 def _snapping_decides(args, expected, got) -> bool:
+    """Does snapping decide this case, and is ``got`` what a fill of the raw vertices gives
+    (some tie rule, float64 or float32, either form of E)? r373: said of any wrong answer on
+    an off-grid case, it told functions that snap to "snap first"."""
     xy, width, height, origin = args
     raw = np.asarray(xy, float)
     if np.array_equal(snap(raw), raw):
         return False
     unsnapped = naive_coverage(raw, width, height, rule="top_left", origin=tuple(origin))
-    return not np.array_equal(unsnapped, expected)
+    if np.array_equal(unsnapped, expected):
+        return False
+    return any(np.array_equal(got, naive_coverage(raw, width, height, rule=rule, dtype=dtype,
+                                                  absolute=absolute, origin=tuple(origin)))
+               for rule in _RULES for dtype in (np.float64, np.float32)
+               for absolute in (False, True))  # fmt: skip
 
 
 def _on_edge(args) -> np.ndarray:
@@ -432,6 +620,66 @@ MISTAKES["transposed, origin swapped"] = (
 )
 
 
+def _off_by_one(axis: str, sign: str) -> str:
+    coord, index, at = ("y", "origin[0] + i", "row") if axis == "rows" else ("x", "origin[1] + j",
+                                                                             "column")  # fmt: skip
+    near = "+ 1.5, the centre of the next " if not sign else "− 0.5, the centre of the previous "
+    return (f"your {axis} are off by one: you test pixel [i, j] at {coord} = {index} {near}{at}; "
+            f"its centre is at {coord} = {index} + ½")  # fmt: skip
+
+
+def _absolute64_words(args, expected, got) -> str:
+    far = _far(args)
+    return (f"you evaluate E = A x + B y + C from absolute coordinates: {far:.0f} px from the "
+            f"origin its products x·y are about {far * far:.0e} px², where float64's numbers "
+            f"are {float(np.spacing(far * far)):.2g} px² apart, coarser than E's step on the "
+            f"snapped grid, 2⁻¹⁶ = {2.0**-16:.2g} px², so a centre a step or two inside an edge "
+            "reads E = 0 (or changes sides); compute E from differences to a vertex, which "
+            "are small and exact there")  # fmt: skip
+
+
+def _int32_words(args, expected, got) -> str:
+    v = np.rint(np.asarray(args[0], float) * 256)
+    across = float(np.ptp(v, axis=0).max())
+    return (f"your integer edge functions overflow: in 1/256-px units this triangle is "
+            f"{across:.0f} across, so E's products reach about {across * across:.1e}, past "
+            f"int32's largest number, {np.iinfo(np.int32).max:,}, and wrap around to the "
+            "wrong sign; compute them in int64 (exact for every input this task allows) or "
+            "float64")  # fmt: skip
+
+
+MISTAKES.update(
+    {
+        **{
+            f"{axis} off by one{sign}": _off_by_one(axis, sign)
+            for axis in ("rows", "columns")
+            for sign in ("", ", the other way")
+        },
+        "only x snapped": "your y coordinates are not snapped: you round x to the 1/256-px grid "
+        "and leave y as it came; a GPU snaps both coordinates of every vertex",
+        "only y snapped": "your x coordinates are not snapped: you round y to the 1/256-px grid "
+        "and leave x as it came; a GPU snaps both coordinates of every vertex",
+        "ceil snapping": "you snap by rounding up (np.ceil): every vertex moves up to 1/256 px "
+        "right and down, always the same way, so centres near an edge change sides; round to the "
+        "nearest grid point, np.rint(xy * 256) / 256",
+        "tie rule before orienting (index)": "your tie rule reads the edges as given, not as "
+        "oriented: you decide top and left on the vertices before the swap, so on a triangle "
+        "given clockwise on screen (E(v1, v2, v3) < 0) each edge gets another edge's verdict; "
+        "decide top and left on the edges of the oriented triangle",
+        "tie rule before orienting (edge)": "your tie rule reads the edges as given, not as "
+        "oriented: on a triangle given clockwise on screen (E(v1, v2, v3) < 0) your left edges "
+        "are its right ones and your top edges its bottom ones; decide top and left on the "
+        "edges of the oriented triangle",
+        "any horizontal edge is top": "you give ties to both horizontal edges, top and bottom: "
+        "with the triangle oriented so that E(v1, v2, v3) > 0, only the top one runs right "
+        "(b.y == a.y and b.x > a.x); the bottom one runs left and its centres go to the triangle "
+        "below",
+        "absolute form in float64": _absolute64_words,
+        "int32 overflow": _int32_words,
+    }
+)
+
+
 def _tie_case(args, expected, got) -> bool:
     """Is the answer wrong only at ties: every wrong pixel a centre on an edge of the snapped
     triangle (covered by E ≥ 0 on every edge, not by E > 0)? Then a tie rule named must give
@@ -451,14 +699,26 @@ TIES = tuple(Mistake(kind, _tie_words(kind, rule), fits=_tie_rule_decides(rule),
 
 #: The tie rules a student may get wrong: each is named only where it gives the answer of
 #: every failing tie case (r84 10-2: a mirrored rule was "E > 0" on one, "E ≥ 0" on another).
-TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED)
+TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED,
+             "tie rule before orienting (index)", "tie rule before orienting (edge)",
+             "any horizontal edge is top")  # fmt: skip
 
 
 def _table() -> list[Mistake]:
     """The mistakes table, each tie rule held to every failing tie case."""
-    table = variant_mistakes(_variants, MISTAKES, (COARSE, ZERO_AREA, FAR, ROUNDING, *TIES,
+    table = variant_mistakes(_variants, MISTAKES, (*_roundings(), THIN,
+                                                   ZERO_AREA, FAR, ROUNDING, *TIES,
                                                    OFF_GRID))  # fmt: skip
-    return [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
+    table = [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
+    return [replace(m, only_whole=True) if m.kind in RARE_KINDS else m for m in table]
+
+
+#: Mistakes that change a few cases only: named only where they give every answer of the
+#: check, passing ones included (r373: "floor snapping", "oriented before snapping" were each
+#: said on one case whose answer they matched by coincidence, to functions without them).
+RARE_KINDS = ("floor snapping", "half-up snapping", "ceil snapping", "oriented before snapping",
+              "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
+              "only y snapped")  # fmt: skip
 
 
 def explain_fill(args, expected, got) -> str:
@@ -466,6 +726,13 @@ def explain_fill(args, expected, got) -> str:
     xy, width, height, origin = args
     if got.shape != expected.shape:
         return f"your image has shape {got.shape}; the window is {expected.shape} (height, width)"
+    if got.dtype != bool:  # NaN or inf in the image (as_image keeps them)
+        bad = ~np.isfinite(got)
+        i, j = np.argwhere(bad)[0]
+        other = int((np.where(bad, expected, got).astype(bool) != expected).sum())
+        return (f"pixel [{i}, {j}] of your image is {'NaN' if np.isnan(got[i, j]) else 'inf'} "
+                f"({int(bad.sum())} pixel(s) NaN or inf, {other} other pixel(s) wrong), where "
+                f"the answer is {bool(expected[i, j])}")  # fmt: skip
     s = snap(np.asarray(xy, float))
     i, j = np.argwhere(got != expected)[0]
     centre = np.array([origin[1] + j + 0.5, origin[0] + i + 0.5])
@@ -485,7 +752,8 @@ def compose(head: str, words: str) -> str:
 
 
 def _zero_area(args, expected, got) -> bool:
-    return _area(snap(np.asarray(args[0], float))) == 0 and bool(got.any())
+    zero = _area(snap(np.asarray(args[0], float))) == 0
+    return zero and got.dtype == bool and bool(got.any())
 
 
 ZERO_AREA = Mistake("zero area", "snapped, this triangle has zero area (its vertices land on "
@@ -499,6 +767,8 @@ def draw_fill(ax, case, got):
     _, (xy, width, height, origin), expected = case
     window = SimpleNamespace(origin=(origin[1], origin[0]))
     answer = None if got is None or got.shape != expected.shape else got
+    if answer is not None and answer.dtype != bool:  # NaN or inf: drawn as not covered
+        answer = np.where(np.isfinite(answer), answer, 0).astype(bool)
     artists = draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
     # no y tick on the top edge: its label would run into the report's title
     top = min(ax.get_ylim())
@@ -515,11 +785,14 @@ def as_image(value) -> np.ndarray:
         arr = np.asarray(value)
     except (TypeError, ValueError):
         raise WrongAnswerType(f"returned {short(value)}, not an image") from None
-    if arr.ndim != 2 or arr.dtype.kind not in "biuf" or not np.isin(arr, (0, 1)).all():
+    finite = np.isfinite(arr) if arr.dtype.kind == "f" else True
+    if arr.ndim != 2 or arr.dtype.kind not in "biuf" or not np.isin(arr[finite], (0, 1)).all():
         raise WrongAnswerType(
             f"returned {short(value)}: expected a (height, width) image of True/False"
         )
-    return arr.astype(bool)
+    # r373 W22: NaN or inf among 0/1 floats is kept, so that the report names it (a float
+    # image of 0.0/1.0 is fine; "the wrong type" told the student floats are refused)
+    return arr.astype(bool) if np.all(finite) else arr.astype(float)
 
 
 def same_image(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
@@ -546,6 +819,12 @@ HINTS = (
     ("; the top-left rule gives it to one of them", "; a GPU gives it to exactly one of them"),
     (", so orient the snapped one", ""),
     ("; compute E in float64 (from differences to a vertex is safest)", ""),
+    # r373 T2: the grid's code and the form of E in the words added since, and in the older
+    # words that said them outside the texts above (a coarse grid, floor snapping)
+    (" (snap them first: np.rint(xy * 256) / 256)", " (snap them first)"),
+    (", np.rint(xy * 256) / 256", ""),
+    ("; compute E from differences to a vertex, which are small and exact there", "; find a "
+     "form of E without products of size x·y"),
 )  # fmt: skip
 
 ROBUST_FILL = Exercise(
