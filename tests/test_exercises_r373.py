@@ -177,3 +177,33 @@ def test_the_notebook_forgets_the_naive_fills_check():
                  if c["metadata"]["nbgrader"]["grade_id"] == "naive_fill")  # fmt: skip
     check = naive.index('ex.check("robust_fill", naive_fill)')
     assert naive.index('tries.forget_hints("robust_fill")') > check
+
+
+@pytest.mark.parametrize(
+    "knobs",
+    [dict(round_xy=lambda xy: np.round(xy, 2), any_flat=True),
+     dict(round_xy=lambda xy: np.ceil(xy * 256) / 256, eps=1e-3),
+     dict(thin=0.5, tie_as_given=True),
+     dict(round_xy=lambda xy: np.rint(xy * 512) / 512, eps=1e-2),
+     dict(round_xy=lambda xy: np.floor(xy * 256) / 256, any_flat=True)],
+)  # fmt: skip
+def test_two_mistakes_of_a_float64_fill_that_snaps_get_no_invented_cause(knobs):
+    """r373's class: a cause fitted on one coincident case ("snap first", float32 rounding,
+    a precision failure, zero area) is not said of a float64 function that snaps; its
+    failures get the rule where no one mistake gives them."""
+    report = ex.check("robust_fill", _fill_r373(**knobs))
+    assert not report.passed
+    invented = {"off the grid", "float32 rounding", "far from origin", "zero area", "no snapping"}
+    assert not {f.kind for f in report.failures} & invented, str(report)
+    assert "float32" not in str(report), str(report)
+
+
+def test_nothing_covered_is_said_alone_and_a_swapped_shape_once():
+    """r373 W26: no rule's example after "never covers anything"; W32: the shape said once,
+    then what the window is (not the same shapes twice)."""
+    report = ex.check("robust_fill", lambda xy, w, h, origin=(0, 0): np.zeros((h, w), bool))
+    assert all("For example" not in f.explanation for f in report.failures), str(report)
+
+    first = ex.check("robust_fill", lambda xy, w, h, origin=(0, 0): np.zeros((w, h), bool))
+    words = next(f.explanation for f in first.failures if "sliver_pair" in f.case)
+    assert "4 rows (height) by 64 columns (width)" in words and words.count("(64, 4)") == 1

@@ -385,7 +385,7 @@ def _far_words(args, expected, got) -> str:
 #: more at once, as in the naive fill): far from the origin (precision), off the grid
 #: (snapping), so that one failure of each family shows first.
 FAR = Mistake("far from origin", _far_words, fits=lambda a, e, g: _precision_decides(a, g),
-              symptom=True)  # fmt: skip
+              symptom=True, with_others=True)  # fmt: skip
 
 #: float32's spacing must exceed this (px) before precision can move a snapped vertex.
 GRID = 1 / 256
@@ -411,16 +411,24 @@ def _precision_decides(args, got) -> bool:
     return False
 
 
-def _snapping_decides(args, expected, got) -> bool:
-    """Does snapping decide this case, and is ``got`` what a fill of the raw vertices gives
-    (some tie rule, float64 or float32, either form of E)? r373: said of any wrong answer on
-    an off-grid case, it told functions that snap to "snap first"."""
+def _snapping_changes(args, expected) -> bool:
+    """Does snapping change this case's answer (off-grid vertices, raw ones fill otherwise)?"""
     xy, width, height, origin = args
     raw = np.asarray(xy, float)
     if np.array_equal(snap(raw), raw):
         return False
     unsnapped = naive_coverage(raw, width, height, rule="top_left", origin=tuple(origin))
-    if np.array_equal(unsnapped, expected):
+    return not np.array_equal(unsnapped, expected)
+
+
+def _snapping_decides(args, expected, got) -> bool:
+    """Does snapping decide this case, and is ``got`` what a fill of the raw vertices gives
+    (some tie rule, float64 or float32, either form of E)? r373: said of any wrong answer on
+    an off-grid case, it told functions that snap to "snap first" (it is also named only
+    where it fits every failing case that snapping decides, and beside named failures)."""
+    xy, width, height, origin = args
+    raw = np.asarray(xy, float)
+    if not _snapping_changes(args, expected):
         return False
     return any(np.array_equal(got, naive_coverage(raw, width, height, rule=rule, dtype=dtype,
                                                   absolute=absolute, origin=tuple(origin)))
@@ -518,6 +526,7 @@ ROUNDING = Mistake(
     "sides whatever your tie rule says; compute E from differences to a vertex, "
     "(b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x), in float64: on the snapped grid it is "
     "then exact", fits=lambda a, e, g: _rounding_decides(a, g), symptom=True,
+    with_others=True,
 )  # fmt: skip
 
 
@@ -525,6 +534,7 @@ OFF_GRID = Mistake(
     "off the grid", "this triangle's vertices lie off the 1/256-px grid, and snapping them "
     "changes which centres it covers: snap first (np.rint(xy * 256) / 256), then decide ties "
     "by the top-left rule on the snapped triangle", fits=_snapping_decides, symptom=True,
+    must_fit=lambda a, e, g: _snapping_changes(a, e), with_others=True,
 )  # fmt: skip
 
 
@@ -716,7 +726,7 @@ def _table() -> list[Mistake]:
 #: Mistakes that change a few cases only: named only where they give every answer of the
 #: check, passing ones included (r373: "floor snapping", "oriented before snapping" were each
 #: said on one case whose answer they matched by coincidence, to functions without them).
-RARE_KINDS = ("floor snapping", "half-up snapping", "ceil snapping", "oriented before snapping",
+RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "ceil snapping", "oriented before snapping",
               "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
               "only y snapped")  # fmt: skip
 
@@ -725,7 +735,11 @@ def explain_fill(args, expected, got) -> str:
     """The first wrong pixel, by the top-left rule on the snapped triangle, and the counts."""
     xy, width, height, origin = args
     if got.shape != expected.shape:
-        return f"your image has shape {got.shape}; the window is {expected.shape} (height, width)"
+        rows, cols = expected.shape
+        swapped = got.shape == expected.shape[::-1]
+        return (f"this window is {rows} rows (height) by {cols} columns (width)"
+                + ("; yours has the two swapped: an image is indexed [row, col], its shape is "
+                   "(height, width)" if swapped else ""))  # fmt: skip
     if got.dtype != bool:  # NaN or inf in the image (as_image keeps them)
         bad = ~np.isfinite(got)
         i, j = np.argwhere(bad)[0]
@@ -746,8 +760,11 @@ def _rule(args, expected, got) -> str:
 
 
 def compose(head: str, words: str) -> str:
-    """The missing repair first, then the first wrong pixel as its example."""
+    """The missing repair first, then the first wrong pixel as its example (none after an
+    image that never covers anything: no rule is the cause there, r373 W26)."""
     words = words.lstrip(" .:;")
+    if words.startswith(MISTAKES["nothing covered"]):
+        return words
     return f"{words}. For example, {head}" if words else head
 
 
@@ -757,7 +774,8 @@ def _zero_area(args, expected, got) -> bool:
 
 
 ZERO_AREA = Mistake("zero area", "snapped, this triangle has zero area (its vertices land on "
-                    "one line or one point): it covers nothing", fits=_zero_area)  # fmt: skip
+                    "one line or one point): it covers nothing", fits=_zero_area,
+                    with_others=True)  # fmt: skip
 
 
 def draw_fill(ax, case, got):
@@ -767,6 +785,8 @@ def draw_fill(ax, case, got):
     _, (xy, width, height, origin), expected = case
     window = SimpleNamespace(origin=(origin[1], origin[0]))
     answer = None if got is None or got.shape != expected.shape else got
+    ax.set_xlabel("column (x, px)")  # r373 E2: the axes named
+    ax.set_ylabel("row (y, px, down)")
     if answer is not None and answer.dtype != bool:  # NaN or inf: drawn as not covered
         answer = np.where(np.isfinite(answer), answer, 0).astype(bool)
     artists = draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
