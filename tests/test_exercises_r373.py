@@ -207,3 +207,26 @@ def test_nothing_covered_is_said_alone_and_a_swapped_shape_once():
     first = ex.check("robust_fill", lambda xy, w, h, origin=(0, 0): np.zeros((w, h), bool))
     words = next(f.explanation for f in first.failures if "sliver_pair" in f.case)
     assert "4 rows (height) by 64 columns (width)" in words and words.count("(64, 4)") == 1
+
+
+def test_the_absolute_form_in_float64_is_named_however_its_terms_are_grouped():
+    """W24 written A x + (B y + C): its rounding differs from the table's A x + B y + C, and
+    it is still named by its rounding, on its one failing case."""
+
+    def grouped(xy, width, height, origin=(0, 0)):
+        v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
+        (ax, ay), (bx, by), (cx, cy) = v
+        v = v[[0, 2, 1]] if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0 else v
+        y = origin[0] + np.arange(height)[:, None] + 0.5
+        x = origin[1] + np.arange(width)[None, :] + 0.5
+        out = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = (a[1] - b[1]) * x + ((b[0] - a[0]) * y + (a[0] * b[1] - a[1] * b[0]))
+            tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            out &= (e >= 0) if tie else (e > 0)
+        return out
+
+    report = ex.check("robust_fill", grouped)
+    assert {f.kind for f in report.failures} == {"absolute form in float64"}, str(report)
+    assert "float64's numbers are" in report.failures[0].explanation

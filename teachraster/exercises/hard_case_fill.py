@@ -8,7 +8,10 @@ triangle nothing, decide ties by the top-left rule, and compute the edge functio
 differences in float64, so that a triangle 10⁶ px from the origin is filled as at the origin.
 
 The cases are the catalogue's screen-space triangles with their raw (unsnapped) vertices,
-``far_from_origin`` at 10⁴, 10⁵ and 10⁶ px, and seeded random off-grid triangles; expected
+``far_from_origin`` at 10⁴, 10⁵ and 10⁶ px (one with a centre 2⁻¹⁵ px² inside an edge, which
+A x + B y + C in float64 rounds to a tie there), a triangle 900 px across (whose E in
+1/256-px integers overflows int32), and seeded random off-grid triangles; the task promises
+exactness within :data:`MOST_FAR` px of the origin and :data:`MOST_ACROSS` px across. Expected
 answers are the package's fill (:func:`teachraster.rasterize`). Each failure is named by the
 naive variant that reproduces it (:func:`~teachraster.study.hardcases.naive_coverage` with
 one of its options), then explained at its first wrong pixel with the top-left rule.
@@ -648,6 +651,33 @@ def _absolute64_words(args, expected, got) -> str:
             "are small and exact there")  # fmt: skip
 
 
+def _absolute64_rounds(args, expected, got) -> bool:
+    """Is every wrong pixel a centre whose exact E on some edge of the snapped triangle lies
+    within float64's rounding of A x + B y + C there (a few spacings of x·y), on a case far
+    enough out for that rounding to pass E's step 2⁻¹⁶ px²? The absolute form in float64
+    written any way (C first, or A x + (B y + C)), whose roundings differ (r373 W24)."""
+    xy, width, height, origin = args
+    far = _far(args)
+    bound = 8 * float(np.spacing(far * far))
+    if got.dtype != bool or got.shape != expected.shape or bound < 2.0**-16:
+        return False
+    v = snap(np.asarray(xy, float))
+    y = origin[0] + np.arange(height)[:, None] + 0.5
+    x = origin[1] + np.arange(width)[None, :] + 0.5
+    near = np.zeros((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        near |= np.abs((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) <= bound
+    wrong = got != expected
+    return bool(wrong.any() and not (wrong & ~near).any())
+
+
+#: The absolute form in float64 however its terms are grouped: named only where every
+#: failing answer is wrong only within its rounding.
+ABSOLUTE64 = Mistake("absolute form in float64", lambda a, e, g: _absolute64_words(a, e, g),
+                     fits=_absolute64_rounds, only_whole=True)  # fmt: skip
+
+
 def _int32_words(args, expected, got) -> str:
     v = np.rint(np.asarray(args[0], float) * 256)
     across = float(np.ptp(v, axis=0).max())
@@ -716,7 +746,7 @@ TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED,
 
 def _table() -> list[Mistake]:
     """The mistakes table, each tie rule held to every failing tie case."""
-    table = variant_mistakes(_variants, MISTAKES, (*_roundings(), THIN,
+    table = variant_mistakes(_variants, MISTAKES, (*_roundings(), THIN, ABSOLUTE64,
                                                    ZERO_AREA, FAR, ROUNDING, *TIES,
                                                    OFF_GRID))  # fmt: skip
     table = [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
