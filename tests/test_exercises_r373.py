@@ -230,3 +230,24 @@ def test_the_absolute_form_in_float64_is_named_however_its_terms_are_grouped():
     report = ex.check("robust_fill", grouped)
     assert {f.kind for f in report.failures} == {"absolute form in float64"}, str(report)
     assert "float64's numbers are" in report.failures[0].explanation
+
+
+def test_a_triangle_smaller_than_a_pixel_is_drawn_again_magnified():
+    """r373 E2: snap_flips_winding was a dot with "v1, v2, v3" piled on it; the case figures
+    name their axes."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    report = ex.check("robust_fill", R373["fill with ε = 1e-3 in the edge test"][0])
+    assert report.failures[0].case == "snap_flips_winding"
+    fig, ax = plt.subplots()
+    try:
+        report.plot(ax)
+        assert ax.get_xlabel().startswith("column") and ax.get_ylabel().startswith("row")
+        (inset,) = ax.child_axes
+        assert inset.get_title().startswith("magnified")
+        assert {t.get_text() for t in inset.texts} >= {"v1", "v2", "v3", "centre"}
+    finally:
+        plt.close(fig)

@@ -819,11 +819,47 @@ def draw_fill(ax, case, got):
     ax.set_ylabel("row (y, px, down)")
     if answer is not None and answer.dtype != bool:  # NaN or inf: drawn as not covered
         answer = np.where(np.isfinite(answer), answer, 0).astype(bool)
-    artists = draw_coverage(ax, window, snap(np.asarray(xy, float)), expected, answer, None, None)
+    s = snap(np.asarray(xy, float))
+    artists = draw_coverage(ax, window, s, expected, answer, None, None)
     # no y tick on the top edge: its label would run into the report's title
     top = min(ax.get_ylim())
     ax.set_yticks([t for t in ax.get_yticks() if t > top and t <= max(ax.get_ylim())])
+    if float(np.ptp(s, axis=0).max()) < SMALL:
+        artists += _magnified(ax, s, width, height, origin)
     return artists
+
+
+#: A snapped triangle smaller than this (px) is drawn again, magnified, in an inset (r373 E2:
+#: snap_flips_winding was a dot with "v1, v2, v3" piled on it).
+SMALL = 0.5
+
+
+def _magnified(ax, s, width: int, height: int, origin) -> list:
+    """An inset in the window's corner farthest from the triangle: the snapped triangle, its
+    vertices named, and the pixel centre nearest to it."""
+    from .drawing import vertex_labels
+
+    centre = s.mean(axis=0)
+    x0, y0 = origin[1], origin[0]
+    right = (centre[0] - x0) < width / 2
+    lower = (centre[1] - y0) < height / 2
+    inset = ax.inset_axes([0.52 if right else 0.03, 0.03 if lower else 0.52, 0.45, 0.45])
+    nearest = np.floor(centre) + 0.5
+    pts = np.vstack([s, nearest])
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    pad = 0.25 * float((hi - lo).max()) + 1 / 256
+    ring = np.vstack([s, s[:1]])
+    inset.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
+    inset.plot(*nearest, "+", color="black", ms=8)
+    inset.annotate("centre", nearest, xytext=(3, -11), textcoords="offset points", fontsize=7)
+    vertex_labels(inset, s, pad / 4, (lo[0] - pad, lo[1] - pad, *(hi - lo + 2 * pad)))
+    inset.set_xlim(lo[0] - pad, hi[0] + pad)
+    inset.set_ylim(hi[1] + pad, lo[1] - pad)
+    inset.set_aspect("equal")
+    inset.set_xticks([])
+    inset.set_yticks([])
+    inset.set_title(f"magnified, {(hi - lo + 2 * pad).max():.2g} px across", fontsize=7)
+    return [inset]
 
 
 def as_image(value) -> np.ndarray:
