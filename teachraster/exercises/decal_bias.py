@@ -306,12 +306,13 @@ _SLOPE_WORDS = {
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
-#: Both slips make m thousands of times too large, and with it a test for NaN says NaN on
-#: every case with an offset, so their answers are alike: told apart by whether the code reads
-#: ``pixel`` (r374 F3: view depth's slope was told "the `* pixel` is missing" first, of code
-#: that has it; :data:`_READS`)
+#: Both slips make m thousands of times too large, and with it their own test for NaN says
+#: NaN on every case with an offset, so their answers are alike: told apart by whether the code
+#: reads ``pixel`` (r374 F3: view depth's slope was told "the `* pixel` is missing" first, of
+#: code that has it; :data:`_READS`). So are a test for NaN left out (``clear`` never read)
+#: and one against ``clear`` itself, a view distance (r374 F2: told "ignores `clear`").
 _OWN_WORDS = {}
-_READS = {"per unit": {"unread": "pixel"}, "view slope": {"reads": "pixel"},
+_READS = {"per unit, own test": {"unread": "pixel"}, "view slope, own test": {"reads": "pixel"},
           "clear ignored": {"unread": "clear"}, "view units": {"reads": "clear"}}  # fmt: skip
 
 MISTAKES = {
@@ -577,8 +578,7 @@ def _zoom(ax, r, m, lo, hi, got, ok):
 def _mistakes() -> list[Mistake]:
     """The table, each slip of m that :data:`_READS` names told apart by what the code reads."""
     table = variant_mistakes(_variants, MISTAKES, (ZERO, NAN))
-    return [dataclasses.replace(m, **_READS.get(m.kind.removesuffix(", own test"), {}))
-            for m in table]  # fmt: skip
+    return [dataclasses.replace(m, **_READS.get(m.kind, {})) for m in table]
 
 
 DECAL_BIAS = Exercise(

@@ -217,6 +217,13 @@ def same_setup(got, expected, args=None) -> bool:
     return fmt == expected[0] and _near_ok(args, fmt, n) and _dz_ok(args, fmt, n, dz)
 
 
+def _closed_near(z, gap, far) -> float:
+    """5.1's closed form for unorm24, n = step f z² / (gap f + step z²), beyond z where no near
+    plane short of z does it (:func:`.near_plane.expected_near` stops at z)."""
+    step = 1 / (2**24 - 1)
+    return step * far * z * z / (gap * far + step * z * z)
+
+
 def explain_setup(args, expected, got) -> str:
     """The scene, what each buffer resolves, the right choice and the student's."""
     z, gap, far, nearest = args
@@ -225,7 +232,12 @@ def explain_setup(args, expected, got) -> str:
     # yours with the digits that tell it from the bound it is judged by (r351 item 3)
     bound = n_u if fmt == UNORM and n <= nearest else nearest
     # where only a near plane at z would do, "n ≥ 900" at z = 900 read as a usable one
-    need = f"n ≥ {num(n_u, n)}" if n_u < 0.99 * z else "a near plane at z itself"
+    # told from yours only where the check could tell them apart (r374 F2: 5.1's n printed
+    # with 16 digits beside yours with 4, where yours lay beyond `nearest` anyway)
+    apart = fmt == UNORM and n <= nearest and abs(n - n_u) > 1e-6 * n_u
+    need = f"n ≥ {num(n_u, n if apart else None)}" if n_u < 0.99 * z else (
+        f"a near plane beyond z (5.1's formula gives {num(_closed_near(z, gap, far))}: none "
+        "short of z does it)")  # fmt: skip
     return (f"at z = {num(z)} with far = {num(far)}, surfaces {num(gap)} apart and nothing "
             f"nearer than {num(nearest, n)}: unorm24 needs {need} (Δz at n = "
             f"{num(nearest)}: {num(resolution(z, nearest, far, 24))}), reverse-Z "
@@ -323,7 +335,8 @@ def _dz_words(what):
         fmt, n = got[0], got[1]
         shown = REVERSE if fmt == NEITHER else fmt
         lo, hi = _resolves(shown, z, n, far) if 0 < n < z else (math.nan, math.nan)
-        said = num(lo) if fmt == UNORM else f"{num(lo)} to {num(hi)}"
+        # told apart (r374: "0.022 to 0.022")
+        said = num(lo) if fmt == UNORM else f"{num(lo, hi)} to {num(hi, lo)}"
         return (f": {what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
                 + ("; for \"neither\" give reverse-Z's numbers, the better of the two"
                    if fmt == NEITHER else ""))  # fmt: skip
@@ -471,9 +484,8 @@ MISTAKES = [
     # r374 F5: the bound the words quote, taken for Δz, was told only "not what it resolves"
     Mistake("reverse-Z coarse bound", lambda a, e, g: (
         f": your Δz {num(g[2])} is a bound, {'2^-23' if _coarse(a, g) else '2^-24'} of "
-        "z (1 − z/f), which holds whatever the near plane: the step at d itself, "
-        "np.spacing(np.float32(d)) over |dd/dz| (5.2), lies between 2^-24 and 2^-23 of it, and "
-        "with it "
+        "z (1 − z/f), which holds whatever the near plane: the step at the stored d itself over "
+        "|dd/dz| (5.2) lies between 2^-24 and 2^-23 of it, and with it "
         f"reverse-Z resolves Δz = {num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
         fits=_reverse_dz_as(lambda z, n, far: list(_finest(z, far)))),
     Mistake("beyond nearest", _words_beyond, fits=_fits(UNORM, (REVERSE, NEITHER), _beyond)),
