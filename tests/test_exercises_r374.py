@@ -97,7 +97,7 @@ def test_5_4_names_a_flipped_comparison_and_16_bits_not_compare_first():
     """F4: both students compared; they are told their own slip, with 5.1's numbers."""
     for label in ("depth set-up with the comparison flipped", "depth set-up with 5.1 for 16 bits"):
         report, first, _ = _first(label)
-        assert "Compare 5.1's near plane with `nearest` first" not in first.explanation
+        assert "5.1's near plane within `nearest` decides it" not in first.explanation
         assert all(f.kind == KINDS[label] for f in report.failures), str(report)
     # a student who always prefers reverse-Z is not told either
     tries.forget_hints("depth_setup")

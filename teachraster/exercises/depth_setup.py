@@ -295,7 +295,8 @@ def _words_unorm_does(args, expected, got) -> str:
     return (f": unorm24 does it here, with any near plane from "
             f"{num(expected_near(z, gap, far, 24))} to {num(nearest)} (5.1), and is preferred: "
             "with the stencil the scene needs, its format is nominally 32 bits a pixel, "
-            "reverse-Z's 64. Compare 5.1's near plane with `nearest` first")  # fmt: skip
+            "reverse-Z's 64: 5.1's near plane within `nearest` decides it, before reverse-Z is "
+            "asked")  # fmt: skip
 
 
 def _words_reverse_does(args, expected, got) -> str:
