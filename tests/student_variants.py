@@ -3976,3 +3976,101 @@ KINDS.update({
     "depth set-up quoting unorm24's Δz": 'dz of the other buffer',
     'depth set-up with float32 without reverse-Z': 'float32 forward',
 })  # fmt: skip
+
+
+# r374: exercise 05's variants the reader found misnamed or half-named (tests/test_exercises_r374.py)
+def _bias_nan(z, tilt, pixel, near, far, bits, reverse, clear):
+    return np.nan
+
+
+def _bias_room_in_view_units(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    if r + m > clear - m:  # the object's distance, not its window-depth difference
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+def _bias_per_unit_own_test(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z  # no `* pixel`
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    if r + m > z_win(z) - z_win(z - clear) - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+def _setup_by(unorm_when, bits=24, dz=None):
+    """depth_setup choosing unorm24 (at 5.1's n, the gap quoted) where ``unorm_when(n,
+    nearest)``, with 5.1 run for ``bits``; else reverse-Z at nearest with ``dz(z, near, far)``
+    (5.2's by default), "neither" where that exceeds the gap."""
+
+    def depth_setup(z, gap, far, nearest):
+        n = _rs.safe_near(z, gap, far, bits)
+        if unorm_when(n, nearest):
+            return "unorm24", n, gap
+        got = (dz or _rs.reverse_z_gap)(z, nearest, far)
+        return ("reverse-z" if got <= gap else "neither"), nearest, got
+
+    return depth_setup
+
+
+def _gap_one_minus(power):
+    def reverse_z_gap(z, near, far):
+        d = (near / z - near / far) / (1 - near / far)
+        return float(np.spacing(np.float32(d))) * z * z / near * (1 - near / far) ** power
+
+    return reverse_z_gap
+
+
+R374 = {
+    "decal bias returning NaN always": (
+        "decal_bias", _bias_nan, "your function returns NaN on every case", "nan"),
+    "decal bias with room taken as clear itself": (
+        "decal_bias", _bias_room_in_view_units, "compares with `clear` itself", "view units"),
+    "decal bias per unit of x/z, own NaN test": (
+        "decal_bias", _bias_per_unit_own_test, "the `* pixel` is missing",
+        "per unit, own test"),
+    "depth set-up with the comparison flipped": (
+        "depth_setup", _setup_by(lambda n, nearest: n >= nearest),
+        "your comparison of 5.1's near plane with `nearest` is flipped", "comparison flipped"),
+    "depth set-up with 5.1 for 16 bits": (
+        "depth_setup", _setup_by(lambda n, nearest: n <= nearest, bits=16),
+        "5.1's near plane for 16 bits", "16 bits"),
+    "depth set-up quoting reverse-Z's coarse bound": (
+        "depth_setup", _setup_by(lambda n, nearest: n <= nearest,
+                                 dz=lambda z, near, far: 2.0**-23 * z * (1 - z / far)),
+        "is a bound, 2^-23 of z (1 − z/f)", "reverse-Z coarse bound"),
+    "gap with 1 − n/f twice": (
+        "reverse_z_gap", _gap_one_minus(2), "the factor 1 − n/f twice", "1 - n/f twice"),
+    "gap with 1 − n/f on the wrong side": (
+        "reverse_z_gap", _gap_one_minus(-1), "1 − n/f on the wrong side", "1 - n/f inverted"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R374.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R374.items()})
+# r374 F3: view depth's slope (the code reads `pixel`) is named as such, not "per unit"
+KINDS["decal bias from view depth's slope, own NaN test"] = "view slope, own test"
+# r374 F2/F3: the checker tells these slips apart by what the code reads (`pixel`, `clear`):
+# the per-unit fixture above reads `pixel` (m / pixel), which a slope without `* pixel` never
+# does, and the clear-ignoring one computes room from `clear`, as a test against `clear` in
+# view units does; each is now the code such a student writes, and the latter named for both
+WRONG["decal bias per unit, own NaN test"] = (
+    "decal_bias",
+    _bias_per_unit_own_test,
+    "the `* pixel` is missing",
+)
+
+
+def _bias_clear_unread(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    return (r + m) if reverse else -(r + m)
+
+
+WRONG["decal bias ignoring clear"] = ("decal_bias", _bias_clear_unread, "ignores `clear`")
+WRONG["decal bias computing room, never testing it"] = (
+    "decal_bias",
+    _bias_with("clear ignored"),
+    "your test for NaN did not fire",
+)
+KINDS["decal bias computing room, never testing it"] = "view units"

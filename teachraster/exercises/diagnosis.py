@@ -937,10 +937,12 @@ def diagnose(
     value = run_checker(lambda: _constant(results, spec.call is not None), None)
     if value is not None:
         # r107 N3-2: NaN on every case is a 0/0 far more often than a placeholder
-        # (CONVENTIONS.md, Exercises and grading)
+        # (CONVENTIONS.md, Exercises and grading), unless NaN is one of the answers
         nan = _all_nan(value)
         kind = "nan" if nan else "constant"
-        if nan:  # r286 C1: ±inf everywhere is told as NaN is, not "a placeholder"
+        if nan and spec.constant_nan is not None:  # r374 F1: NaN legal, so no 0/0 here
+            words = spec.constant_nan(results)
+        elif nan:  # r286 C1: ±inf everywhere is told as NaN is, not "a placeholder"
             words = _legal_nan(spec, _nan_words((), None, np.ravel(_numbers(value))[:1]))
         elif spec.constant is not None:
             words = spec.constant(value)

@@ -293,6 +293,7 @@ class Exercise:
     float32_floor: float = 1.0
     constant: Callable | None = None
     nan_words: str | None = None
+    constant_nan: Callable | None = None
     answers: Sequence[PackageAnswer] = ()
     draw: Callable | None = None
     scene: Callable | None = None
