@@ -3976,3 +3976,56 @@ KINDS.update({
     "depth set-up quoting unorm24's Δz": 'dz of the other buffer',
     'depth set-up with float32 without reverse-Z': 'float32 forward',
 })  # fmt: skip
+
+
+# == r375: exercise 07's bilinear and mip_level slips that were told only the rule ===============
+
+
+def _bilinear_r375(*, x_wrapped=False, rows_by_fx=False):
+    """bilinear with the coordinate x = u·W − ½ wrapped into [0, W) and the texels then
+    clamped (``x_wrapped``, r375 F7), or the rows blended by x's fraction (``rows_by_fx``, F3)."""
+
+    def fn(texture, uv, wrap):
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+        if x_wrapped:
+            x, y = (
+                (x % w, y % h)
+                if wrap == "repeat"
+                else (min(max(x, 0), w - 1), min(max(y, 0), h - 1))
+            )
+        x0, y0 = math.floor(x), math.floor(y)
+        fx, fy = x - x0, y - y0
+        if x_wrapped or wrap == "clamp":
+            c = [min(max(i, 0), w - 1) for i in (x0, x0 + 1)]
+            r = [min(max(i, 0), h - 1) for i in (y0, y0 + 1)]
+        else:
+            c, r = [i % w for i in (x0, x0 + 1)], [i % h for i in (y0, y0 + 1)]
+        top = (1 - fx) * tex[r[0], c[0]] + fx * tex[r[0], c[1]]
+        bottom = (1 - fx) * tex[r[1], c[0]] + fx * tex[r[1], c[1]]
+        t = fx if rows_by_fx else fy
+        return (1 - t) * top + t * bottom
+
+    return fn
+
+
+def _mip_float16(ddx, ddy, size):
+    """GL's rule computed in float16, as a GPU's low-precision λ (r375 F4)."""
+    h, w = (np.float16(s) for s in size)
+    lx = np.hypot(np.float16(ddx[0]) * w, np.float16(ddx[1]) * h)
+    ly = np.hypot(np.float16(ddy[0]) * w, np.float16(ddy[1]) * h)
+    return np.log2(max(lx, ly))
+
+
+R375 = {
+    "bilinear with x wrapped into [0, W), the texels clamped": (
+        "bilinear", _bilinear_r375(x_wrapped=True), "you wrapped x = u·W − ½ into [0, W)",
+        "wrapped x, clamped texels"),
+    "bilinear with the rows blended by x's fraction": (
+        "bilinear", _bilinear_r375(rows_by_fx=True), "the blend between the two rows uses "
+        "x's fraction", "rows blended by x's fraction"),
+    "mip level in float16": ("mip_level", _mip_float16, "float16's rounding", "float16"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R375.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R375.items()})

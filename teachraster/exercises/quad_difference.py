@@ -15,6 +15,8 @@ Expected answers: the renderer's own quad lanes
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from ..core.interpolation import perspective_weights
@@ -276,9 +278,8 @@ def draw_quad(ax, case, got):
     _, (xy, w, f, row, col), expected = case
     r0, c0 = row - row % 2, col - col % 2
     # the method once earned: the full words given, or this answer right (a passing check)
-    method = got is not None and (
-        tries.hints_spent("quad_derivatives") or same_pair(np.asarray(got), expected, case[1])
-    )
+    passed = got is not None and same_pair(np.asarray(got), expected, case[1])
+    method = got is not None and (tries.hints_spent("quad_derivatives") or passed)
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
     for y in range(r0 - 2, r0 + 4):
@@ -300,14 +301,28 @@ def draw_quad(ax, case, got):
                                    bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
-    ax.set_xlim(c0 - 1.5, c0 + 3.5)
-    ax.set_ylim(r0 + 3.5, r0 - 1.5)
+    if passed:  # r375 F2: 7.4's pixels, each outlined, and their quads
+        for r, c in QUESTION_PIXELS:
+            artists.append(ax.add_patch(Rectangle((c, r), 1, 1, fill=False, lw=1.5,
+                                                  edgecolor="#ff9f1c", linestyle="--")))  # fmt: skip
+            if (r - r % 2, c - c % 2) != (r0, c0):
+                artists.append(ax.add_patch(Rectangle((c - c % 2, r - r % 2), 2, 2, fill=False,
+                                                      edgecolor="#2b7bba", lw=1.5,
+                                                      linestyle="--")))  # fmt: skip
+    # a passing figure reaches 7.4's pixels' quads too, where they are near
+    near = [(r - r % 2, c - c % 2) for r, c in QUESTION_PIXELS if passed
+            and abs(r - r0) < 6 and abs(c - c0) < 6]  # fmt: skip
+    ax.set_xlim(c0 - 1.5, max([c0 + 1.5] + [c for _, c in near]) + 2.2)
+    ax.set_ylim(max([r0 + 1.5] + [r for r, _ in near]) + 2.2, r0 - 1.5)
     ax.set_aspect("equal")
     if got is not None:
-        artists.append(ax.text(0.02, 0.02, f"(ddx, ddy) = {vec(expected, got)}\nyours: "
+        # beside the close-up, under the legend (r375: it covered the quad below the pixel's)
+        artists.append(ax.text(1.04, 0.02, f"(ddx, ddy) = {vec(expected, got)}\nyours: "
                                f"{vec(got, expected)}", transform=ax.transAxes,
-                               fontsize="x-small", va="bottom",
+                               fontsize="x-small", va="bottom", ha="left",
                                bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
+    if passed:
+        ax.set_xlabel(textwrap.fill(quad_questions(), 60), fontsize="x-small")
     handles = [Patch(facecolor="#d2d2d2", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
     if method:
@@ -317,6 +332,20 @@ def draw_quad(ax, case, got):
     artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
                              bbox_to_anchor=(1.02, 1)))  # fmt: skip
     return artists
+
+
+#: 7.4's "answer first" pixels (r375 F2: a passing check never showed them)
+QUESTION_PIXELS = ((28, 14), (29, 15), (30, 16))
+
+
+def quad_questions(pixels=QUESTION_PIXELS) -> str:
+    """Which of ``pixels`` share a quad, and so one (ddx, ddy): 7.4's first question."""
+    quads: dict[tuple[int, int], list] = {}
+    for r, c in pixels:
+        quads.setdefault((r - r % 2, c - c % 2), []).append(f"({r}, {c})")
+    said = "; ".join(f"{' and '.join(p)} in the quad from ({q[0]}, {q[1]})"
+                     for q, p in quads.items())  # fmt: skip
+    return f"7.4's pixels (dashed): {said}: one pair (ddx, ddy) per quad"
 
 
 def _inside(xy, x, y) -> bool:
@@ -329,5 +358,6 @@ QUAD_DERIVATIVES = Exercise(
     "quad_derivatives", quad_cases, as_pair, same_pair, explain_quad, _rule,
     variant_mistakes(_variants, MISTAKES), answers=(PackageAnswer(lane_values),),
     draw=draw_quad, hints=((RULE, HINT), *NAMED_HINTS), inputs_drawn=True,
+    example=2,  # r375 F2: pixel (29, 15), 7.4's question (pixel (27, 3) was drawn)
     once=((RULE, ": as said for the first failing case"),),
 )  # fmt: skip
