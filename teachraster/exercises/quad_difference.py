@@ -127,6 +127,9 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
                         _at(xy, w, f, col + 0.5, (row ^ 1) + 0.5) - own])  # fmt: skip
     return {
         "unaligned": pair(row, col),
+        # r375 F9: one axis aligned to the quads, the other not, was told only the rule
+        "column unaligned": pair(r0, col),
+        "row unaligned": pair(row, c0),
         # r286 M3: the slips a reader found told only the rule
         "lower right": np.array(
             [lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]
@@ -165,6 +168,11 @@ MISTAKES = {
     "unaligned": "you took the quad whose upper-left pixel is this pixel: quads are aligned "
     "to even rows and columns, so pixel (row, col) belongs to the quad starting at "
     "(row − row mod 2, col − col mod 2)",
+    "column unaligned": "you aligned the quad's row but not its column: quads start at even "
+    "columns too, so pixel (row, col) belongs to the quad starting at (row − row mod 2, "
+    "col − col mod 2)",
+    "row unaligned": "you aligned the quad's column but not its row: quads start at even rows "
+    "too, so pixel (row, col) belongs to the quad starting at (row − row mod 2, col − col mod 2)",
     "lower right": "you differenced against the quad's lower-right lane (f(lower right) "
     "minus its neighbours); coarse derivatives take the upper-left lane as the reference: ddx "
     "is its right neighbour minus it, ddy its lower neighbour minus it",

@@ -848,7 +848,8 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone), "round()"
     (the level Python's round() of the weight picks), "lower" (⌊λ⌋ alone) or "round for
     floor" (levels round(λ) and round(λ) + 1, weighted by λ − round(λ)), "round lower" (the
-    same levels, weighted by λ − ⌊λ⌋); ``clamp="q - 1"``
+    same levels, weighted by λ − ⌊λ⌋), "coarsest first" (level d read as pyramid[q − d]);
+    ``weights="half"`` (½ each between two levels); ``clamp="q - 1"``
     clamps λ to [0, q − 1]; ``texels="level 0 size"`` filters every level with level 0's W
     and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
@@ -886,9 +887,13 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
         return level(0)
     if levels == "upper":
         return level(upper)
+    if levels == "coarsest first":  # r375 F9: pyramid[q − d] for level d
+        lower, upper = q - lower, q - upper
     a, b = level(lower), level(upper)
     if weights == "swapped":
         t = 1 - t
+    if weights == "half":  # r375 F9: ½ each wherever λ lies between two levels
+        t = 0.5 if 0 < t < 1 else t
     return (1 - t) * a + t * b
 
 
@@ -938,6 +943,8 @@ def _tri_words(text):
             lam=num(lam),
             off=num(lam - round(lam)),
             near_up=min(round(lam) + 1, q),
+            r0=q - d0,
+            r1=q - d1,
         )
 
     return words
@@ -967,7 +974,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "one)"), "index"),
     ],
     "weights": [Slip("weights swapped", _tri_words("the weight of level {d1} is the fraction "
-                     "λ − ⌊λ⌋ = {t}; you gave it to level {d0}"), "swapped")],
+                     "λ − ⌊λ⌋ = {t}; you gave it to level {d0}"), "swapped"),
+                # r375 F9: told only the rule
+                Slip("weights ½ each", _tri_words("you weighted the two levels ½ each whatever "
+                     "λ's fraction, so the value jumps as λ moves; trilinear blends levels {d0} "
+                     "and {d1}, level {d1} weighted by λ − ⌊λ⌋ = {t}"), "half")],
     "levels": [
         Slip("nearest level", _tri_words("that is level {near} alone (the nearest); trilinear "
              "blends levels {d0} and {d1}"), "nearest"),
@@ -985,6 +996,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "{lam} rounds to level {near}, so you blended levels {near} and {near_up}; "
              "trilinear blends levels ⌊λ⌋ = {d0} and {d1}, level {d1} weighted by λ − ⌊λ⌋ = "
              "{t}"), "round lower"),
+        # r375 F9: told only the rule
+        Slip("levels counted from the coarsest", _tri_words("you counted the levels from the "
+             "coarsest: pyramid[0] is level 0, the full-size texture, and pyramid[{q}] the 1×1 "
+             "level q = {q}; λ = {lam} reads pyramid[{d0}] and pyramid[{d1}], you read "
+             "pyramid[{r0}] and pyramid[{r1}]"), "coarsest first"),
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
         Slip("upper level only", _tri_words("that is level {d1} alone; trilinear blends it with "
@@ -1055,8 +1071,12 @@ def _no_level_above_q(args, error) -> str:
     "at most q" (r317: told "raised IndexError: list index out of range" only)."""
     pyramid, _, lod, _ = args
     q = len(pyramid) - 1
-    if not error.startswith("your function raised IndexError") or not q <= lod < q + 1:
+    if not error.startswith("your function raised IndexError") or lod < q:
         return ""
+    if lod >= q + 1:  # r375 F9: λ clamped to len(pyramid), or not at all, was told the error
+        return (f": at λ = {num(lod)}, above the pyramid, λ clamped to [0, q] = [0, {q}] "
+                f"reads level {q} alone: q = len(pyramid) − 1 is the last level's number, and "
+                f"pyramid[{q + 1}] is out of range; clamp λ to [0, q] before taking its levels")  # fmt: skip
     return (f": at λ = {num(lod)}, ⌊λ⌋ = {q} is already the last level, q = {q}, and there "
             f"is no level q + 1 = {q + 1} (pyramid[{q + 1}] is out of range): the upper level "
             "is ⌊λ⌋ + 1 at most q, so here level q is blended with itself")  # fmt: skip
