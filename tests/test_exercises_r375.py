@@ -18,7 +18,7 @@ from student_variants import R375
 from teachraster import exercises as ex
 from teachraster.exercises import tries
 from teachraster.exercises.level_of_detail import level_questions
-from teachraster.exercises.quad_difference import quad_questions
+from teachraster.exercises.quad_difference import FLOOR, helper_question, quad_questions
 from teachraster.exercises.texture_filtering import (
     bilinear_questions,
     level_weights,
@@ -115,13 +115,28 @@ def test_the_mip_pass_figure_answers_7_1s_other_question(plt):
 
 def test_the_quad_pass_figure_marks_7_4s_pixels_and_their_quads(plt):
     words = quad_questions()
-    assert "(28, 14) and (29, 15) in the quad from (28, 14)" in words
-    assert "(30, 16) in the quad from (30, 16)" in words
+    assert "(28, 14) and (29, 15) in the quad at (28, 14)" in words
+    assert "(30, 16) in the quad at (30, 16)" in words
     fig, ax = _passing_figure(plt, "quad_derivatives", REASONING["quad_derivatives"])
-    assert "(30, 16) in the quad from (30, 16)" in ax.get_xlabel().replace("\n", " ")
+    caption = ax.get_xlabel().replace("\n", " ")
+    assert "(30, 16) in the quad at (30, 16)" in caption and helper_question() in caption
     dashed = [p for p in ax.patches if p.get_linestyle() == "--"]
     assert len(dashed) == 4, "three pixels and the other quad"
     assert ax.get_xlim()[1] >= 18 and ax.get_ylim()[0] >= 32, "the other quad in view"
+
+
+def test_the_helper_question_takes_a_quad_whose_right_column_lies_outside():
+    """7.4's third question: a helper's value at the triangle's nearest point stops the change
+    at the edge, so ddx shrinks against the extrapolated one."""
+    from teachraster.exercises.quad_difference import _inside, expected_pair
+
+    words = helper_question()
+    r0, c0 = (int(v) for v in words.split("quad at (")[1].split(")")[0].split(", "))
+    xy, w, f = FLOOR
+    inside = [_inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)]
+    assert inside == [True, False, True, False]
+    near, right = (float(v) for v in words.split("ddx ")[1].split(", not "))
+    assert abs(right - expected_pair(xy, w, f, r0, c0)[0]) < 1e-3 and abs(near) < abs(right)
 
 
 def test_the_notebook_says_the_pass_figures_answer_the_questions():

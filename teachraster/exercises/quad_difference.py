@@ -24,7 +24,7 @@ from ..pipeline.texturing.quad_derivatives import attribute_planes, lane_values
 from .answers import as_numbers
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, PackageAnswer, variant_mistakes
-from .scalars import vec
+from .scalars import num, vec
 from .tolerance import all_close
 
 #: Floor-like triangles: the far edge at w = 8 against 1 near, as on textured_floor.
@@ -330,7 +330,8 @@ def draw_quad(ax, case, got):
                                fontsize="x-small", va="bottom", ha="left",
                                bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
     if passed:
-        ax.set_xlabel(textwrap.fill(quad_questions(), 60), fontsize="x-small")
+        words = f"{quad_questions()}. {helper_question()}"
+        ax.set_xlabel(textwrap.fill(words, 58), fontsize="x-small")
     handles = [Patch(facecolor="#d2d2d2", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
     if method:
@@ -351,9 +352,41 @@ def quad_questions(pixels=QUESTION_PIXELS) -> str:
     quads: dict[tuple[int, int], list] = {}
     for r, c in pixels:
         quads.setdefault((r - r % 2, c - c % 2), []).append(f"({r}, {c})")
-    said = "; ".join(f"{' and '.join(p)} in the quad from ({q[0]}, {q[1]})"
+    said = "; ".join(f"{' and '.join(p)} in the quad at ({q[0]}, {q[1]})"
                      for q, p in quads.items())  # fmt: skip
-    return f"7.4's pixels (dashed): {said}: one pair (ddx, ddy) per quad"
+    return f"7.4 (dashed): {said}, one (ddx, ddy) each"
+
+
+def _nearest_point(xy, x, y) -> tuple[float, float]:
+    """The triangle's point nearest (x, y): (x, y) itself inside, else the nearest point of
+    its edges."""
+    if _inside(xy, x, y):
+        return x, y
+    best, p = None, np.array([x, y], dtype=float)
+    for k in range(3):
+        a, b = np.asarray(xy[k], float), np.asarray(xy[(k + 1) % 3], float)
+        s = float(np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0))
+        q = a + s * (b - a)
+        if best is None or np.hypot(*(q - p)) < np.hypot(*(best - p)):
+            best = q
+    return float(best[0]), float(best[1])
+
+
+def helper_question(xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> str:
+    """7.4's helper question answered on the floor: ddx of the first quad (by rows, then
+    columns) whose left column is covered and right column not, with each helper's value taken
+    at the triangle's nearest point, against the extrapolated one."""
+    size = int(np.ceil(np.max(xy))) + 2
+    for r0 in range(0, size, 2):
+        for c0 in range(0, size, 2):
+            inside = [_inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)]
+            if inside == [True, False, True, False]:
+                left = _at(xy, w, f, c0 + 0.5, r0 + 0.5)
+                right = _at(xy, w, f, c0 + 1.5, r0 + 0.5) - left
+                near = _at(xy, w, f, *_nearest_point(xy, c0 + 1.5, r0 + 0.5)) - left
+                return (f"Helpers at the nearest point: in the quad at ({r0}, {c0}), right column "
+                        f"outside, ddx {num(near)}, not {num(right)}")  # fmt: skip
+    return ""
 
 
 def _inside(xy, x, y) -> bool:
