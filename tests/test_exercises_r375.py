@@ -7,6 +7,7 @@ a float16 λ told as rounding)."""
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -199,3 +200,29 @@ def test_a_float16_level_is_not_told_to_change_its_algorithm():
     report = ex.check("mip_level", R375["mip level in float16"][1])
     assert "float16's rounding" in report.failures[0].explanation
     assert "λ counts the halvings" not in str(report)
+
+
+# -- F8: the first, "a hint only", failures give no fix away ------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("fn", "hint", "fix"),
+    [(lambda dx, dy, s: _rho(dx, dy, s, max, math.log), "which log counts the halvings",
+      "λ = log2 ρ"),
+     (lambda dx, dy, s: _rho(dx, dy, s, min, math.log2), "which axis must λ follow",
+      "GL takes the longer"),
+     (lambda dx, dy, s: 2 * _rho(dx, dy, s, max, math.log2), "is an axis' length its square?",
+      "take the square root")],
+)  # fmt: skip
+def test_the_first_mip_level_failure_asks_instead_of_giving_the_fix(fn, hint, fix):
+    tries.forget_hints("mip_level")
+    try:
+        first = ex.check("mip_level", fn).failures[0].explanation
+    finally:
+        tries.spend_hints(["mip_level"])
+    assert hint in first and fix not in first, first
+
+
+def _rho(ddx, ddy, size, pick, log):
+    h, w = size
+    return log(pick(math.hypot(ddx[0] * w, ddx[1] * h), math.hypot(ddy[0] * w, ddy[1] * h)))

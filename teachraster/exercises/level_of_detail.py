@@ -267,6 +267,14 @@ HINTS = (
     # r73 07-1: a named mistake's fix as a question first
     ("; GL takes the longer axis, ρ = max(|∂/∂x|, |∂/∂y|), each axis its own length",
      ": which one length of the footprint decides whether some direction is undersampled?"),
+    # r375 F8: these fixes came with the first, "a hint only", failure
+    (re.compile(r"GL takes the longer(?: of the two| axis)? \(ρ = max\), so that no direction is "
+                r"undersampled"),
+     "which axis must λ follow so that no direction is undersampled?"),
+    (re.compile(r"that is (the natural log|log10); λ = log2 ρ"),
+     r"that is \1: which log counts the halvings of the texel size?"),
+    ("twice λ: take the square root first (or halve the log)",
+     "twice λ: is an axis' length its square?"),
 )  # fmt: skip
 
 
