@@ -4074,3 +4074,120 @@ WRONG["decal bias computing room, never testing it"] = (
     "your test for NaN did not fire",
 )
 KINDS["decal bias computing room, never testing it"] = "view units"
+# == r375: exercise 07's bilinear and mip_level slips that were told only the rule ===============
+
+
+def _bilinear_r375(*, x_wrapped=False, rows_by_fx=False):
+    """bilinear with the coordinate x = u·W − ½ wrapped into [0, W) and the texels then
+    clamped (``x_wrapped``, r375 F7), or the rows blended by x's fraction (``rows_by_fx``, F3)."""
+
+    def fn(texture, uv, wrap):
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+        if x_wrapped:
+            x, y = (
+                (x % w, y % h)
+                if wrap == "repeat"
+                else (min(max(x, 0), w - 1), min(max(y, 0), h - 1))
+            )
+        x0, y0 = math.floor(x), math.floor(y)
+        fx, fy = x - x0, y - y0
+        if x_wrapped or wrap == "clamp":
+            c = [min(max(i, 0), w - 1) for i in (x0, x0 + 1)]
+            r = [min(max(i, 0), h - 1) for i in (y0, y0 + 1)]
+        else:
+            c, r = [i % w for i in (x0, x0 + 1)], [i % h for i in (y0, y0 + 1)]
+        top = (1 - fx) * tex[r[0], c[0]] + fx * tex[r[0], c[1]]
+        bottom = (1 - fx) * tex[r[1], c[0]] + fx * tex[r[1], c[1]]
+        t = fx if rows_by_fx else fy
+        return (1 - t) * top + t * bottom
+
+    return fn
+
+
+def _mip_float16(ddx, ddy, size):
+    """GL's rule computed in float16, as a GPU's low-precision λ (r375 F4)."""
+    h, w = (np.float16(s) for s in size)
+    lx = np.hypot(np.float16(ddx[0]) * w, np.float16(ddx[1]) * h)
+    ly = np.hypot(np.float16(ddy[0]) * w, np.float16(ddy[1]) * h)
+    return np.log2(max(lx, ly))
+
+
+R375 = {
+    "bilinear with x wrapped into [0, W), the texels clamped": (
+        "bilinear", _bilinear_r375(x_wrapped=True), "you wrapped x = u·W − ½ into [0, W)",
+        "wrapped x, clamped texels"),
+    "bilinear with the rows blended by x's fraction": (
+        "bilinear", _bilinear_r375(rows_by_fx=True), "the blend between the two rows uses "
+        "x's fraction", "rows blended by x's fraction"),
+    "mip level in float16": ("mip_level", _mip_float16, "float16's rounding", "float16"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R375.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R375.items()})
+
+
+def _trilinear_r375(*, coarsest=False, half=False, q_is_len=False):
+    """trilinear with the levels counted from the coarsest (pyramid[q − d]), both levels ½ each
+    between two levels, or q taken as len(pyramid) (r375 F9: each told only the rule)."""
+
+    def fn(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q + 1 if q_is_len else q)
+        lower = math.floor(lam)
+        upper = min(lower + 1, q)
+        t = lam - lower
+        if half and 0 < t < 1:
+            t = 0.5
+        if coarsest:
+            lower, upper = q - lower, q - upper
+        a = np.asarray(bilinear(pyramid[lower], uv, wrap))
+        return (1 - t) * a + t * np.asarray(bilinear(pyramid[upper], uv, wrap))
+
+    return fn
+
+
+def _quad_r375(column_aligned: bool):
+    """Coarse derivatives with one axis of the quad aligned and the other taken from the pixel
+    itself (r375 F9: "c0 = col" was told only the rule)."""
+
+    def fn(xy, w, f, row, col):
+        xy, w, f = (np.asarray(a, float) for a in (xy, w, f))
+        (x1, y1), (x2, y2), (x3, y3) = xy
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+
+        def value(x, y):
+            lam = np.array([(x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
+                            (x3 - x) * (y1 - y) - (y3 - y) * (x1 - x),
+                            (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x)]) / area  # fmt: skip
+            mu = lam / w
+            return float(mu @ f / mu.sum())
+
+        r0 = row if column_aligned else row - row % 2
+        c0 = col - col % 2 if column_aligned else col
+        ul = value(c0 + 0.5, r0 + 0.5)
+        return value(c0 + 1.5, r0 + 0.5) - ul, value(c0 + 0.5, r0 + 1.5) - ul
+
+    return fn
+
+
+R375_F9 = {
+    "trilinear with the levels counted from the coarsest": (
+        "trilinear", _trilinear_r375(coarsest=True), "you counted the levels from the coarsest",
+        "levels counted from the coarsest"),
+    "trilinear with ½ each between two levels": (
+        "trilinear", _trilinear_r375(half=True), "you weighted the two levels ½ each",
+        "weights ½ each"),
+    "trilinear with q = len(pyramid)": (
+        "trilinear", _trilinear_r375(q_is_len=True), "q = len(pyramid) − 1 is the last level's",
+        "raised"),
+    "quad derivatives with the quad's column not aligned": (
+        "quad_derivatives", _quad_r375(column_aligned=False), "you aligned the quad's row but "
+        "not its column", "column unaligned"),
+    "quad derivatives with the quad's row not aligned": (
+        "quad_derivatives", _quad_r375(column_aligned=True), "you aligned the quad's column but "
+        "not its row", "row unaligned"),
+}  # fmt: skip
+R375.update(R375_F9)
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R375_F9.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R375_F9.items()})
