@@ -26,6 +26,7 @@ from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from .answers import as_numbers, short
 from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
+from .drawing import note_beside
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
@@ -769,22 +770,56 @@ def draw_span(ax, case, got):
                                mew=1.2, zorder=5, label="centre on a crossing")  # fmt: skip
     for name, colour in colours.items():
         artists.append(ax.add_patch(Rectangle((0, 0), 0, 0, color=colour, label=name)))
-    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    artists += _roles(ax, xy, lo, hi)
+    if got is None:  # r372 F2: the note (an exception) beside the axes, the legend below them
+        note_beside(ax)
+        artists.append(ax.legend(fontsize="x-small", loc="upper center", ncol=3,
+                                 bbox_to_anchor=(0.5, -0.3)))  # fmt: skip
+    else:
+        artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo, hi)
     top, bottom = min(float(xy[:, 1].min()), y) - 1, max(float(xy[:, 1].max()), y) + 1
-    ax.set_ylim(min(bottom, max(top, row - 6) + 14), top)  # a huge triangle: rows near this one
+    bottom = min(bottom, max(top, row - 6) + 14)  # a huge triangle: rows near this one
+    # r372 F1: a sliver 1/256 px high collapsed the axes to a strip, its y-label into the
+    # title: at least a third as many rows as columns, around the row
+    tall = max(6.0, (hi - lo) / 3)
+    if bottom - top < tall:
+        top, bottom = y - tall / 2, y + tall / 2
+    ax.set_ylim(bottom, top)
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
     ax.set_ylabel("y (px, down)", fontsize="small")
     return artists
 
 
+def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
+    """The sorted vertices' roles at the vertices in view (r372 F2: the task is about the
+    split, and no figure said which vertex is the middle one)."""
+    order = sorted(range(3), key=lambda k: float(xy[k, 1]))
+    groups: list[tuple[list[str], float, float]] = []  # vertices closer than a pixel: one label
+    for name, k in zip(("top", "middle", "bottom"), order):
+        x, y = float(xy[k, 0]), float(xy[k, 1])
+        near = next((g for g in groups if abs(g[1] - x) < 1 and abs(g[2] - y) < 1), None)
+        if near is not None:
+            near[0].append(name)
+        elif lo <= x <= hi:
+            groups.append(([name], x, y))
+    out = []
+    for names, x, y in groups:  # right of the vertex, or left of it in the window's right part
+        right = x > lo + 0.6 * (hi - lo)
+        out.append(ax.annotate(", ".join(names), (x, y), xytext=(-3 if right else 3, 3),
+                               textcoords="offset points", ha="right" if right else "left",
+                               fontsize="x-small", color="#555555", zorder=6))  # fmt: skip
+    return out
+
+
 def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
     """The columns drawn: the triangle's, at most 40 of them, around the span when the
-    triangle is wider (the wide cases are 10^12 px across)."""
+    triangle is wider (the wide cases are 10^12 px across; r372 F1: 64, so that the 60-px
+    sliver shows both ends of its edge)."""
     lo = math.floor(min(float(xy[:, 0].min()), min(columns, default=0))) - 1
     hi = math.ceil(max(float(xy[:, 0].max()), max(columns, default=0) + 1)) + 1
-    if hi - lo <= 40:
+    if hi - lo <= 64:
         return lo, hi
     centre = (min(columns) + max(columns)) // 2 if columns else lo + 20
     if not columns and cross is not None:
