@@ -45,6 +45,12 @@ PLACED = (
 
 ORDERS = ("multiply first", "divide first", "slope first")
 
+#: The range the task states (r372 T1): a crossing multiplied first is exact for vertices on
+#: the 1/256-px grid with |x|, |y| below 2^18 px (lesson 01 §4b proves and tests the bound);
+#: every case lies within it but the triangle 10^12 px wide, whose asked rows are exact in any
+#: order.
+EXACT_BELOW = 2**18
+
 
 def float_crossing(a, b, y: float, order: str = "multiply first") -> float:
     """x where the line at height ``y`` meets edge a-b, in float64, its operations in
