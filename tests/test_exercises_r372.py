@@ -192,3 +192,27 @@ def test_an_exceptions_note_is_set_beside_the_axes_with_the_legend_below():
     assert getattr(ax, NOTE_BESIDE, False)
     assert ax.get_legend().get_window_extent().y1 < ax.get_window_extent().y0
     plt.close(fig)
+
+
+def test_a_division_by_zero_outside_the_triangle_or_along_a_flat_edge_is_told_where():
+    """H1 (w37): no test of the row's range raised ZeroDivisionError on rows above the
+    triangle, told by the error alone."""
+
+    def no_row_range(xy, row):
+        y = row + 0.5
+        (x1, y1), (x2, y2), (x3, y3) = sorted(
+            (tuple(map(float, p)) for p in xy), key=lambda p: p[1]
+        )
+        if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or y2 == y3 == y:
+            return 0, 0
+        if y1 == y2 == y:
+            return math.ceil(min(x1, x2) - 0.5), math.ceil(max(x1, x2) - 0.5)
+        x_long = x1 + (y - y1) * (x3 - x1) / (y3 - y1)
+        (ax, ay), (bx, by) = ((x1, y1), (x2, y2)) if y < y2 else ((x2, y2), (x3, y3))
+        x_short = ax + (y - ay) * (bx - ax) / (by - ay)
+        xl, xr = sorted((x_long, x_short))
+        return math.ceil(xl - 0.5), math.ceil(xr - 0.5)
+
+    report = ex.check("span", no_row_range)
+    raised = [f for f in report.failures if f.kind == "raised"]
+    assert raised and all("misses the triangle" in f.explanation for f in raised)

@@ -650,6 +650,26 @@ def _edge_of(xy: np.ndarray, row: int, x: Fraction) -> str:
     return "an edge"
 
 
+def _span_raised(args, error: str) -> str:
+    """r372 H1: a ZeroDivisionError on a row whose centre line misses the triangle, or runs
+    along a horizontal edge (a height of 0), told as such: where a crossing cannot be taken."""
+    if "ZeroDivisionError" not in error:
+        return ""
+    xy, row = args
+    y = row + 0.5
+    if winding(xy) == "zero area":
+        return " (this triangle has zero area: its vertices lie on one line)"
+    if not float(xy[:, 1].min()) <= y <= float(xy[:, 1].max()):
+        return (f" (the centre line y = {num(y)} misses the triangle, whose vertices lie "
+                f"between y = {num(float(xy[:, 1].min()))} and {num(float(xy[:, 1].max()))}: "
+                "no edge crosses it, so no crossing can be computed there)")  # fmt: skip
+    kind = _horizontal_edge(xy, y)
+    if kind:
+        return (f" (the centre line y = {num(y)} runs along a horizontal {kind} edge, whose "
+                "height is 0: a crossing with it would be 0/0)")  # fmt: skip
+    return ""
+
+
 def _horizontal_fits(args, expected, got) -> bool:
     xy, row = args
     return bool(_horizontal_edge(xy, row + 0.5)) and bool(got) != bool(expected)
@@ -866,7 +886,7 @@ def _changes(gives):
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
     _mistakes(), answers=(PackageAnswer(rasterize),),
-    draw=draw_span, constant=_constant_span, hints=(
+    draw=draw_span, constant=_constant_span, raised_words=_span_raised, hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
          "at or right of x_l?"),
