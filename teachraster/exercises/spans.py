@@ -711,12 +711,16 @@ def _end_number(args, expected, got) -> float | None:
 def _ends_words(args, expected, got) -> str:
     """Which end is off (r355 S3: "one end" left the student to work out which)."""
     end, stop = _end_off(expected, got), max(expected) + 1
+    xy, row = args
+    cross = crossings(xy, Fraction(2 * row + 1, 2))  # r372 M3: the crossing, not the rule alone
+    xl, xr = (f" = {_frac(x)}" for x in cross) if cross is not None else ("", "")
     if end == "first":
         return (f"your first is one column too far right: column {min(expected)}, whose "
-                "centre lies at or right of x_l, is the first covered one")  # fmt: skip
+                f"centre lies at or right of x_l{xl}, is the first covered one")  # fmt: skip
     side = "right" if end == "stop right" else "left"
     return (f"your stop is one column too far {side}: stop is the first column *not* covered, "
-            f"here {stop} (your first is right)")  # fmt: skip
+            f"here {stop}, the first whose centre lies at or right of x_r{xr} (your first is "
+            "right)")  # fmt: skip
 
 
 SYMPTOMS = (
