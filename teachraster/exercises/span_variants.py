@@ -217,8 +217,8 @@ WORDS = {
     "(y_b − y_a)/(x_b − x_a), the edge's slope dy/dx; along the edge x changes by x_b − x_a "
     "while y changes by y_b − y_a",
     "long edge sign": "your crossing of the long edge is off: you subtracted the step from x1 "
-    "(x1 − …) where the edge runs from x1 towards x3, so the step (y − y1)·(x3 − x1)/(y3 − y1) "
-    "is added to x1",
+    "(x1 − …) where the edge runs from x1 towards x3: going down by y − y1, x moves by that "
+    "share of x3 − x1, added to x1",
     "side by given winding": _side_words(
         "by the winding of the vertices as given (their order before the sort): the sort "
         "reorders them, so the winding says nothing about the sorted roles"
