@@ -143,8 +143,8 @@ def test_the_task_states_the_range_and_every_case_lies_in_it():
     """T1: exact for every snapped triangle in the range, the order of the crossing's
     operations the student's to choose and justify."""
     task = _cells()[2]
-    assert span_variants.EXACT_BELOW == 2**18
-    assert "|x|, |y| < 2^18 px" in task and f"{2**18:,}".replace(",", " ") in task
+    assert span_variants.EXACT_BELOW == 2**17
+    assert "|x|, |y| < 2^17 px" in task and f"({2**17:,} px)".replace(",", " ") in task
     assert "lesson 01 §4b" in task and "negative ones too" in task
     for label, (xy, _), _ in spans.span_cases():
         if "10^12" not in label:
@@ -216,3 +216,27 @@ def test_a_division_by_zero_outside_the_triangle_or_along_a_flat_edge_is_told_wh
     report = ex.check("span", no_row_range)
     raised = [f for f in report.failures if f.kind == "raised"]
     assert raised and all("misses the triangle" in f.explanation for f in raised)
+
+
+def test_the_teachers_solution_is_exact_across_the_stated_range():
+    """T1: the span the task asks for is exact for every snapped triangle with |x|, |y| below
+    EXACT_BELOW: random ones on the 1/256-px grid, small near the range's corners (vertices on
+    centres too, where ties are frequent) and large across it, against the exact crossings."""
+    span = _teacher()
+    rng = np.random.default_rng(372)
+    limit = span_variants.EXACT_BELOW
+    checked = 0
+    for k in range(240):
+        if k % 3 == 2:  # across the range
+            xy = rng.uniform(-limit + 1, limit - 1, (3, 2))
+        else:  # 90 px near a random corner
+            corner = rng.choice([-1, 1], 2) * (limit - 100)
+            xy = corner + rng.uniform(-90, 90, (3, 2))
+        xy = np.floor(xy) + 0.5 if k % 2 else np.round(xy * 256) / 256
+        assert np.abs(xy).max() < limit
+        lo, hi = math.floor(xy[:, 1].min()) - 1, math.ceil(xy[:, 1].max()) + 1
+        for row in rng.integers(lo, hi, 12):
+            got = set(range(*span(xy, int(row))))
+            assert got == spans.exact_columns(xy, int(row)), (xy.tolist(), int(row))
+            checked += 1
+    assert checked == 240 * 12

@@ -45,11 +45,12 @@ PLACED = (
 
 ORDERS = ("multiply first", "divide first", "slope first")
 
-#: The range the task states (r372 T1): a crossing multiplied first is exact for vertices on
-#: the 1/256-px grid with |x|, |y| below 2^18 px (lesson 01 §4b proves and tests the bound);
-#: every case lies within it but the triangle 10^12 px wide, whose asked rows are exact in any
-#: order.
-EXACT_BELOW = 2**18
+#: The range the task states (r372 T1): vertices on the 1/256-px grid with |x|, |y| below
+#: 2^17 px. A crossing multiplied first is exact there: its differences are multiples of 2^-8
+#: below 2^18 px, their product a multiple of 2^-16 below 2^36 px², 52 bits, exact in float64;
+#: lesson 01 §4b gives the rest of the proof (and 2^18 px for its own part). Every case lies
+#: within it but the triangle 10^12 px wide, whose asked rows are exact in any order.
+EXACT_BELOW = 2**17
 
 
 def float_crossing(a, b, y: float, order: str = "multiply first") -> float:
