@@ -17,6 +17,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
+import re
 from fractions import Fraction
 from functools import cache
 
@@ -900,6 +901,9 @@ SPAN = Exercise(
         ("so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉", "so count the columns whose centres lie between "
          "them, not the integers nearest to them"),
         (": ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉", ""),
+        # r372: the crossings a student's ends stand for are the rounding itself
+        (re.compile(r"stands for an (x_[lr]) above \S+ and at most \S+, but \1 is"),
+         r"is not what \1 gives: \1 is"),
     ),
     match=_match,
 )  # fmt: skip
