@@ -4191,3 +4191,107 @@ R375_F9 = {
 R375.update(R375_F9)
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R375_F9.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R375_F9.items()})
+# == r372 (fixex02z, exercise 2, span): wrongly passed, misnamed and half-named students ========
+
+
+def _span_r372(order="multiply first", ceil=math.ceil, clip=False, side="u4", upper_dy=None,
+               inverted=False, long_sign=1, snap=False, key=1, lower=None, upper=None):  # fmt: skip
+    """The teacher's span (sort by y, the split, the side by u4, the top-left rounding) but
+    for one knob: the crossing's ``order`` (lesson 01's divide first, or the slope first),
+    ``ceil`` (C's int() for it), a ``clip`` at column 0, the ``side`` judged by the winding
+    as "given" or by the "short" edge's crossing (or "flipped"), the upper short edge over
+    ``upper_dy(y1, y2, y3)``, the short edge's slope ``inverted``, the long edge's step
+    subtracted (``long_sign`` −1), the vertices moved to pixel centres (``snap``), sorted by
+    coordinate ``key``, the long edge again below the split (``lower="long"``), the lower
+    short edge above it (``upper="lower"``)."""
+
+    def cross(a, b, y):
+        if order == "divide first":
+            return (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) + a[0]
+        if order == "slope first":
+            return a[0] + (y - a[1]) * ((b[0] - a[0]) / (b[1] - a[1]))
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+    def span(xy, row):
+        y = row + 0.5
+        pts = [tuple(math.floor(c) + 0.5 if snap else float(c) for c in p) for p in xy]
+        (x1, y1), (x2, y2), (x3, y3) = v = sorted(pts, key=lambda p: p[key])
+        if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not y1 <= y <= y3:
+            return 0, 0
+        if y2 == y3 == y:
+            return 0, 0
+        if y1 == y2 == y:
+            xl, xr = min(x1, x2), max(x1, x2)
+        else:
+            x_long = x1 + long_sign * (cross(v[0], v[2], y) - x1)
+            a, b = (v[0], v[1]) if y < y2 else (v[1], v[2])
+            if upper == "lower" and y2 != y3:
+                a, b = v[1], v[2]
+            if lower == "long" and y >= y2:
+                a, b = v[0], v[2]
+            x_short = cross(a, b, y)
+            if inverted:
+                x_short = (
+                    a[0] + (y - a[1]) * (b[1] - a[1]) / (b[0] - a[0]) if b[0] != a[0] else a[0]
+                )
+            if upper_dy is not None and y < y2:
+                x_short = x1 + (y - y1) * (x2 - x1) / upper_dy(y1, y2, y3)
+            long_is_left = x2 > cross(v[0], v[2], y2)
+            if side == "given":
+                (ax, ay), (bx, by), (cx, cy) = pts
+                long_is_left = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) > 0
+            elif side == "short":
+                long_is_left = x2 > x_short
+            elif side == "flipped":
+                long_is_left = not long_is_left
+            xl, xr = (x_long, x_short) if long_is_left else (x_short, x_long)
+        first, stop = ceil(xl - 0.5), ceil(xr - 0.5)
+        return (max(first, 0), max(stop, 0)) if clip else (first, stop)
+
+    return span
+
+
+def _int_ceil(t):
+    return int(t) if t == int(t) else int(t) + 1
+
+
+R372 = {
+    "span, crossing divided first (lesson 01's crossing)": (
+        "span", _span_r372(order="divide first"), "your crossing divides first",
+        "divide first"),
+    "span, crossing by the slope first": (
+        "span", _span_r372(order="slope first"), "the slope (b_x − a_x)/(b_y − a_y) rounds",
+        "slope first"),
+    "span, int() for floor": ("span", _span_r372(ceil=_int_ceil), "int() truncates",
+                              "int() for floor"),
+    "span, clipped at column 0": ("span", _span_r372(clip=True), "clipped the span at column 0",
+                                  "clip at 0"),
+    "span, round(x − ½)": ("span", _span_r372(ceil=round), "round(2.3) is 2", "round(x − ½)"),
+    "span, side by the winding as given": (
+        "span", _span_r372(side="given"), "by the winding of the vertices as given",
+        "side by given winding"),
+    "span, side by the short edge's crossing": (
+        "span", _span_r372(side="short"), "(u4 = x_short)", "side by the short edge"),
+    "span, side test flipped": ("span", _span_r372(side="flipped"),
+                                "you judged the middle vertex's side of the long edge the wrong",
+                                "x_l and x_r swapped"),
+    "span, upper edge over y3 − y1": (
+        "span", _span_r372(upper_dy=lambda a, b, c: c - a), "not by that edge's own height y2 − y1",
+        "upper denominator"),
+    "span, short edge's slope inverted": ("span", _span_r372(inverted=True),
+                                          "(y_b − y_a)/(x_b − x_a)", "slope inverted"),
+    "span, long edge's step subtracted": ("span", _span_r372(long_sign=-1),
+                                          "you subtracted the step from x1", "long edge sign"),
+    "span, vertices moved to centres": ("span", _span_r372(snap=True),
+                                        "you moved the vertices to pixel centres",
+                                        "vertices on centres"),
+    "span, vertices sorted by x": ("span", _span_r372(key=0), "ZeroDivisionError", "raised"),
+    "span, the long edge again below the split": (
+        "span", _span_r372(lower="long"), "below the middle vertex you took the long edge",
+        "long edge below the split"),
+    "span, the lower edge above the split too": (
+        "span", _span_r372(upper="lower"), "above the middle vertex too",
+        "lower edge above the split"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R372.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R372.items()})

@@ -622,6 +622,7 @@ class _Fit:
     agrees: int  # answered cases it agrees with (passing ones included)
     whole: bool  # it agrees with every answered case it speaks about
     spoken: int = 0  # answered cases it says something about
+    contradicts: bool = False  # it gives another answer on a passing case
 
     @property
     def coincidence(self) -> bool:
@@ -817,7 +818,7 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
             agrees = len(hits) + sum(1 for s in said if s)
             whole = False not in verdicts.values() and False not in said
             spoken = sum(v is not None for v in [*verdicts.values(), *said])
-            return _Fit(m, order, hits, agrees, whole, spoken)
+            return _Fit(m, order, hits, agrees, whole, spoken, False in said)
 
         fit = run_checker(run, None)
         if fit is not None:
@@ -961,7 +962,8 @@ def diagnose(
         # rounding to N decimals shows only in an answer with a fraction: whole numbers
         # everywhere are the exercise's own "whole numbers" (r22 D-6's faint pixel, 0)
         fits = [f for f in fits if f.mistake is not rounded]
-    fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
+    fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)
+            and not (f.mistake.consistent and f.contradicts)]  # fmt: skip
     explained = run_checker(lambda: _explained(fits, failing), set())
     for f in fits:  # r164 F1: float32 is not chosen where a mistake of the table is the cause
         if f.mistake.gives is None and blames_precision(f.mistake.kind):
