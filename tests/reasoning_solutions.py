@@ -55,9 +55,10 @@ def reverse_z_gap(z, near, far):
 
 
 def depth_setup(z, gap, far, nearest):
-    n = safe_near(z, gap, far, 24)  # 5.1: the smallest unorm24 near plane for the gap
-    if n <= nearest:  # allowed: unorm24 (depth and stencil in 32 bits a pixel)
-        return "unorm24", n, gap  # at that n unorm24 resolves the gap itself
+    if safe_near(z, gap, far, 24) <= nearest:  # allowed: unorm24 (depth, stencil in 32 bits)
+        # at the farthest allowed near plane: Δz ∝ 1/n, the finest unorm24 gives this scene
+        step = 1 / (2**24 - 1)
+        return "unorm24", nearest, step * (far - nearest) * z * z / (far * nearest)
     dz = reverse_z_gap(z, nearest, far)  # 5.2: hardly depends on the near plane
     return ("reverse-z" if dz <= gap else "neither"), nearest, dz
 

@@ -3978,6 +3978,325 @@ KINDS.update({
 })  # fmt: skip
 
 
+# r374: exercise 05's variants the reader found misnamed or half-named (tests/test_exercises_r374.py)
+def _bias_nan(z, tilt, pixel, near, far, bits, reverse, clear):
+    return np.nan
+
+
+def _bias_room_in_view_units(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    if r + m > clear - m:  # the object's distance, not its window-depth difference
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+def _bias_per_unit_own_test(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z  # no `* pixel`
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    if r + m > z_win(z) - z_win(z - clear) - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+def _setup_by(unorm_when, bits=24, dz=None):
+    """depth_setup choosing unorm24 (at 5.1's n, the gap quoted) where ``unorm_when(n,
+    nearest)``, with 5.1 run for ``bits``; else reverse-Z at nearest with ``dz(z, near, far)``
+    (5.2's by default), "neither" where that exceeds the gap."""
+
+    def depth_setup(z, gap, far, nearest):
+        n = _rs.safe_near(z, gap, far, bits)
+        if unorm_when(n, nearest):
+            return "unorm24", n, gap
+        got = (dz or _rs.reverse_z_gap)(z, nearest, far)
+        return ("reverse-z" if got <= gap else "neither"), nearest, got
+
+    return depth_setup
+
+
+def _gap_one_minus(power):
+    def reverse_z_gap(z, near, far):
+        d = (near / z - near / far) / (1 - near / far)
+        return float(np.spacing(np.float32(d))) * z * z / near * (1 - near / far) ** power
+
+    return reverse_z_gap
+
+
+R374 = {
+    "decal bias returning NaN always": (
+        "decal_bias", _bias_nan, "your function returns NaN on every case", "nan"),
+    "decal bias with room taken as clear itself": (
+        "decal_bias", _bias_room_in_view_units, "compares with `clear` itself", "view units"),
+    "decal bias per unit of x/z, own NaN test": (
+        "decal_bias", _bias_per_unit_own_test, "the `* pixel` is missing",
+        "per unit, own test"),
+    "depth set-up with the comparison flipped": (
+        "depth_setup", _setup_by(lambda n, nearest: n >= nearest),
+        "your comparison of 5.1's near plane with `nearest` is flipped", "comparison flipped"),
+    "depth set-up with 5.1 for 16 bits": (
+        "depth_setup", _setup_by(lambda n, nearest: n <= nearest, bits=16),
+        "5.1's near plane for 16 bits", "16 bits"),
+    "depth set-up quoting reverse-Z's coarse bound": (
+        "depth_setup", _setup_by(lambda n, nearest: n <= nearest,
+                                 dz=lambda z, near, far: 2.0**-23 * z * (1 - z / far)),
+        "is a bound, 2^-23 of z (1 − z/f)", "reverse-Z coarse bound"),
+    "gap with 1 − n/f twice": (
+        "reverse_z_gap", _gap_one_minus(2), "the factor 1 − n/f twice", "1 - n/f twice"),
+    "gap with 1 − n/f on the wrong side": (
+        "reverse_z_gap", _gap_one_minus(-1), "1 − n/f on the wrong side", "1 - n/f inverted"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R374.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R374.items()})
+# r374 F3: view depth's slope (the code reads `pixel`) is named as such, not "per unit"
+KINDS["decal bias from view depth's slope, own NaN test"] = "view slope, own test"
+# r374 F2/F3: the checker tells these slips apart by what the code reads (`pixel`, `clear`):
+# the per-unit fixture above reads `pixel` (m / pixel), which a slope without `* pixel` never
+# does, and the clear-ignoring one computes room from `clear`, as a test against `clear` in
+# view units does; each is now the code such a student writes, and the latter named for both
+WRONG["decal bias per unit, own NaN test"] = (
+    "decal_bias",
+    _bias_per_unit_own_test,
+    "the `* pixel` is missing",
+)
+
+
+def _bias_clear_unread(z, tilt, pixel, near, far, bits, reverse, clear):
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    return (r + m) if reverse else -(r + m)
+
+
+WRONG["decal bias ignoring clear"] = ("decal_bias", _bias_clear_unread, "ignores `clear`")
+WRONG["decal bias computing room, never testing it"] = (
+    "decal_bias",
+    _bias_with("clear ignored"),
+    "your test for NaN did not fire",
+)
+KINDS["decal bias computing room, never testing it"] = "view units"
+# == r375: exercise 07's bilinear and mip_level slips that were told only the rule ===============
+
+
+def _bilinear_r375(*, x_wrapped=False, rows_by_fx=False):
+    """bilinear with the coordinate x = u·W − ½ wrapped into [0, W) and the texels then
+    clamped (``x_wrapped``, r375 F7), or the rows blended by x's fraction (``rows_by_fx``, F3)."""
+
+    def fn(texture, uv, wrap):
+        tex = np.asarray(texture, dtype=float)
+        h, w = tex.shape[:2]
+        x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+        if x_wrapped:
+            x, y = (
+                (x % w, y % h)
+                if wrap == "repeat"
+                else (min(max(x, 0), w - 1), min(max(y, 0), h - 1))
+            )
+        x0, y0 = math.floor(x), math.floor(y)
+        fx, fy = x - x0, y - y0
+        if x_wrapped or wrap == "clamp":
+            c = [min(max(i, 0), w - 1) for i in (x0, x0 + 1)]
+            r = [min(max(i, 0), h - 1) for i in (y0, y0 + 1)]
+        else:
+            c, r = [i % w for i in (x0, x0 + 1)], [i % h for i in (y0, y0 + 1)]
+        top = (1 - fx) * tex[r[0], c[0]] + fx * tex[r[0], c[1]]
+        bottom = (1 - fx) * tex[r[1], c[0]] + fx * tex[r[1], c[1]]
+        t = fx if rows_by_fx else fy
+        return (1 - t) * top + t * bottom
+
+    return fn
+
+
+def _mip_float16(ddx, ddy, size):
+    """GL's rule computed in float16, as a GPU's low-precision λ (r375 F4)."""
+    h, w = (np.float16(s) for s in size)
+    lx = np.hypot(np.float16(ddx[0]) * w, np.float16(ddx[1]) * h)
+    ly = np.hypot(np.float16(ddy[0]) * w, np.float16(ddy[1]) * h)
+    return np.log2(max(lx, ly))
+
+
+R375 = {
+    "bilinear with x wrapped into [0, W), the texels clamped": (
+        "bilinear", _bilinear_r375(x_wrapped=True), "you wrapped x = u·W − ½ into [0, W)",
+        "wrapped x, clamped texels"),
+    "bilinear with the rows blended by x's fraction": (
+        "bilinear", _bilinear_r375(rows_by_fx=True), "the blend between the two rows uses "
+        "x's fraction", "rows blended by x's fraction"),
+    "mip level in float16": ("mip_level", _mip_float16, "float16's rounding", "float16"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R375.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R375.items()})
+
+
+def _trilinear_r375(*, coarsest=False, half=False, q_is_len=False):
+    """trilinear with the levels counted from the coarsest (pyramid[q − d]), both levels ½ each
+    between two levels, or q taken as len(pyramid) (r375 F9: each told only the rule)."""
+
+    def fn(pyramid, uv, lod, wrap="repeat"):
+        q = len(pyramid) - 1
+        lam = min(max(lod, 0.0), q + 1 if q_is_len else q)
+        lower = math.floor(lam)
+        upper = min(lower + 1, q)
+        t = lam - lower
+        if half and 0 < t < 1:
+            t = 0.5
+        if coarsest:
+            lower, upper = q - lower, q - upper
+        a = np.asarray(bilinear(pyramid[lower], uv, wrap))
+        return (1 - t) * a + t * np.asarray(bilinear(pyramid[upper], uv, wrap))
+
+    return fn
+
+
+def _quad_r375(column_aligned: bool):
+    """Coarse derivatives with one axis of the quad aligned and the other taken from the pixel
+    itself (r375 F9: "c0 = col" was told only the rule)."""
+
+    def fn(xy, w, f, row, col):
+        xy, w, f = (np.asarray(a, float) for a in (xy, w, f))
+        (x1, y1), (x2, y2), (x3, y3) = xy
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+
+        def value(x, y):
+            lam = np.array([(x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
+                            (x3 - x) * (y1 - y) - (y3 - y) * (x1 - x),
+                            (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x)]) / area  # fmt: skip
+            mu = lam / w
+            return float(mu @ f / mu.sum())
+
+        r0 = row if column_aligned else row - row % 2
+        c0 = col - col % 2 if column_aligned else col
+        ul = value(c0 + 0.5, r0 + 0.5)
+        return value(c0 + 1.5, r0 + 0.5) - ul, value(c0 + 0.5, r0 + 1.5) - ul
+
+    return fn
+
+
+R375_F9 = {
+    "trilinear with the levels counted from the coarsest": (
+        "trilinear", _trilinear_r375(coarsest=True), "you counted the levels from the coarsest",
+        "levels counted from the coarsest"),
+    "trilinear with ½ each between two levels": (
+        "trilinear", _trilinear_r375(half=True), "you weighted the two levels ½ each",
+        "weights ½ each"),
+    "trilinear with q = len(pyramid)": (
+        "trilinear", _trilinear_r375(q_is_len=True), "q = len(pyramid) − 1 is the last level's",
+        "raised"),
+    "quad derivatives with the quad's column not aligned": (
+        "quad_derivatives", _quad_r375(column_aligned=False), "you aligned the quad's row but "
+        "not its column", "column unaligned"),
+    "quad derivatives with the quad's row not aligned": (
+        "quad_derivatives", _quad_r375(column_aligned=True), "you aligned the quad's column but "
+        "not its row", "row unaligned"),
+}  # fmt: skip
+R375.update(R375_F9)
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R375_F9.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R375_F9.items()})
+# == r372 (fixex02z, exercise 2, span): wrongly passed, misnamed and half-named students ========
+
+
+def _span_r372(order="multiply first", ceil=math.ceil, clip=False, side="u4", upper_dy=None,
+               inverted=False, long_sign=1, snap=False, key=1, lower=None, upper=None):  # fmt: skip
+    """The teacher's span (sort by y, the split, the side by u4, the top-left rounding) but
+    for one knob: the crossing's ``order`` (lesson 01's divide first, or the slope first),
+    ``ceil`` (C's int() for it), a ``clip`` at column 0, the ``side`` judged by the winding
+    as "given" or by the "short" edge's crossing (or "flipped"), the upper short edge over
+    ``upper_dy(y1, y2, y3)``, the short edge's slope ``inverted``, the long edge's step
+    subtracted (``long_sign`` −1), the vertices moved to pixel centres (``snap``), sorted by
+    coordinate ``key``, the long edge again below the split (``lower="long"``), the lower
+    short edge above it (``upper="lower"``)."""
+
+    def cross(a, b, y):
+        if order == "divide first":
+            return (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) + a[0]
+        if order == "slope first":
+            return a[0] + (y - a[1]) * ((b[0] - a[0]) / (b[1] - a[1]))
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+    def span(xy, row):
+        y = row + 0.5
+        pts = [tuple(math.floor(c) + 0.5 if snap else float(c) for c in p) for p in xy]
+        (x1, y1), (x2, y2), (x3, y3) = v = sorted(pts, key=lambda p: p[key])
+        if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not y1 <= y <= y3:
+            return 0, 0
+        if y2 == y3 == y:
+            return 0, 0
+        if y1 == y2 == y:
+            xl, xr = min(x1, x2), max(x1, x2)
+        else:
+            x_long = x1 + long_sign * (cross(v[0], v[2], y) - x1)
+            a, b = (v[0], v[1]) if y < y2 else (v[1], v[2])
+            if upper == "lower" and y2 != y3:
+                a, b = v[1], v[2]
+            if lower == "long" and y >= y2:
+                a, b = v[0], v[2]
+            x_short = cross(a, b, y)
+            if inverted:
+                x_short = (
+                    a[0] + (y - a[1]) * (b[1] - a[1]) / (b[0] - a[0]) if b[0] != a[0] else a[0]
+                )
+            if upper_dy is not None and y < y2:
+                x_short = x1 + (y - y1) * (x2 - x1) / upper_dy(y1, y2, y3)
+            long_is_left = x2 > cross(v[0], v[2], y2)
+            if side == "given":
+                (ax, ay), (bx, by), (cx, cy) = pts
+                long_is_left = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) > 0
+            elif side == "short":
+                long_is_left = x2 > x_short
+            elif side == "flipped":
+                long_is_left = not long_is_left
+            xl, xr = (x_long, x_short) if long_is_left else (x_short, x_long)
+        first, stop = ceil(xl - 0.5), ceil(xr - 0.5)
+        return (max(first, 0), max(stop, 0)) if clip else (first, stop)
+
+    return span
+
+
+def _int_ceil(t):
+    return int(t) if t == int(t) else int(t) + 1
+
+
+R372 = {
+    "span, crossing divided first (lesson 01's crossing)": (
+        "span", _span_r372(order="divide first"), "your crossing divides first",
+        "divide first"),
+    "span, crossing by the slope first": (
+        "span", _span_r372(order="slope first"), "the slope (b_x − a_x)/(b_y − a_y) rounds",
+        "slope first"),
+    "span, int() for floor": ("span", _span_r372(ceil=_int_ceil), "int() truncates",
+                              "int() for floor"),
+    "span, clipped at column 0": ("span", _span_r372(clip=True), "clipped the span at column 0",
+                                  "clip at 0"),
+    "span, round(x − ½)": ("span", _span_r372(ceil=round), "round(2.3) is 2", "round(x − ½)"),
+    "span, side by the winding as given": (
+        "span", _span_r372(side="given"), "by the winding of the vertices as given",
+        "side by given winding"),
+    "span, side by the short edge's crossing": (
+        "span", _span_r372(side="short"), "(u4 = x_short)", "side by the short edge"),
+    "span, side test flipped": ("span", _span_r372(side="flipped"),
+                                "you judged the middle vertex's side of the long edge the wrong",
+                                "x_l and x_r swapped"),
+    "span, upper edge over y3 − y1": (
+        "span", _span_r372(upper_dy=lambda a, b, c: c - a), "not by that edge's own height y2 − y1",
+        "upper denominator"),
+    "span, short edge's slope inverted": ("span", _span_r372(inverted=True),
+                                          "(y_b − y_a)/(x_b − x_a)", "slope inverted"),
+    "span, long edge's step subtracted": ("span", _span_r372(long_sign=-1),
+                                          "you subtracted the step from x1", "long edge sign"),
+    "span, vertices moved to centres": ("span", _span_r372(snap=True),
+                                        "you moved the vertices to pixel centres",
+                                        "vertices on centres"),
+    "span, vertices sorted by x": ("span", _span_r372(key=0), "ZeroDivisionError", "raised"),
+    "span, the long edge again below the split": (
+        "span", _span_r372(lower="long"), "below the middle vertex you took the long edge",
+        "long edge below the split"),
+    "span, the lower edge above the split too": (
+        "span", _span_r372(upper="lower"), "above the middle vertex too",
+        "lower edge above the split"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R372.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R372.items()})
+
+
 # -- r373: exercise 10's robust_fill, mistakes a reader found misnamed or passing ------------
 def _fill_r373(round_xy=None, eps=None, rows=0, thin=0.0, nan=False, tie_as_given=False,
                any_flat=False, absolute=False, int32=False):  # fmt: skip

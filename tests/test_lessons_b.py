@@ -49,7 +49,12 @@ def test_06_quake_mean_versus_max_and_the_cost_model():
     assert (ns.gpu_pipe, gpu["perspective"], ns.gpu_serial, ns.gpu_unhidden) == (6, 8, 13, 2)
     said = " ".join(ns.PRICE_TEXT.split())
     assert "at both, the divide is most" not in said
-    assert "At the Pentium's the divide is most of perspective-correct's cost" in said
+    # r378 S3: "At the Pentium's prices", not "At the Pentium's"; r378 S2: the +29% divides'
+    # cycles at N = 32 are no longer told (the two printed lines say how many more)
+    assert "At the Pentium's prices the divide is most of perspective-correct's cost" in said
+    assert "At the GPU's prices the reciprocal runs beside" in said
+    assert "At the Pentium's the" not in said and "Pentium cycles per pixel" not in said
+    assert "a little more often than $1/N$ (the last two lines)" in said
     assert "it adds only the 2 cycles its 8 exceed their 6" in said
     assert "would cost 13, not 8" in said
     assert "subdivision saves less" in said
@@ -594,7 +599,8 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     front = " ".join(ns.FRONT_TEXT.split())
     assert "costs at least as much as the exact divide when" in front
     assert "costs more than it" not in front
-    assert "(the same at $d = 3$, 10 cycles each, more below)" in front
+    # r378 S2: the tie's 10 cycles each are printed ("at d = 3 both cost 10"), not retold
+    assert "only when $d \\le 3$: at $k = 2$ the front keeps its order" in front
     price = next(c for c in cells if "q_price = PredictOrder(" in c)
     ask, why = price.split("explain=")
     assert "where N = 2" not in ask and "the point is" not in ask
@@ -740,8 +746,9 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     text = " ".join(ns.FRONT_TEXT.split())
     assert "the front keeps its order at every price and loses only $N = 2$" in text
     assert "not the front" not in text
-    assert 'off it at $d = 1$ and $d = 2$ (their lines end "N=4 -> perspective")' in text
-    assert "on it again at $d = 8, 17$ and 128" in text
+    # r378 S2: the lines' ends and the prices where N = 2 is back are printed, not retold
+    assert 'off it at $d = 1$ and $d = 2$ (the lines "divide = ...")' in text
+    assert "on it again at" not in text and "the slider stops either side" not in text
     # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
     assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
     # r228: at the Pentium's prices, for 4 pixels "more per pixel than the divide itself"
@@ -854,7 +861,10 @@ def test_06_review_r22_drift_setup_holds_and_wording():
     for printed in ("DivideCostExplorer(interp_rows)", "max / mean error: ",
                     "def draw_checks("):  # fmt: skip
         cell = next(c for c in cells if printed in c)
-        assert cell.startswith("q_quake.hold()"), printed
+        # r378 S5: the widget cell, unfolded, begins with what the student does; its holds
+        # come before anything it shows
+        first = cell if printed != "DivideCostExplorer(interp_rows)" else cell.split("\n", 2)[2]
+        assert first.startswith("q_quake.hold()"), printed
     # review r53 06-8: what says or draws that linear depth moves the crossing waits for q_depth
     for shown in ("CROSSING_TEXT = (", 'charts = [("depth"'):
         assert next(c for c in cells if shown in c).startswith("q_depth.hold()"), shown
@@ -5196,7 +5206,9 @@ def test_06_review_r243_fig2_reverse_z_in_unorm24_changes_nothing():
     # r276 F1: Vulkan's D32_SFLOAT_S8_UINT leaves the 24 bits of padding optional: 40, printed
     assert ns.float32_s8_least == 40 and "in Vulkan's D32_SFLOAT_S8_UINT at least 40" in printed
     assert "makes the padding optional (at least" in flat
-    assert '"{float32_s8_least}), and OpenGL lets an implementation' in flat
+    # r378 S4: "the last line" points at the Direct3D and Vulkan formats it prints, not at GL
+    assert '"{float32_s8_least}; the last line), and OpenGL lets an implementation' in flat
+    assert "separate planes (lesson 05b §2). And" in flat
     assert "`glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)`" in flat
     assert "reverse-Z moves float32 off it" in " ".join(ns.CHART_TEXT.split())
 
@@ -5284,10 +5296,14 @@ def test_06_review_r243_s1_to_s4_summary_and_pointers_at_held_output():
     assert ("the table's bits: precision kept, no sign counted (fixed8/fixed4: int64's 63\n"
             "  and its sign, 64 with it") in printed  # fmt: skip
     # S2: Markdown that names a held table or chart says when it is shown
-    for heading, held in (("## 3. Cracks", "q_bits"), ("## 4. Fill", "q_fill"),
-                          ("## 6. Error against cost", "q_depth")):  # fmt: skip
+    # r378 S1: in the question's words, not its variable's (the student never sees q_bits)
+    for heading, held in (("## 3. Cracks", "its question"), ("## 4. Fill", "the question below"),
+                          ("## 6. Error against cost", "§5's question")):  # fmt: skip
         text = " ".join(next(c for c in cells if c.startswith(heading)).split())
         assert f"shown once {held} is answered)" in text, heading
+    import re
+
+    assert not re.search(r"\bq_[a-z]+\b", md)  # cells 4, 15, 22, 26, 36 and 44 named them
     for gone in ("gaps 0 and double 0 for every variant (for", "the table's odd one",
                  "The table's `add` column", "bits each occupies per sample, below,"):  # fmt: skip
         assert gone not in md, gone
@@ -6206,8 +6222,13 @@ def test_06_one_span_explorer_and_q_span():
     assert ids.index("c05") < ids.index("spantext") < ids.index("q06span")
     assert ids.index("q06span") < ids.index("spanexplorer") < ids.index("spancuts")
     assert ids.index("spancuts") < ids.index("yourturn")
-    for held in ("spanexplorer", "spancuts"):
-        assert cells[held].startswith("q_span.hold()")
+    assert cells["spancuts"].startswith("q_span.hold()")
+    # r378 S5: the widget cell is not folded: its first lines say what to do, then the hold,
+    # before anything it shows
+    assert cells["spanexplorer"].startswith("# One span: drag N and r.")
+    shown = cells["spanexplorer"].split("q_span.hold()\n", 1)
+    assert len(shown) == 2 and "span_explorer = SpanSubdivisionExplorer" in shown[1]
+    assert "q_span" not in shown[0] and "span_explorer" not in shown[0]
     assert nb["cells"][ids.index("spancuts")]["metadata"]["jupyter"]["source_hidden"]
     # the explorer starts at r = 10, a slider stop, its last piece near the floor's steepest
     assert f"SpanSubdivisionExplorer(16, {ns.span_r[0]:g})" in cells["spanexplorer"]
@@ -6228,6 +6249,13 @@ def test_06_one_span_explorer_and_q_span():
     assert 2.2 < ns.cut100 < 3.5 and "span_choices" not in cells["q06span"]
     assert "answer=cut100" in cells["q06span"] and "tolerance=SPAN_TOLERANCE" in cells["q06span"]
     assert abs(4 - ns.cut100) > ns.SPAN_TOLERANCE and abs(3 - ns.cut100) > ns.SPAN_TOLERANCE
+    # r378 P1: no cut printed before the question lies within the tolerance: the floor's
+    # (2.7 to 3.7 under its chart, shown once q_quake is checked) and r = 10's (after it)
+    assert all(abs(c - ns.cut100) > ns.SPAN_TOLERANCE for c in [*ns.px_cut, *ns.span_cut.values()]
+               if c != ns.cut100)  # fmt: skip
+    assert abs(round(min(ns.px_cut), 1) - ns.cut100) > ns.SPAN_TOLERANCE
+    before = "".join(cells[i] for i in ids[: ids.index("q06span")] if i)
+    assert "cut_by.items()" not in before and "cut_by[32]:.2f" not in before
     assert f"(within ± {ns.SPAN_TOLERANCE:g} counts as right)" in asked
     assert 3.0 < ns.span_cut[ns.span_r[0]] < 3.5
     # the explanation's worst piece is the span's last, at both N; the floor's numbers
@@ -6236,7 +6264,7 @@ def test_06_one_span_explorer_and_q_span():
     assert "hundredfold" not in said and "The floor's worst pixel lies on such pieces" not in said
     assert f"fell {ns.cut_by[16]:.2f} times from N = 16 to 8" in said
     assert f"least, {ns.cut_by[32]:.2f}, from 32 to 16" in said
-    assert f"ρ = {ns.steepest[32]['rho']:.2f}" in said
+    assert f"ρ = {ns.steepest[32]['rho']:.2f}" in said and "(the lines under the explorer)" in said
     assert min(ns.cut_by, key=ns.cut_by.get) == max(
         ns.steepest, key=lambda n: ns.steepest[n]["rho"]
     )
@@ -6258,14 +6286,21 @@ def test_06_review_r268_the_floors_cuts_and_steepest_pieces_printed():
     assert ns.steepest[16]["rho"] == pytest.approx(ns.ratio_q)
     n32 = ns.steepest[32]
     assert n32["x1"] - n32["x0"] == n32["span"] - 1 < 32  # a whole span, shorter than N
-    text = " ".join(ns.QUAKE_TEXT.split())
-    assert f"is {ns.cut_by[16]:.2f} from $N = 16$ to 8, near the square law's 4" in text
-    assert f"smallest, {ns.cut_by[32]:.2f}, from 32 to 16" in text
-    assert f"$\\rho = {n32['rho']:.2f}$: a whole span of {n32['span']} pixels" in text
-    assert "For a large r the share nears 1" not in text
-    assert "a piece of $N$ pixels covers half as much of the floor" in text
+    # r378 P1: printed and told after q_span (held by it), whose answer 2.36 lay within
+    # ± 0.4 of the 2.72 printed under the law's chart before it
+    # (q_span's explanation quotes the cuts: test_06_one_span_explorer_and_q_span)
+    text = " ".join(ns.FLOOR_CUTS_TEXT.split())
+    assert f"$\\rho = {n32['rho']:.2f}$, is a whole span of {n32['span']} pixels" in text
+    quake = " ".join(ns.QUAKE_TEXT.split())
+    assert "For a large r the share nears 1" not in quake and "cut" not in quake.split("**")[2]
+    assert "a piece of $N$ pixels covers half as much of the floor" in quake
+    import json
+
+    nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
+    held = next("".join(c["source"]) for c in nb["cells"] if c.get("id") == "spancuts")
+    assert held.startswith("q_span.hold()") and "display(Markdown(FLOOR_CUTS_TEXT))" in held
     printed = streams(executed("06_what_accuracy_costs").notebook())
-    if "halving N: the worst pixel's cut" in printed:  # held in the browser by q_quake
+    if "halving N: the worst pixel's cut" in printed:  # held in the browser by q_span
         for n, cut in ns.cut_by.items():
             sp = ns.steepest[n]
             line = (f"  {n:2d} -> {n // 2:2d}: cut {cut:.2f}x   ρ = {sp['rho']:.2f}, "
@@ -6538,8 +6573,10 @@ def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
     assert ns.worst_row[32] != ns.steepest[32]["row"]
     assert f"N = 32 {ns.worst_row[32]} and {ns.steepest[32]['row']}" in printed
     assert max(len(x) for x in printed.splitlines()) <= 80
-    quake = " ".join(ns.QUAKE_TEXT.split())
-    assert "The cuts do not fall in the order of $\\rho$" in quake
-    assert f"to row {ns.worst_row[32]}, off the steepest piece's row" in quake
+    # r378 S2/P1: the rows and the cuts moved after q_span, the rows folded in <details>
+    floor = " ".join(ns.FLOOR_CUTS_TEXT.split())
+    assert "Why the floor's cuts do not fall in the order of ρ</summary>" in floor
+    assert f"at $N = 32$ on row {ns.worst_row[32]}, off the steepest piece's row" in floor
+    assert "on row" not in ns.QUAKE_TEXT and "to row" not in ns.QUAKE_TEXT
     # S1
     assert "r near 1" not in next(c for c in cells if "q_quake = Predict(" in c)

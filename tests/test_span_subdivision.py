@@ -168,3 +168,41 @@ def test_at_r_1_the_caption_says_no_miss_and_the_label_clears_the_ticks():
         art = plot_span(ax_u, ax_miss, spans.subdivide_span(16, r))
         assert art.worst_text.get_horizontalalignment() == side, r
         plt.close(fig)
+
+
+def test_misses_below_the_floor_are_drawn_in_a_marked_band_not_on_0_01():
+    """Review r378 FIG1: at N = 2, r = 10 the misses of pixels 0-17 are under 0.01 texel and
+    were drawn on the 0.01 line, reading as 0.01. Now they lie in a grey band under the floor,
+    its tick "< 0.01", and the key says so; misses from 0.01 up are drawn at their value."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.plotting import span_subdivision as ps
+
+    s = ss.subdivide_span(2, 10.0)
+    small = np.abs(s.pixel_miss) < ps.MISS_FLOOR
+    assert small[:13].all() and small[13:].sum() < len(small) - 13
+    fig, (ax_u, ax_miss) = plt.subplots(2, 1)
+    art = ps.plot_span(ax_u, ax_miss, s)
+    drawn = np.asarray(art.pixel_miss.get_ydata(), float)
+    bottom, top = ax_miss.get_ylim()
+    assert bottom < ps.MISS_BELOW < ps.MISS_FLOOR and top == ps.MISS_TOP
+    assert np.all(drawn[small] == ps.MISS_BELOW)
+    assert np.allclose(drawn[~small], np.abs(s.pixel_miss[~small]))
+    labels = {t.get_text(): t.get_position()[1] for t in ax_miss.get_yticklabels()}
+    assert labels["< 0.01"] == ps.MISS_BELOW and labels["0.01"] == ps.MISS_FLOOR
+    key = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "below 0.01 texel: drawn in the grey band" in key
+    bounds = np.asarray(art.bounds.get_ydata(), float)
+    assert np.nanmin(bounds) == ps.MISS_BELOW  # the closed form's dashes too
+    plt.close(fig)
+    # the widget's caption says it
+    from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
+
+    ex = SpanSubdivisionExplorer(2, 10.0, backend="image")
+    try:
+        assert "drawn in the grey band at the bottom, marked < 0.01" in ex.widget.children[0].value
+    finally:
+        ex.close()

@@ -32,6 +32,7 @@ units and factor −1 (+1 under reverse-Z).
 from __future__ import annotations
 
 import copy
+import dataclasses
 import math
 import re
 from functools import cache
@@ -225,6 +226,8 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         slipped[f"{kind}, own test"] = None if m_ is None else own(r, m_)
     return {
         "clear ignored": sign * (r + m) if tight else None,
+        # r374 F2: room taken as `clear` itself, a view distance (never less than 2m + r)
+        "view units": sign * (r + m) if tight and r + m <= clear - m else None,
         "behind": math.nan if r + m > behind - m else sign * (r + m),
         "first order": math.nan if r + m > first - m else sign * (r + m),
         # a test for NaN twice as strict as it needs, a variant (not the NAN symptom alone):
@@ -303,18 +306,26 @@ _SLOPE_WORDS = {
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
-#: Both slips make m thousands of times too large, and a test for NaN with that m says NaN
-#: on every case: nothing tells the two apart, so either is said (r340)
-_TOO_LARGE = (f"{_PER_UNIT}. Or, giving the same NaN: you took the slope of the view depth z "
-              "per pixel (pixel·z·tan θ), not of the window depth the buffer stores: multiply "
-              "it by dz_win/dz = f n/((f − n) z²)")  # fmt: skip
-_OWN_WORDS = {"per unit, own test": _TOO_LARGE, "view slope, own test": _TOO_LARGE}
+#: Both slips make m thousands of times too large, and with it their own test for NaN says
+#: NaN on every case with an offset, so their answers are alike: told apart by whether the code
+#: reads ``pixel`` (r374 F3: view depth's slope was told "the `* pixel` is missing" first, of
+#: code that has it; :data:`_READS`). So are a test for NaN left out (``clear`` never read)
+#: and one against ``clear`` itself, a view distance (r374 F2: told "ignores `clear`").
+_OWN_WORDS = {}
+_READS = {"per unit, own test": {"unread": "pixel"}, "view slope, own test": {"reads": "pixel"},
+          "clear ignored": {"unread": "clear"}, "view units": {"reads": "clear"}}  # fmt: skip
 
 MISTAKES = {
     "clear ignored": lambda a, e, g: (
         f": your offset ignores `clear`: the object only {num(a[7])} in front leaves room − m "
         "less than r + m, so no offset draws the decal over the wall and keeps the object in "
         "front: return NaN here (an offset this size puts the decal in front of the object)"
+    ),
+    "view units": lambda a, e, g: (
+        f": your test for NaN did not fire. The room the object leaves is a window depth, as "
+        f"the offset is: z_win(z) − z_win(z − clear) = {num(room(a[0], a[3], a[4], a[7]))}, "
+        f"less than r + 2m here. If your test compares with `clear` itself ({num(a[7])}), "
+        "that is a view distance"
     ),
     "behind": ": you placed the object behind the wall (z + clear): it is in front, at "
     "z − clear, so room = z_win(z) − z_win(z − clear)",
@@ -382,8 +393,9 @@ def explain_offset(args, expected, got) -> str:
             f"{num(hi, lo)} (room − m, where room = {num(room(z, near, far, clear))}: the object "
             f"{num(clear)} in front, drawn before the decal, must still hide it), "
             f"{'positive' if reverse else 'negative'}; yours is "
-            # told from the signed bound: against |o| a positive r + m printed 17 digits (r351)
-            f"{num(got, lo if reverse else -lo)}")  # fmt: skip
+            # told from the signed bound: against |o| a positive r + m printed 17 digits (r351),
+            # and alone where the answer is NaN (r374 F2: r + m, told from itself, printed 17)
+            f"{num(got, None if impossible(args) else lo if reverse else -lo)}")  # fmt: skip
     if impossible(args):
         if np.isnan(got):
             return f"{head} (right: room − m < r + m, no offset does both)"
@@ -437,13 +449,34 @@ def _nan_with_room(args, expected, got) -> bool | None:
     return (not impossible(args)) if bool(np.isnan(got)) else None
 
 
-#: r340: a NaN the table does not name (NaN on every case: what a `^` typo in r gives with
-#: the test for NaN), said without "a 0/0": NaN is a legal answer here
+#: r340: a NaN the table does not name, said without "a 0/0": NaN is a legal answer here (a
+#: `^` typo in r gives NaN on every case: :func:`constant_nan` names it, r374 F1)
 NAN_WORDS = (
     "your answer holds NaN, “no offset works”, and this case has one (r + m ≤ room − m): check "
-    "the r and m your test for NaN uses. `^` is exclusive or in Python, not a power: "
-    "`2^bits - 1` reads as 2 ^ (bits − 1); use 2**bits"
+    "the r and m your test for NaN uses"
 )
+
+
+def _xor_gives(args) -> bool:
+    """Does a complete solution with r typed as ``1 / (2^bits - 1)`` (run as 2 ^ (bits − 1),
+    in its test for NaN too) return NaN on this case?"""
+    z, tilt, pixel, near, far, bits, reverse, clear = args
+    r, m = 1.0 / (2 ^ (bits - 1)), slope(z, tilt, pixel, near, far)
+    return r + m > room(z, near, far, clear) - m
+
+
+def constant_nan(results) -> str:
+    """NaN on every case (r374 F1: a constant NaN was told a `^` typo it did not hold): how
+    many cases have an offset that works, and the `^` words only where r computed with `^`
+    gives NaN on every case too."""
+    fits = sum(not impossible(r.args) for r in results)
+    words = (f"your function returns NaN on every case, whatever its arguments, and {fits} of "
+             f"the {len(results)} cases have an offset that works (r + m ≤ room − m): a "
+             "placeholder left in, or a test for NaN that fires on every case")  # fmt: skip
+    if all(_xor_gives(r.args) for r in results):
+        words += (". If your r is typed `1 / (2^bits - 1)`: that NaN is what it gives, since "
+                  f"{XOR_UNBRACKETED}")  # fmt: skip
+    return words
 
 
 #: r325: NaN is a legal answer here ("no offset works"), so an unnamed NaN is not "a 0/0"
@@ -503,7 +536,8 @@ def draw_offset(ax, case, got):
         xs.append(x)
     elif got is not None:
         artists += ax.plot([], [], " ", label=f"yours {num(got)}: not drawn")
-    if full and lo / r >= ZOOM_FROM:
+    zoom = full and lo / r >= ZOOM_FROM
+    if zoom:
         artists.append(_zoom(ax, r, m, lo, hi, got, ok))
     ax.set_xscale("symlog", linthresh=1.0)
     ax.set_xlim(0.0, 2.0 * max(xs + [2.0]))
@@ -512,37 +546,47 @@ def draw_offset(ax, case, got):
     ax.set_xlabel(f"|offset| in steps of the {args[5]}-bit buffer")
     # under the axes, not beside them: its labels are long, and beside a notebook column's
     # figure they made it 1,040 px wide (the column holds 940)
-    artists.append(ax.legend(fontsize="x-small", loc="upper center", bbox_to_anchor=(0.5, -0.8)))
+    # below the zoom's panel where there is one (:func:`_zoom`)
+    artists.append(ax.legend(fontsize="x-small", loc="upper center",
+                             bbox_to_anchor=(0.5, -2.15 if zoom else -0.8)))  # fmt: skip
     return artists
 
 
 #: From this many steps on, m, r + m and an answer a step apart share a pixel on the symlog
-#: strip (r351 item 6): an inset draws them on a linear scale, in the strip's empty left part.
+#: strip (r351 item 6): a second panel under the strip draws them on a linear scale.
 ZOOM_FROM = 20.0
 
 
 def _zoom(ax, r, m, lo, hi, got, ok):
-    """An inset on a linear scale around m and r + m (one step apart), with the accepted band
-    and yours when it lies there."""
-    inset = ax.inset_axes([0.03, 0.3, 0.42, 0.6])
+    """A panel under the strip, on a linear scale around m and r + m (one step apart), with the
+    accepted band and yours when it lies there (r374 F7: an inset in the strip's empty left
+    part read as part of the log axis, its ticks at xx-small)."""
+    panel = ax.inset_axes([0.0, -1.45, 1.0, 0.55])
     x0, x1 = m / r - 1, lo / r + 1.5
-    inset.axvspan(lo / r, hi / r, color="#d9ecd9", lw=0, zorder=0)
-    inset.axvline(m / r, color="#888888", linestyle=":")
-    inset.axvline(lo / r, color="#2b7bba")
+    panel.axvspan(lo / r, hi / r, color="#d9ecd9", lw=0, zorder=0)
+    panel.axvline(m / r, color="#888888", linestyle=":")
+    panel.axvline(lo / r, color="#2b7bba")
     if got is not None and np.isfinite(got) and x0 <= abs(got) / r <= x1:
-        inset.axvline(abs(got) / r, color="#7fbf7f" if ok else "#d7301f", linestyle="--", lw=2)
-    inset.set_xlim(x0, x1)
-    inset.set_xticks([m / r, lo / r], ["m", "r + m"], fontsize="xx-small")
-    inset.tick_params(axis="x", pad=1, length=2)
-    inset.set_yticks([])
-    return inset
+        panel.axvline(abs(got) / r, color="#7fbf7f" if ok else "#d7301f", linestyle="--", lw=2)
+    panel.set_xlim(x0, x1)
+    panel.set_xticks([m / r, lo / r], ["m", "r + m"], fontsize="small")
+    panel.set_yticks([])
+    panel.set_xlabel("zoom on m and r + m: linear, 1 step apart", fontsize="small")
+    return panel
+
+
+def _mistakes() -> list[Mistake]:
+    """The table, each slip of m that :data:`_READS` names told apart by what the code reads."""
+    table = variant_mistakes(_variants, MISTAKES, (ZERO, NAN))
+    return [dataclasses.replace(m, **_READS.get(m.kind, {})) for m in table]
 
 
 DECAL_BIAS = Exercise(
     "decal_bias", bias_cases, as_number, same_offset, explain_offset, _rule,
-    variant_mistakes(_variants, MISTAKES, (ZERO, NAN)), draw=draw_offset, match=gives_same_offset,
+    _mistakes(), draw=draw_offset, match=gives_same_offset,
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),
     hints=HINTS,
     nan_words=NAN_WORDS,
+    constant_nan=constant_nan,
 )  # fmt: skip

@@ -39,6 +39,7 @@ import numpy as np
 
 from .answers import refuse_non_answers, short
 from .cases import DRAWN, drawn_rng
+from .diagnosis import near
 from .exercise import Exercise, Mistake, PackageAnswer
 from .near_plane import bounds as near_bounds
 from .near_plane import expected_near, resolution
@@ -64,11 +65,13 @@ NEAR_ROUNDING = 1e-6
 #: (z, gap, far, nearest) of the fixed cases: lesson 05b's planes (far 1000) with unorm24
 #: enough with room (n 1/30 of nearest) or just (0.8), float32 reverse-Z needed (unorm24's
 #: near plane 150 times nearest, or just 1.25), a first-person view (nearest 0.01, far 10⁴),
-#: and neither (the gap below reverse-Z's finest Δz: at z = 900, and far out at z = 5e5).
+#: and neither (the gap below reverse-Z's finest Δz: at z = 900, and far out at z = 5e5); one
+#: where 16 bits would do too (r374 F4: else 5.1 run with 16 bits answers as "reverse-Z
+#: wherever unorm24 does" does, and the two could not be told apart).
 SETTINGS = (
     (50.0, 0.01, 1000.0, 0.5), (100.0, 7.5e-4, 1000.0, 1.0), (500.0, 0.001, 1000.0, 0.1),
     (100.0, 6.0e-3, 1000.0, 0.125), (2000.0, 0.05, 1e4, 0.01), (900.0, 3.5e-6, 1000.0, 0.1),
-    (10.0, 1.0e-4, 100.0, 1.0), (5e5, 0.01, 1e6, 0.02),
+    (10.0, 1.0e-4, 100.0, 1.0), (5e5, 0.01, 1e6, 0.02), (10.0, 0.05, 100.0, 1.0),
 )  # fmt: skip
 
 
@@ -88,12 +91,12 @@ def choice(z, gap, far, nearest) -> str:
 
 
 def expected_setup(z, gap, far, nearest) -> tuple[str, float, float]:
-    """The package's answer: unorm24 at its smallest near plane (5.1's), or float32 reverse-Z
-    at ``nearest`` with its Δz (5.2's), for "neither" too."""
+    """The package's answer: the chosen buffer at ``nearest`` with its Δz there (unorm24's,
+    finer than the gap wherever 5.1's near plane lies short of ``nearest``: r374 F6, 5.1's
+    own near plane has no margin; or float32 reverse-Z's, 5.2's, for "neither" too)."""
     chosen = choice(z, gap, far, nearest)
     if chosen == UNORM:
-        n = expected_near(z, gap, far, 24)
-        return UNORM, n, resolution(z, n, far, 24)
+        return UNORM, nearest, resolution(z, nearest, far, 24)
     return chosen, nearest, expected_gap(z, nearest, far)
 
 
@@ -214,6 +217,13 @@ def same_setup(got, expected, args=None) -> bool:
     return fmt == expected[0] and _near_ok(args, fmt, n) and _dz_ok(args, fmt, n, dz)
 
 
+def _closed_near(z, gap, far) -> float:
+    """5.1's closed form for unorm24, n = step f z² / (gap f + step z²), beyond z where no near
+    plane short of z does it (:func:`.near_plane.expected_near` stops at z)."""
+    step = 1 / (2**24 - 1)
+    return step * far * z * z / (gap * far + step * z * z)
+
+
 def explain_setup(args, expected, got) -> str:
     """The scene, what each buffer resolves, the right choice and the student's."""
     z, gap, far, nearest = args
@@ -222,7 +232,12 @@ def explain_setup(args, expected, got) -> str:
     # yours with the digits that tell it from the bound it is judged by (r351 item 3)
     bound = n_u if fmt == UNORM and n <= nearest else nearest
     # where only a near plane at z would do, "n ≥ 900" at z = 900 read as a usable one
-    need = f"n ≥ {num(n_u, n)}" if n_u < 0.99 * z else "a near plane at z itself"
+    # told from yours only where the check could tell them apart (r374 F2: 5.1's n printed
+    # with 16 digits beside yours with 4, where yours lay beyond `nearest` anyway)
+    apart = fmt == UNORM and n <= nearest and abs(n - n_u) > 1e-6 * n_u
+    need = f"n ≥ {num(n_u, n if apart else None)}" if n_u < 0.99 * z else (
+        f"a near plane beyond z (5.1's formula gives {num(_closed_near(z, gap, far))}: none "
+        "short of z does it)")  # fmt: skip
     return (f"at z = {num(z)} with far = {num(far)}, surfaces {num(gap)} apart and nothing "
             f"nearer than {num(nearest, n)}: unorm24 needs {need} (Δz at n = "
             f"{num(nearest)}: {num(resolution(z, nearest, far, 24))}), reverse-Z "
@@ -280,7 +295,8 @@ def _words_unorm_does(args, expected, got) -> str:
     return (f": unorm24 does it here, with any near plane from "
             f"{num(expected_near(z, gap, far, 24))} to {num(nearest)} (5.1), and is preferred: "
             "with the stencil the scene needs, its format is nominally 32 bits a pixel, "
-            "reverse-Z's 64. Compare 5.1's near plane with `nearest` first")  # fmt: skip
+            "reverse-Z's 64: 5.1's near plane within `nearest` decides it, before reverse-Z is "
+            "asked")  # fmt: skip
 
 
 def _words_reverse_does(args, expected, got) -> str:
@@ -320,7 +336,8 @@ def _dz_words(what):
         fmt, n = got[0], got[1]
         shown = REVERSE if fmt == NEITHER else fmt
         lo, hi = _resolves(shown, z, n, far) if 0 < n < z else (math.nan, math.nan)
-        said = num(lo) if fmt == UNORM else f"{num(lo)} to {num(hi)}"
+        # told apart (r374: "0.022 to 0.022")
+        said = num(lo) if fmt == UNORM else f"{num(lo, hi)} to {num(hi, lo)}"
         return (f": {what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
                 + ("; for \"neither\" give reverse-Z's numbers, the better of the two"
                    if fmt == NEITHER else ""))  # fmt: skip
@@ -352,6 +369,12 @@ def _reverse_dz_as(reading):
         return not lo <= dz <= hi and any(abs(dz - v) <= 0.01 * v for v in said)
 
     return fits
+
+
+def _coarse(args, got) -> bool:
+    """Is the Δz of the answer 2^-23 of z (1 − z/f), the coarser of :func:`_finest`'s two?"""
+    fine, coarse = _finest(args[0], args[2])
+    return abs(got[2] - coarse) < abs(got[2] - fine)
 
 
 def _step_at_one(z, n, far):
@@ -400,7 +423,50 @@ def _words_unorm_too_close(args, expected, got) -> str:
             f"gap {num(gap)}: it needs n ≥ {num(need, n)} (5.1)")  # fmt: skip
 
 
+def _choice_by(n_of):
+    """The answer, format only (numbers :func:`match_setup` leaves open), of a student whose
+    unorm24 test compares ``n_of(z, gap, far, nearest)`` with ``nearest`` (True: unorm24)."""
+
+    def gives(z, gap, far, nearest):
+        if n_of(z, gap, far, nearest):
+            return UNORM, None, None
+        return (REVERSE if expected_gap(z, nearest, far) <= gap else NEITHER), None, None
+
+    return gives
+
+
+def _words_flipped(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    n_u = expected_near(z, gap, far, 24)
+    where = "beyond" if n_u > nearest else "within"
+    return (f": your comparison of 5.1's near plane with `nearest` is flipped: here 5.1's n = "
+            f"{num(n_u, nearest)} lies {where} `nearest` = {num(nearest, n_u)}, and you chose "
+            f'"{got[0]}". On every case you choose unorm24 where its near plane lies beyond '
+            "`nearest`, and reverse-Z (or \"neither\") where it does not")  # fmt: skip
+
+
+def _words_16(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    n16, n24 = expected_near(z, gap, far, 16), expected_near(z, gap, far, 24)
+    return (f": your choices follow 5.1's near plane for 16 bits, n = {num(n16, n24)} here "
+            f"(`nearest` = {num(nearest)}): this scene's unorm24 has 24 bits, and 5.1 gives "
+            f"n = {num(n24, n16)} for them")  # fmt: skip
+
+
+def match_setup(got, value, args=None) -> bool:
+    """Does the student's answer equal what a mistake gives? Numbers the mistake leaves open
+    (None: a choice alone, :func:`_choice_by`) match any."""
+    if got is None or value is None:
+        return got is None and value is None
+    return all(v is None or near(g, v) for g, v in zip(got, value, strict=True))
+
+
 MISTAKES = [
+    # r374 F4: each told "Compare 5.1's near plane with `nearest` first", which they did
+    Mistake("comparison flipped", _words_flipped, gives=_choice_by(
+        lambda z, gap, far, nearest: expected_near(z, gap, far, 24) > nearest)),
+    Mistake("16 bits", _words_16, gives=_choice_by(
+        lambda z, gap, far, nearest: expected_near(z, gap, far, 16) <= nearest)),
     Mistake("float32 forward", ": float32 without reverse-Z stores z_win, near 1 for far "
             "surfaces, where float32's step is 2^-24, no finer than unorm24's 1/(2^24 − 1): it "
             "buys nothing there. Reverse-Z stores d = 1 − z_win, near 0 for far surfaces, where "
@@ -416,6 +482,13 @@ MISTAKES = [
         "swapped: call reverse_z_gap(z, near, far), which gives "
         f"{num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
         fits=_reverse_dz_as(_swapped)),
+    # r374 F5: the bound the words quote, taken for Δz, was told only "not what it resolves"
+    Mistake("reverse-Z coarse bound", lambda a, e, g: (
+        f": your Δz {num(g[2])} is a bound, {'2^-23' if _coarse(a, g) else '2^-24'} of "
+        "z (1 − z/f), which holds whatever the near plane: the step at the stored d itself over "
+        "|dd/dz| (5.2) lies between 2^-24 and 2^-23 of it, and with it "
+        f"reverse-Z resolves Δz = {num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
+        fits=_reverse_dz_as(lambda z, n, far: list(_finest(z, far)))),
     Mistake("beyond nearest", _words_beyond, fits=_fits(UNORM, (REVERSE, NEITHER), _beyond)),
     Mistake("unorm24 too coarse", _words_too_coarse, fits=_fits(UNORM, (REVERSE, NEITHER))),
     Mistake("unorm24 preferred", _words_unorm_does, fits=_fits(REVERSE, (UNORM,))),
@@ -483,5 +556,6 @@ HINTS = ((re.compile(r', so the answer is "[^"]+"'), ""),)
 DEPTH_SETUP = Exercise(
     "depth_setup", setup_cases, as_setup, same_setup, explain_setup, _rule, MISTAKES,
     draw=draw_setup, answers=(PackageAnswer(expected_setup, words=CHECKER_WORDS),), example=2,
+    match=match_setup,
     reference=("teachraster.exercises.near_plane", "teachraster.exercises.reverse_z"), hints=HINTS,
 )  # fmt: skip

@@ -622,6 +622,7 @@ class _Fit:
     agrees: int  # answered cases it agrees with (passing ones included)
     whole: bool  # it agrees with every answered case it speaks about
     spoken: int = 0  # answered cases it says something about
+    contradicts: bool = False  # it gives another answer on a passing case
 
     @property
     def coincidence(self) -> bool:
@@ -817,7 +818,7 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
             agrees = len(hits) + sum(1 for s in said if s)
             whole = False not in verdicts.values() and False not in said
             spoken = sum(v is not None for v in [*verdicts.values(), *said])
-            return _Fit(m, order, hits, agrees, whole, spoken)
+            return _Fit(m, order, hits, agrees, whole, spoken, False in said)
 
         fit = run_checker(run, None)
         if fit is not None:
@@ -937,10 +938,12 @@ def diagnose(
     value = run_checker(lambda: _constant(results, spec.call is not None), None)
     if value is not None:
         # r107 N3-2: NaN on every case is a 0/0 far more often than a placeholder
-        # (CONVENTIONS.md, Exercises and grading)
+        # (CONVENTIONS.md, Exercises and grading), unless NaN is one of the answers
         nan = _all_nan(value)
         kind = "nan" if nan else "constant"
-        if nan:  # r286 C1: ±inf everywhere is told as NaN is, not "a placeholder"
+        if nan and spec.constant_nan is not None:  # r374 F1: NaN legal, so no 0/0 here
+            words = spec.constant_nan(results)
+        elif nan:  # r286 C1: ±inf everywhere is told as NaN is, not "a placeholder"
             words = _legal_nan(spec, _nan_words((), None, np.ravel(_numbers(value))[:1]))
         elif spec.constant is not None:
             words = spec.constant(value)
@@ -959,7 +962,8 @@ def diagnose(
         # rounding to N decimals shows only in an answer with a fraction: whole numbers
         # everywhere are the exercise's own "whole numbers" (r22 D-6's faint pixel, 0)
         fits = [f for f in fits if f.mistake is not rounded]
-    fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)]
+    fits = [f for f in fits if (f.whole or not f.mistake.only_whole) and _all_it_must(f, failing)
+            and not (f.mistake.consistent and f.contradicts)]  # fmt: skip
     explained = run_checker(lambda: _explained(fits, failing), set())
     for f in fits:  # r164 F1: float32 is not chosen where a mistake of the table is the cause
         if f.mistake.gives is None and blames_precision(f.mistake.kind):

@@ -76,6 +76,10 @@ class Mistake:
         A parameter the student's function must never read for the mistake to be named
         (:func:`.package_answers.parameters_read`; r341 X-1: "wrap not passed on" was said of a
         trilinear that passes it on, to a bilinear that ignores it).
+    consistent : bool
+        Named on some failing cases only where it contradicts no passing answer: wherever it
+        would change the answer and the student's is right, the student did not make it
+        (r372 M4: an empty span matched a few cases of three wrong side tests by coincidence).
     """
 
     kind: str
@@ -91,6 +95,7 @@ class Mistake:
     reads: str | None = None
     with_others: bool = False
     unread: str | None = None
+    consistent: bool = False
 
     def say(self, args, expected, got) -> str:
         return self.words(args, expected, got) if callable(self.words) else self.words
@@ -293,6 +298,7 @@ class Exercise:
     float32_floor: float = 1.0
     constant: Callable | None = None
     nan_words: str | None = None
+    constant_nan: Callable | None = None
     answers: Sequence[PackageAnswer] = ()
     draw: Callable | None = None
     scene: Callable | None = None

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import re
+import textwrap
 
 import numpy as np
 
@@ -242,7 +243,7 @@ def same_level(got, expected, args) -> bool:
 
 def exercise(scene) -> Exercise:
     return Exercise(
-        "mip_level", level_cases, lambda v: float(as_number(v)), same_level, explain_level,
+        "mip_level", level_cases, as_number, same_level, explain_level,
         _level_rule, [LEVEL_KNOBS], answers=(PackageAnswer(mip_level),), draw=draw_level_case,
         scene=scene, inputs_drawn=True, hints=HINTS,
         example=4,  # r362 FIG1: 1 × 16 texels, 7.1's question (λ = 0 showed two unit arrows)
@@ -266,6 +267,14 @@ HINTS = (
     # r73 07-1: a named mistake's fix as a question first
     ("; GL takes the longer axis, ρ = max(|∂/∂x|, |∂/∂y|), each axis its own length",
      ": which one length of the footprint decides whether some direction is undersampled?"),
+    # r375 F8: these fixes came with the first, "a hint only", failure
+    (re.compile(r"GL takes the longer(?: of the two| axis)? \(ρ = max\), so that no direction is "
+                r"undersampled"),
+     "which axis must λ follow so that no direction is undersampled?"),
+    (re.compile(r"that is (the natural log|log10); λ = log2 ρ"),
+     r"that is \1: which log counts the halvings of the texel size?"),
+    ("twice λ: take the square root first (or halve the log)",
+     "twice λ: is an axis' length its square?"),
 )  # fmt: skip
 
 
@@ -276,6 +285,18 @@ def hinted(name: str, words: str, hints) -> str:
     from .tries import staged
 
     return staged(name, words, hints)[0]
+
+
+def level_questions(lx: float, ly: float) -> str:
+    """7.1's question answered for a footprint of axes ``lx`` and ``ly`` texels: the level of
+    the shorter axis and of the two axes' mean, and the texels each skips along the longer."""
+    longer = max(lx, ly)
+    said = []
+    for what, rho in (("the shorter axis", min(lx, ly)), ("the axes' mean", (lx + ly) / 2)):
+        lam = math.log2(rho)
+        said.append(f"{what} gives λ = {num(lam)}, where a step along the longer axis crosses "
+                    f"{num(longer / 2**lam)} texels")  # fmt: skip
+    return "7.1: " + "; ".join(said) + " (aliasing: texels skipped)"
 
 
 def draw_level_case(ax, case, got):
@@ -295,8 +316,12 @@ def draw_level_case(ax, case, got):
         angle = np.linspace(0, 2 * np.pi, 90)
         artists += ax.plot(rho * np.cos(angle), rho * np.sin(angle), color="#888888",
                            linestyle=":")  # fmt: skip
-        ax.set_xlabel(f"texels (blue ∂/∂x, orange ∂/∂y): λ = {num(case[2])}, yours "
-                      f"{num(got, case[2])}")  # fmt: skip
+        text = f"texels (blue ∂/∂x, orange ∂/∂y): λ = {num(case[2])}, yours {num(got, case[2])}"
+        if same_level(got, case[2], None):  # r375 F2: 7.1's other question, on this footprint
+            words = level_questions(np.hypot(*ax_x), np.hypot(*ax_y))
+            artists.append(ax.text(1.04, 0.5, textwrap.fill(words, 40), transform=ax.transAxes,
+                                   ha="left", va="center", fontsize="x-small"))  # fmt: skip
+        ax.set_xlabel(text)
     ax.set_xlim(-1.2 * rho, 1.2 * rho)
     ax.set_ylim(1.2 * rho, -1.2 * rho)
     ax.set_aspect("equal")

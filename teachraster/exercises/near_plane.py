@@ -395,7 +395,13 @@ SAFE_NEAR = Exercise(
     "safe_near", near_cases, as_number, same_near, explain_near, _rule,
     variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, ROUNDS_APART, RANGE)), draw=draw_near,
     # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
-    answers=(PackageAnswer(expected_near, words=CHECKER_WORDS),), hints=(
+    answers=(
+        PackageAnswer(expected_near, words=CHECKER_WORDS),
+        # r374 F9: a search over n of the package's unorm resolution passed with no algebra
+        PackageAnswer(depth_resolution, when=lambda a: str(a.get("fmt", "")).startswith("unorm"),
+                      what="a unorm buffer's Δz, the very quantity this task asks you to derive "
+                      "and solve for n"),
+    ), hints=(
         # r39 05-3: the first wrong try printed the inequality the task asks to derive
         ("; solve step (f − n) z² / (f n) ≤ gap for n exactly", "; keep it and solve for n "
          "exactly"),

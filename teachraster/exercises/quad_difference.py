@@ -15,6 +15,8 @@ Expected answers: the renderer's own quad lanes
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
 
 from ..core.interpolation import perspective_weights
@@ -22,7 +24,7 @@ from ..pipeline.texturing.quad_derivatives import attribute_planes, lane_values
 from .answers import as_numbers
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, PackageAnswer, variant_mistakes
-from .scalars import vec
+from .scalars import num, vec
 from .tolerance import all_close
 
 #: Floor-like triangles: the far edge at w = 8 against 1 near, as on textured_floor.
@@ -125,6 +127,9 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
                         _at(xy, w, f, col + 0.5, (row ^ 1) + 0.5) - own])  # fmt: skip
     return {
         "unaligned": pair(row, col),
+        # r375 F9: one axis aligned to the quads, the other not, was told only the rule
+        "column unaligned": pair(r0, col),
+        "row unaligned": pair(row, c0),
         # r286 M3: the slips a reader found told only the rule
         "lower right": np.array(
             [lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]
@@ -163,6 +168,11 @@ MISTAKES = {
     "unaligned": "you took the quad whose upper-left pixel is this pixel: quads are aligned "
     "to even rows and columns, so pixel (row, col) belongs to the quad starting at "
     "(row − row mod 2, col − col mod 2)",
+    "column unaligned": "you aligned the quad's row but not its column: quads start at even "
+    "columns too, so pixel (row, col) belongs to the quad starting at (row − row mod 2, "
+    "col − col mod 2)",
+    "row unaligned": "you aligned the quad's column but not its row: quads start at even rows "
+    "too, so pixel (row, col) belongs to the quad starting at (row − row mod 2, col − col mod 2)",
     "lower right": "you differenced against the quad's lower-right lane (f(lower right) "
     "minus its neighbours); coarse derivatives take the upper-left lane as the reference: ddx "
     "is its right neighbour minus it, ddy its lower neighbour minus it",
@@ -276,9 +286,8 @@ def draw_quad(ax, case, got):
     _, (xy, w, f, row, col), expected = case
     r0, c0 = row - row % 2, col - col % 2
     # the method once earned: the full words given, or this answer right (a passing check)
-    method = got is not None and (
-        tries.hints_spent("quad_derivatives") or same_pair(np.asarray(got), expected, case[1])
-    )
+    passed = got is not None and same_pair(np.asarray(got), expected, case[1])
+    method = got is not None and (tries.hints_spent("quad_derivatives") or passed)
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
     for y in range(r0 - 2, r0 + 4):
@@ -300,14 +309,29 @@ def draw_quad(ax, case, got):
                                    bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
-    ax.set_xlim(c0 - 1.5, c0 + 3.5)
-    ax.set_ylim(r0 + 3.5, r0 - 1.5)
+    if passed:  # r375 F2: 7.4's pixels, each outlined, and their quads
+        for r, c in QUESTION_PIXELS:
+            artists.append(ax.add_patch(Rectangle((c, r), 1, 1, fill=False, lw=1.5,
+                                                  edgecolor="#ff9f1c", linestyle="--")))  # fmt: skip
+            if (r - r % 2, c - c % 2) != (r0, c0):
+                artists.append(ax.add_patch(Rectangle((c - c % 2, r - r % 2), 2, 2, fill=False,
+                                                      edgecolor="#2b7bba", lw=1.5,
+                                                      linestyle="--")))  # fmt: skip
+    # a passing figure reaches 7.4's pixels' quads too, where they are near
+    near = [(r - r % 2, c - c % 2) for r, c in QUESTION_PIXELS if passed
+            and abs(r - r0) < 6 and abs(c - c0) < 6]  # fmt: skip
+    ax.set_xlim(c0 - 1.5, max([c0 + 1.5] + [c for _, c in near]) + 2.2)
+    ax.set_ylim(max([r0 + 1.5] + [r for r, _ in near]) + 2.2, r0 - 1.5)
     ax.set_aspect("equal")
     if got is not None:
-        artists.append(ax.text(0.02, 0.02, f"(ddx, ddy) = {vec(expected, got)}\nyours: "
+        # beside the close-up, under the legend (r375: it covered the quad below the pixel's)
+        artists.append(ax.text(1.04, 0.02, f"(ddx, ddy) = {vec(expected, got)}\nyours: "
                                f"{vec(got, expected)}", transform=ax.transAxes,
-                               fontsize="x-small", va="bottom",
+                               fontsize="x-small", va="bottom", ha="left",
                                bbox={"facecolor": "white", "edgecolor": "none"}))  # fmt: skip
+    if passed:
+        words = f"{quad_questions()}. {helper_question()}"
+        ax.set_xlabel(textwrap.fill(words, 58), fontsize="x-small")
     handles = [Patch(facecolor="#d2d2d2", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
     if method:
@@ -317,6 +341,52 @@ def draw_quad(ax, case, got):
     artists.append(ax.legend(handles=handles, fontsize="x-small", loc="upper left",
                              bbox_to_anchor=(1.02, 1)))  # fmt: skip
     return artists
+
+
+#: 7.4's "answer first" pixels (r375 F2: a passing check never showed them)
+QUESTION_PIXELS = ((28, 14), (29, 15), (30, 16))
+
+
+def quad_questions(pixels=QUESTION_PIXELS) -> str:
+    """Which of ``pixels`` share a quad, and so one (ddx, ddy): 7.4's first question."""
+    quads: dict[tuple[int, int], list] = {}
+    for r, c in pixels:
+        quads.setdefault((r - r % 2, c - c % 2), []).append(f"({r}, {c})")
+    said = "; ".join(f"{' and '.join(p)} in the quad at ({q[0]}, {q[1]})"
+                     for q, p in quads.items())  # fmt: skip
+    return f"7.4 (dashed): {said}, one (ddx, ddy) each"
+
+
+def _nearest_point(xy, x, y) -> tuple[float, float]:
+    """The triangle's point nearest (x, y): (x, y) itself inside, else the nearest point of
+    its edges."""
+    if _inside(xy, x, y):
+        return x, y
+    best, p = None, np.array([x, y], dtype=float)
+    for k in range(3):
+        a, b = np.asarray(xy[k], float), np.asarray(xy[(k + 1) % 3], float)
+        s = float(np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0))
+        q = a + s * (b - a)
+        if best is None or np.hypot(*(q - p)) < np.hypot(*(best - p)):
+            best = q
+    return float(best[0]), float(best[1])
+
+
+def helper_question(xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> str:
+    """7.4's helper question answered on the floor: ddx of the first quad (by rows, then
+    columns) whose left column is covered and right column not, with each helper's value taken
+    at the triangle's nearest point, against the extrapolated one."""
+    size = int(np.ceil(np.max(xy))) + 2
+    for r0 in range(0, size, 2):
+        for c0 in range(0, size, 2):
+            inside = [_inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)]
+            if inside == [True, False, True, False]:
+                left = _at(xy, w, f, c0 + 0.5, r0 + 0.5)
+                right = _at(xy, w, f, c0 + 1.5, r0 + 0.5) - left
+                near = _at(xy, w, f, *_nearest_point(xy, c0 + 1.5, r0 + 0.5)) - left
+                return (f"Helpers at the nearest point: in the quad at ({r0}, {c0}), right column "
+                        f"outside, ddx {num(near)}, not {num(right)}")  # fmt: skip
+    return ""
 
 
 def _inside(xy, x, y) -> bool:
@@ -329,5 +399,6 @@ QUAD_DERIVATIVES = Exercise(
     "quad_derivatives", quad_cases, as_pair, same_pair, explain_quad, _rule,
     variant_mistakes(_variants, MISTAKES), answers=(PackageAnswer(lane_values),),
     draw=draw_quad, hints=((RULE, HINT), *NAMED_HINTS), inputs_drawn=True,
+    example=2,  # r375 F2: pixel (29, 15), 7.4's question (pixel (27, 3) was drawn)
     once=((RULE, ": as said for the first failing case"),),
 )  # fmt: skip

@@ -172,6 +172,9 @@ def _variants(z, near, far) -> dict[str, float]:
         "step in depth": step,
         "times slope": step * slope,
         "z not squared": step * z * (1 - near / far) / near,
+        # r374 F5: the slope's 1 − n/f on the wrong side of the fraction, or taken twice
+        "1 - n/f twice": step * (1 - near / far) / slope,
+        "1 - n/f inverted": step / slope / (1 - near / far) ** 2,
     }
 
 
@@ -234,6 +237,10 @@ MISTAKES = {
     "depth: that step divided by |dd/dz|",
     "times slope": "you multiplied the step by |dd/dz|; divide it: Δz = step / |dd/dz|",
     "z not squared": "you used z where the slope falls like 1/z²: |dd/dz| = n/((1 − n/f) z²)",
+    "1 - n/f twice": "your Δz has the factor 1 − n/f twice: d = (n/z − n/f)/(1 − n/f), so "
+    "|dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n, with 1 − n/f once",
+    "1 - n/f inverted": "your slope has 1 − n/f on the wrong side: d = (n/z − n/f)/(1 − n/f) "
+    "divides by it, so |dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n",
 }
 
 

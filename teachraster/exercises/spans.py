@@ -17,6 +17,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
+import re
 from fractions import Fraction
 from functools import cache
 
@@ -26,9 +27,12 @@ from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from .answers import as_numbers, short
 from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
+from .drawing import note_beside
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
+from .span_variants import PLACED, TIE_ROWS, more_variants, pair_columns
+from .span_variants import WORDS as MORE_WORDS
 
 
 # -- cases ------------------------------------------------------------------------------------
@@ -65,7 +69,7 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, [row])
         out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
                     "end)", (xy, row), covered[row]))  # fmt: skip
-    out += _wide_cases() + _edge_cases() + _half_cases()
+    out += _wide_cases() + _edge_cases() + _half_cases() + _r372_cases()
     # first (the drawing of a passing check, and the first failure most students see): a row
     # with covered centres whose crossings of two slanted edges lie on centres (r355 S2: a row
     # along a top edge, whose x_l and x_r are vertices, was called "the left edge")
@@ -184,6 +188,23 @@ def _half_cases() -> list[tuple[str, tuple, frozenset]]:
     return out
 
 
+def _r372_cases() -> list[tuple[str, tuple, frozenset]]:
+    """r372 P1, P2, F1: rows where a crossing divided first (or slope first) lands a hair off
+    the centre it lies exactly on; triangles left of and above the origin and across column 0;
+    a horizontal bottom edge on a centre line that is no sliver."""
+    out = []
+    for points, rows in TIE_ROWS:
+        xy = np.array(points)
+        covered = _covered_rows(xy, list(rows))
+        out += [(f"vertices on centres, row {row} (a crossing exactly on a centre)",
+                 (xy.copy(), row), covered[row]) for row in rows]  # fmt: skip
+    for label, points, rows in PLACED:
+        xy = np.array(points)
+        covered = _covered_rows(xy, list(rows))
+        out += [(f"{label}, row {row}", (xy.copy(), row), covered[row]) for row in rows]
+    return out
+
+
 def _span_float32(xy: np.ndarray, row: int) -> frozenset | None:
     """The span of a student who computes the crossings in float32 (None: no crossing)."""
     v = np.asarray(xy, np.float32)
@@ -271,11 +292,6 @@ def _constant_span(value) -> str:
     )
 
 
-def _swapped_fits(args, expected, got) -> bool:
-    pair = _returned(got)
-    return bool(expected) and pair is not None and frozenset(range(pair[1], pair[0])) == expected
-
-
 def _far_float32_fits(args, expected, got) -> bool:
     """Far out, the student's span is float32's, or differs by one column whose centre lies
     within a few float32 steps of a crossing (only there can float32 move an end). r46 S1: a
@@ -355,21 +371,56 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "rounded": _columns(round(xl), round(xr)),
             "stop + 1": _columns(lo, hi + 1),
             "last": _columns(lo, hi - 1),
+            # r372 P2, H1: C's int() as floor (toward zero), a clip at column 0, round(x − ½)
+            "int() for floor": _columns(_int_ceil(xl - half), _int_ceil(xr - half)),
+            "clip at 0": _columns(max(lo, 0), max(hi, 0)),
+            "round(x − ½)": _columns(round(xl - half), round(xr - half)),
         }
         out.update({k: frozenset() if bottom else v for k, v in rounded.items()})
+        if hi > lo and not bottom:  # r372 M1, M2: the pair the wrong way round on every
+            # row with a span; or on all but those along a top edge, whose ends need no side
+            out["first and stop swapped"] = _reversed(lo, hi)
+            if not _horizontal_edge(xy, y):
+                out["x_l and x_r swapped"] = _reversed(lo, hi)
         out["horizontal reversed"] = _horizontal_reversed(xy, row, lo, hi)
         # r363 C3: a top edge left out, a bottom edge right, was named "y = row"
         top = _horizontal_edge(xy, y) == "top"
         out["no top edge"] = frozenset() if top else exact_columns(xy, row)
     out.update(_edge_variants(xy, row))
     for kind, dy in SHIFTS.items():  # the wrong line: the pixels' top, bottom, the next row
-        cross = crossings(xy, row + dy)
-        out[kind] = frozenset() if cross is None else _columns(math.ceil(cross[0] - half),
+        cross = crossings(xy, row + dy)  # (a bottom edge on that line owns none, r372)
+        bottom = _horizontal_edge(xy, float(row + dy)) == "bottom"
+        out[kind] = frozenset() if cross is None or bottom else _columns(math.ceil(cross[0] - half),
                                                                math.ceil(cross[1] - half))  # fmt: skip
     swapped = np.asarray(xy)[:, ::-1]
     if np.ptp(swapped[:, 0]) < 10**6:  # (the 10^12-px triangle's swap: no span to hold)
         out["x and y swapped"] = exact_columns(swapped, row)
+    out.update(more_variants(xy, row, exact_columns))
     return out
+
+
+def _int_ceil(t: Fraction) -> int:
+    """A ceiling made with C's ``int()``, which truncates toward zero: one too far right for
+    a negative t that is no integer (r372 P2: ``int(t) if t == int(t) else int(t) + 1``)."""
+    return int(t) if t == int(t) else int(t) + 1
+
+
+def _reversed(lo: int, hi: int) -> Span:
+    """The answer (stop, first) of the columns lo <= col < hi, compared by its pair."""
+    out = Span()
+    out.pair = (hi, lo)
+    return out
+
+
+def _match(got, answer, args) -> bool:
+    """A mistake gives the student's answer: the same columns; where the student returned a
+    pair the wrong way round (stop < first) and the mistake's answer is a pair too (a side
+    test's), the same pair (r372 M2: (6, 2) is no "none" that any empty span gives, such as
+    the long edge taken twice below the split)."""
+    mine, theirs = _returned(got), getattr(answer, "pair", None)
+    if mine is not None and theirs is not None and mine[1] < mine[0]:
+        return theirs == mine
+    return set(got) == set(answer)
 
 
 #: The lines a student may intersect instead of the centre line y = row + ½ (r355: y = row − ½,
@@ -427,12 +478,12 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     no_split = at(v[0], v[1]) if y1 != y2 else at(v[1], v[2])
     out["no split"] = _columns(*sorted((math.ceil(long_x - half), math.ceil(no_split - half))))
     short_x = at(v[0], v[1]) if y <= y2 else at(v[1], v[2])
-    out["long edge left"] = _columns(math.ceil(long_x - half), math.ceil(short_x - half))
+    out["long edge left"] = pair_columns(long_x, short_x)
     # r363 M1, C5: the side of the long edge the middle vertex lies on, judged by the long
     # edge at this row (not at the middle vertex's height), or by the top vertex's x
     for kind, long_is_left in (("side at row", x2 > long_x), ("side x2 > x1", x2 > x1)):
         a, b = (long_x, short_x) if long_is_left else (short_x, long_x)
-        out[kind] = _columns(math.ceil(a - half), math.ceil(b - half))
+        out[kind] = pair_columns(a, b)
     if y > y2 and y1 != y2:  # r363 C4: the lower short edge divided by the long edge's height
         wrong = x2 + (y - y2) * (x3 - x2) / (y3 - y1)
         out["lower denominator"] = _columns(*sorted((math.ceil(long_x - half),
@@ -479,6 +530,25 @@ MISTAKES = {
     "covered, one past the last covered one (the first end, first, is right)",
     "last": "you returned (first, last), the last covered column as the second number: it is "
     "stop, the first column *not* covered (last + 1)",
+    # r372 M1, M2: said only where it gives every answer (183 of 200 right was told it)
+    "first and stop swapped": "on every row with a span your pair comes back the wrong way "
+    "round, as (stop, first), which covers nothing: you returned (stop, first) (the pair is "
+    "(first, stop), the first covered column and the first one past the span), or your x_l "
+    "and x_r are swapped on every row",
+    "x_l and x_r swapped": "your x_l and x_r are swapped on every row with a span but those "
+    "along a top edge (whose ends need no side test), so the pair comes back as (stop, first) "
+    "and covers nothing: you judged the middle vertex's side of the long edge the wrong way "
+    "round (or swapped the two ends where the side test picks them)",
+    "int() for floor": "your ends left of x = 0 are one column too far right: int() truncates "
+    "toward zero (int(−9.75) is −9, not −10), so a rounding built from int() is one too high "
+    "for a negative number that is no integer; math.floor and math.ceil round the same way "
+    "on both sides of 0",
+    "clip at 0": "you clipped the span at column 0: the columns are the plane's, negative ones "
+    "too (no image clips them here, as lesson 01's span_fill clips to its image)",
+    "round(x − ½)": "you rounded x − ½ to the nearest integer (round()): the first covered "
+    "column is the first whose centre col + ½ lies at or right of x_l, which round() misses "
+    "whenever x_l − ½ has a fraction below ½ (x_l = 2.8: round(2.3) is 2, yet column 2's "
+    "centre 2.5 lies left of 2.8)",
     "strict": "you took a crossing only strictly between an edge's ends (min < y < max): "
     "where the centre line passes through a vertex, both edges that meet there end on it and "
     "a strict test drops its crossing from both; an edge includes its ends (≤)",
@@ -502,6 +572,7 @@ MISTAKES = {
     "left end: the long edge is the left one only when the middle vertex lies right of it; "
     "here the middle vertex lies left of it, so the long edge bounds the span on the right "
     "(take the smaller crossing as x_l)",
+    **MORE_WORDS,
 }
 
 
@@ -538,10 +609,66 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
 
 
 def _rule(args, expected, got) -> str:
-    return (
+    """The rule, then (r372 M3, M4: where no mistake gives every answer) the crossings the
+    student's pair stands for, beside the exact ones and the edges they lie on."""
+    rule = (
         ": a column is covered when its centre col + ½ lies between the crossings, a centre "
         "on the left edge included and one on the right edge not: ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉"
     )
+    xy, row = args
+    pair = _returned(got)
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
+        return rule
+    half = Fraction(1, 2)
+    ends = []
+    for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
+        if end != math.ceil(x - half):
+            side = "x_l" if name == "first" else "x_r"
+            ends.append(f"your {name} {end} stands for an {side} above {num(end - 0.5)} and at "
+                        f"most {num(end + 0.5)}, but {side} is exactly {_frac(x)}, on "
+                        f"{_edge_of(xy, row, x)}")  # fmt: skip
+    return rule + "".join(f"; {e}" for e in ends)
+
+
+def _edge_of(xy: np.ndarray, row: int, x: Fraction) -> str:
+    """The sorted triangle's edge (or vertex) that the centre line of ``row`` crosses at x."""
+    v = sorted(((Fraction(float(a)), Fraction(float(b))) for a, b in xy), key=lambda p: p[1])
+    y = Fraction(2 * row + 1, 2)
+    if (x, y) in v:
+        return f"the {('top', 'middle', 'bottom')[v.index((x, y))]} vertex"
+    names = {(0, 2): "the long edge (top vertex to bottom one)",
+             (0, 1): "the edge from the top vertex to the middle one",
+             (1, 2): "the edge from the middle vertex to the bottom one"}  # fmt: skip
+    for (i, j), name in names.items():
+        (ax, ay), (bx, by) = v[i], v[j]
+        if (
+            ay != by
+            and min(ay, by) <= y <= max(ay, by)
+            and ax + (y - ay) * (bx - ax) / (by - ay) == x
+        ):
+            return name
+    return "an edge"
+
+
+def _span_raised(args, error: str) -> str:
+    """r372 H1: a ZeroDivisionError on a row whose centre line misses the triangle, or runs
+    along a horizontal edge (a height of 0), told as such: where a crossing cannot be taken."""
+    if "ZeroDivisionError" not in error:
+        return ""
+    xy, row = args
+    y = row + 0.5
+    if winding(xy) == "zero area":
+        return " (this triangle has zero area: its vertices lie on one line)"
+    if not float(xy[:, 1].min()) <= y <= float(xy[:, 1].max()):
+        return (f" (the centre line y = {num(y)} misses the triangle, whose vertices lie "
+                f"between y = {num(float(xy[:, 1].min()))} and {num(float(xy[:, 1].max()))}: "
+                "no edge crosses it, so no crossing can be computed there)")  # fmt: skip
+    kind = _horizontal_edge(xy, y)
+    if kind:
+        return (f" (the centre line y = {num(y)} runs along a horizontal {kind} edge, whose "
+                "height is 0: a crossing with it would be 0/0)")  # fmt: skip
+    return ""
 
 
 def _horizontal_fits(args, expected, got) -> bool:
@@ -576,31 +703,35 @@ def _end_off(expected, got) -> str | None:
     )
 
 
+def _end_number(args, expected, got) -> float | None:
+    """Which end is off, as a number (one on every case, or the symptom is not said)."""
+    end = _end_off(expected, got)
+    return None if end is None else float(("first", "stop right", "stop left").index(end) + 1)
+
+
 def _ends_words(args, expected, got) -> str:
     """Which end is off (r355 S3: "one end" left the student to work out which)."""
     end, stop = _end_off(expected, got), max(expected) + 1
+    xy, row = args
+    cross = crossings(xy, Fraction(2 * row + 1, 2))  # r372 M3: the crossing, not the rule alone
+    xl, xr = (f" = {_frac(x)}" for x in cross) if cross is not None else ("", "")
     if end == "first":
         return (f"your first is one column too far right: column {min(expected)}, whose "
-                "centre lies at or right of x_l, is the first covered one")  # fmt: skip
+                f"centre lies at or right of x_l{xl}, is the first covered one")  # fmt: skip
     side = "right" if end == "stop right" else "left"
     return (f"your stop is one column too far {side}: stop is the first column *not* covered, "
-            f"here {stop} (your first is right)")  # fmt: skip
+            f"here {stop}, the first whose centre lies at or right of x_r{xr} (your first is "
+            "right)")  # fmt: skip
 
 
 SYMPTOMS = (
-    Mistake(
-        "first and stop swapped",
-        "you returned (stop, first): the pair is (first, stop), "
-        "the first covered column and the first one past the span, and a span with stop ≤ "
-        "first covers nothing",
-        fits=_swapped_fits,
-    ),  # fmt: skip
     # r355 C3: named only where float32 explains every failure: a float64 (first, last) or
     # y = row + 1 also misses the one far row where float32 moves an end, and was asked there
     # whether it computed in float32
     Mistake("float32", _far_float32_words, fits=_far_float32_fits, only_whole=True),
     Mistake("horizontal edge", _horizontal_words, fits=_horizontal_fits, symptom=True),
-    Mistake("ends", _ends_words, fits=_ends_fits, symptom=True),
+    # r372 M3: one end off the same way on every failing case, or not said
+    Mistake("ends", _ends_words, fits=_ends_fits, symptom=True, parameter=_end_number),
 )
 
 
@@ -664,22 +795,56 @@ def draw_span(ax, case, got):
                                mew=1.2, zorder=5, label="centre on a crossing")  # fmt: skip
     for name, colour in colours.items():
         artists.append(ax.add_patch(Rectangle((0, 0), 0, 0, color=colour, label=name)))
-    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    artists += _roles(ax, xy, lo, hi)
+    if got is None:  # r372 F2: the note (an exception) beside the axes, the legend below them
+        note_beside(ax)
+        artists.append(ax.legend(fontsize="x-small", loc="upper center", ncol=3,
+                                 bbox_to_anchor=(0.5, -0.3)))  # fmt: skip
+    else:
+        artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo, hi)
     top, bottom = min(float(xy[:, 1].min()), y) - 1, max(float(xy[:, 1].max()), y) + 1
-    ax.set_ylim(min(bottom, max(top, row - 6) + 14), top)  # a huge triangle: rows near this one
+    bottom = min(bottom, max(top, row - 6) + 14)  # a huge triangle: rows near this one
+    # r372 F1: a sliver 1/256 px high collapsed the axes to a strip, its y-label into the
+    # title: at least a third as many rows as columns, around the row
+    tall = max(6.0, (hi - lo) / 3)
+    if bottom - top < tall:
+        top, bottom = y - tall / 2, y + tall / 2
+    ax.set_ylim(bottom, top)
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
     ax.set_ylabel("y (px, down)", fontsize="small")
     return artists
 
 
+def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
+    """The sorted vertices' roles at the vertices in view (r372 F2: the task is about the
+    split, and no figure said which vertex is the middle one)."""
+    order = sorted(range(3), key=lambda k: float(xy[k, 1]))
+    groups: list[tuple[list[str], float, float]] = []  # vertices closer than a pixel: one label
+    for name, k in zip(("top", "middle", "bottom"), order):
+        x, y = float(xy[k, 0]), float(xy[k, 1])
+        near = next((g for g in groups if abs(g[1] - x) < 1 and abs(g[2] - y) < 1), None)
+        if near is not None:
+            near[0].append(name)
+        elif lo <= x <= hi:
+            groups.append(([name], x, y))
+    out = []
+    for names, x, y in groups:  # right of the vertex, or left of it in the window's right part
+        right = x > lo + 0.6 * (hi - lo)
+        out.append(ax.annotate(", ".join(names), (x, y), xytext=(-3 if right else 3, 3),
+                               textcoords="offset points", ha="right" if right else "left",
+                               fontsize="x-small", color="#555555", zorder=6))  # fmt: skip
+    return out
+
+
 def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
     """The columns drawn: the triangle's, at most 40 of them, around the span when the
-    triangle is wider (the wide cases are 10^12 px across)."""
+    triangle is wider (the wide cases are 10^12 px across; r372 F1: 64, so that the 60-px
+    sliver shows both ends of its edge)."""
     lo = math.floor(min(float(xy[:, 0].min()), min(columns, default=0))) - 1
     hi = math.ceil(max(float(xy[:, 0].max()), max(columns, default=0) + 1)) + 1
-    if hi - lo <= 40:
+    if hi - lo <= 64:
         return lo, hi
     centre = (min(columns) + max(columns)) // 2 if columns else lo + 20
     if not columns and cross is not None:
@@ -694,17 +859,39 @@ def _state(rule: bool, yours: bool, no_answer: bool) -> str:
 
 
 def _mistakes() -> list[Mistake]:
-    """The table; the reversed horizontal rule is named only where it gives every answer: a
+    """The table; a wrong solution that gives some failing answers only is named where it
+    gives every failing answer it would change and contradicts no passing one (r372 M4). The
+    reversed horizontal rule is named only where it gives every answer: a
     student with no horizontal rule at all (both edges' centres covered) differs from the rule
     on bottom-edge rows only, where the reversed rule also gives its answer."""
-    return [dataclasses.replace(m, only_whole=True) if m.kind == "horizontal reversed" else m
-            for m in variant_mistakes(_variants, MISTAKES, SYMPTOMS)]  # fmt: skip
+    out = []
+    for m in variant_mistakes(_variants, MISTAKES, SYMPTOMS):
+        if m.gives is not None:  # r372 M4: every failing answer it would change, or no name
+            m = dataclasses.replace(m, must_fit=_changes(m.gives))
+            # r372 M4: and only where it contradicts no passing answer
+            m = dataclasses.replace(m, consistent=True)
+        whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped")
+        out.append(dataclasses.replace(m, only_whole=True) if whole else m)
+    return out
+
+
+def _changes(gives):
+    """``must_fit`` of a wrong solution: the failing cases where it changes the answer. It is
+    named only where it gives the student's answer on every one of them (r372 M4: an empty or
+    shifted span matched a few cases of "long edge left", "x2 > x1" and "no split" by
+    coincidence, and all three were named on a crossing computed with the wrong sign)."""
+
+    def must(args, expected, got) -> bool:
+        value = gives(*args)
+        return value is not None and not same_span(value, expected)
+
+    return must
 
 
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
     _mistakes(), answers=(PackageAnswer(rasterize),),
-    draw=draw_span, constant=_constant_span, hints=(
+    draw=draw_span, constant=_constant_span, raised_words=_span_raised, hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
          "at or right of x_l?"),
@@ -714,6 +901,9 @@ SPAN = Exercise(
         ("so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉", "so count the columns whose centres lie between "
          "them, not the integers nearest to them"),
         (": ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉", ""),
+        # r372: the crossings a student's ends stand for are the rounding itself
+        (re.compile(r"stands for an (x_[lr]) above \S+ and at most \S+, but \1 is"),
+         r"is not what \1 gives: \1 is"),
     ),
-    match=lambda got, answer, args: set(got) == set(answer),
+    match=_match,
 )  # fmt: skip

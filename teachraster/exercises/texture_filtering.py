@@ -17,6 +17,7 @@ floor, swapped weights...), and with the package's own filters on other levels.
 from __future__ import annotations
 
 import re
+import textwrap
 
 import numpy as np
 
@@ -81,12 +82,13 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     (x = u·W + ½); ``floor="trunc"`` finds the texel to the
     left with int(); ``swap`` gives the left texel the weight of the right one (``"x"``, ``"y"``:
     along that axis only), ``swap="fractions"`` blends along x by y's fraction and along y by
-    x's; ``wrap_as``
+    x's, ``swap="x for y"`` blends the two rows by x's fraction too; ``wrap_as``
     wraps with another mode whatever the case says (clamping x and y to the texel centres
     first is the same as ``wrap_as="clamp"``; ``"swapped"``: clamps for "repeat" and tiles for
     "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
     ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels (``"mod
-    repeat"``: for "repeat" only), ``"uv, tiled"`` clamps (u, v) for "clamp" and tiles the
+    repeat"``: for "repeat" only; ``"x mod"``: x = u·W − ½ and y wrapped into [0, W)
+    and [0, H) for "repeat", then the texels clamped), ``"uv, tiled"`` clamps (u, v) for "clamp" and tiles the
     texels all the same;
     ``transpose`` swaps the texture's rows and columns (its H and W too), ``"index"`` reads
     texel (row, col) as ``texture[col, row]`` with H and W right (IndexError where col ≥ H, as
@@ -115,6 +117,9 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         u, v = (np.mod(u, 1.0), np.mod(v, 1.0)) if wrap == "repeat" else np.clip([u, v], 0, 1)
     su, sv = (h, w) if scale == "swapped" else (w, h)  # r362: u scaled by H and v by W
     x, y = u * (su + span) - centre, v * (sv + span) - centre
+    if clamp == "x mod" and wrap == "repeat":  # r375 F7: x = u·W − ½ wrapped, texels clamped
+        x, y = np.mod(x, w), np.mod(y, h)
+        wrap_as = "clamp"
     rounding = {"trunc": np.trunc, "round": np.round}.get(floor, np.floor)
     x0, y0 = rounding(np.array([x, y]))
     fx, fy = x - x0, y - y0
@@ -124,6 +129,8 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         fy = 1 - fy
     if swap == "fractions":
         fx, fy = fy, fx
+    if swap == "x for y":  # r375 F3: the rows blended by x's fraction
+        fy = fx
     mode = wrap_as or wrap
     if mode == "swapped":  # the two modes exchanged
         mode = "clamp" if wrap == "repeat" else "repeat"
@@ -320,7 +327,12 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
              # r219 (a): x's fraction along y and y's along x was told only the rule
              Slip("fractions swapped", "the two fractions are exchanged: you blended the left "
                   "and right texels by y's fraction and the upper and lower ones by x's; each "
-                  "axis takes its own", "fractions")],
+                  "axis takes its own", "fractions"),
+             # r375 F3: the vertical blend by x's fraction was told only the rule
+             Slip("rows blended by x's fraction", lambda a, e, g: "the blend between the two "
+                  "rows uses x's fraction: the rows are weighted by y's own, the lower row by "
+                  f"y − ⌊y⌋ (here y = {num(_xy(a)[1])}) and the upper by 1 − (y − ⌊y⌋)",
+                  "x for y")],
     "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
                 Slip("always repeat", _wrap_words("repeat"), "repeat"),
                 Slip("wrap modes swapped", _modes_swapped_words, "swapped"),
@@ -341,6 +353,12 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
              "clamped the texels to the border: with wrap 'repeat' the texels beyond the border "
              "wrap around too (column −1 is column W − 1), so wrap the texel indices, not (u, v)",
              "mod repeat"),
+        # r375 F7: x = u·W − ½ wrapped into [0, W) was named only on a random case
+        Slip("wrapped x, clamped texels", "you wrapped x = u·W − ½ into [0, W) (and y into "
+             "[0, H)) and then clamped the texel indices: between the last texel's centre and "
+             "the border (x in [W − 1, W), as at u = 0, where x = −½ wraps to W − ½) the texel "
+             "to the right is then column W − 1 again; with wrap 'repeat' it is column 0: wrap "
+             "the texel indices (column W is column 0), not the coordinate", "x mod"),
         Slip("'clamp' tiles the texels", "with wrap 'clamp' you clamped (u, v) to [0, 1] but "
              "tiled the texel indices: at u = 0 the column left of the first is then the last "
              "one, column W − 1, and it blends in; 'clamp' clamps the texel indices (column −1 "
@@ -543,88 +561,214 @@ def bilinear_exercise(scene) -> Exercise:
 
 
 def draw_texture_case(ax, case, got):
-    """The texture (level 0) in texel units, the point (u·W, v·H) and, with the method, the
-    texel centres; the expected value and yours below (r40 07-3: two bars of one number
-    showed nothing of the filter). Before any answer (``got`` None) the inputs only. The four texels bilinear blends,
-    each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2 asks for: drawn
-    once two different answers have failed, as the words say it (r64 07 D2)."""
-    from matplotlib.patches import Rectangle
+    """The texture in texel units, the point (u·W, v·H) and, with the method, the texel
+    centres; the expected value and yours below (r40 07-3: two bars of one number showed
+    nothing of the filter). Before any answer (``got`` None) the inputs only. The four texels
+    bilinear blends, each with its weight, and (x, y) = (u·W − ½, v·H − ½) are the method 7.2
+    asks for: drawn once two different answers have failed, as the words say it (r64 07 D2).
+    A pyramid (7.3) is drawn by :func:`draw_pyramid_case`."""
     from matplotlib.ticker import MaxNLocator
 
     from . import tries
 
-    tex, uv = case[1][0], case[1][1]
-    levels = isinstance(tex, list)  # trilinear: level 0 drawn, the point, no texel weights
-    if levels:
-        tex = tex[0]
-    tex = np.asarray(tex, dtype=float)
+    if isinstance(case[1][0], list):
+        return draw_pyramid_case(ax, case, got)
+    tex, uv, wrap = np.asarray(case[1][0], dtype=float), case[1][1], case[1][2]
     h, w = tex.shape[:2]
-    shown = tex / max(float(np.max(tex)), 1.0)  # 8-bit values drawn as [0, 1]
-    shown = shown if shown.ndim == 2 or shown.shape[2] == 3 else shown[..., 0]
-    artists = [ax.imshow(shown, cmap="gray", vmin=0, vmax=1, extent=(0, w, h, 0),
-                         interpolation="nearest")]  # fmt: skip
     px, py = uv[0] * w, uv[1] * h  # the point, in texel units from the texture's corner
     x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
-    fx, fy = px - 0.5 - x0, py - 0.5 - y0
+    passed = got is not None and same_value(got, case[2], None)
     # the method once earned: the full words given, or this answer right (a passing check)
-    method = (
-        not levels
-        and got is not None
-        and (tries.hints_spent("bilinear") or same_value(got, case[2], None))
-    )
-    # the texel centres answer 7.2's first question (r317 P1: the stub's figure drew them, the
-    # × on one): drawn with the method only, and on 7.3's figures (7.2 has taught them)
-    if method or levels:
-        cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
-        artists += ax.plot(cols.ravel(), rows.ravel(), ".", color="#ff9f1c", ms=4)
-    for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1)) if method else ():
-        weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
-        artists.append(ax.add_patch(Rectangle((x0 + dx, y0 + dy), 1, 1, fill=False,
-                                              edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
-        artists += _draw_wrapped(ax, shown, int(x0 + dx), int(y0 + dy), case[1][2])
-        artists.append(ax.text(x0 + dx + 0.5, y0 + dy + 0.78, f"w {weight:.2g}", ha="center",
-                               fontsize="x-small", color="#2b7bba",
-                               bbox={"facecolor": "white", "alpha": 0.8, "pad": 1,
-                                     "edgecolor": "none"}))  # fmt: skip
-    artists += ax.plot(px, py, "x", color="#d7301f", ms=10, mew=2)
-    ax.set_xlim(min(0, x0) - 0.2, max(w, x0 + 2) + 0.2)
+    method = got is not None and (tries.hints_spent("bilinear") or passed)
+    artists = draw_level(ax, tex, uv, wrap, weights=method)
+    room = 0.8 if method else 0.2  # the weights written outwards, off the texels' centres
+    ax.set_xlim(min(0, x0) - room, max(w, x0 + 2) + room)
     ax.set_ylim(max(h, y0 + 2) + 0.2, min(0, y0) - 0.2)
     ax.set_aspect("equal")
     # r286 FIG7: texel numbers are whole ("0.0 2.5 5.0 7.5" read as fractions of a texel)
     ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax.yaxis.set_major_locator(MaxNLocator(integer=True))
-    where = (f"level 0 of levels 0–{len(case[1][0]) - 1}, λ = {num(case[1][2])}" if levels else
-             f"(u·W, v·H) = ({num(px)}, {num(py)}) texels")  # fmt: skip
+    where = f"(u·W, v·H) = ({num(px)}, {num(py)}) texels"
     if method:
         where = f"x = {num(px - 0.5)}, y = {num(py - 0.5)} in texel centres"
-    text = f"uv = {vec(uv)} (×), {where}" + ("; orange dots: texel centres" if levels else "")
+    text = f"uv = {vec(uv)} (×), {where}"
     if got is not None:
-        expected = np.ravel(case[2])
-        yours = "" if np.size(got) != expected.size else f", yours {_value(got, expected)}"
-        text = f"uv = {vec(uv)} (×), {where};\nthe filtered value is {_value(expected, got)}{yours}"
+        text += f";\nthe filtered value is {_value(case[2], got)}{_yours(got, case[2])}"
+    if passed:  # r375 F2: 7.2's other questions, for this texture's W
+        artists.append(beside(ax, bilinear_questions(w, uv[0])))
     artists.append(ax.set_xlabel(text, fontsize="x-small"))
     return artists
 
 
-def _draw_wrapped(ax, shown, c, r, wrap) -> list:
-    """A box beyond the border filled with the texel it stands for, and which one (r362
-    FIG1: u = 0.05's column −1 was an empty box): "repeat" tiles, "clamp" takes the border."""
+def beside(ax, words: str, width: int = 40):
+    """``words`` beside the axes, right of it (a pass figure's answers to the task's "answer
+    first" questions, r375 F2: under the picture they shrank it)."""
+    text = "\n".join(textwrap.fill(line, width) for line in words.split("\n"))
+    return ax.text(
+        1.04, 0.5, text, transform=ax.transAxes, ha="left", va="center", fontsize="x-small"
+    )
+
+
+def _yours(got, expected) -> str:
+    expected = np.ravel(expected)
+    return "" if np.size(got) != expected.size else f", yours {_value(got, expected)}"
+
+
+def bilinear_questions(w: int, u: float) -> str:
+    """7.2's questions answered for a row of ``w`` texels (r375 F2: the pass figure answered
+    only the first): ``u`` with "clamp", the u's of one texel's value, and of the plain
+    average of columns 1 and 2."""
+    x = u * w - 0.5
+    c0 = int(np.floor(x))
+    cols = [min(max(c, 0), w - 1) for c in (c0, c0 + 1)]
+    t = x - c0
+    centres = ", ".join(num((c + 0.5) / w) for c in range(w))
+    middle = f"; columns 1 and 2 averaged at u = {num(2 / w)}" if w > 2 else ""
+    blend = f"blends columns {cols[0]} and {cols[1]} by {num(1 - t)} and {num(t)}"
+    if cols[0] == cols[1]:
+        blend = f"takes column {cols[0]} alone (columns {c0} and {c0 + 1} both clamped to it)"
+    return (f"7.2: with 'clamp', u = {num(u)} {blend}; one texel's value exactly at u = "
+            f"{centres} (the texel centres){middle}")  # fmt: skip
+
+
+#: The texel weights' and wrapped boxes' labels: classroom size (r375 F6: 9 pt, touching)
+LABEL_SIZE = 12
+
+
+def draw_level(ax, tex, uv, wrap, *, at=(0.0, 0.0), texel=(1.0, 1.0), weights=False,
+               labels=True) -> list:  # fmt: skip
+    """One level (a texture) drawn with texel (r, c)'s square from ``at`` + (c, r)·``texel``,
+    framed (r375 F6: a white corner texel read as missing), the point (u, v) (×) and, with
+    ``weights``, the texel centres and the four texels bilinear blends: boxed, each weight
+    written off its centre on the side away from the point (never on the point, nor on a
+    neighbour's label: r375 F6), a box beyond the border filled with the texel it stands for
+    and named (without ``labels``, the boxes only)."""
+    from matplotlib.patches import Rectangle
+
+    tex = np.asarray(tex, dtype=float)
+    h, w = tex.shape[:2]
+    (ox, oy), (sx, sy) = at, texel
+    shown = tex / max(float(np.max(tex)), 1.0)  # 8-bit values drawn as [0, 1]
+    shown = shown if shown.ndim == 2 or shown.shape[2] == 3 else shown[..., 0]
+    artists = [ax.imshow(shown, cmap="gray", vmin=0, vmax=1, interpolation="nearest",
+                         extent=(ox, ox + w * sx, oy + h * sy, oy)),
+               ax.add_patch(Rectangle((ox, oy), w * sx, h * sy, fill=False,
+                                      edgecolor="black", linewidth=1))]  # fmt: skip
+    px, py = uv[0] * w, uv[1] * h
+    x0, y0 = np.floor(px - 0.5), np.floor(py - 0.5)
+    fx, fy = px - 0.5 - x0, py - 0.5 - y0
+    if weights:
+        cols, rows = np.meshgrid(np.arange(w) + 0.5, np.arange(h) + 0.5)
+        artists += ax.plot(ox + cols.ravel() * sx, oy + rows.ravel() * sy, ".",
+                           color="#ff9f1c", ms=4)  # fmt: skip
+    for dx, dy in ((0, 0), (1, 0), (0, 1), (1, 1)) if weights else ():
+        c, r = int(x0 + dx), int(y0 + dy)
+        artists.append(ax.add_patch(Rectangle((ox + c * sx, oy + r * sy), sx, sy, fill=False,
+                                              edgecolor="#2b7bba", linewidth=2)))  # fmt: skip
+        name = _wrapped_box(ax, shown, c, r, wrap, (ox, oy), (sx, sy), artists)
+        if not labels:
+            continue
+        weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
+        # off the centre, outwards: the point lies between the four centres
+        out_x, out_y = (1 if dx else -1), (1 if dy else -1)
+        cx, cy = ox + (c + 0.5 + 0.12 * out_x) * sx, oy + (r + 0.5) * sy
+        box = {"facecolor": "white", "alpha": 0.85, "pad": 1, "edgecolor": "none"}
+        # the texel a box beyond the border stands for under its weight, in one label
+        lines = [f"w {weight:.2g}"] + ([f"= {name}"] if name else [])
+        artists.append(ax.text(cx, cy + 0.12 * out_y * sy, "\n".join(lines if dy else lines[::-1]),
+                               color="#2b7bba", ha="left" if dx else "right",
+                               va="top" if dy else "bottom", fontsize=LABEL_SIZE, bbox=box))  # fmt: skip
+    artists += ax.plot(ox + px * sx, oy + py * sy, "x", color="#d7301f", ms=10, mew=2)
+    return artists
+
+
+def _wrapped_box(ax, shown, c, r, wrap, at, texel, artists) -> str:
+    """A box beyond the border filled with the texel it stands for; its name ("col 3"), or ""
+    inside the texture (r362 FIG1: u = 0.05's column −1 was an empty box): "repeat" tiles,
+    "clamp" takes the border."""
     from matplotlib.patches import Rectangle
 
     h, w = shown.shape[:2]
     if 0 <= c < w and 0 <= r < h:
-        return []
+        return ""
     if wrap == "repeat":
         cw, rw = c % w, r % h
     else:
         cw, rw = min(max(c, 0), w - 1), min(max(r, 0), h - 1)
     grey = np.broadcast_to(np.clip(shown[rw, cw], 0, 1), (3,))
-    name = f"col {cw}" if 0 <= r < h else f"row {rw}" if 0 <= c < w else f"({rw}, {cw})"
-    return [
-        ax.add_patch(Rectangle((c, r), 1, 1, facecolor=tuple(grey), edgecolor="none", zorder=0)),
-        ax.text(c + 0.5, r + 0.3, f"= {name}", ha="center", fontsize="xx-small", color="#2b7bba",
-                bbox={"facecolor": "white", "alpha": 0.8, "pad": 1, "edgecolor": "none"}),
-    ]  # fmt: skip
+    corner = (at[0] + c * texel[0], at[1] + r * texel[1])
+    artists.append(ax.add_patch(Rectangle(corner, *texel, facecolor=tuple(grey),
+                                          edgecolor="none", zorder=0)))  # fmt: skip
+    return f"col {cw}" if 0 <= r < h else f"row {rw}" if 0 <= c < w else f"({rw}, {cw})"
+
+
+#: 7.3's "answer first" λ's, for a pyramid of 8 × 8 down to 1 × 1 (r375 F2: never answered)
+QUESTION_LODS = (1.25, 3.4, -0.7)
+
+
+def level_weights(q: int, lod: float) -> dict[int, float]:
+    """{level: weight} trilinear blends at ``lod`` on levels 0 to ``q`` (one level where λ,
+    clamped to [0, q], is whole)."""
+    _, _, d0, d1, t = _split(range(q + 1), lod)
+    return {d0: 1.0} if d0 == d1 or t == 0 else {d0: 1.0 - t, d1: t}
+
+
+def _weights_words(q: int, lod: float) -> str:
+    pairs = level_weights(q, lod)
+    lam = min(max(lod, 0.0), q)
+    clamped = "" if lam == lod else f" (λ clamped to {num(lam)})"
+    if len(pairs) == 1:
+        return f"level {next(iter(pairs))} alone{clamped}"
+    return " + ".join(f"{num(t)}·level {d}" for d, t in pairs.items()) + clamped
+
+
+def trilinear_questions(q: int) -> str:
+    """7.3's question answered for levels 0 to ``q``: the levels and weights of each of
+    :data:`QUESTION_LODS`."""
+    said = "".join(f"\nλ = {num(lod)}: {_weights_words(q, lod)}" for lod in QUESTION_LODS)
+    return f"7.3, on levels 0–{q}:{said}"
+
+
+def draw_pyramid_case(ax, case, got):
+    """7.3's case (r375 F5: level 0 was drawn, which λ = 1.5 does not read): before the
+    method is earned every level side by side, each in (u, v) from 0 to 1, the point (×) on
+    each; with it (two different answers failed, or this one right) the levels λ reads, each
+    with its four weighted texels and its level weight, the same (u, v) on both and the texels
+    of the upper twice as large; a passing figure answers 7.3's λ's too."""
+    from . import tries
+
+    pyramid, uv, lod, wrap = case[1]
+    q, lam, d0, d1, t = _split(pyramid, lod)
+    passed = got is not None and same_value(got, case[2], None)
+    method = got is not None and (tries.hints_spent("trilinear") or passed)
+    weights = level_weights(q, lod) if method else {}
+    shown = list(weights) if method else list(range(q + 1))
+    artists, gap = [], 0.3
+    for k, d in enumerate(shown):
+        h, w = np.shape(pyramid[d])[:2]
+        ox = k * (1 + gap)
+        small = max(h, w) <= 8  # the weights written where a texel has room for them
+        artists += draw_level(ax, pyramid[d], uv, wrap, at=(ox, 0.0), texel=(1 / w, 1 / h),
+                              weights=method, labels=small)  # fmt: skip
+        title = f"level {d} ({h}×{w})" + (f", weight {num(weights[d])}" if method else "")
+        artists.append(ax.text(ox + 0.5, -0.04, title, ha="center", va="bottom",
+                               fontsize=LABEL_SIZE))  # fmt: skip
+    right = len(shown) * (1 + gap) - gap + 0.3
+    if passed:  # 7.3's λ's beside the levels, inside the axes (its width follows the levels)
+        artists.append(ax.text(right, 0.5, trilinear_questions(q), ha="left", va="center",
+                               fontsize="x-small"))  # fmt: skip
+    ax.set_xlim(-0.3, right + (1.9 if passed else 0.0))
+    ax.set_ylim(1.1, -0.2)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    text = f"uv = {vec(uv)} (× on each level: the same (u, v)), λ = {num(lod)}"
+    if method:
+        text += f": {_weights_words(q, lod)}"
+    if got is not None:
+        text += f";\nthe filtered value is {_value(case[2], got)}{_yours(got, case[2])}"
+    artists.append(ax.set_xlabel(text, fontsize="x-small"))
+    return artists
 
 
 # -- trilinear --------------------------------------------------------------------------------
@@ -652,6 +796,7 @@ def _trilinear_cases(rng, word):
         ("a non-square pyramid (8×4, 4×2, 2×1, 1×1)", p84, (0.3, 0.8), 1.5, "repeat"),
         ("a non-square pyramid, λ = 2.25", p84, (0.9, 0.1), 2.25, "clamp"),
         ("three channels", p3, (0.55, 0.35), 0.75, "repeat"),
+        ("λ = 1.25, 7.3's first question", p8, (0.3, 0.6), 1.25, "repeat"),  # r375 F5
     ]
     out = [(label, (pyr, np.array(uv, float), lod, wrap)) for label, pyr, uv, lod, wrap in hard]
     for n in range(12):
@@ -703,7 +848,8 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     is the last); ``weights="swapped"``; ``levels`` "nearest" (round(λ) alone), "round()"
     (the level Python's round() of the weight picks), "lower" (⌊λ⌋ alone) or "round for
     floor" (levels round(λ) and round(λ) + 1, weighted by λ − round(λ)), "round lower" (the
-    same levels, weighted by λ − ⌊λ⌋); ``clamp="q - 1"``
+    same levels, weighted by λ − ⌊λ⌋), "coarsest first" (level d read as pyramid[q − d]);
+    ``weights="half"`` (½ each between two levels); ``clamp="q - 1"``
     clamps λ to [0, q − 1]; ``texels="level 0 size"`` filters every level with level 0's W
     and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
@@ -741,9 +887,13 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
         return level(0)
     if levels == "upper":
         return level(upper)
+    if levels == "coarsest first":  # r375 F9: pyramid[q − d] for level d
+        lower, upper = q - lower, q - upper
     a, b = level(lower), level(upper)
     if weights == "swapped":
         t = 1 - t
+    if weights == "half":  # r375 F9: ½ each wherever λ lies between two levels
+        t = 0.5 if 0 < t < 1 else t
     return (1 - t) * a + t * b
 
 
@@ -793,6 +943,8 @@ def _tri_words(text):
             lam=num(lam),
             off=num(lam - round(lam)),
             near_up=min(round(lam) + 1, q),
+            r0=q - d0,
+            r1=q - d1,
         )
 
     return words
@@ -822,7 +974,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "one)"), "index"),
     ],
     "weights": [Slip("weights swapped", _tri_words("the weight of level {d1} is the fraction "
-                     "λ − ⌊λ⌋ = {t}; you gave it to level {d0}"), "swapped")],
+                     "λ − ⌊λ⌋ = {t}; you gave it to level {d0}"), "swapped"),
+                # r375 F9: told only the rule
+                Slip("weights ½ each", _tri_words("you weighted the two levels ½ each whatever "
+                     "λ's fraction, so the value jumps as λ moves; trilinear blends levels {d0} "
+                     "and {d1}, level {d1} weighted by λ − ⌊λ⌋ = {t}"), "half")],
     "levels": [
         Slip("nearest level", _tri_words("that is level {near} alone (the nearest); trilinear "
              "blends levels {d0} and {d1}"), "nearest"),
@@ -840,6 +996,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "{lam} rounds to level {near}, so you blended levels {near} and {near_up}; "
              "trilinear blends levels ⌊λ⌋ = {d0} and {d1}, level {d1} weighted by λ − ⌊λ⌋ = "
              "{t}"), "round lower"),
+        # r375 F9: told only the rule
+        Slip("levels counted from the coarsest", _tri_words("you counted the levels from the "
+             "coarsest: pyramid[0] is level 0, the full-size texture, and pyramid[{q}] the 1×1 "
+             "level q = {q}; λ = {lam} reads pyramid[{d0}] and pyramid[{d1}], you read "
+             "pyramid[{r0}] and pyramid[{r1}]"), "coarsest first"),
         Slip("lower level only", _tri_words("that is level {d0} alone; trilinear blends it with "
              "level {d1} by {t}"), "lower"),
         Slip("upper level only", _tri_words("that is level {d1} alone; trilinear blends it with "
@@ -910,8 +1071,12 @@ def _no_level_above_q(args, error) -> str:
     "at most q" (r317: told "raised IndexError: list index out of range" only)."""
     pyramid, _, lod, _ = args
     q = len(pyramid) - 1
-    if not error.startswith("your function raised IndexError") or not q <= lod < q + 1:
+    if not error.startswith("your function raised IndexError") or lod < q:
         return ""
+    if lod >= q + 1:  # r375 F9: λ clamped to len(pyramid), or not at all, was told the error
+        return (f": at λ = {num(lod)}, above the pyramid, λ clamped to [0, q] = [0, {q}] "
+                f"reads level {q} alone: q = len(pyramid) − 1 is the last level's number, and "
+                f"pyramid[{q + 1}] is out of range; clamp λ to [0, q] before taking its levels")  # fmt: skip
     return (f": at λ = {num(lod)}, ⌊λ⌋ = {q} is already the last level, q = {q}, and there "
             f"is no level q + 1 = {q + 1} (pyramid[{q + 1}] is out of range): the upper level "
             "is ⌊λ⌋ + 1 at most q, so here level q is blended with itself")  # fmt: skip
@@ -925,5 +1090,5 @@ def trilinear_exercise(scene) -> Exercise:
         hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
         inputs_drawn=True, raised_words=_no_level_above_q,
-        example=2,  # r362 FIG1: λ = 1.5, between two levels (λ = 0 was level 0 alone)
+        example=19,  # r375 F5: λ = 1.25, 7.3's first question (r362: λ = 0 was level 0 alone)
     )  # fmt: skip

@@ -11,13 +11,17 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from matplotlib.ticker import FormatStrFormatter, NullFormatter
+from matplotlib.patches import Patch
+from matplotlib.ticker import FixedLocator, FormatStrFormatter, NullFormatter
 
 from ..study.span_subdivision import SpanSubdivision, true_u
 from .style import COLORS, OKABE_ITO
 
-#: The miss panel's log axis (texels): below its floor a miss is drawn on the floor.
+#: The miss panel's log axis (texels): a miss from ``MISS_FLOOR`` up is drawn at its value; a
+#: smaller one (the misses fall to 0 at every exact divide) is drawn at ``MISS_BELOW``, in a
+#: grey band under the floor whose tick reads "< 0.01", and the key says so.
 MISS_FLOOR, MISS_TOP = 0.01, 400.0
+MISS_BELOW, MISS_BOTTOM = 0.0035, 0.0012
 #: Points per pixel of the fine curves (true u, and the chords' miss between pixel centres).
 FINE_PER_PIXEL = 8
 
@@ -36,6 +40,12 @@ class SpanArtists:
     pixel_miss: object  # |chord - true| at the pixel centres (dots)
 
 
+def shown_miss(miss) -> np.ndarray:
+    """``|miss|`` where the panel can draw it, ``MISS_BELOW`` (the "< 0.01" band) below that."""
+    miss = np.abs(np.asarray(miss, dtype=float))
+    return np.where(miss < MISS_FLOOR, MISS_BELOW, miss)
+
+
 def _fine(s: SpanSubdivision):
     x = np.linspace(0.0, s.length - 1, (s.length - 1) * FINE_PER_PIXEL + 1)
     chord = np.interp(x, s.anchors, s.anchor_u)
@@ -49,7 +59,7 @@ def _bound_path(s: SpanSubdivision):
         if len(s.anchors) < 2:
             break
         xs += [s.anchors[k], s.anchors[k + 1], np.nan]
-        ys += [max(b, MISS_FLOOR), max(b, MISS_FLOOR), np.nan]
+        ys += [float(shown_miss(b)), float(shown_miss(b)), np.nan]
     return xs, ys
 
 
@@ -76,25 +86,34 @@ def plot_span(ax_u, ax_miss, s: SpanSubdivision) -> SpanArtists:
     ax_u.set(xlim=(-1, s.length), ylim=(-0.04 * s.texels, 1.04 * s.texels),
              ylabel="u (texels)")  # fmt: skip
     ax_u.legend(loc="upper left", fontsize="small", frameon=False)
-    (miss,) = ax_miss.plot(x, np.maximum(np.abs(chord - u), MISS_FLOOR), color=COLORS["outside"],
-                           lw=2, label="chord − true")  # fmt: skip
+    (miss,) = ax_miss.plot(x, shown_miss(chord - u), color=COLORS["outside"], lw=2,
+                           label="chord − true")  # fmt: skip
     (bounds,) = ax_miss.plot(*_bound_path(s), color=OKABE_ITO["blue"], lw=2.5, ls="--",
                              label="(√ρ − 1)²/(ρ − 1) · Δu")  # fmt: skip
-    (pix,) = ax_miss.plot(np.arange(s.length), np.maximum(np.abs(s.pixel_miss), MISS_FLOOR), "o",
-                          color="0.2", ms=3.5, label="at pixel centres")  # fmt: skip
-    ax_miss.set_yscale("log")
-    ax_miss.yaxis.set_major_formatter(FormatStrFormatter("%g"))  # 0.01 ... 100, not 10⁻²
-    ax_miss.yaxis.set_minor_formatter(NullFormatter())
-    ax_miss.set(ylim=(MISS_FLOOR, MISS_TOP), xlabel="pixel along the span",
-                ylabel="miss (texels)")  # fmt: skip
+    (pix,) = ax_miss.plot(np.arange(s.length), shown_miss(s.pixel_miss), "o", color="0.2",
+                          ms=3.5, label="at pixel centres")  # fmt: skip
+    _miss_axis(ax_miss)
+    below = Patch(color="0.88", label="below 0.01 texel: drawn in the grey band")
     # the key under the panel: inside it, any corner hid an arc at some N and r
-    ax_miss.figure.legend(handles=[miss, bounds, pix], loc="outside lower center",
-                          fontsize="small", frameon=False, ncols=3)  # fmt: skip
+    ax_miss.figure.legend(handles=[miss, bounds, pix, below], loc="outside lower center",
+                          fontsize="small", frameon=False, ncols=2)  # fmt: skip
     for ax in (ax_u, ax_miss):
         ax.grid(True, alpha=0.3)
     art = SpanArtists(true, chords, dots, worst, worst_text, miss, bounds, pix)
     _label_worst(art, s)
     return art
+
+
+def _miss_axis(ax) -> None:
+    """The miss panel's log axis: 0.01 ... 100 texels, and under 0.01 a grey band, "< 0.01"."""
+    ax.set_yscale("log")
+    ax.axhspan(MISS_BOTTOM, MISS_FLOOR, color="0.88", lw=0, zorder=0)
+    tops = [10.0**e for e in range(-2, 3)]  # 0.01 ... 100, not 10⁻²
+    ax.set_yticks([MISS_BELOW, *tops], ["< 0.01", *(f"{t:g}" for t in tops)])
+    minor = [k * t for t in tops for k in range(2, 10) if k * t <= MISS_TOP]
+    ax.yaxis.set_minor_locator(FixedLocator(minor))  # none in the band: it has no scale
+    ax.yaxis.set_minor_formatter(NullFormatter())
+    ax.set(ylim=(MISS_BOTTOM, MISS_TOP), xlabel="pixel along the span", ylabel="miss (texels)")
 
 
 def _label_worst(art: SpanArtists, s: SpanSubdivision) -> None:
@@ -115,9 +134,9 @@ def update_span(art: SpanArtists, s: SpanSubdivision) -> None:
     art.anchors.set_data(s.anchors, s.anchor_u)
     art.worst.set_data(*_worst_segment(s))
     _label_worst(art, s)
-    art.miss.set_ydata(np.maximum(np.abs(chord - u), MISS_FLOOR))
+    art.miss.set_ydata(shown_miss(chord - u))
     art.bounds.set_data(*_bound_path(s))
-    art.pixel_miss.set_ydata(np.maximum(np.abs(s.pixel_miss), MISS_FLOOR))
+    art.pixel_miss.set_ydata(shown_miss(s.pixel_miss))
 
 
 #: One colour per screen size in :func:`plot_subdivision_law` (256², 512², 1024², ...).

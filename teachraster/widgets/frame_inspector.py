@@ -91,7 +91,7 @@ HISTORY_AXES = (1.2, 0.14, 0.24, 0.66)
 #: call a disabled test (``glDisable(GL_DEPTH_TEST)``, ``DepthEnable = FALSE``,
 #: ``depthTestEnable = VK_FALSE``), which writes no depth (review r261 M1: a box labelled
 #: "depth test" behaved like no API's test-off).
-DEPTH_TEST_LABEL = "depth test (off = ALWAYS, writes on)"
+DEPTH_TEST_LABEL = "depth test on (untick: ALWAYS, writes on)"
 
 #: Alpha of every triangle of a scene drawn as glass (``glass=True``).
 GLASS_ALPHA = 0.5

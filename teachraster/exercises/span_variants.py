@@ -1,0 +1,242 @@
+"""More wrong spans of exercise 2.1 (``span``, r372) and the rows that tell them apart.
+
+Each variant is a whole wrong solution the checker runs on a case: a crossing computed in
+another order of its operations (divide first, as lesson 01 writes Ek's formula, or the slope
+first), a wrong formula for one crossing (the slope inverted, the long edge's sign, the upper
+short edge divided by the long edge's height), a wrong choice of the edges or of x_l (the
+winding as given, before the sort; the vertices sorted by x; the long edge used again below the
+split; the lower short edge above it), or the vertices moved to pixel centres. A variant is
+named only where it gives every answer of the check (:mod:`.spans`).
+
+>>> a, b = (0.5, 19.5), (84.5, 103.5)
+>>> float_crossing(a, b, 42.5, "divide first"), float_crossing(a, b, 42.5, "multiply first")
+(23.500000000000004, 23.5)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from fractions import Fraction
+
+import numpy as np
+
+#: r372 P1: lesson 01's triangle ``big`` (vertices on centres, edges 84 and 88 px high): its
+#: rows 42, 46, 65 and 73 are crossed exactly on a centre, where a crossing divided first
+#: lands a hair off it; and two triangles of random centres (numpy seed 372) whose rows 64 and
+#: 89 do the same to a crossing computed slope first, (y − y1)·((x3 − x1)/(y3 − y1)).
+TIE_ROWS = (
+    (((0.5, 19.5), (1.5, 107.5), (84.5, 103.5)), (42, 46, 65, 73)),
+    (((89.5, 57.5), (49.5, 69.5), (119.5, 19.5)), (64,)),
+    (((37.5, 114.5), (55.5, 4.5), (9.5, 14.5)), (89,)),
+)
+
+#: r372 P2, F1: triangles left of and above the origin (``int()`` truncates toward zero, a
+#: clip at column 0 empties them), one across column 0, and a bottom edge on a centre line
+#: that is no sliver.
+PLACED = (
+    ("left of and above the origin", ((-10.25, -11.5), (-2.75, -8.75), (-7.125, -2.5)),
+     (-11, -9, -7, -4)),
+    ("across column 0", ((-6.5, 2.25), (5.75, 4.5), (-1.25, 9.75)), (3, 5, 8)),
+    ("a vertical left edge at x = 3", ((3.0, 0.5), (3.0, 8.5), (9.25, 6.75)), (4,)),
+    ("a horizontal bottom edge on a centre line, 6 px wide", ((3.25, 1.75), (9.5, 6.5),
+     (3.5, 6.5)), (5, 6)),
+)  # fmt: skip
+
+ORDERS = ("multiply first", "divide first", "slope first")
+
+#: The range the task states (r372 T1): vertices on the 1/256-px grid with |x|, |y| below
+#: 2^17 px. A crossing multiplied first is exact there: its differences are multiples of 2^-8
+#: below 2^18 px, their product a multiple of 2^-16 below 2^36 px², 52 bits, exact in float64;
+#: lesson 01 §4b gives the rest of the proof (and 2^18 px for its own part). Every case lies
+#: within it but the triangle 10^12 px wide, whose asked rows are exact in any order.
+EXACT_BELOW = 2**17
+
+
+def float_crossing(a, b, y: float, order: str = "multiply first") -> float:
+    """x where the line at height ``y`` meets edge a-b, in float64, its operations in
+    ``order``: ``a_x + (y − a_y)(b_x − a_x)/(b_y − a_y)`` (multiply first), ``(y − a_y)/(b_y −
+    a_y)·(b_x − a_x) + a_x`` (divide first: lesson 01's ``crossing``), ``a_x + (y − a_y)·((b_x −
+    a_x)/(b_y − a_y))`` (slope first)."""
+    (ax, ay), (bx, by) = (float(a[0]), float(a[1])), (float(b[0]), float(b[1]))
+    if order == "divide first":
+        return (y - ay) / (by - ay) * (bx - ax) + ax
+    if order == "slope first":
+        return ax + (y - ay) * ((bx - ax) / (by - ay))
+    return ax + (y - ay) * (bx - ax) / (by - ay)
+
+
+HALF = Fraction(1, 2)
+
+
+class Pair(frozenset):
+    """The columns first <= col < stop, with the pair (first, stop) itself (``pair``), which a
+    solution that picks x_l by a side test may return the wrong way round (r372 M2)."""
+
+    pair: tuple[int, int] | None = None
+
+
+def pair_columns(x_left, x_right) -> Pair:
+    """The columns of the crossings x_left, x_right taken as they are (exact for Fractions,
+    float64 for floats), with their pair."""
+    first, stop = math.ceil(x_left - HALF), math.ceil(x_right - HALF)
+    out = Pair(range(first, stop))
+    out.pair = (first, stop)
+    return out
+
+
+def _cols(lo, hi) -> frozenset:
+    return pair_columns(lo, hi)
+
+
+def _at(a, b, y):
+    return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+
+def _pick(long_x, short_x, long_is_left: bool) -> frozenset:
+    return _cols(long_x, short_x) if long_is_left else _cols(short_x, long_x)
+
+
+#: The kinds of :func:`more_variants`, in the table's order.
+KINDS = (
+    "divide first", "slope first", "upper denominator", "slope inverted", "long edge sign",
+    "side by given winding", "side by the short edge", "long edge below the split", "lower edge above the split",
+    "sorted by x", "vertices on centres",
+)  # fmt: skip
+
+
+def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozenset]:
+    """{kind: the columns that wrong solution gives on ``row``}, each the right answer
+    (``exact(xy, row)``, the exact columns) wherever the mistake changes nothing. The side of
+    the long edge is judged as the lesson's loop judges it (the middle vertex against the long
+    edge at its height), so a crossing moved past the other one empties the span."""
+    right = exact(xy, row)
+    out = dict.fromkeys(KINDS, right)
+    out["vertices on centres"] = exact(np.floor(np.asarray(xy, dtype=float)) + 0.5, row)
+    out["sorted by x"] = _sorted_by_x(xy, row)
+    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = Fraction(2 * row + 1, 2)
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if area == 0 or not y1 <= y <= y3 or y1 == y2 == y or y2 == y3 == y:
+        return out
+    upper = y < y2
+    short = (v[0], v[1]) if upper else (v[1], v[2])
+    long_is_left = x2 > _at(v[0], v[2], y2)
+    long_x, short_x = _at(v[0], v[2], y), _at(*short, y)
+    fv = [(float(a), float(b)) for a, b in v]
+    fshort = (fv[0], fv[1]) if upper else (fv[1], fv[2])
+    for order in ("divide first", "slope first"):
+        out[order] = _pick(float_crossing(fv[0], fv[2], float(y), order),
+                           float_crossing(*fshort, float(y), order), long_is_left)  # fmt: skip
+    if upper:  # r372 M3: the upper short edge divided by the long edge's height
+        out["upper denominator"] = _pick(long_x, x1 + (y - y1) * (x2 - x1) / (y3 - y1),
+                                         long_is_left)  # fmt: skip
+    (ax, ay), (bx, by) = short
+    inverted = ax + (y - ay) * (by - ay) / (bx - ax) if bx != ax else ax  # r372 M4
+    out["slope inverted"] = _pick(long_x, inverted, long_is_left)
+    out["long edge sign"] = _pick(x1 - (y - y1) * (x3 - x1) / (y3 - y1), short_x, long_is_left)
+    a, b, c = ((Fraction(float(p[0])), Fraction(float(p[1]))) for p in xy)
+    given = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    out["side by given winding"] = _pick(long_x, short_x, given > 0)  # r372 M1 (w36)
+    out["side by the short edge"] = _pick(long_x, short_x, x2 > short_x)  # r372 M1 (w24)
+    if not upper:  # r372 M4 (w43): the long edge taken as the lower short one too
+        out["long edge below the split"] = pair_columns(long_x, long_x)
+    elif y2 != y3:  # r372 H1 (w44): the lower short edge's line above the split too
+        out["lower edge above the split"] = _pick(long_x, _at(v[1], v[2], y), long_is_left)
+    return out
+
+
+def _sorted_by_x(xy: np.ndarray, row: int) -> frozenset | None:
+    """The span of the exercise's own steps with the roles given by x, not y (r372 M6): None
+    where it divides by zero (the student's function raises there)."""
+    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[0])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = Fraction(2 * row + 1, 2)
+    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not y1 <= y <= y3:
+        return frozenset()
+    if y2 == y3 == y:
+        return frozenset()
+    if y1 == y2 == y:
+        return _cols(min(x1, x2), max(x1, x2))
+    try:
+        long_x = _at(v[0], v[2], y)
+        short_x = _at(*((v[0], v[1]) if y < y2 else (v[1], v[2])), y)
+        u4 = _at(v[0], v[2], y2)
+    except ZeroDivisionError:
+        return None
+    return _pick(long_x, short_x, x2 > u4)
+
+
+def _side_words(how: str) -> str:
+    return (
+        f"your x_l and x_r are swapped on the rows where this matters: you judged which side of "
+        f"the long edge the middle vertex lies on {how}; judge it after the sort, by the long "
+        "edge where it reaches the middle vertex's height (or take the smaller crossing as x_l)"
+    )
+
+
+def _tie_off(args, order: str) -> str:
+    """Where this order's crossing lands off the centre it lies on exactly (r372 P1)."""
+    xy, row = args
+    v = sorted(((float(x), float(y)) for x, y in xy), key=lambda p: p[1])
+    y = row + 0.5
+    for a, b, name in ((v[0], v[2], "the long edge"), (v[0], v[1], "the upper short edge"),
+                       (v[1], v[2], "the lower short edge")):  # fmt: skip
+        if a[1] == b[1] or not a[1] <= y <= b[1]:
+            continue
+        exact = _at(*(tuple(map(Fraction, p)) for p in (a, b)), Fraction(2 * row + 1, 2))
+        got = float_crossing(a, b, y, order)
+        if (exact - Fraction(1, 2)).denominator == 1 and got != exact:
+            side = "right" if got > exact else "left"
+            return (
+                f": on {name} yours lands at {got!r}, a hair {side} of the centre "
+                f"{float(exact):g} it lies on exactly, so the tie went to the wrong side"
+            )
+    return (
+        ": it lands a hair to one side of a crossing that lies exactly on a centre, so "
+        "the tie went to the wrong side"
+    )
+
+
+def _order_words(order: str, what: str):
+    def words(args, expected, got) -> str:
+        return (f"your crossing divides first: {what} rounds (its quotient has no finite "
+                f"binary fraction){_tie_off(args, order)}. Which order of the same operations "
+                "gives a crossing exactly on the 1/256-px grid? (lesson 01 §4b)")  # fmt: skip
+
+    return words
+
+
+WORDS = {
+    "divide first": _order_words("divide first", "(y − a_y)/(b_y − a_y)"),
+    "slope first": _order_words("slope first", "the slope (b_x − a_x)/(b_y − a_y)"),
+    "upper denominator": "above the middle vertex your crossing of the edge from the top "
+    "vertex to the middle one is off: you divided by y3 − y1, the long edge's height, not by "
+    "that edge's own height y2 − y1",
+    "slope inverted": "your crossing of the short edge is off: you multiplied y − y_a by "
+    "(y_b − y_a)/(x_b − x_a), the edge's slope dy/dx; along the edge x changes by x_b − x_a "
+    "while y changes by y_b − y_a",
+    "long edge sign": "your crossing of the long edge is off: you subtracted the step from x1 "
+    "(x1 − …) where the edge runs from x1 towards x3: going down by y − y1, x moves by that "
+    "share of x3 − x1, added to x1",
+    "side by given winding": _side_words(
+        "by the winding of the vertices as given (their order before the sort): the sort "
+        "reorders them, so the winding says nothing about the sorted roles"
+    ),
+    "side by the short edge": _side_words(
+        "by comparing it with the short edge's crossing at this row (u4 = x_short): point 4 "
+        "lies on the long edge, at the middle vertex's height"
+    ),
+    "long edge below the split": "below the middle vertex you took the long edge (top vertex "
+    "to bottom one) as the short one too, so both ends are the long edge's crossing and the "
+    "span is empty: the short edge there runs from the middle vertex to the bottom one",
+    "lower edge above the split": "you used the edge from the middle vertex to the bottom one "
+    "above the middle vertex too: there the other bound is the edge from the top vertex to "
+    "the middle one (the split)",
+    "sorted by x": "you sorted the vertices by x: the roles top, middle and bottom come from "
+    "sorting by y, the direction the raster lines advance in",
+    "vertices on centres": "you moved the vertices to pixel centres (⌊c⌋ + ½) before "
+    "computing: the crossings are those of the triangle as given, its vertices on the "
+    "1/256-px grid anywhere inside a pixel",
+}
