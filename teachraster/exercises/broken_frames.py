@@ -317,14 +317,20 @@ class _Look:
     # them apart, so that "a number the list asks for is the one in the frame's own history").
     # Not frame 1's: drawn in another order, its two faces would both pass, parting at blending
     meant_order: int | None = None
+    # r377 F1: the cube's triangles listed backwards, so that every two of them swap, the two
+    # of a face as well as the faces: where a pixel's history culls two or more, the first
+    # culled triangle is another one (rolled only, "the first culled" stayed right at 439 of
+    # the 446 pixels where it was; a roll after the reversal would restore each pair it wraps,
+    # so the redrawn looks reverse with no roll: ``order`` 0)
+    backwards: bool = False
 
 
 #: The look of the frames shown, and the looks a check redraws them with (one at random).
 _SHOWN = _Look()
 _REDRAWN = (
-    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 3, 9),
-    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 5, 10),
-    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 7, 2),
+    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 0, 9, True),
+    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 0, 10, True),
+    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 0, 2, True),
 )
 
 
@@ -344,6 +350,8 @@ def _cube(look: _Look, winding_reversed: bool = False, meant: bool = False, **kw
     # the same triangles in another order: the same picture (the depth test decides), other
     # triangle numbers, so that a number typed in fails the redrawn frame
     order = look.meant_order if meant and look.meant_order is not None else look.order
+    if look.backwards:
+        clip, rgba = clip[::-1], rgba[::-1]
     clip, rgba = np.roll(clip, -order, axis=0), np.roll(rgba, -order, axis=0)
     return render(clip, W, H, attrs=rgba, trace=True, clear_color=(1, 1, 1, 1), **kwargs)
 
