@@ -3052,11 +3052,13 @@ R309 = {
         "broken_frame_5",
         lambda b: ("blend order", (23, 41), _glass_of(b, 23, 41, True).color_after[:3]),
         f"{OTHER_FRAME} (the intended frame's history", "the other frame's value"),
+    # r377 F2: the wall's depth is in the intended frame's history too (the one the list
+    # names): the wall's record, the wrong triangle, not "the other frame's value"
     "frame 6, the broken frame's wall depth": (
         "broken_frame_6",
         lambda b: ("sliver", (22, 40), (_rs.READ[6](b, 22, 40)[0],
                                         next(r.depth for r in _records(b, 22, 40) if r.shown))),
-        f"{OTHER_FRAME} (the broken frame's history", "the other frame's value"),
+        "is triangle 0's depth in the intended frame's history", "another record's value"),
     "frame 4, RGBA for (r, g, b)": (
         "broken_frame_4",
         lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52).color),

@@ -47,10 +47,12 @@ the two frames agree; the frame's cause at a changed pixel that does not show it
 not the frame's (the value is then not judged: r18-2); a triangle's number read off the
 intended frame's history (r84 11-2: the cube's redrawn pair numbers its two frames apart); the
 frame shown's value given for the redrawn frame; another surface's depth in the evidence's own
-history (z-fighting: the wall's, r318); the evidence's value read off the other frame
-of the pair (r309: the intended frame's, or the broken frame's where the list asks the
-intended frame's); a value that is not the evidence there (and a row and column, or the
-sliver's two numbers, swapped: said first).
+history (z-fighting: the wall's, r318); another record's value, or another field's, in the history
+the list names (r377: said by triangle, field and frame); the evidence's value read off the
+other frame of the pair, only where the history the list names lacks it (r309: the intended
+frame's, or the broken frame's where the list asks the intended frame's; r377: with its
+record); a value that is not the evidence there (and a row and column, or the sliver's two
+numbers, swapped: said first).
 """
 
 from __future__ import annotations
@@ -848,6 +850,8 @@ def as_diagnosis(value, number: int | None = None) -> tuple[str, tuple[int, int]
 def _loose(value):
     """Evidence kept as given, hashable (the verdicts are cached): a number, numbers, or its
     text."""
+    if isinstance(value, int | np.integer) and not isinstance(value, bool | np.bool_):
+        return int(value)  # r377 F6e: a triangle's number, quoted as "3", never "3.0"
     x = _real(value)
     if x is not None:
         return x
@@ -958,9 +962,14 @@ def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
     # (0.6 is also the depth the broken frame stores): said before "the other frame's"
     if _other_surface(cause, p, value):
         return "surface", p
-    # after "copied": a value typed in from the frame shown may be, by chance, the redrawn
-    # pair's other frame's (frame 7's 0.4, a redrawn strip's depth)
-    if _matches(kind, value, _mirrored(b, cause, p)[1]):
+    # r377 F2, F5: a value found in the history the list names is another record's (or
+    # another field's) there, whichever frame also holds it; "the other frame's" only where
+    # the named history lacks it. After "copied": a value typed in from the frame shown may
+    # be, by chance, the redrawn pair's other frame's (frame 7's 0.4, a redrawn strip's depth)
+    found = _source(b, cause, p, value)
+    if found is not None and found[1].named:
+        return "record", p
+    if found is not None or _matches(kind, value, _mirrored(b, cause, p)[1]):
         return "other", p
     return "evidence", p
 
@@ -1021,6 +1030,114 @@ def _read_from(b: BrokenFrame, cause: str, p: _Pixel, record) -> bool:
     if cause == "blend order":
         return record.outcome == "passed" and record.color_after in _evidence(b, cause, p)
     return False
+
+
+#: The fields of a history record a value of each kind may have been read from, and their
+#: names in words (r377 F5: a value read off the wrong record was told only what it is not).
+_FIELDS = {
+    "depth": (("depth", "depth"), ("depth_before", "depth stored before it")),
+    "number": (("outside", "distance outside {edge}"),),
+    "colour": (("color", "fragment colour"), ("color_after", "'after'"),
+               ("color_before", "'before'")),
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class _Source:
+    """Where a wrong value was read: in which frame's history (``named``: the one the list
+    reads that value from), off which record, and which of its fields (their words)."""
+
+    named: bool
+    whose: str
+    record: object
+    fields: tuple
+
+    def label(self) -> str:
+        """The record and field, as "triangle 0's depth"."""
+        fields = " and ".join(f.format(edge=self.record.edge) for f in self.fields)
+        return f"triangle {self.record.triangle}'s {fields}"
+
+    def state(self) -> str:
+        """What the record's history says of it."""
+        r = self.record
+        if r.outcome == "passed":
+            return ("the fragment the pixel shows" if r.shown else
+                    f"its fragment passed, then covered by triangle {r.hidden_by}")  # fmt: skip
+        return {"failed_depth": "its fragment failed the depth test",
+                "hi_z": "its fragment failed the Hi-Z test",
+                "not_covered": "it does not cover the centre"}.get(r.outcome, r.outcome)  # fmt: skip
+
+
+def _fields_of(kind: str, record, value) -> tuple:
+    """The words of ``record``'s fields (:data:`_FIELDS`) that hold ``value``."""
+    found = []
+    for field, words in _FIELDS[kind]:
+        x = getattr(record, field, None)
+        if kind == "colour":
+            held = bool(x) and _matches(kind, value, [x])
+        else:
+            held = x is not None and bool(np.isfinite(x)) and _matches(kind, value, [x])
+        if held:
+            found.append(words)
+    return tuple(found)
+
+
+def _evidence_parts(cause: str, value) -> list:
+    """(words, kind, value, read off the intended frame's history?) for each part of an
+    answer's evidence: the sliver's two numbers, or the one value."""
+    if cause == "sliver":
+        return [("distance", "number", value[0], False), ("depth", "depth", value[1], True)]
+    return [("value", EVIDENCE[cause][0], value, cause == "z-fighting")]
+
+
+def _source(b: BrokenFrame, cause: str, p: _Pixel, value):
+    """(the wrong part's words, :class:`_Source`) for a value that is not the evidence but a
+    field of a record in the pixel's two histories: the history the list names searched
+    first, field by field (:data:`_FIELDS`' order), the records that hold the evidence first;
+    None where it is in neither (or for a triangle's number)."""
+    if EVIDENCE[cause][0] == "triangle":
+        return None
+    evidence = _evidence(b, cause, p)
+    for i, (part, kind, x, meant) in enumerate(_evidence_parts(cause, value)):
+        right = [e[i] for e in evidence] if cause == "sliver" else evidence
+        if cause == "sliver" and _matches(kind, x, right):
+            continue  # this part is right: the other one is wrong
+        for named, intended in ((True, meant), (False, not meant)):
+            h = p.meant if intended else p.mine
+            records = sorted(h.records, key=lambda r: not _holds(kind, r, right))
+            for field, _ in _FIELDS[kind]:
+                r = next((r for r in records if field in _field_names(kind, r, x)), None)
+                if r is not None:
+                    whose = "the intended frame's" if intended else "the broken frame's"
+                    return part, _Source(named, whose, r, _fields_of(kind, r, x))
+        return None
+    return None
+
+
+def _field_names(kind: str, record, value) -> tuple:
+    """The names of ``record``'s fields that hold ``value``."""
+    words = dict(_FIELDS[kind])
+    return tuple(f for f, w in words.items() if w in _fields_of(kind, record, value))
+
+
+def _holds(kind: str, record, values) -> bool:
+    """Does one of ``record``'s fields hold one of ``values``?"""
+    return any(_fields_of(kind, record, v) for v in values)
+
+
+def _part_evidence(b: BrokenFrame, cause: str, p: _Pixel, part: str) -> list:
+    """The evidence's values for one part (words of :func:`_evidence_parts`)."""
+    evidence = _evidence(b, cause, p)
+    return [e[part == "depth"] for e in evidence] if cause == "sliver" else evidence
+
+
+def _holder(b: BrokenFrame, cause: str, p: _Pixel, part: str):
+    """The record of the named history that holds the evidence's ``part`` (words of
+    :func:`_evidence_parts`), or None."""
+    _, kind, _, meant = next(q for q in _evidence_parts(cause, (0.0, 0.0)) if q[0] == part)
+    values = _part_evidence(b, cause, p, part)
+    h = p.meant if meant else p.mine
+    return next((r for r in h.records if _holds(kind, r, values)), None)
 
 
 def _same(got, number, args=None) -> bool:
@@ -1201,12 +1318,77 @@ def _triangle_words(number, got) -> str:
     return f": triangle {value} is {mine[0].outcome} here, but {drawn}"
 
 
-def _other_frame_words(args, number, got) -> str:
-    """The evidence's value read off the other frame of the pair (:func:`_mirrored`): said
-    first, then where to read it (r309: five such answers were told only what was asked)."""
+#: What each part of the evidence is, in the words of a wrong value's message (the sliver's
+#: pair: EVIDENCE's words, one part at a time).
+_PART_WORDS = {
+    "distance": "how far (px) the pixel's centre lies outside the thin triangle, in the broken "
+    "frame's history",
+    "depth": "the depth of the fragment the intended frame draws there instead (where the "
+    "broken frame draws none), in the intended frame's history",
+}
+
+
+def _yours(cause: str, part: str, value) -> str:
+    """The wrong part of an answer's evidence, as a message quotes it."""
+    if part == "value":
+        return f"your value {_shown(cause, value)}"
+    x = tuple(value)[0 if part == "distance" else 1]
+    return f"your {part}, {round(x, 4 if part == 'distance' else 6)},"
+
+
+def _sourced_words(number, got) -> tuple[str, _Source, str, str]:
+    """(the wrong part quoted, where it was read, what the list asks, the evidence's record
+    where it holds the value too) for a value found in
+    the pixel's histories (:func:`_source`), the evidence's own record and field named
+    (r377 F5: "0.46 is triangle 3's distance in the intended frame's history; the list asks
+    for the thin triangle's, in this frame"), and the evidence's record where it holds the
+    value too (frame 4's pane's 'after' is the wall's colour)."""
     cause, (row, col), value = got
     b = _as_frame(number)
-    whose = _mirrored(b, cause, _pixel(b, row, col))[0]
+    p = _pixel(b, row, col)
+    part, src = _source(b, cause, p, value)
+    what = EVIDENCE[cause][1] if part == "value" else _PART_WORDS[part]
+    holder, also = _holder(b, cause, p, part), None
+    if holder is not None:
+        kind, x = next((k, v) for w, k, v, _ in _evidence_parts(cause, value) if w == part)
+        if holder is not src.record and _fields_of(kind, holder, x):
+            also = _Source(src.named, src.whose, holder, _fields_of(kind, holder, x))
+        held = next(
+            f for e in _part_evidence(b, cause, p, part) if (f := _fields_of(kind, holder, e))
+        )
+        what += f": here, triangle {holder.triangle}'s {held[0].format(edge=holder.edge)}"
+    return _yours(cause, part, value), src, what, (f", as is {also.label()}" if also else "")
+
+
+def _record_words(args, number, got) -> str:
+    """A value read off the history the list names, but off another record or field
+    (r377 F2: frame 8's wall depth, read off the intended frame as asked, was told "the value
+    in the other frame"; F5: the value was told only what it is not)."""
+    cause, (row, col), _ = got
+    yours, src, what, also = _sourced_words(number, got)
+    swap = _swapped(number, got)
+    hint = _history_hint(number, row, col, "the intended" if "intended" in what else what)
+    return ((f"{swap[0].lower()}{swap[1:]}. " if swap else "")
+            + f"{yours} is {src.label()} in {src.whose} history of ({row}, {col}) "
+            f"({src.state()}){also}, not the evidence: the list asks for {what}. Read it off "
+            f"{hint}")  # fmt: skip
+
+
+def _other_frame_words(args, number, got) -> str:
+    """The evidence's value read off the other frame of the pair (:func:`_mirrored`), absent
+    from the history the list names: said first, with the record it was read off (r377 F5),
+    then where to read it (r309: five such answers were told only what was asked)."""
+    cause, (row, col), value = got
+    b = _as_frame(number)
+    p = _pixel(b, row, col)
+    if _source(b, cause, p, value) is not None:
+        yours, src, what, _ = _sourced_words(number, got)
+        own = "the intended frame's" if src.whose == "the broken frame's" else "the broken frame's"
+        where = "" if "history" in what else f", in {own} history"
+        return (f"{yours} is the value in the other frame of the pair ({src.whose} history of "
+                f"({row}, {col}): {src.label()}, {src.state()}): the list asks for {what}"
+                f"{where}. Read it off {_history_hint(number, row, col, 'the intended')}")  # fmt: skip
+    whose = _mirrored(b, cause, p)[0]
     own = "the intended frame's" if whose == "the broken frame's" else "the broken frame's"
     what = EVIDENCE[cause][1]
     if cause == "sliver":
@@ -1306,6 +1488,7 @@ DIAGNOSIS_MISTAKES = (
     Mistake("the intended frame's number", _meant_words, fits=_verdict("intended")),
     Mistake("typed in", _copied_words, fits=_verdict("copied")),
     Mistake("another surface's depth", _surface_words, fits=_verdict("surface")),
+    Mistake("another record's value", _record_words, fits=_verdict("record")),
     Mistake("the other frame's value", _other_frame_words, fits=_verdict("other")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
 )
