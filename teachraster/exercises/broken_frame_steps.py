@@ -10,7 +10,8 @@ GL 4.6 §2.3.5; lesson 05b; said as a hint until two answers failed, r318 M1). T
 is the frame shown, then frame 3 redrawn twice with another wall and its intended pane
 another distance from the wall (:func:`.broken_frames.frame_3_apart`: r318, 66 steps in
 every look, so 66 typed in passed). Typical mistakes named: steps of 1/2¹⁶ in place of
-1/(2¹⁶ − 1), the depths or their difference given for steps, a difference of the printed
+1/(2¹⁶ − 1), the pane read off the broken frame's history (tied: the wall's number; r377 F3),
+the depths or their difference given for steps, a difference of the printed
 (rounded) depths scaled but not rounded to a whole number of steps, the printed depths scaled
 and rounded up or down, the frame shown's steps apart typed in. (Rounding up or down the
 depths themselves is no mistake here and cannot be told apart: the renderer compares each
@@ -154,8 +155,26 @@ def _constant(value) -> str:
     return TYPED.removeprefix(": ") if typed else constant_words(value)
 
 
+def _tied(args, expected, got) -> bool:
+    """The pane read off the broken frame's own history, where it fails on a tie at the
+    wall's depth: its whole number is the wall's (r377 F3: told the unorm16 rule)."""
+    return got[1] == expected[0] != expected[1]
+
+
+def _tied_words(args, expected, got) -> str:
+    (b,) = args
+    return (
+        f": your pane, {got[1]:g}, is the wall's number: that is frame 3's pane as drawn, "
+        f"tied with the wall (read off the broken frame's history, b.frame.history{PIXEL}, "
+        "where it fails on a tie at the wall's depth); the question asks for the intended "
+        f"pane, the depth the intended frame's history prints ({_printed(b)[1]:.6f}), in "
+        "the buffer's steps"
+    )
+
+
 MISTAKES = [
     Mistake("typed in", TYPED, fits=lambda a, e, g: _copied(a, e, g)),
+    Mistake("the broken frame's tied pane", _tied_words, fits=_tied),
     Mistake("apart typed in", lambda a, e, g: f": {g[2]:g} steps apart is frame 3's as "
             "shown; this frame's intended pane is drawn another distance from the wall: count "
             "the steps from the depths its history prints", fits=_apart_copied),

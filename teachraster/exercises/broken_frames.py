@@ -60,6 +60,7 @@ from __future__ import annotations
 import hashlib
 import operator
 import secrets
+import textwrap
 import threading
 from dataclasses import dataclass
 from functools import cache, lru_cache
@@ -582,19 +583,56 @@ _NOTES = {
     "opaque surface is drawn after it, since the glass writes no depth (were it written, the\n"
     "surface behind would fail the depth test and the glass would show over the clear colour\n"
     "instead); transparent geometry is drawn last, back to front.",
-    6: "Frame 6 is contrived so that the strip is missing everywhere: the thin triangle lies\n"
-    "between the rows of pixel centres along its whole length. A sliver usually shows as a\n"
-    "broken, dotted line, where it covers a centre now and then.",
+    # r377 F6b: "between the rows of pixel centres" of a triangle that runs across 13 rows
+    6: lambda: (
+        "Frame 6 is contrived so that the strip is missing everywhere: the thin "
+        f"triangle {_threads(6)}. A sliver usually shows as a broken, dotted line, where it covers "
+        "a centre now and then."
+    ),
     7: "Frame 7 is not contrived: with the depths mapped the other way round, glass in front of\n"
     "a wall drawn first fails the test wherever the wall is behind it.",
-    8: "Frame 8 is contrived so that the strip is missing everywhere: the thin triangle runs\n"
-    "along the strip's top edge, between the rows of pixel centres. A sliver usually shows as\n"
-    "a broken, dotted line, where it covers a centre now and then.",
+    8: lambda: (
+        "Frame 8 is contrived so that the strip is missing everywhere: the thin "
+        f"triangle, along the strip's top edge, {_threads(8)}. A sliver usually shows as a "
+        "broken, dotted line, where it covers a centre now and then."
+    ),
     9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
     "wall is drawn (the glass writes no depth); the usual cure draws transparent geometry\n"
     "last, back to front.",
 }
 
+
+def _threads(number: int) -> str:
+    """How the thin triangle of frame ``number`` (as shown) misses every pixel centre, in
+    words with the numbers its corners give: the rows of pixels it runs across, and in each
+    column it crosses, how near it comes to the centres above and below it and how tall it is
+    there (r377 F6b: "between the rows of pixel centres" said of a triangle across 13 rows)."""
+    frame = broken_frame(number).frame
+    xy = frame.trace.window[int(np.argmin(_altitudes(frame))), :, :2]
+    cols = np.arange(np.ceil(xy[:, 0].min() - 0.5), np.floor(xy[:, 0].max() - 0.5) + 1) + 0.5
+    spans = []
+    for x in cols:  # the triangle's vertical extent on the column's line of centres
+        ys = [ya + (yb - ya) * (x - xa) / (xb - xa)
+              for (xa, ya), (xb, yb) in zip(xy, np.roll(xy, -1, axis=0), strict=True)
+              if xa != xb and min(xa, xb) <= x <= max(xa, xb)]  # fmt: skip
+        spans.append((min(ys), max(ys)))
+    lo, hi = np.array(spans).T
+    clear = min((lo - np.floor(lo - 0.5) - 0.5).min(), (np.ceil(hi - 0.5) + 0.5 - hi).min())
+    rows = int(np.floor(xy[:, 1].max()) - np.floor(xy[:, 1].min())) + 1
+    return (f"runs across {rows} rows of pixels, yet in each of the {len(cols)} columns it "
+            f"crosses it threads between two pixel centres, {clear:.3f} px or more from each "
+            f"(it is at most {(hi - lo).max():.3f} px tall there)")  # fmt: skip
+
+
+#: Frame 1's note, before its depths (r377 F6c: the depths alone, where every other note
+#: says how the frame was made and how its mistake usually shows).
+FRAME_1_NOTE = (
+    "Frame 1 is not contrived: its depths are mapped the other way round, near at 1 and far\n"
+    "at 0 (reverse-Z: a reversed projection, often with glClipControl(..., GL_ZERO_TO_ONE)),\n"
+    "while the depth test still keeps the smaller (GL_LESS, where reverse-Z needs GL_GREATER),\n"
+    "so wherever two surfaces overlap the farther one is kept: the back of every object shows\n"
+    "through its front. Its two faces' depths at one pixel:"
+)
 
 #: Frame 1's note: a pixel where the two faces overlap, and the triangles of the face in
 #: front and of the face behind (in the intended frame's order), whose depths it prints.
@@ -630,7 +668,10 @@ def frame_note(number: int, report) -> str:
         raise ValueError(f"number must be one of {[1, *sorted(_NOTES)]}, got {number}")
     name = f"broken_frame_{number}"
     if getattr(report, "exercise", None) == name and issued(report) and report.passed:
-        return _frame_1_depths() if number == 1 else _NOTES[number]
+        if number == 1:
+            return f"{FRAME_1_NOTE}\n{_frame_1_depths()}"
+        note = _NOTES[number]
+        return textwrap.fill(note(), 90) if callable(note) else note
     # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
     # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
     return f"A note on frame {number} is printed here once the check of {name} above passes."
@@ -1597,11 +1638,13 @@ def _zoom(ax, frame: Frame, row: int, col: int, x0: float) -> list:
                    label="the thin triangle")  # fmt: skip
     artists.append(ax.add_patch(thin))
     thin.set_clip_path(box)
-    # the key in the zoom's top row, which the needle (a slope of 1/4 through the middle row)
-    # never reaches (under the axes it ran into the x label), in points: the classroom
-    # style's relative sizes made it wider than the zoom
-    artists.append(ax.legend(handles=[thin], loc="upper right", fontsize=6, framealpha=0.9,
-                             borderpad=0.3, handlelength=1.2, handletextpad=0.4))  # fmt: skip
+    # r377 F6a: the key at a classroom size (6 pt in the zoom's top row was about 5 pt on
+    # screen), under the zoom, where no tick labels stand: wider than the zoom at that size
+    from ..plotting.common import fs
+
+    artists.append(ax.legend(handles=[thin], loc="upper right", bbox_to_anchor=(1, -0.01),
+                             fontsize=fs(0.7), framealpha=0.9, borderpad=0.2,
+                             handlelength=1.0, handletextpad=0.3, borderaxespad=0))  # fmt: skip
     return artists
 
 
