@@ -3978,3 +3978,90 @@ KINDS.update({
     "depth set-up quoting unorm24's Δz": 'dz of the other buffer',
     'depth set-up with float32 without reverse-Z': 'float32 forward',
 })  # fmt: skip
+
+
+# == r377: exercise 11, a wrong value named by its record (triangle, field, frame); 'the other
+# frame's value' only where the history the list names lacks it; 11.3b's tied pane ==========
+def _failed_depth(b, row, col):
+    return next(r.depth for r in _records(b, row, col) if r.outcome in ("failed_depth", "hi_z"))
+
+
+def _thin_outside(b, row, col, intended=False, triangle=None):
+    """The distance of the first not-covered record (of ``triangle``, if given)."""
+    return next(r.outside for r in _records(b, row, col, intended)
+                if r.outcome == "not_covered" and triangle in (None, r.triangle))  # fmt: skip
+
+
+R377 = {
+    "frame 1, the failed fragment's depth": (
+        "broken_frame_1",
+        lambda b: ("depth function", (24, 28), _failed_depth(b, 24, 28)),
+        "is triangle 9's depth in the broken frame's history of (24, 28) (its fragment failed "
+        "the depth test), not the evidence", "another record's value"),
+    "frame 7, the strip's failing depth": (
+        "broken_frame_7",
+        lambda b: ("depth function", (25, 52), _failed_depth(b, 25, 52)),
+        "is triangle 2's depth in the broken frame's history of (25, 52) (its fragment failed "
+        "the Hi-Z test)", "another record's value"),
+    "frame 4, the pane's 'after' for its fragment colour": (
+        "broken_frame_4",
+        lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52).color_after[:3]),
+        "as is triangle 3's 'after' and 'before', not the evidence: the list asks for the "
+        "fragment colour (r, g, b) the blend received: here, triangle 3's fragment colour",
+        "another record's value"),
+    "frame 5, the strip's fragment colour for its 'after'": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41), _glass_of(b, 23, 41).color[:3]),
+        "is triangle 1's fragment colour in the broken frame's history of (23, 41)",
+        "another record's value"),
+    "frame 5, the wall's colour that replaced the strip's": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41),
+                   next(r.color_after[:3] for r in _records(b, 23, 41) if r.shown)),
+        "is triangle 2's fragment colour and 'after' in the broken frame's history of (23, 41) "
+        "(the fragment the pixel shows)", "another record's value"),
+    "frame 5, the clear colour (a 'before')": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41), _records(b, 23, 41)[0].color_before[:3]),
+        "'before' in the broken frame's history of (23, 41)", "another record's value"),
+    "frame 6, the intended frame's not-covered distance": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), (_thin_outside(b, 22, 40, True, 3),
+                                        _glass_of(b, 22, 40, True).depth)),
+        "your distance, 0.46, is the value in the other frame of the pair (the intended frame's "
+        "history of (22, 40): triangle 3's distance outside E12", "the other frame's value"),
+    "frame 6, the wall triangle's distance": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), (_thin_outside(b, 22, 40),
+                                        _glass_of(b, 22, 40, True).depth)),
+        "is triangle 1's distance outside E12 in the broken frame's history of (22, 40)",
+        "another record's value"),
+    "frame 8, the wall's depth read off the intended frame": (
+        "broken_frame_8",
+        lambda b: ("sliver", (21, 39), (_thin_outside(b, 21, 39, triangle=2),
+                                        next(r.depth for r in _records(b, 21, 39, True)
+                                             if r.outcome == "passed" and r.color[3] == 1))),
+        "your depth, 0.6, is triangle 0's depth in the intended frame's history of (21, 39)",
+        "another record's value"),
+    "frame 1, the intended frame's depth shown, its record named": (
+        "broken_frame_1",
+        lambda b: ("depth function", (24, 28),
+                   next(r.depth for r in _records(b, 24, 28, True) if r.shown)),
+        "(the intended frame's history of (24, 28): triangle 9's depth, the fragment the pixel "
+        "shows)", "the other frame's value"),
+    "frame 2, the first culled triangle, unmatched": (
+        "broken_frame_2",
+        lambda b: ("culled winding", (24, 32),
+                   next(r.triangle for r in _records(b, 24, 32) if r.outcome == "culled")),
+        "is culled here, but the intended frame's history shows it not_covered here",
+        "evidence"),
+    "frame 3 steps, the pane read off the broken frame": (
+        "broken_frame_3_steps",
+        lambda b: (lambda w, p: (w, p, w - p))(
+            round(next(r.depth for r in _records(b, 13, 52) if r.outcome == "passed") * 65535),
+            round(next(r.depth for r in _records(b, 13, 52) if r.outcome == "hi_z") * 65535)),
+        "your pane, 39321, is the wall's number: that is frame 3's pane as drawn, tied",
+        "the broken frame's tied pane"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R377.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R377.items()})
