@@ -1766,13 +1766,15 @@ def test_r309_the_text_says_four_decimals_and_asks_frame_3_in_the_buffers_steps(
     for telling in ("unorm", "z-fight", "tie", "16-bit", "precision", "buffer", "05b", "format"):
         assert telling not in task, telling
     assert "unorm16" not in cells["broken_frame_3_steps_solution"].split("### BEGIN")[0]
-    wall, pane, apart = sol.broken_frame_3_steps(ex.broken_frame(3))
-    assert f"drawn {apart} steps nearer" in cells["broken_frame_3_steps_solution"]
+    # r377 F4: 11.3b asks the fewest depth bits in which frame 3's pane wins wherever the
+    # wall lies (the question before was a transcription); the solution reasons it out
+    bits = sol.broken_frame_3_steps(ex.broken_frame(3))
+    assert "gap * (2**n - 1) >= 1" in cells["broken_frame_3_steps_solution"]
     note = ex.frame_note(3, ex.check("broken_frame_3", sol.diagnosis(3)))
-    # r318 M1: the formula is the check's hint, not the question's; C1: the glass writes no
-    # depth, so the pane's number is what it is compared as
-    assert "11.3b asks:" in note and "round(" not in note and "compared as" in note, note
+    # r318 M1: the formula is the check's hint, not the question's; the drawn depths are the
+    # trace's (the histories print the pane's as stored, tied)
+    assert "11.3b asks:" in note and "round(" not in note and "trace.window[k, :, 2]" in note
     assert "11.3b" not in ex.frame_note(3, None)
-    # r318: the redrawn frames' panes lie other distances from the wall (66 typed in passed)
+    # r318: the redrawn frames' panes lie other distances from the wall (typed in, it fails)
     cases = bfs.BROKEN_FRAME_3_STEPS.cases()
-    assert [c[2][2] for c in cases] == [apart, 41, 97], cases
+    assert [c[2] for c in cases] == [bits, 22, 18], cases

@@ -4,7 +4,9 @@ intended frame as asked, was told "the other frame's value"; 11.3b's pane read o
 frame was told the unorm16 rule; eight wrong values were told only what they are not; frame
 6's note said the sliver lies between the rows of centres; frame 1's note gave depths only;
 the failing figure left its height empty and keyed the sliver at 5 pt; 11.8 and 11.9 did not
-repeat the 30 s wait. The slips are corpus cases too (``student_variants.R377``)."""
+repeat the 30 s wait; 11.3b was a transcription (F4): it now asks the fewest depth bits in
+which frame 3's pane would win wherever the wall lies. The slips are corpus cases too
+(``student_variants.R377``)."""
 
 from __future__ import annotations
 
@@ -160,3 +162,34 @@ def test_frames_8_and_9_repeat_the_wait_for_a_wrong_cause():
         task = " ".join(cells[f"frame_{n}_task"].split())
         assert f"a check naming a wrong cause waits {tries.CAUSE_STEP:g} s" in task, task
         assert "until a check of this frame passes or the kernel restarts" in task, task
+
+
+def test_11_3b_needs_the_drawn_depths_and_a_whole_step_and_its_figure_hides_the_answer():
+    """F4: the question is answered from the trace's drawn depths (the histories print the
+    pane tied at the wall's), by the whole-step reasoning of lesson 05b; the redrawn cases
+    change the answer; the failing figure marks the student's n alone, never the curve whose
+    crossing of the whole step is the answer."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.exercises import broken_frame_steps as bfs
+
+    cases = bfs.BROKEN_FRAME_3_STEPS.cases()
+    answers = [c[2] for c in cases]
+    assert len(set(answers)) == 3, answers
+    for _, (b,), bits in cases:
+        gap = bfs._gap(b)
+        assert gap * (2**bits - 1) >= 1 > gap * (2 ** (bits - 1) - 1), (gap, bits)
+        tied = [r.depth for r in b.frame.history(*bfs.PIXEL).records if r.outcome != "not_covered"]
+        assert len(set(tied)) == 1, tied  # the histories print the pane tied at the wall
+    assert ex.check("broken_frame_3_steps", sol.broken_frame_3_steps).passed
+    report = ex.check("broken_frame_3_steps", lambda b: 2 + sol.broken_frame_3_steps(b))
+    fig, ax = plt.subplots()
+    try:
+        report.plot(ax)
+        assert [len(line.get_xdata()) for line in ax.lines if line.get_marker() == "x"] == [1]
+        assert all(len(line.get_xdata()) <= 2 for line in ax.lines), "a curve over n"
+    finally:
+        plt.close(fig)

@@ -498,15 +498,15 @@ def _redrawn(number: int, look: _Look | None = None) -> BrokenFrame:
     return _drawn(number, look or _REDRAWN[secrets.randbelow(len(_REDRAWN))])
 
 
-def frame_3_apart(steps: float, look: _Look | None = None) -> BrokenFrame:
-    """Frame 3 (the same tie) redrawn with ``look`` (one of :data:`_REDRAWN` at random) and
-    its intended pane ``steps`` of the 16-bit buffer nearer than the wall, for 11.3b (r318:
-    in every look the pane was 66 steps nearer, so 66 typed in passed). Frame 3's check
-    keeps :func:`_redrawn`."""
-    symptom, broken, _ = _SPECS[2]
-    look = look or _REDRAWN[secrets.randbelow(len(_REDRAWN))]
-    intended = _pixels([_wall(look), _pane(look, steps / 65535)])
-    return BrokenFrame(3, symptom, _handed_out(broken(look)), _handed_out(intended))
+def frame_3_gap(gap: float, look: int | None = None) -> BrokenFrame:
+    """Frame 3 redrawn with look number ``look`` of :data:`_REDRAWN` (None: one at random),
+    its pane drawn ``gap`` nearer than the wall (frame 3's: 1e-6), for 11.3b (r377 F4: the
+    fewest depth bits in which the pane wins, which a typed-in number must not pass). Frame
+    3's check keeps :func:`_redrawn`."""
+    _, _, intended = _SPECS[2]
+    look = _REDRAWN[secrets.randbelow(len(_REDRAWN)) if look is None else look]
+    broken = _pixels([_wall(look), _pane(look, gap)])
+    return BrokenFrame(3, _SPECS[2][0], _handed_out(broken), _handed_out(intended(look)))
 
 
 def frames_to_inspect() -> dict[str, Frame]:
@@ -552,12 +552,11 @@ def frame_marks() -> dict:
 #: Frame 3's follow-up (11.3b, :mod:`.broken_frame_steps`), printed in frame 3's note.
 _STEPS_QUESTION = (
     "the histories' first line names the depth format, unorm16\n"
-    "(lesson 05b). At a pixel of the pane, which whole number does the buffer store the wall's\n"
-    "depth as, which whole number is the intended pane's depth compared as (the glass writes no\n"
-    "depth: the buffer keeps the wall's), and how many steps apart are they?\n"
-    "broken_frame_3_steps(b) returns (wall, pane, apart), worked out from the depths the\n"
-    "intended frame's history prints (frame 3's pane is drawn nearer than the wall too, by less\n"
-    "than half a step)."
+    "(lesson 05b), and they print each depth as that buffer stores it: the pane's tied at the\n"
+    "wall's. The depth a triangle k is drawn at is frame.trace.window[k, :, 2]. How many bits\n"
+    "must a unorm depth buffer have at least for frame 3's pane, drawn where frame 3 draws it,\n"
+    "to win the depth test wherever the wall lies? broken_frame_3_steps(b) returns that\n"
+    "number, worked out from the depths b's trace holds."
 )
 
 #: A note on each frame (how it was made, and how its mistake usually shows), told once its
