@@ -122,12 +122,6 @@ def _rule(args, expected, got) -> str:
             "trace holds them (frame.trace.window[k, :, 2])")  # fmt: skip
 
 
-def _copied(args, expected, got) -> bool:
-    """The frame shown's number, given for a redrawn frame."""
-    (b,) = args
-    return b is not broken_frame(3) and got == _bits(_gap(broken_frame(3))) != expected
-
-
 #: What the frame shown's number, typed in, is told.
 TYPED = (": that is frame 3's number as shown; this is frame 3 redrawn with another wall and "
          "its pane another distance from it, so read the depths inside your function, off "
@@ -172,7 +166,8 @@ def _raised(args, error: str) -> str:
 
 
 MISTAKES = [
-    Mistake("typed in", TYPED, fits=_copied),
+    # the frame shown's number typed in is the same in every case: said by _constant (a
+    # per-case test named a computed answer that happened to equal it)
     Mistake("this wall's depth only", HERE, fits=lambda a, e, g: g == _here(a[0]) != e),
     # half a step's n and log₂(1 + 1/gap) rounded down are one bit short alike
     Mistake("a step short", lambda a, e, g: f": with {g} bits the gap is half a step or "
@@ -184,7 +179,7 @@ MISTAKES = [
 
 #: The reasoning, said as a hint until two different answers have failed.
 HINTS = ((RULE, ": how far apart must two depths be for an n-bit buffer to store them as "
-          "different whole numbers whatever they are? (lesson 05b)"),)  # fmt: skip
+          "different whole numbers whatever they are?"),)  # fmt: skip
 
 
 def _draw(ax, case, got):
