@@ -247,13 +247,16 @@ def clip_near_colour(v, colours):
 
 
 def broken_frame_3_steps(b, row=13, col=52):
-    """Frame 3's wall and intended pane in the 16-bit buffer's whole steps, and the steps
-    between them: round(d · (2**16 - 1)) of the depths the intended history holds."""
-    records = b.intended.history(row, col).records
-    wall = next(r.depth for r in records if r.outcome == "passed" and r.color[3] == 1)
-    pane = _glass(b.intended.history(row, col)).depth
-    wall, pane = round(wall * (2**16 - 1)), round(pane * (2**16 - 1))
-    return wall, pane, wall - pane
+    """The fewest bits of a unorm depth buffer in which frame 3's pane wins wherever the wall
+    lies (r377 F4): the least n with gap · (2**n - 1) >= 1, the gap read off the trace."""
+    records = b.frame.history(row, col).records
+    wall = next(r for r in records if r.outcome == "passed" and r.color[3] == 1)
+    pane = next(
+        r for r in records if r.outcome in ("hi_z", "failed_depth", "passed") and r is not wall
+    )
+    z = b.frame.trace.window[:, :, 2]
+    gap = z[wall.piece, 0] - z[pane.piece, 0]
+    return math.ceil(math.log2(1 + 1 / gap))
 
 
 CORRECT = {

@@ -3011,21 +3011,6 @@ def _glass_of(b, row, col, intended=False):
                 if r.outcome == "passed" and r.color[3] < 1)  # fmt: skip
 
 
-def _wall_and_pane(b):
-    """The intended frame's wall and pane depths at (13, 52), as a student reads them."""
-    wall = next(r.depth for r in _records(b, 13, 52, True)
-                if r.outcome == "passed" and r.color[3] == 1)  # fmt: skip
-    return wall, _glass_of(b, 13, 52, True).depth
-
-
-def _steps_with(scale, apart=None):
-    def fn(b):
-        wall, pane = (round(d * scale) for d in _wall_and_pane(b))
-        return wall, pane, (wall - pane) if apart is None else apart(*_wall_and_pane(b))
-
-    return fn
-
-
 OTHER_FRAME = "is the value in the other frame of the pair"
 R309 = {
     "frame 1, the intended frame's depth shown": (
@@ -3052,11 +3037,13 @@ R309 = {
         "broken_frame_5",
         lambda b: ("blend order", (23, 41), _glass_of(b, 23, 41, True).color_after[:3]),
         f"{OTHER_FRAME} (the intended frame's history", "the other frame's value"),
+    # r377 F2: the wall's depth is in the intended frame's history too (the one the list
+    # names): the wall's record, the wrong triangle, not "the other frame's value"
     "frame 6, the broken frame's wall depth": (
         "broken_frame_6",
         lambda b: ("sliver", (22, 40), (_rs.READ[6](b, 22, 40)[0],
                                         next(r.depth for r in _records(b, 22, 40) if r.shown))),
-        f"{OTHER_FRAME} (the broken frame's history", "the other frame's value"),
+        "is triangle 0's depth in the intended frame's history", "another record's value"),
     "frame 4, RGBA for (r, g, b)": (
         "broken_frame_4",
         lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52).color),
@@ -3065,47 +3052,11 @@ R309 = {
         "broken_frame_9",
         lambda b: ("blend order", (13, 52), _glass_of(b, 13, 52).color_after),
         "it is (r, g, b): three numbers; yours has 4 (alpha?", "type"),
-    "frame 3 steps of 1/65536": (
-        "broken_frame_3_steps", _steps_with(2**16), "you scaled by 2¹⁶ = 65536", "2^16 steps"),
-    "frame 3 depths for steps": (
-        "broken_frame_3_steps", lambda b: (*_wall_and_pane(b), np.subtract(*_wall_and_pane(b))),
-        "those are the depths themselves", "depths for steps"),
-    "frame 3 depth difference for steps": (
-        "broken_frame_3_steps", _steps_with(2**16 - 1, apart=lambda w, p: w - p),
-        "is the difference of the depths, not of the steps", "depth difference for steps"),
-    "frame 3 printed depths' difference scaled": (
-        "broken_frame_3_steps",
-        _steps_with(2**16 - 1, apart=lambda w, p: (round(w, 6) - round(p, 6)) * (2**16 - 1)),
-        "not a whole number of steps", "steps not whole"),
-    # r318: the steps apart typed in (66 in every redraw then); the printed depths rounded up
-    "frame 3 steps apart typed in": (
-        "broken_frame_3_steps",
-        lambda b: (_steps_with(2**16 - 1)(b)[0], _steps_with(2**16 - 1)(b)[0] - 66, 66),
-        "66 steps apart is frame 3's as shown", "apart typed in"),
-    "frame 3 printed depths scaled, rounded up": (
-        "broken_frame_3_steps",
-        lambda b: (*(math.ceil(round(d, 6) * 65535) for d in _wall_and_pane(b)),
-                   np.subtract(*(math.ceil(round(d, 6) * 65535) for d in _wall_and_pane(b)))),
-        "the buffer rounds to the nearest step", "rounded up or down"),
-    "frame 3 steps typed in": (
-        # r318: failing both redrawn frames alike, it is told as a constant, in these words
-        "broken_frame_3_steps", lambda b: (39321, 39255, 66), "those are frame 3's numbers as "
-        "shown", "constant"),
+    # r377 F4: 11.3b asks another question now (the fewest depth bits in which the pane
+    # wins): its variants are R377's
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R309.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R309.items()})
-DIFFERENT.update({
-    "frame 3 steps from the printed depths, as np.int64": (
-        "broken_frame_3_steps",
-        lambda b: tuple(np.int64(round(round(d, 6) * 65535)) for d in _wall_and_pane(b))
-        + (np.int64(round(round(_wall_and_pane(b)[0], 6) * 65535)
-                    - round(round(_wall_and_pane(b)[1], 6) * 65535)),),
-    ),
-    "frame 3 steps as floats, a list": (
-        "broken_frame_3_steps",
-        lambda b: [float(v) for v in _rs.broken_frame_3_steps(b)],
-    ),
-})  # fmt: skip
 
 
 # -- r319 04: the reader's variants of 4.2's after-the-divide slips (X1, H1: regressed
@@ -4395,3 +4346,132 @@ R373 = {
 }  # fmt: skip
 WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _) in R373.items()})
 KINDS.update({label: kind for label, (_, _, kind) in R373.items()})
+
+
+# == r377: exercise 11, a wrong value named by its record (triangle, field, frame); 'the other
+# frame's value' only where the history the list names lacks it; 11.3b's tied pane ==========
+def _failed_depth(b, row, col):
+    return next(r.depth for r in _records(b, row, col) if r.outcome in ("failed_depth", "hi_z"))
+
+
+def _thin_outside(b, row, col, intended=False, triangle=None):
+    """The distance of the first not-covered record (of ``triangle``, if given)."""
+    return next(r.outside for r in _records(b, row, col, intended)
+                if r.outcome == "not_covered" and triangle in (None, r.triangle))  # fmt: skip
+
+
+def _pane_gap(b, intended=False):
+    """(the wall's depth, the pane's) at (13, 52) as the trace holds them (drawn, not stored)."""
+    frame = b.intended if intended else b.frame
+    records = _records(b, 13, 52, intended)
+    wall = next(r for r in records if r.outcome == "passed" and r.color[3] == 1)
+    pane = next(r for r in records if r.outcome in ("hi_z", "failed_depth", "passed")
+                and r is not wall)  # fmt: skip
+    z = frame.trace.window[:, :, 2]
+    return z[wall.piece, 0], z[pane.piece, 0]
+
+
+def _gap_of(b, intended=False):
+    wall, pane = _pane_gap(b, intended)
+    return wall - pane
+
+
+R377 = {
+    "frame 1, the failed fragment's depth": (
+        "broken_frame_1",
+        lambda b: ("depth function", (24, 28), _failed_depth(b, 24, 28)),
+        "is triangle 9's depth in the broken frame's history of (24, 28) (its fragment failed "
+        "the depth test), not the evidence", "another record's value"),
+    "frame 7, the strip's failing depth": (
+        "broken_frame_7",
+        lambda b: ("depth function", (25, 52), _failed_depth(b, 25, 52)),
+        "is triangle 2's depth in the broken frame's history of (25, 52) (its fragment failed "
+        "the Hi-Z test)", "another record's value"),
+    "frame 4, the pane's 'after' for its fragment colour": (
+        "broken_frame_4",
+        lambda b: ("missing premultiplication", (13, 52), _glass_of(b, 13, 52).color_after[:3]),
+        "as is triangle 3's 'after' and 'before', not the evidence: the list asks for the "
+        "fragment colour (r, g, b) the blend received: here, triangle 3's fragment colour",
+        "another record's value"),
+    "frame 5, the strip's fragment colour for its 'after'": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41), _glass_of(b, 23, 41).color[:3]),
+        "is triangle 1's fragment colour in the broken frame's history of (23, 41)",
+        "another record's value"),
+    "frame 5, the wall's colour that replaced the strip's": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41),
+                   next(r.color_after[:3] for r in _records(b, 23, 41) if r.shown)),
+        "is triangle 2's fragment colour and 'after' in the broken frame's history of (23, 41) "
+        "(the fragment the pixel shows)", "another record's value"),
+    "frame 5, the clear colour (a 'before')": (
+        "broken_frame_5",
+        lambda b: ("blend order", (23, 41), _records(b, 23, 41)[0].color_before[:3]),
+        "'before' in the broken frame's history of (23, 41)", "another record's value"),
+    "frame 6, the intended frame's not-covered distance": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), (_thin_outside(b, 22, 40, True, 3),
+                                        _glass_of(b, 22, 40, True).depth)),
+        "your distance, 0.46, is the value in the other frame of the pair (the intended frame's "
+        "history of (22, 40): triangle 3's distance outside E12", "the other frame's value"),
+    "frame 6, the wall triangle's distance": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), (_thin_outside(b, 22, 40),
+                                        _glass_of(b, 22, 40, True).depth)),
+        "is triangle 1's distance outside E12 in the broken frame's history of (22, 40)",
+        "another record's value"),
+    "frame 8, the wall's depth read off the intended frame": (
+        "broken_frame_8",
+        lambda b: ("sliver", (21, 39), (_thin_outside(b, 21, 39, triangle=2),
+                                        next(r.depth for r in _records(b, 21, 39, True)
+                                             if r.outcome == "passed" and r.color[3] == 1))),
+        "your depth, 0.6, is triangle 0's depth in the intended frame's history of (21, 39)",
+        "another record's value"),
+    "frame 1, the intended frame's depth shown, its record named": (
+        "broken_frame_1",
+        lambda b: ("depth function", (24, 28),
+                   next(r.depth for r in _records(b, 24, 28, True) if r.shown)),
+        "(the intended frame's history of (24, 28): triangle 9's depth, the fragment the pixel "
+        "shows)", "the other frame's value"),
+    "frame 2, the first culled triangle, unmatched": (
+        "broken_frame_2",
+        lambda b: ("culled winding", (24, 32),
+                   next(r.triangle for r in _records(b, 24, 32) if r.outcome == "culled")),
+        "is culled here, but the intended frame's history shows it not_covered here",
+        "evidence"),
+    # F4: 11.3b now asks the fewest bits of a unorm depth buffer in which frame 3's pane wins
+    # wherever the wall lies (the least n with gap · (2ⁿ − 1) ≥ 1)
+    "frame 3 bits, at this wall's depth only": (
+        "broken_frame_3_steps",
+        lambda b: next(n for n in range(1, 54) if round(_pane_gap(b)[1] * (2**n - 1))
+                       < round(_pane_gap(b)[0] * (2**n - 1))),
+        "by where the wall lies on that buffer's grid", "this wall's depth only"),
+    "frame 3 bits, half a step": (
+        "broken_frame_3_steps", lambda b: math.ceil(math.log2(1 + 0.5 / _gap_of(b))),
+        "short of a whole one (log₂(1 + 1/gap) rounded down?)", "a step short"),
+    "frame 3 bits, log rounded down": (
+        "broken_frame_3_steps", lambda b: math.floor(math.log2(1 + 1 / _gap_of(b))),
+        "short of a whole one (log₂(1 + 1/gap) rounded down?)", "a step short"),
+    "frame 3 bits, the intended pane's gap": (
+        "broken_frame_3_steps", lambda b: math.ceil(math.log2(1 + 1 / _gap_of(b, True))),
+        "that is the intended pane's gap", "constant"),
+    "frame 3 bits typed in": (
+        "broken_frame_3_steps", lambda b: 20, "that is frame 3's number as shown", "constant"),
+    "frame 3 bits from the histories' depths": (
+        "broken_frame_3_steps",
+        lambda b: math.ceil(math.log2(1 + 1 / (
+            next(r.depth for r in _records(b, 13, 52) if r.outcome == "passed")
+            - next(r.depth for r in _records(b, 13, 52) if r.outcome == "hi_z")))),
+        "a gap of 0? the histories print depths as the 16-bit buffer stores them", "raised"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R377.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R377.items()})
+DIFFERENT.update({
+    "frame 3 bits by a loop over n, as np.int64": (
+        "broken_frame_3_steps",
+        lambda b: np.int64(next(n for n in range(1, 54) if _gap_of(b) * (2**n - 1) >= 1)),
+    ),
+    "frame 3 bits as a float, np.log2 of the whole steps needed": (
+        "broken_frame_3_steps", lambda b: float(np.ceil(np.log2(1 / _gap_of(b) + 1))),
+    ),
+})  # fmt: skip

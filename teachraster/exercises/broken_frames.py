@@ -47,10 +47,12 @@ the two frames agree; the frame's cause at a changed pixel that does not show it
 not the frame's (the value is then not judged: r18-2); a triangle's number read off the
 intended frame's history (r84 11-2: the cube's redrawn pair numbers its two frames apart); the
 frame shown's value given for the redrawn frame; another surface's depth in the evidence's own
-history (z-fighting: the wall's, r318); the evidence's value read off the other frame
-of the pair (r309: the intended frame's, or the broken frame's where the list asks the
-intended frame's); a value that is not the evidence there (and a row and column, or the
-sliver's two numbers, swapped: said first).
+history (z-fighting: the wall's, r318); another record's value, or another field's, in the history
+the list names (r377: said by triangle, field and frame); the evidence's value read off the
+other frame of the pair, only where the history the list names lacks it (r309: the intended
+frame's, or the broken frame's where the list asks the intended frame's; r377: with its
+record); a value that is not the evidence there (and a row and column, or the sliver's two
+numbers, swapped: said first).
 """
 
 from __future__ import annotations
@@ -58,6 +60,7 @@ from __future__ import annotations
 import hashlib
 import operator
 import secrets
+import textwrap
 import threading
 from dataclasses import dataclass
 from functools import cache, lru_cache
@@ -317,14 +320,20 @@ class _Look:
     # them apart, so that "a number the list asks for is the one in the frame's own history").
     # Not frame 1's: drawn in another order, its two faces would both pass, parting at blending
     meant_order: int | None = None
+    # r377 F1: the cube's triangles listed backwards, so that every two of them swap, the two
+    # of a face as well as the faces: where a pixel's history culls two or more, the first
+    # culled triangle is another one (rolled only, "the first culled" stayed right at 439 of
+    # the 446 pixels where it was; a roll after the reversal would restore each pair it wraps,
+    # so the redrawn looks reverse with no roll: ``order`` 0)
+    backwards: bool = False
 
 
 #: The look of the frames shown, and the looks a check redraws them with (one at random).
 _SHOWN = _Look()
 _REDRAWN = (
-    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 3, 9),
-    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 5, 10),
-    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 7, 2),
+    _Look((0.44, 0.63, 0.52), 45875, (0.85, 0.3, 0.2), 0.35, (0.9, 0.05), 0, 9, True),
+    _Look((0.7, 0.66, 0.6), 32768, (0.3, 0.2, 0.75), 0.25, (0.85, -0.04), 0, 10, True),
+    _Look((0.5, 0.52, 0.7), 42598, (0.9, 0.7, 0.1), 0.4, (0.95, 0.03), 0, 2, True),
 )
 
 
@@ -344,6 +353,8 @@ def _cube(look: _Look, winding_reversed: bool = False, meant: bool = False, **kw
     # the same triangles in another order: the same picture (the depth test decides), other
     # triangle numbers, so that a number typed in fails the redrawn frame
     order = look.meant_order if meant and look.meant_order is not None else look.order
+    if look.backwards:
+        clip, rgba = clip[::-1], rgba[::-1]
     clip, rgba = np.roll(clip, -order, axis=0), np.roll(rgba, -order, axis=0)
     return render(clip, W, H, attrs=rgba, trace=True, clear_color=(1, 1, 1, 1), **kwargs)
 
@@ -487,15 +498,15 @@ def _redrawn(number: int, look: _Look | None = None) -> BrokenFrame:
     return _drawn(number, look or _REDRAWN[secrets.randbelow(len(_REDRAWN))])
 
 
-def frame_3_apart(steps: float, look: _Look | None = None) -> BrokenFrame:
-    """Frame 3 (the same tie) redrawn with ``look`` (one of :data:`_REDRAWN` at random) and
-    its intended pane ``steps`` of the 16-bit buffer nearer than the wall, for 11.3b (r318:
-    in every look the pane was 66 steps nearer, so 66 typed in passed). Frame 3's check
-    keeps :func:`_redrawn`."""
-    symptom, broken, _ = _SPECS[2]
-    look = look or _REDRAWN[secrets.randbelow(len(_REDRAWN))]
-    intended = _pixels([_wall(look), _pane(look, steps / 65535)])
-    return BrokenFrame(3, symptom, _handed_out(broken(look)), _handed_out(intended))
+def frame_3_gap(gap: float, look: int | None = None) -> BrokenFrame:
+    """Frame 3 redrawn with look number ``look`` of :data:`_REDRAWN` (None: one at random),
+    its pane drawn ``gap`` nearer than the wall (frame 3's: 1e-6), for 11.3b (r377 F4: the
+    fewest depth bits in which the pane wins, which a typed-in number must not pass). Frame
+    3's check keeps :func:`_redrawn`."""
+    _, _, intended = _SPECS[2]
+    look = _REDRAWN[secrets.randbelow(len(_REDRAWN)) if look is None else look]
+    broken = _pixels([_wall(look), _pane(look, gap)])
+    return BrokenFrame(3, _SPECS[2][0], _handed_out(broken), _handed_out(intended(look)))
 
 
 def frames_to_inspect() -> dict[str, Frame]:
@@ -541,12 +552,11 @@ def frame_marks() -> dict:
 #: Frame 3's follow-up (11.3b, :mod:`.broken_frame_steps`), printed in frame 3's note.
 _STEPS_QUESTION = (
     "the histories' first line names the depth format, unorm16\n"
-    "(lesson 05b). At a pixel of the pane, which whole number does the buffer store the wall's\n"
-    "depth as, which whole number is the intended pane's depth compared as (the glass writes no\n"
-    "depth: the buffer keeps the wall's), and how many steps apart are they?\n"
-    "broken_frame_3_steps(b) returns (wall, pane, apart), worked out from the depths the\n"
-    "intended frame's history prints (frame 3's pane is drawn nearer than the wall too, by less\n"
-    "than half a step)."
+    "(lesson 05b), and they print each depth as that buffer stores it: the pane's tied at the\n"
+    "wall's. The depth a triangle k is drawn at is frame.trace.window[k, :, 2]. How many bits\n"
+    "must a unorm depth buffer have at least for frame 3's pane, drawn where frame 3 draws it,\n"
+    "to win the depth test wherever the wall lies? broken_frame_3_steps(b) returns that\n"
+    "number, worked out from the depths b's trace holds."
 )
 
 #: A note on each frame (how it was made, and how its mistake usually shows), told once its
@@ -572,19 +582,56 @@ _NOTES = {
     "opaque surface is drawn after it, since the glass writes no depth (were it written, the\n"
     "surface behind would fail the depth test and the glass would show over the clear colour\n"
     "instead); transparent geometry is drawn last, back to front.",
-    6: "Frame 6 is contrived so that the strip is missing everywhere: the thin triangle lies\n"
-    "between the rows of pixel centres along its whole length. A sliver usually shows as a\n"
-    "broken, dotted line, where it covers a centre now and then.",
+    # r377 F6b: "between the rows of pixel centres" of a triangle that runs across 13 rows
+    6: lambda: (
+        "Frame 6 is contrived so that the strip is missing everywhere: the thin "
+        f"triangle {_threads(6)}. A sliver usually shows as a broken, dotted line, where it covers "
+        "a centre now and then."
+    ),
     7: "Frame 7 is not contrived: with the depths mapped the other way round, glass in front of\n"
     "a wall drawn first fails the test wherever the wall is behind it.",
-    8: "Frame 8 is contrived so that the strip is missing everywhere: the thin triangle runs\n"
-    "along the strip's top edge, between the rows of pixel centres. A sliver usually shows as\n"
-    "a broken, dotted line, where it covers a centre now and then.",
+    8: lambda: (
+        "Frame 8 is contrived so that the strip is missing everywhere: the thin "
+        f"triangle, along the strip's top edge, {_threads(8)}. A sliver usually shows as a "
+        "broken, dotted line, where it covers a centre now and then."
+    ),
     9: "Frame 9 is not contrived: glass drawn before the wall behind it is replaced where the\n"
     "wall is drawn (the glass writes no depth); the usual cure draws transparent geometry\n"
     "last, back to front.",
 }
 
+
+def _threads(number: int) -> str:
+    """How the thin triangle of frame ``number`` (as shown) misses every pixel centre, in
+    words with the numbers its corners give: the rows of pixels it runs across, and in each
+    column it crosses, how near it comes to the centres above and below it and how tall it is
+    there (r377 F6b: "between the rows of pixel centres" said of a triangle across 13 rows)."""
+    frame = broken_frame(number).frame
+    xy = frame.trace.window[int(np.argmin(_altitudes(frame))), :, :2]
+    cols = np.arange(np.ceil(xy[:, 0].min() - 0.5), np.floor(xy[:, 0].max() - 0.5) + 1) + 0.5
+    spans = []
+    for x in cols:  # the triangle's vertical extent on the column's line of centres
+        ys = [ya + (yb - ya) * (x - xa) / (xb - xa)
+              for (xa, ya), (xb, yb) in zip(xy, np.roll(xy, -1, axis=0), strict=True)
+              if xa != xb and min(xa, xb) <= x <= max(xa, xb)]  # fmt: skip
+        spans.append((min(ys), max(ys)))
+    lo, hi = np.array(spans).T
+    clear = min((lo - np.floor(lo - 0.5) - 0.5).min(), (np.ceil(hi - 0.5) + 0.5 - hi).min())
+    rows = int(np.floor(xy[:, 1].max()) - np.floor(xy[:, 1].min())) + 1
+    return (f"runs across {rows} rows of pixels, yet in each of the {len(cols)} columns it "
+            f"crosses it threads between two pixel centres, {clear:.3f} px or more from each "
+            f"(it is at most {(hi - lo).max():.3f} px tall there)")  # fmt: skip
+
+
+#: Frame 1's note, before its depths (r377 F6c: the depths alone, where every other note
+#: says how the frame was made and how its mistake usually shows).
+FRAME_1_NOTE = (
+    "Frame 1 is not contrived: its depths are mapped the other way round, near at 1 and far\n"
+    "at 0 (reverse-Z: a reversed projection, often with glClipControl(..., GL_ZERO_TO_ONE)),\n"
+    "while the depth test still keeps the smaller (GL_LESS, where reverse-Z needs GL_GREATER),\n"
+    "so wherever two surfaces overlap the farther one is kept: the back of every object shows\n"
+    "through its front. Its two faces' depths at one pixel:"
+)
 
 #: Frame 1's note: a pixel where the two faces overlap, and the triangles of the face in
 #: front and of the face behind (in the intended frame's order), whose depths it prints.
@@ -620,7 +667,10 @@ def frame_note(number: int, report) -> str:
         raise ValueError(f"number must be one of {[1, *sorted(_NOTES)]}, got {number}")
     name = f"broken_frame_{number}"
     if getattr(report, "exercise", None) == name and issued(report) and report.passed:
-        return _frame_1_depths() if number == 1 else _NOTES[number]
+        if number == 1:
+            return f"{FRAME_1_NOTE}\n{_frame_1_depths()}"
+        note = _NOTES[number]
+        return textwrap.fill(note(), 90) if callable(note) else note
     # r16 11-2: never "to look like frame 3", which hints that frame 3's cause is another;
     # r18-5: nor "contrived", which singled frame 4 out as the one whose mistake looks unlike it
     return f"A note on frame {number} is printed here once the check of {name} above passes."
@@ -840,6 +890,8 @@ def as_diagnosis(value, number: int | None = None) -> tuple[str, tuple[int, int]
 def _loose(value):
     """Evidence kept as given, hashable (the verdicts are cached): a number, numbers, or its
     text."""
+    if isinstance(value, int | np.integer) and not isinstance(value, bool | np.bool_):
+        return int(value)  # r377 F6e: a triangle's number, quoted as "3", never "3.0"
     x = _real(value)
     if x is not None:
         return x
@@ -950,9 +1002,14 @@ def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
     # (0.6 is also the depth the broken frame stores): said before "the other frame's"
     if _other_surface(cause, p, value):
         return "surface", p
-    # after "copied": a value typed in from the frame shown may be, by chance, the redrawn
-    # pair's other frame's (frame 7's 0.4, a redrawn strip's depth)
-    if _matches(kind, value, _mirrored(b, cause, p)[1]):
+    # r377 F2, F5: a value found in the history the list names is another record's (or
+    # another field's) there, whichever frame also holds it; "the other frame's" only where
+    # the named history lacks it. After "copied": a value typed in from the frame shown may
+    # be, by chance, the redrawn pair's other frame's (frame 7's 0.4, a redrawn strip's depth)
+    found = _source(b, cause, p, value)
+    if found is not None and found[1].named:
+        return "record", p
+    if found is not None or _matches(kind, value, _mirrored(b, cause, p)[1]):
         return "other", p
     return "evidence", p
 
@@ -1013,6 +1070,114 @@ def _read_from(b: BrokenFrame, cause: str, p: _Pixel, record) -> bool:
     if cause == "blend order":
         return record.outcome == "passed" and record.color_after in _evidence(b, cause, p)
     return False
+
+
+#: The fields of a history record a value of each kind may have been read from, and their
+#: names in words (r377 F5: a value read off the wrong record was told only what it is not).
+_FIELDS = {
+    "depth": (("depth", "depth"), ("depth_before", "depth stored before it")),
+    "number": (("outside", "distance outside {edge}"),),
+    "colour": (("color", "fragment colour"), ("color_after", "'after'"),
+               ("color_before", "'before'")),
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class _Source:
+    """Where a wrong value was read: in which frame's history (``named``: the one the list
+    reads that value from), off which record, and which of its fields (their words)."""
+
+    named: bool
+    whose: str
+    record: object
+    fields: tuple
+
+    def label(self) -> str:
+        """The record and field, as "triangle 0's depth"."""
+        fields = " and ".join(f.format(edge=self.record.edge) for f in self.fields)
+        return f"triangle {self.record.triangle}'s {fields}"
+
+    def state(self) -> str:
+        """What the record's history says of it."""
+        r = self.record
+        if r.outcome == "passed":
+            return ("the fragment the pixel shows" if r.shown else
+                    f"its fragment passed, then covered by triangle {r.hidden_by}")  # fmt: skip
+        return {"failed_depth": "its fragment failed the depth test",
+                "hi_z": "its fragment failed the Hi-Z test",
+                "not_covered": "it does not cover the centre"}.get(r.outcome, r.outcome)  # fmt: skip
+
+
+def _fields_of(kind: str, record, value) -> tuple:
+    """The words of ``record``'s fields (:data:`_FIELDS`) that hold ``value``."""
+    found = []
+    for field, words in _FIELDS[kind]:
+        x = getattr(record, field, None)
+        if kind == "colour":
+            held = bool(x) and _matches(kind, value, [x])
+        else:
+            held = x is not None and bool(np.isfinite(x)) and _matches(kind, value, [x])
+        if held:
+            found.append(words)
+    return tuple(found)
+
+
+def _evidence_parts(cause: str, value) -> list:
+    """(words, kind, value, read off the intended frame's history?) for each part of an
+    answer's evidence: the sliver's two numbers, or the one value."""
+    if cause == "sliver":
+        return [("distance", "number", value[0], False), ("depth", "depth", value[1], True)]
+    return [("value", EVIDENCE[cause][0], value, cause == "z-fighting")]
+
+
+def _source(b: BrokenFrame, cause: str, p: _Pixel, value):
+    """(the wrong part's words, :class:`_Source`) for a value that is not the evidence but a
+    field of a record in the pixel's two histories: the history the list names searched
+    first, field by field (:data:`_FIELDS`' order), the records that hold the evidence first;
+    None where it is in neither (or for a triangle's number)."""
+    if EVIDENCE[cause][0] == "triangle":
+        return None
+    evidence = _evidence(b, cause, p)
+    for i, (part, kind, x, meant) in enumerate(_evidence_parts(cause, value)):
+        right = [e[i] for e in evidence] if cause == "sliver" else evidence
+        if cause == "sliver" and _matches(kind, x, right):
+            continue  # this part is right: the other one is wrong
+        for named, intended in ((True, meant), (False, not meant)):
+            h = p.meant if intended else p.mine
+            records = sorted(h.records, key=lambda r: not _holds(kind, r, right))
+            for field, _ in _FIELDS[kind]:
+                r = next((r for r in records if field in _field_names(kind, r, x)), None)
+                if r is not None:
+                    whose = "the intended frame's" if intended else "the broken frame's"
+                    return part, _Source(named, whose, r, _fields_of(kind, r, x))
+        return None
+    return None
+
+
+def _field_names(kind: str, record, value) -> tuple:
+    """The names of ``record``'s fields that hold ``value``."""
+    words = dict(_FIELDS[kind])
+    return tuple(f for f, w in words.items() if w in _fields_of(kind, record, value))
+
+
+def _holds(kind: str, record, values) -> bool:
+    """Does one of ``record``'s fields hold one of ``values``?"""
+    return any(_fields_of(kind, record, v) for v in values)
+
+
+def _part_evidence(b: BrokenFrame, cause: str, p: _Pixel, part: str) -> list:
+    """The evidence's values for one part (words of :func:`_evidence_parts`)."""
+    evidence = _evidence(b, cause, p)
+    return [e[part == "depth"] for e in evidence] if cause == "sliver" else evidence
+
+
+def _holder(b: BrokenFrame, cause: str, p: _Pixel, part: str):
+    """The record of the named history that holds the evidence's ``part`` (words of
+    :func:`_evidence_parts`), or None."""
+    _, kind, _, meant = next(q for q in _evidence_parts(cause, (0.0, 0.0)) if q[0] == part)
+    values = _part_evidence(b, cause, p, part)
+    h = p.meant if meant else p.mine
+    return next((r for r in h.records if _holds(kind, r, values)), None)
 
 
 def _same(got, number, args=None) -> bool:
@@ -1193,12 +1358,77 @@ def _triangle_words(number, got) -> str:
     return f": triangle {value} is {mine[0].outcome} here, but {drawn}"
 
 
-def _other_frame_words(args, number, got) -> str:
-    """The evidence's value read off the other frame of the pair (:func:`_mirrored`): said
-    first, then where to read it (r309: five such answers were told only what was asked)."""
+#: What each part of the evidence is, in the words of a wrong value's message (the sliver's
+#: pair: EVIDENCE's words, one part at a time).
+_PART_WORDS = {
+    "distance": "how far (px) the pixel's centre lies outside the thin triangle, in the broken "
+    "frame's history",
+    "depth": "the depth of the fragment the intended frame draws there instead (where the "
+    "broken frame draws none), in the intended frame's history",
+}
+
+
+def _yours(cause: str, part: str, value) -> str:
+    """The wrong part of an answer's evidence, as a message quotes it."""
+    if part == "value":
+        return f"your value {_shown(cause, value)}"
+    x = tuple(value)[0 if part == "distance" else 1]
+    return f"your {part}, {round(x, 4 if part == 'distance' else 6)},"
+
+
+def _sourced_words(number, got) -> tuple[str, _Source, str, str]:
+    """(the wrong part quoted, where it was read, what the list asks, the evidence's record
+    where it holds the value too) for a value found in
+    the pixel's histories (:func:`_source`), the evidence's own record and field named
+    (r377 F5: "0.46 is triangle 3's distance in the intended frame's history; the list asks
+    for the thin triangle's, in this frame"), and the evidence's record where it holds the
+    value too (frame 4's pane's 'after' is the wall's colour)."""
     cause, (row, col), value = got
     b = _as_frame(number)
-    whose = _mirrored(b, cause, _pixel(b, row, col))[0]
+    p = _pixel(b, row, col)
+    part, src = _source(b, cause, p, value)
+    what = EVIDENCE[cause][1] if part == "value" else _PART_WORDS[part]
+    holder, also = _holder(b, cause, p, part), None
+    if holder is not None:
+        kind, x = next((k, v) for w, k, v, _ in _evidence_parts(cause, value) if w == part)
+        if holder is not src.record and _fields_of(kind, holder, x):
+            also = _Source(src.named, src.whose, holder, _fields_of(kind, holder, x))
+        held = next(
+            f for e in _part_evidence(b, cause, p, part) if (f := _fields_of(kind, holder, e))
+        )
+        what += f": here, triangle {holder.triangle}'s {held[0].format(edge=holder.edge)}"
+    return _yours(cause, part, value), src, what, (f", as is {also.label()}" if also else "")
+
+
+def _record_words(args, number, got) -> str:
+    """A value read off the history the list names, but off another record or field
+    (r377 F2: frame 8's wall depth, read off the intended frame as asked, was told "the value
+    in the other frame"; F5: the value was told only what it is not)."""
+    cause, (row, col), _ = got
+    yours, src, what, also = _sourced_words(number, got)
+    swap = _swapped(number, got)
+    hint = _history_hint(number, row, col, "the intended" if "intended" in what else what)
+    return ((f"{swap[0].lower()}{swap[1:]}. " if swap else "")
+            + f"{yours} is {src.label()} in {src.whose} history of ({row}, {col}) "
+            f"({src.state()}){also}, not the evidence: the list asks for {what}. Read it off "
+            f"{hint}")  # fmt: skip
+
+
+def _other_frame_words(args, number, got) -> str:
+    """The evidence's value read off the other frame of the pair (:func:`_mirrored`), absent
+    from the history the list names: said first, with the record it was read off (r377 F5),
+    then where to read it (r309: five such answers were told only what was asked)."""
+    cause, (row, col), value = got
+    b = _as_frame(number)
+    p = _pixel(b, row, col)
+    if _source(b, cause, p, value) is not None:
+        yours, src, what, _ = _sourced_words(number, got)
+        own = "the intended frame's" if src.whose == "the broken frame's" else "the broken frame's"
+        where = "" if "history" in what else f", in {own} history"
+        return (f"{yours} is the value in the other frame of the pair ({src.whose} history of "
+                f"({row}, {col}): {src.label()}, {src.state()}): the list asks for {what}"
+                f"{where}. Read it off {_history_hint(number, row, col, 'the intended')}")  # fmt: skip
+    whose = _mirrored(b, cause, p)[0]
     own = "the intended frame's" if whose == "the broken frame's" else "the broken frame's"
     what = EVIDENCE[cause][1]
     if cause == "sliver":
@@ -1298,6 +1528,7 @@ DIAGNOSIS_MISTAKES = (
     Mistake("the intended frame's number", _meant_words, fits=_verdict("intended")),
     Mistake("typed in", _copied_words, fits=_verdict("copied")),
     Mistake("another surface's depth", _surface_words, fits=_verdict("surface")),
+    Mistake("another record's value", _record_words, fits=_verdict("record")),
     Mistake("the other frame's value", _other_frame_words, fits=_verdict("other")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
 )
@@ -1406,11 +1637,13 @@ def _zoom(ax, frame: Frame, row: int, col: int, x0: float) -> list:
                    label="the thin triangle")  # fmt: skip
     artists.append(ax.add_patch(thin))
     thin.set_clip_path(box)
-    # the key in the zoom's top row, which the needle (a slope of 1/4 through the middle row)
-    # never reaches (under the axes it ran into the x label), in points: the classroom
-    # style's relative sizes made it wider than the zoom
-    artists.append(ax.legend(handles=[thin], loc="upper right", fontsize=6, framealpha=0.9,
-                             borderpad=0.3, handlelength=1.2, handletextpad=0.4))  # fmt: skip
+    # r377 F6a: the key at a classroom size (6 pt in the zoom's top row was about 5 pt on
+    # screen), under the zoom, where no tick labels stand: wider than the zoom at that size
+    from ..plotting.common import fs
+
+    artists.append(ax.legend(handles=[thin], loc="upper right", bbox_to_anchor=(1, -0.01),
+                             fontsize=fs(0.7), framealpha=0.9, borderpad=0.2,
+                             handlelength=1.0, handletextpad=0.3, borderaxespad=0))  # fmt: skip
     return artists
 
 

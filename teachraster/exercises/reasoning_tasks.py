@@ -17,7 +17,7 @@ typical mistakes), defined in its own module:
 - ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
 - ``broken_frame_1`` … ``broken_frame_9`` (11, :mod:`.broken_frames`), and
-  ``broken_frame_3_steps`` (11 with 05b, :mod:`.broken_frame_steps`): frame 3's tie in steps.
+  ``broken_frame_3_steps`` (11 with 05b, :mod:`.broken_frame_steps`): the depth bits frame 3 needs.
 """
 
 from __future__ import annotations
