@@ -59,20 +59,27 @@ def test_blend_rules_table(nsb):
 def test_llvmpipe_drift_against_the_exact_composite(nsb):
     """S1: the cell prints each target's codes minus the exact composite (float64, clamped per
     layer, never rounded): teachraster's rounding stays within 0.12 of a code on average, up
-    to 5.1 after 40 additive layers; llvmpipe's +6.81 there is its own."""
+    to 5.1 after 40 additive layers; llvmpipe's several codes there are its own. Review r387
+    C1: llvmpipe's mean is +6.81 on one machine and +6.88 on another (its fast sRGB
+    conversions take other code paths on other CPUs), so the text quotes no digits of it and
+    the printed row is checked against the values the cell computed."""
     text = _flat("srgbglmd")
     assert "**exact composite**" in text and "within 0.12 of a code" in text
-    assert "up to 5.1 codes" in text and "+6.81 codes on average" in text
+    assert (
+        "up to 5.1 codes" in text and "several codes (the last column of the 40-layer row)" in text
+    )
+    assert "6.81" not in text and "6.88" not in text
     if not nsb.ok:
         pytest.skip("no OpenGL context")
     exact = nsb.srgb_exact
     assert max(abs(v["ours"][0]) for v in exact.values()) <= 0.125
     assert round(exact[("additive", 40)]["ours"][1], 1) == 5.1
-    assert f"{exact[('additive', 40)]['llvmpipe'][0]:+.2f}" == "+6.81"
+    gl_mean, gl_largest = exact[("additive", 40)]["llvmpipe"]
+    assert 3 <= gl_mean <= 10  # "several codes", brighter
     printed = streams(executed("12b_blending").notebook())
     # review r324 S3: one table, in codes (the lines said "steps" and "codes" for one thing)
     row = next(line for line in printed.splitlines() if line.startswith("40 'additive'"))
-    assert "+0.12 ( 5.1)" in row and row.endswith("+6.81 (11.5)")
+    assert "+0.12 ( 5.1)" in row and row.endswith(f"{gl_mean:+12.2f} ({gl_largest:4.1f})")
     assert "steps on average" not in printed and "mean (largest)" in printed
 
 
