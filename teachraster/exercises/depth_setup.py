@@ -334,11 +334,12 @@ def _dz_words(what):
     def words(args, expected, got):
         z, gap, far, nearest = args
         fmt, n = got[0], got[1]
+        said_what = what(got) if callable(what) else what
         shown = REVERSE if fmt == NEITHER else fmt
         lo, hi = _resolves(shown, z, n, far) if 0 < n < z else (math.nan, math.nan)
         # told apart (r374: "0.022 to 0.022")
         said = num(lo) if fmt == UNORM else f"{num(lo, hi)} to {num(hi, lo)}"
-        return (f": {what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
+        return (f": {said_what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
                 + ("; for \"neither\" give reverse-Z's numbers, the better of the two"
                    if fmt == NEITHER else ""))  # fmt: skip
 
@@ -351,6 +352,22 @@ def _dz_wrong(args, expected, got) -> bool:
         and _near_ok(args, got[0], got[1])
         and not _dz_ok(args, got[0], got[1], got[2])
     )
+
+
+def _gap_words(got) -> str:
+    """The gap quoted as Δz: for unorm24 it is also unorm24's Δz at 5.1's own near plane, where
+    it equals the gap by construction (r381 F3: that slip was told "you gave the gap back")."""
+    if got[0] == UNORM:
+        return ("your Δz is the gap itself: that is unorm24's Δz at 5.1's own near plane (there "
+                "it equals the gap, by 5.1's construction), not at the near plane you return; "
+                "quote what your set-up resolves at yours")  # fmt: skip
+    return ("you gave the gap back as Δz; quote what your set-up resolves, the number that shows "
+            "it does the job")  # fmt: skip
+
+
+def _swapped_near(args, expected, got) -> bool:
+    """(format, Δz, near): the answer passes with its two numbers swapped (r381 F3)."""
+    return got[1] != got[2] and same_setup((got[0], got[2], got[1]), expected, args)
 
 
 def _reverse_dz_as(reading):
@@ -462,6 +479,11 @@ def match_setup(got, value, args=None) -> bool:
 
 
 MISTAKES = [
+    # r381 F3: (format, dz, near) was told "at your near plane 0.000298 unorm24 resolves …"
+    Mistake("near and dz swapped", lambda a, e, g: (
+        f": your near plane and Δz look swapped: return (format, near, dz). Your second value "
+        f"{num(g[1])} is the Δz, your third, {num(g[2])}, the near plane"),
+        fits=_swapped_near),
     # r374 F4: each told "Compare 5.1's near plane with `nearest` first", which they did
     Mistake("comparison flipped", _words_flipped, gives=_choice_by(
         lambda z, gap, far, nearest: expected_near(z, gap, far, 24) > nearest)),
@@ -509,8 +531,7 @@ MISTAKES = [
         and not _near_ok(a, UNORM, g[1])),
     Mistake("dz of the other buffer", _dz_words("that Δz is the other buffer's"),
             fits=lambda a, e, g: _dz_wrong(a, e, g) and _quoted_other(a, g)),
-    Mistake("dz is the gap", _dz_words("you gave the gap back as Δz; quote what your set-up "
-                                       "resolves, the number that shows it does the job"),
+    Mistake("dz is the gap", _dz_words(_gap_words),
             fits=lambda a, e, g: _dz_wrong(a, e, g) and _gap_quoted(a, g)),
     Mistake("dz", _dz_words("your Δz is not what your set-up resolves there"), fits=_dz_wrong,
             symptom=True),
