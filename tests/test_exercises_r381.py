@@ -95,3 +95,22 @@ def test_the_correct_solutions_still_pass_the_new_cases():
     assert ex.check("decal_bias", decal_bias).passed
     labels = [label for label, _, _ in db.bias_cases()]
     assert any("clear 0.082" in label for label in labels)
+
+
+def test_one_step_is_said_in_the_singular_and_hints_still_hold_it_back():
+    """F7: "(not enough: 1 steps, …)" in the full words; the hint's pattern takes "1 step"."""
+    from teachraster.exercises.decal_bias import HINTS, _steps
+
+    assert _steps(1.0) == "1 step" and _steps(174.662) == "174.662 steps"
+    pattern, _ = HINTS[2]
+    assert pattern.search("(not enough: 1 step, where the decal can lie 3 steps behind)")
+
+
+def test_an_answer_of_the_wrong_form_is_echoed_with_short_numbers():
+    """F7: 5.4's (near, format, dz) was echoed with 17 digits."""
+    from teachraster.exercises.depth_setup import as_setup
+    from teachraster.exercises.running import WrongAnswerType
+
+    with pytest.raises(WrongAnswerType) as caught:
+        as_setup((0.014900940040703407, "unorm24", 0.01))
+    assert "(0.0149009, 'unorm24', 0.01)" in str(caught.value)

@@ -298,9 +298,15 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
     }
 
 
+def _steps(x, *others) -> str:
+    """``x`` steps, as :func:`num` prints it, "1 step" for one (r381 F7: "1 steps")."""
+    said = num(x, *others)
+    return f"{said} step" if said == "1" else f"{said} steps"
+
+
 def _m_said(m, r) -> str:
     """m as the words say it: the one form :data:`HINTS` hold back until the full words."""
-    return f"m = {num(m)} ({num(m / r)} steps)"
+    return f"m = {num(m)} ({_steps(m / r)})"
 
 
 _DEGREES = ": the tilt is in degrees and the tangent takes radians: tan(np.radians(tilt))"
@@ -443,9 +449,9 @@ def explain_offset(args, expected, got) -> str:
     if not np.isfinite(got) or got == 0 or (got > 0) != bool(reverse):
         return head
     if abs(got) < lo * (1 - ROUNDING):
-        return (f"{head} (not enough: {num(abs(got) / r, lo / r)} steps, where the decal can "
-                f"lie {num(m / r)} steps behind and must end a whole step nearer, "
-                f"{num(lo / r, abs(got) / r)} steps)")  # fmt: skip
+        return (f"{head} (not enough: {_steps(abs(got) / r, lo / r)}, where the decal can "
+                f"lie {_steps(m / r)} behind and must end a whole step nearer, "
+                f"{_steps(lo / r, abs(got) / r)})")  # fmt: skip
     if abs(got) > hi * (1 + ROUNDING):
         return (f"{head} (too much: the decal at its nearest, |o| + m in front of the wall, is "
                 f"now strictly nearer than the object {num(clear)} in front and shows "
@@ -463,10 +469,10 @@ def _rule(args, expected, got) -> str:
 #: What the words hold back until the full words (:func:`.tries.staged`, r316 item 5): m, the
 #: quantity the task derives, and the bounds and step counts that give it away.
 HINTS = (
-    (re.compile(r"m = \S+ \(\S+ steps\)"), "m (yours to work out)"),
+    (re.compile(r"m = \S+ \(\S+ steps?\)"), "m (yours to work out)"),
     (re.compile(r"from \S+ \(r \+ m\) to \S+ \(room − m, where"), "from r + m to room − m (where"),
     (
-        re.compile(r"\(not enough: \S+ steps, where the decal can lie [^)]*\)"),
+        re.compile(r"\(not enough: \S+ steps?, where the decal can lie [^)]*\)"),
         "(not enough: work out how far behind the wall the decal can lie)",
     ),
     (

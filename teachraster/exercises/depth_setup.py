@@ -146,6 +146,16 @@ def _drawn(rng, outcome) -> tuple[float, float, float, float]:
             return s
 
 
+def _echo(value) -> str:
+    """The returned value as :func:`.answers.short` gives it, its floats with 6 significant
+    digits (r381 F7: "(0.014900940040703407, 'unorm24', 0.01)")."""
+    if type(value) not in (tuple, list) or not 0 < len(value) <= 6:
+        return short(value)
+    parts = [f"{float(v):.6g}" if isinstance(v, (float, np.floating)) else short(v) for v in value]
+    inner = ", ".join(parts)
+    return f"({inner})" if type(value) is tuple else f"[{inner}]"
+
+
 def as_setup(value) -> tuple[str, float, float]:
     """(format, near, dz): the format's words read loosely (case, spaces, "reverse z"), the
     numbers strictly (finite)."""
@@ -153,9 +163,9 @@ def as_setup(value) -> tuple[str, float, float]:
     try:
         fmt, near, dz = value
     except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {short(value)}: return {WHAT}") from None
+        raise WrongAnswerType(f"returned {_echo(value)}: return {WHAT}") from None
     if not isinstance(fmt, (str, np.str_)):
-        raise WrongAnswerType(f"returned {short(value)}: its first value is the format, {WHAT}")
+        raise WrongAnswerType(f"returned {_echo(value)}: its first value is the format, {WHAT}")
     words = " ".join(re.sub(r"[-_]", " ", str(fmt).lower()).split())
     read = {"unorm24": UNORM, "unorm 24": UNORM, "d24": UNORM, "float32 reverse z": REVERSE,
             "reverse z": REVERSE, "float32": FORWARD, "neither": NEITHER}.get(words)  # fmt: skip
@@ -165,10 +175,10 @@ def as_setup(value) -> tuple[str, float, float]:
     numbers = []
     for v in (near, dz):
         if isinstance(v, (bool, str, bytes, np.bool_)) or not np.ndim(v) == 0:
-            raise WrongAnswerType(f"returned {short(value)}: near and dz are numbers, {WHAT}")
+            raise WrongAnswerType(f"returned {_echo(value)}: near and dz are numbers, {WHAT}")
         numbers.append(float(v))
     if not all(math.isfinite(v) for v in numbers):
-        raise WrongAnswerType(f"returned {short(value)}: near and dz are finite numbers, {WHAT}")
+        raise WrongAnswerType(f"returned {_echo(value)}: near and dz are finite numbers, {WHAT}")
     return read, numbers[0], numbers[1]
 
 
