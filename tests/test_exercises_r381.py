@@ -114,3 +114,18 @@ def test_an_answer_of_the_wrong_form_is_echoed_with_short_numbers():
     with pytest.raises(WrongAnswerType) as caught:
         as_setup((0.014900940040703407, "unorm24", 0.01))
     assert "(0.0149009, 'unorm24', 0.01)" in str(caught.value)
+
+
+def test_the_sign_slip_keeps_the_solved_denominator_until_the_hints_are_spent():
+    """F5: the first words of a sign slip gave gap·f + step·z², the solved formula's
+    denominator (docs/exercises.md holds the inequality for n back until two answers fail)."""
+    name = "safe_near"
+    tries.forget_hints(name)
+
+    def slipped(z, gap, far, bits):
+        s = 1 / (2**bits - 1)
+        return s * far * z**2 / (gap * far - s * z**2)
+
+    first = ex.check(name, slipped).failures[0].explanation
+    assert "a sign slipped" in first and "gap·f + step·z²" not in first
+    tries.forget_hints(name)

@@ -416,5 +416,8 @@ SAFE_NEAR = Exercise(
         (": Δz ≈ step · z² / n (for f ≫ n), so n grows like z², not like z", ""),
         ("; solve step · (f − n) z² / (f n) ≤ gap for n", "; differentiate z_win with respect "
          "to z, and find the n where one step divided by that slope at z is gap"),
+        # r381 F5: the sign slip's words gave the solved formula's denominator at once
+        ("gathering the terms in n gives gap·f + step·z² beside n, a plus, where yours has "
+         "gap·f − step·z²", "gather the terms in n again, and check the sign of each"),
     ),
 )  # fmt: skip
