@@ -1203,13 +1203,17 @@ def bias_from_neighbours(z, tilt, pixel, near, far, bits, reverse, clear):
 
 def bias_two_steps(z, tilt, pixel, near, far, bits, reverse, clear):
     """llvmpipe's r, two steps (lesson 05b's table): more than needed, and still behind the
-    object in front, which is drawn first and keeps a tie (r316 item 3)."""
+    object in front, which is drawn first and keeps a tie (r316 item 3); where the object
+    leaves less than two steps beyond m (r381 F1's case a fraction of a step from the bound),
+    as much as it leaves."""
     r = 2 / (2**bits - 1)
     m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
     z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
-    if r / 2 + m > z_win(z) - z_win(z - clear) - m:
+    room = z_win(z) - z_win(z - clear)
+    if r / 2 + m > room - m:
         return math.nan
-    return (r + m) if reverse else -(r + m)
+    o = min(r + m, room - m)
+    return o if reverse else -o
 
 
 def bias_float32(z, tilt, pixel, near, far, bits, reverse, clear):
@@ -4475,3 +4479,100 @@ DIFFERENT.update({
         "broken_frame_3_steps", lambda b: float(np.ceil(np.log2(1 / _gap_of(b) + 1))),
     ),
 })  # fmt: skip
+# == r381: exercise 05's last half-named slips, and a 5.3 answer that passed ====================
+
+
+def _bias_rounded_room(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 with the room measured between the depths rounded to the buffer (r381 F1: passed)."""
+    r = 1 / (2**bits - 1)
+    q = lambda d: np.round(d * (2**bits - 1)) / (2**bits - 1)  # noqa: E731
+    z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+    room = q(z_win(z)) - q(z_win(z - clear))
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    if r + m > room - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+def _bias_if_clear(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 reading `clear` only to say it is positive: no room at all (r381 F2, db-W18)."""
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    return (m + r) * (1 if reverse else -1) if clear > 0 else math.nan
+
+
+def _setup_r381(swapped=False, dz_at_own_n=False):
+    """5.4's model answer with (format, dz, near) returned, or unorm24's Δz taken at 5.1's n."""
+
+    def u24(z, n, far):
+        return (far - n) * z * z / (far * n) / (2**24 - 1)
+
+    def depth_setup(z, gap, far, nearest):
+        n = _rs.safe_near(z, gap, far, 24)
+        if n <= nearest:
+            out = ("unorm24", nearest, u24(z, n if dz_at_own_n else nearest, far))
+        else:
+            dz = _rs.reverse_z_gap(z, nearest, far)
+            out = ("reverse-z" if dz <= gap else "neither", nearest, dz)
+        return (out[0], out[2], out[1]) if swapped else out
+
+    return depth_setup
+
+
+def _gap_r381(kind):
+    """5.2 through signed GL NDC (np.spacing of 2d − 1, over its slope 2|dd/dz|), with near
+    and far swapped in d (|slope| kept), or float32's step at z itself."""
+
+    def reverse_z_gap(z, near, far):
+        if kind == "spacing of z":
+            return float(np.spacing(np.float32(z)))
+        n, f = (far, near) if kind == "swapped" else (near, far)
+        d = (n / z - n / f) / (1 - n / f)
+        slope = abs(n / ((1 - n / f) * z * z))
+        if kind == "gl ndc":
+            return float(np.spacing(np.float32(2 * d - 1))) / (2 * slope)
+        return float(np.spacing(np.float32(d))) / slope
+
+    return reverse_z_gap
+
+
+def _near_int(z, gap, far, bits):
+    s = 1 / (2**bits - 1)
+    return int(s * far * z**2 / (gap * far + s * z**2)) + 0.0
+
+
+R381 = {
+    "decal bias with room between rounded depths": (
+        "decal_bias", _bias_rounded_room, "your room is measured between rounded depths",
+        "rounded room"),
+    "decal bias reading clear only for its sign": (
+        "decal_bias", _bias_if_clear, "no test of the room the object leaves", "no room test"),
+    "depth set-up with near and dz swapped": (
+        "depth_setup", _setup_r381(swapped=True), "your near plane and Δz look swapped",
+        "near and dz swapped"),
+    "depth set-up with unorm24's dz at 5.1's n": (
+        "depth_setup", _setup_r381(dz_at_own_n=True),
+        "unorm24's Δz at 5.1's own near plane", "dz is the gap"),
+    "gap through signed GL NDC": (
+        "reverse_z_gap", _gap_r381("gl ndc"),
+        "your step is negative where the value you took the spacing of is negative: np.spacing "
+        "of a negative float32 is negative", "gl ndc, signed"),
+    "gap with near and far swapped in d": (
+        "reverse_z_gap", _gap_r381("swapped"),
+        "float32's steps are tiny (near and far swapped in d give this very z_win",
+        "window depth"),
+    "gap as float32's step at z": (
+        "reverse_z_gap", _gap_r381("spacing of z"), "float32's step at z, the view depth",
+        "spacing of z"),
+    "near plane by int()": ("safe_near", _near_int, "int() truncates your n", "int"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R381.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R381.items()})
+# r381 F2: code that computes the room and never tests it is told so, not "your test for NaN
+# did not fire" (a test against `clear` in view units keeps its own words, now its own cases)
+WRONG["decal bias computing room, never testing it"] = (
+    "decal_bias",
+    _bias_with("clear ignored"),
+    "no test of the room the object leaves",
+)
+KINDS["decal bias computing room, never testing it"] = "no room test"

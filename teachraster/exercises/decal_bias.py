@@ -87,6 +87,18 @@ FIT = (
 #: float32's relative rounding, allowed at both ends: a tilt held in float32 moves tan θ by
 #: up to 3e-6 of itself at 88° (tan's relative slope there is 1/(sin θ cos θ) ≈ 29).
 ROUNDING = 1e-5
+#: (setting, clear) whose room − m lies within a step of r + m with a step boundary between
+#: the two depths (r381 F1): a room measured between the *rounded* window depths overshoots
+#: the first (an offset where none fits: the decal shows through the object) and falls short
+#: on the second (NaN where one fits). The task measures it between unrounded depths.
+ROUNDED = (
+    ((20.0, 65.0, 6.01e-4, 0.1, 1000.0, 16, False), 0.082),
+    ((21.0, 55.0, 6.01e-4, 0.1, 1000.0, 16, True), 0.13),
+)
+#: A setting with z² < n, where window depth changes faster than view depth (room > clear),
+#: and no offset fits: a test against `clear` itself, a view distance, says NaN there, as it
+#: should, where code with no test of the room returns r + m (r381 F2: the two told apart).
+STEEP = ((0.2, 60.0, 6.01e-4, 0.1, 100.0, 16, False),)
 
 
 def step(bits: int) -> float:
@@ -149,9 +161,9 @@ def _clear(z, tilt, pixel, near, far, bits, share=ROOM + 1) -> float:
     return math.ceil(clear / digits) * digits
 
 
-def _case(setting, label=None, share=ROOM + 1):
+def _case(setting, label=None, share=ROOM + 1, clear=None):
     *head, reverse = setting
-    clear = _clear(*head, share=share)
+    clear = _clear(*head, share=share) if clear is None else clear
     args = (*head, reverse, clear)
     z, tilt, pixel, near, far, bits = head
     label = label or (f"z = {num(z)}, tilt {num(tilt)}°, pixel {num(pixel)}, near = {num(near)}, "
@@ -164,7 +176,9 @@ def _case(setting, label=None, share=ROOM + 1):
 def _fixed_cases():
     return ([_case(s) for s in SETTINGS] + [_case(s, share=TIGHT_SHARE) for s in TIGHT]
             + [_case(s, share=BAND_SHARE) for s in BAND]
-            + [_case(s, share=share) for s, share in FIT])  # fmt: skip
+            + [_case(s, share=share) for s, share in FIT]
+            + [_case(s, clear=clear) for s, clear in ROUNDED]
+            + [_case(s, share=TIGHT_SHARE) for s in STEEP])  # fmt: skip
 
 
 def bias_cases():
@@ -226,8 +240,15 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         slipped[f"{kind}, own test"] = None if m_ is None else own(r, m_)
     return {
         "clear ignored": sign * (r + m) if tight else None,
-        # r374 F2: room taken as `clear` itself, a view distance (never less than 2m + r)
-        "view units": sign * (r + m) if tight and r + m <= clear - m else None,
+        # r381 F2: the room computed (`clear` read) but never tested: r + m on every case
+        "no room test": sign * (r + m),
+        # r374 F2: room taken as `clear` itself, a view distance (less than 2m + r only where
+        # z² < n: :data:`STEEP`, which tells it from no test at all)
+        "view units": math.nan if r + m > clear - m else sign * (r + m),
+        # r381 F1: room measured between the depths rounded to the buffer (:data:`ROUNDED`)
+        "rounded room": math.nan
+        if r + m > _rounded(z, near, far, bits, clear) - m
+        else sign * (r + m),
         "behind": math.nan if r + m > behind - m else sign * (r + m),
         "first order": math.nan if r + m > first - m else sign * (r + m),
         # a test for NaN twice as strict as it needs, a variant (not the NAN symptom alone):
@@ -251,6 +272,12 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
     }
 
 
+def _rounded(z, near, far, bits, clear) -> float:
+    """The room between the wall's and the object's window depths each rounded to the buffer."""
+    scale = 2**bits - 1
+    return (round(_wall(z, near, far) * scale) - round(_wall(z - clear, near, far) * scale)) / scale
+
+
 def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
     """m as each typical slip of it gives it (None where the slip says nothing: a trigonometric
     slip at 0° or 90°)."""
@@ -271,9 +298,15 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
     }
 
 
+def _steps(x, *others) -> str:
+    """``x`` steps, as :func:`num` prints it, "1 step" for one (r381 F7: "1 steps")."""
+    said = num(x, *others)
+    return f"{said} step" if said == "1" else f"{said} steps"
+
+
 def _m_said(m, r) -> str:
     """m as the words say it: the one form :data:`HINTS` hold back until the full words."""
-    return f"m = {num(m)} ({num(m / r)} steps)"
+    return f"m = {num(m)} ({_steps(m / r)})"
 
 
 _DEGREES = ": the tilt is in degrees and the tangent takes radians: tan(np.radians(tilt))"
@@ -309,11 +342,12 @@ _SLOPE_WORDS = {
 #: Both slips make m thousands of times too large, and with it their own test for NaN says
 #: NaN on every case with an offset, so their answers are alike: told apart by whether the code
 #: reads ``pixel`` (r374 F3: view depth's slope was told "the `* pixel` is missing" first, of
-#: code that has it; :data:`_READS`). So are a test for NaN left out (``clear`` never read)
-#: and one against ``clear`` itself, a view distance (r374 F2: told "ignores `clear`").
+#: code that has it; :data:`_READS`). So are code that never reads ``clear`` and code that
+#: reads it but never tests the room (r381 F2: r + m on every case); a test against ``clear``
+#: itself, a view distance, differs from both on :data:`STEEP`.
 _OWN_WORDS = {}
 _READS = {"per unit, own test": {"unread": "pixel"}, "view slope, own test": {"reads": "pixel"},
-          "clear ignored": {"unread": "clear"}, "view units": {"reads": "clear"}}  # fmt: skip
+          "clear ignored": {"unread": "clear"}, "no room test": {"reads": "clear"}}  # fmt: skip
 
 MISTAKES = {
     "clear ignored": lambda a, e, g: (
@@ -321,11 +355,23 @@ MISTAKES = {
         "less than r + m, so no offset draws the decal over the wall and keeps the object in "
         "front: return NaN here (an offset this size puts the decal in front of the object)"
     ),
+    "no room test": lambda a, e, g: (
+        ": you return r + m on every case: no test of the room the object leaves. Here it "
+        f"leaves z_win(z) − z_win(z − clear) = {num(room(a[0], a[3], a[4], a[7]))} of window "
+        "depth, less than r + 2m: return NaN when r + m > room − m"
+    ),
     "view units": lambda a, e, g: (
-        f": your test for NaN did not fire. The room the object leaves is a window depth, as "
-        f"the offset is: z_win(z) − z_win(z − clear) = {num(room(a[0], a[3], a[4], a[7]))}, "
-        f"less than r + 2m here. If your test compares with `clear` itself ({num(a[7])}), "
-        "that is a view distance"
+        f": your test for NaN compares with `clear` itself ({num(a[7])}), a view distance. The "
+        "room the object leaves is a window depth, as the offset is: z_win(z) − z_win(z − "
+        f"clear) = {num(room(a[0], a[3], a[4], a[7]))}, less than r + 2m here"
+    ),
+    "rounded room": lambda a, e, g: (
+        ": your room is measured between rounded depths, "
+        f"{num(_rounded(a[0], a[3], a[4], a[5], a[7]))} here where the unrounded window depths "
+        f"leave {num(room(a[0], a[3], a[4], a[7]))}. Rounding to nearest keeps order: a decal "
+        "whose unrounded depth is no nearer than the object's rounds to no nearer a value, and "
+        "a tie keeps the object. So compare the unrounded depths (the rounding is what r pays "
+        "for)"
     ),
     "behind": ": you placed the object behind the wall (z + clear): it is in front, at "
     "z − clear, so room = z_win(z) − z_win(z − clear)",
@@ -403,9 +449,9 @@ def explain_offset(args, expected, got) -> str:
     if not np.isfinite(got) or got == 0 or (got > 0) != bool(reverse):
         return head
     if abs(got) < lo * (1 - ROUNDING):
-        return (f"{head} (not enough: {num(abs(got) / r, lo / r)} steps, where the decal can "
-                f"lie {num(m / r)} steps behind and must end a whole step nearer, "
-                f"{num(lo / r, abs(got) / r)} steps)")  # fmt: skip
+        return (f"{head} (not enough: {_steps(abs(got) / r, lo / r)}, where the decal can "
+                f"lie {_steps(m / r)} behind and must end a whole step nearer, "
+                f"{_steps(lo / r, abs(got) / r)})")  # fmt: skip
     if abs(got) > hi * (1 + ROUNDING):
         return (f"{head} (too much: the decal at its nearest, |o| + m in front of the wall, is "
                 f"now strictly nearer than the object {num(clear)} in front and shows "
@@ -423,10 +469,10 @@ def _rule(args, expected, got) -> str:
 #: What the words hold back until the full words (:func:`.tries.staged`, r316 item 5): m, the
 #: quantity the task derives, and the bounds and step counts that give it away.
 HINTS = (
-    (re.compile(r"m = \S+ \(\S+ steps\)"), "m (yours to work out)"),
+    (re.compile(r"m = \S+ \(\S+ steps?\)"), "m (yours to work out)"),
     (re.compile(r"from \S+ \(r \+ m\) to \S+ \(room − m, where"), "from r + m to room − m (where"),
     (
-        re.compile(r"\(not enough: \S+ steps, where the decal can lie [^)]*\)"),
+        re.compile(r"\(not enough: \S+ steps?, where the decal can lie [^)]*\)"),
         "(not enough: work out how far behind the wall the decal can lie)",
     ),
     (

@@ -146,6 +146,16 @@ def _drawn(rng, outcome) -> tuple[float, float, float, float]:
             return s
 
 
+def _echo(value) -> str:
+    """The returned value as :func:`.answers.short` gives it, its floats with 6 significant
+    digits (r381 F7: "(0.014900940040703407, 'unorm24', 0.01)")."""
+    if type(value) not in (tuple, list) or not 0 < len(value) <= 6:
+        return short(value)
+    parts = [f"{float(v):.6g}" if isinstance(v, (float, np.floating)) else short(v) for v in value]
+    inner = ", ".join(parts)
+    return f"({inner})" if type(value) is tuple else f"[{inner}]"
+
+
 def as_setup(value) -> tuple[str, float, float]:
     """(format, near, dz): the format's words read loosely (case, spaces, "reverse z"), the
     numbers strictly (finite)."""
@@ -153,9 +163,9 @@ def as_setup(value) -> tuple[str, float, float]:
     try:
         fmt, near, dz = value
     except (TypeError, ValueError):
-        raise WrongAnswerType(f"returned {short(value)}: return {WHAT}") from None
+        raise WrongAnswerType(f"returned {_echo(value)}: return {WHAT}") from None
     if not isinstance(fmt, (str, np.str_)):
-        raise WrongAnswerType(f"returned {short(value)}: its first value is the format, {WHAT}")
+        raise WrongAnswerType(f"returned {_echo(value)}: its first value is the format, {WHAT}")
     words = " ".join(re.sub(r"[-_]", " ", str(fmt).lower()).split())
     read = {"unorm24": UNORM, "unorm 24": UNORM, "d24": UNORM, "float32 reverse z": REVERSE,
             "reverse z": REVERSE, "float32": FORWARD, "neither": NEITHER}.get(words)  # fmt: skip
@@ -165,10 +175,10 @@ def as_setup(value) -> tuple[str, float, float]:
     numbers = []
     for v in (near, dz):
         if isinstance(v, (bool, str, bytes, np.bool_)) or not np.ndim(v) == 0:
-            raise WrongAnswerType(f"returned {short(value)}: near and dz are numbers, {WHAT}")
+            raise WrongAnswerType(f"returned {_echo(value)}: near and dz are numbers, {WHAT}")
         numbers.append(float(v))
     if not all(math.isfinite(v) for v in numbers):
-        raise WrongAnswerType(f"returned {short(value)}: near and dz are finite numbers, {WHAT}")
+        raise WrongAnswerType(f"returned {_echo(value)}: near and dz are finite numbers, {WHAT}")
     return read, numbers[0], numbers[1]
 
 
@@ -334,11 +344,12 @@ def _dz_words(what):
     def words(args, expected, got):
         z, gap, far, nearest = args
         fmt, n = got[0], got[1]
+        said_what = what(got) if callable(what) else what
         shown = REVERSE if fmt == NEITHER else fmt
         lo, hi = _resolves(shown, z, n, far) if 0 < n < z else (math.nan, math.nan)
         # told apart (r374: "0.022 to 0.022")
         said = num(lo) if fmt == UNORM else f"{num(lo, hi)} to {num(hi, lo)}"
-        return (f": {what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
+        return (f": {said_what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
                 + ("; for \"neither\" give reverse-Z's numbers, the better of the two"
                    if fmt == NEITHER else ""))  # fmt: skip
 
@@ -351,6 +362,22 @@ def _dz_wrong(args, expected, got) -> bool:
         and _near_ok(args, got[0], got[1])
         and not _dz_ok(args, got[0], got[1], got[2])
     )
+
+
+def _gap_words(got) -> str:
+    """The gap quoted as Δz: for unorm24 it is also unorm24's Δz at 5.1's own near plane, where
+    it equals the gap by construction (r381 F3: that slip was told "you gave the gap back")."""
+    if got[0] == UNORM:
+        return ("your Δz is the gap itself: that is unorm24's Δz at 5.1's own near plane (there "
+                "it equals the gap, by 5.1's construction), not at the near plane you return; "
+                "quote what your set-up resolves at yours")  # fmt: skip
+    return ("you gave the gap back as Δz; quote what your set-up resolves, the number that shows "
+            "it does the job")  # fmt: skip
+
+
+def _swapped_near(args, expected, got) -> bool:
+    """(format, Δz, near): the answer passes with its two numbers swapped (r381 F3)."""
+    return got[1] != got[2] and same_setup((got[0], got[2], got[1]), expected, args)
 
 
 def _reverse_dz_as(reading):
@@ -462,6 +489,11 @@ def match_setup(got, value, args=None) -> bool:
 
 
 MISTAKES = [
+    # r381 F3: (format, dz, near) was told "at your near plane 0.000298 unorm24 resolves …"
+    Mistake("near and dz swapped", lambda a, e, g: (
+        f": your near plane and Δz look swapped: return (format, near, dz). Your second value "
+        f"{num(g[1])} is the Δz, your third, {num(g[2])}, the near plane"),
+        fits=_swapped_near),
     # r374 F4: each told "Compare 5.1's near plane with `nearest` first", which they did
     Mistake("comparison flipped", _words_flipped, gives=_choice_by(
         lambda z, gap, far, nearest: expected_near(z, gap, far, 24) > nearest)),
@@ -509,8 +541,7 @@ MISTAKES = [
         and not _near_ok(a, UNORM, g[1])),
     Mistake("dz of the other buffer", _dz_words("that Δz is the other buffer's"),
             fits=lambda a, e, g: _dz_wrong(a, e, g) and _quoted_other(a, g)),
-    Mistake("dz is the gap", _dz_words("you gave the gap back as Δz; quote what your set-up "
-                                       "resolves, the number that shows it does the job"),
+    Mistake("dz is the gap", _dz_words(_gap_words),
             fits=lambda a, e, g: _dz_wrong(a, e, g) and _gap_quoted(a, g)),
     Mistake("dz", _dz_words("your Δz is not what your set-up resolves there"), fits=_dz_wrong,
             symptom=True),

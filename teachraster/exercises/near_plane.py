@@ -18,6 +18,7 @@ one step apart, with the second surface at z − gap or at z + gap), and it is a
 from __future__ import annotations
 
 import copy
+import math
 from functools import cache
 
 import numpy as np
@@ -177,6 +178,8 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             "negated": -solve(step, far),
             # r311 H-1: "rounding to nearest, so half a step is enough"
             "half": solve(step / 2, far),
+            # r381 F5: int() of the right n (0 below 1: told only "0 < n < z" first)
+            "int": float(math.trunc(solve(step, far))),
             **{f"{b} bits": solve(1.0 / (2**b - 1), far) for b in (16, 24) if b != bits},
         }
 
@@ -227,6 +230,11 @@ MISTAKES = {
     "negated": "your n has the right size and the wrong sign: a near plane lies in front of "
     "the eye, n > 0",
     "half": HALF_STEP,
+    "int": lambda a, e, g: (
+        f"int() truncates your n toward 0, {num(e, g)} to {num(g)}: that lies nearer than the "
+        "smallest near plane (0 is no near plane at all), where the two surfaces' window depths "
+        "are less than a step apart. Keep every digit, or round up"
+    ),
     **{
         f"{b} bits": f"your n is the one for a {b}-bit buffer, whatever `bits` is: the step is "
         "1/(2^bits − 1) with the case's own bits"
@@ -408,5 +416,8 @@ SAFE_NEAR = Exercise(
         (": Δz ≈ step · z² / n (for f ≫ n), so n grows like z², not like z", ""),
         ("; solve step · (f − n) z² / (f n) ≤ gap for n", "; differentiate z_win with respect "
          "to z, and find the n where one step divided by that slope at z is gap"),
+        # r381 F5: the sign slip's words gave the solved formula's denominator at once
+        ("gathering the terms in n gives gap·f + step·z² beside n, a plus, where yours has "
+         "gap·f − step·z²", "gather the terms in n again, and check the sign of each"),
     ),
 )  # fmt: skip

@@ -165,6 +165,12 @@ def _variants(z, near, far) -> dict[str, float]:
         "relative step, half": d * 2.0**-24 / slope,
         "half": step / (2 * slope),
         "gl ndc": _nearer_step(2 * d - 1) / 2 / slope,
+        # r381 F4: np.spacing of the signed NDC depth (negative below d = 1/2), over its
+        # slope 2|dd/dz| or over d's
+        "gl ndc, signed": float(np.spacing(np.float32(2 * d - 1))) / 2 / slope,
+        "gl ndc, signed, d's slope": float(np.spacing(np.float32(2 * d - 1))) / slope,
+        # r381 F4: float32's step at the view depth z, not at the stored d
+        "spacing of z": float(np.spacing(np.float32(z))),
         "infinite far": _nearer_step(near / z) * z * z / near,
         "infinite far, slope": step * z * z / near,
         # r325: d = n/z stored, the finite far plane's slope kept
@@ -185,6 +191,23 @@ _INFINITE = (
     "you dropped the far plane: d = n/z and |dd/dz| = n/z² hold for f = ∞ only; "
     "with this far plane d = (n/z − n/f)/(1 − n/f) and |dd/dz| = n/((1 − n/f) z²)"
 )
+
+
+def _signed_ndc_words(args, expected, got) -> str:
+    """np.spacing of 2d − 1 (r381 F4: its negative step was told "a gap is a positive
+    distance" alone)."""
+    ndc = 2 * float(reversed_depth(*args)) - 1
+    glclip = ("OpenGL's default NDC, 2d − 1 in [−1, 1], is reverse-Z without glClipControl(..., "
+              "GL_ZERO_TO_ONE), where float32 near −1 has steps of 2^-24 only (lesson 05b, §4). "
+              "The buffer here stores d itself, in [0, 1]")  # fmt: skip
+    if ndc < 0:
+        return ("your step is negative where the value you took the spacing of is negative: "
+                f"np.spacing of a negative float32 is negative, and 2d − 1 = {ndc:.4g} here. "
+                f"Did d go through [−1, 1] NDC? {glclip}")  # fmt: skip
+    return f"you took the step at 2d − 1 = {ndc:.4g}: {glclip}"
+
+
+_SIGNED_NDC = _signed_ndc_words
 
 
 def _one_minus_window_words(args, expected, got) -> str:
@@ -209,7 +232,8 @@ MISTAKES = {
     "window depth": "that is the Δz of ordinary window depth z_win, not reversed (or, the "
     "same answer, float32's step taken at depth 1, 2^-24, or unorm24's step): far depths lie "
     "near 1 there, where float32's step is 2^-24. Reverse-Z stores d = 1 − z_win, which lies "
-    "near 0 for far surfaces, where float32's steps are tiny",
+    "near 0 for far surfaces, where float32's steps are tiny (near and far swapped in d give "
+    "this very z_win: d = (n/z − n/f)/(1 − n/f) with n and f exchanged is f/(f − n) · (1 − n/z))",
     "step above 1": "you took float32's step just above depth 1, 2^-23: the buffer stores d, "
     "near 0 for far surfaces, and float32's step is the one at d",
     "float64": "you took float64's step at d (np.spacing of a float64): the buffer is "
@@ -228,6 +252,11 @@ MISTAKES = {
     "gl ndc": "you sent d through OpenGL's default NDC, 2d − 1 in [−1, 1], where float32 "
     "near −1 has steps of 2^-24 only: that is reverse-Z without glClipControl(..., "
     "GL_ZERO_TO_ONE) (lesson 05b, §4). The buffer here stores d itself, in [0, 1]",
+    "gl ndc, signed": _SIGNED_NDC,
+    "gl ndc, signed, d's slope": _SIGNED_NDC,
+    "spacing of z": "you took float32's step at z, the view depth: the buffer stores d, not z. "
+    "Δz is one float32 step at the stored d = (n/z − n/f)/(1 − n/f), divided by how fast d "
+    "changes with z, |dd/dz| = n/((1 − n/f) z²)",
     "infinite far": _INFINITE,
     "infinite far, slope": _INFINITE,
     "infinite far, depth": "you stored d = n/z, reverse-Z for a far plane at infinity, and "
