@@ -1353,7 +1353,8 @@ def test_lesson_08_review_r269_rules_table_and_llvmpipe(ns):
     )
     assert [r.split(" | ")[0] for r in rows[1:]] == [
         "| where MSAA evaluates an attribute (§2)", "| sample positions (§3)",
-        "| the tie rule, per sample (§4)", "| resolve filter (§6)", "| sRGB resolve (§6)",
+        "| the tie rule, per sample (§4)", "| depth under MSAA (§6)", "| resolve filter (§6)",
+        "| sRGB resolve (§6)",
         "| sample-rate shading (here)"]  # fmt: skip
     for section in ("GLSL §4.5", "§14.3.1)", "§18.3.1", "§14.3.1.1", "§19.2.4", "§5.6.6", "§23.6"):
         assert section in table, section
@@ -1396,7 +1397,7 @@ def test_lesson_08_review_r287_tie_row_clamp_alone_centroid_reason_and_minus(ns)
     for told in ("§14.6.6 *Polygon Multisample Rasterization*", "§14.6.1's", "§3.4.2.1",
                  "*Basic Polygon Rasterization*", "`tr.is_top_left`", "no rule named"):  # fmt: skip
         assert told in row, told
-    assert table.count("\n| ") == 7 and "Six rules of §2–§4 and §6" in table
+    assert table.count("\n| ") == 8 and "Seven rules of §2–§4 and §6" in table
     printed = streams(executed("08_antialiasing").notebook())
     if "no OpenGL here:" not in printed:
         assert ns.gl_same["§4's fan, 4-sample hub"] and ns.ties == 20

@@ -2020,7 +2020,7 @@ def test_08_predictions_are_answered_by_what_the_lesson_computes():
     assert ns.sample_rows == [2.25, 2.75, 3.25, 3.75]
     assert ns.standard_levels == ns.levels["rotated grid (standard)"]
     source = (ROOT / "notebooks" / "08_antialiasing.ipynb").read_text()
-    assert "answer=odd_standard," in source and len(ns.edge_levels) == 4
+    assert "answer=odd_standard[QUESTION_ROWS]," in source and len(ns.edge_levels) == 4
     # review r13 08 (missing): the intersection, inside both triangles, is antialiased by the
     # per-sample depth test: pixels there hold samples of both, none with one sample
     assert ns.split.sum() == 8 and not (ns.split & ~ns.inside_both).any()  # "8 pixels"

@@ -82,7 +82,9 @@ class SamplingExplorer(Shown):
         self.kernel = widgets.ToggleButtons(options=KERNELS, value=kernel)
         self._compute_at(self.rate.value, 0)
         with style_context(style):
-            self.fig = new_figure((9.0, 7.5), self.backend)
+            # 5.6 in (about 540 px): sliders and all three panels on one 1366 × 900 screen
+            # (review r382 S1: at 7.5 in the widget stood 938 px tall)
+            self.fig = new_figure((9.0, 5.6), self.backend)
             self.fig.set_layout_engine("constrained")
             axes = self.fig.subplots(3, 1, sharex=True)
             self.art = plot_sampling(axes, self.result)
