@@ -155,3 +155,19 @@ def test_8_2_states_the_facts_not_the_bound():
         hinted = old.sub(new, hinted) if hasattr(old, "sub") else hinted.replace(old, new)
     assert "(where in the tile can a fragment lie, where is its depth smallest" in hinted
     assert "no nearer than its nearest vertex" not in hinted
+
+
+def test_f6_the_scene_says_why_a_pixel_of_the_same_fill_is_explained():
+    """F6: with size steps the scene explained pixel (0, 0), a block partial for rejected, with
+    no reason (both walks leave it out): now it says that only the walk's work differs."""
+    from teachraster.exercises import picture_scenes
+
+    fn = R376["blocks in int64 with size steps and no tie bias"][1]
+    codes, _ = picture_scenes.walk(fn)
+    reference, _ = picture_scenes.walk(tile_blocks.expected_block)
+    assert codes[0, 0] != reference[0, 0]
+    why = picture_scenes._pixel_why(codes, 0, 0)
+    assert why == (
+        "; both walks leave out this pixel: a partial block's pixels are each tested, so here "
+        "only the walk's work differs, not the picture"
+    )
