@@ -4576,3 +4576,129 @@ WRONG["decal bias computing room, never testing it"] = (
     "no test of the room the object leaves",
 )
 KINDS["decal bias computing room, never testing it"] = "no room test"
+
+
+# == r376 (fixex08a): exercise 08's two-mistake answers, one axis only, kinds read before orienting
+def _blocks_r376(step_full=False, beta_off=-1, orient=True, offsets="right", tl_given=False,
+                 accept_above=False):  # fmt: skip
+    """classify_block counted in int64 units (256 a pixel, the notebook's way) with slips:
+    ``step_full`` size steps for size − 1; ``beta_off`` the bias off edges neither top nor left
+    (−1 right, 0 none, +1 added); ``orient`` False: the edges as given; ``offsets`` "swapped"
+    (R and T exchanged), "R x only" (B's term dropped from R), "x only" (from R and T);
+    ``tl_given``: each edge's kind read off the edges as given, index by index, before
+    orienting; ``accept_above``: the accept test E₀ + T + β > 0."""
+
+    def classify_block(xy, x0, y0, size):
+        v = np.rint(np.asarray(xy, dtype=float) * 256).astype(np.int64)
+        px, py = np.asarray(x0) * 256 + 128, np.asarray(y0) * 256 + 128
+        area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+        if area == 0:
+            return np.full(px.shape, "rejected")
+        given = v.copy()
+        if orient and area < 0:
+            v = v[[0, 2, 1]]
+        rejected = np.zeros(px.shape, dtype=bool)
+        accepted = np.ones(px.shape, dtype=bool)
+        step = 256 * (size if step_full else size - 1)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            A, B = a[1] - b[1], b[0] - a[0]
+            R, T = step * (max(A, 0) + max(B, 0)), step * (min(A, 0) + min(B, 0))
+            if offsets == "swapped":
+                R, T = T, R
+            elif offsets == "R x only":
+                R = step * max(A, 0)
+            elif offsets == "x only":
+                R, T = step * max(A, 0), step * min(A, 0)
+            ta, tb = (given[k], given[(k + 1) % 3]) if tl_given else (a, b)
+            top_left = tb[1] < ta[1] or (tb[1] == ta[1] and tb[0] > ta[0])
+            beta = 0 if top_left else beta_off
+            e0 = A * (px - a[0]) + B * (py - a[1]) + beta
+            rejected |= e0 + R < 0
+            accepted &= (e0 + T > 0) if accept_above else (e0 + T >= 0)
+        return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
+
+    return classify_block
+
+
+def _hiz_r376(low="ceil", high="floor", strict=False, clamp=True, tile=False):
+    """hiz_rejects at the extreme centres of the tile cut to the box, with slips: ``low`` and
+    ``high`` how the box's first and last column (row) are rounded ("int": int(xmin − ½),
+    int(xmax − ½)); ``strict`` > for ≥; ``clamp`` False: no nearer-than-the-vertex clamp;
+    ``tile``: lesson 10's whole tile."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+        first = {"ceil": math.ceil, "int": int}[low]
+        last = {"floor": math.floor, "int": int}[high]
+        if tile:
+            c_lo, c_hi, r_lo, r_hi = col0, col0 + size - 1, row0, row0 + size - 1
+        else:
+            c_lo = max(col0, first(min(x1, x2, x3) - 0.5))
+            c_hi = min(col0 + size - 1, last(max(x1, x2, x3) - 0.5))
+            r_lo = max(row0, first(min(y1, y2, y3) - 0.5))
+            r_hi = min(row0 + size - 1, last(max(y1, y2, y3) - 0.5))
+        if c_lo > c_hi or r_lo > r_hi:
+            return True
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        a = ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+        b = ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+        xs, ys = np.array([c_lo + 0.5, c_hi + 0.5]), np.array([r_lo + 0.5, r_hi + 0.5])
+        corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)
+        near = max(corners.min(), min(z1, z2, z3)) if clamp else corners.min()
+        return bool(near > np.max(buffer)) if strict else bool(near >= np.max(buffer))
+
+    return hiz_rejects
+
+
+R376 = {
+    "blocks in int64 with size steps and no tie bias": (
+        "classify_block", _blocks_r376(step_full=True, beta_off=0), "your offsets span size steps",
+        "size steps for size − 1"),
+    "blocks in int64 of one winding, the bias added": (
+        "classify_block", _blocks_r376(orient=False, beta_off=1), "handle both windings",
+        "one winding only"),
+    "blocks in int64, R and T swapped, accept test > 0": (
+        "classify_block", _blocks_r376(offsets="swapped", accept_above=True),
+        "you rejected by E's smallest value", "rejected by the smallest value"),
+    "blocks with B's term dropped from R": (
+        "classify_block", _blocks_r376(offsets="R x only"), "takes A's term alone and drops B's",
+        "offsets of one axis only (reject x only)"),
+    "blocks with B's term dropped from R and T": (
+        "classify_block", _blocks_r376(offsets="x only"), "take A's term alone and drop B's",
+        "offsets of one axis only (x only)"),
+    "blocks with the edge kinds read before orienting": (
+        "classify_block", _blocks_r376(tl_given=True), "off the edges as given and oriented",
+        "edge kinds read before orienting"),
+    "Hi-Z with int() at both ends of the box": (
+        "hiz_rejects", _hiz_r376(low="int", high="int"), "a column (or row) before the box's",
+        "one before"),
+    "Hi-Z with > and no vertex clamp": (
+        "hiz_rejects", _hiz_r376(strict=True, clamp=False), "a fragment exactly at the stored",
+        "strict"),
+    "Hi-Z by lesson 10's bound with >": (
+        "hiz_rejects", _hiz_r376(tile=True, strict=True), "a fragment exactly at the stored",
+        "strict"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R376.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R376.items()})
+TWO_MISTAKES.update({
+    "blocks in int64 with size steps and no tie bias": (
+        "classify_block", R376["blocks in int64 with size steps and no tie bias"][1],
+        ("your offsets span size steps", "the top-left rule excludes it")),
+    "blocks in int64 of one winding, the bias added": (
+        "classify_block", R376["blocks in int64 of one winding, the bias added"][1],
+        ("handle both windings", "your bias has the wrong sign")),
+    "blocks in int64, R and T swapped, accept test > 0": (
+        "classify_block", R376["blocks in int64, R and T swapped, accept test > 0"][1],
+        ("you rejected by E's smallest value", "your accept test asks E₀ + T + β > 0")),
+    "Hi-Z with int() at both ends of the box": (
+        "hiz_rejects", R376["Hi-Z with int() at both ends of the box"][1],
+        ("a column (or row) before the box's first", "you rounded with int()")),
+    "Hi-Z with > and no vertex clamp": (
+        "hiz_rejects", R376["Hi-Z with > and no vertex clamp"][1],
+        ("a fragment exactly at the stored depth", "you took the bare plane at the corners")),
+    "Hi-Z by lesson 10's bound with >": (
+        "hiz_rejects", R376["Hi-Z by lesson 10's bound with >"][1],
+        ("a fragment exactly at the stored depth", "you took lesson 10's bound")),
+})  # fmt: skip

@@ -407,10 +407,9 @@ def test_c2_every_82_failure_quotes_arguments_that_rerun_it(first_words):  # noq
 
 def test_s1_cell_5_states_the_bound_and_asks_the_why():
     task = flat(_cell("hiz_rejects_task"))
-    assert ("**The bound asked** is the bound that this fact and lesson 10's two give for a few "
-            "numbers per tile, with no coverage test: the larger of the plane's minimum over the "
-            "tile's pixel centres inside the box (its border included) and the nearest vertex's "
-            "depth, and +∞ where the box holds none of the tile's centres.") in task  # fmt: skip
+    # r376 (fixex08a): the bound is no longer spelled out (the task's reasoning); the facts are
+    assert ("**The bound asked** is the one that this fact and lesson 10's two give together for "
+            "a few numbers per tile, with no coverage test.") in task  # fmt: skip
     main = task.split("<details>")[0]
     assert main.count("?") >= 4
     assert "Looser safe bounds are named, not taken" not in task

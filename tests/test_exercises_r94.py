@@ -353,7 +353,8 @@ def test_hiz_main_text_defines_the_answer_the_check_takes():
     # nearer than the nearest vertex cannot hold a fragment either): the bound these facts give
     # for a few numbers per tile
     assert "the **highest** lower bound" not in flat, flat
-    assert "the bound that this fact and lesson 10's two give" in flat, flat
+    # r376: the bound is no longer spelled out, only what gives it
+    assert "the one that this fact and lesson 10's two give together" in flat, flat
     assert "never a coverage test per pixel" in flat, flat
     assert "rejected at once when a lower bound" in flat, flat
 

@@ -977,6 +977,7 @@ def diagnose(
         name = params[back] if back < len(params) else f"number {back + 1}"
         words = handed_back_words(name)
         return {r.index: ("constant", _said_constant(spec, r, words)) for r in failing}
+    exact = run_checker(lambda: _exactly(spec, whole, failing), None) or _Fit(None, 0, set(), 0, False)  # fmt: skip
     chosen_of = {}
     for r in failing:
         # r286 C1: inf is said as such, not as a symptom ("one texel alone") of a slip; a
@@ -987,6 +988,8 @@ def diagnose(
         chosen = next(
             (f for f in whole if r.index in f.failing and (f.mistake.gives or not odd)), None
         )
+        if chosen is not None and chosen.mistake.with_others and r.index in exact.failing:
+            chosen = exact
         if chosen is None:
             here = [f for f in ran if r.index in f.failing and not f.coincidence]
             if not spec.partial_names:  # every failing answer, or no name
@@ -1013,6 +1016,23 @@ def diagnose(
                 kind, words = _honest(spec, r, kind, words, None, r.index in explained)
                 out[r.index] = (kind, _say(spec, r, words))
     return _said_once(spec, out)
+
+
+def _exactly(spec: Exercise, whole: list[_Fit], failing: list[Result]) -> _Fit | None:
+    """r376 F1: the first mistake of the table that gives every answer, each failing one it
+    explains exactly (the exercise's own test, not its lenient match), where a second slip
+    (``with_others``: float64 pixels at the far ties) also gives every answer: said before it
+    (an int64 count whose two slips give its answers at the far ties was told float64). None
+    where there is none, or no second slip."""
+    if not any(f.mistake.with_others for f in whole):
+        return None
+    for f in whole:
+        if f.mistake.with_others or f.mistake.gives is None:
+            continue
+        hits = [r for r in failing if r.index in f.failing]
+        if all(spec.same(mistake_answer(f.mistake, r), r.got, r.args) for r in hits):
+            return f
+    return None
 
 
 def _honest(

@@ -15,6 +15,8 @@ while +inf where the plane lies beyond the farthest vertex at every centre in qu
 fragment there) is accepted as tighter. A tile with an empty pixel (+inf) rejects only a
 triangle with no fragment in it; read as GL's clear value 1.0 instead, it also rejects one at
 exactly depth 1.0, which GL_LESS fails there, and that verdict is accepted too (r248 S2).
+Two mistakes in one answer (:data:`PAIRS`: "strict" beside a bound's slip, ``int()`` at both
+ends of the box) are each named on the failures they decide (r376 F2, F5).
 
 Expected answers: the renderer's own pieces, as :mod:`teachraster.pipeline.visibility.hierarchical_z`
 uses them: the depth plane :meth:`~teachraster.pipeline.rasterization.batched_fill.Fragments.plane`
@@ -200,6 +202,7 @@ def _hiz_cases(rng, word) -> list[tuple[str, tuple, bool]]:
         *_beyond_far_cases(),  # r214 item 1
         *_one_line_cases(),  # r221 items 2, 4
         *_odd_border_cases(),  # r232 wrongly passed 2
+        *_int_both_cases(),  # r376 F2
     ]  # fmt: skip
     for k in range(18):
         row0, col0 = (int(v) * TILE for v in rng.integers(0, 4, 2))
@@ -481,6 +484,22 @@ def _odd_border_cases() -> list[tuple[str, tuple]]:
     ]  # fmt: skip
 
 
+#: r376 F2: a triangle whose box starts at x = 2.3, inside the tile, and runs past its bottom,
+#: its depth falling left and down (0.5 + 0.01·x − 0.01·y): over the tile's centres in the box
+#: the plane is nearest at (2.5, 7.5), 0.45; at the box's own corner kept within the tile,
+#: (2.3, 7.5), 0.448; at the centre one column before the box, (1.5, 7.5), 0.44 (int(2.3 − ½)
+#: is 1). The stored 0.445 lies between the last two: the box's own corners reject, as the task
+#: does, and int() at both ends keeps (both were told "the bounding box's own corners").
+_BEFORE_BOX = np.array([[2.3, 2.0, 0.503], [12.0, 20.0, 0.42], [2.3, 20.0, 0.323]])
+
+
+def _int_both_cases() -> list[tuple[str, tuple]]:
+    """r376 F2: :data:`_BEFORE_BOX`, a column before the box nearer than the box's corner."""
+    return [("a triangle whose bounding box starts 0.2 px before a centre, inside the tile, "
+             "its depth falling towards the box's left side",
+             (_BEFORE_BOX, 0, 0, TILE, np.full((TILE, TILE), 0.445)))]  # fmt: skip
+
+
 #: r64 08-4's triangle: over tile (0, 0, 8) it covers 24 centres, all behind 0.1662, while the
 #: plane at the extreme centres (and the nearest vertex) lie in front: the block is kept.
 _SLIVER = np.array([[-707 / 256, -1852 / 256, 0.3494], [-1511 / 256, 5853 / 256, 0.7552],
@@ -720,7 +739,8 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
     judged = (
-        border in ("past", "trunc", "int", "before", "shifted", "outward", "round") or past_tile
+        border in ("past", "trunc", "int", "before", "shifted", "outward", "round", "int both")
+        or past_tile
     )
     if not judged and _box_corners(xyz, row0, col0, size) is None:
         return np.inf  # (the others judge the box empty or not their own way)
@@ -734,8 +754,9 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         a = int(np.ceil(lo + 0.5)) if border == "shifted" else a
         a = int(np.floor(lo - 0.5)) if border == "outward" else a
         a = int(np.round(lo)) if border == "round" else a  # half to even, as round() does
+        a = int(lo - 0.5) if border == "int both" else a  # r376 F2: int() at both ends
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
-             "trunc": int(hi - 0.5), "int": int(hi - 0.5),
+             "trunc": int(hi - 0.5), "int": int(hi - 0.5), "int both": int(hi - 0.5),
              "shifted": int(np.floor(hi + 0.5)), "outward": int(np.ceil(hi - 0.5)),
              "round": int(np.round(hi)) - 1}.get(
             border, int(np.floor(hi - 0.5)))  # fmt: skip
@@ -1641,10 +1662,69 @@ HIZ_HINTS = (
      "blocks Hi-Z could reject)", ": which of the two, then, bounds how near a fragment can be?"),
 )  # fmt: skip
 
+
+def _strict_bounds(xyz, row0: int, col0: int, size: int) -> dict[str, float]:
+    """r376 F5: the bounds of the table's mistakes that "strict" (> for ≥) is combined with."""
+    xyz = np.asarray(xyz, dtype=float)
+    box = _box_corners(xyz, row0, col0, size)
+    zmin = float(xyz[:, 2].min())
+    with np.errstate(all="ignore"):
+        bare = np.inf if box is None else float(plane_at(xyz, *box, clamp=False).min())
+        return {
+            "whole tile": tile_bound(xyz, row0, col0, size),
+            "whole tile, bare": float(_bare_plane(xyz, *_corners(row0, col0, size)).min()),
+            "no clamp": bare,
+            "vertex": zmin,
+            "smaller bound": min(bare, zmin),
+            "box corners": _box_own_corners(xyz, row0, col0, size),
+            "box uncut": _cut_bound(xyz, row0, col0, size, cut=""),
+            "border": _cut_bound(xyz, row0, col0, size, border="none"),
+            "one before": _cut_bound(xyz, row0, col0, size, border="before"),
+            "one past": _cut_bound(xyz, row0, col0, size, border="past"),
+            "int for floor": _cut_bound(xyz, row0, col0, size, border="trunc"),
+        }
+
+
+#: r376 F2, F5: two mistakes of the table in one answer, each named on the failures it
+#: decides: "strict" beside a bound's mistake (lesson 10's bound with > got only the rule), and
+#: int() at both ends of the box (int(xmin − ½), one column before it, and int(xmax − ½)),
+#: which was told "the bounding box's own corners", a mistake the code does not contain.
+PAIRS = {
+    **{f"{kind} and strict": (kind, "strict") for kind in _strict_bounds(_SMALL, 0, 0, TILE)},
+    "one before and int for floor": ("one before", "int for floor"),
+}
+
+
+def _pair_variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
+    far = np.max(buffer)
+    # (an empty box, +inf, rejected whatever the tile stores, an empty pixel's +inf too)
+    bounds = _strict_bounds(xyz, row0, col0, size)
+    out = {f"{k} and strict": bool(b == np.inf or b > far) for k, b in bounds.items()}
+    out["one before and int for floor"] = bool(
+        _cut_bound(xyz, row0, col0, size, border="int both") >= far
+    )
+    return out
+
+
+def _pairs(singles: list[Mistake]) -> list[Mistake]:
+    """:data:`PAIRS` as combinations (:attr:`.exercise.Mistake.parts`): without one part, the
+    other's answer, so that each failure is told the part that decides it."""
+    gives = {m.kind: m.gives for m in singles}
+    out = []
+    for m in variant_mistakes(_pair_variants, dict.fromkeys(PAIRS, "")):
+        first, second = PAIRS[m.kind]
+        parts = (Mistake(first, MISTAKES[first]), Mistake(second, MISTAKES[second]))
+        other = {first: gives[second], second: gives[first]}
+        out.append(replace(m, parts=parts, without=lambda part, o=other: o[part.kind], only_whole=True))  # fmt: skip
+    return out
+
+
+_SINGLES = [replace(m, only_whole=True) if m.kind in ONLY_WHOLE + EXACT else m
+            for m in variant_mistakes(_variants, MISTAKES, (FLOAT32,))]  # fmt: skip
+
 HIZ_REJECTS = Exercise(
     "hiz_rejects", hiz_cases, as_bool, same_verdict, explain_hiz, _rule,
-    [replace(m, only_whole=True) if m.kind in ONLY_WHOLE + EXACT else m
-     for m in variant_mistakes(_variants, MISTAKES, (FLOAT32,))],
+    [*_SINGLES, *_pairs(_SINGLES)],
     draw=draw_hiz, hints=HIZ_HINTS, call_words=call_words,  # r248 S1
     # r94 D8-6: a bool answer agrees with many mistakes on any one case: "use ≥" was said to
     # a function using ≥ (the smaller of the two bounds); name only a mistake giving every

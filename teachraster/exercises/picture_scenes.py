@@ -507,8 +507,11 @@ def tile_scene(fn) -> Scene:
 def _pixel_why(got, row: int, col: int) -> str:
     """Where the pixel is filled by one walk and not the other: which and why (r173 D1)."""
     ours = bool(walk_coverage(walk(tb.expected_block)[0])[row, col])
-    if got is None or bool(walk_coverage(np.asarray(got))[row, col]) == ours:
+    if got is None:
         return ""
+    if bool(walk_coverage(np.asarray(got))[row, col]) == ours:  # r376 F6: the reason said too
+        return (f"; both walks {'fill' if ours else 'leave out'} this pixel: a partial block's "
+                "pixels are each tested, so here only the walk's work differs, not the picture")  # fmt: skip
     who = "the package fills this pixel, yours does not" if ours else "yours fills this pixel, the package does not"  # fmt: skip
     return f"; {who}: {tb.pixel_words(TILE_TRIANGLE.copy(), row, col)}"
 

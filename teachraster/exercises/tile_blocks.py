@@ -31,7 +31,8 @@ extreme centres (:func:`~teachraster.core.edges.edge_values_at`) and its tie-awa
 classification with one knob turned (:func:`classify_with`): the offset of another corner,
 the offsets' sign flipped, reject and accept offsets swapped, ``size`` steps for ``size − 1``
 (both offsets, or one alone: llvmpipe's reject offset), another tie rule or a bias larger than
-E's step, one winding only, two vertices swapped whatever the winding. Explanations name the
+E's step, one winding only, two vertices swapped whatever the winding, one axis's term dropped
+from the offsets, the edges' kinds read before orienting (r376). Explanations name the
 first block of the grid that differs, the edge that decides it and its extreme value.
 """
 
@@ -126,12 +127,20 @@ OFFSETS = {
     "no accept offset": lambda a, b, d: (d * (_pos(a) + _pos(b)), 0 * a),
     "no reject offset": lambda a, b, d: (0 * a, d * (_neg(a) + _neg(b))),
     "A's sign lost": lambda a, b, d: (d * (_pos(-a) + _pos(b)), d * (_neg(-a) + _neg(b))),
+    # r376 F3: one axis only, B's term (the rows) or A's (the columns) dropped, from both
+    # offsets or from the reject offset alone
+    "x only": lambda a, b, d: (d * _pos(a), d * _neg(a)),
+    "y only": lambda a, b, d: (d * _pos(b), d * _neg(b)),
+    "reject x only": lambda a, b, d: (d * _pos(a), d * (_neg(a) + _neg(b))),
+    "reject y only": lambda a, b, d: (d * _pos(b), d * (_neg(a) + _neg(b))),
 }
 
 
-def _owns(tie: str, setup, k: int, d) -> bool:
-    """Does edge k (running along ``d``) own a centre exactly on it, under rule ``tie``?"""
-    owns = {"strict": False, "loose": True, "top-left": bool(setup.top_left[k])}.get(tie)
+def _owns(tie: str, setup, k: int, d, tl=None) -> bool:
+    """Does edge k (running along ``d``) own a centre exactly on it, under rule ``tie``?
+    ``tl``: the edge's top-left flag as the student's code has it (the set-up's by default)."""
+    tl = bool(setup.top_left[k]) if tl is None else tl
+    owns = {"strict": False, "loose": True, "top-left": tl}.get(tie)
     return edge_kind(d) in tie.split("-") if owns is None else owns
 
 
@@ -152,17 +161,25 @@ SPLIT_TIES = {"accept strict": ("top-left", "strict"), "reject loose": ("loose",
               "accept loose": ("top-left", "loose")}  # fmt: skip
 
 
-def _passes(e, tie: str, setup, k: int, d) -> np.ndarray:
+def _passes(e, tie: str, setup, k: int, d, tl=None) -> np.ndarray:
     """Edge k's test of the values ``e`` (units² of the package's grid, :func:`classify_with`)
     under rule ``tie`` (a bias: E ≥ it off top-left edges; "plus one": llvmpipe's +1 on a top
     or left edge's constant without its −1 on every one, E ≥ −2^-16 px² there and E ≥ 0
-    elsewhere, r248 half-named 5)."""
+    elsewhere, r248 half-named 5). ``tl``: the edge's top-left flag as the student's code
+    has it (r376 F1, F4: an edge as given, or the flag of another edge)."""
     per_px2 = setup.unit**2  # units² a px² (a bias in px² is a whole number of them)
+    tl = bool(setup.top_left[k]) if tl is None else tl
     if tie == "plus one":
-        return e >= (-round(STEP * per_px2) if setup.top_left[k] else 0)
+        return e >= (-round(STEP * per_px2) if tl else 0)
     if tie in BIASES:
-        return e >= (0 if setup.top_left[k] else round(BIASES[tie] * per_px2))
-    return passes(e, _owns(tie, setup, k, d))
+        return e >= (0 if tl else round(BIASES[tie] * per_px2))
+    return passes(e, _owns(tie, setup, k, d, tl))
+
+
+def _given_flags(xy, unit) -> list[bool]:
+    """The top-left flag of each edge of the triangle as given (v1→v2, v2→v3, v3→v1)."""
+    g = np.rint(snap(np.asarray(xy, dtype=float)) * unit).astype(np.int64)
+    return [edge_kind(g[(k + 1) % 3] - g[k]) in ("top", "left") for k in range(3)]
 
 
 def _oriented(xy):
@@ -179,7 +196,8 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     ``OFFSETS[offsets]``. ``tie``: "top-left", "strict" (E > 0), "loose" (E >= 0), another
     rule of two kinds of edges ("bottom-right", "top-right", "bottom-left", r107 N8-2), or
     "as given": the top-left rule of each edge as given, before orienting it (r114 D8-4: the
-    bottom-right rule on a counter-clockwise triangle), or "accept strict": the rule in the
+    bottom-right rule on a counter-clockwise triangle), or "read before orienting": the flags
+    of the edges as given on the oriented edges, index by index (r376 F4), or "accept strict": the rule in the
     reject test only, the accept test E > 0 on every edge (r141 D8.1-6), or a key of
     :data:`BIASES` (the rule folded into a bias of the wrong size, ex30a). ``orient`` False: the
     edges as given; "cull": every block of a counter-clockwise triangle rejected (r114 item 5);
@@ -195,7 +213,9 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     "inside" rejects a block whose four extreme points all lie outside the triangle and
     accepts one whose points all lie inside (no per-edge test); "accept by the best corner"
     accepts a block every edge's maximising corner passes; "every edge rejects" rejects a block
-    only when all three edges fail their reject test (``&=`` for ``|=``, r267). Edge functions in integer units of
+    only when all three edges fail their reject test (``&=`` for ``|=``, r267); "reject at
+    zero", "accept above zero" a test's comparison slipped (r162; r376 F5: combined with the
+    others). Edge functions in integer units of
     the package's grid (512 a pixel: vertices on the 1/256 grid and points on the 1/2 grid are
     whole numbers of them), exact at any size (r248 F1: in float64 pixels a slip with no
     effect on a far float64 tie was named there, for float64's rounding).
@@ -225,6 +245,14 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     d = int(round(d * unit))
     if orient == "unchecked" and tie == "top-left":
         tie = accept_tie = "left-top"  # the rule from the kinds of the edges as given
+    # r376 F1: the edges as given take their top-left flags (a bias's too) from themselves, as
+    # the student's code reads them; F4: "read before orienting", the oriented edges with the
+    # flags of the edges as given, index by index
+    tl = [None] * 3
+    if given or tie == "read before orienting":
+        tl = _given_flags(xy, unit)
+        tie = "top-left" if tie == "read before orienting" else tie
+        accept_tie = "top-left" if accept_tie == "read before orienting" else accept_tie
     if orient == "flipped":
         v = v[[0, 2, 1]]
         # the rule from the kinds of these (wrongly oriented) edges, as the student's code has it
@@ -232,6 +260,10 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     rejected = np.zeros(px.shape, bool)
     accepted = np.ones(px.shape, bool)
     every_fails = np.ones(px.shape, bool)
+    # r162: a test's comparison slipped (≤ 0 for < 0, > 0 for ≥ 0): its value one step of E at
+    # a centre lower; r376 F5: here, so that it combines with the other knobs
+    low = round(STEP * unit**2)
+    rj, ac = (low if logic == name else 0 for name in SIGN_SLIPS)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
         e0 = (b[0] - a[0]) * (py - a[1]) - (b[1] - a[1]) * (px - a[0])
@@ -239,15 +271,13 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         if longer:  # one offset a step longer than the other
             r2, t2 = OFFSETS[offsets](-(b[1] - a[1]), b[0] - a[0], d + unit)
             r, t = (r2, t) if longer == "reject" else (r, t2)
-        rejected |= ~_passes(e0 + r, tie, setup, k, b - a)
-        every_fails &= ~_passes(e0 + r, tie, setup, k, b - a)
-        accepted &= _passes(e0 + t, accept_tie, setup, k, b - a)
+        rejected |= ~_passes(e0 + r - rj, tie, setup, k, b - a, tl[k])
+        every_fails &= ~_passes(e0 + r - rj, tie, setup, k, b - a, tl[k])
+        accepted &= _passes(e0 + t - ac, accept_tie, setup, k, b - a, tl[k])
     if logic == "every edge rejects":  # r267 half-named 2: ``rejected &=`` for ``|=``
         rejected = every_fails
     if logic == "accept by the best corner":
         accepted = ~rejected
-    elif logic in SIGN_SLIPS:  # r162: the tests' own comparison slipped, ≤ or >
-        return _sign_slip(xy, x0, y0, size, logic)
     return verdicts(rejected, accepted & ~rejected, shape, scalar)
 
 
@@ -258,22 +288,6 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
 SIGN_SLIPS = ("reject at zero", "accept above zero")
 #: The smallest positive value E takes at a pixel centre (px²), vertices on the 1/256 grid.
 STEP = 2.0**-16
-
-
-def _sign_slip(xy, x0, y0, size, logic: str):
-    """classify_block with the right offsets and bias, one test's comparison slipped."""
-    gx, gy = grid_of(x0, y0)
-    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
-    if setup.area2 == 0:
-        return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
-    rows, cols = _corners(gx.ravel(), gy.ravel(), size)
-    e = (edge_values_at(setup, rows.ravel(), cols.ravel()) / setup.unit**2).reshape(4, -1, 3)
-    beta = np.where(np.asarray(setup.top_left, bool), 0.0, -STEP)  # (3,)
-    best, worst = e.max(axis=0) + beta, e.min(axis=0) + beta  # (n, 3)
-    reject_fails = best <= 0 if logic == "reject at zero" else best < 0
-    accept_passes = worst > 0 if logic == "accept above zero" else worst >= 0
-    rejected = reject_fails.any(axis=1)
-    return verdicts(rejected, accept_passes.all(axis=1) & ~rejected, gx.shape, gx.ndim == 0)
 
 
 def edge_kind(d) -> str:
@@ -692,6 +706,18 @@ BLOCK_KNOBS = Knobs(classify_with, {
              + _by_verdicts(_edge_table(*a), e, g)[2:]), "inside"),
         Slip("best corner accepts", _at_first(lambda a, e, g: _by_verdicts(
              _edge_table(*a), e, "accepted", cause=True)[2:]), "accept by the best corner"),
+        # r162: the sign tests' comparisons slipped; r376 F5: knobs, so that a second mistake
+        # beside one is named on its own failures (R and T swapped with "> 0" got the rule)
+        Slip("reject test E ≤ 0", _at_first(lambda a, e, g: "your reject test rejects when "
+             "E₀ + R + β ≤ 0: it also rejects a block whose best centre has E + β exactly 0, "
+             "and such a centre passes the pixel test (E + β ≥ 0): reject only when "
+             "E₀ + R + β < 0; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
+             "reject at zero"),
+        Slip("accept test E > 0", _at_first(lambda a, e, g: "your accept test asks "
+             "E₀ + T + β > 0: it leaves partial a block whose worst centre has E + β exactly 0, "
+             "and such a centre passes the pixel test (E + β ≥ 0): accept when E₀ + T + β ≥ 0 "
+             "on every edge; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
+             "accept above zero"),
     ],
 })  # fmt: skip
 
@@ -719,6 +745,23 @@ AS_GIVEN = _only_whole(
         "oriented edge (interior on its positive side); here " + _tie_words(a, e, g)
     ),
     tie="as given",
+)
+
+#: r376 F4: the tie kinds read off the edges as given, index by index, and the edges then
+#: oriented (a counter-clockwise triangle's oriented edge k takes the kind of its edge k as
+#: given, another edge or the same one reversed) was caught by one random case and told only
+#: "your code for that winding goes wrong"; the hard case "counter-clockwise, centres on a left
+#: and a right edge" catches it on every run.
+READ_BEFORE_ORIENTING = _only_whole(
+    "edge kinds read before orienting",
+    lambda a, e, g: (
+        "you read each edge's kind (top, left …) off the edges as given and oriented the "
+        "triangle after: on a counter-clockwise triangle the swap renumbers the edges, so edge "
+        "k of the oriented triangle takes the kind of edge k as given, another edge (or the "
+        "same one walked the other way), and its tie goes the wrong way; read the kinds off the "
+        "oriented edges, the ones whose E you test; here " + _tie_words(a, e, g)
+    ),
+    tie="read before orienting",
 )
 
 #: r114 item 5 (r107 N8-2's open xfail): a function that rejects every block of a
@@ -1133,6 +1176,36 @@ def _here(a, e, g) -> str:
     return "; here " + _block_rule(a, e, g)[2:]
 
 
+def _one_axis_words(offsets: str):
+    """r376 F3: an offset that drops one axis's term (B's, the rows, or A's, the columns)
+    was told only the rule at one centre."""
+    kept, dropped = ("A", "B") if "x" in offsets else ("B", "A")
+    axis = {"A": ("x", "columns", "to the right"), "B": ("y", "rows", "downwards")}
+    one = offsets.startswith("reject")
+    which = "reject offset R takes" if one else "offsets R and T take"
+    drop = "drops" if one else "drop"
+
+    def words(a, e, g):
+        return (
+            f"your {which} {kept}'s term alone and {drop} {dropped}'s: E also changes "
+            f"{axis[dropped][2]} across the block's {axis[dropped][1]}, by {dropped} = "
+            f"∂E/∂{axis[dropped][0]} a step, so E's extreme values over the block's centres "
+            f"can lie in another of its {axis[dropped][1]} than the first; each offset needs "
+            f"the steps of both axes (this triangle's edges, oriented: {_coefficients(a[0])})"
+        )
+
+    return words
+
+
+#: r376 F3: offsets from one axis only (B's term dropped: R = (size − 1)·max(A, 0)), both or
+#: the reject offset alone, were told only the rule ("no edge excludes the block's four corner
+#: centres"); named alone, not combined (the checker's own time, r162).
+ONE_AXIS = [
+    _single(f"offsets of one axis only ({name})", _at_first(_one_axis_words(name)), offsets=name)
+    for name in ("x only", "y only", "reject x only", "reject y only")
+]  # fmt: skip
+
+
 #: r248 half-named 2-5: slips that were told the rule at one centre only ("edge v1→v2 fails at
 #: the pixel centre of the block where its E is smallest"), each named by its cause.
 R248_SLIPS = [
@@ -1209,16 +1282,6 @@ CCW_ONLY = Mistake(
 #: r162: the sign tests' comparisons slipped (≤ for the reject test, > for the accept test)
 #: were told only the rule.
 SIGN_MISTAKES = [
-    _single("reject test E ≤ 0", _at_first(lambda a, e, g: "your reject test rejects when "
-            "E₀ + R + β ≤ 0: it also rejects a block whose best centre has E + β exactly 0, "
-            "and such a centre passes the pixel test (E + β ≥ 0): reject only when "
-            "E₀ + R + β < 0; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
-            logic="reject at zero"),
-    _single("accept test E > 0", _at_first(lambda a, e, g: "your accept test asks "
-            "E₀ + T + β > 0: it leaves partial a block whose worst centre has E + β exactly 0, "
-            "and such a centre passes the pixel test (E + β ≥ 0): accept when E₀ + T + β ≥ 0 "
-            "on every edge; here " + _by_verdicts(_edge_table(*a), e, g)[2:]),
-            logic="accept above zero"),
     # r267 half-named 2: told only the rule ("one such edge rejects the block")
     _single("reject only when every edge fails", _at_first(lambda a, e, g: "you rejected a "
             "block only when every edge fails its reject test (rejected &= … for |=?): the "
@@ -1319,7 +1382,7 @@ def exercise(scene) -> Exercise:
 
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [ba.INT32, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, *FLOAT_UNITS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
+        [ba.INT32, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *ONE_AXIS, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, READ_BEFORE_ORIENTING, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, *FLOAT_UNITS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r248 S1: each case's label holds its call (:func:`call_words`); an exception adds
         # the traceback's last line in the student's code
@@ -1368,6 +1431,9 @@ def _hard_blocks():
         # and every horizontal edge taken as top passed
         ("a bottom edge through the lower corners", bottom, 12, 17, 4),
         ("one pixel, its centre on a bottom edge", bottom, 12, 20, 1),
+        # r376 F1: the r149 M4 case with two vertices swapped, clockwise: a bias added, not
+        # taken off, is seen there with one winding only too (it was told "E ≥ 0")
+        ("far out, clockwise, a centre 1/65536 px² outside a right edge", [[2984.16796875, 3010.59375], [1.0, 0.0], [3010.59375, 2994.26171875]], 3000, 3000, 1),  # fmt: skip
     ]  # fmt: skip
 
 
@@ -1393,6 +1459,11 @@ def _block_cases(rng, word):
     for n, (label, xy, x0, y0, s) in enumerate(_hard_blocks()):
         gx, gy = _around(x0, y0, s, (3,) if n % 4 == 3 else (2, 2))
         grids.append((label, np.array(xy, dtype=float), gx, gy, s))
+    # r376 F4: the tie kinds read before orienting failed one random case in 62: here the
+    # oriented edges' kinds differ from those of the edges as given, index by index, on a
+    # left and on a right edge through centres of the 4-px blocks over the triangle
+    ccw = np.array([[12.5, 8.5], [2.5, 4.5], [3.5, 12.5]])
+    grids.append(("counter-clockwise, centres on a left and on a right edge", ccw, *_covering(ccw, 4), 4))  # fmt: skip
     for n in range(18):
         xy = snap(rng.uniform(0, 32, size=(3, 2)))
         if n % 3 == 0:
