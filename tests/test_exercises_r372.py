@@ -124,8 +124,11 @@ def test_an_unnamed_mistake_gets_its_ends_against_the_exact_crossings_not_invent
     for, beside the exact one and its edge."""
     report = ex.check("span", extended_lines)
     assert not report.passed
-    assert {f.kind for f in report.failures} == {"value"}, str(report)
-    first = report.failures[0].explanation
+    # the fixed cases only: a case drawn afresh for the check depends on the random state the
+    # tests before this one left (with -n 2 it drew a one-column-off case, kind "ends")
+    fixed = [f for f in report.failures if not f.case.startswith("drawn for this check")]
+    assert {f.kind for f in fixed} == {"value"}, str(report)
+    first = fixed[0].explanation
     assert "stands for an x_" in first and "is exactly" in first and "on the " in first
 
 
