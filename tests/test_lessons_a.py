@@ -3380,7 +3380,7 @@ def test_05a_05b_reader_r79_contradictions():
     assert "grows\nwithout bound" not in text and "$g\\,w < 0$" in text
     assert any("D32F_S8, takes 8 bytes" in c for c in code)
     assert any('title=f"painter\'s algorithm\\n({order})"' in c for c in code)
-    assert any('f"u = {clip_tri_u[2, 0]:.2f} (dropped)"' in c for c in code)
+    assert any('f"u = {u:.2f} (dropped)"' in c for c in code)  # r384: placed by a search
     table = next(c for c in _cells("05b_depth_precision", "markdown") if "| Vulkan" in c)
     gl = next(line for line in table.splitlines() if line.startswith("| OpenGL 4.6"))
     assert "`DEPTH32F_STENCIL8` (32 + 8; stored as 64 bits packed or as separate" in gl
@@ -3605,7 +3605,8 @@ def test_05a_r167_every_gl_state_rendered_and_the_small_items():
     states = [state for state, *_ in ns.rows.values()]
     nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
     text = {c.get("id"): "".join(c["source"]) for c in nb["cells"]}
-    table = [line for line in text["c02_off"].splitlines() if line.startswith("| `gl")]
+    first = text["c02_off"].split("\n\n| OpenGL 4.6 |")[0]  # r384: what each setting does
+    table = [line for line in first.splitlines() if line.startswith("| `gl")]
     for row in table:  # every row of the table is rendered (one of its states is printed)
         assert set(row.split("|")[1].split("`")[1::2]) & set(states), row
     assert len(table) == 4
@@ -3871,14 +3872,27 @@ def test_05a_r259_depth_states_in_every_api():
     where it is first used."""
     text = {c.get("id"): "".join(c["source"]) for c in
             json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())["cells"]}  # fmt: skip
-    header = next(line for line in text["c02_off"].splitlines() if line.startswith("| OpenGL"))
-    for column in ("OpenGL 4.6 state (§17.3.4)", "D3D11.3 §17.9, §17.11", "*Depth Test*",
-                   "llvmpipe", "`tr.render`"):  # fmt: skip
-        assert column in header, column
-    rows = [line for line in text["c02_off"].splitlines() if line.startswith("| `gl")]
-    assert len(rows) == 4 and all(row.count(" | ") == 6 for row in rows)
-    off = next(row for row in rows if row.startswith("| `glDisable(GL_DEPTH_TEST)`"))
+    # r384 FIG-1: two tables of at most four columns (the seven-column one ran off a 932-px
+    # cell): what each setting does, then its spelling in Direct3D and Vulkan; llvmpipe in a note
+    tables = [b for b in text["c02_off"].split("\n\n") if b.startswith("| ")]
+    heads = [t.splitlines()[0] for t in tables]
+    assert heads == ["| OpenGL 4.6 state | the colour buffer shows | the depth buffer holds | "
+                     "`tr.render` |", "| OpenGL 4.6 | Direct3D 11 | Vulkan |"]  # fmt: skip
+    flat = " ".join(text["c02_off"].split())
+    for cited in ("(OpenGL 4.6 names, §17.3.4)", "D3D11.3 §17.9, §17.11", "*Depth Test*",
+                  "llvmpipe (Mesa's OpenGL) does as OpenGL", "`st_atom_depth.c`"):  # fmt: skip
+        assert cited in flat, cited
+    for t in tables:
+        rows = [line for line in t.splitlines() if line.startswith("| `gl")]
+        assert len(rows) == 4 and all(row.count(" | ") <= 3 for row in rows)
+    off = next(
+        row for row in tables[1].splitlines() if row.startswith("| `glDisable(GL_DEPTH_TEST)`")
+    )
     assert "`DepthEnable = FALSE`" in off and "`depthTestEnable = VK_FALSE`" in off
+    off = next(
+        row for row in tables[0].splitlines() if row.startswith("| `glDisable(GL_DEPTH_TEST)`")
+    )
+    assert "no writes either" in off and "`depth_test=False, depth_write=False`" in off
     flat = " ".join(text["c02_off"].split())
     assert "depth test and depth buffer write are not performed" in flat
     assert "Depth writes are always disabled when `depthTestEnable` is `VK_FALSE`" in flat
