@@ -4702,3 +4702,65 @@ TWO_MISTAKES.update({
         "hiz_rejects", R376["Hi-Z by lesson 10's bound with >"][1],
         ("a fragment exactly at the stored depth", "you took lesson 10's bound")),
 })  # fmt: skip
+
+
+# == r388: 11.3b's slips, each failing a case now and named as itself =============================
+def _pane_record(b):
+    return next(r for r in _records(b, 13, 52) if r.outcome == "hi_z")
+
+
+def _bits_loop(b, steps=1, power=False):
+    """The least n whose gap · (2ⁿ − 1) (or gap · 2ⁿ) reaches ``steps``."""
+    gap, n = _gap_of(b), 1
+    while gap * (2**n if power else 2**n - 1) < steps:
+        n += 1
+    return n
+
+
+def _six_decimals(b):
+    wall, pane = _pane_gap(b)
+    return math.ceil(math.log2(1 + 1 / (round(wall, 6) - round(pane, 6))))
+
+
+R388 = {
+    "frame 3 bits, log₂ rounded to the nearest": (
+        "broken_frame_3_steps", lambda b: int(round(np.log2(1 / _gap_of(b)))),
+        "log₂ rounded to the nearest bit?", "rounded to the nearest bit"),
+    "frame 3 bits, a step of 1/2ⁿ by ceil(log₂(1/gap))": (
+        "broken_frame_3_steps", lambda b: int(np.ceil(np.log2(1 / _gap_of(b)))),
+        "a step of 1/2ⁿ?", "a step of 1/2ⁿ"),
+    "frame 3 bits, a step of 1/2ⁿ by a loop": (
+        "broken_frame_3_steps", lambda b: _bits_loop(b, power=True), "a step of 1/2ⁿ?",
+        "a step of 1/2ⁿ"),
+    "frame 3 bits, the pane's stored depth minus its drawn one": (
+        "broken_frame_3_steps",
+        lambda b: int(np.ceil(np.log2(1 + 1 / (_pane_record(b).depth - _pane_gap(b)[1])))),
+        "the pane's stored depth (as the history prints it) minus its drawn one",
+        "stored minus drawn"),
+    "frame 3 bits, depths rounded to six decimals": (
+        "broken_frame_3_steps", _six_decimals, "the depths' difference rounded to six decimals",
+        "depths rounded to six decimals"),
+    "frame 3 bits, one bit too many": (
+        "broken_frame_3_steps", lambda b: math.ceil(math.log2(1 + 1 / _gap_of(b))) + 1,
+        "one bit too many", "one bit too many"),
+    "frame 3 bits, two whole steps": (
+        "broken_frame_3_steps", lambda b: _bits_loop(b, steps=2), "one bit too many",
+        "one bit too many"),
+    "frame 3 bits, ln for log₂": (
+        "broken_frame_3_steps", lambda b: int(np.ceil(np.log(1 + 1 / _gap_of(b)))),
+        "ln in place of log₂?", "ln for log₂"),
+    "frame 3 bits, log10 for log₂": (
+        "broken_frame_3_steps", lambda b: int(np.ceil(np.log10(1 + 1 / _gap_of(b)))),
+        "log10 in place of log₂?", "log10 for log₂"),
+    "frame 3 bits, the gap in 16-bit steps": (
+        "broken_frame_3_steps", lambda b: _gap_of(b) * 65535,
+        "that is the gap counted in steps of the 16-bit buffer", "type"),
+    "frame 3 bits, the gap's sign reversed": (
+        "broken_frame_3_steps", lambda b: int(np.ceil(np.log2(1 - 1 / _gap_of(b)))),
+        "the logarithm of a negative number?", "raised"),
+    "frame 3 bits, the gap's sign reversed, NaN returned": (
+        "broken_frame_3_steps", lambda b: float(np.ceil(np.log2(1 - 1 / _gap_of(b)))),
+        "the logarithm of a negative number?", "type"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R388.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R388.items()})

@@ -62,7 +62,7 @@ import operator
 import secrets
 import textwrap
 import threading
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cache, lru_cache
 
 import numpy as np
@@ -310,7 +310,7 @@ class _Look:
     shown, by a loop over the history's values, fails the redrawn one)."""
 
     wall: tuple = (0.62, 0.56, 0.48)
-    wall_steps: int = 39321  # 0.6 exactly in unorm16
+    wall_steps: float = 39321  # 0.6 exactly in unorm16 (off the grid: 11.3b, r388 G3)
     strip: tuple = (0.2, 0.45, 0.85)
     strip_depth: float = 0.3
     cube: tuple = (1.0, 0.0)
@@ -498,14 +498,16 @@ def _redrawn(number: int, look: _Look | None = None) -> BrokenFrame:
     return _drawn(number, look or _REDRAWN[secrets.randbelow(len(_REDRAWN))])
 
 
-def frame_3_gap(gap: float, look: int | None = None) -> BrokenFrame:
+def frame_3_gap(gap: float, look: int | None = None, off: float = 0.0) -> BrokenFrame:
     """Frame 3 redrawn with look number ``look`` of :data:`_REDRAWN` (None: one at random),
     its pane drawn ``gap`` nearer than the wall (frame 3's: 1e-6), for 11.3b (r377 F4: the
-    fewest depth bits in which the pane wins, which a typed-in number must not pass). Frame
-    3's check keeps :func:`_redrawn`."""
+    fewest depth bits in which the pane wins, which a typed-in number must not pass), the
+    wall ``off`` 16-bit steps off the look's (r388 G3: on the grid, the pane's stored depth
+    minus its drawn one was the gap). Frame 3's check keeps :func:`_redrawn`."""
     _, _, intended = _SPECS[2]
     look = _REDRAWN[secrets.randbelow(len(_REDRAWN)) if look is None else look]
-    broken = _pixels([_wall(look), _pane(look, gap)])
+    wall = replace(look, wall_steps=look.wall_steps + off)
+    broken = _pixels([_wall(wall), _pane(wall, gap)])
     return BrokenFrame(3, _SPECS[2][0], _handed_out(broken), _handed_out(intended(look)))
 
 
@@ -553,10 +555,11 @@ def frame_marks() -> dict:
 _STEPS_QUESTION = (
     "the histories' first line names the depth format, unorm16\n"
     "(lesson 05b), and they print each depth as that buffer stores it: the pane's tied at the\n"
-    "wall's. The depth a triangle k is drawn at is frame.trace.window[k, :, 2]. How many bits\n"
-    "must a unorm depth buffer have at least for frame 3's pane, drawn where frame 3 draws it,\n"
-    "to win the depth test wherever the wall lies? broken_frame_3_steps(b) returns that\n"
-    "number, worked out from the depths b's trace holds."
+    "wall's. The depth a triangle k is drawn at is frame.trace.window[k, :, 2]: read it with all\n"
+    "its digits (not the six the histories print). How many bits must a unorm depth buffer have,\n"
+    "at least, for frame 3's pane, the same distance in front of the wall as frame 3 draws it,\n"
+    "to win the depth test at whatever depth the two are drawn? broken_frame_3_steps(b) returns\n"
+    "that number, worked out from the depths b's trace holds."
 )
 
 #: A note on each frame (how it was made, and how its mistake usually shows), told once its
@@ -1195,12 +1198,19 @@ def _shown(cause: str, value) -> str:
     if EVIDENCE[cause][0] == "triangle" and isinstance(value, int):
         return f"triangle {value}"
     if isinstance(value, float):
-        return f"{round(value, 6)}"
+        return _six(value)
     if isinstance(value, tuple) and all(isinstance(v, float) for v in value):
-        return str(tuple(round(v, 6) for v in value))
+        return f"({', '.join(map(_six, value))}{',' if len(value) == 1 else ''})"
     # the evidence of a cause that is not the frame's, as given, its numbers to the digits
     # the history prints (r21 D8: "(None, 0.29999237048905164)")
     return short(_rounded(value))
+
+
+def _six(value: float) -> str:
+    """A float to the six decimals the history prints, a whole one without ".0" (r388 G9:
+    triangle 3, given under a depth cause, was quoted "3.0")."""
+    whole = np.isfinite(value) and float(value).is_integer()
+    return f"{int(value)}" if whole else f"{round(value, 6)}"
 
 
 def _rounded(value):
