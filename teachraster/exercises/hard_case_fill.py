@@ -912,14 +912,16 @@ def _magnified(ax, s, width: int, height: int, origin) -> list:
     ring = np.vstack([s, s[:1]])
     inset.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     inset.plot(*nearest, "+", color="black", ms=8)
-    inset.annotate("centre", nearest, xytext=(3, -11), textcoords="offset points", fontsize=7)
+    inset.annotate(
+        "centre", nearest, xytext=(3, -11), textcoords="offset points", fontsize="x-small"
+    )
     vertex_labels(inset, s, pad / 4, (lo[0] - pad, lo[1] - pad, *(hi - lo + 2 * pad)))
     inset.set_xlim(lo[0] - pad, hi[0] + pad)
     inset.set_ylim(hi[1] + pad, lo[1] - pad)
     inset.set_aspect("equal")
     inset.set_xticks([])
     inset.set_yticks([])
-    inset.set_title(f"magnified, {(hi - lo + 2 * pad).max():.2g} px across", fontsize=7)
+    inset.set_title(f"magnified, {(hi - lo + 2 * pad).max():.2g} px across", fontsize="x-small")
     return [inset]
 
 

@@ -19,11 +19,11 @@ from ..study.hardcases import naive_coverage
 
 #: r386 NW28, NW29: triangles 784 and 823 px across (on the 1/256 grid, within the stated
 #: range) and a 64-px window (row, col) where E in float32 changes a verdict: stepped from
-#: the first centre (pixel [49, 36], inside by a few steps of 2⁻¹⁶ px²; the reader's own
+#: the first centre (pixel [49, 36]: E = 48 · 2⁻¹⁶ px² on edge v1→v2, outside; the reader's own
 #: example was 1,599 px tall, past the range), or from differences after shifting to the
 #: window (pixel [23, 42]: E = 33 · 2⁻¹⁶ px² on edge v1→v2, outside).
 FLOAT32_CASES = {
-    "a triangle 784 px across, E stepped along a row": (
+    "a triangle 784 px across, a centre 48 · 2⁻¹⁶ px² outside an edge": (
         np.array([[5249.953125, 3936.2578125], [5427.234375, 4720.1953125],
                   [5648.6796875, 4630.828125]]), (4296, 5306)),
     "a triangle 823 px across, a centre 33 · 2⁻¹⁶ px² outside an edge": (
