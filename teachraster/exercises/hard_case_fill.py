@@ -10,7 +10,9 @@ differences in float64, so that a triangle 10⁶ px from the origin is filled as
 The cases are the catalogue's screen-space triangles with their raw (unsnapped) vertices,
 ``far_from_origin`` at 10⁴, 10⁵ and 10⁶ px (one with a centre 2⁻¹⁵ px² inside an edge, which
 A x + B y + C in float64 rounds to a tie there), a triangle 900 px across (whose E in
-1/256-px integers overflows int32), and seeded random off-grid triangles; the task promises
+1/256-px integers overflows int32), two 800-px triangles whose E float32 cannot hold
+(:mod:`.hard_case_precision`), a zero-area triangle in a window that is not square, and
+seeded random off-grid triangles; the task promises
 exactness within :data:`MOST_FAR` px of the origin and :data:`MOST_ACROSS` px across. Expected
 answers are the package's fill (:func:`teachraster.rasterize`). Each failure is named by the
 naive variant that reproduces it (:func:`~teachraster.study.hardcases.naive_coverage` with
