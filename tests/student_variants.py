@@ -4764,3 +4764,101 @@ R388 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R388.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R388.items()})
+
+
+# -- r386: exercise 10's robust_fill, float32 E inside the stated range, two causes that fit
+# alike, and the geometric slips seen in the answer's shape ----------------------------------
+def _fill_r386(round_xy=None, half=(0.5, 0.5), twice=False, tolerance=0.0, wh=False,
+               flip=False, ones=False, box_short=False, raw_ties=False, reverse=False,
+               dtype=np.float64, shift=False, step32=False):  # fmt: skip
+    """The teacher's robust_fill with one of r386's knobs: another rounding of the vertices,
+    rows or columns tested without the ½ (``half``), origin added twice, an area tolerance,
+    the zero-area image in another shape, the image flipped, every pixel covered, the
+    bounding box one short, the tie rule off the raw vertices, the orientation test reversed,
+    E in ``dtype`` after shifting to the window, or E stepped in float32."""
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        raw = np.asarray(xy, dtype=float)
+        v = round_xy(raw) if round_xy else np.rint(raw * 256) / 256
+        area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+        if abs(area) <= tolerance:
+            return np.zeros((width, height) if wh else (height, width), dtype=bool)
+        idx = [0, 2, 1] if (area > 0 if reverse else area < 0) else [0, 1, 2]
+        v, raw = v[idx], raw[idx]
+        o = np.array([origin[1], origin[0]], dtype=float) * (2 if twice else 1)
+        if shift:
+            v = (v - o).astype(dtype)
+            o = np.zeros(2, dtype=dtype)
+        y = (o[1] + np.arange(height)[:, None] + half[1]).astype(dtype)
+        x = (o[0] + np.arange(width)[None, :] + half[0]).astype(dtype)
+        inside = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            if step32:  # E at the first centre in float64, then stepped in float32
+                grid = np.empty((height, width), dtype=np.float32)
+                grid[0, 0] = (b[0] - a[0]) * (y[0, 0] - a[1]) - (b[1] - a[1]) * (x[0, 0] - a[0])
+                grid[1:, 0] = b[0] - a[0]
+                grid[:, 0] = np.add.accumulate(grid[:, 0], dtype=np.float32)
+                grid[:, 1:] = a[1] - b[1]
+                e = np.add.accumulate(grid, axis=1, dtype=np.float32)
+            else:
+                e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+            p, q = (raw[k], raw[(k + 1) % 3]) if raw_ties else (a, b)
+            tie = q[1] < p[1] or (q[1] == p[1] and q[0] > p[0])
+            inside &= (e >= 0) if tie else (e > 0)
+        if box_short:  # range(floor(min), floor(max)) in window pixels
+            box = np.zeros_like(inside)
+            lo = np.floor(v.min(axis=0)).astype(int) - [origin[1], origin[0]]
+            hi = np.floor(v.max(axis=0)).astype(int) - [origin[1], origin[0]]
+            box[max(lo[1], 0) : max(hi[1], 0), max(lo[0], 0) : max(hi[0], 0)] = True
+            inside &= box
+        if ones:
+            inside[:] = True
+        return inside[::-1] if flip else inside
+
+    return robust_fill
+
+
+R386 = {
+    "fill with E stepped in float32": (
+        _fill_r386(step32=True), "you compute E in float32, which holds 24 bits", "float32 E"),
+    "fill in float32 after shifting to the window": (
+        _fill_r386(shift=True, dtype=np.float32), "you compute E in float32, which holds 24 bits",
+        "float32 E"),
+    "fill returning (width, height) for zero area": (
+        _fill_r386(wh=True), "this window is 4 rows (height) by 8 columns (width)",
+        "transposed"),
+    "fill adding origin twice": (
+        _fill_r386(twice=True), "you add origin twice", "origin added twice"),
+    "fill refusing an area below 1e-4": (
+        _fill_r386(tolerance=1e-4), "two mistakes give your empty image here",
+        "thin triangles refused"),
+    "fill testing rows without the half": (
+        _fill_r386(half=(0.5, 0.0)), "you test row i at y = origin[0] + i",
+        "rows without the half"),
+    "fill flipped upside down": (
+        _fill_r386(flip=True), "your image is upside down", "upside down"),
+    "fill covering every pixel": (
+        _fill_r386(ones=True), "your function covers every pixel", "everything covered"),
+    "fill with the bounding box one short": (
+        _fill_r386(box_short=True), "your box stops one short", "bounding box one short"),
+    "fill snapped to 1/255 px": (
+        _fill_r386(round_xy=lambda xy: np.rint(xy * 255) / 255), "you snap to 1/255 px",
+        "1/255 grid"),
+    "fill snapped with // 256": (
+        _fill_r386(round_xy=lambda xy: np.rint(xy * 256) // 256),
+        "your vertices land on whole pixels", "vertices on whole pixels"),
+    "fill with centres at 127/256": (
+        _fill_r386(half=(127 / 256, 127 / 256)), "your centres are 1/256 px left of and above",
+        "centres 1/256 px short"),
+    "fill snapped half a step off the grid": (
+        _fill_r386(round_xy=lambda xy: (np.rint(xy * 256 - 0.5) + 0.5) / 256),
+        "your grid points are at (k + ½)/256 px", "grid offset by half a step"),
+    "fill with the tie rule off the raw vertices": (
+        _fill_r386(raw_ties=True), "your top/left verdicts come from the unsnapped vertices",
+        "tie rule from the raw vertices"),
+    "fill with the orientation test reversed": (
+        _fill_r386(reverse=True), "an orientation test reversed", "nothing covered"),
+}  # fmt: skip
+WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _) in R386.items()})
+KINDS.update({label: kind for label, (_, _, kind) in R386.items()})

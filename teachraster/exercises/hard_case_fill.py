@@ -10,7 +10,9 @@ differences in float64, so that a triangle 10⁶ px from the origin is filled as
 The cases are the catalogue's screen-space triangles with their raw (unsnapped) vertices,
 ``far_from_origin`` at 10⁴, 10⁵ and 10⁶ px (one with a centre 2⁻¹⁵ px² inside an edge, which
 A x + B y + C in float64 rounds to a tie there), a triangle 900 px across (whose E in
-1/256-px integers overflows int32), and seeded random off-grid triangles; the task promises
+1/256-px integers overflows int32), two 800-px triangles whose E float32 cannot hold
+(:mod:`.hard_case_precision`), a zero-area triangle in a window that is not square, and
+seeded random off-grid triangles; the task promises
 exactness within :data:`MOST_FAR` px of the origin and :data:`MOST_ACROSS` px across. Expected
 answers are the package's fill (:func:`teachraster.rasterize`). Each failure is named by the
 naive variant that reproduces it (:func:`~teachraster.study.hardcases.naive_coverage` with
@@ -34,6 +36,17 @@ from .answers import refuse_non_answers, short
 from .cases import DRAWN_WORD, SEED, drawn_rng
 from .coverage import explain_pixel
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .hard_case_precision import (
+    FLOAT32_CASES,
+    SLIP_WORDS,
+    all_covered,
+    float32_rounds,
+    float32_words,
+    refused_or_raw_words,
+    slip_variants,
+    small_area_refused,
+    step32_fill,
+)
 from .running import WrongAnswerType
 
 #: Kinds of catalogue case the exercise runs (screen-space triangles).
@@ -87,6 +100,13 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     # past int32; the window straddles its right edge
     out.append((f"a triangle {WIDE_ACROSS} px across (window at row 400, column 685)",
                 (WIDE.copy(), 16, 16, (400, 685))))  # fmt: skip
+    # r386 NW28, NW29: E in float32 (24 bits) on a triangle about 1,000 px across, whose E
+    # on the 1/256 grid needs about 36: stepped along rows, or after shifting to the window
+    for label, (xy, origin) in FLOAT32_CASES.items():
+        out.append((label, (xy.copy(), 64, 64, origin)))
+    # r386 NW11: a zero-area triangle in a window that is not square (shape (height, width))
+    out.append(("collinear, in a window 8 wide and 4 high",
+                (np.array([[1.0, 0.5], [3.0, 1.5], [7.0, 3.5]]), 8, 4, (0, 0))))  # fmt: skip
     out += _random_cases(np.random.default_rng(SEED + 50), "random")
     return [(label, args, expected_fill(*args)) for label, args in out]
 
@@ -135,6 +155,7 @@ def _variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         "nothing covered": np.zeros((height, width), dtype=bool),
         "origin swapped": expected_fill(xy, width, height, (o[1], o[0])),
         "origin ignored": expected_fill(xy, width, height, (0, 0)),
+        "origin added twice": expected_fill(xy, width, height, 2 * o),  # r386 NW05
         "pixel corners": expected_fill(np.asarray(xy, float) + 0.5, width, height, origin),
         "transposed": expected_fill(xy, height, width, origin).T if width == height else None,
         # built [col, row] from origin read (col, row) (r6: told precision far from the origin)
@@ -188,6 +209,8 @@ def _more_variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     out["any horizontal edge is top"] = edge_fill(s, width, height, origin, owns=_any_flat)
     out["absolute form in float64"] = naive_coverage(s, width, height, absolute=True, **kw)
     out["int32 overflow"] = int32_fill(xy, width, height, origin)
+    out["float32 E"] = step32_fill(xy, width, height, origin)  # r386 NW28
+    out.update(slip_variants(xy, width, height, origin, expected_fill))
     return out
 
 
@@ -360,6 +383,12 @@ def _thin(args, expected, got) -> bool:
 
 
 def _thin_words(args, expected, got) -> str:
+    xy, width, height, origin = args
+    s = snap(np.asarray(xy, float))
+    raw = naive_coverage(s if _area(xy) >= 0 else s[[0, 2, 1]], width, height,
+                         rule="top_left", orient="none", origin=tuple(origin))  # fmt: skip
+    if np.array_equal(raw, got):  # r386 NW08: oriented by the raw area gives it too
+        return refused_or_raw_words(args, expected, got)
     area = abs(_area(snap(np.asarray(args[0], float)))) / 2
     return (f"you gave nothing to a thin triangle: snapped, its area is {area:.3g} px², small "
             "but not zero, and it covers the centres strictly inside it; only a snapped area "
@@ -525,8 +554,8 @@ def _rounding_decides(args, got) -> bool:
 ROUNDING = Mistake(
     "float32 rounding", "your edge functions round: A x + B y + C in float32 computes C = "
     "x_a y_b − y_a x_b as a difference of two products, and its rounding leaves E slightly "
-    "negative (or positive) at a centre that lies exactly on an edge, so that centre changes "
-    "sides whatever your tie rule says; compute E from differences to a vertex, "
+    "negative (or positive) at a centre that lies on an edge (or, on a large triangle, a few "
+    "steps of 2⁻¹⁶ px² from one), so that centre changes sides; compute E from differences to a vertex, "
     "(b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − a.x), in float64: on the snapped grid it is "
     "then exact", fits=lambda a, e, g: _rounding_decides(a, g), symptom=True,
     with_others=True,
@@ -576,11 +605,15 @@ def _float32_vertices(args, expected, got) -> str:
 
 MISTAKES = {
     "nothing covered": "your function never covers anything: it returns an image of False "
-    "for every triangle (a placeholder left in, or a test that no centre can pass?)",
+    "for every triangle (a placeholder left in, or a test that no centre can pass, such as "
+    "an orientation test reversed, which makes every triangle clockwise?)",
     "origin swapped": "you read origin as (x, y): it is (row, col), the window's first row "
     "and first column, so pixel [i, j] has its centre at x = col + j + ½, y = row + i + ½",
     "origin ignored": "you ignored origin: the window's pixel [i, j] has its centre at "
     "x = origin[1] + j + ½, y = origin[0] + i + ½, not at (j + ½, i + ½)",
+    "origin added twice": "you add origin twice: your centres are at x = 2 · origin[1] + j + ½, "
+    "y = 2 · origin[0] + i + ½ (origin added to the indices, and again to the centres); the "
+    "window's pixel [i, j] has its centre at x = origin[1] + j + ½, y = origin[0] + i + ½",
     "pixel corners": "you tested the pixel corners (j, i): a pixel's centre is at "
     "(j + ½, i + ½) (plus the window's origin)",
     "transposed": "your image is transposed: pixel [i, j] is row i (y), column j (x), so the "
@@ -620,17 +653,35 @@ MISTAKES = {
     "edge runs up (b.y < a.y) and a top edge is horizontal and runs right (b.x > a.x)",
     "one winding": "you assume one winding: orient the triangle first (swap two vertices when "
     "its edge function E(v1, v2, v3) is negative)",
-    "oriented before snapping": "you oriented the triangle by its unsnapped area: snapping can "
-    "flip a tiny triangle's winding, so orient the snapped one",
+    "oriented before snapping": lambda a, e, g: _raw_orientation_words(a, e, g),
     "absolute form": "you evaluate E = A x + B y + C from absolute coordinates in float32: far "
     "from the origin C = x_a y_b - y_a x_b cancels two products of size x·y; compute E in "
     "float64 (from differences to a vertex is safest)",
-    "float32": "you compute in float32: 10⁵ px from the origin its numbers are 1/128 px apart "
-    "and cannot hold the 1/256-px grid; use float64",
+    "float32": lambda a, e, g: _float32_any_words(a, e, g),
+    "float32 E": float32_words,
 }
 MISTAKES["transposed, origin swapped"] = (
     f"{MISTAKES['transposed']}; and {MISTAKES['origin swapped']}"
 )
+
+
+def _raw_orientation_words(args, expected, got) -> str:
+    """r386 NW08: where an area tolerance gives the same empty image, both are said."""
+    if small_area_refused(args, expected, got):
+        return refused_or_raw_words(args, expected, got)
+    return ("you oriented the triangle by its unsnapped area: snapping can flip a tiny "
+            "triangle's winding, so orient the snapped one")  # fmt: skip
+
+
+def _float32_any_words(args, expected, got) -> str:
+    """float32 far from the origin (its spacing coarser than the grid), or float32 holding
+    too few bits of E on a large triangle (r386 NW29: told "10⁵ px from the origin")."""
+    far = _far(args)
+    step = float(np.spacing(np.float32(far)))
+    if step <= GRID:
+        return float32_words(args, expected, got)
+    return (f"you compute in float32: {far:,.0f} px from the origin its numbers are {step:g} px "
+            "apart and cannot hold the 1/256-px grid; use float64")  # fmt: skip
 
 
 def _off_by_one(axis: str, sign: str) -> str:
@@ -678,6 +729,14 @@ ABSOLUTE64 = Mistake("absolute form in float64", lambda a, e, g: _absolute64_wor
                      fits=_absolute64_rounds, only_whole=True)  # fmt: skip
 
 
+#: r386 NW28, NW29: E in float32 however it is computed (stepped, shifted to the window):
+#: named only where every failing answer is wrong only within float32's rounding of E.
+FLOAT32_E = Mistake("float32 E", float32_words, fits=float32_rounds, only_whole=True)
+#: r386 NW12: the mirror of "never covers anything".
+ALL_COVERED = Mistake("everything covered", SLIP_WORDS["everything covered"], fits=all_covered,
+                      only_whole=True)  # fmt: skip
+
+
 def _int32_words(args, expected, got) -> str:
     v = np.rint(np.asarray(args[0], float) * 256)
     across = float(np.ptp(v, axis=0).max())
@@ -716,6 +775,7 @@ MISTAKES.update(
         "below",
         "absolute form in float64": _absolute64_words,
         "int32 overflow": _int32_words,
+        **{kind: words for kind, words in SLIP_WORDS.items() if kind != "everything covered"},
     }
 )
 
@@ -745,10 +805,12 @@ TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED,
 
 
 def _table() -> list[Mistake]:
-    """The mistakes table, each tie rule held to every failing tie case."""
-    table = variant_mistakes(_variants, MISTAKES, (*_roundings(), THIN, ABSOLUTE64,
-                                                   ZERO_AREA, FAR, ROUNDING, *TIES,
-                                                   OFF_GRID))  # fmt: skip
+    """The mistakes table, each tie rule held to every failing tie case; THIN first (r386
+    NW08: where a raw orientation gives the same empty image, its words say both, under one
+    kind whatever the drawn cases)."""
+    table = [THIN] + variant_mistakes(_variants, MISTAKES, (*_roundings(), ABSOLUTE64,
+                                                            FLOAT32_E, ALL_COVERED, ZERO_AREA,
+                                                            FAR, ROUNDING, *TIES, OFF_GRID))  # fmt: skip
     table = [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
     return [replace(m, only_whole=True) if m.kind in RARE_KINDS else m for m in table]
 
@@ -758,7 +820,8 @@ def _table() -> list[Mistake]:
 #: said on one case whose answer they matched by coincidence, to functions without them).
 RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "ceil snapping", "oriented before snapping",
               "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
-              "only y snapped")  # fmt: skip
+              "only y snapped", "origin ignored", "origin added twice",
+              "float32 E", "float32", "absolute form", *SLIP_WORDS)  # fmt: skip
 
 
 def explain_fill(args, expected, got) -> str:
@@ -851,14 +914,16 @@ def _magnified(ax, s, width: int, height: int, origin) -> list:
     ring = np.vstack([s, s[:1]])
     inset.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     inset.plot(*nearest, "+", color="black", ms=8)
-    inset.annotate("centre", nearest, xytext=(3, -11), textcoords="offset points", fontsize=7)
+    inset.annotate(
+        "centre", nearest, xytext=(3, -11), textcoords="offset points", fontsize="x-small"
+    )
     vertex_labels(inset, s, pad / 4, (lo[0] - pad, lo[1] - pad, *(hi - lo + 2 * pad)))
     inset.set_xlim(lo[0] - pad, hi[0] + pad)
     inset.set_ylim(hi[1] + pad, lo[1] - pad)
     inset.set_aspect("equal")
     inset.set_xticks([])
     inset.set_yticks([])
-    inset.set_title(f"magnified, {(hi - lo + 2 * pad).max():.2g} px across", fontsize=7)
+    inset.set_title(f"magnified, {(hi - lo + 2 * pad).max():.2g} px across", fontsize="x-small")
     return [inset]
 
 
