@@ -1240,9 +1240,10 @@ def test_07_predictions_and_the_numbers_the_text_quotes():
     (behind,) = [c for c in cells_07() if c.startswith("q_behind.hold()")]
     assert 'f"ours: clipped, {clipped_into} triangles,' in behind and "print(" not in behind
     assert 1000 <= ns.far_reach == ns.spacing / ns.edge_lengths.min() < 10_000
-    moved, lengths = np.array(ns.edge_moved), ns.edge_lengths
+    moved, lengths = np.abs(ns.far_moved), ns.edge_lengths
     assert (moved <= ns.spacing / lengths).all() and moved.max() >= 1000
-    # c16: every edge moved farther than the triangle's height over it, and nothing is drawn
+    # c16: every edge moved farther than the triangle's height over it (r389 C1: the text says
+    # only what that shows, the inward ones lose the triangle; the sum decides the rest)
     assert (moved > ns.doubled_area / lengths).all()
     assert ns.right_f32 == 0 and n_tri == ns.far_ours.sum()
     assert np.array_equal(ns.far_f32, ns.wrong32) and round(ns.far_area) == round(ns.doubled_area)
@@ -4741,7 +4742,7 @@ def test_07_review_r215_printed_lines_are_named_by_their_words():
     assert named == 0
     cells = [" ".join(c.source.split()) for c in nb.cells]
     depth = _07_held_markdown(nb, "q_depth.hold()")  # review r244: held under q_depth
-    assert "(the table's column \"step at 0.6\" gives each format's)" in depth
+    assert "(the table's last column)" in depth  # r389: "step at 0.6"
     assert "by slope/16 per pixel (the figure's key)" in depth
     (coplanar,) = [c for c in cells if c.startswith("q_depth.hold()")]
     assert "B − A: slope/{size_px // 2} per px" in coplanar and "step {depth_step[fmt]" in coplanar
@@ -4788,13 +4789,13 @@ def test_07_review_r215_float32_far_away_draws_a_triangle_beside_it():
     # review r227 P-1: the reading answers q_far, so q_far's held cell displays it (it was a
     # Markdown cell under the held one, visible before Check); C-2: the shifts it names are
     # those printed (every other k), not ranges
-    assert not any(c.startswith("Here the float32 version") for c in cells)
+    assert not any(c.startswith("Here float32 draws") for c in cells)
     (held,) = [c for c in run.cells if c.source.startswith("q_far.hold()")]
     shown = [
         o["data"]["text/markdown"] for o in held.outputs if "text/markdown" in o.get("data", {})
     ]
     text = " ".join(" ".join(shown).split())
-    assert text.startswith("Here the float32 version") and "shift the triangle a little" not in text
+    assert text.startswith("Here float32 draws none") and "shift the triangle a little" not in text
     for said in ("74,654 pixels of the 400 × 400 window round it, and none of the triangle's 64",
                  "follows one sum, the question below", "over a thousand pixels", "65,536",
                  "the relative form gets 0 of its 64 pixels wrong at $10^5$ px and 0 at $10^6$ "
@@ -5539,7 +5540,9 @@ def test_07_review_r244_numbers_figures_decal_and_the_lean_lesson():
     assert "**Demonstration: one snapping step.**" in rest and "?" not in rest
     assert "$E > 0$, is §1's naive flat top" in rest or "$E > 0$ is §1's naive flat top" in rest
     # change 2: float32 and unorm24 lose about as many pixels near 0.6: both step by 2^-24
+    # (r389 P2: lesson 06 §5 says so; q_depth asks the float32 band's width instead)
     assert (ns.f32_lost, ns.u24_lost) == (16, 15) and ns.depth_answer == ns.depth_choices[1]
+    assert ns.band_max == 1 and ns.depth_choices[1] == "at most 1 px"
     assert ns.f32_step == pytest.approx(ns.u24_step, rel=1e-6)
     ask = at("# The depth question's data")
     assert cells[ask + 1].startswith("q_depth.hold()") and "q_depth = PredictChoice(" in cells[ask]
@@ -6110,7 +6113,9 @@ def test_07_review_r266_the_e_sum_and_a_try_it_not_answered_before():
     assert "a few units" not in cells["c11sumq"]
     try_it = cells["c11try"]
     assert "Rewrite its" not in try_it and "How many of the 64 go wrong at each" not in try_it
-    assert "`my_coverage32` (keep `my_coverage`: Parts 1 and 2 check it)" in try_it
+    # r389 S3: the notebook gives my_coverage32; the text says edit it, the cell says keep
+    assert "Edit `my_coverage32` below" in try_it and "Copy it" not in try_it
+    assert "keep my_coverage: Parts 1 and 2 check" in cells["c11try32"]
     assert "`try_far(my_coverage32, FAR_OFFSETS)`" in try_it
     assert ns.FAR_OFFSETS == (1_000, 10_000, 30_000)
     from teachraster.study import hardcases
@@ -6191,9 +6196,8 @@ def test_07_review_r304_float32_bits_figure_sizes_and_keys():
     C sum 0 the three E are small, not all 0. S-4: the tie rule's lessons only."""
     cells = {c.get("id"): " ".join("".join(c["source"]).split()) for c in _07_notebook()["cells"]}
     depth_q = cells["c17dq"]
-    assert "23 stored fraction bits plus the implicit leading 1 give 24 significant" in depth_q
-    assert "The other 9 bits of the float " in depth_q
-    assert "are its sign (1) and exponent (8)" in depth_q
+    # r389 P2: q_depth asks the float32 band's width; its stem gives float32's step there
+    assert "are 2⁻²⁴ = {f32_step:.3g} apart" in depth_q
     assert "The other 8 bits" not in depth_q
     assert "rc_ticks(ax, first=ax is axes[0], cols=8)" in cells["c16"]
     helpers = next(t for t in cells.values() if t.startswith("# The lesson's helpers"))
@@ -6203,7 +6207,7 @@ def test_07_review_r304_float32_bits_figure_sizes_and_keys():
     assert "Patch(color=c) for c in dict.fromkeys(fan_colours.values())" in gpu
     assert "NEIGHBOUR_COLORS[1]))" not in gpu
     assert "would have to be 0 together" not in cells["c11sumq"]
-    assert "which holds no pixel centre at any of these shifts" in cells["c11sumq"]
+    assert "which held no pixel centre at any of these 64 shifts" in cells["c11sumq"]
     split = next(t for t in cells.values() if t.startswith("The top-left rule gives each tie"))
     assert "(lessons 01 §4 and 02 §5)" in split and "05a §4" not in split
 
@@ -6606,3 +6610,60 @@ def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
     assert "on row" not in ns.QUAKE_TEXT and "to row" not in ns.QUAKE_TEXT
     # S1
     assert "r near 1" not in next(c for c in cells if "q_quake = Predict(" in c)
+
+
+@pytest.mark.notebook
+def test_07_review_r389_far_text_drift_and_two_predictions():
+    """Review r389. C1: FAR_TEXT said float32 draws nothing at 1e6 px because every edge moved
+    further than the triangle's height, one inward; at k = 1 the same holds and 74,654 pixels
+    are drawn. An edge moved inward past the triangle loses its pixels (E12 and E31 at k = 0,
+    printed signed now); that nothing is drawn anywhere is the one-sum rule's. C2: float32's
+    drift, 0.0398 of a range of 1000.6, is ~99 times under one 8-bit colour step: printed, and
+    the must line no longer says "visibly". P1: q_sum asks what the 64 shifts drew. P2:
+    q_depth asks the float32 band's width (lesson 06 §5 answers float32 against unorm24)."""
+    from notebook_runs import executed, streams
+
+    from teachraster.study import hardcases
+
+    ns = lesson("07_hard_cases")
+    assert ns.far_in == ["E12", "E31"]
+    heights = ns.doubled_area / ns.edge_lengths
+    assert ns.far_moved[0] < -heights[0] and ns.far_moved[2] < -heights[2] and ns.far_moved[1] > 0
+    run = executed("07_hard_cases").notebook()
+    printed = " ".join(streams(run).split())
+    for said in ("E12 (13.1 px long): C off by 14,859 moves it 1,134 px inward",
+                 "E23 (11.7 px long): C off by 14,936 moves it 1,280 px outward",
+                 "E31 (11.8 px long): C off by 205 moves it 17 px inward"):  # fmt: skip
+        assert said in printed, said
+    far = " ".join(_07_held_markdown(run, "q_far.hold()").split())
+    assert far.startswith("Here float32 draws none of the triangle's 64 pixels at $10^6$ px")
+    assert "moved E12 and E31 inward, each further than the triangle's height" in far
+    assert "every edge" not in far and "$E < 0$ at every centre" not in far
+    assert "not why the first draws nothing anywhere" in far
+    assert "follows one sum, the question below" in far
+    # C2
+    must = hardcases.get_case("stepping_drift").expect
+    assert "visibly" not in must and "below one 8-bit colour step" in must
+    assert 300 < ns.drift_steps < 1000  # "hundreds of float32's own steps"
+    assert round(ns.drift_of_range, 6) == pytest.approx(4.0e-5, abs=1e-6)
+    assert round(ns.drift_colour) == 99
+    assert f"(the drift: {ns.drift_steps:.0f} of them)" in printed
+    assert "float32's drift over f's range (0.1 to 1000.7): 4.0e-05;" in printed
+    assert "one 8-bit colour step, 1/255 = 3.9e-03: 99 times the drift" in printed
+    cells = _07_sources()
+    (reading,) = [" ".join(c.split()) for c in cells if c.startswith("The float32 stepper's")]
+    assert "Over $f$'s range that is 99 times under one 8-bit colour step" in reading
+    # P1
+    (ask,) = [" ".join(c.split()) for c in cells if "q_sum = PredictChoice(" in c]
+    assert "did it draw any pixel, in these 64 shifts?" in ask and "can it draw" not in ask
+    # P2
+    (depth,) = [c for c in cells if "q_depth = PredictChoice(" in c]
+    asked = " ".join(depth.split("q_depth = PredictChoice(")[1].split("explain=")[0].split())
+    assert "How wide is that band, at most, in one" in asked and "unorm24" not in asked
+    assert ns.per_px == pytest.approx(6.25e-8) and ns.f32_step < ns.per_px < 2 * ns.f32_step
+    assert "float32, slope 1e-06: 1 in 16; 0 in 16" in printed
+    # S1: the float32 column read where it is printed; S4: the guard-band quote's source
+    assert ns.w_ratio_f32 < 1e-6
+    (w_text,) = [" ".join(c.split()) for c in cells if c.startswith("With $w_1 = 10^{-3}$")]
+    assert "The float32 column is small too" in w_text and "`perspective_w_scale`" in w_text
+    assert "*Depth Bias*; `D3D11_RASTERIZER_DESC` |" in cells[5]
