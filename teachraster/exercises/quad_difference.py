@@ -335,6 +335,8 @@ def draw_quad(ax, case, got):
     ax.set_xlim(c0 - 1.5, max([c0 + 1.5] + [c for _, c in near]) + 2.2)
     room = 3.5 if passed else 0.0  # r390 N6: white rows below for the helper quad's inset
     ax.set_ylim(max([r0 + 1.5] + [r for r, _ in near]) + 2.2 + room, r0 - 1.5)
+    if room:  # no row numbers beside the inset: it draws another quad
+        ax.set_yticks([r for r in ax.get_yticks() if r <= r0 + 3])
     ax.set_aspect("equal")
     if got is not None:
         # beside the close-up, under the legend (r375: it covered the quad below the pixel's)
