@@ -4862,3 +4862,83 @@ R386 = {
 }  # fmt: skip
 WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _) in R386.items()})
 KINDS.update({label: kind for label, (_, _, kind) in R386.items()})
+# == r390 (fixex07z, exercise 07): half-named students and the index slip's numbers ============
+
+
+def _mip_r390(minus_half: bool):
+    """λ − ½ (a constant bias), or log2(ρ − 1) + 1 (−inf at ρ = 1) (r390 N3: half-named)."""
+
+    def fn(ddx, ddy, size):
+        h, w = size
+        rho = max(math.hypot(ddx[0] * w, ddx[1] * h), math.hypot(ddy[0] * w, ddy[1] * h))
+        if minus_half:
+            return math.log2(rho) - 0.5
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return float(np.log2(rho - 1) + 1)
+
+    return fn
+
+
+def _bilinear_r390(tex, uv, wrap):
+    """bilinear with the 'repeat' wrap taken modulo H for columns and W for rows (r390 N3)."""
+    tex = np.asarray(tex, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    x0, y0 = math.floor(x), math.floor(y)
+    fx, fy = x - x0, y - y0
+    cols, rows = np.array([x0, x0 + 1]), np.array([y0, y0 + 1])
+    if wrap == "repeat":
+        cols, rows = cols % h, rows % w
+    else:
+        cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+    top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+    bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+    return (1 - fy) * top + fy * bottom
+
+
+def _trilinear_r390(pyramid, uv, lod, wrap="repeat"):
+    """λ clamped at the top only, int() for ⌊λ⌋: at λ = −2 it reads pyramid[-2] (r390 N2)."""
+    q = len(pyramid) - 1
+    lam = min(lod, q)
+    lower = math.floor(lam)
+    upper = min(lower + 1, q)
+    t = lam - lower
+    a = np.asarray(bilinear(pyramid[lower], uv, wrap))
+    return (1 - t) * a + t * np.asarray(bilinear(pyramid[upper], uv, wrap))
+
+
+def _quad_r390(xy, w, f, row, col):
+    """Coarse derivatives from lanes two steps apart, halved (r390 N3: half-named)."""
+    xy, w, f = (np.asarray(a, float) for a in (xy, w, f))
+    (x1, y1), (x2, y2), (x3, y3) = xy
+    area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+
+    def value(x, y):
+        lam = np.array([(x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
+                        (x3 - x) * (y1 - y) - (y3 - y) * (x1 - x),
+                        (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x)]) / area  # fmt: skip
+        mu = lam / w
+        return float(mu @ f / mu.sum())
+
+    r0, c0 = row - row % 2, col - col % 2
+    ul = value(c0 + 0.5, r0 + 0.5)
+    return (value(c0 + 2.5, r0 + 0.5) - ul) / 2, (value(c0 + 0.5, r0 + 2.5) - ul) / 2
+
+
+R390 = {
+    "mip level minus ½": ("mip_level", _mip_r390(True), "your λ is log2 ρ − ½ on every case",
+                          "minus half"),
+    "mip level log2(ρ − 1) + 1": ("mip_level", _mip_r390(False), "that is log2 0 = −inf (a log "
+                                  "of 0, not a division)", "log2(ρ − 1) + 1"),
+    "bilinear with the wrap modulo H and W swapped": (
+        "bilinear", _bilinear_r390, "you wrapped the column index modulo H",
+        "modulo H and W swapped"),
+    "trilinear clamped at the top only, pyramid[-2] read": (
+        "trilinear", _trilinear_r390, "⌊λ⌋ = -2 is not a level: Python's pyramid[-2] is level 2",
+        "λ not clamped"),
+    "quad derivatives two steps apart, halved": (
+        "quad_derivatives", _quad_r390, "you differenced two pixels two steps apart",
+        "two steps halved"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R390.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R390.items()})

@@ -114,7 +114,10 @@ _COMBINE = {
 _LOG = {"log2": math.log2, "ln": math.log, "log10": math.log10, "none": lambda r: r,
         "plus one": lambda r: math.log2(r) + 1, "floor": lambda r: math.floor(math.log2(r)),
         "round": lambda r: float(round(math.log2(r))),
-        "ceil": lambda r: float(math.ceil(math.log2(r))), "plus half": lambda r: math.log2(r) + 0.5}  # fmt: skip
+        "ceil": lambda r: float(math.ceil(math.log2(r))), "plus half": lambda r: math.log2(r) + 0.5,
+        "minus half": lambda r: math.log2(r) - 0.5,
+        "log2(ρ − 1) + 1": lambda r: (math.log2(r - 1) + 1 if r > 1
+                                          else -math.inf if r == 1 else math.nan)}  # fmt: skip
 
 
 def level_with(ddx, ddy, size, *, scale="texels", norm="euclid", combine="max", log="log2", clamp=False, pair="step"):  # fmt: skip
@@ -219,6 +222,13 @@ LEVEL_KNOBS = Knobs(level_with, {
         Slip("plus half", "your λ is log2 ρ + ½, half a level too many: the ½ belongs to "
              "rounding λ to the nearest level (GL's NEAREST_MIPMAP choice), which comes later; "
              "λ itself is log2 ρ, so one texel per pixel (ρ = 1) is λ = 0", "plus half"),
+        # r390 N3: a constant −½ was told the rule; log2(ρ − 1) + 1's −inf "a division"
+        Slip("minus half", lambda a, e, g: f"your λ is log2 ρ − ½ on every case (here "
+             f"{num(g, e)} against {num(e, g)}), half a level too few: λ is log2 ρ as it "
+             "comes, with no offset, so one texel per pixel (ρ = 1) is λ = 0", "minus half"),
+        Slip("log2(ρ − 1) + 1", "your λ is log2(ρ − 1) + 1: at one texel per pixel (ρ = 1) "
+             "that is log2 0 = −inf (a log of 0, not a division); log2 ρ alone is λ, 0 there, "
+             "and log2(ρ − 1) + 1 equals it only at ρ = 2", "log2(ρ − 1) + 1"),
     ],
     "pair": [
         Slip("derivatives paired by coordinate", "you paired the derivatives by coordinate, "

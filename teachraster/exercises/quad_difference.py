@@ -154,6 +154,14 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         "lower row": np.array([lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), right[1]]),
         "right column": np.array([right[0], lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]),
         "partner minus own": partner,
+        # r390 N3: (f(c0 + 2) − f(c0))/2, across the quad into the next, was told the method
+        "two steps halved": np.array(
+            [
+                _at(xy, w, f, c0 + 2.5, r0 + 0.5) - _at(xy, w, f, c0 + 0.5, r0 + 0.5),
+                _at(xy, w, f, c0 + 0.5, r0 + 2.5) - _at(xy, w, f, c0 + 0.5, r0 + 0.5),
+            ]
+        )
+        / 2,  # fmt: skip
         "centred": np.array(
             [
                 _at(xy, w, f, col + 1.5, row + 0.5) - _at(xy, w, f, col - 0.5, row + 0.5),
@@ -218,6 +226,10 @@ MISTAKES = {
     "right); coarse derivatives take ddy along its left column, f(lower left) − f(upper left), "
     "for all four pixels",
     "partner minus own": lambda a, e, g: _partner_words(a[3], a[4]),
+    "two steps halved": "you differenced two pixels two steps apart, (f(x + 2) − f(x))/2 and "
+    "(f(y + 2) − f(y))/2, reaching into the next quad: a GPU has only its own quad's four "
+    "lanes, so ddx and ddy are differences of two lanes one step apart (upper right − upper "
+    "left, lower left − upper left), not halved",
 }
 
 
@@ -321,7 +333,10 @@ def draw_quad(ax, case, got):
     near = [(r - r % 2, c - c % 2) for r, c in QUESTION_PIXELS if passed
             and abs(r - r0) < 6 and abs(c - c0) < 6]  # fmt: skip
     ax.set_xlim(c0 - 1.5, max([c0 + 1.5] + [c for _, c in near]) + 2.2)
-    ax.set_ylim(max([r0 + 1.5] + [r for r, _ in near]) + 2.2, r0 - 1.5)
+    room = 3.5 if passed else 0.0  # r390 N6: white rows below for the helper quad's inset
+    ax.set_ylim(max([r0 + 1.5] + [r for r, _ in near]) + 2.2 + room, r0 - 1.5)
+    if room:  # no row numbers beside the inset: it draws another quad
+        ax.set_yticks([r for r in ax.get_yticks() if r <= r0 + 3])
     ax.set_aspect("equal")
     if got is not None:
         # beside the close-up, under the legend (r375: it covered the quad below the pixel's)
@@ -332,6 +347,7 @@ def draw_quad(ax, case, got):
     if passed:
         words = f"{quad_questions()}. {helper_question()}"
         ax.set_xlabel(textwrap.fill(words, 58), fontsize="x-small")
+        artists += draw_helper_quad(ax)
     handles = [Patch(facecolor="#d2d2d2", edgecolor="#bbbbbb", label="covered"),
                Patch(facecolor="white", edgecolor="#ff9f1c", lw=3, label="the pixel")]  # fmt: skip
     if method:
@@ -343,8 +359,9 @@ def draw_quad(ax, case, got):
     return artists
 
 
-#: 7.4's "answer first" pixels (r375 F2: a passing check never showed them)
-QUESTION_PIXELS = ((28, 14), (29, 15), (30, 16))
+#: 7.4's "answer first" pixels (r375 F2: a passing check never showed them); all covered
+#: (r390 N1: (30, 16)'s quad lay wholly below the floor's edge, a quad a GPU never shades)
+QUESTION_PIXELS = ((28, 14), (29, 15), (29, 16))
 
 
 def quad_questions(pixels=QUESTION_PIXELS) -> str:
@@ -372,21 +389,72 @@ def _nearest_point(xy, x, y) -> tuple[float, float]:
     return float(best[0]), float(best[1])
 
 
-def helper_question(xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> str:
-    """7.4's helper question answered on the floor: ddx of the first quad (by rows, then
-    columns) whose left column is covered and right column not, with each helper's value taken
-    at the triangle's nearest point, against the extrapolated one."""
+def helper_quad(xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]):
+    """The first quad (by rows, then columns) whose left column is covered and right column
+    not: (row0, col0, f upper left, f upper right extrapolated, f at the triangle's point
+    nearest the upper right lane), or None."""
     size = int(np.ceil(np.max(xy))) + 2
     for r0 in range(0, size, 2):
         for c0 in range(0, size, 2):
             inside = [_inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)]
             if inside == [True, False, True, False]:
                 left = _at(xy, w, f, c0 + 0.5, r0 + 0.5)
-                right = _at(xy, w, f, c0 + 1.5, r0 + 0.5) - left
-                near = _at(xy, w, f, *_nearest_point(xy, c0 + 1.5, r0 + 0.5)) - left
-                return (f"Helpers at the nearest point: in the quad at ({r0}, {c0}), right column "
-                        f"outside, ddx {num(near)}, not {num(right)}")  # fmt: skip
-    return ""
+                right = _at(xy, w, f, c0 + 1.5, r0 + 0.5)
+                near = _at(xy, w, f, *_nearest_point(xy, c0 + 1.5, r0 + 0.5))
+                return r0, c0, left, right, near
+    return None
+
+
+def helper_question(xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> str:
+    """7.4's helper question answered on the floor, at :func:`helper_quad` (drawn in the pass
+    figure's inset, r390 N6): ddx with the helper's value taken at the triangle's nearest
+    point, against the extrapolated one, and why the first is wrong."""
+    found = helper_quad(xy, w, f)
+    if found is None:
+        return ""
+    r0, c0, left, right, near = found
+    less = abs(near - left) < abs(right - left)
+    why = (", so ddx measures less than one pixel's step of f and λ comes out too small"
+           if less else "")  # fmt: skip
+    return (
+        f"Helpers at the nearest point (inset, the quad at ({r0}, {c0}), right column "
+        f"outside): ddx {num(near - left)}, not {num(right - left)}: the nearest point "
+        f"lies on the edge, short of the helper's centre{why}"
+    )
+
+
+def draw_helper_quad(ax, xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> list:
+    """An inset beside ``ax``: :func:`helper_quad`'s quad, the triangle's edge through it, each
+    lane's extrapolated value and, at the helper, the nearest point's (r390 N6)."""
+    from matplotlib.patches import Rectangle
+
+    found = helper_quad(xy, w, f)
+    if found is None:
+        return []
+    r0, c0, *_ = found
+    inset = ax.inset_axes([0.02, 0.02, 0.5, 0.38])  # in the white rows below the view
+    ring = np.vstack([xy, xy[:1]])
+    inset.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.2)
+    for dr in (0, 1):
+        for dc in (0, 1):
+            x, y = c0 + dc, r0 + dr
+            inside = _inside(xy, x + 0.5, y + 0.5)
+            inset.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside else "white",
+                                      edgecolor="#2b7bba", lw=1.2,
+                                      hatch=None if inside else "//"))  # fmt: skip
+            inset.text(x + 0.5, y + 0.5, f"{_at(xy, w, f, x + 0.5, y + 0.5):.3f}", ha="center",
+                       va="center", fontsize="xx-small",
+                       bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.5})  # fmt: skip
+    nx, ny = _nearest_point(xy, c0 + 1.5, r0 + 0.5)
+    inset.plot([nx], [ny], "x", color="#d62728", markersize=5)
+    inset.set_title(f"helper quad ({r0}, {c0}); × nearest: {_at(xy, w, f, nx, ny):.3f}",
+                    fontsize="xx-small", color="#d62728", loc="left")  # fmt: skip
+    inset.set_xlim(c0 - 0.2, c0 + 2.2)
+    inset.set_ylim(r0 + 2.2, r0 - 0.2)
+    inset.set_aspect("equal")
+    inset.set_xticks([])
+    inset.set_yticks([])
+    return [inset]
 
 
 def _inside(xy, x, y) -> bool:

@@ -147,6 +147,10 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         mode = wrap
     c0, c1 = index(x0, w), index(x0 + 1, w)
     r0, r1 = index(y0, h, rows_tiled), index(y0 + 1, h, rows_tiled)
+    if mode == "modulo swapped" and wrap == "repeat":  # r390 N3: columns mod H, rows mod W
+        c0, c1, r0, r1 = (
+            int(np.mod(i, n)) for i, n in ((x0, h), (x0 + 1, h), (y0, w), (y0 + 1, w))
+        )
     if clamp == "uv, upper index":
         c0, c1, r0, r1 = int(x0), min(int(x0) + 1, w - 1), int(y0), min(int(y0) + 1, h - 1)
     if blend == "x only, row ⌊y⌋":  # r362: the vertical fraction left at 0
@@ -336,6 +340,12 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
                 Slip("always repeat", _wrap_words("repeat"), "repeat"),
                 Slip("wrap modes swapped", _modes_swapped_words, "swapped"),
+                # r390 N3: told the method ("which texel centres enclose (u, v)")
+                Slip("modulo H and W swapped", lambda a, e, g: "you wrapped the column "
+                     f"index modulo H = {a[0].shape[0]} and the row index modulo W = "
+                     f"{a[0].shape[1]}: with wrap 'repeat' the columns repeat every W = "
+                     f"{a[0].shape[1]} texels and the rows every H = {a[0].shape[0]}",
+                     "modulo swapped"),
                 Slip("repeat on columns only", "wrap 'repeat' tiles the texture along both "
                      "axes; you tiled the columns (u) but clamped the rows (v): wrap the row "
                      "index as you wrap the column index", "columns")],
@@ -627,8 +637,11 @@ def bilinear_questions(w: int, u: float) -> str:
     blend = f"blends columns {cols[0]} and {cols[1]} by {num(1 - t)} and {num(t)}"
     if cols[0] == cols[1]:
         blend = f"takes column {cols[0]} alone (columns {c0} and {c0 + 1} both clamped to it)"
-    return (f"7.2: with 'clamp', u = {num(u)} {blend}; one texel's value exactly at u = "
-            f"{centres} (the texel centres){middle}")  # fmt: skip
+    # r390 N5: "clamp" holds the border texels' values outside the outer centres too
+    edges = f"u ≤ {num(0.5 / w)} and u ≥ {num((w - 0.5) / w)}"
+    return (f"7.2: with 'clamp', u = {num(u)} {blend}; one texel's value exactly with "
+            f"'repeat' at u = {centres} (the texel centres), with 'clamp' there and at every "
+            f"{edges} (column 0 or {w - 1}){middle}")  # fmt: skip
 
 
 #: The texel weights' and wrapped boxes' labels: classroom size (r375 F6: 9 pt, touching)
@@ -669,15 +682,18 @@ def draw_level(ax, tex, uv, wrap, *, at=(0.0, 0.0), texel=(1.0, 1.0), weights=Fa
         if not labels:
             continue
         weight = (fx if dx else 1 - fx) * (fy if dy else 1 - fy)
-        # off the centre, outwards: the point lies between the four centres
+        # outwards, beyond the block's corner, a leader line to the texel's outer corner
+        # (r390 N4: a label centred in the texel spread over texels not in the blend)
         out_x, out_y = (1 if dx else -1), (1 if dy else -1)
-        cx, cy = ox + (c + 0.5 + 0.12 * out_x) * sx, oy + (r + 0.5) * sy
-        box = {"facecolor": "white", "alpha": 0.85, "pad": 1, "edgecolor": "none"}
+        cx, cy = ox + (c + 0.5 + 0.3 * out_x) * sx, oy + (r + 0.5 + 0.3 * out_y) * sy
+        box = {"facecolor": "white", "alpha": 0.9, "pad": 1, "edgecolor": "#2b7bba", "lw": 0.5}
         # the texel a box beyond the border stands for under its weight, in one label
         lines = [f"w {weight:.2g}"] + ([f"= {name}"] if name else [])
-        artists.append(ax.text(cx, cy + 0.12 * out_y * sy, "\n".join(lines if dy else lines[::-1]),
-                               color="#2b7bba", ha="left" if dx else "right",
-                               va="top" if dy else "bottom", fontsize=LABEL_SIZE, bbox=box))  # fmt: skip
+        artists.append(ax.annotate("\n".join(lines if dy else lines[::-1]), (cx, cy),
+                                   xytext=(9 * out_x, -9 * out_y), textcoords="offset points",
+                                   color="#2b7bba", ha="left" if dx else "right",
+                                   va="top" if dy else "bottom", fontsize=LABEL_SIZE, bbox=box,
+                                   arrowprops={"arrowstyle": "-", "color": "#2b7bba", "lw": 1}))  # fmt: skip
     artists += ax.plot(ox + px * sx, oy + py * sy, "x", color="#d7301f", ms=10, mew=2)
     return artists
 
@@ -928,6 +944,15 @@ _BILINEAR_FIRST = (
 )
 
 
+def _index_read(n, lower) -> str:
+    """What ⌊λ⌋ < 0 reads as a Python index into a pyramid of ``n`` levels (r390 N2: "−1" and
+    "the last one" were said whatever λ)."""
+    said = f"⌊λ⌋ = {lower} is not a level"
+    if lower < -n:
+        return f"{said}: Python's pyramid[{lower}] raises IndexError"
+    return f"{said}: Python's pyramid[{lower}] is level {n + lower}"
+
+
 def _tri_words(text):
     def words(args, expected, got):
         pyramid, uv, lod, wrap = args
@@ -943,6 +968,7 @@ def _tri_words(text):
             lam=num(lam),
             off=num(lam - round(lam)),
             near_up=min(round(lam) + 1, q),
+            index_read=_index_read(len(pyramid), int(np.floor(lod))),
             r0=q - d0,
             r1=q - d1,
         )
@@ -970,8 +996,7 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "the pyramid's levels run from 0 to q = {q} (the last, 1×1 level is level q), so "
              "clamp λ to [0, {q}]"), "q - 1"),
         Slip("λ not clamped", _tri_words("λ = {lod} lies outside the pyramid: clamp it to "
-             "[0, q] = [0, {q}] first (⌊λ⌋ = −1 is not a level: Python's pyramid[-1] is the last "
-             "one)"), "index"),
+             "[0, q] = [0, {q}] first ({index_read})"), "index"),
     ],
     "weights": [Slip("weights swapped", _tri_words("the weight of level {d1} is the fraction "
                      "λ − ⌊λ⌋ = {t}; you gave it to level {d0}"), "swapped"),
