@@ -165,16 +165,12 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     out["vertices on centres"] = exact(np.floor(np.asarray(xy, dtype=float)) + 0.5, row)
     out["sorted by x"] = _sorted_by_x(xy, row)
     # r385 M7, M8: the vertices truncated with int(), used in the order given, the longest edge
-    # (not on the triangle 10^12 px wide: their spans there may hold 10^12 columns)
-    small = float(np.ptp(np.asarray(xy, dtype=float))) < 10**6
     out["vertices truncated"] = exact(np.trunc(np.asarray(xy, dtype=float)), row)
-    out["not sorted"] = _unsorted(xy, row) if small else None
-    out["longest edge"] = _longest_edge(xy, row) if small else None
+    out["not sorted"] = _unsorted(xy, row)
+    out["longest edge"] = _longest_edge(xy, row)
     ys, xs = [float(p[1]) for p in xy], [Fraction(float(p[0])) for p in xy]
     inside = min(ys) <= row + 0.5 < max(ys)  # r385 M7 (m28): the bounding box's x-range
     out["bounding box"] = _cols(min(xs), max(xs)) if inside else frozenset()
-    if max(xs) - min(xs) > 10**6:  # (an answer that wide is refused before any comparison)
-        out["bounding box"] = None
     v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
     (x1, y1), (x2, y2), (x3, y3) = v
     y = Fraction(2 * row + 1, 2)
