@@ -1032,8 +1032,9 @@ def draw_span(ax, case, got):
     # r372 F1: a sliver 1/256 px high collapsed the axes to a strip, its y-label into the
     # title: at least a third as many rows as columns, around the row
     tall = max(6.0, (hi - lo) / 3)
-    if bottom - top < tall:
-        top, bottom = y - tall / 2, y + tall / 2
+    if bottom - top < tall:  # r385 F3: around the rows in view, so no vertex is cut off
+        middle = (top + bottom) / 2
+        top, bottom = middle - tall / 2, middle + tall / 2
     ax.set_ylim(bottom, top)
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
@@ -1055,9 +1056,11 @@ def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
         elif lo <= x <= hi:
             groups.append(([name], x, y))
     out = []
-    for names, x, y in groups:  # right of the vertex, or left of it in the window's right part
+    # right of the vertex, or left of it in the window's right part, above the crossings' ticks
+    # (r385 F3: the labels sat on the centre markers)
+    for names, x, y in groups:
         right = x > lo + 0.6 * (hi - lo)
-        out.append(ax.annotate(", ".join(names), (x, y), xytext=(-3 if right else 3, 3),
+        out.append(ax.annotate(", ".join(names), (x, y), xytext=(-4 if right else 4, 8),
                                textcoords="offset points", ha="right" if right else "left",
                                fontsize="x-small", color="#555555", zorder=6))  # fmt: skip
     return out
