@@ -4942,3 +4942,122 @@ R390 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R390.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R390.items()})
+# == r385 (fixex02w, exercise 2, span): wrongly passed, misnamed and half-named students ========
+
+
+def _span_r385(long=None, short=None, eps=0.0, floor_rows=False, top_given=False, trunc=False,
+               unsorted=False, side=None):  # fmt: skip
+    """The teacher's span but for one knob: the crossing of the ``long`` or ``short`` edge
+    (a function of (a, b, y), the edge's upper end first), an ``eps`` subtracted from both
+    ends, the rows tested on ⌊y⌋ (``floor_rows``), a top edge's ends in the order given
+    (``top_given``), the vertices truncated with int() (``trunc``), no sort (``unsorted``),
+    the side test ``side(x2, x3, u4)``."""
+
+    def exact(a, b, y):
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+    def span(xy, row):
+        y = row + 0.5
+        pts = [tuple(float(int(c)) if trunc else float(c) for c in p) for p in xy]
+        v = pts if unsorted else sorted(pts, key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        inside = (math.floor(min(y1, y3)) <= row <= math.floor(max(y1, y3)) if floor_rows
+                  else min(y1, y3) <= y <= max(y1, y3))  # fmt: skip
+        if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not inside:
+            return 0, 0
+        if y2 == y3 == y:
+            return 0, 0
+        if y1 == y2 == y:
+            xl, xr = (x1, x2) if top_given else (min(x1, x2), max(x1, x2))
+        else:
+            x_long = (long or exact)(v[0], v[2], y)
+            a, b = (v[0], v[1]) if y < y2 else (v[1], v[2])
+            x_short = (short or exact)(a, b, y)
+            u4 = exact(v[0], v[2], y2)
+            long_is_left = side(x2, x3, u4) if side else x2 > u4
+            xl, xr = (x_long, x_short) if long_is_left else (x_short, x_long)
+        return math.ceil(xl - 0.5 - eps), math.ceil(xr - 0.5 - eps)
+
+    return span
+
+
+def _divide_first(a, b, y):
+    return a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0])
+
+
+def _divide_first_from_lower(a, b, y):
+    return b[0] - (b[1] - y) / (b[1] - a[1]) * (b[0] - a[0])
+
+
+def _lerp(a, b, y):
+    t = (y - a[1]) / (b[1] - a[1])
+    return (1 - t) * a[0] + t * b[0]
+
+
+def _float32_t(a, b, y):
+    return a[0] + float(np.float32((y - a[1]) / (b[1] - a[1]))) * (b[0] - a[0])
+
+
+def _span_longest_edge_r385(xy, row):
+    """r385 M8 (m09): "the long edge" read as the longest edge by length."""
+    y = row + 0.5
+    p = [tuple(map(float, q)) for q in xy]
+    if (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]) == 0:
+        return 0, 0
+    edges = [(p[0], p[1]), (p[1], p[2]), (p[2], p[0])]
+    k = max(range(3), key=lambda i: math.dist(*edges[i]))
+    a, b = sorted(edges[k], key=lambda q: q[1])
+    if not a[1] <= y <= b[1] or a[1] == b[1]:
+        return 0, 0
+    x_long = a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    for i in range(3):
+        c, d = sorted(edges[i], key=lambda q: q[1])
+        if i != k and c[1] <= y <= d[1] and c[1] != d[1]:
+            xs = c[0] + (y - c[1]) * (d[0] - c[0]) / (d[1] - c[1])
+            xl, xr = min(x_long, xs), max(x_long, xs)
+            return math.ceil(xl - 0.5), math.ceil(xr - 0.5)
+    return 0, 0
+
+
+def _span_bounding_box_r385(xy, row):
+    """r385 M7 (m28): the bounding box's x-range on every row it spans."""
+    xs, ys = [float(p[0]) for p in xy], [float(p[1]) for p in xy]
+    if not min(ys) <= row + 0.5 < max(ys):
+        return 0, 0
+    return math.ceil(min(xs) - 0.5), math.ceil(max(xs) - 0.5)
+
+
+R385 = {
+    "span, divided first on the long edge only": (
+        "span", _span_r385(long=_divide_first), "your crossing rounds", "crossing rounds"),
+    "span, divided first from each edge's lower end": (
+        "span", _span_r385(long=_divide_first_from_lower, short=_divide_first_from_lower),
+        "your crossing rounds", "crossing rounds"),
+    "span, the lerp (1 − t)·a + t·b": (
+        "span", _span_r385(long=_lerp, short=_lerp), "your crossing rounds", "crossing rounds"),
+    "span, t rounded to float32 on the long edge": (
+        "span", _span_r385(long=_float32_t), "float32 holds 24 bits", "crossing rounds"),
+    "span, an epsilon of 1e-6 on the ends": (
+        "span", _span_r385(eps=1e-6), "an epsilon on the ends", "epsilon"),
+    "span, an epsilon of 1e-9 on the ends": (
+        "span", _span_r385(eps=1e-9), "an epsilon on the ends", "epsilon"),
+    "span, rows tested on floor(y)": (
+        "span", _span_r385(floor_rows=True), "a row test on ⌊y⌋", "raised"),
+    "span, a top edge's ends in the order given": (
+        "span", _span_r385(top_given=True), "your ends along the top edge come back as",
+        "x_l and x_r swapped on this row"),
+    "span, the middle vertex compared with the bottom one": (
+        "span", _span_r385(side=lambda x2, x3, u4: x2 > x3), "your x_l and x_r are swapped on "
+        "this row", "x_l and x_r swapped on this row"),
+    "span, vertices truncated with int()": (
+        "span", _span_r385(trunc=True), "you truncated the vertices", "vertices truncated"),
+    "span, vertices not sorted": (
+        "span", _span_r385(unsorted=True), "in the order given: sort them by y", "not sorted"),
+    "span, the longest edge as the long edge": (
+        "span", _span_longest_edge_r385, "you took the longest edge (by length)", "longest edge"),
+    "span, the bounding box on every row": (
+        "span", _span_bounding_box_r385, "you covered the triangle's bounding box",
+        "bounding box"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R385.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R385.items()})

@@ -43,6 +43,53 @@ PLACED = (
      (3.5, 6.5)), (5, 6)),
 )  # fmt: skip
 
+#: r385 P4: a crossing exactly on a centre on every edge (the long one, the upper and the lower
+#: short one), where a crossing taken from the edge's upper end or from its lower end, divided
+#: first, slope first or as the lerp (1 − t)·a + t·b, lands a hair right of it (numpy seed 385,
+#: vertices on centres; one row per edge, end and order); and the reader's rows where divide
+#: first on the long edge only (m30) or from the lower end (m32) did.
+TIE_ENDS = (
+    (((97.5, 39.5), (90.5, 83.5), (27.5, 109.5)), 86),
+    (((116.5, 9.5), (24.5, 38.5), (62.5, 90.5)), 24),
+    (((8.5, 9.5), (98.5, 60.5), (85.5, 79.5)), 59),
+    (((20.5, 35.5), (112.5, 36.5), (104.5, 119.5)), 60),
+    (((42.5, 18.5), (2.5, 32.5), (111.5, 54.5)), 42),
+    (((22.5, 9.5), (1.5, 60.5), (92.5, 109.5)), 19),
+    (((3.5, 5.5), (93.5, 59.5), (107.5, 103.5)), 38),
+    (((99.5, 54.5), (45.5, 63.5), (22.5, 86.5)), 57),
+    (((85.5, 36.5), (0.5, 71.5), (71.5, 87.5)), 57),
+    (((8.5, 8.5), (112.5, 86.5), (50.5, 104.5)), 41),
+    (((6.5, 10.5), (81.5, 58.5), (7.5, 109.5)), 26),
+    (((0.5, 21.5), (85.5, 91.5), (95.5, 116.5)), 49),
+    (((98.5, 23.5), (106.5, 86.5), (2.5, 112.5)), 101),
+    (((48.5, 13.5), (67.5, 83.5), (1.5, 101.5)), 89),
+    (((114.5, 5.5), (3.5, 89.5), (117.5, 115.5)), 102),
+    (((64.5, 1.5), (27.5, 81.5), (102.5, 111.5)), 89),
+    (((99.5, 54.5), (45.5, 63.5), (22.5, 86.5)), 85),
+    (((21.5, 54.5), (7.5, 64.5), (67.5, 116.5)), 77),
+    (((12.5, 99.5), (22.5, 24.5), (122.5, 11.5)), 59),
+    (((1767.5, 1226.5), (1868.5, 980.5), (256.5, 1724.5)), 1382),
+    (((1562.5, 1488.5), (375.5, 1003.5), (30.5, 778.5)), 838),
+)
+
+#: r385 P5: crossings a hair right of a centre, not on it (4·10^-8 and 6·10^-10 px), inside the
+#: stated range: an epsilon "for safety" covers that centre (their rows are 10^5 and 1.5·10^4 px
+#: tall: their columns come from the exact crossings, :func:`.spans.exact_columns`).
+NEAR_TIES = (
+    (((0.5, 0.5), (0.50390625, 100000.5), (1000.5, 500.5)), 1),
+    (((100.38671875, 0.5), (1828.921875, 15259.29296875), (5100.38671875, 20.5)), 1),
+)
+
+#: r385 P6: horizontal edges off the centre lines, a top edge with y's fraction above ½ (row 19,
+#: y = 19.89…) and a bottom edge with one below ½ (row 7, y = 7.25): a row test on ⌊y⌋ visits
+#: rows whose centre lines miss the triangle.
+FLOOR_ROWS = (
+    ("a horizontal top edge below the centre line", ((8.875, 19.89453125),
+     (19.94921875, 19.89453125), (30.92578125, 35.125)), (19,)),
+    ("a horizontal bottom edge above the centre line", ((3.5, 2.0), (1.25, 7.25),
+     (9.75, 7.25)), (7,)),
+)  # fmt: skip
+
 ORDERS = ("multiply first", "divide first", "slope first")
 
 #: The range the task states (r372 T1): vertices on the 1/256-px grid with |x|, |y| below
@@ -76,10 +123,12 @@ class Pair(frozenset):
     pair: tuple[int, int] | None = None
 
 
-def pair_columns(x_left, x_right) -> Pair:
+def pair_columns(x_left, x_right) -> Pair | None:
     """The columns of the crossings x_left, x_right taken as they are (exact for Fractions,
     float64 for floats), with their pair."""
     first, stop = math.ceil(x_left - HALF), math.ceil(x_right - HALF)
+    if stop - first > 10**6:  # r385: a wrong crossing of the leaning edge 10^5 px tall lies
+        return None  # 2.6·10^7 px out: a span no student's answer can be (it is refused)
     out = Pair(range(first, stop))
     out.pair = (first, stop)
     return out
@@ -101,7 +150,8 @@ def _pick(long_x, short_x, long_is_left: bool) -> frozenset:
 KINDS = (
     "divide first", "slope first", "upper denominator", "slope inverted", "long edge sign",
     "side by given winding", "side by the short edge", "long edge below the split", "lower edge above the split",
-    "sorted by x", "vertices on centres",
+    "sorted by x", "vertices on centres", "not sorted", "vertices truncated", "longest edge",
+    "bounding box",
 )  # fmt: skip
 
 
@@ -114,6 +164,13 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     out = dict.fromkeys(KINDS, right)
     out["vertices on centres"] = exact(np.floor(np.asarray(xy, dtype=float)) + 0.5, row)
     out["sorted by x"] = _sorted_by_x(xy, row)
+    # r385 M7, M8: the vertices truncated with int(), used in the order given, the longest edge
+    out["vertices truncated"] = exact(np.trunc(np.asarray(xy, dtype=float)), row)
+    out["not sorted"] = _unsorted(xy, row)
+    out["longest edge"] = _longest_edge(xy, row)
+    ys, xs = [float(p[1]) for p in xy], [Fraction(float(p[0])) for p in xy]
+    inside = min(ys) <= row + 0.5 < max(ys)  # r385 M7 (m28): the bounding box's x-range
+    out["bounding box"] = _cols(min(xs), max(xs)) if inside else frozenset()
     v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
     (x1, y1), (x2, y2), (x3, y3) = v
     y = Fraction(2 * row + 1, 2)
@@ -166,6 +223,52 @@ def _sorted_by_x(xy: np.ndarray, row: int) -> frozenset | None:
     except ZeroDivisionError:
         return None
     return _pick(long_x, short_x, x2 > u4)
+
+
+def _frac_points(xy) -> list[tuple[Fraction, Fraction]]:
+    return [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
+
+
+def _unsorted(xy: np.ndarray, row: int) -> frozenset | None:
+    """The exercise's steps with the vertices taken as top, middle and bottom in the order
+    given, no sort (r385 M7, m18): None where it divides by zero."""
+    v = _frac_points(xy)
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = Fraction(2 * row + 1, 2)
+    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not min(y1, y3) <= y <= max(y1, y3):
+        return frozenset()
+    if y2 == y3 == y:
+        return frozenset()
+    if y1 == y2 == y:
+        return _cols(min(x1, x2), max(x1, x2))
+    try:
+        long_x = _at(v[0], v[2], y)
+        short_x = _at(*((v[0], v[1]) if y < y2 else (v[1], v[2])), y)
+        u4 = _at(v[0], v[2], y2)
+    except ZeroDivisionError:
+        return None
+    return _pick(long_x, short_x, x2 > u4)
+
+
+def _longest_edge(xy: np.ndarray, row: int) -> frozenset:
+    """The span with "the long edge" read as the longest edge by length, the other crossing
+    from the first other edge that reaches the row (r385 M8, m09)."""
+    v = _frac_points(xy)
+    (x1, y1), (x2, y2), (x3, y3) = v
+    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0:
+        return frozenset()
+    edges = [(v[0], v[1]), (v[1], v[2]), (v[2], v[0])]
+    k = max(range(3), key=lambda i: math.dist(*(tuple(map(float, p)) for p in edges[i])))
+    y = Fraction(2 * row + 1, 2)
+    a, b = sorted(edges[k], key=lambda p: p[1])
+    if not a[1] <= y <= b[1] or a[1] == b[1]:
+        return frozenset()
+    for i in range(3):
+        c, d = sorted(edges[i], key=lambda p: p[1])
+        if i != k and c[1] <= y <= d[1] and c[1] != d[1]:
+            xs = sorted((_at(a, b, y), _at(c, d, y)))
+            return _cols(*xs)
+    return frozenset()
 
 
 def _side_words(how: str) -> str:
@@ -236,6 +339,18 @@ WORDS = {
     "the middle one (the split)",
     "sorted by x": "you sorted the vertices by x: the roles top, middle and bottom come from "
     "sorting by y, the direction the raster lines advance in",
+    "vertices truncated": "you truncated the vertices to whole numbers (int() or "
+    "math.trunc) before computing: the crossings are those of the triangle as given, its "
+    "vertices on the 1/256-px grid anywhere inside a pixel",
+    "not sorted": "you used the vertices as top, middle and bottom in the order given: sort "
+    "them by y first (the smaller x first where two share a y, lesson 01 §1), so that the "
+    "long edge runs from the top vertex to the bottom one and the split lies at the middle",
+    "longest edge": "you took the longest edge (by length) as the long edge: the long edge is "
+    "the one from the top vertex to the bottom one, the only edge spanning the triangle's full "
+    "height (points 1 → 3 after the sort by y), however short it is",
+    "bounding box": "you covered the triangle's bounding box, from its leftmost vertex to its "
+    "rightmost one, on every row: a row's span runs between the two edges that cross its "
+    "centre line, x_l and x_r, which move from row to row",
     "vertices on centres": "you moved the vertices to pixel centres (⌊c⌋ + ½) before "
     "computing: the crossings are those of the triangle as given, its vertices on the "
     "1/256-px grid anywhere inside a pixel",

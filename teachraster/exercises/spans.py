@@ -31,7 +31,16 @@ from .drawing import note_beside
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
-from .span_variants import PLACED, TIE_ROWS, more_variants, pair_columns
+from .span_variants import (
+    FLOOR_ROWS,
+    NEAR_TIES,
+    PLACED,
+    TIE_ENDS,
+    TIE_ROWS,
+    float_crossing,
+    more_variants,
+    pair_columns,
+)
 from .span_variants import WORDS as MORE_WORDS
 
 
@@ -69,7 +78,7 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, [row])
         out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
                     "end)", (xy, row), covered[row]))  # fmt: skip
-    out += _wide_cases() + _edge_cases() + _half_cases() + _r372_cases()
+    out += _wide_cases() + _edge_cases() + _half_cases() + _r372_cases() + _r385_cases()
     # first (the drawing of a passing check, and the first failure most students see): a row
     # with covered centres whose crossings of two slanted edges lie on centres (r355 S2: a row
     # along a top edge, whose x_l and x_r are vertices, was called "the left edge")
@@ -199,6 +208,30 @@ def _r372_cases() -> list[tuple[str, tuple, frozenset]]:
         out += [(f"vertices on centres, row {row} (a crossing exactly on a centre)",
                  (xy.copy(), row), covered[row]) for row in rows]  # fmt: skip
     for label, points, rows in PLACED:
+        xy = np.array(points)
+        covered = _covered_rows(xy, list(rows))
+        out += [(f"{label}, row {row}", (xy.copy(), row), covered[row]) for row in rows]
+    return out
+
+
+def _r385_cases() -> list[tuple[str, tuple, frozenset]]:
+    """r385 P4, P5, P6: a crossing exactly on a centre on every edge, reached from either end
+    (any crossing that rounds there fails); a crossing a hair right of a centre (an epsilon
+    fails); horizontal edges off the centre lines (a row test on ⌊y⌋ fails). The triangles
+    over 1000 px take their columns from the exact crossings (the package's fill of a window
+    that size is slow), the rest from the package."""
+    out = []
+    for points, row in TIE_ENDS:
+        xy = np.array(points)
+        big = float(np.ptp(xy)) > 1000
+        covered = exact_columns(xy, row) if big else _covered_rows(xy, [row])[row]
+        out.append((f"vertices on centres, row {row} (a crossing exactly on a centre: a tie "
+                    "on each edge, from either end)", (xy, row), covered))  # fmt: skip
+    for points, row in NEAR_TIES:
+        xy = np.array(points)
+        out.append((f"a tall edge leaning a little, row {row} (a crossing a hair right of a "
+                    "centre, not on it)", (xy, row), exact_columns(xy, row)))  # fmt: skip
+    for label, points, rows in FLOOR_ROWS:
         xy = np.array(points)
         covered = _covered_rows(xy, list(rows))
         out += [(f"{label}, row {row}", (xy.copy(), row), covered[row]) for row in rows]
@@ -342,8 +375,10 @@ def crossings(xy: np.ndarray, y) -> tuple[Fraction, Fraction] | None:
     return (min(xs), max(xs)) if xs and area != 0 else None
 
 
-def _columns(lo, hi) -> frozenset:
-    return frozenset(range(lo, hi))
+def _columns(lo, hi) -> frozenset | None:
+    """The columns lo <= col < hi (None: over 10^6 of them, an answer :func:`as_span` refuses;
+    r385: a wrong crossing of a near tie's edge, 10^5 px tall, lies 10^7 px out)."""
+    return None if hi - lo > 10**6 else frozenset(range(lo, hi))
 
 
 def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
@@ -663,7 +698,8 @@ def _span_raised(args, error: str) -> str:
     if not float(xy[:, 1].min()) <= y <= float(xy[:, 1].max()):
         return (f" (the centre line y = {num(y)} misses the triangle, whose vertices lie "
                 f"between y = {num(float(xy[:, 1].min()))} and {num(float(xy[:, 1].max()))}: "
-                "no edge crosses it, so no crossing can be computed there)")  # fmt: skip
+                "no edge crosses it, so no crossing can be computed there"
+                + _floor_row(xy, row) + ")")  # fmt: skip
     kind = _horizontal_edge(xy, y)
     if kind:
         return (f" (the centre line y = {num(y)} runs along a horizontal {kind} edge, whose "
@@ -671,9 +707,37 @@ def _span_raised(args, error: str) -> str:
     return ""
 
 
-def _horizontal_fits(args, expected, got) -> bool:
-    xy, row = args
-    return bool(_horizontal_edge(xy, row + 0.5)) and bool(got) != bool(expected)
+def _floor_row(xy: np.ndarray, row: int) -> str:
+    """r385 P6: a row whose centre line misses the triangle, let in by a test on ⌊y⌋."""
+    low, high = float(xy[:, 1].min()), float(xy[:, 1].max())
+    if not math.floor(low) <= row <= math.floor(high):
+        return ""
+    return (f"; a row test on ⌊y⌋ (math.floor(y1) ≤ row ≤ math.floor(y3)) lets row {row} in, "
+            f"yet its centres lie on y = {num(row + 0.5)}: test the centre line itself, "
+            "y1 ≤ row + ½ ≤ y3")  # fmt: skip
+
+
+def _horizontal_gives(edge: str):
+    """r385 M7: the span of a student whose rule for a horizontal ``edge`` ("top" or "bottom")
+    on the centre line is wrong (a top edge's centres left out, a bottom edge's covered), as a
+    cause is, so that it is named only where it gives the student's answer and contradicts no
+    passing one (not of a triangle of zero area, whose coincident vertices are no edge)."""
+
+    def gives(xy: np.ndarray, row: int) -> Span | None:
+        return _horizontal_span(xy, row) if _horizontal_edge(xy, row + 0.5) == edge else None
+
+    return gives
+
+
+def _horizontal_span(xy: np.ndarray, row: int) -> Span | None:
+    kind = _horizontal_edge(xy, row + 0.5)
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    if not kind or cross is None or winding(xy) == "zero area":
+        return None
+    lo, hi = (math.ceil(x - Fraction(1, 2)) for x in cross)
+    out = Span(range(lo, hi)) if kind == "bottom" else Span()
+    out.pair = (lo, hi) if kind == "bottom" else (lo, lo)
+    return out
 
 
 def _horizontal_words(args, expected, got) -> str:
@@ -724,12 +788,172 @@ def _ends_words(args, expected, got) -> str:
             "right)")  # fmt: skip
 
 
+def _ties_off(args, got) -> list[tuple[str, int, Fraction]] | None:
+    """(end name, the student's end, the exact crossing) of each end that differs from the
+    exact one, where every such end lies one column right of it on a crossing exactly on a
+    centre (None: another difference, or none)."""
+    xy, row = args
+    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
+    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
+        return None
+    off = []
+    for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
+        if end != math.ceil(x - HALF):
+            if end != math.ceil(x - HALF) + 1 or (x - HALF).denominator != 1:
+                return None
+            off.append((name, end, x))
+    return off or None
+
+
+HALF = Fraction(1, 2)
+
+
+def _tie_edge(xy: np.ndarray, row: int, x: Fraction):
+    """The sorted triangle's slanted edge (upper end, lower end) whose crossing of the row's
+    centre line is x (None: a vertex, or none)."""
+    v = sorted(((float(a), float(b)) for a, b in xy), key=lambda p: p[1])
+    y = Fraction(2 * row + 1, 2)
+    for i, j in ((0, 2), (0, 1), (1, 2)):
+        a, b = v[i], v[j]
+        if (
+            a[1] < y < b[1]
+            and Fraction(a[0])
+            + (y - Fraction(a[1])) * Fraction(b[0] - a[0]) / (Fraction(b[1]) - Fraction(a[1]))
+            == x
+        ):
+            return a, b
+    return None
+
+
+#: r385 P4, H2: crossings that round at a tie, each from the edge's upper end (a) and from its
+#: lower end (b, the ends exchanged): where one of them gives the student's end it is quoted.
+ROUNDINGS = (
+    ("(y − a_y)/(b_y − a_y) taken first", "divide first"),
+    ("the slope (b_x − a_x)/(b_y − a_y) taken first", "slope first"),
+    ("the lerp (1 − t)·a + t·b", "lerp"),
+    ("t = (y − a_y)/(b_y − a_y) rounded to float32", "float32 t"),
+)
+
+
+def _rounded_crossing(a, b, y: float, how: str) -> float:
+    if how == "lerp":
+        t = (y - a[1]) / (b[1] - a[1])
+        return (1 - t) * a[0] + t * b[0]
+    if how == "float32 t":
+        return a[0] + float(np.float32((y - a[1]) / (b[1] - a[1]))) * (b[0] - a[0])
+    return float_crossing(a, b, y, how)
+
+
+def _rounding_of(args, end: int, x: Fraction) -> tuple[str, float] | None:
+    """(the words of a rounding crossing, its value) that gives ``end`` at the tie x."""
+    xy, row = args
+    edge = _tie_edge(xy, row, x)
+    if edge is None:
+        return None
+    for words, how in ROUNDINGS:
+        for a, b, start in ((*edge, "upper"), (edge[1], edge[0], "lower")):
+            value = _rounded_crossing(a, b, row + 0.5, how)
+            if value > x and math.ceil(value - 0.5) == end:
+                return f"{words}, from the edge's {start} end,", value
+    return None
+
+
+def _rounds_fits(args, expected, got) -> bool:
+    return bool(_ties_off(args, got))
+
+
+def _rounds_words(args, expected, got) -> str:
+    xy, row = args
+    name, end, x = _ties_off(args, got)[0]
+    side = "x_l" if name == "first" else "x_r"
+    found = _rounding_of(args, end, x)
+    edge = _edge_of(xy, row, x)
+    how = f" ({found[0]} gives {found[1]!r})" if found else ""
+    if found and "float32" in found[0]:
+        return (f"on {edge} {side} is exactly {_frac(x)}, a centre, and your {name} {end} means "
+                f"yours came out a hair right of it{how}: float32 holds 24 bits, and its "
+                "rounding moved the tie; compute in float64, and the crossing exact (lesson "
+                "01 §4b)")  # fmt: skip
+    return (f"on {edge} {side} is exactly {_frac(x)}, a centre, and your {name} {end} means "
+            f"yours came out a hair right of it{how}: your crossing rounds, so the tie went to "
+            "the wrong side. Which order of the same operations gives a crossing exactly on "
+            "the 1/256-px grid? (lesson 01 §4b)")  # fmt: skip
+
+
+def _near_off(args, got) -> list[tuple[str, int, Fraction]] | None:
+    """Each end one column left of the exact one, where the crossing lies a hair (under
+    10^-5 px) right of a centre, not on it (None: another difference, or none)."""
+    xy, row = args
+    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
+    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
+        return None
+    off = []
+    for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
+        right = math.ceil(x - HALF)
+        if end != right:
+            if end != right - 1 or not 0 < x - (end + HALF) < Fraction(1, 10**5):
+                return None
+            off.append((name, end, x))
+    return off or None
+
+
+def _epsilon_fits(args, expected, got) -> bool:
+    return bool(_near_off(args, got))
+
+
+def _epsilon_words(args, expected, got) -> str:
+    name, end, x = _near_off(args, got)[0]
+    side = "x_l" if name == "first" else "x_r"
+    gap = float(x - (end + HALF))
+    state, yours = (("not covered", "covers it") if name == "first"
+                    else ("covered", "leaves it out"))  # fmt: skip
+    return (f"{side} lies {gap:.2g} px right of the centre {num(end + 0.5)}, not on it, so that "
+            f"centre is {state}; your {name} {end} {yours}: an epsilon on the ends (for "
+            "safety)? The crossings are exact in the stated range (lesson 01 §4b), so no "
+            "tolerance is needed, and any tolerance moves some centre that close")  # fmt: skip
+
+
+def _swapped_fits(args, expected, got) -> bool:
+    xy, row = args
+    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
+    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5) == "bottom":
+        return False
+    lo, hi = (math.ceil(x - HALF) for x in cross)
+    return hi > lo and pair == (hi, lo)
+
+
+def _swapped_words(args, expected, got) -> str:
+    """r385 H3, M7: x_l and x_r swapped on this row, without a side test the student may not
+    have made (along a top edge: its ends in the order given)."""
+    xy, row = args
+    xl, xr = crossings(xy, Fraction(2 * row + 1, 2))
+    pair = _returned(got)
+    if _horizontal_edge(xy, row + 0.5) == "top":
+        return (f"your ends along the top edge come back as {pair}, the wrong way round: the "
+                f"edge's left end is x = {_frac(xl)}, its smaller x (x_l), and its right end "
+                f"x = {_frac(xr)} (x_r); take them by min and max, not in the order given")  # fmt: skip
+    return (f"your x_l and x_r are swapped on this row: your pair {pair} is the right one the "
+            f"wrong way round, so it covers nothing; x_l = {_frac(xl)} is the smaller "
+            f"crossing (on {_edge_of(xy, row, xl)}), x_r = {_frac(xr)} the larger (on "
+            f"{_edge_of(xy, row, xr)}): check the test that picks which crossing is x_l "
+            "(or take the smaller one)")  # fmt: skip
+
+
 SYMPTOMS = (
     # r355 C3: named only where float32 explains every failure: a float64 (first, last) or
     # y = row + 1 also misses the one far row where float32 moves an end, and was asked there
     # whether it computed in float32
+    # r385 P5: before float32, which also gives a crossing 10^-9 px right of a centre 15000 px
+    # out: named where it gives every failing answer (a float32 student fails the far rows too)
+    Mistake("epsilon", _epsilon_words, fits=_epsilon_fits, only_whole=True),
     Mistake("float32", _far_float32_words, fits=_far_float32_fits, only_whole=True),
-    Mistake("horizontal edge", _horizontal_words, fits=_horizontal_fits, symptom=True),
+    # r385 P4, H2: a crossing that rounds at a tie (quoted where a usual formula gives it),
+    # float32's t named as float32, an epsilon on the ends, x_l and x_r swapped on a row
+    # (only where every failing answer is such a tie: one end off at a tie is no cause alone)
+    Mistake("crossing rounds", _rounds_words, fits=_rounds_fits, symptom=True, only_whole=True),
+    Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
+    Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
+    Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("bottom"), symptom=True),
     # r372 M3: one end off the same way on every failing case, or not said
     Mistake("ends", _ends_words, fits=_ends_fits, symptom=True, parameter=_end_number),
 )
@@ -808,8 +1032,9 @@ def draw_span(ax, case, got):
     # r372 F1: a sliver 1/256 px high collapsed the axes to a strip, its y-label into the
     # title: at least a third as many rows as columns, around the row
     tall = max(6.0, (hi - lo) / 3)
-    if bottom - top < tall:
-        top, bottom = y - tall / 2, y + tall / 2
+    if bottom - top < tall:  # r385 F3: around the rows in view, so no vertex is cut off
+        middle = (top + bottom) / 2
+        top, bottom = middle - tall / 2, middle + tall / 2
     ax.set_ylim(bottom, top)
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
@@ -820,7 +1045,8 @@ def draw_span(ax, case, got):
 def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
     """The sorted vertices' roles at the vertices in view (r372 F2: the task is about the
     split, and no figure said which vertex is the middle one)."""
-    order = sorted(range(3), key=lambda k: float(xy[k, 1]))
+    # r385 F3: lesson 01's order, two vertices at one height the smaller x first (np.lexsort)
+    order = sorted(range(3), key=lambda k: (float(xy[k, 1]), float(xy[k, 0])))
     groups: list[tuple[list[str], float, float]] = []  # vertices closer than a pixel: one label
     for name, k in zip(("top", "middle", "bottom"), order):
         x, y = float(xy[k, 0]), float(xy[k, 1])
@@ -830,9 +1056,11 @@ def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
         elif lo <= x <= hi:
             groups.append(([name], x, y))
     out = []
-    for names, x, y in groups:  # right of the vertex, or left of it in the window's right part
+    # right of the vertex, or left of it in the window's right part, above the crossings' ticks
+    # (r385 F3: the labels sat on the centre markers)
+    for names, x, y in groups:
         right = x > lo + 0.6 * (hi - lo)
-        out.append(ax.annotate(", ".join(names), (x, y), xytext=(-3 if right else 3, 3),
+        out.append(ax.annotate(", ".join(names), (x, y), xytext=(-4 if right else 4, 8),
                                textcoords="offset points", ha="right" if right else "left",
                                fontsize="x-small", color="#555555", zorder=6))  # fmt: skip
     return out
