@@ -5061,3 +5061,49 @@ R385 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R385.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R385.items()})
+
+
+def _fill_r394(zero_test=True, row_origin=True, col_shift=0.0, last_row=True):
+    """r394's robust_fill with one slip: no zero-area refusal and a zero-length edge counted
+    as top (W24), rows without origin[0] (W09), columns 1/256 px right (W32), or the
+    window's last row blanked (W16)."""
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
+        area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+        if zero_test and area == 0:
+            return np.zeros((height, width), dtype=bool)
+        if area < 0:
+            v = v[[0, 2, 1]]
+        rows = (origin[0] if row_origin else 0) + np.arange(height)[:, None] + 0.5
+        cols = origin[1] + np.arange(width)[None, :] + 0.5 + col_shift
+        inside = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = (b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0])
+            top = b[1] == a[1] and (b[0] > a[0] if zero_test else b[0] >= a[0])
+            inside &= (e >= 0) if (b[1] < a[1] or top) else (e > 0)
+        if not last_row:
+            inside[-1] = False
+        return inside
+
+    return robust_fill
+
+
+#: label: (fill, words in the first failure, kind of the first failure, words never said).
+R394 = {
+    "fill without a zero-area test, a zero-length edge as top": (
+        _fill_r394(zero_test=False), "snapped, this triangle has zero area", "zero area",
+        "covers every pixel"),
+    "fill with rows missing origin[0]": (
+        _fill_r394(row_origin=False), "strictly inside all three edges", "value",
+        "you read origin as (x, y)"),
+    "fill with columns 1/256 px right": (
+        _fill_r394(col_shift=1 / 256), "strictly inside all three edges", "value",
+        "you cover no centre on an edge"),
+    "fill with the window's last row blanked": (
+        _fill_r394(last_row=False), "strictly inside all three edges", "value",
+        "must flip the sign"),
+}  # fmt: skip
+WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _, _) in R394.items()})
+KINDS.update({label: kind for label, (_, _, kind, _) in R394.items()})

@@ -804,11 +804,28 @@ TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED,
              "any horizontal edge is top")  # fmt: skip
 
 
+def _shape_swapped(args, expected, got) -> bool:
+    """r394 NW11: an image of shape (width, height) where the answer is one value throughout
+    (an early return): a shape, not a transposed image."""
+    return got.shape == expected.shape[::-1] != expected.shape and bool(
+        expected.size and (expected == expected.flat[0]).all() and (got == expected.flat[0]).all()
+    )
+
+
+def _shape_swapped_words(args, expected, got) -> str:
+    return (f"your image has shape {got.shape}, (width, height) (an early return such as "
+            f"np.zeros((width, height))?): an image is indexed [row, col], so its shape is "
+            f"(height, width), {expected.shape}")  # fmt: skip
+
+
+SHAPE_SWAPPED = Mistake("transposed", _shape_swapped_words, fits=_shape_swapped)
+
+
 def _table() -> list[Mistake]:
     """The mistakes table, each tie rule held to every failing tie case; THIN first (r386
     NW08: where a raw orientation gives the same empty image, its words say both, under one
     kind whatever the drawn cases)."""
-    table = [THIN] + variant_mistakes(_variants, MISTAKES, (*_roundings(), ABSOLUTE64,
+    table = [SHAPE_SWAPPED, THIN] + variant_mistakes(_variants, MISTAKES, (*_roundings(), ABSOLUTE64,
                                                             FLOAT32_E, ALL_COVERED, ZERO_AREA,
                                                             FAR, ROUNDING, *TIES, OFF_GRID))  # fmt: skip
     table = [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
@@ -821,7 +838,8 @@ def _table() -> list[Mistake]:
 RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "ceil snapping", "oriented before snapping",
               "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
               "only y snapped", "origin ignored", "origin added twice",
-              "float32 E", "float32", "absolute form", *SLIP_WORDS)  # fmt: skip
+              "float32 E", "float32", "absolute form", *SLIP_WORDS,
+              "origin swapped", "E > 0")  # fmt: skip  # r394 W09, W32: one case is no cause
 
 
 def explain_fill(args, expected, got) -> str:
@@ -844,8 +862,22 @@ def explain_fill(args, expected, got) -> str:
     i, j = np.argwhere(got != expected)[0]
     centre = np.array([origin[1] + j + 0.5, origin[0] + i + 0.5])
     text, _, _ = explain_pixel(s, centre, bool(expected[i, j]))
+    if not _unoriented(args, got):  # r394 E2: the imperative only where it is the cause
+        text = text.replace(FLIP_ADVICE, "")
     counts = f"{int((expected & ~got).sum())} missing, {int((got & ~expected).sum())} extra"
     return f"{text} (snapped vertices; {counts})"
+
+
+#: The tail of :func:`.coverage.interior_side` that reads as advice (r394 E2).
+FLIP_ADVICE = ", and a test for E > 0 must flip the sign first or swap two vertices"
+
+
+def _unoriented(args, got) -> bool:
+    """Does ``got`` equal the fill of a function that never orients the triangle?"""
+    xy, width, height, origin = args
+    s = snap(np.asarray(xy, float))
+    one = naive_coverage(s, width, height, rule="top_left", orient="none", origin=tuple(origin))
+    return got.shape == one.shape and bool(np.array_equal(got, one))
 
 
 def _rule(args, expected, got) -> str:
@@ -867,7 +899,9 @@ def _zero_area(args, expected, got) -> bool:
 
 
 ZERO_AREA = Mistake("zero area", "snapped, this triangle has zero area (its vertices land on "
-                    "one line or one point): it covers nothing", fits=_zero_area,
+                    "one line or one point): it covers nothing; refuse a snapped area of 0 before "
+                    "testing any centre (on its line E = 0, and a tie rule may cover it)",
+                    fits=_zero_area,
                     with_others=True)  # fmt: skip
 
 

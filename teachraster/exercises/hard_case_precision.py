@@ -194,7 +194,12 @@ def raw_tie_fill(raw, width: int, height: int, origin) -> np.ndarray:
 def all_covered(args, expected, got) -> bool:
     """r386 NW12: every pixel of the window covered where some is not (a zero-area triangle
     may still be given nothing)."""
-    return got.dtype == bool and got.shape == expected.shape and bool(got.all())
+    if got.dtype != bool or got.shape != expected.shape or not got.all():
+        return False
+    # r394 W24: a zero-area triangle covered is ZERO_AREA's (its own cause), not a placeholder
+    s = snap(np.asarray(args[0], float))
+    (ax, ay), (bx, by), (cx, cy) = s
+    return bool((bx - ax) * (cy - ay) - (by - ay) * (cx - ax) != 0)
 
 
 #: The slips' words (:func:`slip_variants`, :func:`all_covered`).
