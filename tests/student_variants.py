@@ -5063,26 +5063,38 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R385.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R385.items()})
 
 
-def _fill_r394(zero_test=True, row_origin=True, col_shift=0.0, last_row=True):
+def _fill_r394(zero_test=True, row_origin=True, col_shift=0.0, last_row=True, plus=False,
+               round_box=False, both=False):  # fmt: skip
     """r394's robust_fill with one slip: no zero-area refusal and a zero-length edge counted
     as top (W24), rows without origin[0] (W09), columns 1/256 px right (W32), or the
-    window's last row blanked (W16)."""
+    window's last row blanked (W16), + between E's products (W20), a bounding box from
+    round(min) to round(max) (W23), or both windings accepted, ties on one only (W15)."""
 
     def robust_fill(xy, width, height, origin=(0, 0)):
         v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
         area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
         if zero_test and area == 0:
             return np.zeros((height, width), dtype=bool)
-        if area < 0:
+        if area < 0 and not both:
             v = v[[0, 2, 1]]
         rows = (origin[0] if row_origin else 0) + np.arange(height)[:, None] + 0.5
         cols = origin[1] + np.arange(width)[None, :] + 0.5 + col_shift
         inside = np.ones((height, width), dtype=bool)
+        neg = np.full((height, width), both)
         for k in range(3):
             a, b = v[k], v[(k + 1) % 3]
-            e = (b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0])
+            d = (b[1] - a[1]) * (cols - a[0])
+            e = (b[0] - a[0]) * (rows - a[1]) + (d if plus else -d)
             top = b[1] == a[1] and (b[0] > a[0] if zero_test else b[0] >= a[0])
             inside &= (e >= 0) if (b[1] < a[1] or top) else (e > 0)
+            neg &= e < 0
+        inside |= neg
+        if round_box:
+            box = np.zeros_like(inside)
+            x0, x1 = (int(round(f(v[:, 0]))) - origin[1] for f in (np.min, np.max))
+            y0, y1 = (int(round(f(v[:, 1]))) - origin[0] for f in (np.min, np.max))
+            box[max(y0, 0) : max(y1, 0), max(x0, 0) : max(x1, 0)] = True
+            inside &= box
         if not last_row:
             inside[-1] = False
         return inside
@@ -5096,14 +5108,23 @@ R394 = {
         _fill_r394(zero_test=False), "snapped, this triangle has zero area", "zero area",
         "covers every pixel"),
     "fill with rows missing origin[0]": (
-        _fill_r394(row_origin=False), "strictly inside all three edges", "value",
+        _fill_r394(row_origin=False), "your rows ignore origin[0]", "rows without origin",
         "you read origin as (x, y)"),
     "fill with columns 1/256 px right": (
-        _fill_r394(col_shift=1 / 256), "strictly inside all three edges", "value",
-        "you cover no centre on an edge"),
+        _fill_r394(col_shift=1 / 256), "your centres are 1/256 px right",
+        "centres 1/256 px right", "you cover no centre on an edge"),
     "fill with the window's last row blanked": (
-        _fill_r394(last_row=False), "strictly inside all three edges", "value",
+        _fill_r394(last_row=False), "in the window's last row", "last row missing",
         "must flip the sign"),
+    "fill with + between E's products": (
+        _fill_r394(plus=True), "your E is not the edge function", "one sign wrong in E",
+        "you read origin as (x, y)"),
+    "fill with a rounded bounding box": (
+        _fill_r394(round_box=True), "it runs from round(min) to round(max)",
+        "rounded bounding box", "must flip the sign"),
+    "fill accepting both windings, ties on one": (
+        _fill_r394(both=True), "you accept both windings without orienting",
+        "both windings, ties on one", "you cover no centre on an edge (E > 0)"),
 }  # fmt: skip
 WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _, _) in R394.items()})
 KINDS.update({label: kind for label, (_, _, kind, _) in R394.items()})

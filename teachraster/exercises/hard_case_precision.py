@@ -170,7 +170,54 @@ def slip_variants(xy, width: int, height: int, origin, fill) -> dict[str, np.nda
             (np.rint(raw * 256 - 0.5) + 0.5) / 256, width, height, **kw
         ),
         "tie rule from the raw vertices": raw_tie_fill(raw, width, height, origin),
+        **slip_variants_r394(raw, width, height, origin, fill),
     }
+
+
+def slip_variants_r394(raw, width: int, height: int, origin, fill) -> dict[str, np.ndarray]:
+    """r394's slips: one axis without its origin, the window's last row missing, a rounded
+    bounding box, one sign wrong in E, centres 1/256 px right, both windings accepted with
+    the tie rule on one only."""
+    s = snap(raw)
+    right = fill(raw, width, height, origin)
+    last = right.copy()
+    last[-1] = False
+    box = np.zeros((height, width), dtype=bool)
+    lo = [max(0, int(round(s[:, k].min())) - origin[1 - k]) for k in (0, 1)]
+    hi = [min(n, int(round(s[:, k].max())) - origin[1 - k]) for k, n in ((0, width), (1, height))]
+    box[lo[1] : max(lo[1], hi[1]), lo[0] : max(lo[0], hi[0])] = True
+    return {
+        "rows without origin": fill(raw, width, height, (0, origin[1])),
+        "columns without origin": fill(raw, width, height, (origin[0], 0)),
+        "last row missing": last,
+        "rounded bounding box": right & box,
+        "centres 1/256 px right": naive_coverage(
+            s - [1 / 256, 0], width, height, rule="top_left", origin=tuple(origin)
+        ),
+        "one sign wrong in E": edge_sign_fill(s, width, height, origin, both=False),
+        "both windings, ties on one": edge_sign_fill(s, width, height, origin, both=True),
+    }
+
+
+def edge_sign_fill(s, width: int, height: int, origin, both: bool) -> np.ndarray:
+    """r394 W20 (``both`` False): E with + between its two products, on the oriented
+    triangle; W15 (``both``): no orienting, the tie rule for E > 0 and E < 0 strict."""
+    (ax, ay), (bx, by), (cx, cy) = s
+    if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0:
+        return np.zeros((height, width), dtype=bool)
+    v = s if both else oriented(s)
+    y = origin[0] + np.arange(height)[:, None] + 0.5
+    x = origin[1] + np.arange(width)[None, :] + 0.5
+    pos = np.ones((height, width), dtype=bool)
+    neg = pos.copy()
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        d = (b[1] - a[1]) * (x - a[0])
+        e = (b[0] - a[0]) * (y - a[1]) + (-d if both else d)
+        tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        pos &= (e >= 0) if tie else (e > 0)
+        neg &= e < 0
+    return pos | neg if both else pos
 
 
 def raw_tie_fill(raw, width: int, height: int, origin) -> np.ndarray:
@@ -225,6 +272,22 @@ SLIP_WORDS = {
     "grid offset by half a step": "your grid points are at (k + ½)/256 px, half a step off "
     "the GPU's grid k/256: round xy · 256 to the nearest whole number and divide, nothing "
     "added or taken away",
+    "rows without origin": "your rows ignore origin[0]: you test row i at y = i + ½, not "
+    "y = origin[0] + i + ½ (your columns add origin[1])",
+    "columns without origin": "your columns ignore origin[1]: you test column j at x = j + ½, "
+    "not x = origin[1] + j + ½ (your rows add origin[0])",
+    "last row missing": "every pixel you miss is in the window's last row (row height − 1): "
+    "your loop or slice stops one short (range(height - 1), or [:-1])",
+    "rounded bounding box": "your bounding box misses pixels whose centres are inside: it "
+    "runs from round(min) to round(max); a pixel's centre can be inside from floor(min) to "
+    "floor(max) inclusive",
+    "centres 1/256 px right": "your centres are 1/256 px right of the pixel centres: a "
+    "pixel's centre is at x = origin[1] + j + ½, nothing added",
+    "one sign wrong in E": "your E is not the edge function: E(a, b, p) = (b.x − a.x)(p.y − "
+    "a.y) − (b.y − a.y)(p.x − a.x), a minus between the two products, not a plus",
+    "both windings, ties on one": "you accept both windings without orienting, with the tie "
+    "rule on one only: for a triangle with E(v1, v2, v3) < 0 you cover no centre on an edge; "
+    "orient first (swap two vertices when E(v1, v2, v3) < 0), then apply one rule",
     "tie rule from the raw vertices": "your top/left verdicts come from the unsnapped "
     "vertices: snapping can make an edge horizontal or turn its direction, so decide top and "
     "left on the snapped (and oriented) triangle, the one whose E you test",
