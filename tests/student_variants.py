@@ -5128,3 +5128,28 @@ R394 = {
 }  # fmt: skip
 WRONG.update({label: ("robust_fill", fn, words) for label, (fn, words, _, _) in R394.items()})
 KINDS.update({label: kind for label, (_, _, kind, _) in R394.items()})
+# == r395: exercise 11.3b's last misnamed slips and a half-step margin that passed ==============
+
+
+def _tied_plus_epsilon(b):
+    """The histories' depths (stored: tied) with an ε added against the division by zero."""
+    wall = next(r.depth for r in _records(b, 13, 52) if r.outcome == "passed")
+    pane = next(r.depth for r in _records(b, 13, 52) if r.outcome == "hi_z")
+    return int(np.ceil(np.log2(1 + 1 / (wall - pane + 1e-12))))
+
+
+R395 = {
+    "frame 3 bits, the depth divided by the gap": (
+        "broken_frame_3_steps",
+        lambda b: int(np.ceil(np.log2(_pane_gap(b)[0] / _gap_of(b)))),
+        "the depth divided by the gap (a float buffer's relative precision",
+        "the depth divided by the gap"),
+    "frame 3 bits, a half-step margin": (
+        "broken_frame_3_steps", lambda b: int(np.ceil(np.log2(1 / _gap_of(b) + 0.5))),
+        "a step of 1/2ⁿ?", "a step of 1/2ⁿ"),
+    "frame 3 bits, the histories' tied depths plus ε": (
+        "broken_frame_3_steps", _tied_plus_epsilon,
+        "a gap of about 0, the histories' depths tied with a tiny ε added?", "constant"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R395.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R395.items()})

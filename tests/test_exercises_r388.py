@@ -102,7 +102,7 @@ def test_the_question_keeps_the_gap_and_moves_the_pair_and_asks_for_all_digits()
     cells = {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"])
              for c in json.loads(NOTEBOOK.read_text())["cells"]}  # fmt: skip
     task = " ".join(cells["frame_3_steps_task"].split())
-    assert "redrawn three times" in task and "with all their digits" in task, task
+    assert "redrawn four times" in task and "with all their digits" in task, task
 
 
 def test_the_figure_draws_the_whole_step_only_once_the_words_give_it():

@@ -15,7 +15,7 @@ gap is read off the frame's trace (``frame.trace.window[k, :, 2]``, the depths t
 are drawn at, unrounded): the histories print depths as the 16-bit buffer stores them, the
 pane's tied at the wall's.
 
-The check hands the function the frame shown and frame 3 redrawn three times with another wall
+The check hands the function the frame shown and frame 3 redrawn four times with another wall
 and the pane another distance from it (:func:`.broken_frames.frame_3_gap`), so a number typed
 in fails, and chosen so that each slip fails a case (r388 G1-G3): a gap whose log₂(1/gap) has a
 fraction below ½ (rounded to the nearest bit), a gap just above 1/2²⁰ (a step of 1/2ⁿ for
@@ -40,6 +40,7 @@ from .answers import refuse_non_answers, short
 from .broken_frames import broken_frame, frame_3_gap
 from .diagnosis import constant_words
 from .exercise import Exercise, Mistake
+from .report import NOTHING_DRAWN_FOR
 from .running import WrongAnswerType
 
 #: The pixel whose history names the pane (any pixel of the pane: it lies parallel to the wall).
@@ -54,11 +55,14 @@ WHAT = ("the fewest bits of a unorm depth buffer in which frame 3's pane, the sa
 #: the wall's depth alone differ from case to case (17, 22, 17, 19: fixed looks), the answer
 #: on one case only.
 #: r388 G1-G3: 3e-6 (log₂(1/gap) = 18.35, a fraction below ½: rounded to the nearest, 18);
-#: 1/(2²⁰ − 0.5), just above 1/2²⁰ (a step of 1/2ⁿ: 20); the wall 0.33 of a 16-bit step below
+#: 1/(2²⁰ − 0.75), just above 1/2²⁰ (a step of 1/2ⁿ: 20; r395 N4: inside (2ⁿ − 1, 2ⁿ), not at
+#: its midpoint, so "a half-step margin", log₂(1/gap + ½), fails without float noise); the wall 0.33 of a 16-bit step below
 #: the grid (the pane's stored depth minus its drawn one: 18), where a six-decimal boundary
 #: falls between the wall and the pane (rounded so, 1e-6 apart: 20, where a step of 1/2ⁿ
 #: gives the answer, 22; both give 20 on the third redraw).
-GAPS = ((3e-7, 0, -0.33), (3e-6, 1, 0.0), (1 / (2**20 - 0.5), 2, 0.0))
+#: r395 N1: a wall at 0.2, far from the others' 0.65-0.7, so that the depth divided by the gap
+#: (a float buffer's relative precision: 16) is not log₂(1/gap) (18).
+GAPS = ((3e-7, 0, -0.33), (3e-6, 1, 0.0), (1 / (2**20 - 0.75), 2, 0.0), (5e-6, 1, -19661.0))
 #: The most bits the question considers: float64's mantissa (53) and more say nothing new.
 MOST = 53
 
@@ -115,11 +119,11 @@ def _stored_minus_drawn(b) -> float:
 
 
 def _cases():
-    """The frame shown and frame 3 redrawn three times, the pane other distances from the
+    """The frame shown and frame 3 redrawn four times, the pane other distances from the
     wall (:data:`GAPS`)."""
     frames = [broken_frame(3), *(frame_3_gap(*g) for g in GAPS)]
     names = ("the frame shown", "the frame redrawn", "the frame redrawn again",
-             "the frame redrawn a third time")  # fmt: skip
+             "the frame redrawn a third time", "the frame redrawn a fourth time")  # fmt: skip
     return [(name, (b,), _bits(_gap(b))) for name, b in zip(names, frames, strict=True)]
 
 
@@ -235,7 +239,28 @@ def _constant(value) -> str:
         return INTENDED.removeprefix(": ")
     if sum(x == _here(a) for _, (a,), _ in _cases()) >= 2:
         return HERE.removeprefix(": ")
+    if (
+        math.isfinite(x)
+        and x == int(x)
+        and x <= 1000
+        and x >= TIED + max(e for _, _, e in _cases())
+    ):
+        return _tied_words(int(x))
     return constant_words(value)
+
+
+#: How many bits beyond every case's answer a constant is read as a gap of 0 with an ε added
+#: (r395 N2: 40, from the histories' tied depths and 1e-12, was told "a placeholder").
+TIED = 8
+
+
+def _tied_words(n: int) -> str:
+    """A huge constant: the answer for a gap of about 0, the histories' tied depths plus ε."""
+    return (
+        f"{_answer_for(n)}: a gap of about 0, the histories' depths tied with a tiny ε added? The "
+        "histories print depths as the 16-bit buffer stores them, the pane's tied at the "
+        "wall's: the depths the triangles are drawn at are in frame.trace.window[k, :, 2]"
+    )
 
 
 def _raised(args, error: str) -> str:
@@ -283,11 +308,16 @@ def _stored_words(args, expected, got) -> str:
 
 
 def _nearest_words(args, expected, got) -> str:
+    """Rounded to the nearest bit, said only where log₂(1/gap)'s fraction is below ½ (r395 N3:
+    elsewhere nearest and up agree, and the slip is the step of 1/2ⁿ)."""
     (b,) = args
     gap = _gap(b)
-    return (f": log₂ rounded to the nearest bit? Here log₂(1/gap) is {math.log2(1 / gap):.2f}, "
+    log = math.log2(1 / gap)
+    if not log % 1 < 0.5:
+        return _power_words(args, expected, got)
+    return (f": log₂ rounded to the nearest bit? Here log₂(1/gap) is {log:.8f}, "
             f"whose fraction is below ½; with {got} bits the gap is "
-            f"{gap * (2**got - 1):.3g} of a step, less than a whole one, and the two depths "
+            f"{gap * (2**got - 1):.8f} of a step, less than a whole one, and the two depths "
             "tie wherever no rounding boundary falls between them: round up")  # fmt: skip
 
 
@@ -298,6 +328,16 @@ def _power_words(args, expected, got) -> str:
             f"1/(2ⁿ − 1) (lesson 05b): with {got} bits the gap is {gap * 2**got:.8f} of 1/2^{got} "
             f"but {gap * (2**got - 1):.8f} of a step, not more than a whole one, so the two depths still tie at "
             "some depths")  # fmt: skip
+
+
+def _relative_words(args, expected, got) -> str:
+    (b,) = args
+    wall, gap = _drawn(b)[0], _gap(b)
+    return (f": the depth divided by the gap (a float buffer's relative precision, lesson 05b's "
+            f"reverse-Z)? Here log₂(wall/gap) is {math.log2(wall / gap):.4f}, the wall drawn at "
+            f"{wall:.4f}; unorm steps are the same size, 1/(2ⁿ − 1), at every depth, so the "
+            f"depth does not enter: with {got} bits the gap is {gap * (2**got - 1):.8f} of a "
+            "step")  # fmt: skip
 
 
 def _more_words(args, expected, got) -> str:
@@ -325,6 +365,8 @@ MISTAKES = [
     Mistake("depths rounded to six decimals", _six_words,
             gives=lambda b: _bits(_six(b)[0] - _six(b)[1])),
     Mistake("stored minus drawn", _stored_words, gives=lambda b: _bits(_stored_minus_drawn(b))),
+    Mistake("the depth divided by the gap", _relative_words,
+            gives=lambda b: _of_gap(b, lambda g: math.ceil(math.log2(_drawn(b)[0] / g)))),
     Mistake("rounded to the nearest bit", _nearest_words,
             gives=lambda b: _of_gap(b, lambda g: round(math.log2(1 / g)))),
     Mistake("a step of 1/2ⁿ", _power_words,
@@ -345,8 +387,10 @@ MISTAKES = [
 #: The reasoning (with the gaps the student's number answers), said as a hint until two
 #: different answers have failed.
 HINTS = (
-    (RULE, ": how far apart must two depths be for an n-bit buffer to store them as different "
-     "whole numbers whatever they are?"),
+    # r395 N5: the hint a sentence of its own, the gap's words the next one
+    (f"{RULE} (lesson 05b), the gap being", ": how far apart must two depths be for an n-bit "
+     "buffer to store them as different whole numbers whatever they are (lesson 05b)? The gap "
+     "is"),
     (re.compile(r"; \d+ bits would be the answer for a gap above \S+( up to \S+)?; this pane's "
                 r"gap is \S+$"), ""),
 )  # fmt: skip
@@ -384,3 +428,10 @@ BROKEN_FRAME_3_STEPS = Exercise(
     reference=("teachraster.exercises.broken_frames",), hints=HINTS, constant=_constant,
     raised_words=_raised, call=_call,
 )  # fmt: skip
+
+# r395 N6: the stub's note says what this figure draws (never the answer: r388 G8)
+NOTHING_DRAWN_FOR[BROKEN_FRAME_3_STEPS.name] = (
+    "Nothing drawn yet: once your function returns answers, the check draws its first failing "
+    "case (or, when all pass, one of the cases): your number of bits and the gap in steps of "
+    "that buffer, never the rule's answer"
+)
