@@ -204,13 +204,19 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     return out
 
 
-def _sorted_by_x(xy: np.ndarray, row: int) -> frozenset | None:
-    """The span of the exercise's own steps with the roles given by x, not y (r372 M6): None
-    where it divides by zero (the student's function raises there)."""
-    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[0])
+def _frac_points(xy) -> list[tuple[Fraction, Fraction]]:
+    return [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
+
+
+def _steps_in_order(v, row: int, *, rows_sorted: bool) -> frozenset | None:
+    """The exercise's own steps on vertices ``v`` taken as top, middle and bottom in the order
+    they come: None where a crossing divides by zero (the student's function raises there).
+    ``rows_sorted``: the row is tested as y1 <= y <= y3 (as the steps write it after a sort),
+    else between y1 and y3 either way round."""
     (x1, y1), (x2, y2), (x3, y3) = v
     y = Fraction(2 * row + 1, 2)
-    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not y1 <= y <= y3:
+    on_rows = y1 <= y <= y3 if rows_sorted else min(y1, y3) <= y <= max(y1, y3)
+    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not on_rows:
         return frozenset()
     if y2 == y3 == y:
         return frozenset()
@@ -225,29 +231,17 @@ def _sorted_by_x(xy: np.ndarray, row: int) -> frozenset | None:
     return _pick(long_x, short_x, x2 > u4)
 
 
-def _frac_points(xy) -> list[tuple[Fraction, Fraction]]:
-    return [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
+def _sorted_by_x(xy: np.ndarray, row: int) -> frozenset | None:
+    """The span of the exercise's own steps with the roles given by x, not y (r372 M6): None
+    where it divides by zero (the student's function raises there)."""
+    v = sorted(_frac_points(xy), key=lambda p: p[0])
+    return _steps_in_order(v, row, rows_sorted=True)
 
 
 def _unsorted(xy: np.ndarray, row: int) -> frozenset | None:
     """The exercise's steps with the vertices taken as top, middle and bottom in the order
     given, no sort (r385 M7, m18): None where it divides by zero."""
-    v = _frac_points(xy)
-    (x1, y1), (x2, y2), (x3, y3) = v
-    y = Fraction(2 * row + 1, 2)
-    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not min(y1, y3) <= y <= max(y1, y3):
-        return frozenset()
-    if y2 == y3 == y:
-        return frozenset()
-    if y1 == y2 == y:
-        return _cols(min(x1, x2), max(x1, x2))
-    try:
-        long_x = _at(v[0], v[2], y)
-        short_x = _at(*((v[0], v[1]) if y < y2 else (v[1], v[2])), y)
-        u4 = _at(v[0], v[2], y2)
-    except ZeroDivisionError:
-        return None
-    return _pick(long_x, short_x, x2 > u4)
+    return _steps_in_order(_frac_points(xy), row, rows_sorted=False)
 
 
 def _longest_edge(xy: np.ndarray, row: int) -> frozenset:
