@@ -40,6 +40,7 @@ from .hard_case_precision import (
     FLOAT32_CASES,
     SLIP_WORDS,
     all_covered,
+    centre_grid,
     float32_rounds,
     float32_words,
     refused_or_raw_words,
@@ -232,8 +233,7 @@ def edge_fill(s, width: int, height: int, origin, *, owns=_top_left, given=None,
     edge, E > ε on the others), "loose" (E ≥ −ε everywhere) or "strict" (E > ε everywhere)."""
     w = np.asarray(s, float)
     v = w[[0, 2, 1]] if _area(w) < 0 else w
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
+    y, x = centre_grid(origin, width, height)
     inside = np.ones((height, width), dtype=bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
@@ -577,8 +577,7 @@ def tie_fill(s, width: int, height: int, origin, *, top: bool = True, left: bool
     v = np.asarray(s, float)
     if _area(v) < 0:
         v = v[[0, 2, 1]]
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
+    y, x = centre_grid(origin, width, height)
     inside = np.ones((height, width), dtype=bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
@@ -713,8 +712,7 @@ def _absolute64_rounds(args, expected, got) -> bool:
     if got.dtype != bool or got.shape != expected.shape or bound < 2.0**-16:
         return False
     v = snap(np.asarray(xy, float))
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
+    y, x = centre_grid(origin, width, height)
     near = np.zeros((height, width), dtype=bool)
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]

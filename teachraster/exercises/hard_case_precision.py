@@ -35,6 +35,19 @@ FLOAT32_CASES = {
 STEP = 2.0**-16
 
 
+def centre_grid(origin, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
+    """The window's pixel centres, y as a column and x as a row (broadcast to (height, width)):
+    row i and column j of the window whose first pixel is ``origin`` = (row, col).
+
+    >>> y, x = centre_grid((2, 5), 3, 2)
+    >>> y.ravel().tolist(), x.ravel().tolist()
+    ([2.5, 3.5], [5.5, 6.5, 7.5])
+    """
+    y = origin[0] + np.arange(height)[:, None] + 0.5
+    x = origin[1] + np.arange(width)[None, :] + 0.5
+    return y, x
+
+
 def oriented(s) -> np.ndarray:
     """The snapped vertices ``s`` ordered so that E(v1, v2, v3) > 0 (y down)."""
     (ax, ay), (bx, by), (cx, cy) = s
@@ -47,8 +60,7 @@ def edge_values(xy, width: int, height: int, origin, *, orient=True) -> list:
     exact on the grid within the stated range."""
     s = snap(np.asarray(xy, float))
     v = oriented(s) if orient else s
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
+    y, x = centre_grid(origin, width, height)
     out = []
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
@@ -206,8 +218,7 @@ def edge_sign_fill(s, width: int, height: int, origin, both: bool) -> np.ndarray
     if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0:
         return np.zeros((height, width), dtype=bool)
     v = s if both else oriented(s)
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
+    y, x = centre_grid(origin, width, height)
     pos = np.ones((height, width), dtype=bool)
     neg = pos.copy()
     for k in range(3):
@@ -228,8 +239,7 @@ def raw_tie_fill(raw, width: int, height: int, origin) -> np.ndarray:
     out = np.ones((height, width), dtype=bool)
     if (s[1, 0] - s[0, 0]) * (s[2, 1] - s[0, 1]) == (s[1, 1] - s[0, 1]) * (s[2, 0] - s[0, 0]):
         return ~out
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
+    y, x = centre_grid(origin, width, height)
     for k in range(3):
         a, b, ra, rb = v[k], v[(k + 1) % 3], r[k], r[(k + 1) % 3]
         e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
