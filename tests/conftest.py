@@ -437,3 +437,16 @@ def _checks_give_their_full_words():
     tries.spend_hints(n for n in checks.names() if checks.exercise(n).hints)
     tries.spend_hints(["a_buffer"])  # the capstone's glass_sorted stages its words too (r84)
     yield
+
+
+@pytest.fixture
+def plt():
+    """matplotlib's pyplot on the Agg backend, every figure closed afterwards (the exercises'
+    picture tests; a module may define its own)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    yield plt
+    plt.close("all")

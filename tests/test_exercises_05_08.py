@@ -235,15 +235,6 @@ def test_bilinear_at_a_texel_centre_is_the_texel():
 
 
 # -- whole pictures, side by side -------------------------------------------------------------
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
 
 
 PICKS = {

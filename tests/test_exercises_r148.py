@@ -22,17 +22,6 @@ from teachraster.exercises.checks import check
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks/exercises/12_capstone.ipynb"
 
 
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
-
-
 def _mine(scene, **changed):
     return {name: changed.get(name, sol.CAPSTONE[name]) for name in SCENES[scene].uses}
 

@@ -14,24 +14,12 @@ import json
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from teachraster.exercises.depth_clipping import clip_cases, clip_with, explain_clip
 from teachraster.exercises.drawing import draw_clip
 from teachraster.exercises.zbuffer_pixel import WRONG_FRAME, depth_cases, draw_depth_passes
 
 NOTEBOOK = Path(__file__).parents[1] / "notebooks" / "exercises" / "04_depth_and_clipping.ipynb"
-
-
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
 
 
 def _texts(fig) -> str:

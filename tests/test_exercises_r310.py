@@ -11,7 +11,6 @@ import json
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from teachraster.exercises.depth_clipping import clip_with
 from teachraster.exercises.drawing import draw_clip
@@ -28,17 +27,6 @@ def test_the_text_says_glass_passes_and_why_it_is_drawn_last():
     assert "after all the opaque\ngeometry" in _cell(2)
     assert "a vertex behind the camera, which lesson 07 comes back to" in _cell(0)
     assert "the first\none repeated at the end, is accepted" in _cell(5)
-
-
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
 
 
 def test_the_clip_figure_drops_a_flat_y_panel_and_zooms_on_the_polygon(plt):

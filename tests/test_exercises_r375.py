@@ -29,17 +29,6 @@ from teachraster.exercises.texture_filtering import (
 NOTEBOOK = Path(__file__).parents[1] / "notebooks" / "exercises" / "07_texture_filtering.ipynb"
 
 
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
-
-
 def _passing_figure(plt, name, fn):
     report = ex.check(name, fn)
     assert report.passed, str(report)

@@ -9,7 +9,6 @@ import json
 from pathlib import Path
 
 import numpy as np
-import pytest
 from reasoning_solutions import CORRECT as REASONING
 
 from teachraster import exercises as ex
@@ -22,17 +21,6 @@ from teachraster.exercises.quad_difference import (
 from teachraster.exercises.texture_filtering import bilinear_questions, trilinear_with
 
 NOTEBOOK = Path(__file__).parents[1] / "notebooks" / "exercises" / "07_texture_filtering.ipynb"
-
-
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
 
 
 def test_7_4s_pixels_lie_in_quads_the_floor_covers():

@@ -21,17 +21,6 @@ from teachraster.exercises import tries
 ROOT = Path(__file__).resolve().parents[1]
 
 
-@pytest.fixture
-def plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    yield plt
-    plt.close("all")
-
-
 def _first_try(name, fn):
     """The report of a student's first failing check of task ``name`` in a fresh kernel."""
     tries.forget_hints(name)
