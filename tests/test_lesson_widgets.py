@@ -557,7 +557,7 @@ def test_case_picker_zooms_to_each_case_and_shows_the_hub():
         outlines = [line for line in picker.axes[0].lines if line.get_marker() in ("None", "")]
         assert min(d.get_zorder() for d in dots) > max(o.get_zorder() for o in outlines)
         assert "□</span> a triangle's vertex" in picker.info.value
-        assert "whose pixels touch never alike" in picker.info.value
+        assert "whose pixels share a side never alike" in picker.info.value
         picker.case.value = "sliver_pair"
         r0, r1, c0, c1 = picker.view
         assert picker.owner.shape == (4, 64) and (c1 - c0) <= MAX_ASPECT * (r1 - r0)

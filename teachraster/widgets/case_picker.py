@@ -954,7 +954,7 @@ class CasePicker:
             # owner_colors() colours them and the lesson says (review r65, 07-2)
             left = (f"left, {len(owners)} triangles in {len(used)} colours ("
                     + "".join(swatch(c, "") for c in used)
-                    + "), two triangles whose pixels touch never alike: the outlines tell the "
+                    + "), two triangles whose pixels share a side never alike: the outlines tell the "
                     "others apart")  # fmt: skip
         n = self.naive_counts
         parts = [left]
