@@ -18,6 +18,7 @@ from __future__ import annotations
 import fcntl
 import functools
 import hashlib
+import html
 import importlib.util
 import json
 import os
@@ -216,6 +217,23 @@ def streams(nb) -> str:
         for out in cell.outputs
         if out.get("output_type") == "stream"
     )
+
+
+def printed_and_folded(nb) -> str:
+    """What :func:`streams` gives, then the lines folded under ``<details>`` (lesson 06's
+    ``study.bench.tables.folded``), unescaped: every line a cell prints, shown or one click
+    away."""
+    folded = []
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        for out in cell.outputs:
+            page = out.get("data", {}).get("text/html", "")
+            page = "".join(page) if isinstance(page, list) else page
+            if page.startswith("<details>") and "<pre>" in page:
+                body = page.split("<pre>", 1)[1].rsplit("</pre>", 1)[0]
+                folded.append(html.unescape(body) + "\n")
+    return streams(nb) + "".join(folded)
 
 
 def summary(run: NotebookRun) -> str:

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from notebook_runs import lesson
+from notebook_runs import lesson, printed_and_folded
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -583,7 +583,7 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     import json
     import re
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
@@ -595,7 +595,7 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
         "display(Markdown(CHECKS_TEXT))"
     )
     assert "The checkerboard below" not in md and "N = 16's only" not in md
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     # 06-1: the tie, printed and stated in the text (r228 M1: reverse-Z's float32 is on the
     # front now, the tie off it: the line under the chart compares the two)
     assert "['window unorm16', 'reversed float32']" in printed
@@ -743,10 +743,10 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     import json
     import re
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     ns = lesson("06_what_accuracy_costs")
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     fronts = {int(d): f.split(" -> ") for d, f in re.findall(
         r"divide = +(\d+): front (.*)\n", printed)}  # fmt: skip
     assert fronts == ns.front_at and sorted(fronts) == [1, 2, 8, 17, 128]
@@ -759,7 +759,7 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     assert "the front keeps its order at every price and loses only $N = 2$" in text
     assert "not the front" not in text
     # r378 S2: the lines' ends and the prices where N = 2 is back are printed, not retold
-    assert 'off it at $d = 1$ and $d = 2$ (the lines "divide = ...")' in text
+    assert 'off it at $d = 1$ and $d = 2$ (the folded lines "divide = ..." above)' in text
     assert "on it again at" not in text and "the slider stops either side" not in text
     # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
     assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
@@ -952,7 +952,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     snapped triangle, and the unshown "unreliable ties" claim is gone."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.study.operation_counts import edge_bits_needed
 
@@ -994,7 +994,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert "whole=True" in q_bits_text and "notes=bits_notes" in q_bits_text
     assert "choices" not in q_bits_text and set(ns.bits_notes) == {7, 16, 27, 2048}
     assert 16 - ns.range_bits_cut == ns.fits4  # the held explanation's arithmetic
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     assert "4 sub-pixel bits 2^11 = 2,048 px" in printed and "8 sub-pixel bits 2^7 = 128" in printed
     # and nothing visible after it (the summary aside) says E outgrows a 32-bit unit
     after = [c for c, k in zip(cells[asked_at("q_bits") :], kinds[asked_at("q_bits") :])
@@ -4298,7 +4298,7 @@ def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
     there; 06-12: q_price's placeholder line is a sentence; 06-15: §3 and §5 cut."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.study.bench.tables import TABLE_FONT_PX
     from teachraster.widgets.divide_cost import DivideCostExplorer
@@ -4316,7 +4316,7 @@ def test_06_review_r152_tables_reference_line_and_the_attribute_slider():
         assert sum(f"font-size:{TABLE_FONT_PX}px" in h and "<table" in h for h in shown) == 1
     assert [r["variant"] for r in ns.fill] == ["halfplane 256²", "span 256²", "halfplane 512²",
                                                "span 512²"]  # fmt: skip
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     assert "['window unorm16', 'reversed float32']" in printed  # r228 M1
     assert ns.reference["variant"] == "window float64" and ns.reference["error"] == 0
     assert "window float64 (the reference)" in " ".join(t.get_text() for t in ns.ax.texts)
@@ -5003,7 +5003,7 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
     FDIV at single precision as Quake set it, and the text says where each comes from."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.study import operation_counts as ops
     from teachraster.widgets.divide_cost import PRICES
@@ -5029,13 +5029,13 @@ def test_06_review_r228_one_gpu_price_pentium_weights_from_their_tables():
     for source in ("Agner Fog's measured tables", "`Sys_LowFPPrecision`", "`R_RenderView_`",
                    "*CUDA C++ Programming Guide*'s throughput table"):  # fmt: skip
         assert source in md, source
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     for line in ("FADD             3 cycles, the next can start after 1",
                  "FMUL             3 cycles, the next FMUL can start after 2",
                  "FDIV single     19 cycles, the next can start after 17",
                  "FDIV extended   39 cycles, the next can start after 37",
-                 "Maxwell (5.x, 2014)           128   32: the reciprocal at 1/4 of the rate",
-                 "Ada (8.9, 2022)               128   16: the reciprocal at 1/8 of the rate",
+                 "  1/4: Maxwell (2014), Pascal GP100 (2016), Pascal (2016),",
+                 "  1/8: Ampere GA10x (2020), Ada (2022), Hopper (2022)",
                  "Pentium (P5) x87: divide 17, multiply 2, addition 1",
                  "Pentium (P5) integer: divide 46, multiply 9, addition 1, 64-bit addition 2",
                  "GPU (Ampere GA10x, Ada, Hopper): divide 8, multiply 1, addition 1"):  # fmt: skip
@@ -5056,7 +5056,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     chart and the summary; S2: float32 draws fixed4's pixels at 1e6 px; S3, S4, FIG1."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.study import bench
 
@@ -5065,7 +5065,7 @@ def test_06_review_r228_screen_pixels_your_turn_reverse_z_and_float32_far_out():
     cells = ["".join(c["source"]) for c in nb["cells"]]
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
                            if raw["cell_type"] == "markdown").split())  # fmt: skip
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     # screen pixels: N = 16 misses by a few pixels at worst, a third of one on average
     n16 = ns.subdivided[16]
     assert 1 < n16["error_px"] < 10 and n16["mean_error_px"] < 0.5 and ns.affine["error_px"] > 256
@@ -5127,14 +5127,14 @@ def _06_r243():
     """Lesson 06's run, sources and printed lines, as the r243 tests read them."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
     kinds = [c["cell_type"] for c in nb["cells"]]
     md = " ".join(" ".join(c for c, k in zip(cells, kinds) if k == "markdown").split())
-    return ns, cells, md, streams(executed("06_what_accuracy_costs").notebook())
+    return ns, cells, md, printed_and_folded(executed("06_what_accuracy_costs").notebook())
 
 
 def test_06_review_r243_c1_one_statement_of_the_reciprocals_price():
@@ -5146,8 +5146,11 @@ def test_06_review_r243_c1_one_statement_of_the_reciprocals_price():
     # C1: the generations at each share, printed, and every statement of them alike
     assert ns.shares == {6: ["Kepler"], 8: ["Ampere GA10x", "Ada", "Hopper"],
                          4: ["Maxwell", "Pascal GP100", "Pascal", "Volta, Turing", "Ampere A100"]}  # fmt: skip
-    assert "  1/4: Maxwell, Pascal GP100, Pascal, Volta, Turing, Ampere A100" in printed
-    assert "  1/8: Ampere GA10x, Ada, Hopper" in printed
+    # r392 S1: printed once, grouped by share, each generation with its year
+    assert ("  1/4: Maxwell (2014), Pascal GP100 (2016), Pascal (2016),\n"
+            "       Volta, Turing (2017-18), Ampere A100 (2020)") in printed  # fmt: skip
+    assert "  1/8: Ampere GA10x (2020), Ada (2022), Hopper (2022)" in printed
+    assert "the reciprocal at 1/4 of the rate" not in printed
     assert "Maxwell to Turing" not in md and "On a current GPU a reciprocal" not in md
     for said in ("reciprocal at an eighth of it on GA10x, Ada and Hopper (a quarter from Maxwell "
                  "to the A100", "On GA10x, Ada and Hopper a reciprocal runs on a special-function "
@@ -6230,7 +6233,7 @@ def test_06_one_span_explorer_and_q_span():
     "hundredfold" the floor's pieces never reach."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.study.span_subdivision import SPAN_PIXELS, SPAN_TEXELS
     from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
@@ -6293,7 +6296,7 @@ def test_06_one_span_explorer_and_q_span():
     assert min(ns.cut_by, key=ns.cut_by.get) == max(
         ns.steepest, key=lambda n: ns.steepest[n]["rho"]
     )
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     if "halving N cut it" in printed:  # held in the browser until q_span is checked
         for r in ns.span_r:
             assert f"{ns.span_cut[r]:.2f} times" in printed
@@ -6303,7 +6306,7 @@ def test_06_review_r268_the_floors_cuts_and_steepest_pieces_printed():
     """r268 C1: the floor's worst pixel falls 3.70x from N = 16 to 8 and least (2.72x) from 32
     to 16: both printed under the law's chart, each beside the larger N's steepest piece
     (ρ, its length, its span's), and the held text quotes them."""
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     ns = lesson("06_what_accuracy_costs")
     assert list(ns.cut_by) == [4, 8, 16, 32]
@@ -6324,7 +6327,7 @@ def test_06_review_r268_the_floors_cuts_and_steepest_pieces_printed():
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     held = next("".join(c["source"]) for c in nb["cells"] if c.get("id") == "spancuts")
     assert _code(held).startswith("q_span.hold()") and "display(Markdown(FLOOR_CUTS_TEXT))" in held
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     if "halving N: the worst pixel's cut" in printed:  # held in the browser by q_span
         for n, cut in ns.cut_by.items():
             sp = ns.steepest[n]
@@ -6514,7 +6517,7 @@ def test_06_review_r283_fmul_rcp_blocked_fill_and_guides():
     those printed; FIG1 the slope guides start on the curves; S1 ρ for a piece; S2 "costs"."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.study import operation_counts as ops
 
@@ -6543,7 +6546,7 @@ def test_06_review_r283_fmul_rcp_blocked_fill_and_guides():
     assert [round(ns.fill_ratio[s], 1) for s in ("256²", "512²")] == [7.6, 8.9]
     assert "need 7.6 to 8.9 times the span loop's cycles" in md and "1.9 to 1.8 times" in md
     assert "several times fewer" not in md
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     assert "169,088 cycles, 1.9x the span loop's" in printed
     assert "527,440 cycles, 1.8x the span loop's" in printed
     # FIG1: each guide pair starts on its family's first point (worst and mean, first size)
@@ -6574,14 +6577,14 @@ def test_06_review_r290_depth_labels_blocked_vs_stepped_rounding_worst_row():
     worst pixel's cuts are not monotone in ρ; S1 "r near 1" in q_quake's explanation."""
     import json
 
-    from notebook_runs import executed, streams
+    from notebook_runs import executed
 
     from teachraster.widgets import Predict
 
     ns = lesson("06_what_accuracy_costs")
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     cells = ["".join(c["source"]) for c in nb["cells"]]
-    printed = streams(executed("06_what_accuracy_costs").notebook())
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
     # FIG1: labels outside the triangle (up for the top vertex), the outline through the dots
     depth = next(c for c in cells if "q_depth = PredictPoint(" in c)
     assert "xytext=(0, 12 if y < cell / 2 else -12)" in depth

@@ -80,6 +80,7 @@ from .groups import (
     floor_quad,
     greater_passes,
     jittered_mesh,
+    mesh_wrong_pixels,
     random_triangles,
     slanted_pairs,
 )
@@ -163,6 +164,7 @@ __all__ = [
     "greater_passes",
     "format_table",
     "jittered_mesh",
+    "mesh_wrong_pixels",
     "main",
     "pareto_figure",
     "FRONT_DEFINITION",

@@ -247,6 +247,42 @@ def jittered_mesh(size: int, cells: int = 4, seed: int = 3) -> np.ndarray:
     return triangulate_grid(g)
 
 
+def mesh_wrong_pixels(
+    size: int, offset: int, arithmetic: str, against: str | None = None
+) -> np.ndarray:
+    """Where the study's jittered mesh, placed ``offset`` px from the origin, is covered
+    differently in ``arithmetic`` (direct evaluation) than in ``against``.
+
+    Parameters
+    ----------
+    size : int
+        The mesh's window, ``size`` x ``size`` px (the study's ``sizes()["mesh"]``).
+    offset : int
+        Its distance from the origin in x and in y, in px (one of ``MESH_OFFSETS``).
+    arithmetic : str
+        One of :func:`teachraster.study.precision.coverage`'s arithmetics.
+    against : str or None
+        Another arithmetic, or ``None`` for the exact coverage on the 1/256 px grid (the
+        reference ``bench_edges`` counts the ``mesh_wrong_px_at_...`` columns against).
+
+    Returns
+    -------
+    (size, size) int
+        Per pixel, how many of the mesh's triangles decide its centre differently; the sum
+        is the study's count (against the exact reference, its ``mesh_wrong_px_at_...``).
+    """
+    size, offset = as_size("size", size), as_int("offset", offset)
+    out = np.zeros((size, size), dtype=np.int64)
+    for t in jittered_mesh(size) + float(offset):
+        got = precision.coverage(t, size, size, arithmetic, origin=(offset, offset))
+        if against is None:
+            ref = exact_coverage(t, size, size, 8, origin=(offset, offset))
+        else:
+            ref = precision.coverage(t, size, size, against, origin=(offset, offset))
+        out += got != ref
+    return out
+
+
 def _scale_label(offset: int) -> str:
     return "0" if offset == 0 else f"1e{round(math.log10(offset))}"
 

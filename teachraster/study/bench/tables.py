@@ -154,3 +154,20 @@ def table(rows: list[dict], group: str, extra: Iterable[tuple[str, Callable]] = 
     else:
         print("\n".join(table_lines(rows, group, extra, errors)))
     return rows
+
+
+def folded_html(summary: str, lines: Iterable[str]) -> str:
+    """Printed lines folded under a one-line summary: a ``<details>`` element, closed.
+
+    >>> folded_html("the fronts", ["a < b", "c"])
+    '<details><summary>the fronts</summary><pre>a &lt; b\\nc</pre></details>'
+    """
+    text = escape("\n".join(lines), quote=False)
+    return f"<details><summary>{escape(summary)}</summary><pre>{text}</pre></details>"
+
+
+def folded(summary: str, lines: Iterable[str]) -> None:
+    """Display :func:`folded_html`: lines the text does not quote, one click away."""
+    from IPython.display import HTML, display
+
+    display(HTML(folded_html(summary, lines)))
