@@ -5648,8 +5648,10 @@ def test_10_r247_items():
     facts = precision.wrong_regions(ns.big.xy, ns.narrow)
     assert facts == ns.wrap_facts == ns.regions
     assert facts.wrongly_out > 5 * facts.wrongly_in and facts.near < 0.05 * facts.wrong
-    assert ns.q_wrap_answer == ns.WRAP_CHOICES[2] and "answer=q_wrap_answer," in text[ask]
-    assert "mostly inside the triangle" in ns.q_wrap_answer
+    # r401 P1: a share to estimate (the stem had ruled out two of four places), within 15
+    share = 100 * facts.wrongly_out / facts.wrong
+    assert ns.q_wrap_answer == round(share) and "answer=q_wrap_answer," in text[ask]
+    assert "tolerance=15," in text[ask] and share - 15 > 50  # "most are inside" alone: not enough
     for cell, t in zip(cells[ask + 1 :], text[ask + 1 :]):
         if t.startswith("## "):
             break
@@ -5815,7 +5817,7 @@ def test_10_r255_s3_folded_question_sources_do_not_state_their_answers():
     hiz = next(t for t in code if "q_hiz = PredictPixels(" in t)
     assert "1 + 16 + 16 + 16" not in small and "# 48" not in small
     assert "Mostly inside" not in wrap and "rarer" not in wrap
-    assert 'explain=f"{q_wrap_answer[0].upper()}{q_wrap_answer[1:]}: ' in wrap
+    assert 'explain=f"{q_wrap_answer} %: ' in wrap
     assert "64 pixel centres the blue triangle covers" not in hiz and "# the answer" not in hiz
     assert "a tile the triangle covers has all its pixel centres" not in hiz
     held = next(t for t in code if t.startswith("q_hiz.hold()") and "**Why those tiles.**" in t)

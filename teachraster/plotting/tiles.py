@@ -903,7 +903,7 @@ def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
         said = f" = {values[i, j]:.0f}" if corners_only else ""  # its value, in its label
         result.labels.append(ax.text(col0 + j + 0.5, y, f"{which} {name}{said}: {test}",
                                      ha="left" if j < w / 2 else "right", color=color,
-                                     va="top" if below else "bottom", fontsize=fs(0.6),
+                                     va="top" if below else "bottom", fontsize=fs(0.8),
                                      fontweight="bold"))  # fmt: skip
     if steps is not None:
         right, down = steps
@@ -916,5 +916,5 @@ def plot_block_values(ax, values, row0: int, col0: int, *, name: str = "E12",
             result.arrows.append(arrow)
             tx, ty = (x1 + 0.2, y1) if rot == 0 else (x1, y1 + 0.2)
             result.labels.append(ax.text(tx, ty, text, ha="left", va="center", rotation=rot,
-                                         rotation_mode="anchor", fontsize=fs(0.6)))  # fmt: skip
+                                         rotation_mode="anchor", fontsize=fs(0.8)))  # fmt: skip
     return result
