@@ -259,6 +259,14 @@ def broken_frame_3_steps(b, row=13, col=52):
     return math.ceil(math.log2(1 + 1 / gap))
 
 
+def pixel_lod(xy, w, uv, size, row, col):
+    """7.1: λ from the coarse quad differences of u and of v, written without the package."""
+    uv = np.asarray(uv, float)
+    (dudx, dudy), (dvdx, dvdy) = (quad_derivatives(xy, w, uv[:, k], row, col) for k in (0, 1))
+    h, wt = size
+    return math.log2(max(math.hypot(dudx * wt, dvdx * h), math.hypot(dudy * wt, dvdy * h)))
+
+
 CORRECT = {
     "span": span,
     "perspective_weights": perspective_weights,
@@ -270,6 +278,7 @@ CORRECT = {
     "depth_setup": depth_setup,
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
+    "pixel_lod": pixel_lod,
     "hiz_rejects": hiz_rejects,
     **{f"broken_frame_{n}": diagnosis(n) for n in BROKEN_FRAMES},
     "broken_frame_3_steps": broken_frame_3_steps,
