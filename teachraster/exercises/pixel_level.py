@@ -277,8 +277,8 @@ def draw_lod_case(ax, case, got):
         for x in range(c0 - 2, c0 + 4):
             artists.append(ax.add_patch(Rectangle((x, y), 1, 1, edgecolor="#bbbbbb", lw=0.5,
                 facecolor="#d2d2d2" if inside(xy, x + 0.5, y + 0.5) else "white")))  # fmt: skip
-    if passed:
-        for dr, dc in ((0, 0), (0, 1), (1, 0)):
+    if passed:  # the quad's lanes; the lower-right one takes part in no coarse difference
+        for dr, dc in ((0, 0), (0, 1), (1, 0), (1, 1)):
             x, y = c0 + dc, r0 + dr
             covered = inside(xy, x + 0.5, y + 0.5)
             artists.append(ax.add_patch(Rectangle((x, y), 1, 1, fill=False, edgecolor="#2b7bba",
@@ -286,6 +286,7 @@ def draw_lod_case(ax, case, got):
             u, v = _uv_at(xy, w, uv, x + 0.5, y + 0.5)
             artists.append(ax.text(x + 0.5, y + 0.5, f"{u:.2f}\n{v:.2f}", ha="center",
                                    va="center", fontsize="xx-small",
+                                   color="#888888" if (dr, dc) == (1, 1) else "black",
                                    bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
@@ -297,8 +298,9 @@ def draw_lod_case(ax, case, got):
         text += f"; λ = {num(expected, got)}, yours {num(got, expected)}"
     if passed:
         ddx, ddy = quad_steps(xy, w, uv, row, col)
-        text += (f"\nblue: its quad's lanes, (u, v) at each (hatched: a helper); "
-                 f"ddx = {vec(ddx)}, ddy = {vec(ddy)}\n" + textwrap.fill(lod_questions(), 70))  # fmt: skip
+        said = (f"blue: its quad, (u, v) at each lane (hatched: a helper; grey: unused); "
+                f"ddx = {vec(ddx)}, ddy = {vec(ddy)}")  # fmt: skip
+        text += "\n" + textwrap.fill(said, 70) + "\n" + textwrap.fill(lod_questions(), 70)
     artists.append(ax.set_xlabel(text, fontsize="x-small"))
     return artists
 
@@ -310,4 +312,5 @@ PIXEL_LOD = Exercise(
     draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True,
     once=((RULE, ": as said for the first failing case"),),
     reference=("teachraster.exercises.quad_difference",),  # lanes: the renderer's quad values
+    example=2,  # pixel (27, 3): a quad with helpers outside the edge, 7.1's third question
 )  # fmt: skip

@@ -259,6 +259,12 @@ def explain_quad(args, expected, got) -> str:
 
 #: A named mistake's fix, as a question until two different answers have failed (r73 07-1).
 NAMED_HINTS = (
+    # r390 F8: the sign's fix came with the first, "a hint only", failure
+    (
+        "your ddy has the wrong sign: y grows downwards, so ddy is the lower lane minus the upper one",
+        "your ddy has the wrong sign: which way does y grow on screen, and so which lane comes "
+        "first in ddy?",
+    ),
     (
         ", so pixel (row, col) belongs to the quad starting at (row − row mod 2, col − col mod 2)",
         ": which quad holds pixel (row, col), and which is its upper-left pixel?",
