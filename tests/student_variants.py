@@ -5225,3 +5225,59 @@ DIFFERENT.update({
         "pixel_lod", _pixel_lod(dtype=np.float32)),
     "pixel lod from hand-written edge functions": ("pixel_lod", _rs.pixel_lod),
 })  # fmt: skip
+# == r390 F1 (fixex07w, exercise 7.4 pixel_sample: the sampler composed from 7.1 and 7.3) =======
+
+
+def _pixel_sample(*, at="centre", size="level 0", tri="trilinear", interp="perspective"):
+    """A student's pixel_sample from their own pixel_lod (7.1) and trilinear (7.3), one step
+    of the composition taken the typical wrong way."""
+    from exercise_solutions import bilinear as _bil
+    from exercise_solutions import trilinear as _tri
+
+    from teachraster import barycentric, perspective_weights
+
+    def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+        shape = {"level 0": np.shape(pyramid[0])[:2], "(W, H)": np.shape(pyramid[0])[1::-1],
+                 "last level": np.shape(pyramid[-1])[:2]}[size]  # fmt: skip
+        lod = _rs.pixel_lod(xy, w, uv, shape, row, col)
+        r, c = (row - row % 2, col - col % 2) if at == "quad" else (row, col)
+        half = 0.0 if at == "corner" else 0.5
+        lam = barycentric(xy, [[c + half, r + half]])
+        mu = lam if interp == "affine" else perspective_weights(lam, w, extrapolate=True)
+        p = mu[0] @ np.asarray(uv, float)
+        if tri == "nearest":
+            level = int(np.clip(round(lod), 0, len(pyramid) - 1))
+            return _bil(pyramid[level], p, wrap)
+        if tri == "level 0":
+            return _bil(pyramid[0], p, wrap)
+        return _tri(pyramid, p, lod, wrap)
+
+    return pixel_sample
+
+
+#: label: (fn, words in the first failure, kind of the first failure).
+R390_PIXEL_SAMPLE = {
+    "pixel sample at the quad's (u, v)": (
+        _pixel_sample(at="quad"), "each pixel is shaded at its own (u, v)", "the quad's (u, v)"),
+    "pixel sample at the pixel's corner": (
+        _pixel_sample(at="corner"), "at the pixel's corner", "(u, v) at the corner"),
+    "pixel sample with affine (u, v)": (
+        _pixel_sample(interp="affine"), "interpolated affinely", "affine (u, v)"),
+    "pixel sample with the size as (W, H)": (
+        _pixel_sample(size="(W, H)"), "reads the texture's size as (W, H)", "size read as (W, H)"),
+    "pixel sample with the last level's size": (
+        _pixel_sample(size="last level"), "texels of the last, 1 × 1 level",
+        "the last level's size"),
+    "pixel sample from the nearest level": (
+        _pixel_sample(tri="nearest"), "the nearest level alone", "nearest level"),
+    "pixel sample from level 0 only": (
+        _pixel_sample(tri="level 0"), "that is level 0 alone", "level 0 only"),
+}  # fmt: skip
+WRONG.update({label: ("pixel_sample", fn, words)
+              for label, (fn, words, _) in R390_PIXEL_SAMPLE.items()})  # fmt: skip
+KINDS.update({label: kind for label, (_, _, kind) in R390_PIXEL_SAMPLE.items()})
+DIFFERENT.update({
+    "pixel sample from the package's barycentric and perspective_weights": (
+        "pixel_sample", _pixel_sample()),
+    "pixel sample from hand-written weights": ("pixel_sample", _rs.pixel_sample),
+})  # fmt: skip
