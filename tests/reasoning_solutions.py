@@ -259,6 +259,27 @@ def broken_frame_3_steps(b, row=13, col=52):
     return math.ceil(math.log2(1 + 1 / gap))
 
 
+def pixel_lod(xy, w, uv, size, row, col):
+    """7.1: λ from the coarse quad differences of u and of v, written without the package."""
+    uv = np.asarray(uv, float)
+    (dudx, dudy), (dvdx, dvdy) = (quad_derivatives(xy, w, uv[:, k], row, col) for k in (0, 1))
+    h, wt = size
+    return math.log2(max(math.hypot(dudx * wt, dvdx * h), math.hypot(dudy * wt, dvdy * h)))
+
+
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    """7.4: the sampler at a pixel from 7.1's pixel_lod and 7.3's trilinear (exercise_solutions')."""
+    xy, w, uv = (np.asarray(a, float) for a in (xy, w, uv))
+    lod = pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)
+    x, y = col + 0.5, row + 0.5
+    (x1, y1), (x2, y2), (x3, y3) = xy
+    lam = np.array([(x2 - x) * (y3 - y) - (y2 - y) * (x3 - x),
+                    (x3 - x) * (y1 - y) - (y3 - y) * (x1 - x),
+                    (x1 - x) * (y2 - y) - (y1 - y) * (x2 - x)])  # fmt: skip
+    mu = lam / w
+    return trilinear(pyramid, mu @ uv / mu.sum(), lod, wrap)
+
+
 CORRECT = {
     "span": span,
     "perspective_weights": perspective_weights,
@@ -270,6 +291,8 @@ CORRECT = {
     "depth_setup": depth_setup,
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
+    "pixel_lod": pixel_lod,
+    "pixel_sample": pixel_sample,
     "hiz_rejects": hiz_rejects,
     **{f"broken_frame_{n}": diagnosis(n) for n in BROKEN_FRAMES},
     "broken_frame_3_steps": broken_frame_3_steps,

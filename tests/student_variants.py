@@ -5153,3 +5153,131 @@ R395 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R395.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R395.items()})
+# == r390 F1 (fixex07w, exercise 7.1 pixel_lod: the quad differences, ρ and λ composed) =========
+
+
+def _pixel_lod(*, quad="even", helpers="extrapolate", interp="perspective", scale="texels",
+               length="euclid", combine="max", finish="log2", dtype=float):  # fmt: skip
+    """A student's pixel_lod from the package's barycentric and perspective_weights, with one
+    step of the composition written the typical wrong way."""
+    from teachraster import barycentric, perspective_weights
+
+    def pixel_lod(xy, w, uv, size, row, col):
+        uv = np.asarray(uv, dtype=dtype)
+
+        def at(x, y):
+            lam = barycentric(xy, [[x, y]])
+            if interp == "affine":
+                return lam[0] @ uv
+            mu = perspective_weights(lam, w, extrapolate=helpers == "extrapolate")[0]
+            return mu @ uv
+
+        if quad == "pixel":
+            r0, c0 = row, col
+        else:
+            r0, c0 = row - row % 2, col - col % 2
+        ul = at(c0 + 0.5, r0 + 0.5)
+        if quad == "centred":
+            x, y = col + 0.5, row + 0.5
+            ddx, ddy = (at(x + 1, y) - at(x - 1, y)) / 2, (at(x, y + 1) - at(x, y - 1)) / 2
+        else:
+            ddx, ddy = at(c0 + 1.5, r0 + 0.5) - ul, at(c0 + 0.5, r0 + 1.5) - ul
+        h, wt = size
+        s = {"texels": (wt, h), "none": (1, 1), "swapped": (h, wt)}[scale]
+        ax, ay = ddx * s, ddy * s
+        if length == "u only":
+            ax, ay = ax[:1], ay[:1]
+        lx, ly = np.sqrt(ax @ ax), np.sqrt(ay @ ay)
+        rho = {"max": max(lx, ly), "x": lx, "sum": lx + ly}[combine]
+        lam = float(np.log2(rho))
+        return max(lam, 0.0) if finish == "clamp" else lam
+
+    return pixel_lod
+
+
+#: label: (fn, words in the first failure, kind of the first failure).
+R390_PIXEL_LOD = {
+    "pixel lod differenced at the pixel, not its quad": (
+        _pixel_lod(quad="pixel"), "as if its quad began there", "the pixel's own quad"),
+    "pixel lod with helpers clamped": (
+        _pixel_lod(helpers="clamp"), "stops at the triangle", "helpers clamped"),
+    "pixel lod with ρ from u only": (_pixel_lod(length="u only"), "your ρ follows u alone",
+                                     "u alone"),
+    "pixel lod not scaled by W and H": (
+        _pixel_lod(scale="none"), "your steps are in texture units", "no texels"),
+    "pixel lod with W and H swapped": (
+        _pixel_lod(scale="swapped"), "you scaled u by H = ", "W and H swapped"),
+    "pixel lod, log2 of ddx alone (no max)": (
+        _pixel_lod(combine="x"), "your λ follows the step right alone", "ddx alone"),
+    "pixel lod, log2 of the summed steps": (
+        _pixel_lod(combine="sum"), "your ρ adds the two steps' lengths", "sum of the steps"),
+    "pixel lod with the level clamped at 0": (
+        _pixel_lod(finish="clamp"), "your λ is clamped at 0", "clamped at 0"),
+    "pixel lod interpolated affinely": (
+        _pixel_lod(interp="affine"), "you interpolated (u, v) affinely", "affine"),
+    "pixel lod from a centred difference": (
+        _pixel_lod(quad="centred"), "you took a centred difference", "centred"),
+}  # fmt: skip
+WRONG.update({label: ("pixel_lod", fn, words) for label, (fn, words, _) in R390_PIXEL_LOD.items()})
+KINDS.update({label: kind for label, (_, _, kind) in R390_PIXEL_LOD.items()})
+DIFFERENT.update({
+    "pixel lod from the package's barycentric, in float32": (
+        "pixel_lod", _pixel_lod(dtype=np.float32)),
+    "pixel lod from hand-written edge functions": ("pixel_lod", _rs.pixel_lod),
+})  # fmt: skip
+# == r390 F1 (fixex07w, exercise 7.4 pixel_sample: the sampler composed from 7.1 and 7.3) =======
+
+
+def _pixel_sample(*, at="centre", size="level 0", tri="trilinear", interp="perspective"):
+    """A student's pixel_sample from their own pixel_lod (7.1) and trilinear (7.3), one step
+    of the composition taken the typical wrong way."""
+    from exercise_solutions import bilinear as _bil
+    from exercise_solutions import trilinear as _tri
+
+    from teachraster import barycentric, perspective_weights
+
+    def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+        shape = {"level 0": np.shape(pyramid[0])[:2], "(W, H)": np.shape(pyramid[0])[1::-1],
+                 "last level": np.shape(pyramid[-1])[:2]}[size]  # fmt: skip
+        lod = _rs.pixel_lod(xy, w, uv, shape, row, col)
+        r, c = (row - row % 2, col - col % 2) if at == "quad" else (row, col)
+        half = 0.0 if at == "corner" else 0.5
+        lam = barycentric(xy, [[c + half, r + half]])
+        mu = lam if interp == "affine" else perspective_weights(lam, w, extrapolate=True)
+        p = mu[0] @ np.asarray(uv, float)
+        if tri == "nearest":
+            level = int(np.clip(round(lod), 0, len(pyramid) - 1))
+            return _bil(pyramid[level], p, wrap)
+        if tri == "level 0":
+            return _bil(pyramid[0], p, wrap)
+        return _tri(pyramid, p, lod, wrap)
+
+    return pixel_sample
+
+
+#: label: (fn, words in the first failure, kind of the first failure).
+R390_PIXEL_SAMPLE = {
+    "pixel sample at the quad's (u, v)": (
+        _pixel_sample(at="quad"), "each pixel is shaded at its own (u, v)", "the quad's (u, v)"),
+    "pixel sample at the pixel's corner": (
+        _pixel_sample(at="corner"), "at the pixel's corner", "(u, v) at the corner"),
+    "pixel sample with affine (u, v)": (
+        _pixel_sample(interp="affine"), "interpolated affinely", "affine (u, v)"),
+    "pixel sample with the size as (W, H)": (
+        _pixel_sample(size="(W, H)"), "reads the texture's size as (W, H)", "size read as (W, H)"),
+    "pixel sample with the last level's size": (
+        _pixel_sample(size="last level"), "texels of the last, 1 × 1 level",
+        "the last level's size"),
+    "pixel sample from the nearest level": (
+        _pixel_sample(tri="nearest"), "the nearest level alone", "nearest level"),
+    "pixel sample from level 0 only": (
+        _pixel_sample(tri="level 0"), "that is level 0 alone", "level 0 only"),
+}  # fmt: skip
+WRONG.update({label: ("pixel_sample", fn, words)
+              for label, (fn, words, _) in R390_PIXEL_SAMPLE.items()})  # fmt: skip
+KINDS.update({label: kind for label, (_, _, kind) in R390_PIXEL_SAMPLE.items()})
+DIFFERENT.update({
+    "pixel sample from the package's barycentric and perspective_weights": (
+        "pixel_sample", _pixel_sample()),
+    "pixel sample from hand-written weights": ("pixel_sample", _rs.pixel_sample),
+})  # fmt: skip

@@ -24,19 +24,21 @@ NOTEBOOK = Path(__file__).parents[1] / "notebooks" / "exercises" / "07_texture_f
 
 
 def test_7_4s_pixels_lie_in_quads_the_floor_covers():
-    """N1: (30, 16)'s quad lay wholly below the floor's bottom edge (never shaded)."""
-    from teachraster.exercises.quad_difference import _inside
+    """N1: (30, 16)'s quad lay wholly below the floor's bottom edge (never shaded); 7.4's task
+    is now a step of 7.1 (F1), whose pixels are covered too."""
+    from teachraster.exercises.pixel_level import QUESTION_PIXELS as LOD_PIXELS
+    from teachraster.exercises.quad_difference import inside
 
     xy = FLOOR[0]
-    for r, c in QUESTION_PIXELS:
+    for r, c in QUESTION_PIXELS + LOD_PIXELS:
         r0, c0 = r - r % 2, c - c % 2
-        assert any(_inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1))
-        assert _inside(xy, c + 0.5, r + 0.5), (r, c)
+        assert any(inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1))
+        assert inside(xy, c + 0.5, r + 0.5), (r, c)
     cells = json.loads(NOTEBOOK.read_text())["cells"]
     task = next("".join(c["source"]) for c in cells
-                if c["metadata"].get("nbgrader", {}).get("grade_id") == "quad_derivatives_task")  # fmt: skip
-    (_, _), (b, c), (d, e) = QUESTION_PIXELS
-    assert f"pixels ({b}, {c}) and ({d}, {e})?" in task.replace("\n", " ")
+                if c["metadata"].get("nbgrader", {}).get("grade_id") == "pixel_lod_task")  # fmt: skip
+    for r, c in LOD_PIXELS:
+        assert f"({r}, {c})" in task.replace("\n", " ")
     assert "(30, 16)" not in task
 
 

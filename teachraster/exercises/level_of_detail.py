@@ -285,6 +285,11 @@ HINTS = (
      r"that is \1: which log counts the halvings of the texel size?"),
     ("twice λ: take the square root first (or halve the log)",
      "twice λ: is an axis' length its square?"),
+    # r390 F8: the Euclidean length itself came with the first, "a hint only", failure
+    (re.compile(r"each axis' length is Euclidean, √\(a² \+ b²\), not (its largest component|"
+                r"\|a\| \+ \|b\|)"),
+     r"each axis' length is a straight line's, not \1: how long is a step of 3 texels "
+     "across and 4 down?"),
 )  # fmt: skip
 
 

@@ -88,7 +88,7 @@ def same_pair(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
     return all_close(np.asarray(got) / size, np.asarray(expected) / size, 3e-5)
 
 
-def _at(xy, w, f, x, y, clamp=False, affine=False, times_w=False) -> float:
+def value_at(xy, w, f, x, y, clamp=False, affine=False, times_w=False) -> float:
     """f at point (x, y): perspective-correct (or affine, or weighted λ·w for ``times_w``),
     extrapolated unless ``clamp``."""
     (x1, y1), (x2, y2), (x3, y3) = xy
@@ -109,22 +109,22 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
     r0, c0 = row - row % 2, col - col % 2
 
     def pair(r, c, centre=0.5, **kw):
-        a = _at(xy, w, f, c + centre, r + centre, **kw)
-        return np.array([_at(xy, w, f, c + 1 + centre, r + centre, **kw) - a,
-                         _at(xy, w, f, c + centre, r + 1 + centre, **kw) - a])  # fmt: skip
+        a = value_at(xy, w, f, c + centre, r + centre, **kw)
+        return np.array([value_at(xy, w, f, c + 1 + centre, r + centre, **kw) - a,
+                         value_at(xy, w, f, c + centre, r + 1 + centre, **kw) - a])  # fmt: skip
 
     right = pair(r0, c0)
-    fine_x = _at(xy, w, f, c0 + 1.5, row + 0.5) - _at(xy, w, f, c0 + 0.5, row + 0.5)
-    fine_y = _at(xy, w, f, col + 0.5, r0 + 1.5) - _at(xy, w, f, col + 0.5, r0 + 0.5)
+    fine_x = value_at(xy, w, f, c0 + 1.5, row + 0.5) - value_at(xy, w, f, c0 + 0.5, row + 0.5)
+    fine_y = value_at(xy, w, f, col + 0.5, r0 + 1.5) - value_at(xy, w, f, col + 0.5, r0 + 0.5)
     at = (col + 0.5, row + 0.5)
     eps = 1e-5  # a centred difference this small is the exact derivative to ~1e-10
-    exact = [_at(xy, w, f, at[0] + eps, at[1]) - _at(xy, w, f, at[0] - eps, at[1]),
-             _at(xy, w, f, at[0], at[1] + eps) - _at(xy, w, f, at[0], at[1] - eps)]  # fmt: skip
-    lr = _at(xy, w, f, c0 + 1.5, r0 + 1.5)
-    own = _at(xy, w, f, col + 0.5, row + 0.5)
+    exact = [value_at(xy, w, f, at[0] + eps, at[1]) - value_at(xy, w, f, at[0] - eps, at[1]),
+             value_at(xy, w, f, at[0], at[1] + eps) - value_at(xy, w, f, at[0], at[1] - eps)]  # fmt: skip
+    lr = value_at(xy, w, f, c0 + 1.5, r0 + 1.5)
+    own = value_at(xy, w, f, col + 0.5, row + 0.5)
     # r301: each pixel's quad partner (the other lane of its row, of its column) minus it
-    partner = np.array([_at(xy, w, f, (col ^ 1) + 0.5, row + 0.5) - own,
-                        _at(xy, w, f, col + 0.5, (row ^ 1) + 0.5) - own])  # fmt: skip
+    partner = np.array([value_at(xy, w, f, (col ^ 1) + 0.5, row + 0.5) - own,
+                        value_at(xy, w, f, col + 0.5, (row ^ 1) + 0.5) - own])  # fmt: skip
     return {
         "unaligned": pair(row, col),
         # r375 F9: one axis aligned to the quads, the other not, was told only the rule
@@ -132,7 +132,10 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         "row unaligned": pair(row, c0),
         # r286 M3: the slips a reader found told only the rule
         "lower right": np.array(
-            [lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]
+            [
+                lr - value_at(xy, w, f, c0 + 0.5, r0 + 1.5),
+                lr - value_at(xy, w, f, c0 + 1.5, r0 + 0.5),
+            ]
         ),  # fmt: skip
         "exact": np.array(exact) / (2 * eps),
         "odd quads": pair(row - (row + 1) % 2, col - (col + 1) % 2),
@@ -151,21 +154,21 @@ def _variants(xy, w, f, row, col) -> dict[str, np.ndarray]:
         # the lanes' points as (y, x): each difference then runs along the other axis too
         "points (y, x)": pair(c0, r0)[::-1],
         # r301: one difference along the quad's other row or column was told only the rule
-        "lower row": np.array([lr - _at(xy, w, f, c0 + 0.5, r0 + 1.5), right[1]]),
-        "right column": np.array([right[0], lr - _at(xy, w, f, c0 + 1.5, r0 + 0.5)]),
+        "lower row": np.array([lr - value_at(xy, w, f, c0 + 0.5, r0 + 1.5), right[1]]),
+        "right column": np.array([right[0], lr - value_at(xy, w, f, c0 + 1.5, r0 + 0.5)]),
         "partner minus own": partner,
         # r390 N3: (f(c0 + 2) − f(c0))/2, across the quad into the next, was told the method
         "two steps halved": np.array(
             [
-                _at(xy, w, f, c0 + 2.5, r0 + 0.5) - _at(xy, w, f, c0 + 0.5, r0 + 0.5),
-                _at(xy, w, f, c0 + 0.5, r0 + 2.5) - _at(xy, w, f, c0 + 0.5, r0 + 0.5),
+                value_at(xy, w, f, c0 + 2.5, r0 + 0.5) - value_at(xy, w, f, c0 + 0.5, r0 + 0.5),
+                value_at(xy, w, f, c0 + 0.5, r0 + 2.5) - value_at(xy, w, f, c0 + 0.5, r0 + 0.5),
             ]
         )
         / 2,  # fmt: skip
         "centred": np.array(
             [
-                _at(xy, w, f, col + 1.5, row + 0.5) - _at(xy, w, f, col - 0.5, row + 0.5),
-                _at(xy, w, f, col + 0.5, row + 1.5) - _at(xy, w, f, col + 0.5, row - 0.5),
+                value_at(xy, w, f, col + 1.5, row + 0.5) - value_at(xy, w, f, col - 0.5, row + 0.5),
+                value_at(xy, w, f, col + 0.5, row + 1.5) - value_at(xy, w, f, col + 0.5, row - 0.5),
             ]
         )
         / 2,  # fmt: skip
@@ -256,6 +259,12 @@ def explain_quad(args, expected, got) -> str:
 
 #: A named mistake's fix, as a question until two different answers have failed (r73 07-1).
 NAMED_HINTS = (
+    # r390 F8: the sign's fix came with the first, "a hint only", failure
+    (
+        "your ddy has the wrong sign: y grows downwards, so ddy is the lower lane minus the upper one",
+        "your ddy has the wrong sign: which way does y grow on screen, and so which lane comes "
+        "first in ddy?",
+    ),
     (
         ", so pixel (row, col) belongs to the quad starting at (row − row mod 2, col − col mod 2)",
         ": which quad holds pixel (row, col), and which is its upper-left pixel?",
@@ -304,17 +313,17 @@ def draw_quad(ax, case, got):
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
     for y in range(r0 - 2, r0 + 4):
         for x in range(c0 - 2, c0 + 4):
-            inside = _inside(xy, x + 0.5, y + 0.5)
-            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#d2d2d2" if inside
+            covered = inside(xy, x + 0.5, y + 0.5)
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#d2d2d2" if covered
                                                   else "white", edgecolor="#bbbbbb", lw=0.5)))  # fmt: skip
     if method:
         q = lanes(xy, w, f, r0, c0)
         for k, (dr, dc) in enumerate(((0, 0), (0, 1), (1, 0), (1, 1))):
             x, y = c0 + dc, r0 + dr
-            inside = _inside(xy, x + 0.5, y + 0.5)
-            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside
+            covered = inside(xy, x + 0.5, y + 0.5)
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if covered
                                                   else "white", edgecolor="#2b7bba", lw=1.5,
-                                                  hatch=None if inside else "//")))  # fmt: skip
+                                                  hatch=None if covered else "//")))  # fmt: skip
             # staggered up and down, boxed: neighbours' labels ran together (r49)
             artists.append(ax.text(x + 0.5, y + (0.3 if dc == 0 else 0.7), f"{q[k]:.2g}",
                                    ha="center", va="center", fontsize="x-small", color="black",
@@ -377,7 +386,7 @@ def quad_questions(pixels=QUESTION_PIXELS) -> str:
 def _nearest_point(xy, x, y) -> tuple[float, float]:
     """The triangle's point nearest (x, y): (x, y) itself inside, else the nearest point of
     its edges."""
-    if _inside(xy, x, y):
+    if inside(xy, x, y):
         return x, y
     best, p = None, np.array([x, y], dtype=float)
     for k in range(3):
@@ -396,11 +405,11 @@ def helper_quad(xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]):
     size = int(np.ceil(np.max(xy))) + 2
     for r0 in range(0, size, 2):
         for c0 in range(0, size, 2):
-            inside = [_inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)]
-            if inside == [True, False, True, False]:
-                left = _at(xy, w, f, c0 + 0.5, r0 + 0.5)
-                right = _at(xy, w, f, c0 + 1.5, r0 + 0.5)
-                near = _at(xy, w, f, *_nearest_point(xy, c0 + 1.5, r0 + 0.5))
+            covered = [inside(xy, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)]
+            if covered == [True, False, True, False]:
+                left = value_at(xy, w, f, c0 + 0.5, r0 + 0.5)
+                right = value_at(xy, w, f, c0 + 1.5, r0 + 0.5)
+                near = value_at(xy, w, f, *_nearest_point(xy, c0 + 1.5, r0 + 0.5))
                 return r0, c0, left, right, near
     return None
 
@@ -438,16 +447,16 @@ def draw_helper_quad(ax, xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> list:
     for dr in (0, 1):
         for dc in (0, 1):
             x, y = c0 + dc, r0 + dr
-            inside = _inside(xy, x + 0.5, y + 0.5)
-            inset.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if inside else "white",
+            covered = inside(xy, x + 0.5, y + 0.5)
+            inset.add_patch(Rectangle((x, y), 1, 1, facecolor="#c8c8c8" if covered else "white",
                                       edgecolor="#2b7bba", lw=1.2,
-                                      hatch=None if inside else "//"))  # fmt: skip
-            inset.text(x + 0.5, y + 0.5, f"{_at(xy, w, f, x + 0.5, y + 0.5):.3f}", ha="center",
+                                      hatch=None if covered else "//"))  # fmt: skip
+            inset.text(x + 0.5, y + 0.5, f"{value_at(xy, w, f, x + 0.5, y + 0.5):.3f}", ha="center",
                        va="center", fontsize="xx-small",
                        bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.5})  # fmt: skip
     nx, ny = _nearest_point(xy, c0 + 1.5, r0 + 0.5)
     inset.plot([nx], [ny], "x", color="#d62728", markersize=5)
-    inset.set_title(f"helper quad ({r0}, {c0}); × nearest: {_at(xy, w, f, nx, ny):.3f}",
+    inset.set_title(f"helper quad ({r0}, {c0}); × nearest: {value_at(xy, w, f, nx, ny):.3f}",
                     fontsize="xx-small", color="#d62728", loc="left")  # fmt: skip
     inset.set_xlim(c0 - 0.2, c0 + 2.2)
     inset.set_ylim(r0 + 2.2, r0 - 0.2)
@@ -457,7 +466,8 @@ def draw_helper_quad(ax, xy=FLOOR[0], w=FLOOR[1], f=FLOOR[2]) -> list:
     return [inset]
 
 
-def _inside(xy, x, y) -> bool:
+def inside(xy, x, y) -> bool:
+    """Is point (x, y) inside triangle ``xy`` or on its edges (either winding)?"""
     e = [(xy[(k + 1) % 3, 0] - xy[k, 0]) * (y - xy[k, 1])
          - (xy[(k + 1) % 3, 1] - xy[k, 1]) * (x - xy[k, 0]) for k in range(3)]  # fmt: skip
     return all(v >= 0 for v in e) or all(v <= 0 for v in e)

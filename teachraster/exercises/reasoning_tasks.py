@@ -14,7 +14,11 @@ typical mistakes), defined in its own module:
   ``depth_setup`` (05b, :mod:`.depth_setup`): unorm24 or float32 reverse-Z for a scene, and
   its near plane, from the student's own ``safe_near`` and ``reverse_z_gap``;
 - ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
-- ``quad_derivatives`` (09, :mod:`.quad_difference`), ``hiz_rejects`` (10, :mod:`.hiz_tile`),
+- ``quad_derivatives`` (09, :mod:`.quad_difference`; still checked, for notebooks of earlier
+  versions), ``pixel_lod`` (09, :mod:`.pixel_level`: the quad differences, ρ and λ composed, in
+  place of ``mip_level`` and ``quad_derivatives``), ``pixel_sample`` (09, :mod:`.pixel_sampler`:
+  the whole sampler at a pixel, from the student's own ``pixel_lod`` and ``trilinear``),
+  ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
 - ``broken_frame_1`` … ``broken_frame_9`` (11, :mod:`.broken_frames`), and
   ``broken_frame_3_steps`` (11 with 05b, :mod:`.broken_frame_steps`): the depth bits frame 3 needs.
@@ -34,6 +38,8 @@ from . import hard_case_fill as hf
 from . import hiz_tile as hz
 from . import near_plane as npl
 from . import perspective_weighting as pw
+from . import pixel_level as pl
+from . import pixel_sampler as ps
 from . import quad_difference as qd
 from . import reverse_z as rz
 from . import spans
@@ -52,6 +58,8 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "depth_setup": lambda: ds.DEPTH_SETUP,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
+    "pixel_lod": lambda: pl.PIXEL_LOD,
+    "pixel_sample": lambda: ps.PIXEL_SAMPLE,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,
     **bf.EXERCISES,
     "broken_frame_3_steps": lambda: bfs.BROKEN_FRAME_3_STEPS,

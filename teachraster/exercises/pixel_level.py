@@ -1,0 +1,316 @@
+"""Exercise ``pixel_lod(xy, w, uv, size, row, col)`` (lesson 09): the λ a GPU uses at a pixel.
+
+Lesson 09's steps composed (r390 F1: 7.1's λ and 7.4's quad differences each copied one
+printed formula): the pixel's 2×2 quad (aligned to even rows and columns), the triangle's
+perspective-correct (u, v) at its lanes (helper lanes extrapolated, never clamped), the coarse
+differences ddx = upper right − upper left and ddy = lower left − upper left, both scaled to
+texels of level 0 (u by W, v by H), ρ the longer of the two steps' Euclidean lengths and
+λ = log2 ρ, unclamped. The task prints none of these as one formula.
+
+Expected answers: the renderer's own quad lanes (:func:`.quad_difference.lanes`) and
+:func:`teachraster.mip_level`; its typical mistakes are the quad's (the pixel's own quad,
+odd quads, helpers clamped, affine values, fine or centred differences) and the level's
+(no scaling to texels, W and H swapped, u alone, one step alone, the axes' mean, λ clamped
+at 0, rounded).
+"""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+import numpy as np
+
+from ..pipeline.texture_filters import mip_level
+from ..pipeline.texturing.quad_derivatives import lane_values
+from .answers import as_number
+from .cases import SEED, fixed_and_drawn
+from .exercise import Exercise, PackageAnswer, variant_mistakes
+from .level_of_detail import level_with
+from .quad_difference import FLOOR, inside, lanes, value_at
+from .scalars import num, vec
+from .tolerance import close
+
+#: The floor of 7.4 with a texture tiled over it: u across, v into the distance.
+FLOOR_UV = np.array([[0.0, 0.0], [4.0, 0.0], [2.0, 8.0]])
+
+
+def quad_steps(xy, w, uv, row: int, col: int) -> tuple[np.ndarray, np.ndarray]:
+    """(ddx, ddy) of (u, v) at pixel (row, col): the renderer's coarse quad differences."""
+    r0, c0 = row - row % 2, col - col % 2
+    q = np.stack([lanes(xy, w, np.asarray(uv, float)[:, k], r0, c0) for k in (0, 1)], axis=1)
+    return q[1] - q[0], q[2] - q[0]
+
+
+def expected_lod(xy, w, uv, size, row: int, col: int) -> float:
+    ddx, ddy = quad_steps(xy, w, uv, row, col)
+    return float(mip_level(ddx, ddy, size))
+
+
+def _lod_cases(rng, word):
+    """The floor's pixels (both steps deciding, helpers outside its edges, odd and even lanes)
+    on square and non-square textures, magnified too; seeded random triangles."""
+    xy, w, _ = FLOOR
+    pixels = [(28, 14, (64, 64), 1.0, "inside, the quad's upper-left lane"),
+              (29, 15, (64, 64), 1.0, "inside, the quad's lower-right lane"),
+              (27, 3, (64, 64), 1.0, "next to the left edge: helpers outside"),
+              (5, 14, (64, 64), 1.0, "at the far tip: the step down decides"),
+              (20, 25, (64, 64), 1.0, "next to the right edge"),
+              (29, 29, (64, 64), 1.0, "the near right corner"),
+              (13, 11, (32, 128), 1.0, "a wide texture (H = 32, W = 128)"),
+              (23, 17, (128, 16), 1.0, "a tall texture (H = 128, W = 16)"),
+              (29, 15, (64, 64), 1 / 32, "magnified: (u, v) over 1/32 of the texture"),
+              (27, 3, (64, 64), 1 / 32, "magnified, next to the left edge")]  # fmt: skip
+    out = [(f"floor, pixel ({r}, {c}), size={size}: {why}", (xy, w, FLOOR_UV * s, size, r, c))
+           for r, c, size, s, why in pixels]  # fmt: skip
+    for k in range(10):
+        txy = np.round(rng.uniform(0, 24, (3, 2)) * 256) / 256
+        tw = np.exp(rng.uniform(0, np.log(10), 3))
+        tuv = np.round(rng.uniform(-2, 2, (3, 2)), 2)
+        size = (int(2 ** rng.integers(3, 9)), int(2 ** rng.integers(3, 9)))
+        r, c = (int(v) for v in txy.mean(axis=0)[::-1])
+        out.append((f"{word} {k + 1}, pixel ({r}, {c}), size={size}", (txy, tw, tuv, size, r, c)))
+    return [(label, args, expected_lod(*args)) for label, args in out]
+
+
+lod_cases = fixed_and_drawn(_lod_cases, SEED + 75)  # r49: some drawn per check
+
+
+def same_lod(got, expected, args) -> bool:
+    """Within 1e-5 (lanes in float32 pass: their differences lose some digits)."""
+    return close(got, expected, 1e-5)
+
+
+def explain_lod(args, expected, got) -> str:
+    """The two λ's only: the quad, its lanes and the steps are what 7.1 asks to work out."""
+    return f"λ = {num(expected, got)}; yours is {num(got, expected)}"
+
+
+def _uv_at(xy, w, uv, x, y, **kw) -> np.ndarray:
+    return np.array([value_at(xy, w, np.asarray(uv, float)[:, k], x, y, **kw) for k in (0, 1)])
+
+
+def _steps(xy, w, uv, r, c, centre=0.5, **kw):
+    """(ddx, ddy) from the quad whose upper-left pixel is (r, c), values taken as ``kw`` says."""
+    a = _uv_at(xy, w, uv, c + centre, r + centre, **kw)
+    return (_uv_at(xy, w, uv, c + 1 + centre, r + centre, **kw) - a,
+            _uv_at(xy, w, uv, c + centre, r + 1 + centre, **kw) - a)  # fmt: skip
+
+
+def _log2(rho) -> float | None:
+    return math.log2(rho) if rho > 0 else None
+
+
+def _variants(xy, w, uv, size, row, col) -> dict:
+    """Each typical mistake's λ on this case (None where it has none)."""
+    r0, c0 = row - row % 2, col - col % 2
+    h, wt = size
+    ddx, ddy = quad_steps(xy, w, uv, row, col)
+
+    def lod(steps, **kw):
+        return level_with(steps[0], steps[1], size, **kw)
+
+    at = (col + 0.5, row + 0.5)
+    fine = (_uv_at(xy, w, uv, c0 + 1.5, at[1]) - _uv_at(xy, w, uv, c0 + 0.5, at[1]),
+            _uv_at(xy, w, uv, at[0], r0 + 1.5) - _uv_at(xy, w, uv, at[0], r0 + 0.5))  # fmt: skip
+    centred = ((_uv_at(xy, w, uv, at[0] + 1, at[1]) - _uv_at(xy, w, uv, at[0] - 1, at[1])) / 2,
+               (_uv_at(xy, w, uv, at[0], at[1] + 1) - _uv_at(xy, w, uv, at[0], at[1] - 1)) / 2)  # fmt: skip
+    return {
+        "the pixel's own quad": lod(_steps(xy, w, uv, row, col)),
+        "odd quads": lod(_steps(xy, w, uv, row - (row + 1) % 2, col - (col + 1) % 2)),
+        "helpers clamped": lod(_steps(xy, w, uv, r0, c0, clamp=True)),
+        "affine": lod(_steps(xy, w, uv, r0, c0, affine=True)),
+        "corners": lod(_steps(xy, w, uv, r0, c0, centre=0.0)),
+        "fine": lod(fine),
+        "centred": lod(centred),
+        "no texels": lod((ddx, ddy), scale="units"),
+        "W and H swapped": lod((ddx, ddy), scale="swapped"),
+        "u alone": _log2(max(abs(ddx[0]), abs(ddy[0])) * wt),
+        "v alone": _log2(max(abs(ddx[1]), abs(ddy[1])) * h),
+        "ddx alone": lod((ddx, ddy), combine="x only"),
+        "ddy alone": lod((ddx, ddy), combine="y only"),
+        "mean of the steps": lod((ddx, ddy), combine="mean"),
+        "sum of the steps": lod((ddx, ddy), combine="sum"),
+        "largest component": lod((ddx, ddy), norm="max"),
+        "clamped at 0": lod((ddx, ddy), clamp=True),
+        "ρ itself": lod((ddx, ddy), log="none"),
+        "rounded": lod((ddx, ddy), log="round"),
+        "rounded down": lod((ddx, ddy), log="floor"),
+    }
+
+
+def _axes(args) -> tuple[float, float]:
+    xy, w, uv, (h, wt), row, col = args
+    ddx, ddy = quad_steps(xy, w, uv, row, col)
+    return float(np.hypot(ddx[0] * wt, ddx[1] * h)), float(np.hypot(ddy[0] * wt, ddy[1] * h))
+
+
+def _one_step(which: str):
+    def words(args, expected, got) -> str:
+        lx, ly = _axes(args)
+        other, mine = ("down (ddy)", num(ly)) if which == "ddx" else ("right (ddx)", num(lx))
+        return (f"your λ follows the step {'right' if which == 'ddx' else 'down'} alone; here "
+                f"the step {other} is {mine} texels long: which of the two steps must λ "
+                "follow so that neither skips texels?")  # fmt: skip
+
+    return words
+
+
+def _own_quad(args, expected, got) -> str:
+    row, col = args[4], args[5]
+    return (f"you differenced from pixel ({row}, {col}) itself, as if its quad began there: "
+            "which 2×2 quad of lesson 09 §2 holds this pixel, and which lanes of it does a "
+            "coarse difference use?")  # fmt: skip
+
+
+def _clamped(args, expected, got) -> str:
+    smaller = "smaller" if got < expected else "larger"
+    return ("your (u, v) at a helper lane (a quad pixel outside the triangle) stops at the "
+            f"triangle, so the step across the edge comes out wrong (λ {smaller}): what does "
+            "the triangle's interpolation give past its edge?")  # fmt: skip
+
+
+MISTAKES = {
+    "the pixel's own quad": _own_quad,
+    "odd quads": "your quads start on odd rows and columns: which pixel is the upper-left lane "
+    "of the quad that holds this one?",
+    "helpers clamped": _clamped,
+    "affine": "you interpolated (u, v) affinely at the lanes: which interpolation does a "
+    "texture coordinate get across a triangle whose vertices lie at different depths "
+    "(lesson 04)?",
+    "corners": "you took (u, v) at the pixels' corners (col, row): where is a lane shaded?",
+    "fine": "these are fine differences (each pixel its own row and column of the quad): the "
+    "λ a texture reads here is the coarse one, one pair per quad, the same for its four "
+    "pixels",
+    "centred": "you took a centred difference around the pixel, across two pixels: a GPU has "
+    "only the four lanes of the pixel's own quad, one pixel apart",
+    "no texels": lambda a, e, g: (
+        "your steps are in texture units (u and v run over [0, 1]): "
+        f"λ counts texels of level 0; how many texels long is this texture along u, and along v "
+        f"(size = {a[3]})?"
+    ),
+    "W and H swapped": lambda a, e, g: (
+        f"size = {a[3]} is (H, W): you scaled u by H = "
+        f"{a[3][0]} and v by W = {a[3][1]}; which of them counts the texels along u?"
+    ),
+    "u alone": "your ρ follows u alone; a pixel step moves v too: how far, in texels, does one "
+    "step move (u, v) as a straight line?",
+    "v alone": "your ρ follows v alone; a pixel step moves u too: how far, in texels, does one "
+    "step move (u, v) as a straight line?",
+    "ddx alone": _one_step("ddx"),
+    "ddy alone": _one_step("ddy"),
+    "mean of the steps": lambda a, e, g: (
+        "your ρ is the mean of the two steps' lengths "
+        f"({num(_axes(a)[0])} and {num(_axes(a)[1])} texels): at that level the longer step "
+        "still skips texels"
+    ),
+    "sum of the steps": lambda a, e, g: (
+        "your ρ adds the two steps' lengths "
+        f"({num(_axes(a)[0])} and {num(_axes(a)[1])} texels): the picture blurs more than it "
+        "must; which one length decides whether a step skips texels?"
+    ),
+    "largest component": "each step's length is its larger component here; a step of 3 "
+    "texels across and 4 down: how long is it?",
+    "clamped at 0": "your λ is clamped at 0: here the texture is magnified and λ is "
+    "negative; leave it unclamped (7.3's sampler keeps it within the pyramid)",
+    "ρ itself": "you returned ρ itself: λ counts the halvings of the texel size",
+    "rounded": "you rounded λ to a whole number: λ is fractional in general (7.3 blends the "
+    "two levels around it)",
+    "rounded down": "you rounded λ down to a whole level: λ is fractional in general (7.3 "
+    "blends the two levels around it)",
+}
+
+
+#: 7.1's steps for an answer no mistake explains, said once two different answers have
+#: failed, and the question asked before.
+RULE = (
+    ": take the quad whose upper-left pixel is (row − row mod 2, col − col mod 2); (u, v) "
+    "perspective-correct at its lanes' centres (extrapolated at helpers); ddx = upper right − "
+    "upper left, ddy = lower left − upper left; each scaled to texels (u·W, v·H); "
+    "λ = log2 of the longer Euclidean length"
+)
+HINT = (
+    ": which quad holds this pixel and which of its lanes are differenced; how many texels of "
+    "level 0 does each step cross; which step decides? Work this case through by hand"
+)
+
+
+def _rule(args, expected, got) -> str:
+    return RULE
+
+
+#: 7.1's "answer first" pixels on the floor (64 × 64 texture): two lanes of one quad, the
+#: near edge's helpers, and the far tip, where the step down decides.
+QUESTION_PIXELS = ((28, 14), (29, 15), (27, 3), (5, 14))
+
+
+def lod_questions(size=(64, 64)) -> str:
+    """7.1's questions answered on the floor: each pixel's λ and the step that decides it,
+    and λ at the helper-side pixel with its helpers clamped."""
+    xy, w, _ = FLOOR
+    said = []
+    for r, c in QUESTION_PIXELS:
+        args = (xy, w, FLOOR_UV, size, r, c)
+        lx, ly = _axes(args)
+        step = "right (ddx)" if lx >= ly else "down (ddy)"
+        said.append(f"({r}, {c}): λ = {num(expected_lod(*args))}, the step {step} decides")
+    right = expected_lod(xy, w, FLOOR_UV, size, 27, 3)
+    clamped = _variants(xy, w, FLOOR_UV, size, 27, 3)["helpers clamped"]
+    way = "smaller" if clamped < right else "larger"
+    return (f"7.1 on the floor: {'; '.join(said)}. (28, 14) and (29, 15) share a quad, so one "
+            f"λ. With (27, 3)'s helpers clamped λ would be {num(clamped)}, {way}: the step "
+            "across the edge stops at the triangle")  # fmt: skip
+
+
+def draw_lod_case(ax, case, got):
+    """Close up on the pixel: the triangle's edges, the pixels around (covered grey), the
+    pixel; λ and yours. A passing figure adds the pixel's quad with (u, v) at each lane
+    (helpers hatched) and answers 7.1's questions."""
+    from matplotlib.patches import Rectangle
+
+    _, (xy, w, uv, size, row, col), expected = case
+    r0, c0 = row - row % 2, col - col % 2
+    passed = got is not None and same_lod(got, expected, case[1])
+    ring = np.vstack([xy, xy[:1]])
+    artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.5)
+    for y in range(r0 - 2, r0 + 4):
+        for x in range(c0 - 2, c0 + 4):
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, edgecolor="#bbbbbb", lw=0.5,
+                facecolor="#d2d2d2" if inside(xy, x + 0.5, y + 0.5) else "white")))  # fmt: skip
+    if passed:  # the quad's lanes; the lower-right one takes part in no coarse difference
+        for dr, dc in ((0, 0), (0, 1), (1, 0), (1, 1)):
+            x, y = c0 + dc, r0 + dr
+            covered = inside(xy, x + 0.5, y + 0.5)
+            artists.append(ax.add_patch(Rectangle((x, y), 1, 1, fill=False, edgecolor="#2b7bba",
+                                                  lw=1.5, hatch=None if covered else "//")))  # fmt: skip
+            u, v = _uv_at(xy, w, uv, x + 0.5, y + 0.5)
+            artists.append(ax.text(x + 0.5, y + 0.5, f"{u:.2f}\n{v:.2f}", ha="center",
+                                   va="center", fontsize="xx-small",
+                                   color="#888888" if (dr, dc) == (1, 1) else "black",
+                                   bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
+    artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
+                                          lw=3)))  # fmt: skip
+    ax.set_xlim(c0 - 2, c0 + 4)
+    ax.set_ylim(r0 + 4, r0 - 2)
+    ax.set_aspect("equal")
+    text = f"pixel ({row}, {col}), texture size (H, W) = {size}"
+    if got is not None:
+        text += f"; λ = {num(expected, got)}, yours {num(got, expected)}"
+    if passed:
+        ddx, ddy = quad_steps(xy, w, uv, row, col)
+        said = (f"blue: its quad, (u, v) at each lane (hatched: a helper; grey: unused); "
+                f"ddx = {vec(ddx)}, ddy = {vec(ddy)}")  # fmt: skip
+        text += "\n" + textwrap.fill(said, 70) + "\n" + textwrap.fill(lod_questions(), 70)
+    artists.append(ax.set_xlabel(text, fontsize="x-small"))
+    return artists
+
+
+PIXEL_LOD = Exercise(
+    "pixel_lod", lod_cases, as_number, same_lod, explain_lod, _rule,
+    variant_mistakes(_variants, MISTAKES),
+    answers=(PackageAnswer(mip_level), PackageAnswer(lane_values)),
+    draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True,
+    once=((RULE, ": as said for the first failing case"),),
+    reference=("teachraster.exercises.quad_difference",),  # lanes: the renderer's quad values
+    example=2,  # pixel (27, 3): a quad with helpers outside the edge, 7.1's third question
+)  # fmt: skip
