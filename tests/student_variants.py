@@ -5255,7 +5255,8 @@ DIFFERENT.update(
 R381_F6 = {
     "reverse-Z worst at z_max only": (
         "reverse_z_worst", lambda a, b, n, f: _rs.reverse_z_gap(b, n, f),
-        "you evaluated the gap at z_max only", "z_max only"),
+        "you evaluated the gap at z_max only. For float32 reverse-Z the worst step is at z",
+        "z_max only"),
     "reverse-Z worst at z_min only": (
         "reverse_z_worst", lambda a, b, n, f: _rs.reverse_z_gap(a, n, f),
         "you evaluated the gap at z_min only", "z_min only"),

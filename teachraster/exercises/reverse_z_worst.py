@@ -188,13 +188,13 @@ MISTAKES = {
     "edges only": ": you compared the depths where d crosses a power of two only, and left "
     "z_max out: past the last crossing Δz keeps growing like z², so z_max can be the coarsest",
     "step below at edges": ": at each depth where d is exactly a power of two 2^e you took "
-    "the step below it, 2^(e−24), the one towards farther depths (np.spacing of a float32 "
-    "rounded down, or the nearer neighbour). Just nearer than that depth d lies in the binade "
+    "the step below it, 2^(e−24), the one towards farther depths (the stored 2^e's nearer "
+    "neighbour, or np.spacing of d rounded down first). Just nearer than that depth d lies in the binade "
     "above, whose step is 2^(e−23): the coarsest Δz is that limit",
     "bound 2^-23": ": you took the bound 2^-23 z (1 − z/f) (d over its slope) at its largest "
     "in the range: it is reached only where d is a power of two, so the true worst is the "
     "largest over those depths and z_max, not over every z",
-    "bound 2^-24": ": you took 2^-24 z (1 − z/f), the finest bound of float32 reverse-Z's Δz, "
+    "bound 2^-24": ": you took 2^-24 z (1 − z/f), the finest bound of reverse-Z's Δz, "
     "not the coarsest over the range: just nearer than each depth where d is a power of two "
     "2^e the step is 2^(e−23), twice that",
     "finest": ": you returned the finest Δz of the range; the task asks the coarsest, the gap "
