@@ -58,7 +58,7 @@ def binade_step(d: float) -> float:
     >>> binade_step(0.25) == 2.0**-25, binade_step(0.3) == 2.0**-25
     (True, True)
     """
-    return 2.0 ** (np.floor(np.log2(d)) - 23)
+    return float(2.0 ** (np.floor(np.log2(d)) - 23))
 
 
 def edges(z_min: float, z_max: float, near: float, far: float) -> list[tuple[int, float]]:
