@@ -5282,3 +5282,26 @@ R381_F6 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R381_F6.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R381_F6.items()})
+
+
+def _worst_by_gap_at_edges(z_min, z_max, near, far):
+    """5.2's own reverse_z_gap at z_max and at each edge (np.spacing there is the step above)."""
+    found = _rz_edges(z_min, z_max, near, far)
+    return max(_rs.reverse_z_gap(z, near, far) for z in [z_max] + [z for _, z in found])
+
+
+def _worst_in_float32(z_min, z_max, near, far):
+    z_min, z_max, near, far = (np.float32(v) for v in (z_min, z_max, near, far))
+    return float(_worst_by_gap_at_edges(z_min, z_max, near, far))
+
+
+DIFFERENT.update({
+    "reverse-Z worst, reverse_z_gap at each edge": ("reverse_z_worst", _worst_by_gap_at_edges),
+})  # fmt: skip
+# in float32, d at an edge can round to just under 2^e, where np.spacing is the step below
+WRONG["reverse-Z worst in float32, np.spacing at the edges"] = (
+    "reverse_z_worst",
+    _worst_in_float32,
+    "your d came out just under that power of two",
+)
+KINDS["reverse-Z worst in float32, np.spacing at the edges"] = "edge rounded below"

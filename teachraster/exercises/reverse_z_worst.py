@@ -205,6 +205,32 @@ MISTAKES = {
 }
 
 
+def _edge_rounded_below(args, expected, got) -> bool:
+    """The worst edge's Δz by the step below (d rounded to just under 2^e there), or what
+    that leaves: z_max's or another depth's with its own step, never the worst edge's."""
+    z_w = worst(*args)[0]
+    if not np.isfinite(got) or z_w == args[1]:
+        return False
+    below = candidates(*args, edge_step=-24)
+    rest = [dz for z, dz in candidates(*args) if z != z_w]
+    left = max([dz for z, dz in below if z == z_w] + rest)
+    return bool(abs(got - left) <= 1e-5 * left)
+
+
+EDGE_BELOW = Mistake(
+    "edge rounded below",
+    lambda a, e, g: (
+        f": at z = {num(worst(*a)[0])}, where d is 2^"
+        f"{int(np.round(np.log2(float(reversed_depth(worst(*a)[0], *a[2:])))))}, the coarsest "
+        "depth of this range, your d came out just under that power of two (rounded there, or "
+        "the depth taken a hair too far), so its step was the one below, half the binade's. "
+        "The coarsest Δz is the limit from nearer depths: take the binade's own step there, "
+        "2^(e−23) for d = 2^e, rather than np.spacing of a d computed at that depth"
+    ),
+    fits=_edge_rounded_below,
+)
+
+
 def _too_fine(args, expected, got) -> bool:
     """A search over depths that missed the edge: finer than the coarsest, coarser than z_max."""
     at_max = candidates(*args)[0][1]
@@ -275,7 +301,7 @@ def draw_worst(ax, case, got):
 
 REVERSE_Z_WORST = Exercise(
     "reverse_z_worst", worst_cases, as_number, same_worst, explain_worst, _rule,
-    variant_mistakes(_variants, MISTAKES, (SEARCH, RANGE)), draw=draw_worst,
+    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, SEARCH, RANGE)), draw=draw_worst,
     match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
     answers=(
         PackageAnswer(expected_worst, words=CHECKER_WORDS),
