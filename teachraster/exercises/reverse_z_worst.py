@@ -308,5 +308,9 @@ REVERSE_Z_WORST = Exercise(
         PackageAnswer(depth_resolution, what="float32 reverse-Z's Δz, which your reverse_z_gap "
                       "computes", when=lambda a: a.get("fmt") == "float32"
                       and a.get("mapping") == "reversed"),
-    ), reference=("teachraster.exercises.reverse_z",),
+    ), reference=("teachraster.exercises.reverse_z",), hints=(
+        # the method, held back until two different answers have failed (r39's rule)
+        ("compare z_max with the limit just nearer than each such depth in the range",
+         "where in the range can the coarsest lie?"),
+    ),
 )  # fmt: skip
