@@ -13,8 +13,8 @@ slope is z (1 − z/f), largest at f/2). Evaluated at z_max alone it is up to 4 
 on lesson 05b's planes (z from 100 to 900: the worst depth is 450.3, where d = 2^-13).
 
 Expected answers: :func:`expected_worst`, the largest of z_max's Δz (its binade's step) and
-each such edge's inside the range; :func:`brute_worst` (the package's step at 200,001
-depths) agrees within 2e-6 on every fixed case (tests). An answer passes between
+each such edge's inside the range; :func:`brute_worst` (float32's step above d at 200,001
+depths) lies within 2e-5 below it on every fixed case (tests). An answer passes between
 :data:`BELOW` under it (a search over sampled depths falls just short of the edge) and
 :data:`SLACK` over it (a gap rounded up is still one the buffer resolves at every depth).
 """
