@@ -54,6 +54,18 @@ def reverse_z_gap(z, near, far):
     return step / (near / ((1 - near / far) * z * z))  # over |dd/dz|
 
 
+def reverse_z_worst(z_min, z_max, near, far):
+    # Δz grows like z² within a binade of d and halves where d falls below 2^e: the coarsest
+    # is z_max's or the limit just nearer than such a depth, where the step is 2^(e - 23)
+    worst = reverse_z_gap(z_max, near, far)
+    d = lambda z: (near / z - near / far) / (1 - near / far)  # noqa: E731
+    for e in range(int(np.ceil(np.log2(d(z_max)))), int(np.floor(np.log2(d(z_min)))) + 1):
+        z = near / (2.0**e * (1 - near / far) + near / far)  # d(z) = 2^e
+        if z_min < z <= z_max:
+            worst = max(worst, 2.0 ** (e - 23) * (1 - near / far) * z * z / near)
+    return worst
+
+
 def depth_setup(z, gap, far, nearest):
     if safe_near(z, gap, far, 24) <= nearest:  # allowed: unorm24 (depth, stencil in 32 bits)
         # at the farthest allowed near plane: Δz ∝ 1/n, the finest unorm24 gives this scene
@@ -287,6 +299,7 @@ CORRECT = {
     "clip_near_colour": clip_near_colour,
     "safe_near": safe_near,
     "reverse_z_gap": reverse_z_gap,
+    "reverse_z_worst": reverse_z_worst,
     "decal_bias": decal_bias,
     "depth_setup": depth_setup,
     "robust_fill": robust_fill,

@@ -5281,3 +5281,155 @@ DIFFERENT.update({
         "pixel_sample", _pixel_sample()),
     "pixel sample from hand-written weights": ("pixel_sample", _rs.pixel_sample),
 })  # fmt: skip
+# == r381 F6: exercise 5.2b, the coarsest Δz of float32 reverse-Z over a range =====================
+
+
+def _rzd(z, near, far):
+    return (near / z - near / far) / (1 - near / far)
+
+
+def _rz_edges(z_min, z_max, near, far):
+    """(e, z) where d(z) = 2^e inside (z_min, z_max], as a student finds them."""
+    top, low = (
+        math.floor(math.log2(_rzd(z_min, near, far))),
+        math.ceil(math.log2(_rzd(z_max, near, far))),
+    )
+    out = []
+    for e in range(low, top + 1):
+        z = near / (2.0**e * (1 - near / far) + near / far)
+        if z_min < z <= z_max:
+            out.append((e, z))
+    return out
+
+
+def _rz_at_edge(e, z, near, far, below=False):
+    return 2.0 ** (e - (24 if below else 23)) * (1 - near / far) * z * z / near
+
+
+def _worst_with(ends="max", edges="all", below=False, leave_max=False):
+    """reverse_z_worst with one slip: which ends, which edges, which step at an edge."""
+
+    def reverse_z_worst(z_min, z_max, near, far):
+        ends_at = {"max": [z_max], "min": [z_min], "both": [z_min, z_max]}[ends]
+        values = [] if leave_max else [_rs.reverse_z_gap(z, near, far) for z in ends_at]
+        found = _rz_edges(z_min, z_max, near, far)
+        if edges == "last":
+            found = found[:1]
+        if edges != "none":
+            values += [_rz_at_edge(e, z, near, far, below) for e, z in found]
+        return max(values, default=0.0)
+
+    return reverse_z_worst
+
+
+def _worst_by_search(count, space=np.geomspace):
+    def reverse_z_worst(z_min, z_max, near, far):
+        z = space(z_min, z_max, count)
+        d = np.float32(_rzd(z, near, far))
+        return float(np.max(np.spacing(d).astype(float) * (1 - near / far) * z * z / near))
+
+    return reverse_z_worst
+
+
+def _worst_by_envelope(z_min, z_max, near, far):
+    """At each edge, Δz = 2^-23 z (1 − z/f): d over its slope is z (1 − z/f)."""
+    at = [2.0**-23 * z * (1 - z / far) for _, z in _rz_edges(z_min, z_max, near, far)]
+    return max([_rs.reverse_z_gap(z_max, near, far), *at])
+
+
+def _worst_by_halving(z_min, z_max, near, far):
+    """From z_max nearer, one binade at a time: frexp gives d's binade."""
+    _, k = np.frexp(_rzd(z_max, near, far))  # d = m 2^k, m in [0.5, 1): step 2^(k - 24)
+    worst = 2.0 ** (k - 24) * (1 - near / far) * z_max * z_max / near
+    while True:
+        z = near / (2.0**k * (1 - near / far) + near / far)  # nearer, where d reaches 2^k
+        if z <= z_min:
+            return worst
+        worst = max(worst, 2.0 ** (k - 23) * (1 - near / far) * z * z / near)
+        k += 1
+
+
+def _worst_bound(z_min, z_max, near, far):
+    peak = min(max(far / 2, z_min), z_max)
+    return 2.0**-23 * peak * (1 - peak / far)
+
+
+def _worst_finest(z_min, z_max, near, far):
+    values = [_rs.reverse_z_gap(z_min, near, far)]
+    values += [
+        _rz_at_edge(e, z, near, far, below=True) for e, z in _rz_edges(z_min, z_max, near, far)
+    ]
+    return min(values)
+
+
+def _worst_z(z_min, z_max, near, far):
+    cands = [(_rs.reverse_z_gap(z_max, near, far), z_max)]
+    cands += [(_rz_at_edge(e, z, near, far), z) for e, z in _rz_edges(z_min, z_max, near, far)]
+    return max(cands)[1]
+
+
+DIFFERENT.update(
+    {
+        "reverse-Z worst by a fine geometric search": (
+            "reverse_z_worst",
+            _worst_by_search(400_001),
+        ),
+        "reverse-Z worst, 2^-23 z (1 − z/f) at each edge": ("reverse_z_worst", _worst_by_envelope),
+        "reverse-Z worst, one binade at a time with frexp": ("reverse_z_worst", _worst_by_halving),
+        "reverse-Z worst, edges and z_max by np.spacing": ("reverse_z_worst", _worst_with()),
+    }
+)
+#: label: (name, function, words in the first failure, kind of the first failure).
+R381_F6 = {
+    "reverse-Z worst at z_max only": (
+        "reverse_z_worst", lambda a, b, n, f: _rs.reverse_z_gap(b, n, f),
+        "you evaluated the gap at z_max only. For float32 reverse-Z the worst step is at z",
+        "z_max only"),
+    "reverse-Z worst at z_min only": (
+        "reverse_z_worst", lambda a, b, n, f: _rs.reverse_z_gap(a, n, f),
+        "you evaluated the gap at z_min only", "z_min only"),
+    "reverse-Z worst of the two ends": (
+        "reverse_z_worst", _worst_with(ends="both", edges="none"),
+        "you compared the two ends of the range only", "both ends"),
+    "reverse-Z worst at z_max and the last edge": (
+        "reverse_z_worst", _worst_with(edges="last"), "the last depth before it", "last edge"),
+    "reverse-Z worst over the edges, z_max left out": (
+        "reverse_z_worst", _worst_with(leave_max=True), "and left z_max out", "edges only"),
+    "reverse-Z worst with the step below at the edges": (
+        "reverse_z_worst", _worst_with(below=True), "you took the step below it",
+        "step below at edges"),
+    "reverse-Z worst as the bound 2^-23 z (1 − z/f)": (
+        "reverse_z_worst", _worst_bound, "you took the bound 2^-23 z (1 − z/f)", "bound 2^-23"),
+    "reverse-Z worst as the finest": (
+        "reverse_z_worst", _worst_finest, "you returned the finest Δz of the range", "finest"),
+    "reverse-Z worst returning its depth": (
+        "reverse_z_worst", _worst_z, "that is the depth where Δz is coarsest", "worst z"),
+    "reverse-Z worst by a search of 50 depths": (
+        "reverse_z_worst", _worst_by_search(50, np.linspace), "a search over sampled depths",
+        "search missed the edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R381_F6.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R381_F6.items()})
+
+
+def _worst_by_gap_at_edges(z_min, z_max, near, far):
+    """5.2's own reverse_z_gap at z_max and at each edge (np.spacing there is the step above)."""
+    found = _rz_edges(z_min, z_max, near, far)
+    return max(_rs.reverse_z_gap(z, near, far) for z in [z_max] + [z for _, z in found])
+
+
+def _worst_in_float32(z_min, z_max, near, far):
+    z_min, z_max, near, far = (np.float32(v) for v in (z_min, z_max, near, far))
+    return float(_worst_by_gap_at_edges(z_min, z_max, near, far))
+
+
+DIFFERENT.update({
+    "reverse-Z worst, reverse_z_gap at each edge": ("reverse_z_worst", _worst_by_gap_at_edges),
+})  # fmt: skip
+# in float32, d at an edge can round to just under 2^e, where np.spacing is the step below
+WRONG["reverse-Z worst in float32, np.spacing at the edges"] = (
+    "reverse_z_worst",
+    _worst_in_float32,
+    "your d came out just under that power of two",
+)
+KINDS["reverse-Z worst in float32, np.spacing at the edges"] = "edge rounded below"

@@ -10,6 +10,7 @@ typical mistakes), defined in its own module:
   reasoning in place of ``split_point``,
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
   earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
+  ``reverse_z_worst`` (05b, :mod:`.reverse_z_worst`): its coarsest depth over a range;
   ``decal_bias`` (05b, :mod:`.decal_bias`): the depth offset a tilted decal needs;
   ``depth_setup`` (05b, :mod:`.depth_setup`): unorm24 or float32 reverse-Z for a scene, and
   its near plane, from the student's own ``safe_near`` and ``reverse_z_gap``;
@@ -42,6 +43,7 @@ from . import pixel_level as pl
 from . import pixel_sampler as ps
 from . import quad_difference as qd
 from . import reverse_z as rz
+from . import reverse_z_worst as rzw
 from . import spans
 from . import zbuffer_pixel as zb
 from .exercise import Exercise
@@ -54,6 +56,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
     "safe_near": lambda: npl.SAFE_NEAR,
     "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
+    "reverse_z_worst": lambda: rzw.REVERSE_Z_WORST,
     "decal_bias": lambda: db.DECAL_BIAS,
     "depth_setup": lambda: ds.DEPTH_SETUP,
     "robust_fill": lambda: hf.ROBUST_FILL,

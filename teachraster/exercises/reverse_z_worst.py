@@ -1,0 +1,316 @@
+"""Exercise ``reverse_z_worst`` (lesson 05b, §4): the coarsest depth of a range in float32
+reverse-Z.
+
+Review r381 F6 (r374 F9): 5.2's ``reverse_z_gap`` is lesson 05b's printed slope and one
+``np.spacing``. Here the student uses it where the lesson gives no formula: the coarsest Δz
+over every depth of a range [z_min, z_max], the gap the scene's surfaces need there. A unorm
+buffer's Δz, step (f − n) z²/(f n), grows with z, so its worst depth is z_max; float32
+reverse-Z's is a sawtooth: within a binade of d = (n/z − n/f)/(1 − n/f), [2^e, 2^(e+1)), the
+step is fixed, 2^(e−23), and Δz = step / |dd/dz| grows like z²; where d falls below 2^e the
+step halves. So the coarsest depth is z_max or the limit just nearer than a depth z_e where
+d = 2^e, whose Δz there is 2^(e−23) (1 − n/f) z_e²/n = 2^-23 z_e (1 − z_e/f) (d over its
+slope is z (1 − z/f), largest at f/2). Evaluated at z_max alone it is up to 4 times too fine
+on lesson 05b's planes (z from 100 to 900: the worst depth is 450.3, where d = 2^-13).
+
+Expected answers: :func:`expected_worst`, the largest of z_max's Δz (its binade's step) and
+each such edge's inside the range; :func:`brute_worst` (float32's step above d at 200,001
+depths) lies within 2e-5 below it on every fixed case (tests). An answer passes between
+:data:`BELOW` under it (a search over sampled depths falls just short of the edge) and
+:data:`SLACK` over it (a gap rounded up is still one the buffer resolves at every depth).
+"""
+
+from __future__ import annotations
+
+import copy
+from functools import cache
+
+import numpy as np
+
+from ..pipeline.visibility.depth import depth_resolution, reversed_depth
+from .answers import as_number
+from .cases import DRAWN, drawn_rng
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .package_answers import CHECKER_WORDS
+from .reverse_z import gives_same_gap, reversed_depth_slope
+from .scalars import num
+
+#: (z_min, z_max, near, far): lesson 05b's planes over most of the scene (the worst depth
+#: 450.3, 4 times z_max's Δz; from z = 1, 416 times), short ranges whose last edge beats
+#: z_max (1.2 to 1.9 times), a range past f/2 (its first edge is the worst: Δz falls there),
+#: two whose worst is z_max itself (an edge 1.5 times finer inside the range, or none), and one
+#: whose z_max stores d = 1/4 exactly (the coarsest is the binade's step above, from nearer depths).
+SETTINGS = (
+    (100.0, 900.0, 0.1, 1000.0), (200.0, 300.0, 0.1, 1000.0), (10.0, 30.0, 0.1, 1000.0),
+    (2.0, 4.0, 1.0, 10.0), (500.0, 3000.0, 0.5, 1e4), (1.0, 999.0, 0.1, 1000.0),
+    (600.0, 990.0, 0.1, 1000.0), (150.0, 290.0, 0.1, 1000.0), (120.0, 130.0, 0.1, 1000.0),
+    (1.2, 1.6, 1.0, 2.0),
+)  # fmt: skip
+
+#: How much coarser than the coarsest Δz an answer may be (rounded up, it is still resolved).
+SLACK = 0.01
+#: How much finer: a search over depths falls short of the limit at an edge by 2 δz/z_e.
+BELOW = 0.005
+
+
+def binade_step(d: float) -> float:
+    """float32's step within d's binade [2^e, 2^(e+1)): 2^(e−23), the step above d.
+
+    >>> binade_step(0.25) == 2.0**-25, binade_step(0.3) == 2.0**-25
+    (True, True)
+    """
+    return float(2.0 ** (np.floor(np.log2(d)) - 23))
+
+
+def edges(z_min: float, z_max: float, near: float, far: float) -> list[tuple[int, float]]:
+    """(e, z_e) for each depth z_min < z_e ≤ z_max where d = 2^e, farthest first."""
+    span = 1 - near / far
+    top = int(np.floor(np.log2(float(reversed_depth(z_min, near, far)))))
+    low = int(np.ceil(np.log2(float(reversed_depth(z_max, near, far)))))
+    out = []
+    for e in range(low, top + 1):
+        z_e = near / (2.0**e * span + near / far)
+        if z_min < z_e <= z_max * (1 + 1e-12):
+            out.append((e, min(z_e, z_max)))
+    return out
+
+
+def candidates(z_min, z_max, near, far, edge_step: int = -23) -> list[tuple[float, float]]:
+    """(z, Δz) at z_max (its binade's step) and at each edge z_e (2^(e + ``edge_step``): the
+    step above d = 2^e, or with ``edge_step`` = −24 the one below)."""
+    slope = lambda z: reversed_depth_slope(z, near, far)  # noqa: E731
+    d_max = float(reversed_depth(z_max, near, far))
+    out = [(z_max, binade_step(d_max) / slope(z_max))]
+    return out + [(z, 2.0 ** (e + edge_step) / slope(z)) for e, z in edges(z_min, z_max, near, far)]
+
+
+def worst(z_min, z_max, near, far) -> tuple[float, float]:
+    """(z, Δz) of the coarsest depth of the range (the limit just nearer than z at an edge)."""
+    return max(candidates(z_min, z_max, near, far), key=lambda c: c[1])
+
+
+def expected_worst(z_min: float, z_max: float, near: float, far: float) -> float:
+    """The coarsest Δz of float32 reverse-Z over [z_min, z_max]."""
+    return worst(z_min, z_max, near, far)[1]
+
+
+def brute_worst(z_min, z_max, near, far, count: int = 200_001) -> float:
+    """The largest step-above over the slope at ``count`` depths (a check of
+    :func:`expected_worst`, never its source)."""
+    z = np.linspace(z_min, z_max, count)
+    d = reversed_depth(z, near, far).astype(np.float32)
+    return float((np.abs(np.spacing(d)).astype(float) / reversed_depth_slope(z, near, far)).max())
+
+
+def _label(z_min, z_max, near, far) -> str:
+    return f"z from {num(z_min)} to {num(z_max)}, near = {num(near)}, far = {num(far)}"
+
+
+@cache
+def _fixed():
+    return [(_label(*s), s, expected_worst(*s)) for s in SETTINGS]
+
+
+def worst_cases():
+    """The fixed cases (built once, copied) and :data:`DRAWN` drawn for this check, each with
+    its worst depth inside the range, at least 10 % coarser than z_max's."""
+    out, rng = copy.deepcopy(_fixed()), drawn_rng()
+    for k in range(DRAWN):
+        s = _drawn(rng)
+        out.append((f"drawn for this check {k + 1}: {_label(*s)}", s, expected_worst(*s)))
+    return out
+
+
+def _drawn(rng) -> tuple[float, float, float, float]:
+    """(z_min, z_max, near, far), three significant digits."""
+    while True:
+        far = float(f"{10 ** rng.uniform(1, 5):.3g}")
+        near = float(f"{far * 10 ** rng.uniform(-6, -2):.3g}")
+        z_max = float(f"{far * rng.uniform(0.1, 0.95):.3g}")
+        z_min = float(f"{z_max * rng.uniform(0.05, 0.8):.3g}")
+        s = (z_min, z_max, near, far)
+        if z_min > 2 * near and worst(*s)[1] > 1.1 * candidates(*s)[0][1]:
+            return s
+
+
+def same_worst(got, expected, args=None) -> bool:
+    """Within :data:`BELOW` under and :data:`SLACK` over the coarsest Δz."""
+    if not np.isfinite(got):
+        return False
+    return expected * (1 - BELOW) <= got <= expected * (1 + SLACK)
+
+
+def _variants(z_min, z_max, near, far) -> dict[str, float]:
+    """The Δz typical readings give (each one change)."""
+    cands = candidates(z_min, z_max, near, far)
+    below = candidates(z_min, z_max, near, far, edge_step=-24)
+    slope = lambda z: reversed_depth_slope(z, near, far)  # noqa: E731
+    d_min = float(reversed_depth(z_min, near, far))
+    at_min = binade_step(d_min) / slope(z_min)
+    # the finest: just farther than an edge (its step below) or at z_min
+    finest = min([at_min] + [dz for _, dz in below[1:]])
+    peak = min(max(far / 2, z_min), z_max)
+    return {
+        "z_max only": cands[0][1],
+        "z_min only": at_min,
+        "both ends": max(cands[0][1], at_min),
+        "last edge": max(dz for _, dz in cands[:2]),
+        "edges only": max((dz for _, dz in cands[1:]), default=0.0),
+        "step below at edges": max(dz for _, dz in below),
+        "bound 2^-23": 2.0**-23 * peak * (1 - peak / far),
+        "bound 2^-24": 2.0**-24 * peak * (1 - peak / far),
+        "finest": finest,
+        "worst z": worst(z_min, z_max, near, far)[0],
+    }
+
+
+def _z_max_words(args, expected, got) -> str:
+    """The transcribed formula at z_max (r381 F6): where the worst step really is."""
+    z_w, dz = worst(*args)
+    e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
+    return (f": you evaluated the gap at z_max only. For float32 reverse-Z the worst step is "
+            f"at z = {num(z_w)}, where d falls to 2^{e}: just nearer, d's binade has the step "
+            f"2^{e - 23}, and Δz = {num(dz, got)} there. A unorm buffer's Δz grows with z, so "
+            "its worst is z_max; float32's step halves wherever d falls below a power of two, "
+            "so compare z_max with each depth where that happens inside the range")  # fmt: skip
+
+
+MISTAKES = {
+    "z_max only": _z_max_words,
+    "z_min only": ": you evaluated the gap at z_min only, the nearest depth: Δz grows with z "
+    "within each binade of d, so the coarsest lies farther, at z_max or just nearer than a "
+    "depth where d falls below a power of two",
+    "both ends": ": you compared the two ends of the range only. Between them d crosses "
+    "powers of two, and just nearer than each crossing the step is twice the step beyond it: "
+    "one of those depths can be coarser than either end",
+    "last edge": ": you compared z_max with the last depth before it where d crosses a power "
+    "of two only. Every crossing inside the range is a candidate: their Δz, 2^-23 z (1 − z/f), "
+    "is largest near f/2, not always nearest to z_max",
+    "edges only": ": you compared the depths where d crosses a power of two only, and left "
+    "z_max out: past the last crossing Δz keeps growing like z², so z_max can be the coarsest",
+    "step below at edges": ": at each depth where d is exactly a power of two 2^e you took "
+    "the step below it, 2^(e−24), the one towards farther depths (the stored 2^e's nearer "
+    "neighbour, or np.spacing of d rounded down first). Just nearer than that depth d lies in the binade "
+    "above, whose step is 2^(e−23): the coarsest Δz is that limit",
+    "bound 2^-23": ": you took the bound 2^-23 z (1 − z/f) (d over its slope) at its largest "
+    "in the range: it is reached only where d is a power of two, so the true worst is the "
+    "largest over those depths and z_max, not over every z",
+    "bound 2^-24": ": you took 2^-24 z (1 − z/f), the finest bound of reverse-Z's Δz, "
+    "not the coarsest over the range: just nearer than each depth where d is a power of two "
+    "2^e the step is 2^(e−23), twice that",
+    "finest": ": you returned the finest Δz of the range; the task asks the coarsest, the gap "
+    "surfaces need to be told apart at every depth of it",
+    "worst z": lambda a, e, g: (
+        f": that is the depth where Δz is coarsest, {num(worst(*a)[0])}: return Δz itself there"
+    ),
+}
+
+
+def _edge_rounded_below(args, expected, got) -> bool:
+    """The worst edge's Δz by the step below (d rounded to just under 2^e there), or what
+    that leaves: z_max's or another depth's with its own step, never the worst edge's."""
+    z_w = worst(*args)[0]
+    if not np.isfinite(got) or z_w == args[1]:
+        return False
+    below = candidates(*args, edge_step=-24)
+    rest = [dz for z, dz in candidates(*args) if z != z_w]
+    left = max([dz for z, dz in below if z == z_w] + rest)
+    return bool(abs(got - left) <= 1e-5 * left)
+
+
+EDGE_BELOW = Mistake(
+    "edge rounded below",
+    lambda a, e, g: (
+        f": at z = {num(worst(*a)[0])}, where d is 2^"
+        f"{int(np.round(np.log2(float(reversed_depth(worst(*a)[0], *a[2:])))))}, the coarsest "
+        "depth of this range, your d came out just under that power of two (rounded there, or "
+        "the depth taken a hair too far), so its step was the one below, half the binade's. "
+        "The coarsest Δz is the limit from nearer depths: take the binade's own step there, "
+        "2^(e−23) for d = 2^e, rather than np.spacing of a d computed at that depth"
+    ),
+    fits=_edge_rounded_below,
+)
+
+
+def _too_fine(args, expected, got) -> bool:
+    """A search over depths that missed the edge: finer than the coarsest, coarser than z_max."""
+    at_max = candidates(*args)[0][1]
+    return bool(np.isfinite(got)) and at_max < got < expected * (1 - BELOW)
+
+
+SEARCH = Mistake(
+    "search missed the edge",
+    ": your Δz lies between z_max's and the coarsest: a search over sampled depths that "
+    "stopped short of the depth where d crosses a power of two? Δz jumps there (the step "
+    "halves), so the coarsest is the limit just nearer than it: sample it, or compute it",
+    fits=_too_fine, symptom=True,
+)  # fmt: skip
+RANGE = Mistake("range", ": a gap is a positive distance",
+                fits=lambda a, e, g: bool(np.isfinite(g)) and g <= 0, symptom=True)  # fmt: skip
+
+
+def explain_worst(args, expected, got) -> str:
+    """The case, its coarsest Δz, the band the check accepts, and the student's."""
+    lo, hi = expected * (1 - BELOW), expected * (1 + SLACK)
+    head = (f"for z from {num(args[0])} to {num(args[1])} (near {num(args[2])}, far "
+            f"{num(args[3])}) the coarsest Δz is {num(expected, got)} (the check accepts "
+            f"{num(lo, hi)} to {num(hi, lo)}); yours is {num(got, expected)}")  # fmt: skip
+    if not np.isfinite(got) or got <= 0 or same_worst(got, expected):
+        return head
+    return head + (" (too coarse)" if got > hi else " (too fine)")
+
+
+def _rule(args, expected, got) -> str:
+    return (". Within a binade of d the step is fixed and Δz grows like z²; it halves where "
+            "d falls below a power of two: compare z_max with the limit just nearer than "
+            "each such depth in the range")  # fmt: skip
+
+
+def draw_worst(ax, case, got):
+    """Δz against z over the range (the package's sawtooth), the coarsest depth and yours."""
+    _, (z_min, z_max, near, far), expected = case
+    zs = np.linspace(z_min, z_max, 2000)
+    artists = ax.plot(zs, depth_resolution(zs, near, far, "float32", mapping="reversed"),
+                      color="black", lw=1, label="float32 reverse-Z Δz")  # fmt: skip
+    z_w = worst(z_min, z_max, near, far)[0]
+    artists += ax.plot(
+        [z_w],
+        [expected],
+        "o",
+        color="#2b7bba",
+        ms=8,
+        label=f"coarsest (expected) {num(expected, got)} at z = {num(z_w)}",
+    )
+    artists.append(ax.axhspan(expected * (1 - BELOW), expected * (1 + SLACK), color="#d9ecd9",
+                              lw=0, zorder=0, label="accepted"))  # fmt: skip
+    if got is not None and np.isfinite(got) and got > 0:
+        colour = "#7fbf7f" if same_worst(got, expected) else "#d7301f"
+        artists.append(ax.axhline(got, color=colour, linestyle="--",
+                                  label=f"yours {num(got, expected)}"))  # fmt: skip
+        ax.set_ylim(0, max(expected, got) * 1.15)
+    elif got is not None:
+        artists += ax.plot([], [], " ", label=f"yours {num(got)}: not drawn")
+        ax.set_ylim(0, expected * 1.15)
+    else:
+        ax.set_ylim(0, expected * 1.15)
+    ax.set_xlim(z_min, z_max)
+    ax.set_xlabel(f"view depth z (near {num(near)}, far {num(far)})")
+    ax.set_ylabel("smallest resolved gap Δz")
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    return artists
+
+
+REVERSE_Z_WORST = Exercise(
+    "reverse_z_worst", worst_cases, as_number, same_worst, explain_worst, _rule,
+    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, SEARCH, RANGE)), draw=draw_worst,
+    match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
+    answers=(
+        PackageAnswer(expected_worst, words=CHECKER_WORDS),
+        PackageAnswer(depth_resolution, what="float32 reverse-Z's Δz, which your reverse_z_gap "
+                      "computes", when=lambda a: a.get("fmt") == "float32"
+                      and a.get("mapping") == "reversed"),
+    ), reference=("teachraster.exercises.reverse_z",), hints=(
+        # the method, held back until two different answers have failed (r39's rule)
+        ("compare z_max with the limit just nearer than each such depth in the range",
+         "where in the range can the coarsest lie?"),
+    ),
+)  # fmt: skip

@@ -1,0 +1,63 @@
+"""Review r381 F6 (r374 F9): exercise 5.2b, ``reverse_z_worst``, the coarsest Δz of float32
+reverse-Z over a range of depths, which lesson 05b's printed formula at z_max does not give."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+import reasoning_solutions as sol
+
+from teachraster import depth_resolution
+from teachraster import exercises as ex
+from teachraster.exercises import reverse_z_worst as rzw
+from teachraster.exercises import tries
+
+NOTEBOOK = Path(__file__).resolve().parent.parent / "notebooks/exercises/05_depth_precision.ipynb"
+
+
+@pytest.mark.parametrize("setting", rzw.SETTINGS)
+def test_the_reference_is_the_largest_step_over_the_slope_at_every_depth(setting):
+    """The edges and z_max give what 200,001 depths' float32 steps over the slope give."""
+    expected, brute = rzw.expected_worst(*setting), rzw.brute_worst(*setting)
+    assert brute <= expected * (1 + 1e-9) and brute >= expected * (1 - 2e-5), (expected, brute)
+
+
+def test_unorm_resolves_worst_at_z_max_and_reverse_z_inside_the_range():
+    """The claim the task makes: unorm's Δz grows with z at every near plane; reverse-Z's worst
+    on lesson 05b's planes from 100 to 900 is at 450.3 (d = 2^-13), 4 times z_max's."""
+    for near, far in ((0.1, 1000.0), (1.0, 10.0), (0.01, 1e4)):
+        z = np.linspace(2 * near, far, 10_001)
+        for fmt in ("unorm16", "unorm24"):
+            assert np.all(np.diff(depth_resolution(z, near, far, fmt)) > 0)
+    z_w, dz = rzw.worst(100.0, 900.0, 0.1, 1000.0)
+    assert (
+        abs(z_w - 450.333) < 1e-3 and np.float32(rzw.reversed_depth(z_w, 0.1, 1000.0)) == 2.0**-13
+    )
+    assert 3.9 < dz / rzw.candidates(100.0, 900.0, 0.1, 1000.0)[0][1] < 4.1
+
+
+def test_the_printed_formula_at_z_max_fails_and_is_told_where_the_worst_is():
+    tries.forget_hints("reverse_z_worst")
+    report = ex.check("reverse_z_worst", lambda a, b, n, f: sol.reverse_z_gap(b, n, f))
+    assert len(report.failures) >= len(rzw.SETTINGS) - 2, str(report)
+    first = report.failures[0].explanation
+    assert "you evaluated the gap at z_max only" in first
+    assert "worst step is at z = 450.333, where d falls to 2^-13" in first, first
+
+
+def test_drawn_cases_have_their_worst_inside_the_range():
+    for _, args, expected in rzw.worst_cases()[len(rzw.SETTINGS) :]:
+        assert expected > 1.1 * rzw.candidates(*args)[0][1]
+
+
+def test_the_task_states_the_band_its_check_allows():
+    cells = json.loads(NOTEBOOK.read_text())["cells"]
+    ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells]
+    text = "".join(cells[ids.index("reverse_z_worst_task")]["source"])
+    for share in (rzw.BELOW, rzw.SLACK):
+        assert f"{share:.1%}".replace(".0%", "%").replace("%", " %") in text, text
+    assert ids.index("reverse_z_gap_check") < ids.index("reverse_z_worst_task")
+    assert "predict" in text and text.index("predict") < text.index("Write `reverse_z_worst")
