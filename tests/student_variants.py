@@ -5433,3 +5433,61 @@ WRONG["reverse-Z worst in float32, np.spacing at the edges"] = (
     "your d came out just under that power of two",
 )
 KINDS["reverse-Z worst in float32, np.spacing at the edges"] = "edge rounded below"
+# == r399: exercise 11's depths read off the trace (as drawn), a depth a hair off, 11.3b a bit short
+
+
+def _drawn_pane(b, intended=False, outcome="hi_z"):
+    """Frame 3's pane's depth at (13, 52) as the trace holds it (drawn, not stored)."""
+    frame = b.intended if intended else b.frame
+    pane = next(r for r in _records(b, 13, 52) if r.outcome == outcome)
+    return float(frame.trace.window[pane.piece, 0, 2])
+
+
+def _shown_depth(b, row, col, intended=False):
+    return next(r.depth for r in _records(b, row, col, intended) if r.shown)
+
+
+def _half_step_loop(b):
+    """The least n with gap · (2ⁿ − 1) ≥ ½: half a step for a whole one (r399 W20)."""
+    return next(n for n in range(1, 54) if _gap_of(b) * (2**n - 1) >= 0.5)
+
+
+#: label: (exercise, fn, words in the first explanation, kind).
+R399 = {
+    "frame 3, the pane's depth as the broken frame draws it": (
+        "broken_frame_3", lambda b: ("z-fighting", (13, 52), _drawn_pane(b)),
+        "is triangle 3's depth as the broken frame draws it (its fragment failed the Hi-Z "
+        "test; the evidence's surface, but in the other frame of the pair)", "a depth as drawn"),
+    "frame 3, the intended pane's depth as drawn": (
+        "broken_frame_3", lambda b: ("z-fighting", (13, 52), _drawn_pane(b, intended=True)),
+        "is triangle 3's depth as the intended frame draws it (the fragment the pixel shows; "
+        "the evidence's own fragment)", "a depth as drawn"),
+    "frame 6, the intended strip's depth as drawn": (
+        "broken_frame_6",
+        lambda b: ("sliver", (22, 40), (
+            _thin_outside(b, 22, 40, triangle=2),
+            float(b.intended.trace.window[_glass_of(b, 22, 40, True).piece, 0, 2]))),
+        "your depth, 0.3, is triangle 2's depth as the intended frame draws it",
+        "a depth as drawn"),
+    "frame 7, the strip's failing depth as drawn": (
+        "broken_frame_7",
+        lambda b: ("depth function", (25, 52), float(b.frame.trace.window[next(
+            r for r in _records(b, 25, 52) if r.outcome in ("hi_z", "failed_depth")
+        ).piece, 0, 2])),
+        "your value 0.7 is triangle 2's depth as the broken frame draws it (its fragment "
+        "failed the Hi-Z test)", "a depth as drawn"),
+    "frame 1, the depth shown 1.5e-6 off": (
+        "broken_frame_1", lambda b: ("depth function", (24, 28), _shown_depth(b, 24, 28) + 1.5e-6),
+        "with all six decimals it prints", "evidence"),
+    "frame 3, the intended pane's depth 1e-6 off": (
+        "broken_frame_3",
+        lambda b: ("z-fighting", (13, 52), _shown_depth(b, 13, 52, True) - 1e-6),
+        "with all six decimals it prints", "evidence"),
+    "frame 3 bits, log₂(1/gap) rounded down": (
+        "broken_frame_3_steps", lambda b: math.floor(math.log2(1 / _gap_of(b))),
+        "short of a whole one (log₂(1 + 1/gap) rounded down?)", "a step short"),
+    "frame 3 bits, half a step by a loop": (
+        "broken_frame_3_steps", _half_step_loop, "short of a whole one", "a step short"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R399.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R399.items()})

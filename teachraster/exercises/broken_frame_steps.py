@@ -322,12 +322,15 @@ def _nearest_words(args, expected, got) -> str:
 
 
 def _power_words(args, expected, got) -> str:
+    """A step of 1/2ⁿ, or (the same answers on every case: r399 F3) a count of steps between
+    2ⁿ − 1 and 2ⁿ, such as a half-step margin (gap · (2ⁿ − ½) ≥ 1)."""
     (b,) = args
     gap = _gap(b)
-    return (f": a step of 1/2ⁿ? An n-bit unorm buffer stores 0 to 1 in 2ⁿ − 1 steps, each "
+    return (f": a step of 1/2ⁿ? (Or a count of steps between 2ⁿ − 1 and 2ⁿ, such as a half-step "
+            f"margin, 2ⁿ − ½?) An n-bit unorm buffer stores 0 to 1 in 2ⁿ − 1 steps, each "
             f"1/(2ⁿ − 1) (lesson 05b): with {got} bits the gap is {gap * 2**got:.8f} of 1/2^{got} "
-            f"but {gap * (2**got - 1):.8f} of a step, not more than a whole one, so the two depths still tie at "
-            "some depths")  # fmt: skip
+            f"but {gap * (2**got - 1):.8f} of a step, not more than a whole one, so the two "
+            "depths still tie at some depths")  # fmt: skip
 
 
 def _relative_words(args, expected, got) -> str:
@@ -358,6 +361,10 @@ def _log_words(name: str):
     return words
 
 
+#: The closed form a bit short gives, said in the full words only (r399 F5: on the first
+#: failure it gave the answer, log₂(1 + 1/gap) rounded up, away; :data:`HINTS`).
+STEP_SHORT_FORM = " (log₂(1 + 1/gap) rounded down?)"
+
 MISTAKES = [
     # r388 G4: each named only where it gives every answer (a gives, run on every case, the
     # passing ones too): "this wall's depth only", per case, named a six-decimal gap's 20
@@ -378,9 +385,9 @@ MISTAKES = [
             gives=lambda b: _of_gap(b, lambda g: math.ceil(math.log10(1 + 1 / g)))),
     # half a step's n and log₂(1 + 1/gap) rounded down are one bit short alike
     Mistake("a step short", lambda a, e, g: f": with {g} bits the gap is half a step or "
-            "more, short of a whole one (log₂(1 + 1/gap) rounded down?); two depths less than "
-            "a step apart are still stored alike wherever both round to the same whole number: "
-            "round up, to more than a whole step", fits=lambda a, e, g: g == e - 1),
+            f"more, short of a whole one{STEP_SHORT_FORM}; two depths less than a step apart "
+            "are still stored alike wherever both round to the same whole number: round up, "
+            "to more than a whole step", fits=lambda a, e, g: g == e - 1),
     Mistake("the intended pane", INTENDED, gives=lambda b: _bits(_gap(b, b.intended))),
 ]  # fmt: skip
 
@@ -393,16 +400,20 @@ HINTS = (
      "is"),
     (re.compile(r"; \d+ bits would be the answer for a gap above \S+( up to \S+)?; this pane's "
                 r"gap is \S+$"), ""),
+    # r399 F5: a bit short, the closed form waits for the full words
+    (STEP_SHORT_FORM, ""),
 )  # fmt: skip
 
 
 def _draw(ax, case, got):
     """The gap in steps of the student's n-bit buffer, gap · (2ⁿ − 1) (a cross, its value
     written), and the whole step (dashed) once the words give the rule (the hints spent) or
-    the answer passed (r388 G8): never the curve over n, whose crossing would be the answer."""
+    the answer passed (r388 G8): never the curve over n, whose crossing would be the answer.
+    Until then the axis is "the gap in steps", its formula unnamed (r399 F5)."""
     (b,) = case[1]
     artists = []
-    if tries.hints_spent("broken_frame_3_steps") or got == case[2]:
+    told = tries.hints_spent("broken_frame_3_steps") or got == case[2]
+    if told:
         artists.append(ax.axhline(1.0, color="#888888", linestyle="--"))
         artists.append(ax.annotate("a whole step", (0.01, 1.0), va="bottom", fontsize="x-small",
                                    xycoords=("axes fraction", "data")))  # fmt: skip
@@ -418,7 +429,10 @@ def _draw(ax, case, got):
         ax.set_xlim(got - 8, got + 8)
         ax.set_ylim(min(0.1, steps / 3), max(10, steps * 3))
     ax.set_xlabel("bits n of the depth buffer; ×: yours", fontsize="small")
-    ax.set_ylabel("gap · (2ⁿ − 1)", fontsize="small")
+    # r399 F5: the criterion's form only once the words give it
+    ax.set_ylabel(
+        "gap · (2ⁿ − 1)" if told else "the gap in steps of\nan n-bit buffer", fontsize="small"
+    )
     return artists
 
 

@@ -51,7 +51,8 @@ history (z-fighting: the wall's, r318); another record's value, or another field
 the list names (r377: said by triangle, field and frame); the evidence's value read off the
 other frame of the pair, only where the history the list names lacks it (r309: the intended
 frame's, or the broken frame's where the list asks the intended frame's; r377: with its
-record); a value that is not the evidence there (and a row and column, or the sliver's two
+record); a depth no history prints but a fragment's as its frame draws it (the trace,
+unrounded, r399: its triangle, frame and record said); a value that is not the evidence there (and a row and column, or the sliver's two
 numbers, swapped: said first).
 """
 
@@ -74,7 +75,7 @@ from ..pipeline.rendering.scenes import get_scene
 from .answers import refuse_non_answers, short
 from .exercise import Exercise, Mistake, PackageAnswer
 from .interrupt import transparent
-from .report import issued
+from .report import NOTHING_DRAWN_FOR, issued
 from .running import WrongAnswerType
 from .tries import FREE_CAUSES
 
@@ -756,9 +757,13 @@ def _evidence(number, cause: str, p: _Pixel) -> list:
 
 
 #: How far a value may be from the history's: half a unit of the last digit it prints (six
-#: decimals for depths, four for colours and distances), and a little more.
-_TOLERANCE = {"depth": 2e-6, "number": 6e-5, "colour": 1e-4, "pair": (6e-5, 2e-6),
-              "triangle": 0}  # fmt: skip
+#: decimals for depths, with float noise; four for colours and distances, and a little more).
+#: r399 F1, F4: 2e-6 for depths passed a depth 1.5e-6 off, and took frame 3's pane, drawn 1e-6
+#: in front of the wall, for the wall: half the sixth decimal is below the frames' smallest
+#: gap (1e-6), so 0.599999 is never 0.600000.
+_DEPTH_TOLERANCE = 5e-7 + 1e-12
+_TOLERANCE = {"depth": _DEPTH_TOLERANCE, "number": 6e-5, "colour": 1e-4,
+              "pair": (6e-5, _DEPTH_TOLERANCE), "triangle": 0}  # fmt: skip
 
 
 def _matches(kind: str, value, evidence: list) -> bool:
@@ -973,7 +978,8 @@ def _judged(number, got) -> tuple[str, _Pixel | None]:
     in the intended frame's history, not this frame's), "copied" (the frame shown's value,
     given for the redrawn one), "surface" (another surface's depth, :func:`_other_surface`),
     "other" (the evidence's value read off the other frame of the
-    pair, :func:`_mirrored`) or "evidence"."""
+    pair, :func:`_mirrored`), "drawn" (a fragment's depth as drawn, :func:`_drawn_source`)
+    or "evidence"."""
     if getattr(number, "nested", False):
         return "nested", None
     return _judged_on(_as_frame(number), got)
@@ -1014,6 +1020,10 @@ def _judged_on(b: BrokenFrame, got) -> tuple[str, _Pixel | None]:
         return "record", p
     if found is not None or _matches(kind, value, _mirrored(b, cause, p)[1]):
         return "other", p
+    # r399 F1, F2: a depth no history prints, but a fragment's as its frame draws it (the
+    # trace, unrounded; the histories print what the buffer stores)
+    if _drawn_source(b, cause, p, value) is not None:
+        return "drawn", p
     return "evidence", p
 
 
@@ -1027,6 +1037,41 @@ def _other_surface(cause: str, p: _Pixel, value):
     # surface is named first (the evidence itself is judged "right" before this is asked)
     return next((r for r in p.meant.records
                  if r.depth is not None and _matches("depth", value, [r.depth])), None)  # fmt: skip
+
+
+def _drawn_depth(frame: Frame, record, row: int, col: int) -> float:
+    """The depth ``record``'s fragment is drawn at (pixel (row, col)'s centre on the plane of
+    its triangle's window depths in the trace, unrounded): the history prints the depth the
+    buffer stores (a 16-bit buffer: rounded to its steps)."""
+    xyz = frame.trace.window[record.piece, :, :3]
+    if np.ptp(xyz[:, 2]) == 0:  # a flat triangle (the wall, a pane, a strip)
+        return float(xyz[0, 2])
+    try:
+        plane = np.linalg.solve(np.column_stack([xyz[:, :2], np.ones(3)]), xyz[:, 2])
+    except np.linalg.LinAlgError:
+        return float("nan")
+    return float(plane @ [col + 0.5, row + 0.5, 1.0])
+
+
+def _drawn_source(b: BrokenFrame, cause: str, p: _Pixel, value):
+    """(the wrong part's words, :class:`_Source`) for a depth that is not the evidence but a
+    fragment's depth at the pixel as its frame draws it (:func:`_drawn_depth`), the history
+    the list names searched first; None otherwise (and for the sliver's pair with a wrong
+    distance: that is said first)."""
+    for part, kind, x, meant in _evidence_parts(cause, value):
+        if kind != "depth":
+            continue
+        if cause == "sliver" and not _matches("number", value[0], _part_evidence(
+                b, cause, p, "distance")):  # fmt: skip
+            return None
+        for named, intended in ((True, meant), (False, not meant)):
+            frame, h = (b.intended, p.meant) if intended else (b.frame, p.mine)
+            r = next((r for r in h.records if r.depth is not None and np.isfinite(r.depth)
+                      and _matches(kind, x, [_drawn_depth(frame, r, h.row, h.col)])), None)  # fmt: skip
+            if r is not None:
+                whose = "the intended frame's" if intended else "the broken frame's"
+                return part, _Source(named, whose, r, ("depth as drawn",))
+    return None
 
 
 def _meant_numbers(b: BrokenFrame, cause: str, p: _Pixel) -> set:
@@ -1471,6 +1516,38 @@ def _surface_words(args, number, got) -> str:
     )
 
 
+def _drawn_words(args, number, got) -> str:
+    """A depth read off the trace (as a frame draws it) where the list asks for a depth as
+    the history prints it, stored (r399 F1: frame 3's pane as the broken frame draws it,
+    0.599999, was told "the depth of another surface", the wall's 0.600000; F2: the intended
+    pane as drawn, 0.599, was told only what it is not). Said: whose fragment, in which
+    frame, and whether it is the evidence's own surface."""
+    cause, (row, col), value = got
+    b = _as_frame(number)
+    p = _pixel(b, row, col)
+    part, src = _drawn_source(b, cause, p, value)
+    what = EVIDENCE[cause][1] if part == "value" else _PART_WORDS[part]
+    meant = next(m for w, _, _, m in _evidence_parts(cause, value) if w == part)
+    holder = _holder(b, cause, p, part)
+    frame = b.intended if src.whose == "the intended frame's" else b.frame
+    same = ""
+    if holder is not None and _key(frame, src.record.piece) == _key(
+        b.intended if meant else b.frame, holder.piece
+    ):
+        same = ("; the evidence's own fragment" if src.named else
+                "; the evidence's surface, but in the other frame of the pair")  # fmt: skip
+    bits = {"unorm16": "the 16-bit buffer", "unorm24": "the 24-bit buffer"}.get(
+        p.mine.depth_format, "the depth buffer"
+    )
+    r, whose = src.record, src.whose.removesuffix("'s")
+    return (f"{_yours(cause, part, value)} is triangle {r.triangle}'s depth as {whose} draws "
+            f"it ({src.state()}{same}): "
+            f"its trace's depth, frame.trace.window[{r.piece}, :, 2], unrounded, where the "
+            f"histories print each depth as {bits} stores it (rounded to its steps): the list "
+            f"asks for {what}, as the history prints it, with all six decimals. Read it off "
+            f"{_history_hint(number, row, col, 'the intended' if meant else what)}")  # fmt: skip
+
+
 def _other_look(number: int) -> str:
     """What the redrawn frame ``number`` changes (:class:`_Look`), in words: the cube has no
     wall or strip (r21 D6)."""
@@ -1540,6 +1617,7 @@ DIAGNOSIS_MISTAKES = (
     Mistake("another surface's depth", _surface_words, fits=_verdict("surface")),
     Mistake("another record's value", _record_words, fits=_verdict("record")),
     Mistake("the other frame's value", _other_frame_words, fits=_verdict("other")),
+    Mistake("a depth as drawn", _drawn_words, fits=_verdict("drawn")),
     Mistake("evidence", _evidence_words, fits=_verdict("evidence")),
 )
 
@@ -1701,3 +1779,10 @@ def frame_exercise(number: int) -> Exercise:
 EXERCISES = {
     f"broken_frame_{n}": (lambda n=n: frame_exercise(n)) for n in range(1, len(_SPECS) + 1)
 }
+
+# r399 F6: the stub's note says what these figures draw (the frames and your pixel, never the
+# evidence): NOTHING_DRAWN_YET promised "the rule's answer beside yours"
+NOTHING_DRAWN_FOR.update({name: (
+    "Nothing drawn yet: once your function returns answers, the check draws its first failing "
+    "case (or, when all pass, one of the cases): the frame as rendered beside the intended "
+    "one, your pixel marked on both, never the evidence") for name in EXERCISES})  # fmt: skip

@@ -988,7 +988,10 @@ def _make_room(ax, legend, highest: float, bottom: float, top: float) -> float:
     if not axes.height:
         return top
     share = (top - bottom) / (ax.get_ylim()[1] - bottom)  # the depth part's share
-    margin = 6.0  # pixels: a buffer marker's radius and a small gap
+    # a buffer marker's radius and a 5-pt gap, in pixels (r399 F7: 6 px, under the classroom
+    # style's 10-pt markers at its resolution, left the legend's edge on the ○ at 0.042)
+    size = max((line.get_markersize() for line in ax.lines), default=6.0)
+    margin = (size / 2 + 5.0) * ax.figure.dpi / 72
     below = (box.y0 - axes.y0 - margin) / axes.height / share  # of the depth part
     if below <= 0.2:  # (an Axes too small to hold both: keep the two-row room)
         return top
