@@ -1062,7 +1062,8 @@ def draw_span(ax, case, got):
     y = row + 0.5
     cross = crossings(xy, Fraction(2 * row + 1, 2))
     got_set = set() if got is None else set(got)
-    lo, hi = _window(xy, expected | got_set, cross)
+    moved = sorted(expected ^ got_set) if got is not None else []
+    lo, hi = _window(xy, expected | got_set, cross, moved[0] if moved else None)
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     artists.append(ax.axhline(y, color="#888888", linestyle=":", linewidth=1))
@@ -1094,7 +1095,9 @@ def draw_span(ax, case, got):
         artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo, hi)
     top, bottom = min(float(xy[:, 1].min()), y) - 1, max(float(xy[:, 1].max()), y) + 1
-    bottom = min(bottom, max(top, row - 6) + 14)  # a huge triangle: rows near this one
+    if bottom - top > 1000:  # a huge triangle: rows near this one (r385 T1: the far rows')
+        top = max(top, row - 6)
+    bottom = min(bottom, max(top, row - 6) + 14)
     # r372 F1: a sliver 1/256 px high collapsed the axes to a strip, its y-label into the
     # title: at least a third as many rows as columns, around the row
     tall = max(6.0, (hi - lo) / 3)
@@ -1102,6 +1105,12 @@ def draw_span(ax, case, got):
         middle = (top + bottom) / 2
         top, bottom = middle - tall / 2, middle + tall / 2
     ax.set_ylim(bottom, top)
+    if max(abs(lo), abs(top)) > 10**4:  # r385 T1: far rows, ticks in whole numbers (an offset
+        from matplotlib.ticker import MaxNLocator  # text ran into the x-label)
+
+        ax.ticklabel_format(useOffset=False, style="plain")
+        ax.xaxis.set_major_locator(MaxNLocator(4, integer=True))
+        ax.yaxis.set_major_locator(MaxNLocator(4, integer=True))
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
     ax.set_ylabel("y (px, down)", fontsize="small")
@@ -1132,7 +1141,7 @@ def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
     return out
 
 
-def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
+def _window(xy: np.ndarray, columns: set, cross, focus: int | None = None) -> tuple[int, int]:
     """The columns drawn: the triangle's, at most 40 of them, around the span when the
     triangle is wider (the wide cases are 10^12 px across; r372 F1: 64, so that the 60-px
     sliver shows both ends of its edge)."""
@@ -1141,6 +1150,8 @@ def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
     if hi - lo <= 64:
         return lo, hi
     centre = (min(columns) + max(columns)) // 2 if columns else lo + 20
+    if focus is not None:  # r385 T1: a span of 10^4 columns, wrong at one end: that end
+        return focus - 20, focus + 20
     if not columns and cross is not None:
         centre = math.floor((cross[0] + cross[1]) / 2)
     return centre - 20, centre + 20
