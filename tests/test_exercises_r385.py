@@ -119,3 +119,26 @@ def test_the_roles_on_a_horizontal_top_edge_follow_lesson_01():
     where = {t.get_text(): t.xy for t in texts}
     plt.close(fig)
     assert where["top"] == (6.5, 9.5) and where["middle"] == (9.5, 9.5), where
+
+
+def test_each_far_row_has_a_tie_that_float64_multiply_first_moves_right():
+    """Session 35 (r385 T1): on each far row a crossing lies exactly on a centre, and lesson
+    01's multiply-first crossing in float64, from the end the label names, lands a hair right
+    of it (first or stop one column too far right); the vertices lie in the stated range."""
+    from fractions import Fraction
+
+    for label, points, row in span_variants.FAR_TIES:
+        xy = np.array(points)
+        assert span_variants.FLOAT64_EXACT_BELOW < np.abs(xy).max() < span_variants.EXACT_BELOW
+        assert (xy * 256 == np.round(xy * 256)).all()
+        v = sorted(points, key=lambda p: p[1])
+        edge = {"long": (v[0], v[2]), "upper": (v[0], v[1]), "lower": (v[1], v[2])}
+        a, b = edge[label.split()[1]]
+        if "lower end" in label:
+            a, b = b, a
+        y = row + 0.5
+        exact = _on(a, b, y)
+        assert (exact - Fraction(1, 2)).denominator == 1, label  # on a centre
+        got = span_variants.float_crossing(a, b, y)
+        assert got > exact and math.ceil(got - 0.5) == math.ceil(exact - 0.5) + 1, label
+        assert exact in spans.crossings(xy, Fraction(2 * row + 1, 2)), label  # x_l or x_r
