@@ -2,29 +2,34 @@
 uses them): imported by tests/test_reasoning_exercises.py and tests/test_capstone.py."""
 
 import math
+from fractions import Fraction
 
 import numpy as np
 
 
 def span(xy, row):
-    y = row + 0.5
-    xs = []
+    # exact in integers (1/256-px units): in float64 a crossing's product rounds past 2^17 px
+    v = [(round(256 * float(x)), round(256 * float(y))) for x, y in xy]
+    y = 256 * int(row) + 128
+    xs = []  # crossings as (numerator, denominator > 0) in 1/256 px
     for k in range(3):
-        (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
+        (ax, ay), (bx, by) = v[k], v[(k + 1) % 3]
         if ay == by:
             if ay == y:
-                xs += [ax, bx]
+                xs += [(ax, 1), (bx, 1)]
         elif min(ay, by) <= y <= max(ay, by):
-            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
-    (ax, ay), (bx, by), (cx, cy) = xy
+            xs.append((ax * (by - ay) + (y - ay) * (bx - ax), by - ay) if by > ay else
+                      (ax * (ay - by) - (y - ay) * (bx - ax), ay - by))  # fmt: skip
+    (ax, ay), (bx, by), (cx, cy) = v
     if not xs or (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0:
         return 0, 0
-    left, right = min(xs), max(xs)
+    left = min(xs, key=lambda q: Fraction(*q))
+    right = max(xs, key=lambda q: Fraction(*q))
     for k in range(3):  # a horizontal edge on this line: covered only if it is a top edge
-        (ax, ay), (bx, by), (cx, cy) = xy[k], xy[(k + 1) % 3], xy[(k + 2) % 3]
+        (ax, ay), (bx, by), (cx, cy) = v[k], v[(k + 1) % 3], v[(k + 2) % 3]
         if ay == by == y and cy < y:
             return 0, 0
-    return math.ceil(left - 0.5), math.ceil(right - 0.5)
+    return tuple(-((128 * d - n) // (256 * d)) for n, d in (left, right))
 
 
 def perspective_weights(lam, w):

@@ -5491,3 +5491,62 @@ R399 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R399.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R399.items()})
+# == session 35 (fixex02v, exercise 2, span, r385 T1): the stated range is |x|, |y| < 2^30 px ===
+# Lesson 01's multiply-first crossing in float64 is exact below 2^17 px only (its §4b): copied
+# (r385 k8), or taken from each edge's lower end (k5), or the reasoning solutions' float form,
+# it lands a hair right of a tie on the far rows (span_variants.FAR_TIES).
+
+
+def _span_float64_lower(xy, row):
+    """The teacher's former span with every crossing multiplied first from the edge's lower
+    end (r385 k5): right below 2^17 px only."""
+    y = row + 0.5
+    (x1, y1), (x2, y2), (x3, y3) = v = sorted(
+        (tuple(map(float, p)) for p in xy), key=lambda p: p[1]
+    )
+    if (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1) == 0 or not y1 <= y <= y3 or y2 == y3 == y:
+        return 0, 0
+    if y1 == y2 == y:
+        return math.ceil(min(x1, x2) - 0.5), math.ceil(max(x1, x2) - 0.5)
+
+    def cross(a, b):  # from b, the lower end
+        return b[0] + (y - b[1]) * (a[0] - b[0]) / (a[1] - b[1])
+
+    x_long = cross(v[0], v[2])
+    x_short = cross(v[0], v[1]) if y < y2 else cross(v[1], v[2])
+    xl, xr = sorted((x_long, x_short))
+    return math.ceil(xl - 0.5), math.ceil(xr - 0.5)
+
+
+def _span_minmax_float64(xy, row):
+    """r385 H-list's correct form (crossings of every edge that reaches the line, min and max),
+    multiplied first in float64: the reasoning solutions' span before session 35."""
+    y = row + 0.5
+    xs = []
+    for k in range(3):
+        (ax, ay), (bx, by) = xy[k], xy[(k + 1) % 3]
+        if ay == by:
+            if ay == y:
+                xs += [ax, bx]
+        elif min(ay, by) <= y <= max(ay, by):
+            xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
+    (ax, ay), (bx, by), (cx, cy) = xy
+    if not xs or (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0:
+        return 0, 0
+    for k in range(3):
+        (ax, ay), (bx, by), (cx, cy) = xy[k], xy[(k + 1) % 3], xy[(k + 2) % 3]
+        if ay == by == y and cy < y:
+            return 0, 0
+    return math.ceil(min(xs) - 0.5), math.ceil(max(xs) - 0.5)
+
+
+R35_SPAN = {
+    "span, lesson 01's multiply-first crossing in float64": (
+        "span", _span_r372(), "your crossing was computed in float64", "float64 crossing"),
+    "span, multiplied first from each edge's lower end in float64": (
+        "span", _span_float64_lower, "from the edge's lower end it lands at", "float64 crossing"),
+    "span, every edge's crossing, min and max, in float64": (
+        "span", _span_minmax_float64, "float64 holds 53", "float64 crossing"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R35_SPAN.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R35_SPAN.items()})

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -53,16 +54,27 @@ def lesson_loop_span(xy, row):
     return int(np.ceil(x_left - 0.5)), int(np.ceil(x_right - 0.5))
 
 
-def test_the_teachers_solution_and_the_multiply_first_copy_pass():
+def test_the_teachers_solution_passes_and_the_multiply_first_copy_fails_far_out():
+    """Session 35 (r385 T1): multiply first in float64 is exact below 2^17 px only; the range
+    is 2^30 px now, and the copy fails on the far rows only, told it computed in float64."""
     assert ex.check("span", _teacher()).passed
-    assert ex.check("span", _span_r372()).passed
+    report = ex.check("span", _span_r372())
+    assert {f.kind for f in report.failures} == {"float64 crossing"}, str(report)
+    assert all(f.case.startswith("far out") for f in report.failures)
+    assert "float64 holds 53" in report.failures[0].explanation
+
+
+def _kinds(report) -> set:
+    """The kinds of the failures before the far rows (there a float64 student adds their
+    rounding to its mistake, and no mistake of the table is said)."""
+    return {f.kind for f in report.failures if not f.case.startswith("far out")}
 
 
 def test_lesson_01s_divide_first_loop_fails_on_big_and_names_the_order():
     """P1: the lesson's own crossing passed; rows 42, 46, 65 and 73 of ``big`` decide ties."""
     report = ex.check("span", lesson_loop_span)
     assert not report.passed
-    assert {f.kind for f in report.failures} == {"divide first"}
+    assert _kinds(report) == {"divide first"}
     first = report.failures[0]
     assert "row 42" in first.case and "your crossing divides first" in first.explanation
     assert "23.500000000000004, a hair right of the centre 23.5" in first.explanation
@@ -78,12 +90,12 @@ def test_each_r372_variant_fails_with_its_own_words(label):
     assert words in text, text
     assert report.failures[0].kind == kind
     if kind != "raised":
-        assert {f.kind for f in report.failures} == {kind}, text
+        assert _kinds(report) == {kind}, text
 
 
 def test_sorted_by_x_is_named_where_it_does_not_raise():
     report = ex.check("span", _span_r372(key=0))
-    named = [f for f in report.failures if f.kind != "raised"]
+    named = [f for f in report.failures if f.kind != "raised" and not f.case.startswith("far out")]
     assert named and all(f.kind == "sorted by x" for f in named)
     assert "you sorted the vertices by x" in named[0].explanation
 
@@ -94,12 +106,13 @@ def test_stop_first_is_never_said_of_a_student_mostly_right(side):
     report = ex.check("span", _span_r372(side=side))
     assert not report.passed and len(report.failures) < 40
     assert "you returned (stop, first)" not in str(report)
-    assert all(f.kind.startswith("side by") for f in report.failures)
+    assert all(f.kind.startswith("side by") for f in report.failures
+               if not f.case.startswith("far out"))  # fmt: skip
 
 
 def test_a_pair_returned_the_wrong_way_round_everywhere_is_still_named():
     report = ex.check("span", lambda xy, row: _teacher()(xy, row)[::-1])
-    assert {f.kind for f in report.failures} == {"first and stop swapped"}
+    assert _kinds(report) == {"first and stop swapped"}
 
 
 def extended_lines(xy, row):
@@ -126,7 +139,9 @@ def test_an_unnamed_mistake_gets_its_ends_against_the_exact_crossings_not_invent
     assert not report.passed
     # the fixed cases only: a case drawn afresh for the check depends on the random state the
     # tests before this one left (with -n 2 it drew a one-column-off case, kind "ends")
-    fixed = [f for f in report.failures if not f.case.startswith("drawn for this check")]
+    fixed = [
+        f for f in report.failures if not f.case.startswith(("drawn for this check", "far out"))
+    ]
     assert {f.kind for f in fixed} == {"value"}, str(report)
     first = fixed[0].explanation
     assert "stands for an x_" in first and "is exactly" in first and "on the " in first
@@ -146,9 +161,10 @@ def test_the_task_states_the_range_and_every_case_lies_in_it():
     """T1: exact for every snapped triangle in the range, the order of the crossing's
     operations the student's to choose and justify."""
     task = _cells()[2]
-    assert span_variants.EXACT_BELOW == 2**17
-    assert "|x|, |y| < 2^17 px" in task and f"({2**17:,} px)".replace(",", " ") in task
-    assert "lesson 01 §4b" in task and "negative ones too" in task
+    assert span_variants.EXACT_BELOW == 2**30
+    assert "|x|, |y| < 2^30 px" in task and f"({2**30:,} px)".replace(",", " ") in task
+    assert "exact only while |x|, |y| < 2^17 px" in task
+    assert "Lesson 01 §4b" in task and "negative ones too" in task
     for label, (xy, _), _ in spans.span_cases():
         if "10^12" not in label:
             assert np.abs(xy).max() < span_variants.EXACT_BELOW, label
@@ -239,7 +255,14 @@ def test_the_teachers_solution_is_exact_across_the_stated_range():
         assert np.abs(xy).max() < limit
         lo, hi = math.floor(xy[:, 1].min()) - 1, math.ceil(xy[:, 1].max()) + 1
         for row in rng.integers(lo, hi, 12):
-            got = set(range(*span(xy, int(row))))
-            assert got == spans.exact_columns(xy, int(row)), (xy.tolist(), int(row))
+            exact = spans.exact_columns(xy, int(row))
+            if exact is None:  # over 10^6 columns (a triangle across the range): its ends
+                exact = spans.crossings(xy, int(row) + 0.5)
+                got = span(xy, int(row))
+                want = tuple(math.ceil(x - Fraction(1, 2)) for x in exact)
+                assert tuple(got) == want, (xy.tolist(), int(row))
+            else:
+                got = set(range(*span(xy, int(row))))
+                assert got == exact, (xy.tolist(), int(row))
             checked += 1
     assert checked == 240 * 12

@@ -49,7 +49,8 @@ def test_each_r385_variant_fails_with_its_own_words(label):
     text = str(report)
     assert words in text, text
     assert report.failures[0].kind == kind, text
-    assert {f.kind for f in report.failures} <= {kind} | ALSO.get(label, set()), text
+    near = {f.kind for f in report.failures if not f.case.startswith("far out")}
+    assert near <= {kind} | ALSO.get(label, set()), text
 
 
 def test_no_top_edge_line_is_said_where_it_is_not_the_students_answer():
@@ -79,7 +80,7 @@ def test_an_epsilon_is_named_with_the_gap():
 def test_every_edge_has_a_tie_from_both_ends_and_the_near_ties_lie_in_range():
     """P4: each edge (long, upper, lower) has a case where divide first, slope first and the
     lerp land a hair right of a tie from each end; P5: the near ties lie under 10^-5 px right
-    of a centre, within |x|, |y| < 2^17."""
+    of a centre, within |x|, |y| < 2^17 (where float64's multiply first is exact)."""
     y_of = {}
     for points, row in span_variants.TIE_ENDS:
         v = sorted(points, key=lambda p: p[1])
@@ -96,7 +97,7 @@ def test_every_edge_has_a_tie_from_both_ends_and_the_near_ties_lie_in_range():
     assert len(y_of) == 18, sorted(y_of)
     for points, row in span_variants.NEAR_TIES:
         xy = np.array(points)
-        assert np.abs(xy).max() < span_variants.EXACT_BELOW
+        assert np.abs(xy).max() < span_variants.FLOAT64_EXACT_BELOW
         xl = spans.crossings(xy, row + 0.5)[0]
         assert 0 < xl - math.floor(xl) - 0.5 < 1e-6 or 0 < xl - math.floor(xl) + 0.5 < 1e-6
 
@@ -118,3 +119,26 @@ def test_the_roles_on_a_horizontal_top_edge_follow_lesson_01():
     where = {t.get_text(): t.xy for t in texts}
     plt.close(fig)
     assert where["top"] == (6.5, 9.5) and where["middle"] == (9.5, 9.5), where
+
+
+def test_each_far_row_has_a_tie_that_float64_multiply_first_moves_right():
+    """Session 35 (r385 T1): on each far row a crossing lies exactly on a centre, and lesson
+    01's multiply-first crossing in float64, from the end the label names, lands a hair right
+    of it (first or stop one column too far right); the vertices lie in the stated range."""
+    from fractions import Fraction
+
+    for label, points, row in span_variants.FAR_TIES:
+        xy = np.array(points)
+        assert span_variants.FLOAT64_EXACT_BELOW < np.abs(xy).max() < span_variants.EXACT_BELOW
+        assert (xy * 256 == np.round(xy * 256)).all()
+        v = sorted(points, key=lambda p: p[1])
+        edge = {"long": (v[0], v[2]), "upper": (v[0], v[1]), "lower": (v[1], v[2])}
+        a, b = edge[label.split()[1]]
+        if "lower end" in label:
+            a, b = b, a
+        y = row + 0.5
+        exact = _on(a, b, y)
+        assert (exact - Fraction(1, 2)).denominator == 1, label  # on a centre
+        got = span_variants.float_crossing(a, b, y)
+        assert got > exact and math.ceil(got - 0.5) == math.ceil(exact - 0.5) + 1, label
+        assert exact in spans.crossings(xy, Fraction(2 * row + 1, 2)), label  # x_l or x_r

@@ -92,12 +92,43 @@ FLOOR_ROWS = (
 
 ORDERS = ("multiply first", "divide first", "slope first")
 
-#: The range the task states (r372 T1): vertices on the 1/256-px grid with |x|, |y| below
-#: 2^17 px. A crossing multiplied first is exact there: its differences are multiples of 2^-8
-#: below 2^18 px, their product a multiple of 2^-16 below 2^36 px², 52 bits, exact in float64;
-#: lesson 01 §4b gives the rest of the proof (and 2^18 px for its own part). Every case lies
-#: within it but the triangle 10^12 px wide, whose asked rows are exact in any order.
-EXACT_BELOW = 2**17
+#: The range the task states (session 35, r385 T1): vertices on the 1/256-px grid with |x|,
+#: |y| below 2^30 px (256·x then needs 38 bits: every vertex is a float64 exactly). Lesson 01
+#: §4b proves its multiply-first crossing exact below 2^17 px only (differences below 2^18 px
+#: in 2^-8 steps, their product below 2^36 in 2^-16 steps: 52 bits); beyond, the product may
+#: need up to 2·39 = 78 bits (differences below 2^31 px in 2^-8 steps) and rounds, so a crossing exactly on a centre can land a hair off
+#: it (:data:`FAR_TIES`). Every case lies within the range but the triangle 10^12 px wide,
+#: whose asked rows are exact in any order.
+EXACT_BELOW = 2**30
+
+#: Below this, lesson 01's multiply-first crossing in float64 is exact (its §4b).
+FLOAT64_EXACT_BELOW = 2**17
+
+#: r385 T1: rows with a crossing exactly on a centre where lesson 01's multiply-first crossing
+#: in float64, x = a_x + (y − a_y)(b_x − a_x)/(b_y − a_y), lands a hair right of it (so a
+#: first or a stop one column too far right), on each edge (the long one, the upper and the
+#: lower short one), taken from its upper end and from its lower end (searched with numpy
+#: seed 35: edges about 10^9 px long on the 1/256-px grid through a centre near x = 0, the
+#: middle vertex 2^12 to 2^16 px off the long edge; the product needs over 53 bits). Their
+#: columns come from the exact crossings.
+FAR_TIES = (
+    ("the long edge, from its upper end", ((-471482858.58203125, -508593872.34765625),
+     (-349399692.828125, -388101312.828125), (280607075.94921875, 233802605.80859375)),
+     -44596074),
+    ("the long edge, from its lower end", ((-303250476.0546875, -429849303.7265625),
+     (100171454.09375, -8419525.63671875), (254840221.12890625, 153177908.85546875)),
+     -111834461),
+    ("the upper short edge, from its upper end", ((-233344274.79296875, -259334516.4609375),
+     (93194924.6171875, 141841776.484375), (138490108.6640625, 197542921.9921875)), 27219978),
+    ("the upper short edge, from its lower end", ((321815705.71875, -314069313.515625),
+     (-265173699.515625, 324955681.1796875), (-370372363.5703125, 439532792.0)), 34489774),
+    ("the lower short edge, from its upper end", ((-259184064.12109375, -485626579.921875),
+     (-201309143.53125, -405968103.7109375), (103014231.515625, 13282672.10546875)),
+     -126467587),
+    ("the lower short edge, from its lower end", ((494394810.92578125, -362998464.41015625),
+     (333897981.76171875, -242306986.03515625), (-200698615.45703125, 159675691.62109375)),
+     8932187),
+)  # fmt: skip
 
 
 def float_crossing(a, b, y: float, order: str = "multiply first") -> float:

@@ -32,6 +32,8 @@ from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
+    FAR_TIES,
+    FLOAT64_EXACT_BELOW,
     FLOOR_ROWS,
     NEAR_TIES,
     PLACED,
@@ -79,6 +81,7 @@ def _span_cases() -> list[tuple[str, tuple, frozenset]]:
         out.append((f"random far {k}, 100000 px from the origin, row {row} (float32 moves an "
                     "end)", (xy, row), covered[row]))  # fmt: skip
     out += _wide_cases() + _edge_cases() + _half_cases() + _r372_cases() + _r385_cases()
+    out += _far_cases()  # last: a mistake of the table is named on the rows before them
     # first (the drawing of a passing check, and the first failure most students see): a row
     # with covered centres whose crossings of two slanted edges lie on centres (r355 S2: a row
     # along a top edge, whose x_l and x_r are vertices, was called "the left edge")
@@ -238,6 +241,21 @@ def _r385_cases() -> list[tuple[str, tuple, frozenset]]:
     return out
 
 
+def _far_cases() -> list[tuple[str, tuple, frozenset]]:
+    """r385 T1 (session 35): rows 10^8 px out where lesson 01's multiply-first crossing, in
+    float64, lands a hair right of the centre it lies on exactly, on each edge from each end
+    (its §4b proves it exact below 2^17 px only); columns from the exact crossings."""
+    return [(f"far out, {label}, row {row} (a crossing exactly on a centre, 10^8 px out)",
+             (np.array(points), row), exact_columns(np.array(points), row))
+            for label, points, row in FAR_TIES]  # fmt: skip
+
+
+def _far(xy: np.ndarray) -> bool:
+    """Beyond the range where lesson 01's multiply-first crossing is exact in float64 (and no
+    wider than the 1/256-px grid holds: the 10^12-px triangle's rows are exact in any order)."""
+    return FLOAT64_EXACT_BELOW <= float(np.abs(xy).max()) < 2**30
+
+
 def _span_float32(xy: np.ndarray, row: int) -> frozenset | None:
     """The span of a student who computes the crossings in float32 (None: no crossing)."""
     v = np.asarray(xy, np.float32)
@@ -387,6 +405,8 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     reversed" also gave a missing bottom-edge rule's answer, so that second mistake was never
     named)."""
     out = {}
+    if _far(xy):  # r385 T1: a mistake of the table, made in float64 there, adds the rounding
+        return out  # of the far crossings to its own answer: none is said on these rows
     y = Fraction(2 * row + 1, 2)
     centre = crossings(xy, y)
     half = Fraction(1, 2)
@@ -880,6 +900,50 @@ def _rounds_words(args, expected, got) -> str:
             "the 1/256-px grid? (lesson 01 §4b)")  # fmt: skip
 
 
+def _float64_of(args, end: int, x: Fraction) -> tuple[str, float, int] | None:
+    """(which end of the edge, the multiply-first crossing in float64, the significant bits of
+    its product (y − a_y)(b_x − a_x) on the 1/256-px grid) where that crossing gives ``end``
+    at the tie x (None: it gives the right end, or x lies on no slanted edge)."""
+    xy, row = args
+    edge = _tie_edge(xy, row, x)
+    if edge is None:
+        return None
+    y = row + 0.5
+    for a, b, start in ((*edge, "upper"), (edge[1], edge[0], "lower")):
+        value = float_crossing(a, b, y)
+        if value > x and math.ceil(value - 0.5) == end:
+            n = abs(int(256 * (Fraction(y) - Fraction(a[1])) * 256 * Fraction(b[0] - a[0])))
+            return start, value, n.bit_length() - (n & -n).bit_length() + 1
+    return None
+
+
+def _float64_fits(args, expected, got) -> bool | None:
+    """r385 T1: far out (beyond 2^17 px), every wrong end one column right of a crossing
+    exactly on a centre; None (no say) nearer in, where float64 multiply-first is exact."""
+    if not _far(args[0]):
+        return None
+    return bool(_ties_off(args, got))
+
+
+def _float64_words(args, expected, got) -> str:
+    xy, row = args
+    name, end, x = _ties_off(args, got)[0]
+    side = "x_l" if name == "first" else "x_r"
+    found = _float64_of(args, end, x)
+    if found is None:  # another rounding order: said as such
+        return _rounds_words(args, expected, got)
+    start, value, bits = found
+    far = math.log2(float(np.abs(xy).max()))
+    return (f"on {_edge_of(xy, row, x)} {side} is exactly {_frac(x)}, a centre, and your "
+            f"{name} {end} means yours came out a hair right of it: your crossing was computed "
+            f"in float64 (multiplied first from the edge's {start} end it lands at {value!r}). "
+            f"With vertices near 2^{far:.0f} px the product (y − a_y)(b_x − a_x) needs {bits} "
+            "bits on the 1/256-px grid, and float64 holds 53, so it rounds (lesson 01 §4b "
+            "proves that order exact below 2^17 px only): compute the crossing, and its "
+            "rounding to a column, exactly, without floats (integers in 1/256-px units, or "
+            "fractions.Fraction)")  # fmt: skip
+
+
 def _near_off(args, got) -> list[tuple[str, int, Fraction]] | None:
     """Each end one column left of the exact one, where the crossing lies a hair (under
     10^-5 px) right of a centre, not on it (None: another difference, or none)."""
@@ -950,6 +1014,8 @@ SYMPTOMS = (
     # r385 P4, H2: a crossing that rounds at a tie (quoted where a usual formula gives it),
     # float32's t named as float32, an epsilon on the ends, x_l and x_r swapped on a row
     # (only where every failing answer is such a tie: one end off at a tie is no cause alone)
+    # r385 T1 (session 35): lesson 01's multiply-first order in float64, past 2^17 px
+    Mistake("float64 crossing", _float64_words, fits=_float64_fits, symptom=True),
     Mistake("crossing rounds", _rounds_words, fits=_rounds_fits, symptom=True, only_whole=True),
     Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
@@ -996,7 +1062,8 @@ def draw_span(ax, case, got):
     y = row + 0.5
     cross = crossings(xy, Fraction(2 * row + 1, 2))
     got_set = set() if got is None else set(got)
-    lo, hi = _window(xy, expected | got_set, cross)
+    moved = sorted(expected ^ got_set) if got is not None else []
+    lo, hi = _window(xy, expected | got_set, cross, moved[0] if moved else None)
     ring = np.vstack([xy, xy[:1]])
     artists = ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1)
     artists.append(ax.axhline(y, color="#888888", linestyle=":", linewidth=1))
@@ -1028,7 +1095,9 @@ def draw_span(ax, case, got):
         artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo, hi)
     top, bottom = min(float(xy[:, 1].min()), y) - 1, max(float(xy[:, 1].max()), y) + 1
-    bottom = min(bottom, max(top, row - 6) + 14)  # a huge triangle: rows near this one
+    if bottom - top > 1000:  # a huge triangle: rows near this one (r385 T1: the far rows')
+        top = max(top, row - 6)
+    bottom = min(bottom, max(top, row - 6) + 14)
     # r372 F1: a sliver 1/256 px high collapsed the axes to a strip, its y-label into the
     # title: at least a third as many rows as columns, around the row
     tall = max(6.0, (hi - lo) / 3)
@@ -1036,6 +1105,12 @@ def draw_span(ax, case, got):
         middle = (top + bottom) / 2
         top, bottom = middle - tall / 2, middle + tall / 2
     ax.set_ylim(bottom, top)
+    if max(abs(lo), abs(top)) > 10**4:  # r385 T1: far rows, ticks in whole numbers (an offset
+        from matplotlib.ticker import MaxNLocator  # text ran into the x-label)
+
+        ax.ticklabel_format(useOffset=False, style="plain")
+        ax.xaxis.set_major_locator(MaxNLocator(4, integer=True))
+        ax.yaxis.set_major_locator(MaxNLocator(4, integer=True))
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
     ax.set_ylabel("y (px, down)", fontsize="small")
@@ -1066,7 +1141,7 @@ def _roles(ax, xy: np.ndarray, lo: int, hi: int) -> list:
     return out
 
 
-def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
+def _window(xy: np.ndarray, columns: set, cross, focus: int | None = None) -> tuple[int, int]:
     """The columns drawn: the triangle's, at most 40 of them, around the span when the
     triangle is wider (the wide cases are 10^12 px across; r372 F1: 64, so that the 60-px
     sliver shows both ends of its edge)."""
@@ -1075,6 +1150,8 @@ def _window(xy: np.ndarray, columns: set, cross) -> tuple[int, int]:
     if hi - lo <= 64:
         return lo, hi
     centre = (min(columns) + max(columns)) // 2 if columns else lo + 20
+    if focus is not None:  # r385 T1: a span of 10^4 columns, wrong at one end: that end
+        return focus - 20, focus + 20
     if not columns and cross is not None:
         centre = math.floor((cross[0] + cross[1]) / 2)
     return centre - 20, centre + 20
@@ -1098,9 +1175,23 @@ def _mistakes() -> list[Mistake]:
             m = dataclasses.replace(m, must_fit=_changes(m.gives))
             # r372 M4: and only where it contradicts no passing answer
             m = dataclasses.replace(m, consistent=True)
+        elif m.fits is not None and m.kind != "float64 crossing":
+            m = dataclasses.replace(m, fits=_near_only(m.fits))
         whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped")
         out.append(dataclasses.replace(m, only_whole=True) if whole else m)
     return out
+
+
+def _near_only(fits):
+    """A symptom's ``fits`` that says nothing (None) on the far rows (r385 T1): there a student
+    in float64 adds the far crossings' rounding to any other mistake, and a symptom named only
+    where it fits every failing answer (an epsilon, a rounding order, one end off) would lose
+    its name for it; those rows are the "float64 crossing" symptom's."""
+
+    def near(args, expected, got):
+        return None if _far(args[0]) else fits(args, expected, got)
+
+    return near
 
 
 def _changes(gives):
