@@ -45,9 +45,10 @@ WHAT = ("((absolute bits, type), (relative bits, type)), each type one of "
         f"{', '.join(TYPES)} or None")  # fmt: skip
 #: (range_bits, across, sub_bits): the task's own range first, then others, chosen so that
 #: every slip fails a case (counts at a type's edge: 32 and 54 bits; 26 and 58, between an
-#: int's and a float's; 66, which no type holds; a grid without sub-pixel bits).
+#: int's and a float's; 66, which no type holds; a grid of 1/2 px). Never 0 sub-pixel bits:
+#: pixel centres, at k + ½, would lie off the grid (a bit more: lesson 06's centre bit).
 RANGES = ((20, 1024, 8), (16, 64, 4), (10, 16, 8), (11, 256, 4), (18, 512, 8), (23, 2048, 8),
-          (24, 4096, 8), (8, 8, 2), (12, 32, 0))  # fmt: skip
+          (24, 4096, 8), (8, 8, 2), (12, 32, 1))  # fmt: skip
 
 
 def budgets(range_bits: int, across: int, sub_bits: int) -> dict[str, BitBudget]:
@@ -72,7 +73,7 @@ def answer(range_bits: int, across: int, sub_bits: int) -> tuple:
 
 
 def _label(range_bits: int, across: int, sub_bits: int) -> str:
-    grid = "whole pixels" if sub_bits == 0 else f"the 1/{2**sub_bits}-px grid"
+    grid = f"the 1/{2**sub_bits}-px grid"
     return (f"edge_bits({range_bits}, {across}, {sub_bits}): vertices on {grid}, coordinates "
             f"below 2^{range_bits} px, differences below {across:,} px")  # fmt: skip
 
