@@ -297,6 +297,23 @@ def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
     return trilinear(pyramid, mu @ uv / mu.sum(), lod, wrap)
 
 
+def edge_bits(range_bits, across, sub_bits):
+    """Exercise 10.1 (r394 T1): the bits E needs, term by term and sign included, in the
+    absolute form (coordinates) and the relative one (differences), and the first type that
+    holds them exactly."""
+
+    def held(name):
+        t = np.dtype(name)
+        return np.finfo(t).nmant + 2 if t.kind == "f" else np.iinfo(t).bits
+
+    out = []
+    for factor in (range_bits + sub_bits, int(np.log2(across)) + sub_bits):
+        bits = 2 * factor + 2
+        types = [t for t in ("float32", "int32", "float64", "int64") if held(t) >= bits]
+        out.append((bits, types[0] if types else None))
+    return tuple(out)
+
+
 CORRECT = {
     "span": span,
     "perspective_weights": perspective_weights,
@@ -307,6 +324,7 @@ CORRECT = {
     "reverse_z_worst": reverse_z_worst,
     "decal_bias": decal_bias,
     "depth_setup": depth_setup,
+    "edge_bits": edge_bits,
     "robust_fill": robust_fill,
     "quad_derivatives": quad_derivatives,
     "pixel_lod": pixel_lod,

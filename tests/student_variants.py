@@ -5550,3 +5550,102 @@ R35_SPAN = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R35_SPAN.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R35_SPAN.items()})
+
+
+# == r394 T1: exercise 10.1's edge_bits, the precision argument as numbers ======================
+# Written apart from the checker's knobs: each counts the bits in its own way.
+_EXACT = (("float32", 25), ("int32", 32), ("float64", 54), ("int64", 64))
+
+
+def _eb_type(bits, held=_EXACT):
+    return next((name for name, n in held if n >= bits), None)
+
+
+def _eb(count, held=_EXACT, swap=False, absolute=None):
+    """edge_bits from ``count(factor bits, factor bits, sub_bits)`` per form."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        rel = across.bit_length() - 1 + sub_bits  # across is a power of two
+        ab = range_bits + sub_bits
+        n_abs = count(ab, rel if absolute == "A·x" else ab, sub_bits)
+        n_rel = count(rel, rel, sub_bits)
+        out = ((n_abs, _eb_type(n_abs, held)), (n_rel, _eb_type(n_rel, held)))
+        return out[::-1] if swap else out
+
+    return edge_bits
+
+
+def _eb_round_trip(range_bits, across, sub_bits):
+    """The largest values themselves, and each type tried on the largest whole number."""
+    out = []
+    for limit in (2**range_bits, across):
+        top = limit * 2**sub_bits - 1  # the largest factor, in steps of the grid
+        bits = (2 * top * top).bit_length() + 1  # a difference of two products, and a sign
+        big = 2 ** (bits - 1) - 1
+        kind = None
+        for name in ("float32", "int32", "float64", "int64"):
+            t = np.dtype(name)
+            if (t.kind == "f" and int(t.type(big)) == big and int(t.type(-big)) == -big) or (
+                t.kind == "i" and np.iinfo(t).max >= big
+            ):
+                kind = name
+                break
+        out.append([bits, kind])
+    return out
+
+
+R394_EDGE_BITS_DIFFERENT = {
+    "edge bits from the largest values, types by a round trip": ("edge_bits", _eb_round_trip),
+    "edge bits as a dict of numpy types": (
+        "edge_bits",
+        lambda r, a, s: {form: (np.int64(n), None if t is None else getattr(np, t))
+                         for form, (n, t) in zip(("absolute", "relative"),
+                                                 _eb(lambda k, m, s: k + m + 2)(r, a, s))}),
+    "edge bits as floats and upper-case names": (
+        "edge_bits",
+        lambda r, a, s: [(float(n), t.upper() if t else "none")
+                         for n, t in _eb(lambda k, m, s: k + m + 2)(r, a, s)]),
+}  # fmt: skip
+DIFFERENT.update(R394_EDGE_BITS_DIFFERENT)
+
+#: label: (name, fn, words in the first explanation, kind of the first failure).
+R394_EDGE_BITS = {
+    "edge bits without the sign bit": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 1, held=(("float32", 24), ("int32", 31),
+                                                           ("float64", 53), ("int64", 63))),
+        "one bit short", "one bit short"),
+    "edge bits without the difference's bit": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 1), "one bit short", "one bit short"),
+    "edge bits with a bit to spare": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 3), "one bit too many", "one bit too many"),
+    "edge bits in whole pixels": (
+        "edge_bits", _eb(lambda k, m, s: k + m - 2 * s + 2), "you count whole pixels",
+        "no sub-pixel bits"),
+    "edge bits with the sub-pixel bits once": (
+        "edge_bits", _eb(lambda k, m, s: k + m - s + 2), "sub-pixel bits once per product",
+        "sub-pixel bits once"),
+    "edge bits with the factors' bits multiplied": (
+        "edge_bits", _eb(lambda k, m, s: k * m + 2), "you multiply bits", "bits multiplied"),
+    "edge bits with A·x as the absolute form's largest product": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 2, absolute="A·x"), "takes A·x",
+        "A·x as the largest product"),
+    "edge bits with the forms swapped": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 2, swap=True),
+        "your absolute and relative answers are swapped", "forms swapped"),
+    "edge bits with float64 holding 64 bits": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 2, held=(("float32", 32), ("int32", 32),
+                                                           ("float64", 64), ("int64", 64))),
+        "you take a type's width for what it holds", "a type's width for what it holds"),
+    "edge bits with a float's sign bit left out": (
+        "edge_bits", _eb(lambda k, m, s: k + m + 2, held=(("float32", 24), ("int32", 32),
+                                                           ("float64", 53), ("int64", 64))),
+        "you take a float to hold its significand's bits only", "a float's sign bit not counted"),
+    "edge bits in whole pixels, forms swapped": (
+        "edge_bits", _eb(lambda k, m, s: k + m - 2 * s + 2, swap=True), "you count whole pixels",
+        "no sub-pixel bits and forms swapped"),
+    "edge bits typed in": (
+        "edge_bits", lambda r, a, s: ((58, "int64"), (38, "float64")),
+        "on every case, whatever its arguments", "constant"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R394_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R394_EDGE_BITS.items()})

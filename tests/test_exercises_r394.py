@@ -2,16 +2,24 @@
 covered is told its zero area, not "covers every pixel"; "you read origin as (x, y)" and
 "E > 0" are said only where they give every answer; the "must flip the sign" advice only where
 the answer is that of a function that never orients; a (width, height) early return is told
-its shape, not a transpose."""
+its shape, not a transpose. T1: exercise 10.1, ``edge_bits``, asks the precision argument as
+numbers (the bits E needs in either form, and the type that holds them), before any text that
+answers it."""
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import numpy as np
 import pytest
-from student_variants import R386, R394
+from student_variants import R386, R394, R394_EDGE_BITS, R394_EDGE_BITS_DIFFERENT
 
 from teachraster import exercises as ex
+from teachraster.exercises import edge_bits as eb
 from teachraster.exercises import hard_case_fill as hcf
+from teachraster.exercises import hard_case_precision as hcp
+from teachraster.exercises import tries
 
 
 @pytest.mark.parametrize("label", list(R394))
@@ -47,3 +55,98 @@ def test_a_width_height_early_return_is_told_its_shape_not_a_transpose():
     text = report.failures[0].explanation
     assert "your image has shape (8, 4), (width, height) (an early return" in text, text
     assert "no .T" not in text and "transposed" not in text, text
+
+
+# -- T1: exercise 10.1, edge_bits ----------------------------------------------------------------
+NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/10_hard_cases.ipynb"
+
+
+def _cells() -> dict[str, str]:
+    nb = json.loads(NOTEBOOK.read_text(encoding="utf-8"))
+    return {c["metadata"]["nbgrader"]["grade_id"]: "".join(c["source"]) for c in nb["cells"]}
+
+
+def _teacher():
+    namespace = {"np": np}
+    source = _cells()["edge_bits_solution"]
+    exec(source.replace("### BEGIN SOLUTION", "").replace("### END SOLUTION", ""), namespace)
+    return namespace["edge_bits"]
+
+
+def test_the_teachers_edge_bits_passes_and_its_answer_comes_from_lesson_06s_count():
+    from teachraster.core.fixed_point import range_budget
+
+    fn = _teacher()
+    assert ex.check("edge_bits", fn).passed
+    (ab, at), (rb, rt) = fn(20, 1024, 8)
+    assert (ab, rb) == (range_budget(2**20, 8).needed, range_budget(1024, 8).needed)
+    assert (at, rt) == (hcp.narrowest(ab), hcp.narrowest(rb)) == ("int64", "float64")
+    # the ranges differ in every part, so that a typed answer fails
+    answers = [eb.answer(*args) for args in eb.RANGES]
+    assert len({a for a, _ in answers}) > 5 and len({t for a in answers for _, t in a}) == 5
+
+
+@pytest.mark.parametrize("label", list(R394_EDGE_BITS_DIFFERENT))
+def test_edge_bits_written_differently_passes(label):
+    assert ex.check("edge_bits", R394_EDGE_BITS_DIFFERENT[label][1]).passed
+
+
+@pytest.mark.parametrize("label", list(R394_EDGE_BITS))
+def test_each_edge_bits_slip_is_named_with_its_numbers(label):
+    _, fn, words, kind = R394_EDGE_BITS[label]
+    tries.forget_hints("edge_bits")
+    report = ex.check("edge_bits", fn)
+    assert not report.passed
+    first = report.failures[0]
+    assert words in first.explanation and first.kind == kind, str(report)
+    assert "float32" not in first.explanation, first.explanation  # never a precision diagnosis
+
+
+def test_the_worked_count_is_said_once_two_answers_have_failed():
+    tries.forget_hints("edge_bits")
+    first = ex.check("edge_bits", lambda r, a, s: ((r + s, "int64"), (a, "float64")))
+    assert "(worked:" not in str(first) and "a product's bits are" not in str(first)
+    second = ex.check("edge_bits", lambda r, a, s: ((r + s + 1, "int64"), (a, "float64")))
+    text = str(second)
+    assert "(worked: the absolute form's coordinates are below 2^28 steps" in text, text
+    assert "58 bits with the sign: a 64-bit int" in text, text
+    tries.forget_hints("edge_bits")
+
+
+def test_edge_bits_asks_before_any_text_answers_and_gives_the_facts_not_the_count():
+    cells = _cells()
+    order = list(cells)
+    assert order.index("edge_bits_task") < order.index("robust_fill_task")
+    task = cells["edge_bits_task"]
+    for fact in (
+        "1/2^s px",
+        "2^`range_bits` px",
+        "`across` px",
+        "2²⁰ px, 1,024 px across",
+        "8 sub-pixel bits",
+        "sign bit included",
+        "term by term",
+        "several ranges",
+    ):
+        assert fact in task, fact
+    for answer in ("58", "38", "2k + 2", "54", "25 bits", "nmant"):
+        assert answer not in task, answer
+    # the 10.2 task (and the naive fill's report before it) say no count of bits
+    assert "bits" not in cells["naive_text"] and "bits" not in cells["robust_fill_task"]
+    assert "### BEGIN SOLUTION" in cells["edge_bits_solution"]
+    assert 'ex.check("edge_bits", edge_bits)' in cells["edge_bits_check"]
+
+
+def test_lesson_06s_count_called_is_not_counted():
+    from teachraster.core.fixed_point import range_budget
+
+    def edge_bits(range_bits, across, sub_bits):
+        out = []
+        for limit in (2**range_bits, across):
+            n = range_budget(limit, sub_bits).needed
+            out.append((n, hcp.narrowest(n)))
+        return tuple(out)
+
+    report = ex.check("edge_bits", edge_bits)
+    assert not report.passed and report.package is not None, str(report)
+    assert not report.failures, str(report)  # right on every case, but not counted

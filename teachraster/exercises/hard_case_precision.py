@@ -35,6 +35,31 @@ FLOAT32_CASES = {
 STEP = 2.0**-16
 
 
+#: The types exercise 10.1 (:mod:`.edge_bits`) names, in order of the bits each holds exactly.
+TYPES = ("float32", "int32", "float64", "int64")
+
+
+def exact_bits(name: str) -> int:
+    """The bits, sign included, of the whole numbers type ``name`` holds exactly: a float's
+    significand (its hidden bit counted) and its sign bit, an integer's width.
+
+    >>> [exact_bits(t) for t in TYPES]
+    [25, 32, 54, 64]
+    """
+    t = np.dtype(name)
+    return int(np.finfo(t).nmant + 2 if t.kind == "f" else np.iinfo(t).bits)
+
+
+def narrowest(bits: int, held=exact_bits) -> str | None:
+    """The first of :data:`TYPES` that holds ``bits`` bits (sign included) exactly, by
+    ``held`` (None: none of them).
+
+    >>> narrowest(38), narrowest(58), narrowest(66)
+    ('float64', 'int64', None)
+    """
+    return next((t for t in TYPES if held(t) >= bits), None)
+
+
 def centre_grid(origin, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
     """The window's pixel centres, y as a column and x as a row (broadcast to (height, width)):
     row i and column j of the window whose first pixel is ``origin`` = (row, col).
@@ -123,14 +148,15 @@ def float32_words(args, expected, got) -> str:
     most = max(float(sizes.max()) for _, sizes in values)
     bits = int(np.ceil(np.log2(most / STEP)))
     across = float(np.ptp(s, axis=0).max())
-    return (f"you compute E in float32, which holds 24 bits: on this triangle, {across:,.0f} px "
-            f"across, E's products reach {most:,.0f} px², about {bits} bits in steps of "
+    held32, held64 = exact_bits("float32") - 1, exact_bits("float64") - 1  # without the sign
+    return (f"you compute E in float32, which holds {held32} bits: on this triangle, "
+            f"{across:,.0f} px across, E's products reach {most:,.0f} px², about {bits} bits in steps of "
             f"2⁻¹⁶ px², and float32's numbers there are {float(np.spacing(np.float32(size))):g} "
             f"px² apart; at pixel [{i}, {j}] the exact E on edge v{k + 1}→v{(k + 1) % 3 + 1} is "
             f"{int(round(e / STEP))} · 2⁻¹⁶ = {e:.3g} px², {'inside' if inside else 'outside'} "
             "by less than float32's rounding, which puts it on the other side; compute E in "
-            "float64 from differences to a vertex (exact here: 53 bits) or in int64, directly "
-            "at each centre rather than stepped")  # fmt: skip
+            f"float64 from differences to a vertex (exact here: {held64} bits) or in int64, "
+            "directly at each centre rather than stepped")  # fmt: skip
 
 
 def refused_or_raw_words(args, expected, got) -> str:

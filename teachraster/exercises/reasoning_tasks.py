@@ -14,7 +14,9 @@ typical mistakes), defined in its own module:
   ``decal_bias`` (05b, :mod:`.decal_bias`): the depth offset a tilted decal needs;
   ``depth_setup`` (05b, :mod:`.depth_setup`): unorm24 or float32 reverse-Z for a scene, and
   its near plane, from the student's own ``safe_near`` and ``reverse_z_gap``;
-- ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser against the catalogue;
+- ``edge_bits`` (07 with 06, :mod:`.edge_bits`): the bits E needs in either form, and the
+  type that holds them; ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser
+  against the catalogue;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`; still checked, for notebooks of earlier
   versions), ``pixel_lod`` (09, :mod:`.pixel_level`: the quad differences, ρ and λ composed, in
   place of ``mip_level`` and ``quad_derivatives``), ``pixel_sample`` (09, :mod:`.pixel_sampler`:
@@ -34,6 +36,7 @@ from . import broken_frames as bf
 from . import clip_colour as cc
 from . import decal_bias as db
 from . import depth_setup as ds
+from . import edge_bits as eb
 from . import front_to_back as fb
 from . import hard_case_fill as hf
 from . import hiz_tile as hz
@@ -59,6 +62,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "reverse_z_worst": lambda: rzw.REVERSE_Z_WORST,
     "decal_bias": lambda: db.DECAL_BIAS,
     "depth_setup": lambda: ds.DEPTH_SETUP,
+    "edge_bits": lambda: eb.EDGE_BITS,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "pixel_lod": lambda: pl.PIXEL_LOD,

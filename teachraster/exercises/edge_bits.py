@@ -1,0 +1,303 @@
+"""Exercise ``edge_bits`` (exercise 10.1, lessons 06 and 07; r394 T1): how many bits E needs.
+
+r394 T1: exercise 10's one graded task, ``robust_fill``, was lesson 07's "Your turn, Part 2"
+written in y-down; nothing graded asked why float64 from differences is exact where float32
+and A·x + B·y + C are not. This task asks it as numbers, for any range: vertices on the
+``1/2**sub_bits``-px grid, every coordinate below ``2**range_bits`` px in size, every difference
+the relative form takes (vertex to vertex, centre to vertex) below ``across`` px. For each form
+of E, the width of the narrowest signed whole number (sign bit included) that holds its largest
+product and the difference of two such, counted term by term in steps of the grid as lesson 06
+counts (:func:`teachraster.core.fixed_point.range_budget`, the one count: the absolute form's
+largest product multiplies two coordinates, the relative form's two differences), and the first
+of float32, int32, float64, int64 that holds that many bits exactly
+(:func:`.hard_case_precision.narrowest`). The task's own range, 2²⁰ px and 1,024 px on the
+1/256-px grid, gives 58 bits (int64: float64's 54 do not hold C = a.x·b.y − a.y·b.x) and 38
+(float64).
+
+The check runs several ranges, so a typed answer fails. Each slip is a knob of one wrong
+solution (:data:`KNOBS`), alone or two at once, named only where it gives the answer: one bit
+short (the sign bit, or the difference's bit, left out), one too many, the sub-pixel bits left
+out or counted once, bits multiplied where a product adds them, A·x taken as the absolute form's
+largest product, the two forms swapped, a type's width taken for what it holds exactly, a
+float's sign bit not counted. The worked count of each form is said once two different answers
+have failed (:data:`HINTS`).
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from ..core.fixed_point import BitBudget, range_budget
+from ..study.operation_counts import edge_bits_needed
+from . import tries
+from .answers import refuse_non_answers, short
+from .exercise import Exercise, Knobs, PackageAnswer, Slip
+from .hard_case_precision import TYPES, exact_bits, narrowest
+from .report import NOTHING_DRAWN_FOR
+from .running import WrongAnswerType
+
+#: The two forms of E, in the order the answer gives them.
+FORMS = ("absolute", "relative")
+#: What the answer is, as the refusals say it.
+WHAT = ("((absolute bits, type), (relative bits, type)), each type one of "
+        f"{', '.join(TYPES)} or None")  # fmt: skip
+#: (range_bits, across, sub_bits): the task's own range first, then others, chosen so that
+#: every slip fails a case (counts at a type's edge: 32 and 54 bits; 26 and 58, between an
+#: int's and a float's; 66, which no type holds; a grid of 1/2 px). Never 0 sub-pixel bits:
+#: pixel centres, at k + ½, would lie off the grid (a bit more: lesson 06's centre bit).
+RANGES = ((20, 1024, 8), (16, 64, 4), (10, 16, 8), (11, 256, 4), (18, 512, 8), (23, 2048, 8),
+          (24, 4096, 8), (8, 8, 2), (12, 32, 1))  # fmt: skip
+
+
+def budgets(range_bits: int, across: int, sub_bits: int) -> dict[str, BitBudget]:
+    """Each form's count: the absolute form multiplies coordinates below ``2**range_bits`` px,
+    the relative form differences below ``across`` px, on the ``1/2**sub_bits`` grid.
+
+    >>> {form: b.needed for form, b in budgets(20, 1024, 8).items()}
+    {'absolute': 58, 'relative': 38}
+    """
+    return {"absolute": range_budget(2**range_bits, sub_bits),
+            "relative": range_budget(across, sub_bits)}  # fmt: skip
+
+
+def answer(range_bits: int, across: int, sub_bits: int) -> tuple:
+    """((bits, type), (bits, type)) for the absolute form and the relative one.
+
+    >>> answer(20, 1024, 8)
+    ((58, 'int64'), (38, 'float64'))
+    """
+    return tuple((b.needed, narrowest(b.needed)) for b in budgets(range_bits, across,
+                                                                   sub_bits).values())  # fmt: skip
+
+
+def _label(range_bits: int, across: int, sub_bits: int) -> str:
+    grid = f"the 1/{2**sub_bits}-px grid"
+    return (f"edge_bits({range_bits}, {across}, {sub_bits}): vertices on {grid}, coordinates "
+            f"below 2^{range_bits} px, differences below {across:,} px")  # fmt: skip
+
+
+def cases() -> list[tuple[str, tuple, tuple]]:
+    return [(_label(*args), args, answer(*args)) for args in RANGES]
+
+
+def _type(value, form: str):
+    """A type as its name (a string, a numpy type or dtype; None or "none": no type holds it)."""
+    if value is None or (isinstance(value, str) and value.strip().lower() in ("none", "")):
+        return None
+    name = value.strip().lower().removeprefix("np.").removeprefix("numpy.") if isinstance(
+        value, str) else None  # fmt: skip
+    try:
+        name = np.dtype(name if name is not None else value).name
+    except TypeError:
+        name = None
+    if name not in TYPES:
+        raise WrongAnswerType(f"returned {short(value)} as the {form} form's type: one of "
+                              f"{', '.join(map(repr, TYPES))}, or None")  # fmt: skip
+    return name
+
+
+def _bits(value, form: str) -> int:
+    if isinstance(value, bool | np.bool_):
+        raise WrongAnswerType(f"returned {short(value)} as the {form} form's bits: a whole number")
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise WrongAnswerType(f"returned {short(value)} as the {form} form's bits: a whole "
+                              "number") from None  # fmt: skip
+    if not np.isfinite(x) or not x.is_integer() or x < 1:
+        raise WrongAnswerType(f"returned {short(value)} as the {form} form's bits: bits come in "
+                              "whole numbers, 1 or more")  # fmt: skip
+    return int(x)
+
+
+def as_answer(value) -> tuple:
+    """((bits, type), (bits, type)), read strictly; a dict keyed "absolute" and "relative" too."""
+    if isinstance(value, dict) and set(value) == set(FORMS):
+        value = tuple(value[form] for form in FORMS)
+    refuse_non_answers(value, WHAT)
+    pairs = value if isinstance(value, tuple | list) else None
+    if (
+        pairs is None
+        or len(pairs) != 2
+        or any(not isinstance(p, tuple | list) or len(p) != 2 for p in pairs)
+    ):
+        raise WrongAnswerType(f"returned {short(value)}: expected {WHAT}")
+    return tuple((_bits(b, form), _type(t, form)) for (b, t), form in zip(pairs, FORMS))
+
+
+def _same(got, expected, args=None) -> bool:
+    return got == expected
+
+
+def _match(got, answer_, args=None) -> bool:
+    return answer_ is not None and got == answer_
+
+
+def explain(args, expected, got) -> str:
+    """The student's counts, and which of the answer's four parts are wrong (never the right
+    ones; the types are not named: the words name float32 only as its cause, r394)."""
+    wrong = [f"the {form} form's {part}" for form, g, e in zip(FORMS, got, expected)
+             for part, k in (("bits", 0), ("type", 1)) if g[k] != e[k]]  # fmt: skip
+    return (f"yours is {got[0][0]} bits for the absolute form and {got[1][0]} for the relative "
+            f"one; wrong: {', '.join(wrong)}")  # fmt: skip
+
+
+def spoken(name: str | None) -> str:
+    """A type as the words say it: "a 32-bit float", never "float32" (:mod:`.diagnosis` takes
+    that word for a precision diagnosis)."""
+    if name is None:
+        return "no type of these"
+    t = np.dtype(name)
+    return f"a {t.itemsize * 8}-bit {'float' if t.kind == 'f' else 'int'}"
+
+
+def worked(args, form: str) -> str:
+    """One form's count in steps of the grid, its numbers from :func:`budgets` (said once two
+    answers have failed: :data:`HINTS`)."""
+    b = budgets(*args)[form]
+    factor = "coordinates" if form == "absolute" else "differences"
+    return (
+        f" (worked: the {form} form's {factor} are below 2^{b.delta_bits} steps, its "
+        f"products below 2^{b.product_bits}, a difference of two below 2^{b.edge_bits}: "
+        f"{b.needed} bits with the sign: {spoken(narrowest(b.needed))})"
+    )
+
+
+def _worked_both(args) -> str:
+    return worked(args, "absolute") + worked(args, "relative")
+
+
+def _rule(args, expected, got) -> str:
+    held = ", ".join(f"{spoken(t)} {exact_bits(t)}" for t in TYPES)
+    return (": count in steps of the grid, as lesson 06 does, term by term (recipe: a factor "
+            "below 2^k steps has k bits, a product's bits are its factors' added, a difference "
+            "of two products takes one more, the sign one more; the bits of a whole number each "
+            f"type holds exactly, sign included: {held}){_worked_both(args)}")  # fmt: skip
+
+
+def _with(
+    range_bits, across, sub_bits, *, count="right", largest="C", holds="exactly", order="as asked"
+) -> tuple:
+    """The answer a student gives with some slips (:data:`KNOBS`)."""
+    b = budgets(range_bits, across, sub_bits)
+    factors = {form: (b[form].delta_bits, b[form].delta_bits) for form in FORMS}
+    if largest == "A·x":
+        factors["absolute"] = (b["absolute"].delta_bits, b["relative"].delta_bits)
+    held = _HELD[holds]
+    out = []
+    for form in FORMS:
+        k, m = factors[form]
+        n = {"right": k + m + 2, "short": k + m + 1, "long": k + m + 3,
+             "no sub-pixel": k + m - 2 * sub_bits + 2, "sub-pixel once": k + m - sub_bits + 2,
+             "multiplied": k * m + 2}[count]  # fmt: skip
+        out.append((n, narrowest(n, held)))
+    return tuple(out[::-1]) if order == "swapped" else tuple(out)
+
+
+#: What each type is taken to hold: exactly (a float's significand with its hidden bit, and its
+#: sign), its width, or a float's significand alone, the sign not counted.
+_HELD = {
+    "exactly": exact_bits,
+    "width": lambda t: np.dtype(t).itemsize * 8,
+    "no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "f"),
+}
+
+
+def _counts(args, got) -> str:
+    return f"yours are {got[0][0]} and {got[1][0]}"
+
+
+def _grid(args) -> str:
+    s = args[2]
+    return f"1/{2**s}-px" if s else "1-px"
+
+
+SHORT = Slip("one bit short", lambda a, e, g: (
+    f"your counts are one bit short ({_counts(a, g)}): the sign bit, or the bit a difference of "
+    "two products adds to the larger product's, left out"), "short")  # fmt: skip
+LONG = Slip("one bit too many", lambda a, e, g: (
+    f"your counts are one bit too many ({_counts(a, g)}): a difference of two products below "
+    "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond"), "long")  # fmt: skip
+NO_SUB = Slip("no sub-pixel bits", lambda a, e, g: (
+    f"you count whole pixels ({_counts(a, g)}): on the {_grid(a)} grid a factor has {a[2]} bits "
+    f"more than in pixels, so a product {2 * a[2]} more"), "no sub-pixel")  # fmt: skip
+ONCE = Slip("sub-pixel bits once", lambda a, e, g: (
+    f"you count the sub-pixel bits once per product ({_counts(a, g)}): both of its factors are on "
+    f"the {_grid(a)} grid, {a[2]} bits each, so a product has {2 * a[2]}"),
+    "sub-pixel once")  # fmt: skip
+MULTIPLIED = Slip("bits multiplied", lambda a, e, g: (
+    f"you multiply bits ({_counts(a, g)}): numbers below 2^k and 2^l multiply to below "
+    "2^k · 2^l = 2^(k + l), so a product's bits are its factors' added"), "multiplied")  # fmt: skip
+A_X = Slip("A·x as the largest product", lambda a, e, g: (
+    f"your absolute count, {g[0][0]}, takes A·x (a difference times a coordinate) for the "
+    "largest product: C = a.x·b.y − a.y·b.x multiplies two coordinates, each below "
+    f"2^{a[0]} px"), "A·x")  # fmt: skip
+SWAPPED = Slip("forms swapped", lambda a, e, g: (
+    "your absolute and relative answers are swapped: the absolute form A·x + B·y + C "
+    f"multiplies coordinates (below 2^{a[0]} px), the relative form differences (below "
+    f"{a[1]:,} px)"), "swapped")  # fmt: skip
+WIDTH = Slip("a type's width for what it holds", lambda a, e, g: (
+    "you take a type's width for what it holds exactly: a 32-bit float holds every whole "
+    f"number up to 2^{exact_bits('float32') - 1} in size, {exact_bits('float32')} bits with the "
+    f"sign, a 64-bit float {exact_bits('float64')}; only an integer type holds its whole width"),
+    "width")  # fmt: skip
+NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
+    "you take a float to hold its significand's bits only: a 32-bit float holds every whole "
+    f"number up to 2^{exact_bits('float32') - 1} in size, of either sign, so "
+    f"{exact_bits('float32')} bits with the sign, a 64-bit float {exact_bits('float64')}"),
+    "no sign")  # fmt: skip
+
+#: The slips, alone or two at once (of different knobs).
+KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED), "largest": (A_X,),
+                      "holds": (WIDTH, NO_SIGN), "order": (SWAPPED,)}, most=2)  # fmt: skip
+
+#: The recipe and the worked counts, said once two different answers have failed.
+HINTS = ((re.compile(r" \((recipe|worked): [^)]*\)"), ""),)
+
+
+def draw(ax, case, got):
+    """The student's two counts; the bits each type holds exactly once the words say them
+    (the hints spent) or the answer passed (never the answer before)."""
+    artists = []
+    told = tries.hints_spent("edge_bits") or got == case[2]
+    for t in TYPES if told else ():
+        artists.append(ax.axhline(exact_bits(t), color="#888888", linestyle=":", linewidth=1))
+        artists.append(ax.annotate(f"{t}: {exact_bits(t)} bits", (1.02, exact_bits(t)),
+                                   xycoords=("axes fraction", "data"), va="center",
+                                   fontsize="x-small"))  # fmt: skip
+    if isinstance(got, tuple) and len(got) == 2:
+        for k, (n, t) in enumerate(got):
+            artists += ax.plot([k], [n], "x", color="#d7301f", ms=11, mew=2)
+            artists.append(
+                ax.annotate(
+                    f"yours: {n} bits, {t}",
+                    (k, n),
+                    xytext=(8, 4),
+                    textcoords="offset points",
+                    fontsize="x-small",
+                )
+            )
+    ax.set_xlim(-0.5, 2.0)
+    ax.set_xticks([0, 1], [f"{form} form" for form in FORMS])
+    ax.set_ylabel("bits, sign included")
+    counts = [n for n, _ in got] if isinstance(got, tuple) and len(got) == 2 else []
+    ax.set_ylim(0, max([72, *(n + 8 for n in counts)]))
+    return artists
+
+
+#: The exercise, for the registry.
+EDGE_BITS = Exercise(
+    "edge_bits", cases, as_answer, _same, explain, _rule, (KNOBS,), match=_match, draw=draw,
+    hints=HINTS, answers=(PackageAnswer(range_budget, what="lesson 06's count itself"),
+                          PackageAnswer(edge_bits_needed, what="lesson 06's count itself")),
+    reference=("teachraster.exercises.hard_case_precision",),
+)  # fmt: skip
+
+# the stub's note says what this figure draws (never the answer)
+NOTHING_DRAWN_FOR[EDGE_BITS.name] = (
+    "Nothing drawn yet: once your function returns answers, the check draws its first failing "
+    "case (or, when all pass, one of the cases): your two counts of bits, and the bits each type "
+    "holds once the words have said them; never the rule's answer"
+)
