@@ -357,7 +357,7 @@ def test_00_words_r166():
     # review r307 S1: the two gaps are printed under the figure, not typed in the text, where
     # the Try-it edit of w left them stale
     assert "0.152" not in tour and "0.172" not in tour
-    assert "print by how much they differ at most, at the pixel centres and" in tour
+    assert "print by how much at most, at the pixel centres and" in tour
     # one meaning per symbol: z is the view depth, clip-space z is z_clip everywhere here
     table = next(t for t in md if "### Symbols used in every lesson" in t)
     assert sum(line.startswith("| $z$ |") for line in table.splitlines()) == 1
