@@ -33,6 +33,7 @@ from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .package_answers import CHECKER_WORDS
+from .report import NOTHING_DRAWN_FOR
 from .reverse_z import MISTAKES as GAP_MISTAKES
 from .reverse_z import gap_variants, gives_same_gap, reversed_depth_slope
 from .scalars import num
@@ -105,7 +106,8 @@ def brute_worst(z_min, z_max, near, far, count: int = 200_001) -> float:
 
 
 def _label(z_min, z_max, near, far) -> str:
-    return f"z from {num(z_min)} to {num(z_max)}, near = {num(near)}, far = {num(far)}"
+    """Short: the figure's title holds it on one line (r404 F4: it wrapped at "far =")."""
+    return f"z {num(z_min)} to {num(z_max)}, near {num(near)}, far {num(far)}"
 
 
 @cache
@@ -395,7 +397,7 @@ def draw_worst(ax, case, got):
     at_max = candidates(z_min, z_max, near, far)[0][1]
     top = max([at_max] + ([expected] if told else []) + ([got] if drawn else []))
     unit, named = _unit(top)
-    artists = ax.plot([z_max], [at_max / unit], "s", color="#555555", ms=6,
+    artists = ax.plot([z_max], [at_max / unit], "s", color="#555555", ms=7, zorder=4,
                       label=f"z_max's own Δz {num(at_max, expected)}")  # fmt: skip
     if told:
         zs = np.linspace(z_min, z_max, 2000)
@@ -415,8 +417,10 @@ def draw_worst(ax, case, got):
     ax.set_ylim(0, top * 1.3 / unit)
     ax.set_xlim(z_min - 0.02 * (z_max - z_min), z_max + 0.02 * (z_max - z_min))
     ax.set_xlabel(f"view depth z (near {num(near)}, far {num(far)})")
-    ax.set_ylabel(f"smallest resolved gap Δz{named}")
-    artists.append(ax.legend(fontsize="x-small", loc="upper left", framealpha=0.9))
+    ax.set_ylabel(f"resolved gap Δz{named}", fontsize="small")
+    # below the axes: inside, it hid the curve's teeth (r404 F4: beside them, it was as wide)
+    artists.append(ax.legend(fontsize="x-small", loc="upper center", ncol=2,
+                             bbox_to_anchor=(0.5, -0.2), frameon=False))  # fmt: skip
     return artists
 
 
@@ -439,3 +443,10 @@ REVERSE_Z_WORST = Exercise(
         _LATER, _BETWEEN,
     ), slow=" (a Python call per sampled depth?)",
 )  # fmt: skip
+
+# r404 F1: the stub's note says what this figure draws (the answer only once told)
+NOTHING_DRAWN_FOR[REVERSE_Z_WORST.name] = (
+    "Nothing drawn yet: once your function returns answers, the check draws its first failing "
+    "case (or, when all pass, one of the cases): your Δz and z_max's own; Δz over the range and "
+    "its coarsest depth once two different answers have failed, or yours passes"
+)
