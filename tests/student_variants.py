@@ -5649,3 +5649,119 @@ R394_EDGE_BITS = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R394_EDGE_BITS.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R394_EDGE_BITS.items()})
+# == r404: exercise 5.2b's reader's variants (fixex05k): z_max's words staged (F1), the catch-all
+# rules only where they give the answer (F2), 5.2's slips at the coarsest depths (F3)
+
+
+def _r404_d(z, near, far):
+    return (near / z - near / far) / (1 - near / far)
+
+
+def _r404_crossings(z_min, z_max, near, far, skip=0, z_power=1, infinite=False):
+    """(e, z, step above) at each depth where d (n/z: ``infinite``) is 2^e, from the one
+    nearest z_max (``skip`` of them skipped)."""
+    d = (lambda z: near / z) if infinite else (lambda z: _r404_d(z, near, far))
+    low, top = int(np.ceil(np.log2(d(z_max)))) + skip, int(np.floor(np.log2(d(z_min))))
+    out = []
+    for e in range(low, top + 1):
+        z = near / 2.0**e if infinite else near / (2.0**e * (1 - near / far) + near / far)
+        if z_min < z <= z_max:
+            out.append((e, z))
+    return out
+
+
+def _r404_worst(skip=0, z_power=2, scale=1.0, step=None):
+    def reverse_z_worst(z_min, z_max, near, far):
+        k = 1 - near / far
+        at = step or (lambda z: float(np.spacing(np.float32(_r404_d(z, near, far)))))
+        worst = at(z_max) * k * z_max**z_power / near
+        for e, z in _r404_crossings(z_min, z_max, near, far, skip=skip):
+            worst = max(worst, 2.0 ** (e - 23) * k * z**z_power / near)
+        return worst * scale
+
+    return reverse_z_worst
+
+
+def _r404_f64(z_min, z_max, near, far):
+    zs = np.linspace(z_min, z_max, 2001)
+    k = 1 - near / far
+    return float(np.max(np.spacing((near / zs - near / far) / k) * k * zs**2 / near))
+
+
+def _r404_inf(z_min, z_max, near, far):
+    worst = float(np.spacing(np.float32(near / z_max))) * z_max**2 / near
+    for e, z in _r404_crossings(z_min, z_max, near, far, infinite=True):
+        worst = max(worst, 2.0 ** (e - 23) * z * z / near)
+    return worst
+
+
+def _r404_window(z_min, z_max, near, far):
+    def gap(z):
+        zw = far / (far - near) * (1 - near / z)
+        return float(np.spacing(np.float32(zw))) * (far - near) * z * z / (far * near)
+
+    return max(gap(z) for z in np.linspace(z_min, z_max, 2001))
+
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R404_WORST = {
+    "reverse-Z worst as the bound at z_max": (
+        "reverse_z_worst", lambda a, b, n, f: 2.0**-23 * b * (1 - b / f),
+        "at z_max: it is reached only where d is a power of two", "bound at z_max"),
+    "reverse-Z worst skipping the crossing nearest z_max": (
+        "reverse_z_worst", _r404_worst(skip=1), "that is z_max's own Δz: on this case",
+        "z_max's own here"),
+    "reverse-Z worst, halved": (
+        "reverse_z_worst", _r404_worst(scale=0.5), "0.5 × the coarsest on every case (exactly half",
+        "constant ratio"),
+    "reverse-Z worst with float64's step": (
+        "reverse_z_worst", _r404_f64, "you took float64's step at d", "5.2's slip"),
+    "reverse-Z worst, the step not divided by the slope": (
+        "reverse_z_worst",
+        lambda a, b, n, f: float(np.spacing(np.float32(_r404_d(a, n, f)))),
+        "you returned the step in stored depth", "5.2's slip"),
+    "reverse-Z worst, z not squared": (
+        "reverse_z_worst", _r404_worst(z_power=1), "you used z where the slope falls like 1/z²",
+        "5.2's slip"),
+    "reverse-Z worst, window depth not reversed": (
+        "reverse_z_worst", _r404_window, "that is the Δz of ordinary window depth z_win",
+        "5.2's slip"),
+    "reverse-Z worst, far plane at infinity": (
+        "reverse_z_worst", _r404_inf, "you dropped the far plane", "5.2's slip"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R404_WORST.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R404_WORST.items()})
+# r404 F1: z_max's words now say what it is first (the place of the worst after the hints)
+WRONG["reverse-Z worst at z_max only"] = (
+    "reverse_z_worst",
+    WRONG["reverse-Z worst at z_max only"][1],
+    "you evaluated the gap at z_max only: that is z_max's own Δz. For float32 reverse-Z the "
+    "worst step is at z",
+)
+# r404 F2: where d rounds under 2^e at the worst crossing, what is left is z_max's own Δz, the
+# same answer as a loop that skipped the crossing: both are said
+WRONG["reverse-Z worst in float32, np.spacing at the edges"] = (
+    "reverse_z_worst",
+    _worst_in_float32,
+    "d there come out just under the power of two",
+)
+KINDS["reverse-Z worst in float32, np.spacing at the edges"] = "z_max's own here"
+WRONG["reverse-Z worst with float64's step"] = (
+    "reverse_z_worst",
+    _r404_f64,
+    "you took float64's step at d (np.spacing of a float64): the buffer is float32",
+)
+WRONG["reverse-Z worst, window depth not reversed"] = (
+    "reverse_z_worst",
+    _r404_window,
+    "that is the Δz of ordinary window depth z_win, not "
+    "reversed (or, the same answer, float32's step",
+)
+R404_WORST_MORE = {
+    "reverse-Z worst as the least of 20,001 sampled depths": (
+        "reverse_z_worst",
+        lambda a, b, n, f: min(_rs.reverse_z_gap(z, n, f) for z in np.linspace(a, b, 20001)),
+        "you returned the finest Δz of the range", "finest, sampled"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R404_WORST_MORE.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R404_WORST_MORE.items()})

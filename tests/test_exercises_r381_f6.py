@@ -40,12 +40,38 @@ def test_unorm_resolves_worst_at_z_max_and_reverse_z_inside_the_range():
 
 
 def test_the_printed_formula_at_z_max_fails_and_is_told_where_the_worst_is():
+    """r404 F1: first a question (no depth, no binade, no method), the place once two
+    different answers have failed."""
     tries.forget_hints("reverse_z_worst")
-    report = ex.check("reverse_z_worst", lambda a, b, n, f: sol.reverse_z_gap(b, n, f))
+    at_max = lambda a, b, n, f: sol.reverse_z_gap(b, n, f)  # noqa: E731
+    report = ex.check("reverse_z_worst", at_max)
     assert len(report.failures) >= len(rzw.SETTINGS) - 2, str(report)
     first = report.failures[0].explanation
-    assert "you evaluated the gap at z_max only" in first
+    assert "you evaluated the gap at z_max only: that is z_max's own Δz" in first
+    assert "does float32 reverse-Z?" in first and "(4.01 times too fine)" in first, first
+    for told in ("450.3", "2^-13", "2^-36", "compare z_max with"):
+        assert told not in str(report), told
+    ex.check("reverse_z_worst", lambda a, b, n, f: sol.reverse_z_gap(a, n, f))
+    first = ex.check("reverse_z_worst", at_max).failures[0].explanation
     assert "worst step is at z = 450.333, where d falls to 2^-13" in first, first
+    tries.forget_hints("reverse_z_worst")
+
+
+def test_the_figure_draws_the_curve_only_once_told():
+    """r404 F1: after a wrong answer with hints left, z_max's Δz and yours only."""
+    import matplotlib.pyplot as plt
+
+    case = rzw.worst_cases()[0]
+    tries.forget_hints("reverse_z_worst")
+    labels = {}
+    for key, got in (("wrong", 7.37e-6), ("right", case[2])):
+        fig, ax = plt.subplots()
+        rzw.draw_worst(ax, case, got)
+        labels[key] = " ".join(t.get_text() for t in ax.get_legend().get_texts())
+        assert ax.yaxis.get_offset_text().get_text() == "", key
+        plt.close(fig)
+    assert "coarsest" not in labels["wrong"] and "z_max's own" in labels["wrong"]
+    assert "coarsest 2.95e-05 at z = 450.333" in labels["right"], labels
 
 
 def test_drawn_cases_have_their_worst_inside_the_range():

@@ -184,6 +184,10 @@ def _variants(z, near, far) -> dict[str, float]:
     }
 
 
+#: The Δz 5.2's slips give at one depth, for 5.2b (:mod:`.reverse_z_worst`: r404 F3, the
+#: student's own 5.2 slip carried over to the coarsest depth).
+gap_variants = _variants
+
 _RELATIVE = ("you took a fixed share of d as float32's step (its relative precision, "
              "2^-23 or 2^-24 of d): within a binade [2^e, 2^(e+1)) every step is the same, "
              "2^(e−23), which is 2^-23 · d only where d is a power of two")  # fmt: skip

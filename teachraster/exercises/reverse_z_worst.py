@@ -22,16 +22,20 @@ depths) lies within 2e-5 below it on every fixed case (tests). An answer passes 
 from __future__ import annotations
 
 import copy
+import re
 from functools import cache
 
 import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, reversed_depth
+from . import tries
 from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .package_answers import CHECKER_WORDS
-from .reverse_z import gives_same_gap, reversed_depth_slope
+from .report import NOTHING_DRAWN_FOR
+from .reverse_z import MISTAKES as GAP_MISTAKES
+from .reverse_z import gap_variants, gives_same_gap, reversed_depth_slope
 from .scalars import num
 
 #: (z_min, z_max, near, far): lesson 05b's planes over most of the scene (the worst depth
@@ -102,7 +106,8 @@ def brute_worst(z_min, z_max, near, far, count: int = 200_001) -> float:
 
 
 def _label(z_min, z_max, near, far) -> str:
-    return f"z from {num(z_min)} to {num(z_max)}, near = {num(near)}, far = {num(far)}"
+    """Short: the figure's title holds it on one line (r404 F4: it wrapped at "far =")."""
+    return f"z {num(z_min)} to {num(z_max)}, near {num(near)}, far {num(far)}"
 
 
 @cache
@@ -158,30 +163,43 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
         "step below at edges": max(dz for _, dz in below),
         "bound 2^-23": 2.0**-23 * peak * (1 - peak / far),
         "bound 2^-24": 2.0**-24 * peak * (1 - peak / far),
+        "bound at z_max": 2.0**-23 * z_max * (1 - z_max / far),
         "finest": finest,
         "worst z": worst(z_min, z_max, near, far)[0],
     }
 
 
+#: Where the words say where the worst depth is, or how to find it (r404 F1: said in full at
+#: once, they answered the task's prediction); said as a question until two answers failed.
+WHERE = (". For float32 reverse-Z the worst step is at z = ", " inside the range")
+WHERE_HINT = (". A unorm buffer resolves worst at z_max; does float32 reverse-Z? Look at how the "
+              "step of d changes over the range: ask your reverse_z_gap at a few depths")  # fmt: skip
+
+
 def _z_max_words(args, expected, got) -> str:
-    """The transcribed formula at z_max (r381 F6): where the worst step really is."""
+    """The transcribed formula at z_max (r381 F6): where the worst step really is (staged)."""
     z_w, dz = worst(*args)
     e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
-    return (f": you evaluated the gap at z_max only. For float32 reverse-Z the worst step is "
-            f"at z = {num(z_w)}, where d falls to 2^{e}: just nearer, d's binade has the step "
+    return (f": you evaluated the gap at z_max only: that is z_max's own Δz{WHERE[0]}"
+            f"{num(z_w)}, where d falls to 2^{e}: just nearer, d's binade has the step "
             f"2^{e - 23}, and Δz = {num(dz, got)} there. A unorm buffer's Δz grows with z, so "
             "its worst is z_max; float32's step halves wherever d falls below a power of two, "
-            "so compare z_max with each depth where that happens inside the range")  # fmt: skip
+            f"so compare z_max with each depth where that happens{WHERE[1]}")  # fmt: skip
+
+
+_LATER = (", at z_max or just nearer than a depth where d falls below a power of two",
+          ", but where? Look at how float32's step of d changes over the range")  # fmt: skip
+_BETWEEN = ("Between them d crosses powers of two, and just nearer than each crossing the step "
+            "is twice the step beyond it: one of those depths can be coarser than either end",
+            "Is nothing between them coarser? Look at how float32's step of d changes between "
+            "them")  # fmt: skip
 
 
 MISTAKES = {
     "z_max only": _z_max_words,
     "z_min only": ": you evaluated the gap at z_min only, the nearest depth: Δz grows with z "
-    "within each binade of d, so the coarsest lies farther, at z_max or just nearer than a "
-    "depth where d falls below a power of two",
-    "both ends": ": you compared the two ends of the range only. Between them d crosses "
-    "powers of two, and just nearer than each crossing the step is twice the step beyond it: "
-    "one of those depths can be coarser than either end",
+    f"within each binade of d, so the coarsest lies farther{_LATER[0]}",
+    "both ends": f": you compared the two ends of the range only. {_BETWEEN[0]}",
     "last edge": ": you compared z_max with the last depth before it where d crosses a power "
     "of two only. Every crossing inside the range is a candidate: their Δz, 2^-23 z (1 − z/f), "
     "is largest near f/2, not always nearest to z_max",
@@ -197,6 +215,9 @@ MISTAKES = {
     "bound 2^-24": ": you took 2^-24 z (1 − z/f), the finest bound of reverse-Z's Δz, "
     "not the coarsest over the range: just nearer than each depth where d is a power of two "
     "2^e the step is 2^(e−23), twice that",
+    "bound at z_max": ": you took the bound 2^-23 z (1 − z/f) (d over its slope) at z_max: it "
+    "is reached only where d is a power of two, and z_max's d need not be one. Which depths "
+    "of the range are the candidates?",
     "finest": ": you returned the finest Δz of the range; the task asks the coarsest, the gap "
     "surfaces need to be told apart at every depth of it",
     "worst z": lambda a, e, g: (
@@ -206,15 +227,15 @@ MISTAKES = {
 
 
 def _edge_rounded_below(args, expected, got) -> bool:
-    """The worst edge's Δz by the step below (d rounded to just under 2^e there), or what
-    that leaves: z_max's or another depth's with its own step, never the worst edge's."""
+    """The worst edge's Δz by the step below (d rounded to just under 2^e there), ±1 %, and
+    only where that is what the case's answer would then be (r404 F2: z_max's own Δz, coarser
+    than it on 200 to 300, was told "your d came out just under")."""
     z_w = worst(*args)[0]
     if not np.isfinite(got) or z_w == args[1]:
         return False
-    below = candidates(*args, edge_step=-24)
+    below = [dz for z, dz in candidates(*args, edge_step=-24) if z == z_w][0]
     rest = [dz for z, dz in candidates(*args) if z != z_w]
-    left = max([dz for z, dz in below if z == z_w] + rest)
-    return bool(abs(got - left) <= 1e-5 * left)
+    return bool(below >= max(rest) and abs(got - below) <= 0.01 * below)
 
 
 EDGE_BELOW = Mistake(
@@ -230,11 +251,33 @@ EDGE_BELOW = Mistake(
     fits=_edge_rounded_below,
 )
 
+# r404 F3: a sampled minimum is the finest within a few samples' reach, not to 1e-6
+FINEST_SAMPLED = Mistake(
+    "finest, sampled", MISTAKES["finest"],
+    fits=lambda a, e, g: bool(np.isfinite(g)) and abs(g / _variants(*a)["finest"] - 1) <= 0.01,
+)  # fmt: skip
+
+Z_MAX_HERE = Mistake(
+    "z_max's own here",
+    ": that is z_max's own Δz: on this case a depth inside the range, where d crosses a power "
+    "of two, is coarser. Did your loop skip that crossing, or did d there come out just under "
+    "the power of two (np.spacing then gives the step below, half the binade's)?",
+    fits=lambda a, e, g: bool(np.isfinite(g)) and worst(*a)[0] != a[1]
+    and abs(g - candidates(*a)[0][1]) <= 1e-3 * abs(g),
+)  # fmt: skip
+
 
 def _too_fine(args, expected, got) -> bool:
-    """A search over depths that missed the edge: finer than the coarsest, coarser than z_max."""
+    """A search over depths that missed the edge: finer than the coarsest, coarser than z_max,
+    and the depth whose limit Δz that is (Δz grows like z² in the worst depth's binade) lies
+    within 5 % of the range nearer than the worst depth, as a search of 20 or more samples
+    stops (r404 F2: half the coarsest was told "a search that stopped short")."""
     at_max = candidates(*args)[0][1]
-    return bool(np.isfinite(got)) and at_max < got < expected * (1 - BELOW)
+    if not (np.isfinite(got) and at_max < got < expected * (1 - BELOW)):
+        return False
+    z_w = worst(*args)[0]
+    z_s = z_w * np.sqrt(got / expected)
+    return bool(z_s > args[0] and z_w - z_s <= 0.05 * (args[1] - args[0]))
 
 
 SEARCH = Mistake(
@@ -244,6 +287,67 @@ SEARCH = Mistake(
     "halves), so the coarsest is the limit just nearer than it: sample it, or compute it",
     fits=_too_fine, symptom=True,
 )  # fmt: skip
+
+#: 5.2's slips that 5.2b can carry over (r404 F3): each changes Δz by far more than the band.
+GAP_SLIPS = ("float64", "window depth", "float16", "step above 1", "step in depth",
+             "times slope", "z not squared", "spacing of z", "infinite far",
+             "infinite far, slope", "infinite far, depth", "near and far swapped")  # fmt: skip
+
+
+def _depths(z_min, z_max, near, far) -> list[float]:
+    """The ends, and a hair nearer than each depth where d or n/z (an infinite far plane's
+    depth) is a power of two: where a slip's Δz is largest, as the right one's is."""
+    out = [z_min, z_max] + [z * (1 - 1e-6) for _, z in edges(z_min, z_max, near, far)]
+    low, top = int(np.floor(np.log2(near / z_max))), int(np.ceil(np.log2(near / z_min)))
+    return out + [near / 2.0**e * (1 - 1e-6) for e in range(low, top + 1)
+                  if z_min < near / 2.0**e * (1 - 1e-6) <= z_max]  # fmt: skip
+
+
+def gap_slip(args, got) -> tuple[str, float] | None:
+    """(5.2's slip, what it gives) whose largest Δz over the range's depths is ``got`` within
+    2 % (a search over samples falls a little short), the nearest such (the first of
+    :data:`GAP_SLIPS` among equals); None: none."""
+    if not np.isfinite(got) or got == 0:
+        return None
+    found = {}
+    for z in _depths(*args):
+        for kind, dz in gap_variants(z, *args[2:]).items():
+            if kind in GAP_SLIPS and np.isfinite(dz):
+                found[kind] = max(found.get(kind, -np.inf), dz) if dz > 0 else min(
+                    found.get(kind, np.inf), dz)  # fmt: skip
+    near = [(round(abs(got / dz - 1), 3), GAP_SLIPS.index(kind), kind, dz)
+            for kind, dz in found.items() if dz != 0]  # fmt: skip
+    near = [n for n in near if n[0] <= 0.02]
+    return min(near)[2:] if near else None
+
+
+def _gap_slip_words(args, expected, got) -> str:
+    kind, dz = gap_slip(args, got)
+    words = GAP_MISTAKES[kind]
+    return (
+        f": that is what one of 5.2's slips gives at this range's coarsest depths "
+        f"({dz:.3g}): {words}. Check your reverse_z_gap with 5.2's check first"
+    )
+
+
+# ``gives`` says nothing (None), but marks a cause the checker computes (5.2's own slips, run
+# at the range's depths), so its words may name float64 or float16 (diagnosis's rule for them)
+GAP_SLIP = Mistake("5.2's slip", _gap_slip_words, gives=lambda *a: None,
+                   fits=lambda a, e, g: gap_slip(a, g) is not None)  # fmt: skip
+
+
+def _ratio_words(args, expected, got) -> str:
+    c = got / expected
+    why = {0.5: " (exactly half: the step below d, 2^(e−24), where the binade's step is "
+                "2^(e−23)? Or half of your reverse_z_gap?)",
+           2.0: " (exactly twice: two steps, or a step twice the binade's?)"}  # fmt: skip
+    said = next((w for k, w in why.items() if abs(c - k) <= 1e-3 * k), "")
+    return f": your answer is {_times(c)} × the coarsest on every case{said}"
+
+
+RATIO = Mistake("constant ratio", _ratio_words,
+                fits=lambda a, e, g: bool(np.isfinite(g)) and g > 0 and not same_worst(g, e),
+                parameter=lambda a, e, g: g / e, only_whole=True)  # fmt: skip
 RANGE = Mistake("range", ": a gap is a positive distance",
                 fits=lambda a, e, g: bool(np.isfinite(g)) and g <= 0, symptom=True)  # fmt: skip
 
@@ -256,7 +360,18 @@ def explain_worst(args, expected, got) -> str:
             f"{num(lo, hi)} to {num(hi, lo)}); yours is {num(got, expected)}")  # fmt: skip
     if not np.isfinite(got) or got <= 0 or same_worst(got, expected):
         return head
-    return head + (" (too coarse)" if got > hi else " (too fine)")
+    # r404 F3: the ratio always, as 5.2's words give it
+    if got > hi:
+        return f"{head} ({_times(got / expected)} times too coarse)"
+    return f"{head} ({_times(expected / got)} times too fine)"
+
+
+def _times(r: float) -> str:
+    """A ratio in 3 significant digits, a power of ten written out (no 17-digit echo)."""
+    if r < 1000:
+        return f"{r:.3g}"
+    k = int(np.floor(np.log10(r)))
+    return f"{r / 10**k:.2g} × 10^{k}"
 
 
 def _rule(args, expected, got) -> str:
@@ -265,43 +380,54 @@ def _rule(args, expected, got) -> str:
             "each such depth in the range")  # fmt: skip
 
 
+def _unit(top: float) -> tuple[float, str]:
+    """A power of ten to draw Δz in, and its name for the axis (r404 F4: no offset text)."""
+    k = int(np.floor(np.log2(top) / np.log2(10))) if top > 0 and np.isfinite(top) else 0
+    return 10.0**k, ("" if k == 0 else f" (× 1e{k})")
+
+
 def draw_worst(ax, case, got):
-    """Δz against z over the range (the package's sawtooth), the coarsest depth and yours."""
+    """Yours (a dashed line) and z_max's Δz (a dot); the sawtooth over the range, the coarsest
+    depth and the band accepted only once the words give where it lies (the hints spent) or
+    the answer passes (r404 F1: drawn after any wrong answer, they were the answer)."""
     _, (z_min, z_max, near, far), expected = case
-    zs = np.linspace(z_min, z_max, 2000)
-    artists = ax.plot(zs, depth_resolution(zs, near, far, "float32", mapping="reversed"),
-                      color="black", lw=1, label="float32 reverse-Z Δz")  # fmt: skip
-    z_w = worst(z_min, z_max, near, far)[0]
-    artists += ax.plot(
-        [z_w],
-        [expected],
-        "o",
-        color="#2b7bba",
-        ms=8,
-        label=f"coarsest (expected) {num(expected, got)} at z = {num(z_w)}",
-    )
-    artists.append(ax.axhspan(expected * (1 - BELOW), expected * (1 + SLACK), color="#d9ecd9",
-                              lw=0, zorder=0, label="accepted"))  # fmt: skip
-    if got is not None and np.isfinite(got) and got > 0:
-        colour = "#7fbf7f" if same_worst(got, expected) else "#d7301f"
-        artists.append(ax.axhline(got, color=colour, linestyle="--",
+    ok = got is not None and bool(np.isfinite(got)) and same_worst(got, expected)
+    told = tries.hints_spent("reverse_z_worst") or ok
+    drawn = got is not None and bool(np.isfinite(got)) and got > 0
+    at_max = candidates(z_min, z_max, near, far)[0][1]
+    top = max([at_max] + ([expected] if told else []) + ([got] if drawn else []))
+    unit, named = _unit(top)
+    artists = ax.plot([z_max], [at_max / unit], "s", color="#555555", ms=7, zorder=4,
+                      label=f"z_max's own Δz {num(at_max, expected)}")  # fmt: skip
+    if told:
+        zs = np.linspace(z_min, z_max, 2000)
+        dz = depth_resolution(zs, near, far, "float32", mapping="reversed")
+        artists += ax.plot(zs, dz / unit, color="black", lw=1, label="float32 reverse-Z Δz")
+        z_w = worst(z_min, z_max, near, far)[0]
+        artists += ax.plot([z_w], [expected / unit], "o", color="#2b7bba", ms=8,
+                           label=f"coarsest {num(expected, got)} at z = {num(z_w)}")  # fmt: skip
+        artists.append(ax.axhspan(expected * (1 - BELOW) / unit, expected * (1 + SLACK) / unit,
+                                  color="#d9ecd9", lw=0, zorder=0, label="accepted"))  # fmt: skip
+    if drawn:
+        colour = "#7fbf7f" if ok else "#d7301f"
+        artists.append(ax.axhline(got / unit, color=colour, linestyle="--",
                                   label=f"yours {num(got, expected)}"))  # fmt: skip
-        ax.set_ylim(0, max(expected, got) * 1.15)
     elif got is not None:
         artists += ax.plot([], [], " ", label=f"yours {num(got)}: not drawn")
-        ax.set_ylim(0, expected * 1.15)
-    else:
-        ax.set_ylim(0, expected * 1.15)
-    ax.set_xlim(z_min, z_max)
+    ax.set_ylim(0, top * 1.3 / unit)
+    ax.set_xlim(z_min - 0.02 * (z_max - z_min), z_max + 0.02 * (z_max - z_min))
     ax.set_xlabel(f"view depth z (near {num(near)}, far {num(far)})")
-    ax.set_ylabel("smallest resolved gap Δz")
-    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    ax.set_ylabel(f"resolved gap Δz{named}", fontsize="small")
+    # below the axes: inside, it hid the curve's teeth (r404 F4: beside them, it was as wide)
+    artists.append(ax.legend(fontsize="x-small", loc="upper center", ncol=2,
+                             bbox_to_anchor=(0.5, -0.2), frameon=False))  # fmt: skip
     return artists
 
 
 REVERSE_Z_WORST = Exercise(
     "reverse_z_worst", worst_cases, as_number, same_worst, explain_worst, _rule,
-    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, SEARCH, RANGE)), draw=draw_worst,
+    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, Z_MAX_HERE, GAP_SLIP, FINEST_SAMPLED, RATIO,
+    SEARCH, RANGE)), draw=draw_worst,
     match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
     answers=(
         PackageAnswer(expected_worst, words=CHECKER_WORDS),
@@ -309,8 +435,18 @@ REVERSE_Z_WORST = Exercise(
                       "computes", when=lambda a: a.get("fmt") == "float32"
                       and a.get("mapping") == "reversed"),
     ), reference=("teachraster.exercises.reverse_z",), hints=(
-        # the method, held back until two different answers have failed (r39's rule)
+        # the method, held back until two different answers have failed (r39's rule; r404
+        # F1: where the worst depth is, too, and where it can lie)
         ("compare z_max with the limit just nearer than each such depth in the range",
          "where in the range can the coarsest lie?"),
-    ),
+        (re.compile(re.escape(WHERE[0]) + ".*?" + re.escape(WHERE[1])), WHERE_HINT),
+        _LATER, _BETWEEN,
+    ), slow=" (a Python call per sampled depth?)",
 )  # fmt: skip
+
+# r404 F1: the stub's note says what this figure draws (the answer only once told)
+NOTHING_DRAWN_FOR[REVERSE_Z_WORST.name] = (
+    "Nothing drawn yet: once your function returns answers, the check draws its first failing "
+    "case (or, when all pass, one of the cases): your Δz and z_max's own; Δz over the range and "
+    "its coarsest depth once two different answers have failed, or yours passes"
+)
