@@ -84,95 +84,118 @@ Style
 - :data:`COLORS`, :data:`OKABE_ITO` -- the colour of each role and the palette.
 """
 
-from .antialiasing import (
-    PixelSampleArtists,
-    SampleArtists,
-    plot_area_error,
-    plot_coverage_fraction,
-    plot_pixel_samples,
-    plot_samples,
-)
-from .frame_debug import HistoryArtists, OverlayArtists, plot_history, plot_overlay
-from .images import (
-    HeatmapArtists,
-    ImageArtists,
-    PlanArtists,
-    ProfileArtists,
-    abs_error,
-    attribute_image,
-    format_plan,
-    plot_attribute,
-    plot_barycentric,
-    plot_depth,
-    plot_error_heatmap,
-    plot_image,
-    plot_plan,
-    plot_profile,
-)
-from .plots import (
-    BailoutArtists,
-    BBoxArtists,
-    CentreArtists,
-    CoverageArtists,
-    EdgeValueArtists,
-    GridArtists,
-    PixelArtists,
-    RasterLineArtists,
-    SplitArtists,
-    TriangleArtists,
-    VisitArtists,
-    bailout,
-    edge_images,
-    plot_bailout,
-    plot_bbox,
-    plot_coverage,
-    plot_current_pixel,
-    plot_edge_values,
-    plot_pixel_centres,
-    plot_pixel_grid,
-    plot_raster_line,
-    plot_split,
-    plot_triangle,
-    plot_visit_order,
-    visit_order,
-)
+# matplotlib itself comes with the style (as before: ``import teachraster.plotting`` imports
+# matplotlib, never pyplot); every other name is imported from its module on first use (PEP 562),
+# so a kernel that needs only ``use_style`` (the exercise notebooks) does not import the
+# plotting modules it never calls (measured: see the commit that made this lazy).
 from .style import COLORS, OKABE_ITO, STYLES, use_style
-from .texture_plots import (
-    FilterArtists,
-    LevelsReadArtists,
-    LodArtists,
-    PyramidArtists,
-    QuadArtists,
-    plot_filters,
-    plot_levels_read,
-    plot_lod,
-    plot_pyramid,
-    plot_quads,
-)
-from .tiles import (
-    BLOCK_COLORS,
-    BlockArtists,
-    BlockPathArtists,
-    BlockValueArtists,
-    CounterArtists,
-    EarlyZArtists,
-    TraversalArtists,
-    block_mask,
-    decided_mask,
-    early_z_counts,
-    plot_block_counters,
-    plot_block_path,
-    plot_block_values,
-    plot_blocks,
-    plot_early_z,
-    plot_early_z_panels,
-    plot_hierarchy,
-    plot_llvmpipe_bins,
-    plot_traversal,
-    plot_walk_path,
-    zoom_on_block,
-)
-from .views import ComparisonView, FillView, InterpolationView
+
+#: Each public name that is not the style's, and the module of this package that defines it.
+_LAZY = {
+    "PixelSampleArtists": "antialiasing",
+    "SampleArtists": "antialiasing",
+    "plot_area_error": "antialiasing",
+    "plot_coverage_fraction": "antialiasing",
+    "plot_pixel_samples": "antialiasing",
+    "plot_samples": "antialiasing",
+    "HistoryArtists": "frame_debug",
+    "OverlayArtists": "frame_debug",
+    "plot_history": "frame_debug",
+    "plot_overlay": "frame_debug",
+    "HeatmapArtists": "images",
+    "ImageArtists": "images",
+    "PlanArtists": "images",
+    "ProfileArtists": "images",
+    "abs_error": "images",
+    "attribute_image": "images",
+    "format_plan": "images",
+    "plot_attribute": "images",
+    "plot_barycentric": "images",
+    "plot_depth": "images",
+    "plot_error_heatmap": "images",
+    "plot_image": "images",
+    "plot_plan": "images",
+    "plot_profile": "images",
+    "BailoutArtists": "plots",
+    "BBoxArtists": "plots",
+    "CentreArtists": "plots",
+    "CoverageArtists": "plots",
+    "EdgeValueArtists": "plots",
+    "GridArtists": "plots",
+    "PixelArtists": "plots",
+    "RasterLineArtists": "plots",
+    "SplitArtists": "plots",
+    "TriangleArtists": "plots",
+    "VisitArtists": "plots",
+    "bailout": "plots",
+    "edge_images": "plots",
+    "plot_bailout": "plots",
+    "plot_bbox": "plots",
+    "plot_coverage": "plots",
+    "plot_current_pixel": "plots",
+    "plot_edge_values": "plots",
+    "plot_pixel_centres": "plots",
+    "plot_pixel_grid": "plots",
+    "plot_raster_line": "plots",
+    "plot_split": "plots",
+    "plot_triangle": "plots",
+    "plot_visit_order": "plots",
+    "visit_order": "plots",
+    "FilterArtists": "texture_plots",
+    "LevelsReadArtists": "texture_plots",
+    "LodArtists": "texture_plots",
+    "PyramidArtists": "texture_plots",
+    "QuadArtists": "texture_plots",
+    "plot_filters": "texture_plots",
+    "plot_levels_read": "texture_plots",
+    "plot_lod": "texture_plots",
+    "plot_pyramid": "texture_plots",
+    "plot_quads": "texture_plots",
+    "BLOCK_COLORS": "tiles",
+    "BlockArtists": "tiles",
+    "BlockPathArtists": "tiles",
+    "BlockValueArtists": "tiles",
+    "CounterArtists": "tiles",
+    "EarlyZArtists": "tiles",
+    "TraversalArtists": "tiles",
+    "block_mask": "tiles",
+    "decided_mask": "tiles",
+    "early_z_counts": "tiles",
+    "plot_block_counters": "tiles",
+    "plot_block_path": "tiles",
+    "plot_block_values": "tiles",
+    "plot_blocks": "tiles",
+    "plot_early_z": "tiles",
+    "plot_early_z_panels": "tiles",
+    "plot_hierarchy": "tiles",
+    "plot_llvmpipe_bins": "tiles",
+    "plot_traversal": "tiles",
+    "plot_walk_path": "tiles",
+    "zoom_on_block": "tiles",
+    "ComparisonView": "views",
+    "FillView": "views",
+    "InterpolationView": "views",
+}
+
+
+def __getattr__(name: str):
+    import importlib
+    import importlib.util
+
+    module = _LAZY.get(name)
+    if module is None:
+        # a submodule, an attribute once the eager imports had loaded it (``tp.plots``)
+        if not name.startswith("_") and importlib.util.find_spec(f"{__name__}.{name}"):
+            return importlib.import_module(f".{name}", __name__)
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value  # the next lookup is an ordinary one
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
 
 __all__ = [
     "PixelSampleArtists",
