@@ -201,3 +201,28 @@ def test_10_2s_float32_words_say_the_sign_as_10_1_counts_it():
     words = hcp.float32_words((xy, 4, 4, (row, col)), expected, got)
     assert "which holds 24 bits and a sign (25 with it, 10.1's count)" in words, words
     assert "53 bits and a sign" in words, words
+
+
+def test_an_endless_edge_bits_is_told_microseconds_not_pixels():
+    def edge_bits(range_bits, across, sub_bits):
+        while True:
+            pass
+
+    text = str(ex.check("edge_bits", edge_bits))
+    assert "it should take microseconds" in text and "per pixel" not in text, text
+
+
+def test_the_figure_greys_a_right_part_and_marks_a_wrong_one_red():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    case = next(c for c in eb.cases() if c[1] == (24, 4096, 8))
+    fig, ax = plt.subplots()
+    eb.draw(ax, case, ((66, None), (68, None)))
+    colours = [line.get_color() for line in ax.lines if line.get_marker() == "x"]
+    assert colours == ["#888888", "#d7301f"], colours
+    texts = [t.get_text() for t in ax.texts]
+    assert "yours: 66 bits, None (right)" in texts and "yours: 68 bits, None" in texts, texts
+    plt.close(fig)

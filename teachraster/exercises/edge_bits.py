@@ -339,10 +339,12 @@ def draw(ax, case, got):
                                    fontsize="x-small"))  # fmt: skip
     if isinstance(got, tuple) and len(got) == 2:
         for k, (n, t) in enumerate(got):
-            artists += ax.plot([k], [n], "x", color="#d7301f", ms=11, mew=2)
+            right = (n, t) == case[2][k]  # r409 F6: a right part is grey, a wrong one red
+            artists += ax.plot([k], [n], "x", color="#888888" if right else "#d7301f", ms=11,
+                               mew=2)  # fmt: skip
             artists.append(
                 ax.annotate(
-                    f"yours: {n} bits, {t}",
+                    f"yours: {n} bits, {t}{' (right)' if right else ''}",
                     (k, n),
                     xytext=(8, 4),
                     textcoords="offset points",
@@ -363,6 +365,8 @@ EDGE_BITS = Exercise(
     hints=HINTS, answers=(PackageAnswer(range_budget, what="lesson 06's count itself"),
                           PackageAnswer(edge_bits_needed, what="lesson 06's count itself")),
     reference=("teachraster.exercises.hard_case_precision",),
+    # r409 F6: edge_bits has no pixels; one call counts bits of two numbers
+    slow=" (one call counts the bits of two forms: it should take microseconds)",
 )  # fmt: skip
 
 # the stub's note says what this figure draws (never the answer)
