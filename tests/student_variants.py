@@ -5696,3 +5696,26 @@ R409_EDGE_BITS = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R409_EDGE_BITS.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R409_EDGE_BITS.items()})
+
+
+def _eb_inclusive(range_bits, across, sub_bits):
+    """r409 F4: the bound taken as reachable: the largest factor 2^k steps, not 2^k − 1."""
+    out = []
+    for k in (range_bits + sub_bits, across.bit_length() - 1 + sub_bits):
+        n = (2 * 2**k * 2**k).bit_length() + 1
+        out.append((n, _eb_type(n)))
+    return tuple(out)
+
+
+R409_EDGE_BITS_COUNTS = {
+    "edge bits with a centre bit per factor": (
+        "edge_bits", _eb(lambda k, m, s: (k + 1) + (m + 1) + 2),
+        "you add a bit per factor for the pixel centres", "a centre bit per factor"),
+    "edge bits with the bound taken as reachable": (
+        "edge_bits", _eb_inclusive, "at most 2^k − 1: k bits, not k + 1", "one bit too many"),
+}  # fmt: skip
+R409_EDGE_BITS.update(R409_EDGE_BITS_COUNTS)
+WRONG.update(
+    {label: (name, fn, words) for label, (name, fn, words, _) in R409_EDGE_BITS_COUNTS.items()}
+)
+KINDS.update({label: kind for label, (_, _, _, kind) in R409_EDGE_BITS_COUNTS.items()})

@@ -242,7 +242,7 @@ def _with(
         k, m = factors[form]
         n = {"right": k + m + 2, "short": k + m + 1, "long": k + m + 3,
              "no sub-pixel": k + m - 2 * sub_bits + 2, "sub-pixel once": k + m - sub_bits + 2,
-             "multiplied": k * m + 2}[count]  # fmt: skip
+             "multiplied": k * m + 2, "centre bit": k + m + 4}[count]  # fmt: skip
         n += form == "absolute" and absolute == "one more"
         out.append((n, narrowest(n, held)))
     return tuple(out[::-1]) if order == "swapped" else tuple(out)
@@ -271,7 +271,13 @@ SHORT = Slip("one bit short", lambda a, e, g: (
     "two products adds to the larger product's, left out"), "short")  # fmt: skip
 LONG = Slip("one bit too many", lambda a, e, g: (
     f"your counts are one bit too many ({_counts(a, g)}): a difference of two products below "
-    "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond"), "long")  # fmt: skip
+    "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond (a factor below "
+    "2^k steps is at most 2^k − 1: k bits, not k + 1)"), "long")  # fmt: skip
+CENTRE = Slip("a centre bit per factor", lambda a, e, g: (
+    f"your counts are two bits too many ({_counts(a, g)}): you add a bit per factor for the "
+    f"pixel centres (lesson 06's centre bit), but with {a[2]} sub-pixel bits (1 or more) the "
+    "centres, at k + ½ px, are on the grid already: a factor below 2^k steps has k bits"),
+    "centre bit")  # fmt: skip
 NO_SUB = Slip("no sub-pixel bits", lambda a, e, g: (
     f"you count whole pixels ({_counts(a, g)}): on the {_grid(a)} grid a factor has {a[2]} bits "
     f"more than in pixels, so a product {2 * a[2]} more"), "no sub-pixel")  # fmt: skip
@@ -319,7 +325,7 @@ def _types_only(args, expected, got) -> bool:
 TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 
 #: The slips, alone or two at once (of different knobs).
-KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED), "largest": (A_X,),
+KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE), "largest": (A_X,),
                       "holds": (WIDTH, NO_SIGN), "order": (SWAPPED,),
                       "absolute": (ABS_MORE,)}, most=2)  # fmt: skip
 
