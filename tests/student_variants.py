@@ -5765,3 +5765,73 @@ R404_WORST_MORE = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R404_WORST_MORE.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R404_WORST_MORE.items()})
+
+
+# == r409: exercise 10.1's edge_bits, the reader's variants (F1 None not NaN, F2 types only, ====
+# F3 C's type names, F4 the absolute count one bit more) ===========================================
+def _eb_types(pick):
+    """edge_bits with every count right and the type from ``pick(bits)``."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        out = []
+        for k in (range_bits + sub_bits, across.bit_length() - 1 + sub_bits):
+            out.append((2 * k + 2, pick(2 * k + 2)))
+        return tuple(out)
+
+    return edge_bits
+
+
+def _eb_none_right_rel_wrong(range_bits, across, sub_bits):
+    """r409 F1: right everywhere but the relative bits of the widest case (its None right)."""
+    if (range_bits, across, sub_bits) == (24, 4096, 8):
+        return ((66, None), (43, "float64"))
+    return _eb(lambda k, m, s: k + m + 2)(range_bits, across, sub_bits)
+
+
+R409_EDGE_BITS = {
+    "edge bits with ints listed before floats": (
+        "edge_bits", _eb_types(lambda n: _eb_type(n, (("int32", 32), ("float32", 25),
+                                                      ("int64", 64), ("float64", 54))) or None),
+        "your counts are right, the type is not", "types only"),
+    "edge bits with > for >=": (
+        "edge_bits", _eb_types(lambda n: next((t for t, h in _EXACT if h > n), None)),
+        "compare with >=, not >", "types only"),
+    "edge bits never None": (
+        "edge_bits", _eb_types(lambda n: _eb_type(n) or "int64"),
+        "no type of the four holds the absolute form's 66 bits: its type is None", "types only"),
+    "edge bits with C's type names": (
+        "edge_bits", _eb_types(lambda n: {"float32": "float", "int32": "int", "float64": "double",
+                                          "int64": "long"}.get(_eb_type(n))),
+        "(C's float is float32, numpy's float64: say which)", "type"),
+    "edge bits with A bounded by the whole range": (
+        "edge_bits", lambda r, a, s: ((2 * (r + s) + 3, _eb_type(2 * (r + s) + 3)),
+                                      _eb(lambda k, m, s: k + m + 2)(r, a, s)[1]),
+        "A = a.y − b.y bounded by the whole range, 2^20 px", "the absolute count one bit more"),
+    "edge bits with None right and the relative bits wrong": (
+        "edge_bits", _eb_none_right_rel_wrong, "wrong: the relative form's bits: count", "value"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R409_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R409_EDGE_BITS.items()})
+
+
+def _eb_inclusive(range_bits, across, sub_bits):
+    """r409 F4: the bound taken as reachable: the largest factor 2^k steps, not 2^k − 1."""
+    out = []
+    for k in (range_bits + sub_bits, across.bit_length() - 1 + sub_bits):
+        n = (2 * 2**k * 2**k).bit_length() + 1
+        out.append((n, _eb_type(n)))
+    return tuple(out)
+
+
+R409_EDGE_BITS_COUNTS = {
+    "edge bits with a centre bit per factor": (
+        "edge_bits", _eb(lambda k, m, s: (k + 1) + (m + 1) + 2),
+        "you add a bit per factor for the pixel centres", "a centre bit per factor"),
+    "edge bits with the bound taken as reachable": (
+        "edge_bits", _eb_inclusive, "at most 2^k − 1: k bits, not k + 1", "one bit too many"),
+}  # fmt: skip
+R409_EDGE_BITS.update(R409_EDGE_BITS_COUNTS)
+WRONG.update(
+    {label: (name, fn, words) for label, (name, fn, words, _) in R409_EDGE_BITS_COUNTS.items()}
+)
+KINDS.update({label: kind for label, (_, _, _, kind) in R409_EDGE_BITS_COUNTS.items()})

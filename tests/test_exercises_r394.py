@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from student_variants import R386, R394, R394_EDGE_BITS, R394_EDGE_BITS_DIFFERENT
+from student_variants import R386, R394, R394_EDGE_BITS, R394_EDGE_BITS_DIFFERENT, R409_EDGE_BITS
 
 from teachraster import exercises as ex
 from teachraster.exercises import edge_bits as eb
@@ -150,3 +150,79 @@ def test_lesson_06s_count_called_is_not_counted():
     report = ex.check("edge_bits", edge_bits)
     assert not report.passed and report.package is not None, str(report)
     assert not report.failures, str(report)  # right on every case, but not counted
+
+
+# -- r409: a None is never NaN (F1), types only (F2), C's names (F3), one count slip (F4) -------
+@pytest.mark.parametrize("label", list(R409_EDGE_BITS))
+def test_r409_edge_bits_variants_are_named_and_never_told_nan(label):
+    _, fn, words, kind = R409_EDGE_BITS[label]
+    tries.forget_hints("edge_bits")
+    report = ex.check("edge_bits", fn)
+    assert not report.passed
+    first = report.failures[0]
+    assert words in first.explanation and first.kind == kind, str(report)
+    assert "NaN" not in str(report), str(report)
+    tries.forget_hints("edge_bits")
+
+
+def test_a_types_only_mistake_never_gets_the_counting_hint():
+    tries.forget_hints("edge_bits")
+    text = str(ex.check("edge_bits", R409_EDGE_BITS["edge bits with > for >="][1]))
+    assert "count in steps" not in text and "your counts are right" in text, text
+    assert "(recipe:" not in text, text  # the table of what each type holds waits for the hints
+    tries.forget_hints("edge_bits")
+
+
+@pytest.mark.parametrize("name", ["float", "int", "double", "long", "Float", "np.double"])
+def test_c_type_names_are_refused_with_the_names_accepted(name):
+    with pytest.raises(Exception, match="say which"):
+        eb.as_answer(((58, name), (38, "float64")))
+
+
+@pytest.mark.parametrize("name", ["float32", "NP.INT64", np.float64, np.dtype("int32"), "None"])
+def test_the_four_names_numpy_types_and_none_are_accepted(name):
+    assert eb.as_answer(((58, name), (38, None)))[1] == (38, None)
+
+
+def test_the_full_words_work_the_task_range_only():
+    tries.forget_hints("edge_bits")
+    ex.check("edge_bits", lambda r, a, s: ((r + s, "int64"), (a, "float64")))
+    text = str(ex.check("edge_bits", lambda r, a, s: ((r + s + 1, "int64"), (a, "float64"))))
+    assert text.count("(worked: the absolute form's") == 1, text
+    assert "a product's bits are its factors' added" in text, text
+    tries.forget_hints("edge_bits")
+
+
+def test_10_2s_float32_words_say_the_sign_as_10_1_counts_it():
+    xy, (row, col) = next(iter(hcp.FLOAT32_CASES.values()))
+    expected = np.zeros((4, 4), dtype=bool)
+    got = expected.copy()
+    got[0, 0] = True
+    words = hcp.float32_words((xy, 4, 4, (row, col)), expected, got)
+    assert "which holds 24 bits and a sign (25 with it, 10.1's count)" in words, words
+    assert "53 bits and a sign" in words, words
+
+
+def test_an_endless_edge_bits_is_told_microseconds_not_pixels():
+    def edge_bits(range_bits, across, sub_bits):
+        while True:
+            pass
+
+    text = str(ex.check("edge_bits", edge_bits))
+    assert "it should take microseconds" in text and "per pixel" not in text, text
+
+
+def test_the_figure_greys_a_right_part_and_marks_a_wrong_one_red():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    case = next(c for c in eb.cases() if c[1] == (24, 4096, 8))
+    fig, ax = plt.subplots()
+    eb.draw(ax, case, ((66, None), (68, None)))
+    colours = [line.get_color() for line in ax.lines if line.get_marker() == "x"]
+    assert colours == ["#888888", "#d7301f"], colours
+    texts = [t.get_text() for t in ax.texts]
+    assert "yours: 66 bits, None (right)" in texts and "yours: 68 bits, None" in texts, texts
+    plt.close(fig)

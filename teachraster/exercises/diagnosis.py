@@ -552,9 +552,17 @@ def _outside_float32(args) -> float | None:
     return None
 
 
+def _holds_none(x) -> bool:
+    """Does ``x`` hold None (r409 F1: a legal None, "no type holds it", is never NaN)?"""
+    try:
+        return any(v is None for v in np.asarray(x, dtype=object).ravel())
+    except (TypeError, ValueError):
+        return False
+
+
 def _nan_words(args, expected, got) -> str | None:
     g = _numbers(got)
-    if g is None or np.isfinite(g).all():
+    if g is None or np.isfinite(g).all() or _holds_none(got):
         return None
     # r286 C1: where, so that one bad channel of a colour is found
     bad = np.isnan(g) if np.isnan(g).any() else ~np.isfinite(g)

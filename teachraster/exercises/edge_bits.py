@@ -11,7 +11,7 @@ counts (:func:`teachraster.core.fixed_point.range_budget`, the one count: the ab
 largest product multiplies two coordinates, the relative form's two differences), and the first
 of float32, int32, float64, int64 that holds that many bits exactly
 (:func:`.hard_case_precision.narrowest`). The task's own range, 2²⁰ px and 1,024 px on the
-1/256-px grid, gives 58 bits (int64: float64's 54 do not hold C = a.x·b.y − a.y·b.x) and 38
+1/256-px grid, gives 58 bits (int64: float64's 54 do not hold C's products a.x·b.y and a.y·b.x) and 38
 (float64).
 
 The check runs several ranges, so a typed answer fails. Each slip is a knob of one wrong
@@ -19,8 +19,10 @@ solution (:data:`KNOBS`), alone or two at once, named only where it gives the an
 short (the sign bit, or the difference's bit, left out), one too many, the sub-pixel bits left
 out or counted once, bits multiplied where a product adds them, A·x taken as the absolute form's
 largest product, the two forms swapped, a type's width taken for what it holds exactly, a
-float's sign bit not counted. The worked count of each form is said once two different answers
-have failed (:data:`HINTS`).
+float's sign bit not counted, the absolute count one bit more (A bounded by the whole range, or
+A·x + B·y + C counted as three terms; r409 F4). Where every count is right and a type is not,
+the words are about types (r409 F2). The recipe is said once two different answers have failed
+(:data:`HINTS`), with the worked count of the task's own range only (r409 change 2).
 """
 
 from __future__ import annotations
@@ -33,7 +35,7 @@ from ..core.fixed_point import BitBudget, range_budget
 from ..study.operation_counts import edge_bits_needed
 from . import tries
 from .answers import refuse_non_answers, short
-from .exercise import Exercise, Knobs, PackageAnswer, Slip
+from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
 from .hard_case_precision import TYPES, exact_bits, narrowest
 from .report import NOTHING_DRAWN_FOR
 from .running import WrongAnswerType
@@ -82,19 +84,32 @@ def cases() -> list[tuple[str, tuple, tuple]]:
     return [(_label(*args), args, answer(*args)) for args in RANGES]
 
 
+#: Names whose meaning differs between C and numpy (r409 F3): refused, not read as numpy's.
+AMBIGUOUS = ("float", "int", "double", "long", "single", "half", "short", "longlong", "intc",
+             "float_", "int_", "longdouble")  # fmt: skip
+
+
 def _type(value, form: str):
-    """A type as its name (a string, a numpy type or dtype; None or "none": no type holds it)."""
+    """A type as its name: one of :data:`TYPES` (any case, "np." allowed), a numpy scalar type
+    or dtype; None or "none": no type holds it. r409 F3: C's names ("float", "int", "double",
+    "long") and Python's ``float`` and ``int`` are refused, never read as numpy's."""
     if value is None or (isinstance(value, str) and value.strip().lower() in ("none", "")):
         return None
-    name = value.strip().lower().removeprefix("np.").removeprefix("numpy.") if isinstance(
-        value, str) else None  # fmt: skip
-    try:
-        name = np.dtype(name if name is not None else value).name
-    except TypeError:
-        name = None
+    refusal = (f"returned {short(value)} as the {form} form's type: one of "
+               f"{', '.join(map(repr, TYPES))}, or None")  # fmt: skip
+    if isinstance(value, str):
+        name = value.strip().lower().removeprefix("np.").removeprefix("numpy.")
+        if name in AMBIGUOUS:
+            refusal += " (C's float is float32, numpy's float64: say which)"
+    elif value in (float, int):
+        name, refusal = None, refusal + " (Python's float is 64 bits, C's 32: say which)"
+    else:
+        try:
+            name = np.dtype(value).name
+        except TypeError:
+            name = None
     if name not in TYPES:
-        raise WrongAnswerType(f"returned {short(value)} as the {form} form's type: one of "
-                              f"{', '.join(map(repr, TYPES))}, or None")  # fmt: skip
+        raise WrongAnswerType(refusal)
     return name
 
 
@@ -174,11 +189,47 @@ def _rule(args, expected, got) -> str:
     return (": count in steps of the grid, as lesson 06 does, term by term (recipe: a factor "
             "below 2^k steps has k bits, a product's bits are its factors' added, a difference "
             "of two products takes one more, the sign one more; the bits of a whole number each "
-            f"type holds exactly, sign included: {held}){_worked_both(args)}")  # fmt: skip
+            f"type holds exactly, sign included: {held}){_worked_one(args)}")  # fmt: skip
+
+
+def _worked_one(args) -> str:
+    """r409 change 2: the worked count of the task's own range only (the recipe is said on
+    every case; the worked answer of every listed case would be each case's answer)."""
+    return _worked_both(args) if tuple(args) == RANGES[0] else ""
+
+
+def _type_rule(args, expected, got) -> str:
+    """r409 F2: every count right, a type wrong: the words are about types, never counting;
+    None said only where it is wrong (F1), ``>`` for ``>=`` named."""
+    said = []
+    for form, (n, t), (_, e) in zip(FORMS, got, expected):
+        if t == e:
+            continue
+        if e is None:
+            said.append(f"no type of the four holds the {form} form's {n} bits: its type is None")
+        elif t is None:
+            said.append(f"your None for the {form} form: {spoken(e)} holds {n} bits")
+        elif t == narrowest(n, lambda name: exact_bits(name) - 1):
+            said.append(f"a type that holds exactly the {form} form's {n} bits holds them: "
+                        "compare with >=, not >")  # fmt: skip
+    held = ", ".join(f"{spoken(t)} {exact_bits(t)}" for t in TYPES)
+    return ("your counts are right, the type is not: the first of the four, in the order "
+            "the task lists them, that holds every whole number of that many bits, sign "
+            "included (a float holds fewer than its width)"
+            f"{'; ' + '; '.join(said) if said else ''} (recipe: the bits of a whole number each "
+            f"type holds exactly, sign included: {held})")  # fmt: skip
 
 
 def _with(
-    range_bits, across, sub_bits, *, count="right", largest="C", holds="exactly", order="as asked"
+    range_bits,
+    across,
+    sub_bits,
+    *,
+    count="right",
+    largest="C",
+    holds="exactly",
+    order="as asked",
+    absolute="C's",
 ) -> tuple:
     """The answer a student gives with some slips (:data:`KNOBS`)."""
     b = budgets(range_bits, across, sub_bits)
@@ -191,7 +242,8 @@ def _with(
         k, m = factors[form]
         n = {"right": k + m + 2, "short": k + m + 1, "long": k + m + 3,
              "no sub-pixel": k + m - 2 * sub_bits + 2, "sub-pixel once": k + m - sub_bits + 2,
-             "multiplied": k * m + 2}[count]  # fmt: skip
+             "multiplied": k * m + 2, "centre bit": k + m + 4}[count]  # fmt: skip
+        n += form == "absolute" and absolute == "one more"
         out.append((n, narrowest(n, held)))
     return tuple(out[::-1]) if order == "swapped" else tuple(out)
 
@@ -219,7 +271,13 @@ SHORT = Slip("one bit short", lambda a, e, g: (
     "two products adds to the larger product's, left out"), "short")  # fmt: skip
 LONG = Slip("one bit too many", lambda a, e, g: (
     f"your counts are one bit too many ({_counts(a, g)}): a difference of two products below "
-    "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond"), "long")  # fmt: skip
+    "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond (a factor below "
+    "2^k steps is at most 2^k − 1: k bits, not k + 1)"), "long")  # fmt: skip
+CENTRE = Slip("a centre bit per factor", lambda a, e, g: (
+    f"your counts are two bits too many ({_counts(a, g)}): you add a bit per factor for the "
+    f"pixel centres (lesson 06's centre bit), but with {a[2]} sub-pixel bits (1 or more) the "
+    "centres, at k + ½ px, are on the grid already: a factor below 2^k steps has k bits"),
+    "centre bit")  # fmt: skip
 NO_SUB = Slip("no sub-pixel bits", lambda a, e, g: (
     f"you count whole pixels ({_counts(a, g)}): on the {_grid(a)} grid a factor has {a[2]} bits "
     f"more than in pixels, so a product {2 * a[2]} more"), "no sub-pixel")  # fmt: skip
@@ -249,9 +307,27 @@ NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     f"{exact_bits('float32')} bits with the sign, a 64-bit float {exact_bits('float64')}"),
     "no sign")  # fmt: skip
 
+ABS_MORE = Slip("the absolute count one bit more", lambda a, e, g: (
+    f"your absolute count, {g[0][0]}, is one bit more than C's count; two slips give it: "
+    f"A = a.y − b.y bounded by the whole range, 2^{a[0]} px (it is a difference of two "
+    f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (A·x and "
+    "B·y are far smaller than C's products: the count is C's, a difference of two products)"),
+    "one more")  # fmt: skip
+
+
+def _types_only(args, expected, got) -> bool:
+    """Every count right, a type wrong (r409 F2)."""
+    return all(g[0] == e[0] for g, e in zip(got, expected)) and got != expected
+
+
+#: r409 F2: a type-only mistake no knob names (ints listed first, > for >=, None never
+#: returned): words about types, never about counting.
+TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
+
 #: The slips, alone or two at once (of different knobs).
-KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED), "largest": (A_X,),
-                      "holds": (WIDTH, NO_SIGN), "order": (SWAPPED,)}, most=2)  # fmt: skip
+KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE), "largest": (A_X,),
+                      "holds": (WIDTH, NO_SIGN), "order": (SWAPPED,),
+                      "absolute": (ABS_MORE,)}, most=2)  # fmt: skip
 
 #: The recipe and the worked counts, said once two different answers have failed.
 HINTS = ((re.compile(r" \((recipe|worked): [^)]*\)"), ""),)
@@ -269,10 +345,12 @@ def draw(ax, case, got):
                                    fontsize="x-small"))  # fmt: skip
     if isinstance(got, tuple) and len(got) == 2:
         for k, (n, t) in enumerate(got):
-            artists += ax.plot([k], [n], "x", color="#d7301f", ms=11, mew=2)
+            right = (n, t) == case[2][k]  # r409 F6: a right part is grey, a wrong one red
+            artists += ax.plot([k], [n], "x", color="#888888" if right else "#d7301f", ms=11,
+                               mew=2)  # fmt: skip
             artists.append(
                 ax.annotate(
-                    f"yours: {n} bits, {t}",
+                    f"yours: {n} bits, {t}{' (right)' if right else ''}",
                     (k, n),
                     xytext=(8, 4),
                     textcoords="offset points",
@@ -289,10 +367,12 @@ def draw(ax, case, got):
 
 #: The exercise, for the registry.
 EDGE_BITS = Exercise(
-    "edge_bits", cases, as_answer, _same, explain, _rule, (KNOBS,), match=_match, draw=draw,
+    "edge_bits", cases, as_answer, _same, explain, _rule, (KNOBS, TYPES_ONLY), match=_match, draw=draw,
     hints=HINTS, answers=(PackageAnswer(range_budget, what="lesson 06's count itself"),
                           PackageAnswer(edge_bits_needed, what="lesson 06's count itself")),
     reference=("teachraster.exercises.hard_case_precision",),
+    # r409 F6: edge_bits has no pixels; one call counts bits of two numbers
+    slow=" (one call counts the bits of two forms: it should take microseconds)",
 )  # fmt: skip
 
 # the stub's note says what this figure draws (never the answer)

@@ -135,7 +135,7 @@ def float32_rounds(args, expected, got) -> bool:
 
 
 def float32_words(args, expected, got) -> str:
-    """float32 named by its 24 bits, the bits E needs on this triangle, and the E that rounds
+    """float32 named by its 24 bits and a sign (25 with it, 10.1's count: r409 F5), the bits E needs on this triangle, and the E that rounds
     at the first wrong pixel (its exact value in steps of 2⁻¹⁶ px²)."""
     xy, width, height, origin = args
     values = edge_values(xy, width, height, origin, orient=False)  # as given, as explained
@@ -149,13 +149,14 @@ def float32_words(args, expected, got) -> str:
     bits = int(np.ceil(np.log2(most / STEP)))
     across = float(np.ptp(s, axis=0).max())
     held32, held64 = exact_bits("float32") - 1, exact_bits("float64") - 1  # without the sign
-    return (f"you compute E in float32, which holds {held32} bits: on this triangle, "
-            f"{across:,.0f} px across, E's products reach {most:,.0f} px², about {bits} bits in steps of "
+    return (f"you compute E in float32, which holds {held32} bits and a sign ({held32 + 1} with "
+            "it, 10.1's count): on this triangle, "
+            f"{across:,.0f} px across, E's products reach {most:,.0f} px², about {bits} bits and a sign in steps of "
             f"2⁻¹⁶ px², and float32's numbers there are {float(np.spacing(np.float32(size))):g} "
             f"px² apart; at pixel [{i}, {j}] the exact E on edge v{k + 1}→v{(k + 1) % 3 + 1} is "
             f"{int(round(e / STEP))} · 2⁻¹⁶ = {e:.3g} px², {'inside' if inside else 'outside'} "
             "by less than float32's rounding, which puts it on the other side; compute E in "
-            f"float64 from differences to a vertex (exact here: {held64} bits) or in int64, "
+            f"float64 from differences to a vertex (exact here: {held64} bits and a sign) or in int64, "
             "directly at each centre rather than stepped")  # fmt: skip
 
 
