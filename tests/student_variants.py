@@ -5659,7 +5659,8 @@ def _span_r403(ends="ceil", split=True, ints=False):
     y, crossings as Fractions (or ``ints``: numerator and denominator in 1/256 px), x_l picked
     by the side of the long edge, then ``ends``: "ceil" (right), "float" (math.ceil(float(x)
     − ½): an exact crossing rounded in float64 at the last step), "half up" (⌊x + ½⌋), "floor"
-    (⌊x − ½⌋ at both ends), "floor + 1" (⌊x − ½⌋ + 1); ``split`` False keeps the edge from the
+    (⌊x − ½⌋ at both ends), "floor + 1" (⌊x − ½⌋ + 1), "int half up" (C's int(x + 0.5));
+    ``split`` False keeps the edge from the
     top vertex to the middle one below the middle vertex too."""
     from fractions import Fraction
 
@@ -5686,6 +5687,7 @@ def _span_r403(ends="ceil", split=True, ints=False):
             "half up": lambda x: math.floor(x + half),
             "floor": lambda x: math.floor(x - half),
             "floor + 1": lambda x: math.floor(x - half) + 1,
+            "int half up": lambda x: int(x + half),
         }[ends]
         return rounding(left), rounding(right)
 
@@ -5711,3 +5713,9 @@ R403 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R403.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R403.items()})
+R403_INT = {
+    "span in fractions, int(x + ½) at both ends": (
+        "span", _span_r403(ends="int half up"), "you rounded with int(x + ½)", "int(x + ½)"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R403_INT.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R403_INT.items()})

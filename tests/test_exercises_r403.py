@@ -9,13 +9,13 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-from student_variants import KINDS, R403, WRONG  # noqa: E402
+from student_variants import KINDS, R403, R403_INT, WRONG  # noqa: E402
 
 from teachraster import exercises as ex  # noqa: E402
 from teachraster.exercises import span_variants, spans  # noqa: E402
 
 
-@pytest.mark.parametrize("label", sorted(R403))
+@pytest.mark.parametrize("label", sorted(R403) + sorted(R403_INT))
 def test_each_r403_student_is_named_by_its_slip_on_every_failure(label):
     name, fn, words = WRONG[label]
     report = ex.check(name, fn)

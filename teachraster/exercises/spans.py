@@ -434,6 +434,8 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "last": _columns(lo, hi - 1),
             # r372 P2, H1: C's int() as floor (toward zero), a clip at column 0, round(x − ½)
             "int() for floor": _columns(_int_ceil(xl - half), _int_ceil(xr - half)),
+            # r403 (w06): C's int(x + 0.5), ties reversed and truncated toward zero
+            "int(x + ½)": _columns(int(xl + half), int(xr + half)),
             "clip at 0": _columns(max(lo, 0), max(hi, 0)),
             "round(x − ½)": _columns(round(xl - half), round(xr - half)),
             # r403 P7: the exact crossing, then a float at the last step (float(Fraction),
@@ -655,6 +657,11 @@ MISTAKES = {
     "toward zero (int(−9.75) is −9, not −10), so a rounding built from int() is one too high "
     "for a negative number that is no integer; math.floor and math.ceil round the same way "
     "on both sides of 0",
+    "int(x + ½)": "you rounded with int(x + ½), C's habit, which is wrong twice: your ties go "
+    "the wrong way round (a centre exactly on x_l, the left edge, you left out and one exactly "
+    "on x_r, the right edge, you covered), and int() truncates toward zero, so left of x = 0 "
+    "your ends are one column further right still; under the top-left rule, which of the two "
+    "edges owns a centre that lies on it, and which rounding is the same on both sides of 0?",
     "clip at 0": "you clipped the span at column 0: the columns are the plane's, negative ones "
     "too (no image clips them here, as lesson 01's span_fill clips to its image)",
     "round(x − ½)": "you rounded x − ½ to the nearest integer (round()): the first covered "
@@ -1199,7 +1206,9 @@ def draw_span(ax, case, got):
                            zorder=3)  # fmt: skip
         # r355 FIG1: the ticks hid the centres the exercise is about, those exactly on a
         # crossing: drawn above them and ringed, as exercise 1's figure rings its ties
-        ties = sorted({x for x in xs if lo <= x - 0.5 < hi and (x - 0.5).is_integer()})
+        # (r403 P7: exact crossings, not their floats: one a hair off a centre is no tie)
+        ties = sorted({float(x) for x in cross
+                       if lo <= x - HALF < hi and (x - HALF).denominator == 1})  # fmt: skip
         if ties:
             artists += ax.plot(ties, [y] * len(ties), "o", mfc="none", mec="black", ms=9,
                                mew=1.2, zorder=5, label="centre on a crossing")  # fmt: skip
