@@ -8,7 +8,7 @@ import numpy as np
 
 
 def span(xy, row):
-    # exact in integers (1/256-px units): in float64 a crossing's product rounds past 2^17 px
+    # exact in integers (1/256-px units): in float64 a crossing's product rounds past 2^18 px
     v = [(round(256 * float(x)), round(256 * float(y))) for x, y in xy]
     y = 256 * int(row) + 128
     xs = []  # crossings as (numerator, denominator > 0) in 1/256 px

@@ -5835,3 +5835,73 @@ WRONG.update(
     {label: (name, fn, words) for label, (name, fn, words, _) in R409_EDGE_BITS_COUNTS.items()}
 )
 KINDS.update({label: kind for label, (_, _, _, kind) in R409_EDGE_BITS_COUNTS.items()})
+
+
+# == r403 (fixex02x, exercise 2, span): exact code, one slip; a float only at the last step ====
+
+
+def _span_r403(ends="ceil", split=True, ints=False):
+    """The reader's exact students (r403 w03, w08, w18, w19, w20, w22, w24): vertices sorted by
+    y, crossings as Fractions (or ``ints``: numerator and denominator in 1/256 px), x_l picked
+    by the side of the long edge, then ``ends``: "ceil" (right), "float" (math.ceil(float(x)
+    − ½): an exact crossing rounded in float64 at the last step), "half up" (⌊x + ½⌋), "floor"
+    (⌊x − ½⌋ at both ends), "floor + 1" (⌊x − ½⌋ + 1), "int half up" (C's int(x + 0.5));
+    ``split`` False keeps the edge from the
+    top vertex to the middle one below the middle vertex too."""
+    from fractions import Fraction
+
+    def span(xy, row):
+        pts = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy),
+                     key=lambda p: p[1])  # fmt: skip
+        (x1, y1), (x2, y2), (x3, y3) = pts
+        y = row + Fraction(1, 2)
+        side = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
+        if not y1 <= y < y3 or side == 0:
+            return 0, 0
+        xl = x1 + (x3 - x1) * (y - y1) / (y3 - y1)
+        if y < y2 or (not split and y2 != y1):
+            xs = x1 + (x2 - x1) * (y - y1) / (y2 - y1)
+        else:
+            xs = x2 + (x3 - x2) * (y - y2) / (y3 - y2)
+        left, right = (xl, xs) if side > 0 else (xs, xl)
+        half = Fraction(1, 2)
+        if ints:  # n/d in 1/256 px, then one float division (r403 w19)
+            return tuple(math.ceil(x.numerator / x.denominator - 0.5) for x in (left, right))
+        rounding = {
+            "ceil": lambda x: math.ceil(x - half),
+            "float": lambda x: math.ceil(float(x) - 0.5),
+            "half up": lambda x: math.floor(x + half),
+            "floor": lambda x: math.floor(x - half),
+            "floor + 1": lambda x: math.floor(x - half) + 1,
+            "int half up": lambda x: int(x + half),
+        }[ends]
+        return rounding(left), rounding(right)
+
+    return span
+
+
+R403 = {
+    "span in fractions, float() at the last step": (
+        "span", _span_r403(ends="float"), "an exact crossing, then rounded in float64 at the "
+        "last step", "float at the last step"),
+    "span in fractions, n / d in floats at the last step": (
+        "span", _span_r403(ints=True), "1.9e-09 px right of the centre", "float at the last step"),
+    "span in fractions, ⌊x + ½⌋ at both ends": (
+        "span", _span_r403(ends="half up"), "your ties go the wrong way round", "ties reversed"),
+    "span in fractions, ⌊x − ½⌋ + 1 at both ends": (
+        "span", _span_r403(ends="floor + 1"), "your ties go the wrong way round",
+        "ties reversed"),
+    "span in fractions, ⌊x − ½⌋ at both ends": (
+        "span", _span_r403(ends="floor"), "you rounded x − ½ down at both ends", "floor(x − ½)"),
+    "span in fractions, a short edge kept past the middle vertex": (
+        "span", _span_r403(split=False), "you kept a short edge past the middle vertex",
+        "no split, side test"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R403.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R403.items()})
+R403_INT = {
+    "span in fractions, int(x + ½) at both ends": (
+        "span", _span_r403(ends="int half up"), "you rounded with int(x + ½)", "int(x + ½)"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R403_INT.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R403_INT.items()})

@@ -78,7 +78,7 @@ def test_lesson_01s_divide_first_loop_fails_on_big_and_names_the_order():
     first = report.failures[0]
     assert "row 42" in first.case and "your crossing divides first" in first.explanation
     assert "23.500000000000004, a hair right of the centre 23.5" in first.explanation
-    assert "(lesson 01 §4b)" in first.explanation
+    assert "lesson 01 §4b proves multiply first exact" in first.explanation
 
 
 @pytest.mark.parametrize("label", sorted(R372))
@@ -163,7 +163,8 @@ def test_the_task_states_the_range_and_every_case_lies_in_it():
     task = _cells()[2]
     assert span_variants.EXACT_BELOW == 2**30
     assert "|x|, |y| < 2^30 px" in task and f"({2**30:,} px)".replace(",", " ") in task
-    assert "exact only while |x|, |y| < 2^17 px" in task
+    assert "proves its multiply-first order exact for coordinates below 2^18 px" in task
+    assert "2^17" not in task  # r403 C1: lesson 01 never says it
     assert "Lesson 01 §4b" in task and "negative ones too" in task
     for label, (xy, _), _ in spans.span_cases():
         if "10^12" not in label:

@@ -94,15 +94,35 @@ ORDERS = ("multiply first", "divide first", "slope first")
 
 #: The range the task states (session 35, r385 T1): vertices on the 1/256-px grid with |x|,
 #: |y| below 2^30 px (256·x then needs 38 bits: every vertex is a float64 exactly). Lesson 01
-#: §4b proves its multiply-first crossing exact below 2^17 px only (differences below 2^18 px
-#: in 2^-8 steps, their product below 2^36 in 2^-16 steps: 52 bits); beyond, the product may
-#: need up to 2·39 = 78 bits (differences below 2^31 px in 2^-8 steps) and rounds, so a crossing exactly on a centre can land a hair off
-#: it (:data:`FAR_TIES`). Every case lies within the range but the triangle 10^12 px wide,
-#: whose asked rows are exact in any order.
+#: §4b proves its multiply-first crossing exact "for coordinates below 2^18 px", a sufficient
+#: bound, not a sharp one (its built ties are missed from 2^19 px on, below 2^20 px); here the
+#: product (y − a_y)(b_x − a_x) may need up to 2·39 = 78 bits (differences below 2^31 px in
+#: 2^-8 steps) and rounds, so a crossing exactly on a centre can land a hair off it
+#: (:data:`FAR_TIES`), and one a hair off a centre can land on it (:data:`FAR_NEAR_TIES`).
+#: Every case lies within the range but the triangle 10^12 px wide, whose asked rows are exact
+#: in any order.
 EXACT_BELOW = 2**30
 
-#: Below this, lesson 01's multiply-first crossing in float64 is exact (its §4b).
-FLOAT64_EXACT_BELOW = 2**17
+#: Lesson 01 §4b's bound: below it, its multiply-first crossing in float64 is exact (r403 C1:
+#: 2^18, as the lesson proves and prints; not 2^17).
+FLOAT64_EXACT_BELOW = 2**18
+
+#: r403 P7: crossings a hair (1.9·10^-9 px) right of a centre, not on it, near 2^29 px, where
+#: float64's numbers are 6·10^-8 px apart: any float, even an exact crossing rounded to float64
+#: at the last step (``math.ceil(n / d / 256 - 0.5)``, ``float(Fraction)``), lands on the
+#: centre and moves the end (x_r on the first triangle's row 268435457, x_l on the mirrored
+#: one's row 268435455); and crossings a hair left of a centre (their other rows), where a float
+#: that lands past the centre does. Columns from the exact crossings.
+FAR_NEAR_TIES = (
+    ("x_r a hair right of a centre", ((536870912.0, 0.0), (536869912.0, 536870906.0),
+     (536870913.0, 536870913.0)), 268435457),
+    ("x_r a hair left of a centre", ((536870912.0, 0.0), (536869912.0, 536870906.0),
+     (536870913.0, 536870913.0)), 268435455),
+    ("x_l a hair right of a centre", ((-536870912.0, 0.0), (-536869912.0, 536870906.0),
+     (-536870913.0, 536870913.0)), 268435455),
+    ("x_l a hair left of a centre", ((-536870912.0, 0.0), (-536869912.0, 536870906.0),
+     (-536870913.0, 536870913.0)), 268435457),
+)  # fmt: skip
 
 #: r385 T1: rows with a crossing exactly on a centre where lesson 01's multiply-first crossing
 #: in float64, x = a_x + (y − a_y)(b_x − a_x)/(b_y − a_y), lands a hair right of it (so a
@@ -327,11 +347,20 @@ def _tie_off(args, order: str) -> str:
     )
 
 
+#: r403 H5: in the stated range no order of float operations is exact (multiply first too
+#: fails the far rows), so the hint for a rounding crossing points to exact arithmetic.
+NO_FLOAT_ORDER = (
+    "In this range no float order is exact (lesson 01 §4b proves multiply first exact for "
+    "coordinates below 2^18 px only, and the check's vertices reach 2^29 px): compute the "
+    "crossing in integers (1/256-px units) or fractions.Fraction, and round it to a column "
+    "without a float"
+)
+
+
 def _order_words(order: str, what: str):
     def words(args, expected, got) -> str:
         return (f"your crossing divides first: {what} rounds (its quotient has no finite "
-                f"binary fraction){_tie_off(args, order)}. Which order of the same operations "
-                "gives a crossing exactly on the 1/256-px grid? (lesson 01 §4b)")  # fmt: skip
+                f"binary fraction){_tie_off(args, order)}. {NO_FLOAT_ORDER}")  # fmt: skip
 
     return words
 

@@ -32,10 +32,12 @@ from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
+    FAR_NEAR_TIES,
     FAR_TIES,
     FLOAT64_EXACT_BELOW,
     FLOOR_ROWS,
     NEAR_TIES,
+    NO_FLOAT_ORDER,
     PLACED,
     TIE_ENDS,
     TIE_ROWS,
@@ -244,10 +246,14 @@ def _r385_cases() -> list[tuple[str, tuple, frozenset]]:
 def _far_cases() -> list[tuple[str, tuple, frozenset]]:
     """r385 T1 (session 35): rows 10^8 px out where lesson 01's multiply-first crossing, in
     float64, lands a hair right of the centre it lies on exactly, on each edge from each end
-    (its §4b proves it exact below 2^17 px only); columns from the exact crossings."""
-    return [(f"far out, {label}, row {row} (a crossing exactly on a centre, 10^8 px out)",
+    (its §4b proves it exact below 2^18 px); r403 P7: rows near 2^29 px whose crossing lies
+    a hair off a centre, where any float step moves an end. Columns from the exact crossings."""
+    ties = [(f"far out, {label}, row {row} (a crossing exactly on a centre, 10^8 px out)",
              (np.array(points), row), exact_columns(np.array(points), row))
             for label, points, row in FAR_TIES]  # fmt: skip
+    return ties + [(f"far out, {label}, row {row} (not on it, near 2^29 px)",
+                    (np.array(points), row), exact_columns(np.array(points), row))
+                   for label, points, row in FAR_NEAR_TIES]  # fmt: skip
 
 
 def _far(xy: np.ndarray) -> bool:
@@ -404,9 +410,7 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     variant keeps the bottom-edge rule and the area test (r355 C2: without them "ties
     reversed" also gave a missing bottom-edge rule's answer, so that second mistake was never
     named)."""
-    out = {}
-    if _far(xy):  # r385 T1: a mistake of the table, made in float64 there, adds the rounding
-        return out  # of the far crossings to its own answer: none is said on these rows
+    out = {}  # r403 M9, H4: far rows too, exactly (a float64 student's, :func:`_match`)
     y = Fraction(2 * row + 1, 2)
     centre = crossings(xy, y)
     half = Fraction(1, 2)
@@ -421,6 +425,8 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "corners": _columns(math.ceil(xl), math.ceil(xr)),
             # r363 C6: ⌊x⌋ for both ends was told the rule, then "first too far right"
             "floor": _columns(math.floor(xl), math.floor(xr)),
+            # r403 H4: ⌊x − ½⌋ at both ends (the centre at or left of each crossing)
+            "floor(x − ½)": _columns(math.floor(xl - half), math.floor(xr - half)),
             "right inclusive": _columns(lo, math.floor(xr - half) + 1),
             "left exclusive": _columns(math.floor(xl - half) + 1, hi),
             "rounded": _columns(round(xl), round(xr)),
@@ -428,8 +434,15 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "last": _columns(lo, hi - 1),
             # r372 P2, H1: C's int() as floor (toward zero), a clip at column 0, round(x − ½)
             "int() for floor": _columns(_int_ceil(xl - half), _int_ceil(xr - half)),
+            # r403 (w06): C's int(x + 0.5), ties reversed and truncated toward zero
+            "int(x + ½)": _columns(int(xl + half), int(xr + half)),
             "clip at 0": _columns(max(lo, 0), max(hi, 0)),
             "round(x − ½)": _columns(round(xl - half), round(xr - half)),
+            # r403 P7: the exact crossing, then a float at the last step (float(Fraction),
+            # n / d / 256): a crossing a hair off a centre far out lands on it
+            "float at the last step": _Strict(
+                _columns(math.ceil(float(xl) - 0.5), math.ceil(float(xr) - 0.5))
+            ),
         }
         out.update({k: frozenset() if bottom else v for k, v in rounded.items()})
         if hi > lo and not bottom:  # r372 M1, M2: the pair the wrong way round on every
@@ -451,7 +464,17 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     if np.ptp(swapped[:, 0]) < 10**6:  # (the 10^12-px triangle's swap: no span to hold)
         out["x and y swapped"] = exact_columns(swapped, row)
     out.update(more_variants(xy, row, exact_columns))
+    if _far(np.asarray(xy)):  # r403 M9: far out a mistake speaks where it changes the answer
+        # (a float64 student with another slip may miss a far row by its rounding alone)
+        right = exact_columns(xy, row)
+        out = {k: None if v is not None and same_span(v, right) else v for k, v in out.items()}
     return out
+
+
+class _Strict(frozenset):
+    """A mistake's columns that float64's rounding is no part of: matched as they are, not
+    with float64's ends on far rows (:func:`_float64_same`; the float at the last step is
+    itself float64's rounding)."""
 
 
 def _int_ceil(t: Fraction) -> int:
@@ -474,14 +497,37 @@ def _match(got, answer, args) -> bool:
     the long edge taken twice below the split)."""
     mine, theirs = _returned(got), getattr(answer, "pair", None)
     if mine is not None and theirs is not None and mine[1] < mine[0]:
-        return theirs == mine
-    return set(got) == set(answer)
+        return theirs == mine or _float64_same(got, answer, args)
+    return set(got) == set(answer) or _float64_same(got, answer, args)
+
+
+def _float64_same(got, answer, args) -> bool:
+    """r403 M9: on a far row, the student's answer is the mistake's but for ends (at most two
+    columns off) whose exact crossing lies on a centre or within float64's rounding of one:
+    there a float64 student with that mistake (int() for a ceiling, say) rounds the crossing
+    to either side first, and the table is evaluated exactly."""
+    xy, row = args
+    mine = _returned(got)
+    if mine is None or isinstance(answer, _Strict) or not _far(np.asarray(xy)):
+        return False
+    theirs = getattr(answer, "pair", None) or (answer and (min(answer), max(answer) + 1))
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    if not theirs or cross is None or _horizontal_edge(xy, row + 0.5):
+        return False
+    centres = [Fraction(math.floor(x)) + HALF for x in cross]  # the centre nearest each
+    if not any(x == c or _within_float64(x, c) for x, c in zip(cross, centres)):
+        return False
+    return all(abs(end - its) <= 2 for end, its in zip(mine, theirs))
 
 
 #: The lines a student may intersect instead of the centre line y = row + ½ (r355: y = row − ½,
 #: row + 1 and row + 1.5 were named "row top" or "ends").
 SHIFTS = {"row top": Fraction(0), "row − ½": Fraction(-1, 2), "row + 1": Fraction(1),
           "row + 1.5": Fraction(3, 2)}  # fmt: skip
+
+
+def _pick_pair(long_x, short_x, long_is_left: bool) -> frozenset:
+    return pair_columns(long_x, short_x) if long_is_left else pair_columns(short_x, long_x)
 
 
 def _horizontal_reversed(xy, row, lo, hi) -> frozenset:
@@ -504,6 +550,7 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "strict",
             "no area test",
             "no split",
+            "no split, side test",
             "long edge left",
             "side at row",
             "side x2 > x1",
@@ -532,6 +579,10 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     long_x = at(v[0], v[2])
     no_split = at(v[0], v[1]) if y1 != y2 else at(v[1], v[2])
     out["no split"] = _columns(*sorted((math.ceil(long_x - half), math.ceil(no_split - half))))
+    # r403 H4 (w08): the same edge kept past the middle vertex, x_l picked by the side test at
+    # the middle vertex (the lesson's u4): below the split the pair may come back reversed
+    u4 = x1 + (y2 - y1) * (x3 - x1) / (y3 - y1)
+    out["no split, side test"] = _pick_pair(long_x, no_split, x2 > u4) if y < y3 else None
     short_x = at(v[0], v[1]) if y <= y2 else at(v[1], v[2])
     out["long edge left"] = pair_columns(long_x, short_x)
     # r363 M1, C5: the side of the long edge the middle vertex lies on, judged by the long
@@ -545,6 +596,14 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
                                                      math.ceil(wrong - half))))  # fmt: skip
     return out
 
+
+#: r403 H4: the task promises to name "a short edge kept past the middle vertex"
+NO_SPLIT = (
+    "you kept a short edge past the middle vertex: you used the edge from the top vertex to "
+    "the middle one below the middle vertex too, but the edge that bounds the triangle on that "
+    "side changes at the middle vertex (the split), and below it runs from the middle vertex "
+    "to the bottom one"
+)
 
 MISTAKES = {
     "ties reversed": "your columns are right wherever no centre lies exactly on a crossing, "
@@ -598,6 +657,11 @@ MISTAKES = {
     "toward zero (int(−9.75) is −9, not −10), so a rounding built from int() is one too high "
     "for a negative number that is no integer; math.floor and math.ceil round the same way "
     "on both sides of 0",
+    "int(x + ½)": "you rounded with int(x + ½), C's habit, which is wrong twice: your ties go "
+    "the wrong way round (a centre exactly on x_l, the left edge, you left out and one exactly "
+    "on x_r, the right edge, you covered), and int() truncates toward zero, so left of x = 0 "
+    "your ends are one column further right still; under the top-left rule, which of the two "
+    "edges owns a centre that lies on it, and which rounding is the same on both sides of 0?",
     "clip at 0": "you clipped the span at column 0: the columns are the plane's, negative ones "
     "too (no image clips them here, as lesson 01's span_fill clips to its image)",
     "round(x − ½)": "you rounded x − ½ to the nearest integer (round()): the first covered "
@@ -609,9 +673,12 @@ MISTAKES = {
     "a strict test drops its crossing from both; an edge includes its ends (≤)",
     "no area test": "you treated the line as a triangle: a triangle of zero area covers "
     "nothing, so test the area (the edge function of the three vertices) before the crossings",
-    "no split": "you used the edge from the top vertex to the middle one below the middle "
-    "vertex too: the edge that bounds the triangle on that side changes at the middle vertex "
-    "(the split), and below it runs from the middle vertex to the bottom one",
+    "no split": NO_SPLIT,
+    "no split, side test": NO_SPLIT,
+    "floor(x − ½)": "you rounded x − ½ down at both ends (math.floor): that gives the column "
+    "whose centre lies at or left of the crossing, but the first covered column is the first "
+    "whose centre lies at or right of x_l, and stop the first at or right of x_r: where no "
+    "centre lies on a crossing both your ends are one column too far left",
     "side at row": "your x_l and x_r are swapped on this row: you judged which side of the "
     "long edge the middle vertex lies on by the long edge's crossing at this row; judge it "
     "where the long edge reaches the middle vertex's height (or take the smaller crossing as "
@@ -623,6 +690,9 @@ MISTAKES = {
     "lower denominator": "below the middle vertex your crossing of the edge from the middle "
     "vertex to the bottom one is off: you divided by y3 − y1, the long edge's height, not by "
     "that edge's own height y3 − y2: x = x2 + (y − y2)·(x3 − x2)/(y3 − y2)",
+    "float at the last step": lambda args, expected, got: _landed_words(
+        args, expected, got, last=True
+    ),
     "long edge left": "you took the long edge's crossing (top vertex to bottom one) as the "
     "left end: the long edge is the left one only when the middle vertex lies right of it; "
     "here the middle vertex lies left of it, so the long edge bounds the span on the right "
@@ -892,12 +962,10 @@ def _rounds_words(args, expected, got) -> str:
     if found and "float32" in found[0]:
         return (f"on {edge} {side} is exactly {_frac(x)}, a centre, and your {name} {end} means "
                 f"yours came out a hair right of it{how}: float32 holds 24 bits, and its "
-                "rounding moved the tie; compute in float64, and the crossing exact (lesson "
-                "01 §4b)")  # fmt: skip
+                f"rounding moved the tie. {NO_FLOAT_ORDER}")  # fmt: skip
     return (f"on {edge} {side} is exactly {_frac(x)}, a centre, and your {name} {end} means "
             f"yours came out a hair right of it{how}: your crossing rounds, so the tie went to "
-            "the wrong side. Which order of the same operations gives a crossing exactly on "
-            "the 1/256-px grid? (lesson 01 §4b)")  # fmt: skip
+            f"the wrong side. {NO_FLOAT_ORDER}")  # fmt: skip
 
 
 def _float64_of(args, end: int, x: Fraction) -> tuple[str, float, int] | None:
@@ -918,15 +986,66 @@ def _float64_of(args, end: int, x: Fraction) -> tuple[str, float, int] | None:
 
 
 def _float64_fits(args, expected, got) -> bool | None:
-    """r385 T1: far out (beyond 2^17 px), every wrong end one column right of a crossing
-    exactly on a centre; None (no say) nearer in, where float64 multiply-first is exact."""
+    """r385 T1: far out (beyond 2^18 px), every wrong end one column right of a crossing
+    exactly on a centre, or (r403 P7) one column left of a crossing that float64 rounds onto
+    a centre; None (no say) nearer in, where float64 multiply-first is exact."""
     if not _far(args[0]):
         return None
-    return bool(_ties_off(args, got))
+    return bool(_ties_off(args, got) or _landed_off(args, got))
+
+
+def _landed_off(args, got) -> list[tuple[str, int, Fraction, Fraction]] | None:
+    """(end name, the student's end, the exact crossing, the centre it lies a hair from) of
+    each end one column off the exact one, where the crossing lies within a few of float64's
+    steps of that centre but not on it (r403 P7: a hair right of it, float64 lands on it and
+    the end moves left; a hair left, a float computation that lands past it moves it right).
+    None: another difference, or none."""
+    xy, row = args
+    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
+    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
+        return None
+    off = []
+    for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
+        right = math.ceil(x - HALF)
+        if end != right:
+            centre = Fraction(min(end, right)) + HALF
+            if abs(end - right) != 1 or not _within_float64(x, centre):
+                return None
+            off.append((name, end, x, centre))
+    return off or None
+
+
+def _within_float64(x: Fraction, centre: Fraction) -> bool:
+    """x lies off ``centre`` by under four of float64's steps there (never on it)."""
+    return x != centre and abs(float(x - centre)) < 4 * float(np.spacing(abs(float(centre))))
+
+
+def _landed_words(args, expected, got, last: bool = False) -> str:
+    """r403 P7: a crossing a hair off a centre far out, which a float computation moves onto
+    or past it: said with its gap and float64's spacing there; ``last``: the student's
+    crossings are exact elsewhere (the table's "float at the last step" gives every answer)."""
+    name, end, x, centre = _landed_off(args, got)[0]
+    side = "x_l" if name == "first" else "x_r"
+    gap = float(x - centre)
+    covered = (gap > 0) == (name == "stop")  # right of a centre: x_r covers it, x_l does not
+    state, yours = ("covered", "leaves it out") if covered else ("not covered", "covers it")
+    lands = "on the centre" if gap > 0 else "past it"
+    return (f"{side} lies {abs(gap):.2g} px {'right' if gap > 0 else 'left'} of the centre "
+            f"{float(centre):.1f}, not on it, so that centre is {state}; your {name} {end} {yours}: "
+            f"{LAST_STEP if last else 'a float anywhere (' + LAST_STEP + ', too)'}: near "
+            f"{abs(end):.2g} px float64's numbers are {float(np.spacing(float(abs(end)))):.2g} "
+            f"px apart, so it lands {lands}. Round the exact quotient to a column without a "
+            "float (integer floor division, or math.ceil of the Fraction itself)")  # fmt: skip
+
+
+LAST_STEP = ("an exact crossing, then rounded in float64 at the last step (math.ceil(n / d / "
+             "256 - 0.5), math.ceil(float(Fraction) - 0.5))")  # fmt: skip
 
 
 def _float64_words(args, expected, got) -> str:
     xy, row = args
+    if not _ties_off(args, got):
+        return _landed_words(args, expected, got)
     name, end, x = _ties_off(args, got)[0]
     side = "x_l" if name == "first" else "x_r"
     found = _float64_of(args, end, x)
@@ -939,7 +1058,8 @@ def _float64_words(args, expected, got) -> str:
             f"in float64 (multiplied first from the edge's {start} end it lands at {value!r}). "
             f"With vertices near 2^{far:.0f} px the product (y − a_y)(b_x − a_x) needs {bits} "
             "bits on the 1/256-px grid, and float64 holds 53, so it rounds (lesson 01 §4b "
-            "proves that order exact below 2^17 px only): compute the crossing, and its "
+            "proves that order exact for coordinates below 2^18 px, a sufficient bound): "
+            "compute the crossing, and its "
             "rounding to a column, exactly, without floats (integers in 1/256-px units, or "
             "fractions.Fraction)")  # fmt: skip
 
@@ -1014,8 +1134,8 @@ SYMPTOMS = (
     # r385 P4, H2: a crossing that rounds at a tie (quoted where a usual formula gives it),
     # float32's t named as float32, an epsilon on the ends, x_l and x_r swapped on a row
     # (only where every failing answer is such a tie: one end off at a tie is no cause alone)
-    # r385 T1 (session 35): lesson 01's multiply-first order in float64, past 2^17 px
-    Mistake("float64 crossing", _float64_words, fits=_float64_fits, symptom=True),
+    # r385 T1 (session 35): lesson 01's multiply-first order in float64, past 2^18 px
+    Mistake("float64 crossing", _float64_words, fits=_float64_fits, symptom=True, with_others=True),
     Mistake("crossing rounds", _rounds_words, fits=_rounds_fits, symptom=True, only_whole=True),
     Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
@@ -1038,7 +1158,13 @@ def _horizontal_edge(xy: np.ndarray, y: float) -> str:
 
 
 def _frac(x: Fraction) -> str:
-    return num(float(x))
+    """x as a float; where that float is a centre x is not on (r403 P7: 2^29 px out), with the
+    gap, so that no crossing off a centre reads as a tie."""
+    near = float(x)
+    if (near - 0.5).is_integer() and x != Fraction(near):
+        gap = float(x - Fraction(near))
+        return f"{num(near)} {'+' if gap > 0 else '−'} {abs(gap):.2g}"
+    return num(near)
 
 
 def _vertices(xy) -> str:
@@ -1080,7 +1206,9 @@ def draw_span(ax, case, got):
                            zorder=3)  # fmt: skip
         # r355 FIG1: the ticks hid the centres the exercise is about, those exactly on a
         # crossing: drawn above them and ringed, as exercise 1's figure rings its ties
-        ties = sorted({x for x in xs if lo <= x - 0.5 < hi and (x - 0.5).is_integer()})
+        # (r403 P7: exact crossings, not their floats: one a hair off a centre is no tie)
+        ties = sorted({float(x) for x in cross
+                       if lo <= x - HALF < hi and (x - HALF).denominator == 1})  # fmt: skip
         if ties:
             artists += ax.plot(ties, [y] * len(ties), "o", mfc="none", mec="black", ms=9,
                                mew=1.2, zorder=5, label="centre on a crossing")  # fmt: skip
@@ -1172,7 +1300,7 @@ def _mistakes() -> list[Mistake]:
     out = []
     for m in variant_mistakes(_variants, MISTAKES, SYMPTOMS):
         if m.gives is not None:  # r372 M4: every failing answer it would change, or no name
-            m = dataclasses.replace(m, must_fit=_changes(m.gives))
+            m = dataclasses.replace(m, must_fit=_changes(m.gives, m.kind in LAST_STEP_KINDS))
             # r372 M4: and only where it contradicts no passing answer
             m = dataclasses.replace(m, consistent=True)
         elif m.fits is not None and m.kind != "float64 crossing":
@@ -1194,13 +1322,21 @@ def _near_only(fits):
     return near
 
 
-def _changes(gives):
+#: r403 P7: named only where it gives every failing far row (a float crossing, lesson 01's,
+#: also fails the far ties, where an exact crossing rounded at the last step is right)
+LAST_STEP_KINDS = ("float at the last step",)
+
+
+def _changes(gives, far: bool = False):
     """``must_fit`` of a wrong solution: the failing cases where it changes the answer. It is
     named only where it gives the student's answer on every one of them (r372 M4: an empty or
     shifted span matched a few cases of "long edge left", "x2 > x1" and "no split" by
-    coincidence, and all three were named on a crossing computed with the wrong sign)."""
+    coincidence, and all three were named on a crossing computed with the wrong sign);
+    ``far``: every failing far row too."""
 
     def must(args, expected, got) -> bool:
+        if far and _far(np.asarray(args[0])):
+            return True
         value = gives(*args)
         return value is not None and not same_span(value, expected)
 
