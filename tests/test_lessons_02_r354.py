@@ -45,5 +45,6 @@ def test_r354_the_outputs_fit_a_column_and_the_box_share_is_printed():
     assert ours == (70, 169, 41) and sliver[2] < 10 and 2 * max(ours[0], sliver[0]) <= ours[1]
     flat = " ".join(text["c09"].split())
     assert (
-        "at most half its box" in flat and f"{ours[2]}% for ours, {sliver[2]}% for a sliver" in flat
+        "area is at most half its box's" in flat
+        and f"{ours[2]}% for ours, {sliver[2]}% for a sliver" in flat
     )
