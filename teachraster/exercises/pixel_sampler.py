@@ -331,7 +331,7 @@ def sample_questions(pyramid) -> str:
     same = "the same" if np.allclose(a, b) else "different"
     return (
         f"7.4: the tip (5, 14) asks for λ = {num(tip)}: {read}. (28, 14) and (29, 15) share "
-        f"λ but not (u, v): {_shown(a, b)} and {_shown(b, a)}, {same} values"
+        f"λ but not (u, v): their filtered values are {_shown(a, b)} and {_shown(b, a)}, {same}"
     )
 
 
