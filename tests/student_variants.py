@@ -5905,3 +5905,123 @@ R403_INT = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R403_INT.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R403_INT.items()})
+# == r405 F1-F3 (fixex07x, exercises 7.1 pixel_lod and 7.4 pixel_sample: the reader's variants) ====
+
+_R405_LOD = """
+def pixel_lod(xy, w, uv, size, row, col):
+    uv = np.asarray(uv, dtype=float)
+
+    def at(x, y):
+        return perspective_weights(barycentric(xy, [[x, y]]), w, extrapolate={EXTRAP})[0] @ uv
+
+    r0, c0 = {QUAD}
+    ul = at(c0 + 0.5, r0 + 0.5)
+    ddx, ddy = at(c0 + 1.5, r0 + 0.5) - ul, at(c0 + 0.5, r0 + 1.5) - ul
+    h, wt = size
+    t = np.array({TEXELS})
+    rho = {RHO}(np.hypot(*(ddx * t)), np.hypot(*(ddy * t)))
+    return float({LOG})
+"""
+
+_R405_SAMPLE = """
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    lod = pixel_lod(xy, w, uv, {SIZE}, {RC})
+    lam = barycentric(xy, [[{X}, {Y}]])
+    uvh = perspective_weights(lam, w)[0] @ np.asarray(uv, dtype=float)
+    return {RET}
+"""
+
+
+def _r405(template, defaults, **knobs):
+    """A student's function from ``template`` with its typical slip ``knobs`` (the reader's
+    variants), its pixel_lod and trilinear the student's own globals (7.4 calls them)."""
+    from exercise_solutions import trilinear
+
+    from teachraster import barycentric, perspective_weights
+
+    space = {"np": np, "barycentric": barycentric, "perspective_weights": perspective_weights,
+             "trilinear": knobs.pop("trilinear", trilinear),
+             "pixel_lod": knobs.pop("pixel_lod", _rs.pixel_lod)}  # fmt: skip
+    text = template
+    for key, value in {**defaults, **knobs}.items():
+        text = text.replace("{" + key + "}", value)
+    exec(text, space)  # noqa: S102 - the test's own source, as a notebook cell runs it
+    return space[template.split("def ")[1].split("(")[0]]
+
+
+def _lod405(**knobs):
+    return _r405(_R405_LOD, {"QUAD": "row - row % 2, col - col % 2", "TEXELS": "[wt, h]",
+                             "RHO": "max", "LOG": "np.log2(rho)", "EXTRAP": "True"}, **knobs)  # fmt: skip
+
+
+def _ps405(**knobs):
+    return _r405(_R405_SAMPLE, {"SIZE": "np.shape(pyramid[0])[:2]", "RC": "row, col",
+                                "X": "col + 0.5", "Y": "row + 0.5",
+                                "RET": "trilinear(pyramid, uvh, lod, wrap)"}, **knobs)  # fmt: skip
+
+
+def _trilinear_repeat_only(pyramid, uv, lod, wrap):
+    from exercise_solutions import trilinear
+
+    return trilinear(pyramid, uv, lod, "repeat")
+
+
+#: label: (name, fn, words in the first failure, kind of the first failure).
+R405_PIXEL = {
+    "pixel lod as log2 of ρ²": (
+        "pixel_lod", _lod405(LOG="np.log2(rho ** 2)"), "that is log2 of ρ²", "log2 of ρ²"),
+    "pixel lod with the natural log": (
+        "pixel_lod", _lod405(LOG="np.log(rho)"), "the natural logarithm of ρ", "natural log"),
+    "pixel lod from the shorter step": (
+        "pixel_lod", _lod405(RHO="min"), "your λ follows the shorter step", "the shorter step"),
+    "pixel lod from the quad of pixel (col, row)": (
+        "pixel_lod", _lod405(QUAD="col - col % 2, row - row % 2"), "row and col swapped",
+        "quad of pixel (col, row)"),
+    "pixel lod with W − 1 and H − 1 texels": (
+        "pixel_lod", _lod405(TEXELS="[wt - 1, h - 1]"), "you scaled u by W − 1 = ",
+        "W − 1 and H − 1"),
+    "pixel sample with the channels averaged": (
+        "pixel_sample", _ps405(RET="float(np.mean(trilinear(pyramid, uvh, lod, wrap)))"),
+        "your sample has 1 channel where the texture has 3", "channels averaged"),
+    "pixel sample with the first channel only": (
+        "pixel_sample", _ps405(RET="np.ravel(trilinear(pyramid, uvh, lod, wrap))[0]"),
+        "your sample has 1 channel where the texture has 3", "first channel only"),
+    "pixel sample always with wrap 'repeat'": (
+        "pixel_sample", _ps405(RET="trilinear(pyramid, uvh, lod, 'repeat')"),
+        "you filtered with wrap='repeat' where this case's wrap is 'clamp'",
+        "wrap fixed to 'repeat'"),
+    "pixel sample with (col, row) passed to pixel_lod": (
+        "pixel_sample", _ps405(RC="col, row"), "you passed (col, row) to pixel_lod",
+        "(row, col) swapped in pixel_lod"),
+    "pixel sample from ⌊λ⌋'s level alone": (
+        "pixel_sample",
+        _ps405(RET="trilinear(pyramid, uvh, float(np.clip(np.floor(lod), 0, len(pyramid) - 1)), wrap)"),  # noqa: E501
+        "that is the level ⌊λ⌋ alone", "⌊λ⌋'s level alone"),
+    "pixel sample at (v, u)": (
+        "pixel_sample", _ps405(RET="trilinear(pyramid, uvh[::-1], lod, wrap)"),
+        "you filtered at (v, u)", "(v, u)"),
+    "pixel sample with the size (levels, levels)": (
+        "pixel_sample", _ps405(SIZE="(len(pyramid), len(pyramid))"),
+        "len(pyramid) counts its levels", "size (levels, levels)"),
+    "pixel sample with |λ|": (
+        "pixel_sample", _ps405(RET="trilinear(pyramid, uvh, abs(lod), wrap)"), "your λ is |λ|",
+        "|λ|"),
+    "pixel sample at the centre of pixel (col, row)": (
+        "pixel_sample", _ps405(X="row + 0.5", Y="col + 0.5"), "(row, col) swapped; x runs",
+        "(u, v) at (col, row), clamped"),
+    "pixel sample with level 1's size": (
+        "pixel_sample", _ps405(SIZE="np.shape(pyramid[1])[:2]"), "texels of level 1",
+        "level 1's size"),
+    "pixel sample, right, with a pixel_lod whose W and H are swapped": (
+        "pixel_sample", _ps405(pixel_lod=_lod405(TEXELS="[h, wt]")),
+        "your pixel_lod gives λ = 1.475 here where 7.1's answer is 0.78",
+        "your pixel_lod (7.1)"),
+    "pixel sample, right, with a pixel_lod whose helpers are clamped": (
+        "pixel_sample", _ps405(pixel_lod=_lod405(EXTRAP="False")),
+        "fix pixel_lod first", "your pixel_lod (7.1)"),
+    "pixel sample, right, with a trilinear that ignores wrap": (
+        "pixel_sample", _ps405(trilinear=_trilinear_repeat_only),
+        "where 7.3's answer is", "your trilinear (7.3)"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R405_PIXEL.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R405_PIXEL.items()})

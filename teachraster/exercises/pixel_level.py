@@ -117,6 +117,7 @@ def _variants(xy, w, uv, size, row, col) -> dict:
                (_uv_at(xy, w, uv, at[0], at[1] + 1) - _uv_at(xy, w, uv, at[0], at[1] - 1)) / 2)  # fmt: skip
     return {
         "the pixel's own quad": lod(_steps(xy, w, uv, row, col)),
+        "quad of pixel (col, row)": lod(_steps(xy, w, uv, col - col % 2, row - row % 2)),
         "odd quads": lod(_steps(xy, w, uv, row - (row + 1) % 2, col - (col + 1) % 2)),
         "helpers clamped": lod(_steps(xy, w, uv, r0, c0, clamp=True)),
         "affine": lod(_steps(xy, w, uv, r0, c0, affine=True)),
@@ -125,6 +126,7 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "centred": lod(centred),
         "no texels": lod((ddx, ddy), scale="units"),
         "W and H swapped": lod((ddx, ddy), scale="swapped"),
+        "W − 1 and H − 1": level_with(ddx, ddy, (h - 1, wt - 1)),
         "u alone": _log2(max(abs(ddx[0]), abs(ddy[0])) * wt),
         "v alone": _log2(max(abs(ddx[1]), abs(ddy[1])) * h),
         "ddx alone": lod((ddx, ddy), combine="x only"),
@@ -136,7 +138,19 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "ρ itself": lod((ddx, ddy), log="none"),
         "rounded": lod((ddx, ddy), log="round"),
         "rounded down": lod((ddx, ddy), log="floor"),
+        **_log_slips(xy, w, uv, size, row, col),
     }
+
+
+def _log_slips(*args) -> dict:
+    """r405 F3: the slips of the last step, told from λ's numbers: twice λ (log2 of ρ²), the
+    natural log (λ·ln 2), λ / ln 2, and the shorter step's λ."""
+    lx, ly = _axes(args)
+    lam = _log2(max(lx, ly))
+    if lam is None:
+        return {}
+    return {"log2 of ρ²": 2 * lam, "natural log": lam * math.log(2),
+            "divided by ln 2": lam / math.log(2), "the shorter step": _log2(min(lx, ly))}  # fmt: skip
 
 
 def _axes(args) -> tuple[float, float]:
@@ -172,6 +186,10 @@ def _clamped(args, expected, got) -> str:
 
 MISTAKES = {
     "the pixel's own quad": _own_quad,
+    "quad of pixel (col, row)": lambda a, e, g: (
+        f"you differenced the quad of pixel ({a[5]}, {a[4]}): row and col swapped; the quad's "
+        "upper-left lane is found from the row (y) and the column (x) of this pixel"
+    ),
     "odd quads": "your quads start on odd rows and columns: which pixel is the upper-left lane "
     "of the quad that holds this one?",
     "helpers clamped": _clamped,
@@ -192,6 +210,11 @@ MISTAKES = {
     "W and H swapped": lambda a, e, g: (
         f"size = {a[3]} is (H, W): you scaled u by H = "
         f"{a[3][0]} and v by W = {a[3][1]}; which of them counts the texels along u?"
+    ),
+    "W − 1 and H − 1": lambda a, e, g: (
+        f"you scaled u by W − 1 = {a[3][1] - 1} and v by H − 1 = {a[3][0] - 1}: a texture of W "
+        "texels spans W texel widths from u = 0 to u = 1; how many texels does a step of u "
+        "cross?"
     ),
     "u alone": "your ρ follows u alone; a pixel step moves v too: how far, in texels, does one "
     "step move (u, v) as a straight line?",
@@ -214,6 +237,19 @@ MISTAKES = {
     "clamped at 0": "your λ is clamped at 0: here the texture is magnified and λ is "
     "negative; leave it unclamped (7.3's sampler keeps it within the pyramid)",
     "ρ itself": "you returned ρ itself: λ counts the halvings of the texel size",
+    "log2 of ρ²": lambda a, e, g: (
+        f"your λ is exactly twice the right one ({num(g)} = 2 × {num(e)}): that is log2 of ρ², "
+        "the squared length; λ is log2 of the length itself"
+    ),
+    "natural log": "your λ is the right one times ln 2: that is the natural logarithm of ρ; "
+    "λ counts halvings, so which base?",
+    "divided by ln 2": "your λ is the right one divided by ln 2: log2 taken twice over (a "
+    "log2 divided by ln 2 again)? λ = log2 ρ once",
+    "the shorter step": lambda a, e, g: (
+        f"your λ follows the shorter step ({num(min(_axes(a)))} texels; the other is "
+        f"{num(max(_axes(a)))}): along the longer one a texel of that level is skipped; which "
+        "step must λ follow so that neither skips texels?"
+    ),
     "rounded": "you rounded λ to a whole number: λ is fractional in general (7.3 blends the "
     "two levels around it)",
     "rounded down": "you rounded λ down to a whole level: λ is fractional in general (7.3 "

@@ -23,7 +23,7 @@ from ..pipeline.texture import sample
 from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
 from .cases import SEED, fixed_and_drawn
-from .exercise import Exercise, PackageAnswer, variant_mistakes
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod
 from .quad_difference import FLOOR, inside, value_at
 from .scalars import num, vec
@@ -34,12 +34,16 @@ from .texture_filtering import (
     same_value,
     trilinear_with,
 )
+from .tolerance import close
+
+
+def _uv(xy, w, uv, x, y, **kw) -> np.ndarray:
+    return np.array([value_at(xy, w, np.asarray(uv, float)[:, k], x, y, **kw) for k in (0, 1)])
 
 
 def pixel_uv(xy, w, uv, row: int, col: int) -> np.ndarray:
     """(u, v) at pixel (row, col)'s own centre, perspective-correct (extrapolated)."""
-    x, y = col + 0.5, row + 0.5
-    return np.array([value_at(xy, w, np.asarray(uv, float)[:, k], x, y) for k in (0, 1)])
+    return _uv(xy, w, uv, col + 0.5, row + 0.5)
 
 
 def level_size(pyramid) -> tuple[int, int]:
@@ -79,6 +83,13 @@ def _sample_cases(rng, word):
         pyr = Pyramid(mipmap(np.round(rng.uniform(0, 1, (h, wt)), 3)))
         out.append((f"{word} {k + 1}, pixel ({r}, {c}), {h}×{wt} pyramid",
                     (pyr, txy, tw, tuv, r, c, ("repeat", "clamp")[k % 2])))  # fmt: skip
+    # r405 F1: an RGB texture (its rng drawn last: the cases above stay as they were)
+    rgb = Pyramid(mipmap(np.round(rng.uniform(0, 1, (8, 8, 3)), 3)))
+    out[len(hard):len(hard)] = [
+        (f"floor, pixel ({r}, {c}), 8×8 RGB pyramid: {why}", (rgb, xy, w, FLOOR_UV, r, c, wrap))
+        for r, c, wrap, why in ((28, 14, "repeat", "three channels, λ between levels 0 and 1"),
+                                (9, 15, "clamp", "three channels, towards the tip"))
+    ]  # fmt: skip
     return [(f"{label}, wrap={a[6]!r}", a, expected_sample(*a)) for label, a in out]
 
 
@@ -115,16 +126,22 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
     lod = expected_lod(xy, w, uv, size, row, col)
     at = pixel_uv(xy, w, uv, row, col)
     r0, c0 = row - row % 2, col - col % 2
-    lane = np.array([value_at(xy, w, np.asarray(uv, float)[:, k], c0 + 0.5, r0 + 0.5)
-                     for k in (0, 1)])  # fmt: skip
-    corner = np.array([value_at(xy, w, np.asarray(uv, float)[:, k], col, row) for k in (0, 1)])
-    affine = np.array([value_at(xy, w, np.asarray(uv, float)[:, k], col + 0.5, row + 0.5,
-                                affine=True) for k in (0, 1)])  # fmt: skip
+    lane = _uv(xy, w, uv, c0 + 0.5, r0 + 0.5)
+    corner = _uv(xy, w, uv, col, row)
+    affine = _uv(xy, w, uv, col + 0.5, row + 0.5, affine=True)
 
-    def tri(u=at, lam=lod, **kw):
-        return trilinear_with(pyramid, u, lam, wrap, **kw)
+    def tri(u=at, lam=lod, mode=wrap, **kw):
+        return trilinear_with(pyramid, u, lam, mode, **kw)
 
+    def lod_with(size=size, rc=(row, col)):
+        return expected_lod(xy, w, uv, size, *rc)
+
+    one = np.ndim(pyramid[0]) == 2
     return {
+        "channels averaged": None if one else float(np.mean(tri())),
+        "first channel only": None if one else float(np.ravel(tri())[0]),
+        "wrap fixed to 'repeat'": tri(mode="repeat"),
+        "wrap fixed to 'clamp'": tri(mode="clamp"),
         "the quad's (u, v)": tri(u=lane),
         "affine (u, v)": tri(u=affine),
         "(u, v) at the corner": tri(u=corner),
@@ -132,13 +149,46 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
         "the last level's size": tri(
             lam=expected_lod(xy, w, uv, np.shape(pyramid[-1])[:2], row, col)
         ),  # fmt: skip
+        "level 1's size": tri(lam=lod_with(np.shape(pyramid[min(1, len(pyramid) - 1)])[:2])),
+        "size (H, H)": tri(lam=lod_with((size[0], size[0]))),
+        "(row, col) swapped in pixel_lod": tri(lam=lod_with(rc=(col, row))),
+        "size (levels, levels)": tri(lam=lod_with((len(pyramid), len(pyramid)))),
+        "(u, v) at (col, row)": tri(u=pixel_uv(xy, w, uv, col, row)),
+        "(u, v) at (col, row), clamped": tri(u=_uv(xy, w, uv, row + 0.5, col + 0.5, clamp=True)),
+        "(v, u)": tri(u=at[::-1]),
+        "|λ|": tri(lam=abs(lod)),
         "λ not clamped": tri(clamp="weight"),
         "nearest level": tri(levels="nearest"),
+        "⌊λ⌋'s level alone": tri(levels="lower"),
         "level 0 only": tri(levels="finest"),
     }
 
 
+def _channels(how: str):
+    def words(args, expected, got) -> str:
+        n = np.size(expected)
+        return (f"your sample has 1 channel where the texture has {n}: {how}; what does 7.3's "
+                f"trilinear return on an (H, W, {n}) pyramid?")  # fmt: skip
+
+    return words
+
+
+def _fixed_wrap(args, expected, got) -> str:
+    other = "clamp" if args[6] == "repeat" else "repeat"
+    return (f"you filtered with wrap={other!r} where this case's wrap is {args[6]!r}: is the "
+            "wrap argument passed on to trilinear?")  # fmt: skip
+
+
+def _swapped_centre(args, expected, got) -> str:
+    return (f"you took (u, v) at the centre of pixel ({args[5]}, {args[4]}): (row, col) "
+            "swapped; x runs along a row (col + ½), y down the rows (row + ½)")  # fmt: skip
+
+
 MISTAKES = {
+    "channels averaged": _channels("you averaged its channels into one number"),
+    "first channel only": _channels("you kept its first channel alone"),
+    "wrap fixed to 'repeat'": _fixed_wrap,
+    "wrap fixed to 'clamp'": _fixed_wrap,
     "the quad's (u, v)": lambda a, e, g: (
         f"you filtered at the (u, v) of the quad's upper-left "
         f"lane: the quad shares one λ, but each pixel is shaded at its own (u, v); which (u, v) "
@@ -155,13 +205,105 @@ MISTAKES = {
     ),
     "the last level's size": "your λ measures the steps in texels of the last, 1 × 1 level: "
     "λ counts texels of level 0; which level's size does 7.1's `size` want?",
+    "level 1's size": "your λ measures the steps in texels of level 1 (half level 0's size): "
+    "λ counts texels of level 0; which level's size does 7.1's `size` want?",
+    "size (H, H)": lambda a, e, g: (
+        f"your size is ({np.shape(a[0][0])[0]}, {np.shape(a[0][0])[0]}): len(level 0) counts its "
+        f"rows (H) only; this level 0 is {np.shape(a[0][0])[0]} × {np.shape(a[0][0])[1]}, and "
+        "7.1's `size` is (H, W)"
+    ),
+    "(row, col) swapped in pixel_lod": lambda a, e, g: (
+        f"your λ is that of pixel ({a[5]}, {a[4]}): you passed (col, row) to pixel_lod, whose "
+        "arguments are (…, row, col)"
+    ),
+    "size (levels, levels)": lambda a, e, g: (
+        f"your size is ({len(a[0])}, {len(a[0])}): len(pyramid) counts its levels; level 0 is "
+        f"{np.shape(a[0][0])[0]} × {np.shape(a[0][0])[1]} texels, and 7.1's `size` is (H, W)"
+    ),
+    "(u, v) at (col, row)": _swapped_centre,
+    "(u, v) at (col, row), clamped": _swapped_centre,
+    "(v, u)": "you filtered at (v, u): trilinear takes (u, v), u across the texture",
+    "|λ|": "your λ is |λ|: the texture is magnified here (λ < 0, level 0); a negative λ "
+    "is clamped to 0, not turned positive",
     "λ not clamped": "λ lies outside the pyramid here: what must the sampler do with it before "
     "choosing levels (7.3)?",
     "nearest level": "that is the nearest level alone: where λ crosses a whole number the "
     "picture jumps (a seam on the floor); 7.3's trilinear blends the two levels around λ",
+    "⌊λ⌋'s level alone": "that is the level ⌊λ⌋ alone, the finer of the two around λ: "
+    "where λ crosses a whole number the picture jumps (a seam on the floor); 7.3's "
+    "trilinear blends the two levels",
     "level 0 only": "that is level 0 alone, whatever λ: this pixel's footprint spans several "
     "texels of level 0 (the texture aliases); filter at the λ of 7.1",
 }
+
+
+#: The student's pixel_sample whose check is running (set by :func:`_call`): 7.4 composes the
+#: student's own 7.1 and 7.3, and a failure is blamed on one of those where it is wrong (r405 F2).
+_RUNNING: dict = {}
+
+
+def _call(fn, args):
+    """The student's answer on one case, the function noted for :func:`_own`."""
+    _RUNNING["fn"] = getattr(fn, "fn", fn)  # the checker's recorder holds it as ``fn``
+    return as_texel_value(fn(*args))
+
+
+def _own(name: str):
+    """The student's own function ``name`` (7.1's pixel_lod, 7.3's trilinear) that their
+    pixel_sample calls, found among its globals or its closure; None if it calls none."""
+    fn = _RUNNING.get("fn")
+    code = getattr(fn, "__code__", None)
+    if code is None or name not in code.co_names + code.co_freevars:
+        return None
+    held = dict(zip(code.co_freevars, [c.cell_contents for c in fn.__closure__ or ()]))
+    found = held.get(name, getattr(fn, "__globals__", {}).get(name))
+    return found if callable(found) else None
+
+
+def _own_lod(args):
+    """(the student's pixel_lod's λ, 7.1's λ) on this case, or None if theirs is right."""
+    pyramid, xy, w, uv, row, col, _ = args
+    mine = _own("pixel_lod")
+    if mine is None:
+        return None
+    right = expected_lod(xy, w, uv, level_size(pyramid), row, col)
+    got = float(np.ravel(mine(xy, w, uv, level_size(pyramid), row, col))[0])
+    return None if close(got, right, 1e-5) else (got, right)
+
+
+def _own_trilinear(args):
+    """(the student's trilinear, 7.3's) at this pixel's λ and (u, v), or None if right."""
+    pyramid, xy, w, uv, row, col, wrap = args
+    mine = _own("trilinear")
+    if mine is None:
+        return None
+    at = pixel_uv(xy, w, uv, row, col)
+    lod = expected_lod(xy, w, uv, level_size(pyramid), row, col)
+    right = expected_trilinear(pyramid, at, lod, wrap)
+    got = np.asarray(mine(pyramid, at.copy(), lod, wrap), dtype=float)
+    return None if same_value(got, right, None) else (got, right, lod, at)
+
+
+def _fix_lod(args, expected, got) -> str:
+    mine, right = _own_lod(args)
+    return (f"your pixel_lod gives λ = {num(mine, right)} here where 7.1's answer is "
+            f"{num(right, mine)} (size {level_size(args[0])}, pixel ({args[4]}, {args[5]})): "
+            "7.1's check fails on it; fix pixel_lod first, then check this again")  # fmt: skip
+
+
+def _fix_trilinear(args, expected, got) -> str:
+    mine, right, lod, at = _own_trilinear(args)
+    return (f"your trilinear gives {_shown(mine, right)} at λ = {num(lod)}, (u, v) = {vec(at)} "
+            f"where 7.3's answer is {_shown(right, mine)}: 7.3's check fails on it; fix "
+            "trilinear first, then check this again")  # fmt: skip
+
+
+#: Checked before the table: a wrong 7.1 or 7.3 is named there, not as this task's glue.
+OWN = (
+    Mistake("your pixel_lod (7.1)", _fix_lod, fits=lambda a, e, g: _own_lod(a) is not None),
+    Mistake("your trilinear (7.3)", _fix_trilinear,
+            fits=lambda a, e, g: _own_trilinear(a) is not None),
+)  # fmt: skip
 
 
 RULE = (
@@ -170,7 +312,7 @@ RULE = (
 )
 HINT = (
     ": which of your functions gives λ here, with which size; at which point is this pixel's "
-    "(u, v) taken; which function filters the pyramid at that λ?"
+    "(u, v) taken; which function filters the pyramid at that λ, with which wrap mode?"
 )
 
 
@@ -189,7 +331,7 @@ def sample_questions(pyramid) -> str:
     same = "the same" if np.allclose(a, b) else "different"
     return (
         f"7.4: the tip (5, 14) asks for λ = {num(tip)}: {read}. (28, 14) and (29, 15) share "
-        f"λ but not (u, v): {_shown(a, b)} and {_shown(b, a)}, {same} values"
+        f"λ but not (u, v): their filtered values are {_shown(a, b)} and {_shown(b, a)}, {same}"
     )
 
 
@@ -214,7 +356,7 @@ def draw_sample_case(ax, case, got):
 
 PIXEL_SAMPLE = Exercise(
     "pixel_sample", sample_cases, as_texel_value, same_value, explain_sample, _rule,
-    variant_mistakes(_variants, MISTAKES),
+    (*OWN, *variant_mistakes(_variants, MISTAKES)), call=_call,
     answers=(PackageAnswer(sample, when=lambda a: a.get("filter") == "trilinear"),
              PackageAnswer(mip_level), PackageAnswer(lane_values)),
     draw=draw_sample_case, hints=((RULE, HINT),), inputs_drawn=True,
