@@ -202,6 +202,17 @@ def _half_cases() -> list[tuple[str, tuple, frozenset]]:
     return out
 
 
+def _labelled_rows(table) -> list[tuple[str, tuple, frozenset]]:
+    """One case per row of each ``(label, points, rows)`` in ``table``, its columns from the
+    package's fill."""
+    out = []
+    for label, points, rows in table:
+        xy = np.array(points)
+        covered = _covered_rows(xy, list(rows))
+        out += [(f"{label}, row {row}", (xy.copy(), row), covered[row]) for row in rows]
+    return out
+
+
 def _r372_cases() -> list[tuple[str, tuple, frozenset]]:
     """r372 P1, P2, F1: rows where a crossing divided first (or slope first) lands a hair off
     the centre it lies exactly on; triangles left of and above the origin and across column 0;
@@ -212,11 +223,7 @@ def _r372_cases() -> list[tuple[str, tuple, frozenset]]:
         covered = _covered_rows(xy, list(rows))
         out += [(f"vertices on centres, row {row} (a crossing exactly on a centre)",
                  (xy.copy(), row), covered[row]) for row in rows]  # fmt: skip
-    for label, points, rows in PLACED:
-        xy = np.array(points)
-        covered = _covered_rows(xy, list(rows))
-        out += [(f"{label}, row {row}", (xy.copy(), row), covered[row]) for row in rows]
-    return out
+    return out + _labelled_rows(PLACED)
 
 
 def _r385_cases() -> list[tuple[str, tuple, frozenset]]:
@@ -236,11 +243,7 @@ def _r385_cases() -> list[tuple[str, tuple, frozenset]]:
         xy = np.array(points)
         out.append((f"a tall edge leaning a little, row {row} (a crossing a hair right of a "
                     "centre, not on it)", (xy, row), exact_columns(xy, row)))  # fmt: skip
-    for label, points, rows in FLOOR_ROWS:
-        xy = np.array(points)
-        covered = _covered_rows(xy, list(rows))
-        out += [(f"{label}, row {row}", (xy.copy(), row), covered[row]) for row in rows]
-    return out
+    return out + _labelled_rows(FLOOR_ROWS)
 
 
 def _far_cases() -> list[tuple[str, tuple, frozenset]]:
