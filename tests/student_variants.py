@@ -6025,3 +6025,74 @@ R405_PIXEL = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R405_PIXEL.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R405_PIXEL.items()})
+
+
+# == r416 (fixex10f, exercise 10.1, edge_bits): the reader's variants (F1 an int's sign, F2 count =
+# slips per form, F3 numpy dtypes) ===================================================================
+def _eb416(factor_abs=0, factor_rel=0, extra=2, rel_from_range=False, across_bits=False, out=None):
+    """edge_bits with 2·f + ``extra`` bits per form, f a form's factor bits (+ ``factor_*``);
+    ``out(bits, type)`` shapes each part (bytes, a dtype)."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        f_abs = range_bits + sub_bits + factor_abs
+        k = range_bits if rel_from_range else across if across_bits else int(np.log2(across))
+        f_rel = k + sub_bits + factor_rel
+        parts = []
+        for f in (f_abs, f_rel):
+            b = 2 * f + extra
+            parts.append((out or (lambda n, t: (n, t)))(b, _eb_type(b)))
+        return tuple(parts)
+
+    return edge_bits
+
+
+R416_EDGE_BITS = {
+    "edge bits with an int's sign left out (int32 31, int64 63)": (
+        "edge_bits", _eb_types(lambda n: _eb_type(n, (("float32", 25), ("int32", 31),
+                                                      ("float64", 54), ("int64", 63)))),
+        "an int32 holds 32 bits with its sign", "an int's sign bit not counted"),
+    "edge bits two bits short": (
+        "edge_bits", _eb416(extra=0), "your counts are two bits short", "two bits short"),
+    "edge bits with across.bit_length() in the relative form": (
+        "edge_bits", _eb416(factor_rel=1), "across.bit_length() is 11",
+        "the relative factor one bit wide"),
+    "edge bits with a centre bit in the relative form only": (
+        "edge_bits", _eb416(factor_rel=1), "no centre bit", "the relative factor one bit wide"),
+    "edge bits with a coordinate's sign inside the absolute factor": (
+        "edge_bits", _eb416(factor_abs=1), "its sign is the one sign bit counted at the end",
+        "the absolute factor one bit wide"),
+    "edge bits with the relative form from the range": (
+        "edge_bits", _eb416(rel_from_range=True), "is the absolute form's",
+        "the relative form from the range"),
+    "edge bits with across taken as bits": (
+        "edge_bits", _eb416(across_bits=True), "takes across, 1,024 px, for a number of bits",
+        "across taken as bits"),
+    "edge bits in bytes": (
+        "edge_bits", _eb416(out=lambda n, t: (-(-n // 8), t)), "bytes, not bits", "bytes, not bits"),
+    "edge bits by E's own bound (lesson 06's 49)": (
+        "edge_bits", _eb416(extra=1), "where the task counts term by term (lesson 06's 50)",
+        "one bit short"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R416_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R416_EDGE_BITS.items()})
+# r416 F1: > for >= is its own slip (a type one bit short everywhere), F3: C's long has its aside
+R409_EDGE_BITS["edge bits with > for >="] = (
+    *R409_EDGE_BITS["edge bits with > for >="][:2],
+    "compare with >=, not >",
+    "> for >=",
+)
+R409_EDGE_BITS["edge bits with C's type names"] = (
+    *R409_EDGE_BITS["edge bits with C's type names"][:2],
+    "(C's long is 32 bits on Windows, 64 elsewhere: say int32 or int64)",
+    "type",
+)
+for _label in ("edge bits with > for >=", "edge bits with C's type names"):
+    WRONG[_label] = R409_EDGE_BITS[_label][:3]
+    KINDS[_label] = R409_EDGE_BITS[_label][3]
+R416_EDGE_BITS_DIFFERENT = {
+    "edge bits with numpy dtypes (np.dtype('int64') == 'int64')": (
+        "edge_bits",
+        _eb416(out=lambda n, t: (n, np.dtype(t) if t else None)),
+    ),
+}
+DIFFERENT.update(R416_EDGE_BITS_DIFFERENT)

@@ -13,7 +13,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from student_variants import R386, R394, R394_EDGE_BITS, R394_EDGE_BITS_DIFFERENT, R409_EDGE_BITS
+from student_variants import (
+    R386,
+    R394,
+    R394_EDGE_BITS,
+    R394_EDGE_BITS_DIFFERENT,
+    R409_EDGE_BITS,
+    R416_EDGE_BITS,
+    R416_EDGE_BITS_DIFFERENT,
+)
 
 from teachraster import exercises as ex
 from teachraster.exercises import edge_bits as eb
@@ -175,11 +183,13 @@ def test_a_types_only_mistake_never_gets_the_counting_hint():
 
 @pytest.mark.parametrize("name", ["float", "int", "double", "long", "Float", "np.double"])
 def test_c_type_names_are_refused_with_the_names_accepted(name):
-    with pytest.raises(Exception, match="say which"):
+    with pytest.raises(Exception, match=r"\(C's \w+ is .*: say "):
         eb.as_answer(((58, name), (38, "float64")))
 
 
-@pytest.mark.parametrize("name", ["float32", "NP.INT64", np.float64, np.dtype("int32"), "None"])
+@pytest.mark.parametrize(
+    "name", ["float32", "NP.INT64", np.float64, np.dtype("int32"), np.dtype("int64"), "None"]
+)
 def test_the_four_names_numpy_types_and_none_are_accepted(name):
     assert eb.as_answer(((58, name), (38, None)))[1] == (38, None)
 
@@ -226,3 +236,42 @@ def test_the_figure_greys_a_right_part_and_marks_a_wrong_one_red():
     texts = [t.get_text() for t in ax.texts]
     assert "yours: 66 bits, None (right)" in texts and "yours: 68 bits, None" in texts, texts
     plt.close(fig)
+
+
+# -- r416: an int's sign (F1), count slips named per form (F2), numpy dtypes (F3) --------------
+@pytest.mark.parametrize("label", list(R416_EDGE_BITS))
+def test_r416_edge_bits_variants_are_named(label):
+    _, fn, words, kind = R416_EDGE_BITS[label]
+    tries.forget_hints("edge_bits")
+    report = ex.check("edge_bits", fn)
+    assert not report.passed
+    first = report.failures[0]
+    assert words in first.explanation and first.kind == kind, str(report)
+    assert "count in steps of the grid" not in first.explanation, first.explanation
+    tries.forget_hints("edge_bits")
+
+
+def test_an_ints_sign_left_out_is_never_told_greater_than():
+    """r416 F1: int32 as 31 bits and int64 as 63 fail at 32 and 64 bits only; > also fails at
+    54 (float64's edge): each gets its own words."""
+    tries.forget_hints("edge_bits")
+    text = str(ex.check("edge_bits", R416_EDGE_BITS[
+        "edge bits with an int's sign left out (int32 31, int64 63)"][1]))  # fmt: skip
+    assert "compare with >=" not in text, text
+    greater = str(ex.check("edge_bits", R409_EDGE_BITS["edge bits with > for >="][1]))
+    assert "compare with >=, not >" in greater and "an int32 holds" not in greater, greater
+    tries.forget_hints("edge_bits")
+
+
+@pytest.mark.parametrize("label", list(R416_EDGE_BITS_DIFFERENT))
+def test_r416_numpy_dtypes_pass(label):
+    assert ex.check("edge_bits", R416_EDGE_BITS_DIFFERENT[label][1]).passed
+
+
+@pytest.mark.parametrize("value", [np.dtype("int64"), np.int64, np.dtype("float32")])
+def test_a_numpy_type_is_read_as_numpys_and_python_classes_get_their_own_aside(value):
+    assert eb.as_answer(((58, value), (38, None)))[0][1] == np.dtype(value).name
+    with pytest.raises(Exception, match="Python's int has no fixed width"):
+        eb.as_answer(((58, int), (38, None)))
+    with pytest.raises(Exception, match=r"C's long is 32 bits on Windows"):
+        eb.as_answer(((58, "long"), (38, None)))

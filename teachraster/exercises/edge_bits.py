@@ -89,6 +89,20 @@ AMBIGUOUS = ("float", "int", "double", "long", "single", "half", "short", "longl
              "float_", "int_", "longdouble")  # fmt: skip
 
 
+#: r416 F3: the aside each C name needs (a numpy dtype or type class is read as numpy's).
+C_NAMES = {
+    "float": " (C's float is float32, numpy's and Python's float64: say which)",
+    "int": " (C's int is 32 bits, numpy's int 64 on most systems: say int32 or int64)",
+    "double": " (C's double is 64 bits, a float64: say so)",
+    "long": " (C's long is 32 bits on Windows, 64 elsewhere: say int32 or int64)",
+}
+#: The aside for Python's own ``float`` and ``int`` classes.
+PYTHON_NAMES = {
+    float: " (Python's float is 64 bits, C's 32: say float32 or float64)",
+    int: " (Python's int has no fixed width: say int32 or int64)",
+}
+
+
 def _type(value, form: str):
     """A type as its name: one of :data:`TYPES` (any case, "np." allowed), a numpy scalar type
     or dtype; None or "none": no type holds it. r409 F3: C's names ("float", "int", "double",
@@ -100,9 +114,9 @@ def _type(value, form: str):
     if isinstance(value, str):
         name = value.strip().lower().removeprefix("np.").removeprefix("numpy.")
         if name in AMBIGUOUS:
-            refusal += " (C's float is float32, numpy's float64: say which)"
-    elif value in (float, int):
-        name, refusal = None, refusal + " (Python's float is 64 bits, C's 32: say which)"
+            refusal += C_NAMES.get(name, " (a C name, whose width differs between systems)")
+    elif value is float or value is int:  # r416 F3: np.dtype("int64") == int is True
+        name, refusal = None, refusal + PYTHON_NAMES[value]
     else:
         try:
             name = np.dtype(value).name
@@ -230,21 +244,31 @@ def _with(
     holds="exactly",
     order="as asked",
     absolute="C's",
+    factor="right",
 ) -> tuple:
     """The answer a student gives with some slips (:data:`KNOBS`)."""
     b = budgets(range_bits, across, sub_bits)
-    factors = {form: (b[form].delta_bits, b[form].delta_bits) for form in FORMS}
+    bits = {form: b[form].delta_bits for form in FORMS}
+    if factor == "relative wider":  # r416 F2: across.bit_length(), or a centre bit, in one form
+        bits["relative"] += 1
+    elif factor == "absolute wider":
+        bits["absolute"] += 1
+    elif factor == "across as bits":
+        bits["relative"] = across + sub_bits
+    elif factor == "relative from the range":
+        bits["relative"] = bits["absolute"]
+    factors = {form: (bits[form], bits[form]) for form in FORMS}
     if largest == "A·x":
-        factors["absolute"] = (b["absolute"].delta_bits, b["relative"].delta_bits)
+        factors["absolute"] = (bits["absolute"], bits["relative"])
     held = _HELD[holds]
     out = []
     for form in FORMS:
         k, m = factors[form]
-        n = {"right": k + m + 2, "short": k + m + 1, "long": k + m + 3,
+        n = {"right": k + m + 2, "short": k + m + 1, "long": k + m + 3, "two short": k + m,
              "no sub-pixel": k + m - 2 * sub_bits + 2, "sub-pixel once": k + m - sub_bits + 2,
-             "multiplied": k * m + 2, "centre bit": k + m + 4}[count]  # fmt: skip
+             "multiplied": k * m + 2, "centre bit": k + m + 4, "bytes": k + m + 2}[count]  # fmt: skip
         n += form == "absolute" and absolute == "one more"
-        out.append((n, narrowest(n, held)))
+        out.append((-(-n // 8) if count == "bytes" else n, narrowest(n, held)))
     return tuple(out[::-1]) if order == "swapped" else tuple(out)
 
 
@@ -254,6 +278,8 @@ _HELD = {
     "exactly": exact_bits,
     "width": lambda t: np.dtype(t).itemsize * 8,
     "no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "f"),
+    "int no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "i"),  # r416 F1
+    ">": lambda t: exact_bits(t) - 1,  # held > bits: every type one bit short
 }
 
 
@@ -266,9 +292,41 @@ def _grid(args) -> str:
     return f"1/{2**s}-px" if s else "1-px"
 
 
+#: Lesson 06's count: Direct3D's 16.8 over 2^16 px (49 bits by E's own bound, 50 term by term).
+_D3D = range_budget(2**16, 8)
+
 SHORT = Slip("one bit short", lambda a, e, g: (
     f"your counts are one bit short ({_counts(a, g)}): the sign bit, or the bit a difference of "
-    "two products adds to the larger product's, left out"), "short")  # fmt: skip
+    "two products adds to the larger product's, left out; or E's own bound (|E| at most the "
+    f"largest product: lesson 06's {_D3D.least_needed} for 16.8 over 2^16 px) where the task "
+    f"counts term by term (lesson 06's {_D3D.needed})"), "short")  # fmt: skip
+TWO_SHORT = Slip("two bits short", lambda a, e, g: (
+    f"your counts are two bits short ({_counts(a, g)}): both the bit a difference of two "
+    "products adds to the larger product's and the sign bit left out: a product's bits, "
+    "then one more for the difference, one more for the sign"), "two short")  # fmt: skip
+BYTES = Slip("bytes, not bits", lambda a, e, g: (
+    f"yours are {g[0][0]} and {g[1][0]}: bytes, not bits; the answer counts bits (a 64-bit int "
+    "is 8 bytes)"), "bytes")  # fmt: skip
+REL_WIDER = Slip("the relative factor one bit wide", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, is two bits too many, your absolute one right: a "
+    f"difference below {a[1]:,} px = 2^{a[1].bit_length() - 1} px is below "
+    f"2^{a[1].bit_length() - 1 + a[2]} steps: {a[1].bit_length() - 1 + a[2]} bits per factor, "
+    f"not {a[1].bit_length() + a[2]} (across.bit_length() is {a[1].bit_length()}, one more "
+    "than the exponent; and the centres, at k + ½ px, are on the grid already: no centre bit)"),
+    "relative wider")  # fmt: skip
+ABS_WIDER = Slip("the absolute factor one bit wide", lambda a, e, g: (
+    f"your absolute count, {g[0][0]}, is two bits too many, your relative one right: a "
+    f"coordinate below 2^{a[0]} px is below 2^{a[0] + a[2]} steps: {a[0] + a[2]} bits per "
+    "factor; its sign is the one sign bit counted at the end, not a bit in each factor (and the "
+    "centres are on the grid already: no centre bit)"), "absolute wider")  # fmt: skip
+REL_RANGE = Slip("the relative form from the range", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, is the absolute form's: the relative form's factors are "
+    f"differences, below {a[1]:,} px (across), not coordinates below 2^{a[0]} px"),
+    "relative from the range")  # fmt: skip
+ACROSS_BITS = Slip("across taken as bits", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, takes across, {a[1]:,} px, for a number of bits: it is a "
+    f"length; its bits are its exponent, {a[1].bit_length() - 1} (differences below "
+    f"2^{a[1].bit_length() - 1} px)"), "across as bits")  # fmt: skip
 LONG = Slip("one bit too many", lambda a, e, g: (
     f"your counts are one bit too many ({_counts(a, g)}): a difference of two products below "
     "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond (a factor below "
@@ -301,6 +359,14 @@ WIDTH = Slip("a type's width for what it holds", lambda a, e, g: (
     f"number up to 2^{exact_bits('float32') - 1} in size, {exact_bits('float32')} bits with the "
     f"sign, a 64-bit float {exact_bits('float64')}; only an integer type holds its whole width"),
     "width")  # fmt: skip
+INT_NO_SIGN = Slip("an int's sign bit not counted", lambda a, e, g: (
+    "your counts are right; you take an int to hold one bit less than its width: an int32 "
+    f"holds {exact_bits('int32')} bits with its sign (np.iinfo(np.int32).bits counts the sign): "
+    f"every whole number from −2^{exact_bits('int32') - 1} to 2^{exact_bits('int32') - 1} − 1; "
+    f"an int64 {exact_bits('int64')}"), "int no sign")  # fmt: skip
+GREATER = Slip("> for >=", lambda a, e, g: (
+    "your counts are right, the type is not: a type that holds exactly as many bits as the "
+    "count holds them: compare with >=, not >"), ">")  # fmt: skip
 NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     "you take a float to hold its significand's bits only: a 32-bit float holds every whole "
     f"number up to 2^{exact_bits('float32') - 1} in size, of either sign, so "
@@ -325,9 +391,10 @@ def _types_only(args, expected, got) -> bool:
 TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 
 #: The slips, alone or two at once (of different knobs).
-KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE), "largest": (A_X,),
-                      "holds": (WIDTH, NO_SIGN), "order": (SWAPPED,),
-                      "absolute": (ABS_MORE,)}, most=2)  # fmt: skip
+KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES),
+                      "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER),
+                      "order": (SWAPPED,), "absolute": (ABS_MORE,),
+                      "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, ACROSS_BITS)}, most=2)  # fmt: skip
 
 #: The recipe and the worked counts, said once two different answers have failed.
 HINTS = ((re.compile(r" \((recipe|worked): [^)]*\)"), ""),)
