@@ -6083,7 +6083,8 @@ R409_EDGE_BITS["edge bits with > for >="] = (
 )
 R409_EDGE_BITS["edge bits with C's type names"] = (
     *R409_EDGE_BITS["edge bits with C's type names"][:2],
-    "(C's long is 32 bits on Windows, 64 elsewhere: say int32 or int64)",
+    "'float32', 'int32', 'float64', 'int64', or None (C's long is 32 bits on Windows, 64 "
+    "elsewhere: say int32 or int64)",
     "type",
 )
 for _label in ("edge bits with > for >=", "edge bits with C's type names"):

@@ -22,7 +22,8 @@ largest product, the two forms swapped, a type's width taken for what it holds e
 float's sign bit not counted, the absolute count one bit more (A bounded by the whole range, or
 A·x + B·y + C counted as three terms; r409 F4). Where every count is right and a type is not,
 the words are about types (r409 F2). The recipe is said once two different answers have failed
-(:data:`HINTS`), with the worked count of the task's own range only (r409 change 2).
+(:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
+r416 F4).
 """
 
 from __future__ import annotations
@@ -194,8 +195,17 @@ def worked(args, form: str) -> str:
     )
 
 
+#: r416 F4: the full words work a range the check does not use (never one of the exercise's own
+#: answers): lesson 06's Direct3D 16.8 over 2^16 px, differences below 128 px.
+WORKED = (16, 128, 8)
+assert WORKED not in RANGES
+
+
 def _worked_both(args) -> str:
-    return worked(args, "absolute") + worked(args, "relative")
+    r, a, s = args  # no parenthesis inside: HINTS holds the words back until they are spent
+    return (f" (worked: a range the check does not use, coordinates below 2^{r} px, differences "
+            f"below {a:,} px, on the 1/{2**s}-px grid)" + worked(args, "absolute")
+            + worked(args, "relative"))  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
@@ -207,9 +217,9 @@ def _rule(args, expected, got) -> str:
 
 
 def _worked_one(args) -> str:
-    """r409 change 2: the worked count of the task's own range only (the recipe is said on
-    every case; the worked answer of every listed case would be each case's answer)."""
-    return _worked_both(args) if tuple(args) == RANGES[0] else ""
+    """r409 change 2, r416 F4: one worked count, of :data:`WORKED` (a range the check does not
+    use), said on the first listed case's words only (the recipe is said on every case)."""
+    return _worked_both(WORKED) if tuple(args) == RANGES[0] else ""
 
 
 def _type_rule(args, expected, got) -> str:
