@@ -20,7 +20,10 @@ short (the sign bit, or the difference's bit, left out), one too many, the sub-p
 out or counted once, bits multiplied where a product adds them, A·x taken as the absolute form's
 largest product, the two forms swapped, a type's width taken for what it holds exactly, a
 float's sign bit not counted, the absolute count one bit more (A bounded by the whole range, or
-A·x + B·y + C counted as three terms; r409 F4). Where every count is right and a type is not,
+A·x + B·y + C counted as three terms; r409 F4); r416 F1/F2: an int's sign not counted (told
+apart from ``>`` for ``>=``, which fails at a float's edge too), two bits short, one form's factor
+one bit wide (``across.bit_length()``, a centre bit, a coordinate's sign), the relative form
+counted from the range, ``across`` taken as bits, bytes for bits. Where every count is right and a type is not,
 the words are about types (r409 F2). The recipe is said once two different answers have failed
 (:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
 r416 F4).
