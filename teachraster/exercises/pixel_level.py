@@ -9,9 +9,10 @@ texels of level 0 (u by W, v by H), ρ the longer of the two steps' Euclidean le
 
 Expected answers: the renderer's own quad lanes (:func:`.quad_difference.lanes`) and
 :func:`teachraster.mip_level`; its typical mistakes are the quad's (the pixel's own quad,
-odd quads, helpers clamped, affine values, fine or centred differences) and the level's
-(no scaling to texels, W and H swapped, u alone, one step alone, the axes' mean, λ clamped
-at 0, rounded).
+odd quads, helpers clamped, affine values, fine or centred differences, other lanes of the
+quad, which GL and Direct3D allow: r415) and the level's (no scaling to texels, W and H
+swapped, u alone, one step alone, the axes' mean, λ clamped at 0, rounded). An answer that
+ignores the triangle's (u, v) is told so and never brings the steps (r415 F1).
 """
 
 from __future__ import annotations
