@@ -6097,3 +6097,103 @@ R416_EDGE_BITS_DIFFERENT = {
     ),
 }
 DIFFERENT.update(R416_EDGE_BITS_DIFFERENT)
+# == r415 M1, F2 (fixex07y, exercises 7.1 pixel_lod and 7.4 pixel_sample: the reader's variants) ==
+
+_R415_LOD = """
+def pixel_lod(xy, w, uv, size, row, col):
+    uv, w = np.asarray(uv, dtype=float), np.asarray(w, dtype=float)
+
+    def at(x, y):
+        {AT}
+
+    r0, c0 = {QUAD}
+    ul, ur = at(c0 + 0.5, r0 + 0.5), at(c0 + 1.5, r0 + 0.5)
+    ll, lr = at(c0 + 0.5, r0 + 1.5), at(c0 + 1.5, r0 + 1.5)
+    ddx, ddy = {STEPS}
+    h, wt = size
+    t = np.array({TEXELS})
+    return float(np.log2(max(np.hypot(*(ddx * t)), np.hypot(*(ddy * t)))))
+"""
+
+_R415_BILINEAR_CLAMP_FIRST = """
+def bilinear(texture, uv, wrap):
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    u, v = uv
+    u, v = (min(max(u, 0), 1), min(max(v, 0), 1)) if wrap == "clamp" else (u % 1, v % 1)
+    x, y = u * w - 0.5, v * h - 0.5
+    x0, y0 = np.floor(x), np.floor(y)
+    fx, fy = x - x0, y - y0
+    cols = np.clip(np.array([x0, x0 + 1], dtype=int), 0, w - 1)
+    rows = np.clip(np.array([y0, y0 + 1], dtype=int), 0, h - 1)
+    top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+    bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+    return (1 - fy) * top + fy * bottom
+
+
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    d = int(np.floor(lam))
+    t = lam - d
+    return (1 - t) * bilinear(pyramid[d], uv, wrap) + t * bilinear(pyramid[min(d + 1, q)], uv, wrap)
+"""
+
+
+def _lod415(**knobs):
+    return _r405(_R415_LOD, {
+        "AT": "return perspective_weights(barycentric(xy, [[x, y]]), w, extrapolate=True)[0] @ uv",
+        "QUAD": "row - row % 2, col - col % 2", "STEPS": "ur - ul, ll - ul", "TEXELS": "[wt, h]",
+    }, **knobs)  # fmt: skip
+
+
+def _trilinear_with_bilinear_clamped_first():
+    space = {"np": np}
+    exec(_R415_BILINEAR_CLAMP_FIRST, space)  # noqa: S102 - the test's own source
+    return space["trilinear"]
+
+
+#: label: (name, fn, words in the first failure, kind of the first failure).
+R415_PIXEL = {
+    "pixel lod from the quad's lower row and right column": (
+        "pixel_lod", _lod415(STEPS="lr - ll, lr - ur"),
+        "GL (dFdxCoarse) and Direct3D (ddx_coarse) let a GPU take other lanes",
+        "ddx lower row, ddy right column"),
+    "pixel lod with ddy from the right column": (
+        "pixel_lod", _lod415(STEPS="ur - ul, lr - ur"), "your ddy from its right column",
+        "ddy from the right column"),
+    "pixel lod with both rows and columns averaged": (
+        "pixel_lod", _lod415(STEPS="(ur - ul + lr - ll) / 2, (ll - ul + lr - ur) / 2"),
+        "you averaged the quad's two rows", "rows averaged"),
+    "pixel lod with (u, v) weighted by w": (
+        "pixel_lod",
+        _lod415(AT="lam = barycentric(xy, [[x, y]])[0] * w\n        return lam @ uv / lam.sum()"),
+        "λ·w or λ/w?", "λ·w"),
+    "pixel lod with the steps divided by the size": (
+        "pixel_lod", _lod415(TEXELS="[1 / wt, 1 / h]"), "you divided the steps by the size",
+        "divided by the size"),
+    "pixel lod from pixel (row // 2, col // 2)": (
+        "pixel_lod", _lod415(QUAD="row // 2, col // 2"), "row // 2 numbers the quad",
+        "quad index as its pixel"),
+    "pixel sample at the quad's centre": (
+        "pixel_sample", _ps405(X="col - col % 2 + 1", Y="row - row % 2 + 1"),
+        "the (u, v) of the quad's centre", "(u, v) at the quad's centre"),
+    "pixel sample with λ clamped one level below the top": (
+        "pixel_sample",
+        _ps405(RET="trilinear(pyramid, uvh, min(max(lod, 0), len(pyramid) - 2), wrap)"),
+        "one level below the top", "λ clamped to q − 1"),
+    "pixel sample at ⌈λ⌉": (
+        "pixel_sample", _ps405(RET="trilinear(pyramid, uvh, float(np.ceil(lod)), wrap)"),
+        "the level ⌈λ⌉", "⌈λ⌉"),
+    "pixel sample at λ + ½": (
+        "pixel_sample", _ps405(RET="trilinear(pyramid, uvh, lod + 0.5, wrap)"),
+        "your λ is 7.1's plus ½", "λ + ½"),
+    "pixel sample at λ − 1": (  # M1: the same numbers as level 1's size; both named
+        "pixel_sample", _ps405(RET="trilinear(pyramid, uvh, lod - 1, wrap)"),
+        "or 1 subtracted from λ?", "level 1's size"),
+    "pixel sample, right, with a bilinear that clamps (u, v) first": (
+        "pixel_sample", _ps405(trilinear=_trilinear_with_bilinear_clamped_first()),
+        "fix bilinear first", "your bilinear (7.2)"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R415_PIXEL.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R415_PIXEL.items()})

@@ -9,9 +9,10 @@ texels of level 0 (u by W, v by H), ρ the longer of the two steps' Euclidean le
 
 Expected answers: the renderer's own quad lanes (:func:`.quad_difference.lanes`) and
 :func:`teachraster.mip_level`; its typical mistakes are the quad's (the pixel's own quad,
-odd quads, helpers clamped, affine values, fine or centred differences) and the level's
-(no scaling to texels, W and H swapped, u alone, one step alone, the axes' mean, λ clamped
-at 0, rounded).
+odd quads, helpers clamped, affine values, fine or centred differences, other lanes of the
+quad, which GL and Direct3D allow: r415) and the level's (no scaling to texels, W and H
+swapped, u alone, one step alone, the axes' mean, λ clamped at 0, rounded). An answer that
+ignores the triangle's (u, v) is told so and never brings the steps (r415 F1).
 """
 
 from __future__ import annotations
@@ -121,10 +122,16 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "odd quads": lod(_steps(xy, w, uv, row - (row + 1) % 2, col - (col + 1) % 2)),
         "helpers clamped": lod(_steps(xy, w, uv, r0, c0, clamp=True)),
         "affine": lod(_steps(xy, w, uv, r0, c0, affine=True)),
+        "λ·w": lod(_steps(xy, w, uv, r0, c0, times_w=True)),
+        **_other_lanes(xy, w, uv, r0, c0, lod),
+        "quad index as its pixel": lod(_steps(xy, w, uv, row // 2, col // 2)),
         "corners": lod(_steps(xy, w, uv, r0, c0, centre=0.0)),
         "fine": lod(fine),
         "centred": lod(centred),
         "no texels": lod((ddx, ddy), scale="units"),
+        "divided by the size": _log2(
+            max(np.hypot(ddx[0] / wt, ddx[1] / h), np.hypot(ddy[0] / wt, ddy[1] / h))
+        ),  # fmt: skip
         "W and H swapped": lod((ddx, ddy), scale="swapped"),
         "W − 1 and H − 1": level_with(ddx, ddy, (h - 1, wt - 1)),
         "u alone": _log2(max(abs(ddx[0]), abs(ddy[0])) * wt),
@@ -140,6 +147,44 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "rounded down": lod((ddx, ddy), log="floor"),
         **_log_slips(xy, w, uv, size, row, col),
     }
+
+
+#: r415 F2: the coarse differences from other lanes of the quad, (row of ddx, column of ddy),
+#: each lane 0 or 1 from the upper-left; "rows averaged" averages both rows and both columns.
+OTHER_LANES = {"ddx from the lower row": (1, 0), "ddy from the right column": (0, 1),
+               "ddx lower row, ddy right column": (1, 1), "rows averaged": None}  # fmt: skip
+
+
+def _other_lanes(xy, w, uv, r0, c0, lod) -> dict:
+    """λ from the quad's other rows and columns (GL and Direct3D allow them: llvmpipe's are
+    the upper row and the left column), and from both averaged."""
+    at = {
+        (dr, dc): _uv_at(xy, w, uv, c0 + dc + 0.5, r0 + dr + 0.5) for dr in (0, 1) for dc in (0, 1)
+    }
+    out = {}
+    for kind, lanes_used in OTHER_LANES.items():
+        if lanes_used is None:
+            steps = ((at[0, 1] - at[0, 0] + at[1, 1] - at[1, 0]) / 2,
+                     (at[1, 0] - at[0, 0] + at[1, 1] - at[0, 1]) / 2)  # fmt: skip
+        else:
+            r, c = lanes_used
+            steps = (at[r, 1] - at[r, 0], at[1, c] - at[0, c])
+        out[kind] = lod(steps)
+    return out
+
+
+def _lanes_words(kind: str):
+    """The lanes of mistake ``kind``, and that GL and Direct3D allow other lanes."""
+    used = OTHER_LANES[kind]
+    which = ("you averaged the quad's two rows for ddx and its two columns for ddy: GL "
+             "(dFdxCoarse) lets a GPU approximate the derivative within the quad, but"
+             if used is None else
+             f"your ddx comes from the quad's {('upper', 'lower')[used[0]]} row and your ddy "
+             f"from its {('left', 'right')[used[1]]} column: GL (dFdxCoarse) and Direct3D "
+             "(ddx_coarse) let a GPU take other lanes of the quad, so a conforming GPU may "
+             "give your λ; but")  # fmt: skip
+    return (f"{which} the task asks for llvmpipe's λ, and llvmpipe differences the upper-left "
+            "lane's row and column (lesson 09 §2)")  # fmt: skip
 
 
 def _log_slips(*args) -> dict:
@@ -196,6 +241,13 @@ MISTAKES = {
     "affine": "you interpolated (u, v) affinely at the lanes: which interpolation does a "
     "texture coordinate get across a triangle whose vertices lie at different depths "
     "(lesson 04)?",
+    "λ·w": "your lanes' (u, v) weight each vertex by w: perspective-correct interpolation "
+    "divides by w (lesson 04): which weights does a vertex get, λ·w or λ/w?",
+    **{kind: _lanes_words(kind) for kind in OTHER_LANES},
+    "quad index as its pixel": lambda a, e, g: (
+        f"you took pixel ({a[4] // 2}, {a[5] // 2}) as the quad's upper-left lane: row // 2 "
+        "numbers the quad; which pixel is its upper-left lane?"
+    ),
     "corners": "you took (u, v) at the pixels' corners (col, row): where is a lane shaded?",
     "fine": "these are fine differences (each pixel its own row and column of the quad): the "
     "λ a texture reads here is the coarse one, one pair per quad, the same for its four "
@@ -206,6 +258,10 @@ MISTAKES = {
         "your steps are in texture units (u and v run over [0, 1]): "
         f"λ counts texels of level 0; how many texels long is this texture along u, and along v "
         f"(size = {a[3]})?"
+    ),
+    "divided by the size": lambda a, e, g: (
+        f"you divided the steps by the size ({a[3]}): a step of u = 1/W crosses one texel, "
+        "so is a step in texels u·W or u / W?"
     ),
     "W and H swapped": lambda a, e, g: (
         f"size = {a[3]} is (H, W): you scaled u by H = "
@@ -232,7 +288,8 @@ MISTAKES = {
         f"({num(_axes(a)[0])} and {num(_axes(a)[1])} texels): the picture blurs more than it "
         "must; which one length decides whether a step skips texels?"
     ),
-    "largest component": "each step's length is its larger component here; a step of 3 "
+    "largest component": "each step's length is its larger component here: GL (§8.14.1) "
+    "allows that approximation, but this task asks for llvmpipe's exact lengths; a step of 3 "
     "texels across and 4 down: how long is it?",
     "clamped at 0": "your λ is clamped at 0: here the texture is magnified and λ is "
     "negative; leave it unclamped (7.3's sampler keeps it within the pyramid)",
@@ -271,7 +328,38 @@ HINT = (
 )
 
 
+#: The student's pixel_lod whose check is running (set by :func:`_call`), for :func:`_rule`.
+_RUNNING: dict = {}
+
+
+def _call(fn, args):
+    """The student's answer on one case, the function noted for :func:`_rule`."""
+    _RUNNING["fn"] = getattr(fn, "fn", fn)  # the checker's recorder holds it as ``fn``
+    return as_number(fn(*args))
+
+
+def ignores(fn, changed, got) -> bool:
+    """Does the student's ``fn`` give ``got`` again on ``changed`` args, whose answer differs
+    (r415 F1: ``return row * 0.1`` then ``return col * 0.1`` were two tries that unlocked the
+    steps)? False where it raises or gives no number."""
+    if fn is None or got is None:
+        return False
+    try:
+        again = np.asarray(fn(*changed), dtype=float)
+        return bool(np.shape(again) == np.shape(got) and np.allclose(again, got, rtol=1e-9))
+    except Exception:  # noqa: BLE001 - the student's code: any failure is "not shown to ignore"
+        return False
+
+
 def _rule(args, expected, got) -> str:
+    """The steps (staged: :data:`RULE` until two answers failed), but never for an answer that
+    ignores the triangle's (u, v): that try does not count towards them (r415 F1)."""
+    xy, w, uv, size, row, col = args
+    doubled = (np.array(xy, float), np.array(w, float), np.asarray(uv, float) * 2, size, row, col)
+    if ignores(_RUNNING.get("fn"), doubled, got):
+        return (f": with this triangle's (u, v) doubled your λ is still {num(got)}, where each "
+                "step crosses twice the texels and λ grows by 1: does your λ use xy, w, uv "
+                "and size?" + HINT[1:])  # fmt: skip
     return RULE
 
 
@@ -345,7 +433,7 @@ PIXEL_LOD = Exercise(
     "pixel_lod", lod_cases, as_number, same_lod, explain_lod, _rule,
     variant_mistakes(_variants, MISTAKES),
     answers=(PackageAnswer(mip_level), PackageAnswer(lane_values)),
-    draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True,
+    draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True, call=_call,
     once=((RULE, ": as said for the first failing case"),),
     reference=("teachraster.exercises.quad_difference",),  # lanes: the renderer's quad values
     example=2,  # pixel (27, 3): a quad with helpers outside the edge, 7.1's third question

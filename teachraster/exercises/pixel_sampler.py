@@ -23,13 +23,14 @@ from ..pipeline.texture import sample
 from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
 from .cases import SEED, fixed_and_drawn
-from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod
+from .exercise import Exercise, Mistake, PackageAnswer, copies, variant_mistakes
+from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod, ignores
 from .quad_difference import FLOOR, inside, value_at
 from .scalars import num, vec
 from .texture_filtering import (
     Pyramid,
     as_texel_value,
+    expected_bilinear,
     expected_trilinear,
     same_value,
     trilinear_with,
@@ -156,6 +157,10 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
         "(u, v) at (col, row)": tri(u=pixel_uv(xy, w, uv, col, row)),
         "(u, v) at (col, row), clamped": tri(u=_uv(xy, w, uv, row + 0.5, col + 0.5, clamp=True)),
         "(v, u)": tri(u=at[::-1]),
+        "(u, v) at the quad's centre": tri(u=_uv(xy, w, uv, c0 + 1, r0 + 1)),
+        "λ clamped to q − 1": tri(lam=min(max(lod, 0.0), len(pyramid) - 2)),
+        "⌈λ⌉": tri(lam=float(np.ceil(lod))),
+        "λ + ½": tri(lam=lod + 0.5),
         "|λ|": tri(lam=abs(lod)),
         "λ not clamped": tri(clamp="weight"),
         "nearest level": tri(levels="nearest"),
@@ -203,10 +208,14 @@ MISTAKES = {
         f"0 is {np.shape(a[0][0])[0]} rows × {np.shape(a[0][0])[1]} columns, and 7.1's `size` is "
         "`texture.shape[:2]`"
     ),
-    "the last level's size": "your λ measures the steps in texels of the last, 1 × 1 level: "
-    "λ counts texels of level 0; which level's size does 7.1's `size` want?",
-    "level 1's size": "your λ measures the steps in texels of level 1 (half level 0's size): "
-    "λ counts texels of level 0; which level's size does 7.1's `size` want?",
+    "the last level's size": lambda a, e, g: (
+        f"your λ is 7.1's minus {len(a[0]) - 1}: the steps in texels of the last, 1 × 1 level "
+        f"(its size passed to pixel_lod), or {len(a[0]) - 1} subtracted from λ? λ counts "
+        "texels of level 0, and 7.1's `size` is level 0's"
+    ),
+    "level 1's size": "your λ is 7.1's minus 1: the steps in texels of level 1 (its size, "
+    "half level 0's, passed to pixel_lod), or 1 subtracted from λ? λ counts texels of level 0, "
+    "and 7.1's `size` is level 0's",
     "size (H, H)": lambda a, e, g: (
         f"your size is ({np.shape(a[0][0])[0]}, {np.shape(a[0][0])[0]}): len(level 0) counts its "
         f"rows (H) only; this level 0 is {np.shape(a[0][0])[0]} × {np.shape(a[0][0])[1]}, and "
@@ -223,6 +232,18 @@ MISTAKES = {
     "(u, v) at (col, row)": _swapped_centre,
     "(u, v) at (col, row), clamped": _swapped_centre,
     "(v, u)": "you filtered at (v, u): trilinear takes (u, v), u across the texture",
+    "(u, v) at the quad's centre": lambda a, e, g: (
+        f"you filtered at the (u, v) of the quad's centre: the quad shares one λ, but each "
+        f"pixel is shaded at its own (u, v); which (u, v) belongs to pixel ({a[4]}, {a[5]})?"
+    ),
+    "λ clamped to q − 1": lambda a, e, g: (
+        f"you clamped λ to {len(a[0]) - 2}, one level below the top: this pyramid's levels are "
+        f"0–{len(a[0]) - 1}; which level serves a λ above the top?"
+    ),
+    "⌈λ⌉": "that is the level ⌈λ⌉, rounded up: where λ crosses a whole number the picture "
+    "jumps; 7.3's trilinear blends the two levels around λ itself",
+    "λ + ½": "your λ is 7.1's plus ½ (a bias, or rounding to the nearer level prepared): "
+    "7.3's trilinear takes λ itself",
     "|λ|": "your λ is |λ|: the texture is magnified here (λ < 0, level 0); a negative λ "
     "is clamped to 0, not turned positive",
     "λ not clamped": "λ lies outside the pyramid here: what must the sampler do with it before "
@@ -248,10 +269,11 @@ def _call(fn, args):
     return as_texel_value(fn(*args))
 
 
-def _own(name: str):
+def _own(name: str, fn=None):
     """The student's own function ``name`` (7.1's pixel_lod, 7.3's trilinear) that their
-    pixel_sample calls, found among its globals or its closure; None if it calls none."""
-    fn = _RUNNING.get("fn")
+    pixel_sample (or ``fn``: 7.2's bilinear that their trilinear calls) calls, found among
+    its globals or its closure; None if it calls none."""
+    fn = _RUNNING.get("fn") if fn is None else fn
     code = getattr(fn, "__code__", None)
     if code is None or name not in code.co_names + code.co_freevars:
         return None
@@ -284,6 +306,43 @@ def _own_trilinear(args):
     return None if same_value(got, right, None) else (got, right, lod, at)
 
 
+def _own_bilinear(args):
+    """(the student's bilinear, 7.2's, the level) at this pixel's (u, v) on the first level
+    trilinear reads where they differ, or None (r415 F2: a wrong 7.2 was blamed on 7.3)."""
+    pyramid, xy, w, uv, row, col, wrap = args
+    tri = _own("trilinear")
+    mine = None if tri is None else _own("bilinear", getattr(tri, "fn", tri))
+    if mine is None:
+        return None
+    at = pixel_uv(xy, w, uv, row, col)
+    lam = min(max(expected_lod(xy, w, uv, level_size(pyramid), row, col), 0.0), len(pyramid) - 1)
+    for k in sorted({int(np.floor(lam)), min(int(np.floor(lam)) + 1, len(pyramid) - 1)}):
+        try:  # a helper of another signature is no 7.2 bilinear
+            got = np.asarray(mine(pyramid[k], at.copy(), wrap), dtype=float)
+        except Exception:  # noqa: BLE001 - the student's code
+            return None
+        right = expected_bilinear(pyramid[k], at, wrap)
+        if not same_value(got, right, None):
+            return got, right, k, at
+    return None
+
+
+def _fix_bilinear(args, expected, got) -> str:
+    mine, right, k, at = _own_bilinear(args)
+    return (f"your bilinear gives {_shown(mine, right)} on level {k} at (u, v) = {vec(at)} "
+            f"where 7.2's answer is {_shown(right, mine)}: 7.2's check fails on it; fix "
+            "bilinear first, then check this again")  # fmt: skip
+
+
+def _raised(args, error) -> str:
+    """r415 F2: the full shape (H, W, C) of an RGB level passed as 7.1's size."""
+    if "raised ValueError" in error and "unpack" in error and np.ndim(args[0][0]) == 3:
+        return (f": this pyramid is RGB, np.shape(level 0) is {np.shape(args[0][0])}; did your "
+                "pixel_lod get it as `size`, and unpack it as (H, W)? 7.1's `size` is "
+                "`shape[:2]`")  # fmt: skip
+    return ""
+
+
 def _fix_lod(args, expected, got) -> str:
     mine, right = _own_lod(args)
     return (f"your pixel_lod gives λ = {num(mine, right)} here where 7.1's answer is "
@@ -301,6 +360,8 @@ def _fix_trilinear(args, expected, got) -> str:
 #: Checked before the table: a wrong 7.1 or 7.3 is named there, not as this task's glue.
 OWN = (
     Mistake("your pixel_lod (7.1)", _fix_lod, fits=lambda a, e, g: _own_lod(a) is not None),
+    Mistake("your bilinear (7.2)", _fix_bilinear,
+            fits=lambda a, e, g: _own_bilinear(a) is not None),
     Mistake("your trilinear (7.3)", _fix_trilinear,
             fits=lambda a, e, g: _own_trilinear(a) is not None),
 )  # fmt: skip
@@ -317,6 +378,12 @@ HINT = (
 
 
 def _rule(args, expected, got) -> str:
+    """The steps (staged: :data:`RULE` until two answers failed), but never for an answer that
+    does not read the pyramid: that try does not count towards them (r415 F1)."""
+    brighter = (Pyramid([np.asarray(level, float) + 1 for level in args[0]]), *copies(args[1:]))
+    if ignores(_RUNNING.get("fn"), brighter, got):
+        return (f": with every texel of this pyramid 1 brighter your value is still "
+                f"{_shown(got, got)}: does your function read the pyramid?" + HINT[1:])  # fmt: skip
     return RULE
 
 
@@ -359,7 +426,7 @@ PIXEL_SAMPLE = Exercise(
     (*OWN, *variant_mistakes(_variants, MISTAKES)), call=_call,
     answers=(PackageAnswer(sample, when=lambda a: a.get("filter") == "trilinear"),
              PackageAnswer(mip_level), PackageAnswer(lane_values)),
-    draw=draw_sample_case, hints=((RULE, HINT),), inputs_drawn=True,
+    draw=draw_sample_case, hints=((RULE, HINT),), inputs_drawn=True, raised_words=_raised,
     once=((RULE, ": as said for the first failing case"),),
     reference=("teachraster.exercises.quad_difference", "teachraster.exercises.pixel_level",
                "teachraster.exercises.texture_filtering"),
