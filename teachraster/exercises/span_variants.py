@@ -288,6 +288,22 @@ def _float_side_wrong(fv, long_is_left: bool) -> bool:
     return any(side == 0 or (side > 0) != long_is_left for _, side in _float_sides(fv))
 
 
+def float_side_errs(xy) -> bool:
+    """r413 P8: a side or area test in float64 errs on this triangle: lesson 01's u4 against
+    x2 (:func:`_float_side_wrong`), or the edge function (x2 − x1)(y3 − y1) − (y2 − y1)(x3 − x1)
+    computed in floats, zero or of the wrong sign (a float64 student's area test drops the
+    row)."""
+    v = sorted(_frac_points(xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    exact = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if exact == 0:
+        return False
+    fv = [(float(a), float(b)) for a, b in v]
+    (a1, b1), (a2, b2), (a3, b3) = fv
+    area = (a2 - a1) * (b3 - b1) - (b2 - b1) * (a3 - a1)
+    return area == 0 or (area > 0) != (exact > 0) or _float_side_wrong(fv, x2 > _at(v[0], v[2], y2))
+
+
 def _float_side_words(args, expected, got) -> str:
     """r413 P8: the middle vertex's exact distance from the long edge, beside float64's."""
     xy, _ = args
