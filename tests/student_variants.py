@@ -6197,3 +6197,113 @@ R415_PIXEL = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R415_PIXEL.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R415_PIXEL.items()})
+# == r413 P8, M10, H7 (fixex02y, exercise 2.1 span: the reader's variants) ==========================
+
+
+def _span_r413(source: str):
+    """The reader's ``span`` from its source (math, numpy and Fraction in scope)."""
+    scope = {"math": math, "np": np, "Fraction": Fraction}
+    exec(source, scope)
+    return scope["span"]
+
+
+_R413_FLOAT_SIDE = """
+def span(xy, row):
+    # lesson 01's side test (float, as span_fill does it), exact crossings in Fractions
+    xy = np.asarray(xy, dtype=float)
+    TOP, MID, BOT = xy[np.lexsort((xy[:, 0], xy[:, 1]))]
+    if BOT[1] == TOP[1]:
+        return 0, 0
+    u4 = (MID[1] - TOP[1]) / (BOT[1] - TOP[1]) * (BOT[0] - TOP[0]) + TOP[0]
+    long_is_left = u4 < MID[0]
+    P = [(Fraction(float(p[0])), Fraction(float(p[1]))) for p in (TOP, MID, BOT)]
+    y = row + Fraction(1, 2)
+    if not (P[0][1] <= y < P[2][1]):
+        return 0, 0
+    cross = lambda a, b: a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    xl = cross(P[0], P[2]); xs = cross(P[0], P[1]) if y < P[1][1] else cross(P[1], P[2])
+    left, right = (xl, xs) if long_is_left else (xs, xl)
+    return math.ceil(left - Fraction(1, 2)), math.ceil(right - Fraction(1, 2))
+"""
+_R413_FLOAT_SIDE_MUL = """
+def span(xy, row):
+    P = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = P
+    y = Fraction(2 * row + 1, 2)
+    side = float(x2) - (float(x1) + (float(y2) - float(y1)) * (float(x3) - float(x1))
+                        / (float(y3) - float(y1))) if y3 != y1 else 0.0
+    if side == 0 or not (y1 <= y < y3):
+        return 0, 0
+    def cross(a, b):
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    xl = cross(P[0], P[2])
+    xs = cross(P[0], P[1]) if y < y2 else cross(P[1], P[2])
+    left, right = (xl, xs) if side > 0 else (xs, xl)
+    return math.ceil(left - Fraction(1, 2)), math.ceil(right - Fraction(1, 2))
+"""
+_R413_GRID_FLOOR = """
+def span(xy, row):
+    # integers, but the crossing floored to the 1/256 grid before rounding to a column
+    P = sorted(((round(256 * float(x)), round(256 * float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = P
+    Y = 256 * row + 128
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not (y1 <= Y < y3):
+        return 0, 0
+    def end(a, b):
+        x = a[0] + (Y - a[1]) * (b[0] - a[0]) // (b[1] - a[1])  # in 1/256 px
+        return -((128 - x) // 256)
+    l = end(P[0], P[2]); s = end(P[0], P[1]) if Y < y2 else end(P[1], P[2])
+    return (l, s) if side > 0 else (s, l)
+"""
+_R413_INT64 = """
+def span(xy, row):
+    # all in int64 arrays (1/256 px)
+    Q = np.round(np.asarray(xy, dtype=np.float64) * 256).astype(np.int64)
+    Q = Q[np.argsort(Q[:, 1], kind="stable")]
+    Y = np.array([256 * row + 128], dtype=np.int64)
+    x = Q[:, 0]; y = Q[:, 1]
+    side = (x[1:2] - x[0:1]) * (y[2:3] - y[0:1]) - (y[1:2] - y[0:1]) * (x[2:3] - x[0:1])
+    if side[0] == 0 or not (y[0] <= Y[0] < y[2]):
+        return 0, 0
+    k = 0 if Y[0] < y[1] else 1
+    a = Q[[0, k]]; b = Q[[2, k + 1]]
+    d = b[:, 1] - a[:, 1]
+    num = a[:, 0] * d + (Y - a[:, 1]) * (b[:, 0] - a[:, 0]) - 128 * d
+    ends = -((-num) // (256 * d))
+    lo, hi = (ends[0], ends[1]) if side[0] > 0 else (ends[1], ends[0])
+    return int(lo), int(hi)
+"""
+#: r413 M10: exact (Fraction) code with two tie slips: a left edge owns no centre, and the rows
+#: are open (y1 < y < y3); told neither "computed in float64" nor "divides first"
+R413_TWO_TIE_SLIPS = """
+def span(xy, row):
+    P = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = P
+    y = Fraction(2 * row + 1, 2)
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not (y1 < y < y3):
+        return 0, 0
+    def cross(a, b):
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    xl = cross(P[0], P[2])
+    xs = cross(P[0], P[1]) if y < y2 else cross(P[1], P[2])
+    left, right = (xl, xs) if side > 0 else (xs, xl)
+    return math.floor(left - Fraction(1, 2)) + 1, math.ceil(right - Fraction(1, 2))
+"""
+R413 = {
+    "span in fractions, lesson 01's side test u4 < MID[0] in float64": (
+        "span", _span_r413(_R413_FLOAT_SIDE), "your side test (u4 < x2) is computed in float64",
+        "side in float64"),
+    "span in fractions, the side x2 − u4 in float64 multiplied first": (
+        "span", _span_r413(_R413_FLOAT_SIDE_MUL), "the middle vertex lies 4.4e-11 px right of "
+        "the long edge", "side in float64"),
+    "span in integers, the crossing floored to the 1/256 grid": (
+        "span", _span_r413(_R413_GRID_FLOOR), "you rounded the crossing to the 1/256 grid",
+        "crossing on the 1/256 grid"),
+    "span in numpy int64 arrays, overflowing far out": (
+        "span", _span_r413(_R413_INT64), "your products overflowed int64 silently",
+        "int64 overflow"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R413.items()})

@@ -124,6 +124,18 @@ FAR_NEAR_TIES = (
      (-536870913.0, 536870913.0)), 268435457),
 )  # fmt: skip
 
+#: r413 P8: thin triangles below 2^29 px whose middle vertex lies a hair (4.4·10^-11 and
+#: 3·10^-11 px) right, then left, of the long edge, where float64's numbers are ~10^-8 px apart:
+#: lesson 01's side test in float64 (``u4 < MID[0]``, divided or multiplied first) ties or picks
+#: the wrong side, and the asked row has a centre exactly on the left edge (the long one, then
+#: the upper short one), so a swapped or empty span loses it. Columns from the exact crossings.
+FAR_SIDES = (
+    ("the middle vertex a hair right of the long edge", ((0.5, 0.5),
+     (72127644.9296875, 88640195.55078125), (143810118.5, 176733304.5)), 88366652),
+    ("the middle vertex a hair left of the long edge", ((0.5, 0.5), (132199458.5, 91582510.5),
+     (168931804.4921875, 117029214.25390625)), 45791255),
+)  # fmt: skip
+
 #: r385 T1: rows with a crossing exactly on a centre where lesson 01's multiply-first crossing
 #: in float64, x = a_x + (y − a_y)(b_x − a_x)/(b_y − a_y), lands a hair right of it (so a
 #: first or a stop one column too far right), on each edge (the long one, the upper and the
@@ -172,6 +184,7 @@ class Pair(frozenset):
     solution that picks x_l by a side test may return the wrong way round (r372 M2)."""
 
     pair: tuple[int, int] | None = None
+    strict: bool = False  # compared as it is, never with float64's ends far out (r413 P8)
 
 
 def pair_columns(x_left, x_right) -> Pair | None:
@@ -202,7 +215,7 @@ KINDS = (
     "divide first", "slope first", "upper denominator", "slope inverted", "long edge sign",
     "side by given winding", "side by the short edge", "long edge below the split", "lower edge above the split",
     "sorted by x", "vertices on centres", "not sorted", "vertices truncated", "longest edge",
-    "bounding box",
+    "bounding box", "side in float64",
 )  # fmt: skip
 
 
@@ -248,11 +261,66 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     given = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
     out["side by given winding"] = _pick(long_x, short_x, given > 0)  # r372 M1 (w36)
     out["side by the short edge"] = _pick(long_x, short_x, x2 > short_x)  # r372 M1 (w24)
+    if _float_side_wrong(fv, long_is_left):  # r413 P8: lesson 01's u4 < MID[0] in float64
+        out["side in float64"] = _pick(long_x, short_x, not long_is_left)
+        if out["side in float64"] is not None:  # matched as it is: its ends are exact
+            out["side in float64"].strict = True
     if not upper:  # r372 M4 (w43): the long edge taken as the lower short one too
         out["long edge below the split"] = pair_columns(long_x, long_x)
     elif y2 != y3:  # r372 H1 (w44): the lower short edge's line above the split too
         out["lower edge above the split"] = _pick(long_x, _at(v[1], v[2], y), long_is_left)
     return out
+
+
+def _float_sides(fv) -> list[tuple[float, float]]:
+    """(u4, x2 − u4) of lesson 01's side test in float64 on sorted vertices ``fv``, the long
+    edge's x at the middle vertex's height divided first (its ``span_fill``) and multiplied
+    first (r413 P8)."""
+    (x1, y1), (x2, y2), (x3, y3) = fv
+    out = []
+    for u4 in ((y2 - y1) / (y3 - y1) * (x3 - x1) + x1, x1 + (y2 - y1) * (x3 - x1) / (y3 - y1)):
+        out.append((u4, x2 - u4))
+    return out
+
+
+def _float_side_wrong(fv, long_is_left: bool) -> bool:
+    """Lesson 01's side test in float64 ties (x2 − u4 == 0) or picks the other side."""
+    return any(side == 0 or (side > 0) != long_is_left for _, side in _float_sides(fv))
+
+
+def float_side_errs(xy) -> bool:
+    """r413 P8: a side or area test in float64 errs on this triangle: lesson 01's u4 against
+    x2 (:func:`_float_side_wrong`), or the edge function (x2 − x1)(y3 − y1) − (y2 − y1)(x3 − x1)
+    computed in floats, zero or of the wrong sign (a float64 student's area test drops the
+    row)."""
+    v = sorted(_frac_points(xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    exact = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if exact == 0:
+        return False
+    fv = [(float(a), float(b)) for a, b in v]
+    (a1, b1), (a2, b2), (a3, b3) = fv
+    area = (a2 - a1) * (b3 - b1) - (b2 - b1) * (a3 - a1)
+    return area == 0 or (area > 0) != (exact > 0) or _float_side_wrong(fv, x2 > _at(v[0], v[2], y2))
+
+
+def _float_side_words(args, expected, got) -> str:
+    """r413 P8: the middle vertex's exact distance from the long edge, beside float64's."""
+    xy, _ = args
+    v = sorted(_frac_points(xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    u4 = x1 + (y2 - y1) * (x3 - x1) / (y3 - y1)
+    where = "right" if x2 > u4 else "left"
+    fu4, fside = _float_sides([(float(a), float(b)) for a, b in v])[0]
+    said = "on it" if fside == 0 else ("right of it" if fside > 0 else "left of it")
+    return (
+        f"your side test (u4 < x2) is computed in float64: here the middle vertex lies "
+        f"{float(abs(x2 - u4)):.2g} px {where} of the long edge, and float64's numbers near "
+        f"{float(x2):.3g} px are {float(np.spacing(float(x2))):.2g} px apart, so lesson 01's u4 "
+        f"comes out {fu4!r} and puts the vertex {said}: your x_l and x_r are swapped (or your "
+        "span is empty). Compare exactly: the sign of an integer cross product, (x2 − x1)(y3 − "
+        "y1) − (y2 − y1)(x3 − x1) in 1/256-px units (or with fractions.Fraction)"
+    )
 
 
 def _frac_points(xy) -> list[tuple[Fraction, Fraction]]:
@@ -366,6 +434,7 @@ def _order_words(order: str, what: str):
 
 
 WORDS = {
+    "side in float64": _float_side_words,
     "divide first": _order_words("divide first", "(y − a_y)/(b_y − a_y)"),
     "slope first": _order_words("slope first", "the slope (b_x − a_x)/(b_y − a_y)"),
     "upper denominator": "above the middle vertex your crossing of the edge from the top "

@@ -33,6 +33,7 @@ from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
     FAR_NEAR_TIES,
+    FAR_SIDES,
     FAR_TIES,
     FLOAT64_EXACT_BELOW,
     FLOOR_ROWS,
@@ -42,6 +43,7 @@ from .span_variants import (
     TIE_ENDS,
     TIE_ROWS,
     float_crossing,
+    float_side_errs,
     more_variants,
     pair_columns,
 )
@@ -254,9 +256,14 @@ def _far_cases() -> list[tuple[str, tuple, frozenset]]:
     ties = [(f"far out, {label}, row {row} (a crossing exactly on a centre, 10^8 px out)",
              (np.array(points), row), exact_columns(np.array(points), row))
             for label, points, row in FAR_TIES]  # fmt: skip
-    return ties + [(f"far out, {label}, row {row} (not on it, near 2^29 px)",
-                    (np.array(points), row), exact_columns(np.array(points), row))
-                   for label, points, row in FAR_NEAR_TIES]  # fmt: skip
+    near = [(f"far out, {label}, row {row} (not on it, near 2^29 px)",
+             (np.array(points), row), exact_columns(np.array(points), row))
+            for label, points, row in FAR_NEAR_TIES]  # fmt: skip
+    # r413 P8: the side of the long edge decided in float64 (lesson 01's u4 < MID[0])
+    sides = [(f"far out, {label}, row {row} (a centre on the left edge, near 2^28 px)",
+              (np.array(points), row), exact_columns(np.array(points), row))
+             for label, points, row in FAR_SIDES]  # fmt: skip
+    return ties + near + sides
 
 
 def _far(xy: np.ndarray) -> bool:
@@ -441,6 +448,10 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "int(x + ½)": _columns(int(xl + half), int(xr + half)),
             "clip at 0": _columns(max(lo, 0), max(hi, 0)),
             "round(x − ½)": _columns(round(xl - half), round(xr - half)),
+            # r413 M10: an integer crossing floored to the 1/256 grid, then rounded exactly
+            "crossing on the 1/256 grid": _Strict(
+                _columns(math.ceil(_on_grid(xl) - half), math.ceil(_on_grid(xr) - half))
+            ),
             # r403 P7: the exact crossing, then a float at the last step (float(Fraction),
             # n / d / 256): a crossing a hair off a centre far out lands on it
             "float at the last step": _Strict(
@@ -480,6 +491,11 @@ class _Strict(frozenset):
     itself float64's rounding)."""
 
 
+def _on_grid(x: Fraction) -> Fraction:
+    """x floored to the 1/256-px grid (integer floor division in 1/256-px units)."""
+    return Fraction(math.floor(256 * x), 256)
+
+
 def _int_ceil(t: Fraction) -> int:
     """A ceiling made with C's ``int()``, which truncates toward zero: one too far right for
     a negative t that is no integer (r372 P2: ``int(t) if t == int(t) else int(t) + 1``)."""
@@ -511,8 +527,11 @@ def _float64_same(got, answer, args) -> bool:
     to either side first, and the table is evaluated exactly."""
     xy, row = args
     mine = _returned(got)
-    if mine is None or isinstance(answer, _Strict) or not _far(np.asarray(xy)):
+    strict = isinstance(answer, _Strict) or getattr(answer, "strict", False)
+    if mine is None or strict or not _far(np.asarray(xy)):
         return False
+    if not set(got) and float_side_errs(xy):  # r413 P8: a float64 side or area test drops
+        return True  # the thin far rows' span, whatever the other slip
     theirs = getattr(answer, "pair", None) or (answer and (min(answer), max(answer) + 1))
     cross = crossings(xy, Fraction(2 * row + 1, 2))
     if not theirs or cross is None or _horizontal_edge(xy, row + 0.5):
@@ -598,6 +617,26 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         out["lower denominator"] = _columns(*sorted((math.ceil(long_x - half),
                                                      math.ceil(wrong - half))))  # fmt: skip
     return out
+
+
+def _grid_words(args, expected, got) -> str:
+    """r413 M10: an integer crossing floored to the 1/256 grid (no float in it)."""
+    xy, row = args
+    cross = crossings(xy, Fraction(2 * row + 1, 2))
+    said = ""
+    for name, x in zip(("x_l", "x_r"), cross or ()):
+        if math.ceil(_on_grid(x) - HALF) != math.ceil(x - HALF):
+            centre = num(math.ceil(x - HALF) - 0.5)
+            said = (
+                f" (here {name} lies {float(x - _on_grid(x)):.2g} px right of the grid "
+                f"point {_frac(_on_grid(x))}, and the centre {centre} lies at or right of "
+                f"that point but left of {name}, so the floor moved it across)"
+            )
+            break
+    return ("you rounded the crossing to the 1/256 grid (a floor division in 1/256-px units) "
+            f"before rounding it to a column{said}: the crossing is a rational, not on the "
+            "grid; divide once, rounding the exact quotient straight to a column: "
+            "⌈(n − 128·d) / (256·d)⌉ with n = 256·x·d in integers, d > 0")  # fmt: skip
 
 
 #: r403 H4: the task promises to name "a short edge kept past the middle vertex"
@@ -693,6 +732,7 @@ MISTAKES = {
     "lower denominator": "below the middle vertex your crossing of the edge from the middle "
     "vertex to the bottom one is off: you divided by y3 − y1, the long edge's height, not by "
     "that edge's own height y3 − y2: x = x2 + (y − y2)·(x3 − x2)/(y3 − y2)",
+    "crossing on the 1/256 grid": _grid_words,
     "float at the last step": lambda args, expected, got: _landed_words(
         args, expected, got, last=True
     ),
@@ -997,6 +1037,18 @@ def _float64_fits(args, expected, got) -> bool | None:
     return bool(_ties_off(args, got) or _landed_off(args, got))
 
 
+def _near_tie_off(args, got) -> bool:
+    """r413 M10: a near row (where float64 multiply-first is exact) with an end wrong at a
+    crossing exactly on a centre: a tie rule's mistake, not float64's, so far ties that fail
+    too are no sign of float64 (the "float64 crossing" symptom must fit this row, and cannot)."""
+    xy, row = args
+    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
+    if _far(np.asarray(xy)) or pair is None or cross is None:
+        return False
+    return any(end != math.ceil(x - HALF) and (x - HALF).denominator == 1
+               for end, x in zip(pair, cross))  # fmt: skip
+
+
 def _landed_off(args, got) -> list[tuple[str, int, Fraction, Fraction]] | None:
     """(end name, the student's end, the exact crossing, the centre it lies a hair from) of
     each end one column off the exact one, where the crossing lies within a few of float64's
@@ -1126,7 +1178,42 @@ def _swapped_words(args, expected, got) -> str:
             "(or take the smaller one)")  # fmt: skip
 
 
+def _int64_bits(args) -> int:
+    """r413 H7: the most bits of the integer crossing's products on this row, a_x·d and
+    (Y − a_y)(b_x − a_x) in 1/256-px units (d = b_y − a_y), over the edges that reach it."""
+    xy, row = args
+    v = sorted(((round(256 * float(x)), round(256 * float(y))) for x, y in xy),
+               key=lambda p: p[1])  # fmt: skip
+    y = 256 * row + 128
+    bits = 0
+    for (ax, ay), (bx, by) in ((v[0], v[2]), (v[0], v[1]), (v[1], v[2])):
+        if ay < by and ay <= y <= by:
+            bits = max(bits, abs(ax * (by - ay)).bit_length(),
+                       abs((y - ay) * (bx - ax)).bit_length())  # fmt: skip
+    return bits
+
+
+def _int64_fits(args, expected, got) -> bool:
+    """An end over two columns off where the products pass int64's 63 bits (r413 H7)."""
+    pair = _returned(got)
+    if pair is None or _int64_bits(args) <= 63 or not expected:
+        return False
+    return max(abs(pair[0] - min(expected)), abs(pair[1] - max(expected) - 1)) > 2
+
+
+def _int64_words(args, expected, got) -> str:
+    pair = _returned(got)
+    off = max(abs(pair[0] - min(expected)), abs(pair[1] - max(expected) - 1))
+    return (f"your answer is {off} columns off: here the products of the crossing, a_x·d and "
+            f"(y − a_y)(b_x − a_x) in 1/256-px units, need {_int64_bits(args)} bits, more than "
+            "int64's 63: your products overflowed int64 silently (numpy's int64 wraps around, "
+            "arrays with no warning at all); use Python ints (int(), or dtype=object) or "
+            "fractions.Fraction")  # fmt: skip
+
+
 SYMPTOMS = (
+    # r413 H7: only where the code reads int64 (any wrong crossing far out is far off too)
+    Mistake("int64 overflow", _int64_words, fits=_int64_fits, reads="int64"),
     # r355 C3: named only where float32 explains every failure: a float64 (first, last) or
     # y = row + 1 also misses the one far row where float32 moves an end, and was asked there
     # whether it computed in float32
@@ -1138,7 +1225,14 @@ SYMPTOMS = (
     # float32's t named as float32, an epsilon on the ends, x_l and x_r swapped on a row
     # (only where every failing answer is such a tie: one end off at a tie is no cause alone)
     # r385 T1 (session 35): lesson 01's multiply-first order in float64, past 2^18 px
-    Mistake("float64 crossing", _float64_words, fits=_float64_fits, symptom=True, with_others=True),
+    Mistake(
+        "float64 crossing",
+        _float64_words,
+        fits=_float64_fits,
+        symptom=True,
+        with_others=True,
+        must_fit=lambda args, expected, got: _near_tie_off(args, got),
+    ),
     Mistake("crossing rounds", _rounds_words, fits=_rounds_fits, symptom=True, only_whole=True),
     Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
@@ -1303,14 +1397,29 @@ def _mistakes() -> list[Mistake]:
     out = []
     for m in variant_mistakes(_variants, MISTAKES, SYMPTOMS):
         if m.gives is not None:  # r372 M4: every failing answer it would change, or no name
-            m = dataclasses.replace(m, must_fit=_changes(m.gives, m.kind in LAST_STEP_KINDS))
+            must = _changes(m.gives, m.kind in LAST_STEP_KINDS)
+            if m.kind in FLOAT_ORDER_KINDS:  # r413 M10: and a near tie it gets right fails
+                must = _or_near_tie(must)
+            m = dataclasses.replace(m, must_fit=must)
             # r372 M4: and only where it contradicts no passing answer
             m = dataclasses.replace(m, consistent=True)
-        elif m.fits is not None and m.kind != "float64 crossing":
+        elif m.fits is not None and m.kind not in ("float64 crossing", "int64 overflow"):
             m = dataclasses.replace(m, fits=_near_only(m.fits))
         whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped")
         out.append(dataclasses.replace(m, only_whole=True) if whole else m)
     return out
+
+
+#: r413 M10: float orders whose crossing is exact on the near ties where it gives the answer:
+#: a near tie that fails where it does not is a tie rule's mistake (w36), not the order's
+FLOAT_ORDER_KINDS = ("divide first", "slope first")
+
+
+def _or_near_tie(must):
+    def both(args, expected, got) -> bool:
+        return must(args, expected, got) or _near_tie_off(args, got)
+
+    return both
 
 
 def _near_only(fits):
