@@ -130,3 +130,12 @@ def test_d_in_float32_at_the_worst_crossing_fails_a_fixed_case():
     f = np.float32
     d = (f(s[2]) / f(z_w) - f(s[2]) / f(s[3])) / (f(1) - f(s[2]) / f(s[3]))
     assert d < 2.0**-4 and np.float32(rzw.reversed_depth(z_w, *s[2:])) == 2.0**-4
+
+
+def test_5_2s_passing_figure_is_not_at_5_2bs_planes():
+    """r414 F3: a passing 5.2 drew its first case, z = 300 at near 0.1, far 1000: the sawtooth
+    over z 75 to 1000 answered 5.2b's prediction (lesson 05b's planes) a cell early."""
+    from teachraster.exercises.reverse_z import REVERSE_Z_GAP, gap_cases
+
+    _, (_, near, far), _ = gap_cases()[REVERSE_Z_GAP.example]
+    assert (near, far) != (0.1, 1000.0)
