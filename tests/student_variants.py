@@ -6077,3 +6077,17 @@ R414_WORST = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R414_WORST.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R414_WORST.items()})
+# r414 F6: a factor named on every failing case (the crossings' step doubled; z_max's doubled)
+R414_FACTOR = {
+    "reverse-Z worst with 2^(e−22) at the crossings": (
+        "reverse_z_worst", (
+            lambda a, b, n, f: max(_rs.reverse_z_gap(b, n, f), *[
+                2.0 ** (e - 22) * (1 - n / f) * z * z / n
+                for e, z in _r404_crossings(a, b, n, f)])),
+        "you took the step 2^(e−22), twice the binade's", "twice the step at edges"),
+    "reverse-Z worst as twice z_max's Δz": (
+        "reverse_z_worst", lambda a, b, n, f: 2 * _rs.reverse_z_gap(b, n, f),
+        "that is twice z_max's own Δz", "twice z_max's"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R414_FACTOR.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R414_FACTOR.items()})

@@ -176,11 +176,15 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
     peak = min(max(far / 2, z_min), z_max)
     return {
         "z_max only": cands[0][1],
+        "twice z_max's": 2 * cands[0][1],
         "z_min only": at_min,
         "both ends": max(cands[0][1], at_min),
         "last edge": max(dz for _, dz in cands[:2]),
         "edges only": max((dz for _, dz in cands[1:]), default=0.0),
         "step below at edges": max(dz for _, dz in below),
+        "twice the step at edges": max(
+            dz * (1 if z == z_max and k == 0 else 2) for k, (z, dz) in enumerate(cands)
+        ),
         "bound 2^-23": 2.0**-23 * peak * (1 - peak / far),
         "bound 2^-24": 2.0**-24 * peak * (1 - peak / far),
         "bound at z_max": 2.0**-23 * z_max * (1 - z_max / far),
@@ -217,6 +221,8 @@ _BETWEEN = ("Between them d crosses powers of two, and just nearer than each cro
 
 MISTAKES = {
     "z_max only": _z_max_words,
+    "twice z_max's": ": that is twice z_max's own Δz: doubling the gap at z_max guesses at "
+    "the range. Where in the range can a coarser Δz than z_max's lie, and how much coarser?",
     "z_min only": ": you evaluated the gap at z_min only, the nearest depth: Δz grows with z "
     f"within each binade of d, so the coarsest lies farther{_LATER[0]}",
     "both ends": f": you compared the two ends of the range only. {_BETWEEN[0]}",
@@ -229,6 +235,9 @@ MISTAKES = {
     "the step below it, 2^(e−24), the one towards farther depths (the stored 2^e's nearer "
     "neighbour, or np.spacing of d rounded down first). Just nearer than that depth d lies in the binade "
     "above, whose step is 2^(e−23): the coarsest Δz is that limit",
+    "twice the step at edges": ": at each depth where d is exactly a power of two 2^e you "
+    "took the step 2^(e−22), twice the binade's: d's binade [2^e, 2^(e+1)) steps by 2^(e−23), "
+    "as np.spacing of 2^e says",
     "bound 2^-23": ": you took the bound 2^-23 z (1 − z/f) (d over its slope) at its largest "
     "in the range: it is reached only where d is a power of two, so the true worst is the "
     "largest over those depths and z_max, not over every z",
@@ -257,7 +266,9 @@ def _edge_rounded_below(args, expected, got) -> bool:
     rest = [dz for z, dz in candidates(*args) if z != z_w]
     # r414 F4: or no other candidate's (d rounded under in float32 at every crossing)
     other = any(abs(got - dz) <= 1e-3 * dz for dz in rest)
-    return bool((below >= max(rest) or not other) and abs(got - below) <= 0.01 * below)
+    if below < max(rest):  # then exactly (2 × z_max's Δz, 0.3 % off, is no such d)
+        return bool(not other and abs(got - below) <= 1e-6 * below)
+    return bool(abs(got - below) <= 0.01 * below)
 
 
 EDGE_BELOW = Mistake(
@@ -290,14 +301,14 @@ Z_MAX_HERE = Mistake(
 
 
 def _other_crossing(args, expected, got) -> tuple[float, int] | None:
-    """(z, e) of a crossing inside the range, not the worst, whose limit Δz ``got`` is (±0.1 %);
+    """(z, e) of a crossing inside the range, not the worst, whose limit Δz ``got`` is (±1e-6);
     None: none (r414: a worst crossing skipped, or its d rounded under in float32, left the
     next one's Δz, which was told "a search over sampled depths")."""
     if not np.isfinite(got):
         return None
     z_w = worst(*args)[0]
     for (z, dz), (e, _) in zip(candidates(*args)[1:], edges(*args)):
-        if z != z_w and abs(got - dz) <= 1e-3 * dz:
+        if z != z_w and abs(got - dz) <= 1e-6 * dz:
             return z, e
     return None
 
