@@ -139,3 +139,8 @@ def test_5_2s_passing_figure_is_not_at_5_2bs_planes():
 
     _, (_, near, far), _ = gap_cases()[REVERSE_Z_GAP.example]
     assert (near, far) != (0.1, 1000.0)
+
+
+def test_the_teachers_solution_takes_z_min_on_a_crossing():
+    """r414 F5: the solution follows the task's rule at z_min too."""
+    assert sol.reverse_z_worst(2.0, 2.2, 1.0, 3.0) == rzw.expected_worst(2.0, 2.2, 1.0, 3.0)
