@@ -66,7 +66,7 @@ def reverse_z_worst(z_min, z_max, near, far):
     d = lambda z: (near / z - near / far) / (1 - near / far)  # noqa: E731
     for e in range(int(np.ceil(np.log2(d(z_max)))), int(np.floor(np.log2(d(z_min)))) + 1):
         z = near / (2.0**e * (1 - near / far) + near / far)  # d(z) = 2^e
-        if z_min < z <= z_max:
+        if z_min <= z <= z_max:  # r414 F5: z_min on a crossing counts (the binade above)
             worst = max(worst, 2.0 ** (e - 23) * (1 - near / far) * z * z / near)
     return worst
 

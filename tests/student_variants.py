@@ -6307,3 +6307,69 @@ R413 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R413.items()})
+
+
+# == r414: exercise 5.2b's reverse_z_worst, the reader's variants (F1 a sampled search told a =====
+# 5.2 slip, F2 1,001 samples passed, F4 d in float32 at the crossing, F7 an array of one) ========
+def _r414_sampled(count, space=np.linspace):
+    """The student's own (right) reverse_z_gap, its largest over ``count`` sampled depths."""
+
+    def reverse_z_worst(z_min, z_max, near, far):
+        return max(_rs.reverse_z_gap(z, near, far) for z in space(z_min, z_max, count))
+
+    return reverse_z_worst
+
+
+def _r414_gap32(z, near, far):
+    """d computed in float32 at z itself, np.spacing of it over the slope (x7)."""
+    f = np.float32
+    d = (f(near) / f(z) - f(near) / f(far)) / (f(1) - f(near) / f(far))
+    return float(np.spacing(d)) * (1 - near / far) * z * z / near
+
+
+def _r414_f32_at_crossings(z_min, z_max, near, far):
+    worst = _r414_gap32(z_max, near, far)
+    for _, z in _r404_crossings(z_min, z_max, near, far):
+        worst = max(worst, _r414_gap32(z, near, far))
+    return worst
+
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R414_WORST = {
+    "reverse-Z worst, the largest of 100 evenly spaced depths": (
+        "reverse_z_worst", _r414_sampled(100), "a search over sampled depths? The coarsest step "
+        "lies just nearer than z = 450.333, where d falls to 2^-13; your samples stopped at",
+        "search missed the edge"),
+    "reverse-Z worst, the largest of 1,001 evenly spaced depths": (
+        "reverse_z_worst", _r414_sampled(1001), "your samples stopped at about z =",
+        "search missed the edge"),
+    "reverse-Z worst, the largest of 10,001 evenly spaced depths": (
+        "reverse_z_worst", _r414_sampled(10001), "your samples stopped at about z =",
+        "search missed the edge"),
+    "reverse-Z worst, the largest of 1,000 geometrically spaced depths": (
+        "reverse_z_worst", _r414_sampled(1000, np.geomspace), "your samples stopped at about z =",
+        "search missed the edge"),
+    "reverse-Z worst, d in float32 at each crossing": (
+        "reverse_z_worst", _r414_f32_at_crossings, "a crossing of this range, but not its "
+        "coarsest", "another crossing's"),
+    "reverse-Z worst returned in an array of one": (
+        "reverse_z_worst",
+        lambda a, b, n, f: np.array([_rs.reverse_z_worst(a, b, n, f)]),
+        "an array of shape (1,) where one number is expected", "type"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R414_WORST.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R414_WORST.items()})
+# r414 F6: a factor named on every failing case (the crossings' step doubled; z_max's doubled)
+R414_FACTOR = {
+    "reverse-Z worst with 2^(e−22) at the crossings": (
+        "reverse_z_worst", (
+            lambda a, b, n, f: max(_rs.reverse_z_gap(b, n, f), *[
+                2.0 ** (e - 22) * (1 - n / f) * z * z / n
+                for e, z in _r404_crossings(a, b, n, f)])),
+        "you took the step 2^(e−22), twice the binade's", "twice the step at edges"),
+    "reverse-Z worst as twice z_max's Δz": (
+        "reverse_z_worst", lambda a, b, n, f: 2 * _rs.reverse_z_gap(b, n, f),
+        "that is twice z_max's own Δz", "twice z_max's"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R414_FACTOR.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R414_FACTOR.items()})

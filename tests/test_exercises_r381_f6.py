@@ -84,6 +84,63 @@ def test_the_task_states_the_band_its_check_allows():
     ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells]
     text = "".join(cells[ids.index("reverse_z_worst_task")]["source"])
     for share in (rzw.BELOW, rzw.SLACK):
-        assert f"{share:.1%}".replace(".0%", "%").replace("%", " %") in text, text
+        assert f"{share * 100:g} %" in text, text
     assert ids.index("reverse_z_gap_check") < ids.index("reverse_z_worst_task")
     assert "predict" in text and text.index("predict") < text.index("Write `reverse_z_worst")
+
+
+def test_z_min_on_a_crossing_counts_with_the_binade_above():
+    """r414 F5: d(2) = 1/4 exactly for near 1, far 3: z_min's own Δz, 2^-25 (1 − n/f) z_min²/n,
+    is the coarsest, as the task's rule (the step above a stored 2^e) and 200,001 depths say."""
+    setting = (2.0, 2.2, 1.0, 3.0)
+    assert rzw.reversed_depth(2.0, 1.0, 3.0) == 0.25
+    expected = rzw.expected_worst(*setting)
+    assert expected == 2.0**-25 * (1 - 1 / 3) * 4.0 == sol.reverse_z_gap(2.0, 1.0, 3.0)
+    assert rzw.worst(*setting)[0] == 2.0
+    assert expected * (1 - 2e-5) <= rzw.brute_worst(*setting) <= expected * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("count", [1001, 2001, 10001])
+def test_an_evenly_spaced_search_fails_a_fixed_case(count):
+    """r414 F2: 1,001 (and up to 10,001) evenly spaced depths passed every case at 0.5 %."""
+    short = [
+        s
+        for s in rzw.SETTINGS
+        for z in [np.linspace(s[0], s[1], count)]
+        if max(sol.reverse_z_gap(x, *s[2:]) for x in z) < rzw.expected_worst(*s) * (1 - rzw.BELOW)
+    ]
+    assert len(short) >= 3, short
+
+
+def test_a_search_just_short_is_no_slip_of_5_2():
+    """r414 F1: "infinite far" gives the answer itself where n/f ≪ 1: a search 1 % short was
+    told "you dropped the far plane", with the answer printed as the slip's value."""
+    setting = (100.0, 900.0, 0.1, 1000.0)
+    expected = rzw.expected_worst(*setting)
+    for got in (expected * 0.99, expected * 0.995, expected * 0.9999):
+        assert rzw.gap_slip(setting, got, expected) is None, got
+
+
+def test_d_in_float32_at_the_worst_crossing_fails_a_fixed_case():
+    """r414 F4: on (300, 505, 40.8, 549) d computed in float32 at the worst crossing rounds to
+    just under 2^-4 (np.spacing: the step below), on every run, not on 1 draw in 15."""
+    s = (300.0, 505.0, 40.8, 549.0)
+    assert s in rzw.SETTINGS
+    z_w = rzw.worst(*s)[0]
+    f = np.float32
+    d = (f(s[2]) / f(z_w) - f(s[2]) / f(s[3])) / (f(1) - f(s[2]) / f(s[3]))
+    assert d < 2.0**-4 and np.float32(rzw.reversed_depth(z_w, *s[2:])) == 2.0**-4
+
+
+def test_5_2s_passing_figure_is_not_at_5_2bs_planes():
+    """r414 F3: a passing 5.2 drew its first case, z = 300 at near 0.1, far 1000: the sawtooth
+    over z 75 to 1000 answered 5.2b's prediction (lesson 05b's planes) a cell early."""
+    from teachraster.exercises.reverse_z import REVERSE_Z_GAP, gap_cases
+
+    _, (_, near, far), _ = gap_cases()[REVERSE_Z_GAP.example]
+    assert (near, far) != (0.1, 1000.0)
+
+
+def test_the_teachers_solution_takes_z_min_on_a_crossing():
+    """r414 F5: the solution follows the task's rule at z_min too."""
+    assert sol.reverse_z_worst(2.0, 2.2, 1.0, 3.0) == rzw.expected_worst(2.0, 2.2, 1.0, 3.0)

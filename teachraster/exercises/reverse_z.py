@@ -398,6 +398,9 @@ def _zoom(ax, args, band, expected, got) -> list:
 REVERSE_Z_GAP = Exercise(
     "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
     variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
+    # r414 F3: a pass draws z = 5 at near 1, far 10: at lesson 05b's planes (the first case)
+    # its sawtooth over z 75 to 1000 answered 5.2b's prediction, a cell before 5.2b asks it
+    example=7,
     # float32's rounding is relative to Δz itself (1e-8 and less), not to 1 (r325 C3: floored
     # at 1, a slope slip 11 % off and 6× errors were called float32's rounding)
     float32=lambda args: expected_gap(*args), float32_floor=0.0,

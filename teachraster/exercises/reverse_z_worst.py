@@ -36,6 +36,7 @@ from .package_answers import CHECKER_WORDS
 from .report import NOTHING_DRAWN_FOR
 from .reverse_z import MISTAKES as GAP_MISTAKES
 from .reverse_z import gap_variants, gives_same_gap, reversed_depth_slope
+from .running import WrongAnswerType
 from .scalars import num
 
 #: (z_min, z_max, near, far): lesson 05b's planes over most of the scene (the worst depth
@@ -48,12 +49,19 @@ SETTINGS = (
     (2.0, 4.0, 1.0, 10.0), (500.0, 3000.0, 0.5, 1e4), (1.0, 999.0, 0.1, 1000.0),
     (600.0, 990.0, 0.1, 1000.0), (150.0, 290.0, 0.1, 1000.0), (120.0, 130.0, 0.1, 1000.0),
     (1.2, 1.6, 1.0, 2.0),
+    # r414 F2: the worst crossing lies between any uniform grid's samples up to 10,001 (and a
+    # geometric one's of 1,000), and the sample just nearer than it is > BELOW short; F4: at
+    # the worst crossing of the last, d computed in float32 rounds to just under 2^-4
+    (1.77, 24.7, 0.000138, 25.0), (406.0, 14200.0, 2.79, 15100.0), (258.0, 5340.0, 70.0, 5410.0),
+    (300.0, 505.0, 40.8, 549.0),
 )  # fmt: skip
 
 #: How much coarser than the coarsest Δz an answer may be (rounded up, it is still resolved).
 SLACK = 0.01
-#: How much finer: a search over depths falls short of the limit at an edge by 2 δz/z_e.
-BELOW = 0.005
+#: How much finer: a search over depths falls short of the limit at an edge by 2 δz/z_e
+#: (r414 F2: at 0.5 %, 1,001 uniform samples always came within it; the worst edge z_e is at
+#: most 2.41 times the range's width from z_max, so δz ≤ 2.41 z_e/1000).
+BELOW = 0.0001
 
 
 def binade_step(d: float) -> float:
@@ -66,15 +74,16 @@ def binade_step(d: float) -> float:
 
 
 def edges(z_min: float, z_max: float, near: float, far: float) -> list[tuple[int, float]]:
-    """(e, z_e) for each depth z_min < z_e ≤ z_max where d = 2^e, farthest first."""
+    """(e, z_e) for each depth z_min ≤ z_e ≤ z_max where d = 2^e, farthest first (r414 F5:
+    z_min on a crossing counts: the task takes the binade above a stored 2^e)."""
     span = 1 - near / far
     top = int(np.floor(np.log2(float(reversed_depth(z_min, near, far)))))
     low = int(np.ceil(np.log2(float(reversed_depth(z_max, near, far)))))
     out = []
     for e in range(low, top + 1):
         z_e = near / (2.0**e * span + near / far)
-        if z_min < z_e <= z_max * (1 + 1e-12):
-            out.append((e, min(z_e, z_max)))
+        if z_min * (1 - 1e-12) <= z_e <= z_max * (1 + 1e-12):
+            out.append((e, min(max(z_e, z_min), z_max)))
     return out
 
 
@@ -137,6 +146,17 @@ def _drawn(rng) -> tuple[float, float, float, float]:
             return s
 
 
+def as_gap(value):
+    """One number, as :func:`.answers.as_number`, but not inside an array (r414 F7: an array
+    of shape (1,) passed, where the docs promise shapes must match)."""
+    if isinstance(value, np.ndarray) and value.ndim > 0:
+        raise WrongAnswerType(
+            f"returned an array of shape {value.shape} where one number is expected: return "
+            "the number itself (float(...) of it)"
+        )
+    return as_number(value)
+
+
 def same_worst(got, expected, args=None) -> bool:
     """Within :data:`BELOW` under and :data:`SLACK` over the coarsest Δz."""
     if not np.isfinite(got):
@@ -156,11 +176,15 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
     peak = min(max(far / 2, z_min), z_max)
     return {
         "z_max only": cands[0][1],
+        "twice z_max's": 2 * cands[0][1],
         "z_min only": at_min,
         "both ends": max(cands[0][1], at_min),
         "last edge": max(dz for _, dz in cands[:2]),
         "edges only": max((dz for _, dz in cands[1:]), default=0.0),
         "step below at edges": max(dz for _, dz in below),
+        "twice the step at edges": max(
+            dz * (1 if z == z_max and k == 0 else 2) for k, (z, dz) in enumerate(cands)
+        ),
         "bound 2^-23": 2.0**-23 * peak * (1 - peak / far),
         "bound 2^-24": 2.0**-24 * peak * (1 - peak / far),
         "bound at z_max": 2.0**-23 * z_max * (1 - z_max / far),
@@ -197,6 +221,8 @@ _BETWEEN = ("Between them d crosses powers of two, and just nearer than each cro
 
 MISTAKES = {
     "z_max only": _z_max_words,
+    "twice z_max's": ": that is twice z_max's own Δz: doubling the gap at z_max guesses at "
+    "the range. Where in the range can a coarser Δz than z_max's lie, and how much coarser?",
     "z_min only": ": you evaluated the gap at z_min only, the nearest depth: Δz grows with z "
     f"within each binade of d, so the coarsest lies farther{_LATER[0]}",
     "both ends": f": you compared the two ends of the range only. {_BETWEEN[0]}",
@@ -209,6 +235,9 @@ MISTAKES = {
     "the step below it, 2^(e−24), the one towards farther depths (the stored 2^e's nearer "
     "neighbour, or np.spacing of d rounded down first). Just nearer than that depth d lies in the binade "
     "above, whose step is 2^(e−23): the coarsest Δz is that limit",
+    "twice the step at edges": ": at each depth where d is exactly a power of two 2^e you "
+    "took the step 2^(e−22), twice the binade's: d's binade [2^e, 2^(e+1)) steps by 2^(e−23), "
+    "as np.spacing of 2^e says",
     "bound 2^-23": ": you took the bound 2^-23 z (1 − z/f) (d over its slope) at its largest "
     "in the range: it is reached only where d is a power of two, so the true worst is the "
     "largest over those depths and z_max, not over every z",
@@ -235,7 +264,11 @@ def _edge_rounded_below(args, expected, got) -> bool:
         return False
     below = [dz for z, dz in candidates(*args, edge_step=-24) if z == z_w][0]
     rest = [dz for z, dz in candidates(*args) if z != z_w]
-    return bool(below >= max(rest) and abs(got - below) <= 0.01 * below)
+    # r414 F4: or no other candidate's (d rounded under in float32 at every crossing)
+    other = any(abs(got - dz) <= 1e-3 * dz for dz in rest)
+    if below < max(rest):  # then exactly (2 × z_max's Δz, 0.3 % off, is no such d)
+        return bool(not other and abs(got - below) <= 1e-6 * below)
+    return bool(abs(got - below) <= 0.01 * below)
 
 
 EDGE_BELOW = Mistake(
@@ -267,6 +300,32 @@ Z_MAX_HERE = Mistake(
 )  # fmt: skip
 
 
+def _other_crossing(args, expected, got) -> tuple[float, int] | None:
+    """(z, e) of a crossing inside the range, not the worst, whose limit Δz ``got`` is (±1e-6);
+    None: none (r414: a worst crossing skipped, or its d rounded under in float32, left the
+    next one's Δz, which was told "a search over sampled depths")."""
+    if not np.isfinite(got):
+        return None
+    z_w = worst(*args)[0]
+    for (z, dz), (e, _) in zip(candidates(*args)[1:], edges(*args)):
+        if z != z_w and abs(got - dz) <= 1e-6 * dz:
+            return z, e
+    return None
+
+
+OTHER_CROSSING = Mistake(
+    "another crossing's",
+    lambda a, e, g: (
+        f": that is the Δz just nearer than z = {num(_other_crossing(a, e, g)[0])}, where d "
+        f"falls to 2^{_other_crossing(a, e, g)[1]}: a crossing of this range, but not its "
+        "coarsest; another depth where d crosses a power of two is coarser. Did your loop skip "
+        "it, or did d there come out just under the power of two (np.spacing then gives the "
+        "step below, half the binade's)?"
+    ),
+    fits=lambda a, e, g: _other_crossing(a, e, g) is not None,
+)
+
+
 def _too_fine(args, expected, got) -> bool:
     """A search over depths that missed the edge: finer than the coarsest, coarser than z_max,
     and the depth whose limit Δz that is (Δz grows like z² in the worst depth's binade) lies
@@ -275,18 +334,26 @@ def _too_fine(args, expected, got) -> bool:
     at_max = candidates(*args)[0][1]
     if not (np.isfinite(got) and at_max < got < expected * (1 - BELOW)):
         return False
+    if _other_crossing(args, expected, got) is not None:
+        return False  # another crossing's limit exactly: a skipped crossing, not a search
     z_w = worst(*args)[0]
     z_s = z_w * np.sqrt(got / expected)
     return bool(z_s > args[0] and z_w - z_s <= 0.05 * (args[1] - args[0]))
 
 
-SEARCH = Mistake(
-    "search missed the edge",
-    ": your Δz lies between z_max's and the coarsest: a search over sampled depths that "
-    "stopped short of the depth where d crosses a power of two? Δz jumps there (the step "
-    "halves), so the coarsest is the limit just nearer than it: sample it, or compute it",
-    fits=_too_fine, symptom=True,
-)  # fmt: skip
+def _search_words(args, expected, got) -> str:
+    """r414 F2: where the coarsest step lies, and the depth the student's samples reached."""
+    z_w = worst(*args)[0]
+    e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
+    z_s = z_w * np.sqrt(got / expected)
+    return (f": your Δz lies between z_max's and the coarsest: a search over sampled depths? "
+            f"The coarsest step lies just nearer than z = {num(z_w)}, where d falls to 2^{e}; "
+            f"your samples stopped at about z = {num(z_s, z_w)} in that binade (Δz grows like "
+            "z² there). Δz jumps there (the step halves), so the coarsest is the limit just "
+            "nearer than it: compute it at each such depth rather than sample")  # fmt: skip
+
+
+SEARCH = Mistake("search missed the edge", _search_words, fits=_too_fine, symptom=True)
 
 #: 5.2's slips that 5.2b can carry over (r404 F3): each changes Δz by far more than the band.
 GAP_SLIPS = ("float64", "window depth", "float16", "step above 1", "step in depth",
@@ -303,12 +370,20 @@ def _depths(z_min, z_max, near, far) -> list[float]:
                   if z_min < near / 2.0**e * (1 - 1e-6) <= z_max]  # fmt: skip
 
 
-def gap_slip(args, got) -> tuple[str, float] | None:
+#: How far under a slip's largest Δz an answer may fall and still be that slip: a search over
+#: 2,001 or more samples of it falls this short at most (δz ≤ 2.41 z_e/2000, as for the answer).
+SLIP_BELOW = 0.005
+
+
+def gap_slip(args, got, expected=None) -> tuple[str, float] | None:
     """(5.2's slip, what it gives) whose largest Δz over the range's depths is ``got`` within
-    2 % (a search over samples falls a little short), the nearest such (the first of
-    :data:`GAP_SLIPS` among equals); None: none."""
+    :data:`SLIP_BELOW` under and :data:`SLACK` over it, the nearest such (the first of
+    :data:`GAP_SLIPS` among equals); None: none. A slip whose Δz lies that close to
+    ``expected`` is never one (r414 F1: with n/f ≪ 1 "infinite far" gives the answer itself,
+    and at 2 % every sampled search 1 % short was told "you dropped the far plane")."""
     if not np.isfinite(got) or got == 0:
         return None
+    near_to = lambda x, dz: dz * (1 - SLIP_BELOW) <= x <= dz * (1 + SLACK)  # noqa: E731
     found = {}
     for z in _depths(*args):
         for kind, dz in gap_variants(z, *args[2:]).items():
@@ -317,36 +392,46 @@ def gap_slip(args, got) -> tuple[str, float] | None:
                     found.get(kind, np.inf), dz)  # fmt: skip
     near = [(round(abs(got / dz - 1), 3), GAP_SLIPS.index(kind), kind, dz)
             for kind, dz in found.items() if dz != 0]  # fmt: skip
-    near = [n for n in near if n[0] <= 0.02]
+    near = [n for n in near if near_to(got, n[3])]
+    if expected is not None:
+        near = [n for n in near if not near_to(n[3], expected)]
     return min(near)[2:] if near else None
 
 
 def _gap_slip_words(args, expected, got) -> str:
-    kind, dz = gap_slip(args, got)
+    kind, dz = gap_slip(args, got, expected)
     words = GAP_MISTAKES[kind]
     return (
-        f": that is what one of 5.2's slips gives at this range's coarsest depths "
-        f"({dz:.3g}): {words}. Check your reverse_z_gap with 5.2's check first"
+        f": yours, {num(got)}, is what one of 5.2's slips gives at this range's coarsest "
+        f"depths ({num(dz)}): {words}. Check your reverse_z_gap with 5.2's check first"
     )
 
 
 # ``gives`` says nothing (None), but marks a cause the checker computes (5.2's own slips, run
 # at the range's depths), so its words may name float64 or float16 (diagnosis's rule for them)
 GAP_SLIP = Mistake("5.2's slip", _gap_slip_words, gives=lambda *a: None,
-                   fits=lambda a, e, g: gap_slip(a, g) is not None)  # fmt: skip
+                   fits=lambda a, e, g: gap_slip(a, g, e) is not None)  # fmt: skip
 
 
 def _ratio_words(args, expected, got) -> str:
     c = got / expected
     why = {0.5: " (exactly half: the step below d, 2^(e−24), where the binade's step is "
                 "2^(e−23)? Or half of your reverse_z_gap?)",
-           2.0: " (exactly twice: two steps, or a step twice the binade's?)"}  # fmt: skip
+           2.0: " (exactly twice: two steps, or a step twice the binade's, 2^(e−22) where d "
+                "is in [2^e, 2^(e+1))?)"}  # fmt: skip
     said = next((w for k, w in why.items() if abs(c - k) <= 1e-3 * k), "")
     return f": your answer is {_times(c)} × the coarsest on every case{said}"
 
 
-RATIO = Mistake("constant ratio", _ratio_words,
-                fits=lambda a, e, g: bool(np.isfinite(g)) and g > 0 and not same_worst(g, e),
+def _off_by_a_factor(args, expected, got) -> bool | None:
+    """A factor ≠ 1 beyond a search's shortfall (2 %); None (nothing said) on a passing case,
+    so a case whose answer is right does not hide a factor on every failing one (r414 F6)."""
+    if same_worst(got, expected):
+        return None
+    return bool(np.isfinite(got) and got > 0 and abs(got / expected - 1) > 0.02)
+
+
+RATIO = Mistake("constant ratio", _ratio_words, fits=_off_by_a_factor,
                 parameter=lambda a, e, g: g / e, only_whole=True)  # fmt: skip
 RANGE = Mistake("range", ": a gap is a positive distance",
                 fits=lambda a, e, g: bool(np.isfinite(g)) and g <= 0, symptom=True)  # fmt: skip
@@ -368,6 +453,8 @@ def explain_worst(args, expected, got) -> str:
 
 def _times(r: float) -> str:
     """A ratio in 3 significant digits, a power of ten written out (no 17-digit echo)."""
+    if r < 1.01:  # r414: "1 times too fine" for a search 0.05 % short
+        return f"{r:.5g}"
     if r < 1000:
         return f"{r:.3g}"
     k = int(np.floor(np.log10(r)))
@@ -425,8 +512,8 @@ def draw_worst(ax, case, got):
 
 
 REVERSE_Z_WORST = Exercise(
-    "reverse_z_worst", worst_cases, as_number, same_worst, explain_worst, _rule,
-    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, Z_MAX_HERE, GAP_SLIP, FINEST_SAMPLED, RATIO,
+    "reverse_z_worst", worst_cases, as_gap, same_worst, explain_worst, _rule,
+    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, Z_MAX_HERE, OTHER_CROSSING, GAP_SLIP, FINEST_SAMPLED, RATIO,
     SEARCH, RANGE)), draw=draw_worst,
     match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
     answers=(
