@@ -925,16 +925,30 @@ def _ties_off(args, got) -> list[tuple[str, int, Fraction]] | None:
     """(end name, the student's end, the exact crossing) of each end that differs from the
     exact one, where every such end lies one column right of it on a crossing exactly on a
     centre (None: another difference, or none)."""
+
+    def one_right_on_a_centre(name, end, right, x):
+        return (name, end, x) if end == right + 1 and (x - HALF).denominator == 1 else None
+
+    return _ends_off(args, got, one_right_on_a_centre)
+
+
+def _ends_off(args, got, judge) -> list | None:
+    """``judge(name, end, right, x)`` of each end of the student's span that differs from the
+    exact one ``right`` (x: the exact crossing), in the order first, stop; None when the answer
+    is no span, the row runs along a horizontal edge, an end differs otherwise (``judge``
+    returned None), or no end differs."""
     xy, row = args
     pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
     if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
         return None
     off = []
     for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
-        if end != math.ceil(x - HALF):
-            if end != math.ceil(x - HALF) + 1 or (x - HALF).denominator != 1:
+        right = math.ceil(x - HALF)
+        if end != right:
+            entry = judge(name, end, right, x)
+            if entry is None:
                 return None
-            off.append((name, end, x))
+            off.append(entry)
     return off or None
 
 
@@ -1055,19 +1069,14 @@ def _landed_off(args, got) -> list[tuple[str, int, Fraction, Fraction]] | None:
     steps of that centre but not on it (r403 P7: a hair right of it, float64 lands on it and
     the end moves left; a hair left, a float computation that lands past it moves it right).
     None: another difference, or none."""
-    xy, row = args
-    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
-    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
-        return None
-    off = []
-    for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
-        right = math.ceil(x - HALF)
-        if end != right:
-            centre = Fraction(min(end, right)) + HALF
-            if abs(end - right) != 1 or not _within_float64(x, centre):
-                return None
-            off.append((name, end, x, centre))
-    return off or None
+
+    def one_off_near_a_centre(name, end, right, x):
+        centre = Fraction(min(end, right)) + HALF
+        if abs(end - right) != 1 or not _within_float64(x, centre):
+            return None
+        return (name, end, x, centre)
+
+    return _ends_off(args, got, one_off_near_a_centre)
 
 
 def _within_float64(x: Fraction, centre: Fraction) -> bool:
@@ -1122,18 +1131,13 @@ def _float64_words(args, expected, got) -> str:
 def _near_off(args, got) -> list[tuple[str, int, Fraction]] | None:
     """Each end one column left of the exact one, where the crossing lies a hair (under
     10^-5 px) right of a centre, not on it (None: another difference, or none)."""
-    xy, row = args
-    pair, cross = _returned(got), crossings(xy, Fraction(2 * row + 1, 2))
-    if pair is None or cross is None or _horizontal_edge(xy, row + 0.5):
-        return None
-    off = []
-    for name, end, x in (("first", pair[0], cross[0]), ("stop", pair[1], cross[1])):
-        right = math.ceil(x - HALF)
-        if end != right:
-            if end != right - 1 or not 0 < x - (end + HALF) < Fraction(1, 10**5):
-                return None
-            off.append((name, end, x))
-    return off or None
+
+    def one_left_a_hair_right(name, end, right, x):
+        if end != right - 1 or not 0 < x - (end + HALF) < Fraction(1, 10**5):
+            return None
+        return (name, end, x)
+
+    return _ends_off(args, got, one_left_a_hair_right)
 
 
 def _epsilon_fits(args, expected, got) -> bool:
