@@ -142,8 +142,9 @@ def one_minus_window(z, near, far, all_float32: bool = True) -> float:
     return float(np.float32(1) - np.float32(win))
 
 
-def _variants(z, near, far) -> dict[str, float]:
-    """The Δz typical slips give (each one change)."""
+def gap_variants(z, near, far) -> dict[str, float]:
+    """The Δz typical slips give (each one change), 5.2's and, at the coarsest depth, 5.2b's
+    (:mod:`.reverse_z_worst`: r404 F3, the student's own 5.2 slip carried over)."""
     d = float(reversed_depth(z, near, far))
     slope = reversed_depth_slope(z, near, far)
     step = _nearer_step(d)
@@ -183,10 +184,6 @@ def _variants(z, near, far) -> dict[str, float]:
         "1 - n/f inverted": step / slope / (1 - near / far) ** 2,
     }
 
-
-#: The Δz 5.2's slips give at one depth, for 5.2b (:mod:`.reverse_z_worst`: r404 F3, the
-#: student's own 5.2 slip carried over to the coarsest depth).
-gap_variants = _variants
 
 _RELATIVE = ("you took a fixed share of d as float32's step (its relative precision, "
              "2^-23 or 2^-24 of d): within a binade [2^e, 2^(e+1)) every step is the same, "
@@ -397,7 +394,7 @@ def _zoom(ax, args, band, expected, got) -> list:
 
 REVERSE_Z_GAP = Exercise(
     "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
-    variant_mistakes(_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
+    variant_mistakes(gap_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
     # r414 F3: a pass draws z = 5 at near 1, far 10: at lesson 05b's planes (the first case)
     # its sawtooth over z 75 to 1000 answered 5.2b's prediction, a cell before 5.2b asks it
     example=7,
