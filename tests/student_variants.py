@@ -6373,3 +6373,168 @@ R414_FACTOR = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R414_FACTOR.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R414_FACTOR.items()})
+
+
+# == r422: exercise 6's tie rules with a tolerance, one edge deciding, decimal grids, curves ====
+def _r422_coverage(test, snap=None):
+    """A student's coverage_fraction: vertices snapped (``snap``, else to 1/256 half to even),
+    turned clockwise on screen, each sample decided by ``test(e, owns)`` over the three E."""
+
+    def coverage_fraction(xy, pixel, samples):
+        v = np.asarray(xy, float)
+        v = snap(v) if snap is not None else np.rint(v * 256) / 256
+        area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+        if area == 0:
+            return 0.0
+        if area < 0:
+            v = v[[0, 2, 1]]
+        row, col = pixel
+        p = np.asarray(samples, float) + [col, row]
+        e, owns = [], []
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e.append((b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0]))
+            owns.append(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
+        return float(np.mean(test(np.array(e), np.array(owns))))
+
+    return coverage_fraction
+
+
+def _r422_tolerance(eps_own, eps_other):
+    return lambda e, o: np.all(np.where(o[:, None], e >= -eps_own, e > eps_other), axis=0)
+
+
+def _r422_exact(e, o):
+    return np.all(np.where(o[:, None], e >= 0, e > 0), axis=0)
+
+
+def _r422_first_zero(e, o):
+    """Per sample: the first edge with E < 0 rules it out, the first with E = 0 decides."""
+    out = []
+    for s in range(e.shape[1]):
+        verdict = True
+        for k in range(3):
+            if e[k, s] <= 0:
+                verdict = bool(e[k, s] == 0 and o[k])
+                break
+        out.append(verdict)
+    return np.array(out)
+
+
+def _r422_either_owner(e, o):
+    zero = e == 0
+    return (e >= 0).all(axis=0) & (~zero.any(axis=0) | (zero & o[:, None]).any(axis=0))
+
+
+def _r422_isclose(e, o):
+    tie = np.isclose(e, 0, atol=1e-3)
+    return np.all(np.where(o[:, None], (e >= 0) | tie, (e > 0) & ~tie), axis=0)
+
+
+def _r422_resolve_power(g):
+    def resolve(sample_colours, sample_ids, background):
+        c = np.where((np.asarray(sample_ids) >= 0)[:, None], np.nan_to_num(sample_colours),
+                     background)  # fmt: skip
+        return (c**g).mean(axis=0) ** (1 / g)
+
+    return resolve
+
+
+def _r422_resolve_share_squared(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    a = (ids >= 0).mean()
+    covered = np.nanmean(sample_colours, axis=0) if a > 0 else np.zeros(3)
+    return a * covered * a + (1 - a) * np.asarray(background, float)
+
+
+def _r422_dec(threshold=0.04045):
+    def dec(c):
+        c = np.asarray(c, float)
+        return np.where(
+            c <= threshold, c / 12.92, ((np.maximum(c, threshold) + 0.055) / 1.055) ** 2.4
+        )
+
+    return dec
+
+
+def _r422_enc(threshold=0.0031308, offset=0.055):
+    def enc(x):
+        x = np.asarray(x, float)
+        return np.where(
+            x <= threshold, 12.92 * x, 1.055 * np.maximum(x, threshold) ** (1 / 2.4) - offset
+        )
+
+    return enc
+
+
+def _r422_srgb(dec, enc, codes=None):
+    def resolve_srgb(sample_colours, sample_ids, background):
+        m = (np.asarray(sample_ids) >= 0)[:, None]
+        c = np.where(m, np.nan_to_num(sample_colours), background)
+        c = codes(c) if codes is not None else c
+        out = enc(dec(c).mean(axis=0))
+        return codes(out) if codes is not None else out
+
+    return resolve_srgb
+
+
+def _r422_8bit(x):
+    return np.round(np.asarray(x, float) * 255) / 255
+
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R422 = {
+    "coverage with a tolerance of 1e-3 on E": (
+        "coverage_fraction", _r422_coverage(_r422_tolerance(1e-3, 1e-3)), "a tolerance on E",
+        "tolerance on E"),
+    "coverage with np.isclose(E, 0, atol=1e-3) as the tie test": (
+        "coverage_fraction", _r422_coverage(_r422_isclose), "a tolerance on E", "tolerance on E"),
+    "coverage with E > 1/65536 on the edges that do not own": (
+        "coverage_fraction", _r422_coverage(_r422_tolerance(0.0, 1 / 65536)), "a tolerance on E",
+        "tolerance on E"),
+    "coverage with a tolerance of 1e-2 on E": (
+        "coverage_fraction", _r422_coverage(_r422_tolerance(1e-2, 1e-2)), "a tolerance on E",
+        "tolerance on E"),
+    "coverage with a tolerance of 0.03 on E": (
+        "coverage_fraction", _r422_coverage(_r422_tolerance(0.03, 0.03)), "a tolerance on E",
+        "tolerance on E"),
+    "coverage with a tolerance of 0.1 on E": (
+        "coverage_fraction", _r422_coverage(_r422_tolerance(0.1, 0.1)), "a tolerance on E",
+        "tolerance on E"),
+    "coverage where the first edge at E = 0 decides": (
+        "coverage_fraction", _r422_coverage(_r422_first_zero), "first edge with E = 0 decide",
+        "tie decided by one edge"),
+    "coverage covering a vertex either edge owns": (
+        "coverage_fraction", _r422_coverage(_r422_either_owner), "if either edge owns it",
+        "vertex owned by either edge"),
+    "coverage rounded to 2 decimals": (
+        "coverage_fraction", _r422_coverage(_r422_exact, snap=lambda v: np.round(v, 2)),
+        "rounded the vertices to 2 decimal places", "decimal rounding"),
+    "coverage rounded to 3 decimals": (
+        "coverage_fraction", _r422_coverage(_r422_exact, snap=lambda v: np.round(v, 3)),
+        "rounded the vertices to 3 decimal places", "decimal rounding"),
+    "resolve as a mean of 2.2 powers": (
+        "resolve", _r422_resolve_power(2.2), "raised to the power 2.2", "mean of powers"),
+    "resolve with the covered share squared": (
+        "resolve", _r422_resolve_share_squared, "a² = (", "covered share squared"),
+    "resolve_srgb encoded by a power 1/2.2": (
+        "resolve_srgb", _r422_srgb(_r422_dec(), lambda x: np.asarray(x, float) ** (1 / 2.2)),
+        "encoded the mean with a plain power 1/2.2", "encode by a power"),
+    "resolve_srgb by a square and a square root": (
+        "resolve_srgb", _r422_srgb(lambda c: np.asarray(c, float) ** 2, np.sqrt),
+        "by squaring", "power 2"),
+    "resolve_srgb with the encode's threshold 0.04045": (
+        "resolve_srgb", _r422_srgb(_r422_dec(), _r422_enc(0.04045)),
+        "straight part ends at 0.04045", "curve thresholds swapped"),
+    "resolve_srgb with the decode's threshold 0.0031308": (
+        "resolve_srgb", _r422_srgb(_r422_dec(0.0031308), _r422_enc()),
+        "straight part ends at 0.0031308", "curve thresholds swapped"),
+    "resolve_srgb without the encode's − 0.055": (
+        "resolve_srgb", _r422_srgb(_r422_dec(), _r422_enc(offset=0.0)),
+        "leaves out the − 0.055", "encode without its offset"),
+    "resolve_srgb on 8-bit codes": (
+        "resolve_srgb", _r422_srgb(_r422_dec(), _r422_enc(), codes=_r422_8bit),
+        "8-bit codes", "8-bit codes"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R422.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R422.items()})

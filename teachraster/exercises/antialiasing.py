@@ -14,6 +14,7 @@ decides, and compare the answer with what typical mistakes give.
 
 from __future__ import annotations
 
+import functools
 from types import SimpleNamespace
 
 import numpy as np
@@ -53,9 +54,12 @@ def expected_fraction(xy, pixel, samples) -> float:
 
 
 def sample_points(pixel, samples) -> np.ndarray:
-    """(S, 2) positions of the samples of ``pixel`` = (row, col): (col + ox, row + oy)."""
+    """(S, 2) positions of the samples of ``pixel`` = (row, col): (col + ox, row + oy), each
+    offset on the renderer's 1/512 px grid (r422 C1: it rounds any other offset there, half
+    to even, and never past the pixel's last grid line, as ``offsets_in_units`` does)."""
     row, col = pixel
-    return np.asarray(samples, dtype=float) + np.array([col, row], dtype=float)
+    offsets = np.minimum(np.rint(np.asarray(samples, dtype=float) * 512), 511) / 512
+    return offsets + np.array([col, row], dtype=float)
 
 
 def covered_samples(xy, points) -> np.ndarray:
@@ -125,6 +129,26 @@ def _coverage_cases(rng, word):
         # (half to even) onto it, where the edge owns it
         ("a sample 1/512 px left of a left edge (samples are not snapped)",
          [[2.375, -1], [6, 1.5], [2.375, 5]], (1, 2), [[0.375 - 1 / 512, 0.125]]),
+        # r422 WP1: E's smallest sizes on the grid, just outside an owning edge and just
+        # inside one that does not own (a tolerance on E, np.isclose, a 1/65536 bias passed)
+        ("near a tie: a sample 1/512 px left of a short left edge",
+         [[2.375, 1], [3, 1.125], [2.375, 1.25]], (1, 2), [[0.375 - 1 / 512, 0.125]]),
+        ("near a tie: a sample 1/512 px inside a 1/128 px right edge",
+         [[2.375, 1.125], [2.375, 1.1328125], [2.25, 1.125]], (1, 2),
+         [[0.375 - 1 / 512, 0.125 + 1 / 512]]),
+        ("near a tie: a sample 1/512 px above a 1/256 px top edge (E = −1/131072)",
+         [[2.375, 1.125], [2.375 + 1 / 256, 1.125], [2.375, 1.125 + 1 / 256]], (1, 2),
+         [[0.375 + 1 / 512, 0.125 - 1 / 512]]),
+        ("near a tie: a sample 1/512 px above a 1/256 px bottom edge (E = 1/131072)",
+         [[2.375, 1], [2.375 + 1 / 256, 1.125], [2.375, 1.125]], (1, 2),
+         [[0.375 + 1 / 512, 0.125 - 1 / 512]]),
+        # r422 WP2: a vertex where a top edge meets a right one (either owner passed), and a
+        # sample on a top edge's line past its end, outside the right edge (the first edge
+        # at E = 0 deciding passed)
+        ("a sample on the vertex of a top and a right edge",
+         [[0, 1.125], [2.375, 1.125], [1, 3]], (1, 2), [[0.375, 0.125]]),
+        ("a sample on a top edge's line, past its end",
+         [[0, 1.125], [2.5, 1.125], [1, 3]], (1, 2), [[0.875, 0.125]]),
         ("zero area through the samples", [[2.375, 1.125], [2.875, 1.375], [3.375, 1.625]], (1, 2), four),  # fmt: skip
         ("one sample at the centre, on an edge", [[2.5, 0], [6, 3], [2.5, 6]], (1, 2), sample_pattern(1)),  # fmt: skip
         ("2 samples, a diagonal through both", [[0, 0], [8, 8], [0, 8]], (1, 1), sample_pattern(2)),
@@ -197,6 +221,10 @@ SNAPPING = {
 GRIDS = (0, 4, 6, 7, 9)
 SNAPPING.update({f"{b} bits": (lambda xy, b=b: np.rint(np.asarray(xy, float) * 2**b) / 2**b)
                  for b in GRIDS})  # fmt: skip
+#: r422 MN2: decimal places a student may round to (np.round(xy, 2): 2.375 → 2.38).
+DECIMALS = (1, 2, 3, 4)
+SNAPPING.update({f"{d} decimals": (lambda xy, d=d: np.round(np.asarray(xy, float), d))
+                 for d in DECIMALS})  # fmt: skip
 
 
 def _snapped_samples_words(args, expected, got) -> str:
@@ -341,7 +369,6 @@ COVERAGE_KNOBS = Knobs(fraction_with, {
 #: r293 MN1, HN4: slips named alone, never combined with the others (each combination is
 #: one more run of every case: the check's CPU)
 ALONE_KNOBS = Knobs(fraction_with, {
-    "snapping": [Slip("another snapping grid", _grid_words(b), f"{b} bits") for b in GRIDS],
     "winding": [
         # r293 MN2: told "you cover the samples on top edges and leave out … left and right"
         Slip("tie rule before turning", "this triangle runs counter-clockwise on screen: you "
@@ -350,7 +377,6 @@ ALONE_KNOBS = Knobs(fraction_with, {
              "bottom); decide them on the edges as they run once the triangle is turned "
              "(swap two vertices first)", "ties unturned"),
     ],
-    "points": [Slip("samples snapped", _snapped_samples_words, "snapped")],
     "count": [
         Slip("percentage", "that is a percentage (100 × the fraction); return the fraction "
              "itself, between 0 and 1", "percent"),
@@ -366,7 +392,173 @@ TIE_KNOBS = Knobs(
     most=1,
 )
 
-COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS]
+
+# -- r422 WP1, WP2, MN1, MN2: a tolerance on E, a tie decided by one edge, decimal grids ------
+def _oriented(xy) -> tuple[np.ndarray, list[bool]]:
+    """The snapped vertices turned clockwise on screen, and whether each edge owns its ties."""
+    v = snap(np.asarray(xy, dtype=float))
+    if float(edge_function(v[0], v[1], v[2])) < 0:
+        v = v[[0, 2, 1]]
+    return v, [kind_of(v[k], v[(k + 1) % 3]) in TOP_LEFT for k in range(3)]
+
+
+def _edge_table(xy, pixel, samples) -> tuple[np.ndarray, list[bool], float]:
+    """E of each oriented edge at each sample (3, S), exact, which edges own, the area."""
+    v, own = _oriented(xy)
+    points = sample_points(pixel, samples)
+    e = np.array([edge_function(v[k], v[(k + 1) % 3], points) for k in range(3)], dtype=float)
+    return e, own, float(edge_function(v[0], v[1], v[2]))
+
+
+def fraction_within(xy, pixel, samples, eps_own: float, eps_other: float) -> float:
+    """The fraction with a tolerance on E: E ≥ −eps_own on owning edges, E > eps_other on the
+    others (np.isclose(E, 0, atol=ε) as the tie test is eps_own = eps_other = ε)."""
+    e, own, area = _edge_table(xy, pixel, samples)
+    if area == 0:
+        return 0.0
+    inside = np.ones(e.shape[1], dtype=bool)
+    for k in range(3):
+        inside &= (e[k] >= -eps_own) if own[k] else (e[k] > eps_other)
+    return float(inside.mean())
+
+
+def _tolerances(xy, pixel, samples) -> list[tuple[float, float]]:
+    """(eps_own, eps_other) pairs that give every answer a tolerance on E can give here: each
+    ε just above one of the case's nonzero |E| (below 1/8 px²), on both sides, on one side."""
+    e, _, _ = _edge_table(xy, pixel, samples)
+    small = np.unique(np.abs(e[(e != 0) & (np.abs(e) < 0.125)]))
+    out = []
+    for lo in small:
+        eps = float(lo) * (1 + 1e-9)
+        out += [(eps, eps), (0.0, eps), (eps, 0.0)]
+    return out
+
+
+def _tolerance_fits(args, expected, got) -> bool | None:
+    """Some tolerance ε on E (one side or both) gives this answer, and it is wrong."""
+    try:
+        g = as_fraction(got)
+    except (TypeError, ValueError):
+        return None
+    return any(abs(fraction_within(*args, a, b) - g) <= 1e-6 for a, b in _tolerances(*args))
+
+
+def _tolerance_words(args, expected, got) -> str:
+    """The sample a tolerance on E (the smallest that gives this answer) decides otherwise
+    than the rule, its exact E on the edge it is near, and the rule."""
+    xy, pixel, samples = args
+    e, own, _ = _edge_table(xy, pixel, samples)
+    fits = [(a, b) for a, b in _tolerances(*args)
+            if abs(fraction_within(*args, a, b) - as_fraction(got)) <= 1e-6]  # fmt: skip
+    a, b = min(fits, key=max) if fits else (0.0, 0.0)
+    eps = np.array([a if o else b for o in own])[:, None]
+    flipped = (e != 0) & (np.abs(e) <= eps)
+    k, s = np.argwhere(flipped)[0] if flipped.any() else np.unravel_index(
+        int(np.argmin(np.where(e == 0, np.inf, np.abs(e)))), e.shape)  # fmt: skip
+    v, _ = _oriented(xy)
+    side = "inside" if e[k, s] > 0 else "outside"
+    units = int(round(float(e[k, s]) * 131072))
+    return (
+        f"you took E within a small ε of 0 as a tie (a tolerance on E, or np.isclose): here "
+        f"sample {s} at {exact(sample_points(pixel, samples)[s])} has E = {units}/131072 px² "
+        f"({num(float(e[k, s]))}) on a {kind_of(v[k], v[(k + 1) % 3])} edge: {side} it, not on "
+        "it. With the vertices on the 1/256 grid and the samples on the 1/512 grid E is exact "
+        "and never nearer 0 than 1/131072 without being 0: decide E > 0, or E ≥ 0 on top and "
+        "left edges, with no tolerance"
+    )
+
+
+TOLERANCE = Mistake("tolerance on E", _tolerance_words, fits=_tolerance_fits, only_whole=True)
+
+
+def fraction_one_edge(xy, pixel, samples, how: str) -> float:
+    """A tie decided by one edge: ``"first k"`` stops at the first edge (from edge k) where
+    E < 0 (out) or E = 0 (its own tie rule decides, the edges after it untested); ``"any"``
+    covers a sample on a vertex if either of its two edges owns it."""
+    e, own, area = _edge_table(xy, pixel, samples)
+    if area == 0:
+        return 0.0
+    own = np.array(own)
+    if how == "any":
+        zero = e == 0
+        ok = (e >= 0).all(axis=0) & (~zero.any(axis=0) | (zero & own[:, None]).any(axis=0))
+        return float(ok.mean())
+    start = int(how.split()[-1])
+    inside = []
+    for s in range(e.shape[1]):
+        verdict = True
+        for k in (start, (start + 1) % 3, (start + 2) % 3):
+            if e[k, s] < 0 or e[k, s] == 0:
+                verdict = bool(e[k, s] == 0 and own[k])
+                break
+        inside.append(verdict)
+    return float(np.mean(inside))
+
+
+def _one_edge_words(how: str):
+    def words(args, expected, got) -> str:
+        xy, pixel, samples = args
+        e, _, _ = _edge_table(xy, pixel, samples)
+        points = sample_points(pixel, samples)
+        on = next(((s, w) for s in range(e.shape[1])
+                   if (e[:, s] == 0).any() and (w := _edge_words(snap(xy), points[s]))), None)  # fmt: skip
+        beyond = next((s for s in range(e.shape[1]) if (e[:, s] == 0).any() and (e[:, s] < 0).any()), None)  # fmt: skip
+        if how == "any":
+            head = ("at a vertex, where E = 0 on two edges, you covered the sample if either "
+                    "edge owns it: each edge decides its own tie, so both must own it")  # fmt: skip
+        else:
+            head = ("you let the first edge with E = 0 decide the sample by its tie rule and "
+                    "tested no further edge: a sample is covered only if it passes all three, "
+                    "each by its own rule (E > 0, or E = 0 on a top or left edge)")  # fmt: skip
+        if beyond is not None and how != "any":
+            return head + (f"; here sample {beyond} at {exact(points[beyond])} lies on one "
+                           "edge's line beyond its end, outside another edge (E < 0 there)")  # fmt: skip
+        return head + (f"; here sample {on[0]} at {exact(points[on[0]])} {on[1]}" if on else "")
+
+    return words
+
+
+ONE_EDGE_KNOBS = Knobs(lambda *a, how: fraction_one_edge(*a, how), {"how": [
+    Slip("tie decided by one edge", _one_edge_words(h), h)
+    for h in ("first 0", "first 1", "first 2")] + [
+    Slip("vertex owned by either edge", _one_edge_words("any"), "any")]}, most=1)  # fmt: skip
+
+
+def _decimal_words(places: int):
+    def words(args, expected, got) -> str:
+        xy = np.asarray(args[0], float)
+        theirs = np.round(xy, places)
+        moved = ", ".join(f"{exact(a)} became {exact(c)}, on the grid {exact(b)}"
+                          for a, b, c in zip(xy, snap(xy), theirs) if (b != c).any())  # fmt: skip
+        return (
+            f"you rounded the vertices to {places} decimal place{'s' * (places != 1)} (a grid "
+            f"of 1/{10**places} px), not to the 1/256 px grid (np.rint(v * 256) / 256)"
+            f"{': ' + moved if moved else ''}"
+        )
+
+    return words
+
+
+#: r422 MN1, MN2: a grid (binary or decimal) is named only where it gives every answer
+#: (a tolerance on E was told "1/16 px"; rounding to 2 decimals "a bottom-right rule").
+GRID_MISTAKES = [
+    *(Mistake("another snapping grid", _grid_words(b),
+              gives=functools.partial(fraction_with, snapping=f"{b} bits"), only_whole=True)
+      for b in GRIDS),
+    *(Mistake("decimal rounding", _decimal_words(d),
+              gives=functools.partial(fraction_with, snapping=f"{d} decimals"), only_whole=True)
+      for d in DECIMALS),
+    Mistake("samples snapped", _snapped_samples_words,
+            gives=functools.partial(fraction_with, points="snapped"), only_whole=True),
+]  # fmt: skip
+
+COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
+                     TOLERANCE]  # fmt: skip
+
+
+def coverage_mistakes() -> list[Mistake]:
+    """Every mistake of 6.1's table, the knobs' combinations spelt out."""
+    return [m for f in COVERAGE_MISTAKES for m in (f.mistakes() if isinstance(f, Knobs) else [f])]
 
 
 def _coverage_rule(args, expected, got) -> str:
@@ -442,6 +634,9 @@ def coverage_exercise(scene) -> Exercise:
         _coverage_rule, COVERAGE_MISTAKES, answers=(PackageAnswer(rasterize),),
         draw=draw_coverage_case, scene=scene, inputs_drawn=True, example=1,
         slow=COVERAGE_SLOW,
+        # r422 WP3: the explanations decide each sample by coverage.covered, the checker's
+        # own rule: handed in, it is not counted (as exercise 1's check says of it)
+        reference=("teachraster.exercises.coverage",),
     )  # fmt: skip
 
 
@@ -710,6 +905,58 @@ def _on_255(args, expected, got) -> bool:
     return bool(np.all(np.abs(g - 255 * e) < 1))
 
 
+def _background_once_words(args, expected, got) -> str:
+    """r422 S1: on a pixel whose samples are all covered the background does not count."""
+    _, ids, _ = args
+    s, k = _sample_counts(ids)
+    if k == s:
+        return (f": you added the background once to the covered samples and divided by "
+                f"k + 1 = {k + 1}: it counts once for every uncovered sample, not once in all, "
+                "and here every sample is covered, so the background has no share at all; "
+                + _mean_rule(args))  # fmt: skip
+    return _resolve_words("the background counts once for every uncovered sample, not once "
+                          "in all")(args, expected, got)  # fmt: skip
+
+
+def _power_mean(g: float):
+    """The samples (the uncovered ones the background) raised to g, averaged, the mean
+    taken back by the power 1/g (a gamma of g)."""
+    return lambda c, i, b: (
+        (np.clip(_with_background(c, i, b), 0, None) ** g).mean(axis=0) ** (1 / g)
+    )
+
+
+def _power_mean_words(g: float):
+    def words(args, expected, got) -> str:
+        return (
+            f": you averaged the samples raised to the power {num(g)} and took the mean back "
+            f"by 1/{num(g)} (a gamma curve); the uncovered share is right, but 6.2's colours "
+            "are plain numbers, to average as they are (6.3 is where a curve comes in, and "
+            "there it is sRGB's); " + _mean_rule(args)
+        )
+
+    return words
+
+
+def _share_squared(colours, ids, background):
+    s, k = _sample_counts(ids)
+    if k == 0:
+        return None
+    a = k / s
+    return a * a * _covered_mean(colours, ids, background) + (1 - a) * np.asarray(background, float)
+
+
+def _share_squared_words(args, expected, got) -> str:
+    _, ids, _ = args
+    s, k = _sample_counts(ids)
+    return (
+        f": you weighted the covered samples' mean by a² = ({k}/{s})², their share twice (as "
+        f"a premultiplied colour multiplied again); the background's share 1 − a = "
+        f"{s - k}/{s} is right; the covered mean weighs by its share a = {k}/{s} once; "
+        + _mean_rule(args)
+    )
+
+
 #: r293 HN2: `* 255` and uint8 answers were told the rule (6.2 and 6.3).
 ON_255 = Mistake("0–255 scale", ": that is the colour on the 0–255 scale of 8-bit codes (× 255); "
                  "the colours here are numbers from 0 to 1: return the mean on that scale, "
@@ -728,8 +975,7 @@ RESOLVE_MISTAKES = [
     Mistake("majority", _resolve_words("that is the colour most samples hold, the background "
             "counted as one more id (it wins where most samples are uncovered); the resolve "
             "mixes them all"), gives=_majority_of_ids),
-    Mistake("background once", _resolve_words("the background counts once for every uncovered "
-            "sample, not once in all"),
+    Mistake("background once", _background_once_words,
             gives=lambda c, i, b: (np.nansum(c[i >= 0], axis=0) + b) / ((i >= 0).sum() + 1)),
     Mistake("sum", _resolve_words("that is the sum of the samples; the resolve is their mean"),
             gives=lambda c, i, b: _with_background(c, i, b).sum(axis=0)),
@@ -777,6 +1023,10 @@ RESOLVE_MISTAKES = [
     EIGHT_BIT,
     CHANNEL_ORDER,
     ON_255,
+    # r422 HN1: a mean of powers, and the covered share counted twice, were asked about the
+    # uncovered share, which they had right
+    *(Mistake("mean of powers", _power_mean_words(g), gives=_power_mean(g)) for g in (2, 2.2, 2.4)),
+    Mistake("covered share squared", _share_squared_words, gives=_share_squared),
     # r293 HN1: the resolve of 6.3 (in linear light) handed in for 6.2 was told the rule
     Mistake("in linear light", _resolve_words("you decoded the samples from sRGB, averaged "
             "and encoded again, as 6.3 does; here the colours are plain numbers (linear), to "

@@ -168,8 +168,7 @@ def _picture_slip(tris, samples, reference, parts, most: int = 60):
     or a pointer to the check (r64 06-3: a pixel's line named no cause). A slip that matches
     only this pixel is not named: few values are possible, and a coincidence would mislead."""
     where = np.argwhere(~np.isclose(parts, reference))[:most]
-    singles = [m for family in aa.COVERAGE_MISTAKES for m in family.mistakes()
-               if not m.parts and m.gives is not None]  # fmt: skip
+    singles = [m for m in aa.coverage_mistakes() if not m.parts and m.gives is not None]
     for m in singles:
         if all(_gives(m, (tris[t], (i, j), samples), parts[t, i, j]) for t, i, j in where):
             return lambda args, expected, got, m=m: ": " + m.say(args, expected, got)

@@ -63,6 +63,10 @@ def resolve_srgb_cases():
     for k in (1, 2, 3):
         ids = [0] * k + [-1] * (4 - k)
         out.append(resolve_case(f"black on white, {k} of 4 samples", ids, [black] * 4, white))
+    # r422 HN2: a dark code between the two curves' thresholds (0.0031308 < c ≤ 0.04045),
+    # where a decode or encode with the other's threshold differs
+    out.append(resolve_case("white on a dark grey, 2 of 4 samples", [0, -1, 0, -1], [white] * 4,
+                            np.full(3, 0.02)))  # fmt: skip
     out += list(resolve_cases())
     return [(label, args, expected_resolve_srgb(*args)) for label, args, _ in out]
 
@@ -276,6 +280,99 @@ MISTAKES = [
 ]  # fmt: skip
 
 
+# -- r422 HN2: a wrong curve named by its curve, the steps being right ------------------------
+def _dec_at(threshold):
+    """sRGB's decode with its straight part up to ``threshold`` (0.04045 is sRGB's)."""
+
+    def dec(c):
+        c = np.asarray(c, dtype=float)
+        return np.where(c <= threshold, c / 12.92,
+                        ((np.maximum(c, threshold) + 0.055) / 1.055) ** 2.4)  # fmt: skip
+
+    return dec
+
+
+def _enc_at(threshold, offset=0.055):
+    """sRGB's encode with its straight part up to ``threshold`` (0.0031308 is sRGB's) and
+    ``offset`` subtracted from the power (0.055 is sRGB's)."""
+
+    def enc(x):
+        x = np.clip(np.asarray(x, dtype=float), 0, None)
+        return np.where(x <= threshold, 12.92 * x,
+                        1.055 * np.maximum(x, threshold) ** (1 / 2.4) - offset)  # fmt: skip
+
+    return enc
+
+
+def _eight_bits(x):
+    return np.round(np.asarray(x, dtype=float) * 255) / 255
+
+
+#: (kind, what is wrong, decode, encode): curves a student writes or picks instead of sRGB's.
+CURVES = [
+    ("encode by a power", "you decoded with sRGB's curve but encoded the mean with a plain "
+     "power 1/2.2", srgb_to_linear, lambda x: _power(x, 1 / 2.2)),
+    ("encode by a power", "you decoded with sRGB's curve but encoded the mean with a plain "
+     "power 1/2.4", srgb_to_linear, lambda x: _power(x, 1 / 2.4)),
+    ("decode by a power", "you decoded with a plain power 2.2 but encoded with sRGB's curve",
+     lambda x: _power(x, 2.2), _encode),
+    ("decode by a power", "you decoded with a plain power 2.4 but encoded with sRGB's curve",
+     lambda x: _power(x, 2.4), _encode),
+    ("power 2", "you decoded by squaring and encoded by a square root (a gamma of 2): sRGB's "
+     "curve is a straight line near black and a power of 2.4 above it",
+     lambda x: _power(x, 2), np.sqrt),
+    ("curve thresholds swapped", "your encode's straight part ends at 0.04045, the decode's "
+     "threshold (a code); the encode's is 0.0031308 (light)", srgb_to_linear, _enc_at(0.04045)),
+    ("curve thresholds swapped", "your decode's straight part ends at 0.0031308, the encode's "
+     "threshold (light); the decode's is 0.04045 (a code)", _dec_at(0.0031308), _encode),
+    ("curve thresholds swapped", "your two curves' thresholds are swapped: the decode's "
+     "straight part ends at code 0.04045, the encode's at light 0.0031308",
+     _dec_at(0.0031308), _enc_at(0.04045)),
+    ("encode without its offset", "your encode leaves out the − 0.055 of 1.055·x^(1/2.4) − "
+     "0.055", srgb_to_linear, _enc_at(0.0031308, offset=0.0)),
+    ("8-bit codes", "you rounded the samples and the background to 8-bit codes (x·255 "
+     "rounded) before decoding, and the mean after: the numbers given are exact, and the "
+     "answer is their exact resolve, unrounded", lambda x: srgb_to_linear(_eight_bits(x)),
+     lambda x: _eight_bits(_encode(x))),
+]  # fmt: skip
+
+
+def _curve_mistake(kind, what, dec, enc) -> Mistake:
+    steps = "; the steps are right (decode every value, average, encode the mean)"
+    curve = (
+        ""
+        if kind == "8-bit codes"
+        else (", the curve is not sRGB's: srgb_to_linear and linear_to_srgb compute it exactly")
+    )
+    words = f": {what}{steps}{curve}"
+    return Mistake(kind, words, gives=lambda c, i, b: _mix(c, i, b, dec, enc))
+
+
+def _not_inverse(args, expected, got) -> bool | None:
+    """A pixel with no sample covered is the background, unchanged, whatever the curves: an
+    answer that differs there has a decode and an encode that are not inverses."""
+    _, ids, background = args
+    if _covered(ids).any():
+        return None
+    g = np.asarray(got, dtype=float).ravel()
+    return g.shape == (3,) and bool(np.isfinite(g).all()) and not np.allclose(g, background)
+
+
+def _not_inverse_words(args, expected, got) -> str:
+    b = np.asarray(args[2], dtype=float)
+    return (
+        f": no sample is covered here, so the pixel is the background {vec(b)} unchanged, "
+        "whatever is averaged: your encode of your decode does not give it back, so your two "
+        "curves are not each other's inverse; use srgb_to_linear and linear_to_srgb, the exact "
+        "pair"
+    )
+
+
+CURVE_MISTAKES = [_curve_mistake(*c) for c in CURVES] + [
+    Mistake("curves not each other's inverse", _not_inverse_words, fits=_not_inverse),
+]
+
+
 def explain(args, expected, got) -> str:
     colours, ids, background = args
     s, k = len(ids), int(_covered(ids).sum())
@@ -284,9 +381,18 @@ def explain(args, expected, got) -> str:
             f"{vec(expected, got)}; yours is {vec(got, expected)}")  # fmt: skip
 
 
+#: r422 WF1: Frame.resolve averages the numbers it is given, 6.2's answer, not 6.3's: said so.
+FRAME_RESOLVE = (
+    "that is exercise 6.2's answer (the package's resolve of the numbers it is given), and "
+    "6.3 builds on your own 6.2: the check does not count the package's 6.2 inside 6.3. Call "
+    "your own resolve from 6.2 there instead"
+)
+
+
 RESOLVE_SRGB = Exercise(
-    "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule, MISTAKES,
-    answers=(PackageAnswer(Frame.resolve),), draw=draw_srgb_case,
+    "resolve_srgb", resolve_srgb_cases, as_colour, same_colour, explain, _rule,
+    MISTAKES + CURVE_MISTAKES,
+    answers=(PackageAnswer(Frame.resolve, words=FRAME_RESOLVE),), draw=draw_srgb_case,
     reference=("teachraster.exercises.antialiasing",), hints=((RULE, HINT), (_RECIPE, _RECIPE_HINT)), inputs_drawn=True,
     once=((RULE, "; as said for the first failing case"),),
 )  # fmt: skip
