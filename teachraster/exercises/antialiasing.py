@@ -15,6 +15,7 @@ decides, and compare the answer with what typical mistakes give.
 from __future__ import annotations
 
 import functools
+import textwrap
 from types import SimpleNamespace
 
 import numpy as np
@@ -605,7 +606,8 @@ def _tie_caption(snapped, points) -> str:
     if on is None:
         return ""
     k, words = on
-    return f"\nsample {k} {words.replace('lies exactly', 'lies')}"
+    # r422: a vertex's sentence ran past both sides of the figure: wrapped
+    return "\n" + textwrap.fill(f"sample {k} {words.replace('lies exactly', 'lies')}", 80)
 
 
 def as_fraction(value) -> float:
@@ -1105,8 +1107,10 @@ def draw_resolve_case(ax, case, got, extra=None):
         artists += ax.plot([k * width] * 2, [0, 1], color="white", linewidth=0.8)
     ticks = [1.5]
     # r308 S4: "hatched: none" under a strip with no hatching read as the key
+    # r422 FIG1: "hatched = uncovered" under a strip with none hatched read as a mistake
     names = [f"{s} samples, {int(covered.sum())} covered\n(hatched = uncovered:\n"
-             f"the background {vec(background)})"]  # fmt: skip
+             f"the background {vec(background)})" if not covered.all() else
+             f"{s} samples, all covered\n(no sample shows\nthe background {vec(background)})"]  # fmt: skip
     cells = []
     if got is not None:
         want, yours = colour_texts(case[2], got)
