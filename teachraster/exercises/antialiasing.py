@@ -411,22 +411,23 @@ def _edge_table(xy, pixel, samples) -> tuple[np.ndarray, list[bool], float]:
     return e, own, float(edge_function(v[0], v[1], v[2]))
 
 
+def _within(e, own, area, eps_own: float, eps_other: float) -> float:
+    if area == 0:
+        return 0.0
+    eps = np.where(own, -eps_own, eps_other)[:, None]
+    return float(np.where(np.asarray(own)[:, None], e >= eps, e > eps).all(axis=0).mean())
+
+
 def fraction_within(xy, pixel, samples, eps_own: float, eps_other: float) -> float:
     """The fraction with a tolerance on E: E ≥ −eps_own on owning edges, E > eps_other on the
     others (np.isclose(E, 0, atol=ε) as the tie test is eps_own = eps_other = ε)."""
-    e, own, area = _edge_table(xy, pixel, samples)
-    if area == 0:
-        return 0.0
-    inside = np.ones(e.shape[1], dtype=bool)
-    for k in range(3):
-        inside &= (e[k] >= -eps_own) if own[k] else (e[k] > eps_other)
-    return float(inside.mean())
+    return _within(*_edge_table(xy, pixel, samples), eps_own, eps_other)
 
 
-def _tolerances(xy, pixel, samples) -> list[tuple[float, float]]:
-    """(eps_own, eps_other) pairs that give every answer a tolerance on E can give here: each
-    ε just above one of the case's nonzero |E| (below 1/8 px²), on both sides, on one side."""
-    e, _, _ = _edge_table(xy, pixel, samples)
+def _tolerances(e) -> list[tuple[float, float]]:
+    """(eps_own, eps_other) pairs that give every answer a tolerance on E can give where the
+    edge values are ``e``: each ε just above one nonzero |E| (below 1/8 px²), on both sides,
+    on one side."""
     small = np.unique(np.abs(e[(e != 0) & (np.abs(e) < 0.125)]))
     out = []
     for lo in small:
@@ -435,13 +436,19 @@ def _tolerances(xy, pixel, samples) -> list[tuple[float, float]]:
     return out
 
 
+def _tolerances_giving(args, got) -> list[tuple[float, float]]:
+    """The tolerances of :func:`_tolerances` that give ``got`` on case ``args``."""
+    table = _edge_table(*args)
+    g = as_fraction(got)
+    return [t for t in _tolerances(table[0]) if abs(_within(*table, *t) - g) <= 1e-6]
+
+
 def _tolerance_fits(args, expected, got) -> bool | None:
     """Some tolerance ε on E (one side or both) gives this answer, and it is wrong."""
     try:
-        g = as_fraction(got)
+        return bool(_tolerances_giving(args, got))
     except (TypeError, ValueError):
         return None
-    return any(abs(fraction_within(*args, a, b) - g) <= 1e-6 for a, b in _tolerances(*args))
 
 
 def _tolerance_words(args, expected, got) -> str:
@@ -449,8 +456,7 @@ def _tolerance_words(args, expected, got) -> str:
     than the rule, its exact E on the edge it is near, and the rule."""
     xy, pixel, samples = args
     e, own, _ = _edge_table(xy, pixel, samples)
-    fits = [(a, b) for a, b in _tolerances(*args)
-            if abs(fraction_within(*args, a, b) - as_fraction(got)) <= 1e-6]  # fmt: skip
+    fits = _tolerances_giving(args, got)
     a, b = min(fits, key=max) if fits else (0.0, 0.0)
     eps = np.array([a if o else b for o in own])[:, None]
     flipped = (e != 0) & (np.abs(e) <= eps)
@@ -1043,8 +1049,10 @@ RESOLVE_RULE = (
     "(Σ covered colours + (S − k)·background) / S"
 )
 RESOLVE_HINT = (
+    # r422 HN1: asked alone, the uncovered share sent answers that had it right back to it
     "; each sample stands for an equal share of the pixel: what does the pixel show in the "
-    "share where no triangle covered the sample? Work this case's numbers through by hand"
+    "share where no triangle covered the sample, and is your answer the plain mean of the S "
+    "colours, that share counted in? Work this case's numbers through by hand"
 )
 #: The rule and its question where every sample is covered (r199 12-9: the question above was
 #: asked of a pixel with no uncovered share, of a sum over 3 or a median).
