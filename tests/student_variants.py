@@ -6426,6 +6426,26 @@ def _r422_either_owner(e, o):
     return (e >= 0).all(axis=0) & (~zero.any(axis=0) | (zero & o[:, None]).any(axis=0))
 
 
+def _r422_distance_tolerance(xy, pixel, samples):
+    """A tolerance of 1e-3 px on each sample's distance E / |b − a| to each edge."""
+    v = np.rint(np.asarray(xy, float) * 256) / 256
+    area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    p = np.asarray(samples, float) + [pixel[1], pixel[0]]
+    inside = np.ones(len(p), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        d = ((b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0])) / np.hypot(
+            *(b - a)
+        )
+        owns = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (d >= -1e-3) if owns else (d > 1e-3)
+    return float(inside.mean())
+
+
 def _r422_isclose(e, o):
     tie = np.isclose(e, 0, atol=1e-3)
     return np.all(np.where(o[:, None], (e >= 0) | tie, (e > 0) & ~tie), axis=0)
@@ -6500,6 +6520,9 @@ R422 = {
         "tolerance on E"),
     "coverage with a tolerance of 0.1 on E": (
         "coverage_fraction", _r422_coverage(_r422_tolerance(0.1, 0.1)), "a tolerance on E",
+        "tolerance on E"),
+    "coverage with a tolerance of 1e-3 px on the distance E / |edge|": (
+        "coverage_fraction", _r422_distance_tolerance, "a tolerance on E",
         "tolerance on E"),
     "coverage where the first edge at E = 0 decides": (
         "coverage_fraction", _r422_coverage(_r422_first_zero), "first edge with E = 0 decide",

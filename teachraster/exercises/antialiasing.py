@@ -143,6 +143,13 @@ def _coverage_cases(rng, word):
         ("near a tie: a sample 1/512 px above a 1/256 px bottom edge (E = 1/131072)",
          [[2.375, 1], [2.375 + 1 / 256, 1.125], [2.375, 1.125]], (1, 2),
          [[0.375 + 1 / 512, 0.125 - 1 / 512]]),
+        # a tolerance on the distance E / |edge| (1e-3 px) passed: a long steep edge, its
+        # nearest sample 0.00073 px away (|E| = 0.0044), outside an owning edge, inside one
+        # that does not own
+        ("near a tie: a sample 0.00073 px left of a long left edge",
+         [[2.375, -1], [6, 1.5], [2.375 + 1 / 256, 5]], (0, 2), [[0.375, 0.125]]),
+        ("near a tie: a sample 0.00073 px inside a long right edge",
+         [[2.375, -1], [2.375 + 1 / 256, 5], [-2, 1.5]], (0, 2), [[0.375, 0.125]]),
         # r422 WP2: a vertex where a top edge meets a right one (either owner passed), and a
         # sample on a top edge's line past its end, outside the right edge (the first edge
         # at E = 0 deciding passed)
@@ -466,7 +473,8 @@ def _tolerance_words(args, expected, got) -> str:
     side = "inside" if e[k, s] > 0 else "outside"
     units = int(round(float(e[k, s]) * 131072))
     return (
-        f"you took E within a small ε of 0 as a tie (a tolerance on E, or np.isclose): here "
+        f"you took E within a small ε of 0 as a tie (a tolerance on E or on the distance "
+        f"E / |edge|, or np.isclose): here "
         f"sample {s} at {exact(sample_points(pixel, samples)[s])} has E = {units}/131072 px² "
         f"({num(float(e[k, s]))}) on a {kind_of(v[k], v[(k + 1) % 3])} edge: {side} it, not on "
         "it. With the vertices on the 1/256 grid and the samples on the 1/512 grid E is exact "
