@@ -110,3 +110,24 @@ def test_7_4_asks_before_it_tells():
         assert told not in task, told
     assert "Pixel (27, 3) is covered" in task
     assert "one pair for the pixels run together" not in cells["pixel_lod_task"]
+
+
+def test_the_stub_figures_draw_the_whole_floor_with_the_questions_pixels(plt):
+    """FIG1: 7.1's and 7.4's stub figures showed a 6 × 6 window, never the floor whose pixels
+    the questions name; a failing 7.1 figure outlines the quad once the hints are spent."""
+
+    def stub(*args):
+        raise NotImplementedError
+
+    for name, pixels in (("pixel_lod", pl.QUESTION_PIXELS), ("pixel_sample", ps.SAMPLE_PIXELS)):
+        fig, ax = plt.subplots()
+        ex.check(name, stub).plot(ax)
+        names = {t.get_text() for t in ax.texts}
+        assert {f"({r}, {c})" for r, c in pixels} <= names, names
+        assert ax.get_xlim() == (0, 32) and "the floor the check draws" in ax.get_xlabel()
+    tries.spend_hints(["pixel_lod"])
+    fig, ax = plt.subplots()
+    ex.check("pixel_lod", sv._lod405(EXTRAP="False")).plot(ax)
+    tries.forget_hints("pixel_lod")
+    quads = [p for p in ax.patches if p.get_width() == 2 and p.get_height() == 2]
+    assert len(quads) == 1 and quads[0].get_xy() == (2, 26), quads

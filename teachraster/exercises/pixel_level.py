@@ -457,13 +457,50 @@ def lod_questions(size=(64, 64)) -> str:
             "across the edge stops at the triangle")  # fmt: skip
 
 
-def draw_lod_case(ax, case, got):
-    """Close up on the pixel: the triangle's edges, the pixels around (covered grey), the
-    pixel; λ and yours. A passing figure adds the pixel's quad with (u, v) at each lane
-    (helpers hatched) and answers 7.1's questions."""
+def draw_floor(ax, marked) -> list:
+    """The whole floor the check draws, its covered pixels grey and the pixels ``marked``
+    ((row, col) each) outlined and named: what a stub's figure shows (r418 FIG1: 7.1's
+    questions name pixels of the floor that its 6 × 6 close-up never showed)."""
     from matplotlib.patches import Rectangle
 
+    xy = FLOOR[0]
+    n = 32
+    covered = [[inside(xy, x + 0.5, y + 0.5) for x in range(n)] for y in range(n)]
+    artists = [ax.imshow(np.where(covered, 0.82, 1.0), cmap="gray", vmin=0, vmax=1,
+                         extent=(0, n, n, 0), interpolation="nearest")]  # fmt: skip
+    ring = np.vstack([xy, xy[:1]])
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.2)
+    for r, c in marked:
+        artists.append(ax.add_patch(Rectangle((c, r), 1, 1, fill=False, edgecolor="#ff9f1c",
+                                              lw=2)))  # fmt: skip
+        side = 1 if c < n / 2 else -1  # the name away from the floor's middle
+        artists.append(ax.annotate(f"({r}, {c})", (c + 0.5, r + 0.5), xytext=(14 * side, 0),
+                                   textcoords="offset points", va="center", fontsize="x-small",
+                                   ha="left" if side > 0 else "right", color="#b35900",
+                                   arrowprops={"arrowstyle": "-", "color": "#b35900"}))  # fmt: skip
+    ax.set_xlim(0, n)
+    ax.set_ylim(n, 0)
+    ax.set_aspect("equal")
+    return artists
+
+
+def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
+    """Close up on the pixel: the triangle's edges, the pixels around (covered grey), the
+    pixel; λ and yours. A passing figure adds the pixel's quad with (u, v) at each lane
+    (helpers hatched) and answers 7.1's questions; a failing one, once the hints are spent,
+    outlines the quad (r418 FIG1). With no answer (``overview``: ``got`` None) on the floor,
+    the whole floor with the questions' pixels ``marked`` (:func:`draw_floor`)."""
+    from matplotlib.patches import Rectangle
+
+    from . import tries
+
     _, (xy, w, uv, size, row, col), expected = case
+    if (got is None if overview is None else overview) and np.array_equal(xy, FLOOR[0]):
+        artists = draw_floor(ax, marked)
+        text = (f"the floor the check draws, the questions' pixels marked; this case: pixel "
+                f"({row}, {col}), texture size (H, W) = {size}")  # fmt: skip
+        artists.append(ax.set_xlabel(textwrap.fill(text, 70), fontsize="x-small"))
+        return artists
     r0, c0 = row - row % 2, col - col % 2
     passed = got is not None and same_lod(got, expected, case[1])
     ring = np.vstack([xy, xy[:1]])
@@ -484,6 +521,9 @@ def draw_lod_case(ax, case, got):
                                    color="#888888" if (dr, dc) == (1, 1) else "black",
                                    bbox={"facecolor": "white", "alpha": 0.55,
                                          "edgecolor": "none", "pad": 1}))  # fmt: skip
+    elif got is not None and tries.hints_spent("pixel_lod"):  # the quad, no values
+        artists.append(ax.add_patch(Rectangle((c0, r0), 2, 2, fill=False, edgecolor="#2b7bba",
+                                              lw=1.5)))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
     ax.set_xlim(c0 - 2, c0 + 4)

@@ -511,15 +511,23 @@ def sample_questions(pyramid) -> str:
     )
 
 
+#: 7.4's "answer first" pixels on the floor: the one covered pixel of its quad, two of a quad.
+SAMPLE_PIXELS = ((27, 3), (28, 14), (29, 15))
+
+
 def draw_sample_case(ax, case, got):
     """7.1's close-up at the pixel (the quad drawn once the check passes); the filtered value
-    and yours, with λ and (u, v) once it passes."""
+    and yours, with λ and (u, v) once it passes; with no answer, the whole floor with 7.4's
+    pixels marked."""
     _, (pyramid, xy, w, uv, row, col, wrap), expected = case
     size = level_size(pyramid)
     lod = expected_lod(xy, w, uv, size, row, col)
     passed = got is not None and same_value(got, expected, None)
-    artists = draw_lod_case(ax, ("", (xy, w, uv, size, row, col), lod), lod if passed else None)
+    artists = draw_lod_case(ax, ("", (xy, w, uv, size, row, col), lod), lod if passed else None,
+                            overview=got is None, marked=SAMPLE_PIXELS)  # fmt: skip
     text = f"pixel ({row}, {col}), level 0 {size[0]}×{size[1]}, wrap={wrap!r}"
+    if got is None and np.array_equal(xy, FLOOR[0]):  # the whole floor (r418 FIG1)
+        text = f"the floor the check draws, the questions' pixels marked; this case: {text}"
     if got is not None:
         text += f"; value {_shown(expected, got)}, yours {_shown(got, expected)}"
     if passed:
