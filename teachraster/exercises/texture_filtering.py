@@ -760,7 +760,7 @@ def draw_pyramid_case(ax, case, got):
     method = got is not None and (tries.hints_spent("trilinear") or passed)
     weights = level_weights(q, lod) if method else {}
     shown = list(weights) if method else list(range(q + 1))
-    artists, gap = [], 0.3
+    artists, gap = [], 0.6 if method else 0.3  # r418 FIG2: "…, weight 0.75" met the next title
     for k, d in enumerate(shown):
         h, w = np.shape(pyramid[d])[:2]
         ox = k * (1 + gap)
@@ -775,7 +775,7 @@ def draw_pyramid_case(ax, case, got):
     if passed:  # 7.3's λ's beside the levels, inside the axes (its width follows the levels)
         artists.append(ax.text(right, 0.5, trilinear_questions(q), ha="left", va="center",
                                fontsize="x-small"))  # fmt: skip
-    ax.set_xlim(-0.3, right + (1.9 if passed else 0.0))
+    ax.set_xlim(-0.3, right + (2.2 if passed else 0.0))  # r418 FIG2: ")" met the frame
     ax.set_ylim(1.1, -0.2)
     ax.set_aspect("equal")
     ax.set_xticks([])
