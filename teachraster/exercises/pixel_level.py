@@ -474,7 +474,10 @@ def draw_floor(ax, marked) -> list:
         artists.append(ax.add_patch(Rectangle((c, r), 1, 1, fill=False, edgecolor="#ff9f1c",
                                               lw=2)))  # fmt: skip
         side = 1 if c < n / 2 else -1  # the name away from the floor's middle
-        artists.append(ax.annotate(f"({r}, {c})", (c + 0.5, r + 0.5), xytext=(14 * side, 0),
+        # two pixels a row or two apart: the upper name raised, the lower one lowered
+        near = [r2 for r2, c2 in marked if 0 < abs(r2 - r) <= 2 and abs(c2 - c) <= 2]
+        dy = 0 if not near else (7 if r < near[0] else -7)
+        artists.append(ax.annotate(f"({r}, {c})", (c + 0.5, r + 0.5), xytext=(14 * side, dy),
                                    textcoords="offset points", va="center", fontsize="x-small",
                                    ha="left" if side > 0 else "right", color="#b35900",
                                    arrowprops={"arrowstyle": "-", "color": "#b35900"}))  # fmt: skip
