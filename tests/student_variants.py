@@ -6561,3 +6561,34 @@ R422 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R422.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R422.items()})
+# == r418 F2, F3 (fixex07z, exercises 7.1 pixel_lod and 7.4 pixel_sample: the reader's variants) ==
+
+_R418_NAN_SAMPLE = """
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    lod = pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)
+    m = barycentric(xy, [[col + 0.5, row + 0.5]])[0] / np.asarray(w, dtype=float)
+    uvh = (m / (m.sum() - m.sum())) @ np.asarray(uv, dtype=float)
+    return trilinear(pyramid, uvh, lod, wrap)
+"""
+
+#: label: (name, fn, words in the first failure, kind of the first failure).
+R418_PIXEL = {
+    "pixel lod with λ/w weights not normalised": (
+        "pixel_lod",
+        _lod415(AT="return (barycentric(xy, [[x, y]])[0] / w) @ uv"),
+        "the weights are not normalised", "weights not normalised"),
+    "pixel lod rounded up, ⌈λ⌉": (
+        "pixel_lod", _lod405(LOG="np.ceil(np.log2(rho))"), "you rounded λ up", "rounded up"),
+    "pixel lod as log2(1 + ρ)": (
+        "pixel_lod", _lod405(LOG="np.log2(1 + rho)"), "your λ is log2(1 + ρ)", "log2 of 1 + ρ"),
+    "pixel lod with uv read as (v, u)": (  # the same numbers as W and H swapped: both named
+        "pixel_lod",
+        _lod415(AT="return perspective_weights(barycentric(xy, [[x, y]]), w, "
+                   "extrapolate=True)[0] @ uv[:, ::-1]"),
+        "or you read uv's columns as (v, u)", "W and H swapped"),
+    "pixel sample passing a NaN (u, v) to its own trilinear": (
+        "pixel_sample", _r405(_R418_NAN_SAMPLE, {}),
+        "the (u, v) passed to trilinear is not a number", "raised"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R418_PIXEL.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R418_PIXEL.items()})

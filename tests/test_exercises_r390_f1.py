@@ -61,7 +61,10 @@ def test_each_named_mistake_asks_first_and_keeps_the_steps(table, name):
 
 
 def test_the_pass_figures_answer_the_questions(plt):
-    for name, words in (("pixel_lod", pl.lod_questions()[:60]), ("pixel_sample", "7.4: the tip")):
+    for name, words in (
+        ("pixel_lod", pl.lod_questions()[:60]),
+        ("pixel_sample", "7.4: (27, 3) gets its quad's λ"),
+    ):
         report = ex.check(name, sol.CORRECT[name])
         fig, ax = plt.subplots()
         report.plot(ax)
@@ -77,4 +80,8 @@ def test_the_sampler_cases_are_all_covered_pixels_and_the_tip_asks_above_the_pyr
 
     cases = ps.sample_cases()
     assert all(inside(a[1], a[5] + 0.5, a[4] + 0.5) for _, a, _ in cases)
-    assert "level 3 alone (λ clamped to 3)" in ps.sample_questions(cases[2][1][0])
+    # r418 P2: the tip's level is 7.3's question; 7.4 asks where (27, 3) gets λ and (u, v)
+    assert ps.expected_lod(*cases[2][1][1:4], (8, 8), 5, 14) > len(cases[2][1][0]) - 1
+    said = ps.sample_questions(cases[2][1][0])
+    assert "λ = 0.373, from the (u, v) of the three helpers alone" in said
+    assert "(u, v) = (0.08, 0.105), not at a helper's (upper-left: (-0.142, 0.153))" in said

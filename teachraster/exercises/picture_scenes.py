@@ -349,7 +349,7 @@ def level_scene(fn) -> Scene:
         words = lod.explain_level(args, float(reference[row, col]), float(got[row, col]))
         return lod.hinted("mip_level", words, lod.HINTS)
 
-    scene = Scene("λ over a floor, 64 × 64 texture", reference, run, explain,
+    scene = Scene("λ over a floor, 64\u00a0×\u00a064 texture", reference, run, explain,
                   value_name="λ, the level of detail")  # fmt: skip
     scene.inputs = _uv_inputs
     return scene
@@ -370,7 +370,8 @@ def _texture_inputs(texels: int):
         texture = floor_texture(texels)[0]
         ax.imshow(texture, cmap="gray", vmin=0, vmax=1, extent=(0, texels, texels, 0),
                   interpolation="nearest")  # fmt: skip
-        return f"the {texels} × {texels} texture the floor repeats"
+        # r418 FIG2: non-breaking spaces keep "8 × 8" on one line of the wrapped title
+        return f"the {texels}\u00a0×\u00a0{texels} texture the floor repeats"
 
     return draw
 
@@ -385,7 +386,7 @@ def bilinear_scene(fn) -> Scene:
             uv, lambda i, j: call(fn, tf.as_texel_value, texture, uv[i, j], "repeat"), reference
         )
 
-    scene = Scene("a floor, 8 × 8 texture, bilinear", reference, run, _texel_explainer(uv, texture, reference))  # fmt: skip
+    scene = Scene("a floor, 8\u00a0×\u00a08 texture, bilinear", reference, run, _texel_explainer(uv, texture, reference))  # fmt: skip
     scene.inputs = _texture_inputs(8)
     return scene
 
@@ -426,7 +427,7 @@ def trilinear_scene(fn) -> Scene:
     def run():
         return _per_pixel(uv, lambda i, j: call(fn, tf.as_texel_value, pyramid, uv[i, j], float(lam[i, j]), "repeat"), reference)  # fmt: skip
 
-    scene = Scene("a floor, 64 × 64 texture, trilinear at the package's λ", reference, run, _texel_explainer(uv, pyramid, reference, lam))  # fmt: skip
+    scene = Scene("a floor, 64\u00a0×\u00a064 texture, trilinear at the package's λ", reference, run, _texel_explainer(uv, pyramid, reference, lam))  # fmt: skip
     scene.inputs = _texture_inputs(64)
     return scene
 

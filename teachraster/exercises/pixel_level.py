@@ -12,7 +12,8 @@ Expected answers: the renderer's own quad lanes (:func:`.quad_difference.lanes`)
 odd quads, helpers clamped, affine values, fine or centred differences, other lanes of the
 quad, which GL and Direct3D allow: r415) and the level's (no scaling to texels, W and H
 swapped, u alone, one step alone, the axes' mean, λ clamped at 0, rounded). An answer that
-ignores the triangle's (u, v) is told so and never brings the steps (r415 F1).
+does not behave like a λ (it ignores the triangle's (u, v), does not grow by 1 as the steps
+double) is told so and never brings the steps (r415 F1, r418 F1).
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ import textwrap
 
 import numpy as np
 
+from ..core.barycentrics import barycentric
 from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
 from .answers import as_number
@@ -91,11 +93,21 @@ def _uv_at(xy, w, uv, x, y, **kw) -> np.ndarray:
     return np.array([value_at(xy, w, np.asarray(uv, float)[:, k], x, y, **kw) for k in (0, 1)])
 
 
+def _unnormalised(xy, w, uv, x, y) -> np.ndarray:
+    """(u, v) at (x, y) weighted by λ/w without dividing by the weights' sum (r418 F2)."""
+    mu = barycentric(xy, [[x, y]])[0] / np.asarray(w, float)
+    return mu @ np.asarray(uv, float)
+
+
 def _steps(xy, w, uv, r, c, centre=0.5, **kw):
     """(ddx, ddy) from the quad whose upper-left pixel is (r, c), values taken as ``kw`` says."""
     a = _uv_at(xy, w, uv, c + centre, r + centre, **kw)
     return (_uv_at(xy, w, uv, c + 1 + centre, r + centre, **kw) - a,
             _uv_at(xy, w, uv, c + centre, r + 1 + centre, **kw) - a)  # fmt: skip
+
+
+def _ceil(lam) -> float | None:
+    return None if lam is None else float(math.ceil(lam))
 
 
 def _log2(rho) -> float | None:
@@ -123,6 +135,7 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "helpers clamped": lod(_steps(xy, w, uv, r0, c0, clamp=True)),
         "affine": lod(_steps(xy, w, uv, r0, c0, affine=True)),
         "λ·w": lod(_steps(xy, w, uv, r0, c0, times_w=True)),
+        "weights not normalised": lod(_unnormalised_steps(xy, w, uv, r0, c0)),
         **_other_lanes(xy, w, uv, r0, c0, lod),
         "quad index as its pixel": lod(_steps(xy, w, uv, row // 2, col // 2)),
         "corners": lod(_steps(xy, w, uv, r0, c0, centre=0.0)),
@@ -145,6 +158,7 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "ρ itself": lod((ddx, ddy), log="none"),
         "rounded": lod((ddx, ddy), log="round"),
         "rounded down": lod((ddx, ddy), log="floor"),
+        "rounded up": _ceil(lod((ddx, ddy))),
         **_log_slips(xy, w, uv, size, row, col),
     }
 
@@ -153,6 +167,13 @@ def _variants(xy, w, uv, size, row, col) -> dict:
 #: each lane 0 or 1 from the upper-left; "rows averaged" averages both rows and both columns.
 OTHER_LANES = {"ddx from the lower row": (1, 0), "ddy from the right column": (0, 1),
                "ddx lower row, ddy right column": (1, 1), "rows averaged": None}  # fmt: skip
+
+
+def _unnormalised_steps(xy, w, uv, r0, c0):
+    """(ddx, ddy) from lanes whose (u, v) is weighted by λ/w, never divided by Σ λ/w."""
+    a = _unnormalised(xy, w, uv, c0 + 0.5, r0 + 0.5)
+    return (_unnormalised(xy, w, uv, c0 + 1.5, r0 + 0.5) - a,
+            _unnormalised(xy, w, uv, c0 + 0.5, r0 + 1.5) - a)  # fmt: skip
 
 
 def _other_lanes(xy, w, uv, r0, c0, lod) -> dict:
@@ -195,7 +216,8 @@ def _log_slips(*args) -> dict:
     if lam is None:
         return {}
     return {"log2 of ρ²": 2 * lam, "natural log": lam * math.log(2),
-            "divided by ln 2": lam / math.log(2), "the shorter step": _log2(min(lx, ly))}  # fmt: skip
+            "divided by ln 2": lam / math.log(2), "the shorter step": _log2(min(lx, ly)),
+            "log2 of 1 + ρ": math.log2(1 + max(lx, ly))}  # fmt: skip
 
 
 def _axes(args) -> tuple[float, float]:
@@ -243,6 +265,9 @@ MISTAKES = {
     "(lesson 04)?",
     "λ·w": "your lanes' (u, v) weight each vertex by w: perspective-correct interpolation "
     "divides by w (lesson 04): which weights does a vertex get, λ·w or λ/w?",
+    "weights not normalised": "your lanes' (u, v) weight each vertex by λ/w but the weights "
+    "are not normalised: λ/w of the three vertices do not sum to 1, so (u, v) comes out "
+    "scaled (lesson 04): what must the weighted sum be divided by?",
     **{kind: _lanes_words(kind) for kind in OTHER_LANES},
     "quad index as its pixel": lambda a, e, g: (
         f"you took pixel ({a[4] // 2}, {a[5] // 2}) as the quad's upper-left lane: row // 2 "
@@ -265,7 +290,8 @@ MISTAKES = {
     ),
     "W and H swapped": lambda a, e, g: (
         f"size = {a[3]} is (H, W): you scaled u by H = "
-        f"{a[3][0]} and v by W = {a[3][1]}; which of them counts the texels along u?"
+        f"{a[3][0]} and v by W = {a[3][1]}, or you read uv's columns as (v, u) (the same "
+        "numbers); u is uv's first column and counts the W texels of a row: which scales it?"
     ),
     "W − 1 and H − 1": lambda a, e, g: (
         f"you scaled u by W − 1 = {a[3][1] - 1} and v by H − 1 = {a[3][0] - 1}: a texture of W "
@@ -311,6 +337,13 @@ MISTAKES = {
     "two levels around it)",
     "rounded down": "you rounded λ down to a whole level: λ is fractional in general (7.3 "
     "blends the two levels around it)",
+    "rounded up": "you rounded λ up to a whole level (⌈λ⌉): λ is fractional in general (7.3 "
+    "blends the two levels around it)",
+    "log2 of 1 + ρ": lambda a, e, g: (
+        f"your λ is log2(1 + ρ) (ρ = {num(max(_axes(a)))} texels, the longer step): λ counts "
+        "halvings of ρ itself, so one texel per step (ρ = 1) is level 0 and a magnified "
+        "texture (ρ < 1) gives λ < 0; a ρ of 0 never occurs on a triangle the check draws"
+    ),
 }
 
 
@@ -323,8 +356,9 @@ RULE = (
     "λ = log2 of the longer Euclidean length"
 )
 HINT = (
-    ": which quad holds this pixel and which of its lanes are differenced; how many texels of "
-    "level 0 does each step cross; which step decides? Work this case through by hand"
+    ": which quad holds this pixel and which of its lanes are differenced; (u, v) at each "
+    "lane: which interpolation, and past the edge?; how many texels of level 0 does each step "
+    "cross; which step decides? Work this case through by hand"
 )
 
 
@@ -338,29 +372,66 @@ def _call(fn, args):
     return as_number(fn(*args))
 
 
-def ignores(fn, changed, got) -> bool:
-    """Does the student's ``fn`` give ``got`` again on ``changed`` args, whose answer differs
-    (r415 F1: ``return row * 0.1`` then ``return col * 0.1`` were two tries that unlocked the
-    steps)? False where it raises or gives no number."""
-    if fn is None or got is None:
-        return False
+def again(fn, args) -> float | None:
+    """The student's ``fn`` on ``args`` as one finite number, or None (it raised, gave no
+    number, or NaN)."""
     try:
-        again = np.asarray(fn(*changed), dtype=float)
-        return bool(np.shape(again) == np.shape(got) and np.allclose(again, got, rtol=1e-9))
-    except Exception:  # noqa: BLE001 - the student's code: any failure is "not shown to ignore"
-        return False
+        value = float(np.ravel(np.asarray(fn(*args), dtype=float))[0])
+    except Exception:  # noqa: BLE001 - the student's code: no number
+        return None
+    return value if math.isfinite(value) else None
 
 
-def _rule(args, expected, got) -> str:
-    """The steps (staged: :data:`RULE` until two answers failed), but never for an answer that
-    ignores the triangle's (u, v): that try does not count towards them (r415 F1)."""
+#: How far from λ a try that behaves like a λ may lie and still count as an attempt at the
+#: task (r418 F1): 2, ρ within a factor of 4.
+NEAR = 2.0
+
+
+def _not_tried(fn, args, expected, got) -> str | None:
+    """Why the failing answer ``got`` shows no attempt at λ (the words, with :data:`HINT`), or
+    None for an attempt (r418 F1: ``uv[1][0] + uv[2][1]`` and then ``np.sum(uv) + size[0]``,
+    junk that reads uv, were two tries that unlocked the steps). Any λ built from steps in
+    texels grows by exactly 1 when the triangle's (u, v) doubles, and by 1 when the texture's
+    size doubles, and stays when 1 is added to every (u, v); an attempt does all three and
+    lies within :data:`NEAR` of λ."""
     xy, w, uv, size, row, col = args
-    doubled = (np.array(xy, float), np.array(w, float), np.asarray(uv, float) * 2, size, row, col)
-    if ignores(_RUNNING.get("fn"), doubled, got):
+    if fn is None or got is None or not math.isfinite(float(got)):
+        return None
+    more = (np.array(xy, float), np.array(w, float))
+    by_uv = again(fn, (*more, np.asarray(uv, float) * 2, size, row, col))
+    by_size = again(fn, (*more, np.array(uv, float), (2 * size[0], 2 * size[1]), row, col))
+    moved = again(fn, (*more, np.asarray(uv, float) + 1, size, row, col))  # the same steps
+    grew = [x is not None and abs(x - got - 1) < 1e-3 for x in (by_uv, by_size)]
+    if all(grew) and (moved is None or abs(moved - got) > 1e-3):
+        return (f": with 1 added to every vertex's u and v (the same steps, the same λ) your "
+                f"λ goes from {num(got)} to {'no number' if moved is None else num(moved)}: λ "
+                "depends on how (u, v) changes from pixel to pixel, not on (u, v) itself:"
+                + HINT[1:])  # fmt: skip
+    if all(grew) and abs(got - expected) <= NEAR:
+        return None
+    if all(grew):
+        return (f": your λ grows by 1 when the steps double, as a λ does, but it is "
+                f"{num(abs(got - expected))} from the right one (your ρ off by a factor of "
+                f"{num(2 ** abs(got - expected))}):" + HINT[1:])  # fmt: skip
+    if by_uv is not None and abs(by_uv - got) < 1e-9:
         return (f": with this triangle's (u, v) doubled your λ is still {num(got)}, where each "
                 "step crosses twice the texels and λ grows by 1: does your λ use xy, w, uv "
                 "and size?" + HINT[1:])  # fmt: skip
-    return RULE
+    said = [f"with {what} doubled, yours goes from {num(got)} to "
+            f"{'no number' if x is None else num(x)}"
+            for what, x, ok in (("this triangle's (u, v)", by_uv, grew[0]),
+                                ("the texture's size", by_size, grew[1])) if not ok]  # fmt: skip
+    return (": your answer does not behave like a level of detail: λ grows by exactly 1 when "
+            "the triangle's (u, v) doubles, and by 1 when the texture's size doubles (each step "
+            f"crosses twice the texels); {'; '.join(said)}:" + HINT[1:])  # fmt: skip
+
+
+def _rule(args, expected, got) -> str:
+    """The steps (staged: :data:`RULE` until two answers failed), but only for a failing try
+    that behaves like a λ (:func:`_not_tried`): junk never counts towards them (r415 F1,
+    r418 F1)."""
+    words = _not_tried(_RUNNING.get("fn"), args, expected, got)
+    return RULE if words is None else words
 
 
 #: 7.1's "answer first" pixels on the floor (64 × 64 texture): two lanes of one quad, the
@@ -386,13 +457,53 @@ def lod_questions(size=(64, 64)) -> str:
             "across the edge stops at the triangle")  # fmt: skip
 
 
-def draw_lod_case(ax, case, got):
-    """Close up on the pixel: the triangle's edges, the pixels around (covered grey), the
-    pixel; λ and yours. A passing figure adds the pixel's quad with (u, v) at each lane
-    (helpers hatched) and answers 7.1's questions."""
+def draw_floor(ax, marked) -> list:
+    """The whole floor the check draws, its covered pixels grey and the pixels ``marked``
+    ((row, col) each) outlined and named: what a stub's figure shows (r418 FIG1: 7.1's
+    questions name pixels of the floor that its 6 × 6 close-up never showed)."""
     from matplotlib.patches import Rectangle
 
+    xy = FLOOR[0]
+    n = 32
+    covered = [[inside(xy, x + 0.5, y + 0.5) for x in range(n)] for y in range(n)]
+    artists = [ax.imshow(np.where(covered, 0.82, 1.0), cmap="gray", vmin=0, vmax=1,
+                         extent=(0, n, n, 0), interpolation="nearest")]  # fmt: skip
+    ring = np.vstack([xy, xy[:1]])
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", linewidth=1.2)
+    for r, c in marked:
+        artists.append(ax.add_patch(Rectangle((c, r), 1, 1, fill=False, edgecolor="#ff9f1c",
+                                              lw=2)))  # fmt: skip
+        side = 1 if c < n / 2 else -1  # the name away from the floor's middle
+        # two pixels a row or two apart: the upper name raised, the lower one lowered
+        near = [r2 for r2, c2 in marked if 0 < abs(r2 - r) <= 2 and abs(c2 - c) <= 2]
+        dy = 0 if not near else (7 if r < near[0] else -7)
+        artists.append(ax.annotate(f"({r}, {c})", (c + 0.5, r + 0.5), xytext=(14 * side, dy),
+                                   textcoords="offset points", va="center", fontsize="x-small",
+                                   ha="left" if side > 0 else "right", color="#b35900",
+                                   arrowprops={"arrowstyle": "-", "color": "#b35900"}))  # fmt: skip
+    ax.set_xlim(0, n)
+    ax.set_ylim(n, 0)
+    ax.set_aspect("equal")
+    return artists
+
+
+def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
+    """Close up on the pixel: the triangle's edges, the pixels around (covered grey), the
+    pixel; λ and yours. A passing figure adds the pixel's quad with (u, v) at each lane
+    (helpers hatched) and answers 7.1's questions; a failing one, once the hints are spent,
+    outlines the quad (r418 FIG1). With no answer (``overview``: ``got`` None) on the floor,
+    the whole floor with the questions' pixels ``marked`` (:func:`draw_floor`)."""
+    from matplotlib.patches import Rectangle
+
+    from . import tries
+
     _, (xy, w, uv, size, row, col), expected = case
+    if (got is None if overview is None else overview) and np.array_equal(xy, FLOOR[0]):
+        artists = draw_floor(ax, marked)
+        text = (f"the floor the check draws, the questions' pixels marked; this case: pixel "
+                f"({row}, {col}), texture size (H, W) = {size}")  # fmt: skip
+        artists.append(ax.set_xlabel(textwrap.fill(text, 70), fontsize="x-small"))
+        return artists
     r0, c0 = row - row % 2, col - col % 2
     passed = got is not None and same_lod(got, expected, case[1])
     ring = np.vstack([xy, xy[:1]])
@@ -411,7 +522,11 @@ def draw_lod_case(ax, case, got):
             artists.append(ax.text(x + 0.5, y + 0.5, f"{u:.2f}\n{v:.2f}", ha="center",
                                    va="center", fontsize="xx-small",
                                    color="#888888" if (dr, dc) == (1, 1) else "black",
-                                   bbox={"facecolor": "white", "edgecolor": "none", "pad": 1}))  # fmt: skip
+                                   bbox={"facecolor": "white", "alpha": 0.55,
+                                         "edgecolor": "none", "pad": 1}))  # fmt: skip
+    elif got is not None and tries.hints_spent("pixel_lod"):  # the quad, no values
+        artists.append(ax.add_patch(Rectangle((c0, r0), 2, 2, fill=False, edgecolor="#2b7bba",
+                                              lw=1.5)))  # fmt: skip
     artists.append(ax.add_patch(Rectangle((col, row), 1, 1, fill=False, edgecolor="#ff9f1c",
                                           lw=3)))  # fmt: skip
     ax.set_xlim(c0 - 2, c0 + 4)
@@ -437,4 +552,5 @@ PIXEL_LOD = Exercise(
     once=((RULE, ": as said for the first failing case"),),
     reference=("teachraster.exercises.quad_difference",),  # lanes: the renderer's quad values
     example=2,  # pixel (27, 3): a quad with helpers outside the edge, 7.1's third question
+    slow=" (one call computes one pixel's λ: it should take well under a millisecond)",
 )  # fmt: skip

@@ -24,7 +24,7 @@ from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake, PackageAnswer, copies, variant_mistakes
-from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod, ignores
+from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod
 from .quad_difference import FLOOR, inside, value_at
 from .scalars import num, vec
 from .texture_filtering import (
@@ -264,9 +264,49 @@ _RUNNING: dict = {}
 
 
 def _call(fn, args):
-    """The student's answer on one case, the function noted for :func:`_own`."""
+    """The student's answer on one case, the function noted for :func:`_own`; where it raises,
+    the arguments of the student's own 7.1/7.2/7.3 function it raised in, for :func:`_raised`."""
     _RUNNING["fn"] = getattr(fn, "fn", fn)  # the checker's recorder holds it as ``fn``
-    return as_texel_value(fn(*args))
+    _RUNNING.pop("raised in", None)
+    try:
+        answer = fn(*args)
+    except Exception as exc:
+        _RUNNING["raised in"] = _raised_in(exc)
+        raise
+    return as_texel_value(answer)
+
+
+#: The student's own functions 7.4 calls, and the arguments of each that the words quote.
+CALLEES = {"trilinear": ("(u, v)", "λ"), "pixel_lod": (), "bilinear": ("(u, v)",)}
+
+
+def _raised_in(exc) -> tuple[str, dict] | None:
+    """(name, {argument: value}) of the outermost of the student's own functions (7.1's
+    pixel_lod, 7.3's trilinear, the bilinear it calls) that ``exc`` was raised in, or None
+    (r418 F3: a NaN (u, v) passed to the student's trilinear was told as a bare
+    "ValueError: cannot convert float NaN to integer")."""
+    tri = _own("trilinear")
+    own = {"pixel_lod": _own("pixel_lod"), "trilinear": tri,
+           "bilinear": None if tri is None else _own("bilinear", getattr(tri, "fn", tri))}  # fmt: skip
+    codes = {getattr(f, "__code__", None): name for name, f in own.items() if f is not None}
+    tb = exc.__traceback__
+    while tb is not None:
+        name = codes.get(tb.tb_frame.f_code)
+        if name is not None:
+            code, held = tb.tb_frame.f_code, tb.tb_frame.f_locals
+            values = [held.get(v) for v in code.co_varnames[1 : code.co_argcount]]
+            said = dict(zip(CALLEES[name], values))
+            return name, {k: np.array(v, dtype=float, copy=True) for k, v in said.items()
+                          if _numbers(v)}  # fmt: skip
+        tb = tb.tb_next
+    return None
+
+
+def _numbers(value) -> bool:
+    try:
+        return np.asarray(value, dtype=float).size <= 4
+    except (TypeError, ValueError):
+        return False
 
 
 def _own(name: str, fn=None):
@@ -335,12 +375,32 @@ def _fix_bilinear(args, expected, got) -> str:
 
 
 def _raised(args, error) -> str:
-    """r415 F2: the full shape (H, W, C) of an RGB level passed as 7.1's size."""
+    """r415 F2: the full shape (H, W, C) of an RGB level passed as 7.1's size; r418 F3: the
+    student's own function it raised in, with the arguments it got (a NaN (u, v) named)."""
+    inside = _RUNNING.get("raised in")
+    if inside is not None:
+        return _raised_inside(*inside)
     if "raised ValueError" in error and "unpack" in error and np.ndim(args[0][0]) == 3:
         return (f": this pyramid is RGB, np.shape(level 0) is {np.shape(args[0][0])}; did your "
                 "pixel_lod get it as `size`, and unpack it as (H, W)? 7.1's `size` is "
                 "`shape[:2]`")  # fmt: skip
     return ""
+
+
+def _raised_inside(name: str, values: dict) -> str:
+    """The words for an exception raised in the student's own ``name`` called with
+    ``values``."""
+    bad = [k for k, v in values.items() if not np.all(np.isfinite(v))]
+    shown = ", ".join(f"{k} = {vec(v) if v.size > 1 else num(float(v))}" for k, v in values.items())
+    if bad and "(u, v)" in bad:
+        return (f": it raised inside your {name}, called with {shown}: the (u, v) passed to "
+                f"{name} is not a number; a 0/0 in your weights (a sum that is 0), or a NaN "
+                "carried on?")  # fmt: skip
+    if bad:
+        return (f": it raised inside your {name}, called with {shown}: λ is not a number; what "
+                "did your pixel_lod return here?")  # fmt: skip
+    return (f": it raised inside your {name}, called with {shown}" if shown else
+            f": it raised inside your {name}") + "; does its own check pass?"  # fmt: skip
 
 
 def _fix_lod(args, expected, got) -> str:
@@ -377,40 +437,97 @@ HINT = (
 )
 
 
-def _rule(args, expected, got) -> str:
-    """The steps (staged: :data:`RULE` until two answers failed), but never for an answer that
-    does not read the pyramid: that try does not count towards them (r415 F1)."""
-    brighter = (Pyramid([np.asarray(level, float) + 1 for level in args[0]]), *copies(args[1:]))
-    if ignores(_RUNNING.get("fn"), brighter, got):
+def _value(fn, args):
+    """The student's ``fn`` on ``args`` as an array of numbers, or None (it raised, or gave
+    none)."""
+    try:
+        value = np.asarray(fn(*args), dtype=float)
+    except Exception:  # noqa: BLE001 - the student's code: no value
+        return None
+    return value if np.all(np.isfinite(value)) else None
+
+
+def _not_tried(fn, args, expected, got) -> str | None:
+    """Why the failing value ``got`` shows no attempt at filtering this pixel (the words, with
+    :data:`HINT`), or None for an attempt (r418 F1: ``pyramid[-1][0, 0]`` and then
+    ``pyramid[0][row % 2, col % 2]`` were two tries that unlocked the steps). Any filter mixes
+    texels with weights summing to 1, so a pyramid 1 brighter gives a value 1 brighter; and a
+    sampler follows (u, v): where 1/3 of a texel added to every vertex's (u, v) moves the
+    filtered value, an attempt's value moves too."""
+    if fn is None or got is None:
+        return None
+    pyramid, xy, w, uv, row, col, wrap = args
+    brighter = (Pyramid([np.asarray(level, float) + 1 for level in pyramid]), *copies(args[1:]))
+    lit = _value(fn, brighter)
+    if lit is not None and np.shape(lit) == np.shape(got) and np.allclose(lit, got, rtol=1e-9):
         return (f": with every texel of this pyramid 1 brighter your value is still "
                 f"{_shown(got, got)}: does your function read the pyramid?" + HINT[1:])  # fmt: skip
-    return RULE
+    if lit is None or np.shape(lit) != np.shape(got) or not np.allclose(lit, got + 1, atol=1e-4):
+        return (": with every texel of this pyramid 1 brighter a filtered value is 1 brighter "
+                "(a filter's weights sum to 1); yours goes from "
+                f"{_shown(got, got)} to {'no value' if lit is None else _shown(lit, lit)}:"
+                + HINT[1:])  # fmt: skip
+    h, wt = level_size(pyramid)
+    shift = np.asarray(uv, float) + [1 / (3 * wt), 1 / (3 * h)]  # the same λ, (u, v) moved
+    moved = (*copies((pyramid, xy, w)), shift, row, col, wrap)
+    right = expected_sample(*moved)
+    if np.allclose(right, expected, rtol=0, atol=1e-9):
+        return HINT  # nothing here to tell a filter by: not counted
+    mine = _value(fn, moved)
+    if mine is not None and np.shape(mine) == np.shape(got) and np.allclose(mine, got, atol=1e-9):
+        return (f": with 1/3 of a texel added to every vertex's (u, v) the filtered value "
+                f"moves from {_shown(expected, right)} to {_shown(right, expected)}, yours stays "
+                f"{_shown(got, got)}: does your value follow this pixel's (u, v)?" + HINT[1:])  # fmt: skip
+    return None
+
+
+def _rule(args, expected, got) -> str:
+    """The steps (staged: :data:`RULE` until two answers failed), but only for a failing try
+    that filters the pyramid at some (u, v) (:func:`_not_tried`): other tries never count
+    towards them (r415 F1, r418 F1)."""
+    words = _not_tried(_RUNNING.get("fn"), args, expected, got)
+    return RULE if words is None else words
 
 
 def sample_questions(pyramid) -> str:
-    """7.4's questions answered on 7.1's floor with ``pyramid``: the level the tip reads, and
-    the values of two pixels of one quad."""
+    """7.4's questions answered on 7.1's floor with ``pyramid``: where pixel (27, 3), the one
+    covered pixel of its quad, gets its λ and (u, v), and the values of two pixels of one
+    quad (r418 P2: the questions had been the tip's level, 7.3's own, and one the task's
+    words answered)."""
     xy, w, _ = FLOOR
-    q, size = len(pyramid) - 1, level_size(pyramid)
-    tip = expected_lod(xy, w, FLOOR_UV, size, 5, 14)
-    read = f"level {q} alone (λ clamped to {q})" if tip >= q else f"levels around λ = {num(tip)}"
+    size = level_size(pyramid)
+    lod = expected_lod(xy, w, FLOOR_UV, size, 27, 3)
+    own = pixel_uv(xy, w, FLOOR_UV, 27, 3)
+    lane = _uv(xy, w, FLOOR_UV, 2.5, 26.5)
     a, b = (expected_sample(pyramid, xy, w, FLOOR_UV, r, c, "repeat") for r, c in ((28, 14), (29, 15)))  # fmt: skip
     same = "the same" if np.allclose(a, b) else "different"
     return (
-        f"7.4: the tip (5, 14) asks for λ = {num(tip)}: {read}. (28, 14) and (29, 15) share "
-        f"λ but not (u, v): their filtered values are {_shown(a, b)} and {_shown(b, a)}, {same}"
+        f"7.4: (27, 3) gets its quad's λ = {num(lod)}, from the (u, v) of the three helpers "
+        "alone (upper left, upper right, lower left; its own lane takes no part); the "
+        "texture is read at its own centre (3.5, 27.5), "
+        f"(u, v) = {vec(own)}, not at a helper's (upper-left: {vec(lane)}). (28, 14) and "
+        f"(29, 15) share λ but not (u, v): their values are {_shown(a, b)} and "
+        f"{_shown(b, a)}, {same}"
     )
+
+
+#: 7.4's "answer first" pixels on the floor: the one covered pixel of its quad, two of a quad.
+SAMPLE_PIXELS = ((27, 3), (28, 14), (29, 15))
 
 
 def draw_sample_case(ax, case, got):
     """7.1's close-up at the pixel (the quad drawn once the check passes); the filtered value
-    and yours, with λ and (u, v) once it passes."""
+    and yours, with λ and (u, v) once it passes; with no answer, the whole floor with 7.4's
+    pixels marked."""
     _, (pyramid, xy, w, uv, row, col, wrap), expected = case
     size = level_size(pyramid)
     lod = expected_lod(xy, w, uv, size, row, col)
     passed = got is not None and same_value(got, expected, None)
-    artists = draw_lod_case(ax, ("", (xy, w, uv, size, row, col), lod), lod if passed else None)
+    artists = draw_lod_case(ax, ("", (xy, w, uv, size, row, col), lod), lod if passed else None,
+                            overview=got is None, marked=SAMPLE_PIXELS)  # fmt: skip
     text = f"pixel ({row}, {col}), level 0 {size[0]}×{size[1]}, wrap={wrap!r}"
+    if got is None and np.array_equal(xy, FLOOR[0]):  # the whole floor (r418 FIG1)
+        text = f"the floor the check draws, the questions' pixels marked; this case: {text}"
     if got is not None:
         text += f"; value {_shown(expected, got)}, yours {_shown(got, expected)}"
     if passed:
@@ -430,5 +547,6 @@ PIXEL_SAMPLE = Exercise(
     once=((RULE, ": as said for the first failing case"),),
     reference=("teachraster.exercises.quad_difference", "teachraster.exercises.pixel_level",
                "teachraster.exercises.texture_filtering"),
-    example=2,  # the far tip: λ above the pyramid, clamped
+    example=4,  # pixel (27, 3), its quad's one covered pixel: 7.4's first question (r418)
+    slow=" (one call computes one pixel's value: it should take well under a millisecond)",
 )  # fmt: skip

@@ -649,13 +649,13 @@ LABEL_SIZE = 12
 
 
 def draw_level(ax, tex, uv, wrap, *, at=(0.0, 0.0), texel=(1.0, 1.0), weights=False,
-               labels=True) -> list:  # fmt: skip
+               labels=True, mark=True) -> list:  # fmt: skip
     """One level (a texture) drawn with texel (r, c)'s square from ``at`` + (c, r)·``texel``,
     framed (r375 F6: a white corner texel read as missing), the point (u, v) (×) and, with
     ``weights``, the texel centres and the four texels bilinear blends: boxed, each weight
     written off its centre on the side away from the point (never on the point, nor on a
     neighbour's label: r375 F6), a box beyond the border filled with the texel it stands for
-    and named (without ``labels``, the boxes only)."""
+    and named (without ``labels``, the boxes only; without ``mark``, no ×)."""
     from matplotlib.patches import Rectangle
 
     tex = np.asarray(tex, dtype=float)
@@ -694,7 +694,8 @@ def draw_level(ax, tex, uv, wrap, *, at=(0.0, 0.0), texel=(1.0, 1.0), weights=Fa
                                    color="#2b7bba", ha="left" if dx else "right",
                                    va="top" if dy else "bottom", fontsize=LABEL_SIZE, bbox=box,
                                    arrowprops={"arrowstyle": "-", "color": "#2b7bba", "lw": 1}))  # fmt: skip
-    artists += ax.plot(ox + px * sx, oy + py * sy, "x", color="#d7301f", ms=10, mew=2)
+    if mark:
+        artists += ax.plot(ox + px * sx, oy + py * sy, "x", color="#d7301f", ms=10, mew=2)
     return artists
 
 
@@ -748,7 +749,7 @@ def trilinear_questions(q: int) -> str:
 def draw_pyramid_case(ax, case, got):
     """7.3's case (r375 F5: level 0 was drawn, which λ = 1.5 does not read): before the
     method is earned every level side by side, each in (u, v) from 0 to 1, the point (×) on
-    each; with it (two different answers failed, or this one right) the levels λ reads, each
+    level 0 (r418 P1: on each, it answered 7.3's question whether (u, v) changes); with it (two different answers failed, or this one right) the levels λ reads, each
     with its four weighted texels and its level weight, the same (u, v) on both and the texels
     of the upper twice as large; a passing figure answers 7.3's λ's too."""
     from . import tries
@@ -759,13 +760,14 @@ def draw_pyramid_case(ax, case, got):
     method = got is not None and (tries.hints_spent("trilinear") or passed)
     weights = level_weights(q, lod) if method else {}
     shown = list(weights) if method else list(range(q + 1))
-    artists, gap = [], 0.3
+    artists, gap = [], 0.6 if method else 0.3  # r418 FIG2: "…, weight 0.75" met the next title
     for k, d in enumerate(shown):
         h, w = np.shape(pyramid[d])[:2]
         ox = k * (1 + gap)
         small = max(h, w) <= 8  # the weights written where a texel has room for them
+        # r418 P1: before the method, the × on level 0 only (7.3 asks whether (u, v) changes)
         artists += draw_level(ax, pyramid[d], uv, wrap, at=(ox, 0.0), texel=(1 / w, 1 / h),
-                              weights=method, labels=small)  # fmt: skip
+                              weights=method, labels=small, mark=method or k == 0)  # fmt: skip
         title = f"level {d} ({h}×{w})" + (f", weight {num(weights[d])}" if method else "")
         artists.append(ax.text(ox + 0.5, -0.04, title, ha="center", va="bottom",
                                fontsize=LABEL_SIZE))  # fmt: skip
@@ -773,12 +775,13 @@ def draw_pyramid_case(ax, case, got):
     if passed:  # 7.3's λ's beside the levels, inside the axes (its width follows the levels)
         artists.append(ax.text(right, 0.5, trilinear_questions(q), ha="left", va="center",
                                fontsize="x-small"))  # fmt: skip
-    ax.set_xlim(-0.3, right + (1.9 if passed else 0.0))
+    ax.set_xlim(-0.3, right + (2.2 if passed else 0.0))  # r418 FIG2: ")" met the frame
     ax.set_ylim(1.1, -0.2)
     ax.set_aspect("equal")
     ax.set_xticks([])
     ax.set_yticks([])
-    text = f"uv = {vec(uv)} (× on each level: the same (u, v)), λ = {num(lod)}"
+    where = "× on each level: the same (u, v)" if method else "× on level 0"
+    text = f"uv = {vec(uv)} ({where}), λ = {num(lod)}"
     if method:
         text += f": {_weights_words(q, lod)}"
     if got is not None:
