@@ -2,6 +2,7 @@
 far out and is named (P8); a crossing floored to the 1/256 grid and exact code with two tie
 slips are not told "float64" (M10); int64 overflow is named (H7)."""
 
+import json
 import sys
 from fractions import Fraction
 from pathlib import Path
@@ -57,3 +58,54 @@ def test_exact_code_with_two_tie_slips_is_never_told_float():
     kinds = {f.kind for f in report.failures}
     assert not kinds & {"float64 crossing", "divide first", "slope first"}, kinds
     assert "float64" not in str(report) and "divides first" not in str(report)
+
+
+LESSON_01 = Path(__file__).parents[1] / "notebooks" / "01_span_tables.ipynb"
+EXERCISE_02 = Path(__file__).parents[1] / "notebooks" / "exercises" / "02_span_split.ipynb"
+
+
+def _exact_span_from_the_lessons_pieces(xy, row):
+    """r413 c4: lesson 01 §5's integer DDA for one row, its pieces now the package's."""
+    from teachraster.study.exact_spans import dda_start, first_centre_at_or_after
+
+    s = 256
+    pts = sorted(((round(s * float(x)), round(s * float(y))) for x, y in xy),
+                 key=lambda p: (p[1], p[0]))  # fmt: skip
+    top, mid, bot = pts
+    v = s * row + s // 2
+    d = bot[1] - top[1]
+    u4 = top[0] * d + (mid[1] - top[1]) * (bot[0] - top[0])  # times d
+    if not top[1] <= v < bot[1] or u4 == mid[0] * d:
+        return 0, 0
+    long = dda_start(top, bot, v, s)
+    short = dda_start(top, mid, v, s) if v < mid[1] else dda_start(mid, bot, v, s)
+    left, right = (long, short) if u4 < mid[0] * d else (short, long)
+    return first_centre_at_or_after(left, s), first_centre_at_or_after(right, s)
+
+
+def test_t1_the_lessons_exact_loop_is_the_packages_and_not_counted():
+    """T1: lesson 01 §5 printed the exact integer span fill (r413 c4 passed as the student's
+    own). It lives in teachraster.study.exact_spans now, imported by the lesson and not
+    printed; a wrapper of its pieces is right on every case and named, not counted."""
+    report = ex.check("span", _exact_span_from_the_lessons_pieces)
+    assert not report.failures and not report.passed, str(report)
+    assert "teachraster's dda_start" in report.package and "does not count" in report.package
+    with pytest.raises(AssertionError, match="not counted"):
+        report.assert_passed()
+    cells = json.loads(LESSON_01.read_text())["cells"]
+    code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
+    for printed in ("def dda_start(", "def dda_step(", "def span_fill_int_dda(",
+                    "def first_centre_at_or_after(", "def fixed_start(", "-(-(", "divmod("):  # fmt: skip
+        assert printed not in code, printed
+    assert "from teachraster.study.exact_spans import" in code
+    text = " ".join(
+        " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown").split()
+    )
+    # the idea kept, in the notes' notation, and the pointer to the exercise
+    assert "= q + \\frac{r}{d}, \\qquad 0 \\le r < d" in text and "**carry** one into $q$" in text
+    assert "exercise 2 asks you to write the exact span of one raster line yourself" in text
+    task = " ".join("".join(json.loads(EXERCISE_02.read_text())["cells"][2]["source"]).split())
+    for said in ("§5 keeps that crossing in integers of 1/256 px as q + r/d",
+                 "`teachraster.study.exact_spans`", "|x|, |y| < 2^30 px",
+                 "A centre exactly on an edge is covered when that edge is a left edge"):  # fmt: skip
+        assert said in task, said

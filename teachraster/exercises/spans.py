@@ -25,6 +25,7 @@ import numpy as np
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
+from ..study.exact_spans import span_fill_int_dda
 from .answers import as_numbers, short
 from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
 from .drawing import note_beside
@@ -1461,7 +1462,13 @@ def _changes(gives, far: bool = False):
 
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
-    _mistakes(), answers=(PackageAnswer(rasterize),),
+    _mistakes(), answers=(
+        PackageAnswer(rasterize),
+        # r413 T1: lesson 01 §5 imports the exact integer loop (its code not printed); every
+        # function of its module (dda_start, first_centre_at_or_after, ...) is a part of it
+        PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
+                      modules=("teachraster.study.exact_spans",)),
+    ),
     draw=draw_span, constant=_constant_span, raised_words=_span_raised, hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
