@@ -12,7 +12,14 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-from student_variants import KINDS, R413, R413_TWO_TIE_SLIPS, WRONG, _span_r413  # noqa: E402
+from student_variants import (  # noqa: E402
+    KINDS,
+    R413,
+    R413_H8_H9,
+    R413_TWO_TIE_SLIPS,
+    WRONG,
+    _span_r413,
+)
 
 from teachraster import exercises as ex  # noqa: E402
 from teachraster.exercises import span_variants, spans  # noqa: E402
@@ -109,3 +116,26 @@ def test_t1_the_lessons_exact_loop_is_the_packages_and_not_counted():
                  "`teachraster.study.exact_spans`", "|x|, |y| < 2^30 px",
                  "A centre exactly on an edge is covered when that edge is a left edge"):  # fmt: skip
         assert said in task, said
+
+
+@pytest.mark.parametrize("label", sorted(R413_H8_H9))
+def test_h8_h9_vertices_moved_ceil_slips_and_dropped_rows_are_named(label):
+    """H8: vertices rounded (round(), ⌊c + ½⌋) or snapped to 1/16 px are named with the
+    coordinate they moved; H9: (n + d − 1)//d with d < 0, and an empty span returned on a row
+    inside the triangle, are named, not told the rule alone."""
+    name, fn, words, kind = R413_H8_H9[label]
+    report = ex.check(name, fn)
+    assert not report.passed and report.failures[0].kind == kind, str(report)
+    assert words in report.failures[0].explanation, str(report)
+    assert "float64" not in str(report), str(report)
+    if kind != "empty inside":  # (its top-edge row, dropped too, keeps the rule's words)
+        assert {f.kind for f in report.failures} == {kind}, str(report)
+
+
+def test_h9_a_first_one_right_on_a_tie_says_the_left_edge_owns_it():
+    """H9 (w36's first line): "your first is one column too far right" on a crossing exactly
+    on a centre says whose centre it is."""
+    report = ex.check("span", _span_r413(R413_TWO_TIE_SLIPS))
+    first = report.failures[0].explanation
+    assert "your first is one column too far right" in first, first
+    assert "x_l lies exactly on that centre, and a left edge owns the centres on it" in first

@@ -913,13 +913,18 @@ def _ends_words(args, expected, got) -> str:
     xy, row = args
     cross = crossings(xy, Fraction(2 * row + 1, 2))  # r372 M3: the crossing, not the rule alone
     xl, xr = (f" = {_frac(x)}" for x in cross) if cross is not None else ("", "")
-    if end == "first":
+    on = [cross is not None and (x - HALF).denominator == 1 for x in (cross or (0, 0))]
+    if end == "first":  # r413 H9 (w36): on a tie, whose the centre is
+        tie = (" (x_l lies exactly on that centre, and a left edge owns the centres on it: "
+               "the top-left rule)") if on[0] else ""  # fmt: skip
         return (f"your first is one column too far right: column {min(expected)}, whose "
-                f"centre lies at or right of x_l{xl}, is the first covered one")  # fmt: skip
+                f"centre lies at or right of x_l{xl}, is the first covered one{tie}")  # fmt: skip
     side = "right" if end == "stop right" else "left"
+    tie = (f" (x_r lies exactly on the centre of column {stop}, which a right edge does not "
+           "own: the top-left rule)") if on[1] and side == "right" else ""  # fmt: skip
     return (f"your stop is one column too far {side}: stop is the first column *not* covered, "
-            f"here {stop}, the first whose centre lies at or right of x_r{xr} (your first is "
-            "right)")  # fmt: skip
+            f"here {stop}, the first whose centre lies at or right of x_r{xr}{tie} (your first "
+            "is right)")  # fmt: skip
 
 
 def _ties_off(args, got) -> list[tuple[str, int, Fraction]] | None:
@@ -1183,6 +1188,29 @@ def _swapped_words(args, expected, got) -> str:
             "(or take the smaller one)")  # fmt: skip
 
 
+def _empty_inside_fits(args, expected, got) -> bool:
+    """r413 H9 (w43): an empty span returned on a row whose centre line lies inside the
+    triangle's rows (y1 <= y < y3), where the crossings hold a column (not a side or ends mistake: the
+    pair is no computed one the wrong way round)."""
+    xy, row = args
+    pair, y = _returned(got), Fraction(2 * row + 1, 2)
+    ys = sorted(Fraction(float(p[1])) for p in xy)
+    return (pair is not None and pair[1] <= pair[0] and len(expected) > 0
+            and ys[0] <= y < ys[2] and not _horizontal_edge(xy, y)  # (that one's own words)
+            and not _swapped_fits(args, expected, got))  # fmt: skip
+
+
+def _empty_inside_words(args, expected, got) -> str:
+    xy, row = args
+    ys = sorted(Fraction(float(p[1])) for p in xy)
+    return (f"you returned an empty span {_returned(got)} on a row whose centre line "
+            f"y = {_frac(Fraction(2 * row + 1, 2))} lies inside the triangle's rows "
+            f"(y1 = {_frac(ys[0])} ≤ y < y3 = {_frac(ys[2])}, the top and bottom vertices' y "
+            "after the sort by y): which rows does your code take "
+            "as the triangle's? A row belongs when its centre line does, y1 ≤ row + ½ < y3 "
+            "(⌈y1 − ½⌉ ≤ row < ⌈y3 − ½⌉)")  # fmt: skip
+
+
 def _int64_bits(args) -> int:
     """r413 H7: the most bits of the integer crossing's products on this row, a_x·d and
     (Y − a_y)(b_x − a_x) in 1/256-px units (d = b_y − a_y), over the edges that reach it."""
@@ -1242,6 +1270,7 @@ SYMPTOMS = (
     Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("bottom"), symptom=True),
+    Mistake("empty inside", _empty_inside_words, fits=_empty_inside_fits, symptom=True),
     # r372 M3: one end off the same way on every failing case, or not said
     Mistake("ends", _ends_words, fits=_ends_fits, symptom=True, parameter=_end_number),
 )
