@@ -6438,3 +6438,30 @@ R413_H8_H9 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413_H8_H9.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R413_H8_H9.items()})
+# r403/r413 H6 (fixex02z): the vertices in 1/512 px, the centre line in 1/256-px thinking
+_R413_ROWSCALE = """
+def span(xy, row):
+    q = sorted(((round(float(x) * 512), round(float(y) * 512)) for x, y in xy), key=lambda p: p[1])
+    A, B, C = q
+    Y = 1024 * row + 256  # meant (row + 1/2) * 512
+    if not A[1] <= Y < C[1]:
+        return 0, 0
+    det = (B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0])
+    if det == 0:
+        return 0, 0
+    def at(p, r):
+        num = p[0] * (r[1] - p[1]) + (Y - p[1]) * (r[0] - p[0])
+        den = r[1] - p[1]
+        qq, rem = divmod(num - 256 * den, 512 * den)
+        return qq + (rem != 0)
+    long_ = at(A, C)
+    short = at(A, B) if Y < B[1] else at(B, C)
+    return (long_, short) if det > 0 else (short, long_)
+"""
+R413_H6 = {
+    "span with the centre line 2·row + ½ (units mixed, 1/512 px against 1/256)": (
+        "span", _span_r413(_R413_ROWSCALE), "your span is the one of the line y = 2·row + ½ = ",
+        "line 2·row + ½"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413_H6.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R413_H6.items()})

@@ -15,6 +15,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 from student_variants import (  # noqa: E402
     KINDS,
     R413,
+    R413_H6,
     R413_H8_H9,
     R413_TWO_TIE_SLIPS,
     WRONG,
@@ -118,12 +119,12 @@ def test_t1_the_lessons_exact_loop_is_the_packages_and_not_counted():
         assert said in task, said
 
 
-@pytest.mark.parametrize("label", sorted(R413_H8_H9))
+@pytest.mark.parametrize("label", sorted(R413_H8_H9) + sorted(R413_H6))
 def test_h8_h9_vertices_moved_ceil_slips_and_dropped_rows_are_named(label):
     """H8: vertices rounded (round(), ⌊c + ½⌋) or snapped to 1/16 px are named with the
-    coordinate they moved; H9: (n + d − 1)//d with d < 0, and an empty span returned on a row
+    coordinate they moved; H6: a centre line in other units (2·row + ½) is named; H9: (n + d − 1)//d with d < 0, and an empty span returned on a row
     inside the triangle, are named, not told the rule alone."""
-    name, fn, words, kind = R413_H8_H9[label]
+    name, fn, words, kind = {**R413_H8_H9, **R413_H6}[label]
     report = ex.check(name, fn)
     assert not report.passed and report.failures[0].kind == kind, str(report)
     assert words in report.failures[0].explanation, str(report)

@@ -470,9 +470,11 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         top = _horizontal_edge(xy, y) == "top"
         out["no top edge"] = frozenset() if top else exact_columns(xy, row)
     out.update(_edge_variants(xy, row))
-    for kind, dy in SHIFTS.items():  # the wrong line: the pixels' top, bottom, the next row
-        cross = crossings(xy, row + dy)  # (a bottom edge on that line owns none, r372)
-        bottom = _horizontal_edge(xy, float(row + dy)) == "bottom"
+    lines = {kind: row + dy for kind, dy in SHIFTS.items()}
+    lines.update({kind: line(row) for kind, line in SCALED.items()})  # r403/r413 H6
+    for kind, y_wrong in lines.items():  # the wrong line: the pixels' top, bottom, the next row
+        cross = crossings(xy, y_wrong)  # (a bottom edge on that line owns none, r372)
+        bottom = _horizontal_edge(xy, float(y_wrong)) == "bottom"
         out[kind] = frozenset() if cross is None or bottom else _columns(math.ceil(cross[0] - half),
                                                                math.ceil(cross[1] - half))  # fmt: skip
     swapped = np.asarray(xy)[:, ::-1]
@@ -547,6 +549,26 @@ def _float64_same(got, answer, args) -> bool:
 #: row + 1 and row + 1.5 were named "row top" or "ends").
 SHIFTS = {"row top": Fraction(0), "row − ½": Fraction(-1, 2), "row + 1": Fraction(1),
           "row + 1.5": Fraction(3, 2)}  # fmt: skip
+
+
+#: r403/r413 H6 (r403 w28): the centre line in units twice or half the vertices' (vertices in
+#: 1/512 px, the line 1024·row + 256 of 1/256-px thinking: y = 2·row + ½ px)
+SCALED = {"line 2·row + ½": lambda row: 2 * row + HALF,
+          "line (row + ½)/2": lambda row: Fraction(2 * row + 1, 4)}  # fmt: skip
+
+
+def _scaled_words(kind: str):
+    """The words of a centre line in other units, with the line's y on the case."""
+
+    def words(args, expected, got) -> str:
+        row = args[1]
+        return (f"your span is the one of the line y = {kind.removeprefix('line ')} = "
+                f"{_frac(SCALED[kind](row))}, not of this row's centre line y = row + ½ = "
+                f"{_frac(row + HALF)}: the centre line and the vertices are in different units "
+                "(vertices times 512 and the line in 1/256-px steps, say); with the vertices "
+                "times s, the centre line is s·row + s/2")  # fmt: skip
+
+    return words
 
 
 def _pick_pair(long_x, short_x, long_is_left: bool) -> frozenset:
@@ -675,6 +697,7 @@ MISTAKES = {
     "with the line of their centres, y = row + ½",
     "row + 1.5": "you intersected the edges with y = row + 1.5, the centres of the row below, "
     "not with this row's centre line, y = row + ½",
+    **{kind: _scaled_words(kind) for kind in SCALED},
     "no top edge": "you left out the centres on a horizontal top edge that runs along the "
     "centre line (a bottom edge you handled right): a top edge, with the triangle below it, "
     "owns its centres",
