@@ -6592,3 +6592,95 @@ R418_PIXEL = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R418_PIXEL.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R418_PIXEL.items()})
+# == r413 H8, H9 (fixex02z, exercise 2.1 span: vertices moved off the grid, ceil slips, rows) =====
+_R413_EXACT_TAIL = """
+    (x1, y1), (x2, y2), (x3, y3) = P
+    y = Fraction(2 * row + 1, 2)
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not ROWS:
+        return 0, 0
+    def cross(a, b):
+        return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    xl = cross(P[0], P[2])
+    xs = cross(P[0], P[1]) if y < y2 else cross(P[1], P[2])
+    left, right = (xl, xs) if side > 0 else (xs, xl)
+    return math.ceil(left - Fraction(1, 2)), math.ceil(right - Fraction(1, 2))
+"""
+
+
+def _r413_moved(move: str, rows: str = "y1 <= y < y3"):
+    """The reader's exact span (Fraction) on vertices moved by ``move`` ("{}": a coordinate)."""
+    head = (
+        "def span(xy, row):\n"
+        f"    P = sorted(((Fraction({move.format('float(x)')}), "
+        f"Fraction({move.format('float(y)')})) for x, y in xy), key=lambda p: p[1])"
+    )
+    return _span_r413(head + _R413_EXACT_TAIL.replace("ROWS", f"({rows})"))
+
+
+_R413_NEG_DIVISOR = """
+def span(xy, row):
+    # integers; the long edge taken from the bottom vertex up, ceil(n/d) as (n + d - 1)//d
+    P = sorted([(round(x * 256), round(y * 256)) for x, y in np.asarray(xy, dtype=float)],
+               key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = P
+    Y = 256 * row + 128
+    area = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
+    if area == 0 or Y < y1 or Y >= y3:
+        return 0, 0
+    def end(a, b):
+        d = b[1] - a[1]
+        n = a[0] * d + (Y - a[1]) * (b[0] - a[0]) - 128 * d
+        D = 256 * d
+        return (n + D - 1) // D
+    e_long = end(P[2], P[0])
+    e_short = end(P[0], P[1]) if Y < y2 else end(P[1], P[2])
+    return (e_long, e_short) if area > 0 else (e_short, e_long)
+"""
+R413_H8_H9 = {
+    "span on the vertices rounded to whole pixels (round)": (
+        "span", _r413_moved("round({})"), "you rounded the vertices to whole pixels (round())",
+        "vertices rounded"),
+    "span on the vertices rounded half up (floor(c + 1/2))": (
+        "span", _r413_moved("math.floor({} + 0.5)"), "you rounded the vertices to whole pixels "
+        "(⌊c + ½⌋)", "vertices rounded half up"),
+    "span on the vertices snapped to 1/16 px": (
+        "span", _r413_moved("Fraction(round({} * 16), 16)"), "(here y = 1.50390625 of v2 became "
+        "1.5)", "vertices on the 1/16 grid"),
+    "span in integers, the long edge from its lower end, ceil as (n + d − 1)//d": (
+        "span", _span_r413(_R413_NEG_DIVISOR), "is one too large there when the divisor d is "
+        "negative", "ceil, negative divisor"),
+    "span with rows floor(y1) <= row < floor(y3)": (
+        "span", _r413_moved("{}", "math.floor(y1) <= row < math.floor(y3) and y1 <= y <= y3"),
+        "you returned an empty span (0, 0) on a row whose centre line y = 2.5 lies inside the "
+        "triangle's rows", "empty inside"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413_H8_H9.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R413_H8_H9.items()})
+# r403/r413 H6 (fixex02z): the vertices in 1/512 px, the centre line in 1/256-px thinking
+_R413_ROWSCALE = """
+def span(xy, row):
+    q = sorted(((round(float(x) * 512), round(float(y) * 512)) for x, y in xy), key=lambda p: p[1])
+    A, B, C = q
+    Y = 1024 * row + 256  # meant (row + 1/2) * 512
+    if not A[1] <= Y < C[1]:
+        return 0, 0
+    det = (B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0])
+    if det == 0:
+        return 0, 0
+    def at(p, r):
+        num = p[0] * (r[1] - p[1]) + (Y - p[1]) * (r[0] - p[0])
+        den = r[1] - p[1]
+        qq, rem = divmod(num - 256 * den, 512 * den)
+        return qq + (rem != 0)
+    long_ = at(A, C)
+    short = at(A, B) if Y < B[1] else at(B, C)
+    return (long_, short) if det > 0 else (short, long_)
+"""
+R413_H6 = {
+    "span with the centre line 2·row + ½ (units mixed, 1/512 px against 1/256)": (
+        "span", _span_r413(_R413_ROWSCALE), "your span is the one of the line y = 2·row + ½ = ",
+        "line 2·row + ½"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413_H6.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R413_H6.items()})

@@ -10,6 +10,7 @@ links, and no cell that silently moves a widget the student is using. The new pi
 
 from __future__ import annotations
 
+import inspect
 import json
 import re
 from fractions import Fraction
@@ -34,6 +35,7 @@ from teachraster.plotting.zbuffer_steps import (  # noqa: E402
     fragment_classes,
     fragment_counts,
 )
+from teachraster.study import exact_spans  # noqa: E402
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
 MINE = [
@@ -947,14 +949,16 @@ def test_01_exact_stepping_is_not_one_addition():
         "An **integer DDA** (quotient and remainder, Hecker's) fills a wrong pixel on none" in text
     )
     # the loop does what the text counts: per edge and line q += dq, r += dr, one compare
-    fixed = next("".join(c["source"]) for c in every
-                 if "def span_fill_int_dda(" in "".join(c["source"]))  # fmt: skip
+    # (r413 T1: the loop is the package's, teachraster.study.exact_spans, imported, not printed:
+    # exercise 2 asks for the exact span)
+    fixed = inspect.getsource(exact_spans)
+    assert not any("def span_fill_int_dda(" in "".join(c["source"]) for c in every)
     # (r196 01-12: the start and the step are functions of their own, which the worked table
     # of one edge calls too; the loop steps both edges with the step)
-    loop = fixed.split("def span_fill_int_dda(")[1].split("def fixed_start(")[0]
+    loop = fixed.split("def span_fill_int_dda(")[1].split("def _crossing(")[0]
     assert "for e in (long, short):\n            dda_step(e)" in loop
     assert loop.count("dda_start(") == 2 and "divmod(" not in loop
-    step = fixed.split("def dda_step(")[1].split("def span_fill_int_dda(")[0]
+    step = fixed.split("def dda_step(")[1].split("def first_centre_at_or_after(")[0]
     assert "e[0], e[1] = e[0] + e[3], e[1] + e[4]" in step and step.count("if e[1] >= e[2]") == 1
     # ... and its set-up: two integer divisions per edge (the first crossing and the step), six
     # for the three edges, as the text says (lesson 06 prices the same six)

@@ -215,8 +215,47 @@ KINDS = (
     "divide first", "slope first", "upper denominator", "slope inverted", "long edge sign",
     "side by given winding", "side by the short edge", "long edge below the split", "lower edge above the split",
     "sorted by x", "vertices on centres", "not sorted", "vertices truncated", "longest edge",
-    "bounding box", "side in float64",
+    "bounding box", "side in float64", "vertices rounded", "vertices rounded half up",
+    "vertices on the 1/16 grid", "ceil, negative divisor",
 )  # fmt: skip
+
+#: r413 H8: vertices moved off the 1/256 grid before computing: kind -> (how, the move).
+MOVES = {
+    "vertices rounded": ("rounded the vertices to whole pixels (round())", np.round),
+    "vertices rounded half up": ("rounded the vertices to whole pixels (⌊c + ½⌋)",
+                                 lambda c: np.floor(c + 0.5)),
+    "vertices on the 1/16 grid": ("snapped the vertices to the 1/16-px grid (round(16·c)/16)",
+                                  lambda c: np.round(c * 16) / 16),
+}  # fmt: skip
+
+
+#: r413 H9 (w44): a ceiling (n + d − 1)//d with d < 0
+NEGATIVE_DIVISOR = (
+    "where a crossing lies exactly on a centre, your end is one column right of it: a ceiling "
+    "written (n + d − 1)//d is one too large there when the divisor d is negative (an edge "
+    "taken from its lower end up, so its height y_a − y_b < 0); −(−n // d) is the ceiling for "
+    "either sign, or take each edge from its upper end"
+)
+
+
+def _moved_words(kind: str):
+    """r413 H8: the words of a move, with the first coordinate it changes on the case."""
+    how, move = MOVES[kind]
+
+    def words(args, expected, got) -> str:
+        xy = np.asarray(args[0], dtype=float)
+        moved = move(xy)
+        k, axis = next(zip(*np.nonzero(moved != xy)), (None, None))
+        where = "" if k is None else (
+            f" (here {'xy'[axis]} = {xy[k, axis]:.10g} of v{k + 1} became {moved[k, axis]:.10g})"
+        )  # fmt: skip
+        return (
+            f"your span is the one of the triangle with its vertices moved: you {how} before "
+            f"computing{where}. Use the vertices as given: they lie on the 1/256-px grid "
+            "(256·c is a whole number), anywhere inside a pixel"
+        )
+
+    return words
 
 
 def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozenset]:
@@ -230,6 +269,8 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     out["sorted by x"] = _sorted_by_x(xy, row)
     # r385 M7, M8: the vertices truncated with int(), used in the order given, the longest edge
     out["vertices truncated"] = exact(np.trunc(np.asarray(xy, dtype=float)), row)
+    for kind, (_, move) in MOVES.items():  # r413 H8: rounded, or on a coarser grid
+        out[kind] = exact(move(np.asarray(xy, dtype=float)), row)
     out["not sorted"] = _unsorted(xy, row)
     out["longest edge"] = _longest_edge(xy, row)
     ys, xs = [float(p[1]) for p in xy], [Fraction(float(p[0])) for p in xy]
@@ -239,6 +280,10 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     (x1, y1), (x2, y2), (x3, y3) = v
     y = Fraction(2 * row + 1, 2)
     area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if area != 0 and y1 == y2 == y != y3:  # r413 H9: along a top edge, its ends (the long
+        # edge's at the top vertex, the first of the two listed: a sort by y alone keeps it)
+        ends = sorted((_past_tie(x1), x2))
+        out["ceil, negative divisor"] = _cols(*ends)
     if area == 0 or not y1 <= y <= y3 or y1 == y2 == y or y2 == y3 == y:
         return out
     upper = y < y2
@@ -265,11 +310,21 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
         out["side in float64"] = _pick(long_x, short_x, not long_is_left)
         if out["side in float64"] is not None:  # matched as it is: its ends are exact
             out["side in float64"].strict = True
+    # r413 H9 (w44): ⌈n/d⌉ as (n + d − 1)//d with d < 0 (an edge taken from its lower end up):
+    # one column right where the long edge's crossing is exactly on a centre (every edge's so:
+    # "ties reversed", C's int(x + 0.5), the same answers)
+    if y < y3:  # (the bottom vertex's line has no span to move)
+        out["ceil, negative divisor"] = _pick(_past_tie(long_x), short_x, long_is_left)
     if not upper:  # r372 M4 (w43): the long edge taken as the lower short one too
         out["long edge below the split"] = pair_columns(long_x, long_x)
     elif y2 != y3:  # r372 H1 (w44): the lower short edge's line above the split too
         out["lower edge above the split"] = _pick(long_x, _at(v[1], v[2], y), long_is_left)
     return out
+
+
+def _past_tie(x: Fraction) -> Fraction:
+    """x moved a hair right where it lies exactly on a centre (its column one further right)."""
+    return x + Fraction(1, 2**80) if (x - Fraction(1, 2)).denominator == 1 else x
 
 
 def _float_sides(fv) -> list[tuple[float, float]]:
@@ -474,6 +529,8 @@ WORDS = {
     "bounding box": "you covered the triangle's bounding box, from its leftmost vertex to its "
     "rightmost one, on every row: a row's span runs between the two edges that cross its "
     "centre line, x_l and x_r, which move from row to row",
+    **{kind: _moved_words(kind) for kind in MOVES},
+    "ceil, negative divisor": NEGATIVE_DIVISOR,
     "vertices on centres": "you moved the vertices to pixel centres (⌊c⌋ + ½) before "
     "computing: the crossings are those of the triangle as given, its vertices on the "
     "1/256-px grid anywhere inside a pixel",

@@ -25,6 +25,7 @@ import numpy as np
 
 from ..core.fill import rasterize
 from ..core.triangle import Triangle
+from ..study.exact_spans import span_fill_int_dda
 from .answers import as_numbers, short
 from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
 from .drawing import note_beside
@@ -469,9 +470,11 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         top = _horizontal_edge(xy, y) == "top"
         out["no top edge"] = frozenset() if top else exact_columns(xy, row)
     out.update(_edge_variants(xy, row))
-    for kind, dy in SHIFTS.items():  # the wrong line: the pixels' top, bottom, the next row
-        cross = crossings(xy, row + dy)  # (a bottom edge on that line owns none, r372)
-        bottom = _horizontal_edge(xy, float(row + dy)) == "bottom"
+    lines = {kind: row + dy for kind, dy in SHIFTS.items()}
+    lines.update({kind: line(row) for kind, line in SCALED.items()})  # r403/r413 H6
+    for kind, y_wrong in lines.items():  # the wrong line: the pixels' top, bottom, the next row
+        cross = crossings(xy, y_wrong)  # (a bottom edge on that line owns none, r372)
+        bottom = _horizontal_edge(xy, float(y_wrong)) == "bottom"
         out[kind] = frozenset() if cross is None or bottom else _columns(math.ceil(cross[0] - half),
                                                                math.ceil(cross[1] - half))  # fmt: skip
     swapped = np.asarray(xy)[:, ::-1]
@@ -546,6 +549,26 @@ def _float64_same(got, answer, args) -> bool:
 #: row + 1 and row + 1.5 were named "row top" or "ends").
 SHIFTS = {"row top": Fraction(0), "row − ½": Fraction(-1, 2), "row + 1": Fraction(1),
           "row + 1.5": Fraction(3, 2)}  # fmt: skip
+
+
+#: r403/r413 H6 (r403 w28): the centre line in units twice or half the vertices' (vertices in
+#: 1/512 px, the line 1024·row + 256 of 1/256-px thinking: y = 2·row + ½ px)
+SCALED = {"line 2·row + ½": lambda row: 2 * row + HALF,
+          "line (row + ½)/2": lambda row: Fraction(2 * row + 1, 4)}  # fmt: skip
+
+
+def _scaled_words(kind: str):
+    """The words of a centre line in other units, with the line's y on the case."""
+
+    def words(args, expected, got) -> str:
+        row = args[1]
+        return (f"your span is the one of the line y = {kind.removeprefix('line ')} = "
+                f"{_frac(SCALED[kind](row))}, not of this row's centre line y = row + ½ = "
+                f"{_frac(row + HALF)}: the centre line and the vertices are in different units "
+                "(vertices times 512 and the line in 1/256-px steps, say); with the vertices "
+                "times s, the centre line is s·row + s/2")  # fmt: skip
+
+    return words
 
 
 def _pick_pair(long_x, short_x, long_is_left: bool) -> frozenset:
@@ -674,6 +697,7 @@ MISTAKES = {
     "with the line of their centres, y = row + ½",
     "row + 1.5": "you intersected the edges with y = row + 1.5, the centres of the row below, "
     "not with this row's centre line, y = row + ½",
+    **{kind: _scaled_words(kind) for kind in SCALED},
     "no top edge": "you left out the centres on a horizontal top edge that runs along the "
     "centre line (a bottom edge you handled right): a top edge, with the triangle below it, "
     "owns its centres",
@@ -912,13 +936,18 @@ def _ends_words(args, expected, got) -> str:
     xy, row = args
     cross = crossings(xy, Fraction(2 * row + 1, 2))  # r372 M3: the crossing, not the rule alone
     xl, xr = (f" = {_frac(x)}" for x in cross) if cross is not None else ("", "")
-    if end == "first":
+    on = [cross is not None and (x - HALF).denominator == 1 for x in (cross or (0, 0))]
+    if end == "first":  # r413 H9 (w36): on a tie, whose the centre is
+        tie = (" (x_l lies exactly on that centre, and a left edge owns the centres on it: "
+               "the top-left rule)") if on[0] else ""  # fmt: skip
         return (f"your first is one column too far right: column {min(expected)}, whose "
-                f"centre lies at or right of x_l{xl}, is the first covered one")  # fmt: skip
+                f"centre lies at or right of x_l{xl}, is the first covered one{tie}")  # fmt: skip
     side = "right" if end == "stop right" else "left"
+    tie = (f" (x_r lies exactly on the centre of column {stop}, which a right edge does not "
+           "own: the top-left rule)") if on[1] and side == "right" else ""  # fmt: skip
     return (f"your stop is one column too far {side}: stop is the first column *not* covered, "
-            f"here {stop}, the first whose centre lies at or right of x_r{xr} (your first is "
-            "right)")  # fmt: skip
+            f"here {stop}, the first whose centre lies at or right of x_r{xr}{tie} (your first "
+            "is right)")  # fmt: skip
 
 
 def _ties_off(args, got) -> list[tuple[str, int, Fraction]] | None:
@@ -1182,6 +1211,29 @@ def _swapped_words(args, expected, got) -> str:
             "(or take the smaller one)")  # fmt: skip
 
 
+def _empty_inside_fits(args, expected, got) -> bool:
+    """r413 H9 (w43): an empty span returned on a row whose centre line lies inside the
+    triangle's rows (y1 <= y < y3), where the crossings hold a column (not a side or ends mistake: the
+    pair is no computed one the wrong way round)."""
+    xy, row = args
+    pair, y = _returned(got), Fraction(2 * row + 1, 2)
+    ys = sorted(Fraction(float(p[1])) for p in xy)
+    return (pair is not None and pair[1] <= pair[0] and len(expected) > 0
+            and ys[0] <= y < ys[2] and not _horizontal_edge(xy, y)  # (that one's own words)
+            and not _swapped_fits(args, expected, got))  # fmt: skip
+
+
+def _empty_inside_words(args, expected, got) -> str:
+    xy, row = args
+    ys = sorted(Fraction(float(p[1])) for p in xy)
+    return (f"you returned an empty span {_returned(got)} on a row whose centre line "
+            f"y = {_frac(Fraction(2 * row + 1, 2))} lies inside the triangle's rows "
+            f"(y1 = {_frac(ys[0])} ≤ y < y3 = {_frac(ys[2])}, the top and bottom vertices' y "
+            "after the sort by y): which rows does your code take "
+            "as the triangle's? A row belongs when its centre line does, y1 ≤ row + ½ < y3 "
+            "(⌈y1 − ½⌉ ≤ row < ⌈y3 − ½⌉)")  # fmt: skip
+
+
 def _int64_bits(args) -> int:
     """r413 H7: the most bits of the integer crossing's products on this row, a_x·d and
     (Y − a_y)(b_x − a_x) in 1/256-px units (d = b_y − a_y), over the edges that reach it."""
@@ -1241,6 +1293,7 @@ SYMPTOMS = (
     Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("bottom"), symptom=True),
+    Mistake("empty inside", _empty_inside_words, fits=_empty_inside_fits, symptom=True),
     # r372 M3: one end off the same way on every failing case, or not said
     Mistake("ends", _ends_words, fits=_ends_fits, symptom=True, parameter=_end_number),
 )
@@ -1461,7 +1514,13 @@ def _changes(gives, far: bool = False):
 
 SPAN = Exercise(
     "span", span_cases, as_span, same_span, explain_span, _rule,
-    _mistakes(), answers=(PackageAnswer(rasterize),),
+    _mistakes(), answers=(
+        PackageAnswer(rasterize),
+        # r413 T1: lesson 01 §5 imports the exact integer loop (its code not printed); every
+        # function of its module (dda_start, first_centre_at_or_after, ...) is a part of it
+        PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
+                      modules=("teachraster.study.exact_spans",)),
+    ),
     draw=draw_span, constant=_constant_span, raised_words=_span_raised, hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "

@@ -10,6 +10,8 @@ Lessons 06 and 07 in code. Nothing here is imported by ``import teachraster``:
   temporal antialiasing's history of jittered frames;
 - :mod:`.anisotropic_lod`: Vulkan's and Direct3D's anisotropic level of detail, beside the
   sampler's GL formula (lesson 09);
+- :mod:`.exact_spans`: lesson 01's stepped span fills, the exact integer DDA and 16.16 fixed
+  point (exercise 2's check counts their use as the package's answer);
 - :mod:`.opengl`: the same triangles through OpenGL (Mesa's llvmpipe), for cross-checks;
 - :mod:`.opengl_owners`: who owns each pixel of a 2-D mesh in llvmpipe (lesson 07);
 - :mod:`.llvmpipe_binner`: llvmpipe's binning choices (32- or 64-bit stepping, the command
