@@ -185,7 +185,8 @@ def lowest(expected, got=None) -> float:
     float32 answer, or one made float (``float(step / slope)`` with a float32 step divides in
     float32, and is right)."""
     low = expected * (1 - BELOW)
-    held = got is not None and np.isfinite(got) and float(np.float32(got)) == float(got)
+    with np.errstate(over="ignore"):  # a huge answer: no float32 holds it
+        held = got is not None and np.isfinite(got) and float(np.float32(got)) == float(got)
     if getattr(got, "dtype", None) == np.float32 or held:
         low = min(low, expected - FLOAT32_STEPS * float(np.spacing(np.float32(expected))))
     return low
