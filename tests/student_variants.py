@@ -6684,3 +6684,114 @@ R413_H6 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R413_H6.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R413_H6.items()})
+
+
+# == r417: reverse_z_worst graded to 1e-8 (F1), causes named only where they give every
+# answer (F3, F5); depth_setup's size rule (F2) ============================================
+
+
+def _r417_dense(count, space=np.linspace, f32=False):
+    """A vectorised search: float32's step at d over the slope at ``count`` depths (float32
+    division with ``f32``)."""
+
+    def reverse_z_worst(z_min, z_max, near, far):
+        z = space(z_min, z_max, count)
+        d = ((near / z - near / far) / (1 - near / far)).astype(np.float32)
+        slope = near / ((1 - near / far) * z * z)
+        if f32:
+            return np.max(np.spacing(d) / slope.astype(np.float32))
+        return float(np.max(np.spacing(d).astype(float) / slope))
+
+    return reverse_z_worst
+
+
+def _r417_closed(gap, outside=False, pick=max, z_power=2):
+    """z_max by ``gap`` and the closed form at each crossing (those outside the range too
+    with ``outside``; z to ``z_power``), ``pick`` of them."""
+
+    def reverse_z_worst(z_min, z_max, near, far):
+        k = 1 - near / far
+        d = lambda z: (near / z - near / far) / k  # noqa: E731
+        out = [gap(z_max, near, far)]
+        low, top = int(np.ceil(np.log2(d(z_max)))), int(np.floor(np.log2(d(z_min))))
+        for e in range(low - 3 * outside, top + 1 + 3 * outside):
+            z = near / (2.0**e * k + near / far)
+            if outside or z_min <= z <= z_max:
+                out.append(2.0 ** (e - 23) * k * z**z_power / near)
+        return pick(out)
+
+    return reverse_z_worst
+
+
+def _r417_gap_f32_division(z, near, far):
+    """5.2 with the step divided in float32 (a float32 step over a Python float), made float."""
+    d = (near / z - near / far) / (1 - near / far)
+    return float(np.spacing(np.float32(d)) / (near / ((1 - near / far) * z * z)))
+
+
+DIFFERENT.update({
+    "reverse-Z worst, 5.2 dividing in float32 and made float, at z_max and each crossing": (
+        "reverse_z_worst", _r417_closed(_r417_gap_f32_division)),
+    "reverse-Z worst, 5.2 returning np.float32 at z_max, the closed form at the crossings": (
+        "reverse_z_worst", _r417_closed(
+            lambda z, n, f: np.spacing(np.float32((n / z - n / f) / (1 - n / f)))
+            / (n / ((1 - n / f) * z * z)))),
+    "reverse-Z worst, 5.2 a hair (1e-9) nearer than each crossing": (
+        "reverse_z_worst", lambda a, b, n, f: max(
+            [_rs.reverse_z_gap(b, n, f)]
+            + [_rs.reverse_z_gap(z * (1 - 1e-9), n, f) for _, z in _r404_crossings(a, b, n, f)])),
+})  # fmt: skip
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R417 = {
+    "reverse-Z worst, the largest of 50,001 evenly spaced depths": (
+        "reverse_z_worst", _r414_sampled(50001), "a search over sampled depths? The coarsest "
+        "step lies just nearer than z = 450.333, where d falls to 2^-13; your samples stopped at",
+        "search missed the edge"),
+    "reverse-Z worst, the largest of 10^6 evenly spaced depths, vectorised": (
+        "reverse_z_worst", _r417_dense(1_000_001), "your samples stopped at about z =",
+        "search missed the edge"),
+    "reverse-Z worst, the largest of 10^7 evenly spaced depths, vectorised": (
+        "reverse_z_worst", _r417_dense(10_000_001), "just nearer than z = 450.333, where d "
+        "falls to 2^-13), where the check allows 1e-08", "search missed the edge"),
+    "reverse-Z worst, the largest of 10^7 geometrically spaced depths, vectorised": (
+        "reverse_z_worst", _r417_dense(10_000_001, np.geomspace), "A search over sampled "
+        "depths (it falls short by about twice its spacing", "search missed the edge"),
+    "reverse-Z worst, the finest of the right candidates": (
+        "reverse_z_worst", _r417_closed(_rs.reverse_z_gap, pick=min),
+        "but returned the finest of them", "finest candidate"),
+    "reverse-Z worst, z not squared at the crossings": (
+        "reverse_z_worst", _r417_closed(_rs.reverse_z_gap, z_power=1),
+        "you took the step times z, not z²", "crossings, z not squared"),
+    "reverse-Z worst, crossings outside the range kept": (
+        "reverse_z_worst", _r417_closed(_rs.reverse_z_gap, outside=True),
+        "where d falls to 2^-13: outside this range, 200 to 300", "crossing outside the range"),
+    "reverse-Z worst, z_min's step at z_max": (
+        "reverse_z_worst", lambda a, b, n, f: float(np.spacing(np.float32(
+            (n / a - n / f) / (1 - n / f)))) * (1 - n / f) * b * b / n,
+        "you took the step of d at z_min", "z_min's step at z_max"),
+    "reverse-Z worst, z_max's own Δz on ranges narrower than 500": (
+        "reverse_z_worst", lambda a, b, n, f: (
+            _rs.reverse_z_gap(b, n, f) if b - a < 500 else _rs.reverse_z_worst(a, b, n, f)),
+        "that is z_max's own Δz: on this case a depth inside the range", "z_max's own here"),
+    "depth set-up preferring reverse-Z wherever it works": (
+        "depth_setup", lambda z, gap, far, nearest: (
+            ("reverse-z", nearest, _rs.reverse_z_gap(z, nearest, far))
+            if _rs.reverse_z_gap(z, nearest, far) <= gap else (
+                ("unorm24" if _rs.safe_near(z, gap, far, 24) <= nearest else "neither"),
+                nearest, (far - nearest) * z * z / ((2**24 - 1) * far * nearest))),
+        "unorm24 does it here too", "reverse-Z preferred"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R417.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R417.items()})
+# r417 F1: a sampled search is no longer right: 400,001 geometric depths fall 1e-7 short
+R417_SEARCH = {
+    "reverse-Z worst by a fine geometric search": (
+        "reverse_z_worst", DIFFERENT.pop("reverse-Z worst by a fine geometric search")[1],
+        "a search over sampled depths", "search missed the edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R417_SEARCH.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R417_SEARCH.items()})
+# r417 F2: reverse-Z first is now named as a cause ("you chose reverse-Z where it resolves the
+# gap, but unorm24 does it here too"), before its symptom "unorm24 preferred"
+KINDS["depth set-up preferring reverse-Z"] = "reverse-Z preferred"

@@ -82,9 +82,17 @@ def test_drawn_cases_have_their_worst_inside_the_range():
 def test_the_task_states_the_band_its_check_allows():
     cells = json.loads(NOTEBOOK.read_text())["cells"]
     ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells]
+    # r417 F7: the prediction, a place to write it (the function's cell, which the student
+    # edits: every other cell is locked), then the task and its rule
     text = "".join(cells[ids.index("reverse_z_worst_task")]["source"])
-    for share in (rzw.BELOW, rzw.SLACK):
-        assert f"{share * 100:g} %" in text, text
+    asked = text.split("\n---\n")[0]
+    assert "predict" in asked and "power of two" not in asked, asked
+    stub = "".join(cells[ids.index("reverse_z_worst_solution")]["source"])
+    assert stub.startswith("# Your prediction (not graded)"), stub
+    # r417 F1: 10^-8 below (no sampled search within the time limit comes that close)
+    assert f"10^{int(np.log10(rzw.BELOW))} (relative) below" in text, text
+    assert f"{rzw.SLACK * 100:g} % above" in text and "seldom" not in text, text
+    assert rzw.FLOAT32_STEPS == 2 and "two of float32's steps below" in text, text
     assert ids.index("reverse_z_gap_check") < ids.index("reverse_z_worst_task")
     assert "predict" in text and text.index("predict") < text.index("Write `reverse_z_worst")
 

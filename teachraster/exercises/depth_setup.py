@@ -480,6 +480,24 @@ def _words_16(args, expected, got) -> str:
             f"n = {num(n24, n16)} for them")  # fmt: skip
 
 
+def _reverse_first(z, gap, far, nearest):
+    """The format (numbers left open) of a student who takes reverse-Z wherever it resolves
+    the gap, and unorm24 only where it does not (r417 F2)."""
+    if expected_gap(z, nearest, far) <= gap:
+        return REVERSE, None, None
+    return (UNORM if expected_near(z, gap, far, 24) <= nearest else NEITHER), None, None
+
+
+def _words_reverse_first(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    return (f": you chose reverse-Z where it resolves the gap, but unorm24 does it here too, "
+            f"with any near plane from {num(expected_near(z, gap, far, 24))} (5.1) to "
+            f"`nearest` = {num(nearest)}. Of two set-ups that both keep the surfaces apart the "
+            "task takes the smaller format: with the stencil, unorm24's is nominally 32 bits a "
+            "pixel, reverse-Z's 64. Ask 5.1's near plane first; reverse-Z only where it lies "
+            "beyond `nearest`")  # fmt: skip
+
+
 def match_setup(got, value, args=None) -> bool:
     """Does the student's answer equal what a mistake gives? Numbers the mistake leaves open
     (None: a choice alone, :func:`_choice_by`) match any."""
@@ -497,6 +515,9 @@ MISTAKES = [
     # r374 F4: each told "Compare 5.1's near plane with `nearest` first", which they did
     Mistake("comparison flipped", _words_flipped, gives=_choice_by(
         lambda z, gap, far, nearest: expected_near(z, gap, far, 24) > nearest)),
+    # r417 F2: reverse-Z whenever it works was told "16 bits" (the same tuples on the cases
+    # where unorm24 does it with room): the task's size rule ignored, named before
+    Mistake("reverse-Z preferred", _words_reverse_first, gives=_reverse_first),
     Mistake("16 bits", _words_16, gives=_choice_by(
         lambda z, gap, far, nearest: expected_near(z, gap, far, 16) <= nearest)),
     Mistake("float32 forward", ": float32 without reverse-Z stores z_win, near 1 for far "

@@ -319,16 +319,27 @@ def _not_positive(args, expected, got) -> bool:
 RANGE = Mistake("range", ": a gap is a positive distance", fits=_not_positive, symptom=True)
 
 
+def _binade_depths(z, near, far) -> tuple[float, float]:
+    """The depths, nearer and farther, between which the stored d stays in z's binade
+    [2^e, 2^(e+1)) (within the near and far planes)."""
+    k = 1 - near / far
+    e = np.floor(np.log2((near / z - near / far) / k))
+    z_near = near / (2.0 ** (e + 1) * k + near / far)
+    z_far = near / (2.0**e * k + near / far)
+    return max(z_near, near * 1.01), min(z_far, far * 0.999)
+
+
 def draw_gap(ax, case, got):
-    """Δz against z (log-log) near the case, float32 reverse-Z and window depth, the accepted
-    range at the case's z, the expected gap and yours."""
+    """Δz against z (log y) over the binade of d the case's z lies in, float32 reverse-Z and
+    window depth, the accepted range at the case's z, the expected gap and yours (r417 F7:
+    over z/4 to 4 z, the sawtooth's teeth answered 5.2b's prediction a cell early)."""
     _, (z, near, far), expected = case
-    lo_z, hi_z = max(z / 4, near * 1.01), min(z * 4, far * 0.999)
-    zs = np.geomspace(lo_z, hi_z, 400)
-    artists = ax.loglog(zs, depth_resolution(zs, near, far, "float32", mapping="reversed"),
-                        color="black", label="float32, reverse-Z")  # fmt: skip
-    artists += ax.loglog(zs, depth_resolution(zs, near, far, "float32"), color="#888888",
-                         linestyle=":", label="float32, window depth")  # fmt: skip
+    lo_z, hi_z = _binade_depths(float(z), float(near), float(far))
+    zs = np.linspace(lo_z, hi_z, 400)[1:-1]
+    artists = ax.semilogy(zs, depth_resolution(zs, near, far, "float32", mapping="reversed"),
+                          color="black", label="float32, reverse-Z")  # fmt: skip
+    artists += ax.semilogy(zs, depth_resolution(zs, near, far, "float32"), color="#888888",
+                           linestyle=":", label="float32, window depth")  # fmt: skip
     first, last = _bounds(float(z), float(near), float(far))
     # the band is 1 % tall, a sliver on decades of Δz: the inset below shows it on a linear
     # scale (r311 FIG-1)
@@ -347,14 +358,11 @@ def draw_gap(ax, case, got):
         artists += ax.plot([], [], " ", label=f"your Δz {num(got)}: not drawn, {why}")
     ax.set_xlim(lo_z, hi_z)
     artists += _zoom(ax, (z, near, far), (first, last), expected, got)
-    from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
+    from matplotlib.ticker import MaxNLocator
 
-    # z spans a decade or so: 1, 2 and 5 times powers of ten, written plainly (matplotlib's
-    # minor labels overlapped, its major ones left a single 10²)
-    ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
-    ax.xaxis.set_minor_locator(NullLocator())
-    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
-    ax.set_xlabel(f"view depth z (near {num(near)}, far {num(far)})")
+    ax.xaxis.set_major_locator(MaxNLocator(5))
+    ax.set_xlabel(f"view depth z over one binade of d (near {num(near)}, far {num(far)})",
+                  fontsize="small")  # fmt: skip
     ax.set_ylabel("smallest resolved gap Δz")
     # beside the axes: inside, it lay on the window-depth curve (which rises to the top left
     # or right, whichever the case)
@@ -371,10 +379,12 @@ def _zoom(ax, args, band, expected, got) -> list:
     inset = ax.inset_axes([1.06, 0.08, 0.62, 0.22])
     left, right = first - 0.5 * (last - first), last + 0.5 * (last - first)
     artists = [inset.axvspan(first, last, color="#7fbf7f", lw=0)]
-    artists += inset.plot([expected], [0.5], "o", color="#2b7bba", ms=6)
+    # r417 F8: the expected Δz is the band's left edge: a line there, not a dot half outside
+    # the green, and an accepted answer's × in a darker green than the band
+    artists.append(inset.axvline(expected, color="#2b7bba", lw=1.5))
     if got is not None and np.isfinite(got) and got > 0:
         ok = same_gap(got, expected, args)
-        colour = "#7fbf7f" if ok else "#d7301f"
+        colour = "#1b7837" if ok else "#d7301f"
         if left <= got <= right:
             artists += inset.plot([got], [0.5], "x", color=colour, ms=9, mew=2)
         else:  # off this scale: an arrow at the side it lies on

@@ -15,13 +15,16 @@ on lesson 05b's planes (z from 100 to 900: the worst depth is 450.3, where d = 2
 Expected answers: :func:`expected_worst`, the largest of z_max's Δz (its binade's step) and
 each such edge's inside the range; :func:`brute_worst` (float32's step above d at 200,001
 depths) lies within 2e-5 below it on every fixed case (tests). An answer passes between
-:data:`BELOW` under it (a search over sampled depths falls just short of the edge) and
-:data:`SLACK` over it (a gap rounded up is still one the buffer resolves at every depth).
+:data:`BELOW` under it (float64's accuracy for the closed form, with room; no search over
+sampled depths the time limit allows comes that close: r417 F1), or for an answer float32
+holds :data:`FLOAT32_STEPS` of its steps, and :data:`SLACK` over it (a gap rounded up is
+still one the buffer resolves at every depth).
 """
 
 from __future__ import annotations
 
 import copy
+import dataclasses
 import re
 from functools import cache
 
@@ -58,10 +61,17 @@ SETTINGS = (
 
 #: How much coarser than the coarsest Δz an answer may be (rounded up, it is still resolved).
 SLACK = 0.01
-#: How much finer: a search over depths falls short of the limit at an edge by 2 δz/z_e
-#: (r414 F2: at 0.5 %, 1,001 uniform samples always came within it; the worst edge z_e is at
-#: most 2.41 times the range's width from z_max, so δz ≤ 2.41 z_e/1000).
-BELOW = 0.0001
+#: How much finer (relative). The answer is a closed form (a power of two times a few
+#: products): float64 gives it to a few units of 2^-52, 1e-15. A search over sampled depths
+#: falls short of the limit at a crossing z_e by about 2 δz/z_e, δz its spacing there (r417
+#: F1: at 1e-4, 50,001 evenly spaced depths passed every case): at 1e-8 an even or geometric
+#: search of 10^7 depths (numpy, about 0.1 s of CPU a case) fails most cases, and 4·10^7
+#: already run past the check's 2 s of CPU a case (tests).
+BELOW = 1e-8
+#: A float32 answer holds the coarsest Δz only to its own rounding, 2^-24 relative: it may
+#: lie this many float32 steps under it (a float32 reverse_z_gap at the crossing: the slope
+#: and the division each rounded once).
+FLOAT32_STEPS = 2
 
 
 def binade_step(d: float) -> float:
@@ -149,6 +159,18 @@ def _drawn(rng) -> tuple[float, float, float, float]:
 def as_gap(value):
     """One number, as :func:`.answers.as_number`, but not inside an array (r414 F7: an array
     of shape (1,) passed, where the docs promise shapes must match)."""
+    if (
+        isinstance(value, (tuple, list))
+        and len(value) != 1
+        and all(
+            isinstance(v, (int, float, np.floating, np.integer)) and not isinstance(v, bool)
+            for v in value
+        )
+    ):  # r417 F8: (900.0, 7.366170393652282e-06) was echoed with 17 digits
+        raise WrongAnswerType(
+            f"returned ({', '.join(num(v) for v in value)}), {len(value)} values where one "
+            "number is expected: return the Δz alone"
+        )
     if isinstance(value, np.ndarray) and value.ndim > 0:
         raise WrongAnswerType(
             f"returned an array of shape {value.shape} where one number is expected: return "
@@ -157,11 +179,24 @@ def as_gap(value):
     return as_number(value)
 
 
+def lowest(expected, got=None) -> float:
+    """The smallest answer accepted: :data:`BELOW` under the coarsest Δz, or for an answer
+    float32 holds :data:`FLOAT32_STEPS` of float32's steps there (its rounding, no more): a
+    float32 answer, or one made float (``float(step / slope)`` with a float32 step divides in
+    float32, and is right)."""
+    low = expected * (1 - BELOW)
+    with np.errstate(over="ignore"):  # a huge answer: no float32 holds it
+        held = got is not None and np.isfinite(got) and float(np.float32(got)) == float(got)
+    if getattr(got, "dtype", None) == np.float32 or held:
+        low = min(low, expected - FLOAT32_STEPS * float(np.spacing(np.float32(expected))))
+    return low
+
+
 def same_worst(got, expected, args=None) -> bool:
-    """Within :data:`BELOW` under and :data:`SLACK` over the coarsest Δz."""
+    """From :func:`lowest` to :data:`SLACK` over the coarsest Δz."""
     if not np.isfinite(got):
         return False
-    return expected * (1 - BELOW) <= got <= expected * (1 + SLACK)
+    return lowest(expected, got) <= got <= expected * (1 + SLACK)
 
 
 def _variants(z_min, z_max, near, far) -> dict[str, float]:
@@ -175,6 +210,9 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
     finest = min([at_min] + [dz for _, dz in below[1:]])
     peak = min(max(far / 2, z_min), z_max)
     return {
+        # r417 F3: the right candidates, the finest of them taken (before z_max's: the same
+        # answer wherever z_max's is the finest)
+        "finest candidate": min(dz for _, dz in cands),
         "z_max only": cands[0][1],
         "twice z_max's": 2 * cands[0][1],
         "z_min only": at_min,
@@ -190,6 +228,9 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
         "bound at z_max": 2.0**-23 * z_max * (1 - z_max / far),
         "finest": finest,
         "worst z": worst(z_min, z_max, near, far)[0],
+        # r417 F3, F5: z not squared at the crossings; z_min's step taken at z_max
+        "crossings, z not squared": max([cands[0][1]] + [dz / z for z, dz in cands[1:]]),
+        "z_min's step at z_max": binade_step(d_min) / slope(z_max),
     }
 
 
@@ -220,6 +261,9 @@ _BETWEEN = ("Between them d crosses powers of two, and just nearer than each cro
 
 
 MISTAKES = {
+    "finest candidate": ": you compared the right depths, z_max and the limit just nearer "
+    "than each depth where d crosses a power of two, but returned the finest of them: the "
+    "task asks the coarsest, the gap surfaces need to be told apart at every depth of the range",
     "z_max only": _z_max_words,
     "twice z_max's": ": that is twice z_max's own Δz: doubling the gap at z_max guesses at "
     "the range. Where in the range can a coarser Δz than z_max's lie, and how much coarser?",
@@ -251,6 +295,15 @@ MISTAKES = {
     "surfaces need to be told apart at every depth of it",
     "worst z": lambda a, e, g: (
         f": that is the depth where Δz is coarsest, {num(worst(*a)[0])}: return Δz itself there"
+    ),
+    "crossings, z not squared": ": at the depths where d crosses a power of two you took "
+    "the step times z, not z²: d's slope |dd/dz| is n/((1 − n/f) z²), so Δz = step / slope "
+    "= step (1 − n/f) z²/n",
+    "z_min's step at z_max": lambda a, e, g: (
+        ": you took the step of d at z_min (its binade's, 2^"
+        f"{int(np.floor(np.log2(float(reversed_depth(a[0], *a[2:]))))) - 23}) and divided it by "
+        "the slope at z_max: each depth's Δz is the step of its own d over the slope there, "
+        "and d at z_max lies binades below d at z_min, where the step is smaller"
     ),
 }
 
@@ -284,6 +337,11 @@ EDGE_BELOW = Mistake(
     fits=_edge_rounded_below,
 )
 
+# r417 F3: said only where it gives every answer (the finest candidate, or z not squared,
+# gave z_max's own on one case and was told "you evaluated the gap at z_max only"): each of
+# these gives z_max's own Δz on most cases, so any of them fits most answers that are
+ONLY_WHOLE = ("finest candidate", "z_max only", "crossings, z not squared")
+
 # r404 F3: a sampled minimum is the finest within a few samples' reach, not to 1e-6
 FINEST_SAMPLED = Mistake(
     "finest, sampled", MISTAKES["finest"],
@@ -293,8 +351,8 @@ FINEST_SAMPLED = Mistake(
 Z_MAX_HERE = Mistake(
     "z_max's own here",
     ": that is z_max's own Δz: on this case a depth inside the range, where d crosses a power "
-    "of two, is coarser. Did your loop skip that crossing, or did d there come out just under "
-    "the power of two (np.spacing then gives the step below, half the binade's)?",
+    "of two, is coarser. Did you leave that crossing out (or skip it), or did d there come out "
+    "just under the power of two (np.spacing then gives the step below, half the binade's)?",
     fits=lambda a, e, g: bool(np.isfinite(g)) and worst(*a)[0] != a[1]
     and abs(g - candidates(*a)[0][1]) <= 1e-3 * abs(g),
 )  # fmt: skip
@@ -326,13 +384,44 @@ OTHER_CROSSING = Mistake(
 )
 
 
+def _outside_crossing(args, expected, got) -> tuple[float, int] | None:
+    """(z, e) of a depth outside the range where d = 2^e whose limit Δz ``got`` is (±1e-6);
+    None: none (r417 F5: crossings kept without the z_min ≤ z ≤ z_max test were told only
+    the rule)."""
+    z_min, z_max, near, far = args
+    if not np.isfinite(got) or got <= 0:
+        return None
+    span = 1 - near / far
+    top = int(np.floor(np.log2(float(reversed_depth(z_min, near, far)))))
+    low = int(np.ceil(np.log2(float(reversed_depth(z_max, near, far)))))
+    for e in range(low - 40, top + 41):
+        z = near / (2.0**e * span + near / far)
+        dz = 2.0 ** (e - 23) / reversed_depth_slope(z, near, far)
+        if not z_min <= z <= z_max and abs(got - dz) <= 1e-6 * dz:
+            return z, e
+    return None
+
+
+def _outside_words(args, expected, got) -> str:
+    z, e = _outside_crossing(args, expected, got)
+    return (f": your Δz is the limit just nearer than z = {num(z)}, where d falls to 2^{e}: "
+            f"outside this range, {num(args[0])} to {num(args[1])}. Only the depths where d "
+            "crosses a power of two inside the range (z_min ≤ z ≤ z_max) are candidates, "
+            "beside z_max itself")  # fmt: skip
+
+
+OUTSIDE = Mistake("crossing outside the range", _outside_words,
+                  fits=lambda a, e, g: _outside_crossing(a, e, g) is not None)  # fmt: skip
+
+
 def _too_fine(args, expected, got) -> bool:
     """A search over depths that missed the edge: finer than the coarsest, coarser than z_max,
     and the depth whose limit Δz that is (Δz grows like z² in the worst depth's binade) lies
     within 5 % of the range nearer than the worst depth, as a search of 20 or more samples
     stops (r404 F2: half the coarsest was told "a search that stopped short")."""
     at_max = candidates(*args)[0][1]
-    if not (np.isfinite(got) and at_max < got < expected * (1 - BELOW)):
+    # r417: closer than 1e-6 a search and a number rounded on the way look alike (HAIR_SHORT)
+    if not (np.isfinite(got) and at_max < got < min(lowest(expected, got), expected * (1 - 1e-6))):
         return False
     if _other_crossing(args, expected, got) is not None:
         return False  # another crossing's limit exactly: a skipped crossing, not a search
@@ -342,18 +431,54 @@ def _too_fine(args, expected, got) -> bool:
 
 
 def _search_words(args, expected, got) -> str:
-    """r414 F2: where the coarsest step lies, and the depth the student's samples reached."""
+    """r414 F2: where the coarsest step lies, and the depth the student's samples reached;
+    r417 F1: how far short, against what the check allows."""
     z_w = worst(*args)[0]
     e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
     z_s = z_w * np.sqrt(got / expected)
-    return (f": your Δz lies between z_max's and the coarsest: a search over sampled depths? "
-            f"The coarsest step lies just nearer than z = {num(z_w)}, where d falls to 2^{e}; "
-            f"your samples stopped at about z = {num(z_s, z_w)} in that binade (Δz grows like "
-            "z² there). Δz jumps there (the step halves), so the coarsest is the limit just "
-            "nearer than it: compute it at each such depth rather than sample")  # fmt: skip
+    return (f": your Δz lies between z_max's and the coarsest, {_short(1 - got / expected)} "
+            "short of it: a search over sampled depths? The coarsest step lies just nearer "
+            f"than z = {num(z_w)}, where d falls to 2^{e}; your samples stopped at about z = "
+            f"{num(z_s, z_w)} in that binade (Δz grows like z² there). A search falls short "
+            "by about twice its spacing over z, and the check allows "
+            f"{_short(BELOW)}: no sampling within the time limit comes that close. Δz jumps "
+            "there (the step halves), so the coarsest is the limit just nearer than it: "
+            "compute it at each such depth rather than sample")  # fmt: skip
 
 
-SEARCH = Mistake("search missed the edge", _search_words, fits=_too_fine, symptom=True)
+def _short(share: float) -> str:
+    """A relative shortfall in words: 3e-08 (a power of ten written out: 1e-08)."""
+    return f"{share:.1g}" if share >= 1e-4 else f"{share:.1e}".replace(".0e", "e")
+
+
+def _hair_short(args, expected, got) -> bool:
+    """Under the band by less than 1e-5, and no search's shortfall (r417 F1: at 1e-8, inputs
+    rounded to float32 on the way, 3e-8 short, were told the rule's "where can it lie?")."""
+    return bool(np.isfinite(got) and 0 < 1 - got / expected <= 1e-5
+                and got < lowest(expected, got) and not _too_fine(args, expected, got))  # fmt: skip
+
+
+def _hair_words(args, expected, got) -> str:
+    z_w = worst(*args)[0]
+    where = "at z_max itself"
+    if z_w != args[1]:
+        e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
+        where = f"just nearer than z = {num(z_w)}, where d falls to 2^{e}"
+    return (f": yours is {_short(1 - got / expected)} short of the coarsest ({where}), where "
+            f"the check allows {_short(BELOW)}: the closed form, a power of two times a few "
+            "products, comes out within 1e-15 in float64. A search over sampled depths (it "
+            "falls short by about twice its spacing over z, and no sampling within the time "
+            "limit comes that close), a depth taken a hair off, or a number rounded on the way "
+            "(an input or a depth kept in fewer bits than float64's)?")  # fmt: skip
+
+
+# one kind (r417): a search short by less than 1e-6 gets the second words, by more the first
+SEARCH = Mistake(
+    "search missed the edge",
+    lambda a, e, g: (_search_words if _too_fine(a, e, g) else _hair_words)(a, e, g),
+    fits=lambda a, e, g: _too_fine(a, e, g) or _hair_short(a, e, g),
+    symptom=True,
+)
 
 #: 5.2's slips that 5.2b can carry over (r404 F3): each changes Δz by far more than the band.
 GAP_SLIPS = ("float64", "window depth", "float16", "step above 1", "step in depth",
@@ -375,14 +500,12 @@ def _depths(z_min, z_max, near, far) -> list[float]:
 SLIP_BELOW = 0.005
 
 
-def gap_slip(args, got, expected=None) -> tuple[str, float] | None:
-    """(5.2's slip, what it gives) whose largest Δz over the range's depths is ``got`` within
-    :data:`SLIP_BELOW` under and :data:`SLACK` over it, the nearest such (the first of
-    :data:`GAP_SLIPS` among equals); None: none. A slip whose Δz lies that close to
-    ``expected`` is never one (r414 F1: with n/f ≪ 1 "infinite far" gives the answer itself,
-    and at 2 % every sampled search 1 % short was told "you dropped the far plane")."""
+def gap_slips(args, got, expected=None) -> list[tuple[str, float]]:
+    """Every (5.2's slip, what it gives) :func:`gap_slip` could name, nearest first: those
+    giving the same number are each a cause (r417 F8: float16's step at d and float32's
+    above 1 give the same Δz at z = 300 with near 0.1, far 1000)."""
     if not np.isfinite(got) or got == 0:
-        return None
+        return []
     near_to = lambda x, dz: dz * (1 - SLIP_BELOW) <= x <= dz * (1 + SLACK)  # noqa: E731
     found = {}
     for z in _depths(*args):
@@ -395,12 +518,30 @@ def gap_slip(args, got, expected=None) -> tuple[str, float] | None:
     near = [n for n in near if near_to(got, n[3])]
     if expected is not None:
         near = [n for n in near if not near_to(n[3], expected)]
-    return min(near)[2:] if near else None
+    return [n[2:] for n in sorted(near)]
+
+
+def gap_slip(args, got, expected=None) -> tuple[str, float] | None:
+    """(5.2's slip, what it gives) whose largest Δz over the range's depths is ``got`` within
+    :data:`SLIP_BELOW` under and :data:`SLACK` over it, the nearest such (the first of
+    :data:`GAP_SLIPS` among equals); None: none. A slip whose Δz lies that close to
+    ``expected`` is never one (r414 F1: with n/f ≪ 1 "infinite far" gives the answer itself,
+    and at 2 % every sampled search 1 % short was told "you dropped the far plane")."""
+    slips = gap_slips(args, got, expected)
+    return slips[0] if slips else None
 
 
 def _gap_slip_words(args, expected, got) -> str:
     kind, dz = gap_slip(args, got, expected)
     words = GAP_MISTAKES[kind]
+    same = [k for k, v in gap_slips(args, got, expected)[1:] if v == dz]
+    if same:  # r417 F8: each slip that gives this very number, not the first alone
+        return (
+            f": yours, {num(got)}, is what {len(same) + 1} of 5.2's slips give at this range's "
+            f"coarsest depths ({num(dz)}): {words}; or (the same number here) "
+            + "; or ".join(GAP_MISTAKES[k] for k in same)
+            + ". Check your reverse_z_gap with 5.2's check first"
+        )
     return (
         f": yours, {num(got)}, is what one of 5.2's slips gives at this range's coarsest "
         f"depths ({num(dz)}): {words}. Check your reverse_z_gap with 5.2's check first"
@@ -439,16 +580,27 @@ RANGE = Mistake("range", ": a gap is a positive distance",
 
 def explain_worst(args, expected, got) -> str:
     """The case, its coarsest Δz, the band the check accepts, and the student's."""
-    lo, hi = expected * (1 - BELOW), expected * (1 + SLACK)
+    lo, hi = lowest(expected, got), expected * (1 + SLACK)
+    # r417 F4: each bound with the digits that tell it from the answer and from the coarsest
     head = (f"for z from {num(args[0])} to {num(args[1])} (near {num(args[2])}, far "
-            f"{num(args[3])}) the coarsest Δz is {num(expected, got)} (the check accepts "
-            f"{num(lo, hi)} to {num(hi, lo)}); yours is {num(got, expected)}")  # fmt: skip
+            f"{num(args[3])}) the coarsest Δz is {_apart(expected, got, lo)} (the check "
+            f"accepts {_apart(lo, got, expected, hi)} to {_apart(hi, got, expected, lo)}); "
+            f"yours is {_apart(got, expected, lo)}")  # fmt: skip
     if not np.isfinite(got) or got <= 0 or same_worst(got, expected):
         return head
-    # r404 F3: the ratio always, as 5.2's words give it
+    # r404 F3: the ratio always, as 5.2's words give it (r417: a share where it is near 1)
+    if abs(got / expected - 1) < 1e-4:
+        return f"{head} ({_short(abs(got / expected - 1))} {'over' if got > hi else 'under'} it)"
     if got > hi:
         return f"{head} ({_times(got / expected)} times too coarse)"
     return f"{head} ({_times(expected / got)} times too fine)"
+
+
+def _apart(x, *others) -> str:
+    """``x`` with the digits that tell it from each of ``others`` (:func:`.scalars.num` tells
+    it from one)."""
+    texts = [num(x)] + [num(x, o) for o in others if o is not None and np.isfinite(o)]
+    return max(texts, key=len)
 
 
 def _times(r: float) -> str:
@@ -493,7 +645,7 @@ def draw_worst(ax, case, got):
         z_w = worst(z_min, z_max, near, far)[0]
         artists += ax.plot([z_w], [expected / unit], "o", color="#2b7bba", ms=8,
                            label=f"coarsest {num(expected, got)} at z = {num(z_w)}")  # fmt: skip
-        artists.append(ax.axhspan(expected * (1 - BELOW) / unit, expected * (1 + SLACK) / unit,
+        artists.append(ax.axhspan(lowest(expected, got) / unit, expected * (1 + SLACK) / unit,
                                   color="#d9ecd9", lw=0, zorder=0, label="accepted"))  # fmt: skip
     if drawn:
         colour = "#7fbf7f" if ok else "#d7301f"
@@ -513,8 +665,9 @@ def draw_worst(ax, case, got):
 
 REVERSE_Z_WORST = Exercise(
     "reverse_z_worst", worst_cases, as_gap, same_worst, explain_worst, _rule,
-    variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, Z_MAX_HERE, OTHER_CROSSING, GAP_SLIP, FINEST_SAMPLED, RATIO,
-    SEARCH, RANGE)), draw=draw_worst,
+    [dataclasses.replace(m, only_whole=True) if m.kind in ONLY_WHOLE else m
+     for m in variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, Z_MAX_HERE, OTHER_CROSSING, OUTSIDE,
+     GAP_SLIP, FINEST_SAMPLED, RATIO, SEARCH, RANGE))], draw=draw_worst,
     match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
     answers=(
         PackageAnswer(expected_worst, words=CHECKER_WORDS),
