@@ -24,10 +24,10 @@ import time
 
 import pytest
 
-jupyter_client = pytest.importorskip("jupyter_client")
-pytest.importorskip("ipykernel")
+from teachraster.widgets import common
 
-pytestmark = pytest.mark.notebook
+jupyter_client = pytest.importorskip("jupyter_client")
+BaseComm = pytest.importorskip("ipykernel.comm.comm").BaseComm
 
 SETUP = """
 import functools, time
@@ -95,6 +95,9 @@ def _events(client, explorer: str, question: str) -> list[str]:
     return events
 
 
+@pytest.mark.notebook
+@pytest.mark.skipif(not hasattr(BaseComm, "_reply_subshell_for"),
+                    reason="this ipykernel forwards no message from a shell channel thread")  # fmt: skip
 def test_a_check_is_answered_before_the_work_done_ahead_goes_on():
     manager, client = jupyter_client.manager.start_new_kernel(kernel_name="python3")
     printed = []
@@ -114,3 +117,46 @@ def test_a_check_is_answered_before_the_work_done_ahead_goes_on():
     between = events[events.index("check") + 1 : events.index("answer")]
     assert between.count("slice") <= 1, events  # the slice under way when the Check came
     assert events[events.index("answer") :].count("slice") >= 2, events  # and it goes on
+
+
+def test_a_message_that_came_holds_the_pictures_drawn_ahead_until_it_is_handled():
+    """Without a kernel: ``FramesAhead._run`` called by hand (as the loop calls it) draws
+    nothing while a widget message waits, and draws once it is handled."""
+    from teachraster.widgets import FilterExplorer
+
+    ex = FilterExplorer(48, 36, tilt=0, filter="nearest", samples=3, backend="image")
+    ahead, steps = ex._ahead, []
+    step = ahead.step
+    ahead.step = lambda seconds=0.0: steps.append(seconds) or step(seconds)
+    ahead._schedule = lambda delay=0.0: None  # no event loop here: _run is called by hand
+    ex.display.widget._handle_msg({"content": {"data": {"method": "custom",
+                                                        "content": {"type": "ready"}}},
+                                   "buffers": []})  # fmt: skip
+    assert ahead.listening and ahead.todo
+    common.message_arrived()  # as ipykernel's shell channel thread forwards one
+    try:
+        assert common.messages_waiting()
+        ahead._run()
+        assert steps == []  # held
+    finally:
+        ex.filter._handle_msg({"content": {"data": {"method": "update",
+                                                    "state": {"index": 1}}}})  # fmt: skip
+    assert ex.filter.value == "bilinear" and not common.messages_waiting()
+    ahead._run()
+    assert len(steps) == 1
+    ex.close()
+
+
+def test_a_message_that_never_reaches_a_widget_holds_nothing_for_long(monkeypatch):
+    """A message counted on its way whose widget closed meanwhile is never handled: after
+    ``WAIT_MOST_S`` it holds nothing back, and the count starts again from none."""
+    common.message_arrived()
+    assert common.messages_waiting()
+    monkeypatch.setattr(common, "WAIT_MOST_S", -1.0)  # its time is up
+    assert not common.messages_waiting()
+    monkeypatch.undo()
+    assert not common.messages_waiting()  # forgotten, not merely out of time
+    common.message_arrived()
+    assert common.messages_waiting()
+    common._message_handled()
+    assert not common.messages_waiting()

@@ -29,6 +29,11 @@ them finds its pictures in the page once the kernel has idled long enough (issue
 ``PlaneExplorer``'s f2 dragged through the kernel at 16 fps). When one slider moves, its own
 pictures stay good (they hold the others where they are) and the others' are drawn again.
 
+Nothing is drawn while a widget message has reached the kernel and waits to be handled
+(:func:`~teachraster.widgets.common.messages_waiting`; review r400 W1: a Check waited seconds
+behind ``FilterExplorer``'s pictures and truths, drawn at every turn of the kernel's loop that
+the message needed): a batch under way ends, and the next waits until it is handled.
+
 Nothing is drawn until a page says it is listening (``ready``): a notebook run without a
 browser (nbclient, the tests) draws nothing ahead, and a page opened later asks again.
 
