@@ -567,8 +567,11 @@ def _message_handled() -> None:
 def _count_arrivals() -> None:
     """Count every widget message as it reaches the kernel: ipykernel 7's shell channel thread
     asks the message's comm where to route the reply (``_reply_subshell_for``), the moment it
-    forwards the message to the thread that handles it. Only ipywidgets messages (their data
-    has a ``method``) are counted, as :func:`_serialize_widget_messages` counts them handled."""
+    forwards the message to the thread that handles it. Only the messages that
+    :func:`_serialize_widget_messages`'s handler will count as handled are counted: ipywidgets
+    messages (their data has a ``method``) to a widget whose comm calls that handler (not
+    the widgets' control comm, nor a widget made before this module was imported), so
+    that no message is counted that is never counted handled."""
     try:
         from ipykernel.comm.comm import BaseComm
     except ImportError:  # pragma: no cover - ipykernel comes with ipywidgets
@@ -578,7 +581,8 @@ def _count_arrivals() -> None:
         return
 
     def counted(self, data, default):
-        if isinstance(data, dict) and "method" in data:
+        handler = getattr(getattr(self, "_msg_callback", None), "__func__", None)
+        if handler is widgets.Widget._handle_msg and isinstance(data, dict) and "method" in data:
             message_arrived()
         return route(self, data, default)
 
