@@ -29,6 +29,11 @@ them finds its pictures in the page once the kernel has idled long enough (issue
 ``PlaneExplorer``'s f2 dragged through the kernel at 16 fps). When one slider moves, its own
 pictures stay good (they hold the others where they are) and the others' are drawn again.
 
+Nothing is drawn while a widget message has reached the kernel and waits to be handled
+(:func:`~teachraster.widgets.common.messages_waiting`; review r400 W1: a Check waited seconds
+behind ``FilterExplorer``'s pictures and truths, drawn at every turn of the kernel's loop that
+the message needed): a batch under way ends, and the next waits until it is handled.
+
 Nothing is drawn until a page says it is listening (``ready``): a notebook run without a
 browser (nbclient, the tests) draws nothing ahead, and a page opened later asks again.
 
@@ -47,7 +52,7 @@ import time
 import numpy as np
 
 from ..plotting.frames import frame_rgba
-from .common import DRAWING, later
+from .common import DRAWING, WAIT_POLL_S, later, messages_waiting
 from .dragging import dragged_within
 
 #: Sliders with more positions than this are not drawn ahead (pictures the page would keep).
@@ -273,6 +278,9 @@ class FramesAhead:
         if (self.busy is not None and self.busy()) or dragged_within(DRAG_GAP_S):
             self._schedule(BUSY_S)
             return
+        if messages_waiting():  # a Check, a toggle: handled first (review r400 W1)
+            self._schedule(WAIT_POLL_S)
+            return
         # never in the middle of a widget message handled on another thread (common.DRAWING)
         with DRAWING:
             more = self.step(BATCH_S)
@@ -285,7 +293,9 @@ class FramesAhead:
         if self.closed or not self.todo:
             return False
         start, batch = time.perf_counter(), []
-        while self.todo and (not batch or time.perf_counter() - start < seconds):
+        # a widget message reaching the kernel ends the batch (its reply waits for none of it)
+        while self.todo and (not batch or (time.perf_counter() - start < seconds
+                                           and not messages_waiting())):  # fmt: skip
             i, k = self.todo.pop(0)
             value = float(slider_positions(self.sliders[i])[k])
             rgba, caption = self.picture_at(value, i)

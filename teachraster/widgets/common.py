@@ -439,6 +439,9 @@ def settle(callback) -> None:
         waiting.cancel()
 
     def run():
+        if messages_waiting():  # a student's message first (review r400 W1)
+            _settling[key] = loop.call_later(WAIT_POLL_S, run)
+            return
         _settling.pop(key, None)
         with DRAWING:
             callback()
@@ -458,8 +461,9 @@ def later(callback, *, idle_only: bool = False) -> None:
     comparison: a few hundred ms of colour bars on a loaded machine) is drawn from the
     kernel's event loop a moment later, so that a second toggle arriving meanwhile is
     answered first, and the figure drawn once for both (a callback already waiting is not
-    scheduled again). Without a running event loop (plain Python, tests) it is called now,
-    or not at all with ``idle_only`` (work worth doing only while a kernel idles).
+    scheduled again). It waits further while a widget message waits in the kernel
+    (:func:`messages_waiting`). Without a running event loop (plain Python, tests) it is
+    called now, or not at all with ``idle_only`` (work worth doing only while a kernel idles).
     """
     import asyncio
 
@@ -474,6 +478,9 @@ def later(callback, *, idle_only: bool = False) -> None:
         return
 
     def run():
+        if messages_waiting():  # a student's message first (review r400 W1)
+            _later[key] = loop.call_later(WAIT_POLL_S, run)
+            return
         _later.pop(key, None)
         with DRAWING:
             callback()
@@ -499,14 +506,91 @@ def _serialize_widget_messages() -> None:
         return
 
     def handle_msg(self, msg):
-        with DRAWING:
-            return handle(self, msg)
+        try:
+            with DRAWING:
+                return handle(self, msg)
+        finally:
+            _message_handled()
 
     handle_msg._teachraster_serialized = True
     widgets.Widget._handle_msg = handle_msg
 
 
 _serialize_widget_messages()
+
+#: Longest the work done ahead waits for widget messages said to have reached the kernel: one
+#: that never reaches a widget (its widget closed meanwhile) holds nothing back for longer
+WAIT_MOST_S = 2.0
+#: Seconds between two looks whether the widget messages that came are handled
+WAIT_POLL_S = 0.01
+_waiting = {"count": 0, "since": 0.0}
+_waiting_lock = threading.Lock()
+
+
+def messages_waiting() -> bool:
+    """True while a widget message (a Check, a toggle, a slider's value) has reached the kernel
+    and is not handled yet: the work done while the kernel idles (pictures drawn ahead, truths
+    kept, deferred redraws, stand-ins) waits for it.
+
+    Review r400 W1 (lesson 09): ipykernel 7 handles a message over several turns of its event
+    loop (its shell channel's thread forwards it, two tasks, the dispatch), and at every turn
+    ``FilterExplorer`` drew a truth and a picture ahead: a pixel marked right after Run All was
+    handled 1.7 s after it came (load 2-8; 43 s at load 12), and the page's widget manager
+    held the Check until then. The message is seen on arrival, on the shell channel's thread
+    (:func:`_count_arrivals`); where the kernel has no such thread (ipykernel 6), never.
+    """
+    import time
+
+    with _waiting_lock:
+        if _waiting["count"] and time.monotonic() - _waiting["since"] > WAIT_MOST_S:
+            _waiting["count"] = 0  # lost on its way: nothing to wait for
+        return _waiting["count"] > 0
+
+
+def message_arrived() -> None:
+    """A widget message reached the kernel (called on the thread that receives it)."""
+    import time
+
+    with _waiting_lock:
+        _waiting["count"] += 1
+        _waiting["since"] = time.monotonic()
+
+
+def _message_handled() -> None:
+    import time
+
+    with _waiting_lock:
+        _waiting["count"] = max(0, _waiting["count"] - 1)
+        _waiting["since"] = time.monotonic()
+
+
+def _count_arrivals() -> None:
+    """Count every widget message as it reaches the kernel: ipykernel 7's shell channel thread
+    asks the message's comm where to route the reply (``_reply_subshell_for``), the moment it
+    forwards the message to the thread that handles it. Only the messages that
+    :func:`_serialize_widget_messages`'s handler will count as handled are counted: ipywidgets
+    messages (their data has a ``method``) to a widget whose comm calls that handler (not
+    the widgets' control comm, nor a widget made before this module was imported), so
+    that no message is counted that is never counted handled."""
+    try:
+        from ipykernel.comm.comm import BaseComm
+    except ImportError:  # pragma: no cover - ipykernel comes with ipywidgets
+        return
+    route = getattr(BaseComm, "_reply_subshell_for", None)
+    if route is None or getattr(route, "_teachraster_counted", False):
+        return
+
+    def counted(self, data, default):
+        handler = getattr(getattr(self, "_msg_callback", None), "__func__", None)
+        if handler is widgets.Widget._handle_msg and isinstance(data, dict) and "method" in data:
+            message_arrived()
+        return route(self, data, default)
+
+    counted._teachraster_counted = True
+    BaseComm._reply_subshell_for = counted
+
+
+_count_arrivals()
 
 _cell = threading.local()
 
