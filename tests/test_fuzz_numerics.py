@@ -292,3 +292,19 @@ def test_huge_values_in_render_derivatives_and_msaa(tris, samples):
     assert not np.isnan(frame.attrs[covered]).any()
     if deriv:
         assert not np.isnan(frame.ddx[covered]).any() and not np.isnan(frame.ddy[covered]).any()
+
+
+@pytest.mark.parametrize("extrapolate", [False, True])
+@pytest.mark.parametrize("lam", [[0.0, 0.5, 0.5], [0.0, 0.0, 1.0], [0.2, 0.3, 0.5]])
+def test_one_point_gets_the_weights_of_its_row_even_where_every_term_underflows(lam, extrapolate):
+    """r421: one point's λ (shape (3,)) at w = (1e-310, 1e300, 1e300), where every term
+    λ_i min(w)/w_i underflows, raised a raw TypeError (a 0-d total indexed per row); it gets
+    what the same λ as a row of a (1, 3) array gets, and so does a (1, 1, 3) grid."""
+    w = np.array([1e-310, 1e300, 1e300])
+    row = perspective_weights(np.array([lam]), w, extrapolate=extrapolate)[0]
+    assert np.isfinite(row).all() and row.sum() == pytest.approx(1.0)
+    one = perspective_weights(np.array(lam), w, extrapolate=extrapolate)
+    grid = perspective_weights(np.array([[lam]]), w, extrapolate=extrapolate)
+    assert one.shape == (3,) and grid.shape == (1, 1, 3)
+    np.testing.assert_array_equal(one, row)
+    np.testing.assert_array_equal(grid[0, 0], row)

@@ -157,6 +157,12 @@ def weights_per_row(lam: np.ndarray, w: np.ndarray, *, extrapolate: bool = False
     with λ_i ≠ 0 (the smallest w may be that of a vertex whose λ is 0): λ = (0, ½, ½) with
     w = (1e-310, 1e300, 1e300) gives (0, ½, ½), not NaN.
     """
+    if lam.ndim != 2:  # one point (3,) or a grid (h, w, 3): the rows' rescues index a total
+        # per row, which one point's 0-d total cannot take (r421: a raw TypeError at
+        # w = (1e-310, 1e300, 1e300), where every term underflows)
+        rows = weights_per_row(lam.reshape(-1, 3), np.broadcast_to(w, lam.shape).reshape(-1, 3),
+                               extrapolate=extrapolate)  # fmt: skip
+        return rows.reshape(lam.shape)
     if not extrapolate:
         lam = convex_weights(lam)
     # λ_i / w_i is affine in screen space, like 1/w itself. Only the ratios of w matter,
