@@ -6457,6 +6457,9 @@ R420 = {
         "covers", _r420_any_edge, "one edge's test instead of all three", "covers everything"),
     "covers testing one edge only": (
         "covers", _r420_covers(one_edge=True), "you test one edge only", "one edge only"),
+    "fill sampled at (j + ¼, i + ¼)": (
+        "fill", _fill_loop(at=(0.25, 0.25)), "sampled at (j + 0.25, i + 0.25)",
+        "sampled off the centre"),
     "edge function divided by the edge's length": (
         "edge_function", _r420_distance, "divided by the edge's length",
         "divided by the edge's length"),

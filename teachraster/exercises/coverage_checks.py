@@ -708,6 +708,34 @@ def _sampling_mistakes() -> list[Mistake]:
     ]  # fmt: skip
 
 
+#: r420 H5: other constant sampling points (j + ox, i + oy) a fill may take, on a quarter-pixel
+#: grid (an MSAA pattern's offset, (j + ¼, i + ¼), was told "a tiny step off its centre"); the
+#: named ones (:data:`OFFSETS`, the corners) come first in the table.
+_QUARTERS = [(ox / 4, oy / 4) for ox in range(-2, 5) for oy in range(-2, 5)]
+_OTHER_OFFSETS = [
+    o for o in _QUARTERS
+    if o != (0.5, 0.5) and o not in OFFSETS and o not in ((0.0, 0.0), (0.0, 0.5), (0.5, 0.0))
+]  # fmt: skip
+
+
+def _offset_mistakes() -> list[Mistake]:
+    """r420 H5: one constant sampling point off the centre, each a mistake the checker runs
+    (named where it gives every failing answer, or most: :mod:`.diagnosis`)."""
+
+    def words(ox, oy):
+        return _own_example(
+            f"your pixel (row i, col j) is sampled at (j + {cov.fmt(ox)}, i + {cov.fmt(oy)}), "
+            "not at its centre (j + 0.5, i + 0.5): the conventions sample a pixel at its centre "
+            "(an MSAA sample's offset, or one measured from another point, used for the "
+            "pixel?)",
+            _sampled_at(ox, oy),
+        )
+
+    return [Mistake("sampled off the centre", words(ox, oy),
+                    gives=lambda case, at=(ox, oy): cov.rule_images(case, at=at))
+            for ox, oy in _OTHER_OFFSETS]  # fmt: skip
+
+
 def _centred_words(args, expected, got) -> str:
     return _own_example(
         "you moved each vertex to the nearest pixel centre (round(v − 0.5) + 0.5): a vertex "
@@ -919,6 +947,8 @@ def mistakes(name: str) -> list:
     if name == "fill":  # r352 3: after the tie rules, which it may equal on a case
         table.append(Mistake("a point a tiny step off the centre", _nudged_words,
                              fits=lambda *a: _nudged(*a) is not None, must_fit=_always))  # fmt: skip
+    if name == "fill":
+        table += _offset_mistakes()
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))

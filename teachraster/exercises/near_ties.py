@@ -128,8 +128,9 @@ def near_tie_cases(rng, word: str, signs=(1, -1, 2, -4), large=(1, -1)) -> list[
             xy = xy[[0, 2, 1]]
         xy = np.roll(xy, int(rng.integers(0, 3)), axis=0)
         what = "a large triangle, " if big else ""
-        label = (f"{NEAR_TIE}{word} {n + 1}: {what}a centre {abs(s)} · 2^-16 px² "
-                 f"{'inside' if s > 0 else 'outside'} an edge (E ≠ 0, the least |E| off an edge "
-                 "on the 1/256 grid)")  # fmt: skip
+        times = "" if abs(s) == 1 else f"{abs(s)} · "
+        label = (f"{NEAR_TIE}{word} {n + 1}: {what}a centre {times}2^-16 px² "
+                 f"{'inside' if s > 0 else 'outside'} an edge (as near as the 1/256 grid "
+                 "allows)")  # fmt: skip
         out.append(CoverageCase(label, xy[None], (0, 0), (WINDOW, WINDOW)))
     return out
