@@ -104,3 +104,11 @@ def test_the_package_edge_function_inside_covers_is_said_and_counts():
     assert report.passed and "package's edge_function" in str(report), str(report)
     mine = ex.check("covers", _covers_with(_owns))
     assert mine.passed and "package's edge_function" not in str(mine)
+
+
+def test_fill_says_a_tie_rule_or_winding_mistake_lies_in_covers():
+    """S1: fill on a covers with one winding named the mistake with no word of covers."""
+    from exercise_solutions import _fill_from
+
+    report = ex.check("fill", _fill_from(_covers_with(_owns, orient=False), offset=0.5))
+    assert "the 1.1 check names it too" in report.failures[0].explanation, str(report)

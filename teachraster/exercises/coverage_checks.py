@@ -449,6 +449,18 @@ def _owns_words(owns) -> str:
     return words + NEGATED_E if owns == frozenset({"bottom", "right"}) else words
 
 
+#: r420 S1: fill's words for a mistake of covers (the tie rule, the winding) said where it is.
+IN_COVERS = " (in `covers`, if `fill` calls it: the 1.1 check names it too)"
+
+
+def _in_covers(words, fill: bool):
+    if not fill:
+        return words
+    if callable(words):
+        return lambda *a: words(*a) + IN_COVERS
+    return words + IN_COVERS
+
+
 def _rule_knobs(masked: bool, corners: bool) -> Knobs:
     knobs = {
         "owns": [Slip(cov.owns_kind(o), _owns_words(o), o) for o in cov.owns_variants()],
@@ -468,6 +480,8 @@ def _rule_knobs(masked: bool, corners: bool) -> Knobs:
                 "truncated"),
         ],
     }  # fmt: skip
+    for name in ("owns", "winding"):
+        knobs[name] = [Slip(k.kind, _in_covers(k.words, corners), k.value) for k in knobs[name]]
     if corners:
         knobs["at"] = [
             Slip("pixel corners", _own_example(
