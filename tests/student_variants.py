@@ -6795,3 +6795,100 @@ KINDS.update({label: kind for label, (_, _, _, kind) in R417_SEARCH.items()})
 # r417 F2: reverse-Z first is now named as a cause ("you chose reverse-Z where it resolves the
 # gap, but unorm24 does it here too"), before its symptom "unorm24 preferred"
 KINDS["depth set-up preferring reverse-Z"] = "reverse-Z preferred"
+
+
+# -- r420 (exercise 1): tolerances on the edge test that passed (W1, W2) or were named as a
+# zero-area tolerance or float32 (M1, M2); half-named slips (H1-H4, H6) ----------------------
+def _r420_covers(edge=edge_function, rel=0.0, area_cut=0.0, one_edge=False, flip=False):
+    """The conventions' covers, with one slip: ``edge`` as its edge function, ``rel`` (|E| ≤
+    rel · area taken as 0), ``area_cut`` (|area| < cut refused), one edge's test alone, or the
+    winding swapped where E(v1, v2, v3) > 0 instead of < 0."""
+
+    def fn(xy, p):
+        v = [np.asarray(q, dtype=float) for q in xy]
+        area = edge(v[0], v[1], v[2])
+        if (area > 0) if flip else (area < 0):
+            v = [v[0], v[2], v[1]]
+            area = -area
+        if abs(area) <= area_cut or (area == 0 and not one_edge):
+            return False
+        for k in range(1 if one_edge else 3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = edge(a, b, p)
+            if rel and abs(e) <= rel * abs(area):
+                e = 0.0
+            if e < 0 or (e == 0 and not _owns(a, b)):
+                return False
+        return True
+
+    return fn
+
+
+def _r420_any_edge(xy, p):
+    """True as soon as one edge's test passes (`or` for `and`)."""
+    v = [np.asarray(q, dtype=float) for q in xy]
+    if edge_function(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, p)
+        if e > 0 or (e == 0 and _owns(a, b)):
+            return True
+    return False
+
+
+def _r420_unsigned(a, b, p):
+    return abs(edge_function(a, b, p))
+
+
+def _r420_two_anchors(a, b, p):
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - b[0])
+
+
+def _r420_distance(a, b, p):
+    return edge_function(a, b, p) / math.hypot(b[0] - a[0], b[1] - a[1])
+
+
+_R420_TOLERANCE = "a tolerance in the edge test"
+R420 = {
+    "covers, edges by abs(E) < 3e-5": (
+        "covers", _covers_tolerant(edge_tol=3e-5), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers, edges by abs(E) < 5e-5": (
+        "covers", _covers_tolerant(edge_tol=5e-5), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers, edges by abs(E) < 7.6e-5": (
+        "covers", _covers_tolerant(edge_tol=7.6e-5), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers, edges by abs(E) < 1e-4": (
+        "covers", _covers_tolerant(edge_tol=1e-4), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers, edges by abs(E) < 1e-3": (
+        "covers", _covers_tolerant(edge_tol=1e-3), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers, edges by abs(E) ≤ 1e-9 · area": (
+        "covers", _r420_covers(rel=1e-9), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers, edges by abs(E) ≤ 1e-6 · area, in float64": (
+        "covers", _r420_covers(rel=1e-6), _R420_TOLERANCE, "edges by a tolerance"),
+    "covers with an unsigned edge function": (
+        "covers", _r420_covers(edge=_r420_unsigned), "returns |E|", "unsigned edge function"),
+    "covers with E measured from two anchors": (
+        "covers", _r420_covers(edge=_r420_two_anchors), "from b in x",
+        "edge function from two anchors"),
+    "covers refusing a thin triangle, abs(area) < 0.5": (
+        "covers", _r420_covers(area_cut=0.5), "a bound above 0.284 px²",
+        "zero area by a tolerance"),
+    "covers swapping two vertices where E(v1, v2, v3) > 0": (
+        "covers", _r420_covers(flip=True), "oriented the wrong way round", "constant"),
+    "covers true where any edge passes": (
+        "covers", _r420_any_edge, "one edge's test instead of all three", "covers everything"),
+    "covers testing one edge only": (
+        "covers", _r420_covers(one_edge=True), "you test one edge only", "one edge only"),
+    "fill sampled at (j + ¼, i + ¼)": (
+        "fill", _fill_loop(at=(0.25, 0.25)), "sampled at (j + 0.25, i + 0.25)",
+        "sampled off the centre"),
+    "edge function divided by the edge's length": (
+        "edge_function", _r420_distance, "divided by the edge's length",
+        "divided by the edge's length"),
+    "edge function measuring p from two anchors": (
+        "edge_function", _r420_two_anchors, "from b in x", "two anchors"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R420.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R420.items()})
+#: r420: a tolerance below E's least step off an edge (2^-16 px²) changes nothing on the grid.
+DIFFERENT["covers, edges by abs(E) < 1e-5"] = ("covers", _covers_tolerant(edge_tol=1e-5))

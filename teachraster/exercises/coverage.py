@@ -341,6 +341,20 @@ def wrong_triangle(got, expected) -> int:
     return 0
 
 
+def vertices(xy) -> str:
+    """ "v1, v2, v3 = (x, y), (x, y), (x, y)": the numbers a student calls ``covers`` with."""
+    return f"v1, v2, v3 = {point(xy[0])}, {point(xy[1])}, {point(xy[2])}"
+
+
+def which_triangle(case: CoverageCase, k: int) -> str:
+    """How an example begins: the triangle's number in a mesh and its vertices (r420 C1: a
+    tie was explained with no coordinates, so a student could not call ``covers`` on it),
+    but where the sentence quotes them itself (zero area)."""
+    xy = case.triangles[k]
+    tri = f"triangle {k}, " if len(case.triangles) > 1 else ""
+    return "" if area2(xy) == 0 and not tri else f"{tri}{vertices(xy)}: "
+
+
 def head(case: CoverageCase, got, expected) -> tuple[str, int, tuple, int | None]:
     """The example of a failing case: (text, triangle, pixel (i, j), deciding edge)."""
     k = wrong_triangle(got, expected)
@@ -350,8 +364,7 @@ def head(case: CoverageCase, got, expected) -> tuple[str, int, tuple, int | None
     (i, j), c = example_pixel(case, k, g, e)
     xy = case.triangles[k]
     text, edge, _ = explain_pixel(xy, c, bool(e[i, j]))
-    if len(case.triangles) > 1:
-        text = f"triangle {k}: {text}"
+    text = f"{which_triangle(case, k)}{text}"
     if case.mesh:
         times = sum(
             int(np.asarray(x if np.shape(x) == e.shape else np.asarray(x).T)[i, j]) for x in got

@@ -29,8 +29,11 @@ from ..core.edges import is_top_left, passes, top_left_edges
 from ..core.fill import rasterize
 from . import coverage as cov
 from . import coverage_boxes as boxes
+from . import edge_slips
 from .answers import as_bool, as_coverage, short
 from .cases import (
+    DRAWN_WORD,
+    SEED,
     CoverageCase,
     catalogue_coverage,
     drawn_coverage,
@@ -39,6 +42,8 @@ from .cases import (
 )
 from .diagnosis import constant_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
+from .near_ties import float32_safe, near_tie_cases
+from .package_answers import values_read
 
 FLOAT32_EPS = 2.0**-24
 
@@ -95,8 +100,21 @@ def _expected(case: CoverageCase) -> np.ndarray:
 def covers_cases():
     """The fixed cases (built once), a few drawn for this check (r46 X1) and a long edge
     drawn for it where float32 products put a centre on the wrong side (r46 E1)."""
-    drawn = [*drawn_coverage(), long_edge_coverage(drawn_rng())]
+    drawn = [*drawn_coverage(), long_edge_coverage(drawn_rng()), *_drawn_near_ties()]
     return _covers_cases() + [(c.label, (c,), _expected(c)) for c in drawn]
+
+
+def _drawn_near_ties() -> list[CoverageCase]:
+    """r420 W1, W2: two small near ties and a large one, drawn for this check."""
+    rng = drawn_rng()
+    return near_tie_cases(rng, f" {DRAWN_WORD}", signs=(1, -2), large=(int(rng.choice((1, -1))),))
+
+
+@cache
+def fixed_near_ties() -> list[CoverageCase]:
+    """r420 W1, W2: the fixed near ties (a tolerance of 3e-5 on the edge test, or of 1e-9 of
+    the area, passed every case)."""
+    return near_tie_cases(np.random.default_rng(SEED + 420), "")
 
 
 def _products32(a, b, px, py):
@@ -131,19 +149,22 @@ def long_edge_coverage(rng) -> CoverageCase:
 
 @cache
 def _covers_cases():
-    return [(c.label, (c,), _expected(c)) for c in catalogue_coverage() + random_coverage()]
+    cases = catalogue_coverage() + random_coverage() + fixed_near_ties()
+    return [(c.label, (c,), _expected(c)) for c in cases]
 
 
 def fill_cases():
     """The fixed cases (built once) and a few drawn for this check (r46 X1)."""
-    return _fill_cases() + [(c.label, (c,), _expected(c)) for c in drawn_coverage()]
+    drawn = drawn_coverage() + _drawn_near_ties()
+    return _fill_cases() + [(c.label, (c,), _expected(c)) for c in drawn]
 
 
 @cache
 def _fill_cases():
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
-    return [(c.label, (c,), _expected(c)) for c in cases + _oblong_cases() + _border_cases()]
+    cases += _oblong_cases() + _border_cases() + fixed_near_ties()
+    return [(c.label, (c,), _expected(c)) for c in cases]
 
 
 def _border_cases() -> list[CoverageCase]:
@@ -228,8 +249,8 @@ def _float32_fits(args, expected, got) -> bool:
     One mistake for both, so a float32 answer failing both kinds of case is named on both."""
     (case,) = args
     far = float(np.abs(case.triangles).max())
-    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
-        return False
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape or float32_safe(case):
+        return False  # r420 M2: float32 gives the rule's answer on a near tie
     for k, xy in enumerate(case.triangles):
         extent = float(np.abs(xy - xy[0]).max()) + 1.0
         if far < 1e4 and extent < 1000:  # near the origin and short: float32 is exact enough
@@ -253,11 +274,11 @@ def _constant_mistakes(name: str, masked: bool) -> list[Mistake]:
     what = "returns False for every centre" if name == "covers" else "returns an empty image"
     return [
         Mistake("covers nothing", f"your function never covers anything: it {what} of every "
-                "triangle (a placeholder such as `return False` left in, or a test that no "
-                "centre can pass?)", gives=nothing),
+                "triangle (a placeholder such as `return False` left in, or "
+                f"{CONSTANT_TESTS['False']}?)", gives=nothing),
         Mistake("covers everything", "your function covers every pixel it is asked about, "
-                "inside the triangle or not (a placeholder such as `return True` left in?)",
-                gives=everything),
+                "inside the triangle or not (a placeholder such as `return True` left in, or "
+                f"{CONSTANT_TESTS['True']}?)", gives=everything),
     ]  # fmt: skip
 
 
@@ -350,7 +371,7 @@ def _own_example(text: str, describe):
         said = sorted((ties, n, t) for n, (t, ties) in enumerate(x for x in said if x))
         if not said:
             return text
-        tri = f"triangle {k}: " if len(case.triangles) > 1 else ""
+        tri = "" if "v1, v2, v3 = " in said[0][2] else cov.which_triangle(case, k)
         missing, extra = int((e & ~g).sum()), int((g & ~e).sum())
         return f"{text}{OWN_EXAMPLE}{tri}{said[0][2]} ({missing} pixel(s) missing, {extra} extra)"
 
@@ -428,6 +449,18 @@ def _owns_words(owns) -> str:
     return words + NEGATED_E if owns == frozenset({"bottom", "right"}) else words
 
 
+#: r420 S1: fill's words for a mistake of covers (the tie rule, the winding) said where it is.
+IN_COVERS = " (in `covers`, if `fill` calls it: the 1.1 check names it too)"
+
+
+def _in_covers(words, fill: bool):
+    if not fill:
+        return words
+    if callable(words):
+        return lambda *a: words(*a) + IN_COVERS
+    return words + IN_COVERS
+
+
 def _rule_knobs(masked: bool, corners: bool) -> Knobs:
     knobs = {
         "owns": [Slip(cov.owns_kind(o), _owns_words(o), o) for o in cov.owns_variants()],
@@ -447,6 +480,8 @@ def _rule_knobs(masked: bool, corners: bool) -> Knobs:
                 "truncated"),
         ],
     }  # fmt: skip
+    for name in ("owns", "winding"):
+        knobs[name] = [Slip(k.kind, _in_covers(k.words, corners), k.value) for k in knobs[name]]
     if corners:
         knobs["at"] = [
             Slip("pixel corners", _own_example(
@@ -687,6 +722,34 @@ def _sampling_mistakes() -> list[Mistake]:
     ]  # fmt: skip
 
 
+#: r420 H5: other constant sampling points (j + ox, i + oy) a fill may take, on a quarter-pixel
+#: grid (an MSAA pattern's offset, (j + ¼, i + ¼), was told "a tiny step off its centre"); the
+#: named ones (:data:`OFFSETS`, the corners) come first in the table.
+_QUARTERS = [(ox / 4, oy / 4) for ox in range(-2, 5) for oy in range(-2, 5)]
+_OTHER_OFFSETS = [
+    o for o in _QUARTERS
+    if o != (0.5, 0.5) and o not in OFFSETS and o not in ((0.0, 0.0), (0.0, 0.5), (0.5, 0.0))
+]  # fmt: skip
+
+
+def _offset_mistakes() -> list[Mistake]:
+    """r420 H5: one constant sampling point off the centre, each a mistake the checker runs
+    (named where it gives every failing answer, or most: :mod:`.diagnosis`)."""
+
+    def words(ox, oy):
+        return _own_example(
+            f"your pixel (row i, col j) is sampled at (j + {cov.fmt(ox)}, i + {cov.fmt(oy)}), "
+            "not at its centre (j + 0.5, i + 0.5): the conventions sample a pixel at its centre "
+            "(an MSAA sample's offset, or one measured from another point, used for the "
+            "pixel?)",
+            _sampled_at(ox, oy),
+        )
+
+    return [Mistake("sampled off the centre", words(ox, oy),
+                    gives=lambda case, at=(ox, oy): cov.rule_images(case, at=at))
+            for ox, oy in _OTHER_OFFSETS]  # fmt: skip
+
+
 def _centred_words(args, expected, got) -> str:
     return _own_example(
         "you moved each vertex to the nearest pixel centre (round(v − 0.5) + 0.5): a vertex "
@@ -713,7 +776,10 @@ def _tiny(xy) -> bool:
 
 def _float32_exact(case) -> bool:
     """Near the origin and short: float32 would give the rule's answer here, so an E taken
-    as 0 that is not is a tolerance, not float32's rounding (:func:`_float32_fits`)."""
+    as 0 that is not is a tolerance, not float32's rounding (:func:`_float32_fits`); a near
+    tie (:func:`.near_ties.float32_safe`) is drawn so, whatever its size."""
+    if float32_safe(case):
+        return True
     xy = np.asarray(case.triangles, dtype=float)
     extent = float(np.abs(xy - xy[:, :1]).max())
     return float(np.abs(xy).max()) < 1e4 and extent < 1000
@@ -734,11 +800,13 @@ def _area_tolerance_fits(args, expected, got) -> bool:
 def _area_tolerance_words(args, expected, got) -> str:
     (case,) = args
     k = cov.wrong_triangle(got, expected)
+    area = cov.fmt(cov.area2(case.triangles[k]))
+    # r420 H2: the tolerance quoted is the case's own (a fixed "1e-3" contradicted E = 0.284)
     return (
-        f"you covered nothing of a triangle whose E(v1, v2, v3) = "
-        f"{cov.fmt(cov.area2(case.triangles[k]))} px² is tiny but not 0: a zero-area test with "
-        "a tolerance (abs(E) < 1e-3) takes it for a flat one. The vertices are on the "
-        "1/256-px grid, so E is exact: only E == 0 is zero area"
+        f"you covered nothing of a triangle whose E(v1, v2, v3) = {area} px² is tiny but not "
+        f"0: a zero-area test with a tolerance (abs(E) below a bound above {area.lstrip('-')} "
+        "px²) takes it for a flat one. The vertices are on the 1/256-px grid, so E is exact: "
+        "only E == 0 is zero area"
     )
 
 
@@ -780,10 +848,12 @@ def _tolerant_image(case, xy, eps: float) -> np.ndarray:
 def _edge_tolerance_words(args, expected, got) -> str:
     eps = _edge_tolerance(args, expected, got)
     return (
-        f"you take an edge function within {cov.fmt(eps)} px² of 0 for 0 (a tolerance such as "
-        "abs(E) < 1e-2): a centre that close to an edge is then decided by the tie rule, "
-        "though it lies strictly on one side. The vertices are on the 1/256-px grid and the "
-        "centres on the half-pixel grid, so E is exact: compare it with 0 exactly"
+        f"you take an edge function within {cov.fmt(eps)} px² of 0 for 0: a tolerance in the "
+        f"edge test (abs(E) < ε with ε above {cov.fmt(eps)} px², or ε relative to the "
+        "triangle's area), so a centre that close to an edge is decided by the tie rule, though "
+        "it lies strictly on one side. On the 1/256 grid E is exact (vertices on the 1/256-px "
+        "grid, centres on the half-pixel grid): a centre off the edge has |E| ≥ 2^-16 px², "
+        "so compare E with 0 exactly"
     )
 
 
@@ -824,6 +894,20 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
             *_sampling_mistakes(),
         ]  # fmt: skip
     return table
+
+
+def _edge_slip_mistakes(masked: bool) -> list[Mistake]:
+    """r420 H1, H5: an unsigned or two-anchor ``edge_function`` under ``covers``, one edge's
+    test alone (:mod:`.edge_slips`); the words send the student to the helper's check."""
+
+    def gives(kind):
+        def images(case):
+            out = edge_slips.images(case, kind)
+            return out & _masks(case) if masked else out
+
+        return images
+
+    return [Mistake(kind, edge_slips.WORDS[kind], gives=gives(kind)) for kind in edge_slips.WORDS]
 
 
 def _nudged(args, expected, got):
@@ -871,11 +955,14 @@ def mistakes(name: str) -> list:
             Mistake("transposed", SWAPPED, gives=lambda case: rule_swapped(case) & _masks(case))
         )
         table += _point_mistakes()
+    table += _edge_slip_mistakes(masked)
     table += _r347_mistakes(name, masked)
     table.append(_rule_knobs(masked, corners=name == "fill"))
     if name == "fill":  # r352 3: after the tie rules, which it may equal on a case
         table.append(Mistake("a point a tiny step off the centre", _nudged_words,
                              fits=lambda *a: _nudged(*a) is not None, must_fit=_always))  # fmt: skip
+    if name == "fill":
+        table += _offset_mistakes()
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
@@ -967,6 +1054,16 @@ def compose(head: str, words: str) -> str:
 PLACEHOLDER = "placeholder"
 
 
+#: r420 H3, H4: the likeliest test behind a constant verdict, beside a placeholder.
+CONSTANT_TESTS = {
+    "False": "a test that no centre can pass (the triangle oriented the wrong way round, so "
+    "that its interior is where E < 0: two vertices swapped where E(v1, v2, v3) > 0 instead "
+    "of < 0)",
+    "True": "a test that every centre passes (one edge's test instead of all three: a "
+    "`return True` as soon as one edge passes, `any` for `all`, `or` for `and`)",
+}
+
+
 def constant(name: str):
     """The words for a ``covers`` that returns one value for every centre (the checker's
     first diagnosis, :mod:`.diagnosis`)."""
@@ -978,8 +1075,8 @@ def constant(name: str):
             verdict = ("covers every pixel it is asked about, inside the triangle or not"
                        if shown == "True" else "never covers anything")  # fmt: skip
             return (f"your function {verdict}: it returns {shown} for {what}, whatever its "
-                    f"arguments (a {PLACEHOLDER} such as `return {shown}` left in, or a "
-                    "`return` reached too early?)")  # fmt: skip
+                    f"arguments (a {PLACEHOLDER} such as `return {shown}` left in, a "
+                    f"`return` reached too early, or {CONSTANT_TESTS[shown]}?)")  # fmt: skip
         return constant_words(value)
 
     return words
@@ -1037,7 +1134,32 @@ def _exercise(name: str, cases, call, scene=None) -> Exercise:
         hints=HINTS,
         reference=("teachraster.exercises.coverage",),  # expected_coverage (r14 09-1)
         raised_words=_box_raised if name == "fill" else None,
+        tool_note=_package_edge_function_note,
     )  # fmt: skip
+
+
+def _uses_package_edge_function(fn) -> bool:
+    """Does ``fn`` (or the ``edge_function`` of its module) call the package's edge_function?"""
+    import inspect
+    import types
+
+    from ..core.edges import edge_function as package
+
+    own = getattr(inspect.unwrap(fn), "__globals__", {}).get("edge_function")
+    if own is package:
+        return True
+    if isinstance(own, types.FunctionType):  # the student's helper, or a wrapper of the package's
+        return any(v is package for v in values_read(own, depth=2))
+    return any(v is package for v in values_read(fn))
+
+
+def _package_edge_function_note(fn) -> str | None:
+    """r420 P1: the package's edge_function inside ``covers`` passed with no word (issue 30:
+    the report must say so); it counts, the tie rule and the sides are the student's."""
+    if not _uses_package_edge_function(fn):
+        return None
+    return ("your code calls the package's edge_function: that counts, the side and tie tests are "
+            "yours, but write the helper yourself too (task 1.1) to learn it")  # fmt: skip
 
 
 def covers_exercise() -> Exercise:

@@ -95,6 +95,21 @@ EDGE_MISTAKES = [
         "area), with no ½",
         gives=lambda a, b, p: _e(a, b, p) / 2,
     ),
+    # r420 H6 and H1: a distance, and p measured from two vertices (the covers check sends
+    # both here)
+    Mistake(
+        "divided by the edge's length",
+        "yours is E divided by the edge's length |b − a|: a signed distance from the edge's "
+        "line. The edge function is E itself, twice the signed area of a, b, p, with no "
+        "division (its sign and its zero are the same, but its value is not)",
+        gives=lambda a, b, p: _e(a, b, p) / float(np.hypot(b[0] - a[0], b[1] - a[1])),
+    ),
+    Mistake(
+        "two anchors",
+        "you measured p from b in x (p.x − b.x) but from a in y (p.y − a.y): that adds "
+        "(b.x − a.x)(b.y − a.y) to E. Take both differences from the same vertex a",
+        gives=lambda a, b, p: (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - b[0]),
+    ),
     Mistake(
         "truncated to an integer",
         "yours is E truncated to a whole number (int(), or an integer array?): E is a float, "

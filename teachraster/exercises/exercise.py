@@ -283,6 +283,10 @@ class Exercise:
         ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
         lines): the untouched stub's figure draws the first case so. False (default): the
         stub's figure draws nothing, since the drawing would show the answer (issue 30, r46).
+    tool_note : callable, optional
+        ``tool_note(fn) -> str | None``: a remark on a passing answer that uses one of the
+        package's tools, which counts (r420 P1: ``covers`` calling the package's
+        ``edge_function``, the warm-up the notebook asks the student to write).
     """
 
     name: str
@@ -317,6 +321,7 @@ class Exercise:
     slow: str | None = None
     call_words: Callable | None = None
     raised_words: Callable | None = None
+    tool_note: Callable | None = None
 
     def all_mistakes(self) -> list[Mistake]:
         """The mistakes table with every :class:`Knobs` family expanded (the same mistakes on

@@ -141,6 +141,9 @@ def check_exercise(spec: Exercise, fn) -> Report:
     # drawn in the passing green beside the note that it does not count)
     example = _drawer(spec, shown, shown[2] if package is None else None)
     precision = None if failures else _low_precision(results)
+    if not failures and package is None and spec.tool_note is not None:
+        tool = run_checker(lambda: spec.tool_note(fn), None)
+        precision = "; ".join(t for t in (precision, tool) if t) or None
     return Report(
         spec.name, failures, len(cases), False, example, stopped, len(ran), package,
         precision=precision, scene=scene,

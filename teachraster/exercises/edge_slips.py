@@ -1,0 +1,74 @@
+"""Slips in the helper ``edge_function`` that ``covers`` calls, and a side test of one edge only,
+as images the ``covers`` and ``fill`` checks can name (r420 H1, H5).
+
+Each is the exercise's own algorithm (orient by E(v1, v2, v3), zero area covers nothing, every
+edge's side test with the top-left rule on E == 0) run with the wrong edge function, or with
+one edge's test alone: an unsigned E (``abs``) covers every centre off the edges' lines; E with
+p measured from b in x and from a in y shifts each sloped edge's line. The words point to the
+helper's own check, which names the slip with numbers (issue 30: "never misdiagnose").
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .cases import CoverageCase
+
+
+def _signed(a, b, p):
+    return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
+
+
+def _mixed(a, b, p):
+    return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - b[0])
+
+
+#: The wrong edge functions, by kind: (a, b, points (..., 2)) -> E.
+EDGE_FUNCTIONS = {
+    "unsigned edge function": lambda a, b, p: np.abs(_signed(a, b, p)),
+    "edge function from two anchors": _mixed,
+}
+
+HELPER_CHECK = 'show(ex.check("edge_function", edge_function)) names it with numbers'
+WORDS = {
+    "unsigned edge function": "your edge function returns |E| (abs): it is never negative, so "
+    "every centre passes every edge's side test, inside the triangle or not, and only the "
+    "centres on an edge's line that the tie test refuses are left out. E must keep its sign, "
+    f"which tells the side of a→b that p lies on: {HELPER_CHECK}",
+    "edge function from two anchors": "your edge function measures p from b in x "
+    "(p[0] − b[0]) but from a in y (p[1] − a[1]): that adds (b.x − a.x)·(b.y − a.y) to E and "
+    "moves each sloped edge's line. Take both differences from the same vertex: "
+    f"{HELPER_CHECK}",
+    "one edge only": "you test one edge only (v1→v2, after orienting): a centre is covered "
+    "only when it is inside all three edges, so test each of v1→v2, v2→v3 and v3→v1 and "
+    "return True only after all three pass",
+}
+
+
+def _top_left(a, b) -> bool:
+    return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
+
+
+def image(case: CoverageCase, xy, kind: str) -> np.ndarray:
+    """(h, w): the exercise's algorithm on triangle ``xy`` with slip ``kind`` (a key of
+    :data:`EDGE_FUNCTIONS`, or "one edge only")."""
+    w, h = case.size
+    rows, cols = np.indices((h, w))
+    points = np.stack([cols + case.origin[0] + 0.5, rows + case.origin[1] + 0.5], axis=-1)
+    ef = EDGE_FUNCTIONS.get(kind, _signed)
+    v = [np.asarray(q, dtype=float) for q in xy]
+    area = float(ef(v[0], v[1], v[2][None])[0])
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    one = kind == "one edge only"  # the reviewer's one-edge covers tests no area either
+    inside = np.full((h, w), area != 0 or one)
+    for k in range(1 if one else 3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = ef(a, b, points)
+        inside &= (e > 0) | ((e == 0) & _top_left(a, b))
+    return inside
+
+
+def images(case: CoverageCase, kind: str) -> np.ndarray:
+    """(n, h, w): :func:`image` of every triangle of the case."""
+    return np.array([image(case, xy, kind) for xy in case.triangles])
