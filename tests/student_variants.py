@@ -6559,3 +6559,12 @@ DIFFERENT.update({
     "perspective weights in logarithms": ("perspective_weights", _weights_log_domain),
     "perspective weights in exact fractions": ("perspective_weights", _weights_fractions),
 })  # fmt: skip
+# r421: the sum of the sizes |E| as the normaliser ("rule only" in the report)
+R421_ABS_SUM = {
+    "barycentric normalised by the sum of |E|": (
+        "barycentric", lambda xy, p: (lambda e: e / np.abs(e).sum())(
+            _bary_from_areas(xy, p) * edge_function(*np.asarray(xy, dtype=float))),
+        "you divided by the sum of the sizes |E(...)|", "normalised by Σ|E|"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R421_ABS_SUM.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R421_ABS_SUM.items()})

@@ -826,6 +826,18 @@ def _proper_mistakes() -> list[Mistake]:
             if (pair, sign) != ((0, 2), -1.0)]  # fmt: skip
     # r421 H3: the vertices sorted (by y, the scanline habit), the weights in sorted order
     out += [Mistake("vertices sorted", _sorted_words(by), gives=_sorted(by)) for by in SORTS]
+    # r421: the sum of the sizes of the three E as the normaliser got the rule only
+    out.append(
+        Mistake(
+            "normalised by Σ|E|",
+            _sum_words(
+                "you divided by the sum of the sizes |E(...)| of the three sub-triangles, which is "
+                "|E(v1, v2, v3)| only where p lies inside, and has no sign; divide by E(v1, v2, v3) = "
+                "{area} itself"
+            ),
+            gives=lambda xy, p: _areas(xy, p) / np.abs(_areas(xy, p)).sum(),
+        )
+    )
     # r421 N2, H1: a p outside the triangle refused (its negative weight taken for no weights)
     out.append(Mistake("refused p outside", _outside_refused_words, gives=_outside_refused))
     for perm in itertools.permutations(range(3)):
