@@ -289,8 +289,8 @@ BEYOND = {
     # (fitted on the failing cases alone: the slip that fails fewer cases first, since it
     # fits every NaN of the other on them: the smallest w of all, w1, the largest w)
     "smallest w of all": lambda a, e, g: _underflow_words(a),
-    "w1": lambda a, e, g: _ratio_words(a, "w1", a[1][0]),
-    "largest w": lambda a, e, g: _ratio_words(a, "the largest w", np.max(a[1])),
+    "w1": lambda a, e, g: _ratio_words(a, "w1", a[1][0], "w1"),
+    "largest w": lambda a, e, g: _ratio_words(a, "the largest w", np.max(a[1]), "w_max"),
     "products of w": lambda a, e, g: (
         f"your terms λ_i times the other two w left float64's range (here {_products(a)}): a "
         f"product of two w overflows or underflows long before the w do. {ONLY_RATIOS}"),
@@ -344,17 +344,18 @@ def _underflow_words(args) -> str:
     )
 
 
-def _ratio_words(args, which: str, by: float) -> str:
+def _ratio_words(args, which: str, by: float, short: str) -> str:
     lam, w = args
     with np.errstate(all="ignore"):
         ratios = by / np.asarray(w, float)
     went = "overflowed" if (ratios == np.inf).any() else "underflowed to 0"
-    return (
-        f"you scaled each λ_i / w_i by {which}, {by:.3g}: the ratios {which} / w_i = "
-        f"{vec(ratios)} {went} ({OVERFLOW}). A ratio of w can neither overflow nor vanish "
-        "only when it is at most 1 and one of them is 1 where λ is not 0: scale by the "
-        "smallest w among the vertices whose λ is not 0"
-    )
+    return f"you scaled each λ_i / w_i by {which}, {by:.3g}: the ratios {short} / w_i = {vec(ratios)} {went} ({OVERFLOW}). {RATIO_REPAIR}"
+
+
+#: r421 T2: which ratios of w are safe (staged: :data:`HINTS`)
+RATIO_REPAIR = ("A ratio of w can neither overflow nor vanish only when it is at most 1 and one "
+                "of them is 1 where λ is not 0: scale by the smallest w among the vertices "
+                "whose λ is not 0")  # fmt: skip
 
 
 def _paired(sigma):
@@ -598,7 +599,6 @@ PERSPECTIVE_WEIGHTS = Exercise(
         (". Scale by the smallest w among the vertices whose λ is not 0: that vertex's term "
          "is its λ itself, so the sum cannot underflow to 0", ": which w keeps at least one "
          "term whole?"),
-        (": scale by the smallest w among the vertices whose λ is not 0", ": which ratios of "
-         "w can do that?"),
+        (RATIO_REPAIR, "Which ratios of w can neither overflow nor all vanish to 0?"),
     ),
 )  # fmt: skip
