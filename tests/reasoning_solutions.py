@@ -33,8 +33,12 @@ def span(xy, row):
 
 
 def perspective_weights(lam, w):
+    """Scaled by the smallest w that weighs (r421 T2: the smallest of all underflows every term
+    where its vertex's λ is 0 and the other w are 1e610 larger)."""
     lam, w = np.asarray(lam, float), np.asarray(w, float)
-    q = lam * (w.min() / w)
+    live = lam != 0
+    q = np.zeros(3)
+    q[live] = lam[live] * (w[live].min() / w[live])
     return q / q.sum()
 
 

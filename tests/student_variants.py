@@ -6892,3 +6892,198 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R420.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R420.items()})
 #: r420: a tolerance below E's least step off an edge (2^-16 px²) changes nothing on the grid.
 DIFFERENT["covers, edges by abs(E) < 1e-5"] = ("covers", _covers_tolerant(edge_tol=1e-5))
+
+
+# -- r421: exercise 3's wrong passes (W1, W2), misnamed (N1, N2), half-named (H1-H6) and
+# the 3.2 w beyond a GPU's range, now graded (T2) ---------------------------------------------
+def _bary_solve3(xy, p, refuse):
+    """3.1 by a 3×3 solve in absolute coordinates, refused by ``refuse(M)``."""
+    m = np.vstack([np.asarray(xy, dtype=float).T, np.ones(3)])
+    if refuse(m):
+        raise ValueError("degenerate")
+    return np.linalg.solve(m, np.array([p[0], p[1], 1.0]))
+
+
+def _bary_windings(xy, p):
+    """H2: v2 and v3 swapped to make every triangle clockwise, the weights not put back."""
+    a, b, c = (np.asarray(q, dtype=float) for q in xy)
+    if edge_function(a, b, c) < 0:
+        b, c = c, b
+    return _bary_from_areas((a, b, c), p)
+
+
+def _bary_sorted_y(xy, p):
+    """H3: the vertices sorted by y (the scanline habit), the weights in sorted order."""
+    return _bary_from_areas(sorted((tuple(map(float, v)) for v in xy), key=lambda v: v[1]), p)
+
+
+def _bary_outside_refused(xy, p):
+    """N2, H1: a p outside (a negative weight) refused."""
+    lam = _bary_from_areas(xy, p)
+    if (lam < 0).any():
+        raise ValueError("p outside the triangle")
+    return lam
+
+
+def _bary_guarded_v3(eps):
+    """H4: two equations about v3, each divided by det + ε, and λ3 = 1 − λ1 − λ2."""
+
+    def barycentric(xy, p):
+        (x1, y1), (x2, y2), (x3, y3) = np.asarray(xy, dtype=float)
+        px, py = np.asarray(p, dtype=float)
+        det = (x1 - x3) * (y2 - y3) - (x2 - x3) * (y1 - y3)
+        if det == 0:
+            raise ValueError("zero area")
+        l1 = ((px - x3) * (y2 - y3) - (x2 - x3) * (py - y3)) / (det + eps)
+        l2 = ((x1 - x3) * (py - y3) - (px - x3) * (y1 - y3)) / (det + eps)
+        return np.array([l1, l2, 1.0 - l1 - l2])
+
+    return barycentric
+
+
+def _weights_naive(lam, w):
+    q = np.asarray(lam, dtype=float) / np.asarray(w, dtype=float)
+    return q / q.sum()
+
+
+def _weights_scaled(by):
+    """λ_i · (by(w) / w_i), normalised: ratios of w that overflow or vanish somewhere."""
+
+    def perspective_weights(lam, w):
+        w = np.asarray(w, dtype=float)
+        q = np.asarray(lam, dtype=float) * (by(w) / w)
+        return q / q.sum()
+
+    return perspective_weights
+
+
+def _weights_products(lam, w):
+    l1, l2, l3 = map(float, lam)
+    w1, w2, w3 = map(float, w)
+    q = np.array([l1 * w2 * w3, l2 * w3 * w1, l3 * w1 * w2])
+    return q / q.sum()
+
+
+def _weights_point_w(lam, w):
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    return lam * (1.0 / np.dot(lam, 1.0 / w)) / w
+
+
+def _weights_loop(lam, w):
+    q = [a / b for a, b in zip(lam, w)]
+    s = sum(q)
+    return [x / s for x in q]
+
+
+def _weights_reversed(lam, w):
+    """H5: μ right, returned in reverse order."""
+    return _weights_by_smallest_weighing(lam, w)[::-1]
+
+
+def _weights_lam_outside(lam, w):
+    """H6: μ inside the triangle, λ itself outside it."""
+    lam = np.asarray(lam, dtype=float)
+    return lam if (lam < 0).any() else _weights_by_smallest_weighing(lam, w)
+
+
+def _weights_by_smallest_weighing(lam, w):
+    """3.2 right for every positive w: scaled by the smallest w among the vertices whose λ is
+    not 0 (no ratio above 1, that vertex's term its λ itself)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    live = lam != 0
+    q = np.zeros(3)
+    q[live] = lam[live] * (w[live].min() / w[live])
+    return q / q.sum()
+
+
+def _weights_log_domain(lam, w):
+    """3.2 in logarithms, the largest term made exactly 1 (exp of 0)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    live = lam != 0
+    logs = np.full(3, -np.inf)
+    logs[live] = np.log(np.abs(lam[live])) - np.log(w[live])
+    q = np.sign(lam) * np.exp(logs - logs[live].max())
+    return q / q.sum()
+
+
+def _weights_fractions(lam, w):
+    """3.2 in exact fractions of the floats."""
+    q = [Fraction(float(a)) / Fraction(float(b)) for a, b in zip(lam, w)]
+    s = sum(q)
+    return np.array([float(x / s) for x in q])
+
+
+R421 = {
+    "barycentric refused by |LU det| < 1e-9": (
+        "barycentric", lambda xy, p: _bary_solve3(xy, p, lambda m: abs(np.linalg.det(m)) < 1e-9),
+        "your code reads np.linalg.det", "rounded determinant"),
+    "barycentric refused by matrix_rank < 3": (
+        "barycentric", lambda xy, p: _bary_solve3(xy, p, lambda m: np.linalg.matrix_rank(m) < 3),
+        "your code reads np.linalg.matrix_rank", "matrix rank"),
+    "barycentric of vertices read as (y, x)": (
+        "barycentric", lambda xy, p: _bary_from_areas(np.asarray(xy, dtype=float)[:, ::-1], p),
+        "or read every vertex as (y, x)", "p's x and y swapped"),
+    "barycentric refusing a p outside": (
+        "barycentric", _bary_outside_refused, "and you refused it: a point outside still has "
+        "weights", "refused p outside"),
+    "barycentric made clockwise by swapping v2 and v3": (
+        "barycentric", _bary_windings, "your λ2 and λ3 are swapped on the triangles that run "
+        "counter-clockwise", "swapped on one winding"),
+    "barycentric of the vertices sorted by y": (
+        "barycentric", _bary_sorted_y, "in the order of the vertices sorted by y",
+        "vertices sorted"),
+    "barycentric about v3 with det + 1e-9, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _bary_guarded_v3(1e-9), "your λ3 = 1 − λ1 − λ2 sums them to 1",
+        "epsilon added to the area"),
+    "barycentric about v3 with det + 1e-6, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _bary_guarded_v3(1e-6), "you added a small number (about 1e-06)",
+        "epsilon added to the area"),
+    "perspective weights μ reversed": (
+        "perspective_weights", _weights_reversed, "in another order, (μ3, μ2, μ1)",
+        "μ in the order μ3, μ2, μ1"),
+    "perspective weights λ outside the triangle": (
+        "perspective_weights", _weights_lam_outside, "you returned λ itself", "λ outside"),
+    "perspective weights rounded to 5 decimals": (
+        "perspective_weights", lambda lam, w: np.round(_weights_by_smallest_weighing(lam, w), 5),
+        "your weights are (0.42105, 0.31579, 0.26316)", "rounded"),
+    "perspective weights as lesson 04 prints them, beyond a GPU's w": (
+        "perspective_weights", _weights_naive, "overflowed (float64's largest number is 1.8e308",
+        "λ/w overflows"),
+    "perspective weights as a loop of lists, beyond a GPU's w": (
+        "perspective_weights", _weights_loop, "inf / inf is NaN", "λ/w overflows"),
+    "perspective weights scaled by w1, beyond a GPU's w": (
+        "perspective_weights", _weights_scaled(lambda w: w[0]), "by w1", "w1"),
+    "perspective weights scaled by the smallest w of all": (
+        "perspective_weights", _weights_scaled(np.min), "you scaled by the smallest w of all",
+        "smallest w of all"),
+    "perspective weights scaled by the largest w": (
+        "perspective_weights", _weights_scaled(np.max), "by the largest w", "largest w"),
+    "perspective weights from products of w": (
+        "perspective_weights", _weights_products, "a product of two w overflows",
+        "products of w"),
+    "perspective weights through the point's w": (
+        "perspective_weights", _weights_point_w, "you took the point's w as 1 / Σ λ_j / w_j",
+        "the point's w"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R421.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R421.items()})
+# r421 T2: right on a GPU's w only, so no longer correct: now in R421 above (w1, lesson 04's)
+# or named there by their class (the smallest w of all)
+for _label in ("perspective weights from ratios of w", "perspective weights scaled by w1",
+               "perspective weights as lesson 04 prints them"):  # fmt: skip
+    DIFFERENT.pop(_label)
+DIFFERENT.update({
+    "perspective weights scaled by the smallest w that weighs": (
+        "perspective_weights", _weights_by_smallest_weighing),
+    "perspective weights in logarithms": ("perspective_weights", _weights_log_domain),
+    "perspective weights in exact fractions": ("perspective_weights", _weights_fractions),
+})  # fmt: skip
+# r421: the sum of the sizes |E| as the normaliser ("rule only" in the report)
+R421_ABS_SUM = {
+    "barycentric normalised by the sum of |E|": (
+        "barycentric", lambda xy, p: (lambda e: e / np.abs(e).sum())(
+            _bary_from_areas(xy, p) * edge_function(*np.asarray(xy, dtype=float))),
+        "you divided by the sum of the sizes |E(...)|", "normalised by Σ|E|"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R421_ABS_SUM.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R421_ABS_SUM.items()})

@@ -92,14 +92,17 @@ def _first_words(name, fn):
 
 
 def test_lesson_04s_formula_passes_3_2_on_a_gpus_w():
-    """N3-2 asked an overflowing answer back for w = 1e-310; since r126 D3-1 3.2 grades only w
-    a GPU meets, and lesson 04's formula as printed passes them."""
+    """N3-2 asked an overflowing answer back for w = 1e-310; r126 D3-1 graded only w a GPU
+    meets, and lesson 04's formula as printed passes them; r421 T2 grades w = 1e-310 again:
+    the formula fails there alone, its overflow named."""
 
     def naive(lam, w):
         q = np.asarray(lam, float) / np.asarray(w, float)
         return q / q.sum()
 
-    assert ex.check("perspective_weights", naive, budget=60).passed
+    report = ex.check("perspective_weights", naive, budget=60)
+    assert {f.kind for f in report.failures} == {"λ/w overflows"}, str(report)
+    assert all("w beyond a GPU's range" in f.case for f in report.failures), str(report)
 
 
 def test_trilinears_clamp_is_asked_back_on_the_first_try():
@@ -171,21 +174,28 @@ def _naive_weights(lam, w):
     return q / q.sum()
 
 
-def test_3_2_grades_no_w_beyond_a_gpus_and_says_so():
-    """N3-1 / r126 D3-1: cell 7 called w = 1e-310 "the simulator's concern, not a GPU's" and
-    the check graded it; now every case's w lies within float32's range and the text offers
-    such w as an ungraded extra."""
+def test_3_2_grades_w_beyond_a_gpus_last_and_says_so():
+    """N3-1 / r126 D3-1 made w = 1e-310 an ungraded extra; r421 T2 grades such w again (the
+    reasoning of 3.2, beside lesson 04's printed formula), as the last cases, and the text
+    says so; on every other case lesson 04's formula is right."""
     import nbformat
 
-    from teachraster.exercises.perspective_weighting import same_weights, weights_cases
+    from teachraster.exercises.perspective_weighting import (
+        beyond_a_gpu,
+        same_weights,
+        weights_cases,
+    )
 
-    f32 = np.finfo(np.float32)
-    for label, (lam, w), mu in weights_cases():
-        assert f32.tiny <= w.min() and w.max() <= f32.max, label
-        assert same_weights(_naive_weights(lam, w), mu), label
+    cases = weights_cases()
+    beyond = [label for label, _, _ in cases if beyond_a_gpu(label)]
+    assert beyond and [label for label, _, _ in cases[-len(beyond) :]] == beyond
+    for label, (lam, w), mu in cases:
+        if not beyond_a_gpu(label):
+            assert same_weights(_naive_weights(lam, w), mu), label
     path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
     text = " ".join(nbformat.read(path, 4).cells[5].source.split())
-    assert "An extra, not graded" in text and "w = (1e-310, 2e-310, 4e-310)" in text
+    assert "the check also asks it of those extreme w" in text
+    assert "w = (1e-310, 2e-310, 4e-310)" in text and "An extra, not graded" not in text
     assert "`perspective_w_ratio_1e6` case, w from 1e-3 to 1e3" in text
 
 
@@ -218,13 +228,14 @@ def test_a_triangle_missed_whole_is_shown_by_a_pixel_strictly_inside():
     assert "strictly inside" in example and "lies exactly on edge" not in example, words
 
 
-def test_a_product_of_ratios_to_the_largest_w_passes_on_a_gpus_w():
+def test_a_product_of_ratios_to_the_largest_w_fails_beyond_a_gpus_w_only():
     """D3-3 (r114): λ_i·w_j·w_k with the w scaled by the largest underflowed only for w =
-    1e-310; on the w 3.2 grades since r126 D3-1 it is a right answer."""
+    1e-310; right on a GPU's w (r126 D3-1), it fails only the w r421 T2 grades again."""
 
     def products(lam, w):
         lam, w = np.asarray(lam, float), np.asarray(w, float) / np.max(w)
         q = lam * np.array([w[1] * w[2], w[0] * w[2], w[0] * w[1]])
         return q / q.sum()
 
-    assert ex.check("perspective_weights", products, budget=60).passed
+    report = ex.check("perspective_weights", products, budget=60)
+    assert not report.passed and all("w beyond a GPU's range" in f.case for f in report.failures)

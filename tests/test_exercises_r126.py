@@ -43,7 +43,9 @@ def test_absolute_lambda_is_named_on_several_points_outside_the_triangle():
 
     def absolute(lam, w):
         lam, w = np.asarray(lam, float), np.asarray(w, float)
-        q = np.abs(lam) * (w.min() / w)
+        live = lam != 0  # r421 T2: by the smallest w that weighs (the smallest of all underflows)
+        q = np.zeros(3)
+        q[live] = np.abs(lam[live]) * (w[live].min() / w[live])
         return q / q.sum()
 
     report = _check("perspective_weights", absolute)
@@ -59,10 +61,11 @@ def _naive_weights(lam, w):
         return q / q.sum()
 
 
-def test_lesson_04s_formula_passes_the_floor_and_3_2():
+def test_lesson_04s_formula_passes_the_floor_and_fails_3_2_beyond_a_gpu():
     """D12-1: "fails, though all 1728 pixels match the package's" for w = 1e-310, which
-    exercise 3 calls "the simulator's concern, not a GPU's"; since D3-1 3.2 grades no such w,
-    and the formula passes both, with no note."""
+    exercise 3 calls "the simulator's concern, not a GPU's"; D3-1 left such w ungraded. Since
+    r421 T2 3.2 grades them again: the formula fails 3.2 there, and the floor still passes,
+    with a note that 3.2's own check counts them."""
     from test_capstone import _mine
 
     report = ex.capstone(
@@ -70,10 +73,11 @@ def test_lesson_04s_formula_passes_the_floor_and_3_2():
     )
     text = str(report)
     assert report.passed and report.n_wrong == 0, text
-    assert "all 1728 pixels match the package's" in text and "beyond float32" not in text, text
-    assert _check("perspective_weights", _naive_weights).passed
+    assert "all 1728 pixels match the package's" in text, text
+    assert "exercise 3.2's own check does: a simulator meets them" in text, text
+    assert not _check("perspective_weights", _naive_weights).passed
     cell = " ".join(_cell("12_capstone.ipynb", 9).split())  # 12.3 (r199: a folded cell at 2)
-    assert "w near 1e-310, which only a simulator meets, are 3.2's ungraded extra" in cell, cell
+    assert "which only a simulator meets, do not count here: 3.2 grades those itself" in cell
 
 
 def test_a_wrong_weight_on_a_gpus_w_still_fails_the_scene_whose_pixels_match():

@@ -41,7 +41,14 @@ def check(name, fn):
 
 
 def kinds(report) -> set:
-    return {f.kind for f in report.failures}
+    """The kinds of the failures on a GPU's w: r421 T2 grades 3.2's w beyond that range again,
+    where the slips these tests write on lesson 04's formula overflow too (test_exercises_r421
+    names that)."""
+    return {f.kind for f in report.failures if not f.case.startswith(BEYOND_A_GPU)}
+
+
+#: The label of 3.2's cases whose w no GPU meets (r421 T2)
+BEYOND_A_GPU = "w beyond a GPU's range"
 
 
 # -- D3-1: a solver's LinAlgError is no zero-area test ----------------------------------------
@@ -167,6 +174,8 @@ def test_a_rounded_perspective_answer_is_not_sent_back_to_derive():
     report = check("perspective_weights", rounded)
     assert kinds(report) == {"rounded"}, kinds(report)
     for f in report.failures:
+        if f.case.startswith(BEYOND_A_GPU):  # r421 T2: lesson 04's formula overflows there
+            continue
         assert "rounded to" in f.explanation and "turn that around" not in f.explanation
 
 

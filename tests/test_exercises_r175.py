@@ -160,13 +160,18 @@ def test_an_epsilon_added_to_each_w_is_named_with_its_size():
     report = check("perspective_weights", eps_in_w)
     assert kinds(report) == {"epsilon added to w"}, kinds(report)
     for f in report.failures:
+        if f.case.startswith("w beyond a GPU's range"):  # r421 T2: ε ≫ w, λ itself there
+            continue
         assert "about 1e-06" in f.explanation and "to each w" in f.explanation
         assert "in terms of μ" not in f.explanation
 
 
 def test_the_right_3_2_and_a_larger_constant_in_w_are_not_told_epsilon():
-    def right(lam, w):
-        q = np.asarray(lam, float) / np.asarray(w, float)
+    def right(lam, w):  # r421 T2: by the smallest w that weighs, right beyond a GPU's w too
+        lam, w = np.asarray(lam, float), np.asarray(w, float)
+        live = lam != 0
+        q = np.zeros(3)
+        q[live] = lam[live] * (w[live].min() / w[live])
         return q / q.sum()
 
     assert check("perspective_weights", right).passed

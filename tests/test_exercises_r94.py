@@ -293,8 +293,10 @@ def _persp(kind):
             q = lam * (w.max() / w)
         elif kind == "over w squared":
             q = lam * (w.min() / w) ** 2
-        else:
-            q = lam * (w.min() / w)
+        else:  # r421 T2: by the smallest w that weighs (the smallest of all underflows)
+            live = lam != 0
+            q = np.zeros(3)
+            q[live] = lam[live] * (w[live].min() / w[live])
         return q / q.sum()
 
     return perspective_weights
@@ -324,10 +326,13 @@ def test_clamped_perspective_weights_are_named_here_and_in_the_capstone():
     assert "your weight is 0 where λ is negative" in last and "sum to 1" not in last, last
 
 
-def test_the_direction_of_the_ratio_no_longer_matters_on_a_gpus_w():
-    """r94 D3-4: λ·(max w / w) passed: no case had w more than 1.8e308 apart; since r126
-    D3-1 3.2 grades only w a GPU meets, where scaling by any w is right."""
-    assert ex.check("perspective_weights", _persp("reversed ratios")).passed
+def test_the_direction_of_the_ratio_matters_again_beyond_a_gpus_w():
+    """r94 D3-4: λ·(max w / w) passed: no case had w more than 1.8e308 apart; r126 D3-1 graded
+    only w a GPU meets, where scaling by any w is right; r421 T2 grades w 1e610 apart again,
+    where the ratio overflows, and names it."""
+    report = ex.check("perspective_weights", _persp("reversed ratios"))
+    assert not report.passed and {f.kind for f in report.failures} == {"largest w"}, str(report)
+    assert all("w beyond a GPU's range" in f.case for f in report.failures), str(report)
 
 
 def _markdown(name: str) -> str:

@@ -86,10 +86,11 @@ def test_every_issue_30_exercise_has_correct_variants_and_named_mistakes():
     assert {label for label, (name, _, _) in WRONG.items() if name in issue_30} <= set(KINDS)
 
 
-def test_perspective_weights_as_lesson_04_prints_them_pass():
-    """r126 D3-1: 3.2 grades w a GPU meets: λ/w normalised, which overflowed at w = 1e-310
-    and was told "only the ratios matter", is right on them."""
-    assert ex.check("perspective_weights", lambda lam, w: (lam / w) / (lam / w).sum()).passed
+def test_perspective_weights_as_lesson_04_prints_them_fail_beyond_a_gpus_w():
+    """r126 D3-1 graded only w a GPU meets, where λ/w normalised is right; r421 T2 grades w =
+    1e-310 again (3.2 was the printed formula): it fails there, its overflow named."""
+    report = ex.check("perspective_weights", lambda lam, w: (lam / w) / (lam / w).sum())
+    assert {f.kind for f in report.failures} == {"λ/w overflows"}, str(report)
 
 
 def test_safe_near_never_blames_float32_for_a_named_mistake():
@@ -814,8 +815,11 @@ def test_span_one_past_the_end_in_float64_is_an_off_by_one_not_float32():
 def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
     """r46 P3: a point outside the triangle has a negative λ; clamping it must fail."""
 
-    def clamped(lam, w):
-        q = np.clip(lam, 0, 1) * (w.min() / w)
+    def clamped(lam, w):  # (r421 T2: scaled by the smallest w that weighs, right beyond a GPU)
+        lam = np.clip(lam, 0, 1)
+        live = lam != 0
+        q = np.zeros(3)
+        q[live] = lam[live] * (w[live].min() / w[live])
         return q / q.sum()
 
     report = ex.check("perspective_weights", clamped)

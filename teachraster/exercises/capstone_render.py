@@ -447,7 +447,7 @@ def _on_a_gpu(name: str, failures: list[Failure]) -> tuple[Failure | None, str |
     aside = None if not beyond else (
         f"your {name} still fails {len(beyond)} of exercise 3.2's cases whose w lie beyond "
         f"float32's range, such as {beyond[0].case}: a GPU never meets such w, so the scene "
-        "does not count them (nor does exercise 3.2's check, which no longer holds such w)"
+        "does not count them (exercise 3.2's own check does: a simulator meets them)"
     )  # fmt: skip
     return (counted[0] if counted else None), aside
 

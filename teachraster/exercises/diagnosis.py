@@ -382,7 +382,9 @@ def low_precision_mistake(spec: Exercise) -> Mistake:
             # the exercise's float32 words (_inf_by_float32), not weighed as rounding here
             return None
         if _outside_float32(args) is not None:
-            return True
+            # r421 T2: a float64 answer (3.2's λ / w overflowing at w = 1e-310) is no float32
+            # one: float32 says nothing of it there
+            return True if answer_in_float32(got) else None
         # r153 D3-5: 0.33333333 (np.round(λ, 8)) is within float32's rounding of 1/3 but is
         # no float32 number: the question is asked only of numbers float32 can hold
         if not held_by_precision(expected, got):
@@ -491,6 +493,8 @@ def rounded_mistake() -> Mistake:
         g = _numbers(got)
         if _numbers(expected) is None or g is None or g.dtype == object:
             return None  # no number is right here (3.1's ValueError): no say
+        if not np.isfinite(g).all():  # r421 T2: a NaN (an overflow beside it) shows no rounding
+            return None
         if _rounded_to(expected, got) is not None:
             return True
         return None if _whole(got) else False  # whole numbers show no rounding: no say
@@ -537,6 +541,15 @@ def transposed_mistake() -> Mistake:
         return run_checker(lambda: _transposed_to(expected, got), None)
 
     return Mistake("transposed", TRANSPOSED_WORDS, fits=fits, only_whole=True)
+
+
+def answer_in_float32(got) -> bool:
+    """Is the answer in float32 (or float16): an array, or numbers, of that type?"""
+    try:
+        dtype = np.asarray(got).dtype
+    except (TypeError, ValueError):
+        return False
+    return dtype.kind == "f" and dtype.itemsize <= 4
 
 
 def _outside_float32(args) -> float | None:

@@ -62,6 +62,15 @@ THIN_FAR = (
     ("thinner, 100 000 px out, E(v1, v2, v3) = 1/65536",
      [[100000.0, 100000.0], [100000.00390625, 100000.0], [100000.5, 100000.00390625]],
      (100000.5, 100000.5)),
+    # r421 W2: thin ones whose 3×3 matrix np.linalg.matrix_rank calls singular (its smallest
+    # singular value below the tolerance that grows with the largest), though E ≠ 0: the
+    # first is the report's, the second drawn by a seeded search for such triangles
+    ("thin, 90 000 px out, E(v1, v2, v3) = 0.000137",
+     [[90387.18359375, 20345.5234375], [90387.21875, 20341.80859375],
+      [90386.97265625, 20367.81640625]], (90387.5, 20351.5)),
+    ("thin, 87 000 px out, E(v1, v2, v3) = 0.000137",
+     [[59232.2578125, 87093.6328125], [59232.29296875, 87075.3515625],
+      [59232.234375, 87105.82421875]], (59232.5, 87091.5)),
 )  # fmt: skip
 
 
@@ -88,6 +97,15 @@ DEGENERATE = (
     ("three vertices on one line, 100 000 px out",
      [[100009.6796875, 100010.20703125], [100011.08984375, 100007.4140625],
       [100008.26953125, 100013.0]], (100009.5, 100010.5)),
+    # r421 W1: collinear on the grid, but np.linalg.det's LU elimination leaves 1.2e-9 and
+    # 2e-9 (the report's, and the largest of a seeded search): a test |det| < 1e-9 lets them
+    # through, and the solve returns weights of about 1e9
+    ("three vertices on one line, 85 000 px out",
+     [[63715.5703125, 84699.8359375], [63748.73828125, 84658.73828125],
+      [63687.140625, 84735.0625]], (63717.5, 84697.5)),
+    ("three vertices on one line, 97 000 px out",
+     [[84953.11328125, 97356.546875], [84997.2734375, 97302.37890625],
+      [84921.5703125, 97395.23828125]], (84957.5, 97351.5)),
 )  # fmt: skip
 
 
@@ -159,7 +177,9 @@ def _area(xy) -> float:
 def explain_barycentric(args, expected, got) -> str:
     xy, p = args
     if isinstance(expected, str):
-        yours = "you raised ValueError" if got == REFUSED else f"yours is {short(got)}"
+        # r421: ``got == REFUSED`` on an array raised, and the report fell back to its bare
+        # "yours is …, expected 'raised ValueError'"
+        yours = "you raised ValueError" if isinstance(got, str) else f"yours is {short(got)}"
         return f"{tri_words(xy)} has E(v1, v2, v3) = 0 (p={vec(p)}); {yours}"
     if isinstance(got, str):
         return (f"at p={vec(p)} in {tri_words(xy)} you raised ValueError; the weights are "
@@ -241,23 +261,53 @@ def _epsilon_fits(args, expected, got) -> bool | None:
     total = float(np.sum(g))
     if g.shape != (3,) or not np.isfinite(g).all() or total == 0:
         return False
-    delta = area / total - area
+    delta = _guard(xy, p, g)
     # r164: the sign a guard has, E + ε or E + copysign(ε, E) (a "−8e-05 added to E =
     # −7.63e-05" was half-areas); one ε on every case: :func:`_epsilon`
-    guard = delta > 0 or (delta < 0) == (area < 0)
-    if delta == 0 or abs(delta) > 1e-3 or not guard or _rounded(g, expected):
+    guard = delta is not None and (delta > 0 or (delta < 0) == (area < 0))
+    if not guard or delta == 0 or abs(delta) > 1e-3 or _rounded(g, expected):
         return False
     # (1e-9: δ read back from a sum of weights of 1e4 cancelling to 0.13, as on the thin
     # triangle of E = 2^-16 of :data:`THIN_FAR`, is good to a few 1e-12 only)
-    return bool(np.allclose(g, _areas(xy, p) / (area + delta), rtol=1e-9, atol=1e-300))
+    # (the weight taken as 1 minus the others is near 0 where p lies near its edge: there
+    # 1 − λ1 − λ2 cancels, to float64's rounding of the weights' size)
+    atol = 1e-300 if _rest_of(g) is None else 4e-16 * max(1.0, float(np.abs(g).max()))
+    return bool(np.allclose(g, _guarded(xy, p, delta, _rest_of(g)), rtol=1e-9, atol=atol))
+
+
+def _rest_of(g) -> int | None:
+    """The weight a guarded solve took as 1 minus the other two (r421 H4: the route 3.1
+    suggests, λ3 = 1 − λ1 − λ2), read from an answer that sums to 1; None where the three
+    were each divided (their sum is then off 1)."""
+    return 2 if abs(float(np.sum(g)) - 1) <= 1e-12 else None
+
+
+def _guarded(xy, p, delta: float, rest: int | None) -> np.ndarray:
+    """λ_i = E(...)/(E(v1, v2, v3) + δ), and the weight ``rest`` (if any) 1 minus the others."""
+    lam = _areas(xy, p) / (_area(xy) + delta)
+    if rest is not None:  # the other two in order, as ``1.0 - l1 - l2`` is written
+        i, j = (k for k in range(3) if k != rest)
+        lam[rest] = 1.0 - lam[i] - lam[j]
+    return lam
+
+
+def _guard(xy, p, g) -> float | None:
+    """δ read back from weights ``g`` divided by E(v1, v2, v3) + δ (the three, or the two
+    beside λ3 = 1 − λ1 − λ2), or None."""
+    area, total = _area(xy), float(np.sum(g))
+    if _rest_of(g) is None:
+        return area / total - area if total else None
+    areas = _areas(xy, p)
+    k = int(np.argmax(np.abs(areas[:2])))
+    return float(areas[k] / g[k] - area) if g[k] else None
 
 
 def _epsilon(args, expected, got) -> float | None:
     """The size of the ε added to E on this case (:func:`_epsilon_fits`), the one number
     that must be the same on every case it is named on (:attr:`.Mistake.parameter`)."""
-    xy, _ = args
-    area, total = _area(xy), float(np.sum(np.asarray(got, dtype=float)))
-    return abs(area / total - area) if total else None
+    xy, p = args
+    delta = _guard(xy, p, np.asarray(got, dtype=float))
+    return None if delta is None else abs(delta)
 
 
 def _scaled_words(args, expected, got, c) -> str:
@@ -304,13 +354,17 @@ def rounded_words(got, expected) -> str:
 
 
 def _epsilon_words(args, expected, got) -> str:
-    xy, _ = args
+    xy, p = args
     area = _area(xy)
-    delta = area / float(np.sum(np.asarray(got, dtype=float))) - area
-    error = float(np.max(np.abs(np.asarray(got, dtype=float) - expected)))
+    g = np.asarray(got, dtype=float)
+    delta = _guard(xy, p, g)
+    error = float(np.max(np.abs(g - expected)))
+    rest = ("" if _rest_of(g) is None else
+            " (your λ3 = 1 − λ1 − λ2 sums them to 1, but λ1 and λ2 carry the ε)")  # fmt: skip
     return (
         f": you added a small number (about {delta:.0e}) to E(v1, v2, v3) = {num(area)} (a guard "
-        f"against dividing by 0?): on this small triangle that moves the weights by {error:.1e}; "
+        f"against dividing by 0?){rest}: on this small triangle that moves the weights by "
+        f"{error:.1e}; "
         "divide by E(v1, v2, v3) itself, and refuse a zero area with ValueError (on the "
         "1/256-px grid E(v1, v2, v3) is exact, so E == 0 tells it without a nudge)"
     )
@@ -357,7 +411,7 @@ def _refused_words(args, expected, got) -> str:
             "differences of the coordinates on the 1/256-px grid, and it is not 0, so the "
             "triangle has weights. Only E == 0 exactly is no triangle; a "
             "test that grows with the coordinates (a threshold relative to x², a condition "
-            "number of the 3×3 matrix) refuses such a triangle"
+            "number or a rank of the 3×3 matrix) refuses such a triangle"
         )
     if abs(area) >= 1:  # r164 C2: "however thin" was said of a 67.5-px² triangle
         return (
@@ -654,6 +708,22 @@ def _cond_words(args, expected, got) -> str:
     )
 
 
+def _rank_words(args, expected, got) -> str:
+    """r421 W2: ``if np.linalg.matrix_rank(M) < 3: raise ValueError`` refused a thin far one."""
+    xy, _ = args
+    m = np.vstack([np.asarray(xy, float).T, np.ones(3)])
+    sigma = np.linalg.svd(m, compute_uv=False)
+    return (
+        ": your code reads np.linalg.matrix_rank, which counts the singular values of the 3×3 "
+        f"matrix above a tolerance that grows with the largest one: here the smallest, "
+        f"{sigma.min():.1e}, falls below {sigma.max() * 3 * np.finfo(float).eps:.1e}, so it "
+        f"called the matrix singular, yet this triangle's E(v1, v2, v3) = {_area(xy)!r} is exact "
+        "in float64 and not 0: you refused a thin but real triangle. A rank (a determinant, "
+        "a condition number) computed in floating point is no exact area test; test E == 0 "
+        "and raise ValueError for it alone"
+    )
+
+
 ZERO_AREA_MISTAKES = [
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(-1.0))),
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(1.0))),
@@ -678,6 +748,9 @@ ZERO_AREA_MISTAKES = [
     Mistake("float32", _float32_flattened_words, fits=_float32_flattened, reads="float32"),
     # r348 item 1: ``if np.linalg.cond(M) > 1e12: raise ValueError`` refused a thin far one
     Mistake("condition number", _cond_words, reads="cond",
+            fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
+    # r421 W2: ``if np.linalg.matrix_rank(M) < 3: raise ValueError`` refused a thin far one
+    Mistake("matrix rank", _rank_words, reads="matrix_rank",
             fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
     Mistake("refused a proper triangle", _refused_words,
             fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
@@ -718,8 +791,11 @@ def _proper_mistakes() -> list[Mistake]:
         # perspective_weights does by default)
         *(Mistake("clamped", _clamped_words, gives=_clamped(upper, renormalised))
           for upper in (1.0, np.inf) for renormalised in (True, False)),
-        Mistake("p's x and y swapped", ": you swapped p's x and y: p = (x, y), its column "
-                "first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
+        # r421 N1: the vertices read as (y, x) give the very same weights (swapping x and y
+        # of every point keeps every ratio of areas), so both are named
+        Mistake("p's x and y swapped", ": you swapped p's x and y, or read every vertex as "
+                "(y, x) (the two give the same weights): p and the vertices are (x, y), the "
+                "column first", gives=lambda xy, p: _areas(xy, np.asarray(p)[::-1]) / _area(xy)),
         Mistake("half areas", _sum_words("you took half of each sub-triangle's E (its "
                                          "area) but divided by the whole E(v1, v2, v3) = "
                                          "{area}, twice the triangle's area: take both as "
@@ -742,10 +818,102 @@ def _proper_mistakes() -> list[Mistake]:
     out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
             for k in range(3)]  # fmt: skip
     out.append(Mistake("no sum equation", _no_sum_row_words, fits=_no_sum_row))
+    # r421 H2: two vertices swapped to make every triangle run one way, the weights returned
+    # in the swapped order (the reversal is "reversed where E < 0" above)
+    out += [Mistake("swapped on one winding", _one_winding_words(pair, sign),
+                    gives=_one_winding(pair, sign))
+            for pair in ((0, 1), (1, 2), (0, 2)) for sign in (-1.0, 1.0)
+            if (pair, sign) != ((0, 2), -1.0)]  # fmt: skip
+    # r421 H3: the vertices sorted (by y, the scanline habit), the weights in sorted order
+    out += [Mistake("vertices sorted", _sorted_words(by), gives=_sorted(by)) for by in SORTS]
+    # r421: the sum of the sizes of the three E as the normaliser got the rule only
+    out.append(
+        Mistake(
+            "normalised by Σ|E|",
+            _sum_words(
+                "you divided by the sum of the sizes |E(...)| of the three sub-triangles, which is "
+                "|E(v1, v2, v3)| only where p lies inside, and has no sign; divide by E(v1, v2, v3) = "
+                "{area} itself"
+            ),
+            gives=lambda xy, p: _areas(xy, p) / np.abs(_areas(xy, p)).sum(),
+        )
+    )
+    # r421 N2, H1: a p outside the triangle refused (its negative weight taken for no weights)
+    out.append(Mistake("refused p outside", _outside_refused_words, gives=_outside_refused))
     for perm in itertools.permutations(range(3)):
         if perm != (0, 1, 2):
             out.append(Mistake("order", ORDER, gives=lambda xy, p, perm=perm: (_areas(xy, p) / _area(xy))[list(perm)]))  # fmt: skip
     return out
+
+
+def _one_winding(pair, sign: float):
+    """The weights with λ_i and λ_j of ``pair`` swapped where E(v1, v2, v3) has the sign
+    ``sign``: ``if E(v1, v2, v3) < 0: v2, v3 = v3, v2`` (r421 H2)."""
+
+    def gives(xy, p):
+        lam = _areas(xy, p) / _area(xy)
+        if _area(xy) * sign > 0:
+            lam[list(pair)] = lam[list(pair[::-1])]
+        return lam
+
+    return gives
+
+
+def _one_winding_words(pair, sign: float) -> str:
+    i, j = (k + 1 for k in pair)
+    way = "counter-clockwise (E(v1, v2, v3) < 0)" if sign < 0 else "clockwise (E(v1, v2, v3) > 0)"
+    return (
+        f": your λ{i} and λ{j} are swapped on the triangles that run {way}, and right on the "
+        f"others: you swapped v{i} and v{j} to make every triangle run one way (the habit of "
+        "coverage code?) and returned the weights in the swapped order. λ_k belongs to v_k as "
+        "given: keep the vertices (the signed area serves both windings), or put the two "
+        "weights back"
+    )
+
+
+#: r421 H3: how a student sorts the vertices (a stable sort, as Python's sorted is)
+SORTS = {
+    "y": lambda v: np.argsort(v[:, 1], kind="stable"),
+    "x": lambda v: np.argsort(v[:, 0], kind="stable"),
+    "y, then x": lambda v: np.lexsort((v[:, 0], v[:, 1])),
+}
+
+
+def _sorted(by: str):
+    def gives(xy, p):
+        order = SORTS[by](np.asarray(xy, float))
+        return (_areas(xy, p) / _area(xy))[order]
+
+    return gives
+
+
+def _sorted_words(by: str):
+    def words(args, expected, got):
+        xy, _ = args
+        order = SORTS[by](np.asarray(xy, float))
+        named = ", ".join(f"v{k + 1}" for k in order)
+        return (
+            f": your weights are the right ones in the order of the vertices sorted by {by} "
+            f"({named}): you sorted the vertices (the scanline habit?) and returned the weights "
+            "in that order. λ_k belongs to v_k as given: sort a copy only, or put the weights "
+            "back"
+        )
+
+    return words
+
+
+def _outside_refused(xy, p):
+    lam = _areas(xy, p) / _area(xy)
+    return REFUSED if (lam < 0).any() else lam
+
+
+def _outside_refused_words(args, expected, got) -> str:
+    k = int(np.argmin(expected))
+    return (
+        f": p lies outside the triangle (outside the edge opposite v{k + 1}, so λ{k + 1} < 0), "
+        "and you refused it: a point outside still has weights, one or two of them negative "
+        "(3.1 asks for them everywhere); raise ValueError only for a triangle of zero area"
+    )
 
 
 def _far(args) -> tuple[float, float]:
@@ -830,7 +998,12 @@ def _bary_rule(args, expected, got) -> str:
     if g.shape == (3,) and np.isfinite(g).all() and not _rebuilds_p(xy, args[1], g, 1e-6):
         # r348 P1: what the student can check on the case's numbers, hint or not
         rebuilt = g @ np.asarray(xy, float)
-        off += f"; yours rebuild λ1·v1 + λ2·v2 + λ3·v3 = {vec(rebuilt)}, not p = {vec(args[1])}"
+        # r421 S2: with the digits that tell the two points apart ("(40.5, 1.5), not p =
+        # (40.5, 1.5)" was printed)
+        off += (
+            f"; yours rebuild λ1·v1 + λ2·v2 + λ3·v3 = {vec(rebuilt, args[1])}, not p = "
+            f"{vec(args[1], rebuilt)}"
+        )
     return (
         f": λ_i = E of the edge opposite v_i at p, divided by E(v1, v2, v3) = {num(_area(xy))}{off}"
     )

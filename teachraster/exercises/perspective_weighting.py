@@ -4,10 +4,12 @@ A point of the screen triangle with barycentrics λ is the image of a point of t
 triangle with barycentrics μ. Its clip position is Σ μ_i P_i with w = Σ μ_i w_i, and the
 divide by w gives λ_i = μ_i w_i / Σ_j μ_j w_j, so μ_i ∝ λ_i / w_i (Ek, *Triangles and
 Perspective Correct Interpolation*, §2): the student derives that from the divide by w. The
-cases' w lie within a GPU's range (float32's), from all equal to 1e6 apart (the catalogue's
-``perspective_w_ratio_1e6``): w near 1e-310, where λ/w overflows, are the simulator's concern
-(its pipeline must return no NaN), not a GPU's, and since r126 D3-1 no longer graded here.
-Any value f then interpolates as Σ μ_i f_i.
+cases' w run from all equal to 1e6 apart (the catalogue's ``perspective_w_ratio_1e6``) and,
+since r421 T2, beyond a GPU's range too (its ``perspective_w_scale``: w near 1e-310 and 1e300),
+where the formula lesson 04 prints, λ_i / w_i normalised, overflows to NaN: the graded part that
+needs reasoning is a μ that only ratios of w (≤ 1, one of them exactly 1) can give (r126 D3-1
+had left those w ungraded, and 3.2 was the printed formula). Any value f then interpolates as
+Σ μ_i f_i.
 
 Expected answers: :func:`teachraster.core.interpolation.weights_per_row`, the renderer's own.
 """
@@ -23,9 +25,10 @@ from ..core.interpolation import normalised_weights, perspective_weights, weight
 from ..study.hardcases import CASES
 from .answers import as_numbers
 from .cases import DRAWN, SEED, drawn_rng
+from .diagnosis import answer_in_float32, near
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .interpolation import ONE_POINT
-from .scalars import num, vec
+from .scalars import full_number, num, vec
 from .tolerance import all_close
 
 
@@ -58,8 +61,27 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
         mu = weights_per_row(lam[None], w[None], extrapolate=True)[0]
         out.append((f"drawn for this check {k + 1}: λ = {vec(lam)}, w = {_ws(w)}",
                     (lam.copy(), w.copy()), mu))  # fmt: skip
+    # r421 T2: w beyond a GPU's range, graded, last (a slip of the formula fails first where
+    # it does): the catalogue's perspective_w_scale and points on an edge (:data:`EXTREME`)
+    for lam, w in EXTREME:
+        lam, w = np.array(lam, dtype=float), np.array(w, dtype=float)
+        out.append((f"w beyond a GPU's range: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
+                    weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
     return out
 
+
+#: r421 T2: (λ, w) with w beyond float32's range (``perspective_w_scale``'s scales 1e300,
+#: 1e-300, 1e-310 of w = (1, 2, 4)), where λ_i / w_i overflows at 1e-310 and a product of two
+#: w at 1e300; w 1e610 apart, where a ratio of w above 1 overflows; then points on an edge
+#: whose opposite vertex holds the smallest w, where every term scaled by that w underflows
+EXTREME = (
+    *(((0.2, 0.3, 0.5), (s, 2 * s, 4 * s)) for s in (1e-310, 1e-300, 1e300)),
+    ((1.0, 0.0, 0.0), (1e-310, 2e-310, 4e-310)),
+    ((0.2, 0.3, 0.5), (1e-310, 1e300, 1e300)),
+    ((0.2, 0.3, 0.5), (1e300, 2e300, 1e-310)),
+    ((0.0, 0.5, 0.5), (1e-310, 1e300, 1e300)),
+    ((0.5, 0.5, 0.0), (1e300, 2e300, 1e-310)),
+)
 
 #: (λ, w) of points outside the triangle: one negative λ each
 OUTSIDE = (
@@ -81,9 +103,7 @@ def beyond_a_gpu(label: str) -> bool:
 
 @lru_cache(maxsize=1)
 def _beyond_a_gpu() -> frozenset:
-    f32 = np.finfo(np.float32)
-    return frozenset(label for label, (_, w), _ in weights_cases()
-                     if w.min() < f32.tiny or w.max() > f32.max)  # fmt: skip
+    return frozenset(label for label, (_, w), _ in weights_cases() if _beyond(w))
 
 
 def _ws(w) -> str:
@@ -100,6 +120,7 @@ def same_weights(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 def _variants(lam, w) -> dict[str, np.ndarray]:
     with np.errstate(all="ignore"):
+        mu = weights_per_row(lam[None], w[None], extrapolate=True)[0]
         return {
             "affine": lam,
             "times w": lam * w / (lam @ w),
@@ -133,7 +154,44 @@ def _variants(lam, w) -> dict[str, np.ndarray]:
             # r358 7, 8: λ_i / w_i divided by Σ λ_j w_j, or multiplied by the mean w
             "divided by Σλw": (lam / w) / (lam @ w),
             "times the mean w": (lam / w) * np.mean(w),
+            # r421 H5: μ right, returned in another order (μ reversed, or rolled)
+            **{f"μ in the order {k}": mu[list(order)] for k, order in MU_ORDERS.items()},
+            # r421 H6: μ inside the triangle, λ itself outside it
+            "λ outside": lam if (lam < 0).any() else None,
         }  # fmt: skip
+
+
+def _beyond_variants(lam, w) -> dict[str, np.ndarray]:
+    """r421 T2: right on a GPU's w, NaN (or 0) beyond: λ_i / w_i as lesson 04 prints it,
+    scaled by the smallest w of all, by the largest, by w1, the products of the other two w,
+    and through the point's w, 1 / Σ λ_j / w_j."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    with np.errstate(all="ignore"):
+        return {
+            "λ/w overflows": _normalised(lam / w),
+            "smallest w of all": _normalised(lam * (w.min() / w)),
+            "largest w": _normalised(lam * (w.max() / w)),
+            "w1": _normalised(lam * (w[0] / w)),
+            "products of w": _normalised(lam * np.array([w[1] * w[2], w[2] * w[0], w[0] * w[1]])),
+            "the point's w": lam * (1 / np.sum(lam / w)) / w,
+        }  # fmt: skip
+
+
+def _beyond_slip(kind: str):
+    """``fits`` of one of :func:`_beyond_variants`: its very answer, in float64 (a float32
+    answer's NaN is float32's, said by the checker's own words, not a formula's)."""
+
+    def fits(args, expected, got):
+        if answer_in_float32(got) or not _beyond(args[1]):
+            return None  # (on a GPU's w it is the right answer: a near one is no overflow)
+        return near(_beyond_variants(*args)[kind], got)
+
+    return fits
+
+
+#: r421 H5: μ in another order, each vertex's index in the answer
+MU_ORDERS = {"μ3, μ2, μ1": (2, 1, 0), "μ2, μ3, μ1": (1, 2, 0), "μ3, μ1, μ2": (2, 0, 1),
+             "μ2, μ1, μ3": (1, 0, 2), "μ1, μ3, μ2": (0, 2, 1)}  # fmt: skip
 
 
 def _clamped_mu(mu: np.ndarray) -> dict[str, np.ndarray | None]:
@@ -216,7 +274,88 @@ MISTAKES = {
     "times the mean w": lambda a, e, g: (
         "you multiplied your λ_i / w_i by the mean of the three w, so your weights sum to "
         f"{_their_sum(g)}, not 1: the mean w is no normaliser; {BY_THEIR_SUM}"),
+    **{f"μ in the order {k}": (
+        f"your weights are the right ones in another order, ({k}): μ_i belongs to vertex i, "
+        "the vertex of λ_i and w_i; return them in the vertices' order") for k in MU_ORDERS},
+    "λ outside": (
+        "inside the triangle your weights are right, but here a λ is negative (the point lies "
+        "outside, as a clipped or extrapolated one does) and you returned λ itself, the affine "
+        "weights: the same μ_i ∝ λ_i / w_i holds outside, and gives a negative μ"),
 }  # fmt: skip
+
+#: r421 T2: the words of :func:`_beyond_variants`' slips
+BEYOND = {
+    "λ/w overflows": lambda a, e, g: _overflow_words(a),
+    # (fitted on the failing cases alone: the slip that fails fewer cases first, since it
+    # fits every NaN of the other on them: the smallest w of all, w1, the largest w)
+    "smallest w of all": lambda a, e, g: _underflow_words(a),
+    "w1": lambda a, e, g: _ratio_words(a, "w1", a[1][0], "w1"),
+    "largest w": lambda a, e, g: _ratio_words(a, "the largest w", np.max(a[1]), "w_max"),
+    "products of w": lambda a, e, g: (
+        f"your terms λ_i times the other two w left float64's range (here {_products(a)}): a "
+        f"product of two w overflows or underflows long before the w do. {ONLY_RATIOS}"),
+    "the point's w": lambda a, e, g: (
+        f"you took the point's w as 1 / Σ λ_j / w_j, but Σ λ_j / w_j = {_sum_q(a)} here "
+        f"({OVERFLOW}), so the point's w came out 0 (or NaN) and so did your weights. "
+        f"{ONLY_RATIOS}"),
+}  # fmt: skip
+
+#: r421 T2: the one sentence on why ratios of w are the repair (staged: :data:`HINTS`)
+ONLY_RATIOS = ("μ depends only on the ratios of the w (every w times one number gives the same "
+               "μ): scale each λ_i / w_i by the smallest w among the vertices whose λ is not 0, "
+               "so every ratio is at most 1 and that vertex's term is its λ itself")  # fmt: skip
+#: r421 T2: float64's range, said once for every overflow
+OVERFLOW = "float64's largest number is 1.8e308, its smallest above 0 is 5e-324"
+
+
+def _q_words(lam, w) -> str:
+    with np.errstate(all="ignore"):
+        return vec(np.asarray(lam, float) / np.asarray(w, float))
+
+
+def _sum_q(args) -> str:
+    lam, w = args
+    with np.errstate(all="ignore"):
+        return num(float(np.sum(np.asarray(lam, float) / np.asarray(w, float))))
+
+
+def _products(args) -> str:
+    _, w = args
+    with np.errstate(all="ignore"):
+        return "w2·w3, w3·w1, w1·w2 = " + vec([w[1] * w[2], w[2] * w[0], w[0] * w[1]])
+
+
+def _overflow_words(args) -> str:
+    lam, w = args
+    return (
+        f"your λ_i / w_i = {_q_words(lam, w)} overflowed ({OVERFLOW}: 1 / {w.min():.3g} is "
+        f"beyond it), and inf / inf is NaN. {ONLY_RATIOS}"
+    )
+
+
+def _underflow_words(args) -> str:
+    lam, w = args
+    k = int(np.argmin(w))
+    return (
+        f"you scaled by the smallest w of all, w{k + 1} = {w[k]:.3g}, but λ{k + 1} = 0: the "
+        f"other terms, λ_i · ({w[k]:.3g} / w_i), underflowed to 0 ({OVERFLOW}), and 0 / 0 is "
+        "NaN. Scale by the smallest w among the vertices whose λ is not 0: that vertex's term "
+        "is its λ itself, so the sum cannot underflow to 0"
+    )
+
+
+def _ratio_words(args, which: str, by: float, short: str) -> str:
+    lam, w = args
+    with np.errstate(all="ignore"):
+        ratios = by / np.asarray(w, float)
+    went = "overflowed" if (ratios == np.inf).any() else "underflowed to 0"
+    return f"you scaled each λ_i / w_i by {which}, {by:.3g}: the ratios {short} / w_i = {vec(ratios)} {went} ({OVERFLOW}). {RATIO_REPAIR}"
+
+
+#: r421 T2: which ratios of w are safe (staged: :data:`HINTS`)
+RATIO_REPAIR = ("A ratio of w can neither overflow nor vanish only when it is at most 1 and one "
+                "of them is 1 where λ is not 0: scale by the smallest w among the vertices "
+                "whose λ is not 0")  # fmt: skip
 
 
 def _paired(sigma):
@@ -249,9 +388,19 @@ def explain_weights(args, expected, got) -> str:
     """The case, the student's weights and the 3-D ones."""
     lam, w = args
     return (
-        f"at λ = {vec(lam)} and w = {_ws(w)} your weights are {vec(got, expected)}; the 3-D "
+        f"at λ = {vec(lam)} and w = {_ws(w)} your weights are {_yours(got, expected)}; the 3-D "
         f"weights are μ = {vec(expected, got)}"
     )
+
+
+def _yours(got, expected) -> str:
+    """The student's weights with the digits that tell them from μ, or, where they have few
+    decimals (rounded), every digit they have (r421 S3: 0.42105 was printed 0.421 beside
+    μ1 = 0.4211)."""
+    g = np.asarray(got, dtype=float)
+    if g.shape == (3,) and np.isfinite(g).all() and np.array_equal(np.round(g, 8), g):
+        return "(" + ", ".join(full_number(x) for x in g) + ")"
+    return vec(got, expected)
 
 
 def _sums_to_1(got) -> bool:
@@ -304,7 +453,8 @@ def _nudge(args, got) -> float | None:
     delta = s / total - s
     # r164: a guard adds a positive ε (the sum is positive: the point is in front); one ε
     # on every case (:attr:`.Mistake.parameter`): Σ 1/w_j for Σ λ_j/w_j was "about 2e-03"
-    if delta <= 0 or abs(delta) > 1e-3 * abs(s):
+    # (r421 T2: or δ ≤ 1e-3 itself, where w ~ 1e300 makes the sum ~1e-300)
+    if delta <= 0 or abs(delta) > 1e-3 * max(abs(s), 1.0):
         return None
     if not np.allclose(g, q / (s + delta), rtol=1e-9, atol=1e-300):
         return None
@@ -356,13 +506,31 @@ def _nudge_in_w_words(args, expected, got) -> str:
 
 
 #: r175 B: an epsilon in each w, ``lam / (w + 1e-6)`` normalised
-NUDGED_W = Mistake("epsilon added to w", _nudge_in_w_words,
-                   fits=lambda a, e, g: _nudge_in_w(a, g) is not None,
+def _nudge_fits(find):
+    """Does a guard's ε (``find(args, got)``) fit? Beyond a GPU's w it says nothing (r421 T2:
+    ``q / (q.sum() + 1e-12)``'s NaN at w = 1e-310 hid its ε elsewhere, and an ε far above
+    w = 1e-310 gives the same answer whatever its size, so none is read back there)."""
+
+    def fits(args, expected, got):
+        if _beyond(args[1]):
+            return None
+        return find(args, got) is not None
+
+    return fits
+
+
+def _beyond(w) -> bool:
+    """Does a w lie outside float32's range (only a simulator meets it)?"""
+    f32 = np.finfo(np.float32)
+    w = np.asarray(w, dtype=float)
+    return bool(w.min() < f32.tiny or w.max() > f32.max)
+
+
+NUDGED_W = Mistake("epsilon added to w", _nudge_in_w_words, fits=_nudge_fits(_nudge_in_w),
                    parameter=lambda a, e, g: _nudge_in_w(a, g), only_whole=True)  # fmt: skip
 
 #: r153 D3-4: an epsilon in the normaliser, ``q / (q.sum() + 1e-9)``
-NUDGED = Mistake("epsilon added to the sum", _nudge_words,
-                 fits=lambda a, e, g: _nudge(a, g) is not None,
+NUDGED = Mistake("epsilon added to the sum", _nudge_words, fits=_nudge_fits(_nudge),
                  parameter=lambda a, e, g: _nudge(a, g), only_whole=True)  # fmt: skip
 
 SYMPTOMS = (
@@ -385,6 +553,9 @@ def draw_weights(ax, case, got):
                                color="#d7301f" if wrong else "#7fbf7f", label="yours"))  # fmt: skip
         if wrong:
             artists += difference_note(ax, expected, got, where=(0.02, 0.98))
+    elif got is not None:  # r421 T2: NaN or inf (w beyond a GPU's range) drew no bar of yours
+        artists.append(ax.text(0.02, 0.96, f"yours: {vec(got)}: no bars", transform=ax.transAxes,
+                               ha="left", va="top", fontsize="small", color="#d7301f"))  # fmt: skip
     ax.set_xticks(x, [f"v{k + 1}\nw = {w[k]:.3g}" for k in range(3)], fontsize="x-small")
     ax.set_ylabel("weight")
     ax.axhline(0, color="black", linewidth=0.5)
@@ -396,7 +567,9 @@ def draw_weights(ax, case, got):
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    [*variant_mistakes(_variants, MISTAKES), *PAIRINGS, NUDGED, NUDGED_W, *SYMPTOMS],
+    [*variant_mistakes(_variants, MISTAKES), *PAIRINGS, NUDGED, NUDGED_W,
+     *(Mistake(kind, words, fits=_beyond_slip(kind)) for kind, words in BEYOND.items()),
+     *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
@@ -420,5 +593,12 @@ PERSPECTIVE_WEIGHTS = Exercise(
         (W_NOT_AFFINE, "is the point's w affine on the screen, as you took it? (write the "
          "screen position as the clip position over w)"),
         (BY_THEIR_SUM, "by what must they be divided to sum to 1?"),
+        # r421 T2: the repair of an overflow is the task's reasoning: the hint asks for it
+        (ONLY_RATIOS, "Which quantities built from the three w stay finite whatever the w, "
+         "and keep at least one term whole?"),
+        (". Scale by the smallest w among the vertices whose λ is not 0: that vertex's term "
+         "is its λ itself, so the sum cannot underflow to 0", ": which w keeps at least one "
+         "term whole?"),
+        (RATIO_REPAIR, "Which ratios of w can neither overflow nor all vanish to 0?"),
     ),
 )  # fmt: skip

@@ -199,10 +199,13 @@ def apply_hints(words: str, hints) -> str:
 
 #: What a report (or a capstone quoting an exercise's check) adds to words given as a hint. Only
 #: failures whose words were hinted count (:func:`hinted_check`): r317 C1, "2 different answers
-#: have failed" read as any two failures, and a third still got the hint.
+#: have failed" read as any two failures, and a third still got the hint; r421 S1: the second
+#: different answer already gets the full words, which "once 2 ... have failed with a hint like
+#: this one" did not say.
 HINT_ONLY = (
     "a hint only: work from it and the numbers of the case (the full words come once "
-    f"{HINTED_ANSWERS} different answers of yours have failed with a hint like this one)"
+    f"{HINTED_ANSWERS} different answers of yours have failed, this one counted: a rerun of "
+    "the same answer keeps the hint)"
 )
 
 
