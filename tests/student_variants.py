@@ -6373,3 +6373,89 @@ R414_FACTOR = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R414_FACTOR.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R414_FACTOR.items()})
+
+
+# == r419 (fixex10g, exercise 10.1, edge_bits): the reader's misnamed (F1) and half-named (F4) ===
+# variants: one form off, the other right, named in that form; never the right form called wrong
+def _eb419(absolute, relative, typed=lambda n: n):
+    """edge_bits whose counts are ``absolute(R, log2 across, s)`` and ``relative(...)``, each
+    type chosen for ``typed(count)`` bits (bytes: the type of that many bits)."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        k = int(np.log2(across))
+        return tuple(
+            (n, _eb_type(n))
+            for n in (
+                typed(absolute(range_bits, k, sub_bits)),
+                typed(relative(range_bits, k, sub_bits)),
+            )
+        )
+
+    return edge_bits
+
+
+def _term(r, k, s):  # the absolute form, term by term: 2(R + s) + 2
+    return 2 * (r + s) + 2
+
+
+def _rterm(r, k, s):  # the relative form, term by term
+    return 2 * (k + s) + 2
+
+
+R419_EDGE_BITS = {
+    "edge bits, the relative form by E's own bound (2d + 1), the absolute term by term": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (k + s) + 1),
+        "your relative count, 37, is one bit short (your absolute count is right): E's own bound?",
+        "E's own bound in the relative form"),
+    "edge bits, the relative form two bits short, the absolute right": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (k + s)),
+        "your relative count, 36, is two bits short (your absolute count is right)",
+        "the relative count two bits short"),
+    "edge bits, the absolute form two bits short, the relative right": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s), _rterm),
+        "your absolute count, 56, is two bits short (your relative count is right)",
+        "the absolute count two bits short"),
+    "edge bits, the absolute form one short, the relative one long": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 1, lambda r, k, s: 2 * (k + s) + 3),
+        "your absolute count, 57, is one bit short: C = a.x·b.y − a.y·b.x is a difference",
+        "the absolute count one bit short and the relative count one bit too many"),
+    "edge bits, the absolute form as three terms and the relative from across.bit_length()": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 3,
+                            lambda r, k, s: 2 * (k + 1 + s) + 2),
+        "your absolute count, 59, is one bit more than C's count; two slips give it",
+        "the absolute count one bit more and the relative factor one bit wide"),
+    "edge bits, the absolute form one short only": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 1, _rterm),
+        "your absolute count, 57, is one bit short (your relative count is right)",
+        "the absolute count one bit short"),
+    "edge bits, the relative form one bit too many only": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (k + s) + 3),
+        "your relative count, 39, is one bit too many (your absolute count is right)",
+        "the relative count one bit too many"),
+    "edge bits, the relative form's differences bounded by two coordinates": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (r + 1 + s) + 2),
+        "bounds a difference by two coordinates, 2 · 2^20 px (your absolute count is right)",
+        "the relative form from two coordinates"),
+    "edge bits in bytes, each type chosen for the bytes": (
+        "edge_bits", _eb419(_term, _rterm, typed=lambda n: -(-n // 8)),
+        "yours are 8 and 5: bytes, not bits, and your types are chosen for that many bits",
+        "bytes, not bits"),
+    "edge bits with the sub-pixel bits twice per factor": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + 2 * s) + 2, lambda r, k, s: 2 * (k + 2 * s) + 2),
+        "you add the sub-pixel bits twice per factor (yours are 74 and 54)",
+        "sub-pixel bits twice per factor"),
+    "edge bits with the range multiplied by the sub-pixel bits": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * r * s + 2, lambda r, k, s: 2 * k * s + 2),
+        "you multiply a factor's bits by the sub-pixel bits (yours are 322 and 162)",
+        "sub-pixel bits multiplied"),
+    "edge bits with the relative form in whole pixels only": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * k + 2),
+        "you count whole pixels (in your relative count only, 22; your absolute count, 58, is "
+        "right)", "no sub-pixel bits and in the relative form only"),
+    "edge bits with the absolute form in whole pixels only": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * r + 2, _rterm),
+        "you count whole pixels (in your absolute count only, 42; your relative count, 38, is "
+        "right)", "no sub-pixel bits and in the absolute form only"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R419_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R419_EDGE_BITS.items()})
