@@ -85,9 +85,9 @@ def answer(range_bits: int, across: int, sub_bits: int) -> tuple:
 
 
 def _label(range_bits: int, across: int, sub_bits: int) -> str:
-    grid = f"the 1/{2**sub_bits}-px grid"
-    return (f"edge_bits({range_bits}, {across}, {sub_bits}): vertices on {grid}, coordinates "
-            f"below 2^{range_bits} px, differences below {across:,} px")  # fmt: skip
+    # r419 F5: short enough for the figure's title to take two lines, not three
+    return (f"edge_bits({range_bits}, {across}, {sub_bits}): a 1/{2**sub_bits}-px grid, "
+            f"coordinates below 2^{range_bits} px, differences below {across:,} px")  # fmt: skip
 
 
 def cases() -> list[tuple[str, tuple, tuple]]:
@@ -560,18 +560,21 @@ def draw(ax, case, got):
     if isinstance(got, tuple) and len(got) == 2:
         for k, (n, t) in enumerate(got):
             right = (n, t) == case[2][k]  # r409 F6: a right part is grey, a wrong one red
+            # r419 F1: which of the two is wrong, as the words' "wrong:" list says it
+            said = [f"{n} bits" + (" (wrong)" if n != case[2][k][0] and not right else ""),
+                    f"{t}" + (" (wrong)" if t != case[2][k][1] and not right else "")]  # fmt: skip
             artists += ax.plot([k], [n], "x", color="#888888" if right else "#d7301f", ms=11,
                                mew=2)  # fmt: skip
             artists.append(
                 ax.annotate(
-                    f"yours: {n} bits, {t}{' (right)' if right else ''}",
+                    f"yours: {', '.join(said)}{' (right)' if right else ''}",
                     (k, n),
                     xytext=(8, 4),
                     textcoords="offset points",
                     fontsize="x-small",
                 )
             )
-    ax.set_xlim(-0.5, 2.0)
+    ax.set_xlim(-0.5, 2.5)  # r419: room for "yours: 37 bits (wrong), float64"
     ax.set_xticks([0, 1], [f"{form} form" for form in FORMS])
     ax.set_ylabel("bits, sign included")
     counts = [n for n, _ in got] if isinstance(got, tuple) and len(got) == 2 else []
