@@ -6459,3 +6459,88 @@ R419_EDGE_BITS = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R419_EDGE_BITS.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R419_EDGE_BITS.items()})
+
+
+# == r419 F3 (fixex10g): 10.1's across is any whole number of pixels, not a power of two only ====
+# The variants above were written when across was a power of two (int(np.log2(across)) and
+# across.bit_length() - 1 were its exponent). Each is kept as its author meant it: its exponent
+# of across taken as the next power of two's (the least k with across <= 2^k), its labelled slip
+# unchanged. Three use across as their code says (its bit_length(), or across itself).
+_EB_AS_WRITTEN = {
+    "edge bits with across.bit_length() in the relative form": (
+        "across.bit_length() is 11, the bits of 1,024 itself", "across.bit_length() for its exponent"),
+    "edge bits, the absolute form as three terms and the relative from across.bit_length()": (
+        "your absolute count, 59, is one bit more than C's count; two slips give it",
+        "the absolute count one bit more and across.bit_length() for its exponent"),
+    "edge bits with across taken as bits": (
+        "takes across, 1,024 px, for a number of bits", "across taken as bits"),
+}  # fmt: skip
+
+
+def _eb_pow2(fn):
+    """``fn`` with across taken up to a power of two (its exponent, as its author meant it)."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        return fn(range_bits, 1 << (across - 1).bit_length(), sub_bits)
+
+    return edge_bits
+
+
+for _table in (WRONG, DIFFERENT, R394_EDGE_BITS, R394_EDGE_BITS_DIFFERENT, R409_EDGE_BITS,
+               R409_EDGE_BITS_COUNTS, R416_EDGE_BITS, R416_EDGE_BITS_DIFFERENT, R419_EDGE_BITS):  # fmt: skip
+    for _label, _entry in list(_table.items()):
+        if _entry[0] == "edge_bits" and _label not in _EB_AS_WRITTEN:
+            _table[_label] = (_entry[0], _eb_pow2(_entry[1]), *_entry[2:])
+for _label, (_words, _kind) in _EB_AS_WRITTEN.items():
+    for _table in (WRONG, R416_EDGE_BITS, R419_EDGE_BITS):
+        if _label in _table:
+            _table[_label] = (
+                *_table[_label][:2],
+                _words,
+                *((_kind,) if _table is not WRONG else ()),
+            )
+    KINDS[_label] = _kind
+
+
+def _eb_exponent(exponent):
+    """edge_bits, term by term, the relative factor's exponent of across from ``exponent``."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        return tuple((n, _eb_type(n)) for n in (2 * (range_bits + sub_bits) + 2,
+                                                2 * (exponent(across) + sub_bits) + 2))  # fmt: skip
+
+    return edge_bits
+
+
+R419_EDGE_BITS_ACROSS = {
+    "edge bits with int(np.log2(across)), right for a power of two only": (
+        "edge_bits", _eb_exponent(lambda a: int(np.log2(a))),
+        "rounds across's exponent down (your absolute count is right): 200 px lies between 2^7 "
+        "and 2^8 px", "across's exponent rounded down"),
+    "edge bits with across.bit_length() - 1, right for a power of two only": (
+        "edge_bits", _eb_exponent(lambda a: a.bit_length() - 1),
+        "a difference below 200 px is below 2^8 px, so below 2^16 steps: 16 bits per factor, "
+        "not 15", "across's exponent rounded down"),
+    "edge bits with int(2 * (log2(across) + s) + 2), a fractional exponent doubled (r419 c4)": (
+        "edge_bits", lambda r, a, s: tuple(
+            (n, _eb_type(n)) for n in (2 * (r + s) + 2, int(2 * (np.log2(a) + s) + 2))),
+        "doubles a fractional exponent, log2(200) = 7.64, and cuts the sum to a whole number",
+        "a fractional log2 of across"),
+}  # fmt: skip
+WRONG.update(
+    {label: (name, fn, words) for label, (name, fn, words, _) in R419_EDGE_BITS_ACROSS.items()}
+)
+KINDS.update({label: kind for label, (_, _, _, kind) in R419_EDGE_BITS_ACROSS.items()})
+R419_EDGE_BITS_DIFFERENT = {
+    "edge bits with math.ceil(math.log2(across))": (
+        "edge_bits", _eb_exponent(lambda a: math.ceil(math.log2(a)))),
+    "edge bits with (across - 1).bit_length()": (
+        "edge_bits", _eb_exponent(lambda a: (a - 1).bit_length())),
+    "edge bits by a while loop doubling a power of two up to across": (
+        "edge_bits", _eb_exponent(lambda a: next(k for k in range(64) if 2**k >= a))),
+    "edge bits from the largest values, (2m²).bit_length() + 1 (r419 c3)": (
+        "edge_bits", lambda r, a, s: tuple(
+            ((2 * m * m).bit_length() + 1, _eb_type((2 * m * m).bit_length() + 1))
+            for m in (2 ** (r + s) - 1, a * 2**s - 1))),
+}  # fmt: skip
+DIFFERENT.update(R419_EDGE_BITS_DIFFERENT)

@@ -29,7 +29,10 @@ moved back by another slip (:func:`_with`), "your absolute count is right" is re
 answer, never written into a slip; one form's own count slips (E's own bound in the relative
 form, one bit short, one too many, two short in one form) and F4's (a count slip in one form
 only, differences bounded by two coordinates, bytes typed as bits, sub-pixel bits twice or
-multiplied) are knobs. Where every count is right and a type is not,
+multiplied) are knobs. r419 F3: ``across`` is any whole number of pixels (three of the ranges
+are no power of two), so that its exponent is reasoned, not read off: int(log2(across)) rounded
+down, ``across.bit_length()`` (right except for a power of two) and a fractional log2 doubled
+and cut are the ``exponent`` knob's slips. Where every count is right and a type is not,
 the words are about types (r409 F2). The recipe is said once two different answers have failed
 (:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
 r416 F4).
@@ -59,8 +62,13 @@ WHAT = ("((absolute bits, type), (relative bits, type)), each type one of "
 #: every slip fails a case (counts at a type's edge: 32 and 54 bits; 26 and 58, between an
 #: int's and a float's; 66, which no type holds; a grid of 1/2 px). Never 0 sub-pixel bits:
 #: pixel centres, at k + ½, would lie off the grid (a bit more: lesson 06's centre bit).
+#: r419 F3: three widths across that are no power of two (200 px: 34 bits, a 64-bit float,
+#: where its exponent rounded down gives 32, a 32-bit int), so that log2 is not the answer;
+#: each in the top of its binade (across · 2^s − 1 ≥ 2^(d − ½) for its d bits), where a count
+#: from the largest values, (2m²).bit_length() + 1, gives the same bits as lesson 06's.
 RANGES = ((20, 1024, 8), (16, 64, 4), (10, 16, 8), (11, 256, 4), (18, 512, 8), (23, 2048, 8),
-          (24, 4096, 8), (8, 8, 2), (12, 32, 1))  # fmt: skip
+          (24, 4096, 8), (8, 8, 2), (12, 32, 1), (16, 200, 8), (20, 1000, 8),
+          (12, 100, 4))  # fmt: skip
 
 
 def budgets(range_bits: int, across: int, sub_bits: int) -> dict[str, BitBudget]:
@@ -265,12 +273,21 @@ def _raw(
     absolute="C's",
     relative="right",
     factor="right",
+    exponent="right",
     only="both",
 ) -> tuple:
     """The answer a student gives with some slips (:data:`KNOBS`), whatever they cancel."""
     b = budgets(range_bits, across, sub_bits)
     bits = {form: b[form].delta_bits for form in FORMS}
-    if factor == "relative wider":  # r416 F2: across.bit_length(), or a centre bit, in one form
+    # r419 F3: across's exponent (its own knob: it combines with a factor's slip; a
+    # slip that bounds the relative factor otherwise replaces it)
+    if exponent == "across rounded down":  # int(np.log2(across)): right for 2^k only
+        bits["relative"] += across.bit_length() - 1 - _exponent(across)
+    elif exponent == "across.bit_length()":  # right except for a power of two
+        bits["relative"] += across.bit_length() - _exponent(across)
+    elif exponent == "fractional log2":  # r419 c4, c5: int(2 * (log2(across) + s) + 2)
+        bits["relative"] += float(np.log2(across)) - _exponent(across)
+    if factor == "relative wider":  # r416 F2: a centre bit or a sign in the relative factor
         bits["relative"] += 1
     elif factor == "absolute wider":
         bits["absolute"] += 1
@@ -297,6 +314,7 @@ def _raw(
         # r419 F1: one form's own count off (x1, x3, y1–y3, w35: E's own bound in one form)
         own = absolute if form == "absolute" else relative
         n += {"one more": 1, "one short": -1, "two short": -2}.get(own, 0)
+        n = int(n)  # a fractional log2 of across, cut by int() as its author's code does
         out.append((-(-n // 8) if slip == "bytes" else n, narrowest(n, held)))
     return tuple(out[::-1]) if order == "swapped" else tuple(out)
 
@@ -396,11 +414,17 @@ BYTES_TYPED = Slip("bytes, not bits", lambda a, e, g: (
     "many bits; the answer counts bits (a 64-bit int is 8 bytes)"), "bytes typed")  # fmt: skip
 
 
+def _exponent(across: int) -> int:
+    """The least k with ``across <= 2**k``: a difference below ``across`` px is below 2^k px."""
+    return (across - 1).bit_length()
+
+
 def _factor_words(a, form: str) -> str:
-    """A form's factor in steps of the grid, its exponent said (a power of two across)."""
+    """A form's factor in steps of the grid, its exponent said (r419 F3: across any width)."""
     if form == "relative":
-        k = a[1].bit_length() - 1
-        return (f"a difference below {a[1]:,} px = 2^{k} px is below 2^{k + a[2]} steps: "
+        k = _exponent(a[1])
+        below = f"= 2^{k} px is" if a[1] == 2**k else f"is below 2^{k} px, so"
+        return (f"a difference below {a[1]:,} px {below} below 2^{k + a[2]} steps: "
                 f"{k + a[2]} bits per factor")  # fmt: skip
     return (f"a coordinate below 2^{a[0]} px is below 2^{a[0] + a[2]} steps: {a[0] + a[2]} "
             "bits per factor")  # fmt: skip
@@ -408,9 +432,26 @@ def _factor_words(a, form: str) -> str:
 
 REL_WIDER = Slip("the relative factor one bit wide", lambda a, e, g: (
     f"your relative count, {g[1][0]}, counts each factor one bit wide{_one_right(e, g, 'relative')}: {_factor_words(a, 'relative')}"
-    f", not {a[1].bit_length() + a[2]} (across.bit_length() is {a[1].bit_length()}, one more "
-    "than the exponent; and the centres, at k + ½ px, are on the grid already: no centre bit)"),
+    f", not {_exponent(a[1]) + a[2] + 1} (the centres, at k + ½ px, are on the grid already: no "
+    "centre bit; and the one sign bit is counted at the end, not one in each factor)"),
     "relative wider")  # fmt: skip
+#: r419 F3: across any width: its bits rounded down (int(log2(across))) or across.bit_length().
+FLOOR = Slip("across's exponent rounded down", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, rounds across's exponent down"
+    f"{_one_right(e, g, 'relative')}: {a[1]:,} px lies between 2^{_exponent(a[1]) - 1} and "
+    f"2^{_exponent(a[1])} px: {_factor_words(a, 'relative')}, not {_exponent(a[1]) - 1 + a[2]}"),
+    "across rounded down")  # fmt: skip
+FRACTIONAL = Slip("a fractional log2 of across", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, doubles a fractional exponent, log2({a[1]:,}) = "
+    f"{np.log2(a[1]):.2f}, and cuts the sum to a whole number{_one_right(e, g, 'relative')}: a "
+    f"factor has a whole number of bits: {_factor_words(a, 'relative')}"),
+    "fractional log2")  # fmt: skip
+BIT_LENGTH = Slip("across.bit_length() for its exponent", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, takes across.bit_length() for the exponent"
+    f"{_one_right(e, g, 'relative')}: across.bit_length() is {a[1].bit_length()}, the bits of "
+    f"{a[1]:,} itself, but a difference below it is at most {a[1] - 1:,} px: "
+    f"{_factor_words(a, 'relative')}, not {a[1].bit_length() + a[2]}"),
+    "across.bit_length()")  # fmt: skip
 ABS_WIDER = Slip("the absolute factor one bit wide", lambda a, e, g: (
     f"your absolute count, {g[0][0]}, counts each factor one bit wide{_one_right(e, g, 'absolute')}: {_factor_words(a, 'absolute')}"
     "; its sign is the one sign bit counted at the end, not a bit in each factor (and the "
@@ -427,8 +468,8 @@ REL_TWO_COORDS = Slip("the relative form from two coordinates", lambda a, e, g: 
     "relative from two coordinates")  # fmt: skip
 ACROSS_BITS = Slip("across taken as bits", lambda a, e, g: (
     f"your relative count, {g[1][0]}, takes across, {a[1]:,} px, for a number of bits: it is a "
-    f"length; its bits are its exponent, {a[1].bit_length() - 1} (differences below "
-    f"2^{a[1].bit_length() - 1} px)"), "across as bits")  # fmt: skip
+    f"length; its bits are its exponent, {_exponent(a[1])} (differences below "
+    f"2^{_exponent(a[1])} px)"), "across as bits")  # fmt: skip
 LONG = Slip("one bit too many", lambda a, e, g: (
     f"{_counts_are(a, e, g, 'long', 'one bit too many')}: a difference of two products below "
     "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond (a factor below "
@@ -538,6 +579,7 @@ TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 KNOBS = Knobs(_with, {"absolute": (ABS_MORE, ABS_SHORT, ABS_TWO_SHORT),
                       "relative": (REL_BOUND, REL_LONG, REL_TWO_SHORT),
                       "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, REL_TWO_COORDS, ACROSS_BITS),
+                      "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH),
                       "count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES,
                                 BYTES_TYPED, TWICE, SUB_MULTIPLIED),
                       "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER),
@@ -574,7 +616,7 @@ def draw(ax, case, got):
                     fontsize="x-small",
                 )
             )
-    ax.set_xlim(-0.5, 2.5)  # r419: room for "yours: 37 bits (wrong), float64"
+    ax.set_xlim(-0.5, 2.9)  # r419: room for "yours: 32 bits (wrong), int32 (wrong)"
     ax.set_xticks([0, 1], [f"{form} form" for form in FORMS])
     ax.set_ylabel("bits, sign included")
     counts = [n for n, _ in got] if isinstance(got, tuple) and len(got) == 2 else []
