@@ -164,3 +164,19 @@ def test_every_range_counts_alike_by_bits_and_by_the_largest_values():
     for r, a, s in eb.RANGES:
         for m, (bits, _) in zip((2 ** (r + s) - 1, a * 2**s - 1), eb.answer(r, a, s)):
             assert (2 * m * m).bit_length() + 1 == bits, (r, a, s)
+
+
+def test_the_three_term_sum_adds_no_bit_on_every_range_the_check_uses():
+    """r419 F3 (S): the words justify the exemption; it holds because on every range the
+    partial sum C + A·x = E − B·y, |E| < 2^(2k+1) and |B·y| < 2^(k+d), stays below C's
+    2^(2d+1) (k, d: the relative and the absolute factor's bits)."""
+    for args in eb.RANGES:
+        b = eb.budgets(*args)
+        k, d = b["relative"].delta_bits, b["absolute"].delta_bits
+        assert 2 ** (2 * k + 1) + 2 ** (k + d) <= 2 ** (2 * d + 1), args
+    fn = R419_EDGE_BITS["edge bits, the absolute form as three terms and the relative from "
+                        "across.bit_length()"][1]  # fmt: skip
+    tries.forget_hints("edge_bits")
+    text = ex.check("edge_bits", fn).failures[0].explanation
+    assert "its partial sum C + A·x is E − B·y" in text, text
+    tries.forget_hints("edge_bits")

@@ -528,8 +528,9 @@ NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
 ABS_MORE = Slip("the absolute count one bit more", lambda a, e, g: (
     f"your absolute count, {g[0][0]}, is one bit more than C's count{_one_right(e, g, 'absolute')}; two slips give it: "
     f"A = a.y − b.y bounded by the whole range, 2^{a[0]} px (it is a difference of two "
-    f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (the "
-    "task counts C's products, a difference of two, as lesson 06 does)"),
+    f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (the sum "
+    "adds no bit: its partial sum C + A·x is E − B·y, and E and B·y, whose factors include "
+    "differences below across, stay far below C's products)"),
     "one more")  # fmt: skip
 #: r419 F1: one form's own count off, the other's right (each said from the answer).
 ABS_SHORT = Slip("the absolute count one bit short", lambda a, e, g: (
