@@ -311,7 +311,7 @@ def edge_bits(range_bits, across, sub_bits):
         return np.finfo(t).nmant + 2 if t.kind == "f" else np.iinfo(t).bits
 
     out = []
-    for factor in (range_bits + sub_bits, int(np.log2(across)) + sub_bits):
+    for factor in (range_bits + sub_bits, (across * 2**sub_bits - 1).bit_length()):
         bits = 2 * factor + 2
         types = [t for t in ("float32", "int32", "float64", "int64") if held(t) >= bits]
         out.append((bits, types[0] if types else None))

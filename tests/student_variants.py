@@ -7087,3 +7087,174 @@ R421_ABS_SUM = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R421_ABS_SUM.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R421_ABS_SUM.items()})
+
+
+# == r419 (fixex10g, exercise 10.1, edge_bits): the reader's misnamed (F1) and half-named (F4) ===
+# variants: one form off, the other right, named in that form; never the right form called wrong
+def _eb419(absolute, relative, typed=lambda n: n):
+    """edge_bits whose counts are ``absolute(R, log2 across, s)`` and ``relative(...)``, each
+    type chosen for ``typed(count)`` bits (bytes: the type of that many bits)."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        k = int(np.log2(across))
+        return tuple(
+            (n, _eb_type(n))
+            for n in (
+                typed(absolute(range_bits, k, sub_bits)),
+                typed(relative(range_bits, k, sub_bits)),
+            )
+        )
+
+    return edge_bits
+
+
+def _term(r, k, s):  # the absolute form, term by term: 2(R + s) + 2
+    return 2 * (r + s) + 2
+
+
+def _rterm(r, k, s):  # the relative form, term by term
+    return 2 * (k + s) + 2
+
+
+R419_EDGE_BITS = {
+    "edge bits, the relative form by E's own bound (2d + 1), the absolute term by term": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (k + s) + 1),
+        "your relative count, 37, is one bit short (your absolute count is right): E's own bound?",
+        "E's own bound in the relative form"),
+    "edge bits, the relative form two bits short, the absolute right": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (k + s)),
+        "your relative count, 36, is two bits short (your absolute count is right)",
+        "the relative count two bits short"),
+    "edge bits, the absolute form two bits short, the relative right": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s), _rterm),
+        "your absolute count, 56, is two bits short (your relative count is right)",
+        "the absolute count two bits short"),
+    "edge bits, the absolute form one short, the relative one long": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 1, lambda r, k, s: 2 * (k + s) + 3),
+        "your absolute count, 57, is one bit short: C = a.x·b.y − a.y·b.x is a difference",
+        "the absolute count one bit short and the relative count one bit too many"),
+    "edge bits, the absolute form as three terms and the relative from across.bit_length()": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 3,
+                            lambda r, k, s: 2 * (k + 1 + s) + 2),
+        "your absolute count, 59, is one bit more than C's count; two slips give it",
+        "the absolute count one bit more and the relative factor one bit wide"),
+    "edge bits, the absolute form one short only": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 1, _rterm),
+        "your absolute count, 57, is one bit short (your relative count is right)",
+        "the absolute count one bit short"),
+    "edge bits, the relative form one bit too many only": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (k + s) + 3),
+        "your relative count, 39, is one bit too many (your absolute count is right)",
+        "the relative count one bit too many"),
+    "edge bits, the relative form's differences bounded by two coordinates": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * (r + 1 + s) + 2),
+        "bounds a difference by two coordinates, 2 · 2^20 px (your absolute count is right)",
+        "the relative form from two coordinates"),
+    "edge bits in bytes, each type chosen for the bytes": (
+        "edge_bits", _eb419(_term, _rterm, typed=lambda n: -(-n // 8)),
+        "yours are 8 and 5: bytes, not bits, and your types are chosen for that many bits",
+        "bytes, not bits"),
+    "edge bits with the sub-pixel bits twice per factor": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * (r + 2 * s) + 2, lambda r, k, s: 2 * (k + 2 * s) + 2),
+        "you add the sub-pixel bits twice per factor (yours are 74 and 54)",
+        "sub-pixel bits twice per factor"),
+    "edge bits with the range multiplied by the sub-pixel bits": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * r * s + 2, lambda r, k, s: 2 * k * s + 2),
+        "you multiply a factor's bits by the sub-pixel bits (yours are 322 and 162)",
+        "sub-pixel bits multiplied"),
+    "edge bits with the relative form in whole pixels only": (
+        "edge_bits", _eb419(_term, lambda r, k, s: 2 * k + 2),
+        "you count whole pixels (in your relative count only, 22; your absolute count, 58, is "
+        "right)", "no sub-pixel bits and in the relative form only"),
+    "edge bits with the absolute form in whole pixels only": (
+        "edge_bits", _eb419(lambda r, k, s: 2 * r + 2, _rterm),
+        "you count whole pixels (in your absolute count only, 42; your relative count, 38, is "
+        "right)", "no sub-pixel bits and in the absolute form only"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R419_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R419_EDGE_BITS.items()})
+
+
+# == r419 F3 (fixex10g): 10.1's across is any whole number of pixels, not a power of two only ====
+# The variants above were written when across was a power of two (int(np.log2(across)) and
+# across.bit_length() - 1 were its exponent). Each is kept as its author meant it: its exponent
+# of across taken as the next power of two's (the least k with across <= 2^k), its labelled slip
+# unchanged. Three use across as their code says (its bit_length(), or across itself).
+_EB_AS_WRITTEN = {
+    "edge bits with across.bit_length() in the relative form": (
+        "across.bit_length() is 11, the bits of 1,024 itself", "across.bit_length() for its exponent"),
+    "edge bits, the absolute form as three terms and the relative from across.bit_length()": (
+        "your absolute count, 59, is one bit more than C's count; two slips give it",
+        "the absolute count one bit more and across.bit_length() for its exponent"),
+    "edge bits with across taken as bits": (
+        "takes across, 1,024 px, for a number of bits", "across taken as bits"),
+}  # fmt: skip
+
+
+def _eb_pow2(fn):
+    """``fn`` with across taken up to a power of two (its exponent, as its author meant it)."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        return fn(range_bits, 1 << (across - 1).bit_length(), sub_bits)
+
+    return edge_bits
+
+
+for _table in (WRONG, DIFFERENT, R394_EDGE_BITS, R394_EDGE_BITS_DIFFERENT, R409_EDGE_BITS,
+               R409_EDGE_BITS_COUNTS, R416_EDGE_BITS, R416_EDGE_BITS_DIFFERENT, R419_EDGE_BITS):  # fmt: skip
+    for _label, _entry in list(_table.items()):
+        if _entry[0] == "edge_bits" and _label not in _EB_AS_WRITTEN:
+            _table[_label] = (_entry[0], _eb_pow2(_entry[1]), *_entry[2:])
+for _label, (_words, _kind) in _EB_AS_WRITTEN.items():
+    for _table in (WRONG, R416_EDGE_BITS, R419_EDGE_BITS):
+        if _label in _table:
+            _table[_label] = (
+                *_table[_label][:2],
+                _words,
+                *((_kind,) if _table is not WRONG else ()),
+            )
+    KINDS[_label] = _kind
+
+
+def _eb_exponent(exponent):
+    """edge_bits, term by term, the relative factor's exponent of across from ``exponent``."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        return tuple((n, _eb_type(n)) for n in (2 * (range_bits + sub_bits) + 2,
+                                                2 * (exponent(across) + sub_bits) + 2))  # fmt: skip
+
+    return edge_bits
+
+
+R419_EDGE_BITS_ACROSS = {
+    "edge bits with int(np.log2(across)), right for a power of two only": (
+        "edge_bits", _eb_exponent(lambda a: int(np.log2(a))),
+        "rounds across's exponent down (your absolute count is right): 200 px lies between 2^7 "
+        "and 2^8 px", "across's exponent rounded down"),
+    "edge bits with across.bit_length() - 1, right for a power of two only": (
+        "edge_bits", _eb_exponent(lambda a: a.bit_length() - 1),
+        "a difference below 200 px is below 2^8 px, so below 2^16 steps: 16 bits per factor, "
+        "not 15", "across's exponent rounded down"),
+    "edge bits with int(2 * (log2(across) + s) + 2), a fractional exponent doubled (r419 c4)": (
+        "edge_bits", lambda r, a, s: tuple(
+            (n, _eb_type(n)) for n in (2 * (r + s) + 2, int(2 * (np.log2(a) + s) + 2))),
+        "doubles a fractional exponent, log2(200) = 7.64, and cuts the sum to a whole number",
+        "a fractional log2 of across"),
+}  # fmt: skip
+WRONG.update(
+    {label: (name, fn, words) for label, (name, fn, words, _) in R419_EDGE_BITS_ACROSS.items()}
+)
+KINDS.update({label: kind for label, (_, _, _, kind) in R419_EDGE_BITS_ACROSS.items()})
+R419_EDGE_BITS_DIFFERENT = {
+    "edge bits with math.ceil(math.log2(across))": (
+        "edge_bits", _eb_exponent(lambda a: math.ceil(math.log2(a)))),
+    "edge bits with (across - 1).bit_length()": (
+        "edge_bits", _eb_exponent(lambda a: (a - 1).bit_length())),
+    "edge bits by a while loop doubling a power of two up to across": (
+        "edge_bits", _eb_exponent(lambda a: next(k for k in range(64) if 2**k >= a))),
+    "edge bits from the largest values, (2m²).bit_length() + 1 (r419 c3)": (
+        "edge_bits", lambda r, a, s: tuple(
+            ((2 * m * m).bit_length() + 1, _eb_type((2 * m * m).bit_length() + 1))
+            for m in (2 ** (r + s) - 1, a * 2**s - 1))),
+}  # fmt: skip
+DIFFERENT.update(R419_EDGE_BITS_DIFFERENT)

@@ -23,7 +23,16 @@ float's sign bit not counted, the absolute count one bit more (A bounded by the 
 A·x + B·y + C counted as three terms; r409 F4); r416 F1/F2: an int's sign not counted (told
 apart from ``>`` for ``>=``, which fails at a float's edge too), two bits short, one form's factor
 one bit wide (``across.bit_length()``, a centre bit, a coordinate's sign), the relative form
-counted from the range, ``across`` taken as bits, bytes for bits. Where every count is right and a type is not,
+counted from the range, ``across`` taken as bits, bytes for bits. r419 F1: a combination is
+named only where every part each slip changes is wrong in the answer and no form's count is
+moved back by another slip (:func:`_with`), "your absolute count is right" is read from the
+answer, never written into a slip; one form's own count slips (E's own bound in the relative
+form, one bit short, one too many, two short in one form) and F4's (a count slip in one form
+only, differences bounded by two coordinates, bytes typed as bits, sub-pixel bits twice or
+multiplied) are knobs. r419 F3: ``across`` is any whole number of pixels (three of the ranges
+are no power of two), so that its exponent is reasoned, not read off: int(log2(across)) rounded
+down, ``across.bit_length()`` (right except for a power of two) and a fractional log2 doubled
+and cut are the ``exponent`` knob's slips. Where every count is right and a type is not,
 the words are about types (r409 F2). The recipe is said once two different answers have failed
 (:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
 r416 F4).
@@ -53,8 +62,13 @@ WHAT = ("((absolute bits, type), (relative bits, type)), each type one of "
 #: every slip fails a case (counts at a type's edge: 32 and 54 bits; 26 and 58, between an
 #: int's and a float's; 66, which no type holds; a grid of 1/2 px). Never 0 sub-pixel bits:
 #: pixel centres, at k + ½, would lie off the grid (a bit more: lesson 06's centre bit).
+#: r419 F3: three widths across that are no power of two (200 px: 34 bits, a 64-bit float,
+#: where its exponent rounded down gives 32, a 32-bit int), so that log2 is not the answer;
+#: each in the top of its binade (across · 2^s − 1 ≥ 2^(d − ½) for its d bits), where a count
+#: from the largest values, (2m²).bit_length() + 1, gives the same bits as lesson 06's.
 RANGES = ((20, 1024, 8), (16, 64, 4), (10, 16, 8), (11, 256, 4), (18, 512, 8), (23, 2048, 8),
-          (24, 4096, 8), (8, 8, 2), (12, 32, 1))  # fmt: skip
+          (24, 4096, 8), (8, 8, 2), (12, 32, 1), (16, 200, 8), (20, 1000, 8),
+          (12, 100, 4))  # fmt: skip
 
 
 def budgets(range_bits: int, across: int, sub_bits: int) -> dict[str, BitBudget]:
@@ -79,9 +93,9 @@ def answer(range_bits: int, across: int, sub_bits: int) -> tuple:
 
 
 def _label(range_bits: int, across: int, sub_bits: int) -> str:
-    grid = f"the 1/{2**sub_bits}-px grid"
-    return (f"edge_bits({range_bits}, {across}, {sub_bits}): vertices on {grid}, coordinates "
-            f"below 2^{range_bits} px, differences below {across:,} px")  # fmt: skip
+    # r419 F5: short enough for the figure's title to take two lines, not three
+    return (f"edge_bits({range_bits}, {across}, {sub_bits}): a 1/{2**sub_bits}-px grid, "
+            f"coordinates below 2^{range_bits} px, differences below {across:,} px")  # fmt: skip
 
 
 def cases() -> list[tuple[str, tuple, tuple]]:
@@ -247,7 +261,7 @@ def _type_rule(args, expected, got) -> str:
             f"type holds exactly, sign included: {held})")  # fmt: skip
 
 
-def _with(
+def _raw(
     range_bits,
     across,
     sub_bits,
@@ -257,12 +271,23 @@ def _with(
     holds="exactly",
     order="as asked",
     absolute="C's",
+    relative="right",
     factor="right",
+    exponent="right",
+    only="both",
 ) -> tuple:
-    """The answer a student gives with some slips (:data:`KNOBS`)."""
+    """The answer a student gives with some slips (:data:`KNOBS`), whatever they cancel."""
     b = budgets(range_bits, across, sub_bits)
     bits = {form: b[form].delta_bits for form in FORMS}
-    if factor == "relative wider":  # r416 F2: across.bit_length(), or a centre bit, in one form
+    # r419 F3: across's exponent (its own knob: it combines with a factor's slip; a
+    # slip that bounds the relative factor otherwise replaces it)
+    if exponent == "across rounded down":  # int(np.log2(across)): right for 2^k only
+        bits["relative"] += across.bit_length() - 1 - _exponent(across)
+    elif exponent == "across.bit_length()":  # right except for a power of two
+        bits["relative"] += across.bit_length() - _exponent(across)
+    elif exponent == "fractional log2":  # r419 c4, c5: int(2 * (log2(across) + s) + 2)
+        bits["relative"] += float(np.log2(across)) - _exponent(across)
+    if factor == "relative wider":  # r416 F2: a centre bit or a sign in the relative factor
         bits["relative"] += 1
     elif factor == "absolute wider":
         bits["absolute"] += 1
@@ -270,6 +295,8 @@ def _with(
         bits["relative"] = across + sub_bits
     elif factor == "relative from the range":
         bits["relative"] = bits["absolute"]
+    elif factor == "relative from two coordinates":  # r419 F4 w25: |a − b| < 2 · 2^range_bits
+        bits["relative"] = bits["absolute"] + 1
     factors = {form: (bits[form], bits[form]) for form in FORMS}
     if largest == "A·x":
         factors["absolute"] = (bits["absolute"], bits["relative"])
@@ -277,12 +304,50 @@ def _with(
     out = []
     for form in FORMS:
         k, m = factors[form]
+        s = sub_bits
+        slip = count if only in ("both", form) else "right"  # r419 F4: a count slip in one form
         n = {"right": k + m + 2, "short": k + m + 1, "long": k + m + 3, "two short": k + m,
-             "no sub-pixel": k + m - 2 * sub_bits + 2, "sub-pixel once": k + m - sub_bits + 2,
-             "multiplied": k * m + 2, "centre bit": k + m + 4, "bytes": k + m + 2}[count]  # fmt: skip
-        n += form == "absolute" and absolute == "one more"
-        out.append((-(-n // 8) if count == "bytes" else n, narrowest(n, held)))
+             "no sub-pixel": k + m - 2 * s + 2, "sub-pixel once": k + m - s + 2,
+             "sub-pixel twice": k + m + 2 * s + 2, "sub-pixel multiplied": (k + m - 2 * s) * s + 2,
+             "multiplied": k * m + 2, "centre bit": k + m + 4, "bytes": k + m + 2,
+             "bytes typed": -(-(k + m + 2) // 8)}[slip]  # fmt: skip
+        # r419 F1: one form's own count off (x1, x3, y1–y3, w35: E's own bound in one form)
+        own = absolute if form == "absolute" else relative
+        n += {"one more": 1, "one short": -1, "two short": -2}.get(own, 0)
+        n = int(n)  # a fractional log2 of across, cut by int() as its author's code does
+        out.append((-(-n // 8) if slip == "bytes" else n, narrowest(n, held)))
     return tuple(out[::-1]) if order == "swapped" else tuple(out)
+
+
+def _parts(answer_, right) -> set:
+    """The parts (form, 0 for bits or 1 for type) of ``answer_`` that differ from ``right``."""
+    return {(f, k) for f in range(2) for k in range(2) if answer_[f][k] != right[f][k]}
+
+
+def _with(*args, **settings) -> tuple | None:
+    """r419 F1: the answer of some slips together, or None where one of them changes a part
+    the others change back (a combination is named only where every part each slip changes
+    is wrong in the answer, and no form's count is moved back: never "your absolute count is
+    right" beside a slip of it). Compared in the forms' own order (swapped ones put back)."""
+    out = _raw(*args, **settings)
+    if len(settings) > 1:
+        right = _raw(*args)
+        mine = _in_order(out, settings)
+        wrong = _parts(mine, right)
+        only = {"only": settings["only"]} if "only" in settings else {}  # one form's slips
+        for name, value in settings.items():
+            alone = _in_order(_raw(*args, **{**only, name: value}), {name: value})
+            if not _parts(alone, right) <= wrong or any(
+                (o[0] - r[0]) * (o[0] - r[0]) < (o[0] - r[0]) * (a[0] - r[0])
+                for o, a, r in zip(mine, alone, right)
+            ):  # a form's count the others move back (y2: −1 in both, +2 in one) is no cause
+                return None
+    return out
+
+
+def _in_order(answer_, settings) -> tuple:
+    """An answer with its forms in the task's order (put back where ``order`` swapped them)."""
+    return answer_[::-1] if settings.get("order") == "swapped" else answer_
 
 
 #: What each type is taken to hold: exactly (a float's significand with its hidden bit, and its
@@ -296,7 +361,14 @@ _HELD = {
 }
 
 
-def _counts(args, got) -> str:
+def _counts(args, got, expected=None) -> str:
+    """ "yours are 57 and 37"; r419 F4: "in your relative count only, 22; your absolute count,
+    58, is right" where one form's count is right (read from the answer)."""
+    right = [expected is not None and g[0] == e[0] for g, e in zip(got, expected or got)]
+    if any(right) and not all(right):
+        k = right.index(False)
+        return (f"in your {FORMS[k]} count only, {got[k][0]}; your {FORMS[1 - k]} count, "
+                f"{got[1 - k][0]}, is right")  # fmt: skip
     return f"yours are {got[0][0]} and {got[1][0]}"
 
 
@@ -308,56 +380,123 @@ def _grid(args) -> str:
 #: Lesson 06's count: Direct3D's 16.8 over 2^16 px (49 bits by E's own bound, 50 term by term).
 _D3D = range_budget(2**16, 8)
 
+
+def _counts_are(a, e, g, value: str, what: str) -> str:
+    """r419 F1: "your counts are one bit short" only where that slip alone gives both counts;
+    beside another slip, what it does to each count."""
+    alone = sorted(n for n, _ in g) == sorted(n for n, _ in _raw(*a, count=value))
+    return (f"your counts are {what} ({_counts(a, g, e)})" if alone
+            else f"each of your counts is {what} for its factors ({_counts(a, g, e)})")  # fmt: skip
+
+
+def _one_right(e, g, form: str) -> str:
+    """r419 F1: " (your relative count is right)" where the other form's count is right, read
+    from the answer (never written into a slip's words)."""
+    other = 1 - FORMS.index(form)
+    return f" (your {FORMS[other]} count is right)" if g[other][0] == e[other][0] else ""
+
+
 SHORT = Slip("one bit short", lambda a, e, g: (
-    f"your counts are one bit short ({_counts(a, g)}): the sign bit, or the bit a difference of "
+    f"{_counts_are(a, e, g, 'short', 'one bit short')}: the sign bit, or the bit a difference of "
     "two products adds to the larger product's, left out; or E's own bound (|E| at most the "
     f"largest product: lesson 06's {_D3D.least_needed} for 16.8 over 2^16 px) where the task "
     f"counts term by term (lesson 06's {_D3D.needed})"), "short")  # fmt: skip
 TWO_SHORT = Slip("two bits short", lambda a, e, g: (
-    f"your counts are two bits short ({_counts(a, g)}): both the bit a difference of two "
+    f"{_counts_are(a, e, g, 'two short', 'two bits short')}: both the bit a difference of two "
     "products adds to the larger product's and the sign bit left out: a product's bits, "
     "then one more for the difference, one more for the sign"), "two short")  # fmt: skip
 BYTES = Slip("bytes, not bits", lambda a, e, g: (
-    f"yours are {g[0][0]} and {g[1][0]}: bytes, not bits; the answer counts bits (a 64-bit int "
+    f"{_counts(a, g, e)}: bytes, not bits; the answer counts bits (a 64-bit int "
     "is 8 bytes)"), "bytes")  # fmt: skip
+#: r419 F4 w34: bytes, and each type chosen for that many bits.
+BYTES_TYPED = Slip("bytes, not bits", lambda a, e, g: (
+    f"{_counts(a, g, e)}: bytes, not bits, and your types are chosen for that "
+    "many bits; the answer counts bits (a 64-bit int is 8 bytes)"), "bytes typed")  # fmt: skip
+
+
+def _exponent(across: int) -> int:
+    """The least k with ``across <= 2**k``: a difference below ``across`` px is below 2^k px."""
+    return (across - 1).bit_length()
+
+
+def _factor_words(a, form: str) -> str:
+    """A form's factor in steps of the grid, its exponent said (r419 F3: across any width)."""
+    if form == "relative":
+        k = _exponent(a[1])
+        below = f"= 2^{k} px is" if a[1] == 2**k else f"is below 2^{k} px, so"
+        return (f"a difference below {a[1]:,} px {below} below 2^{k + a[2]} steps: "
+                f"{k + a[2]} bits per factor")  # fmt: skip
+    return (f"a coordinate below 2^{a[0]} px is below 2^{a[0] + a[2]} steps: {a[0] + a[2]} "
+            "bits per factor")  # fmt: skip
+
+
 REL_WIDER = Slip("the relative factor one bit wide", lambda a, e, g: (
-    f"your relative count, {g[1][0]}, is two bits too many, your absolute one right: a "
-    f"difference below {a[1]:,} px = 2^{a[1].bit_length() - 1} px is below "
-    f"2^{a[1].bit_length() - 1 + a[2]} steps: {a[1].bit_length() - 1 + a[2]} bits per factor, "
-    f"not {a[1].bit_length() + a[2]} (across.bit_length() is {a[1].bit_length()}, one more "
-    "than the exponent; and the centres, at k + ½ px, are on the grid already: no centre bit)"),
+    f"your relative count, {g[1][0]}, counts each factor one bit wide{_one_right(e, g, 'relative')}: {_factor_words(a, 'relative')}"
+    f", not {_exponent(a[1]) + a[2] + 1} (the centres, at k + ½ px, are on the grid already: no "
+    "centre bit; and the one sign bit is counted at the end, not one in each factor)"),
     "relative wider")  # fmt: skip
+#: r419 F3: across any width: its bits rounded down (int(log2(across))) or across.bit_length().
+FLOOR = Slip("across's exponent rounded down", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, rounds across's exponent down"
+    f"{_one_right(e, g, 'relative')}: {a[1]:,} px lies between 2^{_exponent(a[1]) - 1} and "
+    f"2^{_exponent(a[1])} px: {_factor_words(a, 'relative')}, not {_exponent(a[1]) - 1 + a[2]}"),
+    "across rounded down")  # fmt: skip
+FRACTIONAL = Slip("a fractional log2 of across", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, doubles a fractional exponent, log2({a[1]:,}) = "
+    f"{np.log2(a[1]):.2f}, and cuts the sum to a whole number{_one_right(e, g, 'relative')}: a "
+    f"factor has a whole number of bits: {_factor_words(a, 'relative')}"),
+    "fractional log2")  # fmt: skip
+BIT_LENGTH = Slip("across.bit_length() for its exponent", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, takes across.bit_length() for the exponent"
+    f"{_one_right(e, g, 'relative')}: across.bit_length() is {a[1].bit_length()}, the bits of "
+    f"{a[1]:,} itself, but a difference below it is at most {a[1] - 1:,} px: "
+    f"{_factor_words(a, 'relative')}, not {a[1].bit_length() + a[2]}"),
+    "across.bit_length()")  # fmt: skip
 ABS_WIDER = Slip("the absolute factor one bit wide", lambda a, e, g: (
-    f"your absolute count, {g[0][0]}, is two bits too many, your relative one right: a "
-    f"coordinate below 2^{a[0]} px is below 2^{a[0] + a[2]} steps: {a[0] + a[2]} bits per "
-    "factor; its sign is the one sign bit counted at the end, not a bit in each factor (and the "
+    f"your absolute count, {g[0][0]}, counts each factor one bit wide{_one_right(e, g, 'absolute')}: {_factor_words(a, 'absolute')}"
+    "; its sign is the one sign bit counted at the end, not a bit in each factor (and the "
     "centres are on the grid already: no centre bit)"), "absolute wider")  # fmt: skip
 REL_RANGE = Slip("the relative form from the range", lambda a, e, g: (
     f"your relative count, {g[1][0]}, is the absolute form's: the relative form's factors are "
     f"differences, below {a[1]:,} px (across), not coordinates below 2^{a[0]} px"),
     "relative from the range")  # fmt: skip
+#: r419 F4 w25: a difference of two coordinates bounded by twice the range.
+REL_TWO_COORDS = Slip("the relative form from two coordinates", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, bounds a difference by two coordinates, 2 · 2^{a[0]} px{_one_right(e, g, 'relative')}: "
+    f"the relative form's differences (vertex to vertex, centre to vertex) are below across, "
+    f"{a[1]:,} px, however far out the triangle lies: {_factor_words(a, 'relative')}"),
+    "relative from two coordinates")  # fmt: skip
 ACROSS_BITS = Slip("across taken as bits", lambda a, e, g: (
     f"your relative count, {g[1][0]}, takes across, {a[1]:,} px, for a number of bits: it is a "
-    f"length; its bits are its exponent, {a[1].bit_length() - 1} (differences below "
-    f"2^{a[1].bit_length() - 1} px)"), "across as bits")  # fmt: skip
+    f"length; its bits are its exponent, {_exponent(a[1])} (differences below "
+    f"2^{_exponent(a[1])} px)"), "across as bits")  # fmt: skip
 LONG = Slip("one bit too many", lambda a, e, g: (
-    f"your counts are one bit too many ({_counts(a, g)}): a difference of two products below "
+    f"{_counts_are(a, e, g, 'long', 'one bit too many')}: a difference of two products below "
     "2^p is below 2^(p + 1), and the sign takes one bit more: no bit beyond (a factor below "
     "2^k steps is at most 2^k − 1: k bits, not k + 1)"), "long")  # fmt: skip
 CENTRE = Slip("a centre bit per factor", lambda a, e, g: (
-    f"your counts are two bits too many ({_counts(a, g)}): you add a bit per factor for the "
+    f"{_counts_are(a, e, g, 'centre bit', 'two bits too many')}: you add a bit per factor for the "
     f"pixel centres (lesson 06's centre bit), but with {a[2]} sub-pixel bits (1 or more) the "
     "centres, at k + ½ px, are on the grid already: a factor below 2^k steps has k bits"),
     "centre bit")  # fmt: skip
 NO_SUB = Slip("no sub-pixel bits", lambda a, e, g: (
-    f"you count whole pixels ({_counts(a, g)}): on the {_grid(a)} grid a factor has {a[2]} bits "
+    f"you count whole pixels ({_counts(a, g, e)}): on the {_grid(a)} grid a factor has {a[2]} bits "
     f"more than in pixels, so a product {2 * a[2]} more"), "no sub-pixel")  # fmt: skip
 ONCE = Slip("sub-pixel bits once", lambda a, e, g: (
-    f"you count the sub-pixel bits once per product ({_counts(a, g)}): both of its factors are on "
+    f"you count the sub-pixel bits once per product ({_counts(a, g, e)}): both of its factors are on "
     f"the {_grid(a)} grid, {a[2]} bits each, so a product has {2 * a[2]}"),
     "sub-pixel once")  # fmt: skip
+#: r419 F4 w36, z3: the sub-pixel bits added twice per factor, or multiplied with a factor's.
+TWICE = Slip("sub-pixel bits twice per factor", lambda a, e, g: (
+    f"you add the sub-pixel bits twice per factor ({_counts(a, g, e)}): a length in steps of "
+    f"1/{2**a[2]} px has {a[2]} bits more than in pixels, once per factor, so a product "
+    f"{2 * a[2]} more"), "sub-pixel twice")  # fmt: skip
+SUB_MULTIPLIED = Slip("sub-pixel bits multiplied", lambda a, e, g: (
+    f"you multiply a factor's bits by the sub-pixel bits ({_counts(a, g, e)}): a length below 2^k "
+    f"px is below 2^k · 2^{a[2]} = 2^(k + {a[2]}) steps on the {_grid(a)} grid: the sub-pixel "
+    "bits are added to a factor's, not multiplied"), "sub-pixel multiplied")  # fmt: skip
 MULTIPLIED = Slip("bits multiplied", lambda a, e, g: (
-    f"you multiply bits ({_counts(a, g)}): numbers below 2^k and 2^l multiply to below "
+    f"you multiply bits ({_counts(a, g, e)}): numbers below 2^k and 2^l multiply to below "
     "2^k · 2^l = 2^(k + l), so a product's bits are its factors' added"), "multiplied")  # fmt: skip
 A_X = Slip("A·x as the largest product", lambda a, e, g: (
     f"your absolute count, {g[0][0]}, takes A·x (a difference times a coordinate) for the "
@@ -387,11 +526,42 @@ NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     "no sign")  # fmt: skip
 
 ABS_MORE = Slip("the absolute count one bit more", lambda a, e, g: (
-    f"your absolute count, {g[0][0]}, is one bit more than C's count; two slips give it: "
+    f"your absolute count, {g[0][0]}, is one bit more than C's count{_one_right(e, g, 'absolute')}; two slips give it: "
     f"A = a.y − b.y bounded by the whole range, 2^{a[0]} px (it is a difference of two "
-    f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (A·x and "
-    "B·y are far smaller than C's products: the count is C's, a difference of two products)"),
+    f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (the sum "
+    "adds no bit: its partial sum C + A·x is E − B·y, and E and B·y, whose factors include "
+    "differences below across, stay far below C's products)"),
     "one more")  # fmt: skip
+#: r419 F1: one form's own count off, the other's right (each said from the answer).
+ABS_SHORT = Slip("the absolute count one bit short", lambda a, e, g: (
+    f"your absolute count, {g[0][0]}, is one bit short{_one_right(e, g, 'absolute')}: C = a.x·b.y − a.y·b.x is a difference of "
+    "two products: a product's bits, one more for the difference (C's own bound, |C| at most "
+    "its larger product, leaves it out), one more for the sign"), "one short")  # fmt: skip
+ABS_TWO_SHORT = Slip("the absolute count two bits short", lambda a, e, g: (
+    f"your absolute count, {g[0][0]}, is two bits short{_one_right(e, g, 'absolute')}: both the bit the difference "
+    "a.x·b.y − a.y·b.x adds to its larger product's and the sign bit left out"),
+    "two short")  # fmt: skip
+REL_BOUND = Slip("E's own bound in the relative form", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, is one bit short{_one_right(e, g, 'relative')}: E's own bound? |E| is at most its larger "
+    f"product (lesson 06's {_D3D.least_needed} for 16.8 over 2^16 px), but the task counts term "
+    f"by term (lesson 06's {_D3D.needed}): E = (b − a) × (p − a) is a difference of two "
+    "products: a product's bits, one more for the difference, one more for the sign (or the "
+    "sign bit left out)"), "one short")  # fmt: skip
+REL_LONG = Slip("the relative count one bit too many", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, is one bit too many{_one_right(e, g, 'relative')}: E = (b − a) × (p − a) is a difference "
+    "of two products: a product's bits, one more for the difference, one more for the sign, "
+    "no bit beyond (a factor below 2^k steps is at most 2^k − 1: k bits, not k + 1)"),
+    "one more")  # fmt: skip
+#: r419 F4 (x10, w37): a count slip made in one form only (alone it changes nothing).
+ONLY_ABS = Slip("in the absolute form only", (
+    "that slip in one form only: one rule counts both, as you counted the relative one"),
+    "absolute")  # fmt: skip
+ONLY_REL = Slip("in the relative form only", (
+    "that slip in one form only: one rule counts both, as you counted the absolute one"),
+    "relative")  # fmt: skip
+REL_TWO_SHORT = Slip("the relative count two bits short", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, is two bits short{_one_right(e, g, 'relative')}: both the bit a difference of two "
+    "products adds to the larger product's and the sign bit left out"), "two short")  # fmt: skip
 
 
 def _types_only(args, expected, got) -> bool:
@@ -404,10 +574,17 @@ def _types_only(args, expected, got) -> bool:
 TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 
 #: The slips, alone or two at once (of different knobs).
-KNOBS = Knobs(_with, {"count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES),
+#: r419 F1: one form's own slips first, so that of two combinations giving one answer the one
+#: whose parts each change a different form is named (w39: the absolute count one more and
+#: across.bit_length(), not one too many in both and the relative one more again).
+KNOBS = Knobs(_with, {"absolute": (ABS_MORE, ABS_SHORT, ABS_TWO_SHORT),
+                      "relative": (REL_BOUND, REL_LONG, REL_TWO_SHORT),
+                      "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, REL_TWO_COORDS, ACROSS_BITS),
+                      "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH),
+                      "count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES,
+                                BYTES_TYPED, TWICE, SUB_MULTIPLIED),
                       "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER),
-                      "order": (SWAPPED,), "absolute": (ABS_MORE,),
-                      "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, ACROSS_BITS)}, most=2)  # fmt: skip
+                      "order": (SWAPPED,), "only": (ONLY_ABS, ONLY_REL)}, most=2)  # fmt: skip
 
 #: The recipe and the worked counts, said once two different answers have failed.
 HINTS = ((re.compile(r" \((recipe|worked): [^)]*\)"), ""),)
@@ -426,18 +603,21 @@ def draw(ax, case, got):
     if isinstance(got, tuple) and len(got) == 2:
         for k, (n, t) in enumerate(got):
             right = (n, t) == case[2][k]  # r409 F6: a right part is grey, a wrong one red
+            # r419 F1: which of the two is wrong, as the words' "wrong:" list says it
+            said = [f"{n} bits" + (" (wrong)" if n != case[2][k][0] and not right else ""),
+                    f"{t}" + (" (wrong)" if t != case[2][k][1] and not right else "")]  # fmt: skip
             artists += ax.plot([k], [n], "x", color="#888888" if right else "#d7301f", ms=11,
                                mew=2)  # fmt: skip
             artists.append(
                 ax.annotate(
-                    f"yours: {n} bits, {t}{' (right)' if right else ''}",
+                    f"yours: {', '.join(said)}{' (right)' if right else ''}",
                     (k, n),
                     xytext=(8, 4),
                     textcoords="offset points",
                     fontsize="x-small",
                 )
             )
-    ax.set_xlim(-0.5, 2.0)
+    ax.set_xlim(-0.5, 2.9)  # r419: room for "yours: 32 bits (wrong), int32 (wrong)"
     ax.set_xticks([0, 1], [f"{form} form" for form in FORMS])
     ax.set_ylabel("bits, sign included")
     counts = [n for n, _ in got] if isinstance(got, tuple) and len(got) == 2 else []
