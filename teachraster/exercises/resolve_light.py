@@ -349,8 +349,9 @@ def _curve_mistake(kind, what, dec, enc) -> Mistake:
 
 
 def _not_inverse(args, expected, got) -> bool | None:
-    """A pixel with no sample covered is the background, unchanged, whatever the curves: an
-    answer that differs there has a decode and an encode that are not inverses."""
+    """A pixel with no sample covered is the background, unchanged: an answer that differs
+    there changes the value between decoding and encoding (r423 MN3: the curves not each
+    other's inverse is one cause of several; the words name them all)."""
     _, ids, background = args
     if _covered(ids).any():
         return None
@@ -362,9 +363,10 @@ def _not_inverse_words(args, expected, got) -> str:
     b = np.asarray(args[2], dtype=float)
     return (
         f": no sample is covered here, so the pixel is the background {vec(b)} unchanged, "
-        "whatever is averaged: your encode of your decode does not give it back, so your two "
-        "curves are not each other's inverse; use srgb_to_linear and linear_to_srgb, the exact "
-        "pair"
+        "whatever is averaged (decoded, averaged alone, encoded back); yours is not, so "
+        "something between your decode and your encode changes the value: curves that are "
+        "not each other's inverse (srgb_to_linear and linear_to_srgb are an exact pair), a "
+        "rounding, or a step left out or done twice"
     )
 
 
