@@ -81,3 +81,20 @@ def test_the_exact_pair_is_never_told_it_is_not_inverse(label):
     text = " ".join(f.explanation for f in report.failures)
     assert "your two curves are not each other's inverse" not in text
     assert "your encode of your decode" not in text
+
+
+def test_the_two_resolves_titles_say_light_averaged_only_of_a_right_answer():
+    """r423 S1: a wrong 6.3 was titled "light averaged" whatever it did."""
+    import matplotlib.pyplot as plt
+    from exercise_solutions import CORRECT
+
+    from teachraster.exercises.resolve_light import show_two_resolves
+
+    for srgb, said in ((CORRECT["resolve_srgb"], "light averaged"),
+                       (R423_SRGB["resolve_srgb averaging codes, then decoding"][1],
+                        "not its rule here")):  # fmt: skip
+        fig, axes = plt.subplots(1, 3)
+        show_two_resolves(CORRECT["resolve"], srgb, axes)
+        titles = [ax.get_title().replace("\n", " ") for ax in axes]
+        plt.close(fig)
+        assert "codes averaged" in titles[0] and said in titles[1], titles
