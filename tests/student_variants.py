@@ -7258,3 +7258,153 @@ R419_EDGE_BITS_DIFFERENT = {
             for m in (2 ** (r + s) - 1, a * 2**s - 1))),
 }  # fmt: skip
 DIFFERENT.update(R419_EDGE_BITS_DIFFERENT)
+
+
+# == r423 (fixex06b, exercise 6): the reader's variants that passed 6.1, or were misnamed ==
+def _r423_coverage(
+    tie=None, winding="snapped", kinds="snapped", dtype=np.float64, local=False,
+    points_round=None, finish=lambda inside, s: float(inside.mean()), zero=0.0, start=True,
+):  # fmt: skip
+    """A student's coverage_fraction (the reference, ``v/c61_teacher.py``) with one knob
+    turned: ``tie(e, ab, p, owns)`` the test of one edge (None: the rule); ``winding`` or
+    ``kinds`` decided on the vertices "given" (before snapping); E in ``dtype`` (float32:
+    in window coordinates, or ``local`` to the pixel); the sample positions rounded to
+    ``points_round`` decimals; ``finish(inside, S)`` the answer; ``zero`` the answer for a
+    zero area; ``start`` the mask's first value (``np.zeros`` with ``&=``: never covered)."""
+
+    def coverage_fraction(xy, pixel, samples):
+        raw = np.asarray(xy, dtype=float)
+        v = np.rint(raw * 256) / 256
+        row, col = pixel
+        origin = np.array([col, row], float) if local else np.zeros(2)
+        v, raw = (v - origin).astype(dtype), (raw - origin).astype(dtype)
+        p = (np.asarray(samples, float) + [col, row] - origin).astype(dtype)
+        if points_round is not None:
+            p = np.round(p, points_round)
+
+        def e_of(a, b, q):
+            return (b[0] - a[0]) * (q[..., 1] - a[1]) - (b[1] - a[1]) * (q[..., 0] - a[0])
+
+        area = e_of(v[0], v[1], v[2])
+        if area == 0:
+            return zero
+        if e_of(*(raw if winding == "given" else v)) < 0:
+            v, raw = v[[0, 2, 1]], raw[[0, 2, 1]]
+        judge = raw if kinds == "given" else v
+        inside = np.full(len(p), start, dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            ja, jb = judge[k], judge[(k + 1) % 3]
+            owns = jb[1] < ja[1] or (jb[1] == ja[1] and jb[0] > ja[0])
+            e = e_of(a, b, p)
+            inside &= tie(e, (a, b), p, owns) if tie else ((e >= 0) if owns else (e > 0))
+        return finish(inside, len(p))
+
+    return coverage_fraction
+
+
+def _r423_distance(tol):
+    def tie(e, ab, p, owns):
+        d = e / np.hypot(*(ab[1] - ab[0]))
+        return (d >= -tol) if owns else (d > tol)
+
+    return tie
+
+
+def _r423_rel_isclose(e, ab, p, owns):
+    (a, b) = ab
+    close = np.isclose((b[0] - a[0]) * (p[:, 1] - a[1]), (b[1] - a[1]) * (p[:, 0] - a[0]))
+    return ((e >= 0) | close) if owns else ((e > 0) & ~close)
+
+
+def _r423_mixed_zeros(xy, pixel, samples):  # the reader's s5: 0.0 for one sample, else 0
+    return 0.0 if len(samples) == 1 else 0
+
+
+def _r423_sample0(sample_colours, sample_ids, background):  # the reader's v2/w08
+    return sample_colours[0]
+
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R423 = {
+    "coverage with a tolerance of 1e-4 px on the distance E / |edge|": (
+        "coverage_fraction", _r423_coverage(tie=_r423_distance(1e-4)),
+        "on the distance E / |edge|", "tolerance on E"),
+    "coverage with a tolerance of 5e-4 px on the distance E / |edge|": (
+        "coverage_fraction", _r423_coverage(tie=_r423_distance(5e-4)),
+        "on the distance E / |edge|", "tolerance on E"),
+    "coverage with a relative np.isclose on E's two products": (
+        "coverage_fraction", _r423_coverage(tie=_r423_rel_isclose), "or np.isclose",
+        "tolerance on E"),
+    "coverage with the winding decided before snapping": (
+        "coverage_fraction", _r423_coverage(winding="given"),
+        "you decided the winding on the vertices as given, before snapping",
+        "winding before snapping"),
+    "coverage with the edges' kinds decided before snapping": (
+        "coverage_fraction", _r423_coverage(kinds="given"),
+        "you decided which edges are top or left on the vertices as given",
+        "edge kinds before snapping"),
+    "coverage with E in float32, window coordinates": (
+        "coverage_fraction", _r423_coverage(dtype=np.float32), "you computed E in float32",
+        "float32"),
+    "coverage with E in float32, relative to the pixel": (
+        "coverage_fraction", _r423_coverage(dtype=np.float32, local=True),
+        "you computed E in float32", "float32"),
+    "coverage from np.zeros, 0 (an int) for zero area": (
+        "coverage_fraction", _r423_coverage(start=False, zero=0), "returns 0 on every case",
+        "constant"),
+    "coverage from np.zeros, returning inside.mean() (np.float64)": (
+        "coverage_fraction", _r423_coverage(start=False, finish=lambda i, s: i.mean()),
+        "returns 0 on every case", "constant"),
+    "coverage computing, then returning 0 (an int)": (
+        "coverage_fraction", _r423_coverage(finish=lambda i, s: 0), "returns 0 on every case",
+        "constant"),
+    "coverage returning 0.0 for one sample, else 0": (
+        "coverage_fraction", _r423_mixed_zeros, "returns 0 on every case", "constant"),
+    "coverage by floor division, k // S": (
+        "coverage_fraction", _r423_coverage(finish=lambda i, s: i.sum() // s),
+        "Integer division (k // S)", "integer division"),
+    "coverage with the samples rounded to 2 decimals": (
+        "coverage_fraction", _r423_coverage(points_round=2),
+        "you rounded the sample positions to 2 decimal places", "samples rounded to decimals"),
+    "coverage 1 unless the area is 0": (
+        "coverage_fraction", _r423_coverage(finish=lambda i, s: 1.0),
+        "returns 1 on every case but", "1 unless zero area"),
+    "resolve returning sample 0 as given": (
+        "resolve", _r423_sample0, "that is sample 0's colour as given", "first sample"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R423.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R423.items()})
+
+
+def _r423_srgb_8bit_out(sample_colours, sample_ids, background):  # the reader's v3/w10
+    c = np.where(np.asarray(sample_ids)[:, None] >= 0, sample_colours, background)
+    return np.round(_r423_enc(_r423_dec(c).mean(axis=0)) * 255) / 255
+
+
+def _r423_srgb_decode_after(sample_colours, sample_ids, background):  # v3/w15
+    c = np.where(np.asarray(sample_ids)[:, None] >= 0, sample_colours, background)
+    return _r423_dec(c.mean(axis=0))
+
+
+def _r423_srgb_lut_in(sample_colours, sample_ids, background):  # v3/w16
+    c = np.where(np.asarray(sample_ids)[:, None] >= 0, np.nan_to_num(sample_colours), background)
+    return _r423_enc(_r423_dec(np.rint(c * 255) / 255).mean(axis=0))
+
+
+_r423_dec, _r423_enc = _r422_dec(), _r422_enc()
+#: r423 MN3: 6.3 answers that use the exact pair of curves, whose report said "your two
+#: curves are not each other's inverse" (their first explanations were right).
+R423_SRGB = {
+    "resolve_srgb rounded to 8 bits at the end": (
+        "resolve_srgb", _r423_srgb_8bit_out, "rounded to steps of 1/255", "8-bit rounding"),
+    "resolve_srgb averaging codes, then decoding": (
+        "resolve_srgb", _r423_srgb_decode_after, "decode the covered samples", "value"),
+    "resolve_srgb with 8-bit codes in, through a table": (
+        "resolve_srgb", _r423_srgb_lut_in, "decode the covered samples", "value"),
+    "coverage as the count over 4": (
+        "coverage_fraction", _r423_coverage(finish=lambda i, s: i.sum() / 4),
+        "you divided the samples covered by 4", "divided by 4"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R423_SRGB.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R423_SRGB.items()})

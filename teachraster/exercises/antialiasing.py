@@ -49,9 +49,12 @@ def tri_words(xy) -> str:
 
 def expected_fraction(xy, pixel, samples) -> float:
     """The package's fraction of ``pixel``'s samples that triangle ``xy`` covers."""
+    # r423 WP4: moved by whole pixels to a 1 × 1 frame (the 1/256 grid and E are the same
+    # there), so a 2000 px triangle far from the origin costs one pixel, not a 4K frame
     row, col = pixel
-    fill = rasterize(Triangle(np.asarray(xy, dtype=float)), col + 1, row + 1, samples=samples)
-    return float(fill.sample_coverage[row, col].mean())
+    moved = np.asarray(xy, dtype=float) - [col, row]
+    fill = rasterize(Triangle(moved), 1, 1, samples=samples)
+    return float(fill.sample_coverage[0, 0].mean())
 
 
 def sample_points(pixel, samples) -> np.ndarray:
@@ -91,6 +94,29 @@ def _edge_words(xy, point) -> str:
             f"edge): the top-left rule {verdict} (both edges must own it)"
         )
     return ""
+
+
+#: r423: cases of 6.1's hard table (kept apart: _coverage_cases stays under 100 lines)
+R423_HARD = [
+    # r423 WP1: a tolerance on the distance E / |edge| (≤ 5e-4 px) or a relative
+    # np.isclose on E's two products passed: E's smallest step, 2⁻¹⁷ px², inside a
+    # 512 px right edge (the sample 1.5e-8 px from it)
+    ("near a tie: a sample 2⁻¹⁷ px² inside a 512 px right edge",
+     [[2.375, -100], [2.37890625, 412], [-50, 150]], (156, 2),
+     [[0.376953125, 1 / 512]]),
+    # r423 WP2, WP3: the winding, or an edge's kind, decided before snapping passed: a
+    # sliver whose winding flips when snapped; a top edge horizontal only once snapped
+    ("a sliver whose winding flips when snapped",
+     [[0.19921875, 0.06347656], [2.74609375, 0.35644531], [1.5559431, 0.21826552]],
+     (0, 1), [[7 / 512, 80 / 512]]),
+    ("a top edge horizontal only once snapped, a sample on it",
+     [[0, 1.375], [6, 1.3759765625], [3, 6]], (1, 2), [[0.875, 0.375]]),
+    # r423 WP4: a triangle of a 4K frame, a sample 2e-5 px outside a 2000 px edge: E in
+    # float32 (24 bits) cannot hold E's 2⁻¹⁷ px² steps at these sizes
+    ("a 4K frame's triangle, a sample 2e-5 px outside its long edge",
+     [[1578.640625, 929.24609375], [2995.0234375, 2574.8203125], [2903.03125, 331.234375]],
+     (1509, 2078), [[0.259765625, 0.7109375]]),
+]  # fmt: skip
 
 
 def _coverage_cases(rng, word):
@@ -157,6 +183,7 @@ def _coverage_cases(rng, word):
          [[0, 1.125], [2.375, 1.125], [1, 3]], (1, 2), [[0.375, 0.125]]),
         ("a sample on a top edge's line, past its end",
          [[0, 1.125], [2.5, 1.125], [1, 3]], (1, 2), [[0.875, 0.125]]),
+        *R423_HARD,
         ("zero area through the samples", [[2.375, 1.125], [2.875, 1.375], [3.375, 1.625]], (1, 2), four),  # fmt: skip
         ("one sample at the centre, on an edge", [[2.5, 0], [6, 3], [2.5, 6]], (1, 2), sample_pattern(1)),  # fmt: skip
         ("2 samples, a diagonal through both", [[0, 0], [8, 8], [0, 8]], (1, 1), sample_pattern(2)),
@@ -567,8 +594,185 @@ GRID_MISTAKES = [
             gives=functools.partial(fraction_with, points="snapped"), only_whole=True),
 ]  # fmt: skip
 
+
+# -- r423 WP2, WP3, WP4, MN2, HN1: decisions before snapping, float32 E, //, rounded samples --
+def fraction_unsnapped(xy, pixel, samples, decided: str) -> float:
+    """E on the snapped vertices, but ``decided`` ("winding" or "kinds") on the vertices as
+    given: the triangle turned by the unsnapped winding, or its edges' kinds (top, left…)
+    taken from the unsnapped edges."""
+    raw = np.asarray(xy, dtype=float)
+    v = snap(raw)
+    if float(edge_function(v[0], v[1], v[2])) == 0:
+        return 0.0
+    turn = v if decided == "kinds" else raw
+    if float(edge_function(turn[0], turn[1], turn[2])) < 0:
+        v, raw = v[[0, 2, 1]], raw[[0, 2, 1]]
+    judge = raw if decided == "kinds" else v
+    points = sample_points(pixel, samples)
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        e = edge_function(v[k], v[(k + 1) % 3], points)
+        owns = kind_of(judge[k], judge[(k + 1) % 3]) in TOP_LEFT
+        inside &= (e >= 0) if owns else (e > 0)
+    return float(inside.mean())
+
+
+def _winding_words(args, expected, got) -> str:
+    raw = np.asarray(args[0], dtype=float)
+    before, after = float(edge_function(*raw)), float(edge_function(*snap(raw)))
+    return (
+        "you decided the winding on the vertices as given, before snapping: snapping moves "
+        f"them, and here the snapped triangle runs the other way (E(v1, v2, v3) = "
+        f"{num(before)} before snapping, {num(after)} after); snap first, then decide the "
+        "winding, the edges' kinds and E on the snapped vertices"
+    )
+
+
+def _kinds_words(args, expected, got) -> str:
+    raw = np.asarray(args[0], dtype=float)
+    v = snap(raw)
+    turn = [0, 2, 1] if float(edge_function(*v)) < 0 else [0, 1, 2]
+    changed = [(k, kind_of(raw[turn[k]], raw[turn[(k + 1) % 3]]),
+                kind_of(v[turn[k]], v[turn[(k + 1) % 3]])) for k in range(3)]  # fmt: skip
+    here = "".join(f"; here edge v{turn[k] + 1}→v{turn[(k + 1) % 3] + 1} is a {a} edge as "
+                   f"given but a {b} edge once snapped" for k, a, b in changed if a != b)  # fmt: skip
+    return (
+        "you decided which edges are top or left on the vertices as given, before snapping: "
+        "snapping can make an edge horizontal (a top edge) or turn its direction; decide the "
+        f"kinds on the snapped vertices, as E is{here}"
+    )
+
+
+def _e_float32(a, b, p, origin):
+    """E in float32, from coordinates taken relative to ``origin`` (float32 throughout)."""
+    a, b = (np.asarray(a) - origin).astype(np.float32), (np.asarray(b) - origin).astype(np.float32)
+    p = (np.asarray(p) - origin).astype(np.float32)
+    return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
+
+
+def fraction_float32(xy, pixel, samples, local: bool) -> float:
+    """The rule with E computed in float32, in window coordinates or (``local``) relative to
+    the pixel's corner."""
+    origin = np.array([pixel[1], pixel[0]], dtype=float) if local else np.zeros(2)
+    v = snap(np.asarray(xy, dtype=float))
+    area = float(_e_float32(v[0], v[1], v[2], origin))
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    points = sample_points(pixel, samples)
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        e = _e_float32(v[k], v[(k + 1) % 3], points, origin)
+        inside &= (e >= 0) if kind_of(v[k], v[(k + 1) % 3]) in TOP_LEFT else (e > 0)
+    return float(inside.mean())
+
+
+def _float32_words(args, expected, got) -> str:
+    xy, pixel, samples = args
+    e, _, _ = _edge_table(xy, pixel, samples)
+    k, s = np.unravel_index(int(np.argmin(np.where(e == 0, np.inf, np.abs(e)))), e.shape)
+    size = int(np.abs(np.asarray(xy, dtype=float)).max())
+    bits = 2 * size.bit_length() + 17  # two products of (1/256)- and (1/512)-grid lengths
+    return (
+        "you computed E in float32: its 24 bits hold E exactly only in small triangles; here "
+        f"the coordinates reach {size} px (a 4K frame) and E's products, in steps of 2⁻¹⁷ "
+        f"px², need about {bits} bits, so a sample just off an edge lands on the wrong side "
+        f"(sample {s} has E = {int(round(float(e[k, s]) * 131072))}/131072 px² exactly). "
+        "Compute E in float64 (53 bits: exact in any frame up to 2¹⁷ px) or in integers"
+    )
+
+
+def _floor_words(args, expected, got) -> str:
+    xy, pixel, samples = args
+    k = int(covered_samples(snap(xy), sample_points(pixel, samples)).sum())
+    return (
+        f"your fractions are only ever 0 or 1: here {k} of {len(samples)} samples are covered "
+        f"and you returned {num(as_fraction(got))}. Integer division (k // S) rounds every "
+        "partly covered pixel down to 0: divide with / (or you covered the pixel only where "
+        "all its samples are?)"
+    )
+
+
+def _rounded_samples(places: int):
+    def gives(xy, pixel, samples):
+        points = np.round(sample_points(pixel, samples), places)
+        return float(covered(snap(np.asarray(xy, dtype=float)), points, vertices="exact").mean())
+
+    def words(args, expected, got) -> str:
+        _, pixel, samples = args
+        points = sample_points(pixel, samples)
+        moved = ", ".join(f"sample {k} {exact(a)} became {exact(b)}" for k, (a, b)
+                          in enumerate(zip(points, np.round(points, places))) if (a != b).any())  # fmt: skip
+        return (
+            f"you rounded the sample positions to {places} decimal place{'s' * (places != 1)}: "
+            "a sample lies exactly where its offset puts it, (col + ox, row + oy); only the "
+            f"vertices are snapped (to 1/256 px){': here ' + moved if moved else ''}"
+        )
+
+    return Mistake("samples rounded to decimals", words, gives=gives, only_whole=True)
+
+
+R423_MISTAKES = [
+    Mistake(
+        "winding before snapping",
+        _winding_words,
+        gives=functools.partial(fraction_unsnapped, decided="winding"),
+        only_whole=True,
+    ),
+    Mistake(
+        "edge kinds before snapping",
+        _kinds_words,
+        gives=functools.partial(fraction_unsnapped, decided="kinds"),
+        only_whole=True,
+    ),
+    # a float32 computation that gives this very answer (gives, not fits): float32 named
+    # as the cause however far a whole sample moves the fraction (diagnosis._honest)
+    *(
+        Mistake(
+            "float32",
+            _float32_words,
+            gives=functools.partial(fraction_float32, local=s),
+            only_whole=True,
+        )
+        for s in (False, True)
+    ),
+    Mistake(
+        "integer division",
+        _floor_words,
+        gives=lambda *a: float(fraction_with(*a) == 1),
+        only_whole=True,
+    ),
+    # the reader's w37: the count over 4 (the standard pattern's S), told only the rule
+    Mistake(
+        "divided by 4",
+        lambda args, expected, got: (
+            f": you divided the samples covered "
+            f"by 4, not by this pixel's S = {len(args[2])} samples (len(samples))"
+        ),
+        gives=lambda *a: fraction_with(*a, count=True) / 4,
+        only_whole=True,
+    ),
+    # r423 HN2: 1.0 on every case but a zero-area one, told only the rule
+    Mistake(
+        "1 unless zero area",
+        ": your function returns 1 on every case but the zero-area "
+        "one, whatever the samples: it covers the pixel without testing them (a `return` "
+        "reached too early?)",
+        gives=lambda xy, pixel, samples: float(
+            float(edge_function(*snap(np.asarray(xy, dtype=float)))) != 0
+        ),
+        only_whole=True,
+    ),
+]
+#: after TOLERANCE: 3 decimals moves a sample by ≤ 5e-4 px, as a tolerance on the distance
+#: does (the 512 px edge's case), and the tolerance is the likelier
+ROUNDED_SAMPLES = [_rounded_samples(d) for d in DECIMALS]  # fmt: skip
+
+#: r423: before TOLERANCE, which also gives the sliver's and the 4K triangle's answers (each
+#: is named only where it gives every answer of the check, so never for a real tolerance)
 COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
-                     TOLERANCE]  # fmt: skip
+                     *R423_MISTAKES, TOLERANCE, *ROUNDED_SAMPLES]  # fmt: skip
 
 
 def coverage_mistakes() -> list[Mistake]:
@@ -998,6 +1202,11 @@ RESOLVE_MISTAKES = [
     Mistake("first sample", _resolve_words("that is sample 0 alone: the resolve mixes all "
             "the samples", rule=False),
             gives=lambda c, i, b: _with_background(c, i, b)[0]),
+    # r423 HN3: sample 0 as given, NaN where uncovered, was told only "NaN at [0]"
+    Mistake("first sample", _resolve_words("that is sample 0's colour as given (NaN where "
+            "no triangle covered it, as here): the resolve mixes all the samples, an "
+            "uncovered one counting as the background", rule=False),
+            gives=lambda c, i, b: np.asarray(c, dtype=float)[0] if i[0] < 0 else None),
     # r40/r49: ids <= 0 taken as uncovered (a test of ids > 0), so triangle 0 turned background
     Mistake("triangle 0 as background", _resolve_words("you counted the samples of triangle 0 "
             "as uncovered: ids number the triangles from 0, and only −1 marks an uncovered "

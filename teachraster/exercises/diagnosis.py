@@ -195,13 +195,26 @@ def _constant(results: list[Result], per_call: bool = False) -> object | None:
     if all(near(r.expected, results[0].expected, 0.0) for r in results[1:]):
         return None
     if all(r.key is not None for r in results):
-        if len(frozenset().union(*(r.key for r in results))) != 1:
+        keys = frozenset().union(*(r.key for r in results))
+        if len(keys) != 1 and not _one_number(keys):
             return None
         return results[0].raw if per_call else results[0].got
     first = results[0].got
     if not all(near(r.got, first, 0.0) for r in results[1:]):
         return None
     return first
+
+
+def _one_number(keys) -> bool:
+    """Are these answers' keys one number of several types (r423 MN1: ``0``, ``0.0`` and
+    ``np.float64(0)`` are one constant 0, judged by value as :func:`near` does)?"""
+    numbers = (int, float, np.integer, np.floating)
+    values = [k[1] for k in keys if isinstance(k, tuple) and len(k) == 2]
+    if len(values) != len(keys) or not all(
+        isinstance(v, numbers) and not isinstance(v, (bool, np.bool_)) for v in values
+    ):
+        return False
+    return len({float(v) for v in values}) == 1
 
 
 def _number_read_as_bool(results: list[Result], value) -> object | None:

@@ -349,8 +349,9 @@ def _curve_mistake(kind, what, dec, enc) -> Mistake:
 
 
 def _not_inverse(args, expected, got) -> bool | None:
-    """A pixel with no sample covered is the background, unchanged, whatever the curves: an
-    answer that differs there has a decode and an encode that are not inverses."""
+    """A pixel with no sample covered is the background, unchanged: an answer that differs
+    there changes the value between decoding and encoding (r423 MN3: the curves not each
+    other's inverse is one cause of several; the words name them all)."""
     _, ids, background = args
     if _covered(ids).any():
         return None
@@ -362,9 +363,10 @@ def _not_inverse_words(args, expected, got) -> str:
     b = np.asarray(args[2], dtype=float)
     return (
         f": no sample is covered here, so the pixel is the background {vec(b)} unchanged, "
-        "whatever is averaged: your encode of your decode does not give it back, so your two "
-        "curves are not each other's inverse; use srgb_to_linear and linear_to_srgb, the exact "
-        "pair"
+        "whatever is averaged (decoded, averaged alone, encoded back); yours is not, so "
+        "something between your decode and your encode changes the value: curves that are "
+        "not each other's inverse (srgb_to_linear and linear_to_srgb are an exact pair), a "
+        "rounding, or a step left out or done twice"
     )
 
 
@@ -425,6 +427,13 @@ def _resolved(fn, ids, colours, background):
     return out
 
 
+def _as_rule(got, rule, ids, colours, background) -> bool:
+    """Is ``got`` (channel 0 of each pixel) what ``rule`` gives, within 1e-6?"""
+    h, w = ids.shape[:2]
+    want = [[rule(colours[i, j], ids[i, j], background)[0] for j in range(w)] for i in range(h)]
+    return bool(np.allclose(got, want, rtol=0, atol=1e-6))
+
+
 def show_two_resolves(resolve, resolve_srgb, axes=None):
     """Your 6.2 resolve and your 6.3 resolve of the same black-and-white wedges side by side
     (the numbers shown as the screen shows codes), and one row of each: averaged as codes,
@@ -438,9 +447,13 @@ def show_two_resolves(resolve, resolve_srgb, axes=None):
     ids, colours, background = _wedges()
     row = 6  # a row through two wedges' slanted edges
     titles = ("your resolve (6.2): codes averaged", "your resolve_srgb (6.3): light averaged")
+    rules = (expected_resolve, expected_resolve_srgb)
     artists, rows = [], []
-    for ax, fn, title in zip(axes, (resolve, resolve_srgb), titles):
+    for ax, fn, title, rule in zip(axes, (resolve, resolve_srgb), titles, rules):
         got = _resolved(fn, ids, colours, background)
+        if not isinstance(got, str) and not _as_rule(got, rule, ids, colours, background):
+            # r423 S1: a wrong 6.3 was titled "light averaged" whatever it did
+            title = title.split(":")[0] + ": not its rule here (see its check)"
         ax.set_xticks([])
         ax.set_yticks([])
         ax.set_title(textwrap.fill(title, 24), fontsize="small")
