@@ -7314,16 +7314,17 @@ R430_EDGE_BITS = {
         "edge_bits", _eb430(_abs430, _rel430(lambda a, s: int(math.log2(a)) + s, extra=1)),
         "your relative count, 37, is one bit short (your absolute count is right): E's own bound?",
         "E's own bound in the relative form"),
-    # r430 F3: three double or typo slips the reader found fair to leave to the recipe
+    # r430 F3: three double or typo slips: what each count says of itself, beside the recipe
     "edge bits with ceil(log2(across * sub_bits)), no sub-pixel bits added (r430 w27)": (
         "edge_bits", _eb430(_abs430, _rel430(lambda a, s: math.ceil(math.log2(a * s)))),
-        "count in steps of the grid, as lesson 06 does, term by term", "value"),
+        "your relative count, 28, multiplies across by the sub-pixel bits, 8, not by 2^8",
+        "value"),
     "edge bits with int(log2(across)), no sub-pixel bits in the relative form (r430 x8)": (
         "edge_bits", _eb430(_abs430, _rel430(lambda a, s: int(math.log2(a)))),
-        "count in steps of the grid, as lesson 06 does, term by term", "value"),
+        "your relative count, 22, leaves the 8 sub-pixel bits out of each factor", "value"),
     "edge bits, the relative form from the range, one bit short (r430 x17)": (
         "edge_bits", _eb430(_abs430, lambda r, a, s: 2 * (r + s) + 1),
-        "count in steps of the grid, as lesson 06 does, term by term", "value"),
+        "your relative count, 57, is the absolute form's count, one bit short", "value"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R430_EDGE_BITS.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R430_EDGE_BITS.items()})

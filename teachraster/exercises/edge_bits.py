@@ -38,13 +38,16 @@ of its binade (130, 20, 300 px), where log2 rounded to nearest (the ``exponent``
 slip) is rounded down and a count from the largest values, one bit tighter, passes
 (:func:`tight`); F2/F3: the absolute form two bits more names the three-term sum counted as
 ⌈log2 3⌉ = 2 bits beside a factor one bit wide, the centre bit a sign bit per factor too, and
-a form's own count slip beside another says what it does ("leaves out one bit", :func:`_own`). The recipe is said once two different answers have failed
+a form's own count slip beside another says what it does ("leaves out one bit", :func:`_own`);
+where no slip gives the answer, the recipe opens with what a wrong count says of itself, where
+it can be told (:func:`_implied`: the sub-pixel bits left out of a factor, across times them). The recipe is said once two different answers have failed
 (:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
 r416 F4).
 """
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -250,9 +253,41 @@ def _worked_both(args) -> str:
             + worked(args, "relative"))  # fmt: skip
 
 
+def _implied(args, expected, got) -> str:
+    """r430 F3 (w27, x8, x17): where no slip of the table gives the answer, what a wrong count
+    says of itself, where it can be told: factors of k bits (a count 2k + 2), the sub-pixel
+    bits left out of them, across times the sub-pixel bits, the absolute form's count one bit
+    short; each beside the right factor. Nothing where the count shows nothing."""
+    r, a, s = args
+    said = []
+    for k, form in enumerate(FORMS):
+        n = got[k][0]
+        if n == expected[k][0]:
+            continue
+        right = r + s if form == "absolute" else _exponent(a) + s
+        mine = f"your {form} count, {n},"
+        if form == "relative" and n == 2 * (r + s) + 1:
+            what = (
+                f"{mine} is the absolute form's count, one bit short; its factors are differences"
+            )
+        elif n % 2 or not 1 <= (n - 2) // 2 != right:
+            continue
+        elif (f := (n - 2) // 2) == right - s:
+            what = (
+                f"{mine} leaves the {s} sub-pixel bits out of each factor ({f} bits, 2 · {f} + 2)"
+            )
+        elif form == "relative" and f == math.ceil(math.log2(a * s)):
+            what = (f"{mine} multiplies across by the sub-pixel bits, {s}, not by 2^{s} ({f} "
+                    f"bits per factor, 2 · {f} + 2)")  # fmt: skip
+        else:
+            what = f"{mine} is what factors of {f} bits give (2 · {f} + 2)"
+        said.append(f"{what}: {_factor_words(args, form)}")
+    return ": " + "; ".join(said) + "; in general," if said else ":"
+
+
 def _rule(args, expected, got) -> str:
     held = ", ".join(f"{spoken(t)} {exact_bits(t)}" for t in TYPES)
-    return (": count in steps of the grid, as lesson 06 does, term by term (recipe: a factor "
+    return (f"{_implied(args, expected, got)} count in steps of the grid, as lesson 06 does, term by term (recipe: a factor "
             "below 2^k steps has k bits, a product's bits are its factors' added, a difference "
             "of two products takes one more, the sign one more; the bits of a whole number each "
             f"type holds exactly, sign included: {held}){_worked_one(args)}")  # fmt: skip
