@@ -7408,3 +7408,83 @@ R423_SRGB = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R423_SRGB.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R423_SRGB.items()})
+
+
+# == r430 (fixex10h, exercise 10.1, edge_bits): the reader's wrong pass (F1), misnamed (F2) and ==
+# half-named (F3) variants, as the reader wrote them (across any whole number of pixels)
+def _eb430(absolute, relative):
+    """edge_bits whose factors are ``absolute(R, across, s)`` and ``relative(...)`` steps'
+    bits, each form 2k + 2 bits unless the function returns a (k, bits) pair."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        out = []
+        for count in (absolute, relative):
+            n = count(range_bits, across, sub_bits)
+            out.append((n, _eb_type(n)))
+        return tuple(out)
+
+    return edge_bits
+
+
+def _abs430(r, a, s):  # the absolute form, term by term
+    return 2 * (r + s) + 2
+
+
+def _rel430(exponent, extra=2):
+    """The relative form from ``exponent(across, sub_bits)`` factor bits, 2k + extra."""
+    return lambda r, a, s: 2 * exponent(a, s) + extra
+
+
+R430_EDGE_BITS = {
+    "edge bits with round(log2(across)) (r430 w1)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: round(math.log2(a)) + s)),
+        "your relative count, 32, rounds across's exponent to nearest (your absolute count is "
+        "right): 130 px lies between 2^7 and 2^8 px", "across's exponent rounded to nearest"),
+    "edge bits with int(log2(across) + 0.5) (r430 w5)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: int(math.log2(a) + 0.5) + s)),
+        "a difference up to 129 px needs 8 bits in pixels, not 7",
+        "across's exponent rounded to nearest"),
+    "edge bits with round(log2(across * 2**s)) (r430 x4)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: round(math.log2(a * 2**s)))),
+        "rounds across's exponent to nearest", "across's exponent rounded to nearest"),
+    "edge bits with the three-term sum as two bits more (r430 w22)": (
+        "edge_bits", _eb430(lambda r, a, s: 2 * (r + s) + 4,
+                            _rel430(lambda a, s: (a - 1).bit_length() + s)),
+        "or A·x + B·y + C counted as a sum of three terms, ⌈log2 3⌉ = 2 bits more",
+        "the absolute factor one bit wide"),
+    "edge bits with a sign bit in every factor, both forms (r430 w29)": (
+        "edge_bits", _eb430(lambda r, a, s: 2 * (r + s + 1) + 2,
+                            _rel430(lambda a, s: (a - 1).bit_length() + s + 1)),
+        "or for each factor's sign", "a centre bit per factor"),
+    "edge bits with differences bounded by 2 across (r430 w24)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: (2 * a - 1).bit_length() + s)),
+        "a difference is below across, 1,024 px, not twice it",
+        "the relative factor one bit wide"),
+    "edge bits, the relative form floored and by E's own bound (r430 x3)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: int(math.log2(a)) + s, extra=1)),
+        "your relative count, 37, is one bit short (your absolute count is right): E's own bound?",
+        "E's own bound in the relative form"),
+    # r430 F3: three double or typo slips: what each count says of itself, beside the recipe
+    "edge bits with ceil(log2(across * sub_bits)), no sub-pixel bits added (r430 w27)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: math.ceil(math.log2(a * s)))),
+        "your relative count, 28, multiplies across by the sub-pixel bits, 8, not by 2^8",
+        "value"),
+    "edge bits with int(log2(across)), no sub-pixel bits in the relative form (r430 x8)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: int(math.log2(a)))),
+        "your relative count, 22, leaves the 8 sub-pixel bits out of each factor", "value"),
+    "edge bits, the relative form from the range, one bit short (r430 x17)": (
+        "edge_bits", _eb430(_abs430, lambda r, a, s: 2 * (r + s) + 1),
+        "your relative count, 57, is the absolute form's count, one bit short", "value"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R430_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R430_EDGE_BITS.items()})
+# r430 c2: a count from the largest values, one bit tighter below the top of a binade, passes
+R430_EDGE_BITS_DIFFERENT = {
+    "edge bits from the largest values in Python ints (r430 c2)": (
+        "edge_bits", lambda r, a, s: tuple(
+            ((2 * m * m).bit_length() + 1, _eb_type((2 * m * m).bit_length() + 1))
+            for m in (2 ** (r + s) - 1, a * 2**s - 1))),
+    "edge bits with (across - 1).bit_length() + sub_bits (r430 c6)": (
+        "edge_bits", _eb430(_abs430, _rel430(lambda a, s: (a - 1).bit_length() + s))),
+}  # fmt: skip
+DIFFERENT.update(R430_EDGE_BITS_DIFFERENT)

@@ -238,8 +238,8 @@ def test_the_figure_greys_a_right_part_and_marks_a_wrong_one_red():
     assert colours == ["#888888", "#d7301f"], colours
     texts = [t.get_text() for t in ax.texts]
     # r419 F1: the wrong one says which of its two parts is wrong, as the words do
-    assert "yours: 66 bits, None (right)" in texts, texts
-    assert "yours: 68 bits (wrong), None (wrong)" in texts, texts
+    assert "yours: 66 bits\nNone (right)" in texts, texts
+    assert "yours: 68 bits (wrong)\nNone (wrong)" in texts, texts
     plt.close(fig)
 
 

@@ -33,13 +33,21 @@ multiplied) are knobs. r419 F3: ``across`` is any whole number of pixels (three 
 are no power of two), so that its exponent is reasoned, not read off: int(log2(across)) rounded
 down, ``across.bit_length()`` (right except for a power of two) and a fractional log2 doubled
 and cut are the ``exponent`` knob's slips. Where every count is right and a type is not,
-the words are about types (r409 F2). The recipe is said once two different answers have failed
+the words are about types (r409 F2). r430 F1: three more ranges put ``across`` in the bottom half
+of its binade (130, 20, 300 px), where log2 rounded to nearest (the ``exponent`` knob's fourth
+slip) is rounded down and a count from the largest values, one bit tighter, passes
+(:func:`tight`); F2/F3: the absolute form two bits more names the three-term sum counted as
+⌈log2 3⌉ = 2 bits beside a factor one bit wide, the centre bit a sign bit per factor too, and
+a form's own count slip beside another says what it does ("leaves out one bit", :func:`_own`);
+where no slip gives the answer, the recipe opens with what a wrong count says of itself, where
+it can be told (:func:`_implied`: the sub-pixel bits left out of a factor, across times them). The recipe is said once two different answers have failed
 (:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
 r416 F4).
 """
 
 from __future__ import annotations
 
+import math
 import re
 
 import numpy as np
@@ -66,9 +74,14 @@ WHAT = ("((absolute bits, type), (relative bits, type)), each type one of "
 #: where its exponent rounded down gives 32, a 32-bit int), so that log2 is not the answer;
 #: each in the top of its binade (across · 2^s − 1 ≥ 2^(d − ½) for its d bits), where a count
 #: from the largest values, (2m²).bit_length() + 1, gives the same bits as lesson 06's.
+#: r430 F1: three more in the bottom half of their binade (130, 20 and 300 px), where log2
+#: rounded to nearest is rounded down (130 px: 32 bits, a 32-bit int, not 34 and a 64-bit
+#: float) and a count from the largest values is one bit tighter than term by term: that
+#: count holds every value too, and passes (:func:`tight`). Listed last, so that the first
+#: failure of every other slip stays where it was.
 RANGES = ((20, 1024, 8), (16, 64, 4), (10, 16, 8), (11, 256, 4), (18, 512, 8), (23, 2048, 8),
           (24, 4096, 8), (8, 8, 2), (12, 32, 1), (16, 200, 8), (20, 1000, 8),
-          (12, 100, 4))  # fmt: skip
+          (12, 100, 4), (16, 130, 8), (12, 20, 4), (18, 300, 8))  # fmt: skip
 
 
 def budgets(range_bits: int, across: int, sub_bits: int) -> dict[str, BitBudget]:
@@ -174,8 +187,23 @@ def as_answer(value) -> tuple:
     return tuple((_bits(b, form), _type(t, form)) for (b, t), form in zip(pairs, FORMS))
 
 
+def tight(range_bits: int, across: int, sub_bits: int) -> tuple:
+    """r430 F1: the answer with the relative form counted from its largest values, the
+    narrowest whole number that holds (b − a) × (p − a) for differences of at most
+    m = across · 2^s − 1 steps: (2m²).bit_length() + 1 bits. One bit below term by term
+    where across lies in the bottom half of its binade (130 px: 33, not 34), the same
+    elsewhere; exact too, so it passes.
+
+    >>> tight(16, 130, 8)
+    ((50, 'float64'), (33, 'float64'))
+    """
+    m = across * 2**sub_bits - 1
+    n = (2 * m * m).bit_length() + 1
+    return (answer(range_bits, across, sub_bits)[0], (n, narrowest(n)))
+
+
 def _same(got, expected, args=None) -> bool:
-    return got == expected
+    return got == expected or (args is not None and got == tight(*args))
 
 
 def _match(got, answer_, args=None) -> bool:
@@ -225,9 +253,41 @@ def _worked_both(args) -> str:
             + worked(args, "relative"))  # fmt: skip
 
 
+def _implied(args, expected, got) -> str:
+    """r430 F3 (w27, x8, x17): where no slip of the table gives the answer, what a wrong count
+    says of itself, where it can be told: factors of k bits (a count 2k + 2), the sub-pixel
+    bits left out of them, across times the sub-pixel bits, the absolute form's count one bit
+    short; each beside the right factor. Nothing where the count shows nothing."""
+    r, a, s = args
+    said = []
+    for k, form in enumerate(FORMS):
+        n = got[k][0]
+        if n == expected[k][0]:
+            continue
+        right = r + s if form == "absolute" else _exponent(a) + s
+        mine = f"your {form} count, {n},"
+        if form == "relative" and n == 2 * (r + s) + 1:
+            what = (
+                f"{mine} is the absolute form's count, one bit short; its factors are differences"
+            )
+        elif n % 2 or not 1 <= (n - 2) // 2 != right:
+            continue
+        elif (f := (n - 2) // 2) == right - s:
+            what = (
+                f"{mine} leaves the {s} sub-pixel bits out of each factor ({f} bits, 2 · {f} + 2)"
+            )
+        elif form == "relative" and f == math.ceil(math.log2(a * s)):
+            what = (f"{mine} multiplies across by the sub-pixel bits, {s}, not by 2^{s} ({f} "
+                    f"bits per factor, 2 · {f} + 2)")  # fmt: skip
+        else:
+            what = f"{mine} is what factors of {f} bits give (2 · {f} + 2)"
+        said.append(f"{what}: {_factor_words(args, form)}")
+    return ": " + "; ".join(said) + "; in general," if said else ":"
+
+
 def _rule(args, expected, got) -> str:
     held = ", ".join(f"{spoken(t)} {exact_bits(t)}" for t in TYPES)
-    return (": count in steps of the grid, as lesson 06 does, term by term (recipe: a factor "
+    return (f"{_implied(args, expected, got)} count in steps of the grid, as lesson 06 does, term by term (recipe: a factor "
             "below 2^k steps has k bits, a product's bits are its factors' added, a difference "
             "of two products takes one more, the sign one more; the bits of a whole number each "
             f"type holds exactly, sign included: {held}){_worked_one(args)}")  # fmt: skip
@@ -285,6 +345,8 @@ def _raw(
         bits["relative"] += across.bit_length() - 1 - _exponent(across)
     elif exponent == "across.bit_length()":  # right except for a power of two
         bits["relative"] += across.bit_length() - _exponent(across)
+    elif exponent == "across rounded to nearest":  # r430 F1: round(log2(across))
+        bits["relative"] += int(np.floor(np.log2(across) + 0.5)) - _exponent(across)
     elif exponent == "fractional log2":  # r419 c4, c5: int(2 * (log2(across) + s) + 2)
         bits["relative"] += float(np.log2(across)) - _exponent(across)
     if factor == "relative wider":  # r416 F2: a centre bit or a sign in the relative factor
@@ -433,7 +495,8 @@ def _factor_words(a, form: str) -> str:
 REL_WIDER = Slip("the relative factor one bit wide", lambda a, e, g: (
     f"your relative count, {g[1][0]}, counts each factor one bit wide{_one_right(e, g, 'relative')}: {_factor_words(a, 'relative')}"
     f", not {_exponent(a[1]) + a[2] + 1} (the centres, at k + ½ px, are on the grid already: no "
-    "centre bit; and the one sign bit is counted at the end, not one in each factor)"),
+    "centre bit; the one sign bit is counted at the end, not one in each factor; and a "
+    f"difference is below across, {a[1]:,} px, not twice it)"),
     "relative wider")  # fmt: skip
 #: r419 F3: across any width: its bits rounded down (int(log2(across))) or across.bit_length().
 FLOOR = Slip("across's exponent rounded down", lambda a, e, g: (
@@ -441,6 +504,14 @@ FLOOR = Slip("across's exponent rounded down", lambda a, e, g: (
     f"{_one_right(e, g, 'relative')}: {a[1]:,} px lies between 2^{_exponent(a[1]) - 1} and "
     f"2^{_exponent(a[1])} px: {_factor_words(a, 'relative')}, not {_exponent(a[1]) - 1 + a[2]}"),
     "across rounded down")  # fmt: skip
+#: r430 F1: round(log2(across)): right in the top half of a binade, rounded down below it.
+NEAREST = Slip("across's exponent rounded to nearest", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, rounds across's exponent to nearest"
+    f"{_one_right(e, g, 'relative')}: {a[1]:,} px lies between 2^{_exponent(a[1]) - 1} and "
+    f"2^{_exponent(a[1])} px, nearer 2^{_exponent(a[1]) - 1} in log2 (log2({a[1]:,}) = "
+    f"{np.log2(a[1]):.2f}), but a difference up to {a[1] - 1:,} px needs "
+    f"{_exponent(a[1])} bits in pixels, not {_exponent(a[1]) - 1}: round log2 up: "
+    f"{_factor_words(a, 'relative')}"), "across rounded to nearest")  # fmt: skip
 FRACTIONAL = Slip("a fractional log2 of across", lambda a, e, g: (
     f"your relative count, {g[1][0]}, doubles a fractional exponent, log2({a[1]:,}) = "
     f"{np.log2(a[1]):.2f}, and cuts the sum to a whole number{_one_right(e, g, 'relative')}: a "
@@ -453,9 +524,13 @@ BIT_LENGTH = Slip("across.bit_length() for its exponent", lambda a, e, g: (
     f"{_factor_words(a, 'relative')}, not {a[1].bit_length() + a[2]}"),
     "across.bit_length()")  # fmt: skip
 ABS_WIDER = Slip("the absolute factor one bit wide", lambda a, e, g: (
-    f"your absolute count, {g[0][0]}, counts each factor one bit wide{_one_right(e, g, 'absolute')}: {_factor_words(a, 'absolute')}"
-    "; its sign is the one sign bit counted at the end, not a bit in each factor (and the "
-    "centres are on the grid already: no centre bit)"), "absolute wider")  # fmt: skip
+    f"your absolute count, {g[0][0]}, adds two bits{_one_right(e, g, 'absolute')}; two slips "
+    "give it: each factor counted one bit wide, or A·x + B·y + C counted as a sum of three "
+    "terms, ⌈log2 3⌉ = 2 bits more. The factors: "
+    f"{_factor_words(a, 'absolute')}; its sign is the one sign bit counted at the end, not a "
+    "bit in each factor (and the centres are on the grid already: no centre bit). The sum adds "
+    "no bit: its partial sum C + A·x is E − B·y, and E and B·y, whose factors include "
+    "differences below across, stay far below C's products"), "absolute wider")  # fmt: skip
 REL_RANGE = Slip("the relative form from the range", lambda a, e, g: (
     f"your relative count, {g[1][0]}, is the absolute form's: the relative form's factors are "
     f"differences, below {a[1]:,} px (across), not coordinates below 2^{a[0]} px"),
@@ -476,8 +551,10 @@ LONG = Slip("one bit too many", lambda a, e, g: (
     "2^k steps is at most 2^k − 1: k bits, not k + 1)"), "long")  # fmt: skip
 CENTRE = Slip("a centre bit per factor", lambda a, e, g: (
     f"{_counts_are(a, e, g, 'centre bit', 'two bits too many')}: you add a bit per factor for the "
-    f"pixel centres (lesson 06's centre bit), but with {a[2]} sub-pixel bits (1 or more) the "
-    "centres, at k + ½ px, are on the grid already: a factor below 2^k steps has k bits"),
+    "pixel centres (lesson 06's centre bit) or for each factor's sign, but with "
+    f"{a[2]} sub-pixel bits (1 or more) the centres, at k + ½ px, are on the grid already, and "
+    "the one sign bit is counted at the end, not one in each factor: a factor below 2^k steps "
+    "has k bits"),
     "centre bit")  # fmt: skip
 NO_SUB = Slip("no sub-pixel bits", lambda a, e, g: (
     f"you count whole pixels ({_counts(a, g, e)}): on the {_grid(a)} grid a factor has {a[2]} bits "
@@ -525,8 +602,20 @@ NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     f"{exact_bits('float32')} bits with the sign, a 64-bit float {exact_bits('float64')}"),
     "no sign")  # fmt: skip
 
+
+def _own(a, e, g, form: str, value: str, alone: str, part: str) -> str:
+    """r430 F3 (x3): a form's own count slip, "your relative count, 37, is one bit short (your
+    absolute count is right)" where that slip alone gives the count; beside another slip of
+    that form, what this one does ("leaves out one bit"), never a total it is not."""
+    k = FORMS.index(form)
+    if _raw(*a, **{form: value})[k][0] == g[k][0]:
+        return f"your {form} count, {g[k][0]}, {alone}{_one_right(e, g, form)}"
+    return f"your {form} count, {g[k][0]}, {part}"
+
+
 ABS_MORE = Slip("the absolute count one bit more", lambda a, e, g: (
-    f"your absolute count, {g[0][0]}, is one bit more than C's count{_one_right(e, g, 'absolute')}; two slips give it: "
+    _own(a, e, g, "absolute", "one more", "is one bit more than C's count",
+         "adds one bit to C's count") + "; two slips give it: "
     f"A = a.y − b.y bounded by the whole range, 2^{a[0]} px (it is a difference of two "
     f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (the sum "
     "adds no bit: its partial sum C + A·x is E − B·y, and E and B·y, whose factors include "
@@ -534,21 +623,21 @@ ABS_MORE = Slip("the absolute count one bit more", lambda a, e, g: (
     "one more")  # fmt: skip
 #: r419 F1: one form's own count off, the other's right (each said from the answer).
 ABS_SHORT = Slip("the absolute count one bit short", lambda a, e, g: (
-    f"your absolute count, {g[0][0]}, is one bit short{_one_right(e, g, 'absolute')}: C = a.x·b.y − a.y·b.x is a difference of "
+    f"{_own(a, e, g, 'absolute', 'one short', 'is one bit short', 'leaves out one bit')}: C = a.x·b.y − a.y·b.x is a difference of "
     "two products: a product's bits, one more for the difference (C's own bound, |C| at most "
     "its larger product, leaves it out), one more for the sign"), "one short")  # fmt: skip
 ABS_TWO_SHORT = Slip("the absolute count two bits short", lambda a, e, g: (
-    f"your absolute count, {g[0][0]}, is two bits short{_one_right(e, g, 'absolute')}: both the bit the difference "
+    f"{_own(a, e, g, 'absolute', 'two short', 'is two bits short', 'leaves out two bits')}: both the bit the difference "
     "a.x·b.y − a.y·b.x adds to its larger product's and the sign bit left out"),
     "two short")  # fmt: skip
 REL_BOUND = Slip("E's own bound in the relative form", lambda a, e, g: (
-    f"your relative count, {g[1][0]}, is one bit short{_one_right(e, g, 'relative')}: E's own bound? |E| is at most its larger "
+    f"{_own(a, e, g, 'relative', 'one short', 'is one bit short', 'leaves out one bit')}: E's own bound? |E| is at most its larger "
     f"product (lesson 06's {_D3D.least_needed} for 16.8 over 2^16 px), but the task counts term "
     f"by term (lesson 06's {_D3D.needed}): E = (b − a) × (p − a) is a difference of two "
     "products: a product's bits, one more for the difference, one more for the sign (or the "
     "sign bit left out)"), "one short")  # fmt: skip
 REL_LONG = Slip("the relative count one bit too many", lambda a, e, g: (
-    f"your relative count, {g[1][0]}, is one bit too many{_one_right(e, g, 'relative')}: E = (b − a) × (p − a) is a difference "
+    f"{_own(a, e, g, 'relative', 'one more', 'is one bit too many', 'adds one bit too many')}: E = (b − a) × (p − a) is a difference "
     "of two products: a product's bits, one more for the difference, one more for the sign, "
     "no bit beyond (a factor below 2^k steps is at most 2^k − 1: k bits, not k + 1)"),
     "one more")  # fmt: skip
@@ -560,7 +649,7 @@ ONLY_REL = Slip("in the relative form only", (
     "that slip in one form only: one rule counts both, as you counted the absolute one"),
     "relative")  # fmt: skip
 REL_TWO_SHORT = Slip("the relative count two bits short", lambda a, e, g: (
-    f"your relative count, {g[1][0]}, is two bits short{_one_right(e, g, 'relative')}: both the bit a difference of two "
+    f"{_own(a, e, g, 'relative', 'two short', 'is two bits short', 'leaves out two bits')}: both the bit a difference of two "
     "products adds to the larger product's and the sign bit left out"), "two short")  # fmt: skip
 
 
@@ -580,7 +669,7 @@ TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 KNOBS = Knobs(_with, {"absolute": (ABS_MORE, ABS_SHORT, ABS_TWO_SHORT),
                       "relative": (REL_BOUND, REL_LONG, REL_TWO_SHORT),
                       "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, REL_TWO_COORDS, ACROSS_BITS),
-                      "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH),
+                      "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH, NEAREST),
                       "count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES,
                                 BYTES_TYPED, TWICE, SUB_MULTIPLIED),
                       "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER),
@@ -610,14 +699,17 @@ def draw(ax, case, got):
                                mew=2)  # fmt: skip
             artists.append(
                 ax.annotate(
-                    f"yours: {', '.join(said)}{' (right)' if right else ''}",
+                    f"yours: {chr(10).join(said)}{' (right)' if right else ''}",
                     (k, n),
-                    xytext=(8, 4),
+                    xytext=(9, 0),
+                    va="center",
                     textcoords="offset points",
                     fontsize="x-small",
                 )
             )
-    ax.set_xlim(-0.5, 2.9)  # r419: room for "yours: 32 bits (wrong), int32 (wrong)"
+    # r430 F6: the label on two lines ("yours: 32 bits (wrong)" over "int32 (wrong)"), so the
+    # panel ends just past the relative form's label, no empty half
+    ax.set_xlim(-0.45, 2.05)
     ax.set_xticks([0, 1], [f"{form} form" for form in FORMS])
     ax.set_ylabel("bits, sign included")
     counts = [n for n, _ in got] if isinstance(got, tuple) and len(got) == 2 else []
