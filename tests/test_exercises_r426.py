@@ -136,3 +136,12 @@ def test_no_record_of_one_function_is_read_for_another():
     assert not ex.check("pixel_sample", fn).passed
     assert ex.check("pixel_sample", sv._r426("pixel_sample", "")).passed
     assert ps._RUNNING["raised in"] == {}
+
+
+def test_7_1s_fail_figure_says_why_its_quad_is_not_drawn(plt):
+    """FIG2: before the hints are spent a failing 7.1 figure draws no quad, and says why."""
+    tries.forget_hints("pixel_lod")
+    fig, ax = plt.subplots()
+    ex.check("pixel_lod", sv._lod405(EXTRAP="False")).plot(ax)
+    tries.forget_hints("pixel_lod")
+    assert "its quad not drawn: which it is, is question (1)" in ax.get_xlabel()

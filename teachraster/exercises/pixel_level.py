@@ -596,6 +596,8 @@ def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
     text = f"pixel ({row}, {col}), texture size (H, W) = {size}"
     if got is not None:
         text += f"; λ = {num(expected, got)}, yours {num(got, expected)}"
+    if got is not None and not passed and not tries.hints_spent("pixel_lod"):
+        text += "; its quad not drawn: which it is, is question (1)"  # r426 FIG2
     if passed:
         ddx, ddy = quad_steps(xy, w, uv, row, col)
         said = (f"blue: its quad, (u, v) at each lane (hatched: a helper; grey: unused); "
