@@ -7488,3 +7488,159 @@ R430_EDGE_BITS_DIFFERENT = {
         "edge_bits", _eb430(_abs430, _rel430(lambda a, s: (a - 1).bit_length() + s))),
 }  # fmt: skip
 DIFFERENT.update(R430_EDGE_BITS_DIFFERENT)
+# == r426 (fixex07q, exercise 7: exceptions in the student's own helpers told per case; junk
+# that filters at a vertex's (u, v), a λ per triangle, (u, v) halved per level) =============
+_R426_BASE = """
+import math
+import numpy as np
+from teachraster import barycentric, perspective_weights
+def pixel_lod(xy, w, uv, size, row, col):
+    uv = np.asarray(uv, dtype=float)
+    def at(x, y):
+        lam = barycentric(xy, [[x, y]])
+        return perspective_weights(lam, w, extrapolate=True)[0] @ uv
+    r0, c0 = row - row % 2, col - col % 2
+    upper_left = at(c0 + 0.5, r0 + 0.5)
+    ddx = at(c0 + 1.5, r0 + 0.5) - upper_left
+    ddy = at(c0 + 0.5, r0 + 1.5) - upper_left
+    h, w_tex = size
+    rho = max(np.hypot(*(ddx * [w_tex, h])), np.hypot(*(ddy * [w_tex, h])))
+    return float(np.log2(rho))
+_right_lod = pixel_lod
+def bilinear(texture, uv, wrap):
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    x0, y0 = np.floor(x), np.floor(y)
+    fx, fy = x - x0, y - y0
+    cols, rows = np.array([x0, x0 + 1], dtype=int), np.array([y0, y0 + 1], dtype=int)
+    if wrap == "repeat":
+        cols, rows = cols % w, rows % h
+    else:
+        cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+    top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+    bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+    return (1 - fy) * top + fy * bottom
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    lower = int(np.floor(lam))
+    upper = min(lower + 1, q)
+    t = lam - lower
+    return (1 - t) * bilinear(pyramid[lower], uv, wrap) + t * bilinear(pyramid[upper], uv, wrap)
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    lod = pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)
+    lam = barycentric(xy, [[col + 0.5, row + 0.5]])
+    uv_here = perspective_weights(lam, w)[0] @ np.asarray(uv, dtype=float)
+    return trilinear(pyramid, uv_here, lod, wrap)
+"""
+
+
+def _r426(name: str, cell: str):
+    """The reader's variant: the teacher's four functions in one namespace (a notebook's
+    globals), then ``cell``, which redefines some of them; the function ``name``."""
+    space: dict = {"__name__": "__main__"}
+    exec(_R426_BASE + cell, space)  # noqa: S102 - the test's own source
+    return space[name]
+
+
+_R426_SAMPLE_AT_CENTRE = """
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    lod = pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)
+    lam = barycentric(xy, [[col + 0.5, row + 0.5]])
+    return trilinear(pyramid, perspective_weights(lam, w)[0] @ np.asarray(uv, float), lod, wrap)
+"""
+_R426_BIL_NO_CLAMP = """
+def bilinear(texture, uv, wrap):  # "clamp" forgets to clamp the indices
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5
+    x0, y0 = int(np.floor(x)), int(np.floor(y))
+    fx, fy = x - x0, y - y0
+    cols, rows = [x0 % w, (x0 + 1) % w], [y0 % h, (y0 + 1) % h]
+    if wrap == "clamp":
+        cols, rows = [x0, x0 + 1], [y0, y0 + 1]
+    top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+    bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+    return (1 - fy) * top + fy * bottom
+"""
+_R426_NAN_ODD_ROWS = """
+def pixel_lod(xy, w, uv, size, row, col):
+    return float("nan") if row % 2 else _right_lod(xy, w, uv, size, row, col)
+"""
+_R426_TRI_NO_CLAMP = """
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    lower = int(np.floor(lod)); t = lod - lower
+    return (1 - t) * bilinear(pyramid[lower], uv, wrap) + t * bilinear(pyramid[lower + 1], uv, wrap)
+"""
+_R426_LOD_RAISES = """
+def pixel_lod(xy, w, uv, size, row, col):
+    uv = np.asarray(uv, dtype=float)
+    def at(x, y):
+        lam = barycentric(xy, [[x, y]])[0]
+        if min(lam) < 0:
+            raise ValueError("outside the triangle")
+        return perspective_weights([lam], w)[0] @ uv
+    r0, c0 = row - row % 2, col - col % 2
+    ul = at(c0 + .5, r0 + .5)
+    a = (at(c0 + 1.5, r0 + .5) - ul) * [size[1], size[0]]
+    b = (at(c0 + .5, r0 + 1.5) - ul) * [size[1], size[0]]
+    return math.log2(max(math.hypot(*a), math.hypot(*b)))
+"""
+_R426_PER_TRIANGLE = """
+def pixel_lod(xy, w, uv, size, row, col):  # one λ per triangle: texel area / pixel area
+    xy = np.asarray(xy, float); t = np.asarray(uv, float) * [size[1], size[0]]
+    def area(p):
+        return abs((p[1][0]-p[0][0])*(p[2][1]-p[0][1]) - (p[2][0]-p[0][0])*(p[1][1]-p[0][1])) / 2
+    return 0.5 * math.log2(area(t) / area(xy))
+"""
+_R426_PER_TRIANGLE_EDGE = """
+def pixel_lod(xy, w, uv, size, row, col):  # the longest edge in texels over it in pixels
+    xy = np.asarray(xy, float); t = np.asarray(uv, float) * [size[1], size[0]]
+    r = max(np.linalg.norm(t[i] - t[i-1]) / np.linalg.norm(xy[i] - xy[i-1]) for i in range(3))
+    return math.log2(r)
+"""
+_R426_UV_HALVED = """
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    lower = int(np.floor(lam))
+    upper = min(lower + 1, q)
+    t = lam - lower
+    a = bilinear(pyramid[lower], uv, wrap)
+    b = bilinear(pyramid[upper], np.asarray(uv) / 2, wrap)
+    return (1 - t) * a + t * b
+"""
+#: label: (name, fn, words in the first failure, kind of the first failure).
+R426_PIXEL = {
+    "pixel sample whose own bilinear forgets to clamp the indices for 'clamp' (raises)": (
+        "pixel_sample", _r426("pixel_sample", _R426_BIL_NO_CLAMP + _R426_SAMPLE_AT_CENTRE),
+        "it raised inside your bilinear (which your trilinear calls), called with (u, v) = "
+        "(2.496, 2.543)", "raised"),
+    "pixel sample with its own pixel_lod NaN on odd rows and its own bilinear returning None": (
+        "pixel_sample",
+        _r426("pixel_sample", _R426_NAN_ODD_ROWS + "def bilinear(texture, uv, wrap):\n"
+              "    tex = np.asarray(texture, dtype=float)\n"),
+        "called with (u, v) = (1.792, 0.061), λ = 0.267, on a None", "raised"),
+    "pixel sample with its own pixel_lod NaN on odd rows": (
+        "pixel_sample", _r426("pixel_sample", _R426_NAN_ODD_ROWS),
+        "called with (u, v) = (1.933, 0.02), λ = nan: λ is not a number", "raised"),
+    "pixel sample whose own trilinear has no clamp (pyramid[lower + 1] past q)": (
+        "pixel_sample", _r426("pixel_sample", _R426_TRI_NO_CLAMP),
+        "it raised inside your trilinear, called with (u, v) = (2.313, 5.37), λ = 3.635: at λ "
+        "= 3.635, ⌊λ⌋ = 3 is already the last level", "raised"),
+    "pixel sample whose own pixel_lod raises at a helper outside the triangle": (
+        "pixel_sample", _r426("pixel_sample", _R426_LOD_RAISES),
+        "outside the triangle: it raised inside your pixel_lod", "raised"),
+    "pixel lod with one λ per triangle, texel area over pixel area": (
+        "pixel_lod", _r426("pixel_lod", _R426_PER_TRIANGLE),
+        "one λ for the whole triangle: λ varies per quad", "one λ for the whole triangle"),
+    "pixel lod with one λ per triangle, the longest edge in texels over pixels": (
+        "pixel_lod", _r426("pixel_lod", _R426_PER_TRIANGLE_EDGE),
+        "one λ for the whole triangle: λ varies per quad", "one λ for the whole triangle"),
+    "trilinear reading the upper level at (u, v) / 2": (
+        "trilinear", _r426("trilinear", _R426_UV_HALVED),
+        "at (u, v)/2: (u, v) is the same on every level", "uv rescaled per level"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R426_PIXEL.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R426_PIXEL.items()})

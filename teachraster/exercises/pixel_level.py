@@ -28,7 +28,7 @@ from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
 from .answers import as_number
 from .cases import SEED, fixed_and_drawn
-from .exercise import Exercise, PackageAnswer, variant_mistakes
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .level_of_detail import level_with
 from .quad_difference import FLOOR, inside, lanes, value_at
 from .scalars import num, vec
@@ -382,6 +382,65 @@ def again(fn, args) -> float | None:
     return value if math.isfinite(value) else None
 
 
+def other_quads(xy, row: int, col: int, most: int = 4) -> list[tuple[int, int]]:
+    """Up to ``most`` pixels (row, col) whose centres triangle ``xy`` covers, outside pixel
+    (row, col)'s 2 × 2 quad, farthest first: where a value that depends on the pixel differs
+    from this one's (r426 F2, F3)."""
+    xy = np.asarray(xy, dtype=float)
+    (x0, y0), (x1, y1) = np.clip(xy.min(0), -512, 512), np.clip(xy.max(0), -512, 512)
+    found = [(r, c) for r in range(int(np.floor(y0)), int(np.ceil(y1)))
+             for c in range(int(np.floor(x0)), int(np.ceil(x1)))
+             if (r // 2, c // 2) != (row // 2, col // 2) and inside(xy, c + 0.5, r + 0.5)]  # fmt: skip
+    found.sort(key=lambda p: -math.hypot(p[0] - row, p[1] - col))
+    return found[:most]
+
+
+def _one_per_triangle(fn, args, expected, got):
+    """(pixel, its λ, yours there) at a pixel of another quad of this triangle where λ differs
+    from this one's and the student's λ does not, or None (r426 F3: a λ per triangle, texel
+    area over pixel area, counted as a try)."""
+    xy, w, uv, size, row, col = args
+    if fn is None or got is None or not math.isfinite(float(got)):
+        return None
+    far = [(abs(there - expected), (r, c), there) for r, c in other_quads(xy, row, col)
+           for there in [expected_lod(xy, w, uv, size, r, c)]]  # fmt: skip
+    if not far or max(far)[0] < 1e-3:
+        return None  # λ the same all over (an affine triangle): nothing to tell
+    _, (r, c), there = max(far)
+    mine = again(fn, (np.array(xy, float), np.array(w, float), np.array(uv, float), size, r, c))
+    same = mine is not None and abs(mine - float(got)) < 1e-9
+    return ((r, c), there, mine) if same else None
+
+
+def _per_triangle_words(args, expected, got) -> str:
+    (r, c), there, _ = _one_per_triangle(_RUNNING.get("fn"), args, expected, got)
+    return (f"one λ for the whole triangle: λ varies per quad (at pixel ({r}, {c}), another "
+            f"quad of this triangle, it is {num(there)}; here {num(expected)}); yours is "
+            f"{num(got)} at both. A GPU takes λ from the steps of (u, v) across this pixel's own "
+            "quad, not from the triangle as a whole (texel area over pixel area, or an edge's "
+            "length)")  # fmt: skip
+
+
+#: Checked before the table (a per-triangle λ may match no variant's value, or one by chance).
+PER_TRIANGLE = Mistake(
+    "one λ for the whole triangle", _per_triangle_words,
+    fits=lambda a, e, g: _lod_like(_RUNNING.get("fn"), a, g)
+    and _one_per_triangle(_RUNNING.get("fn"), a, e, g) is not None,
+)  # fmt: skip
+
+
+def _lod_like(fn, args, got) -> bool:
+    """Does ``fn`` grow by 1 where the triangle's (u, v) doubles and where the texture's size
+    doubles, as any λ built from steps in texels does (:func:`_not_tried`)?"""
+    xy, w, uv, size, row, col = args
+    if fn is None or got is None or not math.isfinite(float(got)):
+        return False
+    more = (np.array(xy, float), np.array(w, float))
+    by_uv = again(fn, (*more, np.asarray(uv, float) * 2, size, row, col))
+    by_size = again(fn, (*more, np.array(uv, float), (2 * size[0], 2 * size[1]), row, col))
+    return all(x is not None and abs(x - got - 1) < 1e-3 for x in (by_uv, by_size))
+
+
 #: How far from λ a try that behaves like a λ may lie and still count as an attempt at the
 #: task (r418 F1): 2, ρ within a factor of 4.
 NEAR = 2.0
@@ -407,6 +466,8 @@ def _not_tried(fn, args, expected, got) -> str | None:
                 f"λ goes from {num(got)} to {'no number' if moved is None else num(moved)}: λ "
                 "depends on how (u, v) changes from pixel to pixel, not on (u, v) itself:"
                 + HINT[1:])  # fmt: skip
+    if all(grew) and _one_per_triangle(fn, args, expected, got) is not None:
+        return ": " + _per_triangle_words(args, expected, got) + ":" + HINT[1:]
     if all(grew) and abs(got - expected) <= NEAR:
         return None
     if all(grew):
@@ -535,6 +596,8 @@ def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
     text = f"pixel ({row}, {col}), texture size (H, W) = {size}"
     if got is not None:
         text += f"; λ = {num(expected, got)}, yours {num(got, expected)}"
+    if got is not None and not passed and not tries.hints_spent("pixel_lod"):
+        text += "; its quad not drawn: which it is, is question (1)"  # r426 FIG2
     if passed:
         ddx, ddy = quad_steps(xy, w, uv, row, col)
         said = (f"blue: its quad, (u, v) at each lane (hatched: a helper; grey: unused); "
@@ -546,7 +609,7 @@ def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
 
 PIXEL_LOD = Exercise(
     "pixel_lod", lod_cases, as_number, same_lod, explain_lod, _rule,
-    variant_mistakes(_variants, MISTAKES),
+    (*variant_mistakes(_variants, MISTAKES), PER_TRIANGLE),  # affine's λ is one per triangle
     answers=(PackageAnswer(mip_level), PackageAnswer(lane_values)),
     draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True, call=_call,
     once=((RULE, ": as said for the first failing case"),),

@@ -23,8 +23,8 @@ from ..pipeline.texture import sample
 from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
 from .cases import SEED, fixed_and_drawn
-from .exercise import Exercise, Mistake, PackageAnswer, copies, variant_mistakes
-from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod
+from .exercise import Exercise, Mistake, PackageAnswer, case_key, copies, variant_mistakes
+from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod, other_quads
 from .quad_difference import FLOOR, inside, value_at
 from .scalars import num, vec
 from .texture_filtering import (
@@ -32,6 +32,7 @@ from .texture_filtering import (
     as_texel_value,
     expected_bilinear,
     expected_trilinear,
+    no_level_above_q,
     same_value,
     trilinear_with,
 )
@@ -260,18 +261,28 @@ MISTAKES = {
 
 #: The student's pixel_sample whose check is running (set by :func:`_call`): 7.4 composes the
 #: student's own 7.1 and 7.3, and a failure is blamed on one of those where it is wrong (r405 F2).
-_RUNNING: dict = {}
+#: "raised in" holds, by case (:func:`.exercise.case_key` of its arguments), where the
+#: student's function raised on that case and with which arguments (r426 F1: one record, the
+#: last call's, was read for every case after all had run, so each raising case quoted another
+#: case's (u, v) and λ).
+_RUNNING: dict = {"raised in": {}}
 
 
 def _call(fn, args):
     """The student's answer on one case, the function noted for :func:`_own`; where it raises,
-    the arguments of the student's own 7.1/7.2/7.3 function it raised in, for :func:`_raised`."""
+    the arguments of the student's own 7.1/7.2/7.3 function it raised in, recorded for this
+    case at that moment, for :func:`_raised`."""
+    if _RUNNING.get("fn") is not getattr(fn, "fn", fn):
+        _RUNNING["raised in"] = {}  # another function: no case of the last one's is read
     _RUNNING["fn"] = getattr(fn, "fn", fn)  # the checker's recorder holds it as ``fn``
-    _RUNNING.pop("raised in", None)
+    key = case_key(args)  # before the call: the student may write into the arguments
+    records = _RUNNING["raised in"]
+    records.pop(key, None)
     try:
         answer = fn(*args)
     except Exception as exc:
-        _RUNNING["raised in"] = _raised_in(exc)
+        if key is not None:
+            records[key] = _raised_in(exc)
         raise
     return as_texel_value(answer)
 
@@ -289,6 +300,7 @@ def _raised_in(exc) -> tuple[str, dict] | None:
     own = {"pixel_lod": _own("pixel_lod"), "trilinear": tri,
            "bilinear": None if tri is None else _own("bilinear", getattr(tri, "fn", tri))}  # fmt: skip
     codes = {getattr(f, "__code__", None): name for name, f in own.items() if f is not None}
+    frames = []  # outermost first
     tb = exc.__traceback__
     while tb is not None:
         name = codes.get(tb.tb_frame.f_code)
@@ -296,10 +308,17 @@ def _raised_in(exc) -> tuple[str, dict] | None:
             code, held = tb.tb_frame.f_code, tb.tb_frame.f_locals
             values = [held.get(v) for v in code.co_varnames[1 : code.co_argcount]]
             said = dict(zip(CALLEES[name], values))
-            return name, {k: np.array(v, dtype=float, copy=True) for k, v in said.items()
-                          if _numbers(v)}  # fmt: skip
+            frames.append((name, {k: np.array(v, dtype=float, copy=True)
+                                  for k, v in said.items() if _numbers(v)}))  # fmt: skip
         tb = tb.tb_next
-    return None
+    if not frames:
+        return None
+    # r426 F1: the outermost that got a NaN (where it came in), else the innermost (their
+    # bilinear raising inside their trilinear was blamed on the trilinear, whose check passes)
+    bad = [f for f in frames if not all(np.all(np.isfinite(v)) for v in f[1].values())]
+    name, values = bad[0] if bad else frames[-1]
+    outer = frames[0][0]
+    return (name if name == outer else f"{name} (which your {outer} calls)"), values
 
 
 def _numbers(value) -> bool:
@@ -377,24 +396,33 @@ def _fix_bilinear(args, expected, got) -> str:
 def _raised(args, error) -> str:
     """r415 F2: the full shape (H, W, C) of an RGB level passed as 7.1's size; r418 F3: the
     student's own function it raised in, with the arguments it got (a NaN (u, v) named)."""
-    inside = _RUNNING.get("raised in")
-    if inside is not None:
-        return _raised_inside(*inside)
     if "raised ValueError" in error and "unpack" in error and np.ndim(args[0][0]) == 3:
         return (f": this pyramid is RGB, np.shape(level 0) is {np.shape(args[0][0])}; did your "
                 "pixel_lod get it as `size`, and unpack it as (H, W)? 7.1's `size` is "
                 "`shape[:2]`")  # fmt: skip
-    return ""
+    inside = _RUNNING["raised in"].get(case_key(args))
+    return "" if inside is None else _raised_inside(*inside, args, error)
 
 
-def _raised_inside(name: str, values: dict) -> str:
+def _raised_inside(name: str, values: dict, args, error: str) -> str:
     """The words for an exception raised in the student's own ``name`` called with
-    ``values``."""
+    ``values`` on the case of ``args``: a None met in an operation (a function without
+    ``return``), and 7.3's words for a level above q, before the generic "does its own check
+    pass?" (r426 F1: a missing upper clamp in their trilinear was a bare IndexError)."""
     bad = [k for k, v in values.items() if not np.all(np.isfinite(v))]
     shown = ", ".join(f"{k} = {vec(v) if v.size > 1 else num(float(v))}" for k, v in values.items())
+    bare = name.split(" (")[0]
+    if not bad and "NoneType" in error:
+        return (f": it raised inside your {name}, called with {shown}, on a None: does each of "
+                "your functions return its value (one without `return` gives None)? Their own "
+                "checks say which")  # fmt: skip
+    if not bad and bare == "trilinear" and "λ" in values:
+        above = no_level_above_q((args[0], None, float(values["λ"]), None), error)
+        if above:
+            return f": it raised inside your trilinear, called with {shown}{above}"
     if bad and "(u, v)" in bad:
         return (f": it raised inside your {name}, called with {shown}: the (u, v) passed to "
-                f"{name} is not a number; a 0/0 in your weights (a sum that is 0), or a NaN "
+                f"{bare} is not a number; a 0/0 in your weights (a sum that is 0), or a NaN "
                 "carried on?")  # fmt: skip
     if bad:
         return (f": it raised inside your {name}, called with {shown}: λ is not a number; what "
@@ -478,6 +506,26 @@ def _not_tried(fn, args, expected, got) -> str | None:
         return (f": with 1/3 of a texel added to every vertex's (u, v) the filtered value "
                 f"moves from {_shown(expected, right)} to {_shown(right, expected)}, yours stays "
                 f"{_shown(got, got)}: does your value follow this pixel's (u, v)?" + HINT[1:])  # fmt: skip
+    return _same_elsewhere(fn, args, expected, got)
+
+
+def _same_elsewhere(fn, args, expected, got) -> str | None:
+    """The words for a value that stays where the pixel moves to another quad of the triangle
+    and the filtered value changes, or None (r426 F2: the pyramid filtered at the mean of the
+    vertices' (u, v) with λ = 0, then level 0 at vertex 0's (u, v), read neither the pixel nor
+    the triangle's position, and unlocked the steps)."""
+    pyramid, xy, w, uv, row, col, wrap = args
+    for r, c in other_quads(xy, row, col):
+        right = expected_sample(*copies((pyramid, xy, w, uv)), r, c, wrap)
+        if np.allclose(right, expected, rtol=0, atol=1e-6):
+            continue
+        mine = _value(fn, (*copies((pyramid, xy, w, uv)), r, c, wrap))
+        if mine is None or np.shape(mine) != np.shape(got) or not np.allclose(mine, got, atol=1e-9):
+            return None
+        return (f": at pixel ({r}, {c}), another quad of this triangle, the filtered value is "
+                f"{_shown(right, expected)}, here {_shown(expected, right)}; yours is "
+                f"{_shown(got, got)} at both: does your value depend on the pixel (its λ, its "
+                "(u, v))?" + HINT[1:])  # fmt: skip
     return None
 
 
@@ -505,7 +553,8 @@ def sample_questions(pyramid) -> str:
         f"7.4: (27, 3) gets its quad's λ = {num(lod)}, from the (u, v) of the three helpers "
         "alone (upper left, upper right, lower left; its own lane takes no part); the "
         "texture is read at its own centre (3.5, 27.5), "
-        f"(u, v) = {vec(own)}, not at a helper's (upper-left: {vec(lane)}). (28, 14) and "
+        f"(u, v) = {vec(own)}, not at a helper's (upper-left: {vec(lane)}): the pixel shows "
+        "the texture where it lies, and the helpers only give λ its steps. (28, 14) and "
         f"(29, 15) share λ but not (u, v): their values are {_shown(a, b)} and "
         f"{_shown(b, a)}, {same}"
     )
@@ -523,8 +572,12 @@ def draw_sample_case(ax, case, got):
     size = level_size(pyramid)
     lod = expected_lod(xy, w, uv, size, row, col)
     passed = got is not None and same_value(got, expected, None)
+    # r426 FIG1: a case with no answer (it raised) marks its own pixel on the floor too
+    marked = (
+        SAMPLE_PIXELS if got is not None else tuple(dict.fromkeys((*SAMPLE_PIXELS, (row, col))))
+    )
     artists = draw_lod_case(ax, ("", (xy, w, uv, size, row, col), lod), lod if passed else None,
-                            overview=got is None, marked=SAMPLE_PIXELS)  # fmt: skip
+                            overview=got is None, marked=marked)  # fmt: skip
     text = f"pixel ({row}, {col}), level 0 {size[0]}×{size[1]}, wrap={wrap!r}"
     if got is None and np.array_equal(xy, FLOOR[0]):  # the whole floor (r418 FIG1)
         text = f"the floor the check draws, the questions' pixels marked; this case: {text}"

@@ -909,6 +909,8 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     if levels == "coarsest first":  # r375 F9: pyramid[q − d] for level d
         lower, upper = q - lower, q - upper
     a, b = level(lower), level(upper)
+    if texels == "upper uv halved":  # r426 F4: the coarser level read at (u, v)/2
+        b = _filter(pyramid[upper], np.asarray(uv, dtype=float) / 2, wrap, "bilinear")
     if weights == "swapped":
         t = 1 - t
     if weights == "half":  # r375 F9: ½ each wherever λ lies between two levels
@@ -1048,6 +1050,11 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
              "normalised, from 0 to 1 across every level whatever its size, and bilinear finds "
              "the level's texels from that level's own W and H: pass uv unchanged",
              "uv over 2^d"),
+        # r426 F4: the upper level's (u, v) halved, 7.3's prediction's trap
+        Slip("uv rescaled per level", _tri_words("you read level {d1}, the coarser, at (u, v)/2: "
+             "(u, v) is the same on every level (normalised, from 0 to 1 across each level "
+             "whatever its size); only the texel size changes, and each level's bilinear reads "
+             "that level's own W and H: pass uv unchanged to both levels"), "upper uv halved"),
         # after "uv scaled per level", the same answer where every level halves exactly
         Slip("level 0's size for every level", "you filtered every level with level 0's W "
              "and H (x = u·W₀ − ½): each level's bilinear needs that level's own size, "
@@ -1093,7 +1100,7 @@ def _trilinear_rule(args, expected, got) -> str:
     return TRILINEAR_RULE
 
 
-def _no_level_above_q(args, error) -> str:
+def no_level_above_q(args, error) -> str:
     """An IndexError where ⌊λ⌋, λ clamped, is the last level q (λ in [q, q + 1), where a
     missing clamp of λ changes no level): the upper level taken as ⌊λ⌋ + 1 without the
     "at most q" (r317: told "raised IndexError: list index out of range" only)."""
@@ -1117,6 +1124,6 @@ def trilinear_exercise(scene) -> Exercise:
         draw=draw_texture_case, scene=scene,
         hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
-        inputs_drawn=True, raised_words=_no_level_above_q,
+        inputs_drawn=True, raised_words=no_level_above_q,
         example=19,  # r375 F5: λ = 1.25, 7.3's first question (r362: λ = 0 was level 0 alone)
     )  # fmt: skip
