@@ -7382,7 +7382,7 @@ R429 = {
         "your NaN does not tell which step made it", _R429_NAN),
     "perspective weights with λ and w scaled by 1e-300": (
         "perspective_weights", _w429_plain(lambda w: w * 1e-300, 1e-300),
-        "your NaN does not tell which step made it", _R429_NAN),
+        "λ_i / w_i overflows to inf at v1", _R429_NAN),
     "perspective weights scaled by the median w": (
         "perspective_weights", _w429(lambda lam, w: np.median(w), False),
         "makes its ratio", _R429_NAN),

@@ -66,7 +66,8 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
     # it does): the catalogue's perspective_w_scale and points on an edge (:data:`EXTREME`)
     for lam, w in EXTREME:
         lam, w = np.array(lam, dtype=float), np.array(w, dtype=float)
-        out.append((f"w beyond a GPU's range: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
+        outside = "p outside the triangle, " if (lam < 0).any() else ""  # r429 W1
+        out.append((f"{outside}w beyond a GPU's range: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
                     weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
     return out
 
