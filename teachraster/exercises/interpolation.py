@@ -56,13 +56,13 @@ def barycentric_cases():
 #: corner), a 1/256-px grid offset, and a p on an edge between two centres; exercises 06 and 12
 #: (the capstone) weigh such samples
 OFF_CENTRE = (
-    ("an MSAA sample (3/8, 1/8) into the pixel", [[1.5, 1.25], [14.75, 3.5], [4.25, 13.5]],
+    ("MSAA sample (3/8, 1/8)", [[1.5, 1.25], [14.75, 3.5], [4.25, 13.5]],
      (6.375, 5.125)),
-    ("an MSAA sample (1/8, 5/8) into the pixel", [[12.5, 2.0], [15.25, 14.75], [2.5, 9.5]],
+    ("MSAA sample (1/8, 5/8)", [[12.5, 2.0], [15.25, 14.75], [2.5, 9.5]],
      (9.125, 8.625)),
-    ("a point on the 1/256-px grid", [[2.0, 3.0], [13.5, 5.25], [6.75, 14.0]],
+    ("off the centre, 1/256-px grid", [[2.0, 3.0], [13.5, 5.25], [6.75, 14.0]],
      (7.73046875, 8.26171875)),
-    ("a point on the edge v1 v2, between two centres", [[2.0, 2.0], [14.0, 6.0], [5.0, 13.0]],
+    ("on the edge v1 v2, off the centres", [[2.0, 2.0], [14.0, 6.0], [5.0, 13.0]],
      (8.0, 4.0)),
 )  # fmt: skip
 

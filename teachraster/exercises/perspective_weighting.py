@@ -698,7 +698,8 @@ def draw_weights(ax, case, got):
         if wrong:
             artists += difference_note(ax, expected, got, where=(0.02, 0.98))
     elif got is not None:  # r421 T2: NaN or inf (w beyond a GPU's range) drew no bar of yours
-        artists.append(ax.text(0.02, 0.96, f"yours: {vec(got)}: no bars", transform=ax.transAxes,
+        # r429 S1: two lines, clear of the legend on the right ("no bars" ran under it)
+        artists.append(ax.text(0.02, 0.96, f"yours: {vec(got)}:\nno bars", transform=ax.transAxes,
                                ha="left", va="top", fontsize="small", color="#d7301f"))  # fmt: skip
     ax.set_xticks(x, [f"v{k + 1}\nw = {w[k]:.3g}" for k in range(3)], fontsize="x-small")
     ax.set_ylabel("weight")
