@@ -7644,3 +7644,172 @@ R426_PIXEL = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R426_PIXEL.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R426_PIXEL.items()})
+
+
+# == r429 (fixex03b, exercise 3): the reader's wrong passes (W1, W2), NaN answers named by ====
+# NaN == NaN (M1, M2) and half-named slips (H1-H4)
+def _w429(reference, mask: bool):
+    """3.2 scaled by ``reference(lam, w)``; ``mask``: the terms of λ = 0 left 0 uncomputed."""
+
+    def perspective_weights(lam, w):
+        lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+        ref = reference(lam, w)
+        with np.errstate(all="ignore"):
+            q = np.where(lam != 0, lam * (ref / w), 0.0) if mask else lam * (ref / w)
+            return q / q.sum()
+
+    return perspective_weights
+
+
+def _w429_log(lam, w):
+    """pc3: logarithms, the reference the smallest w that weighs, the λ = 0 term computed."""
+    lam, logs = np.asarray(lam, dtype=float), np.log(np.asarray(w, dtype=float))
+    with np.errstate(all="ignore"):
+        q = lam * np.exp(logs[lam != 0].min() - logs)
+        return q / q.sum()
+
+
+def _w429_by_ratio(lam, w):
+    """pc4: λ_i / (w_i / w_ref), 0 / 0 at the vertex whose λ is 0."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    with np.errstate(all="ignore"):
+        q = lam / (w / w[lam != 0].min())
+        return q / q.sum()
+
+
+def _w429_math_exp(lam, w):
+    """pw45: logarithms in pure Python, math.exp of the λ = 0 term overflowing."""
+    logs = [math.log(x) for x in w]
+    ref = min(g for g, a in zip(logs, lam) if a != 0)
+    q = [a * math.exp(ref - g) for a, g in zip(lam, logs)]
+    return [x / sum(q) for x in q]
+
+
+def _w429_plain(scale_w, scale_lam=1.0, fallback=None):
+    """λ_i / w_i normalised after the w (and λ) are rescaled; ``fallback``: returns λ where
+    the sum is 0 or not finite."""
+
+    def perspective_weights(lam, w):
+        lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+        with np.errstate(all="ignore"):
+            if fallback is not None:
+                q = lam * (w.min() / w)
+                s = q.sum()
+                return lam if s == 0 or not np.isfinite(s) else q / s
+            q = (lam * scale_lam) / scale_w(w)
+            return q / q.sum()
+
+    return perspective_weights
+
+
+def _w429_nan_to_num(lam, w):
+    with np.errstate(all="ignore"):
+        q = np.nan_to_num(np.asarray(lam, dtype=float) / np.asarray(w, dtype=float))
+        return np.nan_to_num(q / q.sum())
+
+
+def _w429_lam_beyond(lam, w):
+    """pw49: λ itself where a w lies beyond 1e±300, lesson 04's formula elsewhere."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    if w.min() < 1e-300 or w.max() > 1e300:
+        return lam
+    q = lam / w
+    return q / q.sum()
+
+
+def _b429_in_two(signed):
+    """3.1 about v3, λ3 = 1 − λ1 − λ2, dividing by ``signed(det)`` (abs, or −det)."""
+
+    def barycentric(xy, p):
+        (x1, y1), (x2, y2), (x3, y3) = np.asarray(xy, dtype=float)
+        px, py = np.asarray(p, dtype=float)
+        det = signed((x1 - x3) * (y2 - y3) - (x2 - x3) * (y1 - y3))
+        if det == 0:
+            raise ValueError("zero area")
+        l1 = ((px - x3) * (y2 - y3) - (x2 - x3) * (py - y3)) / det
+        l2 = ((x1 - x3) * (py - y3) - (px - x3) * (y1 - y3)) / det
+        return np.array([l1, l2, 1.0 - l1 - l2])
+
+    return barycentric
+
+
+def _b429_snapped(xy, p):
+    """3.1 of p's pixel centre, floor(p) + ½ (W2: every p was a centre)."""
+    return _bary_from_areas(xy, np.floor(np.asarray(p, dtype=float)) + 0.5)
+
+
+_R429_NAN = "NaN beyond a GPU's range"
+_SMALLEST_LIVE = lambda lam, w: w[lam != 0].min()  # noqa: E731
+R429 = {
+    "barycentric of p snapped to its pixel centre": (
+        "barycentric", _b429_snapped, "you snapped p to its pixel centre",
+        "p snapped to its pixel centre"),
+    "barycentric about v3 over |det|, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b429_in_two(abs), "you divided by |E(v1, v2, v3)|",
+        "absolute area, λ3 = 1 − λ1 − λ2"),
+    "barycentric about v3 over −det, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b429_in_two(lambda d: -d), "you divided by −E(v1, v2, v3)",
+        "sign, λ3 = 1 − λ1 − λ2"),
+    "perspective weights scaled by the smallest w among the λ > 0, masked": (
+        "perspective_weights", _w429(lambda lam, w: w[lam > 0].min(), True),
+        "the smallest w among the λ > 0 only", _R429_NAN),
+    "perspective weights scaled by the smallest w among the λ > 0, unmasked": (
+        "perspective_weights", _w429(lambda lam, w: w[lam > 0].min(), False),
+        "leave the term of a vertex whose λ is 0 at 0", _R429_NAN),
+    "perspective weights scaled by the smallest w that weighs, λ = 0 term computed": (
+        "perspective_weights", _w429(_SMALLEST_LIVE, False),
+        "leave the term of a vertex whose λ is 0 at 0", _R429_NAN),
+    "perspective weights in logarithms, λ = 0 term computed": (
+        "perspective_weights", _w429_log, "a term of v1 computed from one", _R429_NAN),
+    "perspective weights divided by w / w_ref, λ = 0 term computed": (
+        "perspective_weights", _w429_by_ratio, "0 · inf or 0 / 0", _R429_NAN),
+    "perspective weights with w normalised by its sum": (
+        "perspective_weights", _w429_plain(lambda w: w / w.sum()),
+        "your NaN does not tell which step made it", _R429_NAN),
+    "perspective weights with λ and w scaled by 1e-300": (
+        "perspective_weights", _w429_plain(lambda w: w * 1e-300, 1e-300),
+        "λ_i / w_i overflows to inf at v1", _R429_NAN),
+    "perspective weights scaled by the median w": (
+        "perspective_weights", _w429(lambda lam, w: np.median(w), False),
+        "makes its ratio", _R429_NAN),
+    "perspective weights through np.nan_to_num": (
+        "perspective_weights", _w429_nan_to_num, "your weights are all 0", "the point's w"),
+    "perspective weights returning λ beyond 1e±300": (
+        "perspective_weights", _w429_lam_beyond, "you returned λ itself",
+        "λ beyond a GPU's range"),
+    "perspective weights with w clipped to [1e-300, 1e300]": (
+        "perspective_weights", _w429_plain(lambda w: np.clip(w, 1e-300, 1e300)),
+        "you returned λ itself", "λ beyond a GPU's range"),
+    "perspective weights falling back to λ where the sum is 0": (
+        "perspective_weights", _w429_plain(None, fallback=True), "you returned λ itself",
+        "λ beyond a GPU's range"),
+    "perspective weights in logarithms with math.exp, λ = 0 term computed": (
+        "perspective_weights", _w429_math_exp, "was not shifted by the largest x_i", "raised"),
+}  # fmt: skip
+# r429 M1, M2: a NaN answer is told by the case's sources, never by the first slip that makes
+# a NaN: r421's students of those slips now read those words
+R421.update({
+    "perspective weights as lesson 04 prints them, beyond a GPU's w": (
+        "perspective_weights", _weights_naive, "λ_i / w_i overflows to inf", _R429_NAN),
+    "perspective weights as a loop of lists, beyond a GPU's w": (
+        "perspective_weights", _weights_loop, "inf / inf is NaN", _R429_NAN),
+    "perspective weights scaled by w1, beyond a GPU's w": (
+        "perspective_weights", _weights_scaled(lambda w: w[0]), "makes its ratio", _R429_NAN),
+    "perspective weights scaled by the smallest w of all": (
+        "perspective_weights", _weights_scaled(np.min), "scaled by the smallest w of all",
+        _R429_NAN),
+    "perspective weights scaled by the largest w": (
+        "perspective_weights", _weights_scaled(np.max), "makes its ratio", _R429_NAN),
+    "perspective weights from products of w": (
+        "perspective_weights", _weights_products, "a product of two w leaves float64's range",
+        _R429_NAN),
+    "perspective weights through the point's w": (
+        "perspective_weights", _weights_point_w, "your weights are all 0", "the point's w"),
+})  # fmt: skip
+for _table in (R421, R429):
+    WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in _table.items()})
+    KINDS.update({label: kind for label, (_, _, _, kind) in _table.items()})
+DIFFERENT.update({
+    "perspective weights scaled by the smallest w among every λ ≠ 0, masked": (
+        "perspective_weights", _w429(_SMALLEST_LIVE, True)),
+})  # fmt: skip

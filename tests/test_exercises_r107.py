@@ -40,7 +40,9 @@ def test_weights_scaled_by_the_first_w_fail_3_2_beyond_a_gpus_w_only():
     from test_capstone import _mine
 
     report = ex.check("perspective_weights", _weights_by_w1)
-    assert {f.kind for f in report.failures} == {"w1"}, str(report)
+    # r429 M1: its NaN is told by the case's sources (a scale w larger than the smallest)
+    assert {f.kind for f in report.failures} == {"NaN beyond a GPU's range"}, str(report)
+    assert "makes its ratio" in report.failures[0].explanation, str(report)
     cap = ex.capstone("textured_floor", **_mine("textured_floor",
                                                 perspective_weights=_weights_by_w1))  # fmt: skip
     assert cap.passed and cap.n_wrong == 0 and "beyond float32's range" in str(cap), str(cap)

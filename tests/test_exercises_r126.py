@@ -38,7 +38,8 @@ def test_absolute_lambda_is_named_on_several_points_outside_the_triangle():
     outside = [label for label, (lam, _), _ in weights_cases() if label.startswith("p outside")]
     assert len(outside) >= 5, outside
     for label, (lam, w), mu in weights_cases():
-        if label.startswith("p outside"):
+        # (r429 W1: the two outside beyond a GPU's range have μ = (1, -0, -0))
+        if label.startswith("p outside") and "w beyond" not in label:
             assert (lam < 0).sum() == 1 and (lam / w).sum() > 0 and (mu < 0).sum() == 1, label
 
     def absolute(lam, w):

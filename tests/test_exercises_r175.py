@@ -160,7 +160,7 @@ def test_an_epsilon_added_to_each_w_is_named_with_its_size():
     report = check("perspective_weights", eps_in_w)
     assert kinds(report) == {"epsilon added to w"}, kinds(report)
     for f in report.failures:
-        if f.case.startswith("w beyond a GPU's range"):  # r421 T2: ε ≫ w, λ itself there
+        if "w beyond a GPU's range" in f.case:  # r421 T2: ε ≫ w, λ itself there
             continue
         assert "about 1e-06" in f.explanation and "to each w" in f.explanation
         assert "in terms of μ" not in f.explanation

@@ -329,10 +329,13 @@ def test_clamped_perspective_weights_are_named_here_and_in_the_capstone():
 def test_the_direction_of_the_ratio_matters_again_beyond_a_gpus_w():
     """r94 D3-4: λ·(max w / w) passed: no case had w more than 1.8e308 apart; r126 D3-1 graded
     only w a GPU meets, where scaling by any w is right; r421 T2 grades w 1e610 apart again,
-    where the ratio overflows, and names it."""
+    where the ratio overflows, and names it (r429 M1: as the source of its NaN, never by
+    NaN == NaN)."""
     report = ex.check("perspective_weights", _persp("reversed ratios"))
-    assert not report.passed and {f.kind for f in report.failures} == {"largest w"}, str(report)
+    kinds = {f.kind for f in report.failures}
+    assert not report.passed and kinds == {"NaN beyond a GPU's range"}, str(report)
     assert all("w beyond a GPU's range" in f.case for f in report.failures), str(report)
+    assert "makes its ratio" in report.failures[0].explanation, str(report)
 
 
 def _markdown(name: str) -> str:

@@ -90,7 +90,9 @@ def test_perspective_weights_as_lesson_04_prints_them_fail_beyond_a_gpus_w():
     """r126 D3-1 graded only w a GPU meets, where λ/w normalised is right; r421 T2 grades w =
     1e-310 again (3.2 was the printed formula): it fails there, its overflow named."""
     report = ex.check("perspective_weights", lambda lam, w: (lam / w) / (lam / w).sum())
-    assert {f.kind for f in report.failures} == {"λ/w overflows"}, str(report)
+    # r429 M1: its NaN told by the steps that make one on the case (the overflow alone first)
+    assert {f.kind for f in report.failures} == {"NaN beyond a GPU's range"}, str(report)
+    assert "λ_i / w_i overflows to inf" in report.failures[0].explanation, str(report)
 
 
 def test_safe_near_never_blames_float32_for_a_named_mistake():
@@ -825,7 +827,8 @@ def test_perspective_weights_that_clamp_lambda_fail_outside_the_triangle():
     report = ex.check("perspective_weights", clamped)
     names = [f.case.split(":")[0] for f in report.failures]
     # fixex12 (r126) added more cases outside the triangle: each must fail, and nothing else
-    assert len(names) >= 6 and set(names) == {"p outside the triangle"}, names
+    # (r429 W1: two of them with w beyond a GPU's range)
+    assert len(names) >= 6 and all(n.startswith("p outside the triangle") for n in names), names
 
 
 @pytest.mark.parametrize(

@@ -45,11 +45,26 @@ def barycentric_cases():
             p = centre_near(now.uniform(xy.min(axis=0), xy.max(axis=0)))
             out.append((f"drawn for this check {len(out) - n_fixed + 1}: "
                         f"{tri_words(xy)}, p={vec(p)}", (xy, p), barycentric(xy, p)))  # fmt: skip
-    for what, xy, p in THIN_FAR:
+    for what, xy, p in (*OFF_CENTRE, *THIN_FAR):
         xy, p = np.array(xy), np.array(p)
         out.append((f"{what}: {tri_words(xy)}, p={vec(p)}", (xy, p), barycentric(xy, p)))
     return out + degenerate_cases()
 
+
+#: r429 W2: points off the pixel centre (every other p is one, so p snapped to its centre
+#: passed): MSAA sample positions (4× rotated grid, offsets (3/8, 1/8) … from the pixel's
+#: corner), a 1/256-px grid offset, and a p on an edge between two centres; exercises 06 and 12
+#: (the capstone) weigh such samples
+OFF_CENTRE = (
+    ("MSAA sample (3/8, 1/8)", [[1.5, 1.25], [14.75, 3.5], [4.25, 13.5]],
+     (6.375, 5.125)),
+    ("MSAA sample (1/8, 5/8)", [[12.5, 2.0], [15.25, 14.75], [2.5, 9.5]],
+     (9.125, 8.625)),
+    ("off the centre, 1/256-px grid", [[2.0, 3.0], [13.5, 5.25], [6.75, 14.0]],
+     (7.73046875, 8.26171875)),
+    ("on the edge v1 v2, off the centres", [[2.0, 2.0], [14.0, 6.0], [5.0, 13.0]],
+     (8.0, 4.0)),
+)  # fmt: skip
 
 #: r348 item 1: thin but proper triangles 100 000 px out, whose E(v1, v2, v3) (2^-8, 2^-16)
 #: float64 computes exactly from differences of the coordinates; a refusal by the 3×3 matrix's
@@ -202,6 +217,41 @@ def _absolute_area_words(args, expected, got) -> str:
         f": divide by the signed area E(v1, v2, v3) = {num(_area(xy))} (negative: this triangle "
         "runs counter-clockwise on screen), not by its absolute value"
     )
+
+
+def _sign_in_two(rest: int, only_negative: bool):
+    """r429 H1: two weights divided by |E(v1, v2, v3)| (``only_negative``) or by −E, the
+    third, number ``rest``, taken as 1 minus their sum (λ3 = 1 − λ1 − λ2, the task's route)."""
+
+    def gives(xy, p):
+        area = _area(xy)
+        if only_negative and area > 0:
+            return None  # the same as the right answer: says nothing here
+        lam = _areas(xy, p) / area
+        two = [k for k in range(3) if k != rest]
+        lam[two] = -lam[two]
+        lam[rest] = 1.0 - lam[two].sum()
+        return lam
+
+    return gives
+
+
+def _sign_in_two_words(rest: int, only_negative: bool):
+    def words(args, expected, got):
+        xy, _ = args
+        area = _area(xy)
+        two = " and ".join(f"λ{k + 1}" for k in range(3) if k != rest)
+        took = (f"|E(v1, v2, v3)| = {num(abs(area))}: right on triangles with E > 0, wrong on "
+                "every one of the other winding (this one runs counter-clockwise on screen)"
+                if only_negative else f"−E(v1, v2, v3) = {num(-area)}: the edges, or the "
+                "products in E, the other way round")  # fmt: skip
+        return (
+            f": your {two} have the wrong sign and your λ{rest + 1} = 1 minus their sum makes "
+            f"up the rest: you divided by {took}. Divide by the signed E(v1, v2, v3) = "
+            f"{num(area)} itself"
+        )
+
+    return words
 
 
 ORDER = (
@@ -469,6 +519,21 @@ def _p_shifted_words(by: float):
         )
 
     return words
+
+
+def _p_snapped(xy, p):
+    """r429 W2: the weights of p's pixel centre, ``floor(p) + ½`` (p read as a pixel)."""
+    return _areas(xy, np.floor(np.asarray(p, float)) + 0.5) / _area(xy)
+
+
+def _p_snapped_words(args, expected, got) -> str:
+    _, p = args
+    centre = vec(np.floor(np.asarray(p, float)) + 0.5)
+    return (
+        f": your weights are those of {centre}, the centre of p's pixel, not of p = {vec(p)}: "
+        "you snapped p to its pixel centre (floor(p) + ½, or p read as a pixel index); p is any "
+        "point, an MSAA sample off the centre here: weigh p as given"
+    )
 
 
 #: How vertices lose their fractions (r348: truncated by an int cast; r358 4: rounded),
@@ -812,6 +877,10 @@ def _proper_mistakes() -> list[Mistake]:
     # r348 item 4: four slips that got the rule (or its sum) only
     out += [Mistake("p shifted by ½", _p_shifted_words(by), gives=_p_shifted(by))
             for by in (0.5, -0.5)]  # fmt: skip
+    out += [Mistake("absolute area, λ3 = 1 − λ1 − λ2" if neg else "sign, λ3 = 1 − λ1 − λ2",
+                    _sign_in_two_words(rest, neg), gives=_sign_in_two(rest, neg))
+            for neg in (False, True) for rest in range(3)]  # fmt: skip
+    out.append(Mistake("p snapped to its pixel centre", _p_snapped_words, gives=_p_snapped))
     out += [Mistake(f"λ3 = {form}", _lambda3_words(form), gives=_lambda3_typo(signs))
             for signs, form in LAMBDA3_SLIPS.items()]  # fmt: skip
     # r358 2: p left untranslated in a solve about one vertex

@@ -17,6 +17,7 @@ Expected answers: :func:`teachraster.core.interpolation.weights_per_row`, the re
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 from functools import lru_cache
 
 import numpy as np
@@ -65,7 +66,8 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
     # it does): the catalogue's perspective_w_scale and points on an edge (:data:`EXTREME`)
     for lam, w in EXTREME:
         lam, w = np.array(lam, dtype=float), np.array(w, dtype=float)
-        out.append((f"w beyond a GPU's range: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
+        outside = "p outside the triangle, " if (lam < 0).any() else ""  # r429 W1
+        out.append((f"{outside}w beyond a GPU's range: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
                     weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
     return out
 
@@ -75,12 +77,19 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
 #: w at 1e300; w 1e610 apart, where a ratio of w above 1 overflows; then points on an edge
 #: whose opposite vertex holds the smallest w, where every term scaled by that w underflows
 EXTREME = (
+    # r429 M1: first, a case where only λ_i / w_i makes a NaN (1 / 1e-310 overflows; no ratio
+    # of w nor product of two leaves float64's range): the printed formula's NaN, said as such
+    ((0.2, 0.3, 0.5), (1e-310, 1e-3, 1e-2)),
     *(((0.2, 0.3, 0.5), (s, 2 * s, 4 * s)) for s in (1e-310, 1e-300, 1e300)),
     ((1.0, 0.0, 0.0), (1e-310, 2e-310, 4e-310)),
     ((0.2, 0.3, 0.5), (1e-310, 1e300, 1e300)),
     ((0.2, 0.3, 0.5), (1e300, 2e300, 1e-310)),
     ((0.0, 0.5, 0.5), (1e-310, 1e300, 1e300)),
     ((0.5, 0.5, 0.0), (1e300, 2e300, 1e-310)),
+    # r429 W1: a negative λ at the vertex of the smallest w (an extrapolated point): a
+    # reference w taken among the λ > 0 only overflows its ratio there
+    ((-0.25, 0.5, 0.75), (1e-310, 1e300, 1e300)),
+    ((0.5, 0.75, -0.25), (1e300, 1e300, 1e-310)),
 )
 
 #: (λ, w) of points outside the triangle: one negative λ each
@@ -182,11 +191,135 @@ def _beyond_slip(kind: str):
     answer's NaN is float32's, said by the checker's own words, not a formula's)."""
 
     def fits(args, expected, got):
-        if answer_in_float32(got) or not _beyond(args[1]):
-            return None  # (on a GPU's w it is the right answer: a near one is no overflow)
+        if answer_in_float32(got) or not _beyond(args[1]) or _holds_nan(got):
+            return None  # (on a GPU's w it is the right answer: a near one is no overflow;
+            # r429 M1: a NaN is told by the case's sources, :func:`_nan_sources`)
         return near(_beyond_variants(*args)[kind], got)
 
     return fits
+
+
+def _holds_nan(value) -> bool:
+    """Does an answer hold NaN (read as numbers; anything else does not)?"""
+    try:
+        return bool(np.isnan(np.asarray(value, dtype=float)).any())
+    except (TypeError, ValueError):
+        return False
+
+
+def match_weights(got, answer, args) -> bool:
+    """Does the student's answer equal what a mistake gives? Never by NaN == NaN (r429 M1,
+    M2: every computation that ends in 0 · inf, 0 / 0 or inf / inf gives the same NaN, so a
+    NaN answer was told the first slip of the table that makes one; it is told by the
+    case's sources instead, :data:`NAN_BEYOND`)."""
+    return not _holds_nan(got) and near(answer, got)
+
+
+def _vertices(ks) -> str:
+    names = [f"v{k + 1}" for k in ks]
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def _nan_sources(lam, w) -> list[str]:
+    """r429 M1: every step that makes a NaN on a case beyond a GPU's range, each with the
+    vertex whose term it spoils and how (0 · inf, 0 / 0, inf / inf)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    said = []
+    with np.errstate(all="ignore"):
+        over = [k for k in range(3) if lam[k] != 0 and np.isinf(lam[k] / w[k])]
+        if over:
+            said.append(f"λ_i / w_i overflows to inf at {_vertices(over)} (1 / {w[over[0]]:.3g} "
+                        "is beyond float64's largest number), and inf / inf is NaN")  # fmt: skip
+        for k in np.flatnonzero(lam == 0):
+            far = [j for j in range(3) if lam[j] != 0 and w[j] / w[k] in (0.0, np.inf)]
+            if far:
+                j = far[0]
+                said.append(
+                    f"λ{k + 1} = 0 and w{k + 1} = {w[k]:.3g} lies beyond float64's range from "
+                    f"w{j + 1} = {w[j]:.3g}: a ratio of w{k + 1} to w{j + 1} is 0 or inf, so a "
+                    f"term of v{k + 1} computed from one (λ{k + 1} times inf, or λ{k + 1} / 0) is "
+                    "0 · inf or 0 / 0, NaN, even where you scaled by the right w: leave the term "
+                    "of a vertex whose λ is 0 at 0, without computing it")  # fmt: skip
+        k = int(np.argmin(w))
+        if lam[k] == 0 and not (lam * (w[k] / w)).any():
+            said.append(f"scaled by the smallest w of all, w{k + 1} (whose λ is 0), every other "
+                        f"term λ_i · (w{k + 1} / w_i) underflows to 0, and 0 / 0 is NaN")  # fmt: skip
+        said += _ratio_sources(lam, w)
+        products = np.array([w[1] * w[2], w[2] * w[0], w[0] * w[1]])
+        if not (np.isfinite(products) & (products > 0)).all():
+            said.append(f"a product of two w leaves float64's range ({_products((lam, w))}): "
+                        "inf times a λ of 0, 0 / 0 or inf / inf is NaN")  # fmt: skip
+    return said
+
+
+def _ratio_sources(lam, w) -> list[str]:
+    """A ratio of w above 1 that overflows at a vertex whose λ is not 0 (a scale w larger
+    than its own); r429 W1: the reference taken among the λ > 0 only, where a negative λ sits
+    at the smallest w."""
+    said = []
+    live = lam != 0
+    for k in np.flatnonzero(live):
+        big = [j for j in range(3) if j != k and w[j] / w[k] == np.inf]
+        if not big:
+            continue
+        j = big[0]
+        words = (f"a scale w larger than w{k + 1} = {w[k]:.3g} (w{j + 1} = {w[j]:.3g}, say) makes "
+                 f"its ratio w{j + 1} / w{k + 1} overflow to inf at v{k + 1}, and inf / inf is NaN")  # fmt: skip
+        if lam[k] < 0 and w[k] == w[live].min():
+            ref = int(np.flatnonzero(lam > 0)[np.argmin(w[lam > 0])])
+            words += (f" (λ{k + 1} < 0 here: the smallest w among the λ > 0 only, w{ref + 1}, is "
+                      "such a scale; take the smallest w among every λ ≠ 0, whatever its sign)")  # fmt: skip
+        said.append(words)
+    return said
+
+
+def _says_no_nan(m: Mistake) -> Mistake:
+    """``m`` saying nothing where it gives NaN (r429 M1: every NaN is the same NaN, so a
+    NaN the mistake gives neither matches nor contradicts the student's)."""
+    if m.gives is None:
+        return m
+
+    def gives(*args):
+        value = m.gives(*args)
+        return None if _holds_nan(value) else value
+
+    return replace(m, gives=gives)
+
+
+def _nan_beyond_fits(args, expected, got):
+    if answer_in_float32(got) or not _beyond(args[1]) or not _holds_nan(got):
+        return None
+    return bool(_nan_sources(*args))
+
+
+def _nan_beyond_words(args, expected, got) -> str:
+    sources = _nan_sources(*args)
+    if len(sources) == 1:
+        return f": on this case only one step makes a NaN: {sources[0]}. {ONLY_RATIOS}"
+    listed = "; ".join(f"({n + 1}) {s}" for n, s in enumerate(sources))
+    return (
+        f": your NaN does not tell which step made it, but on this case only these make one: "
+        f"{listed}. {ONLY_RATIOS}"
+    )
+
+
+#: r429 M1, M2: a NaN beyond a GPU's range, told by what makes one on the case
+NAN_BEYOND = Mistake("NaN beyond a GPU's range", _nan_beyond_words, fits=_nan_beyond_fits)
+
+
+def _weights_raised(args, error: str) -> str:
+    """r429 H4: an OverflowError (math.exp beyond 709.78) said with its cause."""
+    if "OverflowError" not in error:
+        return ""
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    logs = np.log(w)
+    gap = float(logs.max() - logs.min())
+    return (
+        " (math.exp, or a power, overflows where float64 ends: exp(x) for x above 709.78; "
+        f"here the logs of the w lie {gap:.1f} apart: a term exp(x_i) of the log domain was "
+        "not shifted by the largest x_i, so that every x_i ≤ 0, or a vertex whose λ is 0 had "
+        "its term computed: leave that term 0)"
+    )
 
 
 #: r421 H5: μ in another order, each vertex's index in the answer
@@ -283,6 +416,17 @@ MISTAKES = {
         "weights: the same μ_i ∝ λ_i / w_i holds outside, and gives a negative μ"),
 }  # fmt: skip
 
+#: r429 H2: λ itself returned on w beyond a GPU's range (a fallback, or the w clipped), said
+#: where the answer is λ (a fallback on some of those cases only is no formula's answer)
+LAM_BEYOND = Mistake(
+    "λ beyond a GPU's range",
+    lambda a, e, g: (
+        f"on these w, {_ws(a[1])}, beyond a GPU's range, you returned λ itself, the affine "
+        f"weights: right only were the three w equal (a fallback, or the w clipped?). "
+        f"{ONLY_RATIOS}"),
+    fits=lambda a, e, g: near(np.asarray(a[0], dtype=float), g) if _beyond(a[1]) else None,
+)  # fmt: skip
+
 #: r421 T2: the words of :func:`_beyond_variants`' slips
 BEYOND = {
     "λ/w overflows": lambda a, e, g: _overflow_words(a),
@@ -294,10 +438,10 @@ BEYOND = {
     "products of w": lambda a, e, g: (
         f"your terms λ_i times the other two w left float64's range (here {_products(a)}): a "
         f"product of two w overflows or underflows long before the w do. {ONLY_RATIOS}"),
+    # r429 H3: what the sum does, not which route used it (np.nan_to_num gives the same 0s)
     "the point's w": lambda a, e, g: (
-        f"you took the point's w as 1 / Σ λ_j / w_j, but Σ λ_j / w_j = {_sum_q(a)} here "
-        f"({OVERFLOW}), so the point's w came out 0 (or NaN) and so did your weights. "
-        f"{ONLY_RATIOS}"),
+        f"your weights are all 0: Σ λ_j / w_j = {_sum_q(a)} here ({OVERFLOW}), and a number "
+        f"divided by it, or times the point's w taken as 1 / Σ λ_j / w_j, is 0. {ONLY_RATIOS}"),
 }  # fmt: skip
 
 #: r421 T2: the one sentence on why ratios of w are the repair (staged: :data:`HINTS`)
@@ -554,7 +698,8 @@ def draw_weights(ax, case, got):
         if wrong:
             artists += difference_note(ax, expected, got, where=(0.02, 0.98))
     elif got is not None:  # r421 T2: NaN or inf (w beyond a GPU's range) drew no bar of yours
-        artists.append(ax.text(0.02, 0.96, f"yours: {vec(got)}: no bars", transform=ax.transAxes,
+        # r429 S1: two lines, clear of the legend on the right ("no bars" ran under it)
+        artists.append(ax.text(0.02, 0.96, f"yours: {vec(got)}:\nno bars", transform=ax.transAxes,
                                ha="left", va="top", fontsize="small", color="#d7301f"))  # fmt: skip
     ax.set_xticks(x, [f"v{k + 1}\nw = {w[k]:.3g}" for k in range(3)], fontsize="x-small")
     ax.set_ylabel("weight")
@@ -567,13 +712,13 @@ def draw_weights(ax, case, got):
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    [*variant_mistakes(_variants, MISTAKES), *PAIRINGS, NUDGED, NUDGED_W,
+    [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED, NUDGED_W,
      *(Mistake(kind, words, fits=_beyond_slip(kind)) for kind, words in BEYOND.items()),
-     *SYMPTOMS],
+     LAM_BEYOND, NAN_BEYOND, *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
-    draw=draw_weights, slow=ONE_POINT, hints=(
+    draw=draw_weights, slow=ONE_POINT, match=match_weights, raised_words=_weights_raised, hints=(
         # r39 03-3: the first wrong try printed the answer the task asks to work out
         ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "
          "weights μ and the three w (a point's screen x is x/w), then turn that around"),
