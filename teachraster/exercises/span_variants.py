@@ -205,14 +205,18 @@ class Pair(frozenset):
     strict: bool = False  # compared as it is, never with float64's ends far out (r413 P8)
 
 
-def pair_columns(x_left, x_right) -> Pair | None:
+def pair_columns(x_left, x_right, wide: bool = False) -> Pair | None:
     """The columns of the crossings x_left, x_right taken as they are (exact for Fractions,
-    float64 for floats), with their pair."""
+    float64 for floats), with their pair; ``wide``: over 10^6 columns held by the pair alone
+    (r424 S1: the bounding box of the 10^12-px triangle, whose ends are vertices), else
+    None there."""
     first, stop = math.ceil(x_left - HALF), math.ceil(x_right - HALF)
-    if stop - first > 10**6:  # r385: a wrong crossing of the leaning edge 10^5 px tall lies
-        out = Pair()  # 2.6·10^7 px out; r424 S1: such a span is held by its ends alone
+    if stop - first > 10**6 and wide:
+        out = Pair()
         out.pair, out.wide = (first, stop), True
         return out
+    if stop - first > 10**6:  # r385: a wrong crossing of the leaning edge 10^5 px tall lies
+        return None  # 2.6·10^7 px out: a span whose float ends no variant matches
     out = Pair(range(first, stop))
     out.pair = (first, stop)
     return out
@@ -301,7 +305,7 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     out["longest edge"] = _longest_edge(xy, row)
     ys, xs = [float(p[1]) for p in xy], [Fraction(float(p[0])) for p in xy]
     inside = min(ys) <= row + 0.5 < max(ys)  # r385 M7 (m28): the bounding box's x-range
-    out["bounding box"] = _cols(min(xs), max(xs)) if inside else frozenset()
+    out["bounding box"] = pair_columns(min(xs), max(xs), wide=True) if inside else frozenset()
     v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
     (x1, y1), (x2, y2), (x3, y3) = v
     y = Fraction(2 * row + 1, 2)

@@ -1471,7 +1471,7 @@ def draw_span(ax, case, got):
         from matplotlib.ticker import MaxNLocator  # text ran into the x-label)
 
         ax.ticklabel_format(useOffset=False, style="plain")
-        ax.xaxis.set_major_locator(MaxNLocator(4, integer=True))
+        ax.xaxis.set_major_locator(MaxNLocator(3 if abs(lo) > 10**7 else 4, integer=True))
         ax.yaxis.set_major_locator(MaxNLocator(4, integer=True))
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
