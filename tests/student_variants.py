@@ -7813,3 +7813,134 @@ DIFFERENT.update({
     "perspective weights scaled by the smallest w among every λ ≠ 0, masked": (
         "perspective_weights", _w429(_SMALLEST_LIVE, True)),
 })  # fmt: skip
+# == r424 (fixex02q, exercise 2.1 span: the reader's variants) ===================================
+_R424_EXACT = """
+def span(xy, row):
+    P = sorted(((READ(float(x)), READ(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = P
+    y = row + HALF
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not (y1 <= y < y3):
+        return 0, 0
+    def cross(a, b):  # multiply first, from the lower end b
+        return b[0] + (y - b[1]) * (a[0] - b[0]) / (a[1] - b[1])
+    xl = cross(P[0], P[2])
+    xs = cross(P[0], P[1]) if y < y2 else cross(P[1], P[2])
+    left, right = (xl, xs) if side > 0 else (xs, xl)
+    return math.ceil(left - HALF), math.ceil(right - HALF)
+"""
+
+
+def _r424_exact(read: str, half: str, prec: int | None = None):
+    """The reader's exact-looking span with the vertices read by ``read`` (a decimal context of
+    ``prec`` digits where given)."""
+    head = "import decimal\nfrom decimal import Decimal\n"
+    source = _R424_EXACT.replace("READ", read).replace("HALF", half)
+    fn = _span_r413(head + source)
+
+    def span(xy, row):  # the context is the thread's: set it where the check calls
+        import decimal
+
+        with decimal.localcontext() as context:
+            context.prec = prec or 28
+            return fn(xy, row)
+
+    return span
+
+
+_R424_LONGDOUBLE = """
+def span(xy, row):  # multiply first in np.longdouble (64-bit mantissa on x86)
+    xy = np.asarray(xy).astype(np.longdouble)
+    TOP, MID, BOT = xy[np.lexsort((xy[:, 0], xy[:, 1]))]
+    v = np.longdouble(row) + np.longdouble(0.5)
+    s = (MID[0]-TOP[0])*(BOT[1]-TOP[1]) - (MID[1]-TOP[1])*(BOT[0]-TOP[0])
+    if s == 0 or not TOP[1] <= v < BOT[1]:
+        return 0, 0
+    cr = lambda a, b: a[0] + (v - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    L = cr(TOP, BOT); S = cr(TOP, MID) if v < MID[1] else cr(MID, BOT)
+    l, r = (L, S) if s > 0 else (S, L)
+    return int(np.ceil(l - 0.5)), int(np.ceil(r - 0.5))
+"""
+_R424_LINE = """
+def span(xy, row):  # integers in 1/256 px, the centre line's ½ not scaled
+    V = sorted(((round(256*float(x)), round(256*float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = V
+    y = 256*row + LINE
+    side = (x2-x1)*(y3-y1) - (y2-y1)*(x3-x1)
+    if side == 0 or not (y1 <= y < y3): return 0, 0
+    def c(p, q): return p[0]*(q[1]-p[1]) + (y-p[1])*(q[0]-p[0]), q[1]-p[1]
+    L = c(V[0], V[2]); S = c(V[0], V[1]) if y < y2 else c(V[1], V[2])
+    ends = (L, S) if side > 0 else (S, L)
+    return tuple(int(-((128*d - n) // (256*d))) for n, d in ends)
+"""
+_R424_NEG_DIVISOR = """
+def span(xy, row):  # every edge from its lower end (d < 0), ceil as (n + d - 1) // d
+    V = sorted(((round(256*float(x)), round(256*float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = V
+    y = 256*row + 128
+    side = (x2-x1)*(y3-y1) - (y2-y1)*(x3-x1)
+    if side == 0 or not (y1 <= y < y3): return 0, 0
+    def c(p, q):
+        d = p[1] - q[1]
+        return q[0]*d + (y - q[1])*(p[0]-q[0]), d
+    L = c(V[0], V[2]); S = c(V[0], V[1]) if y < y2 else c(V[1], V[2])
+    ends = (L, S) if side > 0 else (S, L)
+    return tuple((n - 128*d + 256*d - 1) // (256*d) for n, d in ends)
+"""
+_R424_STOP_PLUS_ONE = _R413_EXACT_TAIL.replace("ROWS", "(y1 <= y < y3)").replace(
+    "math.ceil(right - Fraction(1, 2))", "math.ceil(right - Fraction(1, 2)) + 1"
+)
+_R424_ZERO_AREA = """
+def span(xy, row):  # exact; no area test, a top edge on the line from its two ends
+    P = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy),
+               key=lambda p: (p[1], p[0]))
+    (x1, y1), (x2, y2), (x3, y3) = P
+    y = Fraction(2 * row + 1, 2)
+    if not (y1 <= y <= y3) or y == y3 != y1:
+        return 0, 0
+    if y1 == y2 == y:
+        return math.ceil(min(x1, x2) - Fraction(1, 2)), math.ceil(max(x1, x2) - Fraction(1, 2))
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    cross = lambda a, b: a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+    xl = cross(P[0], P[2])
+    xs = cross(P[0], P[1]) if y < y2 else cross(P[1], P[2])
+    left, right = (xl, xs) if side > 0 else (xs, xl)
+    return math.ceil(left - Fraction(1, 2)), math.ceil(right - Fraction(1, 2))
+"""
+R424 = {
+    "span in fractions of the vertices' str() (shortest repr)": (
+        "span", _r424_exact("(lambda c: Fraction(str(c)))", "Fraction(1, 2)"),
+        "the vertex read through str() moved", "vertices through str()"),
+    "span in decimal at 80 digits of the vertices' str()": (
+        "span", _r424_exact("(lambda c: Decimal(str(c)))", "Decimal('0.5')", prec=80),
+        "the vertex read through str() moved", "vertices through str()"),
+    "span in decimal at its default 28 digits, multiplied first from the lower end": (
+        "span", _r424_exact("Decimal", "Decimal('0.5')", prec=28),
+        "decimal at its default precision, 28 significant digits", "decimal at 28 digits, lower end"),
+    "span with the centre line 256·row + 0.5 (the ½ not scaled)": (
+        "span", _span_r413(_R424_LINE.replace("LINE", "0.5")), "as 256·row + 0.5, the ½ left "
+        "unscaled", "line row + 1/512"),
+    "span with the centre line 256·row + 1 (the ½ not scaled)": (
+        "span", _span_r413(_R424_LINE.replace("LINE", "1")), "as 256·row + 1, the ½ left "
+        "unscaled", "line row + 1/256"),
+    "span in integers, every edge from its lower end, ceil as (n + d − 1)//d": (
+        "span", _span_r413(_R424_NEG_DIVISOR), "such as (n + d − 1)//d with a negative d",
+        "ties reversed"),
+    "span, exact, stop + 1 on every row": (
+        "span", _span_r413("def span(xy, row):\n    P = sorted(((Fraction(float(x)), "
+                           "Fraction(float(y))) for x, y in xy), key=lambda p: p[1])"
+                           + _R424_STOP_PLUS_ONE),
+        "your stop is one column too far right on every row, ties or not", "stop + 1"),
+    "span without the area test, a top edge from its two ends": (
+        "span", _span_r413(_R424_ZERO_AREA), "so the line covers nothing, whatever its ends",
+        "no area test"),
+}  # fmt: skip
+if np.finfo(np.longdouble).nmant > 52:  # x86's 80-bit longdouble (elsewhere it is float64's)
+    R424["span multiplied first in np.longdouble"] = (
+        "span",
+        _span_r413(_R424_LONGDOUBLE),
+        "float80/longdouble holds 64 bits",
+        "longdouble multiply first",
+    )
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R424.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R424.items()})

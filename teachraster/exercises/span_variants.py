@@ -136,6 +136,23 @@ FAR_SIDES = (
      (168931804.4921875, 117029214.25390625)), 45791255),
 )  # fmt: skip
 
+#: r424 P1, P2: far ties (the long edge's crossing exactly on a centre, |c| < 2^30 px) that float64
+#: multiply first is not the only precision to miss. The first has a vertex, y = 609198140.72265625,
+#: whose shortest repr, '609198140.7226562', drops the last digit of its 1/256 step
+#: (``Fraction(str(x))`` or ``Decimal(str(x))`` moves it 5·10^-8 px, and x_r off the centre); the
+#: second's product (y − a_y)(b_x − a_x) needs 65 bits, one more than np.longdouble's (x86's
+#: 80-bit float) 64, so multiplied first in longdouble x_l lands a hair right of its centre
+#: (the reader's long edges and rows; the middle vertex moved 300 px beside the tie, so that
+#: the span is 300 columns, not 2.4·10^7).
+FAR_PRECISE = (
+    ("a vertex whose shortest repr drops a digit", ((-291258562.71875, -56187862.671875),
+     (-144614888.75390625, 150539866.0078125), (180738347.1015625, 609198140.72265625)),
+     150539863),
+    ("a product of 65 bits", ((-381131973.453125, -15026292.703125),
+     (-142320162.24609375, 174588730.0078125), (-50642808.578125, 247380278.171875)),
+     174588727),
+)  # fmt: skip
+
 #: r385 T1: rows with a crossing exactly on a centre where lesson 01's multiply-first crossing
 #: in float64, x = a_x + (y − a_y)(b_x − a_x)/(b_y − a_y), lands a hair right of it (so a
 #: first or a stop one column too far right), on each edge (the long one, the upper and the
@@ -184,15 +201,22 @@ class Pair(frozenset):
     solution that picks x_l by a side test may return the wrong way round (r372 M2)."""
 
     pair: tuple[int, int] | None = None
+    wide: bool = False  # over 10^6 columns: ``pair`` alone, the set empty (r424 S1)
     strict: bool = False  # compared as it is, never with float64's ends far out (r413 P8)
 
 
-def pair_columns(x_left, x_right) -> Pair | None:
+def pair_columns(x_left, x_right, wide: bool = False) -> Pair | None:
     """The columns of the crossings x_left, x_right taken as they are (exact for Fractions,
-    float64 for floats), with their pair."""
+    float64 for floats), with their pair; ``wide``: over 10^6 columns held by the pair alone
+    (r424 S1: the bounding box of the 10^12-px triangle, whose ends are vertices), else
+    None there."""
     first, stop = math.ceil(x_left - HALF), math.ceil(x_right - HALF)
+    if stop - first > 10**6 and wide:
+        out = Pair()
+        out.pair, out.wide = (first, stop), True
+        return out
     if stop - first > 10**6:  # r385: a wrong crossing of the leaning edge 10^5 px tall lies
-        return None  # 2.6·10^7 px out: a span no student's answer can be (it is refused)
+        return None  # 2.6·10^7 px out: a span whose float ends no variant matches
     out = Pair(range(first, stop))
     out.pair = (first, stop)
     return out
@@ -216,8 +240,13 @@ KINDS = (
     "side by given winding", "side by the short edge", "long edge below the split", "lower edge above the split",
     "sorted by x", "vertices on centres", "not sorted", "vertices truncated", "longest edge",
     "bounding box", "side in float64", "vertices rounded", "vertices rounded half up",
-    "vertices on the 1/16 grid", "ceil, negative divisor",
+    "vertices on the 1/16 grid", "ceil, negative divisor", "vertices through str()",
+    "longdouble multiply first", "decimal at 28 digits", "decimal at 28 digits, lower end",
 )  # fmt: skip
+
+#: r424 P1, P2, M2: limited precisions other than float64, each named only where it gives every
+#: answer (``only_whole``: a float64 student also misses these far ties)
+PRECISION_KINDS = KINDS[-4:]
 
 #: r413 H8: vertices moved off the 1/256 grid before computing: kind -> (how, the move).
 MOVES = {
@@ -271,11 +300,12 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     out["vertices truncated"] = exact(np.trunc(np.asarray(xy, dtype=float)), row)
     for kind, (_, move) in MOVES.items():  # r413 H8: rounded, or on a coarser grid
         out[kind] = exact(move(np.asarray(xy, dtype=float)), row)
+    out["vertices through str()"] = _strict(exact(_through_str(xy), row))  # r424 P1
     out["not sorted"] = _unsorted(xy, row)
     out["longest edge"] = _longest_edge(xy, row)
     ys, xs = [float(p[1]) for p in xy], [Fraction(float(p[0])) for p in xy]
     inside = min(ys) <= row + 0.5 < max(ys)  # r385 M7 (m28): the bounding box's x-range
-    out["bounding box"] = _cols(min(xs), max(xs)) if inside else frozenset()
+    out["bounding box"] = pair_columns(min(xs), max(xs), wide=True) if inside else frozenset()
     v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
     (x1, y1), (x2, y2), (x3, y3) = v
     y = Fraction(2 * row + 1, 2)
@@ -313,6 +343,7 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     # r413 H9 (w44): ⌈n/d⌉ as (n + d − 1)//d with d < 0 (an edge taken from its lower end up):
     # one column right where the long edge's crossing is exactly on a centre (every edge's so:
     # "ties reversed", C's int(x + 0.5), the same answers)
+    out.update(_precision_variants(xy, row, long_is_left))  # r424 P2, M2
     if y < y3:  # (the bottom vertex's line has no span to move)
         out["ceil, negative divisor"] = _pick(_past_tie(long_x), short_x, long_is_left)
     if not upper:  # r372 M4 (w43): the long edge taken as the lower short one too
@@ -320,6 +351,68 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     elif y2 != y3:  # r372 H1 (w44): the lower short edge's line above the split too
         out["lower edge above the split"] = _pick(long_x, _at(v[1], v[2], y), long_is_left)
     return out
+
+
+def _strict(cols) -> Pair | None:
+    """Columns matched as they are, never with float64's ends far out (r424: a precision
+    variant is its own rounding)."""
+    if cols is None:
+        return None
+    out = Pair(cols)
+    out.strict = True
+    return out
+
+
+def _through_str(xy) -> np.ndarray:
+    """r424 P1: the vertices as ``Fraction(str(c))`` reads them: the shortest decimal that reads
+    back to the float, which drops a 1/256 step's last digit near 2^29 px."""
+    return np.array([[Fraction(repr(float(c))) for c in p] for p in xy], dtype=object)
+
+
+def _longdouble_crossing(a, b, y):
+    """Multiply first in np.longdouble (r424 P2, W34: a_x + (y − a_y)(b_x − a_x)/(b_y − a_y))."""
+    ld = np.longdouble
+    return ld(a[0]) + (y - ld(a[1])) * (ld(b[0]) - ld(a[0])) / (ld(b[1]) - ld(a[1]))
+
+
+def _decimal_crossing(a, b, y, lower: bool, minus_half: bool = False):
+    """Multiply first in ``decimal`` at its default 28 digits (r424 M2, W41), from the edge's
+    upper end, or from its lower one (``minus_half``: then x − ½, rounded again)."""
+    import decimal
+
+    with decimal.localcontext() as context:
+        context.prec = 28
+        (ax, ay), (bx, by) = ((decimal.Decimal(float(c)) for c in p) for p in (a, b))
+        if lower:
+            (ax, ay), (bx, by) = (bx, by), (ax, ay)
+        line = decimal.Decimal(y.numerator) / y.denominator
+        x = ax + (line - ay) * (bx - ax) / (by - ay)
+        return x - decimal.Decimal("0.5") if minus_half else x
+
+
+def _precision_variants(xy, row: int, long_is_left: bool) -> dict:
+    """r424 P2, M2: the span with both crossings multiplied first in a limited precision:
+    np.longdouble (where it is wider than float64: x86's 80-bit float), decimal at 28 digits
+    (from the edges' upper ends, or their lower ones); the side and the rounding exact."""
+    v = sorted(((float(x), float(y)) for x, y in xy), key=lambda p: p[1])
+    y = Fraction(2 * row + 1, 2)
+    short = (v[0], v[1]) if y < Fraction(v[1][1]) else (v[1], v[2])
+    out = {}
+    if np.finfo(np.longdouble).nmant > 52:
+        ld_y = np.longdouble(row) + np.longdouble(0.5)
+        ends = [int(np.ceil(_longdouble_crossing(a, b, ld_y) - np.longdouble(0.5)))
+                for a, b in ((v[0], v[2]), short)]  # fmt: skip
+        out["longdouble multiply first"] = _strict(_ends_pick(*ends, long_is_left))
+    for kind, lower in (("decimal at 28 digits", False), ("decimal at 28 digits, lower end", True)):
+        ends = [math.ceil(_decimal_crossing(a, b, y, lower, minus_half=True))
+                for a, b in ((v[0], v[2]), short)]  # fmt: skip
+        out[kind] = _strict(_ends_pick(*ends, long_is_left))
+    return out
+
+
+def _ends_pick(long_end: int, short_end: int, long_is_left: bool) -> frozenset | None:
+    first, stop = (long_end, short_end) if long_is_left else (short_end, long_end)
+    return None if stop - first > 10**6 else frozenset(range(first, stop))
 
 
 def _past_tie(x: Fraction) -> Fraction:
@@ -488,7 +581,79 @@ def _order_words(order: str, what: str):
     return words
 
 
+def _str_words(args, expected, got) -> str:
+    """r424 P1: the first coordinate whose shortest repr is not its value, quoted both ways."""
+    import decimal
+
+    moved = next((float(c) for p in np.asarray(args[0], dtype=float) for c in p
+                  if Fraction(repr(float(c))) != Fraction(float(c))), None)  # fmt: skip
+    where = "" if moved is None else (
+        f" (here the vertex coordinate {decimal.Decimal(moved)} became {moved!r}, "
+        f"{float(abs(Fraction(moved) - Fraction(repr(moved)))):.2g} px off, no 1/256 step)"
+    )  # fmt: skip
+    return (
+        f"the vertex read through str() moved{where}: str() (and repr, and print) of a float "
+        "is its shortest decimal that reads back to the same float, not its exact value, so "
+        "Fraction(str(x)) or Decimal(str(x)) moves the vertex, and the crossing off the centre "
+        "it lies on. Use the float's own value: "
+        "Fraction(x), Decimal(x) or x.as_integer_ratio() are exact, and so is round(256·x) as "
+        "an integer"
+    )
+
+
+def _precise_tie(args, crossing):
+    """(exact crossing, the limited one, its edge's product's significant bits) on the first
+    edge of the row whose limited crossing ``crossing(a, b)`` moves its column (None: none)."""
+    xy, row = args
+    v = sorted(((float(x), float(y)) for x, y in xy), key=lambda p: p[1])
+    y = Fraction(2 * row + 1, 2)
+    for a, b in ((v[0], v[2]), (v[0], v[1]), (v[1], v[2])):
+        if not a[1] < y < b[1]:
+            continue
+        fa, fb = (Fraction(a[0]), Fraction(a[1])), (Fraction(b[0]), Fraction(b[1]))
+        exact = fa[0] + (y - fa[1]) * (fb[0] - fa[0]) / (fb[1] - fa[1])
+        value = crossing(a, b)
+        if math.ceil(Fraction(*value.as_integer_ratio()) - HALF) != math.ceil(exact - HALF):
+            n = abs(int(256 * (y - fa[1]) * 256 * (fb[0] - fa[0])))
+            return exact, value, n.bit_length() - (n & -n).bit_length() + 1
+    return None
+
+
+def _longdouble_words(args, expected, got) -> str:
+    y = np.longdouble(args[1]) + np.longdouble(0.5)
+    found = _precise_tie(args, lambda a, b: _longdouble_crossing(a, b, y))
+    bits = np.finfo(np.longdouble).nmant + 1
+    said = "" if found is None else (
+        f" (exactly {float(found[0])}, yours {np.format_float_positional(found[1])}): here the "
+        f"product (y − a_y)(b_x − a_x) needs {found[2]} bits on the 1/256-px grid"
+    )  # fmt: skip
+    return (f"your crossing was computed in np.longdouble, multiplied first, and rounds{said}; "
+            f"float80/longdouble holds {bits} bits, float64 53, and in the stated range the "
+            f"product needs up to 78, so the tie went to the wrong side. {NO_FLOAT_ORDER}")  # fmt: skip
+
+
+def _decimal_words(lower: bool):
+    def words(args, expected, got) -> str:
+        y = Fraction(2 * args[1] + 1, 2)
+        found = _precise_tie(args, lambda a, b: _decimal_crossing(a, b, y, lower))
+        said = "" if found is None else (
+            f" (exactly {float(found[0])}, yours {found[1]}: the product "
+            "(y − a_y)(b_x − a_x), with a 1/65536 fraction, has more digits than 28 here)"
+        )  # fmt: skip
+        return (f"your crossing was computed in decimal at its default precision, 28 "
+                f"significant digits, and rounds{said}, so the tie went to the wrong side. No "
+                "float is involved: decimal rounds every step to its precision. Compute in "
+                "integers (1/256-px units) or fractions.Fraction (or give decimal enough digits "
+                "for every step: its default is not enough in this range)")  # fmt: skip
+
+    return words
+
+
 WORDS = {
+    "vertices through str()": _str_words,
+    "longdouble multiply first": _longdouble_words,
+    "decimal at 28 digits": _decimal_words(False),
+    "decimal at 28 digits, lower end": _decimal_words(True),
     "side in float64": _float_side_words,
     "divide first": _order_words("divide first", "(y − a_y)/(b_y − a_y)"),
     "slope first": _order_words("slope first", "the slope (b_x − a_x)/(b_y − a_y)"),

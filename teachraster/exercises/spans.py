@@ -34,6 +34,7 @@ from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
     FAR_NEAR_TIES,
+    FAR_PRECISE,
     FAR_SIDES,
     FAR_TIES,
     FLOAT64_EXACT_BELOW,
@@ -41,6 +42,7 @@ from .span_variants import (
     NEAR_TIES,
     NO_FLOAT_ORDER,
     PLACED,
+    PRECISION_KINDS,
     TIE_ENDS,
     TIE_ROWS,
     float_crossing,
@@ -114,7 +116,11 @@ EDGE_CASES = (
     ),
     ("a middle vertex on the centre line, slanted edges", ((9.5, 0.5), (0.5, 4.5), (7.25, 9.5)), 4),
     ("a zero-area triangle along a centre line", ((0.5, 1.5), (5.5, 1.5), (3.25, 1.5)), 1),
-)
+    # r424 M1: a top edge 1/256 px below the pixels' top tells y = row + 1/256 (256·row + 1)
+    # from row + 1/512 (256·row + 0.5), which no other row does
+    ("a horizontal top edge 1/256 px below the pixels' top", ((1.25, 3.00390625),
+     (9.75, 3.00390625), (5.5, 8.5)), 3),
+)  # fmt: skip
 
 
 def _edge_cases() -> list[tuple[str, tuple, frozenset]]:
@@ -264,7 +270,12 @@ def _far_cases() -> list[tuple[str, tuple, frozenset]]:
     sides = [(f"far out, {label}, row {row} (a centre on the left edge, near 2^28 px)",
               (np.array(points), row), exact_columns(np.array(points), row))
              for label, points, row in FAR_SIDES]  # fmt: skip
-    return ties + near + sides
+    # r424 P1, P2: a vertex whose shortest repr drops a 1/256 digit (read through str()), and
+    # a product over 64 bits (np.longdouble multiply first)
+    precise = [(f"far out, {label}, row {row} (a crossing exactly on a centre, near 2^29 px)",
+                (np.array(points), row), exact_columns(np.array(points), row))
+               for label, points, row in FAR_PRECISE]  # fmt: skip
+    return ties + near + sides + precise
 
 
 def _far(xy: np.ndarray) -> bool:
@@ -329,14 +340,30 @@ def as_span(value) -> Span:
     if not np.isfinite(arr).all() or (arr != np.round(arr)).any():
         raise WrongAnswerType(f"returned {short(value)}: columns are whole numbers")
     first, stop = (int(v) for v in arr)
-    if stop - first > 10**6:
-        raise WrongAnswerType(f"returned {short(value)}: a span of {stop - first} columns")
+    if stop - first > 10**6:  # r424 S1 (r413 m1): two integers are a span like any other,
+        return _wide(first, stop)  # compared and explained as one, never listed column by column
     out = Span(range(first, stop))
     out.pair = (first, stop)
     return out
 
 
+class _Wide(Span):
+    """A span of over 10^6 columns (first, stop) = ``pair``, held by its ends alone: no case's
+    span is that wide, so it equals no expected answer and no mistake's (its set is empty)."""
+
+    wide = True
+
+
+def _wide(first: int, stop: int) -> Span:
+    out = _Wide()
+    out.pair = (first, stop)
+    return out
+
+
 def same_span(got: frozenset, expected: frozenset, args=None) -> bool:
+    wide = [getattr(s, "wide", False) for s in (got, expected)]
+    if any(wide):  # r424 S1: wide spans by their ends alone
+        return all(wide) and got.pair == expected.pair
     return set(got) == set(expected)
 
 
@@ -347,7 +374,7 @@ def _returned(got) -> tuple[int, int] | None:
 def _constant_span(value) -> str:
     """A span that never changes, in the student's terms (r39 02-3: not ``frozenset()``)."""
     pair = _returned(value)
-    if not value:
+    if not value and not getattr(value, "wide", False):
         shown = f"{pair} " if pair else ""
         return (
             f"your function returns the same empty span {shown}(stop ≤ first: no column) on "
@@ -397,7 +424,7 @@ def _far_float32_words(args, expected, got) -> str:
 def crossings(xy: np.ndarray, y) -> tuple[Fraction, Fraction] | None:
     """Exact x_l <= x_r where the horizontal line at ``y`` meets the closed triangle (None:
     it misses it, or the triangle has zero area)."""
-    v = [(Fraction(float(p[0])), Fraction(float(p[1]))) for p in xy]
+    v = [(_exact(p[0]), _exact(p[1])) for p in xy]
     y = Fraction(y)
     xs = []
     for (ax, ay), (bx, by) in zip(v, v[1:] + v[:1]):
@@ -408,6 +435,12 @@ def crossings(xy: np.ndarray, y) -> tuple[Fraction, Fraction] | None:
             xs.append(ax + (y - ay) * (bx - ax) / (by - ay))
     area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0])
     return (min(xs), max(xs)) if xs and area != 0 else None
+
+
+def _exact(c) -> Fraction:
+    """A coordinate as an exact fraction (a Fraction as it is: r424 P1's vertices read through
+    ``str()``, which the variants move off the float)."""
+    return c if isinstance(c, Fraction) else Fraction(float(c))
 
 
 def _columns(lo, hi) -> frozenset | None:
@@ -425,7 +458,10 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     y = Fraction(2 * row + 1, 2)
     centre = crossings(xy, y)
     half = Fraction(1, 2)
-    bottom = _horizontal_edge(xy, y) == "bottom"
+    # r424 H1: the line through the bottom vertex alone (x_l = x_r) has no span for a rounding
+    # slip either (rows y1 <= y < y3): "stop + 1" there covered a column no student covers
+    lowest = max(Fraction(float(p[1])) for p in xy)
+    bottom = _horizontal_edge(xy, y) == "bottom" or y == lowest
     if centre is not None:
         xl, xr = centre
         lo, hi = math.ceil(xl - half), math.ceil(xr - half)
@@ -471,7 +507,7 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         out["no top edge"] = frozenset() if top else exact_columns(xy, row)
     out.update(_edge_variants(xy, row))
     lines = {kind: row + dy for kind, dy in SHIFTS.items()}
-    lines.update({kind: line(row) for kind, line in SCALED.items()})  # r403/r413 H6
+    lines.update({kind: line(row) for kind, line in {**SCALED, **UNSCALED}.items()})  # r413 H6
     for kind, y_wrong in lines.items():  # the wrong line: the pixels' top, bottom, the next row
         cross = crossings(xy, y_wrong)  # (a bottom edge on that line owns none, r372)
         bottom = _horizontal_edge(xy, float(y_wrong)) == "bottom"
@@ -518,6 +554,8 @@ def _match(got, answer, args) -> bool:
     test's), the same pair (r372 M2: (6, 2) is no "none" that any empty span gives, such as
     the long edge taken twice below the split)."""
     mine, theirs = _returned(got), getattr(answer, "pair", None)
+    if getattr(got, "wide", False) or getattr(answer, "wide", False):  # r424 S1: by its ends
+        return same_span(got, answer)
     if mine is not None and theirs is not None and mine[1] < mine[0]:
         return theirs == mine or _float64_same(got, answer, args)
     return set(got) == set(answer) or _float64_same(got, answer, args)
@@ -555,6 +593,27 @@ SHIFTS = {"row top": Fraction(0), "row − ½": Fraction(-1, 2), "row + 1": Frac
 #: 1/512 px, the line 1024·row + 256 of 1/256-px thinking: y = 2·row + ½ px)
 SCALED = {"line 2·row + ½": lambda row: 2 * row + HALF,
           "line (row + ½)/2": lambda row: Fraction(2 * row + 1, 4)}  # fmt: skip
+
+
+#: r424 M1: the line in 1/256-px units with the ½ left unscaled (256·row + 0.5 or 256·row + 1):
+#: y = row + 1/512 or row + 1/256, just below the pixels' top
+UNSCALED = {"line row + 1/512": lambda row: row + Fraction(1, 512),
+            "line row + 1/256": lambda row: row + Fraction(1, 256)}  # fmt: skip
+
+
+def _unscaled_words(kind: str):
+    """r424 M1: the ½ of the centre line not scaled to 1/256-px units, with the line's y."""
+    steps = {"line row + 1/512": "0.5", "line row + 1/256": "1"}[kind]
+
+    def words(args, expected, got) -> str:
+        row = args[1]
+        return (f"your span is the one of the line y = {kind.removeprefix('line ')} = "
+                f"{_frac(UNSCALED[kind](row))}, just below the pixels' top, not of this row's "
+                f"centre line y = row + ½ = {_frac(row + HALF)}: you wrote the line in "
+                f"1/256-px units as 256·row + {steps}, the ½ left unscaled; in those units ½ px "
+                "is 128 steps, so the centre line is 256·row + 128")  # fmt: skip
+
+    return words
 
 
 def _scaled_words(kind: str):
@@ -662,6 +721,13 @@ def _grid_words(args, expected, got) -> str:
             "⌈(n − 128·d) / (256·d)⌉ with n = 256·x·d in integers, d > 0")  # fmt: skip
 
 
+#: r424 H3: said whatever ends the line's columns came from
+ZERO_AREA = (
+    "you treated the line as a triangle: a triangle of zero area covers nothing, so the line "
+    "covers nothing, whatever its ends: test the area (the edge function of the three "
+    "vertices, side == 0) first, before the crossings"
+)
+
 #: r403 H4: the task promises to name "a short edge kept past the middle vertex"
 NO_SPLIT = (
     "you kept a short edge past the middle vertex: you used the edge from the top vertex to "
@@ -673,9 +739,11 @@ NO_SPLIT = (
 MISTAKES = {
     "ties reversed": "your columns are right wherever no centre lies exactly on a crossing, "
     "but your ties go the wrong way round: a centre exactly on x_l (the left edge) you left out "
-    "and one exactly on x_r (the right edge) you covered (rounding x + ½ down, C's "
-    "int(x + 0.5)?): under the top-left rule, which of the two edges owns a centre that lies on "
-    "it?",
+    "and one exactly on x_r (the right edge) you covered: rounding x + ½ down (C's "
+    "int(x + 0.5)?), or an integer ceiling that is ⌊n/d⌋ + 1 where n/d is whole, such as "
+    "(n + d − 1)//d with a negative d (an edge taken from its lower end up: −(−n // d) is the "
+    "ceiling for either sign)? Under the top-left rule, which of the two edges owns a centre "
+    "that lies on it?",
     "corners": "you rounded the crossings to columns as if pixel col were sampled at x = col "
     "(its left edge): its centre is at x = col + ½, so the first column is ⌈x_l − ½⌉",
     "right inclusive": "you covered the centre that lies exactly on the right edge: by the "
@@ -698,6 +766,7 @@ MISTAKES = {
     "row + 1.5": "you intersected the edges with y = row + 1.5, the centres of the row below, "
     "not with this row's centre line, y = row + ½",
     **{kind: _scaled_words(kind) for kind in SCALED},
+    **{kind: _unscaled_words(kind) for kind in UNSCALED},
     "no top edge": "you left out the centres on a horizontal top edge that runs along the "
     "centre line (a bottom edge you handled right): a top edge, with the triangle below it, "
     "owns its centres",
@@ -706,8 +775,9 @@ MISTAKES = {
     "horizontal reversed": "your rule for a horizontal edge on the centre line is the wrong "
     "way round: a top edge (the triangle below it) owns its centres, a bottom edge (the "
     "triangle above it) owns none",
-    "stop + 1": "your stop is one column too far right: stop is the first column *not* "
-    "covered, one past the last covered one (the first end, first, is right)",
+    "stop + 1": "your stop is one column too far right on every row, ties or not (not only "
+    "where a centre lies on x_r): stop is the first column *not* covered, one past the last "
+    "covered one, with no + 1 after it (the first end, first, is right)",
     "last": "you returned (first, last), the last covered column as the second number: it is "
     "stop, the first column *not* covered (last + 1)",
     # r372 M1, M2: said only where it gives every answer (183 of 200 right was told it)
@@ -737,8 +807,7 @@ MISTAKES = {
     "strict": "you took a crossing only strictly between an edge's ends (min < y < max): "
     "where the centre line passes through a vertex, both edges that meet there end on it and "
     "a strict test drops its crossing from both; an edge includes its ends (≤)",
-    "no area test": "you treated the line as a triangle: a triangle of zero area covers "
-    "nothing, so test the area (the edge function of the three vertices) before the crossings",
+    "no area test": ZERO_AREA,
     "no split": NO_SPLIT,
     "no split, side test": NO_SPLIT,
     "floor(x − ½)": "you rounded x − ½ down at both ends (math.floor): that gives the column "
@@ -1267,7 +1336,15 @@ def _int64_words(args, expected, got) -> str:
             "fractions.Fraction")  # fmt: skip
 
 
+def _zero_area_fits(args, expected, got) -> bool:
+    """r424 H3: a zero-area triangle, and columns covered (whatever the ends: no area test)."""
+    return winding(args[0]) == "zero area" and len(got) > 0
+
+
 SYMPTOMS = (
+    Mistake(
+        "no area test", lambda args, expected, got: ZERO_AREA, fits=_zero_area_fits, symptom=True
+    ),  # fmt: skip
     # r413 H7: only where the code reads int64 (any wrong crossing far out is far off too)
     Mistake("int64 overflow", _int64_words, fits=_int64_fits, reads="int64"),
     # r355 C3: named only where float32 explains every failure: a float64 (first, last) or
@@ -1326,6 +1403,9 @@ def _vertices(xy) -> str:
 
 
 def _span_words(cols: frozenset) -> str:
+    if getattr(cols, "wide", False):
+        first, stop = cols.pair
+        return f"columns {first} to {stop - 1}, {stop - first} of them"
     if not cols:
         return "none"
     lo, hi = min(cols), max(cols)
@@ -1391,7 +1471,7 @@ def draw_span(ax, case, got):
         from matplotlib.ticker import MaxNLocator  # text ran into the x-label)
 
         ax.ticklabel_format(useOffset=False, style="plain")
-        ax.xaxis.set_major_locator(MaxNLocator(4, integer=True))
+        ax.xaxis.set_major_locator(MaxNLocator(3 if abs(lo) > 10**7 else 4, integer=True))
         ax.yaxis.set_major_locator(MaxNLocator(4, integer=True))
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its centres on y = {num(y)}", fontsize="small")
@@ -1457,12 +1537,15 @@ def _mistakes() -> list[Mistake]:
             must = _changes(m.gives, m.kind in LAST_STEP_KINDS)
             if m.kind in FLOAT_ORDER_KINDS:  # r413 M10: and a near tie it gets right fails
                 must = _or_near_tie(must)
+            if m.kind in PRECISION_KINDS:  # r424: every failing answer (float64's far ties
+                must = _every  # fail where these precisions are right: no say there)
             m = dataclasses.replace(m, must_fit=must)
             # r372 M4: and only where it contradicts no passing answer
             m = dataclasses.replace(m, consistent=True)
         elif m.fits is not None and m.kind not in ("float64 crossing", "int64 overflow"):
             m = dataclasses.replace(m, fits=_near_only(m.fits))
-        whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped")
+        whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped",
+                           *PRECISION_KINDS)  # fmt: skip
         out.append(dataclasses.replace(m, only_whole=True) if whole else m)
     return out
 
@@ -1470,6 +1553,10 @@ def _mistakes() -> list[Mistake]:
 #: r413 M10: float orders whose crossing is exact on the near ties where it gives the answer:
 #: a near tie that fails where it does not is a tie rule's mistake (w36), not the order's
 FLOAT_ORDER_KINDS = ("divide first", "slope first")
+
+
+def _every(args, expected, got) -> bool:
+    return True
 
 
 def _or_near_tie(must):
