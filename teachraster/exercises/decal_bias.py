@@ -481,6 +481,10 @@ HINTS = (
         r"object \1 in front, drawn before the decal, still hides it)",
     ),
     (
+        re.compile(r"\(not enough: \S+ steps?, where the decal can lie [^)]*\)"),
+        "(not enough: work out how far behind the wall the decal can lie)",
+    ),
+    (
         re.compile(
             r"\(too much: the decal at its nearest, \|o\| \+ m in front of the wall, is now "
             r"strictly nearer than the object (\S+) in front and shows through it\)"
@@ -488,10 +492,6 @@ HINTS = (
         r"(too much: the decal shows through the object \1 in front)",
     ),
     ("room − m < r + m, no offset does both", "no offset does both here"),
-    (
-        re.compile(r"\(not enough: \S+ steps?, where the decal can lie [^)]*\)"),
-        "(not enough: work out how far behind the wall the decal can lie)",
-    ),
     (
         ". The decal's depth can lie up to m (one pixel's depth slope: the task's budget, not the "
         "lesson's on-plane rounding) behind the wall's and must round strictly nearer: |o| ≥ r + m",
