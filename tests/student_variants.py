@@ -7456,3 +7456,24 @@ WRONG["reverse-Z worst at z_max only"] = (
     "you compared it with came out finer (float64's np.spacing at a crossing, 2^29 times finer "
     "than float32's step?). For float32 reverse-Z the worst step is at z",
 )
+
+
+def _r425_all_float32(z_min, z_max, near, far):
+    """r425 C4: the closed form in float32 arithmetic throughout (up to 4.8 float32 steps off)."""
+    f32 = np.float32
+    z_min, z_max, near, far = f32(z_min), f32(z_max), f32(near), f32(far)
+    k = f32(1) - near / far
+    d = lambda z: (near / z - near / far) / k  # noqa: E731
+    best = f32(np.spacing(d(z_max))) * k * z_max * z_max / near
+    e = int(np.floor(np.log2(d(z_max)))) + 1
+    while (ze := near / (f32(2.0**e) * k + near / far)) >= z_min:
+        if ze <= z_max:
+            best = max(best, f32(2.0 ** (e - 23)) * k * ze * ze / near)
+        e += 1
+    return best
+
+
+DIFFERENT["reverse-Z worst in float32 arithmetic throughout (r425 C4)"] = (
+    "reverse_z_worst",
+    _r425_all_float32,
+)

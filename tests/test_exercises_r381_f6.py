@@ -95,7 +95,7 @@ def test_the_task_states_the_band_its_check_allows():
     assert rzw.BELOW == rzw.ABOVE, (rzw.BELOW, rzw.ABOVE)
     assert f"within 10^{int(np.log10(rzw.BELOW))} (relative) of the coarsest Δz either" in text
     assert "seldom" not in text and "no search" not in text and "% above" not in text, text
-    assert rzw.FLOAT32_STEPS == 2 and "two of float32's\nsteps either way" in text, text
+    assert rzw.FLOAT32_STEPS == 8 and "eight of\nfloat32's steps either way" in text, text
     assert ids.index("reverse_z_gap_check") < ids.index("reverse_z_worst_task")
     assert "predict" in text and text.index("predict") < text.index("Write `reverse_z_worst")
 
