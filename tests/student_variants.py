@@ -7944,3 +7944,222 @@ if np.finfo(np.longdouble).nmant > 52:  # x86's 80-bit longdouble (elsewhere it 
     )
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R424.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R424.items()})
+
+
+# -- r425 (exercise 5, a fresh reader): 5.2b graded to 1e-8 either way (a refined search lands
+# on float32's rounded maximum, over the limit), z_min on a crossing, misnamed and half-named
+# slips of 5.2b, 5.2 and 5.4.
+def _r425_zoom(reverse_z_worst_gap=None, count=201, rounds=25):
+    """A zoom search over 5.2 (r425 w_S1): ``count`` samples, then around the best, ``rounds``
+    times."""
+
+    def reverse_z_worst(z_min, z_max, near, far):
+        a, b, best = z_min, z_max, 0.0
+        for _ in range(rounds):
+            zs = np.linspace(a, b, count)
+            gs = [_rs.reverse_z_gap(z, near, far) for z in zs]
+            i = int(np.argmax(gs))
+            best, h = max(best, gs[i]), zs[1] - zs[0]
+            a, b = max(z_min, zs[i] - h), min(z_max, zs[i] + h)
+        return best
+
+    return reverse_z_worst
+
+
+def _r425_jump(z_min, z_max, near, far):
+    """10^5 samples, then bisection on where float32's step of d changes (r425 w_S3)."""
+    zs, k = np.linspace(z_min, z_max, 100001), 1 - near / far
+    d = lambda z: (near / z - near / far) / k  # noqa: E731
+    st = np.spacing(d(zs).astype(np.float32)).astype(float)
+    g = st * k * zs**2 / near
+    i = int(np.argmax(g))
+    if i == len(zs) - 1:
+        return float(g[i])
+    lo, hi = zs[i], zs[i + 1]
+    for _ in range(80):
+        m = 0.5 * (lo + hi)
+        lo, hi = (m, hi) if np.spacing(np.float32(d(m))) == st[i] else (lo, m)
+    return float(st[i] * k * lo * lo / near)
+
+
+def _r425_crossings(cross, step_at, slope_k=True, z_min_too=True, at_max=None):
+    """z_max's Δz (``at_max``, else 5.2's) and each crossing's z = ``cross(e, n, f)`` in the
+    range (z_min itself with ``z_min_too``), its step ``step_at(e, d)``, the slope with
+    1 − n/f (``slope_k``)."""
+
+    def reverse_z_worst(z_min, z_max, near, far):
+        k = 1 - near / far if slope_k else 1.0
+        best = (at_max or _rs.reverse_z_gap)(z_max, near, far)
+        for e in range(-160, 2):
+            z = cross(e, near, far)
+            if (z_min <= z if z_min_too else z_min < z) and z <= z_max:
+                d = (near / z - near / far) / (1 - near / far)
+                best = max(best, step_at(e, d) * k * z * z / near)
+        return best
+
+    return reverse_z_worst
+
+
+_R425_CROSS = lambda e, n, f: n / (2.0**e * (1 - n / f) + n / f)  # noqa: E731
+_R425_STEP = lambda e, d: 2.0 ** (e - 23)  # noqa: E731
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R425 = {
+    "reverse-Z worst by a zoom search, 201 samples 25 times (r425 S1)": (
+        "reverse_z_worst", _r425_zoom(), "A search refined until it finds the jump lands there",
+        "search missed the edge"),
+    "reverse-Z worst, 10^5 samples then bisection on float32's step jump (r425 S3)": (
+        "reverse_z_worst", _r425_jump, "the Δz reverse_z_gap gives at z = 450.33259",
+        "search missed the edge"),
+    "reverse-Z worst skipping a crossing on z_min (z_min < z_e, r425 W18)": (
+        "reverse_z_worst", _r425_crossings(_R425_CROSS, _R425_STEP, z_min_too=False),
+        "z_min = 2 lies on a crossing: d there is exactly 2^-2", "z_min's crossing skipped"),
+    "reverse-Z worst without 1 - n/f in d and its slope (r425 W22)": (
+        "reverse_z_worst", _r425_crossings(
+            lambda e, n, f: n / (2.0**e + n / f), _R425_STEP, slope_k=False,
+            at_max=lambda z, n, f: float(np.spacing(np.float32(n / z - n / f))) * z * z / n),
+        "you dropped the factor 1 − n/f from d and from its slope", "1 - n/f dropped"),
+    "reverse-Z worst with float64's step at each crossing (r425 W12b)": (
+        "reverse_z_worst", _r425_crossings(_R425_CROSS, lambda e, d: float(np.spacing(d))),
+        "or the depths you compared it with came out finer (float64's np.spacing at a crossing, "
+        "2^29 times finer than float32's step?)", "z_max only"),
+    "reverse-Z worst with crossings at n/2^e (r425 W10)": (
+        "reverse_z_worst", _r425_crossings(lambda e, n, f: n / 2.0**e, _R425_STEP,
+                                           slope_k=False),
+        "you put d's crossings at z = n/2^e", "crossings at n/2^e"),
+    "reverse-Z worst, float64's step at z_max only (r425 W12)": (
+        "reverse_z_worst", lambda a, b, n, f: float(np.spacing((n / b - n / f) / (1 - n / f)))
+        * (1 - n / f) * b * b / n, "you took float64's step at d (np.spacing of a float64): the "
+        "buffer is float32", "5.2's slip"),
+    "reverse-Z worst, the bound 2^-23 f/4 unclamped (r425 W17)": (
+        "reverse_z_worst", lambda a, b, n, f: 2.0**-23 * f / 4,
+        "at its peak over every z, z = f/2", "bound 2^-23 unclamped"),
+    "reverse-Z worst, 5.2 with near and far swapped at z_max (r425 W15)": (
+        "reverse_z_worst", lambda a, b, n, f: _rs.reverse_z_gap(b, f, n),
+        "you swapped n and f in d = (n/z − n/f)/(1 − n/f): with them swapped it gives ordinary "
+        "window depth z_win (far depths near 1, where float32's step", "5.2's slip"),
+    "reverse-Z worst, the right answer with a 0.5 % margin": (
+        "reverse_z_worst", lambda a, b, n, f: 1.005 * _rs.reverse_z_worst(a, b, n, f),
+        "Did you round it up, or add a margin?", "over the coarsest"),
+    "reverse-Z gap with f for n in the slope (r425 rg_W10)": (
+        "reverse_z_gap", lambda z, n, f: float(np.spacing(np.float32(
+            (n / z - n / f) / (1 - n / f)))) * (1 - n / f) * z * z / f,
+        "you divided by f where d's slope has n", "far for near in the slope"),
+    "depth set-up quoting Δz 0 for unorm24 (r425 ds_W7)": (
+        "depth_setup", lambda z, gap, far, nearest: ("unorm24", nearest, 0.0),
+        "unorm24 resolves Δz = 0.000298 (the check accepts 0.000295 to 0.000301", "dz"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R425.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R425.items()})
+
+
+def _r425_frexp_bisect(z_min, z_max, near, far):
+    """r425 C5: each crossing found by float64 bisection on d(z) ≥ 2^e."""
+    k = 1 - near / far
+    d = lambda z: (near / z - near / far) / k  # noqa: E731
+    best, e = _rs.reverse_z_gap(z_max, near, far), math.frexp(d(z_max))[1]
+    while d(z_min) >= 2.0**e:
+        lo, hi = z_min, z_max
+        if d(hi) < 2.0**e:
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if d(mid) >= 2.0**e else (lo, mid)
+            best = max(best, 2.0 ** (e - 23) * k * lo * lo / near)
+        e += 1
+    return best
+
+
+def _r425_gap_f32(z, near, far):
+    """r425 C9: 5.2 in float32 throughout."""
+    f = np.float32
+    z, near, far = f(z), f(near), f(far)
+    d = (near / z - near / far) / (f(1) - near / far)
+    return np.spacing(d) * (f(1) - near / far) * z * z / near
+
+
+DIFFERENT.update({
+    "reverse-Z worst, each crossing by float64 bisection (r425 C5)": (
+        "reverse_z_worst", _r425_frexp_bisect),
+    "reverse-Z worst on a float32 5.2 at z_max, the closed form at crossings (r425 C9)": (
+        "reverse_z_worst", _r425_crossings(_R425_CROSS, _R425_STEP, at_max=_r425_gap_f32)),
+    "reverse-Z worst with the step 2^-23 d(z_e) at each crossing (r425 C2)": (
+        "reverse_z_worst", _r425_crossings(
+            _R425_CROSS, lambda e, d: 2.0**-23 * d)),
+})  # fmt: skip
+
+
+# r425 F2: a crossing on z_min counts (the task's rule, now graded on (2, 2.2, 1, 3)). The
+# r381/r404 helpers found crossings in (z_min, z_max], so each of their variants, right or
+# wrong, carried W18's slip as well on that case: rebound here (looked up when called) to take
+# [z_min, z_max]; W18's own slip is R425's.
+def _rz_edges(z_min, z_max, near, far):  # noqa: F811
+    """(e, z) where d(z) = 2^e inside [z_min, z_max], as a student finds them."""
+    top, low = (
+        math.floor(math.log2(_rzd(z_min, near, far))),
+        math.ceil(math.log2(_rzd(z_max, near, far))),
+    )
+    out = []
+    for e in range(low, top + 1):
+        z = near / (2.0**e * (1 - near / far) + near / far)
+        if z_min <= z <= z_max:
+            out.append((e, z))
+    return out
+
+
+def _r404_crossings(z_min, z_max, near, far, skip=0, z_power=1, infinite=False):  # noqa: F811
+    """(e, z) at each depth in [z_min, z_max] where d (n/z: ``infinite``) is 2^e, from the one
+    nearest z_max (``skip`` of them skipped)."""
+    d = (lambda z: near / z) if infinite else (lambda z: _r404_d(z, near, far))
+    low, top = int(np.ceil(np.log2(d(z_max)))) + skip, int(np.floor(np.log2(d(z_min))))
+    out = []
+    for e in range(low, top + 1):
+        z = near / 2.0**e if infinite else near / (2.0**e * (1 - near / far) + near / far)
+        if z_min <= z <= z_max:
+            out.append((e, z))
+    return out
+
+
+def _r425_by_halving(z_min, z_max, near, far):
+    """:func:`_worst_by_halving` with z_min on a crossing counted (z < z_min stops)."""
+    _, k = np.frexp(_rzd(z_max, near, far))
+    worst = 2.0 ** (k - 24) * (1 - near / far) * z_max * z_max / near
+    while True:
+        z = near / (2.0**k * (1 - near / far) + near / far)
+        if z < z_min:
+            return worst
+        worst = max(worst, 2.0 ** (k - 23) * (1 - near / far) * z * z / near)
+        k += 1
+
+
+DIFFERENT["reverse-Z worst, one binade at a time with frexp"] = (
+    "reverse_z_worst",
+    _r425_by_halving,
+)
+# r425 F3: "z_max only" hedged (float64's step at the crossings gives the same answer)
+WRONG["reverse-Z worst at z_max only"] = (
+    *WRONG["reverse-Z worst at z_max only"][:2],
+    "that is z_max's own Δz on every case: you evaluated the gap at z_max only, or the depths "
+    "you compared it with came out finer (float64's np.spacing at a crossing, 2^29 times finer "
+    "than float32's step?). For float32 reverse-Z the worst step is at z",
+)
+
+
+def _r425_all_float32(z_min, z_max, near, far):
+    """r425 C4: the closed form in float32 arithmetic throughout (up to 4.8 float32 steps off)."""
+    f32 = np.float32
+    z_min, z_max, near, far = f32(z_min), f32(z_max), f32(near), f32(far)
+    k = f32(1) - near / far
+    d = lambda z: (near / z - near / far) / k  # noqa: E731
+    best = f32(np.spacing(d(z_max))) * k * z_max * z_max / near
+    e = int(np.floor(np.log2(d(z_max)))) + 1
+    while (ze := near / (f32(2.0**e) * k + near / far)) >= z_min:
+        if ze <= z_max:
+            best = max(best, f32(2.0 ** (e - 23)) * k * ze * ze / near)
+        e += 1
+    return best
+
+
+DIFFERENT["reverse-Z worst in float32 arithmetic throughout (r425 C4)"] = (
+    "reverse_z_worst",
+    _r425_all_float32,
+)

@@ -40,7 +40,7 @@ def test_the_band_is_float64s_or_float32s_own_rounding():
         assert rzw.same_worst(sol.reverse_z_worst(*s), e), s
         assert rzw.same_worst(np.float32(e), e) and rzw.same_worst(float(np.float32(e)), e), s
         assert not rzw.same_worst(e * (1 - 3e-8), e), s
-        below = e - 3 * float(np.spacing(np.float32(e)))
+        below = e - (rzw.FLOAT32_STEPS + 1) * float(np.spacing(np.float32(e)))
         assert not rzw.same_worst(np.float32(below), e), s
 
 

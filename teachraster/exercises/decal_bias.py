@@ -470,16 +470,38 @@ def _rule(args, expected, got) -> str:
 #: quantity the task derives, and the bounds and step counts that give it away.
 HINTS = (
     (re.compile(r"m = \S+ \(\S+ steps?\)"), "m (yours to work out)"),
-    (re.compile(r"from \S+ \(r \+ m\) to \S+ \(room − m, where"), "from r + m to room − m (where"),
+    # r425 F6: the two-sided rule, room's value and the NaN test held back with m: until two
+    # answers have failed the words say only which condition fails
+    (
+        re.compile(
+            r"the decal needs \|o\| from \S+ \(r \+ m\) to \S+ \(room − m, where room = "
+            r"\S+: the object (\S+) in front, drawn before the decal, must still hide it\)"
+        ),
+        r"the decal needs an offset (big enough to win against the wall, small enough that the "
+        r"object \1 in front, drawn before the decal, still hides it)",
+    ),
     (
         re.compile(r"\(not enough: \S+ steps?, where the decal can lie [^)]*\)"),
         "(not enough: work out how far behind the wall the decal can lie)",
     ),
     (
+        re.compile(
+            r"\(too much: the decal at its nearest, \|o\| \+ m in front of the wall, is now "
+            r"strictly nearer than the object (\S+) in front and shows through it\)"
+        ),
+        r"(too much: the decal shows through the object \1 in front)",
+    ),
+    ("room − m < r + m, no offset does both", "no offset does both here"),
+    (
         ". The decal's depth can lie up to m (one pixel's depth slope: the task's budget, not the "
         "lesson's on-plane rounding) behind the wall's and must round strictly nearer: |o| ≥ r + m",
         ". Work out the window depth's change per pixel on the tilted wall, and how far behind "
         "the wall the decal can then be",
+    ),
+    (
+        ", and at most room − m, so that the object in front still hides it (NaN when room − m "
+        "< r + m)",
+        ". Then how much is too much, with the object in front, and when does no offset do both?",
     ),
 )
 
@@ -555,11 +577,13 @@ def draw_offset(ax, case, got):
     space = room(args[0], args[3], args[4], args[7])
     ok = got is not None and bool(np.isfinite(got)) and same_offset(got, expected, args)
     full = tries.hints_spent("decal_bias") or ok
-    artists = [ax.axvline(space / r, color="#555555", label=f"the object: room = "
-                          f"{num(space / r)} steps")]  # fmt: skip
+    # r425 F6: room's value held back with m, as the words hold it
+    said = f": room = {num(space / r)} steps" if full else " in front"
+    artists = [ax.axvline(space / r, color="#555555", label=f"the object{said}")]
     xs = [0.0, space / r]
     if not full:
-        artists += ax.plot([], [], " ", label="accepted: r + m to room − m (m yours to work out)")
+        artists += ax.plot([], [], " ", label="accepted: enough to win against the wall (m yours "
+                           "to work out), not so much that the decal shows through the object")  # fmt: skip
     elif impossible(args):
         artists.append(ax.axvline(hi / r, color="#2b7bba", linestyle="-.", label=f"room − m = "
                                   f"{num(hi / r, lo / r)} steps < r + m: no offset fits (NaN)"))  # fmt: skip
@@ -576,7 +600,8 @@ def draw_offset(ax, case, got):
     if got is not None and np.isfinite(got) and got != 0:
         x = abs(got) / r
         wrong_sign = (got > 0) != bool(args[6])
-        label = f"yours {num(got / r)} steps" + (": wrong sign" if wrong_sign else "") + ", as |o|"
+        # r425 F8: "yours -1 steps, as |o|" called a negative number an absolute value
+        label = f"|yours| = {num(abs(got) / r)} steps" + (" (wrong sign)" if wrong_sign else "")
         artists.append(ax.axvline(x, color="#7fbf7f" if ok else "#d7301f", linestyle="--",
                                   lw=2, label=label))  # fmt: skip
         xs.append(x)

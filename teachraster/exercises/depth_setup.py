@@ -347,8 +347,12 @@ def _dz_words(what):
         said_what = what(got) if callable(what) else what
         shown = REVERSE if fmt == NEITHER else fmt
         lo, hi = _resolves(shown, z, n, far) if 0 < n < z else (math.nan, math.nan)
-        # told apart (r374: "0.022 to 0.022")
-        said = num(lo) if fmt == UNORM else f"{num(lo, hi)} to {num(hi, lo)}"
+        # told apart (r374: "0.022 to 0.022"); unorm24's own Δz, then the window accepted (r425
+        # F5: its lower end, 0.000295, was printed as its Δz beside 0.000298)
+        said = f"{num(lo, hi)} to {num(hi, lo)}"
+        if fmt == UNORM:
+            dz = resolution(z, n, far, 24)
+            said = f"{num(dz, lo)} (the check accepts {said}, {SLACK * 100:g} % either way)"
         return (f": {said_what}. With your near plane {num(n)}, {shown} resolves Δz = {said} at z"
                 + ("; for \"neither\" give reverse-Z's numbers, the better of the two"
                    if fmt == NEITHER else ""))  # fmt: skip

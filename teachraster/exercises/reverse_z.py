@@ -182,6 +182,8 @@ def gap_variants(z, near, far) -> dict[str, float]:
         # r374 F5: the slope's 1 − n/f on the wrong side of the fraction, or taken twice
         "1 - n/f twice": step * (1 - near / far) / slope,
         "1 - n/f inverted": step / slope / (1 - near / far) ** 2,
+        # r425 F4: f where the slope has n (step (1 − n/f) z²/f)
+        "far for near in the slope": step * near / far / slope,
     }
 
 
@@ -271,6 +273,9 @@ MISTAKES = {
     "|dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n, with 1 − n/f once",
     "1 - n/f inverted": "your slope has 1 − n/f on the wrong side: d = (n/z − n/f)/(1 − n/f) "
     "divides by it, so |dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n",
+    "far for near in the slope": "you divided by f where d's slope has n: d = (n/z − n/f)/(1 − "
+    "n/f) changes by |dd/dz| = n/((1 − n/f) z²), so Δz = step · (1 − n/f) z²/n, f/n "
+    "times yours",
 }
 
 

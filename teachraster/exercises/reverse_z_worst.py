@@ -8,17 +8,21 @@ buffer's Δz, step (f − n) z²/(f n), grows with z, so its worst depth is z_ma
 reverse-Z's is a sawtooth: within a binade of d = (n/z − n/f)/(1 − n/f), [2^e, 2^(e+1)), the
 step is fixed, 2^(e−23), and Δz = step / |dd/dz| grows like z²; where d falls below 2^e the
 step halves. So the coarsest depth is z_max or the limit just nearer than a depth z_e where
-d = 2^e, whose Δz there is 2^(e−23) (1 − n/f) z_e²/n = 2^-23 z_e (1 − z_e/f) (d over its
+the exact d = 2^e, whose Δz there is 2^(e−23) (1 − n/f) z_e²/n = 2^-23 z_e (1 − z_e/f) (d over its
 slope is z (1 − z/f), largest at f/2). Evaluated at z_max alone it is up to 4 times too fine
 on lesson 05b's planes (z from 100 to 900: the worst depth is 450.3, where d = 2^-13).
 
 Expected answers: :func:`expected_worst`, the largest of z_max's Δz (its binade's step) and
 each such edge's inside the range; :func:`brute_worst` (float32's step above d at 200,001
-depths) lies within 2e-5 below it on every fixed case (tests). An answer passes between
-:data:`BELOW` under it (float64's accuracy for the closed form, with room; no search over
-sampled depths the time limit allows comes that close: r417 F1), or for an answer float32
-holds :data:`FLOAT32_STEPS` of its steps, and :data:`SLACK` over it (a gap rounded up is
-still one the buffer resolves at every depth).
+depths) lies within 2e-5 below it on every fixed case (tests). Δz is taken by the binade of
+the *exact* d (r425 F1): d rounded to float32 still rounds up to 2^e a hair farther than z_e,
+down to d = 2^e (1 − 2^-25) (:func:`rounded_edge`), where reverse_z_gap's Δz is 2^-24 (1 − z/f)
+(relative) coarser: a search refined until it finds the jump lands there. An answer passes
+from :data:`BELOW` under the limit to :data:`ABOVE` over it (float64's accuracy for the closed
+form, with room: a uniform search falls short, a refined one lands on that rounded maximum,
+3e-8 to 6e-8 over wherever z_e < f/2: r417 F1, r425 F1), or for an answer float32 holds
+:data:`FLOAT32_STEPS` of its steps either way (its own rounding at each of a few operations,
+wider than that difference: there the check cannot tell a search from the closed form).
 """
 
 from __future__ import annotations
@@ -57,10 +61,17 @@ SETTINGS = (
     # the worst crossing of the last, d computed in float32 rounds to just under 2^-4
     (1.77, 24.7, 0.000138, 25.0), (406.0, 14200.0, 2.79, 15100.0), (258.0, 5340.0, 70.0, 5410.0),
     (300.0, 505.0, 40.8, 549.0),
+    # r425 F2: z_min stores d = 1/4 exactly (z_min = 2.0 and d = 0.25 exactly in float64 too):
+    # its own Δz, the binade above, is the coarsest; `z_min < z_e` skips it (39 % short)
+    (2.0, 2.2, 1.0, 3.0),
 )  # fmt: skip
 
-#: How much coarser than the coarsest Δz an answer may be (rounded up, it is still resolved).
+#: How much coarser than a slip's Δz an answer may be and still be that slip (5.2's slips).
 SLACK = 0.01
+#: How much coarser than the coarsest Δz an answer may be (relative): float64's accuracy, with
+#: room (r425 F1: at 1 %, a search refined onto the last depth whose float32 d rounds up to 2^e,
+#: 2^-24 (1 − z_e/f) over, passed every case; at 1e-8 it fails wherever z_e < 0.83 f).
+ABOVE = 1e-8
 #: How much finer (relative). The answer is a closed form (a power of two times a few
 #: products): float64 gives it to a few units of 2^-52, 1e-15. A search over sampled depths
 #: falls short of the limit at a crossing z_e by about 2 δz/z_e, δz its spacing there (r417
@@ -68,10 +79,12 @@ SLACK = 0.01
 #: search of 10^7 depths (numpy, about 0.1 s of CPU a case) fails most cases, and 4·10^7
 #: already run past the check's 2 s of CPU a case (tests).
 BELOW = 1e-8
-#: A float32 answer holds the coarsest Δz only to its own rounding, 2^-24 relative: it may
-#: lie this many float32 steps under it (a float32 reverse_z_gap at the crossing: the slope
-#: and the division each rounded once).
-FLOAT32_STEPS = 2
+#: A float32 answer holds the coarsest Δz only to its own rounding, 2^-24 relative per
+#: operation: it may lie this many float32 steps under or over it (r425: the closed form computed
+#: in float32 throughout, z_e's division, its square and the products each rounded, lay up to
+#: 4.8 steps off over 20,000 drawn ranges, and 2.3 under on a fixed one; at 2 it failed a few
+#: drawn cases in a hundred).
+FLOAT32_STEPS = 8
 
 
 def binade_step(d: float) -> float:
@@ -179,24 +192,52 @@ def as_gap(value):
     return as_number(value)
 
 
-def lowest(expected, got=None) -> float:
-    """The smallest answer accepted: :data:`BELOW` under the coarsest Δz, or for an answer
-    float32 holds :data:`FLOAT32_STEPS` of float32's steps there (its rounding, no more): a
-    float32 answer, or one made float (``float(step / slope)`` with a float32 step divides in
-    float32, and is right)."""
-    low = expected * (1 - BELOW)
+def _float32_held(got) -> bool:
+    """A float32 answer, or one made float (``float(step / slope)`` with a float32 step
+    divides in float32, and is right)."""
     with np.errstate(over="ignore"):  # a huge answer: no float32 holds it
         held = got is not None and np.isfinite(got) and float(np.float32(got)) == float(got)
-    if getattr(got, "dtype", None) == np.float32 or held:
+    return bool(getattr(got, "dtype", None) == np.float32 or held)
+
+
+def lowest(expected, got=None) -> float:
+    """The smallest answer accepted: :data:`BELOW` under the coarsest Δz, or for an answer
+    float32 holds (:func:`_float32_held`) :data:`FLOAT32_STEPS` of float32's steps there (its
+    rounding, no more)."""
+    low = expected * (1 - BELOW)
+    if _float32_held(got):
         low = min(low, expected - FLOAT32_STEPS * float(np.spacing(np.float32(expected))))
     return low
 
 
+def highest(expected, got=None) -> float:
+    """The largest answer accepted: :data:`ABOVE` over the coarsest Δz, or for an answer
+    float32 holds :data:`FLOAT32_STEPS` of float32's steps over it."""
+    high = expected * (1 + ABOVE)
+    if _float32_held(got):
+        high = max(high, expected + FLOAT32_STEPS * float(np.spacing(np.float32(expected))))
+    return high
+
+
 def same_worst(got, expected, args=None) -> bool:
-    """From :func:`lowest` to :data:`SLACK` over the coarsest Δz."""
+    """From :func:`lowest` to :func:`highest`."""
     if not np.isfinite(got):
         return False
-    return lowest(expected, got) <= got <= expected * (1 + SLACK)
+    # as float64 (an np.float32 compared with a Python float is compared in float32)
+    return lowest(expected, got) <= float(got) <= highest(expected, got)
+
+
+def rounded_edge(z_min, z_max, near, far) -> tuple[float, float] | None:
+    """(z_b, Δz) at the farthest depth whose d, rounded to float32, is still the worst
+    crossing's 2^e: d = 2^e (1 − 2^-25) (a tie rounds to the even 2^e), where reverse_z_gap
+    gives the largest Δz of the range (r425 F1); None where the worst is z_max."""
+    z_w = worst(z_min, z_max, near, far)[0]
+    if z_w == z_max:
+        return None
+    e = int(np.round(np.log2(float(reversed_depth(z_w, near, far)))))
+    span = 1 - near / far
+    z_b = min(near / (2.0**e * (1 - 2.0**-25) * span + near / far), z_max)
+    return z_b, 2.0 ** (e - 23) / reversed_depth_slope(z_b, near, far)
 
 
 def _variants(z_min, z_max, near, far) -> dict[str, float]:
@@ -209,7 +250,11 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
     # the finest: just farther than an edge (its step below) or at z_min
     finest = min([at_min] + [dz for _, dz in below[1:]])
     peak = min(max(far / 2, z_min), z_max)
-    return {
+    out = {}
+    # r425 F2: a crossing on z_min skipped (`z_min < z_e`): the answer itself where z_min is
+    # none, so it fits (and is whole) only where a crossing on z_min was the coarsest
+    out["z_min's crossing skipped"] = max(dz for z, dz in cands if z != z_min or z == z_max)
+    return out | {
         # r417 F3: the right candidates, the finest of them taken (before z_max's: the same
         # answer wherever z_max's is the finest)
         "finest candidate": min(dz for _, dz in cands),
@@ -224,6 +269,9 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
             dz * (1 if z == z_max and k == 0 else 2) for k, (z, dz) in enumerate(cands)
         ),
         "bound 2^-23": 2.0**-23 * peak * (1 - peak / far),
+        # r425 F4: the parabola's peak f/2 whether in the range or not (after the clamped one:
+        # where f/2 lies in the range they are the same answer)
+        "bound 2^-23 unclamped": 2.0**-23 * far / 4,
         "bound 2^-24": 2.0**-24 * peak * (1 - peak / far),
         "bound at z_max": 2.0**-23 * z_max * (1 - z_max / far),
         "finest": finest,
@@ -232,6 +280,28 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
         "crossings, z not squared": max([cands[0][1]] + [dz / z for z, dz in cands[1:]]),
         "z_min's step at z_max": binade_step(d_min) / slope(z_max),
     }
+
+
+def _crossing_slips(z_min, z_max, near, far) -> dict[str, float]:
+    """r425 F3, F4: crossings of the wrong d. Without 1 − n/f (in d and in its slope: d' =
+    n/z − n/f crosses 2^e at n/(2^e + n/f)), or at n/2^e (where n/z is a power of two, the
+    slope n/z²); z_max's own Δz as reverse_z_gap gives it, as the student's code keeps it."""
+    at_max = float(np.spacing(np.float32(reversed_depth(z_max, near, far)))) / (
+        reversed_depth_slope(z_max, near, far)
+    )
+    out = {}
+    for kind, cross, step_max in (
+        (
+            "1 - n/f dropped",
+            lambda e: near / (2.0**e + near / far),
+            float(np.spacing(np.float32(near / z_max - near / far))) * z_max**2 / near,
+        ),
+        ("crossings at n/2^e", lambda e: near / 2.0**e, at_max),
+    ):
+        dzs = [step_max] + [2.0 ** (e - 23) * cross(e) ** 2 / near for e in range(-150, 2)
+                            if z_min <= cross(e) <= z_max]  # fmt: skip
+        out[kind] = max(dzs)
+    return out
 
 
 #: Where the words say where the worst depth is, or how to find it (r404 F1: said in full at
@@ -245,7 +315,10 @@ def _z_max_words(args, expected, got) -> str:
     """The transcribed formula at z_max (r381 F6): where the worst step really is (staged)."""
     z_w, dz = worst(*args)
     e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
-    return (f": you evaluated the gap at z_max only: that is z_max's own Δz{WHERE[0]}"
+    # r425 F3: or the crossings came out finer (float64's step there): hedged, the value alone
+    return (f": that is z_max's own Δz on every case: you evaluated the gap at z_max only, or "
+            "the depths you compared it with came out finer (float64's np.spacing at a crossing, "
+            f"2^29 times finer than float32's step?){WHERE[0]}"
             f"{num(z_w)}, where d falls to 2^{e}: just nearer, d's binade has the step "
             f"2^{e - 23}, and Δz = {num(dz, got)} there. A unorm buffer's Δz grows with z, so "
             "its worst is z_max; float32's step halves wherever d falls below a power of two, "
@@ -260,7 +333,40 @@ _BETWEEN = ("Between them d crosses powers of two, and just nearer than each cro
             "them")  # fmt: skip
 
 
+def _dropped_words(args, expected, got) -> str:
+    z_w = worst(*args)[0]
+    where = (
+        ""
+        if z_w == args[1]
+        else (
+            f" (the coarsest crossing lies at z = {num(z_w)}, where d = "
+            f"2^{int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))})"
+        )
+    )
+    return (": you dropped the factor 1 − n/f from d and from its slope: d = (n/z − n/f)/(1 − n/f)"
+            " crosses 2^e at z = n/(2^e (1 − n/f) + n/f), not n/(2^e + n/f)" + where
+            + ", and |dd/dz| = n/((1 − n/f) z²): keep the (1 − n/f) in both")  # fmt: skip
+
+
 MISTAKES = {
+    # r425 F2: first (z_max's own or another crossing's gives the same number there)
+    "z_min's crossing skipped": lambda a, e, g: (
+        f": z_min = {num(a[0])} lies on a crossing: d there is exactly 2^"
+        f"{int(np.round(np.log2(float(reversed_depth(a[0], *a[2:])))))}, and yours is what the "
+        "range gives without it. z_min stores d = 2^e exactly: its own Δz, the step of the "
+        "binade above, 2^(e−23), over the slope, counts (z_min ≤ z_e, not z_min < z_e)"
+    ),
+}
+#: r425 F3, F4: the crossings of the wrong d, said where an answer is that very number (1e-9:
+#: with n/f ≪ 1 it lies within 1e-5 of the right one, where a search could fall by chance).
+CROSSING_WORDS = {
+    "1 - n/f dropped": _dropped_words,
+    "crossings at n/2^e": ": you put d's crossings at z = n/2^e, where n/z is a power of two, "
+    "and took the slope n/z²: that holds for an infinite far plane only. With this far plane d "
+    "= (n/z − n/f)/(1 − n/f) is 2^e at z = n/(2^e (1 − n/f) + n/f), and |dd/dz| = n/((1 − n/f) "
+    "z²)",
+}
+MISTAKES |= {
     "finest candidate": ": you compared the right depths, z_max and the limit just nearer "
     "than each depth where d crosses a power of two, but returned the finest of them: the "
     "task asks the coarsest, the gap surfaces need to be told apart at every depth of the range",
@@ -285,6 +391,9 @@ MISTAKES = {
     "bound 2^-23": ": you took the bound 2^-23 z (1 − z/f) (d over its slope) at its largest "
     "in the range: it is reached only where d is a power of two, so the true worst is the "
     "largest over those depths and z_max, not over every z",
+    "bound 2^-23 unclamped": ": you took the bound 2^-23 z (1 − z/f) at its peak over every "
+    "z, z = f/2 (2^-23 f/4), not over this range's depths; and the bound is reached only where d is a "
+    "power of two: the coarsest is the largest over those depths in the range and z_max",
     "bound 2^-24": ": you took 2^-24 z (1 − z/f), the finest bound of reverse-Z's Δz, "
     "not the coarsest over the range: just nearer than each depth where d is a power of two "
     "2^e the step is 2^(e−23), twice that",
@@ -441,9 +550,9 @@ def _search_words(args, expected, got) -> str:
             f"than z = {num(z_w)}, where d falls to 2^{e}; your samples stopped at about z = "
             f"{num(z_s, z_w)} in that binade (Δz grows like z² there). A search falls short "
             "by about twice its spacing over z, and the check allows "
-            f"{_short(BELOW)}: no sampling within the time limit comes that close. Δz jumps "
-            "there (the step halves), so the coarsest is the limit just nearer than it: "
-            "compute it at each such depth rather than sample")  # fmt: skip
+            f"{_short(BELOW)}; one refined until it finds the jump lands a hair over it (the "
+            "stored d rounds up to the power of two a little farther), which fails too. Δz jumps there (the step halves), so the coarsest is the limit just nearer "
+            "than it: compute it at each such depth rather than sample")  # fmt: skip
 
 
 def _short(share: float) -> str:
@@ -467,16 +576,73 @@ def _hair_words(args, expected, got) -> str:
     return (f": yours is {_short(1 - got / expected)} short of the coarsest ({where}), where "
             f"the check allows {_short(BELOW)}: the closed form, a power of two times a few "
             "products, comes out within 1e-15 in float64. A search over sampled depths (it "
-            "falls short by about twice its spacing over z, and no sampling within the time "
-            "limit comes that close), a depth taken a hair off, or a number rounded on the way "
+            "falls short by about twice its spacing over z), a depth taken a hair off, or a "
+            "number rounded on the way "
             "(an input or a depth kept in fewer bits than float64's)?")  # fmt: skip
 
 
-# one kind (r417): a search short by less than 1e-6 gets the second words, by more the first
+def _over(args, expected, got) -> bool:
+    """Over the band by less than 2 % (beyond it :data:`RATIO` says the factor)."""
+    return bool(np.isfinite(got) and highest(expected, got) < got <= expected * 1.02)
+
+
+def _at_rounded_edge(args, expected, got) -> bool:
+    """Between the limit and reverse_z_gap's largest at :func:`rounded_edge` (a hair over it):
+    a search refined onto the jump of float32's rounded d (r425 F1)."""
+    edge = rounded_edge(*args)
+    return edge is not None and got <= edge[1] * (1 + 1e-9)
+
+
+def _over_words(args, expected, got) -> str:
+    share = _short(got / expected - 1)
+    if not _at_rounded_edge(args, expected, got):
+        return (f": yours is {share} over the coarsest, where the check allows {_short(ABOVE)}: "
+                "a gap rounded up is still resolved, but the task asks the coarsest Δz itself, "
+                "a closed form float64 gives to about 1e-15. Did you round it up, or add a "
+                "margin?")  # fmt: skip
+    z_w, (z_b, dz_b) = worst(*args)[0], rounded_edge(*args)
+    e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
+    return (f": yours is {share} over the coarsest, where the check allows {_short(ABOVE)}: "
+            f"it lies between the limit just nearer than z = {num(z_w, z_b)}, where the exact d "
+            f"falls to 2^{e}, and {num(dz_b, expected)}, the Δz reverse_z_gap gives at z = "
+            f"{num(z_b, z_w)}: down to there the stored d, rounded to the buffer's format, "
+            f"still rounds up to 2^{e} (the binade above keeps its step while the slope "
+            "falls). A search refined until "
+            "it finds the jump lands there. The task takes Δz by the binade of the exact d, "
+            "whose largest is that limit: compute it at each such depth, and sample only to "
+            "explore")  # fmt: skip
+
+
+CROSSING_SLIPS = tuple(
+    Mistake(kind, words, fits=lambda a, e, g, kind=kind: bool(
+        np.isfinite(g) and abs(g / _crossing_slips(*a)[kind] - 1) <= 1e-9))
+    for kind, words in CROSSING_WORDS.items()
+)  # fmt: skip
+
+
+def _searched_over(args, expected, got) -> bool:
+    """Over the band, onto the jump of float32's rounded d: a refined search (r425 F1)."""
+    return _over(args, expected, got) and _at_rounded_edge(args, expected, got)
+
+
+# r425 F1: over the band by a margin (a search that found the jump is SEARCH's)
+OVER = Mistake("over the coarsest", _over_words, symptom=True,
+               fits=lambda a, e, g: _over(a, e, g) and not _at_rounded_edge(a, e, g))  # fmt: skip
+
+
+def _search_case_words(args, expected, got) -> str:
+    if _searched_over(args, expected, got):
+        return _over_words(args, expected, got)
+    return (_search_words if _too_fine(args, expected, got) else _hair_words)(args, expected, got)
+
+
+# one kind (r417): a search short by less than 1e-6 gets the second words, by more the first;
+# r425 F1: one refined onto the jump of float32's rounding lands over (a uniform one on some
+# cases too), its own words
 SEARCH = Mistake(
     "search missed the edge",
-    lambda a, e, g: (_search_words if _too_fine(a, e, g) else _hair_words)(a, e, g),
-    fits=lambda a, e, g: _too_fine(a, e, g) or _hair_short(a, e, g),
+    _search_case_words,
+    fits=lambda a, e, g: _too_fine(a, e, g) or _hair_short(a, e, g) or _searched_over(a, e, g),
     symptom=True,
 )
 
@@ -506,19 +672,31 @@ def gap_slips(args, got, expected=None) -> list[tuple[str, float]]:
     above 1 give the same Δz at z = 300 with near 0.1, far 1000)."""
     if not np.isfinite(got) or got == 0:
         return []
-    near_to = lambda x, dz: dz * (1 - SLIP_BELOW) <= x <= dz * (1 + SLACK)  # noqa: E731
+
+    # r425 F4: a negative slip's band was empty (near and far swapped), so sorted
+    def near_to(x, dz):
+        ends = (dz * (1 - SLIP_BELOW), dz * (1 + SLACK))
+        return min(ends) <= x <= max(ends)
+
     found = {}
     for z in _depths(*args):
         for kind, dz in gap_variants(z, *args[2:]).items():
             if kind in GAP_SLIPS and np.isfinite(dz):
                 found[kind] = max(found.get(kind, -np.inf), dz) if dz > 0 else min(
                     found.get(kind, np.inf), dz)  # fmt: skip
+    # r425 F4: the slip at z_max alone (float64's step at z_max only: not the range's largest)
+    at_max = {k: dz for k, dz in gap_variants(args[1], *args[2:]).items()
+              if k in GAP_SLIPS and np.isfinite(dz)}  # fmt: skip
     near = [(round(abs(got / dz - 1), 3), GAP_SLIPS.index(kind), kind, dz)
-            for kind, dz in found.items() if dz != 0]  # fmt: skip
+            for table in (found, at_max) for kind, dz in table.items() if dz != 0]  # fmt: skip
     near = [n for n in near if near_to(got, n[3])]
     if expected is not None:
         near = [n for n in near if not near_to(n[3], expected)]
-    return [n[2:] for n in sorted(near)]
+    out = []
+    for n in sorted(near):
+        if n[2] not in [k for k, _ in out]:  # a kind once, at its nearest
+            out.append(n[2:])
+    return out
 
 
 def gap_slip(args, got, expected=None) -> tuple[str, float] | None:
@@ -580,10 +758,10 @@ RANGE = Mistake("range", ": a gap is a positive distance",
 
 def explain_worst(args, expected, got) -> str:
     """The case, its coarsest Δz, the band the check accepts, and the student's."""
-    lo, hi = lowest(expected, got), expected * (1 + SLACK)
+    lo, hi = lowest(expected, got), highest(expected, got)
     # r417 F4: each bound with the digits that tell it from the answer and from the coarsest
     head = (f"for z from {num(args[0])} to {num(args[1])} (near {num(args[2])}, far "
-            f"{num(args[3])}) the coarsest Δz is {_apart(expected, got, lo)} (the check "
+            f"{num(args[3])}) the coarsest Δz is {_apart(expected, got, lo, hi)} (the check "
             f"accepts {_apart(lo, got, expected, hi)} to {_apart(hi, got, expected, lo)}); "
             f"yours is {_apart(got, expected, lo)}")  # fmt: skip
     if not np.isfinite(got) or got <= 0 or same_worst(got, expected):
@@ -645,8 +823,11 @@ def draw_worst(ax, case, got):
         z_w = worst(z_min, z_max, near, far)[0]
         artists += ax.plot([z_w], [expected / unit], "o", color="#2b7bba", ms=8,
                            label=f"coarsest {num(expected, got)} at z = {num(z_w)}")  # fmt: skip
-        artists.append(ax.axhspan(lowest(expected, got) / unit, expected * (1 + SLACK) / unit,
-                                  color="#d9ecd9", lw=0, zorder=0, label="accepted"))  # fmt: skip
+        lo, hi = lowest(expected, got), highest(expected, got)
+        # r425: 1e-8 either way, thinner than a line: said, since it cannot be seen
+        width = _short(max(1 - lo / expected, hi / expected - 1))
+        artists.append(ax.axhspan(lo / unit, hi / unit, color="#d9ecd9", lw=0, zorder=0,
+                                  label=f"accepted: {width} either way (thinner than a line)"))  # fmt: skip
     if drawn:
         colour = "#7fbf7f" if ok else "#d7301f"
         artists.append(ax.axhline(got / unit, color=colour, linestyle="--",
@@ -666,8 +847,8 @@ def draw_worst(ax, case, got):
 REVERSE_Z_WORST = Exercise(
     "reverse_z_worst", worst_cases, as_gap, same_worst, explain_worst, _rule,
     [dataclasses.replace(m, only_whole=True) if m.kind in ONLY_WHOLE else m
-     for m in variant_mistakes(_variants, MISTAKES, (EDGE_BELOW, Z_MAX_HERE, OTHER_CROSSING, OUTSIDE,
-     GAP_SLIP, FINEST_SAMPLED, RATIO, SEARCH, RANGE))], draw=draw_worst,
+     for m in variant_mistakes(_variants, MISTAKES, (*CROSSING_SLIPS, EDGE_BELOW, Z_MAX_HERE, OTHER_CROSSING, OUTSIDE,
+     GAP_SLIP, FINEST_SAMPLED, RATIO, SEARCH, OVER, RANGE))], draw=draw_worst,
     match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
     answers=(
         PackageAnswer(expected_worst, words=CHECKER_WORDS),
