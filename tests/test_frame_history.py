@@ -1406,3 +1406,32 @@ def test_folded_rows_print_the_depths_of_every_sample_they_stand_for():
                 for s in samples:
                     # a folded refused row's outcome text is the same; its why is the nearest
                     assert flat[tri, s] == tuple(said), (row, col, tri, s, h.table())
+
+
+@pytest.mark.parametrize("name", ["uv_sphere", "textured_floor"])
+def test_the_triangle_size_title_is_the_median_per_triangle_shown_as_lesson_11_prints(name):
+    """r431 C1: the inspector's triangle-size view said "median 4 px" on uv_sphere beside
+    lesson 11's 3 px: its title took the median over the pixels, which weights a triangle
+    by its size. One size per triangle shown (each the overlay's value at its pixels)."""
+    import matplotlib.pyplot as plt
+
+    from teachraster.pipeline.debugging import visible_triangle_sizes
+    from teachraster.plotting import plot_overlay
+
+    frame = tr.render(get_scene(name), None, 64, 48, trace=True)
+    sizes = visible_triangle_sizes(frame)
+    ids = frame.triangle_id
+    shown = np.unique(ids[ids >= 0])
+    overlay = frame.overlay("triangle_size")
+    assert len(sizes) == len(shown)
+    for t, size in zip(shown, sizes):  # a triangle's size is the same at each of its pixels
+        assert set(overlay[ids == t].tolist()) == {size}
+    fig, ax = plt.subplots()
+    try:
+        plot_overlay(ax, frame, "triangle_size")
+        title = ax.get_title()
+    finally:
+        plt.close(fig)
+    assert f"median {np.median(sizes):,g} px per triangle shown" in title, title
+    if name == "uv_sphere":  # the case r431 found: the pixels' median differs
+        assert np.median(overlay[ids >= 0]) != np.median(sizes)

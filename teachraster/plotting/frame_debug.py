@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib.colors import BoundaryNorm, ListedColormap, LogNorm, Normalize
 
 from ..core.validate import check_choice
-from ..pipeline.debugging.overlays import KINDS, helper_share
+from ..pipeline.debugging.overlays import KINDS, helper_share, visible_triangle_sizes
 from .common import Artists, clear_axes, pixel_axes, show_image
 from .style import ERROR_CMAP, VALUE_CMAP
 
@@ -168,7 +168,9 @@ def plot_overlay(ax, frame, kind: str, *, colorbar: bool = True, cax=None,
         result.colorbar.set_label(label, fontsize="small")
         result.colorbar.minorticks_off()  # a log bar's minor labels ("6 × 10⁰") crowd it
     share = helper_share(frame) if kind == "quad_overshading" else None
-    ax.set_title(overlay_title(kind, values, n_samples, share=share), fontsize="small")
+    sizes = visible_triangle_sizes(frame) if kind == "triangle_size" else None
+    ax.set_title(overlay_title(kind, values, n_samples, share=share, sizes=sizes),
+                 fontsize="small")  # fmt: skip
     return result
 
 
@@ -257,21 +259,27 @@ def fit_title(ax, margin: float = 4.0):
 
 
 def overlay_title(kind: str, values: np.ndarray, n_samples: int = 1, *,
-                  share: float | None = None) -> str:  # fmt: skip
+                  share: float | None = None, sizes: np.ndarray | None = None) -> str:  # fmt: skip
     """A one-line summary of an overlay in numbers (under MSAA, overdraw and depth
     complexity say that they count samples; Hi-Z says that it is not modelled,
     :data:`HIZ_MSAA_TITLE`). The quad overshading's is the frame's
     ``share`` of helpers among all lanes launched
     (:func:`~teachraster.pipeline.debugging.overlays.helper_share`), not a mean of the
-    per-quad fractions, which would drop the quads without helpers."""
+    per-quad fractions, which would drop the quads without helpers. The triangle size's is
+    the median of ``sizes``, one per triangle shown
+    (:func:`~teachraster.pipeline.debugging.overlays.visible_triangle_sizes`), not over the
+    pixels, which weights a triangle by its size (lesson 11 prints the same median)."""
     if kind == "quad_overshading":
         if share is None:
             return "quad overshading"
         return f"quad overshading: helpers {share:.0%} of all lanes"
     if kind == "triangle_size":
-        seen = values[values > 0]
-        median = int(np.median(seen)) if len(seen) else 0
-        return f"triangle size: median {median:,} px"
+        if sizes is None:  # the overlay alone: its pixels, said so
+            seen = values[values > 0]
+            median = float(np.median(seen)) if len(seen) else 0.0
+            return f"triangle size: median {median:,g} px over its pixels"
+        median = float(np.median(sizes)) if len(sizes) else 0.0
+        return f"triangle size: median {median:,g} px per triangle shown"
     if kind == "hi_z" and n_samples > 1:  # not a count of 0: no replay was run
         return HIZ_MSAA_TITLE
     total, top = int(values.sum()), int(values.max(initial=0))

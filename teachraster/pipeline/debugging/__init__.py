@@ -4,7 +4,8 @@
   submission order with the first test that stopped it, replayable bit for bit;
 - :mod:`.overlays`: ``frame.overlay(kind)``, overdraw, depth complexity, quad overshading,
   triangle size, Hi-Z and NaN views of the whole frame; ``helper_share(frame)``, the helper
-  lanes over all lanes launched, and ``quad_triangles(frame, row, col)``, who shaded a quad.
+  lanes over all lanes launched, ``quad_triangles(frame, row, col)``, who shaded a quad, and
+  ``visible_triangle_sizes(frame)``, one size per triangle shown.
 
 This stage reads frames, so it sits above :mod:`..rendering`; the two ``Frame`` methods find
 it through :data:`~teachraster.pipeline.rendering.render_triangles.FRAME_DEBUGGERS`, where it
@@ -20,6 +21,7 @@ from .overlays import (
     overlay,
     passed_per_triangle,
     quad_triangles,
+    visible_triangle_sizes,
 )
 
 FRAME_DEBUGGERS.update(history=pixel_history, overlay=overlay)
@@ -35,4 +37,5 @@ __all__ = [
     "passed_per_triangle",
     "pixel_history",
     "quad_triangles",
+    "visible_triangle_sizes",
 ]

@@ -272,6 +272,17 @@ def helper_share(frame) -> float:
     return 0.0 if total == 0 else 1.0 - int(useful.sum()) / total
 
 
+def visible_triangle_sizes(frame) -> np.ndarray:
+    """The ``"triangle_size"`` of each triangle the frame shows, once per triangle (by
+    input index): the overlay repeats a triangle's size at each of its pixels, so a median
+    over the pixels would weight a triangle by its size (r431 C1: the inspector's "median 4
+    px" beside lesson 11's 3 px per triangle). Needs ``trace=True``."""
+    ids = np.asarray(frame.triangle_id)
+    shown = ids >= 0
+    _, first = np.unique(ids[shown], return_index=True)
+    return frame.overlay("triangle_size")[shown][first]
+
+
 def quad_triangles(frame, row, col) -> dict[int, int]:
     """The triangles shaded in the 2×2 quad of pixel (``row``, ``col``): {input triangle:
     its pixels shaded there}, in submission order. Each launches four lanes; the quad's
