@@ -7258,3 +7258,51 @@ R419_EDGE_BITS_DIFFERENT = {
             for m in (2 ** (r + s) - 1, a * 2**s - 1))),
 }  # fmt: skip
 DIFFERENT.update(R419_EDGE_BITS_DIFFERENT)
+
+
+# -- r428 (exercise 1): a point moved off the centre, a relative tolerance on the products -------
+def _r428_covers(step=(0.0, 0.0), rel=None, by_hand=False):
+    """The conventions' covers with p moved by ``step``, or a tie taken where the edge
+    function's two products agree to ``rel`` (math.isclose, or the same by hand)."""
+
+    def fn(xy, p):
+        v = [np.asarray(q, dtype=float) for q in xy]
+        p = (p[0] + step[0], p[1] + step[1])
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return False
+        if area < 0:
+            v = [v[0], v[2], v[1]]
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            p1, p2 = (b[0] - a[0]) * (p[1] - a[1]), (b[1] - a[1]) * (p[0] - a[0])
+            if rel is None:
+                tie = p1 == p2
+            elif by_hand:
+                tie = abs(p1 - p2) <= rel * max(abs(p1), abs(p2))
+            else:
+                tie = math.isclose(p1, p2, rel_tol=rel)
+            if (tie and not _owns(a, b)) or (not tie and p1 < p2):
+                return False
+        return True
+
+    return fn
+
+
+_R428_STEP = "a sample moved off the centre by 1e-7 px"
+_R428_REL = "a relative tolerance (math.isclose) in the edge test"
+R428 = {
+    "covers testing p moved 1e-7 px to the right (r428 WP1)": (
+        "covers", _r428_covers(step=(1e-7, 0.0)), _R428_STEP, "a point a tiny step off the centre"),
+    "fill sampled at (j + 0.5 + 1e-7, i + 0.5) (r428 WP1)": (
+        "fill", _fill_loop(at=(0.5 + 1e-7, 0.5)), _R428_STEP, "a point a tiny step off the centre"),
+    "covers with math.isclose(p1, p2) on the edge function's products (r428 WP2)": (
+        "covers", _r428_covers(rel=1e-9), _R428_REL, "a relative tolerance in the edge test"),
+    "covers with math.isclose(p1, p2, rel_tol=1e-6), in float64 (r428 M1)": (
+        "covers", _r428_covers(rel=1e-6), _R428_REL, "a relative tolerance in the edge test"),
+    "covers with abs(p1 - p2) <= 1e-9 * max(abs(p1), abs(p2)) (r428 WP2)": (
+        "covers", _r428_covers(rel=1e-9, by_hand=True), "a relative tolerance",
+        "a relative tolerance in the edge test"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R428.items()})
