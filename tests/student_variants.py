@@ -7306,3 +7306,46 @@ R428 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R428.items()})
+
+
+def _r428_mirrored_for_ccw(xy, p):
+    """r428 H2: E negated for a counter-clockwise triangle, and its tie rule mirrored too."""
+    v1, v2, v3 = (np.asarray(q, dtype=float) for q in xy)
+    s = edge_function(v1, v2, v3)
+    if s == 0:
+        return False
+    for a, b in ((v1, v2), (v2, v3), (v3, v1)):
+        e = edge_function(a, b, p) * (1 if s > 0 else -1)
+        tl = _owns(a, b) if s > 0 else (b[1] > a[1] or (b[1] == a[1] and b[0] > a[0]))
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+def _r428_per_length(xy, p):
+    """r428 H5: the edge function divided by the edge's length (NaN on a zero-length edge)."""
+    v = [np.asarray(q, dtype=float) for q in xy]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        area = _r420_distance(v[0], v[1], v[2])
+        if area < 0:
+            v = [v[0], v[2], v[1]]
+        if area == 0:
+            return False
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = _r420_distance(a, b, p)
+            if e < 0 or (e == 0 and not _owns(a, b)):
+                return False
+    return True
+
+
+R428_HALF = {
+    "covers mirroring the tie rule for counter-clockwise triangles (r428 H2)": (
+        "covers", _r428_mirrored_for_ccw, "a bottom-left rule on counter-clockwise triangles only",
+        "tie rule mirrored for one winding"),
+    "covers with E divided by the edge's length, NaN on a zero-length edge (r428 H5)": (
+        "covers", _r428_per_length, "gives NaN on a zero-length edge",
+        "NaN on a zero-length edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428_HALF.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R428_HALF.items()})

@@ -318,6 +318,32 @@ def _ties_as_given(case, owns, at, vertices) -> np.ndarray:
     ])  # fmt: skip
 
 
+def _one_winding_mirrored(ccw: bool):
+    """r428 H2: the top-left rule on one winding, a bottom-left rule on the other (a y-up
+    habit: E negated for the other winding and the rule mirrored with it)."""
+
+    def images(case):
+        bottom_left = frozenset({"bottom", "left"})
+        return np.array([
+            cov.rule_image(case, xy, owns=bottom_left if (cov.area2(xy) < 0) == ccw else cov.TOP_LEFT)
+            for xy in case.triangles
+        ])  # fmt: skip
+
+    return images
+
+
+def _one_winding_words(ccw: bool) -> str:
+    wrong, right = ("counter-clockwise", "clockwise") if ccw else ("clockwise", "counter-clockwise")
+    sign = "<" if ccw else ">"
+    return (
+        f"your coverage follows a bottom-left rule on {wrong} triangles only (E(v1, v2, v3) "
+        f"{sign} 0); {right} ones follow the top-left rule: you mirror the tie rule with the "
+        "winding (a y-up habit?), but the rule is one for both windings. Orient the triangle "
+        "first (swap two vertices, or negate every E), then apply the one top-left rule to the "
+        "oriented edges"
+    )
+
+
 def _ties_as_given_words(args, expected, got) -> str:
     return (
         "you accept both windings, but decide a centre on an edge by the edge as given (v1→v2, "
@@ -898,6 +924,9 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
                 must_fit=lambda args, *_: _float32_exact(args[0])),
         Mistake("vertices moved to pixel centres", _centred_words,
                 gives=lambda case: masks(cov.rule_images(case, vertices="centred"), case)),
+        *(Mistake("tie rule mirrored for one winding", _one_winding_words(ccw),
+                  gives=lambda case, ccw=ccw: masks(_one_winding_mirrored(ccw)(case), case))
+          for ccw in (True, False)),
     ]  # fmt: skip
     if name == "fill":
         table += [

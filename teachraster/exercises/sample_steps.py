@@ -46,10 +46,12 @@ def _products(a, b, p):
     return (b[0] - a[0]) * (p[..., 1] - a[1]), (b[1] - a[1]) * (p[..., 0] - a[0])
 
 
-def image(case: CoverageCase, xy, step=(0.0, 0.0), rel: float = 0.0, area: float = 0.0):
+def image(case: CoverageCase, xy, step=(0.0, 0.0), rel: float = 0.0, area: float = 0.0,
+          length: bool = False):  # fmt: skip
     """(h, w) bool: the rule at each centre moved by ``step`` (px), with E taken as 0 where
     |E| ≤ ``rel`` · max(|p1|, |p2|) (anchored at each oriented edge's start), or where
-    |E| ≤ ``rel`` · ``area`` if ``area`` is given."""
+    |E| ≤ ``rel`` · ``area`` if ``area`` is given, or |E| ≤ ``rel`` · |b − a| (a distance to
+    the edge's line below ``rel`` px) if ``length``."""
     points = _points(case) + np.asarray(step, dtype=float)
     if cov.area2(np.asarray(xy, dtype=float)) == 0:
         return np.zeros(points.shape[:2], dtype=bool)
@@ -59,7 +61,8 @@ def image(case: CoverageCase, xy, step=(0.0, 0.0), rel: float = 0.0, area: float
         a, b = v[k], v[(k + 1) % 3]
         p1, p2 = _products(a, b, points)
         e = p1 - p2
-        bound = rel * (area if area else np.maximum(np.abs(p1), np.abs(p2)))
+        bound = rel * (area if area else float(np.hypot(*(b - a))) if length
+                       else np.maximum(np.abs(p1), np.abs(p2)))  # fmt: skip
         tie = np.abs(e) <= bound if rel else e == 0
         inside &= np.where(tie, _top_left(a, b), e > 0)
     return inside
@@ -86,35 +89,56 @@ def stepped(case: CoverageCase, expected, got, masks) -> tuple[float, int, int] 
     return None
 
 
-def _ratio(xy, points, area: float = 0.0) -> np.ndarray:
-    """At each point, the least |E| / max(|p1|, |p2|) over the oriented edges (|E| / ``area``
-    where it is given)."""
+def _ratios(xy, points, length: bool = False) -> np.ndarray:
+    """(3, ...): at each point, |E| / max(|p1|, |p2|) for each oriented edge (|E| / |b − a|
+    if ``length``)."""
     v = _oriented(xy)
-    out = np.full(points.shape[:-1], np.inf)
+    out = []
     for k in range(3):
-        p1, p2 = _products(v[k], v[(k + 1) % 3], points)
-        big = np.full(p1.shape, area) if area else np.maximum(np.abs(p1), np.abs(p2))
+        a, b = v[k], v[(k + 1) % 3]
+        p1, p2 = _products(a, b, points)
+        big = np.full(p1.shape, np.hypot(*(b - a))) if length else np.maximum(abs(p1), abs(p2))
         with np.errstate(divide="ignore", invalid="ignore"):
-            out = np.minimum(out, np.where(big > 0, np.abs(p1 - p2) / big, np.inf))
-    return out
+            out.append(np.where(big > 0, np.abs(p1 - p2) / big, np.inf))
+    return np.array(out)
 
 
-def relative_tolerance(case: CoverageCase, expected, got, masks) -> float | None:
-    """The least r such that E within r · max(|p1|, |p2|) of 0 taken as 0 gives the student's
-    every image of this case, if below 1e-3 and it changes something, else None."""
+def _ratio(xy, points, area: float = 0.0, length: bool = False) -> np.ndarray:
+    """At each point, the least ratio of :func:`_ratios` (|E| / ``area`` where it is given)."""
+    if area:
+        return np.abs(np.array([p1 - p2 for p1, p2 in (_products(a, b, points) for a, b in
+                                zip(_oriented(xy), np.roll(_oriented(xy), -1, axis=0)))])).min(
+            axis=0) / area  # fmt: skip
+    return _ratios(xy, points, length).min(axis=0)
+
+
+def relative_tolerance(case: CoverageCase, expected, got, masks, length=False) -> float | None:
+    """The least r such that E within r · max(|p1|, |p2|) of 0 (r · |b − a| if ``length``: a
+    distance to the edge's line below r px) taken as 0 gives the student's every image of
+    this case, if below 1e-3 (0.1 px) and it changes something, else None. A centre off two
+    edges needs both taken as 0: the r tried run up from the least that explains every wrong
+    centre through the ratios of the wrong centres' edges."""
     if not _shaped(got, expected) or np.array_equal(got, expected):
         return None
+    cap = 0.1 if length else 1e-3
     points = _points(case)
-    r = 0.0
-    for xy, g, e in zip(case.triangles, got, expected):
-        wrong = g != e
-        if wrong.any():
-            r = max(r, float(_ratio(xy, points)[wrong].max()))
-    if not 0 < r < 1e-3:
+    ratios = [_ratios(xy, points, length) for xy in case.triangles]
+    r0 = 0.0
+    for q, g, e in zip(ratios, got, expected):
+        if (g != e).any():
+            r0 = max(r0, float(q.min(axis=0)[g != e].max()))
+    if not r0 < cap:
         return None
-    r = float(np.nextafter(r, 1.0))
-    images = [image(case, xy, rel=r) for xy in case.triangles]
-    return r if _same(case, got, images, masks) else None
+    # the wrong centres' ratios on each edge: one of them is the student's least r
+    tried = np.unique(
+        np.concatenate([q[:, g != e].ravel() for q, g, e in zip(ratios, got, expected)])
+    )
+    for r in [r0, *tried[(tried > r0) & (tried < cap)][:40]][0 if r0 else 1 :]:
+        r = float(np.nextafter(r, 1.0))
+        images = [image(case, xy, rel=r, length=length) for xy in case.triangles]
+        if _same(case, got, images, masks):
+            return r
+    return None
 
 
 def power(x: float) -> str:
