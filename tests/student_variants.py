@@ -7349,3 +7349,26 @@ R428_HALF = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428_HALF.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R428_HALF.items()})
+
+
+def _r428_vertex_special(covered: bool):
+    """r428 H3: covers with a special case for a point equal to a vertex."""
+
+    def fn(xy, p):
+        if any(float(q[0]) == float(p[0]) and float(q[1]) == float(p[1]) for q in xy):
+            return covered
+        return covers(xy, p)
+
+    return fn
+
+
+R428_VERTICES = {
+    "covers with every vertex covered (r428 H3)": (
+        "covers", _r428_vertex_special(True), "a vertex of its triangle at its centre",
+        "vertices decided apart"),
+    "covers with no vertex covered (r428 H3)": (
+        "covers", _r428_vertex_special(False), "a vertex of its triangle at its centre",
+        "vertices decided apart"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428_VERTICES.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R428_VERTICES.items()})

@@ -1024,6 +1024,26 @@ def _step_mistakes(masked: bool) -> list[Mistake]:
     ]  # fmt: skip
 
 
+def _at_vertices(args, expected, got) -> bool:
+    """r428 H3: every wrong pixel has a vertex of its triangle at its centre."""
+    (case,) = args
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return False
+    wrong = [(k, i, j) for k in range(len(got)) for i, j in np.argwhere(got[k] != expected[k])]
+    return bool(wrong) and all(
+        (np.asarray(case.triangles[k]) == _centre(case, i, j)).all(axis=1).any()
+        for k, i, j in wrong
+    )
+
+
+AT_VERTICES = (
+    "every pixel you get wrong has a vertex of its triangle at its centre: a special case for "
+    "vertices (p equal to one of them: always covered, or never)? A vertex is decided by the "
+    "rule like any other point: it lies on two edges, so it is covered only when both are top "
+    "or left edges (E = 0 on each, and each owns its ties), as in the rest of the tie rule"
+)
+
+
 def _x_flipped_pixel(case, xy, e, g, i, j):
     return _mirrored_pixel(case, xy, e, g, i, j, (i, e.shape[1] - 1 - j),
                            "the pixel in the mirrored column")  # fmt: skip
@@ -1052,6 +1072,7 @@ def mistakes(name: str) -> list:
     if name == "fill":
         table += _offset_mistakes()
     table += _step_mistakes(masked)
+    table.append(Mistake("vertices decided apart", AT_VERTICES, fits=_at_vertices, symptom=True))
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
