@@ -8163,3 +8163,117 @@ DIFFERENT["reverse-Z worst in float32 arithmetic throughout (r425 C4)"] = (
     "reverse_z_worst",
     _r425_all_float32,
 )
+
+
+# -- r428 (exercise 1): a point moved off the centre, a relative tolerance on the products -------
+def _r428_covers(step=(0.0, 0.0), rel=None, by_hand=False):
+    """The conventions' covers with p moved by ``step``, or a tie taken where the edge
+    function's two products agree to ``rel`` (math.isclose, or the same by hand)."""
+
+    def fn(xy, p):
+        v = [np.asarray(q, dtype=float) for q in xy]
+        p = (p[0] + step[0], p[1] + step[1])
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return False
+        if area < 0:
+            v = [v[0], v[2], v[1]]
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            p1, p2 = (b[0] - a[0]) * (p[1] - a[1]), (b[1] - a[1]) * (p[0] - a[0])
+            if rel is None:
+                tie = p1 == p2
+            elif by_hand:
+                tie = abs(p1 - p2) <= rel * max(abs(p1), abs(p2))
+            else:
+                tie = math.isclose(p1, p2, rel_tol=rel)
+            if (tie and not _owns(a, b)) or (not tie and p1 < p2):
+                return False
+        return True
+
+    return fn
+
+
+_R428_STEP = "a sample moved off the centre by 1e-7 px"
+_R428_REL = "a relative tolerance (math.isclose) in the edge test"
+R428 = {
+    "covers testing p moved 1e-7 px to the right (r428 WP1)": (
+        "covers", _r428_covers(step=(1e-7, 0.0)), _R428_STEP, "a point a tiny step off the centre"),
+    "fill sampled at (j + 0.5 + 1e-7, i + 0.5) (r428 WP1)": (
+        "fill", _fill_loop(at=(0.5 + 1e-7, 0.5)), _R428_STEP, "a point a tiny step off the centre"),
+    "covers with math.isclose(p1, p2) on the edge function's products (r428 WP2)": (
+        "covers", _r428_covers(rel=1e-9), _R428_REL, "a relative tolerance in the edge test"),
+    "covers with math.isclose(p1, p2, rel_tol=1e-6), in float64 (r428 M1)": (
+        "covers", _r428_covers(rel=1e-6), _R428_REL, "a relative tolerance in the edge test"),
+    "covers with abs(p1 - p2) <= 1e-9 * max(abs(p1), abs(p2)) (r428 WP2)": (
+        "covers", _r428_covers(rel=1e-9, by_hand=True), "a relative tolerance",
+        "a relative tolerance in the edge test"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R428.items()})
+
+
+def _r428_mirrored_for_ccw(xy, p):
+    """r428 H2: E negated for a counter-clockwise triangle, and its tie rule mirrored too."""
+    v1, v2, v3 = (np.asarray(q, dtype=float) for q in xy)
+    s = edge_function(v1, v2, v3)
+    if s == 0:
+        return False
+    for a, b in ((v1, v2), (v2, v3), (v3, v1)):
+        e = edge_function(a, b, p) * (1 if s > 0 else -1)
+        tl = _owns(a, b) if s > 0 else (b[1] > a[1] or (b[1] == a[1] and b[0] > a[0]))
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+def _r428_per_length(xy, p):
+    """r428 H5: the edge function divided by the edge's length (NaN on a zero-length edge)."""
+    v = [np.asarray(q, dtype=float) for q in xy]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        area = _r420_distance(v[0], v[1], v[2])
+        if area < 0:
+            v = [v[0], v[2], v[1]]
+        if area == 0:
+            return False
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = _r420_distance(a, b, p)
+            if e < 0 or (e == 0 and not _owns(a, b)):
+                return False
+    return True
+
+
+R428_HALF = {
+    "covers mirroring the tie rule for counter-clockwise triangles (r428 H2)": (
+        "covers", _r428_mirrored_for_ccw, "a bottom-left rule on counter-clockwise triangles only",
+        "tie rule mirrored for one winding"),
+    "covers with E divided by the edge's length, NaN on a zero-length edge (r428 H5)": (
+        "covers", _r428_per_length, "gives NaN on a zero-length edge",
+        "NaN on a zero-length edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428_HALF.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R428_HALF.items()})
+
+
+def _r428_vertex_special(covered: bool):
+    """r428 H3: covers with a special case for a point equal to a vertex."""
+
+    def fn(xy, p):
+        if any(float(q[0]) == float(p[0]) and float(q[1]) == float(p[1]) for q in xy):
+            return covered
+        return covers(xy, p)
+
+    return fn
+
+
+R428_VERTICES = {
+    "covers with every vertex covered (r428 H3)": (
+        "covers", _r428_vertex_special(True), "a vertex of its triangle at its centre",
+        "vertices decided apart"),
+    "covers with no vertex covered (r428 H3)": (
+        "covers", _r428_vertex_special(False), "a vertex of its triangle at its centre",
+        "vertices decided apart"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428_VERTICES.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R428_VERTICES.items()})

@@ -434,7 +434,7 @@ def differences(case: CoverageCase, got, expected, causes: str = "") -> str:
         )
     return (
         f"{text}; {ties} of these centres lie exactly on an edge and {len(wrong) - ties} off "
-        f"every edge (the farthest {fmt(round(far, 3))} px from the nearest edge's line), so "
+        f"every edge (the farthest {fmt(far)} px from the nearest edge's line), so "
         "the tie rule alone does not explain it. None of the typical mistakes this check "
         "knows gives your image: compare it with the rule's in the figure"
     )

@@ -23,10 +23,17 @@ def _mixed(a, b, p):
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - b[0])
 
 
+def _per_length(a, b, p):
+    """E / |b − a|: a signed distance, NaN (0/0) on a zero-length edge (r428 H5)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return _signed(a, b, p) / np.hypot(*(np.asarray(b) - np.asarray(a)))
+
+
 #: The wrong edge functions, by kind: (a, b, points (..., 2)) -> E.
 EDGE_FUNCTIONS = {
     "unsigned edge function": lambda a, b, p: np.abs(_signed(a, b, p)),
     "edge function from two anchors": _mixed,
+    "NaN on a zero-length edge": _per_length,
 }
 
 HELPER_CHECK = 'show(ex.check("edge_function", edge_function)) names it with numbers'
@@ -39,6 +46,11 @@ WORDS = {
     "(p[0] − b[0]) but from a in y (p[1] − a[1]): that adds (b.x − a.x)·(b.y − a.y) to E and "
     "moves each sloped edge's line. Take both differences from the same vertex: "
     f"{HELPER_CHECK}",
+    "NaN on a zero-length edge": "your edge function gives NaN on a zero-length edge (0/0: a "
+    "division by the edge's length?): NaN fails every comparison, so neither the zero-area "
+    "test nor a side test refuses it, and a triangle collapsed to a point (or to a segment) "
+    "covers pixels around it. Keep E undivided, (b.x − a.x)(p.y − a.y) − (b.y − a.y)(p.x − "
+    f"a.x): {HELPER_CHECK}",
     "one edge only": "you test one edge only (v1→v2, after orienting): a centre is covered "
     "only when it is inside all three edges, so test each of v1→v2, v2→v3 and v3→v1 and "
     "return True only after all three pass",
@@ -61,11 +73,12 @@ def image(case: CoverageCase, xy, kind: str) -> np.ndarray:
     if area < 0:
         v = [v[0], v[2], v[1]]
     one = kind == "one edge only"  # the reviewer's one-edge covers tests no area either
-    inside = np.full((h, w), area != 0 or one)
+    inside = np.full((h, w), bool(area != 0) or one)
     for k in range(1 if one else 3):
         a, b = v[k], v[(k + 1) % 3]
         e = ef(a, b, points)
-        inside &= (e > 0) | ((e == 0) & _top_left(a, b))
+        # refused where E < 0, or E == 0 off a top or left edge: NaN passes both (r428 H5)
+        inside &= ~((e < 0) | ((e == 0) & (not _top_left(a, b))))
     return inside
 
 

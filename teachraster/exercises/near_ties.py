@@ -134,3 +134,81 @@ def near_tie_cases(rng, word: str, signs=(1, -1, 2, -4), large=(1, -1)) -> list[
                  "allows)")  # fmt: skip
         out.append(CoverageCase(label, xy[None], (0, 0), (WINDOW, WINDOW)))
     return out
+
+
+# -- r428 WP1, WP2: near ties beside long edges ---------------------------------------------------
+#: How the label of the long near-tie case begins (not :data:`NEAR_TIE`: float32 may fail it).
+LONG_NEAR_TIES = "long near ties"
+#: The long edges' shapes, (|u.x| range, |u.y| range) in px, u half the edge (the centre in the
+#: middle), and the third vertex's distance from it, px: *steep* (|dy| ≈ 1000 px, |dx| < 1 px,
+#: products below 2^24 · 2^-16 px², so float32 holds them exactly), *diagonal* (|dx| < |dy|,
+#: products ≈ 10^5 px²), *shallow* (|dy| ≤ 12 px, products ≥ 10^5 px²), *sliver* (a diagonal
+#: edge of a triangle 2-4 px tall: products ≈ 10^5 px², area ≈ 10^3 px²).
+LONG_SHAPES = {"steep": ((1 / UNIT, 24 / UNIT), (400, 500), (4000, 6000)),
+               "diagonal": ((250, 350), (400, 500), (1500, 2000)),
+               "shallow": ((10500, 12000), (3.0, 4.0), (1500, 2000)),
+               "sliver": ((250, 350), (400, 500), (2.0, 4.0))}  # fmt: skip
+
+
+def _long_edge(rng, s: int, shape: str, c: np.ndarray, sx: int):
+    """(a, b) in units: a→b with E(a, b, c) = s (2^-16 px²), c in its middle, b below a where
+    s > 0 (a right edge), above it where s < 0 (a left edge); None where this draw fails."""
+    (x0, x1), (y0, y1), _ = LONG_SHAPES[shape]
+    ux = int(rng.uniform(x0, x1) * UNIT) * sx
+    uy = int(rng.uniform(y0, y1) * UNIT) * (1 if s > 0 else -1)
+    if math.gcd(ux, uy) != 1:
+        return None
+    _, m, n = _egcd(uy, ux)  # m·uy + n·ux = 1, so d0 = (m, -n) has d0 × u = 1
+    d0 = np.array([s * m, -s * n])
+    u = np.array([ux, uy])
+    d = d0 + round(2.0 - float(d0 @ u) / float(u @ u)) * u
+    a = c - u
+    return (a, a + d) if (d[1] > 0) == (s > 0) else None
+
+
+def _long_triangle(rng, s: int, shape: str, c: np.ndarray, sx: int) -> np.ndarray | None:
+    """A triangle (px) whose centre c lies at E(a, b, c) = s · 2^-16 px² beside its long edge
+    a→b (running sx in x), strictly inside the other two; or None."""
+    edge = _long_edge(rng, s, shape, c, sx)
+    if edge is None:
+        return None
+    a, b = edge
+    d = b - a
+    normal = np.array([-d[1], d[0]]) / np.hypot(*d)  # towards E > 0
+    v = np.rint((a + b) / 2 + normal * rng.uniform(*LONG_SHAPES[shape][2]) * UNIT).astype(int)
+    if _units_e(b, v, c) <= 0 or _units_e(v, a, c) <= 0 or _units_e(a, b, v) <= 0:
+        return None
+    return np.array([a, b, v], dtype=float) / UNIT
+
+
+def long_near_tie_case(rng) -> CoverageCase:
+    """r428 WP1, WP2: five triangles (not a mesh) on a :data:`~.cases.WINDOW`-px window at the
+    origin, each with one centre 2^-16 px² from an edge: inside a steep long right edge,
+    outside a diagonal long left edge, inside a shallow long right edge, inside a sliver's
+    long right edge, and inside a short right edge of a large triangle (:func:`near_tie_triangle`).
+    A step off the centre (to the right: steep, diagonal, sliver), a relative tolerance on the
+    products (``math.isclose``: diagonal, shallow, sliver), one on the area (all but the
+    sliver) and an absolute one (all) each flip a different set, so the set the student gets
+    wrong tells them apart (:mod:`.sample_steps`); the diagonal and shallow edges run the same
+    way in x, so no step along y flips both. float32 may fail the long ones (products of 10^5
+    px²), never the steep one or the short one."""
+    tris, used = [], set()
+    sx = int(rng.choice((1, -1)))
+    for s, shape in ((1, "steep"), (-1, "diagonal"), (1, "shallow"), (1, "sliver")):
+        xy = None
+        while xy is None:
+            c = rng.integers(2, WINDOW - 2, 2)
+            if (int(c[0]), int(c[1])) in used:
+                continue
+            sign = sx if shape != "steep" else int(rng.choice((1, -1)))
+            xy = _long_triangle(rng, s, shape, c * UNIT + UNIT // 2, sign)
+        used.add((int(c[0]), int(c[1])))
+        tris.append(xy if len(tris) % 2 == 0 else xy[[0, 2, 1]])
+    short = None
+    while short is None:
+        short = near_tie_triangle(rng, 1, large=True)
+    tris.append(np.roll(short, 1, axis=0))
+    label = (f"{LONG_NEAR_TIES}: five triangles, each with a centre 2^-16 px² from an edge "
+             "(as near as the 1/256 grid allows), four beside long edges (steep, diagonal, "
+             "shallow, a sliver's) and one beside a short edge of a large triangle")  # fmt: skip
+    return CoverageCase(label, np.array(tris), (0, 0), (WINDOW, WINDOW))
