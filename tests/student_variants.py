@@ -8277,3 +8277,50 @@ R428_VERTICES = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R428_VERTICES.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R428_VERTICES.items()})
+
+
+# == r434 (fixex10i, exercise 10.1, edge_bits): the reader's wrong pass (F1, across = 2^k + 1)
+# and half-named nmant (F2), as the reader wrote them ==========================================
+def _eb434_held(nmant_extra):
+    """A type's bits from ``np.finfo(t).nmant + nmant_extra`` (a float) or ``iinfo.bits``."""
+
+    def pick(bits):
+        for t in ("float32", "int32", "float64", "int64"):
+            d = np.dtype(t)
+            held = np.finfo(d).nmant + nmant_extra if d.kind == "f" else np.iinfo(d).bits
+            if held >= bits:
+                return t
+        return None
+
+    return pick
+
+
+def _eb434(relative_factor, pick=_eb_type):
+    """edge_bits, term by term, the relative factor's bits from ``relative_factor(a, s)``."""
+
+    def edge_bits(range_bits, across, sub_bits):
+        return tuple((n, pick(n)) for n in (2 * (range_bits + sub_bits) + 2,
+                                            2 * relative_factor(across, sub_bits) + 2))  # fmt: skip
+
+    return edge_bits
+
+
+R434_EDGE_BITS = {
+    "edge bits with ceil(log2(across - 1)) for a difference's bits (r434 w29)": (
+        "edge_bits", _eb434(lambda a, s: math.ceil(math.log2(a - 1)) + s),
+        "your relative count, 24, takes ⌈log2(across − 1)⌉ for the bits of a difference",
+        "the bits of across − 1 as ⌈log2(across − 1)⌉"),
+    "edge bits with ceil(log2((across - 1) * 2**s)) in grid steps (r434 w38)": (
+        "edge_bits", _eb434(lambda a, s: math.ceil(math.log2((a - 1) * 2**s))),
+        "a difference of 128 px needs 8 bits in pixels, not 7",
+        "the bits of across − 1 as ⌈log2(across − 1)⌉"),
+    "edge bits with a float holding np.finfo(t).nmant bits (r434 w13)": (
+        "edge_bits", _eb434(lambda a, s: (a * 2**s - 1).bit_length(), _eb434_held(0)),
+        "nmant counts the stored fraction bits only (23 for a 32-bit float)",
+        "a float's nmant for what it holds"),
+    "edge bits with a float holding np.finfo(t).nmant + 1 bits (r434 w30)": (
+        "edge_bits", _eb434(lambda a, s: (a * 2**s - 1).bit_length(), _eb434_held(1)),
+        "you take a float to hold its significand's bits only", "a float's sign bit not counted"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R434_EDGE_BITS.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R434_EDGE_BITS.items()})

@@ -40,7 +40,11 @@ slip) is rounded down and a count from the largest values, one bit tighter, pass
 ⌈log2 3⌉ = 2 bits beside a factor one bit wide, the centre bit a sign bit per factor too, and
 a form's own count slip beside another says what it does ("leaves out one bit", :func:`_own`);
 where no slip gives the answer, the recipe opens with what a wrong count says of itself, where
-it can be told (:func:`_implied`: the sub-pixel bits left out of a factor, across times them). The recipe is said once two different answers have failed
+it can be told (:func:`_implied`: the sub-pixel bits left out of a factor, across times them).
+r434 F1: a range of 2^k + 1 px (129), listed last, where ⌈log2(across − 1)⌉ for a difference's
+bits is one short (the ``exponent`` knob's fifth slip); F2: ``np.finfo(t).nmant`` taken for
+what a float holds (the hidden bit and the sign left out), told from the sign alone at 24
+bits (:data:`NMANT`). The recipe is said once two different answers have failed
 (:data:`HINTS`), with the worked count of one range the check does not use (:data:`WORKED`,
 r416 F4).
 """
@@ -78,10 +82,12 @@ WHAT = ("((absolute bits, type), (relative bits, type)), each type one of "
 #: rounded to nearest is rounded down (130 px: 32 bits, a 32-bit int, not 34 and a 64-bit
 #: float) and a count from the largest values is one bit tighter than term by term: that
 #: count holds every value too, and passes (:func:`tight`). Listed last, so that the first
-#: failure of every other slip stays where it was.
+#: failure of every other slip stays where it was. r434 F1: one across of 2^k + 1 px (129 px,
+#: 26 bits, a 32-bit int), where ⌈log2(across − 1)⌉ is one bit short (24 bits, a 32-bit float);
+#: listed last for the same reason.
 RANGES = ((20, 1024, 8), (16, 64, 4), (10, 16, 8), (11, 256, 4), (18, 512, 8), (23, 2048, 8),
           (24, 4096, 8), (8, 8, 2), (12, 32, 1), (16, 200, 8), (20, 1000, 8),
-          (12, 100, 4), (16, 130, 8), (12, 20, 4), (18, 300, 8))  # fmt: skip
+          (12, 100, 4), (16, 130, 8), (12, 20, 4), (18, 300, 8), (16, 129, 4))  # fmt: skip
 
 
 def budgets(range_bits: int, across: int, sub_bits: int) -> dict[str, BitBudget]:
@@ -347,6 +353,8 @@ def _raw(
         bits["relative"] += across.bit_length() - _exponent(across)
     elif exponent == "across rounded to nearest":  # r430 F1: round(log2(across))
         bits["relative"] += int(np.floor(np.log2(across) + 0.5)) - _exponent(across)
+    elif exponent == "across - 1's log2":  # r434 F1: ceil(log2(across - 1)), short at 2^k + 1
+        bits["relative"] += math.ceil(math.log2(across - 1)) - _exponent(across)
     elif exponent == "fractional log2":  # r419 c4, c5: int(2 * (log2(across) + s) + 2)
         bits["relative"] += float(np.log2(across)) - _exponent(across)
     if factor == "relative wider":  # r416 F2: a centre bit or a sign in the relative factor
@@ -418,6 +426,7 @@ _HELD = {
     "exactly": exact_bits,
     "width": lambda t: np.dtype(t).itemsize * 8,
     "no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "f"),
+    "nmant": lambda t: exact_bits(t) - 2 * (np.dtype(t).kind == "f"),  # r434 F2
     "int no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "i"),  # r416 F1
     ">": lambda t: exact_bits(t) - 1,  # held > bits: every type one bit short
 }
@@ -512,6 +521,15 @@ NEAREST = Slip("across's exponent rounded to nearest", lambda a, e, g: (
     f"{np.log2(a[1]):.2f}), but a difference up to {a[1] - 1:,} px needs "
     f"{_exponent(a[1])} bits in pixels, not {_exponent(a[1]) - 1}: round log2 up: "
     f"{_factor_words(a, 'relative')}"), "across rounded to nearest")  # fmt: skip
+#: r434 F1: the bits of a difference up to across − 1 px taken as ⌈log2(across − 1)⌉ (w29, w38):
+#: right except where across − 1 is a power of two.
+LESS_ONE = Slip("the bits of across − 1 as ⌈log2(across − 1)⌉", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, takes ⌈log2(across − 1)⌉ for the bits of a difference"
+    f"{_one_right(e, g, 'relative')}: a difference reaches across − 1 px, and a whole number n "
+    "has ⌈log2(n + 1)⌉ bits (n.bit_length()), not ⌈log2 n⌉, one fewer where n is a power of "
+    f"two: at {a[1]:,} px across, a difference of {a[1] - 1:,} px needs {_exponent(a[1])} bits "
+    f"in pixels, not {_exponent(a[1]) - 1}: {_factor_words(a, 'relative')}"),
+    "across - 1's log2")  # fmt: skip
 FRACTIONAL = Slip("a fractional log2 of across", lambda a, e, g: (
     f"your relative count, {g[1][0]}, doubles a fractional exponent, log2({a[1]:,}) = "
     f"{np.log2(a[1]):.2f}, and cuts the sum to a whole number{_one_right(e, g, 'relative')}: a "
@@ -601,6 +619,14 @@ NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     f"number up to 2^{exact_bits('float32') - 1} in size, of either sign, so "
     f"{exact_bits('float32')} bits with the sign, a 64-bit float {exact_bits('float64')}"),
     "no sign")  # fmt: skip
+#: r434 F2 (w13): np.finfo(t).nmant taken for what a float holds: the hidden bit and the sign
+#: left out (told apart from the sign alone where a count lies between: 24 bits, 53).
+NMANT = Slip("a float's nmant for what it holds", lambda a, e, g: (
+    "you take a float to hold np.finfo(t).nmant bits: nmant counts the stored fraction bits "
+    f"only ({exact_bits('float32') - 2} for a 32-bit float); the significand has a hidden "
+    f"leading 1 as well, so a 32-bit float holds {exact_bits('float32') - 1} significant bits "
+    f"with the hidden one, and a sign bit: {exact_bits('float32')} bits in all (a 64-bit "
+    f"float: {exact_bits('float64') - 2} + 2 = {exact_bits('float64')})"), "nmant")  # fmt: skip
 
 
 def _own(a, e, g, form: str, value: str, alone: str, part: str) -> str:
@@ -669,10 +695,10 @@ TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 KNOBS = Knobs(_with, {"absolute": (ABS_MORE, ABS_SHORT, ABS_TWO_SHORT),
                       "relative": (REL_BOUND, REL_LONG, REL_TWO_SHORT),
                       "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, REL_TWO_COORDS, ACROSS_BITS),
-                      "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH, NEAREST),
+                      "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH, NEAREST, LESS_ONE),
                       "count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES,
                                 BYTES_TYPED, TWICE, SUB_MULTIPLIED),
-                      "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER),
+                      "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER, NMANT),
                       "order": (SWAPPED,), "only": (ONLY_ABS, ONLY_REL)}, most=2)  # fmt: skip
 
 #: The recipe and the worked counts, said once two different answers have failed.
