@@ -8324,3 +8324,82 @@ R434_EDGE_BITS = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R434_EDGE_BITS.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R434_EDGE_BITS.items()})
+
+
+# == r432 (fixex06c, exercise 6.1): the reader's wrong pass (WP1), misnamed (MN1) and
+# half-named (HN1) variants
+def _r432_isclose_distance(e, ab, p, owns):
+    """WP1: np.isclose (atol 1e-8 px) on the signed distance E / |edge| as the tie test."""
+    d = e / np.hypot(*(ab[1] - ab[0]))
+    on = np.isclose(d, 0)
+    return ((d > 0) & ~on) | (on & owns)
+
+
+def _r432_plane_float32(xy, pixel, samples):
+    """MN1: E in float32 as A·x + B·y + C in window coordinates, the winding in float64."""
+    v = (np.rint(np.asarray(xy, float) * 256) / 256).astype(np.float32)
+    area = float(_r432_e64(v[0], v[1], v[2]))
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    p = (np.asarray(samples, np.float32) + np.float32([col, row])).astype(np.float32)
+    ok = np.ones(len(p), bool)
+    for k in range(3):
+        (ax, ay), (bx, by) = v[k], v[(k + 1) % 3]
+        e = -(by - ay) * p[:, 0] + (bx - ax) * p[:, 1] + ((by - ay) * ax - (bx - ax) * ay)
+        owns = by < ay or (by == ay and bx > ax)
+        ok &= (e >= 0) if owns else (e > 0)
+    return float(ok.mean())
+
+
+def _r432_e64(a, b, p):
+    a, b, p = (np.asarray(q, float) for q in (a, b, p))
+    return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
+
+
+def _r432_points(where):
+    """HN1: the rule at the standard pattern's positions (``"pattern"``), or at the samples
+    and the pixel centre counted as one more sample (``"centre too"``)."""
+    from teachraster.core.sample_patterns import sample_pattern
+
+    def coverage_fraction(xy, pixel, samples):
+        v = np.rint(np.asarray(xy, float) * 256) / 256
+        row, col = pixel
+        if where == "pattern":
+            p = sample_pattern(len(samples)) + [col, row]
+        else:
+            p = np.vstack([np.asarray(samples, float) + [col, row], [[col + 0.5, row + 0.5]]])
+        area = _r432_e64(v[0], v[1], v[2])
+        if area == 0:
+            return 0.0
+        if area < 0:
+            v = v[[0, 2, 1]]
+        inside = np.ones(len(p), bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = _r432_e64(a, b, p)
+            owns = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            inside &= (e >= 0) if owns else (e > 0)
+        return float(inside.mean())
+
+    return coverage_fraction
+
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R432 = {
+    "coverage with np.isclose (atol 1e-8 px) on the distance E / |edge|": (
+        "coverage_fraction", _r423_coverage(tie=_r432_isclose_distance),
+        "on the distance E / |edge|, or np.isclose", "tolerance on E"),
+    "coverage with E in float32 as A·x + B·y + C": (
+        "coverage_fraction", _r432_plane_float32, "you computed E in float32", "float32"),
+    "coverage at sample_pattern(S)'s positions, not the samples given": (
+        "coverage_fraction", _r432_points("pattern"),
+        "you tested other sample positions than the `samples` given", "own sample pattern"),
+    "coverage with the pixel centre as an extra sample": (
+        "coverage_fraction", _r432_points("centre too"),
+        "you counted the pixel centre as one more sample", "centre as an extra sample"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R432.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R432.items()})

@@ -104,6 +104,11 @@ R423_HARD = [
     ("near a tie: a sample 2⁻¹⁷ px² inside a 512 px right edge",
      [[2.375, -100], [2.37890625, 412], [-50, 150]], (156, 2),
      [[0.376953125, 1 / 512]]),
+    # r432 WP1: np.isclose on the distance (atol 1e-8 px) passed: the same step inside a
+    # 2048 px right edge (the sample 3.7e-9 px from it; E in float32 as b − a, p − a is exact)
+    ("near a tie: a sample 2⁻¹⁷ px² inside a 2048 px right edge",
+     [[2.375, -100], [2.37890625, 1948], [-50, 150]], (924, 2),
+     [[0.376953125, 1 / 512]]),
     # r423 WP2, WP3: the winding, or an edge's kind, decided before snapping passed: a
     # sliver whose winding flips when snapped; a top edge horizontal only once snapped
     ("a sliver whose winding flips when snapped",
@@ -240,6 +245,11 @@ POINTS = {
     "(row, col)": lambda pixel, samples: np.asarray(samples, float) + [pixel[0], pixel[1]],
     "(oy, ox)": lambda pixel, samples: np.asarray(samples, float)[:, ::-1] + [pixel[1], pixel[0]],
     "snapped": lambda pixel, samples: snap(sample_points(pixel, samples)),
+    # r432 HN1: the standard pattern in place of the given offsets; the centre as one more
+    "pattern": lambda pixel, samples: sample_pattern(len(samples)) + [pixel[1], pixel[0]],
+    "centre too": lambda pixel, samples: np.vstack(
+        [sample_points(pixel, samples), [[pixel[1] + 0.5, pixel[0] + 0.5]]]
+    ),
 }
 SNAPPING = {
     "even": snap,
@@ -284,6 +294,31 @@ def _any_sample_words(args, expected, got) -> str:
         f"you returned 1 because a sample is covered (here {k} of the {s}), as a pixel with "
         "one sample is covered or not: with S samples an edge through the pixel covers a "
         "share of it; count the samples covered and divide by S"
+    )
+
+
+def _own_pattern_words(args, expected, got) -> str:
+    """r432 HN1: the standard pattern's positions tested, not the ``samples`` given."""
+    _, pixel, samples = args
+    theirs = sample_pattern(len(samples)) + [pixel[1], pixel[0]]
+    moved = next((f"; here sample {k} is at {exact(a)}, the standard pattern's at {exact(b)}"
+                  for k, (a, b) in enumerate(zip(sample_points(pixel, samples), theirs))
+                  if (a != b).any()), "")  # fmt: skip
+    return (
+        "you tested other sample positions than the `samples` given (sample_pattern(S)'s?): "
+        "the offsets are an argument, any pattern, and sample s lies at (col + ox, row + oy) "
+        f"with (ox, oy) = samples[s]{moved}"
+    )
+
+
+def _centre_too_words(args, expected, got) -> str:
+    """r432 HN1: the pixel centre counted as an (S + 1)-th sample."""
+    _, pixel, samples = args
+    s = len(samples)
+    return (
+        f"you counted the pixel centre as one more sample: {s + 1} points, divided by {s + 1}; "
+        f"the fraction is over the {s} samples given only (the centre is no sample unless "
+        "the pattern puts one there)"
     )
 
 
@@ -411,6 +446,10 @@ ALONE_KNOBS = Knobs(fraction_with, {
              "given, each walked backwards (a left edge taken for a right one, a top for a "
              "bottom); decide them on the edges as they run once the triangle is turned "
              "(swap two vertices first)", "ties unturned"),
+    ],
+    "points": [
+        Slip("own sample pattern", _own_pattern_words, "pattern"),
+        Slip("centre as an extra sample", _centre_too_words, "centre too"),
     ],
     "count": [
         Slip("percentage", "that is a percentage (100 × the fraction); return the fraction "
@@ -650,12 +689,27 @@ def _e_float32(a, b, p, origin):
     return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
 
 
-def fraction_float32(xy, pixel, samples, local: bool) -> float:
-    """The rule with E computed in float32, in window coordinates or (``local``) relative to
-    the pixel's corner."""
+def _e_plane32(a, b, p, origin):
+    """E in float32 as the plane A·x + B·y + C (r432 MN1): A = −(by − ay), B = bx − ax,
+    C = (by − ay)·ax − (bx − ax)·ay, summed (A·x + B·y) + C, float32 throughout."""
+    a, b = (np.asarray(a) - origin).astype(np.float32), (np.asarray(b) - origin).astype(np.float32)
+    p = (np.asarray(p) - origin).astype(np.float32)
+    big_a, big_b = -(b[1] - a[1]), b[0] - a[0]
+    c = (b[1] - a[1]) * a[0] - (b[0] - a[0]) * a[1]
+    return big_a * p[..., 0] + big_b * p[..., 1] + c
+
+
+#: E's float32 forms a student writes: (b − a)·(p − a) and the plane A·x + B·y + C
+FLOAT32_FORMS = {"difference": _e_float32, "plane": _e_plane32}
+
+
+def fraction_float32(xy, pixel, samples, local: bool, form: str = "difference") -> float:
+    """The rule with E computed in float32 (``form``: :data:`FLOAT32_FORMS`), in window
+    coordinates or (``local``) relative to the pixel's corner."""
     origin = np.array([pixel[1], pixel[0]], dtype=float) if local else np.zeros(2)
     v = snap(np.asarray(xy, dtype=float))
-    area = float(_e_float32(v[0], v[1], v[2], origin))
+    e_of = FLOAT32_FORMS[form]
+    area = float(e_of(v[0], v[1], v[2], origin))
     if area == 0:
         return 0.0
     if area < 0:
@@ -663,24 +717,35 @@ def fraction_float32(xy, pixel, samples, local: bool) -> float:
     points = sample_points(pixel, samples)
     inside = np.ones(len(points), dtype=bool)
     for k in range(3):
-        e = _e_float32(v[k], v[(k + 1) % 3], points, origin)
+        e = e_of(v[k], v[(k + 1) % 3], points, origin)
         inside &= (e >= 0) if kind_of(v[k], v[(k + 1) % 3]) in TOP_LEFT else (e > 0)
     return float(inside.mean())
 
 
-def _float32_words(args, expected, got) -> str:
-    xy, pixel, samples = args
-    e, _, _ = _edge_table(xy, pixel, samples)
-    k, s = np.unravel_index(int(np.argmin(np.where(e == 0, np.inf, np.abs(e)))), e.shape)
-    size = int(np.abs(np.asarray(xy, dtype=float)).max())
-    bits = 2 * size.bit_length() + 17  # two products of (1/256)- and (1/512)-grid lengths
-    return (
-        "you computed E in float32: its 24 bits hold E exactly only in small triangles; here "
-        f"the coordinates reach {size} px (a 4K frame) and E's products, in steps of 2⁻¹⁷ "
-        f"px², need about {bits} bits, so a sample just off an edge lands on the wrong side "
-        f"(sample {s} has E = {int(round(float(e[k, s]) * 131072))}/131072 px² exactly). "
-        "Compute E in float64 (53 bits: exact in any frame up to 2¹⁷ px) or in integers"
-    )
+def _float32_words(form: str = "difference"):
+    def words(args, expected, got) -> str:
+        xy, pixel, samples = args
+        e, _, _ = _edge_table(xy, pixel, samples)
+        k, s = np.unravel_index(int(np.argmin(np.where(e == 0, np.inf, np.abs(e)))), e.shape)
+        size = int(np.abs(np.asarray(xy, dtype=float)).max())
+        bits = 2 * size.bit_length() + 17  # two products of (1/256)- and (1/512)-grid lengths
+        # r432 MN1: the plane form in float32 was told "a tolerance on E"
+        plane = (
+            " In the form A·x + B·y + C the terms A·x and C are products of whole coordinates, "
+            "far larger than E, and E is what is left when they cancel: float32 loses E's last "
+            "bits there sooner than in the form (b − a)·(p − a)."
+            if form == "plane" else ""
+        )  # fmt: skip
+        return (
+            "you computed E in float32: its 24 bits hold E exactly only in small triangles; "
+            f"here the coordinates reach {size} px and E's products, in steps of 2⁻¹⁷ px², "
+            f"need about {bits} bits, so a sample just off an edge lands on the wrong side "
+            f"(sample {s} has E = {int(round(float(e[k, s]) * 131072))}/131072 px² exactly)."
+            f"{plane} Compute E in float64 (53 bits: exact in any frame up to 2¹⁷ px) or in "
+            "integers"
+        )
+
+    return words
 
 
 def _floor_words(args, expected, got) -> str:
@@ -728,13 +793,19 @@ R423_MISTAKES = [
     ),
     # a float32 computation that gives this very answer (gives, not fits): float32 named
     # as the cause however far a whole sample moves the fraction (diagnosis._honest)
+    # r432 MN1: the plane form A·x + B·y + C too (it fell through to "tolerance on E"),
+    # before TOLERANCE, which also fits it
     *(
         Mistake(
             "float32",
-            _float32_words,
-            gives=functools.partial(fraction_float32, local=s),
+            _float32_words(form),
+            gives=functools.partial(fraction_float32, local=s, form=form),
             only_whole=True,
+            # the plane form gives the answers of a relative np.isclose of E's two products
+            # on every case: named float32 only where the code reads float32
+            reads="float32" if form == "plane" else None,
         )
+        for form in FLOAT32_FORMS
         for s in (False, True)
     ),
     Mistake(

@@ -466,7 +466,11 @@ def show_two_resolves(resolve, resolve_srgb, axes=None):
         rows.append((title.split(":")[0], got[row]))
     for (name, values), style in zip(rows, ("o-", "s--")):
         artists += axes[2].plot(values, style, ms=3, label=name)
-    axes[2].set_title(f"row {row} (orange line):\nthe codes shown", fontsize="small")
+    # r432 S3: with neither resolve drawn there is no orange line (nor data) to point at
+    where = (
+        f"row {row} (orange line):\nthe codes shown" if rows else f"row {row}: not implemented yet"
+    )
+    axes[2].set_title(where, fontsize="small")
     axes[2].set_xlabel("column", fontsize="x-small")
     axes[2].set_ylim(-0.05, 1.55)  # the key above the curves, none hidden under it
     axes[2].set_yticks([0, 0.5, 1])
