@@ -8403,3 +8403,71 @@ R432 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R432.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R432.items()})
+# == r433 (fixex07r, exercise 7.4: a None from the student's own helper named; λ/w not
+# renormalised, λ·w and (u, v) in texels named; junk mixing row and col not counted) ========
+_R433_LOD_NO_RETURN = """
+def pixel_lod(xy, w, uv, size, row, col):
+    _right_lod(xy, w, uv, size, row, col)
+"""
+_R433_TRI_NO_RETURN = """
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max(lod, 0.0), q)
+    lower = int(np.floor(lam)); upper = min(lower + 1, q); t = lam - lower
+    if t == 0:
+        return bilinear(pyramid[lower], uv, wrap)
+    (1 - t) * bilinear(pyramid[lower], uv, wrap) + t * bilinear(pyramid[upper], uv, wrap)
+"""
+_R433_WEIGHTS = """
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    lod = pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)
+    lam = barycentric(xy, [[col + 0.5, row + 0.5]])[0]
+    return trilinear(pyramid, {UV}, lod, wrap)
+"""
+_R433_JUNK = """
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    return trilinear(pyramid, {UV}, {LOD}, wrap)
+"""
+_R433_TIMES_W = "(lam * w / (lam * w).sum()) @ np.asarray(uv, float)"
+_R433_TEXELS = ("(perspective_weights(lam[None], w)[0] @ np.asarray(uv, float)) * "
+                "[np.shape(pyramid[0])[1], np.shape(pyramid[0])[0]]")  # fmt: skip
+#: The junk of r433 F2: a vertex's (u, v) mixed with the pixel's row and col (never counted).
+R433_JUNK = {
+    "pixel sample junk: vertex 0's (u, v) plus (col, row)/64, λ = row/10": (
+        "np.asarray(uv, float)[0] + [col / 64, row / 64]",
+        "row / 10",
+    ),
+    "pixel sample junk: vertex 1's (u, v) minus (col/50, row/40), λ = col/7": (
+        "np.asarray(uv, float)[1] - [col / 50, row / 40]",
+        "col / 7",
+    ),
+    "pixel sample junk: vertex 2's (u, v) times (row + col)/60, λ = 1": (
+        "np.asarray(uv, float)[2] * (row + col) / 60",
+        "1.0",
+    ),
+}
+R433_PIXEL = {
+    "pixel sample whose own pixel_lod has no return": (
+        "pixel_sample", _r426("pixel_sample", _R433_LOD_NO_RETURN),
+        "called with λ = None: your pixel_lod returned nothing here (a missing `return`?)",
+        "raised"),
+    "pixel sample whose own trilinear has no return where t ≠ 0": (
+        "pixel_sample", _r426("pixel_sample", _R433_TRI_NO_RETURN),
+        "returned None, which came from your trilinear: it returns None at λ = 0.267, (u, v) = "
+        "(1.792, 0.061)", "none"),
+    "pixel sample with λ/w weights not renormalised": (
+        "pixel_sample",
+        _r426("pixel_sample", _R433_WEIGHTS.format(UV="(lam / w) @ np.asarray(uv, float)")),
+        "your weights λᵢ/wᵢ do not sum to 1 (here 0.95)", "λ/w not renormalised"),
+    "pixel sample with λ·w weights": (
+        "pixel_sample", _r426("pixel_sample", _R433_WEIGHTS.format(UV=_R433_TIMES_W)),
+        "your (u, v) is weighted by λᵢ·wᵢ", "λ·w"),
+    "pixel sample with (u, v) in texels": (
+        "pixel_sample", _r426("pixel_sample", _R433_WEIGHTS.format(UV=_R433_TEXELS)),
+        "you passed (u, v) in texels (times W = 8, H = 8)", "(u, v) in texels"),
+    **{label: ("pixel_sample", _r426("pixel_sample", _R433_JUNK.format(UV=u, LOD=lod)),
+               "with the triangle and the pixel moved together by one quad", "value")
+       for label, (u, lod) in R433_JUNK.items()},
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R433_PIXEL.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R433_PIXEL.items()})

@@ -26,6 +26,7 @@ from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake, PackageAnswer, case_key, copies, variant_mistakes
 from .pixel_level import FLOOR_UV, draw_lod_case, expected_lod, other_quads
 from .quad_difference import FLOOR, inside, value_at
+from .running import WrongAnswerType
 from .scalars import num, vec
 from .texture_filtering import (
     Pyramid,
@@ -41,6 +42,12 @@ from .tolerance import close
 
 def _uv(xy, w, uv, x, y, **kw) -> np.ndarray:
     return np.array([value_at(xy, w, np.asarray(uv, float)[:, k], x, y, **kw) for k in (0, 1)])
+
+
+def _unnormalised_uv(xy, w, uv, x, y) -> np.ndarray:
+    """(u, v) weighted by λᵢ/wᵢ without dividing by their sum (r433 F3)."""
+    lam = np.array([value_at(xy, w, e, x, y, affine=True) for e in np.eye(3)])
+    return (lam / np.asarray(w, float)) @ np.asarray(uv, float)
 
 
 def pixel_uv(xy, w, uv, row: int, col: int) -> np.ndarray:
@@ -147,6 +154,9 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
         "the quad's (u, v)": tri(u=lane),
         "affine (u, v)": tri(u=affine),
         "(u, v) at the corner": tri(u=corner),
+        "λ/w not renormalised": tri(u=_unnormalised_uv(xy, w, uv, col + 0.5, row + 0.5)),
+        "λ·w": tri(u=_uv(xy, w, uv, col + 0.5, row + 0.5, times_w=True)),
+        "(u, v) in texels": tri(u=at * [size[1], size[0]]),
         "size read as (W, H)": tri(lam=expected_lod(xy, w, uv, size[::-1], row, col)),
         "the last level's size": tri(
             lam=expected_lod(xy, w, uv, np.shape(pyramid[-1])[:2], row, col)
@@ -168,6 +178,12 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
         "⌊λ⌋'s level alone": tri(levels="lower"),
         "level 0 only": tri(levels="finest"),
     }
+
+
+def _weight_sum(args) -> float:
+    """Σ λᵢ/wᵢ at the pixel's centre of the case ``args``."""
+    _, xy, w, _, row, col, _ = args
+    return float(np.sum(_unnormalised_uv(xy, w, np.ones((3, 1)), col + 0.5, row + 0.5)))
 
 
 def _channels(how: str):
@@ -202,6 +218,16 @@ MISTAKES = {
     ),
     "affine (u, v)": "your (u, v) at the pixel is interpolated affinely: which interpolation "
     "does a texture coordinate get (lesson 04), the same as 7.1's lanes?",
+    "λ/w not renormalised": lambda a, e, g: (
+        f"your weights λᵢ/wᵢ do not sum to 1 (here {num(_weight_sum(a))}): perspective-correct "
+        "weights are λᵢ/wᵢ divided by their sum (lesson 04)"
+    ),
+    "λ·w": "your (u, v) is weighted by λᵢ·wᵢ: perspective divides by w, the weights are "
+    "λᵢ/wᵢ over their sum (lesson 04)",
+    "(u, v) in texels": lambda a, e, g: (
+        f"you passed (u, v) in texels (times W = {np.shape(a[0][0])[1]}, H = "
+        f"{np.shape(a[0][0])[0]}): trilinear takes (u, v) normalised, 0–1 across the texture"
+    ),
     "(u, v) at the corner": "you took (u, v) at the pixel's corner (col, row): where is a pixel "
     "shaded?",
     "size read as (W, H)": lambda a, e, g: (
@@ -284,6 +310,10 @@ def _call(fn, args):
         if key is not None:
             records[key] = _raised_in(exc)
         raise
+    if answer is None:  # r433 F1: say which of their own functions gave the None
+        words = _none_from_own(args)
+        if words is not None:
+            raise WrongAnswerType(words)
     return as_texel_value(answer)
 
 
@@ -308,14 +338,16 @@ def _raised_in(exc) -> tuple[str, dict] | None:
             code, held = tb.tb_frame.f_code, tb.tb_frame.f_locals
             values = [held.get(v) for v in code.co_varnames[1 : code.co_argcount]]
             said = dict(zip(CALLEES[name], values))
-            frames.append((name, {k: np.array(v, dtype=float, copy=True)
-                                  for k, v in said.items() if _numbers(v)}))  # fmt: skip
+            frames.append((name, {k: None if v is None else np.array(v, dtype=float, copy=True)
+                                  for k, v in said.items() if v is None or _numbers(v)}))  # fmt: skip
         tb = tb.tb_next
     if not frames:
         return None
     # r426 F1: the outermost that got a NaN (where it came in), else the innermost (their
     # bilinear raising inside their trilinear was blamed on the trilinear, whose check passes)
-    bad = [f for f in frames if not all(np.all(np.isfinite(v)) for v in f[1].values())]
+    # r433 F1: a None argument is kept apart from NaN (np.array(None, float) is nan)
+    bad = [f for f in frames
+           if not all(v is not None and np.all(np.isfinite(v)) for v in f[1].values())]  # fmt: skip
     name, values = bad[0] if bad else frames[-1]
     outer = frames[0][0]
     return (name if name == outer else f"{name} (which your {outer} calls)"), values
@@ -409,6 +441,9 @@ def _raised_inside(name: str, values: dict, args, error: str) -> str:
     ``values`` on the case of ``args``: a None met in an operation (a function without
     ``return``), and 7.3's words for a level above q, before the generic "does its own check
     pass?" (r426 F1: a missing upper clamp in their trilinear was a bare IndexError)."""
+    nones = [k for k, v in values.items() if v is None]
+    if nones:
+        return _none_inside(name, nones)
     bad = [k for k, v in values.items() if not np.all(np.isfinite(v))]
     shown = ", ".join(f"{k} = {vec(v) if v.size > 1 else num(float(v))}" for k, v in values.items())
     bare = name.split(" (")[0]
@@ -429,6 +464,40 @@ def _raised_inside(name: str, values: dict, args, error: str) -> str:
                 "did your pixel_lod return here?")  # fmt: skip
     return (f": it raised inside your {name}, called with {shown}" if shown else
             f": it raised inside your {name}") + "; does its own check pass?"  # fmt: skip
+
+
+def _none_inside(name: str, nones: list) -> str:
+    """r433 F1: a None argument (a helper without ``return``) was told as "λ = nan"."""
+    if nones == ["λ"]:
+        return (f": it raised inside your {name}, called with λ = None: your pixel_lod returned "
+                "nothing here (a missing `return`?); 7.1's check says so")  # fmt: skip
+    said = " and ".join(f"{k} = None" for k in nones)
+    return (f": it raised inside your {name}, called with {said}: the function that computes "
+            f"{' and '.join(nones)} returned nothing (a missing `return`?)")  # fmt: skip
+
+
+def _none_from_own(args) -> str | None:
+    """r433 F1: where the student's pixel_sample returned None, the words for their own 7.1
+    pixel_lod or 7.3 trilinear returning None on this case (the None came from there), or
+    None."""
+    pyramid, xy, w, uv, row, col, wrap = copies(args)
+    lod = expected_lod(xy, w, uv, level_size(pyramid), row, col)
+    at = pixel_uv(xy, w, uv, row, col)
+    calls = (("pixel_lod", "7.1", (xy, w, uv, level_size(pyramid), row, col), ""),
+             ("trilinear", "7.3", (pyramid, at.copy(), lod, wrap),
+              f" at λ = {num(lod)}, (u, v) = {vec(at)}"))  # fmt: skip
+    for name, task, call_args, where in calls:
+        mine = _own(name)
+        if mine is None:
+            continue
+        try:
+            value = mine(*call_args)
+        except Exception:  # noqa: BLE001 - the student's code
+            continue
+        if value is None:
+            return (f"returned None, which came from your {name}: it returns None{where} (a "
+                    f"missing `return`?); {task}'s check fails on it")  # fmt: skip
+    return None
 
 
 def _fix_lod(args, expected, got) -> str:
@@ -506,7 +575,24 @@ def _not_tried(fn, args, expected, got) -> str | None:
         return (f": with 1/3 of a texel added to every vertex's (u, v) the filtered value "
                 f"moves from {_shown(expected, right)} to {_shown(right, expected)}, yours stays "
                 f"{_shown(got, got)}: does your value follow this pixel's (u, v)?" + HINT[1:])  # fmt: skip
-    return _same_elsewhere(fn, args, expected, got)
+    return _same_elsewhere(fn, args, expected, got) or _moved_together(fn, args, got)
+
+
+def _moved_together(fn, args, got) -> str | None:
+    """The words for a value that changes where the triangle and the pixel move together by
+    one quad (2 pixels right and down: the same λ, the same (u, v)), or None (r433 F2: junk
+    mixing a vertex's (u, v) with the pixel's row and col unlocked the steps)."""
+    pyramid, xy, w, uv, row, col, wrap = args
+    moved = (*copies((pyramid,)), np.asarray(xy, float) + 2, *copies((w, uv)), row + 2, col + 2,
+             wrap)  # fmt: skip
+    mine = _value(fn, moved)
+    if mine is not None and np.shape(mine) == np.shape(got) and np.allclose(mine, got, atol=1e-4):
+        return None
+    return (f": with the triangle and the pixel moved together by one quad (2 pixels right and "
+            f"down, to pixel ({row + 2}, {col + 2})) the filtered value stays the same; yours "
+            f"goes from {_shown(got, got)} to {'no value' if mine is None else _shown(mine, mine)}"
+            ": does your value depend on the pixel's place in the triangle only (its λ, its "
+            "(u, v))?" + HINT[1:])  # fmt: skip
 
 
 def _same_elsewhere(fn, args, expected, got) -> str | None:
