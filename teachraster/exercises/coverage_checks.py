@@ -1242,7 +1242,9 @@ def _exercise(name: str, cases, call, scene=None) -> Exercise:
         answers=(PackageAnswer(rasterize), *TIE_RULE_ANSWERS), compose=compose,
         constant=constant(name),
         hints=HINTS,
-        reference=("teachraster.exercises.coverage",),  # expected_coverage (r14 09-1)
+        # expected_coverage (r14 09-1); the near ties' triangles and their expected centres
+        # (r428: built by near_ties, whose functions a student's call must not pass unseen)
+        reference=("teachraster.exercises.coverage", "teachraster.exercises.near_ties"),
         raised_words=_box_raised if name == "fill" else None,
         tool_note=_package_edge_function_note,
     )  # fmt: skip

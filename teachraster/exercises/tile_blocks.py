@@ -1393,6 +1393,9 @@ def exercise(scene) -> Exercise:
         # r114 D8-1: the checker's own verdict, handed in or called, passed all cases: listed
         # as an answer, every function of this module is watched and not counted
         answers=(PackageAnswer(expected_block, words=CHECKER_WORDS),),
+        # the cases' blocks and grids are built there too, on some draws only: their
+        # functions are watched whatever this check's cases happened to call
+        reference=("teachraster.exercises.block_arithmetic", "teachraster.exercises.block_grid"),
     )  # fmt: skip
 
 
