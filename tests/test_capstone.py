@@ -145,8 +145,9 @@ WRONG = [
      "interpolation", "the barycentric exercise's check, on its own cases, says: at p="),
     ("floor_bilinear", {"bilinear": lambda t, uv, w: np.zeros(3)}, "texture filtering",
      "your function returns (0, 0, 0) on every case"),
+    # r423 (fixex06b): named, not only "your answer holds NaN"
     ("cube_msaa", {"resolve": lambda c, i, b: np.asarray(c)[0]}, "resolve",
-     "your answer holds NaN"),
+     "that is sample 0's colour as given"),
     # r137 D12-1: the two panes' alphas differ (0.6, 0.45), so the pane's own 1 − α fails
     ("glass_sorted", {"a_buffer": _own_alpha}, "sorting", "the A-buffer's resolve gives"),
     ("glass_sorted", {"a_buffer": _reset}, "sorting", "your alpha 1.18 is above 1"),
