@@ -308,4 +308,4 @@ def test_s4_to_s7_text():
     assert 'Ek\'s "draw the edges of the triangle" first) avoids it' not in stepping
     assert "*edge coherence* (Foley, van Dam, Feiner and Hughes, §3.6" in stepping
     gouraud = " ".join(_source("c24b-gouraud-text").split())
-    assert "his answer is perspective-correct interpolation (lesson 04)" in gouraud
+    assert "Ek's §2 fills the spans with perspective-correct interpolation (lesson 04)" in gouraud
