@@ -2256,6 +2256,18 @@ def test_11_r261_depth_test_off_is_always_in_every_api_table():
     w.close()
 
 
+def _lesson_11_section(cells, number):
+    """The markdown of lesson 11's section ``number``, its cells joined, whitespace folded."""
+    text, inside = [], False
+    for c in cells:
+        src = "".join(c["source"])
+        if c["cell_type"] == "markdown" and src.startswith("## "):
+            inside = src.startswith(f"## {number}. ")
+        if inside and c["cell_type"] == "markdown":
+            text.append(" ".join(src.split()))
+    return " ".join(text)
+
+
 def test_11_r261_hi_z_is_said_to_be_modelled_at_one_sample_only():
     """Review r261 W1: at 4 samples the hi_z view read "Hi-Z: 0" in every scene and Question
     4's pixel failed_depth, and nothing said that teachraster replays Hi-Z at one sample
@@ -2269,8 +2281,9 @@ def test_11_r261_hi_z_is_said_to_be_modelled_at_one_sample_only():
     assert ns.stopped[ns.hz_rec.triangle]["hi_z"] > 0  # at 1 sample Hi-Z rejects it there
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
     text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
-    assert "teachraster replays Hi-Z at **one sample per pixel only**" in text["be99b4cd"]
-    assert "GPUs keep Hi-Z under MSAA" in text["be99b4cd"]
+    s5 = _lesson_11_section(cells, 5)
+    assert "teachraster replays Hi-Z at **one sample per pixel only**" in s5
+    assert "GPUs keep Hi-Z under MSAA" in s5
     assert "show `hi_z` for `cube`, with 1 sample" in text["230a6ce0"]
     assert "GPUs keep it under MSAA" in text["bae649e5"]
     assert "<i>not modelled with MSAA</i>" in text["fe558b7e"]
@@ -2302,16 +2315,16 @@ def test_11_r261_hi_z_bound_and_the_two_names_mapped():
     assert ns.hz_rec.depth_before <= ns.hz_farthest < ns.hz_nearest  # the tile's farthest
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
     text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
-    s5 = text["be99b4cd"]
+    s5 = _lesson_11_section(cells, 5)
     assert "How can it know the block's nearest depth without interpolating it?" in s5
     assert "smallest of the triangle's three vertex depths" in s5
     assert "the plane at the tile's four corner pixel centres, each clamped to the range" in s5
     assert "(its fragments in that 8×8 tile)" not in text["fe558b7e"]
-    # r274 C2: cell 4 names the same bound Question 4 prints (the tighter of the two)
-    assert (
-        "the tighter of two: the triangle's depth plane at the tile's corners, and its "
-        "nearest vertex" in text["0e705df6"]
-    )
+    # r274 C2: §5 names the bound Question 4 prints (the tighter of the two); r431 S3: §1
+    # names Hi-Z only and sends the student to §5, where it is explained
+    assert "the tighter of the two bounds" in s5
+    assert "tighter" not in text["0e705df6"] and "depth plane" not in text["0e705df6"]
+    assert "rejected by **hierarchical z** (Hi-Z, §5)" in text["0e705df6"]
     assert "the block's nearest depth is the triangle's depth plane" not in text["0e705df6"]
     # S1: both names in one table
     rows = [line for line in s5.split(" | ") if line]
@@ -2338,7 +2351,7 @@ def test_11_r274_05a_overdraw_is_depth_complexity_minus_one():
     assert ns.wasted_05a == int((ns.passed[covered] - 1).sum()) > 0
     assert int((ns.over[covered] - 1).sum()) > ns.wasted_05a
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
-    s5 = next(" ".join("".join(c["source"]).split()) for c in cells if c.get("id") == "be99b4cd")
+    s5 = _lesson_11_section(cells, 5)
     assert "Lesson 05a used the usual meaning" in s5
     assert "Here that is `depth_complexity` − 1 at each covered pixel" in s5
     cells = json.loads((ROOT / "notebooks" / "05a_zbuffer.ipynb").read_text())["cells"]
@@ -2593,6 +2606,48 @@ def test_11_r106_colour_bar_quads_and_why_the_band_is_deeper_in_the_middle():
     assert 0 < ns.fight_gap[0] < ns.step16 / 2  # v1's gap: small but not 0
     assert 0.4 < ns.fight_gap[0] / (ns.step16 / 2) < 0.6  # "about half of the half step"
     assert "uses up about half of the half step" in text
+
+
+def test_11_r431_test_order_hi_z_in_section_5_and_the_figures_it_reads():
+    """r431 S1: "the pipeline's order" named the history's order of tests, not the GPU's
+    (hardware tests Hi-Z on tiles before fine coverage: Giesen 2011, part 7). S3: §1 names
+    Hi-Z and points to §5; Question 4 comes right after the Hi-Z figure; the NaN view has a
+    section of its own. S4: §5 one paragraph per printed result (no 600-word cell before any
+    output). S6: each rejected block is outlined, so the "pieces" can be seen. S7: the NaN
+    zoom has a tick every other pixel. M1: no tool shows a hi_z row."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    ids = [c.get("id") for c in cells]
+    text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
+    s1 = text["0e705df6"]
+    assert "pipeline's order" not in s1 and "in the order the history checks them" in s1
+    assert "*A trip through the Graphics Pipeline 2011*, part 7" in s1
+    # Question 4 right after the figure's reading; the NaN view its own section
+    assert ids.index("230a6ce0") == ids.index("5f1c0a11") + 1 == ids.index("19855fe8") + 2
+    heads = [t for c, t in zip(cells, text.values()) if c["cell_type"] == "markdown"
+             and t.startswith("## ")]  # fmt: skip
+    assert [h.split(".")[0] for h in heads] == ["#", "## 1", "## 2", "## 3", "## 4", "## 5",
+                                              "## 6", "## 7", "## 8", "## Summary"]  # fmt: skip
+    assert heads[6].startswith("## 6. A NaN in the frame")
+    assert ids.index("nanmd") < ids.index("nanscenes") < ids.index("0de6a9ec")
+    # no markdown cell of §5 or §6 runs past 250 words of prose (tables aside)
+    start, end = ids.index("be99b4cd"), ids.index("0de6a9ec")
+    for c in cells[start:end]:
+        if c["cell_type"] == "markdown":
+            lines = "".join(c["source"]).splitlines()
+            prose = " ".join(ln for ln in lines if not ln.startswith("|"))
+            assert len(prose.split()) <= 250, c.get("id")
+    assert "nor for a `hi_z` row" not in text["1069de28"]
+    assert "Nor will you find a `hi_z` row there" in text["1069de28"]
+    ns = lesson("11_debugging_a_frame")
+    # S6: one outline per rejected block; each block's pixels lie in one tile
+    assert int(ns.log.block_rejected.sum()) > 1 and len(ns.sides) >= 4
+    assert "pieces of a few pixels" in text["5f1c0a11"]
+    assert "tile lines (orange)" in text["5f1c0a11"]
+    # S7: the zoom's ticks, every other pixel
+    assert len(ns.zoom_cols) >= 4 and len(ns.zoom_rows) >= 4
+    assert set(np.diff(ns.zoom_cols)) == {2} == set(np.diff(ns.zoom_rows))
 
 
 # -- 09 texture filtering -----------------------------------------------------------------------

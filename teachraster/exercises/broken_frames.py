@@ -382,7 +382,7 @@ _NEEDLE_TOP = [[[8, 13.5], [56, 25.5], [56, 25.6]]]
 
 def _pixels(parts, reverse_depth: bool = False) -> Frame:
     """Render ``parts`` [(triangles in pixels, depth, premultiplied RGBA)] in order over the
-    wall's settings; a part with alpha < 1 (glass) writes no depth (lesson 11 §6). With
+    wall's settings; a part with alpha < 1 (glass) writes no depth (lesson 11 §7). With
     ``reverse_depth`` every depth d is drawn at 1 - d (the data mapped the other way round,
     not a setting: the test still keeps the smaller)."""
     xy = [t for tris, *_ in parts for t in tris]

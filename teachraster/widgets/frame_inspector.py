@@ -45,7 +45,7 @@ VIEWS = ("image", *KINDS)
 
 
 #: The "nan" view's label on the built-in scenes: render refuses a NaN input, so it is 0 there
-#: (lesson 11, §5, prints it for every scene); it stays offered, as the overlay to know.
+#: (lesson 11, §6, prints it for every scene); it stays offered, as the overlay to know.
 NAN_ON_SCENES = "nan (0 on built-in scenes)"
 
 

@@ -5,11 +5,15 @@ history* (RenderDoc, PIX): every draw that touched the pixel, in order, with the
 killed each fragment and the depth before and after. ``frame.history(row, col)`` is that
 for a :func:`~teachraster.pipeline.render_triangles.render` made with ``trace=True``: one
 :class:`HistoryRecord` per (triangle, sample) for every triangle whose screen bounding box
-(after clipping) reaches the pixel, in submission order, with the *first* test of the
-pipeline's order that stopped it:
+(after clipping) reaches the pixel, in submission order, with the *first* test that stopped
+it, in the order the history checks them:
 
     "culled" -> "not_covered" (which edge, how far outside) -> "hi_z" -> "failed_depth"
     -> "passed"
+
+That is not the GPU's order of stages: hardware tests Hi-Z on whole tiles before fine
+coverage (Giesen, *A trip through the Graphics Pipeline 2011*, part 7); here a missed centre
+is "not_covered" even in a tile Hi-Z rejected.
 
 A centre a triangle does not cover is refused for a reason (``HistoryRecord.reason``,
 :data:`REASONS`) that names the edges as a student reads the triangle, v1, v2, v3 in the
@@ -55,7 +59,7 @@ from ..visibility.depth import quantize
 from ..visibility.zbuffer import COMPARE_OFF, COMPARE_ON, passed_on_arrival
 from .edge_names import CLIP_EDGE, INPUT_EDGE, SEAM, piece_edges
 
-#: The outcomes, in the pipeline's order of tests (the first that failed is reported).
+#: The outcomes, in the order the history checks them (the first that failed is reported).
 OUTCOMES = ("culled", "not_covered", "hi_z", "failed_depth", "passed")
 
 #: Why a centre (sample) was "not_covered". The reason is the triangle's: where several
