@@ -2352,11 +2352,14 @@ def test_11_r274_05a_overdraw_is_depth_complexity_minus_one():
     assert int((ns.over[covered] - 1).sum()) > ns.wasted_05a
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
     s5 = _lesson_11_section(cells, 5)
-    assert "Lesson 05a used the usual meaning" in s5
+    assert "Lesson 05a §3 used the usual meaning" in s5
     assert "Here that is `depth_complexity` − 1 at each covered pixel" in s5
     cells = json.loads((ROOT / "notebooks" / "05a_zbuffer.ipynb").read_text())["cells"]
     text = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
     assert "inspector counts it as its <code>depth_complexity</code> view minus one" in text
+    # r444 C2: 05a §2 used "overdraw" for every layer (lesson 11's other meaning); now neither
+    assert "the overdraw (every layer of fragments reads the buffer again)" not in text
+    assert "the layers of fragments per pixel (every layer reads the buffer again)" in text
 
 
 def test_11_r274_the_inspector_hint_under_question_1_names_no_colour():
@@ -6731,3 +6734,22 @@ def test_07_review_r389_far_text_drift_and_two_predictions():
     (w_text,) = [" ".join(c.split()) for c in cells if c.startswith("With $w_1 = 10^{-3}$")]
     assert "The float32 column is small too" in w_text and "`perspective_w_scale`" in w_text
     assert "*Depth Bias*; `D3D11_RASTERIZER_DESC` |" in cells[5]
+
+
+def test_11_r444_the_bounds_named_the_dashes_gone_and_the_summary_covers_every_section():
+    """Review r444: C1, §5 called the vertex bound "coarser" where Question 4 prints it the
+    tighter; FIG1, two dashed copies of a shared edge drew one solid line, so the unlit
+    triangles are hatched; S4, the Summary had no line for §6 (NaN) or §4's shared edges; S5,
+    "this frame keeps nothing else per pixel" forgot its depth."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    s5 = _lesson_11_section(cells, 5)
+    assert "coarser bound" not in s5 and "neither is always the tighter" in s5
+    text = {c.get("id"): " ".join("".join(c["source"]).split()) for c in cells}
+    whole = " ".join(text.values())
+    assert "The three dashed" not in whole and "The three hatched triangles use 229" in whole
+    assert 'hatch=None if lit_here else "//"' in whole
+    assert "its depth stays finite and this frame keeps no colour" in whole
+    summary = next(t for t in text.values() if t.startswith("## Summary"))
+    assert "A NaN from a vertex spreads" in summary and "shaded twice" in summary
