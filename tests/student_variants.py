@@ -8731,8 +8731,30 @@ def resolve_srgb(sample_colours, sample_ids, background):
     ids = np.asarray(sample_ids)
     return linear_to_srgb(np.where((ids >= 0)[:, None], lin, bg).mean(0))
 """
+_R443_AREA = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(*np.asarray(xy, float))
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
 #: label: (name, function, words in the first failure, kind of the first failure).
 R443 = {
+    "coverage taking the area (its zero and sign) before snapping": (
+        "coverage_fraction", _r443("coverage_fraction", _R443_AREA),
+        "you took the area E(v1, v2, v3) on the vertices as given, before snapping",
+        "area before snapping"),
     'coverage refusing zero area on the vertices as given': (
         'coverage_fraction', _r443('coverage_fraction', _R443_00),
         'you refused the triangle as zero-area on its vertices as given, before snapping', 'zero area before snapping'),

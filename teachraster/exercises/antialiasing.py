@@ -240,15 +240,15 @@ def explain_coverage(args, expected, got) -> str:
 
 
 #: r443 MN1: the ways a student rounds the sample positions onto the vertices' 1/256 grid (only
-#: ``snap``'s half to even was named; floor(x·256 + ½) was told "a tolerance on E")
+#: ``snap``'s half to even was named; floor(x·256 + ½) was told "a tolerance on E"). Rounding
+#: down or up is left out: on the few cases a sample moves there, it gave the answers of the
+#: area decided before snapping by coincidence
 SAMPLE_SNAPS = {
     "snapped": ("", snap),
     "snapped half up": (
         ", rounding half up",
         lambda p: np.floor(np.asarray(p, float) * 256 + 0.5) / 256,
     ),
-    "snapped down": (", rounding down", lambda p: np.floor(np.asarray(p, float) * 256) / 256),
-    "snapped up": (", rounding up", lambda p: np.ceil(np.asarray(p, float) * 256) / 256),
 }
 
 
@@ -658,9 +658,8 @@ GRID_MISTAKES = [
     *(Mistake("decimal rounding", _decimal_words(d),
               gives=functools.partial(fraction_with, snapping=f"{d} decimals"), only_whole=True)
       for d in DECIMALS),
-    *(Mistake("samples snapped", _snapped_samples_words(how),
-              gives=functools.partial(fraction_with, points=how), only_whole=True)
-      for how in SAMPLE_SNAPS),
+    Mistake("samples snapped", _snapped_samples_words("snapped"),
+              gives=functools.partial(fraction_with, points="snapped"), only_whole=True),
 ]  # fmt: skip
 
 
@@ -917,7 +916,28 @@ def _one_sample(which: int):
     return Mistake(f"{name} alone", words, gives=gives, only_whole=True)
 
 
+def _area_before_snapping(xy, pixel, samples) -> float:
+    """The area taken once on the vertices as given, before snapping, and both the zero-area
+    refusal and the winding decided by it (E and the edges' kinds on the snapped vertices)."""
+    if float(edge_function(*np.asarray(xy, dtype=float))) == 0:
+        return 0.0
+    return fraction_unsnapped(xy, pixel, samples, decided="winding")
+
+
+def _area_words(args, expected, got) -> str:
+    raw = np.asarray(args[0], dtype=float)
+    before, after = float(edge_function(*raw)), float(edge_function(*snap(raw)))
+    return (
+        "you took the area E(v1, v2, v3) on the vertices as given, before snapping, and "
+        "decided by it whether the triangle has zero area and which way it runs: snapping "
+        f"moves the vertices, and here E(v1, v2, v3) = {num(before)} before snapping, "
+        f"{num(after)} after; snap first, then take the area (its zero and its sign), the "
+        "edges' kinds and E on the snapped vertices"
+    )
+
+
 R443_MISTAKES = [
+    Mistake("area before snapping", _area_words, gives=_area_before_snapping, only_whole=True),
     Mistake("zero area before snapping", _zero_words, gives=_zero_before_snapping,
             only_whole=True),
     Mistake("divided by 2S", lambda args, expected, got: (
@@ -928,6 +948,8 @@ R443_MISTAKES = [
     Mistake("edge tests averaged", _edge_tests_words, gives=_edge_tests_mean, only_whole=True),
     _one_sample(0),
     _one_sample(-1),
+    Mistake("samples snapped", _snapped_samples_words("snapped half up"),
+            gives=functools.partial(fraction_with, points="snapped half up"), only_whole=True),
 ]  # fmt: skip
 
 
