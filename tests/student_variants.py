@@ -8471,3 +8471,339 @@ R433_PIXEL = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R433_PIXEL.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R433_PIXEL.items()})
+
+
+# == r443 (fixex06d, exercise 6: the zero area decided before snapping fails; samples rounded
+# to 1/256 by any rounding, vertices snapped up, ÷ 2S, the edge tests averaged, one sample alone;
+# 6.2's integer shares, background once, last sample, ids == 0; 6.3's background encoded, light
+# rounded to 8 bits, ids == 0: each named) ==================================================
+def _r443(name: str, source: str):
+    """The reader's variant (/tmp/r443/n/): ``source`` run with the notebook's imports."""
+    from teachraster import edge_function, linear_to_srgb, snap, srgb_to_linear
+
+    space = {
+        "np": np,
+        "snap": snap,
+        "edge_function": edge_function,
+        "linear_to_srgb": linear_to_srgb,
+        "srgb_to_linear": srgb_to_linear,
+    }
+    exec(source, space)  # noqa: S102 - the test's own source
+    return space[name]
+
+
+_R443_00 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if edge_function(*np.asarray(xy, float)) == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R443_01 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.floor(np.asarray(samples, dtype=float) * 256 + 0.5) / 256 + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R443_02 = """
+def coverage_fraction(xy, pixel, samples):
+    v = np.ceil(np.asarray(xy, dtype=float) * 256) / 256
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R443_03 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return inside.sum() / np.asarray(samples).size
+"""
+_R443_04 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    tests = []
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        tests.append((e >= 0) if top_left else (e > 0))
+    return float(np.mean(tests))
+"""
+_R443_05 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside[0])
+"""
+_R443_06 = """
+def resolve(sample_colours, sample_ids, background):
+    c = np.nan_to_num(np.asarray(sample_colours, float)); ids = np.asarray(sample_ids)
+    n = len(ids); k = int(np.count_nonzero(ids >= 0))
+    mean_cov = c[ids >= 0].sum(axis=0) / max(k, 1)
+    return (k // n) * mean_cov + ((n - k) // n) * np.asarray(background, float)
+"""
+_R443_07 = """
+def resolve(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    c = np.nan_to_num(np.asarray(sample_colours, float))
+    k = np.count_nonzero(ids >= 0)
+    return (c.sum(axis=0) + np.asarray(background, float)) / (k + 1) if k < len(ids) else c.mean(0)
+"""
+_R443_08 = """
+def resolve(sample_colours, sample_ids, background):
+    covered = np.asarray(sample_ids)[:, None] >= 0
+    return np.where(covered, sample_colours, np.asarray(background, dtype=float))[-1]
+"""
+_R443_09 = """
+def resolve(sample_colours, sample_ids, background):
+    covered = np.asarray(sample_ids)[:, None] == 0
+    return np.where(covered, sample_colours, np.asarray(background, dtype=float)).mean(axis=0)
+"""
+_R443_10 = """
+def resolve_srgb(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    lin = srgb_to_linear(np.nan_to_num(np.asarray(sample_colours, float)))
+    bg = linear_to_srgb(np.asarray(background, float))
+    return linear_to_srgb(np.where((ids >= 0)[:, None], lin, bg).mean(0))
+"""
+_R443_11 = """
+def resolve_srgb(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    x = np.where((ids >= 0)[:, None], np.nan_to_num(np.asarray(sample_colours, float)), background)
+    lin = np.round(srgb_to_linear(x) * 255) / 255
+    return linear_to_srgb(lin.mean(0))
+"""
+_R443_12 = """
+def resolve_srgb(sample_colours, sample_ids, background):
+    covered = np.asarray(sample_ids)[:, None] == 0
+    x = np.where(covered, np.nan_to_num(sample_colours), background)
+    return linear_to_srgb(srgb_to_linear(x).mean(axis=0))
+"""
+_R443_13 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = (np.asarray(samples, dtype=np.float32) + np.float32([col, row])).astype(float)
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R443_14 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        on = np.isclose(e, 0)
+        inside &= ((e > 0) & ~on) | (on & top_left)
+    return float(inside.mean())
+"""
+_R443_15 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float) - 0.5) + 0.5
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R443_16 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=np.float32)).astype(np.float32)
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = (np.asarray(samples, dtype=np.float32) + np.float32([col, row])).astype(np.float32)
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R443_17 = """
+def resolve(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    c = np.nan_to_num(np.asarray(sample_colours, float))
+    unc = np.count_nonzero(ids < 0)
+    return c.sum(axis=0) / len(ids) + np.asarray(background, float) * unc / len(ids)
+"""
+_R443_18 = """
+def resolve_srgb(sample_colours, sample_ids, background):
+    lin = srgb_to_linear(np.asarray(sample_colours, float))
+    bg = srgb_to_linear(np.asarray(background, float))
+    ids = np.asarray(sample_ids)
+    return linear_to_srgb(np.where((ids >= 0)[:, None], lin, bg).mean(0))
+"""
+_R443_AREA = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(*np.asarray(xy, float))
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+#: label: (name, function, words in the first failure, kind of the first failure).
+R443 = {
+    "coverage taking the area (its zero and sign) before snapping": (
+        "coverage_fraction", _r443("coverage_fraction", _R443_AREA),
+        "you took the area E(v1, v2, v3) on the vertices as given, before snapping",
+        "area before snapping"),
+    'coverage refusing zero area on the vertices as given': (
+        'coverage_fraction', _r443('coverage_fraction', _R443_00),
+        'you refused the triangle as zero-area on its vertices as given, before snapping', 'zero area before snapping'),
+    'coverage with the samples rounded to 1/256 half up': (
+        'coverage_fraction', _r443('coverage_fraction', _R443_01),
+        'you snapped the sample positions to the 1/256 grid too, rounding half up', 'samples snapped'),
+    'coverage with the vertices snapped up (np.ceil)': (
+        'coverage_fraction', _r443('coverage_fraction', _R443_02),
+        'not up (np.ceil)', 'snapping up'),
+    'coverage divided by samples.size': (
+        'coverage_fraction', _r443('coverage_fraction', _R443_03),
+        'you divided by 8, twice the 4 samples', 'divided by 2S'),
+    'coverage averaging the edge tests': (
+        'coverage_fraction', _r443('coverage_fraction', _R443_04),
+        'you averaged the edge tests', 'edge tests averaged'),
+    'coverage of sample 0 alone': (
+        'coverage_fraction', _r443('coverage_fraction', _R443_05),
+        "that is sample 0's verdict alone", 'sample 0 alone'),
+    'resolve with shares by integer division': (
+        'resolve', _r443('resolve', _R443_06),
+        'taken by integer division', 'integer division'),
+    'resolve with the background once where uncovered': (
+        'resolve', _r443('resolve', _R443_07),
+        'the background counts once for every uncovered sample', 'background once'),
+    'resolve of the last sample alone': (
+        'resolve', _r443('resolve', _R443_08),
+        'that is the last sample alone', 'last sample'),
+    'resolve with ids == 0 as covered': (
+        'resolve', _r443('resolve', _R443_09),
+        'you counted only the samples of triangle 0 as covered (ids == 0)', 'triangle 0 only'),
+    'resolve_srgb with the background encoded': (
+        'resolve_srgb', _r443('resolve_srgb', _R443_10),
+        'you encoded the background (linear_to_srgb) where it must be decoded', 'background encoded'),
+    'resolve_srgb with the light rounded to 8 bits': (
+        'resolve_srgb', _r443('resolve_srgb', _R443_11),
+        'you rounded the light (the decoded values) to 8 bits', 'light rounded to 8 bits'),
+    'resolve_srgb with ids == 0 as covered': (
+        'resolve_srgb', _r443('resolve_srgb', _R443_12),
+        'you counted only the samples of triangle 0 as covered (ids == 0)', 'triangle 0 only'),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R443.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R443.items()})
+#: r443: correct but different (each passes)
+R443_RIGHT = {
+    'coverage with the sample points in float32': ('coverage_fraction', _r443('coverage_fraction', _R443_13)),
+    'coverage with np.isclose(E, 0) as the tie test': ('coverage_fraction', _r443('coverage_fraction', _R443_14)),
+    'coverage snapping xy − ½ and adding ½ back': ('coverage_fraction', _r443('coverage_fraction', _R443_15)),
+    'coverage on float32 vertices and points, E by edge_function': ('coverage_fraction', _r443('coverage_fraction', _R443_16)),
+    'resolve with nan_to_num and the uncovered share': ('resolve', _r443('resolve', _R443_17)),
+    'resolve_srgb decoding before choosing the background': ('resolve_srgb', _r443('resolve_srgb', _R443_18)),
+}  # fmt: skip
+DIFFERENT.update(R443_RIGHT)

@@ -121,6 +121,10 @@ R423_HARD = [
     ("a 4K frame's triangle, a sample 2e-5 px outside its long edge",
      [[1578.640625, 929.24609375], [2995.0234375, 2574.8203125], [2903.03125, 331.234375]],
      (1509, 2078), [[0.259765625, 0.7109375]]),
+    # r443 WP1: the zero-area test made on the vertices as given passed (a case collinear
+    # once snapped only): collinear as given, a sliver once snapped, a sample inside it
+    ("collinear as given, a sliver once snapped, a sample inside it",
+     [[0.5 / 256, 0], [1.5 / 256, 4], [2.5 / 256, 8]], (5, 0), [[3 / 512, 0.5]]),
 ]  # fmt: skip
 
 
@@ -235,6 +239,19 @@ def explain_coverage(args, expected, got) -> str:
     )
 
 
+#: r443 MN1: the ways a student rounds the sample positions onto the vertices' 1/256 grid (only
+#: ``snap``'s half to even was named; floor(x·256 + ½) was told "a tolerance on E"). Rounding
+#: down or up is left out: on the few cases a sample moves there, it gave the answers of the
+#: area decided before snapping by coincidence
+SAMPLE_SNAPS = {
+    "snapped": ("", snap),
+    "snapped half up": (
+        ", rounding half up",
+        lambda p: np.floor(np.asarray(p, float) * 256 + 0.5) / 256,
+    ),
+}
+
+
 #: Where a mistaken coverage_fraction puts the points it tests, from (pixel, samples).
 POINTS = {
     "samples": lambda pixel, samples: sample_points(pixel, samples),
@@ -244,7 +261,10 @@ POINTS = {
     "y up": lambda pixel, samples: np.asarray(samples, float) * [1, -1] + [pixel[1], pixel[0] + 1],
     "(row, col)": lambda pixel, samples: np.asarray(samples, float) + [pixel[0], pixel[1]],
     "(oy, ox)": lambda pixel, samples: np.asarray(samples, float)[:, ::-1] + [pixel[1], pixel[0]],
-    "snapped": lambda pixel, samples: snap(sample_points(pixel, samples)),
+    **{
+        how: (lambda pixel, samples, f=f: f(sample_points(pixel, samples)))
+        for how, (_, f) in SAMPLE_SNAPS.items()
+    },
     # r432 HN1: the standard pattern in place of the given offsets; the centre as one more
     "pattern": lambda pixel, samples: sample_pattern(len(samples)) + [pixel[1], pixel[0]],
     "centre too": lambda pixel, samples: np.vstack(
@@ -256,6 +276,7 @@ SNAPPING = {
     "none": lambda xy: np.asarray(xy, dtype=float),
     "half up": lambda xy: np.floor(np.asarray(xy, float) * 256 + 0.5) / 256,
     "down": lambda xy: np.floor(np.asarray(xy, float) * 256) / 256,
+    "up": lambda xy: np.ceil(np.asarray(xy, float) * 256) / 256,  # r443 MN2: told "unsnapped"
     # one coordinate snapped, the other raw (r40 06-1: x alone passed every case)
     "x only": lambda xy: np.column_stack([snap(xy)[:, 0], np.asarray(xy, float)[:, 1]]),
     "y only": lambda xy: np.column_stack([np.asarray(xy, float)[:, 0], snap(xy)[:, 1]]),
@@ -272,18 +293,24 @@ SNAPPING.update({f"{d} decimals": (lambda xy, d=d: np.round(np.asarray(xy, float
                  for d in DECIMALS})  # fmt: skip
 
 
-def _snapped_samples_words(args, expected, got) -> str:
-    """r308 WP1: the sample positions snapped to the vertices' grid, named with the sample
-    that snapping moves onto (or across) an edge here."""
-    _, pixel, samples = args
-    points = sample_points(pixel, samples)
-    moved = ", ".join(f"sample {k} {exact(a)} → {exact(b)}"
-                      for k, (a, b) in enumerate(zip(points, snap(points))) if (a != b).any())  # fmt: skip
-    return (
-        "you snapped the sample positions to the 1/256 grid too: only the vertices are "
-        "snapped; a sample lies where its offset puts it (col + ox, row + oy), on the 1/512 "
-        f"grid as given{': here ' + moved if moved else ''}"
-    )
+def _snapped_samples_words(how: str = "snapped"):
+    """r308 WP1: the sample positions snapped to the vertices' grid (r443 MN1: by any of
+    :data:`SAMPLE_SNAPS`' roundings), named with the sample that snapping moves onto (or
+    across) an edge here."""
+    rounding, rounded = SAMPLE_SNAPS[how]
+
+    def words(args, expected, got) -> str:
+        _, pixel, samples = args
+        points = sample_points(pixel, samples)
+        moved = ", ".join(f"sample {k} {exact(a)} → {exact(b)}"
+                          for k, (a, b) in enumerate(zip(points, rounded(points))) if (a != b).any())  # fmt: skip
+        return (
+            f"you snapped the sample positions to the 1/256 grid too{rounding}: only the "
+            "vertices are snapped; a sample lies where its offset puts it (col + ox, row + oy), "
+            f"on the 1/512 grid as given{': here ' + moved if moved else ''}"
+        )
+
+    return words
 
 
 def _any_sample_words(args, expected, got) -> str:
@@ -407,6 +434,8 @@ COVERAGE_KNOBS = Knobs(fraction_with, {
              "(floor(x + ½))", "half up"),
         Slip("snapping down", "snapping rounds to the nearest 1/256 px (half to even), not down",
              "down"),
+        Slip("snapping up", "snapping rounds to the nearest 1/256 px (half to even), not up "
+             "(np.ceil)", "up"),
         Slip("x snapped only", _one_axis_words("x", "y"), "x only"),
         Slip("y snapped only", _one_axis_words("y", "x"), "y only"),
     ],
@@ -629,8 +658,8 @@ GRID_MISTAKES = [
     *(Mistake("decimal rounding", _decimal_words(d),
               gives=functools.partial(fraction_with, snapping=f"{d} decimals"), only_whole=True)
       for d in DECIMALS),
-    Mistake("samples snapped", _snapped_samples_words,
-            gives=functools.partial(fraction_with, points="snapped"), only_whole=True),
+    Mistake("samples snapped", _snapped_samples_words("snapped"),
+              gives=functools.partial(fraction_with, points="snapped"), only_whole=True),
 ]  # fmt: skip
 
 
@@ -836,6 +865,94 @@ R423_MISTAKES = [
         only_whole=True,
     ),
 ]
+
+
+# -- r443 WP1, HN1-HN3: the zero area decided before snapping; ÷ 2S, the edge tests averaged,
+# one sample's verdict alone ---------------------------------------------------------------
+def _zero_before_snapping(xy, pixel, samples) -> float:
+    """The rule, but 0 wherever the vertices as given are collinear (snapped or not)."""
+    raw = np.asarray(xy, dtype=float)
+    return 0.0 if float(edge_function(*raw)) == 0 else fraction_with(xy, pixel, samples)
+
+
+def _zero_words(args, expected, got) -> str:
+    xy, pixel, samples = args
+    after = float(edge_function(*snap(np.asarray(xy, dtype=float))))
+    k = int(covered_samples(snap(xy), sample_points(pixel, samples)).sum())
+    return (
+        "you refused the triangle as zero-area on its vertices as given, before snapping: "
+        f"here they are collinear as given (E(v1, v2, v3) = 0) but not once snapped (E = "
+        f"{num(after)} px², a sliver covering {k} of the {len(samples)} samples); snap first, "
+        "then decide the area, the winding, the edges' kinds and E on the snapped vertices"
+    )
+
+
+def _edge_tests_mean(xy, pixel, samples) -> float:
+    """Each sample's three edge tests (each by its own tie rule) averaged, not and-ed."""
+    e, own, area = _edge_table(xy, pixel, samples)
+    if area == 0:
+        return 0.0
+    return float(np.where(np.asarray(own)[:, None], e >= 0, e > 0).mean())
+
+
+def _edge_tests_words(args, expected, got) -> str:
+    e, own, _ = _edge_table(*args)
+    passed = np.where(np.asarray(own)[:, None], e >= 0, e > 0)
+    return (
+        f": you averaged the edge tests ({int(passed.sum())} of the {passed.size} tests, 3 "
+        "per sample, pass here), so a sample inside two of its three edges counts as ⅔: a "
+        "sample is covered only where it passes all three; count those samples, divide by S"
+    )
+
+
+def _one_sample(which: int):
+    name = "sample 0" if which == 0 else "the last sample"
+
+    def gives(xy, pixel, samples):
+        return float(fraction_with(xy, pixel, np.asarray(samples)[[which]]))
+
+    words = (f": that is {name}'s verdict alone (1 if it is covered, else 0): the fraction "
+             "counts every one of the S samples covered and divides by S")  # fmt: skip
+    return Mistake(f"{name} alone", words, gives=gives, only_whole=True)
+
+
+def _area_before_snapping(xy, pixel, samples) -> float:
+    """The area taken once on the vertices as given, before snapping, and both the zero-area
+    refusal and the winding decided by it (E and the edges' kinds on the snapped vertices)."""
+    if float(edge_function(*np.asarray(xy, dtype=float))) == 0:
+        return 0.0
+    return fraction_unsnapped(xy, pixel, samples, decided="winding")
+
+
+def _area_words(args, expected, got) -> str:
+    raw = np.asarray(args[0], dtype=float)
+    before, after = float(edge_function(*raw)), float(edge_function(*snap(raw)))
+    return (
+        "you took the area E(v1, v2, v3) on the vertices as given, before snapping, and "
+        "decided by it whether the triangle has zero area and which way it runs: snapping "
+        f"moves the vertices, and here E(v1, v2, v3) = {num(before)} before snapping, "
+        f"{num(after)} after; snap first, then take the area (its zero and its sign), the "
+        "edges' kinds and E on the snapped vertices"
+    )
+
+
+R443_MISTAKES = [
+    Mistake("area before snapping", _area_words, gives=_area_before_snapping, only_whole=True),
+    Mistake("zero area before snapping", _zero_words, gives=_zero_before_snapping,
+            only_whole=True),
+    Mistake("divided by 2S", lambda args, expected, got: (
+        f": you divided by {2 * len(args[2])}, twice the {len(args[2])} samples "
+        "(samples.size counts both coordinates of each offset): divide the samples covered "
+        "by S = len(samples)"),
+        gives=lambda *a: fraction_with(*a, count=True) / (2 * len(a[2])), only_whole=True),
+    Mistake("edge tests averaged", _edge_tests_words, gives=_edge_tests_mean, only_whole=True),
+    _one_sample(0),
+    _one_sample(-1),
+    Mistake("samples snapped", _snapped_samples_words("snapped half up"),
+            gives=functools.partial(fraction_with, points="snapped half up"), only_whole=True),
+]  # fmt: skip
+
+
 #: after TOLERANCE: 3 decimals moves a sample by ≤ 5e-4 px, as a tolerance on the distance
 #: does (the 512 px edge's case), and the tolerance is the likelier
 ROUNDED_SAMPLES = [_rounded_samples(d) for d in DECIMALS]  # fmt: skip
@@ -843,7 +960,7 @@ ROUNDED_SAMPLES = [_rounded_samples(d) for d in DECIMALS]  # fmt: skip
 #: r423: before TOLERANCE, which also gives the sliver's and the 4K triangle's answers (each
 #: is named only where it gives every answer of the check, so never for a real tolerance)
 COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
-                     *R423_MISTAKES, TOLERANCE, *ROUNDED_SAMPLES]  # fmt: skip
+                     *R423_MISTAKES, *R443_MISTAKES, TOLERANCE, *ROUNDED_SAMPLES]  # fmt: skip
 
 
 def coverage_mistakes() -> list[Mistake]:
@@ -1256,6 +1373,48 @@ ON_255 = Mistake("0–255 scale", ": that is the colour on the 0–255 scale of 
 CHANNEL_ORDER = channel_order_mistake(": the right colour in another channel order", ": return "
                                       "(R, G, B), in the samples' own order", tol=1e-6)  # fmt: skip
 
+
+# -- r443 HN4-HN7: 6.2's slips told only the rule ---------------------------------------------
+def _shares_floored(colours, ids, background):
+    """The shares k / S and (S − k) / S taken by integer division: 0 on a partly covered pixel."""
+    s, k = _sample_counts(ids)
+    covered = _covered_mean(colours, ids, background) if k else np.zeros(np.shape(colours)[-1])
+    return (k // s) * covered + ((s - k) // s) * np.asarray(background, dtype=float)
+
+
+def _shares_floored_words(args, expected, got) -> str:
+    _, ids, _ = args
+    s, k = _sample_counts(ids)
+    return (
+        f": your answer is 0 where {k} of the {s} samples {'is' if k == 1 else 'are'} "
+        "covered: the shares k / S and "
+        f"(S − k) / S taken by integer division ({k} // {s} = {k // s}, {s - k} // {s} = "
+        f"{(s - k) // s}) are 0 wherever some but not all samples are covered; divide with /"
+    )
+
+
+def _background_once_partly(colours, ids, background):
+    """r443 HN7: the background added once (÷ k + 1) where a sample is uncovered, the plain
+    mean where none is (the "background once" slip with its all-covered case right)."""
+    s, k = _sample_counts(ids)
+    if k == s:
+        return np.asarray(colours, dtype=float).mean(axis=0)
+    return (np.nansum(colours[ids >= 0], axis=0) + background) / (k + 1)
+
+
+R443_RESOLVE = [
+    Mistake("integer division", _shares_floored_words, gives=_shares_floored),
+    Mistake("background once", _background_once_words, gives=_background_once_partly),
+    Mistake("last sample", _resolve_words("that is the last sample alone: the resolve mixes "
+            "all the samples", rule=False),
+            gives=lambda c, i, b: _with_background(c, i, b)[-1]),
+    Mistake("triangle 0 only", _resolve_words("you counted only the samples of triangle 0 as "
+            "covered (ids == 0): ids number the triangles from 0, every id ≥ 0 is a triangle "
+            "that covers the sample, and only −1 marks an uncovered one"),
+            gives=lambda c, i, b: np.where((i == 0)[:, None], c, b).mean(axis=0)),
+]  # fmt: skip
+
+
 RESOLVE_MISTAKES = [
     Mistake("covered only", _covered_words, gives=_covered_mean),
     Mistake("uncovered as black", _resolve_words(UNCOVERED_AS_BLACK), gives=uncovered_as_black),
@@ -1327,6 +1486,7 @@ RESOLVE_MISTAKES = [
     Mistake("in linear light", _resolve_words("you decoded the samples from sRGB, averaged "
             "and encoded again, as 6.3 does; here the colours are plain numbers (linear), to "
             "average as they are"), gives=_in_light),
+    *R443_RESOLVE,
 ]  # fmt: skip
 
 

@@ -220,15 +220,45 @@ def resolve_scene(fn) -> Scene:
                 out[i, j] = call(fn, aa.as_colour, colours[i, j], ids[i, j], background)
         return out
 
+    cause = []  # r443 S2 (r432 S2): the slip that gives every differing pixel, found once
+
     def explain(got, row, col):
         args = (colours[row, col].copy(), ids[row, col].copy(), background.copy())
         if aa.same_colour(got[row, col], reference[row, col], args):
             return "yours and the package's agree"
-        return aa.explain_resolve(args, reference[row, col], got[row, col])
+        if not cause:
+            cause.append(_resolve_slip(got))
+        words = aa.explain_resolve(args, reference[row, col], got[row, col])
+        return words + cause[0](args, reference[row, col], got[row, col])
 
     scene = Scene("a fan in colour, 4 samples resolved", reference, run, explain)
     scene.inputs = _sample_inputs
     return scene
+
+
+def _resolve_slip(got, most: int = 60):
+    """``words(args, expected, got)``: the one slip of 6.2's table that gives every differing
+    pixel of the picture (at most ``most`` of them), as the check names it, or a pointer to
+    the check (r432 S2: the pixel's line gave numbers only, where 6.1's names the cause)."""
+    ids, colours, background, reference = fan_colours()
+    differ = ~np.isclose(np.asarray(got, dtype=float), reference, atol=1e-6).all(axis=-1)
+    where = np.argwhere(differ)[:most]
+    for m in aa.RESOLVE_MISTAKES:
+        if m.gives is None or m.parts or not len(where):
+            continue
+        if all(
+            _gives_colour(m, (colours[i, j], ids[i, j], background), got[i, j]) for i, j in where
+        ):
+            return lambda args, expected, yours, m=m: m.say(args, expected, yours)
+    return lambda args, expected, yours: "; the check's failures above name the cause"
+
+
+def _gives_colour(mistake, args, got) -> bool:
+    try:
+        value = mistake.gives(*(np.array(a) for a in args))
+    except (ValueError, TypeError, IndexError, ZeroDivisionError):
+        return False
+    return value is not None and bool(np.allclose(value, got, atol=1e-6, equal_nan=False))
 
 
 def _sample_inputs(ax) -> str:

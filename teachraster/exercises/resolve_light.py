@@ -277,6 +277,20 @@ MISTAKES = [
     # r368: a resolve stored as an 8-bit sRGB framebuffer would (lesson 08's code 188) was
     # sent back to its decode/encode order, which was right
     EIGHT_BIT,
+    # r443 HN8, HN9: told only the rule
+    Mistake("background encoded", ": you encoded the background (linear_to_srgb) where it "
+            "must be decoded: it is sRGB-encoded like the samples; decode it (srgb_to_linear) "
+            "before it joins the average",
+            gives=lambda c, i, b: _mix(c, i, b, _decode, _encode, background_decode=linear_to_srgb)),
+    Mistake("light rounded to 8 bits", ": you rounded the light (the decoded values) to 8 bits "
+            "(x·255 rounded) before averaging; the steps are right (decode every value, average, "
+            "encode the mean), but 8 bits of light lose the dark steps sRGB's code keeps: "
+            "average the decoded values unrounded",
+            gives=lambda c, i, b: _mix(c, i, b, lambda x: _eight_bits(_decode(x)), _encode)),
+    Mistake("triangle 0 only", ": you counted only the samples of triangle 0 as covered "
+            "(ids == 0): every id ≥ 0 is a triangle that covers the sample, and only −1 marks "
+            "an uncovered one", gives=lambda c, i, b: _mix(
+                c, np.where(np.asarray(i) == 0, 0, -1), b, _decode, _encode)),
 ]  # fmt: skip
 
 
