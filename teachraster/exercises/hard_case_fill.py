@@ -364,11 +364,12 @@ def _decimal_words(d: int) -> str:
 def _epsilon_words(eps: float, form: str = "tie") -> str:
     if form == "ties only":  # r441 W2: np.isclose(e, 0, atol=ε) as the tie test
         return (f"you read a centre within ε = {eps:g} px² of an edge as on it (a tolerance on "
-                f"the tie test, np.isclose(e, 0, atol={eps:g})?): on the snapped grid E is "
-                f"exact, a whole number of steps of 2⁻¹⁶ = {2.0**-16:.2g} px², so a centre at "
-                "E = −2⁻¹⁶ px², one step outside a top or left edge, is outside it, not a tie; "
-                "compare E == 0")  # fmt: skip
-    return (f"you compare E with a tolerance, ε = {eps:g} px²: on the snapped grid E is exact, "
+                f"the tie test, np.isclose(e, 0, atol={eps:g})?; an ε of about that size gives "
+                f"your answer): on the snapped grid E is exact, a whole number of steps of "
+                f"2⁻¹⁶ = {2.0**-16:.2g} px², so a centre even one step outside a top or left "
+                "edge (E = −2⁻¹⁶ px²) is outside it, not a tie; compare E == 0")  # fmt: skip
+    return (f"you compare E with a tolerance, ε = {eps:g} px² (an ε of about that size gives "
+            f"your answer): on the snapped grid E is exact, "
             f"a whole number of steps of 2⁻¹⁶ = {2.0**-16:.2g} px², so no tolerance is needed, "
             f"and yours moves every centre within {eps:g} px² of an edge to the other side of "
             "it; compare E with 0 and let the top-left rule decide E = 0")  # fmt: skip
