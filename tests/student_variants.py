@@ -8551,7 +8551,10 @@ R441 = {
         "edge_bits", _eb441(_eb441_abs, _eb441_rel,
                             lambda d: int(np.log2(float(np.finfo(d).max))) + 1 if d.kind == "f"
                             else np.iinfo(d).bits),
-        "you take a float's range for what it holds exactly", "a float's range for what it holds"),
+        "as if a float held every whole number up to its range", "a float's range for what it holds"),
+    "edge bits with float32 typed for every count (r441)": (
+        "edge_bits", lambda r, a, s: tuple((n, "float32") for n in (_eb441_abs(r, s), _eb441_rel(a, s))),
+        "you choose a 32-bit float for every count", "a float's range for what it holds"),
     "edge bits with a float holding np.finfo(t).precision bits (r441 n10)": (
         "edge_bits", _eb441(_eb441_abs, _eb441_rel,
                             lambda d: np.finfo(d).precision if d.kind == "f" else np.iinfo(d).bits),

@@ -658,8 +658,9 @@ NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     "no sign")  # fmt: skip
 #: r441 H2 (n09): a float's range taken for what it holds exactly.
 RANGE = Slip("a float's range for what it holds", lambda a, e, g: (
-    "your counts are right, the type is not: you take a float's range for what it holds "
-    "exactly: a 32-bit float's np.finfo(t).max is about 2^128, but above 2^24 it skips "
+    "your counts are right, the type is not: you choose a 32-bit float for every count, as if "
+    "a float held every whole number up to its range (a 32-bit float's np.finfo(t).max is "
+    "about 2^128) or as if one type fitted all: above 2^24 a 32-bit float skips "
     f"whole numbers (2^24 + 1 is none of its numbers): it holds every whole number up to 2^24 "
     f"in size, {exact_bits('float32')} bits with the sign; a 64-bit float "
     f"{exact_bits('float64')}"), "range")  # fmt: skip
