@@ -5792,7 +5792,7 @@ R409_EDGE_BITS = {
     "edge bits with ints listed before floats": (
         "edge_bits", _eb_types(lambda n: _eb_type(n, (("int32", 32), ("float32", 25),
                                                       ("int64", 64), ("float64", 54))) or None),
-        "your counts are right, the type is not", "types only"),
+        "your counts are right, the type is not", "never a float"),  # r441 H2: named
     "edge bits with > for >=": (
         "edge_bits", _eb_types(lambda n: next((t for t, h in _EXACT if h > n), None)),
         "compare with >=, not >", "types only"),
@@ -8807,3 +8807,103 @@ R443_RIGHT = {
     'resolve_srgb decoding before choosing the background': ('resolve_srgb', _r443('resolve_srgb', _R443_18)),
 }  # fmt: skip
 DIFFERENT.update(R443_RIGHT)
+
+
+# == r441 (fixex10j, exercise 10): the reader's misnamed (M1, M2), half-named (H1, H2) 10.1
+# variants and 10.2's wrong passes (W1 half down, W2 a tolerance on the ties)
+def _eb441(absolute, relative, held=None):
+    """edge_bits with each form's count from ``absolute(r, s)``, ``relative(a, s)`` and the
+    bits each type holds from ``held(t)`` (a numpy dtype; default: exactly)."""
+
+    def pick(bits):
+        for t in ("float32", "int32", "float64", "int64"):
+            d = np.dtype(t)
+            h = held(d) if held else (np.finfo(d).nmant + 2 if d.kind == "f" else np.iinfo(d).bits)
+            if h >= bits:
+                return t
+        return None
+
+    def edge_bits(range_bits, across, sub_bits):
+        counts = (absolute(range_bits, sub_bits), relative(across, sub_bits))
+        return tuple((n, pick(n)) for n in counts)
+
+    return edge_bits
+
+
+def _eb441_abs(r, s):
+    return 2 * (r + s) + 2
+
+
+def _eb441_rel(a, s):
+    return 2 * (a * 2**s - 1).bit_length() + 2
+
+
+def _rf441(snap=None, atol=None):
+    """robust_fill, right but for its snapping (``snap(x256)``) or a tolerance on its ties."""
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        x = np.asarray(xy, dtype=float) * 256
+        v = (snap(x) if snap else np.rint(x)) / 256
+        (ax, ay), (bx, by), (cx, cy) = v
+        area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        if area == 0:
+            return np.zeros((height, width), dtype=bool)
+        v = v[[0, 2, 1]] if area < 0 else v
+        rows = origin[0] + np.arange(height)[:, None] + 0.5
+        cols = origin[1] + np.arange(width)[None, :] + 0.5
+        inside = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = (b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0])
+            tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            if atol is None:
+                inside &= (e >= 0) if tie else (e > 0)
+            else:
+                inside &= (e > 0) | (np.isclose(e, 0, atol=atol) & tie)
+        return inside
+
+    return robust_fill
+
+
+R441 = {
+    "edge bits with a coordinate's bits as r - 1 and a sign (r441 n19)": (
+        "edge_bits", _eb441(lambda r, s: 2 * (r - 1 + s) + 2, _eb441_rel),
+        "or each factor counted one bit narrow", "the absolute count two bits short"),
+    "edge bits with half the grid steps in a difference (r441 n15)": (
+        "edge_bits", _eb441(_eb441_abs, lambda a, s: 2 * (a * 2 ** (s - 1) - 1).bit_length() + 2),
+        "or each factor counted one bit narrow", "the relative count two bits short"),
+    "edge bits with every type held without its sign (r441 n20)": (
+        "edge_bits", _eb441(_eb441_abs, _eb441_rel,
+                            lambda d: np.finfo(d).nmant + 1 if d.kind == "f" else np.iinfo(d).bits - 1),
+        "or you take every type to hold one bit less than it does", "> for >="),
+    "edge bits with the relative form bounded by one product (r441 n07)": (
+        "edge_bits", _eb441(_eb441_abs, lambda a, s: ((a * 2**s - 1) ** 2).bit_length() + 1),
+        "bounds E by one product", "the relative count from one product"),
+    "edge bits from the largest values with 2^(r+s) for a coordinate (r441 n08)": (
+        "edge_bits", _eb441(lambda r, s: (2 * 4 ** (r + s)).bit_length() + 1,
+                            lambda a, s: (2 * (a * 2**s - 1) ** 2).bit_length() + 1),
+        "a coordinate taken as 2^28 steps", "the absolute count one bit more"),
+    "edge bits with a float holding log2 of its largest value (r441 n09)": (
+        "edge_bits", _eb441(_eb441_abs, _eb441_rel,
+                            lambda d: int(np.log2(float(np.finfo(d).max))) + 1 if d.kind == "f"
+                            else np.iinfo(d).bits),
+        "as if a float held every whole number up to its range", "a float's range for what it holds"),
+    "edge bits with float32 typed for every count (r441)": (
+        "edge_bits", lambda r, a, s: tuple((n, "float32") for n in (_eb441_abs(r, s), _eb441_rel(a, s))),
+        "you choose a 32-bit float for every count", "a float's range for what it holds"),
+    "edge bits with a float holding np.finfo(t).precision bits (r441 n10)": (
+        "edge_bits", _eb441(_eb441_abs, _eb441_rel,
+                            lambda d: np.finfo(d).precision if d.kind == "f" else np.iinfo(d).bits),
+        "you never choose a float", "never a float"),
+    "fill snapped half down (r441 n02)": (
+        "robust_fill", _rf441(snap=lambda x: np.ceil(x - 0.5)),
+        "you round a vertex half-way between two grid points down", "half-down snapping"),
+    "fill with np.isclose(e, 0, atol=1e-4) for its ties (r441 n21)": (
+        "robust_fill", _rf441(atol=1e-4), "you read a centre within ε = 0.0001 px² of an edge",
+        "epsilon"),
+    "fill with np.isclose(e, 0, atol=1e-3) for its ties (r441 n27)": (
+        "robust_fill", _rf441(atol=1e-3), "you read a centre within ε = 0.001 px² of an edge",
+        "epsilon"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R441.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R441.items()})

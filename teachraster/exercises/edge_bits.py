@@ -56,7 +56,7 @@ import re
 
 import numpy as np
 
-from ..core.fixed_point import BitBudget, range_budget
+from ..core.fixed_point import BitBudget, bit_budget, range_budget
 from ..study.operation_counts import edge_bits_needed
 from . import tries
 from .answers import refuse_non_answers, short
@@ -213,7 +213,15 @@ def _same(got, expected, args=None) -> bool:
 
 
 def _match(got, answer_, args=None) -> bool:
-    return answer_ is not None and got == answer_
+    """A mistake gives the student's answer; r441 H1 (n08): a relative part counted from the
+    largest values (:func:`tight`, accepted) matches a mistake that leaves it right."""
+    if answer_ is None:
+        return False
+    if args is not None and got != answer_ and got[1] == tight(*args)[1]:
+        right = answer(*args)[1]
+        if answer_[1] == right != got[1]:
+            got = (got[0], right)
+    return got == answer_
 
 
 def explain(args, expected, got) -> str:
@@ -318,7 +326,7 @@ def _type_rule(args, expected, got) -> str:
             said.append(f"your None for the {form} form: {spoken(e)} holds {n} bits")
         elif t == narrowest(n, lambda name: exact_bits(name) - 1):
             said.append(f"a type that holds exactly the {form} form's {n} bits holds them: "
-                        "compare with >=, not >")  # fmt: skip
+                        f"compare with >=, not >{_NO_SIGN_ANY}")  # fmt: skip
     held = ", ".join(f"{spoken(t)} {exact_bits(t)}" for t in TYPES)
     return ("your counts are right, the type is not: the first of the four, in the order "
             "the task lists them, that holds every whole number of that many bits, sign "
@@ -384,6 +392,9 @@ def _raw(
         # r419 F1: one form's own count off (x1, x3, y1–y3, w35: E's own bound in one form)
         own = absolute if form == "absolute" else relative
         n += {"one more": 1, "one short": -1, "two short": -2}.get(own, 0)
+        if form == "relative" and relative == "one product":  # r441 H1 (n07): |E| ≤ m²
+            m = across * 2**sub_bits - 1
+            n = (m * m).bit_length() + 1
         n = int(n)  # a fractional log2 of across, cut by int() as its author's code does
         out.append((-(-n // 8) if slip == "bytes" else n, narrowest(n, held)))
     return tuple(out[::-1]) if order == "swapped" else tuple(out)
@@ -428,6 +439,12 @@ _HELD = {
     "no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "f"),
     "nmant": lambda t: exact_bits(t) - 2 * (np.dtype(t).kind == "f"),  # r434 F2
     "int no sign": lambda t: exact_bits(t) - (np.dtype(t).kind == "i"),  # r416 F1
+    # r441 H2: a float's range (log2 of np.finfo(t).max: 128, 1024) for what it holds (n09);
+    # no float ever (np.finfo(t).precision's decimal digits, or the ints tried first: n10, w15)
+    "range": lambda t: (
+        int(np.log2(float(np.finfo(t).max))) + 1 if np.dtype(t).kind == "f" else exact_bits(t)
+    ),
+    "no float": lambda t: 0 if np.dtype(t).kind == "f" else exact_bits(t),
     ">": lambda t: exact_bits(t) - 1,  # held > bits: every type one bit short
 }
 
@@ -475,7 +492,7 @@ SHORT = Slip("one bit short", lambda a, e, g: (
 TWO_SHORT = Slip("two bits short", lambda a, e, g: (
     f"{_counts_are(a, e, g, 'two short', 'two bits short')}: both the bit a difference of two "
     "products adds to the larger product's and the sign bit left out: a product's bits, "
-    "then one more for the difference, one more for the sign"), "two short")  # fmt: skip
+    f"then one more for the difference, one more for the sign{_NARROW}"), "two short")  # fmt: skip
 BYTES = Slip("bytes, not bits", lambda a, e, g: (
     f"{_counts(a, g, e)}: bytes, not bits; the answer counts bits (a 64-bit int "
     "is 8 bytes)"), "bytes")  # fmt: skip
@@ -483,6 +500,20 @@ BYTES = Slip("bytes, not bits", lambda a, e, g: (
 BYTES_TYPED = Slip("bytes, not bits", lambda a, e, g: (
     f"{_counts(a, g, e)}: bytes, not bits, and your types are chosen for that "
     "many bits; the answer counts bits (a 64-bit int is 8 bytes)"), "bytes typed")  # fmt: skip
+
+
+#: r441 M1 (n15, n19): a factor one bit narrow gives the same count as two bits left out
+#: (2(k − 1) + 2 = 2k): the words say both.
+_NARROW = (
+    "; or each factor counted one bit narrow (a coordinate below 2^r px in size has r "
+    "bits in pixels, its sign counted once, at the end, not in each factor; a "
+    "difference below across px is below across · 2^s steps)"
+)
+
+
+def _narrow(a, form: str) -> str:
+    """r441 M1: one form's two bits short, said beside its factor one bit narrow."""
+    return f"; or each factor counted one bit narrow: {_factor_words(a, form)}"
 
 
 def _exponent(across: int) -> int:
@@ -611,14 +642,37 @@ INT_NO_SIGN = Slip("an int's sign bit not counted", lambda a, e, g: (
     f"holds {exact_bits('int32')} bits with its sign (np.iinfo(np.int32).bits counts the sign): "
     f"every whole number from −2^{exact_bits('int32') - 1} to 2^{exact_bits('int32') - 1} − 1; "
     f"an int64 {exact_bits('int64')}"), "int no sign")  # fmt: skip
+#: r441 M2 (n20): every type taken one bit short gives the answers of ``>`` for ``>=``.
+_NO_SIGN_ANY = ("; or you take every type to hold one bit less than it does, its sign left out "
+                "(np.finfo(t).nmant + 1 and np.iinfo(t).max.bit_length() count no sign): a "
+                f"32-bit float holds {exact_bits('float32')} bits with its sign, a 32-bit int "
+                f"{exact_bits('int32')}, a 64-bit float {exact_bits('float64')}, a 64-bit int "
+                f"{exact_bits('int64')}")  # fmt: skip
 GREATER = Slip("> for >=", lambda a, e, g: (
     "your counts are right, the type is not: a type that holds exactly as many bits as the "
-    "count holds them: compare with >=, not >"), ">")  # fmt: skip
+    f"count holds them: compare with >=, not >{_NO_SIGN_ANY}"), ">")  # fmt: skip
 NO_SIGN = Slip("a float's sign bit not counted", lambda a, e, g: (
     "you take a float to hold its significand's bits only: a 32-bit float holds every whole "
     f"number up to 2^{exact_bits('float32') - 1} in size, of either sign, so "
     f"{exact_bits('float32')} bits with the sign, a 64-bit float {exact_bits('float64')}"),
     "no sign")  # fmt: skip
+#: r441 H2 (n09): a float's range taken for what it holds exactly.
+RANGE = Slip("a float's range for what it holds", lambda a, e, g: (
+    "your counts are right, the type is not: you choose a 32-bit float for every count, as if "
+    "a float held every whole number up to its range (a 32-bit float's np.finfo(t).max is "
+    "about 2^128) or as if one type fitted all: above 2^24 a 32-bit float skips "
+    f"whole numbers (2^24 + 1 is none of its numbers): it holds every whole number up to 2^24 "
+    f"in size, {exact_bits('float32')} bits with the sign; a 64-bit float "
+    f"{exact_bits('float64')}"), "range")  # fmt: skip
+#: r441 H2 (n10, w15): never a float: np.finfo(t).precision read as bits, or the ints first.
+NO_FLOAT = Slip("never a float", lambda a, e, g: (
+    "your counts are right, the type is not: you never choose a float, where one holds the "
+    "count: the order is a 32-bit float, a 32-bit int, a 64-bit float, a 64-bit int, and a "
+    "float holds every whole number "
+    f"of its significand's bits, sign included: a 32-bit float {exact_bits('float32')} bits, a "
+    f"64-bit float {exact_bits('float64')} (np.finfo(t).precision counts decimal digits, "
+    f"{np.finfo(np.float32).precision} and {np.finfo(np.float64).precision}, not bits)"),
+    "no float")  # fmt: skip
 #: r434 F2 (w13): np.finfo(t).nmant taken for what a float holds: the hidden bit and the sign
 #: left out (told apart from the sign alone where a count lies between: 24 bits, 53).
 NMANT = Slip("a float's nmant for what it holds", lambda a, e, g: (
@@ -641,11 +695,13 @@ def _own(a, e, g, form: str, value: str, alone: str, part: str) -> str:
 
 ABS_MORE = Slip("the absolute count one bit more", lambda a, e, g: (
     _own(a, e, g, "absolute", "one more", "is one bit more than C's count",
-         "adds one bit to C's count") + "; two slips give it: "
+         "adds one bit to C's count") + "; three slips give it: "
     f"A = a.y − b.y bounded by the whole range, 2^{a[0]} px (it is a difference of two "
     f"vertices, below {a[1]:,} px), or A·x + B·y + C counted as a sum of three terms (the sum "
     "adds no bit: its partial sum C + A·x is E − B·y, and E and B·y, whose factors include "
-    "differences below across, stay far below C's products)"),
+    "differences below across, stay far below C's products); or, counted from the largest "
+    f"values, a coordinate taken as 2^{a[0] + a[2]} steps: below it, it is at most "
+    f"2^{a[0] + a[2]} − 1 ({a[0] + a[2]} bits)"),
     "one more")  # fmt: skip
 #: r419 F1: one form's own count off, the other's right (each said from the answer).
 ABS_SHORT = Slip("the absolute count one bit short", lambda a, e, g: (
@@ -654,7 +710,8 @@ ABS_SHORT = Slip("the absolute count one bit short", lambda a, e, g: (
     "its larger product, leaves it out), one more for the sign"), "one short")  # fmt: skip
 ABS_TWO_SHORT = Slip("the absolute count two bits short", lambda a, e, g: (
     f"{_own(a, e, g, 'absolute', 'two short', 'is two bits short', 'leaves out two bits')}: both the bit the difference "
-    "a.x·b.y − a.y·b.x adds to its larger product's and the sign bit left out"),
+    "a.x·b.y − a.y·b.x adds to its larger product's and the sign bit left out"
+    f"{_narrow(a, 'absolute')} (its sign counted once, at the end)"),
     "two short")  # fmt: skip
 REL_BOUND = Slip("E's own bound in the relative form", lambda a, e, g: (
     f"{_own(a, e, g, 'relative', 'one short', 'is one bit short', 'leaves out one bit')}: E's own bound? |E| is at most its larger "
@@ -674,9 +731,19 @@ ONLY_ABS = Slip("in the absolute form only", (
 ONLY_REL = Slip("in the relative form only", (
     "that slip in one form only: one rule counts both, as you counted the absolute one"),
     "relative")  # fmt: skip
+#: r441 H1 (n07): the relative form counted from its largest values with one product, m², for
+#: E's bound (E's own bound where across tops its binade, one bit less elsewhere).
+ONE_PRODUCT = Slip("the relative count from one product", lambda a, e, g: (
+    f"your relative count, {g[1][0]}, bounds E by one product, m² (m = across · 2^s − 1 = "
+    f"{a[1] * 2**a[2] - 1:,} steps, the largest difference){_one_right(e, g, 'relative')}: "
+    "E = (b − a) × (p − a) is a difference of two products, each up to m² in size and of "
+    "either sign, so |E| reaches 2m²: one bit more, and the sign: (2m²).bit_length() + 1 bits "
+    "if you count from the largest values, or term by term as lesson 06 does"),
+    "one product")  # fmt: skip
 REL_TWO_SHORT = Slip("the relative count two bits short", lambda a, e, g: (
     f"{_own(a, e, g, 'relative', 'two short', 'is two bits short', 'leaves out two bits')}: both the bit a difference of two "
-    "products adds to the larger product's and the sign bit left out"), "two short")  # fmt: skip
+    f"products adds to the larger product's and the sign bit left out{_narrow(a, 'relative')}"),
+    "two short")  # fmt: skip
 
 
 def _types_only(args, expected, got) -> bool:
@@ -693,12 +760,13 @@ TYPES_ONLY = Mistake("types only", _type_rule, fits=_types_only, symptom=True)
 #: whose parts each change a different form is named (w39: the absolute count one more and
 #: across.bit_length(), not one too many in both and the relative one more again).
 KNOBS = Knobs(_with, {"absolute": (ABS_MORE, ABS_SHORT, ABS_TWO_SHORT),
-                      "relative": (REL_BOUND, REL_LONG, REL_TWO_SHORT),
+                      "relative": (REL_BOUND, REL_LONG, REL_TWO_SHORT, ONE_PRODUCT),
                       "factor": (REL_WIDER, ABS_WIDER, REL_RANGE, REL_TWO_COORDS, ACROSS_BITS),
                       "exponent": (FLOOR, FRACTIONAL, BIT_LENGTH, NEAREST, LESS_ONE),
                       "count": (SHORT, LONG, NO_SUB, ONCE, MULTIPLIED, CENTRE, TWO_SHORT, BYTES,
                                 BYTES_TYPED, TWICE, SUB_MULTIPLIED),
-                      "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER, NMANT),
+                      "largest": (A_X,), "holds": (WIDTH, NO_SIGN, INT_NO_SIGN, GREATER, NMANT,
+                                                      RANGE, NO_FLOAT),
                       "order": (SWAPPED,), "only": (ONLY_ABS, ONLY_REL)}, most=2)  # fmt: skip
 
 #: The recipe and the worked counts, said once two different answers have failed.
@@ -747,7 +815,9 @@ def draw(ax, case, got):
 EDGE_BITS = Exercise(
     "edge_bits", cases, as_answer, _same, explain, _rule, (KNOBS, TYPES_ONLY), match=_match, draw=draw,
     hints=HINTS, answers=(PackageAnswer(range_budget, what="lesson 06's count itself"),
-                          PackageAnswer(edge_bits_needed, what="lesson 06's count itself")),
+                          PackageAnswer(edge_bits_needed, what="lesson 06's count itself"),
+                          # r441 S1: its sibling, which counts differences up to extent px
+                          PackageAnswer(bit_budget, what="lesson 06's count itself")),
     reference=("teachraster.exercises.hard_case_precision",),
     # r409 F6: edge_bits has no pixels; one call counts bits of two numbers
     slow=" (one call counts the bits of two forms: it should take microseconds)",

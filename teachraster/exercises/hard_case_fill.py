@@ -32,9 +32,12 @@ from ..core.fill import rasterize
 from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..study.hardcases import CASES, naive_coverage
+from ..study.hardcases.precision_cases import fill_window
+from ..study.operation_counts import rule_coverage
 from .answers import refuse_non_answers, short
 from .cases import DRAWN_WORD, SEED, drawn_rng
 from .coverage import explain_pixel
+from .coverage_checks import TIE_RULE_ANSWERS
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .hard_case_precision import (
     FLOAT32_CASES,
@@ -109,12 +112,25 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     out.append(("collinear, in a window 8 wide and 4 high",
                 (np.array([[1.0, 0.5], [3.0, 1.5], [7.0, 3.5]]), 8, 4, (0, 0))))  # fmt: skip
     out += _random_cases(np.random.default_rng(SEED + 50), "random")
+    # r441 W1, W2: listed last, so that every earlier first failure stays where it was
+    out.append(("half step, odd: a vertex at 641.5/256 px, half-way between 641 and 642",
+                (HALF_ODD.copy(), 12, 12, (0, 0))))  # fmt: skip
+    out.append(("a centre one step of E (2⁻¹⁶ px²) outside a left edge",
+                (ONE_STEP.copy(), 12, 12, (0, 0))))  # fmt: skip
     return [(label, args, expected_fill(*args)) for label, args in out]
 
 
 #: r373 W24: a snapped triangle (local coordinates; the case adds 10⁶ px) with a centre, pixel
 #: (6, 4), 2⁻¹⁵ px² inside its edge v2→v3: float64 rounds A x + B y + C there to 2⁻¹² px².
 NEAR_TIE = np.array([[5.34765625, 10.48046875], [5.55078125, 7.83984375], [2.7109375, 4.21875]])
+#: r441 W1: a vertex at an odd + ½ step of the grid (641.5/256 px in x and in y): half to even
+#: (np.rint) moves it to 642, half down (np.ceil(x · 256 − ½)) to 641, and centre (3.5, 6.5)
+#: changes sides of its edges (at an even + ½ step, the "half step" case, half down and half
+#: to even agree; there half up fails).
+HALF_ODD = np.array([[3.703125, 7.31640625], [9.02734375, 4.73828125], [641.5 / 256, 641.5 / 256]])
+#: r441 W2: on the 1/256 grid, centre (4.5, 8.5) lies one step of E, 2⁻¹⁶ px², outside the left
+#: edge v3→v1, inside the two others: a tolerance on the ties (|E| ≤ ε as a tie) covers it.
+ONE_STEP = np.array([[4.25390625, 8.01171875], [8.82421875, 5.3125], [4.98828125, 9.46875]])
 #: r373 W41: a triangle hundreds of pixels across (on the 1/256 grid, near the origin).
 WIDE = np.array([[0.25, 0.5], [900.5, 3.75], [450.125, 880.0]])
 WIDE_ACROSS = int(np.ptp(WIDE, axis=0).max())
@@ -204,6 +220,9 @@ def _more_variants(xy, width, height, origin) -> dict[str, np.ndarray]:
         one[:, k] = np.rint(raw[:, k] * 256) / 256
         out[f"only {axis} snapped"] = naive_coverage(one, width, height, **kw)
     out["ceil snapping"] = naive_coverage(np.ceil(raw * 256) / 256, width, height, **kw)
+    # r441 W1: half-way values rounded down (np.ceil(x · 256 − ½))
+    out["half-down snapping"] = naive_coverage(np.ceil(raw * 256 - 0.5) / 256, width, height,
+                                               **kw)  # fmt: skip
     for given in ("index", "edge"):
         out[f"tie rule before orienting ({given})"] = edge_fill(s, width, height, origin,
                                                                 given=given)  # fmt: skip
@@ -230,7 +249,9 @@ def edge_fill(s, width: int, height: int, origin, *, owns=_top_left, given=None,
     inside when ``owns(a, b)``; ``given`` ("index", "edge"): the tie rule read off the vertices
     as given, not as oriented (edge k of the given order, or the same edge run the given way:
     r373 W40); ``eps`` = (ε, form): E compared with a tolerance, "tie" (E > −ε on an owned
-    edge, E > ε on the others), "loose" (E ≥ −ε everywhere) or "strict" (E > ε everywhere)."""
+    edge, E > ε on the others), "loose" (E ≥ −ε everywhere), "strict" (E > ε everywhere) or, r441 W2,
+    "ties only" (|E| ≤ ε read as a tie: E ≥ −ε on an owned edge, E > 0 on the others, as
+    ``np.isclose(e, 0, atol=ε)`` beside E > 0 does)."""
     w = np.asarray(s, float)
     v = w[[0, 2, 1]] if _area(w) < 0 else w
     y, x = centre_grid(origin, width, height)
@@ -244,8 +265,10 @@ def edge_fill(s, width: int, height: int, origin, *, owns=_top_left, given=None,
             tie = owns(b, a)
         else:
             tie = owns(a, b)
-        if eps is None:
+        if eps is None or (eps[1] == "ties only" and not tie):
             inside &= (e >= 0) if tie else (e > 0)
+        elif eps[1] == "ties only":
+            inside &= e >= -eps[0]
         else:
             eps_value, form = eps
             low = -eps_value if form == "loose" or (form == "tie" and tie) else eps_value
@@ -338,8 +361,15 @@ def _decimal_words(d: int) -> str:
             "points, and a centre near an edge changes sides")  # fmt: skip
 
 
-def _epsilon_words(eps: float) -> str:
-    return (f"you compare E with a tolerance, ε = {eps:g} px²: on the snapped grid E is exact, "
+def _epsilon_words(eps: float, form: str = "tie") -> str:
+    if form == "ties only":  # r441 W2: np.isclose(e, 0, atol=ε) as the tie test
+        return (f"you read a centre within ε = {eps:g} px² of an edge as on it (a tolerance on "
+                f"the tie test, np.isclose(e, 0, atol={eps:g})?; an ε of about that size gives "
+                f"your answer): on the snapped grid E is exact, a whole number of steps of "
+                f"2⁻¹⁶ = {2.0**-16:.2g} px², so a centre even one step outside a top or left "
+                "edge (E = −2⁻¹⁶ px²) is outside it, not a tie; compare E == 0")  # fmt: skip
+    return (f"you compare E with a tolerance, ε = {eps:g} px² (an ε of about that size gives "
+            f"your answer): on the snapped grid E is exact, "
             f"a whole number of steps of 2⁻¹⁶ = {2.0**-16:.2g} px², so no tolerance is needed, "
             f"and yours moves every centre within {eps:g} px² of an edge to the other side of "
             "it; compare E with 0 and let the top-left rule decide E = 0")  # fmt: skip
@@ -358,7 +388,8 @@ def _tolerant(eps: float, form: str):
 #: tolerances of E (px²; below E's step on the snapped grid, 2⁻¹⁶ px², one changes nothing)
 #: that a student may use (r373 W31, W21, W33: told "raw vertices", "E > 0", "float32").
 FINE_BITS, DECIMALS = range(9, 17), range(1, 7)
-EPSILONS, EPS_FORMS = tuple(10.0**-k for k in range(1, 6)), ("tie", "loose", "strict")
+EPSILONS = tuple(10.0**-k for k in range(1, 6))
+EPS_FORMS = ("tie", "loose", "strict", "ties only")
 
 
 def _roundings() -> list[Mistake]:
@@ -371,7 +402,8 @@ def _roundings() -> list[Mistake]:
             for b in FINE_BITS]  # fmt: skip
     out += [Mistake("decimal rounding", _decimal_words(d), gives=_rounded(d), only_whole=True)
             for d in DECIMALS]  # fmt: skip
-    out += [Mistake("epsilon", _epsilon_words(eps), gives=_tolerant(eps, form), only_whole=True)
+    out += [Mistake("epsilon", _epsilon_words(eps, form), gives=_tolerant(eps, form),
+                    only_whole=True)
             for eps in EPSILONS for form in EPS_FORMS]  # fmt: skip
     return out
 
@@ -756,6 +788,10 @@ MISTAKES.update(
         "and leave y as it came; a GPU snaps both coordinates of every vertex",
         "only y snapped": "your x coordinates are not snapped: you round y to the 1/256-px grid "
         "and leave x as it came; a GPU snaps both coordinates of every vertex",
+        "half-down snapping": "you round a vertex half-way between two grid points down "
+        "(np.ceil(x · 256 − ½), or a round-half-down of your own): the course's fixed-point "
+        "conversion (teachraster's, lesson 07's table) rounds half to even, as np.rint does, so "
+        "a vertex at 641.5 steps goes to 642, not 641, and a centre near its edges changes sides",
         "ceil snapping": "you snap by rounding up (np.ceil): every vertex moves up to 1/256 px "
         "right and down, always the same way, so centres near an edge change sides; round to the "
         "nearest grid point, np.rint(xy * 256) / 256",
@@ -833,7 +869,8 @@ def _table() -> list[Mistake]:
 #: Mistakes that change a few cases only: named only where they give every answer of the
 #: check, passing ones included (r373: "floor snapping", "oriented before snapping" were each
 #: said on one case whose answer they matched by coincidence, to functions without them).
-RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "ceil snapping", "oriented before snapping",
+RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "half-down snapping",
+              "ceil snapping", "oriented before snapping",
               "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
               "only y snapped", "origin ignored", "origin added twice",
               "float32 E", "float32", "absolute form", *SLIP_WORDS,
@@ -1010,8 +1047,23 @@ HINTS = (
      "form of E without products of size x·y"),
 )  # fmt: skip
 
+#: r441 W3: the package's fills that are this answer, beside ``rasterize``: lesson 07's
+#: ``naive_coverage`` and lesson 06's ``rule_coverage`` with the top-left rule in float64 (on
+#: snapped vertices they are the GPU's fill), the catalogue's ``fill_window`` (the core's own
+#: fill), and the top-left rule itself, as in exercise 1 (a repair the task asks for).
+FILL_ANSWERS = (
+    PackageAnswer(rasterize),
+    PackageAnswer(naive_coverage, what="the top-left rule's fill in float64, this very answer "
+                  "on snapped vertices", when=lambda a: a.get("rule") == "top_left"
+                  and np.dtype(a.get("dtype")) == np.float64),
+    PackageAnswer(rule_coverage, what="the top-left rule's fill in float64, this very answer "
+                  "on snapped vertices", when=lambda a: a.get("rule") == "top-left"),
+    PackageAnswer(fill_window, what="the GPU's fill of a window, this very answer"),
+    *TIE_RULE_ANSWERS,
+)  # fmt: skip
+
 ROBUST_FILL = Exercise(
     "robust_fill", fill_cases, as_image, same_image, explain_fill, _rule,
-    _table(), answers=(PackageAnswer(rasterize),),
+    _table(), answers=FILL_ANSWERS,
     draw=draw_fill, compose=compose, hints=HINTS,
 )  # fmt: skip
