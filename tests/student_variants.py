@@ -8536,9 +8536,15 @@ R440 = {
     "perspective weights masking |λ| > 1e-9": (
         "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: abs(m) > 1e-9),
         "you left out a λ below a tolerance", "tiny λ left out"),
+    "perspective weights masking np.isclose(λ, 0)": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: ~np.isclose(m, 0)),
+        "you left out a λ below a tolerance", "tiny λ left out"),
+    "perspective weights masking |λ| > 1e-12": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: abs(m) > 1e-12),
+        "λ1 = 1e-12 is not 0", "tiny λ left out"),
     "perspective weights scaled right, an ε in the normaliser": (
         "perspective_weights", lambda lam, w: _w440_right(lam, w, total=lambda q: q.sum() + 1e-12),
-        "to the sum you divide by", "epsilon added to the sum"),
+        "your terms, scaled by w1 = 0.001, sum to only", "epsilon added to the sum"),
     "perspective weights scaled by the geometric mean of the extreme w": (
         "perspective_weights", _w440_geomean, "a scale w larger than w1 = 1e-320", _R429_NAN),
     "perspective weights scaled right, an ε in each w": (

@@ -58,7 +58,7 @@ def test_the_near_edge_and_1e_320_cases_are_graded():
     """W1-W3: a tiny λ at the smallest w weighs 1e-4 of μ; w1 = 1e-320 is beyond a GPU's w."""
     cases = {label: (args, mu) for label, args, mu in pw.weights_cases()}
     near = [mu for label, (_, mu) in cases.items() if label.startswith("p next to the edge")]
-    assert near and abs(near[0][0] - 1e-4) < 1e-6
+    assert len(near) == 2 and abs(near[0][0] - 1e-4) < 1e-6 and abs(near[1][0] - 0.5) < 1e-9
     assert any("1e-320" in label for label in cases)
     assert pw.beyond_a_gpu(next(label for label in cases if "1e-320" in label))
 

@@ -59,8 +59,8 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
     # 1e-6 of λ (an ε in the normaliser moved μ by 1e-6); w within a GPU's range
     for lam, w in NEAR_EDGE:
         lam, w = np.array(lam), np.array(w)
-        out.append((f"p next to the edge opposite v1: λ = ({lam[0]:.3g}, {lam[1]:.10g}, "
-                    f"{lam[2]:.10g}), w = {_ws(w)}", (lam, w),
+        out.append((f"p next to the edge opposite v1: λ = ({lam[0]:.3g}, {lam[1]:.12g}, "
+                    f"{lam[2]:.12g}), w = {_ws(w)}", (lam, w),
                     weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
     now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
     for k in range(DRAWN):
@@ -104,7 +104,11 @@ EXTREME = (
 )
 
 #: r440 W1, W2: (λ, w) of a point next to an edge, whose tiny λ sits at the smallest w
-NEAR_EDGE = (((1e-10, 0.5, 0.4999999999), (1e-3, 1e3, 1e3)),)
+NEAR_EDGE = (
+    ((1e-10, 0.5, 0.4999999999), (1e-3, 1e3, 1e3)),
+    # λ1 = 1e-12 at w1 = 1e-9: half of μ (np.isclose(λ, 0) and |λ| > 1e-12 drop it)
+    ((1e-12, 0.5, 0.499999999999), (1e-9, 1e3, 1e3)),
+)
 
 #: (λ, w) of points outside the triangle: one negative λ each
 OUTSIDE = (
@@ -600,9 +604,10 @@ def _sum_words(args, expected, got) -> str:
     return f": they sum to {_their_sum(got)}, and weights sum to 1"
 
 
-def _nudge(args, got) -> float | None:
+def _nudge(args, got, small: bool = True) -> float | None:
     """δ when ``got`` is λ_i/w_i ÷ (Σ λ_j/w_j + δ) for a small δ ≠ 0 (a guard against
-    dividing by 0), else None."""
+    dividing by 0), else None; ``small=False``: any δ up to the sum itself (r440 W2: an ε
+    beside terms scaled by a tiny w is not small beside them)."""
     lam, w = args
     g = np.asarray(got, dtype=float)
     total = float(np.sum(g))
@@ -617,7 +622,7 @@ def _nudge(args, got) -> float | None:
     # r164: a guard adds a positive ε (the sum is positive: the point is in front); one ε
     # on every case (:attr:`.Mistake.parameter`): Σ 1/w_j for Σ λ_j/w_j was "about 2e-03"
     # (r421 T2: or δ ≤ 1e-3 itself, where w ~ 1e300 makes the sum ~1e-300)
-    if delta <= 0 or abs(delta) > 1e-3 * max(abs(s), 1.0):
+    if delta <= 0 or abs(delta) > (1e-3 * max(abs(s), 1.0) if small else abs(s)):
         return None
     if not np.allclose(g, q / (s + delta), rtol=1e-9, atol=1e-300):
         return None
@@ -625,10 +630,16 @@ def _nudge(args, got) -> float | None:
 
 
 def _nudge_words(args, expected, got) -> str:
+    delta = _nudge(args, got)
+    total = float(np.sum(np.asarray(args[0], dtype=float) / np.asarray(args[1], dtype=float)))
+    # r440 W2: terms scaled by a w (the sum 1e-6 here) hold a smaller ε: the share is theirs too
+    share = (
+        "" if 0.1 <= abs(total) <= 10 else f", {delta / total:.0e} of Σ λ_j / w_j = {num(total)}"
+    )
     return (
-        f": they sum to {_their_sum(got)}, not 1: you added a small number (about "
-        f"{_nudge(args, got):.0e}) to the sum you divide by (a guard against dividing by 0?); "
-        "divide by the sum itself (with every w > 0 and the point in front it is never 0)"
+        f": they sum to {_their_sum(got)}, not 1: you added a small number (about {delta:.0e}"
+        f"{share}) to the sum you divide by (a guard against dividing by 0?); divide by the sum "
+        "itself (with every w > 0 and the point in front it is never 0)"
     )
 
 
@@ -701,6 +712,34 @@ NUDGED = Mistake("epsilon added to the sum", _nudge_words, fits=_nudge_fits(_nud
                  parameter=lambda a, e, g: _nudge(a, g), only_whole=True)  # fmt: skip
 
 
+def _nudge_scaled(args, got) -> float | None:
+    """r440 W2: the ε of ``q / (q.sum() + ε)`` where q_i = λ_i · (w_ref / w_i), w_ref the
+    smallest w that weighs (the task's scaling): δ · w_ref, one number on every case."""
+    delta = _nudge(args, got, small=False)
+    if delta is None:
+        return None
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    return delta * float(w[lam != 0].min())
+
+
+def _nudge_scaled_words(args, expected, got) -> str:
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    k = int(np.flatnonzero(lam != 0)[np.argmin(w[lam != 0])])
+    total = float(np.sum(lam * (w[k] / w)))
+    return (
+        f": they sum to {_their_sum(got)}, not 1: you added a small number (about "
+        f"{_nudge_scaled(args, got):.0e}) to the sum you divide by (a guard against dividing by "
+        f"0?), but your terms, scaled by w{k + 1} = {w[k]:.3g}, sum to only {num(total)} here; "
+        "divide by the sum itself (with every w > 0 and the point in front it is never 0)"
+    )
+
+
+#: r440 W2: the ε in the normaliser of the right (scaled) terms, one ε in their units
+NUDGED_SCALED = Mistake("epsilon added to the sum", _nudge_scaled_words,
+                        fits=_nudge_fits(_nudge_scaled),
+                        parameter=lambda a, e, g: _nudge_scaled(a, g), only_whole=True)  # fmt: skip
+
+
 def _tiny_lams(lam) -> np.ndarray:
     lam = np.asarray(lam, dtype=float)
     return (lam != 0) & (np.abs(lam) <= 1e-6)
@@ -726,8 +765,18 @@ def _tiny_lam_words(args, expected, got) -> str:
     )
 
 
-#: r440 W1: a tiny λ left out (a tolerance in "the vertices that weigh")
-TINY_LAM = Mistake("tiny λ left out", _tiny_lam_words, gives=_tiny_lam_dropped)
+def _tiny_lam_fits(args, expected, got) -> bool | None:
+    """Is the answer μ with the tiny λ left out? Nothing said where there is none, or where
+    the answer is right (a mask's ε below this λ: the next case's smaller λ may catch it)."""
+    dropped = _tiny_lam_dropped(*args)
+    g = np.asarray(got, dtype=float)
+    if dropped is None or g.shape != (3,) or not np.isfinite(g).all() or all_close(g, expected):
+        return None
+    return near(dropped, g)
+
+
+#: r440 W1: a tiny λ left out (a tolerance in "the vertices that weigh", whatever its ε)
+TINY_LAM = Mistake("tiny λ left out", _tiny_lam_words, fits=_tiny_lam_fits)
 
 
 def _float32_error(args, expected, got) -> float | None:
@@ -815,9 +864,10 @@ def draw_weights(ax, case, got):
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED, NUDGED_W,
+    [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED,
+     NUDGED_SCALED, NUDGED_W,
      *(Mistake(kind, words, fits=_beyond_slip(kind)) for kind, words in BEYOND.items()),
-     LAM_BEYOND, NAN_BEYOND, _says_no_nan(TINY_LAM), FLOAT32_STEP, *SYMPTOMS],
+     LAM_BEYOND, NAN_BEYOND, TINY_LAM, FLOAT32_STEP, *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
