@@ -8907,3 +8907,115 @@ R441 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R441.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R441.items()})
+
+
+# == r440 (fixex03c, exercise 3): the reader's wrong passes (W1-W4), misnamed (M1, M2) and ======
+# half-named (H1-H3) slips
+def _b440_float32_test(xy, p):
+    """W4: the zero-area test in float32, the solve in float64."""
+    (x1, y1), (x2, y2), (x3, y3) = np.asarray(xy, dtype=float)
+    f = np.float32
+    if f(x1 - x3) * f(y2 - y3) - f(x2 - x3) * f(y1 - y3) == 0:
+        raise ValueError("zero area")
+    return _bary_from_areas(xy, p)
+
+
+def _b440_p_moved(move):
+    """H1: the weights of p truncated, or rounded to a coarser grid."""
+
+    def barycentric(xy, p):
+        return _bary_from_areas(xy, move(np.asarray(p, dtype=float)))
+
+    return barycentric
+
+
+def _w440_right(lam, w, mask=None, ratio=None, total=None):
+    """3.2 scaled by the smallest w that weighs; ``mask``, ``ratio``, ``total``: the slips."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    weighs = (lam != 0) if mask is None else mask(lam)
+    q = np.zeros(3)
+    r = w[weighs].min() / w[weighs]
+    q[weighs] = lam[weighs] * (r if ratio is None else ratio(r))
+    return q / (q.sum() if total is None else total(q))
+
+
+def _w440_geomean(lam, w):
+    """W3: a reference w from the extremes, their geometric mean."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    with np.errstate(all="ignore"):
+        q = lam * (math.sqrt(w.min()) * math.sqrt(w.max()) / w)
+        return q / q.sum()
+
+
+def _w440_f32_ratio(lam, w):
+    """M2: the ratios of w rounded to float32."""
+    return _w440_right(lam, w, ratio=np.float32)
+
+
+def _w440_f32_sum(lam, w):
+    """H3: the sum taken in float32."""
+    return _w440_right(lam, w, total=lambda q: np.sum(q, dtype=np.float32))
+
+
+R440 = {
+    "barycentric with the zero-area test in float32": (
+        "barycentric", _b440_float32_test,
+        "float32 holds these vertices exactly, but not the products in E", "float32"),
+    "barycentric of p truncated by int()": (
+        "barycentric", _b440_p_moved(np.trunc), "p truncated to whole pixels", "p truncated"),
+    "barycentric of p rounded to 1/16 px": (
+        "barycentric", _b440_p_moved(lambda p: np.round(p * 16) / 16), "p rounded to 1/16 px",
+        "p rounded to 1/16 px"),
+    "barycentric of p rounded to 1/2 px": (
+        "barycentric", _b440_p_moved(lambda p: np.round(p * 2) / 2), "p rounded to 1/2 px",
+        "p rounded to 1/2 px"),
+    "perspective weights masking |λ| > 1e-9": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: abs(m) > 1e-9),
+        "you left out a λ below a tolerance", "tiny λ left out"),
+    "perspective weights masking np.isclose(λ, 0)": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: ~np.isclose(m, 0)),
+        "you left out a λ below a tolerance", "tiny λ left out"),
+    "perspective weights masking |λ| > 1e-12": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: abs(m) > 1e-12),
+        "λ1 = 1e-12 is not 0", "tiny λ left out"),
+    "perspective weights scaled right, an ε in the normaliser": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, total=lambda q: q.sum() + 1e-12),
+        "your terms, scaled by w1 = 0.001, sum to only", "epsilon added to the sum"),
+    "perspective weights scaled by the geometric mean of the extreme w": (
+        "perspective_weights", _w440_geomean, "a scale w larger than w1 = 1e-320", _R429_NAN),
+    "perspective weights scaled right, an ε in each w": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, np.asarray(w, float) + 1e-12),
+        "you added a small number (about 1e-12) to each w", "epsilon added to w"),
+    "perspective weights with the ratios of w in float32": (
+        "perspective_weights", _w440_f32_ratio, "your code reads float32", "float32"),
+    "perspective weights summed in float32": (
+        "perspective_weights", _w440_f32_sum, "your code reads float32", "float32"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R440.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R440.items()})
+
+
+def _b440_by_sub_areas(xy, p):
+    """E of each sub-triangle over their sum (exact on the grid: the sum is E(v1, v2, v3))."""
+    e = _sub_areas(tuple(np.asarray(q, dtype=float) for q in xy), p)
+    if e.sum() == 0:
+        raise ValueError("zero area")
+    return e / e.sum()
+
+
+def _w440_printed_where_finite(lam, w):
+    """Lesson 04's λ / w where it is finite, the smallest w that weighs elsewhere."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    with np.errstate(all="ignore"):
+        q = lam / w
+        s = q.sum()
+    if np.isfinite(q).all() and s != 0 and np.isfinite(s):
+        return q / s
+    return _w440_right(lam, w)
+
+
+DIFFERENT.update({
+    "barycentric by the sub-areas over their sum": ("barycentric", _b440_by_sub_areas),
+    "perspective weights as lesson 04 prints them where finite, scaled elsewhere": (
+        "perspective_weights", _w440_printed_where_finite),
+})  # fmt: skip

@@ -105,7 +105,7 @@ def test_lesson_04s_formula_passes_3_2_on_a_gpus_w():
     assert {f.kind for f in report.failures} == {"NaN beyond a GPU's range"}, str(report)
     assert all("w beyond a GPU's range" in f.case for f in report.failures), str(report)
     first = report.failures[0].explanation
-    assert "only one step makes a NaN: λ_i / w_i overflows to inf at v1" in first, first
+    assert "only an infinite term makes a NaN: λ_i / w_i overflows to inf at v1" in first, first
 
 
 def test_trilinears_clamp_is_asked_back_on_the_first_try():

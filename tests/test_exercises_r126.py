@@ -127,7 +127,10 @@ def test_cell_4_says_the_check_asks_float64_at_the_origin_too():
         if isinstance(lam, str):  # 3.1's zero area since ex30b: no weights
             continue
         if np.abs(xy).max() < 1e4:
-            near.append(float(np.abs(_float32_barycentric(xy, p) - lam).max()))
+            try:
+                near.append(float(np.abs(_float32_barycentric(xy, p) - lam).max()))
+            except ValueError:  # r440 W4: the 200-px sliver, whose E float32 rounds to 0
+                continue
     assert 5e-9 < float(np.median(near)) < 5e-8, np.median(near)
     first = _check("barycentric", _float32_barycentric).failures[0]
     assert (

@@ -62,6 +62,10 @@ OFF_CENTRE = (
      (9.125, 8.625)),
     ("off the centre, 1/256-px grid", [[2.0, 3.0], [13.5, 5.25], [6.75, 14.0]],
      (7.73046875, 8.26171875)),
+    # r440 H1: a p on the 1/16-px grid (a GPU's 4 sub-pixel bits), not the 1/8-px one: p
+    # rounded to 1/8 px and to 1/16 px give different weights only here
+    ("off the centre, 1/16-px grid", [[2.0, 3.0], [13.5, 5.25], [6.75, 14.0]],
+     (7.5625, 8.4375)),
     ("on the edge v1 v2, off the centres", [[2.0, 2.0], [14.0, 6.0], [5.0, 13.0]],
      (8.0, 4.0)),
 )  # fmt: skip
@@ -86,6 +90,13 @@ THIN_FAR = (
     ("thin, 87 000 px out, E(v1, v2, v3) = 0.000137",
      [[59232.2578125, 87093.6328125], [59232.29296875, 87075.3515625],
       [59232.234375, 87105.82421875]], (59232.5, 87091.5)),
+    # r440 W4: a sliver 200 px long near the origin, E = 2^-15: float32 holds its vertices
+    # exactly, but not the products in E (up to 2^14 px² on the 1/256-px grid: 30 bits),
+    # and every float32 form of E (about each vertex, or in absolute coordinates) rounds to
+    # 0, so a zero-area test in float32 refused it (r429's slivers were all short)
+    ("a sliver 200 px long, E(v1, v2, v3) = 2^-15",
+     [[3.8046875, 2.52734375], [186.62890625, 92.6875], [76.8203125, 38.53515625]],
+     (40.3125, 20.53125)),  # the midpoint of v1 v3: λ = (½, 0, ½)
 )  # fmt: skip
 
 
@@ -176,8 +187,14 @@ THIN_TOL = 1e-6
 
 
 def _thin_far(args) -> bool:
+    """A thin triangle whose 3×3 matrix is ill-conditioned: far from the origin, or (r440 W4)
+    a sliver 100 px long or more (condition number about 1e9 at 200 px and E = 2^-15)."""
     xy, _ = args
-    return abs(_area(xy)) < 1 and _far(args)[0] >= 1e4
+    if abs(_area(xy)) >= 1:
+        return False
+    v = np.asarray(xy, dtype=float)
+    longest = float(np.max(np.hypot(*(v - np.roll(v, 1, axis=0)).T)))
+    return _far(args)[0] >= 1e4 or longest >= 100
 
 
 def _areas(xy, p) -> np.ndarray:
@@ -536,6 +553,43 @@ def _p_snapped_words(args, expected, got) -> str:
     )
 
 
+#: r440 H1: p made coarser than the 1/256-px grid it lies on: truncated (``int(p)``: at a
+#: pixel centre the same as p − ½, so told apart by the off-centre cases), or rounded to whole
+#: pixels or to 1/k px (a GPU's sub-pixel grid: 1/16 px for 4 bits); each with its words
+P_COARSENED = {
+    "truncated": (np.trunc, "p truncated to whole pixels (int(p), or an int array, truncates)"),
+    **{f"rounded to 1/{k} px" if k > 1 else "rounded to whole pixels": (
+        lambda p, k=k: np.round(np.asarray(p, float) * k) / k,
+        f"p rounded to 1/{k} px (the sub-pixel grid a GPU snaps vertices to, but p here is a "
+        "point given on the 1/256-px grid)" if k > 1 else "p rounded to whole pixels")
+       for k in (1, 2, 4, 8, 16)},
+}  # fmt: skip
+
+
+def _p_coarsened(how: str):
+    """The weights of p truncated or rounded (:data:`P_COARSENED`)."""
+    move = P_COARSENED[how][0]
+
+    def gives(xy, p):
+        return _areas(xy, move(np.asarray(p, float)) + 0.0) / _area(xy)
+
+    return gives
+
+
+def _p_coarsened_words(how: str):
+    move, said = P_COARSENED[how]
+
+    def words(args, expected, got) -> str:
+        _, p = args
+        moved = vec(move(np.asarray(p, float)) + 0.0)
+        return (
+            f": your weights are those of {moved}, {said}, not of p = {vec(p)}: p is any point, "
+            "an MSAA sample off the centre say: weigh p as given, in float64"
+        )
+
+    return words
+
+
 #: How vertices lose their fractions (r348: truncated by an int cast; r358 4: rounded),
 #: and the words that say how
 WHOLE_PIXELS = {
@@ -752,6 +806,18 @@ def _float32_flattened(args, expected, got) -> bool | None:
 def _float32_flattened_words(args, expected, got) -> str:
     far, _ = _far(args)
     xy, _ = args
+    v = np.asarray(xy, dtype=float)
+    if np.array_equal(v.astype(np.float32).astype(float), v):
+        # r440 W4: float32 holds the vertices; E's products are what it rounds
+        d = np.abs(v - np.roll(v, 1, axis=0))
+        big = float(d[:, 0].max() * d[:, 1].max())
+        return (
+            ": you refused a thin but real triangle: float32 holds these vertices exactly, but "
+            f"not the products in E(v1, v2, v3): they reach {num(big)} px² on the 1/256-px grid, "
+            "more digits than float32's 24 bits keep, so the two products round to the same "
+            f"number and E, {_area(xy)!r} in float64, becomes 0 in float32. Test E == 0 in "
+            "float64, where it is exact"
+        )
     return (
         f": you refused a thin but real triangle. {num(far)} px from the origin float32 "
         f"numbers are {num(float(np.spacing(np.float32(far))))} px apart: in float32 its "
@@ -881,6 +947,8 @@ def _proper_mistakes() -> list[Mistake]:
                     _sign_in_two_words(rest, neg), gives=_sign_in_two(rest, neg))
             for neg in (False, True) for rest in range(3)]  # fmt: skip
     out.append(Mistake("p snapped to its pixel centre", _p_snapped_words, gives=_p_snapped))
+    out += [Mistake(f"p {how}", _p_coarsened_words(how), gives=_p_coarsened(how))
+            for how in P_COARSENED]  # fmt: skip
     out += [Mistake(f"λ3 = {form}", _lambda3_words(form), gives=_lambda3_typo(signs))
             for signs, form in LAMBDA3_SLIPS.items()]  # fmt: skip
     # r358 2: p left untranslated in a solve about one vertex

@@ -26,7 +26,7 @@ from ..core.interpolation import normalised_weights, perspective_weights, weight
 from ..study.hardcases import CASES
 from .answers import as_numbers
 from .cases import DRAWN, SEED, drawn_rng
-from .diagnosis import answer_in_float32, near
+from .diagnosis import FLOAT32_EPS, FLOAT32_OPS, answer_in_float32, held_by_precision, near
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .interpolation import ONE_POINT
 from .scalars import full_number, num, vec
@@ -53,6 +53,14 @@ def weights_cases() -> list[tuple[str, tuple, np.ndarray]]:
     for lam, w in OUTSIDE:
         lam, w = np.array(lam), np.array(w)
         out.append((f"p outside the triangle: λ = {vec(lam)}, w = {_ws(w)}", (lam, w),
+                    weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
+    # r440 W1, W2: a point next to the edge opposite v1, the vertex of the smallest w: λ1 is
+    # tiny but weighs 1e-4 of μ (a mask |λ| > 1e-9 dropped it), and the right terms sum to
+    # 1e-6 of λ (an ε in the normaliser moved μ by 1e-6); w within a GPU's range
+    for lam, w in NEAR_EDGE:
+        lam, w = np.array(lam), np.array(w)
+        out.append((f"p next to the edge opposite v1: λ = ({lam[0]:.3g}, {lam[1]:.12g}, "
+                    f"{lam[2]:.12g}), w = {_ws(w)}", (lam, w),
                     weights_per_row(lam[None], w[None], extrapolate=True)[0]))  # fmt: skip
     now = drawn_rng()  # r46 X1: a few drawn for this check, so a harvested table fails
     for k in range(DRAWN):
@@ -90,6 +98,16 @@ EXTREME = (
     # reference w taken among the λ > 0 only overflows its ratio there
     ((-0.25, 0.5, 0.75), (1e-310, 1e300, 1e300)),
     ((0.5, 0.75, -0.25), (1e300, 1e300, 1e-310)),
+    # r440 W3: w1 = 1e-320, 1e620 from the others: a reference w from the extremes (their
+    # geometric mean, 1e-10) overflows its ratio to w1, though 1e-310 to 1e300 did not
+    ((0.2, 0.3, 0.5), (1e-320, 1e300, 1e300)),
+)
+
+#: r440 W1, W2: (λ, w) of a point next to an edge, whose tiny λ sits at the smallest w
+NEAR_EDGE = (
+    ((1e-10, 0.5, 0.4999999999), (1e-3, 1e3, 1e3)),
+    # λ1 = 1e-12 at w1 = 1e-9: half of μ (np.isclose(λ, 0) and |λ| > 1e-12 drop it)
+    ((1e-12, 0.5, 0.499999999999), (1e-9, 1e3, 1e3)),
 )
 
 #: (λ, w) of points outside the triangle: one negative λ each
@@ -194,7 +212,10 @@ def _beyond_slip(kind: str):
         if answer_in_float32(got) or not _beyond(args[1]) or _holds_nan(got):
             return None  # (on a GPU's w it is the right answer: a near one is no overflow;
             # r429 M1: a NaN is told by the case's sources, :func:`_nan_sources`)
-        return near(_beyond_variants(*args)[kind], got)
+        slip = _beyond_variants(*args)[kind]
+        if np.isfinite(slip).all() and all_close(slip, expected):
+            return None  # r440 M1: right here (the smallest w of all where its λ is not 0)
+        return near(slip, got)
 
     return fits
 
@@ -228,8 +249,10 @@ def _nan_sources(lam, w) -> list[str]:
     with np.errstate(all="ignore"):
         over = [k for k in range(3) if lam[k] != 0 and np.isinf(lam[k] / w[k])]
         if over:
+            # r440 H4: λ and w both scaled by 1e-300 make the same inf (w1 · 1e-300 is 0)
             said.append(f"λ_i / w_i overflows to inf at {_vertices(over)} (1 / {w[over[0]]:.3g} "
-                        "is beyond float64's largest number), and inf / inf is NaN")  # fmt: skip
+                        "is beyond float64's largest number; so does a λ divided by a w scaled "
+                        "down to 0), and inf / inf is NaN")  # fmt: skip
         for k in np.flatnonzero(lam == 0):
             far = [j for j in range(3) if lam[j] != 0 and w[j] / w[k] in (0.0, np.inf)]
             if far:
@@ -295,7 +318,7 @@ def _nan_beyond_fits(args, expected, got):
 def _nan_beyond_words(args, expected, got) -> str:
     sources = _nan_sources(*args)
     if len(sources) == 1:
-        return f": on this case only one step makes a NaN: {sources[0]}. {ONLY_RATIOS}"
+        return f": on this case only an infinite term makes a NaN: {sources[0]}. {ONLY_RATIOS}"
     listed = "; ".join(f"({n + 1}) {s}" for n, s in enumerate(sources))
     return (
         f": your NaN does not tell which step made it, but on this case only these make one: "
@@ -581,9 +604,10 @@ def _sum_words(args, expected, got) -> str:
     return f": they sum to {_their_sum(got)}, and weights sum to 1"
 
 
-def _nudge(args, got) -> float | None:
+def _nudge(args, got, small: bool = True) -> float | None:
     """δ when ``got`` is λ_i/w_i ÷ (Σ λ_j/w_j + δ) for a small δ ≠ 0 (a guard against
-    dividing by 0), else None."""
+    dividing by 0), else None; ``small=False``: any δ up to the sum itself (r440 W2: an ε
+    beside terms scaled by a tiny w is not small beside them)."""
     lam, w = args
     g = np.asarray(got, dtype=float)
     total = float(np.sum(g))
@@ -598,7 +622,7 @@ def _nudge(args, got) -> float | None:
     # r164: a guard adds a positive ε (the sum is positive: the point is in front); one ε
     # on every case (:attr:`.Mistake.parameter`): Σ 1/w_j for Σ λ_j/w_j was "about 2e-03"
     # (r421 T2: or δ ≤ 1e-3 itself, where w ~ 1e300 makes the sum ~1e-300)
-    if delta <= 0 or abs(delta) > 1e-3 * max(abs(s), 1.0):
+    if delta <= 0 or abs(delta) > (1e-3 * max(abs(s), 1.0) if small else abs(s)):
         return None
     if not np.allclose(g, q / (s + delta), rtol=1e-9, atol=1e-300):
         return None
@@ -606,10 +630,16 @@ def _nudge(args, got) -> float | None:
 
 
 def _nudge_words(args, expected, got) -> str:
+    delta = _nudge(args, got)
+    total = float(np.sum(np.asarray(args[0], dtype=float) / np.asarray(args[1], dtype=float)))
+    # r440 W2: terms scaled by a w (the sum 1e-6 here) hold a smaller ε: the share is theirs too
+    share = (
+        "" if 0.1 <= abs(total) <= 10 else f", {delta / total:.0e} of Σ λ_j / w_j = {num(total)}"
+    )
     return (
-        f": they sum to {_their_sum(got)}, not 1: you added a small number (about "
-        f"{_nudge(args, got):.0e}) to the sum you divide by (a guard against dividing by 0?); "
-        "divide by the sum itself (with every w > 0 and the point in front it is never 0)"
+        f": they sum to {_their_sum(got)}, not 1: you added a small number (about {delta:.0e}"
+        f"{share}) to the sum you divide by (a guard against dividing by 0?); divide by the sum "
+        "itself (with every w > 0 and the point in front it is never 0)"
     )
 
 
@@ -650,14 +680,18 @@ def _nudge_in_w_words(args, expected, got) -> str:
 
 
 #: r175 B: an epsilon in each w, ``lam / (w + 1e-6)`` normalised
-def _nudge_fits(find):
+def _nudge_fits(find, beyond: bool = False):
     """Does a guard's ε (``find(args, got)``) fit? Beyond a GPU's w it says nothing (r421 T2:
     ``q / (q.sum() + 1e-12)``'s NaN at w = 1e-310 hid its ε elsewhere, and an ε far above
-    w = 1e-310 gives the same answer whatever its size, so none is read back there)."""
+    w = 1e-310 gives the same answer whatever its size, so none is read back there), except
+    (``beyond``, r440 M1) where the ε is read back (an ε in each w beside w = 1e-310 and
+    w = 1e-3: the smallest w of all was named, "λ1 = 0 … 0 / 0", on a case with neither)."""
 
     def fits(args, expected, got):
         if _beyond(args[1]):
-            return None
+            if not beyond or near(np.asarray(args[0], dtype=float), got):
+                return None  # (λ itself: an ε above every w, or the w clipped, LAM_BEYOND)
+            return (find(args, got) is not None) or None
         return find(args, got) is not None
 
     return fits
@@ -670,15 +704,133 @@ def _beyond(w) -> bool:
     return bool(w.min() < f32.tiny or w.max() > f32.max)
 
 
-NUDGED_W = Mistake("epsilon added to w", _nudge_in_w_words, fits=_nudge_fits(_nudge_in_w),
+NUDGED_W = Mistake("epsilon added to w", _nudge_in_w_words, fits=_nudge_fits(_nudge_in_w, True),
                    parameter=lambda a, e, g: _nudge_in_w(a, g), only_whole=True)  # fmt: skip
 
 #: r153 D3-4: an epsilon in the normaliser, ``q / (q.sum() + 1e-9)``
 NUDGED = Mistake("epsilon added to the sum", _nudge_words, fits=_nudge_fits(_nudge),
                  parameter=lambda a, e, g: _nudge(a, g), only_whole=True)  # fmt: skip
 
+
+def _nudge_scaled(args, got) -> float | None:
+    """r440 W2: the ε of ``q / (q.sum() + ε)`` where q_i = λ_i · (w_ref / w_i), w_ref the
+    smallest w that weighs (the task's scaling): δ · w_ref, one number on every case."""
+    delta = _nudge(args, got, small=False)
+    if delta is None:
+        return None
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    return delta * float(w[lam != 0].min())
+
+
+def _nudge_scaled_words(args, expected, got) -> str:
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    k = int(np.flatnonzero(lam != 0)[np.argmin(w[lam != 0])])
+    total = float(np.sum(lam * (w[k] / w)))
+    return (
+        f": they sum to {_their_sum(got)}, not 1: you added a small number (about "
+        f"{_nudge_scaled(args, got):.0e}) to the sum you divide by (a guard against dividing by "
+        f"0?), but your terms, scaled by w{k + 1} = {w[k]:.3g}, sum to only {num(total)} here; "
+        "divide by the sum itself (with every w > 0 and the point in front it is never 0)"
+    )
+
+
+#: r440 W2: the ε in the normaliser of the right (scaled) terms, one ε in their units
+NUDGED_SCALED = Mistake("epsilon added to the sum", _nudge_scaled_words,
+                        fits=_nudge_fits(_nudge_scaled),
+                        parameter=lambda a, e, g: _nudge_scaled(a, g), only_whole=True)  # fmt: skip
+
+
+def _tiny_lams(lam) -> np.ndarray:
+    lam = np.asarray(lam, dtype=float)
+    return (lam != 0) & (np.abs(lam) <= 1e-6)
+
+
+def _tiny_lam_dropped(lam, w):
+    """r440 W1: μ with each tiny λ (0 < |λ| ≤ 1e-6) left out, as a mask ``|λ| > 1e-9`` does."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    if not _tiny_lams(lam).any():
+        return None
+    kept = np.where(_tiny_lams(lam), 0.0, lam)
+    return weights_per_row(kept[None], w[None], extrapolate=True)[0]
+
+
+def _tiny_lam_words(args, expected, got) -> str:
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    k = int(np.flatnonzero(_tiny_lams(lam))[0])
+    return (
+        f": your weight of v{k + 1} is 0, but λ{k + 1} = {lam[k]:.3g} is not 0 (p lies next to "
+        f"the edge opposite v{k + 1}, not on it), and beside w{k + 1} = {w[k]:.3g}, the "
+        f"smallest w, its term weighs μ{k + 1} = {expected[k]:.3g}: you left out a λ below a "
+        "tolerance (a mask |λ| > ε?). Leave out only a λ that is exactly 0"
+    )
+
+
+def _tiny_lam_fits(args, expected, got) -> bool | None:
+    """Is the answer μ with the tiny λ left out? Nothing said where there is none, or where
+    the answer is right (a mask's ε below this λ: the next case's smaller λ may catch it)."""
+    dropped = _tiny_lam_dropped(*args)
+    g = np.asarray(got, dtype=float)
+    if dropped is None or g.shape != (3,) or not np.isfinite(g).all() or all_close(g, expected):
+        return None
+    return near(dropped, g)
+
+
+#: r440 W1: a tiny λ left out (a tolerance in "the vertices that weigh", whatever its ε)
+TINY_LAM = Mistake("tiny λ left out", _tiny_lam_words, fits=_tiny_lam_fits)
+
+
+def _float32_error(args, expected, got) -> float | None:
+    """The answer's largest error where it is finite weights within float32's rounding of μ
+    on a GPU's w (r440 M2, H3: a float64 answer from a float32 step), else None."""
+    if _beyond(args[1]) or held_by_precision(expected, got):
+        return None  # (float32 numbers returned: the float32 of the checker's own words)
+    g = np.asarray(got, dtype=float)
+    if g.shape != (3,) or not np.isfinite(g).all():
+        return None
+    error = float(np.max(np.abs(g - expected)))
+    bound = FLOAT32_OPS * FLOAT32_EPS * max(1.0, float(np.abs(expected).max()))
+    return error if error <= bound else None
+
+
+def _float32_step_words(args, expected, got) -> str:
+    return (
+        f": yours are off by {_float32_error(args, expected, got):.1g}, about float32's rounding "
+        "(float32 keeps about 7 significant digits), and your code reads float32: a step of "
+        "yours (a ratio of w, a sum) ran in float32, and its rounding stays in the float64 "
+        "numbers you return. Compute every step in float64 (plain Python floats or np.float64)"
+    )
+
+
+#: r440 M2, H3: a ratio or the sum computed in float32, returned as float64 (the answer holds
+#: numbers float32 does not, so the float32 of :func:`.diagnosis.low_precision_mistake` does
+#: not fit): told "turn that around" or "they sum to 0.9999999"
+FLOAT32_STEP = Mistake("float32", _float32_step_words, only_whole=True, reads="float32",
+                       fits=lambda a, e, g: (None if _beyond(a[1]) else
+                                             _float32_error(a, e, g) is not None))  # fmt: skip
+
+
+def _zero_lam_weight(args, expected, got) -> bool | None:
+    lam, g = np.asarray(args[0], dtype=float), np.asarray(got, dtype=float)
+    if g.shape != (3,) or not np.isfinite(g).all() or not (lam == 0).any():
+        return None
+    return bool((g[lam == 0] != 0).any())
+
+
+def _zero_lam_words(args, expected, got) -> str:
+    lam, g = np.asarray(args[0], dtype=float), np.asarray(got, dtype=float)
+    k = int(np.flatnonzero((lam == 0) & (g != 0))[0])
+    return (
+        f": where λ{k + 1} = 0 (p on the edge opposite v{k + 1}) your weight of v{k + 1} is "
+        f"{num(float(g[k]))}, not 0: μ_i goes as λ_i / w_i, so it is 0 wherever λ_i is 0, "
+        "whatever the w. A number you never computed? (np.divide(..., where=...) without out= "
+        "leaves the entries it skips as they were in memory: pass out=np.zeros(3))"
+    )
+
+
 SYMPTOMS = (
     Mistake("sum", _sum_words, fits=lambda a, e, g: _sums_to_other_than_1(g), symptom=True),
+    # r440 H2: np.divide(..., where=lam != 0) without out=: garbage where λ = 0, the rule said
+    Mistake("weight where λ = 0", _zero_lam_words, fits=_zero_lam_weight, symptom=True),
 )  # fmt: skip
 
 
@@ -712,9 +864,10 @@ def draw_weights(ax, case, got):
 
 PERSPECTIVE_WEIGHTS = Exercise(
     "perspective_weights", weights_cases, as_weights, same_weights, explain_weights, _rule,
-    [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED, NUDGED_W,
+    [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED,
+     NUDGED_SCALED, NUDGED_W,
      *(Mistake(kind, words, fits=_beyond_slip(kind)) for kind, words in BEYOND.items()),
-     LAM_BEYOND, NAN_BEYOND, *SYMPTOMS],
+     LAM_BEYOND, NAN_BEYOND, TINY_LAM, FLOAT32_STEP, *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
