@@ -147,16 +147,25 @@ editor""",
 
 #: The smoke run's (``--quick``) explorers with the most pictures drawn ahead, smaller (as large
 #: on the page): each slider position is drawn in the kernel and decoded in the page, again
-#: after every control moved. The PlaneExplorer on an 8 x 7 grid, not the lesson's 16 x 14
-#: (tests/test_browser_plane_drag's: 279 pictures a round, not 459); the FilterExplorer's
-#: texture 64 x 48, not 160 x 120 (tests/test_browser_filter_keys': its 90 full pictures
-#: 5.6 -> 1.9 s of kernel CPU). Their rows are measured as in the report's run; only their
-#: figures differ, and the smoke run's figures are not the report's.
+#: after every control moved. The PlaneExplorer on an 8 x 7 grid, not the lesson's 16 x 14,
+#: and its sliders in whole pixels and halves of f, not quarters and tenths: 72 pictures a
+#: round, not 459 (279 with the quarters and tenths, tests/test_browser_plane_drag's; 6.3 ->
+#: 1.4 s of kernel CPU a round, and the smoke run draws about four rounds: at Run All, after v1
+#: x, after f2 and after the vertex's drag); its vertices and f on those positions. The
+#: FilterExplorer's texture 64 x 48, not 160 x 120 (tests/test_browser_filter_keys': its 90
+#: full pictures 5.6 -> 1.9 s of kernel CPU), and its tilt and the TexturedPlaneViewer's in
+#: steps of 5°, not 1° (18 and 19 pictures a round, not 90 and 91: 2.1 -> 0.4 s and 1.2 ->
+#: 0.3 s of kernel CPU). Their rows are measured as in the report's run; only their figures
+#: differ, and the smoke run's figures are not the report's.
 QUICK_CELLS = {
+    "viewer = TexturedPlaneViewer(tilt=60)":
+        "viewer = TexturedPlaneViewer(tilt=60)\nviewer.tilt.step = 5.0",
     "plane = PlaneExplorer()":
-        "plane = PlaneExplorer(((2.0, 1.0), (7.5, 3.0), (3.0, 6.5)), width=8, height=7)",
+        "plane = PlaneExplorer(((2.0, 1.0), (7.0, 3.0), (3.0, 6.0)), (0.0, 1.0, 0.5), width=8,"
+        " height=7)\nfor _s in (*plane.x, *plane.y):\n    _s.step = 1.0\nfor _s in plane.f:\n"
+        "    _s.step = 0.5",
     'explorer = FilterExplorer(tilt=80, filter="trilinear")':
-        'explorer = FilterExplorer(64, 48, tilt=80, filter="trilinear")',
+        'explorer = FilterExplorer(64, 48, tilt=80, filter="trilinear")\nexplorer.tilt.step = 5.0',
 }  # fmt: skip
 
 #: ``polling`` (ms) of the waits on the kernel (Run All's groups, the pictures drawn ahead):
