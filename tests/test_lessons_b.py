@@ -6753,3 +6753,21 @@ def test_11_r444_the_bounds_named_the_dashes_gone_and_the_summary_covers_every_s
     assert "its depth stays finite and this frame keeps no colour" in whole
     summary = next(t for t in text.values() if t.startswith("## Summary"))
     assert "A NaN from a vertex spreads" in summary and "shaded twice" in summary
+
+
+def test_11_r447_outline_colour_the_glass_setup_and_the_shared_quads():
+    """Review r447: C1, the text said "outlined in black" where the figure draws white; P1,
+    "blended over in submission order" gave q_glass's step away; S1, a quad the shared edge
+    crosses is shaded twice only where both triangles cover one of its centres; S6, the
+    application sets the stencil counting up, the GPU runs it."""
+    import json
+
+    cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
+    whole = " ".join(" ".join("".join(c["source"]).split()) for c in cells)
+    assert "outlined in black" not in whole and "each is outlined in white" in whole
+    assert 'LineCollection(sides, colors="w"' in whole
+    assert "in submission order onto white" not in whole
+    assert "triangles of §1 as glass, alpha ½, over a white background:" in whole
+    assert "every quad that a shared edge crosses" not in whole
+    assert "both cover a pixel centre is shaded twice" in whole
+    assert "An application counts overdraw and depth complexity" in whole
