@@ -8036,9 +8036,6 @@ R439 = {
     "span in decimal at 30 digits, from the lower end": (
         "span", _r439(prec=30, CROSS=_R439_LOWER, **_R439_DEC),
         "your crossing was computed in decimal at too few significant digits", "decimal at 30 digits, lower end"),
-    "span in decimal at 32 digits": (
-        "span", _r439(prec=32, **_R439_DEC), "your crossing was computed in decimal at too few significant digits",
-        "decimal at 32 digits"),
     "span, exact crossings, side in int64": (
         "span", _r439(SIDE=_R439_INT64_SIDE), "your side test's products overflowed int64",
         "side in int64"),

@@ -45,6 +45,7 @@ from .span_variants import (
     NO_FLOAT_ORDER,
     PLACED,
     PRECISION_KINDS,
+    TIDY_KINDS,
     TIE_ENDS,
     TIE_ROWS,
     float_crossing,
@@ -1595,7 +1596,7 @@ def _mistakes() -> list[Mistake]:
         elif m.fits is not None and m.kind not in ("float64 crossing", "int64 overflow"):
             m = dataclasses.replace(m, fits=_near_only(m.fits))
         whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped",
-                           *PRECISION_KINDS)  # fmt: skip
+                           *PRECISION_KINDS, *TIDY_KINDS)  # fmt: skip
         out.append(dataclasses.replace(m, only_whole=True) if whole else m)
     return out
 
