@@ -8037,7 +8037,7 @@ R439 = {
         "span", _r439(prec=30, CROSS=_R439_LOWER, **_R439_DEC),
         "your crossing was computed in decimal at too few significant digits", "decimal at 30 digits, lower end"),
     "span, exact crossings, side in int64": (
-        "span", _r439(SIDE=_R439_INT64_SIDE), "your side test's products overflowed int64",
+        "span", _r439(SIDE=_R439_INT64_SIDE), "your side test overflowed int64",
         "side in int64"),
     "span with its vertices through limit_denominator(100)": (
         "span", _r439(READ="(lambda c: Fraction(c).limit_denominator(100))"),

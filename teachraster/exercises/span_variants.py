@@ -344,6 +344,14 @@ NEGATIVE_DIVISOR = (
 )
 
 
+def _shown(value, other) -> str:
+    """``value`` to 10 digits, or all of its float's where ``other`` reads the same so (r439: a
+    vertex moved 4·10^-6 px by 6 decimals read "-233344274.8 became -233344274.8")."""
+    if f"{float(value):.10g}" != f"{float(other):.10g}":
+        return f"{float(value):.10g}"
+    return repr(float(value))
+
+
 def _moved_words(kind: str):
     """r413 H8: the words of a move, with the first coordinate it changes on the case."""
     how, move = MOVES[kind]
@@ -353,8 +361,8 @@ def _moved_words(kind: str):
         moved = move(xy)
         k, axis = next(zip(*np.nonzero(moved != xy)), (None, None))
         where = "" if k is None else (
-            f" (here {'xy'[axis]} = {xy[k, axis]:.10g} of v{k + 1} became "
-            f"{float(moved[k, axis]):.10g})"
+            f" (here {'xy'[axis]} = {_shown(xy[k, axis], moved[k, axis])} of v{k + 1} became "
+            f"{_shown(moved[k, axis], xy[k, axis])})"
         )  # fmt: skip
         return (
             f"your span is the one of the triangle with its vertices moved: you {how} before "
@@ -832,11 +840,12 @@ def _wide_side_words(kind: str):
         exact, wrapped = _int64_side(v)
         bits = max(abs((256 * (x2 - x1)) * (256 * (y3 - y1))),
                    abs((256 * (y2 - y1)) * (256 * (x3 - x1)))).numerator.bit_length()  # fmt: skip
+        sides = abs(exact).bit_length()
         if kind == "side in int64":
-            how = (f"your side test's products overflowed int64: (x2 − x1)(y3 − y1) in "
-                   f"1/256-px units needs {bits} bits here, more than int64's 63, and numpy's "
-                   f"int64 wraps around silently, so the side came out {wrapped} (exactly "
-                   f"{exact}), of the wrong sign: your x_l and x_r are swapped")  # fmt: skip
+            how = (f"your side test overflowed int64: its value (x2 − x1)(y3 − y1) − (y2 − y1)"
+                   f"(x3 − x1) in 1/256-px units is {exact} here, {sides} bits besides the sign, "
+                   "more than int64's 63, and numpy's int64 wraps around silently, so it came "
+                   f"out {wrapped}, of the wrong sign: your x_l and x_r are swapped")  # fmt: skip
         else:
             how = (f"your side test is computed in np.longdouble: here the middle vertex lies "
                    f"{float(abs(x2 - u4)):.2g} px {where} of the long edge, and the side's "
