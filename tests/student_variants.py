@@ -7951,6 +7951,145 @@ if np.finfo(np.longdouble).nmant > 52:  # x86's 80-bit longdouble (elsewhere it 
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R424.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R424.items()})
 
+# == r439 (fixex02r, exercise 2.1 span: a verifying reader's variants) ============================
+_R439_GENERIC = """
+def span(xy, row):
+    P = sorted(((READ(float(x)), READ(float(y))) for x, y in np.asarray(xy).tolist()),
+               key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = P
+    y = LINE
+    side = SIDE
+    if side == 0 or not (y1 <= y < y3):
+        return 0, 0
+    if y1 == y2 == y:
+        left, right = min(x1, x2), max(x1, x2)
+    else:
+        def cross(a, b):
+            return CROSS
+        xl = cross(P[0], P[2])
+        xs = cross(P[0], P[1]) if SPLIT else cross(P[1], P[2])
+        left, right = (xl, xs) if side > 0 else (xs, xl)
+    return END
+"""
+_R439_PARTS = {
+    "READ": "Fraction", "LINE": "row + Fraction(1, 2)",
+    "SIDE": "(x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)",
+    "CROSS": "a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])", "SPLIT": "y < y2",
+    "END": "math.ceil(left - Fraction(1, 2)), math.ceil(right - Fraction(1, 2))",
+}  # fmt: skip
+
+
+def _r439(prec: int | None = None, **parts):
+    """The reader's span from :data:`_R439_GENERIC` with ``parts`` replaced (a decimal context of
+    ``prec`` digits where given, set where the check calls)."""
+    source = _R439_GENERIC
+    for key, value in {**_R439_PARTS, **parts}.items():
+        source = source.replace(key, value)
+    scope = {"math": math, "np": np, "Fraction": Fraction}
+    exec("import decimal\nfrom decimal import Decimal\n" + source, scope)
+    fn = scope["span"]
+    if prec is None:
+        return fn
+
+    def span(xy, row):
+        import decimal
+
+        with decimal.localcontext() as context:
+            context.prec = prec
+            return fn(xy, row)
+
+    return span
+
+
+def _r439_none():
+    """The exact span, but None for a line with no covered centre (r439 M4)."""
+    exact = _r439()
+
+    def span(xy, row):
+        first, stop = exact(xy, row)
+        return (first, stop) if stop > first else None
+
+    return span
+
+
+def _r439_sorted_apart():
+    """The exact span of ``np.sort(xy, axis=0)`` (r439 H5): x's and y's sorted apart."""
+    exact = _r439()
+    return lambda xy, row: exact(np.sort(np.asarray(xy, dtype=float), axis=0), row)
+
+
+_R439_LD = {"READ": "np.longdouble", "LINE": "np.longdouble(row) + np.longdouble(0.5)",
+            "END": "int(np.ceil(left - np.longdouble(0.5))), int(np.ceil(right - "
+                   "np.longdouble(0.5)))"}  # fmt: skip
+_R439_DEC = {
+    "READ": "Decimal",
+    "LINE": "row + Decimal('0.5')",
+    "END": "math.ceil(left - Decimal('0.5')), math.ceil(right - Decimal('0.5'))",
+}
+_R439_LOWER = "b[0] + (y - b[1]) * (a[0] - b[0]) / (a[1] - b[1])"
+_R439_LD_SIDE = (
+    "(lambda q: (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - "
+    "q[0][0]))([(np.longdouble(float(a)), np.longdouble(float(b))) for a, b in P])"
+)
+_R439_INT64_SIDE = (
+    "int((lambda q: (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * "
+    "(q[2][0] - q[0][0]))(np.round(256 * np.array(P, dtype=float)).astype(np.int64)))"
+)
+R439 = {
+    "span in decimal at 31 digits": (
+        "span", _r439(prec=31, **_R439_DEC), "your crossing was computed in decimal at too few significant digits",
+        "decimal at 31 digits"),
+    "span in decimal at 30 digits, from the lower end": (
+        "span", _r439(prec=30, CROSS=_R439_LOWER, **_R439_DEC),
+        "your crossing was computed in decimal at too few significant digits", "decimal at 30 digits, lower end"),
+    "span, exact crossings, side in int64": (
+        "span", _r439(SIDE=_R439_INT64_SIDE), "your side test overflowed int64",
+        "side in int64"),
+    "span with its vertices through limit_denominator(100)": (
+        "span", _r439(READ="(lambda c: Fraction(c).limit_denominator(100))"),
+        "limit_denominator(100)", "vertices by limit_denominator(100)"),
+    "span with its vertices through f'{c:.6f}'": (
+        "span", _r439(READ="(lambda c: Fraction(f'{c:.6f}'))"), "rounded them to 6 decimals",
+        "vertices to 6 decimals"),
+    "span returning None for a line with no covered centre": (
+        "span", _r439_none(), "not None", "none"),
+    "span with -int(-t) for the ceiling": (
+        "span", _r439(END="-int(Fraction(1, 2) - left), -int(Fraction(1, 2) - right)"),
+        "−int(−t) is the ceiling only for t ≤ 0", "-int(-t) for ceil"),
+    "span returning (first, count)": (
+        "span", _r439(END="math.ceil(left - Fraction(1, 2)), max(math.ceil(right - Fraction(1, "
+                          "2)) - math.ceil(left - Fraction(1, 2)), 0)"),
+        "your second number is the count of the covered columns", "first and count"),
+    "span with the split tested by the row, not its centre line": (
+        "span", _r439(SPLIT="row < y2"), "the split compares the centre line row + ½ with y2",
+        "split at row"),
+    "span in 1/256-px integers with the centre line in px": (
+        "span", _r439(READ="(lambda c: round(256 * c))", END="math.ceil(left / 256 - Fraction(1, "
+                      "2)), math.ceil(right / 256 - Fraction(1, 2))"),
+        "the centre line and the vertices are in different units", "line (row + ½)/256"),
+    "span in 1/256-px integers, the centre line in px, columns not divided back": (
+        "span", _r439(READ="(lambda c: round(256 * c))", END="math.ceil(left - Fraction(1, 2)), "
+                      "math.ceil(right - Fraction(1, 2))"),
+        "counted in 1/256-px steps", "line in px, columns in 1/256 px"),
+    "span of np.sort(xy, axis=0)": (
+        "span", _r439_sorted_apart(), "np.sort(xy, axis=0) sorts the x's and the y's each on "
+        "its own", "x and y sorted apart"),
+}  # fmt: skip
+if np.finfo(np.longdouble).nmant > 52:  # x86's 80-bit longdouble (elsewhere it is float64's)
+    R439.update({
+        "span in np.longdouble, slope first": (
+            "span", _r439(CROSS="a[0] + (y - a[1]) * ((b[0] - a[0]) / (b[1] - a[1]))",
+                          **_R439_LD), "in np.longdouble, slope first", "longdouble slope first"),
+        "span in np.longdouble, from the lower end": (
+            "span", _r439(CROSS=_R439_LOWER, **_R439_LD),
+            "in np.longdouble, multiply first, lower end", "longdouble multiply first, lower end"),
+        "span, exact crossings, side in np.longdouble": (
+            "span", _r439(SIDE=_R439_LD_SIDE), "your side test is computed in np.longdouble",
+            "side in longdouble"),
+    })  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R439.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R439.items()})
+
 
 # -- r425 (exercise 5, a fresh reader): 5.2b graded to 1e-8 either way (a refined search lands
 # on float32's rounded maximum, over the limit), z_min on a crossing, misnamed and half-named

@@ -279,6 +279,10 @@ class Exercise:
         raised ``error`` (the report's "your function raised IndexError: ..."), naming the
         mistake that raises there, or "" (r317: 7.3's level q + 1 at λ = q was told the
         symptom only); None: the error alone.
+    none_words : callable, optional
+        ``none_words(args, expected) -> str``: the words of a case on which the function
+        returned None, in place of "returned None (a missing `return`?)", or "" to keep them
+        (r439 M4: ``span`` returning None for a line with no covered centre); None: those.
     inputs_drawn : bool
         ``draw(ax, case, None)`` shows the case's inputs only, no answer (r8: 09's blends and
         lines): the untouched stub's figure draws the first case so. False (default): the
@@ -321,6 +325,7 @@ class Exercise:
     slow: str | None = None
     call_words: Callable | None = None
     raised_words: Callable | None = None
+    none_words: Callable | None = None
     tool_note: Callable | None = None
 
     def all_mistakes(self) -> list[Mistake]:
@@ -354,8 +359,8 @@ def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake
         if key is None:
             return variants(*args)
         if key not in memo:
-            if len(memo) >= 256:
-                memo.clear()
+            if len(memo) >= 1024:  # (r439: span's 261 cases past 256 cleared it on every
+                memo.clear()  # case, so each mistake recomputed every case's variants)
             memo[key] = variants(*args)
         return memo[key]
 

@@ -153,6 +153,43 @@ FAR_PRECISE = (
      174588727),
 )  # fmt: skip
 
+#: r439 P1, P4, M1: far ties (the long edge's crossing exactly on a centre, |y| < 2^30 px, spans of
+#: about 300 columns) that the other limited precisions miss, between them every one: np.longdouble
+#: multiplied first from the lower end, divided first and slope first, and ``decimal`` at 29 to 31
+#: digits from either end. Each triangle is at most 2·10^6 px wide, so that a scan of its bounding
+#: box's columns stays cheap (decimal at 32 to 34 digits needs a product of 33 to 35 digits, an edge
+#: 10^7 to 10^9 px wide: not asked). Searched with random.Random(23) (/tmp/r439/fix/search5.py).
+FAR_DIGITS = (
+    ("a product of 66 bits", ((128409.95703125, -991496292.2421875),
+     (-737206.5546875, -124974987.44140625), (-1651659.0859375, 789808797.015625)), -124977559),
+    ("a quotient that rounds", ((-21789.875, -14801250.4765625),
+     (-444470.59765625, 194191606.6875), (-861134.1875, 399908769.35546875)), 194188928),
+    ("a product of 31 digits from the lower end", ((69398.734375, -272132346.390625),
+     (560945.53515625, 105601364.40234375), (1032325.78515625, 467387378.31640625)), 105601755),
+    ("a product of 32 digits", ((-99125.63671875, -811124669.15234375),
+     (-661595.9296875, 154267674.37890625), (-1160757.5703125, 1011971036.3359375)), 154265906),
+    ("a slope that rounds", ((-1259854.453125, -838847525.5703125),
+     (-413256.9609375, -204692610.3515625), (-137583.75, 2105065.875)), -204690710),
+    ("a product of 32 digits from the lower end", ((-1917138.2109375, -257676455.5390625),
+     (-2740336.4921875, 147340409.3984375), (-3906363.58984375, 721388696.21484375)), 147341018),
+)  # fmt: skip
+
+#: r439 P2, P3: the side of the long edge where a wider float or integer still errs, each triangle
+#: under 10^6 px wide. The first, a sliver whose middle vertex lies a lattice step right of the long
+#: edge (its side's products need 75 bits): np.longdouble's side (64 bits) comes out 0 or
+#: negative there, in every form (the edge function, lesson 01's u4 either way), so the one centre
+#: on the left edge is lost; the second, a triangle whose side (x2 − x1)(y3 − y1) − (y2 − y1)(x3 −
+#: x1) in 1/256-px units needs 64 bits: numpy's int64 wraps it to the wrong sign (a wrapped
+#: difference is exact below 2^63, so only a side this large shows it), on a row of 250 columns.
+FAR_WIDE_SIDES = (
+    ("the middle vertex a lattice step right of the long edge", ((605210.03515625,
+     -552092783.74609375), (1171066.265625, 125328731.86328125),
+     (1459170.96484375, 470236698.74609375)), -40928043),
+    ("a side of 64 bits", ((1890825.86328125, -511500459.43359375),
+     (1738445.59375, -74961807.7734375), (1967256.00390625, 376716536.921875)), -510926459),
+)  # fmt: skip
+
+
 #: r385 T1: rows with a crossing exactly on a centre where lesson 01's multiply-first crossing
 #: in float64, x = a_x + (y − a_y)(b_x − a_x)/(b_y − a_y), lands a hair right of it (so a
 #: first or a stop one column too far right), on each edge (the long one, the upper and the
@@ -242,11 +279,26 @@ KINDS = (
     "bounding box", "side in float64", "vertices rounded", "vertices rounded half up",
     "vertices on the 1/16 grid", "ceil, negative divisor", "vertices through str()",
     "longdouble multiply first", "decimal at 28 digits", "decimal at 28 digits, lower end",
+    "longdouble multiply first, lower end", "longdouble divide first", "longdouble slope first",
+    *(f"decimal at {prec} digits{end}" for prec in range(29, 35) for end in ("", ", lower end")),
+    "side in longdouble", "side in int64",
+    "vertices to 6 decimals", "vertices by limit_denominator(100)",
+    "x and y sorted apart",
 )  # fmt: skip
 
-#: r424 P1, P2, M2: limited precisions other than float64, each named only where it gives every
-#: answer (``only_whole``: a float64 student also misses these far ties)
-PRECISION_KINDS = KINDS[-4:]
+#: r424 P1, P2, M2 (r439 M1): limited precisions other than float64, each named only where it
+#: gives every answer (``only_whole``: a float64 student also misses these far ties)
+PRECISION_KINDS = (
+    "vertices through str()", "longdouble multiply first", "decimal at 28 digits",
+    "decimal at 28 digits, lower end", "longdouble multiply first, lower end",
+    "longdouble divide first", "longdouble slope first",
+    *(f"decimal at {prec} digits{end}" for prec in range(29, 35) for end in ("", ", lower end")),
+    "side in longdouble", "side in int64",
+)  # fmt: skip
+
+#: r439 M2, M3: tidy-ups named only where they give every failing answer (a float64 student's far
+#: tie or an epsilon's near tie may come out as a tidied vertex's by coincidence)
+TIDY_KINDS = ("vertices to 6 decimals", "vertices by limit_denominator(100)")
 
 #: r413 H8: vertices moved off the 1/256 grid before computing: kind -> (how, the move).
 MOVES = {
@@ -255,7 +307,32 @@ MOVES = {
                                  lambda c: np.floor(c + 0.5)),
     "vertices on the 1/16 grid": ("snapped the vertices to the 1/16-px grid (round(16·c)/16)",
                                   lambda c: np.round(c * 16) / 16),
+    # r439 M2, M3: a tidy-up that reads as exact: a few decimals (round(c, 6), f"{c:.6f}": a
+    # 1/256 step needs 8), the nearest fraction with a small denominator
+    "vertices to 6 decimals": ("rounded them to 6 decimals (round(c, 6), f\"{c:.6f}\"; a "
+                               "1/256-px step needs 8: 1/256 = 0.00390625)",
+                               lambda c: _decimals(c, 6)),
+    "vertices by limit_denominator(100)": (
+        "replaced them by the nearest fraction with a denominator of at most 100 "
+        "(Fraction(c).limit_denominator(100); the vertices' denominator is 256)",
+        lambda c: _limited(c, 100)),
 }  # fmt: skip
+
+
+def _limited(c: np.ndarray, most: int) -> np.ndarray:
+    """The coordinates as ``Fraction(c).limit_denominator(most)`` moves them (exact Fractions:
+    a float of the moved value would move it again)."""
+    return _exactly(c, lambda v: Fraction(v).limit_denominator(most))
+
+
+def _decimals(c: np.ndarray, places: int) -> np.ndarray:
+    """The coordinates as ``Fraction(f"{c:.{places}f}")`` reads them (exact Fractions)."""
+    return _exactly(c, lambda v: Fraction(f"{v:.{places}f}"))
+
+
+def _exactly(c: np.ndarray, move) -> np.ndarray:
+    c = np.asarray(c, dtype=float)
+    return np.array([[move(float(v)) for v in p] for p in c], dtype=object).reshape(c.shape)
 
 
 #: r413 H9 (w44): a ceiling (n + d − 1)//d with d < 0
@@ -267,6 +344,14 @@ NEGATIVE_DIVISOR = (
 )
 
 
+def _shown(value, other) -> str:
+    """``value`` to 10 digits, or all of its float's where ``other`` reads the same so (r439: a
+    vertex moved 4·10^-6 px by 6 decimals read "-233344274.8 became -233344274.8")."""
+    if f"{float(value):.10g}" != f"{float(other):.10g}":
+        return f"{float(value):.10g}"
+    return repr(float(value))
+
+
 def _moved_words(kind: str):
     """r413 H8: the words of a move, with the first coordinate it changes on the case."""
     how, move = MOVES[kind]
@@ -276,7 +361,8 @@ def _moved_words(kind: str):
         moved = move(xy)
         k, axis = next(zip(*np.nonzero(moved != xy)), (None, None))
         where = "" if k is None else (
-            f" (here {'xy'[axis]} = {xy[k, axis]:.10g} of v{k + 1} became {moved[k, axis]:.10g})"
+            f" (here {'xy'[axis]} = {_shown(xy[k, axis], moved[k, axis])} of v{k + 1} became "
+            f"{_shown(moved[k, axis], xy[k, axis])})"
         )  # fmt: skip
         return (
             f"your span is the one of the triangle with its vertices moved: you {how} before "
@@ -300,7 +386,10 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     out["vertices truncated"] = exact(np.trunc(np.asarray(xy, dtype=float)), row)
     for kind, (_, move) in MOVES.items():  # r413 H8: rounded, or on a coarser grid
         out[kind] = exact(move(np.asarray(xy, dtype=float)), row)
+        if kind in TIDY_KINDS:  # r439: exact, so never matched with float64's ends far out
+            out[kind] = _strict(out[kind])
     out["vertices through str()"] = _strict(exact(_through_str(xy), row))  # r424 P1
+    out["x and y sorted apart"] = exact(np.sort(np.asarray(xy, dtype=float), axis=0), row)
     out["not sorted"] = _unsorted(xy, row)
     out["longest edge"] = _longest_edge(xy, row)
     ys, xs = [float(p[1]) for p in xy], [Fraction(float(p[0])) for p in xy]
@@ -344,6 +433,12 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     # one column right where the long edge's crossing is exactly on a centre (every edge's so:
     # "ties reversed", C's int(x + 0.5), the same answers)
     out.update(_precision_variants(xy, row, long_is_left))  # r424 P2, M2
+    for kind, errs in (
+        ("side in longdouble", _longdouble_side_errs(v)),
+        ("side in int64", _int64_side_errs(v)),
+    ):  # r439 P2, P3
+        if errs:
+            out[kind] = _strict(_pick(long_x, short_x, not long_is_left))
     if y < y3:  # (the bottom vertex's line has no span to move)
         out["ceil, negative divisor"] = _pick(_past_tie(long_x), short_x, long_is_left)
     if not upper:  # r372 M4 (w43): the long edge taken as the lower short one too
@@ -369,19 +464,35 @@ def _through_str(xy) -> np.ndarray:
     return np.array([[Fraction(repr(float(c))) for c in p] for p in xy], dtype=object)
 
 
-def _longdouble_crossing(a, b, y):
-    """Multiply first in np.longdouble (r424 P2, W34: a_x + (y − a_y)(b_x − a_x)/(b_y − a_y))."""
+def _longdouble_crossing(a, b, y, order: str = "multiply first"):
+    """The crossing in np.longdouble (r424 P2, W34: multiplied first, a_x + (y − a_y)(b_x −
+    a_x)/(b_y − a_y)); r439 P1, M1: from the lower end b, divided first or slope first."""
     ld = np.longdouble
-    return ld(a[0]) + (y - ld(a[1])) * (ld(b[0]) - ld(a[0])) / (ld(b[1]) - ld(a[1]))
+    (ax, ay), (bx, by) = (ld(a[0]), ld(a[1])), (ld(b[0]), ld(b[1]))
+    if order == "multiply first, lower end":
+        return bx + (y - by) * (ax - bx) / (ay - by)
+    if order == "divide first":
+        return (y - ay) / (by - ay) * (bx - ax) + ax
+    if order == "slope first":
+        return ax + (y - ay) * ((bx - ax) / (by - ay))
+    return ax + (y - ay) * (bx - ax) / (by - ay)
 
 
-def _decimal_crossing(a, b, y, lower: bool, minus_half: bool = False):
-    """Multiply first in ``decimal`` at its default 28 digits (r424 M2, W41), from the edge's
-    upper end, or from its lower one (``minus_half``: then x − ½, rounded again)."""
+#: r439: the orders of :func:`_longdouble_crossing`, each its own kind
+LONGDOUBLE_ORDERS = ("multiply first", "multiply first, lower end", "divide first", "slope first")
+
+#: r439 P4: decimal precisions below the 35 digits a product may need in the stated range
+FEW_DIGITS = tuple(range(34, 28, -1))
+
+
+def _decimal_crossing(a, b, y, lower: bool, minus_half: bool = False, prec: int = 28):
+    """Multiply first in ``decimal`` at ``prec`` digits (r424 M2, W41: its default 28; r439 P4:
+    up to 34), from the edge's upper end, or from its lower one (``minus_half``: then x − ½,
+    rounded again)."""
     import decimal
 
     with decimal.localcontext() as context:
-        context.prec = 28
+        context.prec = prec
         (ax, ay), (bx, by) = ((decimal.Decimal(float(c)) for c in p) for p in (a, b))
         if lower:
             (ax, ay), (bx, by) = (bx, by), (ax, ay)
@@ -390,23 +501,34 @@ def _decimal_crossing(a, b, y, lower: bool, minus_half: bool = False):
         return x - decimal.Decimal("0.5") if minus_half else x
 
 
+def _decimal_ends(v, y, short, long_is_left, lower: bool, prec: int):
+    ends = [math.ceil(_decimal_crossing(a, b, y, lower, minus_half=True, prec=prec))
+            for a, b in ((v[0], v[2]), short)]  # fmt: skip
+    return _strict(_ends_pick(*ends, long_is_left))
+
+
 def _precision_variants(xy, row: int, long_is_left: bool) -> dict:
-    """r424 P2, M2: the span with both crossings multiplied first in a limited precision:
-    np.longdouble (where it is wider than float64: x86's 80-bit float), decimal at 28 digits
-    (from the edges' upper ends, or their lower ones); the side and the rounding exact."""
+    """r424 P2, M2: the span with both crossings in a limited precision: np.longdouble (where it
+    is wider than float64: x86's 80-bit float) in each order (r439 P1), decimal at 28 digits and
+    (r439 P4) at 29 to 34 (far out only), from the edges' upper ends or their lower ones; the side
+    and the rounding exact."""
     v = sorted(((float(x), float(y)) for x, y in xy), key=lambda p: p[1])
     y = Fraction(2 * row + 1, 2)
     short = (v[0], v[1]) if y < Fraction(v[1][1]) else (v[1], v[2])
     out = {}
     if np.finfo(np.longdouble).nmant > 52:
         ld_y = np.longdouble(row) + np.longdouble(0.5)
-        ends = [int(np.ceil(_longdouble_crossing(a, b, ld_y) - np.longdouble(0.5)))
-                for a, b in ((v[0], v[2]), short)]  # fmt: skip
-        out["longdouble multiply first"] = _strict(_ends_pick(*ends, long_is_left))
-    for kind, lower in (("decimal at 28 digits", False), ("decimal at 28 digits, lower end", True)):
-        ends = [math.ceil(_decimal_crossing(a, b, y, lower, minus_half=True))
-                for a, b in ((v[0], v[2]), short)]  # fmt: skip
-        out[kind] = _strict(_ends_pick(*ends, long_is_left))
+        for order in LONGDOUBLE_ORDERS:
+            ends = [int(np.ceil(_longdouble_crossing(a, b, ld_y, order) - np.longdouble(0.5)))
+                    for a, b in ((v[0], v[2]), short)]  # fmt: skip
+            out[f"longdouble {order}"] = _strict(_ends_pick(*ends, long_is_left))
+    for lower, end in ((False, ""), (True, ", lower end")):
+        out[f"decimal at 28 digits{end}"] = _decimal_ends(v, y, short, long_is_left, lower, 28)
+        if max(abs(c) for p in v for c in p) < 2**20:  # (products of at most 28 digits)
+            continue
+        for prec in FEW_DIGITS:
+            out[f"decimal at {prec} digits{end}"] = _decimal_ends(v, y, short, long_is_left,
+                                                                  lower, prec)  # fmt: skip
     return out
 
 
@@ -434,6 +556,37 @@ def _float_sides(fv) -> list[tuple[float, float]]:
 def _float_side_wrong(fv, long_is_left: bool) -> bool:
     """Lesson 01's side test in float64 ties (x2 − u4 == 0) or picks the other side."""
     return any(side == 0 or (side > 0) != long_is_left for _, side in _float_sides(fv))
+
+
+def _longdouble_side_errs(v) -> bool:
+    """r439 P2: the side test in np.longdouble on sorted vertices ``v`` (exact Fractions): the
+    edge function or lesson 01's u4 (divided or multiplied first) ties or picks the other side;
+    False where longdouble is float64 (lesson 01's float64 test is :func:`_float_side_wrong`)."""
+    if np.finfo(np.longdouble).nmant <= 52:
+        return False
+    (x1, y1), (x2, y2), (x3, y3) = v
+    exact = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    (a1, b1), (a2, b2), (a3, b3) = ((np.longdouble(float(a)), np.longdouble(float(b)))
+                                    for a, b in v)  # fmt: skip
+    sides = ((a2 - a1) * (b3 - b1) - (b2 - b1) * (a3 - a1),
+             a2 - ((b2 - b1) / (b3 - b1) * (a3 - a1) + a1),
+             a2 - (a1 + (b2 - b1) * (a3 - a1) / (b3 - b1)))  # fmt: skip
+    return exact != 0 and any(side == 0 or (side > 0) != (exact > 0) for side in sides)
+
+
+def _int64_side(v) -> tuple[int, int]:
+    """(the exact side, int64's wrapped one) of (x2 − x1)(y3 − y1) − (y2 − y1)(x3 − x1) in
+    1/256-px units on sorted vertices ``v`` (r439 P3)."""
+    (x1, y1), (x2, y2), (x3, y3) = ((int(256 * a), int(256 * b)) for a, b in v)
+    exact = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    wrapped = (exact + 2**63) % 2**64 - 2**63  # a difference of wrapped products, wrapped
+    return exact, wrapped
+
+
+def _int64_side_errs(v) -> bool:
+    """r439 P3: numpy's int64 side wraps around to 0 or to the other sign."""
+    exact, wrapped = _int64_side(v)
+    return exact != 0 and (wrapped == 0 or (wrapped > 0) != (exact > 0))
 
 
 def float_side_errs(xy) -> bool:
@@ -619,41 +772,117 @@ def _precise_tie(args, crossing):
     return None
 
 
-def _longdouble_words(args, expected, got) -> str:
-    y = np.longdouble(args[1]) + np.longdouble(0.5)
-    found = _precise_tie(args, lambda a, b: _longdouble_crossing(a, b, y))
-    bits = np.finfo(np.longdouble).nmant + 1
-    said = "" if found is None else (
-        f" (exactly {float(found[0])}, yours {np.format_float_positional(found[1])}): here the "
-        f"product (y − a_y)(b_x − a_x) needs {found[2]} bits on the 1/256-px grid"
-    )  # fmt: skip
-    return (f"your crossing was computed in np.longdouble, multiplied first, and rounds{said}; "
-            f"float80/longdouble holds {bits} bits, float64 53, and in the stated range the "
-            f"product needs up to 78, so the tie went to the wrong side. {NO_FLOAT_ORDER}")  # fmt: skip
+def _longdouble_words(order: str = "multiply first"):
+    """r424 P2 (r439 P1, M1: every order): the limited crossing beside the exact one."""
 
-
-def _decimal_words(lower: bool):
     def words(args, expected, got) -> str:
-        y = Fraction(2 * args[1] + 1, 2)
-        found = _precise_tie(args, lambda a, b: _decimal_crossing(a, b, y, lower))
+        y = np.longdouble(args[1]) + np.longdouble(0.5)
+        found = _precise_tie(args, lambda a, b: _longdouble_crossing(a, b, y, order))
+        bits = np.finfo(np.longdouble).nmant + 1
+        why = (f"the product (y − a_y)(b_x − a_x) needs {found[2]} bits on the 1/256-px grid"
+               if found is not None and order.startswith("multiply") else
+               "a quotient such as (y − a_y)/(b_y − a_y) has no finite binary fraction, so it "
+               "rounds at any precision")  # fmt: skip
         said = "" if found is None else (
-            f" (exactly {float(found[0])}, yours {found[1]}: the product "
-            "(y − a_y)(b_x − a_x), with a 1/65536 fraction, has more digits than 28 here)"
+            f" (exactly {float(found[0])}, yours {np.format_float_positional(found[1])}): "
+            f"here {why}"
         )  # fmt: skip
-        return (f"your crossing was computed in decimal at its default precision, 28 "
-                f"significant digits, and rounds{said}, so the tie went to the wrong side. No "
-                "float is involved: decimal rounds every step to its precision. Compute in "
-                "integers (1/256-px units) or fractions.Fraction (or give decimal enough digits "
-                "for every step: its default is not enough in this range)")  # fmt: skip
+        return (f"your crossing was computed in np.longdouble, {order}, and rounds{said}; "
+                f"float80/longdouble holds {bits} bits, float64 53, and in the stated range "
+                "the product needs up to 78, so the tie went to the wrong side. "
+                f"{NO_FLOAT_ORDER}")  # fmt: skip
 
     return words
 
 
+def _digits(args) -> int:
+    """The most significant digits of a product (y − a_y)(b_x − a_x) on the row's edges."""
+    xy, row = args
+    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    y, most = Fraction(2 * row + 1, 2), 0
+    for a, b in ((v[0], v[2]), (v[0], v[1]), (v[1], v[2])):
+        for p, q in ((a, b), (b, a)):
+            n = abs(int((y - p[1]) * (q[0] - p[0]) * 2**16 * 5**16))
+            most = max(most, len(str(n).rstrip("0")) if n else 0)
+    return most
+
+
+def _decimal_words(lower: bool, prec: int = 28):
+    """r424 M2 (28 digits); r439 P4, M1: any precision, with the digits of the product."""
+
+    def words(args, expected, got) -> str:
+        y = Fraction(2 * args[1] + 1, 2)
+        found = _precise_tie(args, lambda a, b: _decimal_crossing(a, b, y, lower, prec=prec))
+        digits = ("at its default precision, 28 significant digits" if prec == 28 else
+                  f"at too few significant digits ({prec} digits{', from the lower end' if lower else ''} "
+                  "give your answers here; any precision below 35 may)")  # fmt: skip
+        said = "" if found is None else (
+            f" (exactly {float(found[0])}, yours {found[1]}: the product "
+            f"(y − a_y)(b_x − a_x), with a 1/65536 fraction, has {_digits(args)} significant "
+            f"digits here, more than {prec})"
+        )  # fmt: skip
+        return (f"your crossing was computed in decimal {digits}, and rounds{said}, so the tie went to the wrong side. No float is involved: "
+                "decimal rounds every step to its precision. Compute in integers (1/256-px "
+                "units) or fractions.Fraction (or give decimal enough digits for every step: "
+                "in this range a product needs up to 35, so its default of 28 is not enough)")  # fmt: skip
+
+    return words
+
+
+def _wide_side_words(kind: str):
+    """r439 P2, P3: a side test in np.longdouble, or in int64, that errs on this triangle."""
+
+    def words(args, expected, got) -> str:
+        v = sorted(_frac_points(args[0]), key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        u4 = x1 + (y2 - y1) * (x3 - x1) / (y3 - y1)
+        where = "right" if x2 > u4 else "left"
+        exact, wrapped = _int64_side(v)
+        bits = max(abs((256 * (x2 - x1)) * (256 * (y3 - y1))),
+                   abs((256 * (y2 - y1)) * (256 * (x3 - x1)))).numerator.bit_length()  # fmt: skip
+        sides = abs(exact).bit_length()
+        if kind == "side in int64":
+            how = (f"your side test overflowed int64: its value (x2 − x1)(y3 − y1) − (y2 − y1)"
+                   f"(x3 − x1) in 1/256-px units is {exact} here, {sides} bits besides the sign, "
+                   "more than int64's 63, and numpy's int64 wraps around silently, so it came "
+                   f"out {wrapped}, of the wrong sign: your x_l and x_r are swapped")  # fmt: skip
+        else:
+            how = (f"your side test is computed in np.longdouble: here the middle vertex lies "
+                   f"{float(abs(x2 - u4)):.2g} px {where} of the long edge, and the side's "
+                   f"products need {bits} bits, more than longdouble's "
+                   f"{np.finfo(np.longdouble).nmant + 1}, so it comes out 0 or of the wrong sign: "
+                   "your x_l and x_r are swapped (or your span is empty)")  # fmt: skip
+        return (f"{how}. Compare exactly: the sign of the cross product (x2 − x1)(y3 − y1) − "
+                "(y2 − y1)(x3 − x1) in Python ints of 1/256-px units (int(), .tolist(), "
+                "dtype=object) or with fractions.Fraction")  # fmt: skip
+
+    return words
+
+
+def _sorted_apart_words(args, expected, got) -> str:
+    """r439 H5: np.sort(xy, axis=0) sorts each coordinate on its own."""
+    mixed = np.sort(np.asarray(args[0], dtype=float), axis=0)
+    shown = ", ".join(f"({p[0]:.10g}, {p[1]:.10g})" for p in mixed)
+    return (
+        f"your span is the one of the triangle ({shown}): np.sort(xy, axis=0) sorts the x's "
+        "and the y's each on its own, so it mixes the vertices' coordinates; sort the "
+        "vertices (rows) by y: xy[np.argsort(xy[:, 1])], or sorted(..., key=lambda p: p[1])"
+    )
+
+
 WORDS = {
     "vertices through str()": _str_words,
-    "longdouble multiply first": _longdouble_words,
+    **{f"longdouble {order}": _longdouble_words(order) for order in LONGDOUBLE_ORDERS},
     "decimal at 28 digits": _decimal_words(False),
     "decimal at 28 digits, lower end": _decimal_words(True),
+    **{
+        f"decimal at {prec} digits{end}": _decimal_words(lower, prec)
+        for prec in FEW_DIGITS
+        for lower, end in ((False, ""), (True, ", lower end"))
+    },
+    "side in longdouble": _wide_side_words("side in longdouble"),
+    "side in int64": _wide_side_words("side in int64"),
+    "x and y sorted apart": _sorted_apart_words,
     "side in float64": _float_side_words,
     "divide first": _order_words("divide first", "(y − a_y)/(b_y − a_y)"),
     "slope first": _order_words("slope first", "the slope (b_x − a_x)/(b_y − a_y)"),

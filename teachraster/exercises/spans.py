@@ -33,16 +33,19 @@ from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
+    FAR_DIGITS,
     FAR_NEAR_TIES,
     FAR_PRECISE,
     FAR_SIDES,
     FAR_TIES,
+    FAR_WIDE_SIDES,
     FLOAT64_EXACT_BELOW,
     FLOOR_ROWS,
     NEAR_TIES,
     NO_FLOAT_ORDER,
     PLACED,
     PRECISION_KINDS,
+    TIDY_KINDS,
     TIE_ENDS,
     TIE_ROWS,
     float_crossing,
@@ -274,8 +277,12 @@ def _far_cases() -> list[tuple[str, tuple, frozenset]]:
     # a product over 64 bits (np.longdouble multiply first)
     precise = [(f"far out, {label}, row {row} (a crossing exactly on a centre, near 2^29 px)",
                 (np.array(points), row), exact_columns(np.array(points), row))
-               for label, points, row in FAR_PRECISE]  # fmt: skip
-    return ties + near + sides + precise
+               for label, points, row in FAR_PRECISE + FAR_DIGITS]  # fmt: skip
+    # r439 P2, P3: a side that np.longdouble rounds to 0, one that int64 wraps to the other sign
+    wide = [(f"far out, {label}, row {row} (the side of the long edge, near 2^29 px)",
+             (np.array(points), row), exact_columns(np.array(points), row))
+            for label, points, row in FAR_WIDE_SIDES]  # fmt: skip
+    return ties + near + sides + precise + wide
 
 
 def _far(xy: np.ndarray) -> bool:
@@ -484,6 +491,10 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             # r403 (w06): C's int(x + 0.5), ties reversed and truncated toward zero
             "int(x + ½)": _columns(int(xl + half), int(xr + half)),
             "clip at 0": _columns(max(lo, 0), max(hi, 0)),
+            # r439 H1: −int(−t) for the ceiling, which truncates: right only for t <= 0
+            "-int(-t) for ceil": _columns(-int(half - xl), -int(half - xr)),
+            # r439 H2: (first, count), the count of columns as the second number
+            "first and count": _columns(lo, max(hi - lo, 0)),
             "round(x − ½)": _columns(round(xl - half), round(xr - half)),
             # r413 M10: an integer crossing floored to the 1/256 grid, then rounded exactly
             "crossing on the 1/256 grid": _Strict(
@@ -513,6 +524,13 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         bottom = _horizontal_edge(xy, float(y_wrong)) == "bottom"
         out[kind] = frozenset() if cross is None or bottom else _columns(math.ceil(cross[0] - half),
                                                                math.ceil(cross[1] - half))  # fmt: skip
+    # r439 H4: vertices times 256, the line left in px (row + ½) and the columns in 1/256 px too
+    cross = crossings(xy, Fraction(2 * row + 1, 512))
+    out["line in px, columns in 1/256 px"] = (
+        frozenset()
+        if cross is None or _horizontal_edge(xy, (row + 0.5) / 256) == "bottom"
+        else _columns(math.ceil(256 * cross[0] - half), math.ceil(256 * cross[1] - half))
+    )
     swapped = np.asarray(xy)[:, ::-1]
     if np.ptp(swapped[:, 0]) < 10**6:  # (the 10^12-px triangle's swap: no span to hold)
         out["x and y swapped"] = exact_columns(swapped, row)
@@ -592,7 +610,9 @@ SHIFTS = {"row top": Fraction(0), "row − ½": Fraction(-1, 2), "row + 1": Frac
 #: r403/r413 H6 (r403 w28): the centre line in units twice or half the vertices' (vertices in
 #: 1/512 px, the line 1024·row + 256 of 1/256-px thinking: y = 2·row + ½ px)
 SCALED = {"line 2·row + ½": lambda row: 2 * row + HALF,
-          "line (row + ½)/2": lambda row: Fraction(2 * row + 1, 4)}  # fmt: skip
+          "line (row + ½)/2": lambda row: Fraction(2 * row + 1, 4),
+          # r439 H4: vertices times 256, the line left in px (row + ½)
+          "line (row + ½)/256": lambda row: Fraction(2 * row + 1, 512)}  # fmt: skip
 
 
 #: r424 M1: the line in 1/256-px units with the ½ left unscaled (256·row + 0.5 or 256·row + 1):
@@ -659,6 +679,7 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "side at row",
             "side x2 > x1",
             "lower denominator",
+            "split at row",
         ),
         right,
     )
@@ -689,6 +710,8 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     out["no split, side test"] = _pick_pair(long_x, no_split, x2 > u4) if y < y3 else None
     short_x = at(v[0], v[1]) if y <= y2 else at(v[1], v[2])
     out["long edge left"] = pair_columns(long_x, short_x)
+    if row < y2 < y < y3 and y1 != y2:  # r439 H3: the split tested with the row, not its line
+        out["split at row"] = _pick_pair(long_x, at(v[0], v[1]), area > 0)
     # r363 M1, C5: the side of the long edge the middle vertex lies on, judged by the long
     # edge at this row (not at the middle vertex's height), or by the top vertex's x
     for kind, long_is_left in (("side at row", x2 > long_x), ("side x2 > x1", x2 > x1)):
@@ -767,9 +790,15 @@ MISTAKES = {
     "not with this row's centre line, y = row + ½",
     **{kind: _scaled_words(kind) for kind in SCALED},
     **{kind: _unscaled_words(kind) for kind in UNSCALED},
+    "line in px, columns in 1/256 px": lambda args, expected, got: (
+        f"your span is the one of the line y = (row + ½)/256 = {_frac(Fraction(2 * args[1] + 1, 512))}"
+        " px, counted in 1/256-px steps, not in columns: your vertices are in 1/256-px units "
+        "(times 256) but your centre line, row + ½, is in px; in those units it is 256·row + "
+        "128, and the crossings are in 1/256 px too: turn them back into px before rounding "
+        "to a column"
+    ),
     "no top edge": "you left out the centres on a horizontal top edge that runs along the "
-    "centre line (a bottom edge you handled right): a top edge, with the triangle below it, "
-    "owns its centres",
+    "centre line: a top edge, with the triangle below it, owns its centres",
     "x and y swapped": "you swapped x and y: a vertex is (x, y) = (xy[k, 0], xy[k, 1]), and a "
     "raster line is a horizontal line, y = row + ½, whose crossings are x values",
     "horizontal reversed": "your rule for a horizontal edge on the centre line is the wrong "
@@ -798,6 +827,11 @@ MISTAKES = {
     "on x_r, the right edge, you covered), and int() truncates toward zero, so left of x = 0 "
     "your ends are one column further right still; under the top-left rule, which of the two "
     "edges owns a centre that lies on it, and which rounding is the same on both sides of 0?",
+    "-int(-t) for ceil": "your ends right of x = 0 are one column too far left: −int(−t) is "
+    "the ceiling only for t ≤ 0 (int() truncates toward zero, so for a positive t that is no "
+    "integer −int(−t) rounds down); math.ceil rounds the same way on both sides of 0",
+    "first and count": "your second number is the count of the covered columns, stop − first: "
+    "the pair is (first, stop), stop the first column *not* covered (first + the count)",
     "clip at 0": "you clipped the span at column 0: the columns are the plane's, negative ones "
     "too (no image clips them here, as lesson 01's span_fill clips to its image)",
     "round(x − ½)": "you rounded x − ½ to the nearest integer (round()): the first covered "
@@ -822,6 +856,13 @@ MISTAKES = {
     "long edge the middle vertex lies on by comparing it with the top vertex (x2 > x1); judge "
     "it by the long edge where it reaches the middle vertex's height (or take the smaller "
     "crossing as x_l)",
+    "split at row": lambda args, expected, got: (
+        f"you used the edge from the top vertex to the middle one on row {args[1]}, whose "
+        f"centre line y = {num(args[1] + 0.5)} lies below the middle vertex (y2 = "
+        f"{num(sorted(float(p[1]) for p in args[0])[1])}): the split compares the centre line "
+        "row + ½ with y2, not the row; below the middle vertex the short edge runs from it to "
+        "the bottom vertex"
+    ),
     "lower denominator": "below the middle vertex your crossing of the edge from the middle "
     "vertex to the bottom one is off: you divided by y3 − y1, the long edge's height, not by "
     "that edge's own height y3 − y2: x = x2 + (y − y2)·(x3 − x2)/(y3 − y2)",
@@ -931,6 +972,16 @@ def _span_raised(args, error: str) -> str:
         return (f" (the centre line y = {num(y)} runs along a horizontal {kind} edge, whose "
                 "height is 0: a crossing with it would be 0/0)")  # fmt: skip
     return ""
+
+
+def _span_none(args, expected) -> str:
+    """r439 M4: None returned for a line with no covered centre, where a pair is asked for."""
+    if expected:
+        return ""
+    return (
+        "your function returned None on a line with no covered centre: the answer is "
+        "still a pair, any (first, stop) with stop ≤ first, such as (0, 0), not None"
+    )
 
 
 def _floor_row(xy: np.ndarray, row: int) -> str:
@@ -1545,7 +1596,7 @@ def _mistakes() -> list[Mistake]:
         elif m.fits is not None and m.kind not in ("float64 crossing", "int64 overflow"):
             m = dataclasses.replace(m, fits=_near_only(m.fits))
         whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped",
-                           *PRECISION_KINDS)  # fmt: skip
+                           *PRECISION_KINDS, *TIDY_KINDS)  # fmt: skip
         out.append(dataclasses.replace(m, only_whole=True) if whole else m)
     return out
 
@@ -1608,7 +1659,7 @@ SPAN = Exercise(
         PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
                       modules=("teachraster.study.exact_spans",)),
     ),
-    draw=draw_span, constant=_constant_span, raised_words=_span_raised, hints=(
+    draw=draw_span, constant=_constant_span, raised_words=_span_raised, none_words=_span_none, hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
          "at or right of x_l?"),
@@ -1618,6 +1669,8 @@ SPAN = Exercise(
         ("so take ⌈x_l − ½⌉ and ⌈x_r − ½⌉", "so count the columns whose centres lie between "
          "them, not the integers nearest to them"),
         (": ⌈x_l − ½⌉ ≤ col < ⌈x_r − ½⌉", ""),
+        # r424 S2 (r439): the integer ceiling the task leaves to the student
+        (": ⌈(n − 128·d) / (256·d)⌉ with n = 256·x·d in integers, d > 0", ""),
         # r372: the crossings a student's ends stand for are the rounding itself
         (re.compile(r"stands for an (x_[lr]) above \S+ and at most \S+, but \1 is"),
          r"is not what \1 gives: \1 is"),

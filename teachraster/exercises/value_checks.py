@@ -120,11 +120,13 @@ def check_exercise(spec: Exercise, fn) -> Report:
     said = diagnose(spec, results, run_checker(lambda: parameters(fn), ()), reads)
     answers = {r.index: r.got for r in results}
     failures = []
+    # r439 M4: a None on every case is a forgotten return, whatever the exercise's none_words
+    some = any(outcome.kind != "none" for _, outcome in ran)
     for k, (case, outcome) in enumerate(ran):
         label, _, expected = case
         if outcome.error is not None:
             draw = _drawer(spec, case, None)
-            text = _without_answer(spec, case[1], outcome)
+            text = _without_answer(spec, case[1], outcome, expected if some else None)
             failures.append(Failure(label, text, expected, None, draw, outcome.kind))
         elif k in said:
             kind, text = said[k]
@@ -150,10 +152,13 @@ def check_exercise(spec: Exercise, fn) -> Report:
     )  # fmt: skip
 
 
-def _without_answer(spec: Exercise, args, outcome) -> str:
+def _without_answer(spec: Exercise, args, outcome, expected=None) -> str:
     """The words of a case that gave no answer: with the exercise's ``call_words``, the call
-    first and, for an exception, the traceback's last line in the student's code (r248 S1)."""
+    first and, for an exception, the traceback's last line in the student's code (r248 S1);
+    a None the exercise's ``none_words`` explain, where they do (r439 M4)."""
     error = outcome.error
+    if spec.none_words is not None and outcome.kind == "none" and expected is not None:
+        error = run_checker(lambda: spec.none_words(args, expected), "") or error
     if spec.raised_words is not None and outcome.kind == "raised":
         error += run_checker(lambda: spec.raised_words(args, outcome.error), "")
     if spec.call_words is None or outcome.kind in STOPS or outcome.error == SKIPPED:
