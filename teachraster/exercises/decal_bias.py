@@ -269,6 +269,11 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         # r340: 1/(2^bits - 1) typed, 1/(2 ^ (bits - 1)) run (in the test for NaN too, the
         # answer is NaN on every case: :data:`NAN_WORDS` names it)
         "xor": offset(1.0 / (2 ^ (bits - 1)) + m),
+        # r442 F2: two steps for r (OpenGL's llvmpipe, Vulkan's bound 2 · 2^-bits), in the
+        # test for NaN too (a larger offset still fits where it fits: the NaN tells it); and
+        # the test rearranged with r counted twice, 2(r + m) > room
+        "two steps": own(2.0 / 2**bits, m),
+        "r twice in the test": math.nan if 2 * (r + m) > space else sign * (r + m),
     }
 
 
@@ -295,6 +300,8 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
         "sine": m * math.sin(rad) / math.tan(rad) if inside else None,
         "cosine": m * math.cos(rad) / math.tan(rad) if inside else None,
         "cotangent": m / math.tan(rad) ** 2 if inside else None,
+        # r442 F3: half a pixel's slope ("from the pixel's centre to its edge")
+        "halved": m / 2,
     }
 
 
@@ -334,8 +341,11 @@ _DOUBLED = (": your m is twice one pixel's depth slope. The decal's depth lies w
             "the wall's either way, but each bound needs only one side: from m behind it must "
             "end a step in front, |o| ≥ r + m, and from m in front it must stay behind the "
             "object, |o| ≤ room − m")  # fmt: skip
+_HALVED = (": your m is half one pixel's depth slope (from the pixel's centre to its edge?). "
+           "MaxDepthSlope is the change of depth from one pixel to the next, and the decal's "
+           "depth may lie that whole m behind the wall's: |o| ≥ r + m")  # fmt: skip
 _SLOPE_WORDS = {
-    "doubled": _DOUBLED,
+    "doubled": _DOUBLED, "halved": _HALVED,
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
@@ -424,6 +434,14 @@ MISTAKES = {
     ),
     "half": f": {HALF_STEP}. Beyond the pixel's span m the decal needs a whole step r",
     "xor": f": {XOR_UNBRACKETED}",
+    "two steps": lambda a, e, g: (
+        f": your test for NaN fires here, but one offset does both: r + m ≤ room − m with r = "
+        f"1/(2^{a[5]} − 1). Yours takes r as two steps, 2/2^{a[5]} (OpenGL's llvmpipe, or "
+        "Vulkan's bound): this task takes Direct3D's r, one step, 1/(2^bits − 1)"
+    ),
+    "r twice in the test": ": your test for NaN fires here, but one offset does both: r + m ≤ "
+    "room − m, that is r + 2m ≤ room. Yours asks 2(r + m) ≤ room: it counts r twice (the decal "
+    "at its nearest lies m in front of the wall, o + m from it; r is in o once)",
 }
 
 
@@ -551,7 +569,7 @@ def constant_nan(results) -> str:
 NAN = Mistake(
     "nan", ": your answer holds NaN. NaN means “no offset works” here, and this case has one: "
     "r + m ≤ room − m. "
-    "Your test for NaN fires where it should not: check the m it uses", fits=_nan_with_room,
+    "Your test for NaN fires where it should not: check the r and m it uses", fits=_nan_with_room,
     symptom=True,
 )  # fmt: skip
 

@@ -181,6 +181,9 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             # r381 F5: int() of the right n (0 below 1: told only "0 < n < z" first)
             "int": float(math.trunc(solve(step, far))),
             **{f"{b} bits": solve(1.0 / (2**b - 1), far) for b in (16, 24) if b != bits},
+            # r442 F3: the resolution asked at the nearer surface, z − gap (or the farther)
+            "nearer surface": step * far * (z - gap) ** 2 / (gap * far + step * (z - gap) ** 2),
+            "farther surface": step * far * (z + gap) ** 2 / (gap * far + step * (z + gap) ** 2),
         }
 
 
@@ -234,6 +237,17 @@ MISTAKES = {
         f"int() truncates your n toward 0, {num(e, g)} to {num(g)}: that lies nearer than the "
         "smallest near plane (0 is no near plane at all), where the two surfaces' window depths "
         "are less than a step apart. Keep every digit, or round up"
+    ),
+    "nearer surface": lambda a, e, g: (
+        f"you took the resolution at z − gap = {num(a[0] - a[1])}, where Δz is finer than at "
+        f"z = {num(a[0])}: surfaces {num(a[1])} apart there, at z − gap and z, then lie less "
+        "than a whole step apart. Take the resolution at z itself (or the window depths of "
+        "z − gap and z a whole step apart)"
+    ),
+    "farther surface": lambda a, e, g: (
+        f"you took the resolution at z + gap = {num(a[0] + a[1])}, farther than the surfaces: "
+        "Δz grows with z, so your near plane lies further out than needed. Take it at z itself "
+        "(or the window depths of z and z + gap a whole step apart)"
     ),
     **{
         f"{b} bits": f"your n is the one for a {b}-bit buffer, whatever `bits` is: the step is "

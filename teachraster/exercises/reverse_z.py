@@ -184,6 +184,13 @@ def gap_variants(z, near, far) -> dict[str, float]:
         "1 - n/f inverted": step / slope / (1 - near / far) ** 2,
         # r425 F4: f where the slope has n (step (1 − n/f) z²/f)
         "far for near in the slope": step * near / far / slope,
+        # r442 F3: the step measured from the exact d to its float32 neighbour (above, or
+        # below), not between two stored values; the slope as a secant over one unit of z;
+        # the slope as d/z (true of d = n/z alone)
+        "from the exact d": (float(np.nextafter(np.float32(d), np.float32(np.inf))) - d) / slope,
+        "from the exact d, below": (d - float(np.nextafter(np.float32(d), np.float32(0)))) / slope,
+        "secant over one unit": _nearer_step(d) / (d - float(reversed_depth(z + 1.0, near, far))),
+        "slope d/z": _nearer_step(d) * z / d,
     }
 
 
@@ -193,6 +200,14 @@ _RELATIVE = ("you took a fixed share of d as float32's step (its relative precis
 _INFINITE = (
     "you dropped the far plane: d = n/z and |dd/dz| = n/z² hold for f = ∞ only; "
     "with this far plane d = (n/z − n/f)/(1 − n/f) and |dd/dz| = n/((1 − n/f) z²)"
+)
+
+
+#: r442 F3: a distance from the exact d, which the buffer never holds
+_FROM_EXACT = (
+    "you measured the step from the exact d to a float32 neighbour: the buffer holds d "
+    "rounded to float32, and its step is the distance between two stored values, np.spacing "
+    "of np.float32(d) (or to the neighbour below)"
 )
 
 
@@ -273,6 +288,14 @@ MISTAKES = {
     "|dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n, with 1 − n/f once",
     "1 - n/f inverted": "your slope has 1 − n/f on the wrong side: d = (n/z − n/f)/(1 − n/f) "
     "divides by it, so |dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n",
+    "from the exact d": _FROM_EXACT,
+    "from the exact d, below": _FROM_EXACT,
+    "secant over one unit": "your slope is a difference of d over one unit of z, d(z) − "
+    "d(z + 1): d's slope falls like 1/z², so that difference is the slope at z times z/(z + 1), "
+    "short by 1/(z + 1) of it (most near the eye). Take the derivative, |dd/dz| = "
+    "n/((1 − n/f) z²)",
+    "slope d/z": "you took d's slope as d/z: that holds for d = n/z alone (a far plane at "
+    "infinity). With this far plane d = (n/z − n/f)/(1 − n/f), and |dd/dz| = n/((1 − n/f) z²)",
     "far for near in the slope": "you divided by f where d's slope has n: d = (n/z − n/f)/(1 − "
     "n/f) changes by |dd/dz| = n/((1 − n/f) z²), so Δz = step · (1 − n/f) z²/n, f/n "
     "times yours",

@@ -1,0 +1,41 @@
+"""Review r442 (exercise 5, a verifying reader): 5.3's test for NaN with r doubled or counted
+twice, and m halved, named (F2, F3); 5.2's step from the exact d and its secant and d/z slopes
+(F3); 5.1's resolution at z ± gap (F3); 5.2b's one-element list refused (F1), a depth held in
+float32 told from a margin, 2^-24 at the crossings, crossings without n/f, candidates averaged
+or picked by depth, NaN on a range without a crossing (F2, F3)."""
+
+from __future__ import annotations
+
+import pytest
+from student_variants import DIFFERENT, R442
+
+from teachraster import exercises as ex
+from teachraster.exercises import reverse_z_worst as rzw
+from teachraster.exercises import tries
+
+
+@pytest.mark.parametrize("label", sorted(R442))
+def test_each_r442_variant_is_named_by_its_cause(label):
+    """Every r442 wrong variant fails, its first failure named by its cause."""
+    name, fn, words, kind = R442[label]
+    tries.forget_hints(name)
+    report = ex.check(name, fn)
+    assert not report.passed, label
+    first = report.failures[0]
+    assert words in first.explanation and first.kind == kind, (label, first.kind, first.explanation)
+    tries.forget_hints(name)
+
+
+@pytest.mark.parametrize("label", sorted(k for k in DIFFERENT if "(r442" in k))
+def test_each_r442_right_variant_passes(label):
+    name, fn = DIFFERENT[label]
+    report = ex.check(name, fn)
+    assert report.passed, (label, str(report))
+
+
+def test_a_list_of_one_is_refused_as_an_array_of_one_is():
+    """F1: [Δz] passed where np.array([Δz]) was refused."""
+    for value in ([1e-5], (1e-5,)):
+        with pytest.raises(Exception, match="one number is expected"):
+            rzw.as_gap(value)
+    assert rzw.as_gap(1e-5) == 1e-5
