@@ -6,10 +6,12 @@ or picked by depth, NaN on a range without a crossing (F2, F3)."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from student_variants import DIFFERENT, R442
 
 from teachraster import exercises as ex
+from teachraster.exercises import near_plane as npl
 from teachraster.exercises import reverse_z_worst as rzw
 from teachraster.exercises import tries
 
@@ -39,3 +41,17 @@ def test_a_list_of_one_is_refused_as_an_array_of_one_is():
         with pytest.raises(Exception, match="one number is expected"):
             rzw.as_gap(value)
     assert rzw.as_gap(1e-5) == 1e-5
+
+
+@pytest.mark.parametrize("name", ["safe_near", "reverse_z_gap", "decal_bias"])
+def test_5_1_to_5_3_refuse_one_number_in_brackets(name):
+    """F1's class: 5.1 to 5.3 took [x] and np.array([x]) for x (5.2b alone refused the array)."""
+    import reasoning_solutions as sol
+
+    right = getattr(sol, name)
+    for wrap in (lambda v: [v], lambda v: np.array([v])):
+        report = ex.check(name, lambda *a, wrap=wrap: wrap(right(*a)))
+        assert not report.passed, name
+        assert "where one number is expected" in report.failures[0].explanation, str(report)
+    with pytest.raises(Exception, match="not inside brackets"):
+        npl.as_lone_number((0.5,))

@@ -40,10 +40,9 @@ from functools import cache
 import numpy as np
 
 from ..pipeline.visibility.depth import depth_bias, window_depth
-from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .near_plane import HALF_STEP, XOR_UNBRACKETED
+from .near_plane import HALF_STEP, XOR_UNBRACKETED, as_lone_number
 from .package_answers import CHECKER_WORDS
 from .reverse_z import gives_same_gap
 from .scalars import num
@@ -671,7 +670,7 @@ def _mistakes() -> list[Mistake]:
 
 
 DECAL_BIAS = Exercise(
-    "decal_bias", bias_cases, as_number, same_offset, explain_offset, _rule,
+    "decal_bias", bias_cases, as_lone_number, same_offset, explain_offset, _rule,
     _mistakes(), draw=draw_offset, match=gives_same_offset,
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),

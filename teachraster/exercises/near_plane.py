@@ -28,6 +28,7 @@ from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .package_answers import CHECKER_WORDS
+from .running import WrongAnswerType
 from .scalars import num
 from .tolerance import close
 
@@ -49,6 +50,23 @@ SETTINGS = (
 #: How much further out than the smallest near plane an answer may be (a safe near plane,
 #: found by bisection or rounded to a few digits, is right).
 SLACK = 0.01
+
+
+def as_lone_number(value):
+    """One number, as :func:`.answers.as_number`, but not inside an array or brackets: the
+    docs promise shapes must match (r414 F7: an array of shape (1,) passed 5.2b; r442 F1: a
+    list of one too, and both in 5.1 to 5.3)."""
+    if isinstance(value, np.ndarray) and value.ndim > 0:
+        raise WrongAnswerType(
+            f"returned an array of shape {value.shape} where one number is expected: return "
+            "the number itself (float(...) of it)"
+        )
+    if isinstance(value, (tuple, list)) and len(value) == 1:
+        raise WrongAnswerType(
+            f"returned a {type(value).__name__} of one value where one number is expected: "
+            "return the number itself, not inside brackets"
+        )
+    return as_number(value)
 
 
 def resolution(z, near, far, bits) -> float:
@@ -414,7 +432,7 @@ def draw_near(ax, case, got):
 
 
 SAFE_NEAR = Exercise(
-    "safe_near", near_cases, as_number, same_near, explain_near, _rule,
+    "safe_near", near_cases, as_lone_number, same_near, explain_near, _rule,
     variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, ROUNDS_APART, RANGE)), draw=draw_near,
     # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
     answers=(

@@ -23,10 +23,9 @@ from functools import cache
 import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, reversed_depth, window_depth
-from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .near_plane import HALF_STEP
+from .near_plane import HALF_STEP, as_lone_number
 from .package_answers import CHECKER_WORDS
 from .scalars import num
 
@@ -431,7 +430,7 @@ def _zoom(ax, args, band, expected, got) -> list:
 
 
 REVERSE_Z_GAP = Exercise(
-    "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
+    "reverse_z_gap", gap_cases, as_lone_number, same_gap, explain_gap, _rule,
     variant_mistakes(gap_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
     # r414 F3: a pass draws z = 5 at near 1, far 10: at lesson 05b's planes (the first case)
     # its sawtooth over z 75 to 1000 answered 5.2b's prediction, a cell before 5.2b asks it

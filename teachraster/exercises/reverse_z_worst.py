@@ -36,9 +36,9 @@ import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, reversed_depth
 from . import tries
-from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .near_plane import as_lone_number
 from .package_answers import CHECKER_WORDS
 from .report import NOTHING_DRAWN_FOR
 from .reverse_z import MISTAKES as GAP_MISTAKES
@@ -170,8 +170,9 @@ def _drawn(rng) -> tuple[float, float, float, float]:
 
 
 def as_gap(value):
-    """One number, as :func:`.answers.as_number`, but not inside an array (r414 F7: an array
-    of shape (1,) passed, where the docs promise shapes must match)."""
+    """One number, as :func:`.near_plane.as_lone_number` (r414 F7: an array of shape (1,)
+    passed, where the docs promise shapes must match; r442 F1: a list of one), and several
+    numbers named as such."""
     if (
         isinstance(value, (tuple, list))
         and len(value) != 1
@@ -184,17 +185,7 @@ def as_gap(value):
             f"returned ({', '.join(num(v) for v in value)}), {len(value)} values where one "
             "number is expected: return the Δz alone"
         )
-    if isinstance(value, np.ndarray) and value.ndim > 0:
-        raise WrongAnswerType(
-            f"returned an array of shape {value.shape} where one number is expected: return "
-            "the number itself (float(...) of it)"
-        )
-    if isinstance(value, (tuple, list)) and len(value) == 1:  # r442 F1: [Δz] passed
-        raise WrongAnswerType(
-            f"returned a {type(value).__name__} of one value where one number is expected: "
-            "return the number itself, not inside brackets"
-        )
-    return as_number(value)
+    return as_lone_number(value)
 
 
 def _float32_held(got) -> bool:
