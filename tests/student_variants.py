@@ -8571,11 +8571,13 @@ R442 = {
         "reverse_z_worst", lambda a, b, n, f: max(
             dz for _, dz in _r442_candidates(a, b, n, f, f32=True)),
         "A number rounded on the way (a depth or an input kept in float32", "over the coarsest"),
-    "reverse-Z worst, 2^-24 z (1 - z/f) at each crossing and both ends (r442 w_N5)": (
+    # with z_min's own Δz too (r442 w_N5) the drawn cases decide between these words and the
+    # edge-rounded-below ones, which now say "or you took 2^(e−24) … there" (tested apart)
+    "reverse-Z worst, 2^-24 z (1 - z/f) at each crossing (r442 w_N5)": (
         "reverse_z_worst", lambda a, b, n, f: max(
-            [_rs.reverse_z_gap(b, n, f), _rs.reverse_z_gap(a, n, f)]
+            [_rs.reverse_z_gap(b, n, f)]
             + [2.0**-24 * z * (1 - z / f) for z, _ in _r442_candidates(a, b, n, f)[1:]]),
-        "or you took 2^(e−24) (2^-24 z (1 − z/f)) there", "edge rounded below"),
+        "you took the step below it, 2^(e−24)", "step below at edges"),
     "reverse-Z worst with crossings at n/(2^e (1 - n/f)) (r442 w_N6)": (
         "reverse_z_worst", lambda a, b, n, f: max(dz for _, dz in _r442_candidates(
             a, b, n, f, cross=lambda e, n_, f_: n_ / (2.0**e * (1 - n_ / f_)))),
@@ -8604,3 +8606,58 @@ DIFFERENT.update({
         "safe_near", lambda z, gap, far, bits: (1 / (2**bits - 1)) * far / (
             far * (1 / z - 1 / (z + gap)) + 1 / (2**bits - 1))),
 })  # fmt: skip
+
+
+def _r442_room(at):
+    """5.3 with room to first order at z − ``at``·clear (r442 db_R1: the object, db_R2: the
+    midpoint)."""
+
+    def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        r = 1 / (2**bits - 1)
+        m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+        room = far * near / ((far - near) * (z - at * clear) ** 2) * clear
+        if r + m > room - m:
+            return math.nan
+        return (r + m) if reverse else -(r + m)
+
+    return decal_bias
+
+
+def _r442_bracket_low(z, gap, far, bits):
+    """5.1 by bisection to 1e-3, returning the bracket's low end (r442 sn_R1)."""
+    step = 1 / (2**bits - 1)
+    lo, hi = 1e-9, z
+    while hi - lo > 1e-3 * hi:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if step * (far - mid) * z * z / (far * mid) <= gap else (mid, hi)
+    return lo
+
+
+#: r442's second round: label: (name, function, words in the first failure, kind).
+R442_MORE = {
+    "decal bias, room to first order at the object (r442 db_R1)": (
+        "decal_bias", _r442_room(1.0), "you took room to first order at the object's depth",
+        "first order at the object"),
+    "decal bias, room to first order at the midpoint (r442 db_R2)": (
+        "decal_bias", _r442_room(0.5), "you took room to first order at the midpoint",
+        "first order at the midpoint"),
+    "reverse-Z gap with 2^(e - 24), 24 bits of precision (r442 rg_R1)": (
+        "reverse_z_gap", _r442_gap(step_of=lambda d: 2.0 ** (math.floor(math.log2(d)) - 24)),
+        "Or you took 2^(e−24) for 24 bits of precision", "half"),
+    "reverse-Z gap with ceil for floor (r442 rg_R2)": (
+        "reverse_z_gap", _r442_gap(step_of=lambda d: 2.0 ** (math.ceil(math.log2(d)) - 23)),
+        "you took the step of the binade above d's", "ceil for floor"),
+    "reverse-Z gap with a 2 % margin (r442 rg_R3)": (
+        "reverse_z_gap", lambda z, n, f: 1.02 * _rs.reverse_z_gap(z, n, f),
+        "A margin, or a factor slipped in?", "margin"),
+    "safe near plane, a bisection's low end (r442 sn_R1)": (
+        "safe_near", _r442_bracket_low, "a bisection that returned its bracket's low end",
+        "just under"),
+    "reverse-Z worst, 5.2 a relative 1e-6 nearer than each crossing (r442 w_R4)": (
+        "reverse_z_worst", lambda a, b, n, f: max(
+            [_rs.reverse_z_gap(b, n, f)] + [_rs.reverse_z_gap(z * (1 - 1e-6), n, f)
+                                            for z, _ in _r442_candidates(a, b, n, f)[1:]]),
+        "with no samples, that is where the depth you took lay", "search missed the edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R442_MORE.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R442_MORE.items()})

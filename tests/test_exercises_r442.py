@@ -2,13 +2,16 @@
 twice, and m halved, named (F2, F3); 5.2's step from the exact d and its secant and d/z slopes
 (F3); 5.1's resolution at z ± gap (F3); 5.2b's one-element list refused (F1), a depth held in
 float32 told from a margin, 2^-24 at the crossings, crossings without n/f, candidates averaged
-or picked by depth, NaN on a range without a crossing (F2, F3)."""
+or picked by depth, NaN on a range without a crossing (F2, F3). Second round: 5.3's room to
+first order at the object or the midpoint passed (two fixed cases now tell them), 5.2's
+2^(e−24), ceil for floor and a margin, 5.1's bisection low end, 5.2b's depth a hair nearer
+told as a search only."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-from student_variants import DIFFERENT, R442
+from student_variants import DIFFERENT, R442, R442_MORE
 
 from teachraster import exercises as ex
 from teachraster.exercises import near_plane as npl
@@ -16,10 +19,11 @@ from teachraster.exercises import reverse_z_worst as rzw
 from teachraster.exercises import tries
 
 
-@pytest.mark.parametrize("label", sorted(R442))
+@pytest.mark.parametrize("label", sorted(R442) + sorted(R442_MORE))
 def test_each_r442_variant_is_named_by_its_cause(label):
-    """Every r442 wrong variant fails, its first failure named by its cause."""
-    name, fn, words, kind = R442[label]
+    """Every r442 wrong variant fails, its first failure named by its cause (R442_MORE: the
+    second round, room to first order at the object or midpoint among them, which passed)."""
+    name, fn, words, kind = {**R442, **R442_MORE}[label]
     tries.forget_hints(name)
     report = ex.check(name, fn)
     assert not report.passed, label
@@ -55,3 +59,14 @@ def test_5_1_to_5_3_refuse_one_number_in_brackets(name):
         assert "where one number is expected" in report.failures[0].explanation, str(report)
     with pytest.raises(Exception, match="not inside brackets"):
         npl.as_lone_number((0.5,))
+
+
+def test_the_step_below_at_the_worst_crossing_names_2_to_the_e_minus_24():
+    """F2 (w_N5): 2^-24 z (1 − z/f) at the crossings, z_min's own Δz beside, was told "your d
+    came out just under" with no d computed: the words now give 2^(e−24) as a reading too."""
+    args = (100.0, 900.0, 0.1, 1000.0)
+    z_w = rzw.worst(*args)[0]
+    got = 2.0**-24 * z_w * (1 - z_w / args[3])
+    assert rzw.EDGE_BELOW.fits(args, rzw.expected_worst(*args), got)
+    words = rzw.EDGE_BELOW.say(args, rzw.expected_worst(*args), got)
+    assert "or you took 2^(e−24) (2^-24 z (1 − z/f)) there" in words

@@ -83,6 +83,14 @@ FIT = (
     ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 2.1),
     ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 2.25),
 )
+#: (setting, share or clear) on :data:`FIT`'s wall (clear/z about 0.064), r442: room − m 5 %
+#: under r + m (NaN), where room to first order at the object's depth z − clear (over by about
+#: clear/z) fits an offset; and 5e-4 over it (an offset), where room to first order at the
+#: midpoint z − clear/2 (under by about (clear/2z)²) says NaN.
+FIRST_ORDER = (
+    ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 1.95, None),
+    ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), None, 0.064442),
+)
 #: float32's relative rounding, allowed at both ends: a tilt held in float32 moves tan θ by
 #: up to 3e-6 of itself at 88° (tan's relative slope there is 1/(sin θ cos θ) ≈ 29).
 ROUNDING = 1e-5
@@ -177,7 +185,8 @@ def _fixed_cases():
             + [_case(s, share=BAND_SHARE) for s in BAND]
             + [_case(s, share=share) for s, share in FIT]
             + [_case(s, clear=clear) for s, clear in ROUNDED]
-            + [_case(s, share=TIGHT_SHARE) for s in STEEP])  # fmt: skip
+            + [_case(s, share=TIGHT_SHARE) for s in STEEP]
+            + [_case(s, share=share or ROOM + 1, clear=clear) for s, share, clear in FIRST_ORDER])  # fmt: skip
 
 
 def bias_cases():
@@ -229,6 +238,9 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
 
     behind = _wall(z + clear, near, far) - _wall(z, near, far)
     first = far * near / ((far - near) * z * z) * clear  # lesson 05b §2's dz_win/dz · clear
+    # r442: the same first order taken at the object's depth, or at the midpoint
+    at_object = far * near / ((far - near) * (z - clear) ** 2) * clear
+    at_mid = far * near / ((far - near) * (z - clear / 2) ** 2) * clear
     # slips of m, each in the offset alone and in the student's own test for NaN too (r340:
     # the own-test forms of z², view slope, the far plane's factor, cos and 1/tan were told
     # only the rule, or another slip's words)
@@ -250,6 +262,8 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         else sign * (r + m),
         "behind": math.nan if r + m > behind - m else sign * (r + m),
         "first order": math.nan if r + m > first - m else sign * (r + m),
+        "first order at the object": math.nan if r + m > at_object - m else sign * (r + m),
+        "first order at the midpoint": math.nan if r + m > at_mid - m else sign * (r + m),
         # a test for NaN twice as strict as it needs, a variant (not the NAN symptom alone):
         # r340's near-boundary case made a coincident slip of m outrank the symptom
         "r + 2m": math.nan if r + 2 * m > space - m else sign * (r + m),
@@ -387,6 +401,14 @@ MISTAKES = {
     "first order": ": you took room to first order, f n/((f − n) z²) · clear, which falls short "
     "of it by about a factor 1 − clear/z: the object's window depth is exact, so room = "
     "z_win(z) − z_win(z − clear)",
+    "first order at the object": ": you took room to first order at the object's depth, f n/"
+    "((f − n)(z − clear)²) · clear, which overshoots it by about clear/z (the slope of z_win is "
+    "steeper there than over the span): the object's window depth is exact, so room = "
+    "z_win(z) − z_win(z − clear)",
+    "first order at the midpoint": ": you took room to first order at the midpoint, f n/((f − "
+    "n)(z − clear/2)²) · clear, which falls short of it by about (clear/2)²/(z − clear/2)²: "
+    "close, but the test of r + m against room − m needs it exactly, room = z_win(z) − "
+    "z_win(z − clear)",
     "r + 2m": ": NaN means “no offset works” here, and this case has one: r + m ≤ room − m. "
     "Your test for NaN asks for r + 2m: the decal at its nearest lies m in front of the wall, "
     "|o| + m from it, so |o| = r + m fits while room − m ≥ r + m",

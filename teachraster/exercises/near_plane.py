@@ -380,6 +380,32 @@ ROUNDED_DOWN = Mistake(
     fits=_rounded_down,
 )
 
+
+def _just_under(args, expected, got) -> float | None:
+    """r442: under the smallest accepted near plane by at most 1 %, and no rounding of it (a
+    bisection that returned its bracket's low end was told only "by luck"); the share, or
+    None."""
+    z, gap, far, bits = args
+    lo = _bounds(float(z), float(gap), float(far), int(bits))[0]
+    if not np.isfinite(got) or not 0 < got < lo * (1 - 1e-6) or _rounded_down(args, expected, got):
+        return None
+    share = 1 - got / lo
+    return share if share <= 0.01 else None
+
+
+JUST_UNDER = Mistake(
+    "just under",
+    lambda a, e, g: (
+        f": yours lies {_just_under(a, e, g):.1g} (relative) nearer than the smallest near plane "
+        "that tells the surfaces apart: a bisection that returned its bracket's low end (the "
+        "side where they are not yet told apart), a scan that stopped where the two depths' "
+        "rounded integers first differ (less than a step apart they can, by luck), or a "
+        "formula a little off? Return the end where they are told apart, or solve "
+        "step (f − n) z²/(f n) = gap for n exactly"
+    ),
+    fits=lambda a, e, g: _just_under(a, e, g) is not None,
+)
+
 RANGE = Mistake("range", ": a near plane lies between the eye and the surfaces, 0 < n < z",
                 fits=_out_of_range, symptom=True)  # fmt: skip
 
@@ -433,7 +459,8 @@ def draw_near(ax, case, got):
 
 SAFE_NEAR = Exercise(
     "safe_near", near_cases, as_lone_number, same_near, explain_near, _rule,
-    variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, ROUNDS_APART, RANGE)), draw=draw_near,
+    variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, JUST_UNDER, ROUNDS_APART, RANGE)),
+    draw=draw_near,
     # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
     answers=(
         PackageAnswer(expected_near, words=CHECKER_WORDS),

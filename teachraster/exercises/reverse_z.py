@@ -190,6 +190,8 @@ def gap_variants(z, near, far) -> dict[str, float]:
         "from the exact d, below": (d - float(np.nextafter(np.float32(d), np.float32(0)))) / slope,
         "secant over one unit": _nearer_step(d) / (d - float(reversed_depth(z + 1.0, near, far))),
         "slope d/z": _nearer_step(d) * z / d,
+        # r442: the binade above d's (ceil for floor): twice the step but at a power of two
+        "ceil for floor": 2.0 ** (np.ceil(np.log2(d)) - 23) / slope,
     }
 
 
@@ -265,7 +267,11 @@ MISTAKES = {
     "relative step, half": _RELATIVE,
     # two readings give this very answer: half a step, and NDC's slope
     "half": f"yours is half of it: {HALF_STEP}. Or you took the slope of an NDC depth 2d − 1 "
-    "in [−1, 1], twice d's: the buffer stores d in [0, 1]",
+    "in [−1, 1], twice d's: the buffer stores d in [0, 1]. Or you took 2^(e−24) for 24 bits "
+    "of precision: they count the hidden leading 1, the stored fraction has 23, so d "
+    "in [2^e, 2^(e+1)) steps by 2^(e−23)",
+    "ceil for floor": "you took the step of the binade above d's, 2^(⌈log2 d⌉ − 23): d in "
+    "[2^e, 2^(e+1)) has e = ⌊log2 d⌋ and steps by 2^(e−23) (np.spacing of d as stored)",
     "gl ndc": "you sent d through OpenGL's default NDC, 2d − 1 in [−1, 1], where float32 "
     "near −1 has steps of 2^-24 only: that is reverse-Z without glClipControl(..., "
     "GL_ZERO_TO_ONE) (lesson 05b, §4). The buffer here stores d itself, in [0, 1]",
@@ -337,6 +343,28 @@ def gives_same_gap(got, answer, args) -> bool:
 def _num(x: float, other: float) -> str:
     """``x`` with at least 3 significant digits, more where needed to tell it from ``other``."""
     return max(num(x, other), f"{x:.3g}", key=len)
+
+
+def _margin(args, expected, got) -> float | None:
+    """r442: yours over the coarsest reading by more than :data:`SLACK` (up to 20 %), as a
+    factor; None where it is not."""
+    if not np.isfinite(got):
+        return None
+    c = got / max(readings(*(float(a) for a in args)))
+    return c if 1 + SLACK < c <= 1.2 else None
+
+
+MARGIN = Mistake(
+    "margin",
+    lambda a, e, g: (
+        f": yours is {_margin(a, e, g):.4g} times one step above the stored d over the slope, "
+        f"{num(max(readings(*a)), g)}: the check accepts up to 1 % over it (a gap rounded "
+        "up a little). A margin, or a factor slipped in?"
+    ),
+    fits=lambda a, e, g: _margin(a, e, g) is not None,
+    parameter=_margin,
+    symptom=True,
+)
 
 
 def _not_positive(args, expected, got) -> bool:
@@ -431,7 +459,7 @@ def _zoom(ax, args, band, expected, got) -> list:
 
 REVERSE_Z_GAP = Exercise(
     "reverse_z_gap", gap_cases, as_lone_number, same_gap, explain_gap, _rule,
-    variant_mistakes(gap_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
+    variant_mistakes(gap_variants, MISTAKES, (MARGIN, RANGE)), draw=draw_gap, match=gives_same_gap,
     # r414 F3: a pass draws z = 5 at near 1, far 10: at lesson 05b's planes (the first case)
     # its sawtooth over z 75 to 1000 answered 5.2b's prediction, a cell before 5.2b asks it
     example=7,

@@ -559,7 +559,8 @@ def _search_words(args, expected, got) -> str:
     return (f": your Δz lies between z_max's and the coarsest, {_short(1 - got / expected)} "
             "short of it: a search over sampled depths? The coarsest step lies just nearer "
             f"than z = {num(z_w)}, where d falls to 2^{e}; your samples stopped at about z = "
-            f"{num(z_s, z_w)} in that binade (Δz grows like z² there). A search falls short "
+            f"{num(z_s, z_w)} in that binade (Δz grows like z² there; with no samples, that "
+            "is where the depth you took lay, a hair nearer than the crossing). A search falls short "
             "by about twice its spacing over z, and the check allows "
             f"{_short(BELOW)}; one refined until it finds the jump lands a hair over it (the "
             "stored d rounds up to the power of two a little farther), which fails too. Δz jumps there (the step halves), so the coarsest is the limit just nearer "
@@ -608,9 +609,12 @@ def _over_words(args, expected, got) -> str:
     share = _short(got / expected - 1)
     if not _at_rounded_edge(args, expected, got):
         # r442 F2: a depth held in float32 on the way lands a few of its roundings over
+        over = got / expected - 1
         why = ("A number rounded on the way (a depth or an input kept in float32, whose "
                "rounding, 6e-8 of it, moves Δz by up to twice that through z²), or a margin "
-               "added?" if got / expected - 1 <= 1e-5 else
+               "added?" if over <= 1e-6 else
+               "A number rounded on the way (an input or a depth kept in fewer bits than "
+               "float64's), or a margin added?" if over <= 1e-5 else
                "Did you round it up, or add a margin?")  # fmt: skip
         return (f": yours is {share} over the coarsest, where the check allows {_short(ABOVE)}: "
                 "a gap rounded up is still resolved, but the task asks the coarsest Δz itself, "
