@@ -9164,3 +9164,193 @@ DIFFERENT.update({
     "perspective weights as lesson 04 prints them where finite, scaled elsewhere": (
         "perspective_weights", _w440_printed_where_finite),
 })  # fmt: skip
+
+
+# -- r442 (exercise 5, a verifying reader): 5.3's NaN test with r doubled or counted twice, m
+# halved; 5.2's step from the exact d, secant and d/z slopes; 5.1 at z ± gap; 5.2b's one-element
+# list, a depth held in float32, 2^-24 at the crossings, crossings without n/f, candidates
+# averaged or picked by depth, NaN on a range without a crossing.
+def _r442_bias(r_of=lambda bits: 1 / (2**bits - 1), half_m=False, twice=False):
+    """5.3 with r = ``r_of(bits)`` (in the NaN test too), m halved, or the test 2(r + m) > room."""
+
+    def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        r = r_of(bits)
+        m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+        m = m / 2 if half_m else m
+        z_win = lambda zz: far / (far - near) * (1 - near / zz)  # noqa: E731
+        room = z_win(z) - z_win(z - clear)
+        if (2 * (r + m) > room) if twice else (r + m > room - m):
+            return math.nan
+        return (r + m) if reverse else -(r + m)
+
+    return decal_bias
+
+
+def _r442_gap(step_of=None, slope_of=None):
+    """5.2 with its step ``step_of(d)`` or slope ``slope_of(z, n, f, d)`` replaced."""
+
+    def reverse_z_gap(z, near, far):
+        d = (near / z - near / far) / (1 - near / far)
+        step = step_of(d) if step_of else float(np.spacing(np.float32(d)))
+        slope = slope_of(z, near, far, d) if slope_of else near / ((1 - near / far) * z * z)
+        return step / slope
+
+    return reverse_z_gap
+
+
+def _r442_near(shift):
+    """5.1 with the resolution taken at z + shift·gap."""
+
+    def safe_near(z, gap, far, bits):
+        step, zz = 1 / (2**bits - 1), z + shift * gap
+        return step * far * zz**2 / (gap * far + step * zz**2)
+
+    return safe_near
+
+
+def _r442_candidates(z_min, z_max, near, far, cross=_R425_CROSS, f32=False):
+    """(z, Δz): z_max's (5.2's) and each crossing's in the range, its z held in float32
+    (``f32``)."""
+    k = 1 - near / far
+    out = [(z_max, _rs.reverse_z_gap(z_max, near, far))]
+    for e in range(-160, 2):
+        z = cross(e, near, far)
+        z = float(np.float32(z)) if f32 else z
+        if z_min <= z <= z_max:
+            out.append((z, 2.0 ** (e - 23) * k * z * z / near))
+    return out
+
+
+def _r442_nan_start(z_min, z_max, near, far):
+    """NaN until a crossing sets it (r442 w_N20)."""
+    best = math.nan
+    for _, dz in _r442_candidates(z_min, z_max, near, far)[1:]:
+        best = np.nanmax([best, dz, _rs.reverse_z_gap(z_max, near, far)])
+    return best
+
+
+#: label: (name, function, words in the first failure, kind of the first failure).
+R442 = {
+    "decal bias with two steps in its test for NaN (r442 db_N2)": (
+        "decal_bias", _r442_bias(lambda bits: 2.0 / 2**bits),
+        "Yours takes r as two steps, 2/2^16", "two steps"),
+    "decal bias testing 2(r + m) > room (r442 db_N6)": (
+        "decal_bias", _r442_bias(twice=True), "Yours asks 2(r + m) ≤ room: it counts r twice",
+        "r twice in the test"),
+    "decal bias with half a pixel's slope (r442 db_N3)": (
+        "decal_bias", _r442_bias(half_m=True), "your m is half one pixel's depth slope",
+        "halved, own test"),
+    "reverse-Z gap from the exact d to the next float32 (r442 rg_N2)": (
+        "reverse_z_gap", _r442_gap(
+            step_of=lambda d: float(np.nextafter(np.float32(d), np.float32(np.inf))) - d),
+        "you measured the step from the exact d to a float32 neighbour", "from the exact d"),
+    "reverse-Z gap with a secant over one unit of z (r442 rg_N3)": (
+        "reverse_z_gap", _r442_gap(slope_of=lambda z, n, f, d: d - (n / (z + 1) - n / f)
+                                   / (1 - n / f)),
+        "your slope is a difference of d over one unit of z", "secant over one unit"),
+    "reverse-Z gap with the slope d/z (r442 rg_N5)": (
+        "reverse_z_gap", _r442_gap(slope_of=lambda z, n, f, d: d / z),
+        "you took d's slope as d/z", "slope d/z"),
+    "safe near plane at the nearer surface z - gap (r442 sn_N3)": (
+        "safe_near", _r442_near(-1), "you took the resolution at z − gap = 9.99",
+        "nearer surface"),
+    "safe near plane at the farther surface z + gap (r442 sn_N5)": (
+        "safe_near", _r442_near(1), "you took the resolution at z + gap = 22",
+        "farther surface"),
+    "reverse-Z worst inside a list of one (r442 w_N17)": (
+        "reverse_z_worst", lambda a, b, n, f: [_rs.reverse_z_worst(a, b, n, f)],
+        "returned a list of one value where one number is expected", "type"),
+    "reverse-Z worst with each crossing's depth held in float32 (r442 w_N11)": (
+        "reverse_z_worst", lambda a, b, n, f: max(
+            dz for _, dz in _r442_candidates(a, b, n, f, f32=True)),
+        "A number rounded on the way (a depth or an input kept in float32", "over the coarsest"),
+    # with z_min's own Δz too (r442 w_N5) the drawn cases decide between these words and the
+    # edge-rounded-below ones, which now say "or you took 2^(e−24) … there" (tested apart)
+    "reverse-Z worst, 2^-24 z (1 - z/f) at each crossing (r442 w_N5)": (
+        "reverse_z_worst", lambda a, b, n, f: max(
+            [_rs.reverse_z_gap(b, n, f)]
+            + [2.0**-24 * z * (1 - z / f) for z, _ in _r442_candidates(a, b, n, f)[1:]]),
+        "you took the step below it, 2^(e−24)", "step below at edges"),
+    "reverse-Z worst with crossings at n/(2^e (1 - n/f)) (r442 w_N6)": (
+        "reverse_z_worst", lambda a, b, n, f: max(dz for _, dz in _r442_candidates(
+            a, b, n, f, cross=lambda e, n_, f_: n_ / (2.0**e * (1 - n_ / f_)))),
+        "you put d's crossings at z = n/(2^e (1 − n/f))", "crossings without n/f"),
+    "reverse-Z worst, the candidates averaged (r442 w_N15)": (
+        "reverse_z_worst", lambda a, b, n, f: float(np.mean(
+            [dz for _, dz in _r442_candidates(a, b, n, f)])),
+        "you averaged the right candidates", "mean of candidates"),
+    "reverse-Z worst, the candidate nearest f/2 (r442 w_N12)": (
+        "reverse_z_worst", lambda a, b, n, f: min(
+            _r442_candidates(a, b, n, f), key=lambda c: abs(c[0] - f / 2))[1],
+        "return another of the candidates than the largest", "z_max's own here"),
+    "reverse-Z worst, NaN until a crossing sets it (r442 w_N20)": (
+        "reverse_z_worst", _r442_nan_start,
+        "did your answer start as NaN (or unset) and wait for a crossing to set it?",
+        "NaN without a crossing"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R442.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R442.items()})
+DIFFERENT.update({
+    "reverse-Z worst, 2^-23 z_e (1 - z_e/f) at each crossing (r442 w_K1)": (
+        "reverse_z_worst", lambda a, b, n, f: max(
+            [_rs.reverse_z_gap(b, n, f)]
+            + [2.0**-23 * z * (1 - z / f) for z, _ in _r442_candidates(a, b, n, f)[1:]])),
+    "safe near plane by whole steps between z and z + gap, solved (r442 sn_K1)": (
+        "safe_near", lambda z, gap, far, bits: (1 / (2**bits - 1)) * far / (
+            far * (1 / z - 1 / (z + gap)) + 1 / (2**bits - 1))),
+})  # fmt: skip
+
+
+def _r442_room(at):
+    """5.3 with room to first order at z − ``at``·clear (r442 db_R1: the object, db_R2: the
+    midpoint)."""
+
+    def decal_bias(z, tilt, pixel, near, far, bits, reverse, clear):
+        r = 1 / (2**bits - 1)
+        m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+        room = far * near / ((far - near) * (z - at * clear) ** 2) * clear
+        if r + m > room - m:
+            return math.nan
+        return (r + m) if reverse else -(r + m)
+
+    return decal_bias
+
+
+def _r442_bracket_low(z, gap, far, bits):
+    """5.1 by bisection to 1e-3, returning the bracket's low end (r442 sn_R1)."""
+    step = 1 / (2**bits - 1)
+    lo, hi = 1e-9, z
+    while hi - lo > 1e-3 * hi:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if step * (far - mid) * z * z / (far * mid) <= gap else (mid, hi)
+    return lo
+
+
+#: r442's second round: label: (name, function, words in the first failure, kind).
+R442_MORE = {
+    "decal bias, room to first order at the object (r442 db_R1)": (
+        "decal_bias", _r442_room(1.0), "you took room to first order at the object's depth",
+        "first order at the object"),
+    "decal bias, room to first order at the midpoint (r442 db_R2)": (
+        "decal_bias", _r442_room(0.5), "you took room to first order at the midpoint",
+        "first order at the midpoint"),
+    "reverse-Z gap with 2^(e - 24), 24 bits of precision (r442 rg_R1)": (
+        "reverse_z_gap", _r442_gap(step_of=lambda d: 2.0 ** (math.floor(math.log2(d)) - 24)),
+        "Or you took 2^(e−24) for 24 bits of precision", "half"),
+    "reverse-Z gap with ceil for floor (r442 rg_R2)": (
+        "reverse_z_gap", _r442_gap(step_of=lambda d: 2.0 ** (math.ceil(math.log2(d)) - 23)),
+        "you took the step of the binade above d's", "ceil for floor"),
+    "reverse-Z gap with a 2 % margin (r442 rg_R3)": (
+        "reverse_z_gap", lambda z, n, f: 1.02 * _rs.reverse_z_gap(z, n, f),
+        "A margin, or a factor slipped in?", "margin"),
+    "safe near plane, a bisection's low end (r442 sn_R1)": (
+        "safe_near", _r442_bracket_low, "a bisection that returned its bracket's low end",
+        "just under"),
+    "reverse-Z worst, 5.2 a relative 1e-6 nearer than each crossing (r442 w_R4)": (
+        "reverse_z_worst", lambda a, b, n, f: max(
+            [_rs.reverse_z_gap(b, n, f)] + [_rs.reverse_z_gap(z * (1 - 1e-6), n, f)
+                                            for z, _ in _r442_candidates(a, b, n, f)[1:]]),
+        "with no samples, that is where the depth you took lay", "search missed the edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R442_MORE.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R442_MORE.items()})

@@ -40,10 +40,9 @@ from functools import cache
 import numpy as np
 
 from ..pipeline.visibility.depth import depth_bias, window_depth
-from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .near_plane import HALF_STEP, XOR_UNBRACKETED
+from .near_plane import HALF_STEP, XOR_UNBRACKETED, as_lone_number
 from .package_answers import CHECKER_WORDS
 from .reverse_z import gives_same_gap
 from .scalars import num
@@ -83,6 +82,14 @@ BAND_SHARE = 1.5
 FIT = (
     ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 2.1),
     ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 2.25),
+)
+#: (setting, share or clear) on :data:`FIT`'s wall (clear/z about 0.064), r442: room − m 5 %
+#: under r + m (NaN), where room to first order at the object's depth z − clear (over by about
+#: clear/z) fits an offset; and 5e-4 over it (an offset), where room to first order at the
+#: midpoint z − clear/2 (under by about (clear/2z)²) says NaN.
+FIRST_ORDER = (
+    ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), 1.95, None),
+    ((1.0, 89.0, 6.01e-4, 0.1, 100.0, 24, False), None, 0.064442),
 )
 #: float32's relative rounding, allowed at both ends: a tilt held in float32 moves tan θ by
 #: up to 3e-6 of itself at 88° (tan's relative slope there is 1/(sin θ cos θ) ≈ 29).
@@ -178,7 +185,8 @@ def _fixed_cases():
             + [_case(s, share=BAND_SHARE) for s in BAND]
             + [_case(s, share=share) for s, share in FIT]
             + [_case(s, clear=clear) for s, clear in ROUNDED]
-            + [_case(s, share=TIGHT_SHARE) for s in STEEP])  # fmt: skip
+            + [_case(s, share=TIGHT_SHARE) for s in STEEP]
+            + [_case(s, share=share or ROOM + 1, clear=clear) for s, share, clear in FIRST_ORDER])  # fmt: skip
 
 
 def bias_cases():
@@ -230,6 +238,9 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
 
     behind = _wall(z + clear, near, far) - _wall(z, near, far)
     first = far * near / ((far - near) * z * z) * clear  # lesson 05b §2's dz_win/dz · clear
+    # r442: the same first order taken at the object's depth, or at the midpoint
+    at_object = far * near / ((far - near) * (z - clear) ** 2) * clear
+    at_mid = far * near / ((far - near) * (z - clear / 2) ** 2) * clear
     # slips of m, each in the offset alone and in the student's own test for NaN too (r340:
     # the own-test forms of z², view slope, the far plane's factor, cos and 1/tan were told
     # only the rule, or another slip's words)
@@ -251,6 +262,8 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         else sign * (r + m),
         "behind": math.nan if r + m > behind - m else sign * (r + m),
         "first order": math.nan if r + m > first - m else sign * (r + m),
+        "first order at the object": math.nan if r + m > at_object - m else sign * (r + m),
+        "first order at the midpoint": math.nan if r + m > at_mid - m else sign * (r + m),
         # a test for NaN twice as strict as it needs, a variant (not the NAN symptom alone):
         # r340's near-boundary case made a coincident slip of m outrank the symptom
         "r + 2m": math.nan if r + 2 * m > space - m else sign * (r + m),
@@ -269,6 +282,11 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         # r340: 1/(2^bits - 1) typed, 1/(2 ^ (bits - 1)) run (in the test for NaN too, the
         # answer is NaN on every case: :data:`NAN_WORDS` names it)
         "xor": offset(1.0 / (2 ^ (bits - 1)) + m),
+        # r442 F2: two steps for r (OpenGL's llvmpipe, Vulkan's bound 2 · 2^-bits), in the
+        # test for NaN too (a larger offset still fits where it fits: the NaN tells it); and
+        # the test rearranged with r counted twice, 2(r + m) > room
+        "two steps": own(2.0 / 2**bits, m),
+        "r twice in the test": math.nan if 2 * (r + m) > space else sign * (r + m),
     }
 
 
@@ -295,6 +313,8 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
         "sine": m * math.sin(rad) / math.tan(rad) if inside else None,
         "cosine": m * math.cos(rad) / math.tan(rad) if inside else None,
         "cotangent": m / math.tan(rad) ** 2 if inside else None,
+        # r442 F3: half a pixel's slope ("from the pixel's centre to its edge")
+        "halved": m / 2,
     }
 
 
@@ -334,8 +354,11 @@ _DOUBLED = (": your m is twice one pixel's depth slope. The decal's depth lies w
             "the wall's either way, but each bound needs only one side: from m behind it must "
             "end a step in front, |o| ≥ r + m, and from m in front it must stay behind the "
             "object, |o| ≤ room − m")  # fmt: skip
+_HALVED = (": your m is half one pixel's depth slope (from the pixel's centre to its edge?). "
+           "MaxDepthSlope is the change of depth from one pixel to the next, and the decal's "
+           "depth may lie that whole m behind the wall's: |o| ≥ r + m")  # fmt: skip
 _SLOPE_WORDS = {
-    "doubled": _DOUBLED,
+    "doubled": _DOUBLED, "halved": _HALVED,
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
@@ -378,6 +401,14 @@ MISTAKES = {
     "first order": ": you took room to first order, f n/((f − n) z²) · clear, which falls short "
     "of it by about a factor 1 − clear/z: the object's window depth is exact, so room = "
     "z_win(z) − z_win(z − clear)",
+    "first order at the object": ": you took room to first order at the object's depth, f n/"
+    "((f − n)(z − clear)²) · clear, which overshoots it by about clear/z (the slope of z_win is "
+    "steeper there than over the span): the object's window depth is exact, so room = "
+    "z_win(z) − z_win(z − clear)",
+    "first order at the midpoint": ": you took room to first order at the midpoint, f n/((f − "
+    "n)(z − clear/2)²) · clear, which falls short of it by about (clear/2)²/(z − clear/2)²: "
+    "close, but the test of r + m against room − m needs it exactly, room = z_win(z) − "
+    "z_win(z − clear)",
     "r + 2m": ": NaN means “no offset works” here, and this case has one: r + m ≤ room − m. "
     "Your test for NaN asks for r + 2m: the decal at its nearest lies m in front of the wall, "
     "|o| + m from it, so |o| = r + m fits while room − m ≥ r + m",
@@ -424,6 +455,14 @@ MISTAKES = {
     ),
     "half": f": {HALF_STEP}. Beyond the pixel's span m the decal needs a whole step r",
     "xor": f": {XOR_UNBRACKETED}",
+    "two steps": lambda a, e, g: (
+        f": your test for NaN fires here, but one offset does both: r + m ≤ room − m with r = "
+        f"1/(2^{a[5]} − 1). Yours takes r as two steps, 2/2^{a[5]} (OpenGL's llvmpipe, or "
+        "Vulkan's bound): this task takes Direct3D's r, one step, 1/(2^bits − 1)"
+    ),
+    "r twice in the test": ": your test for NaN fires here, but one offset does both: r + m ≤ "
+    "room − m, that is r + 2m ≤ room. Yours asks 2(r + m) ≤ room: it counts r twice (the decal "
+    "at its nearest lies m in front of the wall, o + m from it; r is in o once)",
 }
 
 
@@ -551,7 +590,7 @@ def constant_nan(results) -> str:
 NAN = Mistake(
     "nan", ": your answer holds NaN. NaN means “no offset works” here, and this case has one: "
     "r + m ≤ room − m. "
-    "Your test for NaN fires where it should not: check the m it uses", fits=_nan_with_room,
+    "Your test for NaN fires where it should not: check the r and m it uses", fits=_nan_with_room,
     symptom=True,
 )  # fmt: skip
 
@@ -653,7 +692,7 @@ def _mistakes() -> list[Mistake]:
 
 
 DECAL_BIAS = Exercise(
-    "decal_bias", bias_cases, as_number, same_offset, explain_offset, _rule,
+    "decal_bias", bias_cases, as_lone_number, same_offset, explain_offset, _rule,
     _mistakes(), draw=draw_offset, match=gives_same_offset,
     float32=lambda args: expected_offset(*args),
     answers=(PackageAnswer(expected_offset, words=CHECKER_WORDS),),

@@ -28,6 +28,7 @@ from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .package_answers import CHECKER_WORDS
+from .running import WrongAnswerType
 from .scalars import num
 from .tolerance import close
 
@@ -49,6 +50,23 @@ SETTINGS = (
 #: How much further out than the smallest near plane an answer may be (a safe near plane,
 #: found by bisection or rounded to a few digits, is right).
 SLACK = 0.01
+
+
+def as_lone_number(value):
+    """One number, as :func:`.answers.as_number`, but not inside an array or brackets: the
+    docs promise shapes must match (r414 F7: an array of shape (1,) passed 5.2b; r442 F1: a
+    list of one too, and both in 5.1 to 5.3)."""
+    if isinstance(value, np.ndarray) and value.ndim > 0:
+        raise WrongAnswerType(
+            f"returned an array of shape {value.shape} where one number is expected: return "
+            "the number itself (float(...) of it)"
+        )
+    if isinstance(value, (tuple, list)) and len(value) == 1:
+        raise WrongAnswerType(
+            f"returned a {type(value).__name__} of one value where one number is expected: "
+            "return the number itself, not inside brackets"
+        )
+    return as_number(value)
 
 
 def resolution(z, near, far, bits) -> float:
@@ -181,6 +199,9 @@ def _variants(z, gap, far, bits) -> dict[str, float]:
             # r381 F5: int() of the right n (0 below 1: told only "0 < n < z" first)
             "int": float(math.trunc(solve(step, far))),
             **{f"{b} bits": solve(1.0 / (2**b - 1), far) for b in (16, 24) if b != bits},
+            # r442 F3: the resolution asked at the nearer surface, z − gap (or the farther)
+            "nearer surface": step * far * (z - gap) ** 2 / (gap * far + step * (z - gap) ** 2),
+            "farther surface": step * far * (z + gap) ** 2 / (gap * far + step * (z + gap) ** 2),
         }
 
 
@@ -234,6 +255,17 @@ MISTAKES = {
         f"int() truncates your n toward 0, {num(e, g)} to {num(g)}: that lies nearer than the "
         "smallest near plane (0 is no near plane at all), where the two surfaces' window depths "
         "are less than a step apart. Keep every digit, or round up"
+    ),
+    "nearer surface": lambda a, e, g: (
+        f"you took the resolution at z − gap = {num(a[0] - a[1])}, where Δz is finer than at "
+        f"z = {num(a[0])}: surfaces {num(a[1])} apart there, at z − gap and z, then lie less "
+        "than a whole step apart. Take the resolution at z itself (or the window depths of "
+        "z − gap and z a whole step apart)"
+    ),
+    "farther surface": lambda a, e, g: (
+        f"you took the resolution at z + gap = {num(a[0] + a[1])}, farther than the surfaces: "
+        "Δz grows with z, so your near plane lies further out than needed. Take it at z itself "
+        "(or the window depths of z and z + gap a whole step apart)"
     ),
     **{
         f"{b} bits": f"your n is the one for a {b}-bit buffer, whatever `bits` is: the step is "
@@ -348,6 +380,32 @@ ROUNDED_DOWN = Mistake(
     fits=_rounded_down,
 )
 
+
+def _just_under(args, expected, got) -> float | None:
+    """r442: under the smallest accepted near plane by at most 1 %, and no rounding of it (a
+    bisection that returned its bracket's low end was told only "by luck"); the share, or
+    None."""
+    z, gap, far, bits = args
+    lo = _bounds(float(z), float(gap), float(far), int(bits))[0]
+    if not np.isfinite(got) or not 0 < got < lo * (1 - 1e-6) or _rounded_down(args, expected, got):
+        return None
+    share = 1 - got / lo
+    return share if share <= 0.01 else None
+
+
+JUST_UNDER = Mistake(
+    "just under",
+    lambda a, e, g: (
+        f": yours lies {_just_under(a, e, g):.1g} (relative) nearer than the smallest near plane "
+        "that tells the surfaces apart: a bisection that returned its bracket's low end (the "
+        "side where they are not yet told apart), a scan that stopped where the two depths' "
+        "rounded integers first differ (less than a step apart they can, by luck), or a "
+        "formula a little off? Return the end where they are told apart, or solve "
+        "step (f − n) z²/(f n) = gap for n exactly"
+    ),
+    fits=lambda a, e, g: _just_under(a, e, g) is not None,
+)
+
 RANGE = Mistake("range", ": a near plane lies between the eye and the surfaces, 0 < n < z",
                 fits=_out_of_range, symptom=True)  # fmt: skip
 
@@ -400,8 +458,9 @@ def draw_near(ax, case, got):
 
 
 SAFE_NEAR = Exercise(
-    "safe_near", near_cases, as_number, same_near, explain_near, _rule,
-    variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, ROUNDS_APART, RANGE)), draw=draw_near,
+    "safe_near", near_cases, as_lone_number, same_near, explain_near, _rule,
+    variant_mistakes(_variants, MISTAKES, (ROUNDED_DOWN, JUST_UNDER, ROUNDS_APART, RANGE)),
+    draw=draw_near,
     # r126 (fixex10's note): no answer was listed, so expected_near, handed in, passed
     answers=(
         PackageAnswer(expected_near, words=CHECKER_WORDS),

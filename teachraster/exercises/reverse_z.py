@@ -23,10 +23,9 @@ from functools import cache
 import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, reversed_depth, window_depth
-from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .near_plane import HALF_STEP
+from .near_plane import HALF_STEP, as_lone_number
 from .package_answers import CHECKER_WORDS
 from .scalars import num
 
@@ -184,6 +183,15 @@ def gap_variants(z, near, far) -> dict[str, float]:
         "1 - n/f inverted": step / slope / (1 - near / far) ** 2,
         # r425 F4: f where the slope has n (step (1 − n/f) z²/f)
         "far for near in the slope": step * near / far / slope,
+        # r442 F3: the step measured from the exact d to its float32 neighbour (above, or
+        # below), not between two stored values; the slope as a secant over one unit of z;
+        # the slope as d/z (true of d = n/z alone)
+        "from the exact d": (float(np.nextafter(np.float32(d), np.float32(np.inf))) - d) / slope,
+        "from the exact d, below": (d - float(np.nextafter(np.float32(d), np.float32(0)))) / slope,
+        "secant over one unit": _nearer_step(d) / (d - float(reversed_depth(z + 1.0, near, far))),
+        "slope d/z": _nearer_step(d) * z / d,
+        # r442: the binade above d's (ceil for floor): twice the step but at a power of two
+        "ceil for floor": 2.0 ** (np.ceil(np.log2(d)) - 23) / slope,
     }
 
 
@@ -193,6 +201,14 @@ _RELATIVE = ("you took a fixed share of d as float32's step (its relative precis
 _INFINITE = (
     "you dropped the far plane: d = n/z and |dd/dz| = n/z² hold for f = ∞ only; "
     "with this far plane d = (n/z − n/f)/(1 − n/f) and |dd/dz| = n/((1 − n/f) z²)"
+)
+
+
+#: r442 F3: a distance from the exact d, which the buffer never holds
+_FROM_EXACT = (
+    "you measured the step from the exact d to a float32 neighbour: the buffer holds d "
+    "rounded to float32, and its step is the distance between two stored values, np.spacing "
+    "of np.float32(d) (or to the neighbour below)"
 )
 
 
@@ -251,7 +267,11 @@ MISTAKES = {
     "relative step, half": _RELATIVE,
     # two readings give this very answer: half a step, and NDC's slope
     "half": f"yours is half of it: {HALF_STEP}. Or you took the slope of an NDC depth 2d − 1 "
-    "in [−1, 1], twice d's: the buffer stores d in [0, 1]",
+    "in [−1, 1], twice d's: the buffer stores d in [0, 1]. Or you took 2^(e−24) for 24 bits "
+    "of precision: they count the hidden leading 1, the stored fraction has 23, so d "
+    "in [2^e, 2^(e+1)) steps by 2^(e−23)",
+    "ceil for floor": "you took the step of the binade above d's, 2^(⌈log2 d⌉ − 23): d in "
+    "[2^e, 2^(e+1)) has e = ⌊log2 d⌋ and steps by 2^(e−23) (np.spacing of d as stored)",
     "gl ndc": "you sent d through OpenGL's default NDC, 2d − 1 in [−1, 1], where float32 "
     "near −1 has steps of 2^-24 only: that is reverse-Z without glClipControl(..., "
     "GL_ZERO_TO_ONE) (lesson 05b, §4). The buffer here stores d itself, in [0, 1]",
@@ -273,6 +293,14 @@ MISTAKES = {
     "|dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n, with 1 − n/f once",
     "1 - n/f inverted": "your slope has 1 − n/f on the wrong side: d = (n/z − n/f)/(1 − n/f) "
     "divides by it, so |dd/dz| = n/((1 − n/f) z²) and Δz = step · (1 − n/f) z²/n",
+    "from the exact d": _FROM_EXACT,
+    "from the exact d, below": _FROM_EXACT,
+    "secant over one unit": "your slope is a difference of d over one unit of z, d(z) − "
+    "d(z + 1): d's slope falls like 1/z², so that difference is the slope at z times z/(z + 1), "
+    "short by 1/(z + 1) of it (most near the eye). Take the derivative, |dd/dz| = "
+    "n/((1 − n/f) z²)",
+    "slope d/z": "you took d's slope as d/z: that holds for d = n/z alone (a far plane at "
+    "infinity). With this far plane d = (n/z − n/f)/(1 − n/f), and |dd/dz| = n/((1 − n/f) z²)",
     "far for near in the slope": "you divided by f where d's slope has n: d = (n/z − n/f)/(1 − "
     "n/f) changes by |dd/dz| = n/((1 − n/f) z²), so Δz = step · (1 − n/f) z²/n, f/n "
     "times yours",
@@ -315,6 +343,28 @@ def gives_same_gap(got, answer, args) -> bool:
 def _num(x: float, other: float) -> str:
     """``x`` with at least 3 significant digits, more where needed to tell it from ``other``."""
     return max(num(x, other), f"{x:.3g}", key=len)
+
+
+def _margin(args, expected, got) -> float | None:
+    """r442: yours over the coarsest reading by more than :data:`SLACK` (up to 20 %), as a
+    factor; None where it is not."""
+    if not np.isfinite(got):
+        return None
+    c = got / max(readings(*(float(a) for a in args)))
+    return c if 1 + SLACK < c <= 1.2 else None
+
+
+MARGIN = Mistake(
+    "margin",
+    lambda a, e, g: (
+        f": yours is {_margin(a, e, g):.4g} times one step above the stored d over the slope, "
+        f"{num(max(readings(*a)), g)}: the check accepts up to 1 % over it (a gap rounded "
+        "up a little). A margin, or a factor slipped in?"
+    ),
+    fits=lambda a, e, g: _margin(a, e, g) is not None,
+    parameter=_margin,
+    symptom=True,
+)
 
 
 def _not_positive(args, expected, got) -> bool:
@@ -408,8 +458,8 @@ def _zoom(ax, args, band, expected, got) -> list:
 
 
 REVERSE_Z_GAP = Exercise(
-    "reverse_z_gap", gap_cases, as_number, same_gap, explain_gap, _rule,
-    variant_mistakes(gap_variants, MISTAKES, (RANGE,)), draw=draw_gap, match=gives_same_gap,
+    "reverse_z_gap", gap_cases, as_lone_number, same_gap, explain_gap, _rule,
+    variant_mistakes(gap_variants, MISTAKES, (MARGIN, RANGE)), draw=draw_gap, match=gives_same_gap,
     # r414 F3: a pass draws z = 5 at near 1, far 10: at lesson 05b's planes (the first case)
     # its sawtooth over z 75 to 1000 answered 5.2b's prediction, a cell before 5.2b asks it
     example=7,

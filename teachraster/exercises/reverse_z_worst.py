@@ -36,9 +36,9 @@ import numpy as np
 
 from ..pipeline.visibility.depth import depth_resolution, reversed_depth
 from . import tries
-from .answers import as_number
 from .cases import DRAWN, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .near_plane import as_lone_number
 from .package_answers import CHECKER_WORDS
 from .report import NOTHING_DRAWN_FOR
 from .reverse_z import MISTAKES as GAP_MISTAKES
@@ -170,8 +170,9 @@ def _drawn(rng) -> tuple[float, float, float, float]:
 
 
 def as_gap(value):
-    """One number, as :func:`.answers.as_number`, but not inside an array (r414 F7: an array
-    of shape (1,) passed, where the docs promise shapes must match)."""
+    """One number, as :func:`.near_plane.as_lone_number` (r414 F7: an array of shape (1,)
+    passed, where the docs promise shapes must match; r442 F1: a list of one), and several
+    numbers named as such."""
     if (
         isinstance(value, (tuple, list))
         and len(value) != 1
@@ -184,12 +185,7 @@ def as_gap(value):
             f"returned ({', '.join(num(v) for v in value)}), {len(value)} values where one "
             "number is expected: return the Δz alone"
         )
-    if isinstance(value, np.ndarray) and value.ndim > 0:
-        raise WrongAnswerType(
-            f"returned an array of shape {value.shape} where one number is expected: return "
-            "the number itself (float(...) of it)"
-        )
-    return as_number(value)
+    return as_lone_number(value)
 
 
 def _float32_held(got) -> bool:
@@ -258,6 +254,8 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
         # r417 F3: the right candidates, the finest of them taken (before z_max's: the same
         # answer wherever z_max's is the finest)
         "finest candidate": min(dz for _, dz in cands),
+        # r442 F3: the candidates averaged
+        "mean of candidates": float(np.mean([dz for _, dz in cands])),
         "z_max only": cands[0][1],
         "twice z_max's": 2 * cands[0][1],
         "z_min only": at_min,
@@ -285,7 +283,8 @@ def _variants(z_min, z_max, near, far) -> dict[str, float]:
 def _crossing_slips(z_min, z_max, near, far) -> dict[str, float]:
     """r425 F3, F4: crossings of the wrong d. Without 1 − n/f (in d and in its slope: d' =
     n/z − n/f crosses 2^e at n/(2^e + n/f)), or at n/2^e (where n/z is a power of two, the
-    slope n/z²); z_max's own Δz as reverse_z_gap gives it, as the student's code keeps it."""
+    slope n/z²), or (r442) at n/(2^e (1 − n/f)), the n/f term left out and the slope right;
+    z_max's own Δz as reverse_z_gap gives it, as the student's code keeps it."""
     at_max = float(np.spacing(np.float32(reversed_depth(z_max, near, far)))) / (
         reversed_depth_slope(z_max, near, far)
     )
@@ -297,8 +296,12 @@ def _crossing_slips(z_min, z_max, near, far) -> dict[str, float]:
             float(np.spacing(np.float32(near / z_max - near / far))) * z_max**2 / near,
         ),
         ("crossings at n/2^e", lambda e: near / 2.0**e, at_max),
+        # r442 F3: the crossing solved without the n/f term, the slope kept
+        ("crossings without n/f", lambda e: near / (2.0**e * (1 - near / far)), at_max),
     ):
-        dzs = [step_max] + [2.0 ** (e - 23) * cross(e) ** 2 / near for e in range(-150, 2)
+        # the slope n/z² where 1 − n/f is dropped (the first two), n/((1 − n/f) z²) kept
+        keep = (1 - near / far) if kind == "crossings without n/f" else 1.0
+        dzs = [step_max] + [2.0 ** (e - 23) * keep * cross(e) ** 2 / near for e in range(-150, 2)
                             if z_min <= cross(e) <= z_max]  # fmt: skip
         out[kind] = max(dzs)
     return out
@@ -361,6 +364,9 @@ MISTAKES = {
 #: with n/f ≪ 1 it lies within 1e-5 of the right one, where a search could fall by chance).
 CROSSING_WORDS = {
     "1 - n/f dropped": _dropped_words,
+    "crossings without n/f": ": you put d's crossings at z = n/(2^e (1 − n/f)), leaving out "
+    "the n/f that d = (n/z − n/f)/(1 − n/f) subtracts: d is 2^e at z = n/(2^e (1 − n/f) + "
+    "n/f), a little nearer",
     "crossings at n/2^e": ": you put d's crossings at z = n/2^e, where n/z is a power of two, "
     "and took the slope n/z²: that holds for an infinite far plane only. With this far plane d "
     "= (n/z − n/f)/(1 − n/f) is 2^e at z = n/(2^e (1 − n/f) + n/f), and |dd/dz| = n/((1 − n/f) "
@@ -370,6 +376,9 @@ MISTAKES |= {
     "finest candidate": ": you compared the right depths, z_max and the limit just nearer "
     "than each depth where d crosses a power of two, but returned the finest of them: the "
     "task asks the coarsest, the gap surfaces need to be told apart at every depth of the range",
+    "mean of candidates": ": you averaged the right candidates, z_max and the limit just "
+    "nearer than each depth where d crosses a power of two: the task asks the coarsest of "
+    "them, the gap surfaces need to be told apart at every depth of the range",
     "z_max only": _z_max_words,
     "twice z_max's": ": that is twice z_max's own Δz: doubling the gap at z_max guesses at "
     "the range. Where in the range can a coarser Δz than z_max's lie, and how much coarser?",
@@ -438,8 +447,9 @@ EDGE_BELOW = Mistake(
     lambda a, e, g: (
         f": at z = {num(worst(*a)[0])}, where d is 2^"
         f"{int(np.round(np.log2(float(reversed_depth(worst(*a)[0], *a[2:])))))}, the coarsest "
-        "depth of this range, your d came out just under that power of two (rounded there, or "
-        "the depth taken a hair too far), so its step was the one below, half the binade's. "
+        "depth of this range, your step there was the one below, half the binade's: d came out "
+        "just under that power of two (rounded there, or the depth taken a hair too far), or "
+        "you took 2^(e−24) (2^-24 z (1 − z/f)) there. "
         "The coarsest Δz is the limit from nearer depths: take the binade's own step there, "
         "2^(e−23) for d = 2^e, rather than np.spacing of a d computed at that depth"
     ),
@@ -460,8 +470,9 @@ FINEST_SAMPLED = Mistake(
 Z_MAX_HERE = Mistake(
     "z_max's own here",
     ": that is z_max's own Δz: on this case a depth inside the range, where d crosses a power "
-    "of two, is coarser. Did you leave that crossing out (or skip it), or did d there come out "
-    "just under the power of two (np.spacing then gives the step below, half the binade's)?",
+    "of two, is coarser. Did you leave that crossing out (or skip it), return another of the "
+    "candidates than the largest, or did d there come out just under the power of two "
+    "(np.spacing then gives the step below, half the binade's)?",
     fits=lambda a, e, g: bool(np.isfinite(g)) and worst(*a)[0] != a[1]
     and abs(g - candidates(*a)[0][1]) <= 1e-3 * abs(g),
 )  # fmt: skip
@@ -548,7 +559,8 @@ def _search_words(args, expected, got) -> str:
     return (f": your Δz lies between z_max's and the coarsest, {_short(1 - got / expected)} "
             "short of it: a search over sampled depths? The coarsest step lies just nearer "
             f"than z = {num(z_w)}, where d falls to 2^{e}; your samples stopped at about z = "
-            f"{num(z_s, z_w)} in that binade (Δz grows like z² there). A search falls short "
+            f"{num(z_s, z_w)} in that binade (Δz grows like z² there; with no samples, that "
+            "is where the depth you took lay, a hair nearer than the crossing). A search falls short "
             "by about twice its spacing over z, and the check allows "
             f"{_short(BELOW)}; one refined until it finds the jump lands a hair over it (the "
             "stored d rounds up to the power of two a little farther), which fails too. Δz jumps there (the step halves), so the coarsest is the limit just nearer "
@@ -596,10 +608,17 @@ def _at_rounded_edge(args, expected, got) -> bool:
 def _over_words(args, expected, got) -> str:
     share = _short(got / expected - 1)
     if not _at_rounded_edge(args, expected, got):
+        # r442 F2: a depth held in float32 on the way lands a few of its roundings over
+        over = got / expected - 1
+        why = ("A number rounded on the way (a depth or an input kept in float32, whose "
+               "rounding, 6e-8 of it, moves Δz by up to twice that through z²), or a margin "
+               "added?" if over <= 1e-6 else
+               "A number rounded on the way (an input or a depth kept in fewer bits than "
+               "float64's), or a margin added?" if over <= 1e-5 else
+               "Did you round it up, or add a margin?")  # fmt: skip
         return (f": yours is {share} over the coarsest, where the check allows {_short(ABOVE)}: "
                 "a gap rounded up is still resolved, but the task asks the coarsest Δz itself, "
-                "a closed form float64 gives to about 1e-15. Did you round it up, or add a "
-                "margin?")  # fmt: skip
+                f"a closed form float64 gives to about 1e-15. {why}")  # fmt: skip
     z_w, (z_b, dz_b) = worst(*args)[0], rounded_edge(*args)
     e = int(np.round(np.log2(float(reversed_depth(z_w, *args[2:])))))
     return (f": yours is {share} over the coarsest, where the check allows {_short(ABOVE)}: "
@@ -752,6 +771,26 @@ def _off_by_a_factor(args, expected, got) -> bool | None:
 
 RATIO = Mistake("constant ratio", _ratio_words, fits=_off_by_a_factor,
                 parameter=lambda a, e, g: g / e, only_whole=True)  # fmt: skip
+
+
+def _nan_without_crossing(args, expected, got) -> bool | None:
+    """NaN on a range no crossing lies in (r442 F3: an answer started as NaN and set only by
+    a crossing); None (no say) on a number."""
+    if got is None or not np.isnan(got):
+        return None
+    return not edges(*args)
+
+
+NAN_NO_CROSSING = Mistake(
+    "NaN without a crossing",
+    lambda a, e, g: (
+        f": no depth from {num(a[0])} to {num(a[1])} has d at a power of two (d stays in one "
+        "binade over the range), and yours is NaN here: did your answer start as NaN (or "
+        "unset) and wait for a crossing to set it? Without one the coarsest is z_max's own Δz"
+    ),
+    fits=_nan_without_crossing,
+)
+
 RANGE = Mistake("range", ": a gap is a positive distance",
                 fits=lambda a, e, g: bool(np.isfinite(g)) and g <= 0, symptom=True)  # fmt: skip
 
@@ -848,7 +887,7 @@ REVERSE_Z_WORST = Exercise(
     "reverse_z_worst", worst_cases, as_gap, same_worst, explain_worst, _rule,
     [dataclasses.replace(m, only_whole=True) if m.kind in ONLY_WHOLE else m
      for m in variant_mistakes(_variants, MISTAKES, (*CROSSING_SLIPS, EDGE_BELOW, Z_MAX_HERE, OTHER_CROSSING, OUTSIDE,
-     GAP_SLIP, FINEST_SAMPLED, RATIO, SEARCH, OVER, RANGE))], draw=draw_worst,
+     GAP_SLIP, FINEST_SAMPLED, RATIO, SEARCH, OVER, NAN_NO_CROSSING, RANGE))], draw=draw_worst,
     match=gives_same_gap, float32=lambda args: expected_worst(*args), float32_floor=0.0,
     answers=(
         PackageAnswer(expected_worst, words=CHECKER_WORDS),
