@@ -109,6 +109,21 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
                 blue,
             ],
         ),
+        # r445 W1: a stop at 1 − 1e-13 (or 1 − 1e-16, the last double below 1) tested at the
+        # top of the loop passed: the stacks above reach 1 one layer after they come that
+        # close, and the loop's one allowed extra fetch hid the early stop. Here the alpha is
+        # 1 − 2⁻⁵³ after the first layer and stays there for two faint layers (1 − 2⁻⁵³ + 2⁻⁵⁵
+        # rounds back to it), 1 only with the opaque fourth
+        (
+            "alpha the last double below 1 for three layers",
+            [
+                _premultiplied([0.9, 0.3, 0.1], 1 - 2.0**-53),
+                _premultiplied([0, 1, 0], 0.25),
+                _premultiplied([0, 0, 1], 0.25),
+                _premultiplied([1, 1, 1], 1.0),
+                red,
+            ],
+        ),
         # r25 D-2: a loop that stops on a layer opaque by itself, not on the composite, passed:
         # here no layer is opaque, but the alpha is 1 after two (1 − 2⁻¹⁰⁶ rounds to 1) and
         # the light let through, 2⁻⁵³ a layer, underflows to 0 after 21; such a loop reads
