@@ -8591,7 +8591,22 @@ def _r445_over_summed(src, dst):
     return np.r_[light / (s[3] + d[3]), a] if a else np.zeros(4)
 
 
+def _r445_front_skipping_alpha_0(layers):
+    """W3: layers of alpha 0 skipped as invisible (a glow's light lost)."""
+    acc = np.zeros(4)
+    for c in layers:
+        c = np.asarray(c, dtype=float)
+        if c[3] == 0:
+            continue
+        acc = acc + (1 - acc[3]) * c
+        if acc[3] >= 1:
+            break
+    return acc
+
+
 R445 = {
+    "front to back skipping layers of alpha 0 (r445 W3)": (
+        "front_to_back", _r445_front_skipping_alpha_0, "it is a glow", "glow skipped"),
     "front to back stopping at 1 − 1e-13, tested at the top (r445 W1)": (
         "front_to_back", _r445_front_stop(1 - 1e-13), "only with layer 4",
         "stopped below alpha 1"),
