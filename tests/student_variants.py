@@ -9354,3 +9354,171 @@ R442_MORE = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R442_MORE.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R442_MORE.items()})
+# == r445: exercise 09's wrong passes and half-named answers ======================================
+from lines_blending_solutions import line_pixels as _r445_line  # noqa: E402
+from lines_blending_solutions import over_straight as _r445_over  # noqa: E402
+
+
+def _r445_line_float(e=1e-6, y_move=None):
+    """The rule in floats: the end points moved by (−e, −e²) (``y_move``: by −y_move in y),
+    every pixel of the image tested against the two open slabs of its diamond."""
+
+    def line_pixels(p0, p1):
+        ey = e * e if y_move is None else y_move
+        ax, ay, bx, by = p0[0] - e, p0[1] - ey, p1[0] - e, p1[1] - ey
+        out = []
+        for i in range(12):
+            for j in range(12):
+                cx, cy = j + 0.5, i + 0.5
+                lo, hi, ok = 0.0, 1.0, True
+                for s in (1, -1):
+                    u0, u1 = (ax - cx) + s * (ay - cy), (bx - cx) + s * (by - cy)
+                    if u1 == u0:
+                        ok = ok and abs(u0) < 0.5
+                        continue
+                    t1, t2 = sorted(((-0.5 - u0) / (u1 - u0), (0.5 - u0) / (u1 - u0)))
+                    lo, hi = max(lo, t1), min(hi, t2)
+                if ok and lo < hi and abs(bx - cx) + abs(by - cy) >= 0.5:
+                    out.append((i, j))
+        return out
+
+    return line_pixels
+
+
+def _r445_line_p1_square(p0, p1):
+    """H2: p1's square's pixel left dark, not p1's diamond's."""
+    lit = set(_r445_line_float()(p0, p1))
+    end = (int(np.floor(p1[1])), int(np.floor(p1[0])))
+    return sorted((lit | _r445_end_diamond(p0, p1)) - {end})
+
+
+def _r445_end_diamond(p0, p1):
+    """The pixel whose diamond holds the moved p1 (none near a square's corner)."""
+    x, y = p1[0] - 1e-6, p1[1] - 1e-12
+    return {(i, j) for i in range(12) for j in range(12)
+            if abs(x - j - 0.5) + abs(y - i - 0.5) < 0.5}  # fmt: skip
+
+
+def _r445_supercover(p0, p1):
+    """H3: the pixels that 4,001 points along the segment fall in (a walk over the pixel
+    squares it crosses), p1's square left dark."""
+    t = np.linspace(0, 1, 4001)
+    cols = np.floor(p0[0] + t * (p1[0] - p0[0])).astype(int)
+    rows = np.floor(p0[1] + t * (p1[1] - p0[1])).astype(int)
+    out = {(int(i), int(j)) for i, j in zip(rows, cols) if 0 <= i < 12 and 0 <= j < 12}
+    out.discard((int(np.floor(p1[1])), int(np.floor(p1[0]))))
+    return sorted(out)
+
+
+def _r445_short_search(p0, p1):
+    """H5: the search stops before row 11."""
+    return [(r, c) for r, c in _r445_line(p0, p1) if r < 11]
+
+
+def _r445_mixed_fraction(p0, p1):
+    """H1: a Fraction ε taken from float coordinates: float − Fraction is a float, so the
+    moves are lost (x's too: 2⁻⁶⁰ is below float64's spacing there)."""
+    e, h = Fraction(1, 2**60), Fraction(1, 2)
+    ax, ay, bx, by = p0[0] - e, p0[1] - e * e, p1[0] - e, p1[1] - e * e
+    out = []
+    for i in range(12):
+        for j in range(12):
+            cx, cy = j + h, i + h
+            lo, hi, ok = Fraction(0), Fraction(1), True
+            for s in (1, -1):
+                u0, u1 = (ax - cx) + s * (ay - cy), (bx - cx) + s * (by - cy)
+                if u1 == u0:
+                    ok = ok and abs(u0) < h
+                    continue
+                t1, t2 = sorted(((-h - u0) / (u1 - u0), (h - u0) / (u1 - u0)))
+                lo, hi = max(lo, t1), min(hi, t2)
+            if ok and lo < hi and abs(bx - cx) + abs(by - cy) >= h:
+                out.append((i, j))
+    return out
+
+
+def _r445_front_stop(threshold):
+    """W1: a stop below 1 tested at the top of the loop."""
+
+    def front_to_back(layers):
+        acc = np.zeros(4)
+        for c in layers:
+            if acc[3] >= threshold:
+                break
+            acc = acc + (1 - acc[3]) * np.asarray(c, dtype=float)
+        return acc
+
+    return front_to_back
+
+
+def _r445_over_guard(src, dst):
+    """W2: the zero guard with a tolerance, α < 1e-3."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    return np.zeros(4) if s[3] + d[3] * (1 - s[3]) < 1e-3 else _r445_over(src, dst)
+
+
+def _r445_over_unhidden(src, dst):
+    """H6b: the destination in its whole share α_d (the colours' mean weighted by alpha)."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    a = s[3] + d[3] * (1 - s[3])
+    return np.r_[(s[:3] * s[3] + d[:3] * d[3]) / (s[3] + d[3]), a] if a else np.zeros(4)
+
+
+def _r445_over_summed(src, dst):
+    """H6b: the right light divided by α_s + α_d."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    a = s[3] + d[3] * (1 - s[3])
+    light = s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])
+    return np.r_[light / (s[3] + d[3]), a] if a else np.zeros(4)
+
+
+def _r445_front_skipping_alpha_0(layers):
+    """W3: layers of alpha 0 skipped as invisible (a glow's light lost)."""
+    acc = np.zeros(4)
+    for c in layers:
+        c = np.asarray(c, dtype=float)
+        if c[3] == 0:
+            continue
+        acc = acc + (1 - acc[3]) * c
+        if acc[3] >= 1:
+            break
+    return acc
+
+
+R445 = {
+    "front to back skipping layers of alpha 0 (r445 W3)": (
+        "front_to_back", _r445_front_skipping_alpha_0, "it is a glow", "glow skipped"),
+    "front to back stopping at 1 − 1e-13, tested at the top (r445 W1)": (
+        "front_to_back", _r445_front_stop(1 - 1e-13), "only with layer 4",
+        "stopped below alpha 1"),
+    "front to back stopping at 1 − 1e-16, tested at the top (r445 W1)": (
+        "front_to_back", _r445_front_stop(1 - 1e-16), "only with layer 4",
+        "stopped below alpha 1"),
+    "over straight with a guard α < 1e-3 (r445 W2)": (
+        "over_straight", _r445_over_guard, "the result's alpha here is 1e-05",
+        "faint as nothing"),
+    "over straight, the destination not hidden by the source (r445 H6b)": (
+        "over_straight", _r445_over_unhidden, "you let the destination show in its whole share",
+        "destination not hidden"),
+    "over straight, the light divided by α_s + α_d (r445 H6b)": (
+        "over_straight", _r445_over_summed, "you divided it by α_s + α_d",
+        "light divided by α_s + α_d"),
+    "line with p1's square left dark, not its diamond (r445 H2)": (
+        "line_pixels", _r445_line_p1_square, "the pixel whose square holds p1",
+        "p1's square dark"),
+    "line by the pixel squares it crosses (r445 H3)": (
+        "line_pixels", _r445_supercover, "you walked the pixel squares", "pixel squares"),
+    "line searched up to row 10 only (r445 H5)": (
+        "line_pixels", _r445_short_search, "your search stops before it", "search stops short"),
+    "line with a Fraction ε taken from float coordinates (r445 H1)": (
+        "line_pixels", _r445_mixed_fraction, "a float minus a Fraction is a float again",
+        "no perturbation"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R445.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R445.items()})
+DIFFERENT.update({
+    "line in floats, ε = 1e-6 and ε² = 1e-12, every pixel tested (r445)": (
+        "line_pixels", _r445_line_float()),
+    "line in floats, ε = 1e-5 and 3ε² in y (r445)": (
+        "line_pixels", _r445_line_float(1e-5, 3e-10)),
+})  # fmt: skip

@@ -367,6 +367,35 @@ STRAIGHT_STEP_WORDS = ("the package's blend is not counted as your work: write e
                        "divided by the result's alpha, so a blend can only be a step of it)")  # fmt: skip
 
 
+def _unhidden(src, dst) -> np.ndarray:
+    """r445 H6b: the destination in its whole share α_d, the source not hiding it: the mean
+    of the colours weighted by their alphas (α_s + α_d: (0, 0, 0, 0) where both are 0)."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    total, a = s[3] + d[3], s[3] + d[3] * (1 - s[3])
+    return np.zeros(4) if total == 0 else np.r_[(s[:3] * s[3] + d[:3] * d[3]) / total, a]
+
+
+def _over_summed_alphas(src, dst) -> np.ndarray:
+    """r445 H6b: the right light divided by α_s + α_d instead of the result's alpha."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    total, a = s[3] + d[3], s[3] + d[3] * (1 - s[3])
+    light = s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])
+    return np.zeros(4) if total == 0 else np.r_[light / total, a]
+
+
+#: r445 H6b: two answers that got "go back through the derivation's steps".
+UNHIDDEN = [
+    Mistake("destination not hidden", "you let the destination show in its whole share α_d, "
+            "also where the source covers it (your colour is the two colours' mean weighted "
+            "by α_s and α_d): where the source covers the pixel it hides what lies behind it, "
+            "so the destination shows only in α_d of the 1 − α_s the source leaves uncovered",
+            gives=_unhidden),
+    Mistake("light divided by α_s + α_d", "your light is right, but you divided it by "
+            "α_s + α_d: that counts the share both cover twice; divide by the share either "
+            "covers, the result's alpha α (your alpha is right)", gives=_over_summed_alphas),
+]  # fmt: skip
+
+
 def straight_mistakes() -> list[Mistake]:
     """9.2a's mistakes (``over_straight``): the division by α = 0, a guard, an input returned
     where both alphas are 0, the table's, the weights swapped, then a wrong alpha (with the
@@ -381,7 +410,7 @@ def straight_mistakes() -> list[Mistake]:
                       only_whole=True)  # fmt: skip
     nothing = [DST_WHERE_NOTHING, SRC_WHERE_NOTHING]  # before the swap, which gives src there
     return [nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, BY_DESTINATION_ALPHA,
-            *_divided_by_wrong_alpha(),
+            *_divided_by_wrong_alpha(), *UNHIDDEN,
             *alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
 
 

@@ -34,7 +34,7 @@ from .blend_mistakes import EIGHT_BIT, WHOLE_NUMBERS
 from .blending import blend_answers
 from .cases import DRAWN, SEED, drawn_rng
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
-from .scalars import num
+from .scalars import num, vec
 from .tolerance import all_close
 
 PREMULTIPLIED = BLEND_MODES["premultiplied"]
@@ -65,6 +65,10 @@ STEP_WORDS = ("the package's blend is not counted as your work: write the step y
 #: what each lets through, 2⁻⁵³, multiplied layer by layer underflows to 0 after 21 of them,
 #: and two more tell a loop that reads on past it.
 UNDERFLOW_LAYERS = 23
+
+
+#: A premultiplied glow: light with alpha 0, covering nothing (exercise 9.2b's).
+GLOW_LAYER = [0.3, 0.2, 0.05, 0.0]
 
 
 def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
@@ -109,6 +113,21 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
                 blue,
             ],
         ),
+        # r445 W1: a stop at 1 − 1e-13 (or 1 − 1e-16, the last double below 1) tested at the
+        # top of the loop passed: the stacks above reach 1 one layer after they come that
+        # close, and the loop's one allowed extra fetch hid the early stop. Here the alpha is
+        # 1 − 2⁻⁵³ after the first layer and stays there for two faint layers (1 − 2⁻⁵³ + 2⁻⁵⁵
+        # rounds back to it), 1 only with the opaque fourth
+        (
+            "alpha the last double below 1 for three layers",
+            [
+                _premultiplied([0.9, 0.3, 0.1], 1 - 2.0**-53),
+                _premultiplied([0, 1, 0], 0.25),
+                _premultiplied([0, 0, 1], 0.25),
+                _premultiplied([1, 1, 1], 1.0),
+                red,
+            ],
+        ),
         # r25 D-2: a loop that stops on a layer opaque by itself, not on the composite, passed:
         # here no layer is opaque, but the alpha is 1 after two (1 − 2⁻¹⁰⁶ rounds to 1) and
         # the light let through, 2⁻⁵³ a layer, underflows to 0 after 21; such a loop reads
@@ -121,6 +140,9 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
                 for k in range(UNDERFLOW_LAYERS)
             ],
         ),
+        # r445 W3: a loop that skips layers of alpha 0 (an "invisible" layer) passed: a
+        # premultiplied layer with alpha 0 may carry light (9.2b's glow), and adds it
+        ("a glow (light, alpha 0) between two layers", [red, GLOW_LAYER, blue]),
     ]
     rng, now = np.random.default_rng(SEED + 80), drawn_rng()
     for k in range(14 + DRAWN):
@@ -419,9 +441,33 @@ def _stopped_words(args, expected, got) -> str:
             f"= {1 - alpha:.2g}; stop only once the alpha is 1")  # fmt: skip
 
 
+def _without_faint(layers) -> tuple[np.ndarray, list[int]]:
+    """The layers less those of alpha below 1e-3 that carry light, and where those were
+    (counted from 1)."""
+    layers = np.asarray(layers, float).reshape(-1, 4)
+    faint = [k for k, c in enumerate(layers) if c[3] < 1e-3 and c[:3].any()]
+    return np.delete(layers, faint, axis=0), [k + 1 for k in faint]
+
+
+def _glow_skipped(args, expected, got) -> bool:
+    """r445 W3: the composite of the layers less the glows (alpha 0 or nearly, with light)."""
+    kept, skipped = _without_faint(args[0])
+    return bool(skipped) and all_close(np.asarray(got, float), back_to_front(kept), 1e-6)
+
+
+def _glow_skipped_words(args, expected, got) -> str:
+    layers = np.asarray(args[0], float).reshape(-1, 4)
+    k = _without_faint(layers)[1][0]
+    return (f"you skipped layer {k}, {vec(layers[k - 1])}, for its alpha {num(layers[k - 1][3])}: "
+            "it is a glow, premultiplied light covering nothing, and it adds its light, seen "
+            "through the transmittance 1 − A of the layers in front, like any layer (only "
+            "(0, 0, 0, 0) adds nothing)")  # fmt: skip
+
+
 #: Mistakes no variant gives: the walk's order and where it stops (r8: a back-to-front loop
 #: passed).
 WALK = [
+    Mistake("glow skipped", _glow_skipped_words, fits=_glow_skipped),
     Mistake("stopped below alpha 1", _read_short_words,
             fits=lambda a, e, g: isinstance(g, ReadShort) and all_close(g, e, 1e-6)),
     # r25 D-2: before the general words, which say "after layer k the composite is opaque"

@@ -321,7 +321,8 @@ def _lost(what: str, axes):
 
     def words(args, expected, got) -> str:
         return (f"{what} (or yours was lost in floating point{_float_example(args, axes)}; "
-                f"compute with Fraction, as the task says); {_TIE}")  # fmt: skip
+                "compute with Fraction, as the task says, and convert each coordinate: a "
+                f"float minus a Fraction is a float again, so write Fraction(x) − ε); {_TIE}")  # fmt: skip
 
     return words
 
@@ -436,6 +437,98 @@ def _large_eps(name: str, eps: float) -> Mistake:
         _large_eps_words,
         gives=lambda p0, p1: diamond_pixels(p0, p1, eps=(-eps, -eps * eps)),
     )
+
+
+def _pixel_of(p) -> tuple[int, int]:
+    """(row, col) of the pixel whose square holds the point p = (x, y)."""
+    return int(np.floor(p[1])), int(np.floor(p[0]))
+
+
+def _p1_square_dark(moved: bool):
+    """``gives`` (r445 H2): every pixel whose diamond the segment meets, p1's own diamond's
+    too, less the pixel whose square holds p1 (``moved``: p1 moved by (−ε, −ε²) first)."""
+
+    def gives(p0, p1):
+        end = (p1[0] - EPS, p1[1] - EPS * EPS) if moved else p1
+        return diamond_pixels(p0, p1, end=True) - {_pixel_of(end)}
+
+    return gives
+
+
+def _p1_square_words(args, expected, got) -> str:
+    """Which square's pixel was left dark, and where p1 lies: in whose diamond, or in none."""
+    p0, p1 = args
+    moved = got == _p1_square_dark(True)(p0, p1) and got != _p1_square_dark(False)(p0, p1)
+    r, c = _pixel_of((p1[0] - EPS, p1[1] - EPS * EPS) if moved else p1)
+    inside = sorted(diamond_pixels(p0, p1, end=True) - diamond_pixels(p0, p1))
+    where = (f"the moved p1 lies in the diamond of (row {inside[0][0]}, col {inside[0][1]}), "
+             "the one pixel the rule leaves dark" if inside else
+             "the moved p1 lies in no diamond (near a corner of its square), so the rule leaves "
+             "no pixel dark here")  # fmt: skip
+    which = "the moved p1" if moved else f"p1 = {p1}"
+    return (f"you left dark the pixel whose square holds {which}, (row {r}, col {c}), instead "
+            f"of the one whose diamond holds it: {where}")  # fmt: skip
+
+
+def _squares(p0, p1, closed=True) -> frozenset[tuple[int, int]]:
+    """The pixels inside the image whose square the segment p0 → p1 meets (``closed``: its
+    boundary counted in; else its inside, crossed over some length)."""
+    (x0, y0), (x1, y1) = p0, p1
+    out = set()
+    for r in range(WINDOW):
+        for c in range(WINDOW):
+            lo, hi = 0.0, 1.0
+            for a, d, edge in ((x0, x1 - x0, c), (y0, y1 - y0, r)):
+                if d == 0:
+                    inside = edge <= a <= edge + 1 if closed else edge < a < edge + 1
+                    lo, hi = (lo, hi) if inside else (1.0, 0.0)
+                    continue
+                t1, t2 = sorted(((edge - a) / d, (edge + 1 - a) / d))
+                lo, hi = max(lo, t1), min(hi, t2)
+            if lo <= hi if closed else lo < hi:
+                out.add((r, c))
+    return frozenset(out)
+
+
+def _by_squares(args, expected, got) -> bool:
+    """r445 H3/H4: a pixel lit that the rule leaves dark, and every pixel lit on the
+    segment's path of (closed) pixel squares: a walk over squares (supercover, or the squares
+    the segment leaves). Named only where it fits every failing answer, after the rule's own
+    slips, which light pixels on that path too."""
+    p0, p1 = args
+    ends = {_pixel_of(p1), _pixel_of((p1[0] - EPS, p1[1] - EPS * EPS))}
+    # every square crossed inside lit (p1's aside), none off the path (a circle or a diamond
+    # of another size lights fewer)
+    path = _squares(p0, p1, closed=False) - ends <= got <= _squares(p0, p1)
+    return (
+        got != expected and path and bool(got - expected or (expected - got <= ends))
+    )  # only p1's square left dark where no other pixel tells
+
+
+def _by_squares_words(args, expected, got) -> str:
+    if not got - expected:  # p1's square alone left dark on this case
+        return "you walked the pixel squares along the segment; " + _p1_square_words(
+            args, expected, got
+        )
+    return ("you walked the pixel squares along the segment (your pixels are the squares it "
+            "reaches); the rule tests the diamond inside each square, |x − (col + ½)| + "
+            "|y − (row + ½)| < ½, so a segment that only clips a square's corner or runs along "
+            "its edge lights nothing there")  # fmt: skip
+
+
+def _short_search(args, expected, got) -> bool:
+    """r445 H5: only pixels missing, all in the image's last row or last column."""
+    missing = expected - got
+    return (bool(missing) and got <= expected
+            and (all(r == WINDOW - 1 for r, _ in missing)
+                 or all(c == WINDOW - 1 for _, c in missing)))  # fmt: skip
+
+
+def _short_search_words(args, expected, got) -> str:
+    missing = sorted(expected - got)
+    axis = "row" if all(r == WINDOW - 1 for r, _ in missing) else "column"
+    return (f"every pixel you left dark lies in {axis} {WINDOW - 1}, the image's last: your "
+            f"search stops before it (range({WINDOW}) runs from 0 to {WINDOW - 1})")  # fmt: skip
 
 
 def _start_dark(p0, p1):
@@ -591,6 +684,11 @@ LINE_MISTAKES = [
         ),
         gives=lambda p0, p1: diamond_pixels(p0, p1, inside=False),
     ),
+    *(
+        Mistake("p1's square dark", _p1_square_words, gives=_p1_square_dark(m))
+        for m in (False, True)
+    ),
+    Mistake("search stops short", _short_search_words, fits=_short_search, only_whole=True),
     Mistake(
         "p0's pixel only",
         "you returned only the pixel p0 lies in: the rule lights every pixel whose diamond the "
@@ -603,6 +701,8 @@ LINE_MISTAKES = [
         "pixels whose diamond |x − (col + ½)| + |y − (row + ½)| < ½ the segment exits",
         gives=dda_pixels,
     ),
+    # last: the rule's slips and the walks above light pixels on the squares' path too
+    Mistake("pixel squares", _by_squares_words, fits=_by_squares, only_whole=True),
 ]
 
 
