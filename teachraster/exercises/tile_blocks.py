@@ -1911,7 +1911,8 @@ def draw_block_case(ax, case, got):
                                                  "facecolor": "white", "edgecolor": "none"}))  # fmt: skip
             artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
             labelled = True
-    yours = "" if got is None or not wrong else f"; first differing block {e}, yours {g}"
+    # r396 G3 (r446): the difference on a line of its own (one line was thrice the axes' width)
+    yours = "" if got is None or not wrong else f"\nfirst differing block {e}, yours {g}"
     counts = ", ".join(f"{int((want == k).sum())} {k}" for k in KINDS if (want == k).any())
     ax.set_xlabel(f"{counts}{yours}")
     lo = np.minimum(ring.min(axis=0), [gx.min(), gy.min()]) - 1
