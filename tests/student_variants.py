@@ -9522,3 +9522,103 @@ DIFFERENT.update({
     "line in floats, ε = 1e-5 and 3ε² in y (r445)": (
         "line_pixels", _r445_line_float(1e-5, 3e-10)),
 })  # fmt: skip
+
+
+# == r446: exercise 08's slips told only the rule, and a zero-area tolerance that passed ==========
+def _blocks_r446(tol=0.0, grid=256, centres=(128, 128), index=False, t_mirrored=False,
+                 any_accept=False, coarse=256):  # fmt: skip
+    """classify_block counted in int64 units (the notebook's way) with slips: ``tol`` a
+    zero-area test with a tolerance (px²), ``grid`` the vertices' units a pixel (the centres
+    at 256), ``coarse`` the grid the vertices are floored to (in 256 units still),
+    ``centres`` the first centre's offset in units, ``index`` x0 and y0 read as block
+    indices, ``t_mirrored`` T = −R, ``any_accept`` accepted when one edge passes."""
+
+    def classify_block(xy, x0, y0, size):
+        xy = np.asarray(xy, dtype=float)
+        a2 = (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (xy[2, 0] - xy[0, 0])  # fmt: skip
+        v = np.floor(xy * grid).astype(np.int64)
+        if coarse != 256:
+            v = np.floor(xy * coarse).astype(np.int64) * (256 // coarse)
+        bx, by = np.asarray(x0, dtype=np.int64), np.asarray(y0, dtype=np.int64)
+        if index:
+            bx, by = bx * size, by * size
+        px, py = bx * 256 + centres[0], by * 256 + centres[1]
+        area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])  # fmt: skip
+        if area == 0 or abs(a2) < tol:
+            return np.full(px.shape, "rejected")
+        if area < 0:
+            v = v[[0, 2, 1]]
+        rejected = np.zeros(px.shape, dtype=bool)
+        accepted = np.zeros(px.shape, dtype=bool) if any_accept else np.ones(px.shape, dtype=bool)
+        step = 256 * (size - 1)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            A, B = a[1] - b[1], b[0] - a[0]
+            R = step * (max(A, 0) + max(B, 0))
+            T = -R if t_mirrored else step * (min(A, 0) + min(B, 0))
+            top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            e0 = A * (px - a[0]) + B * (py - a[1]) + (0 if top_left else -1)
+            rejected |= e0 + R < 0
+            if any_accept:
+                accepted |= e0 + T >= 0
+            else:
+                accepted &= e0 + T >= 0
+        return np.where(rejected, "rejected", np.where(accepted, "accepted", "partial"))
+
+    return classify_block
+
+
+def _hiz_r446(no_half=False, signs=1.0):
+    """hiz_rejects the notebook's way with slips: ``no_half`` the box's columns ⌈xmin⌉ …
+    ⌊xmax⌋ (their left edges, not their centres, in the box); ``signs`` times the gradient."""
+
+    def hiz_rejects(xyz, row0, col0, size, buffer):
+        (x1, y1, z1), (x2, y2, z2), (x3, y3, z3) = np.asarray(xyz, dtype=float)
+        half = 0.0 if no_half else 0.5
+        c_lo = max(col0, math.ceil(min(x1, x2, x3) - half))
+        c_hi = min(col0 + size - 1, math.floor(max(x1, x2, x3) - half))
+        r_lo = max(row0, math.ceil(min(y1, y2, y3) - half))
+        r_hi = min(row0 + size - 1, math.floor(max(y1, y2, y3) - half))
+        if c_lo > c_hi or r_lo > r_hi:
+            return True
+        area = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        a = signs * ((z2 - z1) * (y3 - y1) - (z3 - z1) * (y2 - y1)) / area
+        b = signs * ((z3 - z1) * (x2 - x1) - (z2 - z1) * (x3 - x1)) / area
+        xs = np.array([c_lo + 0.5, c_hi + 0.5])
+        ys = np.array([r_lo + 0.5, r_hi + 0.5])
+        corners = z1 + a * (xs[:, None] - x1) + b * (ys[None, :] - y1)
+        return bool(max(corners.min(), min(z1, z2, z3)) >= np.max(buffer))
+
+    return hiz_rejects
+
+
+#: label: (exercise, function, words its first explanation must hold, its kind).
+R446 = {
+    "blocks with a zero-area tolerance": (
+        "classify_block", _blocks_r446(tol=1e-3), "a zero-area test with a tolerance",
+        "zero area by a tolerance"),
+    "blocks with T = −R": (
+        "classify_block", _blocks_r446(t_mirrored=True), "T = −R", "accept offset −R"),
+    "blocks with x0, y0 as block indices": (
+        "classify_block", _blocks_r446(index=True), "x0 and y0 are not block numbers",
+        "x0, y0 as block indices"),
+    "blocks accepted by one edge": (
+        "classify_block", _blocks_r446(any_accept=True), "accepted |=", "accepted by one edge"),
+    "blocks with the first centre's ½ in x only": (
+        "classify_block", _blocks_r446(centres=(128, 0)), "the ½ is missing in y",
+        "centre ½ px off in y"),
+    "blocks with vertices on a 1/16 grid": (
+        "classify_block", _blocks_r446(coarse=16), "vertices floored to 1/16 px",
+        "vertices floored to 1/16 px"),
+    "blocks with vertices in 1/128 units, centres in 1/256": (
+        "classify_block", _blocks_r446(grid=128), "the triangle halved",
+        "vertices in units of 1/128 px and centres in 1/256"),
+    "Hi-Z over the columns ⌈xmin⌉ … ⌊xmax⌋": (
+        "hiz_rejects", _hiz_r446(no_half=True), "whose left edge x = c lies in the box",
+        "no half"),
+    "Hi-Z with both gradient signs flipped": (
+        "hiz_rejects", _hiz_r446(signs=-1.0), "dz/dx and dz/dy both have the wrong sign",
+        "gradient signs"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R446.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R446.items()})

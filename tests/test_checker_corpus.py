@@ -22,9 +22,8 @@ BUDGET = 120  # exact Fractions in some references: slow on a loaded machine, ne
 #: the kind stays "timeout" (not "budget"). (60 s spent 12 s of CPU a run on that one case;
 #: the default budget end to end is test_exercises_r163's and test_checker_kernel's.)
 #: "blocks by the coverage of every centre" likewise: its case 59 of 62 (a 16,384-px block)
-#: builds numpy grids of 2^28 centres and the check stops there either way; with 120 s that
-#: case took the 24 s a case may (the test: 34 s of the file's 121 s of CPU, 11-13 GB of
-#: memory), with 5 s the test takes 2.8 s and 2.3 GB, and its first explanation is the same.
+#: built numpy grids of 2^28 centres until the limit (7 s of paging); r446 made that block
+#: 131,072 px (the same deciding centre), whose grids cannot be allocated at all: 1 s.
 TIMEOUT_BUDGET = {"blocks by every centre": 5, "blocks by the coverage of every centre": 5}
 
 

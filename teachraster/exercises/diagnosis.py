@@ -844,7 +844,13 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
     for order, m in enumerate(mistakes):
 
         def run(m=m, order=order):
-            verdicts = {r.index: _fits(spec, m, r) for r in failing}
+            verdicts = {}
+            for r in failing:
+                verdicts[r.index] = _fits(spec, m, r)
+                # r446: where only a mistake that gives every failing answer is named, one
+                # that misses one is never named: the rest of its cases cost time only
+                if verdicts[r.index] is False and not spec.partial_names:
+                    return None
             hits = {i for i, v in verdicts.items() if v}
             if not hits or not _one_parameter(m, [r for r in failing if r.index in hits]):
                 return None

@@ -596,6 +596,8 @@ def _variants(xyz, row0, col0, size, buffer) -> dict[str, bool]:
             # (⌈xmin + ½⌉ … ⌊xmax + ½⌋), the tile one column short (col0 + size − 2), and
             # lesson 10's bound without the nearest vertex
             "half shifted": bool(_cut_bound(xyz, row0, col0, size, border="shifted") >= far),
+            # r446 H5: the columns whose left edge c lies in the box, ⌈xmin⌉ … ⌊xmax⌋
+            "no half": bool(_cut_bound(xyz, row0, col0, size, border="no half") >= far),
             "one short of the tile": bool(_cut_bound(xyz, row0, col0, size, past_tile=-1) >= far),
             "whole tile, bare": bool(_bare_plane(xyz, *_corners(row0, col0, size)).min() >= far),
             "int for floor": bool(_cut_bound(xyz, row0, col0, size, border="trunc") >= far),
@@ -678,6 +680,8 @@ def _read_slips(xyz, row0, col0, size, buffer, box, near) -> dict[str, bool]:
             "plane at integer points": bool(_slipped_bound(xyz, box, at=0.0) >= far),
             "dz/dx sign": bool(_slipped_bound(xyz, box, signs=(-1, 1)) >= far),
             "dz/dy sign": bool(_slipped_bound(xyz, box, signs=(1, -1)) >= far),
+            # r446 H6: both signs (the area's sign flipped, or its order of vertices)
+            "gradient signs": bool(_slipped_bound(xyz, box, signs=(-1, -1)) >= far),
             # r267 half-named 3-5: the box not cut to the tile, an empty box judged on the
             # whole box; a and b exchanged; the plane at the first centre only (8.1's E₀)
             "box uncut, whole box empty": bool(_uncut_bound(xyz) >= far),
@@ -739,7 +743,8 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
     no centre (as the task's). ``past_tile``: the tile's last column and row taken that many
     past its own (r162: ``col0 + size``)."""
     judged = (
-        border in ("past", "trunc", "int", "before", "shifted", "outward", "round", "int both")
+        border
+        in ("past", "trunc", "int", "before", "shifted", "outward", "round", "int both", "no half")
         or past_tile
     )
     if not judged and _box_corners(xyz, row0, col0, size) is None:
@@ -755,10 +760,11 @@ def _cut_bound(xyz, row0, col0, size, cut="xy", border="both", past_tile=0) -> f
         a = int(np.floor(lo - 0.5)) if border == "outward" else a
         a = int(np.round(lo)) if border == "round" else a  # half to even, as round() does
         a = int(lo - 0.5) if border == "int both" else a  # r376 F2: int() at both ends
+        a = int(np.ceil(lo)) if border == "no half" else a  # r446 H5: ⌈xmin⌉ … ⌊xmax⌋
         b = {"none": int(np.ceil(hi - 0.5)) - 1, "past": int(np.floor(hi + 0.5)),
              "trunc": int(hi - 0.5), "int": int(hi - 0.5), "int both": int(hi - 0.5),
              "shifted": int(np.floor(hi + 0.5)), "outward": int(np.ceil(hi - 0.5)),
-             "round": int(np.round(hi)) - 1}.get(
+             "round": int(np.round(hi)) - 1, "no half": int(np.floor(hi))}.get(
             border, int(np.floor(hi - 0.5)))  # fmt: skip
         if not cut:
             spans.append((a, b))
@@ -817,15 +823,22 @@ def _slipped_bound(xyz, box, at: float = 0.5, signs=(1, 1), swapped=False, first
 
 
 def _sign_words(axis: str, k: int):
-    """r198 B: the plane's gradient with one sign slipped: where it misses the vertices."""
+    """r198 B: the plane's gradient with one sign slipped: where it misses the vertices
+    (``k`` 2: both signs, r446 H6)."""
 
     def words(args, expected, got):
         xyz = np.asarray(args[0], dtype=float)
-        signs = (-1, 1) if k == 0 else (1, -1)
+        signs = ((-1, 1), (1, -1), (-1, -1))[k]
         z = _bare_plane(xyz, xyz[:, 1] - 0.5, xyz[:, 0] - 0.5, signs=signs)
         j = int(np.argmax(np.abs(z - xyz[:, 2])))
+        what = (
+            "dz/dx and dz/dy both have the wrong sign (the area, or the determinant, with its "
+            "sign flipped?)"
+            if k == 2
+            else f"dz/d{axis} has the wrong sign (a slip in solving for it?)"
+        )
         return (
-            f"your plane's dz/d{axis} has the wrong sign (a slip in solving for it?): that "
+            f"your plane's {what}: that "
             f"plane gives {num(float(z[j]))} at v{j + 1}, whose depth is {num(float(xyz[j, 2]))}; "
             "the plane passes through all three vertices: check your a and b against them"
         )
@@ -1202,6 +1215,13 @@ MISTAKES["plane at integer points"] = (
 MISTAKES["dz/dx sign"] = _sign_words("x", 0)
 MISTAKES["round half even"] = lambda a, e, g: _round_words(*a[:4])
 MISTAKES["dz/dy sign"] = _sign_words("y", 1)
+MISTAKES["gradient signs"] = _sign_words("", 2)
+MISTAKES["no half"] = (
+    "you took the columns whose left edge x = c lies in the box (⌈xmin⌉ … ⌊xmax⌋): column c "
+    "has its centre at c + ½, so here you leave out a column whose centre lies in the box, or "
+    "take one whose centre lies beyond it; which columns have their centre c + ½ between xmin "
+    "and xmax (⌈xmin − ½⌉ … ⌊xmax − ½⌋, rows alike)?"
+)
 
 
 def _corners_or_empty(args, expected, got) -> str:

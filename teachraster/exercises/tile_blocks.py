@@ -94,6 +94,10 @@ POINTS = {
     # r198 B: E₀ at (x0 + 1, y0 + 1), the first pixel's bottom-right corner
     "bottom-right corners": lambda x0, y0, s: (x0 + 1.0, y0 + 1.0, s - 1),
     "half span": lambda x0, y0, s: (x0 + 0.5, y0 + 0.5, (s - 1) / 2),
+    # r446 H1, H4: x0 and y0 read as block indices (the block at x0·size); the ½ in one axis
+    "block index": lambda x0, y0, s: (x0 * s + 0.5, y0 * s + 0.5, s - 1),
+    "half in x only": lambda x0, y0, s: (x0 + 0.5, y0 + 0.0, s - 1),
+    "half in y only": lambda x0, y0, s: (x0 + 0.0, y0 + 0.5, s - 1),
     "centre floored": lambda x0, y0, s: (
         x0 + s // 2 - (s - 1) // 2,
         y0 + s // 2 - (s - 1) // 2,
@@ -133,6 +137,9 @@ OFFSETS = {
     "y only": lambda a, b, d: (d * _pos(b), d * _neg(b)),
     "reject x only": lambda a, b, d: (d * _pos(a), d * (_neg(a) + _neg(b))),
     "reject y only": lambda a, b, d: (d * _pos(b), d * (_neg(a) + _neg(b))),
+    # r396 G1 (r446): the accept offset as the reject offset mirrored, T = −R (or R = −T)
+    "accept mirrored": lambda a, b, d: (d * (_pos(a) + _pos(b)), -d * (_pos(a) + _pos(b))),
+    "reject mirrored": lambda a, b, d: (-d * (_neg(a) + _neg(b)), d * (_neg(a) + _neg(b))),
 }
 
 
@@ -260,6 +267,7 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
     rejected = np.zeros(px.shape, bool)
     accepted = np.ones(px.shape, bool)
     every_fails = np.ones(px.shape, bool)
+    one_passes = np.zeros(px.shape, bool)
     # r162: a test's comparison slipped (≤ 0 for < 0, > 0 for ≥ 0): its value one step of E at
     # a centre lower; r376 F5: here, so that it combines with the other knobs
     low = round(STEP * unit**2)
@@ -274,10 +282,13 @@ def classify_with(xy, x0, y0, size, *, points="centres", offsets="right", tie="t
         rejected |= ~_passes(e0 + r - rj, tie, setup, k, b - a, tl[k])
         every_fails &= ~_passes(e0 + r - rj, tie, setup, k, b - a, tl[k])
         accepted &= _passes(e0 + t - ac, accept_tie, setup, k, b - a, tl[k])
+        one_passes |= _passes(e0 + t - ac, accept_tie, setup, k, b - a, tl[k])
     if logic == "every edge rejects":  # r267 half-named 2: ``rejected &=`` for ``|=``
         rejected = every_fails
     if logic == "accept by the best corner":
         accepted = ~rejected
+    if logic == "accept by one edge":  # r446 H3: ``accepted |=`` for ``&=``
+        accepted = one_passes
     return verdicts(rejected, accepted & ~rejected, shape, scalar)
 
 
@@ -1171,6 +1182,111 @@ OFFSET_SINGLES = [
 ]  # fmt: skip
 
 
+def _block_index(xy, x0, y0, size):
+    """r446 H1: the verdicts of the blocks at (x0·size, y0·size); None where those lie past
+    the check's coordinates (int64 would wrap there, the student's count too)."""
+    gx, gy = grid_of(x0, y0)
+    if max(np.abs(gx).max(), np.abs(gy).max()) * size > 2**22:
+        return None
+    return classify_with(xy, x0, y0, size, points="block index")
+
+
+#: r446 (r396 G1, H1, H3, H4): slips told only the rule ("every edge includes the block's four
+#: corner centres"): one offset mirrored from the other, x0 and y0 read as block indices, a
+#: block accepted by one edge, the ½ of the first centre in one axis only.
+R446_SLIPS = [
+    _single("accept offset −R", _offset_words(
+        "your accept offset is your reject offset mirrored, T = −R: E₀ − R is E's smallest "
+        "value over the block only where A ≤ 0 and B ≤ 0; from the first centre the steps that "
+        "lower E are those with A < 0 (to the right) and B < 0 (down), so "
+        "T = (size − 1)·(min(A, 0) + min(B, 0)), which is 0 where A and B are both positive"),
+        offsets="accept mirrored"),
+    _single("reject offset −T", _offset_words(
+        "your reject offset is your accept offset mirrored, R = −T: E₀ − T is E's largest "
+        "value over the block only where A ≥ 0 and B ≥ 0; from the first centre the steps that "
+        "raise E are those with A > 0 and B > 0, so R = (size − 1)·(max(A, 0) + max(B, 0))"),
+        offsets="reject mirrored"),
+    Mistake("x0, y0 as block indices", _at_first(lambda a, e, g: "your verdicts are those of "
+            f"the blocks at (x0·size, y0·size), here ({a[1] * a[3]}, {a[2] * a[3]}): x0 and y0 "
+            "are not block numbers but the block's top-left pixel (column x0, row y0), so its "
+            f"first pixel centre is ({num(a[1] + 0.5)}, {num(a[2] + 0.5)})"), _block_index),
+    _single("accepted by one edge", _at_first(lambda a, e, g: "you accepted a block when one "
+            "edge passes its accept test (accepted |= … for &=?): a block is accepted only when "
+            "every edge passes at its smallest value over the block; here "
+            + _block_rule(a, e, g)[2:]), logic="accept by one edge"),
+    *(_single(f"centre ½ px off in {axis}", _at_first(lambda a, e, g, axis=axis, at=at: (
+        f"you put the block's first centre at {at}: the ½ is missing in {axis}; pixel "
+        f"(column x0, row y0) has its centre at (x0 + ½, y0 + ½) = ({num(a[1] + 0.5)}, "
+        f"{num(a[2] + 0.5)})")), points=f"half in {other} only")
+      for axis, other, at in (("y", "x", "(x0 + ½, y0)"), ("x", "y", "(x0, y0 + ½)"))),
+]  # fmt: skip
+
+
+#: r446 H2, r396 G2: the vertices taken onto another grid than the centres: (what the student
+#: did, the triangle whose verdicts that gives).
+GRIDS = {
+    "vertices rounded to 1/16 px (16 units a pixel, 4 sub-pixel bits?)":
+        lambda v: np.rint(v * 16) / 16,
+    "vertices floored to 1/16 px (16 units a pixel, 4 sub-pixel bits?)":
+        lambda v: np.floor(v * 16) / 16,
+    "vertices in units of 1/128 px and centres in 1/256 (the triangle halved)":
+        lambda v: np.floor(v * 128) / 256,
+    "vertices in units of 1/128 px, rounded, and centres in 1/256 (the triangle halved)":
+        lambda v: np.rint(v * 128) / 256,
+    "vertices in units of 1/512 px and centres in 1/256 (the triangle doubled)": lambda v: v * 2,
+}  # fmt: skip
+
+
+def _grid_slip(what: str) -> Mistake:
+    def gives(xy, x0, y0, size):
+        v = np.asarray(xy, dtype=float)
+        moved = GRIDS[what](v)
+        return None if np.array_equal(moved, v) else expected_block(moved, x0, y0, size)
+
+    def words(args, expected, got):
+        v = np.asarray(args[0], dtype=float)
+        return (
+            f"your verdicts are those of another triangle: {what}, v1 = {vec(v[0])} becomes "
+            f"{vec(GRIDS[what](v)[0])}; the vertices lie on the 1/256 grid and the pixel "
+            "centres at x0 + ½: count both in the same units, 256 a pixel (a vertex at "
+            "round(256·x), a centre at 256·x0 + 128)"
+        )
+
+    return Mistake(what.split(" (")[0], words, gives=gives)
+
+
+GRID_SLIPS = [_grid_slip(what) for what in GRIDS]
+
+
+def _area_tolerance(xy, x0, y0, size):
+    """r446 W1: every block rejected where the triangle's area is not 0 but below 1 px² (a
+    zero-area test with a tolerance); the package's verdicts elsewhere (named only where it
+    gives every answer: a slip that moves the smallest triangle rejects it too)."""
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    if setup.area2 == 0 or abs(setup.area2) >= 2 * setup.unit**2:
+        return expected_block(xy, x0, y0, size)
+    gx, gy = grid_of(x0, y0)
+    return verdicts(np.ones(gx.shape, bool), False, gx.shape, gx.ndim == 0)
+
+
+def _area_tolerance_words(args, expected, got) -> str:
+    _, (xy, bx, by, size), e, _, _ = first_block(args, expected, got)
+    setup = setup_edges(np.asarray(xy, dtype=float), SUBPIXEL_BITS)
+    area = abs(setup.area2) / 2 / setup.unit**2  # px²
+    return (
+        f"you rejected every block of a triangle whose area is not 0 but {area:.3g} px² "
+        f"(2·area = {num(2 * area * UNITS**2)} unit² of 1/256 px): a zero-area test with a "
+        f"tolerance (abs(area) < ε?); the block x0={bx}, y0={by}, size={size} is {e}: a "
+        "sliver this thin can still cover a centre; with vertices on the 1/256 grid, 2·area "
+        "is a whole number of units², so test area == 0 exactly, in integer units"
+    )
+
+
+AREA_TOLERANCE = Mistake(
+    "zero area by a tolerance", _area_tolerance_words, gives=_area_tolerance, only_whole=True
+)
+
+
 def _here(a, e, g) -> str:
     """The rule at the first block that differs (its edge and extreme centre), after "here"."""
     return "; here " + _block_rule(a, e, g)[2:]
@@ -1382,7 +1498,7 @@ def exercise(scene) -> Exercise:
 
     return Exercise(
         "classify_block", block_cases, as_kind, same_kind, explain_block, _block_rule,
-        [ba.INT32, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *ONE_AXIS, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, READ_BEFORE_ORIENTING, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, *FLOAT_UNITS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
+        [ba.INT32, AREA_TOLERANCE, BY_COVERAGE, FLOAT32, INT_VERTICES, READ_YX, *SHORT_OFFSETS, *OFFSET_SINGLES, *R446_SLIPS, *GRID_SLIPS, *ONE_AXIS, *R248_SLIPS, LABELS_SWAPPED, *SIGN_MISTAKES, CULLED, AS_GIVEN, READ_BEFORE_ORIENTING, TWO_CORNERS, *ONE_OFFSET_LONGER, SWAPS_ALWAYS, *NO_TIE_RULE, *TIE_KIND_SLIPS, *BIAS_IN_ONE_TEST, *map(_constant, KINDS), BLOCK_KNOBS, ba.HALF_UNIT_BIAS, *FLOAT_UNITS, ba.FLOAT64_PIXELS, BIAS_LOST, CCW_ONLY],
         draw=draw_block_case, scene=scene, hints=BLOCK_HINTS, call=call_block, match=match_kind,
         # r248 S1: each case's label holds its call (:func:`call_words`); an exception adds
         # the traceback's last line in the student's code
@@ -1437,6 +1553,9 @@ def _hard_blocks():
         # r376 F1: the r149 M4 case with two vertices swapped, clockwise: a bias added, not
         # taken off, is seen there with one winding only too (it was told "E ≥ 0")
         ("far out, clockwise, a centre 1/65536 px² outside a right edge", [[2984.16796875, 3010.59375], [1.0, 0.0], [3010.59375, 2994.26171875]], 3000, 3000, 1),  # fmt: skip
+        # r446 W1: the smallest area on the 1/256 grid (2·area = 1 unit²), its vertex on the
+        # centre (0.5, 0.5), where a top and a left edge meet: covered (a tolerance lost it)
+        ("the smallest area on the 1/256 grid, 2^-17 px², its vertex on a centre", [[0.5, 0.5], [0.50390625, 0.5], [0.5, 0.50390625]], 0, 0, 1),  # fmt: skip
     ]  # fmt: skip
 
 
@@ -1588,8 +1707,11 @@ FLOAT64_TIES = (
       [-92323.4140625, 497252.1015625]], (0, 0), 131072),
     ([[641284.5859375, -241962.359375], [465788.95703125, 1300628.4296875],
       [-29126.953125, 1003905.09375]], (262144, 524288), 262144),
+    # r446: a 131,072-px block with the same best centre (49151.5, 262144.5) as the 16,384-px
+    # one it replaces (its bottom-right corner kept): a per-centre scan's grids of 2^34
+    # centres cannot be allocated, where 2^28 took seconds of paging before the limit
     ([[748382.109375, 1440629.64453125], [-103280.80078125, 5234.69140625],
-      [482807.9140625, -209168.99609375]], (32768, 262144), 16384),
+      [482807.9140625, -209168.99609375]], (-81920, 262144), 131072),
     ([[785065.171875, 123306.77734375], [-7581.7890625, 731115.11328125],
       [-445811.48828125, -329830.62890625]], (0, 262144), 262144),
     ([[-184739.39453125, 1629235.2109375], [1473004.31640625, -326322.73828125],
@@ -1789,7 +1911,8 @@ def draw_block_case(ax, case, got):
                                                  "facecolor": "white", "edgecolor": "none"}))  # fmt: skip
             artists += ax.plot(xs + 0.5, ys + 0.5, "o", color="#2b7bba", ms=4)
             labelled = True
-    yours = "" if got is None or not wrong else f"; first differing block {e}, yours {g}"
+    # r396 G3 (r446): the difference on a line of its own (one line was thrice the axes' width)
+    yours = "" if got is None or not wrong else f"\nfirst differing block {e}, yours {g}"
     counts = ", ".join(f"{int((want == k).sum())} {k}" for k in KINDS if (want == k).any())
     ax.set_xlabel(f"{counts}{yours}")
     lo = np.minimum(ring.min(axis=0), [gx.min(), gy.min()]) - 1
