@@ -7142,7 +7142,7 @@ R419_EDGE_BITS = {
     "edge bits, the absolute form as three terms and the relative from across.bit_length()": (
         "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 3,
                             lambda r, k, s: 2 * (k + 1 + s) + 2),
-        "your absolute count, 59, is one bit more than C's count; two slips give it",
+        "your absolute count, 59, is one bit more than C's count; three slips give it",
         "the absolute count one bit more and the relative factor one bit wide"),
     "edge bits, the absolute form one short only": (
         "edge_bits", _eb419(lambda r, k, s: 2 * (r + s) + 1, _rterm),
@@ -7190,7 +7190,7 @@ _EB_AS_WRITTEN = {
     "edge bits with across.bit_length() in the relative form": (
         "across.bit_length() is 11, the bits of 1,024 itself", "across.bit_length() for its exponent"),
     "edge bits, the absolute form as three terms and the relative from across.bit_length()": (
-        "your absolute count, 59, is one bit more than C's count; two slips give it",
+        "your absolute count, 59, is one bit more than C's count; three slips give it",
         "the absolute count one bit more and across.bit_length() for its exponent"),
     "edge bits with across taken as bits": (
         "takes across, 1,024 px, for a number of bits", "across taken as bits"),
