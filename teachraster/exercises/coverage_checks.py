@@ -1069,6 +1069,7 @@ def _distance_mistakes(masks) -> list[Mistake]:
     kinds = {"absolute": "edges by a tolerance", "distance": "a tolerance on the distance to the edge",
              "distance, one-sided": "a tolerance on the distance to the edge",
              "bias": "a bias on the edges that do not own their ties"}  # fmt: skip
+
     def span(form):
         def interval(args, expected, got):
             return steps.tolerance_range(args[0], expected, got, masks(args[0]), **forms[form])
