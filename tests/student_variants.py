@@ -8534,6 +8534,24 @@ def _r438_one_row_fill(xy, width, height):
     return out
 
 
+def _r438_plane32(xy, p):
+    """r438 H6: E as A·x + B·y + C in float32, C = a.x·b.y − a.y·b.x."""
+    f = np.float32
+    v = [(f(q[0]), f(q[1])) for q in xy]
+    s = edge_function(v[0], v[1], v[2])
+    if s == 0:
+        return False
+    if s < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        big_a, big_b, c = a[1] - b[1], b[0] - a[0], a[0] * b[1] - a[1] * b[0]
+        e = big_a * f(p[0]) + big_b * f(p[1]) + c
+        if e < 0 or (e == 0 and not (big_a > 0 or (big_a == 0 and big_b > 0))):
+            return False
+    return True
+
+
 _R438_DIST = "a tolerance on the distance to the edge's line"
 _R438_BIAS = "a bias on the edges that do not own their ties"
 R438 = {
@@ -8555,6 +8573,9 @@ R438 = {
     "covers deciding the winding in float32 (r438 WP1)": (
         "covers", _r438_covers(orient32=True), "your winding (or zero-area) test is computed in "
         "float32", "winding in float32"),
+    "covers with E = A·x + B·y + C in float32 (r438 H6)": (
+        "covers", _r438_plane32, "you computed E in float32 as the plane A·x + B·y + C",
+        "float32 plane form"),
     "fill by [[False] * width] * height (r438 M4)": (
         "fill", _r438_one_row_fill, "every row of your image is the same, the rule's last row",
         "one row object"),

@@ -29,7 +29,7 @@ from ..core.edges import is_top_left, passes, top_left_edges
 from ..core.fill import rasterize
 from . import coverage as cov
 from . import coverage_boxes as boxes
-from . import edge_slips
+from . import edge_slips, plane32
 from . import sample_steps as steps
 from .answers import as_bool, as_coverage, short
 from .cases import (
@@ -284,6 +284,10 @@ def _float32_fits(args, expected, got) -> bool:
             if e > tol or (far < 1e4 and e == 0):  # near the origin a tie is the rule's
                 return False
     return True
+
+
+def _tested(case: CoverageCase, masked: bool):
+    return _masks(case) if masked else True
 
 
 def _winding32(case: CoverageCase):
@@ -1191,6 +1195,8 @@ def mistakes(name: str) -> list:
     table += _step_mistakes(masked)
     table.append(Mistake("vertices decided apart", AT_VERTICES, fits=_at_vertices, symptom=True))
     table.append(Mistake("winding in float32", _winding32_words, gives=_winding32, reads="float32"))
+    table.append(Mistake("float32 plane form", plane32.WORDS, reads="float32",
+                         fits=lambda a, e, g: plane32.fits(a[0], e, g, _tested(a[0], masked))))  # fmt: skip
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))
