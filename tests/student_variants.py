@@ -8552,6 +8552,14 @@ def _r438_plane32(xy, p):
     return True
 
 
+def _r438_box_early_out(xy, p):
+    """r438 H3: a bounding-box early-out refusing p.x <= x_min and p.x >= x_max."""
+    xs = [float(q[0]) for q in xy]
+    if p[0] <= min(xs) or p[0] >= max(xs):
+        return False
+    return covers(xy, p)
+
+
 _R438_DIST = "a tolerance on the distance to the edge's line"
 _R438_BIAS = "a bias on the edges that do not own their ties"
 R438 = {
@@ -8576,6 +8584,9 @@ R438 = {
     "covers with E = A·x + B·y + C in float32 (r438 H6)": (
         "covers", _r438_plane32, "you computed E in float32 as the plane A·x + B·y + C",
         "float32 plane form"),
+    "covers with a box early-out refusing p.x <= x_min (r438 H3)": (
+        "covers", _r438_box_early_out, "a bounding-box test that refuses p.x <= x_min",
+        "box side refused"),
     "fill by [[False] * width] * height (r438 M4)": (
         "fill", _r438_one_row_fill, "every row of your image is the same, the rule's last row",
         "one row object"),

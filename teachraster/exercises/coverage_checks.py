@@ -1137,6 +1137,28 @@ def _at_vertices(args, expected, got) -> bool:
     )
 
 
+def _on_box_side(args, expected, got) -> bool:
+    """r438 H3: every wrong pixel is one the rule covers, its centre on the left or top side
+    of its triangle's bounding box (x = x_min or y = y_min): a box test with <= refused it."""
+    (case,) = args
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return False
+    wrong = [(k, i, j) for k in range(len(got)) for i, j in np.argwhere(got[k] != expected[k])]
+    if not wrong or any(got[k][i, j] for k, i, j in wrong):
+        return False
+    lo = [np.asarray(xy, dtype=float).min(axis=0) for xy in case.triangles]
+    return all(((_centre(case, i, j) == lo[k]).any()) for k, i, j in wrong)
+
+
+ON_BOX_SIDE = (
+    "every pixel you leave out that the rule covers has its centre on the left or top side of "
+    "its triangle's bounding box (x = x_min or y = y_min): a bounding-box test that refuses "
+    "p.x <= x_min (or p.y <= y_min)? A centre there lies on a left or top edge (or is a "
+    "vertex of one), which owns it: a box test may refuse only what lies strictly outside, "
+    "p.x < x_min, p.x > x_max (and likewise in y)"
+)
+
+
 AT_VERTICES = (
     "every pixel you get wrong has a vertex of its triangle at its centre: a special case for "
     "vertices (p equal to one of them: always covered, or never)? A vertex is decided by the "
@@ -1194,6 +1216,7 @@ def mistakes(name: str) -> list:
         table += _offset_mistakes()
     table += _step_mistakes(masked)
     table.append(Mistake("vertices decided apart", AT_VERTICES, fits=_at_vertices, symptom=True))
+    table.append(Mistake("box side refused", ON_BOX_SIDE, fits=_on_box_side, symptom=True))
     table.append(Mistake("winding in float32", _winding32_words, gives=_winding32, reads="float32"))
     table.append(Mistake("float32 plane form", plane32.WORDS, reads="float32",
                          fits=lambda a, e, g: plane32.fits(a[0], e, g, _tested(a[0], masked))))  # fmt: skip
