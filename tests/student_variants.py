@@ -8521,6 +8521,23 @@ def _r438_distance(eps, one_sided):
     return test
 
 
+def _r438_distance_pow(xy, p):
+    """r428 H1: E snapped to 0 within 1e-3 px of the edge's line, the length by ** 0.5."""
+    v = [tuple(float(c) for c in q) for q in xy]
+    s = edge_function(v[0], v[1], v[2])
+    if s == 0:
+        return False
+    if s < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, p)
+        e = 0.0 if abs(e) < 1e-3 * ((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5 else e
+        if e < 0 or (e == 0 and not _owns(a, b)):
+            return False
+    return True
+
+
 def _r438_bias(beta):
     return lambda e, a, b, owns: e - (0.0 if owns else beta) >= 0 and (owns or e > 0)
 
@@ -8572,6 +8589,8 @@ R438 = {
     "covers taking E for 0 within 1e-6 px of the edge's line (r438 M2)": (
         "covers", _r438_covers(_r438_distance(1e-6, False)), _R438_DIST,
         "a tolerance on the distance to the edge"),
+    "covers taking E for 0 within 1e-3 px of the edge's line, a length by ** 0.5 (r428 H1)": (
+        "covers", _r438_distance_pow, _R438_DIST, "a tolerance on the distance to the edge"),
     "covers with a bias of 1e-4 px² on the edges that do not own their ties (r438 M3)": (
         "covers", _r438_covers(_r438_bias(1e-4)), _R438_BIAS, _R438_BIAS),
     "covers with a bias of 1 px² on the edges that do not own their ties (r438 H2)": (

@@ -1040,10 +1040,12 @@ def _nudged_words(args, expected, got) -> str:
     )
 
 
-def _distance_mistakes(masks) -> list[Mistake]:
+def _distance_mistakes(masks, after_step: bool = False) -> list[Mistake]:
     """r438 M1, M2, M3, H2: a tolerance on the distance to the edge's line (snapped to a tie,
     or one-sided), and a bias on the edges that do not own their ties (E − β ≥ 0), fitted on
-    the long near ties (:mod:`.sample_steps`); float64 code only, every failing case."""
+    the long near ties (:mod:`.sample_steps`); float64 code only, every failing case. A
+    distance where the code reads a length (:data:`LENGTHS`), else (``after_step``) only
+    where no step off the centre gives the answer (a length written with ``** 0.5``)."""
     forms = {"bias": {"absolute": True, "one_sided": True}, "absolute": {"absolute": True},
              "distance": {"length": True}, "distance, one-sided": {"length": True, "one_sided": True}}  # fmt: skip
 
@@ -1080,8 +1082,19 @@ def _distance_mistakes(masks) -> list[Mistake]:
 
         return interval
 
+    # a distance takes a length: named where the code reads one (a step to the right of 1e-4
+    # px gives the same images as a distance of 4e-5 px on every case)
+    reads = {"distance": LENGTHS, "distance, one-sided": LENGTHS}
+    if after_step:
+        forms = {k: v for k, v in forms.items() if k in reads}
+        reads = {}
     return [Mistake(kinds[form], words(form), fits=fits(form), only_whole=True, unread="float32",
-                    parameter=span(form)) for form in forms]  # fmt: skip
+                    parameter=span(form), reads=name)
+            for form in forms for name in reads.get(form, (None,))]  # fmt: skip
+
+
+#: The names a length |b − a| is computed with (r438: a distance tolerance reads one).
+LENGTHS = ("hypot", "sqrt", "norm", "dist")
 
 
 def _step_mistakes(masked: bool) -> list[Mistake]:
@@ -1122,6 +1135,7 @@ def _step_mistakes(masked: bool) -> list[Mistake]:
                 only_whole=True, unread="float32"),
         Mistake("a point a tiny step off the centre", step_words,
                 fits=lambda *a: step(*a) is not None, only_whole=True, unread="float32"),
+        *_distance_mistakes(masks, after_step=True),
     ]  # fmt: skip
 
 
