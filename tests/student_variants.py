@@ -9622,3 +9622,144 @@ R446 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R446.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R446.items()})
+
+
+# == r438 (fixex01c, exercise 1): a distance tolerance, a bias, λ3 = 1 − λ1 − λ2, the winding in
+# float32, rows of one list object ============================================================
+def _r438_winding32(v):
+    """r438 WP1: E(v1, v2, v3) of the vertices in float32."""
+    f = [(np.float32(q[0]), np.float32(q[1])) for q in v]
+    return edge_function(f[0], f[1], f[2])
+
+
+def _r438_covers(test=None, orient32=False, remainder=False):
+    """The conventions' covers with one slip: the side test ``test(e, a, b, owns)`` -> covered
+    by this edge; the winding decided in float32; the third λ as 1 − λ1 − λ2 (the code reads
+    float32 only where it uses it: a float32 reader is never told a tolerance)."""
+    winding = _r438_winding32 if orient32 else (lambda v: edge_function(v[0], v[1], v[2]))
+
+    def fn(xy, p):
+        v = [tuple(float(c) for c in q) for q in xy]
+        s = winding(v)
+        if s == 0:
+            return False
+        if s < 0:
+            v = [v[0], v[2], v[1]]
+        if remainder:
+            area = edge_function(v[0], v[1], v[2])
+            l1 = edge_function(v[1], v[2], p) / area
+            l2 = edge_function(v[2], v[0], p) / area
+            lams = ((1 - l1 - l2, v[0], v[1]), (l1, v[1], v[2]), (l2, v[2], v[0]))
+            return all(q > 0 or (q == 0 and _owns(a, b)) for q, a, b in lams)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = edge_function(a, b, p)
+            if not (test(e, a, b, _owns(a, b)) if test else e > 0 or (e == 0 and _owns(a, b))):
+                return False
+        return True
+
+    return fn
+
+
+def _r438_distance(eps, one_sided):
+    def test(e, a, b, owns):
+        d = abs(e) / math.hypot(b[0] - a[0], b[1] - a[1])
+        if one_sided:
+            return e >= 0 and (owns or d >= eps)
+        e = 0.0 if d < eps else e
+        return e > 0 or (e == 0 and owns)
+
+    return test
+
+
+def _r438_distance_pow(xy, p):
+    """r428 H1: E snapped to 0 within 1e-3 px of the edge's line, the length by ** 0.5."""
+    v = [tuple(float(c) for c in q) for q in xy]
+    s = edge_function(v[0], v[1], v[2])
+    if s == 0:
+        return False
+    if s < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, p)
+        e = 0.0 if abs(e) < 1e-3 * ((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5 else e
+        if e < 0 or (e == 0 and not _owns(a, b)):
+            return False
+    return True
+
+
+def _r438_bias(beta):
+    return lambda e, a, b, owns: e - (0.0 if owns else beta) >= 0 and (owns or e > 0)
+
+
+def _r438_one_row_fill(xy, width, height):
+    """r438 M4: [[False] * width] * height: one row object, height times."""
+    out = [[False] * width] * height
+    for i in range(height):
+        for j in range(width):
+            out[i][j] = covers(xy, (j + 0.5, i + 0.5))
+    return out
+
+
+def _r438_plane32(xy, p):
+    """r438 H6: E as A·x + B·y + C in float32, C = a.x·b.y − a.y·b.x."""
+    f = np.float32
+    v = [(f(q[0]), f(q[1])) for q in xy]
+    s = edge_function(v[0], v[1], v[2])
+    if s == 0:
+        return False
+    if s < 0:
+        v = [v[0], v[2], v[1]]
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        big_a, big_b, c = a[1] - b[1], b[0] - a[0], a[0] * b[1] - a[1] * b[0]
+        e = big_a * f(p[0]) + big_b * f(p[1]) + c
+        if e < 0 or (e == 0 and not (big_a > 0 or (big_a == 0 and big_b > 0))):
+            return False
+    return True
+
+
+def _r438_box_early_out(xy, p):
+    """r438 H3: a bounding-box early-out refusing p.x <= x_min and p.x >= x_max."""
+    xs = [float(q[0]) for q in xy]
+    if p[0] <= min(xs) or p[0] >= max(xs):
+        return False
+    return covers(xy, p)
+
+
+_R438_DIST = "a tolerance on the distance to the edge's line"
+_R438_BIAS = "a bias on the edges that do not own their ties"
+R438 = {
+    "covers leaving out centres within 1e-6 px of a right edge's line (r438 M1)": (
+        "covers", _r438_covers(_r438_distance(1e-6, True)), _R438_DIST,
+        "a tolerance on the distance to the edge"),
+    "covers taking E for 0 within 1e-8 px of the edge's line (r438 M2)": (
+        "covers", _r438_covers(_r438_distance(1e-8, False)), _R438_DIST,
+        "a tolerance on the distance to the edge"),
+    "covers taking E for 0 within 1e-6 px of the edge's line (r438 M2)": (
+        "covers", _r438_covers(_r438_distance(1e-6, False)), _R438_DIST,
+        "a tolerance on the distance to the edge"),
+    "covers taking E for 0 within 1e-3 px of the edge's line, a length by ** 0.5 (r428 H1)": (
+        "covers", _r438_distance_pow, _R438_DIST, "a tolerance on the distance to the edge"),
+    "covers with a bias of 1e-4 px² on the edges that do not own their ties (r438 M3)": (
+        "covers", _r438_covers(_r438_bias(1e-4)), _R438_BIAS, _R438_BIAS),
+    "covers with a bias of 1 px² on the edges that do not own their ties (r438 H2)": (
+        "covers", _r438_covers(_r438_bias(1.0)), _R438_BIAS, _R438_BIAS),
+    "covers with λ3 = 1 − λ1 − λ2 (r438 H1)": (
+        "covers", _r438_covers(remainder=True), "the remainder 1 − λ1 − λ2", "λ as a remainder"),
+    "covers deciding the winding in float32 (r438 WP1)": (
+        "covers", _r438_covers(orient32=True), "your winding (or zero-area) test is computed in "
+        "float32", "winding in float32"),
+    "covers with E = A·x + B·y + C in float32 (r438 H6)": (
+        "covers", _r438_plane32, "you computed E in float32 as the plane A·x + B·y + C",
+        "float32 plane form"),
+    "covers with a box early-out refusing p.x <= x_min (r438 H3)": (
+        "covers", _r438_box_early_out, "a bounding-box test that refuses p.x <= x_min",
+        "box side refused"),
+    "fill by [[False] * width] * height (r438 M4)": (
+        "fill", _r438_one_row_fill, "every row of your image is the same, the rule's last row",
+        "one row object"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R438.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R438.items()})

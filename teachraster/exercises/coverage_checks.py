@@ -29,7 +29,7 @@ from ..core.edges import is_top_left, passes, top_left_edges
 from ..core.fill import rasterize
 from . import coverage as cov
 from . import coverage_boxes as boxes
-from . import edge_slips
+from . import edge_slips, plane32
 from . import sample_steps as steps
 from .answers import as_bool, as_coverage, short
 from .cases import (
@@ -43,7 +43,15 @@ from .cases import (
 )
 from .diagnosis import constant_words
 from .exercise import Exercise, Knobs, Mistake, PackageAnswer, Slip
-from .near_ties import LONG_NEAR_TIES, float32_safe, long_near_tie_case, near_tie_cases
+from .near_ties import (
+    LONG_NEAR_TIES,
+    SLIVER32,
+    float32_safe,
+    long_near_tie_case,
+    near_tie_cases,
+    sliver32_case,
+    winding32_images,
+)
 from .package_answers import values_read
 
 FLOAT32_EPS = 2.0**-24
@@ -158,6 +166,7 @@ def long_edge_coverage(rng) -> CoverageCase:
 @cache
 def _covers_cases():
     cases = catalogue_coverage() + random_coverage() + fixed_near_ties() + [long_near_ties()]
+    cases += [sliver32_case()]  # r438 WP1: last, so earlier first explanations stay
     return [(c.label, (c,), _expected(c)) for c in cases]
 
 
@@ -172,6 +181,7 @@ def _fill_cases():
     # fill draws the image from the origin: cases far from it have no pixel to show
     cases = [c for c in catalogue_coverage() + random_coverage(far=False) if c.origin == (0, 0)]
     cases += _oblong_cases() + _border_cases() + fixed_near_ties() + [long_near_ties()]
+    cases += [sliver32_case()]  # r438 WP1
     return [(c.label, (c,), _expected(c)) for c in cases]
 
 
@@ -261,6 +271,8 @@ def _float32_fits(args, expected, got) -> bool:
     far = float(np.abs(case.triangles).max())
     if not isinstance(got, np.ndarray) or got.shape != expected.shape or float32_safe(case):
         return False  # r420 M2: float32 gives the rule's answer on a near tie
+    if case.label.startswith(SLIVER32):  # r438 WP1: float32's E(v1, v2, v3) is 0 there
+        return bool(np.array_equal(got, winding32_images(case, expected)))
     for k, xy in enumerate(case.triangles):
         extent = float(np.abs(xy - xy[0]).max()) + 1.0
         if far < 1e4 and extent < 1000:  # near the origin and short: float32 is exact enough
@@ -272,6 +284,34 @@ def _float32_fits(args, expected, got) -> bool:
             if e > tol or (far < 1e4 and e == 0):  # near the origin a tie is the rule's
                 return False
     return True
+
+
+def _tested(case: CoverageCase, masked: bool):
+    return _masks(case) if masked else True
+
+
+def _winding32(case: CoverageCase):
+    """r438 WP1: the rule's images with the winding (and zero area) decided in float32, on the
+    sliver built for it (None elsewhere: the far cases' float32 rounding has other words)."""
+    if not case.label.startswith(SLIVER32):
+        return None
+    return winding32_images(case, _expected(case))
+
+
+def _winding32_words(args, expected, got) -> str:
+    (case,) = args
+    a, b, c = np.asarray(case.triangles[0], dtype=float)
+    big = max(abs((b[0] - a[0]) * (c[1] - a[1])), abs((b[1] - a[1]) * (c[0] - a[0])))
+    step = cov.fmt(float(np.spacing(np.float32(big))))
+    return (
+        f"your winding (or zero-area) test is computed in float32: this sliver's E(v1, v2, v3) "
+        f"= {cov.fmt(cov.area2(case.triangles[0]))} px² is the difference of two products of "
+        f"{cov.fmt(big)} px², which float32 holds in steps of {step} px², so it comes out 0 (or "
+        "of the wrong sign) "
+        "and the triangle is dropped, though the rule covers a centre of it. Vertices on the "
+        "1/256-px grid make E(v1, v2, v3) exact in float64: decide the winding as you compute "
+        "the edge tests, in float64"
+    )
 
 
 def _constant_mistakes(name: str, masked: bool) -> list[Mistake]:
@@ -827,7 +867,7 @@ def _area_tolerance_fits(args, expected, got) -> bool:
     (case,) = args
     if not isinstance(got, np.ndarray) or got.shape != expected.shape:
         return False
-    if not _float32_exact(case):
+    if not (_float32_exact(case) or case.label.startswith(SLIVER32)):  # r438: its E is 0.043
         return False
     wrong = [k for k in range(len(got)) if not np.array_equal(got[k], expected[k])]
     return bool(wrong) and all(_tiny(case.triangles[k]) and not got[k].any() for k in wrong)
@@ -890,8 +930,8 @@ def _tolerant_image(case, xy, eps: float) -> np.ndarray:
     return cov._apply((e, kinds, area, v), cov.TOP_LEFT, "both").reshape(h, w)
 
 
-def _edge_tolerance_words(args, expected, got) -> str:
-    eps = _edge_tolerance(args, expected, got)
+def _edge_tolerance_words(args, expected, got, eps=None) -> str:
+    eps = _edge_tolerance(args, expected, got) if eps is None else eps
     return (
         f"you take an edge function within {cov.fmt(eps)} px² of 0 for 0: a tolerance in the "
         f"edge test (abs(E) < ε with ε above {cov.fmt(eps)} px², or ε relative to the "
@@ -918,7 +958,7 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
         # r347: named only where they give every failing case they must (a fit on one case
         # alone is a coincidence: a point sampled off the centre left a sliver empty)
         Mistake("zero area by a tolerance", _area_tolerance_words, fits=_area_tolerance_fits,
-                must_fit=_always),
+                must_fit=_always, unread="float32"),  # r438: float32's E(v1, v2, v3) of a sliver
         Mistake("edges by a tolerance", _edge_tolerance_words,
                 fits=lambda *a: _edge_tolerance(*a) is not None,
                 must_fit=lambda args, *_: _float32_exact(args[0])),
@@ -955,7 +995,23 @@ def _edge_slip_mistakes(masked: bool) -> list[Mistake]:
 
         return images
 
-    return [Mistake(kind, edge_slips.WORDS[kind], gives=gives(kind)) for kind in edge_slips.WORDS]
+    def remainder(args, expected, got) -> bool:
+        """r438 H1: λ3 = 1 − λ1 − λ2, whichever edge's λ is the remainder (the same on every
+        triangle of the case)."""
+        (case,) = args
+        if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+            return False
+        m = _masks(case) if masked else True
+        return any(
+            np.array_equal(got, np.array([edge_slips.remainder_image(case, xy, k)
+                                          for xy in case.triangles]) & m)
+            for k in range(3)
+        )  # fmt: skip
+
+    return [
+        *(Mistake(kind, edge_slips.WORDS[kind], gives=gives(kind)) for kind in edge_slips.WORDS),
+        Mistake("λ as a remainder", edge_slips.REMAINDER, fits=remainder, must_fit=_always),
+    ]
 
 
 def _nudged(args, expected, got):
@@ -982,6 +1038,63 @@ def _nudged_words(args, expected, got) -> str:
         "rule never decides. Test the centre (j + 0.5, i + 0.5) itself: vertices and centres "
         f"are on the 1/256-px grid, so E is exact there{alike}"
     )
+
+
+def _distance_mistakes(masks, after_step: bool = False) -> list[Mistake]:
+    """r438 M1, M2, M3, H2: a tolerance on the distance to the edge's line (snapped to a tie,
+    or one-sided), and a bias on the edges that do not own their ties (E − β ≥ 0), fitted on
+    the long near ties (:mod:`.sample_steps`); float64 code only, every failing case. A
+    distance where the code reads a length (:data:`LENGTHS`), else (``after_step``) only
+    where no step off the centre gives the answer (a length written with ``** 0.5``)."""
+    forms = {"bias": {"absolute": True, "one_sided": True}, "absolute": {"absolute": True},
+             "distance": {"length": True}, "distance, one-sided": {"length": True, "one_sided": True}}  # fmt: skip
+
+    def fit(form):
+        def found(args, expected, got):
+            return steps.relative_tolerance(args[0], expected, got, masks(args[0]), **forms[form])
+
+        return found
+
+    def fits(form):
+        def fitted(*a) -> bool:
+            return fit(form)(*a) is not None
+
+        return fitted
+
+    def words(form):
+        def said(args, expected, got):
+            r = fit(form)(args, expected, got)
+            if form == "bias":
+                return steps.bias_words(args[0], r)
+            if form == "absolute":
+                return _edge_tolerance_words(args, expected, got, r)
+            return steps.distance_words(args[0], r, one_sided=form != "distance")
+
+        return said
+
+    kinds = {"absolute": "edges by a tolerance", "distance": "a tolerance on the distance to the edge",
+             "distance, one-sided": "a tolerance on the distance to the edge",
+             "bias": "a bias on the edges that do not own their ties"}  # fmt: skip
+
+    def span(form):
+        def interval(args, expected, got):
+            return steps.tolerance_range(args[0], expected, got, masks(args[0]), **forms[form])
+
+        return interval
+
+    # a distance takes a length: named where the code reads one (a step to the right of 1e-4
+    # px gives the same images as a distance of 4e-5 px on every case)
+    reads = {"distance": LENGTHS, "distance, one-sided": LENGTHS}
+    if after_step:
+        forms = {k: v for k, v in forms.items() if k in reads}
+        reads = {}
+    return [Mistake(kinds[form], words(form), fits=fits(form), only_whole=True, unread="float32",
+                    parameter=span(form), reads=name)
+            for form in forms for name in reads.get(form, (None,))]  # fmt: skip
+
+
+#: The names a length |b − a| is computed with (r438: a distance tolerance reads one).
+LENGTHS = ("hypot", "sqrt", "norm", "dist")
 
 
 def _step_mistakes(masked: bool) -> list[Mistake]:
@@ -1017,10 +1130,12 @@ def _step_mistakes(masked: bool) -> list[Mistake]:
     # a coincidence)
     return [
         Mistake(kind, tolerance_words, fits=lambda *a: tolerance(*a) is not None, reads="isclose"),
+        *_distance_mistakes(masks),
         Mistake(kind, tolerance_words, fits=lambda *a: tolerance(*a) is not None,
                 only_whole=True, unread="float32"),
         Mistake("a point a tiny step off the centre", step_words,
                 fits=lambda *a: step(*a) is not None, only_whole=True, unread="float32"),
+        *_distance_mistakes(masks, after_step=True),
     ]  # fmt: skip
 
 
@@ -1036,6 +1151,28 @@ def _at_vertices(args, expected, got) -> bool:
     )
 
 
+def _on_box_side(args, expected, got) -> bool:
+    """r438 H3: every wrong pixel is one the rule covers, its centre on the left or top side
+    of its triangle's bounding box (x = x_min or y = y_min): a box test with <= refused it."""
+    (case,) = args
+    if not isinstance(got, np.ndarray) or got.shape != expected.shape:
+        return False
+    wrong = [(k, i, j) for k in range(len(got)) for i, j in np.argwhere(got[k] != expected[k])]
+    if not wrong or any(got[k][i, j] for k, i, j in wrong):
+        return False
+    lo = [np.asarray(xy, dtype=float).min(axis=0) for xy in case.triangles]
+    return all(((_centre(case, i, j) == lo[k]).any()) for k, i, j in wrong)
+
+
+ON_BOX_SIDE = (
+    "every pixel you leave out that the rule covers has its centre on the left or top side of "
+    "its triangle's bounding box (x = x_min or y = y_min): a bounding-box test that refuses "
+    "p.x <= x_min (or p.y <= y_min)? A centre there lies on a left or top edge (or is a "
+    "vertex of one), which owns it: a box test may refuse only what lies strictly outside, "
+    "p.x < x_min, p.x > x_max (and likewise in y)"
+)
+
+
 AT_VERTICES = (
     "every pixel you get wrong has a vertex of its triangle at its centre: a special case for "
     "vertices (p equal to one of them: always covered, or never)? A vertex is decided by the "
@@ -1049,10 +1186,29 @@ def _x_flipped_pixel(case, xy, e, g, i, j):
                            "the pixel in the mirrored column")  # fmt: skip
 
 
+#: r438 M4: ``[[False] * width] * height`` holds one row object height times (told "never
+#: covers anything" where the last row is empty).
+ONE_ROW = (
+    "every row of your image is the same, the rule's last row: a list of lists made with "
+    "`[[False] * width] * height` holds one row object height times, so writing out[i][j] "
+    "writes that column of every row, and the last row written wins. Make each row anew "
+    "(`[[False] * width for _ in range(height)]`) or use `np.zeros((height, width), bool)`"
+)
+
+
+def _last_row_everywhere(case: CoverageCase) -> np.ndarray:
+    e = _expected(case)
+    return np.broadcast_to(e[:, -1:, :], e.shape).copy()
+
+
 def mistakes(name: str) -> list:
     """The mistakes table of ``covers`` or ``fill``, most specific first."""
     masked = name == "covers"
-    table = _constant_mistakes(name, masked)
+    table = []
+    if name == "fill":  # before "never covers anything", which it gives where the last row is empty
+        table.append(Mistake("one row object", ONE_ROW, gives=_last_row_everywhere,
+                             must_fit=_always))  # fmt: skip
+    table += _constant_mistakes(name, masked)
     if name == "fill":
         table += [
             _mirrored("transposed", _own_example(TRANSPOSED, _transposed_pixel), lambda e: e.T),
@@ -1068,11 +1224,16 @@ def mistakes(name: str) -> list:
     table.append(_rule_knobs(masked, corners=name == "fill"))
     if name == "fill":  # r352 3: after the tie rules, which it may equal on a case
         table.append(Mistake("a point a tiny step off the centre", _nudged_words,
-                             fits=lambda *a: _nudged(*a) is not None, must_fit=_always))  # fmt: skip
+                             fits=lambda *a: _nudged(*a) is not None, must_fit=_always,
+                             unread="float32"))  # fmt: skip
     if name == "fill":
         table += _offset_mistakes()
     table += _step_mistakes(masked)
     table.append(Mistake("vertices decided apart", AT_VERTICES, fits=_at_vertices, symptom=True))
+    table.append(Mistake("box side refused", ON_BOX_SIDE, fits=_on_box_side, symptom=True))
+    table.append(Mistake("winding in float32", _winding32_words, gives=_winding32, reads="float32"))
+    table.append(Mistake("float32 plane form", plane32.WORDS, reads="float32",
+                         fits=lambda a, e, g: plane32.fits(a[0], e, g, _tested(a[0], masked))))  # fmt: skip
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
     if name == "fill":
         table.append(Mistake("transposed", _transposed_words, fits=_transposed_and_wrong))

@@ -852,7 +852,8 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
                 if verdicts[r.index] is False and not spec.partial_names:
                     return None
             hits = {i for i, v in verdicts.items() if v}
-            if not hits or not _one_parameter(m, [r for r in failing if r.index in hits]):
+            passing = [r for r in results if r.ok]
+            if not hits or not _one_parameter(m, [r for r in failing if r.index in hits], passing):
                 return None
             said = [_fits(spec, m, r) for r in results if r.ok]
             agrees = len(hits) + sum(1 for s in said if s)
@@ -871,11 +872,18 @@ def _evaluate(spec: Exercise, mistakes: list[Mistake], results: list[Result]) ->
 PARAMETER_TOL = 1e-3
 
 
-def _one_parameter(m: Mistake, hits: list[Result]) -> bool:
-    """Is ``m``'s parameter one number on every failing case it fits (or has it none)?"""
+def _one_parameter(m: Mistake, hits: list[Result], passing: list[Result] = ()) -> bool:
+    """Is ``m``'s parameter one number on every failing case it fits (or has it none)? A
+    parameter given as a range (lo, hi) of the numbers that give a case's answer (r438: a
+    tolerance) must hold one number on every failing case it fits and every passing case."""
     if m.parameter is None:
         return True
     values = [m.parameter(r.args, r.expected, r.got) for r in hits]
+    if values and all(isinstance(v, tuple) for v in values):
+        values += [
+            v for r in passing if isinstance(v := m.parameter(r.args, r.expected, r.got), tuple)
+        ]
+        return max(v[0] for v in values) < min(v[1] for v in values)
     if any(v is None or not np.isfinite(v) for v in values):
         return False
     lo, hi = min(values), max(values)

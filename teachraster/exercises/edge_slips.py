@@ -85,3 +85,35 @@ def image(case: CoverageCase, xy, kind: str) -> np.ndarray:
 def images(case: CoverageCase, kind: str) -> np.ndarray:
     """(n, h, w): :func:`image` of every triangle of the case."""
     return np.array([image(case, xy, kind) for xy in case.triangles])
+
+
+#: r438 H1: the third barycentric taken as the remainder (Scratchapixel's w = 1 − u − v).
+REMAINDER = (
+    "your third barycentric is the remainder 1 − λ1 − λ2: in floating point that is not "
+    "exactly its own edge's E / E(v1, v2, v3), so on that edge it comes out a rounding error "
+    "(±1e-16) instead of 0, and the tie rule never sees the edge: its centres go by the "
+    "rounding. Compute each λ from its own edge function (λ3 = E(v1, v2, p) / E(v1, v2, v3)), "
+    "or test the edge functions' signs before dividing"
+)
+
+
+def remainder_image(case: CoverageCase, xy, k: int) -> np.ndarray:
+    """(h, w): the exercise's algorithm with barycentrics E / E(v1, v2, v3) of the oriented
+    triangle, the one of edge ``k`` (v1→v2, v2→v3, v3→v1 for k = 0, 1, 2) taken as 1 − the
+    other two; the tie rule on λ == 0."""
+    w, h = case.size
+    rows, cols = np.indices((h, w))
+    points = np.stack([cols + case.origin[0] + 0.5, rows + case.origin[1] + 0.5], axis=-1)
+    v = [np.asarray(q, dtype=float) for q in xy]
+    area = float(_signed(v[0], v[1], v[2][None])[0])
+    if area == 0:
+        return np.zeros((h, w), dtype=bool)
+    if area < 0:
+        v, area = [v[0], v[2], v[1]], -area
+    edges = [(v[i], v[(i + 1) % 3]) for i in range(3)]
+    lam = [_signed(a, b, points) / area for a, b in edges]
+    lam[k] = 1 - lam[(k + 1) % 3] - lam[(k + 2) % 3]
+    inside = np.ones((h, w), dtype=bool)
+    for (a, b), q in zip(edges, lam):
+        inside &= ~((q < 0) | ((q == 0) & (not _top_left(a, b))))
+    return inside

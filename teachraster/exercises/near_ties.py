@@ -212,3 +212,32 @@ def long_near_tie_case(rng) -> CoverageCase:
              "(as near as the 1/256 grid allows), four beside long edges (steep, diagonal, "
              "shallow, a sliver's) and one beside a short edge of a large triangle")  # fmt: skip
     return CoverageCase(label, np.array(tris), (0, 0), (WINDOW, WINDOW))
+
+
+#: How the label of the float32-winding sliver begins (r438 WP1).
+SLIVER32 = "a sliver whose area float32 cannot hold"
+#: Its vertices (found by a seeded search): E(v1, v2, v3) = 0.043 px², products of 10^6 px²;
+#: in float32 E(v1, v2, v3) comes out 0. Centre (2.5, 5.5), v3, is covered by the rule.
+SLIVER32_XY = ((1570.3046875, -1967.69140625), (-932.390625, 1182.125), (2.5, 5.5))
+
+
+def sliver32_case() -> CoverageCase:
+    """r438 WP1: a sliver 4,000 px long whose E(v1, v2, v3) = 0.043 px² float32 rounds to 0
+    (its products, ~10^6 px², keep 24 bits): a winding or zero-area test in float32 drops it,
+    though the rule covers its vertex v3 at a centre. Every edge test in float64 is exact."""
+    label = f"{SLIVER32}: 4,000 px long, E(v1, v2, v3) = 0.043 px², its products 10^6 px²"
+    return CoverageCase(label, np.array([SLIVER32_XY]), (0, 0), (WINDOW, WINDOW))
+
+
+def winding32_images(case: CoverageCase, expected: np.ndarray) -> np.ndarray:
+    """The rule's images where the winding is decided by E(v1, v2, v3) in float32: a triangle
+    whose float32 E is 0 or of the other sign covers nothing (its interior turned to E < 0)."""
+    out = expected.copy()
+    for k, xy in enumerate(case.triangles):
+        v = np.asarray(xy, dtype=np.float32)
+        e32 = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+        a, b, c = np.asarray(xy, dtype=float)
+        e = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        if e32 == 0 or np.sign(e32) != np.sign(e):
+            out[k] = False
+    return out
