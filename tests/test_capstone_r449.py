@@ -50,3 +50,31 @@ def test_point_place():
     assert point_place(xy, (5.5, 5.5)) == "outside"
     assert point_place(xy, (8.5, 1.5)) == "outside"  # on an edge's line, past its end
     assert point_place(np.array([[0, 0], [1, 1], [2, 2]]), (0.5, 0.5)) == "edge"  # zero area
+
+
+def _depth_kept_between_pixels():
+    """A depth buffer kept outside the function: never reset between pixels."""
+    stored = [np.inf]
+
+    def depth_passes(depths, writes):
+        passed = []
+        for depth, write in zip(depths, writes):
+            passed.append(bool(depth < stored[0]))
+            if depth < stored[0] and write:
+                stored[0] = depth
+        return passed
+
+    return depth_passes
+
+
+def test_a_function_that_keeps_state_between_calls_is_named_in_every_scene():
+    """r449: told "no fragment passes, ever (False for every fragment ...)", a constant it
+    is not: it passed the first pixel's fragment, and the state left fails the rest."""
+    depth_passes = _depth_kept_between_pixels()
+    first = ex.capstone("intersecting_triangles", depth_passes=depth_passes)
+    later = ex.capstone("glass", depth_passes=depth_passes, over=sol.over)
+    for report in (first, later):
+        assert not report.passed
+        said = report.failures[0].explanation
+        assert said.startswith("your depth_passes keeps state from one call to the next"), said
+    assert ex.capstone("intersecting_triangles", depth_passes=sol.depth_passes).passed
