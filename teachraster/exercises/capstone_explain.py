@@ -267,11 +267,11 @@ def _mistake_words(name, fn, where: str = "") -> str:
         dropped += [kind for kind in parts if kind not in kept and kind not in dropped]
         if not kept:
             continue
-        if len(kept) < len(parts):  # r449: only the parts that can change this point
-            return head + "; and ".join(str(table[kind]) for kind in kept)
-        words = [table[kind] for kind in kept]
+        words = [table[kind] for kind in kept]  # r449: the parts that can change this point
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
+        if len(kept) < len(parts):  # the case's sentence would say the other parts too
+            continue
         # words that quote the case: the case's sentence, said to be the exercise's case (its
         # numbers are not this pixel's)
         return f"{head}in its own case {failure.case}, {failure.explanation}"
