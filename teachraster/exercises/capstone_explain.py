@@ -43,6 +43,7 @@ from . import capstone_samples as samples
 from . import output
 from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
+from .coverage_checks import AT_VERTICES
 from .diagnosis import honest_on
 from .exercise import Knobs
 from .interpolation import rounded_decimals, rounded_words
@@ -87,7 +88,7 @@ def explain_pixel(spec, used, mine, reference, pixel) -> tuple[str, str]:
     row, col = pixel
     if spec.sample_covers:
         said = samples.explain(lambda xy, p: _call(used, "covers", xy, p),
-                               lambda inside, centre: covers_words(used, inside, centre),
+                               lambda where, centre: covers_words(used, where, centre),
                                mine, reference, row, col)  # fmt: skip
         return (
             ("sample coverage", said)
@@ -119,12 +120,14 @@ def _record_difference(used, reference, pixel, rm, rr):
     return None
 
 
-def named_mistake(used, name, inside: bool = False, case: tuple | None = None,
+def named_mistake(used, name, where: str = "", case: tuple | None = None,
                   also: tuple = ()) -> str:  # fmt: skip
     """ ": <words>" of the typical mistake exercise ``name``'s own check finds in the student's
-    function (over all its cases, :mod:`.diagnosis`), or "" when it names none. ``inside``:
-    the pixel shown is strictly inside its triangle, so a tie rule's mistake cannot explain it
-    (r49: no winding swap and E > 0 was blamed on the tie rule); another is named first.
+    function (over all its cases, :mod:`.diagnosis`), or "" when it names none. ``where``:
+    where the point shown lies in its triangle (:func:`.capstone_samples.point_place`); a mistake that cannot
+    change a point there is not named (r49: no winding swap and E > 0 was blamed on the tie
+    rule at a centre strictly inside; r449 MN1/MN2: "a special case for vertices" at a point
+    that is no vertex); another is named first.
     ``case``: the pixel's (args, the package's answer, the student's), on which words that
     blame float32 must hold too (:func:`.diagnosis.honest_on`, the checker's one rule).
     ``also``: further (args, the package's answer) of the scene; with them the mistake named
@@ -134,7 +137,7 @@ def named_mistake(used, name, inside: bool = False, case: tuple | None = None,
     if name not in CHECKED_BY or fn is None:
         return ""
     try:
-        words = _mistake_words(name, fn, inside)
+        words = _mistake_words(name, fn, where)
     except TypeError:  # an unhashable callable: no cache, no name
         return ""
     checked = CHECKED_AS.get(name, name)
@@ -250,28 +253,57 @@ def _own_report(checked: str, fn):
 
 
 @lru_cache(maxsize=32)
-def _mistake_words(name, fn, inside: bool = False) -> str:
+def _mistake_words(name, fn, where: str = "") -> str:
     from .checks import exercise
 
     checked = CHECKED_AS.get(name, name)
     table = _words_by_kind(exercise(checked).mistakes)
     report = own_report(checked, fn)
     head = _head(checked)
+    dropped = []
     for failure in report.failures:
         parts = _table_parts(failure.kind, table)
-        if not parts:
+        kept = [kind for kind in parts if _changes(kind, table[kind], where)]
+        dropped += [kind for kind in parts if kind not in kept and kind not in dropped]
+        if not kept:
             continue
-        if inside:  # the tie rules' mistakes say nothing of a centre strictly inside
-            parts = [kind for kind in parts if not _about_ties(kind)]
-            if not parts:
-                continue
-        words = [table[kind] for kind in parts]
+        words = [table[kind] for kind in kept]  # r449: the parts that can change this point
         if all(isinstance(w, str) for w in words):
             return head + "; and ".join(words)
+        if len(kept) < len(parts):  # the case's sentence would say the other parts too
+            continue
         # words that quote the case: the case's sentence, said to be the exercise's case (its
         # numbers are not this pixel's)
         return f"{head}in its own case {failure.case}, {failure.explanation}"
+    if dropped and where in PLACES:
+        return _not_here(checked, dropped, where)
     return _unnamed(checked, report)
+
+
+#: How :func:`point_place`'s answers are said (r449 MN1/MN2).
+PLACES = {
+    "inside": "strictly inside its triangle, on no edge",
+    "outside": "strictly outside an edge of its triangle",
+    "edge": "on an edge but at no vertex of its triangle",
+}
+
+
+def _changes(kind: str, words, where: str) -> bool:
+    """Whether typical mistake ``kind`` (its ``words``) of ``covers`` can change the answer at
+    a point ``where`` (:func:`.capstone_samples.point_place`; "" when unknown): a tie rule's only on an edge, a
+    special case for vertices only at a vertex."""
+    if where in ("inside", "outside") and _about_ties(kind):
+        return False
+    return not (words == AT_VERTICES and where not in ("", "vertex"))
+
+
+def _not_here(checked: str, dropped: list, where: str) -> str:
+    """r449 MN1/MN2: the check's own cases show ``dropped`` mistakes, none of which can change
+    a point ``where``: said as the check's finding there, and this point left to the rule."""
+    return (f"; {check_words(checked)} names {_kinds_words(dropped)} on its own cases, but "
+            f"this point lies {PLACES[where]}, where that cannot change the answer: the "
+            "mistake here is another one (vertices or p moved, or another test?): compare "
+            "your answer here with the rule")  # fmt: skip
 
 
 def _about_ties(kind: str) -> bool:
@@ -331,20 +363,20 @@ def _coverage(used, reference, pixel, rr, covered) -> str:
     asked = f"covers({_points(xy)}, {vec(p)})"
     said = error or f"your {asked} returned {yours!r}"
     why, _, _ = explain_coverage(xy, p, covered)
-    named = covers_words(used, "strictly inside" in why)
+    named = covers_words(used, samples.point_place(xy, p))
     # r114 D12-2: the edge's kind (exercise 1's question) was given on the first try: the
     # sentence in the mode covers' own check is in, as the quoted exercise words are
     why = _covers_staged(why)
     return f"triangle {rr.triangle}: {said}; the package: {why}{named}"
 
 
-def covers_words(used, inside: bool, centre: str = "") -> str:
+def covers_words(used, where: str, centre: str = "") -> str:
     """The words for the student's covers mistake, in one order for every scene (r273 12-1):
     what its own check finds (a constant answer, one winding, ...) first; ``centre``, the
     words of a covers that tests the pixel's centre, only where that check finds nothing
     and the MSAA scene offers them (its answers match the centre's on every differing
     sample)."""
-    named = named_mistake(used, "covers", inside=inside)
+    named = named_mistake(used, "covers", where=where)
     if centre and (
         not named
         or named.startswith(f"; your function passes {check_words('covers', 'own cases')}")

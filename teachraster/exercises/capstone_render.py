@@ -31,7 +31,7 @@ from . import capstone_samples as samples
 from . import output
 from .alarm import CASE_WALL_FACTOR
 from .capstone_explain import CHECKED_AS, check_words, explain_pixel
-from .capstone_rules import FUNCTIONS, Tracker, rules, wrapped
+from .capstone_rules import FUNCTIONS, Tracker, kept_state, rules, wrapped
 from .capstone_scenes import capstone_scene
 from .diagnosis import PRECISION_KINDS
 from .report import CheckFailed, Failure, Report
@@ -282,6 +282,8 @@ def capstone(scene: str, *, budget: float = BUDGET, **functions) -> CapstoneRepo
         if run_checker(lambda: _a_buffer_failed(spec, used, outcome.value, reference), False):
             glass.count_try(outcome.value)  # r84 12-2: the order is said after two tries
     report = _report(spec, used, reference, outcome, tracker)
+    if report.failures and outcome.value is not None:
+        report = replace(report, failures=_state_failure(spec, used, tracker) + report.failures)
     if report.passed:  # a right frame from the package's own function does not count
         report = replace(report, package=package_use(used))
     if report.passed:  # r49: a record of the package's answers, replayed, passed a scene
@@ -294,6 +296,32 @@ def capstone(scene: str, *, budget: float = BUDGET, **functions) -> CapstoneRepo
         report = replace(report, printed=printed.summary())
         printed.replay(sys.stdout)
     return report
+
+
+def _state_failure(spec: CapstoneScene, used, tracker) -> list[Failure]:
+    """r449: a function that answers its first call of the render otherwise when asked it
+    again keeps state between calls; said first, as no pixel's history can explain it."""
+    found = run_checker(lambda: kept_state(used, tracker), None)
+    if found is None:
+        return []
+    name, before, again = found
+    text = (f"your {name} keeps state from one call to the next: asked again, after a "
+            f"render, with the arguments of the render's first call (the first pixel it was "
+            f"asked about), it answered {_said(again)}, where it had answered {_said(before)}. A "
+            "variable outside the function (or a default argument) that a call changes, such "
+            "as a depth buffer kept between pixels? The pipeline calls it once per pixel with "
+            "that pixel's data alone: start every call afresh. The pixels below were drawn "
+            "with that state")  # fmt: skip
+    return [Failure(spec.name, text, None, None, kind="keeps state")]
+
+
+def _said(value) -> str:
+    if isinstance(value, (bool, np.bool_)):
+        return str(bool(value))
+    values = np.asarray(value).ravel()
+    if values.dtype.kind == "b":
+        return "[" + ", ".join(str(bool(v)) for v in values) + "]"
+    return "(" + ", ".join(f"{float(v):.4g}" for v in values) + ")"
 
 
 def _a_buffer_failed(spec: CapstoneScene, used, mine, reference) -> bool:

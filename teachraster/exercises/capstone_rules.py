@@ -10,7 +10,9 @@ a number, ...), then hands the pipeline plain values
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import copy
+import weakref
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -53,6 +55,9 @@ class Tracker:
     name: str = ""
     #: (function, "are float32") when some answer of a function was float32 (or float16).
     precision: tuple[str, str] | None = None
+    #: Each function's first call: (its arguments, copied, and its answer as read), asked
+    #: again after the render to tell a function that keeps state between calls (r449).
+    first: dict = field(default_factory=dict)
 
 
 def wrapped(name: str, fn, tracker: Tracker):
@@ -65,6 +70,8 @@ def wrapped(name: str, fn, tracker: Tracker):
         if tracker.precision is None and (low := float_type(raw)) is not None:
             tracker.precision = (name, f"are {low}")
         value = convert(raw)
+        if name not in tracker.first:
+            tracker.first[name] = (copy.deepcopy(args), value)
         if name == "depth_passes" and len(value) != len(args[0]):
             raise WrongAnswerType(
                 f"returned {len(value)} value(s) for {len(args[0])} fragment(s): one "
@@ -81,3 +88,31 @@ def rules(functions: dict, tracker: Tracker) -> StageOverrides:
     return StageOverrides(**{FUNCTIONS[name][0]: wrapped(name, fn, tracker)
                              for name, fn in functions.items()
                              if FUNCTIONS[name][0] is not None})  # fmt: skip
+
+
+#: The functions found to keep state (r449), with their two answers: a later scene, whose
+#: first call already meets the state an earlier one left, says so too.
+KEPT_STATE: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def kept_state(functions: dict, tracker: Tracker) -> tuple[str, object, object] | None:
+    """(name, first answer, answer now) of a function of ``functions`` whose first call of the
+    render, made again with the same arguments, answers otherwise (r449: a depth buffer kept
+    in a global between pixels was told "no fragment passes, ever"), or one found so in an
+    earlier scene (:data:`KEPT_STATE`), or None. The caller runs it within the checker's
+    limits (a call that raises or loops here tells nothing)."""
+    for name, (args, before) in tracker.first.items():
+        fn = functions[name]
+        try:
+            if fn in KEPT_STATE:
+                return (name, *KEPT_STATE[fn])
+            again = FUNCTIONS[name][1](fn(*copy.deepcopy(args)))
+        except Exception:  # noqa: BLE001 - a student's bug is reported elsewhere, not raised
+            continue
+        if not np.array_equal(np.asarray(again), np.asarray(before), equal_nan=True):
+            try:
+                KEPT_STATE[fn] = (before, again)
+            except TypeError:  # not weakly referable: this scene says it alone
+                pass
+            return name, before, again
+    return None

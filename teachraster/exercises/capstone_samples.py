@@ -66,11 +66,33 @@ def sample_cover(frame, covers=None) -> Sampled:
     return Sampled(frame, out)
 
 
+def point_place(xy, p) -> str:
+    """Where point ``p`` lies in triangle ``xy`` (either winding, exact on the snapped grid):
+    "vertex" (one of them), "edge" (E = 0 on an edge and inside the others), "inside"
+    (strictly) or "outside" (strictly outside some edge); "edge" for a zero-area triangle."""
+    v = np.asarray(xy, dtype=float)
+    p = np.asarray(p, dtype=float)
+    if (v == p).all(axis=1).any():
+        return "vertex"
+
+    def e(a, b, q):
+        return (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+
+    area = e(v[0], v[1], v[2])
+    if area == 0:
+        return "edge"
+    signed = np.sign(area) * np.array([e(v[k], v[(k + 1) % 3], p) for k in range(3)])
+    if (signed < 0).any():
+        return "outside"
+    return "edge" if (signed == 0).any() else "inside"
+
+
 def explain(call, named, mine, reference, row: int, col: int) -> str | None:
     """Why the samples of pixel (row, col) are covered otherwise than the package's rule
     covers them (the first triangle and sample that differ), or None where they agree.
-    ``call(xy, p)``: the student's covers, (answer, "") or (None, why not); ``named(inside,
-    centre)``: the words for its mistake, ``centre`` those of a covers that tests the pixel's
+    ``call(xy, p)``: the student's covers, (answer, "") or (None, why not); ``named(where,
+    centre)``: the words for its mistake at a point ``where`` (:func:`point_place`),
+    ``centre`` those of a covers that tests the pixel's
     centre, offered where :func:`as_at_centre` holds (the grid's order, one place for it)."""
     ours, yours = reference.sample_cover[row, col], mine.sample_cover[row, col]
     offsets = np.asarray(reference.trace.debug.offsets, dtype=float)
@@ -89,7 +111,7 @@ def explain(call, named, mine, reference, row: int, col: int) -> str | None:
                 centre = (f"; your covers answers as at the pixel's centre ({col + 0.5:g}, "
                           f"{row + 0.5:g}), not at the point p it is given: with 4 samples "
                           "it is asked at each sample position, so test p itself")  # fmt: skip
-            likely = named("strictly inside" in why, centre)
+            likely = named(point_place(xy, p), centre)
             return (f"triangle {t}, sample {k} at ({p[0]:g}, {p[1]:g}) (offset "
                     f"({offset[0]:g}, {offset[1]:g}) from the pixel's corner): {said}; the "
                     f"package: {why}{likely}")  # fmt: skip
