@@ -9763,3 +9763,132 @@ R438 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R438.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R438.items()})
+
+
+# -- r448 04: slips that passed (a margin in the depth test, a tolerance in the clip's inside
+# test), misnamed ones (a shift, glass against the whole pixel, one component of a new vertex
+# changed after a right t), half-named 4.3 colours, and list idioms on the lists promised ------
+def _p448(*, margin=0.0, glass_whole=False, glass_writes_for_walls=False):
+    """depth_passes with one r448 slip: a fragment passes when nearer by more than ``margin``;
+    glass tested against the whole pixel's nearest opaque fragment; glass hiding later walls."""
+
+    def fn(depths, writes):
+        near = min([d for d, w in zip(depths, writes) if w], default=math.inf)
+        stored, pane, out = math.inf, math.inf, []
+        for d, w in zip(depths, writes):
+            against = min(stored, pane) if (w and glass_writes_for_walls) else stored
+            ok = (d < near) if (glass_whole and not w) else d < against - margin
+            out.append(ok)
+            if ok and w:
+                stored = d
+            if ok and not w:
+                pane = min(pane, d)
+        return out
+
+    return fn
+
+
+def _c448(*, tolerance=0.0, change=None):
+    """clip_near with one r448 slip: ``tolerance`` in the inside test; ``change(c)`` applied
+    to each new vertex after a right t."""
+
+    def fn(v):
+        v = np.asarray(v, dtype=float)
+        out = []
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            da, db = a[2] + a[3], b[2] + b[3]
+            if da >= -tolerance:
+                out.append(a)
+            if (da >= -tolerance) != (db >= -tolerance):
+                c = a + da / (da - db) * (b - a)
+                out.append(change(c) if change else c)
+        return np.array(out).reshape(-1, 4)
+
+    return fn
+
+
+def _set(k, value):
+    def change(c):
+        c = c.copy()
+        c[k] = value(c)
+        return c
+
+    return change
+
+
+def _k448(*, eight_bits=False, mean=False):
+    """clip_near_colour with 4.3's colours rounded to 8 bits, or the triangle's mean colour at
+    each new vertex."""
+
+    def fn(v, colours):
+        p = np.column_stack([np.asarray(v, float), np.asarray(colours, float)])
+        out = []
+        for i in range(3):
+            a, b = p[i], p[(i + 1) % 3]
+            da, db = a[2] + a[3], b[2] + b[3]
+            if da >= 0:
+                out.append(a)
+            if (da >= 0) != (db >= 0):
+                c = a + da / (da - db) * (b - a)
+                if mean:
+                    c[4:] = p[:, 4:].mean(axis=0)
+                out.append(c)
+        out = np.array(out).reshape(-1, 7)
+        if eight_bits:
+            out[:, 4:] = np.round(out[:, 4:] * 255) / 255
+        return out
+
+    return fn
+
+
+R448 = {
+    "passes only when nearer by a margin": (
+        "depth_passes", _p448(margin=0.05), "a margin in your test", "margin"),
+    "glass against the whole pixel's nearest opaque": (
+        "depth_passes", _p448(glass_whole=True), "nearest opaque fragment of the whole pixel, "
+        "walls drawn after it", "glass against the whole pixel"),
+    "glass hides the walls drawn after it": (
+        "depth_passes", _p448(glass_writes_for_walls=True), "leaves the buffer as it was",
+        "glass writes"),
+    "clip with a tolerance of 1e-3 in the inside test": (
+        "clip_near", _c448(tolerance=1e-3), "a tolerance in your inside test",
+        "keeps a vertex behind"),
+    "clip with a tolerance of 1e-4 in the inside test": (
+        "clip_near", _c448(tolerance=1e-4), "a tolerance in your inside test",
+        "keeps a vertex behind"),
+    "clip, new vertex's w set to 1": (
+        "clip_near", _c448(change=_set(3, lambda c: 1.0)), "but w = 1, not", "new vertex changed"),
+    "clip, new vertex's z set to -1": (
+        "clip_near", _c448(change=_set(2, lambda c: -1.0)), "but z = -1, not",
+        "new vertex changed"),
+    "clip, new vertex nudged inside": (
+        "clip_near", _c448(change=_set(2, lambda c: -c[3] + 1e-4)), "its t is right, and one "
+        "component was changed after", "new vertex changed"),
+    "colours rounded to 8 bits": (
+        "clip_near_colour", _k448(eight_bits=True), "rounded to 8 bits", "colours rounded to 8 bits"),
+    "new vertices with the mean colour": (
+        "clip_near_colour", _k448(mean=True), "the mean of the triangle's three colours",
+        "mean colour"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R448.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R448.items()})
+
+
+def _p448_list_idioms(depths, writes):
+    """On the lists the task promises: `if not depths`, and a mask `is True`."""
+    if not depths:
+        return []
+    stored, out = None, []
+    for d, w in zip(depths, writes):
+        ok = stored is None or d < stored
+        out.append(ok)
+        if ok and w is True:
+            stored = d
+    return out
+
+
+DIFFERENT["depth_passes with `if not depths` and `w is True` (lists)"] = (
+    "depth_passes",
+    _p448_list_idioms,
+)

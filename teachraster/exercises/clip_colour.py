@@ -229,6 +229,33 @@ def _rule(args, expected, got) -> str:
     )
 
 
+def _on_255(args, expected, got) -> bool:
+    """Right positions; every colour that differs is a multiple of 1/255 within half a step
+    of the right one (r448 H1: told "at the same fraction … (which fraction?)")."""
+    g = np.asarray(got, float).reshape(-1, 7)
+    if g.shape != expected.shape or not np.isfinite(g).all():
+        return False
+    if not all_close(g[:, :4], expected[:, :4], FLOAT32_TOL):
+        return False
+    col, right = g[:, 4:], expected[:, 4:]
+    off = np.abs(col - right) > 1e-12
+    steps = np.abs(col * 255 - np.round(col * 255)) < 1e-6
+    near = np.abs(col - right) <= 0.5 / 255 + 1e-9
+    return bool(off.any() and (steps | ~off).all() and near.all())
+
+
+def _on_255_words(args, expected, got) -> str:
+    g = np.asarray(got, float).reshape(-1, 7)
+    k = int(np.flatnonzero((np.abs(g[:, 4:] - expected[:, 4:]) > 1e-12).any(axis=1))[0])
+    return (
+        f"your colours are rounded to 8 bits: the vertex {vec(g[k, :4])} has colour "
+        f"{vec(g[k, 4:], expected[k, 4:])}, multiples of 1/255, where the right one is "
+        f"{vec(expected[k, 4:], g[k, 4:])}. Return the colours as floats: the clipper "
+        "interpolates vertex outputs in full precision (a framebuffer rounds to 8 bits only "
+        "when the pixel is written)"
+    )
+
+
 _WHY = (
     "a vertex's colour, like its position, changes linearly along the edge in clip space, so "
     "the new vertex takes its colour at its own t"
@@ -283,6 +310,12 @@ COLOUR_MISTAKES = [
             "is dropped and new vertices come between. A kept vertex keeps the colour of its "
             "own row of `v`, and a new vertex takes its colour between its own edge's two ends",
             gives=_colours_by_row),
+    # r448 H1, H3: colours rounded to 8 bits, and the triangle's mean colour at new vertices,
+    # were told only "at the same fraction of the edge (which fraction?)"
+    Mistake("colours rounded to 8 bits", _on_255_words, fits=_on_255, only_whole=True),
+    Mistake("mean colour", "your new vertices take the mean of the triangle's three colours: "
+            f"a new vertex lies on one edge, between its two ends only; {_WHY}",
+            gives=lambda v, c: colour_with(v, c, lambda a, b, t, c=c: np.mean(np.asarray(c, float), axis=0))),
     Mistake("kept colour changed", _kept_colour_words, fits=lambda a, e, g: _kept_colour(a, e, g)
             is not None, symptom=True),
 ]  # fmt: skip

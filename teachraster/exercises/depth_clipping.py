@@ -154,6 +154,11 @@ def clip_cases():
     # one vertex exactly on the plane, the others on either side
     v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
     out.append(("a vertex on the near plane", (v,)))
+    # r448 W2: a vertex a little behind the eye (w < 0, within the far plane): a tolerance in
+    # the inside test (`z + w >= -1e-3`) kept it, and passed every other case
+    for w in (-2e-4, -2e-5):
+        v = np.array([[-1.0, -1, 1.804, 2], [1, -1, 1.804, 2], [0, -1, 1.5 * w, w]])
+        out.append((f"a vertex a hair behind the eye (w = {num(w)})", (v,)))
     cases = [
         (
             f"{label}: v={vec(a[0][0])}, {vec(a[0][1])}, {vec(a[0][2])}",
@@ -419,7 +424,16 @@ def _behind(args, expected, got) -> bool:
 
 def _behind_words(args, expected, got) -> str:
     bad = _kept_behind(args, got)[0]
-    return f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
+    said = f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
+    (v,) = args
+    if bad[2] + bad[3] > -1e-2 * max(1.0, float(np.abs(v).max())):
+        # r448 W2: a tolerance in the inside test keeps a vertex a hair behind the plane
+        behind_eye = " and behind the eye (w < 0)" if bad[3] < 0 else ""
+        said += (
+            f": a tolerance in your inside test (z + w ≥ −ε)? This vertex lies a hair behind "
+            f"the near plane{behind_eye}; the kept side is z + w ≥ 0, exactly"
+        )
+    return said
 
 
 def _kept_changed(args, expected, got) -> tuple[int, np.ndarray | None] | None:
@@ -556,6 +570,41 @@ def _off_plane_words(args, expected, got) -> str:
         f"your new vertex {vec(p)} is not on the near plane: its z + w is {num(p[2] + p[3])}, "
         "not 0, so its t is wrong (a crossing lies where z + w, which changes linearly along "
         "the edge, reaches 0)"
+    )
+
+
+def _one_component_off(args, expected, got) -> tuple | None:
+    """(q, p, k): the first vertex q of ``got`` that is no vertex of the polygon but the new
+    vertex p in all components but ``k`` (the crossing's t right, one component changed
+    after: r448 M3, told "its t is wrong"); None unless every other vertex is right."""
+    (v,) = args
+    g = np.asarray(got, dtype=float).reshape(-1, 4)
+    if len(g) != len(expected):
+        return None
+    new = [p for p in expected if not _own(v, p)]
+    found = None
+    for q in g:
+        if any(all_close(q, p, FLOAT32_TOL) for p in expected):
+            continue
+        rest = [
+            (p, k) for p in new for k in range(4)
+            if all_close(np.delete(q, k), np.delete(p, k), FLOAT32_TOL)
+        ]  # fmt: skip
+        if not rest:
+            return None
+        found = found or (q, *rest[0])
+    return found
+
+
+def _one_component_words(args, expected, got) -> str:
+    q, p, k = _one_component_off(args, expected, got)
+    others = ", ".join(_NAMES[j] for j in range(4) if j != k)
+    return (
+        f"your new vertex {vec(q, p)} has the {others} of the crossing, but {_NAMES[k]} = "
+        f"{num(q[k], p[k])}, not {num(p[k], q[k])}: its t is right, and one component was "
+        f"changed after. All four components are interpolated at that t, a + t·(b − a), and "
+        "left as they come (the new vertex lies on the plane, z + w = 0, because its z and w "
+        "are both interpolated)"
     )
 
 
@@ -758,6 +807,9 @@ CLIP_MISTAKES = [
             "near plane but off the edge. Find t from z + w in clip space and "
             "interpolate x, y, z and w there"), gives=_ndc_crossing),
     Mistake("vertex too many", _one_too_many_words, fits=_one_too_many),
+    # r448 M3: w set to 1, z set to −1 or nudged inside after a right t: told "its t is wrong"
+    Mistake("new vertex changed", _one_component_words,
+            fits=lambda a, e, g: _one_component_off(a, e, g) is not None),
     Mistake("kept vertex changed", _kept_words, fits=_kept_fits, symptom=True),
     Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),

@@ -13,6 +13,8 @@ renderer's own test in drawing order.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from ..pipeline.visibility.zbuffer import passed_on_arrival, passes_depth_test
@@ -43,6 +45,16 @@ NAMED = (
     # only for a fragment exactly on the far plane
     ("a fragment exactly on the far plane (depth 1)", [1.0], [True]),
     ("the far plane, then a nearer wall", [1.0, 0.7], [True, True]),
+    # r448 W1: every depth above lies on a 0.1 grid, so a margin in the test (`d < stored -
+    # 0.05`) passed; these are nearer (or farther) by 0.01 and by 1e-7 (still two float32s)
+    ("a wall, then one nearer by 0.01", [0.5, 0.49], [True, True]),
+    (
+        "a wall, one nearer by 1e-7, then the first depth again",
+        [0.3, 0.2999999, 0.3],
+        [True, True, True],
+    ),
+    # r448 M1: glass after two walls, the nearer second: glass between them fails
+    ("two walls, the nearer second, then glass between them", [0.6, 0.3, 0.4], [True, True, False]),
 )
 
 
@@ -65,7 +77,9 @@ def depth_cases() -> list[tuple[str, tuple, np.ndarray]]:
     out = []
     for label, depths, writes in seqs:
         passed = passed_on_arrival(np.zeros(len(depths), np.int64), depths, writes)
-        out.append((label, (depths.copy(), writes.copy()), passed))
+        # r448 F1, F2: lists of Python floats and bools, as the task says (`if not depths:`
+        # raised on an array, and a numpy bool `is True` never is)
+        out.append((label, (depths.tolist(), writes.tolist()), passed))
     return out
 
 
@@ -95,14 +109,18 @@ def same_passes(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
 
 def _simulate(depths, writes, *, ties=False, mask=True, test_all=True, update=True,
               previous=False, start=np.inf, glass_ties=False, glass_fails=False,
-              glass_hides_glass=False) -> np.ndarray:  # fmt: skip
-    """The z-buffer with one rule changed (each keyword is one typical mistake)."""
+              glass_hides_glass=False, margin=0.0) -> np.ndarray:  # fmt: skip
+    """The z-buffer with one rule changed (each keyword is one typical mistake; ``margin``:
+    a fragment passes only when nearer by more than it, or, below 0, when farther by less)."""
     stored, last, out, pane = start, start, [], np.inf
+    depths, writes = np.asarray(depths, dtype=float), np.asarray(writes, dtype=bool)
     for d, write in zip(depths.tolist(), writes.tolist()):
         against = last if previous else stored
         if glass_hides_glass and not write:
             against = min(against, pane)
         ok = d <= against if ties or (glass_ties and not write) else d < against
+        if margin:
+            ok = against - d >= margin if ties else against - d > margin
         if not test_all and not write:
             ok = True
         if glass_fails and not write:
@@ -123,9 +141,12 @@ def explain_depth(args, expected, got) -> str:
         return f"{len(depths)} fragment(s) arrive"
     k = int(np.flatnonzero(got != expected)[0])
     glass = ", glass: no depth write" if not writes[k] else ""
+    held = _held_depth(depths, writes, expected, k)
+    # r448 W1: 0.2999999 beside a buffer holding 0.3 printed as "0.3" on both sides
+    shown = "nothing yet (empty)" if held is None else num(held, depths[k])
     return (
-        f"fragment {k} (depth {num(depths[k])}{glass}) meets a buffer holding "
-        f"{_held(depths, writes, expected, k)}: it {'passes' if expected[k] else 'fails'}, you "
+        f"fragment {k} (depth {num(depths[k], held)}{glass}) meets a buffer holding "
+        f"{shown}: it {'passes' if expected[k] else 'fails'}, you "
         f"said it {'passes' if got[k] else 'fails'}"
     )
 
@@ -283,7 +304,81 @@ def _shift_words(args, expected, got) -> str:
 def _shifted(args, expected, got) -> bool | None:
     if len(got) != len(expected) or len(got) < 2:
         return None  # no say: a shape, or one fragment
-    return _shift(args, expected, got) is not None
+    shift = _shift(args, expected, got)
+    if shift is None:
+        return False
+    # r448 M1: where the verdicts compared are all alike, any one slip is such a "shift"
+    # ([True, True, True] against [True, True, False]): no evidence either way
+    same = got[1:] if shift == 1 else got[:-1]
+    return None if len(set(np.asarray(same).tolist())) < 2 else True
+
+
+def _margins(depths) -> list[float]:
+    """The margins that change a verdict of ``depths``: their differences below 0.1 (the
+    random cases' grid), either sign, and ±0.05 (a margin below the grid's step; r448 W1)."""
+    d = np.asarray(depths, dtype=float)
+    gaps = {abs(a - b) for a in d.tolist() for b in d.tolist()} | {0.05}
+    return sorted(m * s for m in gaps if 0 < m < 0.1 for s in (1, -1))
+
+
+def _margin_of(args, got) -> float | None:
+    """The margin (with ``<`` or ``<=``) that gives ``got``, None where none does."""
+    depths, writes = args
+    for m in _margins(depths):
+        for ties in (False, True):
+            if np.array_equal(_simulate(depths, writes, ties=ties, margin=m), got):
+                return m
+    return None
+
+
+def _margin_words(args, expected, got) -> str:
+    depths, writes = args
+    k = int(np.flatnonzero(np.asarray(got) != expected)[0])
+    held = _held_depth(depths, writes, expected, k)
+    gap = abs(depths[k] - held) if held is not None else 0.0
+    if got[k]:
+        said = "at the same depth as" if gap == 0 else f"{num(gap)} farther than"
+        return (
+            f"a fragment {said} the depth the buffer holds passes in your answer: a tolerance "
+            "in your test (d < stored + ε)? A fragment passes only when it is strictly nearer, "
+            "with no tolerance either way"
+        )
+    return (
+        f"a fragment {num(gap)} nearer than the depth the buffer holds fails in your answer: "
+        "a margin in your test (d < stored − ε)? A fragment passes when it is strictly nearer "
+        "by any amount, d < stored, with no tolerance"
+    )
+
+
+def _margin_fits(args, expected, got) -> bool | None:
+    """A margin gives ``got``; no say where every wrong verdict is a tie's (the tie rule's
+    own mistake, named by its words)."""
+    depths, writes = args
+    wrong = np.flatnonzero(np.asarray(got) != expected)
+    held = [_held_depth(depths, writes, expected, int(k)) for k in wrong]
+    if all(h is not None and h == depths[k] for h, k in zip(held, wrong)):
+        return None
+    return _margin_of(args, got) is not None
+
+
+#: r448 W1: a margin in the test passed while every depth lay on a 0.1 grid
+MARGIN = Mistake("margin", _margin_words, fits=_margin_fits, only_whole=True)
+
+
+def _glass_against_nearest_opaque(depths, writes) -> np.ndarray:
+    """The rule for opaque fragments; glass passes when nearer than the nearest opaque
+    fragment of the whole pixel, walls drawn after it included (r448 M2)."""
+    d, w = np.asarray(depths, dtype=float), np.asarray(writes, dtype=bool)
+    right = _simulate(d, w)
+    near = d[w].min() if w.any() else np.inf
+    return np.where(w, right, d < near)
+
+
+GLASS_WHOLE_PIXEL = Mistake(
+    "glass against the whole pixel", "in your answer glass passes only when it is nearer than "
+    "the nearest opaque fragment of the whole pixel, walls drawn after it included: glass is "
+    "tested on arrival, against the depth the buffer holds then (a wall drawn later covers it "
+    "by passing later, not by failing the glass)", gives=_glass_against_nearest_opaque)  # fmt: skip
 
 
 #: r357 H1: after every cause the checker runs, and only where it fits every failing case (a
@@ -291,9 +386,10 @@ def _shifted(args, expected, got) -> bool | None:
 SHIFTED = Mistake("shifted by one", _shift_words, fits=_shifted, only_whole=True)
 
 
-def _held(depths, writes, passed, k) -> str:
+def _held_depth(depths, writes, passed, k) -> float | None:
+    """The depth the buffer holds when fragment ``k`` arrives (None: empty)."""
     written = [d for d, w, p in zip(depths[:k], writes[:k], passed[:k]) if w and p]
-    return "nothing yet (empty)" if not written else f"{num(written[-1])}"
+    return written[-1] if written else None
 
 
 #: The frame of a bar whose verdict the student got wrong (r306 FIG3: the wrong verdict was
@@ -359,7 +455,10 @@ def _buffer_line(ax, depths, writes) -> list:
 
 DEPTH_PASSES = Exercise(
     "depth_passes", depth_cases, as_passes, same_passes, explain_depth, _rule,
-    [*DEPTH_MISTAKES, SHIFTED],
+    # r448 M1: "glass is still tested" only where no passing answer lets glass behind a wall
+    # fail (it was said of glass tested against the first wall written)
+    [*(replace(m, consistent=True) if m.kind == "glass untested" else m for m in DEPTH_MISTAKES),
+     GLASS_WHOLE_PIXEL, MARGIN, SHIFTED],
     answers=(PackageAnswer(passed_on_arrival),), draw=draw_depth_passes, hints=(
         # issue 30 (r46 C2): the task asks for the buffer's rule; the first wrong try asks back
         ("A fragment passes when it is strictly nearer than the depth the buffer holds, and "
