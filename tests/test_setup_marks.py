@@ -319,3 +319,39 @@ def test_the_editors_point_4_label_is_clear_of_the_triangle():
             assert "split at u4 = 8.82" in editor.info.value
         finally:
             plt.close(editor.fig)
+
+
+def _boxes_overlap(a, b) -> bool:
+    return a.x0 < b.x1 and b.x0 < a.x1 and a.y0 < b.y1 and b.y0 < a.y1
+
+
+@pytest.mark.parametrize(
+    "size", [(9.12, 6.48), (7.2, 5.8), (9.0, 7.0)]
+)  # the player's and two others
+def test_no_tag_covers_a_vertex_label_or_the_middle_vertexs_lines(player, size):
+    """r452 01-FIG1: the snap step's "(8.5, 17.5)" lay half under "v1" in the browser (the
+    nearest place crossing no edge overlapped the label's own box); FIG2: "middle" lay over
+    the edge into v2 (and, moved off it, over the split line the split step draws)."""
+    view, trace = player.view, player.view.trace
+    marks, labels = view.setup_marks, view.triangle.labels
+    view.fig.set_size_inches(*size)
+    split = next(k for k in range(len(trace)) if trace.step(k).kind == "split")
+    for k, tags in ((0, marks.coords), (split, marks.roles)):
+        view.show_step(k, draw=False)
+        marks.update(trace, labels)
+        view.fig.canvas.draw()
+        renderer = view.fig.canvas.get_renderer()
+        for tag in tags:
+            box = tag.get_window_extent(renderer)
+            for label in labels:
+                assert not _boxes_overlap(box, label.get_window_extent(renderer)), (
+                    size, k, tag.get_text(), label.get_text())  # fmt: skip
+    box = marks.roles[ROLES.index("middle")].get_window_extent(renderer)
+    xy = np.asarray(trace.snapped, dtype=np.float64)
+    v_mid = float(trace.span.sorted_xy[1, 1])
+    lines = [(xy[k], xy[(k + 1) % 3]) for k in range(3)] + [((0, v_mid), (20, v_mid))]
+    for a, b in lines:
+        pts = view.fig.axes[0].transData.transform(np.linspace(a, b, 400))
+        inside = (pts[:, 0] > box.x0) & (pts[:, 0] < box.x1) & (pts[:, 1] > box.y0) & (
+            pts[:, 1] < box.y1)  # fmt: skip
+        assert not inside.any(), (size, a, b)

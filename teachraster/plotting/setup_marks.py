@@ -112,13 +112,21 @@ class SetupArtists(Artists):
         box = ax.get_window_extent()
         scale = ax.figure.dpi / 72.0  # display pixels per point
         centre = np.asarray(trace.snapped, dtype=np.float64).mean(axis=0)
+        # the edges, in points: "middle" lay over the edge into its vertex, which seemed to
+        # stop short of it (review r452 01-FIG2); a role goes where it crosses none
+        corners = ax.transData.transform(np.asarray(trace.snapped, dtype=np.float64)) / scale
+        edges = [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
+        # and the split line, which the middle vertex lies on: the split step draws it
+        v_mid = float(s.sorted_xy[1, 1])
+        split = ax.transData.transform([(0.0, v_mid), (float(trace.width), v_mid)]) / scale
+        edges.append((split[0], split[1]))
         for tag, role, vertex in zip(self.roles, ROLES, s.order):
             label = labels[vertex]
             at = ax.transData.transform(label.xy) / scale  # the vertex, in points
             tag.xy = label.xy
             tag.set_text(role)
             tag.set_position(_role_offset(label, role, at, box.extents / scale,
-                                          label.xy[0] < centre[0]))  # fmt: skip
+                                          label.xy[0] < centre[0], edges=edges))  # fmt: skip
 
     def _update_coords(self, trace: FillTrace, labels: list) -> None:
         """Each vertex's snapped position beside its label, written as the snap's caption
@@ -225,7 +233,13 @@ def _role_offset(label, role: str, at, extents, left: bool,
 
     def inside(offset):
         x, y = at[0] + offset[0], at[1] + offset[1]
-        return x0 + half_w <= x <= x1 - half_w and y0 + half_h <= y <= y1 - half_h
+        if not (x0 + half_w <= x <= x1 - half_w and y0 + half_h <= y <= y1 - half_h):
+            return False
+        # clear of the vertex label's own box (two bold characters): the nearest place to the
+        # vertex lay half on "v1" and hid its position's digits (review r452 01-FIG1)
+        return (
+            abs(offset[0] - dx) >= half_w + 0.8 * size or abs(offset[1] - dy) >= half_h + 0.7 * size
+        )
 
     beside = 0.85 * size + half_w + 2.0  # the label's half width, the tag's, a gap
     sides = (-1.0, 1.0) if left else (1.0, -1.0)
@@ -245,8 +259,11 @@ def _role_offset(label, role: str, at, extents, left: bool,
         halfway = sum(units) if len(units) == 2 else np.zeros(2)
         if float(np.hypot(*halfway)) > 1e-9:
             halfway = halfway / float(np.hypot(*halfway))
-            extra += [tuple(sign * (half_w + 0.5 * j * size) * halfway)
-                      for j in range(1, 16) for sign in (-1.0, 1.0)]  # fmt: skip
+            # and just above or below it: the middle vertex's bisector runs along the split
+            # line, which a role tag must not hide either (review r452 01-FIG2)
+            extra += [tuple(sign * (half_w + 0.5 * j * size) * halfway + (0.0, lift))
+                      for j in range(1, 16) for sign in (-1.0, 1.0)
+                      for lift in (0.0, half_h + 2.0, -half_h - 2.0)]  # fmt: skip
         tried = places + extra
         if rows is not None and len(rows):
             rows = np.asarray(rows, dtype=np.float64)
