@@ -147,6 +147,10 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         ),  # fmt: skip
         "W and H swapped": lod((ddx, ddy), scale="swapped"),
         "W − 1 and H − 1": level_with(ddx, ddy, (h - 1, wt - 1)),
+        # r450 H1: one scale for both axes on a non-square texture was told the generic hint
+        "max(H, W) for both": (
+            None if h == wt else _log2(max(h, wt) * max(np.hypot(*ddx), np.hypot(*ddy)))
+        ),
         "u alone": _log2(max(abs(ddx[0]), abs(ddy[0])) * wt),
         "v alone": _log2(max(abs(ddx[1]), abs(ddy[1])) * h),
         "ddx alone": lod((ddx, ddy), combine="x only"),
@@ -292,6 +296,11 @@ MISTAKES = {
         f"size = {a[3]} is (H, W): you scaled u by H = "
         f"{a[3][0]} and v by W = {a[3][1]}, or you read uv's columns as (v, u) (the same "
         "numbers); u is uv's first column and counts the W texels of a row: which scales it?"
+    ),
+    "max(H, W) for both": lambda a, e, g: (
+        f"you scaled both u and v by max(H, W) = {max(a[3])}: u counts the W = {a[3][1]} texels "
+        f"of a row and v the H = {a[3][0]} texels of a column, so a step (du, dv) crosses "
+        "(du·W, dv·H) texels"
     ),
     "W − 1 and H − 1": lambda a, e, g: (
         f"you scaled u by W − 1 = {a[3][1] - 1} and v by H − 1 = {a[3][0] - 1}: a texture of W "
