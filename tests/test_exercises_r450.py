@@ -30,3 +30,21 @@ def test_each_slip_is_named_first(label):
 def test_trilinear_hint_says_linearly():
     """H6: the generic hint's properties must not hold for a smoothstep weight."""
     assert "linearly" in TRILINEAR_HINT
+
+
+def test_a_one_element_array_is_no_number():
+    """S1: np.array([λ]) in 7.1 and a (1, 1) sample in 7.4 passed (shapes must match); a (3, 2)
+    answer keeps its own words (`return uv`)."""
+    lod = sv._r426(
+        "pixel_lod", "_lod = pixel_lod\ndef pixel_lod(*a):\n    return np.array([_lod(*a)])\n"
+    )
+    said = ex.check("pixel_lod", lod).failures[0].explanation
+    assert "an array of shape (1,), not one number" in said, said
+    sample = sv._r426("pixel_sample", "_ps = pixel_sample\ndef pixel_sample(*a):\n"
+                      "    return np.atleast_2d(_ps(*a))\n")  # fmt: skip
+    said = ex.check("pixel_sample", sample).failures[0].explanation
+    assert "returned an array of shape (1, 1)" in said, said
+    junk = sv._r426("pixel_sample", "def pixel_sample(pyramid, xy, w, uv, row, col, wrap):\n"
+                    "    return uv\n")  # fmt: skip
+    said = ex.check("pixel_sample", junk).failures[0].explanation
+    assert "returns its argument uv unchanged" in said, said

@@ -26,11 +26,12 @@ import numpy as np
 from ..core.barycentrics import barycentric
 from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
-from .answers import as_number
+from .answers import as_number, short
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .level_of_detail import level_with
 from .quad_difference import FLOOR, inside, lanes, value_at
+from .running import WrongAnswerType
 from .scalars import num, vec
 from .tolerance import close
 
@@ -375,10 +376,24 @@ HINT = (
 _RUNNING: dict = {}
 
 
+def as_lod(value):
+    """One number: an array that holds one (shape (1,), a row of barycentric's (1, 3) kept)
+    is not one, as docs/exercises.md says shapes must match (r450 S1: it passed)."""
+    try:
+        shape, size = np.shape(value), np.size(value)
+    except Exception:  # noqa: BLE001 - as_number explains what this is
+        shape, size = (), 0
+    if shape and size == 1 and not isinstance(value, str):  # other sizes: as_number's words
+        raise WrongAnswerType(f"returned {short(value)}, an array of shape {shape}, not one "
+                              "number: λ is one number (float(…), or [0] where a (1, …) row "
+                              "of barycentric's was kept)")  # fmt: skip
+    return as_number(value)
+
+
 def _call(fn, args):
     """The student's answer on one case, the function noted for :func:`_rule`."""
     _RUNNING["fn"] = getattr(fn, "fn", fn)  # the checker's recorder holds it as ``fn``
-    return as_number(fn(*args))
+    return as_lod(fn(*args))
 
 
 def again(fn, args) -> float | None:
@@ -617,7 +632,7 @@ def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
 
 
 PIXEL_LOD = Exercise(
-    "pixel_lod", lod_cases, as_number, same_lod, explain_lod, _rule,
+    "pixel_lod", lod_cases, as_lod, same_lod, explain_lod, _rule,
     (*variant_mistakes(_variants, MISTAKES), PER_TRIANGLE),  # affine's λ is one per triangle
     answers=(PackageAnswer(mip_level), PackageAnswer(lane_values)),
     draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True, call=_call,

@@ -333,7 +333,21 @@ def _call(fn, args):
         words = _none_from_own(args)
         if words is not None:
             raise WrongAnswerType(words)
-    return as_texel_value(answer)
+    return as_sample(answer)
+
+
+def as_sample(value) -> np.ndarray:
+    """A number or one value per channel: an array of 2 or more axes (a (1, 1) or (1, 3) row
+    of barycentric's kept) is not, as docs/exercises.md says shapes must match (r450 S1)."""
+    try:
+        shape = np.shape(value)
+    except Exception:  # noqa: BLE001 - as_texel_value explains what this is
+        shape = ()
+    if len(shape) >= 2 and all(n == 1 for n in shape[:-1]):
+        raise WrongAnswerType(f"returned an array of shape {shape}: the sample is a number, or "
+                              "one value per channel, as trilinear returns it (a (1, …) row of "
+                              "barycentric's kept? index it [0])")  # fmt: skip
+    return as_texel_value(value)
 
 
 #: The student's own functions 7.4 calls, and the arguments of each that the words quote.
@@ -697,7 +711,7 @@ def draw_sample_case(ax, case, got):
 
 
 PIXEL_SAMPLE = Exercise(
-    "pixel_sample", sample_cases, as_texel_value, same_value, explain_sample, _rule,
+    "pixel_sample", sample_cases, as_sample, same_value, explain_sample, _rule,
     (*OWN, *variant_mistakes(_variants, MISTAKES)), call=_call,
     answers=(PackageAnswer(sample, when=lambda a: a.get("filter") == "trilinear"),
              PackageAnswer(mip_level), PackageAnswer(lane_values)),
