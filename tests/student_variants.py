@@ -9892,3 +9892,85 @@ DIFFERENT["depth_passes with `if not depths` and `w is True` (lists)"] = (
     "depth_passes",
     _p448_list_idioms,
 )
+# == r450 (fixex07s, exercise 07: 7.4's (u, v) taken modulo 1 by hand was told "is wrap passed
+# on?"; λ doubled, the pyramid reversed, (u, v) at (col + 1, row + 1); 7.1's max(H, W) for both
+# axes; 7.2's lesson-09 cell with its 8 pasted, 'clamp' as a border of 0; 7.3's smoothstep weight
+# and λ rounded: each told the generic hint, now named) ======================================
+_R450_SAMPLE = """
+def pixel_sample(pyramid, xy, w, uv, row, col, wrap):
+    lod = {LOD}
+    lam = barycentric(xy, [[{X}, {Y}]])
+    uv_here = perspective_weights(lam, w, extrapolate=True)[0] @ np.asarray(uv, float)
+    return trilinear({PYR}, {UV}, lod, wrap)
+"""
+_R450_LOD = "pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)"
+
+
+def _r450_sample(lod=_R450_LOD, x="col + 0.5", y="row + 0.5", pyr="pyramid", uv="uv_here"):
+    cell = _R450_SAMPLE.format(LOD=lod, X=x, Y=y, PYR=pyr, UV=uv)
+    return _r426("pixel_sample", cell)
+
+
+_R450_LOD_MAX_SIZE = """
+def pixel_lod(xy, w, uv, size, row, col):
+    uv = np.asarray(uv, dtype=float)
+    def at(x, y):
+        return perspective_weights(barycentric(xy, [[x, y]]), w, extrapolate=True)[0] @ uv
+    r0, c0 = row - row % 2, col - col % 2
+    ul = at(c0 + .5, r0 + .5); ddx = at(c0 + 1.5, r0 + .5) - ul; ddy = at(c0 + .5, r0 + 1.5) - ul
+    return float(np.log2(max(size) * max(np.hypot(*ddx), np.hypot(*ddy))))
+"""
+_R450_BILINEAR = """
+def bilinear(texture, uv, wrap):
+    tex = np.asarray(texture, float); h, w = tex.shape[:2]
+    x, y = uv[0] * {W} - .5, uv[1] * {H} - .5
+    x0, y0 = int(np.floor(x)), int(np.floor(y)); fx, fy = x - x0, y - y0
+    def T(r, c):
+        if wrap == "repeat":
+            return tex[r % h, c % w]
+        {CLAMP}
+    return ((1 - fy) * ((1 - fx) * T(y0, x0) + fx * T(y0, x0 + 1))
+            + fy * ((1 - fx) * T(y0 + 1, x0) + fx * T(y0 + 1, x0 + 1)))
+"""
+_R450_EDGE = "return tex[min(max(r, 0), h - 1), min(max(c, 0), w - 1)]"
+_R450_BORDER = "return tex[r, c] if 0 <= r < h and 0 <= c < w else 0 * tex[0, 0]"
+_R450_TRILINEAR = """
+def trilinear(pyramid, uv, lod, wrap="repeat"):
+    q = len(pyramid) - 1
+    lam = min(max({LOD}, 0.0), q); lo = int(np.floor(lam)); hi = min(lo + 1, q); t = lam - lo
+    t = {T}
+    return (1 - t) * bilinear(pyramid[lo], uv, wrap) + t * bilinear(pyramid[hi], uv, wrap)
+"""
+#: label: (exercise, function, words its first explanation must hold, its kind).
+R450 = {
+    "pixel sample with (u, v) taken modulo 1": (
+        "pixel_sample", _r450_sample(uv="uv_here % 1.0"),
+        "into [0, 1) yourself: wrapping is what trilinear's `wrap` does",
+        "(u, v) wrapped by hand"),
+    "pixel sample with λ doubled": (
+        "pixel_sample", _r450_sample(lod="2 * " + _R450_LOD), "your λ is twice 7.1's", "2λ"),
+    "pixel sample with the pyramid reversed": (
+        "pixel_sample", _r450_sample(pyr="pyramid[::-1]"), "you filtered the pyramid reversed",
+        "pyramid reversed"),
+    "pixel sample with (u, v) at (col + 1, row + 1)": (
+        "pixel_sample", _r450_sample(x="col + 1.0", y="row + 1.0"),
+        "the pixel's lower-right corner", "(u, v) at (col + 1, row + 1)"),
+    "pixel lod with max(H, W) for both axes": (
+        "pixel_lod", _r426("pixel_lod", _R450_LOD_MAX_SIZE),
+        "you scaled both u and v by max(H, W) = 128", "max(H, W) for both"),
+    "bilinear with lesson 09's 8 pasted": (
+        "bilinear", _r426("bilinear", _R450_BILINEAR.format(W=8, H=8, CLAMP=_R450_EDGE)),
+        "as if the texture were 8 × 8 (x = u·8 − ½, lesson 09's texture)", "lesson 09's 8 × 8"),
+    "bilinear with 'clamp' as a border of 0": (
+        "bilinear", _r426("bilinear", _R450_BILINEAR.format(W="w", H="h", CLAMP=_R450_BORDER)),
+        "beyond the border you blended in 0", "'clamp' as a border of 0"),
+    "trilinear with a smoothstep weight": (
+        "trilinear", _r426("trilinear", _R450_TRILINEAR.format(LOD="lod", T="t * t * (3 - 2 * t)")),
+        "eased (3t² − 2t³, a smoothstep): the value must change linearly between levels",
+        "weight eased (smoothstep)"),
+    "trilinear with λ rounded to 2 decimals": (
+        "trilinear", _r426("trilinear", _R450_TRILINEAR.format(LOD="round(lod, 2)", T="t")),
+        "rounded to 2 decimals: use λ as it comes, unrounded", "λ rounded"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R450.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R450.items()})

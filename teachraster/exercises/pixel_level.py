@@ -26,11 +26,12 @@ import numpy as np
 from ..core.barycentrics import barycentric
 from ..pipeline.texture_filters import mip_level
 from ..pipeline.texturing.quad_derivatives import lane_values
-from .answers import as_number
+from .answers import as_number, short
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .level_of_detail import level_with
 from .quad_difference import FLOOR, inside, lanes, value_at
+from .running import WrongAnswerType
 from .scalars import num, vec
 from .tolerance import close
 
@@ -147,6 +148,10 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         ),  # fmt: skip
         "W and H swapped": lod((ddx, ddy), scale="swapped"),
         "W − 1 and H − 1": level_with(ddx, ddy, (h - 1, wt - 1)),
+        # r450 H1: one scale for both axes on a non-square texture was told the generic hint
+        "max(H, W) for both": (
+            None if h == wt else _log2(max(h, wt) * max(np.hypot(*ddx), np.hypot(*ddy)))
+        ),
         "u alone": _log2(max(abs(ddx[0]), abs(ddy[0])) * wt),
         "v alone": _log2(max(abs(ddx[1]), abs(ddy[1])) * h),
         "ddx alone": lod((ddx, ddy), combine="x only"),
@@ -293,6 +298,11 @@ MISTAKES = {
         f"{a[3][0]} and v by W = {a[3][1]}, or you read uv's columns as (v, u) (the same "
         "numbers); u is uv's first column and counts the W texels of a row: which scales it?"
     ),
+    "max(H, W) for both": lambda a, e, g: (
+        f"you scaled both u and v by max(H, W) = {max(a[3])}: u counts the W = {a[3][1]} texels "
+        f"of a row and v the H = {a[3][0]} texels of a column, so a step (du, dv) crosses "
+        "(du·W, dv·H) texels"
+    ),
     "W − 1 and H − 1": lambda a, e, g: (
         f"you scaled u by W − 1 = {a[3][1] - 1} and v by H − 1 = {a[3][0] - 1}: a texture of W "
         "texels spans W texel widths from u = 0 to u = 1; how many texels does a step of u "
@@ -366,10 +376,24 @@ HINT = (
 _RUNNING: dict = {}
 
 
+def as_lod(value):
+    """One number: an array that holds one (shape (1,), a row of barycentric's (1, 3) kept)
+    is not one, as docs/exercises.md says shapes must match (r450 S1: it passed)."""
+    try:
+        shape, size = np.shape(value), np.size(value)
+    except Exception:  # noqa: BLE001 - as_number explains what this is
+        shape, size = (), 0
+    if shape and size == 1 and not isinstance(value, str):  # other sizes: as_number's words
+        raise WrongAnswerType(f"returned {short(value)}, an array of shape {shape}, not one "
+                              "number: λ is one number (float(…), or [0] where a (1, …) row "
+                              "of barycentric's was kept)")  # fmt: skip
+    return as_number(value)
+
+
 def _call(fn, args):
     """The student's answer on one case, the function noted for :func:`_rule`."""
     _RUNNING["fn"] = getattr(fn, "fn", fn)  # the checker's recorder holds it as ``fn``
-    return as_number(fn(*args))
+    return as_lod(fn(*args))
 
 
 def again(fn, args) -> float | None:
@@ -608,7 +632,7 @@ def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
 
 
 PIXEL_LOD = Exercise(
-    "pixel_lod", lod_cases, as_number, same_lod, explain_lod, _rule,
+    "pixel_lod", lod_cases, as_lod, same_lod, explain_lod, _rule,
     (*variant_mistakes(_variants, MISTAKES), PER_TRIANGLE),  # affine's λ is one per triangle
     answers=(PackageAnswer(mip_level), PackageAnswer(lane_values)),
     draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True, call=_call,

@@ -149,6 +149,10 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
     return {
         "channels averaged": None if one else float(np.mean(tri())),
         "first channel only": None if one else float(np.ravel(tri())[0]),
+        # r450 M1: (u, v) taken modulo 1 by hand was told "is wrap passed on?"
+        "(u, v) wrapped by hand": (
+            None if wrap == "repeat" or np.all((at >= 0) & (at < 1)) else tri(u=np.mod(at, 1.0))
+        ),
         "wrap fixed to 'repeat'": tri(mode="repeat"),
         "wrap fixed to 'clamp'": tri(mode="clamp"),
         "the quad's (u, v)": tri(u=lane),
@@ -172,6 +176,9 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
         "λ clamped to q − 1": tri(lam=min(max(lod, 0.0), len(pyramid) - 2)),
         "⌈λ⌉": tri(lam=float(np.ceil(lod))),
         "λ + ½": tri(lam=lod + 0.5),
+        "2λ": tri(lam=2 * lod),  # r450 H8: these three were told the generic questions
+        "pyramid reversed": trilinear_with(list(pyramid)[::-1], at, lod, wrap),
+        "(u, v) at (col + 1, row + 1)": tri(u=_uv(xy, w, uv, col + 1, row + 1)),
         "|λ|": tri(lam=abs(lod)),
         "λ not clamped": tri(clamp="weight"),
         "nearest level": tri(levels="nearest"),
@@ -209,6 +216,11 @@ def _swapped_centre(args, expected, got) -> str:
 MISTAKES = {
     "channels averaged": _channels("you averaged its channels into one number"),
     "first channel only": _channels("you kept its first channel alone"),
+    "(u, v) wrapped by hand": lambda a, e, g: (
+        f"you wrapped the pixel's (u, v) = {vec(pixel_uv(*a[1:6]))} into [0, 1) yourself: "
+        f"wrapping is what trilinear's `wrap` does, and with wrap={a[6]!r} a (u, v) beyond the "
+        "texture reads its border texels, not the other side: pass (u, v) unchanged"
+    ),
     "wrap fixed to 'repeat'": _fixed_wrap,
     "wrap fixed to 'clamp'": _fixed_wrap,
     "the quad's (u, v)": lambda a, e, g: (
@@ -271,6 +283,13 @@ MISTAKES = {
     "jumps; 7.3's trilinear blends the two levels around λ itself",
     "λ + ½": "your λ is 7.1's plus ½ (a bias, or rounding to the nearer level prepared): "
     "7.3's trilinear takes λ itself",
+    "2λ": "your λ is twice 7.1's (log2 ρ² for log2 ρ?): 7.3's trilinear takes 7.1's λ itself",
+    "pyramid reversed": "you filtered the pyramid reversed: level 0, pyramid[0], is the "
+    "full-size texture and the last level is 1 × 1; λ counts levels from level 0",
+    "(u, v) at (col + 1, row + 1)": lambda a, e, g: (
+        f"you took (u, v) at ({a[5] + 1}, {a[4] + 1}) in (x, y), the pixel's lower-right "
+        f"corner: pixel ({a[4]}, {a[5]}) is shaded at its centre (col + ½, row + ½)"
+    ),
     "|λ|": "your λ is |λ|: the texture is magnified here (λ < 0, level 0); a negative λ "
     "is clamped to 0, not turned positive",
     "λ not clamped": "λ lies outside the pyramid here: what must the sampler do with it before "
@@ -314,7 +333,21 @@ def _call(fn, args):
         words = _none_from_own(args)
         if words is not None:
             raise WrongAnswerType(words)
-    return as_texel_value(answer)
+    return as_sample(answer)
+
+
+def as_sample(value) -> np.ndarray:
+    """A number or one value per channel: an array of 2 or more axes (a (1, 1) or (1, 3) row
+    of barycentric's kept) is not, as docs/exercises.md says shapes must match (r450 S1)."""
+    try:
+        shape = np.shape(value)
+    except Exception:  # noqa: BLE001 - as_texel_value explains what this is
+        shape = ()
+    if len(shape) >= 2 and all(n == 1 for n in shape[:-1]):
+        raise WrongAnswerType(f"returned an array of shape {shape}: the sample is a number, or "
+                              "one value per channel, as trilinear returns it (a (1, …) row of "
+                              "barycentric's kept? index it [0])")  # fmt: skip
+    return as_texel_value(value)
 
 
 #: The student's own functions 7.4 calls, and the arguments of each that the words quote.
@@ -678,7 +711,7 @@ def draw_sample_case(ax, case, got):
 
 
 PIXEL_SAMPLE = Exercise(
-    "pixel_sample", sample_cases, as_texel_value, same_value, explain_sample, _rule,
+    "pixel_sample", sample_cases, as_sample, same_value, explain_sample, _rule,
     (*OWN, *variant_mistakes(_variants, MISTAKES)), call=_call,
     answers=(PackageAnswer(sample, when=lambda a: a.get("filter") == "trilinear"),
              PackageAnswer(mip_level), PackageAnswer(lane_values)),

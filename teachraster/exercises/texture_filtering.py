@@ -116,6 +116,8 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     if clamp == "uv, upper index":  # r362: (u, v) wrapped or clamped, the upper index clamped
         u, v = (np.mod(u, 1.0), np.mod(v, 1.0)) if wrap == "repeat" else np.clip([u, v], 0, 1)
     su, sv = (h, w) if scale == "swapped" else (w, h)  # r362: u scaled by H and v by W
+    if scale == "eight":  # r450 H3: lesson 09's cell with its 8 × 8 texture pasted
+        su, sv = 8, 8
     x, y = u * (su + span) - centre, v * (sv + span) - centre
     if clamp == "x mod" and wrap == "repeat":  # r375 F7: x = u·W − ½ wrapped, texels clamped
         x, y = np.mod(x, w), np.mod(y, h)
@@ -132,14 +134,21 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     if swap == "x for y":  # r375 F3: the rows blended by x's fraction
         fy = fx
     mode = wrap_as or wrap
+    border = mode == "border" and wrap == "clamp"  # r450 H4: 0 beyond the border for 'clamp'
+    if mode == "border":
+        mode = wrap
     if mode == "swapped":  # the two modes exchanged
         mode = "clamp" if wrap == "repeat" else "repeat"
 
     def index(i, n, tiled=None):
         tiled = mode == "repeat" if tiled is None else tiled
+        if border:
+            return int(i)
         return int(np.mod(i, n)) if tiled else int(np.clip(i, 0, n - 1))
 
     def texel(r, c):
+        if border and not (0 <= r < h and 0 <= c < w):
+            return 0.0 * tex[0, 0]
         return tex[c, r] if transpose == "index" else tex[r, c]
 
     rows_tiled = False if mode == "columns" else None  # r286: "repeat" on the columns only
@@ -320,7 +329,11 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     # r362: told only the rule (mip_level names the same slip)
     "scale": [Slip("u·H and v·W", lambda a, e, g: f"u runs along the W = {a[0].shape[1]} "
                    f"columns and v along the H = {a[0].shape[0]} rows; you scaled u by H and v "
-                   "by W: x = u·W − ½, y = v·H − ½", "swapped")],
+                   "by W: x = u·W − ½, y = v·H − ½", "swapped"),
+              Slip("lesson 09's 8 × 8", lambda a, e, g: "you placed the texels as if the "
+                   "texture were 8 × 8 (x = u·8 − ½, lesson 09's texture): this one is H×W = "
+                   f"{a[0].shape[0]}×{a[0].shape[1]}; take W and H from the array "
+                   "(texture.shape[:2])", "eight")],
     "swap": [Slip("weights swapped", "the weight of the right (lower) texel is the fraction "
                   "x − ⌊x⌋ (y − ⌊y⌋); you gave it to the left (upper) one", True),
              # r40 07-1: swapped along one axis, this was called "nearest filtering"
@@ -340,6 +353,10 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
     "wrap_as": [Slip("always clamp", _wrap_words("clamp"), "clamp"),
                 Slip("always repeat", _wrap_words("repeat"), "repeat"),
                 Slip("wrap modes swapped", _modes_swapped_words, "swapped"),
+                Slip("'clamp' as a border of 0", "beyond the border you blended in 0 (GL's "
+                     "CLAMP_TO_BORDER with a black border): wrap 'clamp' extends the border "
+                     "texels outwards (CLAMP_TO_EDGE): clamp the texel indices to [0, W − 1] "
+                     "and [0, H − 1]", "border"),
                 # r390 N3: told the method ("which texel centres enclose (u, v)")
                 Slip("modulo H and W swapped", lambda a, e, g: "you wrapped the column "
                      f"index modulo H = {a[0].shape[0]} and the row index modulo W = "
@@ -859,7 +876,7 @@ def explain_trilinear(args, expected, got) -> str:
 
 
 def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="right",
-                   levels="two", texels="bilinear"):  # fmt: skip
+                   levels="two", texels="bilinear", digits=None):  # fmt: skip
     """trilinear with the usual mistakes as knobs (the defaults are GL's LINEAR_MIPMAP_LINEAR).
 
     ``clamp`` "weight" clamps the levels but weighs them by the raw λ − ⌊λ⌋, "extrapolate"
@@ -869,10 +886,12 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     floor" (levels round(λ) and round(λ) + 1, weighted by λ − round(λ)), "round lower" (the
     same levels, weighted by λ − ⌊λ⌋), "coarsest first" (level d read as pyramid[q − d]);
     ``weights="half"`` (½ each between two levels); ``clamp="q - 1"``
-    clamps λ to [0, q − 1]; ``texels="level 0 size"`` filters every level with level 0's W
+    clamps λ to [0, q − 1]; ``weights="smoothstep"`` eases the weight, 3t² − 2t³ (r450 H6);
+    ``digits`` rounds λ to that many decimals first (r450 H7); ``texels="level 0 size"`` filters every level with level 0's W
     and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
     q = len(pyramid) - 1
+    lod = lod if digits is None else round(float(lod), digits)
     if clamp in ("lambda", "q - 1"):  # "q - 1": r286, the last level taken for q − 1
         lam = min(max(lod, 0.0), q if clamp == "lambda" else max(q - 1, 0))
         rounds = levels in ("round for floor", "round lower")
@@ -915,6 +934,8 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
         t = 1 - t
     if weights == "half":  # r375 F9: ½ each wherever λ lies between two levels
         t = 0.5 if 0 < t < 1 else t
+    if weights == "smoothstep":
+        t = t * t * (3 - 2 * t)
     return (1 - t) * a + t * b
 
 
@@ -1008,7 +1029,16 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
                 # r375 F9: told only the rule
                 Slip("weights ½ each", _tri_words("you weighted the two levels ½ each whatever "
                      "λ's fraction, so the value jumps as λ moves; trilinear blends levels {d0} "
-                     "and {d1}, level {d1} weighted by λ − ⌊λ⌋ = {t}"), "half")],
+                     "and {d1}, level {d1} weighted by λ − ⌊λ⌋ = {t}"), "half"),
+                # r450 H6: the generic hint's properties (continuous, exact at whole λ) hold
+                Slip("weight eased (smoothstep)", _tri_words("your weight of level {d1} is "
+                     "eased (3t² − 2t³, a smoothstep): the value must change linearly between "
+                     "levels, level {d1} weighted by λ − ⌊λ⌋ = {t} itself"), "smoothstep")],
+    # r450 H7: λ rounded before use was told the generic hint
+    "digits": [Slip("λ rounded", _tri_words("your value is that of λ = {lod} rounded to "
+                    "1 decimal: use λ as it comes, unrounded"), 1),
+               Slip("λ rounded", _tri_words("your value is that of λ = {lod} rounded to "
+                    "2 decimals: use λ as it comes, unrounded"), 2)],
     "levels": [
         Slip("nearest level", _tri_words("that is level {near} alone (the nearest); trilinear "
              "blends levels {d0} and {d1}"), "nearest"),
@@ -1092,7 +1122,8 @@ TRILINEAR_RULE = (
 )
 TRILINEAR_HINT = (
     ": which levels does this λ lie between, and which does the pyramid have? Weigh two levels "
-    "so that the value changes continuously with λ and is a level's own value at a whole λ"
+    "so that the value changes continuously, and linearly, with λ and is a level's own value "
+    "at a whole λ"
 )
 
 
