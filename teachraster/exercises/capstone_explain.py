@@ -43,7 +43,7 @@ from . import capstone_samples as samples
 from . import output
 from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
-from .coverage_checks import AT_VERTICES
+from .coverage_checks import AT_VERTICES, ON_BOX_SIDE
 from .diagnosis import honest_on
 from .exercise import Knobs
 from .interpolation import rounded_decimals, rounded_words
@@ -290,10 +290,11 @@ PLACES = {
 
 def _changes(kind: str, words, where: str) -> bool:
     """Whether typical mistake ``kind`` (its ``words``) of ``covers`` can change the answer at
-    a point ``where`` (:func:`.capstone_samples.point_place`; "" when unknown): a tie rule's only on an edge, a
-    special case for vertices only at a vertex."""
-    if where in ("inside", "outside") and _about_ties(kind):
-        return False
+    a point ``where`` (:func:`.capstone_samples.point_place`; "" when unknown): a tie rule's
+    and a bounding-box test's with <= only on an edge or at a vertex, a special case for
+    vertices only at a vertex."""
+    if where in ("inside", "outside") and (_about_ties(kind) or words == ON_BOX_SIDE):
+        return False  # a box test with <= refuses only centres on a left or top edge (r438 H3)
     return not (words == AT_VERTICES and where not in ("", "vertex"))
 
 
