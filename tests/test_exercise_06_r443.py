@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from student_variants import R443, R443_RIGHT
+from variant_checks import assert_first_named, assert_passes
 
 from teachraster import exercises as ex
 from teachraster.core.edges import edge_function
@@ -37,18 +38,12 @@ def test_the_sliver_is_collinear_as_given_only_and_a_fixed_case():
 
 @pytest.mark.parametrize("label", list(R443))
 def test_each_variant_is_named_on_every_failure(label):
-    name, fn, words, kind = R443[label]
-    report = ex.check(name, fn)
-    assert not report.passed
-    assert words in report.failures[0].explanation, str(report)
-    kinds = {f.kind for f in report.failures if "raised" not in f.explanation}
-    assert kinds == {kind}, str(report)
+    assert_first_named(*R443[label], every_failure=True)
 
 
 @pytest.mark.parametrize("label", list(R443_RIGHT))
 def test_each_correct_variant_passes(label):
-    name, fn = R443_RIGHT[label]
-    assert ex.check(name, fn).passed, label
+    assert_passes(*R443_RIGHT[label])
 
 
 def test_the_resolve_scene_names_the_cause_of_its_pixel():

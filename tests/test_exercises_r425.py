@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 import reasoning_solutions as sol
 from student_variants import DIFFERENT, R425
+from variant_checks import assert_first_named, assert_passes
 
 from teachraster import exercises as ex
 from teachraster.exercises import decal_bias as db
@@ -65,20 +66,12 @@ def test_z_min_on_a_crossing_is_a_fixed_case():
 @pytest.mark.parametrize("label", sorted(R425))
 def test_each_r425_variant_is_named_by_its_cause(label):
     """F1–F5: every r425 wrong variant fails, its first failure named by its cause."""
-    name, fn, words, kind = R425[label]
-    tries.forget_hints(name)
-    report = ex.check(name, fn)
-    assert not report.passed, label
-    first = report.failures[0]
-    assert words in first.explanation and first.kind == kind, (label, first.kind, first.explanation)
-    tries.forget_hints(name)
+    assert_first_named(*R425[label])
 
 
 @pytest.mark.parametrize("label", sorted(k for k in DIFFERENT if "(r425" in k))
 def test_each_r425_right_variant_passes(label):
-    name, fn = DIFFERENT[label]
-    report = ex.check(name, fn)
-    assert report.passed, (label, str(report))
+    assert_passes(*DIFFERENT[label])
 
 
 def test_float32_answers_pass_either_side_by_their_rounding():

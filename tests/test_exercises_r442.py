@@ -12,31 +12,23 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from student_variants import DIFFERENT, R442, R442_MORE
+from variant_checks import assert_first_named, assert_passes
 
 from teachraster import exercises as ex
 from teachraster.exercises import near_plane as npl
 from teachraster.exercises import reverse_z_worst as rzw
-from teachraster.exercises import tries
 
 
 @pytest.mark.parametrize("label", sorted(R442) + sorted(R442_MORE))
 def test_each_r442_variant_is_named_by_its_cause(label):
     """Every r442 wrong variant fails, its first failure named by its cause (R442_MORE: the
     second round, room to first order at the object or midpoint among them, which passed)."""
-    name, fn, words, kind = {**R442, **R442_MORE}[label]
-    tries.forget_hints(name)
-    report = ex.check(name, fn)
-    assert not report.passed, label
-    first = report.failures[0]
-    assert words in first.explanation and first.kind == kind, (label, first.kind, first.explanation)
-    tries.forget_hints(name)
+    assert_first_named(*{**R442, **R442_MORE}[label])
 
 
 @pytest.mark.parametrize("label", sorted(k for k in DIFFERENT if "(r442" in k))
 def test_each_r442_right_variant_passes(label):
-    name, fn = DIFFERENT[label]
-    report = ex.check(name, fn)
-    assert report.passed, (label, str(report))
+    assert_passes(*DIFFERENT[label])
 
 
 def test_a_list_of_one_is_refused_as_an_array_of_one_is():
