@@ -114,8 +114,7 @@ class SetupArtists(Artists):
         centre = np.asarray(trace.snapped, dtype=np.float64).mean(axis=0)
         # the edges, in points: "middle" lay over the edge into its vertex, which seemed to
         # stop short of it (review r452 01-FIG2); a role goes where it crosses none
-        corners = ax.transData.transform(np.asarray(trace.snapped, dtype=np.float64)) / scale
-        edges = [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
+        edges = _edges_in_points(ax, trace.snapped, scale)
         # and the split line, which the middle vertex lies on: the split step draws it
         v_mid = float(s.sorted_xy[1, 1])
         split = ax.transData.transform([(0.0, v_mid), (float(trace.width), v_mid)]) / scale
@@ -147,8 +146,7 @@ class SetupArtists(Artists):
         centre = xy.mean(axis=0)
         # the edges, in points: a position tag is long, and beside its label it cut an edge or
         # floated columns from its vertex (review r265 01-FIG3); it goes where it crosses none
-        corners = ax.transData.transform(xy) / scale
-        edges = [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
+        edges = _edges_in_points(ax, xy, scale)
         # the grid's row boundaries (whole y), in points: a tag centred on one covers no pixel
         # centre when less than a pixel high (review r291 02-3: "(14.5, 6.25)" on row 6's)
         rows = (
@@ -183,6 +181,12 @@ class SetupArtists(Artists):
         roles = sorted_ and trace is not None and trace.span is not None
         for tag in self.roles:
             tag.set_visible(roles)
+
+
+def _edges_in_points(ax, xy, scale: float) -> list:
+    """The triangle ``xy``'s three edges as pairs of points on the screen, in points."""
+    corners = ax.transData.transform(np.asarray(xy, dtype=np.float64)) / scale
+    return [(corners[k], corners[(k + 1) % 3]) for k in range(3)]
 
 
 def _clear_of(offset, inside, edges, at, half_w: float, half_h: float) -> bool:
