@@ -21,9 +21,10 @@ from teachraster.study.hardcases import naive_coverage
 NOTEBOOK = Path(__file__).parents[1] / "notebooks/exercises/10_hard_cases.ipynb"
 
 
-def _own_fill(v, width, height, origin=(0, 0), absolute=False):
+def _own_fill(v, width, height, origin=(0, 0), absolute=False, eps=None):
     """The top-left rule's fill in float64, written out (r441 W3: the package's naive_coverage
-    with the top-left rule is the answer itself, and is not counted)."""
+    with the top-left rule is the answer itself, and is not counted); with ``eps``, the ties
+    decided by E > −ε and E > ε instead of E ≥ 0 and E > 0."""
     v = np.asarray(v, dtype=float)
     (ax, ay), (bx, by), (cx, cy) = v
     v = v[[0, 2, 1]] if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0 else v
@@ -37,7 +38,10 @@ def _own_fill(v, width, height, origin=(0, 0), absolute=False):
         else:
             e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
         tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
-        inside &= (e >= 0) if tie else (e > 0)
+        if eps is None:
+            inside &= (e >= 0) if tie else (e > 0)
+        else:
+            inside &= (e > -eps) if tie else (e > eps)
     return inside
 
 
@@ -76,17 +80,7 @@ def _shifted_absolute(xy, width, height, origin=(0, 0)):
 def _tiny_epsilon(xy, width, height, origin=(0, 0)):
     """r373 C9: an ε of 1e-9 px², below E's step on the snapped grid, as a float image."""
     v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
-    (ax, ay), (bx, by), (cx, cy) = v
-    v = v[[0, 2, 1]] if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) < 0 else v
-    y = origin[0] + np.arange(height)[:, None] + 0.5
-    x = origin[1] + np.arange(width)[None, :] + 0.5
-    inside = np.ones((height, width), dtype=bool)
-    for k in range(3):
-        a, b = v[k], v[(k + 1) % 3]
-        e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
-        tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
-        inside &= (e > -1e-9) if tie else (e > 1e-9)
-    return inside * 1.0
+    return _own_fill(v, width, height, origin, eps=1e-9) * 1.0
 
 
 @pytest.mark.parametrize("fn", [_int64_bias, _shifted_absolute, _tiny_epsilon])
