@@ -9974,3 +9974,90 @@ R450 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R450.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R450.items()})
+
+
+# == r457 (rf10, exercise 10): the reader's wrong pass (W1, an area in float32), misnamed (M1 +origin
+# on the vertices, M2 lesson 02's code in int32) and half-named (H1-H3) slips, and two correct fills
+def _rf457(snap_of=None, area_of=None, shift=1):
+    """robust_fill in the window's frame, right but for how it snaps (``snap_of(raw) ->
+    (vertices, (x0, y0))``: the vertices in a frame whose point (0, 0) is (x0, y0) on screen),
+    the vertices its area reads (``area_of(v)``, v on screen) or ``shift``: the sign with which
+    the window's origin moves the vertices into the window's frame."""
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        raw = np.asarray(xy, dtype=float)
+        v, (x0, y0) = snap_of(raw) if snap_of else (np.rint(raw * 256) / 256, (0.0, 0.0))
+        (ax, ay), (bx, by), (cx, cy) = v if area_of is None else area_of(v)  # on screen
+        v = v - shift * np.array([origin[1], origin[0]])
+        area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        if area == 0:
+            return np.zeros((height, width), dtype=bool)
+        v = v[[0, 2, 1]] if area < 0 else v
+        rows = np.arange(height)[:, None] + 0.5 - y0
+        cols = np.arange(width)[None, :] + 0.5 - x0
+        inside = np.ones((height, width), dtype=bool)
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            e = (b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0])
+            tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            inside &= (e >= 0) if tie else (e > 0)
+        return inside
+
+    return robust_fill
+
+
+def _lesson02_fill(int_type=np.int64, bias_on_top_left=False):
+    """Lesson 02 §5b's biased_coverage with the window's origin added (r457 T1: it passes),
+    its vertices in ``int_type``, or its bias of −1 on the top and left edges (H1)."""
+
+    def E(a, b, u, v):
+        return (b[0] - a[0]) * (v - a[1]) - (b[1] - a[1]) * (u - a[0])
+
+    def robust_fill(xy, width, height, origin=(0, 0)):
+        P = np.round(np.asarray(xy, dtype=float) * 256).astype(int_type)
+        if E(*P[:2], *P[2]) < 0:
+            P = P[[0, 2, 1]]
+        u, v = np.meshgrid((2 * (origin[1] + np.arange(width)) + 1) * 128,
+                           (2 * (origin[0] + np.arange(height)) + 1) * 128)  # fmt: skip
+        cover = np.ones((height, width), dtype=bool)
+        for a, b in [(P[0], P[1]), (P[1], P[2]), (P[2], P[0])]:
+            top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+            bias = (-1 if top_left else 0) if bias_on_top_left else (0 if top_left else -1)
+            cover &= E(a, b, u, v) + bias >= 0
+        return cover
+
+    return robust_fill
+
+
+def _rf457_vertex_frame(raw):
+    """H3: coordinates relative to the raw v1 ("small numbers"), then snapped."""
+    return np.rint((raw - raw[0]) * 256) / 256, (raw[0, 0], raw[0, 1])
+
+
+R457 = {
+    "fill oriented by its area in float32 (r457 W1)": (
+        "robust_fill", _rf457(area_of=lambda v: v.astype(np.float32)),
+        "you orient the triangle (and test its area for 0) in float32", "area in float32"),
+    "fill with the vertices moved by +origin (r457 M1)": (
+        "robust_fill", _rf457(shift=-1),
+        "you moved the vertices by +origin into the window's frame", "origin added twice"),
+    "lesson 02's integer fill with int32 vertices (r457 M2)": (
+        "robust_fill", _lesson02_fill(int_type=np.int32),
+        "your area E(v1, v2, v3) overflows int32", "int32 area"),
+    "lesson 02's integer fill with its bias on the top and left edges (r457 H1)": (
+        "robust_fill", _lesson02_fill(bias_on_top_left=True),
+        "your ties go to every edge that is not top or left", "both reversed, as not top-left"),
+    "fill covering every pixel (r457 H2)": (
+        "robust_fill", lambda xy, width, height, origin=(0, 0): np.ones((height, width), bool),
+        "your function covers every pixel of the window for every triangle", "everything covered"),
+    "fill snapped relative to v1 (r457 H3)": (
+        "robust_fill", _rf457(snap_of=_rf457_vertex_frame),
+        "you snap coordinates relative to v1", "snapped relative to a vertex"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R457.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R457.items()})
+DIFFERENT.update({
+    "fill as lesson 02's integer fill with the origin added (r457 T1)": ("robust_fill",
+                                                                        _lesson02_fill()),
+    "fill in the window's frame, the vertices minus origin (r457)": ("robust_fill", _rf457()),
+})  # fmt: skip

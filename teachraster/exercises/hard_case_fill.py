@@ -117,6 +117,9 @@ def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
                 (HALF_ODD.copy(), 12, 12, (0, 0))))  # fmt: skip
     out.append(("a centre one step of E (2⁻¹⁶ px²) outside a left edge",
                 (ONE_STEP.copy(), 12, 12, (0, 0))))  # fmt: skip
+    # r457 W1: a sliver far out, whose area float32 rounds to 0 (listed last, as r441's)
+    sliver = np.asarray(CASES["snap_flips_winding"].inputs["triangles"], dtype=float)[0]
+    out.append((f"snap_flips_winding at {o} px", (sliver + o, 6, 6, (o, o))))
     return [(label, args, expected_fill(*args)) for label, args in out]
 
 
@@ -230,6 +233,13 @@ def _more_variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     out["absolute form in float64"] = naive_coverage(s, width, height, absolute=True, **kw)
     out["int32 overflow"] = int32_fill(xy, width, height, origin)
     out["float32 E"] = step32_fill(xy, width, height, origin)  # r386 NW28
+    out["area in float32"] = area32_fill(xy, width, height, origin)  # r457 W1
+    out["int32 area"] = int32_fill(xy, width, height, origin, area_only=True)  # r457 M2
+    out["both reversed, as not top-left"] = edge_fill(
+        s, width, height, origin, owns=_not_top_left
+    )  # r457 H1
+    out["snapped relative to a vertex"] = vertex_frame_fill(xy, width, height, origin)  # r457 H3
+    out["everything covered"] = np.ones((height, width), dtype=bool)  # r457 H2
     out.update(slip_variants(xy, width, height, origin, expected_fill))
     return out
 
@@ -237,6 +247,42 @@ def _more_variants(xy, width, height, origin) -> dict[str, np.ndarray]:
 def _top_left(a, b) -> bool:
     """The top-left rule on an edge a→b of a triangle oriented so that E(v1, v2, v3) > 0."""
     return bool(b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]))
+
+
+def _not_top_left(a, b) -> bool:
+    """r457 H1: ties on every edge that is not top or left (lesson 02's bias of −1 put on the
+    top and left edges instead), a = b included: a point triangle then covers everything."""
+    return not _top_left(a, b)
+
+
+def area32_fill(xy, width: int, height: int, origin) -> np.ndarray:
+    """r457 W1: the right fill, but oriented (and refused at area 0) by the snapped triangle's
+    area computed in float32, from float32 vertices: far out it rounds to 0 or flips."""
+    s = snap(np.asarray(xy, float))
+    (ax, ay), (bx, by), (cx, cy) = s.astype(np.float32)
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    if area == 0:
+        return np.zeros((height, width), dtype=bool)
+    v = s[[0, 2, 1]] if area < 0 else s
+    return naive_coverage(v, width, height, rule="top_left", orient="none", origin=tuple(origin))
+
+
+def vertex_frame_fill(xy, width: int, height: int, origin) -> np.ndarray:
+    """r457 H3: coordinates taken relative to the raw v1, then snapped (a grid shifted by v1's
+    fraction), the rest right, in that frame."""
+    raw = np.asarray(xy, float)
+    v = np.rint((raw - raw[0]) * 256) / 256
+    if _area(v) == 0:
+        return np.zeros((height, width), dtype=bool)
+    v = v[[0, 2, 1]] if _area(v) < 0 else v
+    y, x = centre_grid(origin, width, height)
+    y, x = y - raw[0, 1], x - raw[0, 0]
+    inside = np.ones((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
+        inside &= (e >= 0) if _top_left(a, b) else (e > 0)
+    return inside
 
 
 def _any_flat(a, b) -> bool:
@@ -276,23 +322,27 @@ def edge_fill(s, width: int, height: int, origin, *, owns=_top_left, given=None,
     return inside
 
 
-def int32_fill(xy, width: int, height: int, origin) -> np.ndarray:
+def int32_fill(xy, width: int, height: int, origin, area_only: bool = False) -> np.ndarray:
     """r373 W41: the fill in 1/256-px integers (centres at 256 j + 128, the top-left rule as a
-    bias of −1), every product in int32, which wraps past 2³¹."""
+    bias of −1), every product in int32, which wraps past 2³¹; ``area_only`` (r457 M2, lesson
+    02's code with int32 vertices): the area in int32, each E in int64 (its centres are)."""
     v = np.rint(np.asarray(xy, float) * 256).astype(np.int32)
-    ys = (origin[0] + np.arange(height, dtype=np.int32))[:, None] * 256 + 128
-    xs = (origin[1] + np.arange(width, dtype=np.int32))[None, :] * 256 + 128
+    centre = np.int64 if area_only else np.int32
+    ys = (origin[0] + np.arange(height, dtype=centre))[:, None] * 256 + 128
+    xs = (origin[1] + np.arange(width, dtype=centre))[None, :] * 256 + 128
     out = np.ones((height, width), dtype=bool)
     with np.errstate(over="ignore"):
         (ax, ay), (bx, by), (cx, cy) = v
         area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
-        if area == 0:
+        if area == 0 and not area_only:  # (lesson 02's code refuses nothing)
             return ~out
         if area < 0:
             v = v[[0, 2, 1]]
         for k in range(3):
             a, b = v[k], v[(k + 1) % 3]
             dx, dy = b[0] - a[0], b[1] - a[1]
+            if area_only:
+                dx, dy = np.int64(dx), np.int64(dy)
             e = dx * (ys - a[1]) - dy * (xs - a[0])
             out &= e + (0 if (dy < 0 or (dy == 0 and dx > 0)) else -1) >= 0
     return out
@@ -691,6 +741,7 @@ MISTAKES = {
     "float32": lambda a, e, g: _float32_any_words(a, e, g),
     "float32 E": float32_words,
 }
+MISTAKES_ORIGIN_TWICE = MISTAKES["origin added twice"]
 MISTAKES["transposed, origin swapped"] = (
     f"{MISTAKES['transposed']}; and {MISTAKES['origin swapped']}"
 )
@@ -767,6 +818,47 @@ ALL_COVERED = Mistake("everything covered", SLIP_WORDS["everything covered"], fi
                       only_whole=True)  # fmt: skip
 
 
+def _area32_words(args, expected, got) -> str:
+    """r457 W1: the orientation from a float32 area, far out (E itself right)."""
+    s = snap(np.asarray(args[0], float))
+    (ax, ay), (bx, by), (cx, cy) = s.astype(np.float32)
+    area32 = float((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
+    exact = _area(s)
+    far = _far(args)
+    said = "0, so you refuse it" if area32 == 0 else f"{area32:g}, the other sign, so you orient it the wrong way"  # fmt: skip
+    return (f"you orient the triangle (and test its area for 0) in float32: {far:,.0f} px from "
+            f"the origin float32's numbers are {float(np.spacing(np.float32(far))):g} px apart, "
+            f"coarser than the 1/256-px grid, so this sliver's E(v1, v2, v3), exactly "
+            f"{exact * 2**16:.0f} · 2⁻¹⁶ px² on the snapped grid, comes out {said}; that area "
+            "is an edge function too: compute it as you compute E, from "
+            "differences in float64 (or in int64), where it is exact")  # fmt: skip
+
+
+def _int32_area_words(args, expected, got) -> str:
+    """r457 M2: lesson 02's integer fill with int32 vertices: the area wraps, E does not."""
+    v = np.rint(np.asarray(args[0], float) * 256)
+    across = float(np.ptp(v, axis=0).max())
+    return (f"your area E(v1, v2, v3) overflows int32: in 1/256-px units this triangle is "
+            f"{across:.0f} across ({across / 256:.0f} px), so the area's products reach about {across * across:.1e}, "
+            f"past int32's largest number, {np.iinfo(np.int32).max:,}, and wrap around to the "
+            "other sign, so you orient the triangle the wrong way and cover nothing (your E at "
+            "each centre is int64, as the centres are); keep the vertices in int64, as lesson "
+            "02's code does: 10.1's count for the relative form says how many bits it needs")  # fmt: skip
+
+
+def _origin_twice_words(args, expected, got) -> str:
+    """r457 M1: origin added twice, or the vertices moved by +origin into the window's frame:
+    on a window far from the triangle both give nothing, and both are said."""
+    xy, width, height, origin = args
+    twice = MISTAKES_ORIGIN_TWICE
+    o = np.asarray(origin)
+    if np.array_equal(expected_fill(xy, width, height, -o), got):
+        return (f"{twice}; or, the same answer here, you moved the vertices by +origin into "
+                "the window's frame: there a vertex is at xy − (origin[1], origin[0]), the "
+                "window's pixel [i, j] at (j + ½, i + ½)")  # fmt: skip
+    return twice
+
+
 def _int32_words(args, expected, got) -> str:
     v = np.rint(np.asarray(args[0], float) * 256)
     across = float(np.ptp(v, axis=0).max())
@@ -809,6 +901,23 @@ MISTAKES.update(
         "below",
         "absolute form in float64": _absolute64_words,
         "int32 overflow": _int32_words,
+        "area in float32": _area32_words,
+        "int32 area": _int32_area_words,
+        "both reversed, as not top-left": "your ties go to every edge that is not top or left "
+        "(lesson 02's bias of −1 put on the top and left edges, not on the others?): that is "
+        "the bottom-right rule, the reverse of the top-left one, and it also gives a point-"
+        "sized triangle (v1 = v2 = v3, every edge a→a) every centre; the −1 belongs on the "
+        "edges that are neither top nor left",
+        "snapped relative to a vertex": "you snap coordinates relative to v1 (xy − xy[0]), "
+        "not the vertices on the screen: the GPU's grid is fixed to the screen, at whole "
+        "multiples of 1/256 px, and v1 lies off it, so your grid points are shifted by v1's "
+        "fraction of a step and every vertex lands beside the GPU's; snap the vertices first, "
+        "then shift by a grid point (the window's origin, or the snapped v1) for small numbers",
+        "everything covered": "your function covers every pixel of the window for every "
+        "triangle, a zero-area one too: it returns an image of True whatever the input (a "
+        "placeholder left in, or a test that every centre passes, such as the edges combined "
+        "with | instead of &?)",
+        "origin added twice": _origin_twice_words,
         **{kind: words for kind, words in SLIP_WORDS.items() if kind != "everything covered"},
     }
 )
@@ -820,6 +929,8 @@ def _tie_case(args, expected, got) -> bool:
     it (a wrong pixel elsewhere has another cause: precision, snapping; so has float32
     rounding of A x + B y + C, which moves centres across the edges they lie on)."""
     if got.shape != expected.shape or _rounding_decides(args, got):
+        return False
+    if got.dtype == bool and _precision_decides(args, got):  # r457: float32 far out (FAR's)
         return False
     wrong = got != expected
     return bool(wrong.any() and not (wrong & ~_on_edge(args)).any())
@@ -835,7 +946,7 @@ TIES = tuple(Mistake(kind, _tie_words(kind, rule), fits=_tie_rule_decides(rule),
 #: every failing tie case (r84 10-2: a mirrored rule was "E > 0" on one, "E ≥ 0" on another).
 TIE_KINDS = ("E >= 0", "E > 0", "no top edges", "no left edges", *REVERSED,
              "tie rule before orienting (index)", "tie rule before orienting (edge)",
-             "any horizontal edge is top")  # fmt: skip
+             "any horizontal edge is top", "both reversed, as not top-left")  # fmt: skip
 
 
 def _shape_swapped(args, expected, got) -> bool:
@@ -859,9 +970,12 @@ def _table() -> list[Mistake]:
     """The mistakes table, each tie rule held to every failing tie case; THIN first (r386
     NW08: where a raw orientation gives the same empty image, its words say both, under one
     kind whatever the drawn cases)."""
-    table = [SHAPE_SWAPPED, THIN] + variant_mistakes(_variants, MISTAKES, (*_roundings(), ABSOLUTE64,
-                                                            FLOAT32_E, ALL_COVERED, ZERO_AREA,
-                                                            FAR, ROUNDING, *TIES, OFF_GRID))  # fmt: skip
+    table = variant_mistakes(_variants, MISTAKES, (*_roundings(), ABSOLUTE64, FLOAT32_E,
+                                                   ALL_COVERED, ZERO_AREA, FAR, ROUNDING, *TIES,
+                                                   OFF_GRID))  # fmt: skip
+    # r457 W1: a float32 area before THIN, whose empty image on a far sliver it also gives
+    area32 = [m for m in table if m.kind == "area in float32"]
+    table = [SHAPE_SWAPPED, *area32, THIN] + [m for m in table if m not in area32]
     table = [replace(m, must_fit=_tie_case) if m.kind in TIE_KINDS else m for m in table]
     return [replace(m, only_whole=True) if m.kind in RARE_KINDS else m for m in table]
 
@@ -874,7 +988,7 @@ RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "half-down sn
               "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
               "only y snapped", "origin ignored", "origin added twice",
               "float32 E", "float32", "absolute form", *SLIP_WORDS,
-              "origin swapped", "E > 0")  # fmt: skip  # r394 W09, W32: one case is no cause
+              "origin swapped", "E > 0", "area in float32", "int32 area")  # fmt: skip  # r394 W09, W32: one case is no cause
 
 
 def explain_fill(args, expected, got) -> str:
