@@ -9978,18 +9978,19 @@ KINDS.update({label: kind for label, (_, _, _, kind) in R450.items()})
 
 # == r457 (rf10, exercise 10): the reader's wrong pass (W1, an area in float32), misnamed (M1 +origin
 # on the vertices, M2 lesson 02's code in int32) and half-named (H1-H3) slips, and two correct fills
-def _rf457(snap_of=None, area_of=None, shift=1):
+def _rf457(snap_of=None, area_of=None, shift=1, sign=1):
     """robust_fill in the window's frame, right but for how it snaps (``snap_of(raw) ->
     (vertices, (x0, y0))``: the vertices in a frame whose point (0, 0) is (x0, y0) on screen),
     the vertices its area reads (``area_of(v)``, v on screen) or ``shift``: the sign with which
-    the window's origin moves the vertices into the window's frame."""
+    the window's origin moves the vertices into the window's frame; ``sign``: −1, E negated
+    (p − a) × (b − a), in the area too."""
 
     def robust_fill(xy, width, height, origin=(0, 0)):
         raw = np.asarray(xy, dtype=float)
         v, (x0, y0) = snap_of(raw) if snap_of else (np.rint(raw * 256) / 256, (0.0, 0.0))
         (ax, ay), (bx, by), (cx, cy) = v if area_of is None else area_of(v)  # on screen
         v = v - shift * np.array([origin[1], origin[0]])
-        area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        area = sign * ((bx - ax) * (cy - ay) - (by - ay) * (cx - ax))
         if area == 0:
             return np.zeros((height, width), dtype=bool)
         v = v[[0, 2, 1]] if area < 0 else v
@@ -9998,7 +9999,7 @@ def _rf457(snap_of=None, area_of=None, shift=1):
         inside = np.ones((height, width), dtype=bool)
         for k in range(3):
             a, b = v[k], v[(k + 1) % 3]
-            e = (b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0])
+            e = sign * ((b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0]))
             tie = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
             inside &= (e >= 0) if tie else (e > 0)
         return inside
@@ -10050,6 +10051,8 @@ R457 = {
     "fill covering every pixel (r457 H2)": (
         "robust_fill", lambda xy, width, height, origin=(0, 0): np.ones((height, width), bool),
         "your function covers every pixel of the window for every triangle", "everything covered"),
+    "fill with E negated, (p − a) × (b − a), and the right tie rule (r457 H5)": (
+        "robust_fill", _rf457(sign=-1), "your E is the course's negated", "both reversed"),
     "fill snapped relative to v1 (r457 H3)": (
         "robust_fill", _rf457(snap_of=_rf457_vertex_frame),
         "you snap coordinates relative to v1", "snapped relative to a vertex"),

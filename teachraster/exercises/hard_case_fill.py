@@ -731,7 +731,9 @@ MISTAKES = {
     "triangle oriented so that E(v1, v2, v3) > 0, a left edge runs up (b.y < a.y)",
     "both reversed": "you give ties to bottom and right edges, the reverse of the top-left "
     "rule: on screen (y down), with the triangle oriented so that E(v1, v2, v3) > 0, a left "
-    "edge runs up (b.y < a.y) and a top edge is horizontal and runs right (b.x > a.x)",
+    "edge runs up (b.y < a.y) and a top edge is horizontal and runs right (b.x > a.x); if "
+    "your rule reads so, your E is the course's negated ((p − a) × (b − a), not "
+    "(b − a) × (p − a)): the triangle you orient then runs the other way round",
     "one winding": "you assume one winding: orient the triangle first (swap two vertices when "
     "its edge function E(v1, v2, v3) is negative)",
     "oriented before snapping": lambda a, e, g: _raw_orientation_words(a, e, g),
