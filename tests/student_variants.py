@@ -10035,6 +10035,24 @@ def _rf457_vertex_frame(raw):
     return np.rint((raw - raw[0]) * 256) / 256, (raw[0, 0], raw[0, 1])
 
 
+def _rf457_union(xy, width, height, origin=(0, 0)):
+    """The right fill with its three edges' tests combined with | instead of &."""
+    v = np.rint(np.asarray(xy, dtype=float) * 256) / 256
+    (ax, ay), (bx, by), (cx, cy) = v
+    area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    if area == 0:
+        return np.zeros((height, width), dtype=bool)
+    v = v[[0, 2, 1]] if area < 0 else v
+    rows = origin[0] + np.arange(height)[:, None] + 0.5
+    cols = origin[1] + np.arange(width)[None, :] + 0.5
+    inside = np.zeros((height, width), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = (b[0] - a[0]) * (rows - a[1]) - (b[1] - a[1]) * (cols - a[0])
+        inside |= (e >= 0) if b[1] < a[1] or (b[1] == a[1] and b[0] > a[0]) else (e > 0)
+    return inside
+
+
 R457 = {
     "fill oriented by its area in float32 (r457 W1)": (
         "robust_fill", _rf457(area_of=lambda v: v.astype(np.float32)),
@@ -10053,6 +10071,8 @@ R457 = {
         "your function covers every pixel of the window for every triangle", "everything covered"),
     "fill with E negated, (p − a) × (b − a), and the right tie rule (r457 H5)": (
         "robust_fill", _rf457(sign=-1), "your E is the course's negated", "both reversed"),
+    "fill with the three edges' tests combined with | (r457)": (
+        "robust_fill", _rf457_union, "combined with | instead of &", "everything covered"),
     "fill snapped relative to v1 (r457 H3)": (
         "robust_fill", _rf457(snap_of=_rf457_vertex_frame),
         "you snap coordinates relative to v1", "snapped relative to a vertex"),

@@ -295,7 +295,9 @@ SLIP_WORDS = {
     "upside down": "your image is upside down: row 0 is the window's top row (y down, as on "
     "screen), so do not flip it (no [::-1], no np.flipud: that is the y-up habit)",
     "everything covered": "your function covers every pixel: it returns an image of True for every "
-    "triangle it does not refuse (a placeholder left in, or a test that every centre passes?)",
+    "triangle it does not refuse (a placeholder left in, or a test that every centre passes, "
+    "such as the three edges' tests combined with | instead of &: every point is inside one "
+    "of them?)",
     "bounding box one short": "every pixel you miss is in the last row or column of the "
     "triangle's bounding box: your box stops one short (range(floor(min), floor(max)) leaves "
     "out the pixel holding the largest x or y; run to floor(max) + 1)",
