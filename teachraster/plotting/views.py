@@ -1066,6 +1066,12 @@ class InterpolationView(ComparisonView):
         line for affine, a curve for perspective-correct.
     vmin, vmax : float, optional
         Fixed colour range of the values (default: their range, renewed at every update).
+    inside : bool
+        Keep the vertex labels inside the panels, clear of the dots, the edges and one another
+        (``plot_triangle``'s ``inside`` and ``clear``), for a view whose vertices are dragged
+        anywhere (the TriangleEditor: pushed outwards, a vertex at the top put "v3" over the
+        heatmap's title, review r459 S3). Default: pushed outwards (the player places them
+        off the frames itself).
 
     Examples
     --------
@@ -1080,7 +1086,7 @@ class InterpolationView(ComparisonView):
     """
 
     def __init__(self, fill, name: str | None = None, *, channel: int | None = None, axes=None,
-                 vmin=None, vmax=None) -> None:  # fmt: skip
+                 vmin=None, vmax=None, inside: bool = False) -> None:  # fmt: skip
         trace = as_trace(fill, "InterpolationView")
         self.name = name
         self.channel = channel
@@ -1106,7 +1112,8 @@ class InterpolationView(ComparisonView):
         colorbar = self.images[1].colorbar
         if colorbar is not None:
             colorbar.set_label(label)
-        self.triangles = [plot_triangle(ax, trace, arrows=False) for ax in self.axes]
+        self.triangles = [plot_triangle(ax, trace, arrows=False, inside=inside, clear=inside)
+                          for ax in self.axes]  # fmt: skip
         for tri in self.triangles:
             tri.outline.set_linewidth(tri.outline.get_linewidth() * 0.6)
         self._trace = trace

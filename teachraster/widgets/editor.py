@@ -276,7 +276,8 @@ class TriangleEditor(Holdable):
             return
         ifig = new_figure((10, 4), self.backend, dpi=COMPARISON_DPI)
         axes = comparison_axes(ifig, height, width)
-        self.interp_view = InterpolationView(self.fill, self.attribute, axes=axes)
+        # the labels inside the panels, wherever a vertex is dragged (review r459 S3)
+        self.interp_view = InterpolationView(self.fill, self.attribute, axes=axes, inside=True)
         self._blits["interp"] = comparison_edit_blit(self.interp_view)
         self.interp_display = FigureDisplay(ifig, self.backend, draw=self._draw_interp)
 
