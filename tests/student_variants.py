@@ -9974,3 +9974,26 @@ R450 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R450.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R450.items()})
+# == r458: exercise 05's wrong pass in 5.4 (reverse-Z "within a factor 2") ========================
+
+
+def _r458_setup_within(factor):
+    """5.4 taking reverse-Z wherever its Δz is under ``factor`` times the gap (r458 G1)."""
+
+    def depth_setup(z, gap, far, nearest):
+        answer = _rs.depth_setup(z, gap, far, nearest)
+        if answer[0] == "unorm24":
+            return answer
+        dz = _rs.reverse_z_gap(z, nearest, far)
+        return ("reverse-z" if dz < factor * gap else "neither"), nearest, dz
+
+    return depth_setup
+
+
+R458 = {
+    "depth setup, reverse-Z within a factor 2 of the gap (r458 ds_X3)": (
+        "depth_setup", _r458_setup_within(2.0), "more than the gap 6e-06, and no near plane helps",
+        "reverse-Z too coarse"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R458.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R458.items()})

@@ -37,6 +37,7 @@ from functools import cache
 
 import numpy as np
 
+from ..pipeline.visibility.depth import depth_resolution
 from .answers import refuse_non_answers, short
 from .cases import DRAWN, drawn_rng
 from .diagnosis import near
@@ -72,6 +73,9 @@ SETTINGS = (
     (50.0, 0.01, 1000.0, 0.5), (100.0, 7.5e-4, 1000.0, 1.0), (500.0, 0.001, 1000.0, 0.1),
     (100.0, 6.0e-3, 1000.0, 0.125), (2000.0, 0.05, 1e4, 0.01), (900.0, 3.5e-6, 1000.0, 0.1),
     (10.0, 1.0e-4, 100.0, 1.0), (5e5, 0.01, 1e6, 0.02), (10.0, 0.05, 100.0, 1.0),
+    # r458 G1: neither, with reverse-Z's Δz only 1.66 times the gap (d near the top of its
+    # binade): "reverse-Z if its Δz is under twice the gap" passed every case before
+    (185.0, 6.0e-6, 1000.0, 0.1),
 )  # fmt: skip
 
 
@@ -611,7 +615,12 @@ HINTS = ((re.compile(r', so the answer is "[^"]+"'), ""),)
 
 DEPTH_SETUP = Exercise(
     "depth_setup", setup_cases, as_setup, same_setup, explain_setup, _rule, MISTAKES,
-    draw=draw_setup, answers=(PackageAnswer(expected_setup, words=CHECKER_WORDS),), example=2,
+    draw=draw_setup, answers=(
+        PackageAnswer(expected_setup, words=CHECKER_WORDS),
+        # r458 G2: unorm24's Δz from the package passed unflagged (5.1 and 5.2 flag it)
+        PackageAnswer(depth_resolution, what="a buffer's Δz, what your own safe_near and "
+                      "reverse_z_gap are there to work out"),
+    ), example=2,
     match=match_setup,
     reference=("teachraster.exercises.near_plane", "teachraster.exercises.reverse_z"), hints=HINTS,
 )  # fmt: skip
