@@ -9990,10 +9990,29 @@ def _r458_setup_within(factor):
     return depth_setup
 
 
+def _r458_setup_far_near(z, gap, far, nearest):
+    """5.4 calling reverse_z_gap(z, far, nearest): near and far swapped (r458 ds_X2)."""
+    if _rs.safe_near(z, gap, far, 24) <= nearest:
+        return _rs.depth_setup(z, gap, far, nearest)
+    dz = _rs.reverse_z_gap(z, far, nearest)
+    return ("reverse-z" if dz <= gap else "neither"), nearest, dz
+
+
+def _r458_bias_depth(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 returning 1 − o, a depth near 1, for the offset o (r458 db_X6)."""
+    o = _rs.decal_bias(z, tilt, pixel, near, far, bits, reverse, clear)
+    return o if reverse else 1 + o
+
+
 R458 = {
     "depth setup, reverse-Z within a factor 2 of the gap (r458 ds_X3)": (
         "depth_setup", _r458_setup_within(2.0), "more than the gap 6e-06, and no near plane helps",
         "reverse-Z too coarse"),
+    "depth setup, reverse_z_gap(z, far, near) (r458 ds_X2)": (
+        "depth_setup", _r458_setup_far_near, "is reverse_z_gap(z, far, near), near and far swapped",
+        "reverse_z_gap near and far swapped"),
+    "decal bias returned as a depth, 1 − o (r458 db_X6)": (
+        "decal_bias", _r458_bias_depth, "is a depth near the wall's stored", "one minus"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R458.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R458.items()})

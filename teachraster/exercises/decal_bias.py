@@ -287,6 +287,10 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         # the test rearranged with r counted twice, 2(r + m) > room
         "two steps": own(2.0 / 2**bits, m),
         "r twice in the test": math.nan if 2 * (r + m) > space else sign * (r + m),
+        # r458 G4: the decal's stored depth returned for the offset (the wall's plus o, or
+        # 1 − |o|): "yours is 1" was printed with the generic rule
+        "a depth": offset(r + m) + ((1 - _wall(z, near, far)) if reverse else _wall(z, near, far)),
+        "one minus": math.nan if tight else 1 - (r + m),
     }
 
 
@@ -460,10 +464,20 @@ MISTAKES = {
         f"1/(2^{a[5]} − 1). Yours takes r as two steps, 2/2^{a[5]} (OpenGL's llvmpipe, or "
         "Vulkan's bound): this task takes Direct3D's r, one step, 1/(2^bits − 1)"
     ),
+    "a depth": lambda a, e, g: _depth_words(a, g),
+    "one minus": lambda a, e, g: _depth_words(a, g),
     "r twice in the test": ": your test for NaN fires here, but one offset does both: r + m ≤ "
     "room − m, that is r + 2m ≤ room. Yours asks 2(r + m) ≤ room: it counts r twice (the decal "
     "at its nearest lies m in front of the wall, o + m from it; r is in o once)",
 }
+
+
+def _depth_words(args, got) -> str:
+    """r458 G4: a depth near the wall's (or near 1) returned for the offset."""
+    return (f": yours, {got:.9g}, is a depth near the wall's stored "
+            f"{(1 - _wall(*args[:1], *args[3:5])) if args[6] else _wall(*args[:1], *args[3:5]):.9g}"
+            " (or near 1), not an offset: return o itself, the small number the API adds to "
+            "the decal's depths, a step and a pixel's slope")  # fmt: skip
 
 
 def explain_offset(args, expected, got) -> str:

@@ -426,6 +426,20 @@ def _swapped(z, n, far):
         return []
 
 
+def _far_near_swapped(args, expected, got) -> bool:
+    """r458 G4: Δz from reverse_z_gap(z, far, near), near and far swapped: d lies near 1 and
+    its slope is negative, so Δz comes out negative (or, with abs, far too coarse); it was told
+    only "not what your set-up resolves"."""
+    z, _, far, _ = args
+    fmt, n, dz = got
+    if fmt not in (REVERSE, NEITHER) or expected[0] == UNORM or not 0 < n < z:
+        return False
+    with np.errstate(all="ignore"):
+        k = 1 - far / n
+        swapped = float(np.spacing(np.float32((far / z - far / n) / k))) * k * z * z / far
+    return math.isfinite(swapped) and abs(abs(dz) - abs(swapped)) <= 0.01 * abs(swapped)
+
+
 def _reverse_too_close(args, expected, got) -> bool:
     """reverse-Z's near plane so close that d falls to float32's subnormals (or 0): its Δz
     is no longer a fixed share of z (1 − z/f) and exceeds the gap (r351: n = 1e-45 z)."""
@@ -543,6 +557,11 @@ MISTAKES = [
         "swapped: call reverse_z_gap(z, near, far), which gives "
         f"{num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
         fits=_reverse_dz_as(_swapped)),
+    Mistake("reverse_z_gap near and far swapped", lambda a, e, g: (
+        f": your Δz {num(g[2])} is reverse_z_gap(z, far, near), near and far swapped (d then "
+        "lies near 1, and its slope is negative): call reverse_z_gap(z, near, far), which gives "
+        f"{num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
+        fits=_far_near_swapped),
     # r374 F5: the bound the words quote, taken for Δz, was told only "not what it resolves"
     Mistake("reverse-Z coarse bound", lambda a, e, g: (
         f": your Δz {num(g[2])} is a bound, {'2^-23' if _coarse(a, g) else '2^-24'} of "
