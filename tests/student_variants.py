@@ -9999,9 +9999,19 @@ def _r458_setup_far_near(z, gap, far, nearest):
 
 
 def _r458_bias_depth(z, tilt, pixel, near, far, bits, reverse, clear):
-    """5.3 returning 1 − o, a depth near 1, for the offset o (r458 db_X6)."""
-    o = _rs.decal_bias(z, tilt, pixel, near, far, bits, reverse, clear)
-    return o if reverse else 1 + o
+    """5.3 returning 1 − |o|, a depth near 1, for the offset o (r458 db_X6)."""
+    return 1 - abs(_rs.decal_bias(z, tilt, pixel, near, far, bits, reverse, clear))
+
+
+def _r458_bias_secant(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 with m/cos θ, in the offset and in its test for NaN (r458 db_X5)."""
+    r = 1 / (2**bits - 1)
+    t = math.radians(tilt)
+    m = far * near / (far - near) * math.tan(t) / (z * math.cos(t)) * pixel
+    room = far * near / (far - near) * (1 / (z - clear) - 1 / z)
+    if r + m > room - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
 
 
 R458 = {
@@ -10011,6 +10021,8 @@ R458 = {
     "depth setup, reverse_z_gap(z, far, near) (r458 ds_X2)": (
         "depth_setup", _r458_setup_far_near, "is reverse_z_gap(z, far, near), near and far swapped",
         "reverse_z_gap near and far swapped"),
+    "decal bias with m over cos θ, 2m at 60° (r458 db_X5)": (
+        "decal_bias", _r458_bias_secant, "your m has an extra 1/cos θ", "secant, own test"),
     "decal bias returned as a depth, 1 − o (r458 db_X6)": (
         "decal_bias", _r458_bias_depth, "is a depth near the wall's stored", "one minus"),
 }  # fmt: skip

@@ -319,6 +319,9 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
         "cotangent": m / math.tan(rad) ** 2 if inside else None,
         # r442 F3: half a pixel's slope ("from the pixel's centre to its edge")
         "halved": m / 2,
+        # r458 G3: an extra 1/cos θ (the wall's length per pixel along its tilt), 2m at 60°,
+        # where "r + 2m" was said
+        "secant": m / math.cos(rad) if inside else None,
     }
 
 
@@ -361,8 +364,11 @@ _DOUBLED = (": your m is twice one pixel's depth slope. The decal's depth lies w
 _HALVED = (": your m is half one pixel's depth slope (from the pixel's centre to its edge?). "
            "MaxDepthSlope is the change of depth from one pixel to the next, and the decal's "
            "depth may lie that whole m behind the wall's: |o| ≥ r + m")  # fmt: skip
+_SECANT = (": your m has an extra 1/cos θ (tan θ/cos θ): a point seen at s = x/z on the wall "
+           "tilted by θ lies at 1/z' = (1 − s tan θ)/z, so the depth changes per pixel with "
+           "tan θ alone; the wall's length along its tilt does not enter")  # fmt: skip
 _SLOPE_WORDS = {
-    "doubled": _DOUBLED, "halved": _HALVED,
+    "doubled": _DOUBLED, "halved": _HALVED, "secant": _SECANT,
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
