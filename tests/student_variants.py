@@ -10023,7 +10023,10 @@ R458 = {
         "reverse_z_gap near and far swapped"),
     "decal bias with m over cos θ, 2m at 60° (r458 db_X5)": (
         "decal_bias", _r458_bias_secant, "your m has an extra 1/cos θ", "secant, own test"),
-    "decal bias returned as a depth, 1 − o (r458 db_X6)": (
+    "decal bias returned as 1 + o under the less-wins test only (r458 db_X6)": (
+        "decal_bias", lambda *a: (lambda o: o if a[6] else 1 + o)(_rs.decal_bias(*a)),
+        "is a depth near the wall's stored", "one minus, less-wins"),
+    "decal bias returned as a depth, 1 − |o| (r458 db_X6b)": (
         "decal_bias", _r458_bias_depth, "is a depth near the wall's stored", "one minus"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R458.items()})

@@ -291,6 +291,8 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         # 1 − |o|): "yours is 1" was printed with the generic rule
         "a depth": offset(r + m) + ((1 - _wall(z, near, far)) if reverse else _wall(z, near, far)),
         "one minus": math.nan if tight else 1 - (r + m),
+        # ... with the less-wins test only (reverse-Z's offset right)
+        "one minus, less-wins": offset(r + m) if reverse else offset(r + m) + 1,
     }
 
 
@@ -472,6 +474,7 @@ MISTAKES = {
     ),
     "a depth": lambda a, e, g: _depth_words(a, g),
     "one minus": lambda a, e, g: _depth_words(a, g),
+    "one minus, less-wins": lambda a, e, g: _depth_words(a, g),
     "r twice in the test": ": your test for NaN fires here, but one offset does both: r + m ≤ "
     "room − m, that is r + 2m ≤ room. Yours asks 2(r + m) ≤ room: it counts r twice (the decal "
     "at its nearest lies m in front of the wall, o + m from it; r is in o once)",
