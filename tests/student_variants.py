@@ -10084,3 +10084,60 @@ DIFFERENT.update({
                                                                         _lesson02_fill()),
     "fill in the window's frame, the vertices minus origin (r457)": ("robust_fill", _rf457()),
 })  # fmt: skip
+# == r458: exercise 05's wrong pass in 5.4 (reverse-Z "within a factor 2") ========================
+
+
+def _r458_setup_within(factor):
+    """5.4 taking reverse-Z wherever its Δz is under ``factor`` times the gap (r458 G1)."""
+
+    def depth_setup(z, gap, far, nearest):
+        answer = _rs.depth_setup(z, gap, far, nearest)
+        if answer[0] == "unorm24":
+            return answer
+        dz = _rs.reverse_z_gap(z, nearest, far)
+        return ("reverse-z" if dz < factor * gap else "neither"), nearest, dz
+
+    return depth_setup
+
+
+def _r458_setup_far_near(z, gap, far, nearest):
+    """5.4 calling reverse_z_gap(z, far, nearest): near and far swapped (r458 ds_X2)."""
+    if _rs.safe_near(z, gap, far, 24) <= nearest:
+        return _rs.depth_setup(z, gap, far, nearest)
+    dz = _rs.reverse_z_gap(z, far, nearest)
+    return ("reverse-z" if dz <= gap else "neither"), nearest, dz
+
+
+def _r458_bias_depth(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 returning 1 − |o|, a depth near 1, for the offset o (r458 db_X6)."""
+    return 1 - abs(_rs.decal_bias(z, tilt, pixel, near, far, bits, reverse, clear))
+
+
+def _r458_bias_secant(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 with m/cos θ, in the offset and in its test for NaN (r458 db_X5)."""
+    r = 1 / (2**bits - 1)
+    t = math.radians(tilt)
+    m = far * near / (far - near) * math.tan(t) / (z * math.cos(t)) * pixel
+    room = far * near / (far - near) * (1 / (z - clear) - 1 / z)
+    if r + m > room - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+R458 = {
+    "depth setup, reverse-Z within a factor 2 of the gap (r458 ds_X3)": (
+        "depth_setup", _r458_setup_within(2.0), "more than the gap 6e-06, and no near plane helps",
+        "reverse-Z too coarse"),
+    "depth setup, reverse_z_gap(z, far, near) (r458 ds_X2)": (
+        "depth_setup", _r458_setup_far_near, "is reverse_z_gap(z, far, near), near and far swapped",
+        "reverse_z_gap near and far swapped"),
+    "decal bias with m over cos θ, 2m at 60° (r458 db_X5)": (
+        "decal_bias", _r458_bias_secant, "your m has an extra 1/cos θ", "secant, own test"),
+    "decal bias returned as 1 + o under the less-wins test only (r458 db_X6)": (
+        "decal_bias", lambda *a: (lambda o: o if a[6] else 1 + o)(_rs.decal_bias(*a)),
+        "is a depth near the wall's stored", "one minus, less-wins"),
+    "decal bias returned as a depth, 1 − |o| (r458 db_X6b)": (
+        "decal_bias", _r458_bias_depth, "is a depth near the wall's stored", "one minus"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R458.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R458.items()})

@@ -96,7 +96,9 @@ def test_the_task_states_the_band_its_check_allows():
     assert f"within 10^{int(np.log10(rzw.BELOW))} (relative) of the coarsest Δz either" in text
     assert "seldom" not in text and "no search" not in text and "% above" not in text, text
     assert rzw.FLOAT32_STEPS == 8 and "eight of\nfloat32's steps either way" in text, text
-    assert ids.index("reverse_z_gap_check") < ids.index("reverse_z_worst_task")
+    # r458: 5.2 is a ruler written in 5.2b's cell, above reverse_z_worst (its task before 5.2b's)
+    assert ids.index("reverse_z_gap_task") < ids.index("reverse_z_worst_task")
+    assert stub.index("def reverse_z_gap(") < stub.index("def reverse_z_worst(")
     assert "predict" in text and text.index("predict") < text.index("Write `reverse_z_worst")
 
 

@@ -287,6 +287,12 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         # the test rearranged with r counted twice, 2(r + m) > room
         "two steps": own(2.0 / 2**bits, m),
         "r twice in the test": math.nan if 2 * (r + m) > space else sign * (r + m),
+        # r458 G4: the decal's stored depth returned for the offset (the wall's plus o, or
+        # 1 − |o|): "yours is 1" was printed with the generic rule
+        "a depth": offset(r + m) + ((1 - _wall(z, near, far)) if reverse else _wall(z, near, far)),
+        "one minus": math.nan if tight else 1 - (r + m),
+        # ... with the less-wins test only (reverse-Z's offset right)
+        "one minus, less-wins": offset(r + m) if reverse else offset(r + m) + 1,
     }
 
 
@@ -315,6 +321,9 @@ def _slipped_slopes(m, z, tilt, pixel, near, far) -> dict[str, float | None]:
         "cotangent": m / math.tan(rad) ** 2 if inside else None,
         # r442 F3: half a pixel's slope ("from the pixel's centre to its edge")
         "halved": m / 2,
+        # r458 G3: an extra 1/cos θ (the wall's length per pixel along its tilt), 2m at 60°,
+        # where "r + 2m" was said
+        "secant": m / math.cos(rad) if inside else None,
     }
 
 
@@ -357,8 +366,11 @@ _DOUBLED = (": your m is twice one pixel's depth slope. The decal's depth lies w
 _HALVED = (": your m is half one pixel's depth slope (from the pixel's centre to its edge?). "
            "MaxDepthSlope is the change of depth from one pixel to the next, and the decal's "
            "depth may lie that whole m behind the wall's: |o| ≥ r + m")  # fmt: skip
+_SECANT = (": your m has an extra 1/cos θ (tan θ/cos θ): a point seen at s = x/z on the wall "
+           "tilted by θ lies at 1/z' = (1 − s tan θ)/z, so the depth changes per pixel with "
+           "tan θ alone; the wall's length along its tilt does not enter")  # fmt: skip
 _SLOPE_WORDS = {
-    "doubled": _DOUBLED, "halved": _HALVED,
+    "doubled": _DOUBLED, "halved": _HALVED, "secant": _SECANT,
     "z squared": _Z_SQUARED, "infinite far": _FAR, "degrees": _DEGREES, "per unit": _PER_UNIT,
     "view slope": _VIEW, "sine": _SINE, "cosine": _COSINE, "cotangent": _COTANGENT,
 }  # fmt: skip
@@ -460,10 +472,21 @@ MISTAKES = {
         f"1/(2^{a[5]} − 1). Yours takes r as two steps, 2/2^{a[5]} (OpenGL's llvmpipe, or "
         "Vulkan's bound): this task takes Direct3D's r, one step, 1/(2^bits − 1)"
     ),
+    "a depth": lambda a, e, g: _depth_words(a, g),
+    "one minus": lambda a, e, g: _depth_words(a, g),
+    "one minus, less-wins": lambda a, e, g: _depth_words(a, g),
     "r twice in the test": ": your test for NaN fires here, but one offset does both: r + m ≤ "
     "room − m, that is r + 2m ≤ room. Yours asks 2(r + m) ≤ room: it counts r twice (the decal "
     "at its nearest lies m in front of the wall, o + m from it; r is in o once)",
 }
+
+
+def _depth_words(args, got) -> str:
+    """r458 G4: a depth near the wall's (or near 1) returned for the offset."""
+    return (f": yours, {got:.9g}, is a depth near the wall's stored "
+            f"{(1 - _wall(*args[:1], *args[3:5])) if args[6] else _wall(*args[:1], *args[3:5]):.9g}"
+            " (or near 1), not an offset: return o itself, the small number the API adds to "
+            "the decal's depths, a step and a pixel's slope")  # fmt: skip
 
 
 def explain_offset(args, expected, got) -> str:

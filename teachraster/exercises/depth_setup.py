@@ -37,6 +37,7 @@ from functools import cache
 
 import numpy as np
 
+from ..pipeline.visibility.depth import depth_resolution
 from .answers import refuse_non_answers, short
 from .cases import DRAWN, drawn_rng
 from .diagnosis import near
@@ -72,6 +73,9 @@ SETTINGS = (
     (50.0, 0.01, 1000.0, 0.5), (100.0, 7.5e-4, 1000.0, 1.0), (500.0, 0.001, 1000.0, 0.1),
     (100.0, 6.0e-3, 1000.0, 0.125), (2000.0, 0.05, 1e4, 0.01), (900.0, 3.5e-6, 1000.0, 0.1),
     (10.0, 1.0e-4, 100.0, 1.0), (5e5, 0.01, 1e6, 0.02), (10.0, 0.05, 100.0, 1.0),
+    # r458 G1: neither, with reverse-Z's Δz only 1.66 times the gap (d near the top of its
+    # binade): "reverse-Z if its Δz is under twice the gap" passed every case before
+    (185.0, 6.0e-6, 1000.0, 0.1),
 )  # fmt: skip
 
 
@@ -422,6 +426,22 @@ def _swapped(z, n, far):
         return []
 
 
+def _far_near_swapped(args, expected, got) -> bool:
+    """r458 G4: Δz from reverse_z_gap(z, far, near), near and far swapped: d lies near 1 and
+    its slope is negative, so Δz comes out negative (or, with abs, far too coarse); it was told
+    only "not what your set-up resolves"."""
+    z, _, far, _ = args
+    fmt, n, dz = got
+    if fmt not in (REVERSE, NEITHER) or expected[0] == UNORM or not 0 < n < z:
+        return False
+    with np.errstate(all="ignore"):
+        k = 1 - far / n
+        swapped = float(np.spacing(np.float32((far / z - far / n) / k))) * k * z * z / far
+    # negative only: its size is about unorm24's Δz (float32's step near 1 is 2^-24), which
+    # a positive one quotes ("the other buffer's")
+    return math.isfinite(swapped) and dz < 0 and abs(dz - swapped) <= 0.01 * abs(swapped)
+
+
 def _reverse_too_close(args, expected, got) -> bool:
     """reverse-Z's near plane so close that d falls to float32's subnormals (or 0): its Δz
     is no longer a fixed share of z (1 − z/f) and exceeds the gap (r351: n = 1e-45 z)."""
@@ -539,6 +559,11 @@ MISTAKES = [
         "swapped: call reverse_z_gap(z, near, far), which gives "
         f"{num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
         fits=_reverse_dz_as(_swapped)),
+    Mistake("reverse_z_gap near and far swapped", lambda a, e, g: (
+        f": your Δz {num(g[2])} is reverse_z_gap(z, far, near), near and far swapped (d then "
+        "lies near 1, and its slope is negative): call reverse_z_gap(z, near, far), which gives "
+        f"{num(expected_gap(a[0], g[1], a[2]))} at your near plane"),
+        fits=_far_near_swapped),
     # r374 F5: the bound the words quote, taken for Δz, was told only "not what it resolves"
     Mistake("reverse-Z coarse bound", lambda a, e, g: (
         f": your Δz {num(g[2])} is a bound, {'2^-23' if _coarse(a, g) else '2^-24'} of "
@@ -611,7 +636,12 @@ HINTS = ((re.compile(r', so the answer is "[^"]+"'), ""),)
 
 DEPTH_SETUP = Exercise(
     "depth_setup", setup_cases, as_setup, same_setup, explain_setup, _rule, MISTAKES,
-    draw=draw_setup, answers=(PackageAnswer(expected_setup, words=CHECKER_WORDS),), example=2,
+    draw=draw_setup, answers=(
+        PackageAnswer(expected_setup, words=CHECKER_WORDS),
+        # r458 G2: unorm24's Δz from the package passed unflagged (5.1 and 5.2 flag it)
+        PackageAnswer(depth_resolution, what="a buffer's Δz, what your own safe_near and "
+                      "reverse_z_gap are there to work out"),
+    ), example=2,
     match=match_setup,
     reference=("teachraster.exercises.near_plane", "teachraster.exercises.reverse_z"), hints=HINTS,
 )  # fmt: skip

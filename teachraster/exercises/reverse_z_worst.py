@@ -665,6 +665,10 @@ SEARCH = Mistake(
     symptom=True,
 )
 
+#: r458: 5.2 is a ruler with no check cell of its own; the locked cell after 5.2b's checks it
+RULER_CHECK = (". Check your reverse_z_gap alone first: the cell after this check runs 5.2's check "
+               "(not graded)")  # fmt: skip
+
 #: 5.2's slips that 5.2b can carry over (r404 F3): each changes Δz by far more than the band.
 GAP_SLIPS = ("float64", "window depth", "float16", "step above 1", "step in depth",
              "times slope", "z not squared", "spacing of z", "infinite far",
@@ -737,11 +741,11 @@ def _gap_slip_words(args, expected, got) -> str:
             f": yours, {num(got)}, is what {len(same) + 1} of 5.2's slips give at this range's "
             f"coarsest depths ({num(dz)}): {words}; or (the same number here) "
             + "; or ".join(GAP_MISTAKES[k] for k in same)
-            + ". Check your reverse_z_gap with 5.2's check first"
+            + RULER_CHECK
         )
     return (
         f": yours, {num(got)}, is what one of 5.2's slips gives at this range's coarsest "
-        f"depths ({num(dz)}): {words}. Check your reverse_z_gap with 5.2's check first"
+        f"depths ({num(dz)}): {words}" + RULER_CHECK
     )
 
 
