@@ -10141,3 +10141,120 @@ R458 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R458.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R458.items()})
+
+
+# -- r455 (exercise 3, a verifying reader): 3.2's np.divide(where=) without out= (uninitialised
+# memory), masks |λ| > ε with ε ≤ 1e-15, λ times the reference w before the divide; 3.1 by
+# np.linalg.lstsq with the sum row (told "the third equation is missing").
+def _w455_divide_no_out(lam, w):
+    """W1: the skipped entries of np.divide(..., where=) are left as memory held them."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    q = np.divide(lam * w[lam != 0].min(), w, where=lam != 0)
+    return q / q.sum()
+
+
+def _w455_divide_no_out_times_lam(lam, w):
+    """W1: the same, the garbage multiplied by λ = 0 (0 unless it is NaN or inf)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    q = np.divide(w[lam != 0].min(), w, where=lam != 0) * lam
+    return q / q.sum()
+
+
+def _w455_lam_times_ref_first(lam, w):
+    """W3: (λ_i · w_ref) / w_i: subnormal products at w = 1e-320."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = lam != 0
+    q = np.zeros(3)
+    q[m] = (lam[m] * w[m].min()) / w[m]
+    return q / q.sum()
+
+
+def _b455_lstsq(xy, p):
+    """M1: the three equations by np.linalg.lstsq, refused where the residual is large."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    m = np.vstack([v.T, np.ones(3)])
+    b = np.array([p[0], p[1], 1.0])
+    lam = np.linalg.lstsq(m, b, rcond=None)[0]
+    if not np.allclose(m @ lam, b):
+        raise ValueError("no solution")
+    return lam
+
+
+def _w455_frexp(lam, w):
+    """Scaled by powers of 2 from np.frexp's exponents (the smallest that weighs)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    mant, e = np.frexp(w)
+    nz = lam != 0
+    q = np.where(nz, lam / mant * np.ldexp(1.0, np.minimum(e[nz].min() - e, 0)), 0.0)
+    return q / q.sum()
+
+
+def _w455_divide_out(lam, w):
+    """np.divide(..., out=np.zeros(3), where=λ ≠ 0): the skipped entries are 0."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    ref = np.min(w, where=lam != 0, initial=np.inf)
+    return _normalised_455(np.divide(ref, w, out=np.zeros(3), where=lam != 0) * lam)
+
+
+def _normalised_455(q):
+    return q / q.sum()
+
+
+def _b455_l2_flipped(xy, p):
+    """λ2's numerator with its two products swapped, λ3 = 1 − λ1 − λ2 (rule only before)."""
+    (x1, y1), (x2, y2), (x3, y3) = np.asarray(xy, dtype=float)
+    px, py = np.asarray(p, dtype=float)
+    det = (x1 - x3) * (y2 - y3) - (x2 - x3) * (y1 - y3)
+    if det == 0:
+        raise ValueError("zero area")
+    l1 = ((px - x3) * (y2 - y3) - (x2 - x3) * (py - y3)) / det
+    l2 = ((px - x3) * (y1 - y3) - (x1 - x3) * (py - y3)) / det
+    return np.array([l1, l2, 1.0 - l1 - l2])
+
+
+def _b455_edge_v1_v3(xy, p):
+    """λ2 = E(v1, v3, p) / E for E(v3, v1, p) / E (rule only before)."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+
+    def e(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    area = e(*v)
+    if area == 0:
+        raise ValueError("zero area")
+    return np.array([e(v[1], v[2], p), e(v[0], v[2], p), e(v[0], v[1], p)]) / area
+
+
+R455 = {
+    "barycentric with λ2's products swapped, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b455_l2_flipped,
+        "your λ3 = 1 minus the other two carries the slip", "one weight's sign"),
+    "barycentric with λ2 = E(v1, v3, p) / E": (
+        "barycentric", _b455_edge_v1_v3, "your λ2 = -0.2 has the wrong sign", "one weight's sign"),
+    "perspective weights by np.divide(where=) without out=": (
+        "perspective_weights", _w455_divide_no_out,
+        "this check fills freed memory with NaN", "uninitialised memory"),
+    "perspective weights by np.divide(where=) without out=, times λ": (
+        "perspective_weights", _w455_divide_no_out_times_lam,
+        "np.divide(..., where=...) without out=", "uninitialised memory"),
+    "perspective weights masking |λ| > 1e-15": (
+        "perspective_weights", lambda lam, w: _w440_right(lam, w, mask=lambda m: abs(m) > 1e-15),
+        "λ1 = 1e-300 is not 0", "tiny λ left out"),
+    "perspective weights masking |λ| > machine epsilon": (
+        "perspective_weights",
+        lambda lam, w: _w440_right(lam, w, mask=lambda m: abs(m) > np.finfo(float).eps),
+        "you left out a λ below a tolerance", "tiny λ left out"),
+    "perspective weights with λ times w_ref before the divide": (
+        "perspective_weights", _w455_lam_times_ref_first,
+        "multiplied it into λ before dividing by w", "λ times w_ref first"),
+    "barycentric by np.linalg.lstsq with a residual test": (
+        "barycentric", _b455_lstsq, "they are np.linalg.lstsq's answer", "least squares"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R455.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R455.items()})
+DIFFERENT.update({
+    "perspective weights scaled by powers of 2 from np.frexp": (
+        "perspective_weights", _w455_frexp),
+    "perspective weights by np.divide(out=zeros, where=)": (
+        "perspective_weights", _w455_divide_out),
+})  # fmt: skip

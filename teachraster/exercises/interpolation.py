@@ -20,7 +20,7 @@ from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..study.hardcases import CASES
 from .answers import as_number, as_numbers, short
 from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
-from .diagnosis import held_by_precision, scaled_mistake
+from .diagnosis import held_by_precision, near, scaled_mistake
 from .exercise import Exercise, Mistake, PackageAnswer
 from .scalars import centre_near, num, tri_words, vec
 from .tolerance import TOL, all_close, close
@@ -266,6 +266,36 @@ def _sign_in_two_words(rest: int, only_negative: bool):
             f": your {two} have the wrong sign and your λ{rest + 1} = 1 minus their sum makes "
             f"up the rest: you divided by {took}. Divide by the signed E(v1, v2, v3) = "
             f"{num(area)} itself"
+        )
+
+    return words
+
+
+def _one_sign(k: int, rest: int | None):
+    """r455: λ_k alone with the wrong sign (an edge function of its numerator taken the other
+    way round, E(v1, v3, p) for E(v3, v1, p)), and the weight number ``rest``, if any, taken
+    as 1 minus the other two, carrying the slip (rule only before)."""
+
+    def gives(xy, p):
+        lam = _areas(xy, p) / _area(xy)
+        lam[k] = -lam[k]
+        if rest is not None:
+            lam[rest] = 1.0 - (lam.sum() - lam[rest])
+        return lam
+
+    return gives
+
+
+def _one_sign_words(k: int, rest: int | None):
+    def words(args, expected, got):
+        carried = ("" if rest is None else f", and your λ{rest + 1} = 1 minus the other two "
+                   "carries the slip")  # fmt: skip
+        return (
+            f": your λ{k + 1} = {num(got[k], expected[k])} has the wrong sign (the weights give "
+            f"{num(expected[k], got[k])}){carried}: an edge function taken the other way round "
+            "(E(a, b, p) = −E(b, a, p)), or the two products of its numerator swapped. Take each "
+            "edge in the triangle's order: λ1 = E(v2, v3, p), λ2 = E(v3, v1, p), "
+            "λ3 = E(v1, v2, p), each over E(v1, v2, v3)"
         )
 
     return words
@@ -713,6 +743,25 @@ def _no_sum_row_words(args, expected, got) -> str:
     )
 
 
+def _is_lstsq(args, got) -> bool:
+    """Is ``got`` np.linalg.lstsq's answer to the three equations, sum row included?"""
+    xy, p = (np.asarray(a, dtype=float) for a in args)
+    m = np.vstack([xy.T, np.ones(3)])
+    return near(np.linalg.lstsq(m, np.array([p[0], p[1], 1.0]), rcond=None)[0], got)
+
+
+def _lstsq_words(args, expected, got) -> str:
+    return (
+        f": your weights rebuild p but sum to {num(float(np.sum(got)), 1.0)}, not 1: they are "
+        "np.linalg.lstsq's answer to the three equations. lstsq treats a singular value below "
+        "its rcond (about 7e-16 of the largest) as 0, and this thin triangle far from the "
+        "origin has one that small, so lstsq dropped a direction and returned a least-squares "
+        "compromise, not the solution. E(v1, v2, v3) is not 0 here, so the three equations "
+        "have one exact solution: solve them (Cramer's rule, or np.linalg.solve after a test "
+        "E == 0)"
+    )
+
+
 def _proper(gives):
     """A wrong solution of a proper triangle that raises, as it should, on a zero area."""
 
@@ -946,6 +995,8 @@ def _proper_mistakes() -> list[Mistake]:
     out += [Mistake("absolute area, λ3 = 1 − λ1 − λ2" if neg else "sign, λ3 = 1 − λ1 − λ2",
                     _sign_in_two_words(rest, neg), gives=_sign_in_two(rest, neg))
             for neg in (False, True) for rest in range(3)]  # fmt: skip
+    out += [Mistake("one weight's sign", _one_sign_words(k, r), gives=_one_sign(k, r))
+            for k in range(3) for r in (None, *(j for j in range(3) if j != k))]  # fmt: skip
     out.append(Mistake("p snapped to its pixel centre", _p_snapped_words, gives=_p_snapped))
     out += [Mistake(f"p {how}", _p_coarsened_words(how), gives=_p_coarsened(how))
             for how in P_COARSENED]  # fmt: skip
@@ -954,7 +1005,13 @@ def _proper_mistakes() -> list[Mistake]:
     # r358 2: p left untranslated in a solve about one vertex
     out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
             for k in range(3)]  # fmt: skip
-    out.append(Mistake("no sum equation", _no_sum_row_words, fits=_no_sum_row))
+    out.append(Mistake("no sum equation", _no_sum_row_words,
+                       fits=lambda a, e, g: _no_sum_row(a, e, g) and not _is_lstsq(a, g)))  # fmt: skip
+    # r455 M1: np.linalg.lstsq on the 3×3 system, the sum row in it: its default rcond drops
+    # a thin far triangle's smallest singular value, so it left the sum off by 4e-6 (told
+    # "the third equation is missing")
+    out.append(Mistake("least squares", _lstsq_words,
+                       fits=lambda a, e, g: _no_sum_row(a, e, g) and _is_lstsq(a, g)))  # fmt: skip
     # r421 H2: two vertices swapped to make every triangle run one way, the weights returned
     # in the swapped order (the reversal is "reversed where E < 0" above)
     out += [Mistake("swapped on one winding", _one_winding_words(pair, sign),

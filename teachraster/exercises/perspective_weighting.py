@@ -101,6 +101,15 @@ EXTREME = (
     # r440 W3: w1 = 1e-320, 1e620 from the others: a reference w from the extremes (their
     # geometric mean, 1e-10) overflows its ratio to w1, though 1e-310 to 1e300 did not
     ((0.2, 0.3, 0.5), (1e-320, 1e300, 1e300)),
+    # r455 W3: the catalogue's w = (1, 2, 4) scaled to 1e-320: λ_i · w_ref (2e-321 at v1)
+    # is subnormal, with about 9 significant bits, so (λ_i · w_ref) / w_i was off by 1.6e-4;
+    # λ_i · (w_ref / w_i) is exact (ratios 1, ½, ¼)
+    ((0.2, 0.3, 0.5), (1e-320, 2e-320, 4e-320)),
+    # r455 W2: a λ 1e300 below the others at the vertex of the smallest w, which weighs half
+    # of μ: a mask |λ| > ε with ε down to 1e-300 drops it (the tiny λ of :data:`NEAR_EDGE`
+    # stop at 1e-12); no product here leaves float64's normal range
+    # (w2 ≠ w3, so the answer without λ1, (0, ⅔, ⅓), is not λ itself: "you returned λ")
+    ((1e-300, 0.5, 0.5), (1.0, 1e300, 2e300)),
 )
 
 #: r440 W1, W2: (λ, w) of a point next to an edge, whose tiny λ sits at the smallest w
@@ -139,6 +148,27 @@ def _ws(w) -> str:
 
 def as_weights(value) -> np.ndarray:
     return as_numbers(value, (3,), "3 weights, shape (3,)")
+
+
+#: r455 W1: how many freed buffers of each small size are filled with NaN before each call
+#: (numpy keeps up to 7 freed buffers per size, and hands them out again uncleared)
+POISONED = 8
+
+
+def poison_freed_memory() -> None:
+    """Fill the small buffers numpy keeps for reuse with NaN, so that an entry a function
+    never writes (``np.divide(..., where=...)`` without ``out=``, ``np.empty``) reads NaN
+    on every run, not whatever the memory held (r440 H2, r455 W1: zeros in most runs, so
+    such a function passed, and ``... * λ`` turned any finite garbage into 0)."""
+    for n in range(1, 10):  # 8 to 72 bytes: three weights in float64, float32, (1, 3)...
+        junk = [np.full(n, np.nan) for _ in range(POISONED)]
+        del junk
+
+
+def call_weights(fn, args) -> np.ndarray:
+    """The student's weights, the call made on poisoned freed memory (:func:`poison_freed_memory`)."""
+    poison_freed_memory()
+    return as_weights(fn(*args))
 
 
 def same_weights(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
@@ -201,7 +231,15 @@ def _beyond_variants(lam, w) -> dict[str, np.ndarray]:
             "w1": _normalised(lam * (w[0] / w)),
             "products of w": _normalised(lam * np.array([w[1] * w[2], w[2] * w[0], w[0] * w[1]])),
             "the point's w": lam * (1 / np.sum(lam / w)) / w,
+            # r455 W3: the right reference, multiplied into λ before the divide by w
+            "λ times w_ref first": _normalised(np.where(lam != 0, lam * _w_ref(lam, w), 0.0) / w),
         }  # fmt: skip
+
+
+def _w_ref(lam, w) -> float:
+    """The smallest w among the vertices whose λ is not 0 (the right reference)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    return float(w[lam != 0].min()) if (lam != 0).any() else float("nan")
 
 
 def _beyond_slip(kind: str):
@@ -461,6 +499,7 @@ BEYOND = {
     "products of w": lambda a, e, g: (
         f"your terms λ_i times the other two w left float64's range (here {_products(a)}): a "
         f"product of two w overflows or underflows long before the w do. {ONLY_RATIOS}"),
+    "λ times w_ref first": lambda a, e, g: _subnormal_words(a),
     # r429 H3: what the sum does, not which route used it (np.nan_to_num gives the same 0s)
     "the point's w": lambda a, e, g: (
         f"your weights are all 0: Σ λ_j / w_j = {_sum_q(a)} here ({OVERFLOW}), and a number "
@@ -508,6 +547,22 @@ def _underflow_words(args) -> str:
         f"other terms, λ_i · ({w[k]:.3g} / w_i), underflowed to 0 ({OVERFLOW}), and 0 / 0 is "
         "NaN. Scale by the smallest w among the vertices whose λ is not 0: that vertex's term "
         "is its λ itself, so the sum cannot underflow to 0"
+    )
+
+
+def _subnormal_words(args) -> str:
+    """r455 W3: (λ_i · w_ref) / w_i, whose products are subnormal numbers."""
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    ref = _w_ref(lam, w)
+    k = int(np.argmin(np.where(lam != 0, np.abs(lam * ref), np.inf)))
+    product = abs(float(lam[k] * ref))
+    bits = max(1, int(np.floor(np.log2(product / np.nextafter(0.0, 1.0)))) + 1)
+    return (
+        f"you scaled by the right w, w_ref = {ref:.3g}, but multiplied it into λ before dividing "
+        f"by w: λ{k + 1} · w_ref = {product:.3g} lies below float64's smallest normal number, "
+        f"2.2e-308, where a float keeps only {bits} significant bits, not 53, so your terms "
+        "lost their digits. Divide first: λ_i · (w_ref / w_i), whose ratio is at most 1 and "
+        "exactly 1 at the reference vertex"
     )
 
 
@@ -827,6 +882,27 @@ def _zero_lam_words(args, expected, got) -> str:
     )
 
 
+def _unwritten_nan(args, expected, got) -> bool | None:
+    """r455 W1: NaN on a GPU's w where some λ is 0: no step overflows there, and the check
+    fills freed memory with NaN (:func:`poison_freed_memory`): an entry never written."""
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    if _beyond(w) or not (lam == 0).any():
+        return None
+    return _holds_nan(got)
+
+
+def _unwritten_words(args, expected, got) -> str:
+    lam = np.asarray(args[0], dtype=float)
+    k = int(np.flatnonzero(lam == 0)[0])
+    return (
+        f": on these w no step overflows or divides 0 by 0, but λ{k + 1} = 0 here, and a term "
+        f"you never wrote (v{k + 1}'s, skipped because its λ is 0) held NaN, and spread through "
+        "the sum: np.divide(..., where=...) without out= (or np.empty) leaves the entries it "
+        "skips as they were in memory (zeros on many runs; this check fills freed memory with "
+        "NaN so that it shows every time): pass out=np.zeros(3), or set those entries to 0"
+    )
+
+
 SYMPTOMS = (
     Mistake("sum", _sum_words, fits=lambda a, e, g: _sums_to_other_than_1(g), symptom=True),
     # r440 H2: np.divide(..., where=lam != 0) without out=: garbage where λ = 0, the rule said
@@ -867,11 +943,13 @@ PERSPECTIVE_WEIGHTS = Exercise(
     [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED,
      NUDGED_SCALED, NUDGED_W,
      *(Mistake(kind, words, fits=_beyond_slip(kind)) for kind, words in BEYOND.items()),
-     LAM_BEYOND, NAN_BEYOND, TINY_LAM, FLOAT32_STEP, *SYMPTOMS],
+     LAM_BEYOND, NAN_BEYOND, TINY_LAM, FLOAT32_STEP,
+     Mistake("uninitialised memory", _unwritten_words, fits=_unwritten_nan), *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
              PackageAnswer(normalised_weights)),
-    draw=draw_weights, slow=ONE_POINT, match=match_weights, raised_words=_weights_raised, hints=(
+    draw=draw_weights, slow=ONE_POINT, match=match_weights, raised_words=_weights_raised,
+    call=call_weights, hints=(
         # r39 03-3: the first wrong try printed the answer the task asks to work out
         ("so the 3-D weights go as λ_i / w_i, not λ_i · w_i", "so work out λ_i from the 3-D "
          "weights μ and the three w (a point's screen x is x/w), then turn that around"),
