@@ -995,13 +995,14 @@ def _proper_mistakes() -> list[Mistake]:
     out += [Mistake("absolute area, λ3 = 1 − λ1 − λ2" if neg else "sign, λ3 = 1 − λ1 − λ2",
                     _sign_in_two_words(rest, neg), gives=_sign_in_two(rest, neg))
             for neg in (False, True) for rest in range(3)]  # fmt: skip
-    out += [Mistake("one weight's sign", _one_sign_words(k, r), gives=_one_sign(k, r))
-            for k in range(3) for r in (None, *(j for j in range(3) if j != k))]  # fmt: skip
     out.append(Mistake("p snapped to its pixel centre", _p_snapped_words, gives=_p_snapped))
     out += [Mistake(f"p {how}", _p_coarsened_words(how), gives=_p_coarsened(how))
             for how in P_COARSENED]  # fmt: skip
     out += [Mistake(f"λ3 = {form}", _lambda3_words(form), gives=_lambda3_typo(signs))
             for signs, form in LAMBDA3_SLIPS.items()]  # fmt: skip
+    # r455: one weight's sign flipped (after the λ3 slips: λ3 negated is λ1 + λ2 − 1, told so)
+    out += [Mistake("one weight's sign", _one_sign_words(k, r), gives=_one_sign(k, r))
+            for k in range(3) for r in (None, *(j for j in range(3) if j != k))]  # fmt: skip
     # r358 2: p left untranslated in a solve about one vertex
     out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
             for k in range(3)]  # fmt: skip
