@@ -10226,6 +10226,9 @@ def _b455_edge_v1_v3(xy, p):
 
 
 R455 = {
+    "barycentric of p floored to 1/16 px": (
+        "barycentric", _b440_p_moved(lambda p: np.floor(p * 16) / 16), "p floored to 1/16 px",
+        "p floored to 1/16 px"),
     "barycentric with λ2's products swapped, λ3 = 1 − λ1 − λ2": (
         "barycentric", _b455_l2_flipped,
         "your λ3 = 1 minus the other two carries the slip", "one weight's sign"),

@@ -593,6 +593,12 @@ P_COARSENED = {
         f"p rounded to 1/{k} px (the sub-pixel grid a GPU snaps vertices to, but p here is a "
         "point given on the 1/256-px grid)" if k > 1 else "p rounded to whole pixels")
        for k in (1, 2, 4, 8, 16)},
+    # r455: floored to the sub-pixel grid, np.floor(p * 16) / 16 (whole pixels: "truncated")
+    **{f"floored to 1/{k} px": (
+        lambda p, k=k: np.floor(np.asarray(p, float) * k) / k,
+        f"p floored to 1/{k} px (np.floor(p * {k}) / {k}: the sub-pixel grid a GPU snaps "
+        "vertices to, but p here is a point given on the 1/256-px grid)")
+       for k in (2, 4, 8, 16)},
 }  # fmt: skip
 
 
