@@ -10271,8 +10271,8 @@ R456 = {
     'clip with a tolerance of 1e-7 relative to w': ('clip_near', _r456('clip_near', _R456_11), 'a tolerance in your inside test', 'keeps a vertex behind'),
     'clip with the crossing test d_a * d_b <= 0': ('clip_near', _r456('clip_near', _R456_12), 'lies in the near plane (z + w = 0 at both ends)', 'edge in the plane'),
     'clip computed in float16': ('clip_near', _r456('clip_near', _R456_13), 'every number in it is a 16-bit float', 'computed in 16 bits'),
-    'clip colour with t recovered from x': ('clip_near_colour', _r456('clip_near_colour', _R456_14), 'have the same x and w: did you recover its fraction', 'colour t from one coordinate'),
-    'clip colour with t recovered from z': ('clip_near_colour', _r456('clip_near_colour', _R456_15), 'have the same z: did you recover its fraction', 'colour t from one coordinate'),
+    'clip colour with t recovered from x': ('clip_near_colour', _r456('clip_near_colour', _R456_14), 'did you recover its fraction of the edge from one coordinate, such as (x − x_a)', 'colour t from one coordinate'),
+    'clip colour with t recovered from z': ('clip_near_colour', _r456('clip_near_colour', _R456_15), 'and z: did you recover its fraction', 'colour t from one coordinate'),
     'clip colour with t recovered from w': ('clip_near_colour', _r456('clip_near_colour', _R456_16), 'did you recover its fraction of the edge from one coordinate', 'colour t from one coordinate'),
     'clip colour with t recovered from y': ('clip_near_colour', _r456('clip_near_colour', _R456_17), 'have the same y: did you recover its fraction', 'colour t from one coordinate'),
     'clip colour on a 0-255 scale': ('clip_near_colour', _r456('clip_near_colour', _R456_18), 'its own times 255', 'kept colour changed'),
@@ -10378,3 +10378,67 @@ DIFFERENT.update({
     'clip colour with t from the 4-D length ratio': ('clip_near_colour', _r456('clip_near_colour', _R456_D5)),
     'clip colour by least-squares barycentrics': ('clip_near_colour', _r456('clip_near_colour', _R456_D6)),
 })  # fmt: skip
+_R456_XY = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); rows = []
+    for p in clip_near(v):
+        k = [i for i in range(3) if np.allclose(p, v[i])]
+        if k:
+            rows.append(np.r_[p, c[k[0]]]); continue
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            if (a[2] + a[3] >= 0) != (b[2] + b[3] >= 0):
+                j = 0 if b[0] != a[0] else 1
+                t = (p[j] - a[j]) / (b[j] - a[j])
+                if np.allclose(a + t * (b - a), p):
+                    rows.append(np.r_[p, c[i] + t * (c[(i + 1) % 3] - c[i])]); break
+        else:
+            rows.append(np.r_[p, np.nan, np.nan, np.nan])
+    return np.array(rows).reshape(-1, 7)
+"""
+_R456_ROBUST = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); rows = []
+    for p in clip_near(v):
+        k = [i for i in range(3) if (p == v[i]).all()]
+        if k:
+            rows.append(np.r_[p, c[k[0]]]); continue
+        best = None
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            j = int(np.argmax(np.abs(b - a)))       # the coordinate that changes most
+            t = (p[j] - a[j]) / (b[j] - a[j])
+            err = np.abs(a + t * (b - a) - p).max()
+            if 0 <= t <= 1 and (best is None or err < best[0]):
+                best = (err, c[i] + t * (c[(i + 1) % 3] - c[i]))
+        rows.append(np.r_[p, best[1]])
+    return np.array(rows).reshape(-1, 7)
+"""
+WRONG["clip colour with t from x, else y"] = (
+    "clip_near_colour",
+    _r456("clip_near_colour", _R456_XY),
+    "did you recover its fraction of the edge from one coordinate",
+)
+KINDS["clip colour with t from x, else y"] = "colour t from one coordinate"
+DIFFERENT["clip colour with t from the coordinate that changes most"] = (
+    "clip_near_colour",
+    _r456("clip_near_colour", _R456_ROBUST),
+)

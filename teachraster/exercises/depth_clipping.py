@@ -179,8 +179,8 @@ def _r456_cases() -> list:
     """r456: an edge in the plane (a crossing test `d_a·d_b ≤ 0` divides 0 by 0 there); a
     vertex one float32 step behind the plane, and one 1e-19 behind it close to the eye (a
     tolerance in the inside test kept them: every coordinate and z + w is exact in float32, so
-    a float32 answer still passes); crossing edges whose ends share x and w, or z (4.3's colour
-    t recovered from one coordinate is 0/0 there)."""
+    a float32 answer still passes); crossing edges whose ends share x, y and w, or x, y and z
+    (4.3's colour t recovered from one coordinate, or from x else y, is 0/0 there)."""
     # tiny: 2^-40, so that even d_a·d_b (2^-127) stays a normal float32
     one, tiny = 1 - 2.0**-24, 2.0**-40
     return [
@@ -191,10 +191,10 @@ def _r456_cases() -> list:
         ("a vertex 1e-19 behind the near plane, close to the eye (w = 9.1e-13)",
          (np.array([[1.0, 1, -(tiny + 2.0**-63), tiny], [-1, -1, -(tiny - 2.0**-64), tiny],
                     [1, -1, -(tiny - 2.0**-64), tiny]]),)),
-        ("a crossing edge whose ends share x and w (v1→v2)",
-         (np.array([[0.5, 0, -2, 1], [0.5, 1, 0, 1], [-1, 0.5, -0.5, 0.8]]),)),
-        ("a crossing edge whose ends share z (v1→v2)",
-         (np.array([[0.0, 0, -0.5, 0.2], [1, 0.5, -0.5, 2], [0, 1, 0.5, 1]]),)),
+        ("a crossing edge whose ends share x, y and w (v1→v2)",
+         (np.array([[0.5, 0.5, -2, 1], [0.5, 0.5, 0, 1], [-1, 0, -0.5, 0.8]]),)),
+        ("a crossing edge whose ends share x, y and z (v1→v2)",
+         (np.array([[0.0, 0, -0.5, 0.2], [0, 0, -0.5, 2], [0, 1, 0.5, 1]]),)),
     ]  # fmt: skip
 
 
