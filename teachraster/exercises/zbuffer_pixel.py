@@ -419,14 +419,19 @@ _FORMATS = {
 }
 
 
+def _listed(names: list[str]) -> str:
+    """The names as words: "a", "a and b", "a, b and c"."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
+
+
 def _rounded_alike(a: float, b: float) -> str:
-    """The words " Or …?" where a buffer of some format holds ``a`` and ``b`` as one depth (a rounding
-    gives the same answers as a margin there: both are said), else ""."""
+    """The words " Or …?" where a buffer of some format holds ``a`` and ``b`` as one depth (a
+    rounding gives the same answers as a margin there: both are said), else ""."""
     said = [f for how, f in _FORMATS.items() if len(set(_rounded([a, b], how).tolist())) == 1]
     if not said:
         return ""
     return (
-        f" Or does your buffer round the depths? In {' and in '.join(said)} {num(a, b)} and "
+        f" Or does your buffer round the depths? In {_listed(said)} {num(a, b)} and "
         f"{num(b, a)} are one depth: compare the depths as given"
     )
 
