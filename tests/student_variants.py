@@ -10259,7 +10259,7 @@ def clip_near_colour(v, colours):
 R456 = {
     'depth passes with a margin of 1e-9': ('depth_passes', _r456('depth_passes', _R456_0), 'a margin in your test', 'margin'),
     'depth passes with a relative margin of 1e-7': ('depth_passes', _r456('depth_passes', _R456_1), 'a margin in your test', 'margin'),
-    'depth passes in float16': ('depth_passes', _r456('depth_passes', _R456_2), 'In a 16-bit unorm buffer and in float16 0.2999999 and 0.3 are one depth', 'margin'),
+    'depth passes in float16': ('depth_passes', _r456('depth_passes', _R456_2), 'In a 16-bit unorm buffer and float16 0.2999999 and 0.3 are one depth', 'margin'),
     'depth passes with a 16-bit unorm buffer': ('depth_passes', _r456('depth_passes', _R456_3), 'Or does your buffer round the depths?', 'margin'),
     'depth passes with the mask looked up by depth': ('depth_passes', _r456('depth_passes', _R456_4), 'writes[depths.index(d)]', 'mask looked up by depth'),
     'depth passes with glass failing on an empty buffer': ('depth_passes', _r456('depth_passes', _R456_5), 'glass fails in your answer while the buffer is still empty', 'glass needs a wall'),
