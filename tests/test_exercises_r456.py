@@ -100,3 +100,27 @@ def clip_near_colour(v, colours):
     assert not report.passed
     said = str(report)
     assert "far plane too" in said and "not counted" in said and "clip_polygon" in said
+
+
+def test_depths_near_the_near_plane_are_drawn_on_their_own_scale():
+    """The 1e-20 case's bars were invisible on the 0-1 axis, and no offset text stands above
+    the axis: the scale is in the label."""
+    import matplotlib.pyplot as plt
+
+    def margin(depths, writes):
+        stored, out = np.inf, []
+        for d, w in zip(depths, writes):
+            ok = d < stored - 1e-9
+            out.append(ok)
+            if ok and w:
+                stored = d
+        return out
+
+    report = ex.check("depth_passes", margin)
+    assert "1e-20" in report.failures[0].case
+    fig, ax = plt.subplots()
+    report.plot(ax)
+    fig.canvas.draw()
+    assert ax.get_ylim()[1] < 1e-19
+    assert "× 1e-20" in ax.get_ylabel() and not ax.yaxis.get_offset_text().get_text()
+    plt.close(fig)

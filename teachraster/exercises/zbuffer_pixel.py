@@ -523,6 +523,8 @@ def draw_depth_passes(ax, case, got):
         ax.set_axis_off()
         return [ax.text(0.5, 0.5, "no fragments", ha="center", transform=ax.transAxes)]
     x = np.arange(n)
+    # r456: depths near the near plane (1e-20) are drawn on their own scale, not as no bar
+    top = 1.0 if max(depths) > 0.05 else max(max(depths), 1e-300)
     colours = ["#7fbf7f" if p else "#d7301f" for p in expected]
     mine = got is not None and len(got) == n
     wrong = [bool(mine and got[i] != expected[i]) for i in range(n)]
@@ -534,23 +536,27 @@ def draw_depth_passes(ax, case, got):
         for i in range(n):
             # at the bar's foot: above it, the buffer's line may run (r64)
             said = "passes" if got[i] else "fails"
-            artists.append(ax.text(i, 0.02, f"yours:\n{said}" + (" ✗" if wrong[i] else ""),
+            artists.append(ax.text(i, 0.02 * top, f"yours:\n{said}" + (" ✗" if wrong[i] else ""),
                                    ha="center", va="bottom", fontsize="x-small",
                                    fontweight="bold" if wrong[i] else "normal",
                                    bbox={"boxstyle": "round,pad=0.15", "facecolor": "white",
                                          "edgecolor": WRONG_FRAME if wrong[i] else "none",
                                          "alpha": 0.9}))  # fmt: skip
-    artists += _buffer_line(ax, depths, writes)
+    artists += _buffer_line(ax, depths, writes, top)
     ax.set_xticks(x, [f"{i}" + ("" if writes[i] else "\nglass") for i in range(n)],
                   fontsize="x-small")  # fmt: skip
-    ax.set_ylim(0, 1.08)
+    ax.set_ylim(0, 1.08 * top)
     key = "green: passes, red: fails" + (";\nframed ✗: your verdict differs" if any(wrong) else "")
     ax.set_xlabel(f"fragments in drawing order\n({key})")
     ax.set_ylabel("depth (smaller is nearer)")
+    if top < 1.0:  # the scale in the label, not as an offset above the axis
+        exp = int(np.floor(np.log10(top)))
+        ax.yaxis.set_major_formatter(lambda y, _: f"{y / 10.0**exp:g}")
+        ax.set_ylabel(f"depth (× 1e{exp})\nsmaller is nearer")
     return artists
 
 
-def _buffer_line(ax, depths, writes) -> list:
+def _buffer_line(ax, depths, writes, top: float = 1.0) -> list:
     """What the buffer holds as each fragment arrives, by the rule (r46 C3, r64: the bars
     showed the verdicts but not the number they are decided against); empty drawn at the
     top."""
@@ -559,7 +565,7 @@ def _buffer_line(ax, depths, writes) -> list:
         held.append(stored)
         if passes_depth_test(d, stored) and w:
             stored = d
-    shown = [min(h, 1.04) for h in held]
+    shown = [min(h, 1.04 * top) for h in held]
     x = np.arange(len(depths))
     artists = list(ax.step(np.r_[x - 0.5, x[-1] + 0.5], np.r_[shown, shown[-1]], where="post",
                            color="#2b2b2b", linewidth=2, linestyle="--",
