@@ -10442,3 +10442,20 @@ DIFFERENT["clip colour with t from the coordinate that changes most"] = (
     "clip_near_colour",
     _r456("clip_near_colour", _R456_ROBUST),
 )
+_R456_STRICT = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da > 0: out.append(a)
+        if (da > 0) != (db > 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+WRONG["clip with d > 0 as the inside test"] = (
+    "clip_near",
+    _r456("clip_near", _R456_STRICT),
+    "and your polygon leaves it out: a vertex on the kept side stays",
+)
+KINDS["clip with d > 0 as the inside test"] = "kept vertex changed"

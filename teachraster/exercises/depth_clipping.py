@@ -186,6 +186,10 @@ def _r456_cases() -> list:
     return [
         ("an edge lying in the near plane", (np.array([[-1.0, 0, -1, 1], [1, 0, -1, 1],
                                                        [0, 1, 0.5, 1]]),)),
+        # `d > 0` for the inside test passed every named case: only a drawn one ever left
+        # a vertex on the plane alone (the task keeps it: distance ≥ 0)
+        ("a vertex on the near plane, the other two behind it",
+         (np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, -2, 1]]),)),
         ("a vertex one float32 step behind the near plane (z + w = -6e-08)",
          (np.array([[-1.0, -1, -one, 1], [1, -1, -one, 1], [0, 1, -1, one]]),)),
         ("a vertex 1e-19 behind the near plane, close to the eye (w = 9.1e-13)",
