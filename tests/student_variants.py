@@ -10261,3 +10261,488 @@ DIFFERENT.update({
     "perspective weights by np.divide(out=zeros, where=)": (
         "perspective_weights", _w455_divide_out),
 })  # fmt: skip
+
+
+# == r456 (rf04, exercise 04: a mask looked up by depth, margins and clip tolerances below
+# the old cases, an edge in the near plane, 4.3's colour t from one coordinate (NaN where the
+# ends share it), rounded depths, float16 clips, farthest/reversed/max buffers) ==========
+def _r456(name: str, source: str):
+    """A reader's variant from its notebook cell ``source``: the function ``name``."""
+    space: dict = {"__name__": "__main__", "np": np, "math": math}
+    exec(source, space)  # noqa: S102 - the test's own source
+    return space[name]
+
+
+_R456_0 = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d, w in zip(depths, writes):
+        ok = d < stored - 1e-9
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+_R456_1 = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d, w in zip(depths, writes):
+        ok = d < stored * (1 - 1e-7)
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+_R456_2 = """
+def depth_passes(depths, writes):
+    stored, out = np.float16(np.inf), []
+    for d, w in zip(depths, writes):
+        ok = np.float16(d) < stored
+        out.append(bool(ok))
+        if ok and w: stored = np.float16(d)
+    return out
+"""
+_R456_3 = """
+def depth_passes(depths, writes):
+    stored, out = None, []
+    for d, w in zip(depths, writes):
+        q = round(d * 65535)
+        ok = stored is None or q < stored
+        out.append(ok)
+        if ok and w: stored = q
+    return out
+"""
+_R456_4 = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d in depths:
+        w = writes[depths.index(d)]
+        ok = d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+_R456_5 = """
+def depth_passes(depths, writes):
+    # glass passes only over an opaque fragment already there
+    stored, out = np.inf, []
+    for d, w in zip(depths, writes):
+        ok = d < stored if (w or stored < np.inf) else False
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+_R456_6 = """
+def depth_passes(depths, writes):
+    stored, out = max(depths, default=1.0), []
+    for d, w in zip(depths, writes):
+        ok = d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+_R456_7 = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d, w in zip(reversed(depths), reversed(writes)):
+        ok = d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out[::-1]
+"""
+_R456_8 = """
+def depth_passes(depths, writes):
+    written, out = [], []
+    for d, w in zip(depths, writes):
+        ok = not written or d < max(written)
+        out.append(ok)
+        if ok and w: written.append(d)
+    return out
+"""
+_R456_9 = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= -1e-6: out.append(a)
+        if (da >= -1e-6) != (db >= -1e-6): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+_R456_10 = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= -1e-5: out.append(a)
+        if (da >= -1e-5) != (db >= -1e-5): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+_R456_11 = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        e = 1e-7 * abs(a[3]); f = 1e-7 * abs(b[3])
+        if da >= -e: out.append(a)
+        if (da >= -e) != (db >= -f): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+_R456_12 = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if da * db <= 0 and not (da >= 0 and db >= 0 and da * db == 0 and False): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+_R456_13 = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        a16, b16 = a.astype(np.float16), b.astype(np.float16)
+        da, db = a16[2] + a16[3], b16[2] + b16[3]
+        if da >= 0: out.append(a16.astype(float))
+        if (da >= 0) != (db >= 0): out.append((a16 + da / (da - db) * (b16 - a16)).astype(float))
+    return np.array(out).reshape(-1, 4)
+"""
+_R456_14 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float)
+    rows = []
+    for p in clip_near(v):
+        k = [i for i in range(3) if np.allclose(p, v[i])]
+        if k:
+            rows.append(np.r_[p, c[k[0]]]); continue
+        for i in range(3):   # which edge? the one whose ends straddle the plane and line up
+            a, b = v[i], v[(i + 1) % 3]
+            if (a[2] + a[3] >= 0) != (b[2] + b[3] >= 0):
+                t = (p[0] - a[0]) / (b[0] - a[0])
+                if np.allclose(a + t * (b - a), p):
+                    rows.append(np.r_[p, c[i] + t * (c[(i + 1) % 3] - c[i])]); break
+        else:
+            rows.append(np.r_[p, np.nan, np.nan, np.nan])
+    return np.array(rows).reshape(-1, 7)
+"""
+_R456_15 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(np.r_[a, c[i]])
+        if (da >= 0) != (db >= 0):
+            p = a + da / (da - db) * (b - a)
+            s = (p[2] - a[2]) / (b[2] - a[2])      # how far along, by z
+            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
+    return np.array(out).reshape(-1, 7)
+"""
+_R456_16 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(np.r_[a, c[i]])
+        if (da >= 0) != (db >= 0):
+            p = a + da / (da - db) * (b - a)
+            s = (p[3] - a[3]) / (b[3] - a[3])      # how far along, by w
+            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
+    return np.array(out).reshape(-1, 7)
+"""
+_R456_17 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(np.r_[a, c[i]])
+        if (da >= 0) != (db >= 0):
+            p = a + da / (da - db) * (b - a)
+            s = (p[1] - a[1]) / (b[1] - a[1])
+            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
+    return np.array(out).reshape(-1, 7)
+"""
+_R456_18 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float) * 255; out = []
+    for i in range(3):
+        a, b = np.r_[v[i], c[i]], np.r_[v[(i + 1) % 3], c[(i + 1) % 3]]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 7)
+"""
+_R456_19 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    p = np.column_stack([np.asarray(v, float), np.asarray(colours, np.float16)])
+    out = []
+    for i in range(3):
+        a, b = p[i], p[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0):
+            c = a + da / (da - db) * (b - a); c[4:] = c[4:].astype(np.float16); out.append(c)
+    return np.array(out).reshape(-1, 7)
+"""
+R456 = {
+    'depth passes with a margin of 1e-9': ('depth_passes', _r456('depth_passes', _R456_0), 'a margin in your test', 'margin'),
+    'depth passes with a relative margin of 1e-7': ('depth_passes', _r456('depth_passes', _R456_1), 'a margin in your test', 'margin'),
+    'depth passes in float16': ('depth_passes', _r456('depth_passes', _R456_2), 'In a 16-bit unorm buffer and float16 0.2999999 and 0.3 are one depth', 'margin'),
+    'depth passes with a 16-bit unorm buffer': ('depth_passes', _r456('depth_passes', _R456_3), 'Or does your buffer round the depths?', 'margin'),
+    'depth passes with the mask looked up by depth': ('depth_passes', _r456('depth_passes', _R456_4), 'writes[depths.index(d)]', 'mask looked up by depth'),
+    'depth passes with glass failing on an empty buffer': ('depth_passes', _r456('depth_passes', _R456_5), 'glass fails in your answer while the buffer is still empty', 'glass needs a wall'),
+    'depth passes with the buffer started at max(depths)': ('depth_passes', _r456('depth_passes', _R456_6), 'farthest depth of the pixel (`max(depths)`)', 'started at the farthest depth'),
+    'depth passes walked from the last fragment': ('depth_passes', _r456('depth_passes', _R456_7), 'from the last to the first', 'drawing order reversed'),
+    'depth passes against the farthest depth written': ('depth_passes', _r456('depth_passes', _R456_8), 'the farthest depth written so far', 'farthest written'),
+    'clip with a tolerance of 1e-6 in the inside test': ('clip_near', _r456('clip_near', _R456_9), 'a tolerance in your inside test', 'keeps a vertex behind'),
+    'clip with a tolerance of 1e-5 in the inside test': ('clip_near', _r456('clip_near', _R456_10), 'a tolerance in your inside test', 'keeps a vertex behind'),
+    'clip with a tolerance of 1e-7 relative to w': ('clip_near', _r456('clip_near', _R456_11), 'a tolerance in your inside test', 'keeps a vertex behind'),
+    'clip with the crossing test d_a * d_b <= 0': ('clip_near', _r456('clip_near', _R456_12), 'lies in the near plane (z + w = 0 at both ends)', 'edge in the plane'),
+    'clip computed in float16': ('clip_near', _r456('clip_near', _R456_13), 'every number in it is a 16-bit float', 'computed in 16 bits'),
+    'clip colour with t recovered from x': ('clip_near_colour', _r456('clip_near_colour', _R456_14), 'did you recover its fraction of the edge from one coordinate, such as (x − x_a)', 'colour t from one coordinate'),
+    'clip colour with t recovered from z': ('clip_near_colour', _r456('clip_near_colour', _R456_15), 'and z: did you recover its fraction', 'colour t from one coordinate'),
+    'clip colour with t recovered from w': ('clip_near_colour', _r456('clip_near_colour', _R456_16), 'did you recover its fraction of the edge from one coordinate', 'colour t from one coordinate'),
+    'clip colour with t recovered from y': ('clip_near_colour', _r456('clip_near_colour', _R456_17), 'have the same y: did you recover its fraction', 'colour t from one coordinate'),
+    'clip colour on a 0-255 scale': ('clip_near_colour', _r456('clip_near_colour', _R456_18), 'its own times 255', 'kept colour changed'),
+    'clip colour with colours in float16': ('clip_near_colour', _r456('clip_near_colour', _R456_19), 'rounded to a 16-bit float', 'kept colour changed'),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R456.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R456.items()})
+_R456_D0 = """
+def depth_passes(depths, writes):
+    stored, out = float("inf"), []
+    for d, w in zip(depths, writes):
+        out.append(d < stored)
+        if w: stored = min(stored, d)
+    return out
+"""
+_R456_D1 = """
+def depth_passes(depths, writes):
+    d = np.asarray(depths, float); w = np.asarray(writes, bool)
+    if d.size == 0: return []
+    held = np.minimum.accumulate(np.where(w, d, np.inf))
+    before = np.r_[np.inf, held[:-1]]
+    return (d < before).tolist()
+"""
+_R456_D2 = """
+def depth_passes(depths, writes):
+    stored, out = float("nan"), []
+    for d, w in zip(depths, writes):
+        ok = not (d >= stored)
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+_R456_D3 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    d = v[:, 2] + v[:, 3]
+    for i in range(3):
+        s, p = i - 1, i          # edge v[s] -> v[p], output-p form
+        ds, dp = d[s], d[p]
+        if dp >= 0:
+            if ds < 0:
+                t = dp / (dp - ds); out.append(v[p] + t * (v[s] - v[p]))
+            out.append(v[p])
+        elif ds >= 0:
+            t = ds / (ds - dp); out.append(v[s] + t * (v[p] - v[s]))
+    return np.array(out).reshape(-1, 4)
+"""
+_R456_D4 = """
+def clip_near(v):
+    v = np.asarray(v, np.float32); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if da * db < 0:
+            t = abs(da) / (abs(da) + abs(db)); out.append(a + t * (b - a))
+    return np.array(out, np.float32).reshape(-1, 4)
+"""
+_R456_D5 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(np.r_[a, c[i]])
+        if (da >= 0) != (db >= 0):
+            p = a + da / (da - db) * (b - a)
+            s = np.linalg.norm(p - a) / np.linalg.norm(b - a)
+            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
+    return np.array(out).reshape(-1, 7)
+"""
+_R456_D6 = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float)
+    P = clip_near(v)
+    lam = np.linalg.lstsq(np.vstack([v.T, np.ones(3)]), np.vstack([P.T, np.ones(len(P))]), rcond=None)[0]
+    return np.column_stack([P, lam.T @ c]).reshape(-1, 7)
+"""
+DIFFERENT.update({
+    'depth passes with min() at every write': ('depth_passes', _r456('depth_passes', _R456_D0)),
+    'depth passes with np.minimum.accumulate': ('depth_passes', _r456('depth_passes', _R456_D1)),
+    'depth passes from a NaN buffer, not (d >= stored)': ('depth_passes', _r456('depth_passes', _R456_D2)),
+    'clip in the output-p form of Sutherland-Hodgman': ('clip_near', _r456('clip_near', _R456_D3)),
+    'clip in float32 with t = |d_a|/(|d_a| + |d_b|)': ('clip_near', _r456('clip_near', _R456_D4)),
+    'clip colour with t from the 4-D length ratio': ('clip_near_colour', _r456('clip_near_colour', _R456_D5)),
+    'clip colour by least-squares barycentrics': ('clip_near_colour', _r456('clip_near_colour', _R456_D6)),
+})  # fmt: skip
+_R456_XY = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); rows = []
+    for p in clip_near(v):
+        k = [i for i in range(3) if np.allclose(p, v[i])]
+        if k:
+            rows.append(np.r_[p, c[k[0]]]); continue
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            if (a[2] + a[3] >= 0) != (b[2] + b[3] >= 0):
+                j = 0 if b[0] != a[0] else 1
+                t = (p[j] - a[j]) / (b[j] - a[j])
+                if np.allclose(a + t * (b - a), p):
+                    rows.append(np.r_[p, c[i] + t * (c[(i + 1) % 3] - c[i])]); break
+        else:
+            rows.append(np.r_[p, np.nan, np.nan, np.nan])
+    return np.array(rows).reshape(-1, 7)
+"""
+_R456_ROBUST = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+
+def clip_near_colour(v, colours):
+    v = np.asarray(v, float); c = np.asarray(colours, float); rows = []
+    for p in clip_near(v):
+        k = [i for i in range(3) if (p == v[i]).all()]
+        if k:
+            rows.append(np.r_[p, c[k[0]]]); continue
+        best = None
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            j = int(np.argmax(np.abs(b - a)))       # the coordinate that changes most
+            t = (p[j] - a[j]) / (b[j] - a[j])
+            err = np.abs(a + t * (b - a) - p).max()
+            if 0 <= t <= 1 and (best is None or err < best[0]):
+                best = (err, c[i] + t * (c[(i + 1) % 3] - c[i]))
+        rows.append(np.r_[p, best[1]])
+    return np.array(rows).reshape(-1, 7)
+"""
+WRONG["clip colour with t from x, else y"] = (
+    "clip_near_colour",
+    _r456("clip_near_colour", _R456_XY),
+    "did you recover its fraction of the edge from one coordinate",
+)
+KINDS["clip colour with t from x, else y"] = "colour t from one coordinate"
+DIFFERENT["clip colour with t from the coordinate that changes most"] = (
+    "clip_near_colour",
+    _r456("clip_near_colour", _R456_ROBUST),
+)
+_R456_STRICT = """
+def clip_near(v):
+    v = np.asarray(v, float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da > 0: out.append(a)
+        if (da > 0) != (db > 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+WRONG["clip with d > 0 as the inside test"] = (
+    "clip_near",
+    _r456("clip_near", _R456_STRICT),
+    "and your polygon leaves it out: a vertex on the kept side stays",
+)
+KINDS["clip with d > 0 as the inside test"] = "kept vertex changed"

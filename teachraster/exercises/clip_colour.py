@@ -21,6 +21,7 @@ from ..pipeline.geometry.clipping import clip_polygon
 from .answers import MAX_VERTICES, as_numbers, short
 from .cases import SEED
 from .depth_clipping import (
+    DISTANCES,
     FLOAT32_TOL,
     clip_cases,
     clip_rule,
@@ -148,6 +149,11 @@ def _colour_change(q, p, v, c) -> str:
         return (
             f"its own divided by its w = {num(v[k, 3])} (divided by w and never multiplied back?)"
         )
+    if all_close(p, q * 255, FLOAT32_TOL):  # r456 H7
+        return "its own times 255: colours here run from 0 to 1, as given"
+    half = np.asarray(q, float).astype(np.float16).astype(float)
+    if (p == half).all():  # r456: kept in 16-bit floats
+        return "its own rounded to a 16-bit float (half precision, 11 significant bits)"
     other = [j for j in range(len(c)) if j != k and all_close(p, c[j], FLOAT32_TOL)]
     if other:
         return f"the colour of v{other[0] + 1}"
@@ -256,6 +262,51 @@ def _on_255_words(args, expected, got) -> str:
     )
 
 
+def _shared(a, b) -> str:
+    """The coordinates (x, y, z, w) that ends ``a`` and ``b`` of an edge share."""
+    return " and ".join("xyzw"[k] for k in range(4) if a[k] == b[k])
+
+
+def _nan_on_shared(args, expected, got) -> tuple[int, str] | None:
+    """(i, coordinates): positions right, and every colour that differs is NaN at a new
+    vertex on an edge vi→vi+1 whose ends share a coordinate (r456 W11, W12, H5, H6: the colour
+    t recovered from x, y, z or w alone is 0/0 there); None otherwise."""
+    v, c = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 7)
+    if g.shape != expected.shape or not all_close(g[:, :4], expected[:, :4], FLOAT32_TOL):
+        return None
+    bad = [k for k in range(len(g)) if not all_close(g[k, 4:], expected[k, 4:], FLOAT32_TOL)]
+    if not bad or not all(np.isnan(g[k, 4:]).all() for k in bad):
+        return None
+    d = v[:, 2] + v[:, 3]
+    for i in range(3):
+        j = (i + 1) % 3
+        if (d[i] >= 0) != (d[j] >= 0) and _shared(v[i], v[j]):
+            t = d[i] / (d[i] - d[j])
+            if any(all_close(g[k, :4], v[i] + t * (v[j] - v[i]), FLOAT32_TOL) for k in bad):
+                return i, _shared(v[i], v[j])
+    return None
+
+
+def _nan_on_shared_words(args, expected, got) -> str:
+    i, shared = _nan_on_shared(args, expected, got)
+    j = (i + 1) % 3
+    return (
+        f"your new vertex on the edge v{i + 1}→v{j + 1} has a NaN colour, and both ends of that "
+        f"edge have the same {shared}: did you recover its fraction of the edge from one "
+        f"coordinate, such as ({shared[0]} − {shared[0]}_a)/({shared[0]}_b − {shared[0]}_a)? "
+        "That is 0/0 on such an edge. Which quantity is sure to differ between the ends of "
+        "every edge that crosses the plane? Take the colour at that fraction"
+    )
+
+
+def _far_too(v, colours):
+    """Clipped against the far plane too, the colours riding along (r456 H8: the package's
+    clip_polygon)."""
+    p = clip_with(np.column_stack([np.asarray(v, float), np.asarray(colours, float)]))
+    return p if p is None or not len(p) else clip_with(p, lambda q: q[3] - q[2])
+
+
 _WHY = (
     "a vertex's colour, like its position, changes linearly along the edge in clip space, so "
     "the new vertex takes its colour at its own t"
@@ -316,6 +367,11 @@ COLOUR_MISTAKES = [
     Mistake("mean colour", "your new vertices take the mean of the triangle's three colours: "
             f"a new vertex lies on one edge, between its two ends only; {_WHY}",
             gives=lambda v, c: colour_with(v, c, lambda a, b, t, c=c: np.mean(np.asarray(c, float), axis=0))),
+    Mistake("colour t from one coordinate", _nan_on_shared_words,
+            fits=lambda a, e, g: _nan_on_shared(a, e, g) is not None),
+    Mistake("far plane too", "you clipped against the far plane too (w − z ≥ 0): this "
+            "exercise clips against the near plane only, z + w ≥ 0, so a vertex beyond the far "
+            "plane stays", gives=_far_too),
     Mistake("kept colour changed", _kept_colour_words, fits=lambda a, e, g: _kept_colour(a, e, g)
             is not None, symptom=True),
 ]  # fmt: skip
@@ -349,7 +405,8 @@ def _draw(ax, case, got):
 CLIP_NEAR_COLOUR = Exercise(
     "clip_near_colour", colour_cases, as_coloured,
     lambda g, e, a: same_polygon(g, e, FLOAT32_TOL), explain_colour, _rule, COLOUR_MISTAKES,
-    answers=(PackageAnswer(with_colours),), draw=_draw,
+    # r456 H8, W10: the package's clip with colours as attributes, and its distances
+    answers=(PackageAnswer(with_colours), PackageAnswer(clip_polygon), DISTANCES), draw=_draw,
     # 4.2's cases and clip: a student's call into them does not count
     reference=("teachraster.exercises.depth_clipping",),
     # issue 30: the formula the task asks to work out is said once two wrong answers failed

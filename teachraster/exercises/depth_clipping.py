@@ -159,6 +159,7 @@ def clip_cases():
     for w in (-2e-4, -2e-5):
         v = np.array([[-1.0, -1, 1.804, 2], [1, -1, 1.804, 2], [0, -1, 1.5 * w, w]])
         out.append((f"a vertex a hair behind the eye (w = {num(w)})", (v,)))
+    out += _r456_cases()
     cases = [
         (
             f"{label}: v={vec(a[0][0])}, {vec(a[0][1])}, {vec(a[0][2])}",
@@ -172,6 +173,33 @@ def clip_cases():
     label = "v1 beyond the far plane, v2 behind the near plane: only the near plane clips here"
     cases.append((f"{label}: v={vec(v[0])}, {vec(v[1])}, {vec(v[2])}", (v,), clip_with(v)))
     return cases
+
+
+def _r456_cases() -> list:
+    """r456: an edge in the plane (a crossing test `d_a·d_b ≤ 0` divides 0 by 0 there); a
+    vertex one float32 step behind the plane, and one 1e-19 behind it close to the eye (a
+    tolerance in the inside test kept them: every coordinate and z + w is exact in float32, so
+    a float32 answer still passes); crossing edges whose ends share x, y and w, or x, y and z
+    (4.3's colour t recovered from one coordinate, or from x else y, is 0/0 there)."""
+    # tiny: 2^-40, so that even d_a·d_b (2^-127) stays a normal float32
+    one, tiny = 1 - 2.0**-24, 2.0**-40
+    return [
+        ("an edge lying in the near plane", (np.array([[-1.0, 0, -1, 1], [1, 0, -1, 1],
+                                                       [0, 1, 0.5, 1]]),)),
+        # `d > 0` for the inside test passed every named case: only a drawn one ever left
+        # a vertex on the plane alone (the task keeps it: distance ≥ 0)
+        ("a vertex on the near plane, the other two behind it",
+         (np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, -2, 1]]),)),
+        ("a vertex one float32 step behind the near plane (z + w = -6e-08)",
+         (np.array([[-1.0, -1, -one, 1], [1, -1, -one, 1], [0, 1, -1, one]]),)),
+        ("a vertex 1e-19 behind the near plane, close to the eye (w = 9.1e-13)",
+         (np.array([[1.0, 1, -(tiny + 2.0**-63), tiny], [-1, -1, -(tiny - 2.0**-64), tiny],
+                    [1, -1, -(tiny - 2.0**-64), tiny]]),)),
+        ("a crossing edge whose ends share x, y and w (v1→v2)",
+         (np.array([[0.5, 0.5, -2, 1], [0.5, 0.5, 0, 1], [-1, 0, -0.5, 0.8]]),)),
+        ("a crossing edge whose ends share x, y and z (v1→v2)",
+         (np.array([[0.0, 0, -0.5, 0.2], [0, 0, -0.5, 2], [0, 1, 0.5, 1]]),)),
+    ]  # fmt: skip
 
 
 #: The catalogue's near-plane cases, named in words as the other cases are (r306 S4).
@@ -413,9 +441,13 @@ def _kept_behind(args, got) -> list:
     """The triangle's own vertices that ``got`` keeps behind the plane (a new vertex behind
     it has a wrong t: :func:`_off_plane` says so, r294 H-cn4)."""
     (v,) = args
+    v = np.asarray(v, dtype=float)
     scale = max(1.0, float(np.abs(v).max()))
     g = np.asarray(got, dtype=float).reshape(-1, 4)
-    return [p for p in g if p[2] + p[3] < -TOL * scale and _own(v, p)]
+    # r456: a vertex of the case 1e-19 behind the plane, returned as it is, is behind too
+    exact = [q for q in v if q[2] + q[3] < 0]
+    return [p for p in g if (p[2] + p[3] < -TOL * scale and _own(v, p))
+            or any((p == q).all() for q in exact)]  # fmt: skip
 
 
 def _behind(args, expected, got) -> bool:
@@ -424,7 +456,11 @@ def _behind(args, expected, got) -> bool:
 
 def _behind_words(args, expected, got) -> str:
     bad = _kept_behind(args, got)[0]
-    said = f"your polygon keeps {vec(bad)}, whose z + w = {num(bad[2] + bad[3])} < 0"
+    # r456: z = -1 beside w = 0.99999994 printed as (…, -1, 1), which looks on the plane
+    said = (
+        f"your polygon keeps {vec(bad)}, whose z = {num(bad[2], -bad[3])} and w = "
+        f"{num(bad[3], -bad[2])}: z + w = {num(bad[2] + bad[3])} < 0"
+    )
     (v,) = args
     if bad[2] + bad[3] > -1e-2 * max(1.0, float(np.abs(v).max())):
         # r448 W2: a tolerance in the inside test keeps a vertex a hair behind the plane
@@ -605,6 +641,53 @@ def _one_component_words(args, expected, got) -> str:
         f"changed after. All four components are interpolated at that t, a + t·(b − a), and "
         "left as they come (the new vertex lies on the plane, z + w = 0, because its z and w "
         "are both interpolated)"
+    )
+
+
+def _edge_in_plane(v) -> int | None:
+    """The first edge i→i+1 with both ends on the near plane (z + w = 0), else None."""
+    d = np.asarray(v, dtype=float)[:, 2] + np.asarray(v, dtype=float)[:, 3]
+    return next((i for i in range(3) if d[i] == 0 and d[(i + 1) % 3] == 0), None)
+
+
+def _in_plane_nan(args, expected, got) -> bool:
+    g = np.asarray(got, dtype=float)
+    return _edge_in_plane(args[0]) is not None and bool(np.isnan(g).any())
+
+
+def _in_plane_words(args, expected, got) -> str:
+    i = _edge_in_plane(args[0])
+    return (
+        f"your polygon holds NaN: the edge v{i + 1}→v{(i + 1) % 3 + 1} lies in the near plane "
+        "(z + w = 0 at both ends), and your t = d_a/(d_a − d_b) there is 0/0. Such an edge "
+        "does not cross the plane: both its ends are kept (test the crossing as one end "
+        "inside and the other behind, not by d_a·d_b ≤ 0)"
+    )
+
+
+def _float16(args, expected, got) -> bool | None:
+    """Every number of ``got`` a float16, and the polygon right within float16's rounding (of
+    the triangle too: a vertex 6e-8 behind the plane is on it in float16)."""
+    g = np.asarray(got, dtype=float).reshape(-1, 4)
+    with np.errstate(over="ignore", under="ignore"):
+        held = g.astype(np.float16).astype(float)
+        rounded = clip_with(np.asarray(args[0], float).astype(np.float16).astype(float))
+    if not len(g):
+        return None  # nothing to round: no say
+    if not (np.isfinite(g).all() and (held == g).all()):
+        return False
+    return same_polygon(g, expected, 1e-2) or (
+        rounded is not None and same_polygon(g, rounded, 1e-2)
+    )
+
+
+def _float16_words(args, expected, got) -> str:
+    # the fit is the evidence (every number a half, the polygon right within its rounding):
+    # the answer's dtype (float64 after a cast back) cannot tell the diagnosis's own guard
+    return (
+        "your polygon is right to about 3 significant digits, and every number in it is a "
+        "16-bit float (half precision, 11 significant bits): computed in halves? The check "
+        "compares within 1e-5 (a GPU clips in 32-bit floats); compute in 32 or 64 bits"
     )
 
 
@@ -807,6 +890,10 @@ CLIP_MISTAKES = [
             "near plane but off the edge. Find t from z + w in clip space and "
             "interpolate x, y, z and w there"), gives=_ndc_crossing),
     Mistake("vertex too many", _one_too_many_words, fits=_one_too_many),
+    # r456 W9: a crossing test `d_a·d_b ≤ 0` divided 0 by 0 on an edge in the plane
+    Mistake("edge in the plane", _in_plane_words, fits=_in_plane_nan),
+    # r456 M4: computed in float16 (3 digits): told "its t is wrong"
+    Mistake("computed in 16 bits", _float16_words, fits=_float16),
     # r448 M3: w set to 1, z set to −1 or nudged inside after a right t: told "its t is wrong"
     Mistake("new vertex changed", _one_component_words,
             fits=lambda a, e, g: _one_component_off(a, e, g) is not None),
@@ -899,10 +986,16 @@ def _draw_clip(ax, case, got):
     return draw_clip(ax, case[1][0], case[2], got)
 
 
+#: r456 W10: the package's distances to the clip planes, the distance the task asks to work
+#: out, passed unflagged
+DISTANCES = PackageAnswer(
+    distances, what="the signed distance to the near plane, a part of this very answer"
+)
+
 CLIP_NEAR = Exercise(
     "clip_near", clip_cases, as_polygon, lambda g, e, a: same_polygon(g, e, FLOAT32_TOL), explain_clip,
     clip_rule, CLIP_MISTAKES, float32=lambda args: float(np.abs(args[0]).max()) * 4,
-    answers=(PackageAnswer(clip_polygon),), draw=_draw_clip, hints=_CLIP_HINTS,
+    answers=(PackageAnswer(clip_polygon), DISTANCES), draw=_draw_clip, hints=_CLIP_HINTS,
     constant=_constant_polygon,
     match=lambda got, answer, args: same_polygon(np.asarray(got, float).reshape(-1, 4), answer, 1e-6),
 )  # fmt: skip

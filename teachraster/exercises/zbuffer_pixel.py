@@ -55,6 +55,25 @@ NAMED = (
     ),
     # r448 M1: glass after two walls, the nearer second: glass between them fails
     ("two walls, the nearer second, then glass between them", [0.6, 0.3, 0.4], [True, True, False]),
+    # r456 W4: a mask looked up by depth (`writes[depths.index(d)]`) read the wall as glass
+    (
+        "glass, a wall at the same depth, then a wall behind both",
+        [0.5, 0.5, 0.6],
+        [False, True, True],
+    ),
+    # r456 W1-W3: margins below 1e-7 passed. Two neighbouring float32s (a float32 buffer holds
+    # them apart: relative 6e-8, the finest it can), and depths near the near plane, where an
+    # absolute margin of any usual size (1e-9, 1e-12, machine epsilon) is larger than the gap
+    (
+        "a wall, then one nearer by one float32 step (6e-8 relative)",
+        [0.4999999701976776, 0.4999999403953552],
+        [True, True],
+    ),
+    (
+        "a wall a hair behind the near plane (depth 1e-20), then one at half its depth",
+        [1e-20, 5e-21],
+        [True, True],
+    ),
 )
 
 
@@ -318,7 +337,8 @@ def _margins(depths) -> list[float]:
     random cases' grid), either sign, and ±0.05 (a margin below the grid's step; r448 W1)."""
     d = np.asarray(depths, dtype=float)
     gaps = {abs(a - b) for a in d.tolist() for b in d.tolist()} | {0.05}
-    return sorted(m * s for m in gaps if 0 < m < 0.1 for s in (1, -1))
+    # r456: not the grid's 0.1 itself (0.6 − 0.5 is 0.0999…): a mask slip was "a tolerance"
+    return sorted(m * s for m in gaps if 0 < m <= 0.05 for s in (1, -1))
 
 
 def _margin_of(args, got) -> float | None:
@@ -346,7 +366,8 @@ def _margin_words(args, expected, got) -> str:
     return (
         f"a fragment {num(gap)} nearer than the depth the buffer holds fails in your answer: "
         "a margin in your test (d < stored − ε)? A fragment passes when it is strictly nearer "
-        "by any amount, d < stored, with no tolerance"
+        "by any amount, d < stored, with no tolerance."
+        + ("" if held is None else _rounded_alike(depths[k], held))
     )
 
 
@@ -381,6 +402,101 @@ GLASS_WHOLE_PIXEL = Mistake(
     "by passing later, not by failing the glass)", gives=_glass_against_nearest_opaque)  # fmt: skip
 
 
+def _rounded(depths, how: str) -> np.ndarray:
+    """``depths`` as a buffer of format ``how`` holds them (r456 M1, M2)."""
+    d = np.asarray(depths, dtype=float)
+    if how == "float16":
+        return d.astype(np.float16).astype(float)
+    steps = 2.0 ** int(how[5:]) - 1  # "unorm16", "unorm24"
+    return np.round(d * steps) / steps
+
+
+#: r456 M1, M2: the formats a buffer may round to, finest first (said beside a margin)
+_FORMATS = {
+    "unorm24": "a 24-bit unorm buffer",
+    "unorm16": "a 16-bit unorm buffer",
+    "float16": "float16",
+}
+
+
+def _listed(names: list[str]) -> str:
+    """The names as words: "a", "a and b", "a, b and c"."""
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} and {names[-1]}"
+
+
+def _rounded_alike(a: float, b: float) -> str:
+    """The words " Or …?" where a buffer of some format holds ``a`` and ``b`` as one depth (a
+    rounding gives the same answers as a margin there: both are said), else ""."""
+    said = [f for how, f in _FORMATS.items() if len(set(_rounded([a, b], how).tolist())) == 1]
+    if not said:
+        return ""
+    return (
+        f" Or does your buffer round the depths? In {_listed(said)} {num(a, b)} and "
+        f"{num(b, a)} are one depth: compare the depths as given"
+    )
+
+
+def _mask_by_depth(depths, writes) -> np.ndarray:
+    """Each fragment given the mask of the first fragment at its depth (r456 W4:
+    ``writes[depths.index(d)]``)."""
+    d = np.asarray(depths, dtype=float).tolist()
+    return _simulate(d, [bool(writes[d.index(x)]) for x in d])
+
+
+def _by_depth_words(args, expected, got) -> str:
+    depths, writes = args
+    k = next(i for i, x in enumerate(depths) if writes[i] != writes[depths.index(x)])
+    first = depths.index(depths[k])
+    what = ("wall", "glass") if writes[k] else ("glass", "wall")
+    return (
+        f"in your answer fragment {k} (a {what[0]} at depth {num(depths[k])}) is taken for "
+        f"{'' if what[1] == 'glass' else 'a '}{what[1]}, as fragment {first} at the same depth "
+        "is: is each mask looked up by its depth (`writes[depths.index(d)]`)? Pair each "
+        "fragment's depth with its own mask, `zip(depths, writes)`"
+    )
+
+
+def _glass_needs_a_wall(depths, writes) -> np.ndarray:
+    """The rule, but glass fails while the buffer is empty (r456 M3, told "glass never
+    passes")."""
+    right = _simulate(depths, writes)
+    written = np.cumsum(np.asarray(writes, dtype=bool) & right)
+    empty = np.r_[0, written[:-1]] == 0 if len(right) else right
+    return right & (np.asarray(writes, dtype=bool) | ~empty)
+
+
+def _farthest_written(depths, writes) -> np.ndarray:
+    """Each fragment compared with the farthest depth written so far (r456 H3)."""
+    written, out = [], []
+    for d, w in zip(np.asarray(depths, float).tolist(), np.asarray(writes, bool).tolist()):
+        ok = not written or d < max(written)
+        out.append(ok)
+        if ok and w:
+            written.append(d)
+    return np.array(out, dtype=bool)
+
+
+#: r456: first explanations that were the hint alone (H1 to H3) or a false "glass never passes"
+MORE_MISTAKES = [
+    Mistake("mask looked up by depth", _by_depth_words, gives=_mask_by_depth),
+    Mistake("glass needs a wall", "glass fails in your answer while the buffer is still empty "
+            "(nothing opaque drawn before it): an empty buffer holds nothing in front of the "
+            "glass, so it passes (then a wall drawn later behind it passes too and covers it)",
+            gives=_glass_needs_a_wall),
+    Mistake("started at the farthest depth", "you started the buffer at the farthest depth of "
+            "the pixel (`max(depths)`), so a fragment at that depth fails even when nothing was "
+            "drawn before it: the buffer starts empty, and the first fragment passes whatever "
+            "its depth", gives=lambda d, w: _simulate(d, w, start=max(d) if len(d) else np.inf)),
+    Mistake("drawing order reversed", "you decided the fragments from the last to the first: "
+            "they arrive in the order given (drawing order), and each is tested against what the "
+            "fragments drawn before it wrote",
+            gives=lambda d, w: _simulate(np.asarray(d, float)[::-1], np.asarray(w, bool)[::-1])[::-1]),
+    Mistake("farthest written", "you compared each fragment with the farthest depth written so "
+            "far: the buffer holds the depth of the last fragment that passed and wrote, which "
+            "is the nearest so far", gives=_farthest_written),
+]  # fmt: skip
+
+
 #: r357 H1: after every cause the checker runs, and only where it fits every failing case (a
 #: description, no answer it gives: not in :data:`DEPTH_MISTAKES`, which the capstone runs)
 SHIFTED = Mistake("shifted by one", _shift_words, fits=_shifted, only_whole=True)
@@ -407,6 +523,8 @@ def draw_depth_passes(ax, case, got):
         ax.set_axis_off()
         return [ax.text(0.5, 0.5, "no fragments", ha="center", transform=ax.transAxes)]
     x = np.arange(n)
+    # r456: depths near the near plane (1e-20) are drawn on their own scale, not as no bar
+    top = 1.0 if max(depths) > 0.05 else max(max(depths), 1e-300)
     colours = ["#7fbf7f" if p else "#d7301f" for p in expected]
     mine = got is not None and len(got) == n
     wrong = [bool(mine and got[i] != expected[i]) for i in range(n)]
@@ -418,23 +536,27 @@ def draw_depth_passes(ax, case, got):
         for i in range(n):
             # at the bar's foot: above it, the buffer's line may run (r64)
             said = "passes" if got[i] else "fails"
-            artists.append(ax.text(i, 0.02, f"yours:\n{said}" + (" ✗" if wrong[i] else ""),
+            artists.append(ax.text(i, 0.02 * top, f"yours:\n{said}" + (" ✗" if wrong[i] else ""),
                                    ha="center", va="bottom", fontsize="x-small",
                                    fontweight="bold" if wrong[i] else "normal",
                                    bbox={"boxstyle": "round,pad=0.15", "facecolor": "white",
                                          "edgecolor": WRONG_FRAME if wrong[i] else "none",
                                          "alpha": 0.9}))  # fmt: skip
-    artists += _buffer_line(ax, depths, writes)
+    artists += _buffer_line(ax, depths, writes, top)
     ax.set_xticks(x, [f"{i}" + ("" if writes[i] else "\nglass") for i in range(n)],
                   fontsize="x-small")  # fmt: skip
-    ax.set_ylim(0, 1.08)
+    ax.set_ylim(0, 1.08 * top)
     key = "green: passes, red: fails" + (";\nframed ✗: your verdict differs" if any(wrong) else "")
     ax.set_xlabel(f"fragments in drawing order\n({key})")
     ax.set_ylabel("depth (smaller is nearer)")
+    if top < 1.0:  # the scale in the label, not as an offset above the axis
+        exp = int(np.floor(np.log10(top)))
+        ax.yaxis.set_major_formatter(lambda y, _: f"{y / 10.0**exp:g}")
+        ax.set_ylabel(f"depth (× 1e{exp})\nsmaller is nearer")
     return artists
 
 
-def _buffer_line(ax, depths, writes) -> list:
+def _buffer_line(ax, depths, writes, top: float = 1.0) -> list:
     """What the buffer holds as each fragment arrives, by the rule (r46 C3, r64: the bars
     showed the verdicts but not the number they are decided against); empty drawn at the
     top."""
@@ -443,7 +565,7 @@ def _buffer_line(ax, depths, writes) -> list:
         held.append(stored)
         if passes_depth_test(d, stored) and w:
             stored = d
-    shown = [min(h, 1.04) for h in held]
+    shown = [min(h, 1.04 * top) for h in held]
     x = np.arange(len(depths))
     artists = list(ax.step(np.r_[x - 0.5, x[-1] + 0.5], np.r_[shown, shown[-1]], where="post",
                            color="#2b2b2b", linewidth=2, linestyle="--",
@@ -458,8 +580,11 @@ DEPTH_PASSES = Exercise(
     # r448 M1: "glass is still tested" only where no passing answer lets glass behind a wall
     # fail (it was said of glass tested against the first wall written)
     [*(replace(m, consistent=True) if m.kind == "glass untested" else m for m in DEPTH_MISTAKES),
-     GLASS_WHOLE_PIXEL, MARGIN, SHIFTED],
-    answers=(PackageAnswer(passed_on_arrival),), draw=draw_depth_passes, hints=(
+     GLASS_WHOLE_PIXEL, *MORE_MISTAKES, MARGIN, SHIFTED],
+    # r456 W5: the package's depth test inside the student's loop passed unflagged
+    answers=(PackageAnswer(passed_on_arrival),
+             PackageAnswer(passes_depth_test, what="the depth test, a part of this very answer")),
+    draw=draw_depth_passes, hints=(
         # issue 30 (r46 C2): the task asks for the buffer's rule; the first wrong try asks back
         ("A fragment passes when it is strictly nearer than the depth the buffer holds, and "
          "only one that passes and writes depth changes what the buffer holds",
