@@ -9974,3 +9974,84 @@ R450 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R450.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R450.items()})
+
+
+# -- r453 01: covers at the centre of p's pixel (passed; capstone 12 asks at samples), a λ
+# tolerance and float32 vertices (misnamed), a parenthesised tie test, the third edge reversed,
+# p − (½, ½) (half-named), and a fill of an object array of bools (wrongly failed) ------------
+def _r453_covers(slip=None):
+    """The conventions' covers with one r453 slip."""
+
+    def fn(xy, p):
+        v = [tuple(float(c) for c in q) for q in xy]
+        if slip == "pixel centre":
+            p = (math.floor(p[0]) + 0.5, math.floor(p[1]) + 0.5)
+        if slip == "before p":
+            p = (p[0] - 0.5, p[1] - 0.5)
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return False
+        if area < 0:
+            v, area = [v[0], v[2], v[1]], -area
+        edges = [(v[0], v[1]), (v[1], v[2]), (v[0], v[2]) if slip == "third edge" else (v[2], v[0])]
+        for a, b in edges:
+            e, tl = edge_function(a, b, p), _owns(a, b)
+            if slip == "lambda":
+                e = e / area
+                refused = e < -1e-12 or (abs(e) <= 1e-12 and not tl)
+            elif slip == "precedence":
+                refused = (e < 0 or e == 0) and not tl
+            else:
+                refused = e < 0 or (e == 0 and not tl)
+            if refused:
+                return False
+        return True
+
+    return fn
+
+
+def _r453_covers32(xy, p):
+    """The conventions' covers on its vertices held in float32 (E from differences)."""
+    v = [tuple(np.float32(c) for c in q) for q in xy]
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return False
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    for a, b in ((v[0], v[1]), (v[1], v[2]), (v[2], v[0])):
+        e = edge_function(a, b, p)
+        if e < 0 or (e == 0 and not _owns(a, b)):
+            return False
+    return True
+
+
+def _r453_object_fill(xy, width, height):
+    out = np.full((height, width), None)
+    for i in range(height):
+        for j in range(width):
+            out[i, j] = covers(xy, (j + 0.5, i + 0.5))
+    return out
+
+
+R453 = {
+    "covers testing the centre of p's pixel, floor(p) + 0.5 (r453 WP1)": (
+        "covers", _r453_covers("pixel centre"), "you tested the centre of p's pixel",
+        "p's pixel centre"),
+    "covers with a tolerance of 1e-12 on λ = E / area (r453 M1)": (
+        "covers", _r453_covers("lambda"), "a tolerance relative to the triangle's area",
+        "a tolerance relative to the area"),
+    "covers with its vertices in float32 (r453 M2)": (
+        "covers", _r453_covers32, "your vertices are held in float32",
+        "vertices in float32"),
+    "covers with (e < 0 or e == 0) and not top_left (r453 H1)": (
+        "covers", _r453_covers("precedence"), "you never refuse a centre outside a top or left "
+        "edge", "tie test parenthesised"),
+    "covers testing v1→v3 for v3→v1 (r453 H2)": (
+        "covers", _r453_covers("third edge"), "you test the edge v1→v3 instead of v3→v1",
+        "third edge reversed"),
+    "covers testing p − (0.5, 0.5) (r453 H3)": (
+        "covers", _r453_covers("before p"), "you tested p − (0.5, 0.5), not p", "tested before p"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R453.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R453.items()})
+DIFFERENT["fill into an object array of Python bools (r453 WF1)"] = ("fill", _r453_object_fill)
