@@ -10025,6 +10025,34 @@ def _r453_covers32(xy, p):
     return True
 
 
+def _r453_left_running(xy, p):
+    """The conventions' covers whose left edges are the ones running left (b.x < a.x)."""
+    v = [tuple(float(c) for c in q) for q in xy]
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return False
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    for a, b in ((v[0], v[1]), (v[1], v[2]), (v[2], v[0])):
+        e = edge_function(a, b, p)
+        tl = b[0] < a[0] or (b[1] == a[1] and b[0] > a[0])
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+def _r453_box_fill(xy, width, height):
+    """A box loop ending at floor(max − 0.5), exclusive: one short at the right and bottom."""
+    v = np.asarray(xy, dtype=float)
+    x0, y0 = np.floor(v.min(axis=0) - 0.5).astype(int)
+    x1, y1 = np.floor(v.max(axis=0) - 0.5).astype(int)
+    out = np.zeros((height, width), dtype=bool)
+    for i in range(max(y0, 0), min(y1, height)):
+        for j in range(max(x0, 0), min(x1, width)):
+            out[i, j] = covers(xy, (j + 0.5, i + 0.5))
+    return out
+
+
 def _r453_object_fill(xy, width, height):
     out = np.full((height, width), None)
     for i in range(height):
@@ -10049,6 +10077,11 @@ R453 = {
     "covers testing v1→v3 for v3→v1 (r453 H2)": (
         "covers", _r453_covers("third edge"), "you test the edge v1→v3 instead of v3→v1",
         "third edge reversed"),
+    "covers taking edges running left for left edges (r453 H4)": (
+        "covers", _r453_left_running, "your tie test takes an edge that runs to the left",
+        "left-running edges own their ties"),
+    "fill looping to floor(max − 0.5), exclusive (r453 H7)": (
+        "fill", _r453_box_fill, "your bounding box stops one pixel short", "bounding box one short"),
     "covers testing p − (0.5, 0.5) (r453 H3)": (
         "covers", _r453_covers("before p"), "you tested p − (0.5, 0.5), not p", "tested before p"),
 }  # fmt: skip

@@ -681,7 +681,8 @@ BOX_SHORT = (
     "your bounding box stops one pixel short at the {sides}: the last column (row) whose "
     "centre the triangle may cover is ceil(x_max) − 1 (ceil(y_max) − 1), so the loop is "
     "range(floor(x_min), ceil(x_max)) with its end exclusive (clamped to the image), not "
-    "range(…, ceil(x_max) − 1) (nor floor(x_max), round(x_max))"
+    "range(…, ceil(x_max) − 1) (nor floor(x_max), round(x_max) or floor(x_max − 0.5), the "
+    "last centre's column, as an exclusive end)"
 )
 
 
@@ -848,6 +849,19 @@ RIGHT_RUNNING = (
 )
 
 
+def _owns_left_running(a, b) -> bool:
+    """r453 H4: a "left" edge taken for one that runs to the left (b.x < a.x)."""
+    return bool(b[0] < a[0] or (b[1] == a[1] and b[0] > a[0]))
+
+
+LEFT_RUNNING = (
+    "your tie test takes an edge that runs to the left (b.x < a.x) for a left edge: a left edge "
+    "is one with the interior to its right as seen on screen (y down), and the way an edge runs "
+    "in x does not decide that (work out which way a left edge of the positively oriented "
+    "triangle runs)"
+)
+
+
 def _tiny(xy) -> bool:
     return 0 < abs(cov.area2(xy)) < 1.0
 
@@ -957,6 +971,8 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
     table = [
         Mistake("right-running edges own their ties", RIGHT_RUNNING,
                 gives=lambda case: masks(cov.rule_images(case, owns=_owns_right_running), case)),
+        Mistake("left-running edges own their ties", _in_covers(LEFT_RUNNING, not masked),
+                gives=lambda case: masks(cov.rule_images(case, owns=_owns_left_running), case)),
         # r347: named only where they give every failing case they must (a fit on one case
         # alone is a coincidence: a point sampled off the centre left a sliver empty)
         Mistake("zero area by a tolerance", _area_tolerance_words, fits=_area_tolerance_fits,
