@@ -10066,8 +10066,8 @@ R453 = {
         "covers", _r453_covers("pixel centre"), "you tested the centre of p's pixel",
         "p's pixel centre"),
     "covers with a tolerance of 1e-12 on λ = E / area (r453 M1)": (
-        "covers", _r453_covers("lambda"), "a tolerance relative to the triangle's area",
-        "a tolerance relative to the area"),
+        "covers", _r453_covers("lambda"), "relative to the triangle's area",
+        "edges by a tolerance"),
     "covers with its vertices in float32 (r453 M2)": (
         "covers", _r453_covers32, "your vertices are held in float32",
         "vertices in float32"),
@@ -10082,6 +10082,9 @@ R453 = {
         "left-running edges own their ties"),
     "fill looping to floor(max − 0.5), exclusive (r453 H7)": (
         "fill", _r453_box_fill, "your bounding box stops one pixel short", "bounding box one short"),
+    "edge_function returning np.sign(E) (r453 H9)": (
+        "edge_function", lambda a, b, p: float(np.sign(edge_function(a, b, p))),
+        "yours is E's sign alone", "sign only"),
     "covers testing p − (0.5, 0.5) (r453 H3)": (
         "covers", _r453_covers("before p"), "you tested p − (0.5, 0.5), not p", "tested before p"),
 }  # fmt: skip

@@ -1107,7 +1107,7 @@ def _distance_mistakes(masks, after_step: bool = False) -> list[Mistake]:
     kinds = {"absolute": "edges by a tolerance", "distance": "a tolerance on the distance to the edge",
              "distance, one-sided": "a tolerance on the distance to the edge",
              "bias": "a bias on the edges that do not own their ties",
-             "area": "a tolerance relative to the area"}  # fmt: skip
+             "area": "edges by a tolerance"}  # fmt: skip
 
     def span(form):
         def interval(args, expected, got):

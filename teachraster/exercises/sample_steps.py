@@ -275,7 +275,8 @@ def bias_words(case: CoverageCase, r: float) -> str:
 def area_words(case: CoverageCase, r: float) -> str:
     """r453 M1: a tolerance on λ = E / E(v1, v2, v3) (told a step off the centre before)."""
     return (
-        "a tolerance relative to the triangle's area: you take a centre whose λ = E / E(v1, "
+        "a tolerance in the edge test, relative to the triangle's area: you take a centre "
+        "whose λ = E / E(v1, "
         f"v2, v3) (a barycentric) lies within ε of 0, ε above {cov.fmt(r)}, for one on the "
         "edge, so the tie rule decides it, though it lies strictly inside. Beside an edge of a "
         "large "
