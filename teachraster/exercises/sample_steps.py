@@ -281,6 +281,6 @@ def area_words(case: CoverageCase, r: float) -> str:
         "edge, so the tie rule decides it, though it lies strictly inside. Beside an edge of a "
         "large "
         "triangle a centre 2^-16 px² inside has λ = 2^-16 / E(v1, v2, v3): 1e-12 where the "
-        "area is 10^7 px², below any ε you might pick. On the 1/256 grid E is exact: compare "
-        "E (or λ) with 0 exactly, no ε"
+        "area is 10^7 px², below any ε you might pick. On the 1/256 grid E is exact: a centre "
+        "off the edge has |E| ≥ 2^-16 px², so compare E (or λ) with 0 exactly, no ε"
     )
