@@ -10746,3 +10746,120 @@ WRONG["clip with d > 0 as the inside test"] = (
     "and your polygon leaves it out: a vertex on the kept side stays",
 )
 KINDS["clip with d > 0 as the inside test"] = "kept vertex changed"
+
+
+# -- r453 01: covers at the centre of p's pixel (passed; capstone 12 asks at samples), a λ
+# tolerance and float32 vertices (misnamed), a parenthesised tie test, the third edge reversed,
+# p − (½, ½) (half-named), and a fill of an object array of bools (wrongly failed) ------------
+def _r453_covers(slip=None):
+    """The conventions' covers with one r453 slip."""
+
+    def fn(xy, p):
+        v = [tuple(float(c) for c in q) for q in xy]
+        if slip == "pixel centre":
+            p = (math.floor(p[0]) + 0.5, math.floor(p[1]) + 0.5)
+        if slip == "before p":
+            p = (p[0] - 0.5, p[1] - 0.5)
+        area = edge_function(v[0], v[1], v[2])
+        if area == 0:
+            return False
+        if area < 0:
+            v, area = [v[0], v[2], v[1]], -area
+        edges = [(v[0], v[1]), (v[1], v[2]), (v[0], v[2]) if slip == "third edge" else (v[2], v[0])]
+        for a, b in edges:
+            e, tl = edge_function(a, b, p), _owns(a, b)
+            if slip == "lambda":
+                e = e / area
+                refused = e < -1e-12 or (abs(e) <= 1e-12 and not tl)
+            elif slip == "precedence":
+                refused = (e < 0 or e == 0) and not tl
+            else:
+                refused = e < 0 or (e == 0 and not tl)
+            if refused:
+                return False
+        return True
+
+    return fn
+
+
+def _r453_covers32(xy, p):
+    """The conventions' covers on its vertices held in float32 (E from differences)."""
+    v = [tuple(np.float32(c) for c in q) for q in xy]
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return False
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    for a, b in ((v[0], v[1]), (v[1], v[2]), (v[2], v[0])):
+        e = edge_function(a, b, p)
+        if e < 0 or (e == 0 and not _owns(a, b)):
+            return False
+    return True
+
+
+def _r453_left_running(xy, p):
+    """The conventions' covers whose left edges are the ones running left (b.x < a.x)."""
+    v = [tuple(float(c) for c in q) for q in xy]
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return False
+    if area < 0:
+        v = [v[0], v[2], v[1]]
+    for a, b in ((v[0], v[1]), (v[1], v[2]), (v[2], v[0])):
+        e = edge_function(a, b, p)
+        tl = b[0] < a[0] or (b[1] == a[1] and b[0] > a[0])
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+def _r453_box_fill(xy, width, height):
+    """A box loop ending at floor(max − 0.5), exclusive: one short at the right and bottom."""
+    v = np.asarray(xy, dtype=float)
+    x0, y0 = np.floor(v.min(axis=0) - 0.5).astype(int)
+    x1, y1 = np.floor(v.max(axis=0) - 0.5).astype(int)
+    out = np.zeros((height, width), dtype=bool)
+    for i in range(max(y0, 0), min(y1, height)):
+        for j in range(max(x0, 0), min(x1, width)):
+            out[i, j] = covers(xy, (j + 0.5, i + 0.5))
+    return out
+
+
+def _r453_object_fill(xy, width, height):
+    out = np.full((height, width), None)
+    for i in range(height):
+        for j in range(width):
+            out[i, j] = covers(xy, (j + 0.5, i + 0.5))
+    return out
+
+
+R453 = {
+    "covers testing the centre of p's pixel, floor(p) + 0.5 (r453 WP1)": (
+        "covers", _r453_covers("pixel centre"), "you tested the centre of p's pixel",
+        "p's pixel centre"),
+    "covers with a tolerance of 1e-12 on λ = E / area (r453 M1)": (
+        "covers", _r453_covers("lambda"), "relative to the triangle's area",
+        "edges by a tolerance"),
+    "covers with its vertices in float32 (r453 M2)": (
+        "covers", _r453_covers32, "your vertices are held in float32",
+        "vertices in float32"),
+    "covers with (e < 0 or e == 0) and not top_left (r453 H1)": (
+        "covers", _r453_covers("precedence"), "you never refuse a centre outside a top or left "
+        "edge", "tie test parenthesised"),
+    "covers testing v1→v3 for v3→v1 (r453 H2)": (
+        "covers", _r453_covers("third edge"), "you test the edge v1→v3 instead of v3→v1",
+        "third edge reversed"),
+    "covers taking edges running left for left edges (r453 H4)": (
+        "covers", _r453_left_running, "your tie test takes an edge that runs to the left",
+        "left-running edges own their ties"),
+    "fill looping to floor(max − 0.5), exclusive (r453 H7)": (
+        "fill", _r453_box_fill, "your bounding box stops one pixel short", "bounding box one short"),
+    "edge_function returning np.sign(E) (r453 H9)": (
+        "edge_function", lambda a, b, p: float(np.sign(edge_function(a, b, p))),
+        "yours is E's sign alone", "sign only"),
+    "covers testing p − (0.5, 0.5) (r453 H3)": (
+        "covers", _r453_covers("before p"), "you tested p − (0.5, 0.5), not p", "tested before p"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R453.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R453.items()})
+DIFFERENT["fill into an object array of Python bools (r453 WF1)"] = ("fill", _r453_object_fill)

@@ -36,7 +36,8 @@ def short(value) -> str:
     if isinstance(value, np.ndarray):
         if value.size <= 6:
             return np.array2string(value, separator=", ", threshold=6).replace("\n", "")
-        return f"a {value.dtype} array of shape {value.shape}"
+        article = "an" if str(value.dtype)[0] in "aeio" else "a"
+        return f"{article} {value.dtype} array of shape {value.shape}"
     return _repr.repr(_plain(value))
 
 
@@ -213,5 +214,7 @@ def as_coverage(value, height: int, width: int) -> np.ndarray:
                 "elsewhere, no other values"
             )
         return arr.astype(bool)
+    if kind == "O" and all(isinstance(x, (bool, np.bool_)) for x in arr.ravel()):
+        return arr.astype(bool)  # r453 WF1: np.full((h, w), None) filled with covers' bools
     _to_float(arr, value, what)  # explains text, complex and objects
     raise WrongAnswerType(f"returned {short(value)}; expected {what}")

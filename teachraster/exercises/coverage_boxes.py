@@ -84,10 +84,14 @@ def short_sides(case: CoverageCase, expected, got) -> list[tuple[int, int, int, 
     out = []
     for xy, e, g in zip(case.triangles, expected, got):
         r0, r1, c0, c1 = box(case, xy)
+        # r453 H7: one short of the last centre inside, floor(max − ½), not of ceil(max) − 1
+        # (range(…, floor(x_max − 0.5)) is one short where the fraction is ½ or less too)
+        ec, er = np.floor((np.asarray(xy, dtype=float) - case.origin).max(axis=0) - 0.5)
         for t, b, lft, r in _SHRINKS:
+            end_r, end_c = (int(er) if b else r1), (int(ec) if r else c1)
             mask = np.zeros((h, w), dtype=bool)
             mask[
-                max(r0 + t, 0) : max(min(r1 - b, h), 0), max(c0 + lft, 0) : max(min(c1 - r, w), 0)
+                max(r0 + t, 0) : max(min(end_r, h), 0), max(c0 + lft, 0) : max(min(end_c, w), 0)
             ] = True
             if np.array_equal(g, e & mask):
                 out.append((t, b, lft, r))

@@ -30,6 +30,7 @@ from ..core.fill import rasterize
 from . import coverage as cov
 from . import coverage_boxes as boxes
 from . import edge_slips, plane32
+from . import point_slips as ps
 from . import sample_steps as steps
 from .answers import as_bool, as_coverage, short
 from .cases import (
@@ -167,6 +168,7 @@ def long_edge_coverage(rng) -> CoverageCase:
 def _covers_cases():
     cases = catalogue_coverage() + random_coverage() + fixed_near_ties() + [long_near_ties()]
     cases += [sliver32_case()]  # r438 WP1: last, so earlier first explanations stay
+    cases += [ps.sample_point_case()]  # r453 WP1: covers asked off the centres (capstone 12)
     return [(c.label, (c,), _expected(c)) for c in cases]
 
 
@@ -679,7 +681,8 @@ BOX_SHORT = (
     "your bounding box stops one pixel short at the {sides}: the last column (row) whose "
     "centre the triangle may cover is ceil(x_max) − 1 (ceil(y_max) − 1), so the loop is "
     "range(floor(x_min), ceil(x_max)) with its end exclusive (clamped to the image), not "
-    "range(…, ceil(x_max) − 1) (nor floor(x_max), round(x_max))"
+    "range(…, ceil(x_max) − 1) (nor floor(x_max), round(x_max) or floor(x_max − 0.5), the "
+    "last centre's column, as an exclusive end)"
 )
 
 
@@ -846,6 +849,19 @@ RIGHT_RUNNING = (
 )
 
 
+def _owns_left_running(a, b) -> bool:
+    """r453 H4: a "left" edge taken for one that runs to the left (b.x < a.x)."""
+    return bool(b[0] < a[0] or (b[1] == a[1] and b[0] > a[0]))
+
+
+LEFT_RUNNING = (
+    "your tie test takes an edge that runs to the left (b.x < a.x) for a left edge: a left edge "
+    "is one with the interior to its right as seen on screen (y down), and the way an edge runs "
+    "in x does not decide that (work out which way a left edge of the positively oriented "
+    "triangle runs)"
+)
+
+
 def _tiny(xy) -> bool:
     return 0 < abs(cov.area2(xy)) < 1.0
 
@@ -955,6 +971,8 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
     table = [
         Mistake("right-running edges own their ties", RIGHT_RUNNING,
                 gives=lambda case: masks(cov.rule_images(case, owns=_owns_right_running), case)),
+        Mistake("left-running edges own their ties", _in_covers(LEFT_RUNNING, not masked),
+                gives=lambda case: masks(cov.rule_images(case, owns=_owns_left_running), case)),
         # r347: named only where they give every failing case they must (a fit on one case
         # alone is a coincidence: a point sampled off the centre left a sliver empty)
         Mistake("zero area by a tolerance", _area_tolerance_words, fits=_area_tolerance_fits,
@@ -1008,10 +1026,21 @@ def _edge_slip_mistakes(masked: bool) -> list[Mistake]:
             for k in range(3)
         )  # fmt: skip
 
+    def slip(kind):  # r453 H1, H2
+        def images(case):
+            out = ps.slip_images(case, kind)
+            return out & _masks(case) if masked else out
+
+        return images
+
     return [
         *(Mistake(kind, edge_slips.WORDS[kind], gives=gives(kind)) for kind in edge_slips.WORDS),
         Mistake("λ as a remainder", edge_slips.REMAINDER, fits=remainder, must_fit=_always),
-    ]
+        Mistake("tie test parenthesised", _in_covers(ps.PRECEDENCE, not masked),
+                gives=slip("precedence")),
+        Mistake("third edge reversed", _in_covers(ps.THIRD_EDGE, not masked),
+                gives=slip("third edge")),
+    ]  # fmt: skip
 
 
 def _nudged(args, expected, got):
@@ -1047,7 +1076,8 @@ def _distance_mistakes(masks, after_step: bool = False) -> list[Mistake]:
     distance where the code reads a length (:data:`LENGTHS`), else (``after_step``) only
     where no step off the centre gives the answer (a length written with ``** 0.5``)."""
     forms = {"bias": {"absolute": True, "one_sided": True}, "absolute": {"absolute": True},
-             "distance": {"length": True}, "distance, one-sided": {"length": True, "one_sided": True}}  # fmt: skip
+             "distance": {"length": True}, "distance, one-sided": {"length": True, "one_sided": True},
+             "area": {"per_area": True}}  # fmt: skip
 
     def fit(form):
         def found(args, expected, got):
@@ -1068,13 +1098,16 @@ def _distance_mistakes(masks, after_step: bool = False) -> list[Mistake]:
                 return steps.bias_words(args[0], r)
             if form == "absolute":
                 return _edge_tolerance_words(args, expected, got, r)
+            if form == "area":  # r453 M1: λ = E / area within ±ε
+                return steps.area_words(args[0], r)
             return steps.distance_words(args[0], r, one_sided=form != "distance")
 
         return said
 
     kinds = {"absolute": "edges by a tolerance", "distance": "a tolerance on the distance to the edge",
              "distance, one-sided": "a tolerance on the distance to the edge",
-             "bias": "a bias on the edges that do not own their ties"}  # fmt: skip
+             "bias": "a bias on the edges that do not own their ties",
+             "area": "edges by a tolerance"}  # fmt: skip
 
     def span(form):
         def interval(args, expected, got):
@@ -1181,6 +1214,11 @@ AT_VERTICES = (
 )
 
 
+def _masked32(case: CoverageCase, masked: bool) -> np.ndarray:
+    out = ps.slip_images(case, "float32 vertices")
+    return out & _masks(case) if masked else out
+
+
 def _x_flipped_pixel(case, xy, e, g, i, j):
     return _mirrored_pixel(case, xy, e, g, i, j, (i, e.shape[1] - 1 - j),
                            "the pixel in the mirrored column")  # fmt: skip
@@ -1232,6 +1270,8 @@ def mistakes(name: str) -> list:
     table.append(Mistake("vertices decided apart", AT_VERTICES, fits=_at_vertices, symptom=True))
     table.append(Mistake("box side refused", ON_BOX_SIDE, fits=_on_box_side, symptom=True))
     table.append(Mistake("winding in float32", _winding32_words, gives=_winding32, reads="float32"))
+    table.append(Mistake("vertices in float32", ps.float32_vertex_words, reads="float32",
+                         gives=lambda case: _masked32(case, masked)))  # r453 M2  # fmt: skip
     table.append(Mistake("float32 plane form", plane32.WORDS, reads="float32",
                          fits=lambda a, e, g: plane32.fits(a[0], e, g, _tested(a[0], masked))))  # fmt: skip
     table.append(Mistake("float32", _float32_words, fits=_float32_fits, only_whole=True))
@@ -1260,6 +1300,11 @@ def _point_mistakes() -> list[Mistake]:
                 gives=lambda case: cov.rule_images(case, at="past p") & _masks(case)),
         Mistake("p swapped", _own_example(P_SWAPPED, _swapped_point),
                 gives=lambda case: cov.rule_images(case, swap="points") & _masks(case)),
+        # r453 WP1, H3: the centre of p's pixel; p − (½, ½), a corner
+        Mistake("p's pixel centre", _own_example(ps.PIXEL_CENTRE, ps.describe_pixel_centre),
+                gives=lambda case: ps.pixel_centre_images(case) & _masks(case)),
+        Mistake("tested before p", _own_example(ps.BEFORE_P, _sampled_at(0.0, 0.0)),
+                gives=lambda case: cov.rule_images(case, at="corners") & _masks(case)),
     ]  # fmt: skip
 
 

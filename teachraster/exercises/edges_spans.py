@@ -116,6 +116,14 @@ EDGE_MISTAKES = [
         "and its fraction decides the side of a point near the edge",
         gives=lambda a, b, p: float(int(_e(a, b, p))),
     ),
+    # r453 H9: the sign alone (np.sign(E)) was told its value only
+    Mistake(
+        "sign only",
+        "yours is E's sign alone (np.sign, or ±1): the edge function is the number E itself, "
+        "twice the signed area of a, b, p; its size is used too (a barycentric is "
+        "E / E(v1, v2, v3))",
+        gives=lambda a, b, p: float(np.sign(_e(a, b, p))),
+    ),
     Mistake(
         "x and y swapped",
         "x and y are swapped: a point is (x, y) = (p[0], p[1]); E = (b.x − a.x)(p.y − a.y) − "

@@ -51,14 +51,18 @@ def _products(a, b, p):
 
 
 def image(case: CoverageCase, xy, step=(0.0, 0.0), rel: float = 0.0, area: float = 0.0,
-          length: bool = False, one_sided: bool = False, absolute: bool = False):  # fmt: skip
+          length: bool = False, one_sided: bool = False, absolute: bool = False,
+          per_area: bool = False):  # fmt: skip
     """(h, w) bool: the rule at each centre moved by ``step`` (px), with E taken as 0 where
     |E| ≤ ``rel`` · max(|p1|, |p2|) (anchored at each oriented edge's start), or where
     |E| ≤ ``rel`` · ``area`` if ``area`` is given, or |E| ≤ ``rel`` · |b − a| (a distance to
     the edge's line below ``rel`` px) if ``length``, or |E| ≤ ``rel`` (px²) if ``absolute``.
     ``one_sided`` (r438 M1, M3): no tie is made; a centre inside an edge that does not own its
-    ties is covered only beyond the bound (a bias: E − β ≥ 0), one outside any edge never."""
+    ties is covered only beyond the bound (a bias: E − β ≥ 0), one outside any edge never.
+    ``per_area`` (r453 M1): |E| ≤ ``rel`` · |E(v1, v2, v3)|, a tolerance on λ = E / area."""
     points = _points(case) + np.asarray(step, dtype=float)
+    if per_area:
+        area = abs(cov.area2(np.asarray(xy, dtype=float)))
     if cov.area2(np.asarray(xy, dtype=float)) == 0:
         return np.zeros(points.shape[:2], dtype=bool)
     v = _oriented(xy)
@@ -110,7 +114,7 @@ def stepped(case: CoverageCase, expected, got, masks) -> tuple[float, int, int] 
 
 
 def _ratios(xy, points, length: bool = False, absolute: bool = False,
-            one_sided: bool = False) -> np.ndarray:  # fmt: skip
+            one_sided: bool = False, per_area: bool = False) -> np.ndarray:  # fmt: skip
     """(3, ...): at each point, |E| / max(|p1|, |p2|) for each oriented edge (|E| / |b − a|
     if ``length``, |E| if ``absolute``); ``one_sided``: inside the edges that do not own their
     ties only (elsewhere a bias changes nothing: inf)."""
@@ -119,7 +123,8 @@ def _ratios(xy, points, length: bool = False, absolute: bool = False,
     for k in range(3):
         a, b = v[k], v[(k + 1) % 3]
         p1, p2 = _products(a, b, points)
-        big = np.broadcast_to(_scale(a, b, p1, p2, 0.0, length, absolute), p1.shape)
+        area = abs(cov.area2(np.asarray(xy, dtype=float))) if per_area else 0.0
+        big = np.broadcast_to(_scale(a, b, p1, p2, area, length, absolute), p1.shape)
         ok = (big > 0) & ((p1 > p2) & (not _top_left(a, b)) if one_sided else True)
         with np.errstate(divide="ignore", invalid="ignore"):
             out.append(np.where(ok, np.abs(p1 - p2) / big, np.inf))
@@ -137,11 +142,11 @@ def _ratio(xy, points, area: float = 0.0, length: bool = False) -> np.ndarray:
 
 #: The largest tolerance looked for, by what it is relative to: a fraction of the products
 #: (isclose), a distance in px, px² (an absolute bias: one unit of an integer grid taken as 1).
-CAPS = {"products": 1e-3, "length": 0.1, "absolute": 2.0}
+CAPS = {"products": 1e-3, "length": 0.1, "absolute": 2.0, "per_area": 1e-3}
 
 
 def relative_tolerance(case: CoverageCase, expected, got, masks, length=False,
-                       one_sided=False, absolute=False) -> float | None:  # fmt: skip
+                       one_sided=False, absolute=False, per_area=False) -> float | None:  # fmt: skip
     """The least r such that E within r · max(|p1|, |p2|) of 0 (r · |b − a| if ``length``: a
     distance to the edge's line below r px; r px² if ``absolute``) taken as 0 gives the
     student's every image of this case, if below :data:`CAPS` and it changes something, else
@@ -150,9 +155,10 @@ def relative_tolerance(case: CoverageCase, expected, got, masks, length=False,
     explains every wrong centre through the ratios of the wrong centres' edges."""
     if not _shaped(got, expected) or np.array_equal(got, expected):
         return None
-    cap = CAPS["absolute" if absolute else "length" if length else "products"]
+    cap = CAPS["absolute" if absolute else "length" if length else
+               "per_area" if per_area else "products"]  # fmt: skip
     points = _points(case)
-    ratios = [_ratios(xy, points, length, absolute, one_sided) for xy in case.triangles]
+    ratios = [_ratios(xy, points, length, absolute, one_sided, per_area) for xy in case.triangles]
     r0 = 0.0
     for q, g, e in zip(ratios, got, expected):
         if (g != e).any():
@@ -166,7 +172,7 @@ def relative_tolerance(case: CoverageCase, expected, got, masks, length=False,
     for r in [r0, *tried[(tried > r0) & (tried < cap)][:40]][0 if r0 else 1 :]:
         above = float(np.nextafter(r, 1.0))
         images = [image(case, xy, rel=above, length=length, one_sided=one_sided,
-                        absolute=absolute) for xy in case.triangles]  # fmt: skip
+                        absolute=absolute, per_area=per_area) for xy in case.triangles]  # fmt: skip
         if _same(case, got, images, masks):
             return above if not absolute else float(r)  # an absolute one: exact on the grid
     return None
@@ -185,7 +191,7 @@ def tolerance_range(case: CoverageCase, expected, got, masks, **form) -> tuple |
     if lo is None:
         return None
     points = _points(case)
-    keys = ("length", "absolute", "one_sided")
+    keys = ("length", "absolute", "one_sided", "per_area")
     ratios = [_ratios(xy, points, *(bool(form.get(k)) for k in keys)) for xy in case.triangles]
     above = np.unique(np.concatenate([q.ravel() for q in ratios]))
     above = above[(above > lo) & np.isfinite(above)]
@@ -263,4 +269,18 @@ def bias_words(case: CoverageCase, r: float) -> str:
         "≥ 0 with a bias of −1, or int(E), taken over in px²?), so a centre strictly inside it "
         "by less is left out. Here E's unit is 2^-16 px² = 1.53e-05 px², not 1: for those "
         "edges test E > 0 exactly, for the top and left edges E ≥ 0"
+    )
+
+
+def area_words(case: CoverageCase, r: float) -> str:
+    """r453 M1: a tolerance on λ = E / E(v1, v2, v3) (told a step off the centre before)."""
+    return (
+        "a tolerance in the edge test, relative to the triangle's area: you take a centre "
+        "whose λ = E / E(v1, "
+        f"v2, v3) (a barycentric) lies within ε of 0, ε above {cov.fmt(r)}, for one on the "
+        "edge, so the tie rule decides it, though it lies strictly inside. Beside an edge of a "
+        "large "
+        "triangle a centre 2^-16 px² inside has λ = 2^-16 / E(v1, v2, v3): 1e-12 where the "
+        "area is 10^7 px², below any ε you might pick. On the 1/256 grid E is exact: a centre "
+        "off the edge has |E| ≥ 2^-16 px², so compare E (or λ) with 0 exactly, no ε"
     )
