@@ -107,7 +107,7 @@ PENTIUM_INTEGER_CYCLES = {
 #: Hopper as in the CUDA 12 edition's). From 8.6 on the multiply-add rate doubled and the
 #: reciprocal's did not.
 NVIDIA_RATES = {"Kepler (3.x, 2012)": (192, 32), "Maxwell (5.x, 2014)": (128, 32),
-                "Pascal GP100 (6.0, 2016)": (64, 16), "Pascal (6.1, 2016)": (128, 32),
+                "Pascal GP100 (6.0, 2016)": (64, 16), "Pascal GP10x (6.1, 2016)": (128, 32),
                 "Volta, Turing (7.x, 2017-18)": (64, 16), "Ampere A100 (8.0, 2020)": (64, 16),
                 "Ampere GA10x (8.6, 2020)": (128, 16), "Ada (8.9, 2022)": (128, 16),
                 "Hopper (9.0, 2022)": (128, 16)}  # fmt: skip

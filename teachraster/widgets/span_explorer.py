@@ -18,6 +18,7 @@ from ..plotting.span_subdivision import plot_span, update_span
 from ..study.span_subdivision import SPAN_PIXELS, subdivide_span
 from .common import Shown, control_row, fit_width, projector_text, style_context, title_html
 from .display import new_figure, resolve_backend
+from .divide_cost import CAPTION_PX, TITLE_PX  # the explorers' text sizes, one place
 from .live_slider import LiveSlider, info_line, slider_display
 
 #: The picture's alternative text in the page
@@ -96,13 +97,14 @@ class SpanSubdivisionExplorer(Shown):
         for control in (self.n, self.r):
             control.observe(lambda change: self.update(), "value")
         title = title_html(
-            "One span: an exact divide every N pixels",
-            f"A span of {SPAN_PIXELS} pixels ({SPAN_PIXELS - 1} steps) whose depth w grows by a "
-            "factor r from its first pixel to its last. Dark: the true u; vermillion: the "
-            "chords between the exact divides; blue: the worst miss at a pixel centre, and "
-            "each piece's closed form (√ρ − 1)²/(ρ − 1) of its change of u, ρ the piece's own "
-            "depth ratio. Below, a miss under 0.01 texel (at every exact divide it is 0) "
-            "is drawn in the grey band at the bottom, marked < 0.01.",
+            f"<span style='font-size:{TITLE_PX}px'>One span: an exact divide every N pixels</span>",
+            f"<span style='font-size:{CAPTION_PX}px'>A span of {SPAN_PIXELS} pixels "
+            f"({SPAN_PIXELS - 1} steps) whose depth w grows by a factor r from its first pixel "
+            "to its last. Dark: the true u; vermillion: the chords between the exact divides; "
+            "blue: the worst miss at a pixel centre, and each piece's closed form "
+            "(√ρ − 1)²/(ρ − 1) of its change of u, ρ the piece's own depth ratio. Below, a miss "
+            "under 0.01 texel (at every exact divide it is 0) is drawn in the grey band at the "
+            "bottom, marked < 0.01.</span>",
         )
         self.widget = projector_text(
             widgets.VBox([title, control_row([self.n, self.r]), *info_widgets,
