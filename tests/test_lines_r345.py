@@ -86,7 +86,8 @@ def test_line_direction_printed(ns):
     assert ns.rev_only == [(4, 8)] and ns.fwd_only == [(0, 0)] and ns.rev_ties_kept
     assert len(ns.rev_differ) == 0 and len(ns.differ) == 2
     assert "depends on the line's direction" not in _flat("db845d96")
-    assert "drawn backwards, §2's line lights the same pixels under both" in _flat("db845d96")
+    # r464 S2: the clause split into sentences
+    assert "Drawn backwards, §2's line lights the same pixels under both rules" in _flat("db845d96")
 
 
 def test_drift_plot_marks_y_1_y_2_and_the_run():
