@@ -2923,7 +2923,7 @@ def test_09_r172_nearest_mip_is_nearest_on_aligned_checks_and_the_box_main_lobe(
     text = ["".join(c["source"]) for c in cells]
     flat = " ".join(" ".join(text).split())
     assert "half a level too fine" not in flat and "up to half a level too fine or" not in flat
-    assert "nearest read there is level 0's own texel" in flat
+    assert "nearest read there returns level 0's texel's colour" in flat
     assert "*are* `nearest`'s picture" in flat
     held = next(i for i, t in enumerate(text) if "Where nearest-mipmap-nearest's gain lies" in t)
     assert text[held].startswith("q_reads.hold()") and "nmn = nearest" in text[held - 1]
