@@ -105,6 +105,18 @@ def pytest_collection_modifyitems(config, items):
     items.sort(key=lambda item: rank[item.path])  # stable: collection order within a rank
 
 
+def pytest_collection_finish(session):
+    """What collection left alive (the libraries, the test modules, the collected items) is
+    moved out of the collector's reach (``gc.freeze``): every full collection of the run walked
+    it again (test_plotting + test_widgets in one process: 11.5 -> 8.3 s of collections, 91.7
+    -> 89.0 s of CPU). Those objects are still freed when nothing refers to them; only cycles
+    among them are never collected, and these live as long as the run anyway."""
+    import gc
+
+    gc.collect()
+    gc.freeze()
+
+
 @pytest.hookimpl(trylast=True)  # after the fixtures' own teardown (their pages close first)
 def pytest_runtest_teardown(item, nextitem):
     """After the last browser or notebook test of a worker's run of them, stop its Playwright,

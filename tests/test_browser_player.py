@@ -196,48 +196,73 @@ SHOWN = """p => ({step: p.querySelector('canvas').dataset.step,
 BUSY = "import time\ntime.sleep(12)  # the kernel busy: the player's pictures wait"
 
 
-@pytest.mark.parametrize("key", ["End", "ArrowRight"])
-def test_the_first_key_on_the_step_moves_the_readout_at_once(lab, page, key):  # noqa: F811
+#: the second player of the first-key test (the first is PLAYER's): one key each, on one page
+SECOND = "player_end = FillPlayer(tri, 16, 16, method='halfplane')\nplayer_end"
+#: each player of the first-key test: (the kernel's name for it, the key pressed on its step)
+KEYS = (("player", "ArrowRight"), ("player_end", "End"))
+
+
+def _first_key(tab, player, key) -> tuple[dict, dict, str]:
+    """``key`` pressed on ``player``'s focused step slider, the readout waited for: what it
+    showed before and after, and the step it must come to."""
+    handle = player.element_handle()
+    first = tab.evaluate(SHOWN, handle)
+    assert first["step"] == "0" and first["info"].startswith("0 of "), first
+    step = player.get_by_role("slider", name="step")
+    step.scroll_into_view_if_needed()
+    step.focus()
+    tab.keyboard.press(key)
+    want = first["max"] if key == "End" else "1"
+    tab.wait_for_function(
+        f"p => ({SHOWN})(p).info.startsWith({want + ' of '!r})", arg=handle, timeout=3_000
+    )
+    now = tab.evaluate(SHOWN, handle)
+    assert now["value"] == want and now["caption"] != first["caption"], now
+    return first, now, want
+
+
+def test_the_first_key_on_the_step_moves_the_readout_at_once(lab, page):  # noqa: F811
     """Review r99 02-5: on a fresh player the first key pressed on the focused step slider
     moved its handle (End: to the last step) while the readout and the picture stayed at
     step 0 ("0 of 172"): the picture of the new step had to come from a kernel still busy
     with the lesson's later cells, and the page changed the readout and the caption only
     with the picture. Now they follow the key at once, the old picture dimmed under a note
     (the player's only one) until the new one comes; then it is painted, and the kernel
-    hears of the step."""
-    _run(page, lab, [*PLAYER, BUSY], f"player_first_key_{key}.ipynb")
-    player = page.locator(".tr-frames").first
-    player.locator("canvas[data-step]").wait_for(timeout=120_000)  # the poster, step 0
-    handle = player.element_handle()
-    first = page.evaluate(SHOWN, handle)
-    assert first["step"] == "0" and first["info"].startswith("0 of "), first
-    step = player.get_by_role("slider", name="step")
-    step.scroll_into_view_if_needed()
-    step.focus()
-    page.keyboard.press(key)
-    want = first["max"] if key == "End" else "1"
-    page.wait_for_function(
-        f"p => ({SHOWN})(p).info.startsWith({want + ' of '!r})", arg=handle, timeout=3_000
-    )
-    now = page.evaluate(SHOWN, handle)
-    assert now["value"] == want and now["caption"] != first["caption"], now
-    if now["step"] != want:  # the picture on its way: said so over the old one
-        assert now["want"] == want, now
+    hears of the step.
+
+    Two fresh players on one page, ArrowRight pressed on the first and End on the second,
+    both while the kernel is busy (CI time: this was a test per key, each opening its own
+    notebook, starting its own kernel and waiting out its own busy cell)."""
+    _run(page, lab, [*PLAYER, SECOND, BUSY], "player_first_key.ipynb")
+    players = page.locator(".tr-frames")
+    for i in range(len(KEYS)):  # the posters, step 0
+        players.nth(i).locator("canvas[data-step]").wait_for(timeout=120_000)
+    pressed = []
+    for i, (_, key) in enumerate(KEYS):
+        pressed.append((players.nth(i), *_first_key(page, players.nth(i), key)))
+    waiting = [(player, want) for player, _, now, want in pressed if now["step"] != want]
+    for player, want in waiting:  # the picture on its way: said so over the old one
+        assert player.evaluate(SHOWN)["want"] == want
         assert player.locator(".tr-wait").is_visible()
         assert f"drawing step {want}" in player.locator(".tr-wait").inner_text()
+    if waiting:
         # past the 4 s after which a second note, "Waiting for the kernel…", came at the
         # picture's foot (review r9: two notes for one state): still the one step note
         page.wait_for_timeout(5_000)
+    for player, want in waiting:
         stage = player.locator(".tr-stage")
         assert "Waiting" not in stage.inner_text() and player.locator(".tr-notice").count() == 0
-        if page.evaluate(SHOWN, handle)["want"] == want:
+        if player.evaluate(SHOWN)["want"] == want:
             assert player.locator(".tr-wait").inner_text().startswith(f"drawing step {want}")
-    page.wait_for_function(  # the picture comes once the kernel is free
-        f"p => ({SHOWN})(p).step === {want!r}", arg=handle, timeout=60_000, polling=POLL_MS
-    )
-    done = page.evaluate(SHOWN, handle)
-    assert done["want"] is None and not player.locator(".tr-wait").is_visible(), done
-    assert done["info"] == now["info"] and done["caption"] == now["caption"], (now, done)
-    assert _kernel(page, "player.step") == int(want)  # the kernel heard of it
-    assert _kernel(page, "player.caption_text") == done["caption"]
+    for (name, _), (player, _, now, want) in zip(KEYS, pressed):
+        handle = player.element_handle()
+        page.wait_for_function(  # the picture comes once the kernel is free
+            f"p => ({SHOWN})(p).step === {want!r}", arg=handle, timeout=60_000,
+            polling=POLL_MS,
+        )  # fmt: skip
+        done = page.evaluate(SHOWN, handle)
+        assert done["want"] is None and not player.locator(".tr-wait").is_visible(), done
+        assert done["info"] == now["info"] and done["caption"] == now["caption"], (now, done)
+        assert _kernel(page, f"{name}.step") == int(want)  # the kernel heard of it
+        assert _kernel(page, f"{name}.caption_text") == done["caption"]
     assert not page.errors, page.errors[:3]
