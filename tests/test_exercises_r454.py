@@ -82,3 +82,20 @@ def test_the_half_planes_without_sort_or_split_pass():
         return (lo, hi) if hi > lo else (0, 0)
 
     assert_passes("span", span)
+
+
+def test_a_row_loop_from_the_top_vertex_is_asked_about_its_loop():
+    """H7: lesson 01's stepped edges in Fractions, walked from the top vertex down to the row,
+    run out of time far out: the words ask about a loop over rows or columns, not "a Python
+    call per pixel"."""
+
+    def span(xy, row):
+        p = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in np.asarray(xy).tolist()),
+                   key=lambda q: q[1])  # fmt: skip
+        top = math.ceil(p[0][1] - Fraction(1, 2))
+        for _i in range(top, row):  # stepping, one row at a time
+            pass
+        return _r439()(xy, row) if row >= top else (0, 0)
+
+    report = assert_first_named("span", span, "a loop over the rows from a vertex", "timeout")
+    assert "a Python call per pixel" not in str(report)

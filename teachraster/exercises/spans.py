@@ -1741,7 +1741,11 @@ SPAN = Exercise(
         PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
                       modules=("teachraster.study.exact_spans",)),
     ),
-    draw=draw_span, constant=_constant_span, raised_words=_span_raised, none_words=_span_none, hints=(
+    draw=draw_span, constant=_constant_span, raised_words=_span_raised, none_words=_span_none,
+    # r454 H7: a loop over rows from a vertex (lesson 01's stepped edges) or over the columns
+    slow=" (a loop over the rows from a vertex, or over the columns? One row's span is two "
+    "crossings: compute them for this row alone)",
+    hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
          "at or right of x_l?"),
