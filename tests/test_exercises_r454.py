@@ -99,3 +99,23 @@ def test_a_row_loop_from_the_top_vertex_is_asked_about_its_loop():
 
     report = assert_first_named("span", span, "a loop over the rows from a vertex", "timeout")
     assert "a Python call per pixel" not in str(report)
+
+
+@pytest.mark.parametrize(("prec", "lower"), [(34, False), (33, True), (34, True)])
+def test_decimal_at_33_or_34_digits_fails_and_is_named_by_its_digits(prec, lower):
+    """r439 P4: a far tie whose product needs 35 digits (FAR_DIGITS_35); named by decimal's
+    digits, never "28" or "float64"."""
+    from student_variants import _R439_DEC, _R439_LOWER
+
+    parts = {**_R439_DEC, **({"CROSS": _R439_LOWER} if lower else {})}
+    report = assert_first_named(
+        "span", _r439(prec=prec, **parts), "decimal", KINDS_DECIMAL[(prec, lower)]
+    )
+    assert "28" not in report.failures[0].kind and "float64" not in report.failures[0].explanation
+
+
+KINDS_DECIMAL = {
+    (34, False): "decimal at 34 digits",
+    (33, True): "decimal at 33 digits, lower end",
+    (34, True): "decimal at 34 digits, lower end",
+}

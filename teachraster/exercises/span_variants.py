@@ -158,7 +158,7 @@ FAR_PRECISE = (
 #: multiplied first from the lower end, divided first and slope first, and ``decimal`` at 29 to 31
 #: digits from either end. Each triangle is at most 2·10^6 px wide, so that a scan of its bounding
 #: box's columns stays cheap (decimal at 32 to 34 digits needs a product of 33 to 35 digits, an edge
-#: 10^7 to 10^9 px wide: not asked). Searched with random.Random(23) (/tmp/r439/fix/search5.py).
+#: 10^7 to 10^9 px wide: r454 asks them on FAR_DIGITS_35, after the column scans stop). Searched with random.Random(23) (/tmp/r439/fix/search5.py).
 FAR_DIGITS = (
     ("a product of 66 bits", ((128409.95703125, -991496292.2421875),
      (-737206.5546875, -124974987.44140625), (-1651659.0859375, 789808797.015625)), -124977559),
@@ -187,6 +187,18 @@ FAR_WIDE_SIDES = (
      (1459170.96484375, 470236698.74609375)), -40928043),
     ("a side of 64 bits", ((1890825.86328125, -511500459.43359375),
      (1738445.59375, -74961807.7734375), (1967256.00390625, 376716536.921875)), -510926459),
+)  # fmt: skip
+
+#: r454 (r439 P4): far ties whose product (y − a_y)(b_x − a_x) needs 35 significant digits in
+#: decimal (long edges about 2^31 px in x and in y, the middle vertex 300 px right of the tie and 10
+#: rows below it, so the span is 300 columns): multiplied first at 33 or 34 digits, the first from
+#: its upper end (33) and lower end (33, 34), the second from its upper end (33, 34), the tie goes
+#: to the wrong side; 35 digits hold every product of the range. Searched with random.Random(454).
+FAR_DIGITS_35 = (
+    ("a product of 35 digits", ((932150973.9453125, -925812551.6015625),
+     (31958595.5, -1587297.5), (-718202269.87109375, 768600395.91796875)), -1587308),
+    ("a product of 35 digits, upper end", ((-896313076.31640625, -850867739.27734375),
+     (25117810.5, 75059072.5), (762261979.953125, 815800503.921875)), 75059062),
 )  # fmt: skip
 
 #: r454 P1: the closest an exact crossing off a centre comes to it in the stated range: 1/(256·d) px,
@@ -291,9 +303,12 @@ KINDS = (
     "bounding box", "side in float64", "vertices rounded", "vertices rounded half up",
     "vertices on the 1/16 grid", "vertices on the 1/64 grid", "vertices on the 1/128 grid",
     "vertices in int32", "ceil, negative divisor", "vertices through str()",
-    "longdouble multiply first", "decimal at 28 digits", "decimal at 28 digits, lower end",
+    "longdouble multiply first",
     "longdouble multiply first, lower end", "longdouble divide first", "longdouble slope first",
-    *(f"decimal at {prec} digits{end}" for prec in range(29, 35) for end in ("", ", lower end")),
+    # r454: the most digits first, so that where several give the answer the student's (the
+    # highest that fails) is named: a 34-digit student fails where 28 digits fail too
+    *(f"decimal at {prec} digits{end}" for prec in range(34, 28, -1) for end in ("", ", lower end")),
+    "decimal at 28 digits", "decimal at 28 digits, lower end",
     "side in longdouble", "side in int64",
     "vertices to 6 decimals", "vertices by limit_denominator(100)",
     "x and y sorted apart",
@@ -907,13 +922,16 @@ def _sorted_apart_words(args, expected, got) -> str:
 WORDS = {
     "vertices through str()": _str_words,
     **{f"longdouble {order}": _longdouble_words(order) for order in LONGDOUBLE_ORDERS},
-    "decimal at 28 digits": _decimal_words(False),
-    "decimal at 28 digits, lower end": _decimal_words(True),
+    # r454: the most digits first (FEW_DIGITS runs down from 34), 28 last: where several give
+    # the student's answers, the highest that fails is named (a 34-digit student's far tie
+    # fails at 28 digits too)
     **{
         f"decimal at {prec} digits{end}": _decimal_words(lower, prec)
         for prec in FEW_DIGITS
         for lower, end in ((False, ""), (True, ", lower end"))
     },
+    "decimal at 28 digits": _decimal_words(False),
+    "decimal at 28 digits, lower end": _decimal_words(True),
     "side in longdouble": _wide_side_words("side in longdouble"),
     "side in int64": _wide_side_words("side in int64"),
     "x and y sorted apart": _sorted_apart_words,

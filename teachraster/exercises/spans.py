@@ -34,6 +34,7 @@ from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
     FAR_DIGITS,
+    FAR_DIGITS_35,
     FAR_HAIR,
     FAR_NEAR_TIES,
     FAR_PRECISE,
@@ -287,7 +288,13 @@ def _far_cases() -> list[tuple[str, tuple, frozenset]]:
     hair = [(f"far out, {label}, row {row} (not on it: no exact crossing off a centre comes "
              "closer in the stated range)", (np.array(points), row),
              exact_columns(np.array(points), row)) for label, points, row in FAR_HAIR]  # fmt: skip
-    return ties + near + sides + precise + hair + wide  # (r454: the hair before the sliver it
+    # r454 (r439 P4): decimal at 33 or 34 digits, on edges 2^31 px wide
+    wider = [(f"far out, {label}, row {row} (a crossing exactly on a centre, near 2^30 px)",
+              (np.array(points), row), exact_columns(np.array(points), row))
+             for label, points, row in FAR_DIGITS_35]  # fmt: skip
+    return (
+        ties + near + sides + precise + hair + wider + wide
+    )  # (r454: the hair before the sliver it
     # shares an epsilon's answer with, so an epsilon's first failure is the one only it gives)
 
 
