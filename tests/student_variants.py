@@ -6299,7 +6299,7 @@ def span(xy, row):
 """
 R413 = {
     "span in fractions, lesson 01's side test u4 < MID[0] in float64": (
-        "span", _span_r413(_R413_FLOAT_SIDE), "your side test (u4 < x2) is computed in float64",
+        "span", _span_r413(_R413_FLOAT_SIDE), "your side test is computed in float64",
         "side in float64"),
     "span in fractions, the side x2 − u4 in float64 multiplied first": (
         "span", _span_r413(_R413_FLOAT_SIDE_MUL), "the middle vertex lies 4.4e-11 px right of "
@@ -8089,6 +8089,48 @@ if np.finfo(np.longdouble).nmant > 52:  # x86's 80-bit longdouble (elsewhere it 
     })  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R439.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R439.items()})
+
+
+# == r454 (rf02, exercise 2.1 span: a verifying reader's variants) =================================
+_R454_FLOAT_SIDE = (
+    "float(np.cross(*(np.array([float(c) for c in q]) - np.array([float(c) for c in P[0]]) "
+    "for q in (P[1], P[2]))))"
+)
+_R454_INT32 = "(lambda c: int(np.round(256 * np.float64(c)).astype(np.int32)))"
+R454 = {
+    "span, exact, an epsilon of 1e-14 on the ends": (
+        "span", _r439(END="math.ceil(left - Fraction(1, 2) - Fraction(1, 10**14)), "
+                          "math.ceil(right - Fraction(1, 2) - Fraction(1, 10**14))"),
+        "x_l lies 7.1e-15 px right of the centre 4.5", "epsilon"),
+    "span, exact, an epsilon of 1e-12 on the ends": (
+        "span", _r439(END="math.ceil(left - Fraction(1, 2) - Fraction(1, 10**12)), "
+                          "math.ceil(right - Fraction(1, 2) - Fraction(1, 10**12))"),
+        "an epsilon on the ends", "epsilon"),
+    "span, exact, the side by np.cross in float64": (
+        "span", _r439(SIDE=_R454_FLOAT_SIDE), "your side test is computed in float64 (lesson "
+        "01's u4 < x2, or a cross product", "side in float64"),
+    "span, exact, the crossing rounded to the nearest 1/256 px": (
+        "span", _r439(END="math.ceil(Fraction(round(256 * left), 256) - Fraction(1, 2)), "
+                          "math.ceil(Fraction(round(256 * right), 256) - Fraction(1, 2))"),
+        "to the nearest point of the 1/256 grid", "crossing to the nearest 1/256"),
+    "span in 1/256-px integers through np.int32": (
+        "span", _r439(READ=_R454_INT32, LINE="256 * row + 128",
+                      CROSS="a[0] + Fraction((y - a[1]) * (b[0] - a[0]), b[1] - a[1])", END="math.ceil(Fraction(left, "
+                      "256) - Fraction(1, 2)), math.ceil(Fraction(right, 256) - Fraction(1, 2))"),
+        "stored 256·c as np.int32", "vertices in int32"),
+    "span on the vertices snapped to 1/128 px": (
+        "span", _r439(READ="(lambda c: Fraction(round(128 * c), 128))"),
+        "snapped the vertices to the 1/128-px grid", "vertices on the 1/128 grid"),
+    "span with the rows clipped at 0 (lesson 01's raster_lines)": (
+        "span", _r439(LINE="row + Fraction(1, 2) if row >= 0 else Fraction(-10**12)"),
+        "you left out the rows above row 0", "rows clipped at 0"),
+    "span with the rows ⌊y1 + ½⌋ <= row < ⌊y3 + ½⌋": (
+        "span", _r439(LINE="(row + Fraction(1, 2) if math.floor(y1 + Fraction(1, 2)) <= row < "
+                           "math.floor(y3 + Fraction(1, 2)) else y3 + 1)"),
+        "or your rows leave out the one through the top vertex", "no top edge"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R454.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R454.items()})
 
 
 # -- r425 (exercise 5, a fresh reader): 5.2b graded to 1e-8 either way (a refined search lands

@@ -158,7 +158,7 @@ FAR_PRECISE = (
 #: multiplied first from the lower end, divided first and slope first, and ``decimal`` at 29 to 31
 #: digits from either end. Each triangle is at most 2·10^6 px wide, so that a scan of its bounding
 #: box's columns stays cheap (decimal at 32 to 34 digits needs a product of 33 to 35 digits, an edge
-#: 10^7 to 10^9 px wide: not asked). Searched with random.Random(23) (/tmp/r439/fix/search5.py).
+#: 10^7 to 10^9 px wide: r454 asks them on FAR_DIGITS_35, after the column scans stop). Searched with random.Random(23) (/tmp/r439/fix/search5.py).
 FAR_DIGITS = (
     ("a product of 66 bits", ((128409.95703125, -991496292.2421875),
      (-737206.5546875, -124974987.44140625), (-1651659.0859375, 789808797.015625)), -124977559),
@@ -187,6 +187,29 @@ FAR_WIDE_SIDES = (
      (1459170.96484375, 470236698.74609375)), -40928043),
     ("a side of 64 bits", ((1890825.86328125, -511500459.43359375),
      (1738445.59375, -74961807.7734375), (1967256.00390625, 376716536.921875)), -510926459),
+)  # fmt: skip
+
+#: r454 (r439 P4): far ties whose product (y − a_y)(b_x − a_x) needs 35 significant digits in
+#: decimal (long edges about 2^31 px in x and in y, the middle vertex 300 px right of the tie and 10
+#: rows below it, so the span is 300 columns): multiplied first at 33 or 34 digits, the first from
+#: its upper end (33) and lower end (33, 34), the second from its upper end (33, 34), the tie goes
+#: to the wrong side; 35 digits hold every product of the range. Searched with random.Random(454).
+FAR_DIGITS_35 = (
+    ("a product of 35 digits", ((932150973.9453125, -925812551.6015625),
+     (31958595.5, -1587297.5), (-718202269.87109375, 768600395.91796875)), -1587308),
+    ("a product of 35 digits, upper end", ((-896313076.31640625, -850867739.27734375),
+     (25117810.5, 75059072.5), (762261979.953125, 815800503.921875)), 75059062),
+)  # fmt: skip
+
+#: r454 P1: the closest an exact crossing off a centre comes to it in the stated range: 1/(256·d) px,
+#: d the edge's height in 1/256 px (below 2^39), here 2^-47 ≈ 7.1·10^-15 px right of the centre
+#: 4.5 on a left edge 2^31 px tall and 3.3 px wide (the span 949 columns): an epsilon of any size
+#: above it (1e-14 passed) covers that centre. Near x = 4.5 float64's numbers are 8.9·10^-16 px
+#: apart, so no float order moves it: only a tolerance does. Built by the extended Euclid
+#: algorithm ((y − a_y)·Δx ≡ 1 mod d).
+FAR_HAIR = (
+    ("x_l 7.1e-15 px right of a centre on an edge 2^31 px tall", ((2.9296875, -1073741819.94921875),
+     (6.23046875, 1073741820.0), (1002.9296875, 0.0)), -52098716),
 )  # fmt: skip
 
 
@@ -240,6 +263,7 @@ class Pair(frozenset):
     pair: tuple[int, int] | None = None
     wide: bool = False  # over 10^6 columns: ``pair`` alone, the set empty (r424 S1)
     strict: bool = False  # compared as it is, never with float64's ends far out (r413 P8)
+    from_side: bool = False  # a side test's swap: (stop, first) or (0, 0) only (r454 M1)
 
 
 def pair_columns(x_left, x_right, wide: bool = False) -> Pair | None:
@@ -277,10 +301,14 @@ KINDS = (
     "side by given winding", "side by the short edge", "long edge below the split", "lower edge above the split",
     "sorted by x", "vertices on centres", "not sorted", "vertices truncated", "longest edge",
     "bounding box", "side in float64", "vertices rounded", "vertices rounded half up",
-    "vertices on the 1/16 grid", "ceil, negative divisor", "vertices through str()",
-    "longdouble multiply first", "decimal at 28 digits", "decimal at 28 digits, lower end",
+    "vertices on the 1/16 grid", "vertices on the 1/64 grid", "vertices on the 1/128 grid",
+    "vertices in int32", "ceil, negative divisor", "vertices through str()",
+    "longdouble multiply first",
     "longdouble multiply first, lower end", "longdouble divide first", "longdouble slope first",
-    *(f"decimal at {prec} digits{end}" for prec in range(29, 35) for end in ("", ", lower end")),
+    # r454: the most digits first, so that where several give the answer the student's (the
+    # highest that fails) is named: a 34-digit student fails where 28 digits fail too
+    *(f"decimal at {prec} digits{end}" for prec in range(34, 28, -1) for end in ("", ", lower end")),
+    "decimal at 28 digits", "decimal at 28 digits, lower end",
     "side in longdouble", "side in int64",
     "vertices to 6 decimals", "vertices by limit_denominator(100)",
     "x and y sorted apart",
@@ -307,6 +335,15 @@ MOVES = {
                                  lambda c: np.floor(c + 0.5)),
     "vertices on the 1/16 grid": ("snapped the vertices to the 1/16-px grid (round(16·c)/16)",
                                   lambda c: np.round(c * 16) / 16),
+    # r454 H5: any coarser power-of-two grid than the vertices' 1/256
+    **{f"vertices on the 1/{n} grid": (f"snapped the vertices to the 1/{n}-px grid "
+                                       f"(round({n}·c)/{n})", lambda c, n=n: np.round(c * n) / n)
+       for n in (64, 128)},
+    # r454 M6: 256·c stored as np.int32, which holds 2^31 (8388608 px): numpy's cast of a larger
+    # float is the platform's (no wrap, no error), so the move is numpy's own cast
+    "vertices in int32": ("stored 256·c as np.int32, which holds up to 2^31, i.e. 8388608 px: "
+                          "numpy casts a larger value to garbage, silently (keep Python ints: "
+                          "round(256 * c), or dtype=object)", lambda c: _int32(c)),
     # r439 M2, M3: a tidy-up that reads as exact: a few decimals (round(c, 6), f"{c:.6f}": a
     # 1/256 step needs 8), the nearest fraction with a small denominator
     "vertices to 6 decimals": ("rounded them to 6 decimals (round(c, 6), f\"{c:.6f}\"; a "
@@ -317,6 +354,12 @@ MOVES = {
         "(Fraction(c).limit_denominator(100); the vertices' denominator is 256)",
         lambda c: _limited(c, 100)),
 }  # fmt: skip
+
+
+def _int32(c: np.ndarray) -> np.ndarray:
+    """The coordinates as ``np.round(256 * c).astype(np.int32) / 256`` makes them (r454 M6)."""
+    with np.errstate(invalid="ignore"):
+        return np.round(np.asarray(c, dtype=float) * 256).astype(np.int32).astype(float) / 256
 
 
 def _limited(c: np.ndarray, most: int) -> np.ndarray:
@@ -428,7 +471,7 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     if _float_side_wrong(fv, long_is_left):  # r413 P8: lesson 01's u4 < MID[0] in float64
         out["side in float64"] = _pick(long_x, short_x, not long_is_left)
         if out["side in float64"] is not None:  # matched as it is: its ends are exact
-            out["side in float64"].strict = True
+            out["side in float64"].strict = out["side in float64"].from_side = True
     # r413 H9 (w44): ⌈n/d⌉ as (n + d − 1)//d with d < 0 (an edge taken from its lower end up):
     # one column right where the long edge's crossing is exactly on a centre (every edge's so:
     # "ties reversed", C's int(x + 0.5), the same answers)
@@ -439,6 +482,8 @@ def more_variants(xy: np.ndarray, row: int, exact: Callable) -> dict[str, frozen
     ):  # r439 P2, P3
         if errs:
             out[kind] = _strict(_pick(long_x, short_x, not long_is_left))
+            if out[kind] is not None:  # r454 M1: (stop, first) or (0, 0), matched so
+                out[kind].from_side = True
     if y < y3:  # (the bottom vertex's line has no span to move)
         out["ceil, negative divisor"] = _pick(_past_tie(long_x), short_x, long_is_left)
     if not upper:  # r372 M4 (w43): the long edge taken as the lower short one too
@@ -614,13 +659,17 @@ def _float_side_words(args, expected, got) -> str:
     where = "right" if x2 > u4 else "left"
     fu4, fside = _float_sides([(float(a), float(b)) for a, b in v])[0]
     said = "on it" if fside == 0 else ("right of it" if fside > 0 else "left of it")
+    # r454 H1: any float64 side test (a cross product, np.cross, np.linalg.det, tr.edge_function
+    # on floats), not only lesson 01's u4, which is quoted as one example
     return (
-        f"your side test (u4 < x2) is computed in float64: here the middle vertex lies "
-        f"{float(abs(x2 - u4)):.2g} px {where} of the long edge, and float64's numbers near "
-        f"{float(x2):.3g} px are {float(np.spacing(float(x2))):.2g} px apart, so lesson 01's u4 "
-        f"comes out {fu4!r} and puts the vertex {said}: your x_l and x_r are swapped (or your "
-        "span is empty). Compare exactly: the sign of an integer cross product, (x2 − x1)(y3 − "
-        "y1) − (y2 − y1)(x3 − x1) in 1/256-px units (or with fractions.Fraction)"
+        f"your side test is computed in float64 (lesson 01's u4 < x2, or a cross product or "
+        f"determinant of floats): here the middle vertex lies {float(abs(x2 - u4)):.2g} px "
+        f"{where} of the long edge, and float64's numbers near {float(x2):.3g} px are "
+        f"{float(np.spacing(float(x2))):.2g} px apart, so the side comes out 0 or of the wrong "
+        f"sign (lesson 01's u4 comes out {fu4!r} and puts the vertex {said}): your x_l and x_r "
+        "are swapped (or your span is empty). Compare exactly: the sign of an integer cross "
+        "product, (x2 − x1)(y3 − y1) − (y2 − y1)(x3 − x1) in 1/256-px units (or with "
+        "fractions.Fraction)"
     )
 
 
@@ -873,13 +922,16 @@ def _sorted_apart_words(args, expected, got) -> str:
 WORDS = {
     "vertices through str()": _str_words,
     **{f"longdouble {order}": _longdouble_words(order) for order in LONGDOUBLE_ORDERS},
-    "decimal at 28 digits": _decimal_words(False),
-    "decimal at 28 digits, lower end": _decimal_words(True),
+    # r454: the most digits first (FEW_DIGITS runs down from 34), 28 last: where several give
+    # the student's answers, the highest that fails is named (a 34-digit student's far tie
+    # fails at 28 digits too)
     **{
         f"decimal at {prec} digits{end}": _decimal_words(lower, prec)
         for prec in FEW_DIGITS
         for lower, end in ((False, ""), (True, ", lower end"))
     },
+    "decimal at 28 digits": _decimal_words(False),
+    "decimal at 28 digits, lower end": _decimal_words(True),
     "side in longdouble": _wide_side_words("side in longdouble"),
     "side in int64": _wide_side_words("side in int64"),
     "x and y sorted apart": _sorted_apart_words,

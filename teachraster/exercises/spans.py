@@ -34,6 +34,8 @@ from .running import WrongAnswerType
 from .scalars import num
 from .span_variants import (
     FAR_DIGITS,
+    FAR_DIGITS_35,
+    FAR_HAIR,
     FAR_NEAR_TIES,
     FAR_PRECISE,
     FAR_SIDES,
@@ -282,7 +284,18 @@ def _far_cases() -> list[tuple[str, tuple, frozenset]]:
     wide = [(f"far out, {label}, row {row} (the side of the long edge, near 2^29 px)",
              (np.array(points), row), exact_columns(np.array(points), row))
             for label, points, row in FAR_WIDE_SIDES]  # fmt: skip
-    return ties + near + sides + precise + wide
+    # r454 P1: the nearest an exact crossing comes to a centre in the range (an epsilon of 1e-14)
+    hair = [(f"far out, {label}, row {row} (not on it: no exact crossing off a centre comes "
+             "closer in the stated range)", (np.array(points), row),
+             exact_columns(np.array(points), row)) for label, points, row in FAR_HAIR]  # fmt: skip
+    # r454 (r439 P4): decimal at 33 or 34 digits, on edges 2^31 px wide
+    wider = [(f"far out, {label}, row {row} (a crossing exactly on a centre, near 2^30 px)",
+              (np.array(points), row), exact_columns(np.array(points), row))
+             for label, points, row in FAR_DIGITS_35]  # fmt: skip
+    return (
+        ties + near + sides + precise + hair + wider + wide
+    )  # (r454: the hair before the sliver it
+    # shares an epsilon's answer with, so an epsilon's first failure is the one only it gives)
 
 
 def _far(xy: np.ndarray) -> bool:
@@ -371,7 +384,15 @@ def same_span(got: frozenset, expected: frozenset, args=None) -> bool:
     wide = [getattr(s, "wide", False) for s in (got, expected)]
     if any(wide):  # r424 S1: wide spans by their ends alone
         return all(wide) and got.pair == expected.pair
-    return set(got) == set(expected)
+    return _same_columns(got, expected)
+
+
+def _same_columns(a, b) -> bool:
+    """The same columns; two sets compared as they are (r454: a copy of each into a set cost a
+    check a tenth of its time on the far rows' spans of 10^5 to 10^6 columns)."""
+    if isinstance(a, frozenset) and isinstance(b, frozenset):
+        return frozenset.__eq__(a, b)
+    return set(a) == set(b)
 
 
 def _returned(got) -> tuple[int, int] | None:
@@ -500,6 +521,10 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
             "crossing on the 1/256 grid": _Strict(
                 _columns(math.ceil(_on_grid(xl) - half), math.ceil(_on_grid(xr) - half))
             ),
+            # r454 M5: rounded to the nearest grid point (round(256·x)/256) instead
+            "crossing to the nearest 1/256": _Strict(
+                _columns(math.ceil(_nearest_grid(xl) - half), math.ceil(_nearest_grid(xr) - half))
+            ),
             # r403 P7: the exact crossing, then a float at the last step (float(Fraction),
             # n / d / 256): a crossing a hair off a centre far out lands on it
             "float at the last step": _Strict(
@@ -535,6 +560,7 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     if np.ptp(swapped[:, 0]) < 10**6:  # (the 10^12-px triangle's swap: no span to hold)
         out["x and y swapped"] = exact_columns(swapped, row)
     out.update(more_variants(xy, row, exact_columns))
+    out.update(_row_range_variants(xy, row))
     if _far(np.asarray(xy)):  # r403 M9: far out a mistake speaks where it changes the answer
         # (a float64 student with another slip may miss a far row by its rounding alone)
         right = exact_columns(xy, row)
@@ -542,10 +568,23 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     return out
 
 
+def _row_range_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
+    """r454 H6: the rows clipped at 0 (lesson 01's raster_lines clips them to its image), the
+    span exact on the rows kept. (r454 H4, rows ⌊y1 + ½⌋ ≤ row < ⌊y3 + ½⌋, gives "no top edge"'s
+    answers on every case: said in its words.)"""
+    right = exact_columns(xy, row)
+    return {"rows clipped at 0": right if row >= 0 else frozenset()}
+
+
 class _Strict(frozenset):
     """A mistake's columns that float64's rounding is no part of: matched as they are, not
     with float64's ends on far rows (:func:`_float64_same`; the float at the last step is
     itself float64's rounding)."""
+
+
+def _nearest_grid(x: Fraction) -> Fraction:
+    """x rounded to the nearest point of the 1/256-px grid (round(), halves to even)."""
+    return Fraction(round(256 * x), 256)
 
 
 def _on_grid(x: Fraction) -> Fraction:
@@ -574,9 +613,13 @@ def _match(got, answer, args) -> bool:
     mine, theirs = _returned(got), getattr(answer, "pair", None)
     if getattr(got, "wide", False) or getattr(answer, "wide", False):  # r424 S1: by its ends
         return same_span(got, answer)
+    # r454 M1: a side test in a limited precision swaps the ends, (stop, first), or reads a side
+    # of 0 as no area, (0, 0); an empty (c, c) on a sliver's near tie is an epsilon's
+    if getattr(answer, "from_side", False) and mine is not None and mine[0] <= mine[1] != 0:
+        return False
     if mine is not None and theirs is not None and mine[1] < mine[0]:
         return theirs == mine or _float64_same(got, answer, args)
-    return set(got) == set(answer) or _float64_same(got, answer, args)
+    return _same_columns(got, answer) or _float64_same(got, answer, args)
 
 
 def _float64_same(got, answer, args) -> bool:
@@ -724,21 +767,29 @@ def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     return out
 
 
-def _grid_words(args, expected, got) -> str:
-    """r413 M10: an integer crossing floored to the 1/256 grid (no float in it)."""
+def _grid_words(args, expected, got, nearest: bool = False) -> str:
+    """r413 M10: an integer crossing floored to the 1/256 grid (no float in it); r454 M5:
+    ``nearest``, rounded to the nearest grid point."""
     xy, row = args
     cross = crossings(xy, Fraction(2 * row + 1, 2))
     said = ""
+    grid = _nearest_grid if nearest else _on_grid
     for name, x in zip(("x_l", "x_r"), cross or ()):
-        if math.ceil(_on_grid(x) - HALF) != math.ceil(x - HALF):
-            centre = num(math.ceil(x - HALF) - 0.5)
+        if math.ceil(grid(x) - HALF) != math.ceil(x - HALF):
+            gap = float(x - grid(x))
             said = (
-                f" (here {name} lies {float(x - _on_grid(x)):.2g} px right of the grid "
-                f"point {_frac(_on_grid(x))}, and the centre {centre} lies at or right of "
-                f"that point but left of {name}, so the floor moved it across)"
+                f" (here {name} = {_frac(x)} lies {abs(gap):.2g} px {'right' if gap > 0 else 'left'} "
+                f"of the grid point {_frac(grid(x))}, and the centre "
+                f"{num(math.ceil(x - HALF) - 0.5 if gap > 0 else math.ceil(grid(x) - HALF) - 0.5)} "
+                "lies between them, so the rounding moved it across)"
             )
             break
-    return ("you rounded the crossing to the 1/256 grid (a floor division in 1/256-px units) "
+    how = (
+        "to the nearest point of the 1/256 grid (round(256·x)/256)"
+        if nearest
+        else "to the 1/256 grid (a floor division in 1/256-px units)"
+    )
+    return (f"you rounded the crossing {how} "
             f"before rounding it to a column{said}: the crossing is a rational, not on the "
             "grid; divide once, rounding the exact quotient straight to a column: "
             "⌈(n − 128·d) / (256·d)⌉ with n = 256·x·d in integers, d > 0")  # fmt: skip
@@ -798,7 +849,9 @@ MISTAKES = {
         "to a column"
     ),
     "no top edge": "you left out the centres on a horizontal top edge that runs along the "
-    "centre line: a top edge, with the triangle below it, owns its centres",
+    "centre line: a top edge, with the triangle below it, owns its centres (or your rows leave "
+    "out the one through the top vertex on its centre line, such as ⌊y1 + ½⌋ ≤ row: a row "
+    "belongs when y1 ≤ row + ½ < y3)",
     "x and y swapped": "you swapped x and y: a vertex is (x, y) = (xy[k, 0], xy[k, 1]), and a "
     "raster line is a horizontal line, y = row + ½, whose crossings are x values",
     "horizontal reversed": "your rule for a horizontal edge on the centre line is the wrong "
@@ -867,6 +920,14 @@ MISTAKES = {
     "vertex to the bottom one is off: you divided by y3 − y1, the long edge's height, not by "
     "that edge's own height y3 − y2: x = x2 + (y − y2)·(x3 − x2)/(y3 − y2)",
     "crossing on the 1/256 grid": _grid_words,
+    "crossing to the nearest 1/256": lambda args, expected, got: _grid_words(
+        args, expected, got, nearest=True
+    ),
+    "rows clipped at 0": lambda args, expected, got: (
+        f"you left out the rows above row 0 (here row {args[1]}): the rows are the plane's, "
+        "negative ones too (no image clips them here, as lesson 01's raster_lines clips them to "
+        "its image with max(first, 0))"
+    ),
     "float at the last step": lambda args, expected, got: _landed_words(
         args, expected, got, last=True
     ),
@@ -1247,8 +1308,16 @@ def _landed_words(args, expected, got, last: bool = False) -> str:
             f"{float(centre):.1f}, not on it, so that centre is {state}; your {name} {end} {yours}: "
             f"{LAST_STEP if last else 'a float anywhere (' + LAST_STEP + ', too)'}: near "
             f"{abs(end):.2g} px float64's numbers are {float(np.spacing(float(abs(end)))):.2g} "
-            f"px apart, so it lands {lands}. Round the exact quotient to a column without a "
-            "float (integer floor division, or math.ceil of the Fraction itself)")  # fmt: skip
+            f"px apart, so it lands {lands}{TOLERANCE}. Round the exact quotient "
+            "to a column without a float (integer floor division, or math.ceil of the Fraction "
+            "itself)")  # fmt: skip
+
+
+#: r454 M1, M4: a tolerance gives a float's answers on these rows (the same centre moved)
+TOLERANCE = (
+    " (or, with no float: a tolerance on the ends, an epsilon that takes a crossing "
+    "this close to a centre as on it, moves the same centre; no tolerance is needed)"
+)
 
 
 LAST_STEP = ("an exact crossing, then rounded in float64 at the last step (math.ceil(n / d / "
@@ -1274,7 +1343,8 @@ def _float64_words(args, expected, got) -> str:
             "proves that order exact for coordinates below 2^18 px, a sufficient bound): "
             "compute the crossing, and its "
             "rounding to a column, exactly, without floats (integers in 1/256-px units, or "
-            "fractions.Fraction)")  # fmt: skip
+            "fractions.Fraction; a Fraction mixed with a float, such as row + 0.5 or "
+            "x - 0.5, is a float)")  # fmt: skip
 
 
 def _near_off(args, got) -> list[tuple[str, int, Fraction]] | None:
@@ -1443,9 +1513,10 @@ def _frac(x: Fraction) -> str:
     """x as a float; where that float is a centre x is not on (r403 P7: 2^29 px out), with the
     gap, so that no crossing off a centre reads as a tie."""
     near = float(x)
-    if (near - 0.5).is_integer() and x != Fraction(near):
-        gap = float(x - Fraction(near))
-        return f"{num(near)} {'+' if gap > 0 else '−'} {abs(gap):.2g}"
+    centre = Fraction(math.floor(x)) + HALF  # r454: 4.5 + 7.1e-15 is a float, 4.500000000000007
+    if x != centre and abs(x - centre) < Fraction(1, 10**6):
+        gap = float(x - centre)
+        return f"{num(float(centre))} {'+' if gap > 0 else '−'} {abs(gap):.2g}"
     return num(near)
 
 
@@ -1593,6 +1664,8 @@ def _mistakes() -> list[Mistake]:
             m = dataclasses.replace(m, must_fit=must)
             # r372 M4: and only where it contradicts no passing answer
             m = dataclasses.replace(m, consistent=True)
+        elif m.kind == "epsilon":  # r454 P1, M1: far out only where no float moves the end
+            m = dataclasses.replace(m, fits=_near_or_beyond_float64(m.fits))
         elif m.fits is not None and m.kind not in ("float64 crossing", "int64 overflow"):
             m = dataclasses.replace(m, fits=_near_only(m.fits))
         whole = m.kind in ("horizontal reversed", "first and stop swapped", "x_l and x_r swapped",
@@ -1615,6 +1688,22 @@ def _or_near_tie(must):
         return must(args, expected, got) or _near_tie_off(args, got)
 
     return both
+
+
+def _near_or_beyond_float64(fits):
+    """r454 P1, M1: the epsilon's ``fits``, far out too where each moved end's crossing lies
+    beyond float64's reach of its centre (:data:`FAR_HAIR`, 7.1·10^-15 px off the centre 4.5,
+    where float64's numbers are 8.9·10^-16 px apart): there no float computation gives the
+    answer, a tolerance does; elsewhere far out it says nothing, as :func:`_near_only`."""
+
+    def fits_here(args, expected, got):
+        if not _far(args[0]):
+            return fits(args, expected, got)
+        off = _near_off(args, got)
+        beyond = off and all(not _within_float64(x, Fraction(end) + HALF) for _, end, x in off)
+        return True if beyond else None
+
+    return fits_here
 
 
 def _near_only(fits):
@@ -1659,7 +1748,11 @@ SPAN = Exercise(
         PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
                       modules=("teachraster.study.exact_spans",)),
     ),
-    draw=draw_span, constant=_constant_span, raised_words=_span_raised, none_words=_span_none, hints=(
+    draw=draw_span, constant=_constant_span, raised_words=_span_raised, none_words=_span_none,
+    # r454 H7: a loop over rows from a vertex (lesson 01's stepped edges) or over the columns
+    slow=" (a loop over the rows from a vertex, or over the columns? One row's span is two "
+    "crossings: compute them for this row alone)",
+    hints=(
         # r39 02-5: the first wrong try printed the rounding the task asks to work out
         ("so the first column is ⌈x_l − ½⌉", "so which is the first column whose centre lies "
          "at or right of x_l?"),
