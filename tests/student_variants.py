@@ -10206,6 +10206,11 @@ R462 = {
     "bilinear with H and W swapped throughout": (
         "bilinear", _r426("bilinear", _R462_HW),
         "are H and W, rows and columns, swapped", "raised"),
+    "bilinear with 'clamp' as a mirror": (
+        "bilinear", _r426("bilinear", _R450_BILINEAR.format(
+            W="w", H="h", CLAMP="m = lambda i, n: i % n if (i // n) % 2 == 0 else n - 1 - i % n\n"
+            "        return tex[m(r, h), m(c, w)]")),
+        "beyond the border you mirrored the texture", "'clamp' as a mirror"),
     "trilinear of |λ|": (
         "trilinear", _r426("trilinear", _R462_TRI.format(LOD="abs(lod)")),
         "your value is that of |λ| = 2: a negative λ", "|λ|"),

@@ -366,7 +366,7 @@ MISTAKES = {
     "blends the two levels around it)",
     "float16": lambda a, e, g: (
         f"your λ is the right one rounded to float16 ({num(e)} held as {num(g)}: 11 "
-        "significant bits): compute λ in float64 (or float32) and return it as it is"
+        "significant bits): compute λ in float64 and return it as it is"
     ),
     "backward differences": lambda a, e, g: (
         f"you differenced pixel ({a[4]}, {a[5]}) with the pixels to its left and above it: "

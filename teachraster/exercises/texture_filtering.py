@@ -85,7 +85,7 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     x's, ``swap="x for y"`` blends the two rows by x's fraction too; ``wrap_as``
     wraps with another mode whatever the case says (clamping x and y to the texel centres
     first is the same as ``wrap_as="clamp"``; ``"swapped"``: clamps for "repeat" and tiles for
-    "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
+    "clamp"; ``"mirror"``: mirrors for "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
     ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels (``"mod
     repeat"``: for "repeat" only; ``"x mod"``: x = u·W − ½ and y wrapped into [0, W)
     and [0, H) for "repeat", then the texels clamped), ``"uv, tiled"`` clamps (u, v) for "clamp" and tiles the
@@ -135,15 +135,15 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         fy = fx
     mode = wrap_as or wrap
     border = mode == "border" and wrap == "clamp"  # r450 H4: 0 beyond the border for 'clamp'
-    if mode == "border":
-        mode = wrap
+    mirrored = mode == "mirror" and wrap == "clamp"  # r462 H2 (GL's MIRRORED_REPEAT)
+    mode = wrap if mode in ("border", "mirror") else mode
     if mode == "swapped":  # the two modes exchanged
         mode = "clamp" if wrap == "repeat" else "repeat"
 
     def index(i, n, tiled=None):
         tiled = mode == "repeat" if tiled is None else tiled
-        if border:
-            return int(i)
+        if border or mirrored:
+            return int(i) if border else mirror_index(i, n)
         return int(np.mod(i, n)) if tiled else int(np.clip(i, 0, n - 1))
 
     def texel(r, c):
@@ -171,6 +171,12 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     top = texel(r0, c0) * (1 - fx) + texel(r0, c1) * fx
     bottom = texel(r1, c0) * (1 - fx) + texel(r1, c1) * fx
     return top * (1 - fy) + bottom * fy
+
+
+def mirror_index(i, n) -> int:
+    """Texel index ``i`` of ``n`` mirrored at the borders: i mod 2n, read back from the far side."""
+    m = int(np.mod(i, 2 * n))
+    return m if m < n else 2 * n - 1 - m
 
 
 def _channels_fit(args, expected, got) -> bool:
@@ -357,6 +363,11 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
                      "CLAMP_TO_BORDER with a black border): wrap 'clamp' extends the border "
                      "texels outwards (CLAMP_TO_EDGE): clamp the texel indices to [0, W − 1] "
                      "and [0, H − 1]", "border"),
+                # r462 H2: told the generic hint
+                Slip("'clamp' as a mirror", "beyond the border you mirrored the texture (GL's "
+                     "MIRRORED_REPEAT): wrap 'clamp' extends the border texels outwards "
+                     "(CLAMP_TO_EDGE): clamp the texel indices to [0, W − 1] and [0, H − 1]",
+                     "mirror"),
                 # r390 N3: told the method ("which texel centres enclose (u, v)")
                 Slip("modulo H and W swapped", lambda a, e, g: "you wrapped the column "
                      f"index modulo H = {a[0].shape[0]} and the row index modulo W = "
@@ -1102,7 +1113,7 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
                     "(a bias, or rounding to the nearer level prepared?): use λ as it comes"),
                     "plus half"),
                Slip("λ in float16", _tri_words("your value is that of λ = {lod16} held in float16 "
-                    "({f16}: 11 significant bits): keep λ in float64 (or float32)"), "float16")],
+                    "({f16}: 11 significant bits): keep λ as it comes, in float64"), "float16")],
     # r450 H7: λ rounded before use was told the generic hint
     "digits": [Slip("λ rounded", _tri_words("your value is that of λ = {lod} rounded to "
                     "1 decimal: use λ as it comes, unrounded"), 1),
