@@ -10905,3 +10905,91 @@ R453 = {
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R453.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R453.items()})
 DIFFERENT["fill into an object array of Python bools (r453 WF1)"] = ("fill", _r453_object_fill)
+# == r462 (rf07, exercise 07): 7.3's |λ| was blamed on Python's pyramid[-2]; 7.2's IndexError
+# slips (indices clipped to [0, W], H and W swapped) raised bare; λ offset, halved or held in
+# float16 (7.1, 7.3, 7.4), 7.1's Frobenius, area and backward-difference ρ: the generic hint ==
+_R462_LOD = """
+def pixel_lod(xy, w, uv, size, row, col):
+    uv = np.asarray(uv, float)
+    def at(x, y):
+        return perspective_weights(barycentric(xy, [[x, y]]), w, extrapolate=True)[0] @ uv
+    r0, c0 = row - row % 2, col - col % 2
+    ul = at(c0 + .5, r0 + .5); dx = at(c0 + 1.5, r0 + .5) - ul; dy = at(c0 + .5, r0 + 1.5) - ul
+    {STEPS}
+    t = np.array([size[1], size[0]]); lx, ly = np.hypot(*(dx * t)), np.hypot(*(dy * t))
+    return {LAM}
+"""
+_R462_BACKWARD = ("me = at(col + .5, row + .5); dx = me - at(col - .5, row + .5); "
+                  "dy = me - at(col + .5, row - .5)")  # fmt: skip
+_R462_BILINEAR = """
+def bilinear(texture, uv, wrap):
+    tex = np.asarray(texture, float); h, w = tex.shape[:2]
+    x, y = uv[0] * {W} - .5, uv[1] * {H} - .5
+    x0, y0 = int(np.floor(x)), int(np.floor(y)); fx, fy = x - x0, y - y0
+    c = np.array([x0, x0 + 1]); r = np.array([y0, y0 + 1])
+    c, r = (c % {W}, r % {H}) if wrap == "repeat" else (np.clip(c, 0, {WC}), np.clip(r, 0, {HC}))
+    t = {TEX}
+    return (1-fy)*((1-fx)*t[{R0}, {C0}] + fx*t[{R0}, {C1}]) + fy*((1-fx)*t[{R1}, {C0}] + fx*t[{R1}, {C1}])
+"""
+_R462_CLIP_W = dict(W="w", H="h", WC="w", HC="h", TEX="tex", R0="r[0]", R1="r[1]", C0="c[0]",
+                    C1="c[1]")  # fmt: skip
+_R462_HW = """
+def bilinear(texture, uv, wrap):  # h taken for the width throughout, the texture transposed
+    tex = np.asarray(texture, float); h, w = tex.shape[:2]
+    x, y = uv[0] * h - .5, uv[1] * w - .5
+    x0, y0 = int(np.floor(x)), int(np.floor(y)); fx, fy = x - x0, y - y0
+    c = np.array([x0, x0 + 1]); r = np.array([y0, y0 + 1])
+    c, r = (c % h, r % w) if wrap == "repeat" else (np.clip(c, 0, h - 1), np.clip(r, 0, w - 1))
+    t = tex.swapaxes(0, 1)
+    return (1-fy)*((1-fx)*t[c[0], r[0]] + fx*t[c[1], r[0]]) + fy*((1-fx)*t[c[0], r[1]] + fx*t[c[1], r[1]])
+"""
+_R462_TRI = "_tri = trilinear\ndef trilinear(pyramid, uv, lod, wrap='repeat'):\n    return _tri(pyramid, uv, {LOD}, wrap)\n"
+#: label: (exercise, function, words its first explanation must hold, its kind).
+R462 = {
+    "pixel lod held in float16": (
+        "pixel_lod", _r426("pixel_lod", _R462_LOD.format(STEPS="", LAM="float(np.float16(np.log2(max(lx, ly))))")),
+        "rounded to float16", "float16"),
+    "pixel lod minus 0.5": (
+        "pixel_lod", _r426("pixel_lod", _R462_LOD.format(STEPS="", LAM="float(np.log2(max(lx, ly))) - 0.5")),
+        "your λ is the right one − 0.5 on every case", "λ offset"),
+    "pixel lod from both lengths combined": (
+        "pixel_lod", _r426("pixel_lod", _R462_LOD.format(STEPS="", LAM="float(np.log2(np.hypot(lx, ly)))")),
+        "√(|ddx|² + |ddy|²), both steps' lengths combined", "both lengths combined"),
+    "pixel lod from the footprint's area": (
+        "pixel_lod", _r426("pixel_lod", _R462_LOD.format(
+            STEPS="", LAM="float(0.5 * np.log2(abs(np.cross(dx * t, dy * t))))")),
+        "½·log2 of the area |ddx × ddy|", "area"),
+    "pixel lod from backward differences": (
+        "pixel_lod", _r426("pixel_lod", _R462_LOD.format(STEPS=_R462_BACKWARD, LAM="float(np.log2(max(lx, ly)))")),
+        "with the pixels to its left and above it", "backward differences"),
+    "bilinear with indices clipped to [0, W]": (
+        "bilinear", _r426("bilinear", _R462_BILINEAR.format(**_R462_CLIP_W)),
+        "is one past the last column, W − 1 = 3: with wrap 'clamp' clamp each index", "raised"),
+    "bilinear with H and W swapped throughout": (
+        "bilinear", _r426("bilinear", _R462_HW),
+        "are H and W, rows and columns, swapped", "raised"),
+    "bilinear with 'clamp' as a mirror": (
+        "bilinear", _r426("bilinear", _R450_BILINEAR.format(
+            W="w", H="h", CLAMP="m = lambda i, n: i % n if (i // n) % 2 == 0 else n - 1 - i % n\n"
+            "        return tex[m(r, h), m(c, w)]")),
+        "beyond the border you mirrored the texture", "'clamp' as a mirror"),
+    "trilinear of |λ|": (
+        "trilinear", _r426("trilinear", _R462_TRI.format(LOD="abs(lod)")),
+        "your value is that of |λ| = 2: a negative λ", "|λ|"),
+    "trilinear of λ/2": (
+        "trilinear", _r426("trilinear", _R462_TRI.format(LOD="lod / 2")),
+        "your value is that of λ/2 = ", "λ halved"),
+    "trilinear of λ + ½": (
+        "trilinear", _r426("trilinear", _R462_TRI.format(LOD="lod + 0.5")),
+        "your value is that of λ + ½ = ", "λ + ½"),
+    "trilinear of λ in float16": (
+        "trilinear", _r426("trilinear", _R462_TRI.format(LOD="float(np.float16(lod))")),
+        "held in float16", "λ in float16"),
+    "pixel sample with λ + 0.02": (
+        "pixel_sample", _r450_sample(lod=_R450_LOD + " + 0.02"),
+        "(+0.02): the same offset on every case", "λ offset"),
+    "pixel sample with λ halved": (
+        "pixel_sample", _r450_sample(lod="0.5 * " + _R450_LOD), "your λ is half 7.1's", "λ/2"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R462.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R462.items()})

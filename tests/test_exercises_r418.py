@@ -69,12 +69,12 @@ def test_junk_that_reads_the_inputs_never_unlocks_the_steps():
 
 
 def test_two_tries_at_the_task_unlock_the_steps():
-    """An unnamed try that behaves like a λ (the geometric mean of the two steps; the Frobenius
-    norm), or a sample that filters the pyramid at a (u, v) (a (u, v) scaled, a λ scaled),
+    """An unnamed try that behaves like a λ (the geometric mean of the two steps; a weighted
+    mean: r462 names the Frobenius norm), or a sample that filters the pyramid at a (u, v) (a (u, v) scaled, a λ scaled),
     counts: the second one gets the steps."""
     tries.forget_hints()
     lods = [sv._lod405(RHO="(lambda a, b: np.sqrt(a * b))"),
-            sv._lod405(RHO="(lambda a, b: np.hypot(a, b))")]  # fmt: skip
+            sv._lod405(RHO="(lambda a, b: (a + 2 * b) / 3)")]  # fmt: skip
     samples = [sv._ps405(RET="trilinear(pyramid, uvh * 1.1, lod, wrap)"),
                sv._ps405(RET="trilinear(pyramid, uvh, lod * 0.8, wrap)")]  # fmt: skip
     for name, rule, (first, second) in (("pixel_lod", pl.RULE, lods),

@@ -164,8 +164,18 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "rounded": lod((ddx, ddy), log="round"),
         "rounded down": lod((ddx, ddy), log="floor"),
         "rounded up": _ceil(lod((ddx, ddy))),
+        # r462 H7 (r450 H2): λ held in float16 was told "does not behave like a λ"
+        "float16": None if (right := lod((ddx, ddy))) is None else float(np.float16(right)),
+        "backward differences": lod(_backward_steps(xy, w, uv, row, col)),
         **_log_slips(xy, w, uv, size, row, col),
     }
+
+
+def _backward_steps(xy, w, uv, row, col):
+    """r462 H4: (u, v) here minus at the pixel to the left, and minus at the pixel above."""
+    here = _uv_at(xy, w, uv, col + 0.5, row + 0.5)
+    return (here - _uv_at(xy, w, uv, col - 0.5, row + 0.5),
+            here - _uv_at(xy, w, uv, col + 0.5, row - 0.5))  # fmt: skip
 
 
 #: r415 F2: the coarse differences from other lanes of the quad, (row of ddx, column of ddy),
@@ -220,7 +230,12 @@ def _log_slips(*args) -> dict:
     lam = _log2(max(lx, ly))
     if lam is None:
         return {}
+    ddx, ddy = (np.asarray(d) * [args[3][1], args[3][0]] for d in quad_steps(*args[:3], *args[4:]))
+    area = abs(float(ddx[0] * ddy[1] - ddx[1] * ddy[0]))
     return {"log2 of ρ²": 2 * lam, "natural log": lam * math.log(2),
+            # r462 H4: both steps' lengths combined, and the footprint's area
+            "both lengths combined": _log2(math.hypot(lx, ly)),
+            "area": None if area == 0 else 0.5 * math.log2(area),
             "divided by ln 2": lam / math.log(2), "the shorter step": _log2(min(lx, ly)),
             "log2 of 1 + ρ": math.log2(1 + max(lx, ly))}  # fmt: skip
 
@@ -349,6 +364,23 @@ MISTAKES = {
     "blends the two levels around it)",
     "rounded up": "you rounded λ up to a whole level (⌈λ⌉): λ is fractional in general (7.3 "
     "blends the two levels around it)",
+    "float16": lambda a, e, g: (
+        f"your λ is the right one rounded to float16 ({num(e)} held as {num(g)}: 11 "
+        "significant bits): compute λ in float64 and return it as it is"
+    ),
+    "backward differences": lambda a, e, g: (
+        f"you differenced pixel ({a[4]}, {a[5]}) with the pixels to its left and above it: "
+        "a GPU differences within the pixel's own 2×2 quad only (lesson 09 §2), upper right − "
+        "upper left and lower left − upper left, the same pair for the quad's four pixels"
+    ),
+    "both lengths combined": lambda a, e, g: (
+        "your ρ is √(|ddx|² + |ddy|²), both steps' lengths combined "
+        f"({num(_axes(a)[0])} and {num(_axes(a)[1])} texels): the longer step alone decides "
+        "whether a step skips texels"
+    ),
+    "area": "your λ is ½·log2 of the area |ddx × ddy| the pixel covers in texels (the "
+    "footprint's geometric mean): a long, thin footprint then gets too fine a level and its "
+    "longer step skips texels; λ follows the longer step's length",
     "log2 of 1 + ρ": lambda a, e, g: (
         f"your λ is log2(1 + ρ) (ρ = {num(max(_axes(a)))} texels, the longer step): λ counts "
         "halvings of ρ itself, so one texel per step (ρ = 1) is level 0 and a magnified "
@@ -631,9 +663,29 @@ def draw_lod_case(ax, case, got, overview=None, marked=QUESTION_PIXELS):
     return artists
 
 
+def _offset(args, expected, got) -> float | None:
+    """λ's error on this case, where it is one (r462 H4: λ − 0.5 was told the steps)."""
+    if got is None or not math.isfinite(float(got)) or abs(got - expected) < 1e-6:
+        return None
+    return float(got - expected)
+
+
+def _offset_words(args, expected, got) -> str:
+    c = _offset(args, expected, got)
+    return (f"your λ is the right one {'+' if c > 0 else '−'} {num(abs(c))} on every case (here "
+            f"{num(got)} for {num(expected)}): a constant added (a bias), or every step counted "
+            "in texels of a texture of another size (each halving of W and H subtracts 1)? "
+            "7.1's λ is log2 of the longer step in texels of this size, nothing added")  # fmt: skip
+
+
+#: Named only where one offset gives every answer (:attr:`.exercise.Mistake.parameter`).
+LOD_OFFSET = Mistake("λ offset", _offset_words, fits=lambda a, e, g: _offset(a, e, g) is not None,
+                     parameter=_offset, only_whole=True)  # fmt: skip
+
+
 PIXEL_LOD = Exercise(
     "pixel_lod", lod_cases, as_lod, same_lod, explain_lod, _rule,
-    (*variant_mistakes(_variants, MISTAKES), PER_TRIANGLE),  # affine's λ is one per triangle
+    (*variant_mistakes(_variants, MISTAKES), PER_TRIANGLE, LOD_OFFSET),  # affine's: per triangle
     answers=(PackageAnswer(mip_level), PackageAnswer(lane_values)),
     draw=draw_lod_case, hints=((RULE, HINT),), inputs_drawn=True, call=_call,
     once=((RULE, ": as said for the first failing case"),),

@@ -176,6 +176,7 @@ def _variants(pyramid, xy, w, uv, row, col, wrap) -> dict:
         "λ clamped to q − 1": tri(lam=min(max(lod, 0.0), len(pyramid) - 2)),
         "⌈λ⌉": tri(lam=float(np.ceil(lod))),
         "λ + ½": tri(lam=lod + 0.5),
+        "λ/2": tri(lam=lod / 2),  # r462 H6
         "2λ": tri(lam=2 * lod),  # r450 H8: these three were told the generic questions
         "pyramid reversed": trilinear_with(list(pyramid)[::-1], at, lod, wrap),
         "(u, v) at (col + 1, row + 1)": tri(u=_uv(xy, w, uv, col + 1, row + 1)),
@@ -283,6 +284,7 @@ MISTAKES = {
     "jumps; 7.3's trilinear blends the two levels around λ itself",
     "λ + ½": "your λ is 7.1's plus ½ (a bias, or rounding to the nearer level prepared): "
     "7.3's trilinear takes λ itself",
+    "λ/2": "your λ is half 7.1's: 7.3's trilinear takes 7.1's λ itself",
     "2λ": "your λ is twice 7.1's (log2 ρ² for log2 ρ?): 7.3's trilinear takes 7.1's λ itself",
     "pyramid reversed": "you filtered the pyramid reversed: level 0, pyramid[0], is the "
     "full-size texture and the last level is 1 × 1; λ counts levels from level 0",
@@ -710,9 +712,67 @@ def draw_sample_case(ax, case, got):
     return artists
 
 
+def _fitted_lod(args, got) -> float | None:
+    """The λ at which the pyramid, filtered trilinearly at the pixel's own (u, v), gives ``got``
+    (the nearest to 7.1's λ where several do), or None: the value is linear in λ between two
+    levels, so each pair of levels gives at most one (r462 H6, r450 H8)."""
+    pyramid, xy, w, uv, row, col, wrap = args
+    at = pixel_uv(xy, w, uv, row, col)
+    values = [np.ravel(expected_bilinear(level, at, wrap)).astype(float) for level in pyramid]
+    g = np.ravel(np.asarray(got, dtype=float))
+    if g.size != values[0].size or not np.all(np.isfinite(g)):
+        return None
+    lod = expected_lod(xy, w, uv, level_size(pyramid), row, col)
+    found = []
+    for k in range(len(pyramid) - 1):
+        a, b = values[k], values[k + 1]
+        steep = np.abs(b - a) > 1e-6
+        if not steep.any():
+            continue
+        t = float(np.mean((g - a)[steep] / (b - a)[steep]))
+        if -1e-9 <= t <= 1 + 1e-9 and np.allclose(a + t * (b - a), g, rtol=0, atol=1e-7):
+            found.append(k + min(max(t, 0.0), 1.0))
+    return min(found, key=lambda lam: abs(lam - lod)) if found else None
+
+
+def _lod_offset(args, expected, got):
+    """The offsets of λ that give ``got`` on this case, as a range (lo, hi): one number where
+    the fitted λ lies between the ends of the pyramid, open-ended at an end (λ clamped there)."""
+    if np.allclose(np.asarray(got, float), expected, rtol=0, atol=1e-9):
+        return None
+    fitted = _fitted_lod(args, got)
+    if fitted is None:
+        return None
+    pyramid, xy, w, uv, row, col, _ = args
+    lod = expected_lod(xy, w, uv, level_size(pyramid), row, col)
+    d, q = fitted - lod, len(pyramid) - 1
+    if abs(d) < 1e-6:
+        return None
+    lo = -np.inf if fitted <= 1e-9 else d - 1e-4
+    hi = np.inf if fitted >= q - 1e-9 else d + 1e-4
+    return (lo, hi)
+
+
+def _lod_offset_words(args, expected, got) -> str:
+    pyramid, xy, w, uv, row, col, _ = args
+    lod = expected_lod(xy, w, uv, level_size(pyramid), row, col)
+    fitted = _fitted_lod(args, got)
+    d = fitted - lod
+    return (f"your value is the pyramid filtered at this pixel's own (u, v) with λ = {num(fitted)}, "
+            f"where 7.1's λ here is {num(lod)} ({'+' if d > 0 else '−'}{num(abs(d))}): the same "
+            "offset on every case; a bias added to λ, or λ from another size? 7.3's trilinear "
+            "takes 7.1's λ itself")  # fmt: skip
+
+
+#: Named only where one offset of λ gives every failing answer (:attr:`.Mistake.parameter`).
+LOD_OFFSET = Mistake("λ offset", _lod_offset_words,
+                     fits=lambda a, e, g: _lod_offset(a, e, g) is not None,
+                     parameter=_lod_offset, only_whole=True)  # fmt: skip
+
+
 PIXEL_SAMPLE = Exercise(
     "pixel_sample", sample_cases, as_sample, same_value, explain_sample, _rule,
-    (*OWN, *variant_mistakes(_variants, MISTAKES)), call=_call,
+    (*OWN, *variant_mistakes(_variants, MISTAKES), LOD_OFFSET), call=_call,
     answers=(PackageAnswer(sample, when=lambda a: a.get("filter") == "trilinear"),
              PackageAnswer(mip_level), PackageAnswer(lane_values)),
     draw=draw_sample_case, hints=((RULE, HINT),), inputs_drawn=True, raised_words=_raised,

@@ -85,7 +85,7 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     x's, ``swap="x for y"`` blends the two rows by x's fraction too; ``wrap_as``
     wraps with another mode whatever the case says (clamping x and y to the texel centres
     first is the same as ``wrap_as="clamp"``; ``"swapped"``: clamps for "repeat" and tiles for
-    "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
+    "clamp"; ``"mirror"``: mirrors for "clamp"; ``"columns"``: tiles the columns only, for "repeat"); ``clamp="uv"`` clamps (u, v) to [0, 1] first,
     ``clamp="mod"`` wraps (u, v) into [0, 1) first and then clamps the texels (``"mod
     repeat"``: for "repeat" only; ``"x mod"``: x = u·W − ½ and y wrapped into [0, W)
     and [0, H) for "repeat", then the texels clamped), ``"uv, tiled"`` clamps (u, v) for "clamp" and tiles the
@@ -135,15 +135,15 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
         fy = fx
     mode = wrap_as or wrap
     border = mode == "border" and wrap == "clamp"  # r450 H4: 0 beyond the border for 'clamp'
-    if mode == "border":
-        mode = wrap
+    mirrored = mode == "mirror" and wrap == "clamp"  # r462 H2 (GL's MIRRORED_REPEAT)
+    mode = wrap if mode in ("border", "mirror") else mode
     if mode == "swapped":  # the two modes exchanged
         mode = "clamp" if wrap == "repeat" else "repeat"
 
     def index(i, n, tiled=None):
         tiled = mode == "repeat" if tiled is None else tiled
-        if border:
-            return int(i)
+        if border or mirrored:
+            return int(i) if border else mirror_index(i, n)
         return int(np.mod(i, n)) if tiled else int(np.clip(i, 0, n - 1))
 
     def texel(r, c):
@@ -171,6 +171,12 @@ def plain_bilinear(texture, uv, wrap, *, origin="centres", floor="floor", swap=F
     top = texel(r0, c0) * (1 - fx) + texel(r0, c1) * fx
     bottom = texel(r1, c0) * (1 - fx) + texel(r1, c1) * fx
     return top * (1 - fy) + bottom * fy
+
+
+def mirror_index(i, n) -> int:
+    """Texel index ``i`` of ``n`` mirrored at the borders: i mod 2n, read back from the far side."""
+    m = int(np.mod(i, 2 * n))
+    return m if m < n else 2 * n - 1 - m
 
 
 def _channels_fit(args, expected, got) -> bool:
@@ -357,6 +363,11 @@ BILINEAR_KNOBS = Knobs(plain_bilinear, {
                      "CLAMP_TO_BORDER with a black border): wrap 'clamp' extends the border "
                      "texels outwards (CLAMP_TO_EDGE): clamp the texel indices to [0, W − 1] "
                      "and [0, H − 1]", "border"),
+                # r462 H2: told the generic hint
+                Slip("'clamp' as a mirror", "beyond the border you mirrored the texture (GL's "
+                     "MIRRORED_REPEAT): wrap 'clamp' extends the border texels outwards "
+                     "(CLAMP_TO_EDGE): clamp the texel indices to [0, W − 1] and [0, H − 1]",
+                     "mirror"),
                 # r390 N3: told the method ("which texel centres enclose (u, v)")
                 Slip("modulo H and W swapped", lambda a, e, g: "you wrapped the column "
                      f"index modulo H = {a[0].shape[0]} and the row index modulo W = "
@@ -576,13 +587,61 @@ def _answers(filter_name):
     return (whole, level)
 
 
+_INDEX_ERROR = re.compile(r"index (-?\d+) is out of bounds for axis (\d+) with size (\d+)")
+
+
+def bilinear_raised(args, error) -> str:
+    """Words for an IndexError of the student's bilinear, from the case's own indices (r462 H1,
+    r450 H5: indices clipped to [0, W] and H and W swapped were told the raw error only)."""
+    found = _INDEX_ERROR.search(error)
+    if not error.startswith("your function raised IndexError") or found is None:
+        return ""
+    index, axis, size = (int(g) for g in found.groups())
+    tex, uv, wrap = args
+    h, w = np.shape(tex)[:2]
+    if axis > 1:
+        return ""
+    n, other = (h, w) if axis == 0 else (w, h)
+    one, many, big, coord = (
+        ("row", "rows", "H", "y") if axis == 0 else ("column", "columns", "W", "x")
+    )
+    if size != n:
+        return (f": your array's axis {axis} has {size} entries, where this texture (shape "
+                f"{h}×{w}, texture[row, col]) has {big} = {n} {many} along it: are H and W, rows "
+                "and columns, swapped (the texture transposed, or u scaled by H)?")  # fmt: skip
+    c = (uv[1] * h if axis == 0 else uv[0] * w) - 0.5
+    fix = (f"with wrap 'repeat' take each index modulo {big} = {n} ({one} {n} is {one} 0)"
+           if wrap == "repeat" else
+           f"with wrap 'clamp' clamp each index to [0, {big} − 1] = [0, {n - 1}]")  # fmt: skip
+    if index < 0:
+        return (f": {one} index {index}: Python reads a negative index from the end and raises "
+                f"below −{n}; {fix}")  # fmt: skip
+    lower = int(np.floor(c))
+    if index in (lower, lower + 1) or index == n:
+        which = (
+            f"{one} ⌊{coord}⌋ + 1 = {lower + 1} ({coord} = {num(c)})"
+            if index == lower + 1
+            else f"{one} {index}"
+        )
+        past = "one past" if index == n else "past"
+        clipped = (f"; you clamped to [0, {big}] = [0, {n}]" if index == n != lower + 1 and
+                   wrap != "repeat" else "")  # fmt: skip
+        return f": {which} is {past} the last {one}, {big} − 1 = {n - 1}{clipped}: {fix}"
+    if index < other:
+        return (f": {one} index {index} lies beyond the {big} = {n} {many} but within the "
+                f"other axis's {other}: are H and W swapped (u scaled by H, v by W, or the row "
+                "and column indices exchanged)? u runs along the W columns (x = u·W − ½), v "
+                "along the H rows")  # fmt: skip
+    return ""
+
+
 def bilinear_exercise(scene) -> Exercise:
     return Exercise(
         "bilinear", bilinear_cases, as_texel_value, same_value, explain_bilinear,
         _bilinear_rule, BILINEAR_MISTAKES, answers=_answers("bilinear"),
         draw=draw_texture_case, scene=scene, hints=((BILINEAR_RULE, BILINEAR_HINT), *NAMED_HINTS),
         once=((BILINEAR_RULE, ": as said for the first failing case"),),
-        inputs_drawn=True,
+        inputs_drawn=True, raised_words=bilinear_raised,
         example=8,  # r362 FIG1: u = 0.05, 7.2's question (a texel centre had weights 1, 0, 0, 0)
     )  # fmt: skip
 
@@ -876,7 +935,7 @@ def explain_trilinear(args, expected, got) -> str:
 
 
 def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="right",
-                   levels="two", texels="bilinear", digits=None):  # fmt: skip
+                   levels="two", texels="bilinear", digits=None, lod_as=None):  # fmt: skip
     """trilinear with the usual mistakes as knobs (the defaults are GL's LINEAR_MIPMAP_LINEAR).
 
     ``clamp`` "weight" clamps the levels but weighs them by the raw λ − ⌊λ⌋, "extrapolate"
@@ -887,11 +946,13 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     same levels, weighted by λ − ⌊λ⌋), "coarsest first" (level d read as pyramid[q − d]);
     ``weights="half"`` (½ each between two levels); ``clamp="q - 1"``
     clamps λ to [0, q − 1]; ``weights="smoothstep"`` eases the weight, 3t² − 2t³ (r450 H6);
-    ``digits`` rounds λ to that many decimals first (r450 H7); ``texels="level 0 size"`` filters every level with level 0's W
+    ``digits`` rounds λ to that many decimals first (r450 H7); ``lod_as`` takes |λ|
+    ("abs", :data:`ABS_LOD`), λ/2 ("half"), λ + ½ ("plus half") or λ held in float16 ("float16") for λ (r462); ``texels="level 0 size"`` filters every level with level 0's W
     and H (``"level 0 size, tiled"``: and tiles whatever the wrap); ``texels="nearest"`` filters each level with its nearest texel.
     """
     q = len(pyramid) - 1
     lod = lod if digits is None else round(float(lod), digits)
+    lod = LOD_AS[lod_as](float(lod)) if lod_as else lod
     if clamp in ("lambda", "q - 1"):  # "q - 1": r286, the last level taken for q − 1
         lam = min(max(lod, 0.0), q if clamp == "lambda" else max(q - 1, 0))
         rounds = levels in ("round for floor", "round lower")
@@ -937,6 +998,11 @@ def trilinear_with(pyramid, uv, lod, wrap="repeat", *, clamp="lambda", weights="
     if weights == "smoothstep":
         t = t * t * (3 - 2 * t)
     return (1 - t) * a + t * b
+
+
+#: r462 M1, H5: λ changed before its levels are taken (|λ| was told "Python's pyramid[-2]").
+LOD_AS = {"abs": abs, "half": lambda lam: lam / 2, "plus half": lambda lam: lam + 0.5,
+          "float16": lambda lam: float(np.float16(lam))}  # fmt: skip
 
 
 #: How a mistaken trilinear filters one level: a bilinear mistake (of 7.2) as plain_bilinear's knob.
@@ -997,6 +1063,11 @@ def _tri_words(text):
             index_read=_index_read(len(pyramid), int(np.floor(lod))),
             r0=q - d0,
             r1=q - d1,
+            abs_lod=num(abs(lod)),
+            half=num(lod / 2),
+            plus=num(lod + 0.5),
+            f16=num(float(np.float16(lod)), float(lod)),
+            lod16=num(float(lod), float(np.float16(lod))),
         )
 
     return words
@@ -1034,6 +1105,15 @@ TRILINEAR_KNOBS = Knobs(trilinear_with, {
                 Slip("weight eased (smoothstep)", _tri_words("your weight of level {d1} is "
                      "eased (3t² − 2t³, a smoothstep): the value must change linearly between "
                      "levels, level {d1} weighted by λ − ⌊λ⌋ = {t} itself"), "smoothstep")],
+    # r462 M1, H5: |λ| was blamed on Python's pyramid[-2]; λ/2, λ + ½ and a float16 λ were
+    # told the generic hint
+    "lod_as": [Slip("λ halved", _tri_words("your value is that of λ/2 = {half}, not of λ = "
+                    "{lod}: use λ as it comes"), "half"),
+               Slip("λ + ½", _tri_words("your value is that of λ + ½ = {plus}, not of λ = {lod} "
+                    "(a bias, or rounding to the nearer level prepared?): use λ as it comes"),
+                    "plus half"),
+               Slip("λ in float16", _tri_words("your value is that of λ = {lod16} held in float16 "
+                    "({f16}: 11 significant bits): keep λ as it comes, in float64"), "float16")],
     # r450 H7: λ rounded before use was told the generic hint
     "digits": [Slip("λ rounded", _tri_words("your value is that of λ = {lod} rounded to "
                     "1 decimal: use λ as it comes, unrounded"), 1),
@@ -1127,6 +1207,15 @@ TRILINEAR_HINT = (
 )
 
 
+#: r462 M1: |λ| was blamed on Python's pyramid[-2] (λ = −2 reads level 2 both ways); named
+#: only where it gives every answer, so that ⌊λ⌋ = −2 used as an index keeps its words.
+ABS_LOD = Mistake("|λ|", _tri_words("your value is that of |λ| = {abs_lod}: a negative λ (the "
+                  "texture magnified) is clamped to 0, level 0 alone, not turned positive"),
+                  gives=lambda pyramid, uv, lod, wrap: trilinear_with(pyramid, uv, lod, wrap,
+                                                                      lod_as="abs"),
+                  only_whole=True)  # fmt: skip
+
+
 def _trilinear_rule(args, expected, got) -> str:
     return TRILINEAR_RULE
 
@@ -1151,7 +1240,7 @@ def no_level_above_q(args, error) -> str:
 def trilinear_exercise(scene) -> Exercise:
     return Exercise(
         "trilinear", trilinear_cases, as_texel_value, same_value, explain_trilinear,
-        _trilinear_rule, [CHANNELS, TRILINEAR_KNOBS], answers=_answers("trilinear"),
+        _trilinear_rule, [CHANNELS, ABS_LOD, TRILINEAR_KNOBS], answers=_answers("trilinear"),
         draw=draw_texture_case, scene=scene,
         hints=((TRILINEAR_RULE, TRILINEAR_HINT), *CLAMP_HINTS, *NAMED_HINTS),
         once=((TRILINEAR_RULE, ": as said for the first failing case"),),
