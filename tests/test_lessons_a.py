@@ -2051,6 +2051,17 @@ def test_05b_decal_flickers_under_float32_set_up_and_gl_reverse_z_needs_zero_to_
     code = "".join(_cells("05b_depth_precision", "code"))
     assert "camera panned by 0.3 px" in code and "Pan the camera by 0.3 px" in text
     assert "third of a" not in text
+    # r467 S3: at z = 1 (the top-left pair) the decal shows in a solid block, not a streak
+    assert "small blocks where\na patch of pixels rounds the same way (at $z = 1$)" in text
+    shown = np.zeros((ns.H2, ns.W2), dtype=bool)
+    shown[ns.rows_d[ns.apart < 0], ns.cols_d[ns.apart < 0]] = True
+    top_left = shown[: ns.H2 // 2, : ns.W2 // 3].astype(int)
+    block = top_left[:-2, :-2] + top_left[1:-1, :-2] + top_left[2:, :-2]  # 3 x 3 windows
+    block = block + top_left[:-2, 1:-1] + top_left[1:-1, 1:-1] + top_left[2:, 1:-1]
+    block = block + top_left[:-2, 2:] + top_left[1:-1, 2:] + top_left[2:, 2:]
+    assert (block == 9).any()
+    # r467 S5: the offsets are printed flattest to steepest, named
+    assert 'from {offset.max():.2e} (flattest) to {offset.min():.2e} "' in code
     # GL's [-1, 1] NDC: the far squares fight again, though less than unorm24's
     assert ns.fights_gl[-1] > 0 and not ns.fights_reversed["float32"].any()
     assert ns.fights_gl.sum() <= ns.fights_window["unorm24"].sum()
@@ -2949,7 +2960,9 @@ def test_05b_reverse_and_bias_questions_and_the_slope_term_per_square():
     explore = next(c for c in code if "DepthPrecisionExplorer(" in c)
     assert explore.startswith("q_fight.hold()")
     recipe = next(c for c in _cells("05b_depth_precision", "markdown") if "## 4. Reverse-Z" in c)
-    assert "takes a **reversed projection matrix**: a $[0, 1]$-depth projection" in recipe
+    # r467 S2: no API takes a matrix; the application supplies it
+    assert "supplies a **reversed projection matrix**: a $[0, 1]$-depth projection" in recipe
+    assert "Every API\ntakes" not in recipe
     assert "GL_LOWER_LEFT, GL_ZERO_TO_ONE" in recipe and "does not work" not in recipe
     # review r79 05b-9: swapping near and far in GL's [-1, 1] matrix does reverse the depth;
     # what it loses is precision (said after the question, held with its answer)
