@@ -46,10 +46,10 @@ def test_10_r281_items():
         assert line in printed, line
     # M3: q_trav, its figure and table held (r300 P2: asked before the figure numbers the
     # visits, serpentine's count)
-    asked = next(i for i, t in enumerate(text) if "q_trav = Predict(" in t)
+    asked = next(i for i, t in enumerate(text) if "q_trav = PredictPixels(" in t)
     assert "plot_traversal(" in text[asked + 1] and text[asked + 1].startswith("q_trav.hold()")
     assert text[asked + 2].startswith("q_trav.hold()") and "plot_traversal(" not in text[asked]
-    assert "answer=serp," in text[asked] and ns.least == ("tiled", "morton")
+    assert "answer=serp_entries," in text[asked] and ns.least == ("tiled", "morton")
     assert ns.trav_moves["scanline"] == ns.tile_changes["scanline"] == 15
     assert ns.trav_moves == ns.tile_changes and (ns.trav_moves["serpentine"], ns.trav_moves[
         "tiled"], ns.trav_moves["morton"]) == (9, 3, 3)  # fmt: skip

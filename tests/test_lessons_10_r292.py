@@ -49,9 +49,10 @@ def test_10_r292_items():
     assert "from the star to the square" in md and "filled dot" not in md
     # F1
     assert "Roadmap 2026" not in md and "8 from the Roadmap 2022 milestone on" in md
-    # P1 (r300 P2): serpentine's tile moves, a whole number, asked before the held figure
-    asked = next(i for i, t in enumerate(text) if "q_trav = Predict(" in t)
-    assert "whole=True," in text[asked] and ns.serp == ns.trav_moves["serpentine"] == 9
+    # P1 (r300 P2): serpentine's tile moves, asked before the held figure
+    asked = next(i for i, t in enumerate(text) if "q_trav = PredictPixels(" in t)
+    assert "answer=serp_entries," in text[asked]  # r468 P1: the cells, clicked on the grid
+    assert int(ns.serp_entries.sum()) == ns.serp == ns.trav_moves["serpentine"] == 9
     assert "the least four tiles allow" not in md  # said only in the held explanation
     # M2: q_tile before the table and the explorer, both held, and the text after them
     ask = next(i for i, t in enumerate(text) if "q_tile = Predict(" in t)

@@ -17,13 +17,13 @@ def test_10_r300_items():
     ns, printed, shown = _lesson_10_run()
     cells, text, md, code = _lesson_10_sources()
     # P2: asked before the figure, from the definitions; the figure and the table held
-    asked = next(i for i, t in enumerate(text) if "q_trav = Predict(" in t)
+    asked = next(i for i, t in enumerate(text) if "q_trav = PredictPixels(" in t)
     assert text[asked - 1].startswith("## 5. Traversal orders")
     assert "Predict one of them before the figure" in text[asked - 1]
     assert "plot_traversal(" in text[asked + 1] and text[asked + 2].startswith("q_trav.hold()")
-    assert "answer=serp," in text[asked] and "whole=True," in text[asked]
+    assert "answer=serp_entries," in text[asked]  # r468 P1: clicked on the grid
     assert ns.serp == ns.tile_changes["serpentine"] == 9 and ns.trav_moves["scanline"] == 15
-    assert '8: "Each row crosses the middle' in text[asked] and "{serp} = 8 + 1" in text[asked]
+    assert "{serp} cells = 8 + 1" in text[asked]
     # FIG1: the block's colours span its own values
     assert abs(ns.block_norm.vmax - ns.values.max()) < 1e-9 and ns.block_norm.vmin < ns.values.min()
     assert "same colours" not in "".join(code) and "darker = larger" in "".join(code)
