@@ -73,3 +73,18 @@ def test_explorer_ends_disabled():
     assert ex.later.disabled and not ex.earlier.disabled
     ex.sort.click()
     assert ex.select.value == 0 and ex.earlier.disabled
+
+
+def test_crossing_question_on_the_figure():
+    """r437's second lift: a prediction acted on a figure before "sort wrong here": drag the
+    marker along row 24 to the column where the two crossing triangles' depth order swaps; the
+    swap is where the sort's wrong pixels begin in that row, and the figure waits for Check."""
+    ns = lesson("12b_blending")
+    assert "answer=(swap_col, row_q + 0.5)," in _flat("q_cross") and "tolerance=2," in _flat(
+        "q_cross"
+    )
+    row = ns.wrong_order[ns.row_q]
+    assert int(np.flatnonzero(row)[0]) == ns.swap_col  # the sort goes wrong right of the swap
+    assert abs(ns.swap_col - 2) > 2  # the marker starts off the answer
+    assert "q_cross.hold()" in _flat("645e8987")
+    assert "no correct order" in _flat("sortfails") and "Column" not in _flat("sortfails")
