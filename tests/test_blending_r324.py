@@ -26,7 +26,9 @@ def test_llvmpipe_clamp_is_measured():
     blend, as the table's GL column says (§17.3.6)."""
     text = _flat("blendrules")
     assert "| clamps, the inputs too: in §1's two results every channel that leaves [0, 1] is " \
-        "stored clamped, the others within a code of §1's; a source above 1 is clamped " \
+        "stored clamped, the others within a code of §1's (llvmpipe rounds the source to 8 bits " \
+        "first: alpha 0.5 to 128/255, which gives its codes exactly; GL asks only for the " \
+        "destination's precision, §17.3.6.1); a source above 1 is clamped " \
         "before it is subtracted (the cell above) |" in text  # fmt: skip
     assert "into an `RGBA8` target (8-bit UNORM" in _flat("glorder_md")
     nsb = lesson("12b_blending")

@@ -267,6 +267,9 @@ class BlendingExplorer(Shown):
         self.earlier.on_click(lambda _: self._move(-1))
         self.later.on_click(lambda _: self._move(+1))
         self.sort.on_click(lambda _: self._sort())
+        # at the top of the list "earlier" cannot move, at the bottom "later" (review r437 S7)
+        self.select.observe(lambda change: self._ends(), "value")
+        self._ends()
         self.mode.observe(self._mode_changed, "value")
         self.white.observe(self._white_changed, "value")
         for box in (self.opacity, self.srgb, self.decode, self.alpha):
@@ -331,6 +334,10 @@ class BlendingExplorer(Shown):
             self.select.options = self._options()
             self.select.value = j
         self.update()
+
+    def _ends(self) -> None:
+        self.earlier.disabled = self.select.value == 0
+        self.later.disabled = self.select.value == len(self.order) - 1
 
     def _sort(self) -> None:
         self.order = list(self.depth_order)
