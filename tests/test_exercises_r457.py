@@ -8,28 +8,17 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from student_variants import DIFFERENT, R457
+from variant_checks import assert_first_named, assert_passes
 
-from teachraster import exercises as ex
 from teachraster.core.snapping import snap
 from teachraster.exercises import hard_case_fill as hcf
-from teachraster.exercises import tries
-
-
-def _check(name, fn):
-    tries.forget_hints(name)
-    try:
-        return ex.check(name, fn)
-    finally:
-        tries.forget_hints(name)
 
 
 @pytest.mark.parametrize("label", list(R457))
 def test_each_r457_variant_fails_and_is_named_in_its_first_words(label):
     name, fn, words, kind = R457[label]
-    report = _check(name, fn)
-    assert not report.passed
+    report = assert_first_named(name, fn, words, kind)
     assert {f.kind for f in report.failures} == {kind}, [f.kind for f in report.failures]
-    assert words in report.failures[0].explanation, report.failures[0].explanation
 
 
 def test_the_far_sliver_is_listed_last_and_float32_cannot_orient_it():
@@ -45,4 +34,4 @@ def test_the_far_sliver_is_listed_last_and_float32_cannot_orient_it():
 def test_r457s_correct_fills_pass(label):
     """T1 (left): lesson 02's integer fill with the origin added passes, as it should."""
     name, fn = DIFFERENT[label]
-    assert _check(name, fn).passed
+    assert_passes(name, fn)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import pytest
 import student_variants as sv
+from variant_checks import assert_first_named
 
 from teachraster import exercises as ex
 from teachraster.exercises import tries
@@ -15,13 +16,7 @@ from teachraster.exercises import tries
 @pytest.mark.parametrize("label", list(sv.R462))
 def test_each_slip_is_named_first(label):
     name, fn, words, kind = sv.R462[label]
-    tries.forget_hints(name)
-    report = ex.check(name, fn)
-    tries.forget_hints()
-    assert not report.passed
-    first = report.failures[0]
-    assert words in first.explanation, first.explanation
-    assert first.kind == kind, (first.kind, first.explanation)
+    first = assert_first_named(name, fn, words, kind).failures[0]
     assert "pyramid[-2] is level 2" not in first.explanation or "|λ|" not in label
 
 
