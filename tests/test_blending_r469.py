@@ -1,7 +1,8 @@
 """Review r469 (lesson 12b): lesson 11's glass pixel is its §7 (S9), the |WBOIT − truth| panel
 greys the pixels outside the overlap (S4), llvmpipe's reverse-subtract codes explained by its
-8-bit source (S5), the explorer's ends (S7), density (S8), the under blend (M1) and the
-advanced blend equations (M2)."""
+8-bit source (S5), the explorer's ends (S7), density (S8) and the advanced blend equations
+(M2). The under blend (M1) was taken out again: its factor pair (ONE_MINUS_DST_ALPHA, ONE) is
+exercise 9.3's answer (test_exercises_09.test_lesson_12_prints_no_atop)."""
 
 from __future__ import annotations
 
@@ -34,19 +35,8 @@ def test_text_items_r469():
     assert "The two sRGB boxes give four settings; the cell prints one pixel" in _flat("tryit")
     # S5: the clause in the table
     assert "llvmpipe rounds the source to 8 bits first: alpha 0.5 to 128/255" in _flat("blendrules")
-    # M1 and M2
-    assert "(ONE_MINUS_DST_ALPHA, ONE)" in _flat("peel_under_md")
+    # M2
     assert "`KHR_blend_equation_advanced`, core in OpenGL ES 3.2" in _flat("blendclamp")
-
-
-def test_under_blend_front_to_back():
-    """M1: under, front to back, equals the back-to-front blend of the peeled layers; stopped
-    after the first pass only the pixels the second pass finds are off."""
-    ns = lesson("12b_blending")
-    assert ns.under_off < 1e-12
-    assert int((ns.first_off > 1e-12).sum()) == ns.cross_passes[1]
-    printed = streams(executed("12b_blending").notebook())
-    assert f"{int((ns.first_off > 1e-12).sum())} pixels off the truth" in printed
 
 
 def test_llvmpipe_codes_from_an_8bit_source():
