@@ -730,8 +730,8 @@ def _fresh(value):
 
 def _fits(spec: Exercise, m: Mistake, r: Result) -> bool | None:
     """Does mistake ``m`` give (or fit) answer ``r``? None: it says nothing about this case."""
-    if m.fits is not None:  # a description of failures: a passing case neither fits nor not
-        if r.ok:
+    if m.fits is not None:  # a description of failures: a passing case neither fits nor not,
+        if r.ok and not m.consistent:  # unless the description speaks of passing cases too
             return None
         verdict = m.fits(r.args, r.expected, r.got)
         return None if verdict is None else bool(verdict)  # None: it says nothing here

@@ -80,6 +80,8 @@ class Mistake:
         Named on some failing cases only where it contradicts no passing answer: wherever it
         would change the answer and the student's is right, the student did not make it
         (r372 M4: an empty span matched a few cases of three wrong side tests by coincidence).
+        A description (``fits``) with ``consistent`` is asked about the passing cases too
+        (``got`` equal to ``expected`` there) and must not say False on any of them.
     """
 
     kind: str

@@ -321,6 +321,11 @@ def _shift_words(args, expected, got) -> str:
 
 
 def _shifted(args, expected, got) -> bool | None:
+    """Does a shift by one fragment give ``got``? Asked of passing cases too (``consistent``):
+    a shifted answer passes only where the verdicts are all alike, so a passed case whose
+    verdicts differ says False (r448 M1 again, ~3 % of runs: glass tested against the first
+    wall gave [T, T, T, F, F] for [T, T, F, F, F] on one drawn case, a shift there by
+    coincidence, while it passed 40 cases with mixed verdicts)."""
     if len(got) != len(expected) or len(got) < 2:
         return None  # no say: a shape, or one fragment
     shift = _shift(args, expected, got)
@@ -499,7 +504,7 @@ MORE_MISTAKES = [
 
 #: r357 H1: after every cause the checker runs, and only where it fits every failing case (a
 #: description, no answer it gives: not in :data:`DEPTH_MISTAKES`, which the capstone runs)
-SHIFTED = Mistake("shifted by one", _shift_words, fits=_shifted, only_whole=True)
+SHIFTED = Mistake("shifted by one", _shift_words, fits=_shifted, only_whole=True, consistent=True)
 
 
 def _held_depth(depths, writes, passed, k) -> float | None:
