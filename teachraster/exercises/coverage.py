@@ -438,3 +438,23 @@ def differences(case: CoverageCase, got, expected, causes: str = "") -> str:
         "the tie rule alone does not explain it. None of the typical mistakes this check "
         "knows gives your image: compare it with the rule's in the figure"
     )
+
+
+def where_point(xy: np.ndarray, p: np.ndarray) -> str:
+    """Where point ``p`` lies for triangle ``xy``, by its exact edge functions (the words of
+    every coverage explanation that places a point)."""
+    if area2(xy) == 0:
+        return "on a triangle of no area (it covers nothing)"
+    e = values_at(xy, p)
+    if (e < 0).any():
+        return f"outside edge {edge_name(int(np.argmin(e)))}"
+    on = [edge_name(k) for k in range(3) if e[k] == 0]
+    if len(on) == 2:
+        return f"exactly on a vertex, on edges {on[0]} and {on[1]}"
+    return f"exactly on edge {on[0]}" if on else "inside the triangle"
+
+
+def ties_of(*where: str) -> int:
+    """How many of the points :func:`where_point` placed lie on an edge (a vertex counts
+    twice): an example without ties is clearer, it shows the mistake, not the top-left rule."""
+    return sum(2 if "vertex" in w else "exactly on" in w for w in where)

@@ -402,25 +402,6 @@ def _ties_as_given_words(args, expected, got) -> str:
 OWN_EXAMPLE = ". For example, "
 
 
-def _where(xy: np.ndarray, p: np.ndarray) -> str:
-    """Where point ``p`` lies for triangle ``xy``, by its exact edge functions."""
-    if cov.area2(xy) == 0:
-        return "on a triangle of no area (it covers nothing)"
-    e = cov.values_at(xy, p)
-    if (e < 0).any():
-        return f"outside edge {cov.edge_name(int(np.argmin(e)))}"
-    on = [cov.edge_name(k) for k in range(3) if e[k] == 0]
-    if len(on) == 2:
-        return f"exactly on a vertex, on edges {on[0]} and {on[1]}"
-    return f"exactly on edge {on[0]}" if on else "inside the triangle"
-
-
-def _ties(*where: str) -> int:
-    """How many of the points :func:`_where` placed lie on an edge (an example without ties
-    is clearer: it shows the mistake, not the top-left rule)."""
-    return sum(2 if "vertex" in w else "exactly on" in w for w in where)
-
-
 def _first_wrong(args, expected, got):
     """(case, k, e, g): the first triangle whose image is wrong, with the student's image as
     given (None when its shape is not the expected one's)."""
@@ -482,11 +463,11 @@ def _moved_vertices(how: str):
         c = _centre(case, i, j)
         if bool(cov.covered(xy, c, vertices=how)[0]) != g[i, j]:
             return None
-        where = _where(xy, c), _where(v, c)
+        where = cov.where_point(xy, c), cov.where_point(v, c)
         vs = ", ".join(cov.point(q) for q in xy)
         return (f"v1, v2, v3 = {vs} become {', '.join(cov.point(q) for q in v)}; the centre "
                 f"{cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, but {where[1]} "
-                f"of the {how} triangle, and {_yours(g[i, j])}", _ties(*where))  # fmt: skip
+                f"of the {how} triangle, and {_yours(g[i, j])}", cov.ties_of(*where))  # fmt: skip
 
     return describe
 
@@ -497,12 +478,12 @@ def _mirrored_pixel(case, xy, e, g, i, j, other: tuple[int, int], what: str):
     if not (0 <= oi < e.shape[0] and 0 <= oj < e.shape[1]) or e[oi, oj] != g[i, j]:
         return None
     c, d = _centre(case, i, j), _centre(case, oi, oj)
-    where = _where(xy, c), _where(xy, d)
+    where = cov.where_point(xy, c), cov.where_point(xy, d)
     state = "covered" if e[i, j] else "not covered"
     other_state = "covered" if e[oi, oj] else "not covered"
     return (f"pixel (row {i}, col {j}), centre {cov.point(c)}, lies {where[0]}: it is {state}; "
             f"your image's [{i}, {j}] holds {what} (row {oi}, col {oj}, centre {cov.point(d)}, "
-            f"{where[1]}: {other_state})", _ties(*where))  # fmt: skip
+            f"{where[1]}: {other_state})", cov.ties_of(*where))  # fmt: skip
 
 
 def _transposed_pixel(case, xy, e, g, i, j):
@@ -726,9 +707,9 @@ def _box_side_pixel(case, xy, e, g, i, j):
     if side is None:
         return None
     c = _centre(case, i, j)
-    where = _where(xy, c)
+    where = cov.where_point(xy, c)
     return (f"the box's {side}; pixel (row {i}, col {j}), centre {cov.point(c)}, lies {where}: "
-            "the rule covers it, your image leaves it uncovered", _ties(where))  # fmt: skip
+            "the rule covers it, your image leaves it uncovered", cov.ties_of(where))  # fmt: skip
 
 
 #: r352 1: a box clamped at its upper end only passed (the one case out at the top covered
@@ -750,13 +731,13 @@ def _wrapped_pixel(case, xy, e, g, i, j):
     s, c = _centre(case, si, sj), _centre(case, i, j)
     if bool(cov.covered(xy, s)[0]) != g[i, j]:
         return None
-    where = _where(xy, s), _where(xy, c)
+    where = cov.where_point(xy, s), cov.where_point(xy, c)
     state = "covered" if g[i, j] else "not covered"
     return (f"your image's [{i}, {j}] holds the verdict of the box's row {si}, column {sj} "
             f"(centre {cov.point(s)}, {where[0]}: {state}), since [{si}, {sj}] is [{i}, {j}] "
             f"in numpy; pixel [{i}, {j}] itself, centre {cov.point(c)}, lies {where[1]}: "
             f"{'covered' if e[i, j] else 'not covered'}",
-            _ties(*where))  # fmt: skip
+            cov.ties_of(*where))  # fmt: skip
 
 
 def _box_raised(args, error: str) -> str:
@@ -1321,10 +1302,10 @@ def _point_instead(xy, e, g, i, j, c, s, verb: str):
     if bool(cov.covered(xy, s)[0]) != g[i, j]:
         return None
     rule = "covers it" if e[i, j] else "leaves it uncovered"
-    where = _where(xy, c), _where(xy, s)
+    where = cov.where_point(xy, c), cov.where_point(xy, s)
     return (f"the centre {cov.point(c)} of pixel (row {i}, col {j}) lies {where[0]}, so the "
             f"rule {rule}; you {verb} {cov.point(s)}, which lies {where[1]}, and "
-            f"{_yours(g[i, j])}", _ties(*where))  # fmt: skip
+            f"{_yours(g[i, j])}", cov.ties_of(*where))  # fmt: skip
 
 
 def rule_swapped(case: CoverageCase) -> np.ndarray:

@@ -71,20 +71,10 @@ def describe_pixel_centre(case, xy, e, g, i, j):
         return None
     rule = "covers it" if e[i, j] else "leaves it uncovered"
     yours = "your function covered it" if g[i, j] else "your function left it uncovered"
-    where = _place(xy, p), _place(xy, c)
-    ties = sum(2 if "vertex" in w else "exactly" in w for w in where)
+    where = cov.where_point(xy, p), cov.where_point(xy, c)
+    ties = cov.ties_of(*where)
     return (f"the point p = {cov.point(p)} lies {where[0]}, so the rule {rule}; its pixel's "
             f"centre {cov.point(c)} lies {where[1]}, and {yours}", ties)  # fmt: skip
-
-
-def _place(xy, p) -> str:
-    e = cov.values_at(xy, p)
-    if (e < 0).any():
-        return f"outside edge {cov.edge_name(int(np.argmin(e)))}"
-    on = [cov.edge_name(k) for k in range(3) if e[k] == 0]
-    if len(on) == 2:
-        return f"exactly on a vertex, on edges {on[0]} and {on[1]}"
-    return f"exactly on edge {on[0]}" if on else "inside the triangle"
 
 
 # -- the three edge tests written with a slip --------------------------------------------------
