@@ -8254,6 +8254,10 @@ R471 = {
     "sample span, the offsets added in x and y": (
         "sample_span", _r471_with(ox=lambda sx, sy: -sx, oy=lambda sx, sy: -sy),
         "you moved the sample the wrong way in x and y", "offset added in x and y"),
+    "sample span, 2.1's span of the triangle moved the wrong way": (
+        "sample_span", lambda xy, row, sample: span_exact(
+            np.asarray(xy, dtype=float) - (0.5 - float(sample[0]), 0.5 - float(sample[1])), row),
+        "you moved it the wrong way", "moved the wrong way"),
     "sample span, the split decided at row + ½": (
         "sample_span", _r471_with(split_y=_HALF),
         "but chose the short edge by the centre line row + ½", "split at the centre line"),

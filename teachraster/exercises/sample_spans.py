@@ -226,6 +226,9 @@ def _variants(xy, row: int, sample) -> dict[str, frozenset | None]:
         "offset added in x": columns_at(xy, row, -sx, sy),
         "line y = row − sy": columns_at(xy, row, sx, -sy),
         "offset added in x and y": columns_at(xy, row, -sx, -sy),
+        # 2.1's span of the triangle moved by (sx − ½, sy − ½), the wrong way: the sample
+        # mirrored through the centre, (1 − sx, 1 − sy) (the 4× pattern's opposite sample)
+        "moved the wrong way": columns_at(xy, row, 1 - sx, 1 - sy),
         "split at the centre line": _split_at_centre(xy, row, sample),
         "rows at the centre line": _rows_at_centre(xy, row, sample),
         "ties reversed at the sample": _tie_rounded(xy, row, sample, floor1, floor1),
@@ -269,8 +272,8 @@ MISTAKES = {
     ),
     "offset added in x": lambda args, expected, got: (
         f"your columns are shifted right: you added sx to the crossings where it comes off "
-        f"them. Column col's sample lies at x = col + sx ({_sample_words(args)}), so it lies "
-        "at or right of x_l when col ≥ x_l − sx, not x_l + sx"
+        f"them. Column col's sample lies at x = col + sx (here sx = {num(args[2][0])}), so it "
+        "lies at or right of x_l when col ≥ x_l − sx, not x_l + sx"
     ),
     "line y = row − sy": lambda args, expected, got: (
         f"you crossed the edges with the line y = row − sy, above the pixels: y is down, and "
@@ -281,6 +284,13 @@ MISTAKES = {
         "from the pixel's top-left corner, y down, the sample lies at (col + sx, row + sy), "
         "so its line is y = row + sy and col is covered when col + sx lies between the "
         "crossings (col ≥ x_l − sx, not x_l + sx)"
+    ),
+    "moved the wrong way": lambda args, expected, got: (
+        f"yours is the span of the sample mirrored through the pixel's centre, at (col + 1 − "
+        f"sx, row + 1 − sy) for {_sample_words(args)}: if you moved the triangle so that the "
+        "sample falls on the centre, and took 2.1's span of it, you moved it the wrong way. A "
+        "point p lies in the triangle exactly when p + d lies in the triangle moved by d: "
+        "which d takes the sample (col + sx, row + sy) to the centre (col + ½, row + ½)?"
     ),
     "split at the centre line": lambda args, expected, got: (
         f"you crossed the edges on the sample line y = row + sy = "
@@ -356,6 +366,15 @@ def _columns_words(cols) -> str:
 
 
 def _constant(value) -> str:
+    """A span that never changes, in the student's terms (as 2.1's: not ``frozenset()``)."""
+    if not value and not getattr(value, "wide", False):
+        pair = getattr(value, "pair", None)
+        shown = f"{pair} " if pair else ""
+        return (
+            f"your function returns the same empty span {shown}(stop ≤ first: no column) on "
+            "every case, whatever its arguments: a placeholder (such as `return 0, 0`) left "
+            "in, or a `return` reached too early?"
+        )
     return (
         f"your function returns {_columns_words(value)} on every case, whatever its arguments: "
         "a placeholder left in, or a `return` reached too early?"
@@ -401,6 +420,11 @@ def draw_sample_span(ax, case, got):
     if cross is not None:
         artists += ax.plot([float(c) for c in cross], [y, y], "|", color="#ff9f1c", ms=14,
                            mew=3, label="x_l, x_r", zorder=3)  # fmt: skip
+        # a sample exactly on a crossing, ringed above the tick (as 2.1's centres on one)
+        ties = sorted({float(x) for x in cross if (x - Fraction(float(sx))).denominator == 1})
+        if ties:
+            artists += ax.plot(ties, [y] * len(ties), "o", mfc="none", mec="black", ms=9,
+                               mew=1.2, zorder=5, label="sample on a crossing")  # fmt: skip
     for name, colour in colours.items():
         artists.append(ax.add_patch(Rectangle((0, 0), 0, 0, color=colour, label=name)))
     if got is None:
@@ -409,9 +433,10 @@ def draw_sample_span(ax, case, got):
     ax.set_xlim(lo, hi)
     top = max(min(float(xy[:, 1].min()), y) - 1, row - 6)
     bottom = min(max(float(xy[:, 1].max()), y) + 1, row + 8)
-    if bottom - top < 6:
+    tall = max(6.0, (hi - lo) / 3)  # a flat triangle is no strip (as 2.1's figure, r372 F1)
+    if bottom - top < tall:
         middle = (top + bottom) / 2
-        top, bottom = middle - 3, middle + 3
+        top, bottom = middle - tall / 2, middle + tall / 2
     ax.set_ylim(bottom, top)
     ax.set_aspect("equal")
     ax.set_xlabel(f"x (px); row {row}: its samples (·) at x = col + {num(sx)} on y = "
