@@ -8175,6 +8175,34 @@ def _r471_with(
     return sample_span
 
 
+def _r471_float(dtype=np.float64, order="multiply"):
+    """Lesson 01's float crossing at the sample line (``order``: multiply or divide first),
+    then ⌈x − sx⌉: right in float64 multiplying first on these cases (|x|, |y| < 2·10^5)."""
+
+    def sample_span(xy, row, sample):
+        v = sorted(((dtype(x), dtype(y)) for x, y in xy), key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        sx, sy = dtype(sample[0]), dtype(sample[1])
+        y = dtype(row) + sy
+        side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        if side == 0 or not y1 <= y <= y3 or y2 == y3 == y:
+            return 0, 0
+        if y1 == y2 == y:
+            lo, hi = sorted((x1, x2))
+        else:
+
+            def at(a, b):
+                if order == "multiply":
+                    return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+                return a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0])
+
+            short = at(v[0], v[1]) if y < y2 else at(v[1], v[2])
+            lo, hi = sorted((at(v[0], v[2]), short))
+        return math.ceil(lo - sx), math.ceil(hi - sx)
+
+    return sample_span
+
+
 def _r471_int(xy, row, sample):
     """Integers in 1/256 px: the sample line 256·row + 256·sy, the ceiling by floor division."""
     v = sorted(((round(256 * float(x)), round(256 * float(y))) for x, y in xy), key=lambda p: p[1])
@@ -8228,6 +8256,7 @@ DIFFERENT.update({
     "sample span in 1/256-px integers (r471)": ("sample_span", _r471_int),
     "sample span by testing every column's sample (r471)": ("sample_span", _r471_by_testing),
     "sample span as 2.1's span of the moved triangle (r471)": ("sample_span", _r471_moved),
+    "sample span in float64, multiplied first (r471)": ("sample_span", _r471_float()),
 })  # fmt: skip
 R471 = {
     "sample span, 2.1's span unchanged": (
@@ -8258,6 +8287,18 @@ R471 = {
         "sample_span", lambda xy, row, sample: span_exact(
             np.asarray(xy, dtype=float) - (0.5 - float(sample[0]), 0.5 - float(sample[1])), row),
         "you moved it the wrong way", "moved the wrong way"),
+    "sample span, sx left out (⌈x_l⌉)": (
+        "sample_span", _r471_with(ox=lambda sx, sy: 0),
+        "as if the sample lay at x = col, the pixel's left side", "sx left out"),
+    "sample span, the line y = row": (
+        "sample_span", _r471_with(oy=lambda sx, sy: 0),
+        "you crossed the edges with the line y = row, the pixels' top", "sy left out"),
+    "sample span, divided first in float64": (
+        "sample_span", _r471_float(order="divide"),
+        "lies exactly on the sample of column", "tie lands off"),
+    "sample span in float32": (
+        "sample_span", _r471_float(np.float32),
+        "a crossing computed in float32 can move past a sample", "float32"),
     "sample span, the split decided at row + ½": (
         "sample_span", _r471_with(split_y=_HALF),
         "but chose the short edge by the centre line row + ½", "split at the centre line"),

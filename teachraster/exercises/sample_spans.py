@@ -33,7 +33,7 @@ from ..core.fill import rasterize
 from ..study.exact_spans import span_fill_int_dda
 from .cases import drawn_coverage, drawn_rng, winding
 from .drawing import note_beside
-from .exercise import Exercise, PackageAnswer, variant_mistakes
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
 from .spans import as_span, crossings, exact_columns, same_span, span_cases
 
@@ -222,6 +222,8 @@ def _variants(xy, row: int, sample) -> dict[str, frozenset | None]:
         "½ kept in x": columns_at(xy, row, HALF, sy),
         "½ kept in y": columns_at(xy, row, sx, HALF),
         "sx and sy swapped": columns_at(xy, row, sy, sx),
+        "sx left out": columns_at(xy, row, 0, sy),
+        "sy left out": columns_at(xy, row, sx, 0),
         "offsets from the centre": columns_at(xy, row, HALF + sx, HALF + sy),
         "offset added in x": columns_at(xy, row, -sx, sy),
         "line y = row − sy": columns_at(xy, row, sx, -sy),
@@ -263,6 +265,16 @@ MISTAKES = {
         f"you swapped the sample's two offsets: {_sample_words(args)} is (x, y), sx across "
         "from the pixel's left side and sy down from its top, so the line is y = row + sy and "
         "the samples lie at x = col + sx"
+    ),
+    "sx left out": lambda args, expected, got: (
+        f"you rounded the crossings to columns as if the sample lay at x = col, the pixel's "
+        f"left side: this sample, {_sample_words(args)}, lies sx to the right of it, at "
+        "x = col + sx"
+    ),
+    "sy left out": lambda args, expected, got: (
+        f"you crossed the edges with the line y = row, the pixels' top: this sample, "
+        f"{_sample_words(args)}, lies sy below it, on y = row + sy = "
+        f"{num(args[1] + float(args[2][1]))}"
     ),
     "offsets from the centre": lambda args, expected, got: (
         f"you measured the offsets from the pixel's centre, putting the sample at (col + ½ + "
@@ -326,6 +338,78 @@ HINTS = (
     (": a row has covered samples when y1 ≤ row + sy < y3 (here", ": which rows does the "
      "sample line meet? (here"),
 )  # fmt: skip
+
+
+def _moved_ends(args, got) -> list[tuple[str, Fraction, int]] | None:
+    """(x_l or x_r, its exact crossing, the student's end) of each end one column off the
+    rule's, on a row with two slanted crossings (None: another row, or an end further off)."""
+    xy, row, sample = args
+    sx, sy = _fractions(sample)
+    pair = getattr(got, "pair", None)
+    cross = crossings(xy, row + sy)
+    if pair is None or cross is None or not _inside(xy, row + sy):
+        return None
+    if any(p[1] == row + sy for p in ((Fraction(float(a)), Fraction(float(b))) for a, b in xy)):
+        return None  # a vertex on the sample line: its ends are no computed crossing
+    out = []
+    for name, end, x in zip(("x_l", "x_r"), pair, cross):
+        right = math.ceil(x - sx)
+        if abs(end - right) > 1:
+            return None
+        if end != right:
+            out.append((name, x, end))
+    return out or None
+
+
+def _tie_lands_off(args, expected, got) -> bool | None:
+    """Every moved end's exact crossing lies exactly on a sample (col + sx): a float crossing
+    landed a hair off it."""
+    moved = _moved_ends(args, got)
+    if moved is None:
+        return None
+    sx = _fractions(args[2])[0]
+    return all((x - sx).denominator == 1 for _, x, _ in moved)
+
+
+def _tie_words(args, expected, got) -> str:
+    sx = _fractions(args[2])[0]
+    name, x, _ = next(m for m in _moved_ends(args, got) or () if (m[1] - sx).denominator == 1)
+    return (
+        f"{name} = {num(float(x))} lies exactly on the sample of column {int(x - sx)} "
+        f"({int(x - sx)} + sx), and your {name} came out a hair off it, so the tie went the other "
+        "way: a crossing computed in floats (divided first, or through a slope) rounds; compute "
+        "it exactly, as in 2.1 (integers of 1/256 px, or fractions.Fraction)"
+    )
+
+
+def _float32_fits(args, expected, got) -> bool | None:
+    """Far out (10^4 px and more), each moved end's crossing lies within a few float32 steps
+    of the sample it moved past, and on none (a tie is :func:`_tie_lands_off`'s)."""
+    xy = args[0]
+    far = float(np.abs(xy).max())
+    moved = _moved_ends(args, got)
+    if moved is None or far < 1e4:
+        return None
+    sx = _fractions(args[2])[0]
+    near = 4 * float(np.spacing(np.float32(far)))
+    gaps = [abs(float(x - sx - round(x - sx))) for _, x, _ in moved]
+    return all(0 < g <= near for g in gaps)
+
+
+def _float32_words(args, expected, got) -> str:
+    far = float(np.abs(args[0]).max())
+    return (
+        f": {num(far)} px from the origin float32 numbers are "
+        f"{num(float(np.spacing(np.float32(far))))} px apart and cannot hold the vertices' "
+        "1/256-px grid, so a crossing computed in float32 can move past a sample. Did you "
+        "compute in float32? Compute exactly (or in float64)"
+    )
+
+
+SYMPTOMS = (
+    Mistake("float32", _float32_words, fits=_float32_fits, symptom=True, only_whole=True),
+    Mistake("tie lands off", _tie_words, fits=_tie_lands_off, symptom=True, only_whole=True),
+)
 
 
 def explain_sample_span(args, expected: frozenset, got: frozenset) -> str:
@@ -447,7 +531,7 @@ def draw_sample_span(ax, case, got):
 
 SAMPLE_SPAN = Exercise(
     "sample_span", sample_span_cases, as_sample_span, same_span, explain_sample_span, _rule,
-    variant_mistakes(_variants, MISTAKES),
+    variant_mistakes(_variants, MISTAKES, SYMPTOMS),
     answers=(
         PackageAnswer(rasterize),
         PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
