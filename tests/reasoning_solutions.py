@@ -318,8 +318,33 @@ def edge_bits(range_bits, across, sub_bits):
     return tuple(out)
 
 
+def sample_span(xy, row, sample):
+    # 2.2 (r471): the sample at (col + sx, row + sy), offsets from the pixel's top-left
+    # corner; the line y = row + sy, the columns ceil(x - sx); the top-left rule unchanged
+    sx, sy = (round(256 * float(s)) for s in sample)
+    v = sorted(((round(256 * float(x)), round(256 * float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = 256 * int(row) + sy
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not y1 <= y <= y3 or y2 == y3 == y:
+        return 0, 0
+    if y1 == y2 == y:
+        ends = [(min(x1, x2), 1), (max(x1, x2), 1)]
+    else:
+
+        def crossing(a, b):
+            (ax, ay), (bx, by) = a, b
+            return ax * (by - ay) + (y - ay) * (bx - ax), by - ay
+
+        x_long = crossing(v[0], v[2])
+        x_short = crossing(v[0], v[1]) if y < y2 else crossing(v[1], v[2])
+        ends = [x_long, x_short] if side > 0 else [x_short, x_long]
+    return tuple(-((sx * den - num) // (256 * den)) for num, den in ends)
+
+
 CORRECT = {
     "span": span,
+    "sample_span": sample_span,
     "perspective_weights": perspective_weights,
     "depth_passes": depth_passes,
     "clip_near_colour": clip_near_colour,

@@ -8133,6 +8133,192 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R454.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R454.items()})
 
 
+# -- r471 (r454 T1): exercise 2.2, sample_span(xy, row, sample) ------------------------------
+def _r471_with(
+    ox=lambda sx, sy: sx,
+    oy=lambda sx, sy: sy,
+    first=math.ceil,
+    stop=math.ceil,
+    split_y=None,
+    rows_y=None,
+):
+    """Exact crossings of the line y = row + oy (the split by the middle vertex at
+    ``split_y``, the rows by ``rows_y``: the sample line unless given), then the columns
+    first(x_l − ox) <= col < stop(x_r − ox); right with the defaults."""
+
+    def sample_span(xy, row, sample):
+        sx, sy = Fraction(float(sample[0])), Fraction(float(sample[1]))
+        dx, dy = ox(sx, sy), oy(sx, sy)
+        v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        y = row + dy
+        ry = y if rows_y is None else row + rows_y
+        if edge_function(*v) == 0 or not y1 <= ry < y3:
+            return 0, 0
+        if y1 == y2 == y:
+            lo, hi = sorted((x1, x2))
+        elif y2 == y3 == y:
+            return 0, 0
+        else:
+
+            def at(a, b):
+                return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+
+            split = y if split_y is None else row + split_y
+            if y1 == y2 or y2 == y3:
+                short = at(v[1], v[2]) if y1 == y2 else at(v[0], v[1])
+            else:
+                short = at(v[0], v[1]) if split < y2 else at(v[1], v[2])
+            lo, hi = sorted((at(v[0], v[2]), short))
+        return first(lo - dx), stop(hi - dx)
+
+    return sample_span
+
+
+def _r471_float(dtype=np.float64, order="multiply"):
+    """Lesson 01's float crossing at the sample line (``order``: multiply or divide first),
+    then ⌈x − sx⌉: right in float64 multiplying first on these cases (|x|, |y| < 2·10^5)."""
+
+    def sample_span(xy, row, sample):
+        v = sorted(((dtype(x), dtype(y)) for x, y in xy), key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        sx, sy = dtype(sample[0]), dtype(sample[1])
+        y = dtype(row) + sy
+        side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+        if side == 0 or not y1 <= y <= y3 or y2 == y3 == y:
+            return 0, 0
+        if y1 == y2 == y:
+            lo, hi = sorted((x1, x2))
+        else:
+
+            def at(a, b):
+                if order == "multiply":
+                    return a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+                return a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0])
+
+            short = at(v[0], v[1]) if y < y2 else at(v[1], v[2])
+            lo, hi = sorted((at(v[0], v[2]), short))
+        return math.ceil(lo - sx), math.ceil(hi - sx)
+
+    return sample_span
+
+
+def _r471_int(xy, row, sample):
+    """Integers in 1/256 px: the sample line 256·row + 256·sy, the ceiling by floor division."""
+    v = sorted(((round(256 * float(x)), round(256 * float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    sx, sy = round(256 * float(sample[0])), round(256 * float(sample[1]))
+    y = 256 * row + sy
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not y1 <= y < y3:
+        return 0, 0
+    if y1 == y2 == y:
+        ends = [(min(x1, x2), 1), (max(x1, x2), 1)]
+    else:
+
+        def crossing(a, b):
+            (ax, ay), (bx, by) = a, b
+            return ax * (by - ay) + (y - ay) * (bx - ax), by - ay
+
+        long_x = crossing(v[0], v[2])
+        short_x = crossing(v[0], v[1]) if y < y2 else crossing(v[1], v[2])
+        ends = [long_x, short_x] if side > 0 else [short_x, long_x]
+    return tuple(-((sx * den - num) // (256 * den)) for num, den in ends)
+
+
+def _r471_by_testing(xy, row, sample):
+    """Every column of the bounding box, its sample point tested with exact edge functions and
+    the top-left rule (no crossing computed)."""
+    v = [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
+    if edge_function(*v) == 0:
+        return 0, 0
+    if edge_function(*v) < 0:
+        v = [v[0], v[2], v[1]]
+    sx, sy = Fraction(float(sample[0])), Fraction(float(sample[1]))
+    cols = []
+    for col in range(math.floor(min(x for x, _ in v)) - 2, math.ceil(max(x for x, _ in v)) + 2):
+        p = (col + sx, row + sy)
+        if all(edge_function(a, b, p) > 0 or (edge_function(a, b, p) == 0 and _owns(a, b))
+               for a, b in zip(v, v[1:] + v[:1])):  # fmt: skip
+            cols.append(col)
+    return (cols[0], cols[-1] + 1) if cols else (0, 0)
+
+
+def _r471_moved(xy, row, sample):
+    """2.1's exact span of the triangle moved by (½ − sx, ½ − sy): the sample onto the centre."""
+    d = np.array([0.5 - float(sample[0]), 0.5 - float(sample[1])])
+    return span_exact(np.asarray(xy, dtype=float) + d, row)
+
+
+_HALF = Fraction(1, 2)
+DIFFERENT.update({
+    "sample span in Fractions (r471)": ("sample_span", _r471_with()),
+    "sample span in 1/256-px integers (r471)": ("sample_span", _r471_int),
+    "sample span by testing every column's sample (r471)": ("sample_span", _r471_by_testing),
+    "sample span as 2.1's span of the moved triangle (r471)": ("sample_span", _r471_moved),
+    "sample span in float64, multiplied first (r471)": ("sample_span", _r471_float()),
+})  # fmt: skip
+R471 = {
+    "sample span, 2.1's span unchanged": (
+        "sample_span", lambda xy, row, sample: span_exact(xy, row),
+        "yours is 2.1's span, the centres' columns", "2.1's span"),
+    "sample span, ½ kept in x": (
+        "sample_span", _r471_with(ox=lambda sx, sy: _HALF),
+        "rounded the crossings to columns as if they still lay at x = col + ½", "½ kept in x"),
+    "sample span, ½ kept in y": (
+        "sample_span", _r471_with(oy=lambda sx, sy: _HALF),
+        "crossed the edges with 2.1's centre line y = row + ½", "½ kept in y"),
+    "sample span, sx and sy swapped": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sy, oy=lambda sx, sy: sx),
+        "you swapped the sample's two offsets", "sx and sy swapped"),
+    "sample span, offsets from the pixel centre": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sx + _HALF, oy=lambda sx, sy: sy + _HALF),
+        "you measured the offsets from the pixel's centre", "offsets from the centre"),
+    "sample span, sx added to the crossings": (
+        "sample_span", _r471_with(ox=lambda sx, sy: -sx),
+        "you added sx to the crossings where it comes off them", "offset added in x"),
+    "sample span, the line y = row − sy": (
+        "sample_span", _r471_with(oy=lambda sx, sy: -sy),
+        "you crossed the edges with the line y = row − sy", "line y = row − sy"),
+    "sample span, the offsets added in x and y": (
+        "sample_span", _r471_with(ox=lambda sx, sy: -sx, oy=lambda sx, sy: -sy),
+        "you moved the sample the wrong way in x and y", "offset added in x and y"),
+    "sample span, 2.1's span of the triangle moved the wrong way": (
+        "sample_span", lambda xy, row, sample: span_exact(
+            np.asarray(xy, dtype=float) - (0.5 - float(sample[0]), 0.5 - float(sample[1])), row),
+        "you moved it the wrong way", "moved the wrong way"),
+    "sample span, sx left out (⌈x_l⌉)": (
+        "sample_span", _r471_with(ox=lambda sx, sy: 0),
+        "as if the sample lay at x = col, the pixel's left side", "sx left out"),
+    "sample span, the line y = row": (
+        "sample_span", _r471_with(oy=lambda sx, sy: 0),
+        "you crossed the edges with the line y = row, the pixels' top", "sy left out"),
+    "sample span, divided first in float64": (
+        "sample_span", _r471_float(order="divide"),
+        "lies exactly on the sample of column", "tie lands off"),
+    "sample span in float32": (
+        "sample_span", _r471_float(np.float32),
+        "a crossing computed in float32 can move past a sample", "float32"),
+    "sample span, the split decided at row + ½": (
+        "sample_span", _r471_with(split_y=_HALF),
+        "but chose the short edge by the centre line row + ½", "split at the centre line"),
+    "sample span, the rows decided at row + ½": (
+        "sample_span", _r471_with(rows_y=_HALF),
+        "by its centre line row + ½, but its samples lie on y = row + sy", "rows at the centre line"),
+    "sample span, ties reversed at the sample": (
+        "sample_span", _r471_with(first=lambda t: math.floor(t) + 1, stop=lambda t: math.floor(t) + 1),
+        "your ties go the wrong way round at the sample", "ties reversed at the sample"),
+    "sample span, the right edge owns its samples": (
+        "sample_span", _r471_with(stop=lambda t: math.floor(t) + 1),
+        "you covered the sample that lies exactly on the right edge", "right edge owns the sample"),
+    "sample span, the left edge loses its samples": (
+        "sample_span", _r471_with(first=lambda t: math.floor(t) + 1),
+        "you left out the sample that lies exactly on the left edge", "left edge loses the sample"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R471.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R471.items()})
+
+
 # -- r425 (exercise 5, a fresh reader): 5.2b graded to 1e-8 either way (a refined search lands
 # on float32's rounded maximum, over the limit), z_min on a crossing, misnamed and half-named
 # slips of 5.2b, 5.2 and 5.4.

@@ -4,7 +4,7 @@
 Each is an :class:`~.exercise.Exercise` (its cases, its answer's reading, its table of
 typical mistakes), defined in its own module:
 
-- ``span`` (lesson 01, :mod:`.spans`), ``perspective_weights`` (04,
+- ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
   ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
   reasoning in place of ``split_point``,
@@ -47,6 +47,7 @@ from . import pixel_sampler as ps
 from . import quad_difference as qd
 from . import reverse_z as rz
 from . import reverse_z_worst as rzw
+from . import sample_spans as ss
 from . import spans
 from . import zbuffer_pixel as zb
 from .exercise import Exercise
@@ -54,6 +55,7 @@ from .exercise import Exercise
 #: The exercises in course order, and how to build each (for :func:`.checks._registry`).
 EXERCISES: dict[str, Callable[[], Exercise]] = {
     "span": lambda: spans.SPAN,
+    "sample_span": lambda: ss.SAMPLE_SPAN,  # 2.2: the span at a sample (r454 T1)
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
     "depth_passes": lambda: zb.DEPTH_PASSES,
     "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
