@@ -11039,7 +11039,7 @@ R470 = {
     "breaking case: 'precision' with a vertex off the grid onto a tie": (
         "breaking_case", _bc470("precision", ([[996.5, 1000.5], [1004.5, 1000.4999],
                                                [1000.25, 1006.0]], 12, 12, (996, 996))),
-        "'precision' changes nothing there (the fill needs 'tie rule' there) (your vertices are "
+        "'precision' changes nothing there (the fill needs 'tie rule' there; your vertices are "
         "off the 1/256-px grid", "not needed"),
     "breaking case: snap_flips_winding copied for 'orient after snapping'": (
         "breaking_case", _bc470("orient after snapping",
@@ -11084,6 +11084,10 @@ R470 = {
         "breaking_case", _bc470("snap", ([[2.5, 4.5 - 1 / 256], [10.5, 4.5 + 1.6 / 256],
                                           [6.0, 1.0]], 100, 8, (0, 0))),
         "your window is 100 × 8 pixels: the task allows at most 64 a side", "out of range"),
+    "breaking case: 'snap' at 2²¹ px, past 10.2's range": (
+        "breaking_case", _bc470("snap", (np.array([[2.5, 4.5 - 1 / 256], [10.5, 4.5 + 1.6 / 256],
+                                                   [6.0, 1.0]]) + 2**21, 12, 8, (2**21, 2**21))),
+        "your case reaches 2097164 px from the origin: the task's range is 2^20 px", "out of range"),
     "breaking case: width 0": (
         "breaking_case", _bc470("snap", (_BC470_TIE[0], 0, 8, (0, 0))),
         "width must be positive, got 0", "type"),

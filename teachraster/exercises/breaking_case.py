@@ -248,12 +248,12 @@ def _unneeded(repair: str, case) -> tuple[str, str]:
         return "another repair's case", (f"{head}changes nothing there; your case is one for "
                                          f"{_quoted(cases_for)}{_off_grid(case[0])}")  # fmt: skip
     needed = [r for r in REPAIRS if _diff_pixel(case, _others(r)) is not None]
-    which = (
-        f" (the fill needs {_quoted(needed)} there)"
-        if needed
-        else (" (it needs two repairs together, each of which the others can stand in for)")
-    )
-    return "not needed", f"{head}changes nothing there{which}{_off_grid(case[0])}"
+    off = _off_grid(case[0])
+    if needed:
+        off = f" (the fill needs {_quoted(needed)} there{'; ' + off[2:-1] if off else ''})"
+    else:
+        off = " (it needs two repairs together, each of which the others can stand in for)" + off
+    return "not needed", f"{head}changes nothing there{off}"
 
 
 def _also_words(repair: str, case) -> str:
