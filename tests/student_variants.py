@@ -11022,13 +11022,34 @@ R470 = {
         "for every repair", "constant"),
     "breaking case: a tie case given for 'snap' (repairs confused)": (
         "breaking_case", _bc470("snap", _BC470_TIE),
-        "'snap' changes nothing there; your case is one for 'tie rule'", "another repair's case"),
+        "'snap' changes nothing there (your vertices are on the 1/256-px grid already: snapping "
+        "moves none); your case is one for 'tie rule'", "another repair's case"),
     "breaking case: the cases of 'snap' and 'orient after snapping' swapped": (
         "breaking_case", lambda r: _rs.breaking_case(_BC470_SWAP.get(r, r)),
         "your case also needs 'orient after snapping'", "also needs"),
     "breaking case: a triangle the naive fill already gets right": (
-        "breaking_case", _bc470("snap", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
+        "breaking_case", _bc470("precision", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
         "the naive fill itself is right on your case", "naive right"),
+    "breaking case: for 'snap', a triangle on the grid": (
+        "breaking_case", _bc470("snap", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
+        "your vertices are on the 1/256-px grid already: snapping moves none", "on the grid"),
+    "breaking case: for 'orient after snapping', a triangle snapping does not flip": (
+        "breaking_case", _bc470("orient after snapping",
+                                ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
+        "snapping keeps your triangle's winding (E(v1, v2, v3) is 62 px² raw, 62 px² snapped)",
+        "no flip"),
+    "breaking case: a flipped sliver that covers no centre": (
+        "breaking_case", _bc470("orient after snapping", (
+            [[2, 2.5 - 1 / 256 + 0.0019], [3, 2.5 - 1 / 256 - 0.0019], [11, 2.5 - 1 / 256 - 0.030]],
+            12, 4, (0, 0))),
+        "but the snapped triangle covers no centre of your window", "covers nothing"),
+    "breaking case: for 'tie rule', a triangle with no centre on an edge": (
+        "breaking_case", _bc470("tie rule", ([[1.25, 1.125], [4.375, 2.25], [2.125, 4.5]], 6, 6,
+                                             (0, 0))),
+        "no pixel centre of your window lies exactly on an edge", "no tie"),
+    "breaking case: for 'tie rule', centres on a left edge only": (
+        "breaking_case", _bc470("tie rule", ([[1.5, 1.0], [1.5, 4.0], [4.2, 2.6]], 6, 6, (0, 0))),
+        "lie on top or left edges, which the top-left rule covers as E ≥ 0 does", "top-left ties"),
     "breaking case: a tie case off the grid, needing 'snap' too": (
         "breaking_case", _bc470("tie rule", ([[4.501, 1.0], [4.501, 4.0], [1.5, 2.5]], 6, 6, (0, 0))),
         "your case also needs 'snap' (your vertices are off the 1/256-px grid: v1 (4.501, 1) "

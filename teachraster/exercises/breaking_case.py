@@ -25,7 +25,7 @@ from functools import cache
 
 import numpy as np
 
-from ..core.edges import edge_function
+from ..core.edges import edge_function, is_top_left
 from ..core.snapping import snap
 from ..core.validate import as_finite, as_int, as_size
 from ..study.hardcases import naive_coverage
@@ -240,13 +240,17 @@ def _unneeded(repair: str, case) -> tuple[str, str]:
                       f"({c + 0.5:g}, {r + 0.5:g})); the window must hold it (its origin, "
                       "width and height)")  # fmt: skip
     head = f"with every other repair done the naive fill is right on your case: '{repair}' "
+    note = _why_unchanged(repair, case)
+    cases_for = [r for r in _others(repair) if _is_case_for(case, r)]
+    if cases_for:
+        why = f" ({note[1]})" if note else _off_grid(case[0])
+        return "another repair's case", (f"{head}changes nothing there{why}; your case is one "
+                                         f"for {_quoted(cases_for)}")  # fmt: skip
+    if note:
+        return note
     if _diff_pixel(case, ()) is None:
         return "naive right", ("the naive fill itself is right on your case (every pixel of "
                                "the window as rasterize gives it): there is nothing to repair")  # fmt: skip
-    cases_for = [r for r in _others(repair) if _is_case_for(case, r)]
-    if cases_for:
-        return "another repair's case", (f"{head}changes nothing there; your case is one for "
-                                         f"{_quoted(cases_for)}{_off_grid(case[0])}")  # fmt: skip
     needed = [r for r in REPAIRS if _diff_pixel(case, _others(r)) is not None]
     off = _off_grid(case[0])
     if needed:
@@ -254,6 +258,49 @@ def _unneeded(repair: str, case) -> tuple[str, str]:
     else:
         off = " (it needs two repairs together, each of which the others can stand in for)" + off
     return "not needed", f"{head}changes nothing there{off}"
+
+
+def _why_unchanged(repair: str, case) -> tuple[str, str] | None:
+    """(kind, words) for what keeps ``repair`` from changing the case, where one thing says
+    it (a vertex on the grid, no flip, no tie), or None."""
+    xy, s = case[0], snap(case[0])
+    if repair == "snap" and np.array_equal(s, xy):
+        return "on the grid", "your vertices are on the 1/256-px grid already: snapping moves none"
+    raw, snapped = float(edge_function(*xy)), float(edge_function(*s))
+    if repair == "orient after snapping" and (raw < 0) == (snapped < 0):
+        return "no flip", (f"snapping keeps your triangle's winding (E(v1, v2, v3) is {raw:.3g} "
+                           f"px² raw, {snapped:.3g} px² snapped): it is oriented alike before "
+                           "and after snapping")  # fmt: skip
+    if repair == "orient after snapping" and not expected_fill(*case).any():
+        return "covers nothing", (f"snapping flips your triangle (E(v1, v2, v3) is {raw:.3g} px² "
+                                  f"raw, {snapped:.3g} px² snapped), but the snapped triangle "
+                                  "covers no centre of your window: turned the wrong way round "
+                                  "it loses nothing")  # fmt: skip
+    if repair == "tie rule":
+        return _tie_note(case)
+    return None
+
+
+def _tie_note(case) -> tuple[str, str] | None:
+    """Words for a tie case the rule does not change: no centre on an edge, or only on top
+    and left edges (which E ≥ 0 covers too)."""
+    xy, width, height, (row, col) = case
+    s = snap(xy)
+    s = s if edge_function(*s) > 0 else s[[0, 2, 1]]
+    centres = np.stack(np.meshgrid(col + np.arange(width) + 0.5, row + np.arange(height) + 0.5),
+                       axis=-1).reshape(-1, 2)  # fmt: skip
+    ties = [(k, p) for k in range(3) for p in centres
+            if edge_function(s[k], s[(k + 1) % 3], p) == 0]  # fmt: skip
+    if not ties:
+        return "no tie", ("no pixel centre of your window lies exactly on an edge of your "
+                          "snapped triangle: a tie rule decides such centres only")  # fmt: skip
+    if all(is_top_left(s[k], s[(k + 1) % 3]) for k, _ in ties):
+        p = ties[0][1]
+        return "top-left ties", (f"the centres on your triangle's edges (the first: "
+                                 f"({p[0]:g}, {p[1]:g})) lie on top or left edges, which the "
+                                 "top-left rule covers as E ≥ 0 does: the two differ on "
+                                 "right and bottom edges only")  # fmt: skip
+    return None
 
 
 def _also_words(repair: str, case) -> str:
@@ -318,7 +365,8 @@ def verdict(repair: str, case) -> tuple[str, str] | None:
 
 #: The kinds of a wrong case, most specific first.
 KINDS = ("degenerate", "out of range", "catalogue", "outside the bounds", "origin as (x, y)",
-         "window misses", "naive right", "another repair's case", "not needed", "also needs")  # fmt: skip
+         "window misses", "another repair's case", "on the grid", "no flip", "covers nothing",
+         "no tie", "top-left ties", "naive right", "not needed", "also needs")  # fmt: skip
 
 
 def _mistake(kind: str) -> Mistake:
