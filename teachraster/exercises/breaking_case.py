@@ -289,8 +289,8 @@ def _tie_note(case) -> tuple[str, str] | None:
     s = s if edge_function(*s) > 0 else s[[0, 2, 1]]
     centres = np.stack(np.meshgrid(col + np.arange(width) + 0.5, row + np.arange(height) + 0.5),
                        axis=-1).reshape(-1, 2)  # fmt: skip
-    ties = [(k, p) for k in range(3) for p in centres
-            if edge_function(s[k], s[(k + 1) % 3], p) == 0]  # fmt: skip
+    ties = [(k, p) for k in range(3)
+            for p in centres[edge_function(s[k], s[(k + 1) % 3], centres) == 0]]  # fmt: skip
     if not ties:
         return "no tie", ("no pixel centre of your window lies exactly on an edge of your "
                           "snapped triangle: a tie rule decides such centres only")  # fmt: skip
