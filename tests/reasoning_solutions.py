@@ -342,6 +342,20 @@ def sample_span(xy, row, sample):
     return tuple(-((sx * den - num) // (256 * den)) for num, den in ends)
 
 
+def breaking_case(repair):
+    """Exercise 10.3 (r457 T1, r470): for each repair of exercise 10's naive fill, a triangle
+    and a window that need it and nothing else."""
+    if repair == "snap":  # v2's 1.6 steps snap to 2: edge v1→v2 crosses centre (5.5, 4.5)
+        return [[2.5, 4.5 - 1 / 256], [10.5, 4.5 + 1.6 / 256], [6.0, 1.0]], 12, 8, (0, 0)
+    if repair == "orient after snapping":  # v1, v2 snap onto one row; v3 changes sides
+        y0 = 2.5 + 1 / 256
+        return [[2, y0 + 0.0019], [3, y0 - 0.0019], [11, y0 - 0.030]], 12, 4, (0, 0)
+    if repair == "tie rule":  # a right edge through three centres
+        return [[4.5, 1.0], [4.5, 4.0], [1.5, 2.5]], 6, 6, (0, 0)
+    # centre (1000.5, 1000.5) 1/64 px² inside v1→v2, where float32's numbers are 1/16 px² apart
+    return [[996.5, 1000.5], [1004.5, 1000.5 - 1 / 256], [1000.25, 1006.0]], 12, 12, (996, 996)
+
+
 CORRECT = {
     "span": span,
     "sample_span": sample_span,
@@ -355,6 +369,7 @@ CORRECT = {
     "depth_setup": depth_setup,
     "edge_bits": edge_bits,
     "robust_fill": robust_fill,
+    "breaking_case": breaking_case,
     "quad_derivatives": quad_derivatives,
     "pixel_lod": pixel_lod,
     "pixel_sample": pixel_sample,

@@ -11179,3 +11179,153 @@ R462 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R462.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R462.items()})
+# == r470: exercise 10.3, breaking_case (r457 T1): a case for each repair of the naive fill ======
+
+
+def _bc470(repair, case):
+    """The teacher's breaking_case with one repair's case replaced."""
+
+    def breaking_case(r):
+        return case if r == repair else _rs.breaking_case(r)
+
+    return breaking_case
+
+
+def _bc470_catalogue(name, shift=0):
+    from teachraster.study.hardcases import CASES
+
+    return np.asarray(CASES[name].inputs["triangles"], dtype=float)[0] + shift
+
+
+_BC470_TIE = ([[4.5, 1.0], [4.5, 4.0], [1.5, 2.5]], 6, 6, (0, 0))
+_BC470_FAR = [[996.5, 1000.5], [1004.5, 1000.5 - 1 / 256], [1000.25, 1006.0]]
+_BC470_SWAP = {"snap": "orient after snapping", "orient after snapping": "snap"}
+#: label: (exercise, function, words its first explanation must hold, its kind).
+R470 = {
+    "breaking case: one case for every repair": (
+        "breaking_case", lambda r: _rs.breaking_case("tie rule"),
+        "returns the same case, the triangle (4.5, 1), (4.5, 4), (1.5, 2.5) in a 6 × 6 window, "
+        "for every repair", "constant"),
+    "breaking case: a tie case given for 'snap' (repairs confused)": (
+        "breaking_case", _bc470("snap", _BC470_TIE),
+        "'snap' changes nothing there (your vertices are on the 1/256-px grid already: snapping "
+        "moves none); your case is one for 'tie rule'", "another repair's case"),
+    "breaking case: the cases of 'snap' and 'orient after snapping' swapped": (
+        "breaking_case", lambda r: _rs.breaking_case(_BC470_SWAP.get(r, r)),
+        "your case also needs 'orient after snapping'", "also needs"),
+    "breaking case: a triangle the naive fill already gets right": (
+        "breaking_case", _bc470("precision", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
+        "the naive fill itself is right on your case", "naive right"),
+    "breaking case: for 'snap', a triangle on the grid": (
+        "breaking_case", _bc470("snap", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
+        "your vertices are on the 1/256-px grid already: snapping moves none", "on the grid"),
+    "breaking case: for 'orient after snapping', a triangle snapping does not flip": (
+        "breaking_case", _bc470("orient after snapping",
+                                ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
+        "snapping keeps your triangle's winding (E(v1, v2, v3) is 62 px² raw, 62 px² snapped)",
+        "no flip"),
+    "breaking case: a flipped sliver that covers no centre": (
+        "breaking_case", _bc470("orient after snapping", (
+            [[2, 2.5 - 1 / 256 + 0.0019], [3, 2.5 - 1 / 256 - 0.0019], [11, 2.5 - 1 / 256 - 0.030]],
+            12, 4, (0, 0))),
+        "but the snapped triangle covers no centre of your window", "covers nothing"),
+    "breaking case: for 'tie rule', a triangle with no centre on an edge": (
+        "breaking_case", _bc470("tie rule", ([[1.25, 1.125], [4.375, 2.25], [2.125, 4.5]], 6, 6,
+                                             (0, 0))),
+        "no pixel centre of your window lies exactly on an edge", "no tie"),
+    "breaking case: for 'tie rule', centres on a left edge only": (
+        "breaking_case", _bc470("tie rule", ([[1.5, 1.0], [1.5, 4.0], [4.2, 2.6]], 6, 6, (0, 0))),
+        "lie on top or left edges, which the top-left rule covers as E ≥ 0 does", "top-left ties"),
+    "breaking case: a tie case off the grid, needing 'snap' too": (
+        "breaking_case", _bc470("tie rule", ([[4.501, 1.0], [4.501, 4.0], [1.5, 2.5]], 6, 6, (0, 0))),
+        "your case also needs 'snap' (your vertices are off the 1/256-px grid: v1 (4.501, 1) "
+        "snaps to (4.5, 1))", "also needs"),
+    "breaking case: a snapped edge moved onto centres, needing the tie rule too": (
+        "breaking_case", _bc470("snap", ([[4.501, 1.0], [4.501, 4.0], [1.5, 2.5]], 6, 6, (0, 0))),
+        "your case also needs 'tie rule'", "also needs"),
+    "breaking case: 'precision' with a vertex off the grid onto a tie": (
+        "breaking_case", _bc470("precision", ([[996.5, 1000.5], [1004.5, 1000.4999],
+                                               [1000.25, 1006.0]], 12, 12, (996, 996))),
+        "'precision' changes nothing there (the fill needs 'tie rule' there; your vertices are "
+        "off the 1/256-px grid", "not needed"),
+    "breaking case: snap_flips_winding copied for 'orient after snapping'": (
+        "breaking_case", _bc470("orient after snapping",
+                                (_bc470_catalogue("snap_flips_winding"), 6, 6, (0, 0))),
+        "your triangle is the case 'snap_flips_winding' of 10.2's check", "catalogue"),
+    "breaking case: snap_flips_winding moved by whole pixels": (
+        "breaking_case", _bc470("orient after snapping",
+                                (_bc470_catalogue("snap_flips_winding", 3), 6, 6, (3, 3))),
+        "moved by whole pixels at most: find one of your own", "catalogue"),
+    "breaking case: d3d_split_square copied for 'tie rule'": (
+        "breaking_case", _bc470("tie rule", (_bc470_catalogue("d3d_split_square"), 8, 8, (0, 0))),
+        "the case 'd3d_split_square, triangle 0' of 10.2's check", "catalogue"),
+    "breaking case: 'precision' at 10⁶ px": (
+        "breaking_case", _bc470("precision", (np.array(_BC470_FAR) + 10**6 - 996, 12, 12,
+                                              (10**6, 10**6))),
+        "for 'precision' the task asks for every vertex and pixel within 2^10 = 1,024 px of the "
+        "origin; yours reaches 1000012 px", "outside the bounds"),
+    "breaking case: a tie case 9 px across": (
+        "breaking_case", _bc470("tie rule", ([[10.5, 1.0], [10.5, 7.0], [1.5, 4.0]], 12, 12, (0, 0))),
+        "for 'tie rule' the task asks for a triangle at most 4 px across (snapped); yours is 9 px "
+        "across", "outside the bounds"),
+    "breaking case: an orientation sliver 0.02 px across": (
+        "breaking_case", _bc470("orient after snapping",
+                                ([[2.5, 2.5], [2.52, 2.502], [2.51, 2.5016]], 6, 6, (0, 0))),
+        "for 'orient after snapping' the task asks for a triangle at least 2 px across",
+        "outside the bounds"),
+    "breaking case: a window too small to hold the pixel": (
+        "breaking_case", _bc470("precision", (_BC470_FAR, 3, 3, (996, 996))),
+        "misses the pixel where 'precision' changes the fill: row 1000, column 1004",
+        "window misses"),
+    "breaking case: the window somewhere else": (
+        "breaking_case", _bc470("tie rule", (_BC470_TIE[0], 6, 6, (10, 10))),
+        "your window, rows 10 to 15 and columns 10 to 15, misses the pixel", "window misses"),
+    "breaking case: origin given as (x, y)": (
+        "breaking_case", _bc470("precision", (_BC470_FAR, 8, 8, (1001, 997))),
+        "origin is (row, col), and your window at (1001, 997) holds no pixel the repair changes",
+        "origin as (x, y)"),
+    "breaking case: collinear vertices": (
+        "breaking_case", _bc470("tie rule", ([[1.5, 1.5], [2.5, 2.5], [3.5, 3.5]], 6, 6, (0, 0))),
+        "your triangle is degenerate: snapped, its vertices", "degenerate"),
+    "breaking case: a window 100 px wide": (
+        "breaking_case", _bc470("snap", ([[2.5, 4.5 - 1 / 256], [10.5, 4.5 + 1.6 / 256],
+                                          [6.0, 1.0]], 100, 8, (0, 0))),
+        "your window is 100 × 8 pixels: the task allows at most 64 a side", "out of range"),
+    "breaking case: 'snap' at 2²¹ px, past 10.2's range": (
+        "breaking_case", _bc470("snap", (np.array([[2.5, 4.5 - 1 / 256], [10.5, 4.5 + 1.6 / 256],
+                                                   [6.0, 1.0]]) + 2**21, 12, 8, (2**21, 2**21))),
+        "your case reaches 2097164 px from the origin: the task's range is 2^20 px", "out of range"),
+    "breaking case: width 0": (
+        "breaking_case", _bc470("snap", (_BC470_TIE[0], 0, 8, (0, 0))),
+        "width must be positive, got 0", "type"),
+    "breaking case: a width of 12.5": (
+        "breaking_case", _bc470("snap", (_BC470_TIE[0], 12.5, 8, (0, 0))),
+        "width must be an int, got 12.5", "type"),
+    "breaking case: two vertices": (
+        "breaking_case", _bc470("snap", ([[1, 1], [2, 2]], 8, 8, (0, 0))),
+        "xy must have shape (3, 2), got (2, 2)", "type"),
+    "breaking case: a NaN vertex": (
+        "breaking_case", _bc470("snap", ([[1, 1], [2, np.nan], [3, 1]], 8, 8, (0, 0))),
+        "xy contains NaN", "type"),
+    "breaking case: origin of three numbers": (
+        "breaking_case", _bc470("snap", (_BC470_TIE[0], 6, 6, (0, 0, 0))),
+        "origin must be two whole numbers (row, col)", "type"),
+    "breaking case: no origin returned": (
+        "breaking_case", _bc470("snap", (_BC470_TIE[0], 6, 6)),
+        "expected a tuple (xy, width, height, origin)", "type"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R470.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R470.items()})
+DIFFERENT.update({
+    "breaking case: other cases, a window at negative rows and columns (r470)": (
+        "breaking_case", lambda r: {
+            "snap": ([[5.5, 6.5 - 1 / 256], [13.5, 6.5 + 1.6 / 256], [9.0, 3.0]], 16, 10, (0, 0)),
+            "orient after snapping": _rs.breaking_case(r),
+            "tie rule": (np.array([[1.0, 3.5], [4.0, 3.5], [2.5, 0.5]]), 5, 5, (0, 0)),
+            "precision": ([[-1003.5, -999.5], [-995.5, -999.5 - 1 / 256], [-999.75, -994.0]],
+                          12, 12, (-1004, -1004)),
+        }[r]),
+    "breaking case: numpy arrays and numpy integers (r470)": (
+        "breaking_case", lambda r: (np.asarray(_rs.breaking_case(r)[0]), np.int64(_rs.breaking_case(r)[1]),
+                                    np.int32(_rs.breaking_case(r)[2]), np.array(_rs.breaking_case(r)[3]))),
+})  # fmt: skip

@@ -64,6 +64,11 @@ def fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     return copy.deepcopy(_fill_cases()) + [(lb, a, expected_fill(*a)) for lb, a in drawn]
 
 
+def fixed_cases() -> list[tuple[str, tuple, np.ndarray]]:
+    """The cases without those drawn for each check (a copy; 10.3 names a case of them)."""
+    return copy.deepcopy(_fill_cases())
+
+
 @cache
 def _fill_cases() -> list[tuple[str, tuple, np.ndarray]]:
     """(label, (xy, width, height, origin), coverage) with raw vertices; origin = (row, col)."""

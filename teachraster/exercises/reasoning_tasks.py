@@ -16,7 +16,8 @@ typical mistakes), defined in its own module:
   its near plane, from the student's own ``safe_near`` and ``reverse_z_gap``;
 - ``edge_bits`` (07 with 06, :mod:`.edge_bits`): the bits E needs in either form, and the
   type that holds them; ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser
-  against the catalogue;
+  against the catalogue; ``breaking_case`` (07, :mod:`.breaking_case`): a case for each
+  repair of that rasteriser;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`; still checked, for notebooks of earlier
   versions), ``pixel_lod`` (09, :mod:`.pixel_level`: the quad differences, ρ and λ composed, in
   place of ``mip_level`` and ``quad_derivatives``), ``pixel_sample`` (09, :mod:`.pixel_sampler`:
@@ -31,6 +32,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from . import breaking_case as bc
 from . import broken_frame_steps as bfs
 from . import broken_frames as bf
 from . import clip_colour as cc
@@ -66,6 +68,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "depth_setup": lambda: ds.DEPTH_SETUP,
     "edge_bits": lambda: eb.EDGE_BITS,
     "robust_fill": lambda: hf.ROBUST_FILL,
+    "breaking_case": lambda: bc.BREAKING_CASE,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "pixel_lod": lambda: pl.PIXEL_LOD,
     "pixel_sample": lambda: ps.PIXEL_SAMPLE,

@@ -1,0 +1,64 @@
+"""Exercise 10.3 (r457 T1, r470): ``breaking_case(repair)``, a case for each repair of the naive
+fill. The teacher's cases pass; each wrong answer a student gives (the same case for every
+repair, a case of another repair, one the naive fill gets right, one that needs a second
+repair, a catalogue case copied, one outside the bounds, a window that misses the pixel,
+invalid input) fails and is named by its kind in its first words."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pytest
+from reasoning_solutions import breaking_case
+from student_variants import DIFFERENT, R470
+from variant_checks import assert_first_named, assert_passes
+
+from teachraster.exercises import breaking_case as bc
+from teachraster.exercises.hard_case_fill import expected_fill, fixed_cases
+
+
+@pytest.mark.parametrize("label", list(R470))
+def test_each_wrong_case_fails_and_is_named_in_its_first_words(label):
+    name, fn, words, kind = R470[label]
+    assert_first_named(name, fn, words, kind)
+
+
+@pytest.mark.parametrize("label", [k for k in DIFFERENT if k.endswith("(r470)")])
+def test_other_right_cases_pass(label):
+    assert_passes(*DIFFERENT[label])
+
+
+def test_the_teachers_cases_pass_in_well_under_a_second():
+    start = time.process_time()
+    assert_passes("breaking_case", breaking_case)
+    assert time.process_time() - start < 1.0
+
+
+def test_every_repair_done_is_the_gpus_fill_on_10_2s_cases():
+    """One place for each rule: the fill with every repair is rasterize on 10.2's cases."""
+    for label, args, expected in fixed_cases():
+        assert np.array_equal(bc.repaired_fill(*args, bc.REPAIRS), expected), label
+
+
+def test_each_teachers_case_needs_its_repair_and_no_other():
+    """("orient after snapping" presupposes snapping: its case needs "snap" too.)"""
+    for repair in bc.REPAIRS:
+        needs = {repair, "snap"} if repair == "orient after snapping" else {repair}
+        xy, width, height, origin = breaking_case(repair)
+        case = (np.asarray(xy, float), width, height, origin)
+        ref = expected_fill(*case)
+        for other in bc.REPAIRS:
+            without = [r for r in bc.REPAIRS if r != other]
+            assert np.array_equal(bc.repaired_fill(*case, without), ref) == (other not in needs)
+
+
+def test_no_catalogue_case_meets_the_bounds_of_the_repair_it_breaks():
+    """The bounds stop copying: a case of 10.2's check that is a breaking case of a repair is
+    outside that repair's bounds, or is named a catalogue case."""
+    for label, (xy, width, height, origin), _ in fixed_cases():
+        case = (np.asarray(xy, float), width, height, origin)
+        assert bc.catalogue_label(xy) is not None, label
+        for repair in bc.REPAIRS:
+            found = bc.verdict(repair, case)
+            assert found is not None, (label, repair)
