@@ -2150,9 +2150,10 @@ def test_11_the_sliver_table_folds_the_samples_the_text_names():
     from notebook_runs import executed
 
     cells = executed("11_debugging_a_frame").notebook().cells
-    text = "".join(cells[16].source)
+    at = next(i for i, c in enumerate(cells) if "".join(c.source).startswith("## 3. "))
+    text = "".join(cells[at].source)
     assert "samples `0-2` below" in " ".join(text.split())
-    printed = "".join(o.get("text", "") for o in cells[17].outputs if o.output_type == "stream")
+    printed = "".join(o.get("text", "") for o in cells[at + 1].outputs if o.output_type == "stream")
     assert any(line.startswith("  0 0-2  not_covered") for line in printed.splitlines())
 
 
@@ -2365,13 +2366,20 @@ def test_11_r274_05a_overdraw_is_depth_complexity_minus_one():
 
 def test_11_r274_the_inspector_hint_under_question_1_names_no_colour():
     """Review r274 P1: cell 15's visible markdown, below the held cells and readable before
-    q_far_wins is answered, said the farther triangle on show is blue (half its answer)."""
+    q_far_wins is answered, said the farther triangle on show is blue (half its answer).
+    r476 S1: that cell repeated the held reading's inspector hint after §2's z-fighting part;
+    it is gone, its one new sentence now in the held reading, hidden until Question 1 is
+    checked, so no visible markdown of §2 names the farther triangle's colour."""
     import json
 
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
-    text = "".join(next(c["source"] for c in cells if c.get("id") == "23816f6c"))
-    assert "Watch Question 1's rule in the inspector" in text
-    assert "blue" not in text and "red" not in text
+    assert not any(c.get("id") == "23816f6c" for c in cells)
+    markdown = " ".join("".join(c["source"]) for c in cells if c["cell_type"] == "markdown")
+    assert "Watch Question 1's rule in the inspector" not in markdown
+    held = " ".join("".join(next(c["source"] for c in cells if c.get("id") == "farwhy")).split())
+    assert held.startswith("q_redraw.hold()")
+    assert 'Tick the depth " "test again and the farther fragment is refused' in held
+    assert "at others by the depth test itself (`failed_depth`)" in held
 
 
 def test_11_r274_the_early_test_rule_has_a_row_per_api():
@@ -2422,7 +2430,8 @@ def test_11_the_nan_view_is_zero_on_the_healthy_glass_sphere():
     cells = json.loads((ROOT / "notebooks" / "11_debugging_a_frame.ipynb").read_text())["cells"]
     code = "\n".join("".join(c["source"]) for c in cells if c["cell_type"] == "code")
     assert "not NaN" not in code and "stored as NaN, which marks *empty*" in code
-    assert "cell 14" not in code and "§2's last paragraph sends you back" in code
+    # r476 S1: §2's last paragraph (cell 15) is gone; its hint is in the held reading
+    assert "cell 14" not in code and "§2's reading after Question 1 sends you back" in code
 
 
 def test_11_r323_the_nan_view_is_shown_lit_and_stops_at_the_seam():
