@@ -1451,7 +1451,8 @@ def test_lesson_08_review_r313_ghosts_outlined_circles_floor_rms_and_maintenance
     cells = {c["id"]: "".join(c["source"]) for c in json.loads(path.read_text())["cells"]}
     assert "ghost_masks(image[None], crawl_16[last][None], MOTION)" in cells["30cda8d6"]
     words = " ".join(cells["836112a2"].split())
-    assert "Moving (ghosts outlined), a history not reprojected trails" in words
+    # r475 S7: the four histories one line each
+    assert "Moving (ghosts outlined): - Not reprojected, the history trails" in words
     assert '"o", ms=8,' in cells["7dcf3ede"] and "ms=5" not in cells["7dcf3ede"]
     far = ns.floor_crop
     floor_rows = np.flatnonzero(ns.on_floor.any(axis=(1, 2, 3)))

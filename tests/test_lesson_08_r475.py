@@ -66,3 +66,13 @@ def test_m1_well_spaced_sets_named_beside_the_bound(ns):
     rest = held[bound:]
     assert "blue-noise (Poisson-disk) sets" in rest and "Halton and Sobol" in rest
     assert "*Physically Based Rendering*, 4th ed., ch. 8" in rest
+
+
+def test_s7_taa_cases_one_line_each():
+    """S7: cell 51 packed 11 numbers in one paragraph; the four histories are now a list, each
+    with its own numbers (test_lesson_08 checks the numbers against cell 49's table)."""
+    _, sources = _sources()
+    (taa,) = [s for s in sources if s.startswith("Held still, 16 jittered frames average")]
+    cases = [line for line in taa.splitlines() if line.startswith("- ")]
+    starts = ("Not reprojected,", "Reprojected,", "Clamped,", "Clamped but not reprojected,")
+    assert len(cases) == 4 and all(c[2:].startswith(s) for c, s in zip(cases, starts))
