@@ -56,7 +56,10 @@ def test_m1_depth_per_sample_said_sourced_and_printed(ns):
     ids = ns.pierced[4].sample_triangle_id[ns.sr, ns.sc]
     assert ns.split[ns.sr, ns.sc] and ((gap[1:] < 0) == (ids == 0)).all()
     assert (gap[1:] < 0).any() and (gap[1:] > 0).any()
-    assert abs(gap[0]) == max(abs(g[0]) for g in ns.depth_gaps.values())
+    # r475 S1: the pixel whose smallest |gap| (centre and samples) is the largest; it was the
+    # most one-sided centre, (17, 25), where blue won a sample by +0.00001, a printed near-tie
+    assert min(abs(gap)) == max(min(abs(np.array(g))) for g in ns.depth_gaps.values())
+    assert min(abs(gap)) >= 1.5e-4, gap  # every sign readable at 5 decimals
     printed = streams(executed("08_antialiasing").notebook())
     said = (f"at its samples {', '.join(f'{d:+.5f}' for d in gap[1:])}: red won "
             f"{int((ids == 0).sum())} of 4;")  # fmt: skip
