@@ -77,3 +77,47 @@ def test_s1_the_reflowed_lines_keep_their_numbers():
     ):
         assert line in printed.splitlines(), line
     assert max(len(line) for line in printed.splitlines()) <= 80
+
+
+@pytest.mark.parametrize("size", [(9.12, 6.48), (7.2, 5.8), (9.0, 7.0)])  # as test_setup_marks
+def test_fig1_the_players_middle_tag_is_beside_v2(size):
+    """r472 FIG1: moved off the edge into v2 (r452 FIG2), "middle" went to (13.3, 10.8), six
+    columns from v2 at (18.5, 9.5), where it read as naming the flat-top part; the places
+    above the vertex label, moved sideways into the Axes, now come first when clear."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    import teachraster as tr
+    from teachraster.plotting import use_style
+    from teachraster.plotting.setup_marks import ROLES
+    from teachraster.widgets import FillPlayer
+
+    with plt.style.context("default"):
+        use_style("classroom")
+        player = FillPlayer(tr.Triangle([[8.5, 17.5], [18.5, 9.5], [4.5, 1.5]]), 20, 20,
+                            method="span", backend="image")  # fmt: skip
+        try:
+            view = player.view
+            view.fig.set_size_inches(*size)
+            split = next(k for k in range(len(view.trace)) if view.trace.step(k).kind == "split")
+            view.show_step(split, draw=False)
+            view.setup_marks.update(view.trace, view.triangle.labels)
+            view.fig.canvas.draw()
+            renderer = view.fig.canvas.get_renderer()
+            ax = view.fig.axes[0]
+            centres = {}
+            for role, tag in zip(ROLES, view.setup_marks.roles):
+                box = tag.get_window_extent(renderer)
+                centres[role] = ax.transData.inverted().transform(
+                    ((box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2)
+                )
+        finally:
+            player.close()
+            plt.close("all")
+    near = {role: float(np.hypot(*(centres[role] - v))) for role, v in
+            (("top", (4.5, 1.5)), ("middle", (18.5, 9.5)), ("bottom", (8.5, 17.5)))}  # fmt: skip
+    assert near["middle"] < 5.0, (size, near)
+    assert near["middle"] < near["top"] + 1.5 and near["middle"] < near["bottom"] + 1.5, near
