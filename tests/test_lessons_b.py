@@ -1150,6 +1150,7 @@ def test_06_review_r37_questions_take_an_answer_first(monkeypatch):
 @pytest.mark.parametrize(
     "name",
     [
+        "01_span_tables",
         "05a_zbuffer",
         "05b_depth_precision",
         "06_what_accuracy_costs",
@@ -1166,7 +1167,8 @@ def test_every_printed_line_fits_a_column(name):
     05a and 05b too (05a's drawing orders ran to 134, 05b's lines to 120), so they do not wrap
     or scroll on a projector; 09 too (its derivative table and plans ran to 331); 10 too (its
     block counters, captions, timings and Hi-Z counts ran to 151); 08 too (its plan, slopes
-    and error tables ran to 333)."""
+    and error tables ran to 333); 01 too (review r472 S1: 33 lines, its split caption ran to
+    206 and its crack counts to 161)."""
     from notebook_runs import executed
 
     for cell in executed(name).notebook().cells:

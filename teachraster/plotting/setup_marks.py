@@ -125,7 +125,8 @@ class SetupArtists(Artists):
             tag.xy = label.xy
             tag.set_text(role)
             tag.set_position(_role_offset(label, role, at, box.extents / scale,
-                                          label.xy[0] < centre[0], edges=edges))  # fmt: skip
+                                          label.xy[0] < centre[0], edges=edges,
+                                          stack=True))  # fmt: skip
 
     def _update_coords(self, trace: FillTrace, labels: list) -> None:
         """Each vertex's snapped position beside its label, written as the snap's caption
@@ -212,7 +213,7 @@ def _crosses(edges, centre, half_w: float, half_h: float) -> bool:
 
 def _role_offset(label, role: str, at, extents, left: bool,
                  italic: bool = True, edges=None, tag_size: float | None = None,
-                 rows=None) -> tuple[float, float]:  # fmt: skip
+                 rows=None, stack: bool = False) -> tuple[float, float]:  # fmt: skip
     """Where a tag (a role, a position) goes (points from its vertex): one line beyond the
     vertex label, the way the label is pushed out; where that leaves the Axes (a vertex at
     the grid's top or bottom: it ran over the tick labels or the frame), beside the label
@@ -224,7 +225,9 @@ def _role_offset(label, role: str, at, extents, left: bool,
     nearest to the vertex whose box crosses no edge; ``tag_size`` is the tag's font size
     (default: the label's). With ``rows`` (the y, in points, of the grid's row boundaries),
     each place moved onto the nearest boundary is tried first: there a tag less than a pixel
-    high covers none of the pixel centres."""
+    high covers none of the pixel centres. With ``stack``, also above or below the label,
+    moved sideways into the Axes, a little farther each time (a role tag: short enough to
+    stand over its vertex's label)."""
     dx, dy = label.get_position()  # the label's offset from its vertex, in points
     size = label.get_fontsize()
     own = size if tag_size is None else tag_size
@@ -254,6 +257,14 @@ def _role_offset(label, role: str, at, extents, left: bool,
         near = [half_w + (0.6 + 0.5 * j) * size for j in range(6)]
         extra = [(side * d, 0.0) for d in near for side in sides]
         extra += [(dx, dy + side * 1.6 * size) for side in (1.0, -1.0)]
+        if stack:
+            # the same, moved sideways into the Axes and a little farther up or down each
+            # time: at a vertex by the grid's side they overhang its frame, and the nearest
+            # clear place lay six columns off, far from the vertex it names (review r472
+            # 01-FIG1)
+            fit = float(np.clip(at[0] + dx, x0 + half_w, max(x0 + half_w, x1 - half_w)))
+            extra += [(fit - at[0], dy + side * (1.6 + 0.5 * j) * size)
+                      for j in range(4) for side in (1.0, -1.0)]  # fmt: skip
         # along the bisector of the vertex's angle, outwards (away from both its edges) and
         # into the angle, where a vertex at the grid's side leaves no room outside
         ends = [b if np.allclose(a, at) else a for a, b in edges
