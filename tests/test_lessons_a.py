@@ -3797,8 +3797,10 @@ def test_05a_r182_stepper_question_and_small_items():
     assert ns.one_later == (len(ns.later[0]) == 1)
     nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
     src = ["".join(c["source"]) for c in nb["cells"]]
-    ask = next(i for i, t in enumerate(src) if "q_step = Predict(" in t)
-    assert "answer=shown_other,\n    whole=True," in src[ask]
+    # review r473 M-1: answered on the stepper's picture of triangle k_open (none stays shown)
+    ask = next(i for i, t in enumerate(src) if "q_step = PredictPixels(" in t)
+    assert "answer=(cube.triangle_id == k_open)[step_crop]," in src[ask]
+    assert "none=" in src[ask] and "draw=draw_step," in src[ask]
     assert "pass{'es' if one_later else ''}" in src[ask]
     assert "overwrite{'s' if one_later else ''}" in src[ask]
     culled = next(t for t in src if "q_culled = Predict(" in t)
