@@ -60,3 +60,24 @@ def test_s1_failed_is_vermillion_as_in_the_stepper():
     assert 'plot_coverage(ax, failed_px, color=COLORS["outside"])' in cell
     assert 'outline(ax, painter_wrong, "black")' in cell
     assert 'color="black", lw=2.5, label="painter wrong (outline)"' in cell
+
+
+def test_s3_s4_s6_s7_s8_s9_words():
+    cells = _cells()
+    # S-6: "Each API spells them its own way" leads into the table of spellings
+    off = " ".join(cells["c02_off"].split())
+    assert "Each API spells them its own way: the same four settings in the other APIs" in off
+    assert "its own way: What each" not in off
+    # S-7: the stored depth in Direct3D and Vulkan
+    rule = " ".join(cells["c02"].split())
+    assert "in Direct3D and Vulkan $z/w$ already runs from 0 to 1 and is stored as it is" in rule
+    # S-8: the strip's early test says when it may run
+    assert "only\\nif the shader writes " in cells["pipeline_strip"]
+    assert "optional" not in cells["pipeline_strip"].split("early = ")[1].split("\n")[0]
+    # S-4: a rounded edge moves by up to (|n_x| + |n_y|)/2 of a step, not half a step
+    assert "(|n_x| + |n_y|)/2 of a step" in cells["guard_snap_fig"]
+    assert "Either may move by up to half a snapping step" not in cells["guard_snap_fig"]
+    # S-3: "sameness, not accuracy" once in the main text's place of it (fold and summary)
+    assert "That is sameness, not accuracy" not in cells["guard_fig_md"]
+    # S-9: the question does not repeat the widget's own instructions
+    assert "click one to keep the order shown" not in cells["b979115f"]
