@@ -81,3 +81,17 @@ def test_s3_s4_s6_s7_s8_s9_words():
     assert "That is sameness, not accuracy" not in cells["guard_fig_md"]
     # S-9: the question does not repeat the widget's own instructions
     assert "click one to keep the order shown" not in cells["b979115f"]
+
+
+def test_s2_s5_teachraster_band_folded_and_short_options():
+    cells = _cells()
+    # S-2: the simulator's band formula is folded; the main text keeps what the cut shows
+    guard = cells["guard_md"]
+    shown, folded = guard.split("<details>", 1)
+    assert "2^{29-s}" not in shown and "0.999" not in shown
+    assert "g = 2 \\cdot 0.999\\,L/\\max(W, H) - 1" in folded and "</details>" in folded
+    assert "against the band's plane $x = g\\,w$" in shown
+    # S-5: the question says "points of the original edge" once; the options are short
+    asked = cells["c16q"]
+    options = asked.split("clip_choices = [", 1)[1].split("]", 1)[0]
+    assert "edge's points" not in options and '"only the first vertex"' in options
