@@ -2904,10 +2904,12 @@ def test_05a_clip_question_asks_why_clipping_precedes_the_divide():
     # both lie above -1), and no choice says the kept piece is off the edge
     assert ns.far_after_divide and ns.t_far < 0  # z/w = +1 on the line, beyond the edge
     assert len(ns.clip_choices) == 4 and ns.clip_answer == ns.clip_choices[3]
-    assert ns.clip_answer == "of the edge's points, only the first vertex"
+    assert ns.clip_answer == "only the first vertex"
     asked = next(c for c in _cells("05a_zbuffer", "code") if "q_clip = Predict(" in c)
     assert "    answer=clip_answer," in asked
-    assert all(c.startswith("of the edge's points, ") for c in ns.clip_choices)
+    # review r473 S-5: "of the edge's points" said once, in the question, not in every option
+    assert "Which points of the original edge, between the two vertices, " in asked
+    assert not any("edge's points" in c for c in ns.clip_choices)
     assert "z/w = +1" in ns.clip_choices[0] and "z/w = −1" in ns.clip_choices[1]
     assert min(ns.z_ndc[[0, 2]]) > -1 and max(ns.z_ndc[[0, 2]]) > 1  # only [1] is ruled out
     assert not any("no part" in c or "not" in c.split() for c in ns.clip_choices)
@@ -3797,8 +3799,10 @@ def test_05a_r182_stepper_question_and_small_items():
     assert ns.one_later == (len(ns.later[0]) == 1)
     nb = json.loads((NOTEBOOKS / "05a_zbuffer.ipynb").read_text())
     src = ["".join(c["source"]) for c in nb["cells"]]
-    ask = next(i for i, t in enumerate(src) if "q_step = Predict(" in t)
-    assert "answer=shown_other,\n    whole=True," in src[ask]
+    # review r473 M-1: answered on the stepper's picture of triangle k_open (none stays shown)
+    ask = next(i for i, t in enumerate(src) if "q_step = PredictPixels(" in t)
+    assert "answer=(cube.triangle_id == k_open)[step_crop]," in src[ask]
+    assert "none=" in src[ask] and "draw=draw_step," in src[ask]
     assert "pass{'es' if one_later else ''}" in src[ask]
     assert "overwrite{'s' if one_later else ''}" in src[ask]
     culled = next(t for t in src if "q_culled = Predict(" in t)

@@ -232,6 +232,9 @@ def test_05a_q_order_has_its_picture_and_a_figure_reveal():
     assert "draw_sticks(ax)" in _source(reveal) and "over {under}" in _source(reveal)
     assert not re.search(r"cycle|over|no order", _source(reveal).split("\n", 1)[0])
     seen = seen_before_check("05a_zbuffer", "q_order = PredictOrder(", "q_order")
+    # r473 M-1: q_step's picture question carries the page script, whose comments name the
+    # order question's "no order works"; a script is not read, so it is left out here
+    seen = re.sub(r"<script\b.*?</script>", "", seen, flags=re.S)
     assert not re.search(r"\b(red|green|blue) over|\bcycle\b|no order works", seen)
 
 
@@ -243,10 +246,10 @@ def test_05a_q_step_is_asked_before_its_answer_stands():
     ns = lesson("05a_zbuffer")
     assert ns.shown_at_end == 0 and ns.shown_other == ns.cube_steps[ns.k_open][0] > 0
     assert ns.shown_other != ns.culled_failed
-    seen = seen_before_check("05a_zbuffer", "q_step = Predict(", "q_step")
+    seen = seen_before_check("05a_zbuffer", "q_step = PredictPixels(", "q_step")
     assert f"showing triangle {ns.k_open}:" not in seen and "overwrit" not in seen
     cells = _cells("05a_zbuffer")
-    ask = _ask_index(cells, "q_step = Predict(")
+    ask = _ask_index(cells, "q_step = PredictPixels(")
     assert not any("ZBufferStepper(" in _source(c) for c in cells[:ask])
     # review r259 P-1: the stepper itself answers it (step to the later triangles): held too
     shown_stepper = next(c for c in cells[ask:] if "ZBufferStepper(" in _source(c))
