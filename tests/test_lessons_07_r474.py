@@ -9,7 +9,11 @@ the top edge's and the left edge's, v1 (top and left) drawn, v2 and v3 (each als
 hypotenuse, a right edge) not.
 S1: the relative float32 form is exact at 10⁶ px here because these vertices lie on float32's
 1/16-px grid there; said beside the claim.
+S2: Part 2 said "this section and lesson 02 give the rules"; it is lesson 02 §5b's
+``biased_coverage`` turned to y up, and says so.
 S3: the fan's counts in a table (tested in test_lessons_b's r145 fan test).
+S4: the picker numbers columns on top, as the lesson's grids do.
+S6: the far window's axis names at the title's size.
 """
 
 from __future__ import annotations
@@ -98,3 +102,33 @@ def test_the_relative_form_is_exact_here_because_the_vertices_are_on_float32s_gr
     assert "these vertices lie on its 1/16-px grid at $10^6$ px" in told
     (ask,) = [" ".join(t.split()) for t in _sources() if "q_far = PredictChoice(" in t]
     assert "all right: these vertices lie on float32's 1/16-px grid there" in ask
+
+
+def test_part_2_says_it_is_lesson_02s_biased_coverage_for_y_up():
+    (turn,) = [" ".join(t.split()) for t in _sources() if t.startswith("**Part 2: every coverage")]
+    assert "it is lesson 02 §5b's `biased_coverage` turned to $y$ up with Part 1's test" in turn
+    assert "(this section and lesson 02 give the rules)" not in turn
+    lesson02 = (ROOT / "notebooks" / "02_half_planes.ipynb").read_text()
+    assert "def biased_coverage(" in lesson02
+
+
+def test_the_far_windows_axis_names_are_the_titles_size():
+    (cell,) = [t for t in _sources() if "column in the window (px)" in t]
+    assert 'set_xlabel("column in the window (px)", fontsize=15)' in cell
+    assert 'set_title(f"float32, shifted by' in cell and "fontsize=15)" in cell
+
+
+def test_the_picker_numbers_columns_on_top_as_the_lesson_does():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from teachraster.widgets.case_picker import TICKS_KEY, window_ticks
+
+    fig, ax = plt.subplots()
+    window_ticks(ax, 0, 8, 0, 8)
+    assert ax.xaxis.get_ticks_position() == "top" and "columns (on top)" in TICKS_KEY
+    plt.close(fig)
+    helpers = next(t for t in _sources() if t.startswith("# The lesson's helpers"))
+    assert "ax.xaxis.tick_top()" in helpers  # rc_ticks: the lesson's own grids
