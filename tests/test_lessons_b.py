@@ -6110,7 +6110,9 @@ def test_07_review_r253_keys_labels_musts_and_the_d3d_convention():
     assert '((-6, -2), "right", "top")' not in persp and "off the frame" in persp
     # S-9: the window's axes say what their numbers are
     far = cells[at("q_far.hold()")]
-    assert 'xlabel="column in the window (px)", ylabel="row in the window (px)"' in far
+    # (r474 S6: at the title's 15 pt)
+    assert 'set_xlabel("column in the window (px)", fontsize=15)' in far
+    assert 'set_ylabel("row in the window (px)", fontsize=15)' in far
     # S-4: every remaining case prints its must
     rest = cells[at('# not "remaining"')]
     assert 'wrap(case.expect, "    must: ", "    ")' in rest
