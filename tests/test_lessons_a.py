@@ -114,6 +114,8 @@ ANSWERED_BELOW = {
     },
     "07_hard_cases": {
         "q_fan": ["FAN_TEXT = "],
+        # review r474 P2: the flat top's edge centres, clicked before the figure shows them
+        "q_flat": ["drops the flat top's top row", "top edge owns its row"],
         "q_gaps": ["GAPS_TEXT = ", "two strictly inside the wedge"],
         # review r227 P-1: the reading of q_far's figures was a Markdown cell under its held
         # cell, visible before Check ("thousands of pixels apart"); the held cell shows it now
