@@ -56,7 +56,8 @@ CELLS = [
     "footprint = FootprintExplorer()\nfootprint",
     "diamonds = DiamondExplorer()\ndiamonds",
     "pixels = PredictPixels('Click the pixels this triangle covers.', "
-    "answer=tr.rasterize(tri, 12, 10).coverage, draw=lambda ax: plot_triangle(ax, tri))\npixels",
+    "answer=tr.rasterize(tri, 12, 10).coverage, draw=lambda ax: plot_triangle(ax, tri), "
+    "picked='covered (E > 0)')\npixels",
     "nopixel = PredictPixels('Which pixels does this triangle draw?', "
     "answer=tr.rasterize(tri, 12, 10).coverage, none='<b>none</b>: it draws no pixel')\nnopixel",
     # the order question last: a click on the last cell (browser_cells) lands on its text
@@ -579,6 +580,8 @@ def test_html_export_stays_live(page, tmp_path):  # noqa: F811
     assert _frames(canvas) > before  # live with no kernel
     q = page.locator(".tr-x", has_text="Click the pixels").first
     assert q.get_by_role("button", name="Check").is_disabled()
+    # r474: the widget's own line showed "E &gt; 0" (escaped words set as text)
+    assert "you expect covered (E > 0) (drag" in q.inner_text(), q.inner_text()
     assert not page.errors, page.errors[:3]
 
 

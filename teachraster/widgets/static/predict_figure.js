@@ -380,7 +380,9 @@ function mountPixels(root, data, host) {
   const cell = data.cell || "pixel";
   const picked = data.picked || "lit";
   const cells = (n) => (n === 1 ? cell : `${cell}s`);
-  const note = element("div", { text: data.one ? `Click the ${cell} you expect ${picked}.`
+  // html, as the verdict is: data.cell and data.picked come HTML-escaped ("E &gt; 0" showed
+  // as such in lesson 07's q_flat when set as text: r474)
+  const note = element("div", { html: data.one ? `Click the ${cell} you expect ${picked}.`
     : `Click the ${cell}s you expect ${picked} (drag to paint several).` });
   root.insertBefore(note, canvas.parentElement);
   const W = data.width;
