@@ -5970,7 +5970,7 @@ def test_10_r264_m3_conservative_rasterisation_fig1_and_small_items():
         printed
     )
     assert "most inside corner fails: rejected, no pixel" not in printed.split("same coverage")[0]
-    assert "for a large triangle about half of those centres lie outside it" in md  # r281 C1
+    assert "for a large triangle half or more of those centres lie outside it" in md  # r480 S2
     assert "a roughly constant number of tests per covered pixel for each px of edge" in md
 
 
