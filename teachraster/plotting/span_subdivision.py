@@ -21,7 +21,7 @@ from .style import COLORS, OKABE_ITO
 #: smaller one (the misses fall to 0 at every exact divide) is drawn at ``MISS_BELOW``, in a
 #: grey band under the floor whose tick reads "< 0.01", and the key says so.
 MISS_FLOOR, MISS_TOP = 0.01, 400.0
-MISS_BELOW, MISS_BOTTOM = 0.0035, 0.0012
+MISS_BELOW, MISS_BOTTOM = 0.0015, 0.0005  # "< 0.01" a line of text under "0.01" (r479 S2)
 #: Points per pixel of the fine curves (true u, and the chords' miss between pixel centres).
 FINE_PER_PIXEL = 8
 
