@@ -11215,7 +11215,7 @@ R470 = {
         "your case also needs 'orient after snapping'", "also needs"),
     "breaking case: a triangle the naive fill already gets right": (
         "breaking_case", _bc470("precision", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
-        "the naive fill itself is right on your case", "float32 right"),
+        "the naive fill itself is right on your case, its float32 A·x + B·y + C too", "float32 right"),
     "breaking case: for 'snap', a triangle on the grid": (
         "breaking_case", _bc470("snap", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
         "your vertices are on the 1/256-px grid already: snapping moves none", "on the grid"),

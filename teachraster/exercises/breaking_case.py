@@ -472,8 +472,9 @@ def _compose(head: str, words: str) -> str:
 
 
 def draw_case(ax, case, got):
-    """The student's window: where the fill with every other repair differs from the GPU's
-    (missing, extra), and the snapped triangle; nothing before an answer."""
+    """The student's window: where the fill with every other repair (for a case that also
+    needs another, the fill with the repair alone) differs from the GPU's (missing, extra),
+    and the snapped triangle; nothing before an answer."""
     if isinstance(got, str):  # a passing report's example: its answer is the repair's name
         ax.set_axis_off()
         return [ax.text(0.5, 0.5, "a case for each repair:\nsee the printed report", ha="center",
@@ -482,8 +483,14 @@ def draw_case(ax, case, got):
         ax.set_axis_off()
         return []
     repair = case[1][0]
-    label = f"naive fill with every repair but '{repair}'"
-    return draw_fill(ax, (label, got, expected_fill(*got)), repaired_fill(*got, _others(repair)))
+    found = verdict(repair, got)  # r478 FIG1: the fill the words speak of, named on the axis
+    if found is not None and found[0] == "also needs":
+        repairs, label = _alone(repair), f"the naive fill with '{repair}' alone"
+    else:
+        repairs, label = _others(repair), f"the naive fill with every repair but '{repair}'"
+    artists = draw_fill(ax, (label, got, expected_fill(*got)), repaired_fill(*got, repairs))
+    ax.set_xlabel(f"column (x, px); drawn: {label}, against rasterize")
+    return artists
 
 
 #: r478 W1: the package's fills, run while ``breaking_case`` runs: a search for the case (the
