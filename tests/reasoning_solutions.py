@@ -352,7 +352,8 @@ def breaking_case(repair):
         return [[2, y0 + 0.0019], [3, y0 - 0.0019], [11, y0 - 0.030]], 12, 4, (0, 0)
     if repair == "tie rule":  # a right edge through three centres
         return [[4.5, 1.0], [4.5, 4.0], [1.5, 2.5]], 6, 6, (0, 0)
-    # centre (1000.5, 1000.5) 1/64 px² inside v1→v2, where float32's numbers are 1/16 px² apart
+    # centre (1004.5, 1000.5) 17/1024 px² outside v2→v3; float32 rounds C's 10⁶-px² products
+    # to 1/16 px² (r478 F1)
     return [[996.5, 1000.5], [1004.5, 1000.5 - 1 / 256], [1000.25, 1006.0]], 12, 12, (996, 996)
 
 

@@ -11215,7 +11215,7 @@ R470 = {
         "your case also needs 'orient after snapping'", "also needs"),
     "breaking case: a triangle the naive fill already gets right": (
         "breaking_case", _bc470("precision", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
-        "the naive fill itself is right on your case", "naive right"),
+        "the naive fill itself is right on your case, its float32 A·x + B·y + C too", "float32 right"),
     "breaking case: for 'snap', a triangle on the grid": (
         "breaking_case", _bc470("snap", ([[1.0, 1.0], [9.0, 2.0], [3.0, 9.0]], 10, 10, (0, 0))),
         "your vertices are on the 1/256-px grid already: snapping moves none", "on the grid"),
@@ -11328,4 +11328,84 @@ DIFFERENT.update({
     "breaking case: numpy arrays and numpy integers (r470)": (
         "breaking_case", lambda r: (np.asarray(_rs.breaking_case(r)[0]), np.int64(_rs.breaking_case(r)[1]),
                                     np.int32(_rs.breaking_case(r)[2]), np.array(_rs.breaking_case(r)[3]))),
+})  # fmt: skip
+# == r478: exercise 10.3, breaking_case, verifying read: catalogue copies turned or mirrored,
+# float32 right, ties on an edge's line only, repair names spelled otherwise =================
+_BC478_F32 = [[496.5, 500.5], [504.5, 500.5 - 1 / 256], [500.25, 506.0]]
+#: label: (exercise, function, words its first explanation must hold, its kind).
+R478 = {
+    "breaking case: 10.2's half-step case with x and y swapped": (
+        "breaking_case", _bc470("snap", ([[1.0, 2.501953125], [9.0, 2.501953125], [5.0, 9.0]], 12, 12, (0, 0))),
+        "'half step: vertices half-way between 1/256 grid points' of 10.2's check (lesson 07's "
+        "catalogue or the check's own) with x and y swapped", "catalogue"),
+    "breaking case: subpixel_triangles mirrored for 'tie rule'": (
+        "breaking_case", _bc470("tie rule", ([[-5.5, 5.5], [-5.8, 5.5], [-5.5, 5.8]], 12, 12, (0, -12))),
+        "'subpixel_triangles, triangle 2' of 10.2's check (lesson 07's catalogue or the check's "
+        "own) mirrored left to right", "catalogue"),
+    "breaking case: snap_flips_winding at 10⁶ px transposed for 'tie rule'": (
+        "breaking_case", _bc470("tie rule", ([[1000002.5, 1000002.5], [1000002.50234375, 1000002.5390625],
+                                              [1000002.5015625, 1000002.51953125]], 6, 6, (1000000, 1000000))),
+        "with x and y swapped, moved by whole pixels at most", "catalogue"),
+    "breaking case: 'precision' at 500 px, float32 still right": (
+        "breaking_case", _bc470("precision", (_BC478_F32, 12, 12, (496, 496))),
+        "C's products (a.x·b.y, a.y·b.x) reach 255,277 px² there, where float32's numbers are "
+        "0.015625 px² apart", "float32 right"),
+    "breaking case: 'precision' with the nearest centre 1/4 px from the edge": (
+        "breaking_case", _bc470("precision", ([[996.5, 1000.25], [1004.5, 1000.25], [1000.25, 1006.0]],
+                                              12, 12, (996, 996))),
+        "more than those steps: float32 cannot put it on the wrong side", "float32 right"),
+    "breaking case: 'tie rule' with whole-pixel vertices": (
+        "breaking_case", _bc470("tie rule", ([[4, 1], [4, 4], [1, 2]], 6, 6, (0, 0))),
+        "the centres on your triangle's edges (the first: (2.5, 1.5)) lie on top or left edges",
+        "top-left ties"),
+    "breaking case: 'tie rule' with centres on an edge's line beyond the triangle": (
+        "breaking_case", _bc470("tie rule", ([[3.5, 1.0], [3.5, 1.25], [1.25, 1.1]], 6, 6, (0, 0))),
+        "no pixel centre of your window lies exactly on an edge", "no tie"),
+    "breaking case: repair names spelled otherwise ('orient', 'ties', 'float64')": (
+        "breaking_case", lambda r: _rs.breaking_case({"orient": "orient after snapping", "ties": "tie rule",
+                                                      "float64": "precision"}.get(r, "snap")),
+        "or names that are not the task's four ('snap', 'orient after snapping', 'tie rule' and "
+        "'precision', spelled exactly so)", "constant"),
+    "breaking case: 'snap' case moved to 500 px (needs 'precision' too)": (
+        "breaking_case", _bc470("snap", ([[502.5, 504.5 - 1 / 256], [510.5, 504.5 + 1.6 / 256], [506.0, 501.0]],
+                                         12, 8, (500, 500))),
+        "your case also needs 'precision'", "also needs"),
+    "breaking case: an orientation sliver that snaps flat": (
+        "breaking_case", _bc470("orient after snapping", ([[2.0, 2.5], [10.0, 2.5 + 0.3 / 256],
+                                                           [6.0, 2.5 - 0.2 / 256]], 12, 4, (0, 0))),
+        "your triangle is degenerate: snapped", "degenerate"),
+    "breaking case: 'tie rule' with the origin given as (x, y)": (
+        "breaking_case", _bc470("tie rule", ([[14.5, 1.0], [14.5, 4.0], [11.5, 2.5]], 6, 6, (10, 0))),
+        "origin is (row, col), and your window at (10, 0) holds no pixel", "origin as (x, y)"),
+    "breaking case: a negative case with the origin's sign lost": (
+        "breaking_case", _bc470("precision", ([[-1003.5, -999.5], [-995.5, -999.5 - 1 / 256],
+                                               [-999.75, -994.0]], 12, 12, (996, 996))),
+        "misses the pixel where 'precision' changes the fill: row -1000, column -996", "window misses"),
+    "breaking case: 'snap' with an edge that moves but crosses no centre": (
+        "breaking_case", _bc470("snap", ([[2.3 + 0.4 / 256, 1.3], [6.3 + 0.4 / 256, 5.7], [1.2, 6.1]],
+                                         8, 8, (0, 0))),
+        "the naive fill itself is right on your case (every pixel", "naive right"),
+    "breaking case: xy as [[x1, x2, x3], [y1, y2, y3]]": (
+        "breaking_case", lambda r: ([list(c) for c in zip(*_rs.breaking_case(r)[0])], *_rs.breaking_case(r)[1:]),
+        "xy must have shape (3, 2), got (2, 3)", "type"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R478.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R478.items()})
+DIFFERENT.update({
+    "breaking case: a steep snap edge, a vertex tie, clockwise precision, a vertical sliver (r478)": (
+        "breaking_case", lambda r: {
+            "snap": ([[2.5 + 0.49 / 256, 1.0], [2.5 - 0.51 / 256, 5.0], [6.25, 3.125]], 8, 7, (0, 0)),
+            "orient after snapping": (np.array([[2.5 + 1 / 256 + 0.0019, 2], [2.5 + 1 / 256 - 0.0019, 3],
+                                                [2.5 + 1 / 256 - 0.030, 11]], np.float32), 4, 12, (0, 0)),
+            "tie rule": ([[2.5, 2.5], [0.25, 1.0], [0.5, 4.0]], 5, 5, (0, 0)),
+            "precision": [[[996.5, 1000.5], [1000.25, 1006.0], [1004.5, 1000.5 - 1 / 256]], 12, 12,
+                          np.array([996, 996])],
+        }[r]),
+    "breaking case: negative snap, a diagonal tie at 500 px, a shallow precision edge (r478)": (
+        "breaking_case", lambda r: {
+            "snap": ([[-7.5 + 0.49 / 256, -9.0], [-3.75, -6.875], [-7.5 - 0.51 / 256, -5.0]], 8, 7, (-10, -10)),
+            "orient after snapping": _rs.breaking_case(r),
+            "tie rule": (np.array([[500.5, 500.5], [503.5, 503.5], [500.25, 503.75]]), 5, 5, (500, 500)),
+            "precision": ([[990.5, 1010.5], [1010.5, 1010.5 - 3 / 256], [1000.25, 1016.0]], 24, 10, (1006, 988)),
+        }[r]),
 })  # fmt: skip

@@ -26,11 +26,14 @@ from functools import cache
 import numpy as np
 
 from ..core.edges import edge_function, is_top_left
+from ..core.fill import rasterize
 from ..core.snapping import snap
 from ..core.validate import as_finite, as_int, as_size
 from ..study.hardcases import naive_coverage
+from ..study.hardcases.precision_cases import fill_window
+from ..study.operation_counts import rule_coverage
 from .answers import refuse_non_answers, short
-from .exercise import Exercise, Mistake
+from .exercise import Exercise, Mistake, PackageAnswer
 from .hard_case_fill import MOST_ACROSS, MOST_FAR, draw_fill, expected_fill, fixed_cases
 from .running import WrongAnswerType
 
@@ -39,7 +42,7 @@ REPAIRS = ("snap", "orient after snapping", "tie rule", "precision")
 #: The largest window side (pixels), as 10.2's.
 MOST_WINDOW = 64
 #: "precision": every coordinate (vertices, the window's pixels) within this many px of the
-#: origin; float32 holds the 1/256-px grid up to 2^15 px, but A·x + B·y + C needs
+#: origin; float32 holds the 1/256-px grid up to 2^16 px (2^24 steps), but A·x + B·y + C needs
 #: 2·(10 + 8) + 2 = 38 bits here (10.1's count), float32 24.
 PRECISION_FAR = 2**10
 #: "tie rule": the snapped triangle at most this many px across (lesson 07's tie cases are wider).
@@ -126,22 +129,45 @@ def _across(xy) -> float:
     return float(np.ptp(snap(xy), axis=0).max())
 
 
+#: r478 W2: the grid's symmetries, (words, 2 × 2 matrix on (x, y)); each maps pixel centres
+#: onto pixel centres (x → −x takes j + ½ to −(j + 1) + ½), so a catalogue case transformed
+#: and moved by whole pixels is the same construction.
+SYMMETRIES = (
+    ("", ((1, 0), (0, 1))),
+    (" with x and y swapped", ((0, 1), (1, 0))),
+    (" mirrored left to right", ((-1, 0), (0, 1))),
+    (" mirrored top to bottom", ((1, 0), (0, -1))),
+    (" turned half a turn", ((-1, 0), (0, -1))),
+    (" turned a quarter turn", ((0, -1), (1, 0))),
+    (" turned a quarter turn the other way", ((0, 1), (-1, 0))),
+    (" with x and y swapped and both mirrored", ((0, -1), (-1, 0))),
+)
+
+
 @cache
-def _catalogue() -> tuple:
-    """(label, snapped vertices) of 10.2's fixed cases: lesson 07's catalogue and the rest."""
-    return tuple((label, snap(args[0])) for label, args, _ in fixed_cases())
+def _catalogue() -> tuple[tuple, np.ndarray]:
+    """The names ((label, " with x and y swapped")) and the snapped vertices, in each vertex
+    order: (n, 6, 3, 2), of 10.2's fixed cases (lesson 07's catalogue and the rest) under
+    each of :data:`SYMMETRIES`."""
+    orders = [list(o) for o in itertools.permutations(range(3))]
+    names, triangles = [], []
+    for label, args, _ in fixed_cases():
+        c = snap(args[0])
+        for words, m in SYMMETRIES:
+            names.append((label, words))
+            triangles.append((c @ np.array(m, dtype=float).T)[orders])
+    return tuple(names), np.array(triangles)
 
 
-def catalogue_label(xy) -> str | None:
-    """The catalogue case (or 10.2's) whose snapped triangle this is, moved by whole pixels
-    and in any vertex order; None if none."""
-    s = snap(xy)
-    for label, c in _catalogue():
-        for order in itertools.permutations(range(3)):
-            shift = s[list(order)] - c
-            if np.all(shift == np.rint(shift)) and np.all(shift == shift[0]):
-                return label
-    return None
+def catalogue_label(xy) -> tuple[str, str] | None:
+    """The catalogue case (or 10.2's) whose snapped triangle this is, moved by whole pixels,
+    in any vertex order, mirrored or turned (:data:`SYMMETRIES`): its label and the words of
+    the transform (``("d3d_split_square, triangle 0", " with x and y swapped")``), or None."""
+    names, triangles = _catalogue()
+    shift = snap(xy) - triangles  # (n, 6, 3, 2)
+    whole = np.all(shift == np.rint(shift), axis=(2, 3))
+    found = np.argwhere(whole & np.all(shift == shift[:, :, :1], axis=(2, 3)))
+    return names[found[0][0]] if found.size else None
 
 
 def _diff_pixel(case, repairs) -> tuple[int, int] | None:
@@ -249,8 +275,10 @@ def _unneeded(repair: str, case) -> tuple[str, str]:
     if note:
         return note
     if _diff_pixel(case, ()) is None:
-        return "naive right", ("the naive fill itself is right on your case (every pixel of "
-                               "the window as rasterize gives it): there is nothing to repair")  # fmt: skip
+        note = _float32_note(case) if repair == "precision" else None
+        naive = ("the naive fill itself is right on your case (every pixel of the window as "
+                 "rasterize gives it): there is nothing to repair")  # fmt: skip
+        return note or ("naive right", naive)
     needed = [r for r in REPAIRS if _diff_pixel(case, _others(r)) is not None]
     off = _off_grid(case[0])
     if needed:
@@ -281,16 +309,48 @@ def _why_unchanged(repair: str, case) -> tuple[str, str] | None:
     return None
 
 
-def _tie_note(case) -> tuple[str, str] | None:
-    """Words for a tie case the rule does not change: no centre on an edge, or only on top
-    and left edges (which E ≥ 0 covers too)."""
+def _float32_note(case) -> tuple[str, str] | None:
+    """r478 H1: words for a "precision" case float32 gets right: how large C's products are,
+    float32's steps there, and how near to an edge the nearest centre it decides lies."""
     xy, width, height, (row, col) = case
     s = snap(xy)
     s = s if edge_function(*s) > 0 else s[[0, 2, 1]]
     centres = np.stack(np.meshgrid(col + np.arange(width) + 0.5, row + np.arange(height) + 0.5),
                        axis=-1).reshape(-1, 2)  # fmt: skip
-    ties = [(k, p) for k in range(3)
-            for p in centres[edge_function(s[k], s[(k + 1) % 3], centres) == 0]]  # fmt: skip
+    e = np.stack([edge_function(s[k], s[(k + 1) % 3], centres) for k in range(3)])
+    # the edge decides a centre where the other two hold it; its exact E there (on the grid)
+    decided = [np.abs(e[k][(e[k] != 0) & np.all(np.delete(e, k, axis=0) >= 0, axis=0)])
+               for k in range(3)]  # fmt: skip
+    near = np.concatenate(decided)
+    if not near.size:
+        return None
+    products = float(np.abs(s[:, 0] * np.roll(s[:, 1], -1)).max())
+    products = max(products, float(np.abs(s[:, 1] * np.roll(s[:, 0], -1)).max()))
+    step, d = float(np.spacing(np.float32(products))), float(near.min())
+    how = ("more than those steps: float32 cannot put it on the wrong side; a case needs a "
+           "centre nearer an edge than float32's rounding of those products" if d > 2 * step
+           else "within those steps, but float32's roundings happen to fall on the right side "
+           "there; they need not: try the triangle farther out (float32's steps double with "
+           "each power of two) or another centre")  # fmt: skip
+    return "float32 right", (f"the naive fill itself is right on your case, its float32 "
+                             f"A·x + B·y + C too: C's products (a.x·b.y, a.y·b.x) reach "
+                             f"{products:,.0f} px² there, where float32's numbers are {step:g} "
+                             f"px² apart, and the centre nearest an edge that decides it lies "
+                             f"{d:g} px² from it (E, exact on the grid), {how}")  # fmt: skip
+
+
+def _tie_note(case) -> tuple[str, str] | None:
+    """Words for a tie case the rule does not change: no centre on an edge (within the
+    triangle: a centre on an edge's line beyond its vertices is no tie), or only on top and
+    left edges (which E ≥ 0 covers too)."""
+    xy, width, height, (row, col) = case
+    s = snap(xy)
+    s = s if edge_function(*s) > 0 else s[[0, 2, 1]]
+    centres = np.stack(np.meshgrid(col + np.arange(width) + 0.5, row + np.arange(height) + 0.5),
+                       axis=-1).reshape(-1, 2)  # fmt: skip
+    e = np.stack([edge_function(s[k], s[(k + 1) % 3], centres) for k in range(3)])
+    inside = np.all(e >= 0, axis=0)  # r478 H2: on the triangle's edges, not their lines
+    ties = [(k, p) for k in range(3) for p in centres[(e[k] == 0) & inside]]
     if not ties:
         return "no tie", ("no pixel centre of your window lies exactly on an edge of your "
                           "snapped triangle: a tie rule decides such centres only")  # fmt: skip
@@ -335,11 +395,11 @@ def _verdict_of(repair: str, case) -> tuple[str, str] | None:
     words = _range_words(case)
     if words:
         return "out of range", words
-    label = catalogue_label(xy)
-    if label is not None:
-        return "catalogue", (f"your triangle is the case '{label}' of 10.2's check (lesson "
-                             "07's catalogue or the check's own), moved by whole pixels at "
-                             "most: find one of your own")  # fmt: skip
+    found = catalogue_label(xy)
+    if found is not None:
+        return "catalogue", (f"your triangle is the case '{found[0]}' of 10.2's check (lesson "
+                             f"07's catalogue or the check's own){found[1]}, moved by whole "
+                             "pixels at most: find one of your own")  # fmt: skip
     words = _bound_words(repair, case)
     if words:
         return "outside the bounds", words
@@ -366,7 +426,8 @@ def verdict(repair: str, case) -> tuple[str, str] | None:
 #: The kinds of a wrong case, most specific first.
 KINDS = ("degenerate", "out of range", "catalogue", "outside the bounds", "origin as (x, y)",
          "window misses", "another repair's case", "on the grid", "no flip", "covers nothing",
-         "no tie", "top-left ties", "naive right", "not needed", "also needs")  # fmt: skip
+         "no tie", "top-left ties", "float32 right", "naive right", "not needed",
+         "also needs")  # fmt: skip
 
 
 def _mistake(kind: str) -> Mistake:
@@ -400,8 +461,10 @@ def _rule(args, expected, got) -> str:
 def _constant(value) -> str:
     return (f"your function returns the same case, the triangle "
             f"{', '.join(_point(p) for p in value[0])} in a {value[1]} × {value[2]} window, "
-            "for every repair, whatever its argument: a placeholder left in? A case that needs "
-            "one repair alone cannot need another alone: each repair has a case of its own")  # fmt: skip
+            "for every repair, whatever its argument: a placeholder left in, or names that are "
+            f"not the task's four ({_quoted(REPAIRS)}, spelled exactly so)? A case "
+            "that needs one repair alone cannot need another alone: each repair has a case of "
+            "its own")  # fmt: skip
 
 
 def _compose(head: str, words: str) -> str:
@@ -409,8 +472,9 @@ def _compose(head: str, words: str) -> str:
 
 
 def draw_case(ax, case, got):
-    """The student's window: where the fill with every other repair differs from the GPU's
-    (missing, extra), and the snapped triangle; nothing before an answer."""
+    """The student's window: where the fill with every other repair (for a case that also
+    needs another, the fill with the repair alone) differs from the GPU's (missing, extra),
+    and the snapped triangle; nothing before an answer."""
     if isinstance(got, str):  # a passing report's example: its answer is the repair's name
         ax.set_axis_off()
         return [ax.text(0.5, 0.5, "a case for each repair:\nsee the printed report", ha="center",
@@ -419,12 +483,28 @@ def draw_case(ax, case, got):
         ax.set_axis_off()
         return []
     repair = case[1][0]
-    label = f"naive fill with every repair but '{repair}'"
-    return draw_fill(ax, (label, got, expected_fill(*got)), repaired_fill(*got, _others(repair)))
+    found = verdict(repair, got)  # r478 FIG1: the fill the words speak of, named on the axis
+    if found is not None and found[0] == "also needs":
+        repairs, label = _alone(repair), f"the naive fill with '{repair}' alone"
+    else:
+        repairs, label = _others(repair), f"the naive fill with every repair but '{repair}'"
+    artists = draw_fill(ax, (label, got, expected_fill(*got)), repaired_fill(*got, repairs))
+    ax.set_xlabel(f"column (x, px); drawn: {label}, against rasterize")
+    return artists
 
+
+#: r478 W1: the package's fills, run while ``breaking_case`` runs: a search for the case (the
+#: checker's own code, its judge ``repaired_fill`` among it, is watched as every checker's).
+SEARCH_WORDS = (
+    "a fill of the package's, which the check judges your cases by: a search that runs it "
+    "while breaking_case runs finds the case for you, and is not counted (try candidates with "
+    "it in a cell of your own; breaking_case returns the numbers of the cases you reasoned out)"
+)
+SEARCH_ANSWERS = tuple(PackageAnswer(f, words=SEARCH_WORDS)
+                       for f in (rasterize, naive_coverage, rule_coverage, fill_window))  # fmt: skip
 
 BREAKING_CASE = Exercise(
     "breaking_case", cases, as_case, _same, _explain, _rule,
     [_mistake(kind) for kind in KINDS], draw=draw_case, compose=_compose, constant=_constant,
-    reference=("teachraster.exercises.hard_case_fill",),
+    reference=("teachraster.exercises.hard_case_fill",), answers=SEARCH_ANSWERS,
 )  # fmt: skip
