@@ -98,6 +98,61 @@ def pytest_args(args):
     return args
 
 
+#: Run beside ruff, in two processes (half the files each), before pytest: what every pytest
+#: worker would otherwise do at once on a fresh clone, each for itself, as it collects. It
+#: rewrites the asserts of the test modules with pytest's own rewriter into the pyc files
+#: pytest reads back (keyed by the source's hash, so a stale one is never used; pytest's
+#: private API: where it differs, nothing is done and the workers rewrite as before) and
+#: compiles the package and the test helpers. Measured on a fresh copy: 11.8 s of CPU once,
+#: after which a collection took 6.9 s of CPU instead of 27.5 (about 30 s less a run with
+#: two workers). Never fails the run.
+PREWARM = r"""
+import compileall, sys
+from pathlib import Path
+part, parts = int(sys.argv[1]), int(sys.argv[2])
+try:
+    from _pytest.assertion.rewrite import (
+        PYC_TAIL, _rewrite_test, _write_pyc, get_cache_dir, try_makedirs)
+except ImportError:
+    sys.exit(0)
+if sys.dont_write_bytecode:
+    sys.exit(0)
+class State:
+    def trace(self, *args):
+        pass
+tests = Path("tests").resolve()
+files = sorted(tests.glob("test_*.py"), key=lambda f: -f.stat().st_size)
+for f in [*files, tests / "conftest.py"][part::parts]:
+    try:
+        source_hash, co = _rewrite_test(f, None)
+        folder = get_cache_dir(f)
+        if try_makedirs(folder):
+            _write_pyc(State(), co, source_hash, folder / (f.name[:-3] + PYC_TAIL))
+    except Exception:
+        pass
+if part == 0:
+    compileall.compile_dir("teachraster", quiet=2)
+    compileall.compile_dir("tests", quiet=2, maxlevels=0)
+"""
+
+
+def prewarm():
+    """Start :data:`PREWARM`'s processes; returns them (waited for by :func:`test`)."""
+    parts = 2
+    try:
+        return [
+            subprocess.Popen(
+                [str(PYTHON), "-c", PREWARM, str(k), str(parts)],
+                cwd=ROOT,
+                stdout=subprocess.DEVNULL,
+                stderr=subprocess.DEVNULL,
+            )
+            for k in range(parts)
+        ]
+    except OSError:
+        return []
+
+
 def test(args):
     ensure_venv("dev")
     os.environ.setdefault("MPLBACKEND", "Agg")  # doctests and tests never open windows
@@ -115,7 +170,14 @@ def test(args):
         # last, so its summary closes the output
         "pytest": [PYTHON, "-m", "pytest", *pytest_args(args)],
     }
-    failed = [name for name, cmd in steps.items() if run(cmd) != 0]
+    warming = prewarm()
+    failed = []
+    for name, cmd in steps.items():
+        if name == "pytest":
+            for proc in warming:
+                proc.wait()
+        if run(cmd) != 0:
+            failed.append(name)
     if failed:
         sys.exit(f"dev.py: FAILED: {', '.join(failed)}")
 
