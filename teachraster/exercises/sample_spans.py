@@ -463,7 +463,7 @@ MISTAKES = {
     "epsilon added for safety, does exactly this)",
     "right edge owns the sample": "you covered the sample that lies exactly on the right edge: "
     "the top-left rule does not change at a sample (a right edge owns none of its points; the "
-    "span stops before it)",
+    "span stops before it; an edge test E ≥ 0 on all three edges, with no tie rule, covers it)",
     "left edge loses the sample": "you left out the sample that lies exactly on the left edge: "
     "the top-left rule does not change at a sample (a left edge owns its points)",
     "epsilon": lambda args, expected, got: _epsilon_words(args, expected, got),
