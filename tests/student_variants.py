@@ -8319,6 +8319,173 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R471.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R471.items()})
 
 
+# -- r477 (exercise 2.2, a fresh reader): tolerances near a sample, 2.1's rounding slips at the
+# sample, other wrong points and lines, rows, the split on another line, another sample
+_r477_right = _r471_with()
+
+
+def _r477_ends(first_fn, stop_fn):
+    """The first of one variant, the stop of another."""
+    return lambda xy, row, sample: (first_fn(xy, row, sample)[0], stop_fn(xy, row, sample)[1])
+
+
+def _r477_snap(xy, row, sample):
+    """float64 divided first, a crossing within 1e-9 of a sample snapped onto it."""
+    sx, sy = float(sample[0]), float(sample[1])
+    v = sorted(((float(x), float(y)) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = row + sy
+    if (x2 - x1) * (y3 - y1) == (y2 - y1) * (x3 - x1) or not y1 <= y < y3:
+        return 0, 0
+    if y1 == y2 == y:
+        lo, hi = sorted((x1, x2))
+    else:
+        at = lambda a, b: (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) + a[0]  # noqa: E731
+        lo, hi = sorted((at(v[0], v[2]), at(v[0], v[1]) if y < y2 else at(v[1], v[2])))
+    snap = lambda t: round(t) if math.isclose(t, round(t), abs_tol=1e-9) else math.ceil(t)  # noqa: E731
+    return snap(lo - sx), snap(hi - sx)
+
+
+def _r477_interp(xy, row, sample):
+    """np.interp for the crossings (float64), the rule right."""
+    sx, sy = float(sample[0]), float(sample[1])
+    v = sorted(((float(x), float(y)) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = row + sy
+    side = (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+    if side == 0 or not y1 <= y < y3:
+        return 0, 0
+    if y1 == y2 == y:
+        lo, hi = sorted((x1, x2))
+    else:
+        xa = np.interp(y, [y1, y3], [x1, x3])
+        xb = np.interp(y, [y1, y2], [x1, x2]) if y < y2 else np.interp(y, [y2, y3], [x2, x3])
+        lo, hi = (xa, xb) if side > 0 else (xb, xa)
+    return math.ceil(lo - sx), math.ceil(hi - sx)
+
+
+def _r477_no_rows(xy, row, sample):
+    """No row test: the long edge and a short edge (by the sample line) extended to any line."""
+    sx, sy = Fraction(float(sample[0])), Fraction(float(sample[1]))
+    v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+    (x1, y1), (x2, y2), (x3, y3) = v
+    y = row + sy
+    if y1 <= y < y3 or y1 == y2 or y2 == y3:
+        return _r477_right(xy, row, sample)
+    at = lambda a, b: a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])  # noqa: E731
+    lo, hi = sorted((at(v[0], v[2]), at(v[0], v[1]) if y < y2 else at(v[1], v[2])))
+    return math.ceil(lo - sx), math.ceil(hi - sx)
+
+
+def _r477_horizontal(top_owned=True, bottom_owned=False):
+    """The sample line along a horizontal top edge (owned or not) or bottom edge (owned or not)."""
+
+    def sample_span(xy, row, sample):
+        sx, sy = Fraction(float(sample[0])), Fraction(float(sample[1]))
+        v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
+        y = row + sy
+        if v[0][1] == v[1][1] == y != v[2][1] and not top_owned:
+            return 0, 0
+        if v[1][1] == v[2][1] == y != v[0][1] and bottom_owned:
+            lo, hi = sorted((v[1][0], v[2][0]))
+            return math.ceil(lo - sx), math.ceil(hi - sx)
+        return _r477_right(xy, row, sample)
+
+    return sample_span
+
+
+_eps9 = lambda t: math.ceil(t - Fraction(1, 10**9))  # noqa: E731
+R477 = {
+    "sample span, an epsilon of 1e-9 on the ends": (
+        "sample_span", _r471_with(first=_eps9, stop=_eps9),
+        "an epsilon on the ends (for safety)", "epsilon"),
+    "sample span, float64 crossings snapped to a sample within 1e-9": (
+        "sample_span", _r477_snap, "snapped to a sample within a tolerance", "epsilon"),
+    "sample span, np.interp for the crossings": (
+        "sample_span", _r477_interp, "and your x_l came out a hair off it", "tie lands off"),
+    "sample span, round(x − sx)": (
+        "sample_span", _r471_with(first=round, stop=round),
+        "you rounded x − sx to the nearest column (round())", "round(x − sx)"),
+    "sample span, ⌊x − sx + ½⌋": (
+        "sample_span", _r471_with(first=lambda t: math.floor(t + _HALF), stop=lambda t: math.floor(t + _HALF)),
+        "you rounded x − sx to the nearest column (⌊x − sx + ½⌋)", "⌊x − sx + ½⌋"),
+    "sample span, first = ⌊x_l − sx⌋": (
+        "sample_span", _r471_with(first=math.floor),
+        "you floored x_l − sx", "first floored"),
+    "sample span, stop = ⌊x_r − sx⌋": (
+        "sample_span", _r471_with(stop=math.floor),
+        "you floored x_r − sx, which is the last covered column", "stop floored"),
+    "sample span, int(x − sx)": (
+        "sample_span", _r471_with(first=int, stop=int),
+        "you rounded with int(), which truncates toward zero", "int(x − sx)"),
+    "sample span, stop + 1": (
+        "sample_span", _r471_with(stop=lambda t: math.ceil(t) + 1),
+        "your stop is one too large", "stop + 1"),
+    "sample span, (first, last)": (
+        "sample_span", _r471_with(stop=lambda t: math.ceil(t) - 1),
+        "you returned the last covered column as the second number", "last, not stop"),
+    "sample span, columns clipped at 0": (
+        "sample_span", lambda xy, row, sample: tuple(max(c, 0) for c in _r477_right(xy, row, sample)),
+        "you clipped the columns at 0", "clip at 0"),
+    "sample span, ½ left in the stop": (
+        "sample_span", _r477_ends(_r477_right, _r471_with(ox=lambda sx, sy: _HALF)),
+        "but your stop still for the centre (x_r − ½)", "½ left in the stop"),
+    "sample span, x measured from the right: col + 1 − sx": (
+        "sample_span", _r471_with(ox=lambda sx, sy: 1 - sx),
+        "you put the sample at x = col + 1 − sx", "x mirrored"),
+    "sample span, y up: the line y = row + 1 − sy": (
+        "sample_span", _r471_with(oy=lambda sx, sy: 1 - sy),
+        "you crossed the edges with the line y = row + 1 − sy", "y mirrored"),
+    "sample span, the line y = row + sx": (
+        "sample_span", _r471_with(oy=lambda sx, sy: sx),
+        "you crossed the edges with the line y = row + sx", "sx on the line"),
+    "sample span, the sample at the corner plus (s − ½)": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sx - _HALF, oy=lambda sx, sy: sy - _HALF),
+        "you put the sample at (col + sx − ½, row + sy − ½)", "offsets less ½"),
+    "sample span, ⌈x − sx − ½⌉": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sx + _HALF),
+        "you took both ½ and sx off the crossings", "½ and sx in x"),
+    "sample span, ⌈x − 2·sx⌉": (
+        "sample_span", _r471_with(ox=lambda sx, sy: 2 * sx),
+        "you took sx off the crossings twice", "sx twice"),
+    "sample span, the line y = row + sy − ½": (
+        "sample_span", _r471_with(oy=lambda sx, sy: sy - _HALF),
+        "you crossed the edges with the line y = row + sy − ½", "line y = row + sy − ½"),
+    "sample span, the rows decided at y = row": (
+        "sample_span", _r471_with(rows_y=Fraction(0)),
+        "by the line y = row, the pixels' top", "rows at y = row"),
+    "sample span, the split decided at y = row": (
+        "sample_span", _r471_with(split_y=Fraction(0)),
+        "but chose the short edge by the line y = row", "split at y = row"),
+    "sample span, the split decided at y = row + 1": (
+        "sample_span", _r471_with(split_y=Fraction(1)),
+        "but chose the short edge by the line y = row + 1", "split at y = row + 1"),
+    "sample span, no row test": (
+        "sample_span", _r477_no_rows,
+        "does not meet the triangle (or runs along its bottom edge), yet you covered columns",
+        "row outside the triangle"),
+    "sample span, a top edge on the sample line owns nothing": (
+        "sample_span", _r477_horizontal(top_owned=False),
+        "a top edge (the triangle below it) owns the samples on it", "top edge left out"),
+    "sample span, a bottom edge on the sample line owns its samples": (
+        "sample_span", _r477_horizontal(bottom_owned=True),
+        "a bottom edge (the triangle above it) owns none", "bottom edge owns its samples"),
+    "sample span, always sample 0 of the pattern": (
+        "sample_span", lambda xy, row, sample: _r477_right(xy, row, (0.375, 0.125)),
+        "your columns are those of sample 0", "sample 0"),
+    "sample span, vertices rounded to the 1/16 grid": (
+        "sample_span", lambda xy, row, sample: _r477_right(np.round(16 * np.asarray(xy, float)) / 16, row, sample),
+        "the vertices rounded to the 1/16-px grid", "vertices on the 1/16 grid"),
+}  # fmt: skip
+DIFFERENT.update({
+    "sample span, an epsilon of 1e-12 (below any gap in the range) (r477)": (
+        "sample_span", _r471_with(first=lambda t: math.ceil(t - Fraction(1, 10**12)),
+                                  stop=lambda t: math.ceil(t - Fraction(1, 10**12)))),
+})  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R477.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R477.items()})
+
+
 # -- r425 (exercise 5, a fresh reader): 5.2b graded to 1e-8 either way (a refined search lands
 # on float32's rounded maximum, over the limit), z_min on a crossing, misnamed and half-named
 # slips of 5.2b, 5.2 and 5.4.

@@ -24,6 +24,7 @@ a top or bottom vertex between them (rows counted at row + ½).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from fractions import Fraction
 from functools import cache
 
@@ -95,7 +96,49 @@ def _fixed_cases() -> list[tuple[str, tuple, frozenset]]:
     built = _built_cases()
     moved = _moved_cases()
     # first: a row whose two crossings lie exactly on samples (the drawing of a passing check)
-    return moved[:1] + built + moved[1:]
+    return moved[:1] + built + _hair_cases() + _half_cases() + moved[1:]
+
+
+def _half_cases() -> list[tuple[str, tuple, frozenset]]:
+    """r477: a vertical left edge at x = col + sx + ½, halfway between two samples: ⌈x_l − sx⌉
+    and round(x_l − sx) give the right first column, ⌈x_l − sx − ½⌉ (both ½ and sx taken
+    off) one column left of it (at samples 0 and 3)."""
+    out = []
+    for k in (0, 3):
+        sx, _ = _floats(k)
+        row = 9
+        xy = np.array([[sx + 1.5, row - 1.0], [sx + 1.5, row + 2.0], [sx + 9.5, row + 0.5]])
+        label = f"x_l halfway between two samples (a vertical left edge), row {row}, sample {k}"
+        out.append((label, (xy, row, _floats(k)), sample_columns(xy, row, _floats(k))))
+    return out
+
+
+#: r477 P1-P3: an exact crossing off a sample lies at least 1/(256·d) px from it, d the edge's
+#: height in 1/256 px. This long edge, 515/256 px wide and d = 25 165 819 (98 304 px, odd: no
+#: binary fraction) tall, crosses the line 12 509 611/256 px below its top vertex 1/(256·d) ≈
+#: 1.6e-10 px right of a sample (12 509 611 · 515 ≡ 1 mod 256·d): an epsilon of 1e-9 on the
+#: ends moves that end, float64 does not; narrow, so that a fill of its bounding box (the
+#: package's, whose call is not counted) stays well within a case's time
+HAIR_EDGE = (515, 25165819, 12509611)  # (width, height, depth), in 1/256 px
+
+
+def _hair_cases() -> list[tuple[str, tuple, frozenset]]:
+    """Rows whose long edge crosses the sample line a hair (≈1.6e-10 px) right of a sample:
+    as x_l (the sample just left of it not covered) at samples 0 and 2, as x_r (covered) at
+    samples 1 and 3."""
+    width, height, depth = (Fraction(n, 256) for n in HAIR_EDGE)
+    out = []
+    for k, (sx, sy) in enumerate(STANDARD_4):
+        row = math.ceil(depth)
+        top = row + sy - depth  # the line y = row + sy lies depth below the top vertex
+        side = 8 if k % 2 == 0 else -8  # the middle vertex right: the long edge is x_l
+        middle = top + Fraction(round(128 * height), 256)
+        v = [(sx, top), (sx + width, top + height), (sx + side, middle)]
+        xy = np.array([[float(x), float(y)] for x, y in v])
+        end = "x_l" if side > 0 else "x_r"
+        label = f"{end} 1.6e-10 px right of a sample (not on it), row {row}, sample {k}"
+        out.append((label, (xy, row, _floats(k)), sample_columns(xy, row, _floats(k))))
+    return out
 
 
 def _moved_cases() -> list[tuple[str, tuple, frozenset]]:
@@ -166,15 +209,19 @@ def as_sample_span(value):
 
 
 # -- why a span is wrong ----------------------------------------------------------------------
-def _tie_rounded(xy, row: int, sample, first, stop) -> frozenset | None:
-    """The columns ``first(x_l − sx)`` ≤ col < ``stop(x_r − sx)`` on the sample line, 2.1's
-    rows and horizontal edges kept (a slip of the rounding only)."""
+def _tie_rounded(xy, row: int, sample, first, stop, ox=None, ox_stop=None, pair=None):
+    """The columns ``first(x_l − ox)`` ≤ col < ``stop(x_r − ox_stop)`` on the sample line (the
+    offsets sx unless given; ``pair(first, stop)``: what the student then does with them),
+    2.1's rows and horizontal edges kept (a slip of the rounding only)."""
     sx, sy = _fractions(sample)
     right = sample_columns(xy, row, sample)
     cross = crossings(xy, row + sy)
     if cross is None or not right and not _inside(xy, row + sy):
         return right
-    lo, hi = first(cross[0] - sx), stop(cross[1] - sx)
+    ox = sx if ox is None else ox
+    lo, hi = first(cross[0] - ox), stop(cross[1] - (ox if ox_stop is None else ox_stop))
+    if pair is not None:
+        lo, hi = pair(lo, hi)
     return None if hi - lo > 10**6 else frozenset(range(lo, hi))
 
 
@@ -186,13 +233,14 @@ def _inside(xy, y: Fraction) -> bool:
     return not (ys[1] == ys[2] == y)
 
 
-def _split_at_centre(xy, row: int, sample) -> frozenset | None:
-    """The crossings on the sample line, but the short edge chosen by the centre line
-    (row + ½ against y2): beyond the middle vertex that edge is extended past its end."""
+def _split_at_centre(xy, row: int, sample, line=HALF) -> frozenset | None:
+    """The crossings on the sample line, but the short edge chosen by another line (row +
+    ``line`` against y2; the centre line by default): beyond the middle vertex that edge is
+    extended past its end."""
     sx, sy = _fractions(sample)
     v = sorted(((Fraction(float(x)), Fraction(float(y))) for x, y in xy), key=lambda p: p[1])
     (x1, y1), (x2, y2), (x3, y3) = v
-    y, centre = row + sy, row + HALF
+    y, centre = row + sy, row + line
     right = sample_columns(xy, row, sample)
     if not right or y1 == y2 or y2 == y3 or (y < y2) == (centre < y2):
         return right
@@ -205,11 +253,70 @@ def _split_at_centre(xy, row: int, sample) -> frozenset | None:
     return frozenset(range(math.ceil(lo - sx), max(math.ceil(hi - sx), math.ceil(lo - sx))))
 
 
-def _rows_at_centre(xy, row: int, sample) -> frozenset | None:
-    """Rows counted by the centre line (y1 ≤ row + ½ < y3), the columns at the sample."""
+def _rows_at_centre(xy, row: int, sample, line=HALF) -> frozenset | None:
+    """Rows counted by another line (y1 ≤ row + ``line`` < y3; the centre line by default),
+    the columns at the sample."""
     right = sample_columns(xy, row, sample)
     ys = sorted(Fraction(float(p[1])) for p in xy)
-    return right if ys[0] <= row + HALF < ys[2] else frozenset()
+    return right if ys[0] <= row + line < ys[2] else frozenset()
+
+
+def _horizontal_slips(xy, row: int, sample) -> dict[str, frozenset | None]:
+    """r477: a top edge along the sample line left out; a bottom edge along it covered."""
+    sx, sy = _fractions(sample)
+    right = sample_columns(xy, row, sample)
+    ys = sorted((Fraction(float(p[1])), Fraction(float(p[0]))) for p in xy)
+    (y1, a), (y2, b), (y3, c) = ys
+    y = row + sy
+    top = frozenset() if y1 == y2 == y and y3 != y else right
+    bottom = right
+    if y2 == y3 == y and y1 != y:
+        lo, hi = sorted((b, c))
+        bottom = frozenset(range(math.ceil(lo - sx), math.ceil(hi - sx)))
+    return {"top edge left out": top, "bottom edge owns its samples": bottom}
+
+
+def _more_variants(xy, row: int, sample) -> dict[str, frozenset | None]:
+    """r477: 2.1's rounding slips at the sample, other wrong points and lines, the rows, the
+    split on another line, another sample, a coarser grid."""
+    sx, sy = _fractions(sample)
+    half_up = lambda t: math.floor(t + HALF)  # noqa: E731
+    ceil = math.ceil
+    eps = lambda t: math.ceil(t - Fraction(1, 10**6))  # noqa: E731 (a sample a hair off, on)
+    out = {
+        "epsilon": _tie_rounded(xy, row, sample, eps, eps),
+        "round(x − sx)": _tie_rounded(xy, row, sample, round, round),
+        "⌊x − sx + ½⌋": _tie_rounded(xy, row, sample, half_up, half_up),
+        "⌊x − sx⌋ at both ends": _tie_rounded(xy, row, sample, math.floor, math.floor),
+        "first floored": _tie_rounded(xy, row, sample, math.floor, ceil),
+        "stop floored": _tie_rounded(xy, row, sample, ceil, math.floor),
+        "int(x − sx)": _tie_rounded(xy, row, sample, int, int),
+        "stop + 1": _tie_rounded(xy, row, sample, ceil, lambda t: ceil(t) + 1),
+        "last, not stop": _tie_rounded(xy, row, sample, ceil, lambda t: ceil(t) - 1),
+        "clip at 0": _tie_rounded(
+            xy, row, sample, ceil, ceil, pair=lambda a, b: (max(a, 0), max(b, 0))
+        ),  # fmt: skip
+        "½ left in the stop": _tie_rounded(xy, row, sample, ceil, ceil, ox_stop=HALF),
+        "½ left in the first": _tie_rounded(xy, row, sample, ceil, ceil, ox=HALF, ox_stop=sx),
+        "x mirrored": columns_at(xy, row, 1 - sx, sy),
+        "y mirrored": columns_at(xy, row, sx, 1 - sy),
+        "sx on the line": columns_at(xy, row, sx, sx),
+        "offsets less ½": columns_at(xy, row, sx - HALF, sy - HALF),
+        "½ and sx in x": columns_at(xy, row, HALF + sx, sy),
+        "sx twice": columns_at(xy, row, 2 * sx, sy),
+        "line y = row + sy − ½": columns_at(xy, row, sx, sy - HALF),
+        "rows at y = row": _rows_at_centre(xy, row, sample, line=Fraction(0)),
+        "rows clipped at 0": sample_columns(xy, row, sample) if row >= 0 else frozenset(),
+        "split at y = row": _split_at_centre(xy, row, sample, line=Fraction(0)),
+        "split at y = row + 1": _split_at_centre(xy, row, sample, line=Fraction(1)),
+        "vertices on the 1/16 grid": sample_columns(
+            np.round(16 * np.asarray(xy, float)) / 16, row, sample
+        ),  # fmt: skip
+    }
+    out.update(_horizontal_slips(xy, row, sample))
+    out.update({f"sample {k}": columns_at(xy, row, ox, oy) for k, (ox, oy) in enumerate(STANDARD_4)
+                if (ox, oy) != (sx, sy)})  # fmt: skip
+    return out
 
 
 def _variants(xy, row: int, sample) -> dict[str, frozenset | None]:
@@ -236,7 +343,39 @@ def _variants(xy, row: int, sample) -> dict[str, frozenset | None]:
         "ties reversed at the sample": _tie_rounded(xy, row, sample, floor1, floor1),
         "right edge owns the sample": _tie_rounded(xy, row, sample, math.ceil, floor1),
         "left edge loses the sample": _tie_rounded(xy, row, sample, floor1, math.ceil),
+        **_more_variants(xy, row, sample),
     }
+
+
+def _other_line_words(kind: str):
+    """The words of a split decided on ``kind``'s line (r477: y = row, y = row + 1)."""
+    line = kind.removeprefix("split at ")
+
+    def words(args, expected, got):
+        return (
+            f"you crossed the edges on the sample line y = row + sy = "
+            f"{num(args[1] + float(args[2][1]))}, but chose the short edge by the line {line}: "
+            f"the middle vertex (y2 = {num(sorted(float(p[1]) for p in args[0])[1])}) lies "
+            "between the two lines, so you took the short edge on its other side, extended "
+            "past its end. The split compares the line you cross, y = row + sy, with y2"
+        )
+
+    return words
+
+
+def _other_sample_words(k: int):
+    """The words of sample ``k``'s columns given for another sample (the argument unread)."""
+    ox, oy = STANDARD_4[k]
+
+    def words(args, expected, got):
+        return (
+            f"your columns are those of sample {k}, (sx, sy) = ({num(float(ox))}, "
+            f"{num(float(oy))}), not of the sample asked, {_sample_words(args)}: `sample` is the "
+            "row (sx, sy) of tr.sample_pattern(4) to test, given with each call; read the "
+            "offsets from it"
+        )
+
+    return words
 
 
 def _sample_words(args) -> str:
@@ -320,12 +459,100 @@ MISTAKES = {
     "ties reversed at the sample": "your ties go the wrong way round at the sample: a sample "
     "exactly on x_l (the left edge) you left out and one exactly on x_r (the right edge) you "
     "covered. The top-left rule is about the point tested, whatever its offset: a sample on a "
-    "left edge is covered, one on a right edge is not, as a centre in 2.1",
+    "left edge is covered, one on a right edge is not, as a centre in 2.1 (⌈x − sx + ε⌉, an "
+    "epsilon added for safety, does exactly this)",
     "right edge owns the sample": "you covered the sample that lies exactly on the right edge: "
     "the top-left rule does not change at a sample (a right edge owns none of its points; the "
-    "span stops before it)",
+    "span stops before it; an edge test E ≥ 0 on all three edges, with no tie rule, covers it)",
     "left edge loses the sample": "you left out the sample that lies exactly on the left edge: "
     "the top-left rule does not change at a sample (a left edge owns its points)",
+    "epsilon": lambda args, expected, got: _epsilon_words(args, expected, got),
+    **{kind: _other_line_words(kind) for kind in ("split at y = row", "split at y = row + 1")},
+    "rows at y = row": lambda args, expected, got: (
+        f"you decided whether row {args[1]} meets the triangle by the line y = row, the pixels' "
+        f"top, but its samples lie on y = row + sy = {num(args[1] + float(args[2][1]))}: a row "
+        "has covered samples when y1 ≤ row + sy < y3 (here a vertex lies between the two "
+        "lines)"
+    ),
+    "rows clipped at 0": lambda args, expected, got: (
+        f"you left out the rows above row 0 (here row {args[1]}): the rows are the plane's, "
+        "negative ones too (no image clips them here, as lesson 01's raster_lines clips them "
+        "to its image with max(first, 0))"
+    ),
+    "top edge left out": "the sample line runs along the triangle's horizontal top edge, and "
+    "you covered none of its samples: a top edge (the triangle below it) owns the samples on "
+    "it, at a sample as at a centre",
+    "bottom edge owns its samples": "the sample line runs along the triangle's horizontal "
+    "bottom edge, and you covered its samples: a bottom edge (the triangle above it) owns none "
+    "(the row test y1 ≤ row + sy < y3 leaves that line out)",
+    "round(x − sx)": "you rounded x − sx to the nearest column (round()): the first covered "
+    "column is the first whose sample col + sx lies at or right of x_l, a ceiling, not the "
+    "nearest; and the stop the same ceiling of x_r − sx",
+    "⌊x − sx + ½⌋": "you rounded x − sx to the nearest column (⌊x − sx + ½⌋): the first "
+    "covered column is the first whose sample col + sx lies at or right of x_l, a ceiling, not "
+    "the nearest; and the stop the same ceiling of x_r − sx",
+    "⌊x − sx⌋ at both ends": "you floored both ends (⌊x − sx⌋): the floor gives the last "
+    "column whose sample lies at or left of the crossing; the first covered column is the "
+    "first at or right of x_l (a ceiling), and the stop the same ceiling of x_r − sx",
+    "first floored": "your first column is one too far left: you floored x_l − sx, which gives "
+    "the column whose sample lies at or left of x_l, outside the triangle; the first covered "
+    "sample is the first at or right of x_l (a ceiling)",
+    "stop floored": "your stop is one too small: you floored x_r − sx, which is the last "
+    "covered column, not the one past it (stop is exclusive: first ≤ col < stop)",
+    "int(x − sx)": "you rounded with int(), which truncates toward zero: neither the ceiling "
+    "the first covered sample needs (col + sx at or right of x_l) nor, for negative x, a "
+    "floor",
+    "stop + 1": "your stop is one too large: it covers the column whose sample lies at or "
+    "right of x_r, outside the triangle (stop is the first column past the span, the ceiling "
+    "of x_r − sx)",
+    "last, not stop": "you returned the last covered column as the second number: it is the "
+    "stop, one past it (first ≤ col < stop, as in 2.1)",
+    "clip at 0": "you clipped the columns at 0 (lesson 01 clips them to its image): the "
+    "columns are the plane's, negative ones too",
+    "½ left in the stop": "your first column is rounded for the sample (x_l − sx), but your stop "
+    "still for the centre (x_r − ½): both ends are the same question, which columns' samples "
+    "col + sx lie between the crossings",
+    "½ left in the first": "your stop is rounded for the sample (x_r − sx), but your first "
+    "column still for the centre (x_l − ½): both ends are the same question, which columns' "
+    "samples col + sx lie between the crossings",
+    "x mirrored": lambda args, expected, got: (
+        f"you put the sample at x = col + 1 − sx, measured from the pixel's right side: "
+        f"{_sample_words(args)} are measured from the top-left corner, so the sample lies at "
+        "x = col + sx"
+    ),
+    "y mirrored": lambda args, expected, got: (
+        f"you crossed the edges with the line y = row + 1 − sy, as if sy were measured up "
+        f"from the pixel's bottom: y is down and {_sample_words(args)} is measured from the "
+        f"top-left corner, so the line is y = row + sy = {num(args[1] + float(args[2][1]))}"
+    ),
+    "sx on the line": lambda args, expected, got: (
+        f"you crossed the edges with the line y = row + sx: the line of the samples is y = row "
+        f"+ sy = {num(args[1] + float(args[2][1]))} ({_sample_words(args)}: sx is the x offset)"
+    ),
+    "offsets less ½": lambda args, expected, got: (
+        f"you put the sample at (col + sx − ½, row + sy − ½), half a pixel up and left: "
+        f"{_sample_words(args)} is measured from the pixel's top-left corner (col, row), so "
+        "the sample lies at (col + sx, row + sy) (as offsets from the centre they would be "
+        "sx − ½ and sy − ½, added to col + ½ and row + ½)"
+    ),
+    "½ and sx in x": lambda args, expected, got: (
+        f"you took both ½ and sx off the crossings (⌈x − sx − ½⌉): the sample lies at x = col "
+        f"+ sx ({_sample_words(args)}), so a column is covered when col + sx lies between the "
+        "crossings; the ½ belongs to the centre, which this task does not test"
+    ),
+    "sx twice": lambda args, expected, got: (
+        f"you took sx off the crossings twice (⌈x − 2·sx⌉): the sample lies at x = col + sx "
+        f"({_sample_words(args)})"
+    ),
+    "line y = row + sy − ½": lambda args, expected, got: (
+        f"you crossed the edges with the line y = row + sy − ½, half a pixel above the "
+        f"samples: {_sample_words(args)} is measured from the pixel's top, so the line is "
+        f"y = row + sy = {num(args[1] + float(args[2][1]))}"
+    ),
+    "vertices on the 1/16 grid": "your columns are those of the vertices rounded to the 1/16-px "
+    "grid: the offsets are multiples of 1/16, but the vertices lie on the 1/256-px grid; keep "
+    "them as they are (multiply by 256, or use fractions.Fraction)",
+    **{f"sample {k}": _other_sample_words(k) for k in range(4)},
 }
 
 
@@ -406,7 +633,68 @@ def _float32_words(args, expected, got) -> str:
     )
 
 
+def _hair_ends(args, got) -> list[tuple[str, Fraction, int]] | None:
+    """The moved ends whose exact crossing lies within 10^-6 px of a sample but not on it
+    (None unless every moved end does)."""
+    moved = _moved_ends(args, got)
+    if moved is None:
+        return None
+    sx = _fractions(args[2])[0]
+    gaps = [x - sx - round(x - sx) for _, x, _ in moved]
+    return moved if all(0 < abs(g) < Fraction(1, 10**6) for g in gaps) else None
+
+
+def _epsilon_words(args, expected, got) -> str:
+    """r477 P1-P3: an end a hair off a sample moved as if the sample lay on the edge."""
+    sx = _fractions(args[2])[0]
+    hair = _hair_ends(args, got)
+    if not hair:
+        return (
+            "an end of yours moved by one column where a crossing lies a hair off a sample: "
+            "an epsilon on the ends? The crossings are exact here; no tolerance is needed"
+        )
+    name, x, end = hair[0]
+    col = round(x - sx)
+    gap = float(x - sx - col)
+    where, covered = ("right", name == "x_r") if gap > 0 else ("left", name == "x_l")
+    what = "first" if name == "x_l" else "stop"
+    return (
+        f"{name} lies {abs(gap):.2g} px {where} of the sample of column {col} ({col} + sx), "
+        f"not on it, so that sample is {'' if covered else 'not '}covered; your {what} = {end} "
+        "treats it as lying on the edge: an epsilon on the ends (for safety), or a crossing "
+        "snapped to a sample within a tolerance? The crossings are exact here (integers or "
+        "fractions.Fraction; float64 multiplied first is exact enough in this range), so no "
+        "tolerance is needed, and any tolerance moves some sample that close"
+    )
+
+
+#: r477: kinds named only where they contradict no passing answer (a float crossing that lands
+#: a hair off a few left ties is no rule that leaves out every sample on a left edge)
+CONSISTENT = ("ties reversed at the sample", "right edge owns the sample",
+              "left edge loses the sample",
+              *list(MISTAKES)[list(MISTAKES).index("left edge loses the sample") + 1:])  # fmt: skip
+
+
+def _outside_fits(args, expected, got) -> bool | None:
+    """r477: columns on a row whose sample line misses the triangle (no row test, or rows
+    counted by the pixels the triangle touches)."""
+    xy, row, sample = args
+    if expected or getattr(got, "pair", None) is None or not got:
+        return None
+    return not _inside(xy, row + _fractions(sample)[1])
+
+
+def _outside_words(args, expected, got) -> str:
+    return (
+        f"the sample line y = {num(args[1] + float(args[2][1]))} does not meet the triangle "
+        "(or runs along its bottom edge), yet you covered columns on it: which rows does the "
+        "sample line meet? A row has covered samples only when y1 ≤ row + sy < y3; beyond "
+        "them the edges' lines, extended past the vertices, still cross it"
+    )
+
+
 SYMPTOMS = (
+    Mistake("row outside the triangle", _outside_words, fits=_outside_fits, symptom=True),
     Mistake("float32", _float32_words, fits=_float32_fits, symptom=True, only_whole=True),
     Mistake("tie lands off", _tie_words, fits=_tie_lands_off, symptom=True, only_whole=True),
 )
@@ -425,10 +713,20 @@ def explain_sample_span(args, expected: frozenset, got: frozenset) -> str:
                 f"sample is covered; yours covers {_columns_words(got)}")  # fmt: skip
     xl, xr = cross
     return (
-        f"{where}, which crosses the triangle ({vertices}) from x_l = {num(float(xl))} to x_r = "
-        f"{num(float(xr))}, so the covered samples col + sx are those of "
+        f"{where}, which crosses the triangle ({vertices}) from x_l = {_x_words(xl, sx)} to "
+        f"x_r = {_x_words(xr, sx)}, so the covered samples col + sx are those of "
         f"{_columns_words(expected)}; yours: {_columns_words(got)}"
     )
+
+
+def _x_words(x: Fraction, sx: Fraction) -> str:
+    """x as a float; a hair off a sample (col + sx), as the sample and the gap (r477: 2.375 +
+    7.8e-11 read as 2.375 would look like a tie)."""
+    sample = round(x - sx) + sx
+    if x != sample and abs(x - sample) < Fraction(1, 10**6):
+        gap = float(x - sample)
+        return f"{num(float(sample))} {'+' if gap > 0 else '−'} {abs(gap):.2g}"
+    return num(float(x))
 
 
 def _rule(args, expected, got) -> str:
@@ -531,7 +829,8 @@ def draw_sample_span(ax, case, got):
 
 SAMPLE_SPAN = Exercise(
     "sample_span", sample_span_cases, as_sample_span, same_span, explain_sample_span, _rule,
-    variant_mistakes(_variants, MISTAKES, SYMPTOMS),
+    [replace(m, consistent=True, only_whole=m.kind == "epsilon") if m.kind in CONSISTENT
+     else m for m in variant_mistakes(_variants, MISTAKES, SYMPTOMS)],
     answers=(
         PackageAnswer(rasterize),
         PackageAnswer(span_fill_int_dda, what="lesson 01's exact span fill (the integer DDA)",
