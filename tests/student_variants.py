@@ -11575,4 +11575,87 @@ DIFFERENT.update({
             "tie rule": (np.array([[500.5, 500.5], [503.5, 503.5], [500.25, 503.75]]), 5, 5, (500, 500)),
             "precision": ([[990.5, 1010.5], [1010.5, 1010.5 - 3 / 256], [1000.25, 1016.0]], 24, 10, (1006, 988)),
         }[r]),
+
+
+# == r483: exercise 09's wrong passes (glow clamped, where= without out=) and half-named slips ==
+def _r483_front_clamped(layers):
+    """W1: the composite's colour clamped to its alpha (c ≤ α), a glow's light lost."""
+    acc = np.zeros(4)
+    for c in layers:
+        acc = acc + (1 - acc[3]) * np.asarray(c, dtype=float)
+        if acc[3] >= 1:
+            break
+    return np.r_[np.minimum(acc[:3], acc[3]), acc[3]]
+
+
+def _r483_front_float32_out(layers):
+    """F1 (right): a loop in Python floats that returns a float32 array."""
+    acc = [0.0] * 4
+    for c in layers:
+        acc = [a + (1 - acc[3]) * float(x) for a, x in zip(acc, c)]
+        if acc[3] >= 1:
+            break
+    return np.array(acc, np.float32)
+
+
+def _r483_front_listed(layers):
+    """H4: the layers copied into a list first, then a right loop."""
+    return _r445_front_stop(1.0)(list(layers))
+
+
+def _r483_over_where(src, dst):
+    """W2: np.divide(..., where=) with no out=: uninitialised where α = 0."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    a = s[3] + d[3] * (1 - s[3])
+    return np.r_[np.divide(s[:3] * s[3] + d[:3] * d[3] * (1 - s[3]), a, where=a > 0), a]
+
+
+def _r483_atop_dst_twice(src, dst):
+    """H3: the destination multiplied by its alpha again, on all four channels."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    return s * d[3] + d * d[3] * (1 - s[3])
+
+
+def _r483_line_slabs_apart(p0, p1, e=1e-6):
+    """H1: hint 2's two slabs each clipped to [0, 1] apart, their t intervals not shared."""
+    ax, ay, bx, by = p0[0] - e, p0[1] - e * e, p1[0] - e, p1[1] - e * e
+    out = []
+    for i in range(12):
+        for j in range(12):
+            cx, cy, ok = j + 0.5, i + 0.5, True
+            for s in (1, -1):
+                u0, u1 = (ax - cx) + s * (ay - cy), (bx - cx) + s * (by - cy)
+                if u1 == u0:
+                    ok = ok and abs(u0) < 0.5
+                    continue
+                t1, t2 = sorted(((-0.5 - u0) / (u1 - u0), (0.5 - u0) / (u1 - u0)))
+                ok = ok and max(t1, 0.0) < min(t2, 1.0)
+            if ok and abs(bx - cx) + abs(by - cy) >= 0.5:
+                out.append((i, j))
+    return out
+
+
+R483 = {
+    "front to back with the colour clamped to the alpha (r483 W1)": (
+        "front_to_back", _r483_front_clamped, "you clamped the colour to the alpha",
+        "colour clamped to alpha"),
+    "front to back copying the layers into a list first (r483 H4)": (
+        "front_to_back", _r483_front_listed, "or one that copies them first",
+        "read behind the opaque layer"),
+    "over straight with np.divide(where=) and no out= (r483 W2)": (
+        "over_straight", _r483_over_where, "where= but no out=", "where without out"),
+    "atop with the destination premultiplied again, all four channels (r483 H3)": (
+        "atop_premultiplied", _r483_atop_dst_twice, "on all four channels",
+        "destination premultiplied twice"),
+    "line with the diamond's two slabs tested apart (r483 H1)": (
+        "line_pixels", _r483_line_slabs_apart, "you tested the two slabs of the diamond apart",
+        "slabs apart"),
+    "line with y moved by ε/2 (r483 H2)": (
+        "line_pixels", _r445_line_float(2.0**-20, 2.0**-21), "you moved y by −ε/2", "ε in y"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R483.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R483.items()})
+DIFFERENT.update({
+    "front to back in Python floats, returned as float32 (r483 F1)": (
+        "front_to_back", _r483_front_float32_out),
 })  # fmt: skip

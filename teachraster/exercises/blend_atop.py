@@ -93,6 +93,10 @@ ATOP_MISTAKES = [
     ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
      f"but it is premultiplied already: {CARRIES}",
      lambda s, d: _atop(s[:3] * d[3] + d[:3] * d[3] * (1 - s[3]), s, d)),
+    # r483 H3: the same on all four channels got the derivation's steps restated
+    ("destination premultiplied twice", "you multiplied the destination by its alpha again, "
+     f"on all four channels, but it is premultiplied already: {CARRIES}",
+     lambda s, d: s * d[3] + d * d[3] * (1 - s[3])),
     ("returned straight", "you returned a straight colour (divided by the result's alpha): "
      "the answer is premultiplied, as src and dst are", lambda s, d: _as_straight(
          premultiplied_atop(s, d))),

@@ -13,9 +13,12 @@ straight form has no colour.
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from ..core.blend_factors import BLEND_MODES, blend_equation
+from .blend_display import as_rgba
 from .blend_mistakes import (
     ALPHAS,
     CHANNEL_ORDER,
@@ -396,6 +399,40 @@ UNHIDDEN = [
 ]  # fmt: skip
 
 
+class Uninitialised(np.ndarray):
+    """An answer whose code called a numpy ufunc with ``where=`` and no ``out=`` (r483 W2):
+    where the condition is False its entries are whatever the memory held."""
+
+
+def call_over_straight(fn, args) -> np.ndarray:
+    """Run ``fn``; an answer computed with ``where=`` and no ``out=`` (numpy warns) comes
+    back as :class:`Uninitialised`, right or not by luck. Other warnings are passed on."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        value = as_rgba(fn(*args))
+    unset = False
+    for w in caught:
+        if "without 'out'" in str(w.message):
+            unset = True
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return np.asarray(value, float).view(Uninitialised) if unset else value
+
+
+def same_straight(got, expected, args=None) -> bool:
+    """Within 1e-6, and not by uninitialised memory's luck."""
+    return not isinstance(got, Uninitialised) and all_close(got, expected, 1e-6)
+
+
+UNINITIALISED = Mistake(
+    "where without out", "you called a numpy function with where= but no out=: wherever its "
+    "condition is False (α = 0: both inputs transparent) the entries it returns are "
+    "uninitialised memory, any value, so your answer is right or wrong by luck (numpy warns: "
+    "'where' used without 'out'). Pass out=np.zeros(3) (the answer there, before the "
+    "division), or test α with an if",
+    fits=lambda a, e, g: isinstance(g, Uninitialised))  # fmt: skip
+
+
 def straight_mistakes() -> list[Mistake]:
     """9.2a's mistakes (``over_straight``): the division by α = 0, a guard, an input returned
     where both alphas are 0, the table's, the weights swapped, then a wrong alpha (with the
@@ -409,7 +446,7 @@ def straight_mistakes() -> list[Mistake]:
     swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                       only_whole=True)  # fmt: skip
     nothing = [DST_WHERE_NOTHING, SRC_WHERE_NOTHING]  # before the swap, which gives src there
-    return [nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, BY_DESTINATION_ALPHA,
+    return [UNINITIALISED, nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, BY_DESTINATION_ALPHA,
             *_divided_by_wrong_alpha(), *UNHIDDEN,
             *alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
 

@@ -41,8 +41,10 @@ from .blend_straight import (
     FROM_STRAIGHT_RULE,
     STRAIGHT_RULE,
     STRAIGHT_STEP_WORDS,
+    call_over_straight,
     from_straight,
     from_straight_mistakes,
+    same_straight,
     straight_mistakes,
     straight_over,
 )
@@ -279,14 +281,15 @@ def blend_answers(
             PackageAnswer(from_straight, words=checker or words or CHECKER_WORDS))  # fmt: skip
 
 
-def _exercise(name: str, mode: str, answers=None) -> Exercise:
+def _exercise(name: str, mode: str, answers=None, call=None, same=None) -> Exercise:
     """The check of ``name``, whose cases are :func:`blend_cases` of ``mode``; ``answers``: the
     package's functions it does not count (default :func:`blend_answers`)."""
     return Exercise(
-        name, lambda: blend_cases(mode), as_rgba, lambda g, e, a: all_close(g, e, 1e-6),
+        name, lambda: blend_cases(mode), as_rgba, same or (lambda g, e, a: all_close(g, e, 1e-6)),
         explain_blend, _rule(mode), _mistakes(mode), answers=answers or blend_answers(),
         draw=blend_drawer(mode), inputs_drawn=True, example=5 if mode in PREMULTIPLIED_IN else 4,  # glow; quarter
         reference=BLEND_MODULES,  # the tasks' modules compute expected answers too
+        call=call,
     )  # fmt: skip
 
 
@@ -303,4 +306,5 @@ STRAIGHT_EXERCISE = _exercise(
     "over_straight", "straight",
     (*blend_answers(STRAIGHT_STEP_WORDS, CHECKER_WORDS),
      PackageAnswer(straight_over, words=CHECKER_WORDS)),  # r20 D-8
+    call_over_straight, same_straight,  # r483 W2: where= without out= passed by luck
 )  # fmt: skip

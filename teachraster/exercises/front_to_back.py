@@ -143,6 +143,9 @@ def layer_cases() -> list[tuple[str, tuple, np.ndarray]]:
         # r445 W3: a loop that skips layers of alpha 0 (an "invisible" layer) passed: a
         # premultiplied layer with alpha 0 may carry light (9.2b's glow), and adds it
         ("a glow (light, alpha 0) between two layers", [red, GLOW_LAYER, blue]),
+        # r483 W1: a loop that clamped its colour to its alpha (c ≤ α) passed: in every stack
+        # above the composite covers more than it lights. Here it lights more than it covers
+        ("a glow behind a faint layer", [_premultiplied([0, 0, 1], 0.25), GLOW_LAYER]),
     ]
     rng, now = np.random.default_rng(SEED + 80), drawn_rng()
     for k in range(14 + DRAWN):
@@ -260,8 +263,11 @@ def call_front_to_back(fn, args) -> np.ndarray:
     (layers,) = args
     stream, read = layer_stream(layers)
     value = as_rgba(fn(stream))
-    # a float32 answer is judged by float32's alphas (r24 D-1: its documented allowance)
-    first, last = stop_window(layers, np.float32 if low_precision(value) else float)
+    # a float32 answer is judged by float32's alphas (r24 D-1: its documented allowance), or
+    # by float64's (r483 F1: a loop in Python floats that returns float32 read on, rightly)
+    first, last = stop_window(layers)
+    if low_precision(value):
+        first, last = _either_window((first, last), stop_window(layers, np.float32))
     short = first is not None and read() < first
     past = last is not None and read() > last + 1
     if not (short or past):
@@ -269,6 +275,14 @@ def call_front_to_back(fn, args) -> np.ndarray:
     marked = np.asarray(value).view(ReadPast if past else ReadShort)
     marked.read, marked.opaque = read(), (last if past else first)
     return marked
+
+
+def _either_window(one, other) -> tuple[int | None, int | None]:
+    """The stops either window allows: the earlier first, the later last (None: no bound)."""
+    firsts, lasts = [one[0], other[0]], [one[1], other[1]]
+    first = None if None in firsts else min(firsts)
+    last = None if None in lasts else max(lasts)
+    return first, last
 
 
 def same_rgba(got: np.ndarray, expected: np.ndarray, args=None) -> bool:
@@ -383,8 +397,9 @@ def _read_past_words(args, expected, got) -> str:
             "nearest first, stop there, as a ray marcher does")  # fmt: skip
     if got.read == len(layers):
         return head + (". A loop that runs from the farthest layer (the layers reversed) must "
-                       "read them all first, and so must one that never stops; one that stops "
-                       "may fetch one layer past the opaque one, no more")  # fmt: skip
+                       "read them all first, and so must one that never stops, or one that "
+                       "copies them first (list(layers) or np.array(layers) reads every layer); "
+                       "one that stops may fetch one layer past the opaque one, no more")  # fmt: skip
     # r18 D-8: a loop that stopped, but late, was told it ran from the farthest layer
     return head + (f". Your loop stopped, but {got.read - got.opaque} layers after it: "
                    "fetching one more layer to find out that it may stop is allowed, more "
@@ -455,6 +470,35 @@ def _glow_skipped(args, expected, got) -> bool:
     return bool(skipped) and all_close(np.asarray(got, float), back_to_front(kept), 1e-6)
 
 
+def _clamped(layers) -> list[np.ndarray]:
+    """r483 W1: the composite with its colour clamped to its alpha (c ≤ α), at the end or
+    after every layer."""
+    acc = CLEAR.copy()
+    for layer in np.asarray(layers, float).reshape(-1, 4):
+        acc = acc + (1 - acc[3]) * layer
+        acc = np.r_[np.minimum(acc[:3], acc[3]), acc[3]]
+        if acc[3] >= 1:
+            break
+    whole = back_to_front(layers)
+    return [np.r_[np.minimum(whole[:3], whole[3]), whole[3]], acc]
+
+
+def _colour_clamped(args, expected, got) -> bool:
+    e = np.asarray(expected, float)
+    if not (e[:3] > e[3] + 1e-6).any():  # the clamp changes nothing here
+        return False
+    g = np.asarray(got, float).ravel()
+    return g.shape == (4,) and any(all_close(g, c, 1e-6) for c in _clamped(args[0]))
+
+
+def _colour_clamped_words(args, expected, got) -> str:
+    e = np.asarray(expected, float)
+    return (f"you clamped the colour to the alpha, {num(e[3])} here: a premultiplied colour "
+            "that covers what it lights is at most its alpha, but a glow (light with alpha 0) "
+            "lights without covering, so the composite may carry more light than coverage; "
+            "keep it (under only adds light, seen through the transmittance 1 − A)")  # fmt: skip
+
+
 def _glow_skipped_words(args, expected, got) -> str:
     layers = np.asarray(args[0], float).reshape(-1, 4)
     k = _without_faint(layers)[1][0]
@@ -468,6 +512,7 @@ def _glow_skipped_words(args, expected, got) -> str:
 #: passed).
 WALK = [
     Mistake("glow skipped", _glow_skipped_words, fits=_glow_skipped),
+    Mistake("colour clamped to alpha", _colour_clamped_words, fits=_colour_clamped),
     Mistake("stopped below alpha 1", _read_short_words,
             fits=lambda a, e, g: isinstance(g, ReadShort) and all_close(g, e, 1e-6)),
     # r25 D-2: before the general words, which say "after layer k the composite is opaque"

@@ -345,6 +345,10 @@ _MOVES = {
                  "did not move y"),
     (EPS, EPS * EPS): ("+ε in x, +ε² in y", "you moved both the other way: x by +ε and y by "
                        "+ε² (the rule moves them left and up)"),
+    # r483 H2: y moved by ε/2 breaks no tie on a line of slope ½ (the move runs along it)
+    (-EPS, -EPS / 2): ("ε in y", "you moved y by −ε/2, a multiple of x's ε: y moves by ε², "
+                       "far less than any multiple of ε, so that y decides only the ties x "
+                       "leaves (a move along a line of slope ½ breaks no tie on it)"),
     (0.0, -EPS * EPS): ("x not moved", "you did not move x"),
     (0.0, -EPS): ("only y moved", "you did not move x, and moved y by −ε"),
     # r326: what reading the end points as (y, x) and returning (col, row) pairs gives (the
@@ -591,6 +595,31 @@ _BRESENHAM = ("you walked the line with Bresenham's error term (lesson 12a §2):
               "diamond-exit rule tests the diamonds the segment itself passes through and "
               "leaves")  # fmt: skip
 
+
+def _slabs_apart(p0, p1) -> frozenset:
+    """r483 H1: the pixels whose u slab and v slab the moved segment each meets, at any t
+    (not at a shared one), p1's diamond dark."""
+    ax, ay, bx, by = p0[0] - EPS, p0[1] - EPS * EPS, p1[0] - EPS, p1[1] - EPS * EPS
+    cy, cx = np.mgrid[0:WINDOW, 0:WINDOW] + 0.5
+    ok = np.ones((WINDOW, WINDOW), bool)
+    for s in (1, -1):
+        u0, u1 = (ax - cx) + s * (ay - cy), (bx - cx) + s * (by - cy)
+        d = u1 - u0
+        if not d.any():
+            ok &= np.abs(u0) < 0.5
+            continue
+        t1, t2 = (-0.5 - u0) / d, (0.5 - u0) / d
+        ok &= np.maximum(np.minimum(t1, t2), 0) < np.minimum(np.maximum(t1, t2), 1)
+    ok &= np.abs(bx - cx) + np.abs(by - cy) >= 0.5
+    return frozenset((int(r), int(c)) for r, c in zip(*np.nonzero(ok)))
+
+
+def _slabs_apart_fits(args, expected, got) -> bool:
+    """Every pixel the rule lights, and extra ones only where both slabs are met apart (a
+    search over all the image or around the segment lights some of those)."""
+    return expected < got <= _slabs_apart(*args)
+
+
 LINE_MISTAKES = [
     LINE_KNOBS,
     *(_large_eps(name, eps) for name, eps in LARGE_EPS.items()),
@@ -683,6 +712,14 @@ LINE_MISTAKES = [
             f"Return only the pixels inside the image (0 ≤ row, col < {WINDOW})"
         ),
         gives=lambda p0, p1: diamond_pixels(p0, p1, inside=False),
+    ),
+    Mistake(  # r483 H1: hint 2's slabs clipped one by one, their t intervals not shared
+        "slabs apart",
+        "you tested the two slabs of the diamond apart: the segment is within ½ of the centre's "
+        "u = x + y for some t and within ½ of its v = x − y for some t, but the diamond needs "
+        "both at the same t: intersect the two open intervals of t with [0, 1]",
+        fits=_slabs_apart_fits,
+        only_whole=True,
     ),
     *(
         Mistake("p1's square dark", _p1_square_words, gives=_p1_square_dark(m))
