@@ -11575,6 +11575,7 @@ DIFFERENT.update({
             "tie rule": (np.array([[500.5, 500.5], [503.5, 503.5], [500.25, 503.75]]), 5, 5, (500, 500)),
             "precision": ([[990.5, 1010.5], [1010.5, 1010.5 - 3 / 256], [1000.25, 1016.0]], 24, 10, (1006, 988)),
         }[r]),
+})  # fmt: skip
 
 
 # == r483: exercise 09's wrong passes (glow clamped, where= without out=) and half-named slips ==

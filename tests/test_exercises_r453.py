@@ -7,8 +7,13 @@ import numpy as np
 from student_variants import DIFFERENT, R453
 
 from teachraster import exercises as ex
-from teachraster.exercises.coverage_checks import _expected, covers_cases, fill_cases
-from teachraster.exercises.point_slips import SAMPLE_LABEL, pixel_centre_images, sample_point_case
+from teachraster.exercises.coverage_checks import (
+    _expected,
+    covers_cases,
+    fill_cases,
+    sample_point_case,
+)
+from teachraster.exercises.point_slips import SAMPLE_LABEL, pixel_centre_images
 
 
 def test_the_sample_point_case_asks_off_the_centres_in_covers_only():

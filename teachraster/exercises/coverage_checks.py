@@ -164,11 +164,22 @@ def long_edge_coverage(rng) -> CoverageCase:
             return CoverageCase(label, xy[None], (int(px[k]) - 4, int(py[k]) - 4), (8, 8))
 
 
+def sample_point_case() -> CoverageCase:
+    """lesson 07's split square moved so that its vertices and its diagonal lie on the points
+    (j + 0.375, i + 0.125), where ``covers`` is asked (the window's origin is fractional)."""
+    shift = np.array(ps.SAMPLE) - 0.5
+    square = np.array([[[1.5, 1.5], [6.5, 1.5], [6.5, 6.5]], [[1.5, 1.5], [6.5, 6.5], [1.5, 6.5]]])
+    label = (f"{ps.SAMPLE_LABEL}: covers asked at p = (j + {ps.SAMPLE[0]}, i + {ps.SAMPLE[1]}), "
+             "Direct3D's 4× sample 0, as capstone 12's MSAA scene asks it; a square split along "
+             "its diagonal, its corners and diagonal on those points (a mesh)")  # fmt: skip
+    return CoverageCase(label, square + shift, tuple(shift.tolist()), (8, 8), mesh=True)
+
+
 @cache
 def _covers_cases():
     cases = catalogue_coverage() + random_coverage() + fixed_near_ties() + [long_near_ties()]
     cases += [sliver32_case()]  # r438 WP1: last, so earlier first explanations stay
-    cases += [ps.sample_point_case()]  # r453 WP1: covers asked off the centres (capstone 12)
+    cases += [sample_point_case()]  # r453 WP1: covers asked off the centres (capstone 12)
     return [(c.label, (c,), _expected(c)) for c in cases]
 
 

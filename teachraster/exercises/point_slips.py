@@ -1,6 +1,7 @@
 """Exercise 1's slips in the point ``covers`` tests and in its three edge tests (r453).
 
-- A point off the pixel centres (:func:`sample_point_case`): capstone 12's MSAA scene asks
+- A point off the pixel centres (``coverage_checks.sample_point_case``, a case, built
+  where the other cases are: the checker's reference functions live there): capstone 12's MSAA scene asks
   ``covers`` at each sample position, so a ``covers`` that tests the centre of p's pixel
   (``floor(p) + 0.5``, or lesson 02's ``biased_coverage`` wrapped at ``floor(p)``) must fail
   exercise 1 already, named (r453 WP1).
@@ -25,17 +26,6 @@ from .cases import CoverageCase
 #: (0.375, 0.125) from the pixel's corner, on the 1/16 grid (exact on the 1/256 one).
 SAMPLE = (0.375, 0.125)
 SAMPLE_LABEL = "points off the pixel centres"
-
-
-def sample_point_case() -> CoverageCase:
-    """lesson 07's split square moved so that its vertices and its diagonal lie on the points
-    (j + 0.375, i + 0.125), where ``covers`` is asked (the window's origin is fractional)."""
-    shift = np.array(SAMPLE) - 0.5
-    square = np.array([[[1.5, 1.5], [6.5, 1.5], [6.5, 6.5]], [[1.5, 1.5], [6.5, 6.5], [1.5, 6.5]]])
-    label = (f"{SAMPLE_LABEL}: covers asked at p = (j + {SAMPLE[0]}, i + {SAMPLE[1]}), "
-             "Direct3D's 4× sample 0, as capstone 12's MSAA scene asks it; a square split along "
-             "its diagonal, its corners and diagonal on those points (a mesh)")  # fmt: skip
-    return CoverageCase(label, square + shift, tuple(shift.tolist()), (8, 8), mesh=True)
 
 
 def _centre_of_pixel(case: CoverageCase) -> CoverageCase:
