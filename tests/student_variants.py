@@ -9349,6 +9349,398 @@ R443_RIGHT = {
 DIFFERENT.update(R443_RIGHT)
 
 
+# == r482 (ex06-r482, exercise 6): the reader's wrong passes (6 decimals, the area in float32),
+# misnamed (zero area by a tolerance, E in int32) and half-named variants, and correct ones
+def _r482(name: str, source: str):
+    """The reader's variant (/tmp/r482/n/): ``source`` run with the notebook's imports and ``tr``."""
+    return _r443(name, "import teachraster as tr\n" + source)
+
+
+_R482_00 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.round(np.asarray(samples, dtype=float) + [col, row], 6)
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_01 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    v32 = v.astype(np.float32)
+    area = (v32[1,0]-v32[0,0])*(v32[2,1]-v32[0,1]) - (v32[1,1]-v32[0,1])*(v32[2,0]-v32[0,0])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_02 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if abs(area) < 1e-3:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_03 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if abs(area) < 1e-2:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_04 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    vi = np.rint(v * 512).astype(np.int32)
+    row, col = pixel
+    pi = np.rint((np.asarray(samples, dtype=float) + [col, row]) * 512).astype(np.int32)
+    def E(a, b, p):
+        return (b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0])
+    area = E(vi[0], vi[1], vi[2:3])[0]
+    if area == 0:
+        return 0.0
+    if area < 0:
+        vi = vi[[0, 2, 1]]
+    inside = np.ones(len(pi), dtype=bool)
+    for k in range(3):
+        a, b = vi[k], vi[(k + 1) % 3]
+        e = E(a, b, pi)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_05 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points))
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        w = np.where(e > 0, 1.0, np.where(e == 0, 0.5, 0.0))
+        inside = inside * w
+    return float(np.mean(inside))
+"""
+_R482_06 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(2):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_07 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = [(v[0], v[1]), (v[1], v[2]), (v[0], v[2])][k]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_08 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = tr.sample_pattern(4) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_09 = """
+def resolve(sample_colours, sample_ids, background):
+    on_face = np.asarray(sample_ids) >= 0
+    sample_rgb = np.where(on_face[..., None], sample_colours, 1.0)
+    return sample_rgb.mean(axis=0)
+"""
+_R482_10 = """
+def resolve(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids); k = (ids >= 0).sum(); S = len(ids)
+    bg = np.asarray(background, float)
+    if k == 0:
+        return bg
+    return np.nanmean(sample_colours) * k / S + bg * (S - k) / S
+"""
+_R482_11 = """
+def resolve(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids); S = len(ids)
+    c = np.where(ids[:, None] >= 0, sample_colours, background)
+    return c.sum(axis=0) / (S + 1) + np.asarray(background, float) / (S + 1)
+"""
+_R482_12 = """
+def resolve_srgb(sample_colours, sample_ids, background):
+    on_face = np.asarray(sample_ids) >= 0
+    sample_rgb = np.where(on_face[..., None], sample_colours, 1.0)
+    return linear_to_srgb(srgb_to_linear(sample_rgb).mean(axis=0))
+"""
+_R482_13 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+        area = -area
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points) / area  # lambda; sign and zero as E
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_14 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    s = 1.0 if area > 0 else -1.0
+    row, col = pixel
+    pts = np.asarray(samples, dtype=float) + [col, row]
+    n = 0
+    for p in pts:
+        ok = True
+        for k in range(3):
+            a, b = v[k], v[(k + 1) % 3]
+            if s < 0:
+                a, b = b, a
+            e = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+            tl = (b[1] < a[1]) or (b[1] == a[1] and b[0] > a[0])
+            if not (e > 0 or (e == 0 and tl)):
+                ok = False
+        n += ok
+    return n / len(pts)
+"""
+_R482_15 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = np.rint(edge_function(a, b, points) * 512 * 512).astype(np.int64)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_16 = """
+def coverage_fraction(xy, pixel, samples):
+    v = np.array([[round(c * 256) / 256 for c in p] for p in np.asarray(xy, float)])
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_17 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    v = v - [col, row]  # pixel-local: exact, the vertices on the 1/256 grid
+    points = np.asarray(samples, dtype=float)
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_18 = """
+def coverage_fraction(xy, pixel, samples):
+    v = snap(np.asarray(xy, dtype=float))
+    area = edge_function(v[0], v[1], v[2])
+    if area == 0:
+        return 0.0
+    v = v[np.lexsort((v[:, 0], v[:, 1]))]
+    if edge_function(v[0], v[1], v[2]) < 0:
+        v = v[[0, 2, 1]]
+    row, col = pixel
+    points = np.asarray(samples, dtype=float) + [col, row]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = edge_function(a, b, points)
+        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        inside &= (e >= 0) if top_left else (e > 0)
+    return float(inside.mean())
+"""
+_R482_19 = """
+def resolve(sample_colours, sample_ids, background):
+    ids = np.asarray(sample_ids)
+    w = np.full(len(ids), 1 / len(ids))
+    c = np.where(ids[:, None] >= 0, np.nan_to_num(sample_colours), background)
+    return np.einsum('s,sc->c', w, c)
+"""
+_R482_20 = """
+def decode(c):
+    c = np.asarray(c, float)
+    return np.where(c <= 0.04045, c / 12.92, ((np.maximum(c, 0.04045) + 0.055) / 1.055) ** 2.4)
+def encode(light):
+    light = np.asarray(light, float)
+    return np.where(light <= 0.0031308, 12.92 * light, 1.055 * np.maximum(light, 0.0031308) ** (1 / 2.4) - 0.055)
+def resolve_srgb(sample_colours, sample_ids, background):
+    on_face = np.asarray(sample_ids) >= 0
+    sample_rgb = np.where(on_face[..., None], sample_colours, background)
+    return encode(decode(sample_rgb).mean(axis=0))
+"""
+R482 = {
+    'coverage with the sample positions rounded to 6 decimals': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_00),
+        'you rounded the sample positions to a few (5 to 8) decimal places', 'samples rounded to decimals'),
+    'coverage with the area alone in float32': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_01),
+        'you computed the area E(v1, v2, v3) in float32', 'area in float32'),
+    'coverage refusing |area| < 1e-3 as zero-area': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_02),
+        'you refused the triangle as zero-area by a tolerance', 'zero area by a tolerance'),
+    'coverage refusing |area| < 1e-2 as zero-area': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_03),
+        'you refused the triangle as zero-area by a tolerance', 'zero area by a tolerance'),
+    'coverage with E in int32 (1/512 px units)': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_04),
+        'you computed E in 32-bit integers', 'E in int32'),
+    'coverage counting a tie as half a sample': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_05),
+        'you counted a sample lying exactly on an edge as half covered', 'tie as half'),
+    'coverage testing two of the three edges': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_06),
+        'you tested 2 of the 3 edges', 'two edges'),
+    'coverage with the third edge v1 to v3': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_07),
+        'your third edge runs v1→v3', 'third edge backwards'),
+    'coverage with sample_pattern(4) hard-coded': (
+        'coverage_fraction', _r482('coverage_fraction', _R482_08),
+        'you tested the 4 points of sample_pattern(4)', 'own sample pattern'),
+    'resolve with lesson 08 pasted (white background)': (
+        'resolve', _r482('resolve', _R482_09),
+        'the uncovered samples count as white (1, 1, 1), not as the background', 'background white'),
+    'resolve with nanmean over every axis': (
+        'resolve', _r482('resolve', _R482_10),
+        'your three channels are one number', 'channels mixed'),
+    'resolve with the background as share S + 1': (
+        'resolve', _r482('resolve', _R482_11),
+        'you counted the background as one more share, S + 1', 'background as one more share'),
+    'resolve_srgb with lesson 08 pasted (white background)': (
+        'resolve_srgb', _r482('resolve_srgb', _R482_12),
+        'the uncovered samples count as white (1, 1, 1), not as the background', 'background white'),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R482.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R482.items()})
+#: r482: correct but different (each passes)
+R482_RIGHT = {
+    'coverage by barycentric λ = E / area': ('coverage_fraction', _r482('coverage_fraction', _R482_13)),
+    'coverage flipping a and b per edge, a Python loop': ('coverage_fraction', _r482('coverage_fraction', _R482_14)),
+    'coverage with E scaled to int64': ('coverage_fraction', _r482('coverage_fraction', _R482_15)),
+    'coverage snapping with Python round': ('coverage_fraction', _r482('coverage_fraction', _R482_16)),
+    'coverage in pixel-local coordinates': ('coverage_fraction', _r482('coverage_fraction', _R482_17)),
+    'coverage with the vertices sorted, then turned': ('coverage_fraction', _r482('coverage_fraction', _R482_18)),
+    'resolve by einsum with weights 1/S': ('resolve', _r482('resolve', _R482_19)),
+    'resolve_srgb with lesson 08 cells 37-38 and the background': ('resolve_srgb', _r482('resolve_srgb', _R482_20)),
+}  # fmt: skip
+DIFFERENT.update(R482_RIGHT)
+
+
 # == r441 (fixex10j, exercise 10): the reader's misnamed (M1, M2), half-named (H1, H2) 10.1
 # variants and 10.2's wrong passes (W1 half down, W2 a tolerance on the ties)
 def _eb441(absolute, relative, held=None):

@@ -125,6 +125,14 @@ R423_HARD = [
     # once snapped only): collinear as given, a sliver once snapped, a sample inside it
     ("collinear as given, a sliver once snapped, a sample inside it",
      [[0.5 / 256, 0], [1.5 / 256, 4], [2.5 / 256, 8]], (5, 0), [[3 / 512, 0.5]]),
+    # r482 WP1: the sample positions rounded to 6 decimals passed (every tie's offset had 4
+    # decimals at most): a sample on a right edge at x = 2 + 1/512 (9 decimals)
+    ("a sample on a right edge at x = 2 + 1/512 px (9 decimals)",
+     [[2, 0], [2 + 1 / 256, 2], [0, 1]], (1, 2), [[1 / 512, 0]]),
+    # r482 WP2: the area E(v1, v2, v3) alone in float32 passed: a 1880 px sliver whose
+    # area is 0 in float32 (−0.078125 px² exactly), a sample on its top-left edge
+    ("a long sliver, its area 0 in float32, a sample on a top-left edge",
+     [[0, 0], [700, 940], [1400.01171875, 1880.015625]], (47, 35), [[0, 0]]),
 ]  # fmt: skip
 
 
@@ -267,6 +275,8 @@ POINTS = {
     },
     # r432 HN1: the standard pattern in place of the given offsets; the centre as one more
     "pattern": lambda pixel, samples: sample_pattern(len(samples)) + [pixel[1], pixel[0]],
+    # r482 HN4: sample_pattern(4) whatever the samples given
+    "pattern 4": lambda pixel, samples: sample_pattern(4) + [pixel[1], pixel[0]],
     "centre too": lambda pixel, samples: np.vstack(
         [sample_points(pixel, samples), [[pixel[1] + 0.5, pixel[0] + 0.5]]]
     ),
@@ -478,6 +488,11 @@ ALONE_KNOBS = Knobs(fraction_with, {
     ],
     "points": [
         Slip("own sample pattern", _own_pattern_words, "pattern"),
+        Slip("own sample pattern", lambda args, expected, got: (
+            f"you tested the 4 points of sample_pattern(4), not this pixel's {len(args[2])} "
+            f"sample{'s' * (len(args[2]) != 1)}: the offsets are an argument (`samples`), any pattern of any S; sample "
+            "s lies at (col + ox, row + oy) with (ox, oy) = samples[s], and the fraction "
+            "divides by S = len(samples)"), "pattern 4"),
         Slip("centre as an extra sample", _centre_too_words, "centre too"),
     ],
     "count": [
@@ -788,7 +803,7 @@ def _floor_words(args, expected, got) -> str:
     )
 
 
-def _rounded_samples(places: int):
+def _rounded_samples(places: int, said: str = ""):
     def gives(xy, pixel, samples):
         points = np.round(sample_points(pixel, samples), places)
         return float(covered(snap(np.asarray(xy, dtype=float)), points, vertices="exact").mean())
@@ -799,7 +814,8 @@ def _rounded_samples(places: int):
         moved = ", ".join(f"sample {k} {exact(a)} became {exact(b)}" for k, (a, b)
                           in enumerate(zip(points, np.round(points, places))) if (a != b).any())  # fmt: skip
         return (
-            f"you rounded the sample positions to {places} decimal place{'s' * (places != 1)}: "
+            f"you rounded the sample positions to {said or places} decimal "
+            f"place{'s' * (places != 1)}: "
             "a sample lies exactly where its offset puts it, (col + ox, row + oy); only the "
             f"vertices are snapped (to 1/256 px){': here ' + moved if moved else ''}"
         )
@@ -953,14 +969,154 @@ R443_MISTAKES = [
 ]  # fmt: skip
 
 
+# -- r482 WP2, MN1-MN3, HN1-HN3: the area in float32, the zero area by a tolerance, E in
+# int32, a tie counted as half, two edges, the third edge walked backwards ---------------------
+def _turned_fraction(v, area, points, e_of) -> float:
+    """The rule on vertices ``v`` whose area (as the student computed it) is ``area``: 0 where
+    it is 0, turned where it is negative, each edge's E by ``e_of(a, b, points)``."""
+    if area == 0:
+        return 0.0
+    if area < 0:
+        v = v[[0, 2, 1]]
+    inside = np.ones(len(points), dtype=bool)
+    for k in range(3):
+        a, b = v[k], v[(k + 1) % 3]
+        e = e_of(a, b, points)
+        inside &= (e >= 0) if kind_of(a, b) in TOP_LEFT else (e > 0)
+    return float(inside.mean())
+
+
+def _area_float32(xy, pixel, samples) -> float:
+    """E exact, but the area E(v1, v2, v3), its zero and its sign, taken in float32."""
+    v = snap(np.asarray(xy, dtype=float))
+    area = float(_e_float32(v[0], v[1], v[2], np.zeros(2)))
+    return _turned_fraction(v, area, sample_points(pixel, samples), edge_function)
+
+
+def _area_float32_words(args, expected, got) -> str:
+    v = snap(np.asarray(args[0], dtype=float))
+    exact_area = float(edge_function(v[0], v[1], v[2]))
+    area32 = float(_e_float32(v[0], v[1], v[2], np.zeros(2)))
+    did = "refused it as zero-area" if area32 == 0 else "turned it the wrong way round"
+    return (
+        f"you computed the area E(v1, v2, v3) in float32: here it is {num(exact_area)} px² "
+        f"exactly but {num(area32)} in float32 (its two products, about "
+        f"{num(abs(float((v[1] - v[0])[0] * (v[2] - v[0])[1])))} px² each, need more than "
+        f"float32's 24 bits), so you {did}; compute the area in float64 (or in integers), as E"
+    )
+
+
+def _zero_area_fits(args, expected, got) -> bool | None:
+    """0 for a small triangle (0 < |E(v1, v2, v3)| < ½ px², snapped) the rule covers: refused
+    as zero-area by some tolerance (one description for every tolerance: a `gives` per
+    tolerance cost the check a run of every case each)."""
+    area = abs(float(edge_function(*snap(np.asarray(args[0], dtype=float)))))
+    try:
+        return 0 < area < 0.5 and expected != 0 and as_fraction(got) == 0
+    except (TypeError, ValueError):
+        return None
+
+
+def _zero_area_words(args, expected, got) -> str:
+    area = float(edge_function(*snap(np.asarray(args[0], dtype=float))))
+    return (
+        "you refused the triangle as zero-area by a tolerance: its snapped vertices give "
+        f"E(v1, v2, v3) = {int(round(area * 65536))}/65536 px² ({num(area)}), a small "
+        "triangle but not a degenerate one; on the 1/256 grid E is exact, so refuse the "
+        "triangle only where E(v1, v2, v3) == 0"
+    )
+
+
+def _e_int32(a, b, p):
+    """E in 32-bit integers of 1/512 px (numpy's int32 wraps around past 2³¹ − 1)."""
+    a, b, p = (np.rint(np.asarray(x, dtype=float) * 512).astype(np.int32) for x in (a, b, p))
+    with np.errstate(over="ignore"):
+        return (b[0] - a[0]) * (p[..., 1] - a[1]) - (b[1] - a[1]) * (p[..., 0] - a[0])
+
+
+def _fraction_int32(xy, pixel, samples) -> float:
+    v = snap(np.asarray(xy, dtype=float))
+    area = float(_e_int32(v[0], v[1], v[2]))
+    return _turned_fraction(v, area, sample_points(pixel, samples), _e_int32)
+
+
+def _int32_words(args, expected, got) -> str:
+    v = snap(np.asarray(args[0], dtype=float)) * 512
+    p = sample_points(args[1], args[2]) * 512
+    pts = np.vstack([v, p])
+    reach = float(np.ptp(pts[:, 0]) * np.ptp(pts[:, 1]))
+    return (
+        "you computed E in 32-bit integers (in 1/512 px units): here E's products reach about "
+        f"{reach:.3g}, past int32's 2³¹ − 1 = 2147483647, and wrap around to numbers of the "
+        "wrong size and sign; take the integers as int64 (exact up to 2⁶³) or E in float64"
+    )
+
+
+def _ties_halved(xy, pixel, samples) -> float:
+    """A sample with E == 0 on an edge counted as half covered (a tie split, not owned)."""
+    e, _, area = _edge_table(xy, pixel, samples)
+    if area == 0:
+        return 0.0
+    return float(np.where(e > 0, 1.0, np.where(e == 0, 0.5, 0.0)).prod(axis=0).mean())
+
+
+def _ties_halved_words(args, expected, got) -> str:
+    xy, pixel, samples = args
+    points = sample_points(pixel, samples)
+    on = next(((k, w) for k, p in enumerate(points) if (w := _edge_words(snap(xy), p))), None)
+    where = f" (here sample {on[0]} at {vec(points[on[0]])} {on[1]})" if on else ""
+    return (
+        f"you counted a sample lying exactly on an edge as half covered{where}: a tie is not "
+        "split; the top-left rule gives the whole sample to one of the two triangles that "
+        "share the edge, so their two fractions still add up"
+    )
+
+
+def _edges_tested(pairs):
+    """The rule with the edges ``pairs`` (indices into the turned vertices) tested only."""
+
+    def gives(xy, pixel, samples):
+        v, _ = _oriented(xy)
+        if float(edge_function(v[0], v[1], v[2])) == 0:
+            return 0.0
+        points = sample_points(pixel, samples)
+        inside = np.ones(len(points), dtype=bool)
+        for i, j in pairs:
+            e = edge_function(v[i], v[j], points)
+            inside &= (e >= 0) if kind_of(v[i], v[j]) in TOP_LEFT else (e > 0)
+        return float(inside.mean())
+
+    return gives
+
+
+R482_MISTAKES = [
+    Mistake("area in float32", _area_float32_words, gives=_area_float32, only_whole=True),
+    Mistake("zero area by a tolerance", _zero_area_words, fits=_zero_area_fits, only_whole=True),
+    # named only where the code reads int32: it gives a tolerance on the distance's answers
+    Mistake("E in int32", _int32_words, gives=_fraction_int32, only_whole=True, reads="int32"),
+    Mistake("tie as half", _ties_halved_words, gives=_ties_halved, only_whole=True),
+    Mistake("two edges", ": you tested 2 of the 3 edges (your loop stops before the third): "
+            "a sample is covered only where it lies inside all three",
+            gives=_edges_tested(((0, 1), (1, 2))), only_whole=True),
+    Mistake("third edge backwards", ": your third edge runs v1→v3, against the other two "
+            "(v1→v2, v2→v3): its E has the opposite sign inside the triangle, so no sample "
+            "passes all three; walk the edges round the triangle, the third from v3 back to v1 "
+            "(v[(k + 1) % 3])", gives=_edges_tested(((0, 1), (1, 2), (0, 2))), only_whole=True),
+]  # fmt: skip
+
+
 #: after TOLERANCE: 3 decimals moves a sample by ≤ 5e-4 px, as a tolerance on the distance
 #: does (the 512 px edge's case), and the tolerance is the likelier
-ROUNDED_SAMPLES = [_rounded_samples(d) for d in DECIMALS]  # fmt: skip
+#: r482 WP1: 6 decimals passed; 5 to 8 move only a sample of 9 decimals (k/512, k odd), all
+#: the same way on the check's cases: one mistake, named by its range
+ROUNDED_SAMPLES = [*(_rounded_samples(d) for d in DECIMALS),
+                   _rounded_samples(6, said="a few (5 to 8)")]  # fmt: skip
 
 #: r423: before TOLERANCE, which also gives the sliver's and the 4K triangle's answers (each
 #: is named only where it gives every answer of the check, so never for a real tolerance)
 COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
-                     *R423_MISTAKES, *R443_MISTAKES, TOLERANCE, *ROUNDED_SAMPLES]  # fmt: skip
+                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, TOLERANCE,
+                     *ROUNDED_SAMPLES]  # fmt: skip
 
 
 def coverage_mistakes() -> list[Mistake]:
@@ -1402,6 +1558,34 @@ def _background_once_partly(colours, ids, background):
     return (np.nansum(colours[ids >= 0], axis=0) + background) / (k + 1)
 
 
+# -- r482 HN7-HN9: lesson 08's white background pasted, the channels averaged together, the
+# background as one more share ------------------------------------------------------------
+def _channels_mixed(colours, ids, background):
+    """The covered samples' mean over every number (np.nanmean with no axis: one grey), by
+    its share, and the background by its own."""
+    s, k = _sample_counts(ids)
+    if k == 0:
+        return None
+    grey = float(np.mean(np.asarray(colours, dtype=float)[ids >= 0]))
+    return (k * grey + (s - k) * np.asarray(background, dtype=float)) / s
+
+
+R482_RESOLVE = [
+    Mistake("background white", _resolve_words("the uncovered samples count as white (1, 1, "
+            "1), not as the background {bg}: lesson 08's cube was cleared to white, and here "
+            "the background is an argument (`background`)"),
+            gives=lambda c, i, b: _with_background(c, i, np.ones(np.shape(c)[-1])).mean(axis=0)),
+    Mistake("channels mixed", _resolve_words("your three channels are one number: the mean ran "
+            "over the channels too (np.nanmean or np.mean with no axis); average each channel "
+            "over the samples (axis=0)"), gives=_channels_mixed),
+    Mistake("background as one more share", lambda a, e, g: (
+            f": you counted the background as one more share, S + 1 = {len(a[1]) + 1} in "
+            "all, even where every sample is covered: the pixel is the S samples' shares "
+            "alone, an uncovered sample's share the background's; " + _mean_rule(a)),
+            gives=lambda c, i, b: (_with_background(c, i, b).sum(axis=0) + b) / (len(i) + 1)),
+]  # fmt: skip
+
+
 R443_RESOLVE = [
     Mistake("integer division", _shares_floored_words, gives=_shares_floored),
     Mistake("background once", _background_once_words, gives=_background_once_partly),
@@ -1487,6 +1671,7 @@ RESOLVE_MISTAKES = [
             "and encoded again, as 6.3 does; here the colours are plain numbers (linear), to "
             "average as they are"), gives=_in_light),
     *R443_RESOLVE,
+    *R482_RESOLVE,
 ]  # fmt: skip
 
 

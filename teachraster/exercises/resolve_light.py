@@ -148,6 +148,12 @@ def _background_in_codes(colours, ids, background):
     return (k * covered + (s - k) * np.asarray(background, float)) / s
 
 
+def _uncovered_words(ids) -> str:
+    """ "the 3 uncovered samples join" / "the 1 uncovered sample joins" (r482 S1)."""
+    n = int((~_covered(ids)).sum())
+    return f"{n} uncovered sample{'s' * (n != 1)} join{'s' * (n == 1)}"
+
+
 def _twice(x):
     return srgb_to_linear(srgb_to_linear(x))
 
@@ -269,7 +275,7 @@ MISTAKES = [
             gives=lambda c, i, b: _mix(c, i, b, _same, _encode)),
     Mistake("background mixed in codes", lambda a, e, g: ": you averaged the covered "
             "samples in light but mixed in the background's share as encoded numbers: the "
-            f"{int((~_covered(a[1])).sum())} uncovered samples join the average in light too "
+            f"{_uncovered_words(a[1])} the average in light too "
             "(decode the background, average all S samples, encode once)",
             gives=_background_in_codes),
     CHANNEL_ORDER,
@@ -287,6 +293,11 @@ MISTAKES = [
             "encode the mean), but 8 bits of light lose the dark steps sRGB's code keeps: "
             "average the decoded values unrounded",
             gives=lambda c, i, b: _mix(c, i, b, lambda x: _eight_bits(_decode(x)), _encode)),
+    # r482 HN11: lesson 08's cell (its cube on white) pasted, 1.0 for the background
+    Mistake("background white", lambda a, e, g: ": the uncovered samples count as white (1, "
+            f"1, 1), not as the background {vec(a[2])}: lesson 08's cube was cleared to "
+            "white, and here the background is an argument (`background`); decode it like the "
+            "samples", gives=lambda c, i, b: _mix(c, i, np.ones(np.shape(b)), _decode, _encode)),
     Mistake("triangle 0 only", ": you counted only the samples of triangle 0 as covered "
             "(ids == 0): every id ≥ 0 is a triangle that covers the sample, and only −1 marks "
             "an uncovered one", gives=lambda c, i, b: _mix(
