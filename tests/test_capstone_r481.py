@@ -68,21 +68,18 @@ def test_right_weights_and_rounded_ones_are_not_read_back():
     assert _divided_by(LAM, W, right.astype(np.float16).astype(float)) == ""
 
 
-def _one_winding(xy, p):
-    """HN6 (W07): ValueError on every triangle of the other winding."""
-    v1, v2, v3 = np.asarray(xy, dtype=float)
-    if _edge(v1, v2, v3) <= 0:
-        raise ValueError("degenerate")
-    return np.array([_edge(v2, v3, p), _edge(v3, v1, p), _edge(v1, v2, p)]) / _edge(v1, v2, v3)
+def test_a_function_raising_in_the_render_gets_its_own_checks_words(monkeypatch):
+    """HN6 (W07, a barycentric raising ValueError on the other winding, told the mistake
+    "you refused every triangle of that winding" in the variant run): the plumbing, without
+    running exercise 3.1's check (some 2 s)."""
+    import teachraster.exercises.capstone_explain as explain
 
-
-def _edge(a, b, p):
-    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-
-
-def test_a_function_raising_in_the_render_gets_its_own_checks_words():
-    said = _raised_why({"barycentric": _one_winding}, "barycentric")
-    assert "refused every triangle of that winding" in said, said
+    said = "; the barycentric exercise's check names the mistake: you refused every triangle"
+    monkeypatch.setattr(explain, "named_mistake", lambda used, name: said)
+    assert _raised_why({"barycentric": None}, "barycentric") == said
+    unnamed = "; the barycentric exercise's check, on its own cases, says: …"
+    monkeypatch.setattr(explain, "named_mistake", lambda used, name: unnamed)
+    assert _raised_why({"barycentric": None}, "barycentric") == ""
 
 
 def _straight_a_buffer(depths, colours, background):
@@ -101,3 +98,17 @@ def test_an_a_buffer_with_the_straight_rule_is_named():
     ours = glass.package_resolve(depths, colours, glass.BACKGROUND)
     said = glass._mistake(_straight_a_buffer, depths, colours, yours, ours)
     assert "the straight rule" in said and "alpha too" in said, said
+
+
+def _w_rounded(lam, w):
+    """r481 (W60): every w rounded to an integer before the divide."""
+    q = np.asarray(lam, float) / np.round(np.asarray(w, float))
+    return q / q.sum()
+
+
+def test_a_mistake_named_on_the_own_cases_is_said_at_a_pixel_only_where_it_gives_its_answer():
+    q = LAM / W
+    mu, yours = q / q.sum(), _w_rounded(LAM, W)
+    said = named_mistake({"perspective_weights": _w_rounded}, "perspective_weights",
+                         case=((LAM, W), mu, yours))  # fmt: skip
+    assert "np.divide" not in said and "no such mistake gives your answer here" in said, said

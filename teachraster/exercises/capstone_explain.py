@@ -142,7 +142,10 @@ def named_mistake(used, name, where: str = "", case: tuple | None = None,
         return ""
     checked = CHECKED_AS.get(name, name)
     # where the function raised at the pixel (no answer), there is nothing to reproduce
-    if also and case is not None and case[2] is not None and words.startswith(_head(checked)):
+    # r481: a perspective_weights mistake is said at a pixel only where it gives the pixel's
+    # answer (w rounded to integers was told exercise 3.2's `np.divide(..., where=)` NaN)
+    exact = also or name == "perspective_weights"
+    if exact and case is not None and case[2] is not None and words.startswith(_head(checked)):
         words = run_checker(lambda: _exact_words(used, name, case, also), "")
     words = _staged(checked, words)
     if case is not None and words:
@@ -178,9 +181,10 @@ def _exact_words(used, name, case: tuple, also) -> str:
     for m in _candidates(spec, kinds):
         if gives_every_answer(spec, m, cases):
             return _head(checked) + named_on(spec, m, *case).lstrip(" .:;")
+    where = f"your answers here and at the {len(cases) - 1} other points of the scene tried"
     return (f"; {check_words(checked)} names {_kinds_words(kinds)} on its own cases, "
-            f"but no such mistake gives your answers here and at the {len(cases) - 1} other "
-            "points of the scene tried: compare your answer here with the rule")  # fmt: skip
+            f"but no such mistake gives {where if also else 'your answer here'}: compare "
+            "your answer here with the rule")  # fmt: skip
 
 
 def _kinds_named(checked: str, fn) -> list:
