@@ -86,6 +86,10 @@ def _straight(src, dst):  # the premultiplied colour multiplied by its alpha aga
     return np.r_[src[:3] * src[3] + dst[:3] * (1 - src[3]), src[3] + dst[3] * (1 - src[3])]
 
 
+def _straight_rgba(src, dst):  # r481 HN7: the straight rule on all four channels, alpha too
+    return np.asarray(src, dtype=float) * src[3] + np.asarray(dst, dtype=float) * (1 - src[3])
+
+
 def _previous_alpha(colours, near_first, background):
     """Nearest first, each fragment weighted by (1 − α) of the one just in front of it alone,
     not by the transmittance of all in front (r148 D12-4: right wherever a pixel holds two)."""
@@ -108,6 +112,7 @@ def variants(depths, colours, background) -> dict[str, np.ndarray]:
         "nearest first": _fold(colours, near_first, background, _over),
         "no background": _fold(colours, far_first, clear, _over),
         "premultiplied twice": _fold(colours, far_first, background, _straight),
+        "straight rule, alpha too": _fold(colours, far_first, background, _straight_rgba),
         "nearest only": (_over(colours[near_first[0]], background) if n else background),
         "previous alpha": _previous_alpha(colours, near_first, background),
     }
@@ -145,6 +150,9 @@ MISTAKES = {
     "shows through them, so it is the farthest layer, the one to start from",
     "premultiplied twice": "you multiplied each fragment's colour by its alpha again: the "
     "fragments are premultiplied already (your over with straight alpha?)",
+    "straight rule, alpha too": "you blended with the straight rule, src·α + dst·(1 − α), on "
+    "all four channels: the fragments are premultiplied already, so each colour, and its "
+    "alpha too, was multiplied by its alpha again (premultiplied over is src + dst·(1 − α))",
     "nearest only": "you kept the nearest fragment alone: the fragments behind it show "
     "through it where its alpha is below 1",
     "previous alpha": "you weighted each fragment by (1 − α) of the one fragment just in front "

@@ -324,6 +324,16 @@ def _said(value) -> str:
     return "(" + ", ".join(f"{float(v):.4g}" for v in values) + ")"
 
 
+def _raised_why(used: dict, name: str) -> str:
+    """r481 HN6: where the student's ``name`` raised during the render (no frame), the
+    mistake its own exercise's check names, if it names one (a barycentric refusing the other
+    winding was told only "raised ValueError"), else ""."""
+    from .capstone_explain import named_mistake
+
+    words = run_checker(lambda: named_mistake(used, name), "")
+    return words if " names the mistake: " in words or " gives a hint: " in words else ""
+
+
 def _a_buffer_failed(spec: CapstoneScene, used, mine, reference) -> bool:
     """Whether the frame differs while the student's ``over`` is right on its own exercise's
     cases: a failure of ``a_buffer``, counted towards its full words. r174 12-7: two
@@ -350,6 +360,8 @@ def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
                             "pixel by design, so each call must be quick: a long loop in it?)")  # fmt: skip
         text = text.replace("of the check's", "of the scene's", 1).replace(
             "the check's budget", "the scene's budget")  # fmt: skip
+        if outcome.kind == "raised":
+            text += _raised_why(used, tracker.name)
         return CapstoneReport(failures=[Failure(spec.name, text, None, None, kind=outcome.kind)],
                               n_cases=n, **base)  # fmt: skip
     mine = outcome.value
