@@ -56,6 +56,8 @@ export const MISSED_FILL = "rgba(204,121,167,0.5)";
 // every cell the student marked is filled blue, right or not (the outline tells them apart): the
 // key's "yours, and right" swatch is blue too (review r129 08-6: only "not among them" was)
 export const GIVEN_FILL = "rgba(0,114,178,0.45)";
+// ... and ringed in near-black on a white halo, which reads on any picture's colour (r484 W-1)
+export const GIVEN_LINE = "#111";
 
 // The key to the revealed answer, in the colours the figure draws it in (a legend under the
 // verdict: the outlines alone do not say which is which on a projector, review r31/r34)
@@ -397,12 +399,21 @@ function mountPixels(root, data, host) {
       const [x1, y1] = toPx([c + 1, r + 1]);
       return [x, y, x1 - x, y1 - y];
     };
+    const known = state.revealed && revealed(data, state);
     for (const [r, c] of state.given) {
       const [x, y, w, h] = cell(r, c);
       ctx.fillStyle = GIVEN_FILL;
       ctx.fillRect(x + 1, y + 1, w - 2, h - 2);
+      // and ringed, a line on a white halo: the blue fill alone vanished on a picture's own
+      // blue (lesson 05a's q_step draws passed fragments in it: review r484 W-1). Once
+      // revealed, the line is the key's vermillion ("not among them"); a right cell's green
+      // outline is drawn over it below.
+      for (const [width, colour] of [[3, "white"], [1.5, known ? OKABE.vermillion : GIVEN_LINE]]) {
+        ctx.lineWidth = width;
+        ctx.strokeStyle = colour;
+        ctx.strokeRect(x + 2.5, y + 2.5, w - 5, h - 5);
+      }
     }
-    const known = state.revealed && revealed(data, state);
     if (known) {
       const truth = new Set(known.answer.map(([r, c]) => r * W + c));
       for (const [r, c] of known.answer) {
