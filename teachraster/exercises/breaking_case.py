@@ -71,7 +71,7 @@ def repaired_fill(xy, width: int, height: int, origin, repairs) -> np.ndarray:
 
     >>> xy = [[4.5, 1.0], [4.5, 4.0], [1.5, 2.5]]          # a right edge through centres
     >>> int(repaired_fill(xy, 6, 6, (0, 0), ()).sum()), int(repaired_fill(xy, 6, 6, (0, 0), REPAIRS).sum())
-    (6, 3)
+    (8, 5)
     """
     raw = np.asarray(xy, dtype=float)
     snapped = "snap" in repairs
