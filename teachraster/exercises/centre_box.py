@@ -88,7 +88,10 @@ def as_box(value) -> tuple[int, int, int, int]:
     """Four whole numbers (i0, i1, j0, j1) as ints; floats are refused (``range`` needs ints)."""
     if value is None:
         raise WrongAnswerType("returned None (a missing `return`?)")
-    if isinstance(value, (str, bytes, dict, set)) or not hasattr(value, "__len__"):
+    if isinstance(value, (str, bytes)):
+        raise WrongAnswerType(f"returned the text {short(value)}; expected four ints (i0, i1, "
+                              "j0, j1)")  # fmt: skip
+    if isinstance(value, (dict, set)) or not hasattr(value, "__len__"):
         raise WrongAnswerType(f"returned {short(value)}; expected four ints (i0, i1, j0, j1)")
     items = list(value)
     if len(items) != 4:
@@ -107,7 +110,9 @@ def as_box(value) -> tuple[int, int, int, int]:
                 f"returned {short(value)}, floats: the fill's `range(i0, i1)` takes ints only "
                 "(np.ceil and np.floor return floats): convert each with int(...)"
             )
-        raise WrongAnswerType(f"returned {short(value)}: each of i0, i1, j0, j1 is a whole int")
+        what = "a text" if isinstance(v, (str, bytes)) else "not a whole int"
+        raise WrongAnswerType(f"returned {short(value)}: {short(v)} is {what}; each of i0, i1, j0, "
+                              "j1 is a whole int")  # fmt: skip
     return tuple(out)
 
 
