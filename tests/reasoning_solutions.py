@@ -7,6 +7,19 @@ from fractions import Fraction
 import numpy as np
 
 
+def box(xy, width, height):
+    """Exercise 1.2 (r487): the rows and columns whose centres a triangle with xy's bounding
+    box can cover, half-open on both axes, clamped to the image."""
+    xs, ys = [p[0] for p in xy], [p[1] for p in xy]
+
+    def clamp(k, n):
+        return min(max(k, 0), n)
+
+    i0, i1 = math.ceil(min(ys) - 0.5), math.ceil(max(ys) - 0.5)
+    j0, j1 = math.ceil(min(xs) - 0.5), math.ceil(max(xs) - 0.5)
+    return clamp(i0, height), clamp(i1, height), clamp(j0, width), clamp(j1, width)
+
+
 def span(xy, row):
     # exact in integers (1/256-px units): in float64 a crossing's product rounds past 2^18 px
     v = [(round(256 * float(x)), round(256 * float(y))) for x, y in xy]
@@ -358,6 +371,7 @@ def breaking_case(repair):
 
 
 CORRECT = {
+    "box": box,
     "span": span,
     "sample_span": sample_span,
     "perspective_weights": perspective_weights,

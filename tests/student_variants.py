@@ -12052,3 +12052,239 @@ DIFFERENT.update({
     "front to back in Python floats, returned as float32 (r483 F1)": (
         "front_to_back", _r483_front_float32_out),
 })  # fmt: skip
+
+
+# -- r487 (r453 T1): exercise 1.2, box(xy, width, height) ------------------------------------
+def _r487_box(first=None, end=None, clamp="both", dtype=float):
+    """A box from the bounds by ``first(v)`` and ``end(v)`` (right: ⌈v − ½⌉), clamped so."""
+    first = first or (lambda v: math.ceil(v - 0.5))
+    end = end or (lambda v: math.ceil(v - 0.5))
+
+    def box(xy, width, height):
+        a = np.asarray(xy, dtype=dtype)
+        lo, hi = a.min(axis=0), a.max(axis=0)
+        r0, r1, c0, c1 = (int(first(lo[1])), int(end(hi[1])), int(first(lo[0])),
+                          int(end(hi[0])))  # fmt: skip
+        if clamp == "both":
+            return (min(max(r0, 0), height), min(max(r1, 0), height), min(max(c0, 0), width),
+                    min(max(c1, 0), width))  # fmt: skip
+        if clamp == "low":
+            return max(r0, 0), max(r1, 0), max(c0, 0), max(c1, 0)
+        if clamp == "high":
+            return min(r0, height), min(r1, height), min(c0, width), min(c1, width)
+        if clamp == "last":
+            return (max(r0, 0), min(r1, height - 1), max(c0, 0), min(c1, width - 1))
+        if clamp == "swapped":
+            return max(r0, 0), min(r1, width), max(c0, 0), min(c1, height)
+        return r0, r1, c0, c1
+
+    return box
+
+
+def _r487_fraction(xy, width, height):
+    xs = [Fraction(float(p[0])) for p in xy]
+    ys = [Fraction(float(p[1])) for p in xy]
+    h = Fraction(1, 2)
+
+    def cl(v, n):
+        return min(max(v, 0), n)
+
+    return (cl(math.ceil(min(ys) - h), height), cl(math.ceil(max(ys) - h), height),
+            cl(math.ceil(min(xs) - h), width), cl(math.ceil(max(xs) - h), width))  # fmt: skip
+
+
+def _r487_search(xy, width, height):
+    """Every row and column of the image tested: x_min ≤ j + ½ < x_max."""
+    x0, x1 = min(p[0] for p in xy), max(p[0] for p in xy)
+    y0, y1 = min(p[1] for p in xy), max(p[1] for p in xy)
+    cols = [j for j in range(width) if x0 <= j + 0.5 < x1]
+    rows = [i for i in range(height) if y0 <= i + 0.5 < y1]
+    if not cols or not rows:
+        return 0, 0, 0, 0
+    return rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
+
+
+def _r487_int256(xy, width, height):
+    q = [(round(p[0] * 256), round(p[1] * 256)) for p in xy]
+
+    def first(v):  # the least k with 256 k + 128 >= v
+        return -((128 - v) // 256)
+
+    xs, ys = [a for a, _ in q], [b for _, b in q]
+    return (min(max(first(min(ys)), 0), height), min(max(first(max(ys)), 0), height),
+            min(max(first(min(xs)), 0), width), min(max(first(max(xs)), 0), width))  # fmt: skip
+
+
+def _r487_zero_area_empty(xy, width, height):
+    (ax, ay), (bx, by), (cx, cy) = xy
+    if (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) == 0:
+        return 0, 0, 0, 0
+    return _r487_box()(xy, width, height)
+
+
+def _r487_np_clip(xy, width, height):
+    a = np.asarray(xy)
+    lo = np.clip(np.ceil(a.min(0) - 0.5).astype(int), 0, [width, height])
+    hi = np.clip(np.ceil(a.max(0) - 0.5).astype(int), 0, [width, height])
+    return lo[1], hi[1], lo[0], hi[0]
+
+
+def _r487_end_by_floor(xy, width, height):
+    """The end as ⌊v − ½⌋ + 1, one less where v lies on a centre."""
+
+    def end(v):
+        k = math.floor(v - 0.5) + 1
+        return k - 1 if v - 0.5 == math.floor(v - 0.5) else k
+
+    return _r487_box(end=end)(xy, width, height)
+
+
+def _r487_as_list(xy, width, height):
+    return list(_r487_box()(xy, width, height))
+
+
+def _r487_reversed_empty(xy, width, height):
+    """First clamped below only, end above only: an empty range may come out reversed."""
+    r0, r1, c0, c1 = _r487_box(clamp="none")(xy, width, height)
+    return max(r0, 0), min(r1, height), max(c0, 0), min(c1, width)
+
+
+def _r487_covered_extent(xy, width, height):
+    import teachraster as tr
+
+    cov = tr.rasterize(tr.Triangle(np.asarray(xy, dtype=float)), width, height).coverage
+    r, c = np.flatnonzero(cov.any(1)), np.flatnonzero(cov.any(0))
+    return (0, 0, 0, 0) if not r.size else (r[0], r[-1] + 1, c[0], c[-1] + 1)
+
+
+def _r487_lesson02(xy, width, height):
+    """Lesson 02 §1's box (cell 3), clamped."""
+    u_min, v_min = np.min(xy, axis=0)
+    u_max, v_max = np.max(xy, axis=0)
+    cols = range(int(np.ceil(u_min - 0.5)), int(np.floor(u_max - 0.5)) + 1)
+    rows = range(int(np.ceil(v_min - 0.5)), int(np.floor(v_max - 0.5)) + 1)
+    return (max(rows.start, 0), min(rows.stop, height), max(cols.start, 0),
+            min(cols.stop, width))  # fmt: skip
+
+
+def _r487_swap(order):
+    def box(xy, width, height):
+        b = _r487_box()(xy, width, height)
+        return tuple(b[k] for k in order)
+
+    return box
+
+
+def _r487_axes_swapped(xy, width, height):
+    r0, r1, c0, c1 = _r487_box(clamp="none")(np.asarray(xy)[:, ::-1], width, height)
+    return (min(max(r0, 0), height), min(max(r1, 0), height), min(max(c0, 0), width),
+            min(max(c1, 0), width))  # fmt: skip
+
+
+def _r487_y_up(xy, width, height):
+    r0, r1, c0, c1 = _r487_box()(xy, width, height)
+    return height - r1, height - r0, c0, c1
+
+
+def _r487_two_vertices(xy, width, height):
+    return _r487_box()(np.asarray(xy)[:2], width, height)
+
+
+def _r487_axis1(xy, width, height):
+    a = np.asarray(xy, dtype=float)
+    lo, hi = np.ceil(a.min(axis=1) - 0.5), np.ceil(a.max(axis=1) - 0.5)
+    return (min(max(int(lo[1]), 0), height), min(max(int(hi[1]), 0), height),
+            min(max(int(lo[0]), 0), width), min(max(int(hi[0]), 0), width))  # fmt: skip
+
+
+def _r487_one_axis(axis, first=None, end=None):
+    def box(xy, width, height):
+        right, wrong = _r487_box()(xy, width, height), _r487_box(first, end)(xy, width, height)
+        return right[:2] + wrong[2:] if axis == "columns" else wrong[:2] + right[2:]
+
+    return box
+
+
+_R487_CLOSED = lambda v: math.floor(v - 0.5) + 1  # noqa: E731
+DIFFERENT.update({
+    "box in Fractions (r487)": ("box", _r487_fraction),
+    "box by testing every row's and column's centre (r487)": ("box", _r487_search),
+    "box in 1/256-px integers (r487)": ("box", _r487_int256),
+    "box, empty for a zero-area triangle (r487)": ("box", _r487_zero_area_empty),
+    "box by np.clip on both axes at once (r487)": ("box", _r487_np_clip),
+    "box with the end as ⌊v − ½⌋ + 1 less a tie (r487)": ("box", _r487_end_by_floor),
+    "box returned as a list (r487)": ("box", _r487_as_list),
+    "box with an empty range reversed (r487)": ("box", _r487_reversed_empty),
+    "box by −⌊½ − v⌋ (r487)": ("box", _r487_box(first=lambda v: -math.floor(0.5 - v),
+                                                end=lambda v: -math.floor(0.5 - v))),
+})  # fmt: skip
+R487 = {
+    "box, lesson 02 §1's closed box": (
+        "box", _r487_lesson02, "as lesson 02 §1's closed box does", "end floor-half+1, both axes"),
+    "box, ends ⌊v − ½⌋ + 1 on the rows only": (
+        "box", _r487_one_axis("rows", end=_R487_CLOSED), "rows: you keep the row whose centre",
+        "end floor-half+1, rows"),
+    "box, first ⌊v − ½⌋ + 1": (
+        "box", _r487_box(first=_R487_CLOSED), "you leave out a centre lying exactly on the "
+        "bounding box's top or left side", "first floor-half+1, both axes"),
+    "box, first int(v + 0.5)": (
+        "box", _r487_box(first=lambda v: int(v + 0.5)), "you leave out a centre lying exactly",
+        "first floor-half+1, both axes"),
+    "box, first ⌊v − ½⌋ + 1 on the columns only": (
+        "box", _r487_one_axis("columns", first=_R487_CLOSED), "columns: you leave out a centre",
+        "first floor-half+1, columns"),
+    "box, the pixels the bounding box touches": (
+        "box", _r487_box(first=math.floor, end=math.ceil), "the pixels the bounding box touches",
+        "first floor and end ceil"),
+    "box, first ⌈v⌉": (
+        "box", _r487_box(first=math.ceil), "the first whole coordinate", "first ceil, both axes"),
+    "box, first round(v)": (
+        "box", _r487_box(first=round), "rounded (round() or np.round: half to even)",
+        "first round, both axes"),
+    "box, end ⌈v⌉": (
+        "box", _r487_box(end=math.ceil), "your end row or column is ⌈x_max (y_max)⌉",
+        "end ceil, both axes"),
+    "box, end ⌊v − ½⌋": (
+        "box", _r487_box(end=lambda v: math.floor(v - 0.5)), "your box stops one row or column "
+        "short", "end floor-half, both axes"),
+    "box, end ⌈v − ½⌉ − 1 (the last, not the end)": (
+        "box", _r487_box(end=lambda v: math.ceil(v - 0.5) - 1), "the task's end is one past it",
+        "end ceil-half-1, both axes"),
+    "box, ⌈v + ½⌉ at both ends": (
+        "box", _r487_box(first=lambda v: math.ceil(v + 0.5), end=lambda v: math.ceil(v + 0.5)),
+        "adding ½ moves the bound the wrong way", "first ceil+half and end ceil+half"),
+    "box, not clamped": (
+        "box", _r487_box(clamp="none"), "your box is not clamped to the image", "clamp none"),
+    "box, clamped below only": (
+        "box", _r487_box(clamp="low"), "clamped below (at 0) but not above", "clamp low"),
+    "box, clamped above only": (
+        "box", _r487_box(clamp="high"), "clamped above (at height, width) but not below",
+        "clamp high"),
+    "box, clamped to height − 1": (
+        "box", _r487_box(clamp="last"), "you clamped the ends to height − 1", "clamp last"),
+    "box, rows clamped to width": (
+        "box", _r487_box(clamp="swapped"), "you clamped the rows to width", "clamp swapped"),
+    "box, rows from x": (
+        "box", _r487_axes_swapped, "your rows come from the x coordinates", "axes swapped"),
+    "box, columns first": (
+        "box", _r487_swap((2, 3, 0, 1)), "you returned (j0, j1, i0, i1)", "columns first"),
+    "box, (i0, j0, i1, j1)": (
+        "box", _r487_swap((0, 2, 1, 3)), "you returned (i0, j0, i1, j1)", "first, first, end, end"),
+    "box in float32": (
+        "box", _r487_box(dtype=np.float32, first=lambda v: math.ceil(v - np.float32(0.5)),
+                         end=lambda v: math.ceil(v - np.float32(0.5))),
+        "your bounds are computed in float32", "float32"),
+    "box, y up": ("box", _r487_y_up, "your rows count up from the image's bottom", "y up"),
+    "box, first two vertices": (
+        "box", _r487_two_vertices, "that of the first two vertices only", "two vertices"),
+    "box, min over axis 1": (
+        "box", _r487_axis1, "over each vertex's own (x, y) (axis=1)", "min over axis 1"),
+    "box of the covered pixels (tr.rasterize)": (
+        "box", _r487_covered_extent, "your box is that of the pixels the triangle covers",
+        "box of the covered pixels"),
+    "box, the whole image": (
+        "box", lambda xy, width, height: (0, height, 0, width), "you returned the whole image",
+        "whole image"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R487.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R487.items()})

@@ -4,7 +4,7 @@
 Each is an :class:`~.exercise.Exercise` (its cases, its answer's reading, its table of
 typical mistakes), defined in its own module:
 
-- ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
+- ``box`` (lesson 02, :mod:`.centre_box`): the box of centres, in place of ``fill``; ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
   ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
   reasoning in place of ``split_point``,
@@ -35,6 +35,7 @@ from collections.abc import Callable
 from . import breaking_case as bc
 from . import broken_frame_steps as bfs
 from . import broken_frames as bf
+from . import centre_box as cb
 from . import clip_colour as cc
 from . import decal_bias as db
 from . import depth_setup as ds
@@ -56,6 +57,7 @@ from .exercise import Exercise
 
 #: The exercises in course order, and how to build each (for :func:`.checks._registry`).
 EXERCISES: dict[str, Callable[[], Exercise]] = {
+    "box": lambda: cb.BOX,  # 1.2: the centres a bounding box can hold (r453 T1)
     "span": lambda: spans.SPAN,
     "sample_span": lambda: ss.SAMPLE_SPAN,  # 2.2: the span at a sample (r454 T1)
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,

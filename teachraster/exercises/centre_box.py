@@ -1,0 +1,529 @@
+"""Exercise ``box`` (exercise 1, task 1.2): the rows and columns of pixel centres a triangle's
+bounding box can hold a covered centre in, clamped to the image (issue 30, r453 T1).
+
+``box(xy, width, height)`` returns ``(i0, i1, j0, j1)``: rows ``i0 <= i < i1`` and columns
+``j0 <= j < j1``, the smallest such box, computed from the bounding box [x_min, x_max] ×
+[y_min, y_max] alone, that holds every centre *some* triangle with that bounding box covers
+under the top-left rule. A centre on the bounding box's top or left side can be covered (a
+horizontal top edge, a vertical left edge owns it); one on its right or bottom side never is
+(only a right or bottom edge, or the rightmost or lowest vertex, lies there). So the box is
+half-open on both axes: ⌈x_min − ½⌉ ≤ j < ⌈x_max − ½⌉, ⌈y_min − ½⌉ ≤ i < ⌈y_max − ½⌉, clamped
+to [0, width] and [0, height]. Lesson 02 §1 prints the closed box (⌊x_max − ½⌋ + 1, the
+package's :func:`~teachraster.core.bbox.pixel_bbox` too), which keeps a row or column the
+rule never covers: pasted, it fails on the ties at x_max and y_max.
+
+Expected answers are exact (:class:`fractions.Fraction` of the 1/256-px vertices); the tests
+cross-check them against the package: the bounding rectangle filled as two triangles by
+:func:`teachraster.rasterize` (watertight, so it covers exactly the centres the box holds)
+covers exactly the box's first and last rows and columns.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from functools import cache
+
+import numpy as np
+
+from ..core.bbox import pixel_bbox
+from ..core.fill import rasterize
+from .answers import short
+from .cases import drawn_rng, winding
+from .drawing import note_beside
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .running import WrongAnswerType
+from .scalars import num
+
+HALF = Fraction(1, 2)
+
+
+def _bounds(xy) -> tuple[Fraction, Fraction, Fraction, Fraction]:
+    """(x_min, x_max, y_min, y_max), exactly."""
+    xs = [Fraction(float(p[0])) for p in xy]
+    ys = [Fraction(float(p[1])) for p in xy]
+    return min(xs), max(xs), min(ys), max(ys)
+
+
+def _clamp(v: int, n: int) -> int:
+    return min(max(int(v), 0), n)
+
+
+def centre_box(xy, width: int, height: int) -> tuple[int, int, int, int]:
+    """The right answer, exactly: (i0, i1, j0, j1), ⌈min − ½⌉ … ⌈max − ½⌉ clamped.
+
+    >>> xy = np.array([[2.5, 1.5], [6.5, 1.5], [2.5, 5.5]])  # centres on all four sides
+    >>> centre_box(xy, 10, 8)
+    (1, 5, 2, 6)
+    >>> centre_box(xy, 4, 3)  # clamped to the image
+    (1, 3, 2, 4)
+    """
+    x0, x1, y0, y1 = _bounds(xy)
+    return (_clamp(math.ceil(y0 - HALF), height), _clamp(math.ceil(y1 - HALF), height),
+            _clamp(math.ceil(x0 - HALF), width), _clamp(math.ceil(x1 - HALF), width))  # fmt: skip
+
+
+def is_empty(b) -> bool:
+    return b[1] <= b[0] or b[3] <= b[2]
+
+
+def same_box(got, expected, args=None) -> bool:
+    """The same centres: equal boxes, or both empty (``range(5, 3)`` loops over nothing, as
+    ``range(3, 3)`` does). For a triangle of zero area an empty box is right too."""
+    if got is None:
+        return False
+    if is_empty(got) or is_empty(expected):
+        return (is_empty(got) and is_empty(expected)) or (
+            args is not None and is_empty(got) and _area2(args[0]) == 0
+        )
+    return tuple(got) == tuple(expected)
+
+
+def _area2(xy) -> Fraction:
+    (ax, ay), (bx, by), (cx, cy) = ([Fraction(float(v)) for v in p] for p in xy)
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+
+def as_box(value) -> tuple[int, int, int, int]:
+    """Four whole numbers (i0, i1, j0, j1) as ints; floats are refused (``range`` needs ints)."""
+    if value is None:
+        raise WrongAnswerType("returned None (a missing `return`?)")
+    if isinstance(value, (str, bytes)):
+        raise WrongAnswerType(f"returned the text {short(value)}; expected four ints (i0, i1, "
+                              "j0, j1)")  # fmt: skip
+    if isinstance(value, (dict, set)) or not hasattr(value, "__len__"):
+        raise WrongAnswerType(f"returned {short(value)}; expected four ints (i0, i1, j0, j1)")
+    items = list(value)
+    if len(items) != 4:
+        raise WrongAnswerType(
+            f"returned {short(value)}, {len(items)} values; expected four ints (i0, i1, j0, j1)"
+        )
+    out = []
+    for v in items:
+        if isinstance(v, (bool, np.bool_)):
+            raise WrongAnswerType(f"returned {short(value)}: bools, not row or column numbers")
+        if isinstance(v, (int, np.integer)):
+            out.append(int(v))
+            continue
+        if isinstance(v, (float, np.floating)) and math.isfinite(v) and float(v).is_integer():
+            raise WrongAnswerType(
+                f"returned {short(value)}, floats: the fill's `range(i0, i1)` takes ints only "
+                "(np.ceil and np.floor return floats): convert each with int(...)"
+            )
+        what = "a text" if isinstance(v, (str, bytes)) else "not a whole int"
+        raise WrongAnswerType(f"returned {short(value)}: {short(v)} is {what}; each of i0, i1, j0, "
+                              "j1 is a whole int")  # fmt: skip
+    return tuple(out)
+
+
+# -- cases ------------------------------------------------------------------------------------
+def _case(label, xy, width, height):
+    xy = np.array(xy, dtype=float)
+    return (label, (xy, width, height), centre_box(xy, width, height))
+
+
+@cache
+def _fixed() -> list:
+    far = 100000.0
+    return [
+        _case("centres on all four sides of the bounding box (a top edge, a vertical left edge)",
+              [[2.5, 1.5], [6.5, 1.5], [2.5, 5.5]], 10, 8),
+        _case("centres on its right and bottom sides only (x_max, y_max at vertices)",
+              [[1.25, 0.75], [5.5, 3.25], [2.0, 6.5]], 9, 9),
+        _case("no centre on a side, bounds past the half",
+              [[1.75, 2.75], [7.25, 1.625], [4.0, 6.25]], 10, 9),
+        _case("whole-number bounds (a pixel's corners)",
+              [[3.0, 2.0], [8.0, 4.0], [5.0, 7.0]], 11, 9),
+        _case("centres on its left and top sides only (x_min = 3.5, y_min = 5.5)",
+              [[3.5, 5.5], [8.25, 6.75], [6.0, 10.25]], 12, 12),
+        _case("the same triangle clockwise", [[2.5, 1.5], [2.5, 5.5], [6.5, 1.5]], 10, 8),
+        _case("reaching past every border of a 12 × 9 image",
+              [[-3.25, -2.5], [14.75, 3.0], [2.0, 12.5]], 12, 9),
+        _case("past the left and top borders", [[-2.5, -1.25], [5.25, -0.75], [1.0, 4.5]], 10, 7),
+        _case("past the right and bottom borders of an 11 × 8 image",
+              [[6.5, 3.25], [13.75, 5.0], [8.0, 11.5]], 11, 8),
+        _case("left of the image", [[-9.5, 1.0], [-3.25, 2.0], [-6.0, 5.0]], 10, 8),
+        _case("right of and below the image", [[12.5, 9.0], [15.0, 10.0], [13.0, 14.0]], 10, 8),
+        _case("covering the whole image", [[-20.0, -20.0], [60.0, -20.0], [-20.0, 60.0]], 16, 12),
+        _case("tiny, between four centres (no centre in its bounding box)",
+              [[2.625, 3.625], [2.875, 3.625], [2.75, 3.875]], 8, 8),
+        _case("a vertical sliver with its left edge on centres",
+              [[4.5, 1.0], [4.5390625, 6.0], [4.5, 7.25]], 9, 9),
+        _case("a flat sliver with its top edge on centres",
+              [[1.0, 3.5], [7.0, 3.5], [4.0, 3.53125]], 9, 6),
+        _case("zero area (three vertices on a line)", [[1.0, 1.0], [3.0, 3.0], [5.0, 5.0]], 8, 8),
+        _case("100 000 px from the origin in x, in a 100 008 × 6 image",
+              [[far + 0.50390625, 1.25], [far + 3.75, 2.0], [far + 1.0, 3.75]], 100008, 6),
+        _case("100 000 px from the origin in y, in a 5 × 100 008 image",
+              [[1.25, far + 0.50390625], [2.0, far + 3.75], [3.75, far + 1.0]], 5, 100008),
+    ]  # fmt: skip
+
+
+def _drawn(rng) -> list:
+    out = []
+    for k in range(8):
+        w, h = int(rng.integers(6, 20)), int(rng.integers(6, 20))
+        # 1/256-px vertices, half of them on a half-integer (a centre's line): ties
+        xy = rng.integers(-3 * 256, (max(w, h) + 3) * 256, size=(3, 2)) / 256
+        tie = rng.random((3, 2)) < 0.5
+        xy = np.where(tie, np.floor(xy) + 0.5, xy)
+        out.append(_case(f"drawn for this check {k + 1}, {winding(xy)}", xy, w, h))
+    return out
+
+
+def box_cases() -> list:
+    """(label, (xy, width, height), (i0, i1, j0, j1)): the fixed cases, then 8 drawn ones."""
+    return [(lab, (a[0].copy(), a[1], a[2]), e) for lab, a, e in _fixed()] + _drawn(drawn_rng())
+
+
+# -- mistakes ---------------------------------------------------------------------------------
+def _f(v: Fraction, form: str) -> int:
+    """One end by a formula (exact; Python's round halves to even, as np.round does)."""
+    return {
+        "ceil-half": lambda: math.ceil(v - HALF),
+        "floor-half+1": lambda: math.floor(v - HALF) + 1,
+        "floor": lambda: math.floor(v),
+        "ceil": lambda: math.ceil(v),
+        "round": lambda: round(v),
+        "round-half": lambda: round(v - HALF),
+        "floor-half": lambda: math.floor(v - HALF),
+        "ceil+half": lambda: math.ceil(v + HALF),
+        "ceil-half-1": lambda: math.ceil(v - HALF) - 1,
+    }[form]()
+
+
+#: The first row's (column's) forms and their words; the right one is "ceil-half".
+FIRST = {
+    "floor-half+1": "you leave out a centre lying exactly on the bounding box's {lo} side "
+    "(your first {what} is the first centre strictly past {vmin}): can the rule cover a centre "
+    "there: a {edge} lying on that side owns its centres",
+    "floor": "your first {what} is the first pixel the bounding box touches (⌊{vmin}⌋), not the "
+    "first whose centre lies in it: a pixel whose centre lies before {vmin} holds no covered "
+    "centre",
+    "ceil": "your first {what} is ⌈{vmin}⌉, the first whole coordinate: pixel k's centre is at "
+    "k + ½, so a pixel whose centre lies past {vmin} is left out",
+    "round": "your first {what} is {vmin} rounded (round() or np.round: half to even), which "
+    "goes the wrong way where {vmin} lies on a centre",
+    "round-half": "your first {what} rounds {vmin} − ½ (round() or np.round: half to even), "
+    "which goes the wrong way where {vmin} lies on a pixel's corner",
+    "floor-half": "your first {what} is the last centre at or before {vmin} (⌊{vmin} − ½⌋), "
+    "one before the first centre inside",
+    "ceil+half": "your first {what} is ⌈{vmin} + ½⌉: pixel k's centre is at k + ½, and adding "
+    "½ moves the bound the wrong way",
+}
+#: The end row's (column's) forms; the right one is "ceil-half".
+END = {
+    "floor-half+1": "you keep the {what} whose centre lies exactly on the bounding box's {hi} "
+    "side ({vmax}), as lesson 02 §1's closed box does: only a right or bottom edge, or the "
+    "rightmost or lowest vertex, can lie on that side, and the top-left rule never covers a "
+    "centre on them",
+    "ceil": "your end {what} is ⌈{vmax}⌉, past the last pixel the bounding box touches, not the "
+    "last centre inside it: pixel k's centre is at k + ½",
+    "floor-half": "your box stops one {what} short: ⌊{vmax} − ½⌋ is the last centre at or "
+    "before {vmax}, and the end of a half-open range is one past the last {what} it holds",
+    "floor": "your end {what} is ⌊{vmax}⌋: a centre between ⌊{vmax}⌋ + ½ and {vmax} is left out, "
+    "and one at ⌊{vmax}⌋ − ½ kept whatever",
+    "round": "your end {what} is {vmax} rounded (round() or np.round: half to even)",
+    "ceil+half": "your end {what} is ⌈{vmax} + ½⌉: pixel k's centre is at k + ½, and adding ½ "
+    "moves the bound the wrong way",
+    "ceil-half-1": "your end {what} is the last {what} the box holds: the task's end is one "
+    "past it (a half-open range, as range(i0, i1))",
+}
+AXES = {
+    "rows": dict(what="row", lo="top", hi="bottom", vmin="y_min", vmax="y_max",
+                 edge="horizontal top edge"),
+    "columns": dict(what="column", lo="left", hi="right", vmin="x_min", vmax="x_max",
+                    edge="vertical left edge"),
+}  # fmt: skip
+
+
+def _axis_words(axis: str, end: str, form: str) -> str:
+    table = FIRST if end == "first" else END
+    text = table[form].format(**AXES[axis])
+    return f"{axis}: {text}"
+
+
+def _box_with(xy, width, height, forms=None, clamp="both", swap_axes=False, f32=False):
+    """A box with wrong parts: ``forms`` {(axis, first|end): form}, the clamping, axes read
+    the other way round, vertices in float32."""
+    forms = forms or {}
+    if f32:
+        v = np.asarray(xy, dtype=np.float32)
+        xs = [np.float32(p[0]) for p in v]
+        ys = [np.float32(p[1]) for p in v]
+
+        def end(vals, first):
+            m = min(vals) if first else max(vals)
+            return int(np.ceil(m - np.float32(0.5)))
+
+        r0, r1, c0, c1 = end(ys, True), end(ys, False), end(xs, True), end(xs, False)
+    else:
+        x0, x1, y0, y1 = _bounds(xy)
+        r0 = _f(y0, forms.get(("rows", "first"), "ceil-half"))
+        r1 = _f(y1, forms.get(("rows", "end"), "ceil-half"))
+        c0 = _f(x0, forms.get(("columns", "first"), "ceil-half"))
+        c1 = _f(x1, forms.get(("columns", "end"), "ceil-half"))
+    nr, nc = (width, height) if clamp == "swapped" else (height, width)
+    if swap_axes:
+        r0, r1, c0, c1 = c0, c1, r0, r1
+    if clamp in ("both", "swapped"):
+        return _clamp(r0, nr), _clamp(r1, nr), _clamp(c0, nc), _clamp(c1, nc)
+    if clamp == "none":
+        return r0, r1, c0, c1
+    if clamp == "low":
+        return max(r0, 0), max(r1, 0), max(c0, 0), max(c1, 0)
+    if clamp == "high":
+        return min(r0, nr), min(r1, nr), min(c0, nc), min(c1, nc)
+    if clamp == "last":  # the end clamped to n − 1, as an index
+        return (_clamp(r0, nr - 1), _clamp(r1, nr - 1), _clamp(c0, nc - 1), _clamp(c1, nc - 1))
+    raise ValueError(clamp)
+
+
+def _form_kinds() -> dict:
+    """{kind: ({(axis, end): form}, words)}: one wrong end form on both axes, then on one."""
+    out = {}
+    for end, table in (("end", END), ("first", FIRST)):
+        for form in table:
+            both = {("rows", end): form, ("columns", end): form}
+            words = table[form].format(
+                what="row or column", lo="top or left", hi="right or bottom",
+                vmin="x_min (y_min)", vmax="x_max (y_max)",
+                edge="horizontal top edge or a vertical left edge")  # fmt: skip
+            out[f"{end} {form}, both axes"] = (both, words)
+            for axis in AXES:
+                out[f"{end} {form}, {axis}"] = ({(axis, end): form}, _axis_words(axis, end, form))
+    # two slips at once, on both axes: lesson 02 §1's closed box with its first row or column
+    # wrong too, the box of the pixels the bounding box touches (⌊min⌋, ⌈max⌉), ...
+    both = dict(what="row or column", lo="top or left", hi="right or bottom",
+                vmin="x_min (y_min)", vmax="x_max (y_max)",
+                edge="horizontal top edge or a vertical left edge")  # fmt: skip
+    for first in FIRST:
+        for end in END:
+            forms = {(a, "end"): end for a in AXES} | {(a, "first"): first for a in AXES}
+            words = (
+                PIXEL_BOX
+                if (first, end) == ("floor", "ceil")
+                else FIRST[first].format(**both) + "; and " + END[end].format(**both)
+            )
+            out[f"first {first} and end {end}"] = (forms, words)  # fmt: skip
+    return out
+
+
+PIXEL_BOX = (
+    "your box is that of the pixels the bounding box touches (⌊min⌋ … ⌈max⌉), not of the "
+    "pixels whose centre it holds: the first row or column whose centre (k + ½) lies at or "
+    "past the minimum, and the end where the centres reach the maximum"
+)
+
+
+FORM_KINDS = _form_kinds()
+
+CLAMP_WORDS = {
+    "none": "your box is not clamped to the image: a row or column index below 0 or at or "
+    "past height (width) lies outside it (numpy wraps a negative index round to the far side)",
+    "low": "your box is clamped below (at 0) but not above: an end past height (width) "
+    "indexes outside the image",
+    "high": "your box is clamped above (at height, width) but not below: a negative first "
+    "row or column wraps round to the image's far side in numpy",
+    "last": "you clamped the ends to height − 1 and width − 1, the last index: the end of a "
+    "half-open range is one past it, so the image's last row or column is left out",
+    "swapped": "you clamped the rows to width and the columns to height: rows count down the "
+    "image's height, columns across its width",
+}
+
+
+def _variants(xy, width, height) -> dict:
+    out = {}
+    for kind, (forms, _) in FORM_KINDS.items():
+        out[kind] = _box_with(xy, width, height, forms)
+    for clamp in CLAMP_WORDS:
+        out[f"clamp {clamp}"] = _box_with(xy, width, height, clamp=clamp)
+    out["closed, not clamped"] = _box_with(
+        xy, width, height, {(a, "end"): "floor-half+1" for a in AXES}, clamp="none"
+    )
+    out["axes swapped"] = _box_with(xy, width, height, swap_axes=True)
+    r0, r1, c0, c1 = centre_box(xy, width, height)
+    out["columns first"] = (c0, c1, r0, r1)
+    out["first, first, end, end"] = (r0, c0, r1, c1)
+    out["float32"] = _box_with(xy, width, height, f32=True)
+    out["whole image"] = (0, height, 0, width)
+    out["y up"] = (_clamp(height - r1, height), _clamp(height - r0, height), c0, c1)
+    a = np.asarray(xy, dtype=float)
+    out["min over axis 1"] = _from_bounds(a.min(axis=1)[:2], a.max(axis=1)[:2], width, height)
+    out["two vertices"] = _from_bounds(a[:2].min(axis=0), a[:2].max(axis=0), width, height)
+    return out
+
+
+def _from_bounds(lo, hi, width, height):
+    """The right formula on wrong bounds (lo = (x_min, y_min), hi = (x_max, y_max))."""
+    first = [math.ceil(Fraction(float(v)) - HALF) for v in (*lo, *hi)]
+    return (
+        _clamp(first[1], height),
+        _clamp(first[3], height),
+        _clamp(first[0], width),
+        _clamp(first[2], width),
+    )
+
+
+WORDS = {kind: words for kind, (_, words) in FORM_KINDS.items()}
+WORDS |= {f"clamp {k}": w for k, w in CLAMP_WORDS.items()}
+WORDS |= {
+    "closed, not clamped": END["floor-half+1"].format(what="row or column",
+                                                      hi="right or bottom", vmax="x_max (y_max)")
+    + "; and " + CLAMP_WORDS["none"],
+    "axes swapped": "your rows come from the x coordinates and your columns from y: a row i "
+    "is a horizontal line of pixels, its centres at y = i + ½",
+    "columns first": "you returned (j0, j1, i0, i1), columns first: the task asks (i0, i1, j0, "
+    "j1), rows first, as an image is indexed [row, column]",
+    "first, first, end, end": "you returned (i0, j0, i1, j1): the task asks (i0, i1, j0, j1), "
+    "the rows' range, then the columns'",
+    "float32": "your bounds are computed in float32: far from the origin float32 numbers are "
+    "0.0078125 px apart and cannot hold the vertices' 1/256-px grid, so a bound moves past a "
+    "centre. Compute in float64 (Python floats)",
+    "y up": "your rows count up from the image's bottom (y up): y grows downwards here, row 0 "
+    "at the top",
+    "min over axis 1": "your bounds are minima and maxima over each vertex's own (x, y) "
+    "(axis=1), not over the three vertices' x and y (axis=0 of the 3 × 2 array)",
+    "two vertices": "your bounding box is that of the first two vertices only: take every "
+    "vertex's",
+    "whole image": "you returned the whole image (0, height, 0, width): a placeholder? The box "
+    "must come from the triangle's bounding box",
+}  # fmt: skip
+
+
+def _covered_box_fits(args, expected, got) -> bool | None:
+    """The box of the pixels the package covers (a fill first, then its extent)."""
+    xy, w, h = args
+    cov = rasterize(_tri(xy), w, h).coverage
+    rows, cols = np.flatnonzero(cov.any(axis=1)), np.flatnonzero(cov.any(axis=0))
+    if not rows.size:
+        return is_empty(got) and not is_empty(expected)
+    return tuple(got) == (rows[0], rows[-1] + 1, cols[0], cols[-1] + 1) != tuple(expected)
+
+
+def _tri(xy):
+    from ..core.triangle import Triangle
+
+    return Triangle(np.asarray(xy, dtype=float))
+
+
+SYMPTOMS = (
+    Mistake(
+        "box of the covered pixels",
+        "your box is that of the pixels the triangle covers (filled first?): the box comes "
+        "before the fill, from the bounding box alone, and holds every centre a triangle with "
+        "this bounding box could cover",
+        fits=_covered_box_fits,
+        symptom=True,
+    ),
+)
+
+HINTS = (
+    (
+        ": only a right or bottom edge, or the rightmost or lowest vertex, can lie on that side, "
+        "and the top-left rule never covers a centre on them",
+        ": can the top-left rule ever cover a centre there? Which edges and vertices of a "
+        "triangle can lie on that side?",
+    ),
+    (
+        "there: a horizontal top edge or a vertical left edge lying on that side owns its "
+        "centres",
+        "there? Which edges can lie on that side, and does the rule own them?",
+    ),
+    ("there: a horizontal top edge lying on that side owns its centres",
+     "there? Which edges can lie on that side, and does the rule own them?"),
+    ("there: a vertical left edge lying on that side owns its centres",
+     "there? Which edges can lie on that side, and does the rule own them?"),
+)  # fmt: skip
+
+
+def explain_box(args, expected, got) -> str:
+    xy, w, h = args
+    x0, x1, y0, y1 = _bounds(xy)
+    vertices = ", ".join(f"({num(p[0])}, {num(p[1])})" for p in xy)
+    return (
+        f"triangle ({vertices}) in a {w} × {h} image: x from {num(float(x0))} to "
+        f"{num(float(x1))}, y from {num(float(y0))} to {num(float(y1))}; the box is "
+        f"{_box_words(expected)}; yours: {_box_words(got)}"
+    )
+
+
+def _box_words(b) -> str:
+    if b is None:
+        return "nothing"
+    if is_empty(b):
+        return f"{tuple(b)}, empty"
+    r0, r1, c0, c1 = b
+    return f"rows {r0} to {r1 - 1}, columns {c0} to {c1 - 1} {tuple(b)}"
+
+
+def _rule(args, expected, got) -> str:
+    return (
+        ": the box holds every centre (j + ½, i + ½) inside the triangle's bounding box that "
+        "the top-left rule can cover for some triangle with that bounding box, and no other "
+        "row or column; then clamped to the image"
+    )
+
+
+def _constant(value) -> str:
+    return (
+        f"your function returns {tuple(value)} on every case, whatever its arguments: a "
+        "placeholder left in, or a `return` reached too early?"
+    )
+
+
+# -- drawing ----------------------------------------------------------------------------------
+def draw_box(ax, case, got):
+    """The image's border, the triangle, the centres near it, the box and the student's."""
+    from matplotlib.patches import Rectangle
+
+    _, (xy, w, h), expected = case
+    x0, x1 = float(xy[:, 0].min()), float(xy[:, 0].max())
+    y0, y1 = float(xy[:, 1].min()), float(xy[:, 1].max())
+    lo_x, hi_x = max(math.floor(x0) - 2, -3), min(math.ceil(x1) + 2, w + 3)
+    lo_y, hi_y = max(math.floor(y0) - 2, -3), min(math.ceil(y1) + 2, h + 3)
+    if hi_x - lo_x > 30:
+        lo_x, hi_x = math.floor(x0) - 2, math.floor(x0) + 12
+    if hi_y - lo_y > 30:
+        lo_y, hi_y = math.floor(y0) - 2, math.floor(y0) + 12
+    artists = [ax.add_patch(Rectangle((0, 0), w, h, fill=False, ec="#888888", lw=1.5,
+                                      label="the image"))]  # fmt: skip
+    artists.append(ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, ec="#ff9f1c",
+                                          ls="--", lw=1, label="bounding box")))  # fmt: skip
+    ring = np.vstack([xy, xy[:1]])
+    artists += ax.plot(ring[:, 0], ring[:, 1], color="black", lw=1)
+    gi, gj = np.mgrid[lo_y:hi_y, lo_x:hi_x]
+    artists += ax.plot(gj.ravel() + 0.5, gi.ravel() + 0.5, ".", color="#999999", ms=3)
+    if got is None:
+        r0, r1, c0, c1 = expected
+        if not is_empty(expected):
+            artists.append(ax.add_patch(Rectangle((c0, r0), c1 - c0, r1 - r0, color="#2b7bba",
+                                                  alpha=0.25, label="the box")))  # fmt: skip
+        note_beside(ax)
+    else:
+        for b, colour, label in ((expected, "#2b7bba", "the box"), (got, "#d7301f", "yours")):
+            if b is not None and not is_empty(b):
+                r0, r1, c0, c1 = b
+                artists.append(ax.add_patch(Rectangle(
+                    (c0, r0), c1 - c0, r1 - r0, fill=colour == "#2b7bba", color=colour,
+                    alpha=0.25 if colour == "#2b7bba" else 1, lw=2, label=label)))  # fmt: skip
+    artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
+    ax.set_xlim(lo_x, hi_x)
+    ax.set_ylim(hi_y, lo_y)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (px); dots: pixel centres", fontsize="small")
+    ax.set_ylabel("y (px, down)", fontsize="small")
+    return artists
+
+
+BOX = Exercise(
+    "box", box_cases, as_box, same_box, explain_box, _rule,
+    variant_mistakes(_variants, WORDS, SYMPTOMS),
+    answers=(
+        PackageAnswer(rasterize),
+        PackageAnswer(pixel_bbox, what="the closed box of centres (⌊max − ½⌋ + 1)"),
+    ),
+    draw=draw_box, constant=_constant,
+    match=lambda got, answer, args: answer is not None and same_box(got, answer, args),
+    hints=HINTS,
+)  # fmt: skip
