@@ -4,6 +4,8 @@
 Each is an :class:`~.exercise.Exercise` (its cases, its answer's reading, its table of
 typical mistakes), defined in its own module:
 
+- ``defect_case`` (lesson 03, :mod:`.bary_repair`): a case for each defect of a shipped
+  ``barycentric``;
 - ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
   ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
@@ -32,6 +34,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from . import bary_repair as br
 from . import breaking_case as bc
 from . import broken_frame_steps as bfs
 from . import broken_frames as bf
@@ -58,6 +61,7 @@ from .exercise import Exercise
 EXERCISES: dict[str, Callable[[], Exercise]] = {
     "span": lambda: spans.SPAN,
     "sample_span": lambda: ss.SAMPLE_SPAN,  # 2.2: the span at a sample (r454 T1)
+    "defect_case": lambda: br.DEFECT_CASE,  # 3.1b: a case for each defect (r488)
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
     "depth_passes": lambda: zb.DEPTH_PASSES,
     "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
