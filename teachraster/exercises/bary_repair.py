@@ -275,13 +275,6 @@ def _rule(args, expected, got) -> str:
     return ""
 
 
-def _constant(value) -> str:
-    return (f"your function returns the same case, {tri_words(value[0])}, p = {vec(value[1])}, "
-            "for both defects, whatever its argument: a placeholder left in, or names that are "
-            "not the task's two ('zero-area test', 'area', spelled exactly so)? A case that needs "
-            "one repair alone cannot need the other alone: each defect has a case of its own")  # fmt: skip
-
-
 def _compose(head: str, words: str) -> str:
     return f"{head}: {words}" if words else head
 
@@ -308,6 +301,6 @@ def draw_case(ax, case, got):
 
 DEFECT_CASE = Exercise(
     "defect_case", cases, as_case, _same, _explain, _rule,
-    [_mistake(kind) for kind in KINDS], draw=draw_case, compose=_compose, constant=_constant,
+    [_mistake(kind) for kind in KINDS], draw=draw_case, compose=_compose,
     reference=("teachraster.exercises.interpolation",),
 )  # fmt: skip
