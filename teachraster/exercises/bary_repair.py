@@ -295,7 +295,9 @@ def draw_case(ax, case, got):
     ax.invert_yaxis()
     ax.set_xlabel("x (px)")
     ax.set_ylabel("y (px, down)")
-    ax.legend(loc="best", fontsize="small")
+    ax.margins(0.45)  # room for the legend beside the triangle
+    ax.ticklabel_format(useOffset=False)  # 20 000 px out: whole coordinates, no "+2e4"
+    ax.legend(loc="best", fontsize="small", framealpha=0.8)
     return artists
 
 
