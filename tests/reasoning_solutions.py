@@ -370,8 +370,18 @@ def breaking_case(repair):
     return [[996.5, 1000.5], [1004.5, 1000.5 - 1 / 256], [1000.25, 1006.0]], 12, 12, (996, 996)
 
 
+def defect_case(defect):
+    """Exercise 3.1b (r488): a case for each defect of the shipped barycentric. cond grows as
+    (distance)² / E: a 2-px triangle with E = 4 > 0 (abs(E) = E) 20 000 px out is refused;
+    a clockwise one (E = -16) at the origin, p not v3, gets λ1 and λ2 negated."""
+    if defect == "zero-area test":
+        return [[2e4, 2e4], [2e4 + 2, 2e4], [2e4, 2e4 + 2]], (2e4 + 0.5, 2e4 + 0.5)
+    return [[0.0, 0.0], [0.0, 4.0], [4.0, 0.0]], (1.0, 1.0)
+
+
 CORRECT = {
     "box": box,
+    "defect_case": defect_case,
     "span": span,
     "sample_span": sample_span,
     "perspective_weights": perspective_weights,

@@ -12288,3 +12288,23 @@ R487 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R487.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R487.items()})
+# r488: exercise 3.1b defect_case (a case for each defect of the shipped barycentric); every
+# variant with its kind is in r488_variants (run by test_exercises_r488.py); a few here.
+import r488_variants  # noqa: E402
+
+R488_WORDS = {
+    "also needs": "the other defect breaks it too",
+    "passes the test": "the shipped test lets this triangle through",
+    "area right": "abs(E) = E",
+    "at v3": "at p = v3",
+    "thin": "below the task's 1 px²",
+    "the other defect's": "this is a case for the other defect",
+    "catalogue": "of barycentric's check",
+    "zero area": "refusing it is right",
+}
+for _label, (_fn, _kind) in r488_variants.WRONG.items():
+    if _kind in R488_WORDS:
+        WRONG[f"defect_case, {_label} (r488)"] = ("defect_case", _fn, R488_WORDS[_kind])
+        KINDS[f"defect_case, {_label} (r488)"] = _kind
+for _label, _fn in list(r488_variants.CORRECT.items())[:3]:
+    DIFFERENT[f"defect_case, {_label} (r488)"] = ("defect_case", _fn)

@@ -26,6 +26,7 @@ from teachraster.exercises.checks import exercise
 CORRECT = {**_CORRECT, **_REASONING}
 #: Exercises with fewer than three cases (a redrawn broken frame): no answer is a constant.
 FEW = [name for name in ex.names() if name.startswith("broken_frame_")]
+FEW.append("defect_case")  # r488: two cases, too few to call an answer constant
 #: Words of a rule or a mistake's name that a constant's explanation must not hold.
 TELLING = ("top-left rule", "z − w", "d_a/", "linear_to_srgb", "u·W", "formula", "float32")
 

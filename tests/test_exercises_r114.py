@@ -242,7 +242,8 @@ def test_exercise_3_asks_beyond_what_lessons_03_and_04_print():
         return " ".join("".join(cell["source"]).split())
 
     first, second = task("task_3_1"), task("task_3_2")
-    assert "Lesson 03 §1" in first and "Cramer's rule" in first, first
+    # r488: 3.1 repairs a shipped barycentric (its two defects), 3.1b a case for each
+    assert "two defects" in first and "np.linalg.cond" in first and "abs" in first, first
     # r126 D3-1: 3.2 derives μ from the divide by w on a GPU's w; r421 T2: 1e-310 graded again
     assert "Derive μ from λ and the three clip-space w using only these facts" in second, second
     assert "1e610" not in second and "the check also asks it of those extreme w" in second

@@ -196,7 +196,7 @@ def test_3_2_grades_w_beyond_a_gpus_last_and_says_so():
         if not beyond_a_gpu(label):
             assert same_weights(_naive_weights(lam, w), mu), label
     path = Path(__file__).parents[1] / "notebooks/exercises/03_interpolation.ipynb"
-    text = " ".join(nbformat.read(path, 4).cells[5].source.split())
+    text = " ".join(nbformat.read(path, 4).cells[9].source.split())
     assert "the check also asks it of those extreme w" in text
     assert "w = (1e-310, 2e-310, 4e-310)" in text and "An extra, not graded" not in text
     assert "`perspective_w_ratio_1e6` case, w from 1e-3 to 1e3" in text

@@ -4,7 +4,10 @@
 Each is an :class:`~.exercise.Exercise` (its cases, its answer's reading, its table of
 typical mistakes), defined in its own module:
 
-- ``box`` (lesson 02, :mod:`.centre_box`): the box of centres, in place of ``fill``; ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
+- ``box`` (lesson 02, :mod:`.centre_box`): the box of centres, in place of ``fill``;
+- ``defect_case`` (lesson 03, :mod:`.bary_repair`): a case for each defect of a shipped
+  ``barycentric``;
+- ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
   ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
   reasoning in place of ``split_point``,
@@ -32,6 +35,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from . import bary_repair as br
 from . import breaking_case as bc
 from . import broken_frame_steps as bfs
 from . import broken_frames as bf
@@ -60,6 +64,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "box": lambda: cb.BOX,  # 1.2: the centres a bounding box can hold (r453 T1)
     "span": lambda: spans.SPAN,
     "sample_span": lambda: ss.SAMPLE_SPAN,  # 2.2: the span at a sample (r454 T1)
+    "defect_case": lambda: br.DEFECT_CASE,  # 3.1b: a case for each defect (r488)
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
     "depth_passes": lambda: zb.DEPTH_PASSES,
     "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
