@@ -159,7 +159,7 @@ def test_the_pass_figures_answers_are_the_references():
         assert tf.reference(s, (outside, 0.5), lod, "clamp") == tf.reference(
             s, (outside, 0.5), lod, "repeat"
         )
-    assert "3×5's level 1: 1×2" in text
+    assert "(3) 3×5, 1×2, 1×1" in text
 
 
 def _cells() -> dict:

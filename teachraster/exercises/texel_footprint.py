@@ -500,16 +500,14 @@ def questions() -> str:
     wide = reference(gl_sizes(2, 8), (0.3, 0.9), 1.5, "repeat")
     bands = []
     for lod in (0, 2):
-        w = gl_sizes(8, 8)[lod][1]
-        grid = [k / 1024 for k in range(1025)]
+        grid = [k / 1024 for k in range(513)]
         parts = [u for u in grid if reference(gl_sizes(8, 8), (u, 0.5), lod, "clamp")
                  != reference(gl_sizes(8, 8), (u, 0.5), lod, "repeat")]  # fmt: skip
-        low = max(u for u in parts if u < 0.5)
-        bands.append(f"λ = {lod} ({w} wide): u < {num(low + 1 / 1024)} and u > "
-                     f"{num(1 - low - 1 / 1024)}")  # fmt: skip
-    return (f"7.2: 2×8, λ = 1.5, (0.3, 0.9), repeat: {len(wide)} texels\n"
-            f"clamp ≠ repeat on 8×8: {bands[0]};\n{bands[1]}\n"
-            f"3×5's level 1: {gl_sizes(3, 5)[1][0]}×{gl_sizes(3, 5)[1][1]}")  # fmt: skip
+        low = max(parts) + 1 / 1024
+        bands.append(f"λ = {lod}: u < {num(low)}, u > {num(1 - low)}")
+    sizes = ", ".join(f"{h}×{w}" for h, w in gl_sizes(3, 5))
+    return (f"7.2's questions:\n(1) 2×8, λ = 1.5, (0.3, 0.9),\nrepeat: {len(wide)} texels\n"
+            f"(2) clamp ≠ repeat on 8×8,\n{bands[0]}\n{bands[1]}\n(3) {sizes}")  # fmt: skip
 
 
 def draw(ax, case, got):
@@ -540,7 +538,7 @@ def draw(ax, case, got):
                                        facecolor=(0.17, 0.48, 0.73, 0.15 + 0.6 * shade)
                                        if shade else "white", lw=0.8))  # fmt: skip
                 mine = got.get(key, 0.0) if isinstance(got, dict) else 0.0
-                if method and shade and w <= 8 and h <= 8:
+                if method and shade and w <= 4 and h <= 4:
                     artists.append(
                         ax.text(
                             ox + (c + 0.5) / w,
@@ -551,7 +549,7 @@ def draw(ax, case, got):
                             fontsize="xx-small",
                         )
                     )
-                if mine and not passed and w <= 8 and h <= 8:
+                if mine and not passed and w <= 4 and h <= 4:
                     artists.append(ax.text(ox + (c + 0.5) / w, (r + 0.7) / h, num(mine),
                                            ha="center", va="center", fontsize="xx-small",
                                            color="#d62728"))  # fmt: skip
@@ -563,7 +561,7 @@ def draw(ax, case, got):
     if passed:
         artists.append(ax.text(right + 0.15, 0.5, questions(), ha="left", va="center",
                                fontsize="x-small"))  # fmt: skip
-    ax.set_xlim(-0.1, right + (2.6 if passed else 0.1))
+    ax.set_xlim(-0.1, right + (1.9 if passed else 0.1))
     ax.set_ylim(1.1, -0.2)
     ax.set_aspect("equal")
     ax.set_xticks([])
@@ -582,4 +580,5 @@ TEXEL_WEIGHTS = Exercise(
     answers=(PackageAnswer(sample, modules=FILTER_MODULES["trilinear"]),),
     draw=draw, hints=((RULE, HINT),), once=((RULE, ": as said for the first failing case"),),
     inputs_drawn=True, raised_words=raised_words, partial_names=True,
+    example=10,  # the wide pyramid of the task's first question
 )  # fmt: skip
