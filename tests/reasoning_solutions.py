@@ -379,6 +379,30 @@ def defect_case(defect):
     return [[0.0, 0.0], [0.0, 4.0], [4.0, 0.0]], (1.0, 1.0)
 
 
+def texel_weights(sizes, uv, lod, wrap):
+    """7.2 (r491): the texels of a trilinear fetch, one axis at a time, in Python floats."""
+    q = len(sizes) - 1
+    lam = min(max(lod, 0.0), q)
+    lower = math.floor(lam)
+    out = {}
+    for level, share in ((lower, 1 - (lam - lower)), (min(lower + 1, q), lam - lower)):
+        h, w = sizes[level]
+
+        def axis(t, n):
+            x = t * n - 0.5
+            i = math.floor(x)
+            taps = {}
+            for j, wt in ((i, 1 - (x - i)), (i + 1, x - i)):
+                j = j % n if wrap == "repeat" else min(max(j, 0), n - 1)
+                taps[j] = taps.get(j, 0.0) + wt
+            return taps
+
+        for r, wr in axis(uv[1], h).items():
+            for c, wc in axis(uv[0], w).items():
+                out[(level, r, c)] = out.get((level, r, c), 0.0) + share * wr * wc
+    return out
+
+
 CORRECT = {
     "box": box,
     "defect_case": defect_case,
@@ -397,6 +421,7 @@ CORRECT = {
     "breaking_case": breaking_case,
     "quad_derivatives": quad_derivatives,
     "pixel_lod": pixel_lod,
+    "texel_weights": texel_weights,
     "pixel_sample": pixel_sample,
     "hiz_rejects": hiz_rejects,
     **{f"broken_frame_{n}": diagnosis(n) for n in BROKEN_FRAMES},

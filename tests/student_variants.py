@@ -12308,3 +12308,296 @@ for _label, (_fn, _kind) in r488_variants.WRONG.items():
         KINDS[f"defect_case, {_label} (r488)"] = _kind
 for _label, _fn in list(r488_variants.CORRECT.items())[:3]:
     DIFFERENT[f"defect_case, {_label} (r488)"] = ("defect_case", _fn)
+
+
+# -- r491 (r433 T1, r418 T1): exercise 7.2, texel_weights(sizes, uv, lod, wrap) --------------
+def _r491_with(origin=-0.5, floor=math.floor, size=lambda s, k: s[k], wrap_of=None,
+               levels=None, add=True, key=lambda k, r, c: (k, r, c), uv_of=lambda u, v, k: (u, v),
+               dtype=float):  # fmt: skip
+    """A student's texel_weights, written loop by loop, with one knob turned per slip."""
+
+    def wrapped(i, n, wrap):
+        if wrap_of is not None:
+            return wrap_of(i, n, wrap)
+        return i % n if wrap == "repeat" else min(max(i, 0), n - 1)
+
+    def split(q, lod):
+        if levels is not None:
+            return levels(q, lod)
+        lam = min(max(lod, 0.0), q)
+        lower = math.floor(lam)
+        return [(lower, 1 - (lam - lower)), (min(lower + 1, q), lam - lower)]
+
+    def texel_weights(sizes, uv, lod, wrap):
+        out = {}
+        for k, share in split(len(sizes) - 1, float(lod)):
+            h, w = size(sizes, k)
+            u, v = uv_of(dtype(uv[0]), dtype(uv[1]), k)
+            x, y = u * dtype(w) + dtype(origin), v * dtype(h) + dtype(origin)
+            x0, y0 = floor(x), floor(y)
+            fx, fy = x - x0, y - y0
+            for r, wy in ((y0, 1 - fy), (y0 + 1, fy)):
+                for c, wx in ((x0, 1 - fx), (x0 + 1, fx)):
+                    t = key(k, wrapped(int(r), int(h), wrap), wrapped(int(c), int(w), wrap))
+                    part = float(dtype(share) * wy * wx)
+                    out[t] = out.get(t, 0.0) + part if add else part
+        return out
+
+    return texel_weights
+
+
+def _r491_levels(kind):
+    def split(q, lod):
+        lam = min(max(lod, 0.0), q)
+        lower = math.floor(lam)
+        t = lam - lower
+        if kind == "unclamped":
+            lower = math.floor(lod)
+            return [(lower, 1 - (lod - lower)), (lower + 1, lod - lower)]
+        if kind == "split first":
+            lo = min(max(math.floor(lod), 0), q)
+            t = lod - math.floor(lod)
+            return [(lo, 1 - t), (min(lo + 1, q), t)]
+        if kind == "round":
+            return [(min(max(round(lod), 0), q), 1.0)]
+        if kind == "floor":
+            return [(lower, 1.0)]
+        if kind == "swapped":
+            return [(lower, t), (min(lower + 1, q), 1 - t)]
+        if kind == "halves":
+            return [(lower, 0.5), (min(lower + 1, q), 0.5)] if t else [(lower, 1.0)]
+        if kind == "both whole":
+            return [(lower, 1.0), (min(lower + 1, q), 1.0)] if t else [(lower, 1.0)]
+        if kind == "ceil":  # ⌈λ⌉ for the upper level: at a whole λ the level above it
+            return [(lower, 1 - t), (min(math.ceil(lam), q), t)]
+        raise ValueError(kind)
+
+    return split
+
+
+def _r491_numpy(sizes, uv, lod, wrap):
+    """Vectorised: the four taps of both levels as arrays, np.add.at into a flat index."""
+    q = len(sizes) - 1
+    lam = float(np.clip(lod, 0, q))
+    lower = int(lam)
+    t = lam - lower
+    out = {}
+    for k, share in ((lower, 1 - t), (min(lower + 1, q), t)):
+        h, w = sizes[k]
+        xy = np.array(uv, dtype=float) * (w, h) - 0.5
+        base = np.floor(xy)
+        f = xy - base
+        cols = (base[0] + np.array([0, 1, 0, 1])).astype(int)
+        rows = (base[1] + np.array([0, 0, 1, 1])).astype(int)
+        wts = share * np.array([(1 - f[0]) * (1 - f[1]), f[0] * (1 - f[1]),
+                                (1 - f[0]) * f[1], f[0] * f[1]])  # fmt: skip
+        if wrap == "repeat":
+            cols, rows = np.mod(cols, w), np.mod(rows, h)
+        else:
+            cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+        flat = np.zeros(h * w)
+        np.add.at(flat, rows * w + cols, wts)
+        for i in np.flatnonzero(flat):
+            out[(np.int64(k), np.int64(i // w), np.int64(i % w))] = np.float64(flat[i])
+    return out
+
+
+def _r491_fractions(sizes, uv, lod, wrap):
+    """Exact: Fractions throughout, floats at the end."""
+    q = len(sizes) - 1
+    lam = min(max(Fraction(lod), Fraction(0)), Fraction(q))
+    lower = math.floor(lam)
+    out = {}
+    for k, share in ((lower, 1 - (lam - lower)), (min(lower + 1, q), lam - lower)):
+        if share == 0:
+            continue
+        h, w = sizes[k]
+        x, y = Fraction(uv[0]) * w - Fraction(1, 2), Fraction(uv[1]) * h - Fraction(1, 2)
+        for r in (math.floor(y), math.floor(y) + 1):
+            for c in (math.floor(x), math.floor(x) + 1):
+                wt = share * (1 - abs(y - r)) * (1 - abs(x - c))
+                rr, cc = (r % h, c % w) if wrap == "repeat" else (min(max(r, 0), h - 1),
+                                                                  min(max(c, 0), w - 1))  # fmt: skip
+                out[(k, rr, cc)] = out.get((k, rr, cc), 0) + wt
+    return {key: float(v) for key, v in out.items() if v}
+
+
+def _r491_reduced(sizes, uv, lod, wrap):
+    """u and v reduced first: modulo 1 under repeat, clamped to [0, 1] under clamp."""
+    u, v = (t % 1.0 for t in uv) if wrap == "repeat" else (min(max(t, 0.0), 1.0) for t in uv)
+    return _r491_with()(sizes, (u, v), lod, wrap)
+
+
+def _r491_modf(sizes, uv, lod, wrap):
+    """λ split with math.modf, early return at the pyramid's ends, every zero weight listed."""
+    q = len(sizes) - 1
+    one = _r491_with(levels=lambda q_, lam: [(int(lam), 1.0)])
+    if lod <= 0:
+        return one(sizes, uv, 0, wrap)
+    if lod >= q:
+        return one(sizes, uv, q, wrap)
+    t, whole = math.modf(lod)
+    a, b = one(sizes, uv, int(whole), wrap), one(sizes, uv, int(whole) + 1, wrap)
+    out = {key: (1 - t) * wt for key, wt in a.items()}
+    out.update({key: t * wt for key, wt in b.items()})
+    return out
+
+
+def _r491_default(sizes, uv, lod, wrap):
+    """collections.defaultdict, divmod for repeat, sorted output."""
+    from collections import defaultdict
+
+    q = len(sizes) - 1
+    lam = q if lod > q else (0 if lod < 0 else lod)
+    d = int(lam // 1)
+    acc = defaultdict(float)
+    for k, share in ((d, 1 - (lam - d)), (min(d + 1, q), lam - d)):
+        h, w = sizes[k]
+        for r, wr in _r491_taps(uv[1], h, wrap):
+            for c, wc in _r491_taps(uv[0], w, wrap):
+                acc[(k, r, c)] += share * wr * wc
+    return dict(sorted(acc.items()))
+
+
+def _r491_taps(t, n, wrap):
+    x = t * n - 0.5
+    i = math.floor(x)
+    f = x - i
+    taps = []
+    for j, wt in ((i, 1 - f), (i + 1, f)):
+        j = divmod(j, n)[1] if wrap == "repeat" else (0 if j < 0 else min(j, n - 1))
+        taps.append((j, wt))
+    return taps
+
+
+def _r491_zero_weights(sizes, uv, lod, wrap):
+    """No weight skipped or merged away: zero weights listed (the level above q is q)."""
+    return _r491_with()(sizes, uv, lod, wrap)
+
+
+def _r491_skip_zeros(fn):
+    """``fn`` with every zero weight skipped before it is stored (a student's `if w == 0:
+    continue`), run through the same loops: here by reading each tap again."""
+
+    def texel_weights(sizes, uv, lod, wrap):
+        q = len(sizes) - 1
+        lam = min(max(lod, 0.0), q)
+        lower = math.floor(lam)
+        out = {}
+        for k, share in ((lower, 1 - (lam - lower)), (min(lower + 1, q), lam - lower)):
+            h, w = sizes[k]
+            for r, wr in _r491_taps(uv[1], h, wrap):
+                for c, wc in _r491_taps(uv[0], w, wrap):
+                    if share * wr * wc != 0:
+                        out[(k, r, c)] = share * wr * wc
+        return out
+
+    return texel_weights
+
+
+DIFFERENT.update({
+    "texel weights, the notebook's loops (r491)": ("texel_weights", _r491_with()),
+    "texel weights, sizes as max(1, level 0 // 2ᵏ) (r491)": (
+        "texel_weights", _r491_with(size=lambda s, k: (max(1, s[0][0] // 2**k),
+                                                         max(1, s[0][1] // 2**k)))),
+    "texel weights, vectorised with np.add.at and numpy keys (r491)": ("texel_weights", _r491_numpy),
+    "texel weights in Fractions (r491)": ("texel_weights", _r491_fractions),
+    "texel weights in float32 (r491)": ("texel_weights", _r491_with(dtype=np.float32)),
+    "texel weights, (u, v) reduced first (r491)": ("texel_weights", _r491_reduced),
+    "texel weights, λ split with math.modf, zero weights listed (r491)": ("texel_weights", _r491_modf),
+    "texel weights, defaultdict and divmod (r491)": ("texel_weights", _r491_default),
+    "texel weights, zero weights kept (r491)": ("texel_weights", _r491_zero_weights),
+    "texel weights, ⌈λ⌉ for the upper level (r491)": (
+        "texel_weights", _r491_with(levels=_r491_levels("ceil"))),
+})  # fmt: skip
+
+
+def _r491_mirror(i, n, wrap):
+    if wrap == "repeat":
+        return i % n
+    i %= 2 * n
+    return i if i < n else 2 * n - 1 - i
+
+
+_R491_SWAP = {"repeat": "clamp", "clamp": "repeat"}
+R491 = {
+    "texel weights at texel corners": (
+        "texel_weights", _r491_with(origin=0.0), "its left corner", "texel corners"),
+    "texel weights, half a texel added": (
+        "texel_weights", _r491_with(origin=0.5), "half a texel the wrong way",
+        "half a texel the wrong way"),
+    "texel weights with int() for floor": (
+        "texel_weights", _r491_with(floor=int), "towards zero (int())", "int() for floor"),
+    "texel weights, round() for floor": (
+        "texel_weights", _r491_with(floor=lambda x: math.floor(x + 0.5)),
+        "nearest texel centre", "rounded to the nearest centre"),
+    "texel weights, sizes read as (W, H)": (
+        "texel_weights", _r491_with(size=lambda s, k: s[k][::-1]), "as (W, H)", "sizes as (W, H)"),
+    "texel weights, level 0's size everywhere": (
+        "texel_weights", _r491_with(size=lambda s, k: s[0]), "level 0's size on every level",
+        "level 0's size on every level"),
+    "texel weights, sizes halved from level 0 without max(1, ·)": (
+        "texel_weights", _r491_with(size=lambda s, k: (s[0][0] // 2**k, s[0][1] // 2**k)),
+        "did you halve level 0's size yourself", "raised"),
+    "texel weights, (u, v) read as (v, u)": (
+        "texel_weights", _r491_with(uv_of=lambda u, v, k: (v, u)), "as (v, u)", "(v, u)"),
+    "texel weights, (u, v) halved per level": (
+        "texel_weights", _r491_with(uv_of=lambda u, v, k: (u / 2**k, v / 2**k)),
+        "you divided (u, v) by 2ᵏ", "(u, v) scaled per level"),
+    "texel weights keyed (level, col, row)": (
+        "texel_weights", _r491_with(key=lambda k, r, c: (k, c, r)), "(level, col, row)",
+        "row and col swapped"),
+    "texel weights, wrap modes swapped": (
+        "texel_weights", _r491_with(wrap_of=lambda i, n, wp: i % n if wp == "clamp"
+                                    else min(max(i, 0), n - 1)),
+        "the wrong way round", "wrap modes swapped"),
+    "texel weights, always clamp": (
+        "texel_weights", _r491_with(wrap_of=lambda i, n, wp: min(max(i, 0), n - 1)),
+        "whatever `wrap` says", "always clamp"),
+    "texel weights, always repeat": (
+        "texel_weights", _r491_with(wrap_of=lambda i, n, wp: i % n), "whatever `wrap` says",
+        "always repeat"),
+    "texel weights, clamp mirrors": (
+        "texel_weights", _r491_with(wrap_of=_r491_mirror), "mirrors the texture",
+        "clamp as a mirror"),
+    "texel weights, repeat modulo W − 1": (
+        "texel_weights", _r491_with(wrap_of=lambda i, n, wp: i % max(n - 1, 1) if wp == "repeat"
+                                    else min(max(i, 0), n - 1)),
+        "modulo W − 1", "repeat modulo W − 1"),
+    "texel weights, indices clipped to [0, W]": (
+        "texel_weights", _r491_with(wrap_of=lambda i, n, wp: i % n if wp == "repeat"
+                                    else min(max(i, 0), n)),
+        "column W does not exist", "indices clipped to [0, W]"),
+    "texel weights, λ not clamped": (
+        "texel_weights", _r491_with(levels=_r491_levels("unclamped")), "clamps λ to [0, q] first",
+        "λ not clamped"),
+    "texel weights, λ split before the clamp": (
+        "texel_weights", _r491_with(levels=_r491_levels("split first")),
+        "before clamping it", "split before the clamp"),
+    "texel weights, round(λ) alone": (
+        "texel_weights", _r491_with(levels=_r491_levels("round")), "the nearest level alone",
+        "nearest level"),
+    "texel weights, ⌊λ⌋ alone": (
+        "texel_weights", _r491_with(levels=_r491_levels("floor")), "level ⌊λ⌋ alone", "⌊λ⌋ alone"),
+    "texel weights, level weights swapped": (
+        "texel_weights", _r491_with(levels=_r491_levels("swapped")), "weights are swapped",
+        "levels' weights swapped"),
+    "texel weights, half to each level": (
+        "texel_weights", _r491_with(levels=_r491_levels("halves")), "each of the two levels half",
+        "halves"),
+    "texel weights, no level weight": (
+        "texel_weights", _r491_with(levels=_r491_levels("both whole")),
+        "their weights are shared", "no level weight"),
+    "texel weights, duplicates overwritten": (
+        "texel_weights", _r491_with(add=False), "kept the weight of its last read only",
+        "overwritten"),
+    "texel weights, duplicates overwritten, zero weights skipped": (
+        "texel_weights", _r491_skip_zeros(_r491_with(add=False)),
+        "kept the weight of its last read only", "overwritten, zero weights skipped"),
+    "texel weights in float16": (
+        "texel_weights", _r491_with(dtype=np.float16), "float16", "float16"),
+    "texel weights, the constant {}": (
+        "texel_weights", lambda sizes, uv, lod, wrap: {}, "on every case", "constant"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R491.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R491.items()})

@@ -64,7 +64,7 @@ def solution_with(notebook: str, edits, name: str = "bilinear"):
 
 
 def _slipped(kind: str):
-    return solution_with("07_texture_filtering.ipynb", SLIPS[kind][0])
+    return solution_with("12_capstone.ipynb", SLIPS[kind][0])
 
 
 @pytest.mark.parametrize("kind", list(SLIPS))
@@ -103,7 +103,7 @@ def test_a_texture_transposed_whole_is_still_told_rows_and_columns_swapped():
 
 
 def _slipped_with(edits):
-    return solution_with("07_texture_filtering.ipynb", edits)
+    return solution_with("12_capstone.ipynb", edits)
 
 
 def test_always_clamp_is_still_told_always_clamp():
@@ -112,7 +112,7 @@ def test_always_clamp_is_still_told_always_clamp():
 
 
 RIGHT = {
-    "vectorised (the notebook's)": solution_with("07_texture_filtering.ipynb", []),
+    "vectorised (the notebook's)": solution_with("12_capstone.ipynb", []),
     "loops": es.bilinear,
     "lerps with np.ix_": es.bilinear_lerp,
     "float32 texture": _slipped_with([("dtype=float)", "dtype=np.float32)")]),

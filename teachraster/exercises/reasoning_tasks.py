@@ -23,7 +23,9 @@ typical mistakes), defined in its own module:
   repair of that rasteriser;
 - ``quad_derivatives`` (09, :mod:`.quad_difference`; still checked, for notebooks of earlier
   versions), ``pixel_lod`` (09, :mod:`.pixel_level`: the quad differences, ρ and λ composed, in
-  place of ``mip_level`` and ``quad_derivatives``), ``pixel_sample`` (09, :mod:`.pixel_sampler`:
+  place of ``mip_level`` and ``quad_derivatives``), ``texel_weights`` (09,
+  :mod:`.texel_footprint`: the texels and weights of a trilinear fetch, in place of ``bilinear``
+  and ``trilinear``, still checked), ``pixel_sample`` (09, :mod:`.pixel_sampler`:
   the whole sampler at a pixel, from the student's own ``pixel_lod`` and ``trilinear``),
   ``hiz_rejects`` (10, :mod:`.hiz_tile`),
   ``front_to_back`` (12, :mod:`.front_to_back`);
@@ -56,6 +58,7 @@ from . import reverse_z as rz
 from . import reverse_z_worst as rzw
 from . import sample_spans as ss
 from . import spans
+from . import texel_footprint as tfp
 from . import zbuffer_pixel as zb
 from .exercise import Exercise
 
@@ -78,6 +81,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "breaking_case": lambda: bc.BREAKING_CASE,
     "quad_derivatives": lambda: qd.QUAD_DERIVATIVES,
     "pixel_lod": lambda: pl.PIXEL_LOD,
+    "texel_weights": lambda: tfp.TEXEL_WEIGHTS,  # 7.2: in place of bilinear, trilinear (r491)
     "pixel_sample": lambda: ps.PIXEL_SAMPLE,
     "hiz_rejects": lambda: hz.HIZ_REJECTS,
     **bf.EXERCISES,

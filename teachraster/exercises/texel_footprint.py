@@ -1,0 +1,584 @@
+"""Exercise 7.2 ``texel_weights(sizes, uv, lod, wrap)``: the texels a trilinear fetch reads.
+
+r491 (from r433 T1, r418 T1: 7.2 ``bilinear`` was lesson 09's printed filter, 7.3
+``trilinear`` its table row): the student returns, for a pyramid of level sizes (H, W)
+(GL's floor rule: non-square, not powers of two), a (u, v) anywhere in the plane, an
+unclamped λ and a wrap mode, every texel the texture unit reads as ``{(level, row, col):
+weight}``, each texel once (weights of the same texel, read twice at a border or on a level
+one texel high, added). That asks what no lesson cell prints as code: which levels λ needs
+within the pyramid and each one's weight, where each level's own texel centres lie, which
+texels wrap onto which at the border of a level one texel high or wide, and that clamp and
+repeat part over a border band that widens level by level (half a texel of that level).
+
+Expected answers are this module's exact reference (:func:`reference`, in Fractions: every
+float is a dyadic rational, so x = u·W − ½, its floor and the weights are exact), cross-checked
+by ``tests/test_exercises_r491.py`` against :func:`teachraster.sample` (``"trilinear"``) on
+one-hot pyramids: each texel's weight is the package's value where that texel alone is 1.
+The mistakes are wrong solutions run here (:func:`weights_with`'s knobs).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from ..pipeline.texture import sample
+from .cases import SEED, fixed_and_drawn
+from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
+from .running import WrongAnswerType
+from .scalars import num, vec
+from .texture_filtering import FILTER_MODULES
+
+TOL = 1e-6  # as a texel's value (a float32 computation of a weight is right)
+HALF = Fraction(1, 2)
+
+
+def gl_sizes(h: int, w: int) -> list[tuple[int, int]]:
+    """The (H, W) of every level of a pyramid whose level 0 is h × w (GL's floor rule).
+
+    >>> gl_sizes(3, 5)
+    [(3, 5), (1, 2), (1, 1)]
+    """
+    out = [(h, w)]
+    while out[-1] != (1, 1):
+        h, w = max(1, h // 2), max(1, w // 2)
+        out.append((h, w))
+    return out
+
+
+def _wrapped(i: int, n: int, wrap: str) -> int:
+    return i % n if wrap == "repeat" else min(max(i, 0), n - 1)
+
+
+def level_split(q: int, lod) -> list[tuple[int, Fraction]]:
+    """[(level, weight)] a trilinear fetch blends at ``lod`` on levels 0 to ``q`` (exact).
+
+    >>> level_split(3, 1.25), level_split(3, -0.7), level_split(3, 3.4)
+    ([(1, Fraction(3, 4)), (2, Fraction(1, 4))], [(0, Fraction(1, 1))], [(3, Fraction(1, 1))])
+    """
+    lam = min(max(Fraction(lod), Fraction(0)), Fraction(q))
+    lower = math.floor(lam)
+    t = lam - lower
+    return [(lower, 1 - t)] if t == 0 else [(lower, 1 - t), (lower + 1, t)]
+
+
+def reference(sizes, uv, lod, wrap) -> dict[tuple[int, int, int], float]:
+    """{(level, row, col): weight} of every texel a trilinear fetch reads with a weight > 0.
+
+    >>> reference([(4, 4), (2, 2), (1, 1)], (0.05, 0.375), 0, "repeat")
+    {(0, 1, 3): 0.3, (0, 1, 0): 0.7}
+    >>> reference([(4, 4), (2, 2), (1, 1)], (0.05, 0.375), 0, "clamp")
+    {(0, 1, 0): 1.0}
+    """
+    out: dict[tuple[int, int, int], Fraction] = {}
+    for level, weight in level_split(len(sizes) - 1, lod):
+        h, w = (int(n) for n in sizes[level])
+        x, y = Fraction(uv[0]) * w - HALF, Fraction(uv[1]) * h - HALF
+        x0, y0 = math.floor(x), math.floor(y)
+        fx, fy = x - x0, y - y0
+        for r, wy in ((y0, 1 - fy), (y0 + 1, fy)):
+            for c, wx in ((x0, 1 - fx), (x0 + 1, fx)):
+                part = weight * wy * wx
+                if part:
+                    key = (level, _wrapped(r, h, wrap), _wrapped(c, w, wrap))
+                    out[key] = out.get(key, Fraction(0)) + part
+    return {k: float(v) for k, v in out.items()}
+
+
+# -- the mistakes: a fetch with knobs ----------------------------------------------------------
+def _index(i: int, n: int, wrap: str, how: str | None) -> int:
+    if how == "mod n-1" and wrap == "repeat":
+        return i % max(n - 1, 1)
+    if how == "clip n" and wrap == "clamp":
+        return min(max(i, 0), n)
+    if how == "mirror":  # clamp read as a mirror
+        period = 2 * n
+        i %= period
+        return i if i < n else period - 1 - i
+    return _wrapped(i, n, wrap)
+
+
+def _levels(q: int, lod: float, how: str) -> list[tuple[int, float]] | None:
+    lam = min(max(lod, 0.0), q)
+    if how == "unclamped":
+        lower = math.floor(lod)
+        return [(lower, 1 - (lod - lower)), (lower + 1, lod - lower)]
+    if how == "split first":  # ⌊λ⌋ and the fraction taken before the clamp
+        lower = math.floor(lod)
+        t = lod - lower
+        lo = min(max(lower, 0), q)
+        return [(lo, 1 - t), (min(lo + 1, q), t)]
+    if how == "nearest":  # GL's nearest level
+        return [(0 if lam <= 0.5 else min(math.ceil(lam + 0.5) - 1, q), 1.0)]
+    if how == "floor alone":
+        return [(math.floor(lam), 1.0)]
+    if how == "halves":
+        lower = math.floor(lam)
+        return [(lower, 0.5), (min(lower + 1, q), 0.5)] if lam != lower else [(lower, 1.0)]
+    lower = math.floor(lam)
+    t = lam - lower
+    if how == "swapped":
+        return [(lower, t), (min(lower + 1, q), 1 - t)]
+    if how == "no level weight":
+        return [(lower, 1.0), (min(lower + 1, q), 1.0)] if t else [(lower, 1.0)]
+    return [(lower, 1 - t), (min(lower + 1, q), t)]
+
+
+def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="right",
+                 wrap_as=None, levels="right", merge="add", keys="rc", uv_as="right"):  # fmt: skip
+    """A trilinear fetch's texel weights (float64) with a knob turned for each mistake; the
+    defaults give :func:`reference`'s answer. None where the mistake raises (a level beyond
+    the pyramid).
+
+    >>> weights_with([(4, 4), (2, 2), (1, 1)], (0.05, 0.375), 0, "repeat", origin=0.0)
+    {(0, 1, 0): 0.4, (0, 1, 1): 0.1, (0, 2, 0): 0.4, (0, 2, 1): 0.1}
+    """
+    q = len(sizes) - 1
+    split = _levels(q, float(lod), levels)
+    out: dict[tuple[int, int, int], float] = {}
+    mode = {"swapped": {"repeat": "clamp", "clamp": "repeat"}.get(wrap), "clamp": "clamp",
+            "repeat": "repeat"}.get(wrap_as, wrap)  # fmt: skip
+    how = wrap_as if wrap_as in ("mirror", "mod n-1", "clip n") else None
+    if how == "mirror" and wrap == "repeat":
+        how = None
+    for level, weight in split:
+        if not -len(sizes) <= level < len(sizes):
+            return None
+        h, w = (int(n) for n in sizes[level])
+        if size_as == "wh":
+            h, w = w, h
+        elif size_as == "level 0":
+            h, w = (int(n) for n in sizes[0])
+        elif size_as == "exact halves":
+            h, w = sizes[0][0] / 2**level, sizes[0][1] / 2**level
+        u, v = float(uv[0]), float(uv[1])
+        if uv_as == "vu":
+            u, v = v, u
+        elif uv_as == "per level":
+            u, v = u / 2**level, v / 2**level
+        x, y = u * w + origin, v * h + origin
+        rounding = {"floor": math.floor, "int": int, "round": lambda t: math.floor(t + 0.5)}
+        x0, y0 = rounding[floor](x), rounding[floor](y)
+        fx, fy = x - x0, y - y0
+        hi, wi = max(int(math.ceil(h)), 1), max(int(math.ceil(w)), 1)
+        for r, wy in ((y0, 1 - fy), (y0 + 1, fy)):
+            for c, wx in ((x0, 1 - fx), (x0 + 1, fx)):
+                part = weight * wy * wx
+                if part == 0 and merge != "assign zeros":
+                    continue
+                key = (level, _index(r, hi, mode, how), _index(c, wi, mode, how))
+                if keys == "cr":
+                    key = (level, key[2], key[1])
+                out[key] = out.get(key, 0.0) + part if merge == "add" else part
+    return out
+
+
+#: Each mistake's knob setting, and the words that name it (its cause, never the rule).
+VARIANTS = {
+    "texel corners": {"origin": 0.0},
+    "half a texel the wrong way": {"origin": 0.5},
+    "int() for floor": {"floor": "int"},
+    "rounded to the nearest centre": {"floor": "round"},
+    "sizes as (W, H)": {"size_as": "wh"},
+    "level 0's size on every level": {"size_as": "level 0"},
+    "sizes halved exactly": {"size_as": "exact halves"},
+    "(v, u)": {"uv_as": "vu"},
+    "(u, v) scaled per level": {"uv_as": "per level"},
+    "row and col swapped": {"keys": "cr"},
+    "wrap modes swapped": {"wrap_as": "swapped"},
+    "always clamp": {"wrap_as": "clamp"},
+    "always repeat": {"wrap_as": "repeat"},
+    "clamp as a mirror": {"wrap_as": "mirror"},
+    "repeat modulo W − 1": {"wrap_as": "mod n-1"},
+    "indices clipped to [0, W]": {"wrap_as": "clip n"},
+    "λ not clamped": {"levels": "unclamped"},
+    "split before the clamp": {"levels": "split first"},
+    "nearest level": {"levels": "nearest"},
+    "⌊λ⌋ alone": {"levels": "floor alone"},
+    "levels' weights swapped": {"levels": "swapped"},
+    "halves": {"levels": "halves"},
+    "no level weight": {"levels": "no level weight"},
+    "overwritten": {"merge": "assign zeros"},
+    "overwritten, zero weights skipped": {"merge": "assign"},
+}
+
+
+def _variants(sizes, uv, lod, wrap) -> dict:
+    out = {}
+    for kind, knobs in VARIANTS.items():
+        got = weights_with(sizes, uv, lod, wrap, **knobs)
+        if got is not None:
+            out[kind] = got
+    return out
+
+
+MISTAKES = {
+    "texel corners": "you put texel c's value at its left corner, u = c/W: a texel's value "
+    "belongs at its centre, half a texel in from its sides, so every weight here is "
+    "half a texel off",
+    "half a texel the wrong way": "you moved half a texel the wrong way: a texel's centre lies "
+    "half a texel to the right of its left side, so a u on a centre must give that texel alone",
+    "int() for floor": "you rounded x towards zero (int()) where it is negative: left of the "
+    "first centre the texel below x is column −1 (wrapped), not column 0",
+    "rounded to the nearest centre": "you took the nearest texel centre as the first of the "
+    "pair: the pair is the centre at or below x and the one above it, so that the weights "
+    "stay in [0, 1]",
+    "sizes as (W, H)": "you read each size as (W, H): `sizes` holds (H, W), rows first, like "
+    "`texture.shape`, and u runs along the W columns",
+    "level 0's size on every level": "you used level 0's size on every level: each level's "
+    "texels are its own, 2ᵏ times as large, so the same (u, v) lies at other texel "
+    "coordinates on each level",
+    "sizes halved exactly": "you halved level 0's size 2ᵏ times in real numbers: a level's "
+    "size is a whole number of texels, the one `sizes` gives (GL's floor rule: 5 → 2 → 1)",
+    "(v, u)": "you read (u, v) as (v, u): u runs along the columns (left to right), v along "
+    "the rows",
+    "(u, v) scaled per level": "you divided (u, v) by 2ᵏ on level k: (u, v) is normalised, "
+    "the same point of the texture on every level; only the texel size changes",
+    "row and col swapped": "your keys are (level, col, row): the task asks (level, row, col), "
+    "as the texture is indexed `[row, col]`",
+    "wrap modes swapped": "your 'clamp' repeats and your 'repeat' clamps: the modes are the "
+    "wrong way round",
+    "always clamp": "you clamped the indices whatever `wrap` says: with 'repeat' the column "
+    "beyond the last is the first again",
+    "always repeat": "you wrapped the indices round whatever `wrap` says: with 'clamp' a "
+    "column beyond the border is the border column",
+    "clamp as a mirror": "your 'clamp' mirrors the texture at its border: 'clamp' repeats "
+    "the border texel outwards, the same one however far out",
+    "repeat modulo W − 1": "you wrapped indices modulo W − 1 (H − 1): the texture repeats "
+    "every W columns, so column W is column 0",
+    "indices clipped to [0, W]": "your indices run up to W (H): the last column is W − 1, "
+    "column W does not exist",
+    "λ not clamped": "you chose the levels from λ as given: below 0 or above the last level q "
+    "there is no level, the fetch clamps λ to [0, q] first",
+    "split before the clamp": "you split λ into level and fraction before clamping it: the "
+    "fraction of an unclamped λ weights a level the clamp has already replaced",
+    "nearest level": "you read the nearest level alone: trilinear blends the two levels "
+    "around λ, so that nothing jumps where λ crosses a whole number",
+    "⌊λ⌋ alone": "you read level ⌊λ⌋ alone: trilinear also reads the level above it, "
+    "weighted by how far λ has gone towards it",
+    "levels' weights swapped": "your levels' weights are swapped: the level λ is nearer must "
+    "weigh more (at a whole λ, that level alone)",
+    "halves": "you gave each of the two levels half: their weights follow λ, moving linearly "
+    "from one level to the next",
+    "no level weight": "each of your levels' texels add up to 1: the two levels are blended, "
+    "so their weights are shared between them",
+    "overwritten, zero weights skipped": "a texel read twice (wrapped onto itself at the "
+    "border, or on a level one texel high or wide) kept the weight of its last read only: its "
+    "weights add up",
+    "overwritten": "a texel read twice (wrapped onto itself at the border, or on a level one "
+    "texel high or wide) kept the weight of its last read only: its weights add up",
+}
+
+
+def _bad_key_fits(args, expected, got) -> bool | None:
+    return None if not isinstance(got, dict) else _bad_key(args[0], got) is not None
+
+
+def _bad_key(sizes, got):
+    q = len(sizes) - 1
+    for level, row, col in got:
+        if not 0 <= level <= q:
+            return (level, row, col), f"level {level} does not exist (levels 0 to q = {q})"
+        h, w = sizes[level]
+        if not (0 <= row < h and 0 <= col < w):
+            return (level, row, col), (f"level {level} is {h} × {w} (H × W): rows 0 to "
+                                       f"{h - 1}, columns 0 to {w - 1}")  # fmt: skip
+    return None
+
+
+def _bad_key_words(args, expected, got) -> str:
+    key, why = _bad_key(args[0], got)
+    return f"your texel {key} is not a texel: {why}"
+
+
+def _sum_fits(args, expected, got) -> bool | None:
+    if not isinstance(got, dict):
+        return None
+    return abs(sum(got.values()) - 1.0) > tolerance(args) and not _float16_fits(args, expected, got)
+
+
+def _sum_words(args, expected, got) -> str:
+    return (f"your weights add up to {num(sum(got.values()), 1.0)}: a fetch's weights add up to 1 "
+            "(a texture of one colour everywhere filters to that colour)")  # fmt: skip
+
+
+def _float16_fits(args, expected, got) -> bool | None:
+    """Every weight within float16's rounding (2⁻¹¹ of the coordinates) and some beyond
+    float32's: weights held in float16."""
+    if not isinstance(got, dict):
+        return None
+    sizes, uv = args[0], args[1]
+    h, w = sizes[0]
+    scale = max(abs(float(uv[0])) * w, abs(float(uv[1])) * h, 1.0)
+    return _close(got, expected, 2.0**-10 * scale) and not _close(got, expected, tolerance(args))
+
+
+FLOAT16 = Mistake(
+    "float16",
+    "your weights are the right ones rounded to float16 (about 3 decimals): compute "
+    "them in float64",
+    fits=_float16_fits,
+    only_whole=True,
+)
+
+
+SYMPTOMS = (
+    FLOAT16,
+    Mistake("no such texel", _bad_key_words, fits=_bad_key_fits, symptom=True),
+    Mistake("weights do not add up to 1", _sum_words, fits=_sum_fits, symptom=True),
+)
+
+
+# -- reading and comparing answers -------------------------------------------------------------
+MAX_TEXELS = 4096
+
+
+def as_texel_weights(value) -> dict[tuple[int, int, int], float]:
+    """The answer as {(level, row, col): weight} (ints and floats), read strictly."""
+    if value is None:
+        raise WrongAnswerType("returned None (a missing `return`?)")
+    if not isinstance(value, dict):
+        raise WrongAnswerType(
+            f"returned a {type(value).__name__}, not a dict {{(level, row, col): weight}}: "
+            "one entry per texel read, its weights added"
+        )
+    if len(value) > MAX_TEXELS:
+        raise WrongAnswerType(f"returned {len(value)} texels: a fetch reads at most 8")
+    out = {}
+    for key, weight in value.items():
+        if not (isinstance(key, tuple) and len(key) == 3
+                and all(isinstance(k, (int, np.integer)) and not isinstance(k, (bool, np.bool_))
+                        for k in key)):  # fmt: skip
+            raise WrongAnswerType(
+                f"has the key {key!r}: each key is a tuple of three whole numbers (level, "
+                "row, col), such as (1, 0, 3)"
+            )
+        if isinstance(weight, (bool, np.bool_, str, bytes)) or weight is None:
+            raise WrongAnswerType(f"gives texel {key!r} the weight {weight!r}, not a number")
+        try:
+            w = float(weight)
+        except (TypeError, ValueError):
+            raise WrongAnswerType(
+                f"gives texel {key!r} the weight {weight!r}, not a number"
+            ) from None
+        out[tuple(int(k) for k in key)] = w
+    return out
+
+
+def tolerance(args) -> float:
+    """1e-6, and float32's rounding of x = u·W (2⁻²² of it) where the point lies far out: a
+    weight computed in float32 is right (a fraction of x = 40.3 is off by 4e-6 there)."""
+    sizes, uv = args[0], args[1]
+    h, w = sizes[0]
+    return TOL + 2.0**-22 * max(abs(float(uv[0])) * w, abs(float(uv[1])) * h, 1.0)
+
+
+def _close(a: dict, b: dict, tol: float = TOL) -> bool:
+    for key in set(a) | set(b):
+        x, y = a.get(key, 0.0), b.get(key, 0.0)
+        if not abs(x - y) <= tol:  # NaN fails
+            return False
+    return True
+
+
+def same_weights(got, expected, args) -> bool:
+    """Every texel's weight within 1e-6 (a texel left out weighs 0), and no key that is not a
+    texel of the pyramid (one read with weight 0 is no mistake)."""
+    if not isinstance(got, dict) or _bad_key(args[0], got) is not None:
+        return False
+    return _close(got, expected, tolerance(args))
+
+
+def match(got, value, args) -> bool:
+    return isinstance(got, dict) and isinstance(value, dict) and _close(got, value, tolerance(args))
+
+
+# -- cases -------------------------------------------------------------------------------------
+def _case_words(sizes, uv, lod, wrap) -> str:
+    shapes = ", ".join(f"{h}×{w}" for h, w in sizes)
+    return f"levels {shapes}, uv={vec(uv)}, λ={num(lod)}, wrap={wrap!r}"
+
+
+def _build(rng, word):
+    """Borders in both modes on square, wide, tall and odd pyramids, λ below, between, on and
+    above the levels; then random ones."""
+    s44, s88 = gl_sizes(4, 4), gl_sizes(8, 8)
+    wide, tall, odd = gl_sizes(2, 8), gl_sizes(8, 4), gl_sizes(3, 5)
+    hard = [
+        ("between two levels", s88, (0.4, 0.45), 1.25, "repeat"),
+        ("magnified (λ < 0)", s88, (0.3, 0.6), -0.7, "repeat"),
+        ("beyond the last level", s88, (0.3, 0.6), 3.4, "clamp"),
+        ("λ on a level", s88, (0.7, 0.2), 2.0, "repeat"),
+        ("λ = q exactly", s88, (0.7, 0.2), 3.0, "clamp"),
+        ("u = 0.05 on 4 columns, repeat", s44, (0.05, 0.375), 0.0, "repeat"),
+        ("u = 0.05 on 4 columns, clamp", s44, (0.05, 0.375), 0.0, "clamp"),
+        ("left of the first centre, repeat (x in (−1, 0))", s88, (0.025, 0.3), 0.0, "repeat"),
+        ("a corner, clamp, two levels", s88, (-0.3, 1.2), 0.5, "clamp"),
+        ("a texel centre", s44, (0.625, 0.125), 0.0, "clamp"),
+        ("a wide pyramid, level 1 one texel high", wide, (0.3, 0.9), 1.5, "repeat"),
+        ("a wide pyramid, the bottom border, clamp", wide, (0.55, 0.9), 0.25, "clamp"),
+        ("a tall pyramid, the right border, clamp", tall, (0.9, 0.3), 0.5, "clamp"),
+        ("a tall pyramid, level 2 one texel wide", tall, (0.3, 0.6), 2.3, "repeat"),
+        ("a 3×5 pyramid: level 1 is 1×2", odd, (0.5, 0.5), 0.6, "repeat"),
+        ("a 3×5 pyramid, clamp", odd, (0.15, 0.9), 1.3, "clamp"),
+        ("far outside, repeat", wide, (7.3, -2.6), 0.75, "repeat"),
+        ("far outside, clamp", tall, (-5.2, 3.7), 1.75, "clamp"),
+        ("inside the band where level 2's modes part", s88, (0.2, 0.5), 2.0, "clamp"),
+        ("the same u, repeat", s88, (0.2, 0.5), 2.0, "repeat"),
+        ("one level only (1×1)", [(1, 1)], (0.3, 0.8), 0.4, "repeat"),
+        ("one level only (4×2)", [(4, 2)], (0.9, 0.05), -1.0, "repeat"),
+    ]
+    out = [(label, (sizes, (float(uv[0]), float(uv[1])), float(lod), wrap))
+           for label, sizes, uv, lod, wrap in hard]  # fmt: skip
+    for n in range(12):
+        h, w = (int(v) for v in rng.integers(1, 17, size=2))
+        sizes = gl_sizes(h, w)
+        uv = tuple(float(t) for t in np.round(rng.uniform(-1.5, 2.5, size=2), 4))
+        lod = float(np.round(rng.uniform(-1.0, len(sizes), 1)[0], 3))
+        out.append((f"{word} {n + 1}", (sizes, uv, lod, ("repeat", "clamp")[n % 2])))
+    return [(f"{label}: {_case_words(*args)}", args, reference(*args)) for label, args in out]
+
+
+texel_cases = fixed_and_drawn(_build, SEED + 491)
+
+
+# -- explanations ------------------------------------------------------------------------------
+def _listing(weights: dict) -> str:
+    keys = sorted(k for k, w in weights.items() if w != 0)
+    if not keys:
+        return "no texel"
+    return ", ".join(f"{k}: {num(weights[k])}" for k in keys)
+
+
+def explain(args, expected, got) -> str:
+    """The texels where the two answers part (at most four), each with both weights."""
+    keys = sorted(k for k in set(expected) | set(got)
+                  if not abs(expected.get(k, 0.0) - got.get(k, 0.0)) <= TOL)  # fmt: skip
+    if not keys:  # right weights on a texel that does not exist (read with weight 0)
+        return f"the fetch reads {_listing(expected)}; yours also names {sorted(got)}"
+    parts = [f"{k} weighs {num(expected.get(k, 0.0), got.get(k, 0.0))}, yours "
+             f"{num(got.get(k, 0.0), expected.get(k, 0.0))}" for k in keys[:4]]  # fmt: skip
+    more = f" (and {len(keys) - 4} more texels)" if len(keys) > 4 else ""
+    n = len([k for k in expected if expected[k]])
+    return f"the fetch reads {n} texel{'' if n == 1 else 's'}: " + "; ".join(parts) + more
+
+
+RULE = (
+    ": clamp λ to [0, q]; levels ⌊λ⌋ and ⌊λ⌋ + 1 weigh 1 − (λ − ⌊λ⌋) and λ − ⌊λ⌋; on each, "
+    "x = u·W − ½, y = v·H − ½ with that level's own (H, W), the texels around (⌊x⌋, ⌊y⌋) "
+    "wrapped as `wrap` says, weighted by the fractions; a texel read twice adds its weights"
+)
+HINT = (
+    ": which levels does this λ need, and how much does each weigh? On each, where do that "
+    "level's texel centres lie in u and v, which centres enclose (u, v), and what does `wrap` "
+    "make of one beyond the border? Work this case through by hand"
+)
+
+
+def _rule(args, expected, got) -> str:
+    return RULE
+
+
+def raised_words(args, error) -> str:
+    sizes, _, lod, _ = args
+    q = len(sizes) - 1
+    if "by zero" in error:
+        return ("a level 0 texels high or wide: did you halve level 0's size yourself? `sizes` "
+                "gives each level's own (H, W), at least 1 × 1 (GL halves and rounds down, but "
+                "never below 1)")  # fmt: skip
+    if "index out of range" in error and not 0 <= lod < q:
+        return (f"λ = {num(lod)} lies outside the pyramid's levels 0 to q = {q}: what does "
+                "the fetch do with such a λ before it chooses levels?")  # fmt: skip
+    return ""
+
+
+# -- the figure ----------------------------------------------------------------------------------
+def questions() -> str:
+    """The task's "answer first" questions, answered from :func:`reference` (the pass figure)."""
+    wide = reference(gl_sizes(2, 8), (0.3, 0.9), 1.5, "repeat")
+    bands = []
+    for lod in (0, 2):
+        grid = [k / 1024 for k in range(513)]
+        parts = [u for u in grid if reference(gl_sizes(8, 8), (u, 0.5), lod, "clamp")
+                 != reference(gl_sizes(8, 8), (u, 0.5), lod, "repeat")]  # fmt: skip
+        low = max(parts) + 1 / 1024
+        bands.append(f"λ = {lod}: u < {num(low)}, u > {num(1 - low)}")
+    sizes = ", ".join(f"{h}×{w}" for h, w in gl_sizes(3, 5))
+    return (f"7.2's questions:\n(1) 2×8, λ = 1.5, (0.3, 0.9),\nrepeat: {len(wide)} texels\n"
+            f"(2) clamp ≠ repeat on 8×8,\n{bands[0]}\n{bands[1]}\n(3) {sizes}")  # fmt: skip
+
+
+def draw(ax, case, got):
+    """Each level the fetch reads (before an answer: every level), in (u, v) from 0 to 1, the
+    point (×); the expected weights on their texels once the method is earned or the answer is
+    right, the student's in red on theirs."""
+    from matplotlib.patches import Rectangle
+
+    from . import tries
+
+    sizes, uv, lod, wrap = case[1]
+    expected = case[2]
+    passed = got is not None and same_weights(got, expected, case[1])
+    method = got is not None and (tries.hints_spent("texel_weights") or passed)
+    shown = sorted({k[0] for k in expected}) if got is not None else list(range(len(sizes)))
+    shown = shown[:4]
+    artists = []
+    gap = 0.35
+    pu, pv = uv[0] % 1 if wrap == "repeat" else uv[0], uv[1] % 1 if wrap == "repeat" else uv[1]
+    for n, level in enumerate(shown):
+        h, w = sizes[level]
+        ox = n * (1 + gap)
+        for r in range(h):
+            for c in range(w):
+                key = (level, r, c)
+                shade = expected.get(key, 0.0) if method else 0.0
+                ax.add_patch(Rectangle((ox + c / w, r / h), 1 / w, 1 / h, edgecolor="#2b7bba",
+                                       facecolor=(0.17, 0.48, 0.73, 0.15 + 0.6 * shade)
+                                       if shade else "white", lw=0.8))  # fmt: skip
+                mine = got.get(key, 0.0) if isinstance(got, dict) else 0.0
+                if method and shade and w <= 4 and h <= 4:
+                    artists.append(
+                        ax.text(
+                            ox + (c + 0.5) / w,
+                            (r + 0.35) / h,
+                            num(shade),
+                            ha="center",
+                            va="center",
+                            fontsize="xx-small",
+                        )
+                    )
+                if mine and not passed and w <= 4 and h <= 4:
+                    artists.append(ax.text(ox + (c + 0.5) / w, (r + 0.7) / h, num(mine),
+                                           ha="center", va="center", fontsize="xx-small",
+                                           color="#d62728"))  # fmt: skip
+        artists.append(ax.text(ox + 0.5, -0.04, f"level {level} ({h}×{w})", ha="center",
+                               va="bottom", fontsize="x-small"))  # fmt: skip
+        if 0 <= pu <= 1 and 0 <= pv <= 1:
+            ax.plot([ox + pu], [pv], "x", color="black", markersize=7)
+    right = len(shown) * (1 + gap) - gap
+    if passed:
+        artists.append(ax.text(right + 0.15, 0.5, questions(), ha="left", va="center",
+                               fontsize="x-small"))  # fmt: skip
+    ax.set_xlim(-0.1, right + (1.9 if passed else 0.1))
+    ax.set_ylim(1.1, -0.2)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    where = "" if (pu, pv) == tuple(uv) else f" (× at {vec((pu, pv))}, the same texels)"
+    text = f"{_case_words(*case[1])}{where}"
+    if got is not None and not passed:
+        text += "\nred: your weights" + ("; blue: the fetch's" if method else "")
+    artists.append(ax.set_xlabel(text, fontsize="x-small"))
+    return artists
+
+
+TEXEL_WEIGHTS = Exercise(
+    "texel_weights", texel_cases, as_texel_weights, same_weights, explain, _rule,
+    variant_mistakes(_variants, MISTAKES, SYMPTOMS), match=match,
+    answers=(PackageAnswer(sample, modules=FILTER_MODULES["trilinear"]),),
+    draw=draw, hints=((RULE, HINT),), once=((RULE, ": as said for the first failing case"),),
+    inputs_drawn=True, raised_words=raised_words, partial_names=True,
+    example=10,  # the wide pyramid of the task's first question
+)  # fmt: skip
