@@ -123,3 +123,10 @@ def test_no_lesson_prints_the_answer():
 @pytest.mark.parametrize("form", cc._FORMS)
 def test_each_form_of_the_polygon_is_graded(form):
     assert any(form in label for label, _, _ in cc.colour_cases())
+
+
+def test_the_numbers_the_task_quotes_are_the_checks():
+    text = _task_text()
+    assert "within 10⁻⁴" in text and cc.COLOUR_TOL == 1e-4
+    sizes = {len(args[2]) for _, args, _ in cc.colour_cases()}
+    assert "n = 0 to 6" in text and min(sizes) == 0 and max(sizes) == 6
