@@ -267,17 +267,11 @@ def diagnosis(number, row=None, col=None):
     return lambda b: (cause, (row, col), READ[number](b, row, col))
 
 
-def clip_near_colour(v, colours):
-    p = np.column_stack([np.asarray(v, float), np.asarray(colours, float)])
-    out = []
-    for i in range(3):
-        a, b = p[i], p[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0:
-            out.append(a)
-        if (da >= 0) != (db >= 0):  # position and colour at the same t, in clip space
-            out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 7)
+def clipped_colours(v, colours, polygon):
+    """r489: each vertex's share of v1, v2, v3 from all five equations (x, y, z, w, Σ = 1)."""
+    v, p = np.asarray(v, float), np.asarray(polygon, float).reshape(-1, 4)
+    a, b = np.vstack([v.T, np.ones(3)]), np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.lstsq(a, b, rcond=None)[0].T @ np.asarray(colours, float)
 
 
 def broken_frame_3_steps(b, row=13, col=52):
@@ -410,7 +404,7 @@ CORRECT = {
     "sample_span": sample_span,
     "perspective_weights": perspective_weights,
     "depth_passes": depth_passes,
-    "clip_near_colour": clip_near_colour,
+    "clipped_colours": clipped_colours,
     "safe_near": safe_near,
     "reverse_z_gap": reverse_z_gap,
     "reverse_z_worst": reverse_z_worst,

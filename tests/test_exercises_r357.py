@@ -60,13 +60,13 @@ def test_4_3s_discs_sit_on_their_vertices_when_the_answer_is_none():
     from teachraster.exercises.drawing import clip_panels
 
     case = clip_colour.colour_cases()[0]
-    expected = case[2]
+    polygon = np.asarray(case[1][2], float)  # r489: 4.3 is handed the polygon
     fig, ax = plt.subplots(figsize=(7, 4))
     clip_colour._draw(ax, case, None)
     (panel,) = clip_panels(ax)  # the x panel alone
     (discs,) = panel.collections
     np.testing.assert_allclose(
-        discs.get_offsets(), np.column_stack([expected[:, 0], expected[:, 2] + expected[:, 3]])
+        discs.get_offsets(), np.column_stack([polygon[:, 0], polygon[:, 2] + polygon[:, 3]])
     )
     strip = [a for a in ax.child_axes if a not in clip_panels(ax)]
     assert len(strip) == 1 and not strip[0].collections

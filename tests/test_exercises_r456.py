@@ -88,20 +88,6 @@ def clip_near(v):
     assert not report.passed and "not counted" in str(report)
 
 
-def test_clip_polygon_in_4_3_is_named_far_plane_and_not_counted():
-    report = _check(
-        "clip_near_colour",
-        """
-from teachraster.pipeline.geometry.clipping import clip_polygon
-def clip_near_colour(v, colours):
-    return np.column_stack(clip_polygon(np.asarray(v, float), np.asarray(colours, float)))
-""",
-    )
-    assert not report.passed
-    said = str(report)
-    assert "far plane too" in said and "not counted" in said and "clip_polygon" in said
-
-
 def test_depths_near_the_near_plane_are_drawn_on_their_own_scale():
     """The 1e-20 case's bars were invisible on the 0-1 axis, and no offset text stands above
     the axis: the scale is in the label."""

@@ -1,16 +1,23 @@
-"""Exercise ``clip_near_colour(v, colours)`` (lesson 05a, exercise 4.3): a vertex colour
-carried through the near-plane clip (r310 M2: the clipped polygon of 4.2 carried nothing, and
-"why it must be found in clip space" was asked and never checked).
+"""Exercise ``clipped_colours(v, colours, polygon)`` (lesson 05a, exercise 4.3): the colours
+of a clipped polygon's vertices, recovered from their positions (issue 30, r456 "Transcription":
+4.3 was 4.2's loop with three columns appended; r310 M2 before it).
 
-The student returns the clipped polygon with each vertex's colour, rows (x, y, z, w, r, g, b).
-A new vertex's colour is taken at the same t as its position, in clip space, where every
-vertex output is linear along the edge; the typical slips take it at the t found after the
-divide, from one end of the edge, or perspective-corrected as on the screen (lesson 04).
+A clipper hands over the polygon's positions only, as it made them: any starting vertex,
+either direction, a vertex on the plane given twice, float32 or float64, and on some cases cut
+by the far plane or the side planes x = ±w too. The student returns each vertex's colour. The
+reasoning asked: every point of the clipped polygon is a point of the triangle in clip space,
+p = λ1·v1 + λ2·v2 + λ3·v3 with λ1 + λ2 + λ3 = 1, and its colour is the same combination of
+the three colours (the clipper interpolates every output linearly in clip space, before the
+divide); which equations give the λ on every case (x and y alone do not when the triangle's y
+are all equal; the screen's x/w, y/w do not when a vertex has w = 0 or the triangle is edge-on);
+that a new vertex may lie inside the triangle (two planes cut there), so a t along one edge
+does not reach it; that float32 positions equal the triangle's vertices only within rounding.
 
-Expected answers: the core's Sutherland-Hodgman with the colours as attributes
-(:func:`teachraster.pipeline.geometry.clipping.clip_polygon`) on 4.2's cases, each with
-seeded colours; the one case with a vertex beyond the far plane by :func:`.clip_with`, near
-plane only, as in 4.2.
+Expected answers: the weights solved from all five equations (x, y, z, w and Σλ = 1) by
+float64 least squares on the exact (float64) polygon, times the colours
+(:func:`reference_colours`); tests/test_exercises_r489.py compares them with the core's
+Sutherland-Hodgman carrying the colours as attributes
+(:func:`teachraster.pipeline.geometry.clipping.clip_polygon`) on every case.
 """
 
 from __future__ import annotations
@@ -20,397 +27,591 @@ import numpy as np
 from ..pipeline.geometry.clipping import clip_polygon
 from .answers import MAX_VERTICES, as_numbers, short
 from .cases import SEED
-from .depth_clipping import (
-    DISTANCES,
-    FLOAT32_TOL,
-    clip_cases,
-    clip_rule,
-    clip_with,
-    explain_clip,
-    ndc_z,
-    near_only,
-)
+from .depth_clipping import DISTANCES, clip_cases, clip_with
 from .exercise import Exercise, Mistake, PackageAnswer
 from .running import WrongAnswerType
 from .scalars import num, vec
-from .tolerance import all_close, same_polygon
+from .tolerance import all_close
+
+#: Colours are compared within this (absolute, for colours of size 1): a float32 polygon moves
+#: a colour by a few 1e-7 on these cases; the slips named below move it by 1e-2 or more.
+COLOUR_TOL = 1e-4
 
 
-def with_colours(v, colours) -> np.ndarray:
-    """The expected (n, 7) polygon: the core's clip with the colours as attributes (near plane
-    only: :func:`.clip_with` where another plane would cut, as 4.2's expected polygon)."""
-    v, c = np.asarray(v, float), np.asarray(colours, float)
-    if near_only(v):
-        return np.column_stack(clip_polygon(v, c))
-    return clip_with(np.column_stack([v, c]))
+def weights(v, points) -> np.ndarray:
+    """(n, 3) the λ of each point p: p = Σ λ_i v_i, Σ λ_i = 1, from all five equations
+    (float64 least squares; exact for a point of the triangle's plane in clip space).
+
+    >>> v = np.array([[0.0, 0, 0, 1], [1, 0, 0, 1], [0, 1, 0, 2]])
+    >>> weights(v, [[0.5, 0.25, 0, 1.25]]).round(12).tolist()
+    [[0.25, 0.5, 0.25]]
+    """
+    v = np.asarray(v, float)
+    a = np.vstack([v.T, np.ones(3)])
+    b = np.vstack(
+        [np.asarray(points, float).reshape(-1, 4).T, np.ones(len(np.reshape(points, (-1, 4))))]
+    )
+    return np.linalg.lstsq(a, b, rcond=None)[0].T
 
 
-def colour_cases():
-    rng = np.random.default_rng(SEED + 43)
+def reference_colours(v, colours, points) -> np.ndarray:
+    """The (n, 3) colours at clip-space points of triangle ``v``."""
+    return weights(v, points) @ np.asarray(colours, float)
+
+
+def _flat(v) -> bool:
+    """Three clip-space points on one line (no plane of weights: colours undefined)."""
+    return np.linalg.matrix_rank(np.vstack([np.asarray(v, float).T, np.ones(3)]), tol=1e-9) < 3
+
+
+# how a clipper hands its polygon over, in turn over the cases (the task says each may come)
+_FORMS = ("as clipped", "starting at its second vertex", "the other way round",
+          "in float32, starting at its last vertex")  # fmt: skip
+
+
+def _order(form: str, n: int) -> np.ndarray:
+    """The clipper's rows, in the order ``form`` hands them over."""
+    k = np.arange(n)
+    if form == _FORMS[1]:
+        return np.roll(k, -1)
+    if form == _FORMS[2]:
+        return k[::-1]
+    return np.roll(k, 1) if form == _FORMS[3] else k
+
+
+def _targeted() -> list:
+    """(label, v, polygon) of the cases made for this task: which equations, which planes."""
     out = []
-    for label, (v,), _ in clip_cases():
-        c = np.round(rng.uniform(0, 1, (3, 3)), 2)
-        out.append((f"{label}; colours {vec(c[0])}, {vec(c[1])}, {vec(c[2])}", (v, c),
-                    with_colours(v, c)))  # fmt: skip
+    # w = 2x + y at every vertex: (x, y, w) alone give no weights
+    v = np.array([[1.0, 0, -3, 2], [0, 1, 0, 1], [1, 1, 0, 3]])
+    out.append(("w = 2x + y at every vertex", v, clip_with(v)))
+    # z = w − 2 at every vertex: (z, w, 1) alone give no weights
+    v = np.array([[0.0, 0, -1.5, 0.5], [1, 0, 1, 3], [0, 1, 0, 2]])
+    out.append(("z = w − 2 at every vertex", v, clip_with(v)))
+    # x + y = 1 at every vertex: (x, y, 1) alone give no weights (the screen does)
+    v = np.array([[0.0, 1, -2, 1], [1, 0, 0.5, 2], [2, -1, 1, 4]])
+    out.append(("x + y = 1 at every vertex", v, clip_with(v)))
+    # v3 = v1 + v2: the triangle's plane holds the clip-space origin (edge-on on the screen),
+    # so x, y, z, w without Σλ = 1 leave the weights open
+    v = np.array([[1.0, 0, -2, 1], [0, 1, 0.5, 1], [1, 1, -1.5, 2]])
+    out.append(
+        ("v3 = v1 + v2: the triangle's plane holds the origin of clip space", v, clip_with(v))
+    )
+    # every y the same (and edge-on on the screen): (x, y, 1) and x/w, y/w give no weights
+    v = np.array([[0.5, 0, -2, 1], [1, 0, 1, 2], [-1.5, 0, 0.5, 3]])
+    out.append(("every y the same, so the triangle is edge-on on the screen", v, clip_with(v)))
+    # the dropped vertex on the eye plane (w = 0): it has no projection
+    v = np.array([[0.5, 1, -1, 0], [1, -1, 0.5, 1], [-1, -0.5, 0.2, 2]])
+    out.append(("the dropped vertex on the eye plane (w = 0)", v, clip_with(v)))
+    # a vertex on the plane: kept, and found again as a crossing (given twice)
+    v = np.array([[0.0, 0, -1, 1], [1, 0, -2, 0.5], [0, 1, 0.5, 1]])
+    p = clip_with(v)
+    out.append(("a vertex on the near plane, given twice", v, np.vstack([p[:1], p])))
+    # near and side planes: the corner where they meet lies inside the triangle
+    for label, v, guard in [
+        ("cut by the near plane and the side plane x = w: a corner inside the triangle",
+         np.array([[3.0, 0, -3, 1], [3, 0.5, 1, 2], [-1, 1, 0.5, 1.5]]), 1.0),
+        ("cut by the near plane and the side planes x = ±w, y = ±w",
+         np.array([[-0.2, 0.1, -3, 1], [3, 2, 1, 2], [-2.5, 1.5, 0, 2]]), 1.0),
+        ("cut by the near and the far plane", np.array([[0.0, 0, 3, 2], [1, 0, -1.5, 1],
+                                                        [-1, 1, 0.5, 1]]), None),
+    ]:  # fmt: skip
+        out.append((label, v, clip_polygon(v, np.zeros((3, 0)), guard)[0]))
     return out
 
 
-def as_coloured(value) -> np.ndarray:
+def colour_cases():
+    """4.2's cases (the clipper's polygon handed over in the four forms in turn), then this
+    task's own; triangles on one line in clip space left out (their colours are undefined)."""
+    rng = np.random.default_rng(SEED + 43)
+    made = [(label.split(": v=")[0], a[0], p) for label, a, p in clip_cases()]
+    out, empty = [], 0
+    for k, (label, v, poly) in enumerate([*_targeted(), *made]):
+        if _flat(v) or (not len(poly) and empty):  # one empty polygon is enough
+            continue
+        empty += not len(poly)
+        c = np.round(rng.uniform(0, 1, (3, 3)), 2)
+        form = _FORMS[k % 4]
+        order = _order(form, len(poly))
+        given = poly[order].astype(np.float32 if form == _FORMS[3] else float)
+        words = f"{label}; the polygon {form}: v={vec(v[0])}, {vec(v[1])}, {vec(v[2])}"
+        out.append((words, (v, c, given), reference_colours(v, c, poly)[order]))
+    return out
+
+
+def as_colours(value) -> np.ndarray:
     sized = isinstance(value, (list, tuple)) or (isinstance(value, np.ndarray) and value.ndim)
-    if sized and len(value) > MAX_VERTICES:
-        raise WrongAnswerType(
-            f"returned {short(value)}: a triangle clipped by one plane has at most 4 vertices"
-        )
+    if sized and len(value) > MAX_VERTICES + 4:
+        raise WrongAnswerType(f"returned {short(value)}: one colour per vertex of `polygon`")
     if sized and np.size(value) == 0:
-        return np.zeros((0, 7))
-    return as_numbers(value, (-1, 7), "an (n, 7) array of vertices (x, y, z, w, r, g, b)", 7 * 8)
+        return np.zeros((0, 3))
+    return as_numbers(value, (-1, 3), "an (n, 3) array of colours (r, g, b), one per vertex "
+                      "of `polygon`", 3 * (MAX_VERTICES + 4))  # fmt: skip
 
 
-def colour_with(v, colours, t_colour) -> np.ndarray:
-    """The right positions, each new vertex's colour from ``t_colour(a, b, t)`` (a, b: the
-    edge's (x, y, z, w, r, g, b) rows; t: the right crossing), a slip each."""
-
-    def point(a, b, t):
-        new = a + t * (b - a)
-        new[4:] = t_colour(a, b, t)
-        return new
-
-    return clip_with(np.column_stack([np.asarray(v, float), np.asarray(colours, float)]),
-                     point=point)  # fmt: skip
+def _same(got, expected, args) -> bool:
+    return all_close(got, expected, COLOUR_TOL)
 
 
-def _lerp(a, b, t):
-    return a[4:] + t * (b[4:] - a[4:])
+def _bad_rows(expected, got) -> list:
+    g = np.asarray(got, float).reshape(-1, 3)
+    if g.shape != expected.shape:
+        return []
+    return [k for k in range(len(g)) if not all_close(g[k], expected[k], COLOUR_TOL)]
 
 
-def _after_divide(a, b, t):
-    """The colour at the t where z/w reaches −1 along the edge."""
-    s = ndc_z(a) / (ndc_z(a) - ndc_z(b))
-    return _lerp(a, b, s)
-
-
-def _perspective(a, b, t):
-    """colour/w and 1/w interpolated at t, then divided: the screen's rule used in clip space."""
-    return _lerp(a / a[3], b / b[3], t) / ((1 - t) / a[3] + t / b[3])
-
-
-def _columns_first(v, colours) -> np.ndarray:
-    """The right rows with the colour first, (r, g, b, x, y, z, w) (r319 X2)."""
-    p = with_colours(v, colours)
-    return np.column_stack([p[:, 4:], p[:, :4]])
-
-
-def _nan_at_w0(args, expected, got) -> bool:
-    """Right positions, and NaN colours only where the case has a vertex with w = 0 (r319 H5:
-    lesson 04's weights at the fraction found after the divide; right wherever every w > 0)."""
-    v, _ = args
-    g = np.asarray(got, float).reshape(-1, 7)
-    if not (np.asarray(v)[:, 3] == 0).any() or np.isfinite(g[:, 4:]).all():
-        return False
-    if g.shape != expected.shape or not np.isfinite(g[:, :4]).all():
-        return False
-    ok = np.isfinite(g).all(axis=1)
-    return all_close(g[:, :4], expected[:, :4], FLOAT32_TOL) and all_close(
-        g[ok], expected[ok], FLOAT32_TOL
-    )
-
-
-def _nan_at_w0_words(args, expected, got) -> str:
-    v, _ = args
-    k = int(np.flatnonzero(np.asarray(v)[:, 3] == 0)[0])
-    return (
-        f"your colour is NaN where an edge ends at v{k + 1} = {vec(v[k])}, whose w = 0: you "
-        "took lesson 04's perspective-correct weights at the fraction of the projected edge. "
-        "Where every w > 0 that is right (those weights turn the fraction on the screen into "
-        "this same t), but a vertex with w = 0 has no projection, so the divide by w fails; in "
-        "clip space nothing is divided: colour_a + t·(colour_b − colour_a), at the position's t"
-    )
-
-
-def _kept_colour(args, expected, got) -> tuple[int, np.ndarray] | None:
-    """(k, colour): the first kept vertex vk whose colour ``got`` changed, positions right
-    (r357: a kept vertex's colour divided by w or clamped was told the rule of a new vertex's
-    colour, "which fraction?")."""
-    v, c = (np.asarray(a, float) for a in args)
-    g = np.asarray(got, float).reshape(-1, 7)
-    if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):
-        return None
-    for k in np.flatnonzero(v[:, 2] + v[:, 3] >= 0):
-        rows = [p for p in g if all_close(p[:4], v[k], FLOAT32_TOL)]
-        if rows and not any(all_close(p[4:], c[k], FLOAT32_TOL) for p in rows):
-            return int(k), rows[0][4:]
+def _kept(v, p) -> int | None:
+    """The vertex of ``v`` that polygon vertex ``p`` is (within float32 rounding), or None."""
+    for i in range(3):
+        if all_close(p, v[i], 1e-6):
+            return i
     return None
 
 
-def _colour_change(q, p, v, c) -> str:
-    """What turned colour ``q`` of a kept vertex into ``p``, in words, or ""."""
-    k = next(i for i in range(len(v)) if all_close(c[i], q, 0))
-    if v[k, 3] not in (0, 1) and all_close(p, q / v[k, 3], FLOAT32_TOL):
-        return (
-            f"its own divided by its w = {num(v[k, 3])} (divided by w and never multiplied back?)"
-        )
-    if all_close(p, q * 255, FLOAT32_TOL):  # r456 H7
-        return "its own times 255: colours here run from 0 to 1, as given"
-    half = np.asarray(q, float).astype(np.float16).astype(float)
-    if (p == half).all():  # r456: kept in 16-bit floats
-        return "its own rounded to a 16-bit float (half precision, 11 significant bits)"
-    other = [j for j in range(len(c)) if j != k and all_close(p, c[j], FLOAT32_TOL)]
-    if other:
-        return f"the colour of v{other[0] + 1}"
-    moved = ~np.isclose(p, q, rtol=FLOAT32_TOL, atol=FLOAT32_TOL)
-    if moved.any() and np.allclose(p[moved], p[moved][0]):
-        bound = p[moved][0]
-        if (q[moved] > bound).all() and (p <= bound + FLOAT32_TOL).all():
-            return f"its own cut to at most {num(bound)} (clamped?)"
-        if (q[moved] < bound).all() and (p >= bound - FLOAT32_TOL).all():
-            return f"its own raised to at least {num(bound)} (clamped?)"
-    return ""
+def _on_edge(v, p) -> tuple | None:
+    """(i, t): ``p`` lies on edge vi→vi+1 at t (within float32 rounding), or None."""
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        lam = weights(v, p)[0]
+        if abs(lam[(i + 2) % 3]) < 1e-6 and all_close(p, a + lam[(i + 1) % 3] * (b - a), 1e-5):
+            return i, float(lam[(i + 1) % 3])
+    return None
 
 
-def _kept_colour_words(args, expected, got) -> str:
-    v, c = (np.asarray(a, float) for a in args)
-    k, p = _kept_colour(args, expected, got)
-    what = _colour_change(c[k], p, v, c)
-    return (
-        f"a kept vertex keeps its own colour exactly, as given (row {k + 1} of `colours`)"
-        + (f"; yours is {what}" if what else "")
-        + ". Only a new vertex's "
-        "colour is interpolated"
-    )
-
-
-def _divided_colours(v, colours) -> np.ndarray | None:
-    """The colours divided by w, interpolated so and never multiplied back (r357 misnamed 3)."""
-    v = np.asarray(v, float)
-    if (v[:, 3] == 0).any():
-        return None
-    return with_colours(v, np.asarray(colours, float) / v[:, 3:4])
-
-
-def _colours_by_row(v, colours) -> np.ndarray:
-    """Row k of the polygon given colours[k % 3] (r357 half-named 6)."""
-    p = with_colours(v, colours)
-    p[:, 4:] = np.asarray(colours, float)[np.arange(len(p)) % 3]
-    return p
-
-
-def explain_colour(args, expected, got) -> str:
-    """Positions first (4.2's words); then the first kept vertex whose colour is wrong (r357),
-    then the first new one."""
-    v, c = args
-    g = np.asarray(got, float).reshape(-1, 7)
-    if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):
-        if same_polygon(g[:, 3:], expected[:, :4], FLOAT32_TOL):  # r319 X2: colours first
-            return f"your first row is {vec(g[0])}, not {vec(expected[0])}"
-        return "your positions are wrong (get 4.2 right first): " + explain_clip(
-            (v,), expected[:, :4], g[:, :4]
-        )
-    kept = _kept_colour(args, expected, g)
-    if kept is not None:
-        k, p = kept
-        return (
-            f"your positions are right, but v{k + 1} = {vec(v[k])}, which is kept, has colour "
-            f"{vec(p, c[k])}, not its own {vec(c[k], p)}"
-        )
-    for p in g:
-        right = [q for q in expected if all_close(q[:4], p[:4], FLOAT32_TOL)]
-        if right and not all_close(p[4:], right[0][4:], FLOAT32_TOL):
-            q = right[0]
-            return (
-                f"your positions are right, but the vertex {vec(p[:4])} has colour "
-                f"{vec(p[4:], q[4:])}, not {vec(q[4:], p[4:])}"
-            )
-    return "your colours are not in the order of your vertices"
+def explain_colours(args, expected, got) -> str:
+    v, c, poly = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 3)
+    if g.shape != expected.shape:
+        return f"you returned {len(g)} colours for a polygon of {len(poly)} vertices"
+    k = _bad_rows(expected, g)[0]
+    where = _kept(v, poly[k])
+    edge = _on_edge(v, poly[k]) if where is None else None
+    if where is not None:
+        what = f"v{where + 1}, kept"
+    elif edge is not None:
+        what = f"a new vertex, on the edge v{edge[0] + 1}→v{(edge[0] + 1) % 3 + 1} at t = {num(edge[1])}"
+    else:
+        what = "a new vertex inside the triangle, where two planes cut"
+    return (f"polygon[{k}] = {vec(poly[k])} ({what}) has colour {vec(g[k], expected[k])}, "
+            f"not {vec(expected[k], g[k])}")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
-    g = np.asarray(got, float).reshape(-1, 7)
-    if not same_polygon(g[:, :4], expected[:, :4], FLOAT32_TOL):  # 4.2's rule, not a colour's
-        return clip_rule((args[0],), expected[:, :4], g[:, :4])
-    if _kept_colour(args, expected, got) is not None:
-        return ". A kept vertex keeps its own colour exactly, as given"
     return (
-        ". A new vertex's colour is interpolated as its position is: at the same t, "
-        "colour_a + t·(colour_b − colour_a), in clip space"
+        ". Every point of the clipped polygon is a point of the triangle in clip space; "
+        "its colour is made of the three colours as its position is of v1, v2, v3"
     )
 
 
-def _on_255(args, expected, got) -> bool:
-    """Right positions; every colour that differs is a multiple of 1/255 within half a step
-    of the right one (r448 H1: told "at the same fraction … (which fraction?)")."""
-    g = np.asarray(got, float).reshape(-1, 7)
-    if g.shape != expected.shape or not np.isfinite(g).all():
-        return False
-    if not all_close(g[:, :4], expected[:, :4], FLOAT32_TOL):
-        return False
-    col, right = g[:, 4:], expected[:, 4:]
-    off = np.abs(col - right) > 1e-12
-    steps = np.abs(col * 255 - np.round(col * 255)) < 1e-6
-    near = np.abs(col - right) <= 0.5 / 255 + 1e-9
-    return bool(off.any() and (steps | ~off).all() and near.all())
+# --- the typical slips, each as the answer it gives -------------------------------------
 
 
-def _on_255_words(args, expected, got) -> str:
-    g = np.asarray(got, float).reshape(-1, 7)
-    k = int(np.flatnonzero((np.abs(g[:, 4:] - expected[:, 4:]) > 1e-12).any(axis=1))[0])
-    return (
-        f"your colours are rounded to 8 bits: the vertex {vec(g[k, :4])} has colour "
-        f"{vec(g[k, 4:], expected[k, 4:])}, multiples of 1/255, where the right one is "
-        f"{vec(expected[k, 4:], g[k, 4:])}. Return the colours as floats: the clipper "
-        "interpolates vertex outputs in full precision (a framebuffer rounds to 8 bits only "
-        "when the pixel is written)"
-    )
-
-
-def _shared(a, b) -> str:
-    """The coordinates (x, y, z, w) that ends ``a`` and ``b`` of an edge share."""
-    return " and ".join("xyzw"[k] for k in range(4) if a[k] == b[k])
-
-
-def _nan_on_shared(args, expected, got) -> tuple[int, str] | None:
-    """(i, coordinates): positions right, and every colour that differs is NaN at a new
-    vertex on an edge vi→vi+1 whose ends share a coordinate (r456 W11, W12, H5, H6: the colour
-    t recovered from x, y, z or w alone is 0/0 there); None otherwise."""
-    v, c = (np.asarray(a, float) for a in args)
-    g = np.asarray(got, float).reshape(-1, 7)
-    if g.shape != expected.shape or not all_close(g[:, :4], expected[:, :4], FLOAT32_TOL):
+def _screen(v, points, strict=True):
+    """λ of the points' projections (x/w, y/w) in the projected triangle, lesson 04's
+    perspective weights where ``strict`` is False (numpy's solve, garbage where singular);
+    None where a w is 0 or (``strict``) the projection is a segment."""
+    v, p = np.asarray(v, float), np.asarray(points, float).reshape(-1, 4)
+    if (v[:, 3] == 0).any() or (p[:, 3] == 0).any():
         return None
-    bad = [k for k in range(len(g)) if not all_close(g[k, 4:], expected[k, 4:], FLOAT32_TOL)]
-    if not bad or not all(np.isnan(g[k, 4:]).all() for k in bad):
+    s, q = v[:, :2] / v[:, 3:], p[:, :2] / p[:, 3:]
+    m = np.vstack([s.T, np.ones(3)])
+    if strict and np.linalg.matrix_rank(m, tol=1e-9) < 3:
         return None
-    d = v[:, 2] + v[:, 3]
-    for i in range(3):
-        j = (i + 1) % 3
-        if (d[i] >= 0) != (d[j] >= 0) and _shared(v[i], v[j]):
-            t = d[i] / (d[i] - d[j])
-            if any(all_close(g[k, :4], v[i] + t * (v[j] - v[i]), FLOAT32_TOL) for k in bad):
-                return i, _shared(v[i], v[j])
+    try:
+        with np.errstate(all="ignore"):
+            return np.linalg.solve(m, np.vstack([q.T, np.ones(len(q))])).T
+    except np.linalg.LinAlgError:
+        return None
+
+
+def _after_divide(v, c, poly):
+    lam = _screen(v, poly)
+    return None if lam is None or not len(poly) else lam @ np.asarray(c, float)
+
+
+def _screen_fails(args, expected, got) -> str | None:
+    """Why the screen cannot give this case's weights, or None."""
+    v = np.asarray(args[0], float)
+    if (v[:, 3] == 0).any():
+        k = int(np.flatnonzero(v[:, 3] == 0)[0])
+        return f"v{k + 1} = {vec(v[k])} has w = 0: it has no projection"
+    if _screen(v, np.zeros((0, 4))) is None:
+        return "the triangle is edge-on: its projection is a segment"
     return None
 
 
-def _nan_on_shared_words(args, expected, got) -> str:
-    i, shared = _nan_on_shared(args, expected, got)
-    j = (i + 1) % 3
+def _via_screen(args, expected, got) -> str | None:
+    """On a case the screen gives no weights for: NaN, inf, or what numpy's solve gives there,
+    as they are or perspective-corrected (lesson 04's weights, right wherever every w ≠ 0)."""
+    v, c, poly = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 3)
+    bad = _bad_rows(expected, g)
+    if not bad or not _screen_fails(args, expected, got):
+        return None
+    if not np.isfinite(g[bad]).all():
+        return "corrected"
+    lam = _screen(v, poly, strict=False)
+    if lam is None or not np.isfinite(lam).all():
+        return None
+    with np.errstate(all="ignore"):
+        fixed = lam / v[:, 3]
+        fixed = fixed / fixed.sum(axis=1, keepdims=True)
+    if all_close(g, fixed @ c, COLOUR_TOL):
+        return "corrected"
+    return "plain" if all_close(g, lam @ c, COLOUR_TOL) else None
+
+
+def _via_screen_words(args, expected, got) -> str:
+    if _via_screen(args, expected, got) == "plain":
+        return (
+            "you took the weights of the projected point on the screen (x/w, y/w) as they "
+            f"are, and on the screen {_screen_fails(args, expected, got)}. Even where it "
+            "is not, equal fractions on the screen are not equal fractions of the triangle "
+            "(lesson 04); in clip space nothing is divided: which equations give the "
+            "weights of a point of the triangle there?"
+        )
     return (
-        f"your new vertex on the edge v{i + 1}→v{j + 1} has a NaN colour, and both ends of that "
-        f"edge have the same {shared}: did you recover its fraction of the edge from one "
-        f"coordinate, such as ({shared[0]} − {shared[0]}_a)/({shared[0]}_b − {shared[0]}_a)? "
-        "That is 0/0 on such an edge. Which quantity is sure to differ between the ends of "
-        "every edge that crosses the plane? Take the colour at that fraction"
+        f"you went through the screen (x/w, y/w, lesson 04's weights?), and on the "
+        f"screen {_screen_fails(args, expected, got)}. Where every w ≠ 0 that gives the right "
+        "weights; in clip space nothing is divided: which equations give the weights of a "
+        "point of the triangle there?"
     )
 
 
-def _far_too(v, colours):
-    """Clipped against the far plane too, the colours riding along (r456 H8: the package's
-    clip_polygon)."""
-    p = clip_with(np.column_stack([np.asarray(v, float), np.asarray(colours, float)]))
-    return p if p is None or not len(p) else clip_with(p, lambda q: q[3] - q[2])
+#: The equations a student may solve the weights from: (coordinates, with Σλ = 1?), and how
+#: the words say them.
+_SUBSETS = [((0, 1), True), ((0, 1, 2, 3), False), ((0, 1, 3), False), ((2, 3), True),
+            ((0, 3), True), ((1, 3), True), ((0, 2), True), ((1, 2), True)]  # fmt: skip
+
+
+def _subset_words(cols, with_one) -> str:
+    return ", ".join("xyzw"[k] for k in cols) + (" and Σλ = 1" if with_one else " (without Σλ = 1)")
+
+
+def _matrix(rows, cols, with_one):
+    rows = np.asarray(rows, float).reshape(-1, 4)
+    return np.vstack([rows[:, list(cols)].T] + ([np.ones(len(rows))] if with_one else []))
+
+
+def _open_subsets(v) -> list:
+    """The subsets of :data:`_SUBSETS` that leave the weights open on triangle ``v``."""
+    return [(c, o) for c, o in _SUBSETS
+            if np.linalg.matrix_rank(_matrix(v, c, o), tol=1e-9) < 3]  # fmt: skip
+
+
+def _from_subset(v, c, poly, cols, with_one, solve):
+    """The colours from the weights solved from these equations only (``solve``: numpy's
+    solve where square, else least squares), None where that raises."""
+    a, b = _matrix(v, cols, with_one), _matrix(poly, cols, with_one)
+    try:
+        with np.errstate(all="ignore"):
+            lam = (np.linalg.solve(a, b) if solve and a.shape[0] == 3 else
+                   np.linalg.lstsq(a, b, rcond=None)[0])  # fmt: skip
+    except np.linalg.LinAlgError:
+        return None
+    return lam.T @ np.asarray(c, float)
+
+
+def _undetermined(args, expected, got) -> tuple | None:
+    """The open subset whose weights give ``got`` (or NaN/inf, or wild numbers), or None."""
+    v, c, poly = args
+    g = np.asarray(got, float).reshape(-1, 3)
+    bad = _bad_rows(expected, g)
+    if not bad or _screen_fails(args, expected, got) and not np.isfinite(g[bad]).all():
+        return None
+    for cols, one in _open_subsets(v):
+        for solve in (True, False):
+            mine = _from_subset(v, c, poly, cols, one, solve)
+            if mine is not None and mine.shape == g.shape and all_close(g, mine, COLOUR_TOL):
+                return cols, one
+    wild = not np.isfinite(g[bad]).all() or np.abs(g[bad]).max() > 1e3
+    return _open_subsets(v)[0] if wild and _open_subsets(v) else None
+
+
+def _open_why(v, cols, with_one) -> str:
+    v = np.asarray(v, float)
+    if with_one and len(cols) == 2:
+        a, b = "xyzw"[cols[0]], "xyzw"[cols[1]]
+        return f"the triangle's ({a}, {b}) lie on one line"
+    return "the three vertices, as vectors, are not independent in these coordinates"
+
+
+def _undetermined_words(args, expected, got) -> str:
+    cols, one = _undetermined(args, expected, got)
+    return (
+        f"you solved for the weights from {_subset_words(cols, one)} only, and on this "
+        f"triangle those equations leave them open ({_open_why(args[0], cols, one)}): a "
+        "singular system, so 0/0, wild numbers or one of many answers. Which equations "
+        "fix the weights on every triangle?"
+    )
+
+
+def _raised(args, error: str) -> str:
+    """A singular solve, named (numpy's LinAlgError on a triangle some equations leave open, or
+    that is edge-on on the screen)."""
+    if "LinAlgError" not in error and "Singular" not in error:
+        return ""
+    why = [f"{_subset_words(c, o)} leave the weights open ({_open_why(args[0], c, o)})"
+           for c, o in _open_subsets(args[0])[:1]]  # fmt: skip
+    fails = _screen_fails(args, None, None)
+    if fails:
+        why.append(f"on the screen {fails}")
+    if not why:
+        return ""
+    return (
+        "; on this triangle " + "; ".join(why) + ". Did you solve for the weights from "
+        "some of the coordinates only, or on the screen? Which equations fix them on "
+        "every triangle?"
+    )
+
+
+def _near_crossing(v, p) -> tuple | None:
+    """(i, t): ``p`` is where edge vi→vi+1 crosses the near plane, or None."""
+    d = v[:, 2] + v[:, 3]
+    for i in range(3):
+        j = (i + 1) % 3
+        if (d[i] >= 0) != (d[j] >= 0):
+            t = d[i] / (d[i] - d[j])
+            if all_close(p, v[i] + t * (v[j] - v[i]), 1e-5):
+                return i, t
+    return None
+
+
+def _shared(a, b) -> str:
+    return " and ".join("xyzw"[k] for k in range(4) if a[k] == b[k])
+
+
+def _t_one_coordinate(args, expected, got) -> tuple | None:
+    """(k, i, shared): NaN only at near-plane crossings on edges whose ends share a coordinate
+    (the t recovered from one coordinate: 0/0 there; r456 W11, W12, H5, H6), or None."""
+    v = np.asarray(args[0], float)
+    poly = np.asarray(args[2], float)
+    g = np.asarray(got, float).reshape(-1, 3)
+    bad = _bad_rows(expected, g)
+    if not bad or not np.isnan(g[bad]).all():
+        return None
+    for k in bad:
+        e = _near_crossing(v, poly[k])
+        if e is None or not _shared(v[e[0]], v[(e[0] + 1) % 3]):
+            return None
+    e = _near_crossing(v, poly[bad[0]])
+    return bad[0], e[0], _shared(v[e[0]], v[(e[0] + 1) % 3])
+
+
+def _t_one_coordinate_words(args, expected, got) -> str:
+    k, i, shared = _t_one_coordinate(args, expected, got)
+    return (
+        f"polygon[{k}] lies on the edge v{i + 1}→v{(i + 1) % 3 + 1}, whose ends have the "
+        f"same {shared}: did you recover its fraction of the edge from one coordinate, "
+        f"such as ({shared[0]} − {shared[0]}_a)/({shared[0]}_b − {shared[0]}_a)? That is 0/0 "
+        "there. Which quantity is sure to differ between the ends of every edge that "
+        "crosses the plane?"
+    )
+
+
+def _not_near(args) -> list:
+    """Rows of the polygon that are neither the triangle's vertices nor near-plane crossings:
+    another plane cut there (on an edge, or inside the triangle)."""
+    v, _, poly = (np.asarray(a, float) for a in args)
+    return [
+        k
+        for k in range(len(poly))
+        if _kept(v, poly[k]) is None and _near_crossing(v, poly[k]) is None
+    ]
+
+
+def _near_only(args, expected, got) -> bool:
+    bad, other = _bad_rows(expected, got), _not_near(args)
+    return bool(bad and other and set(bad) <= set(other))
+
+
+def _near_only_words(args, expected, got) -> str:
+    v, _, poly = (np.asarray(a, float) for a in args)
+    k = next(k for k in _not_near(args) if k in _bad_rows(expected, got))
+    where = (
+        "on no edge of the triangle: two planes cut there, so it lies inside it, and "
+        "no fraction along one edge reaches it"
+        if _on_edge(v, poly[k]) is None
+        else "on an edge, but not where that edge crosses the near plane: another plane cut it"
+    )
+    return (
+        f"polygon[{k}] has z + w = {num(poly[k, 2] + poly[k, 3])}, and it is {where}. The polygon is the clipper's, and it may cut other planes too: which "
+        "weights of v1, v2, v3 give that point?"
+    )
+
+
+def _float32_kept(args, expected, got) -> bool:
+    """Wrong only at vertices that are the triangle's own, rounded to float32 (an exact
+    comparison missed them)."""
+    v, _, poly = args
+    if np.asarray(poly).dtype != np.float32:
+        return False
+    bad = _bad_rows(expected, got)
+    v = np.asarray(v, float)
+    p = np.asarray(poly, float)
+    return bool(bad) and all(_kept(v, p[k]) is not None and not (p[k] == v).all(axis=1).any()
+                             for k in bad)  # fmt: skip
+
+
+def _float32_kept_words(args, expected, got) -> str:
+    v, _, poly = args
+    k = _bad_rows(expected, got)[0]
+    i = _kept(np.asarray(v, float), np.asarray(poly, float)[k])
+    return (
+        f"polygon[{k}] = {vec(np.asarray(poly[k], float))} is v{i + 1} = {vec(v[i])} "
+        "rounded to float32 (this polygon is float32): it is kept, but not equal to v"
+        f"{i + 1} bit for bit. Did you look vertices up by exact equality?"
+    )
+
+
+def _own_order(v, c, poly):
+    """The colours of the student's own near-plane clip, in its own order (not polygon's)."""
+    own = clip_with(np.column_stack([np.asarray(v, float), np.asarray(c, float)]))
+    if own is None or len(own) != len(poly):
+        return None
+    return own[:, 4:]
+
+
+def _edge_t(v, c, poly, t_of):
+    """Each vertex: kept -> its colour; on an edge at t -> the colour ``t_of(ca, cb, t, i)``;
+    else the right colour (a slip of the edge rule only)."""
+    v, c = np.asarray(v, float), np.asarray(c, float)
+    out = reference_colours(v, c, poly) if len(poly) else np.zeros((0, 3))
+    for k, p in enumerate(np.asarray(poly, float)):
+        i = _kept(v, p)
+        e = _on_edge(v, p) if i is None else None
+        if e is not None:
+            out[k] = t_of(c[e[0]], c[(e[0] + 1) % 3], e[1], v[e[0]], v[(e[0] + 1) % 3])
+    return out
+
+
+def _nearest_vertex(v, c, poly):
+    v, c = np.asarray(v, float), np.asarray(c, float)
+    p = np.asarray(poly, float).reshape(-1, 4)
+    return c[np.argmin(((p[:, None, :] - v[None]) ** 2).sum(-1), axis=1)] if len(p) else None
 
 
 _WHY = (
-    "a vertex's colour, like its position, changes linearly along the edge in clip space, so "
-    "the new vertex takes its colour at its own t"
+    "a point of the triangle takes its colour as its position is made of v1, v2, v3 in "
+    "clip space: along an edge, colour_a + t·(colour_b − colour_a) at the position's own t"
 )
 
+
+def _ndc_t(ca, cb, t, a, b):
+    s = (a[2] / a[3] + 1) / (a[2] / a[3] - b[2] / b[3]) if a[3] and b[3] else np.nan
+    return ca + s * (cb - ca)
+
+
+def _right(v, c, poly):
+    return reference_colours(v, c, poly) if len(poly) else None
+
+
+def _inside_end(ca, cb, t, a, b):
+    return ca if a[2] + a[3] >= 0 else cb
+
+
+def _over_w(v, c, poly):
+    """The right weights divided by each vertex's w and normalised: lesson 04's correction
+    used in clip space, where there is nothing to correct."""
+    v = np.asarray(v, float)
+    if not len(poly) or (v[:, 3] == 0).any():
+        return None
+    lam = weights(v, poly) / v[:, 3]
+    return (lam / lam.sum(axis=1, keepdims=True)) @ np.asarray(c, float)
+
+
+def _rounded(v, c, poly, how):
+    right = _right(v, c, poly)
+    return None if right is None else how(right)
+
+
 COLOUR_MISTAKES = [
-    Mistake("colour after the divide", "you took the colour at the fraction where z/w reaches "
-            f"−1, found after the divide: {_WHY}. After the divide equal fractions of the "
-            "projected edge are not equal fractions of the edge itself (lesson 04's "
-            "perspective weighting), so that t is another point's",
-            gives=lambda v, c: colour_with(v, c, _after_divide)),
-    Mistake("colour perspective-corrected", "you interpolated colour/w and 1/w and divided, "
-            "the perspective-correct rule for steps on the screen: before the divide there is "
-            f"nothing to correct, {_WHY}",
-            gives=lambda v, c: colour_with(v, c, _perspective)),
-    Mistake("colour of the inside end", "your new vertices keep the colour of their edge's "
-            f"inside end, not interpolated: {_WHY}",
-            gives=lambda v, c: colour_with(v, c, lambda a, b, t: (a if a[2] + a[3] >= 0 else b)[4:])),
-    Mistake("colour of the first end", "your new vertices keep the colour of their edge's "
-            f"first end, not interpolated: {_WHY}",
-            gives=lambda v, c: colour_with(v, c, lambda a, b, t: a[4:])),
-    Mistake("colour t from the other end", "you took the colour at 1 − t, measured from the "
-            f"edge's other end: {_WHY}, colour_a + t·(colour_b − colour_a)",
-            gives=lambda v, c: colour_with(v, c, lambda a, b, t: _lerp(a, b, 1 - t))),
-    Mistake("colour halfway", "you gave each new vertex the colour halfway along its edge "
-            f"(t = ½): {_WHY}", gives=lambda v, c: colour_with(v, c, lambda a, b, t: _lerp(a, b, 0.5))),
-    # r319: the colour columns first (X2, told "your positions are wrong"); a kept vertex given
-    # another vertex's colour or BGR (H3, H4, told the rule about new vertices); lesson 04's
-    # weights at the fraction after the divide, NaN at w = 0 (H5, told only "holds NaN")
-    Mistake("colour columns first", "your rows are (r, g, b, x, y, z, w), the colour first: "
-            "each row is the position, then its colour, (x, y, z, w, r, g, b)",
-            gives=_columns_first),
-    *(Mistake("colours on the wrong vertex", "your colours sit one vertex off: a kept vertex "
-              "keeps its own colour (row i of `colours` goes with row i of `v`), and a new "
-              "vertex takes its colour between its own edge's two ends",
-              gives=lambda v, c, k=k: with_colours(v, np.roll(np.asarray(c, float), k, axis=0)))
-      for k in (1, -1)),
-    Mistake("colours BGR", "your colours are reversed, (b, g, r): a kept vertex keeps its own "
-            "colour as given, (r, g, b) in the last three columns",
-            gives=lambda v, c: with_colours(v, np.asarray(c, float)[:, ::-1])),
-    Mistake("colour perspective-corrected after the divide", _nan_at_w0_words, fits=_nan_at_w0,
-            only_whole=True),
-    # r357: colours divided by w and never multiplied back (misnamed 3); row k's colour from
-    # colours[k % 3] (H6); any other change to a kept vertex's colour (a clamp: misnamed 4)
-    Mistake("colours divided by w", "you divided the colours by w and never multiplied back: "
-            "lesson 04 divides by w to interpolate on the screen, then multiplies back; in "
-            "clip space nothing is divided: a kept vertex keeps its own colour, and a new "
-            "vertex takes its colour at its own t between its edge's two ends",
-            gives=_divided_colours),
-    Mistake("colours by row number", "your row k takes the colour of row k of `colours` "
-            "(colours[k % 3]), but the polygon's rows are not the triangle's: a vertex behind "
-            "is dropped and new vertices come between. A kept vertex keeps the colour of its "
-            "own row of `v`, and a new vertex takes its colour between its own edge's two ends",
-            gives=_colours_by_row),
-    # r448 H1, H3: colours rounded to 8 bits, and the triangle's mean colour at new vertices,
-    # were told only "at the same fraction of the edge (which fraction?)"
-    Mistake("colours rounded to 8 bits", _on_255_words, fits=_on_255, only_whole=True),
-    Mistake("mean colour", "your new vertices take the mean of the triangle's three colours: "
-            f"a new vertex lies on one edge, between its two ends only; {_WHY}",
-            gives=lambda v, c: colour_with(v, c, lambda a, b, t, c=c: np.mean(np.asarray(c, float), axis=0))),
-    Mistake("colour t from one coordinate", _nan_on_shared_words,
-            fits=lambda a, e, g: _nan_on_shared(a, e, g) is not None),
-    Mistake("far plane too", "you clipped against the far plane too (w − z ≥ 0): this "
-            "exercise clips against the near plane only, z + w ≥ 0, so a vertex beyond the far "
-            "plane stays", gives=_far_too),
-    Mistake("kept colour changed", _kept_colour_words, fits=lambda a, e, g: _kept_colour(a, e, g)
-            is not None, symptom=True),
+    Mistake("colours all zero", "every colour you return is (0, 0, 0), whatever the case: a "
+            "placeholder left in?", gives=lambda v, c, p: np.zeros((len(p), 3)) if len(p) else None),
+    Mistake("float32 vertices compared exactly", _float32_kept_words, fits=_float32_kept),
+    Mistake("colour from the screen", _via_screen_words,
+            fits=lambda a, e, g: _via_screen(a, e, g) is not None),
+    Mistake("colour t from one coordinate", _t_one_coordinate_words,
+            fits=lambda a, e, g: _t_one_coordinate(a, e, g) is not None),
+    Mistake("new vertices on the near plane only", _near_only_words, fits=_near_only),
+    Mistake("weights from some equations", _undetermined_words,
+            fits=lambda a, e, g: _undetermined(a, e, g) is not None),
+    Mistake("colour after the divide", "you took the weights of the projected point on the "
+            "screen (x/w, y/w) as they are: after the divide equal fractions on the screen "
+            f"are not equal fractions of the triangle (lesson 04); {_WHY}",
+            gives=_after_divide),
+    Mistake("colour t after the divide", "your new vertex takes the colour at the fraction "
+            f"where z/w reaches −1, found after the divide: {_WHY}",
+            gives=lambda v, c, p: _edge_t(v, c, p, _ndc_t)),
+    Mistake("weights divided by w", "you divided the weights by each vertex's w and "
+            "normalised them (lesson 04's perspective correction): that turns fractions on the "
+            f"screen into fractions in clip space; here there is nothing to correct: {_WHY}",
+            gives=_over_w),
+    Mistake("colours in own order", "your colours are in the order of your own clip, not of "
+            "`polygon`: row k is the colour of polygon[k], and the clipper may start anywhere "
+            "and run either way", gives=_own_order),
+    Mistake("colour t from the other end", f"you took the colour at 1 − t: {_WHY}",
+            gives=lambda v, c, p: _edge_t(v, c, p, lambda ca, cb, t, a, b: ca + (1 - t) * (cb - ca))),
+    Mistake("colour halfway", f"you gave a new vertex the colour halfway along its edge: {_WHY}",
+            gives=lambda v, c, p: _edge_t(v, c, p, lambda ca, cb, t, a, b: (ca + cb) / 2)),
+    Mistake("colour of the inside end", "your new vertex keeps the colour of its edge's "
+            f"inside end: {_WHY}", gives=lambda v, c, p: _edge_t(v, c, p, _inside_end)),
+    Mistake("mean colour", "your new vertex takes the mean of the triangle's three colours: "
+            f"{_WHY}", gives=lambda v, c, p: _edge_t(
+                v, c, p, lambda ca, cb, t, a, b, c=c: np.mean(np.asarray(c, float), axis=0))),
+    Mistake("colour of the nearest vertex", "each vertex takes the colour of the triangle's "
+            f"nearest vertex: only a kept vertex keeps its own colour; {_WHY}",
+            gives=_nearest_vertex),
+    Mistake("colours by row number", "your row k takes colours[k % 3], but the polygon's rows "
+            "are not the triangle's: find which point of the triangle each row is",
+            gives=lambda v, c, p: np.asarray(c, float)[np.arange(len(p)) % 3] if len(p) else None),
+    Mistake("colours transposed", "you multiplied the weights by the transposed colours "
+            "(a column of `colours` per vertex): row i of `colours` is vi's (r, g, b)",
+            gives=lambda v, c, p: None if not len(p) else weights(v, p) @ np.asarray(c, float).T),
+    Mistake("weights returned", "you returned the weights (λ1, λ2, λ3), not the colour they "
+            "make: colour = λ1·colour1 + λ2·colour2 + λ3·colour3",
+            gives=lambda v, c, p: None if not len(p) else weights(v, p)),
+    Mistake("colours times 255", "your colours are 255 times the right ones: colours here run "
+            "from 0 to 1, as given", gives=lambda v, c, p: _rounded(v, c, p, lambda x: x * 255)),
+    Mistake("colours rounded to 8 bits", "your colours are rounded to 8 bits (multiples of "
+            "1/255): return them as floats; the clipper interpolates in full precision",
+            gives=lambda v, c, p: _rounded(v, c, p, lambda x: np.round(x * 255) / 255)),
+    Mistake("colours in float16", "your colours are rounded to 16-bit floats (half precision, "
+            "11 significant bits): keep them in the precision you were given",
+            gives=lambda v, c, p: _rounded(v, c, p, lambda x: x.astype(np.float16).astype(float))),
 ]  # fmt: skip
 
 
 def _draw(ax, case, got):
-    """4.2's figure of the positions, each vertex a disc of its colour: expected large, yours
-    a square inside it (a wrong colour is a square of another colour)."""
+    """4.2's figure of the polygon, each vertex a disc of its right colour, yours a square
+    inside it (a wrong colour is a square of another colour)."""
     from .drawing import clip_panels, draw_clip
 
-    (v, colours), expected = case[1], case[2]
-    g = None if got is None else np.asarray(got, float).reshape(-1, 7)
-    artists = draw_clip(ax, v, expected[:, :4], None if g is None else g[:, :4], colours)
-    panels = clip_panels(ax)
-    for k, panel in enumerate(panels):
-        for p, marker, size in [(expected, "o", 360), *([(g, "s", 70)] if g is not None else [])]:
-            if len(p) and np.isfinite(p).all():
-                artists.append(panel.scatter(p[:, k], p[:, 2] + p[:, 3], s=size, marker=marker,
-                                             c=np.clip(p[:, 4:], 0, 1), edgecolors="black",
-                                             zorder=5))  # fmt: skip
-        for label in panel.texts:  # r357 FIG3: "v1" was half under the disc
-            if hasattr(label, "xyann") and "off the panel" not in label.get_text():
-                label.xyann = (12 if label.xyann[0] > 0 else -12, 12)
-    # under the x axis: the report's title holds the top
-    panel = panels[0]
-    artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the expected colours; "
+    (v, colours, poly), expected = case[1], case[2]
+    poly = np.asarray(poly, float)
+    artists = draw_clip(ax, v, poly, None if got is None else poly, colours)
+    g = None if got is None else np.asarray(got, float).reshape(-1, 3)
+    for k, panel in enumerate(clip_panels(ax)):
+        for c, marker, size in [(expected, "o", 360), *([(g, "s", 70)] if g is not None else [])]:
+            if len(poly) and c.shape == (len(poly), 3) and np.isfinite(c).all():
+                artists.append(panel.scatter(poly[:, k], poly[:, 2] + poly[:, 3], s=size,
+                                             marker=marker, c=np.clip(c, 0, 1),
+                                             edgecolors="black", zorder=5))  # fmt: skip
+    legend = clip_panels(ax)[-1].get_legend()
+    for text in legend.get_texts() if legend is not None else []:  # the polygon is given
+        text.set_text(
+            {"clipped (expected)": "the polygon handed in", "yours": "(the same)"}.get(
+                text.get_text(), text.get_text()
+            )
+        )
+    panel = clip_panels(ax)[0]
+    artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the right colours; "
                                     "squares: yours"))  # fmt: skip
     return artists
 
 
-CLIP_NEAR_COLOUR = Exercise(
-    "clip_near_colour", colour_cases, as_coloured,
-    lambda g, e, a: same_polygon(g, e, FLOAT32_TOL), explain_colour, _rule, COLOUR_MISTAKES,
-    # r456 H8, W10: the package's clip with colours as attributes, and its distances
-    answers=(PackageAnswer(with_colours), PackageAnswer(clip_polygon), DISTANCES), draw=_draw,
-    # 4.2's cases and clip: a student's call into them does not count
+CLIPPED_COLOURS = Exercise(
+    "clipped_colours", colour_cases, as_colours, _same, explain_colours, _rule, COLOUR_MISTAKES,
+    answers=(PackageAnswer(clip_polygon), DISTANCES), draw=_draw, raised_words=_raised,
     reference=("teachraster.exercises.depth_clipping",),
-    # issue 30: the formula the task asks to work out is said once two wrong answers failed
-    hints=((": at the same t, colour_a + t·(colour_b − colour_a), in clip space",
-            ": at the same fraction of the edge, in clip space (which fraction?)"),
-           (", colour_a + t·(colour_b − colour_a)", ""),),
 )  # fmt: skip

@@ -9,7 +9,7 @@ typical mistakes), defined in its own module:
   ``barycentric``;
 - ``span`` (lesson 01, :mod:`.spans`), ``sample_span`` (01 with 08, :mod:`.sample_spans`), ``perspective_weights`` (04,
   :mod:`.perspective_weighting`), ``depth_passes`` (05a, :mod:`.zbuffer_pixel`),
-  ``clip_near_colour`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
+  ``clipped_colours`` (05a, :mod:`.clip_colour`), ``safe_near`` (05b, :mod:`.near_plane`):
   reasoning in place of ``split_point``,
   ``perspective``, ``depth_test`` and ``depth_to_unorm`` (still checked, for notebooks of
   earlier versions); ``reverse_z_gap`` (05b, :mod:`.reverse_z`): float32 reverse-Z;
@@ -70,7 +70,7 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "defect_case": lambda: br.DEFECT_CASE,  # 3.1b: a case for each defect (r488)
     "perspective_weights": lambda: pw.PERSPECTIVE_WEIGHTS,
     "depth_passes": lambda: zb.DEPTH_PASSES,
-    "clip_near_colour": lambda: cc.CLIP_NEAR_COLOUR,
+    "clipped_colours": lambda: cc.CLIPPED_COLOURS,  # 4.3 (r489: was clip_near_colour)
     "safe_near": lambda: npl.SAFE_NEAR,
     "reverse_z_gap": lambda: rz.REVERSE_Z_GAP,
     "reverse_z_worst": lambda: rzw.REVERSE_Z_WORST,
