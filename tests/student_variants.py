@@ -12030,6 +12030,11 @@ R493 = {
     "robust fill: E in int32 fixed point, the area in int64": (
         "robust_fill", _r493_int32_edges,
         "your integer edge functions overflow int32 (your area, in int64, does not", "int32 E"),
+    "breaking case: 'precision' returned as float16 (r478 H4)": (
+        "breaking_case", _bc470("precision", (np.array([[996.5, 1000.5], [1004.5, 1000.5 - 1 / 256],
+                                                        [1000.25, 1006.0]], np.float16), 12, 12, (996, 996))),
+        "(your xy is float16: at 1006 px its numbers are 0.5 px apart, coarser than the 1/256-px grid",
+        "another repair's case"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R493.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R493.items()})

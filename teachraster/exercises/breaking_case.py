@@ -113,6 +113,7 @@ def as_case(value):
             f"returned {short(value)}: expected a tuple (xy, width, height, origin)"
         )
     xy, width, height, origin = value
+    given = getattr(xy, "dtype", None)  # r478 H4: a float16 (or float32 far out) xy
     try:
         xy = as_finite("xy", xy, (3, 2)).astype(float)
         width, height = as_size("width", width), as_size("height", height)
@@ -121,7 +122,30 @@ def as_case(value):
         origin = (as_int("origin[0] (row)", origin[0]), as_int("origin[1] (col)", origin[1]))
     except (TypeError, ValueError) as exc:
         raise WrongAnswerType(f"returned {short(value)}: {exc}") from None
+    _note_narrow(xy, given)
     return (xy, width, height, origin)
+
+
+#: r478 H4: xy (its bytes) -> words, for an xy given in a float type too coarse for the grid
+#: there (the case's explanation says so in its first words).
+_NARROW: dict = {}
+
+
+def _note_narrow(xy, given) -> None:
+    """Remember words for ``xy`` given as ``given``, a float type whose numbers at the case's
+    coordinates lie farther apart than the 1/256-px grid (float16 past 8 px)."""
+    if given is None or np.dtype(given).kind != "f" or np.dtype(given).itemsize >= 8:
+        return
+    far = float(np.abs(xy).max())
+    step = float(np.spacing(np.dtype(given).type(far)))
+    if step > 1 / 256:
+        if len(_NARROW) > 256:
+            _NARROW.clear()
+        _NARROW[xy.tobytes()] = (
+            f" (your xy is {np.dtype(given).name}: at {far:g} px its numbers are {step:g} px "
+            "apart, coarser than the 1/256-px grid, so your vertices may not be the ones you "
+            "wrote; return float64 numbers)"
+        )
 
 
 def _window_far(case) -> float:
@@ -480,7 +504,8 @@ def _same(got, expected, args) -> bool:
 def _explain(args, expected, got) -> str:
     xy, width, height, origin = got
     return (f"breaking_case('{args[0]}'): the triangle {', '.join(_point(p) for p in xy)} in "
-            f"the {width} × {height} window at origin (row, col) = {origin}")  # fmt: skip
+            f"the {width} × {height} window at origin (row, col) = {origin}"
+            f"{_NARROW.get(np.asarray(xy, float).tobytes(), '')}")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
