@@ -12035,6 +12035,10 @@ R493 = {
                                                         [1000.25, 1006.0]], np.float16), 12, 12, (996, 996))),
         "(your xy is float16: at 1006 px its numbers are 0.5 px apart, coarser than the 1/256-px grid",
         "another repair's case"),
+    "breaking case: the precision case handed in for 'tie rule' too (a copy slip)": (
+        "breaking_case", lambda r: _rs.breaking_case("precision" if r == "tie rule" else r),
+        "your case is one for 'precision', not for 'tie rule' (for 'tie rule' the task asks for a "
+        "triangle at most 4 px across", "another repair's case"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R493.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R493.items()})

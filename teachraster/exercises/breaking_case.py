@@ -454,6 +454,13 @@ def _verdict_of(repair: str, case) -> tuple[str, str] | None:
                              "pixels at most: find one of your own")  # fmt: skip
     words = _bound_words(repair, case)
     if words:
+        # r493 W82: another repair's case, within its bounds, handed in for this one (a slip
+        # of copy and paste): said first, the bound after
+        cases_for = [r for r in _others(repair)
+                     if not _bound_words(r, case) and _is_case_for(case, r)]  # fmt: skip
+        if cases_for:
+            return "another repair's case", (f"your case is one for {_quoted(cases_for)}, not "
+                                             f"for '{repair}' ({words})")  # fmt: skip
         return "outside the bounds", words
     if _diff_pixel(case, _others(repair)) is None:
         return _unneeded(repair, case)
