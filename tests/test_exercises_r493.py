@@ -97,3 +97,18 @@ def test_snap_words_say_a_half_way_vertex_may_round_down_or_up():
                              12, 12, (0, 0)))  # fmt: skip
     assert up[0] == "snap moves no centre" and "641.5 steps of 1/256 px go to 642" in up[1], up
     assert "not up to" not in up[1]
+
+
+def test_robust_fill_snapping_with_tr_snap_is_not_counted():
+    """r493 (w83): the GPU's snapping is a repair the task asks for, as the top-left rule is."""
+    from reasoning_solutions import robust_fill
+
+    import teachraster as tr
+
+    def with_snap(xy, width, height, origin=(0, 0)):
+        return robust_fill(tr.snap(np.asarray(xy, float)), width, height, origin)
+
+    tries.forget_hints("robust_fill")
+    report = ex.check("robust_fill", with_snap)
+    tries.forget_hints("robust_fill")
+    assert not report.passed and "calls teachraster's snap" in str(report), str(report)

@@ -1213,6 +1213,8 @@ FILL_ANSWERS = (
                     "answer once the vertices are moved by −origin", label=FILL_LABELS.get(f))
       for f in OTHER_FILLS),
     *TIE_RULE_ANSWERS,
+    # r493 (w83): the GPU's snapping, a repair the task asks for, as the top-left rule is
+    PackageAnswer(snap, what="the GPU's snapping to the 1/256-px grid, a part of this very answer"),
 )  # fmt: skip
 
 ROBUST_FILL = Exercise(
