@@ -13,6 +13,9 @@ from student_variants import DIFFERENT, R493
 from variant_checks import assert_first_named, assert_passes
 
 from teachraster import exercises as ex
+from teachraster.core.bbox import pixel_bbox
+from teachraster.core.edges import setup_edges
+from teachraster.core.fill import METHODS
 from teachraster.exercises import breaking_case as bc
 from teachraster.exercises import hard_case_fill as hf
 from teachraster.exercises import tries
@@ -29,8 +32,22 @@ def _batch(xy, width, height):
     return out
 
 
+def _core(method):
+    """The core's own fill of the triangle's box (an EdgeSetup), put into the window."""
+
+    def fill(xy, width, height):
+        setup = setup_edges(np.asarray(xy, float), 8)
+        box = pixel_bbox(setup, width, height)
+        out = np.zeros((height, width), bool)
+        out[box.row0 : box.row1, box.col0 : box.col1] = METHODS[method](setup, box, False)[0]
+        return out & (setup.area2 != 0)
+
+    return fill
+
+
 #: Each of the package's other fills as a student would call it (the window moved to (0, 0)).
 WRAPPED = {
+    **{f"core {method} fill": _core(method) for method in METHODS},
     "study.precision.coverage": lambda xy, w, h: precision_coverage(xy, w, h, "fixed8"),
     "study.precision.coverage, float64": lambda xy, w, h: precision_coverage(xy, w, h, "float64"),
     "exact_coverage": lambda xy, w, h: exact_coverage(xy, w, h),

@@ -28,7 +28,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.fill import rasterize
+from ..core.fill import METHODS, rasterize
 from ..core.snapping import snap
 from ..core.triangle import Triangle
 from ..pipeline.rasterization.batched_fill import rasterize_batch
@@ -1190,9 +1190,18 @@ HINTS = (
 #: r493 W1: the package's other fills of a window on the GPU's grid, each this answer with
 #: the vertices moved by −origin (lesson 02's arithmetics, the rational ground truth, the exact
 #: integer DDA, the pipeline's batched fill): none calls ``rasterize``, so each is listed.
-OTHER_FILLS = (precision_coverage, exact_coverage, span_fill_int_dda, rasterize_batch)
+OTHER_FILLS = (
+    precision_coverage,
+    exact_coverage,
+    span_fill_int_dda,
+    rasterize_batch,
+    *METHODS.values(),
+)  # and the core's own fills of a box, by its EdgeSetup
 #: How the report names a fill whose own name does not say whose it is.
-FILL_LABELS = {precision_coverage: "study.precision.coverage"}
+FILL_LABELS = {
+    precision_coverage: "study.precision.coverage",
+    **{f: f"{f.__module__.removeprefix('teachraster.')}.fill" for f in METHODS.values()},
+}
 #: Every fill of the package's that gives (or, with its options, can give) the GPU's answer:
 #: 10.2's answers, and what a search in 10.3 (:mod:`.breaking_case`) must not run.
 PACKAGE_FILLS = (rasterize, naive_coverage, rule_coverage, fill_window, *OTHER_FILLS)
