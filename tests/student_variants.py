@@ -11943,7 +11943,7 @@ R478 = {
     "breaking case: 'snap' with an edge that moves but crosses no centre": (
         "breaking_case", _bc470("snap", ([[2.3 + 0.4 / 256, 1.3], [6.3 + 0.4 / 256, 5.7], [1.2, 6.1]],
                                          8, 8, (0, 0))),
-        "the naive fill itself is right on your case (every pixel", "naive right"),
+        "the naive fill itself is right on your case (every pixel", "snap moves no centre"),
     "breaking case: xy as [[x1, x2, x3], [y1, y2, y3]]": (
         "breaking_case", lambda r: ([list(c) for c in zip(*_rs.breaking_case(r)[0])], *_rs.breaking_case(r)[1:]),
         "xy must have shape (3, 2), got (2, 3)", "type"),
@@ -11967,6 +11967,93 @@ DIFFERENT.update({
             "tie rule": (np.array([[500.5, 500.5], [503.5, 503.5], [500.25, 503.75]]), 5, 5, (500, 500)),
             "precision": ([[990.5, 1010.5], [1010.5, 1010.5 - 3 / 256], [1000.25, 1016.0]], 24, 10, (1006, 988)),
         }[r]),
+})  # fmt: skip
+
+
+# == r493: exercise 10, verifying read: a snap case reasoned with round-half-up, E in int32
+# with the area in int64; right answers another way (10.1, 10.2, 10.3) ======================
+def _r493_int32_edges(xy, width, height, origin=(0, 0)):
+    """H2: 1/256-px integers, the area in int64, each E's products in int32 (which wrap)."""
+    v = np.rint(np.asarray(xy, float) * 256).astype(np.int64)
+    area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+    if area == 0:
+        return np.zeros((height, width), bool)
+    v = v[[0, 2, 1]] if area < 0 else v
+    py = (origin[0] + np.arange(height, dtype=np.int64))[:, None] * 256 + 128
+    px = (origin[1] + np.arange(width, dtype=np.int64))[None, :] * 256 + 128
+    out = np.ones((height, width), bool)
+    with np.errstate(over="ignore"):
+        for k in range(3):
+            p, q = v[k], v[(k + 1) % 3]
+            dx, dy = np.int32(q[0] - p[0]), np.int32(q[1] - p[1])
+            e = dx * (py - p[1]).astype(np.int32) - dy * (px - p[0]).astype(np.int32)
+            out &= (e >= 0) if (q[1] < p[1] or (q[1] == p[1] and q[0] > p[0])) else (e > 0)
+    return out
+
+
+def _r493_int64_fill(xy, width, height, origin=(0, 0)):
+    """Right: int64 fixed point, E from differences to a vertex."""
+    v = np.rint(np.asarray(xy, float) * 256).astype(np.int64)
+    area = (v[1, 0] - v[0, 0]) * (v[2, 1] - v[0, 1]) - (v[1, 1] - v[0, 1]) * (v[2, 0] - v[0, 0])
+    if area == 0:
+        return np.zeros((height, width), bool)
+    v = v[[0, 2, 1]] if area < 0 else v
+    py = (origin[0] + np.arange(height, dtype=np.int64))[:, None] * 256 + 128
+    px = (origin[1] + np.arange(width, dtype=np.int64))[None, :] * 256 + 128
+    out = np.ones((height, width), bool)
+    for k in range(3):
+        p, q = v[k], v[(k + 1) % 3]
+        e = (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0])
+        out &= (e >= 0) if (q[1] < p[1] or (q[1] == p[1] and q[0] > p[0])) else (e > 0)
+    return out
+
+
+def _r493_edge_bits(range_bits, across, sub_bits):
+    """Right: a difference below ``across`` px takes ceil(log2(across)) + sub_bits bits."""
+    out = []
+    for factor in (range_bits + sub_bits, math.ceil(math.log2(across)) + sub_bits):
+        bits = 2 * factor + 2
+        held = [
+            (t, np.finfo(t).nmant + 2 if np.dtype(t).kind == "f" else np.iinfo(t).bits)
+            for t in ("float32", "int32", "float64", "int64")
+        ]
+        out.append([np.int64(bits), next((t for t, h in held if h >= bits), None)])
+    return out
+
+
+#: label: (exercise, function, words its first explanation must hold, its kind).
+R493 = {
+    "breaking case: 'snap' reasoned with round-half-up (2.5 steps to 3)": (
+        "breaking_case", _bc470("snap", ([[2.5, 4.5 - 2 / 256], [9.5, 4.5 + 2.5 / 256], [6.0, 1.0]], 12, 8, (0, 0))),
+        "1154.5 steps of 1/256 px go to 1154, the even one, as np.rint rounds, not up to 1155",
+        "snap moves no centre"),
+    "robust fill: E in int32 fixed point, the area in int64": (
+        "robust_fill", _r493_int32_edges,
+        "your integer edge functions overflow int32 (your area, in int64, does not", "int32 E"),
+    "breaking case: 'precision' returned as float16 (r478 H4)": (
+        "breaking_case", _bc470("precision", (np.array([[996.5, 1000.5], [1004.5, 1000.5 - 1 / 256],
+                                                        [1000.25, 1006.0]], np.float16), 12, 12, (996, 996))),
+        "(your xy is float16: at 1006 px its numbers are 0.5 px apart, coarser than the 1/256-px grid",
+        "another repair's case"),
+    "breaking case: the precision case handed in for 'tie rule' too (a copy slip)": (
+        "breaking_case", lambda r: _rs.breaking_case("precision" if r == "tie rule" else r),
+        "your case is one for 'precision', not for 'tie rule' (for 'tie rule' the task asks for a "
+        "triangle at most 4 px across", "another repair's case"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R493.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R493.items()})
+DIFFERENT.update({
+    "breaking case: a vertex tie, a mirrored sliver, a transposed snap, precision at the bound (r493)": (
+        "breaking_case", lambda r: {
+            "snap": ([[4.5 - 1 / 256, 2.5], [4.5 + 1.6 / 256, 10.5], [1.0, 6.0]], 12, 8, (0, 0)),
+            "orient after snapping": ([[2, 2.5 - 1 / 256 - 0.0019], [3, 2.5 - 1 / 256 + 0.0019],
+                                       [11, 2.5 - 1 / 256 + 0.030]], 12, 4, (0, 0)),
+            "tie rule": ([[2.5, 1.5], [4.0, 4.0], [1.0, 4.0]], 6, 6, (0, 0)),
+            "precision": ([[1012.5, 1012.5], [1020.5, 1012.5 - 1 / 256], [1016.25, 1018.0]], 12, 12,
+                          (1012, 1012)),
+        }[r]),
+    "robust fill: int64 fixed point (r493)": ("robust_fill", _r493_int64_fill),
+    "edge bits: ceil(log2(across)) + sub_bits, lists and numpy ints (r493)": ("edge_bits", _r493_edge_bits),
 })  # fmt: skip
 
 

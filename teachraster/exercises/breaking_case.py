@@ -26,15 +26,20 @@ from functools import cache
 import numpy as np
 
 from ..core.edges import edge_function, is_top_left
-from ..core.fill import rasterize
 from ..core.snapping import snap
 from ..core.validate import as_finite, as_int, as_size
 from ..study.hardcases import naive_coverage
-from ..study.hardcases.precision_cases import fill_window
-from ..study.operation_counts import rule_coverage
 from .answers import refuse_non_answers, short
 from .exercise import Exercise, Mistake, PackageAnswer
-from .hard_case_fill import MOST_ACROSS, MOST_FAR, draw_fill, expected_fill, fixed_cases
+from .hard_case_fill import (
+    FILL_LABELS,
+    MOST_ACROSS,
+    MOST_FAR,
+    PACKAGE_FILLS,
+    draw_fill,
+    expected_fill,
+    fixed_cases,
+)
 from .running import WrongAnswerType
 
 #: The repairs, in the words of the task (naive_fill lacks each).
@@ -108,6 +113,7 @@ def as_case(value):
             f"returned {short(value)}: expected a tuple (xy, width, height, origin)"
         )
     xy, width, height, origin = value
+    given = getattr(xy, "dtype", None)  # r478 H4: a float16 (or float32 far out) xy
     try:
         xy = as_finite("xy", xy, (3, 2)).astype(float)
         width, height = as_size("width", width), as_size("height", height)
@@ -116,7 +122,30 @@ def as_case(value):
         origin = (as_int("origin[0] (row)", origin[0]), as_int("origin[1] (col)", origin[1]))
     except (TypeError, ValueError) as exc:
         raise WrongAnswerType(f"returned {short(value)}: {exc}") from None
+    _note_narrow(xy, given)
     return (xy, width, height, origin)
+
+
+#: r478 H4: xy (its bytes) -> words, for an xy given in a float type too coarse for the grid
+#: there (the case's explanation says so in its first words).
+_NARROW: dict = {}
+
+
+def _note_narrow(xy, given) -> None:
+    """Remember words for ``xy`` given as ``given``, a float type whose numbers at the case's
+    coordinates lie farther apart than the 1/256-px grid (float16 past 8 px)."""
+    if given is None or np.dtype(given).kind != "f" or np.dtype(given).itemsize >= 8:
+        return
+    far = float(np.abs(xy).max())
+    step = float(np.spacing(np.dtype(given).type(far)))
+    if step > 1 / 256:
+        if len(_NARROW) > 256:
+            _NARROW.clear()
+        _NARROW[xy.tobytes()] = (
+            f" (your xy is {np.dtype(given).name}: at {far:g} px its numbers are {step:g} px "
+            "apart, coarser than the 1/256-px grid, so your vertices may not be the ones you "
+            "wrote; return float64 numbers)"
+        )
 
 
 def _window_far(case) -> float:
@@ -275,7 +304,7 @@ def _unneeded(repair: str, case) -> tuple[str, str]:
     if note:
         return note
     if _diff_pixel(case, ()) is None:
-        note = _float32_note(case) if repair == "precision" else None
+        note = {"precision": _float32_note, "snap": _snap_note}.get(repair, lambda c: None)(case)
         naive = ("the naive fill itself is right on your case (every pixel of the window as "
                  "rasterize gives it): there is nothing to repair")  # fmt: skip
         return note or ("naive right", naive)
@@ -337,6 +366,29 @@ def _float32_note(case) -> tuple[str, str] | None:
                              f"{products:,.0f} px² there, where float32's numbers are {step:g} "
                              f"px² apart, and the centre nearest an edge that decides it lies "
                              f"{d:g} px² from it (E, exact on the grid), {how}")  # fmt: skip
+
+
+def _snap_note(case) -> tuple[str, str] | None:
+    """r493 H1: words for a "snap" case the naive fill gets right: where snapping moves each
+    vertex (a vertex half-way between grid points goes to the even one, which may be down),
+    and that no centre changes sides there."""
+    xy, s = case[0], snap(case[0])
+    moved = [k for k in range(3) if np.any(s[k] != xy[k])]
+    if not moved:
+        return None
+    said = ", ".join(f"v{k + 1} {_point(xy[k])} to {_point(s[k])}" for k in moved)
+    half = [c for c in (xy * 256).ravel().tolist() if c % 1 == 0.5]
+    if half:
+        c, even = half[0], float(np.rint(half[0]))
+        said += (
+            f" (half-way between grid points, {c:g} steps of 1/256 px go to {even:g}, the "
+            f"even one, as np.rint rounds{'' if even > c else f', not up to {even + 1:g}'})"
+        )
+    return "snap moves no centre", (
+        f"snapping moves {said}, but no centre of your window changes sides of an edge: the "
+        "naive fill itself is right on your case (every pixel of the window as rasterize gives "
+        "it); a case for 'snap' needs a centre between an edge's raw place and its snapped one"
+    )  # fmt: skip
 
 
 def _tie_note(case) -> tuple[str, str] | None:
@@ -402,6 +454,13 @@ def _verdict_of(repair: str, case) -> tuple[str, str] | None:
                              "pixels at most: find one of your own")  # fmt: skip
     words = _bound_words(repair, case)
     if words:
+        # r493 W82: another repair's case, within its bounds, handed in for this one (a slip
+        # of copy and paste): said first, the bound after
+        cases_for = [r for r in _others(repair)
+                     if not _bound_words(r, case) and _is_case_for(case, r)]  # fmt: skip
+        if cases_for:
+            return "another repair's case", (f"your case is one for {_quoted(cases_for)}, not "
+                                             f"for '{repair}' ({words})")  # fmt: skip
         return "outside the bounds", words
     if _diff_pixel(case, _others(repair)) is None:
         return _unneeded(repair, case)
@@ -426,7 +485,8 @@ def verdict(repair: str, case) -> tuple[str, str] | None:
 #: The kinds of a wrong case, most specific first.
 KINDS = ("degenerate", "out of range", "catalogue", "outside the bounds", "origin as (x, y)",
          "window misses", "another repair's case", "on the grid", "no flip", "covers nothing",
-         "no tie", "top-left ties", "float32 right", "naive right", "not needed",
+         "no tie", "top-left ties", "float32 right", "snap moves no centre", "naive right",
+         "not needed",
          "also needs")  # fmt: skip
 
 
@@ -451,7 +511,8 @@ def _same(got, expected, args) -> bool:
 def _explain(args, expected, got) -> str:
     xy, width, height, origin = got
     return (f"breaking_case('{args[0]}'): the triangle {', '.join(_point(p) for p in xy)} in "
-            f"the {width} × {height} window at origin (row, col) = {origin}")  # fmt: skip
+            f"the {width} × {height} window at origin (row, col) = {origin}"
+            f"{_NARROW.get(np.asarray(xy, float).tobytes(), '')}")  # fmt: skip
 
 
 def _rule(args, expected, got) -> str:
@@ -494,14 +555,15 @@ def draw_case(ax, case, got):
 
 
 #: r478 W1: the package's fills, run while ``breaking_case`` runs: a search for the case (the
-#: checker's own code, its judge ``repaired_fill`` among it, is watched as every checker's).
+#: checker's own code, its judge ``repaired_fill`` among it, is watched as every checker's);
+#: r493 W1: every fill of the package's that gives the GPU's answer (10.2's list), not four.
 SEARCH_WORDS = (
     "a fill of the package's, which the check judges your cases by: a search that runs it "
     "while breaking_case runs finds the case for you, and is not counted (try candidates with "
     "it in a cell of your own; breaking_case returns the numbers of the cases you reasoned out)"
 )
-SEARCH_ANSWERS = tuple(PackageAnswer(f, words=SEARCH_WORDS)
-                       for f in (rasterize, naive_coverage, rule_coverage, fill_window))  # fmt: skip
+SEARCH_ANSWERS = tuple(PackageAnswer(f, words=SEARCH_WORDS, label=FILL_LABELS.get(f))
+                       for f in PACKAGE_FILLS)  # fmt: skip
 
 BREAKING_CASE = Exercise(
     "breaking_case", cases, as_case, _same, _explain, _rule,

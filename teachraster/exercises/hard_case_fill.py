@@ -28,12 +28,16 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.fill import rasterize
+from ..core.fill import METHODS, rasterize
 from ..core.snapping import snap
 from ..core.triangle import Triangle
+from ..pipeline.rasterization.batched_fill import rasterize_batch
+from ..study.bench.ground_truth import exact_coverage
+from ..study.exact_spans import span_fill_int_dda
 from ..study.hardcases import CASES, naive_coverage
 from ..study.hardcases.precision_cases import fill_window
 from ..study.operation_counts import rule_coverage
+from ..study.precision import coverage as precision_coverage
 from .answers import refuse_non_answers, short
 from .cases import DRAWN_WORD, SEED, drawn_rng
 from .coverage import explain_pixel
@@ -240,6 +244,7 @@ def _more_variants(xy, width, height, origin) -> dict[str, np.ndarray]:
     out["float32 E"] = step32_fill(xy, width, height, origin)  # r386 NW28
     out["area in float32"] = area32_fill(xy, width, height, origin)  # r457 W1
     out["int32 area"] = int32_fill(xy, width, height, origin, area_only=True)  # r457 M2
+    out["int32 E"] = int32_fill(xy, width, height, origin, edges_only=True)  # r493 H2
     out["both reversed, as not top-left"] = edge_fill(
         s, width, height, origin, owns=_not_top_left
     )  # r457 H1
@@ -327,17 +332,21 @@ def edge_fill(s, width: int, height: int, origin, *, owns=_top_left, given=None,
     return inside
 
 
-def int32_fill(xy, width: int, height: int, origin, area_only: bool = False) -> np.ndarray:
+def int32_fill(
+    xy, width: int, height: int, origin, area_only: bool = False, edges_only: bool = False
+) -> np.ndarray:
     """r373 W41: the fill in 1/256-px integers (centres at 256 j + 128, the top-left rule as a
     bias of −1), every product in int32, which wraps past 2³¹; ``area_only`` (r457 M2, lesson
-    02's code with int32 vertices): the area in int32, each E in int64 (its centres are)."""
+    02's code with int32 vertices): the area in int32, each E in int64 (its centres are);
+    ``edges_only`` (r493 H2): each E in int32, the area in int64."""
     v = np.rint(np.asarray(xy, float) * 256).astype(np.int32)
     centre = np.int64 if area_only else np.int32
     ys = (origin[0] + np.arange(height, dtype=centre))[:, None] * 256 + 128
     xs = (origin[1] + np.arange(width, dtype=centre))[None, :] * 256 + 128
     out = np.ones((height, width), dtype=bool)
     with np.errstate(over="ignore"):
-        (ax, ay), (bx, by), (cx, cy) = v
+        w = v.astype(np.int64) if edges_only else v
+        (ax, ay), (bx, by), (cx, cy) = w
         area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
         if area == 0 and not area_only:  # (lesson 02's code refuses nothing)
             return ~out
@@ -841,14 +850,20 @@ def _area32_words(args, expected, got) -> str:
             "differences in float64 (or in int64), where it is exact")  # fmt: skip
 
 
-def _int32_area_words(args, expected, got) -> str:
-    """r457 M2: lesson 02's integer fill with int32 vertices: the area wraps, E does not."""
+def _int32_reach(args, whose: str) -> str:
+    """What both int32 mistakes' words say: the triangle in 1/256-px units, and how far
+    ``whose`` products reach past int32's largest number."""
     v = np.rint(np.asarray(args[0], float) * 256)
     across = float(np.ptp(v, axis=0).max())
-    return (f"your area E(v1, v2, v3) overflows int32: in 1/256-px units this triangle is "
-            f"{across:.0f} across ({across / 256:.0f} px), so the area's products reach about {across * across:.1e}, "
-            f"past int32's largest number, {np.iinfo(np.int32).max:,}, and wrap around to the "
-            "other sign, so you orient the triangle the wrong way and cover nothing (your E at "
+    return (f"in 1/256-px units this triangle is {across:.0f} across ({across / 256:.0f} px), "
+            f"so {whose} products reach about {across * across:.1e}, past int32's largest "
+            f"number, {np.iinfo(np.int32).max:,}, and wrap around to the")  # fmt: skip
+
+
+def _int32_area_words(args, expected, got) -> str:
+    """r457 M2: lesson 02's integer fill with int32 vertices: the area wraps, E does not."""
+    reach = _int32_reach(args, "the area's")
+    return (f"your area E(v1, v2, v3) overflows int32: {reach} other sign, so you orient the triangle the wrong way and cover nothing (your E at "
             "each centre is int64, as the centres are); keep the vertices in int64, as lesson "
             "02's code does: 10.1's count for the relative form says how many bits it needs")  # fmt: skip
 
@@ -866,14 +881,17 @@ def _origin_twice_words(args, expected, got) -> str:
     return twice
 
 
-def _int32_words(args, expected, got) -> str:
-    v = np.rint(np.asarray(args[0], float) * 256)
-    across = float(np.ptp(v, axis=0).max())
-    return (f"your integer edge functions overflow: in 1/256-px units this triangle is "
-            f"{across:.0f} across, so E's products reach about {across * across:.1e}, past "
-            f"int32's largest number, {np.iinfo(np.int32).max:,}, and wrap around to the "
+def _int32_words(args, expected, got, *, edges_only: bool = False) -> str:
+    """Every product in int32 (r373 W41), or E's only, the area in int64 (r493 H2)."""
+    only = " (your area, in int64, does not: E's products wrap)" if edges_only else ""
+    reach = _int32_reach(args, "E's")
+    return (f"your integer edge functions overflow int32{only}: {reach} "
             "wrong sign; compute them in int64 (exact for every input this task allows) or "
-            "float64")  # fmt: skip
+            "float64: 10.1's count for the relative form says how many bits they need")  # fmt: skip
+
+
+def _int32_edges_words(args, expected, got) -> str:
+    return _int32_words(args, expected, got, edges_only=True)
 
 
 MISTAKES.update(
@@ -910,6 +928,7 @@ MISTAKES.update(
         "int32 overflow": _int32_words,
         "area in float32": _area32_words,
         "int32 area": _int32_area_words,
+        "int32 E": _int32_edges_words,
         "both reversed, as not top-left": "your ties go to every edge that is not top or left "
         "(lesson 02's bias of −1 put on the top and left edges, not on the others?): that is "
         "the bottom-right rule, the reverse of the top-left one, and it also gives a point-"
@@ -995,7 +1014,7 @@ RARE_KINDS = ("no snapping", "floor snapping", "half-up snapping", "half-down sn
               "float32 vertices", "absolute form in float64", "int32 overflow", "only x snapped",
               "only y snapped", "origin ignored", "origin added twice",
               "float32 E", "float32", "absolute form", *SLIP_WORDS,
-              "origin swapped", "E > 0", "area in float32", "int32 area")  # fmt: skip  # r394 W09, W32: one case is no cause
+              "origin swapped", "E > 0", "area in float32", "int32 area", "int32 E")  # fmt: skip  # r394 W09, W32: one case is no cause
 
 
 def explain_fill(args, expected, got) -> str:
@@ -1168,6 +1187,25 @@ HINTS = (
      "form of E without products of size x·y"),
 )  # fmt: skip
 
+#: r493 W1: the package's other fills of a window on the GPU's grid, each this answer with
+#: the vertices moved by −origin (lesson 02's arithmetics, the rational ground truth, the exact
+#: integer DDA, the pipeline's batched fill): none calls ``rasterize``, so each is listed.
+OTHER_FILLS = (
+    precision_coverage,
+    exact_coverage,
+    span_fill_int_dda,
+    rasterize_batch,
+    *METHODS.values(),
+)  # and the core's own fills of a box, by its EdgeSetup
+#: How the report names a fill whose own name does not say whose it is.
+FILL_LABELS = {
+    precision_coverage: "study.precision.coverage",
+    **{f: f"{f.__module__.removeprefix('teachraster.')}.fill" for f in METHODS.values()},
+}
+#: Every fill of the package's that gives (or, with its options, can give) the GPU's answer:
+#: 10.2's answers, and what a search in 10.3 (:mod:`.breaking_case`) must not run.
+PACKAGE_FILLS = (rasterize, naive_coverage, rule_coverage, fill_window, *OTHER_FILLS)
+
 #: r441 W3: the package's fills that are this answer, beside ``rasterize``: lesson 07's
 #: ``naive_coverage`` and lesson 06's ``rule_coverage`` with the top-left rule in float64 (on
 #: snapped vertices they are the GPU's fill), the catalogue's ``fill_window`` (the core's own
@@ -1180,7 +1218,12 @@ FILL_ANSWERS = (
     PackageAnswer(rule_coverage, what="the top-left rule's fill in float64, this very answer "
                   "on snapped vertices", when=lambda a: a.get("rule") == "top-left"),
     PackageAnswer(fill_window, what="the GPU's fill of a window, this very answer"),
+    *(PackageAnswer(f, what="a fill of the package's on the GPU's 1/256-px grid, this very "
+                    "answer once the vertices are moved by −origin", label=FILL_LABELS.get(f))
+      for f in OTHER_FILLS),
     *TIE_RULE_ANSWERS,
+    # r493 (w83): the GPU's snapping, a repair the task asks for, as the top-left rule is
+    PackageAnswer(snap, what="the GPU's snapping to the 1/256-px grid, a part of this very answer"),
 )  # fmt: skip
 
 ROBUST_FILL = Exercise(
