@@ -12052,3 +12052,27 @@ DIFFERENT.update({
     "front to back in Python floats, returned as float32 (r483 F1)": (
         "front_to_back", _r483_front_float32_out),
 })  # fmt: skip
+
+
+# -- r490 (r482 T1): exercise 6.2 resolve_fragments, 6.3 covered_counts ----------------------
+def _r490_fn(src, name):
+    import r490_variants
+
+    ns = {}
+    exec(r490_variants.HEAD + src, ns)
+    return ns[name]
+
+
+def _r490_rows():
+    import r490_variants as v
+
+    for name, right, wrong in (("resolve_fragments", v.RF_RIGHT, v.RF_WRONG),
+                               ("covered_counts", v.CC_RIGHT, v.CC_WRONG)):  # fmt: skip
+        for key, src in right.items():
+            DIFFERENT[f"{name} {key} (r490)"] = (name, _r490_fn(src, name))
+        for key, (src, words) in wrong.items():
+            WRONG[f"{name} {key} (r490)"] = (name, _r490_fn(src, name), words)
+            KINDS[f"{name} {key} (r490)"] = v.KINDS[key]
+
+
+_r490_rows()

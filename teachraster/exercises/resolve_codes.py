@@ -20,7 +20,7 @@ import re
 
 import numpy as np
 
-from .answers import as_numbers
+from .answers import as_numbers, refuse_non_answers
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake
 from .running import WrongAnswerType
@@ -110,6 +110,7 @@ cases = fixed_and_drawn(_cases, SEED + 491)
 
 def as_counts(value) -> tuple:
     """The possible k as a sorted tuple of numbers (a single number: that one k)."""
+    refuse_non_answers(value, "a list of the possible k")
     if isinstance(value, (bool, np.bool_)):
         raise WrongAnswerType(f"returned {value}, a bool: return the possible k as a list")
     arr = as_numbers(np.atleast_1d(value) if np.ndim(value) == 0 else value, (-1,),
@@ -253,8 +254,8 @@ def draw(ax, case_, got):
     """The two codes and the code shown as grey swatches; the answers as words."""
     code, fg, bg, s = case_[1]
     names = [f"triangle\n{fg}", f"background\n{bg}", f"shown\n{code}"]
-    for j, c in enumerate((fg, bg, code)):
-        ax.imshow([[c]], cmap="gray", vmin=0, vmax=255, extent=(j * 1.4, j * 1.4 + 1, 1, 0))
+    artists = [ax.imshow([[c]], cmap="gray", vmin=0, vmax=255, aspect="auto",
+                         extent=(j * 1.4, j * 1.4 + 1, 1, 0)) for j, c in enumerate((fg, bg, code))]  # fmt: skip
     ax.set_xlim(-0.1, 4.1)
     ax.set_ylim(1.05, -0.05)
     ax.set_xticks([0.5, 1.9, 3.3], names, fontsize="x-small")
@@ -263,6 +264,7 @@ def draw(ax, case_, got):
     if got is not None:
         title += f": expected k in {_ks(case_[2])}, yours {_ks(got)}"
     ax.set_title(title, fontsize="small")
+    return artists
 
 
 COVERED_COUNTS = Exercise(
