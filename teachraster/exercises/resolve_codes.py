@@ -251,19 +251,25 @@ MISTAKES = [
 
 
 def draw(ax, case_, got):
-    """The two codes and the code shown as grey swatches; the answers as words."""
+    """The two codes and the code shown as framed grey swatches; S and the answers below."""
+    from matplotlib.patches import Rectangle
+
     code, fg, bg, s = case_[1]
     names = [f"triangle\n{fg}", f"background\n{bg}", f"shown\n{code}"]
-    artists = [ax.imshow([[c]], cmap="gray", vmin=0, vmax=255, aspect="auto",
-                         extent=(j * 1.4, j * 1.4 + 1, 1, 0)) for j, c in enumerate((fg, bg, code))]  # fmt: skip
+    artists = []
+    for j, c in enumerate((fg, bg, code)):
+        grey = str(c / 255)
+        artists.append(ax.add_patch(Rectangle((j * 1.4, 0), 1, 1, facecolor=grey,
+                                              edgecolor="0.4", linewidth=1)))  # fmt: skip
     ax.set_xlim(-0.1, 4.1)
     ax.set_ylim(1.05, -0.05)
+    ax.set_box_aspect(0.3)
     ax.set_xticks([0.5, 1.9, 3.3], names, fontsize="x-small")
     ax.set_yticks([])
-    title = f"S = {s}"
+    words = f"S = {s} samples"
     if got is not None:
-        title += f": expected k in {_ks(case_[2])}, yours {_ks(got)}"
-    ax.set_title(title, fontsize="small")
+        words += f"; k: expected {_ks(case_[2])}, yours {_ks(got)}"
+    ax.set_xlabel(words, fontsize="x-small")
     return artists
 
 

@@ -296,7 +296,7 @@ def draw(ax, case_, got):
 RESOLVE_FRAGMENTS = Exercise(
     "resolve_fragments", cases, as_colour, same_colour, explain,
     lambda a, e, g: RULE, MISTAKES,
-    answers=(PackageAnswer(Frame.resolve),), draw=draw, inputs_drawn=True,
+    answers=(PackageAnswer(Frame.resolve),), draw=draw, inputs_drawn=True, example=2,
     hints=((RULE, HINT),), once=((RULE, "; as said for the first failing case"),),
     raised_words=raised,
     reference=("teachraster.exercises.antialiasing",),
