@@ -97,7 +97,7 @@ def _cases(rng, word):
         ("1 sample, not covered, an orphan kept", [GREEN], [-1], GREY),
         ("16 samples, 2 fragments 9 and 2, 5 uncovered", [RED, BLUE],
          [0] * 9 + [1] * 2 + [-1] * 5, WHITE),
-        ("2 samples, 2 fragments, both uncovered samples' share 0", [RED, BLUE], [1, 0], GREY),
+        ("2 samples, 2 fragments, none uncovered", [RED, BLUE], [1, 0], GREY),
     ]  # fmt: skip
     out = [case(*c) for c in hard]
     for n in range(10):
