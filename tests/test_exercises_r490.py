@@ -95,3 +95,10 @@ def test_notebook_asks_without_answering():
     for lesson in (ROOT / "notebooks").glob("*.ipynb"):
         text = lesson.read_text()
         assert "sample_fragment" not in text and "covered_counts" not in text, lesson.name
+
+
+def test_the_checkers_own_models_and_the_packages_resolve_do_not_count():
+    assert not ex.check("covered_counts", rc.expected_counts).passed
+    assert not ex.check("resolve_fragments", rf.expected_fragments).passed
+    report = ex.check("resolve_fragments", rf.package_resolve)
+    assert not report.passed and "not counted" in str(report)

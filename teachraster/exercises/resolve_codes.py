@@ -22,7 +22,8 @@ import numpy as np
 
 from .answers import as_numbers, refuse_non_answers
 from .cases import SEED, fixed_and_drawn
-from .exercise import Exercise, Mistake
+from .exercise import Exercise, Mistake, PackageAnswer
+from .package_answers import CHECKER_WORDS
 from .running import WrongAnswerType
 
 
@@ -274,6 +275,8 @@ def draw(ax, case_, got):
 
 COVERED_COUNTS = Exercise(
     "covered_counts", cases, as_counts, same_counts, explain, rule, MISTAKES, draw=draw,
-    inputs_drawn=True, hints=((RULE_TEXT, HINT),),
+    inputs_drawn=True, hints=((RULE_TEXT, HINT),), reference=("teachraster.exercises.resolve_codes",),
+    # the checker's own model handed in (it has no package function to list: r490)
+    answers=(PackageAnswer(expected_counts, words=CHECKER_WORDS),),
     match=lambda got, answer, args: same_counts(got, answer, args),
 )  # fmt: skip

@@ -187,7 +187,7 @@ def _per_fragment_words(args, expected, got) -> str:
     c = counts(idx, len(fr))
     return (
         f": you gave each of the {len(fr)} fragments the same weight, but they cover "
-        f"{'/'.join(str(int(n)) for n in c)} of the {len(idx)} samples: a fragment stands for "
+        f"{', '.join(str(int(n)) for n in c)} of the {len(idx)} samples: a fragment stands for "
         "as much of the pixel as the samples that point at it"
     )
 
@@ -196,7 +196,7 @@ def _orphan_words(args, expected, got) -> str:
     fr, idx, _ = args
     orphans = [j for j, n in enumerate(counts(idx, len(fr))) if n == 0]
     return (
-        f": you counted fragment {orphans} (no sample points at it: a triangle drawn later "
+        f": you counted fragment {', '.join(map(str, orphans))} (no sample points at it: a triangle drawn later "
         "covered all its samples, and the storage still holds it) as part of the pixel"
     )
 
@@ -299,5 +299,5 @@ RESOLVE_FRAGMENTS = Exercise(
     answers=(PackageAnswer(Frame.resolve),), draw=draw, inputs_drawn=True, example=2,
     hints=((RULE, HINT),), once=((RULE, "; as said for the first failing case"),),
     raised_words=raised,
-    reference=("teachraster.exercises.antialiasing",),
+    reference=("teachraster.exercises.antialiasing", "teachraster.exercises.resolve_fragments"),
 )  # fmt: skip
