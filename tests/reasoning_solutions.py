@@ -397,6 +397,25 @@ def texel_weights(sizes, uv, lod, wrap):
     return out
 
 
+def resolve_fragments(fragments, sample_fragment, background):
+    """Exercise 6.2 (r490): every sample an equal share; a fragment weighs by its samples."""
+    f = np.asarray(fragments, dtype=float).reshape(-1, 3)
+    ids = np.asarray(sample_fragment)
+    weights = np.array([(ids == j).sum() for j in range(len(f))]).reshape(-1)
+    return (weights @ f + (ids < 0).sum() * np.asarray(background, dtype=float)) / len(ids)
+
+
+def covered_counts(code, fg_code, bg_code, S):
+    """Exercise 6.3 (r490): every k whose 8-bit sRGB resolve shows ``code``."""
+    import teachraster as tr
+
+    fg, bg = tr.srgb_to_linear(fg_code / 255), tr.srgb_to_linear(bg_code / 255)
+    shown = [
+        round(float(tr.linear_to_srgb((k * fg + (S - k) * bg) / S)) * 255) for k in range(S + 1)
+    ]
+    return [k for k in range(S + 1) if shown[k] == code]
+
+
 CORRECT = {
     "box": box,
     "defect_case": defect_case,
@@ -410,6 +429,8 @@ CORRECT = {
     "reverse_z_worst": reverse_z_worst,
     "decal_bias": decal_bias,
     "depth_setup": depth_setup,
+    "resolve_fragments": resolve_fragments,
+    "covered_counts": covered_counts,
     "edge_bits": edge_bits,
     "robust_fill": robust_fill,
     "breaking_case": breaking_case,

@@ -13236,3 +13236,27 @@ DIFFERENT.update({
     'clipped colours edges then solve': ("clipped_colours", _r456("clipped_colours", _R489_C8_edges_then_solve)),
     'clipped colours qr': ("clipped_colours", _r456("clipped_colours", _R489_C9_qr)),
 })  # fmt: skip
+
+
+# -- r490 (r482 T1): exercise 6.2 resolve_fragments, 6.3 covered_counts ----------------------
+def _r490_fn(src, name):
+    import r490_variants
+
+    ns = {}
+    exec(r490_variants.HEAD + src, ns)
+    return ns[name]
+
+
+def _r490_rows():
+    import r490_variants as v
+
+    for name, right, wrong in (("resolve_fragments", v.RF_RIGHT, v.RF_WRONG),
+                               ("covered_counts", v.CC_RIGHT, v.CC_WRONG)):  # fmt: skip
+        for key, src in right.items():
+            DIFFERENT[f"{name} {key} (r490)"] = (name, _r490_fn(src, name))
+        for key, (src, words) in wrong.items():
+            WRONG[f"{name} {key} (r490)"] = (name, _r490_fn(src, name), words)
+            KINDS[f"{name} {key} (r490)"] = v.KINDS[key]
+
+
+_r490_rows()

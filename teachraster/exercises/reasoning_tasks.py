@@ -17,6 +17,10 @@ typical mistakes), defined in its own module:
   ``decal_bias`` (05b, :mod:`.decal_bias`): the depth offset a tilted decal needs;
   ``depth_setup`` (05b, :mod:`.depth_setup`): unorm24 or float32 reverse-Z for a scene, and
   its near plane, from the student's own ``safe_near`` and ``reverse_z_gap``;
+- ``resolve_fragments`` (08, :mod:`.resolve_fragments`): the resolve of compressed
+  samples, and ``covered_counts`` (08 with 12b, :mod:`.resolve_codes`): the 8-bit sRGB
+  resolve inverted, in place of ``resolve`` and ``resolve_srgb`` (still checked: the
+  capstone's 12.9, and notebooks of earlier versions);
 - ``edge_bits`` (07 with 06, :mod:`.edge_bits`): the bits E needs in either form, and the
   type that holds them; ``robust_fill`` (07, :mod:`.hard_case_fill`): the naive rasteriser
   against the catalogue; ``breaking_case`` (07, :mod:`.breaking_case`): a case for each
@@ -54,6 +58,8 @@ from . import perspective_weighting as pw
 from . import pixel_level as pl
 from . import pixel_sampler as ps
 from . import quad_difference as qd
+from . import resolve_codes as rc
+from . import resolve_fragments as rf
 from . import reverse_z as rz
 from . import reverse_z_worst as rzw
 from . import sample_spans as ss
@@ -76,6 +82,8 @@ EXERCISES: dict[str, Callable[[], Exercise]] = {
     "reverse_z_worst": lambda: rzw.REVERSE_Z_WORST,
     "decal_bias": lambda: db.DECAL_BIAS,
     "depth_setup": lambda: ds.DEPTH_SETUP,
+    "resolve_fragments": lambda: rf.RESOLVE_FRAGMENTS,  # 6.2: compressed samples (r482 T1)
+    "covered_counts": lambda: rc.COVERED_COUNTS,  # 6.3: the 8-bit sRGB resolve inverted (r482 T1)
     "edge_bits": lambda: eb.EDGE_BITS,
     "robust_fill": lambda: hf.ROBUST_FILL,
     "breaking_case": lambda: bc.BREAKING_CASE,

@@ -1,0 +1,282 @@
+"""Exercise ``covered_counts(code, fg_code, bg_code, S)`` (lesson 08 §6 with 12b, task 6.3).
+
+The inverse of an 8-bit sRGB resolve: a triangle of grey code ``fg_code`` covers k of a
+pixel's S samples on a background of code ``bg_code``; the resolve averages light and the
+screen shows the mean encoded and rounded to 8 bits. Given the code shown, which k could it
+have been? The student has to build the forward model (decode both codes, mix k/S of the
+light, encode, round to 0–255), see that shares are shares of light, not of codes, and that
+the 8-bit rounding (dark greys, a triangle close to its background) can give several k the
+same code: the answer is every k that gives it, sorted.
+
+Expected answers are an independent float64 computation (:func:`forward_code`); the tests
+compare every case's codes with the package's ``srgb8_codes`` (the 8-bit sRGB target of
+:mod:`teachraster.pipeline.blending.colour_blending`) and keep every case at least 1e-6 of a
+code away from a rounding tie, so that float64 cannot flip one.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from .answers import as_numbers, refuse_non_answers
+from .cases import SEED, fixed_and_drawn
+from .exercise import Exercise, Mistake, PackageAnswer
+from .package_answers import CHECKER_WORDS
+from .running import WrongAnswerType
+
+
+def _decode(c):
+    c = np.asarray(c, dtype=float)
+    return np.where(c <= 0.04045, c / 12.92, ((np.maximum(c, 0.04045) + 0.055) / 1.055) ** 2.4)
+
+
+def _encode(x):
+    x = np.asarray(x, dtype=float)
+    return np.where(
+        x <= 0.0031308, 12.92 * x, 1.055 * np.maximum(x, 0.0031308) ** (1 / 2.4) - 0.055
+    )
+
+
+def forward_value(k, fg_code, bg_code, s, decode=_decode, encode=_encode) -> float:
+    """255 × the encoded mean light of k samples of ``fg_code`` and S − k of ``bg_code``,
+    before rounding (the tests keep it off the ties)."""
+    light = (k * decode(fg_code / 255) + (s - k) * decode(bg_code / 255)) / s
+    return float(encode(light) * 255)
+
+
+def forward_code(k, fg_code, bg_code, s) -> int:
+    """The code the screen shows for k of S samples covered.
+
+    >>> [forward_code(k, 0, 255, 4) for k in range(5)]
+    [255, 225, 188, 137, 0]
+    """
+    return int(np.round(forward_value(k, fg_code, bg_code, s)))
+
+
+def tie_distance(k, fg_code, bg_code, s) -> float:
+    """How far 255 × the encoded mean lies from a rounding tie (x.5), in codes."""
+    v = forward_value(k, fg_code, bg_code, s)
+    return abs(v - np.floor(v) - 0.5)
+
+
+def expected_counts(code, fg_code, bg_code, s) -> tuple[int, ...]:
+    """Every k in 0..S whose resolve shows ``code``, sorted.
+
+    >>> expected_counts(188, 0, 255, 4), expected_counts(50, 50, 50, 2)
+    ((2,), (0, 1, 2))
+    """
+    return tuple(k for k in range(s + 1) if forward_code(k, fg_code, bg_code, s) == code)
+
+
+def case(label, k, fg, bg, s):
+    code = forward_code(k, fg, bg, s)
+    return (f"{label}, code {code}", (code, fg, bg, s), expected_counts(code, fg, bg, s))
+
+
+def _cases(rng, word):
+    # the labels say what is given, never k (the answer): "code 188" is added by case()
+    hard = [
+        ("black on white, S = 4", 2, 0, 255, 4),
+        ("black on white, S = 4", 1, 0, 255, 4),
+        ("white on black (the triangle lighter than its background), S = 4", 1, 255, 0, 4),
+        ("black on white, S = 4", 4, 0, 255, 4),
+        ("black on white, S = 4", 0, 0, 255, 4),
+        ("mid greys, S = 8", 3, 60, 200, 8),
+        ("a triangle of the background's own code, S = 4", 2, 128, 128, 4),
+        ("dark greys, S = 16", 2, 0, 14, 16),
+        ("dark greys, S = 16", 11, 0, 14, 16),
+        ("dark greys, S = 4", 1, 11, 14, 4),
+        ("a triangle one code from its background, S = 4", 1, 200, 201, 4),
+        ("light greys, S = 16", 7, 220, 255, 16),
+        ("black on white, S = 16", 15, 0, 255, 16),
+        ("1 sample", 1, 30, 240, 1),
+        ("2 samples, a dark triangle on a mid grey", 1, 20, 128, 2),
+    ]  # fmt: skip
+    out = [case(*c) for c in hard]
+    n = 0
+    while n < 10:
+        s = (2, 4, 8, 16)[n % 4]
+        fg, bg = (int(v) for v in rng.integers(0, 256, size=2))
+        k = int(rng.integers(0, s + 1))
+        if min(tie_distance(j, fg, bg, s) for j in range(s + 1)) > 1e-6:  # off the ties
+            n += 1
+            out.append(case(f"{word} {n}: S = {s}", k, fg, bg, s))
+    return out
+
+
+cases = fixed_and_drawn(_cases, SEED + 491)
+
+
+def as_counts(value) -> tuple:
+    """The possible k as a sorted tuple of numbers (a single number: that one k)."""
+    refuse_non_answers(value, "a list of the possible k")
+    if isinstance(value, (bool, np.bool_)):
+        raise WrongAnswerType(f"returned {value}, a bool: return the possible k as a list")
+    arr = as_numbers(np.atleast_1d(value) if np.ndim(value) == 0 else value, (-1,),
+                     "a list of the possible k (whole numbers 0 … S)", max_size=64)  # fmt: skip
+    return tuple(sorted(float(v) for v in arr))
+
+
+def same_counts(got, expected, args) -> bool:
+    return tuple(got) == tuple(float(k) for k in expected)
+
+
+def _ks(values) -> str:
+    return "[" + ", ".join(f"{v:g}" for v in values) + "]"
+
+
+def explain(args, expected, got) -> str:
+    code, fg, bg, s = args
+    return (
+        f"code {code} shown, a triangle of code {fg} on a background of code {bg}, S = {s}: "
+        f"the covered counts that show it are {_ks(expected)}; yours are {_ks(got)}"
+    )
+
+
+def _table(args) -> str:
+    code, fg, bg, s = args
+    return ", ".join(f"k = {k}: {forward_code(k, fg, bg, s)}" for k in range(s + 1))
+
+
+def rule(args, expected, got) -> str:
+    return (
+        "; k covered samples show round(255 · encode((k·decode(fg) + (S − k)·decode(bg)) / S)), "
+        f"codes / 255 decoded, light mixed, then encoded and rounded: here {_table(args)}; "
+        "the answer is every k whose code is the one shown"
+    )
+
+
+HINT = (
+    "; which code does the resolve show for each possible k, from the two codes given, and "
+    "which of those k show this one? Work this case through by hand"
+)
+RULE_TEXT = re.compile(
+    r"; k covered samples show round\(255 .*? the answer is every k whose code is the one shown"
+)
+
+
+def _matching(value_of):
+    def gives(code, fg, bg, s):
+        return tuple(float(k) for k in range(s + 1) if value_of(k, fg, bg, s) == code)
+
+    return gives
+
+
+def _in_codes(code, fg, bg, s):
+    return (float(np.round(s * (code - bg) / (fg - bg))),) if fg != bg else None
+
+
+def _light_rounded(code, fg, bg, s):
+    lf, lb = _decode(fg / 255), _decode(bg / 255)
+    return (float(np.round(s * (_decode(code / 255) - lb) / (lf - lb))),) if fg != bg else None
+
+
+def _light_no_255(code, fg, bg, s):
+    lf, lb = _decode(fg), _decode(bg)
+    return (float(np.round(s * (_decode(code) - lb) / (lf - lb))),) if fg != bg else None
+
+
+def _first(code, fg, bg, s):
+    ks = expected_counts(code, fg, bg, s)
+    return (float(ks[0]),) if len(ks) > 1 else None
+
+
+def _last(code, fg, bg, s):
+    ks = expected_counts(code, fg, bg, s)
+    return (float(ks[-1]),) if len(ks) > 1 else None
+
+
+def _some(code, fg, bg, s):
+    return () if len(expected_counts(code, fg, bg, s)) > 1 else None
+
+
+def _power(g):
+    return lambda k, fg, bg, s: int(
+        np.round(
+            forward_value(
+                k, fg, bg, s, lambda c: np.asarray(c) ** g, lambda x: np.asarray(x) ** (1 / g)
+            )
+        )
+    )
+
+
+def _several_words(args, expected, got) -> str:
+    return (
+        f": here {len(expected)} different k show code {args[0]} ({_table(args)}); the code "
+        "cannot tell them apart, so the answer is every one of them, not one (the nearest k "
+        "or the first found)"
+    )
+
+
+MISTAKES = [
+    Mistake("shares in codes", ": you took the share of the pixel in codes (8-bit sRGB numbers) "
+            "as if they were light: a screen's codes are encoded, and the resolve mixes light", gives=_in_codes),
+    Mistake("shares in codes", ": you averaged the codes themselves for each k: the resolve "
+            "mixes light, so decode the codes first",
+            gives=_matching(lambda k, fg, bg, s: int(np.round((k * fg + (s - k) * bg) / s)))),
+    Mistake("several k", _several_words, gives=_first),
+    Mistake("several k", _several_words, gives=_last),
+    Mistake("several k", _several_words, gives=_some),
+    Mistake("several k", _several_words, gives=_light_rounded),
+    Mistake("codes not / 255", ": you decoded the codes 0–255 as if they were in [0, 1] "
+            "(sRGB's curves take a code / 255)", gives=_light_no_255),
+    Mistake("code truncated", ": you truncated 255 · encode(…) to 8 bits (int, floor); the "
+            "target rounds to the nearest code",
+            gives=_matching(lambda k, fg, bg, s: int(forward_value(k, fg, bg, s)))),
+    *(Mistake("power curve", f": you decoded and encoded with a plain power {g}, not sRGB's "
+              "curves (srgb_to_linear, linear_to_srgb: a linear part near black)",
+              gives=_matching(_power(g))) for g in (2.2, 2.4)),
+    Mistake("encoded light not decoded", ": you mixed the light but compared it with the code "
+            "/ 255 undecoded (or encoded the mix twice)",
+            gives=_matching(lambda k, fg, bg, s: int(np.round(255 * _decode(
+                forward_value(k, fg, bg, s) / 255))))),
+    Mistake("every k", ": you returned every k from 0 to S; only the k whose resolve shows "
+            "this very code are possible", gives=lambda c, f, b, s: tuple(map(float, range(s + 1)))),
+    Mistake("uncovered counted", ": you counted the uncovered samples (S − k), the triangle "
+            "and the background swapped",
+            gives=lambda c, f, b, s: tuple(float(s - k) for k in expected_counts(c, f, b, s))),
+    Mistake("fraction, not count", ": you returned the fraction k / S; the task asks for the "
+            "number of samples k", gives=lambda c, f, b, s: tuple(
+                k / s for k in expected_counts(c, f, b, s))),
+    Mistake("k = S never tried", ": you tried k = 0 … S − 1 only (range(S)): all S samples "
+            "covered is possible too",
+            gives=lambda c, f, b, s: tuple(float(k) for k in expected_counts(c, f, b, s)
+                                           if k < s)),
+    Mistake("k = 0 never tried", ": you tried k = 1 … S only: no sample covered is possible "
+            "too", gives=lambda c, f, b, s: tuple(float(k) for k in expected_counts(c, f, b, s)
+                                                  if k > 0)),
+]  # fmt: skip
+
+
+def draw(ax, case_, got):
+    """The two codes and the code shown as framed grey swatches; S and the answers below."""
+    from matplotlib.patches import Rectangle
+
+    code, fg, bg, s = case_[1]
+    names = [f"triangle\n{fg}", f"background\n{bg}", f"shown\n{code}"]
+    artists = []
+    for j, c in enumerate((fg, bg, code)):
+        grey = str(c / 255)
+        artists.append(ax.add_patch(Rectangle((j * 1.4, 0), 1, 1, facecolor=grey,
+                                              edgecolor="0.4", linewidth=1)))  # fmt: skip
+    ax.set_xlim(-0.1, 4.1)
+    ax.set_ylim(1.05, -0.05)
+    ax.set_box_aspect(0.3)
+    ax.set_xticks([0.5, 1.9, 3.3], names, fontsize="x-small")
+    ax.set_yticks([])
+    words = f"S = {s} samples"
+    if got is not None:
+        words += f"; k: expected {_ks(case_[2])}, yours {_ks(got)}"
+    ax.set_xlabel(words, fontsize="x-small")
+    return artists
+
+
+COVERED_COUNTS = Exercise(
+    "covered_counts", cases, as_counts, same_counts, explain, rule, MISTAKES, draw=draw,
+    inputs_drawn=True, hints=((RULE_TEXT, HINT),), reference=("teachraster.exercises.resolve_codes",),
+    # the checker's own model handed in (it has no package function to list: r490)
+    answers=(PackageAnswer(expected_counts, words=CHECKER_WORDS),),
+    match=lambda got, answer, args: same_counts(got, answer, args),
+)  # fmt: skip

@@ -1,0 +1,303 @@
+"""Exercise ``resolve_fragments(fragments, sample_fragment, background)`` (lesson 08, task 6.2).
+
+Compressed multisample storage (AMD's EQAA, NVIDIA's CSAA, and the colour compression of
+every MSAA target since): a pixel of S samples stores F ≤ S distinct colours, its
+*fragments*, and for each sample the index of the fragment it shows, −1 where no triangle
+covered it. The resolve must still give what the pixel's whole area shows, each sample an
+equal share (lesson 08), but the student has to derive the weights: a fragment weighs by the
+samples pointing at it, not 1/F; a fragment no sample points at (overwritten by a later
+triangle, as the storage keeps it) weighs 0; an uncovered sample is the background, and
+``fragments[sample_fragment]`` silently takes the *last* fragment for −1 (NumPy's wrap).
+
+Expected answers are an independent float64 sum (:func:`expected_fragments`); the tests
+compare each with the package's :meth:`Frame.resolve` of the samples expanded
+(``fragments[i]`` where ``i >= 0``, NaN elsewhere).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..pipeline.render_triangles import Frame
+from .antialiasing import as_colour, draw_resolve_case, same_colour
+from .cases import SEED, fixed_and_drawn
+from .exercise import Exercise, Mistake, PackageAnswer
+from .scalars import vec
+
+
+def counts(sample_fragment, f: int) -> np.ndarray:
+    """How many samples point at each of the F fragments (0 for an orphan).
+
+    >>> counts([2, 0, 2, -1], 4).tolist()
+    [1, 0, 2, 0]
+    """
+    idx = np.asarray(sample_fragment)
+    return np.array([int((idx == j).sum()) for j in range(f)])
+
+
+def expected_fragments(fragments, sample_fragment, background) -> np.ndarray:
+    """The resolved colour: every sample an equal share, an uncovered one the background.
+
+    >>> expected_fragments([[1.0, 0, 0], [0, 0, 1.0]], [0, 0, 0, -1], [1.0, 1, 1]).tolist()
+    [1.0, 0.25, 0.25]
+    """
+    fr = np.asarray(fragments, dtype=float).reshape(-1, 3)
+    idx = np.asarray(sample_fragment)
+    c = counts(idx, len(fr))
+    uncovered = int((idx < 0).sum())
+    total = (c[:, None] * fr).sum(axis=0) + uncovered * np.asarray(background, dtype=float)
+    return total / len(idx)
+
+
+def expanded(fragments, sample_fragment) -> np.ndarray:
+    """The S samples' colours (NaN where uncovered), as an uncompressed MSAA target holds
+    them: the input of exercise 6.2's earlier resolve and of :meth:`Frame.resolve`."""
+    fr = np.asarray(fragments, dtype=float).reshape(-1, 3)
+    idx = np.asarray(sample_fragment)
+    out = np.full((len(idx), 3), np.nan)
+    out[idx >= 0] = fr[idx[idx >= 0]]
+    return out
+
+
+def package_resolve(fragments, sample_fragment, background) -> np.ndarray:
+    """The package's resolve of the expanded samples (the cross-check of the tests)."""
+    from types import SimpleNamespace
+
+    pixel = SimpleNamespace(sample_triangle_id=np.asarray(sample_fragment)[None, None])
+    colours = expanded(fragments, sample_fragment)[None, None]
+    return Frame.resolve(pixel, colours, np.asarray(background, dtype=float))[0, 0]
+
+
+def case(label, fragments, sample_fragment, background, dtype=float):
+    fr = np.asarray(fragments, dtype=dtype).reshape(-1, 3)
+    args = (fr, np.asarray(sample_fragment, dtype=np.int64), np.asarray(background, float))
+    return (label, args, expected_fragments(*args))
+
+
+RED, GREEN, BLUE = np.eye(3)
+WHITE, GREY = np.ones(3), np.array([0.2, 0.3, 0.4])
+
+
+def _cases(rng, word):
+    teal, orange = np.array([0.0, 0.5, 0.5]), np.array([1.0, 0.6, 0.0])
+    hard = [
+        ("4 samples, 2 fragments: 3 samples red, 1 blue", [RED, BLUE], [0, 0, 1, 0], GREY),
+        ("4 samples, 1 fragment on 1 sample, white background", [GREEN], [-1, 0, -1, -1], WHITE),
+        ("4 samples, an orphan fragment (overwritten): no sample points at blue",
+         [RED, BLUE, GREEN], [0, 2, 2, 0], WHITE),
+        ("4 samples, none covered, no fragment stored (F = 0)", np.zeros((0, 3)), [-1] * 4, GREY),
+        ("4 samples, none covered, an orphan fragment kept", [teal], [-1] * 4, GREY),
+        ("4 samples, F = S: every sample its own fragment", [RED, GREEN, BLUE, teal], [2, 0, 3, 1],
+         WHITE),
+        ("8 samples, 3 fragments listed out of sample order, 2 uncovered",
+         [orange, teal, BLUE], [2, 2, -1, 0, 2, 1, -1, 2], WHITE),
+        ("4 samples, the last fragment an orphan, 1 uncovered", [RED, GREEN, BLUE], [0, 1, -1, 1],
+         np.zeros(3)),
+        ("1 sample, covered", [GREEN], [0], WHITE),
+        ("1 sample, not covered, an orphan kept", [GREEN], [-1], GREY),
+        ("16 samples, 2 fragments 9 and 2, 5 uncovered", [RED, BLUE],
+         [0] * 9 + [1] * 2 + [-1] * 5, WHITE),
+        ("2 samples, 2 fragments, none uncovered", [RED, BLUE], [1, 0], GREY),
+    ]  # fmt: skip
+    out = [case(*c) for c in hard]
+    for n in range(10):
+        s = (2, 4, 8, 16)[n % 4]
+        f = int(rng.integers(1, s + 1))
+        idx = rng.integers(-1, f, size=s)
+        out.append(case(f"{word} {n + 1}: {s} samples, {f} fragments", rng.uniform(0, 1, (f, 3)),
+                        idx, rng.uniform(0, 1, 3)))  # fmt: skip
+    label = "8 samples, 3 fragments in float32 (as from imread), an orphan last"
+    out.append(case(label, rng.uniform(0, 1, (3, 3)), [0, 1, -1, 0, 1, 1, -1, 0],
+                    rng.uniform(0, 1, 3), np.float32))  # fmt: skip
+    return out
+
+
+cases = fixed_and_drawn(_cases, SEED + 490)
+
+
+# -- how the answer is explained --------------------------------------------------------------
+def explain(args, expected, got) -> str:
+    fr, idx, bg = args
+    return (
+        f"{len(fr)} fragment{'s' * (len(fr) != 1)} {_colours(fr)}, sample_fragment "
+        f"{idx.tolist()}, background {vec(bg)}: the pixel shows {vec(expected, got)}; yours "
+        f"is {vec(got, expected)}"
+    )
+
+
+def _colours(fr) -> str:
+    return "[" + ", ".join(vec(c) for c in fr) + "]" if len(fr) <= 4 else f"of shape {fr.shape}"
+
+
+RULE = (
+    "; each of the S samples stands for an equal share of the pixel: a fragment weighs by the "
+    "number of samples pointing at it (0 for one no sample points at), an uncovered sample "
+    "(−1) is the background, and the sum is divided by S"
+)
+HINT = (
+    "; how much of the pixel's area does each fragment stand for, and each sample marked "
+    "−1? Work this case's numbers through by hand, sample by sample"
+)
+
+
+def _sums(fr, idx, bg):
+    c = counts(idx, len(fr))
+    return c, (c[:, None] * fr).sum(axis=0), int((idx < 0).sum()), np.asarray(bg, float)
+
+
+def _wrapped(fr, idx, bg):
+    """``fragments[sample_fragment].mean(axis=0)``: −1 takes the last fragment."""
+    return fr[idx].mean(axis=0) if len(fr) else None
+
+
+def _wrap_words(args, expected, got) -> str:
+    fr, idx, _ = args
+    return (
+        f": your uncovered samples took the colour of the last fragment {vec(fr[-1])}: "
+        "fragments[-1] is the last row (NumPy's index −1 wraps around), not a missing colour; "
+        "where sample_fragment is −1 no fragment covers the sample"
+    )
+
+
+def _per_fragment(fr, idx, bg):
+    """One equal weight per stored fragment, the uncovered share the background's."""
+    _, _, u, b = _sums(fr, idx, bg)
+    if not len(fr):
+        return None
+    return (1 - u / len(idx)) * fr.mean(axis=0) + u / len(idx) * b
+
+
+def _per_used_fragment(fr, idx, bg):
+    _, _, u, b = _sums(fr, idx, bg)
+    used = np.unique(idx[idx >= 0])
+    if not len(used):
+        return None
+    return (1 - u / len(idx)) * fr[used].mean(axis=0) + u / len(idx) * b
+
+
+def _orphans_counted(fr, idx, bg):
+    """Every stored fragment counted, an orphan as one more sample."""
+    c, _, u, b = _sums(fr, idx, bg)
+    w = np.maximum(c, 1)
+    return ((w[:, None] * fr).sum(axis=0) + u * b) / (w.sum() + u)
+
+
+def _per_fragment_words(args, expected, got) -> str:
+    fr, idx, _ = args
+    c = counts(idx, len(fr))
+    return (
+        f": you gave each of the {len(fr)} fragments the same weight, but they cover "
+        f"{', '.join(str(int(n)) for n in c)} of the {len(idx)} samples: a fragment stands for "
+        "as much of the pixel as the samples that point at it"
+    )
+
+
+def _orphan_words(args, expected, got) -> str:
+    fr, idx, _ = args
+    orphans = [j for j, n in enumerate(counts(idx, len(fr))) if n == 0]
+    return (
+        f": you counted fragment {', '.join(map(str, orphans))} (no sample points at it: a triangle drawn later "
+        "covered all its samples, and the storage still holds it) as part of the pixel"
+    )
+
+
+def _covered_only(fr, idx, bg):
+    _, total, u, _ = _sums(fr, idx, bg)
+    return total / (len(idx) - u) if u < len(idx) else None
+
+
+def _uncovered_black(fr, idx, bg):
+    return _sums(fr, idx, bg)[1] / len(idx)
+
+
+def _by_f(fr, idx, bg):
+    _, total, u, b = _sums(fr, idx, bg)
+    return (total + u * b) / len(fr) if len(fr) else None
+
+
+def _s_minus_f(fr, idx, bg):
+    _, total, _, b = _sums(fr, idx, bg)
+    return (total + (len(idx) - len(fr)) * b) / len(idx)
+
+
+def _shifted(fr, idx, bg):
+    """``np.bincount(sample_fragment + 1)`` read one place off: fragment j weighed by the
+    samples of fragment j − 1 (the uncovered ones for fragment 0)."""
+    c = np.bincount(idx + 1, minlength=len(fr) + 1)
+    return ((c[: len(fr), None] * fr).sum(axis=0) + c[0] * np.asarray(bg, float)) / len(idx)
+
+
+def _by_sample_index(fr, idx, bg):
+    """6.2's earlier resolve pasted: fragment s taken as sample s's colour."""
+    if len(fr) != len(idx):
+        return None
+    return np.where(idx[:, None] >= 0, fr, bg).mean(axis=0)
+
+
+def _background_once(fr, idx, bg):
+    _, total, u, b = _sums(fr, idx, bg)
+    return (total + b) / (len(idx) - u + 1) if u else None
+
+
+MISTAKES = [
+    Mistake("index −1 wraps", _wrap_words, gives=_wrapped),
+    Mistake("one weight per fragment", _per_fragment_words, gives=_per_fragment),
+    Mistake("one weight per fragment", _per_fragment_words,
+            gives=lambda f, i, b: f.mean(axis=0) if len(f) else None),
+    Mistake("one weight per fragment", _per_fragment_words, gives=_per_used_fragment),
+    Mistake("orphans counted", _orphan_words, gives=_orphans_counted),
+    Mistake("fragment s as sample s", ": you took fragment s as the colour of sample s (6.2's "
+            "uncompressed resolve): sample s shows the fragment sample_fragment[s] names",
+            gives=_by_sample_index),
+    Mistake("uncovered left out", lambda a, e, g: f": you averaged the covered samples alone; "
+            f"the {int((a[1] < 0).sum())} uncovered sample(s) are part of the pixel too, and "
+            "show the background", gives=_covered_only),
+    Mistake("uncovered as black", lambda a, e, g: ": your uncovered samples count as black "
+            f"(0, 0, 0), not as the background {vec(a[2])}", gives=_uncovered_black),
+    Mistake("background once", ": the background counted once, as if one sample, however "
+            "many samples are uncovered", gives=_background_once),
+    Mistake("divided by F", lambda a, e, g: f": you divided by F = {len(a[0])}, the fragments "
+            f"stored, not by the S = {len(a[1])} samples", gives=_by_f),
+    Mistake("uncovered as S − F", lambda a, e, g: ": you took S − F = "
+            f"{len(a[1]) - len(a[0])} samples as uncovered; the uncovered samples are those "
+            f"marked −1 ({int((a[1] < 0).sum())} here): a fragment may stand for several samples",
+            gives=_s_minus_f),
+    Mistake("counts shifted", ": your weights are one fragment off: fragment j got the count "
+            "of fragment j − 1 (np.bincount(sample_fragment + 1) counts the −1 samples first)",
+            gives=_shifted),
+    Mistake("divided by 4", lambda a, e, g: f": you divided by 4 whatever S (here S = "
+            f"{len(a[1])})", gives=lambda f, i, b: (_sums(f, i, b)[1]
+                                                    + _sums(f, i, b)[2] * b) / 4),
+]  # fmt: skip
+
+
+def raised(args, error) -> str:
+    """Words for an exception the case's shape explains (F = 0, an orphan last)."""
+    fr, idx, _ = args
+    if len(fr) == 0:
+        return (" (no fragment is stored here: F = 0 and every sample is −1; indexing an "
+                "empty fragments array fails)")  # fmt: skip
+    if f"({len(idx)},1) ({len(fr)},3)" in error.replace(", ", ","):
+        return (f" (fragments has F = {len(fr)} rows and sample_fragment S = {len(idx)} "
+                "entries: sample s shows fragments[sample_fragment[s]], not fragments[s])")  # fmt: skip
+    if ("broadcast" in error or "mismatch" in error) and counts(idx, len(fr))[-1] == 0:
+        return (" (the last fragment is an orphan here: np.bincount(sample_fragment[... >= 0]) "
+                f"gives {max(int(idx.max()) + 1, 0)} counts, not F = {len(fr)}; "
+                "minlength=F)")  # fmt: skip
+    return ""
+
+
+def draw(ax, case_, got):
+    """The samples expanded to colours, as 6.2's earlier resolve drew them, and the answers."""
+    fr, idx, bg = case_[1]
+    return draw_resolve_case(ax, (case_[0], (expanded(fr, idx), idx, bg), case_[2]), got)
+
+
+RESOLVE_FRAGMENTS = Exercise(
+    "resolve_fragments", cases, as_colour, same_colour, explain,
+    lambda a, e, g: RULE, MISTAKES,
+    answers=(PackageAnswer(Frame.resolve),), draw=draw, inputs_drawn=True, example=2,
+    hints=((RULE, HINT),), once=((RULE, "; as said for the first failing case"),),
+    raised_words=raised,
+    reference=("teachraster.exercises.antialiasing", "teachraster.exercises.resolve_fragments"),
+)  # fmt: skip
