@@ -1469,11 +1469,12 @@ def doubled_area(xy) -> Fraction:
 
 def small_area_fits(xy, expected, got) -> bool:
     """r492 M1, M2, H12, H13: nothing covered on a row with covered points, of a triangle whose
-    area is small (doubled, under 1 px²) but not zero: zero area decided by a tolerance."""
+    area is tiny (doubled, under 1/16 px²: a row slip empties larger ones' rows too, such as
+    rows ⌊y1⌋ ≤ row < ⌊y3⌋ on a 0.28 px² one) but not zero: zero area by a tolerance."""
     pair = getattr(got, "pair", None)  # an empty pair, not a computed one the wrong way round
     if len(got) or not expected or pair is None or pair[1] < pair[0]:
         return False
-    return 0 < abs(doubled_area(xy)) < 1
+    return 0 < abs(doubled_area(xy)) < Fraction(1, 16)
 
 
 def small_area_words(xy, point: str = "centre") -> str:
