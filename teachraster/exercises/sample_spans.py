@@ -47,6 +47,7 @@ from .spans import (
     small_area_fits,
     small_area_words,
     span_cases,
+    span_words,
 )
 
 HALF = Fraction(1, 2)
@@ -863,12 +864,12 @@ def explain_sample_span(args, expected: frozenset, got: frozenset) -> str:
     vertices = ", ".join(f"({num(p[0])}, {num(p[1])})" for p in xy)
     if cross is None:
         return (f"{where}, which does not cross this {winding(xy)} triangle ({vertices}), so no "
-                f"sample is covered; yours covers {_columns_words(got)}")  # fmt: skip
+                f"sample is covered; yours covers {span_words(got, count=False)}")  # fmt: skip
     xl, xr = cross
     return (
         f"{where}, which crosses the triangle ({vertices}) from x_l = {_x_words(xl, sx)} to "
         f"x_r = {_x_words(xr, sx)}, so the covered samples col + sx are those of "
-        f"{_columns_words(expected)}; yours: {_columns_words(got)}"
+        f"{span_words(expected, count=False)}; yours: {span_words(got, count=False)}"
     )
 
 
@@ -890,16 +891,6 @@ def _rule(args, expected, got) -> str:
     )
 
 
-def _columns_words(cols) -> str:
-    if getattr(cols, "wide", False):
-        first, stop = cols.pair
-        return f"columns {first} to {stop - 1}"
-    if not cols:
-        return "none"
-    lo, hi = min(cols), max(cols)
-    return f"columns {lo} to {hi}" if hi > lo else f"column {lo} only"
-
-
 def _constant(value) -> str:
     """A span that never changes, in the student's terms (as 2.1's: not ``frozenset()``)."""
     if not value and not getattr(value, "wide", False):
@@ -911,7 +902,7 @@ def _constant(value) -> str:
             "in, or a `return` reached too early?"
         )
     return (
-        f"your function returns {_columns_words(value)} on every case, whatever its arguments: "
+        f"your function returns {span_words(value, count=False)} on every case, whatever its arguments: "
         "a placeholder left in, or a `return` reached too early?"
     )
 

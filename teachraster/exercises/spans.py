@@ -410,7 +410,7 @@ def _constant_span(value) -> str:
             "in, or a `return` reached too early?"
         )
     return (
-        f"your function returns {_span_words(value)} on every case, whatever its arguments: a "
+        f"your function returns {span_words(value)} on every case, whatever its arguments: a "
         "placeholder left in, or a `return` reached too early?"
     )
 
@@ -947,12 +947,12 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
     if cross is None and winding(xy) == "zero area":  # r355 M5: not "does not cross" a line on it
         return (
             f"the triangle ({_vertices(xy)}) has zero area (its vertices lie on one line), so "
-            f"row {row} covers no column; yours covers {_span_words(got)}"
+            f"row {row} covers no column; yours covers {span_words(got)}"
         )
     if cross is None:
         return (
             f"the centre line y = {num(y)} of row {row} does not cross this {winding(xy)} "
-            f"triangle ({_vertices(xy)}), so no column is covered; yours covers {_span_words(got)}"
+            f"triangle ({_vertices(xy)}), so no column is covered; yours covers {span_words(got)}"
         )
     xl, xr = cross
     kind = _horizontal_edge(xy, y)
@@ -962,12 +962,12 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
         return (
             f"the centre line y = {num(y)} runs along the triangle's horizontal {kind} edge "
             f"({_vertices(xy)}) from x = {_frac(xl)} to {_frac(xr)}{owns} so the covered "
-            f"centres are {_span_words(expected)}; yours: {_span_words(got)}"
+            f"centres are {span_words(expected)}; yours: {span_words(got)}"
         )
     return (
         f"the centre line y = {num(y)} crosses the triangle ({_vertices(xy)}) from x_l = "
         f"{_frac(xl)} to x_r = {_frac(xr)}, so the covered centres are "
-        f"{_span_words(expected)}; yours: {_span_words(got)}"
+        f"{span_words(expected)}; yours: {span_words(got)}"
     )
 
 
@@ -1563,10 +1563,16 @@ def _vertices(xy) -> str:
     return ", ".join(f"({num(p[0])}, {num(p[1])})" for p in xy)
 
 
-def _span_words(cols: frozenset) -> str:
+def span_words(cols: frozenset, count: bool = True) -> str:
+    """The columns in words (one function for 2.1's and 2.2's reports); ``count``: a wide span's
+    number of columns too.
+
+    >>> span_words(frozenset({3, 4, 5})), span_words(frozenset()), span_words(frozenset({2}))
+    ('columns 3 to 5', 'none', 'column 2 only')
+    """
     if getattr(cols, "wide", False):
         first, stop = cols.pair
-        return f"columns {first} to {stop - 1}, {stop - first} of them"
+        return f"columns {first} to {stop - 1}" + (f", {stop - first} of them" if count else "")
     if not cols:
         return "none"
     lo, hi = min(cols), max(cols)
