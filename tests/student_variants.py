@@ -8486,6 +8486,86 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R477.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R477.items()})
 
 
+# -- r492 (exercise 2, a fresh reader after r477): 2.1's edge slips at the sample, the offsets
+# read wrong, int(t) + 1, the bounding box, zero area decided by a tolerance (both tasks)
+def _r492_sided(long_left=False, given_order=False, tol=0, swap=False):
+    """Exact, x_l picked by the side test: the long edge always left, the side judged on the
+    vertices as given (not sorted), zero area by abs(side) < tol, or the pair swapped."""
+
+    def sample_span(xy, row, sample):
+        sx, sy = Fraction(float(sample[0])), Fraction(float(sample[1]))
+        u = [(Fraction(float(x)), Fraction(float(y))) for x, y in xy]
+        v = sorted(u, key=lambda p: p[1])
+        (x1, y1), (x2, y2), (x3, y3) = v
+        y = row + sy
+        side = edge_function(*(u if given_order else v))
+        if abs(side) <= tol or not y1 <= y < y3:
+            return 0, 0
+        if y1 == y2 == y:
+            lo, hi = sorted((x1, x2))
+        else:
+            at = lambda a, b: a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])  # noqa: E731
+            xa, xb = at(v[0], v[2]), at(v[0], v[1]) if y < y2 else at(v[1], v[2])
+            lo, hi = (xa, xb) if side > 0 or long_left else (xb, xa)
+        first, stop = math.ceil(lo - sx), math.ceil(hi - sx)
+        return (stop, first) if swap else (first, stop)
+
+    return sample_span
+
+
+def _r492_box(xy, row, sample):
+    """The bounding box's columns on every row whose sample line the triangle reaches."""
+    xs, ys = [float(p[0]) for p in xy], [float(p[1]) for p in xy]
+    if not min(ys) <= row + float(sample[1]) < max(ys):
+        return 0, 0
+    return math.ceil(min(xs) - float(sample[0])), math.ceil(max(xs) - float(sample[0]))
+
+
+_r492_tol = _r492_sided(tol=Fraction(1, 1000))
+R492 = {
+    "sample span, zero area by abs(side) < 1e-3": (
+        "sample_span", _r492_tol, 'did you decide "zero area" with a tolerance',
+        "zero area by a tolerance"),
+    "span, zero area by abs(side) < 1e-3 (r492)": (
+        "span", lambda xy, row: _r492_tol(xy, row, (0.5, 0.5)),
+        'did you decide "zero area" with a tolerance', "zero area by a tolerance"),
+    "sample span, the long edge always the left end": (
+        "sample_span", _r492_sided(long_left=True),
+        "you took the long edge's crossing (top vertex to bottom one) as the left end",
+        "long edge left"),
+    "sample span, (stop, first) returned": (
+        "sample_span", _r492_sided(swap=True),
+        "your pair comes back the wrong way round", "first and stop swapped"),
+    "sample span, the side judged on the vertices as given": (
+        "sample_span", _r492_sided(given_order=True),
+        "your x_l and x_r are swapped on this row, not on every row",
+        "x_l and x_r swapped on this row"),
+    "sample span, ⌈x − sy⌉": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sy),
+        "you took sy off the crossings (⌈x − sy⌉) where sx belongs", "sy in the rounding"),
+    "sample span, the offsets in 1/16 px among vertices in 1/256 px": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sx / 16, oy=lambda sx, sy: sy / 16),
+        "you read the offsets in 1/16 px (16·sx)", "offsets in 1/16 px"),
+    "sample span, the offsets in px among vertices in 1/256 px": (
+        "sample_span", _r471_with(ox=lambda sx, sy: sx / 256, oy=lambda sx, sy: sy / 256),
+        "left the offsets in px", "offsets in px, vertices in 1/256 px"),
+    "sample span, the ceiling as int(t) + 1": (
+        "sample_span", _r471_with(first=lambda t: int(t) + 1, stop=lambda t: int(t) + 1),
+        "you made the ceiling as int(t) + 1", "int(x − sx) + 1"),
+    "sample span, the bounding box": (
+        "sample_span", _r492_box, "your span is the triangle's bounding box", "bounding box"),
+}  # fmt: skip
+DIFFERENT.update({
+    "sample span, the exact difference made a float at the ceiling (r492)": (
+        "sample_span", _r471_with(first=lambda t: math.ceil(float(t)),
+                                  stop=lambda t: math.ceil(float(t)))),
+    "sample span, a numpy int64 pair (r492)": (
+        "sample_span", lambda xy, row, sample: np.array(_r477_right(xy, row, sample), np.int64)),
+})  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R492.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R492.items()})
+
+
 # -- r425 (exercise 5, a fresh reader): 5.2b graded to 1e-8 either way (a refined search lands
 # on float32's rounded maximum, over the limit), z_min on a crossing, misnamed and half-named
 # slips of 5.2b, 5.2 and 5.4.

@@ -36,7 +36,19 @@ from .cases import drawn_coverage, drawn_rng, winding
 from .drawing import note_beside
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .scalars import num
-from .spans import as_span, crossings, exact_columns, same_span, span_cases
+from .spans import MISTAKES as SPAN_WORDS
+from .spans import (
+    Span,
+    as_span,
+    crossings,
+    edge_variants,
+    exact_columns,
+    same_span,
+    small_area_fits,
+    small_area_words,
+    span_cases,
+    span_words,
+)
 
 HALF = Fraction(1, 2)
 
@@ -314,9 +326,89 @@ def _more_variants(xy, row: int, sample) -> dict[str, frozenset | None]:
         ),  # fmt: skip
     }
     out.update(_horizontal_slips(xy, row, sample))
+    out.update(_read_slips(xy, row, sample))
+    out.update(edge_slips(xy, row, sample))
     out.update({f"sample {k}": columns_at(xy, row, ox, oy) for k, (ox, oy) in enumerate(STANDARD_4)
                 if (ox, oy) != (sx, sy)})  # fmt: skip
     return out
+
+
+def _read_slips(xy, row: int, sample) -> dict[str, frozenset | None]:
+    """r492 H5-H9: the offsets read wrong (sy in the rounding; in 1/16 px or in px inside
+    1/256-px arithmetic), the ceiling made as int(t) + 1, the bounding box's columns."""
+    sx, sy = _fractions(sample)
+    out = {
+        "sy in the rounding": columns_at(xy, row, sy, sy),
+        "offsets in 1/16 px": columns_at(xy, row, sx / 16, sy / 16),
+        "offsets in px, vertices in 1/256 px": columns_at(xy, row, sx / 256, sy / 256),
+        "int(x − sx) + 1": _tie_rounded(xy, row, sample, _int_plus_1, _int_plus_1),
+    }
+    xs = [Fraction(float(p[0])) for p in xy]
+    ys = [Fraction(float(p[1])) for p in xy]
+    if min(ys) <= row + sy < max(ys):  # every row the triangle reaches, its box's columns
+        out["bounding box"] = frozenset(range(math.ceil(min(xs) - sx), math.ceil(max(xs) - sx)))
+    else:
+        out["bounding box"] = frozenset()
+    return out
+
+
+def _int_plus_1(t) -> int:
+    return int(t) + 1
+
+
+#: r492 H1-H4: 2.1's wrong choices of the bounding edges, said at the sample
+EDGE_SLIPS = ("long edge left", "no split", "no split, side test", "side x2 > x1", "side at row",
+              "strict", "lower denominator", "no area test")  # fmt: skip
+
+
+def edge_slips(xy, row: int, sample) -> dict[str, frozenset | None]:
+    """r492 H1-H4: 2.1's wrong choices of the edges at the sample (2.1's on the triangle moved
+    by (½ − sx, ½ − sy), whose centres are this triangle's samples), and the two ends returned
+    the wrong way round (on every row with a span; on all but a top edge's: a side test's).
+
+    >>> xy = np.array([[0.0, 0.0], [8.0, 4.0], [0.0, 8.0]])  # the middle vertex right
+    >>> edge_slips(xy, 5, (0.375, 0.125))["x_l and x_r swapped"].pair
+    (6, 0)
+    """
+    sx, sy = _fractions(sample)
+    moved = np.asarray(xy, dtype=float) + np.array([float(HALF - sx), float(HALF - sy)])
+    slips = edge_variants(moved, row)
+    out = {kind: slips.get(kind) for kind in EDGE_SLIPS}
+    right = sample_columns(xy, row, sample)
+    out["first and stop swapped"] = out["x_l and x_r swapped"] = right
+    if right:
+        lo, hi = min(right), max(right) + 1
+        out["first and stop swapped"] = _reversed(lo, hi)
+        if not _horizontal(xy, row + sy):  # (along a top edge no side test picks the ends)
+            out["x_l and x_r swapped"] = _reversed(lo, hi)
+    return out
+
+
+def _horizontal(xy, y: Fraction) -> bool:
+    """A horizontal edge lies on the line at y."""
+    return sum(Fraction(float(p[1])) == y for p in xy) >= 2
+
+
+def _reversed(lo: int, hi: int) -> Span:
+    """The pair (stop, first) of the columns lo ≤ col < hi: no column, told by its pair."""
+    out = Span()
+    out.pair = (hi, lo)
+    return out
+
+
+def _match(got, answer, args) -> bool:
+    """r492: a pair the wrong way round (stop < first) is told by its pair, not as "no
+    column" (any empty answer), as 2.1's (:func:`.spans.same_span` otherwise)."""
+    mine, theirs = getattr(got, "pair", None), getattr(answer, "pair", None)
+    wide = getattr(got, "wide", False) or getattr(answer, "wide", False)
+    if (
+        not wide
+        and mine is not None
+        and theirs is not None
+        and (mine[1] < mine[0] or theirs[1] < theirs[0])
+    ):
+        return mine == theirs
+    return same_span(got, answer)
 
 
 def _variants(xy, row: int, sample) -> dict[str, frozenset | None]:
@@ -465,7 +557,8 @@ MISTAKES = {
     "the top-left rule does not change at a sample (a right edge owns none of its points; the "
     "span stops before it; an edge test E ≥ 0 on all three edges, with no tie rule, covers it)",
     "left edge loses the sample": "you left out the sample that lies exactly on the left edge: "
-    "the top-left rule does not change at a sample (a left edge owns its points)",
+    "the top-left rule does not change at a sample (a left edge owns its points; an edge test "
+    "E > 0 on all three edges, with no tie rule, leaves it out, and a top edge's samples too)",
     "epsilon": lambda args, expected, got: _epsilon_words(args, expected, got),
     **{kind: _other_line_words(kind) for kind in ("split at y = row", "split at y = row + 1")},
     "rows at y = row": lambda args, expected, got: (
@@ -481,7 +574,8 @@ MISTAKES = {
     ),
     "top edge left out": "the sample line runs along the triangle's horizontal top edge, and "
     "you covered none of its samples: a top edge (the triangle below it) owns the samples on "
-    "it, at a sample as at a centre",
+    "it, at a sample as at a centre (rows taken as y1 < row + sy ≤ y3, the row test turned "
+    "round, leave that line out too)",
     "bottom edge owns its samples": "the sample line runs along the triangle's horizontal "
     "bottom edge, and you covered its samples: a bottom edge (the triangle above it) owns none "
     "(the row test y1 ≤ row + sy < y3 leaves that line out)",
@@ -553,7 +647,40 @@ MISTAKES = {
     "grid: the offsets are multiples of 1/16, but the vertices lie on the 1/256-px grid; keep "
     "them as they are (multiply by 256, or use fractions.Fraction)",
     **{f"sample {k}": _other_sample_words(k) for k in range(4)},
+    # r492: 2.1's words for its edge slips, the same at a sample
+    **{kind: SPAN_WORDS[kind] for kind in EDGE_SLIPS if kind != "strict"},
+    "strict": SPAN_WORDS["strict"].replace("centre line", "sample line"),
+    "first and stop swapped": SPAN_WORDS["first and stop swapped"],
+    "x_l and x_r swapped": SPAN_WORDS["x_l and x_r swapped"],
+    "sy in the rounding": lambda args, expected, got: (
+        f"you took sy off the crossings (⌈x − sy⌉) where sx belongs: the line is y = row + sy, "
+        f"but along it the sample lies at x = col + sx ({_sample_words(args)}), so the first "
+        "column is ⌈x_l − sx⌉"
+    ),
+    "offsets in 1/16 px": lambda args, expected, got: (
+        f"your samples lie at (col + sx/16, row + sy/16), near the pixel's top-left corner: you "
+        f"read the offsets in 1/16 px (16·sx) but used them beside vertices in 1/256 px; in "
+        f"1/256 px this sample, {_sample_words(args)}, is ({_steps(args, 0)}, {_steps(args, 1)})"
+    ),
+    "offsets in px, vertices in 1/256 px": lambda args, expected, got: (
+        f"your samples lie at (col + sx/256, row + sy/256), at the pixel's top-left corner: you "
+        f"scaled the vertices to 1/256 px but left the offsets in px; in 1/256 px this sample, "
+        f"{_sample_words(args)}, is ({_steps(args, 0)}, {_steps(args, 1)})"
+    ),
+    "int(x − sx) + 1": "you made the ceiling as int(t) + 1: where t is whole (a sample exactly "
+    "on a crossing) that is one too many, so a sample on the left edge is left out and one on "
+    "the right edge covered; and int() truncates toward zero, so left of x = 0 your ends are "
+    "one column further right still: the ceiling is math.ceil (or −(−n // d) in integers)",
+    "bounding box": "your span is the triangle's bounding box: ⌈min x − sx⌉ to ⌈max x − sx⌉ on "
+    "every row it reaches; a row's samples lie between the two edges' crossings with the "
+    "sample line, x_l and x_r (the long edge and a short one), which on most rows lie inside "
+    "the box",
 }
+
+
+def _steps(args, axis: int) -> int:
+    """The sample's offset along ``axis`` in 1/256-px steps."""
+    return round(256 * float(args[2][axis]))
 
 
 #: Words that give the rounding away, said as the hint until two different answers have failed
@@ -670,7 +797,8 @@ def _epsilon_words(args, expected, got) -> str:
 
 #: r477: kinds named only where they contradict no passing answer (a float crossing that lands
 #: a hair off a few left ties is no rule that leaves out every sample on a left edge)
-CONSISTENT = ("ties reversed at the sample", "right edge owns the sample",
+CONSISTENT = ("rows at the centre line", "split at the centre line",  # r492 M1, M2
+              "ties reversed at the sample", "right edge owns the sample",
               "left edge loses the sample",
               *list(MISTAKES)[list(MISTAKES).index("left edge loses the sample") + 1:])  # fmt: skip
 
@@ -693,8 +821,34 @@ def _outside_words(args, expected, got) -> str:
     )
 
 
+def _swapped_fits(args, expected, got) -> bool | None:
+    """r492 H4: this row's right pair the wrong way round, (stop, first) (x_l and x_r swapped
+    on some rows only: the side judged on the vertices as given, say)."""
+    pair = getattr(got, "pair", None)
+    if pair is None or not expected:
+        return None
+    return pair == (max(expected) + 1, min(expected))
+
+
+def _swapped_words(args, expected, got) -> str:
+    return (
+        f": your pair is this row's right one the wrong way round, {got.pair}: your x_l and x_r "
+        "are swapped on this row, not on every row. Which crossing is x_l depends on which "
+        "side of the long edge the middle vertex lies on, judged on the vertices sorted by y "
+        "(x2 against the long edge at y2), not on the vertices in the order given, whose "
+        "winding may be either"
+    )
+
+
 SYMPTOMS = (
     Mistake("row outside the triangle", _outside_words, fits=_outside_fits, symptom=True),
+    Mistake("x_l and x_r swapped on this row", _swapped_words, fits=_swapped_fits, symptom=True),
+    Mistake(
+        "zero area by a tolerance",
+        lambda args, expected, got: small_area_words(args[0], point="sample"),
+        fits=lambda args, expected, got: small_area_fits(args[0], expected, got),
+        symptom=True,
+    ),  # fmt: skip
     Mistake("float32", _float32_words, fits=_float32_fits, symptom=True, only_whole=True),
     Mistake("tie lands off", _tie_words, fits=_tie_lands_off, symptom=True, only_whole=True),
 )
@@ -710,12 +864,12 @@ def explain_sample_span(args, expected: frozenset, got: frozenset) -> str:
     vertices = ", ".join(f"({num(p[0])}, {num(p[1])})" for p in xy)
     if cross is None:
         return (f"{where}, which does not cross this {winding(xy)} triangle ({vertices}), so no "
-                f"sample is covered; yours covers {_columns_words(got)}")  # fmt: skip
+                f"sample is covered; yours covers {span_words(got, count=False)}")  # fmt: skip
     xl, xr = cross
     return (
         f"{where}, which crosses the triangle ({vertices}) from x_l = {_x_words(xl, sx)} to "
         f"x_r = {_x_words(xr, sx)}, so the covered samples col + sx are those of "
-        f"{_columns_words(expected)}; yours: {_columns_words(got)}"
+        f"{span_words(expected, count=False)}; yours: {span_words(got, count=False)}"
     )
 
 
@@ -737,16 +891,6 @@ def _rule(args, expected, got) -> str:
     )
 
 
-def _columns_words(cols) -> str:
-    if getattr(cols, "wide", False):
-        first, stop = cols.pair
-        return f"columns {first} to {stop - 1}"
-    if not cols:
-        return "none"
-    lo, hi = min(cols), max(cols)
-    return f"columns {lo} to {hi}" if hi > lo else f"column {lo} only"
-
-
 def _constant(value) -> str:
     """A span that never changes, in the student's terms (as 2.1's: not ``frozenset()``)."""
     if not value and not getattr(value, "wide", False):
@@ -758,7 +902,7 @@ def _constant(value) -> str:
             "in, or a `return` reached too early?"
         )
     return (
-        f"your function returns {_columns_words(value)} on every case, whatever its arguments: "
+        f"your function returns {span_words(value, count=False)} on every case, whatever its arguments: "
         "a placeholder left in, or a `return` reached too early?"
     )
 
@@ -838,7 +982,7 @@ SAMPLE_SPAN = Exercise(
     ),
     reference=("teachraster.exercises.spans", "teachraster.exercises.span_variants"),
     draw=draw_sample_span, constant=_constant, none_words=_sample_span_none,
-    match=lambda got, answer, args: same_span(got, answer),
+    match=_match,
     hints=HINTS,
     slow=" (a loop over every column of a wide triangle? One row's span is two crossings)",
 )  # fmt: skip

@@ -410,7 +410,7 @@ def _constant_span(value) -> str:
             "in, or a `return` reached too early?"
         )
     return (
-        f"your function returns {_span_words(value)} on every case, whatever its arguments: a "
+        f"your function returns {span_words(value)} on every case, whatever its arguments: a "
         "placeholder left in, or a `return` reached too early?"
     )
 
@@ -541,7 +541,7 @@ def _variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
         # r363 C3: a top edge left out, a bottom edge right, was named "y = row"
         top = _horizontal_edge(xy, y) == "top"
         out["no top edge"] = frozenset() if top else exact_columns(xy, row)
-    out.update(_edge_variants(xy, row))
+    out.update(edge_variants(xy, row))
     lines = {kind: row + dy for kind, dy in SHIFTS.items()}
     lines.update({kind: line(row) for kind, line in {**SCALED, **UNSCALED}.items()})  # r413 H6
     for kind, y_wrong in lines.items():  # the wrong line: the pixels' top, bottom, the next row
@@ -703,7 +703,7 @@ def _horizontal_reversed(xy, row, lo, hi) -> frozenset:
     return frozenset() if _horizontal_edge(xy, row + 0.5) == "top" else _columns(lo, hi)
 
 
-def _edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
+def edge_variants(xy: np.ndarray, row: int) -> dict[str, frozenset]:
     """Wrong choices of the edges that bound the row, each right wherever it changes nothing:
     crossings only strictly inside an edge, no area test, no split (the top-to-middle edge
     used below the middle vertex too), the long edge always the left end (r355 M4, M5 and
@@ -947,12 +947,12 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
     if cross is None and winding(xy) == "zero area":  # r355 M5: not "does not cross" a line on it
         return (
             f"the triangle ({_vertices(xy)}) has zero area (its vertices lie on one line), so "
-            f"row {row} covers no column; yours covers {_span_words(got)}"
+            f"row {row} covers no column; yours covers {span_words(got)}"
         )
     if cross is None:
         return (
             f"the centre line y = {num(y)} of row {row} does not cross this {winding(xy)} "
-            f"triangle ({_vertices(xy)}), so no column is covered; yours covers {_span_words(got)}"
+            f"triangle ({_vertices(xy)}), so no column is covered; yours covers {span_words(got)}"
         )
     xl, xr = cross
     kind = _horizontal_edge(xy, y)
@@ -962,12 +962,12 @@ def explain_span(args, expected: frozenset, got: frozenset) -> str:
         return (
             f"the centre line y = {num(y)} runs along the triangle's horizontal {kind} edge "
             f"({_vertices(xy)}) from x = {_frac(xl)} to {_frac(xr)}{owns} so the covered "
-            f"centres are {_span_words(expected)}; yours: {_span_words(got)}"
+            f"centres are {span_words(expected)}; yours: {span_words(got)}"
         )
     return (
         f"the centre line y = {num(y)} crosses the triangle ({_vertices(xy)}) from x_l = "
         f"{_frac(xl)} to x_r = {_frac(xr)}, so the covered centres are "
-        f"{_span_words(expected)}; yours: {_span_words(got)}"
+        f"{span_words(expected)}; yours: {span_words(got)}"
     )
 
 
@@ -1457,6 +1457,38 @@ def _int64_words(args, expected, got) -> str:
             "fractions.Fraction")  # fmt: skip
 
 
+def doubled_area(xy) -> Fraction:
+    """The edge function of the three vertices, exactly (twice the signed area, px²).
+
+    >>> doubled_area(np.array([[0.0, 0.0], [1 / 256, 0.0], [0.0, 1 / 256]]))
+    Fraction(1, 65536)
+    """
+    (x1, y1), (x2, y2), (x3, y3) = ((Fraction(float(a)), Fraction(float(b))) for a, b in xy)
+    return (x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1)
+
+
+def small_area_fits(xy, expected, got) -> bool:
+    """r492 M1, M2, H12, H13: nothing covered on a row with covered points, of a triangle whose
+    area is tiny (doubled, under 1/16 px²: a row slip empties larger ones' rows too, such as
+    rows ⌊y1⌋ ≤ row < ⌊y3⌋ on a 0.28 px² one) but not zero: zero area by a tolerance."""
+    pair = getattr(got, "pair", None)  # an empty pair, not a computed one the wrong way round
+    if len(got) or not expected or pair is None or pair[1] < pair[0]:
+        return False
+    return 0 < abs(doubled_area(xy)) < Fraction(1, 16)
+
+
+def small_area_words(xy, point: str = "centre") -> str:
+    """The words of :func:`small_area_fits`, with the triangle's doubled area."""
+    area = abs(doubled_area(xy))
+    return (
+        f"this triangle has an area, small but not zero: its doubled area (the edge function "
+        f"of its three vertices) is {area.numerator}/{area.denominator} px² = {float(area):.3g} "
+        f'px², yet you covered no {point}: did you decide "zero area" with a tolerance '
+        "(abs(side) < ε)? On the 1/256-px grid the smallest non-zero doubled area is 1/65536 "
+        "px²; a triangle covers nothing only when side == 0 exactly (compute it exactly)"
+    )
+
+
 def _zero_area_fits(args, expected, got) -> bool:
     """r424 H3: a zero-area triangle, and columns covered (whatever the ends: no area test)."""
     return winding(args[0]) == "zero area" and len(got) > 0
@@ -1492,6 +1524,13 @@ SYMPTOMS = (
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("top"), symptom=True),
     Mistake("horizontal edge", _horizontal_words, gives=_horizontal_gives("bottom"), symptom=True),
     Mistake("empty inside", _empty_inside_words, fits=_empty_inside_fits, symptom=True),
+    # r492 H13: after it (a row's slip that empties a small triangle's row is that symptom)
+    Mistake(
+        "zero area by a tolerance",
+        lambda args, expected, got: small_area_words(args[0]),
+        fits=lambda args, expected, got: small_area_fits(args[0], expected, got),
+        symptom=True,
+    ),  # fmt: skip
     # r372 M3: one end off the same way on every failing case, or not said
     Mistake("ends", _ends_words, fits=_ends_fits, symptom=True, parameter=_end_number),
 )
@@ -1524,10 +1563,16 @@ def _vertices(xy) -> str:
     return ", ".join(f"({num(p[0])}, {num(p[1])})" for p in xy)
 
 
-def _span_words(cols: frozenset) -> str:
+def span_words(cols: frozenset, count: bool = True) -> str:
+    """The columns in words (one function for 2.1's and 2.2's reports); ``count``: a wide span's
+    number of columns too.
+
+    >>> span_words(frozenset({3, 4, 5})), span_words(frozenset()), span_words(frozenset({2}))
+    ('columns 3 to 5', 'none', 'column 2 only')
+    """
     if getattr(cols, "wide", False):
         first, stop = cols.pair
-        return f"columns {first} to {stop - 1}, {stop - first} of them"
+        return f"columns {first} to {stop - 1}" + (f", {stop - first} of them" if count else "")
     if not cols:
         return "none"
     lo, hi = min(cols), max(cols)
