@@ -3350,8 +3350,10 @@ def test_05a_05b_no_answer_in_the_markdown_before_check():
     held_summary = next(
         t for t in a.values() if t.startswith("q_order.hold()") and "q_clip.hold()" in t
     )
-    assert "need not\ncut at all" not in a["c15b"] and "unless depth " in held_summary
-    assert '"clamping is on' in held_summary and a["c19"].startswith("## Summary")
+    # r498: the fact (depth clamping named), not where the literal's lines wrap
+    joined = re.sub(r'"\s*\n\s*f?"', "", held_summary)
+    assert "need not\ncut at all" not in a["c15b"] and "unless depth clamping is on" in joined
+    assert a["c19"].startswith("## Summary")
     assert "20 km" not in a["guard_md"] and "$x$ is huge" in a["guard_md"]
     cells = json.loads((NOTEBOOKS / "05b_depth_precision.ipynb").read_text())["cells"]
     ids = [c.get("id") for c in cells]
@@ -3847,7 +3849,9 @@ def test_05a_r321_gl_starts_with_the_test_off_and_depth_is_affine():
     assert "`glEnable(GL_DEPTH_TEST)`" in rule and "as if the depth buffer test always" in rule
     assert "interpolates window depth **affinely** in screen space" in rule
     assert "(Ritschel, *Interpolation and z-buffering*, eq. 12; Ek, *Triangles and" in rule
-    assert "|x_clip| ≤ w" in text["guard_fig"] and "|x| ≤ w" not in text["guard_fig"]
+    # r498 (r484 S-3): the fact, the image is |x_clip| <= w, not its spelling (mathtext now)
+    assert "$|x_\\\\mathrm{clip}| \\\\leq w$" in text["guard_fig"]  # a Python literal there
+    assert "|x| ≤ w" not in text["guard_fig"]
     assert "Then it measures what a cut does" in text["guard_gpus_md"]
 
 
