@@ -12354,15 +12354,15 @@ R494 = {
     "box, ⌈v − ½ − 0.004⌉ (r494 M1)": (
         "box", _r487_box(first=lambda v: math.ceil(v - 0.5 - 0.004),
                          end=lambda v: math.ceil(v - 0.5 - 0.004)),
-        "a tolerance subtracted before rounding up", "a tolerance on the bounds"),
+        "a tolerance ε subtracted before rounding", "a tolerance on the bounds"),
     "box, ⌈v − ½ − 0.05⌉ (r494 M2)": (
         "box", _r487_box(first=lambda v: math.ceil(v - 0.5 - 0.05),
                          end=lambda v: math.ceil(v - 0.5 - 0.05)),
-        "a tolerance subtracted before rounding up", "a tolerance on the bounds"),
+        "a tolerance ε subtracted before rounding", "a tolerance on the bounds"),
     "box, ⌈v − ½ + 0.05⌉ (r494)": (
         "box", _r487_box(first=lambda v: math.ceil(v - 0.5 + 0.05),
                          end=lambda v: math.ceil(v - 0.5 + 0.05)),
-        "a tolerance added before rounding up", "a tolerance on the bounds"),
+        "a tolerance ε added before rounding", "a tolerance on the bounds"),
     "box, a ceil made with int() (r494 H1)": (
         "box", _r487_box(first=_r494_int_ceil, end=_r494_int_ceil), "int() truncates toward 0",
         "first trunc, both axes"),

@@ -64,7 +64,7 @@ def test_a_tolerance_is_not_called_float32_and_the_check_stays_fast():
     text = str(ex.check("box", box))
     assert time.process_time() - start < 1.0
     assert "float32" not in text, text
-    assert text.count("a tolerance subtracted before rounding up") == 3, text
+    assert text.count("a tolerance ε subtracted before rounding") == 3, text
 
 
 def test_the_far_figure_has_no_axis_offset():

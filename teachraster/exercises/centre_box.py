@@ -494,14 +494,15 @@ def _tolerance_words(args, expected, got) -> str:
         where = (f"{num(float(abs(v - centre)))} px {'past' if sign < 0 else 'before'} the "
                  f"centre {num(float(centre))}" if v != centre else "exactly on a centre")  # fmt: skip
         parts.append(
-            f"your {end} {axis[:-1]} is one {'less' if sign < 0 else 'more'} than "
-            f"⌈{names[k]} − ½⌉: {names[k]} = {num(float(v))} lies {where}"
+            f"your {end} {axis[:-1]} is one {'less' if sign < 0 else 'more'} than the box's "
+            f"({names[k]} = {num(float(v))} lies {where})"
         )
-    op = "subtracted before" if sign < 0 else "added before"
+    op = "subtracted" if sign < 0 else "added"
+    # (no formula: the words that would give the box away are the task's, r487)
     return (
-        "; ".join(parts) + f": a tolerance {op} rounding up (⌈v − ½ {'−' if sign < 0 else '+'} "
-        "ε⌉ or the like)? The vertices lie exactly on the 1/256-px grid, so a bound is a tie "
-        "only when it lies exactly on a centre: round up exactly, with no ε"
+        "; ".join(parts) + f": a tolerance ε {op} before rounding? The vertices lie exactly on "
+        "the 1/256-px grid, so a bound is a tie only when it lies exactly on a centre, and a "
+        "bound a tiny step off a centre is no tie: compare exactly, with no ε"
     )
 
 
