@@ -13340,3 +13340,95 @@ def _r490_rows():
 
 
 _r490_rows()
+# == r494 (exercise 1, 1.2 box and 1.1 covers): a box empty where the triangle covers nothing
+# passed; a tolerance on the bounds was told float32 or ⌊x_max⌋; int() truncation, vertices cast
+# to int, the closed box clamped to n − 1, an empty axis as 0 got the rule alone; covers'
+# vertical-only left edges got "cannot tell" ==
+
+
+def _r494_empty_if_nothing_covered(xy, width, height):
+    """The right box, but (0, 0, 0, 0) where the triangle itself covers no centre of it."""
+    b = _r487_box()(xy, width, height)
+    cov = np.zeros((height, width), dtype=bool)
+    for i in range(b[0], b[1]):
+        for j in range(b[2], b[3]):
+            cov[i, j] = covers(xy, (j + 0.5, i + 0.5))
+    return b if cov.any() else (0, 0, 0, 0)
+
+
+def _r494_int_ceil(v):
+    """A ceil of v − ½ made by hand with int(), which truncates toward 0."""
+    t = v - 0.5
+    return int(t) if t == int(t) else int(t) + 1
+
+
+def _r494_vertices_int(xy, width, height):
+    return _r487_box()(np.asarray(xy).astype(np.int64) + 0.0, width, height)
+
+
+def _r494_no_empty(xy, width, height):
+    x0, y0 = np.min(xy, axis=0)
+    x1, y1 = np.max(xy, axis=0)
+    cols = [j for j in range(width) if x0 <= j + 0.5 < x1] or [0]
+    rows = [i for i in range(height) if y0 <= i + 0.5 < y1] or [0]
+    return rows[0], rows[-1] + 1, cols[0], cols[-1] + 1
+
+
+def _r494_covers_vertical_left(xy, p):
+    v = [tuple(float(c) for c in q) for q in xy]
+    if edge_function(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    if edge_function(v[0], v[1], v[2]) == 0:
+        return False
+    for a, b in ((v[0], v[1]), (v[1], v[2]), (v[2], v[0])):
+        e = edge_function(a, b, p)
+        tl = (b[0] == a[0] and b[1] < a[1]) or (b[1] == a[1] and b[0] > a[0])
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+DIFFERENT.update({
+    "box by round(v − 1e-9) (r494)": ("box", _r487_box(first=lambda v: round(v - 1e-9),
+                                                    end=lambda v: round(v - 1e-9))),
+    "box with the bounds clamped to [0, n] first (r494)": (
+        "box", lambda xy, w, h: _r487_box(clamp="none")(
+            np.clip(np.asarray(xy, float), 0, [w, h]), w, h)),
+    "box by ⌊v + ½ − 1e-6⌋ (r494)": ("box", _r487_box(first=lambda v: math.floor(v + 0.5 - 1e-6),
+                                                    end=lambda v: math.floor(v + 0.5 - 1e-6))),
+    "box returned as a numpy array (r494)": (
+        "box", lambda xy, w, h: np.array(_r487_box()(xy, w, h))),
+})  # fmt: skip
+R494 = {
+    "box, empty where the triangle covers no centre (r494 WP1)": (
+        "box", _r494_empty_if_nothing_covered, "your box is that of the pixels the triangle "
+        "covers", "box of the covered pixels"),
+    "box, ⌈v − ½ − 0.004⌉ (r494 M1)": (
+        "box", _r487_box(first=lambda v: math.ceil(v - 0.5 - 0.004),
+                         end=lambda v: math.ceil(v - 0.5 - 0.004)),
+        "a tolerance ε subtracted before rounding", "a tolerance on the bounds"),
+    "box, ⌈v − ½ − 0.05⌉ (r494 M2)": (
+        "box", _r487_box(first=lambda v: math.ceil(v - 0.5 - 0.05),
+                         end=lambda v: math.ceil(v - 0.5 - 0.05)),
+        "a tolerance ε subtracted before rounding", "a tolerance on the bounds"),
+    "box, ⌈v − ½ + 0.05⌉ (r494)": (
+        "box", _r487_box(first=lambda v: math.ceil(v - 0.5 + 0.05),
+                         end=lambda v: math.ceil(v - 0.5 + 0.05)),
+        "a tolerance ε added before rounding", "a tolerance on the bounds"),
+    "box, a ceil made with int() (r494 H1)": (
+        "box", _r487_box(first=_r494_int_ceil, end=_r494_int_ceil), "int() truncates toward 0",
+        "first trunc, both axes"),
+    "box, lesson 02's closed box clamped to n − 1 (r494 H2)": (
+        "box", _r487_box(end=lambda v: math.floor(v - 0.5) + 1, clamp="last"),
+        "and you clamped the ends to height − 1", "closed, clamped to n − 1"),
+    "box, vertices cast to int (r494 H3)": (
+        "box", _r494_vertices_int, "as if the vertices were rounded down to whole numbers",
+        "first floor and end floor"),
+    "box, an empty axis as row or column 0 (r494 H4)": (
+        "box", _r494_no_empty, "you return row 0 (column 0)", "an empty axis as row or column 0"),
+    "covers taking only vertical edges for left edges (r494 H8)": (
+        "covers", _r494_covers_vertical_left, "takes only a vertical edge for a left edge",
+        "vertical left edges only"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R494.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R494.items()})

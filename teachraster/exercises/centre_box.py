@@ -21,6 +21,7 @@ covers exactly the box's first and last rows and columns.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from fractions import Fraction
 from functools import cache
 
@@ -132,6 +133,13 @@ def _fixed() -> list:
               [[1.25, 0.75], [5.5, 3.25], [2.0, 6.5]], 9, 9),
         _case("no centre on a side, bounds past the half",
               [[1.75, 2.75], [7.25, 1.625], [4.0, 6.25]], 10, 9),
+        # r494 M1, M2: bounds 1/256 px off a centre, near the origin (float32 holds them): a
+        # tolerance subtracted (added) before rounding up moves them, float32 does not
+        _case("x_min and y_max 1/256 px past a centre, x_max 1/256 px before one",
+              [[2.50390625, 1.75], [7.49609375, 3.0], [4.0, 5.50390625]], 10, 8),
+        # r494 H1: x_min − ½ and y_min − ½ between −1 and 0, where int() truncates up
+        _case("x_min and y_min within half a pixel of the image's top-left corner",
+              [[-0.25, 0.25], [5.75, 2.0], [2.0, 4.75]], 8, 7),
         _case("whole-number bounds (a pixel's corners)",
               [[3.0, 2.0], [8.0, 4.0], [5.0, 7.0]], 11, 9),
         _case("centres on its left and top sides only (x_min = 3.5, y_min = 5.5)",
@@ -151,6 +159,9 @@ def _fixed() -> list:
               [[4.5, 1.0], [4.5390625, 6.0], [4.5, 7.25]], 9, 9),
         _case("a flat sliver with its top edge on centres",
               [[1.0, 3.5], [7.0, 3.5], [4.0, 3.53125]], 9, 6),
+        # r494 WP1: the triangle covers no centre, its bounding box holds 18
+        _case("a sliver covering no centre (its bounding box holds some)",
+              [[1.25, 1.0], [6.75, 3.75], [6.75, 3.8125]], 9, 7),
         _case("zero area (three vertices on a line)", [[1.0, 1.0], [3.0, 3.0], [5.0, 5.0]], 8, 8),
         _case("100 000 px from the origin in x, in a 100 008 × 6 image",
               [[far + 0.50390625, 1.25], [far + 3.75, 2.0], [far + 1.0, 3.75]], 100008, 6),
@@ -189,6 +200,7 @@ def _f(v: Fraction, form: str) -> int:
         "floor-half": lambda: math.floor(v - HALF),
         "ceil+half": lambda: math.ceil(v + HALF),
         "ceil-half-1": lambda: math.ceil(v - HALF) - 1,
+        "trunc": lambda: math.trunc(v - HALF) + (0 if (v - HALF).denominator == 1 else 1),
     }[form]()
 
 
@@ -210,6 +222,11 @@ FIRST = {
     "one before the first centre inside",
     "ceil+half": "your first {what} is ⌈{vmin} + ½⌉: pixel k's centre is at k + ½, and adding "
     "½ moves the bound the wrong way",
+    # r494 H1: a ceil made by hand, int(t) + 1, and int() truncates toward 0
+    "trunc": "your first {what} is int({vmin} − ½) + 1 (a ceil made with int()?): int() "
+    "truncates toward 0, not down, so where {vmin} − ½ lies between −1 and 0 it gives 1, not "
+    "⌈{vmin} − ½⌉ = 0, and the image's first {what} is left out (math.ceil rounds up for "
+    "negative numbers too)",
 }
 #: The end row's (column's) forms; the right one is "ceil-half".
 END = {
@@ -300,10 +317,8 @@ def _form_kinds() -> dict:
     for first in FIRST:
         for end in END:
             forms = {(a, "end"): end for a in AXES} | {(a, "first"): first for a in AXES}
-            words = (
-                PIXEL_BOX
-                if (first, end) == ("floor", "ceil")
-                else FIRST[first].format(**both) + "; and " + END[end].format(**both)
+            words = {("floor", "ceil"): PIXEL_BOX, ("floor", "floor"): FLOORED}.get(
+                (first, end), FIRST[first].format(**both) + "; and " + END[end].format(**both)
             )
             out[f"first {first} and end {end}"] = (forms, words)  # fmt: skip
     return out
@@ -313,6 +328,15 @@ PIXEL_BOX = (
     "your box is that of the pixels the bounding box touches (⌊min⌋ … ⌈max⌉), not of the "
     "pixels whose centre it holds: the first row or column whose centre (k + ½) lies at or "
     "past the minimum, and the end where the centres reach the maximum"
+)
+
+
+#: r494 H3: the vertices cast to int (``astype(int)``) before the right formula gives ⌊v⌋ at
+#: both ends.
+FLOORED = (
+    "your box runs from ⌊min⌋ to ⌊max⌋, as if the vertices were rounded down to whole numbers "
+    "first (int(), astype(int)?): they lie on the 1/256-px grid, keep them as they are; pixel "
+    "k's centre is at k + ½, so the first centre at or past a bound is not ⌊bound⌋"
 )
 
 
@@ -341,6 +365,10 @@ def _variants(xy, width, height) -> dict:
     out["closed, not clamped"] = _box_with(
         xy, width, height, {(a, "end"): "floor-half+1" for a in AXES}, clamp="none"
     )
+    out["closed, clamped to n − 1"] = _box_with(
+        xy, width, height, {(a, "end"): "floor-half+1" for a in AXES}, clamp="last"
+    )
+    out["an empty axis as row or column 0"] = _empty_axis_as_zero(centre_box(xy, width, height))
     out["axes swapped"] = _box_with(xy, width, height, swap_axes=True)
     r0, r1, c0, c1 = centre_box(xy, width, height)
     out["columns first"] = (c0, c1, r0, r1)
@@ -352,6 +380,14 @@ def _variants(xy, width, height) -> dict:
     out["min over axis 1"] = _from_bounds(a.min(axis=1)[:2], a.max(axis=1)[:2], width, height)
     out["two vertices"] = _from_bounds(a[:2].min(axis=0), a[:2].max(axis=0), width, height)
     return out
+
+
+def _empty_axis_as_zero(b):
+    """r494 H4: an axis with no centre replaced by row (column) 0, as ``[...] or [0]`` does."""
+    r0, r1, c0, c1 = b
+    rows = (0, 1) if r1 <= r0 else (r0, r1)
+    cols = (0, 1) if c1 <= c0 else (c0, c1)
+    return None if (*rows, *cols) == tuple(b) else (*rows, *cols)
 
 
 def _from_bounds(lo, hi, width, height):
@@ -371,6 +407,12 @@ WORDS |= {
     "closed, not clamped": END["floor-half+1"].format(what="row or column",
                                                       hi="right or bottom", vmax="x_max (y_max)")
     + "; and " + CLAMP_WORDS["none"],
+    "closed, clamped to n − 1": END["floor-half+1"].format(
+        what="row or column", hi="right or bottom", vmax="x_max (y_max)")
+    + "; and " + CLAMP_WORDS["last"],
+    "an empty axis as row or column 0": "where no row (or column) of the image holds a centre "
+    "of the box, you return row 0 (column 0), as `[...] or [0]` does: the box is empty there "
+    "(i0 == i1 or j0 == j1), and a fill over it must draw nothing",
     "axes swapped": "your rows come from the x coordinates and your columns from y: a row i "
     "is a horizontal line of pixels, its centres at y = i + ½",
     "columns first": "you returned (j0, j1, i0, i1), columns first: the task asks (i0, i1, j0, "
@@ -407,7 +449,65 @@ def _tri(xy):
     return Triangle(np.asarray(xy, dtype=float))
 
 
+#: r494 M1, M2: the largest tolerance named (ε = 0.004, 0.05 were told as float32 or ⌊x_max⌋).
+MAX_TOLERANCE = Fraction(1, 8)
+_ENDS = (("rows", "first"), ("rows", "end"), ("columns", "first"), ("columns", "end"))
+
+
+def _tolerance(args, expected, got):
+    """(sign, moved ends) of a box whose bounds were rounded up with a tolerance, ⌈v − ½ ∓ ε⌉
+    with 0 < ε ≤ 1/8, that gives ``got`` and not the box; None where none does."""
+    xy, w, h = args
+    x0, x1, y0, y1 = _bounds(xy)
+    ts = [t - HALF for t in (y0, y1, x0, x1)]
+    sizes = (h, h, w, w)
+    right = [_clamp(math.ceil(t), n) for t, n in zip(ts, sizes)]
+    tiny = Fraction(1, 2**20)
+    found = []
+    for sign in (-1, 1):
+        # −ε moves a bound ε or less past a centre; +ε one on a centre or less than ε before it
+        gaps = {t - math.floor(t) if sign < 0 else math.ceil(t) - t + tiny for t in ts}
+        for eps in sorted(g for g in gaps if 0 < g <= MAX_TOLERANCE + tiny):
+            ends = tuple(_clamp(math.ceil(t + sign * eps), n) for t, n in zip(ts, sizes))
+            moved = [k for k in range(4) if ends[k] != right[k]]
+            if moved and same_box(got, ends, args):
+                found.append((tuple(got) != ends, sign, moved))  # an exact match first
+    return min(found, key=lambda f: f[0])[1:] if found else None
+
+
+def _tolerance_fits(args, expected, got) -> bool | None:
+    if got is None or same_box(got, expected, args):
+        return None
+    return _tolerance(args, expected, got) is not None
+
+
+def _tolerance_words(args, expected, got) -> str:
+    sign, moved = _tolerance(args, expected, got)
+    x0, x1, y0, y1 = _bounds(args[0])
+    values = (y0, y1, x0, x1)
+    names = ("y_min", "y_max", "x_min", "x_max")
+    parts = []
+    for k in moved:
+        v = values[k]
+        axis, end = _ENDS[k]
+        centre = (math.floor(v - HALF) if sign < 0 else math.ceil(v - HALF)) + HALF
+        where = (f"{num(float(abs(v - centre)))} px {'past' if sign < 0 else 'before'} the "
+                 f"centre {num(float(centre))}" if v != centre else "exactly on a centre")  # fmt: skip
+        parts.append(
+            f"your {end} {axis[:-1]} is one {'less' if sign < 0 else 'more'} than the box's "
+            f"({names[k]} = {num(float(v))} lies {where})"
+        )
+    op = "subtracted" if sign < 0 else "added"
+    # (no formula: the words that would give the box away are the task's, r487)
+    return (
+        "; ".join(parts) + f": a tolerance ε {op} before rounding? The vertices lie exactly on "
+        "the 1/256-px grid, so a bound is a tie only when it lies exactly on a centre, and a "
+        "bound a tiny step off a centre is no tie: compare exactly, with no ε"
+    )
+
+
 SYMPTOMS = (
+    Mistake("a tolerance on the bounds", _tolerance_words, fits=_tolerance_fits),
     Mistake(
         "box of the covered pixels",
         "your box is that of the pixels the triangle covers (filled first?): the box comes "
@@ -476,6 +576,7 @@ def _constant(value) -> str:
 def draw_box(ax, case, got):
     """The image's border, the triangle, the centres near it, the box and the student's."""
     from matplotlib.patches import Rectangle
+    from matplotlib.ticker import MaxNLocator
 
     _, (xy, w, h), expected = case
     x0, x1 = float(xy[:, 0].min()), float(xy[:, 0].max())
@@ -510,15 +611,31 @@ def draw_box(ax, case, got):
     artists.append(ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1)))
     ax.set_xlim(lo_x, hi_x)
     ax.set_ylim(hi_y, lo_y)
+    # r494 FIG1: 100 000 px out, the axis offset "+1e5" overprinted the x label
+    ax.ticklabel_format(useOffset=False, style="plain")
+    ax.xaxis.set_major_locator(MaxNLocator(4, integer=True))
     ax.set_aspect("equal")
     ax.set_xlabel("x (px); dots: pixel centres", fontsize="small")
     ax.set_ylabel("y (px, down)", fontsize="small")
     return artists
 
 
+#: r494: kinds named only where they give every answer of the check: the first two vertices'
+#: box is the right one wherever the third vertex lies inside it, so on a few cases it fitted
+#: bounds taken from the leftmost and rightmost vertices' y by coincidence.
+WHOLE_ONLY = frozenset({"two vertices"})
+
+
+def _mistakes() -> list[Mistake]:
+    return [
+        replace(m, only_whole=True) if m.kind in WHOLE_ONLY else m
+        for m in variant_mistakes(_variants, WORDS, SYMPTOMS)
+    ]
+
+
 BOX = Exercise(
     "box", box_cases, as_box, same_box, explain_box, _rule,
-    variant_mistakes(_variants, WORDS, SYMPTOMS),
+    _mistakes(),
     answers=(
         PackageAnswer(rasterize),
         PackageAnswer(pixel_bbox, what="the closed box of centres (⌊max − ½⌋ + 1)"),

@@ -854,6 +854,18 @@ LEFT_RUNNING = (
 )
 
 
+def _owns_vertical_left(a, b) -> bool:
+    """r494 H8: only a vertical edge taken for a left edge (top edges right)."""
+    return bool((b[0] == a[0] and b[1] < a[1]) or (b[1] == a[1] and b[0] > a[0]))
+
+
+VERTICAL_LEFT = (
+    "your tie test takes only a vertical edge for a left edge: a left edge is any edge with "
+    "the interior to its right as seen on screen (y down), a sloped one too (work out which "
+    "way the sloped left edges of the positively oriented triangle run)"
+)
+
+
 def _tiny(xy) -> bool:
     return 0 < abs(cov.area2(xy)) < 1.0
 
@@ -965,6 +977,8 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
                 gives=lambda case: masks(cov.rule_images(case, owns=_owns_right_running), case)),
         Mistake("left-running edges own their ties", _in_covers(LEFT_RUNNING, not masked),
                 gives=lambda case: masks(cov.rule_images(case, owns=_owns_left_running), case)),
+        Mistake("vertical left edges only", _in_covers(VERTICAL_LEFT, not masked),
+                gives=lambda case: masks(cov.rule_images(case, owns=_owns_vertical_left), case)),
         # r347: named only where they give every failing case they must (a fit on one case
         # alone is a coincidence: a point sampled off the centre left a sliver empty)
         Mistake("zero area by a tolerance", _area_tolerance_words, fits=_area_tolerance_fits,
