@@ -13149,3 +13149,403 @@ DIFFERENT.update({
     'clipped colours edges then solve': ("clipped_colours", _r456("clipped_colours", _R489_C8_edges_then_solve)),
     'clipped colours qr': ("clipped_colours", _r456("clipped_colours", _R489_C9_qr)),
 })  # fmt: skip
+
+
+# -- r496: exercise 4 (4.3 equations named as used, colours of other vertices, NaN where a
+# weight is 0; 4.1 fragments sorted by depth); also the dead clip_near_colour rows removed.
+_R496_CLIPPED_COLOURS_DROP_Z = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 3]].T
+    B = p[:, [0, 1, 3]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_DROP_W = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 2]].T
+    B = p[:, [0, 1, 2]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_DROP_Y = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 2, 3]].T
+    B = p[:, [0, 2, 3]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_DROP_X = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [1, 2, 3]].T
+    B = p[:, [1, 2, 3]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_XYZ_SOLVE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 2]].T
+    B = p[:, [0, 1, 2]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.solve(A, B)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_XZW_SOLVE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 2, 3]].T
+    B = p[:, [0, 2, 3]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.solve(A, B)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_YZW_SOLVE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [1, 2, 3]].T
+    B = p[:, [1, 2, 3]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.solve(A, B)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_XYZ_LSTSQ = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    # first three equations are enough: x, y, z
+    lam = np.linalg.lstsq(v[:, :3].T, p[:, :3].T, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_KEPT_ELSE_XY1 = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    out = []
+    A = np.vstack([v[:, :2].T, np.ones(3)])
+    for q in p:
+        hit = [i for i in range(3) if np.allclose(q, v[i])]
+        out.append(c[hit[0]] if hit else np.linalg.lstsq(A, np.append(q[:2], 1), rcond=None)[0] @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_CLIPPED_COLOURS_NO_SUM_THEN_SCALED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    lam = np.linalg.lstsq(v.T, p.T, rcond=None)[0]
+    lam = lam / lam.sum(axis=0)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_REVERSED_COLOURS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.lstsq(A, B, rcond=None)[0].T @ c[::-1]
+"""
+
+_R496_CLIPPED_COLOURS_WEIGHTS_ROTATED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam[[1, 2, 0]].T @ c
+"""
+
+_R496_CLIPPED_COLOURS_FIRST_COLOUR_FOR_ALL = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    return np.tile(c[0], (len(p), 1))
+"""
+
+_R496_CLIPPED_COLOURS_PERSPECTIVE_NOT_RENORMALISED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    s = v[:, :2] / v[:, 3:]; q = p[:, :2] / p[:, 3:]
+    lam = np.linalg.solve(np.vstack([s.T, np.ones(3)]), np.vstack([q.T, np.ones(len(q))]))
+    lam = lam / v[:, 3:]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_UINT8 = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return (np.linalg.lstsq(A, B, rcond=None)[0].T @ c * 255).astype(np.uint8) / 255
+"""
+
+_R496_CLIPPED_COLOURS_UNSIGNED_AREA_SQRT = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    def area(a, b, q):
+        e1, e2 = b - a, q - a
+        return np.sqrt(e1 @ e1 * (e2 @ e2) - (e1 @ e2) ** 2)
+    tot = area(*v)
+    return np.array([np.array([area(q, v[1], v[2]), area(v[0], q, v[2]), area(v[0], v[1], q)]) / tot @ c for q in p]).reshape(-1, 3)
+"""
+
+_R496_CLIPPED_COLOURS_XYW_LSTSQ = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 3]].T
+    B = p[:, [0, 1, 3]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_T_FROM_Z___W_ON_THE_NEAREST_EDGE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    # kept vertex keeps its colour; else the edge nearest the point, t from z + w
+    d = v[:, 2] + v[:, 3]; out = []
+    for q in p:
+        i = int(np.argmin(np.abs(v - q).sum(1)))
+        if np.allclose(q, v[i], atol=1e-5): out.append(c[i]); continue
+        best = None
+        for a in range(3):
+            b = (a + 1) % 3
+            if d[a] == d[b]: continue
+            t = d[a] / (d[a] - d[b])
+            err = np.abs(v[a] + t * (v[b] - v[a]) - q).sum()
+            if best is None or err < best[0]: best = (err, c[a] + t * (c[b] - c[a]))
+        out.append(best[1])
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_DEPTH_PASSES_SORTED_BY_DEPTH = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d, w in sorted(zip(depths, writes)):
+        out.append(d < stored)
+        if d < stored and w: stored = d
+    return out
+"""
+
+_R496_DEPTH_PASSES_SORTED_BY_DEPTH__PUT_BACK = """
+def depth_passes(depths, writes):
+    order = sorted(range(len(depths)), key=lambda i: depths[i])
+    stored, out = np.inf, [None] * len(depths)
+    for i in order:
+        out[i] = depths[i] < stored
+        if out[i] and writes[i]: stored = depths[i]
+    return out
+"""
+
+_R496_DEPTH_PASSES_BUFFER_CLEARED_TO_1_0 = """
+def depth_passes(depths, writes):
+    stored, out = 1.0, []
+    for i, (d, w) in enumerate(zip(depths, writes)):
+        ok = d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+
+_R496_DEPTH_PASSES_WRITE_EVEN_WHEN_FAILED = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for i, (d, w) in enumerate(zip(depths, writes)):
+        ok = d < stored
+        out.append(ok)
+        if w: stored = d
+    return out
+"""
+
+_R496_CLIP_NEAR_CROSSING_BEFORE_ITS_KEPT_VERTEX = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+        if da >= 0: out.append(a)
+    return np.array(out).reshape(-1, 4)
+"""
+
+_R496_C_CLIPPED_COLOURS_UNSIGNED_AREAS_CLAMPED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    def area(a, b, q):
+        e1, e2 = b - a, q - a
+        return np.sqrt(max(0.0, e1 @ e1 * (e2 @ e2) - (e1 @ e2) ** 2))
+    tot = area(*v)
+    out = []
+    for q in p:
+        lam = np.array([area(q, v[1], v[2]), area(v[0], q, v[2]), area(v[0], v[1], q)]) / tot
+        out.append(lam / lam.sum() @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_C_CLIPPED_COLOURS_NORMAL_EQUATIONS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.solve(A.T @ A, A.T @ B).T @ c
+"""
+
+_R496_C_CLIPPED_COLOURS_WEIGHTED_SUM_ROW = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, 100 * np.ones(3)]); B = np.vstack([p.T, 100 * np.ones(len(p))])
+    return np.linalg.lstsq(A, B, rcond=None)[0].T @ c
+"""
+
+_R496_C_CLIPPED_COLOURS_LISTS = """
+def clipped_colours(v, colours, polygon):
+    A = np.vstack([np.array(v, dtype=float).T, [1, 1, 1]])
+    out = []
+    for q in polygon:
+        lam, *_ = np.linalg.lstsq(A, list(map(float, q)) + [1.0], rcond=None)
+        out.append([sum(lam[i] * colours[i][k] for i in range(3)) for k in range(3)])
+    return out
+"""
+
+_R496_C_CLIPPED_COLOURS_HOMOGENEOUS_XYW_ELSE_LSTSQ = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    out = []
+    A3 = v[:, [0, 1, 3]].T
+    A5 = np.vstack([v.T, np.ones(3)])
+    for q in p:
+        if abs(np.linalg.det(A3)) > 1e-9:
+            lam = np.linalg.solve(A3, q[[0, 1, 3]])   # homogeneous (perspective) weights
+        else:
+            lam = np.linalg.lstsq(A5, np.append(q, 1), rcond=None)[0]
+        out.append(lam @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_C_CLIPPED_COLOURS_GRAM_SCHMIDT = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    e1, e2 = v[1] - v[0], v[2] - v[0]
+    u1 = e1 / np.linalg.norm(e1)
+    f = e2 - (e2 @ u1) * u1; u2 = f / np.linalg.norm(f)
+    M = np.array([[e1 @ u1, e2 @ u1], [e1 @ u2, e2 @ u2]])
+    out = []
+    for q in p:
+        d = q - v[0]
+        a, b = np.linalg.solve(M, [d @ u1, d @ u2])
+        out.append((1 - a - b) * c[0] + a * c[1] + b * c[2])
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_C_CLIPPED_COLOURS_CLAMPED_RENORMALISED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.clip(np.linalg.lstsq(A, B, rcond=None)[0], 0, 1)
+    lam /= lam.sum(axis=0)
+    return (lam.T @ c).clip(0, 1)
+"""
+
+_R496_C_CLIPPED_COLOURS_BEST_3_OF_5_PER_POLYGON = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    # pick the 3 of 5 equations with the largest determinant, per polygon
+    import itertools
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    r = max(itertools.combinations(range(5), 3), key=lambda r: abs(np.linalg.det(A[list(r)])))
+    return np.linalg.solve(A[list(r)], B[list(r)]).T @ c
+"""
+
+_R496_C_DEPTH_PASSES_BUFFER_NONE = """
+def depth_passes(depths, writes):
+    stored, out = None, []
+    for i, (d, w) in enumerate(zip(depths, writes)):
+        ok = stored is None or d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+
+_R496_C_CLIP_NEAR_STRICT_CROSSING = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da > 0 and db < 0) or (da < 0 and db > 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+
+_R496_C_CLIP_NEAR_T_FROM_ABSOLUTE_DISTANCES = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            out.append(a + abs(da) / (abs(da) + abs(db) + 1e-300) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+
+R496 = {
+    'clipped colours drop z': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_Z), 'you solved for the weights from x, y, w and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours drop w': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_W), 'you solved for the weights from x, y, z and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours drop y': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_Y), 'you solved for the weights from x, z, w and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours drop x': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_X), 'you solved for the weights from y, z, w and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours xyz solve': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XYZ_SOLVE), 'leave the weights open: x, y, z, w (without Σλ = 1) (or any part of one of them)', 'raised'),
+    'clipped colours xzw solve': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XZW_SOLVE), 'x, z, w (without Σλ = 1) (or any part of one of them)', 'raised'),
+    'clipped colours yzw solve': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_YZW_SOLVE), 'leave the weights open: x, y, z, w (without Σλ = 1) (or any part of one of them)', 'raised'),
+    'clipped colours xyz lstsq': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XYZ_LSTSQ), 'x, y, z, w (without Σλ = 1) only (or some of these)', 'weights from some equations'),
+    'clipped colours kept else xy1': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_KEPT_ELSE_XY1), 'you solved for the weights from x, y and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours no sum then scaled': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_NO_SUM_THEN_SCALED), 'then scaled them to sum to 1', 'weights from some equations'),
+    'clipped colours reversed colours': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_REVERSED_COLOURS), '(the colours in reverse order?)', 'colours of other vertices'),
+    'clipped colours weights rotated': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_WEIGHTS_ROTATED), 'they took the wrong colours', 'colours of other vertices'),
+    'clipped colours first colour for all': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_FIRST_COLOUR_FOR_ALL), "every vertex of your polygon has v1's colour", 'one colour for all'),
+    'clipped colours perspective not renormalised': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_PERSPECTIVE_NOT_RENORMALISED), 'did not divide them by their sum again', 'weights divided by w, not renormalised'),
+    'clipped colours uint8': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_UINT8), 'cut down to 8 bits', 'colours cut to 8 bits'),
+    'clipped colours unsigned area sqrt': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_UNSIGNED_AREA_SQRT), 'NaN only where a weight is 0', 'NaN where a weight is 0'),
+    'clipped colours xyw lstsq': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XYW_LSTSQ), 'x, y, w (without Σλ = 1) only', 'weights from some equations'),
+    'clipped colours t from z + w on the nearest edge': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_T_FROM_Z___W_ON_THE_NEAREST_EDGE), 'it is on no edge of the triangle', 'new vertices on the near plane only'),
+    'depth passes sorted by depth': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_SORTED_BY_DEPTH), 'you sorted the fragments by depth', 'sorted by depth'),
+    'depth passes sorted by depth, put back': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_SORTED_BY_DEPTH__PUT_BACK), 'you sorted the fragments by depth', 'sorted by depth'),
+    'depth passes buffer cleared to 1.0': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_BUFFER_CLEARED_TO_1_0), 'you started the buffer at 1.0', 'cleared to 1'),
+    'depth passes write even when failed': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_WRITE_EVEN_WHEN_FAILED), 'a fragment that fails the test changes nothing', 'failed writes'),
+    'clip near crossing before its kept vertex': ('clip_near', _r456('clip_near', _R496_CLIP_NEAR_CROSSING_BEFORE_ITS_KEPT_VERTEX), 'each new vertex comes before the first vertex a', 'crossing before its edge'),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R496.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R496.items()})
+DIFFERENT.update({
+    'clipped colours unsigned areas clamped': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_UNSIGNED_AREAS_CLAMPED)),
+    'clipped colours normal equations': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_NORMAL_EQUATIONS)),
+    'clipped colours weighted sum row': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_WEIGHTED_SUM_ROW)),
+    'clipped colours lists': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_LISTS)),
+    'clipped colours homogeneous xyw else lstsq': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_HOMOGENEOUS_XYW_ELSE_LSTSQ)),
+    'clipped colours gram schmidt': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_GRAM_SCHMIDT)),
+    'clipped colours clamped renormalised': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_CLAMPED_RENORMALISED)),
+    'clipped colours best 3 of 5 per polygon': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_BEST_3_OF_5_PER_POLYGON)),
+    'depth passes buffer None': ('depth_passes', _r456('depth_passes', _R496_C_DEPTH_PASSES_BUFFER_NONE)),
+    'clip near strict crossing': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_STRICT_CROSSING)),
+    'clip near t from absolute distances': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_T_FROM_ABSOLUTE_DISTANCES)),
+})  # fmt: skip
