@@ -13120,6 +13120,20 @@ def clip_near(v):
     return np.array(out).reshape(-1, 4)
 """
 
+_R496_CLIP_W_EPS = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[3] - 1e-3, b[3] - 1e-3
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+
 R496 = {
     'clipped colours drop z': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_Z), 'you solved for the weights from x, y, w and Σλ = 1 only', 'weights from some equations'),
     'clipped colours drop w': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_W), 'you solved for the weights from x, y, z and Σλ = 1 only', 'weights from some equations'),
@@ -13144,6 +13158,7 @@ R496 = {
     'depth passes buffer cleared to 1.0': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_BUFFER_CLEARED_TO_1_0), 'you started the buffer at 1.0', 'cleared to 1'),
     'depth passes write even when failed': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_WRITE_EVEN_WHEN_FAILED), 'a fragment that fails the test changes nothing', 'failed writes'),
     'clip near crossing before its kept vertex': ('clip_near', _r456('clip_near', _R496_CLIP_NEAR_CROSSING_BEFORE_ITS_KEPT_VERTEX), 'each new vertex comes before the first vertex a', 'crossing before its edge'),
+    'clip near distance w − 0.001': ('clip_near', _r456('clip_near', _R496_CLIP_W_EPS), 'where the edges cross w = 0.001', 'a plane w = ε'),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R496.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R496.items()})
