@@ -2960,56 +2960,6 @@ def _clip_closed(v):
 DIFFERENT["clip as a closed polyline"] = ("clip_near", _clip_closed)
 
 
-# -- r310 M2: exercise 4.3, a colour through the clip ------------------------------------------
-def _colour_clip(t_colour):
-    """Positions clipped right; each new vertex's colour from ``t_colour(ca, cb, wa, wb, za,
-    zb, t)``."""
-
-    def clip_near_colour(v, colours):
-        v, c = np.asarray(v, dtype=float), np.asarray(colours, dtype=float)
-        out = []
-        for i in range(3):
-            j = (i + 1) % 3
-            da, db = v[i, 2] + v[i, 3], v[j, 2] + v[j, 3]
-            if da >= 0:
-                out.append(np.r_[v[i], c[i]])
-            if (da >= 0) != (db >= 0):
-                t = da / (da - db)
-                colour = t_colour(c[i], c[j], v[i, 3], v[j, 3], v[i, 2], v[j, 2], t)
-                out.append(np.r_[v[i] + t * (v[j] - v[i]), colour])
-        return np.array(out).reshape(-1, 7)
-
-    return clip_near_colour
-
-
-def _ndc_t(ca, cb, wa, wb, za, zb, t):
-    """The t where z/w reaches −1 between the divided ends."""
-    s = (za / wa + 1) / (za / wa - zb / wb)
-    return (1 - s) * ca + s * cb
-
-
-R310_COLOUR = {
-    "colour at the t found after the divide": (
-        "clip_near_colour", _colour_clip(_ndc_t), "found after the divide",
-        "colour after the divide"),
-    "colour perspective-corrected in clip space": (
-        "clip_near_colour",
-        _colour_clip(lambda ca, cb, wa, wb, za, zb, t:
-                     ((1 - t) * ca / wa + t * cb / wb) / ((1 - t) / wa + t / wb)),
-        "interpolated colour/w and 1/w", "colour perspective-corrected"),
-    "colour of the inside end": (
-        "clip_near_colour",
-        _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ca if za + wa >= 0 else cb),
-        "inside end", "colour of the inside end"),
-}  # fmt: skip
-WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R310_COLOUR.items()})
-KINDS.update({label: kind for label, (_, _, _, kind) in R310_COLOUR.items()})
-DIFFERENT["clip_near_colour with (1 − t)·a + t·b, a list"] = (
-    "clip_near_colour",
-    _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ((1 - t) * ca + t * cb).tolist()),
-)
-
-
 # == r309: exercise 11, a value read off the other frame of the pair; RGBA for (r, g, b); ====
 # frame 3's tie counted in the 16-bit buffer's steps (broken_frame_3_steps, M3)
 def _records(b, row, col, intended=False):
@@ -3100,20 +3050,6 @@ def _clip_tested_after_divide(v):
         return _clip_walk(np.asarray(v, dtype=float), lambda p: p[2] / p[3] + 1, _clip_t)
 
 
-def _perspective_at_ndc(ca, cb, wa, wb, za, zb, t):
-    """H5: lesson 04's weights at the fraction where z/w reaches −1 (right where every w > 0)."""
-    s = (za / wa + 1) / (za / wa - zb / wb)
-    return ((1 - s) * ca / wa + s * cb / wb) / ((1 - s) / wa + s / wb)
-
-
-_colour_right = _colour_clip(lambda ca, cb, wa, wb, za, zb, t: ca + t * (cb - ca))
-
-
-def _colour_first(v, colours):
-    p = _colour_right(v, colours)
-    return np.column_stack([p[:, 4:], p[:, :4]])
-
-
 R319 = {
     "clip with the vertices divided by w first": (
         "clip_near", _clip_divided_first, "you divided your vertices by w before clipping",
@@ -3121,19 +3057,6 @@ R319 = {
     "clip tested as z/w + 1 >= 0": (
         "clip_near", _clip_tested_after_divide, "you tested after the divide: v3",
         "after the divide"),
-    "colour columns first": (
-        "clip_near_colour", _colour_first, "your rows are (r, g, b, x, y, z, w)",
-        "colour columns first"),
-    "colours one vertex off": (
-        "clip_near_colour",
-        lambda v, c: _colour_right(v, np.roll(np.asarray(c), 1, axis=0)),
-        "a kept vertex keeps its own colour", "colours on the wrong vertex"),
-    "colours BGR": (
-        "clip_near_colour", lambda v, c: _colour_right(v, np.asarray(c)[:, ::-1]),
-        "your colours are reversed, (b, g, r)", "colours BGR"),
-    "colour perspective-corrected after the divide": (
-        "clip_near_colour", _colour_clip(_perspective_at_ndc), "whose w = 0",
-        "colour perspective-corrected after the divide"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R319.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R319.items()})
@@ -3770,32 +3693,6 @@ def _clip_open_keeping_v3(v):
     return np.array(out).reshape(-1, 4)
 
 
-def _colours_r357(change):
-    """4.3 right, then ``change(polygon, v, colours)``."""
-
-    def clip_near_colour(v, colours):
-        return change(_colour_right(v, colours), np.asarray(v, float), np.asarray(colours, float))
-
-    return clip_near_colour
-
-
-def _colours_over_w(v, colours):
-    """Misnamed 3: colour/w carried through the clip, never multiplied back."""
-    v = np.asarray(v, dtype=float)
-    return _colour_right(v, np.asarray(colours, dtype=float) / v[:, 3:4])
-
-
-def _clamped(p, v, c):
-    p[:, 4:] = np.minimum(p[:, 4:], 0.5)
-    return p
-
-
-def _by_row(p, v, c):
-    for k in range(len(p)):
-        p[k, 4:] = c[k % 3]
-    return p
-
-
 def _passes_shifted(depths, writes):
     """H1: each verdict appended before its fragment is tested (one too many at the start,
     the last one lost)."""
@@ -3835,15 +3732,6 @@ R357 = {
     "clip without the closing edge, v3 kept": (
         "clip_near", _clip_open_keeping_v3, "the crossing on v3→v1 is never added",
         "closing edge missing"),
-    "colours divided by w": (
-        "clip_near_colour", _colours_over_w, "divided the colours by w and never multiplied",
-        "colours divided by w"),
-    "colours clamped to 0.5": (
-        "clip_near_colour", _colours_r357(_clamped), "its own cut to at most 0.5",
-        "kept colour changed"),
-    "colours by output row": (
-        "clip_near_colour", _colours_r357(_by_row), "your row k takes the colour of row k",
-        "colours by row number"),
     "passes shifted by one fragment": (
         "depth_passes", _passes_shifted, "your verdicts are shifted by one fragment",
         "shifted by one"),
@@ -10684,31 +10572,6 @@ def _set(k, value):
     return change
 
 
-def _k448(*, eight_bits=False, mean=False):
-    """clip_near_colour with 4.3's colours rounded to 8 bits, or the triangle's mean colour at
-    each new vertex."""
-
-    def fn(v, colours):
-        p = np.column_stack([np.asarray(v, float), np.asarray(colours, float)])
-        out = []
-        for i in range(3):
-            a, b = p[i], p[(i + 1) % 3]
-            da, db = a[2] + a[3], b[2] + b[3]
-            if da >= 0:
-                out.append(a)
-            if (da >= 0) != (db >= 0):
-                c = a + da / (da - db) * (b - a)
-                if mean:
-                    c[4:] = p[:, 4:].mean(axis=0)
-                out.append(c)
-        out = np.array(out).reshape(-1, 7)
-        if eight_bits:
-            out[:, 4:] = np.round(out[:, 4:] * 255) / 255
-        return out
-
-    return fn
-
-
 R448 = {
     "passes only when nearer by a margin": (
         "depth_passes", _p448(margin=0.05), "a margin in your test", "margin"),
@@ -10732,11 +10595,6 @@ R448 = {
     "clip, new vertex nudged inside": (
         "clip_near", _c448(change=_set(2, lambda c: -c[3] + 1e-4)), "its t is right, and one "
         "component was changed after", "new vertex changed"),
-    "colours rounded to 8 bits": (
-        "clip_near_colour", _k448(eight_bits=True), "rounded to 8 bits", "colours rounded to 8 bits"),
-    "new vertices with the mean colour": (
-        "clip_near_colour", _k448(mean=True), "the mean of the triangle's three colours",
-        "mean colour"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R448.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R448.items()})
@@ -11277,139 +11135,6 @@ def clip_near(v):
         if (da >= 0) != (db >= 0): out.append((a16 + da / (da - db) * (b16 - a16)).astype(float))
     return np.array(out).reshape(-1, 4)
 """
-_R456_14 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float)
-    rows = []
-    for p in clip_near(v):
-        k = [i for i in range(3) if np.allclose(p, v[i])]
-        if k:
-            rows.append(np.r_[p, c[k[0]]]); continue
-        for i in range(3):   # which edge? the one whose ends straddle the plane and line up
-            a, b = v[i], v[(i + 1) % 3]
-            if (a[2] + a[3] >= 0) != (b[2] + b[3] >= 0):
-                t = (p[0] - a[0]) / (b[0] - a[0])
-                if np.allclose(a + t * (b - a), p):
-                    rows.append(np.r_[p, c[i] + t * (c[(i + 1) % 3] - c[i])]); break
-        else:
-            rows.append(np.r_[p, np.nan, np.nan, np.nan])
-    return np.array(rows).reshape(-1, 7)
-"""
-_R456_15 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(np.r_[a, c[i]])
-        if (da >= 0) != (db >= 0):
-            p = a + da / (da - db) * (b - a)
-            s = (p[2] - a[2]) / (b[2] - a[2])      # how far along, by z
-            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
-    return np.array(out).reshape(-1, 7)
-"""
-_R456_16 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(np.r_[a, c[i]])
-        if (da >= 0) != (db >= 0):
-            p = a + da / (da - db) * (b - a)
-            s = (p[3] - a[3]) / (b[3] - a[3])      # how far along, by w
-            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
-    return np.array(out).reshape(-1, 7)
-"""
-_R456_17 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(np.r_[a, c[i]])
-        if (da >= 0) != (db >= 0):
-            p = a + da / (da - db) * (b - a)
-            s = (p[1] - a[1]) / (b[1] - a[1])
-            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
-    return np.array(out).reshape(-1, 7)
-"""
-_R456_18 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float) * 255; out = []
-    for i in range(3):
-        a, b = np.r_[v[i], c[i]], np.r_[v[(i + 1) % 3], c[(i + 1) % 3]]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 7)
-"""
-_R456_19 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    p = np.column_stack([np.asarray(v, float), np.asarray(colours, np.float16)])
-    out = []
-    for i in range(3):
-        a, b = p[i], p[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0):
-            c = a + da / (da - db) * (b - a); c[4:] = c[4:].astype(np.float16); out.append(c)
-    return np.array(out).reshape(-1, 7)
-"""
 R456 = {
     'depth passes with a margin of 1e-9': ('depth_passes', _r456('depth_passes', _R456_0), 'a margin in your test', 'margin'),
     'depth passes with a relative margin of 1e-7': ('depth_passes', _r456('depth_passes', _R456_1), 'a margin in your test', 'margin'),
@@ -11425,12 +11150,6 @@ R456 = {
     'clip with a tolerance of 1e-7 relative to w': ('clip_near', _r456('clip_near', _R456_11), 'a tolerance in your inside test', 'keeps a vertex behind'),
     'clip with the crossing test d_a * d_b <= 0': ('clip_near', _r456('clip_near', _R456_12), 'lies in the near plane (z + w = 0 at both ends)', 'edge in the plane'),
     'clip computed in float16': ('clip_near', _r456('clip_near', _R456_13), 'every number in it is a 16-bit float', 'computed in 16 bits'),
-    'clip colour with t recovered from x': ('clip_near_colour', _r456('clip_near_colour', _R456_14), 'did you recover its fraction of the edge from one coordinate, such as (x − x_a)', 'colour t from one coordinate'),
-    'clip colour with t recovered from z': ('clip_near_colour', _r456('clip_near_colour', _R456_15), 'and z: did you recover its fraction', 'colour t from one coordinate'),
-    'clip colour with t recovered from w': ('clip_near_colour', _r456('clip_near_colour', _R456_16), 'did you recover its fraction of the edge from one coordinate', 'colour t from one coordinate'),
-    'clip colour with t recovered from y': ('clip_near_colour', _r456('clip_near_colour', _R456_17), 'have the same y: did you recover its fraction', 'colour t from one coordinate'),
-    'clip colour on a 0-255 scale': ('clip_near_colour', _r456('clip_near_colour', _R456_18), 'its own times 255', 'kept colour changed'),
-    'clip colour with colours in float16': ('clip_near_colour', _r456('clip_near_colour', _R456_19), 'rounded to a 16-bit float', 'kept colour changed'),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R456.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R456.items()})
@@ -11485,117 +11204,13 @@ def clip_near(v):
             t = abs(da) / (abs(da) + abs(db)); out.append(a + t * (b - a))
     return np.array(out, np.float32).reshape(-1, 4)
 """
-_R456_D5 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(np.r_[a, c[i]])
-        if (da >= 0) != (db >= 0):
-            p = a + da / (da - db) * (b - a)
-            s = np.linalg.norm(p - a) / np.linalg.norm(b - a)
-            out.append(np.r_[p, c[i] + s * (c[(i + 1) % 3] - c[i])])
-    return np.array(out).reshape(-1, 7)
-"""
-_R456_D6 = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float)
-    P = clip_near(v)
-    lam = np.linalg.lstsq(np.vstack([v.T, np.ones(3)]), np.vstack([P.T, np.ones(len(P))]), rcond=None)[0]
-    return np.column_stack([P, lam.T @ c]).reshape(-1, 7)
-"""
 DIFFERENT.update({
     'depth passes with min() at every write': ('depth_passes', _r456('depth_passes', _R456_D0)),
     'depth passes with np.minimum.accumulate': ('depth_passes', _r456('depth_passes', _R456_D1)),
     'depth passes from a NaN buffer, not (d >= stored)': ('depth_passes', _r456('depth_passes', _R456_D2)),
     'clip in the output-p form of Sutherland-Hodgman': ('clip_near', _r456('clip_near', _R456_D3)),
     'clip in float32 with t = |d_a|/(|d_a| + |d_b|)': ('clip_near', _r456('clip_near', _R456_D4)),
-    'clip colour with t from the 4-D length ratio': ('clip_near_colour', _r456('clip_near_colour', _R456_D5)),
-    'clip colour by least-squares barycentrics': ('clip_near_colour', _r456('clip_near_colour', _R456_D6)),
 })  # fmt: skip
-_R456_XY = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float); rows = []
-    for p in clip_near(v):
-        k = [i for i in range(3) if np.allclose(p, v[i])]
-        if k:
-            rows.append(np.r_[p, c[k[0]]]); continue
-        for i in range(3):
-            a, b = v[i], v[(i + 1) % 3]
-            if (a[2] + a[3] >= 0) != (b[2] + b[3] >= 0):
-                j = 0 if b[0] != a[0] else 1
-                t = (p[j] - a[j]) / (b[j] - a[j])
-                if np.allclose(a + t * (b - a), p):
-                    rows.append(np.r_[p, c[i] + t * (c[(i + 1) % 3] - c[i])]); break
-        else:
-            rows.append(np.r_[p, np.nan, np.nan, np.nan])
-    return np.array(rows).reshape(-1, 7)
-"""
-_R456_ROBUST = """
-def clip_near(v):
-    v = np.asarray(v, float); out = []
-    for i in range(3):
-        a, b = v[i], v[(i + 1) % 3]
-        da, db = a[2] + a[3], b[2] + b[3]
-        if da >= 0: out.append(a)
-        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
-    return np.array(out).reshape(-1, 4)
-
-def clip_near_colour(v, colours):
-    v = np.asarray(v, float); c = np.asarray(colours, float); rows = []
-    for p in clip_near(v):
-        k = [i for i in range(3) if (p == v[i]).all()]
-        if k:
-            rows.append(np.r_[p, c[k[0]]]); continue
-        best = None
-        for i in range(3):
-            a, b = v[i], v[(i + 1) % 3]
-            j = int(np.argmax(np.abs(b - a)))       # the coordinate that changes most
-            t = (p[j] - a[j]) / (b[j] - a[j])
-            err = np.abs(a + t * (b - a) - p).max()
-            if 0 <= t <= 1 and (best is None or err < best[0]):
-                best = (err, c[i] + t * (c[(i + 1) % 3] - c[i]))
-        rows.append(np.r_[p, best[1]])
-    return np.array(rows).reshape(-1, 7)
-"""
-WRONG["clip colour with t from x, else y"] = (
-    "clip_near_colour",
-    _r456("clip_near_colour", _R456_XY),
-    "did you recover its fraction of the edge from one coordinate",
-)
-KINDS["clip colour with t from x, else y"] = "colour t from one coordinate"
-DIFFERENT["clip colour with t from the coordinate that changes most"] = (
-    "clip_near_colour",
-    _r456("clip_near_colour", _R456_ROBUST),
-)
 _R456_STRICT = """
 def clip_near(v):
     v = np.asarray(v, float); out = []
@@ -12770,15 +12385,11 @@ WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R491.i
 KINDS.update({label: kind for label, (_, _, _, kind) in R491.items()})
 # -- r489: exercise 4.3 is clipped_colours(v, colours, polygon) (issue 30: the colours of a
 # clipper's polygon, recovered from its positions). The clip_near_colour variants above (r310,
-# r319, r357, r448, r456) tested the removed task (4.2's loop with colour columns): dropped
-# here; the causes that still apply are re-made below (after the divide, perspective
+# r319, r357, r448, r456) tested the removed task (4.2's loop with colour columns): deleted
+# (r496); the causes that still apply are re-made below (after the divide, perspective
 # weights, t from one coordinate or the other end, halfway, inside end, mean, by row, 8 bits,
 # float16, ×255).
-for _label in [k for k, (name, *_) in WRONG.items() if name == "clip_near_colour"]:
-    del WRONG[_label]
-    KINDS.pop(_label, None)
-for _label in [k for k, (name, *_) in DIFFERENT.items() if name == "clip_near_colour"]:
-    del DIFFERENT[_label]
+assert not [k for k, (name, *_) in {**WRONG, **DIFFERENT}.items() if name == "clip_near_colour"]
 
 
 _R489_C1_lstsq = """
@@ -13276,8 +12887,8 @@ R489 = {
     'clipped colours zeros': ("clipped_colours", _r456("clipped_colours", _R489_S1_zeros), 'every colour you return is (0, 0, 0)', 'colours all zero'),
     'clipped colours screen plain': ("clipped_colours", _r456("clipped_colours", _R489_W01_screen_plain), 'you took the weights of the projected point on the screen (x/w, y/w) as they are', 'colour from the screen'),
     'clipped colours screen perspective': ("clipped_colours", _r456("clipped_colours", _R489_W02_screen_perspective), "you went through the screen (x/w, y/w, lesson 04's weights?)", 'colour from the screen'),
-    'clipped colours xy1 solve': ("clipped_colours", _r456("clipped_colours", _R489_W03_xy1_solve), 'on this triangle x, y and Σλ = 1 leave the weights open', 'raised'),
-    'clipped colours xyw solve': ("clipped_colours", _r456("clipped_colours", _R489_W04_xyw_solve), 'on this triangle x, y, w (without Σλ = 1) leave the weights open', 'raised'),
+    'clipped colours xy1 solve': ("clipped_colours", _r456("clipped_colours", _R489_W03_xy1_solve), 'leave the weights open: x, y and Σλ = 1', 'raised'),
+    'clipped colours xyw solve': ("clipped_colours", _r456("clipped_colours", _R489_W04_xyw_solve), 'x, y, w (without Σλ = 1) (or any part of one of them)', 'raised'),
     'clipped colours zw1 solve': ("clipped_colours", _r456("clipped_colours", _R489_W05_zw1_solve), 'you solved for the weights from z, w and Σλ = 1 only', 'weights from some equations'),
     'clipped colours edges only nan': ("clipped_colours", _r456("clipped_colours", _R489_W06_edges_only_nan), 'it is on no edge of the triangle: two planes cut there', 'new vertices on the near plane only'),
     'clipped colours edges only zero': ("clipped_colours", _r456("clipped_colours", _R489_W07_edges_only_zero), 'it is on no edge of the triangle: two planes cut there', 'new vertices on the near plane only'),
@@ -13432,3 +13043,416 @@ R494 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R494.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R494.items()})
+# -- r496: exercise 4 (4.3 equations named as used, colours of other vertices, NaN where a
+# weight is 0; 4.1 fragments sorted by depth); also the dead clip_near_colour rows removed.
+_R496_CLIPPED_COLOURS_DROP_Z = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 3]].T
+    B = p[:, [0, 1, 3]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_DROP_W = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 2]].T
+    B = p[:, [0, 1, 2]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_DROP_Y = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 2, 3]].T
+    B = p[:, [0, 2, 3]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_DROP_X = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [1, 2, 3]].T
+    B = p[:, [1, 2, 3]].T
+    if True:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_XYZ_SOLVE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 2]].T
+    B = p[:, [0, 1, 2]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.solve(A, B)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_XZW_SOLVE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 2, 3]].T
+    B = p[:, [0, 2, 3]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.solve(A, B)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_YZW_SOLVE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [1, 2, 3]].T
+    B = p[:, [1, 2, 3]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.solve(A, B)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_XYZ_LSTSQ = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    # first three equations are enough: x, y, z
+    lam = np.linalg.lstsq(v[:, :3].T, p[:, :3].T, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_KEPT_ELSE_XY1 = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    out = []
+    A = np.vstack([v[:, :2].T, np.ones(3)])
+    for q in p:
+        hit = [i for i in range(3) if np.allclose(q, v[i])]
+        out.append(c[hit[0]] if hit else np.linalg.lstsq(A, np.append(q[:2], 1), rcond=None)[0] @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_CLIPPED_COLOURS_NO_SUM_THEN_SCALED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    lam = np.linalg.lstsq(v.T, p.T, rcond=None)[0]
+    lam = lam / lam.sum(axis=0)
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_REVERSED_COLOURS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.lstsq(A, B, rcond=None)[0].T @ c[::-1]
+"""
+
+_R496_CLIPPED_COLOURS_WEIGHTS_ROTATED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam[[1, 2, 0]].T @ c
+"""
+
+_R496_CLIPPED_COLOURS_FIRST_COLOUR_FOR_ALL = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    return np.tile(c[0], (len(p), 1))
+"""
+
+_R496_CLIPPED_COLOURS_PERSPECTIVE_NOT_RENORMALISED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    s = v[:, :2] / v[:, 3:]; q = p[:, :2] / p[:, 3:]
+    lam = np.linalg.solve(np.vstack([s.T, np.ones(3)]), np.vstack([q.T, np.ones(len(q))]))
+    lam = lam / v[:, 3:]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_UINT8 = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return (np.linalg.lstsq(A, B, rcond=None)[0].T @ c * 255).astype(np.uint8) / 255
+"""
+
+_R496_CLIPPED_COLOURS_UNSIGNED_AREA_SQRT = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    def area(a, b, q):
+        e1, e2 = b - a, q - a
+        return np.sqrt(e1 @ e1 * (e2 @ e2) - (e1 @ e2) ** 2)
+    tot = area(*v)
+    return np.array([np.array([area(q, v[1], v[2]), area(v[0], q, v[2]), area(v[0], v[1], q)]) / tot @ c for q in p]).reshape(-1, 3)
+"""
+
+_R496_CLIPPED_COLOURS_XYW_LSTSQ = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = v[:, [0, 1, 3]].T
+    B = p[:, [0, 1, 3]].T
+    if False:
+        A = np.vstack([A, np.ones(3)]); B = np.vstack([B, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0]
+    return lam.T @ c
+"""
+
+_R496_CLIPPED_COLOURS_T_FROM_Z___W_ON_THE_NEAREST_EDGE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    # kept vertex keeps its colour; else the edge nearest the point, t from z + w
+    d = v[:, 2] + v[:, 3]; out = []
+    for q in p:
+        i = int(np.argmin(np.abs(v - q).sum(1)))
+        if np.allclose(q, v[i], atol=1e-5): out.append(c[i]); continue
+        best = None
+        for a in range(3):
+            b = (a + 1) % 3
+            if d[a] == d[b]: continue
+            t = d[a] / (d[a] - d[b])
+            err = np.abs(v[a] + t * (v[b] - v[a]) - q).sum()
+            if best is None or err < best[0]: best = (err, c[a] + t * (c[b] - c[a]))
+        out.append(best[1])
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_DEPTH_PASSES_SORTED_BY_DEPTH = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d, w in sorted(zip(depths, writes)):
+        out.append(d < stored)
+        if d < stored and w: stored = d
+    return out
+"""
+
+_R496_DEPTH_PASSES_SORTED_BY_DEPTH__PUT_BACK = """
+def depth_passes(depths, writes):
+    order = sorted(range(len(depths)), key=lambda i: depths[i])
+    stored, out = np.inf, [None] * len(depths)
+    for i in order:
+        out[i] = depths[i] < stored
+        if out[i] and writes[i]: stored = depths[i]
+    return out
+"""
+
+_R496_DEPTH_PASSES_BUFFER_CLEARED_TO_1_0 = """
+def depth_passes(depths, writes):
+    stored, out = 1.0, []
+    for i, (d, w) in enumerate(zip(depths, writes)):
+        ok = d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+
+_R496_DEPTH_PASSES_WRITE_EVEN_WHEN_FAILED = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for i, (d, w) in enumerate(zip(depths, writes)):
+        ok = d < stored
+        out.append(ok)
+        if w: stored = d
+    return out
+"""
+
+_R496_CLIP_NEAR_CROSSING_BEFORE_ITS_KEPT_VERTEX = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float); out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if (da >= 0) != (db >= 0): out.append(a + da / (da - db) * (b - a))
+        if da >= 0: out.append(a)
+    return np.array(out).reshape(-1, 4)
+"""
+
+_R496_C_CLIPPED_COLOURS_UNSIGNED_AREAS_CLAMPED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    def area(a, b, q):
+        e1, e2 = b - a, q - a
+        return np.sqrt(max(0.0, e1 @ e1 * (e2 @ e2) - (e1 @ e2) ** 2))
+    tot = area(*v)
+    out = []
+    for q in p:
+        lam = np.array([area(q, v[1], v[2]), area(v[0], q, v[2]), area(v[0], v[1], q)]) / tot
+        out.append(lam / lam.sum() @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_C_CLIPPED_COLOURS_NORMAL_EQUATIONS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.solve(A.T @ A, A.T @ B).T @ c
+"""
+
+_R496_C_CLIPPED_COLOURS_WEIGHTED_SUM_ROW = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, 100 * np.ones(3)]); B = np.vstack([p.T, 100 * np.ones(len(p))])
+    return np.linalg.lstsq(A, B, rcond=None)[0].T @ c
+"""
+
+_R496_C_CLIPPED_COLOURS_LISTS = """
+def clipped_colours(v, colours, polygon):
+    A = np.vstack([np.array(v, dtype=float).T, [1, 1, 1]])
+    out = []
+    for q in polygon:
+        lam, *_ = np.linalg.lstsq(A, list(map(float, q)) + [1.0], rcond=None)
+        out.append([sum(lam[i] * colours[i][k] for i in range(3)) for k in range(3)])
+    return out
+"""
+
+_R496_C_CLIPPED_COLOURS_HOMOGENEOUS_XYW_ELSE_LSTSQ = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    out = []
+    A3 = v[:, [0, 1, 3]].T
+    A5 = np.vstack([v.T, np.ones(3)])
+    for q in p:
+        if abs(np.linalg.det(A3)) > 1e-9:
+            lam = np.linalg.solve(A3, q[[0, 1, 3]])   # homogeneous (perspective) weights
+        else:
+            lam = np.linalg.lstsq(A5, np.append(q, 1), rcond=None)[0]
+        out.append(lam @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_C_CLIPPED_COLOURS_GRAM_SCHMIDT = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    e1, e2 = v[1] - v[0], v[2] - v[0]
+    u1 = e1 / np.linalg.norm(e1)
+    f = e2 - (e2 @ u1) * u1; u2 = f / np.linalg.norm(f)
+    M = np.array([[e1 @ u1, e2 @ u1], [e1 @ u2, e2 @ u2]])
+    out = []
+    for q in p:
+        d = q - v[0]
+        a, b = np.linalg.solve(M, [d @ u1, d @ u2])
+        out.append((1 - a - b) * c[0] + a * c[1] + b * c[2])
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R496_C_CLIPPED_COLOURS_CLAMPED_RENORMALISED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.clip(np.linalg.lstsq(A, B, rcond=None)[0], 0, 1)
+    lam /= lam.sum(axis=0)
+    return (lam.T @ c).clip(0, 1)
+"""
+
+_R496_C_CLIPPED_COLOURS_BEST_3_OF_5_PER_POLYGON = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    # pick the 3 of 5 equations with the largest determinant, per polygon
+    import itertools
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    r = max(itertools.combinations(range(5), 3), key=lambda r: abs(np.linalg.det(A[list(r)])))
+    return np.linalg.solve(A[list(r)], B[list(r)]).T @ c
+"""
+
+_R496_C_DEPTH_PASSES_BUFFER_NONE = """
+def depth_passes(depths, writes):
+    stored, out = None, []
+    for i, (d, w) in enumerate(zip(depths, writes)):
+        ok = stored is None or d < stored
+        out.append(ok)
+        if ok and w: stored = d
+    return out
+"""
+
+_R496_C_CLIP_NEAR_STRICT_CROSSING = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da > 0 and db < 0) or (da < 0 and db > 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+
+_R496_C_CLIP_NEAR_T_FROM_ABSOLUTE_DISTANCES = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            out.append(a + abs(da) / (abs(da) + abs(db) + 1e-300) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+
+_R496_CLIP_W_EPS = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[3] - 1e-3, b[3] - 1e-3
+        if da >= 0:
+            out.append(a)
+        if (da >= 0) != (db >= 0):
+            out.append(a + da / (da - db) * (b - a))
+    return np.array(out).reshape(-1, 4)
+"""
+
+R496 = {
+    'clipped colours drop z': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_Z), 'you solved for the weights from x, y, w and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours drop w': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_W), 'you solved for the weights from x, y, z and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours drop y': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_Y), 'you solved for the weights from x, z, w and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours drop x': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_DROP_X), 'you solved for the weights from y, z, w and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours xyz solve': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XYZ_SOLVE), 'leave the weights open: x, y, z, w (without Σλ = 1) (or any part of one of them)', 'raised'),
+    'clipped colours xzw solve': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XZW_SOLVE), 'x, z, w (without Σλ = 1) (or any part of one of them)', 'raised'),
+    'clipped colours yzw solve': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_YZW_SOLVE), 'leave the weights open: x, y, z, w (without Σλ = 1) (or any part of one of them)', 'raised'),
+    'clipped colours xyz lstsq': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XYZ_LSTSQ), 'x, y, z, w (without Σλ = 1) only (or some of these)', 'weights from some equations'),
+    'clipped colours kept else xy1': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_KEPT_ELSE_XY1), 'you solved for the weights from x, y and Σλ = 1 only', 'weights from some equations'),
+    'clipped colours no sum then scaled': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_NO_SUM_THEN_SCALED), 'then scaled them to sum to 1', 'weights from some equations'),
+    'clipped colours reversed colours': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_REVERSED_COLOURS), '(the colours in reverse order?)', 'colours of other vertices'),
+    'clipped colours weights rotated': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_WEIGHTS_ROTATED), 'they took the wrong colours', 'colours of other vertices'),
+    'clipped colours first colour for all': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_FIRST_COLOUR_FOR_ALL), "every vertex of your polygon has v1's colour", 'one colour for all'),
+    'clipped colours perspective not renormalised': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_PERSPECTIVE_NOT_RENORMALISED), 'did not divide them by their sum again', 'weights divided by w, not renormalised'),
+    'clipped colours uint8': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_UINT8), 'cut down to 8 bits', 'colours cut to 8 bits'),
+    'clipped colours unsigned area sqrt': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_UNSIGNED_AREA_SQRT), 'NaN only where a weight is 0', 'NaN where a weight is 0'),
+    'clipped colours xyw lstsq': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_XYW_LSTSQ), 'x, y, w (without Σλ = 1) only', 'weights from some equations'),
+    'clipped colours t from z + w on the nearest edge': ('clipped_colours', _r456('clipped_colours', _R496_CLIPPED_COLOURS_T_FROM_Z___W_ON_THE_NEAREST_EDGE), 'it is on no edge of the triangle', 'new vertices on the near plane only'),
+    'depth passes sorted by depth': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_SORTED_BY_DEPTH), 'you sorted the fragments by depth', 'sorted by depth'),
+    'depth passes sorted by depth, put back': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_SORTED_BY_DEPTH__PUT_BACK), 'you sorted the fragments by depth', 'sorted by depth'),
+    'depth passes buffer cleared to 1.0': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_BUFFER_CLEARED_TO_1_0), 'you started the buffer at 1.0', 'cleared to 1'),
+    'depth passes write even when failed': ('depth_passes', _r456('depth_passes', _R496_DEPTH_PASSES_WRITE_EVEN_WHEN_FAILED), 'a fragment that fails the test changes nothing', 'failed writes'),
+    'clip near crossing before its kept vertex': ('clip_near', _r456('clip_near', _R496_CLIP_NEAR_CROSSING_BEFORE_ITS_KEPT_VERTEX), 'each new vertex comes before the first vertex a', 'crossing before its edge'),
+    'clip near distance w − 0.001': ('clip_near', _r456('clip_near', _R496_CLIP_W_EPS), 'where the edges cross w = 0.001', 'a plane w = ε'),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R496.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R496.items()})
+DIFFERENT.update({
+    'clipped colours unsigned areas clamped': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_UNSIGNED_AREAS_CLAMPED)),
+    'clipped colours normal equations': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_NORMAL_EQUATIONS)),
+    'clipped colours weighted sum row': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_WEIGHTED_SUM_ROW)),
+    'clipped colours lists': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_LISTS)),
+    'clipped colours homogeneous xyw else lstsq': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_HOMOGENEOUS_XYW_ELSE_LSTSQ)),
+    'clipped colours gram schmidt': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_GRAM_SCHMIDT)),
+    'clipped colours clamped renormalised': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_CLAMPED_RENORMALISED)),
+    'clipped colours best 3 of 5 per polygon': ('clipped_colours', _r456('clipped_colours', _R496_C_CLIPPED_COLOURS_BEST_3_OF_5_PER_POLYGON)),
+    'depth passes buffer None': ('depth_passes', _r456('depth_passes', _R496_C_DEPTH_PASSES_BUFFER_NONE)),
+    'clip near strict crossing': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_STRICT_CROSSING)),
+    'clip near t from absolute distances': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_T_FROM_ABSOLUTE_DISTANCES)),
+})  # fmt: skip

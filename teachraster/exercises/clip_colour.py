@@ -22,6 +22,8 @@ Sutherland-Hodgman carrying the colours as attributes
 
 from __future__ import annotations
 
+from itertools import combinations
+
 import numpy as np
 
 from ..pipeline.geometry.clipping import clip_polygon
@@ -248,8 +250,8 @@ def _via_screen(args, expected, got) -> str | None:
     bad = _bad_rows(expected, g)
     if not bad or not _screen_fails(args, expected, got):
         return None
-    if not np.isfinite(g[bad]).all():
-        return "corrected"
+    if not np.isfinite(g[bad]).all():  # the screen gives NaN at every vertex, not at some
+        return "corrected" if (~np.isfinite(g)).any(axis=1).all() else None
     lam = _screen(v, poly, strict=False)
     if lam is None or not np.isfinite(lam).all():
         return None
@@ -278,14 +280,23 @@ def _via_screen_words(args, expected, got) -> str:
     )
 
 
-#: The equations a student may solve the weights from: (coordinates, with Σλ = 1?), and how
-#: the words say them.
-_SUBSETS = [((0, 1), True), ((0, 1, 2, 3), False), ((0, 1, 3), False), ((2, 3), True),
-            ((0, 3), True), ((1, 3), True), ((0, 2), True), ((1, 2), True)]  # fmt: skip
+#: The equations a student may solve the weights from: (coordinates, with Σλ = 1?), every set
+#: of three or four of the five (r496 M1–M8: a slip that drops one equation, "z is only depth",
+#: was named by a smaller set it does not use), largest first.
+_SUBSETS = sorted(
+    [(cols, one) for n in (3, 4) for one in (True, False)
+     for cols in combinations(range(4), n - one)],
+    key=lambda s: -(len(s[0]) + s[1]),
+)  # fmt: skip
 
 
 def _subset_words(cols, with_one) -> str:
     return ", ".join("xyzw"[k] for k in cols) + (" and Σλ = 1" if with_one else " (without Σλ = 1)")
+
+
+def _left_out(cols, with_one) -> str:
+    out = ["xyzw"[k] for k in range(4) if k not in cols] + ([] if with_one else ["Σλ = 1"])
+    return " and ".join(out)
 
 
 def _matrix(rows, cols, with_one):
@@ -299,9 +310,18 @@ def _open_subsets(v) -> list:
             if np.linalg.matrix_rank(_matrix(v, c, o), tol=1e-9) < 3]  # fmt: skip
 
 
-def _from_subset(v, c, poly, cols, with_one, solve):
+def _largest_open(v) -> list:
+    """The open subsets no larger open subset holds (a part of an open set is open too)."""
+    sets = _open_subsets(v)
+    return [(c, o) for c, o in sets
+            if not any((set(c) < set(c2) and o <= o2) or (set(c) == set(c2) and o < o2)
+                       for c2, o2 in sets)]  # fmt: skip
+
+
+def _from_subset(v, c, poly, cols, with_one, solve, scaled=False):
     """The colours from the weights solved from these equations only (``solve``: numpy's
-    solve where square, else least squares), None where that raises."""
+    solve where square, else least squares; ``scaled``: then divided by their sum, r496 H1),
+    None where that raises."""
     a, b = _matrix(v, cols, with_one), _matrix(poly, cols, with_one)
     try:
         with np.errstate(all="ignore"):
@@ -309,59 +329,72 @@ def _from_subset(v, c, poly, cols, with_one, solve):
                    np.linalg.lstsq(a, b, rcond=None)[0])  # fmt: skip
     except np.linalg.LinAlgError:
         return None
+    if scaled:
+        with np.errstate(all="ignore"):
+            lam = lam / lam.sum(axis=0)
     return lam.T @ np.asarray(c, float)
 
 
 def _undetermined(args, expected, got) -> tuple | None:
-    """The open subset whose weights give ``got`` (or NaN/inf, or wild numbers), or None."""
+    """The largest open subset whose weights give ``got`` at its wrong rows (or NaN/inf, or
+    wild numbers), or None."""
     v, c, poly = args
     g = np.asarray(got, float).reshape(-1, 3)
     bad = _bad_rows(expected, g)
     if not bad or _screen_fails(args, expected, got) and not np.isfinite(g[bad]).all():
         return None
     for cols, one in _open_subsets(v):
-        for solve in (True, False):
-            mine = _from_subset(v, c, poly, cols, one, solve)
-            if mine is not None and mine.shape == g.shape and all_close(g, mine, COLOUR_TOL):
-                return cols, one
-    wild = not np.isfinite(g[bad]).all() or np.abs(g[bad]).max() > 1e3
-    return _open_subsets(v)[0] if wild and _open_subsets(v) else None
+        for solve, scaled in ((True, False), (False, False), (True, True), (False, True)):
+            mine = _from_subset(v, c, poly, cols, one, solve, scaled and not one)
+            if (mine is not None and mine.shape == g.shape
+                    and all_close(g[bad], mine[bad], COLOUR_TOL)):  # fmt: skip
+                return cols, one, scaled and not one
+    # numpy's solve on a nearly singular system: huge numbers (a NaN has other causes: r496 M9)
+    wild = np.isfinite(g[bad]).all() and np.abs(g[bad]).max() > 1e3
+    return (*_open_subsets(v)[0], False) if wild and _open_subsets(v) else None
 
 
 def _open_why(v, cols, with_one) -> str:
     v = np.asarray(v, float)
-    if with_one and len(cols) == 2:
-        a, b = "xyzw"[cols[0]], "xyzw"[cols[1]]
-        return f"the triangle's ({a}, {b}) lie on one line"
+    names = "xyzw"
+    for i, j in ((0, 1), (1, 2), (0, 2)):
+        if all(v[i, k] == v[j, k] for k in cols):
+            same = ", ".join(names[k] for k in cols)
+            return f"v{i + 1} and v{j + 1} have the same {same}: these equations cannot tell them apart"
+    if with_one:
+        return "in these coordinates the three vertices lie on one line"
     return "the three vertices, as vectors, are not independent in these coordinates"
 
 
 def _undetermined_words(args, expected, got) -> str:
-    cols, one = _undetermined(args, expected, got)
+    cols, one, scaled = _undetermined(args, expected, got)
+    then = ", then scaled them to sum to 1 (that picks none of the many answers)" if scaled else ""
     return (
-        f"you solved for the weights from {_subset_words(cols, one)} only, and on this "
-        f"triangle those equations leave them open ({_open_why(args[0], cols, one)}): a "
-        "singular system, so 0/0, wild numbers or one of many answers. Which equations "
-        "fix the weights on every triangle?"
+        f"you solved for the weights from {_subset_words(cols, one)} only (or some of these), "
+        f"leaving out {_left_out(cols, one)}{then}, and on this triangle those equations leave them "
+        f"open ({_open_why(args[0], cols, one)}): a singular system, so 0/0, wild numbers or one "
+        "of many answers. Which equations fix the weights on every triangle?"
     )
 
 
 def _raised(args, error: str) -> str:
     """A singular solve, named (numpy's LinAlgError on a triangle some equations leave open, or
-    that is edge-on on the screen)."""
+    that is edge-on on the screen): every largest open set of equations is said, since the
+    error does not show which the student used (r496 M5–M7)."""
     if "LinAlgError" not in error and "Singular" not in error:
         return ""
-    why = [f"{_subset_words(c, o)} leave the weights open ({_open_why(args[0], c, o)})"
-           for c, o in _open_subsets(args[0])[:1]]  # fmt: skip
+    sets = _largest_open(args[0])
+    why = ["; ".join(_subset_words(c, o) for c, o in sets) + " (or any part of one of them)"
+           ] if sets else []  # fmt: skip
     fails = _screen_fails(args, None, None)
     if fails:
         why.append(f"on the screen {fails}")
     if not why:
         return ""
     return (
-        "; on this triangle " + "; ".join(why) + ". Did you solve for the weights from "
-        "some of the coordinates only, or on the screen? Which equations fix them on "
-        "every triangle?"
+        "; on this triangle these leave the weights open: " + "; and ".join(why) + ". Did you "
+        "solve for the weights from some of the equations only, or on the screen? Which "
+        "equations fix them on every triangle?"
     )
 
 
@@ -520,6 +553,86 @@ def _over_w(v, c, poly):
     return (lam / lam.sum(axis=1, keepdims=True)) @ np.asarray(c, float)
 
 
+def _nan_on_edge(args, expected, got) -> bool:
+    """NaN (or inf) only at vertices on an edge, where the opposite vertex's weight is 0: an
+    unsigned area from a Gram determinant that rounding made negative (r496 M9), or a 0/0."""
+    v, _, poly = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 3)
+    if g.shape != expected.shape:
+        return False
+    nan = [k for k in range(len(g)) if not np.isfinite(g[k]).all()]
+    bad = _bad_rows(expected, g)
+    edges = [None if _kept(v, poly[k]) is not None else _on_edge(v, poly[k]) for k in nan]
+    # (ends that share a coordinate: a t from that coordinate is 0/0 there, named apart)
+    return (
+        bool(nan)
+        and set(bad) == set(nan)
+        and all(e is not None and not _shared(v[e[0]], v[(e[0] + 1) % 3]) for e in edges)
+    )
+
+
+def _nan_on_edge_words(args, expected, got) -> str:
+    v, _, poly = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 3)
+    k = next(k for k in range(len(g)) if not np.isfinite(g[k]).all())
+    i = _on_edge(v, poly[k])[0]
+    return (
+        f"polygon[{k}] lies on the edge v{i + 1}→v{(i + 1) % 3 + 1}, where v{(i + 2) % 3 + 1}'s "
+        f"weight is 0, and your colour there is {vec(g[k])}: NaN only where a weight is 0. A "
+        "square root of a number rounding made slightly negative (an unsigned area, "
+        "√(|e1|²|e2|² − (e1·e2)²)?), or a 0/0 there? Clamp at 0, or solve for signed weights"
+    )
+
+
+_PERMS = ((2, 1, 0), (1, 2, 0), (2, 0, 1), (1, 0, 2), (0, 2, 1))
+
+
+def _permuted_colours(args, expected, got) -> tuple | None:
+    """The permutation of the colours' rows the answer's weights took (r496 H2, H4), or None."""
+    v, c, poly = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 3)
+    if not len(poly) or g.shape != expected.shape:
+        return None
+    lam = weights(v, poly)
+    return next((p for p in _PERMS if all_close(g, lam @ c[list(p)], COLOUR_TOL)), None)
+
+
+def _permuted_words(args, expected, got) -> str:
+    p = _permuted_colours(args, expected, got)
+    took = ", ".join(f"v{i + 1}'s weight with colour {j + 1}" for i, j in enumerate(p) if i != j)
+    rev = " (the colours in reverse order?)" if p == (2, 1, 0) else ""
+    return (
+        f"your weights are right, but they took the wrong colours: {took}{rev}. Row i of "
+        "`colours` is vi's colour, and vi's weight goes with it"
+    )
+
+
+def _one_colour(args, expected, got) -> int | None:
+    """The vertex whose colour every row of the answer is (r496 H3), or None."""
+    c = np.asarray(args[1], float)
+    g = np.asarray(got, float).reshape(-1, 3)
+    if len(g) < 2 or g.shape != expected.shape:
+        return None
+    return next((i for i in range(3) if all(all_close(r, c[i], COLOUR_TOL) for r in g)), None)
+
+
+def _one_colour_words(args, expected, got) -> str:
+    i = _one_colour(args, expected, got) + 1
+    return (
+        f"every vertex of your polygon has v{i}'s colour, whatever its position: only a kept "
+        f"vertex keeps its own colour; {_WHY}"
+    )
+
+
+def _over_w_raw(v, c, poly):
+    """The screen's weights divided by w, not renormalised (r496 H6), None where w = 0."""
+    lam = _screen(v, poly, strict=False)
+    if lam is None or not len(poly):
+        return None
+    with np.errstate(all="ignore"):
+        return (lam / np.asarray(v, float)[:, 3]) @ np.asarray(c, float)
+
+
 def _rounded(v, c, poly, how):
     right = _right(v, c, poly)
     return None if right is None else how(right)
@@ -536,6 +649,14 @@ COLOUR_MISTAKES = [
     Mistake("new vertices on the near plane only", _near_only_words, fits=_near_only),
     Mistake("weights from some equations", _undetermined_words,
             fits=lambda a, e, g: _undetermined(a, e, g) is not None),
+    Mistake("NaN where a weight is 0", _nan_on_edge_words, fits=_nan_on_edge),
+    Mistake("colours of other vertices", _permuted_words,
+            fits=lambda a, e, g: _permuted_colours(a, e, g) is not None),
+    Mistake("one colour for all", _one_colour_words,
+            fits=lambda a, e, g: _one_colour(a, e, g) is not None),
+    Mistake("weights divided by w, not renormalised", "you divided the screen's weights by "
+            "each vertex's w (lesson 04's correction) but did not divide them by their sum "
+            f"again, and here there is nothing to correct anyway: {_WHY}", gives=_over_w_raw),
     Mistake("colour after the divide", "you took the weights of the projected point on the "
             "screen (x/w, y/w) as they are: after the divide equal fractions on the screen "
             f"are not equal fractions of the triangle (lesson 04); {_WHY}",
@@ -576,6 +697,10 @@ COLOUR_MISTAKES = [
     Mistake("colours rounded to 8 bits", "your colours are rounded to 8 bits (multiples of "
             "1/255): return them as floats; the clipper interpolates in full precision",
             gives=lambda v, c, p: _rounded(v, c, p, lambda x: np.round(x * 255) / 255)),
+    Mistake("colours cut to 8 bits", "your colours are cut down to 8 bits (multiples of "
+            "1/255, rounded down: `astype(np.uint8)` truncates): return them as floats; the "
+            "clipper interpolates in full precision",
+            gives=lambda v, c, p: _rounded(v, c, p, lambda x: np.floor(x * 255) / 255)),
     Mistake("colours in float16", "your colours are rounded to 16-bit floats (half precision, "
             "11 significant bits): keep them in the precision you were given",
             gives=lambda v, c, p: _rounded(v, c, p, lambda x: x.astype(np.float16).astype(float))),

@@ -609,6 +609,33 @@ def _off_plane_words(args, expected, got) -> str:
     )
 
 
+def _w_plane(args, expected, got) -> float | None:
+    """The w of a plane w = ε every new vertex lies on, each where an edge crosses it (the
+    distance taken as w − ε, a guard against the eye plane; r496 H10), or None."""
+    v = np.asarray(args[0], float)
+    new = _new_vertices(args, got)
+    if not new or any(abs(p[2] + p[3]) <= _off_plane_by(args) for p in new):
+        return None
+    eps = float(new[0][3])
+    if any(abs(p[3] - eps) > 1e-9 for p in new):
+        return None
+    for p in new:
+        on = [a + (eps - a[3]) / (b[3] - a[3]) * (b - a)
+              for a, b in ((v[i], v[(i + 1) % 3]) for i in range(3)) if a[3] != b[3]]  # fmt: skip
+        if not any(all_close(p, q, 1e-6) for q in on):
+            return None
+    return eps
+
+
+def _w_plane_words(args, expected, got) -> str:
+    eps = _w_plane(args, expected, got)
+    return (
+        f"your new vertices all lie where the edges cross w = {num(eps)}, not the near plane: "
+        f"you measured the distance as w − {num(eps)} (a guard against the eye plane?); the "
+        "near plane is z = −w, and the distance to it z + w"
+    )
+
+
 def _one_component_off(args, expected, got) -> tuple | None:
     """(q, p, k): the first vertex q of ``got`` that is no vertex of the polygon but the new
     vertex p in all components but ``k`` (the crossing's t right, one component changed
@@ -898,6 +925,7 @@ CLIP_MISTAKES = [
     Mistake("new vertex changed", _one_component_words,
             fits=lambda a, e, g: _one_component_off(a, e, g) is not None),
     Mistake("kept vertex changed", _kept_words, fits=_kept_fits, symptom=True),
+    Mistake("a plane w = ε", _w_plane_words, fits=lambda a, e, g: _w_plane(a, e, g) is not None),
     Mistake("crossing off the plane", _off_plane_words, fits=_off_plane, symptom=True),
     Mistake("keeps a vertex behind", _behind_words, fits=_behind, symptom=True),
 ]  # fmt: skip

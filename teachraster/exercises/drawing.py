@@ -321,9 +321,12 @@ def _mark_off_panel(panel, k, v, colours=None) -> list:
                               markerfacecolor=face, clip_on=False, zorder=6)  # fmt: skip
         # beside the arrowhead, on the side with more room (off the discs and edges above)
         right = at[0] <= (x0 + x1) / 2
+        # near the top or bottom edge the two lines hang inward, off the title (r496 FIG1)
+        va = "top" if at[1] > y1 - 0.2 * (y1 - y0) else "bottom" if at[1] < y0 + 0.2 * (
+            y1 - y0) else "center"  # fmt: skip
         artists.append(panel.annotate(f"v{j + 1} off the panel:\nz + w = {num(d)}", at,
                                       xytext=(9 if right else -9, 0), textcoords="offset points",
-                                      fontsize="x-small", va="center",
+                                      fontsize="x-small", va=va,
                                       ha="left" if right else "right",
                                       bbox={"boxstyle": "round,pad=0.1", "facecolor": "white",
                                             "edgecolor": "none", "alpha": 0.8}))  # fmt: skip

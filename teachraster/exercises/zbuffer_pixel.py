@@ -481,6 +481,26 @@ def _farthest_written(depths, writes) -> np.ndarray:
     return np.array(out, dtype=bool)
 
 
+def _sorted(depths, writes, back: bool) -> np.ndarray:
+    """The fragments sorted by depth (then mask) before the test, the answers in that order or
+    put back in drawing order (``back``; r496 H9)."""
+    d, w = np.asarray(depths, float), np.asarray(writes, bool)
+    order = np.lexsort((w, d))
+    out = _simulate(d[order], w[order])
+    if not back:
+        return out
+    back_out = np.empty_like(out)
+    back_out[order] = out
+    return back_out
+
+
+SORTED_WORDS = (
+    "you sorted the fragments by depth before testing them: they arrive in drawing order (the "
+    "order given), each is decided on arrival against what the fragments drawn before it "
+    "wrote, and the answer holds one True or False per fragment in that order"
+)
+
+
 #: r456: first explanations that were the hint alone (H1 to H3) or a false "glass never passes"
 MORE_MISTAKES = [
     Mistake("mask looked up by depth", _by_depth_words, gives=_mask_by_depth),
@@ -496,6 +516,8 @@ MORE_MISTAKES = [
             "they arrive in the order given (drawing order), and each is tested against what the "
             "fragments drawn before it wrote",
             gives=lambda d, w: _simulate(np.asarray(d, float)[::-1], np.asarray(w, bool)[::-1])[::-1]),
+    Mistake("sorted by depth", SORTED_WORDS, gives=lambda d, w: _sorted(d, w, back=False)),
+    Mistake("sorted by depth", SORTED_WORDS, gives=lambda d, w: _sorted(d, w, back=True)),
     Mistake("farthest written", "you compared each fragment with the farthest depth written so "
             "far: the buffer holds the depth of the last fragment that passed and wrote, which "
             "is the nearest so far", gives=_farthest_written),
