@@ -142,7 +142,8 @@ def _off_grid(case) -> str | None:
     xy, p = case
     for what, v in (*((f"v{k + 1}", xy[k]) for k in range(3)), ("p", p)):
         if np.abs(v).max() > FAR:
-            return f"{what} = {vec(v)} lies beyond {FAR:,.0f} px from the origin (the task's range)"
+            return (f"{what} = {vec(v)} has a coordinate outside −{FAR:,.0f} to {FAR:,.0f} px "
+                    "(the task's range)")  # fmt: skip
         if np.any(np.round(v * 256) / 256 != v):
             return (
                 f"{what} = {vec(v)} is off the 1/256-px grid (every coordinate a multiple of 1/256)"

@@ -656,6 +656,15 @@ def _rule(args, expected, got) -> str:
 
 
 def _sum_words(args, expected, got) -> str:
+    """r495 H4: weights proportional to μ but not summing to 1 (``q / (q.sum() + 1e-300)``
+    where the check reads no ε back) are told so, not only their sum."""
+    total = float(np.sum(got))
+    g = np.asarray(got, dtype=float)
+    if total != 0 and all_close(g / total, np.asarray(expected, dtype=float)):
+        return (f": they sum to {_their_sum(got)}, not 1, and they are the right weights μ "
+                f"times that number: proportional to μ, but divided by something other than the "
+                "sum of your terms (a small number added to it, or another term's sum?); "
+                "divide by that sum itself")  # fmt: skip
     return f": they sum to {_their_sum(got)}, and weights sum to 1"
 
 
