@@ -12308,3 +12308,91 @@ for _label, (_fn, _kind) in r488_variants.WRONG.items():
         KINDS[f"defect_case, {_label} (r488)"] = _kind
 for _label, _fn in list(r488_variants.CORRECT.items())[:3]:
     DIFFERENT[f"defect_case, {_label} (r488)"] = ("defect_case", _fn)
+
+
+# -- r495 (exercise 3, a verifying reader): 3.1 a cond test at 1/ε (passed), np.linalg.inv on
+# the new 200-px sliver 100 000 px out, −|E|, E/2 and no division in the shipped code's shape
+# (λ3 = 1 − λ1 − λ2; the rule only before); 3.2 an ε in the normaliser read back nowhere (told
+# only "they sum to 0.636"); 3.1b a p a hair from v3 of a clockwise triangle (told "abs(E) = E"
+# of E < 0, or "at p = v3").
+def _e495(a, b, c):
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+
+def _b495_shipped_shape(test, area):
+    """The shipped code with ``test(m, E)`` as its zero-area test and ``area(E)`` its divisor."""
+
+    def barycentric(xy, p):
+        v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+        m = np.vstack([v.T, np.ones(3)])
+        e = _e495(v[0], v[1], v[2])
+        if test(m, e):
+            raise ValueError("zero area")
+        l1, l2 = _e495(v[1], v[2], p) / area(e), _e495(v[2], v[0], p) / area(e)
+        return np.array([l1, l2, 1.0 - l1 - l2])
+
+    return barycentric
+
+
+def _b495_inverse(xy, p):
+    """The 3×3 system through an explicit inverse (after an exact E == 0 test)."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    if _e495(*v) == 0:
+        raise ValueError("zero area")
+    return np.linalg.inv(np.vstack([v.T, np.ones(3)])) @ np.array([p[0], p[1], 1.0])
+
+
+def _w495_epsilon_1e300(lam, w):
+    """The task's scaling, normalised by q.sum() + 1e-300."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = lam != 0
+    q = np.zeros(3)
+    q[m] = lam[m] * (w[m].min() / w[m])
+    return q / (q.sum() + 1e-300)
+
+
+_D495 = ([[20000.0, 20000.0], [20002.0, 20000.0], [20000.0, 20002.0]], (20000.5, 20000.5))
+
+
+def _d495(area_case):
+    return lambda defect: _D495 if defect == "zero-area test" else area_case
+
+
+_EXACT_E = lambda m, e: e == 0  # noqa: E731
+R495 = {
+    "barycentric refusing cond(M) > 1/ε": (
+        "barycentric", _b495_shipped_shape(lambda m, e: np.linalg.cond(m) > 1 / np.finfo(float).eps,
+                                           lambda e: e),
+        "condition number of 4.5e+17", "condition number"),
+    "barycentric refusing a centred matrix's cond > 1e8": (
+        "barycentric", _b495_shipped_shape(
+            lambda m, e: np.linalg.cond(m - np.r_[m[:2].mean(axis=1), 0][:, None]) > 1e8,
+            lambda e: e),
+        "no limit on it separates the two", "condition number"),
+    "barycentric through np.linalg.inv": (
+        "barycentric", _b495_inverse, "your code reads np.linalg.inv", "explicit inverse"),
+    "barycentric dividing by −|E|, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: -abs(e)),
+        "you divided by −|E(v1, v2, v3)|", "sign where E > 0, λ3 = 1 − λ1 − λ2"),
+    "barycentric dividing by E/2, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: e / 2),
+        "are twice the weights", "area, λ3 = 1 − λ1 − λ2"),
+    "barycentric not dividing, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: 1.0),
+        "you did not divide by it", "not divided, λ3 = 1 − λ1 − λ2"),
+    "perspective weights normalised by q.sum() + 1e-300": (
+        "perspective_weights", _w495_epsilon_1e300, "the right weights μ times that number",
+        "sum"),
+    "defect_case, p 1/256 px from v3 of a huge clockwise triangle": (
+        "defect_case", _d495(([[-1e5, -1e5], [-1e5, 1e5], [0.0, 0.0]], (-1 / 256, 0.0))),
+        "move p further from v3", "at v3"),
+    "defect_case, p 1/256 px from v3 100 000 px out": (
+        "defect_case", _d495(([[0.0, 0.0], [0.0, 1e5], [1e5, 0.0]], (1e5 - 1 / 256, 0.0))),
+        "within the check's 1e-06", "at v3"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R495.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R495.items()})
+DIFFERENT.update({
+    "barycentric, the shipped code with E == 0 and the signed E (r495)": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: e)),
+})  # fmt: skip
