@@ -12351,6 +12351,27 @@ def _w495_epsilon_1e300(lam, w):
     return q / (q.sum() + 1e-300)
 
 
+def _w495_mask_tiny(lam, w):
+    """r455's left-over: the task's scaling, λ masked by |λ| > float64's smallest normal."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = np.abs(lam) > np.finfo(float).tiny
+    q = np.zeros(3)
+    q[m] = lam[m] * (w[m].min() / w[m])
+    return q / q.sum()
+
+
+def _w495_frexp_above_1(lam, w):
+    """Each w scaled by 2^-k, k the smallest exponent that weighs: ratios above 1 overflow."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = lam != 0
+    mant, e = np.frexp(w)
+    with np.errstate(over="ignore"):
+        scaled = np.ldexp(mant, e - e[m].min())
+    q = np.zeros(3)
+    q[m] = lam[m] / scaled[m]
+    return q / q.sum()
+
+
 _D495 = ([[20000.0, 20000.0], [20002.0, 20000.0], [20000.0, 20002.0]], (20000.5, 20000.5))
 
 
@@ -12383,6 +12404,11 @@ R495 = {
     "perspective weights normalised by q.sum() + 1e-300": (
         "perspective_weights", _w495_epsilon_1e300, "the right weights μ times that number",
         "sum"),
+    "perspective weights masking |λ| > np.finfo(float).tiny": (
+        "perspective_weights", _w495_mask_tiny, "λ1 = 1e-310 is not 0", "tiny λ left out"),
+    "perspective weights scaled by 2^(e − e_min), ratios above 1": (
+        "perspective_weights", _w495_frexp_above_1, "never by one above 1",
+        "ratio above 1 overflowed"),
     "defect_case, p 1/256 px from v3 of a huge clockwise triangle": (
         "defect_case", _d495(([[-1e5, -1e5], [-1e5, 1e5], [0.0, 0.0]], (-1 / 256, 0.0))),
         "move p further from v3", "at v3"),
