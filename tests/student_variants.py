@@ -12342,6 +12342,16 @@ def _b495_inverse(xy, p):
     return np.linalg.inv(np.vstack([v.T, np.ones(3)])) @ np.array([p[0], p[1], 1.0])
 
 
+def _b495_abs_two(xy, p):
+    """The shipped shape with the sizes of λ1 and λ2 (after an exact E == 0 test)."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    e = _e495(*v)
+    if e == 0:
+        raise ValueError("zero area")
+    l1, l2 = abs(_e495(v[1], v[2], p) / e), abs(_e495(v[2], v[0], p) / e)
+    return np.array([l1, l2, 1.0 - l1 - l2])
+
+
 def _w495_epsilon_1e300(lam, w):
     """The task's scaling, normalised by q.sum() + 1e-300."""
     lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
@@ -12401,6 +12411,16 @@ R495 = {
     "barycentric not dividing, λ3 = 1 − λ1 − λ2": (
         "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: 1.0),
         "you did not divide by it", "not divided, λ3 = 1 − λ1 − λ2"),
+    "barycentric refusing where np.linalg.cond(M) == inf": (
+        "barycentric", _b495_shipped_shape(lambda m, e: np.linalg.cond(m) == np.inf, lambda e: e),
+        "your code reads np.linalg.cond, and on this triangle", "zero-area test let it through"),
+    "barycentric refusing where np.linalg.slogdet(M)[0] == 0": (
+        "barycentric", _b495_shipped_shape(lambda m, e: np.linalg.slogdet(m)[0] == 0,
+                                           lambda e: e),
+        "your code reads np.linalg.slogdet", "zero-area test let it through"),
+    "barycentric with |λ1|, |λ2|, λ3 = 1 − their sum": (
+        "barycentric", _b495_abs_two, "you took their absolute values",
+        "unsigned, λ3 = 1 − λ1 − λ2"),
     "perspective weights normalised by q.sum() + 1e-300": (
         "perspective_weights", _w495_epsilon_1e300, "the right weights μ times that number",
         "sum"),

@@ -289,7 +289,10 @@ def _scaled_in_two(rest: int, by: str):
     def gives(xy, p):
         lam = _areas(xy, p) / _area(xy)
         two = [k for k in range(3) if k != rest]
-        lam[two] *= 2.0 if by == "area" else _area(xy)
+        if by == "unsigned":
+            lam[two] = np.abs(lam[two])
+        else:
+            lam[two] *= 2.0 if by == "area" else _area(xy)
         lam[rest] = 1.0 - lam[two].sum()
         return lam
 
@@ -301,8 +304,10 @@ def _scaled_in_two_words(rest: int, by: str):
         area = _area(args[0])
         two = " and ".join(f"λ{k + 1}" for k in range(3) if k != rest)
         did = ("twice the weights: you divided by the triangle's area, E(v1, v2, v3)/2 = "
-               f"{num(area / 2)}" if by == "area" else f"the weights times E(v1, v2, v3) = "
-               f"{num(area)}: you did not divide by it")  # fmt: skip
+               f"{num(area / 2)}" if by == "area" else "the sizes of the weights: you took their "
+               "absolute values, but where p lies outside an edge its weight is negative"
+               if by == "unsigned" else f"the weights times E(v1, v2, v3) = {num(area)}: you "
+               "did not divide by it")  # fmt: skip
         return (f": your {two} are {did}, and your λ{rest + 1} = 1 minus their sum makes up the "
                 f"rest. Divide by E(v1, v2, v3) = {num(area)} itself: each weight is a ratio of "
                 "two edge functions")  # fmt: skip
@@ -948,6 +953,30 @@ def _rank_words(args, expected, got) -> str:
     )
 
 
+def _let_through_words(read: str, what: str):
+    """r495: a zero-area test on a floating-point measure (``np.linalg.cond(M) == np.inf``,
+    ``np.linalg.slogdet(M)[0] == 0``) that let a collinear triangle through to a division was
+    told "raise ValueError before dividing", as if there were no test."""
+
+    def words(args, expected, got) -> str:
+        m = np.vstack([np.asarray(args[0], float).T, np.ones(3)])
+        value = {"cond": np.linalg.cond(m), "slogdet": np.linalg.slogdet(m)[0]}[read]
+        return (
+            f": your code reads np.linalg.{read}, and on this triangle, whose three vertices lie "
+            f"on one line (E(v1, v2, v3) = 0 exactly), {what} comes out as {value:.3g}: rounding "
+            "keeps the 3×3 matrix's floating-point measure away from the value your test waits "
+            "for, so the division ran and gave NaN or infinity. Test E == 0 (exact on the "
+            "1/256-px grid) and raise ValueError"
+        )
+
+    return words
+
+
+def _let_through(a, e, g) -> bool:
+    return isinstance(e, str) and not isinstance(g, str) and not np.isfinite(
+        np.asarray(g, float)).all()  # fmt: skip
+
+
 def _inverse_words(args, expected, got) -> str:
     """r495: ``np.linalg.inv(M) @ (px, py, 1)`` on the thin far sliver (rule only before)."""
     xy, _ = args
@@ -982,6 +1011,9 @@ ZERO_AREA_MISTAKES = [
             fits=lambda a, e, g: (isinstance(e, str) and not isinstance(g, str)
                                   and bool(np.isfinite(np.asarray(g, float)).all())
                                   and float(np.abs(np.asarray(g, float)).max()) >= SOLVER_NOISE)),
+    *(Mistake("zero-area test let it through", _let_through_words(read, what), reads=read,
+              fits=_let_through)
+      for read, what in (("cond", "its condition number"), ("slogdet", "the sign of its determinant"))),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
     # r348 item 4: vertices cast to int (truncated), p too or not; the zero-area test on them
@@ -1066,7 +1098,7 @@ def _proper_mistakes() -> list[Mistake]:
                     gives=_sign_in_two(rest, None)) for rest in range(3)]  # fmt: skip
     out += [Mistake(f"{by}, λ3 = 1 − λ1 − λ2", _scaled_in_two_words(rest, by),
                     gives=_scaled_in_two(rest, by))
-            for by in ("area", "not divided") for rest in range(3)]  # fmt: skip
+            for by in ("area", "not divided", "unsigned") for rest in range(3)]  # fmt: skip
     out.append(Mistake("p snapped to its pixel centre", _p_snapped_words, gives=_p_snapped))
     out += [Mistake(f"p {how}", _p_coarsened_words(how), gives=_p_coarsened(how))
             for how in P_COARSENED]  # fmt: skip
