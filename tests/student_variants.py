@@ -13455,4 +13455,135 @@ DIFFERENT.update({
     'depth passes buffer None': ('depth_passes', _r456('depth_passes', _R496_C_DEPTH_PASSES_BUFFER_NONE)),
     'clip near strict crossing': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_STRICT_CROSSING)),
     'clip near t from absolute distances': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_T_FROM_ABSOLUTE_DISTANCES)),
+# -- r495 (exercise 3, a verifying reader): 3.1 a cond test at 1/ε (passed), np.linalg.inv on
+# the new 200-px sliver 100 000 px out, −|E|, E/2 and no division in the shipped code's shape
+# (λ3 = 1 − λ1 − λ2; the rule only before); 3.2 an ε in the normaliser read back nowhere (told
+# only "they sum to 0.636"); 3.1b a p a hair from v3 of a clockwise triangle (told "abs(E) = E"
+# of E < 0, or "at p = v3").
+def _e495(a, b, c):
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+
+def _b495_shipped_shape(test, area):
+    """The shipped code with ``test(m, E)`` as its zero-area test and ``area(E)`` its divisor."""
+
+    def barycentric(xy, p):
+        v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+        m = np.vstack([v.T, np.ones(3)])
+        e = _e495(v[0], v[1], v[2])
+        if test(m, e):
+            raise ValueError("zero area")
+        l1, l2 = _e495(v[1], v[2], p) / area(e), _e495(v[2], v[0], p) / area(e)
+        return np.array([l1, l2, 1.0 - l1 - l2])
+
+    return barycentric
+
+
+def _b495_inverse(xy, p):
+    """The 3×3 system through an explicit inverse (after an exact E == 0 test)."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    if _e495(*v) == 0:
+        raise ValueError("zero area")
+    return np.linalg.inv(np.vstack([v.T, np.ones(3)])) @ np.array([p[0], p[1], 1.0])
+
+
+def _b495_abs_two(xy, p):
+    """The shipped shape with the sizes of λ1 and λ2 (after an exact E == 0 test)."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    e = _e495(*v)
+    if e == 0:
+        raise ValueError("zero area")
+    l1, l2 = abs(_e495(v[1], v[2], p) / e), abs(_e495(v[2], v[0], p) / e)
+    return np.array([l1, l2, 1.0 - l1 - l2])
+
+
+def _w495_epsilon_1e300(lam, w):
+    """The task's scaling, normalised by q.sum() + 1e-300."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = lam != 0
+    q = np.zeros(3)
+    q[m] = lam[m] * (w[m].min() / w[m])
+    return q / (q.sum() + 1e-300)
+
+
+def _w495_mask_tiny(lam, w):
+    """r455's left-over: the task's scaling, λ masked by |λ| > float64's smallest normal."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = np.abs(lam) > np.finfo(float).tiny
+    q = np.zeros(3)
+    q[m] = lam[m] * (w[m].min() / w[m])
+    return q / q.sum()
+
+
+def _w495_frexp_above_1(lam, w):
+    """Each w scaled by 2^-k, k the smallest exponent that weighs: ratios above 1 overflow."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = lam != 0
+    mant, e = np.frexp(w)
+    with np.errstate(over="ignore"):
+        scaled = np.ldexp(mant, e - e[m].min())
+    q = np.zeros(3)
+    q[m] = lam[m] / scaled[m]
+    return q / q.sum()
+
+
+_D495 = ([[20000.0, 20000.0], [20002.0, 20000.0], [20000.0, 20002.0]], (20000.5, 20000.5))
+
+
+def _d495(area_case):
+    return lambda defect: _D495 if defect == "zero-area test" else area_case
+
+
+_EXACT_E = lambda m, e: e == 0  # noqa: E731
+R495 = {
+    "barycentric refusing cond(M) > 1/ε": (
+        "barycentric", _b495_shipped_shape(lambda m, e: np.linalg.cond(m) > 1 / np.finfo(float).eps,
+                                           lambda e: e),
+        "condition number of 4.5e+17", "condition number"),
+    "barycentric refusing a centred matrix's cond > 1e8": (
+        "barycentric", _b495_shipped_shape(
+            lambda m, e: np.linalg.cond(m - np.r_[m[:2].mean(axis=1), 0][:, None]) > 1e8,
+            lambda e: e),
+        "no limit on it separates the two", "condition number"),
+    "barycentric through np.linalg.inv": (
+        "barycentric", _b495_inverse, "your code reads np.linalg.inv", "explicit inverse"),
+    "barycentric dividing by −|E|, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: -abs(e)),
+        "you divided by −|E(v1, v2, v3)|", "sign where E > 0, λ3 = 1 − λ1 − λ2"),
+    "barycentric dividing by E/2, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: e / 2),
+        "are twice the weights", "area, λ3 = 1 − λ1 − λ2"),
+    "barycentric not dividing, λ3 = 1 − λ1 − λ2": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: 1.0),
+        "you did not divide by it", "not divided, λ3 = 1 − λ1 − λ2"),
+    "barycentric refusing where np.linalg.cond(M) == inf": (
+        "barycentric", _b495_shipped_shape(lambda m, e: np.linalg.cond(m) == np.inf, lambda e: e),
+        "your code reads np.linalg.cond, and on this triangle", "zero-area test let it through"),
+    "barycentric refusing where np.linalg.slogdet(M)[0] == 0": (
+        "barycentric", _b495_shipped_shape(lambda m, e: np.linalg.slogdet(m)[0] == 0,
+                                           lambda e: e),
+        "your code reads np.linalg.slogdet", "zero-area test let it through"),
+    "barycentric with |λ1|, |λ2|, λ3 = 1 − their sum": (
+        "barycentric", _b495_abs_two, "you took their absolute values",
+        "unsigned, λ3 = 1 − λ1 − λ2"),
+    "perspective weights normalised by q.sum() + 1e-300": (
+        "perspective_weights", _w495_epsilon_1e300, "the right weights μ times that number",
+        "sum"),
+    "perspective weights masking |λ| > np.finfo(float).tiny": (
+        "perspective_weights", _w495_mask_tiny, "λ1 = 1e-310 is not 0", "tiny λ left out"),
+    "perspective weights scaled by 2^(e − e_min), ratios above 1": (
+        "perspective_weights", _w495_frexp_above_1, "never by one above 1",
+        "ratio above 1 overflowed"),
+    "defect_case, p 1/256 px from v3 of a huge clockwise triangle": (
+        "defect_case", _d495(([[-1e5, -1e5], [-1e5, 1e5], [0.0, 0.0]], (-1 / 256, 0.0))),
+        "move p further from v3", "at v3"),
+    "defect_case, p 1/256 px from v3 100 000 px out": (
+        "defect_case", _d495(([[0.0, 0.0], [0.0, 1e5], [1e5, 0.0]], (1e5 - 1 / 256, 0.0))),
+        "within the check's 1e-06", "at v3"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R495.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R495.items()})
+DIFFERENT.update({
+    "barycentric, the shipped code with E == 0 and the signed E (r495)": (
+        "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: e)),
 })  # fmt: skip

@@ -97,6 +97,13 @@ THIN_FAR = (
     ("a sliver 200 px long, E(v1, v2, v3) = 2^-15",
      [[3.8046875, 2.52734375], [186.62890625, 92.6875], [76.8203125, 38.53515625]],
      (40.3125, 20.53125)),  # the midpoint of v1 v3: λ = (½, 0, ½)
+    # r495 W1: thin (E = 2^-16), 200 px long and 100 000 px out: its 3×3 matrix has a
+    # condition number of 4.5e17, beyond 1/ε = 4.5e15, so ``cond(M) > 1 / np.finfo(float).eps``
+    # (the textbook's "numerically singular") refused it, and passed every other case. p = v1:
+    # λ = (1, 0, 0), which a solve in absolute coordinates still gets exactly
+    ("a sliver 200 px long, 100 000 px out, E(v1, v2, v3) = 2^-16",
+     [[99800.0, 99990.0], [100000.0, 99990.00390625], [99999.99609375, 99990.00390625]],
+     (99800.0, 99990.0)),
 )  # fmt: skip
 
 
@@ -236,13 +243,14 @@ def _absolute_area_words(args, expected, got) -> str:
     )
 
 
-def _sign_in_two(rest: int, only_negative: bool):
+def _sign_in_two(rest: int, only_negative: bool | None):
     """r429 H1: two weights divided by |E(v1, v2, v3)| (``only_negative``) or by −E, the
-    third, number ``rest``, taken as 1 minus their sum (λ3 = 1 − λ1 − λ2, the task's route)."""
+    third, number ``rest``, taken as 1 minus their sum (λ3 = 1 − λ1 − λ2, the task's route);
+    r495 H1: ``only_negative`` None: by −|E|, the slip on triangles with E > 0 only."""
 
     def gives(xy, p):
         area = _area(xy)
-        if only_negative and area > 0:
+        if (only_negative and area > 0) or (only_negative is None and area < 0):
             return None  # the same as the right answer: says nothing here
         lam = _areas(xy, p) / area
         two = [k for k in range(3) if k != rest]
@@ -260,13 +268,49 @@ def _sign_in_two_words(rest: int, only_negative: bool):
         two = " and ".join(f"λ{k + 1}" for k in range(3) if k != rest)
         took = (f"|E(v1, v2, v3)| = {num(abs(area))}: right on triangles with E > 0, wrong on "
                 "every one of the other winding (this one runs counter-clockwise on screen)"
-                if only_negative else f"−E(v1, v2, v3) = {num(-area)}: the edges, or the "
-                "products in E, the other way round")  # fmt: skip
+                if only_negative else f"−|E(v1, v2, v3)| = {num(-area)}: right on triangles "
+                "with E < 0, wrong on every one of the other winding (this one runs clockwise "
+                "on screen)" if only_negative is None else f"−E(v1, v2, v3) = {num(-area)}: the "
+                "edges, or the products in E, the other way round")  # fmt: skip
         return (
             f": your {two} have the wrong sign and your λ{rest + 1} = 1 minus their sum makes "
             f"up the rest: you divided by {took}. Divide by the signed E(v1, v2, v3) = "
             f"{num(area)} itself"
         )
+
+    return words
+
+
+def _scaled_in_two(rest: int, by: str):
+    """r495 H2: two weights scaled (``by`` "area": divided by E/2, twice the weights; "not
+    divided": E(...) itself, times E) and the third, number ``rest``, 1 minus their sum: the
+    shipped code's shape, λ3 = 1 − λ1 − λ2, told the rule only."""
+
+    def gives(xy, p):
+        lam = _areas(xy, p) / _area(xy)
+        two = [k for k in range(3) if k != rest]
+        if by == "unsigned":
+            lam[two] = np.abs(lam[two])
+        else:
+            lam[two] *= 2.0 if by == "area" else _area(xy)
+        lam[rest] = 1.0 - lam[two].sum()
+        return lam
+
+    return gives
+
+
+def _scaled_in_two_words(rest: int, by: str):
+    def words(args, expected, got):
+        area = _area(args[0])
+        two = " and ".join(f"λ{k + 1}" for k in range(3) if k != rest)
+        did = ("twice the weights: you divided by the triangle's area, E(v1, v2, v3)/2 = "
+               f"{num(area / 2)}" if by == "area" else "the sizes of the weights: you took their "
+               "absolute values, but where p lies outside an edge its weight is negative"
+               if by == "unsigned" else f"the weights times E(v1, v2, v3) = {num(area)}: you "
+               "did not divide by it")  # fmt: skip
+        return (f": your {two} are {did}, and your λ{rest + 1} = 1 minus their sum makes up the "
+                f"rest. Divide by E(v1, v2, v3) = {num(area)} itself: each weight is a ratio of "
+                "two edge functions")  # fmt: skip
 
     return words
 
@@ -888,9 +932,8 @@ def _cond_words(args, expected, got) -> str:
         f": your code reads np.linalg.cond, and this triangle's 3×3 matrix has a condition "
         f"number of {np.linalg.cond(m):.1e}, yet its E(v1, v2, v3) = {_area(xy)!r} is "
         "exact in float64 and not 0: you refused a thin but real triangle. A condition number "
-        "says how much a solve may magnify rounding (it grows with the distance from the "
-        "origin), not whether the area is 0; test E == 0 exactly and raise ValueError for it "
-        "alone"
+        "says how much a solve may magnify rounding, not whether the area is 0 (and no limit "
+        "on it separates the two); test E == 0 exactly and raise ValueError for it alone"
     )
 
 
@@ -910,6 +953,51 @@ def _rank_words(args, expected, got) -> str:
     )
 
 
+def _let_through_words(read: str, what: str):
+    """r495: a zero-area test on a floating-point measure (``np.linalg.cond(M) == np.inf``,
+    ``np.linalg.slogdet(M)[0] == 0``) that let a collinear triangle through to a division was
+    told "raise ValueError before dividing", as if there were no test."""
+
+    def words(args, expected, got) -> str:
+        m = np.vstack([np.asarray(args[0], float).T, np.ones(3)])
+        value = {"cond": np.linalg.cond(m), "slogdet": np.linalg.slogdet(m)[0]}[read]
+        return (
+            f": your code reads np.linalg.{read}, and on this triangle, whose three vertices lie "
+            f"on one line (E(v1, v2, v3) = 0 exactly), {what} comes out as {value:.3g}: rounding "
+            "keeps the 3×3 matrix's floating-point measure away from the value your test waits "
+            "for, so the division ran and gave NaN or infinity. Test E == 0 (exact on the "
+            "1/256-px grid) and raise ValueError"
+        )
+
+    return words
+
+
+def _let_through(a, e, g) -> bool:
+    return isinstance(e, str) and not isinstance(g, str) and not np.isfinite(
+        np.asarray(g, float)).all()  # fmt: skip
+
+
+def _inverse_words(args, expected, got) -> str:
+    """r495: ``np.linalg.inv(M) @ (px, py, 1)`` on the thin far sliver (rule only before)."""
+    xy, _ = args
+    m = np.vstack([np.asarray(xy, float).T, np.ones(3)])
+    off = float(np.abs(np.asarray(got, float) - np.asarray(expected, float)).max())
+    return (
+        f": your code reads np.linalg.inv, and this thin triangle's 3×3 matrix has a condition "
+        f"number of {np.linalg.cond(m):.1e}: an inverse of it computed in floating point may "
+        f"be off by up to that times float64's rounding, and your weights are off by {off:.2g}. "
+        "Solve for the weights from differences to a vertex (two equations about v3, Cramer's "
+        "rule), which float64 computes exactly on the 1/256-px grid, not through an inverse"
+    )
+
+
+def _inverse_fits(args, expected, got) -> bool:
+    if isinstance(got, str) or isinstance(expected, str) or not _thin_far(args):
+        return False
+    g = np.asarray(got, float)
+    return g.shape == (3,) and bool(np.isfinite(g).all())
+
+
 ZERO_AREA_MISTAKES = [
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(-1.0))),
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(1.0))),
@@ -923,6 +1011,9 @@ ZERO_AREA_MISTAKES = [
             fits=lambda a, e, g: (isinstance(e, str) and not isinstance(g, str)
                                   and bool(np.isfinite(np.asarray(g, float)).all())
                                   and float(np.abs(np.asarray(g, float)).max()) >= SOLVER_NOISE)),
+    *(Mistake("zero-area test let it through", _let_through_words(read, what), reads=read,
+              fits=_let_through)
+      for read, what in (("cond", "its condition number"), ("slogdet", "the sign of its determinant"))),
     Mistake("no zero-area check", _zero_area_words,
             fits=lambda a, e, g: isinstance(e, str) and not isinstance(g, str)),
     # r348 item 4: vertices cast to int (truncated), p too or not; the zero-area test on them
@@ -938,6 +1029,7 @@ ZERO_AREA_MISTAKES = [
     # r421 W2: ``if np.linalg.matrix_rank(M) < 3: raise ValueError`` refused a thin far one
     Mistake("matrix rank", _rank_words, reads="matrix_rank",
             fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
+    Mistake("explicit inverse", _inverse_words, reads="inv", fits=_inverse_fits),
     Mistake("refused a proper triangle", _refused_words,
             fits=lambda a, e, g: isinstance(g, str) and not isinstance(e, str)),
 ]  # fmt: skip
@@ -1001,6 +1093,12 @@ def _proper_mistakes() -> list[Mistake]:
     out += [Mistake("absolute area, λ3 = 1 − λ1 − λ2" if neg else "sign, λ3 = 1 − λ1 − λ2",
                     _sign_in_two_words(rest, neg), gives=_sign_in_two(rest, neg))
             for neg in (False, True) for rest in range(3)]  # fmt: skip
+    # r495 H1, H2: −|E|, E/2 and no division in the shipped code's shape (the rule only)
+    out += [Mistake("sign where E > 0, λ3 = 1 − λ1 − λ2", _sign_in_two_words(rest, None),
+                    gives=_sign_in_two(rest, None)) for rest in range(3)]  # fmt: skip
+    out += [Mistake(f"{by}, λ3 = 1 − λ1 − λ2", _scaled_in_two_words(rest, by),
+                    gives=_scaled_in_two(rest, by))
+            for by in ("area", "not divided", "unsigned") for rest in range(3)]  # fmt: skip
     out.append(Mistake("p snapped to its pixel centre", _p_snapped_words, gives=_p_snapped))
     out += [Mistake(f"p {how}", _p_coarsened_words(how), gives=_p_coarsened(how))
             for how in P_COARSENED]  # fmt: skip

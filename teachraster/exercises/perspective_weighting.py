@@ -110,6 +110,11 @@ EXTREME = (
     # stop at 1e-12); no product here leaves float64's normal range
     # (w2 ≠ w3, so the answer without λ1, (0, ⅔, ⅓), is not λ itself: "you returned λ")
     ((1e-300, 0.5, 0.5), (1.0, 1e300, 2e300)),
+    # r495 (r455's left-over): a subnormal λ1 = 1e-310 at w1 = 1e-10, again half of μ: a mask
+    # |λ| > np.finfo(float).tiny (2.2e-308, float64's smallest normal number) dropped it. The
+    # right order's terms λ_i · (w_ref / w_i) are subnormal too (1e-310, 5e-311, 2.5e-311) but
+    # keep about 43 bits, so μ = (4/7, 2/7, 1/7) to 1e-13; (λ_i · w_ref) / w_i is not (1e-320)
+    ((1e-310, 0.5, 0.5), (1e-10, 1e300, 2e300)),
 )
 
 #: r440 W1, W2: (λ, w) of a point next to an edge, whose tiny λ sits at the smallest w
@@ -656,6 +661,15 @@ def _rule(args, expected, got) -> str:
 
 
 def _sum_words(args, expected, got) -> str:
+    """r495 H4: weights proportional to μ but not summing to 1 (``q / (q.sum() + 1e-300)``
+    where the check reads no ε back) are told so, not only their sum."""
+    total = float(np.sum(got))
+    g = np.asarray(got, dtype=float)
+    if total != 0 and all_close(g / total, np.asarray(expected, dtype=float)):
+        return (f": they sum to {_their_sum(got)}, not 1, and they are the right weights μ "
+                f"times that number: proportional to μ, but divided by something other than the "
+                "sum of your terms (a small number added to it, or another term's sum?); "
+                "divide by that sum itself")  # fmt: skip
     return f": they sum to {_their_sum(got)}, and weights sum to 1"
 
 
@@ -834,6 +848,47 @@ def _tiny_lam_fits(args, expected, got) -> bool | None:
 TINY_LAM = Mistake("tiny λ left out", _tiny_lam_words, fits=_tiny_lam_fits)
 
 
+def _ratio_overflowed(lam, w) -> np.ndarray:
+    """The vertices whose λ ≠ 0 and whose ratio w_i / w_ref to the smallest w that weighs
+    overflows float64 (r495: scaled by w_i / w_ref, a ratio above 1, their terms were 0)."""
+    lam, w = np.asarray(lam, dtype=float), np.asarray(w, dtype=float)
+    m = lam != 0
+    with np.errstate(over="ignore"):
+        return m & np.isinf(w / w[m].min())
+
+
+def _ratio_overflow_fits(args, expected, got) -> bool | None:
+    """Is the answer μ with the terms of an overflowed ratio above 1 set to 0?"""
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    gone = _ratio_overflowed(lam, w)
+    g = np.asarray(got, dtype=float)
+    if not gone.any() or g.shape != (3,) or not np.isfinite(g).all() or all_close(g, expected):
+        return None
+    kept = np.where(gone, 0.0, lam)
+    if not (kept != 0).any():
+        return None
+    return near(weights_per_row(kept[None], w[None], extrapolate=True)[0], g)
+
+
+def _ratio_overflow_words(args, expected, got) -> str:
+    lam, w = (np.asarray(a, dtype=float) for a in args)
+    k = int(np.flatnonzero(_ratio_overflowed(lam, w))[0])
+    ref = float(w[lam != 0].min())
+    return (
+        f": your weight of v{k + 1} is {num(float(np.asarray(got, float)[k]))}, but its μ{k + 1} "
+        f"= {expected[k]:.3g}: the ratio w{k + 1} / w_ref = {w[k]:.3g} / {ref:.3g} to the "
+        "smallest w lies beyond float64's largest number, 1.8e308, so a term λ / (w / w_ref) "
+        "became λ / inf = 0, though λ · (w_ref / w), a ratio below 1, is a subnormal number "
+        "that float64 still holds: scale each term by a ratio ≤ 1 (the smallest w over yours), "
+        "never by one above 1"
+    )
+
+
+#: r495: a scale by w_i / w_ref (frexp exponents, or a ratio above 1) lost a term that counts
+RATIO_OVERFLOW = Mistake("ratio above 1 overflowed", _ratio_overflow_words,
+                         fits=_ratio_overflow_fits)  # fmt: skip
+
+
 def _float32_error(args, expected, got) -> float | None:
     """The answer's largest error where it is finite weights within float32's rounding of μ
     on a GPU's w (r440 M2, H3: a float64 answer from a float32 step), else None."""
@@ -943,7 +998,7 @@ PERSPECTIVE_WEIGHTS = Exercise(
     [*map(_says_no_nan, [*variant_mistakes(_variants, MISTAKES), *PAIRINGS]), NUDGED,
      NUDGED_SCALED, NUDGED_W,
      *(Mistake(kind, words, fits=_beyond_slip(kind)) for kind, words in BEYOND.items()),
-     LAM_BEYOND, NAN_BEYOND, TINY_LAM, FLOAT32_STEP,
+     LAM_BEYOND, NAN_BEYOND, TINY_LAM, RATIO_OVERFLOW, FLOAT32_STEP,
      Mistake("uninitialised memory", _unwritten_words, fits=_unwritten_nan), *SYMPTOMS],
     answers=(PackageAnswer(perspective_weights), PackageAnswer(weights_per_row),
              # r148 D12-5: the last step of the answer, q / Σq, is the package's too
