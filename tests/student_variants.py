@@ -13455,6 +13455,9 @@ DIFFERENT.update({
     'depth passes buffer None': ('depth_passes', _r456('depth_passes', _R496_C_DEPTH_PASSES_BUFFER_NONE)),
     'clip near strict crossing': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_STRICT_CROSSING)),
     'clip near t from absolute distances': ('clip_near', _r456('clip_near', _R496_C_CLIP_NEAR_T_FROM_ABSOLUTE_DISTANCES)),
+})  # fmt: skip
+
+
 # -- r495 (exercise 3, a verifying reader): 3.1 a cond test at 1/ε (passed), np.linalg.inv on
 # the new 200-px sliver 100 000 px out, −|E|, E/2 and no division in the shipped code's shape
 # (λ3 = 1 − λ1 − λ2; the rule only before); 3.2 an ε in the normaliser read back nowhere (told
