@@ -28,6 +28,7 @@ a huge numpy operation). Its case is reported as past its limit once the call re
 from __future__ import annotations
 
 import gc
+import math
 import os
 import queue
 import signal
@@ -56,20 +57,40 @@ LONGEST = 1e6
 WAIT_FACTOR, CASE_WALL_FACTOR = 5.0, 20.0
 
 
+class _Held:
+    """A file opened for reading, closed when no one holds it any more."""
+
+    __slots__ = ("fd",)
+
+    def __init__(self, path: str):
+        self.fd = os.open(path, os.O_RDONLY)
+
+    def __del__(self):
+        fd = getattr(self, "fd", None)  # None: the file could not be opened
+        if fd is not None:
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
 def queued_clock(native_id: int):
     """A function returning the seconds thread ``native_id`` of this process has spent ready
     to run but waiting for a core (the second field of Linux's ``schedstat``), or None where
     the platform does not say."""
-    path = f"/proc/self/task/{native_id}/schedstat"
+    try:
+        held = _Held(f"/proc/self/task/{native_id}/schedstat")
+    except OSError:
+        return None
 
     def queued() -> float:
-        # os.read, not open(): every alarm reads it as it starts, and a text file object
-        # cost more than the reading (14 s of a 250-s profile of the checker tests)
-        fd = os.open(path, os.O_RDONLY)
-        try:
-            return int(os.read(fd, 256).split()[1]) * 1e-9
-        finally:
-            os.close(fd)
+        # every alarm reads it as it starts: os.pread at offset 0 of a descriptor kept open
+        # reads the numbers of now again (a /proc file is made anew at offset 0), 1 µs, where
+        # opening, reading and closing it each time took 6 µs of an alarm's ~25 (and a text
+        # file object more still: 14 s of a 250-s profile of the checker tests). The closure
+        # holds ``held``: the descriptor is closed only once no alarm can read it any more,
+        # never reused for another file under an alarm that still reads it.
+        return int(os.pread(held.fd, 256, 0).split()[1]) * 1e-9
 
     try:
         queued()
@@ -93,15 +114,17 @@ def _own_queued_clock():
 
 
 def _forked() -> None:
-    global _own, _idle, _idle_lock
+    global _own, _idle, _idle_lock, _watched, _looking, _looker, _wake
     _own = threading.local()
     _idle, _idle_lock = [], threading.Lock()  # the parent's watchdog threads are not here
+    _watched, _looking, _looker, _wake = {}, threading.Condition(), None, math.inf
 
 
-#: Watchdog threads waiting for the next alarm (each on its own queue of one watch at a time):
-#: a thread started for every alarm, and waited for until it ran, cost about 45 µs of CPU of
-#: the ~115 µs of an alarm, and a check starts one for every case and every step of its
-#: diagnosis (about 98,000 in test_checker_corpus.py). Past ``KEPT`` idle ones a thread ends.
+#: Watchdog threads waiting for the next alarm past a limit (each on its own queue of one watch
+#: at a time; the looker, below, hands them over): a thread started for every alarm, and waited
+#: for until it ran, cost about 45 µs of CPU of the ~115 µs of an alarm, and a check starts one
+#: for every case and every step of its diagnosis (about 98,000 in test_checker_corpus.py).
+#: Past ``KEPT`` idle ones a thread ends.
 _idle: list = []
 _idle_lock = threading.Lock()
 KEPT = 16
@@ -126,6 +149,58 @@ def _in_watchdog(watch) -> None:
             target=_watcher, args=(jobs,), daemon=True, name="teachraster-check-watchdog"
         ).start()
     jobs.put(watch)
+
+
+#: Every running alarm (a top-level one, with a watchdog), watched by one thread, the looker,
+#: until a limit has passed; only then is it handed to a watchdog thread of its own
+#: (:func:`_in_watchdog`), which interrupts the case. Handing every alarm to a watchdog as it
+#: started woke that thread twice an alarm (at the start and at the stop), about 30 µs of CPU
+#: of an alarm's 50, and almost every alarm ends long before a limit could pass: now starting
+#: and stopping wakes nobody. The looker wakes when the soonest of them could first be due
+#: (:meth:`Alarm._next_look`, as the watchdog's own wait was), looks at those due for a look,
+#: and sleeps again; a new alarm that could be due before that wakes it (``_wake``: when it
+#: next looks, ``inf`` while it waits for an alarm).
+_watched: dict = {}  # alarm -> True; the alarm's ``_look_at`` holds when to look at it next
+_looking = threading.Condition()
+_looker = None
+_wake = math.inf
+
+
+def _look() -> None:
+    """The looker's loop (see ``_watched``)."""
+    global _wake
+    with _looking:
+        while True:
+            now = time.perf_counter()
+            soonest = math.inf
+            for alarm in list(_watched):
+                at = alarm._look_at
+                if at <= now:
+                    try:
+                        why = alarm.due()
+                    except Exception:  # never the looker's end: the other alarms' limits hold
+                        why = None
+                    if why is not None:
+                        if _watched.pop(alarm, None) is not None:  # not stopped meanwhile
+                            _in_watchdog(alarm._firing(why))
+                        continue
+                    at = alarm._look_at = now + alarm._next_look()
+                soonest = min(soonest, at)
+            _wake = soonest
+            _looking.wait(None if soonest == math.inf else soonest - now)
+
+
+def _watch(alarm) -> None:
+    """Have the looker watch ``alarm`` (started just now) until it is due or stopped."""
+    global _looker
+    at = alarm._look_at = alarm.begin + alarm._first_look()
+    with _looking:
+        _watched[alarm] = True
+        if _looker is None:
+            _looker = threading.Thread(target=_look, daemon=True, name="teachraster-check-looker")
+            _looker.start()
+        elif at < _wake:
+            _looking.notify()
 
 
 if hasattr(os, "register_at_fork"):
@@ -268,6 +343,15 @@ class Alarm:
             soonest.append(TICK)
         return min(max(min(soonest), 0.005), LONGEST)
 
+    def _first_look(self) -> float:
+        """:meth:`_next_look` at the start (no CPU used, no time passed): no clock read."""
+        soonest = min(self.seconds, self.cap, max(self.wait, TICK))
+        if self.call is not None:
+            soonest = min(soonest, self.call)
+        if self._clock is time.process_time:
+            soonest = min(soonest, TICK)
+        return min(max(soonest, 0.005), LONGEST)
+
     def call_begins(self) -> None:
         """A call of the student's function begins (under :attr:`call`'s limit)."""
         if self.call is not None:
@@ -320,6 +404,7 @@ class Alarm:
         if mode is None:
             return
         if mode in ("signal", "watchdog"):
+            _watched.pop(self, None)  # no lock: one dict operation, whole under the GIL
             with self._lock:
                 self._done.set()
             if mode == "watchdog":
@@ -379,11 +464,13 @@ class Alarm:
         self._lock = threading.Lock()
         self._done = threading.Event()
         self._thread_id = threading.get_ident()
+        _watch(self)
+
+    def _firing(self, why: str):
+        """The watch of this alarm once limit ``why`` has passed, for a watchdog thread of its
+        own: interrupt the case, again every ``TICK`` s, until it has left."""
 
         def watch():
-            while (why := self.due()) is None:
-                if self._done.wait(self._next_look()):
-                    return
             last = None if why == "cpu" else self.cpu()
             while True:
                 with self._lock:
@@ -403,7 +490,7 @@ class Alarm:
                 if self._done.wait(TICK):
                     return
 
-        _in_watchdog(watch)
+        return watch
 
 
 #: the code of :meth:`Alarm._on_collection`, a ``gc.callbacks`` entry: no interrupt is raised there
