@@ -196,6 +196,8 @@ def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="r
             fx, fy = fy, fx
         elif within == "fx for fy":
             fy = fx
+        elif within == "u weights swapped":
+            fx = 1 - fx  # the pair (x0, x0 + 1) read with (fx, 1 − fx)
         elif within == "v weights swapped":
             fy = 1 - fy  # the pair (y0, y0 + 1) read with (fy, 1 − fy)
         hi, wi = max(int(math.ceil(h)), 1), max(int(math.ceil(w)), 1)
@@ -264,6 +266,7 @@ VARIANTS = {
     "fractions exchanged": {"within": "exchanged"},
     "x's fraction along y too": {"within": "fx for fy"},
     "v's weights swapped": {"within": "v weights swapped"},
+    "u's weights swapped": {"within": "u weights swapped"},
     "repeat with fmod": {"wrap_as": "fmod"},
     "rows wrapped with W": {"wrap_as": "other size"},
     "rows tiled under clamp": {"wrap_as": "rows tiled"},
@@ -372,6 +375,8 @@ MISTAKES = {
     "come from y − ⌊y⌋",
     "v's weights swapped": "along v your weights are swapped: the row at or above y weighs "
     "1 − (y − ⌊y⌋), the row below it y − ⌊y⌋",
+    "u's weights swapped": "along u your weights are swapped: the column at or left of x "
+    "weighs 1 − (x − ⌊x⌋), the column right of it x − ⌊x⌋",
     "repeat with fmod": "your row or column index is negative: C's remainder (`math.fmod`, "
     "`np.fmod`) keeps the sign; 'repeat' needs Python's %, which gives −1 % W = W − 1",
     "rows wrapped with W": "you wrapped the rows modulo W and the columns modulo H: rows repeat "
