@@ -196,6 +196,7 @@ def test_the_capstone_takes_texel_weights_and_7_3s_given_filters():
     assert "Use your own `bilinear` for each level" not in text
     assert "your `trilinear` calls your `bilinear`" not in text
     assert "Exercise 7.2: `texel_weights(sizes, uv, lod, wrap)`" in text
+    assert 'ex.check("texel_weights", texel_weights)' in text  # where the texels are judged
     ex7_text = " ".join(" ".join("".join(c["source"]) for c in ex7["cells"]).split())
     assert "12.7 holds this cell already: copy your `texel_weights` there" in ex7_text
 
