@@ -47,14 +47,36 @@ SLIPS = {
 }
 
 
+#: The bilinear solution the capstone's 12.7 held before r497 (12.7 now takes exercise 7.2's
+#: texel_weights and 7.3's given filters): the old bilinear check still runs (the capstone's
+#: diagnosis), and these slips are made in it.
+OLD_BILINEAR = '''
+def bilinear(texture, uv, wrap):
+    """The texture filtered bilinearly at uv = (u, v)."""
+    tex = np.asarray(texture, dtype=float)
+    h, w = tex.shape[:2]
+    x, y = uv[0] * w - 0.5, uv[1] * h - 0.5  # texel centres on integers
+    x0, y0 = np.floor(x), np.floor(y)
+    fx, fy = x - x0, y - y0
+    cols, rows = np.array([x0, x0 + 1], dtype=int), np.array([y0, y0 + 1], dtype=int)
+    if wrap == "repeat":
+        cols, rows = cols % w, rows % h
+    else:
+        cols, rows = np.clip(cols, 0, w - 1), np.clip(rows, 0, h - 1)
+    top = (1 - fx) * tex[rows[0], cols[0]] + fx * tex[rows[0], cols[1]]
+    bottom = (1 - fx) * tex[rows[1], cols[0]] + fx * tex[rows[1], cols[1]]
+    return (1 - fy) * top + fy * bottom
+'''
+
+
 def solution_with(notebook: str, edits, name: str = "bilinear"):
-    """Function ``name`` of ``notebook``'s solution cell ``<name>_solution``, with each (old,
-    new) edit made once (a student's slip)."""
+    """Function ``name`` of ``notebook``'s solution cell ``<name>_solution`` (for bilinear, the
+    old solution: the capstone's cell now holds texel_weights), each (old, new) edit made once."""
     cells = json.loads((NOTEBOOKS / notebook).read_text())["cells"]
     grade = f"{name}_solution"
-    source = next(
-        "".join(c["source"]) for c in cells if c["metadata"]["nbgrader"]["grade_id"] == grade
-    )
+    sources = ["".join(c["source"]) for c in cells
+               if c["metadata"]["nbgrader"]["grade_id"] == grade]  # fmt: skip
+    source = OLD_BILINEAR if name == "bilinear" else sources[0]
     for old, new in edits:
         assert source.count(old) == 1, old
         source = source.replace(old, new)

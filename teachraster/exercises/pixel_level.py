@@ -152,6 +152,9 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "max(H, W) for both": (
             None if h == wt else _log2(max(h, wt) * max(np.hypot(*ddx), np.hypot(*ddy)))
         ),
+        # r497 H2: W (or H) for both axes, as on a square texture, was told the generic hint
+        "W for both": None if h == wt else _log2(wt * max(np.hypot(*ddx), np.hypot(*ddy))),
+        "H for both": None if h == wt else _log2(h * max(np.hypot(*ddx), np.hypot(*ddy))),
         "u alone": _log2(max(abs(ddx[0]), abs(ddy[0])) * wt),
         "v alone": _log2(max(abs(ddx[1]), abs(ddy[1])) * h),
         "ddx alone": lod((ddx, ddy), combine="x only"),
@@ -317,6 +320,14 @@ MISTAKES = {
         f"you scaled both u and v by max(H, W) = {max(a[3])}: u counts the W = {a[3][1]} texels "
         f"of a row and v the H = {a[3][0]} texels of a column, so a step (du, dv) crosses "
         "(du·W, dv·H) texels"
+    ),
+    "W for both": lambda a, e, g: (
+        f"you scaled both u and v by W = {a[3][1]}, as if the texture were square: v counts the "
+        f"H = {a[3][0]} texels of a column, so a step (du, dv) crosses (du·W, dv·H) texels"
+    ),
+    "H for both": lambda a, e, g: (
+        f"you scaled both u and v by H = {a[3][0]}, as if the texture were square: u counts the "
+        f"W = {a[3][1]} texels of a row, so a step (du, dv) crosses (du·W, dv·H) texels"
     ),
     "W − 1 and H − 1": lambda a, e, g: (
         f"you scaled u by W − 1 = {a[3][1] - 1} and v by H − 1 = {a[3][0] - 1}: a texture of W "

@@ -89,6 +89,10 @@ def reference(sizes, uv, lod, wrap) -> dict[tuple[int, int, int], float]:
 
 # -- the mistakes: a fetch with knobs ----------------------------------------------------------
 def _index(i: int, n: int, wrap: str, how: str | None) -> int:
+    if how == "fmod" and wrap == "repeat":  # C's remainder: keeps the sign (r497)
+        return int(math.fmod(i, n))
+    if how == "raw":  # no index wrapped at all (the (u, v) reduced instead)
+        return i
     if how == "mod n-1" and wrap == "repeat":
         return i % max(n - 1, 1)
     if how == "clip n" and wrap == "clamp":
@@ -102,6 +106,10 @@ def _index(i: int, n: int, wrap: str, how: str | None) -> int:
 
 def _levels(q: int, lod: float, how: str) -> list[tuple[int, float]] | None:
     lam = min(max(lod, 0.0), q)
+    if how == "clamp q-1":  # r497: λ clamped to [0, q − 1]
+        lam = min(max(lod, 0.0), max(q - 1, 0))
+    elif how == "abs":  # r497: |λ|
+        lam = min(abs(lod), q)
     if how == "unclamped":
         lower = math.floor(lod)
         return [(lower, 1 - (lod - lower)), (lower + 1, lod - lower)]
@@ -127,7 +135,8 @@ def _levels(q: int, lod: float, how: str) -> list[tuple[int, float]] | None:
 
 
 def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="right",
-                 wrap_as=None, levels="right", merge="add", keys="rc", uv_as="right"):  # fmt: skip
+                 wrap_as=None, levels="right", merge="add", keys="rc", uv_as="right",
+                 coord="right", within="right"):  # fmt: skip
     """A trilinear fetch's texel weights (float64) with a knob turned for each mistake; the
     defaults give :func:`reference`'s answer. None where the mistake raises (a level beyond
     the pyramid).
@@ -140,7 +149,10 @@ def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="r
     out: dict[tuple[int, int, int], float] = {}
     mode = {"swapped": {"repeat": "clamp", "clamp": "repeat"}.get(wrap), "clamp": "clamp",
             "repeat": "repeat"}.get(wrap_as, wrap)  # fmt: skip
-    how = wrap_as if wrap_as in ("mirror", "mod n-1", "clip n") else None
+    how = wrap_as if wrap_as in ("mirror", "mod n-1", "clip n", "fmod") else None
+    axes = {"rows tiled": ("repeat", mode), "rows clamped": ("clamp", mode)}.get(wrap_as)
+    if wrap_as in ("rows tiled", "rows clamped") and axes[0] == wrap:
+        return None  # the same as the right answer for this mode: says nothing
     if how == "mirror" and wrap == "repeat":
         how = None
     for level, weight in split:
@@ -153,24 +165,60 @@ def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="r
             h, w = (int(n) for n in sizes[0])
         elif size_as == "exact halves":
             h, w = sizes[0][0] / 2**level, sizes[0][1] / 2**level
+        elif size_as == "ceil":  # halved rounding up, from level 0
+            h, w = -(-int(sizes[0][0]) // 2**level), -(-int(sizes[0][1]) // 2**level)
+        elif size_as == "reversed":  # level k's size read from the coarse end
+            h, w = (int(n) for n in sizes[q - level])
         u, v = float(uv[0]), float(uv[1])
         if uv_as == "vu":
             u, v = v, u
         elif uv_as == "per level":
             u, v = u / 2**level, v / 2**level
+        elif uv_as in ("flip u", "flip v"):
+            u, v = (1 - u, v) if uv_as == "flip u" else (u, 1 - v)
+        elif uv_as == "reduced":  # (u, v) taken modulo 1, the indices then not wrapped
+            u, v = (u % 1, v % 1) if wrap == "repeat" else (u, v)
+        elif uv_as == "clamped" and wrap == "clamp":  # (u, v) clamped to [0, 1], then tiled
+            u, v, mode = min(max(u, 0.0), 1.0), min(max(v, 0.0), 1.0), "repeat"
         x, y = u * w + origin, v * h + origin
+        if coord == "stretched":  # u·(W − 1): the first and last centres at u = 0 and 1
+            x, y = u * (w - 1), v * (h - 1)
+        elif coord == "u by H":
+            x = u * h + origin
+        elif coord == "halved level 0":  # level 0's W / 2ᵏ (2.5 for 5 → 2), wrapped by sizes
+            x, y = u * sizes[0][1] / 2**level + origin, v * sizes[0][0] / 2**level + origin
         rounding = {"floor": math.floor, "int": int, "round": lambda t: math.floor(t + 0.5)}
         x0, y0 = rounding[floor](x), rounding[floor](y)
         fx, fy = x - x0, y - y0
+        if within == "nearest":  # the nearest centre alone (NEAREST_MIPMAP_LINEAR)
+            x0, y0, fx, fy = math.floor(x + 0.5), math.floor(y + 0.5), 0.0, 0.0
+        elif within == "exchanged":  # x's fraction along y and y's along x
+            fx, fy = fy, fx
+        elif within == "fx for fy":
+            fy = fx
+        elif within == "u weights swapped":
+            fx = 1 - fx  # the pair (x0, x0 + 1) read with (fx, 1 − fx)
+        elif within == "v weights swapped":
+            fy = 1 - fy  # the pair (y0, y0 + 1) read with (fy, 1 − fy)
         hi, wi = max(int(math.ceil(h)), 1), max(int(math.ceil(w)), 1)
         for r, wy in ((y0, 1 - fy), (y0 + 1, fy)):
             for c, wx in ((x0, 1 - fx), (x0 + 1, fx)):
                 part = weight * wy * wx
                 if part == 0 and merge != "assign zeros":
                     continue
-                key = (level, _index(r, hi, mode, how), _index(c, wi, mode, how))
+                rmode, cmode = axes if axes else (mode, mode)
+                rhow = "raw" if uv_as == "reduced" and wrap == "repeat" else how
+                key = (level, _index(r, hi, rmode, rhow), _index(c, wi, cmode, rhow))
+                if wrap_as == "other size" and wrap == "repeat":  # rows modulo W, columns H
+                    key = (level, _index(r, wi, mode, None), _index(c, hi, mode, None))
                 if keys == "cr":
                     key = (level, key[2], key[1])
+                elif keys == "rc level":
+                    key = (key[1], key[2], level)
+                elif keys == "from coarse":
+                    key = (q - level, key[1], key[2])
+                elif keys == "lower":
+                    key = (split[0][0], key[1], key[2])
                 out[key] = out.get(key, 0.0) + part if merge == "add" else part
     return out
 
@@ -202,6 +250,30 @@ VARIANTS = {
     "no level weight": {"levels": "no level weight"},
     "overwritten": {"merge": "assign zeros"},
     "overwritten, zero weights skipped": {"merge": "assign"},
+    # r497: each was told only the generic question, or a symptom
+    "λ clamped to [0, q − 1]": {"levels": "clamp q-1"},
+    "|λ|": {"levels": "abs"},
+    "sizes halved rounding up": {"size_as": "ceil"},
+    "sizes read from the coarse end": {"size_as": "reversed"},
+    "u flipped": {"uv_as": "flip u"},
+    "v flipped": {"uv_as": "flip v"},
+    "(u, v) wrapped, not the indices": {"uv_as": "reduced"},
+    "clamp as (u, v) clamped, then tiled": {"uv_as": "clamped"},
+    "u·(W − 1)": {"coord": "stretched"},
+    "u·H": {"coord": "u by H"},
+    "level 0's size halved in real numbers": {"coord": "halved level 0"},
+    "nearest texel on each level": {"within": "nearest"},
+    "fractions exchanged": {"within": "exchanged"},
+    "x's fraction along y too": {"within": "fx for fy"},
+    "v's weights swapped": {"within": "v weights swapped"},
+    "u's weights swapped": {"within": "u weights swapped"},
+    "repeat with fmod": {"wrap_as": "fmod"},
+    "rows wrapped with W": {"wrap_as": "other size"},
+    "rows tiled under clamp": {"wrap_as": "rows tiled"},
+    "rows clamped under repeat": {"wrap_as": "rows clamped"},
+    "keys (row, col, level)": {"keys": "rc level"},
+    "levels numbered from the last": {"keys": "from coarse"},
+    "both levels keyed as ⌊λ⌋": {"keys": "lower"},
 }
 
 
@@ -269,6 +341,55 @@ MISTAKES = {
     "weights add up",
     "overwritten": "a texel read twice (wrapped onto itself at the border, or on a level one "
     "texel high or wide) kept the weight of its last read only: its weights add up",
+    "λ clamped to [0, q − 1]": "you clamped λ to [0, q − 1]: the last level q (1 × 1) is a "
+    "level too, so λ is clamped to [0, q], and at λ ≥ q the fetch reads level q alone",
+    "|λ|": "you took |λ|: a negative λ (the texture magnified) is clamped to 0, level 0 alone, "
+    "not turned positive",
+    "sizes halved rounding up": "your levels are level 0's size halved rounding up (5 → 3 → 2): "
+    "GL halves rounding down (5 → 2 → 1); use each level's own (H, W) from `sizes`",
+    "sizes read from the coarse end": "you read level k's size from the other end of `sizes`: "
+    "`sizes` runs from level 0 (the finest) to the 1 × 1 level",
+    "u flipped": "you flipped u (1 − u): the texture's column 0 lies at u = 0, so u is taken "
+    "as it comes",
+    "v flipped": "you flipped v (1 − v): the texture's row 0 lies at v = 0 (`texture[row, col]`, "
+    "v down the rows; GL's first row of texel data is at t = 0), so v is taken as it comes",
+    "(u, v) wrapped, not the indices": "you wrapped (u, v) into [0, 1) but not the texel "
+    "indices: near the border the pair of centres around x still runs one past the first or "
+    "last column; wrap the indices (modulo W) instead",
+    "clamp as (u, v) clamped, then tiled": "with 'clamp' you clamped (u, v) to [0, 1] and then "
+    "tiled the indices: at u = 0 the pair around x = −½ still reads the last column; clamp the "
+    "indices to [0, W − 1] instead",
+    "u·(W − 1)": "you put the first and last texel centres at u = 0 and u = 1 (x = u·(W − 1)): "
+    "texel c's centre lies at u = (c + ½)/W, half a texel in from the border",
+    "u·H": "you scaled u by the level's H: u runs along the W columns (x = u·W − ½), v along "
+    "the H rows",
+    "level 0's size halved in real numbers": "you scaled (u, v) by level 0's size halved 2ᵏ "
+    "times in real numbers: a level's size is whole texels, the one `sizes` gives (GL's floor "
+    "rule: 5 → 2 → 1, not 2.5)",
+    "nearest texel on each level": "you read the nearest texel of each level alone "
+    "(GL's NEAREST_MIPMAP_LINEAR): LINEAR_MIPMAP_LINEAR blends the four texels around (u, v) "
+    "on each level",
+    "fractions exchanged": "the two fractions are exchanged: x − ⌊x⌋ weighs the columns (along "
+    "u) and y − ⌊y⌋ the rows",
+    "x's fraction along y too": "you weighted the rows with x's fraction too: the rows' weights "
+    "come from y − ⌊y⌋",
+    "v's weights swapped": "along v your weights are swapped: the row at or above y weighs "
+    "1 − (y − ⌊y⌋), the row below it y − ⌊y⌋",
+    "u's weights swapped": "along u your weights are swapped: the column at or left of x "
+    "weighs 1 − (x − ⌊x⌋), the column right of it x − ⌊x⌋",
+    "repeat with fmod": "your row or column index is negative: C's remainder (`math.fmod`, "
+    "`np.fmod`) keeps the sign; 'repeat' needs Python's %, which gives −1 % W = W − 1",
+    "rows wrapped with W": "you wrapped the rows modulo W and the columns modulo H: rows repeat "
+    "every H, columns every W",
+    "rows tiled under clamp": "with 'clamp' you clamped the columns but tiled the rows: `wrap` "
+    "holds for u and v alike",
+    "rows clamped under repeat": "with 'repeat' you tiled the columns but clamped the rows: "
+    "`wrap` holds for u and v alike",
+    "keys (row, col, level)": "your keys are (row, col, level): the task asks (level, row, col)",
+    "levels numbered from the last": "you numbered the levels from the last: level 0 is the "
+    "finest, the first of `sizes`",
+    "both levels keyed as ⌊λ⌋": "you keyed the texels of level ⌊λ⌋ + 1 as level ⌊λ⌋: each "
+    "texel's key holds its own level",
 }
 
 
@@ -312,7 +433,104 @@ def _float16_fits(args, expected, got) -> bool | None:
     sizes, uv = args[0], args[1]
     h, w = sizes[0]
     scale = max(abs(float(uv[0])) * w, abs(float(uv[1])) * h, 1.0)
-    return _close(got, expected, 2.0**-10 * scale) and not _close(got, expected, tolerance(args))
+    return (_close(got, expected, 2.0**-10 * scale) and not _close(got, expected, tolerance(args))
+            and not _split_alone(args, expected, got))  # fmt: skip
+
+
+# -- r497: an unnamed failure split by level, then by axis ----------------------------------
+def _per_level(weights: dict) -> dict[int, float]:
+    out: dict[int, float] = {}
+    for (k, _, _), w in weights.items():
+        out[k] = out.get(k, 0.0) + w
+    return out
+
+
+def _level_alone(args, k: int) -> dict:
+    """Level k's bilinear weights (summing to 1), keyed (k, row, col)."""
+    sizes, uv, _, wrap = args
+    return {(k, r, c): w for (_, r, c), w in reference([sizes[k]], uv, 0, wrap).items()}
+
+
+def _own_level(got: dict, k: int, total: float) -> dict:
+    return {key: w / total for key, w in got.items() if key[0] == k}
+
+
+def _said(split: dict) -> str:
+    shown = [f"level {k} {num(split[k])}" for k in sorted(split) if abs(split[k]) > TOL]
+    return ", ".join(shown) or "nothing"
+
+
+def _split_fits(args, expected, got) -> bool | None:
+    if not isinstance(got, dict) or _bad_key(args[0], got) is not None:
+        return None
+    mine, right = _per_level(got), _per_level(expected)
+    return any(abs(mine.get(k, 0.0) - right.get(k, 0.0)) > 4 * tolerance(args)
+               for k in set(mine) | set(right))  # fmt: skip
+
+
+def _split_words(args, expected, got) -> str:
+    sizes, _, lod, _ = args
+    q = len(sizes) - 1
+    mine, right = _per_level(got), _per_level(expected)
+    lam = min(max(float(lod), 0.0), q)
+    words = (f"your texels add up, level by level, to {_said(mine)}, where λ = {num(lod)} "
+             f"(kept within [0, q] = [0, {q}]: {num(lam)}) weighs {_said(right)}")  # fmt: skip
+    levels = sorted(k for k in mine if abs(mine[k]) > TOL)
+    if len(levels) == 2 and levels[1] == levels[0] + 1 and abs(sum(mine.values()) - 1) <= 1e-6:
+        words += f" (your split is that of λ = {num(levels[0] + mine[levels[1]])})"
+    inner = all(_close(_own_level(got, k, mine[k]), _level_alone(args, k), 4 * tolerance(args))
+                for k in levels)  # fmt: skip
+    if inner and levels:
+        words += ": within each level your texels are right, the split between levels is not"
+    return words
+
+
+def _split_alone(args, expected: dict, got: dict) -> bool:
+    """Every level's own texels right, scaled by a level weight that is not the right one
+    rounded to float16 (r497 M2: λ's fraction rounded to 2 decimals was told "float16": only
+    the split between the levels is off)."""
+    mine, right = _per_level(got), _per_level(expected)
+    if _bad_key(args[0], got) is not None or any(abs(m) <= TOL for m in mine.values()):
+        return False
+    if all(abs(mine[k] - float(np.float16(right.get(k, 0.0)))) <= 2.0**-11 for k in mine):
+        return False
+    return all(_close(_own_level(got, k, mine[k]), _level_alone(args, k), tolerance(args))
+               for k in mine)  # fmt: skip
+
+
+def _marginal(weights: dict, axis: int) -> dict[int, float]:
+    out: dict[int, float] = {}
+    for key, w in weights.items():
+        out[key[axis]] = out.get(key[axis], 0.0) + w
+    return {i: w for i, w in out.items() if abs(w) > TOL}
+
+
+def _axis_fits(args, expected, got) -> bool | None:
+    if not isinstance(got, dict) or _bad_key(args[0], got) is not None:
+        return None
+    return not _split_fits(args, expected, got)
+
+
+def _axis_words(args, expected, got) -> str:
+    sizes = args[0]
+    right = _per_level(expected)
+    tol = 4 * tolerance(args)
+    for k in sorted(right):
+        mine, theirs = _own_level(got, k, right[k]), _level_alone(args, k)
+        if _close(mine, theirs, tol):
+            continue
+        h, w = sizes[k]
+        parts = []
+        for axis, name in ((2, "along u (columns)"), (1, "along v (rows)")):
+            a, b = _marginal(mine, axis), _marginal(theirs, axis)
+            if _close(a, b, tol):
+                parts.append(f"{name} yours are right")
+            else:
+                said = lambda d: ", ".join(f"{i}: {num(d[i])}" for i in sorted(d)) or "none"  # noqa: E731
+                parts.append(f"{name} the level's weights are {{{said(b)}}}, yours {{{said(a)}}}")
+        return (f"level {k}'s weight is right, its texels are not: on level {k} ({h} × {w}), "
+                + "; ".join(parts))  # fmt: skip
+    return "your texels' weights differ within a level"
 
 
 FLOAT16 = Mistake(
@@ -327,6 +545,8 @@ FLOAT16 = Mistake(
 SYMPTOMS = (
     FLOAT16,
     Mistake("no such texel", _bad_key_words, fits=_bad_key_fits, symptom=True),
+    Mistake("levels weighed wrong", _split_words, fits=_split_fits, symptom=True),
+    Mistake("texels within a level", _axis_words, fits=_axis_fits, symptom=True),
     Mistake("weights do not add up to 1", _sum_words, fits=_sum_fits, symptom=True),
 )
 
@@ -484,12 +704,17 @@ def _rule(args, expected, got) -> str:
 def raised_words(args, error) -> str:
     sizes, _, lod, _ = args
     q = len(sizes) - 1
+    lam = min(max(float(lod), 0.0), q)
+    if "division by zero" in error and lam == math.floor(lam) and (lam == q or q == 0):
+        return (f": λ = {num(lod)} is at or beyond the last level q = {q}, where ⌊λ⌋ and the "
+                "level above it are one level: a division by (upper − lower) = 0? There the "
+                "fetch reads level q alone, with weight 1")  # fmt: skip
     if "by zero" in error:
-        return ("a level 0 texels high or wide: did you halve level 0's size yourself? `sizes` "
+        return (": a level 0 texels high or wide: did you halve level 0's size yourself? `sizes` "
                 "gives each level's own (H, W), at least 1 × 1 (GL halves and rounds down, but "
                 "never below 1)")  # fmt: skip
     if "index out of range" in error and not 0 <= lod < q:
-        return (f"λ = {num(lod)} lies outside the pyramid's levels 0 to q = {q}: what does "
+        return (f": λ = {num(lod)} lies outside the pyramid's levels 0 to q = {q}: what does "
                 "the fetch do with such a λ before it chooses levels?")  # fmt: skip
     return ""
 
