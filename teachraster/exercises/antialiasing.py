@@ -589,8 +589,51 @@ def _tolerance_words(args, expected, got) -> str:
         f"({num(float(e[k, s]))}) on a {kind_of(v[k], v[(k + 1) % 3])} edge: {side} it, not on "
         "it. With the vertices on the 1/256 grid and the samples on the 1/512 grid E is exact "
         "and never nearer 0 than 1/131072 without being 0: decide E > 0, or E ≥ 0 on top and "
-        "left edges, with no tolerance"
+        f"left edges, with no tolerance{_moved_samples_words(args, got)}"
     )
+
+
+def _moved_samples_words(args, got) -> str:
+    """r499 MN5: sample positions rounded to 4 decimals give the same answers as a tolerance
+    on the check's cases: said beside it where they give this one."""
+    xy, pixel, samples = args
+    points = sample_points(pixel, samples)
+    v = snap(np.asarray(xy, dtype=float))
+    said = []
+    for moved, how in ((np.round(points, 4), "rounded them to 4 decimals"),):
+        gives = covered(v, moved, vertices="exact").mean()
+        if (moved != points).any() and np.isclose(gives, as_fraction(got)):
+            k = int(np.argmax((moved != points).any(axis=1)))
+            said.append(f"{how} (sample {k} {exact(points[k])} became {exact(moved[k])})")
+    if not said:
+        return ""
+    return (
+        f"; or, with the same answers here, you moved the sample positions: {' or '.join(said)}; "
+        "a sample lies exactly where its offset puts it"
+    )
+
+
+def _half_points(xy, pixel, samples):
+    """r499 MN6: the sample positions computed in float16 (156.001953125 held as 156)."""
+    row, col = pixel
+    half = (np.asarray(samples, np.float16) + np.array([col, row], np.float16)).astype(float)
+    return float(covered(snap(np.asarray(xy, dtype=float)), half, vertices="exact").mean())
+
+
+def _half_words(args, expected, got) -> str:
+    _, pixel, samples = args
+    points = sample_points(pixel, samples)
+    row, col = pixel
+    half = (np.asarray(samples, np.float16) + np.array([col, row], np.float16)).astype(float)
+    k = int(np.argmax((half != points).any(axis=1)))
+    return (
+        f"you computed the sample positions in float16 (11 significant bits): sample {k} "
+        f"{exact(points[k])} became {exact(half[k])}; a sample lies exactly where its offset "
+        "puts it: compute in float64"
+    )
+
+
+HALF_POINTS = Mistake("float16 samples", _half_words, gives=_half_points, only_whole=True)
 
 
 TOLERANCE = Mistake("tolerance on E", _tolerance_words, fits=_tolerance_fits, only_whole=True)
@@ -1115,7 +1158,7 @@ ROUNDED_SAMPLES = [*(_rounded_samples(d) for d in DECIMALS),
 #: r423: before TOLERANCE, which also gives the sliver's and the 4K triangle's answers (each
 #: is named only where it gives every answer of the check, so never for a real tolerance)
 COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
-                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, TOLERANCE,
+                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, HALF_POINTS, TOLERANCE,
                      *ROUNDED_SAMPLES]  # fmt: skip
 
 
