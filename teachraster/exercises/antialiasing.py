@@ -133,6 +133,11 @@ R423_HARD = [
     # area is 0 in float32 (−0.078125 px² exactly), a sample on its top-left edge
     ("a long sliver, its area 0 in float32, a sample on a top-left edge",
      [[0, 0], [700, 940], [1400.01171875, 1880.015625]], (47, 35), [[0, 0]]),
+    # r499 MN6: sample positions in float16 were told "a tolerance" (they moved only the
+    # 512 px edge's sample): row 40, where float16 keeps 1/32 px, a sample 1/512 px above a
+    # bottom edge, E = 1/64 px² (no tolerance reaches it), moved below it by float16
+    ("a sample 1/512 px inside a bottom edge at row 40",
+     [[0, 30], [8, 40.0234375], [0, 40.0234375]], (40, 2), [[0.5, 11 / 512]]),
 ]  # fmt: skip
 
 
