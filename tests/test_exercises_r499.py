@@ -196,6 +196,10 @@ WRONG = {
 }
 
 COVERAGE_WRONG = {
+    "r482_reshape_transposed": (
+        "\ndef coverage_fraction(xy, pixel, samples):\n    v = snap(np.asarray(xy, dtype=float))\n    area = edge_function(v[0], v[1], v[2])\n    if area == 0:\n        return 0.0\n    if area < 0:\n        v = v[[0, 2, 1]]\n    row, col = pixel\n    points = np.asarray(samples, dtype=float).T.reshape(-1, 2) + [col, row]\n    inside = np.ones(len(points), dtype=bool)\n    for k in range(3):\n        a, b = v[k], v[(k + 1) % 3]\n        e = edge_function(a, b, points)\n        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])\n        inside &= (e >= 0) if top_left else (e > 0)\n    return float(inside.mean())\n",
+        "you paired the coordinates wrongly",
+    ),
     "r482_bary_tol2": (
         "\ndef coverage_fraction(xy, pixel, samples):\n    v = snap(np.asarray(xy, dtype=float))\n    area = edge_function(v[0], v[1], v[2])\n    if area == 0:\n        return 0.0\n    if area < 0:\n        v = v[[0, 2, 1]]\n    row, col = pixel\n    points = np.asarray(samples, dtype=float) + [col, row]\n    inside = np.ones(len(points), dtype=bool)\n    for k in range(3):\n        a, b = v[k], v[(k + 1) % 3]\n        e = edge_function(a, b, points) / abs(area)\n        e = np.where(np.abs(e) < 1e-9, 0.0, e)\n        top_left = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])\n        inside &= (e >= 0) if top_left else (e > 0)\n    return float(inside.mean())\n",
         "a tolerance on E",

@@ -641,6 +641,25 @@ def _half_words(args, expected, got) -> str:
 HALF_POINTS = Mistake("float16 samples", _half_words, gives=_half_points, only_whole=True)
 
 
+def _transposed_points(xy, pixel, samples):
+    """r499 HN12 (r482 HN5): ``samples.T.reshape(-1, 2)``: the x of two samples paired."""
+    row, col = pixel
+    offsets = np.asarray(samples, dtype=float)
+    if len(offsets) < 2:
+        return None
+    points = offsets.T.reshape(-1, 2) + np.array([col, row], dtype=float)
+    return float(covered(snap(np.asarray(xy, dtype=float)), points, vertices="exact").mean())
+
+
+TRANSPOSED_POINTS = Mistake(
+    "samples paired wrong",
+    "you paired the coordinates wrongly (samples.T.reshape(-1, 2) puts two x offsets in one "
+    "sample): sample s is the row samples[s] = (ox, oy), at (col + ox, row + oy)",
+    gives=_transposed_points,
+    only_whole=True,
+)
+
+
 TOLERANCE = Mistake("tolerance on E", _tolerance_words, fits=_tolerance_fits, only_whole=True)
 
 
@@ -1163,7 +1182,8 @@ ROUNDED_SAMPLES = [*(_rounded_samples(d) for d in DECIMALS),
 #: r423: before TOLERANCE, which also gives the sliver's and the 4K triangle's answers (each
 #: is named only where it gives every answer of the check, so never for a real tolerance)
 COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
-                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, HALF_POINTS, TOLERANCE,
+                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, HALF_POINTS, TRANSPOSED_POINTS,
+                     TOLERANCE,
                      *ROUNDED_SAMPLES]  # fmt: skip
 
 
