@@ -133,6 +133,11 @@ R423_HARD = [
     # area is 0 in float32 (−0.078125 px² exactly), a sample on its top-left edge
     ("a long sliver, its area 0 in float32, a sample on a top-left edge",
      [[0, 0], [700, 940], [1400.01171875, 1880.015625]], (47, 35), [[0, 0]]),
+    # r499 MN6: sample positions in float16 were told "a tolerance" (they moved only the
+    # 512 px edge's sample): row 40, where float16 keeps 1/32 px, a sample 1/512 px above a
+    # bottom edge, E = 1/64 px² (no tolerance reaches it), moved below it by float16
+    ("a sample 1/512 px inside a bottom edge at row 40",
+     [[0, 30], [8, 40.0234375], [0, 40.0234375]], (40, 2), [[0.5, 11 / 512]]),
 ]  # fmt: skip
 
 
@@ -589,8 +594,70 @@ def _tolerance_words(args, expected, got) -> str:
         f"({num(float(e[k, s]))}) on a {kind_of(v[k], v[(k + 1) % 3])} edge: {side} it, not on "
         "it. With the vertices on the 1/256 grid and the samples on the 1/512 grid E is exact "
         "and never nearer 0 than 1/131072 without being 0: decide E > 0, or E ≥ 0 on top and "
-        "left edges, with no tolerance"
+        f"left edges, with no tolerance{_moved_samples_words(args, got)}"
     )
+
+
+def _moved_samples_words(args, got) -> str:
+    """r499 MN5: sample positions rounded to 4 decimals give the same answers as a tolerance
+    on the check's cases: said beside it where they give this one."""
+    xy, pixel, samples = args
+    points = sample_points(pixel, samples)
+    v = snap(np.asarray(xy, dtype=float))
+    said = []
+    for moved, how in ((np.round(points, 4), "rounded them to 4 decimals"),):
+        gives = covered(v, moved, vertices="exact").mean()
+        if (moved != points).any() and np.isclose(gives, as_fraction(got)):
+            k = int(np.argmax((moved != points).any(axis=1)))
+            said.append(f"{how} (sample {k} {exact(points[k])} became {exact(moved[k])})")
+    if not said:
+        return ""
+    return (
+        f"; or, with the same answers here, you moved the sample positions: {' or '.join(said)}; "
+        "a sample lies exactly where its offset puts it"
+    )
+
+
+def _half_points(xy, pixel, samples):
+    """r499 MN6: the sample positions computed in float16 (156.001953125 held as 156)."""
+    row, col = pixel
+    half = (np.asarray(samples, np.float16) + np.array([col, row], np.float16)).astype(float)
+    return float(covered(snap(np.asarray(xy, dtype=float)), half, vertices="exact").mean())
+
+
+def _half_words(args, expected, got) -> str:
+    _, pixel, samples = args
+    points = sample_points(pixel, samples)
+    row, col = pixel
+    half = (np.asarray(samples, np.float16) + np.array([col, row], np.float16)).astype(float)
+    k = int(np.argmax((half != points).any(axis=1)))
+    return (
+        f"you computed the sample positions in float16 (11 significant bits): sample {k} "
+        f"{exact(points[k])} became {exact(half[k])}; a sample lies exactly where its offset "
+        "puts it: compute in float64"
+    )
+
+
+HALF_POINTS = Mistake("float16 samples", _half_words, gives=_half_points, only_whole=True)
+
+
+def _transposed_points(xy, pixel, samples):
+    """r499 HN12 (r482 HN5): ``samples.T.reshape(-1, 2)``: the x of two samples paired."""
+    row, col = pixel
+    offsets = np.asarray(samples, dtype=float)
+    if len(offsets) < 2:
+        return None
+    points = offsets.T.reshape(-1, 2) + np.array([col, row], dtype=float)
+    return float(covered(snap(np.asarray(xy, dtype=float)), points, vertices="exact").mean())
+
+
+TRANSPOSED_POINTS = Mistake(
+    "samples paired wrong",
+    "you paired the coordinates wrongly (samples.T.reshape(-1, 2) puts two x offsets in one "
+    "sample): sample s is the row samples[s] = (ox, oy), at (col + ox, row + oy)",
+    gives=_transposed_points,
+    only_whole=True,
+)
 
 
 TOLERANCE = Mistake("tolerance on E", _tolerance_words, fits=_tolerance_fits, only_whole=True)
@@ -1115,7 +1182,8 @@ ROUNDED_SAMPLES = [*(_rounded_samples(d) for d in DECIMALS),
 #: r423: before TOLERANCE, which also gives the sliver's and the 4K triangle's answers (each
 #: is named only where it gives every answer of the check, so never for a real tolerance)
 COVERAGE_MISTAKES = [COVERAGE_KNOBS, TIE_KNOBS, ALONE_KNOBS, ONE_EDGE_KNOBS, *GRID_MISTAKES,
-                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, TOLERANCE,
+                     *R423_MISTAKES, *R443_MISTAKES, *R482_MISTAKES, HALF_POINTS, TRANSPOSED_POINTS,
+                     TOLERANCE,
                      *ROUNDED_SAMPLES]  # fmt: skip
 
 

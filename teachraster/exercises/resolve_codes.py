@@ -93,6 +93,9 @@ def _cases(rng, word):
         ("black on white, S = 16", 15, 0, 255, 16),
         ("1 sample", 1, 30, 240, 1),
         ("2 samples, a dark triangle on a mid grey", 1, 20, 128, 2),
+        # r499 WP1, WP2: codes over 256 give [] on the first, float16 light on the second
+        ("2 samples, a light triangle on a dark grey", 1, 162, 14, 2),
+        ("2 samples, two mid greys", 1, 86, 128, 2),
     ]  # fmt: skip
     out = [case(*c) for c in hard]
     n = 0
@@ -210,6 +213,135 @@ def _several_words(args, expected, got) -> str:
     )
 
 
+# -- r499: curves, roundings and tolerances the shape words stood in for ----------------------
+def _nolinear_decode(c):
+    return ((np.asarray(c, dtype=float) + 0.055) / 1.055) ** 2.4
+
+
+def _nolinear_encode(x):
+    return 1.055 * np.asarray(x, dtype=float) ** (1 / 2.4) - 0.055
+
+
+def _curves(decode=_decode, encode=_encode, scale=255):
+    """The forward code with other curves (or codes over ``scale``), rounded."""
+
+    def code_of(k, fg, bg, s):
+        light = (k * decode(fg / scale) + (s - k) * decode(bg / scale)) / s
+        return int(np.round(float(encode(light)) * scale))
+
+    return _matching(code_of)
+
+
+def _float16_light(k, fg, bg, s):
+    h = np.float16
+    light = h((h(k) * h(_decode(fg / 255)) + h(s - k) * h(_decode(bg / 255))) / h(s))
+    return int(np.round(float(_encode(float(light))) * 255))
+
+
+def _within(width):
+    def gives(code, fg, bg, s):
+        return tuple(float(k) for k in range(s + 1)
+                     if abs(forward_value(k, fg, bg, s) - code) < width)  # fmt: skip
+
+    return gives
+
+
+def _light_within(code, fg, bg, s):
+    lf, lb, lc = _decode(fg / 255), _decode(bg / 255), _decode(code / 255)
+    return tuple(float(k) for k in range(s + 1)
+                 if abs((k * lf + (s - k) * lb) / s - lc) <= 0.5 / 255)  # fmt: skip
+
+
+def _linear_8bit(k, fg, bg, s):
+    light = (k * _decode(fg / 255) + (s - k) * _decode(bg / 255)) / s
+    return int(np.round(float(light) * 255))
+
+
+def _linear_8bit_gives(code, fg, bg, s):
+    target = int(np.round(float(_decode(code / 255)) * 255))
+    return tuple(float(k) for k in range(s + 1) if _linear_8bit(k, fg, bg, s) == target)
+
+
+def _same_codes(args, expected, got):
+    """fg = bg special-cased: every k shows the one code there."""
+    _, fg, bg, s = args
+    return None if fg != bg else tuple(got) != tuple(expected)
+
+
+def _which_differ(args, expected, got) -> str:
+    """The symptom, where no cause fits: the k missing or extra, each with its code."""
+    code, fg, bg, s = args
+    words = []
+    missing = [k for k in expected if float(k) not in got]
+    extra = [k for k in got if k not in {float(e) for e in expected}]
+    if missing:
+        words.append(f"yours leaves out k = {_ks(missing)[1:-1]}, whose resolve shows {code} too")
+    for k in extra[:3]:
+        kk = int(k) if float(k).is_integer() and 0 <= k <= s else None
+        shown = (
+            f"shows {forward_code(kk, fg, bg, s)}, not {code}"
+            if kk is not None
+            else "is no count 0 … S"
+        )
+        words.append(f"yours holds k = {k:g}, whose resolve {shown}")
+    return ": " + "; ".join(words) + rule(args, expected, got)
+
+
+def _one_sided(g, side):
+    power = (
+        (lambda c: np.asarray(c, float) ** g)
+        if side == "decode"
+        else (lambda x: np.asarray(x, float) ** (1 / g))
+    )
+    return _curves(decode=power) if side == "decode" else _curves(encode=power)
+
+
+R499 = [
+    Mistake("codes over 256", ": you divided the codes by 256 (and multiplied by 256): an 8-bit "
+            "code c stands for c / 255 (255 is white)", gives=_curves(scale=256), only_whole=True),
+    Mistake("float16", ": you held the light in float16 (about 3 significant digits), which "
+            "moves the encoded mean by more than the rounding allows here: compute in float64",
+            gives=_matching(_float16_light), only_whole=True),
+    Mistake("curve without its linear part", ": your sRGB curve has no linear part near black "
+            "(decode: c / 12.92 for c ≤ 0.04045; encode: 12.92·L for L ≤ 0.0031308): use "
+            "srgb_to_linear and linear_to_srgb", gives=_curves(decode=_nolinear_decode)),
+    Mistake("curve without its linear part", ": your sRGB curve has no linear part near black "
+            "(encode: 12.92·L for L ≤ 0.0031308): use linear_to_srgb",
+            gives=_curves(encode=_nolinear_encode)),
+    *(Mistake("power curve", f": you {side}d with a plain power {g} and the other way with "
+              "sRGB's curve: use srgb_to_linear and linear_to_srgb, the exact pair",
+              gives=_one_sided(g, side)) for g in (2.2, 2.4) for side in ("decode", "encode")),
+    Mistake("code rounded up", ": you rounded 255 · encode(…) up (ceil); the target rounds to "
+            "the nearest code", gives=_matching(lambda k, fg, bg, s: int(np.ceil(
+                forward_value(k, fg, bg, s))))),
+    Mistake("a tolerance of a code", ": you took every k within one code of the code shown "
+            "(|255 · encode(…) − code| < 1); the target rounds to the nearest code, so only "
+            "a value within ½ of it shows it", gives=_within(1.0)),
+    Mistake("a tolerance in light", ": you compared the mixed light with the code's own light "
+            "within half a code of light (0.5 / 255); the target rounds the encoded mean, and "
+            "half a code is far more light near white than near black: encode, round, then "
+            "compare codes", gives=_light_within),
+    Mistake("light rounded to 8 bits", ": you rounded the light to 8 bits and compared there; "
+            "the target stores the encoded mean rounded, not the light",
+            gives=_linear_8bit_gives),
+    Mistake("fg = bg", lambda a, e, g: f": the triangle and the background have the same code "
+            f"{a[1]}, so every k shows code {a[0]}: the answer is every k from 0 to S = {a[3]}",
+            fits=_same_codes),
+    Mistake("one code undecoded", ": you decoded the background's code but not the "
+            "triangle's (fg_code / 255 taken as light)", gives=_matching(
+                lambda k, fg, bg, s: int(np.round(255 * float(_encode(
+                    (k * fg / 255 + (s - k) * _decode(bg / 255)) / s))))),
+            ),
+    Mistake("one code undecoded", ": you decoded the triangle's code but not the "
+            "background's (bg_code / 255 taken as light)", gives=_matching(
+                lambda k, fg, bg, s: int(np.round(255 * float(_encode(
+                    (k * _decode(fg / 255) + (s - k) * bg / 255) / s))))),
+            ),
+    Mistake("the k differ", _which_differ, fits=lambda a, e, g: tuple(g) != tuple(e) or None,
+            symptom=True),
+]  # fmt: skip
+
+
 MISTAKES = [
     Mistake("shares in codes", ": you took the share of the pixel in codes (8-bit sRGB numbers) "
             "as if they were light: a screen's codes are encoded, and the resolve mixes light", gives=_in_codes),
@@ -231,7 +363,7 @@ MISTAKES = [
     Mistake("encoded light not decoded", ": you mixed the light but compared it with the code "
             "/ 255 undecoded (or encoded the mix twice)",
             gives=_matching(lambda k, fg, bg, s: int(np.round(255 * _decode(
-                forward_value(k, fg, bg, s) / 255))))),
+                forward_value(k, fg, bg, s) / 255)))), only_whole=True),
     Mistake("every k", ": you returned every k from 0 to S; only the k whose resolve shows "
             "this very code are possible", gives=lambda c, f, b, s: tuple(map(float, range(s + 1)))),
     Mistake("uncovered counted", ": you counted the uncovered samples (S − k), the triangle "
@@ -243,10 +375,11 @@ MISTAKES = [
     Mistake("k = S never tried", ": you tried k = 0 … S − 1 only (range(S)): all S samples "
             "covered is possible too",
             gives=lambda c, f, b, s: tuple(float(k) for k in expected_counts(c, f, b, s)
-                                           if k < s)),
+                                           if k < s), only_whole=True),
     Mistake("k = 0 never tried", ": you tried k = 1 … S only: no sample covered is possible "
             "too", gives=lambda c, f, b, s: tuple(float(k) for k in expected_counts(c, f, b, s)
-                                                  if k > 0)),
+                                                  if k > 0), only_whole=True),
+    *R499,
 ]  # fmt: skip
 
 

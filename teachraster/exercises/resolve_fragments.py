@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..core.blend_factors import linear_to_srgb, srgb_to_linear
 from ..pipeline.render_triangles import Frame
 from .antialiasing import as_colour, draw_resolve_case, same_colour
 from .cases import SEED, fixed_and_drawn
@@ -239,6 +240,108 @@ def _background_once(fr, idx, bg):
     return (total + b) / (len(idx) - u + 1) if u else None
 
 
+# -- r499: typical mistakes the staged question and the rule left unnamed ---------------------
+def _with_uncovered_as(fr, idx, bg, colour):
+    """The right sum with every uncovered sample taken as ``colour``."""
+    _, total, u, _ = _sums(fr, idx, bg)
+    return (total + u * np.asarray(colour, float)) / len(idx)
+
+
+def _white(fr, idx, bg):
+    return _with_uncovered_as(fr, idx, bg, np.ones(3)) if (idx < 0).any() else None
+
+
+def _as_fragment(j):
+    """−1 read as fragment j (np.maximum(i, 0): fragment 0; np.abs(i): fragment 1)."""
+
+    def gives(fr, idx, bg):
+        if not len(fr) or not (idx < 0).any():
+            return None
+        return _with_uncovered_as(fr, idx, bg, fr[min(j, len(fr) - 1)])
+
+    return gives
+
+
+def _as_fragment_words(j):
+    def words(args, expected, got) -> str:
+        fr = args[0]
+        jj = min(j, len(fr) - 1)
+        return (
+            f": your uncovered samples (−1) took fragment {jj}'s colour {vec(fr[jj])} (an index "
+            "clipped or made positive); a sample marked −1 shows no fragment: it is the "
+            f"background {vec(args[2])}"
+        )
+
+    return words
+
+
+def _positional(fr, idx, bg):
+    """np.unique's counts of the indices present, paired with fragments[:len(counts)]."""
+    _, _, u, b = _sums(fr, idx, bg)
+    _, c = np.unique(idx[idx >= 0], return_counts=True)
+    return ((c[:, None] * fr[: len(c)]).sum(axis=0) + u * b) / len(idx) if len(c) else None
+
+
+def _sorted_counts(fr, idx, bg):
+    c, _, u, b = _sums(fr, idx, bg)
+    return ((np.sort(c)[::-1][:, None] * fr).sum(axis=0) + u * b) / len(idx) if len(fr) else None
+
+
+def _paired_words(args, expected, got) -> str:
+    fr, idx, _ = args
+    c = counts(idx, len(fr))
+    return (
+        ": your counts went to other fragments than the samples point at: here fragments 0 … "
+        f"{len(fr) - 1} stand for {', '.join(map(str, c))} samples; fragment j weighs by the "
+        "samples whose index is j (np.unique lists only the indices present: pair its counts "
+        "with fragments[unique], not with fragments[:len(counts)])"
+    )
+
+
+def _expanded_with_bg(fr, idx, bg):
+    out = expanded(fr, idx)
+    out[idx < 0] = bg
+    return out
+
+
+def _in_light(fr, idx, bg):
+    return linear_to_srgb(srgb_to_linear(_expanded_with_bg(fr, idx, bg)).mean(axis=0))
+
+
+def _decoded_mean(fr, idx, bg):
+    return srgb_to_linear(_expanded_with_bg(fr, idx, bg)).mean(axis=0)
+
+
+def _no_fragment_black(fr, idx, bg):
+    return np.zeros(3) if not len(fr) else expected_fragments(fr, idx, bg)
+
+
+def _truncated(fr, idx, bg):
+    return _expanded_with_bg(fr, idx, bg).astype(int).sum(axis=0) / len(idx)
+
+
+R499 = [
+    Mistake("background white", lambda a, e, g: ": your uncovered samples came out white (1, "
+            f"1, 1), not the background {vec(a[2])}: the background is an argument (lesson "
+            "08's cube was cleared to white)", gives=_white),
+    Mistake("−1 as a fragment", _as_fragment_words(0), gives=_as_fragment(0)),
+    Mistake("−1 as a fragment", _as_fragment_words(1), gives=_as_fragment(1)),
+    Mistake("counts paired wrong", _paired_words, gives=_positional),
+    Mistake("counts paired wrong", _paired_words, gives=_sorted_counts),
+    *(Mistake("averaged in light", ": you decoded the colours as sRGB and averaged light: "
+              "6.2's fragments are linear values of a float target, averaged as they are "
+              "(the sRGB target is 6.3's)", gives=g) for g in (_in_light, _decoded_mean)),
+    Mistake("8 bits", ": you rounded the colour to 8 bits (× 255, rounded, / 255): the resolve "
+            "of a float target keeps it unrounded",
+            gives=lambda f, i, b: np.round(expected_fragments(f, i, b) * 255) / 255),
+    Mistake("F = 0 black", lambda a, e, g: ": with no fragment stored (F = 0) every sample is "
+            f"uncovered, so the pixel is the background {vec(a[2])}, not black",
+            gives=_no_fragment_black, only_whole=True),
+    Mistake("colours truncated", ": you truncated the colours to whole numbers (an int array, "
+            "or astype(int)) before summing: channels are fractions in [0, 1]", gives=_truncated),
+]  # fmt: skip
+
+
 MISTAKES = [
     Mistake("index −1 wraps", _wrap_words, gives=_wrapped),
     Mistake("one weight per fragment", _per_fragment_words, gives=_per_fragment),
@@ -268,6 +371,7 @@ MISTAKES = [
     Mistake("divided by 4", lambda a, e, g: f": you divided by 4 whatever S (here S = "
             f"{len(a[1])})", gives=lambda f, i, b: (_sums(f, i, b)[1]
                                                     + _sums(f, i, b)[2] * b) / 4),
+    *R499,
 ]  # fmt: skip
 
 
@@ -280,6 +384,9 @@ def raised(args, error) -> str:
     if f"({len(idx)},1) ({len(fr)},3)" in error.replace(", ", ","):
         return (f" (fragments has F = {len(fr)} rows and sample_fragment S = {len(idx)} "
                 "entries: sample s shows fragments[sample_fragment[s]], not fragments[s])")  # fmt: skip
+    if "negative" in error and (idx < 0).any():  # r499 HN10: np.bincount(sample_fragment)
+        return (" (np.bincount takes no negative numbers, and the uncovered samples are −1: "
+                "count sample_fragment[sample_fragment >= 0] with minlength=F, or shift by one)")  # fmt: skip
     if ("broadcast" in error or "mismatch" in error) and counts(idx, len(fr))[-1] == 0:
         return (" (the last fragment is an orphan here: np.bincount(sample_fragment[... >= 0]) "
                 f"gives {max(int(idx.max()) + 1, 0)} counts, not F = {len(fr)}; "
