@@ -2,7 +2,7 @@
 
 P1: q_quake steered: its stem carried lesson 04's cue ("misses by more the more w changes
 between them") and each choice its reading ("most pixels close, a few far off"). It asks the
-magnitudes bare now; the cue is in its explanation.
+magnitudes bare now; lesson 04's reasoning stays in its explanation.
 S1-S5 (density): cell 4 (313 words), EDGE_TEXT (281), FRONT_TEXT (271), the Summary (391) and
 QUAKE_TEXT's "Texels or pixels" paragraph (a second telling of q_quake's explanation) are cut;
 word budgets hold them at or below the length left.
@@ -39,7 +39,8 @@ def test_p1_q_quake_asks_bare_magnitudes_before_any_hint():
     n16 = ns.subdivided[16]
     assert n16["mean_abs_texels"] < 1 and n16["error"] > 10  # the answer, as printed
     assert ns.quake_answer == "mean under 1 texel, worst over 10 texels"
-    assert "misses by more the more w changes between them" in quake.split("explain=")[1]
+    # lesson 04's reasoning comes after the answer, in the explanation
+    assert "Lesson 04 (section 1) found that an affine guess" in quake.split("explain=")[1]
 
 
 def test_s1_to_s5_word_budgets():
