@@ -17,7 +17,7 @@ from notebook_runs import ROOT, lesson
 NAME = "06_what_accuracy_costs"
 
 # words as the cells' sources or the held texts read (budgets at the length r500 left)
-BUDGETS = {"markdown": 2920, "prices": 240, "summary": 285, "EDGE_TEXT": 200,
+BUDGETS = {"markdown": 2900, "prices": 240, "summary": 285, "EDGE_TEXT": 200,
            "FRONT_TEXT": 245, "QUAKE_TEXT": 310}  # fmt: skip
 
 
