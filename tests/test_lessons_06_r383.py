@@ -44,9 +44,10 @@ def test_s1_no_first_line_names_a_question():
 def test_s3_s4_s5_wording():
     ns = lesson(NAME)
     edge = " ".join(ns.EDGE_TEXT.split())
-    assert "steps a colour's plane equation" in edge and "for any affine function, $E$" in edge
-    assert "OpenGL 4.6's `SUBPIXEL_BITS`, chapter 23's state table" in edge
-    assert "`subPixelPrecisionBits`, *Limits*" in edge and "(Vulkan)" not in edge
+    # r500 S2: the seed is named for the fact (E stepped like any affine function); the
+    # grids' sources stand once, in §6's standards table
+    assert "*Triangle Rasterisation II - Interpolation*" in edge
+    assert "like any affine function" in edge and "(Vulkan)" not in edge
     why = " ".join(ns.SPAN_WHY.split())
     assert "about 4" not in why
     assert f"cuts it nearly 4 times ({ns.cut_low:.2f} at $r = 2$" in why
