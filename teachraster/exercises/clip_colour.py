@@ -730,7 +730,7 @@ def _draw(ax, case, got):
             )
         )
     panel = clip_panels(ax)[0]
-    artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the right colours; "
+    artists.append(panel.set_xlabel(f"{panel.get_xlabel()}\ndiscs: the right colours,\n"
                                     "squares: yours"))  # fmt: skip
     return artists
 
