@@ -40,6 +40,7 @@ from ..pipeline.texturing.texture_filters import mip_level
 from ..pipeline.visibility.zbuffer import passed_on_arrival
 from . import capstone_glass as glass
 from . import capstone_samples as samples
+from . import capstone_texels as texels
 from . import output
 from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
@@ -609,20 +610,33 @@ def _texture(spec, used, reference, row, col) -> str:
     tex = capstone_scene(spec.scene, spec.tiled, spec.tinted).texture
     uv = reference.attr("uv")[row, col]
     head = f"every record of its history agrees; at uv = {vec(uv)}"
-    if "bilinear" in used:
-        ours = sample(tex, uv[None], "bilinear")[0]
-        yours, error = _call(used, "bilinear", tex, uv, "repeat")
-        said = error or f"your bilinear(texture, uv, 'repeat') returned {vec(yours, ours)}"
-        case, also = ((tex, uv, "repeat"), ours, yours), _scene_points(reference, tex)
-        return (f"{head} {said}, the package's bilinear filter gives {vec(ours, yours)}"
-                f"{named_mistake(used, 'bilinear', case=case, also=also)}")  # fmt: skip
-    uvs = reference.layout["uv"]
-    lod = float(mip_level(reference.ddx[row, col, uvs], reference.ddy[row, col, uvs], tex.shape))
-    ours = reference.image[row, col]
-    yours, error = _call(used, "trilinear", mipmap(tex), uv, lod, "repeat")
-    said = error or f"your trilinear(pyramid, uv, {lod:.4g}, 'repeat') returned {vec(yours, ours)}"
-    return (f"{head} {said}, the package's trilinear filter gives {vec(ours, yours)}"
-            f"{named_mistake(used, 'trilinear', case=((mipmap(tex), uv, lod, 'repeat'), ours, yours))}")  # fmt: skip
+    name = "bilinear" if "bilinear" in used else "trilinear"
+    behind = texels.texel_source(used[name])  # r502: 12.7's given filter on texel_weights
+    if name == "bilinear":
+        args = (tex, uv, "repeat")
+        ours, asked = sample(tex, uv[None], "bilinear")[0], "bilinear(texture, uv, 'repeat')"
+    else:
+        uvs = reference.layout["uv"]
+        lod = float(mip_level(reference.ddx[row, col, uvs], reference.ddy[row, col, uvs],
+                              tex.shape))  # fmt: skip
+        args = (mipmap(tex), uv, lod, "repeat")
+        ours, asked = reference.image[row, col], f"trilinear(pyramid, uv, {lod:.4g}, 'repeat')"
+    yours, error = _call(used, name, *args)
+    if behind is None:
+        said = error or f"your {asked} returned {vec(yours, ours)}"
+        also = _scene_points(reference, tex) if name == "bilinear" else ()
+        named = named_mistake(used, name, case=(args, ours, yours), also=also)
+    else:
+        who = f"12.7's {name}, adding up your texel_weights,"
+        said = error.replace(f"your {name}", who, 1) or (
+            f"12.7's {asked}, adding up your texel_weights, returned {vec(yours, ours)}")  # fmt: skip
+        named = _texel_words(behind, name)
+    return f"{head} {said}, the package's {name} filter gives {vec(ours, yours)}{named}"
+
+
+def _texel_words(texel_weights, name: str) -> str:
+    """What exercise 7.2's check says of the ``texel_weights`` behind 12.7's ``name``."""
+    return run_checker(lambda: texels.blame(texel_weights), "") or texels.changed_cell(name)
 
 
 #: Covered pixels of the scene, spread over the frame, at which a named filter mistake must

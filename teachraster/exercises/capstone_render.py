@@ -28,6 +28,7 @@ from ..core.validate import as_int
 from ..pipeline.rendering.render_scenes import render
 from . import capstone_glass as glass
 from . import capstone_samples as samples
+from . import capstone_texels as texels
 from . import output
 from .alarm import CASE_WALL_FACTOR
 from .capstone_explain import CHECKED_AS, check_words, explain_pixel
@@ -349,18 +350,24 @@ def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
     title = f"capstone {spec.name}"
     base = dict(exercise=title, spec=spec, functions=used, reference=reference)
     n = H * W
+    behind = texels.texels_behind(used).get(tracker.name)  # r502: 12.7's given filter
     if outcome.not_implemented:
         return CapstoneReport(failures=[], n_cases=n, not_implemented=True,
-                              unfinished=tracker.name, **base)  # fmt: skip
+                              unfinished="texel_weights" if behind else tracker.name,
+                              **base)  # fmt: skip
     if outcome.error is not None:
-        text = outcome.error.replace("your function", f"your {tracker.name}", 1)
+        who = f"your {tracker.name}" if behind is None else texels.given(tracker.name)
+        text = outcome.error.replace("your function", who, 1)
         # the pipeline calls each function once per pixel by design: the exercises' hint
         # would point at what the student cannot change (r40 12-6)
         text = text.replace(" (a Python call per pixel?)", " (the pipeline calls it once per "
                             "pixel by design, so each call must be quick: a long loop in it?)")  # fmt: skip
         text = text.replace("of the check's", "of the scene's", 1).replace(
             "the check's budget", "the scene's budget")  # fmt: skip
-        if outcome.kind == "raised":
+        if outcome.kind == "raised" and behind is not None:
+            text += run_checker(lambda: texels.blame(behind), "") or texels.changed_cell(
+                tracker.name)  # fmt: skip
+        elif outcome.kind == "raised":
             text += _raised_why(used, tracker.name)
         return CapstoneReport(failures=[Failure(spec.name, text, None, None, kind=outcome.kind)],
                               n_cases=n, **base)  # fmt: skip
@@ -426,7 +433,7 @@ def package_use(used: dict) -> str | None:
     from .capstone_explain import own_report
     from .checks import names
 
-    for name, fn in used.items():
+    for name, fn in _judged(used).items():
         checked = CHECKED_AS.get(name, name)
         if name == "a_buffer":  # no exercise of its own: the package's resolve (r163 12-5)
             note = glass.package_use(fn)
@@ -439,6 +446,19 @@ def package_use(used: dict) -> str | None:
     return None
 
 
+def _judged(used: dict) -> dict:
+    """``used`` with 12.7's given filters replaced by the student's ``texel_weights`` they add
+    up (r502: its own exercise, 7.2, judges it), each function once."""
+    behind = texels.texels_behind(used)
+    out = {}
+    for name, fn in used.items():
+        if name in behind:
+            out.setdefault("texel_weights", behind[name])
+        else:
+            out[name] = fn
+    return out
+
+
 def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
     """Each function on its own exercise's check, whose cases include some drawn afresh:
     a function that only replays answers recorded from the package (right on this scene's
@@ -449,7 +469,7 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
     from .checks import names
 
     out, aside = [], None
-    for name, fn in used.items():
+    for name, fn in _judged(used).items():
         checked = CHECKED_AS.get(name, name)
         if name == "a_buffer":  # no exercise of its own: its own stacks (r148 D12-4)
             said = run_checker(lambda fn=fn: glass.own_cases(fn),
@@ -470,9 +490,12 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
             failed, aside = _on_a_gpu(name, report.failures)
         if failed is not None:
             place = check_words(checked, "own cases")
+            said = failed.explanation
+            if name == "texel_weights":  # r502: behind 12.7's given filters
+                said = f"{said.replace('your function', 'your texel_weights')} ({texels.CHECK_CALL} runs them)"
             out.append(Failure(f"{name} on {check_words(checked, 'own cases', short=True)}",
                                f"your {name} fails {place} (some drawn "
-                               f"afresh for this check): {failed.case}: {failed.explanation}",
+                               f"afresh for this check): {failed.case}: {said}",
                                None, None, kind=failed.kind))  # fmt: skip
     return out, aside
 
@@ -570,8 +593,14 @@ class CapstoneReport(Report):
         return self._with_printed(self._summary())
 
     def _summary(self) -> str:
-        uses = ", ".join(self.spec.uses)
+        behind = texels.texels_behind(self.functions)
+        uses = ", ".join(f"texel_weights (through 12.7's {u})" if u in behind else u
+                         for u in self.spec.uses)  # fmt: skip
         head = f"{self.exercise} ({self.spec.words}; your {uses})"
+        if self.not_implemented and self.unfinished == "texel_weights":
+            return (f"{head}: not implemented yet (texel_weights is not written yet: it raises "
+                    "NotImplementedError; replace `raise NotImplementedError()` in 12.7's cell "
+                    "with your code from exercise 7.2, then run that cell and this one again)")  # fmt: skip
         if self.not_implemented:
             return (f"{head}: not implemented yet ({self.unfinished} raises "
                     "NotImplementedError: replace `raise NotImplementedError()` with your "
