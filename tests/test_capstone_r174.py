@@ -45,7 +45,7 @@ def test_the_linear_light_resolve_of_6_3_is_named_not_sent_to_the_uncovered_shar
     """It was asked what the pixel shows where no triangle covered the sample, which it
     handled right: the space it averages in is the mistake (the samples are light)."""
     text = str(ex.capstone("cube_msaa", **_mine("cube_msaa", resolve=_resolve_as_6_3)))
-    assert "6.3's resolve_srgb" in text and "light already" in text, text
+    assert "lesson 08's sRGB resolve" in text and "light already" in text, text
     assert "where no triangle covered the sample" not in text, text
 
 

@@ -672,9 +672,9 @@ def _resolve(used, reference, row, col) -> str:
 def _srgb_average(colours, ids, background, yours, ours) -> str | None:
     """ "; words" when ``yours`` averages in the wrong space, or None: the samples averaged as
     sRGB-encoded numbers (float, or 8-bit codes) and decoded again (r148 D12-3), or, the other
-    way, decoded as if encoded, averaged and encoded again: exercise 6.3's ``resolve_srgb``,
-    which lesson 08 recommends for encoded samples (r174 12-1). Either was asked about its
-    uncovered samples, which it handled right."""
+    way, decoded as if encoded, averaged and encoded again: lesson 08's sRGB resolve (the old
+    exercise 6.3's ``resolve_srgb``), which lesson 08 recommends for encoded samples (r174
+    12-1). Either was asked about its uncovered samples, which it handled right."""
     try:
         got = np.asarray(yours, dtype=float).reshape(3)
     except (TypeError, ValueError):
@@ -684,12 +684,12 @@ def _srgb_average(colours, ids, background, yours, ours) -> str | None:
     if np.allclose(got, ours, rtol=TOL, atol=TOL):
         return None
     if _as_encoded(linear, got, ours):
-        return ("; you averaged as exercise 6.3's resolve_srgb does: your answer is the "
+        return ("; you averaged as lesson 08's sRGB resolve does: your answer is the "
                 "samples decoded from sRGB, averaged and encoded again "
                 f"{vec(linear_to_srgb(srgb_to_linear(linear).mean(axis=0)))}, where the resolve "
                 f"is their plain mean {vec(ours)}: these samples are light already (the "
-                "pipeline's float colours, not an 8-bit sRGB buffer's), so 6.2's resolve is "
-                "the one wanted here; 6.3's decoding is for samples stored encoded")  # fmt: skip
+                "pipeline's float colours, not an 8-bit sRGB buffer's), so the plain mean (as in "
+                "exercise 6.2) is the one wanted here; decoding is for samples stored encoded")  # fmt: skip
     encoded = linear_to_srgb(np.clip(linear, 0.0, 1.0))
     as_float = srgb_to_linear(encoded.mean(axis=0))
     as_codes = srgb_to_linear(np.round(encoded * 255).mean(axis=0) / 255)
