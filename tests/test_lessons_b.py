@@ -3195,7 +3195,7 @@ def test_09_r246_probes_stated_exercise_linked_overshading_and_held_stripe():
     link = "[exercises/07_texture_filtering.ipynb](exercises/07_texture_filtering.ipynb)"
     for start, end in (("## 5.", "## 6."), ("## 9.", "## Summary")):
         assert any(link in t for t in _09_section(text, start, end)), start
-    assert "parts 7.1 to 7.3" in flat and "part 7.4" in flat
+    assert "parts 7.1 and 7.2" in flat and "part 7.4" in flat
     # M2: in §2, lanes per covered pixel fall as the triangles grow; one-pixel triangles cost
     # nearly a whole quad each, §1's two big triangles almost nothing
     second = " ".join(_09_section(text, "## 2.", "## 3."))
