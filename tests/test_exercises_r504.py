@@ -69,3 +69,13 @@ def test_12_9_says_what_a_sample_id_is():
     text = next("".join(c["source"]) for c in cells if "".join(c["source"]).startswith("## 12.9"))
     assert "the id of the triangle that\ncovers sample k" in text
     assert "not a row of `sample_colours`" in text
+
+
+def _clipped_rows(sample_colours, sample_ids, background):
+    """RAW1 (R06): ids read as rows, clipped so that it never raises (it shows NaN)."""
+    rows, bg = np.asarray(sample_colours, float), np.asarray(background, float)
+    return np.mean([rows[min(i, len(rows) - 1)] if i >= 0 else bg for i in sample_ids], axis=0)
+
+
+def test_ids_read_as_rows_without_raising_are_named_too():
+    assert "not a row of sample_colours" in ids_as_rows({"resolve": _clipped_rows}, "resolve")
