@@ -663,6 +663,7 @@ def _resolve(used, reference, row, col) -> str:
     yours, error = _call(used, "resolve", colours, ids, np.ones(3))
     said = error or f"your resolve returned {vec(yours, ours)}"
     why = _srgb_average(colours, ids, np.ones(3), yours, ours) if not error else None
+    why = why or run_checker(lambda: samples.ids_as_rows(used, "resolve"), "")  # r504 RAW1
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
             f"{said}, the package's resolve gives {vec(ours, yours)}"

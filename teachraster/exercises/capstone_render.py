@@ -364,11 +364,12 @@ def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
                             "pixel by design, so each call must be quick: a long loop in it?)")  # fmt: skip
         text = text.replace("of the check's", "of the scene's", 1).replace(
             "the check's budget", "the scene's budget")  # fmt: skip
-        if outcome.kind == "raised" and behind is not None:
+        if outcome.kind in ("raised", "type", "none") and behind is not None:  # r504 HN1
             text += run_checker(lambda: texels.blame(behind), "") or texels.changed_cell(
                 tracker.name)  # fmt: skip
         elif outcome.kind == "raised":
-            text += _raised_why(used, tracker.name)
+            text += _raised_why(used, tracker.name) or run_checker(
+                lambda: samples.ids_as_rows(used, tracker.name), "")  # fmt: skip
         return CapstoneReport(failures=[Failure(spec.name, text, None, None, kind=outcome.kind)],
                               n_cases=n, **base)  # fmt: skip
     mine = outcome.value

@@ -137,3 +137,39 @@ def as_at_centre(mine, reference) -> bool:
 
 def _xy(xy) -> str:
     return "[" + ", ".join(f"({x:g}, {y:g})" for x, y in xy) + "]"
+
+
+def ids_as_rows(used: dict, name: str) -> str:
+    """r504 RAW1: "; words" where the student's ``resolve`` reads ``sample_ids`` as rows of
+    ``sample_colours`` (exercise 6.2's ``resolve_fragments`` pasted as it is): it raises on a
+    triangle id beyond the samples (or gives another sample's colour), and is right once
+    sample k points at row k; else "".
+
+    >>> def resolve(colours, ids, background):
+    ...     rows = np.asarray(colours)
+    ...     return np.mean([rows[i] if i >= 0 else background for i in ids], axis=0)
+    >>> ids_as_rows({"resolve": resolve}, "resolve")[:42]
+    '; sample_ids[k] is the id of the triangle '
+    """
+    if name != "resolve":
+        return ""
+    colours = np.array([[1.0, 0, 0], [np.nan] * 3, [0, 0, 1.0], [0, 1.0, 0]])
+    ids, background = np.array([5, -1, 5, 7]), np.ones(3)
+    rows = np.where(ids >= 0, np.arange(len(ids)), -1)
+    right = np.where(ids[:, None] >= 0, colours, background).mean(axis=0)
+    try:
+        if np.allclose(used[name](colours, ids, background), right):
+            return ""  # it reads the ids some other way
+    except IndexError:
+        pass
+    except Exception:  # noqa: BLE001 (the student's code: anything may go wrong)
+        return ""
+    try:
+        if not np.allclose(used[name](colours, rows, background), right):
+            return ""
+    except Exception:  # noqa: BLE001 (the student's code: anything may go wrong)
+        return ""
+    return ("; sample_ids[k] is the id of the triangle that covers sample k in the scene (5 or"
+            " 7, say), not a row of sample_colours: sample k's colour is sample_colours[k]. "
+            "As 12.9 says, 6.2's resolve_fragments needs sample k pointing at fragment k: "
+            "np.where(sample_ids >= 0, np.arange(S), -1)")  # fmt: skip
