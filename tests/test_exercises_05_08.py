@@ -377,6 +377,10 @@ def _source(cell):
     return "".join(cell["source"]) if isinstance(cell["source"], list) else cell["source"]
 
 
+#: Checks worth two points (r491: 7.2 `texel_weights` replaced 7.2 and 7.3, a point each).
+TWO_POINTS = {"texel_weights": 2}
+
+
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.name for p in NOTEBOOKS])
 def test_notebook_follows_the_grading_convention(path):
     cells = _cells(path)
@@ -397,7 +401,8 @@ def test_notebook_follows_the_grading_convention(path):
                 f'report = ex.check("{fn}", {fn})\nshow(report)\nreport.assert_passed()'
             )
             assert check["metadata"]["nbgrader"] == {
-                "grade": True, "grade_id": f"{fn}_check", "locked": True, "points": 1,
+                "grade": True, "grade_id": f"{fn}_check", "locked": True,
+                "points": TWO_POINTS.get(fn, 1),
                 "schema_version": 3, "solution": False, "task": False,
             }  # fmt: skip
             solutions += 1

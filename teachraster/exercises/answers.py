@@ -57,7 +57,9 @@ def _shaped(value, arr: np.ndarray) -> str:
     return text if "of shape" in text else f"{text} of shape {arr.shape}"
 
 
-def _refuse_none_and_text(value, what: str) -> None:
+def refuse_none_and_text(value, what: str) -> None:
+    """Refuse None and text (:class:`~.running.WrongAnswerType`): the first refusals of every
+    answer, also for answers of a kind of their own (a dict, a tuple of ints)."""
     if value is None:
         raise WrongAnswerType("returned None (a missing `return`?)")
     if isinstance(value, (str, bytes, np.str_, np.bytes_)):
@@ -70,14 +72,14 @@ def _refuse_none_and_text(value, what: str) -> None:
 def refuse_non_answers(value, what: str) -> None:
     """Refuse None, text, dicts and sets (:class:`~.running.WrongAnswerType`), for answers
     read by an exercise's own converter."""
-    _refuse_none_and_text(value, what)
+    refuse_none_and_text(value, what)
     if isinstance(value, (dict, set, frozenset)):
         raise WrongAnswerType(f"returned a {type(value).__name__}, not {what}")
 
 
 def _array(value, what: str, max_size: int) -> np.ndarray:
     """``value`` as an array of at most ``max_size`` elements, after the common refusals."""
-    _refuse_none_and_text(value, what)
+    refuse_none_and_text(value, what)
     size = np.size(value) if isinstance(value, np.ndarray) else None
     if size is None and isinstance(value, (list, tuple)) and len(value) > max_size:
         size = len(value)

@@ -25,6 +25,7 @@ from fractions import Fraction
 import numpy as np
 
 from ..pipeline.texture import sample
+from .answers import refuse_none_and_text
 from .cases import SEED, fixed_and_drawn
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
@@ -557,11 +558,11 @@ MAX_TEXELS = 4096
 
 def as_texel_weights(value) -> dict[tuple[int, int, int], float]:
     """The answer as {(level, row, col): weight} (ints and floats), read strictly."""
-    if value is None:
-        raise WrongAnswerType("returned None (a missing `return`?)")
+    refuse_none_and_text(value, "a dict {(level, row, col): weight}")
     if not isinstance(value, dict):
         raise WrongAnswerType(
-            f"returned a {type(value).__name__}, not a dict {{(level, row, col): weight}}: "
+            f"returned {'an' if type(value).__name__[0] in 'aeiou' else 'a'} "
+            f"{type(value).__name__}, not a dict {{(level, row, col): weight}}: "
             "one entry per texel read, its weights added"
         )
     if len(value) > MAX_TEXELS:
