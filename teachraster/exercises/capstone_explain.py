@@ -25,7 +25,6 @@ again only through :func:`.running.run_checker` (a strange answer costs a plain 
 
 from __future__ import annotations
 
-import warnings
 from functools import lru_cache
 
 import numpy as np
@@ -41,7 +40,7 @@ from ..pipeline.visibility.zbuffer import passed_on_arrival
 from . import capstone_glass as glass
 from . import capstone_samples as samples
 from . import capstone_texels as texels
-from . import output
+from .capstone_reports import own_report
 from .capstone_scenes import capstone_scene
 from .coverage import explain_pixel as explain_coverage
 from .coverage_checks import AT_VERTICES, ON_BOX_SIDE
@@ -237,24 +236,6 @@ def _staged(checked: str, words: str) -> str:
         return said
     said = said.replace(" names the mistake: ", " gives a hint: ", 1)
     return f"{said}; {HINT_ONLY}"
-
-
-def own_report(checked: str, fn):
-    """Exercise ``checked``'s report on ``fn`` (run once per function: cached where ``fn``
-    can be hashed), its output and warnings kept aside (the scene showed them)."""
-    try:
-        return _own_report(checked, fn)
-    except TypeError:  # an unhashable callable: no cache
-        return _own_report.__wrapped__(checked, fn)
-
-
-@lru_cache(maxsize=32)
-def _own_report(checked: str, fn):
-    from .checks import check
-
-    with output.captured(), warnings.catch_warnings():  # a second run: its warnings were shown
-        warnings.simplefilter("ignore")
-        return check(checked, fn)
 
 
 @lru_cache(maxsize=32)

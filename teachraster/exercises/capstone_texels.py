@@ -9,6 +9,7 @@ reported through it and exercise 7.2's check, never as "your bilinear" (r502).
 
 from __future__ import annotations
 
+from .capstone_reports import own_report
 from .diagnosis import PRECISION_KINDS
 from .report import Failure
 
@@ -70,8 +71,6 @@ def texels_behind(used: dict) -> dict:
 def first_failure(texel_weights) -> Failure | None:
     """The first failure of exercise 7.2's check on ``texel_weights`` that is not float32's
     rounding (the capstone passes that), or None where it passes."""
-    from .capstone_explain import own_report
-
     report = own_report("texel_weights", texel_weights)
     if report.passed:
         return None
