@@ -404,6 +404,42 @@ def open_cells(page, base: str, cells, name: str, app: str = "lab/tree") -> None
     page.wait_for_selector(CELL_SHOWN, timeout=90_000)
 
 
+#: JupyterLab's status bar once the open notebook's kernel waits for work.
+IDLE = "#jp-main-statusbar >> text=/\\| Idle/"
+
+
+def wait_until_idle(page, base: str, name: str, timeout: int = 60_000) -> None:
+    """Wait for the kernel of notebook ``name``, just opened, to be idle; if it never gets
+    there, load the notebook's page again once (?reset) and wait again.
+
+    CI's stop 58: after "Open from Path…" in the loaded page the status bar showed no
+    "| Idle" for 90 s (seen once in some 300 openings; every local run reached it). What
+    the tests check comes after the kernel is up, so a kernel that did not start is tried
+    again once; a second failure says what the status bar showed both times."""
+    from playwright.sync_api import Error
+
+    try:
+        page.wait_for_selector(IDLE, timeout=timeout)
+        return
+    except Error:
+        first = _status_text(page)
+    page.goto(f"{base}/lab/tree/{name}?reset")
+    page.wait_for_selector(CELL_SHOWN, timeout=90_000)
+    try:
+        page.wait_for_selector(IDLE, timeout=90_000)
+    except Error as error:
+        raise AssertionError(
+            f"{name}: no idle kernel; the status bar said {first!r}, "
+            f"then after a reload {_status_text(page)!r}"
+        ) from error
+
+
+def _status_text(page) -> str:
+    """What JupyterLab's status bar shows ("" when it is not in the page)."""
+    bar = page.query_selector("#jp-main-statusbar")
+    return bar.inner_text() if bar else ""
+
+
 def _lab_is_empty(page, base: str) -> bool:
     """The page is this server's JupyterLab with no notebook or dialog open."""
     return page.url.startswith(f"{base}/lab") and page.evaluate(
@@ -450,7 +486,7 @@ def run_all(name: str, extra_source: str) -> BrowserRun:
     start = time.perf_counter()
     _open_notebook(page, running.base, f"{name}.ipynb", emptied)
     page.wait_for_selector(CELL_SHOWN, timeout=90_000)
-    page.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    wait_until_idle(page, running.base, f"{name}.ipynb")
     page.click(".lm-MenuBar-itemLabel:text-is('Run')")
     page.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
     n_code = page.locator(".jp-Notebook .jp-CodeCell").count()

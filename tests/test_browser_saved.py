@@ -19,7 +19,14 @@ import json
 import urllib.request
 
 import pytest
-from notebook_browser import API, CELL_SHOWN, open_cells, put_notebook, save_and_read
+from notebook_browser import (
+    API,
+    CELL_SHOWN,
+    open_cells,
+    put_notebook,
+    save_and_read,
+    wait_until_idle,
+)
 from test_browser import WHY, _shut_down_kernels, lab, page  # noqa: F401
 
 pytestmark = [
@@ -57,7 +64,7 @@ def _put_notebook(tab, cells=CELLS, name=NAME) -> None:
 def _run_all(base: str, tab, cells, name) -> None:
     """A fresh kernel, a notebook of ``cells`` written as ``name``, opened, every cell run."""
     open_cells(tab, base, cells, name)
-    tab.wait_for_selector("#jp-main-statusbar >> text=/\\| Idle/", timeout=90_000)
+    wait_until_idle(tab, base, name)
     assert tab.locator(".jp-FileBrowser").first.is_visible()  # the file browser is open
     tab.click(".lm-MenuBar-itemLabel:text-is('Run')")
     tab.click(".lm-Menu-itemLabel:text-is('Run All Cells')")
