@@ -72,7 +72,20 @@ def check_words(checked: str, what: str = "check", short: bool = False) -> str:
         runs = "runs it" if what == "check" else "runs them"
         return (f"over's {what} (lesson 12b §4's premultiplied over: "
                 f'ex.check("{checked}", over) {runs})')  # fmt: skip
+    if checked in NO_EXERCISE:  # r510 MN1: checks that no exercise notebook runs any more
+        if short:
+            return f"{checked}'s {what}"
+        call = f'ex.check("{checked}", {checked})'
+        if what == "check":
+            return f"the {checked} check ({call} runs it)"
+        return f"the {checked} check's {what} ({call} runs them)"
     return f"the {checked} exercise's {what}"
+
+
+#: Checks the capstone calls whose task no exercise notebook asks for any more (6.2 is
+#: ``resolve_fragments`` since r490, 7.2 ``texel_weights`` with 7.3's filters given since
+#: r491): a report calls them by their call, not by an exercise the student never met.
+NO_EXERCISE = ("resolve", "bilinear", "trilinear")
 
 
 #: The capstone's tolerance (some 17 of float32's half-ulps at 1: a float32 computation's
@@ -645,6 +658,8 @@ def _resolve(used, reference, row, col) -> str:
     said = error or f"your resolve returned {vec(yours, ours)}"
     why = _srgb_average(colours, ids, np.ones(3), yours, ours) if not error else None
     why = why or run_checker(lambda: samples.ids_as_rows(used, "resolve"), "")  # r504 RAW1
+    why = why or run_checker(lambda: samples.nan_weighed(used, "resolve"), "")  # r510 WF1
+    why = why or run_checker(lambda: samples.resolve_slip(used, "resolve"), "")  # r510 HN3
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
             f"{said}, the package's resolve gives {vec(ours, yours)}"

@@ -97,3 +97,32 @@ def changed_cell(name: str) -> str:
     """What to say where ``texel_weights`` passes 7.2's check but the filter still fails."""
     return (f"; your texel_weights passes exercise 7.2's check, so look at 12.7's {name} below "
             "it: restore exercise 7.3's given cell")  # fmt: skip
+
+
+def each_other(fn, name: str) -> str:
+    """r510 WF2: "; words" where the student's own filter ``name`` and the other of
+    :data:`FILTERS` call each other (a ``trilinear`` built on ``bilinear``, as exercise 7 once
+    asked, beside 12.7's given ``bilinear``, which is ``trilinear`` on one level): the render
+    recursed without end; else "".
+
+    >>> def bilinear(texture, uv, wrap):
+    ...     return trilinear([texture], uv, 0.0, wrap)
+    >>> def trilinear(pyramid, uv, lod, wrap):
+    ...     return bilinear(pyramid[0], uv, wrap)
+    >>> each_other(trilinear, "trilinear")[:36]
+    "; 12.7's bilinear is trilinear on a "
+    """
+    if name not in FILTERS:
+        return ""
+    other = FILTERS[1 - FILTERS.index(name)]
+    partner = _named(fn, other)
+    if partner is None or _named(partner, name) is None:
+        return ""
+    if name == "trilinear":
+        return ("; 12.7's bilinear is trilinear on a pyramid of one level, and your trilinear "
+                "calls bilinear: each calls the other without end. Your trilinear may be "
+                "right: keep 12.7's given trilinear (it adds up your texel_weights), or write "
+                "a bilinear of your own that does not call trilinear")  # fmt: skip
+    return ("; your bilinear calls trilinear, and the trilinear it finds calls bilinear: each "
+            "calls the other without end. Keep 12.7's given pair as it is (bilinear is "
+            "trilinear on one level, and trilinear adds up your texel_weights)")  # fmt: skip
