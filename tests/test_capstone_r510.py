@@ -70,9 +70,20 @@ def test_nan_rows_weighed_by_zero_are_named():
     assert nan_weighed({"covers": _via_fragments}, "covers") == ""
 
 
+def _one_sample(sample_colours, sample_ids, background):
+    """r449 W40 (its HN2): the colour of one covered sample, no mean."""
+    ids = np.asarray(sample_ids)
+    if not (ids >= 0).any():
+        return np.asarray(background, float)
+    return np.asarray(sample_colours[ids.argmax()], float)
+
+
 def test_one_colour_for_many_samples_is_named():
     assert "the first covered sample" in resolve_slip({"resolve": _first_colour}, "resolve")
     assert "one colour per id" in resolve_slip({"resolve": _per_id}, "resolve")
+    assert "one sample's colour (sample 3's) alone" in resolve_slip(
+        {"resolve": _one_sample}, "resolve"
+    )
     for other in (_right, _via_fragments):
         assert resolve_slip({"resolve": other}, "resolve") == ""
 

@@ -659,11 +659,13 @@ def _resolve(used, reference, row, col) -> str:
     why = _srgb_average(colours, ids, np.ones(3), yours, ours) if not error else None
     why = why or run_checker(lambda: samples.ids_as_rows(used, "resolve"), "")  # r504 RAW1
     why = why or run_checker(lambda: samples.nan_weighed(used, "resolve"), "")  # r510 WF1
-    why = why or run_checker(lambda: samples.resolve_slip(used, "resolve"), "")  # r510 HN3
+    if not why:  # r510 HN3: a named mistake first, then one colour for many samples
+        why = named_mistake(used, "resolve", case=((colours, ids, np.ones(3)), ours, yours))
+        if " names the mistake: " not in why:
+            why = run_checker(lambda: samples.resolve_slip(used, "resolve"), "") or why
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
-            f"{said}, the package's resolve gives {vec(ours, yours)}"
-            f"{why or named_mistake(used, 'resolve', case=((colours, ids, np.ones(3)), ours, yours))}")  # fmt: skip
+            f"{said}, the package's resolve gives {vec(ours, yours)}{why}")  # fmt: skip
 
 
 def _srgb_average(colours, ids, background, yours, ours) -> str | None:

@@ -232,8 +232,10 @@ def resolve_slip(used: dict, name: str) -> str:
     """
     if name != "resolve":
         return ""
-    colours = np.array([[0.8, 0, 0], [0, 0.8, 0], [np.nan] * 3, [0, 0, 0.8], [0.4, 0.4, 0]])
-    ids, background = np.array([3, 3, -1, 5, 5]), np.array([1.0, 1.0, 1.0])
+    colours = np.array([[0.8, 0.1, 0], [0.1, 0.7, 0.2], [np.nan] * 3, [0, 0.2, 0.9],
+                        [0.5, 0.4, 0.3], [np.nan] * 3])  # fmt: skip
+    # six samples: a median of an even count is no sample's colour (r449 W22 is named so)
+    ids, background = np.array([3, 3, -1, 5, 5, -1]), np.array([1.0, 1.0, 1.0])
     covered = ids >= 0
     got = _answers(used[name], colours.copy(), ids.copy(), background.copy())
     if got is None:
@@ -242,14 +244,19 @@ def resolve_slip(used: dict, name: str) -> str:
     one_colour = (covered.sum() * first + (~covered).sum() * background) / len(ids)
     per_id = np.array([colours[np.flatnonzero(ids == t)[0]] if t >= 0 else background
                        for t in ids]).mean(axis=0)  # fmt: skip
+    shown = [k for k in np.flatnonzero(covered) if np.allclose(got, colours[k])]
     if np.allclose(got, one_colour):
-        what = "the colour of the first covered sample"
+        what = ("every covered sample the colour of the first covered sample: each sample "
+                "shows its own colour (other triangles' differ, and one triangle's too, each "
+                "shaded at its own position)")  # fmt: skip
     elif np.allclose(got, per_id):
-        what = "the colour of the first sample of its triangle (one colour per id)"
+        what = ("every covered sample the colour of the first sample of its triangle (one "
+                "colour per id): the samples of one triangle have colours of their own (each "
+                "is shaded at its own position)")  # fmt: skip
+    elif shown:
+        what = (f"the pixel one sample's colour (sample {shown[0]}'s) alone: it shows its whole "
+                "area, each of the S samples standing for an equal share of it")  # fmt: skip
     else:
         return ""
-    return (
-        f"; you gave every covered sample {what}: the samples of one triangle have "
-        "colours of their own (each is shaded at its own position), so weigh each "
-        "sample's own colour, sample_colours[k], and the background for each uncovered one"
-    )
+    return (f"; you gave {what}, so weigh each sample's own colour, sample_colours[k], and the "
+            "background for each uncovered one, and take their mean")  # fmt: skip
