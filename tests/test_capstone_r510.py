@@ -3,7 +3,8 @@ and 7): 12.9's recipe with exercise 6.2's reference ``resolve_fragments`` gave N
 and was told "a mean with NaN" (WF1); a ``trilinear`` of one's own built on 12.7's given
 ``bilinear`` recursed, told only "RecursionError" (WF2); the resolve check was called "the
 resolve exercise's check", an exercise that no longer exists (MN1); a resolve with one colour
-for many samples got the generic question (HN2, HN3). Each case well under a second."""
+for many samples got the generic question (HN2, HN3); a texel_weights wrong only at λ near a
+whole level (Q8) was told to restore 12.7's given cell. Each case well under a second."""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ import numpy as np
 from teachraster.exercises import capstone_render, capstone_reports
 from teachraster.exercises.capstone_explain import check_words
 from teachraster.exercises.capstone_samples import nan_weighed, resolve_slip
-from teachraster.exercises.capstone_texels import each_other
+from teachraster.exercises.capstone_texels import at_pixel, each_other
+from teachraster.exercises.texel_footprint import reference as texel_reference
 
 NOTEBOOK = Path(__file__).parents[1] / "notebooks" / "exercises" / "12_capstone.ipynb"
 
@@ -130,3 +132,19 @@ def _task(heading: str) -> str:
 def test_12_9_and_12_8_warn_of_the_traps():
     assert "0 × NaN is NaN" in _task("## 12.9")
     assert "call each other without end" in _task("## 12.8")
+
+
+def _snapped(sizes, uv, lod, wrap):
+    """Q8: λ snapped to a whole level within 0.05 of it (passes exercise 7.2's cases)."""
+    lam = float(lod)
+    if abs(lam - round(lam)) < 0.05:
+        lam = float(round(lam))
+    return texel_reference(sizes, uv, lam, wrap)
+
+
+def test_texels_wrong_only_at_the_pixel_are_told_there_not_the_given_cell():
+    sizes = [(8, 8), (4, 4), (2, 2), (1, 1)]
+    said = at_pixel(_snapped, sizes, (0.463, 1.081), 2.045, "repeat")
+    assert "passes exercise 7.2's check, but not at this pixel" in said, said
+    assert "level 2 0.955, level 3 0.045" in said, said
+    assert at_pixel(texel_reference, sizes, (0.463, 1.081), 2.045, "repeat") == ""

@@ -624,13 +624,22 @@ def _texture(spec, used, reference, row, col) -> str:
         who = f"12.7's {name}, adding up your texel_weights,"
         said = error.replace(f"your {name}", who, 1) or (
             f"12.7's {asked}, adding up your texel_weights, returned {vec(yours, ours)}")  # fmt: skip
-        named = _texel_words(behind, name)
+        named = _texel_words(behind, name, args)
     return f"{head} {said}, the package's {name} filter gives {vec(ours, yours)}{named}"
 
 
-def _texel_words(texel_weights, name: str) -> str:
-    """What exercise 7.2's check says of the ``texel_weights`` behind 12.7's ``name``."""
-    return run_checker(lambda: texels.blame(texel_weights), "") or texels.changed_cell(name)
+def _texel_words(texel_weights, name: str, args: tuple) -> str:
+    """What exercise 7.2's check says of the ``texel_weights`` behind 12.7's ``name``; where
+    it passes, what the texels are at this pixel (``args``: the filter's), and only where
+    they are right there, that the given cell was changed (r510)."""
+    said = run_checker(lambda: texels.blame(texel_weights), "")
+    if said:
+        return said
+    pyramid = [args[0]] if name == "bilinear" else args[0]
+    sizes = [tuple(np.shape(level)[:2]) for level in pyramid]
+    lod, wrap = (0.0, args[2]) if name == "bilinear" else (args[2], args[3])
+    here = run_checker(lambda: texels.at_pixel(texel_weights, sizes, args[1], lod, wrap), "")
+    return here or texels.changed_cell(name)
 
 
 #: Covered pixels of the scene, spread over the frame, at which a named filter mistake must

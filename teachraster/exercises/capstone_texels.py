@@ -12,6 +12,8 @@ from __future__ import annotations
 from .capstone_reports import own_report
 from .diagnosis import PRECISION_KINDS
 from .report import Failure
+from .scalars import num, vec
+from .texel_footprint import reference, same_weights
 
 #: The scenes' texture filters that 12.7 gives on top of ``texel_weights``.
 FILTERS = ("bilinear", "trilinear")
@@ -126,3 +128,46 @@ def each_other(fn, name: str) -> str:
     return ("; your bilinear calls trilinear, and the trilinear it finds calls bilinear: each "
             "calls the other without end. Keep 12.7's given pair as it is (bilinear is "
             "trilinear on one level, and trilinear adds up your texel_weights)")  # fmt: skip
+
+
+def at_pixel(texel_weights, sizes, uv, lod, wrap) -> str:
+    """r510: "; words" where ``texel_weights`` passes exercise 7.2's check but reads other
+    texels than the fetch at this pixel's (sizes, uv, λ) (a λ snapped near whole levels,
+    which 7.2's cases do not hold, was told to restore 12.7's given cell); else "".
+
+    >>> def snapped(sizes, uv, lod, wrap):
+    ...     return reference(sizes, uv, float(round(lod)), wrap)
+    >>> said = at_pixel(snapped, [(4, 4), (2, 2), (1, 1)], (0.3, 0.6), 1.04, "repeat")
+    >>> "your texels weigh level 1 1 where λ = 1.04 weighs level 1 0.96, level 2 0.04" in said
+    True
+    """
+    args = (sizes, uv, lod, wrap)
+    right, got = reference(*args), texel_weights(*args)
+    if same_weights(got, right, args) or not isinstance(got, dict):
+        return ""
+    mine, theirs = _per_level(got), _per_level(right)
+    if any(abs(mine.get(k, 0.0) - theirs.get(k, 0.0)) > 1e-6 for k in set(mine) | set(theirs)):
+        how = f"your texels weigh {_levels(mine)} where λ = {num(lod)} weighs {_levels(theirs)}"
+    else:
+        how = f"your texels are {_texels(got)} where the fetch reads {_texels(right)}"
+    shapes = ", ".join(f"{h}×{w}" for h, w in sizes)
+    return (f"; your texel_weights passes exercise 7.2's check, but not at this pixel: on "
+            f"levels {shapes}, uv = {vec(uv)}, λ = {num(lod)}, {wrap!r}, {how}. 7.2's cases "
+            "hold no such λ or uv: compare your code with the rule at these numbers "
+            f"({CHECK_CALL} passing is not enough)")  # fmt: skip
+
+
+def _per_level(weights: dict) -> dict:
+    out: dict = {}
+    for key, weight in weights.items():
+        out[int(key[0])] = out.get(int(key[0]), 0.0) + float(weight)
+    return out
+
+
+def _levels(split: dict) -> str:
+    return ", ".join(f"level {k} {num(w)}" for k, w in sorted(split.items()) if abs(w) > 1e-9)
+
+
+def _texels(weights: dict) -> str:
+    shown = sorted((k, w) for k, w in weights.items() if abs(w) > 1e-9)
+    return "{" + ", ".join(f"{tuple(int(i) for i in k)}: {num(w)}" for k, w in shown) + "}"
