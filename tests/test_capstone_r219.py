@@ -23,7 +23,7 @@ from teachraster.exercises.capstone_scenes import capstone_scene
 from teachraster.exercises.texture_filtering import plain_bilinear
 
 CAPSTONE = "12_capstone.ipynb"
-NAMED = "the bilinear exercise's check names the mistake: "
+NAMED = 'the bilinear check (ex.check("bilinear", bilinear) runs it) names the mistake: '
 
 
 def _slipped(edits):

@@ -72,7 +72,20 @@ def check_words(checked: str, what: str = "check", short: bool = False) -> str:
         runs = "runs it" if what == "check" else "runs them"
         return (f"over's {what} (lesson 12b §4's premultiplied over: "
                 f'ex.check("{checked}", over) {runs})')  # fmt: skip
+    if checked in NO_EXERCISE:  # r510 MN1: checks that no exercise notebook runs any more
+        if short:
+            return f"{checked}'s {what}"
+        call = f'ex.check("{checked}", {checked})'
+        if what == "check":
+            return f"the {checked} check ({call} runs it)"
+        return f"the {checked} check's {what} ({call} runs them)"
     return f"the {checked} exercise's {what}"
+
+
+#: Checks the capstone calls whose task no exercise notebook asks for any more (6.2 is
+#: ``resolve_fragments`` since r490, 7.2 ``texel_weights`` with 7.3's filters given since
+#: r491): a report calls them by their call, not by an exercise the student never met.
+NO_EXERCISE = ("resolve", "bilinear", "trilinear")
 
 
 #: The capstone's tolerance (some 17 of float32's half-ulps at 1: a float32 computation's
@@ -611,13 +624,22 @@ def _texture(spec, used, reference, row, col) -> str:
         who = f"12.7's {name}, adding up your texel_weights,"
         said = error.replace(f"your {name}", who, 1) or (
             f"12.7's {asked}, adding up your texel_weights, returned {vec(yours, ours)}")  # fmt: skip
-        named = _texel_words(behind, name)
+        named = _texel_words(behind, name, args)
     return f"{head} {said}, the package's {name} filter gives {vec(ours, yours)}{named}"
 
 
-def _texel_words(texel_weights, name: str) -> str:
-    """What exercise 7.2's check says of the ``texel_weights`` behind 12.7's ``name``."""
-    return run_checker(lambda: texels.blame(texel_weights), "") or texels.changed_cell(name)
+def _texel_words(texel_weights, name: str, args: tuple) -> str:
+    """What exercise 7.2's check says of the ``texel_weights`` behind 12.7's ``name``; where
+    it passes, what the texels are at this pixel (``args``: the filter's), and only where
+    they are right there, that the given cell was changed (r510)."""
+    said = run_checker(lambda: texels.blame(texel_weights), "")
+    if said:
+        return said
+    pyramid = [args[0]] if name == "bilinear" else args[0]
+    sizes = [tuple(np.shape(level)[:2]) for level in pyramid]
+    lod, wrap = (0.0, args[2]) if name == "bilinear" else (args[2], args[3])
+    here = run_checker(lambda: texels.at_pixel(texel_weights, sizes, args[1], lod, wrap), "")
+    return here or texels.changed_cell(name)
 
 
 #: Covered pixels of the scene, spread over the frame, at which a named filter mistake must
@@ -645,10 +667,14 @@ def _resolve(used, reference, row, col) -> str:
     said = error or f"your resolve returned {vec(yours, ours)}"
     why = _srgb_average(colours, ids, np.ones(3), yours, ours) if not error else None
     why = why or run_checker(lambda: samples.ids_as_rows(used, "resolve"), "")  # r504 RAW1
+    why = why or run_checker(lambda: samples.nan_weighed(used, "resolve"), "")  # r510 WF1
+    if not why:  # r510 HN3: a named mistake first, then one colour for many samples
+        why = named_mistake(used, "resolve", case=((colours, ids, np.ones(3)), ours, yours))
+        if " names the mistake: " not in why:
+            why = run_checker(lambda: samples.resolve_slip(used, "resolve"), "") or why
     return (f"its samples show triangles {ids.tolist()} with colours "
             f"{', '.join(vec(c) for c in colours)} (NaN: uncovered; the background is white): "
-            f"{said}, the package's resolve gives {vec(ours, yours)}"
-            f"{why or named_mistake(used, 'resolve', case=((colours, ids, np.ones(3)), ours, yours))}")  # fmt: skip
+            f"{said}, the package's resolve gives {vec(ours, yours)}{why}")  # fmt: skip
 
 
 def _srgb_average(colours, ids, background, yours, ours) -> str | None:

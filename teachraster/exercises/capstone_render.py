@@ -32,6 +32,7 @@ from . import capstone_texels as texels
 from . import output
 from .alarm import CASE_WALL_FACTOR
 from .capstone_explain import CHECKED_AS, check_words, explain_pixel
+from .capstone_reports import own_report
 from .capstone_rules import FUNCTIONS, Tracker, kept_state, rules, wrapped
 from .capstone_scenes import capstone_scene
 from .diagnosis import PRECISION_KINDS
@@ -339,8 +340,6 @@ def _a_buffer_failed(spec: CapstoneScene, used, mine, reference) -> bool:
     """Whether the frame differs while the student's ``over`` is right on its own exercise's
     cases: a failure of ``a_buffer``, counted towards its full words. r174 12-7: two
     failures of ``over`` alone handed over the A-buffer's order."""
-    from .capstone_explain import own_report
-
     if not differing(spec, mine, reference).any():
         return False
     return bool(own_report(CHECKED_AS["over"], used["over"]).passed)
@@ -367,6 +366,8 @@ def _report(spec, used, reference, outcome, tracker) -> CapstoneReport:
         if outcome.kind in ("raised", "type", "none") and behind is not None:  # r504 HN1
             text += run_checker(lambda: texels.blame(behind), "") or texels.changed_cell(
                 tracker.name)  # fmt: skip
+        elif outcome.kind == "raised" and "RecursionError" in text:  # r510 WF2
+            text += run_checker(lambda: texels.each_other(used[tracker.name], tracker.name), "")
         elif outcome.kind == "raised":
             text += _raised_why(used, tracker.name) or run_checker(
                 lambda: samples.ids_as_rows(used, tracker.name), "")  # fmt: skip
@@ -431,7 +432,6 @@ def package_use(used: dict) -> str | None:
     None. The rule is its exercise's, in one place: :func:`~.package_answers.package_note`,
     as ``ex.check`` runs it on the function's own cases (r40 12-1: four scenes passed with
     ``tr.*`` one-liners that ``ex.check`` refuses)."""
-    from .capstone_explain import own_report
     from .checks import names
 
     for name, fn in _judged(used).items():
@@ -466,7 +466,6 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
     pixels, r49: ``single_triangle`` passed so) fails them. Empty when all pass. Beside them
     a note, or None: ``perspective_weights`` failing only cases whose w no GPU meets (r126
     D12-1: exercise 3.2's w = 1e-310 failed a scene whose every pixel matched)."""
-    from .capstone_explain import own_report
     from .checks import names
 
     out, aside = [], None
@@ -492,6 +491,11 @@ def _own_checks(used: dict) -> tuple[list[Failure], str | None]:
         if failed is not None:
             place = check_words(checked, "own cases")
             said = failed.explanation
+            slip = "" if failed.kind != "value" else run_checker(  # no mistake named: r510 HN2
+                lambda fn=fn, n=name: samples.resolve_slip({n: fn}, n), "")  # fmt: skip
+            if slip:  # r510 HN2: the case's numbers, then the slip (not the generic question)
+                at = said.find(")", said.find("; yours is (")) if "; yours is (" in said else -1
+                said = (said[: at + 1] if at >= 0 else said) + slip
             if name == "texel_weights":  # r502: behind 12.7's given filters
                 said = f"{said.replace('your function', 'your texel_weights')} ({texels.CHECK_CALL} runs them)"
             out.append(Failure(f"{name} on {check_words(checked, 'own cases', short=True)}",
@@ -519,8 +523,6 @@ def _on_a_gpu(name: str, failures: list[Failure]) -> tuple[Failure | None, str |
 def _fallback(name: str, fn, where: str) -> Failure | None:
     """The first failure of ``fn`` on its own exercise's cases (``where`` = "cases") or in
     capstone scene ``where``, or None when it passes there."""
-    from .capstone_explain import own_report
-
     if where == "cases":
         report = own_report(CHECKED_AS.get(name, name), fn)
     else:

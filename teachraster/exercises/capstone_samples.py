@@ -173,3 +173,90 @@ def ids_as_rows(used: dict, name: str) -> str:
             " 7, say), not a row of sample_colours: sample k's colour is sample_colours[k]. "
             "As 12.9 says, 6.2's resolve_fragments needs sample k pointing at fragment k: "
             "np.where(sample_ids >= 0, np.arange(S), -1)")  # fmt: skip
+
+
+def _answers(fn, *args) -> np.ndarray | None:
+    """``fn(*args)`` as 3 floats, or None where it raises or answers otherwise."""
+    try:
+        return np.asarray(fn(*args), dtype=float).reshape(3)
+    except Exception:  # noqa: BLE001 (the student's code: anything may go wrong)
+        return None
+
+
+def nan_weighed(used: dict, name: str) -> str:
+    """r510 WF1: "; words" where the student's ``resolve`` weighs each uncovered sample's NaN
+    colour by 0 (6.2's ``resolve_fragments`` summing every fragment row times the samples it
+    shows, through 12.9's mapping): NaN with the NaN rows as they are, right with any
+    numbers there (0 × NaN is NaN); else "".
+
+    >>> def resolve(colours, ids, background):
+    ...     ids, total = np.asarray(ids), (np.asarray(ids) < 0).sum() * np.asarray(background)
+    ...     for k, colour in enumerate(np.asarray(colours)):
+    ...         total = total + (ids == k).sum() * colour
+    ...     return total / len(ids)
+    >>> nan_weighed({"resolve": resolve}, "resolve")[:40]
+    '; the uncovered samples hold NaN colours'
+    """
+    if name != "resolve":
+        return ""
+    colours = np.array([[1.0, 0, 0], [np.nan] * 3, [0, 0, 1.0], [np.nan] * 3])
+    ids, background = np.array([0, -1, 2, -1]), np.array([1.0, 1.0, 0.5])
+    right = np.where(ids[:, None] >= 0, colours, background).mean(axis=0)
+    got = _answers(used[name], colours.copy(), ids.copy(), background.copy())
+    if got is None or not np.isnan(got).any():
+        return ""
+    for filler in (0.0, 7.0):
+        filled = np.where(np.isnan(colours), filler, colours)
+        again = _answers(used[name], filled, ids.copy(), background.copy())
+        if again is None or not np.allclose(again, right):
+            return ""
+    return ("; the uncovered samples hold NaN colours (no triangle wrote them), and your "
+            "resolve still multiplies each by its weight of 0: 0 × NaN is NaN, not 0 (with "
+            "any number in those rows it answers right; exercise 6.2's fragments are never "
+            "NaN). Read only the covered samples' colours: sample_colours[sample_ids >= 0], "
+            "or those rows replaced by the background before you weigh them")  # fmt: skip
+
+
+def resolve_slip(used: dict, name: str) -> str:
+    """r510 HN2/HN3: "; words" where the student's ``resolve`` shows one colour for many
+    samples: the first covered sample's colour for every covered sample, or each triangle
+    id's first colour for all of that id's samples (samples of one triangle differ: each is
+    shaded at its own position); else "".
+
+    >>> def resolve(colours, ids, background):
+    ...     first = np.asarray(colours)[np.flatnonzero(np.asarray(ids) >= 0)[0]]
+    ...     n = (np.asarray(ids) >= 0).sum()
+    ...     return (n * first + (len(ids) - n) * np.asarray(background)) / len(ids)
+    >>> resolve_slip({"resolve": resolve}, "resolve")[:38]
+    '; you gave every covered sample the co'
+    """
+    if name != "resolve":
+        return ""
+    colours = np.array([[0.8, 0.1, 0], [0.1, 0.7, 0.2], [np.nan] * 3, [0, 0.2, 0.9],
+                        [0.5, 0.4, 0.3], [np.nan] * 3])  # fmt: skip
+    # six samples: a median of an even count is no sample's colour (r449 W22 is named so)
+    ids, background = np.array([3, 3, -1, 5, 5, -1]), np.array([1.0, 1.0, 1.0])
+    covered = ids >= 0
+    got = _answers(used[name], colours.copy(), ids.copy(), background.copy())
+    if got is None:
+        return ""
+    first = colours[np.flatnonzero(covered)[0]]
+    one_colour = (covered.sum() * first + (~covered).sum() * background) / len(ids)
+    per_id = np.array([colours[np.flatnonzero(ids == t)[0]] if t >= 0 else background
+                       for t in ids]).mean(axis=0)  # fmt: skip
+    shown = [k for k in np.flatnonzero(covered) if np.allclose(got, colours[k])]
+    if np.allclose(got, one_colour):
+        what = ("every covered sample the colour of the first covered sample: each sample "
+                "shows its own colour (other triangles' differ, and one triangle's too, each "
+                "shaded at its own position)")  # fmt: skip
+    elif np.allclose(got, per_id):
+        what = ("every covered sample the colour of the first sample of its triangle (one "
+                "colour per id): the samples of one triangle have colours of their own (each "
+                "is shaded at its own position)")  # fmt: skip
+    elif shown:
+        what = (f"the pixel one sample's colour (sample {shown[0]}'s) alone: it shows its whole "
+                "area, each of the S samples standing for an equal share of it")  # fmt: skip
+    else:
+        return ""
+    return (f"; you gave {what}, so weigh each sample's own colour, sample_colours[k], and the "
+            "background for each uncovered one, and take their mean")  # fmt: skip

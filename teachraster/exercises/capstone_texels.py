@@ -12,6 +12,8 @@ from __future__ import annotations
 from .capstone_reports import own_report
 from .diagnosis import PRECISION_KINDS
 from .report import Failure
+from .scalars import num, vec
+from .texel_footprint import reference, same_weights
 
 #: The scenes' texture filters that 12.7 gives on top of ``texel_weights``.
 FILTERS = ("bilinear", "trilinear")
@@ -97,3 +99,75 @@ def changed_cell(name: str) -> str:
     """What to say where ``texel_weights`` passes 7.2's check but the filter still fails."""
     return (f"; your texel_weights passes exercise 7.2's check, so look at 12.7's {name} below "
             "it: restore exercise 7.3's given cell")  # fmt: skip
+
+
+def each_other(fn, name: str) -> str:
+    """r510 WF2: "; words" where the student's own filter ``name`` and the other of
+    :data:`FILTERS` call each other (a ``trilinear`` built on ``bilinear``, as exercise 7 once
+    asked, beside 12.7's given ``bilinear``, which is ``trilinear`` on one level): the render
+    recursed without end; else "".
+
+    >>> def bilinear(texture, uv, wrap):
+    ...     return trilinear([texture], uv, 0.0, wrap)
+    >>> def trilinear(pyramid, uv, lod, wrap):
+    ...     return bilinear(pyramid[0], uv, wrap)
+    >>> each_other(trilinear, "trilinear")[:36]
+    "; 12.7's bilinear is trilinear on a "
+    """
+    if name not in FILTERS:
+        return ""
+    other = FILTERS[1 - FILTERS.index(name)]
+    partner = _named(fn, other)
+    if partner is None or _named(partner, name) is None:
+        return ""
+    if name == "trilinear":
+        return ("; 12.7's bilinear is trilinear on a pyramid of one level, and your trilinear "
+                "calls bilinear: each calls the other without end. Your trilinear may be "
+                "right: keep 12.7's given trilinear (it adds up your texel_weights), or write "
+                "a bilinear of your own that does not call trilinear")  # fmt: skip
+    return ("; your bilinear calls trilinear, and the trilinear it finds calls bilinear: each "
+            "calls the other without end. Keep 12.7's given pair as it is (bilinear is "
+            "trilinear on one level, and trilinear adds up your texel_weights)")  # fmt: skip
+
+
+def at_pixel(texel_weights, sizes, uv, lod, wrap) -> str:
+    """r510: "; words" where ``texel_weights`` passes exercise 7.2's check but reads other
+    texels than the fetch at this pixel's (sizes, uv, λ) (a λ snapped near whole levels,
+    which 7.2's cases do not hold, was told to restore 12.7's given cell); else "".
+
+    >>> def snapped(sizes, uv, lod, wrap):
+    ...     return reference(sizes, uv, float(round(lod)), wrap)
+    >>> said = at_pixel(snapped, [(4, 4), (2, 2), (1, 1)], (0.3, 0.6), 1.04, "repeat")
+    >>> "your texels weigh level 1 1 where λ = 1.04 weighs level 1 0.96, level 2 0.04" in said
+    True
+    """
+    args = (sizes, uv, lod, wrap)
+    right, got = reference(*args), texel_weights(*args)
+    if same_weights(got, right, args) or not isinstance(got, dict):
+        return ""
+    mine, theirs = _per_level(got), _per_level(right)
+    if any(abs(mine.get(k, 0.0) - theirs.get(k, 0.0)) > 1e-6 for k in set(mine) | set(theirs)):
+        how = f"your texels weigh {_levels(mine)} where λ = {num(lod)} weighs {_levels(theirs)}"
+    else:
+        how = f"your texels are {_texels(got)} where the fetch reads {_texels(right)}"
+    shapes = ", ".join(f"{h}×{w}" for h, w in sizes)
+    return (f"; your texel_weights passes exercise 7.2's check, but not at this pixel: on "
+            f"levels {shapes}, uv = {vec(uv)}, λ = {num(lod)}, {wrap!r}, {how}. 7.2's cases "
+            "hold no such λ or uv: compare your code with the rule at these numbers "
+            f"({CHECK_CALL} passing is not enough)")  # fmt: skip
+
+
+def _per_level(weights: dict) -> dict:
+    out: dict = {}
+    for key, weight in weights.items():
+        out[int(key[0])] = out.get(int(key[0]), 0.0) + float(weight)
+    return out
+
+
+def _levels(split: dict) -> str:
+    return ", ".join(f"level {k} {num(w)}" for k, w in sorted(split.items()) if abs(w) > 1e-9)
+
+
+def _texels(weights: dict) -> str:
+    shown = sorted((k, w) for k, w in weights.items() if abs(w) > 1e-9)
+    return "{" + ", ".join(f"{tuple(int(i) for i in k)}: {num(w)}" for k, w in shown) + "}"
