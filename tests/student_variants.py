@@ -13043,6 +13043,90 @@ R494 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R494.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R494.items()})
+# -- r505: exercise 1 (box: xy changed in place, an empty box for a thin triangle, round to
+# the nearest, ⌈v⌉ − 1, the first clamped to n − 1, two vertices, mixed axes, one end from the
+# other axis; covers: the third edge left out)
+
+
+def _r505_sorted_in_place(xy, width, height):
+    xy.sort(axis=0)  # each column sorted: the caller's triangle is another one now
+    return _r487_box()(xy, width, height)
+
+
+def _r505_empty_if_thin(xy, width, height):
+    a = np.asarray(xy, float)
+    if (a.max(axis=0) - a.min(axis=0)).min() < 1:
+        return 0, 0, 0, 0
+    return _r487_box()(xy, width, height)
+
+
+def _r505_box_from(pick):
+    """The right formula on bounds ``pick(a) -> (x0, y0, x1, y1)``."""
+
+    def box(xy, width, height):
+        x0, y0, x1, y1 = pick(np.asarray(xy, float))
+        c = lambda v, n: min(max(math.ceil(v - 0.5), 0), n)  # noqa: E731
+        return c(y0, height), c(y1, height), c(x0, width), c(x1, width)
+
+    return box
+
+
+def _r505_covers_two_edges(xy, p):
+    v = [tuple(map(float, q)) for q in xy]
+    if edge_function(v[0], v[1], v[2]) < 0:
+        v = [v[0], v[2], v[1]]
+    if edge_function(v[0], v[1], v[2]) == 0:
+        return False
+    for a, b in zip(v, v[1:]):  # v3→v1 never tested
+        e = edge_function(a, b, p)
+        tl = b[1] < a[1] or (b[1] == a[1] and b[0] > a[0])
+        if e < 0 or (e == 0 and not tl):
+            return False
+    return True
+
+
+DIFFERENT.update({
+    "box by np.searchsorted of the centres, side='left' (r505)": (
+        "box", lambda xy, w, h: tuple(int(np.searchsorted(np.arange(n) + 0.5, v, "left")) for v, n in (
+            (np.min(np.asarray(xy)[:, 1]), h), (np.max(np.asarray(xy)[:, 1]), h),
+            (np.min(np.asarray(xy)[:, 0]), w), (np.max(np.asarray(xy)[:, 0]), w)))),
+    "box by ⌈v + ½⌉ − 1 (r505)": ("box", _r487_box(first=lambda v: math.ceil(v + 0.5) - 1,
+                                                  end=lambda v: math.ceil(v + 0.5) - 1)),
+})  # fmt: skip
+R505 = {
+    "box sorting xy in place (r505 WP1)": (
+        "box", _r505_sorted_in_place, "changed xy in place (its vertices reordered", "type"),
+    "box, empty for a bounding box under 1 px wide (r505 M1)": (
+        "box", _r505_empty_if_thin, "your box is empty, yet this thin triangle covers",
+        "empty for a thin triangle"),
+    "box, round(v − ½) as the first (r505 H1)": (
+        "box", _r487_box(first=lambda v: round(v - 0.5)),
+        "rounds x_min (y_min) − ½ to the nearest whole number", "first round-half, both axes"),
+    "box, ⌈v⌉ − 1 as the first (r505 H2)": (
+        "box", _r487_box(first=lambda v: math.ceil(v) - 1), "is ⌈x_min (y_min)⌉ − 1",
+        "first ceil-1, both axes"),
+    "box, round(v − ½) as the end (r505 H3)": (
+        "box", _r487_box(end=lambda v: round(v - 0.5)),
+        "your end row or column rounds x_max (y_max) − ½", "end round-half, both axes"),
+    "box, the first clamped to n − 1 (r505 H4)": (
+        "box", lambda xy, w, h: (lambda b: (min(b[0], h - 1), b[1], min(b[2], w - 1), b[3]))(
+            _r487_box()(xy, w, h)),
+        "you clamped the first row (column) to height − 1", "clamp first last"),
+    "box from v1 and v3 only (r505 H5)": (
+        "box", _r505_box_from(lambda a: (*a[[0, 2]].min(0), *a[[0, 2]].max(0))),
+        "two vertices only, v1 and v3", "vertices v1, v3"),
+    "box, np.min(xy) without axis=0 (r505 H6)": (
+        "box", _r505_box_from(lambda a: (a.min(), a.min(), a.max(), a.max())),
+        "your bounds mix x and y", "mixed axes"),
+    "box, the end row from x_max (r505 H7)": (
+        "box", _r505_box_from(lambda a: (a[:, 0].min(), a[:, 1].min(), a[:, 0].max(),
+                                         a[:, 0].max())),
+        "your end row comes from x_max", "end row from x"),
+    "covers testing two edges only (r505 H9)": (
+        "covers", _r505_covers_two_edges, "you test two edges only", "an edge left out"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R505.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R505.items()})
 # -- r496: exercise 4 (4.3 equations named as used, colours of other vertices, NaN where a
 # weight is 0; 4.1 fragments sorted by depth); also the dead clip_near_colour rows removed.
 _R496_CLIPPED_COLOURS_DROP_Z = """

@@ -117,6 +117,33 @@ def as_box(value) -> tuple[int, int, int, int]:
     return tuple(out)
 
 
+#: r505 WP1: a box that changes ``xy`` in place (``xy -= 0.5``, ``xy.sort(axis=0)``) returned
+#: the right box, but the given fill calls ``covers(xy, …)`` on the same array after it
+CHANGED_XY = (
+    "changed xy in place ({how}): the given fill calls box(xy, …) and then covers(xy, …) on "
+    "the same array, so covers would test another triangle. Compute on new values (xs = "
+    "xy[:, 0] - 0.5 makes a new array; xy -= 0.5, xy.sort() and xy[...] = … change the "
+    "caller's)"
+)
+
+
+def call_box(fn, args) -> tuple[int, int, int, int]:
+    """The student's box, read strictly; refused where the call changed ``xy``."""
+    xy = args[0]
+    before = np.array(xy, dtype=float, copy=True)
+    value = fn(*args)
+    after = np.asarray(xy)
+    if after.shape != before.shape or not np.array_equal(after, before):
+        how = (
+            "its vertices reordered: xy.sort()?"
+            if after.shape == before.shape and np.array_equal(np.sort(after, 0), np.sort(before, 0))
+            else f"v1 was {tuple(float(v) for v in before[0])}, now "
+            f"{tuple(float(v) for v in np.ravel(after)[:2])}"
+        )
+        raise WrongAnswerType(CHANGED_XY.format(how=how))
+    return as_box(value)
+
+
 # -- cases ------------------------------------------------------------------------------------
 def _case(label, xy, width, height):
     xy = np.array(xy, dtype=float)
@@ -201,6 +228,7 @@ def _f(v: Fraction, form: str) -> int:
         "ceil+half": lambda: math.ceil(v + HALF),
         "ceil-half-1": lambda: math.ceil(v - HALF) - 1,
         "trunc": lambda: math.trunc(v - HALF) + (0 if (v - HALF).denominator == 1 else 1),
+        "ceil-1": lambda: math.ceil(v) - 1,
     }[form]()
 
 
@@ -216,8 +244,15 @@ FIRST = {
     "k + ½, so a pixel whose centre lies past {vmin} is left out",
     "round": "your first {what} is {vmin} rounded (round() or np.round: half to even), which "
     "goes the wrong way where {vmin} lies on a centre",
-    "round-half": "your first {what} rounds {vmin} − ½ (round() or np.round: half to even), "
-    "which goes the wrong way where {vmin} lies on a pixel's corner",
+    # r505 H1, H2: round() goes to the nearest whole number, not only wrong on a corner
+    "round-half": "your first {what} rounds {vmin} − ½ to the nearest whole number (round() or "
+    "np.round): where {vmin} lies past a pixel's centre, that is the pixel {vmin} lies in, "
+    "whose centre comes before {vmin} (and on a pixel's corner round() halves to even); the "
+    "first centre at or past {vmin} is the first {what} of the box",
+    # r505 H2: ⌈v⌉ − 1, the pixel v lies in (one before it where v is whole)
+    "ceil-1": "your first {what} is ⌈{vmin}⌉ − 1, the pixel {vmin} lies in (and one before it "
+    "where {vmin} is whole): where {vmin} lies past that pixel's centre, the centre comes "
+    "before {vmin}; the first centre at or past {vmin} is the first {what} of the box",
     "floor-half": "your first {what} is the last centre at or before {vmin} (⌊{vmin} − ½⌋), "
     "one before the first centre inside",
     "ceil+half": "your first {what} is ⌈{vmin} + ½⌉: pixel k's centre is at k + ½, and adding "
@@ -241,6 +276,10 @@ END = {
     "floor": "your end {what} is ⌊{vmax}⌋: a centre between ⌊{vmax}⌋ + ½ and {vmax} is left out, "
     "and one at ⌊{vmax}⌋ − ½ kept whatever",
     "round": "your end {what} is {vmax} rounded (round() or np.round: half to even)",
+    # r505 H3: told as ⌊x_max⌋, whose values it has off the whole numbers
+    "round-half": "your end {what} rounds {vmax} − ½ to the nearest whole number (round() or "
+    "np.round): where {vmax} lies less than half a pixel past a centre, that centre's {what} "
+    "is left out, though it lies before {vmax}",
     "ceil+half": "your end {what} is ⌈{vmax} + ½⌉: pixel k's centre is at k + ½, and adding ½ "
     "moves the bound the wrong way",
     "ceil-half-1": "your end {what} is the last {what} the box holds: the task's end is one "
@@ -293,6 +332,8 @@ def _box_with(xy, width, height, forms=None, clamp="both", swap_axes=False, f32=
         return min(r0, nr), min(r1, nr), min(c0, nc), min(c1, nc)
     if clamp == "last":  # the end clamped to n − 1, as an index
         return (_clamp(r0, nr - 1), _clamp(r1, nr - 1), _clamp(c0, nc - 1), _clamp(c1, nc - 1))
+    if clamp == "first last":  # r505 H4: the first clamped to n − 1, the end to n
+        return _clamp(r0, nr - 1), _clamp(r1, nr), _clamp(c0, nc - 1), _clamp(c1, nc)
     raise ValueError(clamp)
 
 
@@ -353,6 +394,10 @@ CLAMP_WORDS = {
     "half-open range is one past it, so the image's last row or column is left out",
     "swapped": "you clamped the rows to width and the columns to height: rows count down the "
     "image's height, columns across its width",
+    "first last": "you clamped the first row (column) to height − 1 (width − 1), the last index: "
+    "where the triangle lies wholly below (right of) the image, its box must be empty, and "
+    "yours holds the image's last row (column); the first is clamped to the same range as the "
+    "end, 0 to height (width)",
 }
 
 
@@ -378,8 +423,23 @@ def _variants(xy, width, height) -> dict:
     out["y up"] = (_clamp(height - r1, height), _clamp(height - r0, height), c0, c1)
     a = np.asarray(xy, dtype=float)
     out["min over axis 1"] = _from_bounds(a.min(axis=1)[:2], a.max(axis=1)[:2], width, height)
-    out["two vertices"] = _from_bounds(a[:2].min(axis=0), a[:2].max(axis=0), width, height)
+    for pair, kind in PAIRS.items():  # r505 H5: v1 and v3 too
+        two = a[list(pair)]
+        out[kind] = _from_bounds(two.min(axis=0), two.max(axis=0), width, height)
+    lo, hi = a.min(), a.max()  # r505 H6: np.min(xy) without axis=0
+    out["mixed axes"] = _from_bounds((lo, lo), (hi, hi), width, height)
+    x0, y0 = a.min(axis=0)
+    x1, y1 = a.max(axis=0)
+    for kind, (lo, hi) in {  # r505 H7 (r494 H5): one end from the other axis
+        "first row from x": ((x0, x0), (x1, y1)), "end row from x": ((x0, y0), (x1, x1)),
+        "first column from y": ((y0, y0), (x1, y1)), "end column from y": ((x0, y0), (y1, y1)),
+    }.items():  # fmt: skip
+        out[kind] = _from_bounds(lo, hi, width, height)
     return out
+
+
+#: (vertex indices): kind, for a bounding box of two vertices only
+PAIRS = {(0, 1): "two vertices", (0, 2): "vertices v1, v3", (1, 2): "vertices v2, v3"}
 
 
 def _empty_axis_as_zero(b):
@@ -428,6 +488,18 @@ WORDS |= {
     "(axis=1), not over the three vertices' x and y (axis=0 of the 3 × 2 array)",
     "two vertices": "your bounding box is that of the first two vertices only: take every "
     "vertex's",
+    "vertices v1, v3": "your bounding box is that of two vertices only, v1 and v3 (xy[0] and "
+    "xy[2]): take every vertex's",
+    "vertices v2, v3": "your bounding box is that of two vertices only, v2 and v3 (xy[1] and "
+    "xy[2]): take every vertex's",
+    "mixed axes": "your bounds mix x and y: they are the minimum and maximum over all six "
+    "coordinates (np.min(xy) without axis=0?), not over the three x and the three y apart",
+    "first row from x": "your first row comes from x_min, not y_min: rows count down, from y",
+    "end row from x": "your end row comes from x_max, not y_max: rows count down, from y",
+    "first column from y": "your first column comes from y_min, not x_min: columns count "
+    "across, from x",
+    "end column from y": "your end column comes from y_max, not x_max: columns count across, "
+    "from x",
     "whole image": "you returned the whole image (0, height, 0, width): a placeholder? The box "
     "must come from the triangle's bounding box",
 }  # fmt: skip
@@ -470,7 +542,10 @@ def _tolerance(args, expected, got):
         for eps in sorted(g for g in gaps if 0 < g <= MAX_TOLERANCE + tiny):
             ends = tuple(_clamp(math.ceil(t + sign * eps), n) for t, n in zip(ts, sizes))
             moved = [k for k in range(4) if ends[k] != right[k]]
-            if moved and same_box(got, ends, args):
+            # r505 M1: an empty answer only as this very box (any two empty boxes are the
+            # same centres, so (0, 0, 0, 0) for a thin triangle fitted an ε)
+            fit = tuple(got) == ends if is_empty(got) else same_box(got, ends, args)
+            if moved and fit:
                 found.append((tuple(got) != ends, sign, moved))  # an exact match first
     return min(found, key=lambda f: f[0])[1:] if found else None
 
@@ -506,7 +581,48 @@ def _tolerance_words(args, expected, got) -> str:
     )
 
 
+#: r505 M1, M2: the largest area (px²) and bounding-box side (px) called thin
+THIN_AREA, THIN_SIDE = 4, 2
+
+
+def _thin(args) -> tuple[Fraction, Fraction, Fraction]:
+    """(area, width, height) of the triangle and its bounding box, exactly."""
+    x0, x1, y0, y1 = _bounds(args[0])
+    return abs(_area2(args[0])) / 2, x1 - x0, y1 - y0
+
+
+def _thin_empty_fits(args, expected, got) -> bool | None:
+    """An empty box for a thin triangle (small area, or a bounding box less than 2 px wide or
+    tall) whose box is not empty, where the package covers some centre of it (else the box of
+    the covered pixels says more)."""
+    if got is None or not is_empty(got) or is_empty(expected):
+        return False
+    area, w, h = _thin(args)
+    if area >= THIN_AREA and min(w, h) >= THIN_SIDE:
+        return False
+    xy, width, height = args
+    return bool(rasterize(_tri(xy), width, height).coverage.any()) or None
+
+
+def _thin_empty_words(args, expected, got) -> str:
+    area, w, h = _thin(args)
+    xy, width, height = args
+    n = int(rasterize(_tri(xy), width, height).coverage.sum())
+    facts = [f"its area is {num(float(area))} px², small but not 0"]
+    if min(w, h) < THIN_SIDE:
+        side, v = ("wide", w) if w <= h else ("tall", h)
+        facts.append(f"its bounding box is {num(float(v))} px {side}")
+    return (
+        f"your box is empty, yet this thin triangle covers {n} centre(s) ({'; '.join(facts)}): "
+        "a test on the area or on the bounding box's width or height with a tolerance (abs(E) "
+        "< ε, x_max − x_min < 1)? An empty box is right only for a triangle of zero area (E = 0 "
+        "exactly) or where no row or column of the image holds a centre of the bounding box; "
+        "the vertices lie exactly on the 1/256-px grid, so compare with no tolerance"
+    )
+
+
 SYMPTOMS = (
+    Mistake("empty for a thin triangle", _thin_empty_words, fits=_thin_empty_fits),
     Mistake("a tolerance on the bounds", _tolerance_words, fits=_tolerance_fits),
     Mistake(
         "box of the covered pixels",
@@ -603,6 +719,8 @@ def draw_box(ax, case, got):
         note_beside(ax)
     else:
         for b, colour, label in ((expected, "#2b7bba", "the box"), (got, "#d7301f", "yours")):
+            if b is not None and is_empty(b) and colour == "#d7301f":  # r505: say it is empty
+                artists += ax.plot([], [], color=colour, lw=2, label=f"yours: {tuple(b)}, empty")
             if b is not None and not is_empty(b):
                 r0, r1, c0, c1 = b
                 artists.append(ax.add_patch(Rectangle(
@@ -623,7 +741,8 @@ def draw_box(ax, case, got):
 #: r494: kinds named only where they give every answer of the check: the first two vertices'
 #: box is the right one wherever the third vertex lies inside it, so on a few cases it fitted
 #: bounds taken from the leftmost and rightmost vertices' y by coincidence.
-WHOLE_ONLY = frozenset({"two vertices"})
+WHOLE_ONLY = frozenset({*PAIRS.values(), "mixed axes", "first row from x", "end row from x",
+                        "first column from y", "end column from y"})  # fmt: skip
 
 
 def _mistakes() -> list[Mistake]:
@@ -637,10 +756,11 @@ BOX = Exercise(
     "box", box_cases, as_box, same_box, explain_box, _rule,
     _mistakes(),
     answers=(
-        PackageAnswer(rasterize),
+        # r505 H8: its coverage is not the box ("this very answer" said it was)
+        PackageAnswer(rasterize, what="the pixels the triangle covers, not the box"),
         PackageAnswer(pixel_bbox, what="the closed box of centres (⌊max − ½⌋ + 1)"),
     ),
-    draw=draw_box, constant=_constant,
+    draw=draw_box, constant=_constant, call=call_box,
     match=lambda got, answer, args: answer is not None and same_box(got, answer, args),
     hints=HINTS,
 )  # fmt: skip

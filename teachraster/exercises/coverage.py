@@ -130,9 +130,10 @@ MOVES = {
 }
 
 
-def _apply(data, owns, winding: str) -> np.ndarray:
+def _apply(data, owns, winding: str, skip: int | None = None) -> np.ndarray:
     """``owns``: the kinds of edge that own their ties, or ``owns(a, b) -> bool`` on the
-    oriented edge a→b (a student's own tie test, r347 3: ``dy < 0 or dx > 0``)."""
+    oriented edge a→b (a student's own tie test, r347 3: ``dy < 0 or dx > 0``); ``skip``: an
+    oriented edge never tested (r505 H9: the loop stops before v3→v1)."""
     e, kinds, area, v = data
     n = e.shape[1]
     wrong_side = (winding == "clockwise only" and area < 0) or (
@@ -142,6 +143,8 @@ def _apply(data, owns, winding: str) -> np.ndarray:
         return np.zeros(n, dtype=bool)
     inside = np.ones(n, dtype=bool)
     for k in range(3):
+        if k == skip:
+            continue
         own = owns(v[k], v[(k + 1) % 3]) if callable(owns) else kinds[k] in owns
         inside &= passes(e[k], bool(own))
     return inside
@@ -177,7 +180,8 @@ def rule_image(
     w, h = case.size
     key = np.ascontiguousarray(xy, dtype=float).tobytes()
     data = _cached_edges(key, tuple(case.origin), (w, h), at, swap, vertices)
-    return _apply(data, rule.get("owns", TOP_LEFT), rule.get("winding", "both")).reshape(h, w)
+    owns, winding = rule.get("owns", TOP_LEFT), rule.get("winding", "both")
+    return _apply(data, owns, winding, rule.get("skip")).reshape(h, w)
 
 
 def rule_images(case: CoverageCase, **rule) -> np.ndarray:

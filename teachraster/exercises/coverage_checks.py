@@ -966,6 +966,15 @@ def _always(*args) -> bool:
     return True
 
 
+#: r505 H9: the loop over the edges stops before the third (told "none of the typical
+#: mistakes" with 32 extra pixels)
+EDGE_LEFT_OUT = (
+    "you test two edges only: the edge from v3 back to v1 is never tested (a loop over "
+    "((v1, v2), (v2, v3)), or zip(xy, xy[1:]), stops before it), so centres outside it are "
+    "covered too: test all three, v1→v2, v2→v3 and v3→v1"
+)
+
+
 def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
     """r347's mistakes that no knob reproduces (singles: they do not combine)."""
 
@@ -979,6 +988,8 @@ def _r347_mistakes(name: str, masked: bool) -> list[Mistake]:
                 gives=lambda case: masks(cov.rule_images(case, owns=_owns_left_running), case)),
         Mistake("vertical left edges only", _in_covers(VERTICAL_LEFT, not masked),
                 gives=lambda case: masks(cov.rule_images(case, owns=_owns_vertical_left), case)),
+        Mistake("an edge left out", _in_covers(EDGE_LEFT_OUT, not masked),
+                gives=lambda case: masks(cov.rule_images(case, skip=2), case)),
         # r347: named only where they give every failing case they must (a fit on one case
         # alone is a coincidence: a point sampled off the centre left a sliver empty)
         Mistake("zero area by a tolerance", _area_tolerance_words, fits=_area_tolerance_fits,
