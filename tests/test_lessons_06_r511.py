@@ -84,3 +84,22 @@ def test_s4_cell_44_points_at_lines_that_print_its_claims():
     assert (
         f"{ns.setup_cycles / 4:.3g} for 4 px" in printed and ns.setup_cycles / 4 > ns.P5["divides"]
     )
+
+
+def test_s5_fewer_pointers_the_numbers_quoted_where_printed_beside():
+    ns = lesson(NAME)
+    # SPAN_WHY: the derivation and the cuts in two paragraphs; "towards 2" quotes r = 100's cut
+    why = ns.SPAN_WHY.split("\n\n")
+    assert len(why) == 2 and why[1].startswith("Near $\\rho = 1$")
+    assert ns.SPAN_WHY.count("the lines above") == 1
+    assert f"towards 2 ({ns.span_cut[100.0]:.2f} at $r = 100$)" in ns.SPAN_WHY
+    # FILL_TEXT: the limit quoted (as printed under the table), no "(the last lines)"
+    fill = " ".join(ns.FILL_TEXT.split())
+    assert "(the printed limit)" not in fill and "(the last lines)" not in fill
+    assert f"per covered pixel: {ns.fill_limit:.1f} at 512²" in fill
+    printed = printed_and_folded(executed(NAME).notebook())
+    assert f"so the ratio tends to {ns.fill_limit:.1f}x" in printed
+    # cell 47: one pointer for its three trades, not three
+    (bits,) = [s for k, s in _cells() if k == "markdown" and s.startswith("**And in bits**")]
+    flat = " ".join(bits.split())
+    assert flat.count("the line") == 1 and "(the lines above measure three trades)" in flat
