@@ -223,7 +223,7 @@ def test_06_doom_and_quake_in_a_sentence_each():
     code = "".join("".join(c["source"]) for c in nb["cells"] if c["cell_type"] == "code")
     assert "`R_MapPlane` in `r_plane.c`" in md and "`D_DrawSpans8` in `d_scan.c`" in md
     assert "def error_image(" not in code and "err_px" not in code and "def draw_checks(" in code
-    assert "rolled 25°" in md
+    assert "rolled so that depth changes along every row" in md  # the roll: printed (r511 S1)
 
 
 def test_06_review_r60_figures_say_what_they_draw():
@@ -6322,7 +6322,7 @@ def test_06_one_span_explorer_and_q_span():
 
     from notebook_runs import executed
 
-    from teachraster.study.span_subdivision import SPAN_PIXELS, SPAN_TEXELS
+    from teachraster.study.span_subdivision import SPAN_PIXELS
     from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
 
     ns = lesson("06_what_accuracy_costs")
@@ -6347,8 +6347,9 @@ def test_06_one_span_explorer_and_q_span():
     assert SpanSubdivisionExplorer.__module__ in cells["q06span"]
     assert ns.span_r == (10.0, 100.0) and abs(ns.near.rho[ns.near.worst] - ns.ratio_q) < 0.5
     text = " ".join(cells["spantext"].split())
-    assert f"{SPAN_PIXELS} pixels ({SPAN_PIXELS - 1} steps)" in text
-    assert f"crossing {SPAN_TEXELS} texels" in text and "Predict first" in text
+    # r511 S2: the span's numbers are printed (q_span's stem, the explorer's subtitle), not typed
+    assert not any(ch.isdigit() for ch in text) and "Predict first" in text
+    assert f"one span of {SPAN_PIXELS - 1} steps" in ns.span_question
     # r276 P1: the reasoning (the share, the cut of about 4 at a low r) is held, after q_span
     assert "cut of about 4" not in text and "Why a piece misses" not in text
     assert (

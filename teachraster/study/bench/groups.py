@@ -24,6 +24,7 @@ from .settings import (
     DEPTH_VARIANTS,
     EDGE_VARIANTS,
     FAR,
+    FLOOR_ROLL,
     MESH_OFFSETS,
     NEAR,
     SLANT,
@@ -35,7 +36,7 @@ from .timing import Progress, time_rows
 
 
 # -- interpolation ----------------------------------------------------------------------------
-def floor_quad(size: int, roll: float = 25.0):
+def floor_quad(size: int, roll: float = FLOOR_ROLL):
     """A floor receding from 0.6 to 60 units, as two window-space triangles with w and uv.
 
     A pinhole camera of focal length ``size / 2`` px, 1 unit above the floor and rolled by

@@ -8,6 +8,9 @@ GROUPS = ("interpolation", "edge functions", "fill", "depth")
 
 #: Texture size that converts texture coordinates to texels.
 TEXELS = 256
+#: Roll of the study's floor camera about its view axis, in degrees: depth changes along
+#: every raster line (level, each line would have one depth).
+FLOOR_ROLL = 25.0
 SUBDIVISIONS = (2, 4, 8, 16, 32)
 EDGE_VARIANTS = tuple(
     (arith, ev) for arith in precision.ARITHMETICS for ev in precision.EVALUATIONS
