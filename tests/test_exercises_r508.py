@@ -75,6 +75,21 @@ RIGHT = {
 }
 
 WRONG = {
+    "cc_w_neighbours": (
+        "covered_counts",
+        "\nimport math\ndef covered_counts(code, fg_code, bg_code, S):\n    lf = float(srgb_to_linear(fg_code / 255)); lb = float(srgb_to_linear(bg_code / 255))\n    if lf == lb:\n        return list(range(S + 1))\n    t = S * (float(srgb_to_linear(code / 255)) - lb) / (lf - lb)\n    return sorted({k for k in (math.floor(t), math.ceil(t)) if 0 <= k <= S})\n",
+        "the counts either side of S·t",
+    ),
+    "cc_w_int_div_codes": (
+        "covered_counts",
+        "\ndef covered_counts(code, fg_code, bg_code, S):\n    fg = srgb_to_linear(fg_code // 255); bg = srgb_to_linear(bg_code // 255)\n    return [k for k in range(S + 1) if round(255 * float(linear_to_srgb((k * fg + (S - k) * bg) / S))) == code]\n",
+        "with // (integer division)",
+    ),
+    "rf_w_int_div_weights": (
+        "resolve_fragments",
+        "\ndef resolve_fragments(fragments, sample_fragment, background):\n    i = np.asarray(sample_fragment); f = np.asarray(fragments, float).reshape(-1, 3); S = len(i)\n    out = ((i < 0).sum() // S) * np.asarray(background, float)\n    for j in range(len(f)):\n        out = out + ((i == j).sum() // S) * f[j]\n    return out\n",
+        "count // S (integer division)",
+    ),
     "rf_w_no_divide": (
         "resolve_fragments",
         "\ndef resolve_fragments(fragments, sample_fragment, background):\n    i = np.asarray(sample_fragment); f = np.asarray(fragments, float).reshape(-1, 3)\n    out = (i < 0).sum() * np.asarray(background, float)\n    for j in range(len(f)):\n        out = out + (i == j).sum() * f[j]\n    return out\n",

@@ -436,13 +436,21 @@ def _over_s_plus_1(k, fg, bg, s):
     return int(np.round(float(_encode(light)) * 255))
 
 
+def _neighbours(code, fg, bg, s):
+    lf, lb = float(_decode(fg / 255)), float(_decode(bg / 255))
+    if lf == lb:
+        return None
+    t = s * (float(_decode(code / 255)) - lb) / (lf - lb)
+    return tuple(float(k) for k in sorted({int(np.floor(t)), int(np.ceil(t))}) if 0 <= k <= s)
+
+
 R508 = [
     Mistake("encoded with srgb_to_linear", ": you encoded the mixed light with srgb_to_linear, "
             "which decodes (code → light): the screen's code is linear_to_srgb(light) × 255",
-            gives=_curves(encode=_decode)),
+            gives=_curves(encode=_decode), only_whole=True),
     Mistake("decoded with linear_to_srgb", ": you decoded the codes with linear_to_srgb, which "
             "encodes (light → code): a code's light is srgb_to_linear(code / 255)",
-            gives=_curves(decode=_encode)),
+            gives=_curves(decode=_encode), only_whole=True),
     Mistake("tolerance over ½", _over_half_words, fits=_over_half),
     Mistake("k listed twice", lambda a, e, g: f": your list holds k = "
             f"{_ks(sorted({k for k in g if list(g).count(k) > 1}))[1:-1]} more than once: give "
@@ -451,12 +459,22 @@ R508 = [
             "number of covered samples, 0 … S", gives=_one_more, only_whole=True),
     Mistake("background unweighted", ": you added the background's whole light to the "
             "triangle's share (k·fg/S + bg): the background shows on the S − k uncovered "
-            "samples, so its light weighs (S − k)/S", gives=_matching(_background_unweighted)),
+            "samples, so its light weighs (S − k)/S", gives=_matching(_background_unweighted),
+            only_whole=True),
     Mistake("light of the codes rounded", ": you rounded each code's light (each sample's) to 8 bits before "
             "mixing; the resolve mixes the decoded light unrounded, and only the encoded mean "
-            "is rounded, once", gives=_matching(_light_of_codes_rounded)),
+            "is rounded, once", gives=_matching(_light_of_codes_rounded), only_whole=True),
     Mistake("divided by S + 1", ": you divided the mixed light by S + 1; the k covered and "
-            "S − k uncovered samples are S in all", gives=_matching(_over_s_plus_1)),
+            "S − k uncovered samples are S in all", gives=_matching(_over_s_plus_1),
+            only_whole=True),
+    Mistake("codes // 255", ": you divided the codes by 255 with // (integer division): every "
+            "code but 255 becomes 0; a code's light is srgb_to_linear(code / 255)",
+            gives=_curves(scale=255, decode=lambda c: _decode(np.floor(np.asarray(c) + 1e-9))),
+            only_whole=True),
+    Mistake("both neighbours of S·t", ": you returned the counts either side of S·t (t the "
+            "code's share of the light between the two codes) without checking which of them "
+            "shows the code: compute each k's code and keep those that match",
+            gives=_neighbours, only_whole=True),
 ]  # fmt: skip
 
 

@@ -411,9 +411,19 @@ def _f_over_s(fr, idx, bg):
     return a * total / (len(idx) - u) + (1 - a) * b
 
 
+def _whole_weights(fr, idx, bg):
+    """Each weight count // S (integer division): 0 unless one colour shows on every sample."""
+    c, _, u, b = _sums(fr, idx, bg)
+    s = len(idx)
+    return ((c // s)[:, None] * fr).sum(axis=0) + (u // s) * b
+
+
 R508 = [
     Mistake("divided by another count", _divisor_words,
             fits=lambda a, e, g: None if _divisor(a, e, g) is None else True),
+    Mistake("weights by //", lambda a, e, g: ": your weights are count // S (integer "
+            f"division): 0 for every colour here, as none shows on all {len(a[1])} samples; "
+            "divide as floats, count / S", gives=_whole_weights, only_whole=True),
     Mistake("distinct indices equal", lambda a, e, g: ": you gave each distinct index "
             "present the same weight" + (" (the background's −1 as one more colour)" if
                                          (a[1] < 0).any() else "") + ": a fragment, and the "
