@@ -37,7 +37,7 @@ def test_codes_expected_match_package_and_stay_off_ties():
             light = np.full(4, (k * lf + (s - k) * lb) / s)
             light[3] = 1.0
             assert srgb8_codes(light)[0] == rc.forward_code(k, fg, bg, s), label
-            assert rc.tie_distance(k, fg, bg, s) > 1e-6, label
+            assert rc.tie_distance(k, fg, bg, s) > rc.TIE_MARGIN, label
         assert expected and code == rc.forward_code(expected[0], fg, bg, s), label
 
 

@@ -262,6 +262,8 @@ SAMPLE_SNAPS = {
         ", rounding half up",
         lambda p: np.floor(np.asarray(p, float) * 256 + 0.5) / 256,
     ),
+    # r508 MN2: floored to the grid, told the vertices' "snapping rounds … not down"
+    "floored": (", rounding down", lambda p: np.floor(np.asarray(p, float) * 256) / 256),
 }
 
 
@@ -1033,6 +1035,8 @@ R443_MISTAKES = [
     _one_sample(-1),
     Mistake("samples snapped", _snapped_samples_words("snapped half up"),
             gives=functools.partial(fraction_with, points="snapped half up"), only_whole=True),
+    Mistake("samples snapped", _snapped_samples_words("floored"),
+            gives=functools.partial(fraction_with, points="floored"), only_whole=True),
 ]  # fmt: skip
 
 

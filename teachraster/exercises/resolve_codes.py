@@ -10,8 +10,9 @@ same code: the answer is every k that gives it, sorted.
 
 Expected answers are an independent float64 computation (:func:`forward_code`); the tests
 compare every case's codes with the package's ``srgb8_codes`` (the 8-bit sRGB target of
-:mod:`teachraster.pipeline.blending.colour_blending`) and keep every case at least 1e-6 of a
-code away from a rounding tie, so that float64 cannot flip one.
+:mod:`teachraster.pipeline.blending.colour_blending`) and keep every case at least
+:data:`TIE_MARGIN` of a code away from a rounding tie, so that neither float64 nor a correct
+float32 computation can flip one.
 """
 
 from __future__ import annotations
@@ -37,6 +38,12 @@ def _encode(x):
     return np.where(
         x <= 0.0031308, 12.92 * x, 1.055 * np.maximum(x, 0.0031308) ** (1 / 2.4) - 0.055
     )
+
+
+#: How far every case's 255 × encoded means stay from a rounding tie (x.5), in codes: above
+#: float32's rounding of a correct forward model (eight roundings of 2⁻²⁴ at 255: 1.2e-4 of a
+#: code; r508 F1: at 1e-6 one drawn case in 20 000, 139.4999987, gave 140 in float32).
+TIE_MARGIN = 5e-4
 
 
 def forward_value(k, fg_code, bg_code, s, decode=_decode, encode=_encode) -> float:
@@ -96,6 +103,8 @@ def _cases(rng, word):
         # r499 WP1, WP2: codes over 256 give [] on the first, float16 light on the second
         ("2 samples, a light triangle on a dark grey", 1, 162, 14, 2),
         ("2 samples, two mid greys", 1, 86, 128, 2),
+        # r508 WP1: k = 3 gives 223.5022 (code 224): np.isclose(v, 223, atol=0.5) keeps it
+        ("two light greys two codes apart, S = 4", 4, 223, 225, 4),
     ]  # fmt: skip
     out = [case(*c) for c in hard]
     n = 0
@@ -103,7 +112,7 @@ def _cases(rng, word):
         s = (2, 4, 8, 16)[n % 4]
         fg, bg = (int(v) for v in rng.integers(0, 256, size=2))
         k = int(rng.integers(0, s + 1))
-        if min(tie_distance(j, fg, bg, s) for j in range(s + 1)) > 1e-6:  # off the ties
+        if min(tie_distance(j, fg, bg, s) for j in range(s + 1)) > TIE_MARGIN:  # off the ties
             n += 1
             out.append(case(f"{word} {n}: S = {s}", k, fg, bg, s))
     return out
@@ -117,9 +126,27 @@ def as_counts(value) -> tuple:
     refuse_non_answers(value, "a list of the possible k")
     if isinstance(value, (bool, np.bool_)):
         raise WrongAnswerType(f"returned {value}, a bool: return the possible k as a list")
+    if _bools(value):  # r508: a mask over k = 0 … S
+        raise WrongAnswerType(
+            f"returned {_short_list(value)}, a list of bools (a mask over k = 0 … S): return "
+            "the k themselves, those where it is True ([k for k, ok in enumerate(mask) if ok])"
+        )
     arr = as_numbers(np.atleast_1d(value) if np.ndim(value) == 0 else value, (-1,),
                      "a list of the possible k (whole numbers 0 … S)", max_size=64)  # fmt: skip
     return tuple(sorted(float(v) for v in arr))
+
+
+def _bools(value) -> bool:
+    try:
+        arr = np.asarray(value)
+    except (ValueError, TypeError):
+        return False
+    return arr.ndim == 1 and arr.size > 0 and arr.dtype == bool
+
+
+def _short_list(value) -> str:
+    items = [bool(v) for v in value]
+    return "[" + ", ".join(map(str, items[:6])) + (", …]" if len(items) > 6 else "]")
 
 
 def same_counts(got, expected, args) -> bool:
@@ -284,6 +311,9 @@ def _which_differ(args, expected, got) -> str:
             else "is no count 0 … S"
         )
         words.append(f"yours holds k = {k:g}, whose resolve {shown}")
+    twice = sorted({k for k in got if list(got).count(k) > 1})
+    if twice:  # r508 HN9: the words were empty for [2, 2]
+        words.append(f"yours holds k = {_ks(twice)[1:-1]} more than once")
     return ": " + "; ".join(words) + rule(args, expected, got)
 
 
@@ -342,6 +372,112 @@ R499 = [
 ]  # fmt: skip
 
 
+# -- r508: a tolerance just over ½, the curves swapped, k + 1, duplicates, the background's
+# light unweighted, each code's light rounded, ÷ (S + 1) ---------------------------------------
+#: How far past ½ a code a "just over half" tolerance reaches (np.isclose's rtol adds 0.00255 at
+#: code 255); wider ones are other mistakes (a tolerance of one code).
+OVER_HALF = 0.51
+
+
+def _over_half(args, expected, got):
+    """A test that accepts a k whose value lies just over ½ a code from the code shown (np.isclose
+    adds rtol · |code| to atol = 0.5): the right k, and the extra ones are each the nearest
+    beyond ½, by at most :data:`OVER_HALF`."""
+    code, fg, bg, s = args
+    right = {float(k) for k in expected}
+    extra = [k for k in got if k not in right]
+    if not extra or not right <= set(got) or len(set(got)) != len(got):
+        return None
+    if not all(float(k).is_integer() and 0 <= k <= s for k in extra):
+        return None
+    far = [abs(forward_value(int(k), fg, bg, s) - code) for k in extra]
+    if not all(0.5 < d <= OVER_HALF for d in far):  # a tolerance of a whole code: _within(1)
+        return None
+    reach = max(far)  # every k within the same reach must be in the answer
+    return all(float(k) in got for k in range(s + 1)
+               if abs(forward_value(k, fg, bg, s) - code) <= reach)  # fmt: skip
+
+
+def _over_half_words(args, expected, got) -> str:
+    code, fg, bg, s = args
+    k = next(int(k) for k in got if k not in {float(e) for e in expected})
+    v = forward_value(k, fg, bg, s)
+    return (
+        f": you kept k = {k}, whose 255 · encode(…) is {v:.4f}, {abs(v - code):.4f} from {code}: "
+        f"it rounds to {forward_code(k, fg, bg, s)}; your test accepts more than half a code "
+        f"(np.isclose(v, code, atol=0.5), for one, adds rtol · |code| = {1e-5 * code:.5f}); "
+        "the target rounds to the "
+        "nearest code: round(v) == code, or |v − code| ≤ 0.5"
+    )
+
+
+def _duplicated(args, expected, got):
+    if len(set(got)) == len(got):
+        return None
+    return sorted(set(got)) == [float(k) for k in expected]
+
+
+def _one_more(code, fg, bg, s):
+    return tuple(float(k + 1) for k in expected_counts(code, fg, bg, s))
+
+
+def _background_unweighted(k, fg, bg, s):
+    light = min(k * float(_decode(fg / 255)) / s + float(_decode(bg / 255)), 1.0)
+    return int(np.round(float(_encode(light)) * 255))
+
+
+def _light_of_codes_rounded(k, fg, bg, s):
+    lf, lb = (np.round(float(_decode(c / 255)) * 255) / 255 for c in (fg, bg))
+    return int(np.round(float(_encode((k * lf + (s - k) * lb) / s)) * 255))
+
+
+def _over_s_plus_1(k, fg, bg, s):
+    light = (k * _decode(fg / 255) + (s - k) * _decode(bg / 255)) / (s + 1)
+    return int(np.round(float(_encode(light)) * 255))
+
+
+def _neighbours(code, fg, bg, s):
+    lf, lb = float(_decode(fg / 255)), float(_decode(bg / 255))
+    if lf == lb:
+        return None
+    t = s * (float(_decode(code / 255)) - lb) / (lf - lb)
+    return tuple(float(k) for k in sorted({int(np.floor(t)), int(np.ceil(t))}) if 0 <= k <= s)
+
+
+R508 = [
+    Mistake("encoded with srgb_to_linear", ": you encoded the mixed light with srgb_to_linear, "
+            "which decodes (code → light): the screen's code is linear_to_srgb(light) × 255",
+            gives=_curves(encode=_decode), only_whole=True),
+    Mistake("decoded with linear_to_srgb", ": you decoded the codes with linear_to_srgb, which "
+            "encodes (light → code): a code's light is srgb_to_linear(code / 255)",
+            gives=_curves(decode=_encode), only_whole=True),
+    Mistake("tolerance over ½", _over_half_words, fits=_over_half),
+    Mistake("k listed twice", lambda a, e, g: f": your list holds k = "
+            f"{_ks(sorted({k for k in g if list(g).count(k) > 1}))[1:-1]} more than once: give "
+            "each k once", fits=_duplicated),
+    Mistake("k + 1", ": your k are one too many (k + 1 for each: counted from 1?): k is the "
+            "number of covered samples, 0 … S", gives=_one_more, only_whole=True),
+    Mistake("background unweighted", ": you added the background's whole light to the "
+            "triangle's share (k·fg/S + bg): the background shows on the S − k uncovered "
+            "samples, so its light weighs (S − k)/S", gives=_matching(_background_unweighted),
+            only_whole=True),
+    Mistake("light of the codes rounded", ": you rounded each code's light (each sample's) to 8 bits before "
+            "mixing; the resolve mixes the decoded light unrounded, and only the encoded mean "
+            "is rounded, once", gives=_matching(_light_of_codes_rounded), only_whole=True),
+    Mistake("divided by S + 1", ": you divided the mixed light by S + 1; the k covered and "
+            "S − k uncovered samples are S in all", gives=_matching(_over_s_plus_1),
+            only_whole=True),
+    Mistake("codes // 255", ": you divided the codes by 255 with // (integer division): every "
+            "code but 255 becomes 0; a code's light is srgb_to_linear(code / 255)",
+            gives=_curves(scale=255, decode=lambda c: _decode(np.floor(np.asarray(c) + 1e-9))),
+            only_whole=True),
+    Mistake("both neighbours of S·t", ": you returned the counts either side of S·t (t the "
+            "code's share of the light between the two codes) without checking which of them "
+            "shows the code: compute each k's code and keep those that match",
+            gives=_neighbours, only_whole=True),
+]  # fmt: skip
+
+
 MISTAKES = [
     Mistake("shares in codes", ": you took the share of the pixel in codes (8-bit sRGB numbers) "
             "as if they were light: a screen's codes are encoded, and the resolve mixes light", gives=_in_codes),
@@ -357,9 +493,9 @@ MISTAKES = [
     Mistake("code truncated", ": you truncated 255 · encode(…) to 8 bits (int, floor); the "
             "target rounds to the nearest code",
             gives=_matching(lambda k, fg, bg, s: int(forward_value(k, fg, bg, s)))),
-    *(Mistake("power curve", f": you decoded and encoded with a plain power {g}, not sRGB's "
+    *(Mistake("power curve", f": you decoded and encoded with a plain power {g:g}, not sRGB's "
               "curves (srgb_to_linear, linear_to_srgb: a linear part near black)",
-              gives=_matching(_power(g))) for g in (2.2, 2.4)),
+              gives=_matching(_power(g))) for g in (2.2, 2.4, 2.0)),
     Mistake("encoded light not decoded", ": you mixed the light but compared it with the code "
             "/ 255 undecoded (or encoded the mix twice)",
             gives=_matching(lambda k, fg, bg, s: int(np.round(255 * _decode(
@@ -379,6 +515,7 @@ MISTAKES = [
     Mistake("k = 0 never tried", ": you tried k = 1 … S only: no sample covered is possible "
             "too", gives=lambda c, f, b, s: tuple(float(k) for k in expected_counts(c, f, b, s)
                                                   if k > 0), only_whole=True),
+    *R508,
     *R499,
 ]  # fmt: skip
 

@@ -342,6 +342,109 @@ R499 = [
 ]  # fmt: skip
 
 
+# -- r508: the sum divided by another count than S, one colour returned whole, equal weights
+# per distinct index, the background weighed by the covered share, F / S as the covered share --
+def _divisor(args, expected, got) -> float | None:
+    """The whole number d ≠ S (1 … 2S) with ``got`` = (the right sum) / d, or None."""
+    fr, idx, _ = args
+    s = len(idx)
+    total, g = np.asarray(expected, float) * s, np.asarray(got, float).ravel()
+    if g.shape != (3,) or int((np.abs(total) > 1e-9).sum()) < 2 or abs(g).max() < 1e-12:
+        return None  # one channel alone: any multiple fits it (a single colour picked)
+    j = int(np.argmax(np.abs(total)))
+    d = total[j] / g[j] if g[j] else 0.0
+    if not (0.5 < d < 2 * s + 0.5) or abs(d - round(d)) > 1e-6 or round(d) == s:
+        return None
+    return float(round(d)) if np.allclose(g * round(d), total, atol=1e-6) else None
+
+
+def _divisor_words(args, expected, got) -> str:
+    s, d = len(args[1]), int(_divisor(args, expected, got))
+    named = {s - 1: " (S − 1)", s + 1: " (S + 1)"}.get(d, "")
+    how = "did not divide it by S" if d == 1 else f"divided it by {d}{named}, not by S"
+    return (
+        f": you summed the {s} samples' colours (each fragment by its samples, the background by "
+        f"the uncovered ones) but {how} = {s}: each sample stands for 1/S of the pixel"
+    )
+
+
+def _picked(args, expected, got) -> str | None:
+    """Which input colour the answer is, whole: 'fragment j' or 'the background'."""
+    fr, idx, bg = args
+    g = np.asarray(got, float).ravel()
+    if g.shape != (3,):
+        return None
+    for j, c in enumerate(fr):
+        if np.allclose(g, c, atol=1e-9):
+            return f"fragment {j}"
+    return "the background" if np.allclose(g, bg, atol=1e-9) else None
+
+
+def _picked_words(args, expected, got) -> str:
+    fr, idx, _ = args
+    c, u = counts(idx, len(fr)), int((idx < 0).sum())
+    shares = [f"fragment {j}: {n}" for j, n in enumerate(c)] + [f"the background: {u}"]
+    return (
+        f": your answer is {_picked(args, expected, got)}'s colour alone; the pixel shows the mix "
+        f"of all {len(idx)} samples, each colour weighing the samples that show it "
+        f"({', '.join(shares)} of {len(idx)})"
+    )
+
+
+def _distinct_equal(fr, idx, bg):
+    """Each distinct index present (−1, the background, as one more) one equal weight."""
+    present = np.unique(idx)
+    return np.mean([np.asarray(bg, float) if j < 0 else fr[j] for j in present], axis=0)
+
+
+def _background_by_covered(fr, idx, bg):
+    _, total, u, b = _sums(fr, idx, bg)
+    return total / len(idx) + (len(idx) - u) / len(idx) * b
+
+
+def _f_over_s(fr, idx, bg):
+    """The covered samples' mean mixed with the background by F / S, not k / S."""
+    _, total, u, b = _sums(fr, idx, bg)
+    if u == len(idx) or not len(fr):
+        return None
+    a = min(len(fr) / len(idx), 1.0)
+    return a * total / (len(idx) - u) + (1 - a) * b
+
+
+def _whole_weights(fr, idx, bg):
+    """Each weight count // S (integer division): 0 unless one colour shows on every sample."""
+    c, _, u, b = _sums(fr, idx, bg)
+    s = len(idx)
+    return ((c // s)[:, None] * fr).sum(axis=0) + (u // s) * b
+
+
+R508 = [
+    Mistake("divided by another count", _divisor_words,
+            fits=lambda a, e, g: None if _divisor(a, e, g) is None else True),
+    Mistake("weights by //", lambda a, e, g: ": your weights are count // S (integer "
+            f"division): 0 for every colour here, as none shows on all {len(a[1])} samples; "
+            "divide as floats, count / S", gives=_whole_weights, only_whole=True),
+    Mistake("distinct indices equal", lambda a, e, g: ": you gave each distinct index "
+            "present the same weight" + (" (the background's −1 as one more colour)" if
+                                         (a[1] < 0).any() else "") + ": a fragment, and the "
+            "background, weigh by the number of samples that show them", gives=_distinct_equal),
+    Mistake("background by the covered share", lambda a, e, g: ": you weighed the background by "
+            f"the covered share k/S ({int((a[1] >= 0).sum())}/{len(a[1])}); it shows on the "
+            f"uncovered samples: (S − k)/S = {int((a[1] < 0).sum())}/{len(a[1])}",
+            gives=_background_by_covered),
+    Mistake("F / S as the covered share", lambda a, e, g: f": you took F/S = {len(a[0])}/"
+            f"{len(a[1])} (fragments stored / samples) as the covered share; it is the samples "
+            f"not marked −1, {int((a[1] >= 0).sum())}/{len(a[1])}, and each fragment weighs by "
+            "its own samples", gives=_f_over_s),
+    Mistake("channels reversed", ": your channels are in reverse order (B, G, R): the colour's "
+            "channels stay in the order given, R, G, B",
+            fits=lambda a, e, g: bool(np.allclose(np.asarray(g, float).ravel()[::-1], e,
+                                                  atol=1e-9)) if np.size(g) == 3 else None),
+    Mistake("one colour picked", _picked_words,
+            fits=lambda a, e, g: None if _picked(a, e, g) is None else True, symptom=True),
+]  # fmt: skip
+
+
 MISTAKES = [
     Mistake("index −1 wraps", _wrap_words, gives=_wrapped),
     Mistake("one weight per fragment", _per_fragment_words, gives=_per_fragment),
@@ -372,6 +475,7 @@ MISTAKES = [
             f"{len(a[1])})", gives=lambda f, i, b: (_sums(f, i, b)[1]
                                                     + _sums(f, i, b)[2] * b) / 4),
     *R499,
+    *R508,
 ]  # fmt: skip
 
 
@@ -395,9 +499,45 @@ def raised(args, error) -> str:
 
 
 def draw(ax, case_, got):
-    """The samples expanded to colours, as 6.2's earlier resolve drew them, and the answers."""
+    """The samples expanded to colours, each marked with its fragment index (−1: the
+    background), the answers beside them, and above the samples the F stored fragments, each
+    with its index and how many samples show it (r508 FIG1: an orphan was in words only)."""
+    from matplotlib.patches import Rectangle
+
     fr, idx, bg = case_[1]
-    return draw_resolve_case(ax, (case_[0], (expanded(fr, idx), idx, bg), case_[2]), got)
+    artists = draw_resolve_case(ax, (case_[0], (expanded(fr, idx), idx, bg), case_[2]), got)
+    s = len(idx)
+    for k, j in enumerate(idx):
+        colour = bg if j < 0 else fr[j]
+        artists.append(ax.text((k + 0.5) * 3.0 / s, 0.5, str(int(j)), ha="center", va="center",
+                               fontsize="x-small" if s <= 8 else 5, color=_ink(colour)))  # fmt: skip
+    ax.set_ylim(1.05, -1.75)
+    ax.set_box_aspect(0.5)
+    c = counts(idx, len(fr))
+    head = ("stored fragments: index, samples showing it" if len(fr) else
+            "no fragment stored (F = 0)")  # fmt: skip
+    artists.append(ax.text(0.0, -1.45, head, ha="left", va="center", fontsize="x-small"))
+    width = 3.0 / max(len(fr), 1)
+    for j, colour in enumerate(fr):
+        left, n = j * width, int(c[j])
+        artists.append(ax.imshow(np.clip(np.asarray(colour, float), 0, 1)[None, None],
+                                 extent=(left + 0.03, left + width - 0.03, -0.2, -1.2),
+                                 aspect="auto"))  # fmt: skip
+        if not n:  # an orphan: crossed out, no sample shows it
+            artists.append(ax.add_patch(Rectangle((left + 0.03, -1.2), width - 0.06, 1.0,
+                                                  fill=False, hatch="xx", edgecolor="0.5",
+                                                  linewidth=0)))  # fmt: skip
+        words = f"{j}: {n}" if n else f"{j}:\norphan"
+        artists.append(ax.text(left + width / 2, -0.7, words if width > 0.45 else str(j),
+                               ha="center", va="center", fontsize="x-small",
+                               color=_ink(colour)))  # fmt: skip
+    return artists
+
+
+def _ink(colour) -> str:
+    """Black on a light swatch, white on a dark one."""
+    r, g, b = np.clip(np.asarray(colour, float)[:3], 0, 1)
+    return "black" if 0.299 * r + 0.587 * g + 0.114 * b > 0.5 else "white"
 
 
 RESOLVE_FRAGMENTS = Exercise(
