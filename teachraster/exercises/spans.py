@@ -14,7 +14,6 @@ the 1/256-px grid, so :class:`fractions.Fraction` holds every number exactly).
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import math
 import re
@@ -27,7 +26,7 @@ from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from ..study.exact_spans import span_fill_int_dda
 from .answers import as_numbers, short
-from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
+from .cases import catalogue_coverage, copied, drawn_coverage, proper_triangles, winding
 from .drawing import note_beside
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
@@ -63,7 +62,7 @@ def span_cases() -> list[tuple[str, tuple, frozenset]]:
     """(label, (xy, row), covered columns) for rows that decide: ties, the split, the ends
     (built once, then copied), and the rows of a few triangles drawn for this check, so a
     table of the fixed cases' answers fails (r46 X1)."""
-    out = copy.deepcopy(_span_cases())
+    out = copied(_span_cases())
     for case in drawn_coverage():
         xy = case.triangles[0]
         rows = _rows(xy)
