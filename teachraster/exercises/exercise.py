@@ -358,6 +358,10 @@ def variant_mistakes(variants: Callable, words: dict, symptoms: Sequence[Mistake
 
     def of_case(args) -> dict:
         key = content_key(args)
+        if key is None:  # a mip Pyramid (a list's subclass), a frozen dataclass: by case_key
+            # (7.4's pixel_sample: each of its ~35 mistakes recomputed all ~35 variants)
+            key = case_key(args)
+            key = None if key is None else ("case", key)
         if key is None:
             return variants(*args)
         if key not in memo:

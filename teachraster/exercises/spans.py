@@ -14,7 +14,6 @@ the 1/256-px grid, so :class:`fractions.Fraction` holds every number exactly).
 
 from __future__ import annotations
 
-import copy
 import dataclasses
 import math
 import re
@@ -27,7 +26,7 @@ from ..core.fill import rasterize
 from ..core.triangle import Triangle
 from ..study.exact_spans import span_fill_int_dda
 from .answers import as_numbers, short
-from .cases import catalogue_coverage, drawn_coverage, proper_triangles, winding
+from .cases import catalogue_coverage, copied, drawn_coverage, proper_triangles, winding
 from .drawing import note_beside
 from .exercise import Exercise, Mistake, PackageAnswer, variant_mistakes
 from .running import WrongAnswerType
@@ -63,7 +62,7 @@ def span_cases() -> list[tuple[str, tuple, frozenset]]:
     """(label, (xy, row), covered columns) for rows that decide: ties, the split, the ends
     (built once, then copied), and the rows of a few triangles drawn for this check, so a
     table of the fixed cases' answers fails (r46 X1)."""
-    out = copy.deepcopy(_span_cases())
+    out = copied(_span_cases())
     for case in drawn_coverage():
         xy = case.triangles[0]
         rows = _rows(xy)
@@ -449,9 +448,35 @@ def _far_float32_words(args, expected, got) -> str:
 
 
 # -- why a span is wrong ----------------------------------------------------------------------
+#: :func:`crossings` by (vertices' float64 bytes, y): the diagnosis asks each row's crossings
+#: of every mistake (its spans and :func:`_float64_same`), in exact Fractions each time
+#: (bounded: cleared when full; the answers are immutable tuples of Fractions, or None)
+_CROSSINGS: dict = {}
+_CROSSINGS_MOST = 4096
+
+
 def crossings(xy: np.ndarray, y) -> tuple[Fraction, Fraction] | None:
     """Exact x_l <= x_r where the horizontal line at ``y`` meets the closed triangle (None:
-    it misses it, or the triangle has zero area)."""
+    it misses it, or the triangle has zero area).
+
+    >>> crossings(np.array([[0.0, 0.0], [4.0, 4.0], [0.0, 4.0]]), Fraction(5, 2))
+    (Fraction(0, 1), Fraction(5, 2))
+    """
+    key = None
+    if type(xy) is np.ndarray and xy.dtype == np.float64 and type(y) in (int, Fraction):
+        key = (xy.shape, xy.tobytes(), y)
+        out = _CROSSINGS.get(key, _CROSSINGS)  # (the dict itself: not yet computed)
+        if out is not _CROSSINGS:
+            return out
+    out = _crossings(xy, y)
+    if key is not None:
+        if len(_CROSSINGS) >= _CROSSINGS_MOST:
+            _CROSSINGS.clear()
+        _CROSSINGS[key] = out
+    return out
+
+
+def _crossings(xy, y) -> tuple[Fraction, Fraction] | None:
     v = [(_exact(p[0]), _exact(p[1])) for p in xy]
     y = Fraction(y)
     xs = []
@@ -632,14 +657,18 @@ def _float64_same(got, answer, args) -> bool:
     strict = isinstance(answer, _Strict) or getattr(answer, "strict", False)
     if mine is None or strict or not _far(np.asarray(xy)):
         return False
-    if not set(got) and float_side_errs(xy):  # r413 P8: a float64 side or area test drops
+    # (a frozenset's emptiness without a copy of its far row's 10^5 columns into a set)
+    empty = len(got) == 0 if isinstance(got, frozenset) else not set(got)
+    if empty and float_side_errs(xy):  # r413 P8: a float64 side or area test drops
         return True  # the thin far rows' span, whatever the other slip
-    theirs = getattr(answer, "pair", None) or (answer and (min(answer), max(answer) + 1))
     cross = crossings(xy, Fraction(2 * row + 1, 2))
-    if not theirs or cross is None or _horizontal_edge(xy, row + 0.5):
+    if cross is None:
         return False
     centres = [Fraction(math.floor(x)) + HALF for x in cross]  # the centre nearest each
     if not any(x == c or _within_float64(x, c) for x, c in zip(cross, centres)):
+        return False  # (before the mistake's ends: min and max of 10^5 columns each time)
+    theirs = getattr(answer, "pair", None) or (answer and (min(answer), max(answer) + 1))
+    if not theirs or _horizontal_edge(xy, row + 0.5):
         return False
     return all(abs(end - its) <= 2 for end, its in zip(mine, theirs))
 
