@@ -142,3 +142,60 @@ def test_two_slips_name_both():
     assert "you flipped u" in said and "v" in said.split("; and ")[1], said
     said = _first("y15_levels_swapped_and_corners").explanation
     assert "weights swapped" in said and "texel corners" in said, said
+
+
+LOD_SOURCES = {
+    "column not snapped": 'from teachraster import barycentric, perspective_weights  # the package\'s own\n\n\ndef pixel_lod(xy, w, uv, size, row, col):\n    """The level of detail λ a GPU uses at pixel (row, col) of the triangle (unclamped)."""\n    uv = np.asarray(uv, dtype=float)\n\n    def at(x, y):  # perspective-correct (u, v), extrapolated at helper pixels\n        lam = barycentric(xy, [[x, y]])\n        return perspective_weights(lam, w, extrapolate=True)[0] @ uv\n\n    r0, c0 = row - row % 2, col  # the quad\'s upper-left pixel\n    upper_left = at(c0 + 0.5, r0 + 0.5)\n    ddx = at(c0 + 1.5, r0 + 0.5) - upper_left\n    ddy = at(c0 + 0.5, r0 + 1.5) - upper_left\n    h, w_tex = size\n    texels = np.array([w_tex, h])  # u along the W columns, v along the H rows\n    rho = max(np.hypot(*(ddx * texels)), np.hypot(*(ddy * texels)))\n    return float(np.log2(rho))',
+    "row not snapped": 'from teachraster import barycentric, perspective_weights  # the package\'s own\n\n\ndef pixel_lod(xy, w, uv, size, row, col):\n    """The level of detail λ a GPU uses at pixel (row, col) of the triangle (unclamped)."""\n    uv = np.asarray(uv, dtype=float)\n\n    def at(x, y):  # perspective-correct (u, v), extrapolated at helper pixels\n        lam = barycentric(xy, [[x, y]])\n        return perspective_weights(lam, w, extrapolate=True)[0] @ uv\n\n    r0, c0 = row, col - col % 2  # the quad\'s upper-left pixel\n    upper_left = at(c0 + 0.5, r0 + 0.5)\n    ddx = at(c0 + 1.5, r0 + 0.5) - upper_left\n    ddy = at(c0 + 0.5, r0 + 1.5) - upper_left\n    h, w_tex = size\n    texels = np.array([w_tex, h])  # u along the W columns, v along the H rows\n    rho = max(np.hypot(*(ddx * texels)), np.hypot(*(ddy * texels)))\n    return float(np.log2(rho))',
+}
+
+
+@pytest.mark.parametrize("kind", list(LOD_SOURCES))
+def test_7_1_a_quad_snapped_along_one_axis_is_named(kind):
+    """H2: the quad's column (or row) not snapped was told the generic question."""
+    from teachraster import barycentric, perspective_weights
+
+    ns = {"np": np, "barycentric": barycentric, "perspective_weights": perspective_weights}
+    exec(LOD_SOURCES[kind], ns)
+    tries.forget_hints("pixel_lod")
+    first = ex.check("pixel_lod", ns["pixel_lod"]).failures[0]
+    tries.forget_hints("pixel_lod")
+    assert first.kind == kind, first.explanation
+    assert "Work this case through by hand" not in first.explanation
+
+
+def test_7_4_a_wrong_sampler_costs_little_cpu():
+    """S1: every mistake of 7.4's table computed every variant again on every case (the
+    table's memo keys no mip Pyramid): 1.8-4.0 s of CPU for one wrong answer."""
+    import json
+    import pathlib
+    import time
+
+    import teachraster as tr
+    from teachraster import barycentric, perspective_weights
+
+    nb = pathlib.Path(__file__).parents[1] / "notebooks/exercises/07_texture_filtering.ipynb"
+    ns = {
+        "np": np,
+        "tr": tr,
+        "barycentric": barycentric,
+        "perspective_weights": perspective_weights,
+    }
+    for cell in json.loads(nb.read_text())["cells"]:
+        if cell["metadata"].get("nbgrader", {}).get("grade_id") in (
+            "pixel_lod_solution",
+            "texel_weights_solution",
+            "filters_given",
+            "pixel_sample_solution",
+        ):
+            exec("".join(cell["source"]), ns)
+    assert ex.check("pixel_sample", ns["pixel_sample"]).passed  # cases and imports built
+    exec(
+        'def pixel_sample(pyramid, xy, w, uv, row, col, wrap):\n    """The texture unit\'s value at pixel (row, col) of the triangle, from 7.1 and 7.3."""\n    lod = pixel_lod(xy, w, uv, np.shape(pyramid[0])[:2], row, col)  # level 0\'s (H, W)\n    lam = barycentric(xy, [[col + 0.5, row + 0.5]])  # this pixel\'s own centre\n    uv_here = lam[0] @ np.asarray(uv, dtype=float)\n    return trilinear(pyramid, uv_here, lod, wrap)',
+        ns,
+    )
+    start = time.process_time()
+    report = ex.check("pixel_sample", ns["pixel_sample"])
+    spent = time.process_time() - start
+    assert not report.passed and report.failures[0].kind == "affine (u, v)"
+    assert spent < 1.2, spent
