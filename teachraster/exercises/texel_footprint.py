@@ -830,11 +830,14 @@ def _slip_mistake(factor, slip: str) -> Mistake:
         gives, right = _factor_state(found, factor, slip)
         if slip == "λ fitted" and right:
             return None
+        if right and same_weights(got, expected, args):
+            # a passing answer: one the slip leaves alone counts for it; one it would change
+            # counts for nothing, not against it (r509: a second slip, (W, H) with v flipped,
+            # read a drawn 2 × 1 level right, and the flip, dropped, lost to "swapped")
+            return True if gives else None
         if not gives:
             return False
-        if right:
-            return True if same_weights(got, expected, args) else None
-        return True
+        return True if not right else None
 
     def words(args, expected, got):
         found = factors(args, got)
@@ -847,7 +850,7 @@ def _slip_mistake(factor, slip: str) -> Mistake:
 
     kind = f"levels: {slip}" if factor == "split" else f"along {AXIS[factor][0]}: {slip}"
     kind = "levels weighed wrong" if slip == "λ fitted" else kind  # r497's kind
-    # consistent: asked of the passing answers too, and never named where it would change one
+    # consistent: asked of the passing answers too (those it leaves alone count for it)
     return Mistake(kind, words, fits=fits, symptom=True, consistent=True)
 
 
