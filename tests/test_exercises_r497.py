@@ -87,7 +87,7 @@ KINDS = {
     "w26_float32_lambda_weights_t_half": "levels weighed wrong",
     "w27_weight_list_keys_level_last": "keys (row, col, level)",
     "w28_repeat_only_u": "rows clamped under repeat",
-    "x01_quarter_texel": "texels within a level",
+    "x01_quarter_texel": "along u: origin -0.25",  # r509: named, no longer the symptom
     "x02_u_weights_swapped": "u's weights swapped",
     "x06_u_flipped": "u flipped",
     "x07_lod_plus_half": "levels weighed wrong",

@@ -133,6 +133,9 @@ def _variants(xy, w, uv, size, row, col) -> dict:
         "the pixel's own quad": lod(_steps(xy, w, uv, row, col)),
         "quad of pixel (col, row)": lod(_steps(xy, w, uv, col - col % 2, row - row % 2)),
         "odd quads": lod(_steps(xy, w, uv, row - (row + 1) % 2, col - (col + 1) % 2)),
+        # r509 H2: the quad snapped along one axis only was told the generic hint
+        "column not snapped": None if col % 2 == 0 else lod(_steps(xy, w, uv, r0, col)),
+        "row not snapped": None if row % 2 == 0 else lod(_steps(xy, w, uv, row, c0)),
         "helpers clamped": lod(_steps(xy, w, uv, r0, c0, clamp=True)),
         "affine": lod(_steps(xy, w, uv, r0, c0, affine=True)),
         "λ·w": lod(_steps(xy, w, uv, r0, c0, times_w=True)),
@@ -282,6 +285,16 @@ MISTAKES = {
     ),
     "odd quads": "your quads start on odd rows and columns: which pixel is the upper-left lane "
     "of the quad that holds this one?",
+    "column not snapped": lambda a, e, g: (
+        f"you differenced from pixel ({a[4] - a[4] % 2}, {a[5]}): the row is snapped to the "
+        "quad's but the column is not; the quad's upper-left lane sits at an even row and an "
+        f"even column, here ({a[4] - a[4] % 2}, {a[5] - a[5] % 2})"
+    ),
+    "row not snapped": lambda a, e, g: (
+        f"you differenced from pixel ({a[4]}, {a[5] - a[5] % 2}): the column is snapped to the "
+        "quad's but the row is not; the quad's upper-left lane sits at an even row and an "
+        f"even column, here ({a[4] - a[4] % 2}, {a[5] - a[5] % 2})"
+    ),
     "helpers clamped": _clamped,
     "affine": "you interpolated (u, v) affinely at the lanes: which interpolation does a "
     "texture coordinate get across a triangle whose vertices lie at different depths "

@@ -170,6 +170,8 @@ def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="r
             h, w = -(-int(sizes[0][0]) // 2**level), -(-int(sizes[0][1]) // 2**level)
         elif size_as == "reversed":  # level k's size read from the coarse end
             h, w = (int(n) for n in sizes[q - level])
+        elif size_as == "lower":  # r509: both levels read with level ⌊λ⌋'s size
+            h, w = (int(n) for n in sizes[split[0][0]])
         u, v = float(uv[0]), float(uv[1])
         if uv_as == "vu":
             u, v = v, u
@@ -181,6 +183,8 @@ def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="r
             u, v = (u % 1, v % 1) if wrap == "repeat" else (u, v)
         elif uv_as == "clamped" and wrap == "clamp":  # (u, v) clamped to [0, 1], then tiled
             u, v, mode = min(max(u, 0.0), 1.0), min(max(v, 0.0), 1.0), "repeat"
+        elif uv_as == "clamped raw" and wrap == "clamp":  # r509: the indices then not clamped
+            u, v = min(max(u, 0.0), 1.0), min(max(v, 0.0), 1.0)
         x, y = u * w + origin, v * h + origin
         if coord == "stretched":  # u·(W − 1): the first and last centres at u = 0 and 1
             x, y = u * (w - 1), v * (h - 1)
@@ -208,7 +212,8 @@ def weights_with(sizes, uv, lod, wrap, *, origin=-0.5, floor="floor", size_as="r
                 if part == 0 and merge != "assign zeros":
                     continue
                 rmode, cmode = axes if axes else (mode, mode)
-                rhow = "raw" if uv_as == "reduced" and wrap == "repeat" else how
+                rhow = ("raw" if (uv_as, wrap) in (("reduced", "repeat"), ("clamped raw", "clamp"))
+                        else how)  # fmt: skip
                 key = (level, _index(r, hi, rmode, rhow), _index(c, wi, cmode, rhow))
                 if wrap_as == "other size" and wrap == "repeat":  # rows modulo W, columns H
                     key = (level, _index(r, wi, mode, None), _index(c, hi, mode, None))
@@ -273,6 +278,9 @@ VARIANTS = {
     "rows tiled under clamp": {"wrap_as": "rows tiled"},
     "rows clamped under repeat": {"wrap_as": "rows clamped"},
     "keys (row, col, level)": {"keys": "rc level"},
+    # r509: each was told only "your texel (3, 0, -1) is not a texel"
+    "clamp as (u, v) clamped, the indices not": {"uv_as": "clamped raw"},
+    "both levels with ⌊λ⌋'s size": {"size_as": "lower"},
     "levels numbered from the last": {"keys": "from coarse"},
     "both levels keyed as ⌊λ⌋": {"keys": "lower"},
 }
@@ -387,6 +395,11 @@ MISTAKES = {
     "rows clamped under repeat": "with 'repeat' you tiled the columns but clamped the rows: "
     "`wrap` holds for u and v alike",
     "keys (row, col, level)": "your keys are (row, col, level): the task asks (level, row, col)",
+    "clamp as (u, v) clamped, the indices not": "with 'clamp' you clamped (u, v) to [0, 1] but "
+    "not the texel indices: at u = 0 the pair around x = −½ still reads column −1; clamp the "
+    "indices to [0, W − 1] instead",
+    "both levels with ⌊λ⌋'s size": "you read level ⌊λ⌋ + 1 with level ⌊λ⌋'s size: each level "
+    "has its own (H, W), `sizes[level]`",
     "levels numbered from the last": "you numbered the levels from the last: level 0 is the "
     "finest, the first of `sizes`",
     "both levels keyed as ⌊λ⌋": "you keyed the texels of level ⌊λ⌋ + 1 as level ⌊λ⌋: each "
@@ -435,7 +448,16 @@ def _float16_fits(args, expected, got) -> bool | None:
     h, w = sizes[0]
     scale = max(abs(float(uv[0])) * w, abs(float(uv[1])) * h, 1.0)
     return (_close(got, expected, 2.0**-10 * scale) and not _close(got, expected, tolerance(args))
-            and not _split_alone(args, expected, got))  # fmt: skip
+            and not _split_alone(args, expected, got) and _decimals(got) is None)  # fmt: skip
+
+
+def _decimals(got: dict) -> int | None:
+    """The fewest decimals (1 to 5) every weight is rounded to, or None (r509 M2: weights
+    rounded to 4 decimals were told "float16": the checker's rounding step names them)."""
+    for d in range(1, 6):
+        if all(abs(w - round(w, d)) <= 1e-12 for w in got.values()):
+            return d
+    return None
 
 
 # -- r497: an unnamed failure split by level, then by axis ----------------------------------
@@ -463,6 +485,8 @@ def _said(split: dict) -> str:
 
 def _split_fits(args, expected, got) -> bool | None:
     if not isinstance(got, dict) or _bad_key(args[0], got) is not None:
+        return None
+    if factors(args, got) is not None:  # r509: the slips are named instead
         return None
     mine, right = _per_level(got), _per_level(expected)
     return any(abs(mine.get(k, 0.0) - right.get(k, 0.0)) > 4 * tolerance(args)
@@ -509,6 +533,8 @@ def _marginal(weights: dict, axis: int) -> dict[int, float]:
 def _axis_fits(args, expected, got) -> bool | None:
     if not isinstance(got, dict) or _bad_key(args[0], got) is not None:
         return None
+    if factors(args, got) is not None:  # r509: the slips are named instead
+        return None
     return not _split_fits(args, expected, got)
 
 
@@ -534,6 +560,360 @@ def _axis_words(args, expected, got) -> str:
     return "your texels' weights differ within a level"
 
 
+# -- r509 H1: slips named a level and an axis at a time -----------------------------------------
+# A wrong answer no single knob gives (two slips, or one on one axis only) was told only "level
+# 1's weight is right, its texels are not: ... along v (rows) the level's weights are ...". The
+# fetch factors: the levels' weights (the split), then on each level a column weight times a
+# row weight. Each factor is fitted to its own small catalogue of slips, and where every factor
+# of the case is reproduced, the slips are named (the case's answer is then the one they give).
+LEVEL_SLIPS = ("clamp q-1", "abs", "unclamped", "split first", "nearest", "floor alone",
+               "halves", "swapped", "no level weight")  # fmt: skip
+LEVEL_WORDS = {
+    "clamp q-1": "λ clamped to [0, q − 1] (level q alone at λ ≥ q)",
+    "abs": "|λ| (a negative λ is clamped to 0)",
+    "unclamped": "λ not clamped to [0, q]",
+    "split before the clamp": "λ split before the clamp",
+    "split first": "λ split into level and fraction before the clamp",
+    "nearest": "the nearest level alone (trilinear blends the two around λ)",
+    "floor alone": "level ⌊λ⌋ alone (trilinear also reads the level above)",
+    "halves": "each of the two levels weighted ½ (the weights follow λ)",
+    "swapped": "the two levels' weights swapped (the nearer level weighs more)",
+    "no level weight": "each level's texels adding up to 1 (the two levels share 1)",
+}
+AXIS = {2: ("u", "x", "W", "columns"), 1: ("v", "y", "H", "rows")}
+
+
+def _axis_weights(s, n, wrap, slip, *, other, n0, k):
+    """{index: weight} along one axis of a level of n texels at coordinate s, with ``slip``
+    (a dict of this function's settings; {} is the right filter)."""
+    if slip.get("flip"):
+        s = 1 - s
+    scale = {"other": other, "level 0": n0, "stretched": n - 1}.get(slip.get("scale"), n)
+    x = s * scale + slip.get("origin", -0.5)
+    if slip.get("scale") == "stretched":
+        x = s * (n - 1)
+    elif slip.get("scale") == "level 0 halved":
+        x = (s * n0 - 0.5) / 2**k
+    x0 = {"int": int, "round": lambda t: math.floor(t + 0.5)}.get(slip.get("pair"), math.floor)(x)
+    f = x - x0
+    if slip.get("weights") == "swapped":
+        f = 1 - f
+    elif slip.get("weights") == "smooth":
+        f = f * f * (3 - 2 * f)
+    pairs = ((x0, 1 - f), (x0 + slip.get("step", 1), f))
+    if slip.get("weights") == "nearest":
+        pairs = ((math.floor(x + 0.5), 1.0),)
+    mode = slip.get("wrap", wrap)
+    if (mode in ("abs", "mod n-1") and wrap == "clamp") or (mode == "mirror" and wrap == "repeat"):
+        mode = wrap  # a slip of the other mode's code: this mode's indices are right
+    out: dict[int, float] = {}
+    for i, w in pairs:
+        if w == 0:
+            continue
+        if mode == "abs":
+            i = abs(i) % n
+        elif mode == "mod n-1":
+            i = i % max(n - 1, 1)
+        elif mode == "mirror":
+            i %= 2 * n
+            i = i if i < n else 2 * n - 1 - i
+        else:
+            i = _wrapped(i, n, mode)
+        out[i] = out.get(i, 0.0) + w
+    return out
+
+
+def _axis_slips(wrap: str) -> list[tuple[str, dict, str]]:
+    """Each single-axis slip as (id, settings of :func:`_axis_weights`, words), the right
+    filter first ("", {}); the words' {a} is u or v, {x} x or y, {n} W or H, {m} the other
+    size, {c} columns or rows."""
+    out: list[tuple[str, dict, str]] = [("", {}, "")]
+    for flip in (False, True):
+        for o in (-0.5, 0.0, 0.5, -0.25, 0.25, -0.75, -1.0, -1.5):
+            if (flip, o) == (False, -0.5):
+                continue
+            said = [] if not flip else ["you flipped {a} (1 − {a}): {a} = 0 is the first of the "
+                                        "{c}, so {a} is taken as it comes"]  # fmt: skip
+            if o != -0.5:
+                at = "" if o == 0 else f" {'+' if o > 0 else '−'} {abs(o):g}"
+                said.append(f"your texel centres lie at {{x}} = {{a}}·{{n}}{at} ("
+                            + ("texel corners; " if o == 0 else "") + "texel c's centre is "
+                            "at {a} = (c + ½)/{n}, so {x} = {a}·{n} − ½)")  # fmt: skip
+            name = ("flipped " if flip else "") + ("" if o == -0.5 else f"origin {o:+g}")
+            out.append((name.strip(), {"flip": flip, "origin": o}, ", and ".join(said)))
+    out += [
+        (
+            "scaled by the other size",
+            {"scale": "other"},
+            "you scaled {a} by the level's {m}: {a} counts the {n} {c}",
+        ),
+        (
+            "level 0's size",
+            {"scale": "level 0"},
+            "you scaled {a} by level 0's {n} on every level: each level has its own {n}",
+        ),
+        (
+            "centres at 0 and 1",
+            {"scale": "stretched"},
+            "you put the first and last centres at {a} = 0 and 1 ({x} = {a}·({n} − 1)): they lie "
+            "half a texel in from the border",
+        ),
+        (
+            "level 0's coordinate halved",
+            {"scale": "level 0 halved"},
+            "you halved level 0's {x} (({a}·{n}₀ − ½)/2ᵏ): level k's centres lie at "
+            "{x} = {a}·{n}ₖ − ½, with its own {n}",
+        ),
+        (
+            "weights swapped",
+            {"weights": "swapped"},
+            "your weights are swapped: the one of the {c} at or before {x} weighs "
+            "1 − ({x} − ⌊{x}⌋), the next one {x} − ⌊{x}⌋",
+        ),
+        (
+            "nearest",
+            {"weights": "nearest"},
+            "you read the nearest of the {c} alone: the two around {x} are blended",
+        ),
+        (
+            "not linear",
+            {"weights": "smooth"},
+            "the right two {c}, but weights not linear in {x} (a smoothstep?): they are 1 − f "
+            "and f, f = {x} − ⌊{x}⌋",
+        ),
+        (
+            "int()",
+            {"pair": "int"},
+            "you rounded {x} towards zero (int()): left of the first centre the pair starts at "
+            "−1 (⌊{x}⌋)",
+        ),
+        (
+            "nearest first",
+            {"pair": "round"},
+            "you started the pair at the nearest centre: it starts at ⌊{x}⌋",
+        ),
+        ("step −1", {"step": -1}, "the pair's second texel is ⌊{x}⌋ − 1: it is ⌊{x}⌋ + 1"),
+        ("abs", {"wrap": "abs"}, "index −1 became 1 (abs): 'repeat' gives −1 % {n} = {n} − 1"),
+        (
+            "modulo n − 1",
+            {"wrap": "mod n-1"},
+            "you wrapped modulo {n} − 1: the texture repeats every {n}",
+        ),
+    ]
+    other = {"repeat": "clamp", "clamp": "repeat"}[wrap]
+    out.append(("the other wrap", {"wrap": other},
+                f"your {{c}} are {other}ed where `wrap` is {wrap!r}: `wrap` holds for u and v "
+                "alike"))  # fmt: skip
+    if wrap == "clamp":
+        out.append(
+            (
+                "mirror",
+                {"wrap": "mirror"},
+                "your 'clamp' mirrors the {c}: it repeats the border texel outwards",
+            )
+        )
+    return out
+
+
+def _split_cands(args, got) -> list[str]:
+    """The ids of :data:`LEVEL_SLIPS` that give the answer's level weights ("" first where
+    they are right; "λ fitted" where only a λ of its own does); [] where none does."""
+    sizes, _, lod, _ = args
+    q = len(sizes) - 1
+    mine = {k: w for k, w in _per_level(got).items() if abs(w) > TOL}
+    tol = 4 * tolerance(args)
+
+    def same(split):
+        merged: dict[int, float] = {}
+        for k, w in split:
+            merged[k] = merged.get(k, 0.0) + w
+        merged = {k: w for k, w in merged.items() if abs(w) > TOL}
+        return set(merged) == set(mine) and all(abs(merged[k] - mine[k]) <= tol for k in mine)
+
+    out = [""] if same(level_split(q, lod)) else []
+    for how in LEVEL_SLIPS:
+        split = _levels(q, float(lod), how)
+        if split and all(0 <= k <= q for k, _ in split) and same(split):
+            out.append(how)
+    levels = sorted(mine)
+    if ("" not in out and len(levels) == 2 and levels[1] == levels[0] + 1
+            and abs(sum(mine.values()) - 1) <= tol):  # fmt: skip
+        out.append("λ fitted")  # a λ of its own: says nothing where the split is right
+    return out
+
+
+def _level_cands(args, got, k, weight) -> dict[int, list[str]] | None:
+    """{axis: ids of the slips that give level k's own weights along it}, None where they
+    are not a column weight times a row weight."""
+    sizes, uv, _, wrap = args
+    own = {(r, c): w / weight for (lv, r, c), w in got.items() if lv == k and abs(w) > TOL}
+    keyed = {(k, r, c): w for (r, c), w in own.items()}
+    cols, rows = _marginal(keyed, 2), _marginal(keyed, 1)
+    tol = 4 * tolerance(args) / max(abs(weight), 1e-3)
+    if len(own) > len(rows) * len(cols) or any(
+        abs(own.get((r, c), 0.0) - wr * wc) > tol
+        for r, wr in rows.items()
+        for c, wc in cols.items()
+    ):
+        return None
+    h, w = sizes[k]
+    out = {}
+    for axis, mine, s, n, m, n0 in ((2, cols, uv[0], w, h, sizes[0][1]),
+                                    (1, rows, uv[1], h, w, sizes[0][0])):  # fmt: skip
+        out[axis] = [name for name, slip, _ in _axis_slips(wrap)
+                     if _close(_axis_weights(float(s), int(n), wrap, slip, other=int(m),
+                                             n0=int(n0), k=k), mine, tol)]  # fmt: skip
+    return out
+
+
+_FACTORS: dict = {}
+
+
+def factors(args, got) -> dict | None:
+    """The answer taken apart: {"split": ids, 2: {level: ids along u}, 1: {level: ids along
+    v}} (ids of the slips that give each factor, "" for the right one), or None where the
+    answer is not a split times, on each level, column weights times row weights (or a key
+    is not a texel). Remembered per answer: every mistake below asks it of every case."""
+    key = (id(args), id(got))
+    hit = _FACTORS.get(key)
+    if hit is not None and hit[0] is args and hit[1] is got:
+        return hit[2]
+    out = None
+    if isinstance(got, dict) and _bad_key(args[0], got) is None:
+        out = {"split": _split_cands(args, got), 2: {}, 1: {}}
+        for k, weight in sorted(_per_level(got).items()):
+            if abs(weight) <= TOL:
+                continue
+            axes = _level_cands(args, got, k, weight)
+            if axes is None:
+                out = None
+                break
+            out[2][k], out[1][k] = axes[2], axes[1]
+        if out is not None and (not out["split"] or not all(
+                c for axis in (1, 2) for c in out[axis].values())):  # fmt: skip
+            out = None
+    if len(_FACTORS) > 4096:
+        _FACTORS.clear()
+    _FACTORS[key] = (args, got, out)
+    return out
+
+
+def _factor_state(found: dict, factor, slip: str) -> tuple[bool, bool]:
+    """(does ``slip`` give this factor, is the factor right) for "split" or an axis."""
+    if factor == "split":
+        cands = [found["split"]]
+    else:
+        cands = list(found[factor].values())
+    return all(slip in c for c in cands), all("" in c for c in cands)
+
+
+def _factor_phrase(args, got: dict, factor, slip: str) -> str:
+    sizes, _, lod, wrap = args
+    if factor == "split":
+        if slip == "λ fitted":  # r497's words: the levels' sums, the λ they stand for
+            return _split_words(args, reference(*args), got)
+        return f"your split between the levels is {LEVEL_WORDS[slip]}"
+    a, x, n, c = AXIS[factor]
+    words = {name: w for name, _, w in _axis_slips(wrap)}[slip]
+    return f"along {a}, " + words.format(a=a, x=x, n=n, m=AXIS[3 - factor][2], c=c)
+
+
+def _slip_mistake(factor, slip: str) -> Mistake:
+    """The mistake "``slip`` in ``factor``": it fits a failing answer where the slip gives
+    that factor and the factor is wrong, and every other wrong factor has a slip of its own
+    (named too); it contradicts an answer where it would change a factor that is right."""
+
+    def fits(args, expected, got):
+        found = factors(args, got)
+        if found is None:
+            return None
+        gives, right = _factor_state(found, factor, slip)
+        if slip == "λ fitted" and right:
+            return None
+        if right and same_weights(got, expected, args):
+            # a passing answer: one the slip leaves alone counts for it; one it would change
+            # counts for nothing, not against it (r509: a second slip, (W, H) with v flipped,
+            # read a drawn 2 × 1 level right, and the flip, dropped, lost to "swapped")
+            return True if gives else None
+        if not gives:
+            return False
+        return True if not right else None
+
+    def words(args, expected, got):
+        found = factors(args, got)
+        said = [_factor_phrase(args, got, factor, slip)]
+        for other in ("split", 2, 1):
+            if other == factor or _factor_state(found, other, "")[1]:
+                continue
+            said += _factor_words(args, got, found, other)
+        return "; and ".join(said)
+
+    kind = f"levels: {slip}" if factor == "split" else f"along {AXIS[factor][0]}: {slip}"
+    kind = "levels weighed wrong" if slip == "λ fitted" else kind  # r497's kind
+    # consistent: asked of the passing answers too (those it leaves alone count for it)
+    return Mistake(kind, words, fits=fits, symptom=True, consistent=True)
+
+
+def _per_level_fits(args, expected, got) -> bool | None:
+    """Only where a wrong factor has no one slip of its own (several, or none on every level):
+    elsewhere that slip's own mistake speaks."""
+    found = factors(args, got)
+    if found is None or same_weights(got, expected, args):
+        return None
+    for factor in ("split", 2, 1):
+        cands = [found["split"]] if factor == "split" else list(found[factor].values())
+        if all("" in c for c in cands):
+            continue
+        if len([c for c in cands[0] if c and all(c in other for other in cands)]) != 1:
+            return True
+    return None
+
+
+def _factor_words(args, got, found, factor) -> list[str]:
+    """What is said of a wrong factor: its slip where one gives it on every level, the slips
+    that do where several do, else level by level."""
+    cands = [found["split"]] if factor == "split" else list(found[factor].values())
+    common = [c for c in cands[0] if c and all(c in other for other in cands)]
+    where = "the levels" if factor == "split" else AXIS[factor][0]
+    if len(common) == 1:
+        return [_factor_phrase(args, got, factor, common[0])]
+    if len(common) > 3:  # a level one texel wide: many slips give its one texel
+        return [f"along {where} a slip too ({len(common)} slips give these weights here; "
+                "the other failing cases tell which)"]  # fmt: skip
+    if common:
+        if factor == "split":
+            common = [_split_short(got, c) for c in common]
+        return [f"along {where} a slip, one of: {'; '.join(common)} (each gives these "
+                "weights here; the other failing cases tell which)"]  # fmt: skip
+    return [f"on level {k} " + _factor_phrase(args, got, factor, c[0])
+            for k, c in sorted(found[factor].items()) if "" not in c]  # fmt: skip
+
+
+def _split_short(got: dict, how: str) -> str:
+    if how != "λ fitted":
+        return LEVEL_WORDS[how]
+    mine = {k: w for k, w in _per_level(got).items() if abs(w) > TOL}
+    low = min(mine)
+    return f"the split of λ = {num(low + mine[low + 1])}"
+
+
+def _per_level_words(args, expected, got) -> str:
+    found = factors(args, got)
+    said = []
+    for factor in ("split", 2, 1):
+        if not _factor_state(found, factor, "")[1]:
+            said += _factor_words(args, got, found, factor)
+    return "; and ".join(said)
+
+
+SLIPS = tuple(
+    [_slip_mistake("split", how) for how in (*LEVEL_SLIPS, "λ fitted")]
+    + [
+        _slip_mistake(axis, name) for axis in (2, 1) for name, _, _ in _axis_slips("clamp") if name
+    ]  # fmt: skip
+    + [Mistake("slips by level", _per_level_words, fits=_per_level_fits, symptom=True)]
+)
+
 FLOAT16 = Mistake(
     "float16",
     "your weights are the right ones rounded to float16 (about 3 decimals): compute "
@@ -543,9 +923,30 @@ FLOAT16 = Mistake(
 )
 
 
+def _rounded_fits(args, expected, got) -> bool | None:
+    if not isinstance(got, dict) or _bad_key(args[0], got) is not None:
+        return None
+    d = _decimals(got)
+    return (
+        d is not None
+        and not _close(got, expected, tolerance(args))
+        and _close(got, expected, 10.0**-d + 1e-12)
+    )  # fmt: skip (a sum of roundings)
+
+
+def _rounded_words(args, expected, got) -> str:
+    return (f"your weights are the right ones rounded to {_decimals(got)} decimals: a weight "
+            "is a product of fractions, kept as it comes")  # fmt: skip
+
+
+ROUNDED = Mistake("weights rounded", _rounded_words, fits=_rounded_fits, only_whole=True)
+
+
 SYMPTOMS = (
+    ROUNDED,
     FLOAT16,
     Mistake("no such texel", _bad_key_words, fits=_bad_key_fits, symptom=True),
+    *SLIPS,
     Mistake("levels weighed wrong", _split_words, fits=_split_fits, symptom=True),
     Mistake("texels within a level", _axis_words, fits=_axis_fits, symptom=True),
     Mistake("weights do not add up to 1", _sum_words, fits=_sum_fits, symptom=True),
@@ -650,6 +1051,10 @@ def _build(rng, word):
         ("the same u, repeat", s88, (0.2, 0.5), 2.0, "repeat"),
         ("one level only (1×1)", [(1, 1)], (0.3, 0.8), 0.4, "repeat"),
         ("one level only (4×2)", [(4, 2)], (0.9, 0.05), -1.0, "repeat"),
+        # r509 W1: λ ≥ q + 1 (a q taken as len(sizes), saved by a min on the upper level,
+        # passed: the random λ stop below len(sizes))
+        ("far above the pyramid (λ ≥ q + 1)", s88, (0.3, 0.6), 5.5, "repeat"),
+        ("one level only (1×1), λ above it", [(1, 1)], (0.3, 0.6), 1.5, "clamp"),
     ]
     out = [(label, (sizes, (float(uv[0]), float(uv[1])), float(lod), wrap))
            for label, sizes, uv, lod, wrap in hard]  # fmt: skip
@@ -714,6 +1119,12 @@ def raised_words(args, error) -> str:
         return (": a level 0 texels high or wide: did you halve level 0's size yourself? `sizes` "
                 "gives each level's own (H, W), at least 1 × 1 (GL halves and rounds down, but "
                 "never below 1)")  # fmt: skip
+    if "index out of range" in error and lod >= q and lam == q:
+        # r509 M1: told "λ lies outside the pyramid" where λ was clamped but level q + 1 read
+        return (f": at λ = {num(lod)} your function read a level beyond the last, q = {q} "
+                f"(len(sizes) − 1): the "
+                f"fetch clamps λ to [0, q] and at λ = q reads level q alone (level ⌊λ⌋ + 1 = "
+                f"{q + 1} does not exist, not even with weight 0)")  # fmt: skip
     if "index out of range" in error and not 0 <= lod < q:
         return (f": λ = {num(lod)} lies outside the pyramid's levels 0 to q = {q}: what does "
                 "the fetch do with such a λ before it chooses levels?")  # fmt: skip
