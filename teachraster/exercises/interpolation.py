@@ -799,6 +799,54 @@ def _lambda3_words(form: str):
     return words
 
 
+def _one_over_abs(k: int):
+    """λ_k alone over |E(v1, v2, v3)|, the other two over E (r506 H1)."""
+
+    def gives(xy, p):
+        area = _area(xy)
+        out = _areas(xy, p) / area
+        out[k] = out[k] * area / abs(area)
+        return out
+
+    return gives
+
+
+def _one_over_abs_words(k: int):
+    def words(args, expected, got) -> str:
+        area = _area(args[0])
+        return (
+            f": your λ{k + 1} has the wrong sign and the other two are right: E(v1, v2, v3) = "
+            f"{num(area)} < 0 here, and you divided λ{k + 1}'s edge function by |E(v1, v2, v3)| "
+            "= " f"{num(abs(area))}, the other two by E itself; each weight is a ratio of two "
+            "signed edge functions: divide all three by the signed E"
+        )  # fmt: skip
+
+    return words
+
+
+def _one_size(k: int):
+    """|λ_k|, the other two weights right (r506 H1: ``abs(1 - l1 - l2)``)."""
+
+    def gives(xy, p):
+        out = _areas(xy, p) / _area(xy)
+        out[k] = abs(out[k])
+        return out
+
+    return gives
+
+
+def _one_size_words(k: int):
+    def words(args, expected, got) -> str:
+        return (
+            f": your λ{k + 1} = {num(float(np.asarray(got, float)[k]))} is the size of the "
+            f"weight {num(float(expected[k]))}: a weight is negative where p lies outside the "
+            f"edge opposite its vertex (here p is outside the edge opposite v{k + 1}); keep its "
+            "sign (no abs)"
+        )
+
+    return words
+
+
 def _untranslated(k: int):
     """r358 2: the solve about v_k, (v_i − v_k)·λ_i + (v_j − v_k)·λ_j = p − v_k, with p on
     the right in place of p − v_k: the weights of p + v_k."""
@@ -1223,6 +1271,12 @@ def _proper_mistakes() -> list[Mistake]:
     # r455: one weight's sign flipped (after the λ3 slips: λ3 negated is λ1 + λ2 − 1, told so)
     out += [Mistake("one weight's sign", _one_sign_words(k, r), gives=_one_sign(k, r))
             for k in range(3) for r in (None, *(j for j in range(3) if j != k))]  # fmt: skip
+    # r506 H1 (r495's left-overs b16, b18): one weight divided by |E| (the others by E), or
+    # its size taken, got the rule only
+    out += [Mistake("one weight over |E|", _one_over_abs_words(k), gives=_one_over_abs(k))
+            for k in range(3)]  # fmt: skip
+    out += [Mistake("one weight's size", _one_size_words(k), gives=_one_size(k))
+            for k in range(3)]  # fmt: skip
     # r358 2: p left untranslated in a solve about one vertex
     out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
             for k in range(3)]  # fmt: skip
