@@ -799,6 +799,16 @@ def _lambda3_words(form: str):
     return words
 
 
+def _one_weight_mistakes() -> list[Mistake]:
+    """r506 H1 (r495's left-overs b16, b18): one weight divided by |E| (the others by E), or
+    its size taken, got the rule only."""
+    return [
+        *(Mistake("one weight over |E|", _one_over_abs_words(k), gives=_one_over_abs(k))
+          for k in range(3)),
+        *(Mistake("one weight's size", _one_size_words(k), gives=_one_size(k)) for k in range(3)),
+    ]  # fmt: skip
+
+
 def _one_over_abs(k: int):
     """λ_k alone over |E(v1, v2, v3)|, the other two over E (r506 H1)."""
 
@@ -1271,12 +1281,7 @@ def _proper_mistakes() -> list[Mistake]:
     # r455: one weight's sign flipped (after the λ3 slips: λ3 negated is λ1 + λ2 − 1, told so)
     out += [Mistake("one weight's sign", _one_sign_words(k, r), gives=_one_sign(k, r))
             for k in range(3) for r in (None, *(j for j in range(3) if j != k))]  # fmt: skip
-    # r506 H1 (r495's left-overs b16, b18): one weight divided by |E| (the others by E), or
-    # its size taken, got the rule only
-    out += [Mistake("one weight over |E|", _one_over_abs_words(k), gives=_one_over_abs(k))
-            for k in range(3)]  # fmt: skip
-    out += [Mistake("one weight's size", _one_size_words(k), gives=_one_size(k))
-            for k in range(3)]  # fmt: skip
+    out += _one_weight_mistakes()
     # r358 2: p left untranslated in a solve about one vertex
     out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
             for k in range(3)]  # fmt: skip
