@@ -13710,6 +13710,10 @@ R506 = {
         "barycentric", _b506_relative(
             lambda v: float(np.hypot(*(v - np.roll(v, 1, axis=0)).T).sum()) ** 2),
         "however small the multiple", "refused a proper triangle"),
+    "barycentric refusing |E| < 1e-12 · |v2 − v1| · |v3 − v1| (0 where two vertices meet)": (
+        "barycentric", _b506_relative(
+            lambda v: float(np.hypot(*(v[1] - v[0])) * np.hypot(*(v[2] - v[0])))),
+        "if you wrote one, let this triangle through", "no zero-area check"),
     "barycentric refusing det(2×2) == 0": (
         "barycentric", _b506_det2, "your code reads np.linalg.det", "rounded determinant"),
     "barycentric refusing on a 2×2 solve's LinAlgError": (

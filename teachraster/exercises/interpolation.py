@@ -577,10 +577,11 @@ def _zero_area_words(args, expected, got) -> str:
             "line (a p on it has infinitely many weights, any other none); test the area "
             "exactly, E == 0 (exact on the 1/256-px grid), and raise ValueError"
         )
-    return (
+    return (  # r506 H3: a test of |E| against a size that is 0 here was told "no test"
         ": your answer is NaN or infinity (a division by 0), but these three vertices lie on "
         "one line: the triangle has no area and no weights (a p on the line has infinitely "
-        "many, any other none); raise ValueError before dividing"
+        "many, any other none); raise ValueError before dividing (a zero-area test of "
+        "yours, if you wrote one, let this triangle through: test E == 0 exactly)"
     )
 
 
