@@ -13674,3 +13674,151 @@ DIFFERENT.update({
     "barycentric, the shipped code with E == 0 and the signed E (r495)": (
         "barycentric", _b495_shipped_shape(_EXACT_E, lambda e: e)),
 })  # fmt: skip
+
+
+# -- r506 (exercise 3): 3.1's zero-area tests relative to the size or on a 2×2 elimination,
+# x and y read as rows, one weight over |E| or its size, the shipped code's defects --------
+def _b506_relative(scale):
+    """An exact E tested against a multiple of the size: ``scale(v) * 1e-12``."""
+
+    def barycentric(xy, p):
+        v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+        e = _e495(v[0], v[1], v[2])
+        if abs(e) < 1e-12 * scale(v):
+            raise ValueError("zero area")
+        l1, l2 = _e495(v[1], v[2], p) / e, _e495(v[2], v[0], p) / e
+        return np.array([l1, l2, 1.0 - l1 - l2])
+
+    return barycentric
+
+
+def _b506_longest_squared(v):
+    return max(float(np.sum((v[i] - v[j]) ** 2)) for i, j in ((0, 1), (1, 2), (0, 2)))
+
+
+def _b506_det2(xy, p):
+    """The 2×2 system about v3, its determinant (numpy's LU) tested against 0."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    a = np.column_stack([v[0] - v[2], v[1] - v[2]])
+    if np.linalg.det(a) == 0:
+        raise ValueError("zero area")
+    l1, l2 = np.linalg.solve(a, p - v[2])
+    return np.array([l1, l2, 1.0 - l1 - l2])
+
+
+def _b506_solve2(xy, p):
+    """The 2×2 system about v1; its LinAlgError is the only zero-area test."""
+    v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+    a = np.column_stack([v[1] - v[0], v[2] - v[0]])
+    try:
+        l2, l3 = np.linalg.solve(a, p - v[0])
+    except np.linalg.LinAlgError:
+        raise ValueError("zero area") from None
+    return np.array([1.0 - l2 - l3, l2, l3])
+
+
+def _b506_rows(xy, p):
+    """x and y read as the rows of xy: Python's unpacking raises ValueError on every call."""
+    xs, ys = np.asarray(xy, dtype=float)
+    return np.array([xs[0], ys[0], 0.0])
+
+
+def _b506_one(k, how):
+    """The right weights with λ_k over |E| (``how == "abs E"``) or its size (``"size"``)."""
+
+    def barycentric(xy, p):
+        v, p = np.asarray(xy, dtype=float), np.asarray(p, dtype=float)
+        e = _e495(v[0], v[1], v[2])
+        if e == 0:
+            raise ValueError("zero area")
+        out = np.array([_e495(v[1], v[2], p), _e495(v[2], v[0], p), _e495(v[0], v[1], p)]) / e
+        out[k] = out[k] * e / abs(e) if how == "abs E" else abs(out[k])
+        return out
+
+    return barycentric
+
+
+def _b506_shipped_abs_kept(xy, p):
+    """The shipped code with its zero-area test repaired (E == 0), abs(E) kept."""
+    v = np.asarray(xy, dtype=float)
+    p = np.asarray(p, dtype=float)
+
+    def e(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    if e(v[0], v[1], v[2]) == 0:
+        raise ValueError("the triangle has zero area: it has no barycentric weights")
+    area = abs(e(v[0], v[1], v[2]))
+    l1 = e(v[1], v[2], p) / area
+    l2 = e(v[2], v[0], p) / area
+    return np.array([l1, l2, 1.0 - l1 - l2])
+
+
+def _b506_shipped_cond_kept(xy, p):
+    """The shipped code with its area repaired (signed E), the cond test kept."""
+    v = np.asarray(xy, dtype=float)
+    p = np.asarray(p, dtype=float)
+    m = np.vstack([v.T, np.ones(3)])
+    if np.linalg.cond(m) > 1e8:
+        raise ValueError("the triangle has zero area: it has no barycentric weights")
+
+    def e(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    area = e(v[0], v[1], v[2])
+    l1 = e(v[1], v[2], p) / area
+    l2 = e(v[2], v[0], p) / area
+    return np.array([l1, l2, 1.0 - l1 - l2])
+
+
+def _b506_int256(xy, p):
+    """Integers on the 1/256-px grid and fractions: exact everywhere."""
+    from fractions import Fraction
+
+    (x1, y1), (x2, y2), (x3, y3) = [(round(a * 256), round(b * 256))
+                                    for a, b in np.asarray(xy, float)]  # fmt: skip
+    px, py = (round(c * 256) for c in np.asarray(p, float))
+    det = (x1 - x3) * (y2 - y3) - (x2 - x3) * (y1 - y3)
+    if det == 0:
+        raise ValueError("zero area")
+    l1 = Fraction((px - x3) * (y2 - y3) - (x2 - x3) * (py - y3), det)
+    l2 = Fraction((x1 - x3) * (py - y3) - (px - x3) * (y1 - y3), det)
+    return [float(l1), float(l2), float(1 - l1 - l2)]
+
+
+R506 = {
+    "barycentric refusing |E| < 1e-12 · the longest edge squared": (
+        "barycentric", _b506_relative(_b506_longest_squared), "however small the multiple",
+        "refused a proper triangle"),
+    "barycentric refusing |E| < 1e-12 · the perimeter squared": (
+        "barycentric", _b506_relative(
+            lambda v: float(np.hypot(*(v - np.roll(v, 1, axis=0)).T).sum()) ** 2),
+        "however small the multiple", "refused a proper triangle"),
+    "barycentric refusing |E| < 1e-12 · |v2 − v1| · |v3 − v1| (0 where two vertices meet)": (
+        "barycentric", _b506_relative(
+            lambda v: float(np.hypot(*(v[1] - v[0])) * np.hypot(*(v[2] - v[0])))),
+        "if you wrote one, let this triangle through", "no zero-area check"),
+    "barycentric refusing det(2×2) == 0": (
+        "barycentric", _b506_det2, "your code reads np.linalg.det", "rounded determinant"),
+    "barycentric refusing on a 2×2 solve's LinAlgError": (
+        "barycentric", _b506_solve2, "no solver's error is a test of that", "no zero-area check"),
+    "barycentric reading xy's rows as x and y": (
+        "barycentric", _b506_rows, "too many values to unpack", "raised"),
+    "barycentric with λ3 over |E|": (
+        "barycentric", _b506_one(2, "abs E"), "you divided λ3's edge function by |E",
+        "one weight over |E|"),
+    "barycentric with |λ3|": (
+        "barycentric", _b506_one(2, "size"), "is the size of the weight", "one weight's size"),
+    "barycentric, the shipped code with abs(E) kept": (
+        "barycentric", _b506_shipped_abs_kept, "the users' report 'some triangles are shaded",
+        "the shipped area"),
+    "barycentric, the shipped code with the cond test kept": (
+        "barycentric", _b506_shipped_cond_kept, "the users' report 'triangles far from the",
+        "the shipped zero-area test"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R506.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R506.items()})
+DIFFERENT.update({
+    "barycentric on integers of the 1/256-px grid and fractions (r506)": (
+        "barycentric", _b506_int256),
+})  # fmt: skip

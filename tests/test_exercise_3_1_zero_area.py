@@ -107,7 +107,7 @@ def test_each_typical_mistake_is_named(fn, kind, words):
 
 def test_the_zero_area_cases_are_in_the_check():
     labels = [label for label, _, expected in ip.barycentric_cases() if isinstance(expected, str)]
-    assert len(labels) == len(ip.DEGENERATE) == 9  # r421 W1: two far collinear ones
+    assert len(labels) == len(ip.DEGENERATE) == 10  # r421 W1: two far collinear ones; r506 W2
     for _, (xy, _p), expected in ip.barycentric_cases():
         if isinstance(expected, str):
             assert _e(*xy) == 0

@@ -98,16 +98,34 @@ def test_exact_weights_agree_with_the_package():
         np.testing.assert_allclose(br.exact_weights(xy, p), tr.barycentric(xy, p), atol=1e-6)
 
 
+def _notebook_repaired(repaired):
+    """The notebook's shipped code with the defects in ``repaired`` repaired (a copy of the
+    student's kind: br.patched_barycentric is the checker's own code, not counted since r506)."""
+    source = "".join(_cell("shipped_barycentric")["source"])
+    if "zero-area test" in repaired:
+        source = source.replace(
+            "if np.linalg.cond(m) > 1e8:",
+            "if (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - "
+            "v[0][0]) == 0:",
+        )
+    if "area" in repaired:
+        source = source.replace("area = abs(e(v[0], v[1], v[2]))", "area = e(v[0], v[1], v[2])")
+    scope = {"np": np}
+    exec(source, scope)
+    return scope["shipped_barycentric"]
+
+
 def test_the_shipped_code_fails_3_1_with_both_defects_named():
-    """3.1's check on the shipped code names both defects; repaired, it passes 3.1."""
+    """3.1's check on the shipped code names both defects (r506 T1: by their symptoms and the
+    task's questions, not the repair); repaired, it passes 3.1; with one defect, it fails."""
     text = str(ex.check("barycentric", _notebook_shipped()))
-    assert "np.linalg.cond" in text and "|E(v1, v2, v3)|" in text, text
-    report = ex.check("barycentric", lambda xy, p: br.patched_barycentric(xy, p, br.DEFECTS))
+    assert "np.linalg.cond(M) > 1e8" in text and "abs(E(v1, v2, v3))" in text, text
+    assert "Divide by the signed" not in text and "E == 0" not in text, text
+    assert "other winding" not in text and "not whether the area is 0" not in text, text
+    report = ex.check("barycentric", _notebook_repaired(br.DEFECTS))
     assert report.passed, str(report)
     for one in br.DEFECTS:
-        report = ex.check(
-            "barycentric", lambda xy, p, one=one: br.patched_barycentric(xy, p, (one,))
-        )
+        report = ex.check("barycentric", _notebook_repaired((one,)))
         assert not report.passed
 
 

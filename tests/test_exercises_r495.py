@@ -54,8 +54,7 @@ def test_the_cond_words_no_longer_say_it_grows_with_the_distance():
 
 def test_the_new_sliver_is_exact_and_refused_by_cond_at_one_over_eps():
     """W1: λ = (1, 0, 0) exactly; cond above 1/ε; E = 2^-16 exact in float64."""
-    label, xy, p = interp.THIN_FAR[-1]
-    assert "100 000 px out" in label
+    label, xy, p = next(c for c in interp.THIN_FAR if "200 px long, 100 000 px out" in c[0])
     assert np.array_equal(br.exact_weights(xy, p), [1.0, 0.0, 0.0])
     assert br.cond(xy) > 1 / np.finfo(float).eps
     assert br._e(*np.asarray(xy)) == 2.0**-16

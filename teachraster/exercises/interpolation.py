@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import itertools
 import re
+import traceback
 
 import numpy as np
 
@@ -19,9 +20,11 @@ from ..core.interpolation import blend, perspective_weights
 from ..core.plane_equations import attribute_plane, plane_equation, setup_matrix
 from ..study.hardcases import CASES
 from .answers import as_number, as_numbers, short
+from .bary_shipped import patched_barycentric
 from .cases import DRAWN, SEED, WINDOW, drawn_rng, proper_triangles
 from .diagnosis import held_by_precision, near, scaled_mistake
 from .exercise import Exercise, Mistake, PackageAnswer
+from .package_answers import CHECKER_WORDS
 from .scalars import centre_near, num, tri_words, vec
 from .tolerance import TOL, all_close, close
 
@@ -104,6 +107,14 @@ THIN_FAR = (
     ("a sliver 200 px long, 100 000 px out, E(v1, v2, v3) = 2^-16",
      [[99800.0, 99990.0], [100000.0, 99990.00390625], [99999.99609375, 99990.00390625]],
      (99800.0, 99990.0)),
+    # r506 W1: a zero-area test relative to the triangle's size (|E| < 1e-12 · an edge's length
+    # squared, or · the perimeter squared) refused no sliver of the check (all 200 px long at
+    # most): this one spans the range, 283 000 px, E = 2^-16, so any such threshold above
+    # 2e-16 · L² refuses it. p = v2, λ = (0, 1, 0), which a solve in absolute coordinates or
+    # about any vertex (np.linalg.solve) still gets exactly
+    ("a sliver 283 000 px long through the origin, E(v1, v2, v3) = 2^-16",
+     [[-100000.0, -100000.0], [100000.0, 99999.99609375], [-99999.99609375, -99999.99609375]],
+     (100000.0, 99999.99609375)),
 )  # fmt: skip
 
 
@@ -139,6 +150,12 @@ DEGENERATE = (
     ("three vertices on one line, 97 000 px out",
      [[84953.11328125, 97356.546875], [84997.2734375, 97302.37890625],
       [84921.5703125, 97395.23828125]], (84957.5, 97351.5)),
+    # r506 W2: collinear on the grid, but every 2×2 form of the equations about a vertex (each
+    # vertex, either order of the edges, as columns or rows) leaves LU elimination with
+    # rounding noise: ``np.linalg.det(2×2) == 0`` and a solve's LinAlgError let it through
+    # (the cases above end on an exact 0 in those forms). A seeded search's first such one
+    ("three vertices on one slanted line, where no 2×2 elimination ends on 0",
+     [[54.125, 1.87109375], [25.5390625, 16.70703125], [11.24609375, 24.125]], (25.5, 16.5)),
 )  # fmt: skip
 
 
@@ -156,14 +173,40 @@ def call_barycentric(fn, args):
     (another exception is reported as raised)."""
     try:
         value = fn(*args)
-    except ValueError:
-        return REFUSED
+    except ValueError as exc:
+        if not _raised_by_python(exc):
+            return REFUSED
+        # r506 M1: ``xs, ys = np.asarray(xy)`` raised "too many values to unpack" on every
+        # case, read as a refusal ("returns 'raised ValueError' on every case: a placeholder")
+        exc.args = (f"{exc} ({_not_a_refusal(exc, args)})",)
+        raise
     except ArithmeticError as exc:  # r153 D3-8: ZeroDivisionError said nothing of ValueError
         raise type(exc)(
             f"{exc} (a triangle of zero area has no weights: 3.1 expects ValueError, raised "
             "by your own test before dividing)"
         ) from None
     return as_numbers(value, (3,), "3 weights, shape (3,)")
+
+
+def _raised_by_python(exc: ValueError) -> bool:
+    """Was ``exc`` raised by Python or numpy on a line of the student's with no ``raise``
+    (an unpacking, a reshape, ``math.sqrt`` of a negative), not by a zero-area test? A
+    LinAlgError (a solve's singular matrix) counts as a refusal, and so does a line whose
+    source is unknown."""
+    if isinstance(exc, np.linalg.LinAlgError):
+        return False
+    frames = traceback.extract_tb(exc.__traceback__)
+    line = frames[-1].line if frames else None
+    return bool(line) and not re.search(r"\braise\b", line) and "site-packages" not in (
+        frames[-1].filename or "")  # fmt: skip
+
+
+def _not_a_refusal(exc: ValueError, args) -> str:
+    shape = ""
+    if "unpack" in str(exc):
+        shape = ": xy holds one row (x, y) per vertex, shape (3, 2), and p is one (x, y)"
+    return ("raised by Python or numpy on a line with no `raise`, not by a zero-area test of "
+            f"yours{shape}")  # fmt: skip
 
 
 def _bary_raised(args, error: str) -> str:
@@ -534,17 +577,36 @@ def _zero_area_words(args, expected, got) -> str:
             "line (a p on it has infinitely many weights, any other none); test the area "
             "exactly, E == 0 (exact on the 1/256-px grid), and raise ValueError"
         )
-    return (
+    return (  # r506 H3: a test of |E| against a size that is 0 here was told "no test"
         ": your answer is NaN or infinity (a division by 0), but these three vertices lie on "
         "one line: the triangle has no area and no weights (a p on the line has infinitely "
-        "many, any other none); raise ValueError before dividing"
+        "many, any other none); raise ValueError before dividing (a zero-area test of "
+        "yours, if you wrote one, let this triangle through: test E == 0 exactly)"
     )
+
+
+def _solver_noise(args, expected, got) -> bool:
+    """Huge finite weights on a zero-area triangle: elimination's rounding noise."""
+    if not isinstance(expected, str) or isinstance(got, str):
+        return False
+    g = np.asarray(got, float)
+    return bool(np.isfinite(g).all()) and float(np.abs(g).max()) >= SOLVER_NOISE
 
 
 def _refused_words(args, expected, got) -> str:
     xy, _ = args
     area = _area(xy)
     far, _ = _far(args)
+    v = np.asarray(xy, dtype=float)
+    longest = float(np.max(np.hypot(*(v - np.roll(v, 1, axis=0)).T)))
+    if abs(area) < 1 and longest >= 1e4:  # r506 W1: a threshold relative to the size
+        return (
+            f": you refused a thin but real triangle {num(longest)} px long: its E(v1, v2, v3) "
+            f"= {area!r} (twice its area) is exact in float64 and not 0, so the triangle has "
+            "weights. A zero-area test that grows with the triangle's size (|E| against a "
+            "small multiple of an edge's length squared) refuses a sliver this long, however "
+            "small the multiple: only E == 0 exactly is no triangle"
+        )
     if abs(area) < 1 and far >= 1e4:  # r348 item 1: a condition number, a relative threshold
         return (
             f": you refused a thin but real triangle {num(far)} px from the origin: its "
@@ -733,6 +795,64 @@ def _lambda3_words(form: str):
             f": your λ1 and λ2 are right, but your λ3 = {num(got[2], expected[2])} is "
             f"{form}, a sign slip: the weights sum to 1, so λ3 = 1 − λ1 − λ2 = "
             f"{num(expected[2], got[2])}"
+        )
+
+    return words
+
+
+def _one_weight_mistakes() -> list[Mistake]:
+    """r506 H1 (r495's left-overs b16, b18): one weight divided by |E| (the others by E), or
+    its size taken, got the rule only."""
+    return [
+        *(Mistake("one weight over |E|", _one_over_abs_words(k), gives=_one_over_abs(k))
+          for k in range(3)),
+        *(Mistake("one weight's size", _one_size_words(k), gives=_one_size(k)) for k in range(3)),
+    ]  # fmt: skip
+
+
+def _one_over_abs(k: int):
+    """λ_k alone over |E(v1, v2, v3)|, the other two over E (r506 H1)."""
+
+    def gives(xy, p):
+        area = _area(xy)
+        out = _areas(xy, p) / area
+        out[k] = out[k] * area / abs(area)
+        return out
+
+    return gives
+
+
+def _one_over_abs_words(k: int):
+    def words(args, expected, got) -> str:
+        area = _area(args[0])
+        return (
+            f": your λ{k + 1} has the wrong sign and the other two are right: E(v1, v2, v3) = "
+            f"{num(area)} < 0 here, and you divided λ{k + 1}'s edge function by |E(v1, v2, v3)| "
+            "= " f"{num(abs(area))}, the other two by E itself; each weight is a ratio of two "
+            "signed edge functions: divide all three by the signed E"
+        )  # fmt: skip
+
+    return words
+
+
+def _one_size(k: int):
+    """|λ_k|, the other two weights right (r506 H1: ``abs(1 - l1 - l2)``)."""
+
+    def gives(xy, p):
+        out = _areas(xy, p) / _area(xy)
+        out[k] = abs(out[k])
+        return out
+
+    return gives
+
+
+def _one_size_words(k: int):
+    def words(args, expected, got) -> str:
+        return (
+            f": your λ{k + 1} = {num(float(np.asarray(got, float)[k]))} is the size of the "
+            f"weight {num(float(expected[k]))}: a weight is negative where p lies outside the "
+            f"edge opposite its vertex (here p is outside the edge opposite v{k + 1}); keep its "
+            "sign (no abs)"
         )
 
     return words
@@ -1002,15 +1122,18 @@ ZERO_AREA_MISTAKES = [
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(-1.0))),
     Mistake("refused a winding", _winding_words, gives=_proper(_winding_refused(1.0))),
     Mistake("float32", _float32_off_grid_words, fits=_float32_off_grid),
-    # r175 B4: ``E + 1e-9`` on a zero area; named only where it gives every zero-area answer
-    Mistake("epsilon hid the zero area", _epsilon_on_zero_words, only_whole=True,
-            fits=lambda a, e, g: (None if not isinstance(e, str)
-                                  else _epsilon_on_zero(a, e, g) is not None)),
     # r175 B5: ``if np.linalg.det(M) == 0`` before a solve: named where the code reads det
+    # (r506 W2: before the ε, whose E/ε a 2×2 elimination's noise on one case also fits)
     Mistake("rounded determinant", _reads_det_words, reads="det",
             fits=lambda a, e, g: (isinstance(e, str) and not isinstance(g, str)
                                   and bool(np.isfinite(np.asarray(g, float)).all())
                                   and float(np.abs(np.asarray(g, float)).max()) >= SOLVER_NOISE)),
+    # r506 W2: a solve's LinAlgError as the only test (the 2×2 elimination's noise)
+    Mistake("no zero-area check", _zero_area_words, reads="solve", fits=_solver_noise),
+    # r175 B4: ``E + 1e-9`` on a zero area; named only where it gives every zero-area answer
+    Mistake("epsilon hid the zero area", _epsilon_on_zero_words, only_whole=True,
+            fits=lambda a, e, g: (None if not isinstance(e, str)
+                                  else _epsilon_on_zero(a, e, g) is not None)),
     *(Mistake("zero-area test let it through", _let_through_words(read, what), reads=read,
               fits=_let_through)
       for read, what in (("cond", "its condition number"), ("slogdet", "the sign of its determinant"))),
@@ -1035,8 +1158,60 @@ ZERO_AREA_MISTAKES = [
 ]  # fmt: skip
 
 
+def _shipped_gives(repaired: tuple):
+    def gives(xy, p):
+        try:
+            return patched_barycentric(xy, p, repaired)
+        except ValueError:
+            return REFUSED
+
+    return gives
+
+
+def _shipped_test_words(args, expected, got) -> str:
+    return (
+        f": this triangle has weights (its E(v1, v2, v3) = {num(_area(args[0]))}, not 0), and "
+        "your code refused it with the shipped zero-area test, np.linalg.cond(M) > 1e8: the "
+        "users' report 'triangles far from the origin vanish'. What does np.linalg.cond "
+        "measure, and how does it change when a triangle keeps its shape and moves across the "
+        "screen, or keeps its place and shrinks (3.1's questions)? 3.1 refuses three vertices "
+        "on one line, and nothing else"
+    )
+
+
+SHIPPED_AREA_WORDS = (
+    ": your λ1 and λ2 have the signs opposite to the weights', and your λ3 = 1 minus their "
+    "sum makes up the rest: your code divides by the shipped code's area, abs(E(v1, v2, v3)): "
+    "the users' report 'some triangles are shaded with wrong colours'. Which triangles does "
+    "abs change, and is there a p of such a triangle where the shipped weights are still right "
+    "(3.1's questions)?"
+)
+
+
+def shipped_mistakes() -> list[Mistake]:
+    """r506 T1: the shipped code's defects (:func:`.bary_shipped.patched_barycentric`), named
+    by their symptoms and the task's questions, not by the repair, where the student's code
+    gives the shipped code's answers (one defect or both) on every case. 3.1's text invites the
+    check of the shipped code itself: its report told "Divide by the signed E … itself" and
+    "test E == 0 exactly", the repair of 3.1 and the reasoning of 3.1b. Any other slip of the
+    same kind (a cond limit of 1e12, −|E|) is still named in full by the mistakes after."""
+    test = Mistake("the shipped zero-area test", _shipped_test_words, reads="cond",
+                   only_whole=True, gives=_shipped_gives(("area",)))  # fmt: skip
+    area = Mistake("the shipped area", SHIPPED_AREA_WORDS, reads="abs", only_whole=True,
+                   gives=_shipped_gives(("zero-area test",)))  # fmt: skip
+
+    def without(part):
+        return _shipped_gives(("zero-area test",) if part.kind == test.kind else ("area",))
+
+    both = Mistake("the shipped zero-area test and the shipped area", "", reads="cond",
+                   only_whole=True, gives=_shipped_gives(()), parts=(test, area),
+                   without=without)  # fmt: skip
+    return [test, area, both]
+
+
 def barycentric_mistakes() -> list[Mistake]:
-    return [_degenerate_aware(m) for m in _proper_mistakes()] + ZERO_AREA_MISTAKES
+    return (shipped_mistakes() + [_degenerate_aware(m) for m in _proper_mistakes()]
+            + ZERO_AREA_MISTAKES)  # fmt: skip
 
 
 def _degenerate_aware(m: Mistake) -> Mistake:
@@ -1107,6 +1282,7 @@ def _proper_mistakes() -> list[Mistake]:
     # r455: one weight's sign flipped (after the λ3 slips: λ3 negated is λ1 + λ2 − 1, told so)
     out += [Mistake("one weight's sign", _one_sign_words(k, r), gives=_one_sign(k, r))
             for k in range(3) for r in (None, *(j for j in range(3) if j != k))]  # fmt: skip
+    out += _one_weight_mistakes()
     # r358 2: p left untranslated in a solve about one vertex
     out += [Mistake("p not translated", _untranslated_words(k), gives=_untranslated(k))
             for k in range(3)]  # fmt: skip
@@ -1417,6 +1593,8 @@ BARYCENTRIC_ANSWERS = (
                      (attribute_plane, "from the set-up matrix"))),
     # r175 F2: M maps the value differences (f2 − f1, f3 − f1) to the plane's gradient
     # (lesson 03 §3, g = M(f2 − f1, f3 − f1)); p − v1 goes through its transpose
+    # r506 W3: the shipped code with its defects repaired (exercise 3.1b's judge)
+    PackageAnswer(patched_barycentric, words=CHECKER_WORDS),
     PackageAnswer(setup_matrix, what="the set-up matrix M of lesson 03, which maps the value "
                   "differences (f2 − f1, f3 − f1) to the plane's gradient: its columns are "
                   "the gradients of λ2 and λ3, so (λ2, λ3) = Mᵀ(p − v1)"),
@@ -1432,6 +1610,9 @@ BARYCENTRIC = Exercise(
     same_barycentric, explain_barycentric, _bary_rule, barycentric_mistakes(),
     float32=bary_float32, float32_words=bary_float32_words, float32_makes_inf=True,
     answers=BARYCENTRIC_ANSWERS,
+    # r506 W3: a wrapper of exercise 3.1b's checker (bary_repair.patched_barycentric with both
+    # defects repaired, its exact_weights) passed uncounted: its modules are watched too
+    reference=("teachraster.exercises.bary_repair",),
     draw=_draw_bary, call=call_barycentric, slow=ONE_POINT, raised_words=_bary_raised, hints=(
         # r84 03-1: 3.1 asks for the weights by their definition; the first wrong answer
         # must not print the area ratio that the task leaves to the student (r153 D3-6: the
