@@ -13823,6 +13823,20 @@ def clip_near(v):
     return np.array(out).reshape(-1, 4)
 """
 
+_R507_X06_ONES_ROW_ZERO_FOR_P = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.zeros(len(p))])
+    return np.linalg.lstsq(A, B, rcond=None)[0].T @ c
+"""
+
+_R507_X16_LSTSQ_ARGS_SWAPPED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.lstsq(B, A, rcond=None)[0] @ c
+"""
+
 R507 = {
     'clipped colours (x, y, Σ) solve, else x, y, z, w lstsq (r507 P1)': ('clipped_colours', _r456('clipped_colours', _R507_X02_FALLBACK_XY1_TO_XYZW), 'x, y, z, w (without Σλ = 1) only (or some of these), leaving out Σλ = 1', 'weights from some equations'),
     'clipped colours unsigned areas in (x, y, w) (r507 M1)': ('clipped_colours', _r456('clipped_colours', _R507_X04_AREAS_XYW_UNSIGNED), 'your colours are NaN (or infinite) at every vertex, and on this triangle these leave the weights open: x, y, w and Σλ = 1', 'NaN where some equations are open'),
@@ -13835,6 +13849,8 @@ R507 = {
     'clipped colours: three pairs with Σ, else zeros (r507 H2)': ('clipped_colours', _r456('clipped_colours', _R507_X21_FIRST_GOOD_OF_THREE_PAIRS), 'a placeholder left in, or a fallback of yours where your system was singular? On this triangle these leave the weights open: x, y, w and Σλ = 1', 'one grey for all'),
     'clipped colours: weights in float16 (r507 H5)': ('clipped_colours', _r456('clipped_colours', _R507_X22_COLOUR_FLOAT16_WEIGHTS), 'your weights are rounded to 16-bit floats', 'weights in float16'),
     'depth passes: answers in reverse order (r507 H9)': ('depth_passes', _r456('depth_passes', _R507_D_X6_REVERSED_OUTPUT), 'your answers are right but in reverse order', 'answers reversed'),
+    'clipped colours: the polygon\'s sum row zero (r507 H6)': ('clipped_colours', _r456('clipped_colours', _R507_X06_ONES_ROW_ZERO_FOR_P), "your weights were solved with the polygon's row of Σλ set to 0", 'sum row zero'),
+    'clipped colours: lstsq(B, A) (r507 H7)': ('clipped_colours', _r456('clipped_colours', _R507_X16_LSTSQ_ARGS_SWAPPED), 'you solved the triangle\'s vertices from the polygon\'s', "lstsq's arguments swapped"),
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R507.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R507.items()})

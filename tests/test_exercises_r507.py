@@ -67,7 +67,7 @@ def test_two_open_sets_on_one_triangle_and_a_near_new_vertex_are_cases():
 
 
 def test_r507_variants_are_in_the_corpus_with_kinds():
-    assert len(R507) == 11 and len(R507_DIFFERENT) == 10
+    assert len(R507) == 13 and len(R507_DIFFERENT) == 10
     kinds = {kind for _, _, _, kind in R507.values()}
     assert {"kept by a loose tolerance", "NaN where some equations are open", "one grey for all",
             "answers reversed", "colour from the screen"} <= kinds  # fmt: skip

@@ -748,6 +748,29 @@ def _over_w_times_w(v, c, poly):
     return (weights(v, p) @ (np.asarray(c, float) / v[:, 3:])) * p[:, 3:]
 
 
+def _lstsq_of(a, b):
+    with np.errstate(all="ignore"):
+        return np.linalg.lstsq(a, b, rcond=None)[0]
+
+
+def _sum_row_zero(v, c, poly):
+    """The polygon's Σλ row written as 0 (r507 H6): the weights of a point summing to 0."""
+    p = np.asarray(poly, float).reshape(-1, 4)
+    if not len(p):
+        return None
+    a = np.vstack([np.asarray(v, float).T, np.ones(3)])
+    return _lstsq_of(a, np.vstack([p.T, np.zeros(len(p))])).T @ np.asarray(c, float)
+
+
+def _lstsq_swapped(v, c, poly):
+    """``lstsq(B, A)`` for ``lstsq(A, B)`` (r507 H7): the polygon fitted to the triangle."""
+    p = np.asarray(poly, float).reshape(-1, 4)
+    if not len(p):
+        return None
+    a = np.vstack([np.asarray(v, float).T, np.ones(3)])
+    return _lstsq_of(np.vstack([p.T, np.ones(len(p))]), a) @ np.asarray(c, float)
+
+
 def _one_colour_words(args, expected, got) -> str:
     i = _one_colour(args, expected, got) + 1
     return (
@@ -797,6 +820,12 @@ COLOUR_MISTAKES = [
             "multiplied by the vertex's w (lesson 04's perspective-correct attributes, for the "
             f"screen); the clipper works in clip space, before any divide: {_WHY}",
             gives=_over_w_times_w),
+    Mistake("sum row zero", "your weights were solved with the polygon's row of Σλ set to 0, "
+            "not 1: every point of the triangle has λ1 + λ2 + λ3 = 1, so its row of ones is "
+            "[p; 1], like the triangle's", gives=_sum_row_zero),
+    Mistake("lstsq's arguments swapped", "you solved the triangle's vertices from the polygon's "
+            "(`lstsq(B, A)`): the unknowns are the weights λ of each polygon vertex, A·λ = B with A "
+            "the triangle's [v; 1] and B the polygon's [p; 1]", gives=_lstsq_swapped),
     Mistake("weights divided by w, not renormalised", "you divided the screen's weights by "
             "each vertex's w (lesson 04's correction) but did not divide them by their sum "
             f"again, and here there is nothing to correct anyway: {_WHY}", gives=_over_w_raw),
