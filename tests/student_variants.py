@@ -13822,3 +13822,279 @@ DIFFERENT.update({
     "barycentric on integers of the 1/256-px grid and fractions (r506)": (
         "barycentric", _b506_int256),
 })  # fmt: skip
+# -- r507: exercise 4 (4.3: a check that never ended on lstsq of inf, fallbacks between two open
+# sets, a kept vertex looked up with a loose tolerance, NaN or grey where sets are open; 4.1
+# answers reversed)
+_R507_X02_FALLBACK_XY1_TO_XYZW = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    try:
+        L = np.linalg.solve(np.vstack([v[:, :2].T, np.ones(3)]), np.vstack([p[:, :2].T, np.ones(len(p))]))
+    except np.linalg.LinAlgError:
+        L = np.linalg.lstsq(v.T, p.T, rcond=None)[0]
+    return L.T @ c
+"""
+
+_R507_X04_AREAS_XYW_UNSIGNED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    q = v[:, [0, 1, 3]]; r = p[:, [0, 1, 3]]
+    def area(a, b, d): return np.linalg.norm(np.cross(b - a, d - a))
+    tot = area(*q)
+    out = []
+    for x in r:
+        l = np.array([area(x, q[1], q[2]), area(q[0], x, q[2]), area(q[0], q[1], x)]) / tot
+        out.append(l @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_X07_ATTR_OVER_W_TIMES_W = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0].T
+    with np.errstate(all="ignore"):
+        return (lam @ (c / v[:, 3:])) * p[:, 3:]
+"""
+
+_R507_X08_KEPT_TOL_1E2 = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)])
+    out = []
+    for x in p:
+        d = np.abs(v - x).max(axis=1)
+        if d.min() < 1e-2:
+            out.append(c[d.argmin()])
+        else:
+            out.append(np.linalg.lstsq(A, np.append(x, 1), rcond=None)[0] @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_X09_KEPT_TOL_1E3 = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)])
+    out = []
+    for x in p:
+        d = np.abs(v - x).max(axis=1)
+        if d.min() < 1e-3:
+            out.append(c[d.argmin()])
+        else:
+            out.append(np.linalg.lstsq(A, np.append(x, 1), rcond=None)[0] @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_X11_CONSTANT_HALF = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    return np.full((len(p), 3), 0.5)
+"""
+
+_R507_X12_POSITIONS_AS_COLOURS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    return p[:, :3]
+"""
+
+_R507_X19_NDC_WEIGHTS_WITH_Z = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    with np.errstate(all="ignore"):
+        s = v[:, :3] / v[:, 3:]; q = p[:, :3] / p[:, 3:]
+        lam = np.linalg.lstsq(np.vstack([s.T, np.ones(3)]), np.vstack([q.T, np.ones(len(q))]), rcond=None)[0]
+        lam = lam / v[:, 3:]; lam = lam / lam.sum(axis=0)
+    return lam.T @ c
+"""
+
+_R507_X21_FIRST_GOOD_OF_THREE_PAIRS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    for cols in ([0, 1], [0, 3], [1, 3]):
+        A = np.vstack([v[:, cols].T, np.ones(3)])
+        if abs(np.linalg.det(A)) > 1e-9:
+            return np.linalg.solve(A, np.vstack([p[:, cols].T, np.ones(len(p))])).T @ c
+    return np.zeros((len(p), 3))
+"""
+
+_R507_X22_COLOUR_FLOAT16_WEIGHTS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.linalg.lstsq(A, B, rcond=None)[0].astype(np.float16)
+    return lam.T.astype(float) @ c
+"""
+
+_R507_D_X6_REVERSED_OUTPUT = """
+def depth_passes(depths, writes):
+    stored, out = np.inf, []
+    for d, wr in zip(depths, writes):
+        ok = d < stored; out.append(ok)
+        if ok and wr: stored = d
+    return out[::-1]
+"""
+
+_R507_C_K01_EDGE_VECTORS_SIGNED_GRAM = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    e1, e2 = v[1] - v[0], v[2] - v[0]
+    G = np.array([[e1 @ e1, e1 @ e2], [e1 @ e2, e2 @ e2]])
+    out = []
+    for x in p:
+        d = x - v[0]
+        b, g = np.linalg.solve(G, [d @ e1, d @ e2])
+        out.append((1 - b - g) * c[0] + b * c[1] + g * c[2])
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_C_K02_COLOUR_MAP_PINV = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    M = c.T @ np.linalg.pinv(np.vstack([v.T, np.ones(3)]))
+    return (M @ np.vstack([p.T, np.ones(len(p))])).T
+"""
+
+_R507_C_K03_FIRST_NONSINGULAR_SUBSET = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    from itertools import combinations
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    for rows in combinations(range(5), 3):
+        M = A[list(rows)]
+        if abs(np.linalg.det(M)) > 1e-6:
+            return np.linalg.solve(M, B[list(rows)]).T @ c
+    raise ValueError("flat")
+"""
+
+_R507_C_K06_QR_MANUAL = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    Q, R = np.linalg.qr(A)
+    lam = np.linalg.solve(R, Q.T @ B)
+    return np.einsum("kn,ki->ni", lam, c)
+"""
+
+_R507_C_K07_EDGES_THEN_INSIDE = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    out = []
+    A = np.vstack([v.T, np.ones(3)])
+    for x in p:
+        col = None
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            k = np.argmax(np.abs(b - a)); t = (x[k] - a[k]) / (b[k] - a[k])
+            if np.allclose(a + t * (b - a), x, rtol=0, atol=1e-6 * max(1, np.abs(x).max())):
+                col = c[i] + t * (c[(i + 1) % 3] - c[i]); break
+        if col is None:
+            col = np.linalg.lstsq(A, np.append(x, 1), rcond=None)[0] @ c
+        out.append(col)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_C_K08_CRAMER_XYW_COND_FALLBACK = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    best = None
+    from itertools import combinations
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    rows = max(combinations(range(5), 3), key=lambda r: abs(np.linalg.det(A[list(r)])))
+    M = A[list(rows)]; det = np.linalg.det(M); out = []
+    for x in B[list(rows)].T:
+        lam = [np.linalg.det(np.column_stack([x if j == i else M[:, j] for j in range(3)])) / det for i in range(3)]
+        out.append(np.array(lam) @ c)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_C_X05_T_BY_XYZ_LENGTH = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    out = []
+    for x in p:
+        col = None
+        for i in range(3):
+            a, b = v[i], v[(i + 1) % 3]
+            L = np.linalg.norm((b - a)[:3])
+            t = np.linalg.norm((x - a)[:3]) / L
+            if np.allclose(a + t * (b - a), x, atol=1e-5):
+                col = c[i] + t * (c[(i + 1) % 3] - c[i]); break
+        if col is None:
+            col = np.linalg.lstsq(np.vstack([v.T, np.ones(3)]), np.append(x, 1), rcond=None)[0] @ c
+        out.append(col)
+    return np.array(out).reshape(-1, 3)
+"""
+
+_R507_C_X18_WEIGHTS_ABS = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    lam = np.abs(np.linalg.lstsq(A, B, rcond=None)[0])
+    return (lam / lam.sum(axis=0)).T @ c
+"""
+
+_R507_C_D_X8_ARRAY_VECTORISED = """
+def depth_passes(depths, writes):
+    d = np.asarray(depths, float); wr = np.asarray(writes, bool)
+    masked = np.where(wr, d, np.inf)
+    before = np.concatenate([[np.inf], np.minimum.accumulate(masked)[:-1]])
+    return d < before
+"""
+
+_R507_C_N_C3_W_FROM_Z = """
+def clip_near(v):
+    v = np.asarray(v, dtype=float)
+    out = []
+    for i in range(3):
+        a, b = v[i], v[(i + 1) % 3]
+        da, db = a[2] + a[3], b[2] + b[3]
+        if da >= 0: out.append(a)
+        if (da >= 0) != (db >= 0):
+            q = a + da / (da - db) * (b - a); q[3] = -q[2]; out.append(q)
+    return np.array(out).reshape(-1, 4)
+"""
+
+_R507_X06_ONES_ROW_ZERO_FOR_P = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.zeros(len(p))])
+    return np.linalg.lstsq(A, B, rcond=None)[0].T @ c
+"""
+
+_R507_X16_LSTSQ_ARGS_SWAPPED = """
+def clipped_colours(v, colours, polygon):
+    v = np.asarray(v, float); c = np.asarray(colours, float); p = np.asarray(polygon, float).reshape(-1, 4)
+    A = np.vstack([v.T, np.ones(3)]); B = np.vstack([p.T, np.ones(len(p))])
+    return np.linalg.lstsq(B, A, rcond=None)[0] @ c
+"""
+
+R507 = {
+    'clipped colours (x, y, Σ) solve, else x, y, z, w lstsq (r507 P1)': ('clipped_colours', _r456('clipped_colours', _R507_X02_FALLBACK_XY1_TO_XYZW), 'x, y, z, w (without Σλ = 1) only (or some of these), leaving out Σλ = 1', 'weights from some equations'),
+    'clipped colours unsigned areas in (x, y, w) (r507 M1)': ('clipped_colours', _r456('clipped_colours', _R507_X04_AREAS_XYW_UNSIGNED), 'your colours are NaN (or infinite) at every vertex, and on this triangle these leave the weights open: x, y, w and Σλ = 1', 'NaN where some equations are open'),
+    'clipped colours: colours over w, times the vertex w (r507 H4)': ('clipped_colours', _r456('clipped_colours', _R507_X07_ATTR_OVER_W_TIMES_W), "you divided the colours by w, interpolated them and multiplied by the vertex's w", 'colour over w, times w'),
+    'clipped colours kept vertex within 1e-2 (r507 P3)': ('clipped_colours', _r456('clipped_colours', _R507_X08_KEPT_TOL_1E2), 'did you look the kept vertices up with a tolerance of 0.0008 or more?', 'kept by a loose tolerance'),
+    'clipped colours kept vertex within 1e-3 (r507 P2)': ('clipped_colours', _r456('clipped_colours', _R507_X09_KEPT_TOL_1E3), 'did you look the kept vertices up with a tolerance of 0.0008 or more?', 'kept by a loose tolerance'),
+    'clipped colours constant grey 0.5 (r507 H1)': ('clipped_colours', _r456('clipped_colours', _R507_X11_CONSTANT_HALF), "every vertex of your polygon has the colour (0.5, 0.5, 0.5) here, none of the triangle's colours: a placeholder left in", 'one grey for all'),
+    'clipped colours: x, y, z as colours (r507 H3)': ('clipped_colours', _r456('clipped_colours', _R507_X12_POSITIONS_AS_COLOURS), "your colours are the polygon's x, y, z", 'colours are positions'),
+    'clipped colours: lesson 04 weights by lstsq on x/w, y/w, z/w (r507 T1)': ('clipped_colours', _r456('clipped_colours', _R507_X19_NDC_WEIGHTS_WITH_Z), "you went through the screen (x/w, y/w, lesson 04's weights?), and on the screen the triangle is edge-on", 'colour from the screen'),
+    'clipped colours: three pairs with Σ, else zeros (r507 H2)': ('clipped_colours', _r456('clipped_colours', _R507_X21_FIRST_GOOD_OF_THREE_PAIRS), 'a placeholder left in, or a fallback of yours where your system was singular? On this triangle these leave the weights open: x, y, w and Σλ = 1', 'one grey for all'),
+    'clipped colours: weights in float16 (r507 H5)': ('clipped_colours', _r456('clipped_colours', _R507_X22_COLOUR_FLOAT16_WEIGHTS), 'your weights are rounded to 16-bit floats', 'weights in float16'),
+    'depth passes: answers in reverse order (r507 H9)': ('depth_passes', _r456('depth_passes', _R507_D_X6_REVERSED_OUTPUT), 'your answers are right but in reverse order', 'answers reversed'),
+    'clipped colours: the polygon\'s sum row zero (r507 H6)': ('clipped_colours', _r456('clipped_colours', _R507_X06_ONES_ROW_ZERO_FOR_P), "your weights were solved with the polygon's row of Σλ set to 0", 'sum row zero'),
+    'clipped colours: lstsq(B, A) (r507 H7)': ('clipped_colours', _r456('clipped_colours', _R507_X16_LSTSQ_ARGS_SWAPPED), 'you solved the triangle\'s vertices from the polygon\'s', "lstsq's arguments swapped"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R507.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R507.items()})
+R507_DIFFERENT = {
+    'clipped colours edge vectors signed gram (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_K01_EDGE_VECTORS_SIGNED_GRAM)),
+    'clipped colours colour map pinv (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_K02_COLOUR_MAP_PINV)),
+    'clipped colours first nonsingular subset (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_K03_FIRST_NONSINGULAR_SUBSET)),
+    'clipped colours qr manual (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_K06_QR_MANUAL)),
+    'clipped colours edges then inside (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_K07_EDGES_THEN_INSIDE)),
+    'clipped colours cramer xyw cond fallback (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_K08_CRAMER_XYW_COND_FALLBACK)),
+    'clipped colours t by xyz length (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_X05_T_BY_XYZ_LENGTH)),
+    'clipped colours weights abs (r507)': ('clipped_colours', _r456('clipped_colours', _R507_C_X18_WEIGHTS_ABS)),
+    'depth passes x8 array vectorised (r507)': ('depth_passes', _r456('depth_passes', _R507_C_D_X8_ARRAY_VECTORISED)),
+    'clip near c3 w from z (r507)': ('clip_near', _r456('clip_near', _R507_C_N_C3_W_FROM_Z)),
+}  # fmt: skip
+DIFFERENT.update(R507_DIFFERENT)

@@ -31,6 +31,7 @@ from .answers import MAX_VERTICES, as_numbers, short
 from .cases import SEED
 from .depth_clipping import DISTANCES, clip_cases, clip_with
 from .exercise import Exercise, Mistake, PackageAnswer
+from .finite_linalg import InfiniteMatrix, refusing_inf
 from .running import WrongAnswerType
 from .scalars import num, vec
 from .tolerance import all_close
@@ -122,17 +123,36 @@ def _targeted() -> list:
     return out
 
 
+def _targeted_r507() -> list:
+    """(label, v, polygon[, colours]) of r507's cases, after the others (their forms and
+    colours unchanged)."""
+    out = []
+    # r507 P1: two sets open on one triangle, so a fallback from one to the other fails too:
+    # (x, y, Σλ = 1) and x, y, z, w without it; (x, y, Σλ = 1) and (z, w, Σλ = 1)
+    v = np.array([[1.0, 0, -2, 1], [-0.5, 0, 1, 1], [0.5, 0, -1, 2]])
+    out.append(("every y = 0 and v3 = v1 + v2", v, clip_with(v)))
+    v = np.array([[-1.0, 2, -3, -1], [1, 0, 0, 2], [2, -1, 2, 4]])
+    out.append(("x + y = 1 and z = w − 2 at every vertex", v, clip_with(v)))
+    # r507 P2: new vertices 8e-4 from v1 (t = 3.2e-4), v1 not kept: a kept-vertex look-up
+    # with a loose tolerance gives them v1's colour, 3.2e-4 off (primaries: colours differ by 1)
+    v = np.array([[0.5, 0.2, -1.0008, 1], [1, -0.5, 1.5, 1], [-1, 0.5, 1.5, 1]])
+    out.append(("a vertex 0.0008 behind the near plane: new vertices 8e-4 from it", v,
+                clip_with(v), np.eye(3)))  # fmt: skip
+    return out
+
+
 def colour_cases():
     """4.2's cases (the clipper's polygon handed over in the four forms in turn), then this
     task's own; triangles on one line in clip space left out (their colours are undefined)."""
     rng = np.random.default_rng(SEED + 43)
     made = [(label.split(": v=")[0], a[0], p) for label, a, p in clip_cases()]
     out, empty = [], 0
-    for k, (label, v, poly) in enumerate([*_targeted(), *made]):
+    for k, (label, v, poly, *given) in enumerate([*_targeted(), *made, *_targeted_r507()]):
         if _flat(v) or (not len(poly) and empty):  # one empty polygon is enough
             continue
         empty += not len(poly)
         c = np.round(rng.uniform(0, 1, (3, 3)), 2)
+        c = given[0] if given else c  # (drawn all the same: the other cases keep theirs)
         form = _FORMS[k % 4]
         order = _order(form, len(poly))
         given = poly[order].astype(np.float32 if form == _FORMS[3] else float)
@@ -191,7 +211,8 @@ def explain_colours(args, expected, got) -> str:
     if where is not None:
         what = f"v{where + 1}, kept"
     elif edge is not None:
-        what = f"a new vertex, on the edge v{edge[0] + 1}→v{(edge[0] + 1) % 3 + 1} at t = {num(edge[1])}"
+        t = num(edge[1], float(np.clip(np.round(edge[1]), 0, 1)))  # 0.99968, not 1 (r507)
+        what = f"a new vertex, on the edge v{edge[0] + 1}→v{(edge[0] + 1) % 3 + 1} at t = {t}"
     else:
         what = "a new vertex inside the triangle, where two planes cut"
     return (f"polygon[{k}] = {vec(poly[k])} ({what}) has colour {vec(g[k], expected[k])}, "
@@ -208,20 +229,26 @@ def _rule(args, expected, got) -> str:
 # --- the typical slips, each as the answer it gives -------------------------------------
 
 
-def _screen(v, points, strict=True):
+def _screen(v, points, strict=True, how="solve"):
     """λ of the points' projections (x/w, y/w) in the projected triangle, lesson 04's
-    perspective weights where ``strict`` is False (numpy's solve, garbage where singular);
-    None where a w is 0 or (``strict``) the projection is a segment."""
+    perspective weights where ``strict`` is False (numpy's solve, garbage where singular; or
+    ``how`` "lstsq" / "lstsq z": least squares on (x/w, y/w) or (x/w, y/w, z/w), one of many
+    answers where singular, r507); None where a w is 0 or (``strict``) the projection is a
+    segment."""
     v, p = np.asarray(v, float), np.asarray(points, float).reshape(-1, 4)
     if (v[:, 3] == 0).any() or (p[:, 3] == 0).any():
         return None
-    s, q = v[:, :2] / v[:, 3:], p[:, :2] / p[:, 3:]
+    n = 3 if how == "lstsq z" else 2
+    s, q = v[:, :n] / v[:, 3:], p[:, :n] / p[:, 3:]
     m = np.vstack([s.T, np.ones(3)])
-    if strict and np.linalg.matrix_rank(m, tol=1e-9) < 3:
+    if strict and np.linalg.matrix_rank(m[[0, 1, n]], tol=1e-9) < 3:
         return None
+    b = np.vstack([q.T, np.ones(len(q))])
     try:
         with np.errstate(all="ignore"):
-            return np.linalg.solve(m, np.vstack([q.T, np.ones(len(q))])).T
+            if how == "solve":
+                return np.linalg.solve(m, b).T
+            return np.linalg.lstsq(m, b, rcond=None)[0].T if np.isfinite(m).all() else None
     except np.linalg.LinAlgError:
         return None
 
@@ -250,17 +277,24 @@ def _via_screen(args, expected, got) -> str | None:
     bad = _bad_rows(expected, g)
     if not bad or not _screen_fails(args, expected, got):
         return None
-    if not np.isfinite(g[bad]).all():  # the screen gives NaN at every vertex, not at some
-        return "corrected" if (~np.isfinite(g)).any(axis=1).all() else None
-    lam = _screen(v, poly, strict=False)
-    if lam is None or not np.isfinite(lam).all():
-        return None
-    with np.errstate(all="ignore"):
-        fixed = lam / v[:, 3]
-        fixed = fixed / fixed.sum(axis=1, keepdims=True)
-    if all_close(g, fixed @ c, COLOUR_TOL):
-        return "corrected"
-    return "plain" if all_close(g, lam @ c, COLOUR_TOL) else None
+    if not np.isfinite(g[bad]).all():  # the screen gives NaN at every vertex, not at some;
+        # where some equations are open too, NaN cannot tell which was used (r507 M1)
+        every = (~np.isfinite(g)).any(axis=1).all()
+        return "corrected" if every and not _largest_open(v) else None
+    for how in ("solve", "lstsq", "lstsq z"):
+        if how != "solve" and _undetermined(args, expected, got) is not None:
+            return None  # a set of the five equations gives it too: named as that (r496)
+        lam = _screen(v, poly, strict=False, how=how)
+        if lam is None or not np.isfinite(lam).all():
+            continue
+        with np.errstate(all="ignore"):
+            fixed = lam / v[:, 3]
+            fixed = fixed / fixed.sum(axis=1, keepdims=True)
+        if all_close(g, fixed @ c, COLOUR_TOL):
+            return "corrected"
+        if all_close(g, lam @ c, COLOUR_TOL):
+            return "plain"
+    return None
 
 
 def _via_screen_words(args, expected, got) -> str:
@@ -377,22 +411,53 @@ def _undetermined_words(args, expected, got) -> str:
     )
 
 
-def _raised(args, error: str) -> str:
-    """A singular solve, named (numpy's LinAlgError on a triangle some equations leave open, or
-    that is edge-on on the screen): every largest open set of equations is said, since the
-    error does not show which the student used (r496 M5–M7)."""
-    if "LinAlgError" not in error and "Singular" not in error:
-        return ""
+def _open_words(args) -> str:
+    """Every largest set of equations open on this case's triangle, and the screen where it
+    fails; "" where none is."""
     sets = _largest_open(args[0])
     why = ["; ".join(_subset_words(c, o) for c, o in sets) + " (or any part of one of them)"
            ] if sets else []  # fmt: skip
     fails = _screen_fails(args, None, None)
     if fails:
         why.append(f"on the screen {fails}")
+    return "; and ".join(why)
+
+
+def _nan_open(args, expected, got) -> bool:
+    """NaN (or ±inf) at every vertex, on a triangle some equations leave open (r507 M1)."""
+    g = np.asarray(got, float).reshape(-1, 3)
+    return (g.shape == expected.shape and len(g) > 0 and bool(_largest_open(args[0]))
+            and (~np.isfinite(g)).any(axis=1).all())  # fmt: skip
+
+
+def _nan_open_words(args, expected, got) -> str:
+    return (
+        f"your colours are NaN (or infinite) at every vertex, and on this triangle these leave "
+        f"the weights open: {_open_words(args)}: a singular system, 0/0. Did you solve for the "
+        "weights from some of the equations only (or on the screen)? Which equations fix them "
+        "on every triangle?"
+    )
+
+
+def _raised(args, error: str) -> str:
+    """A singular solve, named (numpy's LinAlgError on a triangle some equations leave open, or
+    that is edge-on on the screen): every largest open set of equations is said, since the
+    error does not show which the student used (r496 M5–M7)."""
+    if InfiniteMatrix.__name__ in error:
+        fails = _screen_fails(args, None, None)
+        where = f"on the screen {fails}, so x/w is ±inf there" if fails else "a division by 0?"
+        return (
+            f"; your matrix holds inf: {where}. Where every w ≠ 0 lesson 04's weights are "
+            "right; in clip space nothing is divided: which equations give the weights of a "
+            "point of the triangle there?"
+        )
+    if "LinAlgError" not in error and "Singular" not in error:
+        return ""
+    why = _open_words(args)
     if not why:
         return ""
     return (
-        "; on this triangle these leave the weights open: " + "; and ".join(why) + ". Did you "
+        "; on this triangle these leave the weights open: " + why + ". Did you "
         "solve for the weights from some of the equations only, or on the screen? Which "
         "equations fix them on every triangle?"
     )
@@ -494,6 +559,37 @@ def _float32_kept_words(args, expected, got) -> str:
         f"polygon[{k}] = {vec(np.asarray(poly[k], float))} is v{i + 1} = {vec(v[i])} "
         "rounded to float32 (this polygon is float32): it is kept, but not equal to v"
         f"{i + 1} bit for bit. Did you look vertices up by exact equality?"
+    )
+
+
+def _loose_kept(args, expected, got) -> list | None:
+    """[(k, i, distance)] where each wrong row is a new vertex near vi (within 0.05, not
+    within float32's rounding) that took vi's colour (r507 P2: a kept-vertex look-up with a
+    loose tolerance), or None."""
+    v, c, poly = (np.asarray(a, float) for a in args)
+    g = np.asarray(got, float).reshape(-1, 3)
+    bad = _bad_rows(expected, g)
+    out = []
+    for k in bad:
+        d = np.abs(v - poly[k]).max(axis=1)
+        i = int(np.argmin(d))
+        if _kept(v, poly[k]) is not None or d[i] > 0.05 or not all_close(g[k], c[i], COLOUR_TOL):
+            return None
+        out.append((k, i, float(d[i])))
+    return out or None
+
+
+def _loose_kept_words(args, expected, got) -> str:
+    v, c, poly = (np.asarray(a, float) for a in args)
+    k, i, d = _loose_kept(args, expected, got)[0]
+    return (
+        f"polygon[{k}] = {vec(poly[k], v[i])} is a new vertex {num(d)} from v{i + 1} = "
+        f"{vec(v[i], poly[k])}, "
+        f"not v{i + 1} itself, and your colour there is v{i + 1}'s own: did you look the kept "
+        f"vertices up with a tolerance of {num(d)} or more? Only a vertex equal to v{i + 1} "
+        "up to its last digits (about 1e-7 of its size) is v"
+        f"{i + 1}; one this close still has its own weights (here they move the colour by "
+        f"{num(float(np.abs(expected[k] - c[i]).max()))})"
     )
 
 
@@ -616,6 +712,65 @@ def _one_colour(args, expected, got) -> int | None:
     return next((i for i in range(3) if all(all_close(r, c[i], COLOUR_TOL) for r in g)), None)
 
 
+def _grey(args, expected, got) -> bool:
+    """Every row the same colour, none of the vertices' (r507 H1: a placeholder such as
+    ``np.full((n, 3), 0.5)``), where the right colours differ."""
+    c = np.asarray(args[1], float)
+    g = np.asarray(got, float).reshape(-1, 3)
+    return (len(g) > 1 and g.shape == expected.shape and np.isfinite(g).all()
+            and all(all_close(r, g[0], COLOUR_TOL) for r in g)
+            and not any(all_close(g[0], ci, COLOUR_TOL) for ci in c)
+            and not all(all_close(e, expected[0], COLOUR_TOL) for e in expected))  # fmt: skip
+
+
+def _grey_words(args, expected, got) -> str:
+    g = np.asarray(got, float).reshape(-1, 3)
+    open_here = _open_words(args)
+    if open_here:  # r507 H2: a fallback where the student's system was singular?
+        return (
+            f"every vertex of your polygon has the colour {vec(g[0])} here, none of the "
+            "triangle's colours: a placeholder left in, or a fallback of yours where your "
+            f"system was singular? On this triangle these leave the weights open: {open_here}. "
+            "Which equations fix the weights on every triangle?"
+        )
+    return (
+        f"every vertex of your polygon has the colour {vec(g[0])}, whatever its position, "
+        f"and it is none of the triangle's colours: a placeholder left in? {_WHY}"
+    )
+
+
+def _over_w_times_w(v, c, poly):
+    """Colours divided by w, interpolated with the right weights, times the vertex's w
+    (r507 H4: lesson 04's perspective-correct attributes, in clip space); None where w = 0."""
+    v, p = np.asarray(v, float), np.asarray(poly, float).reshape(-1, 4)
+    if not len(p) or (v[:, 3] == 0).any():
+        return None
+    return (weights(v, p) @ (np.asarray(c, float) / v[:, 3:])) * p[:, 3:]
+
+
+def _lstsq_of(a, b):
+    with np.errstate(all="ignore"):
+        return np.linalg.lstsq(a, b, rcond=None)[0]
+
+
+def _sum_row_zero(v, c, poly):
+    """The polygon's Σλ row written as 0 (r507 H6): the weights of a point summing to 0."""
+    p = np.asarray(poly, float).reshape(-1, 4)
+    if not len(p):
+        return None
+    a = np.vstack([np.asarray(v, float).T, np.ones(3)])
+    return _lstsq_of(a, np.vstack([p.T, np.zeros(len(p))])).T @ np.asarray(c, float)
+
+
+def _lstsq_swapped(v, c, poly):
+    """``lstsq(B, A)`` for ``lstsq(A, B)`` (r507 H7): the polygon fitted to the triangle."""
+    p = np.asarray(poly, float).reshape(-1, 4)
+    if not len(p):
+        return None
+    a = np.vstack([np.asarray(v, float).T, np.ones(3)])
+    return _lstsq_of(np.vstack([p.T, np.ones(len(p))]), a) @ np.asarray(c, float)
+
+
 def _one_colour_words(args, expected, got) -> str:
     i = _one_colour(args, expected, got) + 1
     return (
@@ -642,6 +797,8 @@ COLOUR_MISTAKES = [
     Mistake("colours all zero", "every colour you return is (0, 0, 0), whatever the case: a "
             "placeholder left in?", gives=lambda v, c, p: np.zeros((len(p), 3)) if len(p) else None),
     Mistake("float32 vertices compared exactly", _float32_kept_words, fits=_float32_kept),
+    Mistake("kept by a loose tolerance", _loose_kept_words,
+            fits=lambda a, e, g: _loose_kept(a, e, g) is not None),
     Mistake("colour from the screen", _via_screen_words,
             fits=lambda a, e, g: _via_screen(a, e, g) is not None),
     Mistake("colour t from one coordinate", _t_one_coordinate_words,
@@ -650,10 +807,25 @@ COLOUR_MISTAKES = [
     Mistake("weights from some equations", _undetermined_words,
             fits=lambda a, e, g: _undetermined(a, e, g) is not None),
     Mistake("NaN where a weight is 0", _nan_on_edge_words, fits=_nan_on_edge),
+    Mistake("NaN where some equations are open", _nan_open_words, fits=_nan_open),
     Mistake("colours of other vertices", _permuted_words,
             fits=lambda a, e, g: _permuted_colours(a, e, g) is not None),
     Mistake("one colour for all", _one_colour_words,
             fits=lambda a, e, g: _one_colour(a, e, g) is not None),
+    Mistake("one grey for all", _grey_words, fits=_grey),
+    Mistake("colours are positions", "your colours are the polygon's x, y, z: row k is the "
+            "colour of polygon[k], made of the three colours as polygon[k] is made of v1, v2, v3",
+            gives=lambda v, c, p: np.asarray(p, float).reshape(-1, 4)[:, :3] if len(p) else None),
+    Mistake("colour over w, times w", "you divided the colours by w, interpolated them and "
+            "multiplied by the vertex's w (lesson 04's perspective-correct attributes, for the "
+            f"screen); the clipper works in clip space, before any divide: {_WHY}",
+            gives=_over_w_times_w),
+    Mistake("sum row zero", "your weights were solved with the polygon's row of Σλ set to 0, "
+            "not 1: every point of the triangle has λ1 + λ2 + λ3 = 1, so its row of ones is "
+            "[p; 1], like the triangle's", gives=_sum_row_zero),
+    Mistake("lstsq's arguments swapped", "you solved the triangle's vertices from the polygon's "
+            "(`lstsq(B, A)`): the unknowns are the weights λ of each polygon vertex, A·λ = B with A "
+            "the triangle's [v; 1] and B the polygon's [p; 1]", gives=_lstsq_swapped),
     Mistake("weights divided by w, not renormalised", "you divided the screen's weights by "
             "each vertex's w (lesson 04's correction) but did not divide them by their sum "
             f"again, and here there is nothing to correct anyway: {_WHY}", gives=_over_w_raw),
@@ -701,6 +873,10 @@ COLOUR_MISTAKES = [
             "1/255, rounded down: `astype(np.uint8)` truncates): return them as floats; the "
             "clipper interpolates in full precision",
             gives=lambda v, c, p: _rounded(v, c, p, lambda x: np.floor(x * 255) / 255)),
+    Mistake("weights in float16", "your weights are rounded to 16-bit floats (half precision, "
+            "11 significant bits) before they make the colour: keep them in float64 (or the "
+            "precision you were given)", gives=lambda v, c, p: None if not len(p) else
+            weights(v, p).astype(np.float16).astype(float) @ np.asarray(c, float)),
     Mistake("colours in float16", "your colours are rounded to 16-bit floats (half precision, "
             "11 significant bits): keep them in the precision you were given",
             gives=lambda v, c, p: _rounded(v, c, p, lambda x: x.astype(np.float16).astype(float))),
@@ -735,8 +911,16 @@ def _draw(ax, case, got):
     return artists
 
 
+def _call(fn, args):
+    """The student's colours, numpy's SVD solvers refusing ±inf meanwhile (r507 T1: on the
+    w = 0 case, lesson 04's weights by ``np.linalg.lstsq`` would never return)."""
+    with refusing_inf():
+        value = fn(*args)
+    return as_colours(value)
+
+
 CLIPPED_COLOURS = Exercise(
     "clipped_colours", colour_cases, as_colours, _same, explain_colours, _rule, COLOUR_MISTAKES,
     answers=(PackageAnswer(clip_polygon), DISTANCES), draw=_draw, raised_words=_raised,
-    reference=("teachraster.exercises.depth_clipping",),
+    call=_call, reference=("teachraster.exercises.depth_clipping",),
 )  # fmt: skip

@@ -518,6 +518,9 @@ MORE_MISTAKES = [
             gives=lambda d, w: _simulate(np.asarray(d, float)[::-1], np.asarray(w, bool)[::-1])[::-1]),
     Mistake("sorted by depth", SORTED_WORDS, gives=lambda d, w: _sorted(d, w, back=False)),
     Mistake("sorted by depth", SORTED_WORDS, gives=lambda d, w: _sorted(d, w, back=True)),
+    Mistake("answers reversed", "your answers are right but in reverse order (the last "
+            "fragment's first): answer k is fragment k's, in drawing order",  # r507 H9
+            gives=lambda d, w: _simulate(d, w)[::-1]),
     Mistake("farthest written", "you compared each fragment with the farthest depth written so "
             "far: the buffer holds the depth of the last fragment that passed and wrote, which "
             "is the nearest so far", gives=_farthest_written),
