@@ -33,7 +33,8 @@ from .bary_shipped import (  # noqa: F401  (r495: its own module; re-exported)
     patched_barycentric,
     shipped_barycentric,
 )
-from .exercise import Exercise, Mistake, PackageAnswer
+from .case_verdicts import CaseVerdicts
+from .exercise import Exercise, PackageAnswer
 from .package_answers import CHECKER_WORDS
 from .running import WrongAnswerType
 from .scalars import num, tri_words, vec
@@ -209,17 +210,8 @@ def _at_v3_words(case) -> str:
             f"off by {off:.2g}, within the check's {TOL:g}; move p further from v3")  # fmt: skip
 
 
-_VERDICTS: dict = {}
-
-
-def verdict(defect: str, case) -> tuple[str, str] | None:
-    """:func:`_verdict_of`, remembered for the check's few answers."""
-    key = (defect, case[0].tobytes(), case[1].tobytes())
-    if key not in _VERDICTS:
-        if len(_VERDICTS) > 256:
-            _VERDICTS.clear()
-        _VERDICTS[key] = _verdict_of(defect, case)
-    return _VERDICTS[key]
+#: :func:`_verdict_of`, remembered for the check's few answers (one place: case_verdicts).
+verdict = CaseVerdicts(_verdict_of, key=lambda case: (case[0].tobytes(), case[1].tobytes()))
 
 
 #: The kinds of a wrong case, most specific first.
@@ -228,21 +220,9 @@ KINDS = ("out of range", "zero area", "catalogue", "thin", "the other defect's",
          "area right", "also needs")  # fmt: skip
 
 
-def _mistake(kind: str) -> Mistake:
-    def fits(args, expected, got) -> bool:
-        found = verdict(args[0], got)
-        return found is not None and found[0] == kind
-
-    return Mistake(kind, lambda args, expected, got: verdict(args[0], got)[1], fits=fits)
-
-
 def cases() -> list[tuple[str, tuple, str]]:
     """One case per defect; the expected answer is the defect's name (any case of it is right)."""
     return [(f"the defect '{d}'", (d,), d) for d in DEFECTS]
-
-
-def _same(got, expected, args) -> bool:
-    return verdict(args[0], got) is None
 
 
 def _explain(args, expected, got) -> str:
@@ -282,8 +262,8 @@ def draw_case(ax, case, got):
 
 
 DEFECT_CASE = Exercise(
-    "defect_case", cases, as_case, _same, _explain, _rule,
-    [_mistake(kind) for kind in KINDS], draw=draw_case, compose=_compose,
+    "defect_case", cases, as_case, verdict.same, _explain, _rule,
+    verdict.mistakes(KINDS), draw=draw_case, compose=_compose,
     reference=("teachraster.exercises.interpolation",),
     # r495 W2: a search through the checker's judge (``verdict``, ``breaks``) passed uncounted:
     # the window that watches the checker's modules opens for an exercise with answers

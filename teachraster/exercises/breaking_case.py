@@ -30,7 +30,8 @@ from ..core.snapping import snap
 from ..core.validate import as_finite, as_int, as_size
 from ..study.hardcases import naive_coverage
 from .answers import refuse_non_answers, short
-from .exercise import Exercise, Mistake, PackageAnswer
+from .case_verdicts import CaseVerdicts
+from .exercise import Exercise, PackageAnswer
 from .hard_case_fill import (
     FILL_LABELS,
     MOST_ACROSS,
@@ -469,17 +470,8 @@ def _verdict_of(repair: str, case) -> tuple[str, str] | None:
     return None
 
 
-_VERDICTS: dict = {}
-
-
-def verdict(repair: str, case) -> tuple[str, str] | None:
-    """:func:`_verdict_of`, remembered for the check's few answers."""
-    key = (repair, case[0].tobytes(), *case[1:])
-    if key not in _VERDICTS:
-        if len(_VERDICTS) > 256:
-            _VERDICTS.clear()
-        _VERDICTS[key] = _verdict_of(repair, case)
-    return _VERDICTS[key]
+#: :func:`_verdict_of`, remembered for the check's few answers (one place: case_verdicts).
+verdict = CaseVerdicts(_verdict_of, key=lambda case: (case[0].tobytes(), *case[1:]))
 
 
 #: The kinds of a wrong case, most specific first.
@@ -490,22 +482,10 @@ KINDS = ("degenerate", "out of range", "catalogue", "outside the bounds", "origi
          "also needs")  # fmt: skip
 
 
-def _mistake(kind: str) -> Mistake:
-    def fits(args, expected, got) -> bool:
-        found = verdict(args[0], got)
-        return found is not None and found[0] == kind
-
-    return Mistake(kind, lambda args, expected, got: verdict(args[0], got)[1], fits=fits)
-
-
 def cases() -> list[tuple[str, tuple, str]]:
     """One case per repair; the expected answer is the repair's name (any breaking case of
     it is right, so none is quoted)."""
     return [(f"the repair '{r}'", (r,), r) for r in REPAIRS]
-
-
-def _same(got, expected, args) -> bool:
-    return verdict(args[0], got) is None
 
 
 def _explain(args, expected, got) -> str:
@@ -566,7 +546,7 @@ SEARCH_ANSWERS = tuple(PackageAnswer(f, words=SEARCH_WORDS, label=FILL_LABELS.ge
                        for f in PACKAGE_FILLS)  # fmt: skip
 
 BREAKING_CASE = Exercise(
-    "breaking_case", cases, as_case, _same, _explain, _rule,
-    [_mistake(kind) for kind in KINDS], draw=draw_case, compose=_compose, constant=_constant,
+    "breaking_case", cases, as_case, verdict.same, _explain, _rule,
+    verdict.mistakes(KINDS), draw=draw_case, compose=_compose, constant=_constant,
     reference=("teachraster.exercises.hard_case_fill",), answers=SEARCH_ANSWERS,
 )  # fmt: skip
