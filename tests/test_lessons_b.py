@@ -633,7 +633,7 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     assert "costs at least as much as the exact divide when" in front
     assert "costs more than it" not in front
     # r378 S2: the tie's 10 cycles each are printed ("at d = 3 both cost 10"), not retold
-    assert "only when $d \\le 3$: at $k = 2$ the front keeps its order" in front
+    assert "only when $d \\le 3$: the front keeps its order" in front  # r512: k = 2 said once
     price = next(c for c in cells if "q_price = PredictOrder(" in c)
     ask, why = price.split("explain=")
     assert "where N = 2" not in ask and "the point is" not in ask
@@ -787,10 +787,9 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     # r378 S2: the lines' ends and the prices where N = 2 is back are printed, not retold
     # r479 S4: off at every divide up to 3, the folded lines' 1 and 2 among them (the widget
     # also stops at 1.5 and 3)
-    assert (
-        'off it at every divide up to 3 (of the folded lines "divide = ..." above, at $d = 1$'
-        " and $d = 2$)" in text
-    )
+    # r512 S3: the d of the folded lines where it is off, as printed (off == [1, 2] above)
+    said = " and ".join(f"$d = {d}$" for d in off)
+    assert f'off it at {said} of the folded lines "divide = ..."' in text
     assert "on it again at" not in text and "the slider stops either side" not in text
     # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
     assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
