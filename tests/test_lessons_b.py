@@ -127,8 +127,17 @@ def test_06_review_r238_the_law_the_floor_follows():
     assert all(1.1 < v < 1.9 for v in ns.cut_worst.values())  # the worst pixel's: less
     text = " ".join(ns.QUAKE_TEXT.split())
     assert "close to the quadratic law" not in text
+    # r512 S2: the cuts are the line printed above the text (cell 9), not retyped in it
+    from notebook_runs import executed
+
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
+    span = {k: f"{min(v):.1f} to {max(v):.1f}" for k, v in (("mean", ns.mean_px_cut),
+            ("worst", ns.px_cut), ("mean2", ns.cut_mean.values()), ("worst2", ns.cut_worst.values()))}  # fmt: skip
+    assert (f"halving N cuts the mean {span['mean']}x, the worst {span['worst']}x;\n  doubling the "
+            f"pixels across, the mean {span['mean2']}x, the worst {span['worst2']}x") in printed  # fmt: skip
+    assert max(ns.cut_worst.values()) < min(ns.cut_mean.values())  # "the worst ... more slowly"
     for cut in (ns.mean_px_cut, ns.px_cut, ns.cut_mean.values(), ns.cut_worst.values()):
-        assert f"{min(cut):.1f} to {max(cut):.1f} times" in text, cut
+        assert f"{min(cut):.1f} to {max(cut):.1f} times" not in text, cut
     assert (
         "the mean error goes like $N^2$ divided by the pixels across, and the worst pixel's "
         "more slowly, in $N$ and in the pixels across alike"
@@ -239,7 +248,8 @@ def test_06_review_r60_figures_say_what_they_draw():
     nb = json.loads((ROOT / "notebooks" / "06_what_accuracy_costs.ipynb").read_text())
     md = " ".join(" ".join("".join(c["source"]) for c in nb["cells"]
                            if c["cell_type"] == "markdown").split())  # fmt: skip
-    assert "What a GPU pays today" not in md and "Maxwell (2014)" in md and "Kepler (2012)" in md
+    # r512 S1: the generations and years are printed (cell 3), not retold in prose
+    assert "What a GPU pays today" not in md and "Kepler (2012)" not in md
     # r80 D2: Pascal to Turing added from the guide's table (CUDA 10 edition); r238 S3: 8.x and
     # 9.0 from the CUDA 12 edition's, the reciprocal at an eighth from 8.6 on (the price list's)
     from teachraster.study.operation_counts import NVIDIA_RATES
@@ -251,9 +261,16 @@ def test_06_review_r60_figures_say_what_they_draw():
                                   "Hopper (9.0, 2022)"]  # fmt: skip
     rates = [fma / rcp for fma, rcp in NVIDIA_RATES.values()]
     assert rates == [6, 4, 4, 4, 4, 4, 8, 8, 8]
-    assert "Pascal (2016), Volta and Turing (2017–18) and the A100 (2020)" in md
-    assert "an eighth on Ampere's GA10x (2020), Ada and Hopper (2022)" in md
-    assert "§1's GPU list is that eighth" in md and "not quoted here" not in md
+    # r512 S1: the prose states the rates once (§1), true to the table: an eighth on the
+    # generations the GPU list is priced for, a quarter from the first to the last of the 4s
+    assert md.count("an eighth") == 1 and "a sixth" not in md and "not quoted here" not in md
+    eighth = [g.split(" (")[0].removeprefix("Ampere ") for g, (f, r) in NVIDIA_RATES.items()
+              if f / r == 8]  # fmt: skip
+    quarter = [g.split(" (")[0] for g, (f, r) in NVIDIA_RATES.items() if f / r == 4]
+    assert (
+        f"at an eighth of it on {', '.join(eighth[:-1])} and {eighth[-1]} (a quarter from "
+        f"{quarter[0]} to the {quarter[-1].removeprefix('Ampere ')})"
+    ) in md
     # r102 06-2: the checkerboard's vermillion marks have a key in the figure itself
     checker = next(
         "".join(c["source"]) for c in nb["cells"] if "def draw_checks(" in "".join(c["source"])
@@ -558,7 +575,12 @@ def test_06_divide_cost_slider_reprices_the_front():
     md = "".join(line for c in nb["cells"] if c["cell_type"] == "markdown" for line in c["source"])
     # review r56: the closed forms answer q_price (an order at d = 1), so they are held text now
     held = ns.FRONT_TEXT
-    assert "$d + 7$" in held and "$2 + (d + 13)/N$" in held and "$d \\le 3$" in held
+    # r512 S3: the closed forms are cell 42's first printed lines, read there, not retyped
+    assert "$d \\le 3$" in held and "$d + 7$" not in held and "the first lines above" in held
+    from notebook_runs import executed
+
+    printed = printed_and_folded(executed("06_what_accuracy_costs").notebook())
+    assert "perspective-correct d + 7, subdivided by N 2 + (d + 13)/N" in printed
     assert "$d \\le 3$" not in md and "FRONT_TEXT = (" in next(
         "".join(c["source"])
         for c in nb["cells"]
@@ -611,7 +633,7 @@ def test_06_review_r132_checkerboard_held_tie_and_d3():
     assert "costs at least as much as the exact divide when" in front
     assert "costs more than it" not in front
     # r378 S2: the tie's 10 cycles each are printed ("at d = 3 both cost 10"), not retold
-    assert "only when $d \\le 3$: at $k = 2$ the front keeps its order" in front
+    assert "only when $d \\le 3$: the front keeps its order" in front  # r512: k = 2 said once
     price = next(c for c in cells if "q_price = PredictOrder(" in c)
     ask, why = price.split("explain=")
     assert "where N = 2" not in ask and "the point is" not in ask
@@ -648,7 +670,9 @@ def test_06_review_r128_q_quake_held_and_wording():
         and "display(Markdown(QUAKE_TEXT))" in cells[at]
     )
     assert nb["cells"][at]["metadata"]["jupyter"]["source_hidden"]
-    assert "many times the mean at every $N$" in ns.QUAKE_TEXT and "mean only" in ns.QUAKE_TEXT
+    # r512 S2: "under a texel is true of the mean only" is q_quake's explanation's, not retold
+    assert "many times the mean at every $N$" in ns.QUAKE_TEXT
+    assert all(ns.max_over_mean[n] > 10 for n in ns.max_over_mean)  # the claim, as measured
     for words in ("mean only", "tell different stories", "many times the mean",
                   "a pixel or more", "under a texel on average"):  # fmt: skip
         assert words not in md, words
@@ -763,10 +787,9 @@ def test_06_review_r118_the_front_keeps_its_order_and_loses_only_n2():
     # r378 S2: the lines' ends and the prices where N = 2 is back are printed, not retold
     # r479 S4: off at every divide up to 3, the folded lines' 1 and 2 among them (the widget
     # also stops at 1.5 and 3)
-    assert (
-        'off it at every divide up to 3 (of the folded lines "divide = ..." above, at $d = 1$'
-        " and $d = 2$)" in text
-    )
+    # r512 S3: the d of the folded lines where it is off, as printed (off == [1, 2] above)
+    said = " and ".join(f"$d = {d}$" for d in off)
+    assert f'off it at {said} of the folded lines "divide = ..."' in text
     assert "on it again at" not in text and "the slider stops either side" not in text
     # 06-7: the set-up counts u/w and v/w at the vertices (6 multiplies), and says so
     assert ns.setup_ops["multiplies"] == 6 + 3 * 4 + 6 and "set-up per triangle (u/w" in printed
@@ -1069,7 +1092,7 @@ def test_06_review_r37_a_prediction_in_every_section():
     assert rule_at > asked_at("q_rule") + 1
     assert "tie rule" not in cells[asked_at("q_rule") - 1]
     # the answer text of q_depth is a held Markdown cell, its source collapsed
-    (held,) = [c for c in nb["cells"] if "`linear float32` gets" in "".join(c["source"])]
+    (held,) = [c for c in nb["cells"] if "`linear unorm16`'s step, " in "".join(c["source"])]
     assert "get exactly the same pixels wrong" in "".join(held["source"])
     assert _code("".join(held["source"])).startswith("q_depth.hold()")
     assert held["metadata"]["jupyter"]["source_hidden"]
@@ -1089,7 +1112,7 @@ def test_06_review_r197_unorm16_read_attribute_bits_folded_code_and_about_as_man
     lossy = [f for f in ("float64", "float32", "unorm24", "unorm16")
              if rows[("depth", f"linear {f}")]["facing_wrong"] > 0]  # fmt: skip
     assert lossy == ["unorm16"] and ns.linear_step16 > 0.01
-    held = next(c for c in cells if "`linear float32` gets" in c)
+    held = next(c for c in cells if "`linear unorm16`'s step, " in c and "Markdown(" in c)
     assert "`linear unorm16`'s step, " in held and "the only linear format that loses any" in held
     md = " ".join(" ".join(c for c, raw in zip(cells, nb["cells"])
                            if raw["cell_type"] == "markdown").split())  # fmt: skip
@@ -5236,12 +5259,12 @@ def test_06_review_r243_c1_one_statement_of_the_reciprocals_price():
     assert "  1/8: Ampere GA10x (2020), Ada (2022), Hopper (2022)" in printed
     assert "the reciprocal at 1/4 of the rate" not in printed
     assert "Maxwell to Turing" not in md and "On a current GPU a reciprocal" not in md
-    for said in ("reciprocal at an eighth of it on GA10x, Ada and Hopper (a quarter from Maxwell "
-                 "to the A100", "On GA10x, Ada and Hopper a reciprocal runs on a special-function "
-                 "unit at an eighth of the multiply-add rate (a quarter from Maxwell to the A100",
-                 "a quarter on Maxwell (2014), Pascal (2016), Volta and Turing (2017–18) and the "
-                 "A100 (2020), and an eighth on Ampere's GA10x (2020), Ada and Hopper (2022)"):  # fmt: skip
-        assert said in md, said
+    # r512 S1: stated once (§1), the slider's section and "What a GPU pays" point to it
+    said = (
+        "reciprocal at an eighth of it on GA10x, Ada and Hopper (a quarter from Maxwell to the A100"
+    )
+    assert said in md and md.count("a quarter from Maxwell") == 1
+    assert "at the rates §1 prints by generation" in md
 
 
 def test_06_review_r243_fig1_explorer_readouts_k_and_the_cheap_end_labelled():
