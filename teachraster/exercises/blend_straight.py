@@ -193,6 +193,7 @@ DARK_AS_NOTHING = Mistake(
         "not the light"
     ),
     fits=_dark_as_nothing,
+    only_whole=True,  # an answer rounded to whole numbers gives (0, 0, 0, 0) there too
 )
 
 
