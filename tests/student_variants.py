@@ -14098,3 +14098,72 @@ R507_DIFFERENT = {
     'clip near c3 w from z (r507)': ('clip_near', _r456('clip_near', _R507_C_N_C3_W_FROM_Z)),
 }  # fmt: skip
 DIFFERENT.update(R507_DIFFERENT)
+
+
+# == r513: exercise 09's wrong pass (a guard on the light) and misnamed / half-named slips ==
+def _r513_over_light_guard(src, dst):
+    """W1: (0, 0, 0, 0) wherever no light reaches you, tested on the light, not the alpha."""
+    s, d = np.asarray(src, float), np.asarray(dst, float)
+    a = s[3] + d[3] * (1 - s[3])
+    light = s[:3] * s[3] + d[:3] * d[3] * (1 - s[3])
+    return np.zeros(4) if not light.any() else np.r_[light / a, a]
+
+
+def _r513_front_skip_first(layers):
+    """M1: the first (nearest) layer left out, then a right loop."""
+    it = iter(layers)
+    next(it, None)
+    return _r445_front_stop(1.0)(it)
+
+
+def _r513_front_strict(layers):
+    """H3: the stop tested as A > 1, which never fires."""
+    acc = np.zeros(4)
+    for c in layers:
+        acc = acc + (1 - acc[3]) * np.asarray(c, dtype=float)
+        if acc[3] > 1:
+            break
+    return acc
+
+
+def _r513_line_zero_length(p0, p1):
+    """M2: a zero-length segment special-cased to light the pixel it lies in."""
+    if tuple(p0) == tuple(p1):
+        return [(int(np.floor(p0[1])), int(np.floor(p0[0])))]
+    return _r445_line_float(2.0**-20, 2.0**-40)(p0, p1)
+
+
+def _r513_line_slabs_apart_wide(p0, p1, e=1e-6):
+    """R1: r483 H1's slabs tested apart, searched one pixel past the image's edges (it lit
+    pixels outside the image too, and got the rule's words)."""
+    ax, ay, bx, by = p0[0] - e, p0[1] - e * e, p1[0] - e, p1[1] - e * e
+    cy, cx = np.mgrid[-1:13, -1:13] + 0.5
+    ok = np.abs(bx - cx) + np.abs(by - cy) >= 0.5
+    for s in (1, -1):
+        u0, u1 = (ax - cx) + s * (ay - cy), (bx - cx) + s * (by - cy)
+        if u1.flat[0] == u0.flat[0]:
+            ok &= np.abs(u0) < 0.5
+            continue
+        t1, t2 = (-0.5 - u0) / (u1 - u0), (0.5 - u0) / (u1 - u0)
+        ok &= np.maximum(np.minimum(t1, t2), 0) < np.minimum(np.maximum(t1, t2), 1)
+    return [(int(r) - 1, int(c) - 1) for r, c in zip(*np.nonzero(ok))]
+
+
+R513 = {
+    "over straight guarded on the light, not the alpha (r513 W1)": (
+        "over_straight", _r513_over_light_guard, "test the alpha, not the light",
+        "no light as nothing"),
+    "front to back skipping the nearest layer (r513 M1)": (
+        "front_to_back", _r513_front_skip_first, "you left out the first layer",
+        "nearest skipped"),
+    "front to back stopping on A > 1 (r513 H3)": (
+        "front_to_back", _r513_front_strict, "a test A > 1 never fires",
+        "read behind the opaque layer"),
+    "line lighting a zero-length segment's pixel (r513 M2)": (
+        "line_pixels", _r513_line_zero_length, "a segment of zero length", "zero length lit"),
+    "line with the slabs tested apart, searched past the image (r513 R1)": (
+        "line_pixels", _r513_line_slabs_apart_wide, "you tested the two slabs of the diamond apart",
+        "slabs apart"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R513.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R513.items()})

@@ -28,7 +28,7 @@ from .blend_mistakes import (
     scaled,
 )
 from .exercise import Mistake
-from .scalars import vec
+from .scalars import num, vec
 from .tolerance import all_close
 
 
@@ -174,6 +174,27 @@ FAINT_STRAIGHT = Mistake(
     "faint as nothing", faint_words("the division in step 4 has an answer wherever α is "
                                      "above 0"),
     fits=_faint_as_nothing, only_whole=True)  # fmt: skip
+
+
+def _dark_as_nothing(args, expected, got) -> bool:
+    """(0, 0, 0, 0) where no light reaches you but something covers the pixel (r513 W1: a
+    guard ``not light.any()`` passed)."""
+    g = np.asarray(got, float).ravel()
+    return g.shape == (4,) and not g.any() and expected[3] > 0 and not np.any(expected[:3])
+
+
+#: r513 W1: before "faint as nothing", whose words say the alpha is faint
+DARK_AS_NOTHING = Mistake(
+    "no light as nothing",
+    lambda a, e, g: (
+        f"you returned (0, 0, 0, 0) where no light reaches you (black over black or over "
+        f"nothing), but the result's alpha here is {num(float(e[3]), 0.0)}: black covers the "
+        "pixel, it is not empty. (0, 0, 0, 0) is the answer only where α = 0: test the alpha, "
+        "not the light"
+    ),
+    fits=_dark_as_nothing,
+    only_whole=True,  # an answer rounded to whole numbers gives (0, 0, 0, 0) there too
+)
 
 
 def _where_nothing(which: int):
@@ -446,7 +467,7 @@ def straight_mistakes() -> list[Mistake]:
     swapped = Mistake("weights swapped", _swapped_words, fits=_swapped_any_alpha,
                       only_whole=True)  # fmt: skip
     nothing = [DST_WHERE_NOTHING, SRC_WHERE_NOTHING]  # before the swap, which gives src there
-    return [UNINITIALISED, nan, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, BY_DESTINATION_ALPHA,
+    return [UNINITIALISED, nan, DARK_AS_NOTHING, FAINT_STRAIGHT, *nothing, *table, CHANNEL_ORDER, swapped, BY_DESTINATION_ALPHA,
             *_divided_by_wrong_alpha(), *UNHIDDEN,
             *alpha_mistakes(straight_over, STRAIGHT_ALPHAS)]  # fmt: skip
 

@@ -87,6 +87,8 @@ def blend_cases(mode: str) -> list[tuple[str, tuple, np.ndarray]]:
         pairs.append(("faint over faint", [0.2, 0.9, 0.4, 0.003], [0.8, 0.1, 0.6, 0.002]))
     if mode == "straight":  # r445 W2: a guard "α < 1e-3 → (0, 0, 0, 0)" passed
         pairs.append(("very faint blue over transparent black", [0, 0, 1, 1e-5], [0, 0, 0, 0]))
+        # r513 W1: a guard on the light (no light → (0, 0, 0, 0)) passed: black still covers
+        pairs.append(("half black over transparent black", [0, 0, 0, 0.5], [0, 0, 0, 0]))
     if mode == "atop":  # r22 D-1: a guard "α_d < 0.01 → (0, 0, 0, 0)" passed 55 of 60 runs
         pairs.append(("half red over faint blue", [1, 0, 0, 0.5], [0, 0, 1, 0.004]))
         pairs.append(("faint green over half grey", [0, 1, 0, 0.004], [0.5, 0.5, 0.5, 0.5]))

@@ -305,9 +305,9 @@ def _variants(layers: np.ndarray) -> dict[str, np.ndarray]:
 
 
 def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
-    def loop(step, before_opaque=False):
+    def loop(step, before_opaque=False, skip=0):
         acc = CLEAR.copy()
-        for layer in layers:
+        for layer in layers[skip:]:
             if before_opaque and layer[3] >= 1:  # r9 F7: the opaque layer itself left out
                 break
             acc = step(acc, layer)
@@ -349,6 +349,7 @@ def _loops(layers: np.ndarray, stops: bool) -> dict[str, np.ndarray]:
         "alpha max": loop(lambda acc, c: np.r_[under(acc, c)[:3], max(acc[3], c[3])]),
         "returned straight": _straight(loop(under)),
         **({"before the opaque layer": loop(under, before_opaque=True)} if stops else {}),
+        "nearest skipped": loop(under, skip=1),  # r513 M1: got the rule restated
     }  # fmt: skip
 
 
@@ -397,7 +398,8 @@ def _read_past_words(args, expected, got) -> str:
             "nearest first, stop there, as a ray marcher does")  # fmt: skip
     if got.read == len(layers):
         return head + (". A loop that runs from the farthest layer (the layers reversed) must "
-                       "read them all first, and so must one that never stops, or one that "
+                       "read them all first, and so must one that never stops (a test A > 1 "
+                       "never fires: the alpha reaches 1, no more; test A >= 1), or one that "
                        "copies them first (list(layers) or np.array(layers) reads every layer); "
                        "one that stops may fetch one layer past the opaque one, no more")  # fmt: skip
     # r18 D-8: a loop that stopped, but late, was told it ran from the farthest layer
@@ -580,6 +582,9 @@ MISTAKES = {
     "before the opaque layer": "you stopped before adding the opaque layer: the opaque layer "
     "itself is missing from your composite; add it (weighted by the transmittance 1 − A), then "
     "stop",
+    "nearest skipped": "you left out the first layer, the nearest: your composite is that of "
+    "the layers behind it alone; nothing lies in front of the nearest layer, so it counts "
+    "whole (the transmittance before it is 1), and the layers behind show through it",
 }
 
 

@@ -600,8 +600,9 @@ def _slabs_apart(p0, p1) -> frozenset:
     """r483 H1: the pixels whose u slab and v slab the moved segment each meets, at any t
     (not at a shared one), p1's diamond dark."""
     ax, ay, bx, by = p0[0] - EPS, p0[1] - EPS * EPS, p1[0] - EPS, p1[1] - EPS * EPS
-    cy, cx = np.mgrid[0:WINDOW, 0:WINDOW] + 0.5
-    ok = np.ones((WINDOW, WINDOW), bool)
+    # r513 R1: one pixel beyond the image too (a search past its edge lights some there)
+    cy, cx = np.mgrid[-1 : WINDOW + 1, -1 : WINDOW + 1] + 0.5
+    ok = np.ones(cx.shape, bool)
     for s in (1, -1):
         u0, u1 = (ax - cx) + s * (ay - cy), (bx - cx) + s * (by - cy)
         d = u1 - u0
@@ -611,7 +612,7 @@ def _slabs_apart(p0, p1) -> frozenset:
         t1, t2 = (-0.5 - u0) / d, (0.5 - u0) / d
         ok &= np.maximum(np.minimum(t1, t2), 0) < np.minimum(np.maximum(t1, t2), 1)
     ok &= np.abs(bx - cx) + np.abs(by - cy) >= 0.5
-    return frozenset((int(r), int(c)) for r, c in zip(*np.nonzero(ok)))
+    return frozenset((int(r) - 1, int(c) - 1) for r, c in zip(*np.nonzero(ok)))
 
 
 def _slabs_apart_fits(args, expected, got) -> bool:
@@ -737,6 +738,15 @@ LINE_MISTAKES = [
         "you rounded the line at each column (or row) centre, a DDA; the rule lights the "
         "pixels whose diamond |x − (col + ½)| + |y − (row + ½)| < ½ the segment exits",
         gives=dda_pixels,
+    ),
+    Mistake(  # r513 M2: a zero-length special case was told "you walked the pixel squares"
+        "zero length lit",
+        "a segment of zero length (p0 = p1) never leaves the diamond p1 lies in, so the rule "
+        "lights nothing: it needs no special case (the next segment of a polyline lights that "
+        "pixel)",
+        gives=lambda p0, p1: (
+            frozenset({_pixel_of(p0)}) if tuple(p0) == tuple(p1) else _expected_pixels(p0, p1)
+        ),
     ),
     # last: the rule's slips and the walks above light pixels on the squares' path too
     Mistake("pixel squares", _by_squares_words, fits=_by_squares, only_whole=True),
