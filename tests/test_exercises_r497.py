@@ -87,7 +87,9 @@ KINDS = {
     "w26_float32_lambda_weights_t_half": "levels weighed wrong",
     "w27_weight_list_keys_level_last": "keys (row, col, level)",
     "w28_repeat_only_u": "rows clamped under repeat",
-    "x01_quarter_texel": "along u: origin -0.25",  # r509: named, no longer the symptom
+    # r509: named, no longer the symptom; the offset is on both axes, and which one the report
+    # names first depends on the drawn cases (both are named: "... and along u, ...")
+    "x01_quarter_texel": ("along u: origin -0.25", "along v: origin -0.25"),
     "x02_u_weights_swapped": "u's weights swapped",
     "x06_u_flipped": "u flipped",
     "x07_lod_plus_half": "levels weighed wrong",
@@ -122,7 +124,8 @@ def _first(label):
 @pytest.mark.parametrize("label", list(KINDS))
 def test_each_slip_is_named_first(label):
     first = _first(label)
-    assert first.kind == KINDS[label], (first.kind, first.explanation)
+    kinds = KINDS[label] if isinstance(KINDS[label], tuple) else (KINDS[label],)
+    assert first.kind in kinds, (first.kind, first.explanation)
     assert "Work this case through by hand" not in first.explanation
     assert "float16" not in first.explanation or "float16" in label
 
