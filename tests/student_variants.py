@@ -8548,7 +8548,7 @@ R425 = {
         "window depth z_win (far depths near 1, where float32's step", "5.2's slip"),
     "reverse-Z worst, the right answer with a 0.5 % margin": (
         "reverse_z_worst", lambda a, b, n, f: 1.005 * _rs.reverse_z_worst(a, b, n, f),
-        "Did you round it up, or add a margin?", "over the coarsest"),
+        "a margin added?", "margin"),  # r514: the factor said (MARGIN), was the symptom
     "reverse-Z gap with f for n in the slope (r425 rg_W10)": (
         "reverse_z_gap", lambda z, n, f: float(np.spacing(np.float32(
             (n / z - n / f) / (1 - n / f)))) * (1 - n / f) * z * z / f,
@@ -14167,3 +14167,76 @@ R513 = {
 }  # fmt: skip
 WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R513.items()})
 KINDS.update({label: kind for label, (_, _, _, kind) in R513.items()})
+
+
+# == r514: exercise 05 (a verifying reader after r458): two thresholds in 5.4 that passed, the
+# room rounded as one difference in 5.3, and 5.2b's slope without 1 − n/f told "a margin" =======
+def _r514_setup(unorm_slack=1.0, reverse_share=1.0, bits=24, no_far=False):
+    """5.4 with unorm24 taken where 5.1's n ≤ slack · nearest, reverse-Z where its Δz is under
+    share · gap, unorm24 as ``bits`` bits, or its Δz as step z²/n (r514 P1, P2, H)."""
+
+    def depth_setup(z, gap, far, nearest):
+        if _rs.safe_near(z, gap, far, bits) <= nearest * unorm_slack:
+            step = 1 / (2**bits - 1)
+            keep = 1.0 if no_far else (far - nearest) / far
+            return "unorm24", nearest, step * keep * z**2 / nearest
+        dz = _rs.reverse_z_gap(z, nearest, far)
+        return ("reverse-z" if dz < reverse_share * gap else "neither"), nearest, dz
+
+    return depth_setup
+
+
+def _r514_bias_rounded_difference(z, tilt, pixel, near, far, bits, reverse, clear):
+    """5.3 with the room rounded to whole steps as one difference (r514 P3, db_Y8)."""
+    r = 1 / (2**bits - 1)
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    room = far * near / (far - near) * (1 / (z - clear) - 1 / z)
+    if r + m > round(room * (2**bits - 1)) * r - m:
+        return math.nan
+    return (r + m) if reverse else -(r + m)
+
+
+def _r514_worst_no_far(z_min, z_max, near, far):
+    """5.2b's closed form over the slope n/z², 1 − n/f left out (r514 M1, w_Y6)."""
+    return _rs.reverse_z_worst(z_min, z_max, near, far) / (1 - near / far)
+
+
+R514 = {
+    "depth setup, reverse-Z only under half the gap (r514 ds_Y7)": (
+        "depth_setup", _r514_setup(reverse_share=0.5), "within the gap 2.17e-05",
+        "neither, reverse-Z does"),
+    "depth setup, unorm24 with 1 % slack on 5.1's near plane (r514 ds_Y11)": (
+        "depth_setup", _r514_setup(unorm_slack=1.01), "It needs n ≥ 1.006, beyond `nearest`",
+        "unorm24 too coarse"),
+    "depth setup, unorm24 as 32 bits (r514 ds_Y1)": (
+        "depth_setup", _r514_setup(bits=32), "you took unorm24 as 32 bits", "32 bits"),
+    "depth setup, unorm24's Δz without (f − n)/f (r514 ds_Y8)": (
+        "depth_setup", _r514_setup(no_far=True), "the far plane's factor (f − n)/f left out",
+        "unorm24 Δz without the far plane"),
+    "decal bias, the room rounded to whole steps as one difference (r514 db_Y8)": (
+        "decal_bias", _r514_bias_rounded_difference, "your room is rounded to whole steps",
+        "rounded difference"),
+    "reverse-Z worst over the slope n/z² (r514 w_Y6)": (
+        "reverse_z_worst", _r514_worst_no_far, "yours is f/(f − n) times the coarsest",
+        "slope without 1 - n/f"),
+    "reverse-Z worst with a margin of 1e-6 (r458 w_X6, r514)": (
+        "reverse_z_worst", lambda *a: _rs.reverse_z_worst(*a) * 1.000001,
+        "a margin added?", "margin"),
+}  # fmt: skip
+WRONG.update({label: (name, fn, words) for label, (name, fn, words, _) in R514.items()})
+KINDS.update({label: kind for label, (_, _, _, kind) in R514.items()})
+DIFFERENT.update({
+    "decal bias, the largest offset the object allows (r514 db_D3)": (
+        "decal_bias", lambda *a: (lambda o: o if math.isnan(o) else math.copysign(
+            _r514_room(*a), o))(_rs.decal_bias(*a))),
+    "depth setup, reverse-Z at nearest / 7 (r514 ds_D1)": (
+        "depth_setup", lambda z, gap, far, nearest: (lambda a: a if a[0] == "unorm24" else (
+            a[0], nearest / 7, _rs.reverse_z_gap(z, nearest / 7, far)))(
+            _rs.depth_setup(z, gap, far, nearest))),
+})  # fmt: skip
+
+
+def _r514_room(z, tilt, pixel, near, far, bits, reverse, clear):
+    """|o| at its largest: the room the object leaves less m (r514 db_D3)."""
+    m = far * near / (far - near) * math.tan(math.radians(tilt)) / z * pixel
+    return far * near / (far - near) * (1 / (z - clear) - 1 / z) - m

@@ -102,6 +102,10 @@ ROUNDED = (
     ((20.0, 65.0, 6.01e-4, 0.1, 1000.0, 16, False), 0.082),
     ((21.0, 55.0, 6.01e-4, 0.1, 1000.0, 16, True), 0.13),
 )
+#: (setting, clear), r514 P3: room − m 2 % under r + m (NaN), where the room rounded as one
+#: difference to whole steps, round(room · (2^bits − 1)) r, lies 37 % over it (an offset:
+#: the decal shows through the object), and each depth rounded (:data:`ROUNDED`) says NaN.
+ROUNDED_DIFFERENCE = (((21.0, 55.0, 6.01e-4, 0.1, 1000.0, 16, True), 0.101),)
 #: A setting with z² < n, where window depth changes faster than view depth (room > clear),
 #: and no offset fits: a test against `clear` itself, a view distance, says NaN there, as it
 #: should, where code with no test of the room returns r + m (r381 F2: the two told apart).
@@ -186,7 +190,8 @@ def _fixed_cases():
             + [_case(s, share=share) for s, share in FIT]
             + [_case(s, clear=clear) for s, clear in ROUNDED]
             + [_case(s, share=TIGHT_SHARE) for s in STEEP]
-            + [_case(s, share=share or ROOM + 1, clear=clear) for s, share, clear in FIRST_ORDER])  # fmt: skip
+            + [_case(s, share=share or ROOM + 1, clear=clear) for s, share, clear in FIRST_ORDER]
+            + [_case(s, clear=clear) for s, clear in ROUNDED_DIFFERENCE])  # fmt: skip
 
 
 def bias_cases():
@@ -259,6 +264,10 @@ def _variants(z, tilt, pixel, near, far, bits, reverse, clear) -> dict[str, floa
         # r381 F1: room measured between the depths rounded to the buffer (:data:`ROUNDED`)
         "rounded room": math.nan
         if r + m > _rounded(z, near, far, bits, clear) - m
+        else sign * (r + m),
+        # r514 P3: the room rounded to whole steps as one difference
+        "rounded difference": math.nan
+        if r + m > round(space * (2**bits - 1)) / (2**bits - 1) - m
         else sign * (r + m),
         "behind": math.nan if r + m > behind - m else sign * (r + m),
         "first order": math.nan if r + m > first - m else sign * (r + m),
@@ -407,6 +416,13 @@ MISTAKES = {
         "whose unrounded depth is no nearer than the object's rounds to no nearer a value, and "
         "a tie keeps the object. So compare the unrounded depths (the rounding is what r pays "
         "for)"
+    ),
+    "rounded difference": lambda a, e, g: (
+        ": your room is rounded to whole steps, "
+        f"{num(round(room(a[0], a[3], a[4], a[7]) * (2 ** a[5] - 1)) / (2 ** a[5] - 1))} here, "
+        f"where the unrounded window depths leave {num(room(a[0], a[3], a[4], a[7]))}. The "
+        "task measures the room between unrounded window depths (the rounding is what r pays "
+        "for): compare them as they are"
     ),
     "behind": ": you placed the object behind the wall (z + clear): it is in front, at "
     "z − clear, so room = z_win(z) − z_win(z − clear)",

@@ -23,7 +23,8 @@ chosen buffer resolves at z with *that* near plane (unorm24: one step over the s
 1 %; float32 reverse-Z: 5.2's accepted band; "neither": reverse-Z's, the better of the two,
 which still falls short). The reference (:func:`expected_setup`) is the package's:
 :func:`.near_plane.expected_near` and :func:`.reverse_z.expected_gap`. The cases lie clear of
-the borders (the smallest unorm24 near plane at most 0.8 or at least 1.25 times ``nearest``;
+the borders (the smallest unorm24 near plane at most 0.8 or at least 1.25 times ``nearest``,
+or every near plane 5.1's check accepts beyond ``nearest``;
 the gap at least 1.3 times reverse-Z's coarsest Δz, or below 0.7 of its finest), so every
 reading of "resolves" agrees.
 """
@@ -76,6 +77,10 @@ SETTINGS = (
     # r458 G1: neither, with reverse-Z's Δz only 1.66 times the gap (d near the top of its
     # binade): "reverse-Z if its Δz is under twice the gap" passed every case before
     (185.0, 6.0e-6, 1000.0, 0.1),
+    # r514 P1: reverse-Z with its Δz 0.76 times the gap (d just above a power of two), where
+    # "reverse-Z if its Δz is under half the gap" passed every case; P2: 5.1's near plane 1.006
+    # times nearest by every reading (gap/z 6e-6), where "unorm24 with 1 % slack" passed
+    (168.0, 2.17e-5, 1000.0, 0.1), (100.0, 5.92e-4, 1000.0, 1.0),
 )  # fmt: skip
 
 
@@ -108,7 +113,8 @@ def clear_of_borders(z, gap, far, nearest) -> bool:
     """Every reading agrees on this case (see the module's docstring)."""
     ratio = expected_near(z, gap, far, 24) / nearest
     fine, coarse = _finest(z, far)
-    unorm_clear = ratio <= 0.8 or ratio >= 1.25
+    # r514 P2: or every near plane 5.1's check accepts lies beyond nearest (by 0.2 %)
+    unorm_clear = ratio <= 0.8 or ratio >= 1.25 or near_bounds(z, gap, far, 24)[0] > 1.002 * nearest
     return unorm_clear and (ratio <= 0.8 or gap >= 1.3 * coarse or gap <= 0.7 * fine)
 
 
@@ -504,6 +510,31 @@ def _words_16(args, expected, got) -> str:
             f"n = {num(n24, n16)} for them")  # fmt: skip
 
 
+def _unorm32(args, expected, got) -> bool:
+    """r514 H (ds_Y1): unorm24 taken as 32 bits, its declared size with the stencil: its Δz
+    one 32-bit step over the slope (1 %; a choice by 1 % slack was named so by the choice)."""
+    z, gap, far, nearest = args
+    if got[0] != UNORM or not 0 < got[1] < z:
+        return False
+    return abs(got[2] / resolution(z, got[1], far, 32) - 1) <= SLACK
+
+
+def _words_32(args, expected, got) -> str:
+    z, gap, far, nearest = args
+    return (": you took unorm24 as 32 bits, D24_UNORM_S8_UINT's declared size: 24 of them "
+            "hold depth, 8 the stencil, so one step is 1/(2^24 − 1). At your near plane "
+            f"{num(got[1])} unorm24 resolves Δz = {num(resolution(z, got[1], far, 24))} at z, "
+            f"and it needs n ≥ {num(expected_near(z, gap, far, 24))} (5.1 with 24 bits)")  # fmt: skip
+
+
+def _unorm_no_far(args, expected, got) -> bool:
+    """r514 H (ds_Y8): unorm24's Δz as step z²/n, the factor (f − n)/f dropped (0.1 %)."""
+    z, gap, far, nearest = args
+    if not got[0] == expected[0] == UNORM or not 0 < got[1] < z:
+        return False
+    return any(abs(got[2] / (z * z / (k * got[1])) - 1) <= 1e-3 for k in (2**24, 2**24 - 1))
+
+
 def _reverse_first(z, gap, far, nearest):
     """The format (numbers left open) of a student who takes reverse-Z wherever it resolves
     the gap, and unorm24 only where it does not (r417 F2)."""
@@ -542,6 +573,7 @@ MISTAKES = [
     # r417 F2: reverse-Z whenever it works was told "16 bits" (the same tuples on the cases
     # where unorm24 does it with room): the task's size rule ignored, named before
     Mistake("reverse-Z preferred", _words_reverse_first, gives=_reverse_first),
+    Mistake("32 bits", _words_32, fits=_unorm32),
     Mistake("16 bits", _words_16, gives=_choice_by(
         lambda z, gap, far, nearest: expected_near(z, gap, far, 16) <= nearest)),
     Mistake("float32 forward", ": float32 without reverse-Z stores z_win, near 1 for far "
@@ -589,6 +621,11 @@ MISTAKES = [
     Mistake("unorm24 near too close", _words_unorm_too_close,
         fits=lambda a, e, g: g[0] == e[0] == UNORM and 0 < g[1] <= a[3]
         and not _near_ok(a, UNORM, g[1])),
+    Mistake("unorm24 Δz without the far plane", lambda a, e, g: (
+        f": your Δz {num(g[2])} is step · z²/n, the far plane's factor (f − n)/f left out "
+        "(right for an infinite far plane only): unorm24 resolves step (f − n) z²/(f n), "
+        f"{num(resolution(a[0], g[1], a[2], 24), g[2])} at your near plane here"),
+        fits=_unorm_no_far),
     Mistake("dz of the other buffer", _dz_words("that Δz is the other buffer's"),
             fits=lambda a, e, g: _dz_wrong(a, e, g) and _quoted_other(a, g)),
     Mistake("dz is the gap", _dz_words(_gap_words),
