@@ -9,12 +9,17 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
+from unittest import mock
 
 import numpy as np
 import pytest
 
 from teachraster import exercises as ex
-from teachraster.exercises import tries
+from teachraster.exercises import cases, tries
+
+#: The seed of the drawn cases in the first-name tests (on seeds 0 to 29, three draws named
+#: the other true name first: x05 twice, y06 once by its other axis; seed 5 none)
+DRAW_SEED = 5
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -114,8 +119,13 @@ def _fn(label):
 
 
 def _first(label):
+    """The first failure of ``label``'s check, on a fixed draw of the check's random cases:
+    which of two true names comes first can depend on the draw (x05, v flipped with λ
+    clamped to [0, q − 1]: the slip's words or the variant's, 9 of 150 draws), and a test
+    of the first name must not fail one run in fifteen (stop 59's own runs)."""
     tries.forget_hints("texel_weights")
-    report = ex.check("texel_weights", _fn(label))
+    with mock.patch.object(cases, "drawn_rng", lambda: np.random.default_rng(DRAW_SEED)):
+        report = ex.check("texel_weights", _fn(label))
     tries.forget_hints("texel_weights")
     assert not report.passed
     return report.failures[0]
