@@ -148,14 +148,6 @@ def split_inverse(v):
 # == barycentric ===================================================================================
 
 
-def bary_solve(xy, p):
-    """Solve [v2 − v1, v3 − v1]·(λ2, λ3) = p − v1."""
-    a, b, c = (np.asarray(q, dtype=float) for q in xy)
-    m = np.column_stack([b - a, c - a])
-    l2, l3 = np.linalg.solve(m, np.asarray(p, dtype=float) - a)
-    return np.array([1 - l2 - l3, l2, l3])
-
-
 def _sub_areas(xy, p):
     a, b, c = (np.asarray(q, dtype=float) for q in xy)
     return np.array([edge_function(b, c, p), edge_function(c, a, p), edge_function(a, b, p)])
@@ -1269,7 +1261,9 @@ DIFFERENT = {
     "sign-multiplied covers": ("covers", covers_sign_multiplied),
     "vectorised fill": ("fill", fill_vectorised),
     "np.interp split point": ("split_point", split_interp),
-    "2×2 solve for barycentrics": ("barycentric", bary_solve),
+    # "2×2 solve for barycentrics" (np.linalg.solve alone) is wrong since r506 W2: np.linalg.solve's
+    # LinAlgError is no zero-area test (a collinear case no 2×2 elimination ends on 0); its
+    # twin is WRONG's "barycentric refusing on a 2×2 solve's LinAlgError"
     "CS148's α for perspective": ("perspective", persp_alpha),
     "depth test with 0/1 ints": ("depth_test", lambda a, b: int(a < b)),
     "clip starting at v3, a list": ("clip_near", clip_from_v3_as_list),
