@@ -84,6 +84,10 @@ def test_the_caption_reports_pixel_centres_from_one_piece(n, r):
     assert s.worst == worst and abs(s.worst_texels - texels) < 1e-9
     assert abs(s.worst_px - px) < 1e-3
     a, b = int(at[worst]), int(at[worst + 1])
+    if texels == 0:  # r515 S3: nothing misses, no piece named
+        assert "no piece misses" in caption and "worst piece" not in caption
+        ex.close()
+        return
     assert f"pixels {a}–{b}" in caption and f"of its {b - a} px" in caption
     assert f"<b>{texels:.3g} texels</b>" in caption and f"<b>{px:.3g} px</b>" in caption
     assert f"Δu = {s.anchor_u[worst + 1] - s.anchor_u[worst]:.3g} texels" in caption
@@ -161,7 +165,12 @@ def test_at_r_1_the_caption_says_no_miss_and_the_label_clears_the_ticks():
     from teachraster.widgets.span_explorer import SpanSubdivisionExplorer
 
     ex = SpanSubdivisionExplorer(2, 1.0, backend="image")
-    assert "none (at ρ = 1 u is affine)" in ex.info.value and "= 0.000" not in ex.info.value
+    assert "(ρ = 1: u is affine)" in ex.info.value and "= 0.000" not in ex.info.value
+    ex.close()
+    # r515 S3: with nothing missing there is no worst piece or pixel to name
+    ex = SpanSubdivisionExplorer(8, 1.0, backend="image")
+    assert "no piece misses (ρ = 1: u is affine)" in ex.info.value
+    assert "worst piece" not in ex.info.value and "pixel 0" not in ex.info.value
     ex.close()
     for r, side in ((1.0, "left"), (10.0, "right")):
         fig, (ax_u, ax_miss) = plt.subplots(2, 1)

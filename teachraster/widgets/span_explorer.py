@@ -150,6 +150,8 @@ class SpanSubdivisionExplorer(Shown):
                  f"and of its {b - a} px" if rho > 1 else
                  f"none (at ρ = 1 u is affine): 0 of its Δu = {change:.3g} "
                  f"texels and of its {b - a} px")  # fmt: skip
+        if rho <= 1 and s.worst_texels == 0:  # r515 S3: nothing misses, no worst piece to name
+            return f"N = {s.n}, r = {s.r:.3g}: no piece misses (ρ = 1: u is affine)."
         return (f"N = {s.n}, r = {s.r:.3g}: the worst piece, pixels {a}–{b}, ρ = {rho:.3g}. "
                 f"At its pixel centres the chord misses by up to <b>{s.worst_texels:.3g} "
                 f"texels</b> (pixel {s.worst_x}) and shows a texel that belongs up to "

@@ -86,11 +86,12 @@ def exact_coverage(xy, width: int, height: int, bits: int | None = 8, origin=(0,
 def screen_offset_px(xy, w, uv, rows, cols, error) -> np.ndarray:
     """How far on screen, in pixels, a texture-coordinate error moves the texture, per pixel.
 
-    A pixel at (x, y) that shows the texture at ``uv + e`` instead of ``uv`` shows, to first
-    order, what belongs at the screen point ``(x, y) + J⁻¹ e``, J the Jacobian
-    ∂(u, v)/∂(x, y) of the true texture coordinates there: this returns ``|J⁻¹ e|``. J comes
-    from the triangle's screen-space planes of 1/w and uv/w, both affine in x and y
-    (lesson 04): with u = (u/w) / (1/w), ∂u/∂x = (∂(u/w)/∂x − u ∂(1/w)/∂x) / (1/w).
+    A pixel at (x, y) that shows the texture at ``uv + e`` instead of ``uv`` shows what
+    belongs at the screen point p where the true (perspective-correct) texture coordinates
+    are ``uv + e``: this returns ``|p − (x, y)|``, exactly (float64), not to first order. With
+    the triangle's screen-space planes a·p of u/w, v/w and 1/w (lesson 04), p solves the two
+    linear equations (a_u − u' a_q)·p = 0 and (a_v − v' a_q)·p = 0, (u', v') = uv + e: the
+    plane's projective map, inverted (p may lie outside the triangle, on its plane).
 
     Parameters
     ----------
@@ -113,13 +114,13 @@ def screen_offset_px(xy, w, uv, rows, cols, error) -> np.ndarray:
     xy, w, uv = (np.asarray(a, dtype=np.float64) for a in (xy, w, uv))
     plane = np.linalg.solve(np.column_stack([xy, np.ones(3)]), np.column_stack([uv / w[:, None],
                             1.0 / w]))  # fmt: skip  # (3, 3): u/w, v/w, 1/w = a x + b y + c
-    at = np.column_stack([np.asarray(cols) + 0.5, np.asarray(rows) + 0.5, np.ones(len(rows))])
+    x, y = np.asarray(cols) + 0.5, np.asarray(rows) + 0.5
+    at = np.column_stack([x, y, np.ones(len(x))])
     values = at @ plane  # (P, 3)
-    q = values[:, 2:3]
-    uv_at = values[:, :2] / q
-    jac = (plane[:2, :2].T[None] - uv_at[:, :, None] * plane[:2, 2][None, None, :]) / q[:, :, None]
-    shift = np.linalg.solve(jac, np.asarray(error, dtype=np.float64)[:, :, None])[:, :, 0]
-    return np.hypot(shift[:, 0], shift[:, 1])
+    shown = values[:, :2] / values[:, 2:3] + np.asarray(error, dtype=np.float64)  # (P, 2)
+    m = plane.T[None, :2, :] - shown[:, :, None] * plane[:, 2][None, None, :]  # (P, 2, 3)
+    p = np.linalg.solve(m[:, :, :2], -m[:, :, 2:3])[:, :, 0]  # the screen point showing it
+    return np.hypot(p[:, 0] - x, p[:, 1] - y)
 
 
 def uv_ground_truth(xy, w, uv, size: int, rows, cols) -> np.ndarray:
