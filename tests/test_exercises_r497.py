@@ -118,17 +118,22 @@ def _fn(label):
     return ns["texel_weights"]
 
 
-def _first(label):
-    """The first failure of ``label``'s check, on a fixed draw of the check's random cases:
-    which of two true names comes first can depend on the draw (x05, v flipped with λ
-    clamped to [0, q − 1]: the slip's words or the variant's, 9 of 150 draws), and a test
-    of the first name must not fail one run in fifteen (stop 59's own runs)."""
+def first_failure(texel_weights):
+    """The first failure of a wrong ``texel_weights``' check, on a fixed draw of the check's
+    random cases (also test_exercises_r509's): which of two true names comes first can
+    depend on the draw (r509's x05, v flipped with λ clamped to [0, q − 1]: the slip's words
+    or the variant's, 9 of 150 draws), and a test of the first name must not fail one run in
+    fifteen (stop 59's own runs)."""
     tries.forget_hints("texel_weights")
     with mock.patch.object(cases, "drawn_rng", lambda: np.random.default_rng(DRAW_SEED)):
-        report = ex.check("texel_weights", _fn(label))
+        report = ex.check("texel_weights", texel_weights)
     tries.forget_hints("texel_weights")
     assert not report.passed
     return report.failures[0]
+
+
+def _first(label):
+    return first_failure(_fn(label))
 
 
 @pytest.mark.parametrize("label", list(KINDS))

@@ -5,18 +5,14 @@ combined) told only the "texels within a level" symptom: now each is named, a fa
 (the level split, then each axis of each level). Variants: /tmp/r509 (r509.md)."""
 
 import math
-from unittest import mock
 
 import numpy as np
 import pytest
+from test_exercises_r497 import first_failure  # the seeded first failure (stop 59)
 
 from teachraster import exercises as ex
-from teachraster.exercises import cases, tries
 from teachraster.exercises import texel_footprint as tf
-
-#: The seed of the drawn cases in the first-name tests (on seeds 0 to 29, three draws named
-#: the other true name first: x05 twice, y06 once by its other axis; seed 5 none)
-DRAW_SEED = 5
+from teachraster.exercises import tries
 
 SOURCES = {
     "y01_t_from_unclamped_lod": 'def texel_weights(sizes, uv, lod, wrap):\n    """{(level, row, col): weight} of every texel a trilinear fetch reads at uv, lod."""\n    q = len(sizes) - 1\n    lam = min(max(float(lod), 0.0), q)  # no level finer than 0 or coarser than q\n    lower = int(np.floor(lam))\n    t = float(lod) - lower\n    weights = {}\n    for level, level_weight in ((lower, 1 - t), (min(lower + 1, q), t)):\n        h, w = sizes[level]  # this level\'s own texels\n        x, y = uv[0] * w - 0.5, uv[1] * h - 0.5  # texel centres on whole numbers\n        x0, y0 = int(np.floor(x)), int(np.floor(y))\n        fx, fy = x - x0, y - y0\n        for row, wy in ((y0, 1 - fy), (y0 + 1, fy)):\n            for col, wx in ((x0, 1 - fx), (x0 + 1, fx)):\n                if wrap == "repeat":\n                    key = (level, row % h, col % w)\n                else:\n                    key = (level, min(max(row, 0), h - 1), min(max(col, 0), w - 1))\n                weights[key] = weights.get(key, 0.0) + level_weight * wy * wx\n    return weights',
@@ -100,16 +96,7 @@ def _fn(label):
 
 
 def _first(label):
-    """The first failure of ``label``'s check, on a fixed draw of the check's random cases:
-    which of two true names comes first can depend on the draw (x05, v flipped with λ
-    clamped to [0, q − 1]: the slip's words or the variant's, 9 of 150 draws), and a test
-    of the first name must not fail one run in fifteen (stop 59's own runs)."""
-    tries.forget_hints("texel_weights")
-    with mock.patch.object(cases, "drawn_rng", lambda: np.random.default_rng(DRAW_SEED)):
-        report = ex.check("texel_weights", _fn(label))
-    tries.forget_hints("texel_weights")
-    assert not report.passed
-    return report.failures[0]
+    return first_failure(_fn(label))
 
 
 @pytest.mark.parametrize("label", list(KINDS))
